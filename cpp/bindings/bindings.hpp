@@ -1,0 +1,12 @@
+// One registration function per layer, each in its own bind_<layer>.cpp; module.cpp calls them.
+#pragma once
+#include <pybind11/pybind11.h>
+
+namespace rigiddyn::bindings {
+void bind_so3(pybind11::module_& m);
+void bind_frames(pybind11::module_& m);
+void bind_spatial(pybind11::module_& m);
+void bind_inertia(pybind11::module_& m);
+void bind_dynamics(pybind11::module_& m);
+void bind_exact(pybind11::module_& m);
+}  // namespace rigiddyn::bindings

@@ -1,0 +1,14 @@
+// rigiddyn._core: the compiled core. Users import `rigiddyn`, which re-exports it.
+#include "bindings.hpp"
+#include "rigiddyn/version.hpp"
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "rigiddyn's C++ core (rotations, frames, spatial algebra, inertia, dynamics).";
+  m.attr("__version__") = rigiddyn::version();
+  rigiddyn::bindings::bind_so3(m);
+  rigiddyn::bindings::bind_frames(m);
+  rigiddyn::bindings::bind_spatial(m);
+  rigiddyn::bindings::bind_inertia(m);
+  rigiddyn::bindings::bind_dynamics(m);
+  rigiddyn::bindings::bind_exact(m);
+}

@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# Installs everything rigiddyn's tests need, then runs every test: pytest (Python API against the
+# numpy reference, SciPy and exact solutions) and ctest (C++ unit tests, the find_package
+# packaging test, and the benchmarks at a small size). Run from the repository root:
+#   bash tests/run_all.sh
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+# Debian packages for the C++ tests and benchmarks (installed only when missing).
+packages=(cmake ninja-build g++ libeigen3-dev libgtest-dev libbenchmark-dev)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  sudo=""
+  [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${missing[@]}"
+fi
+
+python3 -m pip install --quiet ".[test]"
+python3 -m pytest
+
+cmake --preset test
+cmake --build --preset test -j 2
+ctest --preset test -j 2
