@@ -1,9 +1,139 @@
-// Python bindings of the exact layer.
+// Python bindings of the exact layer: elliptic functions and the torque-free rigid body.
 #include "bindings.hpp"
 #include "numpy_io.hpp"
+#include "rigiddyn/exact/elliptic.hpp"
+#include "rigiddyn/exact/free_body.hpp"
+
+#include <pybind11/stl.h>
+
+#include <optional>
 
 namespace rigiddyn::bindings {
 
-void bind_exact(pybind11::module_& m) { (void)m; }
+namespace py = pybind11;
+using py_io::Array;
+
+namespace {
+
+// mc defaults to 1 − m (pass it when known more accurately, near m = 1)
+double complement(double m, const std::optional<double>& mc) { return mc ? *mc : 1.0 - m; }
+
+// The solution together with the quaternion order chosen at construction.
+struct PyTorqueFreeSolution {
+  TorqueFreeSolution solution;
+  bool scalar_first;
+};
+
+py::object jacobi_ellipj_py(const py::object& u, double m, std::optional<double> mc) {
+  const EllipticParameter p = elliptic_parameter(m, complement(m, mc));
+  const py_io::Stack us = py_io::as_stack(u, "u", {});
+  if (!us.stacked) {
+    const JacobiSnCnDn f = jacobi_ellipj(us.array.data()[0], p);
+    return py::make_tuple(f.sn, f.cn, f.dn);
+  }
+  Array sn = py_io::new_stack(us.n, true, {}), cn = py_io::new_stack(us.n, true, {}), dn = py_io::new_stack(us.n, true, {});
+  double *psn = sn.mutable_data(), *pcn = cn.mutable_data(), *pdn = dn.mutable_data();
+  {
+    py::gil_scoped_release release;
+    for (py::ssize_t i = 0; i < us.n; ++i) {
+      const JacobiSnCnDn f = jacobi_ellipj(*us.item(i, 1), p);
+      psn[i] = f.sn;
+      pcn[i] = f.cn;
+      pdn[i] = f.dn;
+    }
+  }
+  return py::make_tuple(sn, cn, dn);
+}
+
+py::object ellippi_am_py(const py::object& u, double n, double m, std::optional<double> mc) {
+  if (!(n < 1.0)) throw py::value_error("n: expected a characteristic n < 1, got " + std::to_string(n));
+  const EllipticParameter p = elliptic_parameter(m, complement(m, mc));
+  const py_io::Stack us = py_io::as_stack(u, "u", {});
+  if (!us.stacked) return py::float_(ellippi_am(us.array.data()[0], n, p));
+  Array out = py_io::new_stack(us.n, true, {});
+  double* po = out.mutable_data();
+  {
+    py::gil_scoped_release release;
+    for (py::ssize_t i = 0; i < us.n; ++i) po[i] = ellippi_am(*us.item(i, 1), n, p);
+  }
+  return out;
+}
+
+PyTorqueFreeSolution make_solution(const py::object& inertia, const py::object& q_WB, const py::object& w_B,
+                                   bool scalar_first) {
+  return {TorqueFreeSolution(py_io::as_matrix3(inertia, "inertia"), py_io::as_quaternion(q_WB, "q_WB", scalar_first),
+                             py_io::as_vector3(w_B, "w_B")),
+          scalar_first};
+}
+
+py::tuple state_at_py(const PyTorqueFreeSolution& self, const py::object& t) {
+  const py_io::Stack ts = py_io::as_stack(t, "t", {});
+  Array q = py_io::new_stack(ts.n, ts.stacked, {4});
+  Array w = py_io::new_stack(ts.n, ts.stacked, {3});
+  double *pq = q.mutable_data(), *pw = w.mutable_data();
+  {
+    py::gil_scoped_release release;
+    for (py::ssize_t i = 0; i < ts.n; ++i) {
+      const TorqueFreeState s = self.solution.state_at(*ts.item(i, 1));
+      py_io::write_quaternion(s.q_WB, pq + 4 * i, self.scalar_first);
+      for (int k = 0; k < 3; ++k) pw[3 * i + k] = s.w_B(k);
+    }
+  }
+  return py::make_tuple(q, w);
+}
+
+}  // namespace
+
+void bind_exact(pybind11::module_& m) {
+  m.def("elliprf", &elliprf, py::arg("x"), py::arg("y"), py::arg("z"),
+        "Carlson's R_F(x, y, z) (DLMF 19.16.1); x, y, z >= 0, at most one zero.");
+  m.def("elliprj", &elliprj, py::arg("x"), py::arg("y"), py::arg("z"), py::arg("p"),
+        "Carlson's R_J(x, y, z, p) (DLMF 19.16.2); x, y, z >= 0, at most one zero, p > 0.");
+  m.def(
+      "ellipk", [](double m, std::optional<double> mc) { return ellipk(m, complement(m, mc)); }, py::arg("m"),
+      py::arg("mc") = py::none(),
+      "Complete elliptic integral K(m) = R_F(0, mc, 1) for the parameter m in [0, 1] (as scipy.special.ellipk).\n"
+      "mc: the complement 1 - m (default 1 - m); pass it near m = 1, where 1 - m loses digits. inf at mc = 0.");
+  m.def(
+      "ellippi", [](double n, double m, std::optional<double> mc) { return ellippi(n, m, complement(m, mc)); },
+      py::arg("n"), py::arg("m"), py::arg("mc") = py::none(),
+      "Complete elliptic integral of the third kind Pi(n|m) = int_0^{pi/2} dt / ((1 - n sin^2 t) sqrt(1 - m sin^2 t)),\n"
+      "n < 1, m in [0, 1), mc = 1 - m (default 1 - m).");
+  m.def("ellippi_am", &ellippi_am_py, py::arg("u"), py::arg("n"), py::arg("m"), py::arg("mc") = py::none(),
+        "Incomplete Pi(am u, n|m) = int_0^u dv / (1 - n sn^2(v|m)) (mpmath.ellippi(n, am(u), m)), for u a scalar\n"
+        "or a 1-d array (then an array of the same length), n < 1, mc = 1 - m (default 1 - m).");
+  m.def("jacobi_ellipj", &jacobi_ellipj_py, py::arg("u"), py::arg("m"), py::arg("mc") = py::none(),
+        "Jacobi elliptic functions (sn, cn, dn)(u|m) for u a scalar (floats) or a 1-d array (three arrays of\n"
+        "shape (n,)), m in [0, 1]. mc: the complement 1 - m (default 1 - m); pass it near m = 1 for full\n"
+        "accuracy (unlike scipy.special.ellipj, accurate near m = 1 at any u).");
+
+  py::class_<PyTorqueFreeSolution>(m, "TorqueFreeSolution",
+                                   "Exact motion of a torque-free rigid body (Euler-Poinsot), see rigiddyn/exact/free_body.hpp.")
+      .def(py::init(&make_solution), py::arg("inertia"), py::arg("q_WB"), py::arg("w_B"), py::arg("scalar_first") = false,
+           "inertia: (3, 3) rotational inertia about the centre of mass, in B [kg m^2], symmetric positive definite;\n"
+           "q_WB: (4,) initial attitude, (x, y, z, w) or (w, x, y, z) if scalar_first; w_B: (3,) initial angular\n"
+           "velocity of B in W, expressed in B [rad/s].")
+      .def("state_at", &state_at_py, py::arg("t"),
+           "State at time t [s] (scalar, or (n,) array; negative allowed): (q_WB, w_B) of shapes (4,), (3,) or\n"
+           "(n, 4), (n, 3); q in the order chosen at construction.")
+      .def_property_readonly("period", [](const PyTorqueFreeSolution& s) { return s.solution.period(); },
+                             "Period of w_B(t) [s]; inf if w_B is constant or on the separatrix. A flip takes half.")
+      .def_property_readonly("case", [](const PyTorqueFreeSolution& s) { return to_string(s.solution.solution_case()); },
+                             "'sphere', 'symmetric', 'A' (about axis 3), 'B' (about axis 1) or 'separatrix'.")
+      .def_property_readonly("parameter_m", [](const PyTorqueFreeSolution& s) { return s.solution.parameter_m(); },
+                             "Parameter m of the elliptic functions.")
+      .def_property_readonly("parameter_mc", [](const PyTorqueFreeSolution& s) { return s.solution.parameter_mc(); },
+                             "Complement 1 - m, computed without cancellation.")
+      .def_property_readonly("principal_moments",
+                             [](const PyTorqueFreeSolution& s) { return py_io::to_array(s.solution.principal_moments()); },
+                             "(3,) principal moments I1 <= I2 <= I3 [kg m^2].")
+      .def_property_readonly("R_BP", [](const PyTorqueFreeSolution& s) { return py_io::to_array(s.solution.R_BP()); },
+                             "(3, 3) rotation from the sorted principal frame P to B (columns: principal axes in B).")
+      .def_property_readonly("angular_momentum_W",
+                             [](const PyTorqueFreeSolution& s) { return py_io::to_array(s.solution.angular_momentum_W()); },
+                             "(3,) constant spatial angular momentum L_W [kg m^2/s].")
+      .def_property_readonly("kinetic_energy", [](const PyTorqueFreeSolution& s) { return s.solution.kinetic_energy(); },
+                             "Constant kinetic energy of rotation [J].");
+}
 
 }  // namespace rigiddyn::bindings

@@ -1,9 +1,458 @@
-// Python bindings of the inertia layer.
+// Python bindings of the inertia layer: SpatialInertia (mass, centre of mass, inertia about the
+// centre of mass), validity report and repair, principal axes (single or (n,3,3) stacks, GIL
+// released), primitives (mass= or density=), point masses, triangle meshes and density quadrature.
+// Same names as C++ (rigiddyn/inertia/*.hpp, where the formulas are cited).
+#include <pybind11/functional.h>
+#include <pybind11/operators.h>
+#include <pybind11/stl.h>
+
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
 #include "bindings.hpp"
 #include "numpy_io.hpp"
+#include "rigiddyn/inertia/density.hpp"
+#include "rigiddyn/inertia/mesh.hpp"
+#include "rigiddyn/inertia/point_masses.hpp"
+#include "rigiddyn/inertia/primitives.hpp"
+#include "rigiddyn/inertia/principal_axes.hpp"
+#include "rigiddyn/inertia/spatial_inertia.hpp"
+#include "rigiddyn/inertia/validity.hpp"
 
 namespace rigiddyn::bindings {
 
-void bind_inertia(pybind11::module_& m) { (void)m; }
+namespace py = pybind11;
+using namespace pybind11::literals;
+using py_io::Array;
+
+namespace {
+
+using PointRows = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
+
+// Exactly one of mass= [kg] and density= (ValueError naming both otherwise).
+MassOrDensity mass_or_density(const py::object& mass, const py::object& density) {
+  if (mass.is_none() == density.is_none()) {
+    throw py::value_error(std::string("mass, density: expected exactly one of mass= or density=, got ") +
+                          (mass.is_none() ? "neither" : "both"));
+  }
+  if (!mass.is_none()) return Mass{py_io::as_scalar(mass, "mass")};
+  return Density{py_io::as_scalar(density, "density")};
+}
+
+// An (n, 3) array of points (n >= 1).
+PointRows as_points(py::handle obj, const std::string& name) {
+  const py_io::Stack s = py_io::as_stack(obj, name, {3});
+  if (!s.stacked) throw py::value_error(name + ": expected shape (n, 3), got (3,)");
+  return Eigen::Map<const PointRows>(s.array.data(), s.n, 3);
+}
+
+// An (f, 3) integer array of vertex indices (TypeError unless integer dtype).
+MeshFaces as_faces(py::handle obj) {
+  py::array raw = py::module_::import("numpy").attr("asarray")(obj);
+  const char kind = raw.dtype().kind();
+  if (kind != 'i' && kind != 'u') {
+    throw py::type_error("faces: expected an integer array, got dtype " + std::string(py::str(raw.dtype())));
+  }
+  auto a = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(raw);
+  if (a.ndim() != 2 || a.shape(1) != 3) {
+    throw py::value_error("faces: expected shape (f, 3), got " + std::string(py::str(raw.attr("shape"))));
+  }
+  return Eigen::Map<const MeshFaces>(a.data(), a.shape(0), 3);
+}
+
+Array read_only(const Eigen::Ref<const Eigen::MatrixXd>& value) {
+  Array out = py_io::to_array(value);
+  out.attr("flags").attr("writeable") = false;
+  return out;
+}
+Array read_only3(const Eigen::Vector3d& v) {
+  Array out = py_io::to_array(v);
+  out.attr("flags").attr("writeable") = false;
+  return out;
+}
+
+InertiaCheck check_arg(py::handle check) { return check.cast<InertiaCheck>(); }
+
+// rho called once on all points (n, 3) of a rule; must return n values.
+Eigen::VectorXd evaluate_vectorized(const py::function& rho, const QuadratureRule& rule) {
+  const Array values = py_io::as_array(rho(py_io::to_array(rule.points)), "rho(points)");
+  if (values.size() != rule.points.rows()) {
+    throw py::value_error("rho(points): expected " + std::to_string(rule.points.rows()) +
+                          " values (one per row of points), got " + std::to_string(values.size()));
+  }
+  return Eigen::Map<const Eigen::VectorXd>(values.data(), values.size());
+}
+
+const char* kCheckDoc =
+    "check: InertiaCheck.physical (default: triangle inequality required) or\n"
+    "InertiaCheck.allow_unrealizable (opt-in: symmetric PSD only, e.g. I = diag(2, 1, 2/3)).";
+
+void bind_types(py::module_& m) {
+  py::enum_<InertiaCheck>(m, "InertiaCheck",
+                          "What a constructor requires of a rotational inertia: `physical` (symmetric, PSD,\n"
+                          "triangle inequality I0 + I1 >= I2 on the principal moments) or `allow_unrealizable`\n"
+                          "(symmetric PSD only; a documented opt-in for test problems such as\n"
+                          "Hairer-Lubich-Wanner's I = diag(2, 1, 2/3), never the default).")
+      .value("physical", InertiaCheck::physical)
+      .value("allow_unrealizable", InertiaCheck::allow_unrealizable);
+
+  py::class_<InertiaReport>(m, "InertiaReport",
+                            "Validity report of (mass, inertia about the centre of mass); see inertia_report.")
+      .def_readonly("mass", &InertiaReport::mass, "[kg]")
+      .def_readonly("mass_positive", &InertiaReport::mass_positive)
+      .def_readonly("finite", &InertiaReport::finite)
+      .def_readonly("asymmetry", &InertiaReport::asymmetry, "max |I - I^T| [kg m^2]")
+      .def_readonly("symmetric", &InertiaReport::symmetric)
+      .def_property_readonly("principal_moments", [](const InertiaReport& r) { return read_only3(r.principal_moments); },
+                             "(3,) ascending I0 <= I1 <= I2 [kg m^2]")
+      .def_property_readonly("triangle_margins", [](const InertiaReport& r) { return read_only3(r.triangle_margins); },
+                             "(3,) (I1+I2-I0, I0+I2-I1, I0+I1-I2) [kg m^2]; the last is binding")
+      .def_readonly("condition_number", &InertiaReport::condition_number, "I2 / I0 (inf when I0 <= 0)")
+      .def_readonly("tolerance", &InertiaReport::tolerance, "absolute tolerance of the two checks [kg m^2]")
+      .def_readonly("positive_semidefinite", &InertiaReport::positive_semidefinite)
+      .def_readonly("triangle_inequality", &InertiaReport::triangle_inequality)
+      .def("valid", &InertiaReport::valid, "check"_a = InertiaCheck::physical,
+           "True when every check required by `check` passes.")
+      .def("summary", &InertiaReport::summary, "One line with the key numbers.")
+      .def("__repr__", [](const InertiaReport& r) { return "InertiaReport(" + r.summary() + ")"; });
+
+  py::class_<PrincipalAxes>(m, "PrincipalAxes", "Principal moments (ascending) and axes (columns, right-handed).")
+      .def_property_readonly("moments", [](const PrincipalAxes& p) { return read_only3(p.moments); },
+                             "(3,) ascending [kg m^2]")
+      .def_property_readonly("axes", [](const PrincipalAxes& p) { return read_only(p.axes); },
+                             "(3,3): column k is the axis of moments[k]; det +1");
+}
+
+void bind_spatial_inertia(py::module_& m) {
+  py::class_<SpatialInertia>(
+      m, "SpatialInertia",
+      "Mass properties of one rigid body: mass m [kg], centre of mass c [m] and rotational inertia about\n"
+      "the centre of mass I_C [kg m^2], all expressed in one frame. Constructors check validity\n"
+      "(ValueError with the principal moments, triangle margins and condition number).")
+      .def(py::init([](py::handle mass, py::handle com, py::handle inertia_com, py::handle check) {
+             return SpatialInertia(py_io::as_scalar(mass, "mass"), py_io::as_vector3(com, "com"),
+                                   py_io::as_matrix3(inertia_com, "inertia_com"), check_arg(check));
+           }),
+           "mass"_a, "com"_a, "inertia_com"_a, "check"_a = InertiaCheck::physical,
+           (std::string("mass [kg] > 0, com (3,) [m], inertia_com (3,3) [kg m^2] about the centre of mass.\n") +
+            kCheckDoc).c_str())
+      .def_static(
+          "from_inertia_about_point",
+          [](py::handle mass, py::handle com, py::handle inertia, py::handle point, py::handle check) {
+            return SpatialInertia::from_inertia_about_point(
+                py_io::as_scalar(mass, "mass"), py_io::as_vector3(com, "com"),
+                py_io::as_matrix3(inertia, "inertia_about_point"), py_io::as_vector3(point, "point"), check_arg(check));
+          },
+          "mass"_a, "com"_a, "inertia_about_point"_a, "point"_a, "check"_a = InertiaCheck::physical,
+          "From the inertia (3,3) [kg m^2] about `point` (3,) [m] (parallel axis, seed 001).")
+      .def_static(
+          "from_inertia_about_origin",
+          [](py::handle mass, py::handle com, py::handle inertia, py::handle check) {
+            return SpatialInertia::from_inertia_about_origin(py_io::as_scalar(mass, "mass"),
+                                                             py_io::as_vector3(com, "com"),
+                                                             py_io::as_matrix3(inertia, "inertia_about_origin"),
+                                                             check_arg(check));
+          },
+          "mass"_a, "com"_a, "inertia_about_origin"_a, "check"_a = InertiaCheck::physical,
+          "From the inertia (3,3) [kg m^2] about the frame's origin.")
+      .def_static(
+          "from_matrix",
+          [](py::handle matrix, py::handle check) {
+            return SpatialInertia::from_matrix(py_io::as_matrix6(matrix, "matrix"), check_arg(check));
+          },
+          "matrix"_a, "check"_a = InertiaCheck::physical,
+          "From the (6,6) spatial inertia about the origin, angular first [[I_O, m hat(c)], [m hat(c)^T, m 1]].")
+      .def_static(
+          "point_mass",
+          [](py::handle mass, py::handle position) {
+            return SpatialInertia::point_mass(py_io::as_scalar(mass, "mass"), py_io::as_vector3(position, "position"));
+          },
+          "mass"_a, "position"_a, "A point mass [kg] at position (3,) [m].")
+      .def_property_readonly("mass", &SpatialInertia::mass, "m [kg]")
+      .def_property_readonly("com", [](const SpatialInertia& I) { return read_only3(I.com()); },
+                             "centre of mass (3,) [m], read-only copy")
+      .def_property_readonly("inertia_com", [](const SpatialInertia& I) { return read_only(I.inertia_com()); },
+                             "rotational inertia about the centre of mass (3,3) [kg m^2], read-only copy")
+      .def(
+          "inertia_about_point",
+          [](const SpatialInertia& I, py::handle point) {
+            return py_io::to_array(I.inertia_about_point(py_io::as_vector3(point, "point")));
+          },
+          "point"_a, "Inertia (3,3) [kg m^2] about point (3,) [m]: I_C + m (|r|^2 1 - r r^T), r = c - p.")
+      .def("inertia_about_origin", [](const SpatialInertia& I) { return py_io::to_array(I.inertia_about_origin()); },
+           "Inertia (3,3) [kg m^2] about the frame's origin.")
+      .def("matrix", [](const SpatialInertia& I) { return py_io::to_array(I.matrix()); },
+           "(6,6) spatial inertia about the origin, angular first.")
+      .def("momentum", &SpatialInertia::momentum, "twist"_a,
+           "Spatial momentum h = I V (Force, moment about the origin) of the twist V = [w; v_O] (Motion).")
+      .def("kinetic_energy", &SpatialInertia::kinetic_energy, "twist"_a, "T = 1/2 V . I V [J] of the twist (Motion).")
+      .def(
+          "angular_momentum_about_com",
+          [](const SpatialInertia& I, py::handle w) {
+            return py_io::to_array(I.angular_momentum_about_com(py_io::as_vector3(w, "angular_velocity")));
+          },
+          "angular_velocity"_a, "H_C = I_C w (3,) [kg m^2/s]; w (3,) [rad/s] in the frame.")
+      .def(
+          "angular_momentum_about_point",
+          [](const SpatialInertia& I, py::handle w, py::handle v, py::handle p) {
+            return py_io::to_array(I.angular_momentum_about_point(py_io::as_vector3(w, "angular_velocity"),
+                                                                  py_io::as_vector3(v, "com_velocity"),
+                                                                  py_io::as_vector3(p, "point")));
+          },
+          "angular_velocity"_a, "com_velocity"_a, "point"_a,
+          "H_P = r_PC x (m v_C) + H_C (3,) [kg m^2/s] (seed 001); w [rad/s], v_C [m/s], point [m].")
+      .def(
+          "rotated",
+          [](const SpatialInertia& I, py::handle R) { return I.rotated(py_io::as_matrix3(R, "R_AB")); }, "R_AB"_a,
+          "Re-expressed in A: c_A = R_AB c_B, I_C,A = R_AB I_C,B R_AB^T.")
+      .def("transformed", &SpatialInertia::transformed, "X_AB"_a,
+           "Re-expressed in A (Transform X_AB): c_A = R_AB c_B + p_AB, I_C,A = R_AB I_C,B R_AB^T.")
+      .def("principal_axes", &SpatialInertia::principal_axes, "Principal moments and right-handed axes of I_C.")
+      .def("report", &SpatialInertia::report, "The validity report (InertiaReport).")
+      .def(
+          "admits_symmetry_plane",
+          [](const SpatialInertia& I, py::handle n, double tol) {
+            return I.admits_symmetry_plane(py_io::as_vector3(n, "normal"), tol);
+          },
+          "normal"_a, "tolerance"_a = 1e-9,
+          "Whether the plane through the centre of mass with this normal (3,) can be a plane of symmetry\n"
+          "(seed 001: then the products of inertia with the normal vanish). Necessary, not sufficient.")
+      .def(py::self + py::self, "Composite of two bodies expressed in the same frame.")
+      .def(py::self - py::self, "This body with the part removed (a hole); ValueError if the rest is invalid.")
+      .def("remove", &SpatialInertia::remove, "part"_a, "check"_a = InertiaCheck::physical,
+           "This body with `part` removed (a hole), checked as the constructor.")
+      .def("is_approx", &SpatialInertia::isApprox, "other"_a, "prec"_a = 1e-12, "Relative comparison.")
+      .def("__repr__", [](const SpatialInertia& I) {
+        std::ostringstream out;
+        out.precision(17);
+        const auto& J = I.inertia_com();
+        out << "SpatialInertia(mass=" << I.mass() << ", com=[" << I.com()(0) << ", " << I.com()(1) << ", "
+            << I.com()(2) << "], inertia_com=[[" << J(0, 0) << ", " << J(0, 1) << ", " << J(0, 2) << "], [" << J(1, 0)
+            << ", " << J(1, 1) << ", " << J(1, 2) << "], [" << J(2, 0) << ", " << J(2, 1) << ", " << J(2, 2) << "]])";
+        return out.str();
+      });
+
+  m.def(
+      "composite",
+      [](const py::sequence& parts) {
+        if (py::len(parts) > 0 && py::isinstance<py::tuple>(parts[0])) {
+          return composite(parts.cast<std::vector<std::pair<Transform, SpatialInertia>>>());
+        }
+        return composite(parts.cast<std::vector<SpatialInertia>>());
+      },
+      "parts"_a,
+      "Composite body: parts is a list of SpatialInertia (one frame) or of (X_AB, SpatialInertia) pairs,\n"
+      "each part expressed in its B and placed in A by the Transform X_AB. Exact.");
+  m.def("point_inertia", [](double mass, py::handle r) { return py_io::to_array(point_inertia(mass, py_io::as_vector3(r, "r"))); },
+        "mass"_a, "r"_a, "m (|r|^2 1 - r r^T) (3,3) [kg m^2]: a point mass [kg] at r (3,) [m] about the origin.");
+}
+
+void bind_validity(py::module_& m) {
+  m.attr("inertia_relative_tolerance") = inertia_relative_tolerance;
+  m.def(
+      "inertia_report",
+      [](py::handle mass, py::handle inertia, double scale) {
+        return inertia_report(py_io::as_scalar(mass, "mass"), py_io::as_matrix3(inertia, "inertia_com"), scale);
+      },
+      "mass"_a, "inertia_com"_a, "scale"_a = 0.0,
+      "Validity report of mass [kg] and inertia_com (3,3) [kg m^2]: principal moments, triangle margins,\n"
+      "condition number. Tolerance = inertia_relative_tolerance * max(scale, trace) [kg m^2], where scale is\n"
+      "the size of the numbers the inertia was computed from (0: trace only).");
+  m.def(
+      "nearest_valid_inertia",
+      [](py::handle inertia) { return py_io::to_array(nearest_valid_inertia(py_io::as_matrix3(inertia, "inertia"))); },
+      "inertia"_a,
+      "Explicit repair: the nearest (Frobenius) matrix (3,3) satisfying the triangle inequality, same\n"
+      "principal axes; a valid inertia is returned unchanged. Never applied implicitly.");
+  m.def(
+      "principal_axes",
+      [](py::handle inertia) {
+        const py_io::Stack s = py_io::as_stack(inertia, "inertia", {3, 3});
+        Array moments = py_io::new_stack(s.n, s.stacked, {3});
+        Array axes = py_io::new_stack(s.n, s.stacked, {3, 3});
+        double* pm = moments.mutable_data();
+        double* pa = axes.mutable_data();
+        {
+          py::gil_scoped_release release;
+          using RowMatrix3d = Eigen::Matrix<double, 3, 3, Eigen::RowMajor>;
+          for (py::ssize_t i = 0; i < s.n; ++i) {
+            const Eigen::Matrix3d I = Eigen::Map<const RowMatrix3d>(s.item(i, 9));
+            const PrincipalAxes p = principal_axes(I);
+            Eigen::Map<Eigen::Vector3d>(pm + 3 * i) = p.moments;
+            Eigen::Map<RowMatrix3d>(pa + 9 * i) = p.axes;
+          }
+        }
+        return py::make_tuple(moments, axes);
+      },
+      "inertia"_a,
+      "Principal moments and axes of symmetric inertias (3,3) or (n,3,3) [kg m^2] (lower triangles read):\n"
+      "returns (moments (3,) or (n,3) ascending, axes (3,3) or (n,3,3) with column k the axis of\n"
+      "moments[k], right-handed, canonical when moments coincide). Releases the GIL.");
+}
+
+void bind_primitives(py::module_& m) {
+  const auto md = [](const py::object& mass, const py::object& density) { return mass_or_density(mass, density); };
+  const char* md_doc = " Give exactly one of mass= [kg] or density=.";
+  const auto def1 = [&](const char* name, SpatialInertia (*f)(double, MassOrDensity), const char* arg,
+                        const std::string& doc) {
+    m.def(
+        name, [f, md](double x, const py::object& mass, const py::object& density) { return f(x, md(mass, density)); },
+        py::arg(arg), py::kw_only(), "mass"_a = py::none(), "density"_a = py::none(), (doc + md_doc).c_str());
+  };
+  const auto def2 = [&](const char* name, SpatialInertia (*f)(double, double, MassOrDensity), const char* a1,
+                        const char* a2, const std::string& doc) {
+    m.def(
+        name,
+        [f, md](double x, double y, const py::object& mass, const py::object& density) {
+          return f(x, y, md(mass, density));
+        },
+        py::arg(a1), py::arg(a2), py::kw_only(), "mass"_a = py::none(), "density"_a = py::none(),
+        (doc + md_doc).c_str());
+  };
+  const auto defv = [&](const char* name, SpatialInertia (*f)(const Eigen::Vector3d&, MassOrDensity), const char* arg,
+                        const std::string& doc) {
+    m.def(
+        name,
+        [f, md, arg](py::handle v, const py::object& mass, const py::object& density) {
+          return f(py_io::as_vector3(v, arg), md(mass, density));
+        },
+        py::arg(arg), py::kw_only(), "mass"_a = py::none(), "density"_a = py::none(), (doc + md_doc).c_str());
+  };
+  def1("solid_sphere", &solid_sphere, "radius", "Solid sphere, radius [m]: I = 2/5 m r^2 1. Density [kg/m^3].");
+  def2("hollow_sphere", &hollow_sphere, "outer_radius", "inner_radius",
+       "Thick spherical shell [m]: I = 2/5 m (R^5 - r^5)/(R^3 - r^3) 1. Density [kg/m^3].");
+  def1("spherical_shell", &spherical_shell, "radius", "Thin spherical surface [m]: I = 2/3 m r^2 1. Density [kg/m^2].");
+  defv("solid_box", &solid_box, "size", "Solid box, edges size (3,) [m] along x, y, z. Density [kg/m^3].");
+  defv("box_shell", &box_shell, "size", "Closed thin-walled box (six faces), edges (3,) [m]. Density [kg/m^2].");
+  def2("solid_cylinder", &solid_cylinder, "radius", "height",
+       "Solid cylinder, axis z: I_zz = m r^2/2, I_xx = m (3 r^2 + h^2)/12. Density [kg/m^3].");
+  m.def(
+      "hollow_cylinder",
+      [md](double R, double r, double h, const py::object& mass, const py::object& density) {
+        return hollow_cylinder(R, r, h, md(mass, density));
+      },
+      "outer_radius"_a, "inner_radius"_a, "height"_a, py::kw_only(), "mass"_a = py::none(), "density"_a = py::none(),
+      "Thick tube, axis z: I_zz = m (R^2 + r^2)/2, I_xx = m (3 (R^2 + r^2) + h^2)/12. Density [kg/m^3]. Give\n"
+      "exactly one of mass= [kg] or density=.");
+  def1("thin_rod", &thin_rod, "length", "Thin rod along z: I_xx = I_yy = m L^2/12. Density [kg/m].");
+  def1("thin_disk", &thin_disk, "radius", "Thin disk in the xy plane: I = m r^2 diag(1/4, 1/4, 1/2). Density [kg/m^2].");
+  def2("thin_plate", &thin_plate, "size_x", "size_y",
+       "Thin plate in the xy plane: I = m/12 diag(b^2, a^2, a^2 + b^2). Density [kg/m^2].");
+  def2("solid_cone", &solid_cone, "radius", "height",
+       "Solid cone, axis z, apex at z = 3h/4, base at z = -h/4 (com at origin): I_zz = 3/10 m r^2,\n"
+       "I_xx = m (3/20 r^2 + 3/80 h^2). Density [kg/m^3].");
+  defv("solid_ellipsoid", &solid_ellipsoid, "semi_axes",
+       "Solid ellipsoid, semi-axes (3,) [m]: I = m/5 diag(b^2+c^2, a^2+c^2, a^2+b^2). Density [kg/m^3].");
+  def2("solid_capsule", &solid_capsule, "radius", "length",
+       "Solid capsule along z: cylinder of the given length [m] plus two hemispherical caps of radius [m].\n"
+       "Density [kg/m^3].");
+  m.def(
+      "solid_tetrahedron",
+      [md](py::handle vertices, const py::object& mass, const py::object& density) {
+        const py_io::Stack s = py_io::as_stack(vertices, "vertices", {4, 3});
+        if (s.stacked) throw py::value_error("vertices: expected shape (4, 3)");
+        const double* p = s.array.data();
+        const auto v = [p](int i) { return Eigen::Vector3d(p[3 * i], p[3 * i + 1], p[3 * i + 2]); };
+        return solid_tetrahedron(v(0), v(1), v(2), v(3), md(mass, density));
+      },
+      "vertices"_a, py::kw_only(), "mass"_a = py::none(), "density"_a = py::none(),
+      "Solid tetrahedron with vertices (4, 3) [m], expressed in their frame. Density [kg/m^3]. Give exactly\n"
+      "one of mass= [kg] or density=.");
+  m.def(
+      "from_point_masses",
+      [](py::handle masses, py::handle positions) {
+        const Array mv = py_io::as_array(masses, "masses");
+        if (mv.ndim() != 1) throw py::value_error("masses: expected shape (n,)");
+        const Eigen::VectorXd mvec = Eigen::Map<const Eigen::VectorXd>(mv.data(), mv.size());
+        return from_point_masses(mvec, as_points(positions, "positions"));
+      },
+      "masses"_a, "positions"_a,
+      "Point masses (n,) [kg] >= 0 at positions (n, 3) [m] (seed 000 (4.53)-(4.54)).");
+}
+
+void bind_mesh_and_density(py::module_& m) {
+  m.def(
+      "require_closed_oriented_mesh",
+      [](py::handle faces, Eigen::Index n_vertices) { require_closed_oriented_mesh(as_faces(faces), n_vertices); },
+      "faces"_a, "n_vertices"_a,
+      "ValueError unless faces (f, 3) index [0, n_vertices) and form a closed, consistently oriented mesh.");
+  m.def(
+      "mesh_volume",
+      [](py::handle vertices, py::handle faces) { return mesh_volume(as_points(vertices, "vertices"), as_faces(faces)); },
+      "vertices"_a, "faces"_a, "Signed volume [m^3] of the mesh vertices (n, 3) [m], faces (f, 3).");
+  m.def(
+      "solid_mesh",
+      [](py::handle vertices, py::handle faces, const py::object& mass, const py::object& density) {
+        const PointRows v = as_points(vertices, "vertices");
+        const MeshFaces f = as_faces(faces);
+        const MassOrDensity md = mass_or_density(mass, density);
+        py::gil_scoped_release release;
+        return solid_mesh(v, f, md);
+      },
+      "vertices"_a, "faces"_a, py::kw_only(), "mass"_a = py::none(), "density"_a = py::none(),
+      "Solid bounded by a closed, outward-oriented triangle mesh: vertices (n, 3) [m], faces (f, 3),\n"
+      "exact (divergence theorem). ValueError naming the first open or misoriented edge, or an inward\n"
+      "orientation. Give exactly one of mass= [kg] or density= [kg/m^3]. (rigiddyn.solid_mesh also accepts\n"
+      "a trimesh object.)");
+  m.def(
+      "mesh_shell",
+      [](py::handle vertices, py::handle faces, const py::object& mass, const py::object& density) {
+        const PointRows v = as_points(vertices, "vertices");
+        const MeshFaces f = as_faces(faces);
+        const MassOrDensity md = mass_or_density(mass, density);
+        py::gil_scoped_release release;
+        return mesh_shell(v, f, md);
+      },
+      "vertices"_a, "faces"_a, py::kw_only(), "mass"_a = py::none(), "density"_a = py::none(),
+      "Thin shell made of the faces (any orientation, need not be closed): vertices (n, 3) [m], faces\n"
+      "(f, 3). Give exactly one of mass= [kg] or density= [kg/m^2].");
+
+  py::class_<DensityIntegral>(m, "DensityIntegral", "Result of a density quadrature with its error estimate.")
+      .def_readonly("inertia", &DensityIntegral::inertia, "SpatialInertia from the higher-order rule")
+      .def_readonly("mass_error", &DensityIntegral::mass_error, "|m_high - m_low| [kg]")
+      .def_readonly("com_error", &DensityIntegral::com_error, "|c_high - c_low| [m]")
+      .def_readonly("inertia_error", &DensityIntegral::inertia_error, "||I_high - I_low||_F [kg m^2]")
+      .def_readonly("evaluations", &DensityIntegral::evaluations, "points at which rho was evaluated");
+  m.def(
+      "integrate_density_over_box",
+      [](const py::function& rho, py::handle lower, py::handle upper, int order, int subdivisions) {
+        const Eigen::Vector3d lo = py_io::as_vector3(lower, "lower"), hi = py_io::as_vector3(upper, "upper");
+        if (order < 1 || order > 32) throw py::value_error("order: expected an integer in [1, 32], got " + std::to_string(order));
+        const QuadratureRule low = box_quadrature(lo, hi, order, subdivisions);
+        const QuadratureRule high = box_quadrature(lo, hi, 2 * order, subdivisions);
+        return compare_density_integrals(low, evaluate_vectorized(rho, low), high, evaluate_vectorized(rho, high));
+      },
+      "rho"_a, "lower"_a, "upper"_a, "order"_a = 6, "subdivisions"_a = 2,
+      "Mass properties of density rho over the box [lower, upper] (3,) [m] by Gauss-Legendre quadrature\n"
+      "(seed 000 (4.55), (4.56), (4.70)) at `order` and 2*order points per cell axis, subdivisions^3 cells.\n"
+      "rho is called with points (n, 3) [m] and returns (n,) densities [kg/m^3] >= 0. Returns a\n"
+      "DensityIntegral (high-order result, differences to the low order as error estimate).");
+  m.def(
+      "integrate_density_over_mesh",
+      [](const py::function& rho, py::handle vertices, py::handle faces, int order) {
+        const PointRows v = as_points(vertices, "vertices");
+        const MeshFaces f = as_faces(faces);
+        if (order < 1 || order > 32) throw py::value_error("order: expected an integer in [1, 32], got " + std::to_string(order));
+        const QuadratureRule low = mesh_quadrature(v, f, order);
+        const QuadratureRule high = mesh_quadrature(v, f, 2 * order);
+        return compare_density_integrals(low, evaluate_vectorized(rho, low), high, evaluate_vectorized(rho, high));
+      },
+      "rho"_a, "vertices"_a, "faces"_a, "order"_a = 4,
+      "Mass properties of density rho over the solid bounded by a closed mesh (signed tetrahedra, collapsed\n"
+      "Gauss-Legendre, order^3 and (2 order)^3 points per face). rho: points (n, 3) -> (n,) [kg/m^3], must\n"
+      "be defined on the mesh's convex hull. Returns a DensityIntegral.");
+}
+
+}  // namespace
+
+void bind_inertia(py::module_& m) {
+  bind_types(m);
+  bind_spatial_inertia(m);
+  bind_validity(m);
+  bind_primitives(m);
+  bind_mesh_and_density(m);
+}
 
 }  // namespace rigiddyn::bindings

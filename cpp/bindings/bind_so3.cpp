@@ -1,9 +1,413 @@
-// Python bindings of the so3 layer.
+// Python bindings of the so3 layer (rotations): a name table over rigiddyn/so3/*.hpp. Every
+// function takes one item or a stack of n items (leading axis n) and returns the same; the loops
+// over stacks run in C++ with the GIL released. Quaternions are (x, y, z, w), or (w, x, y, z) with
+// scalar_first=True; every quaternion argument except quat_normalize's must be a unit quaternion
+// (| |q| - 1 | <= 1e-6, then normalised) and every matrix argument a rotation matrix
+// (max |R^T R - I| <= 1e-6, det > 0); otherwise ValueError naming the argument (and the item).
+#include <string>
+#include <vector>
+
 #include "bindings.hpp"
 #include "numpy_io.hpp"
+#include "rigiddyn/so3/axis_angle.hpp"
+#include "rigiddyn/so3/elementary.hpp"
+#include "rigiddyn/so3/euler.hpp"
+#include "rigiddyn/so3/exp_log.hpp"
+#include "rigiddyn/so3/integrate.hpp"
+#include "rigiddyn/so3/matrix.hpp"
+#include "rigiddyn/so3/quaternion.hpp"
+#include "rigiddyn/so3/skew.hpp"
 
 namespace rigiddyn::bindings {
 
-void bind_so3(pybind11::module_& m) { (void)m; }
+namespace py = pybind11;
+using namespace pybind11::literals;
+using py_io::Array;
+using py_io::Stack;
+using Shape = std::vector<py::ssize_t>;
+using RowMajor3 = Eigen::Matrix<double, 3, 3, Eigen::RowMajor>;
+
+namespace {
+
+// layouts of one item
+const Shape scalar{};
+const Shape vector3{3};
+const Shape quaternion{4};
+const Shape matrix3{3, 3};
+
+py::ssize_t item_size(const Shape& shape) {
+  py::ssize_t size = 1;
+  for (py::ssize_t extent : shape) size *= extent;
+  return size;
+}
+
+// item readers and writers (numpy items are C-contiguous: matrices row-major)
+Eigen::Vector3d read_vector(const double* p) { return Eigen::Vector3d(p[0], p[1], p[2]); }
+Eigen::Matrix3d read_matrix(const double* p) { return Eigen::Map<const RowMajor3>(p); }
+void write_vector(const Eigen::Vector3d& v, double* out) { Eigen::Map<Eigen::Vector3d>{out} = v; }
+void write_matrix(const Eigen::Matrix3d& R, double* out) { Eigen::Map<RowMajor3>{out} = R; }
+
+// Runs kernel(i) for i in [0, n) without the GIL. A std::invalid_argument from item i of a stack
+// gets " (item i)" appended, so the message names the argument and the offending item.
+template <typename Kernel>
+void for_each_item(py::ssize_t n, bool stacked, Kernel kernel) {
+  py::gil_scoped_release release;
+  py::ssize_t i = 0;
+  try {
+    for (; i < n; ++i) kernel(i);
+  } catch (const std::invalid_argument& e) {
+    if (!stacked) throw;
+    throw std::invalid_argument(std::string(e.what()) + " (item " + std::to_string(i) + ")");
+  }
+}
+
+// out[i] = f(in[i]) over a stack: items of shape `in_shape` -> items of shape `out_shape`.
+// f(const double* in_item, double* out_item).
+template <typename F>
+Array map_unary(py::handle x, const char* name, const Shape& in_shape, const Shape& out_shape, F f) {
+  const Stack in = py_io::as_stack(x, name, in_shape);
+  Array out = py_io::new_stack(in.n, in.stacked, out_shape);
+  const double* a = in.array.data();
+  double* o = out.mutable_data();
+  const py::ssize_t a_size = item_size(in_shape), o_size = item_size(out_shape);
+  for_each_item(in.n, in.stacked, [&](py::ssize_t i) { f(a + i * a_size, o + i * o_size); });
+  return out;
+}
+
+// out[i] = f(x[i], y[i]) over two stacks; a single item is used with every item of the other.
+// ValueError naming y when both are stacked with different lengths.
+template <typename F>
+Array map_binary(py::handle x, const char* x_name, const Shape& x_shape, py::handle y, const char* y_name,
+                 const Shape& y_shape, const Shape& out_shape, F f) {
+  const Stack sx = py_io::as_stack(x, x_name, x_shape);
+  const Stack sy = py_io::as_stack(y, y_name, y_shape);
+  if (sx.stacked && sy.stacked && sx.n != sy.n) {
+    throw py::value_error(std::string(y_name) + ": expected " + std::to_string(sx.n) + " items (as " + x_name +
+                          "), got " + std::to_string(sy.n));
+  }
+  const bool stacked = sx.stacked || sy.stacked;
+  const py::ssize_t n = sx.stacked ? sx.n : sy.n;
+  Array out = py_io::new_stack(n, stacked, out_shape);
+  const double* a = sx.array.data();
+  const double* b = sy.array.data();
+  double* o = out.mutable_data();
+  // stride 0 broadcasts a single item
+  const py::ssize_t a_step = sx.stacked ? item_size(x_shape) : 0, b_step = sy.stacked ? item_size(y_shape) : 0;
+  const py::ssize_t o_size = item_size(out_shape);
+  for_each_item(n, stacked, [&](py::ssize_t i) { f(a + i * a_step, b + i * b_step, o + i * o_size); });
+  return out;
+}
+
+// The Euler axis sequence argument: TypeError unless a str, ValueError unless a valid sequence.
+EulerSequence as_sequence(py::handle seq) {
+  if (!py::isinstance<py::str>(seq)) {
+    throw py::type_error("seq: expected a str such as 'xyz' or 'ZYX', got " +
+                         std::string(py::str(py::type::of(seq).attr("__name__"))));
+  }
+  return EulerSequence(seq.cast<std::string>(), "seq");
+}
+
+Frame as_frame(py::handle frame) {
+  if (py::isinstance<py::str>(frame)) {
+    const std::string name = frame.cast<std::string>();
+    if (name == "body") return Frame::body;
+    if (name == "world") return Frame::world;
+    throw py::value_error("frame: expected 'body' or 'world', got '" + name + "'");
+  }
+  throw py::type_error("frame: expected 'body' or 'world', got " +
+                       std::string(py::str(py::type::of(frame).attr("__name__"))));
+}
+
+// a 0-d result array (single item of shape ()) as a Python float
+py::object scalar_or_array(const Array& a, bool stacked) {
+  if (stacked) return a;
+  return py::float_(a.data()[0]);
+}
+
+}  // namespace
+
+void bind_so3(py::module_& m) {
+  // ------------------------------------------------------------ matrices
+  m.def(
+      "quat_to_matrix",
+      [](py::handle q, bool scalar_first) {
+        const std::string name = "q";
+        return map_unary(q, "q", quaternion, matrix3, [&](const double* in, double* out) {
+          write_matrix(quat_to_matrix(checked_unit_quaternion(py_io::read_quaternion(in, scalar_first), name)), out);
+        });
+      },
+      "q"_a, "scalar_first"_a = false,
+      "Rotation matrix R(q) of unit quaternions.\n\n"
+      "q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first; unit norm within 1e-6.\n"
+      "Returns R: (3, 3) or (n, 3, 3), active (R v rotates v; q_WB gives R_WB).");
+
+  m.def(
+      "matrix_to_quat",
+      [](py::handle R, bool scalar_first) {
+        const std::string name = "R";
+        return map_unary(R, "R", matrix3, quaternion, [&](const double* in, double* out) {
+          py_io::write_quaternion(matrix_to_quat(checked_rotation_matrix(read_matrix(in), name)), out, scalar_first);
+        });
+      },
+      "R"_a, "scalar_first"_a = false,
+      "Unit quaternion of rotation matrices, canonical sign w >= 0 (Shepperd's method, accurate at all angles).\n\n"
+      "R: (3, 3) or (n, 3, 3), orthonormal with det +1 (max |R^T R - I| <= 1e-6).\n"
+      "Returns q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first.");
+
+  // ------------------------------------------------------------ exp / log
+  m.def(
+      "rotvec_to_quat",
+      [](py::handle rotvec, bool scalar_first) {
+        return map_unary(rotvec, "rotvec", vector3, quaternion, [&](const double* in, double* out) {
+          py_io::write_quaternion(rotvec_to_quat(read_vector(in)), out, scalar_first);
+        });
+      },
+      "rotvec"_a, "scalar_first"_a = false,
+      "Exponential map: unit quaternion of rotation vectors rotvec = angle * axis [rad] (any angle; exact near 0).\n\n"
+      "rotvec: (3,) or (n, 3). Returns q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first;\n"
+      "w < 0 when the angle exceeds pi (no sign flip).");
+
+  m.def(
+      "quat_to_rotvec",
+      [](py::handle q, bool scalar_first) {
+        const std::string name = "q";
+        return map_unary(q, "q", quaternion, vector3, [&](const double* in, double* out) {
+          write_vector(quat_to_rotvec(checked_unit_quaternion(py_io::read_quaternion(in, scalar_first), name)), out);
+        });
+      },
+      "q"_a, "scalar_first"_a = false,
+      "Logarithm map: rotation vector angle * axis [rad] of unit quaternions, angle in [0, pi].\n\n"
+      "q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first. Returns (3,) or (n, 3).\n"
+      "Accurate near angle 0 and near pi (atan2 form).");
+
+  m.def(
+      "rotvec_to_matrix",
+      [](py::handle rotvec) {
+        return map_unary(rotvec, "rotvec", vector3, matrix3,
+                         [&](const double* in, double* out) { write_matrix(rotvec_to_matrix(read_vector(in)), out); });
+      },
+      "rotvec"_a,
+      "Exponential map into rotation matrices (Rodrigues): rotvec = angle * axis [rad], (3,) or (n, 3).\n"
+      "Returns R: (3, 3) or (n, 3, 3).");
+
+  m.def(
+      "matrix_to_rotvec",
+      [](py::handle R) {
+        const std::string name = "R";
+        return map_unary(R, "R", matrix3, vector3, [&](const double* in, double* out) {
+          write_vector(matrix_to_rotvec(checked_rotation_matrix(read_matrix(in), name)), out);
+        });
+      },
+      "R"_a,
+      "Logarithm map of rotation matrices: rotation vector angle * axis [rad], angle in [0, pi].\n\n"
+      "R: (3, 3) or (n, 3, 3), orthonormal with det +1. Returns (3,) or (n, 3). Accurate near 0 and pi.");
+
+  // ------------------------------------------------------------ axis-angle
+  m.def(
+      "axis_angle_to_quat",
+      [](py::handle axis, py::handle angle, bool scalar_first) {
+        return map_binary(axis, "axis", vector3, angle, "angle", scalar, quaternion,
+                          [&](const double* u, const double* a, double* out) {
+                            py_io::write_quaternion(axis_angle_to_quat(read_vector(u), *a), out, scalar_first);
+                          });
+      },
+      "axis"_a, "angle"_a, "scalar_first"_a = false,
+      "Unit quaternion of the rotation by angle [rad] about axis (right-hand rule).\n\n"
+      "axis: (3,) or (n, 3), any non-zero length (normalised); angle: float or (n,).\n"
+      "Returns q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first.");
+
+  m.def(
+      "quat_to_axis_angle",
+      [](py::handle q, bool scalar_first) {
+        const Stack in = py_io::as_stack(q, "q", quaternion);
+        Array axis = py_io::new_stack(in.n, in.stacked, vector3);
+        Array angle = py_io::new_stack(in.n, in.stacked, scalar);
+        const double* a = in.array.data();
+        double* u = axis.mutable_data();
+        double* t = angle.mutable_data();
+        const std::string name = "q";
+        for_each_item(in.n, in.stacked, [&](py::ssize_t i) {
+          const AxisAngle r = quat_to_axis_angle(checked_unit_quaternion(py_io::read_quaternion(a + 4 * i, scalar_first), name));
+          write_vector(r.axis, u + 3 * i);
+          t[i] = r.angle;
+        });
+        return py::make_tuple(axis, scalar_or_array(angle, in.stacked));
+      },
+      "q"_a, "scalar_first"_a = false,
+      "Axis (unit) and angle [rad] in [0, pi] of unit quaternions; the identity gives axis (1, 0, 0), angle 0.\n\n"
+      "q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first.\n"
+      "Returns (axis, angle): ((3,), float) or ((n, 3), (n,)).");
+
+  // ------------------------------------------------------------ Euler angles
+  const char* euler_note =
+      "seq: 3 letters as SciPy, lowercase 'xyz' = extrinsic (fixed axes), uppercase 'XYZ' = intrinsic\n"
+      "(moving axes); the 12 sequences xyz xzy yxz yzx zxy zyx xyx xzx yxy yzy zxz zyz in either case.\n";
+  m.def(
+      "euler_to_quat",
+      [](py::handle seq, py::handle angles, bool scalar_first) {
+        const EulerSequence s = as_sequence(seq);
+        return map_unary(angles, "angles", vector3, quaternion, [&](const double* in, double* out) {
+          py_io::write_quaternion(euler_to_quat(s, read_vector(in)), out, scalar_first);
+        });
+      },
+      "seq"_a, "angles"_a, "scalar_first"_a = false,
+      (std::string("Unit quaternion of Euler angles.\n\n") + euler_note +
+       "angles: (3,) or (n, 3) [rad], in the order of seq.\n"
+       "Returns q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first.")
+          .c_str());
+
+  m.def(
+      "quat_to_euler",
+      [](py::handle seq, py::handle q, bool scalar_first) {
+        const EulerSequence s = as_sequence(seq);
+        const std::string name = "q";
+        return map_unary(q, "q", quaternion, vector3, [&](const double* in, double* out) {
+          write_vector(quat_to_euler(s, checked_unit_quaternion(py_io::read_quaternion(in, scalar_first), name)), out);
+        });
+      },
+      "seq"_a, "q"_a, "scalar_first"_a = false,
+      (std::string("Euler angles [rad] of unit quaternions (Bernardes & Viollet 2022).\n\n") + euler_note +
+       "q: (4,) or (n, 4). Returns (3,) or (n, 3): first and third in [-pi, pi], second in [0, pi] (proper)\n"
+       "or [-pi/2, pi/2] (Tait-Bryan). At gimbal lock the third angle is set to 0, as SciPy does.")
+          .c_str());
+
+  m.def(
+      "euler_to_matrix",
+      [](py::handle seq, py::handle angles) {
+        const EulerSequence s = as_sequence(seq);
+        return map_unary(angles, "angles", vector3, matrix3,
+                         [&](const double* in, double* out) { write_matrix(euler_to_matrix(s, read_vector(in)), out); });
+      },
+      "seq"_a, "angles"_a,
+      (std::string("Rotation matrix of Euler angles.\n\n") + euler_note +
+       "angles: (3,) or (n, 3) [rad]. Returns R: (3, 3) or (n, 3, 3).")
+          .c_str());
+
+  m.def(
+      "matrix_to_euler",
+      [](py::handle seq, py::handle R) {
+        const EulerSequence s = as_sequence(seq);
+        const std::string name = "R";
+        return map_unary(R, "R", matrix3, vector3, [&](const double* in, double* out) {
+          write_vector(matrix_to_euler(s, checked_rotation_matrix(read_matrix(in), name)), out);
+        });
+      },
+      "seq"_a, "R"_a,
+      (std::string("Euler angles [rad] of rotation matrices (ranges and gimbal lock as quat_to_euler).\n\n") +
+       euler_note + "R: (3, 3) or (n, 3, 3), orthonormal with det +1. Returns (3,) or (n, 3).")
+          .c_str());
+
+  // ------------------------------------------------------------ elementary rotations
+  const auto bind_elementary = [&m](const char* name, Eigen::Matrix3d (*rot)(double), const char* doc) {
+    m.def(
+        name,
+        [rot](py::handle angle) {
+          return map_unary(angle, "angle", scalar, matrix3, [&](const double* in, double* out) { write_matrix(rot(*in), out); });
+        },
+        "angle"_a, doc);
+  };
+  bind_elementary("rot_x", &rot_x,
+                  "Elementary rotation about x by angle [rad] (active): [[1, 0, 0], [0, c, -s], [0, s, c]].\n"
+                  "angle: float or (n,). Returns (3, 3) or (n, 3, 3).");
+  bind_elementary("rot_y", &rot_y,
+                  "Elementary rotation about y by angle [rad] (active): [[c, 0, s], [0, 1, 0], [-s, 0, c]].\n"
+                  "angle: float or (n,). Returns (3, 3) or (n, 3, 3).");
+  bind_elementary("rot_z", &rot_z,
+                  "Elementary rotation about z by angle [rad] (active): [[c, -s, 0], [s, c, 0], [0, 0, 1]].\n"
+                  "angle: float or (n,). Returns (3, 3) or (n, 3, 3).");
+
+  // ------------------------------------------------------------ quaternion algebra
+  m.def(
+      "quat_multiply",
+      [](py::handle q1, py::handle q2, bool scalar_first) {
+        const std::string name1 = "q1", name2 = "q2";
+        return map_binary(q1, "q1", quaternion, q2, "q2", quaternion, quaternion,
+                          [&](const double* a, const double* b, double* out) {
+                            py_io::write_quaternion(
+                                quat_multiply(checked_unit_quaternion(py_io::read_quaternion(a, scalar_first), name1),
+                                              checked_unit_quaternion(py_io::read_quaternion(b, scalar_first), name2)),
+                                out, scalar_first);
+                          });
+      },
+      "q1"_a, "q2"_a, "scalar_first"_a = false,
+      "Hamilton product q1 ⊗ q2 of unit quaternions: R(q1 ⊗ q2) = R(q1) R(q2) (q2 applied first).\n\n"
+      "q1, q2: (4,) or (n, 4) each (a single one is used with every item of the other).\n"
+      "Returns (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first.");
+
+  m.def(
+      "quat_inverse",
+      [](py::handle q, bool scalar_first) {
+        const std::string name = "q";
+        return map_unary(q, "q", quaternion, quaternion, [&](const double* in, double* out) {
+          py_io::write_quaternion(quat_inverse(checked_unit_quaternion(py_io::read_quaternion(in, scalar_first), name)),
+                                  out, scalar_first);
+        });
+      },
+      "q"_a, "scalar_first"_a = false,
+      "Inverse (conjugate) of unit quaternions: q_BW from q_WB. q: (4,) or (n, 4); returns the same shape.");
+
+  m.def(
+      "quat_normalize",
+      [](py::handle q, bool scalar_first) {
+        const std::string name = "q";
+        return map_unary(q, "q", quaternion, quaternion, [&](const double* in, double* out) {
+          py_io::write_quaternion(quat_normalize(py_io::read_quaternion(in, scalar_first), name), out, scalar_first);
+        });
+      },
+      "q"_a, "scalar_first"_a = false,
+      "q / |q| for finite non-zero quaternions of any norm (ValueError for q = 0).\n"
+      "q: (4,) or (n, 4); returns the same shape, sign unchanged.");
+
+  m.def(
+      "quat_rotate",
+      [](py::handle q, py::handle v, bool scalar_first) {
+        const std::string name = "q";
+        return map_binary(q, "q", quaternion, v, "v", vector3, vector3, [&](const double* a, const double* b, double* out) {
+          write_vector(quat_rotate(checked_unit_quaternion(py_io::read_quaternion(a, scalar_first), name), read_vector(b)), out);
+        });
+      },
+      "q"_a, "v"_a, "scalar_first"_a = false,
+      "R(q) v: vectors rotated actively by unit quaternions (v_W = R_WB v_B for q = q_WB).\n\n"
+      "q: (4,) or (n, 4); v: (3,) or (n, 3) (a single one is used with every item of the other).\n"
+      "Returns (3,) or (n, 3).");
+
+  m.def(
+      "quat_integrate",
+      [](py::handle q, py::handle w, py::handle dt, py::handle frame, bool scalar_first) {
+        const double step = py_io::as_scalar(dt, "dt");
+        const Frame f = as_frame(frame);
+        const std::string name = "q";
+        return map_binary(q, "q", quaternion, w, "w", vector3, quaternion, [&](const double* a, const double* b, double* out) {
+          py_io::write_quaternion(
+              quat_integrate(checked_unit_quaternion(py_io::read_quaternion(a, scalar_first), name), read_vector(b), step, f),
+              out, scalar_first);
+        });
+      },
+      "q"_a, "w"_a, "dt"_a, "frame"_a = "body", "scalar_first"_a = false,
+      "Exact attitude update for an angular velocity w [rad/s] constant over dt [s].\n\n"
+      "frame='body': q ⊗ exp(w dt/2), w = w_B expressed in the body frame;\n"
+      "frame='world': exp(w dt/2) ⊗ q, w = w_W expressed in the world frame;\n"
+      "exp of a pure vector u is (sin|u| u/|u|, cos|u|).\n"
+      "q: (4,) or (n, 4) unit quaternions q_WB; w: (3,) or (n, 3); dt: float.\n"
+      "Returns (4,) or (n, 4), normalised, (x, y, z, w) or (w, x, y, z) if scalar_first.");
+
+  // ------------------------------------------------------------ skew matrices
+  m.def(
+      "hat",
+      [](py::handle v) {
+        return map_unary(v, "v", vector3, matrix3, [&](const double* in, double* out) { write_matrix(hat(read_vector(in)), out); });
+      },
+      "v"_a,
+      "Skew-symmetric cross-product matrix S = hat(v), S x = v × x. v: (3,) or (n, 3); returns (3, 3) or (n, 3, 3).");
+
+  m.def(
+      "vee",
+      [](py::handle S) {
+        return map_unary(S, "S", matrix3, vector3, [&](const double* in, double* out) { write_vector(vee(read_matrix(in)), out); });
+      },
+      "S"_a,
+      "Inverse of hat: v with hat(v) = (S - S^T)/2 (a symmetric part of S is ignored).\n"
+      "S: (3, 3) or (n, 3, 3); returns (3,) or (n, 3).");
+}
 
 }  // namespace rigiddyn::bindings

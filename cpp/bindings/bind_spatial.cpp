@@ -1,9 +1,326 @@
-// Python bindings of the spatial layer.
+// Python bindings of the spatial layer (Featherstone's spatial algebra, angular part first):
+// Motion, Force, Transform, Screw, the dense cross-product matrices, the screw of a twist, and the
+// array functions transform_compose / transform_points.
+#include <pybind11/operators.h>
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
 #include "bindings.hpp"
 #include "numpy_io.hpp"
+#include "rigiddyn/so3/matrix.hpp"
+#include "rigiddyn/spatial/cross.hpp"
+#include "rigiddyn/spatial/force.hpp"
+#include "rigiddyn/spatial/motion.hpp"
+#include "rigiddyn/spatial/screw.hpp"
+#include "rigiddyn/spatial/transform.hpp"
 
 namespace rigiddyn::bindings {
 
-void bind_spatial(pybind11::module_& m) { (void)m; }
+namespace py = pybind11;
+using namespace pybind11::literals;
+using py_io::Array;
+using py_io::Stack;
+
+namespace {
+
+// A numpy copy of a 3-vector or 3x3 matrix member, read-only so that `m.angular[0] = 1` fails
+// loudly instead of writing to a temporary.
+template <typename Derived>
+Array read_only(const Eigen::MatrixBase<Derived>& value) {
+  Array out = py_io::to_array(value);
+  out.attr("flags").attr("writeable") = false;
+  return out;
+}
+
+// Shortest round-trip text of a vector, as Python's float repr: [1.0, 2.5, -3.0].
+std::string list_repr(const Eigen::Vector3d& v) { return py::repr(py_io::to_array(v).attr("tolist")()); }
+
+// A finite scalar factor for `motion * s` (TypeError/ValueError naming "scalar").
+double as_factor(py::handle s) { return py_io::as_scalar(s, "scalar"); }
+
+// Stacks that are one item (broadcast) or n items: the common n; ValueError naming the argument
+// whose length differs from the first stacked one.
+py::ssize_t common_count(const std::vector<std::pair<const Stack*, const char*>>& stacks) {
+  const char* first = nullptr;
+  py::ssize_t n = 1;
+  for (const auto& [stack, name] : stacks) {
+    if (!stack->stacked) continue;
+    if (first == nullptr) {
+      first = name;
+      n = stack->n;
+    } else if (stack->n != n) {
+      throw py::value_error(std::string(name) + ": expected " + std::to_string(n) + " items (as " + first +
+                            "), got " + std::to_string(stack->n));
+    }
+  }
+  return n;
+}
+
+bool any_stacked(const std::vector<std::pair<const Stack*, const char*>>& stacks) {
+  for (const auto& entry : stacks)
+    if (entry.first->stacked) return true;
+  return false;
+}
+
+// Item i of a stack (item 0 of a single item, which broadcasts).
+const double* item(const Stack& s, py::ssize_t i, py::ssize_t size) { return s.item(s.stacked ? i : 0, size); }
+
+using RowMatrix3d = Eigen::Matrix<double, 3, 3, Eigen::RowMajor>;
+
+Eigen::Vector3d vector_item(const Stack& s, py::ssize_t i) { return Eigen::Map<const Eigen::Vector3d>(item(s, i, 3)); }
+
+// The transforms X[i] of a rotation stack R (3,3)|(n,3,3) and a translation stack p (3,)|(n,3),
+// validated by Transform's constructor; a bad rotation is reported as "<R name>[i]: expected ...".
+// A single (broadcast) transform is built and checked once.
+class TransformStack {
+ public:
+  TransformStack(const Stack& R, const Stack& p, std::string R_name) : R_(R), p_(p), R_name_(std::move(R_name)) {
+    if (!R.stacked && !p.stacked) single_ = make(0);
+  }
+  Transform operator[](py::ssize_t i) const { return single_ ? *single_ : make(i); }
+
+ private:
+  Transform make(py::ssize_t i) const {
+    const Eigen::Matrix3d R = Eigen::Map<const RowMatrix3d>(item(R_, i, 9));
+    try {
+      return Transform(R, vector_item(p_, i));
+    } catch (const std::invalid_argument& e) {  // "rotation: expected ..." (p is finite: as_stack checked it)
+      const std::string message = e.what();
+      const std::string name = R_.stacked ? R_name_ + "[" + std::to_string(i) + "]" : R_name_;
+      throw std::invalid_argument(name + message.substr(message.find(':')));
+    }
+  }
+  const Stack& R_;
+  const Stack& p_;
+  std::string R_name_;
+  std::optional<Transform> single_;
+};
+
+// transform_compose: X_AC = X_AB * X_BC item by item (R_AC = R_AB R_BC, p_AC = R_AB p_BC + p_AB).
+py::tuple transform_compose(py::handle R_AB_obj, py::handle p_AB_obj, py::handle R_BC_obj, py::handle p_BC_obj) {
+  const Stack R_AB = py_io::as_stack(R_AB_obj, "R_AB", {3, 3}), p_AB = py_io::as_stack(p_AB_obj, "p_AB", {3});
+  const Stack R_BC = py_io::as_stack(R_BC_obj, "R_BC", {3, 3}), p_BC = py_io::as_stack(p_BC_obj, "p_BC", {3});
+  const std::vector<std::pair<const Stack*, const char*>> all = {
+      {&R_AB, "R_AB"}, {&p_AB, "p_AB"}, {&R_BC, "R_BC"}, {&p_BC, "p_BC"}};
+  const py::ssize_t n = common_count(all);
+  const bool stacked = any_stacked(all);
+  Array R_AC = py_io::new_stack(n, stacked, {3, 3}), p_AC = py_io::new_stack(n, stacked, {3});
+  double* R_out = R_AC.mutable_data();
+  double* p_out = p_AC.mutable_data();
+  {
+    py::gil_scoped_release release;
+    const TransformStack X_AB(R_AB, p_AB, "R_AB"), X_BC(R_BC, p_BC, "R_BC");
+    for (py::ssize_t i = 0; i < n; ++i) {
+      const Transform X_AC = X_AB[i] * X_BC[i];
+      Eigen::Map<RowMatrix3d>(R_out + 9 * i) = X_AC.rotation();
+      Eigen::Map<Eigen::Vector3d>(p_out + 3 * i) = X_AC.translation();
+    }
+  }
+  return py::make_tuple(R_AC, p_AC);
+}
+
+// transform_points: p_A = R_AB p_B + p_AB item by item.
+Array transform_points(py::handle R_AB_obj, py::handle p_AB_obj, py::handle p_B_obj) {
+  const Stack R_AB = py_io::as_stack(R_AB_obj, "R_AB", {3, 3}), p_AB = py_io::as_stack(p_AB_obj, "p_AB", {3});
+  const Stack p_B = py_io::as_stack(p_B_obj, "p_B", {3});
+  const std::vector<std::pair<const Stack*, const char*>> all = {{&R_AB, "R_AB"}, {&p_AB, "p_AB"}, {&p_B, "p_B"}};
+  const py::ssize_t n = common_count(all);
+  Array p_A = py_io::new_stack(n, any_stacked(all), {3});
+  double* out = p_A.mutable_data();
+  {
+    py::gil_scoped_release release;
+    const TransformStack X_AB(R_AB, p_AB, "R_AB");
+    for (py::ssize_t i = 0; i < n; ++i) Eigen::Map<Eigen::Vector3d>(out + 3 * i) = X_AB[i].act_point(vector_item(p_B, i));
+  }
+  return p_A;
+}
+
+// A point map (act_point / act_inv_point) over one point (3,) or a stack (n, 3).
+template <typename Map>
+Array map_points(py::handle points_obj, const char* name, Map&& map) {
+  const Stack points = py_io::as_stack(points_obj, name, {3});
+  Array out = py_io::new_stack(points.n, points.stacked, {3});
+  double* p = out.mutable_data();
+  {
+    py::gil_scoped_release release;
+    for (py::ssize_t i = 0; i < points.n; ++i) Eigen::Map<Eigen::Vector3d>(p + 3 * i) = map(vector_item(points, i));
+  }
+  return out;
+}
+
+void bind_motion(py::module_& m) {
+  py::class_<Motion>(m, "Motion",
+                     "Spatial motion vector (twist) [w; v], angular part first: w angular velocity [rad/s], v\n"
+                     "velocity [m/s] of the body point at the origin of the frame of expression.")
+      .def(py::init<>(), "The zero motion.")
+      .def(py::init([](py::handle angular, py::handle linear) {
+             return Motion(py_io::as_vector3(angular, "angular"), py_io::as_vector3(linear, "linear"));
+           }),
+           "angular"_a, "linear"_a, "Motion from w (3,) [rad/s] and v (3,) [m/s].")
+      .def_property_readonly("angular", [](const Motion& s) { return read_only(s.angular); },
+                             "w (3,) [rad/s], read-only copy")
+      .def_property_readonly("linear", [](const Motion& s) { return read_only(s.linear); },
+                             "v (3,) [m/s] at the frame's origin, read-only copy")
+      .def("to_vector", [](const Motion& s) { return py_io::to_array(s.to_vector()); }, "[w; v] as a (6,) array.")
+      .def_static("from_vector", [](py::handle v) { return Motion::from_vector(py_io::as_vector6(v, "vector")); },
+                  "vector"_a, "Motion from a (6,) array [w; v].")
+      .def(py::self + py::self)
+      .def(py::self - py::self)
+      .def(-py::self)
+      .def("__mul__", [](const Motion& s, py::handle k) { return s * as_factor(k); }, py::is_operator())
+      .def("__rmul__", [](const Motion& s, py::handle k) { return s * as_factor(k); }, py::is_operator())
+      .def("cross", py::overload_cast<const Motion&>(&Motion::cross, py::const_), "other"_a,
+           "Motion cross product (crm): self x other = [w1 x w2; w1 x v2 + v1 x w2].")
+      .def("cross_force", py::overload_cast<const Force&>(&Motion::cross, py::const_), "f"_a,
+           "Force cross product (crf): self x* f = [w x n + v x f; w x f].")
+      .def("dot", py::overload_cast<const Force&>(&Motion::dot, py::const_), "f"_a,
+           "Power w . n + v . f [W] of the force f on this motion (same frame and reference point).")
+      .def("__repr__", [](const Motion& s) {
+        return "Motion(angular=" + list_repr(s.angular) + ", linear=" + list_repr(s.linear) + ")";
+      });
+}
+
+void bind_force(py::module_& m) {
+  py::class_<Force>(m, "Force",
+                    "Spatial force vector (wrench) [n; f], angular part first: n moment [N m] about the\n"
+                    "origin of the frame of expression, f force [N].")
+      .def(py::init<>(), "The zero force.")
+      .def(py::init([](py::handle angular, py::handle linear) {
+             return Force(py_io::as_vector3(angular, "angular"), py_io::as_vector3(linear, "linear"));
+           }),
+           "angular"_a, "linear"_a, "Force from n (3,) [N m] and f (3,) [N].")
+      .def_property_readonly("angular", [](const Force& s) { return read_only(s.angular); },
+                             "n (3,) [N m] about the frame's origin, read-only copy")
+      .def_property_readonly("linear", [](const Force& s) { return read_only(s.linear); }, "f (3,) [N], read-only copy")
+      .def("to_vector", [](const Force& s) { return py_io::to_array(s.to_vector()); }, "[n; f] as a (6,) array.")
+      .def_static("from_vector", [](py::handle v) { return Force::from_vector(py_io::as_vector6(v, "vector")); },
+                  "vector"_a, "Force from a (6,) array [n; f].")
+      .def(py::self + py::self)
+      .def(py::self - py::self)
+      .def(-py::self)
+      .def("__mul__", [](const Force& s, py::handle k) { return s * as_factor(k); }, py::is_operator())
+      .def("__rmul__", [](const Force& s, py::handle k) { return s * as_factor(k); }, py::is_operator())
+      .def("dot", &Force::dot, "m"_a, "Power w . n + v . f [W] of this force on the motion m.")
+      .def("__repr__", [](const Force& s) {
+        return "Force(angular=" + list_repr(s.angular) + ", linear=" + list_repr(s.linear) + ")";
+      });
+}
+
+void bind_transform(py::module_& m) {
+  py::class_<Transform>(m, "Transform",
+                        "Rigid transform X_AB: R_AB (B coordinates -> A coordinates) and p_AB (B's origin in A)\n"
+                        "[m]. Maps points, motions and forces expressed in B to A; X_AB * X_BC = X_AC.")
+      .def(py::init([](py::object rotation, py::object translation) {
+             const Eigen::Matrix3d R =
+                 rotation.is_none() ? Eigen::Matrix3d::Identity() : py_io::as_matrix3(rotation, "rotation");
+             const Eigen::Vector3d p =
+                 translation.is_none() ? Eigen::Vector3d::Zero() : py_io::as_vector3(translation, "translation");
+             return Transform(R, p);
+           }),
+           "rotation"_a = py::none(), "translation"_a = py::none(),
+           "X_AB from rotation R_AB (3,3), orthonormal with det +1 (default identity), and translation\n"
+           "p_AB (3,) [m] (default zero). ValueError on a non-rotation or non-finite input.")
+      .def_static(
+          "from_quat",
+          [](py::handle q, py::object translation, bool scalar_first) {
+            const Eigen::Vector3d p =
+                translation.is_none() ? Eigen::Vector3d::Zero() : py_io::as_vector3(translation, "translation");
+            return Transform::from_quat(py_io::as_quaternion(q, "q_AB", scalar_first), p);
+          },
+          "q_AB"_a, "translation"_a = py::none(), "scalar_first"_a = false,
+          "X_AB from the unit quaternion q_AB (4,) ((x, y, z, w), or (w, x, y, z) if scalar_first) and\n"
+          "p_AB (3,) [m] (default zero).")
+      .def_property_readonly("rotation", [](const Transform& X) { return read_only(X.rotation()); },
+                             "R_AB (3,3), read-only copy")
+      .def_property_readonly("translation", [](const Transform& X) { return read_only(X.translation()); },
+                             "p_AB (3,) [m], read-only copy")
+      .def(
+          "quat", [](const Transform& X, bool scalar_first) { return py_io::to_array(X.quat(), scalar_first); },
+          "scalar_first"_a = false, "q_AB (4,) with w >= 0, (x, y, z, w) or (w, x, y, z) if scalar_first.")
+      .def(
+          "act_point",
+          [](const Transform& X, py::handle p_B) {
+            return map_points(p_B, "p_B", [&X](const Eigen::Vector3d& p) { return X.act_point(p); });
+          },
+          "p_B"_a, "p_A = R_AB p_B + p_AB for points p_B (3,) or (n, 3) [m].")
+      .def(
+          "act_inv_point",
+          [](const Transform& X, py::handle p_A) {
+            return map_points(p_A, "p_A", [&X](const Eigen::Vector3d& p) { return X.act_inv_point(p); });
+          },
+          "p_A"_a, "p_B = R_AB^T (p_A - p_AB) for points p_A (3,) or (n, 3) [m].")
+      .def("act", py::overload_cast<const Motion&>(&Transform::act, py::const_), "m"_a,
+           "Motion in B -> in A: [R w; R v + p x (R w)].")
+      .def("act", py::overload_cast<const Force&>(&Transform::act, py::const_), "f"_a,
+           "Force in B -> in A: [R n + p x (R f); R f].")
+      .def("act_inv", py::overload_cast<const Motion&>(&Transform::act_inv, py::const_), "m"_a,
+           "Motion in A -> in B: [R^T w; R^T (v - p x w)].")
+      .def("act_inv", py::overload_cast<const Force&>(&Transform::act_inv, py::const_), "f"_a,
+           "Force in A -> in B: [R^T (n - p x f); R^T f].")
+      .def(py::self * py::self, "X_AB * X_BC = X_AC.")
+      .def("inverse", &Transform::inverse, "X_BA = X_AB^-1.")
+      .def("motion_matrix", [](const Transform& X) { return py_io::to_array(X.motion_matrix()); },
+           "Featherstone's X (6,6), angular first: [[R, 0], [hat(p) R, R]].")
+      .def("force_matrix", [](const Transform& X) { return py_io::to_array(X.force_matrix()); },
+           "Featherstone's X* (6,6) = X^-T: [[R, hat(p) R], [0, R]].")
+      .def("__repr__", [](const Transform& X) {
+        return "Transform(rotation=" + std::string(py::repr(py_io::to_array(X.rotation()).attr("tolist")())) +
+               ", translation=" + list_repr(X.translation()) + ")";
+      });
+}
+
+void bind_screw(py::module_& m) {
+  py::class_<Screw>(m, "Screw",
+                    "Screw of a twist (instantaneous screw axis): unit direction, point of the axis closest to\n"
+                    "the origin [m], pitch [m/rad] (inf for a pure translation) and magnitude (|w| [rad/s], or\n"
+                    "|v| [m/s] for a pure translation), all in the twist's frame.")
+      .def(py::init([](py::handle direction, py::handle point, double pitch, double magnitude) {
+             return Screw{py_io::as_vector3(direction, "direction"), py_io::as_vector3(point, "point"), pitch,
+                          magnitude};
+           }),
+           "direction"_a, "point"_a, "pitch"_a, "magnitude"_a,
+           "Screw from its parts (checked by screw_to_twist): direction (3,) unit, point (3,) [m], pitch [m/rad]\n"
+           "(inf: pure translation), magnitude [rad/s] (or [m/s]).")
+      .def_property_readonly("direction", [](const Screw& s) { return read_only(s.direction); }, "unit (3,)")
+      .def_property_readonly("point", [](const Screw& s) { return read_only(s.point); },
+                             "(3,) [m], point of the axis closest to the origin")
+      .def_readonly("pitch", &Screw::pitch, "[m/rad]; inf for a pure translation")
+      .def_readonly("magnitude", &Screw::magnitude, "|w| [rad/s], or |v| [m/s] for a pure translation")
+      .def("__repr__", [](const Screw& s) {
+        return "Screw(direction=" + list_repr(s.direction) + ", point=" + list_repr(s.point) +
+               ", pitch=" + std::string(py::repr(py::float_(s.pitch))) +
+               ", magnitude=" + std::string(py::repr(py::float_(s.magnitude))) + ")";
+      });
+  m.def("twist_to_screw", &twist_to_screw, "twist"_a,
+        "The screw (instantaneous screw axis) of a twist [w; v]: direction w/|w|, point (w x v)/|w|^2,\n"
+        "pitch (w . v)/|w|^2, magnitude |w|; for w = 0: pitch inf, direction v/|v|, point 0, magnitude |v|.\n"
+        "ValueError for the zero twist (no axis).");
+  m.def("screw_to_twist", &screw_to_twist, "screw"_a,
+        "The twist of a screw: w = magnitude direction, v = magnitude (point x direction + pitch direction)\n"
+        "(v = magnitude direction for pitch inf).");
+}
+
+}  // namespace
+
+void bind_spatial(py::module_& m) {
+  bind_force(m);
+  bind_motion(m);
+  bind_transform(m);
+  bind_screw(m);
+  m.def("motion_cross_matrix", [](const Motion& v) { return py_io::to_array(motion_cross_matrix(v)); }, "m"_a,
+        "crm(m) (6,6) = [[hat(w), 0], [hat(v), hat(w)]], so crm(m) m2 = m x m2.");
+  m.def("force_cross_matrix", [](const Motion& v) { return py_io::to_array(force_cross_matrix(v)); }, "m"_a,
+        "crf(m) (6,6) = [[hat(w), hat(v)], [0, hat(w)]] = -crm(m)^T, so crf(m) f = m x* f.");
+  m.def("transform_compose", &transform_compose, "R_AB"_a, "p_AB"_a, "R_BC"_a, "p_BC"_a,
+        "X_AC = X_AB * X_BC item by item: R_AC = R_AB R_BC, p_AC = R_AB p_BC + p_AB. Rotations (3,3) or\n"
+        "(n,3,3), translations (3,) or (n,3) [m]; single items broadcast. Returns (R_AC, p_AC).");
+  m.def("transform_points", &transform_points, "R_AB"_a, "p_AB"_a, "p_B"_a,
+        "p_A = R_AB p_B + p_AB item by item: R_AB (3,3)|(n,3,3), p_AB (3,)|(n,3), p_B (3,)|(n,3) [m];\n"
+        "single items broadcast.");
+}
 
 }  // namespace rigiddyn::bindings

@@ -7,6 +7,12 @@ coordinates to world coordinates) are in ``docs/conventions.md``.
 
 from . import _core
 from ._core import *  # noqa: F401,F403  (the core's names are the package's API)
+from .rotation_scipy import from_scipy, to_scipy
+from .inertia_mesh import mesh_shell, solid_mesh  # accept trimesh objects too
+from .problem import Problem, load_problem
+from .stability import StabilityWarning
+from .tradeoff import TradeoffResult, tradeoff  # the function shadows its module's name on the package
 
 __version__: str = _core.__version__
-__all__ = [name for name in dir(_core) if not name.startswith("_")]
+__all__ = [name for name in dir(_core) if not name.startswith("_")] + ["to_scipy", "from_scipy"] + [
+    "Problem", "load_problem", "StabilityWarning", "TradeoffResult", "tradeoff"]

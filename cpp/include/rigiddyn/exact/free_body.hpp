@@ -1,0 +1,112 @@
+// The exact motion of a torque-free rigid body (Euler–Poinsot), as a function of time.
+//
+// Body angular momentum m = I ω (about the centre of mass, in the body's principal frame), Euler's
+// equations ṁ = m × ω, attitude Ṙ_WB = R_WB ω̂, spatial L_W = R_WB m constant
+// (Landau & Lifshitz, Mechanics §37; ../shared/notes/free-rigid-body.md). Principal moments are
+// sorted I1 < I2 < I3 by a rotation (a signed permutation when I is diagonal) of determinant +1.
+// With G² = |m|², 2T = Σ m_i²/I_i and Δ_j = G² − 2T I_j (computed without cancellation):
+//
+// case           | when                                   | ω(t)                                   | attitude
+// ---------------|----------------------------------------|----------------------------------------|----------------------------------
+// sphere         | I3 − I1 ≤ tol                           | constant                               | exp(ω_W t) q0
+// symmetric      | I2 − I1 ≤ tol or I3 − I2 ≤ tol          | rotates about the symmetry axis        | exp(L_W t/I_t) q0 exp(β t e_B)
+// A              | Δ2 > 0 (m circulates about axis 3)      | (cn, sn, dn)(λt + u0 | m) on (1, 2, 3) | Z-X-Z about L, φ via Π(am u, n|m)
+// B              | Δ2 < 0 (m circulates about axis 1)      | (dn, sn, cn)(λt + u0 | m) on (1, 2, 3) | Z-X-Z about L, φ via Π(am u, n|m)
+// separatrix     | Δ2 = 0 exactly (in double-double)       | (sech, tanh, sech)(λt + u0) on (1,2,3) | as A with m = 1
+// (A, B, sep.)   | steady spin: two of m1, m2, m3 are 0    | constant                               | exp(ω_W t) q0
+//
+// tol = 64 eps I3: moments closer than this are not resolvable from a Matrix3d inertia (its
+// eigen-decomposition is only that accurate); the equal pair is replaced by its mean, which changes
+// the motion by less than 64 eps relative per radian turned. Δ2 is evaluated in double-double
+// (FMA two-products and compensated sums), so that 1 − m keeps full relative precision down to the
+// separatrix. Accuracy: a few ulps in ω and attitude at t = 0, growing as eps·|phase| with t.
+#pragma once
+#include "rigiddyn/exact/elliptic.hpp"
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <string>
+
+namespace rigiddyn {
+
+// Which closed form a TorqueFreeSolution uses (table above).
+enum class TorqueFreeCase { sphere, symmetric, A, B, separatrix };
+
+// "sphere", "symmetric", "A", "B" or "separatrix".
+std::string to_string(TorqueFreeCase c);
+
+// The state of the body at one time: attitude q_WB (unit) and angular velocity w_B [rad/s] of B in
+// W, expressed in B.
+struct TorqueFreeState {
+  Eigen::Quaterniond q_WB;
+  Eigen::Vector3d w_B;
+};
+
+class TorqueFreeSolution {
+ public:
+  // I_B: rotational inertia about the centre of mass, expressed in B [kg m²], symmetric positive
+  // definite (any such matrix is accepted, also ones violating the triangle inequality);
+  // q_WB: initial attitude (norm within 1e-6 of 1; normalised); w_B: initial angular velocity of
+  // B, expressed in B [rad/s]. Throws std::invalid_argument on bad input.
+  TorqueFreeSolution(const Eigen::Matrix3d& I_B, const Eigen::Quaterniond& q_WB, const Eigen::Vector3d& w_B);
+
+  // The state at time t [s] (any finite real, also negative) after the initial one.
+  TorqueFreeState state_at(double t) const;
+
+  // Period of w_B(t) [s] (4K/λ in cases A and B; 2π/|β| for a symmetric body); +inf when w_B is
+  // constant or on the separatrix. One intermediate-axis flip (Dzhanibekov) takes half of it.
+  double period() const { return period_; }
+  TorqueFreeCase solution_case() const { return case_; }
+  // Parameter m of the elliptic functions and its complement 1 − m (0 and 1 unless case A or B;
+  // 1 and 0 on the separatrix).
+  double parameter_m() const { return elliptic_.m; }
+  double parameter_mc() const { return elliptic_.mc; }
+  // Principal moments I1 ≤ I2 ≤ I3 [kg m²] and R_BP (columns: principal axes in B, det +1).
+  const Eigen::Vector3d& principal_moments() const { return I_principal_; }
+  const Eigen::Matrix3d& R_BP() const { return R_BP_; }
+  // The invariants: spatial angular momentum L_W [kg m²/s] and kinetic energy T [J].
+  const Eigen::Vector3d& angular_momentum_W() const { return L_W_; }
+  double kinetic_energy() const { return kinetic_energy_; }
+
+ private:
+  void init_rotation_about_axis(const Eigen::Vector3d& I_Q, const Eigen::Vector3d& axis_B, double I_axial);
+  void init_elliptic(const Eigen::Vector3d& m_P, double delta1, double delta3, double delta2);
+  TorqueFreeState state_about_axis(double t) const;
+  TorqueFreeState state_elliptic(double t) const;
+
+  TorqueFreeCase case_;
+  Eigen::Vector3d I_principal_;
+  Eigen::Matrix3d R_BP_;
+  Eigen::Vector3d L_W_;
+  double kinetic_energy_;
+  double period_;
+  Eigen::Quaterniond q_WB0_;
+  Eigen::Vector3d w_B0_;
+
+  // sphere, symmetric and steady spin (about_axis_):
+  // q(t) = exp(nu_W t) q0 exp(beta t e_B), ω(t) = exp(−β t ê_B) ω0
+  bool about_axis_ = false;
+  Eigen::Vector3d nu_W_ = Eigen::Vector3d::Zero();  // L_W / I_t [rad/s]
+  Eigen::Vector3d e_B_ = Eigen::Vector3d::UnitZ();  // symmetry axis in B
+  double beta_ = 0.0;                               // body spin rate about e_B [rad/s]
+
+  // cases A, B, separatrix: in the frame Q = (a, b, s) of principal axes, s carrying dn,
+  // ω_Q = (w_cn cn, w_sn sn, w_dn dn) placed at (cn_axis, sn_axis, 2); u = λ t + u0
+  EllipticParameter elliptic_{0.0, 1.0, 0.0};
+  Eigen::Quaterniond q_BQ_;
+  Eigen::Quaterniond q_WN_;                         // N: inertial, z along L_W
+  Eigen::Vector3d I_Q_ = Eigen::Vector3d::Ones();
+  Eigen::Vector3d w_amplitude_ = Eigen::Vector3d::Zero();  // signed (w_cn, w_sn, w_dn) [rad/s]
+  int cn_axis_ = 0;
+  int sn_axis_ = 1;
+  double lambda_ = 0.0;                             // [1/s]
+  double u0_ = 0.0;
+  double n_ = 0.0;                                  // characteristic of Π
+  double pi_complete_ = 0.0;                        // Π(n|m)
+  double pi0_ = 0.0;                                // Π(am u0, n|m)
+  double phi_rate_ = 0.0;                           // G/I_s [rad/s]
+  double phi_pi_ = 0.0;                             // coefficient of Π in φ [rad]
+};
+
+}  // namespace rigiddyn

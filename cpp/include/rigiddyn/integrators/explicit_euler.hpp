@@ -1,0 +1,18 @@
+// Explicit (forward) Euler: y1 = y0 + h ẏ(y0), then the quaternion is renormalised.
+// Order 1; 1 derivative evaluation per step. Conserves nothing of the dynamics: on a free rigid
+// body |L|² and the energy grow every step (the map is expansive), so it blows up; kept as the
+// textbook reference. Unit |q| holds only through the renormalisation.
+#pragma once
+#include "rigiddyn/models/model_interface.hpp"  // RIGIDDYN_ALWAYS_INLINE
+
+namespace rigiddyn {
+
+struct ExplicitEuler {
+  template <class Model>
+  RIGIDDYN_ALWAYS_INLINE static void step(const Model& model, typename Model::Coordinates& y, double h) {
+    y += h * model.rate(y);
+    model.project(y);
+  }
+};
+
+}  // namespace rigiddyn

@@ -1,0 +1,49 @@
+// Applied loads of a single body: forces through the centre of mass and couples, each given in the
+// world frame W or in the body frame B, each active on a time interval [t_start, t_end), so that a
+// list of them is a piecewise-constant schedule. Uniform gravity is separate (models add m g).
+//
+// Time discretisation (zero-order hold): `simulate` sums the loads active at the START of each step
+// and holds them constant during the step, so a switch inside a step acts from the next step on.
+// Put switch times on the step grid (t_start = k dt) for an exact piecewise-constant schedule.
+#pragma once
+#include "rigiddyn/so3/integrate.hpp"  // Frame
+
+#include <Eigen/Core>
+
+#include <limits>
+#include <vector>
+
+namespace rigiddyn {
+
+// One load: force [N] through the centre of mass and couple [N m], both expressed in `frame`,
+// active for t in [t_start, t_end) [s].
+struct AppliedLoad {
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();
+  Eigen::Vector3d torque = Eigen::Vector3d::Zero();
+  Frame frame = Frame::world;
+  double t_start = -std::numeric_limits<double>::infinity();
+  double t_end = std::numeric_limits<double>::infinity();
+
+  bool active_at(double t) const { return t_start <= t && t < t_end; }
+};
+
+// The sum of the loads active at one instant, split by frame of expression (the body-frame parts
+// turn with the body, so a model rotates them at each derivative evaluation).
+struct ComLoads {
+  Eigen::Vector3d f_W = Eigen::Vector3d::Zero();  // force in W [N] (gravity m g is added by the model)
+  Eigen::Vector3d f_B = Eigen::Vector3d::Zero();  // force in B [N]
+  Eigen::Vector3d n_W = Eigen::Vector3d::Zero();  // couple in W [N m]
+  Eigen::Vector3d n_B = Eigen::Vector3d::Zero();  // couple in B [N m]
+};
+
+// The sum of the loads of `schedule` active at time t [s].
+ComLoads loads_at(const std::vector<AppliedLoad>& schedule, double t);
+
+// True when every load of `schedule` is active for all t >= t0 (a constant schedule from t0 on).
+bool is_constant_from(const std::vector<AppliedLoad>& schedule, double t0);
+
+// Throws std::invalid_argument naming "loads[i]..." for a non-finite force or torque or an
+// interval with t_start >= t_end or a NaN bound.
+void check_loads(const std::vector<AppliedLoad>& schedule);
+
+}  // namespace rigiddyn

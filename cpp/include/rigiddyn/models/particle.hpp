@@ -1,0 +1,85 @@
+// The particle (point mass, 3 DOF; seed 000 §4.11): m p̈_W = f_W + m g_W.
+// A particle has no attitude: loads given in the "body" frame are taken as world-frame forces, and
+// couples are rejected by simulate (they would do nothing).
+#pragma once
+#include "rigiddyn/models/loads.hpp"
+#include "rigiddyn/models/model_interface.hpp"
+
+#include <Eigen/Core>
+
+namespace rigiddyn {
+
+// mass [kg]; throws std::invalid_argument unless finite and > 0.
+class Particle {
+ public:
+  explicit Particle(double mass);
+  double mass() const { return mass_; }
+
+ private:
+  double mass_;
+};
+
+// Position [m] and velocity [m/s] in W.
+struct ParticleState {
+  Eigen::Vector3d p_W = Eigen::Vector3d::Zero();
+  Eigen::Vector3d v_W = Eigen::Vector3d::Zero();
+};
+
+// Throws std::invalid_argument naming `name`.p_W / `name`.v_W for non-finite entries.
+ParticleState checked_state(const ParticleState& state, const std::string& name = "state");
+
+// Coordinates y = (p_W:3, v_W:3, work:1) (7,); tangent = the same (a vector space).
+using ParticleCoordinates = Eigen::Matrix<double, 7, 1>;
+ParticleCoordinates to_coordinates(const ParticleState& state, double work = 0.0);
+ParticleState to_particle_state(const ParticleCoordinates& y);
+
+class ParticleModel {
+ public:
+  using Coordinates = ParticleCoordinates;
+  using Tangent = ParticleCoordinates;
+
+  ParticleModel(const Particle& particle, const Eigen::Vector3d& g_W = Eigen::Vector3d::Zero())
+      : mass_(particle.mass()), inverse_mass_(1.0 / particle.mass()), g_W_(g_W), f_W_(particle.mass() * g_W) {}
+
+  // world- and "body"-frame forces add (no attitude); couples are ignored here (simulate rejects them)
+  void set_loads(const ComLoads& loads) { f_W_ = loads.f_W + loads.f_B + mass_ * g_W_; }
+
+  RIGIDDYN_ALWAYS_INLINE Coordinates rate(const Coordinates& y) const {
+    // element by element (scalar stores; see rk4.hpp's axpy on store forwarding)
+    Coordinates dy;
+    for (int i = 0; i < 3; ++i) dy[i] = y[3 + i], dy[3 + i] = inverse_mass_ * f_W_[i];
+    dy[6] = f_W_[0] * y[3] + f_W_[1] * y[4] + f_W_[2] * y[5];
+    return dy;
+  }
+  static void project(Coordinates& /*y*/) {}
+  RIGIDDYN_ALWAYS_INLINE Tangent velocity(const Coordinates& y) const { return rate(y); }
+  static Coordinates retract(const Coordinates& y, const Tangent& theta) { return y + theta; }
+  static Tangent dexp_inv(const Tangent& /*theta*/, const Tangent& xi) { return xi; }
+  RIGIDDYN_ALWAYS_INLINE void kick(Coordinates& y, double h) const { y.segment<3>(3) += (h * inverse_mass_) * f_W_; }
+  void kick_implicit_gyroscopic(Coordinates& y, double h) const { kick(y, h); }
+  RIGIDDYN_ALWAYS_INLINE void drift(Coordinates& y, double h) const {
+    y(6) += h * f_W_.dot(y.segment<3>(3));
+    y.segment<3>(0) += h * y.segment<3>(3);
+  }
+
+  RecordedState record(const Coordinates& y) const {
+    RecordedState r;
+    r.p_W = y.segment<3>(0);
+    r.q_WB = Eigen::Quaterniond::Identity();
+    r.v_W = y.segment<3>(3);
+    r.w_B.setZero();
+    r.kinetic_energy = 0.5 * mass_ * r.v_W.squaredNorm();
+    r.potential_energy = -mass_ * g_W_.dot(r.p_W);
+    r.angular_momentum_norm = 0.0;
+    r.work = y(6);
+    return r;
+  }
+
+ private:
+  double mass_;
+  double inverse_mass_;
+  Eigen::Vector3d g_W_;
+  Eigen::Vector3d f_W_;  // total force in W during the step, gravity included [N]
+};
+
+}  // namespace rigiddyn

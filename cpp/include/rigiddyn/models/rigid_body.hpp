@@ -1,0 +1,212 @@
+// The spatial rigid body (6 DOF): mass properties, state (docs/conventions.md "Body state") and the
+// integrator model RigidBodyModel<Euler> (see model_interface.hpp), templated on the form of
+// Euler's equations (euler_equations.hpp) so that a sphere pays nothing for the gyroscopic term.
+//
+// Equations of motion (seed 001, Newton–Euler about the centre of mass G):
+//   ṗ_W = v_W,  q̇_WB = ½ q_WB ⊗ (ω_B, 0),  m v̇_W = f_W + m g_W,  I ω̇_B + ω_B × I ω_B = n_B.
+#pragma once
+#include "rigiddyn/inertia/spatial_inertia.hpp"
+#include "rigiddyn/models/euler_equations.hpp"
+#include "rigiddyn/models/loads.hpp"
+#include "rigiddyn/models/model_interface.hpp"
+#include "rigiddyn/so3/exp_log.hpp"
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <stdexcept>
+
+namespace rigiddyn {
+
+// Which form of Euler's equations an inertia needs.
+enum class EulerForm { spherical, principal, full };
+
+// Mass [kg] and rotational inertia about the centre of mass [kg m²], expressed in the body frame B
+// (origin at the centre of mass).
+class RigidBody {
+ public:
+  // Throws std::invalid_argument for mass <= 0 or non-finite, and for an inertia_com that is not
+  // symmetric positive definite, or (when require_triangle_inequality) whose principal moments
+  // violate I_a + I_b >= I_c (no real body has them; pass false to accept e.g. the
+  // Hairer–Lubich–Wanner test body I = (2, 1, 2/3) on purpose).
+  RigidBody(double mass, const Eigen::Matrix3d& inertia_com, bool require_triangle_inequality = true);
+  // From mass properties: uses mass() and inertia_com() (B's axes, origin moved to the centre of mass).
+  explicit RigidBody(const SpatialInertia& inertia, bool require_triangle_inequality = true);
+
+  double mass() const { return mass_; }
+  const Eigen::Matrix3d& inertia_com() const { return inertia_com_; }
+  // spherical if I = s 1, principal if I is diagonal, full otherwise (relative tolerance 1e-12,
+  // so dropping the terms changes the motion far below any integrator's error).
+  EulerForm euler_form() const { return form_; }
+
+ private:
+  double mass_;
+  Eigen::Matrix3d inertia_com_;
+  EulerForm form_;
+};
+
+// Calls f(euler) with the Euler-equation form the body needs: SphericalEuler, PrincipalEuler or
+// FullEuler. The single runtime switch; everything below it is compiled per form.
+template <class F>
+decltype(auto) with_euler_form(const RigidBody& body, F&& f) {
+  const Eigen::Matrix3d& I = body.inertia_com();
+  switch (body.euler_form()) {
+    case EulerForm::spherical: return f(SphericalEuler(I.trace() / 3.0));
+    case EulerForm::principal: return f(PrincipalEuler(I.diagonal()));
+    case EulerForm::full: return f(FullEuler(I));
+  }
+  throw std::logic_error("with_euler_form: unknown EulerForm");
+}
+
+// State (docs/conventions.md): p_W of the centre of mass [m], unit q_WB, v_W of the centre of mass
+// [m/s] in W, angular velocity w_B [rad/s] in B.
+struct RigidBodyState {
+  Eigen::Vector3d p_W = Eigen::Vector3d::Zero();
+  Eigen::Quaterniond q_WB = Eigen::Quaterniond::Identity();
+  Eigen::Vector3d v_W = Eigen::Vector3d::Zero();
+  Eigen::Vector3d w_B = Eigen::Vector3d::Zero();
+};
+
+// The state with its quaternion normalised; throws std::invalid_argument naming `name`.p_W etc.
+// for a non-finite entry or a quaternion farther than 1e-6 from unit norm.
+RigidBodyState checked_state(const RigidBodyState& state, const std::string& name = "state");
+
+// Coordinates layout (rot/lin as MuJoCo): y = (p_W:3, q_WB xyzw:4, v_W:3, w_B:3, work:1) (14,);
+// tangent xi = (v_W:3, w_B:3, a_W:3, alpha_B:3, power:1) (13,).
+using RigidBodyCoordinates = Eigen::Matrix<double, 14, 1>;
+using RigidBodyTangent = Eigen::Matrix<double, 13, 1>;
+RigidBodyCoordinates to_coordinates(const RigidBodyState& state, double work = 0.0);
+RigidBodyState to_rigid_body_state(const RigidBodyCoordinates& y);
+
+template <class Euler>
+class RigidBodyModel {
+ public:
+  using Coordinates = RigidBodyCoordinates;
+  using Tangent = RigidBodyTangent;
+
+  // g_W: uniform gravity [m/s²] in W (zero for none).
+  RigidBodyModel(double mass, const Euler& euler, const Eigen::Vector3d& g_W = Eigen::Vector3d::Zero())
+      : mass_(mass), inverse_mass_(1.0 / mass), euler_(euler), g_W_(g_W) {
+    set_loads(ComLoads{});
+  }
+
+  // Loads held constant until the next call (see loads.hpp for the time discretisation).
+  void set_loads(const ComLoads& loads) {
+    loads_ = loads;
+    f_fixed_W_ = loads.f_W + mass_ * g_W_;
+    turning_loads_ = !(loads.f_B.isZero(0.0) && loads.n_W.isZero(0.0));
+  }
+  const Euler& euler() const { return euler_; }
+  double mass() const { return mass_; }
+
+  RIGIDDYN_ALWAYS_INLINE Coordinates rate(const Coordinates& y) const {
+    const Eigen::Map<const Eigen::Quaterniond> q(y.data() + 3);
+    const Eigen::Vector3d v = y.segment<3>(7), w = y.segment<3>(10);
+    Eigen::Vector3d f_W, n_B;
+    wrench(q, f_W, n_B);
+    Coordinates dy;
+    dy.segment<3>(0) = v;
+    // quaternion kinematics q̇ = ½ q ⊗ (ω_B, 0) (seed 000, body-frame angular velocity), the Hamilton
+    // product written out (scalar stores: see rk4.hpp's axpy on store forwarding)
+    dy(3) = 0.5 * (q.w() * w.x() + q.y() * w.z() - q.z() * w.y());
+    dy(4) = 0.5 * (q.w() * w.y() + q.z() * w.x() - q.x() * w.z());
+    dy(5) = 0.5 * (q.w() * w.z() + q.x() * w.y() - q.y() * w.x());
+    dy(6) = -0.5 * (q.x() * w.x() + q.y() * w.y() + q.z() * w.z());
+    dy.segment<3>(7) = inverse_mass_ * f_W;
+    dy.segment<3>(10) = euler_.angular_acceleration(w, n_B);
+    dy(13) = f_W.dot(v) + n_B.dot(w);
+    return dy;
+  }
+
+  RIGIDDYN_ALWAYS_INLINE static void project(Coordinates& y) { y.segment<4>(3).normalize(); }
+
+  RIGIDDYN_ALWAYS_INLINE Tangent velocity(const Coordinates& y) const {
+    const Eigen::Map<const Eigen::Quaterniond> q(y.data() + 3);
+    const Eigen::Vector3d v = y.segment<3>(7), w = y.segment<3>(10);
+    Eigen::Vector3d f_W, n_B;
+    wrench(q, f_W, n_B);
+    Tangent xi;
+    xi << v, w, inverse_mass_ * f_W, euler_.angular_acceleration(w, n_B), f_W.dot(v) + n_B.dot(w);
+    return xi;
+  }
+
+  RIGIDDYN_ALWAYS_INLINE static Coordinates retract(const Coordinates& y, const Tangent& theta) {
+    Coordinates out;
+    out.segment<3>(0) = y.segment<3>(0) + theta.segment<3>(0);
+    const Eigen::Map<const Eigen::Quaterniond> q(y.data() + 3);
+    out.segment<4>(3) = (q * rotvec_to_quat(theta.segment<3>(3))).coeffs();
+    out.segment<7>(7) = y.segment<7>(7) + theta.segment<7>(6);
+    return out;
+  }
+
+  // Body-frame RKMK: R = R0 exp(Θ̂) gives Θ̇ = dexp⁻¹_{−Θ} ω = ω + ½ Θ × ω + (1/12) Θ × (Θ × ω) + O(|Θ|⁴)
+  // (Iserles, Munthe-Kaas, Nørsett, Zanna, Acta Numerica 2000, §3; two commutators suffice for order 4).
+  RIGIDDYN_ALWAYS_INLINE static Tangent dexp_inv(const Tangent& theta, const Tangent& xi) {
+    Tangent out = xi;
+    const Eigen::Vector3d th = theta.segment<3>(3), w = xi.segment<3>(3);
+    const Eigen::Vector3d th_x_w = th.cross(w);
+    out.segment<3>(3) += 0.5 * th_x_w + (1.0 / 12.0) * th.cross(th_x_w);
+    return out;
+  }
+
+  RIGIDDYN_ALWAYS_INLINE void kick(Coordinates& y, double h) const {
+    Eigen::Vector3d f_W, n_B;
+    wrench(Eigen::Map<const Eigen::Quaterniond>(y.data() + 3), f_W, n_B);
+    y.segment<3>(7) += (h * inverse_mass_) * f_W;
+    y.segment<3>(10) = euler_.explicit_gyroscopic_kick(y.segment<3>(10), n_B, h);
+  }
+
+  RIGIDDYN_ALWAYS_INLINE void kick_implicit_gyroscopic(Coordinates& y, double h) const {
+    Eigen::Vector3d f_W, n_B;
+    wrench(Eigen::Map<const Eigen::Quaterniond>(y.data() + 3), f_W, n_B);
+    y.segment<3>(7) += (h * inverse_mass_) * f_W;
+    y.segment<3>(10) = euler_.implicit_gyroscopic_kick(y.segment<3>(10), n_B, h);
+  }
+
+  // p += h v, q ← q ⊗ exp(h ω_B) (exact for constant ω), work += h × power at the current velocities
+  RIGIDDYN_ALWAYS_INLINE void drift(Coordinates& y, double h) const {
+    Eigen::Map<Eigen::Quaterniond> q(y.data() + 3);
+    const Eigen::Vector3d v = y.segment<3>(7), w = y.segment<3>(10);
+    Eigen::Vector3d f_W, n_B;
+    wrench(q, f_W, n_B);
+    y(13) += h * (f_W.dot(v) + n_B.dot(w));
+    y.segment<3>(0) += h * v;
+    q = (q * rotvec_to_quat(h * w)).normalized();
+  }
+
+  RecordedState record(const Coordinates& y) const {
+    RecordedState r;
+    r.p_W = y.segment<3>(0);
+    r.q_WB = Eigen::Quaterniond(y.segment<4>(3));
+    r.v_W = y.segment<3>(7);
+    r.w_B = y.segment<3>(10);
+    const Eigen::Vector3d h_B = euler_.momentum(r.w_B);
+    r.kinetic_energy = 0.5 * mass_ * r.v_W.squaredNorm() + 0.5 * r.w_B.dot(h_B);
+    r.potential_energy = -mass_ * g_W_.dot(r.p_W);
+    r.angular_momentum_norm = h_B.norm();
+    r.work = y(13);
+    return r;
+  }
+
+ private:
+  // total force in W (gravity included) and couple in B at attitude q (unit up to the method's error)
+  RIGIDDYN_ALWAYS_INLINE void wrench(const Eigen::Quaterniond& q, Eigen::Vector3d& f_W, Eigen::Vector3d& n_B) const {
+    f_W = f_fixed_W_;
+    n_B = loads_.n_B;
+    if (turning_loads_) {
+      const Eigen::Quaterniond u = q.normalized();
+      f_W += u * loads_.f_B;
+      n_B += u.conjugate() * loads_.n_W;
+    }
+  }
+
+  double mass_;
+  double inverse_mass_;
+  Euler euler_;
+  Eigen::Vector3d g_W_;
+  ComLoads loads_;
+  Eigen::Vector3d f_fixed_W_;  // f_W + m g_W
+  bool turning_loads_;         // f_B or n_W non-zero
+};
+
+}  // namespace rigiddyn

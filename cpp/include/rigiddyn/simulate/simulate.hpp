@@ -1,0 +1,67 @@
+// simulate: many fixed steps of one method on one body, recording every k-th state and
+// diagnostics. Usable from C++ directly; the Python binding releases the GIL around it.
+//
+// The method is chosen once (visit_method) and the Euler-equation form once (with_euler_form);
+// the loop below them is compiled per (model, method). Loads: see models/loads.hpp (held
+// constant over each step, evaluated at its start). The work of all loads and gravity is
+// integrated with the motion by the same method, so T(t) − T(t0) = work(t) up to the method's
+// error (seed 001 work–energy principle, T2 − T1 = U12).
+#pragma once
+#include "rigiddyn/integrators/method.hpp"
+#include "rigiddyn/models/loads.hpp"
+#include "rigiddyn/models/particle.hpp"
+#include "rigiddyn/models/planar_body.hpp"
+#include "rigiddyn/models/rigid_body.hpp"
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <vector>
+
+namespace rigiddyn {
+
+// Uniform gravity g_W = (0, 0, −9.81) m/s² (docs/conventions.md "Gravity").
+inline Eigen::Vector3d standard_gravity() { return Eigen::Vector3d(0.0, 0.0, -9.81); }
+
+struct SimulationOptions {
+  Method method = Method::rk4;
+  double dt = 1e-3;                  // step [s], finite > 0
+  std::int64_t steps = 0;            // number of steps >= 0
+  std::int64_t record_every = 1;     // record every k-th step (and always the first and the last)
+  double t0 = 0.0;                   // initial time [s] (load schedules refer to it)
+  std::vector<AppliedLoad> loads;    // applied loads (models/loads.hpp)
+  Eigen::Vector3d gravity_W = Eigen::Vector3d::Zero();  // uniform gravity [m/s²]; zero = none
+};
+
+// Records, one row per recorded step, row-major (n = size()):
+struct Trajectory {
+  std::vector<double> t;                      // (n,) time [s]
+  std::vector<double> p_W;                    // (n, 3) centre of mass position in W [m]
+  std::vector<double> q_WB;                   // (n, 4) attitude (x, y, z, w)
+  std::vector<double> v_W;                    // (n, 3) centre of mass velocity in W [m/s]
+  std::vector<double> w_B;                    // (n, 3) angular velocity in B [rad/s]
+  std::vector<double> kinetic_energy;         // (n,) T [J]
+  std::vector<double> total_energy;           // (n,) T + V of gravity [J]
+  std::vector<double> angular_momentum_norm;  // (n,) |H_G| about the centre of mass [kg m²/s]
+  std::vector<double> quaternion_norm_error;  // (n,) |q| − 1
+  std::vector<double> work;                   // (n,) work of loads and gravity since t0 [J]
+  bool diverged = false;                      // the state became non-finite; the run stopped there
+  double elapsed_seconds = 0.0;               // wall time of the stepping loop (for benchmarks)
+
+  std::size_t size() const { return t.size(); }
+};
+
+// Throws std::invalid_argument naming the argument for dt <= 0, steps < 0, record_every < 1,
+// non-finite t0 or gravity, a bad state or load, and (particle, planar body) loads the model
+// cannot take (couples on a particle; out-of-plane forces, gravity or in-plane couples).
+Trajectory simulate(const RigidBody& body, const RigidBodyState& initial, const SimulationOptions& options);
+Trajectory simulate(const Particle& particle, const ParticleState& initial, const SimulationOptions& options);
+Trajectory simulate(const PlanarBody& body, const PlanarBodyState& initial, const SimulationOptions& options);
+
+// One step of `options.method` from `state` at time options.t0 with step options.dt (options.steps
+// and record_every are ignored). Same checks as simulate.
+RigidBodyState step(const RigidBody& body, const RigidBodyState& state, const SimulationOptions& options);
+ParticleState step(const Particle& particle, const ParticleState& state, const SimulationOptions& options);
+PlanarBodyState step(const PlanarBody& body, const PlanarBodyState& state, const SimulationOptions& options);
+
+}  // namespace rigiddyn

@@ -1,0 +1,28 @@
+// Rotation matrices R in SO(3) and their conversion to and from unit quaternions.
+#pragma once
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <string>
+
+namespace rigiddyn {
+
+// Tolerance of checked_rotation_matrix: R is accepted when max_ij |(R^T R - I)_ij| <=
+// rotation_matrix_tolerance and det R > 0 (so det R = +1 to about the same tolerance). Error
+// messages quote the value 1e-6: keep them in step.
+inline constexpr double rotation_matrix_tolerance = 1e-6;
+
+// R itself when R is a rotation matrix (orthonormal, det +1 within rotation_matrix_tolerance);
+// throws std::invalid_argument naming `name` on a non-finite entry, a non-orthonormal matrix or
+// a reflection (det -1).
+Eigen::Matrix3d checked_rotation_matrix(const Eigen::Matrix3d& R, const std::string& name);
+
+// R(q) of a unit quaternion q (Eigen's toRotationMatrix; inline, as it runs per item in loops).
+inline Eigen::Matrix3d quat_to_matrix(const Eigen::Quaterniond& q) { return q.toRotationMatrix(); }
+
+// The unit quaternion of a rotation matrix R, with w >= 0. Shepperd's method (Eigen), which picks
+// the largest of w, x, y, z to divide by and so is accurate at every angle, including pi.
+// R is assumed orthonormal (see checked_rotation_matrix); the result is normalised.
+Eigen::Quaterniond matrix_to_quat(const Eigen::Matrix3d& R);
+
+}  // namespace rigiddyn

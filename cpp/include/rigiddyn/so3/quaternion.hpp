@@ -1,0 +1,52 @@
+// Unit quaternions (docs/conventions.md): Hamilton product, active rotation, q_WB maps B
+// coordinates to W coordinates, R(q1 ⊗ q2) = R(q1) R(q2). Eigen::Quaterniond stores (x, y, z, w).
+//
+// The functions below other than checked_unit_quaternion and quat_normalize assume unit input:
+// validate user data once with checked_unit_quaternion (the Python bindings do so for every item).
+#pragma once
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <cmath>
+#include <string>
+
+namespace rigiddyn {
+
+// Tolerance of checked_unit_quaternion: a quaternion q is accepted as a unit quaternion when
+// | |q| - 1 | <= unit_quaternion_tolerance (float32 round-off is ~1e-7; anything farther from 1
+// means the caller did not mean a rotation, e.g. passed unnormalised data). Error messages quote
+// the value 1e-6: keep them in step.
+inline constexpr double unit_quaternion_tolerance = 1e-6;
+
+// Throws the std::invalid_argument of checked_unit_quaternion for q (out of line: the cold path).
+[[noreturn]] void throw_not_unit_quaternion(const Eigen::Quaterniond& q, const std::string& name);
+
+// q normalised to unit norm. Throws std::invalid_argument naming `name` when q has a non-finite
+// coefficient or | |q| - 1 | > unit_quaternion_tolerance (this includes q = 0).
+// Inline: it runs once per item in the array loops.
+inline Eigen::Quaterniond checked_unit_quaternion(const Eigen::Quaterniond& q, const std::string& name) {
+  const double norm = q.norm();
+  // false for NaN and inf as well
+  if (!(std::abs(norm - 1.0) <= unit_quaternion_tolerance)) throw_not_unit_quaternion(q, name);
+  return Eigen::Quaterniond(q.coeffs() * (1.0 / norm));
+}
+
+// q / |q| for any finite non-zero q; throws std::invalid_argument naming `name` otherwise.
+Eigen::Quaterniond quat_normalize(const Eigen::Quaterniond& q, const std::string& name = "q");
+
+// The same rotation with w >= 0 (q and -q are the same rotation; this picks one representative).
+inline Eigen::Quaterniond quat_canonical(const Eigen::Quaterniond& q) {
+  return q.w() < 0.0 ? Eigen::Quaterniond(-q.coeffs()) : q;
+}
+
+// Hamilton product q1 ⊗ q2: the rotation q2 followed by q1, R(q1 ⊗ q2) = R(q1) R(q2).
+inline Eigen::Quaterniond quat_multiply(const Eigen::Quaterniond& q1, const Eigen::Quaterniond& q2) { return q1 * q2; }
+
+// Inverse of a unit quaternion: its conjugate (-x, -y, -z, w).
+inline Eigen::Quaterniond quat_inverse(const Eigen::Quaterniond& q) { return q.conjugate(); }
+
+// R(q) v: v rotated actively by the unit quaternion q (v_W = R_WB v_B for q = q_WB).
+// Eigen evaluates v + 2 w (u × v) + 2 u × (u × v), u = (x, y, z), without forming R(q).
+inline Eigen::Vector3d quat_rotate(const Eigen::Quaterniond& q, const Eigen::Vector3d& v) { return q * v; }
+
+}  // namespace rigiddyn

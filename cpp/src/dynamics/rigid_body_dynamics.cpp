@@ -1,0 +1,68 @@
+#include "rigiddyn/dynamics/rigid_body_dynamics.hpp"
+
+namespace rigiddyn {
+
+namespace {
+
+// v expressed in B given it is expressed in `frame`.
+Eigen::Vector3d to_body(const Eigen::Quaterniond& q_WB, const Eigen::Vector3d& v, Frame frame) {
+  return frame == Frame::body ? v : Eigen::Vector3d(q_WB.conjugate() * v);
+}
+
+}  // namespace
+
+ComWrench wrench_at_com(const Eigen::Quaterniond& q_WB, const Eigen::Vector3d& force, const Eigen::Vector3d& torque,
+                        const Eigen::Vector3d& p_GP, Frame frame) {
+  const Eigen::Vector3d f_B = to_body(q_WB, force, frame);
+  // moment about G of the force at P plus the couple (moment transfer, seed 001)
+  const Eigen::Vector3d n_B = to_body(q_WB, torque + p_GP.cross(force), frame);
+  return {q_WB * f_B, n_B};
+}
+
+BodyAcceleration forward_dynamics(const RigidBody& body, const RigidBodyState& state, const ComWrench& wrench,
+                                  const Eigen::Vector3d& g_W) {
+  const Eigen::Matrix3d& I = body.inertia_com();
+  const Eigen::Vector3d& w = state.w_B;
+  return {wrench.f_W / body.mass() + g_W, I.llt().solve(wrench.n_B - w.cross(I * w))};
+}
+
+ComWrench inverse_dynamics(const RigidBody& body, const RigidBodyState& state, const BodyAcceleration& acceleration,
+                           const Eigen::Vector3d& g_W) {
+  const Eigen::Matrix3d& I = body.inertia_com();
+  const Eigen::Vector3d& w = state.w_B;
+  return {body.mass() * (acceleration.a_W - g_W), I * acceleration.alpha_B + w.cross(I * w)};
+}
+
+Eigen::Vector3d linear_momentum(const RigidBody& body, const RigidBodyState& state) { return body.mass() * state.v_W; }
+
+Eigen::Vector3d angular_momentum(const RigidBody& body, const RigidBodyState& state, const Eigen::Vector3d& p_WP) {
+  const Eigen::Vector3d H_G_W = state.q_WB * (body.inertia_com() * state.w_B);
+  return H_G_W + (state.p_W - p_WP).cross(body.mass() * state.v_W);
+}
+
+Eigen::Vector3d angular_momentum(const RigidBody& body, const RigidBodyState& state) {
+  return angular_momentum(body, state, state.p_W);
+}
+
+KineticEnergy kinetic_energy(const RigidBody& body, const RigidBodyState& state) {
+  return {0.5 * body.mass() * state.v_W.squaredNorm(), 0.5 * state.w_B.dot(body.inertia_com() * state.w_B)};
+}
+
+double potential_energy(const RigidBody& body, const RigidBodyState& state, const Eigen::Vector3d& g_W) {
+  return -body.mass() * g_W.dot(state.p_W);
+}
+
+double power(const RigidBodyState& state, const ComWrench& wrench) {
+  return wrench.f_W.dot(state.v_W) + wrench.n_B.dot(state.w_B);
+}
+
+RigidBodyState apply_impulse(const RigidBody& body, const RigidBodyState& state, const Eigen::Vector3d& impulse,
+                             const Eigen::Vector3d& p_GP, Frame frame, const Eigen::Vector3d& angular_impulse) {
+  const ComWrench J = wrench_at_com(state.q_WB, impulse, angular_impulse, p_GP, frame);
+  RigidBodyState out = state;
+  out.v_W += J.f_W / body.mass();
+  out.w_B += body.inertia_com().llt().solve(J.n_B);
+  return out;
+}
+
+}  // namespace rigiddyn

@@ -1,0 +1,72 @@
+#include "rigiddyn/simulate/simulate_exact.hpp"
+
+#include "rigiddyn/check.hpp"
+#include "rigiddyn/exact/free_body.hpp"
+
+#include <chrono>
+
+namespace rigiddyn {
+
+namespace {
+
+void check_exact_loads(const SimulationOptions& o) {
+  for (std::size_t i = 0; i < o.loads.size(); ++i) {
+    const std::string name = "loads[" + std::to_string(i) + "]";
+    if (!o.loads[i].torque.isZero(0.0)) {
+      throw_invalid(name + ".torque", "zero for method 'exact' (torque-free body; use 'exact_flow_kick')",
+                    o.loads[i].torque);
+    }
+    if (o.loads[i].frame == Frame::body && !o.loads[i].force.isZero(0.0)) {
+      throw_invalid(name + ".force", "a world-frame force for method 'exact' (use 'exact_flow_kick')",
+                    o.loads[i].force);
+    }
+  }
+  if (!is_constant_from(o.loads, o.t0)) {
+    throw_invalid("loads", "loads active for all t >= t0 for method 'exact'", "a time-varying schedule");
+  }
+}
+
+// one record (the same fields simulate's stepping loop records)
+void append(Trajectory& out, double t, const RecordedState& r) {
+  out.t.push_back(t);
+  out.p_W.insert(out.p_W.end(), r.p_W.data(), r.p_W.data() + 3);
+  out.q_WB.insert(out.q_WB.end(), r.q_WB.coeffs().data(), r.q_WB.coeffs().data() + 4);
+  out.v_W.insert(out.v_W.end(), r.v_W.data(), r.v_W.data() + 3);
+  out.w_B.insert(out.w_B.end(), r.w_B.data(), r.w_B.data() + 3);
+  out.kinetic_energy.push_back(r.kinetic_energy);
+  out.total_energy.push_back(r.kinetic_energy + r.potential_energy);
+  out.angular_momentum_norm.push_back(r.angular_momentum_norm);
+  out.quaternion_norm_error.push_back(r.q_WB.norm() - 1.0);
+  out.work.push_back(r.work);
+}
+
+}  // namespace
+
+Trajectory simulate_exact(const RigidBody& body, const RigidBodyState& initial, const SimulationOptions& o) {
+  check_exact_loads(o);
+  const RigidBodyState s0 = checked_state(initial, "initial");
+  const TorqueFreeSolution solution(body.inertia_com(), s0.q_WB, s0.w_B);
+  const Eigen::Vector3d a_W = loads_at(o.loads, o.t0).f_W / body.mass() + o.gravity_W;
+  return with_euler_form(body, [&](const auto& euler) {
+    using Euler = std::decay_t<decltype(euler)>;
+    const RigidBodyModel<Euler> model(body.mass(), euler, o.gravity_W);
+    Trajectory out;
+    const auto start = std::chrono::steady_clock::now();
+    for (std::int64_t i = 0; i <= o.steps; ++i) {
+      if (!(i % o.record_every == 0 || i == o.steps)) continue;
+      const double t = static_cast<double>(i) * o.dt;
+      const TorqueFreeState s = solution.state_at(t);
+      RigidBodyState state;
+      state.p_W = s0.p_W + t * s0.v_W + (0.5 * t * t) * a_W;
+      state.q_WB = s.q_WB;
+      state.v_W = s0.v_W + t * a_W;
+      state.w_B = s.w_B;
+      const double work = body.mass() * a_W.dot(state.p_W - s0.p_W);
+      append(out, o.t0 + t, model.record(to_coordinates(state, work)));
+    }
+    out.elapsed_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return out;
+  });
+}
+
+}  // namespace rigiddyn

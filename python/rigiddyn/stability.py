@@ -1,0 +1,125 @@
+"""Linear stability of the fixed-step methods for the spin at hand.
+
+Linearising Euler's equations I w' = (I w) x w about the current w gives dw' = J dw with
+J = I^-1 ([I w]x - [w]x I) (eigenvalues 0 and +-lambda: imaginary about the largest and smallest
+axes (nutation), real about the intermediate one (the physical Dzhanibekov instability)). Methods
+that step the quaternion kinematics q' = q (x) (0, w)/2 with a Runge-Kutta tableau also see the
+modes +-i|w|/2. A one-step method maps a mode exp(lambda t) by its stability polynomial R(z) at
+z = h lambda, the exact flow by exp(z): the spurious growth per step is |R(z)| / exp(Re z), over n
+steps its n-th power. As w moves (a tumbling body passes near axes where the nutation is fast), the
+growth is averaged in log over the orbit: for a torque-free body, ORBIT_SAMPLES states of the exact
+Euler-Poinsot solution over one period (or the run); otherwise the initial w only. rigiddyn warns
+(StabilityWarning) when the predicted growth over the run exceeds GROWTH_LIMIT.
+
+Methods absent from STABILITY_POLYNOMIALS are not checked: the implicit-gyroscopic Euler damps
+(|R| < 1), and structure-preserving methods (exact sub-flows, implicit midpoint) keep |R| = 1.
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+
+import numpy as np
+
+from . import _core
+
+__all__ = [
+    "GROWTH_LIMIT",
+    "STABILITY_POLYNOMIALS",
+    "StabilityWarning",
+    "growth_factor",
+    "linear_modes",
+    "mean_growth_factor",
+    "orbit",
+    "spin_rate",
+    "stability_message",
+    "warn_if_unstable",
+]
+
+GROWTH_LIMIT = 10.0
+ORBIT_SAMPLES = 64
+
+# method -> (coefficients of R(z) = sum c_k z^k, whether the quaternion kinematics uses the tableau)
+STABILITY_POLYNOMIALS = {
+    "explicit_euler": ((1.0, 1.0), True),
+    "semi_implicit_euler": ((1.0, 1.0), False),  # explicit gyroscopic term; exact exponential for q
+    "rk4": ((1.0, 1.0, 1.0 / 2, 1.0 / 6, 1.0 / 24), True),
+    "rkmk4": ((1.0, 1.0, 1.0 / 2, 1.0 / 6, 1.0 / 24), False),  # RK4 tableau; q by the exponential map
+}
+
+
+class StabilityWarning(RuntimeWarning):
+    """dt is beyond a method's linear stability limit for the spin at hand."""
+
+
+def _skew(v: np.ndarray) -> np.ndarray:
+    return np.array([[0.0, -v[2], v[1]], [v[2], 0.0, -v[0]], [-v[1], v[0], 0.0]])
+
+
+def linear_modes(inertia_com: np.ndarray, w_B: np.ndarray, kinematics: bool) -> np.ndarray:
+    """Eigenvalues [1/s] of J = I^-1([I w]x - [w]x I), plus +-i|w|/2 if `kinematics`."""
+    inertia = np.asarray(inertia_com, float)
+    w = np.asarray(w_B, float)
+    modes = np.linalg.eigvals(np.linalg.solve(inertia, _skew(inertia @ w) - _skew(w) @ inertia))
+    if kinematics:
+        modes = np.append(modes, 0.5j * np.linalg.norm(w))
+    return modes
+
+
+def spin_rate(inertia_com: np.ndarray, w_B: np.ndarray, kinematics: bool) -> float:
+    """rho [rad/s]: the largest |lambda| of linear_modes."""
+    return float(np.max(np.abs(linear_modes(inertia_com, w_B, kinematics))))
+
+
+def growth_factor(method: str, dt: float, inertia_com: np.ndarray, w_B: np.ndarray) -> float | None:
+    """max over the linear modes at w_B of |R(dt lambda)| / exp(dt Re lambda): the spurious
+    amplification per step; None for a method that is not checked."""
+    if method not in STABILITY_POLYNOMIALS:
+        return None
+    coefficients, kinematics = STABILITY_POLYNOMIALS[method]
+    z = dt * linear_modes(inertia_com, w_B, kinematics)
+    return float(np.max(np.abs(np.polyval(coefficients[::-1], z)) / np.exp(z.real)))
+
+
+def orbit(inertia_com: np.ndarray, w_B: np.ndarray, span: float) -> np.ndarray:
+    """(ORBIT_SAMPLES, 3) angular velocities [rad/s] of the torque-free motion from w_B, evenly in
+    time over one period of w (or `span` [s] if shorter or the period is infinite)."""
+    solution = _core.TorqueFreeSolution(inertia_com, np.array([0.0, 0.0, 0.0, 1.0]), w_B)
+    period = solution.period
+    end = min(period, span) if math.isfinite(period) else span
+    _, w = solution.state_at(np.linspace(0.0, end, ORBIT_SAMPLES, endpoint=False))
+    return np.asarray(w)
+
+
+def mean_growth_factor(method: str, dt: float, inertia_com: np.ndarray, w_B: np.ndarray, span: float,
+                       torque_free: bool = True) -> float | None:
+    """growth_factor averaged in log over the orbit (torque-free) or at w_B; None if not checked."""
+    if method not in STABILITY_POLYNOMIALS:
+        return None
+    states = orbit(inertia_com, w_B, span) if torque_free and np.any(w_B) else [w_B]
+    return float(np.exp(np.mean([np.log(growth_factor(method, dt, inertia_com, w)) for w in states])))
+
+
+def stability_message(method: str, dt: float, steps: int, inertia_com: np.ndarray, w_B: np.ndarray,
+                      torque_free: bool = True) -> str | None:
+    """A message if perturbations grow by more than GROWTH_LIMIT over `steps` steps, else None."""
+    g = mean_growth_factor(method, dt, inertia_com, w_B, dt * steps, torque_free)
+    if g is None or g <= 1.0:
+        return None
+    log_growth = steps * math.log(g)
+    if log_growth <= math.log(GROWTH_LIMIT):
+        return None
+    rho = spin_rate(inertia_com, w_B, STABILITY_POLYNOMIALS[method][1])
+    return (f"{method} at dt = {dt:.3g} s is beyond its stability limit for this spin: dt*rho = {dt * rho:.3g} "
+            f"(rho = {rho:.3g} rad/s at the start), perturbations grow spuriously x{g:.6g} per step on average, "
+            f"about 10^{log_growth / math.log(10):.3g} over {steps} steps")
+
+
+def warn_if_unstable(method: str, dt: float, steps: int, inertia_com: np.ndarray, w_B: np.ndarray,
+                     torque_free: bool = True, stacklevel: int = 2) -> str | None:
+    """Emit a StabilityWarning with stability_message(...) when there is one; return it."""
+    message = stability_message(method, dt, steps, inertia_com, w_B, torque_free)
+    if message is not None:
+        warnings.warn(message, StabilityWarning, stacklevel=stacklevel + 1)
+    return message

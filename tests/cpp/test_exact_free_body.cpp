@@ -1,0 +1,86 @@
+// TorqueFreeSolution: Euler's equations and the quaternion kinematics hold along the solution
+// (central differences), the invariants are conserved, the branches and published periods.
+#include "rigiddyn/exact/free_body.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace rigiddyn {
+namespace {
+
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+Eigen::Quaterniond initial_attitude() { return Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized())); }
+
+Eigen::Matrix3d tilted(const Eigen::Vector3d& moments) {
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(0.4, Eigen::Vector3d(0.3, -1, 0.2).normalized()).toRotationMatrix();
+  return R * moments.asDiagonal() * R.transpose();
+}
+
+// max over sample times of the residuals of I ω̇ = (I ω) × ω and q̇ = q ⊗ (0, ω)/2 (central
+// differences, h = 1e-4: truncation ~1e-9) and of the drift of L_W and energy
+void expect_solves_the_free_body(const Eigen::Matrix3d& I, const Eigen::Vector3d& w0, const std::string& expected_case) {
+  const TorqueFreeSolution s(I, initial_attitude(), w0);
+  EXPECT_EQ(to_string(s.solution_case()), expected_case);
+  const double h = 1e-4, G = s.angular_momentum_W().norm();
+  for (double t : {0.0, 0.3, 1.7, 5.2, 13.1, -40.3}) {
+    const TorqueFreeState a = s.state_at(t - h), b = s.state_at(t + h), c = s.state_at(t);
+    const Eigen::Vector3d w_dot = (b.w_B - a.w_B) / (2 * h);
+    EXPECT_LT((I * w_dot - (I * c.w_B).cross(c.w_B)).norm(), 1e-7 * (1 + G * G)) << "t = " << t;
+    const Eigen::Vector4d q_dot = (b.q_WB.coeffs() - a.q_WB.coeffs()) / (2 * h);
+    const Eigen::Quaterniond w_quat(0.0, c.w_B.x(), c.w_B.y(), c.w_B.z());
+    EXPECT_LT((q_dot - 0.5 * (c.q_WB * w_quat).coeffs()).norm(), 1e-7 * (1 + G)) << "t = " << t;
+    EXPECT_LT((c.q_WB * (I * c.w_B) - s.angular_momentum_W()).norm(), 1e-13 * (1 + G)) << "t = " << t;
+    EXPECT_NEAR(0.5 * c.w_B.dot(I * c.w_B), s.kinetic_energy(), 32 * kEps * s.kinetic_energy());
+  }
+  const TorqueFreeState s0 = s.state_at(0.0);
+  EXPECT_LT((s0.w_B - w0).norm(), 8 * kEps * w0.norm());
+  EXPECT_LT(s0.q_WB.angularDistance(initial_attitude()), 8 * kEps);
+}
+
+TEST(TorqueFreeSolution, SolvesEulerAndKinematicsInEveryBranch) {
+  const Eigen::Matrix3d D = Eigen::Vector3d(1, 2, 3).asDiagonal();
+  expect_solves_the_free_body(D, {0.3, 0.5, 1.0}, "A");
+  expect_solves_the_free_body(D, {-0.3, -0.5, -1.0}, "A");
+  expect_solves_the_free_body(D, {1.0, 0.5, 0.3}, "B");
+  expect_solves_the_free_body(D, {-1.0, 0.5, -0.3}, "B");
+  expect_solves_the_free_body(D, {0.01, 2.0, 0.01}, "A");
+  expect_solves_the_free_body(tilted({3, 1, 2}), {0.3, -0.5, 1.0}, "A");
+  // Δ2 = 0 exactly: m1² (I2 − I1)/I1 = m3² (I3 − I2)/I3 with m = (6, 1.2, 6)
+  expect_solves_the_free_body(Eigen::Vector3d(2, 3, 6).asDiagonal(), {3.0, 0.4, 1.0}, "separatrix");
+  expect_solves_the_free_body(Eigen::Vector3d(2, 3, 6).asDiagonal(), {-3.0, -0.4, -1.0}, "separatrix");
+  expect_solves_the_free_body(Eigen::Vector3d(1, 1, 3).asDiagonal(), {0.3, -0.5, 1.0}, "symmetric");
+  expect_solves_the_free_body(tilted({1, 3, 3}), {0.3, -0.5, 1.0}, "symmetric");
+  expect_solves_the_free_body(2.0 * Eigen::Matrix3d::Identity(), {0.3, -0.5, 1.0}, "sphere");
+  expect_solves_the_free_body(D, {0.0, 2.0, 0.0}, "separatrix");  // steady spin about the intermediate axis
+  expect_solves_the_free_body(D, {0.0, 0.0, 2.0}, "A");
+  expect_solves_the_free_body(D, {2.0, 0.0, 0.0}, "B");
+}
+
+TEST(TorqueFreeSolution, PublishedPeriods) {
+  // Hairer, Lubich, Wanner GNI IV.1: I = (2, 1, 2/3), m0 = (cos 1.1, 0, sin 1.1): case B, T = 10.7315
+  const Eigen::Vector3d I(2.0, 1.0, 2.0 / 3.0);
+  const TorqueFreeSolution hlw(I.asDiagonal(), Eigen::Quaterniond::Identity(),
+                               Eigen::Vector3d(std::cos(1.1), 0.0, std::sin(1.1)).cwiseQuotient(I));
+  EXPECT_EQ(hlw.solution_case(), TorqueFreeCase::B);
+  EXPECT_NEAR(hlw.period(), 10.7315, 5e-5);
+}
+
+TEST(TorqueFreeSolution, RejectsBadInput) {
+  const Eigen::Quaterniond q = Eigen::Quaterniond::Identity();
+  EXPECT_THROW(TorqueFreeSolution(Eigen::Vector3d(1, -2, 3).asDiagonal(), q, Eigen::Vector3d(1, 2, 3)),
+               std::invalid_argument);
+  Eigen::Matrix3d asymmetric = Eigen::Vector3d(1, 2, 3).asDiagonal();
+  asymmetric(0, 1) = 0.1;
+  EXPECT_THROW(TorqueFreeSolution(asymmetric, q, Eigen::Vector3d(1, 2, 3)), std::invalid_argument);
+  EXPECT_THROW(TorqueFreeSolution(Eigen::Matrix3d::Identity(), Eigen::Quaterniond(2, 0, 0, 0), Eigen::Vector3d(1, 2, 3)),
+               std::invalid_argument);
+  const TorqueFreeSolution s(Eigen::Vector3d(1, 2, 3).asDiagonal(), q, Eigen::Vector3d(1, 2, 3));
+  EXPECT_THROW(s.state_at(std::nan("")), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace rigiddyn

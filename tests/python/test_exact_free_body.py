@@ -1,0 +1,253 @@
+"""The exact torque-free rigid body (rigiddyn.TorqueFreeSolution) against SciPy's DOP853, against the
+same closed form in mpmath extended precision near the separatrix, and by its invariants."""
+
+import math
+
+import mpmath as mp
+import numpy as np
+import pytest
+from scipy.integrate import solve_ivp
+from scipy.optimize import brentq
+from scipy.spatial.transform import Rotation
+
+import rigiddyn
+
+EPS = np.finfo(float).eps
+Q0 = Rotation.from_rotvec([0.3, -0.2, 0.5]).as_quat()
+R_TILT = Rotation.from_rotvec([0.4, 0.1, -0.3]).as_matrix()
+
+
+def euler_quaternion_rhs(inertia):
+    """Euler's equations I w' = (I w) x w and q' = q (x) (w, 0)/2 for y = (w_B, q_WB as x, y, z, w)."""
+    inv = np.linalg.inv(inertia)
+    i = [[float(v) for v in row] for row in inertia]
+    k = [[float(v) for v in row] for row in inv]
+
+    def f(_, y):
+        w1, w2, w3, x, yy, z, s = y
+        m1 = i[0][0] * w1 + i[0][1] * w2 + i[0][2] * w3
+        m2 = i[1][0] * w1 + i[1][1] * w2 + i[1][2] * w3
+        m3 = i[2][0] * w1 + i[2][1] * w2 + i[2][2] * w3
+        c1, c2, c3 = m2 * w3 - m3 * w2, m3 * w1 - m1 * w3, m1 * w2 - m2 * w1
+        return [k[0][0] * c1 + k[0][1] * c2 + k[0][2] * c3, k[1][0] * c1 + k[1][1] * c2 + k[1][2] * c3,
+                k[2][0] * c1 + k[2][1] * c2 + k[2][2] * c3,
+                0.5 * (s * w1 + yy * w3 - z * w2), 0.5 * (s * w2 + z * w1 - x * w3),
+                0.5 * (s * w3 + x * w2 - yy * w1), -0.5 * (x * w1 + yy * w2 + z * w3)]
+
+    return f
+
+
+def angle_between(q1, q2):
+    return (Rotation.from_quat(q1).inv() * Rotation.from_quat(q2)).magnitude()
+
+
+@pytest.mark.parametrize("inertia, w0, case", [
+    (np.diag([1.0, 2.0, 3.0]), [0.3, 0.5, 1.0], "A"),
+    (np.diag([1.0, 2.0, 3.0]), [1.0, 0.5, -0.3], "B"),
+    (R_TILT @ np.diag([3.0, 1.0, 2.0]) @ R_TILT.T, [0.3, -0.5, 1.0], "A"),
+])
+def test_matches_dop853_over_many_periods(inertia, w0, case):
+    w0 = np.array(w0)
+    sol = rigiddyn.TorqueFreeSolution(inertia, Q0, w0)
+    assert sol.case == case
+    t = np.linspace(0, 12 * sol.period, 97)
+    ode = solve_ivp(euler_quaternion_rhs(inertia), (0, t[-1]), np.concatenate([w0, Q0]), method="DOP853",
+                    rtol=1e-13, atol=1e-13, t_eval=t)
+    q, w = sol.state_at(t)
+    # DOP853's own global error at 1e-13 reaches ~1e-11 |w| after 12 periods (it shrinks 4x at
+    # rtol 3e-14, towards this solution): compare relative to |w| and to the angle turned
+    np.testing.assert_allclose(w, ode.y[:3].T, rtol=0, atol=3e-11 * np.linalg.norm(w0))
+    turned = np.linalg.norm(w0) * t
+    assert np.all(angle_between(q, ode.y[3:].T) <= 1e-12 * turned + 1e-14)
+
+
+def test_invariants_to_round_off():
+    inertia = R_TILT @ np.diag([1.0, 2.0, 3.0]) @ R_TILT.T
+    for w0 in ([0.3, 0.5, 1.0], [1.0, 0.5, 0.3], [0.01, 2.0, 0.01]):
+        sol = rigiddyn.TorqueFreeSolution(inertia, Q0, w0, scalar_first=False)
+        t = np.linspace(-50 * sol.period, 50 * sol.period, 1001)
+        q, w = sol.state_at(t)
+        m = w @ inertia  # inertia is symmetric: rows of I w
+        energy = 0.5 * np.einsum("ni,ni->n", w, m)
+        L_W = Rotation.from_quat(q).apply(m)
+        G = np.linalg.norm(sol.angular_momentum_W)
+        assert np.abs(energy / sol.kinetic_energy - 1).max() < 32 * EPS
+        assert np.abs(np.linalg.norm(m, axis=1) / G - 1).max() < 32 * EPS
+        # the attitude error grows like eps times the phase (about 1e3 rad here)
+        assert np.abs(L_W - sol.angular_momentum_W).max() / G < 1e-12
+        assert np.abs(np.linalg.norm(q, axis=1) - 1).max() < 4 * EPS
+
+
+def mp_case_a(inertia_diag, w0, t):
+    """The case-A closed form evaluated with mpmath at 50 digits (q0 = identity, diagonal inertia):
+    returns w_B(t) and the rotation matrix R_WB(t)."""
+    with mp.workdps(50):
+        I1, I2, I3 = (mp.mpf(v) for v in inertia_diag)
+        m = [mp.mpf(inertia_diag[k]) * mp.mpf(w0[k]) for k in range(3)]
+        G = mp.sqrt(sum(v * v for v in m))
+        d1 = m[1] ** 2 * (I2 - I1) / I2 + m[2] ** 2 * (I3 - I1) / I3
+        d3 = m[0] ** 2 * (I1 - I3) / I1 + m[1] ** 2 * (I2 - I3) / I2
+        A1, A2, A3 = mp.sqrt(-d3 / (I1 * (I3 - I1))), mp.sqrt(-d3 / (I2 * (I3 - I2))), mp.sqrt(d1 / (I3 * (I3 - I1)))
+        lam = mp.sqrt((I3 - I2) * d1 / (I1 * I2 * I3))
+        par = (I2 - I1) * -d3 / ((I3 - I2) * d1)
+        n = -I3 * (I2 - I1) / (I1 * (I3 - I2))
+        s = mp.sign(m[2])
+        K = mp.ellipk(par)
+        u0 = mp.ellipf(mp.atan2(s * m[1] / (I2 * A2), m[0] / (I1 * A1)), par)
+
+        def big_pi(u):
+            j = mp.nint(u / (2 * K))
+            return mp.ellippi(n, mp.asin(mp.ellipfun("sn", u - 2 * j * K, par)), par) + 2 * j * mp.ellippi(n, par)
+
+        def zxz(phi, mq):
+            psi = mp.atan2(mq[0], mq[1])
+            theta = mp.atan2(mp.sqrt(mq[0] ** 2 + mq[1] ** 2), mq[2])
+            rz = lambda a: mp.matrix([[mp.cos(a), -mp.sin(a), 0], [mp.sin(a), mp.cos(a), 0], [0, 0, 1]])
+            rx = lambda a: mp.matrix([[1, 0, 0], [0, mp.cos(a), -mp.sin(a)], [0, mp.sin(a), mp.cos(a)]])
+            return rz(phi) * rx(theta) * rz(psi)
+
+        u = lam * mp.mpf(t) + u0
+        sn, cn, dn = (mp.ellipfun(f, u, par) for f in ("sn", "cn", "dn"))
+        w = [A1 * cn, s * A2 * sn, s * A3 * dn]
+        phi = G * mp.mpf(t) / I3 + G * (I3 - I1) / (I1 * I3 * lam) * (big_pi(u) - big_pi(u0))
+        R = zxz(0, m).T * zxz(phi, [I1 * w[0], I2 * w[1], I3 * w[2]])
+        return np.array([float(v) for v in w]), np.array(R.tolist(), dtype=float), 1 - par
+
+
+@pytest.mark.parametrize("eps_w", [1e-5, 3e-8])
+def test_near_separatrix_matches_extended_precision(eps_w):
+    # I = (1, 2, 3): w0 = (e, 2, e sqrt(3) + 1e-3 e²) is close to the separatrix (1 - m = 2e-10, 2e-15)
+    inertia = [1.0, 2.0, 3.0]
+    w0 = [eps_w, 2.0, eps_w * math.sqrt(3.0) + eps_w ** 2 * 1e-3]
+    sol = rigiddyn.TorqueFreeSolution(np.diag(inertia), [0, 0, 0, 1], w0)
+    assert sol.case == "A"
+    for t in (0.37 * sol.period, 1.5 * sol.period, 3.2 * sol.period):
+        w_ref, R_ref, mc_ref = mp_case_a(inertia, w0, t)
+        assert sol.parameter_mc == pytest.approx(float(mc_ref), rel=1e-13)
+        q, w = sol.state_at(t)
+        # the phase λ t is known to eps λ t; slopes of ω and the attitude are O(|ω|)
+        tol = 64 * EPS * (1 + 2.0 * t)
+        np.testing.assert_allclose(w, w_ref, rtol=0, atol=tol)
+        assert angle_between(q, Rotation.from_matrix(R_ref).as_quat()) < tol
+
+
+@pytest.mark.parametrize("eps_w", [1e-4, 3e-8])
+def test_forward_and_back_near_separatrix(eps_w):
+    # start near the saddle (the body lingers there), run 1000 periods forward, restart from the
+    # computed state and run back
+    I = np.diag([1.0, 2.0, 3.0])
+    w0 = np.array([eps_w, 2.0, eps_w * math.sqrt(3.0) + eps_w ** 2 * 1e-3])
+    sol = rigiddyn.TorqueFreeSolution(I, Q0, w0)
+    T = 1000 * sol.period
+    q1, w1 = sol.state_at(T)
+    back = rigiddyn.TorqueFreeSolution(I, q1, w1)
+    q2, w2 = back.state_at(-T)
+    assert sol.parameter_mc < 3e-8
+    # ω comes back to a few hundred ulps; the attitude to a few hundred ulps of the angle turned
+    assert np.abs(w2 - w0).max() < 300 * EPS * np.linalg.norm(w0)
+    assert angle_between(q2, Q0) < 300 * np.spacing(np.linalg.norm(w0) * T)
+
+
+def test_dzhanibekov_flip_takes_half_the_period():
+    I = np.diag([1.0, 2.0, 3.0])
+    sol = rigiddyn.TorqueFreeSolution(I, Q0, [0.01, 2.0, 0.01])
+    w2 = lambda t: sol.state_at(t)[1][1]
+    t = np.linspace(0, 3 * sol.period, 3001)
+    w = sol.state_at(t)[1][:, 1]
+    flips = [brentq(w2, t[i], t[i + 1], xtol=1e-14) for i in np.nonzero(np.sign(w[:-1]) != np.sign(w[1:]))[0]]
+    assert len(flips) == 6
+    np.testing.assert_allclose(np.diff(flips), sol.period / 2, rtol=1e-12)
+
+
+def test_symmetric_and_sphere_are_closed_form_precession():
+    # oblate symmetric body about B's z axis: w_perp turns at Ω = (I_a - I_t) w_3 / I_t
+    w0 = np.array([0.3, -0.5, 1.0])
+    sol = rigiddyn.TorqueFreeSolution(np.diag([2.0, 2.0, 3.0]), Q0, w0)
+    assert sol.case == "symmetric"
+    omega = (3.0 - 2.0) * w0[2] / 2.0
+    assert sol.period == pytest.approx(2 * math.pi / omega, rel=4 * EPS)
+    t = np.linspace(-10, 10, 21)
+    q, w = sol.state_at(t)
+    w_ref = np.stack([w0[0] * np.cos(omega * t) - w0[1] * np.sin(omega * t),
+                      w0[0] * np.sin(omega * t) + w0[1] * np.cos(omega * t), np.full_like(t, w0[2])], axis=1)
+    np.testing.assert_allclose(w, w_ref, atol=1e-14)
+    # attitude: R(t) = exp(t L_W/I_t) R0 exp(-t Ω e3)  (Landau & Lifshitz §33)
+    L_W = Rotation.from_quat(Q0).apply(np.diag([2.0, 2.0, 3.0]) @ w0)
+    R_ref = (Rotation.from_rotvec(np.outer(t, L_W / 2.0)) * Rotation.from_quat(Q0)
+             * Rotation.from_rotvec(np.outer(-omega * t, [0, 0, 1])))
+    assert np.all(angle_between(q, R_ref.as_quat()) < 1e-13)
+    # sphere: constant w, rotation about the fixed axis
+    sphere = rigiddyn.TorqueFreeSolution(2.5 * np.eye(3), Q0, w0)
+    assert sphere.case == "sphere" and sphere.period == math.inf
+    q, w = sphere.state_at(t)
+    np.testing.assert_array_equal(w, np.tile(w0, (len(t), 1)))
+    R_ref = Rotation.from_rotvec(np.outer(t, Rotation.from_quat(Q0).apply(w0))) * Rotation.from_quat(Q0)
+    assert np.all(angle_between(q, R_ref.as_quat()) < 1e-13)
+
+
+def test_nearly_symmetric_body_tends_to_the_symmetric_branch():
+    w0 = [0.3, -0.5, 1.0]
+    sym = rigiddyn.TorqueFreeSolution(R_TILT @ np.diag([2.0, 2.0, 3.0]) @ R_TILT.T, Q0, w0)
+    near = rigiddyn.TorqueFreeSolution(R_TILT @ np.diag([2.0, 2.0 * (1 + 1e-9), 3.0]) @ R_TILT.T, Q0, w0)
+    assert sym.case == "symmetric" and near.case == "A"
+    q1, w1 = sym.state_at(np.linspace(0, 20, 11))
+    q2, w2 = near.state_at(np.linspace(0, 20, 11))
+    np.testing.assert_allclose(w1, w2, atol=1e-7)
+    assert np.all(angle_between(q1, q2) < 1e-7)
+
+
+def test_hairer_lubich_wanner_problem():
+    # GNI IV.1: I = (2, 1, 2/3) (not physically realizable; accepted as a raw SPD matrix),
+    # m0 = (cos 1.1, 0, sin 1.1): case B about the smallest moment's axis, period 10.7315
+    I = np.diag([2.0, 1.0, 2.0 / 3.0])
+    m0 = np.array([math.cos(1.1), 0.0, math.sin(1.1)])
+    sol = rigiddyn.TorqueFreeSolution(I, [0, 0, 0, 1], m0 / np.diag(I))
+    assert sol.case == "B"
+    assert sol.period == pytest.approx(10.7315, abs=5e-5)
+    np.testing.assert_allclose(sol.principal_moments, [2.0 / 3.0, 1.0, 2.0])
+
+
+def test_separatrix_and_steady_spins():
+    # I = (2, 3, 6), m = (6, ., 6): m1²(I2 - I1)/I1 = m3²(I3 - I2)/I3 exactly, so Δ2 = 0
+    I = np.diag([2.0, 3.0, 6.0])
+    sol = rigiddyn.TorqueFreeSolution(I, Q0, [3.0, 0.4, 1.0])
+    assert sol.case == "separatrix" and sol.period == math.inf
+    t = np.linspace(0, 6, 31)  # the separatrix is unstable: DOP853 leaves it once close to the saddle
+    ode = solve_ivp(euler_quaternion_rhs(I), (0, 6), np.concatenate([[3.0, 0.4, 1.0], Q0]), method="DOP853",
+                    rtol=1e-13, atol=1e-13, t_eval=t)
+    q, w = sol.state_at(t)
+    np.testing.assert_allclose(w, ode.y[:3].T, rtol=0, atol=1e-11)
+    assert np.all(angle_between(q, ode.y[3:].T) < 1e-11)
+    for w0, case in (([0, 2.0, 0], "separatrix"), ([0, 0, 2.0], "A"), ([2.0, 0, 0], "B"), ([0, 0, 0], "separatrix")):
+        steady = rigiddyn.TorqueFreeSolution(I, Q0, w0)
+        q, w = steady.state_at(t)
+        assert steady.case == case
+        np.testing.assert_array_equal(w, np.tile(w0, (len(t), 1)))
+        R_ref = Rotation.from_rotvec(np.outer(t, Rotation.from_quat(Q0).apply(w0))) * Rotation.from_quat(Q0)
+        assert np.all(angle_between(q, R_ref.as_quat()) < 1e-13)
+
+
+def test_shapes_and_scalar_first():
+    I = np.diag([1.0, 2.0, 3.0])
+    a = rigiddyn.TorqueFreeSolution(I, Q0, [0.3, 0.5, 1.0])
+    b = rigiddyn.TorqueFreeSolution(I, np.roll(Q0, 1), [0.3, 0.5, 1.0], scalar_first=True)
+    q, w = a.state_at(1.5)
+    assert q.shape == (4,) and w.shape == (3,)
+    qb, wb = b.state_at(np.array([1.5]))
+    assert qb.shape == (1, 4) and wb.shape == (1, 3)
+    np.testing.assert_array_equal(np.roll(q, 1), qb[0])
+    np.testing.assert_allclose(a.state_at(0.0)[0], Q0, rtol=0, atol=4 * EPS)
+
+
+def test_bad_input():
+    I = np.diag([1.0, 2.0, 3.0])
+    with pytest.raises(ValueError, match="inertia"):
+        rigiddyn.TorqueFreeSolution(np.diag([1.0, -2.0, 3.0]), Q0, [1, 2, 3])
+    with pytest.raises(ValueError, match="inertia"):
+        rigiddyn.TorqueFreeSolution(I + np.triu(np.ones((3, 3)), 1), Q0, [1, 2, 3])
+    with pytest.raises(ValueError, match="q_WB"):
+        rigiddyn.TorqueFreeSolution(I, [0, 0, 0, 2.0], [1, 2, 3])
+    with pytest.raises(ValueError, match="w_B"):
+        rigiddyn.TorqueFreeSolution(I, Q0, [1, np.nan, 3])
+    with pytest.raises(ValueError, match="t"):
+        rigiddyn.TorqueFreeSolution(I, Q0, [1, 2, 3]).state_at(np.inf)

@@ -1,0 +1,132 @@
+"""Stability at the extremes, fast subset (the full matrix: bench/python/bench_extremes.py, table in
+docs/extremes.md).
+
+Documented behaviour asserted for every method of methods() on every case:
+1. no NaN or Inf returned silently: either every recorded value is finite, or the run says
+   `diverged` and simulate warned (RuntimeWarning);
+2. a run that rigiddyn.stability does not warn about does not diverge (a method absent from its
+   table claims to be stable at any step);
+3. methods that keep unit |q| (conserves: "unit |q|" or "SO(3)") keep ||q| - 1| at round-off;
+4. methods that conserve energy or |L| keep them bounded with no secular drift;
+5. a body rigiddyn cannot integrate (a thin rod, one moment exactly 0) is refused with a ValueError
+   naming the inertia.
+"""
+
+import math
+import warnings
+from dataclasses import replace
+
+import numpy as np
+import pytest
+import rigiddyn
+from rigiddyn.problem import Problem, parse_problem
+from rigiddyn.stability import stability_message
+from rigiddyn.tradeoff import reference_states
+
+try:
+    import tomllib
+except ImportError:  # Python < 3.11
+    import tomli as tomllib
+
+METHODS = {m["name"]: m for m in rigiddyn.methods()}
+
+
+def body_problem(moments, w_B, mass=1.0, horizon=1.0, gravity=(0.0, 0.0, 0.0), v_W=(0.0, 0.0, 0.0)):
+    return Problem(name="extreme", mass=mass, inertia_com=np.diag(np.asarray(moments, float)), horizon=horizon,
+                   w_B=np.asarray(w_B, float), gravity=np.asarray(gravity, float), v_W=np.asarray(v_W, float))
+
+
+SEPARATRIX_M = np.array([1.0, 0.5, math.sqrt(3.0) * (1.0 + 1e-9)])  # Delta2 = -m1^2 + m3^2 / 3 ~ 2e-9
+# (case id, problem, dt [s], steps)
+CASES = [
+    ("spin_1e4_dtw_1e-2", body_problem([1.0, 2.0, 2.5], [1.0, 0.5, 1e4]), 1e-6, 300),
+    ("spin_1e4_dtw_1", body_problem([1.0, 2.0, 2.5], [1.0, 0.5, 1e4]), 1e-4, 300),
+    ("ratio_1e6", body_problem([1e-6, 1.0, 1.0], [10.0, 1.0, 0.5]), 1e-3, 500),
+    ("near_spherical_1e-12", body_problem([1.0, 1.0 + 1e-12, 1.0 + 2e-12], [1.0, 2.0, 3.0]), 1e-2, 200),
+    ("flat_plate_I3_eq_I1_plus_I2", body_problem(rigiddyn.thin_plate(1.0, 2.0, mass=1.0).principal_axes().moments,
+                                                 [0.5, 1.0, 2.0]), 1e-2, 300),
+    ("mass_1e-9", body_problem(np.full(3, 0.4e-9 * 1e-4), [3.0, -2.0, 1.0], mass=1e-9, gravity=(0, 0, -9.81),
+                               v_W=(1.0, 0.0, 2.0)), 1e-2, 200),
+    ("mass_1e9", body_problem(np.full(3, 0.4e9 * 100.0), [3.0, -2.0, 1.0], mass=1e9, gravity=(0, 0, -9.81),
+                              v_W=(1.0, 0.0, 2.0)), 1e-2, 200),
+    ("dtw_1e-4", body_problem([2.0, 6.5, 8.0], [0.1, 10.0, 0.0]), 1e-5, 200),
+    ("dtw_1e-1", body_problem([2.0, 6.5, 8.0], [0.1, 10.0, 0.0]), 1e-2, 200),
+    ("dtw_1", body_problem([2.0, 6.5, 8.0], [0.1, 10.0, 0.0]), 0.1, 1000),
+    ("dtw_10", body_problem([2.0, 6.5, 8.0], [0.1, 10.0, 0.0]), 1.0, 200),
+    ("near_separatrix", body_problem([1.0, 2.0, 3.0], SEPARATRIX_M / [1.0, 2.0, 3.0]), 1e-3, 2000),
+]
+
+
+def run_case(problem, method, dt, steps):
+    """simulate through the problem layer, returning (result, warnings raised)."""
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        result = problem.simulate(method, dt, steps=steps, record_every=max(1, steps // 100))
+    return result, caught
+
+
+def arrays(result):
+    return [np.asarray(getattr(result, k)) for k in ("t", "p_W", "q_WB", "v_W", "w_B", "kinetic_energy",
+                                                   "angular_momentum_norm", "quaternion_norm_error")]
+
+
+@pytest.mark.parametrize("method", sorted(METHODS))
+@pytest.mark.parametrize("case, problem, dt, steps", CASES, ids=[c[0] for c in CASES])
+def test_documented_behaviour(case, problem, dt, steps, method):
+    result, caught = run_case(problem, method, dt, steps)
+    kinds = {type(w.message) for w in caught}
+    finite = all(np.all(np.isfinite(a)) for a in arrays(result))
+    # 1. never a silent NaN/Inf
+    if not finite or result.diverged:
+        assert result.diverged
+        assert any(issubclass(w.category, RuntimeWarning) and "non-finite" in str(w.message) for w in caught)
+    # 2. no stability warning -> no divergence
+    if stability_message(method, dt, steps, problem.inertia_com, problem.w_B, problem.torque_free) is None:
+        assert not result.diverged, f"{method} diverged on {case} without a StabilityWarning"
+        assert rigiddyn.StabilityWarning not in kinds
+    else:
+        assert rigiddyn.StabilityWarning in kinds
+    if result.diverged:
+        return
+    conserves = METHODS[method]["conserves"]
+    # 3. unit quaternion at round-off
+    if "unit |q|" in conserves or "SO(3)" in conserves:
+        assert np.max(np.abs(result.quaternion_norm_error)) < 1e-13
+    # 4. structure-preserving methods: energy and |L| bounded without secular drift
+    for key, name in (("kinetic_energy", "energy"), ("angular_momentum_norm", "|L|")):
+        if name in conserves and not np.any(problem.gravity):
+            values = np.asarray(getattr(result, key))
+            drift = np.abs(values - values[0]) / values[0]
+            half = drift.size // 2
+            assert np.max(drift) < 1e-2 and np.max(drift[half:]) <= 2 * np.max(drift[:half]) + 1e-13
+
+
+@pytest.mark.parametrize("method", [m for m in sorted(METHODS) if METHODS[m]["order"] >= 2])
+@pytest.mark.parametrize("case", ["near_spherical_1e-12", "flat_plate_I3_eq_I1_plus_I2", "near_separatrix",
+                                  "ratio_1e6", "mass_1e-9", "mass_1e9"])
+def test_accurate_at_the_extremes(case, method):
+    """Methods of order >= 2 at dt |w| <= 1e-2 follow the exact solution closely, even where the
+    exact solution is delicate (near sphere, on the separatrix, extreme masses)."""
+    _, problem, dt, steps = next(c for c in CASES if c[0] == case)
+    result, _ = run_case(problem, method, dt, steps)
+    ref = reference_states(replace(problem, horizon=dt * steps), np.asarray(result.t))
+    g = np.linalg.norm(problem.inertia_com @ problem.w_B)
+    momentum_error = np.max(np.linalg.norm((np.asarray(result.w_B) - ref.w_B) @ problem.inertia_com.T, axis=1)) / g
+    assert momentum_error < 1e-6
+    scale = np.max(np.linalg.norm(ref.p_W, axis=1)) + 1.0
+    assert np.max(np.linalg.norm(np.asarray(result.p_W) - ref.p_W, axis=1)) < 1e-9 * scale
+
+
+def test_near_separatrix_reference_is_the_closed_form():
+    _, problem, _, _ = next(c for c in CASES if c[0] == "near_separatrix")
+    solution = rigiddyn.TorqueFreeSolution(problem.inertia_com, problem.q_WB, problem.w_B)
+    assert solution.case == "A" and 0.0 < solution.parameter_mc < 1e-8
+
+
+@pytest.mark.parametrize("shape", [
+    "[body.primitive]\nshape = 'thin_rod'\nlength = 1.0\nmass = 1.0",
+    "[body]\nmass = 1.0\ninertia = [0.0, 1.0, 1.0]",
+])
+def test_a_zero_moment_is_refused(shape):
+    with pytest.raises(ValueError, match=r"^body.inertia: "):
+        parse_problem(tomllib.loads("horizon = 1.0\n" + shape))

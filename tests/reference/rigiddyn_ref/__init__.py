@@ -1,0 +1,15 @@
+"""rigiddyn_ref: the independent numpy reference implementation of rigiddyn.
+
+Written equation by equation from the seed texts (/work/shared/seeds) and textbook formulas
+(Featherstone, "Rigid Body Dynamics Algorithms"; Shoemake; Diebel, "Representing Attitude"), in
+plain numpy. It never imports rigiddyn or scipy: it is the oracle the core is compared with, and
+the baseline of the Python benchmarks.
+
+Conventions follow docs/conventions.md: SI units; quaternions (x, y, z, w) unless
+``scalar_first=True``; Hamilton product; active rotations; spatial vectors angular part first.
+Every function accepts one item or a stack with a leading axis n (numpy broadcasting over ``...``).
+"""
+
+from . import dynamics, inertia, integrators, kinematics, so3, spatial
+
+__all__ = ["dynamics", "inertia", "integrators", "kinematics", "so3", "spatial"]
