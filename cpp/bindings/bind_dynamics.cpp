@@ -6,6 +6,8 @@
 #include "bindings.hpp"
 #include "numpy_io.hpp"
 #include "rigiddyn/check.hpp"
+#include "rigiddyn/dynamics/particle_dynamics.hpp"
+#include "rigiddyn/dynamics/planar_body_dynamics.hpp"
 #include "rigiddyn/dynamics/rigid_body_dynamics.hpp"
 #include "rigiddyn/simulate/simulate.hpp"
 
@@ -51,6 +53,23 @@ std::vector<AppliedLoad> as_loads(py::handle obj) {
     loads.push_back(item.cast<AppliedLoad>());
   }
   return loads;
+}
+
+// RigidBody's `check`: None (InertiaCheck.physical), an InertiaCheck, or, for backward compatibility,
+// a bool meaning require_triangle_inequality (also accepted as that keyword).
+InertiaCheck as_inertia_check(py::handle check, py::handle require_triangle_inequality) {
+  auto from = [](py::handle obj, const std::string& name) {
+    if (py::isinstance<py::bool_>(obj)) return obj.cast<bool>() ? InertiaCheck::physical : InertiaCheck::allow_unrealizable;
+    if (py::isinstance<InertiaCheck>(obj)) return obj.cast<InertiaCheck>();
+    throw py::type_error(name + ": expected an InertiaCheck (or a bool), got " +
+                         std::string(py::str(py::type::of(obj).attr("__name__"))));
+  };
+  if (require_triangle_inequality.is_none()) return check.is_none() ? InertiaCheck::physical : from(check, "check");
+  const InertiaCheck legacy = from(require_triangle_inequality, "require_triangle_inequality");
+  if (!check.is_none() && from(check, "check") != legacy) {
+    throw py::value_error("require_triangle_inequality: expected agreement with check, got both, conflicting");
+  }
+  return legacy;
 }
 
 SimulationOptions as_options(double dt, const std::string& method, py::handle loads, py::handle gravity, double t0) {
@@ -181,7 +200,8 @@ void bind_dynamics_functions(py::module_& m) {
       "Angular momentum (3,) [kg m^2/s] in W about the point fixed in W at `point` (p_WP (3,) [m]; None = "
       "the centre of mass): H_P = R_WB I w_B + (p_W - p_WP) x m v_W.");
 
-  m.def("kinetic_energy", &kinetic_energy, py::arg("body"), py::arg("state"),
+  m.def("kinetic_energy", py::overload_cast<const RigidBody&, const RigidBodyState&>(&kinetic_energy), py::arg("body"),
+        py::arg("state"),
         "KineticEnergy(translational = 1/2 m v.v, rotational = 1/2 w_B.I w_B) [J].");
 
   m.def(
@@ -213,6 +233,137 @@ void bind_dynamics_functions(py::module_& m) {
       "The state just after an impulse (3,) [N s] at `point` (p_GP (3,) [m] relative to the centre of mass; "
       "None = the centre of mass) and an angular impulse (3,) [N m s], all in `frame` ('world' or 'body'): "
       "m dv = impulse, I dw = p_GP x impulse + angular_impulse (impulse-momentum, seed 001).");
+}
+
+Eigen::Vector2d optional_vector2(py::handle obj, const std::string& name) {
+  return obj.is_none() ? Eigen::Vector2d::Zero() : as_vector2(obj, name);
+}
+
+// The same functions for a Particle (everything in W, no rotation) and a PlanarBody (in-plane vectors
+// (2,) in W, moments and angular quantities as z scalars); pybind11 picks the overload by the body type.
+void bind_particle_planar_dynamics_functions(py::module_& m) {
+  m.def(
+      "forward_dynamics",
+      [](const Particle& particle, const ParticleState& state, py::handle force, py::handle gravity) {
+        return py_io::to_array(forward_dynamics(particle, state, optional_vector3(force, "force"), as_gravity(gravity)));
+      },
+      py::arg("body"), py::arg("state"), py::arg("force") = py::none(), py::arg("gravity") = py::none(),
+      "Particle: acceleration a_W (3,) [m/s^2] = force/m + g under a force (3,) [N] in W and gravity "
+      "(None/False, True = (0, 0, -9.81), or (3,) [m/s^2] in W).");
+  m.def(
+      "forward_dynamics",
+      [](const PlanarBody& body, const PlanarBodyState& state, py::handle force, double torque, py::handle point,
+         const std::string& frame, py::handle gravity) {
+        const PlanarWrench w = wrench_at_com(state.theta, optional_vector2(force, "force"), torque,
+                                             optional_vector2(point, "point"), as_frame(frame));
+        const PlanarAcceleration a = forward_dynamics(body, state, w, optional_vector2(gravity, "gravity"));
+        return py::make_tuple(py_io::to_array(a.a_W), a.alpha);
+      },
+      py::arg("body"), py::arg("state"), py::arg("force") = py::none(), py::arg("torque") = 0.0,
+      py::arg("point") = py::none(), py::arg("frame") = "world", py::arg("gravity") = py::none(),
+      "PlanarBody: (a_W (2,) [m/s^2] in W, alpha [rad/s^2]) under an in-plane force (2,) [N] applied at `point` "
+      "(p_GP (2,) [m] from the centre of mass; None = the centre of mass), both in `frame` ('world' or 'body'), "
+      "a couple torque [N m] about z, and in-plane gravity (None or (2,) [m/s^2] in W). m a = f + m g, "
+      "I_zz alpha = n_G.");
+
+  m.def(
+      "inverse_dynamics",
+      [](const Particle& particle, const ParticleState& state, py::handle a_W, py::handle gravity) {
+        return py_io::to_array(inverse_dynamics(particle, state, py_io::as_vector3(a_W, "a_W"), as_gravity(gravity)));
+      },
+      py::arg("body"), py::arg("state"), py::arg("a_W"), py::arg("gravity") = py::none(),
+      "Particle: the force f_W (3,) [N] in W the acceleration a_W (3,) [m/s^2] requires, m (a_W - g).");
+  m.def(
+      "inverse_dynamics",
+      [](const PlanarBody& body, const PlanarBodyState& state, py::handle a_W, double alpha, py::handle gravity) {
+        const PlanarWrench w =
+            inverse_dynamics(body, state, PlanarAcceleration{as_vector2(a_W, "a_W"), alpha}, optional_vector2(gravity, "gravity"));
+        return py::make_tuple(py_io::to_array(w.f_W), w.n);
+      },
+      py::arg("body"), py::arg("state"), py::arg("a_W"), py::arg("alpha"), py::arg("gravity") = py::none(),
+      "PlanarBody: the wrench the motion requires, (f_W (2,) [N] in W, n [N m] about the centre of mass): "
+      "f_W = m (a_W - g), n = I_zz alpha.");
+
+  m.def(
+      "linear_momentum",
+      [](const Particle& particle, const ParticleState& state) { return py_io::to_array(linear_momentum(particle, state)); },
+      py::arg("body"), py::arg("state"), "Particle: m v_W (3,) [kg m/s] in W.");
+  m.def(
+      "linear_momentum",
+      [](const PlanarBody& body, const PlanarBodyState& state) { return py_io::to_array(linear_momentum(body, state)); },
+      py::arg("body"), py::arg("state"), "PlanarBody: m v_W (2,) [kg m/s] in W.");
+
+  m.def(
+      "angular_momentum",
+      [](const Particle& particle, const ParticleState& state, py::handle point) {
+        if (point.is_none()) return py_io::to_array(angular_momentum(particle, state));
+        return py_io::to_array(angular_momentum(particle, state, py_io::as_vector3(point, "point")));
+      },
+      py::arg("body"), py::arg("state"), py::arg("point") = py::none(),
+      "Particle: (p_W - p_WP) x m v_W (3,) [kg m^2/s] in W about the point fixed in W at `point` (p_WP (3,) [m]; "
+      "None = the particle itself: zero).");
+  m.def(
+      "angular_momentum",
+      [](const PlanarBody& body, const PlanarBodyState& state, py::handle point) {
+        if (point.is_none()) return angular_momentum(body, state);
+        return angular_momentum(body, state, as_vector2(point, "point"));
+      },
+      py::arg("body"), py::arg("state"), py::arg("point") = py::none(),
+      "PlanarBody: H_z [kg m^2/s] about the point fixed in W at `point` (p_WP (2,) [m]; None = the centre of "
+      "mass): I_zz omega + (p_W - p_WP) x m v_W.");
+
+  m.def("kinetic_energy", py::overload_cast<const Particle&, const ParticleState&>(&kinetic_energy), py::arg("body"),
+        py::arg("state"), "Particle: KineticEnergy(translational = 1/2 m v.v, rotational = 0) [J].");
+  m.def("kinetic_energy", py::overload_cast<const PlanarBody&, const PlanarBodyState&>(&kinetic_energy),
+        py::arg("body"), py::arg("state"),
+        "PlanarBody: KineticEnergy(translational = 1/2 m v.v, rotational = 1/2 I_zz omega^2) [J].");
+
+  m.def(
+      "potential_energy",
+      [](const Particle& particle, const ParticleState& state, py::handle gravity) {
+        return potential_energy(particle, state, as_gravity(gravity));
+      },
+      py::arg("body"), py::arg("state"), py::arg("gravity") = true,
+      "Particle: -m g.p_W [J] (True = (0, 0, -9.81) m/s^2, or (3,) in W).");
+  m.def(
+      "potential_energy",
+      [](const PlanarBody& body, const PlanarBodyState& state, py::handle gravity) {
+        return potential_energy(body, state, as_vector2(gravity, "gravity"));
+      },
+      py::arg("body"), py::arg("state"), py::arg("gravity"),
+      "PlanarBody: -m g.p_W [J] for in-plane gravity g (2,) [m/s^2] in W.");
+
+  m.def(
+      "power", [](const ParticleState& state, py::handle f_W) { return power(state, py_io::as_vector3(f_W, "f_W")); },
+      py::arg("state"), py::arg("f_W"), "Particle: power f_W.v_W [W] of a force f_W (3,) [N] in W.");
+  m.def(
+      "power",
+      [](const PlanarBodyState& state, py::handle f_W, double n) {
+        return power(state, PlanarWrench{as_vector2(f_W, "f_W"), n});
+      },
+      py::arg("state"), py::arg("f_W"), py::arg("n"),
+      "PlanarBody: power f_W.v_W + n omega [W] of a force f_W (2,) [N] in W at the centre of mass and a moment "
+      "n [N m] about it.");
+
+  m.def(
+      "apply_impulse",
+      [](const Particle& particle, const ParticleState& state, py::handle impulse) {
+        return apply_impulse(particle, state, py_io::as_vector3(impulse, "impulse"));
+      },
+      py::arg("body"), py::arg("state"), py::arg("impulse"),
+      "Particle: the state just after an impulse (3,) [N s] in W: m dv = impulse.");
+  m.def(
+      "apply_impulse",
+      [](const PlanarBody& body, const PlanarBodyState& state, py::handle impulse, py::handle point,
+         const std::string& frame, double angular_impulse) {
+        return apply_impulse(body, state, as_vector2(impulse, "impulse"), optional_vector2(point, "point"),
+                             as_frame(frame), angular_impulse);
+      },
+      py::arg("body"), py::arg("state"), py::arg("impulse"), py::arg("point") = py::none(),
+      py::arg("frame") = "world", py::arg("angular_impulse") = 0.0,
+      "PlanarBody: the state just after an in-plane impulse (2,) [N s] at `point` (p_GP (2,) [m] from the centre "
+      "of mass; None = the centre of mass), both in `frame` ('world' or 'body'), and an angular impulse [N m s] "
+      "about z: m dv = impulse, I_zz domega = p_GP x impulse + angular_impulse.");
 }
 
 const char* const simulate_doc = R"doc(
@@ -255,13 +406,19 @@ void bind_dynamics(py::module_& m) {
 
   py::class_<RigidBody>(m, "RigidBody",
                         "A spatial rigid body (6 DOF): mass [kg] > 0 and inertia_com (3, 3) [kg m^2] about the centre "
-                        "of mass in the body frame B, symmetric positive definite; principal moments must satisfy "
-                        "the triangle inequality unless require_triangle_inequality=False. euler_form tells which "
-                        "form of Euler's equations it uses: 'spherical', 'principal' or 'full'.")
-      .def(py::init([](double mass, py::handle inertia_com, bool require_triangle_inequality) {
-             return RigidBody(mass, py_io::as_matrix3(inertia_com, "inertia_com"), require_triangle_inequality);
+                        "of mass in the body frame B, symmetric positive definite, checked as every inertia of "
+                        "rigiddyn is (inertia_report): under check=InertiaCheck.physical (default) the principal "
+                        "moments must satisfy the triangle inequality; check=InertiaCheck.allow_unrealizable accepts "
+                        "test bodies no real body has, e.g. I = diag(2, 1, 2/3). (require_triangle_inequality=False, "
+                        "or False as the third positional argument, is the older spelling of allow_unrealizable.) "
+                        "euler_form tells which form of Euler's equations it uses: 'spherical', 'principal' or "
+                        "'full'.")
+      .def(py::init([](double mass, py::handle inertia_com, py::handle check, py::handle require_triangle_inequality) {
+             return RigidBody(mass, py_io::as_matrix3(inertia_com, "inertia_com"),
+                              as_inertia_check(check, require_triangle_inequality));
            }),
-           py::arg("mass"), py::arg("inertia_com"), py::arg("require_triangle_inequality") = true)
+           py::arg("mass"), py::arg("inertia_com"), py::arg("check") = py::none(),
+           py::arg("require_triangle_inequality") = py::none())
       .def_property_readonly("mass", &RigidBody::mass, "mass [kg]")
       .def_property_readonly(
           "inertia_com", [](const RigidBody& b) { return py_io::to_array(b.inertia_com()); },
@@ -372,6 +529,7 @@ void bind_dynamics(py::module_& m) {
 #undef RIGIDDYN_STEP_ARGS
 
   bind_dynamics_functions(m);
+  bind_particle_planar_dynamics_functions(m);
 
   m.def(
       "methods",
@@ -384,12 +542,17 @@ void bind_dynamics(py::module_& m) {
           d["evaluations"] = info.evaluations;
           d["conserves"] = info.conserves;
           d["notes"] = info.notes;
+          d["stability_limit"] = info.stability_limit;
+          d["exact_torque_free"] = info.exact_torque_free;
           out.append(d);
         }
         return out;
       },
       "The fixed-step methods: a list of dicts with name, order (global), evaluations (derivative "
-      "evaluations per step), conserves (what is kept exactly on a free rigid body) and notes.");
+      "evaluations per step), conserves (what is kept exactly on a free rigid body), notes, stability_limit "
+      "(largest dt*|w| [rad], |w| the largest body rate on the torque-free orbit, at which the method is "
+      "documented stable on a free spin: inf if unconditionally, 0 if never) and exact_torque_free (True if "
+      "torque-free motion is reproduced to round-off at any dt: no observed order applies).");
 }
 
 }  // namespace rigiddyn::bindings

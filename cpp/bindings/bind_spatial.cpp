@@ -204,7 +204,6 @@ void bind_force(py::module_& m) {
       .def(-py::self)
       .def("__mul__", [](const Force& s, py::handle k) { return s * as_factor(k); }, py::is_operator())
       .def("__rmul__", [](const Force& s, py::handle k) { return s * as_factor(k); }, py::is_operator())
-      .def("dot", &Force::dot, "m"_a, "Power w . n + v . f [W] of this force on the motion m.")
       .def("__repr__", [](const Force& s) {
         return "Force(angular=" + list_repr(s.angular) + ", linear=" + list_repr(s.linear) + ")";
       });
@@ -309,6 +308,9 @@ void bind_screw(py::module_& m) {
 void bind_spatial(py::module_& m) {
   bind_force(m);
   bind_motion(m);
+  // Force.dot names Motion in its signature, so it is added once Motion is registered.
+  py::reinterpret_borrow<py::class_<Force>>(m.attr("Force"))
+      .def("dot", &Force::dot, "m"_a, "Power w . n + v . f [W] of this force on the motion m.");
   bind_transform(m);
   bind_screw(m);
   m.def("motion_cross_matrix", [](const Motion& v) { return py_io::to_array(motion_cross_matrix(v)); }, "m"_a,

@@ -88,11 +88,12 @@ namespace {
 template <int R, int C>
 Eigen::Matrix<double, R, C> as_fixed(py::handle obj, const std::string& name) {
   const std::vector<py::ssize_t> tail = (C == 1) ? std::vector<py::ssize_t>{R} : std::vector<py::ssize_t>{R, C};
-  Stack s = as_stack(obj, name, tail);
-  if (s.stacked) {
-    throw py::value_error(name + ": expected shape " + tail_string(tail, false) + ", got " + shape_string(s.array));
-  }
-  return Eigen::Map<const Eigen::Matrix<double, R, C, (C == 1 ? Eigen::ColMajor : Eigen::RowMajor)>>(s.array.data());
+  Array a = as_array(obj, name);
+  bool ok = a.ndim() == static_cast<py::ssize_t>(tail.size());
+  for (py::ssize_t i = 0; ok && i < a.ndim(); ++i) ok = a.shape(i) == tail[static_cast<size_t>(i)];
+  if (!ok) throw py::value_error(name + ": expected shape " + tail_string(tail, false) + ", got " + shape_string(a));
+  require_all_finite(a, name);
+  return Eigen::Map<const Eigen::Matrix<double, R, C, (C == 1 ? Eigen::ColMajor : Eigen::RowMajor)>>(a.data());
 }
 }  // namespace
 
@@ -114,11 +115,8 @@ void write_quaternion(const Eigen::Quaterniond& q, double* out, bool scalar_firs
 }
 
 Eigen::Quaterniond as_quaternion(py::handle obj, const std::string& name, bool scalar_first) {
-  Stack s = as_stack(obj, name, {4});
-  if (s.stacked) {
-    throw py::value_error(name + ": expected shape (4,), got " + shape_string(s.array));
-  }
-  return read_quaternion(s.array.data(), scalar_first);
+  const Eigen::Vector4d c = as_fixed<4, 1>(obj, name);
+  return read_quaternion(c.data(), scalar_first);
 }
 
 Array to_array(const Eigen::Quaterniond& q, bool scalar_first) {

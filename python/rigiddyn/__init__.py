@@ -8,7 +8,7 @@ coordinates to world coordinates) are in ``docs/conventions.md``.
 from . import _core
 from ._core import *  # noqa: F401,F403  (the core's names are the package's API)
 from .rotation_scipy import from_scipy, to_scipy
-from .inertia_mesh import mesh_shell, solid_mesh  # accept trimesh objects too
+from .inertia_mesh import mesh_shell, solid_mesh  # type: ignore[assignment]  # the core's, also taking trimesh objects
 from .problem import Problem, load_problem
 from .stability import StabilityWarning
 from .tradeoff import TradeoffResult, tradeoff  # the function shadows its module's name on the package

@@ -40,7 +40,7 @@ def _names(text: str) -> list[str]:
     return [x for x in text.replace(",", " ").split() if x]
 
 
-def _add_tradeoff_parser(sub: argparse._SubParsersAction) -> None:
+def _add_tradeoff_parser(sub: "argparse._SubParsersAction[argparse.ArgumentParser]") -> None:
     p = sub.add_parser(
         "tradeoff",
         help="measure speed against accuracy of every method and step on a problem file; recommend the cheapest",

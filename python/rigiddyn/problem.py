@@ -60,7 +60,7 @@ else:  # pragma: no cover - exercised on Python 3.9/3.10 only
 __all__ = ["PRIMITIVES", "Load", "Problem", "example_path", "example_problems", "load_problem", "parse_problem"]
 
 # primitive shape -> its size arguments (the rigiddyn constructor of the same name)
-PRIMITIVES: dict[str, tuple] = {
+PRIMITIVES: dict[str, tuple[str, ...]] = {
     "solid_sphere": ("radius",),
     "hollow_sphere": ("outer_radius", "inner_radius"),
     "spherical_shell": ("radius",),
@@ -100,7 +100,7 @@ def _vector(value: Any, name: str, n: int = 3) -> np.ndarray:
     return np.array([_number(v, f"{name}[{i}]") for i, v in enumerate(value)])
 
 
-def _table(value: Any, name: str, allowed: set) -> Mapping[str, Any]:
+def _table(value: Any, name: str, allowed: set[str]) -> Mapping[str, Any]:
     if not isinstance(value, Mapping):
         raise _fail(name, "a table", value)
     unknown = sorted(set(value) - allowed)
@@ -138,7 +138,7 @@ class Problem:
     q_WB: np.ndarray = field(default_factory=lambda: np.array([0.0, 0.0, 0.0, 1.0]))
     v_W: np.ndarray = field(default_factory=lambda: np.zeros(3))
     w_B: np.ndarray = field(default_factory=lambda: np.zeros(3))
-    loads: tuple = ()
+    loads: tuple[Load, ...] = ()
     gravity: np.ndarray = field(default_factory=lambda: np.zeros(3))
     require_triangle_inequality: bool = True
     description: str = ""
@@ -192,7 +192,7 @@ def _inertia_matrix(value: Any, name: str) -> np.ndarray:
     raise _fail(name, "3 principal moments [I1, I2, I3] or a 3x3 matrix [kg m^2]", value)
 
 
-def _core_error(error: ValueError, name: str, args: tuple = ()) -> ValueError:
+def _core_error(error: ValueError, name: str, args: tuple[str, ...] = ()) -> ValueError:
     """The core's "arg: expected ..." message re-addressed to the problem field `name` (or name.arg)."""
     arg, sep, rest = str(error).partition(": ")
     if not sep or " " in arg:
@@ -208,7 +208,7 @@ def _mass_or_density(table: Mapping[str, Any], name: str) -> dict[str, float]:
     return {key: _number(table[key], f"{name}.{key}", positive=True)}
 
 
-def _primitive(table: Any) -> tuple:
+def _primitive(table: Any) -> tuple[Any, ...]:
     name = "body.primitive"
     if not isinstance(table, Mapping) or "shape" not in table:
         raise _fail(f"{name}.shape", "one of " + ", ".join(PRIMITIVES), table.get("shape") if isinstance(table, Mapping) else table)
@@ -230,7 +230,7 @@ def _primitive(table: Any) -> tuple:
     return inertia.mass, np.array(inertia.inertia_com)
 
 
-def _mesh(table: Any, base: Path | None) -> tuple:
+def _mesh(table: Any, base: Path | None) -> tuple[Any, ...]:
     name = "body.mesh"
     table = _table(table, name, {"path", "mass", "density"})
     if not isinstance(table.get("path"), str):
@@ -246,14 +246,15 @@ def _mesh(table: Any, base: Path | None) -> tuple:
         raise ImportError("body.mesh: reading mesh files needs trimesh (pip install trimesh)") from None
     mesh = trimesh.load(str(path), force="mesh")
     try:
-        inertia = _core.solid_mesh(np.asarray(mesh.vertices, float), np.asarray(mesh.faces, np.int64),
+        inertia = _core.solid_mesh(np.asarray(getattr(mesh, "vertices"), float),  # a trimesh.Trimesh
+                                   np.asarray(getattr(mesh, "faces"), np.int64),
                                    **_mass_or_density(table, name))
     except ValueError as e:
         raise _core_error(e, name) from None
     return inertia.mass, np.array(inertia.inertia_com)
 
 
-def _body(value: Any, base: Path | None) -> tuple:
+def _body(value: Any, base: Path | None) -> tuple[Any, ...]:
     body = _table(value, "body", {"mass", "inertia", "primitive", "mesh", "require_triangle_inequality"})
     sources = [k for k in ("inertia", "primitive", "mesh") if k in body]
     if len(sources) != 1:
@@ -300,7 +301,7 @@ def _initial(value: Any) -> dict[str, np.ndarray]:
     return out
 
 
-def _loads(value: Any) -> tuple:
+def _loads(value: Any) -> tuple[Any, ...]:
     if not isinstance(value, list):
         raise _fail("loads", "an array of tables [[loads]]", value)
     loads = []

@@ -11,8 +11,13 @@ growth is averaged in log over the orbit: for a torque-free body, ORBIT_SAMPLES 
 Euler-Poinsot solution over one period (or the run); otherwise the initial w only. rigiddyn warns
 (StabilityWarning) when the predicted growth over the run exceeds GROWTH_LIMIT.
 
-Methods absent from STABILITY_POLYNOMIALS are not checked: the implicit-gyroscopic Euler damps
-(|R| < 1), and structure-preserving methods (exact sub-flows, implicit midpoint) keep |R| = 1.
+Methods absent from STABILITY_POLYNOMIALS are checked against the documented `stability_limit`
+of methods() (carried by the C++ MethodInfo): the largest dt |w| at which the method keeps what it
+promises on a free spin, |w| taken as the largest body rate along the orbit (ORBIT_SAMPLES states
+of the torque-free solution, or the initial w). inf means unconditionally stable (the implicit-
+gyroscopic Euler damps, the exact flow and exact_flow_kick are exact); the splitting methods lose
+their small energy error beyond it (|L| stays exact), implicit midpoint's Newton iteration may stop
+unconverged.
 """
 
 from __future__ import annotations
@@ -32,7 +37,9 @@ __all__ = [
     "linear_modes",
     "mean_growth_factor",
     "orbit",
+    "orbit_rate",
     "spin_rate",
+    "stability_limit",
     "stability_message",
     "warn_if_unstable",
 ]
@@ -98,12 +105,45 @@ def mean_growth_factor(method: str, dt: float, inertia_com: np.ndarray, w_B: np.
     if method not in STABILITY_POLYNOMIALS:
         return None
     states = orbit(inertia_com, w_B, span) if torque_free and np.any(w_B) else [w_B]
-    return float(np.exp(np.mean([np.log(growth_factor(method, dt, inertia_com, w)) for w in states])))
+    factors = [growth_factor(method, dt, inertia_com, w) for w in states]
+    return float(np.exp(np.mean([math.log(g) for g in factors if g is not None])))
+
+
+def stability_limit(method: str) -> float:
+    """The documented largest dt |w| [rad] of `method` on a free spin (methods()['stability_limit'])."""
+    for info in _core.methods():
+        if info["name"] == method:
+            return float(info["stability_limit"])
+    raise ValueError(f"method: expected one of {', '.join(m['name'] for m in _core.methods())}, got {method!r}")
+
+
+def orbit_rate(inertia_com: np.ndarray, w_B: np.ndarray, span: float, torque_free: bool = True) -> float:
+    """The largest |w| [rad/s] along the torque-free orbit from w_B (torque-free) or |w_B|."""
+    w = np.asarray(w_B, float)
+    states = orbit(inertia_com, w, span) if torque_free and np.any(w) else [w]
+    return float(max(np.linalg.norm(x) for x in states))
+
+
+def _limit_message(method: str, dt: float, steps: int, inertia_com: np.ndarray, w_B: np.ndarray,
+                   torque_free: bool) -> str | None:
+    """A message if dt |w| exceeds the documented stability_limit of a method without a polynomial."""
+    limit = stability_limit(method)
+    if math.isinf(limit):
+        return None
+    rate = orbit_rate(inertia_com, w_B, dt * steps, torque_free)
+    if dt * rate <= limit:
+        return None
+    return (f"{method} at dt = {dt:.3g} s is beyond its stability limit for this spin: dt*|w| = {dt * rate:.3g} "
+            f"(|w| up to {rate:.3g} rad/s along the orbit) > {limit:.3g}, the documented limit (methods()); "
+            f"{method} does not keep what it promises there")
 
 
 def stability_message(method: str, dt: float, steps: int, inertia_com: np.ndarray, w_B: np.ndarray,
                       torque_free: bool = True) -> str | None:
-    """A message if perturbations grow by more than GROWTH_LIMIT over `steps` steps, else None."""
+    """A message if perturbations grow by more than GROWTH_LIMIT over `steps` steps (methods with a
+    stability polynomial) or dt |w| exceeds the documented stability_limit (the others), else None."""
+    if method not in STABILITY_POLYNOMIALS:
+        return _limit_message(method, dt, steps, inertia_com, w_B, torque_free)
     g = mean_growth_factor(method, dt, inertia_com, w_B, dt * steps, torque_free)
     if g is None or g <= 1.0:
         return None

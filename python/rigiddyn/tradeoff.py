@@ -20,7 +20,10 @@ at the horizon and "max_" over the recorded states:
   energy_drift    max_t |T - T_ref| / max_t T_ref (kinetic energy)
   momentum_drift  max_t ||I w| - |I w_ref|| / max_t |I w_ref| (|L| drift)
   quaternion_norm_error  max_t ||q| - 1|
-observed_order: slope of log(measure) against log(dt) from the next larger dt of the same method.
+observed_order: slope of log(measure) against log(dt) from the next larger dt of the same method;
+  nan (not applicable) for a method that is exact on the problem (order 0, or exact_torque_free on a
+  torque-free problem: its error is round-off at every dt) and where either error is round-off
+  (below ROUND_OFF_PER_STEP x steps), whose slope says nothing about the truncation error.
 """
 
 from __future__ import annotations
@@ -52,6 +55,7 @@ COLUMNS = ("method", "dt", "steps", "order", "evaluations_per_step", "time_per_s
                                               "stability")
 _COSTS = {"time": "total_time", "evaluations": "total_evaluations"}
 SAMPLES = 200  # states compared per run (every k-th step)
+ROUND_OFF_PER_STEP = 100 * np.finfo(float).eps  # errors below this x steps are round-off
 MIN_TIMED_SECONDS = 2e-2  # time each run at least twice, up to 5 times until this much; keep the fastest
 
 
@@ -75,7 +79,7 @@ def _states(result: Any) -> States:
                   np.asarray(result.v_W), np.asarray(result.w_B))
 
 
-def _ballistic(problem: Problem, t: np.ndarray) -> tuple:
+def _ballistic(problem: Problem, t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """p_W, v_W (n, 3) of the centre of mass under gravity and world-fixed piecewise-constant forces:
     on each piece p = p0 + v0 s + a s^2/2, v = v0 + a s."""
     breaks = sorted({b for load in problem.loads for b in (load.t_start, load.t_end) if 0.0 < b < t.max()})
@@ -114,7 +118,7 @@ def _attitude_angle(q_ref: np.ndarray, q: np.ndarray) -> np.ndarray:
     a_v, a_w, b_v, b_w = q_ref[:, :3], q_ref[:, 3:], q[:, :3], q[:, 3:]
     vec = a_w * b_v - b_w * a_v - np.cross(a_v, b_v)
     scalar = np.abs(a_w[:, 0] * b_w[:, 0] + np.sum(a_v * b_v, axis=1))
-    return 2.0 * np.arctan2(np.linalg.norm(vec, axis=1), scalar)
+    return np.asarray(2.0 * np.arctan2(np.linalg.norm(vec, axis=1), scalar))
 
 
 def _measures(problem: Problem, run: States, ref: States, quaternion_norm_error: np.ndarray) -> dict[str, float]:
@@ -138,7 +142,7 @@ def _measures(problem: Problem, run: States, ref: States, quaternion_norm_error:
         out[f"final_{name}"], out[f"max_{name}"] = float(values[-1]), float(np.max(values))
 
     def kinetic(s: States) -> np.ndarray:
-        return 0.5 * mass * np.sum(s.v_W**2, axis=1) + 0.5 * np.sum(s.w_B * (s.w_B @ inertia.T), axis=1)
+        return np.asarray(0.5 * mass * np.sum(s.v_W**2, axis=1) + 0.5 * np.sum(s.w_B * (s.w_B @ inertia.T), axis=1))
 
     t_ref = kinetic(ref)
     out["energy_drift"] = float(np.max(np.abs(kinetic(run) - t_ref)) / max(np.max(t_ref), np.finfo(float).tiny))
@@ -175,11 +179,11 @@ def _simulate(problem: Problem, method: str, dt: float, steps: int, record_every
 
 def _reference_method(methods_info: dict[str, dict[str, Any]]) -> str:
     """The highest-order method; ties go to one that keeps SO(3) exactly."""
-    return max(methods_info.values(), key=lambda m: (m["order"], "SO(3)" in m["conserves"]))["name"]
+    return str(max(methods_info.values(), key=lambda m: (m["order"], "SO(3)" in m["conserves"]))["name"])
 
 
 def _richardson_reference(problem: Problem, method: str, order: int, dt: float, steps: int, record_every: int,
-                          runs: Sequence[_Run], max_steps: int) -> tuple:
+                          runs: Sequence[_Run], max_steps: int) -> tuple[States, dict[str, float]]:
     """(reference States, estimate of its error per measure): `method` at dt/2^j, j = 1, 2, ..., until
     the Richardson estimate of max_state_error is below a tenth of every run's error, hits round-off,
     or the next refinement would exceed max_steps."""
@@ -478,13 +482,20 @@ def _default_dts(problem: Problem) -> list[float]:
     return [dt0 / 2**j for j in range(8)]
 
 
-def _observed_orders(rows: list[dict[str, Any]], measure: str) -> None:
+def _exact_on(problem: Problem, info: dict[str, Any]) -> bool:
+    """True if the method has no truncation error on `problem` (order 0, or exact on torque-free bodies)."""
+    return info["order"] == 0 or (info["exact_torque_free"] and problem.torque_free)
+
+
+def _observed_orders(rows: list[dict[str, Any]], measure: str, exact_methods: set[str]) -> None:
     for method in dict.fromkeys(r["method"] for r in rows):
         mine = sorted((r for r in rows if r["method"] == method), key=lambda r: -r["dt"])
         mine[0]["observed_order"] = math.nan
         for coarse, fine in zip(mine[:-1], mine[1:]):
             e0, e1 = coarse[measure], fine[measure]
-            ok = e0 > 0 and e1 > 0 and math.isfinite(e0) and math.isfinite(e1) and coarse["dt"] != fine["dt"]
+            above_round_off = min(e0 / coarse["steps"], e1 / fine["steps"]) > ROUND_OFF_PER_STEP
+            ok = (method not in exact_methods and above_round_off and math.isfinite(e0) and math.isfinite(e1)
+                  and coarse["dt"] != fine["dt"])
             fine["observed_order"] = math.log(e0 / e1) / math.log(coarse["dt"] / fine["dt"]) if ok else math.nan
 
 
@@ -495,7 +506,8 @@ def tradeoff(problem: Problem | str | Path, methods: Iterable[str] | None = None
     """Run every method x dt on `problem` (a Problem, a TOML path or an example name) and measure
     cost and error against a reference (see the module docstring).
 
-    methods: names from methods() (default: the file's [tradeoff] list, else all); dts [s]
+    methods: names from methods() (default: the file's [tradeoff] list, else all that can run the problem:
+    `exact` only for a torque-free body); dts [s]
     (default: the file's, else eight halvings from dt |w| = 1); each dt is adjusted to
     horizon / round(horizon / dt) so that every run ends exactly at the horizon [s] (default:
     the problem's). tolerance/measure: the recommendation's criterion (measure in MEASURES,
@@ -509,7 +521,9 @@ def tradeoff(problem: Problem | str | Path, methods: Iterable[str] | None = None
         problem = problem.with_horizon(horizon)
     defaults = problem.tradeoff
     info = {m["name"]: m for m in _core.methods()}
-    methods = list(methods if methods is not None else defaults.get("methods", info))
+    # by default every method that can run the problem: the exact flow (order 0) is for torque-free bodies only
+    runnable = [name for name, m in info.items() if m["order"] != 0 or problem.torque_free]
+    methods = list(methods if methods is not None else defaults.get("methods", runnable))
     for name in methods:
         if name not in info:
             raise ValueError(f"methods: expected names from {', '.join(info)}, got {name!r}")
@@ -564,7 +578,7 @@ def tradeoff(problem: Problem | str | Path, methods: Iterable[str] | None = None
                 rows.append(row)
     finally:
         bar.close()
-    _observed_orders(rows, measure)
+    _observed_orders(rows, measure, {m for m in methods if _exact_on(problem, info[m])})
     rows.sort(key=lambda r: (methods.index(r["method"]), -r["dt"]))
     if unstable:
         warnings.warn("tradeoff: some steps are beyond the method's stability limit:\n  " + "\n  ".join(unstable),

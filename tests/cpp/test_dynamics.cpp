@@ -2,6 +2,8 @@
 // undoes forward dynamics, impulse-momentum, work-energy, form selection, bad inputs.
 #include <gtest/gtest.h>
 
+#include "rigiddyn/dynamics/particle_dynamics.hpp"
+#include "rigiddyn/dynamics/planar_body_dynamics.hpp"
 #include "rigiddyn/dynamics/rigid_body_dynamics.hpp"
 #include "rigiddyn/simulate/simulate.hpp"
 
@@ -130,6 +132,83 @@ TEST(Models, ImplicitGyroscopicKickReducesTheResidual) {
     return (full_inertia() * (x - w) + h * x.cross(full_inertia() * x) - h * n).norm();
   };
   EXPECT_LT(residual(euler.implicit_gyroscopic_kick(w, n, h)), 1e-3 * residual(w));
+}
+
+TEST(Models, PrincipalImplicitKickEqualsTheGeneralNewtonStep) {
+  // the closed-form diagonal specialisation against the general Jacobian and solve
+  const Eigen::Vector3d I(0.7, 1.9, 3.1), w(1.0, 3.0, -0.5), n(0.1, 0.2, 0.3);
+  const PrincipalEuler euler(I);
+  for (const double h : {1e-3, 0.05, 0.7}) {
+    const Eigen::Vector3d general = gyroscopic_newton_kick(I.asDiagonal().toDenseMatrix(), w, n, h);
+    EXPECT_LT((euler.implicit_gyroscopic_kick(w, n, h) - general).norm(), 1e-14 * general.norm()) << h;
+  }
+}
+
+TEST(Models, Solve3x3MatchesLu) {
+  Eigen::Matrix3d J;
+  J << 2.0, -0.3, 0.5, 0.1, 1.5, -0.7, 0.4, 0.2, 3.0;
+  const Eigen::Vector3d b(0.3, -1.1, 2.0);
+  const Eigen::Vector3d x = solve_3x3(J.row(0), J.row(1), J.row(2), b);
+  EXPECT_LT((x - J.partialPivLu().solve(b)).norm(), 1e-15 * x.norm() * 10);
+}
+
+TEST(Models, RigidBodyUsesTheInertiaLayersCheck) {
+  const Eigen::Matrix3d hlw = Eigen::Vector3d(2.0, 1.0, 2.0 / 3.0).asDiagonal();  // 1 + 2/3 < 2
+  std::string body_message, inertia_message;
+  try {
+    RigidBody(1.0, hlw);
+  } catch (const std::invalid_argument& e) {
+    body_message = e.what();
+  }
+  try {
+    checked_inertia(1.0, hlw, InertiaCheck::physical);
+  } catch (const std::invalid_argument& e) {
+    inertia_message = e.what();
+  }
+  EXPECT_FALSE(body_message.empty());
+  EXPECT_EQ(body_message, inertia_message);
+  EXPECT_EQ(RigidBody(1.0, hlw, InertiaCheck::allow_unrealizable).euler_form(), EulerForm::principal);
+  // positive semi-definite (valid for the inertia layer) but singular: Euler's equations need I^-1
+  EXPECT_THROW(RigidBody(1.0, Eigen::Vector3d(0.0, 1.0, 1.0).asDiagonal()), std::invalid_argument);
+}
+
+TEST(Dynamics, ParticleInverseUndoesForwardAndImpulseIsMomentum) {
+  const Particle particle(1.9);
+  const ParticleState s{Eigen::Vector3d(0.1, -0.2, 0.3), Eigen::Vector3d(0.5, 0.2, -0.1)};
+  const Eigen::Vector3d f(0.4, -1.0, 0.2), J(0.3, 0.1, -0.7), O(1.0, 2.0, -1.0);
+  const Eigen::Vector3d a = forward_dynamics(particle, s, f, standard_gravity());
+  EXPECT_LT((inverse_dynamics(particle, s, a, standard_gravity()) - f).norm(), 1e-14);
+  const ParticleState after = apply_impulse(particle, s, J);
+  EXPECT_LT((linear_momentum(particle, after) - linear_momentum(particle, s) - J).norm(), 1e-15);
+  const Eigen::Vector3d dH = angular_momentum(particle, after, O) - angular_momentum(particle, s, O);
+  EXPECT_LT((dH - (s.p_W - O).cross(J)).norm(), 1e-14);
+}
+
+TEST(Dynamics, PlanarEqualsSpatialKeptInThePlane) {
+  const PlanarBody planar(2.2, 0.8);
+  const RigidBody spatial(2.2, Eigen::Vector3d(0.5, 0.6, 0.8).asDiagonal());
+  const PlanarBodyState ps{Eigen::Vector2d(0.3, -1.0), 0.7, Eigen::Vector2d(1.0, -0.4), 1.3};
+  RigidBodyState bs;
+  bs.p_W << ps.p_W, 0.0;
+  bs.q_WB = Eigen::AngleAxisd(ps.theta, Eigen::Vector3d::UnitZ());
+  bs.v_W << ps.v_W, 0.0;
+  bs.w_B << 0.0, 0.0, ps.omega;
+  const Eigen::Vector2d f(0.4, -0.3), p_GP(0.2, 0.5);
+  const double n = 0.25;
+  for (const Frame frame : {Frame::world, Frame::body}) {
+    const PlanarAcceleration a = forward_dynamics(planar, ps, wrench_at_com(ps.theta, f, n, p_GP, frame));
+    const BodyAcceleration a3 = forward_dynamics(
+        spatial, bs, wrench_at_com(bs.q_WB, Eigen::Vector3d(f.x(), f.y(), 0), Eigen::Vector3d(0, 0, n),
+                                   Eigen::Vector3d(p_GP.x(), p_GP.y(), 0), frame));
+    EXPECT_LT((Eigen::Vector3d(a.a_W.x(), a.a_W.y(), 0.0) - a3.a_W).norm(), 1e-14);
+    EXPECT_LT((Eigen::Vector3d(0.0, 0.0, a.alpha) - a3.alpha_B).norm(), 1e-14);
+    const PlanarWrench back = inverse_dynamics(planar, ps, a);
+    EXPECT_NEAR(back.n, n + p_GP.x() * f.y() - p_GP.y() * f.x(), 1e-14);
+  }
+  const Eigen::Vector2d O(1.0, 1.0);
+  EXPECT_NEAR(angular_momentum(planar, ps, O), angular_momentum(spatial, bs, Eigen::Vector3d(O.x(), O.y(), 0)).z(),
+              1e-14);
+  EXPECT_NEAR(kinetic_energy(planar, ps).total(), kinetic_energy(spatial, bs).total(), 1e-14);
 }
 
 TEST(BadInput, Throws) {

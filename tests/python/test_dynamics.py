@@ -315,6 +315,178 @@ def test_momentum_energy_power():
     assert rd.power(state, [0, 1.0, 0], [2.0, 0, 0]) == pytest.approx(3.0 + 2.0)
 
 
+# --- particle and planar body: the same dynamics functions ------------------------------------
+
+def planar_as_spatial(planar_state):
+    """The spatial state of a planar state: p = (x, y, 0), q = Rz(theta), v = (vx, vy, 0), w_B = (0, 0, omega)."""
+    return rd.RigidBodyState(p_W=[*planar_state.p_W, 0.0],
+                             q_WB=Rotation.from_rotvec([0, 0, planar_state.theta]).as_quat(),
+                             v_W=[*planar_state.v_W, 0.0], w_B=[0.0, 0.0, planar_state.omega])
+
+
+def random_planar_state(rng):
+    return rd.PlanarBodyState(p_W=rng.normal(size=2), theta=rng.uniform(-math.pi, math.pi), v_W=rng.normal(size=2),
+                              omega=rng.normal())
+
+
+@pytest.mark.parametrize("seed", range(10))
+def test_particle_inverse_dynamics_undoes_forward(seed):
+    rng = np.random.default_rng(200 + seed)
+    particle = rd.Particle(1.9)
+    state = rd.ParticleState(p_W=rng.normal(size=3), v_W=rng.normal(size=3))
+    f, g = rng.normal(size=3), rng.normal(size=3)
+    a_W = rd.forward_dynamics(particle, state, force=f, gravity=g)
+    np.testing.assert_allclose(a_W, f / 1.9 + g, atol=1e-14)  # Newton, m a = f + m g
+    np.testing.assert_allclose(rd.inverse_dynamics(particle, state, a_W, gravity=g), f, atol=1e-13)
+
+
+@pytest.mark.parametrize("seed", range(10))
+def test_particle_impulse_changes_momentum_by_the_impulse(seed):
+    rng = np.random.default_rng(300 + seed)
+    particle = rd.Particle(0.7)
+    state = rd.ParticleState(p_W=rng.normal(size=3), v_W=rng.normal(size=3))
+    J, origin = rng.normal(size=3), rng.normal(size=3)
+    after = rd.apply_impulse(particle, state, J)
+    np.testing.assert_allclose(rd.linear_momentum(particle, after) - rd.linear_momentum(particle, state), J, atol=1e-14)
+    dH = rd.angular_momentum(particle, after, point=origin) - rd.angular_momentum(particle, state, point=origin)
+    np.testing.assert_allclose(dH, np.cross(state.p_W - origin, J), atol=1e-13)
+    np.testing.assert_array_equal(after.p_W, state.p_W)
+
+
+def test_particle_momentum_energy_power():
+    particle = rd.Particle(2.0)
+    state = rd.ParticleState(p_W=[1.0, 0, 2.0], v_W=[0, 3.0, 0])
+    np.testing.assert_allclose(rd.linear_momentum(particle, state), [0, 6.0, 0])
+    np.testing.assert_array_equal(rd.angular_momentum(particle, state), [0, 0, 0])
+    np.testing.assert_allclose(rd.angular_momentum(particle, state, point=[0, 0, 0]), [-12.0, 0, 6.0])
+    T = rd.kinetic_energy(particle, state)
+    assert (T.translational, T.rotational, T.total) == (9.0, 0.0, 9.0)
+    assert rd.potential_energy(particle, state) == pytest.approx(2.0 * 9.81 * 2.0)
+    assert rd.power(state, [0, 1.0, 5.0]) == 3.0
+
+
+def test_particle_equals_non_rotating_rigid_body_dynamics():
+    particle, body = rd.Particle(1.5), rd.RigidBody(1.5, np.diag([0.3, 0.4, 0.5]))
+    ps = rd.ParticleState(p_W=[0.3, -1.0, 2.0], v_W=[1.0, 2.0, -0.5])
+    bs = rd.RigidBodyState(p_W=ps.p_W, v_W=ps.v_W)
+    f, origin = np.array([0.2, -0.4, 1.0]), np.array([1.0, 1.0, -1.0])
+    np.testing.assert_allclose(rd.forward_dynamics(particle, ps, force=f, gravity=True),
+                               rd.forward_dynamics(body, bs, force=f, gravity=True)[0], atol=1e-15)
+    np.testing.assert_allclose(rd.angular_momentum(particle, ps, point=origin),
+                               rd.angular_momentum(body, bs, point=origin), atol=1e-15)
+    assert rd.kinetic_energy(particle, ps).total == rd.kinetic_energy(body, bs).total
+    assert rd.potential_energy(particle, ps) == rd.potential_energy(body, bs)
+    assert rd.power(ps, f) == rd.power(bs, f, [0.0, 0.0, 0.0])
+
+
+@pytest.mark.parametrize("seed", range(10))
+def test_planar_inverse_dynamics_undoes_forward(seed):
+    rng = np.random.default_rng(400 + seed)
+    body = rd.PlanarBody(1.7, 0.6)
+    state = random_planar_state(rng)
+    f, n, point, g = rng.normal(size=2), rng.normal(), rng.normal(size=2), rng.normal(size=2)
+    c, s = math.cos(state.theta), math.sin(state.theta)
+    for frame, f_W in (("world", f), ("body", np.array([c * f[0] - s * f[1], s * f[0] + c * f[1]]))):
+        a_W, alpha = rd.forward_dynamics(body, state, force=f, torque=n, point=point, frame=frame, gravity=g)
+        f_back, n_back = rd.inverse_dynamics(body, state, a_W, alpha, gravity=g)
+        np.testing.assert_allclose(f_back, f_W, atol=1e-13)
+        # moment about G of the force at P (2-D cross product, frame independent) plus the couple
+        assert n_back == pytest.approx(n + point[0] * f[1] - point[1] * f[0], abs=1e-13)
+
+
+@pytest.mark.parametrize("seed", range(10))
+def test_planar_impulse_changes_momentum_by_the_impulse(seed):
+    rng = np.random.default_rng(500 + seed)
+    body = rd.PlanarBody(1.3, 0.45)
+    state = random_planar_state(rng)
+    J, point, origin, angular = rng.normal(size=2), rng.normal(size=2), rng.normal(size=2), rng.normal()
+    c, s = math.cos(state.theta), math.sin(state.theta)
+    R = np.array([[c, -s], [s, c]])
+    for frame, J_W, p_GP_W in (("world", J, point), ("body", R @ J, R @ point)):
+        after = rd.apply_impulse(body, state, J, point=point, frame=frame, angular_impulse=angular)
+        np.testing.assert_allclose(rd.linear_momentum(body, after) - rd.linear_momentum(body, state), J_W, atol=1e-13)
+        # about any point O fixed in W: dH_O = (p_P - p_O) x J + angular impulse
+        r = state.p_W + p_GP_W - origin
+        dH = rd.angular_momentum(body, after, point=origin) - rd.angular_momentum(body, state, point=origin)
+        assert dH == pytest.approx(r[0] * J_W[1] - r[1] * J_W[0] + angular, abs=1e-12)
+        np.testing.assert_array_equal(after.p_W, state.p_W)
+        assert after.theta == state.theta
+
+
+@pytest.mark.parametrize("seed", range(10))
+def test_planar_dynamics_equal_spatial_body_kept_in_plane(seed):
+    rng = np.random.default_rng(600 + seed)
+    planar = rd.PlanarBody(2.2, 0.8)
+    spatial = rd.RigidBody(2.2, np.diag([0.5, 0.6, 0.8]))  # I_zz = 0.8 about the plane normal
+    ps = random_planar_state(rng)
+    bs = planar_as_spatial(ps)
+    f, n, point, origin = rng.normal(size=2), rng.normal(), rng.normal(size=2), rng.normal(size=2)
+    g = np.array([0.0, -9.81])
+    for frame in ("world", "body"):
+        a_W, alpha = rd.forward_dynamics(planar, ps, force=f, torque=n, point=point, frame=frame, gravity=g)
+        a3, alpha3 = rd.forward_dynamics(spatial, bs, force=[*f, 0], torque=[0, 0, n], point=[*point, 0],
+                                         frame=frame, gravity=[*g, 0])
+        np.testing.assert_allclose([*a_W, 0.0], a3, atol=1e-13)
+        np.testing.assert_allclose([0.0, 0.0, alpha], alpha3, atol=1e-13)
+        after, after3 = (rd.apply_impulse(planar, ps, f, point=point, frame=frame, angular_impulse=n),
+                         rd.apply_impulse(spatial, bs, [*f, 0], point=[*point, 0], frame=frame,
+                                          angular_impulse=[0, 0, n]))
+        np.testing.assert_allclose([*after.v_W, 0.0, 0.0, 0.0, after.omega], [*after3.v_W, *after3.w_B], atol=1e-13)
+    f_W, n_G = rd.inverse_dynamics(planar, ps, f, n, gravity=g)
+    f3, n3 = rd.inverse_dynamics(spatial, bs, [*f, 0], [0, 0, n], gravity=[*g, 0])
+    np.testing.assert_allclose([*f_W, 0.0, 0.0, 0.0, n_G], [*f3, *n3], atol=1e-13)
+    np.testing.assert_allclose([*rd.linear_momentum(planar, ps), 0.0], rd.linear_momentum(spatial, bs), atol=1e-15)
+    np.testing.assert_allclose([0.0, 0.0, rd.angular_momentum(planar, ps, point=origin)],
+                               rd.angular_momentum(spatial, bs, point=[*origin, 0.0]), atol=1e-13)
+    T, T3 = rd.kinetic_energy(planar, ps), rd.kinetic_energy(spatial, bs)
+    assert (T.translational, T.rotational) == pytest.approx((T3.translational, T3.rotational), abs=1e-14)
+    assert rd.potential_energy(planar, ps, g) == pytest.approx(rd.potential_energy(spatial, bs, [*g, 0]), abs=1e-13)
+    assert rd.power(ps, f, n) == pytest.approx(rd.power(bs, [*f, 0], [0, 0, n]), abs=1e-14)
+
+
+def test_planar_momentum_energy_closed_form():
+    body = rd.PlanarBody(2.0, 0.5)
+    state = rd.PlanarBodyState(p_W=[1.0, 2.0], theta=0.3, v_W=[3.0, 0.0], omega=4.0)
+    np.testing.assert_allclose(rd.linear_momentum(body, state), [6.0, 0.0])
+    assert rd.angular_momentum(body, state) == 2.0  # I_zz omega
+    # about the origin: I_zz omega + p x m v = 2 + (1 * 0 - 2 * 6)
+    assert rd.angular_momentum(body, state, point=[0.0, 0.0]) == pytest.approx(2.0 - 12.0)
+    T = rd.kinetic_energy(body, state)
+    assert (T.translational, T.rotational) == (9.0, 4.0)
+    assert rd.power(state, [1.0, 0.0], 0.5) == 3.0 + 2.0
+
+
+def test_particle_planar_dynamics_bad_arguments():
+    with pytest.raises(ValueError, match="^force"):
+        rd.forward_dynamics(rd.Particle(1.0), rd.ParticleState(), force=[1.0, math.nan, 0])
+    with pytest.raises(ValueError, match="^force"):
+        rd.forward_dynamics(rd.PlanarBody(1.0, 1.0), rd.PlanarBodyState(), force=[1.0, 0.0, 0.0])
+    with pytest.raises(ValueError, match="^frame"):
+        rd.apply_impulse(rd.PlanarBody(1.0, 1.0), rd.PlanarBodyState(), [1.0, 0.0], frame="inertial")
+    with pytest.raises(ValueError, match="^gravity"):
+        rd.potential_energy(rd.PlanarBody(1.0, 1.0), rd.PlanarBodyState(), [0.0, 0.0, -9.81])
+
+
+def test_rigid_body_inertia_check_is_the_inertia_layers():
+    hlw = np.diag([2.0, 1.0, 2.0 / 3.0])  # Hairer-Lubich-Wanner's test body: 1 + 2/3 < 2, no real body
+    with pytest.raises(ValueError, match="^inertia_com.*triangle") as body_error:
+        rd.RigidBody(1.0, hlw)
+    with pytest.raises(ValueError) as inertia_error:
+        rd.SpatialInertia(1.0, [0, 0, 0], hlw)
+    assert str(body_error.value) == str(inertia_error.value)  # one check, one message
+    assert rd.RigidBody(1.0, hlw, check=rd.InertiaCheck.allow_unrealizable).euler_form == "principal"
+    # the older spellings still work
+    assert rd.RigidBody(1.0, hlw, require_triangle_inequality=False).euler_form == "principal"
+    assert rd.RigidBody(1.0, hlw, False).euler_form == "principal"
+    with pytest.raises(ValueError, match="^require_triangle_inequality"):
+        rd.RigidBody(1.0, hlw, check=rd.InertiaCheck.physical, require_triangle_inequality=False)
+    with pytest.raises(TypeError, match="^check"):
+        rd.RigidBody(1.0, hlw, check="allow_unrealizable")
+    # PSD but singular (a thin rod) passes the inertia layer, not Euler's equations
+    with pytest.raises(ValueError, match="^inertia_com.*positive definite"):
+        rd.RigidBody(1.0, np.diag([0.0, 1.0, 1.0]))
+
+
 # --- metadata and bad inputs ------------------------------------------------------------------
 
 def test_methods_metadata():

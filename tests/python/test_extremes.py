@@ -7,7 +7,9 @@ Documented behaviour asserted for every method of methods() on every case:
 2. a run that rigiddyn.stability does not warn about does not diverge (a method absent from its
    table claims to be stable at any step);
 3. methods that keep unit |q| (conserves: "unit |q|" or "SO(3)") keep ||q| - 1| at round-off;
-4. methods that conserve energy or |L| keep them bounded with no secular drift;
+4. methods that conserve energy or |L| keep them bounded with no secular drift within their documented
+   stability limit (methods()['stability_limit'], no StabilityWarning); beyond it the splitting methods
+   still keep |L| to round-off (exact sub-rotations) while their energy error is O(1);
 5. a body rigiddyn cannot integrate (a thin rod, one moment exactly 0) is refused with a ValueError
    naming the inertia.
 """
@@ -20,7 +22,7 @@ import numpy as np
 import pytest
 import rigiddyn
 from rigiddyn.problem import Problem, parse_problem
-from rigiddyn.stability import stability_message
+from rigiddyn.stability import STABILITY_POLYNOMIALS, orbit, stability_message
 from rigiddyn.tradeoff import reference_states
 
 try:
@@ -92,29 +94,55 @@ def test_documented_behaviour(case, problem, dt, steps, method):
     # 3. unit quaternion at round-off
     if "unit |q|" in conserves or "SO(3)" in conserves:
         assert np.max(np.abs(result.quaternion_norm_error)) < 1e-13
-    # 4. structure-preserving methods: energy and |L| bounded without secular drift
+    # 4. structure-preserving methods within their stability limit: energy and |L| bounded without
+    # secular drift; beyond it (warned) only what is kept to round-off at any step
+    warned = rigiddyn.StabilityWarning in kinds
     for key, name in (("kinetic_energy", "energy"), ("angular_momentum_norm", "|L|")):
         if name in conserves and not np.any(problem.gravity):
             values = np.asarray(getattr(result, key))
             drift = np.abs(values - values[0]) / values[0]
             half = drift.size // 2
-            assert np.max(drift) < 1e-2 and np.max(drift[half:]) <= 2 * np.max(drift[:half]) + 1e-13
+            if not warned:
+                assert np.max(drift) < 1e-2 and np.max(drift[half:]) <= 2 * np.max(drift[:half]) + 1e-13
+            elif name == "|L|" and "round-off" in conserves:
+                assert np.max(drift) < 1e-12
 
 
-@pytest.mark.parametrize("method", [m for m in sorted(METHODS) if METHODS[m]["order"] >= 2])
-@pytest.mark.parametrize("case", ["near_spherical_1e-12", "flat_plate_I3_eq_I1_plus_I2", "near_separatrix",
-                                  "ratio_1e6", "mass_1e-9", "mass_1e9"])
-def test_accurate_at_the_extremes(case, method):
-    """Methods of order >= 2 at dt |w| <= 1e-2 follow the exact solution closely, even where the
-    exact solution is delicate (near sphere, on the separatrix, extreme masses)."""
-    _, problem, dt, steps = next(c for c in CASES if c[0] == case)
+def _momentum_error(problem, method, dt, steps):
     result, _ = run_case(problem, method, dt, steps)
     ref = reference_states(replace(problem, horizon=dt * steps), np.asarray(result.t))
     g = np.linalg.norm(problem.inertia_com @ problem.w_B)
     momentum_error = np.max(np.linalg.norm((np.asarray(result.w_B) - ref.w_B) @ problem.inertia_com.T, axis=1)) / g
-    assert momentum_error < 1e-6
     scale = np.max(np.linalg.norm(ref.p_W, axis=1)) + 1.0
-    assert np.max(np.linalg.norm(np.asarray(result.p_W) - ref.p_W, axis=1)) < 1e-9 * scale
+    return momentum_error, np.max(np.linalg.norm(np.asarray(result.p_W) - ref.p_W, axis=1)) / scale
+
+
+@pytest.mark.parametrize("method", [m for m in sorted(METHODS) if METHODS[m]["order"] >= 2 or METHODS[m]["order"] == 0])
+@pytest.mark.parametrize("case", ["near_spherical_1e-12", "flat_plate_I3_eq_I1_plus_I2", "near_separatrix",
+                                  "ratio_1e6", "mass_1e-9", "mass_1e9"])
+def test_accurate_at_the_extremes(case, method):
+    """Where the exact solution is delicate (near sphere, flat plate, moment ratio 1e6, on the
+    separatrix, extreme masses), every method of order p >= 2 keeps its documented truncation error:
+    at dt |w| <= 0.04 over N steps the body-momentum error is within N (dt |w|)^(p+1) (the local error
+    of an order-p method with unit error constant; measured constants are 0.01-0.1), and where it is
+    above round-off, halving dt divides it by 2^p (observed order within 0.3 of the documented one): no
+    loss of accuracy, no unconverged solver, no badly chosen axes. The exact method (order 0) and the
+    methods exact on torque-free bodies stay at round-off. The centre of mass follows the exact
+    ballistic motion to 1e-9 of its scale."""
+    _, problem, dt, steps = next(c for c in CASES if c[0] == case)
+    info = METHODS[method]
+    momentum_error, position_error = _momentum_error(problem, method, dt, steps)
+    assert position_error < 1e-9
+    if info["order"] == 0 or info["exact_torque_free"]:
+        assert momentum_error < 1e-12
+        return
+    rate = np.max(np.linalg.norm(orbit(problem.inertia_com, problem.w_B, dt * steps), axis=1))
+    assert dt * rate <= 0.04
+    p = info["order"]
+    assert momentum_error < steps * (dt * rate) ** (p + 1)
+    if momentum_error > 1e-10:
+        halved, _ = _momentum_error(problem, method, dt / 2, 2 * steps)
+        assert math.log2(momentum_error / halved) == pytest.approx(p, abs=0.3)
 
 
 def test_near_separatrix_reference_is_the_closed_form():
@@ -130,3 +158,22 @@ def test_near_separatrix_reference_is_the_closed_form():
 def test_a_zero_moment_is_refused(shape):
     with pytest.raises(ValueError, match=r"^body.inertia: "):
         parse_problem(tomllib.loads("horizon = 1.0\n" + shape))
+
+
+@pytest.mark.parametrize("method", [m for m in sorted(METHODS) if m not in STABILITY_POLYNOMIALS])
+def test_stability_limit_is_the_documented_one_from_the_method_table(method):
+    """Methods without a stability polynomial are checked against methods()['stability_limit'] (the
+    C++ MethodInfo): no warning at dt |w|max = 0.9 x the limit, a StabilityWarning naming the limit at
+    1.1 x (|w|max the largest body rate on the orbit); none ever for an unconditionally stable method."""
+    limit = METHODS[method]["stability_limit"]
+    problem = body_problem([1.0, 2.0, 3.0], [0.3, 0.2, 1.0])
+    rate = np.max(np.linalg.norm(orbit(problem.inertia_com, problem.w_B, 100.0), axis=1))
+    for factor in (0.9, 1.1):
+        dt = factor * (limit if math.isfinite(limit) else 10.0) / rate
+        message = stability_message(method, dt, 100, problem.inertia_com, problem.w_B, problem.torque_free)
+        if factor < 1 or not math.isfinite(limit):
+            assert message is None
+        else:
+            assert f"> {limit:.3g}, the documented limit" in message
+            with pytest.warns(rigiddyn.StabilityWarning, match=method):
+                problem.simulate(method, dt, steps=100)

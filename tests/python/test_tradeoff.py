@@ -81,7 +81,7 @@ def test_richardson_reference_agrees_with_the_exact_solution():
     assert true_error < 3 * estimate["max_state_error"] + 1e-14
 
 
-@pytest.mark.parametrize("method", sorted(METHODS))
+@pytest.mark.parametrize("method", sorted(m for m in METHODS if not METHODS[m]["exact_torque_free"]))
 def test_observed_order_matches_the_documented_order_on_the_t_handle(method):
     order = METHODS[method]["order"]
     # first-order methods need small steps to reach their asymptotic regime here
@@ -91,6 +91,29 @@ def test_observed_order_matches_the_documented_order_on_the_t_handle(method):
         r = tradeoff(short_t_handle(1.0), methods=[method], dts=dts, measure="max_state_error", progress=False)
     observed = [row["observed_order"] for row in r.rows][1:]
     assert observed[-1] == pytest.approx(order, abs=0.25), observed
+
+
+@pytest.mark.parametrize("method", sorted(m for m in METHODS if METHODS[m]["exact_torque_free"]))
+def test_methods_exact_on_torque_free_bodies_have_round_off_error_and_no_observed_order(method):
+    """Documented (methods()['exact_torque_free']): `exact` (order 0) and exact_flow_kick (exact without
+    couples) reproduce the torque-free T-handle to round-off at every dt, so their error does not fall
+    with dt (it grows slowly with the number of steps) and the observed order is not applicable (nan)."""
+    r = tradeoff(short_t_handle(1.0), methods=[method], dts=[4e-3, 2e-3, 1e-3], measure="max_state_error",
+                 progress=False)
+    for row in r.rows:
+        assert row["max_state_error"] < 100 * np.finfo(float).eps * row["steps"], row
+        assert math.isnan(row["observed_order"])
+
+
+@pytest.mark.parametrize("method", sorted(m for m in METHODS if METHODS[m]["exact_torque_free"] and
+                                          METHODS[m]["order"] > 0))
+def test_observed_order_under_a_body_couple(method):
+    """Under a couple a flow-kick splitting is no longer exact: its documented order shows (satellite
+    with a constant body torque, against the Richardson-refined reference)."""
+    satellite = load_problem("satellite_torque").with_horizon(300.0)
+    r = tradeoff(satellite, methods=[method], dts=[20.0, 10.0, 5.0], measure="max_state_error", progress=False)
+    observed = [row["observed_order"] for row in r.rows][1:]
+    assert observed[-1] == pytest.approx(METHODS[method]["order"], abs=0.25), observed
 
 
 def test_recommendation_picks_the_cheapest_run_meeting_the_tolerance():
@@ -203,3 +226,17 @@ def test_cli_prints_the_table_and_writes_the_files(tmp_path, capsys):
     assert {p.name for p in tmp_path.iterdir()} == {"tradeoff.csv", "tradeoff.json", "tradeoff.png", "tradeoff.svg"}
     assert main(["tradeoff", "t_handle", "--measure", "speed", "--no-progress"]) == 2
     assert "measure: expected one of" in capsys.readouterr().err
+
+
+def test_default_methods_are_those_that_can_run_the_problem():
+    """`exact` (order 0) is the closed-form torque-free flow: by default it is swept on torque-free
+    problems only; under a couple every other method runs (exact_flow_kick included); asked for
+    explicitly, it is refused with the reason."""
+    satellite = load_problem("satellite_torque").with_horizon(40.0)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", rigiddyn.StabilityWarning)
+        r = tradeoff(satellite, dts=[10.0], progress=False)
+    assert set(r.methods()) == set(METHODS) - {"exact"}
+    assert "exact" in tradeoff(short_t_handle(0.1), dts=[0.01], progress=False).methods()
+    with pytest.raises(ValueError, match="torque-free"):
+        tradeoff(satellite, methods=["exact"], dts=[10.0], progress=False)

@@ -25,26 +25,22 @@ EulerForm classify(const Eigen::Matrix3d& I) {
 
 }  // namespace
 
-RigidBody::RigidBody(double mass, const Eigen::Matrix3d& inertia_com, bool require_triangle_inequality)
-    : mass_(mass), inertia_com_(inertia_com) {
-  require_positive(mass, "mass");
-  require_finite(inertia_com, "inertia_com");
-  const double scale = inertia_com.cwiseAbs().maxCoeff();
-  if ((inertia_com - inertia_com.transpose()).cwiseAbs().maxCoeff() > 1e-12 * scale) {
-    throw_invalid("inertia_com", "a symmetric matrix", inertia_com);
-  }
-  inertia_com_ = 0.5 * (inertia_com + inertia_com.transpose());
-  const Eigen::Vector3d moments = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(inertia_com_).eigenvalues();
-  if (!(moments(0) > 0.0)) throw_invalid("inertia_com", "a positive definite matrix", inertia_com);
-  // principal moments sorted ascending: the triangle inequality fails first as I1 + I2 < I3
-  if (require_triangle_inequality && moments(0) + moments(1) < moments(2) * (1.0 - 1e-12)) {
-    throw_invalid("inertia_com", "principal moments with I1 + I2 >= I3 (triangle inequality)", inertia_com);
+RigidBody::RigidBody(double mass, const Eigen::Matrix3d& inertia_com, InertiaCheck check)
+    : mass_(mass), inertia_com_(0.5 * (inertia_com + inertia_com.transpose())) {
+  // Validated by the inertia layer (same errors everywhere), but stored as given (its symmetric part),
+  // not projected onto the valid set: a round-off violation (e.g. a turned flat plate) changes nothing
+  // in the dynamics, and the body then integrates exactly the inertia the caller wrote.
+  checked_inertia(mass, inertia_com, check);
+  // Euler's equations need I⁻¹: a semi-definite inertia (a point mass, a thin rod) has none.
+  const double smallest = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(inertia_com_).eigenvalues()(0);
+  if (!(smallest > inertia_relative_tolerance * inertia_com_.trace())) {
+    throw_invalid("inertia_com", "a positive definite inertia (Euler's equations need its inverse)", inertia_com);
   }
   form_ = classify(inertia_com_);
 }
 
-RigidBody::RigidBody(const SpatialInertia& inertia, bool require_triangle_inequality)
-    : RigidBody(inertia.mass(), inertia.inertia_com(), require_triangle_inequality) {}
+RigidBody::RigidBody(const SpatialInertia& inertia, InertiaCheck check)
+    : RigidBody(inertia.mass(), inertia.inertia_com(), check) {}
 
 RigidBodyState checked_state(const RigidBodyState& state, const std::string& name) {
   require_finite(state.p_W, name + ".p_W");

@@ -42,6 +42,13 @@ struct MethodInfo {
   int evaluations;        // derivative evaluations per step
   std::string conserves;  // what the method keeps exactly on a free rigid body
   std::string notes;      // known behaviour
+  // Largest dt·|ω| [rad] (|ω| the largest body rate along the torque-free orbit) for which the method
+  // is documented stable on a free spin: +inf if unconditionally stable, 0 if no step is (explicit
+  // gyroscopic terms gain energy at every step). Beyond it the documented conservation is lost.
+  double stability_limit;
+  // True if the method reproduces torque-free motion exactly (to round-off) at any dt, so that on a
+  // torque-free body its error does not shrink with dt and no observed order applies.
+  bool exact_torque_free;
 };
 
 // Every method, in Method's order.

@@ -31,6 +31,14 @@ Vector axpy(const Vector& y, double a, const Vector& k) {
   return out;
 }
 
+// a k, element by element (see axpy).
+template <class Vector>
+Vector scaled(double a, const Vector& k) {
+  Vector out;
+  for (Eigen::Index i = 0; i < k.size(); ++i) out[i] = a * k[i];
+  return out;
+}
+
 struct Rk4 {
   template <class Model>
   RIGIDDYN_ALWAYS_INLINE static void step(const Model& model, typename Model::Coordinates& y, double h) {

@@ -13,6 +13,8 @@
 //   implicit_gyroscopic_kick(w, n, h) ω' from one Newton step on
 //                                     I (ω' − ω) + h ω' × I ω' = h n, started at ω' = ω
 #pragma once
+#include "rigiddyn/models/model_interface.hpp"  // RIGIDDYN_ALWAYS_INLINE
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
@@ -24,29 +26,44 @@ struct SphericalEuler {
   double inverse_inertia;
 
   explicit SphericalEuler(double s) : inertia(s), inverse_inertia(1.0 / s) {}
-  Eigen::Vector3d momentum(const Eigen::Vector3d& w) const { return inertia * w; }
-  Eigen::Vector3d angular_acceleration(const Eigen::Vector3d& /*w*/, const Eigen::Vector3d& n) const {
+  RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d momentum(const Eigen::Vector3d& w) const { return inertia * w; }
+  RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d angular_acceleration(const Eigen::Vector3d& /*w*/, const Eigen::Vector3d& n) const {
     return inverse_inertia * n;
   }
-  Eigen::Vector3d explicit_gyroscopic_kick(const Eigen::Vector3d& w, const Eigen::Vector3d& n, double h) const {
+  RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d explicit_gyroscopic_kick(const Eigen::Vector3d& w, const Eigen::Vector3d& n, double h) const {
     return w + (h * inverse_inertia) * n;
   }
   // no gyroscopic term: the implicit update is the explicit one, exactly
-  Eigen::Vector3d implicit_gyroscopic_kick(const Eigen::Vector3d& w, const Eigen::Vector3d& n, double h) const {
+  RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d implicit_gyroscopic_kick(const Eigen::Vector3d& w, const Eigen::Vector3d& n, double h) const {
     return explicit_gyroscopic_kick(w, n, h);
   }
 };
 
+// A x for a 3×3 A, written out: Eigen's fixed-size product is not always inlined into the
+// integrators' loops, and the call costs more than the product.
+RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d times_3x3(const Eigen::Matrix3d& A, const Eigen::Vector3d& x) {
+  return Eigen::Vector3d(A(0, 0) * x(0) + A(0, 1) * x(1) + A(0, 2) * x(2), A(1, 0) * x(0) + A(1, 1) * x(1) + A(1, 2) * x(2),
+                         A(2, 0) * x(0) + A(2, 1) * x(1) + A(2, 2) * x(2));
+}
+
+// x = J⁻¹ b for an invertible 3×3 J given by its rows r0, r1, r2, in closed form (adjugate,
+// Cramer's rule): J⁻¹ = [r1 × r2, r2 × r0, r0 × r1] / (r0 · (r1 × r2)).
+RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d solve_3x3(const Eigen::Vector3d& r0, const Eigen::Vector3d& r1,
+                                                 const Eigen::Vector3d& r2, const Eigen::Vector3d& b) {
+  const Eigen::Vector3d c0 = r1.cross(r2);
+  return (1.0 / r0.dot(c0)) * (b(0) * c0 + b(1) * r2.cross(r0) + b(2) * r0.cross(r1));
+}
+
 // One Newton step on F(ω') = I (ω' − ω) + h ω' × I ω' − h n = 0 from ω' = ω (the implicit
 // gyroscopic term; I and n in B, h [s]):
 //   F(ω) = h (ω × I ω − n),  J = ∂F/∂ω' = I + h (ω̂ I − (I ω)^),  ω' = ω − J⁻¹ F(ω).
-inline Eigen::Vector3d gyroscopic_newton_kick(const Eigen::Matrix3d& I, const Eigen::Vector3d& w,
-                                              const Eigen::Vector3d& n, double h) {
-  const Eigen::Vector3d Iw = I * w;
+RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d gyroscopic_newton_kick(const Eigen::Matrix3d& I, const Eigen::Vector3d& w,
+                                                              const Eigen::Vector3d& n, double h) {
+  const Eigen::Vector3d Iw = times_3x3(I, w);
   const Eigen::Vector3d F = h * (w.cross(Iw) - n);
   Eigen::Matrix3d J = I;
   for (int j = 0; j < 3; ++j) J.col(j) += h * (w.cross(I.col(j)) - Iw.cross(Eigen::Vector3d::Unit(j)));
-  return w - J.inverse() * F;
+  return w - solve_3x3(J.row(0), J.row(1), J.row(2), F);
 }
 
 // I = diag(I1, I2, I3) [kg m²] in B (principal axes).
@@ -55,17 +72,24 @@ struct PrincipalEuler {
   Eigen::Vector3d inverse_inertia;
 
   explicit PrincipalEuler(const Eigen::Vector3d& diagonal) : inertia(diagonal), inverse_inertia(diagonal.cwiseInverse()) {}
-  Eigen::Vector3d momentum(const Eigen::Vector3d& w) const { return inertia.cwiseProduct(w); }
-  Eigen::Vector3d angular_acceleration(const Eigen::Vector3d& w, const Eigen::Vector3d& n) const {
+  RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d momentum(const Eigen::Vector3d& w) const { return inertia.cwiseProduct(w); }
+  RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d angular_acceleration(const Eigen::Vector3d& w, const Eigen::Vector3d& n) const {
     return inverse_inertia.cwiseProduct(n - w.cross(momentum(w)));
   }
-  Eigen::Vector3d explicit_gyroscopic_kick(const Eigen::Vector3d& w, const Eigen::Vector3d& n, double h) const {
+  RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d explicit_gyroscopic_kick(const Eigen::Vector3d& w, const Eigen::Vector3d& n, double h) const {
     return w + h * angular_acceleration(w, n);
   }
-  Eigen::Vector3d implicit_gyroscopic_kick(const Eigen::Vector3d& w, const Eigen::Vector3d& n, double h) const {
-    return gyroscopic_newton_kick(inertia.asDiagonal().toDenseMatrix(), w, n, h);
+  // gyroscopic_newton_kick for diagonal I: with d = (I3 − I2, I1 − I3, I2 − I1),
+  //   F_i = h (d_i ω_j ω_k − n_i),  J = diag(I) + h [[0, d1 ω3, d1 ω2], [d2 ω3, 0, d2 ω1], [d3 ω2, d3 ω1, 0]]
+  // ((i, j, k) cyclic), solved in closed form.
+  RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d implicit_gyroscopic_kick(const Eigen::Vector3d& w, const Eigen::Vector3d& n,
+                                                                  double h) const {
+    const double d0 = inertia(2) - inertia(1), d1 = inertia(0) - inertia(2), d2 = inertia(1) - inertia(0);
+    const Eigen::Vector3d F(h * (d0 * w(1) * w(2) - n(0)), h * (d1 * w(2) * w(0) - n(1)), h * (d2 * w(0) * w(1) - n(2)));
+    const Eigen::Vector3d J0(inertia(0), h * d0 * w(2), h * d0 * w(1)), J1(h * d1 * w(2), inertia(1), h * d1 * w(0)),
+        J2(h * d2 * w(1), h * d2 * w(0), inertia(2));
+    return w - solve_3x3(J0, J1, J2, F);
   }
-
 };
 
 // Any symmetric positive definite I [kg m²] in B, products of inertia included.
@@ -74,14 +98,14 @@ struct FullEuler {
   Eigen::Matrix3d inverse_inertia;
 
   explicit FullEuler(const Eigen::Matrix3d& I) : inertia(I), inverse_inertia(I.inverse()) {}
-  Eigen::Vector3d momentum(const Eigen::Vector3d& w) const { return inertia * w; }
-  Eigen::Vector3d angular_acceleration(const Eigen::Vector3d& w, const Eigen::Vector3d& n) const {
-    return inverse_inertia * (n - w.cross(momentum(w)));
+  RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d momentum(const Eigen::Vector3d& w) const { return times_3x3(inertia, w); }
+  RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d angular_acceleration(const Eigen::Vector3d& w, const Eigen::Vector3d& n) const {
+    return times_3x3(inverse_inertia, n - w.cross(momentum(w)));
   }
-  Eigen::Vector3d explicit_gyroscopic_kick(const Eigen::Vector3d& w, const Eigen::Vector3d& n, double h) const {
+  RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d explicit_gyroscopic_kick(const Eigen::Vector3d& w, const Eigen::Vector3d& n, double h) const {
     return w + h * angular_acceleration(w, n);
   }
-  Eigen::Vector3d implicit_gyroscopic_kick(const Eigen::Vector3d& w, const Eigen::Vector3d& n, double h) const {
+  RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d implicit_gyroscopic_kick(const Eigen::Vector3d& w, const Eigen::Vector3d& n, double h) const {
     return gyroscopic_newton_kick(inertia, w, n, h);
   }
 };

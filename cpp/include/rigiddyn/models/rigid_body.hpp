@@ -6,6 +6,7 @@
 //   ṗ_W = v_W,  q̇_WB = ½ q_WB ⊗ (ω_B, 0),  m v̇_W = f_W + m g_W,  I ω̇_B + ω_B × I ω_B = n_B.
 #pragma once
 #include "rigiddyn/inertia/spatial_inertia.hpp"
+#include "rigiddyn/inertia/validity.hpp"
 #include "rigiddyn/models/euler_equations.hpp"
 #include "rigiddyn/models/loads.hpp"
 #include "rigiddyn/models/model_interface.hpp"
@@ -14,6 +15,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <cmath>
 #include <stdexcept>
 
 namespace rigiddyn {
@@ -25,13 +27,15 @@ enum class EulerForm { spherical, principal, full };
 // (origin at the centre of mass).
 class RigidBody {
  public:
-  // Throws std::invalid_argument for mass <= 0 or non-finite, and for an inertia_com that is not
-  // symmetric positive definite, or (when require_triangle_inequality) whose principal moments
-  // violate I_a + I_b >= I_c (no real body has them; pass false to accept e.g. the
-  // Hairer–Lubich–Wanner test body I = (2, 1, 2/3) on purpose).
-  RigidBody(double mass, const Eigen::Matrix3d& inertia_com, bool require_triangle_inequality = true);
+  // Throws std::invalid_argument (the inertia layer's checked_inertia, so the messages are those of
+  // every other constructor of mass properties) for mass <= 0 or non-finite, for an inertia_com that is
+  // not symmetric positive semi-definite or, under InertiaCheck::physical (the default), whose
+  // principal moments violate I_a + I_b >= I_c (no real body has them; pass
+  // InertiaCheck::allow_unrealizable to accept e.g. the Hairer–Lubich–Wanner test body
+  // I = (2, 1, 2/3) on purpose); and for a singular inertia (Euler's equations need I⁻¹).
+  RigidBody(double mass, const Eigen::Matrix3d& inertia_com, InertiaCheck check = InertiaCheck::physical);
   // From mass properties: uses mass() and inertia_com() (B's axes, origin moved to the centre of mass).
-  explicit RigidBody(const SpatialInertia& inertia, bool require_triangle_inequality = true);
+  explicit RigidBody(const SpatialInertia& inertia, InertiaCheck check = InertiaCheck::physical);
 
   double mass() const { return mass_; }
   const Eigen::Matrix3d& inertia_com() const { return inertia_com_; }
@@ -95,6 +99,7 @@ class RigidBodyModel {
     loads_ = loads;
     f_fixed_W_ = loads.f_W + mass_ * g_W_;
     turning_loads_ = !(loads.f_B.isZero(0.0) && loads.n_W.isZero(0.0));
+    loaded_ = turning_loads_ || !(f_fixed_W_.isZero(0.0) && loads.n_B.isZero(0.0));
   }
   const Euler& euler() const { return euler_; }
   double mass() const { return mass_; }
@@ -104,38 +109,50 @@ class RigidBodyModel {
     const Eigen::Vector3d v = y.segment<3>(7), w = y.segment<3>(10);
     Eigen::Vector3d f_W, n_B;
     wrench(q, f_W, n_B);
+    const Eigen::Vector3d alpha_B = euler_.angular_acceleration(w, n_B);
+    // element by element (scalar stores: see rk4.hpp's axpy on store forwarding)
     Coordinates dy;
-    dy.segment<3>(0) = v;
+    for (int i = 0; i < 3; ++i) dy[i] = v[i], dy[7 + i] = inverse_mass_ * f_W[i], dy[10 + i] = alpha_B[i];
     // quaternion kinematics q̇ = ½ q ⊗ (ω_B, 0) (seed 000, body-frame angular velocity), the Hamilton
-    // product written out (scalar stores: see rk4.hpp's axpy on store forwarding)
+    // product written out
     dy(3) = 0.5 * (q.w() * w.x() + q.y() * w.z() - q.z() * w.y());
     dy(4) = 0.5 * (q.w() * w.y() + q.z() * w.x() - q.x() * w.z());
     dy(5) = 0.5 * (q.w() * w.z() + q.x() * w.y() - q.y() * w.x());
     dy(6) = -0.5 * (q.x() * w.x() + q.y() * w.y() + q.z() * w.z());
-    dy.segment<3>(7) = inverse_mass_ * f_W;
-    dy.segment<3>(10) = euler_.angular_acceleration(w, n_B);
-    dy(13) = f_W.dot(v) + n_B.dot(w);
+    dy(13) = power(f_W, n_B, v, w);
     return dy;
   }
 
-  RIGIDDYN_ALWAYS_INLINE static void project(Coordinates& y) { y.segment<4>(3).normalize(); }
+  // q ← q / |q| (written out: Eigen's normalize() is not always inlined)
+  RIGIDDYN_ALWAYS_INLINE static void project(Coordinates& y) {
+    const double inverse_norm = 1.0 / std::sqrt(y[3] * y[3] + y[4] * y[4] + y[5] * y[5] + y[6] * y[6]);
+    for (int i = 3; i < 7; ++i) y[i] *= inverse_norm;
+  }
 
   RIGIDDYN_ALWAYS_INLINE Tangent velocity(const Coordinates& y) const {
     const Eigen::Map<const Eigen::Quaterniond> q(y.data() + 3);
     const Eigen::Vector3d v = y.segment<3>(7), w = y.segment<3>(10);
     Eigen::Vector3d f_W, n_B;
     wrench(q, f_W, n_B);
+    const Eigen::Vector3d alpha_B = euler_.angular_acceleration(w, n_B);
+    // element by element (scalar stores; see rk4.hpp's axpy on store forwarding)
     Tangent xi;
-    xi << v, w, inverse_mass_ * f_W, euler_.angular_acceleration(w, n_B), f_W.dot(v) + n_B.dot(w);
+    for (int i = 0; i < 3; ++i) xi[i] = v[i], xi[3 + i] = w[i], xi[6 + i] = inverse_mass_ * f_W[i], xi[9 + i] = alpha_B[i];
+    xi[12] = power(f_W, n_B, v, w);
     return xi;
   }
 
+  // y ⊕ Θ: vector parts added, q ← q ⊗ exp(Θ_rot) (Hamilton product written out, scalar stores)
   RIGIDDYN_ALWAYS_INLINE static Coordinates retract(const Coordinates& y, const Tangent& theta) {
     Coordinates out;
-    out.segment<3>(0) = y.segment<3>(0) + theta.segment<3>(0);
-    const Eigen::Map<const Eigen::Quaterniond> q(y.data() + 3);
-    out.segment<4>(3) = (q * rotvec_to_quat(theta.segment<3>(3))).coeffs();
-    out.segment<7>(7) = y.segment<7>(7) + theta.segment<7>(6);
+    for (int i = 0; i < 3; ++i) out[i] = y[i] + theta[i];
+    const double x = y[3], yy = y[4], z = y[5], s = y[6];
+    const Eigen::Quaterniond e = rotvec_to_quat(theta.segment<3>(3));
+    out[3] = s * e.x() + x * e.w() + yy * e.z() - z * e.y();
+    out[4] = s * e.y() - x * e.z() + yy * e.w() + z * e.x();
+    out[5] = s * e.z() + x * e.y() - yy * e.x() + z * e.w();
+    out[6] = s * e.w() - x * e.x() - yy * e.y() - z * e.z();
+    for (int i = 7; i < 14; ++i) out[i] = y[i] + theta[i - 1];
     return out;
   }
 
@@ -145,7 +162,8 @@ class RigidBodyModel {
     Tangent out = xi;
     const Eigen::Vector3d th = theta.segment<3>(3), w = xi.segment<3>(3);
     const Eigen::Vector3d th_x_w = th.cross(w);
-    out.segment<3>(3) += 0.5 * th_x_w + (1.0 / 12.0) * th.cross(th_x_w);
+    const Eigen::Vector3d correction = 0.5 * th_x_w + (1.0 / 12.0) * th.cross(th_x_w);
+    for (int i = 0; i < 3; ++i) out[3 + i] += correction[i];
     return out;
   }
 
@@ -169,7 +187,7 @@ class RigidBodyModel {
     const Eigen::Vector3d v = y.segment<3>(7), w = y.segment<3>(10);
     Eigen::Vector3d f_W, n_B;
     wrench(q, f_W, n_B);
-    y(13) += h * (f_W.dot(v) + n_B.dot(w));
+    y(13) += h * power(f_W, n_B, v, w);
     y.segment<3>(0) += h * v;
     q = (q * rotvec_to_quat(h * w)).normalized();
   }
@@ -200,6 +218,12 @@ class RigidBodyModel {
     }
   }
 
+  // dW/dt = f_W · v_W + n_B · ω_B [W] (seed 001, power of a force at G and a couple)
+  RIGIDDYN_ALWAYS_INLINE double power(const Eigen::Vector3d& f_W, const Eigen::Vector3d& n_B, const Eigen::Vector3d& v,
+                                      const Eigen::Vector3d& w) const {
+    return loaded_ ? f_W.dot(v) + n_B.dot(w) : 0.0;
+  }
+
   double mass_;
   double inverse_mass_;
   Euler euler_;
@@ -207,6 +231,7 @@ class RigidBodyModel {
   ComLoads loads_;
   Eigen::Vector3d f_fixed_W_;  // f_W + m g_W
   bool turning_loads_;         // f_B or n_W non-zero
+  bool loaded_;                // any load or gravity: a free body does no work and pays nothing for it
 };
 
 }  // namespace rigiddyn

@@ -1,0 +1,1534 @@
+"""
+rigiddyn's C++ core (rotations, frames, spatial algebra, inertia, dynamics).
+"""
+from __future__ import annotations
+import collections.abc
+import numpy
+import numpy.typing
+import typing
+__all__: list[str] = ['AppliedLoad', 'DensityIntegral', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'InertiaCheck', 'InertiaReport', 'KineticEnergy', 'Motion', 'Particle', 'ParticleState', 'PlanarBody', 'PlanarBodyState', 'PointAcceleration', 'PointVelocity', 'PrincipalAxes', 'RigidBody', 'RigidBodyState', 'Screw', 'SimulationResult', 'SpatialInertia', 'TorqueFreeSolution', 'Transform', 'angular_momentum', 'apply_impulse', 'axis_angle_to_quat', 'box_shell', 'compose_kinematics', 'composite', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'from_point_masses', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mesh_shell', 'mesh_volume', 'methods', 'motion_cross_matrix', 'nearest_valid_inertia', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_euler', 'quat_to_matrix', 'quat_to_rotvec', 'relative_kinematics', 'require_closed_oriented_mesh', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'simulate', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'step', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'twist_to_screw', 'vee']
+class FrameKinematics:
+    """
+    Frame F relative to frame P at one instant (P = the parent of a FrameMotion, or the
+    `relative_to` frame of a FrameTree query). Every vector is expressed in P; SI units.
+    """
+    def __init__(self, R_PF: typing.Any = None, w_PF_P: typing.Any = None, alpha_PF_P: typing.Any = None, p_PF_P: typing.Any = None, v_PF_P: typing.Any = None, a_PF_P: typing.Any = None) -> None:
+        """
+        Arguments as the attributes (None: identity / zero). ValueError on a non-rotation R_PF or NaN/Inf.
+        """
+    @property
+    def R_PF(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3, 3) orientation of F in P: maps F coordinates to P coordinates.
+        """
+    @property
+    def a_PF_P(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3,) acceleration of F's origin seen from P [m/s^2], expressed in P.
+        """
+    @property
+    def alpha_PF_P(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3,) angular acceleration of F relative to P (d/dt of w_PF) [rad/s^2], expressed in P.
+        """
+    @property
+    def p_PF_P(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3,) position of F's origin relative to P's origin [m], expressed in P.
+        """
+    @property
+    def v_PF_P(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3,) velocity of F's origin seen from P [m/s], expressed in P.
+        """
+    @property
+    def w_PF_P(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3,) angular velocity of F relative to P [rad/s], expressed in P.
+        """
+class PointVelocity:
+    """
+    Velocity of a point Q moving in a frame F, seen from a frame A, term by term
+    (seed 000 (4.38)): total = origin + rotational + relative. Each (3,) [m/s], all
+    expressed in the same frame (the query's `expressed_in`).
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def origin(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        velocity of F's origin seen from A
+        """
+    @property
+    def relative(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        velocity of Q seen from F
+        """
+    @property
+    def rotational(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        w_AF x r, r = position of Q relative to F's origin
+        """
+    @property
+    def total(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        velocity of Q seen from A (sum of the terms)
+        """
+class PointAcceleration:
+    """
+    Acceleration of a point Q moving in a frame F, seen from a frame A, term by term
+    (seed 000 (4.39), seed 001): total = origin + tangential + centripetal + relative +
+    coriolis. Each (3,) [m/s^2], all expressed in the query's `expressed_in` frame.
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def centripetal(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        w_AF x (w_AF x r)
+        """
+    @property
+    def coriolis(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        2 w_AF x v_rel, v_rel = velocity of Q seen from F
+        """
+    @property
+    def origin(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        acceleration of F's origin seen from A
+        """
+    @property
+    def relative(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        acceleration of Q seen from F
+        """
+    @property
+    def tangential(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        alpha_AF x r
+        """
+    @property
+    def total(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        acceleration of Q seen from A (sum of the terms)
+        """
+class FrameMotion:
+    """
+    How a frame F moves relative to its parent P: a function of time t [s] giving its
+    FrameKinematics (all vectors expressed in P).
+    """
+    @staticmethod
+    def constant_rotation(axis_P: typing.Any, rate: typing.SupportsFloat | typing.SupportsIndex, R_PF0: typing.Any = None, p_PF_P: typing.Any = None) -> FrameMotion:
+        """
+        Simple angular velocity (seed 001): F turns at `rate` [rad/s] about axis_P (3,) (expressed in P, any
+        non-zero length) through F's origin, which stays at p_PF_P [m] in P (None: 0).
+        R_PF(t) = exp(hat(rate t axis_P/|axis_P|)) R_PF0 (R_PF0: orientation at t = 0, None: identity).
+        """
+    @staticmethod
+    def fixed(R_PF: typing.Any = None, p_PF_P: typing.Any = None) -> FrameMotion:
+        """
+        F fixed in P: orientation R_PF (3,3) (None: identity), origin at p_PF_P (3,) [m] in P (None: 0).
+        """
+    def __init__(self, kinematics_at: collections.abc.Callable) -> None:
+        """
+        General motion: kinematics_at(t) returns a FrameKinematics or a 6-tuple
+        (R_PF (3,3), w_PF_P, alpha_PF_P, p_PF_P, v_PF_P, a_PF_P) (each (3,), expressed in P). The caller
+        keeps them consistent (w, alpha the derivatives of R; v, a those of p); the tree checks each value
+        (finite, R_PF a rotation) and raises ValueError naming the frame.
+        """
+    def at(self, t: typing.SupportsFloat | typing.SupportsIndex) -> FrameKinematics:
+        """
+        F relative to P at time t [s] (unchecked).
+        """
+class FrameTree:
+    """
+    A tree of reference frames rooted at the inertial frame 'world'. Each frame is placed
+    relative to its parent by a FrameMotion. Queries relate any frame F (`frame`) to any
+    frame A (`relative_to`) at time t [s], with results expressed in `expressed_in` E.
+    Unknown names, duplicates and cycles raise ValueError.
+    """
+    world: typing.ClassVar[str] = 'world'
+    def __init__(self) -> None:
+        """
+        A tree holding only 'world'.
+        """
+    def add_frame(self, name: str, parent: str, motion: FrameMotion) -> None:
+        """
+        Adds frame `name` under `parent` (which must exist), placed by `motion`.
+        """
+    def angular_acceleration(self, frame: str, relative_to: str, expressed_in: str, t: typing.SupportsFloat | typing.SupportsIndex) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        alpha_AF_E (3,) [rad/s^2]: d/dt in A of w_AF, expressed in E (includes the w x w terms; no
+        addition theorem for angular accelerations, seed 001).
+        """
+    def angular_velocity(self, frame: str, relative_to: str, expressed_in: str, t: typing.SupportsFloat | typing.SupportsIndex) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        w_AF_E (3,) [rad/s]: angular velocity of F relative to A (addition theorem), expressed in E.
+        """
+    def frame_names(self) -> list[str]:
+        """
+        All names: 'world' first, then in the order added.
+        """
+    def has_frame(self, name: str) -> bool:
+        ...
+    def kinematics(self, frame: str, relative_to: str, t: typing.SupportsFloat | typing.SupportsIndex) -> FrameKinematics:
+        """
+        FrameKinematics of `frame` F relative to `relative_to` A at t, expressed in A.
+        """
+    def parent(self, name: str) -> str:
+        """
+        The parent's name ('' for 'world').
+        """
+    def point_acceleration(self, frame: str, p_FQ_F: typing.Any, v_FQ_F: typing.Any, a_FQ_F: typing.Any, relative_to: str, expressed_in: str, t: typing.SupportsFloat | typing.SupportsIndex) -> PointAcceleration:
+        """
+        PointAcceleration of Q seen from A (origin, tangential, centripetal, relative, coriolis, total),
+        terms expressed in E [m/s^2]; a_FQ_F (3,): Q's acceleration seen from F, expressed in F.
+        """
+    def point_position(self, frame: str, p_FQ_F: typing.Any, relative_to: str, expressed_in: str, t: typing.SupportsFloat | typing.SupportsIndex) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        p_AQ_E (3,) [m]: position of Q relative to A's origin, expressed in E; p_FQ_F (3,): Q relative
+        to F's origin, expressed in F.
+        """
+    def point_velocity(self, frame: str, p_FQ_F: typing.Any, v_FQ_F: typing.Any, relative_to: str, expressed_in: str, t: typing.SupportsFloat | typing.SupportsIndex) -> PointVelocity:
+        """
+        PointVelocity of Q seen from A, terms expressed in E. Q at p_FQ_F [m] moving with v_FQ_F [m/s] as
+        seen from F (both (3,), expressed in F; zeros for a point fixed in F).
+        """
+    def rotation(self, frame: str, relative_to: str, t: typing.SupportsFloat | typing.SupportsIndex) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        R_AF (3,3): maps `frame` F coordinates to `relative_to` A coordinates at t.
+        """
+    def set_parent(self, name: str, parent: str, motion: FrameMotion) -> None:
+        """
+        Moves frame `name` and its subtree under `parent`, placed by `motion`. ValueError if that would
+        make a cycle (parent is `name` or one of its descendants) or `name` is 'world'.
+        """
+    def transport_derivative(self, u_E: typing.Any, du_B_E: typing.Any, from_frame: str, to_frame: str, expressed_in: str, t: typing.SupportsFloat | typing.SupportsIndex) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        Transport theorem (seed 001): the derivative of u seen from A = `to_frame`, from its derivative
+        du_B_E seen from B = `from_frame`: du_B_E + w_AB x u_E. u_E, du_B_E and the result (3,) in E.
+        """
+class Force:
+    """
+    Spatial force vector (wrench) [n; f], angular part first: n moment [N m] about the
+    origin of the frame of expression, f force [N].
+    """
+    @staticmethod
+    def from_vector(vector: typing.Any) -> Force:
+        """
+        Force from a (6,) array [n; f].
+        """
+    def __add__(self, arg0: Force) -> Force:
+        ...
+    @typing.overload
+    def __init__(self) -> None:
+        """
+        The zero force.
+        """
+    @typing.overload
+    def __init__(self, angular: typing.Any, linear: typing.Any) -> None:
+        """
+        Force from n (3,) [N m] and f (3,) [N].
+        """
+    def __mul__(self, arg0: typing.Any) -> Force:
+        ...
+    def __neg__(self) -> Force:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __rmul__(self, arg0: typing.Any) -> Force:
+        ...
+    def __sub__(self, arg0: Force) -> Force:
+        ...
+    def dot(self, m: Motion) -> float:
+        """
+        Power w . n + v . f [W] of this force on the motion m.
+        """
+    def to_vector(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        [n; f] as a (6,) array.
+        """
+    @property
+    def angular(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        n (3,) [N m] about the frame's origin, read-only copy
+        """
+    @property
+    def linear(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        f (3,) [N], read-only copy
+        """
+class Motion:
+    """
+    Spatial motion vector (twist) [w; v], angular part first: w angular velocity [rad/s], v
+    velocity [m/s] of the body point at the origin of the frame of expression.
+    """
+    @staticmethod
+    def from_vector(vector: typing.Any) -> Motion:
+        """
+        Motion from a (6,) array [w; v].
+        """
+    def __add__(self, arg0: Motion) -> Motion:
+        ...
+    @typing.overload
+    def __init__(self) -> None:
+        """
+        The zero motion.
+        """
+    @typing.overload
+    def __init__(self, angular: typing.Any, linear: typing.Any) -> None:
+        """
+        Motion from w (3,) [rad/s] and v (3,) [m/s].
+        """
+    def __mul__(self, arg0: typing.Any) -> Motion:
+        ...
+    def __neg__(self) -> Motion:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __rmul__(self, arg0: typing.Any) -> Motion:
+        ...
+    def __sub__(self, arg0: Motion) -> Motion:
+        ...
+    def cross(self, other: Motion) -> Motion:
+        """
+        Motion cross product (crm): self x other = [w1 x w2; w1 x v2 + v1 x w2].
+        """
+    def cross_force(self, f: Force) -> Force:
+        """
+        Force cross product (crf): self x* f = [w x n + v x f; w x f].
+        """
+    def dot(self, f: Force) -> float:
+        """
+        Power w . n + v . f [W] of the force f on this motion (same frame and reference point).
+        """
+    def to_vector(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        [w; v] as a (6,) array.
+        """
+    @property
+    def angular(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        w (3,) [rad/s], read-only copy
+        """
+    @property
+    def linear(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        v (3,) [m/s] at the frame's origin, read-only copy
+        """
+class Transform:
+    """
+    Rigid transform X_AB: R_AB (B coordinates -> A coordinates) and p_AB (B's origin in A)
+    [m]. Maps points, motions and forces expressed in B to A; X_AB * X_BC = X_AC.
+    """
+    @staticmethod
+    def from_quat(q_AB: typing.Any, translation: typing.Any = None, scalar_first: bool = False) -> Transform:
+        """
+        X_AB from the unit quaternion q_AB (4,) ((x, y, z, w), or (w, x, y, z) if scalar_first) and
+        p_AB (3,) [m] (default zero).
+        """
+    def __init__(self, rotation: typing.Any = None, translation: typing.Any = None) -> None:
+        """
+        X_AB from rotation R_AB (3,3), orthonormal with det +1 (default identity), and translation
+        p_AB (3,) [m] (default zero). ValueError on a non-rotation or non-finite input.
+        """
+    def __mul__(self, arg0: Transform) -> Transform:
+        """
+        X_AB * X_BC = X_AC.
+        """
+    def __repr__(self) -> str:
+        ...
+    @typing.overload
+    def act(self, m: Motion) -> Motion:
+        """
+        Motion in B -> in A: [R w; R v + p x (R w)].
+        """
+    @typing.overload
+    def act(self, f: Force) -> Force:
+        """
+        Force in B -> in A: [R n + p x (R f); R f].
+        """
+    @typing.overload
+    def act_inv(self, m: Motion) -> Motion:
+        """
+        Motion in A -> in B: [R^T w; R^T (v - p x w)].
+        """
+    @typing.overload
+    def act_inv(self, f: Force) -> Force:
+        """
+        Force in A -> in B: [R^T (n - p x f); R^T f].
+        """
+    def act_inv_point(self, p_A: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        p_B = R_AB^T (p_A - p_AB) for points p_A (3,) or (n, 3) [m].
+        """
+    def act_point(self, p_B: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        p_A = R_AB p_B + p_AB for points p_B (3,) or (n, 3) [m].
+        """
+    def force_matrix(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        Featherstone's X* (6,6) = X^-T: [[R, hat(p) R], [0, R]].
+        """
+    def inverse(self) -> Transform:
+        """
+        X_BA = X_AB^-1.
+        """
+    def motion_matrix(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        Featherstone's X (6,6), angular first: [[R, 0], [hat(p) R, R]].
+        """
+    def quat(self, scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        q_AB (4,) with w >= 0, (x, y, z, w) or (w, x, y, z) if scalar_first.
+        """
+    @property
+    def rotation(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        R_AB (3,3), read-only copy
+        """
+    @property
+    def translation(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        p_AB (3,) [m], read-only copy
+        """
+class Screw:
+    """
+    Screw of a twist (instantaneous screw axis): unit direction, point of the axis closest to
+    the origin [m], pitch [m/rad] (inf for a pure translation) and magnitude (|w| [rad/s], or
+    |v| [m/s] for a pure translation), all in the twist's frame.
+    """
+    def __init__(self, direction: typing.Any, point: typing.Any, pitch: typing.SupportsFloat | typing.SupportsIndex, magnitude: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        """
+        Screw from its parts (checked by screw_to_twist): direction (3,) unit, point (3,) [m], pitch [m/rad]
+        (inf: pure translation), magnitude [rad/s] (or [m/s]).
+        """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def direction(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        unit (3,)
+        """
+    @property
+    def magnitude(self) -> float:
+        """
+        |w| [rad/s], or |v| [m/s] for a pure translation
+        """
+    @property
+    def pitch(self) -> float:
+        """
+        [m/rad]; inf for a pure translation
+        """
+    @property
+    def point(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3,) [m], point of the axis closest to the origin
+        """
+class InertiaCheck:
+    """
+    What a constructor requires of a rotational inertia: `physical` (symmetric, PSD,
+    triangle inequality I0 + I1 >= I2 on the principal moments) or `allow_unrealizable`
+    (symmetric PSD only; a documented opt-in for test problems such as
+    Hairer-Lubich-Wanner's I = diag(2, 1, 2/3), never the default).
+    
+    Members:
+    
+      physical
+    
+      allow_unrealizable
+    """
+    __members__: typing.ClassVar[dict[str, InertiaCheck]]
+    allow_unrealizable: typing.ClassVar[InertiaCheck]
+    physical: typing.ClassVar[InertiaCheck]
+    @typing.overload
+    def __eq__(self, other: InertiaCheck) -> bool:
+        ...
+    @typing.overload
+    def __eq__(self, other: typing.Any) -> bool:
+        ...
+    def __getstate__(self) -> int:
+        ...
+    def __hash__(self) -> int:
+        ...
+    def __index__(self) -> int:
+        ...
+    def __init__(self, value: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    def __int__(self) -> int:
+        ...
+    @typing.overload
+    def __ne__(self, other: InertiaCheck) -> bool:
+        ...
+    @typing.overload
+    def __ne__(self, other: typing.Any) -> bool:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, state: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    def __str__(self) -> str:
+        ...
+    @property
+    def name(self) -> str:
+        ...
+    @property
+    def value(self) -> int:
+        ...
+class InertiaReport:
+    """
+    Validity report of (mass, inertia about the centre of mass); see inertia_report.
+    """
+    def __repr__(self) -> str:
+        ...
+    def summary(self) -> str:
+        """
+        One line with the key numbers.
+        """
+    def valid(self, check: InertiaCheck = InertiaCheck.physical) -> bool:
+        """
+        True when every check required by `check` passes.
+        """
+    @property
+    def asymmetry(self) -> float:
+        """
+        max |I - I^T| [kg m^2]
+        """
+    @property
+    def condition_number(self) -> float:
+        """
+        I2 / I0 (inf when I0 <= 0)
+        """
+    @property
+    def finite(self) -> bool:
+        ...
+    @property
+    def mass(self) -> float:
+        """
+        [kg]
+        """
+    @property
+    def mass_positive(self) -> bool:
+        ...
+    @property
+    def positive_semidefinite(self) -> bool:
+        ...
+    @property
+    def principal_moments(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3,) ascending I0 <= I1 <= I2 [kg m^2]
+        """
+    @property
+    def symmetric(self) -> bool:
+        ...
+    @property
+    def tolerance(self) -> float:
+        """
+        absolute tolerance of the two checks [kg m^2]
+        """
+    @property
+    def triangle_inequality(self) -> bool:
+        ...
+    @property
+    def triangle_margins(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3,) (I1+I2-I0, I0+I2-I1, I0+I1-I2) [kg m^2]; the last is binding
+        """
+class PrincipalAxes:
+    """
+    Principal moments (ascending) and axes (columns, right-handed).
+    """
+    @property
+    def axes(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3,3): column k is the axis of moments[k]; det +1
+        """
+    @property
+    def moments(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3,) ascending [kg m^2]
+        """
+class SpatialInertia:
+    """
+    Mass properties of one rigid body: mass m [kg], centre of mass c [m] and rotational inertia about
+    the centre of mass I_C [kg m^2], all expressed in one frame. Constructors check validity
+    (ValueError with the principal moments, triangle margins and condition number).
+    """
+    @staticmethod
+    def from_inertia_about_origin(mass: typing.Any, com: typing.Any, inertia_about_origin: typing.Any, check: typing.Any = InertiaCheck.physical) -> SpatialInertia:
+        """
+        From the inertia (3,3) [kg m^2] about the frame's origin.
+        """
+    @staticmethod
+    def from_inertia_about_point(mass: typing.Any, com: typing.Any, inertia_about_point: typing.Any, point: typing.Any, check: typing.Any = InertiaCheck.physical) -> SpatialInertia:
+        """
+        From the inertia (3,3) [kg m^2] about `point` (3,) [m] (parallel axis, seed 001).
+        """
+    @staticmethod
+    def from_matrix(matrix: typing.Any, check: typing.Any = InertiaCheck.physical) -> SpatialInertia:
+        """
+        From the (6,6) spatial inertia about the origin, angular first [[I_O, m hat(c)], [m hat(c)^T, m 1]].
+        """
+    @staticmethod
+    def point_mass(mass: typing.Any, position: typing.Any) -> SpatialInertia:
+        """
+        A point mass [kg] at position (3,) [m].
+        """
+    def __add__(self, arg0: SpatialInertia) -> SpatialInertia:
+        """
+        Composite of two bodies expressed in the same frame.
+        """
+    def __init__(self, mass: typing.Any, com: typing.Any, inertia_com: typing.Any, check: typing.Any = InertiaCheck.physical) -> None:
+        """
+        mass [kg] > 0, com (3,) [m], inertia_com (3,3) [kg m^2] about the centre of mass.
+        check: InertiaCheck.physical (default: triangle inequality required) or
+        InertiaCheck.allow_unrealizable (opt-in: symmetric PSD only, e.g. I = diag(2, 1, 2/3)).
+        """
+    def __repr__(self) -> str:
+        ...
+    def __sub__(self, arg0: SpatialInertia) -> SpatialInertia:
+        """
+        This body with the part removed (a hole); ValueError if the rest is invalid.
+        """
+    def admits_symmetry_plane(self, normal: typing.Any, tolerance: typing.SupportsFloat | typing.SupportsIndex = 1e-09) -> bool:
+        """
+        Whether the plane through the centre of mass with this normal (3,) can be a plane of symmetry
+        (seed 001: then the products of inertia with the normal vanish). Necessary, not sufficient.
+        """
+    def angular_momentum_about_com(self, angular_velocity: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        H_C = I_C w (3,) [kg m^2/s]; w (3,) [rad/s] in the frame.
+        """
+    def angular_momentum_about_point(self, angular_velocity: typing.Any, com_velocity: typing.Any, point: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        H_P = r_PC x (m v_C) + H_C (3,) [kg m^2/s] (seed 001); w [rad/s], v_C [m/s], point [m].
+        """
+    def inertia_about_origin(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        Inertia (3,3) [kg m^2] about the frame's origin.
+        """
+    def inertia_about_point(self, point: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        Inertia (3,3) [kg m^2] about point (3,) [m]: I_C + m (|r|^2 1 - r r^T), r = c - p.
+        """
+    def is_approx(self, other: SpatialInertia, prec: typing.SupportsFloat | typing.SupportsIndex = 1e-12) -> bool:
+        """
+        Relative comparison.
+        """
+    def kinetic_energy(self, twist: Motion) -> float:
+        """
+        T = 1/2 V . I V [J] of the twist (Motion).
+        """
+    def matrix(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (6,6) spatial inertia about the origin, angular first.
+        """
+    def momentum(self, twist: Motion) -> Force:
+        """
+        Spatial momentum h = I V (Force, moment about the origin) of the twist V = [w; v_O] (Motion).
+        """
+    def principal_axes(self) -> PrincipalAxes:
+        """
+        Principal moments and right-handed axes of I_C.
+        """
+    def remove(self, part: SpatialInertia, check: InertiaCheck = InertiaCheck.physical) -> SpatialInertia:
+        """
+        This body with `part` removed (a hole), checked as the constructor.
+        """
+    def report(self) -> InertiaReport:
+        """
+        The validity report (InertiaReport).
+        """
+    def rotated(self, R_AB: typing.Any) -> SpatialInertia:
+        """
+        Re-expressed in A: c_A = R_AB c_B, I_C,A = R_AB I_C,B R_AB^T.
+        """
+    def transformed(self, X_AB: Transform) -> SpatialInertia:
+        """
+        Re-expressed in A (Transform X_AB): c_A = R_AB c_B + p_AB, I_C,A = R_AB I_C,B R_AB^T.
+        """
+    @property
+    def com(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        centre of mass (3,) [m], read-only copy
+        """
+    @property
+    def inertia_com(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        rotational inertia about the centre of mass (3,3) [kg m^2], read-only copy
+        """
+    @property
+    def mass(self) -> float:
+        """
+        m [kg]
+        """
+class DensityIntegral:
+    """
+    Result of a density quadrature with its error estimate.
+    """
+    @property
+    def com_error(self) -> float:
+        """
+        |c_high - c_low| [m]
+        """
+    @property
+    def evaluations(self) -> int:
+        """
+        points at which rho was evaluated
+        """
+    @property
+    def inertia(self) -> SpatialInertia:
+        """
+        SpatialInertia from the higher-order rule
+        """
+    @property
+    def inertia_error(self) -> float:
+        """
+        ||I_high - I_low||_F [kg m^2]
+        """
+    @property
+    def mass_error(self) -> float:
+        """
+        |m_high - m_low| [kg]
+        """
+class Particle:
+    """
+    A point mass (3 DOF; seed 000 section 4.11): mass [kg] > 0.
+    """
+    def __init__(self, mass: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def mass(self) -> float:
+        """
+        mass [kg]
+        """
+class PlanarBody:
+    """
+    A rigid body moving in the xy plane of W (x, y, theta; seed 001 plane kinetics): mass [kg] and inertia_zz [kg m^2] about the z axis through the centre of mass, both > 0.
+    """
+    def __init__(self, mass: typing.SupportsFloat | typing.SupportsIndex, inertia_zz: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def inertia_zz(self) -> float:
+        """
+        moment of inertia about z through G [kg m^2]
+        """
+    @property
+    def mass(self) -> float:
+        """
+        mass [kg]
+        """
+class RigidBody:
+    """
+    A spatial rigid body (6 DOF): mass [kg] > 0 and inertia_com (3, 3) [kg m^2] about the centre of mass in the body frame B, symmetric positive definite, checked as every inertia of rigiddyn is (inertia_report): under check=InertiaCheck.physical (default) the principal moments must satisfy the triangle inequality; check=InertiaCheck.allow_unrealizable accepts test bodies no real body has, e.g. I = diag(2, 1, 2/3). (require_triangle_inequality=False, or False as the third positional argument, is the older spelling of allow_unrealizable.) euler_form tells which form of Euler's equations it uses: 'spherical', 'principal' or 'full'.
+    """
+    def __init__(self, mass: typing.SupportsFloat | typing.SupportsIndex, inertia_com: typing.Any, check: typing.Any = None, require_triangle_inequality: typing.Any = None) -> None:
+        ...
+    @property
+    def euler_form(self) -> str:
+        """
+        'spherical' (no gyroscopic term), 'principal' (diagonal inertia) or 'full'
+        """
+    @property
+    def inertia_com(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3, 3) inertia about the centre of mass in B [kg m^2]
+        """
+    @property
+    def mass(self) -> float:
+        """
+        mass [kg]
+        """
+class ParticleState:
+    """
+    Particle state: p_W (3,) [m] and v_W (3,) [m/s] in W.
+    """
+    def __init__(self, p_W: typing.Any = ..., v_W: typing.Any = ...) -> None:
+        ...
+    @property
+    def p_W(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3,) [m]
+        """
+    @property
+    def v_W(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3,) [m/s]
+        """
+class PlanarBodyState:
+    """
+    Planar body state: p_W (2,) [m] centre of mass, theta [rad] angle of B about z, v_W (2,) [m/s], omega [rad/s].
+    """
+    def __init__(self, p_W: typing.Any = ..., theta: typing.SupportsFloat | typing.SupportsIndex = 0.0, v_W: typing.Any = ..., omega: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
+        ...
+    @property
+    def omega(self) -> float:
+        """
+        [rad/s]
+        """
+    @property
+    def p_W(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (2,) [m]
+        """
+    @property
+    def theta(self) -> float:
+        """
+        [rad]
+        """
+    @property
+    def v_W(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (2,) [m/s]
+        """
+class RigidBodyState:
+    """
+    Rigid body state (docs/conventions.md): p_W (3,) centre of mass [m], q_WB (4,) unit quaternion (x, y, z, w), or (w, x, y, z) with scalar_first=True, v_W (3,) [m/s] in W, w_B (3,) angular velocity [rad/s] in B. q_WB is normalised; ValueError if | |q| - 1 | > 1e-6.
+    """
+    def __init__(self, p_W: typing.Any = ..., q_WB: typing.Any = ..., v_W: typing.Any = ..., w_B: typing.Any = ..., scalar_first: bool = False) -> None:
+        ...
+    def quaternion(self, scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        q_WB (4,) as (x, y, z, w), or (w, x, y, z) with scalar_first=True
+        """
+    @property
+    def p_W(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3,) [m]
+        """
+    @property
+    def q_WB(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (4,) (x, y, z, w)
+        """
+    @property
+    def v_W(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3,) [m/s]
+        """
+    @property
+    def w_B(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3,) [rad/s]
+        """
+class AppliedLoad:
+    """
+    A load: force (3,) [N] through the centre of mass and couple torque (3,) [N m], both in frame 'world' or 'body', active for t_start <= t < t_end [s].
+    """
+    def __init__(self, force: typing.Any = ..., torque: typing.Any = ..., frame: str = 'world', t_start: typing.SupportsFloat | typing.SupportsIndex = ..., t_end: typing.SupportsFloat | typing.SupportsIndex = ...) -> None:
+        ...
+    @property
+    def force(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3,) [N]
+        """
+    @property
+    def frame(self) -> str:
+        """
+        'world' or 'body'
+        """
+    @property
+    def t_end(self) -> float:
+        """
+        [s]
+        """
+    @property
+    def t_start(self) -> float:
+        """
+        [s]
+        """
+    @property
+    def torque(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3,) [N m]
+        """
+class SimulationResult:
+    """
+    simulate's records (see simulate).
+    """
+    @property
+    def angular_momentum_norm(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (n,) |H_G| about the centre of mass [kg m^2/s]
+        """
+    @property
+    def diverged(self) -> bool:
+        """
+        True if the run stopped on a non-finite state
+        """
+    @property
+    def elapsed_seconds(self) -> float:
+        """
+        wall time of the C++ stepping loop [s]
+        """
+    @property
+    def kinetic_energy(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (n,) [J]
+        """
+    @property
+    def p_W(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (n, 3) centre of mass position in W [m]
+        """
+    @property
+    def q_WB(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (n, 4) attitude, (x, y, z, w) unless scalar_first
+        """
+    @property
+    def quaternion_norm_error(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (n,) |q| - 1
+        """
+    @property
+    def t(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (n,) time [s]
+        """
+    @property
+    def total_energy(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (n,) kinetic + gravity potential [J]
+        """
+    @property
+    def v_W(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (n, 3) centre of mass velocity in W [m/s]
+        """
+    @property
+    def w_B(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (n, 3) angular velocity in B [rad/s]
+        """
+    @property
+    def work(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (n,) work of loads and gravity since t0 [J]
+        """
+class KineticEnergy:
+    """
+    Kinetic energy split: translational 1/2 m v.v, rotational 1/2 w.I w [J].
+    """
+    @property
+    def rotational(self) -> float:
+        """
+        [J]
+        """
+    @property
+    def total(self) -> float:
+        """
+        [J]
+        """
+    @property
+    def translational(self) -> float:
+        """
+        [J]
+        """
+class TorqueFreeSolution:
+    """
+    Exact motion of a torque-free rigid body (Euler-Poinsot), see rigiddyn/exact/free_body.hpp.
+    """
+    def __init__(self, inertia: typing.Any, q_WB: typing.Any, w_B: typing.Any, scalar_first: bool = False) -> None:
+        """
+        inertia: (3, 3) rotational inertia about the centre of mass, in B [kg m^2], symmetric positive definite;
+        q_WB: (4,) initial attitude, (x, y, z, w) or (w, x, y, z) if scalar_first; w_B: (3,) initial angular
+        velocity of B in W, expressed in B [rad/s].
+        """
+    def state_at(self, t: typing.Any) -> tuple:
+        """
+        State at time t [s] (scalar, or (n,) array; negative allowed): (q_WB, w_B) of shapes (4,), (3,) or
+        (n, 4), (n, 3); q in the order chosen at construction.
+        """
+    @property
+    def R_BP(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3, 3) rotation from the sorted principal frame P to B (columns: principal axes in B).
+        """
+    @property
+    def angular_momentum_W(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3,) constant spatial angular momentum L_W [kg m^2/s].
+        """
+    @property
+    def case(self) -> str:
+        """
+        'sphere', 'symmetric', 'A' (about axis 3), 'B' (about axis 1) or 'separatrix'.
+        """
+    @property
+    def kinetic_energy(self) -> float:
+        """
+        Constant kinetic energy of rotation [J].
+        """
+    @property
+    def parameter_m(self) -> float:
+        """
+        Parameter m of the elliptic functions.
+        """
+    @property
+    def parameter_mc(self) -> float:
+        """
+        Complement 1 - m, computed without cancellation.
+        """
+    @property
+    def period(self) -> float:
+        """
+        Period of w_B(t) [s]; inf if w_B is constant or on the separatrix. A flip takes half.
+        """
+    @property
+    def principal_moments(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3,) principal moments I1 <= I2 <= I3 [kg m^2].
+        """
+@typing.overload
+def angular_momentum(body: RigidBody, state: RigidBodyState, point: typing.Any = None) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Angular momentum (3,) [kg m^2/s] in W about the point fixed in W at `point` (p_WP (3,) [m]; None = the centre of mass): H_P = R_WB I w_B + (p_W - p_WP) x m v_W.
+    """
+@typing.overload
+def angular_momentum(body: Particle, state: ParticleState, point: typing.Any = None) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Particle: (p_W - p_WP) x m v_W (3,) [kg m^2/s] in W about the point fixed in W at `point` (p_WP (3,) [m]; None = the particle itself: zero).
+    """
+@typing.overload
+def angular_momentum(body: PlanarBody, state: PlanarBodyState, point: typing.Any = None) -> float:
+    """
+    PlanarBody: H_z [kg m^2/s] about the point fixed in W at `point` (p_WP (2,) [m]; None = the centre of mass): I_zz omega + (p_W - p_WP) x m v_W.
+    """
+@typing.overload
+def apply_impulse(body: RigidBody, state: RigidBodyState, impulse: typing.Any, point: typing.Any = None, frame: str = 'world', angular_impulse: typing.Any = None) -> RigidBodyState:
+    """
+    The state just after an impulse (3,) [N s] at `point` (p_GP (3,) [m] relative to the centre of mass; None = the centre of mass) and an angular impulse (3,) [N m s], all in `frame` ('world' or 'body'): m dv = impulse, I dw = p_GP x impulse + angular_impulse (impulse-momentum, seed 001).
+    """
+@typing.overload
+def apply_impulse(body: Particle, state: ParticleState, impulse: typing.Any) -> ParticleState:
+    """
+    Particle: the state just after an impulse (3,) [N s] in W: m dv = impulse.
+    """
+@typing.overload
+def apply_impulse(body: PlanarBody, state: PlanarBodyState, impulse: typing.Any, point: typing.Any = None, frame: str = 'world', angular_impulse: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> PlanarBodyState:
+    """
+    PlanarBody: the state just after an in-plane impulse (2,) [N s] at `point` (p_GP (2,) [m] from the centre of mass; None = the centre of mass), both in `frame` ('world' or 'body'), and an angular impulse [N m s] about z: m dv = impulse, I_zz domega = p_GP x impulse + angular_impulse.
+    """
+def axis_angle_to_quat(axis: typing.Any, angle: typing.Any, scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Unit quaternion of the rotation by angle [rad] about axis (right-hand rule).
+    
+    axis: (3,) or (n, 3), any non-zero length (normalised); angle: float or (n,).
+    Returns q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first.
+    """
+def box_shell(size: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
+    """
+    Closed thin-walled box (six faces), edges (3,) [m]. Density [kg/m^2]. Give exactly one of mass= [kg] or density=.
+    """
+def compose_kinematics(K_AP: FrameKinematics, K_PF: FrameKinematics) -> FrameKinematics:
+    """
+    F relative to A from P relative to A and F relative to P (addition theorem for w; alpha with its
+    w_AP x w_PF term; origin by seed 000 (4.38), (4.39)). Result expressed in A.
+    """
+def composite(parts: collections.abc.Sequence) -> SpatialInertia:
+    """
+    Composite body: parts is a list of SpatialInertia (one frame) or of (X_AB, SpatialInertia) pairs,
+    each part expressed in its B and placed in A by the Transform X_AB. Exact.
+    """
+def ellipk(m: typing.SupportsFloat | typing.SupportsIndex, mc: typing.SupportsFloat | typing.SupportsIndex | None = None) -> float:
+    """
+    Complete elliptic integral K(m) = R_F(0, mc, 1) for the parameter m in [0, 1] (as scipy.special.ellipk).
+    mc: the complement 1 - m (default 1 - m); pass it near m = 1, where 1 - m loses digits. inf at mc = 0.
+    """
+def ellippi(n: typing.SupportsFloat | typing.SupportsIndex, m: typing.SupportsFloat | typing.SupportsIndex, mc: typing.SupportsFloat | typing.SupportsIndex | None = None) -> float:
+    """
+    Complete elliptic integral of the third kind Pi(n|m) = int_0^{pi/2} dt / ((1 - n sin^2 t) sqrt(1 - m sin^2 t)),
+    n < 1, m in [0, 1), mc = 1 - m (default 1 - m).
+    """
+def ellippi_am(u: typing.Any, n: typing.SupportsFloat | typing.SupportsIndex, m: typing.SupportsFloat | typing.SupportsIndex, mc: typing.SupportsFloat | typing.SupportsIndex | None = None) -> typing.Any:
+    """
+    Incomplete Pi(am u, n|m) = int_0^u dv / (1 - n sn^2(v|m)) (mpmath.ellippi(n, am(u), m)), for u a scalar
+    or a 1-d array (then an array of the same length), n < 1, mc = 1 - m (default 1 - m).
+    """
+def elliprf(x: typing.SupportsFloat | typing.SupportsIndex, y: typing.SupportsFloat | typing.SupportsIndex, z: typing.SupportsFloat | typing.SupportsIndex) -> float:
+    """
+    Carlson's R_F(x, y, z) (DLMF 19.16.1); x, y, z >= 0, at most one zero.
+    """
+def elliprj(x: typing.SupportsFloat | typing.SupportsIndex, y: typing.SupportsFloat | typing.SupportsIndex, z: typing.SupportsFloat | typing.SupportsIndex, p: typing.SupportsFloat | typing.SupportsIndex) -> float:
+    """
+    Carlson's R_J(x, y, z, p) (DLMF 19.16.2); x, y, z >= 0, at most one zero, p > 0.
+    """
+def euler_to_matrix(seq: typing.Any, angles: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Rotation matrix of Euler angles.
+    
+    seq: 3 letters as SciPy, lowercase 'xyz' = extrinsic (fixed axes), uppercase 'XYZ' = intrinsic
+    (moving axes); the 12 sequences xyz xzy yxz yzx zxy zyx xyx xzx yxy yzy zxz zyz in either case.
+    angles: (3,) or (n, 3) [rad]. Returns R: (3, 3) or (n, 3, 3).
+    """
+def euler_to_quat(seq: typing.Any, angles: typing.Any, scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Unit quaternion of Euler angles.
+    
+    seq: 3 letters as SciPy, lowercase 'xyz' = extrinsic (fixed axes), uppercase 'XYZ' = intrinsic
+    (moving axes); the 12 sequences xyz xzy yxz yzx zxy zyx xyx xzx yxy yzy zxz zyz in either case.
+    angles: (3,) or (n, 3) [rad], in the order of seq.
+    Returns q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first.
+    """
+def force_cross_matrix(m: Motion) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    crf(m) (6,6) = [[hat(w), hat(v)], [0, hat(w)]] = -crm(m)^T, so crf(m) f = m x* f.
+    """
+@typing.overload
+def forward_dynamics(body: RigidBody, state: RigidBodyState, force: typing.Any = None, torque: typing.Any = None, point: typing.Any = None, frame: str = 'world', gravity: typing.Any = None) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    """
+    Accelerations (a_W (3,) [m/s^2] of the centre of mass in W, alpha_B (3,) [rad/s^2] in B) of `body` in `state` under a force (3,) [N] applied at `point` (p_GP (3,) [m], position of the point relative to the centre of mass; None = the centre of mass) and a couple torque (3,) [N m], all expressed in `frame` ('world' or 'body'), plus gravity (None/False, True = (0, 0, -9.81), or (3,) [m/s^2] in W). Newton: m a = f + m g; Euler: I alpha + w x I w = n_G.
+    """
+@typing.overload
+def forward_dynamics(body: Particle, state: ParticleState, force: typing.Any = None, gravity: typing.Any = None) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Particle: acceleration a_W (3,) [m/s^2] = force/m + g under a force (3,) [N] in W and gravity (None/False, True = (0, 0, -9.81), or (3,) [m/s^2] in W).
+    """
+@typing.overload
+def forward_dynamics(body: PlanarBody, state: PlanarBodyState, force: typing.Any = None, torque: typing.SupportsFloat | typing.SupportsIndex = 0.0, point: typing.Any = None, frame: str = 'world', gravity: typing.Any = None) -> tuple[numpy.typing.NDArray[numpy.float64], float]:
+    """
+    PlanarBody: (a_W (2,) [m/s^2] in W, alpha [rad/s^2]) under an in-plane force (2,) [N] applied at `point` (p_GP (2,) [m] from the centre of mass; None = the centre of mass), both in `frame` ('world' or 'body'), a couple torque [N m] about z, and in-plane gravity (None or (2,) [m/s^2] in W). m a = f + m g, I_zz alpha = n_G.
+    """
+def from_point_masses(masses: typing.Any, positions: typing.Any) -> SpatialInertia:
+    """
+    Point masses (n,) [kg] >= 0 at positions (n, 3) [m] (seed 000 (4.53)-(4.54)).
+    """
+def hat(v: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Skew-symmetric cross-product matrix S = hat(v), S x = v × x. v: (3,) or (n, 3); returns (3, 3) or (n, 3, 3).
+    """
+def hollow_cylinder(outer_radius: typing.SupportsFloat | typing.SupportsIndex, inner_radius: typing.SupportsFloat | typing.SupportsIndex, height: typing.SupportsFloat | typing.SupportsIndex, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
+    """
+    Thick tube, axis z: I_zz = m (R^2 + r^2)/2, I_xx = m (3 (R^2 + r^2) + h^2)/12. Density [kg/m^3]. Give
+    exactly one of mass= [kg] or density=.
+    """
+def hollow_sphere(outer_radius: typing.SupportsFloat | typing.SupportsIndex, inner_radius: typing.SupportsFloat | typing.SupportsIndex, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
+    """
+    Thick spherical shell [m]: I = 2/5 m (R^5 - r^5)/(R^3 - r^3) 1. Density [kg/m^3]. Give exactly one of mass= [kg] or density=.
+    """
+def inertia_report(mass: typing.Any, inertia_com: typing.Any, scale: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> InertiaReport:
+    """
+    Validity report of mass [kg] and inertia_com (3,3) [kg m^2]: principal moments, triangle margins,
+    condition number. Tolerance = inertia_relative_tolerance * max(scale, trace) [kg m^2], where scale is
+    the size of the numbers the inertia was computed from (0: trace only).
+    """
+def integrate_density_over_box(rho: collections.abc.Callable, lower: typing.Any, upper: typing.Any, order: typing.SupportsInt | typing.SupportsIndex = 6, subdivisions: typing.SupportsInt | typing.SupportsIndex = 2) -> DensityIntegral:
+    """
+    Mass properties of density rho over the box [lower, upper] (3,) [m] by Gauss-Legendre quadrature
+    (seed 000 (4.55), (4.56), (4.70)) at `order` and 2*order points per cell axis, subdivisions^3 cells.
+    rho is called with points (n, 3) [m] and returns (n,) densities [kg/m^3] >= 0. Returns a
+    DensityIntegral (high-order result, differences to the low order as error estimate).
+    """
+def integrate_density_over_mesh(rho: collections.abc.Callable, vertices: typing.Any, faces: typing.Any, order: typing.SupportsInt | typing.SupportsIndex = 4) -> DensityIntegral:
+    """
+    Mass properties of density rho over the solid bounded by a closed mesh (signed tetrahedra, collapsed
+    Gauss-Legendre, order^3 and (2 order)^3 points per face). rho: points (n, 3) -> (n,) [kg/m^3], must
+    be defined on the mesh's convex hull. Returns a DensityIntegral.
+    """
+@typing.overload
+def inverse_dynamics(body: RigidBody, state: RigidBodyState, a_W: typing.Any, alpha_B: typing.Any, gravity: typing.Any = None) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    """
+    The applied wrench the motion requires: (f_W (3,) [N] in W, n_B (3,) [N m] about the centre of mass in B), f_W = m (a_W - g), n_B = I alpha_B + w_B x I w_B. Undoes forward_dynamics with a centre-of-mass load.
+    """
+@typing.overload
+def inverse_dynamics(body: Particle, state: ParticleState, a_W: typing.Any, gravity: typing.Any = None) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Particle: the force f_W (3,) [N] in W the acceleration a_W (3,) [m/s^2] requires, m (a_W - g).
+    """
+@typing.overload
+def inverse_dynamics(body: PlanarBody, state: PlanarBodyState, a_W: typing.Any, alpha: typing.SupportsFloat | typing.SupportsIndex, gravity: typing.Any = None) -> tuple[numpy.typing.NDArray[numpy.float64], float]:
+    """
+    PlanarBody: the wrench the motion requires, (f_W (2,) [N] in W, n [N m] about the centre of mass): f_W = m (a_W - g), n = I_zz alpha.
+    """
+def jacobi_ellipj(u: typing.Any, m: typing.SupportsFloat | typing.SupportsIndex, mc: typing.SupportsFloat | typing.SupportsIndex | None = None) -> typing.Any:
+    """
+    Jacobi elliptic functions (sn, cn, dn)(u|m) for u a scalar (floats) or a 1-d array (three arrays of
+    shape (n,)), m in [0, 1]. mc: the complement 1 - m (default 1 - m); pass it near m = 1 for full
+    accuracy (unlike scipy.special.ellipj, accurate near m = 1 at any u).
+    """
+@typing.overload
+def kinetic_energy(body: RigidBody, state: RigidBodyState) -> KineticEnergy:
+    """
+    KineticEnergy(translational = 1/2 m v.v, rotational = 1/2 w_B.I w_B) [J].
+    """
+@typing.overload
+def kinetic_energy(body: Particle, state: ParticleState) -> KineticEnergy:
+    """
+    Particle: KineticEnergy(translational = 1/2 m v.v, rotational = 0) [J].
+    """
+@typing.overload
+def kinetic_energy(body: PlanarBody, state: PlanarBodyState) -> KineticEnergy:
+    """
+    PlanarBody: KineticEnergy(translational = 1/2 m v.v, rotational = 1/2 I_zz omega^2) [J].
+    """
+@typing.overload
+def linear_momentum(body: RigidBody, state: RigidBodyState) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Linear momentum m v_W (3,) [kg m/s] in W.
+    """
+@typing.overload
+def linear_momentum(body: Particle, state: ParticleState) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Particle: m v_W (3,) [kg m/s] in W.
+    """
+@typing.overload
+def linear_momentum(body: PlanarBody, state: PlanarBodyState) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    PlanarBody: m v_W (2,) [kg m/s] in W.
+    """
+def matrix_to_euler(seq: typing.Any, R: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Euler angles [rad] of rotation matrices (ranges and gimbal lock as quat_to_euler).
+    
+    seq: 3 letters as SciPy, lowercase 'xyz' = extrinsic (fixed axes), uppercase 'XYZ' = intrinsic
+    (moving axes); the 12 sequences xyz xzy yxz yzx zxy zyx xyx xzx yxy yzy zxz zyz in either case.
+    R: (3, 3) or (n, 3, 3), orthonormal with det +1. Returns (3,) or (n, 3).
+    """
+def matrix_to_quat(R: typing.Any, scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Unit quaternion of rotation matrices, canonical sign w >= 0 (Shepperd's method, accurate at all angles).
+    
+    R: (3, 3) or (n, 3, 3), orthonormal with det +1 (max |R^T R - I| <= 1e-6).
+    Returns q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first.
+    """
+def matrix_to_rotvec(R: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Logarithm map of rotation matrices: rotation vector angle * axis [rad], angle in [0, pi].
+    
+    R: (3, 3) or (n, 3, 3), orthonormal with det +1. Returns (3,) or (n, 3). Accurate near 0 and pi.
+    """
+def mesh_shell(vertices: typing.Any, faces: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
+    """
+    Thin shell made of the faces (any orientation, need not be closed): vertices (n, 3) [m], faces
+    (f, 3). Give exactly one of mass= [kg] or density= [kg/m^2].
+    """
+def mesh_volume(vertices: typing.Any, faces: typing.Any) -> float:
+    """
+    Signed volume [m^3] of the mesh vertices (n, 3) [m], faces (f, 3).
+    """
+def methods() -> list:
+    """
+    The fixed-step methods: a list of dicts with name, order (global), evaluations (derivative evaluations per step), conserves (what is kept exactly on a free rigid body), notes, stability_limit (largest dt*|w| [rad], |w| the largest body rate on the torque-free orbit, at which the method is documented stable on a free spin: inf if unconditionally, 0 if never) and exact_torque_free (True if torque-free motion is reproduced to round-off at any dt: no observed order applies).
+    """
+def motion_cross_matrix(m: Motion) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    crm(m) (6,6) = [[hat(w), 0], [hat(v), hat(w)]], so crm(m) m2 = m x m2.
+    """
+def nearest_valid_inertia(inertia: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Explicit repair: the nearest (Frobenius) matrix (3,3) satisfying the triangle inequality, same
+    principal axes; a valid inertia is returned unchanged. Never applied implicitly.
+    """
+def point_acceleration(K_AF: FrameKinematics, p_FQ_F: typing.Any, v_FQ_F: typing.Any, a_FQ_F: typing.Any) -> PointAcceleration:
+    """
+    Acceleration terms of Q seen from A, expressed in A; a_FQ_F (3,) [m/s^2]: Q's acceleration seen
+    from F, expressed in F; the rest as point_velocity.
+    """
+def point_inertia(mass: typing.SupportsFloat | typing.SupportsIndex, r: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    m (|r|^2 1 - r r^T) (3,3) [kg m^2]: a point mass [kg] at r (3,) [m] about the origin.
+    """
+def point_velocity(K_AF: FrameKinematics, p_FQ_F: typing.Any, v_FQ_F: typing.Any) -> PointVelocity:
+    """
+    Velocity terms of Q seen from A, expressed in A. K_AF: F relative to A; p_FQ_F (3,) [m] and v_FQ_F
+    (3,) [m/s]: Q's position relative to F's origin and its velocity seen from F, expressed in F.
+    """
+@typing.overload
+def potential_energy(body: RigidBody, state: RigidBodyState, gravity: typing.Any = True) -> float:
+    """
+    Potential energy of uniform gravity, -m g.p_W [J] (True = (0, 0, -9.81) m/s^2, or (3,) in W).
+    """
+@typing.overload
+def potential_energy(body: Particle, state: ParticleState, gravity: typing.Any = True) -> float:
+    """
+    Particle: -m g.p_W [J] (True = (0, 0, -9.81) m/s^2, or (3,) in W).
+    """
+@typing.overload
+def potential_energy(body: PlanarBody, state: PlanarBodyState, gravity: typing.Any) -> float:
+    """
+    PlanarBody: -m g.p_W [J] for in-plane gravity g (2,) [m/s^2] in W.
+    """
+@typing.overload
+def power(state: RigidBodyState, f_W: typing.Any, n_B: typing.Any) -> float:
+    """
+    Power [W] of a force f_W (3,) [N] in W at the centre of mass and a moment n_B (3,) [N m] about it in B: f_W.v_W + n_B.w_B.
+    """
+@typing.overload
+def power(state: ParticleState, f_W: typing.Any) -> float:
+    """
+    Particle: power f_W.v_W [W] of a force f_W (3,) [N] in W.
+    """
+@typing.overload
+def power(state: PlanarBodyState, f_W: typing.Any, n: typing.SupportsFloat | typing.SupportsIndex) -> float:
+    """
+    PlanarBody: power f_W.v_W + n omega [W] of a force f_W (2,) [N] in W at the centre of mass and a moment n [N m] about it.
+    """
+def principal_axes(inertia: typing.Any) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    """
+    Principal moments and axes of symmetric inertias (3,3) or (n,3,3) [kg m^2] (lower triangles read):
+    returns (moments (3,) or (n,3) ascending, axes (3,3) or (n,3,3) with column k the axis of
+    moments[k], right-handed, canonical when moments coincide). Releases the GIL.
+    """
+def quat_integrate(q: typing.Any, w: typing.Any, dt: typing.Any, frame: typing.Any = 'body', scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Exact attitude update for an angular velocity w [rad/s] constant over dt [s].
+    
+    frame='body': q ⊗ exp(w dt/2), w = w_B expressed in the body frame;
+    frame='world': exp(w dt/2) ⊗ q, w = w_W expressed in the world frame;
+    exp of a pure vector u is (sin|u| u/|u|, cos|u|).
+    q: (4,) or (n, 4) unit quaternions q_WB; w: (3,) or (n, 3); dt: float.
+    Returns (4,) or (n, 4), normalised, (x, y, z, w) or (w, x, y, z) if scalar_first.
+    """
+def quat_inverse(q: typing.Any, scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Inverse (conjugate) of unit quaternions: q_BW from q_WB. q: (4,) or (n, 4); returns the same shape.
+    """
+def quat_multiply(q1: typing.Any, q2: typing.Any, scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Hamilton product q1 ⊗ q2 of unit quaternions: R(q1 ⊗ q2) = R(q1) R(q2) (q2 applied first).
+    
+    q1, q2: (4,) or (n, 4) each (a single one is used with every item of the other).
+    Returns (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first.
+    """
+def quat_normalize(q: typing.Any, scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    q / |q| for finite non-zero quaternions of any norm (ValueError for q = 0).
+    q: (4,) or (n, 4); returns the same shape, sign unchanged.
+    """
+def quat_rotate(q: typing.Any, v: typing.Any, scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    R(q) v: vectors rotated actively by unit quaternions (v_W = R_WB v_B for q = q_WB).
+    
+    q: (4,) or (n, 4); v: (3,) or (n, 3) (a single one is used with every item of the other).
+    Returns (3,) or (n, 3).
+    """
+def quat_to_axis_angle(q: typing.Any, scalar_first: bool = False) -> tuple[numpy.typing.NDArray[numpy.float64], typing.Any]:
+    """
+    Axis (unit) and angle [rad] in [0, pi] of unit quaternions; the identity gives axis (1, 0, 0), angle 0.
+    
+    q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first.
+    Returns (axis, angle): ((3,), float) or ((n, 3), (n,)).
+    """
+def quat_to_euler(seq: typing.Any, q: typing.Any, scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Euler angles [rad] of unit quaternions (Bernardes & Viollet 2022).
+    
+    seq: 3 letters as SciPy, lowercase 'xyz' = extrinsic (fixed axes), uppercase 'XYZ' = intrinsic
+    (moving axes); the 12 sequences xyz xzy yxz yzx zxy zyx xyx xzx yxy yzy zxz zyz in either case.
+    q: (4,) or (n, 4). Returns (3,) or (n, 3): first and third in [-pi, pi], second in [0, pi] (proper)
+    or [-pi/2, pi/2] (Tait-Bryan). At gimbal lock the third angle is set to 0, as SciPy does.
+    """
+def quat_to_matrix(q: typing.Any, scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Rotation matrix R(q) of unit quaternions.
+    
+    q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first; unit norm within 1e-6.
+    Returns R: (3, 3) or (n, 3, 3), active (R v rotates v; q_WB gives R_WB).
+    """
+def quat_to_rotvec(q: typing.Any, scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Logarithm map: rotation vector angle * axis [rad] of unit quaternions, angle in [0, pi].
+    
+    q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first. Returns (3,) or (n, 3).
+    Accurate near angle 0 and near pi (atan2 form).
+    """
+def relative_kinematics(K_WA: FrameKinematics, K_WF: FrameKinematics) -> FrameKinematics:
+    """
+    F relative to A from A and F relative to a common frame W; expressed in A. Inverse of compose_kinematics.
+    """
+def require_closed_oriented_mesh(faces: typing.Any, n_vertices: typing.SupportsInt | typing.SupportsIndex) -> None:
+    """
+    ValueError unless faces (f, 3) index [0, n_vertices) and form a closed, consistently oriented mesh.
+    """
+def rot_x(angle: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Elementary rotation about x by angle [rad] (active): [[1, 0, 0], [0, c, -s], [0, s, c]].
+    angle: float or (n,). Returns (3, 3) or (n, 3, 3).
+    """
+def rot_y(angle: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Elementary rotation about y by angle [rad] (active): [[c, 0, s], [0, 1, 0], [-s, 0, c]].
+    angle: float or (n,). Returns (3, 3) or (n, 3, 3).
+    """
+def rot_z(angle: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Elementary rotation about z by angle [rad] (active): [[c, -s, 0], [s, c, 0], [0, 0, 1]].
+    angle: float or (n,). Returns (3, 3) or (n, 3, 3).
+    """
+def rotvec_to_matrix(rotvec: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Exponential map into rotation matrices (Rodrigues): rotvec = angle * axis [rad], (3,) or (n, 3).
+    Returns R: (3, 3) or (n, 3, 3).
+    """
+def rotvec_to_quat(rotvec: typing.Any, scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Exponential map: unit quaternion of rotation vectors rotvec = angle * axis [rad] (any angle; exact near 0).
+    
+    rotvec: (3,) or (n, 3). Returns q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first;
+    w < 0 when the angle exceeds pi (no sign flip).
+    """
+def screw_to_twist(screw: Screw) -> Motion:
+    """
+    The twist of a screw: w = magnitude direction, v = magnitude (point x direction + pitch direction)
+    (v = magnitude direction for pitch inf).
+    """
+@typing.overload
+def simulate(model: RigidBody, initial: RigidBodyState, dt: typing.SupportsFloat | typing.SupportsIndex, steps: typing.SupportsInt | typing.SupportsIndex, method: str = 'rk4', record_every: typing.SupportsInt | typing.SupportsIndex = 1, loads: typing.Any = None, gravity: typing.Any = None, t0: typing.SupportsFloat | typing.SupportsIndex = 0.0, scalar_first: bool = False) -> SimulationResult:
+    """
+    Integrate `model` from `initial` over `steps` fixed steps of `dt` [s] with `method` (see methods()),
+    in C++ with the GIL released, and record every `record_every`-th step (plus the first and the last).
+    
+    model/initial: Particle/ParticleState, PlanarBody/PlanarBodyState or RigidBody/RigidBodyState.
+    loads: an AppliedLoad or a sequence of them (piecewise-constant schedule; the loads active at the start
+      of a step act during the whole step). gravity: None/False (none), True ((0, 0, -9.81) m/s^2 in W) or a
+      3-vector [m/s^2] in W. t0: initial time [s]. scalar_first: quaternions as (w, x, y, z).
+    
+    Returns a SimulationResult, arrays with one row per record (n records): t (n,) [s]; p_W (n, 3) [m];
+    q_WB (n, 4) (x, y, z, w); v_W (n, 3) [m/s]; w_B (n, 3) [rad/s]; kinetic_energy (n,) [J];
+    total_energy (n,) kinetic + gravity potential [J]; angular_momentum_norm (n,) |H_G| [kg m^2/s];
+    quaternion_norm_error (n,) |q| - 1; work (n,) work of loads and gravity since t0 [J], integrated by the
+    same method (kinetic_energy - kinetic_energy[0] ~ work); diverged; elapsed_seconds (C++ loop wall time).
+    A particle records q = identity, w = 0; a planar body p = (x, y, 0), q = Rz(theta), w = (0, 0, omega).
+    Warns RuntimeWarning and stops if the state becomes non-finite. ValueError names a bad argument.
+    """
+@typing.overload
+def simulate(model: PlanarBody, initial: PlanarBodyState, dt: typing.SupportsFloat | typing.SupportsIndex, steps: typing.SupportsInt | typing.SupportsIndex, method: str = 'rk4', record_every: typing.SupportsInt | typing.SupportsIndex = 1, loads: typing.Any = None, gravity: typing.Any = None, t0: typing.SupportsFloat | typing.SupportsIndex = 0.0, scalar_first: bool = False) -> SimulationResult:
+    """
+    Integrate `model` from `initial` over `steps` fixed steps of `dt` [s] with `method` (see methods()),
+    in C++ with the GIL released, and record every `record_every`-th step (plus the first and the last).
+    
+    model/initial: Particle/ParticleState, PlanarBody/PlanarBodyState or RigidBody/RigidBodyState.
+    loads: an AppliedLoad or a sequence of them (piecewise-constant schedule; the loads active at the start
+      of a step act during the whole step). gravity: None/False (none), True ((0, 0, -9.81) m/s^2 in W) or a
+      3-vector [m/s^2] in W. t0: initial time [s]. scalar_first: quaternions as (w, x, y, z).
+    
+    Returns a SimulationResult, arrays with one row per record (n records): t (n,) [s]; p_W (n, 3) [m];
+    q_WB (n, 4) (x, y, z, w); v_W (n, 3) [m/s]; w_B (n, 3) [rad/s]; kinetic_energy (n,) [J];
+    total_energy (n,) kinetic + gravity potential [J]; angular_momentum_norm (n,) |H_G| [kg m^2/s];
+    quaternion_norm_error (n,) |q| - 1; work (n,) work of loads and gravity since t0 [J], integrated by the
+    same method (kinetic_energy - kinetic_energy[0] ~ work); diverged; elapsed_seconds (C++ loop wall time).
+    A particle records q = identity, w = 0; a planar body p = (x, y, 0), q = Rz(theta), w = (0, 0, omega).
+    Warns RuntimeWarning and stops if the state becomes non-finite. ValueError names a bad argument.
+    """
+@typing.overload
+def simulate(model: Particle, initial: ParticleState, dt: typing.SupportsFloat | typing.SupportsIndex, steps: typing.SupportsInt | typing.SupportsIndex, method: str = 'rk4', record_every: typing.SupportsInt | typing.SupportsIndex = 1, loads: typing.Any = None, gravity: typing.Any = None, t0: typing.SupportsFloat | typing.SupportsIndex = 0.0, scalar_first: bool = False) -> SimulationResult:
+    """
+    Integrate `model` from `initial` over `steps` fixed steps of `dt` [s] with `method` (see methods()),
+    in C++ with the GIL released, and record every `record_every`-th step (plus the first and the last).
+    
+    model/initial: Particle/ParticleState, PlanarBody/PlanarBodyState or RigidBody/RigidBodyState.
+    loads: an AppliedLoad or a sequence of them (piecewise-constant schedule; the loads active at the start
+      of a step act during the whole step). gravity: None/False (none), True ((0, 0, -9.81) m/s^2 in W) or a
+      3-vector [m/s^2] in W. t0: initial time [s]. scalar_first: quaternions as (w, x, y, z).
+    
+    Returns a SimulationResult, arrays with one row per record (n records): t (n,) [s]; p_W (n, 3) [m];
+    q_WB (n, 4) (x, y, z, w); v_W (n, 3) [m/s]; w_B (n, 3) [rad/s]; kinetic_energy (n,) [J];
+    total_energy (n,) kinetic + gravity potential [J]; angular_momentum_norm (n,) |H_G| [kg m^2/s];
+    quaternion_norm_error (n,) |q| - 1; work (n,) work of loads and gravity since t0 [J], integrated by the
+    same method (kinetic_energy - kinetic_energy[0] ~ work); diverged; elapsed_seconds (C++ loop wall time).
+    A particle records q = identity, w = 0; a planar body p = (x, y, 0), q = Rz(theta), w = (0, 0, omega).
+    Warns RuntimeWarning and stops if the state becomes non-finite. ValueError names a bad argument.
+    """
+def solid_box(size: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
+    """
+    Solid box, edges size (3,) [m] along x, y, z. Density [kg/m^3]. Give exactly one of mass= [kg] or density=.
+    """
+def solid_capsule(radius: typing.SupportsFloat | typing.SupportsIndex, length: typing.SupportsFloat | typing.SupportsIndex, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
+    """
+    Solid capsule along z: cylinder of the given length [m] plus two hemispherical caps of radius [m].
+    Density [kg/m^3]. Give exactly one of mass= [kg] or density=.
+    """
+def solid_cone(radius: typing.SupportsFloat | typing.SupportsIndex, height: typing.SupportsFloat | typing.SupportsIndex, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
+    """
+    Solid cone, axis z, apex at z = 3h/4, base at z = -h/4 (com at origin): I_zz = 3/10 m r^2,
+    I_xx = m (3/20 r^2 + 3/80 h^2). Density [kg/m^3]. Give exactly one of mass= [kg] or density=.
+    """
+def solid_cylinder(radius: typing.SupportsFloat | typing.SupportsIndex, height: typing.SupportsFloat | typing.SupportsIndex, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
+    """
+    Solid cylinder, axis z: I_zz = m r^2/2, I_xx = m (3 r^2 + h^2)/12. Density [kg/m^3]. Give exactly one of mass= [kg] or density=.
+    """
+def solid_ellipsoid(semi_axes: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
+    """
+    Solid ellipsoid, semi-axes (3,) [m]: I = m/5 diag(b^2+c^2, a^2+c^2, a^2+b^2). Density [kg/m^3]. Give exactly one of mass= [kg] or density=.
+    """
+def solid_mesh(vertices: typing.Any, faces: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
+    """
+    Solid bounded by a closed, outward-oriented triangle mesh: vertices (n, 3) [m], faces (f, 3),
+    exact (divergence theorem). ValueError naming the first open or misoriented edge, or an inward
+    orientation. Give exactly one of mass= [kg] or density= [kg/m^3]. (rigiddyn.solid_mesh also accepts
+    a trimesh object.)
+    """
+def solid_sphere(radius: typing.SupportsFloat | typing.SupportsIndex, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
+    """
+    Solid sphere, radius [m]: I = 2/5 m r^2 1. Density [kg/m^3]. Give exactly one of mass= [kg] or density=.
+    """
+def solid_tetrahedron(vertices: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
+    """
+    Solid tetrahedron with vertices (4, 3) [m], expressed in their frame. Density [kg/m^3]. Give exactly
+    one of mass= [kg] or density=.
+    """
+def spherical_shell(radius: typing.SupportsFloat | typing.SupportsIndex, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
+    """
+    Thin spherical surface [m]: I = 2/3 m r^2 1. Density [kg/m^2]. Give exactly one of mass= [kg] or density=.
+    """
+@typing.overload
+def step(model: RigidBody, state: RigidBodyState, dt: typing.SupportsFloat | typing.SupportsIndex, method: str = 'rk4', loads: typing.Any = None, gravity: typing.Any = None, t: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> RigidBodyState:
+    """
+    One step of `method` (see methods()) of length dt [s] from `state` at time t [s] under `loads`
+    (AppliedLoad or sequence) and `gravity` (None/False, True for (0, 0, -9.81) m/s^2, or a 3-vector).
+    Returns the new state (same type as `state`). ValueError names a bad argument.
+    """
+@typing.overload
+def step(model: PlanarBody, state: PlanarBodyState, dt: typing.SupportsFloat | typing.SupportsIndex, method: str = 'rk4', loads: typing.Any = None, gravity: typing.Any = None, t: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> PlanarBodyState:
+    """
+    One step of `method` (see methods()) of length dt [s] from `state` at time t [s] under `loads`
+    (AppliedLoad or sequence) and `gravity` (None/False, True for (0, 0, -9.81) m/s^2, or a 3-vector).
+    Returns the new state (same type as `state`). ValueError names a bad argument.
+    """
+@typing.overload
+def step(model: Particle, state: ParticleState, dt: typing.SupportsFloat | typing.SupportsIndex, method: str = 'rk4', loads: typing.Any = None, gravity: typing.Any = None, t: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> ParticleState:
+    """
+    One step of `method` (see methods()) of length dt [s] from `state` at time t [s] under `loads`
+    (AppliedLoad or sequence) and `gravity` (None/False, True for (0, 0, -9.81) m/s^2, or a 3-vector).
+    Returns the new state (same type as `state`). ValueError names a bad argument.
+    """
+def thin_disk(radius: typing.SupportsFloat | typing.SupportsIndex, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
+    """
+    Thin disk in the xy plane: I = m r^2 diag(1/4, 1/4, 1/2). Density [kg/m^2]. Give exactly one of mass= [kg] or density=.
+    """
+def thin_plate(size_x: typing.SupportsFloat | typing.SupportsIndex, size_y: typing.SupportsFloat | typing.SupportsIndex, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
+    """
+    Thin plate in the xy plane: I = m/12 diag(b^2, a^2, a^2 + b^2). Density [kg/m^2]. Give exactly one of mass= [kg] or density=.
+    """
+def thin_rod(length: typing.SupportsFloat | typing.SupportsIndex, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
+    """
+    Thin rod along z: I_xx = I_yy = m L^2/12. Density [kg/m]. Give exactly one of mass= [kg] or density=.
+    """
+def transform_compose(R_AB: typing.Any, p_AB: typing.Any, R_BC: typing.Any, p_BC: typing.Any) -> tuple:
+    """
+    X_AC = X_AB * X_BC item by item: R_AC = R_AB R_BC, p_AC = R_AB p_BC + p_AB. Rotations (3,3) or
+    (n,3,3), translations (3,) or (n,3) [m]; single items broadcast. Returns (R_AC, p_AC).
+    """
+def transform_points(R_AB: typing.Any, p_AB: typing.Any, p_B: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    p_A = R_AB p_B + p_AB item by item: R_AB (3,3)|(n,3,3), p_AB (3,)|(n,3), p_B (3,)|(n,3) [m];
+    single items broadcast.
+    """
+def transport_derivative(w_AB: typing.Any, u: typing.Any, du_dt_in_B: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Transport theorem (seed 001): d^A u/dt = d^B u/dt + w_AB x u. All (3,), expressed in one frame.
+    """
+def twist_to_screw(twist: Motion) -> Screw:
+    """
+    The screw (instantaneous screw axis) of a twist [w; v]: direction w/|w|, point (w x v)/|w|^2,
+    pitch (w . v)/|w|^2, magnitude |w|; for w = 0: pitch inf, direction v/|v|, point 0, magnitude |v|.
+    ValueError for the zero twist (no axis).
+    """
+def vee(S: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Inverse of hat: v with hat(v) = (S - S^T)/2 (a symmetric part of S is ignored).
+    S: (3, 3) or (n, 3, 3); returns (3,) or (n, 3).
+    """
+__version__: str = '0.1.0'
+inertia_relative_tolerance: float = 1e-10
