@@ -19,6 +19,9 @@ if ((${#missing[@]})); then
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${missing[@]}"
 fi
 
+# reuse earlier compilations when ccache is there (CMake reads this variable; optional)
+if command -v ccache >/dev/null 2>&1; then export CMAKE_CXX_COMPILER_LAUNCHER=ccache; fi
+
 python3 -m pip install --quiet ".[test]"
 python3 -m pytest
 
