@@ -27,4 +27,11 @@ python3 -m pytest
 
 cmake --preset test
 cmake --build --preset test -j 2
-ctest --preset test -j 2
+ctest --preset test -j 2 --label-exclude bench
+# benchmarks at a small size, one at a time (timings), then their rigiddyn/baseline ratios
+log=build/test/benchmarks.log
+if ! ctest --preset test --label-regex bench --verbose > "$log" 2>&1; then
+  cat "$log"
+  exit 1
+fi
+grep -E "ratio|rigiddyn/|Test +#" "$log" || true
