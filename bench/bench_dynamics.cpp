@@ -177,9 +177,11 @@ void baseline(benchmark::State& state) {
 }
 
 // ---- rigiddyn: the library's model and integrator templates ------------------------------------
+// The model simulate() runs for this scene: a free body (no loads, no gravity: LoadKind::none, what
+// with_load_kind picks), as the baselines, whose run-time zero force stands for "no loads" too.
 template <class Integrator, class Euler>
 void library(benchmark::State& state, const Euler& euler) {
-  const RigidBodyModel<Euler> model(1.0, euler);
+  const RigidBodyModel<Euler, LoadKind::none> model(1.0, euler);
   RigidBodyState s0;
   s0.w_B = w0;
   const std::int64_t n = steps();

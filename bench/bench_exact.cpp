@@ -4,6 +4,7 @@
 // ω0 = (0.01, 2, 0.01) rad/s.
 #include <benchmark/benchmark.h>
 
+#include "baselines.hpp"
 #include "bench_common.hpp"
 #include "rigiddyn/exact/free_body.hpp"
 
@@ -29,34 +30,12 @@ void free_body_state_rigiddyn(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * n);
 }
 
-// baseline: n steps of classic RK4 on y = (ω, q), ω̇ = I⁻¹((I ω) × ω), q̇ = q ⊗ (0, ω)/2, q renormalised
+// baseline: n steps of classic RK4 on y = (ω, q), q renormalised (bench/baselines.hpp)
 void free_body_state_baseline(benchmark::State& state) {
   const std::int64_t n = rigiddyn::bench::bench_size(100000, 1000);
-  const double h = 0.01;
-  const Eigen::Vector3d I = kInertia, I_inv = kInertia.cwiseInverse();
-  using Vector7d = Eigen::Matrix<double, 7, 1>;
-  const auto f = [&](const Vector7d& y) {
-    const Eigen::Vector3d w = y.head<3>();
-    const Eigen::Quaterniond q(y(6), y(3), y(4), y(5));
-    Vector7d d;
-    d.head<3>() = I_inv.cwiseProduct(I.cwiseProduct(w).cross(w));
-    const Eigen::Quaterniond q_dot = q * Eigen::Quaterniond(0.0, 0.5 * w.x(), 0.5 * w.y(), 0.5 * w.z());
-    d.segment<3>(3) = q_dot.vec();
-    d(6) = q_dot.w();
-    return d;
-  };
   for (auto _ : state) {
-    Vector7d y;
-    y << initial_w(static_cast<int>(state.range(0))), 0.0, 0.0, 0.0, 1.0;
-    for (std::int64_t i = 0; i < n; ++i) {
-      const Vector7d k1 = f(y);
-      const Vector7d k2 = f(y + 0.5 * h * k1);
-      const Vector7d k3 = f(y + 0.5 * h * k2);
-      const Vector7d k4 = f(y + h * k3);
-      y += h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
-      y.tail<4>().normalize();
-    }
-    benchmark::DoNotOptimize(y);
+    benchmark::DoNotOptimize(
+        rigiddyn::bench::rk4_free_body_baseline(kInertia, initial_w(static_cast<int>(state.range(0))), 0.01, n));
   }
   state.SetItemsProcessed(state.iterations() * n);
 }

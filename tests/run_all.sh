@@ -34,4 +34,4 @@ if ! ctest --preset test --label-regex bench --verbose > "$log" 2>&1; then
   cat "$log"
   exit 1
 fi
-grep -E "ratio|rigiddyn/|Test +#" "$log" || true
+grep -E ": ratio |Test +#" "$log" || true

@@ -14,23 +14,14 @@ The hand-written C++ loop comparison is in bench/bench_dynamics.cpp (ratio lines
     python bench/python/bench_dynamics.py --small   # n = 1e5 (what ctest runs)
 """
 
-import argparse
-import sys
 import time
-from pathlib import Path
 
 import numpy as np
 
 import rigiddyn as rd
+from _bench_common import import_reference, parse_small
 
-try:
-    from rigiddyn_ref import integrators as ref
-except ImportError:  # run by hand from a checkout
-    sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "tests" / "reference"))
-    try:
-        from rigiddyn_ref import integrators as ref
-    except ImportError:
-        ref = None
+ref = import_reference("integrators")
 
 METHODS = ["explicit_euler", "semi_implicit_euler", "semi_implicit_euler_implicit_gyroscopic", "rk4", "rkmk4"]
 INERTIA = np.diag([1.0, 2.0, 3.0])
@@ -60,9 +51,7 @@ def reference_per_step(method, steps):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--small", action="store_true", help="1e5 steps (ctest)")
-    args = parser.parse_args()
+    args = parse_small(__doc__, "1e5 steps (ctest)")
     steps = 100_000 if args.small else 1_000_000
     ref_steps = 500 if args.small else 5000
     print(f"simulate, free rigid body, {steps} steps, record every 1000th")

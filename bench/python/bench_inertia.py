@@ -5,22 +5,12 @@ axes of 1e6 inertias through the (n, 3, 3) array API vs numpy.linalg.eigh. Print
 
 from __future__ import annotations
 
-import argparse
 import importlib
-import time
 
 import numpy as np
 
 import rigiddyn as rd
-
-
-def best_time(f, repeat: int = 3) -> float:
-    best = float("inf")
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        f()
-        best = min(best, time.perf_counter() - t0)
-    return best
+from _bench_common import best_time, import_reference, parse_small, report_ratio
 
 
 def uv_sphere(triangles: int) -> tuple[np.ndarray, np.ndarray]:
@@ -41,9 +31,7 @@ def uv_sphere(triangles: int) -> tuple[np.ndarray, np.ndarray]:
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__)
-    parser.add_argument("--small", action="store_true", help="small sizes (ctest)")
-    args = parser.parse_args()
+    args = parse_small(__doc__, "small sizes (ctest)")
     n_tri = 2_000 if args.small else 100_000
     n_inertia = 10_000 if args.small else 1_000_000
 
@@ -57,19 +45,16 @@ def main() -> None:
         t_tm = best_time(lambda: trimesh.Trimesh(V, F, process=False).mass_properties)
         tm = trimesh.Trimesh(V, F, process=False)
         assert np.allclose(tm.moment_inertia, body.inertia_com, atol=1e-12)
-        print(f"ratio solid_mesh vs trimesh: trimesh {t_tm * 1e3:.3f} ms, rigiddyn/trimesh = {t_rd / t_tm:.3f}")
+        report_ratio("solid_mesh", len(F), t_rd, t_tm, "trimesh")
     except ImportError:
         print("trimesh not installed: skipped")
-    try:
-        ref = importlib.import_module("rigiddyn_ref.inertia")
-        fn = getattr(ref, "solid_mesh", None) or getattr(ref, "mesh_inertia", None)
-        if fn is None:
-            print("rigiddyn_ref.inertia has no solid_mesh/mesh_inertia: skipped")
-        else:
-            t_ref = best_time(lambda: fn(V, F, density=1.0))
-            print(f"ratio solid_mesh vs rigiddyn_ref: ref {t_ref * 1e3:.3f} ms, rigiddyn/ref = {t_rd / t_ref:.3f}")
-    except Exception as exc:  # the reference is optional and written elsewhere
-        print(f"rigiddyn_ref.inertia unavailable ({type(exc).__name__}: {exc}): skipped")
+    ref = import_reference("inertia")  # optional, written elsewhere
+    fn = getattr(ref, "solid_mesh", None) or getattr(ref, "mesh_inertia", None)
+    if fn is None:
+        print("rigiddyn_ref.inertia has no solid_mesh/mesh_inertia: skipped")
+    else:
+        t_ref = best_time(lambda: fn(V, F, density=1.0))
+        report_ratio("solid_mesh", len(F), t_rd, t_ref, "numpy_ref")
 
     rng = np.random.default_rng(0)
     A = rng.normal(size=(n_inertia, 3, 3))
@@ -79,7 +64,7 @@ def main() -> None:
     moments, _ = rd.principal_axes(I)
     assert np.allclose(moments, np.linalg.eigh(I)[0], atol=1e-10)
     print(f"principal_axes ({n_inertia} inertias): rigiddyn {t_pa * 1e3:.1f} ms, numpy.linalg.eigh {t_np * 1e3:.1f} ms")
-    print(f"ratio principal_axes vs numpy.linalg.eigh: rigiddyn/numpy = {t_pa / t_np:.3f}")
+    report_ratio("principal_axes", n_inertia, t_pa, t_np, "numpy_eigh")
 
 
 if __name__ == "__main__":

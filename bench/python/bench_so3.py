@@ -10,37 +10,13 @@ The reference is imported from tests/reference (on PYTHONPATH under ctest, or fo
 repository's tests/ when run by hand).
 """
 
-import argparse
-import sys
-import time
-from pathlib import Path
-
 import numpy as np
 
 import rigiddyn as rd
+from _bench_common import best_time, import_reference, parse_small
+from _bench_common import report_ratio as report
 
-try:
-    from rigiddyn_ref import so3 as ref
-except ImportError:  # run by hand from a checkout
-    sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "tests" / "reference"))
-    from rigiddyn_ref import so3 as ref
-
-
-def best_time(fn, repeats):
-    """The fastest of `repeats` runs [s] (the least disturbed by other load)."""
-    best = float("inf")
-    for _ in range(repeats):
-        start = time.perf_counter()
-        fn()
-        best = min(best, time.perf_counter() - start)
-    return best
-
-
-def report(case, n, t_rd, t_other, other):
-    print(
-        f"ratio {case}/{n}: rigiddyn {t_rd / n * 1e9:.2f} ns/op, {other} {t_other / n * 1e9:.2f} ns/op, "
-        f"rigiddyn/{other} = {t_rd / t_other:.3f}"
-    )
+ref = import_reference("so3")
 
 
 def check(case, a, b):
@@ -59,9 +35,7 @@ def rotate_numpy(q, v):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--small", action="store_true", help="1e4 items instead of 1e6")
-    args = parser.parse_args()
+    args = parse_small(__doc__, "1e4 items instead of 1e6")
     n = 10_000 if args.small else 1_000_000
     repeats = 5 if args.small else 3
 

@@ -10,30 +10,13 @@ The reference is imported from tests/reference (on PYTHONPATH under ctest, or fo
 repository's tests/ when run by hand).
 """
 
-import argparse
-import sys
-import time
-from pathlib import Path
-
 import numpy as np
 
 import rigiddyn as rd
+from _bench_common import best_time, import_reference, parse_small
+from _bench_common import report_ratio as report
 
-try:
-    from rigiddyn_ref import spatial as ref
-except ImportError:  # run by hand from a checkout
-    sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "tests" / "reference"))
-    from rigiddyn_ref import spatial as ref
-
-
-def best_time(fn, repeats):
-    """The fastest of `repeats` runs [s] (the least disturbed by other load)."""
-    best = float("inf")
-    for _ in range(repeats):
-        start = time.perf_counter()
-        fn()
-        best = min(best, time.perf_counter() - start)
-    return best
+ref = import_reference("spatial")
 
 
 def random_rotations(rng, n):
@@ -51,17 +34,8 @@ def random_rotations(rng, n):
     )
 
 
-def report(case, n, t_rd, t_ref, ref_name):
-    print(
-        f"ratio {case}/{n}: rigiddyn {t_rd / n * 1e9:.2f} ns/op, {ref_name} {t_ref / n * 1e9:.2f} ns/op, "
-        f"rigiddyn/{ref_name} = {t_rd / t_ref:.3f}"
-    )
-
-
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--small", action="store_true", help="1e4 items instead of 1e6")
-    args = parser.parse_args()
+    args = parse_small(__doc__, "1e4 items instead of 1e6")
     n = 10_000 if args.small else 1_000_000
     repeats = 5 if args.small else 3
 

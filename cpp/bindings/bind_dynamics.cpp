@@ -93,6 +93,7 @@ Array adopt(std::vector<double>&& data, std::vector<py::ssize_t> shape) {
 struct SimulationResult {
   Array t, p_W, q_WB, v_W, w_B, kinetic_energy, total_energy, angular_momentum_norm, quaternion_norm_error, work;
   bool diverged;
+  std::int64_t unconverged_steps;
   double elapsed_seconds;
 };
 
@@ -116,6 +117,7 @@ SimulationResult to_result(Trajectory&& tr, bool scalar_first) {
                           adopt(std::move(tr.quaternion_norm_error), {n}),
                           adopt(std::move(tr.work), {n}),
                           tr.diverged,
+                          tr.unconverged_steps,
                           tr.elapsed_seconds};
 }
 
@@ -136,6 +138,13 @@ SimulationResult simulate_py(const Body& body, const State& initial, double dt, 
                             " (method '" + method + "', dt = " + format_value(dt) + "); the run stopped there";
     if (PyErr_WarnEx(PyExc_RuntimeWarning, msg.c_str(), 1) != 0) throw py::error_already_set();
   }
+  if (tr.unconverged_steps > 0) {
+    const std::string msg = "simulate: the implicit solve of method '" + method + "' did not converge in " +
+                            std::to_string(tr.unconverged_steps) + " of " + std::to_string(steps) +
+                            " steps at dt = " + format_value(dt) +
+                            " (its conservation is lost there); reduce dt (see methods() stability_limit)";
+    if (PyErr_WarnEx(PyExc_RuntimeWarning, msg.c_str(), 1) != 0) throw py::error_already_set();
+  }
   return to_result(std::move(tr), scalar_first);
 }
 
@@ -143,10 +152,6 @@ template <class Body, class State>
 State step_py(const Body& body, const State& state, double dt, const std::string& method, py::handle loads,
               py::handle gravity, double t) {
   return step(body, state, as_options(dt, method, loads, gravity, t));
-}
-
-Eigen::Vector3d optional_vector3(py::handle obj, const std::string& name) {
-  return obj.is_none() ? Eigen::Vector3d::Zero() : py_io::as_vector3(obj, name);
 }
 
 // forward/inverse dynamics, momentum, energy, power and impulse of a RigidBody
@@ -160,8 +165,8 @@ void bind_dynamics_functions(py::module_& m) {
       "forward_dynamics",
       [](const RigidBody& body, const RigidBodyState& state, py::handle force, py::handle torque, py::handle point,
          const std::string& frame, py::handle gravity) {
-        const ComWrench w = wrench_at_com(state.q_WB, optional_vector3(force, "force"), optional_vector3(torque, "torque"),
-                                          optional_vector3(point, "point"), as_frame(frame));
+        const ComWrench w = wrench_at_com(state.q_WB, py_io::as_vector3_or_zero(force, "force"), py_io::as_vector3_or_zero(torque, "torque"),
+                                          py_io::as_vector3_or_zero(point, "point"), as_frame(frame));
         const BodyAcceleration a = forward_dynamics(body, state, w, as_gravity(gravity));
         return py::make_tuple(py_io::to_array(a.a_W), py_io::to_array(a.alpha_B));
       },
@@ -225,8 +230,8 @@ void bind_dynamics_functions(py::module_& m) {
       "apply_impulse",
       [](const RigidBody& body, const RigidBodyState& state, py::handle impulse, py::handle point,
          const std::string& frame, py::handle angular_impulse) {
-        return apply_impulse(body, state, py_io::as_vector3(impulse, "impulse"), optional_vector3(point, "point"),
-                             as_frame(frame), optional_vector3(angular_impulse, "angular_impulse"));
+        return apply_impulse(body, state, py_io::as_vector3(impulse, "impulse"), py_io::as_vector3_or_zero(point, "point"),
+                             as_frame(frame), py_io::as_vector3_or_zero(angular_impulse, "angular_impulse"));
       },
       py::arg("body"), py::arg("state"), py::arg("impulse"), py::arg("point") = py::none(),
       py::arg("frame") = "world", py::arg("angular_impulse") = py::none(),
@@ -245,7 +250,7 @@ void bind_particle_planar_dynamics_functions(py::module_& m) {
   m.def(
       "forward_dynamics",
       [](const Particle& particle, const ParticleState& state, py::handle force, py::handle gravity) {
-        return py_io::to_array(forward_dynamics(particle, state, optional_vector3(force, "force"), as_gravity(gravity)));
+        return py_io::to_array(forward_dynamics(particle, state, py_io::as_vector3_or_zero(force, "force"), as_gravity(gravity)));
       },
       py::arg("body"), py::arg("state"), py::arg("force") = py::none(), py::arg("gravity") = py::none(),
       "Particle: acceleration a_W (3,) [m/s^2] = force/m + g under a force (3,) [N] in W and gravity "
@@ -379,9 +384,11 @@ Returns a SimulationResult, arrays with one row per record (n records): t (n,) [
 q_WB (n, 4) (x, y, z, w); v_W (n, 3) [m/s]; w_B (n, 3) [rad/s]; kinetic_energy (n,) [J];
 total_energy (n,) kinetic + gravity potential [J]; angular_momentum_norm (n,) |H_G| [kg m^2/s];
 quaternion_norm_error (n,) |q| - 1; work (n,) work of loads and gravity since t0 [J], integrated by the
-same method (kinetic_energy - kinetic_energy[0] ~ work); diverged; elapsed_seconds (C++ loop wall time).
+same method (kinetic_energy - kinetic_energy[0] ~ work); diverged; unconverged_steps (implicit solves that
+hit their iteration cap); elapsed_seconds (C++ loop wall time).
 A particle records q = identity, w = 0; a planar body p = (x, y, 0), q = Rz(theta), w = (0, 0, omega).
-Warns RuntimeWarning and stops if the state becomes non-finite. ValueError names a bad argument.
+Warns RuntimeWarning and stops if the state becomes non-finite; warns RuntimeWarning (naming dt and the
+count) if an implicit solve did not converge. ValueError names a bad argument.
 )doc";
 
 const char* const step_doc = R"doc(
@@ -510,6 +517,9 @@ void bind_dynamics(py::module_& m) {
       .def_readonly("quaternion_norm_error", &SimulationResult::quaternion_norm_error, "(n,) |q| - 1")
       .def_readonly("work", &SimulationResult::work, "(n,) work of loads and gravity since t0 [J]")
       .def_readonly("diverged", &SimulationResult::diverged, "True if the run stopped on a non-finite state")
+      .def_readonly("unconverged_steps", &SimulationResult::unconverged_steps,
+                    "number of steps whose implicit solve stopped at its iteration cap (implicit_midpoint; "
+                    "0 for explicit methods); simulate warns RuntimeWarning when > 0")
       .def_readonly("elapsed_seconds", &SimulationResult::elapsed_seconds, "wall time of the C++ stepping loop [s]");
 
 #define RIGIDDYN_SIMULATE_ARGS                                                                              \

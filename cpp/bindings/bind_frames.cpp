@@ -18,7 +18,9 @@ namespace rigiddyn::bindings {
 
 namespace py = pybind11;
 using py_io::as_matrix3;
+using py_io::as_matrix3_or_identity;
 using py_io::as_vector3;
+using py_io::as_vector3_or_zero;
 using py_io::to_array;
 
 namespace {
@@ -65,12 +67,6 @@ FrameMotion motion_from_python(py::function kinematics_at) {
   });
 }
 
-Eigen::Matrix3d matrix_or_identity(const py::object& obj, const std::string& name) {
-  return obj.is_none() ? Eigen::Matrix3d::Identity() : as_matrix3(obj, name);
-}
-Eigen::Vector3d vector_or_zero(const py::object& obj, const std::string& name) {
-  return obj.is_none() ? Eigen::Vector3d::Zero() : as_vector3(obj, name);
-}
 
 void bind_frame_kinematics(py::module_& m) {
   py::class_<FrameKinematics>(m, "FrameKinematics",
@@ -79,12 +75,12 @@ void bind_frame_kinematics(py::module_& m) {
       .def(py::init([](const py::object& R_PF, const py::object& w_PF_P, const py::object& alpha_PF_P,
                        const py::object& p_PF_P, const py::object& v_PF_P, const py::object& a_PF_P) {
              FrameKinematics K;
-             K.R_PF = matrix_or_identity(R_PF, "R_PF");
-             K.w_PF_P = vector_or_zero(w_PF_P, "w_PF_P");
-             K.alpha_PF_P = vector_or_zero(alpha_PF_P, "alpha_PF_P");
-             K.p_PF_P = vector_or_zero(p_PF_P, "p_PF_P");
-             K.v_PF_P = vector_or_zero(v_PF_P, "v_PF_P");
-             K.a_PF_P = vector_or_zero(a_PF_P, "a_PF_P");
+             K.R_PF = as_matrix3_or_identity(R_PF, "R_PF");
+             K.w_PF_P = as_vector3_or_zero(w_PF_P, "w_PF_P");
+             K.alpha_PF_P = as_vector3_or_zero(alpha_PF_P, "alpha_PF_P");
+             K.p_PF_P = as_vector3_or_zero(p_PF_P, "p_PF_P");
+             K.v_PF_P = as_vector3_or_zero(v_PF_P, "v_PF_P");
+             K.a_PF_P = as_vector3_or_zero(a_PF_P, "a_PF_P");
              check_frame_kinematics(K);
              return K;
            }),
@@ -189,7 +185,7 @@ void bind_frame_motion(py::module_& m) {
       .def_static(
           "fixed",
           [](const py::object& R_PF, const py::object& p_PF_P) {
-            return FrameMotion::fixed(matrix_or_identity(R_PF, "R_PF"), vector_or_zero(p_PF_P, "p_PF_P"));
+            return FrameMotion::fixed(as_matrix3_or_identity(R_PF, "R_PF"), as_vector3_or_zero(p_PF_P, "p_PF_P"));
           },
           py::arg("R_PF") = py::none(), py::arg("p_PF_P") = py::none(),
           "F fixed in P: orientation R_PF (3,3) (None: identity), origin at p_PF_P (3,) [m] in P (None: 0).")
@@ -197,7 +193,7 @@ void bind_frame_motion(py::module_& m) {
           "constant_rotation",
           [](const py::object& axis_P, double rate, const py::object& R_PF0, const py::object& p_PF_P) {
             return FrameMotion::constant_rotation(as_vector3(axis_P, "axis_P"), rate,
-                                                  matrix_or_identity(R_PF0, "R_PF0"), vector_or_zero(p_PF_P, "p_PF_P"));
+                                                  as_matrix3_or_identity(R_PF0, "R_PF0"), as_vector3_or_zero(p_PF_P, "p_PF_P"));
           },
           py::arg("axis_P"), py::arg("rate"), py::arg("R_PF0") = py::none(), py::arg("p_PF_P") = py::none(),
           "Simple angular velocity (seed 001): F turns at `rate` [rad/s] about axis_P (3,) (expressed in P, any\n"

@@ -62,15 +62,18 @@ MeshFaces as_faces(py::handle obj) {
   return Eigen::Map<const MeshFaces>(a.data(), a.shape(0), 3);
 }
 
-Array read_only(const Eigen::Ref<const Eigen::MatrixXd>& value) {
-  Array out = py_io::to_array(value);
-  out.attr("flags").attr("writeable") = false;
-  return out;
-}
-Array read_only3(const Eigen::Vector3d& v) {
-  Array out = py_io::to_array(v);
-  out.attr("flags").attr("writeable") = false;
-  return out;
+using py_io::read_only;
+
+// A body from a triangle mesh (solid_mesh or mesh_shell): vertices (n, 3) [m], faces (f, 3), exactly
+// one of mass= [kg] / density=; the mesh sums run without the GIL.
+template <SpatialInertia (*Build)(const Eigen::Ref<const MeshVertices>&, const Eigen::Ref<const MeshFaces>&,
+                                  MassOrDensity)>
+SpatialInertia mesh_body(py::handle vertices, py::handle faces, const py::object& mass, const py::object& density) {
+  const PointRows v = as_points(vertices, "vertices");
+  const MeshFaces f = as_faces(faces);
+  const MassOrDensity md = mass_or_density(mass, density);
+  py::gil_scoped_release release;
+  return Build(v, f, md);
 }
 
 InertiaCheck check_arg(py::handle check) { return check.cast<InertiaCheck>(); }
@@ -105,9 +108,9 @@ void bind_types(py::module_& m) {
       .def_readonly("finite", &InertiaReport::finite)
       .def_readonly("asymmetry", &InertiaReport::asymmetry, "max |I - I^T| [kg m^2]")
       .def_readonly("symmetric", &InertiaReport::symmetric)
-      .def_property_readonly("principal_moments", [](const InertiaReport& r) { return read_only3(r.principal_moments); },
+      .def_property_readonly("principal_moments", [](const InertiaReport& r) { return read_only(r.principal_moments); },
                              "(3,) ascending I0 <= I1 <= I2 [kg m^2]")
-      .def_property_readonly("triangle_margins", [](const InertiaReport& r) { return read_only3(r.triangle_margins); },
+      .def_property_readonly("triangle_margins", [](const InertiaReport& r) { return read_only(r.triangle_margins); },
                              "(3,) (I1+I2-I0, I0+I2-I1, I0+I1-I2) [kg m^2]; the last is binding")
       .def_readonly("condition_number", &InertiaReport::condition_number, "I2 / I0 (inf when I0 <= 0)")
       .def_readonly("tolerance", &InertiaReport::tolerance, "absolute tolerance of the two checks [kg m^2]")
@@ -119,7 +122,7 @@ void bind_types(py::module_& m) {
       .def("__repr__", [](const InertiaReport& r) { return "InertiaReport(" + r.summary() + ")"; });
 
   py::class_<PrincipalAxes>(m, "PrincipalAxes", "Principal moments (ascending) and axes (columns, right-handed).")
-      .def_property_readonly("moments", [](const PrincipalAxes& p) { return read_only3(p.moments); },
+      .def_property_readonly("moments", [](const PrincipalAxes& p) { return read_only(p.moments); },
                              "(3,) ascending [kg m^2]")
       .def_property_readonly("axes", [](const PrincipalAxes& p) { return read_only(p.axes); },
                              "(3,3): column k is the axis of moments[k]; det +1");
@@ -171,7 +174,7 @@ void bind_spatial_inertia(py::module_& m) {
           },
           "mass"_a, "position"_a, "A point mass [kg] at position (3,) [m].")
       .def_property_readonly("mass", &SpatialInertia::mass, "m [kg]")
-      .def_property_readonly("com", [](const SpatialInertia& I) { return read_only3(I.com()); },
+      .def_property_readonly("com", [](const SpatialInertia& I) { return read_only(I.com()); },
                              "centre of mass (3,) [m], read-only copy")
       .def_property_readonly("inertia_com", [](const SpatialInertia& I) { return read_only(I.inertia_com()); },
                              "rotational inertia about the centre of mass (3,3) [kg m^2], read-only copy")
@@ -384,13 +387,7 @@ void bind_mesh_and_density(py::module_& m) {
       "vertices"_a, "faces"_a, "Signed volume [m^3] of the mesh vertices (n, 3) [m], faces (f, 3).");
   m.def(
       "solid_mesh",
-      [](py::handle vertices, py::handle faces, const py::object& mass, const py::object& density) {
-        const PointRows v = as_points(vertices, "vertices");
-        const MeshFaces f = as_faces(faces);
-        const MassOrDensity md = mass_or_density(mass, density);
-        py::gil_scoped_release release;
-        return solid_mesh(v, f, md);
-      },
+      &mesh_body<solid_mesh>,
       "vertices"_a, "faces"_a, py::kw_only(), "mass"_a = py::none(), "density"_a = py::none(),
       "Solid bounded by a closed, outward-oriented triangle mesh: vertices (n, 3) [m], faces (f, 3),\n"
       "exact (divergence theorem). ValueError naming the first open or misoriented edge, or an inward\n"
@@ -398,13 +395,7 @@ void bind_mesh_and_density(py::module_& m) {
       "a trimesh object.)");
   m.def(
       "mesh_shell",
-      [](py::handle vertices, py::handle faces, const py::object& mass, const py::object& density) {
-        const PointRows v = as_points(vertices, "vertices");
-        const MeshFaces f = as_faces(faces);
-        const MassOrDensity md = mass_or_density(mass, density);
-        py::gil_scoped_release release;
-        return mesh_shell(v, f, md);
-      },
+      &mesh_body<mesh_shell>,
       "vertices"_a, "faces"_a, py::kw_only(), "mass"_a = py::none(), "density"_a = py::none(),
       "Thin shell made of the faces (any orientation, need not be closed): vertices (n, 3) [m], faces\n"
       "(f, 3). Give exactly one of mass= [kg] or density= [kg/m^2].");

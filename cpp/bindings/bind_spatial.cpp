@@ -27,14 +27,7 @@ using py_io::Stack;
 
 namespace {
 
-// A numpy copy of a 3-vector or 3x3 matrix member, read-only so that `m.angular[0] = 1` fails
-// loudly instead of writing to a temporary.
-template <typename Derived>
-Array read_only(const Eigen::MatrixBase<Derived>& value) {
-  Array out = py_io::to_array(value);
-  out.attr("flags").attr("writeable") = false;
-  return out;
-}
+using py_io::read_only;
 
 // Shortest round-trip text of a vector, as Python's float repr: [1.0, 2.5, -3.0].
 std::string list_repr(const Eigen::Vector3d& v) { return py::repr(py_io::to_array(v).attr("tolist")()); }

@@ -43,6 +43,13 @@ Eigen::Matrix<double, 6, 1> as_vector6(py::handle obj, const std::string& name);
 Eigen::Matrix<double, 6, 6> as_matrix6(py::handle obj, const std::string& name);
 // The quaternion's coefficients as given (no normalisation, no norm check: the core checks).
 Eigen::Quaterniond as_quaternion(py::handle obj, const std::string& name, bool scalar_first);
+// Optional arguments: None -> the identity / zero, else as_matrix3 / as_vector3.
+inline Eigen::Matrix3d as_matrix3_or_identity(py::handle obj, const std::string& name) {
+  return obj.is_none() ? Eigen::Matrix3d::Identity() : as_matrix3(obj, name);
+}
+inline Eigen::Vector3d as_vector3_or_zero(py::handle obj, const std::string& name) {
+  return obj.is_none() ? Eigen::Vector3d::Zero() : as_vector3(obj, name);
+}
 
 // Reading and writing one quaternion item of a stack (4 doubles), in the chosen order.
 Eigen::Quaterniond read_quaternion(const double* xyzw_or_wxyz, bool scalar_first);
@@ -57,6 +64,14 @@ Array to_array(const Eigen::MatrixBase<Derived>& m) {
   double* p = out.mutable_data();
   for (Eigen::Index i = 0; i < rows; ++i)
     for (Eigen::Index j = 0; j < cols; ++j) p[i * cols + j] = m(i, j);
+  return out;
+}
+// A read-only numpy copy of a member (vector (n,) or matrix (r, c)), so that `x.com[0] = 1` fails
+// loudly instead of writing to a temporary.
+template <typename Derived>
+Array read_only(const Eigen::MatrixBase<Derived>& value) {
+  Array out = to_array(value);
+  out.attr("flags").attr("writeable") = false;
   return out;
 }
 

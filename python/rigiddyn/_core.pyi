@@ -892,6 +892,11 @@ class SimulationResult:
         (n,) kinetic + gravity potential [J]
         """
     @property
+    def unconverged_steps(self) -> int:
+        """
+        number of steps whose implicit solve stopped at its iteration cap (implicit_midpoint; 0 for explicit methods); simulate warns RuntimeWarning when > 0
+        """
+    @property
     def v_W(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         (n, 3) centre of mass velocity in W [m/s]
@@ -1388,9 +1393,11 @@ def simulate(model: RigidBody, initial: RigidBodyState, dt: typing.SupportsFloat
     q_WB (n, 4) (x, y, z, w); v_W (n, 3) [m/s]; w_B (n, 3) [rad/s]; kinetic_energy (n,) [J];
     total_energy (n,) kinetic + gravity potential [J]; angular_momentum_norm (n,) |H_G| [kg m^2/s];
     quaternion_norm_error (n,) |q| - 1; work (n,) work of loads and gravity since t0 [J], integrated by the
-    same method (kinetic_energy - kinetic_energy[0] ~ work); diverged; elapsed_seconds (C++ loop wall time).
+    same method (kinetic_energy - kinetic_energy[0] ~ work); diverged; unconverged_steps (implicit solves that
+    hit their iteration cap); elapsed_seconds (C++ loop wall time).
     A particle records q = identity, w = 0; a planar body p = (x, y, 0), q = Rz(theta), w = (0, 0, omega).
-    Warns RuntimeWarning and stops if the state becomes non-finite. ValueError names a bad argument.
+    Warns RuntimeWarning and stops if the state becomes non-finite; warns RuntimeWarning (naming dt and the
+    count) if an implicit solve did not converge. ValueError names a bad argument.
     """
 @typing.overload
 def simulate(model: PlanarBody, initial: PlanarBodyState, dt: typing.SupportsFloat | typing.SupportsIndex, steps: typing.SupportsInt | typing.SupportsIndex, method: str = 'rk4', record_every: typing.SupportsInt | typing.SupportsIndex = 1, loads: typing.Any = None, gravity: typing.Any = None, t0: typing.SupportsFloat | typing.SupportsIndex = 0.0, scalar_first: bool = False) -> SimulationResult:
@@ -1407,9 +1414,11 @@ def simulate(model: PlanarBody, initial: PlanarBodyState, dt: typing.SupportsFlo
     q_WB (n, 4) (x, y, z, w); v_W (n, 3) [m/s]; w_B (n, 3) [rad/s]; kinetic_energy (n,) [J];
     total_energy (n,) kinetic + gravity potential [J]; angular_momentum_norm (n,) |H_G| [kg m^2/s];
     quaternion_norm_error (n,) |q| - 1; work (n,) work of loads and gravity since t0 [J], integrated by the
-    same method (kinetic_energy - kinetic_energy[0] ~ work); diverged; elapsed_seconds (C++ loop wall time).
+    same method (kinetic_energy - kinetic_energy[0] ~ work); diverged; unconverged_steps (implicit solves that
+    hit their iteration cap); elapsed_seconds (C++ loop wall time).
     A particle records q = identity, w = 0; a planar body p = (x, y, 0), q = Rz(theta), w = (0, 0, omega).
-    Warns RuntimeWarning and stops if the state becomes non-finite. ValueError names a bad argument.
+    Warns RuntimeWarning and stops if the state becomes non-finite; warns RuntimeWarning (naming dt and the
+    count) if an implicit solve did not converge. ValueError names a bad argument.
     """
 @typing.overload
 def simulate(model: Particle, initial: ParticleState, dt: typing.SupportsFloat | typing.SupportsIndex, steps: typing.SupportsInt | typing.SupportsIndex, method: str = 'rk4', record_every: typing.SupportsInt | typing.SupportsIndex = 1, loads: typing.Any = None, gravity: typing.Any = None, t0: typing.SupportsFloat | typing.SupportsIndex = 0.0, scalar_first: bool = False) -> SimulationResult:
@@ -1426,9 +1435,11 @@ def simulate(model: Particle, initial: ParticleState, dt: typing.SupportsFloat |
     q_WB (n, 4) (x, y, z, w); v_W (n, 3) [m/s]; w_B (n, 3) [rad/s]; kinetic_energy (n,) [J];
     total_energy (n,) kinetic + gravity potential [J]; angular_momentum_norm (n,) |H_G| [kg m^2/s];
     quaternion_norm_error (n,) |q| - 1; work (n,) work of loads and gravity since t0 [J], integrated by the
-    same method (kinetic_energy - kinetic_energy[0] ~ work); diverged; elapsed_seconds (C++ loop wall time).
+    same method (kinetic_energy - kinetic_energy[0] ~ work); diverged; unconverged_steps (implicit solves that
+    hit their iteration cap); elapsed_seconds (C++ loop wall time).
     A particle records q = identity, w = 0; a planar body p = (x, y, 0), q = Rz(theta), w = (0, 0, omega).
-    Warns RuntimeWarning and stops if the state becomes non-finite. ValueError names a bad argument.
+    Warns RuntimeWarning and stops if the state becomes non-finite; warns RuntimeWarning (naming dt and the
+    count) if an implicit solve did not converge. ValueError names a bad argument.
     """
 def solid_box(size: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
     """

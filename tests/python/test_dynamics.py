@@ -9,6 +9,7 @@ from scipy.integrate import solve_ivp
 from scipy.spatial.transform import Rotation
 
 import rigiddyn as rd
+from _helpers import planar_and_rigid_runs
 
 # the methods of this issue (structure-preserving methods of the exact-solution work are tested there)
 METHODS = ["explicit_euler", "semi_implicit_euler", "semi_implicit_euler_implicit_gyroscopic", "rk4", "rkmk4"]
@@ -126,12 +127,7 @@ def test_particle_equals_non_rotating_rigid_body(method):
 def test_planar_body_equals_rigid_body_kept_in_plane(method):
     loads = [rd.AppliedLoad(force=[0.5, -1.0, 0.0], torque=[0, 0, 0.3]),
              rd.AppliedLoad(force=[1.0, 0.4, 0.0], torque=[0, 0, -0.1], frame="body", t_start=0.1)]
-    planar = rd.simulate(rd.PlanarBody(2.0, 0.7), rd.PlanarBodyState([0.1, 0.2], 0.4, [1.0, -0.5], 2.0),
-                         0.005, 200, method=method, loads=loads, gravity=[0, -9.81, 0])
-    spatial = rd.simulate(rd.RigidBody(2.0, np.diag([0.5, 0.6, 0.7])),
-                          rd.RigidBodyState(p_W=[0.1, 0.2, 0], q_WB=Rotation.from_rotvec([0, 0, 0.4]).as_quat(),
-                                            v_W=[1.0, -0.5, 0], w_B=[0, 0, 2.0]),
-                          0.005, 200, method=method, loads=loads, gravity=[0, -9.81, 0])
+    planar, spatial = planar_and_rigid_runs(method, loads)
     # exponential attitude updates (semi-implicit Euler, RKMK4) turn theta exactly as the planar
     # body does; the quaternion-as-4-vector methods differ from the angle form by their own error
     tol = 1e-12 if method in ("semi_implicit_euler", "semi_implicit_euler_implicit_gyroscopic", "rkmk4") else \

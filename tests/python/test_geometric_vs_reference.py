@@ -5,12 +5,13 @@ checks of the registry, the exact method and the invariants (1e5 steps)."""
 
 import numpy as np
 import pytest
-from scipy.spatial.transform import Rotation
-
-import rigiddyn as rd
 from rigiddyn_ref import dynamics as ref_dyn
 from rigiddyn_ref import geometric as ref
 from rigiddyn_ref import integrators as ref_int
+from scipy.spatial.transform import Rotation
+
+import rigiddyn as rd
+from _helpers import planar_and_rigid_runs
 
 MASS = 2.5
 INERTIA = np.array([[0.9, 0.05, -0.1], [0.05, 1.4, 0.08], [-0.1, 0.08, 1.9]])
@@ -116,12 +117,7 @@ def test_particle_under_constant_force_is_exact(method):
 def test_planar_body_equals_rigid_body_kept_in_plane(method):
     loads = [rd.AppliedLoad(force=[0.5, -1.0, 0.0], torque=[0, 0, 0.3]),
              rd.AppliedLoad(force=[1.0, 0.4, 0.0], torque=[0, 0, -0.1], frame="body")]
-    planar = rd.simulate(rd.PlanarBody(2.0, 0.7), rd.PlanarBodyState([0.1, 0.2], 0.4, [1.0, -0.5], 2.0),
-                         0.005, 200, method=method, loads=loads, gravity=[0, -9.81, 0])
-    spatial = rd.simulate(rd.RigidBody(2.0, np.diag([0.5, 0.6, 0.7])),
-                          rd.RigidBodyState(p_W=[0.1, 0.2, 0], q_WB=Rotation.from_rotvec([0, 0, 0.4]).as_quat(),
-                                            v_W=[1.0, -0.5, 0], w_B=[0, 0, 2.0]),
-                          0.005, 200, method=method, loads=loads, gravity=[0, -9.81, 0])
+    planar, spatial = planar_and_rigid_runs(method, loads)
     for name in ["p_W", "q_WB", "v_W", "w_B", "kinetic_energy"]:
         np.testing.assert_allclose(getattr(planar, name), getattr(spatial, name), rtol=0, atol=1e-11, err_msg=name)
     # the work differs at O(h^2): the rigid body's kicks book exactly the kinetic-energy change they

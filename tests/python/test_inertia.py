@@ -11,15 +11,12 @@ from hypothesis import strategies as st
 from scipy.spatial.transform import Rotation
 
 import rigiddyn as rd
+from _helpers import hat
 
 finite = st.floats(-3.0, 3.0, allow_nan=False)
 positive = st.floats(0.1, 3.0)
 vectors = st.tuples(finite, finite, finite).map(np.array)
 rotations = st.integers(0, 2**32 - 1).map(lambda s: Rotation.random(random_state=s).as_matrix())
-
-
-def hat(v):
-    return np.array([[0, -v[2], v[1]], [v[2], 0, -v[0]], [-v[1], v[0], 0]])
 
 
 @st.composite

@@ -3,6 +3,7 @@
 import math
 import re
 import textwrap
+import warnings
 
 import numpy as np
 import pytest
@@ -182,10 +183,18 @@ def test_every_primitive_has_its_core_constructor():
 
 def test_problem_simulate_warns_beyond_the_stability_limit():
     p = load_problem("fast_top")
-    with pytest.warns(rigiddyn.StabilityWarning, match="explicit_euler at dt = 0.004"), \
-            pytest.warns(RuntimeWarning, match="non-finite"):
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
         r = p.simulate("explicit_euler", 0.004)
-    assert r.diverged
+    assert any(issubclass(w.category, rigiddyn.StabilityWarning)
+               and "explicit_euler at dt = 0.004" in str(w.message) for w in caught)
+    # the spurious growth (x1.5 per step) is real: the wobble grows by ~10^40 over the run; the
+    # result is either that huge finite state or, past overflow, a run stopped with a warning
+    w_perp = np.linalg.norm(r.w_B[:, :2], axis=1)
+    if r.diverged:
+        assert any(issubclass(w.category, RuntimeWarning) and "non-finite" in str(w.message) for w in caught)
+    else:
+        assert np.all(np.isfinite(r.w_B)) and w_perp[-1] > 1e30 * w_perp[0]
     r = p.simulate("rk4", 1e-4, steps=100)  # within the limit: no warning (warnings are errors here)
     assert np.all(np.isfinite(r.q_WB))
 

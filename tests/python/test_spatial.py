@@ -13,16 +13,13 @@ from hypothesis.extra.numpy import arrays
 from scipy.spatial.transform import Rotation
 
 import rigiddyn as rd
+from _helpers import hat
 
 SETTINGS = settings(max_examples=60, deadline=None)
 finite = st.floats(-10.0, 10.0, allow_nan=False, allow_infinity=False)
 vec3 = arrays(np.float64, 3, elements=finite)
 # a rotation from a random direction in R^4 (SciPy normalises the quaternion)
 quat = arrays(np.float64, 4, elements=st.floats(-1.0, 1.0)).filter(lambda q: np.linalg.norm(q) > 0.1)
-
-
-def hat(v):
-    return np.array([[0.0, -v[2], v[1]], [v[2], 0.0, -v[0]], [-v[1], v[0], 0.0]])
 
 
 def rotation(q):

@@ -5,9 +5,6 @@
 
 #include "rigiddyn/check.hpp"
 
-#include <boost/math/special_functions/ellint_rf.hpp>
-#include <boost/math/special_functions/ellint_rj.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -77,10 +74,6 @@ EllipticParameter elliptic_parameter(double m, double mc) {
   return {m, mc, mc == 0.0 ? kInf : elliprf(0.0, mc, 1.0)};
 }
 
-double elliprf(double x, double y, double z) { return boost::math::ellint_rf(x, y, z); }
-
-double elliprj(double x, double y, double z, double p) { return boost::math::ellint_rj(x, y, z, p); }
-
 double ellipk(double m, double mc) { return elliptic_parameter(m, mc).K; }
 
 double ellippi(double n, double m, double mc) {
@@ -116,11 +109,13 @@ JacobiSnCnDn jacobi_ellipj(double u, const EllipticParameter& p) {
   return {sn_sign * f.sn, cn_sign * f.cn, f.dn};
 }
 
-double elliptic_f_sncndn(const JacobiSnCnDn& f) { return f.sn * elliprf(f.cn * f.cn, f.dn * f.dn, 1.0); }
 
-double ellippi_sncndn(const JacobiSnCnDn& f, double n) {
+double ellippi_sncndn(const JacobiSnCnDn& f, double n) { return elliptic_f_pi_sncndn(f, n).pi; }
+
+EllipticFPi elliptic_f_pi_sncndn(const JacobiSnCnDn& f, double n) {
   const double cn2 = f.cn * f.cn, dn2 = f.dn * f.dn, sn2 = f.sn * f.sn;
-  return f.sn * (elliprf(cn2, dn2, 1.0) + n / 3.0 * sn2 * elliprj(cn2, dn2, 1.0, 1.0 - n * sn2));
+  const CarlsonRfRj r = elliprf_elliprj(cn2, dn2, 1.0, 1.0 - n * sn2);
+  return {f.sn * r.rf, f.sn * (r.rf + n / 3.0 * sn2 * r.rj)};
 }
 
 double ellippi_am(double u, double n, double m, double mc) {

@@ -5,7 +5,6 @@
 
 #include "rigiddyn/check.hpp"
 
-#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <cmath>
@@ -69,20 +68,60 @@ Eigen::Quaterniond about_z(double angle) {
   return Eigen::Quaterniond(std::cos(0.5 * angle), 0.0, 0.0, std::sin(0.5 * angle));
 }
 
-Eigen::Quaterniond about_x(double angle) {
-  return Eigen::Quaterniond(std::cos(0.5 * angle), std::sin(0.5 * angle), 0.0, 0.0);
-}
-
 // q_NQ of Z-X-Z angles (φ, θ, ψ) with θ and ψ read off m_Q = R_NQᵀ (0, 0, G):
-// m_Q = G (sin θ sin ψ, sin θ cos ψ, cos θ), so ψ = atan2(m_a, m_b), θ = atan2(|m_ab|, m_s)
-// (no division by G ± m_s: accurate at both poles).
+// m_Q = G (sin θ sin ψ, sin θ cos ψ, cos θ), θ ∈ [0, π], ψ = atan2(m_a, m_b) ∈ (−π, π]. The half-angle
+// cosines and sines come algebraically from m_Q (the larger of each pair by a square root of a sum of
+// like-signed terms, the other from sin x = 2 sin(x/2) cos(x/2)), accurate at both poles; then
+// Rz(φ) Rx(θ) Rz(ψ) = Rz(φ) (cθ cψ, sθ cψ, −sθ sψ, cθ sψ) with c·, s· of the half angles.
+// Needs m_a² + m_b² > 0 (never 0 on the elliptic orbits).
 Eigen::Quaterniond zxz_from_momentum(double phi, const Eigen::Vector3d& m_Q) {
-  const double psi = std::atan2(m_Q(0), m_Q(1));
-  const double theta = std::atan2(std::hypot(m_Q(0), m_Q(1)), m_Q(2));
-  return about_z(phi) * about_x(theta) * about_z(psi);
+  const double rho2 = m_Q(0) * m_Q(0) + m_Q(1) * m_Q(1);
+  const double rho = std::sqrt(rho2), G = std::sqrt(rho2 + m_Q(2) * m_Q(2));
+  double c_theta, s_theta;  // cos θ/2, sin θ/2 (both >= 0)
+  if (m_Q(2) >= 0.0) {
+    c_theta = std::sqrt((G + m_Q(2)) / (2.0 * G));
+    s_theta = rho / (2.0 * G * c_theta);
+  } else {
+    s_theta = std::sqrt((G - m_Q(2)) / (2.0 * G));
+    c_theta = rho / (2.0 * G * s_theta);
+  }
+  double c_psi, s_psi;  // cos ψ/2 >= 0, sin ψ/2 with the sign of m_a (of atan2's ψ)
+  if (m_Q(1) >= 0.0) {
+    c_psi = std::sqrt((rho + m_Q(1)) / (2.0 * rho));
+    s_psi = m_Q(0) / (2.0 * rho * c_psi);
+  } else {
+    s_psi = std::copysign(std::sqrt((rho - m_Q(1)) / (2.0 * rho)), m_Q(0));
+    c_psi = m_Q(0) / (2.0 * rho * s_psi);
+  }
+  const Eigen::Quaterniond tilt(c_theta * c_psi, s_theta * c_psi, -s_theta * s_psi, c_theta * s_psi);
+  return about_z(phi) * tilt;
 }
 
 double sign_of(double x) { return x < 0.0 ? -1.0 : 1.0; }
+
+// The principal frame (inertia/principal_axes.hpp) of a finite, symmetric, positive definite I_B.
+PrincipalAxes checked_principal_axes(const Eigen::Matrix3d& I_B) {
+  require_finite(I_B, "inertia");
+  if (!((I_B - I_B.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * I_B.cwiseAbs().maxCoeff())) {
+    throw_invalid("inertia", "a symmetric matrix (to 1e-12 relative)", I_B);
+  }
+  PrincipalAxes axes = principal_axes(0.5 * (I_B + I_B.transpose()));
+  if (!(axes.moments(0) > 0.0)) throw_invalid("inertia", "a positive definite matrix", I_B);
+  return axes;
+}
+
+const Eigen::Quaterniond& checked_attitude(const Eigen::Quaterniond& q_WB) {
+  require_finite(q_WB.coeffs(), "q_WB");
+  if (!(std::abs(q_WB.norm() - 1.0) <= 1e-6)) {
+    throw_invalid("q_WB", "a unit quaternion (norm within 1e-6 of 1)", q_WB.coeffs());
+  }
+  return q_WB;
+}
+
+const Eigen::Vector3d& checked_finite(const Eigen::Vector3d& v, const char* name) {
+  require_finite(v, name);
+  return v;
+}
 
 }  // namespace
 
@@ -98,26 +137,14 @@ std::string to_string(TorqueFreeCase c) {
 }
 
 TorqueFreeSolution::TorqueFreeSolution(const Eigen::Matrix3d& I_B, const Eigen::Quaterniond& q_WB,
-                                       const Eigen::Vector3d& w_B) {
-  require_finite(I_B, "inertia");
-  require_finite(q_WB.coeffs(), "q_WB");
-  require_finite(w_B, "w_B");
-  if (!((I_B - I_B.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * I_B.cwiseAbs().maxCoeff())) {
-    throw_invalid("inertia", "a symmetric matrix (to 1e-12 relative)", I_B);
-  }
-  if (!(std::abs(q_WB.norm() - 1.0) <= 1e-6)) {
-    throw_invalid("q_WB", "a unit quaternion (norm within 1e-6 of 1)", q_WB.coeffs());
-  }
+                                       const Eigen::Vector3d& w_B)
+    : TorqueFreeSolution(checked_principal_axes(I_B), checked_attitude(q_WB), checked_finite(w_B, "w_B"), true) {}
+
+TorqueFreeSolution::TorqueFreeSolution(const PrincipalAxes& axes, const Eigen::Quaterniond& q_WB,
+                                       const Eigen::Vector3d& w_B, bool eager_complete_pi)
+    : I_principal_(axes.moments), R_BP_(axes.axes), pi_complete_known_(eager_complete_pi) {
   q_WB0_ = q_WB.normalized();
   w_B0_ = w_B;
-
-  // principal frame: I_B = R_BP diag(I1, I2, I3) R_BPᵀ, ascending, det R_BP = +1
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(0.5 * (I_B + I_B.transpose()));
-  I_principal_ = eig.eigenvalues();
-  if (!(I_principal_(0) > 0.0)) throw_invalid("inertia", "a positive definite matrix", I_B);
-  R_BP_ = eig.eigenvectors();
-  if (R_BP_.determinant() < 0.0) R_BP_.col(0) = -R_BP_.col(0);
-
   const Eigen::Vector3d& I = I_principal_;
   const Eigen::Vector3d w_P = R_BP_.transpose() * w_B;
   const Eigen::Vector3d m_P = I.cwiseProduct(w_P);
@@ -230,12 +257,18 @@ void TorqueFreeSolution::init_elliptic(const Eigen::Vector3d& m_P, double delta1
   f0.sn = std::min(std::max(w_Q(sn_axis_) / w_amplitude_(1), -1.0), 1.0);
   f0.cn = w_Q(cn_axis_) / w_amplitude_(0);
   f0.dn = w_Q(2) / w_amplitude_(2);
-  // u0 = sn0 R_F(cn0², dn0², 1) on [−K, K]; else ±2K − that (sn(2K − v) = sn v, cn(2K − v) = −cn v)
-  const double v0 = elliptic_f_sncndn(f0);
-  u0_ = f0.cn >= 0.0 ? v0 : sign_of(f0.sn) * 2.0 * elliptic_.K - v0;
-
-  pi_complete_ = elliptic_.mc == 0.0 ? 0.0 : elliptic_.K + n_ / 3.0 * elliprj(0.0, elliptic_.mc, 1.0, 1.0 - n_);
-  pi0_ = ellippi_am(u0_, n_, elliptic_);
+  // u0 = v0 + 2 j0 K: v0 = sn0 R_F(cn0², dn0², 1) ∈ [−K, K] (j0 = 0) when cn0 >= 0; else the point
+  // (sn, cn) = (−sn0, −cn0) of [−K, K] shifted by 2 j0 K, j0 = sign(sn0) (sn, cn change sign under
+  // u → u + 2K, DLMF 22.4.2)
+  if (f0.cn < 0.0) {
+    f0.sn = -f0.sn;
+    f0.cn = -f0.cn;
+    j0_odd_ = true;
+  }
+  const EllipticFPi at_v0 = elliptic_f_pi_sncndn(f0, n_);
+  v0_ = at_v0.f;
+  pi0_ = at_v0.pi;
+  if (pi_complete_known_) pi_complete_ = complete_pi();
   period_ = elliptic_.mc == 0.0 ? kInf : 4.0 * elliptic_.K / lambda_;
 
   q_BQ_ = Eigen::Quaterniond(R_BP_ * R_PQ);
@@ -245,8 +278,13 @@ void TorqueFreeSolution::init_elliptic(const Eigen::Vector3d& m_P, double delta1
 }
 
 TorqueFreeState TorqueFreeSolution::state_at(double t) const {
-  require_finite(t, "t");
+  if (!std::isfinite(t)) throw_invalid("t", "a finite number", t);
   return about_axis_ ? state_about_axis(t) : state_elliptic(t);
+}
+
+// Π(n|m) = K + (n/3) R_J(0, mc, 1, 1 − n) (DLMF 19.25.2); 0 on the separatrix (never used there)
+double TorqueFreeSolution::complete_pi() const {
+  return elliptic_.mc == 0.0 ? 0.0 : elliptic_.K + n_ / 3.0 * elliprj(0.0, elliptic_.mc, 1.0, 1.0 - n_);
 }
 
 TorqueFreeState TorqueFreeSolution::state_about_axis(double t) const {
@@ -262,15 +300,16 @@ TorqueFreeState TorqueFreeSolution::state_elliptic(double t) const {
   // loses nothing beyond the rounding of λ and K
   const DoubleDouble lambda_t = two_prod(lambda_, t);
   double j = 0.0;
-  double v = lambda_t.hi + u0_;
+  double v = lambda_t.hi + v0_;
   if (p.mc != 0.0) {
     j = std::nearbyint(v / (2.0 * p.K));
-    v = (std::fma(-2.0 * p.K, j, lambda_t.hi) + lambda_t.lo) + u0_;
+    v = (std::fma(-2.0 * p.K, j, lambda_t.hi) + lambda_t.lo) + v0_;
   }
   JacobiSnCnDn f = jacobi_ellipj(v, p);
-  // Π(am u) − Π(am u0) = Π(am v) + 2j Π(n|m) − Π(am u0)   (quasi-periodicity)
-  const double delta_pi = (ellippi_sncndn(f, n_) - pi0_) + 2.0 * j * pi_complete_;
-  if (std::fmod(j, 2.0) != 0.0) {  // sn(v + 2jK) = (−1)^j sn v, cn likewise, dn unchanged
+  // Π(am u) − Π(am u0) = Π(am v) − Π(am v0) + 2j Π(n|m)   (quasi-periodicity)
+  double delta_pi = ellippi_sncndn(f, n_) - pi0_;
+  if (j != 0.0) delta_pi += 2.0 * j * (pi_complete_known_ ? pi_complete_ : complete_pi());
+  if ((std::fmod(j, 2.0) != 0.0) != j0_odd_) {  // sn(v + 2(j + j0)K) = (−1)^(j + j0) sn v, cn likewise
     f.sn = -f.sn;
     f.cn = -f.cn;
   }
@@ -284,6 +323,23 @@ TorqueFreeState TorqueFreeSolution::state_elliptic(double t) const {
   const Eigen::Quaterniond q_NQ = zxz_from_momentum(phi, I_Q_.cwiseProduct(w_Q));
   const Eigen::Quaterniond q_WB = q_WN_ * q_NQ * q_BQ_.conjugate();
   return {q_WB.normalized(), q_BQ_ * w_Q};
+}
+
+}  // namespace rigiddyn
+
+namespace rigiddyn {
+
+FreeRotationFlow::FreeRotationFlow(const Eigen::Matrix3d& I_B) : I_B_(I_B), axes_(checked_principal_axes(I_B)) {}
+
+void FreeRotationFlow::advance(Eigen::Quaterniond& q_WB, Eigen::Vector3d& w_B, double h) const {
+  if (!(q_WB.coeffs().allFinite() && w_B.allFinite() && std::isfinite(h))) {
+    q_WB.coeffs().setConstant(std::numeric_limits<double>::quiet_NaN());
+    w_B.setConstant(std::numeric_limits<double>::quiet_NaN());
+    return;
+  }
+  const TorqueFreeState s = TorqueFreeSolution(axes_, q_WB, w_B, false).state_at(h);
+  q_WB = s.q_WB;
+  w_B = s.w_B;
 }
 
 }  // namespace rigiddyn

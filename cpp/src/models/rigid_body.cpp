@@ -25,6 +25,17 @@ EulerForm classify(const Eigen::Matrix3d& I) {
 
 }  // namespace
 
+LoadKind load_kind_of(const std::vector<AppliedLoad>& schedule, const Eigen::Vector3d& g_W) {
+  LoadKind kind = g_W.isZero(0.0) ? LoadKind::none : LoadKind::fixed;
+  for (const AppliedLoad& load : schedule) {
+    // a body-frame force or a world-frame couple turns with the body
+    const bool turning = load.frame == Frame::body ? !load.force.isZero(0.0) : !load.torque.isZero(0.0);
+    if (turning) return LoadKind::turning;
+    if (!(load.force.isZero(0.0) && load.torque.isZero(0.0))) kind = LoadKind::fixed;
+  }
+  return kind;
+}
+
 RigidBody::RigidBody(double mass, const Eigen::Matrix3d& inertia_com, InertiaCheck check)
     : mass_(mass), inertia_com_(0.5 * (inertia_com + inertia_com.transpose())) {
   // Validated by the inertia layer (same errors everywhere), but stored as given (its symmetric part),

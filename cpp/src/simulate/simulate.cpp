@@ -1,10 +1,13 @@
 #include "rigiddyn/simulate/simulate.hpp"
 
+#include "append_record.hpp"
+
 #include "rigiddyn/check.hpp"
 #include "rigiddyn/simulate/simulate_exact.hpp"
 
 #include <chrono>
 #include <cmath>
+#include <type_traits>
 
 namespace rigiddyn {
 
@@ -40,19 +43,6 @@ void check_planar_loads(const SimulationOptions& o) {
   if (o.gravity_W.z() != 0.0) throw_invalid("gravity", "gravity in the xy plane (z = 0)", o.gravity_W);
 }
 
-void append(Trajectory& out, double t, const RecordedState& r) {
-  out.t.push_back(t);
-  out.p_W.insert(out.p_W.end(), r.p_W.data(), r.p_W.data() + 3);
-  out.q_WB.insert(out.q_WB.end(), r.q_WB.coeffs().data(), r.q_WB.coeffs().data() + 4);
-  out.v_W.insert(out.v_W.end(), r.v_W.data(), r.v_W.data() + 3);
-  out.w_B.insert(out.w_B.end(), r.w_B.data(), r.w_B.data() + 3);
-  out.kinetic_energy.push_back(r.kinetic_energy);
-  out.total_energy.push_back(r.kinetic_energy + r.potential_energy);
-  out.angular_momentum_norm.push_back(r.angular_momentum_norm);
-  out.quaternion_norm_error.push_back(r.q_WB.norm() - 1.0);
-  out.work.push_back(r.work);
-}
-
 void reserve(Trajectory& out, const SimulationOptions& o) {
   const std::size_t n = static_cast<std::size_t>(o.steps / o.record_every + 2);
   for (auto* v : {&out.t, &out.kinetic_energy, &out.total_energy, &out.angular_momentum_norm,
@@ -69,15 +59,19 @@ Trajectory run(Model model, typename Model::Coordinates y, const SimulationOptio
   reserve(out, o);
   const bool varying_loads = !is_constant_from(o.loads, o.t0);
   model.set_loads(loads_at(o.loads, o.t0));
-  append(out, o.t0, model.record(y));
+  append_record(out, o.t0, model.record(y));
   const auto start = std::chrono::steady_clock::now();
   std::int64_t until_record = o.record_every;
   for (std::int64_t i = 1; i <= o.steps; ++i) {
     if (varying_loads) model.set_loads(loads_at(o.loads, o.t0 + static_cast<double>(i - 1) * o.dt));
-    Integrator::step(model, y, o.dt);
+    if constexpr (std::is_same_v<decltype(Integrator::step(model, y, o.dt)), bool>) {
+      out.unconverged_steps += Integrator::step(model, y, o.dt) ? 0 : 1;  // implicit: converged?
+    } else {
+      Integrator::step(model, y, o.dt);
+    }
     if (--until_record == 0 || i == o.steps) {
       until_record = o.record_every;
-      append(out, o.t0 + static_cast<double>(i) * o.dt, model.record(y));
+      append_record(out, o.t0 + static_cast<double>(i) * o.dt, model.record(y));
       if (!y.allFinite()) {
         out.diverged = true;
         break;
@@ -87,6 +81,13 @@ Trajectory run(Model model, typename Model::Coordinates y, const SimulationOptio
   out.elapsed_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }
+
+// True for the integrators written only against model_interface.hpp (any model type works).
+template <class Integrator>
+inline constexpr bool uses_model_interface_only =
+    std::is_same_v<Integrator, ExplicitEuler> || std::is_same_v<Integrator, SemiImplicitEuler> ||
+    std::is_same_v<Integrator, SemiImplicitEulerImplicitGyroscopic> || std::is_same_v<Integrator, Rk4> ||
+    std::is_same_v<Integrator, Rkmk4>;
 
 template <class Model>
 typename Model::Coordinates one_step(Model model, typename Model::Coordinates y, const SimulationOptions& o) {
@@ -103,8 +104,18 @@ Trajectory simulate(const RigidBody& body, const RigidBodyState& initial, const 
   const RigidBodyCoordinates y = to_coordinates(checked_state(initial, "initial"));
   return with_euler_form(body, [&](const auto& euler) {
     using Euler = std::decay_t<decltype(euler)>;
-    const RigidBodyModel<Euler> model(body.mass(), euler, o.gravity_W);
-    return visit_method(o.method, [&](auto integrator) { return run<decltype(integrator)>(model, y, o); });
+    return visit_method(o.method, [&](auto integrator) {
+      using Integrator = decltype(integrator);
+      // the methods written only against the model interface run on a model compiled for the loads
+      // of this run (LoadKind); the geometric methods use RigidBodyModel<Euler>'s own structure
+      if constexpr (uses_model_interface_only<Integrator>) {
+        return with_load_kind(o.loads, o.gravity_W, [&](auto kind) {
+          return run<Integrator>(RigidBodyModel<Euler, kind.value>(body.mass(), euler, o.gravity_W), y, o);
+        });
+      } else {
+        return run<Integrator>(RigidBodyModel<Euler>(body.mass(), euler, o.gravity_W), y, o);
+      }
+    });
   });
 }
 

@@ -2,6 +2,7 @@
 
 #include "rigiddyn/check.hpp"
 #include "rigiddyn/exact/free_body.hpp"
+#include "append_record.hpp"
 
 #include <chrono>
 
@@ -26,20 +27,6 @@ void check_exact_loads(const SimulationOptions& o) {
   }
 }
 
-// one record (the same fields simulate's stepping loop records)
-void append(Trajectory& out, double t, const RecordedState& r) {
-  out.t.push_back(t);
-  out.p_W.insert(out.p_W.end(), r.p_W.data(), r.p_W.data() + 3);
-  out.q_WB.insert(out.q_WB.end(), r.q_WB.coeffs().data(), r.q_WB.coeffs().data() + 4);
-  out.v_W.insert(out.v_W.end(), r.v_W.data(), r.v_W.data() + 3);
-  out.w_B.insert(out.w_B.end(), r.w_B.data(), r.w_B.data() + 3);
-  out.kinetic_energy.push_back(r.kinetic_energy);
-  out.total_energy.push_back(r.kinetic_energy + r.potential_energy);
-  out.angular_momentum_norm.push_back(r.angular_momentum_norm);
-  out.quaternion_norm_error.push_back(r.q_WB.norm() - 1.0);
-  out.work.push_back(r.work);
-}
-
 }  // namespace
 
 Trajectory simulate_exact(const RigidBody& body, const RigidBodyState& initial, const SimulationOptions& o) {
@@ -62,7 +49,7 @@ Trajectory simulate_exact(const RigidBody& body, const RigidBodyState& initial, 
       state.v_W = s0.v_W + t * a_W;
       state.w_B = s.w_B;
       const double work = body.mass() * a_W.dot(state.p_W - s0.p_W);
-      append(out, o.t0 + t, model.record(to_coordinates(state, work)));
+      append_record(out, o.t0 + t, model.record(to_coordinates(state, work)));
     }
     out.elapsed_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return out;

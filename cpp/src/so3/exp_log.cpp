@@ -9,18 +9,9 @@ namespace rigiddyn {
 
 namespace {
 
-// Below this angle [rad] the Taylor series are used: their first omitted term is ~θ^6/10^6 <
-// 1e-24 relative, far below double round-off, while the closed forms lose digits as θ -> 0.
+// Below this |t| the Taylor series of atan(t)/t is used: its first omitted term, t^6/7 < 2e-19
+// relative, is far below double round-off, while the closed form loses digits as t -> 0.
 constexpr double small_angle = 1e-3;
-
-// sin(θ/2)/θ; Taylor series 1/2 - θ²/48 + θ⁴/3840 near 0.
-double half_sin_over_angle(double theta) {
-  if (theta < small_angle) {
-    const double t2 = theta * theta;
-    return 0.5 - t2 / 48.0 + t2 * t2 / 3840.0;
-  }
-  return std::sin(0.5 * theta) / theta;
-}
 
 // atan(t)/t; Taylor series 1 - t²/3 + t⁴/5 near 0.
 double atan_over_argument(double t) {
@@ -32,12 +23,6 @@ double atan_over_argument(double t) {
 }
 
 }  // namespace
-
-Eigen::Quaterniond rotvec_to_quat(const Eigen::Vector3d& rotvec) {
-  const double theta = rotvec.norm();
-  const Eigen::Vector3d xyz = half_sin_over_angle(theta) * rotvec;
-  return Eigen::Quaterniond(std::cos(0.5 * theta), xyz.x(), xyz.y(), xyz.z());
-}
 
 Eigen::Vector3d quat_to_rotvec(const Eigen::Quaterniond& q) {
   const Eigen::Quaterniond p = quat_canonical(q);  // w >= 0: angle in [0, pi]

@@ -3,20 +3,19 @@
 #include "rigiddyn/check.hpp"
 #include "rigiddyn/so3/quaternion.hpp"
 
+#include <string>
+
 namespace rigiddyn {
 
-Eigen::Matrix3d checked_rotation_matrix(const Eigen::Matrix3d& R, const std::string& name) {
+void throw_not_rotation_matrix(const Eigen::Matrix3d& R, std::string_view name_view) {
+  const std::string name(name_view);
   require_finite(R, name);
   const double orthonormality_error = (R.transpose() * R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
   if (!(orthonormality_error <= rotation_matrix_tolerance)) {
     throw_invalid(name, "a rotation matrix (orthonormal: max |R^T R - I| <= 1e-6)",
                   format_value(R) + " with max |R^T R - I| = " + format_value(orthonormality_error));
   }
-  const double det = R.determinant();
-  if (!(det > 0.0)) {
-    throw_invalid(name, "a rotation matrix (det +1)", format_value(R) + " with det = " + format_value(det));
-  }
-  return R;
+  throw_invalid(name, "a rotation matrix (det +1)", format_value(R) + " with det = " + format_value(R.determinant()));
 }
 
 Eigen::Quaterniond matrix_to_quat(const Eigen::Matrix3d& R) {

@@ -7,7 +7,7 @@
 //   K(m)            = R_F(0, mc, 1)                                   (DLMF 19.25.1)
 //   Π(n|m)          = R_F(0, mc, 1) + (n/3) R_J(0, mc, 1, 1 − n)      (DLMF 19.25.2), n < 1
 //   Π(am u, n|m)    = ∫₀^u dv / (1 − n sn²(v|m))  (the Legendre Π(φ, n|m) at φ = am u, DLMF 19.2.7)
-// Carlson's R_F and R_J are Boost.Math's.
+// Carlson's R_F and R_J: duplication algorithm (cpp/src/exact/carlson.cpp).
 #pragma once
 
 namespace rigiddyn {
@@ -32,8 +32,16 @@ EllipticParameter elliptic_parameter(double m, double mc);
 
 // Carlson's symmetric integrals (DLMF 19.16.1-2): R_F(x, y, z) for x, y, z ≥ 0 with at most one
 // zero; R_J(x, y, z, p) for x, y, z ≥ 0 with at most one zero and p > 0.
+// Throw std::invalid_argument outside these domains.
 double elliprf(double x, double y, double z);
 double elliprj(double x, double y, double z, double p);
+
+// R_F(x, y, z) and R_J(x, y, z, p) together, for the cost of R_J alone (one duplication sequence).
+struct CarlsonRfRj {
+  double rf;
+  double rj;
+};
+CarlsonRfRj elliprf_elliprj(double x, double y, double z, double p);
 
 // Complete elliptic integral of the first kind K(m), computed from mc (so that K ≈ ½ ln(16/mc)
 // keeps full relative precision as m → 1). mc = 0 gives +inf.
@@ -57,8 +65,12 @@ double ellippi_am(double u, double n, const EllipticParameter& p);
 // Π = sn R_F(cn², dn², 1) + (n/3) sn³ R_J(cn², dn², 1, 1 − n sn²)   (DLMF 19.25.14).
 double ellippi_sncndn(const JacobiSnCnDn& f, double n);
 
-// The elliptic amplitude's "arc length" F: v = sn R_F(cn², dn², 1) for v ∈ [−K, K]
-// (DLMF 19.25.5): the inverse of jacobi_ellipj on that interval, given all three functions.
-double elliptic_f_sncndn(const JacobiSnCnDn& f);
+// Both integrals of v ∈ [−K, K] from its elliptic functions, for the cost of Π alone:
+// F = v = sn R_F(cn², dn², 1) and Π(am v, n|m) as in ellippi_sncndn.
+struct EllipticFPi {
+  double f;
+  double pi;
+};
+EllipticFPi elliptic_f_pi_sncndn(const JacobiSnCnDn& f, double n);
 
 }  // namespace rigiddyn

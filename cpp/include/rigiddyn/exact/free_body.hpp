@@ -22,6 +22,7 @@
 // separatrix. Accuracy: a few ulps in ω and attitude at t = 0, growing as eps·|phase| with t.
 #pragma once
 #include "rigiddyn/exact/elliptic.hpp"
+#include "rigiddyn/inertia/principal_axes.hpp"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -70,6 +71,11 @@ class TorqueFreeSolution {
   double kinetic_energy() const { return kinetic_energy_; }
 
  private:
+  friend class FreeRotationFlow;
+  // axes: the principal frame of the inertia (checked); q_WB, w_B unchecked; eager_complete_pi: compute Π(n|m) now (else only when an evaluation needs it)
+  TorqueFreeSolution(const PrincipalAxes& axes, const Eigen::Quaterniond& q_WB, const Eigen::Vector3d& w_B,
+                     bool eager_complete_pi);
+  double complete_pi() const;
   void init_rotation_about_axis(const Eigen::Vector3d& I_Q, const Eigen::Vector3d& axis_B, double I_axial);
   void init_elliptic(const Eigen::Vector3d& m_P, double delta1, double delta3, double delta2);
   TorqueFreeState state_about_axis(double t) const;
@@ -101,12 +107,33 @@ class TorqueFreeSolution {
   int cn_axis_ = 0;
   int sn_axis_ = 1;
   double lambda_ = 0.0;                             // [1/s]
-  double u0_ = 0.0;
+  double v0_ = 0.0;                                 // u0 = v0 + 2 j0 K, v0 ∈ [−K, K]
+  bool j0_odd_ = false;                             // j0 ∈ {−1, 0, 1} odd
   double n_ = 0.0;                                  // characteristic of Π
-  double pi_complete_ = 0.0;                        // Π(n|m)
-  double pi0_ = 0.0;                                // Π(am u0, n|m)
+  bool pi_complete_known_ = false;
+  double pi_complete_ = 0.0;                        // Π(n|m) (if known)
+  double pi0_ = 0.0;                                // Π(am v0, n|m)
   double phi_rate_ = 0.0;                           // G/I_s [rad/s]
   double phi_pi_ = 0.0;                             // coefficient of Π in φ [rad]
+};
+
+// The exact torque-free rotation over one step, for a fixed inertia: the principal frame is computed
+// once here, and each advance() builds only what depends on the momentum (invariants, m, K, the
+// phase and Π at it) and evaluates the closed form at h: TorqueFreeSolution(I_B, q_WB, w_B).state_at(h)
+// to round-off, at a fraction of its cost (no eigen-decomposition, no complete Π(n|m) unless the step
+// crosses a half period of ω).
+class FreeRotationFlow {
+ public:
+  // I_B as for TorqueFreeSolution (throws std::invalid_argument on a bad inertia).
+  explicit FreeRotationFlow(const Eigen::Matrix3d& I_B);
+  const Eigen::Matrix3d& inertia() const { return I_B_; }
+  // Advances the attitude q_WB (unit) and the angular velocity w_B [rad/s] (in B) by h [s]. A
+  // non-finite state becomes NaN (no exception: a stepping loop records the divergence).
+  void advance(Eigen::Quaterniond& q_WB, Eigen::Vector3d& w_B, double h) const;
+
+ private:
+  Eigen::Matrix3d I_B_;
+  PrincipalAxes axes_;
 };
 
 }  // namespace rigiddyn

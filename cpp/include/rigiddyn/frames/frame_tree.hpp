@@ -33,6 +33,7 @@ class FrameTree {
   // `name` or one of its descendants (a cycle).
   void set_parent(const std::string& name, const std::string& parent, FrameMotion motion);
 
+  // True if a frame named `name` exists (never throws).
   bool has_frame(const std::string& name) const { return frames_.count(name) != 0; }
   // The parent's name ("" for world). Throws on an unknown name.
   const std::string& parent(const std::string& name) const;
@@ -103,6 +104,7 @@ class FrameTree {
   };
   Query query(const std::string& frame, const std::string& relative_to, const std::string& expressed_in,
               double t) const;
+  // The frame names as one string, for error messages ("world, A, ...").
   std::string known_names() const;
 
   std::map<std::string, Node> frames_;

@@ -51,6 +51,8 @@ class SpatialInertia {
   // A point mass m [kg] at `position` [m] (I_C = 0).
   static SpatialInertia point_mass(double mass, const Eigen::Vector3d& position);
 
+  // Mass m [kg]; centre of mass c [m] (3,) in the frame; rotational inertia I_C about the centre
+  // of mass [kg m^2] (3, 3), expressed in the frame.
   double mass() const { return mass_; }
   const Eigen::Vector3d& com() const { return com_; }
   const Eigen::Matrix3d& inertia_com() const { return inertia_com_; }

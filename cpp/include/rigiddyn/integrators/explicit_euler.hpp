@@ -10,7 +10,8 @@ namespace rigiddyn {
 struct ExplicitEuler {
   template <class Model>
   RIGIDDYN_ALWAYS_INLINE static void step(const Model& model, typename Model::Coordinates& y, double h) {
-    y += h * model.rate(y);
+    const typename Model::Coordinates dy = model.rate(y);
+    for (Eigen::Index i = 0; i < y.size(); ++i) y[i] += h * dy[i];  // element by element: see rk4.hpp's axpy
     model.project(y);
   }
 };

@@ -13,7 +13,9 @@
 // the attitude dependence of couples given in W and of forces given in B left to the iteration
 // (it converges linearly at a rate O(h²|n|/|I|) there, quadratically for torque-free bodies).
 // Stops when the correction is below `tolerance` relative to |ω̄| + h|ω̇| (and likewise for v̄),
-// or after `max_iterations` (then the last iterate is kept: at h|ω| ≲ 1 this is never reached).
+// or after `max_iterations`: then the last iterate is kept and step() returns false, which simulate()
+// counts (Trajectory::unconverged_steps; the Python binding warns). At h|ω| ≲ 1 this is never
+// reached; near the separatrix it happens from h|ω| ≈ 3.5.
 //
 // Order 2 (symmetric); cost per step: one derivative evaluation and one 3×3 solve per Newton
 // iteration, typically 3–5 at h|ω| ~ 0.01–0.5. Conserves on a free body: the energy and |L|
@@ -41,8 +43,9 @@ inline Eigen::Quaterniond midpoint_rotation(const Eigen::Vector3d& h_w) {
   return Eigen::Quaterniond((1.0 - a2) * scale, 2.0 * scale * a.x(), 2.0 * scale * a.y(), 2.0 * scale * a.z());
 }
 
+// Returns true if the Newton iteration converged within max_iterations.
 template <class Euler>
-void implicit_midpoint_step(const RigidBodyModel<Euler>& model, RigidBodyCoordinates& y, double h) {
+bool implicit_midpoint_step(const RigidBodyModel<Euler>& model, RigidBodyCoordinates& y, double h) {
   using namespace implicit_midpoint_solver;
   const Eigen::Matrix3d I = inertia_matrix(model.euler());
   const Eigen::Quaterniond q0(Eigen::Vector4d(y.segment<4>(3)));
@@ -50,7 +53,8 @@ void implicit_midpoint_step(const RigidBodyModel<Euler>& model, RigidBodyCoordin
   Eigen::Vector3d w_bar = w0, v_bar = v0;
   RigidBodyCoordinates mid = y;  // ȳ = (y0 + y1)/2
   double power = 0.0;
-  for (int k = 0; k < max_iterations; ++k) {
+  bool converged = false;
+  for (int k = 0; k < max_iterations && !converged; ++k) {
     const Eigen::Quaterniond q1 = q0 * midpoint_rotation(h * w_bar);
     mid.segment<4>(3) = 0.5 * (q0.coeffs() + q1.coeffs());
     mid.segment<3>(7) = v_bar;
@@ -65,31 +69,35 @@ void implicit_midpoint_step(const RigidBodyModel<Euler>& model, RigidBodyCoordin
     v_bar -= r_v;
     const bool w_done = dw.norm() <= tolerance * (w_bar.norm() + h * xi.segment<3>(9).norm());
     const bool v_done = r_v.norm() <= tolerance * (v_bar.norm() + h * xi.segment<3>(6).norm());
-    if (w_done && v_done) break;
+    converged = w_done && v_done;
   }
   y.segment<3>(0) += h * v_bar;
   y.segment<4>(3) = (q0 * midpoint_rotation(h * w_bar)).normalized().coeffs();
   y.segment<3>(7) = 2.0 * v_bar - v0;
   y.segment<3>(10) = 2.0 * w_bar - w0;
   y(13) += h * power;
+  return converged;
 }
 
+// step() returns true if the solver converged (the only integrator whose step reports it).
 struct ImplicitMidpoint {
   template <class Model>
-  static void step(const Model& model, typename Model::Coordinates& y, double h) {
+  static bool step(const Model& model, typename Model::Coordinates& y, double h) {
     if constexpr (is_rigid_body_model_v<Model>) {
-      implicit_midpoint_step(model, y, h);
+      return implicit_midpoint_step(model, y, h);
     } else {  // fixed point ȳ = y0 + (h/2) f(ȳ)
       using namespace implicit_midpoint_solver;
       typename Model::Coordinates mid = y;
-      for (int k = 0; k < max_iterations; ++k) {
+      bool converged = false;
+      for (int k = 0; k < max_iterations && !converged; ++k) {
         const typename Model::Coordinates next = y + (0.5 * h) * model.rate(mid);
         const double change = (next - mid).norm();
         mid = next;
-        if (change <= tolerance * mid.norm()) break;
+        converged = change <= tolerance * mid.norm();
       }
       y = 2.0 * mid - y;
       model.project(y);
+      return converged;
     }
   }
 };

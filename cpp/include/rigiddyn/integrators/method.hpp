@@ -53,6 +53,7 @@ struct MethodInfo {
 
 // Every method, in Method's order.
 const std::vector<MethodInfo>& method_table();
+// The row of method_table() for `method`.
 const MethodInfo& method_info(Method method);
 // The Method named `name`; throws std::invalid_argument naming `argument` for an unknown name.
 Method method_from_name(const std::string& name, const std::string& argument = "method");

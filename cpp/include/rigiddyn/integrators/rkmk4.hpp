@@ -19,11 +19,11 @@ struct Rkmk4 {
     using Tangent = typename Model::Tangent;
     const Tangent K1 = model.velocity(y);
     const Tangent theta2 = scaled(a21 * h, K1);
-    const Tangent K2 = model.dexp_inv(theta2, model.velocity(model.retract(y, theta2)));
+    const Tangent K2 = model.dexp_inv(theta2, model.velocity_at(y, theta2));
     const Tangent theta3 = scaled(a32 * h, K2);
-    const Tangent K3 = model.dexp_inv(theta3, model.velocity(model.retract(y, theta3)));
+    const Tangent K3 = model.dexp_inv(theta3, model.velocity_at(y, theta3));
     const Tangent theta4 = scaled(a43 * h, K3);
-    const Tangent K4 = model.dexp_inv(theta4, model.velocity(model.retract(y, theta4)));
+    const Tangent K4 = model.dexp_inv(theta4, model.velocity_at(y, theta4));
     Tangent theta;
     for (Eigen::Index i = 0; i < theta.size(); ++i) theta[i] = h * (b1 * K1[i] + b2 * K2[i] + b3 * K3[i] + b4 * K4[i]);
     y = model.retract(y, theta);

@@ -12,6 +12,8 @@
 //   void project(y)                           back onto the state space (normalise the quaternions)
 //   Tangent velocity(y)                       ξ: body-trivialised velocity (ω_B for each attitude)
 //   Coordinates retract(y, Θ)                 y ⊕ Θ: vector parts added, q ⊗ exp(Θ_rot) for attitudes
+//   Tangent velocity_at(y, Θ)                 ξ(y ⊕ Θ), free to skip the parts of y ⊕ Θ that ξ does
+//                                             not read (RKMK4's stages)
 //   Tangent dexp_inv(Θ, ξ)                    dexp⁻¹ of the attitude parts (identity elsewhere),
 //                                             truncated after the second commutator (RKMK4)
 //   void kick(y, h), kick_implicit_gyroscopic(y, h)
@@ -21,17 +23,10 @@
 //                                             the current velocities
 //   RecordedState record(y)                   a uniform description for simulate's recorder
 #pragma once
+#include "rigiddyn/always_inline.hpp"  // RIGIDDYN_ALWAYS_INLINE, for every model and integrator function
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
-
-// Model and integrator functions are small and called once per stage: force them inline so that a
-// step compiles to one straight-line loop body (GCC otherwise outlines rate() and Rk4::step, which
-// measured 2x slower than a hand-written loop).
-#if defined(__GNUC__) || defined(__clang__)
-#define RIGIDDYN_ALWAYS_INLINE inline __attribute__((always_inline))
-#else
-#define RIGIDDYN_ALWAYS_INLINE inline
-#endif
 
 namespace rigiddyn {
 

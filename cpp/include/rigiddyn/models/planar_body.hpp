@@ -70,6 +70,7 @@ class PlanarBodyModel {
   static void project(Coordinates& /*y*/) {}
   RIGIDDYN_ALWAYS_INLINE Tangent velocity(const Coordinates& y) const { return rate(y); }
   static Coordinates retract(const Coordinates& y, const Tangent& theta) { return y + theta; }
+  RIGIDDYN_ALWAYS_INLINE Tangent velocity_at(const Coordinates& y, const Tangent& theta) const { return velocity(retract(y, theta)); }
   static Tangent dexp_inv(const Tangent& /*theta*/, const Tangent& xi) { return xi; }
   RIGIDDYN_ALWAYS_INLINE void kick(Coordinates& y, double h) const {
     y.segment<2>(3) += (h / mass_) * force_W(y(2));

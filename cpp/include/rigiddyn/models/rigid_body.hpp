@@ -5,6 +5,7 @@
 // Equations of motion (seed 001, Newton–Euler about the centre of mass G):
 //   ṗ_W = v_W,  q̇_WB = ½ q_WB ⊗ (ω_B, 0),  m v̇_W = f_W + m g_W,  I ω̇_B + ω_B × I ω_B = n_B.
 #pragma once
+#include "rigiddyn/check.hpp"  // format_value
 #include "rigiddyn/inertia/spatial_inertia.hpp"
 #include "rigiddyn/inertia/validity.hpp"
 #include "rigiddyn/models/euler_equations.hpp"
@@ -17,6 +18,8 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <type_traits>
+#include <vector>
 
 namespace rigiddyn {
 
@@ -82,35 +85,77 @@ using RigidBodyTangent = Eigen::Matrix<double, 13, 1>;
 RigidBodyCoordinates to_coordinates(const RigidBodyState& state, double work = 0.0);
 RigidBodyState to_rigid_body_state(const RigidBodyCoordinates& y);
 
-template <class Euler>
+// The applied loads a RigidBodyModel evaluates, fixed at compile time so that a step pays only
+// for the loads a scene has ("model only what a scene requires"; simulate chooses once per run):
+//   none     no applied load and no gravity: the free body, which does no work;
+//   fixed    gravity, world-fixed forces f_W and body-fixed couples n_B: constant during a step and
+//            independent of the attitude;
+//   turning  any loads, also body-fixed forces f_B and world-fixed couples n_W, which turn with the
+//            body (the wrench then depends on the attitude at every derivative evaluation).
+enum class LoadKind { none, fixed, turning };
+
+// The least LoadKind that covers every load of `schedule` (at any time) under gravity g_W [m/s²].
+LoadKind load_kind_of(const std::vector<AppliedLoad>& schedule, const Eigen::Vector3d& g_W);
+
+// Calls f(std::integral_constant<LoadKind, kind>{}) with kind = load_kind_of(schedule, g_W): the
+// single runtime switch, everything below it compiled per kind.
+template <class F>
+decltype(auto) with_load_kind(const std::vector<AppliedLoad>& schedule, const Eigen::Vector3d& g_W, F&& f) {
+  switch (load_kind_of(schedule, g_W)) {
+    case LoadKind::none: return f(std::integral_constant<LoadKind, LoadKind::none>{});
+    case LoadKind::fixed: return f(std::integral_constant<LoadKind, LoadKind::fixed>{});
+    case LoadKind::turning: return f(std::integral_constant<LoadKind, LoadKind::turning>{});
+  }
+  throw std::logic_error("with_load_kind: unknown LoadKind");
+}
+
+// The model of one rigid body (model_interface.hpp) with the Euler-equation form Euler and the
+// applied loads of `kind` (LoadKind::turning, the default, takes any loads).
+template <class Euler, LoadKind kind = LoadKind::turning>
 class RigidBodyModel {
  public:
   using Coordinates = RigidBodyCoordinates;
   using Tangent = RigidBodyTangent;
 
-  // g_W: uniform gravity [m/s²] in W (zero for none).
+  // g_W: uniform gravity [m/s²] in W (zero for none). Throws std::invalid_argument for gravity
+  // under LoadKind::none.
   RigidBodyModel(double mass, const Euler& euler, const Eigen::Vector3d& g_W = Eigen::Vector3d::Zero())
       : mass_(mass), inverse_mass_(1.0 / mass), euler_(euler), g_W_(g_W) {
     set_loads(ComLoads{});
   }
 
-  // Loads held constant until the next call (see loads.hpp for the time discretisation).
+  // Loads held constant until the next call (see loads.hpp for the time discretisation). Throws
+  // std::invalid_argument for loads that `kind` does not cover (see LoadKind).
   void set_loads(const ComLoads& loads) {
+    if constexpr (kind != LoadKind::turning) {
+      if (!(loads.f_B.isZero(0.0) && loads.n_W.isZero(0.0))) {
+        throw std::invalid_argument("loads: expected no body-fixed force and no world-fixed couple (LoadKind::none or fixed), got f_B = " +
+                                    format_value(loads.f_B.transpose()) + ", n_W = " + format_value(loads.n_W.transpose()));
+      }
+    }
+    if constexpr (kind == LoadKind::none) {
+      if (!(loads.f_W.isZero(0.0) && loads.n_B.isZero(0.0) && g_W_.isZero(0.0))) {
+        throw std::invalid_argument("loads: expected no loads and no gravity (LoadKind::none), got f_W = " +
+                                    format_value(loads.f_W.transpose()) + ", n_B = " + format_value(loads.n_B.transpose()) +
+                                    ", g_W = " + format_value(g_W_.transpose()));
+      }
+    }
     loads_ = loads;
     f_fixed_W_ = loads.f_W + mass_ * g_W_;
     turning_loads_ = !(loads.f_B.isZero(0.0) && loads.n_W.isZero(0.0));
-    loaded_ = turning_loads_ || !(f_fixed_W_.isZero(0.0) && loads.n_B.isZero(0.0));
   }
   const Euler& euler() const { return euler_; }
   double mass() const { return mass_; }
 
+  // The members below read and write y element by element (three_at, scalar stores): Eigen's packet
+  // copies of segments would reload, as one 2-wide load, values just stored one by one by the
+  // previous stage (a store-forwarding stall on the critical path; see euler_equations.hpp).
   RIGIDDYN_ALWAYS_INLINE Coordinates rate(const Coordinates& y) const {
     const Eigen::Map<const Eigen::Quaterniond> q(y.data() + 3);
-    const Eigen::Vector3d v = y.segment<3>(7), w = y.segment<3>(10);
+    const Eigen::Vector3d v = three_at(y, 7), w = three_at(y, 10);
     Eigen::Vector3d f_W, n_B;
-    wrench(q, f_W, n_B);
+    wrench(y, f_W, n_B);
     const Eigen::Vector3d alpha_B = euler_.angular_acceleration(w, n_B);
-    // element by element (scalar stores: see rk4.hpp's axpy on store forwarding)
     Coordinates dy;
     for (int i = 0; i < 3; ++i) dy[i] = v[i], dy[7 + i] = inverse_mass_ * f_W[i], dy[10 + i] = alpha_B[i];
     // quaternion kinematics q̇ = ½ q ⊗ (ω_B, 0) (seed 000, body-frame angular velocity), the Hamilton
@@ -130,66 +175,67 @@ class RigidBodyModel {
   }
 
   RIGIDDYN_ALWAYS_INLINE Tangent velocity(const Coordinates& y) const {
-    const Eigen::Map<const Eigen::Quaterniond> q(y.data() + 3);
-    const Eigen::Vector3d v = y.segment<3>(7), w = y.segment<3>(10);
+    const Eigen::Vector3d v = three_at(y, 7), w = three_at(y, 10);
     Eigen::Vector3d f_W, n_B;
-    wrench(q, f_W, n_B);
+    wrench(y, f_W, n_B);
     const Eigen::Vector3d alpha_B = euler_.angular_acceleration(w, n_B);
-    // element by element (scalar stores; see rk4.hpp's axpy on store forwarding)
     Tangent xi;
     for (int i = 0; i < 3; ++i) xi[i] = v[i], xi[3 + i] = w[i], xi[6 + i] = inverse_mass_ * f_W[i], xi[9 + i] = alpha_B[i];
     xi[12] = power(f_W, n_B, v, w);
     return xi;
   }
 
-  // y ⊕ Θ: vector parts added, q ← q ⊗ exp(Θ_rot) (Hamilton product written out, scalar stores)
+  // y ⊕ Θ: vector parts added, q ← q ⊗ exp(Θ_rot)
   RIGIDDYN_ALWAYS_INLINE static Coordinates retract(const Coordinates& y, const Tangent& theta) {
-    Coordinates out;
-    for (int i = 0; i < 3; ++i) out[i] = y[i] + theta[i];
-    const double x = y[3], yy = y[4], z = y[5], s = y[6];
-    const Eigen::Quaterniond e = rotvec_to_quat(theta.segment<3>(3));
-    out[3] = s * e.x() + x * e.w() + yy * e.z() - z * e.y();
-    out[4] = s * e.y() - x * e.z() + yy * e.w() + z * e.x();
-    out[5] = s * e.z() + x * e.y() - yy * e.x() + z * e.w();
-    out[6] = s * e.w() - x * e.x() - yy * e.y() - z * e.z();
-    for (int i = 7; i < 14; ++i) out[i] = y[i] + theta[i - 1];
+    Coordinates out = translated(y, theta);
+    times_exp(y.data() + 3, three_at(theta, 3), out.data() + 3);
     return out;
+  }
+
+  // ξ(y ⊕ Θ). Without body-fixed forces or world-fixed couples ξ does not read the attitude, so
+  // the exponential of the stage attitude is skipped (a torque-free body, gravity, world forces).
+  RIGIDDYN_ALWAYS_INLINE Tangent velocity_at(const Coordinates& y, const Tangent& theta) const {
+    if constexpr (kind == LoadKind::turning) {
+      if (turning_loads_) return velocity(retract(y, theta));
+    }
+    return velocity(translated(y, theta));
   }
 
   // Body-frame RKMK: R = R0 exp(Θ̂) gives Θ̇ = dexp⁻¹_{−Θ} ω = ω + ½ Θ × ω + (1/12) Θ × (Θ × ω) + O(|Θ|⁴)
   // (Iserles, Munthe-Kaas, Nørsett, Zanna, Acta Numerica 2000, §3; two commutators suffice for order 4).
   RIGIDDYN_ALWAYS_INLINE static Tangent dexp_inv(const Tangent& theta, const Tangent& xi) {
-    Tangent out = xi;
-    const Eigen::Vector3d th = theta.segment<3>(3), w = xi.segment<3>(3);
-    const Eigen::Vector3d th_x_w = th.cross(w);
-    const Eigen::Vector3d correction = 0.5 * th_x_w + (1.0 / 12.0) * th.cross(th_x_w);
-    for (int i = 0; i < 3; ++i) out[3 + i] += correction[i];
+    const Eigen::Vector3d th = three_at(theta, 3), w = three_at(xi, 3);
+    const Eigen::Vector3d th_x_w = cross_3(th, w), th_x_th_x_w = cross_3(th, th_x_w);
+    Tangent out;
+    for (int i = 0; i < 13; ++i) out[i] = xi[i];
+    for (int i = 0; i < 3; ++i) out[3 + i] = w[i] + 0.5 * th_x_w[i] + (1.0 / 12.0) * th_x_th_x_w[i];
     return out;
   }
 
   RIGIDDYN_ALWAYS_INLINE void kick(Coordinates& y, double h) const {
     Eigen::Vector3d f_W, n_B;
-    wrench(Eigen::Map<const Eigen::Quaterniond>(y.data() + 3), f_W, n_B);
-    y.segment<3>(7) += (h * inverse_mass_) * f_W;
-    y.segment<3>(10) = euler_.explicit_gyroscopic_kick(y.segment<3>(10), n_B, h);
+    wrench(y, f_W, n_B);
+    const Eigen::Vector3d w = euler_.explicit_gyroscopic_kick(three_at(y, 10), n_B, h);
+    for (int i = 0; i < 3; ++i) y[7 + i] += (h * inverse_mass_) * f_W[i], y[10 + i] = w[i];
   }
 
   RIGIDDYN_ALWAYS_INLINE void kick_implicit_gyroscopic(Coordinates& y, double h) const {
     Eigen::Vector3d f_W, n_B;
-    wrench(Eigen::Map<const Eigen::Quaterniond>(y.data() + 3), f_W, n_B);
-    y.segment<3>(7) += (h * inverse_mass_) * f_W;
-    y.segment<3>(10) = euler_.implicit_gyroscopic_kick(y.segment<3>(10), n_B, h);
+    wrench(y, f_W, n_B);
+    const Eigen::Vector3d w = euler_.implicit_gyroscopic_kick(three_at(y, 10), n_B, h);
+    for (int i = 0; i < 3; ++i) y[7 + i] += (h * inverse_mass_) * f_W[i], y[10 + i] = w[i];
   }
 
   // p += h v, q ← q ⊗ exp(h ω_B) (exact for constant ω), work += h × power at the current velocities
   RIGIDDYN_ALWAYS_INLINE void drift(Coordinates& y, double h) const {
-    Eigen::Map<Eigen::Quaterniond> q(y.data() + 3);
-    const Eigen::Vector3d v = y.segment<3>(7), w = y.segment<3>(10);
+    const Eigen::Vector3d v = three_at(y, 7), w = three_at(y, 10);
     Eigen::Vector3d f_W, n_B;
-    wrench(q, f_W, n_B);
+    wrench(y, f_W, n_B);
     y(13) += h * power(f_W, n_B, v, w);
-    y.segment<3>(0) += h * v;
-    q = (q * rotvec_to_quat(h * w)).normalized();
+    for (int i = 0; i < 3; ++i) y[i] += h * v[i];
+    const double q[4] = {y[3], y[4], y[5], y[6]};
+    times_exp(q, Eigen::Vector3d(h * w[0], h * w[1], h * w[2]), y.data() + 3);
+    project(y);
   }
 
   RecordedState record(const Coordinates& y) const {
@@ -207,21 +253,55 @@ class RigidBodyModel {
   }
 
  private:
-  // total force in W (gravity included) and couple in B at attitude q (unit up to the method's error)
-  RIGIDDYN_ALWAYS_INLINE void wrench(const Eigen::Quaterniond& q, Eigen::Vector3d& f_W, Eigen::Vector3d& n_B) const {
-    f_W = f_fixed_W_;
-    n_B = loads_.n_B;
-    if (turning_loads_) {
-      const Eigen::Quaterniond u = q.normalized();
-      f_W += u * loads_.f_B;
-      n_B += u.conjugate() * loads_.n_W;
+  // total force in W (gravity included) and couple in B at the attitude q of y (unit up to the
+  // method's error; q is read only under LoadKind::turning, when loads turn with the body)
+  RIGIDDYN_ALWAYS_INLINE void wrench([[maybe_unused]] const Coordinates& y, Eigen::Vector3d& f_W, Eigen::Vector3d& n_B) const {
+    if constexpr (kind == LoadKind::none) {
+      for (int i = 0; i < 3; ++i) f_W[i] = 0.0, n_B[i] = 0.0;
+    } else {
+      for (int i = 0; i < 3; ++i) f_W[i] = f_fixed_W_[i], n_B[i] = loads_.n_B[i];
     }
+    if constexpr (kind == LoadKind::turning) {
+      if (turning_loads_) {
+        Eigen::Quaterniond u(y[6], y[3], y[4], y[5]);
+        u.coeffs() *= 1.0 / u.coeffs().norm();
+        f_W += u * loads_.f_B;
+        n_B += u.conjugate() * loads_.n_W;
+      }
+    }
+  }
+
+  // (x[i], x[i + 1], x[i + 2]) by scalar loads
+  template <class Vector>
+  RIGIDDYN_ALWAYS_INLINE static Eigen::Vector3d three_at(const Vector& x, int i) {
+    return Eigen::Vector3d(x[i], x[i + 1], x[i + 2]);
+  }
+
+  // y with its vector parts moved by Θ and its attitude left as it is
+  RIGIDDYN_ALWAYS_INLINE static Coordinates translated(const Coordinates& y, const Tangent& theta) {
+    Coordinates out;
+    for (int i = 0; i < 3; ++i) out[i] = y[i] + theta[i];
+    for (int i = 3; i < 7; ++i) out[i] = y[i];
+    for (int i = 7; i < 14; ++i) out[i] = y[i] + theta[i - 1];
+    return out;
+  }
+
+  // out = q ⊗ exp(θ) for q, out stored (x, y, z, w) (the Hamilton product written out: scalar
+  // stores; q and out may not overlap)
+  RIGIDDYN_ALWAYS_INLINE static void times_exp(const double* q, const Eigen::Vector3d& theta, double* out) {
+    const double x = q[0], y = q[1], z = q[2], s = q[3];
+    const Eigen::Quaterniond e = rotvec_to_quat(theta);
+    out[0] = s * e.x() + x * e.w() + y * e.z() - z * e.y();
+    out[1] = s * e.y() - x * e.z() + y * e.w() + z * e.x();
+    out[2] = s * e.z() + x * e.y() - y * e.x() + z * e.w();
+    out[3] = s * e.w() - x * e.x() - y * e.y() - z * e.z();
   }
 
   // dW/dt = f_W · v_W + n_B · ω_B [W] (seed 001, power of a force at G and a couple)
   RIGIDDYN_ALWAYS_INLINE double power(const Eigen::Vector3d& f_W, const Eigen::Vector3d& n_B, const Eigen::Vector3d& v,
                                       const Eigen::Vector3d& w) const {
-    return loaded_ ? f_W.dot(v) + n_B.dot(w) : 0.0;
+    if constexpr (kind == LoadKind::none) return 0.0;  // a free body does no work and pays nothing for it
+    return f_W[0] * v[0] + f_W[1] * v[1] + f_W[2] * v[2] + n_B[0] * w[0] + n_B[1] * w[1] + n_B[2] * w[2];
   }
 
   double mass_;
@@ -230,8 +310,7 @@ class RigidBodyModel {
   Eigen::Vector3d g_W_;
   ComLoads loads_;
   Eigen::Vector3d f_fixed_W_;  // f_W + m g_W
-  bool turning_loads_;         // f_B or n_W non-zero
-  bool loaded_;                // any load or gravity: a free body does no work and pays nothing for it
+  bool turning_loads_;         // f_B or n_W non-zero (only LoadKind::turning reads it)
 };
 
 }  // namespace rigiddyn

@@ -46,6 +46,8 @@ struct Trajectory {
   std::vector<double> quaternion_norm_error;  // (n,) |q| − 1
   std::vector<double> work;                   // (n,) work of loads and gravity since t0 [J]
   bool diverged = false;                      // the state became non-finite; the run stopped there
+  std::int64_t unconverged_steps = 0;         // steps whose implicit solve stopped at its iteration cap
+                                              // (implicit_midpoint; always 0 for explicit methods)
   double elapsed_seconds = 0.0;               // wall time of the stepping loop (for benchmarks)
 
   std::size_t size() const { return t.size(); }
