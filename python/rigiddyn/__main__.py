@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import argparse
 import sys
+import warnings
+from typing import TextIO
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -60,15 +62,23 @@ def _add_tradeoff_parser(sub: "argparse._SubParsersAction[argparse.ArgumentParse
     p.add_argument("--no-progress", action="store_true", help="no progress bar")
 
 
+def _show_warning(message: Warning | str, category: type[Warning], filename: str, lineno: int,
+                  file: TextIO | None = None, line: str | None = None) -> None:
+    """Warnings on the command line: `rigiddyn: <Category>: <message>`, without a source line."""
+    print(f"rigiddyn: {category.__name__}: {message}", file=sys.stderr if file is None else file)
+
+
 def _run_tradeoff(args: argparse.Namespace) -> int:
     from pathlib import Path
 
     from rigiddyn.tradeoff import tradeoff
 
     try:
-        result = tradeoff(args.problem, methods=args.methods, dts=args.dts, horizon=args.horizon,
-                          tolerance=args.tolerance, measure=args.measure, cost=args.cost,
-                          progress=not args.no_progress)
+        with warnings.catch_warnings():  # restores the previous warning display afterwards
+            warnings.showwarning = _show_warning
+            result = tradeoff(args.problem, methods=args.methods, dts=args.dts, horizon=args.horizon,
+                              tolerance=args.tolerance, measure=args.measure, cost=args.cost,
+                              progress=not args.no_progress)
     except ValueError as e:
         print(f"rigiddyn tradeoff: {e}", file=sys.stderr)
         return 2
