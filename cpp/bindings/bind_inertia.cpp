@@ -19,6 +19,7 @@
 #include "rigiddyn/inertia/primitives.hpp"
 #include "rigiddyn/inertia/principal_axes.hpp"
 #include "rigiddyn/inertia/spatial_inertia.hpp"
+#include "rigiddyn/inertia/symmetry.hpp"
 #include "rigiddyn/inertia/validity.hpp"
 
 namespace rigiddyn::bindings {
@@ -375,6 +376,56 @@ void bind_primitives(py::module_& m) {
       "Point masses (n,) [kg] >= 0 at positions (n, 3) [m] (seed 000 (4.53)-(4.54)).");
 }
 
+// Symmetry planes as a list of (normal (3,), point (3,)) tuples.
+py::list planes_to_list(const std::vector<SymmetryPlane>& planes) {
+  py::list out;
+  for (const SymmetryPlane& p : planes) out.append(py::make_tuple(py_io::to_array(p.normal), py_io::to_array(p.point)));
+  return out;
+}
+
+void bind_symmetry(py::module_& m) {
+  m.def(
+      "symmetry_planes",
+      [](py::handle masses, py::handle positions, double tolerance) {
+        const Array mv = py_io::as_array(masses, "masses");
+        if (mv.ndim() != 1) throw py::value_error("masses: expected shape (n,)");
+        const Eigen::VectorXd mvec = Eigen::Map<const Eigen::VectorXd>(mv.data(), mv.size());
+        const PointRows p = as_points(positions, "positions");
+        std::vector<SymmetryPlane> planes;
+        {
+          py::gil_scoped_release release;
+          planes = symmetry_planes(mvec, p, tolerance);
+        }
+        return planes_to_list(planes);
+      },
+      "masses"_a, "positions"_a, "tolerance"_a = symmetry_tolerance,
+      "Planes of symmetry (seed 001 \"Plane of Symmetry\") of point masses (n,) [kg] > 0 at positions\n"
+      "(n, 3) [m]: the planes whose reflection maps every point onto a point of equal mass, within\n"
+      "tolerance * (largest distance from the centre of mass to a point) [m] and tolerance * mass.\n"
+      "Returns a list of (normal (3,) unit, largest-magnitude component positive; point (3,) [m] = the\n"
+      "centre of mass), in the frame of the positions. Candidates: the principal axes, and when principal\n"
+      "moments coincide, normals built from the points (rigiddyn/inertia/symmetry.hpp); for such\n"
+      "degenerate bodies (cube, regular tetrahedron) the planes found among them, not a proof of none else.");
+  m.def(
+      "mesh_symmetry_planes",
+      [](py::handle vertices, py::handle faces, double tolerance) {
+        const PointRows v = as_points(vertices, "vertices");
+        const MeshFaces f = as_faces(faces);
+        std::vector<SymmetryPlane> planes;
+        {
+          py::gil_scoped_release release;
+          planes = mesh_symmetry_planes(v, f, tolerance);
+        }
+        return planes_to_list(planes);
+      },
+      "vertices"_a, "faces"_a, "tolerance"_a = symmetry_tolerance,
+      "Planes of symmetry of the uniform solid bounded by a closed, outward-oriented mesh: vertices (n, 3)\n"
+      "[m], faces (f, 3). A plane qualifies when its reflection maps the vertex set onto itself (within\n"
+      "tolerance * largest com-vertex distance [m]) and each face onto a face with reversed orientation.\n"
+      "Returns a list of (normal (3,) unit, point (3,) [m] = the solid's centre of mass); candidates as\n"
+      "in symmetry_planes. ValueError naming the argument on a bad mesh.");
+}
+
 void bind_mesh_and_density(py::module_& m) {
   m.def(
       "require_closed_oriented_mesh",
@@ -399,6 +450,8 @@ void bind_mesh_and_density(py::module_& m) {
       "vertices"_a, "faces"_a, py::kw_only(), "mass"_a = py::none(), "density"_a = py::none(),
       "Thin shell made of the faces (any orientation, need not be closed): vertices (n, 3) [m], faces\n"
       "(f, 3). Give exactly one of mass= [kg] or density= [kg/m^2].");
+
+  bind_symmetry(m);
 
   py::class_<DensityIntegral>(m, "DensityIntegral", "Result of a density quadrature with its error estimate.")
       .def_readonly("inertia", &DensityIntegral::inertia, "SpatialInertia from the higher-order rule")

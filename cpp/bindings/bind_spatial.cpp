@@ -3,7 +3,6 @@
 // array functions transform_compose / transform_points.
 #include <pybind11/operators.h>
 
-#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -64,36 +63,39 @@ const double* item(const Stack& s, py::ssize_t i, py::ssize_t size) { return s.i
 
 using RowMatrix3d = Eigen::Matrix<double, 3, 3, Eigen::RowMajor>;
 
-Eigen::Vector3d vector_item(const Stack& s, py::ssize_t i) { return Eigen::Map<const Eigen::Vector3d>(item(s, i, 3)); }
+// Item i of a stack of 3-vectors, mapped in place (no copy).
+Eigen::Map<const Eigen::Vector3d> vector_item(const Stack& s, py::ssize_t i) {
+  return Eigen::Map<const Eigen::Vector3d>(item(s, i, 3));
+}
 
-// The transforms X[i] of a rotation stack R (3,3)|(n,3,3) and a translation stack p (3,)|(n,3),
-// validated by Transform's constructor; a bad rotation is reported as "<R name>[i]: expected ...".
-// A single (broadcast) transform is built and checked once.
-class TransformStack {
+// The rotations R[i] of a stack (3,3)|(n,3,3), each given rotation checked once by
+// checked_rotation_matrix: a single (broadcast) one here, stacked ones as they are read. A bad
+// rotation is reported as "<name>[i]: expected ..." ("<name>: ..." for a single one).
+class RotationStack {
  public:
-  TransformStack(const Stack& R, const Stack& p, std::string R_name) : R_(R), p_(p), R_name_(std::move(R_name)) {
-    if (!R.stacked && !p.stacked) single_ = make(0);
+  RotationStack(const Stack& R, std::string name) : R_(R), name_(std::move(name)) {
+    if (!R.stacked) single_ = checked(0);
   }
-  Transform operator[](py::ssize_t i) const { return single_ ? *single_ : make(i); }
+  Eigen::Matrix3d operator[](py::ssize_t i) const { return R_.stacked ? checked(i) : single_; }
 
  private:
-  Transform make(py::ssize_t i) const {
-    const Eigen::Matrix3d R = Eigen::Map<const RowMatrix3d>(item(R_, i, 9));
+  Eigen::Matrix3d checked(py::ssize_t i) const {
+    const Eigen::Matrix3d R = Eigen::Map<const RowMatrix3d>(R_.item(i, 9));
     try {
-      return Transform(R, vector_item(p_, i));
-    } catch (const std::invalid_argument& e) {  // "rotation: expected ..." (p is finite: as_stack checked it)
+      return checked_rotation_matrix(R, "rotation");
+    } catch (const std::invalid_argument& e) {  // "rotation: expected ..."
       const std::string message = e.what();
-      const std::string name = R_.stacked ? R_name_ + "[" + std::to_string(i) + "]" : R_name_;
+      const std::string name = R_.stacked ? name_ + "[" + std::to_string(i) + "]" : name_;
       throw std::invalid_argument(name + message.substr(message.find(':')));
     }
   }
   const Stack& R_;
-  const Stack& p_;
-  std::string R_name_;
-  std::optional<Transform> single_;
+  std::string name_;
+  Eigen::Matrix3d single_ = Eigen::Matrix3d::Identity();  // the broadcast rotation, if not stacked
 };
 
-// transform_compose: X_AC = X_AB * X_BC item by item (R_AC = R_AB R_BC, p_AC = R_AB p_BC + p_AB).
+// transform_compose: X_AC = X_AB * X_BC item by item, as Transform::operator* (R_AC = R_AB R_BC,
+// p_AC = R_AB p_BC + p_AB); the translations are finite (as_stack checked them).
 py::tuple transform_compose(py::handle R_AB_obj, py::handle p_AB_obj, py::handle R_BC_obj, py::handle p_BC_obj) {
   const Stack R_AB = py_io::as_stack(R_AB_obj, "R_AB", {3, 3}), p_AB = py_io::as_stack(p_AB_obj, "p_AB", {3});
   const Stack R_BC = py_io::as_stack(R_BC_obj, "R_BC", {3, 3}), p_BC = py_io::as_stack(p_BC_obj, "p_BC", {3});
@@ -106,17 +108,17 @@ py::tuple transform_compose(py::handle R_AB_obj, py::handle p_AB_obj, py::handle
   double* p_out = p_AC.mutable_data();
   {
     py::gil_scoped_release release;
-    const TransformStack X_AB(R_AB, p_AB, "R_AB"), X_BC(R_BC, p_BC, "R_BC");
+    const RotationStack rotations_AB(R_AB, "R_AB"), rotations_BC(R_BC, "R_BC");
     for (py::ssize_t i = 0; i < n; ++i) {
-      const Transform X_AC = X_AB[i] * X_BC[i];
-      Eigen::Map<RowMatrix3d>(R_out + 9 * i) = X_AC.rotation();
-      Eigen::Map<Eigen::Vector3d>(p_out + 3 * i) = X_AC.translation();
+      const Eigen::Matrix3d R_ab = rotations_AB[i];
+      Eigen::Map<RowMatrix3d>(R_out + 9 * i).noalias() = R_ab * rotations_BC[i];
+      Eigen::Map<Eigen::Vector3d>(p_out + 3 * i).noalias() = R_ab * vector_item(p_BC, i) + vector_item(p_AB, i);
     }
   }
   return py::make_tuple(R_AC, p_AC);
 }
 
-// transform_points: p_A = R_AB p_B + p_AB item by item.
+// transform_points: p_A = R_AB p_B + p_AB item by item, as Transform::act_point.
 Array transform_points(py::handle R_AB_obj, py::handle p_AB_obj, py::handle p_B_obj) {
   const Stack R_AB = py_io::as_stack(R_AB_obj, "R_AB", {3, 3}), p_AB = py_io::as_stack(p_AB_obj, "p_AB", {3});
   const Stack p_B = py_io::as_stack(p_B_obj, "p_B", {3});
@@ -126,8 +128,9 @@ Array transform_points(py::handle R_AB_obj, py::handle p_AB_obj, py::handle p_B_
   double* out = p_A.mutable_data();
   {
     py::gil_scoped_release release;
-    const TransformStack X_AB(R_AB, p_AB, "R_AB");
-    for (py::ssize_t i = 0; i < n; ++i) Eigen::Map<Eigen::Vector3d>(out + 3 * i) = X_AB[i].act_point(vector_item(p_B, i));
+    const RotationStack rotations_AB(R_AB, "R_AB");
+    for (py::ssize_t i = 0; i < n; ++i)
+      Eigen::Map<Eigen::Vector3d>(out + 3 * i).noalias() = rotations_AB[i] * vector_item(p_B, i) + vector_item(p_AB, i);
   }
   return p_A;
 }

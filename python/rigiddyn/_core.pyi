@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['AppliedLoad', 'DensityIntegral', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'InertiaCheck', 'InertiaReport', 'KineticEnergy', 'Motion', 'Particle', 'ParticleState', 'PlanarBody', 'PlanarBodyState', 'PointAcceleration', 'PointVelocity', 'PrincipalAxes', 'RigidBody', 'RigidBodyState', 'Screw', 'SimulationResult', 'SpatialInertia', 'TorqueFreeSolution', 'Transform', 'angular_momentum', 'apply_impulse', 'axis_angle_to_quat', 'box_shell', 'compose_kinematics', 'composite', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'from_point_masses', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mesh_shell', 'mesh_volume', 'methods', 'motion_cross_matrix', 'nearest_valid_inertia', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_euler', 'quat_to_matrix', 'quat_to_rotvec', 'relative_kinematics', 'require_closed_oriented_mesh', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'simulate', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'step', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'twist_to_screw', 'vee']
+__all__: list[str] = ['AppliedLoad', 'DensityIntegral', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'InertiaCheck', 'InertiaReport', 'KineticEnergy', 'Motion', 'Particle', 'ParticleState', 'PlanarBody', 'PlanarBodyState', 'PointAcceleration', 'PointVelocity', 'PrincipalAxes', 'RigidBody', 'RigidBodyState', 'Screw', 'SimulationResult', 'SpatialInertia', 'TorqueFreeSolution', 'Transform', 'angular_momentum', 'apply_impulse', 'axis_angle_to_quat', 'box_shell', 'compose_kinematics', 'composite', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'from_point_masses', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'nearest_valid_inertia', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_euler', 'quat_to_matrix', 'quat_to_rotvec', 'relative_kinematics', 'require_closed_oriented_mesh', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'simulate', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'twist_to_screw', 'vee']
 class FrameKinematics:
     """
     Frame F relative to frame P at one instant (P = the parent of a FrameMotion, or the
@@ -1208,6 +1208,14 @@ def mesh_shell(vertices: typing.Any, faces: typing.Any, *, mass: typing.Any = No
     Thin shell made of the faces (any orientation, need not be closed): vertices (n, 3) [m], faces
     (f, 3). Give exactly one of mass= [kg] or density= [kg/m^2].
     """
+def mesh_symmetry_planes(vertices: typing.Any, faces: typing.Any, tolerance: typing.SupportsFloat | typing.SupportsIndex = 1e-09) -> list:
+    """
+    Planes of symmetry of the uniform solid bounded by a closed, outward-oriented mesh: vertices (n, 3)
+    [m], faces (f, 3). A plane qualifies when its reflection maps the vertex set onto itself (within
+    tolerance * largest com-vertex distance [m]) and each face onto a face with reversed orientation.
+    Returns a list of (normal (3,) unit, point (3,) [m] = the solid's centre of mass); candidates as
+    in symmetry_planes. ValueError naming the argument on a bad mesh.
+    """
 def mesh_volume(vertices: typing.Any, faces: typing.Any) -> float:
     """
     Signed volume [m^3] of the mesh vertices (n, 3) [m], faces (f, 3).
@@ -1503,6 +1511,16 @@ def step(model: Particle, state: ParticleState, dt: typing.SupportsFloat | typin
     One step of `method` (see methods()) of length dt [s] from `state` at time t [s] under `loads`
     (AppliedLoad or sequence) and `gravity` (None/False, True for (0, 0, -9.81) m/s^2, or a 3-vector).
     Returns the new state (same type as `state`). ValueError names a bad argument.
+    """
+def symmetry_planes(masses: typing.Any, positions: typing.Any, tolerance: typing.SupportsFloat | typing.SupportsIndex = 1e-09) -> list:
+    """
+    Planes of symmetry (seed 001 "Plane of Symmetry") of point masses (n,) [kg] > 0 at positions
+    (n, 3) [m]: the planes whose reflection maps every point onto a point of equal mass, within
+    tolerance * (largest distance from the centre of mass to a point) [m] and tolerance * mass.
+    Returns a list of (normal (3,) unit, largest-magnitude component positive; point (3,) [m] = the
+    centre of mass), in the frame of the positions. Candidates: the principal axes, and when principal
+    moments coincide, normals built from the points (rigiddyn/inertia/symmetry.hpp); for such
+    degenerate bodies (cube, regular tetrahedron) the planes found among them, not a proof of none else.
     """
 def thin_disk(radius: typing.SupportsFloat | typing.SupportsIndex, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
     """

@@ -61,6 +61,34 @@ def test_matches_dop853_over_many_periods(inertia, w0, case):
     assert np.all(angle_between(q, ode.y[3:].T) <= 1e-12 * turned + 1e-14)
 
 
+@pytest.mark.slow
+@pytest.mark.parametrize("w0, case", [([0.3, 0.5, 1.0], "A"), ([1.0, 0.5, -0.3], "B")])
+def test_dop853_converges_to_it_over_100_periods(w0, case):
+    # Issue 5 asks for agreement with DOP853 at rtol = atol = 1e-13 over 100 periods. There DOP853's own
+    # global error (~5e-11 |w0| in w, ~5e-10 rad in attitude; it grows ~13x per decade of tolerance)
+    # dominates, so show the difference is the ODE solver's: as DOP853's tolerance goes 1e-12 -> 1e-13
+    # -> 3e-14 its distance to the closed form shrinks with its own error, and at 1e-13 it is a small
+    # fraction (measured 0.08) of DOP853's error estimate |y(1e-12) - y(1e-13)|, which a closed form
+    # wrong by more than that fraction of the estimate could not achieve.
+    I = np.diag([1.0, 2.0, 3.0])
+    w0 = np.array(w0)
+    sol = rigiddyn.TorqueFreeSolution(I, Q0, w0)
+    assert sol.case == case
+    t = np.linspace(0, 100 * sol.period, 201)
+    q, w = sol.state_at(t)
+    tols = (1e-12, 1e-13, 3e-14)
+    ode = [solve_ivp(euler_quaternion_rhs(I), (0, t[-1]), np.concatenate([w0, Q0]), method="DOP853",
+                     rtol=tol, atol=tol, t_eval=t).y for tol in tols]
+    w_diff = [np.linalg.norm(y[:3].T - w, axis=1).max() / np.linalg.norm(w0) for y in ode]
+    angle_diff = [angle_between(y[3:].T, q).max() for y in ode]
+    w_estimate = np.linalg.norm(ode[0][:3] - ode[1][:3], axis=0).max() / np.linalg.norm(w0)
+    angle_estimate = angle_between(ode[0][3:].T, ode[1][3:].T).max()
+    for diff, estimate in ((w_diff, w_estimate), (angle_diff, angle_estimate)):
+        assert diff[2] < 0.5 * diff[1] and diff[1] < 0.25 * diff[0]  # converging as DOP853 tightens
+        assert diff[1] < 0.25 * estimate
+    assert w_diff[1] < 3e-10 and angle_diff[1] < 3e-9
+
+
 def test_invariants_to_round_off():
     inertia = R_TILT @ np.diag([1.0, 2.0, 3.0]) @ R_TILT.T
     for w0 in ([0.3, 0.5, 1.0], [1.0, 0.5, 0.3], [0.01, 2.0, 0.01]):

@@ -304,6 +304,10 @@ def test_stack_errors_name_the_item_and_the_length():
         rd.transform_compose(np.stack([np.eye(3)] * 4), np.zeros((5, 3)), np.eye(3), np.zeros(3))
     with pytest.raises(ValueError, match=r"^p_B: expected 2 items"):
         rd.transform_points(np.stack([np.eye(3)] * 2), np.zeros(3), np.zeros((3, 3)))
+    with pytest.raises(ValueError, match=r"^R_AB\[3\]: expected"):  # a bad rotation in a stack
+        rd.transform_points(R, np.zeros(3), np.zeros((5, 3)))
+    with pytest.raises(ValueError, match=r"^R_AB: expected"):  # one bad rotation, broadcast over points
+        rd.transform_points(np.diag([1.0, 1.0, -1.0]), np.zeros((5, 3)), np.zeros((5, 3)))
 
 
 def test_wrong_argument_types():

@@ -7,11 +7,6 @@
 
 namespace rigiddyn {
 
-Transform::Transform(const Eigen::Matrix3d& rotation, const Eigen::Vector3d& translation)
-    : R_(checked_rotation_matrix(rotation, "rotation")), p_(translation) {
-  require_finite(translation, "translation");
-}
-
 Transform Transform::from_quat(const Eigen::Quaterniond& q_AB, const Eigen::Vector3d& translation) {
   require_finite(translation, "translation");
   return Transform(quat_to_matrix(checked_unit_quaternion(q_AB, "q_AB")), translation, Trusted{});

@@ -9,6 +9,8 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "rigiddyn/check.hpp"
+#include "rigiddyn/so3/matrix.hpp"
 #include "rigiddyn/spatial/force.hpp"
 #include "rigiddyn/spatial/motion.hpp"
 
@@ -20,7 +22,11 @@ class Transform {
   Transform() = default;
   // rotation: R_AB (3,3), orthonormal with det +1; translation: p_AB (3,) [m].
   // Throws std::invalid_argument naming "rotation"/"translation" on a non-rotation or non-finite input.
-  Transform(const Eigen::Matrix3d& rotation, const Eigen::Vector3d& translation);
+  // Inline: it runs per item in loops over arrays of transforms.
+  Transform(const Eigen::Matrix3d& rotation, const Eigen::Vector3d& translation)
+      : R_(checked_rotation_matrix(rotation, "rotation")), p_(translation) {
+    if (!translation.allFinite()) throw_invalid("translation", "finite values", translation);
+  }
   // q_AB: unit quaternion (checked, not normalised); translation p_AB [m].
   static Transform from_quat(const Eigen::Quaterniond& q_AB, const Eigen::Vector3d& translation);
   static Transform Identity() { return Transform(); }

@@ -1,0 +1,142 @@
+"""Planes of symmetry (seed 001 "Plane of Symmetry") from Python: every returned plane checked
+independently (numpy reflection + scipy KD-tree matching), boxes, tetrahedra, a prism, random
+mirrored sets at random orientations (hypothesis), broken symmetry, consistency with
+SpatialInertia.admits_symmetry_plane, bad input."""
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from scipy.spatial import cKDTree
+from scipy.spatial.transform import Rotation
+
+import rigiddyn as rd
+
+
+def reflects_onto_itself(masses, positions, normal, point, tol=1e-9):
+    """Independent check: reflecting every point about the plane lands on a point of equal mass."""
+    n = normal / np.linalg.norm(normal)
+    r = positions - point
+    image = positions - 2.0 * np.outer(r @ n, n)
+    dist, idx = cKDTree(positions).query(image)
+    size = np.max(np.linalg.norm(positions - positions.mean(axis=0), axis=1))
+    return bool(np.all(dist <= 1e-6 * size) and np.allclose(masses[idx], masses, rtol=tol))
+
+
+def has_normal(planes, n):
+    n = np.asarray(n, float) / np.linalg.norm(n)
+    return any(np.linalg.norm(np.cross(normal, n)) < 1e-9 for normal, _ in planes)
+
+
+def box_mesh(size):
+    """Box with edges `size`, each face split into four triangles around its centre (outward)."""
+    corners = np.array([[(i & 1) - 0.5, ((i >> 1) & 1) - 0.5, ((i >> 2) & 1) - 0.5] for i in range(8)]) * size
+    quads = [[0, 2, 3, 1], [4, 5, 7, 6], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2], [1, 3, 7, 5]]
+    vertices, faces = list(corners), []
+    for q in quads:
+        vertices.append(corners[q].mean(axis=0))
+        c = len(vertices) - 1
+        faces += [[c, q[j], q[(j + 1) % 4]] for j in range(4)]
+    return np.array(vertices), np.array(faces)
+
+
+def test_box_point_grid_and_box_mesh_have_three_planes():
+    grid = np.array([[0.5 * i, 0.7 * j, 1.1 * k] for i in range(3) for j in range(4) for k in range(5)])
+    masses = np.full(len(grid), 2.0)
+    planes = rd.symmetry_planes(masses, grid)
+    assert len(planes) == 3
+    body = rd.from_point_masses(masses, grid)
+    for normal, point in planes:
+        assert normal.shape == (3,) and point.shape == (3,)
+        np.testing.assert_allclose(point, body.com, atol=1e-12)
+        assert reflects_onto_itself(masses, grid, normal, point)
+        assert body.admits_symmetry_plane(normal)
+    for k in range(3):
+        assert has_normal(planes, np.eye(3)[k])
+
+    V, F = box_mesh(np.array([1.0, 2.0, 3.0]))
+    R = Rotation.from_rotvec([0.3, -0.8, 0.5]).as_matrix()
+    planes = rd.mesh_symmetry_planes(V @ R.T + [1.0, 2.0, -3.0], F)
+    assert len(planes) == 3
+    for k in range(3):
+        assert has_normal(planes, R[:, k])
+    for _, point in planes:
+        np.testing.assert_allclose(point, [1.0, 2.0, -3.0], atol=1e-12)
+
+
+def test_tetrahedra_and_prism():
+    regular = np.array([[1.0, 1, 1], [1, -1, -1], [-1, 1, -1], [-1, -1, 1]])
+    planes = rd.symmetry_planes(np.ones(4), regular)
+    assert len(planes) == 6  # degenerate inertia (all moments equal): found among the point candidates
+    for normal, point in planes:
+        assert reflects_onto_itself(np.ones(4), regular, normal, point)
+    faces = np.array([[0, 1, 2], [0, 2, 3], [0, 3, 1], [1, 3, 2]])
+    if rd.mesh_volume(regular, faces) < 0:
+        faces = faces[:, [0, 2, 1]]
+    assert len(rd.mesh_symmetry_planes(regular, faces)) == 6
+
+    irregular = np.array([[0.0, 0, 0], [1.3, 0.1, 0], [0.2, 0.9, 0.1], [0.3, 0.4, 1.7]])
+    assert rd.symmetry_planes(np.ones(4), irregular) == []
+
+    h = 1.5  # prism over the isosceles triangle (-1, 0), (1, 0), (0, 2): planes x = 0 and z = 0
+    tri = np.array([[-1.0, 0], [1, 0], [0, 2]])
+    V = np.vstack([np.c_[tri, np.full(3, -h / 2)], np.c_[tri, np.full(3, h / 2)]])
+    faces = [[0, 2, 1], [3, 4, 5]]
+    vertices = list(V)
+    for q in ([0, 1, 4, 3], [1, 2, 5, 4], [2, 0, 3, 5]):
+        vertices.append(V[q].mean(axis=0))
+        faces += [[len(vertices) - 1, q[j], q[(j + 1) % 4]] for j in range(4)]
+    planes = rd.mesh_symmetry_planes(np.array(vertices), np.array(faces))
+    assert len(planes) == 2
+    assert has_normal(planes, [1, 0, 0]) and has_normal(planes, [0, 0, 1])
+
+
+@settings(max_examples=50, deadline=None)
+@given(st.integers(0, 2**32 - 1), st.integers(3, 12))  # k = 2 pairs are coplanar: a second plane
+def test_random_mirrored_set_found_at_any_orientation_and_broken_by_perturbation(seed, k):
+    rng = np.random.default_rng(seed)
+    half = rng.uniform(-1, 1, (k, 3))
+    half[:, 2] = 0.1 + np.abs(half[:, 2])
+    masses = np.repeat(rng.uniform(0.5, 2.0, k), 2)
+    points = np.repeat(half, 2, axis=0)
+    points[1::2, 2] *= -1  # mirror images about z = 0
+    R = Rotation.random(random_state=seed).as_matrix()
+    t = rng.uniform(-5, 5, 3)
+    positions = points @ R.T + t
+    planes = rd.symmetry_planes(masses, positions)
+    assert len(planes) == 1
+    assert has_normal(planes, R[:, 2])
+    body = rd.from_point_masses(masses, positions)
+    normal, point = planes[0]
+    assert body.admits_symmetry_plane(normal)
+    assert reflects_onto_itself(masses, positions, normal, point)
+
+    moved = positions.copy()
+    moved[0, 0] += 1e-4
+    assert rd.symmetry_planes(masses, moved) == []
+    heavier = masses.copy()
+    heavier[1] *= 1.01
+    assert rd.symmetry_planes(heavier, positions) == []
+
+
+def test_bad_input_names_the_argument():
+    p = np.eye(3)
+    with pytest.raises(ValueError, match="^positions:"):
+        rd.symmetry_planes(np.ones(2), p)
+    with pytest.raises(ValueError, match=r"^masses\[1\]:"):
+        rd.symmetry_planes([1.0, 0.0, 1.0], p)
+    with pytest.raises(ValueError, match=r"^masses\[2\]:"):
+        rd.symmetry_planes([1.0, 1.0, -1.0], p)
+    with pytest.raises(ValueError, match="^masses:"):
+        rd.symmetry_planes(np.ones((3, 1)), p)
+    with pytest.raises(ValueError, match="^positions:"):
+        rd.symmetry_planes(np.ones(3), [[0, 0, np.nan], [1, 0, 0], [0, 1, 0]])
+    with pytest.raises(ValueError, match="^tolerance:"):
+        rd.symmetry_planes(np.ones(3), p, tolerance=-1.0)
+    V, F = box_mesh(np.ones(3))
+    with pytest.raises(ValueError, match="^faces"):
+        rd.mesh_symmetry_planes(V, F[:-1])
+    with pytest.raises(TypeError, match="^faces:"):
+        rd.mesh_symmetry_planes(V, F.astype(float))
+    with pytest.raises(ValueError, match="^vertices:"):
+        rd.mesh_symmetry_planes(V[:, :2], F)
