@@ -368,7 +368,10 @@ void bind_primitives(py::module_& m) {
       "from_point_masses",
       [](py::handle masses, py::handle positions) {
         const Array mv = py_io::as_array(masses, "masses");
-        if (mv.ndim() != 1) throw py::value_error("masses: expected shape (n,)");
+        if (mv.ndim() != 1) {
+          throw py::value_error("masses: expected shape (n,), got an array with " + std::to_string(mv.ndim()) +
+                                " dimensions");
+        }
         const Eigen::VectorXd mvec = Eigen::Map<const Eigen::VectorXd>(mv.data(), mv.size());
         return from_point_masses(mvec, as_points(positions, "positions"));
       },
@@ -388,7 +391,10 @@ void bind_symmetry(py::module_& m) {
       "symmetry_planes",
       [](py::handle masses, py::handle positions, double tolerance) {
         const Array mv = py_io::as_array(masses, "masses");
-        if (mv.ndim() != 1) throw py::value_error("masses: expected shape (n,)");
+        if (mv.ndim() != 1) {
+          throw py::value_error("masses: expected shape (n,), got an array with " + std::to_string(mv.ndim()) +
+                                " dimensions");
+        }
         const Eigen::VectorXd mvec = Eigen::Map<const Eigen::VectorXd>(mv.data(), mv.size());
         const PointRows p = as_points(positions, "positions");
         std::vector<SymmetryPlane> planes;
