@@ -6,8 +6,13 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-# Debian packages for the C++ tests and benchmarks (installed only when missing).
-packages=(cmake ninja-build g++ libeigen3-dev libgtest-dev libbenchmark-dev)
+# Debian packages for the C++ tests and benchmarks (installed only when missing). .ci/run checks
+# that every system header the C++ build reads comes from one of these (or their dependencies).
+packages=(cmake ninja-build g++ libeigen3-dev libgtest-dev libbenchmark-dev libboost-dev)
+if [ "${1:-}" = "--list-packages" ]; then
+  printf '%s\n' "${packages[@]}"
+  exit 0
+fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p")
