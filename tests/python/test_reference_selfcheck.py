@@ -1,6 +1,7 @@
 """The numpy reference (rigiddyn_ref) checked on its own, so that the oracle the core is compared
 with is itself trusted: rotations against SciPy, spatial structured forms against their dense
-6x6 matrices, kinematics against the seed's worked example and a finite-difference trajectory.
+6x6 matrices, kinematics against the seed's worked example and a finite-difference trajectory,
+the integrators against DOP853, the exact free flow against a long-double Taylor series.
 Never imports rigiddyn."""
 
 import warnings
@@ -13,8 +14,9 @@ from hypothesis.extra.numpy import arrays
 from scipy.integrate import solve_ivp
 from scipy.spatial.transform import Rotation
 
-from rigiddyn_ref import dynamics, integrators, kinematics, so3, spatial
+from rigiddyn_ref import dynamics, free_flow, integrators, kinematics, so3, spatial
 
+EPS = np.finfo(float).eps
 SEQUENCES = [s for base in ("xyz", "xzy", "yxz", "yzx", "zxy", "zyx",
                             "xyx", "xzx", "yxy", "yzy", "zxz", "zyz") for s in (base, base.upper())]
 
@@ -31,6 +33,8 @@ def rotations():
 
 
 def test_so3_conversions_match_scipy(rotations):
+    # each side: a few correctly rounded operations on unit numbers (rotations <= pi, SIMD
+    # transcendental functions <= 4 ulp): <= ~20 eps per entry, both sides 1e-14; products 1e-15 x 10
     q, S = rotations
     np.testing.assert_allclose(so3.quat_to_matrix(q), S.as_matrix(), atol=1e-15 * 10)
     np.testing.assert_allclose(so3.matrix_to_quat(S.as_matrix()), S.as_quat(canonical=True),
@@ -56,6 +60,8 @@ def test_euler_matches_scipy_including_gimbal_lock(rotations, seq):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # SciPy warns about gimbal lock (near-identity samples)
         angles = S.as_euler(seq)
+    # angles from R: R's round-off (a few eps) amplified by 1/|cos b| or 1/|sin b|; the near-lock
+    # samples (1e-9 from the identity) are locked on both sides: 1e-13 covers amplification <= 50
     np.testing.assert_allclose(so3.matrix_to_euler(seq, S.as_matrix()), angles, atol=1e-13)
     # where SciPy (and the reference) declare gimbal lock (|sin|, |cos| of θ2 < ~1e-7), setting
     # θ3 = 0 loses up to ~θ2 of the rotation: the round trip is exact only elsewhere
@@ -63,7 +69,7 @@ def test_euler_matches_scipy_including_gimbal_lock(rotations, seq):
     free = (np.abs(np.sin(b)) if seq[0].lower() == seq[2].lower() else np.abs(np.cos(b))) > 1e-6
     np.testing.assert_allclose(so3.euler_to_matrix(seq, angles[free]), S.as_matrix()[free],
                                atol=1e-14)
-    np.testing.assert_allclose(so3.euler_to_matrix(seq, angles), S.as_matrix(), atol=1e-6)
+    np.testing.assert_allclose(so3.euler_to_matrix(seq, angles), S.as_matrix(), atol=1e-6)  # locked: <= theta2 ~ 1e-7
     dots = np.abs(np.sum(so3.euler_to_quat(seq, angles[free]) * q[free], axis=-1))
     np.testing.assert_allclose(dots, 1.0, atol=1e-14)
     rng = np.random.default_rng(3)
@@ -73,6 +79,8 @@ def test_euler_matches_scipy_including_gimbal_lock(rotations, seq):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # SciPy warns about gimbal lock
         want = Rotation.from_euler(seq, locked).as_euler(seq)
+    # at an exact lock, b comes from an entry +-1 (asin/acos there: sqrt(2 eps) = 2e-8 per ulp, but
+    # the entry is exact here: cos 0 = 1, sin(pi/2) = 1), the first angle from O(1) entries: few eps
     np.testing.assert_allclose(so3.matrix_to_euler(seq, so3.euler_to_matrix(seq, locked)), want,
                                atol=1e-12)
 
@@ -82,10 +90,12 @@ def test_quat_integrate_matches_scipy(rotations):
     w = np.random.default_rng(2).normal(size=(400, 3)) * 5
     dt = 0.2
     step = Rotation.from_rotvec(w * dt)
+    # exp of angles up to |w dt| (<= 7 rad): eps relative in the angle, plus a product: both sides
+    tol = 16 * EPS * (1 + np.linalg.norm(w * dt, axis=1).max())
     np.testing.assert_allclose(so3.quat_to_matrix(so3.quat_integrate(q, w, dt, "body")),
-                               (S * step).as_matrix(), atol=1e-14)
+                               (S * step).as_matrix(), atol=tol)
     np.testing.assert_allclose(so3.quat_to_matrix(so3.quat_integrate(q, w, dt, "world")),
-                               (step * S).as_matrix(), atol=1e-14)
+                               (step * S).as_matrix(), atol=tol)
 
 
 vec6 = arrays(np.float64, (6,), elements=st.floats(-5, 5))
@@ -97,6 +107,8 @@ vec6 = arrays(np.float64, (6,), elements=st.floats(-5, 5))
 def test_spatial_structured_equals_dense(m1, m2, rotvec, p):
     R = so3.rotvec_to_matrix(rotvec)
     X, Xf = spatial.motion_matrix(R, p), spatial.force_matrix(R, p)
+    # inputs <= 5: products <= |p| |R| |m| <= 5 sqrt(3) * 5 sqrt(6) = 106, 6-term sums: gamma_6 106
+    # = 1.4e-13 per side; inverses: cond(X) <= (1 + |p|)^2 = 98 times eps times entries <= 9
     np.testing.assert_allclose(spatial.crm(m1) @ m2, spatial.cross_motion(m1, m2), atol=1e-12)
     np.testing.assert_allclose(spatial.crf(m1) @ m2, spatial.cross_force(m1, m2), atol=1e-12)
     np.testing.assert_allclose(X @ m1, spatial.act_motion(R, p, m1), atol=1e-12)
@@ -118,7 +130,8 @@ def test_screw_reassembles_twist(m):
     if np.linalg.norm(w) < 1e-3:
         return
     direction, point, pitch, magnitude = spatial.twist_to_screw(m)
-    # w = |w| s, v = |w| (r x s + h s): velocity of the origin of a screw motion
+    # w = |w| s, v = |w| (r x s + h s): velocity of the origin of a screw motion (|w| >= 1e-3: r and
+    # h to a few eps of |v|/|w| <= 1e4, times |w|: <= 1e-11 absolute)
     np.testing.assert_allclose(magnitude * direction, w, atol=1e-12)
     np.testing.assert_allclose(magnitude * (np.cross(point, direction) + pitch * direction), m[3:],
                                atol=1e-11)
@@ -143,7 +156,7 @@ def test_seed_001_worked_example_both_solutions():
     alpha = kinematics.compose_angular_acceleration(i1, np.zeros(3), k1, np.zeros(3))
     np.testing.assert_allclose(alpha, [0.0, -20.0, 0.0])
     a = kinematics.point_acceleration_terms(np.zeros(3), w, alpha, r_OP, np.zeros(3), np.zeros(3))
-    np.testing.assert_allclose(a["total"], answer, atol=1e-15)
+    np.testing.assert_allclose(a["total"], answer, atol=1e-15)  # terms <= 2.5 x 0.06: a few eps of them
     # alternate solution: P moves in R1 (on the disk), R1 turns at 5 i: Coriolis term appears
     v_rel = np.cross(k1, r_OP)
     a_rel = np.cross(k1, v_rel)
@@ -170,6 +183,8 @@ def test_frame_compose_matches_finite_differences():
     t, h = 0.8, 1e-4
     K = [kinematics.compose_kinematics(*_chain_states(s)) for s in (t - h, t, t + h)]
     R_dot = (K[2]["R"] - K[0]["R"]) / (2 * h)
+    # central differences, h = 1e-4: truncation h^2/6 |d3f| (<= 1e-8 |d3f|, <= 30 here) plus
+    # round-off eps |f|/h (2e-12), eps |f|/h^2 x 4 for the second difference (1e-7 |f|, |f| <= 3)
     np.testing.assert_allclose(so3.vee(R_dot @ K[1]["R"].T), K[1]["w"], atol=1e-7)
     np.testing.assert_allclose((K[2]["w"] - K[0]["w"]) / (2 * h), K[1]["alpha"], atol=1e-7)
     np.testing.assert_allclose((K[2]["p"] - K[0]["p"]) / (2 * h), K[1]["v"], atol=1e-7)
@@ -181,7 +196,7 @@ def test_frame_relative_inverts_compose():
     K_WA, K_AF = _chain_states(0.8)
     K_WF = kinematics.compose_kinematics(K_WA, K_AF)
     back = kinematics.relative_kinematics(K_WA, K_WF)
-    for key in K_AF:
+    for key in K_AF:  # compose then undo: a few dozen roundings of terms <= |w|^2 |p| ~ 10
         np.testing.assert_allclose(back[key], K_AF[key], atol=1e-13)
 
 
@@ -242,9 +257,11 @@ def test_integrators_converge_to_dop853_at_their_order(dop853_solution, method, 
     x0, x1 = dop853_solution
     n = 50 if order == 1 else 20
     e1, e2 = _error(_run_reference(method, n, x0), x1), _error(_run_reference(method, 2 * n, x0), x1)
+    # the next term of the expansion is O(h |w|) <= 0.2 relative at these steps (|w| <= 4, h >= 1/100);
+    # DOP853 at 1e-13 errs by ~1e-13, far below e2
     assert abs(np.log2(e1 / e2) - order) < 0.2, (e1, e2)
-    if order == 4:
-        assert _error(_run_reference(method, 200, x0), x1) < 1e-9
+    if order == 4:  # further into the asymptotic range: C h^4 from e2, within the same O(h) slack (x2)
+        assert _error(_run_reference(method, 200, x0), x1) < 2 * e2 * (2 * n / 200) ** 4 + 1e-12
 
 
 def test_rkmk4_attitude_is_fourth_order_without_torque():
@@ -264,6 +281,7 @@ def test_rkmk4_attitude_is_fourth_order_without_torque():
         y = integrators.simulate(model, y0, 1.0 / steps, steps, "rkmk4")
         R_err = so3.quat_to_matrix(y[3:7]).T @ x1[3:12].reshape(3, 3)
         errors.append(np.linalg.norm(so3.matrix_to_rotvec(R_err)))
+    # h |w| = 0.37 at 10 steps: the next term moves log2 by O(h |w|) ~ 0.2
     assert abs(np.log2(errors[0] / errors[1]) - 4.0) < 0.3, errors
 
 
@@ -271,8 +289,10 @@ def test_euler_principal_form_equals_full_form():
     rng = np.random.default_rng(3)
     for _ in range(20):
         d, w, n = rng.uniform(0.5, 2.0, 3), rng.normal(size=3), rng.normal(size=3)
+        # a few roundings of terms |n| + |w| |d w| over min d, and LAPACK's solve (kappa = max d/min d)
+        tol = 16 * EPS * d.max() / d.min() * (np.abs(n).max() + np.abs(w).sum() * np.abs(d * w).sum()) / d.min()
         np.testing.assert_allclose(dynamics.euler_angular_acceleration_principal(d, w, n),
-                                   dynamics.euler_angular_acceleration(np.diag(d), w, n), atol=1e-14)
+                                   dynamics.euler_angular_acceleration(np.diag(d), w, n), atol=tol)
 
 
 def test_inverse_dynamics_undoes_forward_dynamics():
@@ -283,6 +303,7 @@ def test_inverse_dynamics_undoes_forward_dynamics():
     a, dw = dynamics.rigid_body_accelerations(1.7, I_FULL, q, w, loads, GRAVITY)
     f_W, n_B = dynamics.rigid_body_wrench(1.7, I_FULL, w, a, dw, GRAVITY)
     want_f, want_n = dynamics.body_wrench(q, loads)
+    # forward then inverse: a solve with I (kappa 2.3) and terms <= ~10 (normal inputs): 16 eps 2.3 10
     np.testing.assert_allclose(f_W, want_f, atol=1e-13)
     np.testing.assert_allclose(n_B, want_n, atol=1e-13)
     a_p = dynamics.particle_acceleration(1.7, f_W, GRAVITY)
@@ -304,6 +325,7 @@ def test_impulse_changes_momentum_by_the_impulse():
     for frame, J, r in (("world", J_W, r_W),
                         ("body", so3.quat_rotate(to_B, J_W), so3.quat_rotate(to_B, r_W))):
         v1, w1 = dynamics.apply_impulse(1.7, I_FULL, q, v, w, J, r, frame)
+        # m (v + J/m - v) and the moments of it: a few roundings of numbers <= 10 (normal inputs)
         np.testing.assert_allclose(dynamics.linear_momentum(1.7, v1 - v), J_W, atol=1e-13)
         dH_C = (dynamics.angular_momentum_about_com(I_FULL, q, w1)
                 - dynamics.angular_momentum_about_com(I_FULL, q, w))
@@ -321,4 +343,141 @@ def test_work_matches_kinetic_energy_change():
     y = integrators.simulate(model, y0, 1e-3, 1000, "rk4", LOADS)
     T0, T1 = sum(dynamics.kinetic_energy(1.7, I_FULL, y0[7:10], y0[10:13])), \
         sum(dynamics.kinetic_energy(1.7, I_FULL, y[7:10], y[10:13]))
+    # T - W is an invariant of the ODE; RK4 changes it by its local error, ~(h |w|)^5/120 T per step
+    # (h |w| = 2.5e-3: 1e-15 T), and round-off 2 eps T per step: 1000 steps, 2.2e-12 T
     assert abs((T1 - T0) - y[13]) < 1e-10 * max(1.0, abs(T1))
+
+
+# ------------------------------------------------------------------ the exact free flow
+LONG = np.longdouble
+EXTENDED = np.finfo(LONG).eps < 1e-18  # x86-64 Linux: 80-bit, eps 1.1e-19
+
+
+def _inverse3(A):
+    """Inverse of a 3x3 matrix by its adjugate (numpy's inv has no long double)."""
+    C = np.array([[np.cross(A[(j + 1) % 3], A[(j + 2) % 3])[i] for j in range(3)] for i in range(3)])
+    return C / (A[0] @ C[:, 0])
+
+
+def taylor_free_flow(I, R0, w0, h, chunk=0.1, order=24):
+    """The Euler–Poinsot flow over h by Taylor series in long double: ṁ = m x J m (J = I⁻¹),
+    Ṙ = R [J m]x, coefficients by the Cauchy products of the quadratic right-hand side, on
+    chunks with |ω| tau <= 0.1 (remainder <= 0.1^25), so the error is round-off ~1e-18.
+    Returns (R, w) in long double."""
+    Iq = np.array(I, LONG)
+    J = _inverse3(Iq)
+    m, R = Iq @ np.array(w0, LONG), np.array(R0, LONG)
+    n = max(1, int(np.ceil(abs(h) * np.linalg.norm(w0) / chunk)))
+    tau = LONG(h) / n
+    for _ in range(n):
+        ms, ws, Rs = [m], [J @ m], [R]
+        for k in range(order):
+            ms.append(sum(np.cross(ms[j], ws[k - j]) for j in range(k + 1)) / (k + 1))
+            Rs.append(sum(Rs[j] @ so3.hat(ws[k - j]).astype(LONG) for j in range(k + 1)) / (k + 1))
+            ws.append(J @ ms[-1])
+        m, R = ms[-1], Rs[-1]
+        for k in range(order - 1, -1, -1):
+            m, R = ms[k] + tau * m, Rs[k] + tau * R
+    return R, J @ m
+
+
+def _flow_errors(I, R0, w0, h):
+    """(attitude error [rad], |Δω|/|ω|) of free_flow.free_rotation against taylor_free_flow."""
+    R_want, w_want = taylor_free_flow(I, R0, w0, h)
+    R, w = free_flow.free_rotation(I, R0, w0, h)
+    D = R_want.T @ np.array(R, LONG)
+    angle = np.linalg.norm([D[2, 1] - D[1, 2], D[0, 2] - D[2, 0], D[1, 0] - D[0, 1]]) / 2
+    return float(angle), float(np.linalg.norm(np.array(w, LONG) - w_want) / np.linalg.norm(w_want))
+
+
+def _free_flow_cases():
+    D = np.diag([1.0, 2.0, 3.0])
+    tilt = so3.rotvec_to_matrix([0.4, 0.1, -0.3])
+    w_sep = 0.3 * np.sqrt(3) / 3  # Δ2 = 0 for diag(1, 2, 3): m3² = 3 m1²
+    cases = [(np.array([[0.9, 0.05, -0.1], [0.05, 1.4, 0.08], [-0.1, 0.08, 1.9]]), [1.2, -0.7, 2.0], 0.01),
+             (tilt @ np.diag([3.0, 1.0, 2.0]) @ tilt.T, [0.3, -0.5, 1.0], 0.7),
+             (D, [0.3, 2.0, -0.4], -0.5), (D, [1.0, 0.5, -0.3], 3.0)]  # case B; several sub-steps
+    for closeness in (1e-3, 1e-9, 1e-14, 0.0):  # both sides of the separatrix, and on it
+        cases += [(D, [0.3, 2.0, w_sep * (1 + closeness)], 0.4), (D, [0.3, 2.0, w_sep * (1 - closeness)], 0.4)]
+    for small in (1e-4, 1e-10):  # near steady spins about each axis
+        cases += [(D, [small, 0.3 * small, 2.0], 0.4), (D, [2.0, small, -0.4 * small], 0.4),
+                  (D, [small, 2.0, small], 0.4)]
+    cases += [(np.diag([1.0, 1.0 + 1e-9, 2.0]), [0.5, -0.7, 0.4], 0.4),  # nearly symmetric: elliptic
+              (np.diag([1.0, 1.0, 2.0]), [0.5, -0.7, 0.4], 0.4), (np.diag([1.0, 2.0, 2.0]), [0.5, -0.7, 0.4], 0.4),
+              (0.7 * np.eye(3), [0.5, -0.7, 0.4], 0.4), (D, [0.0, 2.0, 0.0], 0.4), (D, [0.0, 0.0, 0.0], 0.4)]
+    rng = np.random.default_rng(11)
+    for _ in range(4):
+        A = rng.normal(size=(3, 3))
+        w = rng.normal(size=3)
+        cases.append((A @ A.T + 0.5 * np.eye(3), w, rng.uniform(-1.0, 1.0) / np.linalg.norm(w)))
+    return cases
+
+
+@pytest.mark.skipif(not EXTENDED, reason="needs an extended-precision long double for the Taylor reference")
+@pytest.mark.parametrize("index", range(len(_free_flow_cases())))
+def test_free_flow_meets_its_stated_bound(index):
+    """free_flow.free_rotation against a long-double Taylor series of Euler's equations (error
+    ~1e-18, far below the bound) in every branch: full inertia, cases A and B, the separatrix
+    approached from both sides to 1e-14 and on it, near steady spins about each axis, nearly and
+    exactly symmetric bodies, a sphere, rest, negative and multi-sub-step steps."""
+    I, w0, h = _free_flow_cases()[index]
+    w0 = np.asarray(w0, float)
+    R0 = so3.rotvec_to_matrix([0.3, -0.5, 0.8])
+    if not np.any(w0):
+        R, w = free_flow.free_rotation(I, R0, w0, h)
+        assert np.array_equal(R, R0) and not np.any(w)
+        return
+    angle, dw = _flow_errors(I, R0, w0, h)
+    bound = free_flow.step_error_bound(I, h, w0)
+    assert angle <= bound and dw <= bound, (angle / EPS, dw / EPS, bound / EPS)
+
+
+def test_jacobi_functions_of_small_argument():
+    """The AGM's sn, cn, dn against SciPy's ellipj where SciPy is accurate (k away from 1: its own
+    error is a few eps, DLMF 22.20(ii) with the same AGM), the identities, and k = 0, 1 closed forms."""
+    from scipy.special import ellipj
+    v = np.linspace(-0.5, 0.5, 41)
+    for k in (0.0, 1e-8, 0.3, 0.51, 0.9, 0.999):
+        sn, cn, dn = free_flow.jacobi_small(v, k, 1.0 - k)
+        want = ellipj(v, k)[:3]
+        for got, expected in zip((sn, cn, dn), want):
+            np.testing.assert_allclose(got, expected, rtol=0, atol=8 * EPS)  # both a few eps of values <= 1
+        np.testing.assert_allclose(sn**2 + cn**2, 1.0, rtol=0, atol=4 * EPS)
+        np.testing.assert_allclose(dn**2 + k * sn**2, 1.0, rtol=0, atol=4 * EPS)
+    sn, cn, dn = free_flow.jacobi_small(v, 1.0, 0.0)  # k = 1: tanh, sech, sech (DLMF 22.5.3)
+    np.testing.assert_allclose(sn, np.tanh(v), rtol=0, atol=2 * EPS)
+    np.testing.assert_allclose(cn, 1 / np.cosh(v), rtol=0, atol=2 * EPS)
+    with pytest.raises(ValueError, match="^v"):
+        free_flow.jacobi_small(0.6, 0.5, 0.5)
+
+
+def test_addition_theorem_walks_a_whole_period():
+    """DETEST B5 (Hull, Enright, Fellen, Sedgwick 1972): (sn, cn, dn)(t | 0.51) has period
+    4K = 7.450563; 400 addition-theorem steps of 4K/400 return to (0, 1, 1) within 400 steps of
+    a few eps each (linear accumulation: the walk is neutrally stable in the phase only)."""
+    from scipy.special import ellipk
+    k = 0.51
+    quarter = ellipk(k)
+    assert abs(4 * quarter - 7.450563) < 5e-7  # the published figure has 7 digits
+    step = free_flow.jacobi_small(4 * quarter / 400, k, 1 - k)
+    triple = (0.0, 1.0, 1.0)
+    for _ in range(400):
+        triple = free_flow.jacobi_add(*triple, *step, k)
+    np.testing.assert_allclose(triple, (0.0, 1.0, 1.0), rtol=0, atol=400 * 8 * EPS)
+
+
+def test_free_flow_composes_and_asserts():
+    """Two half steps equal one step (each within the stated bound), and the assertions fire:
+    a momentum off its orbit's identities, a quadrature that cannot converge."""
+    I = np.array([[0.9, 0.05, -0.1], [0.05, 1.4, 0.08], [-0.1, 0.08, 1.9]])
+    R0, w0, h = so3.rotvec_to_matrix([0.3, -0.5, 0.8]), np.array([1.2, -0.7, 2.0]), 0.6
+    R1, w1 = free_flow.free_rotation(I, R0, w0, h)
+    R2, w2 = free_flow.free_rotation(I, *free_flow.free_rotation(I, R0, w0, h / 2), h / 2)
+    bound = 3 * free_flow.step_error_bound(I, h, w0)  # one step and two half steps
+    assert np.linalg.norm(so3.matrix_to_rotvec(R1.T @ R2)) <= bound
+    assert np.linalg.norm(w1 - w2) <= bound * np.linalg.norm(w0)
+    orbit = free_flow._EllipticOrbit(np.array([1.0, 2.0, 3.0]), np.array([0.6, 0.0, 0.8]))
+    with pytest.raises(FloatingPointError, match="^m"):
+        orbit.triple(np.array([0.6, 0.1, 0.8]))
+    with pytest.raises(FloatingPointError, match="^quadrature"):
+        free_flow.integrate_positive(lambda t: 1.0 / np.abs(t - 0.3), 0.0, 1.0)

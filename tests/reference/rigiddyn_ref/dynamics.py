@@ -95,6 +95,18 @@ def loads_at(schedule, t: float) -> Loads:
     return total
 
 
+def step_pieces(schedule, t: float, h: float):
+    """The pieces (start, length) of a step from t to t + h between the switch times of `schedule`
+    (its finite t_start and t_end strictly inside the step), for integrating a piecewise-constant
+    schedule exactly: each piece takes the loads active at its start. One piece (t, h) when no
+    switch time falls inside the step."""
+    cuts = sorted({b for load in schedule for b in (load.t_start, load.t_end) if t < b < t + h})
+    if not cuts:
+        return [(t, h)]
+    ends = cuts + [t + h]
+    return [(a, b - a) for a, b in zip([t] + cuts, ends)]
+
+
 def wrench_of_force_at_point(q_WB, force, point, frame="world"):
     """A force applied at a point of the body, reduced to the centre of mass: the same force and the
     couple r × f (moment about the centre of mass, seed 000 (4.41)). `point` is the point's position

@@ -6,7 +6,7 @@ loads held constant over a step. Written from the literature, independently of t
 
 - implicit_midpoint (Hairer, Lubich, Wanner, GNI I.1): y1 = y0 + h f((y0 + y1)/2) on the 14
   coordinates as they stand (the quaternion as a 4-vector), solved by fixed-point iteration to
-  round-off; order 2.
+  round-off in every coordinate; order 2.
 - splitting_dlm (Dullweber, Leimkuhler, McLachlan, J. Chem. Phys. 107, 1997; McLachlan & Reich):
   Strang kick(h/2) · free(h) · kick(h/2); the free rotation split over the principal axes
   H = Σ m_i²/(2 I_i), each term's flow a rotation of m_P by -θ and of R_WP by +θ about e_i,
@@ -15,9 +15,9 @@ loads held constant over a step. Written from the literature, independently of t
 - splitting_dlm_yoshida4: Yoshida's triple jump (Phys. Lett. A 150, 1990) of three full DLM
   steps (the core merges the adjacent kicks; equal in exact arithmetic).
 - exact_flow_kick (Celledoni, Fassò, Säfström, Zanna 2008): kick(h/2) · exact free flow(h) ·
-  kick(h/2). The reference "exact" free flow is NOT the elliptic-function solution: it is the
-  order-6 triple jump of the Yoshida-DLM map over `FREE_FLOW_SUBSTEPS` sub-steps, accurate to
-  ~1e-15 relative per step for h|ω| <= 0.05 (an independent route to the same flow).
+  kick(h/2), the free flow in closed form by free_flow.free_rotation (Jacobi's functions advanced
+  by their addition theorem, the precession by asserted quadrature; a route independent of the
+  core's), accurate per step to free_flow.step_error_bound = 16 eps κ (1 + h|ω|), κ = I3/I1.
 - exact: exact_flow_kick for torque-free bodies (raises ValueError on a couple).
 Kicks: v += h f/m, ω += h I⁻¹ n at the current attitude, work += h (f·v̄ + n·ω̄).
 """
@@ -27,17 +27,15 @@ from __future__ import annotations
 import numpy as np
 
 from . import dynamics as dyn
+from .free_flow import free_rotation
 from .so3 import matrix_to_quat, quat_to_matrix, rotvec_to_matrix
 
 METHODS = ("implicit_midpoint", "splitting_dlm", "splitting_dlm_yoshida4", "exact_flow_kick", "exact")
 
 YOSHIDA_GAMMA1 = 1.0 / (2.0 - 2.0 ** (1.0 / 3.0))
 YOSHIDA_GAMMA0 = -(2.0 ** (1.0 / 3.0)) / (2.0 - 2.0 ** (1.0 / 3.0))
-# the triple jump once more (Yoshida 1990): from the symmetric order-4 map to order 6
-YOSHIDA6_GAMMA1 = 1.0 / (2.0 - 2.0 ** (1.0 / 5.0))
-YOSHIDA6_GAMMA0 = -(2.0 ** (1.0 / 5.0)) / (2.0 - 2.0 ** (1.0 / 5.0))
-FREE_FLOW_SUBSTEPS = 4
-MIDPOINT_TOLERANCE = 1e-15
+MIDPOINT_TOLERANCE = np.finfo(float).eps  # per coordinate, relative to max(1, |coordinate|)
+MIDPOINT_STALL = 64 * np.finfo(float).eps  # a change that stops shrinking below this is round-off
 MIDPOINT_MAX_ITERATIONS = 200
 
 
@@ -76,22 +74,6 @@ def dlm_free_rotation(I, R_WB, w_B, h):
     return R_WP @ R_BP.T, R_BP @ (m / moments)
 
 
-def yoshida_free_rotation(I, R_WB, w_B, h):
-    for gamma in (YOSHIDA_GAMMA1, YOSHIDA_GAMMA0, YOSHIDA_GAMMA1):
-        R_WB, w_B = dlm_free_rotation(I, R_WB, w_B, gamma * h)
-    return R_WB, w_B
-
-
-def accurate_free_rotation(I, R_WB, w_B, h, substeps=FREE_FLOW_SUBSTEPS):
-    """The Euler–Poinsot flow over h to ~round-off for small h|ω|: `substeps` sub-steps of the
-    order-6 triple jump of the Yoshida-DLM map (error ~ (h|ω|/substeps)^6 per step)."""
-    tau = h / substeps
-    for _ in range(substeps):
-        for gamma in (YOSHIDA6_GAMMA1, YOSHIDA6_GAMMA0, YOSHIDA6_GAMMA1):
-            R_WB, w_B = yoshida_free_rotation(I, R_WB, w_B, gamma * tau)
-    return R_WB, w_B
-
-
 def kick(model, y, h):
     """The loads' flow over h at the current attitude; returns h I⁻¹ n_B."""
     f_W, n_B = dyn.body_wrench(y[3:7], model.loads, model.mass, model.g_W)
@@ -128,7 +110,7 @@ def splitting_dlm_yoshida4(model, y, h):
 
 
 def exact_flow_kick(model, y, h):
-    return strang(model, y, h, accurate_free_rotation)
+    return strang(model, y, h, free_rotation)
 
 
 def exact(model, y, h):
@@ -139,14 +121,21 @@ def exact(model, y, h):
 
 
 def implicit_midpoint(model, y, h):
+    """Fixed-point iteration ȳ <- y0 + (h/2) f(ȳ) (a contraction for h |∂f/∂y| < 2) until the
+    change of every coordinate is ≤ MIDPOINT_TOLERANCE max(1, |coordinate|) (one ulp of the
+    largest, each coordinate in its own unit) or stops shrinking at round-off level; then
+    y1 = 2 ȳ − y0. FloatingPointError if it has not converged after MIDPOINT_MAX_ITERATIONS."""
     y0 = np.array(y, dtype=float)
-    mid = y0.copy()
+    mid, previous = y0.copy(), np.inf
     for _ in range(MIDPOINT_MAX_ITERATIONS):
         new = y0 + 0.5 * h * model.rate(mid)
-        change = np.abs(new - mid).max()
+        change = np.max(np.abs(new - mid) / np.maximum(1.0, np.abs(new)))
         mid = new
-        if change <= MIDPOINT_TOLERANCE * np.abs(mid).max():
+        if change <= MIDPOINT_TOLERANCE or (change >= previous and change <= MIDPOINT_STALL):
             break
+        previous = change
+    else:
+        raise FloatingPointError(f"h: the implicit midpoint iteration did not converge at h = {h}")
     y1 = 2.0 * mid - y0
     y1[3:7] /= np.linalg.norm(y1[3:7])
     return y1
@@ -160,9 +149,11 @@ def step(model, y, h, method):
 
 
 def simulate(model, y0, h, steps, method, schedule=(), t0=0.0):
-    """`steps` steps from y0 at t0 (loads active at each step's start); the final coordinates."""
+    """`steps` steps from y0 at t0; a step across a switch time of the schedule is split there
+    (dynamics.step_pieces), each piece with the loads active on it. Returns the final coordinates."""
     y = np.array(y0, dtype=float)
     for i in range(steps):
-        model.set_loads(dyn.loads_at(schedule, t0 + i * h))
-        y = step(model, y, h, method)
+        for start, length in dyn.step_pieces(schedule, t0 + i * h, h):
+            model.set_loads(dyn.loads_at(schedule, start))
+            y = step(model, y, length, method)
     return y
