@@ -13,7 +13,7 @@ using FreeBodyY = Eigen::Matrix<double, 7, 1>;
 
 // n steps of size h [s] of classic RK4 on Euler's equations and quaternion kinematics for a free
 // body with principal moments I [kg m²] (3), from ω0 [rad/s] (3, in B) and q_WB = identity:
-//   ω̇ = I⁻¹((I ω) × ω),  q̇ = q ⊗ (0, ω)/2  (seed 001, Euler's equations; seed 000, quaternion kinematics),
+//   ω̇ = I⁻¹((I ω) × ω),  q̇ = q ⊗ (0, ω)/2  (Craig, Euler's equations; Rigid-body notes, quaternion kinematics),
 // q renormalised after every step. Returns the final y.
 inline FreeBodyY rk4_free_body_baseline(const Eigen::Vector3d& I, const Eigen::Vector3d& w0, double h,
                                         std::int64_t n) {

@@ -8,6 +8,9 @@
 // implicit_midpoint 301, splitting_dlm 148, splitting_dlm_yoshida4 430, exact_flow_kick 572 (was 5670
 // before FreeRotationFlow and the duplication R_J), rk4 57 ns/step; exact_state 286 ns/evaluation
 // (was 1580); hand-written RK4 baseline ~90 ns/step.
+// The splittings' rotations by increments (|L| a round-off walk, issue 9), measured on 2026-11-23 as
+// rigiddyn/baseline, median of 3 runs each, before → after: splitting_dlm 1.47 → 1.52,
+// splitting_dlm_yoshida4 4.17 → 4.16 (`--benchmark_filter=splitting --benchmark_min_time=0.2`).
 #include <benchmark/benchmark.h>
 
 #include "baselines.hpp"
@@ -24,11 +27,12 @@ constexpr double kH = 0.01;
 
 std::int64_t steps() { return rigiddyn::bench::bench_size(100000, 1000); }
 
-// rigiddyn: n steps of Integrator on the rigid-body model (principal form, no loads)
+// rigiddyn: n steps of Integrator on the rigid-body model simulate() runs for this scene (principal
+// form, no loads: LoadKind::none, what with_load_kind picks)
 template <class Integrator>
 void step_rigiddyn(benchmark::State& state) {
   const std::int64_t n = steps();
-  const rigiddyn::RigidBodyModel<rigiddyn::PrincipalEuler> model(1.0, rigiddyn::PrincipalEuler(kInertia));
+  const rigiddyn::RigidBodyModel<rigiddyn::PrincipalEuler, rigiddyn::LoadKind::none> model(1.0, rigiddyn::PrincipalEuler(kInertia));
   for (auto _ : state) {
     rigiddyn::RigidBodyState s0;
     s0.w_B = kW0;

@@ -1,19 +1,19 @@
-// Python bindings of the dynamics layer: models (Particle, PlanarBody, RigidBody), their states,
-// applied loads, one `step` of any method, `simulate`, and the method registry `methods()`.
-#include <pybind11/eigen.h>
+// Python bindings of the simulation layer: applied loads, one `step` of any method, `simulate`, and
+// the method registry `methods()` (the bodies, their states and dynamics are in bind_bodies.cpp).
+// Every argument is taken as a handle and converted by name (numpy_io.hpp), so a wrong one raises
+// TypeError/ValueError naming it, never pybind11's overload list.
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
+#include "common_args.hpp"
 #include "numpy_io.hpp"
 #include "rigiddyn/check.hpp"
-#include "rigiddyn/dynamics/particle_dynamics.hpp"
-#include "rigiddyn/dynamics/planar_body_dynamics.hpp"
-#include "rigiddyn/dynamics/rigid_body_dynamics.hpp"
 #include "rigiddyn/simulate/simulate.hpp"
 
-#include <memory>
+#include <chrono>
+#include <optional>
 #include <string>
-#include <variant>
+#include <utility>
 
 namespace rigiddyn::bindings {
 
@@ -22,64 +22,51 @@ using py_io::Array;
 
 namespace {
 
-Eigen::Vector2d as_vector2(py::handle obj, const std::string& name) {
-  const py_io::Stack s = py_io::as_stack(obj, name, {2});
-  if (s.stacked) throw py::value_error(name + ": expected shape (2,), got a stack of " + std::to_string(s.n));
-  return Eigen::Vector2d(s.item(0, 2)[0], s.item(0, 2)[1]);
-}
-
-Frame as_frame(const std::string& frame) {
-  if (frame == "world") return Frame::world;
-  if (frame == "body") return Frame::body;
-  throw_invalid("frame", "'world' or 'body'", "'" + frame + "'");
-}
-
-// None or False: no gravity; True: (0, 0, -9.81); else a 3-vector [m/s²].
-Eigen::Vector3d as_gravity(py::handle obj) {
-  if (obj.is_none()) return Eigen::Vector3d::Zero();
-  if (py::isinstance<py::bool_>(obj)) return obj.cast<bool>() ? standard_gravity() : Eigen::Vector3d::Zero();
-  return py_io::as_vector3(obj, "gravity");
-}
-
+// None, an AppliedLoad or an iterable of them.
 std::vector<AppliedLoad> as_loads(py::handle obj) {
+  constexpr const char* expected = "None, an AppliedLoad or a sequence of AppliedLoad";
   std::vector<AppliedLoad> loads;
   if (obj.is_none()) return loads;
   if (py::isinstance<AppliedLoad>(obj)) return {obj.cast<AppliedLoad>()};
+  if (py::isinstance<py::str>(obj) || py::isinstance<py::bytes>(obj) || !py::isinstance<py::iterable>(obj)) {
+    py_io::throw_type_error("loads", expected, obj);
+  }
   for (py::handle item : obj) {
-    if (!py::isinstance<AppliedLoad>(item)) {
-      throw py::type_error("loads: expected AppliedLoad items, got " +
-                           std::string(py::str(py::type::of(item).attr("__name__"))));
-    }
+    if (!py::isinstance<AppliedLoad>(item)) py_io::throw_type_error("loads", std::string(expected) + " (items)", item);
     loads.push_back(item.cast<AppliedLoad>());
   }
   return loads;
 }
 
-// RigidBody's `check`: None (InertiaCheck.physical), an InertiaCheck, or, for backward compatibility,
-// a bool meaning require_triangle_inequality (also accepted as that keyword).
-InertiaCheck as_inertia_check(py::handle check, py::handle require_triangle_inequality) {
-  auto from = [](py::handle obj, const std::string& name) {
-    if (py::isinstance<py::bool_>(obj)) return obj.cast<bool>() ? InertiaCheck::physical : InertiaCheck::allow_unrealizable;
-    if (py::isinstance<InertiaCheck>(obj)) return obj.cast<InertiaCheck>();
-    throw py::type_error(name + ": expected an InertiaCheck (or a bool), got " +
-                         std::string(py::str(py::type::of(obj).attr("__name__"))));
-  };
-  if (require_triangle_inequality.is_none()) return check.is_none() ? InertiaCheck::physical : from(check, "check");
-  const InertiaCheck legacy = from(require_triangle_inequality, "require_triangle_inequality");
-  if (!check.is_none() && from(check, "check") != legacy) {
-    throw py::value_error("require_triangle_inequality: expected agreement with check, got both, conflicting");
-  }
-  return legacy;
-}
-
-SimulationOptions as_options(double dt, const std::string& method, py::handle loads, py::handle gravity, double t0) {
+// The options shared by simulate and step, each argument converted by name (TypeError/ValueError
+// naming it); the core checks the values (dt > 0, finite gravity, ...).
+SimulationOptions as_options(py::handle dt, py::handle method, py::handle loads, py::handle gravity) {
   SimulationOptions o;
-  o.method = method_from_name(method, "method");
-  o.dt = dt;
-  o.t0 = t0;
+  o.dt = py_io::as_scalar(dt, "dt");
+  o.method = method_from_name(py_io::as_string(method, "method"), "method");
   o.loads = as_loads(loads);
   o.gravity_W = as_gravity(gravity);
   return o;
+}
+
+// Calls f(body, state) with the model `model` is and its state `state` (argument `state_name`);
+// TypeError naming model for anything else, naming the state for another model's state.
+template <class F>
+auto with_model(py::handle model, py::handle state, const char* state_name, F&& f)
+    -> decltype(f(std::declval<const RigidBody&>(), std::declval<RigidBodyState&>())) {
+  if (py::isinstance<RigidBody>(model)) {
+    return f(model.cast<const RigidBody&>(),
+             py_io::as_instance<RigidBodyState>(state, state_name, "a RigidBodyState (the state of a RigidBody)"));
+  }
+  if (py::isinstance<PlanarBody>(model)) {
+    return f(model.cast<const PlanarBody&>(),
+             py_io::as_instance<PlanarBodyState>(state, state_name, "a PlanarBodyState (the state of a PlanarBody)"));
+  }
+  if (py::isinstance<Particle>(model)) {
+    return f(model.cast<const Particle&>(),
+             py_io::as_instance<ParticleState>(state, state_name, "a ParticleState (the state of a Particle)"));
+  }
+  py_io::throw_type_error("model", "a RigidBody, PlanarBody or Particle", model);
 }
 
 // A numpy array taking ownership of a std::vector (no copy).
@@ -121,254 +108,119 @@ SimulationResult to_result(Trajectory&& tr, bool scalar_first) {
                           tr.elapsed_seconds};
 }
 
+// simulate's monitor from Python (SimulationOptions::monitor): at most every 50 ms of the run it takes
+// the GIL, lets Python handle signals (Ctrl-C raises KeyboardInterrupt; only the main thread gets
+// them, so other threads skip this unless they report progress) and calls progress(steps_done). An
+// exception from either stops the run and is kept for simulate_py to raise once the GIL is back.
+class PythonMonitor {
+ public:
+  explicit PythonMonitor(py::handle progress)
+      : progress_(progress.is_none() ? py::object() : py_io::as_callable(progress, "progress", "a callable(steps_done) or None")),
+        main_thread_(PyThread_get_thread_ident() ==
+                     py::module_::import("threading").attr("main_thread")().attr("ident").cast<unsigned long>()) {}
+
+  // Whether the run needs the monitor at all.
+  bool needed() const { return main_thread_ || progress_; }
+
+  bool operator()(std::int64_t steps_done) {
+    const auto now = std::chrono::steady_clock::now();
+    if (now < next_call_) return false;
+    next_call_ = now + std::chrono::milliseconds(50);
+    py::gil_scoped_acquire gil;
+    try {
+      if (main_thread_ && PyErr_CheckSignals() != 0) throw py::error_already_set();
+      if (progress_) progress_(steps_done);
+    } catch (py::error_already_set& e) {
+      error_ = std::move(e);
+      return true;
+    }
+    return false;
+  }
+
+  // The exception that stopped the run (call with the GIL held, after an interrupted run).
+  [[noreturn]] void raise() {
+    if (error_) throw *error_;
+    throw std::logic_error("simulate: interrupted without an exception");
+  }
+
+ private:
+  py::object progress_;
+  bool main_thread_;
+  std::chrono::steady_clock::time_point next_call_ = std::chrono::steady_clock::now();
+  std::optional<py::error_already_set> error_;
+};
+
 template <class Body, class State>
-SimulationResult simulate_py(const Body& body, const State& initial, double dt, std::int64_t steps,
-                             const std::string& method, std::int64_t record_every, py::handle loads,
-                             py::handle gravity, double t0, bool scalar_first) {
-  SimulationOptions o = as_options(dt, method, loads, gravity, t0);
-  o.steps = steps;
-  o.record_every = record_every;
+SimulationResult simulate_one(const Body& body, const State& initial, const SimulationOptions& o,
+                              const std::string& method, py::handle progress, bool scalar_first) {
+  SimulationOptions options = o;
+  PythonMonitor monitor(progress);
+  if (monitor.needed()) options.monitor = [&monitor](std::int64_t steps_done) { return monitor(steps_done); };
   Trajectory tr;
   {
     py::gil_scoped_release release;
-    tr = simulate(body, initial, o);
+    tr = simulate(body, initial, options);
   }
+  if (tr.interrupted) monitor.raise();  // the records so far are dropped with tr
   if (tr.diverged) {
     const std::string msg = "simulate: the state became non-finite by t = " + format_value(tr.t.back()) +
-                            " (method '" + method + "', dt = " + format_value(dt) + "); the run stopped there";
+                            " (method '" + method + "', dt = " + format_value(o.dt) + "); the run stopped there";
     if (PyErr_WarnEx(PyExc_RuntimeWarning, msg.c_str(), 1) != 0) throw py::error_already_set();
   }
   if (tr.unconverged_steps > 0) {
     const std::string msg = "simulate: the implicit solve of method '" + method + "' did not converge in " +
-                            std::to_string(tr.unconverged_steps) + " of " + std::to_string(steps) +
-                            " steps at dt = " + format_value(dt) +
+                            std::to_string(tr.unconverged_steps) + " of " + std::to_string(o.steps) +
+                            " steps at dt = " + format_value(o.dt) +
                             " (its conservation is lost there); reduce dt (see methods() stability_limit)";
     if (PyErr_WarnEx(PyExc_RuntimeWarning, msg.c_str(), 1) != 0) throw py::error_already_set();
   }
   return to_result(std::move(tr), scalar_first);
 }
 
-template <class Body, class State>
-State step_py(const Body& body, const State& state, double dt, const std::string& method, py::handle loads,
-              py::handle gravity, double t) {
-  return step(body, state, as_options(dt, method, loads, gravity, t));
+// simulate: every argument converted by name before the run (see simulate_doc).
+SimulationResult simulate_py(py::handle model, py::handle initial, py::handle dt, py::handle steps, py::handle method,
+                       py::handle record_every, py::handle loads, py::handle gravity, py::handle t0,
+                       py::handle scalar_first, py::handle progress) {
+  return with_model(model, initial, "initial", [&](const auto& body, const auto& state) {
+    SimulationOptions o = as_options(dt, method, loads, gravity);
+    o.steps = py_io::as_int(steps, "steps", 0);
+    o.record_every = py_io::as_int(record_every, "record_every", 1);
+    o.t0 = py_io::as_scalar(t0, "t0");
+    const bool first = py_io::as_bool(scalar_first, "scalar_first");
+    return simulate_one(body, state, o, method.cast<std::string>(), progress, first);
+  });
 }
 
-// forward/inverse dynamics, momentum, energy, power and impulse of a RigidBody
-void bind_dynamics_functions(py::module_& m) {
-  py::class_<KineticEnergy>(m, "KineticEnergy", "Kinetic energy split: translational 1/2 m v.v, rotational 1/2 w.I w [J].")
-      .def_readonly("translational", &KineticEnergy::translational, "[J]")
-      .def_readonly("rotational", &KineticEnergy::rotational, "[J]")
-      .def_property_readonly("total", &KineticEnergy::total, "[J]");
-
-  m.def(
-      "forward_dynamics",
-      [](const RigidBody& body, const RigidBodyState& state, py::handle force, py::handle torque, py::handle point,
-         const std::string& frame, py::handle gravity) {
-        const ComWrench w = wrench_at_com(state.q_WB, py_io::as_vector3_or_zero(force, "force"), py_io::as_vector3_or_zero(torque, "torque"),
-                                          py_io::as_vector3_or_zero(point, "point"), as_frame(frame));
-        const BodyAcceleration a = forward_dynamics(body, state, w, as_gravity(gravity));
-        return py::make_tuple(py_io::to_array(a.a_W), py_io::to_array(a.alpha_B));
-      },
-      py::arg("body"), py::arg("state"), py::arg("force") = py::none(), py::arg("torque") = py::none(),
-      py::arg("point") = py::none(), py::arg("frame") = "world", py::arg("gravity") = py::none(),
-      "Accelerations (a_W (3,) [m/s^2] of the centre of mass in W, alpha_B (3,) [rad/s^2] in B) of `body` in "
-      "`state` under a force (3,) [N] applied at `point` (p_GP (3,) [m], position of the point relative to the "
-      "centre of mass; None = the centre of mass) and a couple torque (3,) [N m], all expressed in `frame` "
-      "('world' or 'body'), plus gravity (None/False, True = (0, 0, -9.81), or (3,) [m/s^2] in W). "
-      "Newton: m a = f + m g; Euler: I alpha + w x I w = n_G.");
-
-  m.def(
-      "inverse_dynamics",
-      [](const RigidBody& body, const RigidBodyState& state, py::handle a_W, py::handle alpha_B, py::handle gravity) {
-        const ComWrench w = inverse_dynamics(
-            body, state, BodyAcceleration{py_io::as_vector3(a_W, "a_W"), py_io::as_vector3(alpha_B, "alpha_B")},
-            as_gravity(gravity));
-        return py::make_tuple(py_io::to_array(w.f_W), py_io::to_array(w.n_B));
-      },
-      py::arg("body"), py::arg("state"), py::arg("a_W"), py::arg("alpha_B"), py::arg("gravity") = py::none(),
-      "The applied wrench the motion requires: (f_W (3,) [N] in W, n_B (3,) [N m] about the centre of mass in B), "
-      "f_W = m (a_W - g), n_B = I alpha_B + w_B x I w_B. Undoes forward_dynamics with a centre-of-mass load.");
-
-  m.def(
-      "linear_momentum",
-      [](const RigidBody& body, const RigidBodyState& state) { return py_io::to_array(linear_momentum(body, state)); },
-      py::arg("body"), py::arg("state"), "Linear momentum m v_W (3,) [kg m/s] in W.");
-
-  m.def(
-      "angular_momentum",
-      [](const RigidBody& body, const RigidBodyState& state, py::handle point) {
-        if (point.is_none()) return py_io::to_array(angular_momentum(body, state));
-        return py_io::to_array(angular_momentum(body, state, py_io::as_vector3(point, "point")));
-      },
-      py::arg("body"), py::arg("state"), py::arg("point") = py::none(),
-      "Angular momentum (3,) [kg m^2/s] in W about the point fixed in W at `point` (p_WP (3,) [m]; None = "
-      "the centre of mass): H_P = R_WB I w_B + (p_W - p_WP) x m v_W.");
-
-  m.def("kinetic_energy", py::overload_cast<const RigidBody&, const RigidBodyState&>(&kinetic_energy), py::arg("body"),
-        py::arg("state"),
-        "KineticEnergy(translational = 1/2 m v.v, rotational = 1/2 w_B.I w_B) [J].");
-
-  m.def(
-      "potential_energy",
-      [](const RigidBody& body, const RigidBodyState& state, py::handle gravity) {
-        return potential_energy(body, state, as_gravity(gravity));
-      },
-      py::arg("body"), py::arg("state"), py::arg("gravity") = true,
-      "Potential energy of uniform gravity, -m g.p_W [J] (True = (0, 0, -9.81) m/s^2, or (3,) in W).");
-
-  m.def(
-      "power",
-      [](const RigidBodyState& state, py::handle f_W, py::handle n_B) {
-        return power(state, ComWrench{py_io::as_vector3(f_W, "f_W"), py_io::as_vector3(n_B, "n_B")});
-      },
-      py::arg("state"), py::arg("f_W"), py::arg("n_B"),
-      "Power [W] of a force f_W (3,) [N] in W at the centre of mass and a moment n_B (3,) [N m] about it in B: "
-      "f_W.v_W + n_B.w_B.");
-
-  m.def(
-      "apply_impulse",
-      [](const RigidBody& body, const RigidBodyState& state, py::handle impulse, py::handle point,
-         const std::string& frame, py::handle angular_impulse) {
-        return apply_impulse(body, state, py_io::as_vector3(impulse, "impulse"), py_io::as_vector3_or_zero(point, "point"),
-                             as_frame(frame), py_io::as_vector3_or_zero(angular_impulse, "angular_impulse"));
-      },
-      py::arg("body"), py::arg("state"), py::arg("impulse"), py::arg("point") = py::none(),
-      py::arg("frame") = "world", py::arg("angular_impulse") = py::none(),
-      "The state just after an impulse (3,) [N s] at `point` (p_GP (3,) [m] relative to the centre of mass; "
-      "None = the centre of mass) and an angular impulse (3,) [N m s], all in `frame` ('world' or 'body'): "
-      "m dv = impulse, I dw = p_GP x impulse + angular_impulse (impulse-momentum, seed 001).");
+bool all_finite(const RigidBodyState& s) {
+  return s.p_W.allFinite() && s.q_WB.coeffs().allFinite() && s.v_W.allFinite() && s.w_B.allFinite();
+}
+bool all_finite(const ParticleState& s) { return s.p_W.allFinite() && s.v_W.allFinite(); }
+bool all_finite(const PlanarBodyState& s) {
+  return s.p_W.allFinite() && std::isfinite(s.theta) && s.v_W.allFinite() && std::isfinite(s.omega);
 }
 
-Eigen::Vector2d optional_vector2(py::handle obj, const std::string& name) {
-  return obj.is_none() ? Eigen::Vector2d::Zero() : as_vector2(obj, name);
-}
-
-// The same functions for a Particle (everything in W, no rotation) and a PlanarBody (in-plane vectors
-// (2,) in W, moments and angular quantities as z scalars); pybind11 picks the overload by the body type.
-void bind_particle_planar_dynamics_functions(py::module_& m) {
-  m.def(
-      "forward_dynamics",
-      [](const Particle& particle, const ParticleState& state, py::handle force, py::handle gravity) {
-        return py_io::to_array(forward_dynamics(particle, state, py_io::as_vector3_or_zero(force, "force"), as_gravity(gravity)));
-      },
-      py::arg("body"), py::arg("state"), py::arg("force") = py::none(), py::arg("gravity") = py::none(),
-      "Particle: acceleration a_W (3,) [m/s^2] = force/m + g under a force (3,) [N] in W and gravity "
-      "(None/False, True = (0, 0, -9.81), or (3,) [m/s^2] in W).");
-  m.def(
-      "forward_dynamics",
-      [](const PlanarBody& body, const PlanarBodyState& state, py::handle force, double torque, py::handle point,
-         const std::string& frame, py::handle gravity) {
-        const PlanarWrench w = wrench_at_com(state.theta, optional_vector2(force, "force"), torque,
-                                             optional_vector2(point, "point"), as_frame(frame));
-        const PlanarAcceleration a = forward_dynamics(body, state, w, optional_vector2(gravity, "gravity"));
-        return py::make_tuple(py_io::to_array(a.a_W), a.alpha);
-      },
-      py::arg("body"), py::arg("state"), py::arg("force") = py::none(), py::arg("torque") = 0.0,
-      py::arg("point") = py::none(), py::arg("frame") = "world", py::arg("gravity") = py::none(),
-      "PlanarBody: (a_W (2,) [m/s^2] in W, alpha [rad/s^2]) under an in-plane force (2,) [N] applied at `point` "
-      "(p_GP (2,) [m] from the centre of mass; None = the centre of mass), both in `frame` ('world' or 'body'), "
-      "a couple torque [N m] about z, and in-plane gravity (None or (2,) [m/s^2] in W). m a = f + m g, "
-      "I_zz alpha = n_G.");
-
-  m.def(
-      "inverse_dynamics",
-      [](const Particle& particle, const ParticleState& state, py::handle a_W, py::handle gravity) {
-        return py_io::to_array(inverse_dynamics(particle, state, py_io::as_vector3(a_W, "a_W"), as_gravity(gravity)));
-      },
-      py::arg("body"), py::arg("state"), py::arg("a_W"), py::arg("gravity") = py::none(),
-      "Particle: the force f_W (3,) [N] in W the acceleration a_W (3,) [m/s^2] requires, m (a_W - g).");
-  m.def(
-      "inverse_dynamics",
-      [](const PlanarBody& body, const PlanarBodyState& state, py::handle a_W, double alpha, py::handle gravity) {
-        const PlanarWrench w =
-            inverse_dynamics(body, state, PlanarAcceleration{as_vector2(a_W, "a_W"), alpha}, optional_vector2(gravity, "gravity"));
-        return py::make_tuple(py_io::to_array(w.f_W), w.n);
-      },
-      py::arg("body"), py::arg("state"), py::arg("a_W"), py::arg("alpha"), py::arg("gravity") = py::none(),
-      "PlanarBody: the wrench the motion requires, (f_W (2,) [N] in W, n [N m] about the centre of mass): "
-      "f_W = m (a_W - g), n = I_zz alpha.");
-
-  m.def(
-      "linear_momentum",
-      [](const Particle& particle, const ParticleState& state) { return py_io::to_array(linear_momentum(particle, state)); },
-      py::arg("body"), py::arg("state"), "Particle: m v_W (3,) [kg m/s] in W.");
-  m.def(
-      "linear_momentum",
-      [](const PlanarBody& body, const PlanarBodyState& state) { return py_io::to_array(linear_momentum(body, state)); },
-      py::arg("body"), py::arg("state"), "PlanarBody: m v_W (2,) [kg m/s] in W.");
-
-  m.def(
-      "angular_momentum",
-      [](const Particle& particle, const ParticleState& state, py::handle point) {
-        if (point.is_none()) return py_io::to_array(angular_momentum(particle, state));
-        return py_io::to_array(angular_momentum(particle, state, py_io::as_vector3(point, "point")));
-      },
-      py::arg("body"), py::arg("state"), py::arg("point") = py::none(),
-      "Particle: (p_W - p_WP) x m v_W (3,) [kg m^2/s] in W about the point fixed in W at `point` (p_WP (3,) [m]; "
-      "None = the particle itself: zero).");
-  m.def(
-      "angular_momentum",
-      [](const PlanarBody& body, const PlanarBodyState& state, py::handle point) {
-        if (point.is_none()) return angular_momentum(body, state);
-        return angular_momentum(body, state, as_vector2(point, "point"));
-      },
-      py::arg("body"), py::arg("state"), py::arg("point") = py::none(),
-      "PlanarBody: H_z [kg m^2/s] about the point fixed in W at `point` (p_WP (2,) [m]; None = the centre of "
-      "mass): I_zz omega + (p_W - p_WP) x m v_W.");
-
-  m.def("kinetic_energy", py::overload_cast<const Particle&, const ParticleState&>(&kinetic_energy), py::arg("body"),
-        py::arg("state"), "Particle: KineticEnergy(translational = 1/2 m v.v, rotational = 0) [J].");
-  m.def("kinetic_energy", py::overload_cast<const PlanarBody&, const PlanarBodyState&>(&kinetic_energy),
-        py::arg("body"), py::arg("state"),
-        "PlanarBody: KineticEnergy(translational = 1/2 m v.v, rotational = 1/2 I_zz omega^2) [J].");
-
-  m.def(
-      "potential_energy",
-      [](const Particle& particle, const ParticleState& state, py::handle gravity) {
-        return potential_energy(particle, state, as_gravity(gravity));
-      },
-      py::arg("body"), py::arg("state"), py::arg("gravity") = true,
-      "Particle: -m g.p_W [J] (True = (0, 0, -9.81) m/s^2, or (3,) in W).");
-  m.def(
-      "potential_energy",
-      [](const PlanarBody& body, const PlanarBodyState& state, py::handle gravity) {
-        return potential_energy(body, state, as_vector2(gravity, "gravity"));
-      },
-      py::arg("body"), py::arg("state"), py::arg("gravity"),
-      "PlanarBody: -m g.p_W [J] for in-plane gravity g (2,) [m/s^2] in W.");
-
-  m.def(
-      "power", [](const ParticleState& state, py::handle f_W) { return power(state, py_io::as_vector3(f_W, "f_W")); },
-      py::arg("state"), py::arg("f_W"), "Particle: power f_W.v_W [W] of a force f_W (3,) [N] in W.");
-  m.def(
-      "power",
-      [](const PlanarBodyState& state, py::handle f_W, double n) {
-        return power(state, PlanarWrench{as_vector2(f_W, "f_W"), n});
-      },
-      py::arg("state"), py::arg("f_W"), py::arg("n"),
-      "PlanarBody: power f_W.v_W + n omega [W] of a force f_W (2,) [N] in W at the centre of mass and a moment "
-      "n [N m] about it.");
-
-  m.def(
-      "apply_impulse",
-      [](const Particle& particle, const ParticleState& state, py::handle impulse) {
-        return apply_impulse(particle, state, py_io::as_vector3(impulse, "impulse"));
-      },
-      py::arg("body"), py::arg("state"), py::arg("impulse"),
-      "Particle: the state just after an impulse (3,) [N s] in W: m dv = impulse.");
-  m.def(
-      "apply_impulse",
-      [](const PlanarBody& body, const PlanarBodyState& state, py::handle impulse, py::handle point,
-         const std::string& frame, double angular_impulse) {
-        return apply_impulse(body, state, as_vector2(impulse, "impulse"), optional_vector2(point, "point"),
-                             as_frame(frame), angular_impulse);
-      },
-      py::arg("body"), py::arg("state"), py::arg("impulse"), py::arg("point") = py::none(),
-      py::arg("frame") = "world", py::arg("angular_impulse") = 0.0,
-      "PlanarBody: the state just after an in-plane impulse (2,) [N s] at `point` (p_GP (2,) [m] from the centre "
-      "of mass; None = the centre of mass), both in `frame` ('world' or 'body'), and an angular impulse [N m s] "
-      "about z: m dv = impulse, I_zz domega = p_GP x impulse + angular_impulse.");
+// step: t = None: the new state, refused for a schedule with a time window (its step depends on t);
+// t given: (new state, t + dt). Warns when the new state is not finite.
+py::object step_py(py::handle model, py::handle state, py::handle dt, py::handle method, py::handle loads,
+                   py::handle gravity, py::handle t) {
+  return with_model(model, state, "state", [&](const auto& body, const auto& current) -> py::object {
+    SimulationOptions o = as_options(dt, method, loads, gravity);
+    if (!t.is_none()) {
+      o.t0 = py_io::as_scalar(t, "t");
+    } else if (has_time_window(o.loads)) {
+      py_io::throw_value_error("t", "the time [s] of `state` (a load acts on a time window: t_start or t_end "
+                               "finite; pass t=... and use the time returned)", "None");
+    }
+    const auto next = step(body, current, o);
+    if (!all_finite(next)) {
+      const std::string msg = "step: the state became non-finite in the step of dt = " + format_value(o.dt) +
+                              (t.is_none() ? std::string() : " from t = " + format_value(o.t0)) + " (method '" +
+                              method.cast<std::string>() + "')";
+      if (PyErr_WarnEx(PyExc_RuntimeWarning, msg.c_str(), 1) != 0) throw py::error_already_set();
+    }
+    if (t.is_none()) return py::cast(next);
+    return py::make_tuple(next, o.t0 + o.dt);
+  });
 }
 
 const char* const simulate_doc = R"doc(
@@ -376,9 +228,12 @@ Integrate `model` from `initial` over `steps` fixed steps of `dt` [s] with `meth
 in C++ with the GIL released, and record every `record_every`-th step (plus the first and the last).
 
 model/initial: Particle/ParticleState, PlanarBody/PlanarBodyState or RigidBody/RigidBodyState.
-loads: an AppliedLoad or a sequence of them (piecewise-constant schedule; the loads active at the start
-  of a step act during the whole step). gravity: None/False (none), True ((0, 0, -9.81) m/s^2 in W) or a
-  3-vector [m/s^2] in W. t0: initial time [s]. scalar_first: quaternions as (w, x, y, z).
+loads: an AppliedLoad or a sequence of them, a piecewise-constant schedule: a step that crosses a
+  switch time (a t_start or t_end) is split there into sub-steps of the same method, so every method
+  keeps its order; records stay at t0 + i dt. gravity: None/False (none), True ((0, 0, -9.81) m/s^2
+  in W) or a 3-vector [m/s^2] in W. t0: initial time [s]. scalar_first: quaternions as (w, x, y, z).
+progress: None or a callable(steps_done), called with the GIL about every 0.05 s of a long run; an
+  exception it raises stops the run and propagates.
 
 Returns a SimulationResult, arrays with one row per record (n records): t (n,) [s]; p_W (n, 3) [m];
 q_WB (n, 4) (x, y, z, w); v_W (n, 3) [m/s]; w_B (n, 3) [rad/s]; kinetic_energy (n,) [J];
@@ -388,113 +243,36 @@ same method (kinetic_energy - kinetic_energy[0] ~ work); diverged; unconverged_s
 hit their iteration cap); elapsed_seconds (C++ loop wall time).
 A particle records q = identity, w = 0; a planar body p = (x, y, 0), q = Rz(theta), w = (0, 0, omega).
 Warns RuntimeWarning and stops if the state becomes non-finite; warns RuntimeWarning (naming dt and the
-count) if an implicit solve did not converge. ValueError names a bad argument.
+count) if an implicit solve did not converge. Ctrl-C stops the run within about 0.05 s with
+KeyboardInterrupt (no result is kept). ValueError names a bad argument, also a recording larger than the
+memory available (record_every, with both figures).
 )doc";
 
 const char* const step_doc = R"doc(
-One step of `method` (see methods()) of length dt [s] from `state` at time t [s] under `loads`
-(AppliedLoad or sequence) and `gravity` (None/False, True for (0, 0, -9.81) m/s^2, or a 3-vector).
-Returns the new state (same type as `state`). ValueError names a bad argument.
+One step of `method` (see methods()) of length dt [s] from `state` at time t [s] to t + dt under `loads`
+(AppliedLoad or sequence) and `gravity` (None/False, True for (0, 0, -9.81) m/s^2, or a 3-vector). A
+step across a switch time of the loads is split there, as in simulate.
+
+t=None (default): returns the new state (same type as `state`); ValueError (naming t) if a load acts on a
+  time window (finite t_start or t_end), since the step then depends on the time.
+t given: returns (new state, t + dt), e.g. `state, t = step(body, state, dt, loads=loads, t=t)` in a loop.
+Warns RuntimeWarning if the new state is not finite, as simulate does. ValueError names a bad argument.
 )doc";
 
 }  // namespace
 
 void bind_dynamics(py::module_& m) {
-  py::class_<Particle>(m, "Particle", "A point mass (3 DOF; seed 000 section 4.11): mass [kg] > 0.")
-      .def(py::init<double>(), py::arg("mass"))
-      .def_property_readonly("mass", &Particle::mass, "mass [kg]");
-
-  py::class_<PlanarBody>(m, "PlanarBody",
-                         "A rigid body moving in the xy plane of W (x, y, theta; seed 001 plane kinetics): mass [kg] "
-                         "and inertia_zz [kg m^2] about the z axis through the centre of mass, both > 0.")
-      .def(py::init<double, double>(), py::arg("mass"), py::arg("inertia_zz"))
-      .def_property_readonly("mass", &PlanarBody::mass, "mass [kg]")
-      .def_property_readonly("inertia_zz", &PlanarBody::inertia_zz, "moment of inertia about z through G [kg m^2]");
-
-  py::class_<RigidBody>(m, "RigidBody",
-                        "A spatial rigid body (6 DOF): mass [kg] > 0 and inertia_com (3, 3) [kg m^2] about the centre "
-                        "of mass in the body frame B, symmetric positive definite, checked as every inertia of "
-                        "rigiddyn is (inertia_report): under check=InertiaCheck.physical (default) the principal "
-                        "moments must satisfy the triangle inequality; check=InertiaCheck.allow_unrealizable accepts "
-                        "test bodies no real body has, e.g. I = diag(2, 1, 2/3). (require_triangle_inequality=False, "
-                        "or False as the third positional argument, is the older spelling of allow_unrealizable.) "
-                        "euler_form tells which form of Euler's equations it uses: 'spherical', 'principal' or "
-                        "'full'.")
-      .def(py::init([](double mass, py::handle inertia_com, py::handle check, py::handle require_triangle_inequality) {
-             return RigidBody(mass, py_io::as_matrix3(inertia_com, "inertia_com"),
-                              as_inertia_check(check, require_triangle_inequality));
-           }),
-           py::arg("mass"), py::arg("inertia_com"), py::arg("check") = py::none(),
-           py::arg("require_triangle_inequality") = py::none())
-      .def_property_readonly("mass", &RigidBody::mass, "mass [kg]")
-      .def_property_readonly(
-          "inertia_com", [](const RigidBody& b) { return py_io::to_array(b.inertia_com()); },
-          "(3, 3) inertia about the centre of mass in B [kg m^2]")
-      .def_property_readonly(
-          "euler_form",
-          [](const RigidBody& b) {
-            switch (b.euler_form()) {
-              case EulerForm::spherical: return "spherical";
-              case EulerForm::principal: return "principal";
-              case EulerForm::full: return "full";
-            }
-            return "full";
-          },
-          "'spherical' (no gyroscopic term), 'principal' (diagonal inertia) or 'full'");
-
-  py::class_<ParticleState>(m, "ParticleState", "Particle state: p_W (3,) [m] and v_W (3,) [m/s] in W.")
-      .def(py::init([](py::handle p_W, py::handle v_W) {
-             return ParticleState{py_io::as_vector3(p_W, "p_W"), py_io::as_vector3(v_W, "v_W")};
-           }),
-           py::arg("p_W") = Eigen::Vector3d::Zero(), py::arg("v_W") = Eigen::Vector3d::Zero())
-      .def_property_readonly("p_W", [](const ParticleState& s) { return py_io::to_array(s.p_W); }, "(3,) [m]")
-      .def_property_readonly("v_W", [](const ParticleState& s) { return py_io::to_array(s.v_W); }, "(3,) [m/s]");
-
-  py::class_<PlanarBodyState>(m, "PlanarBodyState",
-                              "Planar body state: p_W (2,) [m] centre of mass, theta [rad] angle of B about z, "
-                              "v_W (2,) [m/s], omega [rad/s].")
-      .def(py::init([](py::handle p_W, double theta, py::handle v_W, double omega) {
-             return PlanarBodyState{as_vector2(p_W, "p_W"), theta, as_vector2(v_W, "v_W"), omega};
-           }),
-           py::arg("p_W") = Eigen::Vector2d::Zero(), py::arg("theta") = 0.0, py::arg("v_W") = Eigen::Vector2d::Zero(),
-           py::arg("omega") = 0.0)
-      .def_property_readonly("p_W", [](const PlanarBodyState& s) { return py_io::to_array(s.p_W); }, "(2,) [m]")
-      .def_readonly("theta", &PlanarBodyState::theta, "[rad]")
-      .def_property_readonly("v_W", [](const PlanarBodyState& s) { return py_io::to_array(s.v_W); }, "(2,) [m/s]")
-      .def_readonly("omega", &PlanarBodyState::omega, "[rad/s]");
-
-  py::class_<RigidBodyState>(m, "RigidBodyState",
-                             "Rigid body state (docs/conventions.md): p_W (3,) centre of mass [m], q_WB (4,) unit "
-                             "quaternion (x, y, z, w), or (w, x, y, z) with scalar_first=True, v_W (3,) [m/s] in W, "
-                             "w_B (3,) angular velocity [rad/s] in B. q_WB is normalised; ValueError if | |q| - 1 | "
-                             "> 1e-6.")
-      .def(py::init([](py::handle p_W, py::handle q_WB, py::handle v_W, py::handle w_B, bool scalar_first) {
-             RigidBodyState s{py_io::as_vector3(p_W, "p_W"), py_io::as_quaternion(q_WB, "q_WB", scalar_first),
-                              py_io::as_vector3(v_W, "v_W"), py_io::as_vector3(w_B, "w_B")};
-             return checked_state(s, "state");
-           }),
-           py::arg("p_W") = Eigen::Vector3d::Zero(), py::arg("q_WB") = Eigen::Vector4d(0, 0, 0, 1),
-           py::arg("v_W") = Eigen::Vector3d::Zero(), py::arg("w_B") = Eigen::Vector3d::Zero(),
-           py::arg("scalar_first") = false)
-      .def_property_readonly("p_W", [](const RigidBodyState& s) { return py_io::to_array(s.p_W); }, "(3,) [m]")
-      .def_property_readonly(
-          "q_WB", [](const RigidBodyState& s) { return py_io::to_array(s.q_WB, false); }, "(4,) (x, y, z, w)")
-      .def(
-          "quaternion", [](const RigidBodyState& s, bool scalar_first) { return py_io::to_array(s.q_WB, scalar_first); },
-          py::arg("scalar_first") = false, "q_WB (4,) as (x, y, z, w), or (w, x, y, z) with scalar_first=True")
-      .def_property_readonly("v_W", [](const RigidBodyState& s) { return py_io::to_array(s.v_W); }, "(3,) [m/s]")
-      .def_property_readonly("w_B", [](const RigidBodyState& s) { return py_io::to_array(s.w_B); }, "(3,) [rad/s]");
-
   py::class_<AppliedLoad>(m, "AppliedLoad",
                           "A load: force (3,) [N] through the centre of mass and couple torque (3,) [N m], both in "
                           "frame 'world' or 'body', active for t_start <= t < t_end [s].")
-      .def(py::init([](py::handle force, py::handle torque, const std::string& frame, double t_start, double t_end) {
-             AppliedLoad load{py_io::as_vector3(force, "force"), py_io::as_vector3(torque, "torque"), as_frame(frame),
-                              t_start, t_end};
+      .def(py::init([](py::handle force, py::handle torque, py::handle frame, py::handle t_start, py::handle t_end) {
+             AppliedLoad load{py_io::as_vector3_or_zero(force, "force"), py_io::as_vector3_or_zero(torque, "torque"),
+                              as_frame(frame), py_io::as_extended_real(t_start, "t_start"),
+                              py_io::as_extended_real(t_end, "t_end")};
              check_loads({load});
              return load;
            }),
-           py::arg("force") = Eigen::Vector3d::Zero(), py::arg("torque") = Eigen::Vector3d::Zero(),
+           py::arg("force") = py::none(), py::arg("torque") = py::none(),
            py::arg("frame") = "world", py::arg("t_start") = -std::numeric_limits<double>::infinity(),
            py::arg("t_end") = std::numeric_limits<double>::infinity())
       .def_property_readonly("force", [](const AppliedLoad& l) { return py_io::to_array(l.force); }, "(3,) [N]")
@@ -525,21 +303,15 @@ void bind_dynamics(py::module_& m) {
 #define RIGIDDYN_SIMULATE_ARGS                                                                              \
   py::arg("model"), py::arg("initial"), py::arg("dt"), py::arg("steps"), py::arg("method") = "rk4",      \
       py::arg("record_every") = 1, py::arg("loads") = py::none(), py::arg("gravity") = py::none(),         \
-      py::arg("t0") = 0.0, py::arg("scalar_first") = false
+      py::arg("t0") = 0.0, py::arg("scalar_first") = false, py::arg("progress") = py::none()
 #define RIGIDDYN_STEP_ARGS                                                                                  \
   py::arg("model"), py::arg("state"), py::arg("dt"), py::arg("method") = "rk4", py::arg("loads") = py::none(), \
-      py::arg("gravity") = py::none(), py::arg("t") = 0.0
-  m.def("simulate", &simulate_py<RigidBody, RigidBodyState>, RIGIDDYN_SIMULATE_ARGS, simulate_doc);
-  m.def("simulate", &simulate_py<PlanarBody, PlanarBodyState>, RIGIDDYN_SIMULATE_ARGS, simulate_doc);
-  m.def("simulate", &simulate_py<Particle, ParticleState>, RIGIDDYN_SIMULATE_ARGS, simulate_doc);
-  m.def("step", &step_py<RigidBody, RigidBodyState>, RIGIDDYN_STEP_ARGS, step_doc);
-  m.def("step", &step_py<PlanarBody, PlanarBodyState>, RIGIDDYN_STEP_ARGS, step_doc);
-  m.def("step", &step_py<Particle, ParticleState>, RIGIDDYN_STEP_ARGS, step_doc);
+      py::arg("gravity") = py::none(), py::arg("t") = py::none()
+  m.def("simulate", &simulate_py, RIGIDDYN_SIMULATE_ARGS, simulate_doc);
+  m.def("step", &step_py, RIGIDDYN_STEP_ARGS, step_doc);
 #undef RIGIDDYN_SIMULATE_ARGS
 #undef RIGIDDYN_STEP_ARGS
 
-  bind_dynamics_functions(m);
-  bind_particle_planar_dynamics_functions(m);
 
   m.def(
       "methods",

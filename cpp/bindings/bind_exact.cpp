@@ -4,8 +4,6 @@
 #include "rigiddyn/exact/elliptic.hpp"
 #include "rigiddyn/exact/free_body.hpp"
 
-#include <pybind11/stl.h>
-
 #include <optional>
 
 namespace rigiddyn::bindings {
@@ -15,8 +13,20 @@ using py_io::Array;
 
 namespace {
 
-// mc defaults to 1 − m (pass it when known more accurately, near m = 1)
-double complement(double m, const std::optional<double>& mc) { return mc ? *mc : 1.0 - m; }
+// The parameter m in [0, 1] and its complement mc (None: 1 - m; pass it near m = 1, where 1 - m loses
+// digits), checked by the core (ValueError naming m or mc).
+EllipticParameter as_parameter(py::handle m, py::handle mc) {
+  const double m_value = py_io::as_scalar(m, "m");
+  const std::optional<double> mc_value = py_io::as_optional_scalar(mc, "mc");
+  return elliptic_parameter(m_value, mc_value ? *mc_value : 1.0 - m_value);
+}
+
+// The characteristic n < 1 of Π.
+double as_characteristic(py::handle n) {
+  const double value = py_io::as_scalar(n, "n");
+  if (!(value < 1.0)) py_io::throw_value_error("n", "a characteristic n < 1", format_value(value));
+  return value;
+}
 
 // The solution together with the quaternion order chosen at construction.
 struct PyTorqueFreeSolution {
@@ -24,14 +34,15 @@ struct PyTorqueFreeSolution {
   bool scalar_first;
 };
 
-py::object jacobi_ellipj_py(const py::object& u, double m, std::optional<double> mc) {
-  const EllipticParameter p = elliptic_parameter(m, complement(m, mc));
+py::object jacobi_ellipj_py(py::handle u, py::handle m, py::handle mc) {
   const py_io::Stack us = py_io::as_stack(u, "u", {});
+  const EllipticParameter p = as_parameter(m, mc);
   if (!us.stacked) {
     const JacobiSnCnDn f = jacobi_ellipj(us.array.data()[0], p);
     return py::make_tuple(f.sn, f.cn, f.dn);
   }
-  Array sn = py_io::new_stack(us.n, true, {}), cn = py_io::new_stack(us.n, true, {}), dn = py_io::new_stack(us.n, true, {});
+  Array sn = py_io::new_stack(us.n, true, {}, "sn"), cn = py_io::new_stack(us.n, true, {}, "cn"),
+        dn = py_io::new_stack(us.n, true, {}, "dn");
   double *psn = sn.mutable_data(), *pcn = cn.mutable_data(), *pdn = dn.mutable_data();
   {
     py::gil_scoped_release release;
@@ -45,31 +56,32 @@ py::object jacobi_ellipj_py(const py::object& u, double m, std::optional<double>
   return py::make_tuple(sn, cn, dn);
 }
 
-py::object ellippi_am_py(const py::object& u, double n, double m, std::optional<double> mc) {
-  if (!(n < 1.0)) throw py::value_error("n: expected a characteristic n < 1, got " + std::to_string(n));
-  const EllipticParameter p = elliptic_parameter(m, complement(m, mc));
+// Π(am u, n|m) may exceed the double range only for |u| near it (l Π(n|m) with l ~ u/K): a RuntimeWarning then.
+py::object ellippi_am_py(py::handle u, py::handle n, py::handle m, py::handle mc) {
   const py_io::Stack us = py_io::as_stack(u, "u", {});
-  if (!us.stacked) return py::float_(ellippi_am(us.array.data()[0], n, p));
+  const double n_value = as_characteristic(n);
+  const EllipticParameter p = as_parameter(m, mc);
+  if (!us.stacked) return py::float_(py_io::finite_result(ellippi_am(us.array.data()[0], n_value, p), "ellippi_am"));
   Array out = py_io::new_stack(us.n, true, {});
   double* po = out.mutable_data();
   {
     py::gil_scoped_release release;
-    for (py::ssize_t i = 0; i < us.n; ++i) po[i] = ellippi_am(*us.item(i, 1), n, p);
+    for (py::ssize_t i = 0; i < us.n; ++i) po[i] = ellippi_am(*us.item(i, 1), n_value, p);
   }
-  return out;
+  return py_io::finite_result(out, "ellippi_am");
 }
 
-PyTorqueFreeSolution make_solution(const py::object& inertia, const py::object& q_WB, const py::object& w_B,
-                                   bool scalar_first) {
-  return {TorqueFreeSolution(py_io::as_matrix3(inertia, "inertia"), py_io::as_quaternion(q_WB, "q_WB", scalar_first),
+PyTorqueFreeSolution make_solution(py::handle inertia, py::handle q_WB, py::handle w_B, py::handle scalar_first) {
+  const bool first = py_io::as_bool(scalar_first, "scalar_first");
+  return {TorqueFreeSolution(py_io::as_matrix3(inertia, "inertia"), py_io::as_quaternion(q_WB, "q_WB", first),
                              py_io::as_vector3(w_B, "w_B")),
-          scalar_first};
+          first};
 }
 
-py::tuple state_at_py(const PyTorqueFreeSolution& self, const py::object& t) {
+py::tuple state_at_py(const PyTorqueFreeSolution& self, py::handle t) {
   const py_io::Stack ts = py_io::as_stack(t, "t", {});
-  Array q = py_io::new_stack(ts.n, ts.stacked, {4});
-  Array w = py_io::new_stack(ts.n, ts.stacked, {3});
+  Array q = py_io::new_stack(ts.n, ts.stacked, {4}, "q_WB");
+  Array w = py_io::new_stack(ts.n, ts.stacked, {3}, "w_B");
   double *pq = q.mutable_data(), *pw = w.mutable_data();
   {
     py::gil_scoped_release release;
@@ -85,23 +97,43 @@ py::tuple state_at_py(const PyTorqueFreeSolution& self, const py::object& t) {
 }  // namespace
 
 void bind_exact(pybind11::module_& m) {
-  m.def("elliprf", &elliprf, py::arg("x"), py::arg("y"), py::arg("z"),
-        "Carlson's R_F(x, y, z) (DLMF 19.16.1); x, y, z >= 0, at most one zero.");
-  m.def("elliprj", &elliprj, py::arg("x"), py::arg("y"), py::arg("z"), py::arg("p"),
-        "Carlson's R_J(x, y, z, p) (DLMF 19.16.2); x, y, z >= 0, at most one zero, p > 0.");
   m.def(
-      "ellipk", [](double m, std::optional<double> mc) { return ellipk(m, complement(m, mc)); }, py::arg("m"),
-      py::arg("mc") = py::none(),
+      "elliprf",
+      [](py::handle x, py::handle y, py::handle z) {
+        return py_io::finite_result(
+            elliprf(py_io::as_scalar(x, "x"), py_io::as_scalar(y, "y"), py_io::as_scalar(z, "z")), "elliprf");
+      },
+      py::arg("x"), py::arg("y"), py::arg("z"),
+      "Carlson's R_F(x, y, z) (DLMF 19.16.1) for finite x, y, z >= 0, at most one zero, of any magnitude;\n"
+      "inf with a RuntimeWarning where the result exceeds the double range.");
+  m.def(
+      "elliprj",
+      [](py::handle x, py::handle y, py::handle z, py::handle p) {
+        return py_io::finite_result(elliprj(py_io::as_scalar(x, "x"), py_io::as_scalar(y, "y"), py_io::as_scalar(z, "z"),
+                                            py_io::as_scalar(p, "p")),
+                                    "elliprj");
+      },
+      py::arg("x"), py::arg("y"), py::arg("z"), py::arg("p"),
+      "Carlson's R_J(x, y, z, p) (DLMF 19.16.2) for finite x, y, z >= 0, at most one zero, and p > 0, of any\n"
+      "magnitude; inf with a RuntimeWarning where the result exceeds the double range.");
+  m.def(
+      "ellipk", [](py::handle m, py::handle mc) { return as_parameter(m, mc).K; }, py::arg("m"), py::arg("mc") = py::none(),
       "Complete elliptic integral K(m) = R_F(0, mc, 1) for the parameter m in [0, 1] (as scipy.special.ellipk).\n"
       "mc: the complement 1 - m (default 1 - m); pass it near m = 1, where 1 - m loses digits. inf at mc = 0.");
   m.def(
-      "ellippi", [](double n, double m, std::optional<double> mc) { return ellippi(n, m, complement(m, mc)); },
+      "ellippi",
+      [](py::handle n, py::handle m, py::handle mc) {
+        const double n_value = as_characteristic(n);
+        const EllipticParameter p = as_parameter(m, mc);
+        return ellippi(n_value, p.m, p.mc);  // finite for n < 1, mc > 0 (ValueError naming mc at mc = 0)
+      },
       py::arg("n"), py::arg("m"), py::arg("mc") = py::none(),
       "Complete elliptic integral of the third kind Pi(n|m) = int_0^{pi/2} dt / ((1 - n sin^2 t) sqrt(1 - m sin^2 t)),\n"
-      "n < 1, m in [0, 1), mc = 1 - m (default 1 - m).");
+      "n < 1, m in [0, 1), mc = 1 - m (default 1 - m). A few ulps for n <= 0.9; relative error ~eps/(1 - n) nearer 1.");
   m.def("ellippi_am", &ellippi_am_py, py::arg("u"), py::arg("n"), py::arg("m"), py::arg("mc") = py::none(),
         "Incomplete Pi(am u, n|m) = int_0^u dv / (1 - n sn^2(v|m)) (mpmath.ellippi(n, am(u), m)), for u a scalar\n"
-        "or a 1-d array (then an array of the same length), n < 1, mc = 1 - m (default 1 - m).");
+        "or a 1-d array (then an array of the same length), n < 1, mc = 1 - m (default 1 - m); +-inf with a\n"
+        "RuntimeWarning where it exceeds the double range (|u| near it).");
   m.def("jacobi_ellipj", &jacobi_ellipj_py, py::arg("u"), py::arg("m"), py::arg("mc") = py::none(),
         "Jacobi elliptic functions (sn, cn, dn)(u|m) for u a scalar (floats) or a 1-d array (three arrays of\n"
         "shape (n,)), m in [0, 1]. mc: the complement 1 - m (default 1 - m); pass it near m = 1 for full\n"
@@ -112,10 +144,12 @@ void bind_exact(pybind11::module_& m) {
       .def(py::init(&make_solution), py::arg("inertia"), py::arg("q_WB"), py::arg("w_B"), py::arg("scalar_first") = false,
            "inertia: (3, 3) rotational inertia about the centre of mass, in B [kg m^2], symmetric positive definite;\n"
            "q_WB: (4,) initial attitude, (x, y, z, w) or (w, x, y, z) if scalar_first; w_B: (3,) initial angular\n"
-           "velocity of B in W, expressed in B [rad/s].")
+           "velocity of B in W, expressed in B [rad/s]. Any finite magnitudes (the motion is computed in scaled\n"
+           "units); ValueError naming w_B when a rate of the motion exceeds the double range.")
       .def("state_at", &state_at_py, py::arg("t"),
            "State at time t [s] (scalar, or (n,) array; negative allowed): (q_WB, w_B) of shapes (4,), (3,) or\n"
-           "(n, 4), (n, 3); q in the order chosen at construction.")
+           "(n, 4), (n, 3); q in the order chosen at construction. ValueError naming t when a phase (rate times t)\n"
+           "exceeds the double range.")
       .def_property_readonly("period", [](const PyTorqueFreeSolution& s) { return s.solution.period(); },
                              "Period of w_B(t) [s]; inf if w_B is constant or on the separatrix. A flip takes half.")
       .def_property_readonly("case", [](const PyTorqueFreeSolution& s) { return to_string(s.solution.solution_case()); },
@@ -129,11 +163,18 @@ void bind_exact(pybind11::module_& m) {
                              "(3,) principal moments I1 <= I2 <= I3 [kg m^2].")
       .def_property_readonly("R_BP", [](const PyTorqueFreeSolution& s) { return py_io::to_array(s.solution.R_BP()); },
                              "(3, 3) rotation from the sorted principal frame P to B (columns: principal axes in B).")
-      .def_property_readonly("angular_momentum_W",
-                             [](const PyTorqueFreeSolution& s) { return py_io::to_array(s.solution.angular_momentum_W()); },
-                             "(3,) constant spatial angular momentum L_W [kg m^2/s].")
-      .def_property_readonly("kinetic_energy", [](const PyTorqueFreeSolution& s) { return s.solution.kinetic_energy(); },
-                             "Constant kinetic energy of rotation [J].");
+      .def_property_readonly(
+          "angular_momentum_W",
+          [](const PyTorqueFreeSolution& s) {
+            return py_io::finite_result(s.solution.angular_momentum_W(), "TorqueFreeSolution.angular_momentum_W");
+          },
+          "(3,) constant spatial angular momentum L_W [kg m^2/s]; inf with a RuntimeWarning beyond the double range.")
+      .def_property_readonly(
+          "kinetic_energy",
+          [](const PyTorqueFreeSolution& s) {
+            return py_io::finite_result(s.solution.kinetic_energy(), "TorqueFreeSolution.kinetic_energy");
+          },
+          "Constant kinetic energy of rotation [J]; inf with a RuntimeWarning beyond the double range.");
 }
 
 }  // namespace rigiddyn::bindings

@@ -1,5 +1,7 @@
 // Python bindings of the frames layer: FrameKinematics, FrameMotion, FrameTree, PointVelocity,
 // PointAcceleration and the formula-level functions. Arrays: vectors (3,), matrices (3, 3), float64.
+// Every argument is converted by numpy_io (TypeError/ValueError naming it); every result that can
+// overflow is checked (RuntimeWarning naming it).
 #include <pybind11/stl.h>
 
 #include <memory>
@@ -19,8 +21,11 @@ namespace rigiddyn::bindings {
 namespace py = pybind11;
 using py_io::as_matrix3;
 using py_io::as_matrix3_or_identity;
+using py_io::as_scalar;
+using py_io::as_string;
 using py_io::as_vector3;
 using py_io::as_vector3_or_zero;
+using py_io::finite_result;
 using py_io::to_array;
 
 namespace {
@@ -39,9 +44,8 @@ std::shared_ptr<py::object> hold(py::object f) {
 FrameKinematics kinematics_from_python(py::handle value) {
   if (py::isinstance<FrameKinematics>(value)) return value.cast<FrameKinematics>();
   if (!py::isinstance<py::sequence>(value) || py::isinstance<py::str>(value) || py::len(value) != 6) {
-    throw py::type_error("kinematics_at(t): expected a FrameKinematics or a 6-tuple (R_PF, w_PF_P, alpha_PF_P, "
-                         "p_PF_P, v_PF_P, a_PF_P), got " +
-                         std::string(py::str(py::type::of(value).attr("__name__"))));
+    py_io::throw_type_error("kinematics_at(t)",
+                            "a FrameKinematics or a 6-tuple (R_PF, w_PF_P, alpha_PF_P, p_PF_P, v_PF_P, a_PF_P)", value);
   }
   const py::sequence s = value.cast<py::sequence>();
   FrameKinematics K;
@@ -54,8 +58,9 @@ FrameKinematics kinematics_from_python(py::handle value) {
   return K;
 }
 
-FrameMotion motion_from_python(py::function kinematics_at) {
-  std::shared_ptr<py::object> f = hold(std::move(kinematics_at));
+FrameMotion motion_from_python(py::handle kinematics_at) {
+  std::shared_ptr<py::object> f = hold(py_io::as_callable(
+      kinematics_at, "kinematics_at", "a callable t -> FrameKinematics or 6-tuple (R_PF, w_PF_P, ..., a_PF_P)"));
   return FrameMotion([f](double t) {
     py::gil_scoped_acquire gil;
     const py::object value = (*f)(t);
@@ -67,13 +72,42 @@ FrameMotion motion_from_python(py::function kinematics_at) {
   });
 }
 
+// Bound arguments of the classes of this layer.
+const FrameKinematics& as_kinematics(py::handle obj, const std::string& name) {
+  return py_io::as_instance<FrameKinematics>(obj, name, "a FrameKinematics");
+}
+const FrameMotion& as_motion(py::handle obj) {
+  return py_io::as_instance<FrameMotion>(obj, "motion", "a FrameMotion");
+}
+
+// The results: every member finite, else a RuntimeWarning naming the quantity.
+bool all_finite(const FrameKinematics& K) {
+  return K.R_PF.allFinite() && K.w_PF_P.allFinite() && K.alpha_PF_P.allFinite() && K.p_PF_P.allFinite() &&
+         K.v_PF_P.allFinite() && K.a_PF_P.allFinite();
+}
+FrameKinematics checked(const FrameKinematics& K, const char* quantity) {
+  py_io::warn_unless_finite(all_finite(K), quantity, "a FrameKinematics with non-finite members");
+  return K;
+}
+PointVelocity checked(const PointVelocity& v, const char* quantity) {
+  py_io::warn_unless_finite(v.origin.allFinite() && v.rotational.allFinite() && v.relative.allFinite() &&
+                                v.total().allFinite(),
+                            quantity, "a PointVelocity with non-finite terms");
+  return v;
+}
+PointAcceleration checked(const PointAcceleration& a, const char* quantity) {
+  py_io::warn_unless_finite(a.origin.allFinite() && a.tangential.allFinite() && a.centripetal.allFinite() &&
+                                a.relative.allFinite() && a.coriolis.allFinite() && a.total().allFinite(),
+                            quantity, "a PointAcceleration with non-finite terms");
+  return a;
+}
 
 void bind_frame_kinematics(py::module_& m) {
   py::class_<FrameKinematics>(m, "FrameKinematics",
                               "Frame F relative to frame P at one instant (P = the parent of a FrameMotion, or the\n"
                               "`relative_to` frame of a FrameTree query). Every vector is expressed in P; SI units.")
-      .def(py::init([](const py::object& R_PF, const py::object& w_PF_P, const py::object& alpha_PF_P,
-                       const py::object& p_PF_P, const py::object& v_PF_P, const py::object& a_PF_P) {
+      .def(py::init([](py::handle R_PF, py::handle w_PF_P, py::handle alpha_PF_P, py::handle p_PF_P,
+                       py::handle v_PF_P, py::handle a_PF_P) {
              FrameKinematics K;
              K.R_PF = as_matrix3_or_identity(R_PF, "R_PF");
              K.w_PF_P = as_vector3_or_zero(w_PF_P, "w_PF_P");
@@ -100,25 +134,38 @@ void bind_frame_kinematics(py::module_& m) {
       .def_property_readonly("a_PF_P", [](const FrameKinematics& K) { return to_array(K.a_PF_P); },
                              "(3,) acceleration of F's origin seen from P [m/s^2], expressed in P.");
 
-  m.def("compose_kinematics", &compose_kinematics, py::arg("K_AP"), py::arg("K_PF"),
-        "F relative to A from P relative to A and F relative to P (addition theorem for w; alpha with its\n"
-        "w_AP x w_PF term; origin by seed 000 (4.38), (4.39)). Result expressed in A.");
-  m.def("relative_kinematics", &relative_kinematics, py::arg("K_WA"), py::arg("K_WF"),
-        "F relative to A from A and F relative to a common frame W; expressed in A. Inverse of compose_kinematics.");
+  m.def(
+      "compose_kinematics",
+      [](py::handle K_AP, py::handle K_PF) {
+        return checked(compose_kinematics(as_kinematics(K_AP, "K_AP"), as_kinematics(K_PF, "K_PF")),
+                       "compose_kinematics");
+      },
+      py::arg("K_AP"), py::arg("K_PF"),
+      "F relative to A from P relative to A and F relative to P (addition theorem for w; alpha with its\n"
+      "w_AP x w_PF term; origin by the point formulas of the \"Rigid body kinematics and dynamics\" notes,\n"
+      "(4.38), (4.39)). Result expressed in A.");
+  m.def(
+      "relative_kinematics",
+      [](py::handle K_WA, py::handle K_WF) {
+        return checked(relative_kinematics(as_kinematics(K_WA, "K_WA"), as_kinematics(K_WF, "K_WF")),
+                       "relative_kinematics");
+      },
+      py::arg("K_WA"), py::arg("K_WF"),
+      "F relative to A from A and F relative to a common frame W; expressed in A. Inverse of compose_kinematics.");
 }
 
 void bind_point_terms(py::module_& m) {
   py::class_<PointVelocity>(m, "PointVelocity",
                             "Velocity of a point Q moving in a frame F, seen from a frame A, term by term\n"
-                            "(seed 000 (4.38)): total = origin + rotational + relative. Each (3,) [m/s], all\n"
-                            "expressed in the same frame (the query's `expressed_in`).")
+                            "(\"Rigid body kinematics and dynamics\" notes (4.38)): total = origin + rotational +\n"
+                            "relative. Each (3,) [m/s], all expressed in the same frame (the query's `expressed_in`).")
       .def_property_readonly("origin", [](const PointVelocity& v) { return to_array(v.origin); },
                              "velocity of F's origin seen from A")
       .def_property_readonly("rotational", [](const PointVelocity& v) { return to_array(v.rotational); },
                              "w_AF x r, r = position of Q relative to F's origin")
       .def_property_readonly("relative", [](const PointVelocity& v) { return to_array(v.relative); },
                              "velocity of Q seen from F")
-      .def_property_readonly("total", [](const PointVelocity& v) { return to_array(v.total()); },
+      .def_property_readonly("total", [](const PointVelocity& v) { return finite_result(v.total(), "PointVelocity.total"); },
                              "velocity of Q seen from A (sum of the terms)")
       .def("__repr__", [](const PointVelocity& v) {
         return "PointVelocity(origin=" + format_value(v.origin.transpose()) + ", rotational=" +
@@ -127,8 +174,9 @@ void bind_point_terms(py::module_& m) {
 
   py::class_<PointAcceleration>(m, "PointAcceleration",
                                 "Acceleration of a point Q moving in a frame F, seen from a frame A, term by term\n"
-                                "(seed 000 (4.39), seed 001): total = origin + tangential + centripetal + relative +\n"
-                                "coriolis. Each (3,) [m/s^2], all expressed in the query's `expressed_in` frame.")
+                                "(\"Rigid body kinematics and dynamics\" notes (4.39); Craig's \"Rigid Body Dynamics\"\n"
+                                "slides): total = origin + tangential + centripetal + relative + coriolis. Each (3,)\n"
+                                "[m/s^2], all expressed in the query's `expressed_in` frame.")
       .def_property_readonly("origin", [](const PointAcceleration& a) { return to_array(a.origin); },
                              "acceleration of F's origin seen from A")
       .def_property_readonly("tangential", [](const PointAcceleration& a) { return to_array(a.tangential); },
@@ -139,7 +187,7 @@ void bind_point_terms(py::module_& m) {
                              "acceleration of Q seen from F")
       .def_property_readonly("coriolis", [](const PointAcceleration& a) { return to_array(a.coriolis); },
                              "2 w_AF x v_rel, v_rel = velocity of Q seen from F")
-      .def_property_readonly("total", [](const PointAcceleration& a) { return to_array(a.total()); },
+      .def_property_readonly("total", [](const PointAcceleration& a) { return finite_result(a.total(), "PointAcceleration.total"); },
                              "acceleration of Q seen from A (sum of the terms)")
       .def("__repr__", [](const PointAcceleration& a) {
         return "PointAcceleration(origin=" + format_value(a.origin.transpose()) + ", tangential=" +
@@ -150,27 +198,32 @@ void bind_point_terms(py::module_& m) {
 
   m.def(
       "point_velocity",
-      [](const FrameKinematics& K_AF, const py::object& p, const py::object& v) {
-        return point_velocity(K_AF, as_vector3(p, "p_FQ_F"), as_vector3(v, "v_FQ_F"));
+      [](py::handle K_AF, py::handle p, py::handle v) {
+        return checked(point_velocity(as_kinematics(K_AF, "K_AF"), as_vector3(p, "p_FQ_F"), as_vector3(v, "v_FQ_F")),
+                       "point_velocity");
       },
       py::arg("K_AF"), py::arg("p_FQ_F"), py::arg("v_FQ_F"),
       "Velocity terms of Q seen from A, expressed in A. K_AF: F relative to A; p_FQ_F (3,) [m] and v_FQ_F\n"
       "(3,) [m/s]: Q's position relative to F's origin and its velocity seen from F, expressed in F.");
   m.def(
       "point_acceleration",
-      [](const FrameKinematics& K_AF, const py::object& p, const py::object& v, const py::object& a) {
-        return point_acceleration(K_AF, as_vector3(p, "p_FQ_F"), as_vector3(v, "v_FQ_F"), as_vector3(a, "a_FQ_F"));
+      [](py::handle K_AF, py::handle p, py::handle v, py::handle a) {
+        return checked(point_acceleration(as_kinematics(K_AF, "K_AF"), as_vector3(p, "p_FQ_F"),
+                                          as_vector3(v, "v_FQ_F"), as_vector3(a, "a_FQ_F")),
+                       "point_acceleration");
       },
       py::arg("K_AF"), py::arg("p_FQ_F"), py::arg("v_FQ_F"), py::arg("a_FQ_F"),
       "Acceleration terms of Q seen from A, expressed in A; a_FQ_F (3,) [m/s^2]: Q's acceleration seen\n"
       "from F, expressed in F; the rest as point_velocity.");
   m.def(
       "transport_derivative",
-      [](const py::object& w, const py::object& u, const py::object& du) {
-        return to_array(transport_derivative(as_vector3(w, "w_AB"), as_vector3(u, "u"), as_vector3(du, "du_dt_in_B")));
+      [](py::handle w, py::handle u, py::handle du) {
+        return finite_result(transport_derivative(as_vector3(w, "w_AB"), as_vector3(u, "u"), as_vector3(du, "du_dt_in_B")),
+                             "transport_derivative");
       },
       py::arg("w_AB"), py::arg("u"), py::arg("du_dt_in_B"),
-      "Transport theorem (seed 001): d^A u/dt = d^B u/dt + w_AB x u. All (3,), expressed in one frame.");
+      "Transport theorem (Craig's \"Rigid Body Dynamics\" slides): d^A u/dt = d^B u/dt + w_AB x u. All (3,),\n"
+      "expressed in one frame.");
 }
 
 void bind_frame_motion(py::module_& m) {
@@ -184,22 +237,33 @@ void bind_frame_motion(py::module_& m) {
            "(finite, R_PF a rotation) and raises ValueError naming the frame.")
       .def_static(
           "fixed",
-          [](const py::object& R_PF, const py::object& p_PF_P) {
+          [](py::handle R_PF, py::handle p_PF_P) {
             return FrameMotion::fixed(as_matrix3_or_identity(R_PF, "R_PF"), as_vector3_or_zero(p_PF_P, "p_PF_P"));
           },
           py::arg("R_PF") = py::none(), py::arg("p_PF_P") = py::none(),
           "F fixed in P: orientation R_PF (3,3) (None: identity), origin at p_PF_P (3,) [m] in P (None: 0).")
       .def_static(
           "constant_rotation",
-          [](const py::object& axis_P, double rate, const py::object& R_PF0, const py::object& p_PF_P) {
-            return FrameMotion::constant_rotation(as_vector3(axis_P, "axis_P"), rate,
+          [](py::handle axis_P, py::handle rate, py::handle R_PF0, py::handle p_PF_P) {
+            return FrameMotion::constant_rotation(as_vector3(axis_P, "axis_P"), as_scalar(rate, "rate"),
                                                   as_matrix3_or_identity(R_PF0, "R_PF0"), as_vector3_or_zero(p_PF_P, "p_PF_P"));
           },
           py::arg("axis_P"), py::arg("rate"), py::arg("R_PF0") = py::none(), py::arg("p_PF_P") = py::none(),
-          "Simple angular velocity (seed 001): F turns at `rate` [rad/s] about axis_P (3,) (expressed in P, any\n"
-          "non-zero length) through F's origin, which stays at p_PF_P [m] in P (None: 0).\n"
-          "R_PF(t) = exp(hat(rate t axis_P/|axis_P|)) R_PF0 (R_PF0: orientation at t = 0, None: identity).")
-      .def("at", &FrameMotion::at, py::arg("t"), "F relative to P at time t [s] (unchecked).");
+          "Simple angular velocity (Craig's \"Rigid Body Dynamics\" slides): F turns at `rate` [rad/s] about\n"
+          "axis_P (3,) (expressed in P, any non-zero length) through F's origin, which stays at p_PF_P [m] in P\n"
+          "(None: 0). R_PF(t) = exp(hat(rate t axis_P/|axis_P|)) R_PF0 (R_PF0: orientation at t = 0, None:\n"
+          "identity).")
+      .def(
+          "at",
+          [](const FrameMotion& motion, py::handle t) {
+            const double time = as_scalar(t, "t");
+            try {
+              return motion.at(time);
+            } catch (const std::invalid_argument& e) {  // a user motion's bad value, named as the tree names it
+              throw py::value_error(std::string("motion at t=") + format_value(time) + ": " + e.what());
+            }
+          },
+          py::arg("t"), "F relative to P at time t [s] (not checked: the tree checks the values it uses).");
 }
 
 void bind_frame_tree(py::module_& m) {
@@ -207,70 +271,106 @@ void bind_frame_tree(py::module_& m) {
                         "A tree of reference frames rooted at the inertial frame 'world'. Each frame is placed\n"
                         "relative to its parent by a FrameMotion. Queries relate any frame F (`frame`) to any\n"
                         "frame A (`relative_to`) at time t [s], with results expressed in `expressed_in` E.\n"
-                        "Unknown names, duplicates and cycles raise ValueError.")
+                        "Unknown names, duplicates and cycles raise ValueError. Trees of any depth (every walk\n"
+                        "is iterative).")
       .def(py::init<>(), "A tree holding only 'world'.")
       .def_property_readonly_static("world", [](const py::object&) { return FrameTree::world; },
                                     "The root's name, 'world'.")
-      .def("add_frame", &FrameTree::add_frame, py::arg("name"), py::arg("parent"), py::arg("motion"),
-           "Adds frame `name` under `parent` (which must exist), placed by `motion`.")
-      .def("set_parent", &FrameTree::set_parent, py::arg("name"), py::arg("parent"), py::arg("motion"),
-           "Moves frame `name` and its subtree under `parent`, placed by `motion`. ValueError if that would\n"
-           "make a cycle (parent is `name` or one of its descendants) or `name` is 'world'.")
-      .def("has_frame", &FrameTree::has_frame, py::arg("name"))
-      .def("parent", &FrameTree::parent, py::arg("name"), "The parent's name ('' for 'world').")
+      .def(
+          "add_frame",
+          [](FrameTree& tree, py::handle name, py::handle parent, py::handle motion) {
+            tree.add_frame(as_string(name, "name"), as_string(parent, "parent"), as_motion(motion));
+          },
+          py::arg("name"), py::arg("parent"), py::arg("motion"),
+          "Adds frame `name` under `parent` (which must exist), placed by `motion`.")
+      .def(
+          "set_parent",
+          [](FrameTree& tree, py::handle name, py::handle parent, py::handle motion) {
+            tree.set_parent(as_string(name, "name"), as_string(parent, "parent"), as_motion(motion));
+          },
+          py::arg("name"), py::arg("parent"), py::arg("motion"),
+          "Moves frame `name` and its subtree under `parent`, placed by `motion`. ValueError if that would\n"
+          "make a cycle (parent is `name` or one of its descendants) or `name` is 'world'.")
+      .def(
+          "has_frame", [](const FrameTree& tree, py::handle name) { return tree.has_frame(as_string(name, "name")); },
+          py::arg("name"), "True if a frame of this name is in the tree.")
+      .def(
+          "parent", [](const FrameTree& tree, py::handle name) { return tree.parent(as_string(name, "name")); },
+          py::arg("name"), "The parent's name ('' for 'world').")
       .def("frame_names", &FrameTree::frame_names, "All names: 'world' first, then in the order added.")
-      .def("kinematics", &FrameTree::kinematics, py::arg("frame"), py::arg("relative_to"), py::arg("t"),
-           "FrameKinematics of `frame` F relative to `relative_to` A at t, expressed in A.")
+      .def(
+          "kinematics",
+          [](const FrameTree& tree, py::handle frame, py::handle relative_to, py::handle t) {
+            return checked(tree.kinematics(as_string(frame, "frame"), as_string(relative_to, "relative_to"),
+                                           as_scalar(t, "t")),
+                           "FrameTree.kinematics");
+          },
+          py::arg("frame"), py::arg("relative_to"), py::arg("t"),
+          "FrameKinematics of `frame` F relative to `relative_to` A at t, expressed in A.")
       .def(
           "rotation",
-          [](const FrameTree& tree, const std::string& frame, const std::string& relative_to, double t) {
-            return to_array(tree.rotation(frame, relative_to, t));
+          [](const FrameTree& tree, py::handle frame, py::handle relative_to, py::handle t) {
+            return finite_result(tree.rotation(as_string(frame, "frame"), as_string(relative_to, "relative_to"),
+                                               as_scalar(t, "t")),
+                                 "FrameTree.rotation");
           },
           py::arg("frame"), py::arg("relative_to"), py::arg("t"),
           "R_AF (3,3): maps `frame` F coordinates to `relative_to` A coordinates at t.")
       .def(
           "angular_velocity",
-          [](const FrameTree& tree, const std::string& frame, const std::string& relative_to,
-             const std::string& expressed_in, double t) {
-            return to_array(tree.angular_velocity(frame, relative_to, expressed_in, t));
+          [](const FrameTree& tree, py::handle frame, py::handle relative_to, py::handle expressed_in, py::handle t) {
+            return finite_result(tree.angular_velocity(as_string(frame, "frame"), as_string(relative_to, "relative_to"),
+                                                       as_string(expressed_in, "expressed_in"), as_scalar(t, "t")),
+                                 "FrameTree.angular_velocity");
           },
           py::arg("frame"), py::arg("relative_to"), py::arg("expressed_in"), py::arg("t"),
           "w_AF_E (3,) [rad/s]: angular velocity of F relative to A (addition theorem), expressed in E.")
       .def(
           "angular_acceleration",
-          [](const FrameTree& tree, const std::string& frame, const std::string& relative_to,
-             const std::string& expressed_in, double t) {
-            return to_array(tree.angular_acceleration(frame, relative_to, expressed_in, t));
+          [](const FrameTree& tree, py::handle frame, py::handle relative_to, py::handle expressed_in, py::handle t) {
+            return finite_result(tree.angular_acceleration(as_string(frame, "frame"),
+                                                           as_string(relative_to, "relative_to"),
+                                                           as_string(expressed_in, "expressed_in"), as_scalar(t, "t")),
+                                 "FrameTree.angular_acceleration");
           },
           py::arg("frame"), py::arg("relative_to"), py::arg("expressed_in"), py::arg("t"),
           "alpha_AF_E (3,) [rad/s^2]: d/dt in A of w_AF, expressed in E (includes the w x w terms; no\n"
-          "addition theorem for angular accelerations, seed 001).")
+          "addition theorem for angular accelerations, Craig's \"Rigid Body Dynamics\" slides).")
       .def(
           "transport_derivative",
-          [](const FrameTree& tree, const py::object& u, const py::object& du, const std::string& from_frame,
-             const std::string& to_frame, const std::string& expressed_in, double t) {
-            return to_array(tree.transport_derivative(as_vector3(u, "u_E"), as_vector3(du, "du_B_E"), from_frame,
-                                                      to_frame, expressed_in, t));
+          [](const FrameTree& tree, py::handle u, py::handle du, py::handle from_frame, py::handle to_frame,
+             py::handle expressed_in, py::handle t) {
+            return finite_result(
+                tree.transport_derivative(as_vector3(u, "u_E"), as_vector3(du, "du_B_E"),
+                                          as_string(from_frame, "from_frame"), as_string(to_frame, "to_frame"),
+                                          as_string(expressed_in, "expressed_in"), as_scalar(t, "t")),
+                "FrameTree.transport_derivative");
           },
           py::arg("u_E"), py::arg("du_B_E"), py::arg("from_frame"), py::arg("to_frame"), py::arg("expressed_in"),
           py::arg("t"),
-          "Transport theorem (seed 001): the derivative of u seen from A = `to_frame`, from its derivative\n"
-          "du_B_E seen from B = `from_frame`: du_B_E + w_AB x u_E. u_E, du_B_E and the result (3,) in E.")
+          "Transport theorem (Craig's \"Rigid Body Dynamics\" slides): the derivative of u seen from\n"
+          "A = `to_frame`, from its derivative du_B_E seen from B = `from_frame`: du_B_E + w_AB x u_E. u_E,\n"
+          "du_B_E and the result (3,) in E.")
       .def(
           "point_position",
-          [](const FrameTree& tree, const std::string& frame, const py::object& p, const std::string& relative_to,
-             const std::string& expressed_in, double t) {
-            return to_array(tree.point_position(frame, as_vector3(p, "p_FQ_F"), relative_to, expressed_in, t));
+          [](const FrameTree& tree, py::handle frame, py::handle p, py::handle relative_to, py::handle expressed_in,
+             py::handle t) {
+            return finite_result(tree.point_position(as_string(frame, "frame"), as_vector3(p, "p_FQ_F"),
+                                                     as_string(relative_to, "relative_to"),
+                                                     as_string(expressed_in, "expressed_in"), as_scalar(t, "t")),
+                                 "FrameTree.point_position");
           },
           py::arg("frame"), py::arg("p_FQ_F"), py::arg("relative_to"), py::arg("expressed_in"), py::arg("t"),
           "p_AQ_E (3,) [m]: position of Q relative to A's origin, expressed in E; p_FQ_F (3,): Q relative\n"
           "to F's origin, expressed in F.")
       .def(
           "point_velocity",
-          [](const FrameTree& tree, const std::string& frame, const py::object& p, const py::object& v,
-             const std::string& relative_to, const std::string& expressed_in, double t) {
-            return tree.point_velocity(frame, as_vector3(p, "p_FQ_F"), as_vector3(v, "v_FQ_F"), relative_to,
-                                       expressed_in, t);
+          [](const FrameTree& tree, py::handle frame, py::handle p, py::handle v, py::handle relative_to,
+             py::handle expressed_in, py::handle t) {
+            return checked(tree.point_velocity(as_string(frame, "frame"), as_vector3(p, "p_FQ_F"),
+                                               as_vector3(v, "v_FQ_F"), as_string(relative_to, "relative_to"),
+                                               as_string(expressed_in, "expressed_in"), as_scalar(t, "t")),
+                           "FrameTree.point_velocity");
           },
           py::arg("frame"), py::arg("p_FQ_F"), py::arg("v_FQ_F"), py::arg("relative_to"), py::arg("expressed_in"),
           py::arg("t"),
@@ -278,10 +378,13 @@ void bind_frame_tree(py::module_& m) {
           "seen from F (both (3,), expressed in F; zeros for a point fixed in F).")
       .def(
           "point_acceleration",
-          [](const FrameTree& tree, const std::string& frame, const py::object& p, const py::object& v,
-             const py::object& a, const std::string& relative_to, const std::string& expressed_in, double t) {
-            return tree.point_acceleration(frame, as_vector3(p, "p_FQ_F"), as_vector3(v, "v_FQ_F"),
-                                           as_vector3(a, "a_FQ_F"), relative_to, expressed_in, t);
+          [](const FrameTree& tree, py::handle frame, py::handle p, py::handle v, py::handle a, py::handle relative_to,
+             py::handle expressed_in, py::handle t) {
+            return checked(tree.point_acceleration(as_string(frame, "frame"), as_vector3(p, "p_FQ_F"),
+                                                   as_vector3(v, "v_FQ_F"), as_vector3(a, "a_FQ_F"),
+                                                   as_string(relative_to, "relative_to"),
+                                                   as_string(expressed_in, "expressed_in"), as_scalar(t, "t")),
+                           "FrameTree.point_acceleration");
           },
           py::arg("frame"), py::arg("p_FQ_F"), py::arg("v_FQ_F"), py::arg("a_FQ_F"), py::arg("relative_to"),
           py::arg("expressed_in"), py::arg("t"),

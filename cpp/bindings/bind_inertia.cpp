@@ -6,6 +6,8 @@
 #include <pybind11/operators.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -32,14 +34,16 @@ namespace {
 
 using PointRows = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
 
-// Exactly one of mass= [kg] and density= (ValueError naming both otherwise).
-MassOrDensity mass_or_density(const py::object& mass, const py::object& density) {
-  if (mass.is_none() == density.is_none()) {
+// Exactly one of mass= [kg] and density=, each a number > 0 (ValueError naming both otherwise).
+MassOrDensity mass_or_density(py::handle mass, py::handle density) {
+  const std::optional<double> m = py_io::as_optional_scalar(mass, "mass");
+  const std::optional<double> rho = py_io::as_optional_scalar(density, "density");
+  if (m.has_value() == rho.has_value()) {
     throw py::value_error(std::string("mass, density: expected exactly one of mass= or density=, got ") +
-                          (mass.is_none() ? "neither" : "both"));
+                          (m ? "both" : "neither"));
   }
-  if (!mass.is_none()) return Mass{py_io::as_scalar(mass, "mass")};
-  return Density{py_io::as_scalar(density, "density")};
+  if (m) return Mass{*m};
+  return Density{*rho};
 }
 
 // An (n, 3) array of points (n >= 1).
@@ -51,14 +55,9 @@ PointRows as_points(py::handle obj, const std::string& name) {
 
 // An (f, 3) integer array of vertex indices (TypeError unless integer dtype).
 MeshFaces as_faces(py::handle obj) {
-  py::array raw = py::module_::import("numpy").attr("asarray")(obj);
-  const char kind = raw.dtype().kind();
-  if (kind != 'i' && kind != 'u') {
-    throw py::type_error("faces: expected an integer array, got dtype " + std::string(py::str(raw.dtype())));
-  }
-  auto a = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(raw);
+  const py_io::IndexArray a = py_io::as_index_array(obj, "faces");
   if (a.ndim() != 2 || a.shape(1) != 3) {
-    throw py::value_error("faces: expected shape (f, 3), got " + std::string(py::str(raw.attr("shape"))));
+    throw py::value_error("faces: expected shape (f, 3), got " + std::string(py::str(a.attr("shape"))));
   }
   return Eigen::Map<const MeshFaces>(a.data(), a.shape(0), 3);
 }
@@ -69,7 +68,7 @@ using py_io::read_only;
 // one of mass= [kg] / density=; the mesh sums run without the GIL.
 template <SpatialInertia (*Build)(const Eigen::Ref<const MeshVertices>&, const Eigen::Ref<const MeshFaces>&,
                                   MassOrDensity)>
-SpatialInertia mesh_body(py::handle vertices, py::handle faces, const py::object& mass, const py::object& density) {
+SpatialInertia mesh_body(py::handle vertices, py::handle faces, py::handle mass, py::handle density) {
   const PointRows v = as_points(vertices, "vertices");
   const MeshFaces f = as_faces(faces);
   const MassOrDensity md = mass_or_density(mass, density);
@@ -77,7 +76,31 @@ SpatialInertia mesh_body(py::handle vertices, py::handle faces, const py::object
   return Build(v, f, md);
 }
 
-InertiaCheck check_arg(py::handle check) { return check.cast<InertiaCheck>(); }
+InertiaCheck check_arg(py::handle check) {
+  return py_io::as_instance<InertiaCheck>(check, "check", "InertiaCheck.physical or InertiaCheck.allow_unrealizable");
+}
+const SpatialInertia& as_inertia(py::handle obj, const std::string& name) {
+  return py_io::as_instance<SpatialInertia>(obj, name, "a SpatialInertia");
+}
+// A tolerance: a finite number >= 0.
+double as_tolerance(py::handle obj, const std::string& name) {
+  const double tolerance = py_io::as_scalar(obj, name);
+  if (tolerance < 0.0) py_io::throw_value_error(name, "a number >= 0", format_value(tolerance));
+  return tolerance;
+}
+// A quadrature order in [1, 32] (the rule doubles it: 64 points per axis at most).
+int as_order(py::handle obj) { return static_cast<int>(py_io::as_int(obj, "order", 1, 32)); }
+
+// A result of mass properties: a RuntimeWarning naming the quantity when a member overflowed.
+SpatialInertia checked(const SpatialInertia& I, const char* quantity) {
+  py_io::warn_unless_finite(std::isfinite(I.mass()) && I.com().allFinite() && I.inertia_com().allFinite(), quantity,
+                            "mass " + format_value(I.mass()) + ", com " + format_value(I.com().transpose()));
+  return I;
+}
+
+py::function as_density(py::handle rho) {
+  return py_io::as_callable(rho, "rho", "a callable points (n, 3) -> densities (n,)");
+}
 
 // rho called once on all points (n, 3) of a rule; must return n values.
 Eigen::VectorXd evaluate_vectorized(const py::function& rho, const QuadratureRule& rule) {
@@ -100,7 +123,12 @@ void bind_types(py::module_& m) {
                           "(symmetric PSD only; a documented opt-in for test problems such as\n"
                           "Hairer-Lubich-Wanner's I = diag(2, 1, 2/3), never the default).")
       .value("physical", InertiaCheck::physical)
-      .value("allow_unrealizable", InertiaCheck::allow_unrealizable);
+      .value("allow_unrealizable", InertiaCheck::allow_unrealizable)
+      // reached only when pybind11's int constructor does not match: a TypeError naming `value`
+      .def(py::init([](py::handle value) -> InertiaCheck {
+             py_io::throw_type_error("value", "an int (0: physical, 1: allow_unrealizable)", value);
+           }),
+           "value"_a);
 
   py::class_<InertiaReport>(m, "InertiaReport",
                             "Validity report of (mass, inertia about the centre of mass); see inertia_report.")
@@ -114,10 +142,15 @@ void bind_types(py::module_& m) {
       .def_property_readonly("triangle_margins", [](const InertiaReport& r) { return read_only(r.triangle_margins); },
                              "(3,) (I1+I2-I0, I0+I2-I1, I0+I1-I2) [kg m^2]; the last is binding")
       .def_readonly("condition_number", &InertiaReport::condition_number, "I2 / I0 (inf when I0 <= 0)")
-      .def_readonly("tolerance", &InertiaReport::tolerance, "absolute tolerance of the two checks [kg m^2]")
+      .def_readonly("tolerance", &InertiaReport::tolerance,
+                    "absolute tolerance of the positive semi-definite and triangle-inequality checks [kg m^2]")
       .def_readonly("positive_semidefinite", &InertiaReport::positive_semidefinite)
       .def_readonly("triangle_inequality", &InertiaReport::triangle_inequality)
-      .def("valid", &InertiaReport::valid, "check"_a = InertiaCheck::physical,
+      .def_readonly("asymmetry_tolerance", &InertiaReport::asymmetry_tolerance,
+                    "largest asymmetry accepted, 1e-12 max |I_ij| [kg m^2]")
+      .def(
+          "valid", [](const InertiaReport& r, py::handle check) { return r.valid(check_arg(check)); },
+          "check"_a = InertiaCheck::physical,
            "True when every check required by `check` passes.")
       .def("summary", &InertiaReport::summary, "One line with the key numbers.")
       .def("__repr__", [](const InertiaReport& r) { return "InertiaReport(" + r.summary() + ")"; });
@@ -127,6 +160,35 @@ void bind_types(py::module_& m) {
                              "(3,) ascending [kg m^2]")
       .def_property_readonly("axes", [](const PrincipalAxes& p) { return read_only(p.axes); },
                              "(3,3): column k is the axis of moments[k]; det +1");
+}
+
+// composite's parts: a sequence of SpatialInertia, or of (X_AB, SpatialInertia) pairs.
+SpatialInertia composite_py(py::handle parts) {
+  const char* expected = "a list of SpatialInertia or of (Transform X_AB, SpatialInertia) pairs";
+  if (!py::isinstance<py::sequence>(parts) || py::isinstance<py::str>(parts)) py_io::throw_type_error("parts", expected, parts);
+  const py::sequence items = py::reinterpret_borrow<py::sequence>(parts);
+  if (py::len(items) == 0) throw py::value_error(std::string("parts: expected ") + expected + ", got an empty sequence");
+  const bool pairs = py::isinstance<py::tuple>(items[0]);  // the first part sets the form of all
+  if (!pairs && !py::isinstance<SpatialInertia>(items[0])) {
+    py_io::throw_type_error("parts[0]", "a SpatialInertia or a (Transform X_AB, SpatialInertia) pair", items[0]);
+  }
+  std::vector<std::pair<Transform, SpatialInertia>> placed;
+  std::vector<SpatialInertia> same_frame;
+  for (size_t i = 0; i < py::len(items); ++i) {
+    const std::string name = "parts[" + std::to_string(i) + "]";
+    const py::object item = items[i];
+    if (!pairs) {
+      same_frame.push_back(py_io::as_instance<SpatialInertia>(item, name, "a SpatialInertia, as parts[0]"));
+      continue;
+    }
+    if (!py::isinstance<py::tuple>(item) || py::len(item) != 2) {
+      py_io::throw_type_error(name, "a (Transform X_AB, SpatialInertia) pair, as parts[0]", item);
+    }
+    const py::tuple pair = py::reinterpret_borrow<py::tuple>(item);
+    placed.emplace_back(py_io::as_instance<Transform>(pair[0], name + "[0]", "a Transform"),
+                        as_inertia(pair[1], name + "[1]"));
+  }
+  return pairs ? composite(placed) : composite(same_frame);
 }
 
 void bind_spatial_inertia(py::module_& m) {
@@ -150,7 +212,7 @@ void bind_spatial_inertia(py::module_& m) {
                 py_io::as_matrix3(inertia, "inertia_about_point"), py_io::as_vector3(point, "point"), check_arg(check));
           },
           "mass"_a, "com"_a, "inertia_about_point"_a, "point"_a, "check"_a = InertiaCheck::physical,
-          "From the inertia (3,3) [kg m^2] about `point` (3,) [m] (parallel axis, seed 001).")
+          "From the inertia (3,3) [kg m^2] about `point` (3,) [m] (parallel axis, Craig).")
       .def_static(
           "from_inertia_about_origin",
           [](py::handle mass, py::handle com, py::handle inertia, py::handle check) {
@@ -182,52 +244,86 @@ void bind_spatial_inertia(py::module_& m) {
       .def(
           "inertia_about_point",
           [](const SpatialInertia& I, py::handle point) {
-            return py_io::to_array(I.inertia_about_point(py_io::as_vector3(point, "point")));
+            return py_io::finite_result(I.inertia_about_point(py_io::as_vector3(point, "point")),
+                                        "SpatialInertia.inertia_about_point");
           },
           "point"_a, "Inertia (3,3) [kg m^2] about point (3,) [m]: I_C + m (|r|^2 1 - r r^T), r = c - p.")
-      .def("inertia_about_origin", [](const SpatialInertia& I) { return py_io::to_array(I.inertia_about_origin()); },
+      .def("inertia_about_origin",
+           [](const SpatialInertia& I) { return py_io::finite_result(I.inertia_about_origin(), "SpatialInertia.inertia_about_origin"); },
            "Inertia (3,3) [kg m^2] about the frame's origin.")
-      .def("matrix", [](const SpatialInertia& I) { return py_io::to_array(I.matrix()); },
+      .def("matrix", [](const SpatialInertia& I) { return py_io::finite_result(I.matrix(), "SpatialInertia.matrix"); },
            "(6,6) spatial inertia about the origin, angular first.")
-      .def("momentum", &SpatialInertia::momentum, "twist"_a,
-           "Spatial momentum h = I V (Force, moment about the origin) of the twist V = [w; v_O] (Motion).")
-      .def("kinetic_energy", &SpatialInertia::kinetic_energy, "twist"_a, "T = 1/2 V . I V [J] of the twist (Motion).")
+      .def(
+          "momentum",
+          [](const SpatialInertia& I, py::handle twist) {
+            const Force h = I.momentum(py_io::as_finite_spatial<Motion>(twist, "twist", "a Motion"));
+            py_io::warn_unless_finite(h.angular.allFinite() && h.linear.allFinite(), "SpatialInertia.momentum",
+                                      format_value(h.to_vector().transpose()));
+            return h;
+          },
+          "twist"_a, "Spatial momentum h = I V (Force, moment about the origin) of the twist V = [w; v_O] (Motion).")
+      .def(
+          "kinetic_energy",
+          [](const SpatialInertia& I, py::handle twist) {
+            return py_io::finite_result(I.kinetic_energy(py_io::as_finite_spatial<Motion>(twist, "twist", "a Motion")),
+                                        "SpatialInertia.kinetic_energy");
+          },
+          "twist"_a, "T = 1/2 V . I V [J] of the twist (Motion).")
       .def(
           "angular_momentum_about_com",
           [](const SpatialInertia& I, py::handle w) {
-            return py_io::to_array(I.angular_momentum_about_com(py_io::as_vector3(w, "angular_velocity")));
+            return py_io::finite_result(I.angular_momentum_about_com(py_io::as_vector3(w, "angular_velocity")),
+                                        "SpatialInertia.angular_momentum_about_com");
           },
           "angular_velocity"_a, "H_C = I_C w (3,) [kg m^2/s]; w (3,) [rad/s] in the frame.")
       .def(
           "angular_momentum_about_point",
           [](const SpatialInertia& I, py::handle w, py::handle v, py::handle p) {
-            return py_io::to_array(I.angular_momentum_about_point(py_io::as_vector3(w, "angular_velocity"),
-                                                                  py_io::as_vector3(v, "com_velocity"),
-                                                                  py_io::as_vector3(p, "point")));
+            return py_io::finite_result(I.angular_momentum_about_point(py_io::as_vector3(w, "angular_velocity"),
+                                                                       py_io::as_vector3(v, "com_velocity"),
+                                                                       py_io::as_vector3(p, "point")),
+                                        "SpatialInertia.angular_momentum_about_point");
           },
           "angular_velocity"_a, "com_velocity"_a, "point"_a,
-          "H_P = r_PC x (m v_C) + H_C (3,) [kg m^2/s] (seed 001); w [rad/s], v_C [m/s], point [m].")
+          "H_P = r_PC x (m v_C) + H_C (3,) [kg m^2/s] (Craig); w [rad/s], v_C [m/s], point [m].")
       .def(
           "rotated",
-          [](const SpatialInertia& I, py::handle R) { return I.rotated(py_io::as_matrix3(R, "R_AB")); }, "R_AB"_a,
+          [](const SpatialInertia& I, py::handle R) { return checked(I.rotated(py_io::as_matrix3(R, "R_AB")), "SpatialInertia.rotated"); },
+          "R_AB"_a,
           "Re-expressed in A: c_A = R_AB c_B, I_C,A = R_AB I_C,B R_AB^T.")
-      .def("transformed", &SpatialInertia::transformed, "X_AB"_a,
+      .def(
+          "transformed",
+          [](const SpatialInertia& I, py::handle X_AB) {
+            return checked(I.transformed(py_io::as_instance<Transform>(X_AB, "X_AB", "a Transform")),
+                           "SpatialInertia.transformed");
+          },
+          "X_AB"_a,
            "Re-expressed in A (Transform X_AB): c_A = R_AB c_B + p_AB, I_C,A = R_AB I_C,B R_AB^T.")
       .def("principal_axes", &SpatialInertia::principal_axes, "Principal moments and right-handed axes of I_C.")
       .def("report", &SpatialInertia::report, "The validity report (InertiaReport).")
       .def(
           "admits_symmetry_plane",
-          [](const SpatialInertia& I, py::handle n, double tol) {
-            return I.admits_symmetry_plane(py_io::as_vector3(n, "normal"), tol);
+          [](const SpatialInertia& I, py::handle n, py::handle tolerance) {
+            return I.admits_symmetry_plane(py_io::as_vector3(n, "normal"), as_tolerance(tolerance, "tolerance"));
           },
           "normal"_a, "tolerance"_a = 1e-9,
           "Whether the plane through the centre of mass with this normal (3,) can be a plane of symmetry\n"
-          "(seed 001: then the products of inertia with the normal vanish). Necessary, not sufficient.")
+          "(Craig: then the products of inertia with the normal vanish). Necessary, not sufficient.")
       .def(py::self + py::self, "Composite of two bodies expressed in the same frame.")
       .def(py::self - py::self, "This body with the part removed (a hole); ValueError if the rest is invalid.")
-      .def("remove", &SpatialInertia::remove, "part"_a, "check"_a = InertiaCheck::physical,
+      .def(
+          "remove",
+          [](const SpatialInertia& I, py::handle part, py::handle check) {
+            return I.remove(as_inertia(part, "part"), check_arg(check));
+          },
+          "part"_a, "check"_a = InertiaCheck::physical,
            "This body with `part` removed (a hole), checked as the constructor.")
-      .def("is_approx", &SpatialInertia::isApprox, "other"_a, "prec"_a = 1e-12, "Relative comparison.")
+      .def(
+          "is_approx",
+          [](const SpatialInertia& I, py::handle other, py::handle prec) {
+            return I.isApprox(as_inertia(other, "other"), as_tolerance(prec, "prec"));
+          },
+          "other"_a, "prec"_a = 1e-12, "Relative comparison.")
       .def("__repr__", [](const SpatialInertia& I) {
         std::ostringstream out;
         out.precision(17);
@@ -240,25 +336,25 @@ void bind_spatial_inertia(py::module_& m) {
 
   m.def(
       "composite",
-      [](const py::sequence& parts) {
-        if (py::len(parts) > 0 && py::isinstance<py::tuple>(parts[0])) {
-          return composite(parts.cast<std::vector<std::pair<Transform, SpatialInertia>>>());
-        }
-        return composite(parts.cast<std::vector<SpatialInertia>>());
-      },
+      [](py::handle parts) { return checked(composite_py(parts), "composite"); },
       "parts"_a,
       "Composite body: parts is a list of SpatialInertia (one frame) or of (X_AB, SpatialInertia) pairs,\n"
       "each part expressed in its B and placed in A by the Transform X_AB. Exact.");
-  m.def("point_inertia", [](double mass, py::handle r) { return py_io::to_array(point_inertia(mass, py_io::as_vector3(r, "r"))); },
-        "mass"_a, "r"_a, "m (|r|^2 1 - r r^T) (3,3) [kg m^2]: a point mass [kg] at r (3,) [m] about the origin.");
+  m.def(
+      "point_inertia",
+      [](py::handle mass, py::handle r) {
+        return py_io::finite_result(point_inertia(py_io::as_scalar(mass, "mass"), py_io::as_vector3(r, "r")), "point_inertia");
+      },
+      "mass"_a, "r"_a, "m (|r|^2 1 - r r^T) (3,3) [kg m^2]: a point mass [kg] > 0 at r (3,) [m] about the origin.");
 }
 
 void bind_validity(py::module_& m) {
   m.attr("inertia_relative_tolerance") = inertia_relative_tolerance;
   m.def(
       "inertia_report",
-      [](py::handle mass, py::handle inertia, double scale) {
-        return inertia_report(py_io::as_scalar(mass, "mass"), py_io::as_matrix3(inertia, "inertia_com"), scale);
+      [](py::handle mass, py::handle inertia, py::handle scale) {
+        return inertia_report(py_io::as_scalar(mass, "mass"), py_io::as_matrix3(inertia, "inertia_com"),
+                              as_tolerance(scale, "scale"));
       },
       "mass"_a, "inertia_com"_a, "scale"_a = 0.0,
       "Validity report of mass [kg] and inertia_com (3,3) [kg m^2]: principal moments, triangle margins,\n"
@@ -266,7 +362,9 @@ void bind_validity(py::module_& m) {
       "the size of the numbers the inertia was computed from (0: trace only).");
   m.def(
       "nearest_valid_inertia",
-      [](py::handle inertia) { return py_io::to_array(nearest_valid_inertia(py_io::as_matrix3(inertia, "inertia"))); },
+      [](py::handle inertia) {
+        return py_io::finite_result(nearest_valid_inertia(py_io::as_matrix3(inertia, "inertia")), "nearest_valid_inertia");
+      },
       "inertia"_a,
       "Explicit repair: the nearest (Frobenius) matrix (3,3) satisfying the triangle inequality, same\n"
       "principal axes; a valid inertia is returned unchanged. Never applied implicitly.");
@@ -274,8 +372,8 @@ void bind_validity(py::module_& m) {
       "principal_axes",
       [](py::handle inertia) {
         const py_io::Stack s = py_io::as_stack(inertia, "inertia", {3, 3});
-        Array moments = py_io::new_stack(s.n, s.stacked, {3});
-        Array axes = py_io::new_stack(s.n, s.stacked, {3, 3});
+        Array moments = py_io::new_stack(s.n, s.stacked, {3}, "moments");
+        Array axes = py_io::new_stack(s.n, s.stacked, {3, 3}, "axes");
         double* pm = moments.mutable_data();
         double* pa = axes.mutable_data();
         {
@@ -288,7 +386,8 @@ void bind_validity(py::module_& m) {
             Eigen::Map<RowMatrix3d>(pa + 9 * i) = p.axes;
           }
         }
-        return py::make_tuple(moments, axes);
+        // unit axes; the moments overflow only for entries near the largest double
+        return py::make_tuple(py_io::finite_result(moments, "principal_axes moments"), axes);
       },
       "inertia"_a,
       "Principal moments and axes of symmetric inertias (3,3) or (n,3,3) [kg m^2] (lower triangles read):\n"
@@ -297,20 +396,23 @@ void bind_validity(py::module_& m) {
 }
 
 void bind_primitives(py::module_& m) {
-  const auto md = [](const py::object& mass, const py::object& density) { return mass_or_density(mass, density); };
+  const auto md = [](py::handle mass, py::handle density) { return mass_or_density(mass, density); };
   const char* md_doc = " Give exactly one of mass= [kg] or density=.";
   const auto def1 = [&](const char* name, SpatialInertia (*f)(double, MassOrDensity), const char* arg,
                         const std::string& doc) {
     m.def(
-        name, [f, md](double x, const py::object& mass, const py::object& density) { return f(x, md(mass, density)); },
+        name,
+        [f, md, arg](py::handle x, py::handle mass, py::handle density) {
+          return f(py_io::as_scalar(x, arg), md(mass, density));
+        },
         py::arg(arg), py::kw_only(), "mass"_a = py::none(), "density"_a = py::none(), (doc + md_doc).c_str());
   };
   const auto def2 = [&](const char* name, SpatialInertia (*f)(double, double, MassOrDensity), const char* a1,
                         const char* a2, const std::string& doc) {
     m.def(
         name,
-        [f, md](double x, double y, const py::object& mass, const py::object& density) {
-          return f(x, y, md(mass, density));
+        [f, md, a1, a2](py::handle x, py::handle y, py::handle mass, py::handle density) {
+          return f(py_io::as_scalar(x, a1), py_io::as_scalar(y, a2), md(mass, density));
         },
         py::arg(a1), py::arg(a2), py::kw_only(), "mass"_a = py::none(), "density"_a = py::none(),
         (doc + md_doc).c_str());
@@ -319,7 +421,7 @@ void bind_primitives(py::module_& m) {
                         const std::string& doc) {
     m.def(
         name,
-        [f, md, arg](py::handle v, const py::object& mass, const py::object& density) {
+        [f, md, arg](py::handle v, py::handle mass, py::handle density) {
           return f(py_io::as_vector3(v, arg), md(mass, density));
         },
         py::arg(arg), py::kw_only(), "mass"_a = py::none(), "density"_a = py::none(), (doc + md_doc).c_str());
@@ -334,8 +436,9 @@ void bind_primitives(py::module_& m) {
        "Solid cylinder, axis z: I_zz = m r^2/2, I_xx = m (3 r^2 + h^2)/12. Density [kg/m^3].");
   m.def(
       "hollow_cylinder",
-      [md](double R, double r, double h, const py::object& mass, const py::object& density) {
-        return hollow_cylinder(R, r, h, md(mass, density));
+      [md](py::handle R, py::handle r, py::handle h, py::handle mass, py::handle density) {
+        return hollow_cylinder(py_io::as_scalar(R, "outer_radius"), py_io::as_scalar(r, "inner_radius"),
+                               py_io::as_scalar(h, "height"), md(mass, density));
       },
       "outer_radius"_a, "inner_radius"_a, "height"_a, py::kw_only(), "mass"_a = py::none(), "density"_a = py::none(),
       "Thick tube, axis z: I_zz = m (R^2 + r^2)/2, I_xx = m (3 (R^2 + r^2) + h^2)/12. Density [kg/m^3]. Give\n"
@@ -354,9 +457,9 @@ void bind_primitives(py::module_& m) {
        "Density [kg/m^3].");
   m.def(
       "solid_tetrahedron",
-      [md](py::handle vertices, const py::object& mass, const py::object& density) {
+      [md](py::handle vertices, py::handle mass, py::handle density) {
         const py_io::Stack s = py_io::as_stack(vertices, "vertices", {4, 3});
-        if (s.stacked) throw py::value_error("vertices: expected shape (4, 3)");
+        if (s.stacked) throw py::value_error("vertices: expected shape (4, 3), got (" + std::to_string(s.n) + ", 4, 3)");
         const double* p = s.array.data();
         const auto v = [p](int i) { return Eigen::Vector3d(p[3 * i], p[3 * i + 1], p[3 * i + 2]); };
         return solid_tetrahedron(v(0), v(1), v(2), v(3), md(mass, density));
@@ -376,7 +479,7 @@ void bind_primitives(py::module_& m) {
         return from_point_masses(mvec, as_points(positions, "positions"));
       },
       "masses"_a, "positions"_a,
-      "Point masses (n,) [kg] >= 0 at positions (n, 3) [m] (seed 000 (4.53)-(4.54)).");
+      "Point masses (n,) [kg] >= 0 at positions (n, 3) [m] (Rigid-body notes (4.53)-(4.54)).");
 }
 
 // Symmetry planes as a list of (normal (3,), point (3,)) tuples.
@@ -389,7 +492,8 @@ py::list planes_to_list(const std::vector<SymmetryPlane>& planes) {
 void bind_symmetry(py::module_& m) {
   m.def(
       "symmetry_planes",
-      [](py::handle masses, py::handle positions, double tolerance) {
+      [](py::handle masses, py::handle positions, py::handle tolerance_arg) {
+        const double tolerance = as_tolerance(tolerance_arg, "tolerance");
         const Array mv = py_io::as_array(masses, "masses");
         if (mv.ndim() != 1) {
           throw py::value_error("masses: expected shape (n,), got an array with " + std::to_string(mv.ndim()) +
@@ -405,7 +509,7 @@ void bind_symmetry(py::module_& m) {
         return planes_to_list(planes);
       },
       "masses"_a, "positions"_a, "tolerance"_a = symmetry_tolerance,
-      "Planes of symmetry (seed 001 \"Plane of Symmetry\") of point masses (n,) [kg] > 0 at positions\n"
+      "Planes of symmetry (Craig \"Plane of Symmetry\") of point masses (n,) [kg] > 0 at positions\n"
       "(n, 3) [m]: the planes whose reflection maps every point onto a point of equal mass, within\n"
       "tolerance * (largest distance from the centre of mass to a point) [m] and tolerance * mass.\n"
       "Returns a list of (normal (3,) unit, largest-magnitude component positive; point (3,) [m] = the\n"
@@ -414,7 +518,8 @@ void bind_symmetry(py::module_& m) {
       "degenerate bodies (cube, regular tetrahedron) the planes found among them, not a proof of none else.");
   m.def(
       "mesh_symmetry_planes",
-      [](py::handle vertices, py::handle faces, double tolerance) {
+      [](py::handle vertices, py::handle faces, py::handle tolerance_arg) {
+        const double tolerance = as_tolerance(tolerance_arg, "tolerance");
         const PointRows v = as_points(vertices, "vertices");
         const MeshFaces f = as_faces(faces);
         std::vector<SymmetryPlane> planes;
@@ -435,12 +540,17 @@ void bind_symmetry(py::module_& m) {
 void bind_mesh_and_density(py::module_& m) {
   m.def(
       "require_closed_oriented_mesh",
-      [](py::handle faces, Eigen::Index n_vertices) { require_closed_oriented_mesh(as_faces(faces), n_vertices); },
+      [](py::handle faces, py::handle n_vertices) {
+        const MeshFaces f = as_faces(faces);
+        require_closed_oriented_mesh(f, py_io::as_int(n_vertices, "n_vertices", 0));
+      },
       "faces"_a, "n_vertices"_a,
       "ValueError unless faces (f, 3) index [0, n_vertices) and form a closed, consistently oriented mesh.");
   m.def(
       "mesh_volume",
-      [](py::handle vertices, py::handle faces) { return mesh_volume(as_points(vertices, "vertices"), as_faces(faces)); },
+      [](py::handle vertices, py::handle faces) {
+        return py_io::finite_result(mesh_volume(as_points(vertices, "vertices"), as_faces(faces)), "mesh_volume");
+      },
       "vertices"_a, "faces"_a, "Signed volume [m^3] of the mesh vertices (n, 3) [m], faces (f, 3).");
   m.def(
       "solid_mesh",
@@ -467,24 +577,27 @@ void bind_mesh_and_density(py::module_& m) {
       .def_readonly("evaluations", &DensityIntegral::evaluations, "points at which rho was evaluated");
   m.def(
       "integrate_density_over_box",
-      [](const py::function& rho, py::handle lower, py::handle upper, int order, int subdivisions) {
+      [](py::handle rho_arg, py::handle lower, py::handle upper, py::handle order_arg, py::handle subdivisions_arg) {
+        const py::function rho = as_density(rho_arg);
         const Eigen::Vector3d lo = py_io::as_vector3(lower, "lower"), hi = py_io::as_vector3(upper, "upper");
-        if (order < 1 || order > 32) throw py::value_error("order: expected an integer in [1, 32], got " + std::to_string(order));
+        const int order = as_order(order_arg);
+        const int subdivisions = static_cast<int>(py_io::as_int(subdivisions_arg, "subdivisions", 1, 64));
         const QuadratureRule low = box_quadrature(lo, hi, order, subdivisions);
         const QuadratureRule high = box_quadrature(lo, hi, 2 * order, subdivisions);
         return compare_density_integrals(low, evaluate_vectorized(rho, low), high, evaluate_vectorized(rho, high));
       },
       "rho"_a, "lower"_a, "upper"_a, "order"_a = 6, "subdivisions"_a = 2,
       "Mass properties of density rho over the box [lower, upper] (3,) [m] by Gauss-Legendre quadrature\n"
-      "(seed 000 (4.55), (4.56), (4.70)) at `order` and 2*order points per cell axis, subdivisions^3 cells.\n"
+      "(Rigid-body notes (4.55), (4.56), (4.70)) at `order` and 2*order points per cell axis, subdivisions^3 cells.\n"
       "rho is called with points (n, 3) [m] and returns (n,) densities [kg/m^3] >= 0. Returns a\n"
       "DensityIntegral (high-order result, differences to the low order as error estimate).");
   m.def(
       "integrate_density_over_mesh",
-      [](const py::function& rho, py::handle vertices, py::handle faces, int order) {
+      [](py::handle rho_arg, py::handle vertices, py::handle faces, py::handle order_arg) {
+        const py::function rho = as_density(rho_arg);
         const PointRows v = as_points(vertices, "vertices");
         const MeshFaces f = as_faces(faces);
-        if (order < 1 || order > 32) throw py::value_error("order: expected an integer in [1, 32], got " + std::to_string(order));
+        const int order = as_order(order_arg);
         const QuadratureRule low = mesh_quadrature(v, f, order);
         const QuadratureRule high = mesh_quadrature(v, f, 2 * order);
         return compare_density_integrals(low, evaluate_vectorized(rho, low), high, evaluate_vectorized(rho, high));

@@ -4,10 +4,12 @@
 // scalar_first=True; every quaternion argument except quat_normalize's must be a unit quaternion
 // (| |q| - 1 | <= 1e-6, then normalised) and every matrix argument a rotation matrix
 // (max |R^T R - I| <= 1e-6, det > 0); otherwise ValueError naming the argument (and the item).
+#include <limits>
 #include <string>
 #include <vector>
 
 #include "bindings.hpp"
+#include "common_args.hpp"
 #include "numpy_io.hpp"
 #include "rigiddyn/so3/axis_angle.hpp"
 #include "rigiddyn/so3/elementary.hpp"
@@ -61,24 +63,36 @@ void for_each_item(py::ssize_t n, bool stacked, Kernel kernel) {
   }
 }
 
+// finite &= every entry of the item is finite (branch-free, on the item just written: no second pass)
+inline void and_finite(bool& finite, const double* item, py::ssize_t size) {
+  double zero = 0.0;
+  for (py::ssize_t k = 0; k < size; ++k) zero += item[k] - item[k];  // NaN unless every entry is finite
+  finite &= zero == 0.0;
+}
+
 // out[i] = f(in[i]) over a stack: items of shape `in_shape` -> items of shape `out_shape`.
-// f(const double* in_item, double* out_item).
+// f(const double* in_item, double* out_item). A non-finite result warns naming `quantity`.
 template <typename F>
-Array map_unary(py::handle x, const char* name, const Shape& in_shape, const Shape& out_shape, F f) {
+Array map_unary(py::handle x, const char* name, const Shape& in_shape, const Shape& out_shape, const char* quantity, F f) {
   const Stack in = py_io::as_stack(x, name, in_shape);
-  Array out = py_io::new_stack(in.n, in.stacked, out_shape);
+  Array out = py_io::new_stack(in.n, in.stacked, out_shape, quantity);
   const double* a = in.array.data();
   double* o = out.mutable_data();
   const py::ssize_t a_size = item_size(in_shape), o_size = item_size(out_shape);
-  for_each_item(in.n, in.stacked, [&](py::ssize_t i) { f(a + i * a_size, o + i * o_size); });
+  bool finite = true;
+  for_each_item(in.n, in.stacked, [&](py::ssize_t i) {
+    f(a + i * a_size, o + i * o_size);
+    and_finite(finite, o + i * o_size, o_size);
+  });
+  if (!finite) py_io::finite_result(out, quantity);
   return out;
 }
 
 // out[i] = f(x[i], y[i]) over two stacks; a single item is used with every item of the other.
-// ValueError naming y when both are stacked with different lengths.
+// ValueError naming y when both are stacked with different lengths; a non-finite result warns.
 template <typename F>
 Array map_binary(py::handle x, const char* x_name, const Shape& x_shape, py::handle y, const char* y_name,
-                 const Shape& y_shape, const Shape& out_shape, F f) {
+                 const Shape& y_shape, const Shape& out_shape, const char* quantity, F f) {
   const Stack sx = py_io::as_stack(x, x_name, x_shape);
   const Stack sy = py_io::as_stack(y, y_name, y_shape);
   if (sx.stacked && sy.stacked && sx.n != sy.n) {
@@ -87,35 +101,37 @@ Array map_binary(py::handle x, const char* x_name, const Shape& x_shape, py::han
   }
   const bool stacked = sx.stacked || sy.stacked;
   const py::ssize_t n = sx.stacked ? sx.n : sy.n;
-  Array out = py_io::new_stack(n, stacked, out_shape);
+  Array out = py_io::new_stack(n, stacked, out_shape, quantity);
   const double* a = sx.array.data();
   const double* b = sy.array.data();
   double* o = out.mutable_data();
   // stride 0 broadcasts a single item
   const py::ssize_t a_step = sx.stacked ? item_size(x_shape) : 0, b_step = sy.stacked ? item_size(y_shape) : 0;
   const py::ssize_t o_size = item_size(out_shape);
-  for_each_item(n, stacked, [&](py::ssize_t i) { f(a + i * a_step, b + i * b_step, o + i * o_size); });
+  bool finite = true;
+  for_each_item(n, stacked, [&](py::ssize_t i) {
+    f(a + i * a_step, b + i * b_step, o + i * o_size);
+    and_finite(finite, o + i * o_size, o_size);
+  });
+  if (!finite) py_io::finite_result(out, quantity);
   return out;
 }
 
 // The Euler axis sequence argument: TypeError unless a str, ValueError unless a valid sequence.
 EulerSequence as_sequence(py::handle seq) {
-  if (!py::isinstance<py::str>(seq)) {
-    throw py::type_error("seq: expected a str such as 'xyz' or 'ZYX', got " +
-                         std::string(py::str(py::type::of(seq).attr("__name__"))));
-  }
+  if (!py::isinstance<py::str>(seq)) py_io::throw_type_error("seq", "a str such as 'xyz' or 'ZYX'", seq);
   return EulerSequence(seq.cast<std::string>(), "seq");
 }
 
-Frame as_frame(py::handle frame) {
-  if (py::isinstance<py::str>(frame)) {
-    const std::string name = frame.cast<std::string>();
-    if (name == "body") return Frame::body;
-    if (name == "world") return Frame::world;
-    throw py::value_error("frame: expected 'body' or 'world', got '" + name + "'");
-  }
-  throw py::type_error("frame: expected 'body' or 'world', got " +
-                       std::string(py::str(py::type::of(frame).attr("__name__"))));
+bool as_scalar_first(py::handle scalar_first) { return py_io::as_bool(scalar_first, "scalar_first"); }
+
+// An axis of any length for axis_angle_to_quat, whose |axis| must neither overflow nor underflow:
+// one beyond the normal range of |axis|^2 (|axis| > 1e154 or < 1e-154) is first scaled to unit
+// length without forming |axis|^2 (stableNormalized); any other axis is passed on unchanged.
+Eigen::Vector3d direction(const Eigen::Vector3d& axis) {
+  const double squared = axis.squaredNorm();
+  const bool normal_range = squared >= std::numeric_limits<double>::min() && squared <= std::numeric_limits<double>::max();
+  return normal_range || axis.isZero(0.0) ? axis : axis.stableNormalized();
 }
 
 // a 0-d result array (single item of shape ()) as a Python float
@@ -130,9 +146,10 @@ void bind_so3(py::module_& m) {
   // ------------------------------------------------------------ matrices
   m.def(
       "quat_to_matrix",
-      [](py::handle q, bool scalar_first) {
+      [](py::handle q, py::handle scalar_first_arg) {
+        const bool scalar_first = as_scalar_first(scalar_first_arg);
         const std::string name = "q";
-        return map_unary(q, "q", quaternion, matrix3, [&](const double* in, double* out) {
+        return map_unary(q, "q", quaternion, matrix3, "quat_to_matrix", [&](const double* in, double* out) {
           write_matrix(quat_to_matrix(checked_unit_quaternion(py_io::read_quaternion(in, scalar_first), name)), out);
         });
       },
@@ -143,9 +160,10 @@ void bind_so3(py::module_& m) {
 
   m.def(
       "matrix_to_quat",
-      [](py::handle R, bool scalar_first) {
+      [](py::handle R, py::handle scalar_first_arg) {
+        const bool scalar_first = as_scalar_first(scalar_first_arg);
         const std::string name = "R";
-        return map_unary(R, "R", matrix3, quaternion, [&](const double* in, double* out) {
+        return map_unary(R, "R", matrix3, quaternion, "matrix_to_quat", [&](const double* in, double* out) {
           py_io::write_quaternion(matrix_to_quat(checked_rotation_matrix(read_matrix(in), name)), out, scalar_first);
         });
       },
@@ -157,8 +175,9 @@ void bind_so3(py::module_& m) {
   // ------------------------------------------------------------ exp / log
   m.def(
       "rotvec_to_quat",
-      [](py::handle rotvec, bool scalar_first) {
-        return map_unary(rotvec, "rotvec", vector3, quaternion, [&](const double* in, double* out) {
+      [](py::handle rotvec, py::handle scalar_first_arg) {
+        const bool scalar_first = as_scalar_first(scalar_first_arg);
+        return map_unary(rotvec, "rotvec", vector3, quaternion, "rotvec_to_quat", [&](const double* in, double* out) {
           py_io::write_quaternion(rotvec_to_quat(read_vector(in)), out, scalar_first);
         });
       },
@@ -169,9 +188,10 @@ void bind_so3(py::module_& m) {
 
   m.def(
       "quat_to_rotvec",
-      [](py::handle q, bool scalar_first) {
+      [](py::handle q, py::handle scalar_first_arg) {
+        const bool scalar_first = as_scalar_first(scalar_first_arg);
         const std::string name = "q";
-        return map_unary(q, "q", quaternion, vector3, [&](const double* in, double* out) {
+        return map_unary(q, "q", quaternion, vector3, "quat_to_rotvec", [&](const double* in, double* out) {
           write_vector(quat_to_rotvec(checked_unit_quaternion(py_io::read_quaternion(in, scalar_first), name)), out);
         });
       },
@@ -183,7 +203,7 @@ void bind_so3(py::module_& m) {
   m.def(
       "rotvec_to_matrix",
       [](py::handle rotvec) {
-        return map_unary(rotvec, "rotvec", vector3, matrix3,
+        return map_unary(rotvec, "rotvec", vector3, matrix3, "rotvec_to_matrix",
                          [&](const double* in, double* out) { write_matrix(rotvec_to_matrix(read_vector(in)), out); });
       },
       "rotvec"_a,
@@ -194,7 +214,7 @@ void bind_so3(py::module_& m) {
       "matrix_to_rotvec",
       [](py::handle R) {
         const std::string name = "R";
-        return map_unary(R, "R", matrix3, vector3, [&](const double* in, double* out) {
+        return map_unary(R, "R", matrix3, vector3, "matrix_to_rotvec", [&](const double* in, double* out) {
           write_vector(matrix_to_rotvec(checked_rotation_matrix(read_matrix(in), name)), out);
         });
       },
@@ -205,10 +225,11 @@ void bind_so3(py::module_& m) {
   // ------------------------------------------------------------ axis-angle
   m.def(
       "axis_angle_to_quat",
-      [](py::handle axis, py::handle angle, bool scalar_first) {
-        return map_binary(axis, "axis", vector3, angle, "angle", scalar, quaternion,
+      [](py::handle axis, py::handle angle, py::handle scalar_first_arg) {
+        const bool scalar_first = as_scalar_first(scalar_first_arg);
+        return map_binary(axis, "axis", vector3, angle, "angle", scalar, quaternion, "axis_angle_to_quat",
                           [&](const double* u, const double* a, double* out) {
-                            py_io::write_quaternion(axis_angle_to_quat(read_vector(u), *a), out, scalar_first);
+                            py_io::write_quaternion(axis_angle_to_quat(direction(read_vector(u)), *a), out, scalar_first);
                           });
       },
       "axis"_a, "angle"_a, "scalar_first"_a = false,
@@ -218,10 +239,12 @@ void bind_so3(py::module_& m) {
 
   m.def(
       "quat_to_axis_angle",
-      [](py::handle q, bool scalar_first) {
+      [](py::handle q, py::handle scalar_first_arg) {
+        const bool scalar_first = as_scalar_first(scalar_first_arg);
         const Stack in = py_io::as_stack(q, "q", quaternion);
-        Array axis = py_io::new_stack(in.n, in.stacked, vector3);
-        Array angle = py_io::new_stack(in.n, in.stacked, scalar);
+        // unit axes and angles in [0, pi]: finite by construction
+        Array axis = py_io::new_stack(in.n, in.stacked, vector3, "axis");
+        Array angle = py_io::new_stack(in.n, in.stacked, scalar, "angle");
         const double* a = in.array.data();
         double* u = axis.mutable_data();
         double* t = angle.mutable_data();
@@ -244,9 +267,10 @@ void bind_so3(py::module_& m) {
       "(moving axes); the 12 sequences xyz xzy yxz yzx zxy zyx xyx xzx yxy yzy zxz zyz in either case.\n";
   m.def(
       "euler_to_quat",
-      [](py::handle seq, py::handle angles, bool scalar_first) {
+      [](py::handle seq, py::handle angles, py::handle scalar_first_arg) {
+        const bool scalar_first = as_scalar_first(scalar_first_arg);
         const EulerSequence s = as_sequence(seq);
-        return map_unary(angles, "angles", vector3, quaternion, [&](const double* in, double* out) {
+        return map_unary(angles, "angles", vector3, quaternion, "euler_to_quat", [&](const double* in, double* out) {
           py_io::write_quaternion(euler_to_quat(s, read_vector(in)), out, scalar_first);
         });
       },
@@ -258,10 +282,11 @@ void bind_so3(py::module_& m) {
 
   m.def(
       "quat_to_euler",
-      [](py::handle seq, py::handle q, bool scalar_first) {
+      [](py::handle seq, py::handle q, py::handle scalar_first_arg) {
+        const bool scalar_first = as_scalar_first(scalar_first_arg);
         const EulerSequence s = as_sequence(seq);
         const std::string name = "q";
-        return map_unary(q, "q", quaternion, vector3, [&](const double* in, double* out) {
+        return map_unary(q, "q", quaternion, vector3, "quat_to_euler", [&](const double* in, double* out) {
           write_vector(quat_to_euler(s, checked_unit_quaternion(py_io::read_quaternion(in, scalar_first), name)), out);
         });
       },
@@ -275,7 +300,7 @@ void bind_so3(py::module_& m) {
       "euler_to_matrix",
       [](py::handle seq, py::handle angles) {
         const EulerSequence s = as_sequence(seq);
-        return map_unary(angles, "angles", vector3, matrix3,
+        return map_unary(angles, "angles", vector3, matrix3, "euler_to_matrix",
                          [&](const double* in, double* out) { write_matrix(euler_to_matrix(s, read_vector(in)), out); });
       },
       "seq"_a, "angles"_a,
@@ -288,7 +313,7 @@ void bind_so3(py::module_& m) {
       [](py::handle seq, py::handle R) {
         const EulerSequence s = as_sequence(seq);
         const std::string name = "R";
-        return map_unary(R, "R", matrix3, vector3, [&](const double* in, double* out) {
+        return map_unary(R, "R", matrix3, vector3, "matrix_to_euler", [&](const double* in, double* out) {
           write_vector(matrix_to_euler(s, checked_rotation_matrix(read_matrix(in), name)), out);
         });
       },
@@ -301,8 +326,8 @@ void bind_so3(py::module_& m) {
   const auto bind_elementary = [&m](const char* name, Eigen::Matrix3d (*rot)(double), const char* doc) {
     m.def(
         name,
-        [rot](py::handle angle) {
-          return map_unary(angle, "angle", scalar, matrix3, [&](const double* in, double* out) { write_matrix(rot(*in), out); });
+        [rot, name](py::handle angle) {
+          return map_unary(angle, "angle", scalar, matrix3, name, [&](const double* in, double* out) { write_matrix(rot(*in), out); });
         },
         "angle"_a, doc);
   };
@@ -319,9 +344,10 @@ void bind_so3(py::module_& m) {
   // ------------------------------------------------------------ quaternion algebra
   m.def(
       "quat_multiply",
-      [](py::handle q1, py::handle q2, bool scalar_first) {
+      [](py::handle q1, py::handle q2, py::handle scalar_first_arg) {
+        const bool scalar_first = as_scalar_first(scalar_first_arg);
         const std::string name1 = "q1", name2 = "q2";
-        return map_binary(q1, "q1", quaternion, q2, "q2", quaternion, quaternion,
+        return map_binary(q1, "q1", quaternion, q2, "q2", quaternion, quaternion, "quat_multiply",
                           [&](const double* a, const double* b, double* out) {
                             py_io::write_quaternion(
                                 quat_multiply(checked_unit_quaternion(py_io::read_quaternion(a, scalar_first), name1),
@@ -336,9 +362,10 @@ void bind_so3(py::module_& m) {
 
   m.def(
       "quat_inverse",
-      [](py::handle q, bool scalar_first) {
+      [](py::handle q, py::handle scalar_first_arg) {
+        const bool scalar_first = as_scalar_first(scalar_first_arg);
         const std::string name = "q";
-        return map_unary(q, "q", quaternion, quaternion, [&](const double* in, double* out) {
+        return map_unary(q, "q", quaternion, quaternion, "quat_inverse", [&](const double* in, double* out) {
           py_io::write_quaternion(quat_inverse(checked_unit_quaternion(py_io::read_quaternion(in, scalar_first), name)),
                                   out, scalar_first);
         });
@@ -348,9 +375,10 @@ void bind_so3(py::module_& m) {
 
   m.def(
       "quat_normalize",
-      [](py::handle q, bool scalar_first) {
+      [](py::handle q, py::handle scalar_first_arg) {
+        const bool scalar_first = as_scalar_first(scalar_first_arg);
         const std::string name = "q";
-        return map_unary(q, "q", quaternion, quaternion, [&](const double* in, double* out) {
+        return map_unary(q, "q", quaternion, quaternion, "quat_normalize", [&](const double* in, double* out) {
           py_io::write_quaternion(quat_normalize(py_io::read_quaternion(in, scalar_first), name), out, scalar_first);
         });
       },
@@ -360,9 +388,10 @@ void bind_so3(py::module_& m) {
 
   m.def(
       "quat_rotate",
-      [](py::handle q, py::handle v, bool scalar_first) {
+      [](py::handle q, py::handle v, py::handle scalar_first_arg) {
+        const bool scalar_first = as_scalar_first(scalar_first_arg);
         const std::string name = "q";
-        return map_binary(q, "q", quaternion, v, "v", vector3, vector3, [&](const double* a, const double* b, double* out) {
+        return map_binary(q, "q", quaternion, v, "v", vector3, vector3, "quat_rotate", [&](const double* a, const double* b, double* out) {
           write_vector(quat_rotate(checked_unit_quaternion(py_io::read_quaternion(a, scalar_first), name), read_vector(b)), out);
         });
       },
@@ -373,11 +402,12 @@ void bind_so3(py::module_& m) {
 
   m.def(
       "quat_integrate",
-      [](py::handle q, py::handle w, py::handle dt, py::handle frame, bool scalar_first) {
+      [](py::handle q, py::handle w, py::handle dt, py::handle frame, py::handle scalar_first_arg) {
+        const bool scalar_first = as_scalar_first(scalar_first_arg);
         const double step = py_io::as_scalar(dt, "dt");
         const Frame f = as_frame(frame);
         const std::string name = "q";
-        return map_binary(q, "q", quaternion, w, "w", vector3, quaternion, [&](const double* a, const double* b, double* out) {
+        return map_binary(q, "q", quaternion, w, "w", vector3, quaternion, "quat_integrate", [&](const double* a, const double* b, double* out) {
           py_io::write_quaternion(
               quat_integrate(checked_unit_quaternion(py_io::read_quaternion(a, scalar_first), name), read_vector(b), step, f),
               out, scalar_first);
@@ -395,7 +425,7 @@ void bind_so3(py::module_& m) {
   m.def(
       "hat",
       [](py::handle v) {
-        return map_unary(v, "v", vector3, matrix3, [&](const double* in, double* out) { write_matrix(hat(read_vector(in)), out); });
+        return map_unary(v, "v", vector3, matrix3, "hat", [&](const double* in, double* out) { write_matrix(hat(read_vector(in)), out); });
       },
       "v"_a,
       "Skew-symmetric cross-product matrix S = hat(v), S x = v × x. v: (3,) or (n, 3); returns (3, 3) or (n, 3, 3).");
@@ -403,7 +433,7 @@ void bind_so3(py::module_& m) {
   m.def(
       "vee",
       [](py::handle S) {
-        return map_unary(S, "S", matrix3, vector3, [&](const double* in, double* out) { write_vector(vee(read_matrix(in)), out); });
+        return map_unary(S, "S", matrix3, vector3, "vee", [&](const double* in, double* out) { write_vector(vee(read_matrix(in)), out); });
       },
       "S"_a,
       "Inverse of hat: v with hat(v) = (S - S^T)/2 (a symmetric part of S is ignored).\n"

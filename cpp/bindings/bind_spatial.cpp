@@ -1,8 +1,6 @@
 // Python bindings of the spatial layer (Featherstone's spatial algebra, angular part first):
 // Motion, Force, Transform, Screw, the dense cross-product matrices, the screw of a twist, and the
 // array functions transform_compose / transform_points.
-#include <pybind11/operators.h>
-
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -33,6 +31,62 @@ std::string list_repr(const Eigen::Vector3d& v) { return py::repr(py_io::to_arra
 
 // A finite scalar factor for `motion * s` (TypeError/ValueError naming "scalar").
 double as_factor(py::handle s) { return py_io::as_scalar(s, "scalar"); }
+
+// Bound arguments of this layer's classes (TypeError naming the argument otherwise; ValueError for
+// one with a non-finite part).
+const Motion& as_motion(py::handle obj, const std::string& name) {
+  return py_io::as_finite_spatial<Motion>(obj, name, "a Motion");
+}
+const Force& as_force(py::handle obj, const std::string& name) {
+  return py_io::as_finite_spatial<Force>(obj, name, "a Force");
+}
+bool as_scalar_first(py::handle obj) { return py_io::as_bool(obj, "scalar_first"); }
+
+// Results: a RuntimeWarning naming the quantity when a part overflowed.
+template <class Spatial>  // Motion or Force
+Spatial checked(const Spatial& s, const char* quantity) {
+  py_io::warn_unless_finite(s.angular.allFinite() && s.linear.allFinite(), quantity,
+                            "[" + format_value(s.angular.transpose()) + "; " + format_value(s.linear.transpose()) + "]");
+  return s;
+}
+Transform checked(const Transform& X, const char* quantity) {
+  py_io::warn_unless_finite(X.rotation().allFinite() && X.translation().allFinite(), quantity,
+                            "translation " + format_value(X.translation().transpose()));
+  return X;
+}
+
+// A binary operator a (op) b of two objects of the bound class T, checked; NotImplemented for any
+// other b (so Python raises its TypeError, or tries b's reflected operator).
+template <class T, class Op>
+py::object binary_operator(const T& a, py::handle b, const char* quantity, Op op) {
+  if (!py::isinstance<T>(b)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
+  return py::cast(checked(op(a, b.cast<const T&>()), quantity));
+}
+
+// + - (binary and unary) and scalar * of a Motion or Force, each result checked.
+template <class Spatial>
+void bind_linear_operators(py::class_<Spatial>& c, const std::string& type) {
+  const std::string sum = type + ".__add__", difference = type + ".__sub__", product = type + ".__mul__";
+  c.def(
+       "__add__",
+       [sum](const Spatial& a, py::handle b) {
+         return binary_operator(a, b, sum.c_str(), [](const Spatial& x, const Spatial& y) { return x + y; });
+       },
+       py::is_operator())
+      .def(
+          "__sub__",
+          [difference](const Spatial& a, py::handle b) {
+            return binary_operator(a, b, difference.c_str(), [](const Spatial& x, const Spatial& y) { return x - y; });
+          },
+          py::is_operator())
+      .def("__neg__", [](const Spatial& a) { return -a; }, py::is_operator())
+      .def(
+          "__mul__", [product](const Spatial& a, py::handle k) { return checked(a * as_factor(k), product.c_str()); },
+          py::is_operator())
+      .def(
+          "__rmul__", [product](const Spatial& a, py::handle k) { return checked(a * as_factor(k), product.c_str()); },
+          py::is_operator());
+}
 
 // Stacks that are one item (broadcast) or n items: the common n; ValueError naming the argument
 // whose length differs from the first stacked one.
@@ -103,7 +157,7 @@ py::tuple transform_compose(py::handle R_AB_obj, py::handle p_AB_obj, py::handle
       {&R_AB, "R_AB"}, {&p_AB, "p_AB"}, {&R_BC, "R_BC"}, {&p_BC, "p_BC"}};
   const py::ssize_t n = common_count(all);
   const bool stacked = any_stacked(all);
-  Array R_AC = py_io::new_stack(n, stacked, {3, 3}), p_AC = py_io::new_stack(n, stacked, {3});
+  Array R_AC = py_io::new_stack(n, stacked, {3, 3}, "R_AC"), p_AC = py_io::new_stack(n, stacked, {3}, "p_AC");
   double* R_out = R_AC.mutable_data();
   double* p_out = p_AC.mutable_data();
   {
@@ -115,7 +169,8 @@ py::tuple transform_compose(py::handle R_AB_obj, py::handle p_AB_obj, py::handle
       Eigen::Map<Eigen::Vector3d>(p_out + 3 * i).noalias() = R_ab * vector_item(p_BC, i) + vector_item(p_AB, i);
     }
   }
-  return py::make_tuple(R_AC, p_AC);
+  // R_AC is a product of checked rotations (bounded); p_AC may overflow
+  return py::make_tuple(R_AC, py_io::finite_result(p_AC, "transform_compose p_AC"));
 }
 
 // transform_points: p_A = R_AB p_B + p_AB item by item, as Transform::act_point.
@@ -124,7 +179,7 @@ Array transform_points(py::handle R_AB_obj, py::handle p_AB_obj, py::handle p_B_
   const Stack p_B = py_io::as_stack(p_B_obj, "p_B", {3});
   const std::vector<std::pair<const Stack*, const char*>> all = {{&R_AB, "R_AB"}, {&p_AB, "p_AB"}, {&p_B, "p_B"}};
   const py::ssize_t n = common_count(all);
-  Array p_A = py_io::new_stack(n, any_stacked(all), {3});
+  Array p_A = py_io::new_stack(n, any_stacked(all), {3}, "p_A");
   double* out = p_A.mutable_data();
   {
     py::gil_scoped_release release;
@@ -132,31 +187,30 @@ Array transform_points(py::handle R_AB_obj, py::handle p_AB_obj, py::handle p_B_
     for (py::ssize_t i = 0; i < n; ++i)
       Eigen::Map<Eigen::Vector3d>(out + 3 * i).noalias() = rotations_AB[i] * vector_item(p_B, i) + vector_item(p_AB, i);
   }
-  return p_A;
+  return py_io::finite_result(p_A, "transform_points");
 }
 
 // A point map (act_point / act_inv_point) over one point (3,) or a stack (n, 3).
 template <typename Map>
-Array map_points(py::handle points_obj, const char* name, Map&& map) {
+Array map_points(py::handle points_obj, const char* name, const char* quantity, Map&& map) {
   const Stack points = py_io::as_stack(points_obj, name, {3});
-  Array out = py_io::new_stack(points.n, points.stacked, {3});
+  Array out = py_io::new_stack(points.n, points.stacked, {3}, quantity);
   double* p = out.mutable_data();
   {
     py::gil_scoped_release release;
     for (py::ssize_t i = 0; i < points.n; ++i) Eigen::Map<Eigen::Vector3d>(p + 3 * i) = map(vector_item(points, i));
   }
-  return out;
+  return py_io::finite_result(out, quantity);
 }
 
 void bind_motion(py::module_& m) {
-  py::class_<Motion>(m, "Motion",
-                     "Spatial motion vector (twist) [w; v], angular part first: w angular velocity [rad/s], v\n"
-                     "velocity [m/s] of the body point at the origin of the frame of expression.")
-      .def(py::init<>(), "The zero motion.")
-      .def(py::init([](py::handle angular, py::handle linear) {
-             return Motion(py_io::as_vector3(angular, "angular"), py_io::as_vector3(linear, "linear"));
-           }),
-           "angular"_a, "linear"_a, "Motion from w (3,) [rad/s] and v (3,) [m/s].")
+  py::class_<Motion> c(m, "Motion",
+                       "Spatial motion vector (twist) [w; v], angular part first: w angular velocity [rad/s], v\n"
+                       "velocity [m/s] of the body point at the origin of the frame of expression.");
+  c.def(py::init([](py::handle angular, py::handle linear) {
+         return Motion(py_io::as_vector3_or_zero(angular, "angular"), py_io::as_vector3_or_zero(linear, "linear"));
+       }),
+       "angular"_a = py::none(), "linear"_a = py::none(), "Motion from w (3,) [rad/s] and v (3,) [m/s] (None: zero).")
       .def_property_readonly("angular", [](const Motion& s) { return read_only(s.angular); },
                              "w (3,) [rad/s], read-only copy")
       .def_property_readonly("linear", [](const Motion& s) { return read_only(s.linear); },
@@ -164,67 +218,66 @@ void bind_motion(py::module_& m) {
       .def("to_vector", [](const Motion& s) { return py_io::to_array(s.to_vector()); }, "[w; v] as a (6,) array.")
       .def_static("from_vector", [](py::handle v) { return Motion::from_vector(py_io::as_vector6(v, "vector")); },
                   "vector"_a, "Motion from a (6,) array [w; v].")
-      .def(py::self + py::self)
-      .def(py::self - py::self)
-      .def(-py::self)
-      .def("__mul__", [](const Motion& s, py::handle k) { return s * as_factor(k); }, py::is_operator())
-      .def("__rmul__", [](const Motion& s, py::handle k) { return s * as_factor(k); }, py::is_operator())
-      .def("cross", py::overload_cast<const Motion&>(&Motion::cross, py::const_), "other"_a,
-           "Motion cross product (crm): self x other = [w1 x w2; w1 x v2 + v1 x w2].")
-      .def("cross_force", py::overload_cast<const Force&>(&Motion::cross, py::const_), "f"_a,
-           "Force cross product (crf): self x* f = [w x n + v x f; w x f].")
-      .def("dot", py::overload_cast<const Force&>(&Motion::dot, py::const_), "f"_a,
-           "Power w . n + v . f [W] of the force f on this motion (same frame and reference point).")
+      .def(
+          "cross", [](const Motion& s, py::handle other) { return checked(s.cross(as_motion(other, "other")), "Motion.cross"); },
+          "other"_a, "Motion cross product (crm): self x other = [w1 x w2; w1 x v2 + v1 x w2].")
+      .def(
+          "cross_force",
+          [](const Motion& s, py::handle f) { return checked(s.cross(as_force(f, "f")), "Motion.cross_force"); }, "f"_a,
+          "Force cross product (crf): self x* f = [w x n + v x f; w x f].")
+      .def(
+          "dot", [](const Motion& s, py::handle f) { return py_io::finite_result(s.dot(as_force(f, "f")), "Motion.dot"); },
+          "f"_a, "Power w . n + v . f [W] of the force f on this motion (same frame and reference point).")
       .def("__repr__", [](const Motion& s) {
         return "Motion(angular=" + list_repr(s.angular) + ", linear=" + list_repr(s.linear) + ")";
       });
+  bind_linear_operators(c, "Motion");
 }
 
 void bind_force(py::module_& m) {
-  py::class_<Force>(m, "Force",
-                    "Spatial force vector (wrench) [n; f], angular part first: n moment [N m] about the\n"
-                    "origin of the frame of expression, f force [N].")
-      .def(py::init<>(), "The zero force.")
-      .def(py::init([](py::handle angular, py::handle linear) {
-             return Force(py_io::as_vector3(angular, "angular"), py_io::as_vector3(linear, "linear"));
-           }),
-           "angular"_a, "linear"_a, "Force from n (3,) [N m] and f (3,) [N].")
+  py::class_<Force> c(m, "Force",
+                      "Spatial force vector (wrench) [n; f], angular part first: n moment [N m] about the\n"
+                      "origin of the frame of expression, f force [N].");
+  c.def(py::init([](py::handle angular, py::handle linear) {
+         return Force(py_io::as_vector3_or_zero(angular, "angular"), py_io::as_vector3_or_zero(linear, "linear"));
+       }),
+       "angular"_a = py::none(), "linear"_a = py::none(), "Force from n (3,) [N m] and f (3,) [N] (None: zero).")
       .def_property_readonly("angular", [](const Force& s) { return read_only(s.angular); },
                              "n (3,) [N m] about the frame's origin, read-only copy")
       .def_property_readonly("linear", [](const Force& s) { return read_only(s.linear); }, "f (3,) [N], read-only copy")
       .def("to_vector", [](const Force& s) { return py_io::to_array(s.to_vector()); }, "[n; f] as a (6,) array.")
       .def_static("from_vector", [](py::handle v) { return Force::from_vector(py_io::as_vector6(v, "vector")); },
                   "vector"_a, "Force from a (6,) array [n; f].")
-      .def(py::self + py::self)
-      .def(py::self - py::self)
-      .def(-py::self)
-      .def("__mul__", [](const Force& s, py::handle k) { return s * as_factor(k); }, py::is_operator())
-      .def("__rmul__", [](const Force& s, py::handle k) { return s * as_factor(k); }, py::is_operator())
       .def("__repr__", [](const Force& s) {
         return "Force(angular=" + list_repr(s.angular) + ", linear=" + list_repr(s.linear) + ")";
       });
+  bind_linear_operators(c, "Force");
+}
+
+// A Transform's action on a Motion or a Force (TypeError naming spatial_vector otherwise), checked.
+template <class Act>
+py::object act_on(py::handle spatial_vector, const char* quantity, Act act) {
+  if (py::isinstance<Motion>(spatial_vector)) return py::cast(checked(act(as_motion(spatial_vector, "spatial_vector")), quantity));
+  if (py::isinstance<Force>(spatial_vector)) return py::cast(checked(act(as_force(spatial_vector, "spatial_vector")), quantity));
+  py_io::throw_type_error("spatial_vector", "a Motion or a Force", spatial_vector);
 }
 
 void bind_transform(py::module_& m) {
   py::class_<Transform>(m, "Transform",
                         "Rigid transform X_AB: R_AB (B coordinates -> A coordinates) and p_AB (B's origin in A)\n"
                         "[m]. Maps points, motions and forces expressed in B to A; X_AB * X_BC = X_AC.")
-      .def(py::init([](py::object rotation, py::object translation) {
-             const Eigen::Matrix3d R =
-                 rotation.is_none() ? Eigen::Matrix3d::Identity() : py_io::as_matrix3(rotation, "rotation");
-             const Eigen::Vector3d p =
-                 translation.is_none() ? Eigen::Vector3d::Zero() : py_io::as_vector3(translation, "translation");
-             return Transform(R, p);
+      .def(py::init([](py::handle rotation, py::handle translation) {
+             return Transform(py_io::as_matrix3_or_identity(rotation, "rotation"),
+                              py_io::as_vector3_or_zero(translation, "translation"));
            }),
            "rotation"_a = py::none(), "translation"_a = py::none(),
            "X_AB from rotation R_AB (3,3), orthonormal with det +1 (default identity), and translation\n"
            "p_AB (3,) [m] (default zero). ValueError on a non-rotation or non-finite input.")
       .def_static(
           "from_quat",
-          [](py::handle q, py::object translation, bool scalar_first) {
-            const Eigen::Vector3d p =
-                translation.is_none() ? Eigen::Vector3d::Zero() : py_io::as_vector3(translation, "translation");
-            return Transform::from_quat(py_io::as_quaternion(q, "q_AB", scalar_first), p);
+          [](py::handle q, py::handle translation, py::handle scalar_first) {
+            const Eigen::Quaterniond q_AB = py_io::as_quaternion(q, "q_AB", as_scalar_first(scalar_first));
+            return Transform::from_quat(q_AB, py_io::as_vector3_or_zero(translation, "translation"));
           },
           "q_AB"_a, "translation"_a = py::none(), "scalar_first"_a = false,
           "X_AB from the unit quaternion q_AB (4,) ((x, y, z, w), or (w, x, y, z) if scalar_first) and\n"
@@ -234,33 +287,47 @@ void bind_transform(py::module_& m) {
       .def_property_readonly("translation", [](const Transform& X) { return read_only(X.translation()); },
                              "p_AB (3,) [m], read-only copy")
       .def(
-          "quat", [](const Transform& X, bool scalar_first) { return py_io::to_array(X.quat(), scalar_first); },
+          "quat",
+          [](const Transform& X, py::handle scalar_first) { return py_io::to_array(X.quat(), as_scalar_first(scalar_first)); },
           "scalar_first"_a = false, "q_AB (4,) with w >= 0, (x, y, z, w) or (w, x, y, z) if scalar_first.")
       .def(
           "act_point",
           [](const Transform& X, py::handle p_B) {
-            return map_points(p_B, "p_B", [&X](const Eigen::Vector3d& p) { return X.act_point(p); });
+            return map_points(p_B, "p_B", "Transform.act_point", [&X](const Eigen::Vector3d& p) { return X.act_point(p); });
           },
           "p_B"_a, "p_A = R_AB p_B + p_AB for points p_B (3,) or (n, 3) [m].")
       .def(
           "act_inv_point",
           [](const Transform& X, py::handle p_A) {
-            return map_points(p_A, "p_A", [&X](const Eigen::Vector3d& p) { return X.act_inv_point(p); });
+            return map_points(p_A, "p_A", "Transform.act_inv_point",
+                              [&X](const Eigen::Vector3d& p) { return X.act_inv_point(p); });
           },
           "p_A"_a, "p_B = R_AB^T (p_A - p_AB) for points p_A (3,) or (n, 3) [m].")
-      .def("act", py::overload_cast<const Motion&>(&Transform::act, py::const_), "m"_a,
-           "Motion in B -> in A: [R w; R v + p x (R w)].")
-      .def("act", py::overload_cast<const Force&>(&Transform::act, py::const_), "f"_a,
-           "Force in B -> in A: [R n + p x (R f); R f].")
-      .def("act_inv", py::overload_cast<const Motion&>(&Transform::act_inv, py::const_), "m"_a,
-           "Motion in A -> in B: [R^T w; R^T (v - p x w)].")
-      .def("act_inv", py::overload_cast<const Force&>(&Transform::act_inv, py::const_), "f"_a,
-           "Force in A -> in B: [R^T (n - p x f); R^T f].")
-      .def(py::self * py::self, "X_AB * X_BC = X_AC.")
-      .def("inverse", &Transform::inverse, "X_BA = X_AB^-1.")
-      .def("motion_matrix", [](const Transform& X) { return py_io::to_array(X.motion_matrix()); },
+      .def(
+          "act",
+          [](const Transform& X, py::handle spatial_vector) {
+            return act_on(spatial_vector, "Transform.act", [&X](const auto& v) { return X.act(v); });
+          },
+          "spatial_vector"_a,
+          "A Motion in B -> in A: [R w; R v + p x (R w)]; a Force in B -> in A: [R n + p x (R f); R f].")
+      .def(
+          "act_inv",
+          [](const Transform& X, py::handle spatial_vector) {
+            return act_on(spatial_vector, "Transform.act_inv", [&X](const auto& v) { return X.act_inv(v); });
+          },
+          "spatial_vector"_a,
+          "A Motion in A -> in B: [R^T w; R^T (v - p x w)]; a Force in A -> in B: [R^T (n - p x f); R^T f].")
+      .def(
+          "__mul__",
+          [](const Transform& X_AB, py::handle X_BC) {
+            return binary_operator(X_AB, X_BC, "Transform.__mul__",
+                                   [](const Transform& a, const Transform& b) { return a * b; });
+          },
+          py::is_operator(), "X_AB * X_BC = X_AC.")
+      .def("inverse", [](const Transform& X) { return checked(X.inverse(), "Transform.inverse"); }, "X_BA = X_AB^-1.")
+      .def("motion_matrix", [](const Transform& X) { return py_io::finite_result(X.motion_matrix(), "Transform.motion_matrix"); },
            "Featherstone's X (6,6), angular first: [[R, 0], [hat(p) R, R]].")
-      .def("force_matrix", [](const Transform& X) { return py_io::to_array(X.force_matrix()); },
+      .def("force_matrix", [](const Transform& X) { return py_io::finite_result(X.force_matrix(), "Transform.force_matrix"); },
            "Featherstone's X* (6,6) = X^-T: [[R, hat(p) R], [0, R]].")
       .def("__repr__", [](const Transform& X) {
         return "Transform(rotation=" + std::string(py::repr(py_io::to_array(X.rotation()).attr("tolist")())) +
@@ -273,9 +340,9 @@ void bind_screw(py::module_& m) {
                     "Screw of a twist (instantaneous screw axis): unit direction, point of the axis closest to\n"
                     "the origin [m], pitch [m/rad] (inf for a pure translation) and magnitude (|w| [rad/s], or\n"
                     "|v| [m/s] for a pure translation), all in the twist's frame.")
-      .def(py::init([](py::handle direction, py::handle point, double pitch, double magnitude) {
-             return Screw{py_io::as_vector3(direction, "direction"), py_io::as_vector3(point, "point"), pitch,
-                          magnitude};
+      .def(py::init([](py::handle direction, py::handle point, py::handle pitch, py::handle magnitude) {
+             return Screw{py_io::as_vector3(direction, "direction"), py_io::as_vector3(point, "point"),
+                          py_io::as_extended_real(pitch, "pitch"), py_io::as_scalar(magnitude, "magnitude")};
            }),
            "direction"_a, "point"_a, "pitch"_a, "magnitude"_a,
            "Screw from its parts (checked by screw_to_twist): direction (3,) unit, point (3,) [m], pitch [m/rad]\n"
@@ -290,11 +357,17 @@ void bind_screw(py::module_& m) {
                ", pitch=" + std::string(py::repr(py::float_(s.pitch))) +
                ", magnitude=" + std::string(py::repr(py::float_(s.magnitude))) + ")";
       });
-  m.def("twist_to_screw", &twist_to_screw, "twist"_a,
+  m.def(
+      "twist_to_screw", [](py::handle twist) { return twist_to_screw(as_motion(twist, "twist")); }, "twist"_a,
         "The screw (instantaneous screw axis) of a twist [w; v]: direction w/|w|, point (w x v)/|w|^2,\n"
         "pitch (w . v)/|w|^2, magnitude |w|; for w = 0: pitch inf, direction v/|v|, point 0, magnitude |v|.\n"
         "ValueError for the zero twist (no axis).");
-  m.def("screw_to_twist", &screw_to_twist, "screw"_a,
+  m.def(
+      "screw_to_twist",
+      [](py::handle screw) {
+        return checked(screw_to_twist(py_io::as_instance<Screw>(screw, "screw", "a Screw")), "screw_to_twist");
+      },
+      "screw"_a,
         "The twist of a screw: w = magnitude direction, v = magnitude (point x direction + pitch direction)\n"
         "(v = magnitude direction for pitch inf).");
 }
@@ -306,12 +379,16 @@ void bind_spatial(py::module_& m) {
   bind_motion(m);
   // Force.dot names Motion in its signature, so it is added once Motion is registered.
   py::reinterpret_borrow<py::class_<Force>>(m.attr("Force"))
-      .def("dot", &Force::dot, "m"_a, "Power w . n + v . f [W] of this force on the motion m.");
+      .def(
+          "dot", [](const Force& f, py::handle m) { return py_io::finite_result(f.dot(as_motion(m, "m")), "Force.dot"); },
+          "m"_a, "Power w . n + v . f [W] of this force on the motion m.");
   bind_transform(m);
   bind_screw(m);
-  m.def("motion_cross_matrix", [](const Motion& v) { return py_io::to_array(motion_cross_matrix(v)); }, "m"_a,
+  m.def(
+      "motion_cross_matrix", [](py::handle v) { return py_io::to_array(motion_cross_matrix(as_motion(v, "m"))); }, "m"_a,
         "crm(m) (6,6) = [[hat(w), 0], [hat(v), hat(w)]], so crm(m) m2 = m x m2.");
-  m.def("force_cross_matrix", [](const Motion& v) { return py_io::to_array(force_cross_matrix(v)); }, "m"_a,
+  m.def(
+      "force_cross_matrix", [](py::handle v) { return py_io::to_array(force_cross_matrix(as_motion(v, "m"))); }, "m"_a,
         "crf(m) (6,6) = [[hat(w), hat(v)], [0, hat(w)]] = -crm(m)^T, so crf(m) f = m x* f.");
   m.def("transform_compose", &transform_compose, "R_AB"_a, "p_AB"_a, "R_BC"_a, "p_BC"_a,
         "X_AC = X_AB * X_BC item by item: R_AC = R_AB R_BC, p_AC = R_AB p_BC + p_AB. Rotations (3,3) or\n"

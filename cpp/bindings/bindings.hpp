@@ -7,6 +7,7 @@ void bind_so3(pybind11::module_& m);
 void bind_frames(pybind11::module_& m);
 void bind_spatial(pybind11::module_& m);
 void bind_inertia(pybind11::module_& m);
+void bind_bodies(pybind11::module_& m);
 void bind_dynamics(pybind11::module_& m);
 void bind_exact(pybind11::module_& m);
 }  // namespace rigiddyn::bindings

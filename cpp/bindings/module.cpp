@@ -9,6 +9,7 @@ PYBIND11_MODULE(_core, m) {
   rigiddyn::bindings::bind_frames(m);
   rigiddyn::bindings::bind_spatial(m);
   rigiddyn::bindings::bind_inertia(m);
+  rigiddyn::bindings::bind_bodies(m);
   rigiddyn::bindings::bind_dynamics(m);
   rigiddyn::bindings::bind_exact(m);
 }

@@ -15,7 +15,8 @@ def main(argv: list[str] | None = None) -> int:
     sub.add_parser("version", help="print the library version")
     sub.add_parser(
         "worked-example",
-        help="compute seed 001's shaft-and-disk example with the library and print it beside the seed's answer",
+        help="compute the shaft-and-disk example of K. Craig's \"Rigid Body Dynamics\" slides with the library and "
+        "print it beside the slides' answer",
     )
     _add_tradeoff_parser(sub)
     args = parser.parse_args(argv)
@@ -24,9 +25,9 @@ def main(argv: list[str] | None = None) -> int:
 
         print(rigiddyn.__version__)
     elif args.command == "worked-example":
-        from rigiddyn.worked_example import format_worked_example, seed_worked_example
+        from rigiddyn.worked_example import format_worked_example, textbook_worked_example
 
-        result = seed_worked_example()
+        result = textbook_worked_example()
         print(format_worked_example(result))
         return 0 if result["max_error"] <= 1e-12 else 1
     elif args.command == "tradeoff":
@@ -59,7 +60,8 @@ def _add_tradeoff_parser(sub: "argparse._SubParsersAction[argparse.ArgumentParse
     p.add_argument("--measure", help="error measure (default: the file's, else final_attitude_error)")
     p.add_argument("--cost", choices=("time", "evaluations"), default="time", help="cost to minimise")
     p.add_argument("--out", help="folder for tradeoff.csv, tradeoff.json, tradeoff.png, tradeoff.svg")
-    p.add_argument("--no-progress", action="store_true", help="no progress bar")
+    p.add_argument("--no-progress", action="store_true",
+                   help="no cost estimate and no progress bar on stderr (the bar shows only on a terminal)")
 
 
 def _show_warning(message: Warning | str, category: type[Warning], filename: str, lineno: int,
@@ -79,9 +81,12 @@ def _run_tradeoff(args: argparse.Namespace) -> int:
             result = tradeoff(args.problem, methods=args.methods, dts=args.dts, horizon=args.horizon,
                               tolerance=args.tolerance, measure=args.measure, cost=args.cost,
                               progress=not args.no_progress)
-    except ValueError as e:
+    except (ValueError, TypeError) as e:
         print(f"rigiddyn tradeoff: {e}", file=sys.stderr)
         return 2
+    except KeyboardInterrupt:
+        print("rigiddyn tradeoff: interrupted", file=sys.stderr)
+        return 130
     print(result.to_table())
     if args.out:
         out = Path(args.out)

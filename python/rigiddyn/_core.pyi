@@ -2,7 +2,6 @@
 rigiddyn's C++ core (rotations, frames, spatial algebra, inertia, dynamics).
 """
 from __future__ import annotations
-import collections.abc
 import numpy
 import numpy.typing
 import typing
@@ -49,8 +48,8 @@ class FrameKinematics:
 class PointVelocity:
     """
     Velocity of a point Q moving in a frame F, seen from a frame A, term by term
-    (seed 000 (4.38)): total = origin + rotational + relative. Each (3,) [m/s], all
-    expressed in the same frame (the query's `expressed_in`).
+    ("Rigid body kinematics and dynamics" notes (4.38)): total = origin + rotational +
+    relative. Each (3,) [m/s], all expressed in the same frame (the query's `expressed_in`).
     """
     def __repr__(self) -> str:
         ...
@@ -77,8 +76,9 @@ class PointVelocity:
 class PointAcceleration:
     """
     Acceleration of a point Q moving in a frame F, seen from a frame A, term by term
-    (seed 000 (4.39), seed 001): total = origin + tangential + centripetal + relative +
-    coriolis. Each (3,) [m/s^2], all expressed in the query's `expressed_in` frame.
+    ("Rigid body kinematics and dynamics" notes (4.39); Craig's "Rigid Body Dynamics"
+    slides): total = origin + tangential + centripetal + relative + coriolis. Each (3,)
+    [m/s^2], all expressed in the query's `expressed_in` frame.
     """
     def __repr__(self) -> str:
         ...
@@ -118,50 +118,52 @@ class FrameMotion:
     FrameKinematics (all vectors expressed in P).
     """
     @staticmethod
-    def constant_rotation(axis_P: typing.Any, rate: typing.SupportsFloat | typing.SupportsIndex, R_PF0: typing.Any = None, p_PF_P: typing.Any = None) -> FrameMotion:
+    def constant_rotation(axis_P: typing.Any, rate: typing.Any, R_PF0: typing.Any = None, p_PF_P: typing.Any = None) -> FrameMotion:
         """
-        Simple angular velocity (seed 001): F turns at `rate` [rad/s] about axis_P (3,) (expressed in P, any
-        non-zero length) through F's origin, which stays at p_PF_P [m] in P (None: 0).
-        R_PF(t) = exp(hat(rate t axis_P/|axis_P|)) R_PF0 (R_PF0: orientation at t = 0, None: identity).
+        Simple angular velocity (Craig's "Rigid Body Dynamics" slides): F turns at `rate` [rad/s] about
+        axis_P (3,) (expressed in P, any non-zero length) through F's origin, which stays at p_PF_P [m] in P
+        (None: 0). R_PF(t) = exp(hat(rate t axis_P/|axis_P|)) R_PF0 (R_PF0: orientation at t = 0, None:
+        identity).
         """
     @staticmethod
     def fixed(R_PF: typing.Any = None, p_PF_P: typing.Any = None) -> FrameMotion:
         """
         F fixed in P: orientation R_PF (3,3) (None: identity), origin at p_PF_P (3,) [m] in P (None: 0).
         """
-    def __init__(self, kinematics_at: collections.abc.Callable) -> None:
+    def __init__(self, kinematics_at: typing.Any) -> None:
         """
         General motion: kinematics_at(t) returns a FrameKinematics or a 6-tuple
         (R_PF (3,3), w_PF_P, alpha_PF_P, p_PF_P, v_PF_P, a_PF_P) (each (3,), expressed in P). The caller
         keeps them consistent (w, alpha the derivatives of R; v, a those of p); the tree checks each value
         (finite, R_PF a rotation) and raises ValueError naming the frame.
         """
-    def at(self, t: typing.SupportsFloat | typing.SupportsIndex) -> FrameKinematics:
+    def at(self, t: typing.Any) -> FrameKinematics:
         """
-        F relative to P at time t [s] (unchecked).
+        F relative to P at time t [s] (not checked: the tree checks the values it uses).
         """
 class FrameTree:
     """
     A tree of reference frames rooted at the inertial frame 'world'. Each frame is placed
     relative to its parent by a FrameMotion. Queries relate any frame F (`frame`) to any
     frame A (`relative_to`) at time t [s], with results expressed in `expressed_in` E.
-    Unknown names, duplicates and cycles raise ValueError.
+    Unknown names, duplicates and cycles raise ValueError. Trees of any depth (every walk
+    is iterative).
     """
     world: typing.ClassVar[str] = 'world'
     def __init__(self) -> None:
         """
         A tree holding only 'world'.
         """
-    def add_frame(self, name: str, parent: str, motion: FrameMotion) -> None:
+    def add_frame(self, name: typing.Any, parent: typing.Any, motion: typing.Any) -> None:
         """
         Adds frame `name` under `parent` (which must exist), placed by `motion`.
         """
-    def angular_acceleration(self, frame: str, relative_to: str, expressed_in: str, t: typing.SupportsFloat | typing.SupportsIndex) -> numpy.typing.NDArray[numpy.float64]:
+    def angular_acceleration(self, frame: typing.Any, relative_to: typing.Any, expressed_in: typing.Any, t: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
         """
         alpha_AF_E (3,) [rad/s^2]: d/dt in A of w_AF, expressed in E (includes the w x w terms; no
-        addition theorem for angular accelerations, seed 001).
+        addition theorem for angular accelerations, Craig's "Rigid Body Dynamics" slides).
         """
-    def angular_velocity(self, frame: str, relative_to: str, expressed_in: str, t: typing.SupportsFloat | typing.SupportsIndex) -> numpy.typing.NDArray[numpy.float64]:
+    def angular_velocity(self, frame: typing.Any, relative_to: typing.Any, expressed_in: typing.Any, t: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
         """
         w_AF_E (3,) [rad/s]: angular velocity of F relative to A (addition theorem), expressed in E.
         """
@@ -169,44 +171,47 @@ class FrameTree:
         """
         All names: 'world' first, then in the order added.
         """
-    def has_frame(self, name: str) -> bool:
-        ...
-    def kinematics(self, frame: str, relative_to: str, t: typing.SupportsFloat | typing.SupportsIndex) -> FrameKinematics:
+    def has_frame(self, name: typing.Any) -> bool:
+        """
+        True if a frame of this name is in the tree.
+        """
+    def kinematics(self, frame: typing.Any, relative_to: typing.Any, t: typing.Any) -> FrameKinematics:
         """
         FrameKinematics of `frame` F relative to `relative_to` A at t, expressed in A.
         """
-    def parent(self, name: str) -> str:
+    def parent(self, name: typing.Any) -> str:
         """
         The parent's name ('' for 'world').
         """
-    def point_acceleration(self, frame: str, p_FQ_F: typing.Any, v_FQ_F: typing.Any, a_FQ_F: typing.Any, relative_to: str, expressed_in: str, t: typing.SupportsFloat | typing.SupportsIndex) -> PointAcceleration:
+    def point_acceleration(self, frame: typing.Any, p_FQ_F: typing.Any, v_FQ_F: typing.Any, a_FQ_F: typing.Any, relative_to: typing.Any, expressed_in: typing.Any, t: typing.Any) -> PointAcceleration:
         """
         PointAcceleration of Q seen from A (origin, tangential, centripetal, relative, coriolis, total),
         terms expressed in E [m/s^2]; a_FQ_F (3,): Q's acceleration seen from F, expressed in F.
         """
-    def point_position(self, frame: str, p_FQ_F: typing.Any, relative_to: str, expressed_in: str, t: typing.SupportsFloat | typing.SupportsIndex) -> numpy.typing.NDArray[numpy.float64]:
+    def point_position(self, frame: typing.Any, p_FQ_F: typing.Any, relative_to: typing.Any, expressed_in: typing.Any, t: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
         """
         p_AQ_E (3,) [m]: position of Q relative to A's origin, expressed in E; p_FQ_F (3,): Q relative
         to F's origin, expressed in F.
         """
-    def point_velocity(self, frame: str, p_FQ_F: typing.Any, v_FQ_F: typing.Any, relative_to: str, expressed_in: str, t: typing.SupportsFloat | typing.SupportsIndex) -> PointVelocity:
+    def point_velocity(self, frame: typing.Any, p_FQ_F: typing.Any, v_FQ_F: typing.Any, relative_to: typing.Any, expressed_in: typing.Any, t: typing.Any) -> PointVelocity:
         """
         PointVelocity of Q seen from A, terms expressed in E. Q at p_FQ_F [m] moving with v_FQ_F [m/s] as
         seen from F (both (3,), expressed in F; zeros for a point fixed in F).
         """
-    def rotation(self, frame: str, relative_to: str, t: typing.SupportsFloat | typing.SupportsIndex) -> numpy.typing.NDArray[numpy.float64]:
+    def rotation(self, frame: typing.Any, relative_to: typing.Any, t: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
         """
         R_AF (3,3): maps `frame` F coordinates to `relative_to` A coordinates at t.
         """
-    def set_parent(self, name: str, parent: str, motion: FrameMotion) -> None:
+    def set_parent(self, name: typing.Any, parent: typing.Any, motion: typing.Any) -> None:
         """
         Moves frame `name` and its subtree under `parent`, placed by `motion`. ValueError if that would
         make a cycle (parent is `name` or one of its descendants) or `name` is 'world'.
         """
-    def transport_derivative(self, u_E: typing.Any, du_B_E: typing.Any, from_frame: str, to_frame: str, expressed_in: str, t: typing.SupportsFloat | typing.SupportsIndex) -> numpy.typing.NDArray[numpy.float64]:
+    def transport_derivative(self, u_E: typing.Any, du_B_E: typing.Any, from_frame: typing.Any, to_frame: typing.Any, expressed_in: typing.Any, t: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
         """
-        Transport theorem (seed 001): the derivative of u seen from A = `to_frame`, from its derivative
-        du_B_E seen from B = `from_frame`: du_B_E + w_AB x u_E. u_E, du_B_E and the result (3,) in E.
+        Transport theorem (Craig's "Rigid Body Dynamics" slides): the derivative of u seen from
+        A = `to_frame`, from its derivative du_B_E seen from B = `from_frame`: du_B_E + w_AB x u_E. u_E,
+        du_B_E and the result (3,) in E.
         """
 class Force:
     """
@@ -218,17 +223,11 @@ class Force:
         """
         Force from a (6,) array [n; f].
         """
-    def __add__(self, arg0: Force) -> Force:
+    def __add__(self, arg0: typing.Any) -> typing.Any:
         ...
-    @typing.overload
-    def __init__(self) -> None:
+    def __init__(self, angular: typing.Any = None, linear: typing.Any = None) -> None:
         """
-        The zero force.
-        """
-    @typing.overload
-    def __init__(self, angular: typing.Any, linear: typing.Any) -> None:
-        """
-        Force from n (3,) [N m] and f (3,) [N].
+        Force from n (3,) [N m] and f (3,) [N] (None: zero).
         """
     def __mul__(self, arg0: typing.Any) -> Force:
         ...
@@ -238,9 +237,9 @@ class Force:
         ...
     def __rmul__(self, arg0: typing.Any) -> Force:
         ...
-    def __sub__(self, arg0: Force) -> Force:
+    def __sub__(self, arg0: typing.Any) -> typing.Any:
         ...
-    def dot(self, m: Motion) -> float:
+    def dot(self, m: typing.Any) -> float:
         """
         Power w . n + v . f [W] of this force on the motion m.
         """
@@ -268,17 +267,11 @@ class Motion:
         """
         Motion from a (6,) array [w; v].
         """
-    def __add__(self, arg0: Motion) -> Motion:
+    def __add__(self, arg0: typing.Any) -> typing.Any:
         ...
-    @typing.overload
-    def __init__(self) -> None:
+    def __init__(self, angular: typing.Any = None, linear: typing.Any = None) -> None:
         """
-        The zero motion.
-        """
-    @typing.overload
-    def __init__(self, angular: typing.Any, linear: typing.Any) -> None:
-        """
-        Motion from w (3,) [rad/s] and v (3,) [m/s].
+        Motion from w (3,) [rad/s] and v (3,) [m/s] (None: zero).
         """
     def __mul__(self, arg0: typing.Any) -> Motion:
         ...
@@ -288,17 +281,17 @@ class Motion:
         ...
     def __rmul__(self, arg0: typing.Any) -> Motion:
         ...
-    def __sub__(self, arg0: Motion) -> Motion:
+    def __sub__(self, arg0: typing.Any) -> typing.Any:
         ...
-    def cross(self, other: Motion) -> Motion:
+    def cross(self, other: typing.Any) -> Motion:
         """
         Motion cross product (crm): self x other = [w1 x w2; w1 x v2 + v1 x w2].
         """
-    def cross_force(self, f: Force) -> Force:
+    def cross_force(self, f: typing.Any) -> Force:
         """
         Force cross product (crf): self x* f = [w x n + v x f; w x f].
         """
-    def dot(self, f: Force) -> float:
+    def dot(self, f: typing.Any) -> float:
         """
         Power w . n + v . f [W] of the force f on this motion (same frame and reference point).
         """
@@ -322,7 +315,7 @@ class Transform:
     [m]. Maps points, motions and forces expressed in B to A; X_AB * X_BC = X_AC.
     """
     @staticmethod
-    def from_quat(q_AB: typing.Any, translation: typing.Any = None, scalar_first: bool = False) -> Transform:
+    def from_quat(q_AB: typing.Any, translation: typing.Any = None, scalar_first: typing.Any = False) -> Transform:
         """
         X_AB from the unit quaternion q_AB (4,) ((x, y, z, w), or (w, x, y, z) if scalar_first) and
         p_AB (3,) [m] (default zero).
@@ -332,31 +325,19 @@ class Transform:
         X_AB from rotation R_AB (3,3), orthonormal with det +1 (default identity), and translation
         p_AB (3,) [m] (default zero). ValueError on a non-rotation or non-finite input.
         """
-    def __mul__(self, arg0: Transform) -> Transform:
+    def __mul__(self, arg0: typing.Any) -> typing.Any:
         """
         X_AB * X_BC = X_AC.
         """
     def __repr__(self) -> str:
         ...
-    @typing.overload
-    def act(self, m: Motion) -> Motion:
+    def act(self, spatial_vector: typing.Any) -> typing.Any:
         """
-        Motion in B -> in A: [R w; R v + p x (R w)].
+        A Motion in B -> in A: [R w; R v + p x (R w)]; a Force in B -> in A: [R n + p x (R f); R f].
         """
-    @typing.overload
-    def act(self, f: Force) -> Force:
+    def act_inv(self, spatial_vector: typing.Any) -> typing.Any:
         """
-        Force in B -> in A: [R n + p x (R f); R f].
-        """
-    @typing.overload
-    def act_inv(self, m: Motion) -> Motion:
-        """
-        Motion in A -> in B: [R^T w; R^T (v - p x w)].
-        """
-    @typing.overload
-    def act_inv(self, f: Force) -> Force:
-        """
-        Force in A -> in B: [R^T (n - p x f); R^T f].
+        A Motion in A -> in B: [R^T w; R^T (v - p x w)]; a Force in A -> in B: [R^T (n - p x f); R^T f].
         """
     def act_inv_point(self, p_A: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
         """
@@ -378,7 +359,7 @@ class Transform:
         """
         Featherstone's X (6,6), angular first: [[R, 0], [hat(p) R, R]].
         """
-    def quat(self, scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
+    def quat(self, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
         """
         q_AB (4,) with w >= 0, (x, y, z, w) or (w, x, y, z) if scalar_first.
         """
@@ -398,7 +379,7 @@ class Screw:
     the origin [m], pitch [m/rad] (inf for a pure translation) and magnitude (|w| [rad/s], or
     |v| [m/s] for a pure translation), all in the twist's frame.
     """
-    def __init__(self, direction: typing.Any, point: typing.Any, pitch: typing.SupportsFloat | typing.SupportsIndex, magnitude: typing.SupportsFloat | typing.SupportsIndex) -> None:
+    def __init__(self, direction: typing.Any, point: typing.Any, pitch: typing.Any, magnitude: typing.Any) -> None:
         """
         Screw from its parts (checked by screw_to_twist): direction (3,) unit, point (3,) [m], pitch [m/rad]
         (inf: pure translation), magnitude [rad/s] (or [m/s]).
@@ -453,7 +434,11 @@ class InertiaCheck:
         ...
     def __index__(self) -> int:
         ...
+    @typing.overload
     def __init__(self, value: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    @typing.overload
+    def __init__(self, value: typing.Any) -> None:
         ...
     def __int__(self) -> int:
         ...
@@ -485,7 +470,7 @@ class InertiaReport:
         """
         One line with the key numbers.
         """
-    def valid(self, check: InertiaCheck = InertiaCheck.physical) -> bool:
+    def valid(self, check: typing.Any = InertiaCheck.physical) -> bool:
         """
         True when every check required by `check` passes.
         """
@@ -493,6 +478,11 @@ class InertiaReport:
     def asymmetry(self) -> float:
         """
         max |I - I^T| [kg m^2]
+        """
+    @property
+    def asymmetry_tolerance(self) -> float:
+        """
+        largest asymmetry accepted, 1e-12 max |I_ij| [kg m^2]
         """
     @property
     def condition_number(self) -> float:
@@ -524,7 +514,7 @@ class InertiaReport:
     @property
     def tolerance(self) -> float:
         """
-        absolute tolerance of the two checks [kg m^2]
+        absolute tolerance of the positive semi-definite and triangle-inequality checks [kg m^2]
         """
     @property
     def triangle_inequality(self) -> bool:
@@ -562,7 +552,7 @@ class SpatialInertia:
     @staticmethod
     def from_inertia_about_point(mass: typing.Any, com: typing.Any, inertia_about_point: typing.Any, point: typing.Any, check: typing.Any = InertiaCheck.physical) -> SpatialInertia:
         """
-        From the inertia (3,3) [kg m^2] about `point` (3,) [m] (parallel axis, seed 001).
+        From the inertia (3,3) [kg m^2] about `point` (3,) [m] (parallel axis, Craig).
         """
     @staticmethod
     def from_matrix(matrix: typing.Any, check: typing.Any = InertiaCheck.physical) -> SpatialInertia:
@@ -590,10 +580,10 @@ class SpatialInertia:
         """
         This body with the part removed (a hole); ValueError if the rest is invalid.
         """
-    def admits_symmetry_plane(self, normal: typing.Any, tolerance: typing.SupportsFloat | typing.SupportsIndex = 1e-09) -> bool:
+    def admits_symmetry_plane(self, normal: typing.Any, tolerance: typing.Any = 1e-09) -> bool:
         """
         Whether the plane through the centre of mass with this normal (3,) can be a plane of symmetry
-        (seed 001: then the products of inertia with the normal vanish). Necessary, not sufficient.
+        (Craig: then the products of inertia with the normal vanish). Necessary, not sufficient.
         """
     def angular_momentum_about_com(self, angular_velocity: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
         """
@@ -601,7 +591,7 @@ class SpatialInertia:
         """
     def angular_momentum_about_point(self, angular_velocity: typing.Any, com_velocity: typing.Any, point: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
         """
-        H_P = r_PC x (m v_C) + H_C (3,) [kg m^2/s] (seed 001); w [rad/s], v_C [m/s], point [m].
+        H_P = r_PC x (m v_C) + H_C (3,) [kg m^2/s] (Craig); w [rad/s], v_C [m/s], point [m].
         """
     def inertia_about_origin(self) -> numpy.typing.NDArray[numpy.float64]:
         """
@@ -611,11 +601,11 @@ class SpatialInertia:
         """
         Inertia (3,3) [kg m^2] about point (3,) [m]: I_C + m (|r|^2 1 - r r^T), r = c - p.
         """
-    def is_approx(self, other: SpatialInertia, prec: typing.SupportsFloat | typing.SupportsIndex = 1e-12) -> bool:
+    def is_approx(self, other: typing.Any, prec: typing.Any = 1e-12) -> bool:
         """
         Relative comparison.
         """
-    def kinetic_energy(self, twist: Motion) -> float:
+    def kinetic_energy(self, twist: typing.Any) -> float:
         """
         T = 1/2 V . I V [J] of the twist (Motion).
         """
@@ -623,7 +613,7 @@ class SpatialInertia:
         """
         (6,6) spatial inertia about the origin, angular first.
         """
-    def momentum(self, twist: Motion) -> Force:
+    def momentum(self, twist: typing.Any) -> Force:
         """
         Spatial momentum h = I V (Force, moment about the origin) of the twist V = [w; v_O] (Motion).
         """
@@ -631,7 +621,7 @@ class SpatialInertia:
         """
         Principal moments and right-handed axes of I_C.
         """
-    def remove(self, part: SpatialInertia, check: InertiaCheck = InertiaCheck.physical) -> SpatialInertia:
+    def remove(self, part: typing.Any, check: typing.Any = InertiaCheck.physical) -> SpatialInertia:
         """
         This body with `part` removed (a hole), checked as the constructor.
         """
@@ -643,7 +633,7 @@ class SpatialInertia:
         """
         Re-expressed in A: c_A = R_AB c_B, I_C,A = R_AB I_C,B R_AB^T.
         """
-    def transformed(self, X_AB: Transform) -> SpatialInertia:
+    def transformed(self, X_AB: typing.Any) -> SpatialInertia:
         """
         Re-expressed in A (Transform X_AB): c_A = R_AB c_B + p_AB, I_C,A = R_AB I_C,B R_AB^T.
         """
@@ -693,9 +683,9 @@ class DensityIntegral:
         """
 class Particle:
     """
-    A point mass (3 DOF; seed 000 section 4.11): mass [kg] > 0.
+    A point mass (3 DOF; "Rigid body kinematics and dynamics" notes, section 4.11): mass [kg] > 0.
     """
-    def __init__(self, mass: typing.SupportsFloat | typing.SupportsIndex) -> None:
+    def __init__(self, mass: typing.Any) -> None:
         ...
     @property
     def mass(self) -> float:
@@ -704,9 +694,9 @@ class Particle:
         """
 class PlanarBody:
     """
-    A rigid body moving in the xy plane of W (x, y, theta; seed 001 plane kinetics): mass [kg] and inertia_zz [kg m^2] about the z axis through the centre of mass, both > 0.
+    A rigid body moving in the xy plane of W (x, y, theta; plane kinetics of Craig's "Rigid Body Dynamics" slides): mass [kg] and inertia_zz [kg m^2] about the z axis through the centre of mass, both > 0.
     """
-    def __init__(self, mass: typing.SupportsFloat | typing.SupportsIndex, inertia_zz: typing.SupportsFloat | typing.SupportsIndex) -> None:
+    def __init__(self, mass: typing.Any, inertia_zz: typing.Any) -> None:
         ...
     @property
     def inertia_zz(self) -> float:
@@ -722,7 +712,7 @@ class RigidBody:
     """
     A spatial rigid body (6 DOF): mass [kg] > 0 and inertia_com (3, 3) [kg m^2] about the centre of mass in the body frame B, symmetric positive definite, checked as every inertia of rigiddyn is (inertia_report): under check=InertiaCheck.physical (default) the principal moments must satisfy the triangle inequality; check=InertiaCheck.allow_unrealizable accepts test bodies no real body has, e.g. I = diag(2, 1, 2/3). (require_triangle_inequality=False, or False as the third positional argument, is the older spelling of allow_unrealizable.) euler_form tells which form of Euler's equations it uses: 'spherical', 'principal' or 'full'.
     """
-    def __init__(self, mass: typing.SupportsFloat | typing.SupportsIndex, inertia_com: typing.Any, check: typing.Any = None, require_triangle_inequality: typing.Any = None) -> None:
+    def __init__(self, mass: typing.Any, inertia_com: typing.Any, check: typing.Any = None, require_triangle_inequality: typing.Any = None) -> None:
         ...
     @property
     def euler_form(self) -> str:
@@ -741,9 +731,9 @@ class RigidBody:
         """
 class ParticleState:
     """
-    Particle state: p_W (3,) [m] and v_W (3,) [m/s] in W.
+    Particle state: p_W (3,) [m] and v_W (3,) [m/s] in W (None: zero).
     """
-    def __init__(self, p_W: typing.Any = ..., v_W: typing.Any = ...) -> None:
+    def __init__(self, p_W: typing.Any = None, v_W: typing.Any = None) -> None:
         ...
     @property
     def p_W(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -757,9 +747,9 @@ class ParticleState:
         """
 class PlanarBodyState:
     """
-    Planar body state: p_W (2,) [m] centre of mass, theta [rad] angle of B about z, v_W (2,) [m/s], omega [rad/s].
+    Planar body state: p_W (2,) [m] centre of mass, theta [rad] angle of B about z, v_W (2,) [m/s], omega [rad/s] (None: zero).
     """
-    def __init__(self, p_W: typing.Any = ..., theta: typing.SupportsFloat | typing.SupportsIndex = 0.0, v_W: typing.Any = ..., omega: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
+    def __init__(self, p_W: typing.Any = None, theta: typing.Any = 0.0, v_W: typing.Any = None, omega: typing.Any = 0.0) -> None:
         ...
     @property
     def omega(self) -> float:
@@ -783,11 +773,11 @@ class PlanarBodyState:
         """
 class RigidBodyState:
     """
-    Rigid body state (docs/conventions.md): p_W (3,) centre of mass [m], q_WB (4,) unit quaternion (x, y, z, w), or (w, x, y, z) with scalar_first=True, v_W (3,) [m/s] in W, w_B (3,) angular velocity [rad/s] in B. q_WB is normalised; ValueError if | |q| - 1 | > 1e-6.
+    Rigid body state (docs/conventions.md): p_W (3,) centre of mass [m], q_WB (4,) unit quaternion (x, y, z, w), or (w, x, y, z) with scalar_first=True, v_W (3,) [m/s] in W, w_B (3,) angular velocity [rad/s] in B (None: zero, identity). q_WB is normalised; ValueError if | |q| - 1 | > 1e-6.
     """
-    def __init__(self, p_W: typing.Any = ..., q_WB: typing.Any = ..., v_W: typing.Any = ..., w_B: typing.Any = ..., scalar_first: bool = False) -> None:
+    def __init__(self, p_W: typing.Any = None, q_WB: typing.Any = None, v_W: typing.Any = None, w_B: typing.Any = None, scalar_first: typing.Any = False) -> None:
         ...
-    def quaternion(self, scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
+    def quaternion(self, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
         """
         q_WB (4,) as (x, y, z, w), or (w, x, y, z) with scalar_first=True
         """
@@ -811,11 +801,30 @@ class RigidBodyState:
         """
         (3,) [rad/s]
         """
+class KineticEnergy:
+    """
+    Kinetic energy split: translational 1/2 m v.v, rotational 1/2 w.I w [J].
+    """
+    @property
+    def rotational(self) -> float:
+        """
+        [J]
+        """
+    @property
+    def total(self) -> float:
+        """
+        [J]
+        """
+    @property
+    def translational(self) -> float:
+        """
+        [J]
+        """
 class AppliedLoad:
     """
     A load: force (3,) [N] through the centre of mass and couple torque (3,) [N m], both in frame 'world' or 'body', active for t_start <= t < t_end [s].
     """
-    def __init__(self, force: typing.Any = ..., torque: typing.Any = ..., frame: str = 'world', t_start: typing.SupportsFloat | typing.SupportsIndex = ..., t_end: typing.SupportsFloat | typing.SupportsIndex = ...) -> None:
+    def __init__(self, force: typing.Any = None, torque: typing.Any = None, frame: typing.Any = 'world', t_start: typing.Any = ..., t_end: typing.Any = ...) -> None:
         ...
     @property
     def force(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -911,39 +920,22 @@ class SimulationResult:
         """
         (n,) work of loads and gravity since t0 [J]
         """
-class KineticEnergy:
-    """
-    Kinetic energy split: translational 1/2 m v.v, rotational 1/2 w.I w [J].
-    """
-    @property
-    def rotational(self) -> float:
-        """
-        [J]
-        """
-    @property
-    def total(self) -> float:
-        """
-        [J]
-        """
-    @property
-    def translational(self) -> float:
-        """
-        [J]
-        """
 class TorqueFreeSolution:
     """
     Exact motion of a torque-free rigid body (Euler-Poinsot), see rigiddyn/exact/free_body.hpp.
     """
-    def __init__(self, inertia: typing.Any, q_WB: typing.Any, w_B: typing.Any, scalar_first: bool = False) -> None:
+    def __init__(self, inertia: typing.Any, q_WB: typing.Any, w_B: typing.Any, scalar_first: typing.Any = False) -> None:
         """
         inertia: (3, 3) rotational inertia about the centre of mass, in B [kg m^2], symmetric positive definite;
         q_WB: (4,) initial attitude, (x, y, z, w) or (w, x, y, z) if scalar_first; w_B: (3,) initial angular
-        velocity of B in W, expressed in B [rad/s].
+        velocity of B in W, expressed in B [rad/s]. Any finite magnitudes (the motion is computed in scaled
+        units); ValueError naming w_B when a rate of the motion exceeds the double range.
         """
     def state_at(self, t: typing.Any) -> tuple:
         """
         State at time t [s] (scalar, or (n,) array; negative allowed): (q_WB, w_B) of shapes (4,), (3,) or
-        (n, 4), (n, 3); q in the order chosen at construction.
+        (n, 4), (n, 3); q in the order chosen at construction. ValueError naming t when a phase (rate times t)
+        exceeds the double range.
         """
     @property
     def R_BP(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -953,7 +945,7 @@ class TorqueFreeSolution:
     @property
     def angular_momentum_W(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3,) constant spatial angular momentum L_W [kg m^2/s].
+        (3,) constant spatial angular momentum L_W [kg m^2/s]; inf with a RuntimeWarning beyond the double range.
         """
     @property
     def case(self) -> str:
@@ -963,7 +955,7 @@ class TorqueFreeSolution:
     @property
     def kinetic_energy(self) -> float:
         """
-        Constant kinetic energy of rotation [J].
+        Constant kinetic energy of rotation [J]; inf with a RuntimeWarning beyond the double range.
         """
     @property
     def parameter_m(self) -> float:
@@ -985,37 +977,17 @@ class TorqueFreeSolution:
         """
         (3,) principal moments I1 <= I2 <= I3 [kg m^2].
         """
-@typing.overload
-def angular_momentum(body: RigidBody, state: RigidBodyState, point: typing.Any = None) -> numpy.typing.NDArray[numpy.float64]:
+def angular_momentum(body: typing.Any, state: typing.Any, point: typing.Any = None) -> typing.Any:
     """
-    Angular momentum (3,) [kg m^2/s] in W about the point fixed in W at `point` (p_WP (3,) [m]; None = the centre of mass): H_P = R_WB I w_B + (p_W - p_WP) x m v_W.
+    Angular momentum about the point fixed in W at `point` (p_WP [m]; None = the centre of mass, for a Particle the particle itself). body: a RigidBody, PlanarBody or Particle; state: its state (RigidBodyState, PlanarBodyState or ParticleState), finite (ValueError naming it otherwise, e.g. for a state a diverged step returned). 
+    RigidBody: (3,) [kg m^2/s] in W, H_P = R_WB I w_B + (p_W - p_WP) x m v_W. PlanarBody: H_z [kg m^2/s] about z, I_zz omega + (p_W - p_WP) x m v_W, point (2,). Particle: (3,), (p_W - p_WP) x m v_W.
     """
-@typing.overload
-def angular_momentum(body: Particle, state: ParticleState, point: typing.Any = None) -> numpy.typing.NDArray[numpy.float64]:
+def apply_impulse(body: typing.Any, state: typing.Any, impulse: typing.Any, point: typing.Any = None, frame: typing.Any = 'world', angular_impulse: typing.Any = None) -> typing.Any:
     """
-    Particle: (p_W - p_WP) x m v_W (3,) [kg m^2/s] in W about the point fixed in W at `point` (p_WP (3,) [m]; None = the particle itself: zero).
+    The state just after an impulse [N s] at `point` (p_GP [m] from the centre of mass; None = the centre of mass) and an angular impulse [N m s] (None: none), all in `frame` ('world' or 'body'): m dv = impulse, I dw = p_GP x impulse + angular_impulse (impulse-momentum, Craig's "Rigid Body Dynamics" slides). body: a RigidBody, PlanarBody or Particle; state: its state (RigidBodyState, PlanarBodyState or ParticleState), finite (ValueError naming it otherwise, e.g. for a state a diverged step returned). 
+    RigidBody: impulse, point, angular_impulse (3,). PlanarBody: impulse, point (2,), angular_impulse about z. Particle: impulse (3,) in W only.
     """
-@typing.overload
-def angular_momentum(body: PlanarBody, state: PlanarBodyState, point: typing.Any = None) -> float:
-    """
-    PlanarBody: H_z [kg m^2/s] about the point fixed in W at `point` (p_WP (2,) [m]; None = the centre of mass): I_zz omega + (p_W - p_WP) x m v_W.
-    """
-@typing.overload
-def apply_impulse(body: RigidBody, state: RigidBodyState, impulse: typing.Any, point: typing.Any = None, frame: str = 'world', angular_impulse: typing.Any = None) -> RigidBodyState:
-    """
-    The state just after an impulse (3,) [N s] at `point` (p_GP (3,) [m] relative to the centre of mass; None = the centre of mass) and an angular impulse (3,) [N m s], all in `frame` ('world' or 'body'): m dv = impulse, I dw = p_GP x impulse + angular_impulse (impulse-momentum, seed 001).
-    """
-@typing.overload
-def apply_impulse(body: Particle, state: ParticleState, impulse: typing.Any) -> ParticleState:
-    """
-    Particle: the state just after an impulse (3,) [N s] in W: m dv = impulse.
-    """
-@typing.overload
-def apply_impulse(body: PlanarBody, state: PlanarBodyState, impulse: typing.Any, point: typing.Any = None, frame: str = 'world', angular_impulse: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> PlanarBodyState:
-    """
-    PlanarBody: the state just after an in-plane impulse (2,) [N s] at `point` (p_GP (2,) [m] from the centre of mass; None = the centre of mass), both in `frame` ('world' or 'body'), and an angular impulse [N m s] about z: m dv = impulse, I_zz domega = p_GP x impulse + angular_impulse.
-    """
-def axis_angle_to_quat(axis: typing.Any, angle: typing.Any, scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
+def axis_angle_to_quat(axis: typing.Any, angle: typing.Any, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Unit quaternion of the rotation by angle [rad] about axis (right-hand rule).
     
@@ -1026,38 +998,42 @@ def box_shell(size: typing.Any, *, mass: typing.Any = None, density: typing.Any 
     """
     Closed thin-walled box (six faces), edges (3,) [m]. Density [kg/m^2]. Give exactly one of mass= [kg] or density=.
     """
-def compose_kinematics(K_AP: FrameKinematics, K_PF: FrameKinematics) -> FrameKinematics:
+def compose_kinematics(K_AP: typing.Any, K_PF: typing.Any) -> FrameKinematics:
     """
     F relative to A from P relative to A and F relative to P (addition theorem for w; alpha with its
-    w_AP x w_PF term; origin by seed 000 (4.38), (4.39)). Result expressed in A.
+    w_AP x w_PF term; origin by the point formulas of the "Rigid body kinematics and dynamics" notes,
+    (4.38), (4.39)). Result expressed in A.
     """
-def composite(parts: collections.abc.Sequence) -> SpatialInertia:
+def composite(parts: typing.Any) -> SpatialInertia:
     """
     Composite body: parts is a list of SpatialInertia (one frame) or of (X_AB, SpatialInertia) pairs,
     each part expressed in its B and placed in A by the Transform X_AB. Exact.
     """
-def ellipk(m: typing.SupportsFloat | typing.SupportsIndex, mc: typing.SupportsFloat | typing.SupportsIndex | None = None) -> float:
+def ellipk(m: typing.Any, mc: typing.Any = None) -> float:
     """
     Complete elliptic integral K(m) = R_F(0, mc, 1) for the parameter m in [0, 1] (as scipy.special.ellipk).
     mc: the complement 1 - m (default 1 - m); pass it near m = 1, where 1 - m loses digits. inf at mc = 0.
     """
-def ellippi(n: typing.SupportsFloat | typing.SupportsIndex, m: typing.SupportsFloat | typing.SupportsIndex, mc: typing.SupportsFloat | typing.SupportsIndex | None = None) -> float:
+def ellippi(n: typing.Any, m: typing.Any, mc: typing.Any = None) -> float:
     """
     Complete elliptic integral of the third kind Pi(n|m) = int_0^{pi/2} dt / ((1 - n sin^2 t) sqrt(1 - m sin^2 t)),
-    n < 1, m in [0, 1), mc = 1 - m (default 1 - m).
+    n < 1, m in [0, 1), mc = 1 - m (default 1 - m). A few ulps for n <= 0.9; relative error ~eps/(1 - n) nearer 1.
     """
-def ellippi_am(u: typing.Any, n: typing.SupportsFloat | typing.SupportsIndex, m: typing.SupportsFloat | typing.SupportsIndex, mc: typing.SupportsFloat | typing.SupportsIndex | None = None) -> typing.Any:
+def ellippi_am(u: typing.Any, n: typing.Any, m: typing.Any, mc: typing.Any = None) -> typing.Any:
     """
     Incomplete Pi(am u, n|m) = int_0^u dv / (1 - n sn^2(v|m)) (mpmath.ellippi(n, am(u), m)), for u a scalar
-    or a 1-d array (then an array of the same length), n < 1, mc = 1 - m (default 1 - m).
+    or a 1-d array (then an array of the same length), n < 1, mc = 1 - m (default 1 - m); +-inf with a
+    RuntimeWarning where it exceeds the double range (|u| near it).
     """
-def elliprf(x: typing.SupportsFloat | typing.SupportsIndex, y: typing.SupportsFloat | typing.SupportsIndex, z: typing.SupportsFloat | typing.SupportsIndex) -> float:
+def elliprf(x: typing.Any, y: typing.Any, z: typing.Any) -> float:
     """
-    Carlson's R_F(x, y, z) (DLMF 19.16.1); x, y, z >= 0, at most one zero.
+    Carlson's R_F(x, y, z) (DLMF 19.16.1) for finite x, y, z >= 0, at most one zero, of any magnitude;
+    inf with a RuntimeWarning where the result exceeds the double range.
     """
-def elliprj(x: typing.SupportsFloat | typing.SupportsIndex, y: typing.SupportsFloat | typing.SupportsIndex, z: typing.SupportsFloat | typing.SupportsIndex, p: typing.SupportsFloat | typing.SupportsIndex) -> float:
+def elliprj(x: typing.Any, y: typing.Any, z: typing.Any, p: typing.Any) -> float:
     """
-    Carlson's R_J(x, y, z, p) (DLMF 19.16.2); x, y, z >= 0, at most one zero, p > 0.
+    Carlson's R_J(x, y, z, p) (DLMF 19.16.2) for finite x, y, z >= 0, at most one zero, and p > 0, of any
+    magnitude; inf with a RuntimeWarning where the result exceeds the double range.
     """
 def euler_to_matrix(seq: typing.Any, angles: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
     """
@@ -1067,7 +1043,7 @@ def euler_to_matrix(seq: typing.Any, angles: typing.Any) -> numpy.typing.NDArray
     (moving axes); the 12 sequences xyz xzy yxz yzx zxy zyx xyx xzx yxy yzy zxz zyz in either case.
     angles: (3,) or (n, 3) [rad]. Returns R: (3, 3) or (n, 3, 3).
     """
-def euler_to_quat(seq: typing.Any, angles: typing.Any, scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
+def euler_to_quat(seq: typing.Any, angles: typing.Any, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Unit quaternion of Euler angles.
     
@@ -1076,111 +1052,75 @@ def euler_to_quat(seq: typing.Any, angles: typing.Any, scalar_first: bool = Fals
     angles: (3,) or (n, 3) [rad], in the order of seq.
     Returns q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first.
     """
-def force_cross_matrix(m: Motion) -> numpy.typing.NDArray[numpy.float64]:
+def force_cross_matrix(m: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
     """
     crf(m) (6,6) = [[hat(w), hat(v)], [0, hat(w)]] = -crm(m)^T, so crf(m) f = m x* f.
     """
-@typing.overload
-def forward_dynamics(body: RigidBody, state: RigidBodyState, force: typing.Any = None, torque: typing.Any = None, point: typing.Any = None, frame: str = 'world', gravity: typing.Any = None) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+def forward_dynamics(body: typing.Any, state: typing.Any, force: typing.Any = None, torque: typing.Any = None, point: typing.Any = None, frame: typing.Any = 'world', gravity: typing.Any = None) -> typing.Any:
     """
-    Accelerations (a_W (3,) [m/s^2] of the centre of mass in W, alpha_B (3,) [rad/s^2] in B) of `body` in `state` under a force (3,) [N] applied at `point` (p_GP (3,) [m], position of the point relative to the centre of mass; None = the centre of mass) and a couple torque (3,) [N m], all expressed in `frame` ('world' or 'body'), plus gravity (None/False, True = (0, 0, -9.81), or (3,) [m/s^2] in W). Newton: m a = f + m g; Euler: I alpha + w x I w = n_G.
-    """
-@typing.overload
-def forward_dynamics(body: Particle, state: ParticleState, force: typing.Any = None, gravity: typing.Any = None) -> numpy.typing.NDArray[numpy.float64]:
-    """
-    Particle: acceleration a_W (3,) [m/s^2] = force/m + g under a force (3,) [N] in W and gravity (None/False, True = (0, 0, -9.81), or (3,) [m/s^2] in W).
-    """
-@typing.overload
-def forward_dynamics(body: PlanarBody, state: PlanarBodyState, force: typing.Any = None, torque: typing.SupportsFloat | typing.SupportsIndex = 0.0, point: typing.Any = None, frame: str = 'world', gravity: typing.Any = None) -> tuple[numpy.typing.NDArray[numpy.float64], float]:
-    """
-    PlanarBody: (a_W (2,) [m/s^2] in W, alpha [rad/s^2]) under an in-plane force (2,) [N] applied at `point` (p_GP (2,) [m] from the centre of mass; None = the centre of mass), both in `frame` ('world' or 'body'), a couple torque [N m] about z, and in-plane gravity (None or (2,) [m/s^2] in W). m a = f + m g, I_zz alpha = n_G.
+    Accelerations of `body` in `state` under a force applied at `point` and a couple `torque`.
+    body: a RigidBody, PlanarBody or Particle; state: its state (RigidBodyState, PlanarBodyState or ParticleState), finite (ValueError naming it otherwise, e.g. for a state a diverged step returned). 
+    RigidBody: force (3,) [N] at point (p_GP (3,) [m], from the centre of mass; None = the centre of mass), torque (3,) [N m], all expressed in `frame` ('world' or 'body'), gravity None/False, True = (0, 0, -9.81) or (3,) [m/s^2] in W; returns (a_W (3,) [m/s^2] of the centre of mass in W, alpha_B (3,) [rad/s^2] in B). Newton: m a = f + m g; Euler: I alpha + w x I w = n_G.
+    PlanarBody: in-plane force (2,) [N] at point (2,) [m], torque [N m] about z, gravity None or (2,) [m/s^2]; returns (a_W (2,), alpha [rad/s^2]); I_zz alpha = n_G.
+    Particle: force (3,) [N] in W (torque and point None, frame 'world'); returns a_W (3,) = force/m + g.
     """
 def from_point_masses(masses: typing.Any, positions: typing.Any) -> SpatialInertia:
     """
-    Point masses (n,) [kg] >= 0 at positions (n, 3) [m] (seed 000 (4.53)-(4.54)).
+    Point masses (n,) [kg] >= 0 at positions (n, 3) [m] (Rigid-body notes (4.53)-(4.54)).
     """
 def hat(v: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
     """
     Skew-symmetric cross-product matrix S = hat(v), S x = v × x. v: (3,) or (n, 3); returns (3, 3) or (n, 3, 3).
     """
-def hollow_cylinder(outer_radius: typing.SupportsFloat | typing.SupportsIndex, inner_radius: typing.SupportsFloat | typing.SupportsIndex, height: typing.SupportsFloat | typing.SupportsIndex, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
+def hollow_cylinder(outer_radius: typing.Any, inner_radius: typing.Any, height: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
     """
     Thick tube, axis z: I_zz = m (R^2 + r^2)/2, I_xx = m (3 (R^2 + r^2) + h^2)/12. Density [kg/m^3]. Give
     exactly one of mass= [kg] or density=.
     """
-def hollow_sphere(outer_radius: typing.SupportsFloat | typing.SupportsIndex, inner_radius: typing.SupportsFloat | typing.SupportsIndex, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
+def hollow_sphere(outer_radius: typing.Any, inner_radius: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
     """
     Thick spherical shell [m]: I = 2/5 m (R^5 - r^5)/(R^3 - r^3) 1. Density [kg/m^3]. Give exactly one of mass= [kg] or density=.
     """
-def inertia_report(mass: typing.Any, inertia_com: typing.Any, scale: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> InertiaReport:
+def inertia_report(mass: typing.Any, inertia_com: typing.Any, scale: typing.Any = 0.0) -> InertiaReport:
     """
     Validity report of mass [kg] and inertia_com (3,3) [kg m^2]: principal moments, triangle margins,
     condition number. Tolerance = inertia_relative_tolerance * max(scale, trace) [kg m^2], where scale is
     the size of the numbers the inertia was computed from (0: trace only).
     """
-def integrate_density_over_box(rho: collections.abc.Callable, lower: typing.Any, upper: typing.Any, order: typing.SupportsInt | typing.SupportsIndex = 6, subdivisions: typing.SupportsInt | typing.SupportsIndex = 2) -> DensityIntegral:
+def integrate_density_over_box(rho: typing.Any, lower: typing.Any, upper: typing.Any, order: typing.Any = 6, subdivisions: typing.Any = 2) -> DensityIntegral:
     """
     Mass properties of density rho over the box [lower, upper] (3,) [m] by Gauss-Legendre quadrature
-    (seed 000 (4.55), (4.56), (4.70)) at `order` and 2*order points per cell axis, subdivisions^3 cells.
+    (Rigid-body notes (4.55), (4.56), (4.70)) at `order` and 2*order points per cell axis, subdivisions^3 cells.
     rho is called with points (n, 3) [m] and returns (n,) densities [kg/m^3] >= 0. Returns a
     DensityIntegral (high-order result, differences to the low order as error estimate).
     """
-def integrate_density_over_mesh(rho: collections.abc.Callable, vertices: typing.Any, faces: typing.Any, order: typing.SupportsInt | typing.SupportsIndex = 4) -> DensityIntegral:
+def integrate_density_over_mesh(rho: typing.Any, vertices: typing.Any, faces: typing.Any, order: typing.Any = 4) -> DensityIntegral:
     """
     Mass properties of density rho over the solid bounded by a closed mesh (signed tetrahedra, collapsed
     Gauss-Legendre, order^3 and (2 order)^3 points per face). rho: points (n, 3) -> (n,) [kg/m^3], must
     be defined on the mesh's convex hull. Returns a DensityIntegral.
     """
-@typing.overload
-def inverse_dynamics(body: RigidBody, state: RigidBodyState, a_W: typing.Any, alpha_B: typing.Any, gravity: typing.Any = None) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+def inverse_dynamics(body: typing.Any, state: typing.Any, a_W: typing.Any, alpha_B: typing.Any = None, gravity: typing.Any = None) -> typing.Any:
     """
-    The applied wrench the motion requires: (f_W (3,) [N] in W, n_B (3,) [N m] about the centre of mass in B), f_W = m (a_W - g), n_B = I alpha_B + w_B x I w_B. Undoes forward_dynamics with a centre-of-mass load.
+    The applied wrench the motion requires (undoes forward_dynamics with a centre-of-mass load).
+    body: a RigidBody, PlanarBody or Particle; state: its state (RigidBodyState, PlanarBodyState or ParticleState), finite (ValueError naming it otherwise, e.g. for a state a diverged step returned). 
+    RigidBody: a_W (3,) [m/s^2] in W, alpha_B (3,) [rad/s^2] in B, gravity as forward_dynamics; returns (f_W (3,) [N] in W, n_B (3,) [N m] about the centre of mass in B), f_W = m (a_W - g), n_B = I alpha_B + w_B x I w_B.
+    PlanarBody: a_W (2,), alpha_B [rad/s^2] about z, gravity None or (2,); returns (f_W (2,) [N], n [N m]).
+    Particle: a_W (3,) (alpha_B None); returns f_W (3,) = m (a_W - g).
     """
-@typing.overload
-def inverse_dynamics(body: Particle, state: ParticleState, a_W: typing.Any, gravity: typing.Any = None) -> numpy.typing.NDArray[numpy.float64]:
-    """
-    Particle: the force f_W (3,) [N] in W the acceleration a_W (3,) [m/s^2] requires, m (a_W - g).
-    """
-@typing.overload
-def inverse_dynamics(body: PlanarBody, state: PlanarBodyState, a_W: typing.Any, alpha: typing.SupportsFloat | typing.SupportsIndex, gravity: typing.Any = None) -> tuple[numpy.typing.NDArray[numpy.float64], float]:
-    """
-    PlanarBody: the wrench the motion requires, (f_W (2,) [N] in W, n [N m] about the centre of mass): f_W = m (a_W - g), n = I_zz alpha.
-    """
-def jacobi_ellipj(u: typing.Any, m: typing.SupportsFloat | typing.SupportsIndex, mc: typing.SupportsFloat | typing.SupportsIndex | None = None) -> typing.Any:
+def jacobi_ellipj(u: typing.Any, m: typing.Any, mc: typing.Any = None) -> typing.Any:
     """
     Jacobi elliptic functions (sn, cn, dn)(u|m) for u a scalar (floats) or a 1-d array (three arrays of
     shape (n,)), m in [0, 1]. mc: the complement 1 - m (default 1 - m); pass it near m = 1 for full
     accuracy (unlike scipy.special.ellipj, accurate near m = 1 at any u).
     """
-@typing.overload
-def kinetic_energy(body: RigidBody, state: RigidBodyState) -> KineticEnergy:
+def kinetic_energy(body: typing.Any, state: typing.Any) -> typing.Any:
     """
-    KineticEnergy(translational = 1/2 m v.v, rotational = 1/2 w_B.I w_B) [J].
+    KineticEnergy(translational = 1/2 m v.v, rotational = 1/2 w_B.I w_B, 1/2 I_zz omega^2 for a PlanarBody, 0 for a Particle) [J]. body: a RigidBody, PlanarBody or Particle; state: its state (RigidBodyState, PlanarBodyState or ParticleState), finite (ValueError naming it otherwise, e.g. for a state a diverged step returned). 
     """
-@typing.overload
-def kinetic_energy(body: Particle, state: ParticleState) -> KineticEnergy:
+def linear_momentum(body: typing.Any, state: typing.Any) -> typing.Any:
     """
-    Particle: KineticEnergy(translational = 1/2 m v.v, rotational = 0) [J].
-    """
-@typing.overload
-def kinetic_energy(body: PlanarBody, state: PlanarBodyState) -> KineticEnergy:
-    """
-    PlanarBody: KineticEnergy(translational = 1/2 m v.v, rotational = 1/2 I_zz omega^2) [J].
-    """
-@typing.overload
-def linear_momentum(body: RigidBody, state: RigidBodyState) -> numpy.typing.NDArray[numpy.float64]:
-    """
-    Linear momentum m v_W (3,) [kg m/s] in W.
-    """
-@typing.overload
-def linear_momentum(body: Particle, state: ParticleState) -> numpy.typing.NDArray[numpy.float64]:
-    """
-    Particle: m v_W (3,) [kg m/s] in W.
-    """
-@typing.overload
-def linear_momentum(body: PlanarBody, state: PlanarBodyState) -> numpy.typing.NDArray[numpy.float64]:
-    """
-    PlanarBody: m v_W (2,) [kg m/s] in W.
+    Linear momentum m v_W [kg m/s] in W: (3,), or (2,) for a PlanarBody. body: a RigidBody, PlanarBody or Particle; state: its state (RigidBodyState, PlanarBodyState or ParticleState), finite (ValueError naming it otherwise, e.g. for a state a diverged step returned). 
     """
 def matrix_to_euler(seq: typing.Any, R: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
     """
@@ -1190,7 +1130,7 @@ def matrix_to_euler(seq: typing.Any, R: typing.Any) -> numpy.typing.NDArray[nump
     (moving axes); the 12 sequences xyz xzy yxz yzx zxy zyx xyx xzx yxy yzy zxz zyz in either case.
     R: (3, 3) or (n, 3, 3), orthonormal with det +1. Returns (3,) or (n, 3).
     """
-def matrix_to_quat(R: typing.Any, scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
+def matrix_to_quat(R: typing.Any, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Unit quaternion of rotation matrices, canonical sign w >= 0 (Shepperd's method, accurate at all angles).
     
@@ -1208,7 +1148,7 @@ def mesh_shell(vertices: typing.Any, faces: typing.Any, *, mass: typing.Any = No
     Thin shell made of the faces (any orientation, need not be closed): vertices (n, 3) [m], faces
     (f, 3). Give exactly one of mass= [kg] or density= [kg/m^2].
     """
-def mesh_symmetry_planes(vertices: typing.Any, faces: typing.Any, tolerance: typing.SupportsFloat | typing.SupportsIndex = 1e-09) -> list:
+def mesh_symmetry_planes(vertices: typing.Any, faces: typing.Any, tolerance: typing.Any = 1e-09) -> list:
     """
     Planes of symmetry of the uniform solid bounded by a closed, outward-oriented mesh: vertices (n, 3)
     [m], faces (f, 3). A plane qualifies when its reflection maps the vertex set onto itself (within
@@ -1224,7 +1164,7 @@ def methods() -> list:
     """
     The fixed-step methods: a list of dicts with name, order (global), evaluations (derivative evaluations per step), conserves (what is kept exactly on a free rigid body), notes, stability_limit (largest dt*|w| [rad], |w| the largest body rate on the torque-free orbit, at which the method is documented stable on a free spin: inf if unconditionally, 0 if never) and exact_torque_free (True if torque-free motion is reproduced to round-off at any dt: no observed order applies).
     """
-def motion_cross_matrix(m: Motion) -> numpy.typing.NDArray[numpy.float64]:
+def motion_cross_matrix(m: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
     """
     crm(m) (6,6) = [[hat(w), 0], [hat(v), hat(w)]], so crm(m) m2 = m x m2.
     """
@@ -1233,49 +1173,27 @@ def nearest_valid_inertia(inertia: typing.Any) -> numpy.typing.NDArray[numpy.flo
     Explicit repair: the nearest (Frobenius) matrix (3,3) satisfying the triangle inequality, same
     principal axes; a valid inertia is returned unchanged. Never applied implicitly.
     """
-def point_acceleration(K_AF: FrameKinematics, p_FQ_F: typing.Any, v_FQ_F: typing.Any, a_FQ_F: typing.Any) -> PointAcceleration:
+def point_acceleration(K_AF: typing.Any, p_FQ_F: typing.Any, v_FQ_F: typing.Any, a_FQ_F: typing.Any) -> PointAcceleration:
     """
     Acceleration terms of Q seen from A, expressed in A; a_FQ_F (3,) [m/s^2]: Q's acceleration seen
     from F, expressed in F; the rest as point_velocity.
     """
-def point_inertia(mass: typing.SupportsFloat | typing.SupportsIndex, r: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+def point_inertia(mass: typing.Any, r: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
     """
-    m (|r|^2 1 - r r^T) (3,3) [kg m^2]: a point mass [kg] at r (3,) [m] about the origin.
+    m (|r|^2 1 - r r^T) (3,3) [kg m^2]: a point mass [kg] > 0 at r (3,) [m] about the origin.
     """
-def point_velocity(K_AF: FrameKinematics, p_FQ_F: typing.Any, v_FQ_F: typing.Any) -> PointVelocity:
+def point_velocity(K_AF: typing.Any, p_FQ_F: typing.Any, v_FQ_F: typing.Any) -> PointVelocity:
     """
     Velocity terms of Q seen from A, expressed in A. K_AF: F relative to A; p_FQ_F (3,) [m] and v_FQ_F
     (3,) [m/s]: Q's position relative to F's origin and its velocity seen from F, expressed in F.
     """
-@typing.overload
-def potential_energy(body: RigidBody, state: RigidBodyState, gravity: typing.Any = True) -> float:
+def potential_energy(body: typing.Any, state: typing.Any, gravity: typing.Any = True) -> typing.Any:
     """
-    Potential energy of uniform gravity, -m g.p_W [J] (True = (0, 0, -9.81) m/s^2, or (3,) in W).
+    Potential energy of uniform gravity, -m g.p_W [J]: gravity True = (0, 0, -9.81) m/s^2, or (3,) in W; for a PlanarBody an in-plane (2,) [m/s^2] (required). body: a RigidBody, PlanarBody or Particle; state: its state (RigidBodyState, PlanarBodyState or ParticleState), finite (ValueError naming it otherwise, e.g. for a state a diverged step returned). 
     """
-@typing.overload
-def potential_energy(body: Particle, state: ParticleState, gravity: typing.Any = True) -> float:
+def power(state: typing.Any, f_W: typing.Any, n_B: typing.Any = None) -> typing.Any:
     """
-    Particle: -m g.p_W [J] (True = (0, 0, -9.81) m/s^2, or (3,) in W).
-    """
-@typing.overload
-def potential_energy(body: PlanarBody, state: PlanarBodyState, gravity: typing.Any) -> float:
-    """
-    PlanarBody: -m g.p_W [J] for in-plane gravity g (2,) [m/s^2] in W.
-    """
-@typing.overload
-def power(state: RigidBodyState, f_W: typing.Any, n_B: typing.Any) -> float:
-    """
-    Power [W] of a force f_W (3,) [N] in W at the centre of mass and a moment n_B (3,) [N m] about it in B: f_W.v_W + n_B.w_B.
-    """
-@typing.overload
-def power(state: ParticleState, f_W: typing.Any) -> float:
-    """
-    Particle: power f_W.v_W [W] of a force f_W (3,) [N] in W.
-    """
-@typing.overload
-def power(state: PlanarBodyState, f_W: typing.Any, n: typing.SupportsFloat | typing.SupportsIndex) -> float:
-    """
-    PlanarBody: power f_W.v_W + n omega [W] of a force f_W (2,) [N] in W at the centre of mass and a moment n [N m] about it.
+    Power [W] of a force f_W [N] in W at the centre of mass and a moment n_B about it (None: none): f_W.v_W + n_B.w_B. RigidBodyState: f_W (3,), n_B (3,) [N m] in B; PlanarBodyState: f_W (2,), n_B [N m] about z; ParticleState: f_W (3,) only.
     """
 def principal_axes(inertia: typing.Any) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
     """
@@ -1283,7 +1201,7 @@ def principal_axes(inertia: typing.Any) -> tuple[numpy.typing.NDArray[numpy.floa
     returns (moments (3,) or (n,3) ascending, axes (3,3) or (n,3,3) with column k the axis of
     moments[k], right-handed, canonical when moments coincide). Releases the GIL.
     """
-def quat_integrate(q: typing.Any, w: typing.Any, dt: typing.Any, frame: typing.Any = 'body', scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
+def quat_integrate(q: typing.Any, w: typing.Any, dt: typing.Any, frame: typing.Any = 'body', scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Exact attitude update for an angular velocity w [rad/s] constant over dt [s].
     
@@ -1293,37 +1211,37 @@ def quat_integrate(q: typing.Any, w: typing.Any, dt: typing.Any, frame: typing.A
     q: (4,) or (n, 4) unit quaternions q_WB; w: (3,) or (n, 3); dt: float.
     Returns (4,) or (n, 4), normalised, (x, y, z, w) or (w, x, y, z) if scalar_first.
     """
-def quat_inverse(q: typing.Any, scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
+def quat_inverse(q: typing.Any, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Inverse (conjugate) of unit quaternions: q_BW from q_WB. q: (4,) or (n, 4); returns the same shape.
     """
-def quat_multiply(q1: typing.Any, q2: typing.Any, scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
+def quat_multiply(q1: typing.Any, q2: typing.Any, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Hamilton product q1 ⊗ q2 of unit quaternions: R(q1 ⊗ q2) = R(q1) R(q2) (q2 applied first).
     
     q1, q2: (4,) or (n, 4) each (a single one is used with every item of the other).
     Returns (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first.
     """
-def quat_normalize(q: typing.Any, scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
+def quat_normalize(q: typing.Any, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     q / |q| for finite non-zero quaternions of any norm (ValueError for q = 0).
     q: (4,) or (n, 4); returns the same shape, sign unchanged.
     """
-def quat_rotate(q: typing.Any, v: typing.Any, scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
+def quat_rotate(q: typing.Any, v: typing.Any, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     R(q) v: vectors rotated actively by unit quaternions (v_W = R_WB v_B for q = q_WB).
     
     q: (4,) or (n, 4); v: (3,) or (n, 3) (a single one is used with every item of the other).
     Returns (3,) or (n, 3).
     """
-def quat_to_axis_angle(q: typing.Any, scalar_first: bool = False) -> tuple[numpy.typing.NDArray[numpy.float64], typing.Any]:
+def quat_to_axis_angle(q: typing.Any, scalar_first: typing.Any = False) -> tuple[numpy.typing.NDArray[numpy.float64], typing.Any]:
     """
     Axis (unit) and angle [rad] in [0, pi] of unit quaternions; the identity gives axis (1, 0, 0), angle 0.
     
     q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first.
     Returns (axis, angle): ((3,), float) or ((n, 3), (n,)).
     """
-def quat_to_euler(seq: typing.Any, q: typing.Any, scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
+def quat_to_euler(seq: typing.Any, q: typing.Any, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Euler angles [rad] of unit quaternions (Bernardes & Viollet 2022).
     
@@ -1332,25 +1250,25 @@ def quat_to_euler(seq: typing.Any, q: typing.Any, scalar_first: bool = False) ->
     q: (4,) or (n, 4). Returns (3,) or (n, 3): first and third in [-pi, pi], second in [0, pi] (proper)
     or [-pi/2, pi/2] (Tait-Bryan). At gimbal lock the third angle is set to 0, as SciPy does.
     """
-def quat_to_matrix(q: typing.Any, scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
+def quat_to_matrix(q: typing.Any, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Rotation matrix R(q) of unit quaternions.
     
     q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first; unit norm within 1e-6.
     Returns R: (3, 3) or (n, 3, 3), active (R v rotates v; q_WB gives R_WB).
     """
-def quat_to_rotvec(q: typing.Any, scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
+def quat_to_rotvec(q: typing.Any, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Logarithm map: rotation vector angle * axis [rad] of unit quaternions, angle in [0, pi].
     
     q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first. Returns (3,) or (n, 3).
     Accurate near angle 0 and near pi (atan2 form).
     """
-def relative_kinematics(K_WA: FrameKinematics, K_WF: FrameKinematics) -> FrameKinematics:
+def relative_kinematics(K_WA: typing.Any, K_WF: typing.Any) -> FrameKinematics:
     """
     F relative to A from A and F relative to a common frame W; expressed in A. Inverse of compose_kinematics.
     """
-def require_closed_oriented_mesh(faces: typing.Any, n_vertices: typing.SupportsInt | typing.SupportsIndex) -> None:
+def require_closed_oriented_mesh(faces: typing.Any, n_vertices: typing.Any) -> None:
     """
     ValueError unless faces (f, 3) index [0, n_vertices) and form a closed, consistently oriented mesh.
     """
@@ -1374,28 +1292,30 @@ def rotvec_to_matrix(rotvec: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
     Exponential map into rotation matrices (Rodrigues): rotvec = angle * axis [rad], (3,) or (n, 3).
     Returns R: (3, 3) or (n, 3, 3).
     """
-def rotvec_to_quat(rotvec: typing.Any, scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
+def rotvec_to_quat(rotvec: typing.Any, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Exponential map: unit quaternion of rotation vectors rotvec = angle * axis [rad] (any angle; exact near 0).
     
     rotvec: (3,) or (n, 3). Returns q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first;
     w < 0 when the angle exceeds pi (no sign flip).
     """
-def screw_to_twist(screw: Screw) -> Motion:
+def screw_to_twist(screw: typing.Any) -> Motion:
     """
     The twist of a screw: w = magnitude direction, v = magnitude (point x direction + pitch direction)
     (v = magnitude direction for pitch inf).
     """
-@typing.overload
-def simulate(model: RigidBody, initial: RigidBodyState, dt: typing.SupportsFloat | typing.SupportsIndex, steps: typing.SupportsInt | typing.SupportsIndex, method: str = 'rk4', record_every: typing.SupportsInt | typing.SupportsIndex = 1, loads: typing.Any = None, gravity: typing.Any = None, t0: typing.SupportsFloat | typing.SupportsIndex = 0.0, scalar_first: bool = False) -> SimulationResult:
+def simulate(model: typing.Any, initial: typing.Any, dt: typing.Any, steps: typing.Any, method: typing.Any = 'rk4', record_every: typing.Any = 1, loads: typing.Any = None, gravity: typing.Any = None, t0: typing.Any = 0.0, scalar_first: typing.Any = False, progress: typing.Any = None) -> SimulationResult:
     """
     Integrate `model` from `initial` over `steps` fixed steps of `dt` [s] with `method` (see methods()),
     in C++ with the GIL released, and record every `record_every`-th step (plus the first and the last).
     
     model/initial: Particle/ParticleState, PlanarBody/PlanarBodyState or RigidBody/RigidBodyState.
-    loads: an AppliedLoad or a sequence of them (piecewise-constant schedule; the loads active at the start
-      of a step act during the whole step). gravity: None/False (none), True ((0, 0, -9.81) m/s^2 in W) or a
-      3-vector [m/s^2] in W. t0: initial time [s]. scalar_first: quaternions as (w, x, y, z).
+    loads: an AppliedLoad or a sequence of them, a piecewise-constant schedule: a step that crosses a
+      switch time (a t_start or t_end) is split there into sub-steps of the same method, so every method
+      keeps its order; records stay at t0 + i dt. gravity: None/False (none), True ((0, 0, -9.81) m/s^2
+      in W) or a 3-vector [m/s^2] in W. t0: initial time [s]. scalar_first: quaternions as (w, x, y, z).
+    progress: None or a callable(steps_done), called with the GIL about every 0.05 s of a long run; an
+      exception it raises stops the run and propagates.
     
     Returns a SimulationResult, arrays with one row per record (n records): t (n,) [s]; p_W (n, 3) [m];
     q_WB (n, 4) (x, y, z, w); v_W (n, 3) [m/s]; w_B (n, 3) [rad/s]; kinetic_energy (n,) [J];
@@ -1405,65 +1325,25 @@ def simulate(model: RigidBody, initial: RigidBodyState, dt: typing.SupportsFloat
     hit their iteration cap); elapsed_seconds (C++ loop wall time).
     A particle records q = identity, w = 0; a planar body p = (x, y, 0), q = Rz(theta), w = (0, 0, omega).
     Warns RuntimeWarning and stops if the state becomes non-finite; warns RuntimeWarning (naming dt and the
-    count) if an implicit solve did not converge. ValueError names a bad argument.
-    """
-@typing.overload
-def simulate(model: PlanarBody, initial: PlanarBodyState, dt: typing.SupportsFloat | typing.SupportsIndex, steps: typing.SupportsInt | typing.SupportsIndex, method: str = 'rk4', record_every: typing.SupportsInt | typing.SupportsIndex = 1, loads: typing.Any = None, gravity: typing.Any = None, t0: typing.SupportsFloat | typing.SupportsIndex = 0.0, scalar_first: bool = False) -> SimulationResult:
-    """
-    Integrate `model` from `initial` over `steps` fixed steps of `dt` [s] with `method` (see methods()),
-    in C++ with the GIL released, and record every `record_every`-th step (plus the first and the last).
-    
-    model/initial: Particle/ParticleState, PlanarBody/PlanarBodyState or RigidBody/RigidBodyState.
-    loads: an AppliedLoad or a sequence of them (piecewise-constant schedule; the loads active at the start
-      of a step act during the whole step). gravity: None/False (none), True ((0, 0, -9.81) m/s^2 in W) or a
-      3-vector [m/s^2] in W. t0: initial time [s]. scalar_first: quaternions as (w, x, y, z).
-    
-    Returns a SimulationResult, arrays with one row per record (n records): t (n,) [s]; p_W (n, 3) [m];
-    q_WB (n, 4) (x, y, z, w); v_W (n, 3) [m/s]; w_B (n, 3) [rad/s]; kinetic_energy (n,) [J];
-    total_energy (n,) kinetic + gravity potential [J]; angular_momentum_norm (n,) |H_G| [kg m^2/s];
-    quaternion_norm_error (n,) |q| - 1; work (n,) work of loads and gravity since t0 [J], integrated by the
-    same method (kinetic_energy - kinetic_energy[0] ~ work); diverged; unconverged_steps (implicit solves that
-    hit their iteration cap); elapsed_seconds (C++ loop wall time).
-    A particle records q = identity, w = 0; a planar body p = (x, y, 0), q = Rz(theta), w = (0, 0, omega).
-    Warns RuntimeWarning and stops if the state becomes non-finite; warns RuntimeWarning (naming dt and the
-    count) if an implicit solve did not converge. ValueError names a bad argument.
-    """
-@typing.overload
-def simulate(model: Particle, initial: ParticleState, dt: typing.SupportsFloat | typing.SupportsIndex, steps: typing.SupportsInt | typing.SupportsIndex, method: str = 'rk4', record_every: typing.SupportsInt | typing.SupportsIndex = 1, loads: typing.Any = None, gravity: typing.Any = None, t0: typing.SupportsFloat | typing.SupportsIndex = 0.0, scalar_first: bool = False) -> SimulationResult:
-    """
-    Integrate `model` from `initial` over `steps` fixed steps of `dt` [s] with `method` (see methods()),
-    in C++ with the GIL released, and record every `record_every`-th step (plus the first and the last).
-    
-    model/initial: Particle/ParticleState, PlanarBody/PlanarBodyState or RigidBody/RigidBodyState.
-    loads: an AppliedLoad or a sequence of them (piecewise-constant schedule; the loads active at the start
-      of a step act during the whole step). gravity: None/False (none), True ((0, 0, -9.81) m/s^2 in W) or a
-      3-vector [m/s^2] in W. t0: initial time [s]. scalar_first: quaternions as (w, x, y, z).
-    
-    Returns a SimulationResult, arrays with one row per record (n records): t (n,) [s]; p_W (n, 3) [m];
-    q_WB (n, 4) (x, y, z, w); v_W (n, 3) [m/s]; w_B (n, 3) [rad/s]; kinetic_energy (n,) [J];
-    total_energy (n,) kinetic + gravity potential [J]; angular_momentum_norm (n,) |H_G| [kg m^2/s];
-    quaternion_norm_error (n,) |q| - 1; work (n,) work of loads and gravity since t0 [J], integrated by the
-    same method (kinetic_energy - kinetic_energy[0] ~ work); diverged; unconverged_steps (implicit solves that
-    hit their iteration cap); elapsed_seconds (C++ loop wall time).
-    A particle records q = identity, w = 0; a planar body p = (x, y, 0), q = Rz(theta), w = (0, 0, omega).
-    Warns RuntimeWarning and stops if the state becomes non-finite; warns RuntimeWarning (naming dt and the
-    count) if an implicit solve did not converge. ValueError names a bad argument.
+    count) if an implicit solve did not converge. Ctrl-C stops the run within about 0.05 s with
+    KeyboardInterrupt (no result is kept). ValueError names a bad argument, also a recording larger than the
+    memory available (record_every, with both figures).
     """
 def solid_box(size: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
     """
     Solid box, edges size (3,) [m] along x, y, z. Density [kg/m^3]. Give exactly one of mass= [kg] or density=.
     """
-def solid_capsule(radius: typing.SupportsFloat | typing.SupportsIndex, length: typing.SupportsFloat | typing.SupportsIndex, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
+def solid_capsule(radius: typing.Any, length: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
     """
     Solid capsule along z: cylinder of the given length [m] plus two hemispherical caps of radius [m].
     Density [kg/m^3]. Give exactly one of mass= [kg] or density=.
     """
-def solid_cone(radius: typing.SupportsFloat | typing.SupportsIndex, height: typing.SupportsFloat | typing.SupportsIndex, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
+def solid_cone(radius: typing.Any, height: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
     """
     Solid cone, axis z, apex at z = 3h/4, base at z = -h/4 (com at origin): I_zz = 3/10 m r^2,
     I_xx = m (3/20 r^2 + 3/80 h^2). Density [kg/m^3]. Give exactly one of mass= [kg] or density=.
     """
-def solid_cylinder(radius: typing.SupportsFloat | typing.SupportsIndex, height: typing.SupportsFloat | typing.SupportsIndex, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
+def solid_cylinder(radius: typing.Any, height: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
     """
     Solid cylinder, axis z: I_zz = m r^2/2, I_xx = m (3 r^2 + h^2)/12. Density [kg/m^3]. Give exactly one of mass= [kg] or density=.
     """
@@ -1478,7 +1358,7 @@ def solid_mesh(vertices: typing.Any, faces: typing.Any, *, mass: typing.Any = No
     orientation. Give exactly one of mass= [kg] or density= [kg/m^3]. (rigiddyn.solid_mesh also accepts
     a trimesh object.)
     """
-def solid_sphere(radius: typing.SupportsFloat | typing.SupportsIndex, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
+def solid_sphere(radius: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
     """
     Solid sphere, radius [m]: I = 2/5 m r^2 1. Density [kg/m^3]. Give exactly one of mass= [kg] or density=.
     """
@@ -1487,34 +1367,24 @@ def solid_tetrahedron(vertices: typing.Any, *, mass: typing.Any = None, density:
     Solid tetrahedron with vertices (4, 3) [m], expressed in their frame. Density [kg/m^3]. Give exactly
     one of mass= [kg] or density=.
     """
-def spherical_shell(radius: typing.SupportsFloat | typing.SupportsIndex, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
+def spherical_shell(radius: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
     """
     Thin spherical surface [m]: I = 2/3 m r^2 1. Density [kg/m^2]. Give exactly one of mass= [kg] or density=.
     """
-@typing.overload
-def step(model: RigidBody, state: RigidBodyState, dt: typing.SupportsFloat | typing.SupportsIndex, method: str = 'rk4', loads: typing.Any = None, gravity: typing.Any = None, t: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> RigidBodyState:
+def step(model: typing.Any, state: typing.Any, dt: typing.Any, method: typing.Any = 'rk4', loads: typing.Any = None, gravity: typing.Any = None, t: typing.Any = None) -> typing.Any:
     """
-    One step of `method` (see methods()) of length dt [s] from `state` at time t [s] under `loads`
-    (AppliedLoad or sequence) and `gravity` (None/False, True for (0, 0, -9.81) m/s^2, or a 3-vector).
-    Returns the new state (same type as `state`). ValueError names a bad argument.
+    One step of `method` (see methods()) of length dt [s] from `state` at time t [s] to t + dt under `loads`
+    (AppliedLoad or sequence) and `gravity` (None/False, True for (0, 0, -9.81) m/s^2, or a 3-vector). A
+    step across a switch time of the loads is split there, as in simulate.
+    
+    t=None (default): returns the new state (same type as `state`); ValueError (naming t) if a load acts on a
+      time window (finite t_start or t_end), since the step then depends on the time.
+    t given: returns (new state, t + dt), e.g. `state, t = step(body, state, dt, loads=loads, t=t)` in a loop.
+    Warns RuntimeWarning if the new state is not finite, as simulate does. ValueError names a bad argument.
     """
-@typing.overload
-def step(model: PlanarBody, state: PlanarBodyState, dt: typing.SupportsFloat | typing.SupportsIndex, method: str = 'rk4', loads: typing.Any = None, gravity: typing.Any = None, t: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> PlanarBodyState:
+def symmetry_planes(masses: typing.Any, positions: typing.Any, tolerance: typing.Any = 1e-09) -> list:
     """
-    One step of `method` (see methods()) of length dt [s] from `state` at time t [s] under `loads`
-    (AppliedLoad or sequence) and `gravity` (None/False, True for (0, 0, -9.81) m/s^2, or a 3-vector).
-    Returns the new state (same type as `state`). ValueError names a bad argument.
-    """
-@typing.overload
-def step(model: Particle, state: ParticleState, dt: typing.SupportsFloat | typing.SupportsIndex, method: str = 'rk4', loads: typing.Any = None, gravity: typing.Any = None, t: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> ParticleState:
-    """
-    One step of `method` (see methods()) of length dt [s] from `state` at time t [s] under `loads`
-    (AppliedLoad or sequence) and `gravity` (None/False, True for (0, 0, -9.81) m/s^2, or a 3-vector).
-    Returns the new state (same type as `state`). ValueError names a bad argument.
-    """
-def symmetry_planes(masses: typing.Any, positions: typing.Any, tolerance: typing.SupportsFloat | typing.SupportsIndex = 1e-09) -> list:
-    """
-    Planes of symmetry (seed 001 "Plane of Symmetry") of point masses (n,) [kg] > 0 at positions
+    Planes of symmetry (Craig "Plane of Symmetry") of point masses (n,) [kg] > 0 at positions
     (n, 3) [m]: the planes whose reflection maps every point onto a point of equal mass, within
     tolerance * (largest distance from the centre of mass to a point) [m] and tolerance * mass.
     Returns a list of (normal (3,) unit, largest-magnitude component positive; point (3,) [m] = the
@@ -1522,15 +1392,15 @@ def symmetry_planes(masses: typing.Any, positions: typing.Any, tolerance: typing
     moments coincide, normals built from the points (rigiddyn/inertia/symmetry.hpp); for such
     degenerate bodies (cube, regular tetrahedron) the planes found among them, not a proof of none else.
     """
-def thin_disk(radius: typing.SupportsFloat | typing.SupportsIndex, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
+def thin_disk(radius: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
     """
     Thin disk in the xy plane: I = m r^2 diag(1/4, 1/4, 1/2). Density [kg/m^2]. Give exactly one of mass= [kg] or density=.
     """
-def thin_plate(size_x: typing.SupportsFloat | typing.SupportsIndex, size_y: typing.SupportsFloat | typing.SupportsIndex, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
+def thin_plate(size_x: typing.Any, size_y: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
     """
     Thin plate in the xy plane: I = m/12 diag(b^2, a^2, a^2 + b^2). Density [kg/m^2]. Give exactly one of mass= [kg] or density=.
     """
-def thin_rod(length: typing.SupportsFloat | typing.SupportsIndex, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
+def thin_rod(length: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
     """
     Thin rod along z: I_xx = I_yy = m L^2/12. Density [kg/m]. Give exactly one of mass= [kg] or density=.
     """
@@ -1546,9 +1416,10 @@ def transform_points(R_AB: typing.Any, p_AB: typing.Any, p_B: typing.Any) -> num
     """
 def transport_derivative(w_AB: typing.Any, u: typing.Any, du_dt_in_B: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
     """
-    Transport theorem (seed 001): d^A u/dt = d^B u/dt + w_AB x u. All (3,), expressed in one frame.
+    Transport theorem (Craig's "Rigid Body Dynamics" slides): d^A u/dt = d^B u/dt + w_AB x u. All (3,),
+    expressed in one frame.
     """
-def twist_to_screw(twist: Motion) -> Screw:
+def twist_to_screw(twist: typing.Any) -> Screw:
     """
     The screw (instantaneous screw axis) of a twist [w; v]: direction w/|w|, point (w x v)/|w|^2,
     pitch (w . v)/|w|^2, magnitude |w|; for w = 0: pitch inf, direction v/|v|, point 0, magnitude |v|.

@@ -8,22 +8,46 @@ same name. trimesh itself is never imported here.
 
 from __future__ import annotations
 
-from typing import Any, Optional, Tuple
+from typing import Any, Callable, Optional, Tuple
+
+import numpy as np
 
 from . import _core
 
 __all__ = ["solid_mesh", "mesh_shell"]
 
 
+def _is_mesh(obj: Any) -> bool:
+    return hasattr(obj, "vertices") and hasattr(obj, "faces")
+
+
 def _vertices_faces(mesh_or_vertices: Any, faces: Any) -> Tuple[Any, Any]:
     if faces is not None:
         return mesh_or_vertices, faces
-    if hasattr(mesh_or_vertices, "vertices") and hasattr(mesh_or_vertices, "faces"):
+    if _is_mesh(mesh_or_vertices):
         return mesh_or_vertices.vertices, mesh_or_vertices.faces
+    if isinstance(mesh_or_vertices, (np.ndarray, list, tuple)):  # vertices given, their faces missing
+        raise TypeError("faces: expected the (f, 3) integer faces of the vertices given as mesh_or_vertices, got None")
     raise TypeError(
-        "mesh: expected a mesh object with .vertices and .faces (e.g. trimesh.Trimesh) or "
-        f"(vertices, faces) arrays, got {type(mesh_or_vertices).__name__} without faces"
+        "mesh_or_vertices: expected a mesh object with .vertices and .faces (e.g. trimesh.Trimesh) or "
+        f"(vertices, faces) arrays, got {type(mesh_or_vertices).__name__} {mesh_or_vertices!r:.60}"
     )
+
+
+def _call_core(build: Callable[..., _core.SpatialInertia], mesh_or_vertices: Any, faces: Any,
+               mass: Optional[float], density: Optional[float]) -> _core.SpatialInertia:
+    """build(vertices, faces, ...) with the core's "vertices: ..." errors (TypeError, ValueError,
+    MemoryError) addressed to this function's argument (mesh_or_vertices, or mesh_or_vertices.vertices
+    for a mesh object)."""
+    vertices, faces = _vertices_faces(mesh_or_vertices, faces)
+    try:
+        return build(vertices, faces, mass=mass, density=density)
+    except (TypeError, ValueError, MemoryError) as error:  # MemoryError: a copy too large to allocate
+        message = str(error)
+        if not message.startswith("vertices"):
+            raise
+        name = "mesh_or_vertices.vertices" if _is_mesh(mesh_or_vertices) else "mesh_or_vertices"
+        raise type(error)(name + message[len("vertices"):]) from None
 
 
 def solid_mesh(
@@ -38,8 +62,7 @@ def solid_mesh(
     Give exactly one of ``mass`` [kg] or ``density`` [kg/m^3]. Raises ValueError naming the first
     open or inconsistently oriented edge, or an inward orientation (negative volume).
     """
-    vertices, faces = _vertices_faces(mesh_or_vertices, faces)
-    return _core.solid_mesh(vertices, faces, mass=mass, density=density)
+    return _call_core(_core.solid_mesh, mesh_or_vertices, faces, mass, density)
 
 
 def mesh_shell(
@@ -50,5 +73,4 @@ def mesh_shell(
     density: Optional[float] = None,
 ) -> _core.SpatialInertia:
     """Thin shell made of the mesh's faces (need not be closed); ``density`` in [kg/m^2]."""
-    vertices, faces = _vertices_faces(mesh_or_vertices, faces)
-    return _core.mesh_shell(vertices, faces, mass=mass, density=density)
+    return _call_core(_core.mesh_shell, mesh_or_vertices, faces, mass, density)

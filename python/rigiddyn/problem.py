@@ -35,7 +35,9 @@ A problem file (SI units, frames as in docs/conventions.md)::
     tolerance = 1e-6
     measure = "final_attitude_error"
 
-Every error is a ValueError "<field>: expected ..., got ...".
+Every error in a file is a ValueError "<field>: expected ..., got ..." (a value of the wrong TOML type
+included); Problem and Load built directly check their fields the same way, with TypeError for a
+value of the wrong type.
 """
 
 from __future__ import annotations
@@ -85,6 +87,41 @@ def _fail(name: str, expected: str, got: Any) -> ValueError:
     return ValueError(f"{name}: expected {expected}, got {got!r}")
 
 
+def _type_fail(name: str, expected: str, got: Any) -> TypeError:
+    return TypeError(f"{name}: expected {expected}, got {type(got).__name__} {got!r:.60}")
+
+
+def _string(value: Any, name: str) -> str:
+    if not isinstance(value, str):
+        raise _type_fail(name, "a string", value)
+    return value
+
+
+def _flag(value: Any, name: str) -> bool:
+    if not isinstance(value, (bool, np.bool_)):
+        raise _type_fail(name, "True or False", value)
+    return bool(value)
+
+
+def _array(value: Any, name: str, shape: tuple[int, ...]) -> np.ndarray:
+    """A finite float64 copy of `value` (any array-like of real numbers) of exactly `shape`."""
+    expected = f"an array of real numbers of shape {shape}"
+    if value is None or isinstance(value, (str, bytes, Mapping)):
+        raise _type_fail(name, expected, value)
+    try:
+        a = np.asarray(value)
+    except ValueError:
+        raise _fail(name, expected, value) from None
+    if a.dtype.kind not in "biuf":
+        raise _type_fail(name, expected, value)
+    if a.shape != shape:
+        raise _fail(name, expected, f"shape {a.shape}")
+    a = a.astype(np.float64)
+    if not np.all(np.isfinite(a)):
+        raise _fail(name, "finite values", a.tolist())
+    return a
+
+
 def _number(value: Any, name: str, positive: bool = False) -> float:
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         raise _fail(name, "a number", value)
@@ -120,6 +157,22 @@ class Load:
     t_start: float = -math.inf
     t_end: float = math.inf
 
+    def __post_init__(self) -> None:
+        """Checks every field (TypeError/ValueError naming it); stores the vectors as float64 (3,)."""
+        object.__setattr__(self, "force", _array(self.force, "force", (3,)))
+        object.__setattr__(self, "torque", _array(self.torque, "torque", (3,)))
+        if _string(self.frame, "frame") not in ("world", "body"):
+            raise _fail("frame", "'world' or 'body'", self.frame)
+        for key in ("t_start", "t_end"):
+            value = getattr(self, key)
+            if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)):
+                raise _type_fail(key, "a time [s] (+-inf allowed)", value)
+            if math.isnan(value):
+                raise _fail(key, "a time [s] (+-inf allowed)", value)
+            object.__setattr__(self, key, float(value))
+        if not self.t_start < self.t_end:
+            raise _fail("t_end", f"a time > t_start = {self.t_start}", self.t_end)
+
     def applied_load(self) -> _core.AppliedLoad:
         return _core.AppliedLoad(self.force, self.torque, self.frame, self.t_start, self.t_end)
 
@@ -144,6 +197,45 @@ class Problem:
     description: str = ""
     tradeoff: Mapping[str, Any] = field(default_factory=dict)
     source: str | None = None
+
+    def __post_init__(self) -> None:
+        """Checks every field as a problem file's are checked (TypeError/ValueError naming it: finite,
+        mass and horizon > 0, a valid inertia, a unit quaternion, loads of type Load); stores the
+        vectors as float64 arrays and q_WB normalised."""
+        def setf(key: str, value: Any) -> None:  # a frozen dataclass sets its fields this way
+            object.__setattr__(self, key, value)
+
+        _string(self.name, "name")
+        _string(self.description, "description")
+        if self.source is not None:
+            _string(self.source, "source")
+        if isinstance(self.mass, bool) or not isinstance(self.mass, (int, float, np.integer, np.floating)):
+            raise _type_fail("mass", "a mass [kg] > 0", self.mass)
+        setf("mass", _number(float(self.mass), "mass", positive=True))
+        if isinstance(self.horizon, bool) or not isinstance(self.horizon, (int, float, np.integer, np.floating)):
+            raise _type_fail("horizon", "a time span [s] > 0", self.horizon)
+        setf("horizon", _number(float(self.horizon), "horizon", positive=True))
+        setf("inertia_com", _array(self.inertia_com, "inertia_com", (3, 3)))
+        for key in ("p_W", "v_W", "w_B", "gravity"):
+            setf(key, _array(getattr(self, key), key, (3,)))
+        q = _array(self.q_WB, "q_WB", (4,))
+        if abs(np.linalg.norm(q) - 1.0) > 1e-6:
+            raise _fail("q_WB", "a unit quaternion (x, y, z, w) (| |q| - 1 | <= 1e-6)", q.tolist())
+        setf("q_WB", q / np.linalg.norm(q))
+        if isinstance(self.loads, (str, bytes)) or not isinstance(self.loads, (tuple, list)):
+            raise _type_fail("loads", "a sequence of Load", self.loads)
+        for i, load in enumerate(self.loads):
+            if not isinstance(load, Load):
+                raise _type_fail(f"loads[{i}]", "a Load", load)
+        setf("loads", tuple(self.loads))
+        _flag(self.require_triangle_inequality, "require_triangle_inequality")
+        if not isinstance(self.tradeoff, Mapping):
+            raise _type_fail("tradeoff", "a mapping of sweep defaults (methods, dts, tolerance, measure)", self.tradeoff)
+        setf("tradeoff", _tradeoff_defaults(self.tradeoff))
+        try:
+            _core.RigidBody(self.mass, self.inertia_com, self.require_triangle_inequality)
+        except ValueError as e:
+            raise _core_error(e, "inertia_com") from None
 
     def body(self) -> _core.RigidBody:
         return _core.RigidBody(self.mass, self.inertia_com, self.require_triangle_inequality)
@@ -173,14 +265,25 @@ class Problem:
         """rigiddyn.simulate of this problem (steps default: round(horizon / dt)), after a
         StabilityWarning if dt is beyond the method's linear stability limit for the initial spin
         (rigiddyn.stability). Returns the SimulationResult."""
+        _string(method, "method")
+        if isinstance(dt, bool) or not isinstance(dt, (int, float, np.integer, np.floating)):
+            raise _type_fail("dt", "a time step [s] > 0", dt)
+        dt = _number(float(dt), "dt", positive=True)
+        if steps is not None and (isinstance(steps, bool) or not isinstance(steps, (int, np.integer))):
+            raise _type_fail("steps", "an integer >= 1 (or None: round(horizon / dt))", steps)
+        if isinstance(record_every, bool) or not isinstance(record_every, (int, np.integer)):
+            raise _type_fail("record_every", "an integer >= 1", record_every)
         steps = max(1, round(self.horizon / dt)) if steps is None else steps
         warn_if_unstable(method, dt, steps, self.inertia_com, self.w_B, self.torque_free, stacklevel=2)
         return _core.simulate(self.body(), self.initial_state(), dt, steps, method, record_every=record_every,
                               loads=self.applied_loads(), gravity=self.gravity)
 
     def with_horizon(self, horizon: float) -> Problem:
+        """This problem with another horizon [s] > 0."""
         from dataclasses import replace
 
+        if isinstance(horizon, (np.integer, np.floating)):
+            horizon = float(horizon)
         return replace(self, horizon=_number(horizon, "horizon", positive=True))
 
 
@@ -213,7 +316,7 @@ def _primitive(table: Any) -> tuple[Any, ...]:
     if not isinstance(table, Mapping) or "shape" not in table:
         raise _fail(f"{name}.shape", "one of " + ", ".join(PRIMITIVES), table.get("shape") if isinstance(table, Mapping) else table)
     shape = table["shape"]
-    if shape not in PRIMITIVES:
+    if not isinstance(shape, str) or shape not in PRIMITIVES:
         raise _fail(f"{name}.shape", "one of " + ", ".join(PRIMITIVES), shape)
     args = PRIMITIVES[shape]
     _table(table, name, {"shape", "mass", "density", *args})
@@ -223,8 +326,9 @@ def _primitive(table: Any) -> tuple[Any, ...]:
             raise _fail(f"{name}.{arg}", f"a value (shape {shape!r} needs {', '.join(args)})", "nothing")
         values.append(_vector(table[arg], f"{name}.{arg}") if arg in _VECTOR_ARGS else
                       _number(table[arg], f"{name}.{arg}", positive=True))
+    mass_or_density = _mass_or_density(table, name)  # its own errors name body.primitive.mass/density
     try:
-        inertia = getattr(_core, shape)(*values, **_mass_or_density(table, name))
+        inertia = getattr(_core, shape)(*values, **mass_or_density)
     except ValueError as e:
         raise _core_error(e, name, args) from None
     return inertia.mass, np.array(inertia.inertia_com)
@@ -244,11 +348,11 @@ def _mesh(table: Any, base: Path | None) -> tuple[Any, ...]:
         import trimesh
     except ImportError:
         raise ImportError("body.mesh: reading mesh files needs trimesh (pip install trimesh)") from None
+    mass_or_density = _mass_or_density(table, name)  # its own errors name body.mesh.mass/density
     mesh = trimesh.load(str(path), force="mesh")
     try:
         inertia = _core.solid_mesh(np.asarray(getattr(mesh, "vertices"), float),  # a trimesh.Trimesh
-                                   np.asarray(getattr(mesh, "faces"), np.int64),
-                                   **_mass_or_density(table, name))
+                                   np.asarray(getattr(mesh, "faces"), np.int64), **mass_or_density)
     except ValueError as e:
         raise _core_error(e, name) from None
     return inertia.mass, np.array(inertia.inertia_com)
@@ -335,12 +439,15 @@ def _tradeoff_defaults(value: Any) -> dict[str, Any]:
         if not isinstance(methods, list) or not methods:
             raise _fail("tradeoff.methods", "a non-empty array of method names", methods)
         for i, m in enumerate(methods):
-            if m not in names:
+            if not isinstance(m, str) or m not in names:  # a list or table is no name (nor hashable)
                 raise _fail(f"tradeoff.methods[{i}]", "one of " + ", ".join(sorted(names)), m)
     if "tolerance" in table:
         table["tolerance"] = _number(table["tolerance"], "tradeoff.tolerance", positive=True)
-    if "measure" in table and not isinstance(table["measure"], str):
-        raise _fail("tradeoff.measure", "a measure name", table["measure"])
+    if "measure" in table:
+        from .tradeoff import MEASURES  # imported here: rigiddyn.tradeoff imports this module
+
+        if not isinstance(table["measure"], str) or table["measure"] not in MEASURES:
+            raise _fail("tradeoff.measure", "one of " + ", ".join(MEASURES), table["measure"])
     return table
 
 
@@ -371,21 +478,25 @@ def example_problems() -> list[str]:
     return sorted(p.stem for p in _EXAMPLES_DIR.glob("*.toml"))
 
 
-def example_path(name: str) -> Path:
+def example_path(name: str, argument: str = "name") -> Path:
+    """The file of the shipped example `name` (ValueError naming `argument` for an unknown one)."""
+    _string(name, argument)
     path = _EXAMPLES_DIR / f"{name}.toml"
     if not path.is_file():
-        raise _fail("problem", "a .toml path or one of the examples " + ", ".join(example_problems()), name)
+        raise _fail(argument, "a .toml path or one of the examples " + ", ".join(example_problems()), name)
     return path
 
 
 def load_problem(path_or_name: str | Path) -> Problem:
     """Read a TOML problem file, or a shipped example by name (see example_problems())."""
+    expected = "an existing .toml file or one of the examples " + ", ".join(example_problems())
+    if not isinstance(path_or_name, (str, Path)):
+        raise _type_fail("path_or_name", expected, path_or_name)
     path = Path(path_or_name)
     if not path.is_file():
         if path.suffix or len(path.parts) > 1:
-            raise _fail("problem", "an existing .toml file or one of the examples " + ", ".join(example_problems()),
-                        str(path_or_name))
-        path = example_path(str(path_or_name))
+            raise _fail("path_or_name", expected, str(path_or_name))
+        path = example_path(str(path_or_name), "path_or_name")
     with open(path, "rb") as f:
         try:
             data = tomllib.load(f)

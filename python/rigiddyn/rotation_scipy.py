@@ -54,6 +54,8 @@ def from_scipy(rotation: Any, scalar_first: bool = False) -> npt.NDArray[np.floa
     ``scalar_first``. TypeError naming ``rotation`` for anything but a Rotation.
     """
     Rotation = _rotation_class()
+    if not isinstance(scalar_first, (bool, np.bool_)):
+        raise TypeError(f"scalar_first: expected True or False, got {type(scalar_first).__name__} {scalar_first!r:.60}")
     if not isinstance(rotation, Rotation):
         raise TypeError(
             f"rotation: expected a scipy.spatial.transform.Rotation, got {type(rotation).__name__}"

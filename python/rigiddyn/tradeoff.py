@@ -7,8 +7,19 @@ compares every recorded state with a reference at the same times:
 - ``"exact"`` when the problem has a closed form: torque-free rotation (`TorqueFreeSolution`,
   Euler-Poinsot) and a centre of mass under gravity and world-fixed piecewise-constant forces
   (p = p0 + v0 t + a t^2/2 on each piece);
-- ``"richardson"`` otherwise: the highest-order method at dt/2^j, refined (j = 1, 2, ...) until its
-  Richardson estimate |y_{h/2} - y_h| / (2^p - 1) is below a tenth of the errors it referees.
+- ``"richardson(<method>)"`` otherwise: the highest-order method at dt/2^j, refined (j = 1, 2, ...)
+  until its Richardson estimate |y_{h/2} - y_h| / (2^p - 1) is below REFERENCE_TARGET x the errors
+  it referees. That estimate only holds in the method's asymptotic range, so the reference is checked
+  against a second, independent one: SciPy's DOP853 (another method family, adaptive, run in pieces
+  between the switch times of the loads) at rtol DOP853_RTOL, its own error estimated by a second
+  run at 10 x rtol; without SciPy, or beyond DOP853_MAX_STEPS, the other 4th-order family of the
+  core (splitting or Runge-Kutta-Munthe-Kaas) at the reference's finest step, with its own
+  Richardson estimate. If the two disagree by more than CHECK_FACTOR x the Richardson estimate
+  (plus the second reference's own error), the reference is reported ``"unreliable: ..."``.
+  reference_error is the larger of the Richardson estimate and the disagreement less the second
+  reference's error (what the reference's error must at least be); reference_check says what was
+  compared. Loads switching inside a step cost no accuracy: `simulate` splits such a step at the
+  switch time, so every method keeps its order.
 
 Error measures (the SciML work-precision convention, shared/notes/free-rigid-body.md), "final_"
 at the horizon and "max_" over the recorded states:
@@ -20,10 +31,16 @@ at the horizon and "max_" over the recorded states:
   energy_drift    max_t |T - T_ref| / max_t T_ref (kinetic energy)
   momentum_drift  max_t ||I w| - |I w_ref|| / max_t |I w_ref| (|L| drift)
   quaternion_norm_error  max_t ||q| - 1|
-observed_order: slope of log(measure) against log(dt) from the next larger dt of the same method;
-  nan (not applicable) for a method that is exact on the problem (order 0, or exact_torque_free on a
-  torque-free problem: its error is round-off at every dt) and where either error is round-off
-  (below ROUND_OFF_PER_STEP x steps), whose slope says nothing about the truncation error.
+observed_order: slope of log(measure) against log(dt) between a run and the next larger dt of the
+  same method, reported only in the asymptotic range: both errors above the floor (round-off,
+  ROUND_OFF_PER_STEP x steps, and REFERENCE_MARGIN x reference_error) and the slope agreeing
+  with a neighbouring pair's (within ORDER_AGREEMENT, relative). Otherwise nan, with the reason in
+  order_note; also nan for a method that is exact on the problem (order 0, or exact_torque_free
+  on a torque-free problem: its error is round-off at every dt).
+
+Before the sweep, a short timed probe of every method estimates the sweep's cost, printed on stderr
+(progress=True), and a progress bar in steps follows the runs while stderr is a terminal (tqdm if
+installed, else a plain one).
 """
 
 from __future__ import annotations
@@ -32,9 +49,11 @@ import csv
 import io
 import json
 import math
+import os
 import sys
+import time
 import warnings
-from collections.abc import Iterable, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence, Sized
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -51,12 +70,23 @@ _QUANTITIES = ("state_error", "attitude_error", "momentum_error", "position_erro
 MEASURES = tuple(f"{w}_{q}" for q in _QUANTITIES for w in ("final", "max")) + (
     "energy_drift", "momentum_drift", "quaternion_norm_error")
 COLUMNS = ("method", "dt", "steps", "order", "evaluations_per_step", "time_per_step", "total_time",
-           "total_evaluations") + MEASURES + ("observed_order", "reference", "reference_error", "diverged",
-                                              "stability")
+           "total_evaluations") + MEASURES + ("observed_order", "order_note", "reference", "reference_error",
+                                              "reference_check", "diverged", "stability")
 _COSTS = {"time": "total_time", "evaluations": "total_evaluations"}
 SAMPLES = 200  # states compared per run (every k-th step)
-ROUND_OFF_PER_STEP = 100 * np.finfo(float).eps  # errors below this x steps are round-off
+ROUND_OFF_PER_STEP = np.finfo(float).eps  # errors below this x steps (one ulp per step) may be round-off
 MIN_TIMED_SECONDS = 2e-2  # time each run at least twice, up to 5 times until this much; keep the fastest
+LONG_RUN_SECONDS = 0.5  # a run this long is timed once
+REFERENCE_TARGET = 0.01  # the Richardson reference is refined until its error is this x the runs' errors
+REFERENCE_MARGIN = 10.0  # an error within this factor of the reference's says nothing about the method
+ORDER_AGREEMENT = 0.1  # neighbouring slopes p, p' agree if |p - p'| <= this x max(|p|, |p'|, 1)
+CHECK_FACTOR = 10.0  # the second reference may disagree by this x the Richardson estimate (+ its own error)
+DOP853_RTOL = 1e-13  # the independent reference's relative tolerance (its error: a second run at 10x)
+DOP853_MAX_STEPS = 100_000  # per DOP853 run; beyond it the check uses the core's other 4th-order family
+MAX_STEPS = 2**53  # steps of one run at most (exact in a float; far beyond any run that ends)
+MAX_DTS = 64  # step sizes of one tradeoff at most (one run each; 8 halvings by default)
+PROBE_STEPS = 2000  # steps of each method's timed probe for the cost estimate
+_EPS = np.finfo(float).eps
 
 
 # ---------------------------------------------------------------------------------------------
@@ -163,16 +193,28 @@ class _Run:
     time_per_step: float
 
 
-def _simulate(problem: Problem, method: str, dt: float, steps: int, record_every: int, timed: bool) -> _Run:
-    body, initial, loads = problem.body(), problem.initial_state(), problem.applied_loads()
+def _core_simulate(problem: Problem, method: str, dt: float, steps: int, record_every: int,
+                   progress: Callable[[int], None] | None = None) -> Any:
+    """_core.simulate of `problem` (its non-finite and convergence warnings are the sweep's rows)."""
+    with warnings.catch_warnings():
+        warnings.filterwarnings("ignore", message="simulate: the state became non-finite", category=RuntimeWarning)
+        warnings.filterwarnings("ignore", message="simulate: the implicit solve", category=RuntimeWarning)
+        return _core.simulate(problem.body(), problem.initial_state(), dt, steps, method, record_every=record_every,
+                              loads=problem.applied_loads(), gravity=problem.gravity, progress=progress)
+
+
+def _simulate(problem: Problem, method: str, dt: float, steps: int, record_every: int, timed: bool,
+              bar: _Progress | None = None) -> _Run:
+    """One run of `method`; timed: repeated (up to 5 times, until MIN_TIMED_SECONDS, once if longer than
+    LONG_RUN_SECONDS) keeping the fastest time per step. `bar` follows the steps."""
     best, spent = math.inf, 0.0
     for repeat in range(5 if timed else 1):
-        with warnings.catch_warnings():
-            warnings.filterwarnings("ignore", message="simulate: the state became non-finite", category=RuntimeWarning)
-            result = _core.simulate(body, initial, dt, steps, method, record_every=record_every, loads=loads,
-                                    gravity=problem.gravity)
+        at = bar.begin(steps, f"{method} dt={dt:.3g}") if bar is not None else None
+        result = _core_simulate(problem, method, dt, steps, record_every, at)
+        if bar is not None:
+            bar.end(steps)
         best, spent = min(best, result.elapsed_seconds / max(steps, 1)), spent + result.elapsed_seconds
-        if result.diverged or (repeat >= 1 and spent >= MIN_TIMED_SECONDS):
+        if result.diverged or spent >= LONG_RUN_SECONDS or (repeat >= 1 and spent >= MIN_TIMED_SECONDS):
             break
     return _Run(_states(result), np.asarray(result.quaternion_norm_error), bool(result.diverged), best)
 
@@ -182,16 +224,27 @@ def _reference_method(methods_info: dict[str, dict[str, Any]]) -> str:
     return str(max(methods_info.values(), key=lambda m: (m["order"], "SO(3)" in m["conserves"]))["name"])
 
 
+@dataclass
+class _Reference:
+    """A refined reference: its states, the Richardson estimate of its error per measure, the
+    refinement sub (its finest step is dt / sub) and the record_every of that finest run."""
+
+    states: States
+    estimate: dict[str, float]
+    sub: int
+    record_every: int
+
+
 def _richardson_reference(problem: Problem, method: str, order: int, dt: float, steps: int, record_every: int,
-                          runs: Sequence[_Run], max_steps: int) -> tuple[States, dict[str, float]]:
-    """(reference States, estimate of its error per measure): `method` at dt/2^j, j = 1, 2, ..., until
-    the Richardson estimate of max_state_error is below a tenth of every run's error, hits round-off,
-    or the next refinement would exceed max_steps."""
+                          runs: Sequence[_Run], max_steps: int, bar: _Progress | None = None) -> _Reference:
+    """`method` at dt/2^j, j = 1, 2, ..., until the Richardson estimate of max_state_error is below
+    REFERENCE_TARGET x every run's error, hits round-off, or the next refinement would exceed max_steps."""
     zeros = np.zeros(1)
     sub = 2
-    coarse = _simulate(problem, method, dt / sub, steps * sub, record_every * sub, timed=False)
+    coarse = _simulate(problem, method, dt / sub, steps * sub, record_every * sub, timed=False, bar=bar)
     while True:
-        fine = _simulate(problem, method, dt / (2 * sub), steps * 2 * sub, record_every * 2 * sub, timed=False)
+        fine = _simulate(problem, method, dt / (2 * sub), steps * 2 * sub, record_every * 2 * sub, timed=False,
+                         bar=bar)
         sub *= 2
         if fine.diverged or coarse.diverged:
             coarse = fine
@@ -200,10 +253,280 @@ def _richardson_reference(problem: Problem, method: str, order: int, dt: float, 
             continue
         estimate = {k: v / (2**order - 1) for k, v in _measures(problem, fine.states, coarse.states, zeros).items()}
         errors = [_measures(problem, r.states, fine.states, zeros)["max_state_error"] for r in runs if not r.diverged]
-        target = 0.1 * min(errors, default=0.0)
+        target = REFERENCE_TARGET * min(errors, default=0.0)
         if estimate["max_state_error"] <= max(target, 1e-14) or steps * 2 * sub > max_steps:
-            return fine.states, estimate
+            return _Reference(fine.states, estimate, sub, record_every * sub)
         coarse = fine
+
+
+# ---------------------------------------------------------------------------------------------
+# the independent reference that checks the Richardson one
+
+
+def _switch_times(problem: Problem) -> list[float]:
+    """The times in (0, horizon) at which the problem's loads switch."""
+    return sorted({b for load in problem.loads for b in (load.t_start, load.t_end) if 0.0 < b < problem.horizon})
+
+
+def _rate(problem: Problem, t: float) -> Callable[[float, np.ndarray], np.ndarray]:
+    """The Newton-Euler equations (rigid_body.hpp) of `problem` under the loads active at time t [s], on
+    y = (p_W, q_WB (x, y, z, w), v_W, w_B): p' = v, q' = q (x) (w, 0) / 2, m v' = f_W + R f_B + m g,
+    I w' = n_B + R^T n_W - w x I w (R of q / |q|). Written apart from the core: a second opinion."""
+    active = [load for load in problem.loads if load.t_start <= t < load.t_end]
+    f_W, f_B, n_W, n_B = (sum((getattr(load, kind) for load in active if load.frame == frame), np.zeros(3))
+                          for kind, frame in (("force", "world"), ("force", "body"), ("torque", "world"),
+                                              ("torque", "body")))
+    # plain floats: np.cross on 3-vectors costs more than the whole rate in scalars
+    inertia, inverse = problem.inertia_com.tolist(), np.linalg.inv(problem.inertia_com).tolist()
+    a_W = ((f_W + problem.mass * problem.gravity) / problem.mass).tolist()  # world-fixed acceleration
+    a_B, couple_W, couple_B = (f_B / problem.mass).tolist(), n_W.tolist(), n_B.tolist()
+
+    def cross(a: Sequence[float], b: Sequence[float]) -> list[float]:
+        return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+
+    def rotate(u: Sequence[float], u_w: float, x: Sequence[float]) -> list[float]:
+        """x turned by the unit quaternion (u, u_w): x + 2 u_w (u x x) + 2 u x (u x x)."""
+        twice = [2.0 * c for c in cross(u, x)]
+        again = cross(u, twice)
+        return [x[i] + u_w * twice[i] + again[i] for i in range(3)]
+
+    def matrix_times(m: list[list[float]], x: Sequence[float]) -> list[float]:
+        return [m[i][0] * x[0] + m[i][1] * x[1] + m[i][2] * x[2] for i in range(3)]
+
+    def rate(_: float, y: np.ndarray) -> np.ndarray:
+        _, _, _, x, yq, z, s, v0, v1, v2, w0, w1, w2 = y.tolist()
+        q_vec, w = (x, yq, z), (w0, w1, w2)
+        scale = 1.0 / math.sqrt(x * x + yq * yq + z * z + s * s)
+        u = (x * scale, yq * scale, z * scale)
+        q_x_w = cross(q_vec, w)
+        turned_a = rotate(u, s * scale, a_B)
+        turned_n = rotate((-u[0], -u[1], -u[2]), s * scale, couple_W)
+        gyro = cross(w, matrix_times(inertia, w))
+        alpha = matrix_times(inverse, [couple_B[i] + turned_n[i] - gyro[i] for i in range(3)])
+        return np.array([v0, v1, v2,
+                         0.5 * (s * w0 + q_x_w[0]), 0.5 * (s * w1 + q_x_w[1]), 0.5 * (s * w2 + q_x_w[2]),
+                         -0.5 * (x * w0 + yq * w1 + z * w2),
+                         a_W[0] + turned_a[0], a_W[1] + turned_a[1], a_W[2] + turned_a[2], *alpha])
+
+    return rate
+
+
+def _dop853_states(problem: Problem, times: np.ndarray, rtol: float, max_steps: int) -> States | None:
+    """The states of `problem` at `times` (ascending, in [0, horizon]) by SciPy's DOP853 (dense
+    output), restarted at each switch time of the loads; None without SciPy or beyond max_steps."""
+    try:
+        from scipy.integrate import DOP853
+    except ImportError:
+        return None
+    y = np.concatenate([problem.p_W, problem.q_WB, problem.v_W, problem.w_B]).astype(float)
+    radius = math.sqrt(np.trace(problem.inertia_com) / (2.0 * problem.mass))
+    rate_scale = max(float(np.linalg.norm(problem.w_B)), 1.0 / problem.horizon)
+    length = max(radius, float(np.linalg.norm(problem.p_W)))
+    speed = max(float(np.linalg.norm(problem.v_W)), radius * rate_scale)
+    atol = rtol * np.repeat([length, 1.0, speed, rate_scale], [3, 4, 3, 3])
+    out = np.empty((times.size, 13))
+    k = int(np.searchsorted(times, 0.0, side="right"))
+    out[:k] = y
+    edges = [0.0] + _switch_times(problem) + [problem.horizon]
+    taken = 0
+    for start, end in zip(edges[:-1], edges[1:]):
+        solver = DOP853(_rate(problem, start), start, y, end, rtol=rtol, atol=atol)
+        while solver.status == "running":
+            solver.step()
+            taken += 1
+            if solver.status == "failed" or taken > max_steps:
+                return None
+            done = int(np.searchsorted(times, solver.t, side="right"))
+            if done > k:
+                out[k:done] = solver.dense_output()(times[k:done]).T
+                k = done
+        y = np.array(solver.y)
+        y[3:7] /= np.linalg.norm(y[3:7])
+    q = out[:, 3:7] / np.linalg.norm(out[:, 3:7], axis=1, keepdims=True)
+    return States(times, out[:, 0:3], q, out[:, 7:10], out[:, 10:13])
+
+
+def _at(states: States, times: np.ndarray) -> States:
+    """The rows of `states` (at a superset of `times`, both ascending) at `times`."""
+    rows = np.searchsorted(states.t, times)
+    return States(states.t[rows], states.p_W[rows], states.q_WB[rows], states.v_W[rows], states.w_B[rows])
+
+
+@dataclass
+class _Independent:
+    """The second reference for one step grid: its states, an estimate of its own error per measure and
+    its name (for reference_check)."""
+
+    states: States
+    error: dict[str, float]
+    name: str
+
+
+def _dop853_reference(problem: Problem, times: np.ndarray) -> Callable[[np.ndarray], _Independent] | None:
+    """DOP853 at DOP853_RTOL over all `times`, its error from a second run at 10 x rtol: a function of
+    the times of one grid; None when not available (no SciPy, or too many steps)."""
+    tight = _dop853_states(problem, times, DOP853_RTOL, DOP853_MAX_STEPS)
+    loose = _dop853_states(problem, times, 10 * DOP853_RTOL, DOP853_MAX_STEPS) if tight is not None else None
+    if tight is None or loose is None:
+        return None
+    zeros = np.zeros(1)
+
+    def at(t: np.ndarray) -> _Independent:
+        a, b = _at(tight, t), _at(loose, t)
+        return _Independent(a, _measures(problem, b, a, zeros), f"dop853(rtol={DOP853_RTOL:g})")
+
+    return at
+
+
+def _other_family(ref_method: str, info: dict[str, dict[str, Any]]) -> str:
+    """A method of the reference's order from another family (splitting against Runge-Kutta)."""
+    order = info[ref_method]["order"]
+    splitting = "splitting" in ref_method
+    same_order = [m for m, i in info.items() if i["order"] == order and m != ref_method and
+                  ("splitting" in m) != splitting]
+    return same_order[0] if same_order else max((m for m in info if m != ref_method and info[m]["order"] > 0),
+                                                key=lambda m: info[m]["order"])
+
+
+def _family_reference(problem: Problem, method: str, order: int, dt: float, steps: int, every: int,
+                      bar: _Progress | None) -> _Independent:
+    """`method` at dt and 2 dt (steps, every: at dt; both even) with its Richardson error estimate."""
+    fine = _simulate(problem, method, dt, steps, every, timed=False, bar=bar)
+    coarse = _simulate(problem, method, 2 * dt, steps // 2, every // 2, timed=False, bar=bar)
+    error = {k: (math.inf if fine.diverged or coarse.diverged else v / (2**order - 1))
+             for k, v in _measures(problem, fine.states, coarse.states, np.zeros(1)).items()}
+    return _Independent(fine.states, error, f"{method}(dt={dt:.3g})")
+
+
+@dataclass
+class _Check:
+    """The Richardson reference checked against an independent one: reliable, reference error per
+    measure (max of the estimate and what the disagreement implies), and a sentence."""
+
+    reliable: bool
+    error: dict[str, float]
+    text: str
+
+
+def _check_reference(problem: Problem, ref: States, estimate: dict[str, float], independent: _Independent,
+                     steps: int) -> _Check:
+    """Compare the reference (Richardson `estimate` of its error, `steps` steps) with `independent`.
+    Their disagreement d bounds |e_ref| from below by d - e_ind; the reference is unreliable when that
+    bound exceeds CHECK_FACTOR x the estimate (and the round-off of `steps` steps)."""
+    d = _measures(problem, ref, independent.states, np.zeros(1))
+    lower = {k: max(0.0, d[k] - independent.error.get(k, 0.0)) for k in d}
+    error = {k: max(estimate.get(k, 0.0), lower[k]) for k in d}
+    key = "max_state_error"
+    reliable = lower[key] <= max(CHECK_FACTOR * estimate[key], ROUND_OFF_PER_STEP * steps)
+    if reliable:
+        text = f"{independent.name} agrees to {_fmt(d[key])} (its error {_fmt(independent.error.get(key, 0.0))})"
+    else:
+        text = (f"{independent.name} differs by {_fmt(d[key])} (its error {_fmt(independent.error.get(key, 0.0))}) "
+                f"where the Richardson estimate is {_fmt(estimate[key])}")
+    return _Check(reliable, error, text)
+
+
+# ---------------------------------------------------------------------------------------------
+# cost estimate and progress
+
+
+def _probe(problem: Problem, method: str, dt: float, steps: int) -> float:
+    """Wall time per step [s] of `method` at dt, from a short run (PROBE_STEPS steps at most)."""
+    n = max(1, min(steps, PROBE_STEPS))
+    return float(_core_simulate(problem, method, dt, n, n).elapsed_seconds / n)
+
+
+def _duration(seconds: float) -> str:
+    if not math.isfinite(seconds):
+        return "?"
+    for unit, size in (("d", 86400.0), ("h", 3600.0), ("min", 60.0)):
+        if seconds >= size:
+            return f"{seconds / size:.3g} {unit}"
+    return f"{seconds:.2g} s"
+
+
+@dataclass
+class _Estimate:
+    """The sweep's steps (runs once each and the least reference work) and their wall time [s]."""
+
+    steps: int
+    seconds: float
+    text: str
+
+
+def _estimate(problem: Problem, methods: Sequence[str], grid: Sequence[int], ref_method: str | None) -> _Estimate:
+    """Probe each method at the finest step, then sum steps x time per step over the sweep: each run
+    once, and (ref_method) the least Richardson reference (2 and 4 x the steps) and its check."""
+    finest = max(grid)
+    dt = problem.horizon / finest
+    per_step = {m: _probe(problem, m, dt, finest) for m in dict.fromkeys([*methods, *([ref_method] if ref_method else [])])}
+    steps = sum(grid) * len(methods)
+    seconds = sum(grid) * sum(per_step[m] for m in methods)
+    if ref_method is not None:
+        steps += 6 * sum(grid)
+        seconds += 6 * sum(grid) * per_step[ref_method]
+    probe = ", ".join(f"{m} {per_step[m] * 1e9:.3g}" for m in per_step)
+    text = (f"tradeoff: {problem.name}: {len(methods)} methods x {len(grid)} steps over {_fmt(problem.horizon)} s: "
+            f"about {steps:.3g} steps, estimated {'>= ' if ref_method else ''}{_duration(seconds)} "
+            f"(probe, ns/step: {probe})")
+    return _Estimate(steps, seconds, text)
+
+
+class _Progress:
+    """Steps done against the estimated total on stderr: tqdm if installed, else a plain bar; shown only
+    when enabled (progress=True and stderr a terminal)."""
+
+    def __init__(self, total: int, enabled: bool) -> None:
+        self.total, self.done, self.enabled, self.label = max(total, 1), 0, enabled, ""
+        self.base, self.started, self.shown = 0, time.perf_counter(), 0.0
+        self.bar: Any = None
+        if enabled:
+            try:
+                from tqdm import tqdm
+
+                self.bar = tqdm(total=self.total, desc="tradeoff", unit="step", unit_scale=True, file=sys.stderr)
+            except ImportError:
+                pass
+
+    def begin(self, steps: int, label: str) -> Callable[[int], None]:
+        """Starts a run of `steps` steps; returns the callback simulate reports its steps done to."""
+        self.base, self.label = self.done, label
+        self.total = max(self.total, self.done + steps)
+
+        def at(steps_done: int) -> None:
+            self._show(self.base + steps_done)
+
+        return at
+
+    def end(self, steps: int) -> None:
+        self._show(self.base + steps)
+
+    def _show(self, done: int, force: bool = False) -> None:
+        delta, self.done = done - self.done, done
+        if not self.enabled:
+            return
+        if self.bar is not None:
+            self.bar.total = max(self.bar.total, done)
+            self.bar.set_postfix_str(self.label, refresh=False)
+            self.bar.update(delta)
+            return
+        now = time.perf_counter()
+        if not force and now - self.shown < 0.1:
+            return
+        self.shown = now
+        fraction = min(1.0, done / self.total)
+        left = (now - self.started) * (1.0 - fraction) / fraction if fraction > 0 else math.inf
+        width = 24
+        bar = "#" * int(width * fraction) + "." * (width - int(width * fraction))
+        print(f"\rtradeoff [{bar}] {100 * fraction:3.0f}% {done:.3g}/{self.total:.3g} steps, {_duration(left)} left, "
+              f"{self.label:<24}", end="", file=sys.stderr, flush=True)
+
+    def close(self) -> None:
+        if self.bar is not None:
+            self.bar.close()
+        elif self.enabled:
+            self._show(self.done, force=True)
+            print(file=sys.stderr)
 
 
 def _fmt(x: Any) -> str:
@@ -241,36 +564,60 @@ class Recommendation:
         if self.best is None:
             return f"recommendation: none; every run diverged ({self.measure}, tolerance {_fmt(self.tolerance)})"
         b = self.best
-        return (f"recommendation: none meets {self.measure} <= {_fmt(self.tolerance)}; best is {b['method']} "
-                f"with dt = {_fmt(b['dt'])} s: {self.measure} = {_fmt(b[self.measure])} at {_fmt(b['total_time'])} s; "
-                f"try smaller steps or a higher-order method")
+        text = (f"recommendation: none meets {self.measure} <= {_fmt(self.tolerance)}; best is {b['method']} "
+                f"with dt = {_fmt(b['dt'])} s: {self.measure} = {_fmt(b[self.measure])} at {_fmt(b['total_time'])} s")
+        if str(b.get("reference", "")).startswith("unreliable"):
+            return (text + f"; its reference is unreliable (error {_fmt(b['reference_error'])}, see the reference "
+                    f"checks): errors below it cannot be measured")
+        return text + "; try smaller steps or a higher-order method"
 
 
 @dataclass
 class TradeoffResult:
-    """Rows (one per method x dt, keys COLUMNS) and the recommendation for the sweep's tolerance."""
+    """Rows (one per method x dt, dicts with the keys COLUMNS) of a sweep of `problem` (its name) over
+    `horizon` [s] (nan if unknown), and the recommendation for `tolerance` in `measure` (none if
+    tolerance is None) at the least `cost` ('time' or 'evaluations'). Every argument is checked:
+    TypeError or ValueError naming it."""
 
     problem: str
     horizon: float
     measure: str
-    tolerance: float | None
-    rows: list[dict[str, Any]]
+    tolerance: float | None = None
+    rows: list[dict[str, Any]] = field(default_factory=list)
     cost: str = "time"
     recommendation: Recommendation | None = field(default=None)
 
     def __post_init__(self) -> None:
+        if not isinstance(self.problem, str):
+            raise TypeError(f"problem: expected the problem's name (str), got {self.problem!r}")
+        self.horizon = _check_horizon(self.horizon, "horizon")
+        _check_measure(self.measure)
+        self.rows = _check_rows(self.rows, (*_ROW_KEYS, self.measure))
+        if self.tolerance is not None:
+            self.tolerance = _check_positive(self.tolerance, "tolerance")
+        _check_cost(self.cost)
+        if self.recommendation is not None and not isinstance(self.recommendation, Recommendation):
+            raise TypeError(f"recommendation: expected None or a Recommendation, got {self.recommendation!r}")
         if self.recommendation is None and self.tolerance is not None:
             self.recommendation = self.recommend(self.tolerance, self.measure, self.cost)
 
     def recommend(self, tolerance: float, measure: str | None = None, cost: str = "time") -> Recommendation:
         """The cheapest run (cost 'time': total wall time; 'evaluations': derivative evaluations) whose
-        `measure` is <= tolerance, diverged runs excluded."""
-        measure = measure or self.measure
+        `measure` is <= tolerance also counting the reference's error (reference_error, which is that
+        of the sweep's measure: a run measured against an unreliable reference does not count for
+        another measure), diverged runs excluded."""
+        measure = self.measure if measure is None else measure
         _check_measure(measure)
-        if cost not in _COSTS:
-            raise ValueError(f"cost: expected one of {', '.join(_COSTS)}, got {cost!r}")
+        _check_positive(tolerance, "tolerance")
+        _check_cost(cost)
         usable = [r for r in self.rows if not r["diverged"] and math.isfinite(r[measure])]
-        meeting = [r for r in usable if r[measure] <= tolerance]
+
+        def bound(r: dict[str, Any]) -> float:  # the run's error at worst
+            if measure == self.measure:
+                return float(r[measure] + r.get("reference_error", 0.0))
+            return math.inf if str(r.get("reference", "")).startswith("unreliable") else float(r[measure])
+
+        meeting = [r for r in usable if bound(r) <= tolerance]
         row = min(meeting, key=lambda r: (r[_COSTS[cost]], r[measure])) if meeting else None
         best = min(usable, key=lambda r: (r[measure], r[_COSTS[cost]])) if usable else None
         return Recommendation(measure, float(tolerance), cost, row, best)
@@ -282,15 +629,16 @@ class TradeoffResult:
     def to_table(self, columns: Sequence[str] = ("method", "dt", "steps", "time_per_step", "total_evaluations",
                                                   "final_state_error", "max_state_error", "max_attitude_error",
                                                   "energy_drift", "momentum_drift", "quaternion_norm_error",
-                                                  "observed_order", "stability")) -> str:
-        """A fixed-width text table of `columns` (time_per_step shown in ns)."""
+                                                  "observed_order", "order_note", "stability")) -> str:
+        """A fixed-width text table of `columns` (names from COLUMNS; time_per_step shown in ns)."""
+        columns = _check_columns(columns)
         headers = [("ns/step" if c == "time_per_step" else c) for c in columns]
         cells = []
         for r in self.rows:
             line = []
             for c in columns:
-                v = r[c]
-                if c == "time_per_step":
+                v = r.get(c, "")
+                if c == "time_per_step" and v != "":
                     v = v * 1e9
                 if c == "stability":
                     v = "beyond limit" if v else ""
@@ -299,9 +647,11 @@ class TradeoffResult:
                 line.append(_fmt(v))
             cells.append(line)
         widths = [max(len(h), *(len(line[i]) for line in cells)) if cells else len(h) for i, h in enumerate(headers)]
-        out = [f"{self.problem}: horizon {_fmt(self.horizon)} s, measure {self.measure}",
-               "  ".join(h.ljust(w) for h, w in zip(headers, widths)),
-               "  ".join("-" * w for w in widths)]
+        out = [f"{self.problem}: horizon {_fmt(self.horizon)} s, measure {self.measure}"]
+        checks = dict.fromkeys(f"  dt = {_fmt(r['dt'])}: reference {r['reference']}, {r['reference_check']}"
+                               for r in sorted(self.rows, key=lambda r: -r["dt"]) if r.get("reference_check"))
+        out += list(checks)
+        out += ["  ".join(h.ljust(w) for h, w in zip(headers, widths)), "  ".join("-" * w for w in widths)]
         out += ["  ".join(v.ljust(w) for v, w in zip(line, widths)) for line in cells]
         if self.recommendation is not None:
             out.append(str(self.recommendation))
@@ -313,6 +663,7 @@ class TradeoffResult:
     # -- CSV / JSON
     def to_csv(self, path: str | Path | None = None) -> str:
         """All COLUMNS as CSV (floats with 17 significant digits); written to `path` if given."""
+        path = _check_path(path, "path", optional=True)
         buf = io.StringIO()
         writer = csv.DictWriter(buf, fieldnames=COLUMNS, lineterminator="\n")
         writer.writeheader()
@@ -326,8 +677,20 @@ class TradeoffResult:
     @staticmethod
     def read_csv(path_or_text: str | Path, problem: str = "", horizon: float = math.nan,
                  measure: str = "final_attitude_error", tolerance: float | None = None) -> TradeoffResult:
-        text = Path(path_or_text).read_text() if _is_file(path_or_text) else str(path_or_text)
-        rows = [_typed_row(r) for r in csv.DictReader(io.StringIO(text))]
+        """A TradeoffResult from to_csv's output (a file path or the text itself); the CSV holds the
+        rows only: problem (name), horizon [s] (nan: unknown), measure and tolerance are given here."""
+        text = _read_text(path_or_text)
+        reader = csv.DictReader(io.StringIO(text))
+        missing = [c for c in COLUMNS if c not in (reader.fieldnames or [])]
+        if missing:
+            raise ValueError(f"path_or_text: expected a CSV file or text written by to_csv (columns {', '.join(COLUMNS)}), "
+                             f"got {_describe_text(path_or_text, text)} without {', '.join(missing[:3])}"
+                             f"{' ...' if len(missing) > 3 else ''}")
+        try:
+            rows = [_typed_row(r) for r in reader]
+        except (TypeError, ValueError) as error:
+            raise ValueError(f"path_or_text: expected a CSV file or text written by to_csv, got a value that does not "
+                             f"parse ({error})") from None
         return TradeoffResult(problem, horizon, measure, tolerance, rows)
 
     def to_dict(self) -> dict[str, Any]:
@@ -339,6 +702,7 @@ class TradeoffResult:
 
     def to_json(self, path: str | Path | None = None) -> str:
         """JSON with the sweep's settings, rows and recommendation (inf/nan as JSON strings)."""
+        path = _check_path(path, "path", optional=True)
         text = json.dumps(_json_safe(self.to_dict()), indent=1)
         if path is not None:
             Path(path).write_text(text)
@@ -346,8 +710,16 @@ class TradeoffResult:
 
     @staticmethod
     def read_json(path_or_text: str | Path) -> TradeoffResult:
-        text = Path(path_or_text).read_text() if _is_file(path_or_text) else str(path_or_text)
-        d = _json_restore(json.loads(text))
+        """A TradeoffResult from to_json's output (a file path or the text itself)."""
+        text = _read_text(path_or_text)
+        expected = "a JSON file or text written by to_json (keys problem, horizon, measure, tolerance, rows)"
+        try:
+            d = _json_restore(json.loads(text))
+        except json.JSONDecodeError as error:
+            raise ValueError(f"path_or_text: expected {expected}, got {_describe_text(path_or_text, text)} "
+                             f"({error})") from None
+        if not isinstance(d, dict) or any(k not in d for k in ("problem", "horizon", "measure", "tolerance", "rows")):
+            raise ValueError(f"path_or_text: expected {expected}, got {_describe_text(path_or_text, text)}")
         return TradeoffResult(d["problem"], d["horizon"], d["measure"], d["tolerance"], d["rows"], d.get("cost", "time"))
 
     # -- plot
@@ -364,8 +736,12 @@ class TradeoffResult:
             import matplotlib.pyplot as plt
         except ImportError:
             raise ImportError("plot: expected matplotlib (pip install 'rigiddyn[plot]' or pip install matplotlib)") from None
-        measure = measure or self.measure
+        base = _check_path(path, "path", optional=False)
+        measure = self.measure if measure is None else measure
         _check_measure(measure)
+        from matplotlib.backend_bases import FigureCanvasBase
+
+        formats = _check_formats(formats, FigureCanvasBase.get_supported_filetypes())
         fig, axes = plt.subplots(1, 2, figsize=(11, 4.5), constrained_layout=True)
         for ax, cost, label in ((axes[0], "total_time", "wall time of the run [s]"),
                                 (axes[1], "total_evaluations", "derivative evaluations")):
@@ -387,22 +763,104 @@ class TradeoffResult:
         fig.suptitle(f"{self.problem}: work-precision over {_fmt(self.horizon)} s")
         written = []
         for fmt in formats:
-            out = Path(f"{path}.{fmt}")
+            out = Path(f"{base}.{fmt}")
             fig.savefig(out)
             written.append(out)
         plt.close(fig)
         return written
 
 
-def _is_file(x: str | Path) -> bool:
+def _is_file(x: Any) -> bool:
     try:
         return Path(x).is_file()
     except (OSError, ValueError):
         return False
 
 
+def _check_path(path: Any, name: str, optional: bool) -> Path | None:
+    """path as a Path (None if optional and None), else TypeError naming `name`."""
+    if path is None and optional:
+        return None
+    if not isinstance(path, (str, os.PathLike)):
+        raise TypeError(f"{name}: expected {'None or ' if optional else ''}a file path (str or os.PathLike), got {path!r}")
+    return Path(path)
+
+
+def _read_text(path_or_text: Any) -> str:
+    """The text of the file path_or_text names, or path_or_text itself (a str that names no file)."""
+    if not isinstance(path_or_text, (str, os.PathLike)):
+        raise TypeError(f"path_or_text: expected a file path or the text (str or os.PathLike), got {path_or_text!r}")
+    if _is_file(path_or_text):
+        return Path(path_or_text).read_text()
+    if not isinstance(path_or_text, str):
+        raise ValueError(f"path_or_text: expected an existing file, got {str(path_or_text)!r}")
+    return path_or_text
+
+
+def _describe_text(path_or_text: Any, text: str) -> str:
+    where = f"the file {str(path_or_text)!r}" if _is_file(path_or_text) else "text"
+    return f"{where} beginning {text[:40]!r}"
+
+
+def _check_horizon(x: Any, name: str) -> float:
+    """A horizon [s]: a finite number > 0, or nan (unknown)."""
+    if _is_real(x) and math.isnan(x):
+        return math.nan
+    return _check_positive(x, name)
+
+
+def _check_cost(cost: Any) -> None:
+    if not isinstance(cost, str):
+        raise TypeError(f"cost: expected one of {', '.join(_COSTS)}, got {cost!r}")
+    if cost not in _COSTS:
+        raise ValueError(f"cost: expected one of {', '.join(_COSTS)}, got {cost!r}")
+
+
+_ROW_KEYS = ("method", "dt", "steps", "diverged", "total_time", "total_evaluations")  # what a result needs
+
+
+def _check_rows(rows: Any, keys: Sequence[str]) -> list[dict[str, Any]]:
+    """rows as a list of dicts (keys from COLUMNS) with at least `keys`, else TypeError/ValueError naming rows."""
+    expected = f"a list of rows (dicts with keys from COLUMNS, at least {', '.join(keys)})"
+    if isinstance(rows, (str, bytes, Mapping)) or not isinstance(rows, Iterable):
+        raise TypeError(f"rows: expected {expected}, got {rows!r}")
+    out = list(rows)
+    for i, row in enumerate(out):
+        if not isinstance(row, Mapping):
+            raise TypeError(f"rows: expected {expected}, got {row!r} at index {i}")
+        missing = [k for k in keys if k not in row]
+        if missing:
+            raise ValueError(f"rows: expected {expected}, got row {i} without {', '.join(missing)}")
+        unknown = [k for k in row if k not in COLUMNS]
+        if unknown:
+            raise ValueError(f"rows: expected {expected}, got row {i} with {', '.join(map(repr, unknown[:3]))}")
+    return [dict(row) for row in out]
+
+
+def _check_name_list(values: Any, name: str, allowed: Sequence[str]) -> list[str]:
+    """A list of strings from `allowed`: TypeError / ValueError naming `name` otherwise."""
+    expected = f"a list of names from {', '.join(allowed)}"
+    if isinstance(values, (str, bytes)) or not isinstance(values, Iterable):
+        raise TypeError(f"{name}: expected {expected}, got {values!r}")
+    names = list(values)
+    for v in names:
+        if not isinstance(v, str):
+            raise TypeError(f"{name}: expected {expected}, got {v!r}")
+        if v not in allowed:
+            raise ValueError(f"{name}: expected {expected}, got {v!r}")
+    return names
+
+
+def _check_columns(columns: Any) -> list[str]:
+    return _check_name_list(columns, "columns", COLUMNS)
+
+
+def _check_formats(formats: Any, supported: Mapping[str, str]) -> list[str]:
+    return _check_name_list(formats, "formats", sorted(supported))
+
+
 _INT_COLUMNS = {"steps", "order", "evaluations_per_step", "total_evaluations"}
-_STR_COLUMNS = {"method", "reference", "stability"}
+_STR_COLUMNS = {"method", "reference", "reference_check", "order_note", "stability"}
 
 
 def _typed_row(r: dict[str, str]) -> dict[str, Any]:
@@ -413,6 +871,8 @@ def _typed_row(r: dict[str, str]) -> dict[str, Any]:
         elif k in _STR_COLUMNS:
             out[k] = v
         elif k == "diverged":
+            if v not in ("True", "False"):
+                raise ValueError(f"diverged: expected True or False, got {v!r}")
             out[k] = v == "True"
         else:
             out[k] = float(v)
@@ -439,40 +899,79 @@ def _json_restore(x: Any) -> Any:
     return x
 
 
-def _check_measure(measure: str) -> None:
+def _check_measure(measure: Any) -> None:
+    if not isinstance(measure, str):
+        raise TypeError(f"measure: expected one of {', '.join(MEASURES)}, got {measure!r}")
     if measure not in MEASURES:
         raise ValueError(f"measure: expected one of {', '.join(MEASURES)}, got {measure!r}")
 
 
-class _Progress:
-    """tqdm if installed, else a counter on stderr."""
+def _is_real(x: Any) -> bool:
+    return isinstance(x, (int, float, np.integer, np.floating)) and not isinstance(x, (bool, np.bool_))
 
-    def __init__(self, total: int, enabled: bool) -> None:
-        self.total, self.done, self.bar = total, 0, None
-        self.enabled = enabled
-        if enabled:
-            try:
-                from tqdm import tqdm
 
-                self.bar = tqdm(total=total, desc="tradeoff", unit="run", file=sys.stderr)
-            except ImportError:
-                pass
+def _check_positive(x: Any, name: str) -> float:
+    """x as a float: a finite real number > 0, else TypeError/ValueError naming `name`."""
+    if not _is_real(x):
+        raise TypeError(f"{name}: expected a finite number > 0, got {x!r}")
+    if not (math.isfinite(x) and x > 0):
+        raise ValueError(f"{name}: expected a finite number > 0, got {x!r}")
+    return float(x)
 
-    def update(self, label: str) -> None:
-        self.done += 1
-        if not self.enabled:
-            return
-        if self.bar is not None:
-            self.bar.set_postfix_str(label)
-            self.bar.update(1)
-        else:
-            print(f"\rtradeoff: {self.done}/{self.total} {label:<40}", end="", file=sys.stderr, flush=True)
 
-    def close(self) -> None:
-        if self.bar is not None:
-            self.bar.close()
-        elif self.enabled:
-            print(file=sys.stderr)
+def _check_count(x: Any, name: str) -> int:
+    """x as an int >= 1, else TypeError/ValueError naming `name`."""
+    if isinstance(x, (bool, np.bool_)) or not isinstance(x, (int, np.integer)):
+        raise TypeError(f"{name}: expected an integer >= 1, got {x!r}")
+    if x < 1:
+        raise ValueError(f"{name}: expected an integer >= 1, got {x!r}")
+    return int(x)
+
+
+def _check_names(methods: Any, known: Iterable[str]) -> list[str]:
+    """methods as a non-empty list of distinct known names, else TypeError/ValueError naming `methods`."""
+    known = list(known)
+    if isinstance(methods, (str, bytes)) or not isinstance(methods, Iterable):
+        raise TypeError(f"methods: expected a list of method names, got {methods!r}")
+    names = list(methods)
+    if not names:
+        raise ValueError(f"methods: expected at least one name from {', '.join(known)}, got []")
+    for name in names:
+        if not isinstance(name, str):
+            raise TypeError(f"methods: expected names (str) from {', '.join(known)}, got {name!r}")
+        if name not in known:
+            raise ValueError(f"methods: expected names from {', '.join(known)}, got {name!r}")
+    repeated = [n for n in dict.fromkeys(names) if names.count(n) > 1]
+    if repeated:
+        raise ValueError(f"methods: expected distinct names, got {repeated[0]!r} {names.count(repeated[0])} times")
+    return names
+
+
+def _check_dts(dts: Any) -> list[float]:
+    if isinstance(dts, (str, bytes)) or not isinstance(dts, Iterable):
+        raise TypeError(f"dts: expected a non-empty list of finite steps > 0 [s], got {dts!r}")
+    if getattr(dts, "ndim", 1) > 1:  # an array of rows, not a list of steps
+        raise ValueError(f"dts: expected a 1-d list of finite steps > 0 [s], got an array of shape {getattr(dts, 'shape', None)}")
+    if isinstance(dts, Sized) and len(dts) > MAX_DTS:  # one run per step: refuse before copying
+        raise ValueError(f"dts: expected at most {MAX_DTS} steps (one run each), got {len(dts)}")
+    values = list(dts)
+    if not values:
+        raise ValueError("dts: expected a non-empty list of finite steps > 0 [s], got []")
+    for d in values:
+        if not _is_real(d):
+            raise TypeError(f"dts: expected a non-empty list of finite steps > 0 [s], got {values!r}")
+        if not (math.isfinite(d) and d > 0):
+            raise ValueError(f"dts: expected a non-empty list of finite steps > 0 [s], got {values!r}")
+    return [float(d) for d in values]
+
+
+def _step_grid(horizon: float, dts: Sequence[float], name: str) -> list[int]:
+    """The step counts round(horizon / dt) (>= 1), ascending; ValueError naming `name` beyond MAX_STEPS."""
+    for d in dts:
+        if not horizon / d <= MAX_STEPS:
+            raise ValueError(f"{name}: expected at most {MAX_STEPS:.3g} steps per run (horizon / dt), got horizon "
+                             f"{horizon:g} s / dt {d:g} s = {horizon / d:.3g}")
+    return sorted({max(1, round(horizon / d)) for d in dts})
 
 
 def _default_dts(problem: Problem) -> list[float]:
@@ -484,19 +983,61 @@ def _default_dts(problem: Problem) -> list[float]:
 
 def _exact_on(problem: Problem, info: dict[str, Any]) -> bool:
     """True if the method has no truncation error on `problem` (order 0, or exact on torque-free bodies)."""
-    return info["order"] == 0 or (info["exact_torque_free"] and problem.torque_free)
+    return bool(info["order"] == 0 or (info["exact_torque_free"] and problem.torque_free))
 
 
 def _observed_orders(rows: list[dict[str, Any]], measure: str, exact_methods: set[str]) -> None:
+    """observed_order and order_note of every row (see the module docstring): the slope from the next
+    larger dt, kept only in the asymptotic range."""
     for method in dict.fromkeys(r["method"] for r in rows):
         mine = sorted((r for r in rows if r["method"] == method), key=lambda r: -r["dt"])
-        mine[0]["observed_order"] = math.nan
+        slopes: list[float | None] = [None]  # slope of the pair (i - 1, i), None where it says nothing
+        notes = ["coarsest step"]
         for coarse, fine in zip(mine[:-1], mine[1:]):
             e0, e1 = coarse[measure], fine[measure]
-            above_round_off = min(e0 / coarse["steps"], e1 / fine["steps"]) > ROUND_OFF_PER_STEP
-            ok = (method not in exact_methods and above_round_off and math.isfinite(e0) and math.isfinite(e1)
-                  and coarse["dt"] != fine["dt"])
-            fine["observed_order"] = math.log(e0 / e1) / math.log(coarse["dt"] / fine["dt"]) if ok else math.nan
+            floor = max(ROUND_OFF_PER_STEP * max(coarse["steps"], fine["steps"]),
+                        REFERENCE_MARGIN * max(coarse["reference_error"], fine["reference_error"]))
+            note = ""
+            if method in exact_methods:
+                note = "exact on this problem"
+            elif coarse["diverged"] or fine["diverged"] or not (math.isfinite(e0) and math.isfinite(e1)):
+                note = "diverged"
+            elif coarse["dt"] == fine["dt"]:
+                note = "same dt"
+            elif min(e0, e1) <= REFERENCE_MARGIN * max(coarse["reference_error"], fine["reference_error"]):
+                note = f"error within {REFERENCE_MARGIN:g}x the reference's"
+            elif min(e0, e1) <= floor:
+                note = "error at round-off"
+            slopes.append(None if note else math.log(e0 / e1) / math.log(coarse["dt"] / fine["dt"]))
+            notes.append(note)
+        for i, row in enumerate(mine):
+            p = slopes[i]
+            neighbours = [q for q in (slopes[i - 1] if i > 0 else None, slopes[i + 1] if i + 1 < len(mine) else None)
+                          if q is not None]
+            agree = p is not None and any(abs(p - q) <= ORDER_AGREEMENT * max(abs(p), abs(q), 1.0) for q in neighbours)
+            row["observed_order"] = p if agree and p is not None else math.nan
+            if p is None:
+                row["order_note"] = notes[i]
+            elif agree:
+                row["order_note"] = ""
+            elif neighbours:
+                row["order_note"] = (f"not asymptotic: slope {p:.2g}, neighbouring " +
+                                     ", ".join(f"{q:.2g}" for q in neighbours))
+            else:
+                row["order_note"] = f"unconfirmed: slope {p:.2g}, no neighbouring slope"
+
+
+def _as_problem(problem: Any, horizon: Any) -> Problem:
+    if not isinstance(problem, (Problem, str, os.PathLike)):
+        raise TypeError(f"problem: expected a Problem, a .toml path or an example name, got {problem!r}")
+    try:
+        out = problem if isinstance(problem, Problem) else load_problem(problem if isinstance(problem, str) else Path(problem))
+    except (TypeError, ValueError) as error:  # load_problem names its argument path_or_name: here it is `problem`
+        text = str(error)
+        if not text.startswith("path_or_name: "):
+            raise
+        raise type(error)("problem: " + text.removeprefix("path_or_name: ")) from None
+    return out if horizon is None else out.with_horizon(_check_positive(horizon, "horizon"))
 
 
 def tradeoff(problem: Problem | str | Path, methods: Iterable[str] | None = None,
@@ -512,75 +1053,106 @@ def tradeoff(problem: Problem | str | Path, methods: Iterable[str] | None = None
     horizon / round(horizon / dt) so that every run ends exactly at the horizon [s] (default:
     the problem's). tolerance/measure: the recommendation's criterion (measure in MEASURES,
     default final_attitude_error). cost: 'time' or 'evaluations' for the recommendation.
-    samples: states compared per run. Emits one StabilityWarning listing the runs whose dt is
-    beyond the method's linear stability limit (rigiddyn.stability); diverged runs get inf errors.
+    samples: states compared per run (>= 1); max_reference_steps: the Richardson reference's step budget.
+    progress: print the estimated cost on stderr first (a timed probe of each method), then a progress
+    bar while stderr is a terminal. Emits one StabilityWarning listing the runs whose dt is beyond the
+    method's linear stability limit (rigiddyn.stability); diverged runs get inf errors. Every argument
+    is checked: TypeError or ValueError naming it. Ctrl-C stops the sweep with KeyboardInterrupt.
     """
-    if not isinstance(problem, Problem):
-        problem = load_problem(problem)
-    if horizon is not None:
-        problem = problem.with_horizon(horizon)
+    problem = _as_problem(problem, horizon)
     defaults = problem.tradeoff
     info = {m["name"]: m for m in _core.methods()}
     # by default every method that can run the problem: the exact flow (order 0) is for torque-free bodies only
     runnable = [name for name, m in info.items() if m["order"] != 0 or problem.torque_free]
-    methods = list(methods if methods is not None else defaults.get("methods", runnable))
-    for name in methods:
-        if name not in info:
-            raise ValueError(f"methods: expected names from {', '.join(info)}, got {name!r}")
-    dts = [float(d) for d in (dts if dts is not None else defaults.get("dts", _default_dts(problem)))]
-    if not dts or not all(math.isfinite(d) and d > 0 for d in dts):
-        raise ValueError(f"dts: expected a non-empty list of finite steps > 0 [s], got {dts!r}")
-    measure = measure or defaults.get("measure", "final_attitude_error")
+    methods = _check_names(methods if methods is not None else defaults.get("methods", runnable), info)
+    dts_name = "dts" if dts is not None else "horizon"  # what a step count out of range is due to
+    dts = _check_dts(dts if dts is not None else defaults.get("dts", _default_dts(problem)))
+    measure = measure if measure is not None else defaults.get("measure", "final_attitude_error")
     _check_measure(measure)
     tolerance = tolerance if tolerance is not None else defaults.get("tolerance")
-    if tolerance is not None and not (math.isfinite(tolerance) and tolerance > 0):
-        raise ValueError(f"tolerance: expected a finite number > 0, got {tolerance!r}")
-    if cost not in _COSTS:
-        raise ValueError(f"cost: expected one of {', '.join(_COSTS)}, got {cost!r}")
+    if tolerance is not None:
+        tolerance = _check_positive(tolerance, "tolerance")
+    if not isinstance(progress, (bool, np.bool_)):
+        raise TypeError(f"progress: expected True or False, got {progress!r}")
+    if not isinstance(cost, str) or cost not in _COSTS:
+        raise (TypeError if not isinstance(cost, str) else ValueError)(
+            f"cost: expected one of {', '.join(_COSTS)}, got {cost!r}")
+    samples = _check_count(samples, "samples")
+    max_reference_steps = _check_count(max_reference_steps, "max_reference_steps")
 
     exact = problem.has_exact_solution
     ref_method = _reference_method(info)
-    grid = sorted({max(1, round(problem.horizon / d)) for d in dts})
-    bar = _Progress(len(grid) * len(methods), progress)
-    rows: list[dict[str, Any]] = []
-    unstable: list[str] = []
+    grid = _step_grid(problem.horizon, dts, dts_name)
+    total = 1
+    if progress:
+        estimate = _estimate(problem, methods, grid, None if exact else ref_method)
+        print(estimate.text, file=sys.stderr, flush=True)
+        total = estimate.steps
+    bar = _Progress(total, bool(progress) and sys.stderr.isatty())
+    sweeps: list[tuple[int, float, list[_Run], _Reference | None]] = []
     try:
         for steps in grid:
             dt = problem.horizon / steps
             every = max(1, steps // samples)
-            runs = []
-            for method in methods:
-                runs.append(_simulate(problem, method, dt, steps, every, timed=True))
-                bar.update(f"{method} dt={dt:.3g}")
-            if exact:
-                ref_error = 0.0
-            else:
-                ref, estimate = _richardson_reference(problem, ref_method, info[ref_method]["order"], dt, steps,
-                                                      every, runs, max_reference_steps)
-                ref_error = estimate[measure]
-            for method, run in zip(methods, runs):
-                m = info[method]
-                row: dict[str, Any] = {"method": method, "dt": dt, "steps": steps, "order": m["order"],
-                                       "evaluations_per_step": m["evaluations"], "time_per_step": run.time_per_step,
-                                       "total_time": run.time_per_step * steps,
-                                       "total_evaluations": m["evaluations"] * steps}
-                if run.diverged:
-                    row.update({k: math.inf for k in MEASURES})
-                else:
-                    if exact:
-                        ref = reference_states(problem, run.states.t)
-                    row.update(_measures(problem, run.states, ref, run.quaternion_norm_error))
-                message = stability_message(method, dt, steps, problem.inertia_com, problem.w_B, problem.torque_free)
-                if message:
-                    unstable.append(message)
-                row.update({"observed_order": math.nan, "reference": "exact" if exact else f"richardson({ref_method})",
-                            "reference_error": ref_error, "diverged": run.diverged, "stability": message or ""})
-                rows.append(row)
+            runs = [_simulate(problem, method, dt, steps, every, timed=True, bar=bar) for method in methods]
+            ref = None if exact else _richardson_reference(problem, ref_method, info[ref_method]["order"], dt, steps,
+                                                           every, runs, max_reference_steps, bar)
+            sweeps.append((steps, dt, runs, ref))
+        checks = {} if exact else _check_references(problem, sweeps, info, ref_method, bar)
     finally:
         bar.close()
+    rows: list[dict[str, Any]] = []
+    unstable: list[str] = []
+    for steps, dt, runs, ref in sweeps:
+        for method, run in zip(methods, runs):
+            m = info[method]
+            row: dict[str, Any] = {"method": method, "dt": dt, "steps": steps, "order": m["order"],
+                                   "evaluations_per_step": m["evaluations"], "time_per_step": run.time_per_step,
+                                   "total_time": run.time_per_step * steps,
+                                   "total_evaluations": m["evaluations"] * steps}
+            if run.diverged:
+                row.update({k: math.inf for k in MEASURES})
+            else:
+                ref_states = reference_states(problem, run.states.t) if ref is None else ref.states
+                row.update(_measures(problem, run.states, ref_states, run.quaternion_norm_error))
+            message = stability_message(method, dt, steps, problem.inertia_com, problem.w_B, problem.torque_free)
+            if message:
+                unstable.append(message)
+            if ref is None:
+                reference, reference_error, reference_check = "exact", 0.0, ""
+            else:
+                check = checks[steps]
+                reference = f"richardson({ref_method})" if check.reliable else f"unreliable: richardson({ref_method})"
+                reference_error, reference_check = check.error[measure], check.text
+            row.update({"observed_order": math.nan, "order_note": "", "reference": reference,
+                        "reference_error": reference_error, "reference_check": reference_check,
+                        "diverged": run.diverged, "stability": message or ""})
+            rows.append(row)
     _observed_orders(rows, measure, {m for m in methods if _exact_on(problem, info[m])})
     rows.sort(key=lambda r: (methods.index(r["method"]), -r["dt"]))
     if unstable:
         warnings.warn("tradeoff: some steps are beyond the method's stability limit:\n  " + "\n  ".join(unstable),
                       StabilityWarning, stacklevel=2)
     return TradeoffResult(problem.name, problem.horizon, measure, tolerance, rows, cost)
+
+
+def _check_references(problem: Problem, sweeps: Sequence[tuple[int, float, list[_Run], _Reference | None]],
+                      info: dict[str, dict[str, Any]], ref_method: str, bar: _Progress) -> dict[int, _Check]:
+    """Each step grid's Richardson reference checked against an independent one: DOP853 over the
+    record times of every grid at once, else the core's other 4th-order family at each reference's
+    finest step."""
+    refs = {steps: ref for steps, _, _, ref in sweeps if ref is not None}
+    times = np.unique(np.concatenate([ref.states.t for ref in refs.values()]))
+    dop853 = _dop853_reference(problem, times)
+    other = _other_family(ref_method, info)
+    checks = {}
+    for steps, dt, _, ref in sweeps:
+        if ref is None:
+            continue
+        if dop853 is not None:
+            independent = dop853(ref.states.t)
+        else:
+            independent = _family_reference(problem, other, info[other]["order"], dt / ref.sub, steps * ref.sub,
+                                            ref.record_every, bar)
+        checks[steps] = _check_reference(problem, ref.states, ref.estimate, independent, steps * ref.sub)
+    return checks

@@ -1,11 +1,11 @@
-"""The worked example of seed 001 ("Kinematics of a Rigid Body", K. Craig), computed with the
+"""The worked example of Craig ("Kinematics of a Rigid Body", K. Craig), computed with the
 library's FrameTree.
 
 Reference frames: R ground (the inertial "world"), R1 the shaft, R2 the disk. The shaft turns at
 5 rad/s about i (i1 = i); the disk turns at 4 rad/s about k1 relative to the shaft, about an axis
 through O, the end of the shaft (fixed in R). P is fixed on the disk at r = 0.06 m from O on the
 disk's x2 axis, at the instant when the disk angle is θ = 30°, so r_OP = r cos θ i1 + r sin θ j1.
-The seed finds the acceleration of P in R, in R1 components:
+Craig finds the acceleration of P in R, in R1 components:
 
     a_P = (-16 r cos θ) i1 + (-41 r sin θ) j1 + (40 r cos θ) k1
 
@@ -38,8 +38,8 @@ def _terms(a: Any) -> dict[str, np.ndarray]:
     return {name: getattr(a, name) for name in (*TERMS, "total")}
 
 
-def seed_worked_example(r: float = 0.06, theta: float = math.radians(30.0)) -> dict[str, Any]:
-    """Build seed 001's shaft-and-disk example with a FrameTree and return every quantity.
+def textbook_worked_example(r: float = 0.06, theta: float = math.radians(30.0)) -> dict[str, Any]:
+    """Build Craig's shaft-and-disk example with a FrameTree and return every quantity.
 
     r [m]: distance of P from O; theta [rad]: the disk angle at the instant considered. The disk
     starts at angle 0 at t = 0, so the instant is t = theta / 4 s (the shaft has then turned
@@ -49,7 +49,7 @@ def seed_worked_example(r: float = 0.06, theta: float = math.radians(30.0)) -> d
     disk in the ground, R1 components); "terms" (first solution, P fixed in R2) and
     "terms_alternate" (P moving in R1): dicts term -> (3,) array in R1 components [m/s^2] from the
     library; "closed_form" and "closed_form_alternate": the same terms worked by hand from the
-    seed's ω and α; "seed_answer" (3,): (-16 r cos θ, -41 r sin θ, 40 r cos θ); "max_error": the
+    seed's ω and α; "textbook_answer" (3,): (-16 r cos θ, -41 r sin θ, 40 r cos θ); "max_error": the
     largest |library - closed form| over all terms of both solutions.
     """
     tree = FrameTree()
@@ -69,14 +69,14 @@ def seed_worked_example(r: float = 0.06, theta: float = math.radians(30.0)) -> d
     terms_alt = _terms(tree.point_acceleration("shaft", r_OP_R1, v_rel, a_rel, "world", "shaft", t))
 
     c, s = math.cos(theta), math.sin(theta)
-    seed_answer = np.array([-16 * r * c, -41 * r * s, 40 * r * c])
+    textbook_answer = np.array([-16 * r * c, -41 * r * s, 40 * r * c])
     closed_form = {  # ω = (5, 0, 4), α = (0, -20, 0), r_OP = r (c, s, 0); P fixed in R2
         "origin": zero,
         "tangential": np.array([0.0, 0.0, 20 * r * c]),
         "centripetal": np.array([-16 * r * c, -41 * r * s, 20 * r * c]),
         "relative": zero,
         "coriolis": zero,
-        "total": seed_answer,
+        "total": textbook_answer,
     }
     closed_form_alt = {  # ω = (5, 0, 0), α = 0; R1 v_P = 4 k1 × r_OP, R1 a_P = -16 r_OP
         "origin": zero,
@@ -84,7 +84,7 @@ def seed_worked_example(r: float = 0.06, theta: float = math.radians(30.0)) -> d
         "centripetal": np.array([0.0, -25 * r * s, 0.0]),
         "relative": np.array([-16 * r * c, -16 * r * s, 0.0]),
         "coriolis": np.array([0.0, 0.0, 40 * r * c]),
-        "total": seed_answer,
+        "total": textbook_answer,
     }
     max_error = max(
         float(np.max(np.abs(got[k] - want[k])))
@@ -102,7 +102,7 @@ def seed_worked_example(r: float = 0.06, theta: float = math.radians(30.0)) -> d
         "terms_alternate": terms_alt,
         "closed_form": closed_form,
         "closed_form_alternate": closed_form_alt,
-        "seed_answer": seed_answer,
+        "textbook_answer": textbook_answer,
         "max_error": max_error,
     }
 
@@ -112,7 +112,7 @@ def _vec(v: np.ndarray) -> str:
 
 
 def format_worked_example(result: dict[str, Any]) -> str:
-    """A printable report of seed_worked_example(): the set-up, then for both solutions each
+    """A printable report of textbook_worked_example(): the set-up, then for both solutions each
     acceleration term and the total from the library beside its closed form."""
     r, theta = result["r"], result["theta"]
     lines = [
@@ -140,7 +140,7 @@ def format_worked_example(result: dict[str, Any]) -> str:
     lines += [
         "",
         "Seed's answer: a_P = (-16 r cos θ) i1 + (-41 r sin θ) j1 + (40 r cos θ) k1",
-        f"             = {_vec(result['seed_answer'])} m/s²",
+        f"             = {_vec(result['textbook_answer'])} m/s²",
         f"Largest |library - closed form| over all terms: {result['max_error']:.3g} m/s²",
     ]
     return "\n".join(lines)

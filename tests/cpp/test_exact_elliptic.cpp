@@ -51,7 +51,8 @@ TEST(JacobiEllipj, MatchesMpmath) {
 }
 
 TEST(JacobiEllipj, LimitsAndIdentities) {
-  // m = 0: circular functions; m = 1 (mc = 0): hyperbolic (DLMF 22.5.3)
+  // m = 0: circular functions; m = 1 (mc = 0): hyperbolic (DLMF 22.5.3); libm and the closed
+  // branches round each to ~1 ulp: 2 eps
   const JacobiSnCnDn f0 = jacobi_ellipj(2.0, 0.0, 1.0);
   EXPECT_NEAR(f0.sn, std::sin(2.0), 2 * kEps);
   EXPECT_NEAR(f0.cn, std::cos(2.0), 2 * kEps);
@@ -59,7 +60,8 @@ TEST(JacobiEllipj, LimitsAndIdentities) {
   const JacobiSnCnDn f1 = jacobi_ellipj(0.7, 1.0, 0.0);
   EXPECT_NEAR(f1.sn, std::tanh(0.7), 2 * kEps);
   EXPECT_NEAR(f1.cn, 1.0 / std::cosh(0.7), 2 * kEps);
-  // sn² + cn² = 1, dn² + m sn² = 1 across quarter periods, near m = 1 too
+  // sn² + cn² = 1, dn² + m sn² = 1 across quarter periods, near m = 1 too: each function to a few
+  // ulps relative (elliptic.hpp), a sum of two squares of numbers <= 1: 8 eps
   for (double mc : {0.7, 1e-3, 1e-9, 1e-15}) {
     const double m = 1.0 - mc, K = ellipk(m, mc);
     for (double u = -5.0 * K; u < 5.0 * K; u += 0.37 * K) {
@@ -79,12 +81,14 @@ TEST(EllipticIntegrals, MatchMpmath) {
   // python3 -c 'import mpmath as mp; mp.mp.dps = 40
   //   am = mp.atan2(mp.ellipfun("sn", 2.0, 0.51), mp.ellipfun("cn", 2.0, 0.51))  # am(2|0.51) > π/2
   //   print(mp.ellipk(1 - mp.mpf(1e-15)), mp.ellipk(0.51), mp.ellippi(-0.7, 0.51), mp.ellippi(-0.7, am, 0.51))'
+  // elliptic.hpp: K and Pi to a few ulps relative (4 eps of the value)
   EXPECT_NEAR(ellipk(1.0 - 1e-15, 1e-15), 18.655682558575237624, 4 * kEps * 18.7);
   EXPECT_NEAR(ellipk(0.51, 0.49), 1.8626408023327385597, 4 * kEps * 1.9);
   EXPECT_NEAR(ellippi(-0.7, 0.51, 0.49), 1.3957727669448431979, 4 * kEps * 1.4);
   EXPECT_NEAR(ellippi_am(2.0, -0.7, 0.51, 0.49), 1.4766750661654998113, 4 * kEps * 1.5);
   // quasi-periodicity: Π(am(u + 2K)) = Π(am u) + 2Π(n|m), and oddness
   const double K = ellipk(0.51, 0.49), P = ellippi(-0.7, 0.51, 0.49);
+  // the argument 2 + 6K (~13) rounds by eps 13 (slope <= 1), 6 P (~8.4) by a few ulps of it: 64 eps
   EXPECT_NEAR(ellippi_am(2.0 + 6.0 * K, -0.7, 0.51, 0.49), 1.4766750661654998113 + 6.0 * P, 64 * kEps);
   EXPECT_NEAR(ellippi_am(-2.0, -0.7, 0.51, 0.49), -1.4766750661654998113, 8 * kEps);
 }
@@ -103,8 +107,38 @@ TEST(CarlsonIntegrals, MatchBoost) {
     worst_rf = std::max({worst_rf, std::abs(elliprf(x, y, z) - rf) / rf, std::abs(both.rf - rf) / rf});
     worst_rj = std::max({worst_rj, std::abs(elliprj(x, y, z, p) - rj) / rj, std::abs(both.rj - rj) / rj});
   }
+  // both implementations to a few ulps relative (the duplication's error bound, Carlson 1995, with
+  // its stopping tolerance at eps); R_J sums more terms: 16 eps
   EXPECT_LE(worst_rf, 8 * kEps);
   EXPECT_LE(worst_rj, 16 * kEps);
+}
+
+// Arguments spanning the double range (issue 9): R_F(1, 1e306, 1) and R_J(1, 1e306, 1, 1) looped forever,
+// R_J(1e-300, 1e300, 1e8, 1e16) was NaN, and the next two overflowed in the scaled units. References:
+// mpmath at 400 digits (fewer are not enough: at 50 digits its R_J of the fifth case is 3.6x off), by
+//   python3 -c 'import mpmath as mp; mp.mp.dps = 400; a = [mp.mpf(x) for x in (x, y, z, p)]
+//   print(mp.nstr(mp.elliprf(*a[:3]), 20), mp.nstr(mp.elliprj(*a), 20))'
+TEST(CarlsonIntegrals, ArgumentsSpanningTheDoubleRange) {
+  struct Case {
+    double x, y, z, p, rf, rj;
+  };
+  const Case cases[] = {
+      {1.0, 1e+306, 1.0, 1.0, 3.5298866640864893193e-151, 1.4999999999999999871e-153},
+      {1e-300, 1e+300, 100000000.0, 1e+16, 3.3756371793825055165e-148, 2.9710462798660697693e-165},
+      {1e-300, 1e-300, 1e+300, 1e-300, 6.9146867507877363238e-148, 1.499999999999999923e+150},
+      {0.0, 1e-300, 1e+300, 1e-310, 6.9216182225933357767e-148, 4.7123589806203143223e+155},
+      {8.531454889554097e+139, 2.7476918283583827e+158, 1.6390696476832608e+157, 2.4212920949982276e-274,
+       1.7033705962065863093e-79, 2.3076467995418557331e-225},
+  };
+  for (const Case& c : cases) {
+    // a few ulps (the duplication's bound, as in MatchBoost): 8 eps for both
+    EXPECT_NEAR(elliprf(c.x, c.y, c.z), c.rf, 8 * kEps * c.rf) << c.x << " " << c.y << " " << c.z;
+    EXPECT_NEAR(elliprj(c.x, c.y, c.z, c.p), c.rj, 8 * kEps * c.rj) << c.x << " " << c.y << " " << c.z << " " << c.p;
+  }
+  // beyond the double range: R_J(x, x, x, x) = x^−3/2 is +inf; R_J(1e300, 1e-300, 1, 1e300) = 1.04e-447 rounds to 0
+  EXPECT_EQ(elliprj(1e-300, 1e-300, 1e-300, 1e-300), std::numeric_limits<double>::infinity());
+  EXPECT_EQ(elliprj(1e300, 1e-300, 1.0, 1e300), 0.0);
+  EXPECT_NEAR(elliprf(1e300, 1e-300, 1.0), 3.4677405831022673414e-148, 8 * kEps * 3.5e-148);
 }
 
 TEST(CarlsonIntegrals, RejectBadArguments) {

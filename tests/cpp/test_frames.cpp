@@ -1,12 +1,14 @@
-// Frames and moving-frame kinematics: the seed's worked example (seed 001, shaft and disk), the
+// Frames and moving-frame kinematics: Craig's worked example (Craig, shaft and disk), the
 // addition theorem, angular accelerations, the transport theorem and the five acceleration terms
 // against finite differences of positions and rotation matrices, and bad input.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "rigiddyn/frames/frame_tree.hpp"
 #include "rigiddyn/so3/exp_log.hpp"
@@ -25,7 +27,7 @@ void expect_near(const Vector3d& got, const Vector3d& want, double tol, const st
 }
 
 // ---------------------------------------------------------------------------------------------
-// seed 001 worked example: ground R, shaft R1 turning at 5 rad/s about i, disk R2 turning at
+// Craig worked example: ground R, shaft R1 turning at 5 rad/s about i, disk R2 turning at
 // 4 rad/s about k1 relative to the shaft; P fixed in the disk on its x2 axis at r = 0.06 m, at the
 // instant the disk angle is theta = 30 deg, so r_OP = r cos(theta) i1 + r sin(theta) j1.
 // Answer: a_P = (-16 r cos(theta), -41 r sin(theta), 40 r cos(theta)) in R1 components.
@@ -45,12 +47,14 @@ FrameTree shaft_and_disk(double shaft_length) {
 
 const Vector3d p_R2P_R2(r, 0, 0);
 const Vector3d c_s_0(std::cos(theta), std::sin(theta), 0);
-const Vector3d seed_answer_R1(-16 * r * std::cos(theta), -41 * r * std::sin(theta), 40 * r * std::cos(theta));
+const Vector3d textbook_answer_R1(-16 * r * std::cos(theta), -41 * r * std::sin(theta), 40 * r * std::cos(theta));
 
 TEST(SeedWorkedExample, DiskAnglesAndAngularVelocityAndAcceleration) {
   for (double L : {0.0, 0.25}) {
     const FrameTree tree = shaft_and_disk(L);
     const Vector3d r_OP_R1 = tree.point_position("disk", p_R2P_R2, "shaft", "shaft", t_example) - Vector3d(L, 0, 0);
+    // the worked example: a few roundings of numbers of the size of each value (0.06 m, 5 rad/s,
+    // 20 rad/s^2, 2.5 m/s^2): <= 8 eps of it; 0 where the term is structurally zero
     expect_near(r_OP_R1, r * c_s_0, 1e-15, "r_OP = r cos(theta) i1 + r sin(theta) j1");
     // addition theorem: w_R_R2 = 5 i + 4 k1
     expect_near(tree.angular_velocity("disk", "world", "shaft", t_example), Vector3d(5, 0, 4), 1e-14, "w_R_R2 in R1");
@@ -72,7 +76,7 @@ TEST(SeedWorkedExample, FirstSolutionPointFixedInDisk) {
     expect_near(a.centripetal, Vector3d(-16 * r * c, -41 * r * s, 20 * r * c), 1e-14, "w x (w x r)");
     expect_near(a.relative, Vector3d::Zero(), 0, "P fixed in R2");
     expect_near(a.coriolis, Vector3d::Zero(), 0, "P fixed in R2");
-    expect_near(a.total(), seed_answer_R1, 1e-14, "seed answer");
+    expect_near(a.total(), textbook_answer_R1, 1e-14, "textbook answer");
   }
 }
 
@@ -92,7 +96,7 @@ TEST(SeedWorkedExample, AlternateSolutionPointMovingInShaft) {
   expect_near(a.centripetal, Vector3d(0, -25 * r * s, 0), 1e-14, "5 i1 x (5 i1 x r_OP)");
   expect_near(a.relative, -16 * r * c_s_0, 1e-15, "R1 a_P");
   expect_near(a.coriolis, Vector3d(0, 0, 40 * r * c), 1e-14, "2 (5 i1) x R1 v_P");
-  expect_near(a.total(), seed_answer_R1, 1e-14, "same result");
+  expect_near(a.total(), textbook_answer_R1, 1e-14, "same result");
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -134,6 +138,10 @@ auto d2(const F& f, double t, double h) -> decltype(f(t)) {
 }
 
 constexpr double h = 1e-3;
+// The finite differences are checked against their own error estimate: a fourth-order difference
+// d(h) errs by ~ (d(2h) - d(h))/15 (Richardson), so |exact - d(h)| <= |d(2h) - d(h)| plus
+// round-off, which divides each value's few-eps error by h (d1: 1.5/h, d2: 5.3/h^2 times 16 eps |f|).
+constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
 const std::vector<std::pair<std::string, std::string>> pairs = {
     {"c", "world"}, {"c", "a"}, {"c", "b"}, {"world", "c"}, {"side", "c"}, {"b", "side"}};
 
@@ -144,9 +152,11 @@ TEST(Chain, AngularVelocityMatchesDerivativeOfRotation) {
       const auto R_AF = [&](double s) { return tree.rotation(F, A, s); };
       // w_AF expressed in A: hat(w) = dR_AF/dt R_AF^T
       const Vector3d w_fd = vee(d1(R_AF, t, h) * R_AF(t).transpose());
-      expect_near(tree.angular_velocity(F, A, A, t), w_fd, 1e-10, F + " in " + A);
+      // Richardson estimate plus round-off (1.5/h x 16 eps |R| = 1, for d(h) and d(2h))
+      const double tol = (w_fd - vee(d1(R_AF, t, 2 * h) * R_AF(t).transpose())).norm() + 48 * kEpsilon / h;
+      expect_near(tree.angular_velocity(F, A, A, t), w_fd, tol, F + " in " + A);
       // expressed in F: hat(w_F) = R_AF^T dR_AF/dt
-      expect_near(tree.angular_velocity(F, A, F, t), vee(R_AF(t).transpose() * d1(R_AF, t, h)), 1e-10,
+      expect_near(tree.angular_velocity(F, A, F, t), vee(R_AF(t).transpose() * d1(R_AF, t, h)), tol,
                   F + " in " + A + " expressed in " + F);
     }
   }
@@ -162,7 +172,9 @@ TEST(Chain, AngularAccelerationMatchesDerivativeOfAngularVelocity) {
         const auto R_AF = [&](double u) { return tree.rotation(F, A, u); };
         return Vector3d(vee(d1(R_AF, s, h) * R_AF(s).transpose()));
       };
-      expect_near(tree.angular_acceleration(F, A, A, t), d1(w_AF_A, t, h), 1e-7, F + " in " + A);
+      // Richardson estimate plus the inner difference's round-off (48 eps/h) divided by h again (1.5/h)
+      const double tol = (d1(w_AF_A, t, h) - d1(w_AF_A, t, 2 * h)).norm() + 3 * 48 * kEpsilon / (h * h);
+      expect_near(tree.angular_acceleration(F, A, A, t), d1(w_AF_A, t, h), tol, F + " in " + A);
     }
   }
   // no addition theorem: alpha_Wc differs from the sum of the links' accelerations by w x w terms
@@ -183,7 +195,9 @@ TEST(Chain, TransportTheoremMatchesFiniteDifferences) {
       const auto u_A = [&](double s) { return Vector3d(tree.rotation(B, A, s) * u_B(s)); };
       const Matrix3d R_EA = tree.rotation(A, E, t), R_EB = tree.rotation(B, E, t);
       const Vector3d got = tree.transport_derivative(R_EB * u_B(t), R_EB * du_B(t), B, A, E, t);
-      expect_near(got, R_EA * d1(u_A, t, h), 1e-10, "d^" + A + " u from d^" + B + " u, in " + E);
+      // Richardson estimate plus round-off (1.5/h x 16 eps |u| (<= 1.2), twice)
+      const double tol = (d1(u_A, t, h) - d1(u_A, t, 2 * h)).norm() + 64 * kEpsilon / h;
+      expect_near(got, R_EA * d1(u_A, t, h), tol, "d^" + A + " u from d^" + B + " u, in " + E);
     }
   }
 }
@@ -202,11 +216,16 @@ TEST(Chain, PointMotionTermsMatchFiniteDifferencesOfPosition) {
       const PointVelocity vel = tree.point_velocity(F, p(t), v(t), A, E, t);
       const PointAcceleration acc = tree.point_acceleration(F, p(t), v(t), a(t), A, E, t);
       const std::string what = "Q in " + F + " seen from " + A + " expressed in " + E;
-      expect_near(vel.total(), R_EA * d1(p_AQ_A, t, h), 1e-9, what);
-      expect_near(acc.total(), R_EA * d2(p_AQ_A, t, h), 1e-7, what);
+      // Richardson estimates plus round-off (|p_AQ| <= 4: 16 eps 4 per value; d1 1.5/h, d2 5.3/h^2, twice)
+      const double size = p_AQ_A(t).cwiseAbs().maxCoeff();
+      const double tol_v = (d1(p_AQ_A, t, h) - d1(p_AQ_A, t, 2 * h)).norm() + 2 * 1.5 * 16 * kEpsilon * size / h;
+      const double tol_a = (d2(p_AQ_A, t, h) - d2(p_AQ_A, t, 2 * h)).norm() + 2 * 5.3 * 16 * kEpsilon * size / (h * h);
+      expect_near(vel.total(), R_EA * d1(p_AQ_A, t, h), tol_v, what);
+      expect_near(acc.total(), R_EA * d2(p_AQ_A, t, h), tol_a, what);
       // the terms are the ones named
       const FrameKinematics K_AF = tree.kinematics(F, A, t);
       const Vector3d r_A = K_AF.R_PF * p(t), v_rel_A = K_AF.R_PF * v(t);
+      // one evaluation per term on each side: a few roundings of numbers <= 50: <= 16 eps 50 = 2e-13
       expect_near(acc.coriolis, R_EA * (2 * K_AF.w_PF_P.cross(v_rel_A)), 1e-12, "Coriolis " + what);
       expect_near(acc.centripetal, R_EA * K_AF.w_PF_P.cross(K_AF.w_PF_P.cross(r_A)), 1e-12, "centripetal " + what);
       expect_near(acc.relative, R_EA * K_AF.R_PF * a(t), 1e-12, "relative " + what);
@@ -222,6 +241,8 @@ TEST(Chain, ComposeAndRelativeAreInverse) {
   const FrameKinematics K_ac = tree.kinematics("c", "a", t), K_ca = tree.kinematics("a", "c", t);
   const FrameKinematics composed = compose_kinematics(K_ab, K_bc), back = relative_kinematics(K_ab, K_ac);
   const FrameKinematics round = compose_kinematics(K_ac, K_ca);  // a relative to a: identity, at rest
+  // compose and undo: a few dozen roundings of terms no larger than |w|^2 |p| (rates <= 3.3 rad/s,
+  // |p| <= 2.5: <= 30), each tolerance ~16 eps of its quantity's largest term
   EXPECT_LE((composed.R_PF - K_ac.R_PF).norm(), 1e-14);
   for (const auto& [x, y] : {std::pair{composed, K_ac}, std::pair{back, K_bc}}) {
     EXPECT_LE((x.R_PF - y.R_PF).norm(), 1e-14);
@@ -242,6 +263,7 @@ TEST(ConstantRotation, MatchesItsDefinition) {
   FrameTree tree;
   tree.add_frame("f", "world", FrameMotion::constant_rotation(axis, -3.0, R0, Vector3d(1, 2, 3)));
   const double t = 0.4;
+  // the same formula on the same numbers, at most a product reordered: a few eps of unit entries
   EXPECT_LE((tree.rotation("f", "world", t) - rotvec_to_matrix(-3.0 * t * axis.normalized()) * R0).norm(), 1e-15);
   expect_near(tree.angular_velocity("f", "world", "world", t), -3.0 * axis.normalized(), 1e-15, "w");
   // the axis is fixed in F too, and F's origin stays put
@@ -260,6 +282,44 @@ void expect_invalid(const std::function<void()>& f, const std::string& part1, co
     EXPECT_NE(msg.find(part1), std::string::npos) << msg;
     EXPECT_NE(msg.find(part2), std::string::npos) << msg;
   }
+}
+
+TEST(ConstantRotation, AnyFiniteAngleGivesARotation) {
+  // |rate t| = 1e300: a rotation vector of that norm overflows when squared (NaN R before); the
+  // angle is a double, so R is exactly the rotation by that double (its sine and cosine, few eps)
+  for (const auto& [rate, t] : {std::pair{1e300, 1.0}, std::pair{-1e300, 1.5}, std::pair{1.0, 1e300}}) {
+    const Matrix3d R = FrameMotion::constant_rotation(Vector3d(0, 0, 2), rate).at(t).R_PF;
+    const double c = std::cos(rate * t), s = std::sin(rate * t);
+    Matrix3d expected;
+    expected << c, -s, 0, s, c, 0, 0, 0, 1;
+    EXPECT_LE((R - expected).cwiseAbs().maxCoeff(), 4 * kEpsilon) << "rate " << rate << ", t " << t;
+  }
+  // rate t beyond double: refused, naming t
+  expect_invalid([] { FrameMotion::constant_rotation(Vector3d::UnitZ(), 1e300).at(1e300); }, "t: expected a time",
+                 "rate * t finite");
+}
+
+TEST(DeepChain, EveryWalkIsIterative) {
+  // issue 9 item 8: a chain of 12 000 frames overflowed the stack of a recursive walk; 100 000 here
+  constexpr int depth = 100000;
+  constexpr double rate = 1e-4, t = 1.0;
+  FrameTree tree;
+  std::string parent = "world";
+  for (int i = 0; i < depth; ++i) {
+    const std::string name = "f" + std::to_string(i);
+    tree.add_frame(name, parent, FrameMotion::constant_rotation(Vector3d::UnitZ(), rate));
+    parent = name;
+  }
+  // about z by depth rate t = 10 rad; each composition rounds a product of rotations by <= 3 eps
+  // per entry, so the chain errs by <= 3 eps depth
+  const double angle = depth * rate * t;
+  Matrix3d expected;
+  expected << std::cos(angle), -std::sin(angle), 0, std::sin(angle), std::cos(angle), 0, 0, 0, 1;
+  EXPECT_LE((tree.rotation(parent, "world", t) - expected).cwiseAbs().maxCoeff(), 3 * kEpsilon * depth);
+  // the sum of depth rates of 1e-4: each addition rounds by <= eps of the total
+  EXPECT_NEAR(tree.angular_velocity(parent, "f0", "world", t).z(), (depth - 1) * rate, kEpsilon * angle * depth);
+  // the cycle check walks from the new parent up to world
+  expect_invalid([&] { tree.set_parent("f0", parent, FrameMotion::fixed()); }, "parent:", "cycle");
 }
 
 TEST(BadInput, UnknownAndDuplicateNames) {

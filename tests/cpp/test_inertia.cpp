@@ -4,6 +4,8 @@
 
 #include <Eigen/Geometry>
 
+#include <cmath>
+#include <limits>
 #include <random>
 
 #include "rigiddyn/inertia/primitives.hpp"
@@ -28,6 +30,11 @@ Vector3d random_vector(double s = 1.0) {
   std::uniform_real_distribution<double> u(-s, s);
   return Vector3d(u(rng), u(rng), u(rng));
 }
+// Tolerances in this file (Eigen's isApprox: |a - b| <= prec min(|a|, |b|)): one formula is a fixed
+// sequence of <= ~30 roundings on the random bodies' numbers (mass, sizes <= 2, |com| <= 3.5), so
+// it errs by ~30 eps of the largest term: 1e-14 where no term exceeds the result, 1e-12 where
+// parallel-axis terms m |c|^2 (<= 25) meet inertias >= 2e-3 (ratio <= 1e4 x eps); larger figures
+// are explained where they are asserted.
 // A random valid body: a box of random size and mass, rotated and placed.
 SpatialInertia random_body() {
   std::uniform_real_distribution<double> u(0.1, 2.0);
@@ -55,11 +62,11 @@ TEST(SpatialInertia, MomentumEnergyAndAngularMomentum) {
     const Force h = I.momentum(V);
     EXPECT_TRUE(h.to_vector().isApprox(I.matrix() * V.to_vector(), 1e-12));
     EXPECT_NEAR(I.kinetic_energy(V), 0.5 * V.to_vector().dot(I.matrix() * V.to_vector()), 1e-12);
-    // T = 1/2 m v_C^2 + 1/2 w.I_C w with v_C = v_O + w x c (seed 001)
+    // T = 1/2 m v_C^2 + 1/2 w.I_C w with v_C = v_O + w x c (Craig)
     const Vector3d v_C = V.linear + V.angular.cross(I.com());
     EXPECT_NEAR(I.kinetic_energy(V), 0.5 * I.mass() * v_C.squaredNorm() + 0.5 * V.angular.dot(I.inertia_com() * V.angular),
                 1e-12);
-    // H_O from the spatial momentum equals H_P at P = origin (seed 001), and L = m v_C
+    // H_O from the spatial momentum equals H_P at P = origin (Craig), and L = m v_C
     EXPECT_TRUE(h.angular.isApprox(I.angular_momentum_about_point(V.angular, v_C, Vector3d::Zero()), 1e-12));
     EXPECT_TRUE(h.linear.isApprox(I.mass() * v_C, 1e-12));
     // H_P at another point equals the moment of the momentum moved to P
@@ -74,7 +81,7 @@ TEST(SpatialInertia, ParallelAxisBothDirections) {
   const SpatialInertia I = random_body();
   const Vector3d p = random_vector(3.0);
   const Vector3d r = I.com() - p;
-  // seed 001 [I]_2 = [I]_C + m [[b^2+c^2, -ab, -ac], ...] with (a, b, c) = r
+  // Craig [I]_2 = [I]_C + m [[b^2+c^2, -ab, -ac], ...] with (a, b, c) = r
   Matrix3d shift;
   shift << r.y() * r.y() + r.z() * r.z(), -r.x() * r.y(), -r.x() * r.z(), -r.x() * r.y(), r.x() * r.x() + r.z() * r.z(),
       -r.y() * r.z(), -r.x() * r.z(), -r.y() * r.z(), r.x() * r.x() + r.y() * r.y();
@@ -116,6 +123,8 @@ TEST(PrincipalAxes, CoincidentMomentsAreCanonicalAndStable) {
   EXPECT_NEAR(p.axes.determinant(), 1.0, 1e-12);
   Matrix3d perturbed = cyl.inertia_com();
   perturbed(0, 1) = perturbed(1, 0) = 1e-14;
+  // canonical axes for a coincident pair: a perturbation 1e-14 (relative to moments ~0.3) below the
+  // coincidence tolerance must not turn them; were it resolved, they would turn by O(1)
   EXPECT_TRUE(principal_axes(perturbed).axes.isApprox(p.axes, 1e-9));
   // rotated cylinder: the distinct axis is the rotated z
   const Matrix3d R = random_rotation();
@@ -146,6 +155,7 @@ TEST(SpatialInertia, CompositeSplitBoxEqualsWhole) {
   const Transform left(Matrix3d::Identity(), Vector3d(-0.5, 0, 0)), right(Matrix3d::Identity(), Vector3d(0.5, 0, 0));
   EXPECT_TRUE(composite({{left, cube}, {right, cube}}).isApprox(whole, 1e-14));
   EXPECT_TRUE((cube.transformed(left) + cube.transformed(right)).isApprox(whole, 1e-14));
+  // removal cancels: the whole's inertia (shift terms m 0.25) against a cube's (0.5): ~10x eps more
   EXPECT_TRUE((whole - cube.transformed(left)).isApprox(cube.transformed(right), 1e-13));
   // removing more than the body's mass fails
   EXPECT_THROW(cube - whole, std::invalid_argument);
@@ -160,7 +170,10 @@ TEST(SpatialInertia, RandomCompositeAddRemoveRoundTrip) {
   EXPECT_TRUE(all.isApprox(pairwise, 1e-12));
   SpatialInertia rest = all;
   for (size_t i = parts.size() - 1; i > 0; --i) rest = rest - parts[i];
-  EXPECT_TRUE(rest.isApprox(parts[0], 1e-9));
+  // nine removals cancel the whole's inertia (with its shift terms m |d|^2) down to one box's: each
+  // rounds ~8 eps of |I_all|, relative to |I_0|
+  const double cancellation = all.inertia_com().norm() / parts[0].inertia_com().norm();
+  EXPECT_TRUE(rest.isApprox(parts[0], 9 * 8 * std::numeric_limits<double>::epsilon() * cancellation));
 }
 
 TEST(Validity, NoFalsePositivesAfterShiftsAndRotations) {
@@ -173,7 +186,10 @@ TEST(Validity, NoFalsePositivesAfterShiftsAndRotations) {
       I = I.rotated(random_rotation());
     }
     EXPECT_TRUE(I.report().valid()) << I.report().summary();
-    EXPECT_NEAR(I.inertia_com().trace(), thin.inertia_com().trace(), 1e-9 * thin.inertia_com().trace());
+    // each shift adds and removes m |p|^2 (|p| <= 173 m: <= 3e4 m), rounding ~eps of it: a random
+    // walk over 1000 shifts, 5 sigma = 5 sqrt(1000) eps m 3e4, relative to the trace
+    const double walk = 5 * std::sqrt(1000.0) * std::numeric_limits<double>::epsilon() * thin.mass() * 3e4;
+    EXPECT_NEAR(I.inertia_com().trace(), thin.inertia_com().trace(), walk);
   }
 }
 
@@ -193,7 +209,7 @@ TEST(Validity, RejectsTriangleViolationWithReportNumbers) {
   const SpatialInertia I(1.0, Vector3d::Zero(), hlw, InertiaCheck::allow_unrealizable);
   EXPECT_FALSE(I.report().valid());
   EXPECT_TRUE(I.report().valid(InertiaCheck::allow_unrealizable));
-  EXPECT_NEAR(I.report().triangle_margins(2), 2.0 / 3.0 + 1.0 - 2.0, 1e-15);
+  EXPECT_NEAR(I.report().triangle_margins(2), 2.0 / 3.0 + 1.0 - 2.0, 1e-15);  // 2 roundings of numbers <= 2
   // not PSD is never accepted
   EXPECT_THROW(SpatialInertia(1.0, Vector3d::Zero(), Vector3d(-1, 1, 1).asDiagonal().toDenseMatrix(),
                               InertiaCheck::allow_unrealizable),
@@ -228,20 +244,20 @@ TEST(Validity, RepairIsNearestAndExplicit) {
   const Matrix3d fixed = nearest_valid_inertia(hlw);
   const InertiaReport r = inertia_report(1.0, fixed);
   EXPECT_TRUE(r.valid()) << r.summary();
-  EXPECT_NEAR(r.triangle_margins(2), 0.0, 1e-14);
+  EXPECT_NEAR(r.triangle_margins(2), 0.0, 1e-14);  // on the boundary up to the rounding of moments <= 2
   // projection onto the plane I0 + I1 - I2 = 0: shift by deficit/3 along (1, 1, -1) in eigen-order
   const double deficit = 2.0 - 1.0 - 2.0 / 3.0;
   EXPECT_TRUE(fixed.isApprox(Vector3d(2.0 - deficit / 3, 1.0 + deficit / 3, 2.0 / 3.0 + deficit / 3).asDiagonal().toDenseMatrix(), 1e-14));
   // valid input unchanged; repaired result is closer than any random valid candidate
   const Matrix3d good = random_body().inertia_com();
-  EXPECT_TRUE(nearest_valid_inertia(good).isApprox(good, 1e-15));
+  EXPECT_TRUE(nearest_valid_inertia(good).isApprox(good, 1e-15));  // valid: returned as is
   const Matrix3d R = random_rotation();
   const Matrix3d bad = R * Vector3d(-0.5, 1.0, 3.0).asDiagonal() * R.transpose();
   const Matrix3d rep = nearest_valid_inertia(bad);
   EXPECT_TRUE(inertia_report(1.0, rep).valid());
   for (int k = 0; k < 200; ++k) {
     const Matrix3d cand = random_body().inertia_com() * 3.0;
-    EXPECT_LE((rep - bad).norm(), (cand - bad).norm() + 1e-12);
+    EXPECT_LE((rep - bad).norm(), (cand - bad).norm() + 1e-12);  // norms of entries <= 10: ~16 eps 10 slack
   }
 }
 

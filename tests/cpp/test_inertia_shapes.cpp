@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <functional>
+#include <limits>
 
 #include "inertia_test_meshes.hpp"
 #include "rigiddyn/inertia/density.hpp"
@@ -30,6 +31,9 @@ double relative_error(const SpatialInertia& approx, const SpatialInertia& exact)
 void expect_converges(const std::function<SpatialInertia(int)>& approx, const SpatialInertia& exact, double fine_tol) {
   const double e1 = relative_error(approx(16), exact), e2 = relative_error(approx(32), exact),
                e3 = relative_error(approx(128), exact);
+  // second order in 1/n: e(2n)/e(n) = 1/4 (1 + O(1/n)), 0.4 at n = 16; an inscribed polygon of n
+  // sides misses (2 pi^2/3)/n^2 of a circle's area (4e-4 at n = 128; callers pass 1e-3), point
+  // masses at cell midpoints miss 1/n^2 of a rod's inertia (6e-5: 1e-4)
   EXPECT_LT(e2, 0.4 * e1);
   EXPECT_LT(e3, fine_tol) << "errors " << e1 << " " << e2 << " " << e3;
 }
@@ -40,6 +44,7 @@ Mesh cylinder_mesh(double r, double h, int n) { return test::revolution_mesh({{0
 
 TEST(Primitives, HandbookFormulas) {
   const double m = 2.0;
+  // handbook formulas with small rational results: 2-3 roundings each (isApprox: relative)
   EXPECT_TRUE(solid_sphere(0.5, Mass{m}).inertia_com().isApprox(diag(0.2, 0.2, 0.2), 1e-15));
   EXPECT_TRUE(spherical_shell(0.5, Mass{m}).inertia_com().isApprox(diag(1, 1, 1) / 3.0, 1e-15));
   EXPECT_TRUE(solid_box(Vector3d(1, 2, 3), Mass{12.0}).inertia_com().isApprox(diag(13, 10, 5), 1e-15));
@@ -58,6 +63,7 @@ TEST(Primitives, HandbookFormulas) {
   // hollow sphere = big sphere minus small sphere (composite removal), and its thin limit
   const SpatialInertia hollow = hollow_sphere(2.0, 1.0, Density{1.0});
   EXPECT_TRUE(hollow.isApprox(solid_sphere(2.0, Density{1.0}) - solid_sphere(1.0, Density{1.0}), 1e-14));
+  // a shell 1e-6 thick tends to the spherical shell's 2/3 m R^2: the thickness changes it by O(1e-6)
   EXPECT_NEAR(hollow_sphere(1.0, 1.0 - 1e-6, Mass{1.0}).inertia_com()(0, 0), 2.0 / 3.0, 1e-5);
   // capsule with zero length is a sphere; tube = cylinder minus cylinder
   EXPECT_TRUE(solid_capsule(0.7, 0.0, Mass{1.0}).isApprox(solid_sphere(0.7, Mass{1.0}), 1e-14));
@@ -141,6 +147,9 @@ TEST(Primitives, SolidsConvergeToPointClouds) {
     return from_point_masses(Eigen::VectorXd::Constant(P.rows(), 1.0 / P.rows()), P);
   };
   const auto in_sphere = [](const Vector3d& p) { return p.norm() < 1.0; };
+  // lattice points in a smooth convex body: the count's discrepancy is O(R^(3/2)) in R = 40 cells
+  // (Gauss-Landau), relative 40^(-3/2) = 4e-3; with edges (the cone) O(R^-1) = 2.5e-2, halved by the
+  // grid's symmetry about the cone's axis
   EXPECT_LT(relative_error(grid(in_sphere, 1.0, 80), solid_sphere(1.0, Mass{1.0})), 5e-3);
   const auto in_cone = [](const Vector3d& p) {
     const double z = p.z() + 0.25;  // height above the base, h = 1, r = 1
@@ -155,12 +164,14 @@ TEST(Primitives, SolidsConvergeToPointClouds) {
 TEST(Mesh, BoxAndTetrahedronExact) {
   const Vector3d size(1.0, 2.0, 3.0);
   Mesh b = test::box_mesh(size);
-  EXPECT_NEAR(mesh_volume(b.V, b.F), 6.0, 1e-14);
+  EXPECT_NEAR(mesh_volume(b.V, b.F), 6.0, 1e-14);  // 12 faces: a few dozen roundings of numbers <= 6
   EXPECT_TRUE(solid_mesh(b.V, b.F, Mass{5.0}).isApprox(solid_box(size, Mass{5.0}), 1e-14));
   // translated far away: same inertia about the centre, centre moved
   b.V.rowwise() += Eigen::RowVector3d(1e3, -2e3, 5e2);
   const SpatialInertia far = solid_mesh(b.V, b.F, Mass{5.0});
   EXPECT_TRUE(far.com().isApprox(Vector3d(1e3, -2e3, 5e2), 1e-14));
+  // vertices at ~2e3 m are known to eps 2e3 = 4.4e-13 m; integrated about their mean (mesh code),
+  // the inertia errs by ~2 x that relative to the box's size (~1 m): ~1e-12
   EXPECT_TRUE(far.inertia_com().isApprox(solid_box(size, Mass{5.0}).inertia_com(), 1e-9));
   // tetrahedron: mesh of its 4 faces vs the closed form; unit corner tetrahedron's known values
   MeshVertices V(4, 3);
@@ -210,6 +221,7 @@ TEST(Density, GaussLegendreExactForPolynomials) {
     const QuadratureRule g = gauss_legendre_1d(n);
     for (int d = 0; d <= 2 * n - 1; ++d) {
       const double exact = (d % 2) ? 0.0 : 2.0 / (d + 1);
+      // exact for degree <= 2n - 1: round-off of n terms <= 2 (weights sum to 2), nodes to a few ulps
       EXPECT_NEAR((g.weights.array() * g.points.col(0).array().pow(d)).sum(), exact, 1e-14) << n << " " << d;
     }
   }
@@ -218,6 +230,7 @@ TEST(Density, GaussLegendreExactForPolynomials) {
 TEST(Density, UniformDensityMatchesPrimitivesWithSmallErrorEstimate) {
   const auto one = [](const Vector3d&) { return 2.0; };
   const DensityIntegral box = integrate_density_over_box(one, Vector3d(-0.5, -1, -1.5), Vector3d(0.5, 1, 1.5), 3, 1);
+  // a constant density: every rule is exact; round-off of 27 (box) or 12 faces x 8 (mesh) points
   EXPECT_TRUE(box.inertia.isApprox(solid_box(Vector3d(1, 2, 3), Density{2.0}), 1e-13));
   EXPECT_LT(box.mass_error, 1e-12);
   const Mesh b = test::box_mesh(Vector3d(1, 2, 3));
@@ -229,7 +242,7 @@ TEST(Density, LinearDensityClosedFormAndErrorEstimate) {
   // rho = 1 + x on the cube [0, 1]^3: m = 3/2, c_x = (1/2 + 1/3)/(3/2) = 5/9, c_y = c_z = 1/2
   const auto rho = [](const Vector3d& p) { return 1.0 + p.x(); };
   const DensityIntegral r = integrate_density_over_box(rho, Vector3d::Zero(), Vector3d::Ones(), 2, 1);
-  EXPECT_NEAR(r.inertia.mass(), 1.5, 1e-14);
+  EXPECT_NEAR(r.inertia.mass(), 1.5, 1e-14);  // polynomial density: exact rule, 8 points' round-off
   EXPECT_TRUE(r.inertia.com().isApprox(Vector3d(5.0 / 9.0, 0.5, 0.5), 1e-14));
   // I_xx about the origin = int rho (y^2 + z^2) = 3/2 * 2/3 = 1
   EXPECT_NEAR(r.inertia.inertia_about_origin()(0, 0), 1.0, 1e-14);
@@ -240,7 +253,10 @@ TEST(Density, LinearDensityClosedFormAndErrorEstimate) {
   EXPECT_GT(g.mass_error, 0.0);
   EXPECT_LT(std::abs(g.inertia.mass() - exact_m), g.mass_error);
   const DensityIntegral fine = integrate_density_over_box(gauss, Vector3d::Constant(-1), Vector3d::Constant(1), 6, 2);
-  EXPECT_NEAR(fine.inertia.mass(), exact_m, 1e-13);
+  // the result is the 12-point rule per axis on 2^3 cells (truncation ~h^24, negligible): round-off
+  // of a sum of 8 x 12^3 positive terms, a random walk: 5 sigma = 5 sqrt(n) eps m; the estimate is the
+  // 6-point rule's difference to it, a truncation O(h^12) ~ 1e-9 (below 1e-8)
+  EXPECT_NEAR(fine.inertia.mass(), exact_m, 5 * std::sqrt(8.0 * 12 * 12 * 12) * std::numeric_limits<double>::epsilon() * exact_m);
   EXPECT_LT(fine.mass_error, 1e-8);
 }
 
@@ -250,6 +266,7 @@ TEST(Density, SphereMeshWithRadialDensity) {
   // (the inscribed mesh misses ~0.2% of the volume, more of the outer, denser shell)
   const auto rho = [](const Vector3d& p) { return p.squaredNorm(); };
   const DensityIntegral r = integrate_density_over_mesh(rho, s.V, s.F, 3);
+  // the inscribed mesh (48 x 96) misses (2 pi^2/3)/48^2 ~ 3e-3 of the outer shell, weighted by r^2
   EXPECT_NEAR(r.inertia.mass() / (4 * M_PI / 5), 1.0, 5e-3);
   EXPECT_NEAR(r.inertia.inertia_com()(2, 2) / (8 * M_PI / 21), 1.0, 5e-3);
   // degree 2 times the collapsed Jacobian (degree 2 in u): 3 points per axis are exact already

@@ -1,4 +1,4 @@
-// Planes of symmetry (seed 001 "Plane of Symmetry"): boxes, tetrahedra, a prism, a cube grid,
+// Planes of symmetry (Craig "Plane of Symmetry"): boxes, tetrahedra, a prism, a cube grid,
 // random mirrored sets at random orientations, broken symmetry, consistency with
 // SpatialInertia::admits_symmetry_plane, bad input.
 #include <gtest/gtest.h>
@@ -68,13 +68,15 @@ PointPositions rows(const std::vector<Vector3d>& points) {
 
 bool has_normal(const std::vector<SymmetryPlane>& planes, const Vector3d& n) {
   for (const auto& p : planes)
-    if (p.normal.cross(n.normalized()).norm() < 1e-9) return true;
+    if (p.normal.cross(n.normalized()).norm() < 1e-9) return true;  // normals to eps |I|/gap <= 1e-12
   return false;
 }
 
 // Every detected plane passes the inertia's necessary condition and contains the centre of mass.
 void expect_consistent(const std::vector<SymmetryPlane>& planes, const SpatialInertia& body) {
   for (const auto& p : planes) {
+    // the plane's normal and point come from an eigen-decomposition and sums: eps |I|/gap (gap/|I|
+    // >= 1e-3 here) and a few eps of the body's size; the symmetry check at 1e-9 is far above that
     EXPECT_NEAR(p.normal.norm(), 1.0, 1e-12);
     EXPECT_TRUE(body.admits_symmetry_plane(p.normal, 1e-9)) << p.normal.transpose();
     EXPECT_LT((p.point - body.com()).norm(), 1e-12);
@@ -97,7 +99,7 @@ TEST(SymmetryPlanes, BoxMeshRotatedAndShifted) {
   const auto planes = mesh_symmetry_planes(V, box.F);
   ASSERT_EQ(planes.size(), 3u);
   for (int k = 0; k < 3; ++k) EXPECT_TRUE(has_normal(planes, R.col(k)));
-  for (const auto& p : planes) EXPECT_LT((p.point - t).norm(), 1e-12);
+  for (const auto& p : planes) EXPECT_LT((p.point - t).norm(), 1e-12);  // centroid sums: <= 48 eps |t| (4.5)
 }
 
 TEST(SymmetryPlanes, TwelveTriangleBoxTriangulationBreaksTheMirrors) {

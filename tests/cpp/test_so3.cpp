@@ -21,6 +21,12 @@ namespace rigiddyn {
 namespace {
 
 constexpr double pi = 3.14159265358979323846;
+// Tolerances in this file: one conversion is a fixed sequence of <= ~20 correctly rounded
+// operations on unit numbers (rotation entries, unit quaternions, angles <= pi), so it errs by
+// <= ~20 eps per entry (4e-15), <= 1e-14 in the Frobenius norm of a 3x3 difference; 1e-15 where
+// the result is exact up to one or two roundings (elementary rotations, copies); where a formula
+// amplifies round-off (near a gimbal lock, near pi, tiny angles through a matrix), the comment at
+// the assertion says by how much.
 
 // deterministic random inputs
 struct Random {
@@ -200,6 +206,8 @@ TEST(ExpLog, TinyAnglesKeepFullRelativeAccuracy) {
     const Eigen::Vector3d r = scale * Eigen::Vector3d(0.3, -0.4, 1.2);
     const double t2 = r.squaredNorm();
     const Eigen::Quaterniond q = rotvec_to_quat(r);
+    // relative: the series' first omitted term is |r|^6/322560 < eps at |r| <= 1.1e-3, and each side
+    // rounds a product or two of r (<= 2 eps relative per component); the log only scales v
     EXPECT_LE((q.vec() - 0.5 * (1 - t2 / 24 + t2 * t2 / 1920) * r).norm(), 1e-15 * r.norm());
     EXPECT_LE((quat_to_rotvec(q) - r).norm(), 2e-16 * r.norm());
     // through the matrix the angle is limited by round-off of R ~ I: absolute, not relative
@@ -221,6 +229,8 @@ TEST(ExpLog, AnglesNearPi) {
       const Eigen::Vector3d from_quat = quat_to_rotvec(rotvec_to_quat(r));
       const double sign = from_matrix.dot(r) >= 0 ? 1.0 : -1.0;
       const double sign_quat = from_quat.dot(r) >= 0 ? 1.0 : -1.0;
+      // R's entries carry ~4 eps; Shepperd's quaternion reads the axis off the largest diagonal entry
+      // (well conditioned at pi) and the angle by atan2: <= ~50 eps of pi through R, ~10 eps direct
       EXPECT_LT((from_matrix - sign * r).norm(), 1e-13) << "gap " << gap;
       EXPECT_LT((from_quat - sign_quat * r).norm(), 1e-14) << "gap " << gap;
       EXPECT_LE(from_matrix.norm(), pi + 1e-15);
@@ -394,6 +404,8 @@ TEST(Integrate, ConstantRateIsTheClosedFormRotation) {
     const double rate = rnd.uniform(-10, 10), dt = rnd.uniform(0, 2);
     // body frame: q(t) = q0 ⊗ AngleAxis(rate t, axis_B); world frame: AngleAxis(rate t, axis_W) ⊗ q0
     const Eigen::Quaterniond turn(Eigen::AngleAxisd(rate * dt, axis));
+    // angles up to 20 rad, known to ~eps relative on each side (|rate axis| dt vs rate dt): 2 x 20 eps
+    // = 8.9e-15 in the angle between the two
     EXPECT_LT(rotation_distance(quat_integrate(q0, rate * axis, dt, Frame::body), q0 * turn), 1e-14);
     EXPECT_LT(rotation_distance(quat_integrate(q0, rate * axis, dt, Frame::world), turn * q0), 1e-14);
     // the same motion: w_W = R(q) w_B (constant in both frames for a rotation about a fixed axis)
@@ -414,6 +426,7 @@ TEST(Integrate, SatisfiesTheKinematicEquation) {
   const Eigen::Vector4d derivative =
       (quat_integrate(q0, w_B, h, Frame::body).coeffs() - quat_integrate(q0, w_B, -h, Frame::body).coeffs()) / (2 * h);
   const Eigen::Quaterniond w_pure(0.0, w_B.x(), w_B.y(), w_B.z());
+  // central difference: truncation h^2/6 |d3q/dt3| <= 1.7e-11 |w|^3/8 (|w| = 2.4) plus round-off eps/h = 2e-11
   EXPECT_LT((derivative - 0.5 * (q0 * w_pure).coeffs()).norm(), 1e-9);
 }
 

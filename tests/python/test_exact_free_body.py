@@ -11,6 +11,7 @@ from scipy.optimize import brentq
 from scipy.spatial.transform import Rotation
 
 import rigiddyn
+from _error_bounds import closed_form_error, inertia_condition
 
 EPS = np.finfo(float).eps
 Q0 = Rotation.from_rotvec([0.3, -0.2, 0.5]).as_quat()
@@ -54,11 +55,15 @@ def test_matches_dop853_over_many_periods(inertia, w0, case):
     ode = solve_ivp(euler_quaternion_rhs(inertia), (0, t[-1]), np.concatenate([w0, Q0]), method="DOP853",
                     rtol=1e-13, atol=1e-13, t_eval=t)
     q, w = sol.state_at(t)
-    # DOP853's own global error at 1e-13 reaches ~1e-11 |w| after 12 periods (it shrinks 4x at
-    # rtol 3e-14, towards this solution): compare relative to |w| and to the angle turned
-    np.testing.assert_allclose(w, ode.y[:3].T, rtol=0, atol=3e-11 * np.linalg.norm(w0))
-    turned = np.linalg.norm(w0) * t
-    assert np.all(angle_between(q, ode.y[3:].T) <= 1e-12 * turned + 1e-14)
+    coarse = solve_ivp(euler_quaternion_rhs(inertia), (0, t[-1]), np.concatenate([w0, Q0]), method="DOP853",
+                       rtol=1e-12, atol=1e-12, t_eval=t)
+    # DOP853's global error shrinks >= 2x per decade of tolerance (order 8, error ~ tol^(8/9): 7.7x),
+    # so its error at 1e-13 is <= |y(1e-12) - y(1e-13)| (pointwise); the closed form adds its own
+    # bound (_error_bounds.closed_form_error: 16 eps kappa (1 + |w t|))
+    own = closed_form_error(inertia_condition(inertia), w0, t[-1])
+    np.testing.assert_allclose(w, ode.y[:3].T, rtol=0,
+                               atol=np.abs(coarse.y[:3] - ode.y[:3]).max() + own * np.linalg.norm(w0))
+    assert np.all(angle_between(q, ode.y[3:].T) <= angle_between(coarse.y[3:].T, ode.y[3:].T).max() + own)
 
 
 @pytest.mark.slow
@@ -83,10 +88,14 @@ def test_dop853_converges_to_it_over_100_periods(w0, case):
     angle_diff = [angle_between(y[3:].T, q).max() for y in ode]
     w_estimate = np.linalg.norm(ode[0][:3] - ode[1][:3], axis=0).max() / np.linalg.norm(w0)
     angle_estimate = angle_between(ode[0][3:].T, ode[1][3:].T).max()
+    # DOP853 (order 8) keeps tolerance proportionality, error ~ tol^(8/9) (>= 5x per decade, >= 2x for
+    # 1e-13 -> 3e-14): while its error dominates the closed form's, the distance shrinks by those
+    # factors, and its error at 1e-13 is <= estimate/(5 - 1) < 0.25 estimate
     for diff, estimate in ((w_diff, w_estimate), (angle_diff, angle_estimate)):
         assert diff[2] < 0.5 * diff[1] and diff[1] < 0.25 * diff[0]  # converging as DOP853 tightens
         assert diff[1] < 0.25 * estimate
-    assert w_diff[1] < 3e-10 and angle_diff[1] < 3e-9
+    # the agreement issue 5 asks for, within DOP853's own error estimate (not a figure seen once)
+    assert w_diff[1] <= w_estimate and angle_diff[1] <= angle_estimate
 
 
 def test_invariants_to_round_off():
@@ -99,11 +108,13 @@ def test_invariants_to_round_off():
         energy = 0.5 * np.einsum("ni,ni->n", w, m)
         L_W = Rotation.from_quat(q).apply(m)
         G = np.linalg.norm(sol.angular_momentum_W)
+        # the orbit's identities hold to a few ulps at any t (sn^2 + cn^2 = 1 at any phase; only the
+        # phase errs with t, free_body.hpp): E and |m| to a few ulps, numpy's evaluation adds <= 8 eps
         assert np.abs(energy / sol.kinetic_energy - 1).max() < 32 * EPS
         assert np.abs(np.linalg.norm(m, axis=1) / G - 1).max() < 32 * EPS
-        # the attitude error grows like eps times the phase (about 1e3 rad here)
-        assert np.abs(L_W - sol.angular_momentum_W).max() / G < 1e-12
-        assert np.abs(np.linalg.norm(q, axis=1) - 1).max() < 4 * EPS
+        # the attitude error grows like eps times the phase (about 1e3 rad here): closed_form_error
+        assert np.abs(L_W - sol.angular_momentum_W).max() / G < 2 * closed_form_error(3.0, w0, t[-1])
+        assert np.abs(np.linalg.norm(q, axis=1) - 1).max() < 4 * EPS  # normalised: 2 eps, |q| 2 eps
 
 
 def mp_case_a(inertia_diag, w0, t):
@@ -151,6 +162,7 @@ def test_near_separatrix_matches_extended_precision(eps_w):
     assert sol.case == "A"
     for t in (0.37 * sol.period, 1.5 * sol.period, 3.2 * sol.period):
         w_ref, R_ref, mc_ref = mp_case_a(inertia, w0, t)
+        # 1 - m from double-double Delta_2 (free_body.hpp): a few ulps relative; 1e-13 = 450 eps
         assert sol.parameter_mc == pytest.approx(float(mc_ref), rel=1e-13)
         q, w = sol.state_at(t)
         # the phase λ t is known to eps λ t; slopes of ω and the attitude are O(|ω|)
@@ -171,7 +183,10 @@ def test_forward_and_back_near_separatrix(eps_w):
     back = rigiddyn.TorqueFreeSolution(I, q1, w1)
     q2, w2 = back.state_at(-T)
     assert sol.parameter_mc < 3e-8
-    # ω comes back to a few hundred ulps; the attitude to a few hundred ulps of the angle turned
+    # back at the saddle after 1000 periods, where w moves with the phase u only as
+    # |dw/du| ~ |w| sqrt(1 - m) <= 2e-4 |w|: the phase error (<= 16 eps per radian of lambda T ~ 4e4,
+    # both ways) moves w by <= 2 x 16 x 4e4 x 2e-4 = 260 eps; the attitude errs by
+    # <= 2 x closed_form_error: 2 x 16 kappa (kappa = 3) ulps of the angle turned = 96 ulps
     assert np.abs(w2 - w0).max() < 300 * EPS * np.linalg.norm(w0)
     assert angle_between(q2, Q0) < 300 * np.spacing(np.linalg.norm(w0) * T)
 
@@ -184,6 +199,8 @@ def test_dzhanibekov_flip_takes_half_the_period():
     w = sol.state_at(t)[1][:, 1]
     flips = [brentq(w2, t[i], t[i + 1], xtol=1e-14) for i in np.nonzero(np.sign(w[:-1]) != np.sign(w[1:]))[0]]
     assert len(flips) == 6
+    # flip times: brentq's xtol 1e-14 s plus the phase error (16 eps kappa per radian, |w| t <= 140
+    # rad over 3 periods) over the rate |dw2/dt| at a flip: <= 2e-14 + 4e-12 s, over half a period (11 s)
     np.testing.assert_allclose(np.diff(flips), sol.period / 2, rtol=1e-12)
 
 
@@ -193,24 +210,24 @@ def test_symmetric_and_sphere_are_closed_form_precession():
     sol = rigiddyn.TorqueFreeSolution(np.diag([2.0, 2.0, 3.0]), Q0, w0)
     assert sol.case == "symmetric"
     omega = (3.0 - 2.0) * w0[2] / 2.0
-    assert sol.period == pytest.approx(2 * math.pi / omega, rel=4 * EPS)
+    assert sol.period == pytest.approx(2 * math.pi / omega, rel=4 * EPS)  # 2 pi/Omega: <= 3 roundings
     t = np.linspace(-10, 10, 21)
     q, w = sol.state_at(t)
     w_ref = np.stack([w0[0] * np.cos(omega * t) - w0[1] * np.sin(omega * t),
                       w0[0] * np.sin(omega * t) + w0[1] * np.cos(omega * t), np.full_like(t, w0[2])], axis=1)
-    np.testing.assert_allclose(w, w_ref, atol=1e-14)
+    np.testing.assert_allclose(w, w_ref, atol=closed_form_error(1.5, w0, 10.0) * np.linalg.norm(w0))
     # attitude: R(t) = exp(t L_W/I_t) R0 exp(-t Ω e3)  (Landau & Lifshitz §33)
     L_W = Rotation.from_quat(Q0).apply(np.diag([2.0, 2.0, 3.0]) @ w0)
     R_ref = (Rotation.from_rotvec(np.outer(t, L_W / 2.0)) * Rotation.from_quat(Q0)
              * Rotation.from_rotvec(np.outer(-omega * t, [0, 0, 1])))
-    assert np.all(angle_between(q, R_ref.as_quat()) < 1e-13)
+    assert np.all(angle_between(q, R_ref.as_quat()) < 2 * closed_form_error(1.5, w0, 10.0))  # both sides
     # sphere: constant w, rotation about the fixed axis
     sphere = rigiddyn.TorqueFreeSolution(2.5 * np.eye(3), Q0, w0)
     assert sphere.case == "sphere" and sphere.period == math.inf
     q, w = sphere.state_at(t)
-    np.testing.assert_array_equal(w, np.tile(w0, (len(t), 1)))
+    np.testing.assert_array_equal(w, np.tile(w0, (len(t), 1)))  # constant: returned as given
     R_ref = Rotation.from_rotvec(np.outer(t, Rotation.from_quat(Q0).apply(w0))) * Rotation.from_quat(Q0)
-    assert np.all(angle_between(q, R_ref.as_quat()) < 1e-13)
+    assert np.all(angle_between(q, R_ref.as_quat()) < 2 * closed_form_error(1.0, w0, 10.0))  # both sides
 
 
 def test_nearly_symmetric_body_tends_to_the_symmetric_branch():
@@ -220,6 +237,7 @@ def test_nearly_symmetric_body_tends_to_the_symmetric_branch():
     assert sym.case == "symmetric" and near.case == "A"
     q1, w1 = sym.state_at(np.linspace(0, 20, 11))
     q2, w2 = near.state_at(np.linspace(0, 20, 11))
+    # the motions of inertias 1e-9 apart differ by ~1e-9 per radian turned (|w| t <= 24 rad): 2.4e-8
     np.testing.assert_allclose(w1, w2, atol=1e-7)
     assert np.all(angle_between(q1, q2) < 1e-7)
 
@@ -231,7 +249,7 @@ def test_hairer_lubich_wanner_problem():
     m0 = np.array([math.cos(1.1), 0.0, math.sin(1.1)])
     sol = rigiddyn.TorqueFreeSolution(I, [0, 0, 0, 1], m0 / np.diag(I))
     assert sol.case == "B"
-    assert sol.period == pytest.approx(10.7315, abs=5e-5)
+    assert sol.period == pytest.approx(10.7315, abs=5e-5)  # published to 4 decimals
     np.testing.assert_allclose(sol.principal_moments, [2.0 / 3.0, 1.0, 2.0])
 
 
@@ -244,15 +262,21 @@ def test_separatrix_and_steady_spins():
     ode = solve_ivp(euler_quaternion_rhs(I), (0, 6), np.concatenate([[3.0, 0.4, 1.0], Q0]), method="DOP853",
                     rtol=1e-13, atol=1e-13, t_eval=t)
     q, w = sol.state_at(t)
-    np.testing.assert_allclose(w, ode.y[:3].T, rtol=0, atol=1e-11)
-    assert np.all(angle_between(q, ode.y[3:].T) < 1e-11)
+    coarse = solve_ivp(euler_quaternion_rhs(I), (0, 6), np.concatenate([[3.0, 0.4, 1.0], Q0]), method="DOP853",
+                       rtol=1e-12, atol=1e-12, t_eval=t)
+    # DOP853's error at 1e-13 <= |y(1e-12) - y(1e-13)| (>= 2x per decade, as above), plus the
+    # closed form's own bound
+    own = closed_form_error(3.0, [3.0, 0.4, 1.0], 6.0)
+    np.testing.assert_allclose(w, ode.y[:3].T, rtol=0, atol=np.abs(coarse.y[:3] - ode.y[:3]).max() + own * 3.2)
+    assert np.all(angle_between(q, ode.y[3:].T) < angle_between(coarse.y[3:].T, ode.y[3:].T).max() + own)
     for w0, case in (([0, 2.0, 0], "separatrix"), ([0, 0, 2.0], "A"), ([2.0, 0, 0], "B"), ([0, 0, 0], "separatrix")):
         steady = rigiddyn.TorqueFreeSolution(I, Q0, w0)
         q, w = steady.state_at(t)
         assert steady.case == case
-        np.testing.assert_array_equal(w, np.tile(w0, (len(t), 1)))
+        np.testing.assert_array_equal(w, np.tile(w0, (len(t), 1)))  # steady: returned as given
         R_ref = Rotation.from_rotvec(np.outer(t, Rotation.from_quat(Q0).apply(w0))) * Rotation.from_quat(Q0)
-        assert np.all(angle_between(q, R_ref.as_quat()) < 1e-13)
+        # exp(t w) on both sides: 2 x closed_form_error at |w t| <= 12 rad (kappa = 1: no m <-> w)
+        assert np.all(angle_between(q, R_ref.as_quat()) < 2 * closed_form_error(1.0, w0, 6.0))
 
 
 def test_shapes_and_scalar_first():
@@ -264,7 +288,7 @@ def test_shapes_and_scalar_first():
     qb, wb = b.state_at(np.array([1.5]))
     assert qb.shape == (1, 4) and wb.shape == (1, 3)
     np.testing.assert_array_equal(np.roll(q, 1), qb[0])
-    np.testing.assert_allclose(a.state_at(0.0)[0], Q0, rtol=0, atol=4 * EPS)
+    np.testing.assert_allclose(a.state_at(0.0)[0], Q0, rtol=0, atol=4 * EPS)  # t = 0: a few ulps (free_body.hpp)
 
 
 def test_bad_input():

@@ -1,4 +1,4 @@
-"""Frames and moving-frame kinematics from Python: seed 001's worked example term by term, the
+"""Frames and moving-frame kinematics from Python: Craig's worked example term by term, the
 addition theorem, angular accelerations, the transport theorem and the five acceleration terms
 against finite differences (numpy and SciPy only, never the core, build the expected values),
 user motions given as Python callables, the worked-example command, and bad input."""
@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 import rigiddyn as rd
 from rigiddyn.__main__ import main
-from rigiddyn.worked_example import format_worked_example, seed_worked_example
+from rigiddyn.worked_example import format_worked_example, textbook_worked_example
 from scipy.spatial.transform import Rotation
 
 R_DISK, THETA = 0.06, math.radians(30.0)
@@ -29,11 +29,12 @@ def shaft_and_disk(shaft_length=0.0):
     return tree
 
 
-# ------------------------------------------------------------------ seed 001 worked example
+# ------------------------------------------------------------------ Craig worked example
 @pytest.mark.parametrize("shaft_length", [0.0, 0.4])
 def test_seed_example_point_fixed_in_disk(shaft_length):
     tree = shaft_and_disk(shaft_length)
     p = [R_DISK, 0.0, 0.0]  # P on the disk's x2 axis
+    # a few roundings of numbers <= 20 (sizes 0.5, 5, 20, 2.5 below): <= 8 eps times the size
     np.testing.assert_allclose(tree.point_position("disk", p, "shaft", "shaft", T_EXAMPLE),
                                [shaft_length + R_DISK * C, R_DISK * S, 0.0], atol=1e-15)
     np.testing.assert_allclose(tree.angular_velocity("disk", "world", "shaft", T_EXAMPLE),
@@ -60,7 +61,7 @@ def test_seed_example_alternate_solution_point_moving_in_shaft():
     r_OP = tree.point_position("disk", p, "shaft", "shaft", T_EXAMPLE)
     v_rel = tree.point_velocity("disk", p, ZERO, "shaft", "shaft", T_EXAMPLE).total
     a_rel = tree.point_acceleration("disk", p, ZERO, ZERO, "shaft", "shaft", T_EXAMPLE).total
-    np.testing.assert_allclose(v_rel, np.cross([0, 0, 4.0], r_OP), atol=1e-15)
+    np.testing.assert_allclose(v_rel, np.cross([0, 0, 4.0], r_OP), atol=1e-15)  # |v| 0.24: a few eps of it
     a = tree.point_acceleration("shaft", r_OP, v_rel, a_rel, "world", "shaft", T_EXAMPLE)
     expected = {
         "origin": ZERO,
@@ -75,7 +76,8 @@ def test_seed_example_alternate_solution_point_moving_in_shaft():
 
 
 def test_worked_example_function_and_command(capsys):
-    result = seed_worked_example()
+    result = textbook_worked_example()
+    # a few roundings of the terms (<= 2.5 m/s^2) on each side: <= 8 eps 2.5 = 4.4e-15
     np.testing.assert_allclose(result["terms"]["total"], SEED_ANSWER, atol=1e-14)
     np.testing.assert_allclose(result["terms_alternate"]["total"], SEED_ANSWER, atol=1e-14)
     assert result["max_error"] < 1e-14
@@ -113,6 +115,11 @@ def chain():
 
 
 H = 1e-3
+EPS = np.finfo(float).eps
+# The finite differences below are checked against their own error estimate: a fourth-order
+# difference d(h) errs by ~ (d(2h) - d(h))/15 (Richardson), so |exact - d(h)| <= |d(2h) - d(h)|
+# plus round-off, which divides each value's few-eps error by h (d1: 1.5/h, d2: 5.3/h^2 times
+# eps |f|, f evaluated by the core to <= 16 eps): fd_tolerance below
 
 
 def d1(f, t, h=H):
@@ -141,10 +148,14 @@ def test_angular_velocity_and_acceleration_vs_rotation_derivatives(F, A):
         return vee(d1(lambda u: tree.rotation(F, A, u), s) @ tree.rotation(F, A, s).T)
 
     R_AF = tree.rotation(F, A, t)
-    np.testing.assert_allclose(tree.angular_velocity(F, A, A, t), w_AF_A(t), atol=1e-10)
-    np.testing.assert_allclose(tree.angular_velocity(F, A, F, t), R_AF.T @ w_AF_A(t), atol=1e-10)
-    # alpha_AF = d/dt in A of w_AF: in A components, the time derivative of w_AF_A
-    np.testing.assert_allclose(tree.angular_acceleration(F, A, A, t), d1(w_AF_A, t), atol=1e-7)
+    # Richardson estimate of d1's truncation plus its round-off (1.5/h x 16 eps, |R| = 1; twice)
+    tol_w = np.abs(w_AF_A(t) - vee(d1(lambda u: tree.rotation(F, A, u), t, 2 * H) @ R_AF.T)).max() + 48 * EPS / H
+    np.testing.assert_allclose(tree.angular_velocity(F, A, A, t), w_AF_A(t), atol=tol_w)
+    np.testing.assert_allclose(tree.angular_velocity(F, A, F, t), R_AF.T @ w_AF_A(t), atol=tol_w)
+    # alpha_AF = d/dt in A of w_AF: in A components, the time derivative of w_AF_A (a difference of
+    # differences: the inner round-off tol_w is divided by h once more, 1.5/h)
+    tol_a = np.abs(d1(w_AF_A, t) - d1(w_AF_A, t, 2 * H)).max() + 3 * tol_w / H
+    np.testing.assert_allclose(tree.angular_acceleration(F, A, A, t), d1(w_AF_A, t), atol=tol_a)
 
 
 def test_no_addition_theorem_for_angular_acceleration():
@@ -156,6 +167,7 @@ def test_no_addition_theorem_for_angular_acceleration():
     w_c = tree.angular_velocity("c", "b", "world", t)
     cross_terms = np.cross(w_a, w_b) + np.cross(w_a + w_b, w_c)
     assert np.linalg.norm(cross_terms) > 0.1
+    # sums and cross products of rates <= 7 rad/s and accelerations <= 10 rad/s^2: <= 16 eps 50
     np.testing.assert_allclose(tree.angular_acceleration("c", "world", "world", t), links + cross_terms,
                                atol=1e-12)
 
@@ -173,7 +185,9 @@ def test_transport_theorem_vs_finite_differences(B, A, E):
     R_EB, R_EA = tree.rotation(B, E, t), tree.rotation(A, E, t)
     got = tree.transport_derivative(R_EB @ u_B(t), R_EB @ du_B, B, A, E, t)
     want = R_EA @ d1(lambda s: tree.rotation(B, A, s) @ u_B(s), t)
-    np.testing.assert_allclose(got, want, atol=1e-10)
+    # Richardson estimate of d1's truncation plus its round-off (1.5/h x 16 eps |u| (<= 1.2), twice)
+    tol = np.abs(want - R_EA @ d1(lambda s: tree.rotation(B, A, s) @ u_B(s), t, 2 * H)).max() + 64 * EPS / H
+    np.testing.assert_allclose(got, want, atol=tol)
 
 
 @pytest.mark.parametrize(("F", "A"), PAIRS)
@@ -194,14 +208,22 @@ def test_point_velocity_and_acceleration_vs_finite_differences_of_position(F, A,
     R_EA = tree.rotation(A, E, t)
     vel = tree.point_velocity(F, p(t), v, A, E, t)
     acc = tree.point_acceleration(F, p(t), v, a, A, E, t)
-    np.testing.assert_allclose(vel.total, R_EA @ d1(p_AQ_A, t), atol=1e-9)
-    np.testing.assert_allclose(acc.total, R_EA @ d2(p_AQ_A, t), atol=1e-7)
-    np.testing.assert_allclose(vel.origin + vel.rotational + vel.relative, vel.total, atol=1e-15)
+    # Richardson estimates of the truncation plus round-off (|p_AQ| <= 4: 16 eps 4 per value,
+    # d1: 1.5/h, d2: 5.3/h^2, each difference twice)
+    size = np.abs(p_AQ_A(t)).max()
+    tol_v = np.abs(d1(p_AQ_A, t) - d1(p_AQ_A, t, 2 * H)).max() + 2 * 1.5 * 16 * EPS * size / H
+    tol_a = np.abs(d2(p_AQ_A, t) - d2(p_AQ_A, t, 2 * H)).max() + 2 * 5.3 * 16 * EPS * size / H**2
+    np.testing.assert_allclose(vel.total, R_EA @ d1(p_AQ_A, t), atol=tol_v)
+    np.testing.assert_allclose(acc.total, R_EA @ d2(p_AQ_A, t), atol=tol_a)
+    # the total is the sum of the terms: the core adds the same numbers, numpy in another order
+    # (<= 4 roundings of terms <= 10 m/s, 50 m/s^2)
+    np.testing.assert_allclose(vel.origin + vel.rotational + vel.relative, vel.total, atol=1e-15 * 10)
     np.testing.assert_allclose(acc.origin + acc.tangential + acc.centripetal + acc.relative + acc.coriolis,
-                               acc.total, atol=1e-14)
+                               acc.total, atol=1e-14 * 5)
     # the terms are the ones named: rebuild them from the frame's kinematics
     K = tree.kinematics(F, A, t)
     r, v_rel = K.R_PF @ p(t), K.R_PF @ v
+    # one evaluation per term on each side: a few roundings of numbers <= 50: <= 16 eps 50 = 2e-13
     np.testing.assert_allclose(acc.origin, R_EA @ K.a_PF_P, atol=1e-12)
     np.testing.assert_allclose(acc.tangential, R_EA @ np.cross(K.alpha_PF_P, r), atol=1e-12)
     np.testing.assert_allclose(acc.centripetal, R_EA @ np.cross(K.w_PF_P, np.cross(K.w_PF_P, r)), atol=1e-12)
@@ -214,7 +236,7 @@ def test_motion_may_return_frame_kinematics_and_fixed_motion():
     R = Rotation.from_rotvec([0.1, 0.2, 0.3]).as_matrix()
     tree.add_frame("k", "world", rd.FrameMotion(lambda t: rd.FrameKinematics(R_PF=R, v_PF_P=[1.0, 0, 0])))
     tree.add_frame("fix", "k", rd.FrameMotion.fixed(R.T, [0, 0, 2.0]))
-    np.testing.assert_allclose(tree.rotation("fix", "world", 3.0), np.eye(3), atol=1e-15)
+    np.testing.assert_allclose(tree.rotation("fix", "world", 3.0), np.eye(3), atol=1e-15)  # R R^T: gamma_3 = 3 eps
     np.testing.assert_allclose(tree.point_velocity("fix", ZERO, ZERO, "world", "world", 3.0).total,
                                [1.0, 0, 0], atol=1e-15)
     assert tree.frame_names() == ["world", "k", "fix"]
@@ -272,6 +294,8 @@ def test_bad_values():
         rd.FrameMotion.constant_rotation(["a", "b", "c"], 1.0)
     with pytest.raises(ValueError, match="w_PF_P"):
         rd.FrameKinematics(w_PF_P=[np.inf, 0, 0])
+    with pytest.raises(ValueError, match=r"^motion at t=1\.0+1e\+300: t: expected a time with rate \* t finite \(rate = 1\.0+1e\+300 rad/s\)"):
+        rd.FrameMotion.constant_rotation([1.0, 0, 0], 1e300).at(1e300)
     tree = shaft_and_disk()
     with pytest.raises(ValueError, match="t: "):
         tree.rotation("disk", "world", math.nan)
@@ -304,3 +328,15 @@ def test_bad_user_motions():
         tree.rotation("raises", "world", 0.0)
     with pytest.raises(TypeError):
         rd.FrameMotion(42)
+
+
+def test_constant_rotation_at_any_finite_angle_is_a_rotation():
+    # rate t = 1e300 rad: the rotation vector's norm overflowed (NaN R_PF, the API fuzz's finding); the
+    # angle itself is a double, so R is the rotation by that double's sine and cosine (|R| = 1: the
+    # orthonormality of a computed quaternion's matrix holds to a few eps)
+    for rate, t in [(1e300, 1.0), (-1e300, 1.5), (1e-300, 1e-10), (1.0, 1e300)]:
+        K = rd.FrameMotion.constant_rotation([0, 0, 2.0], rate).at(t)
+        angle = rate * t
+        c, s = math.cos(angle), math.sin(angle)
+        np.testing.assert_allclose(K.R_PF, [[c, -s, 0], [s, c, 0], [0, 0, 1]], atol=4 * np.finfo(float).eps)
+        np.testing.assert_array_equal(K.w_PF_P, [0, 0, rate])

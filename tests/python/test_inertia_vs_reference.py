@@ -15,12 +15,19 @@ from hypothesis import strategies as st
 from hypothesis.extra.numpy import arrays
 
 import rigiddyn as rd
+from _error_bounds import product_tolerance, roundoff
 from rigiddyn_ref import inertia as ref
 from rigiddyn_ref import so3
 
 settings.register_profile("reference", max_examples=40, deadline=None)
 settings.load_profile("reference")
 
+# one evaluation on each side: <= ~30 roundings of terms no larger than the result (sums of
+# positive moments, products with rotations): 30 eps = 7e-15 relative to the result's size; TOL
+# (relative, close() and same_body()) keeps two orders of magnitude for the formulas with more
+# operations (meshes: a sum over faces; hollow bodies: differences of outer and inner parts).
+# Where terms cancel (a parallel-axis shift taken off, a part removed), same_body's `scale` is the
+# size of the terms that cancel: the round-off is relative to it.
 TOL = 1e-12
 
 length = st.floats(0.05, 5.0)
@@ -29,11 +36,16 @@ vec3 = arrays(np.float64, (3,), elements=st.floats(-5.0, 5.0))
 rotation = arrays(np.float64, (3,), elements=st.floats(-4.0, 4.0)).map(so3.rotvec_to_matrix)
 
 
+SUBNORMAL = np.finfo(float).smallest_subnormal
+
+
 def close(a, b, tol=TOL):
-    """Equal to `tol` relative to the size of the larger array."""
+    """Equal to `tol` relative to the size of the larger array, plus what roundings in the subnormal
+    range lose: there each rounding errs by up to half the smallest subnormal absolutely, not
+    relatively (a few roundings on each side: 16 of them)."""
     a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
     scale = max(np.max(np.abs(a)), np.max(np.abs(b)), 1e-300)
-    np.testing.assert_allclose(a, b, rtol=0, atol=tol * scale)
+    np.testing.assert_allclose(a, b, rtol=0, atol=tol * scale + 16 * SUBNORMAL)
 
 
 def same_body(core, want, tol=TOL, scale=0.0):
@@ -43,8 +55,11 @@ def same_body(core, want, tol=TOL, scale=0.0):
     close(core.mass, want.mass, tol)
     np.testing.assert_allclose(core.com, want.com, rtol=0,
                                atol=tol * max(1.0, np.max(np.abs(want.com))))
+    # plus subnormal roundings (as close()): a part's terms round a few times (<= 4) by <= SUBNORMAL/2
+    # each before they are scaled by its mass, so <= 2 m SUBNORMAL per side for the total mass m
     np.testing.assert_allclose(core.inertia_com, want.inertia_com, rtol=0,
-                               atol=tol * max(np.max(np.abs(want.inertia_com)), scale))
+                               atol=tol * max(np.max(np.abs(want.inertia_com)), scale)
+                               + 4 * max(1.0, want.mass) * SUBNORMAL)
 
 
 @st.composite
@@ -178,11 +193,12 @@ def test_parallel_axis(body, point):
     close(core.inertia_about_point(point), ref.inertia_about_point(body, point))
     close(core.inertia_about_origin(), ref.inertia_about_point(body, np.zeros(3)))
     I_P = ref.inertia_about_point(body, point)
+    # taking the shift m |r|^2 off again cancels: relative to the size of I_P
     same_body(rd.SpatialInertia.from_inertia_about_point(body.mass, body.com, I_P, point),
-              ref.from_inertia_about_point(body.mass, body.com, I_P, point), 1e-11)
+              ref.from_inertia_about_point(body.mass, body.com, I_P, point), 1e-11, np.abs(I_P).max())
     I_O = ref.inertia_about_point(body, np.zeros(3))
     same_body(rd.SpatialInertia.from_inertia_about_origin(body.mass, body.com, I_O),
-              ref.from_inertia_about_point(body.mass, body.com, I_O, np.zeros(3)), 1e-11)
+              ref.from_inertia_about_point(body.mass, body.com, I_O, np.zeros(3)), 1e-11, np.abs(I_O).max())
 
 
 @given(inertias(), rotation, vec3)
@@ -215,9 +231,12 @@ def test_removal_undoes_composition(body, part):
     whole = ref.composite([body, part])
     core_whole = core_body(whole)
     want = ref.remove(whole, part)
-    same_body(core_whole.remove(core_body(part)), want, 1e-10)  # cancellation: m_r = m - m_p
-    same_body(core_whole - core_body(part), want, 1e-10)
-    same_body(want, body, 1e-10)  # and the reference itself gives the body back
+    # cancellation: m_r = m - m_p (m_p/m_r <= 100: com to 100 x TOL), I_r = I - I_p - shifts,
+    # relative to the whole's inertia (the size of what cancels)
+    scale = np.abs(whole.inertia_com).max()
+    same_body(core_whole.remove(core_body(part)), want, 1e-10, scale)
+    same_body(core_whole - core_body(part), want, 1e-10, scale)
+    same_body(want, body, 1e-10, scale)  # and the reference itself gives the body back
 
 
 # ------------------------------------------------------------------ 6x6, momentum, energy
@@ -226,21 +245,30 @@ def test_spatial_matrix_momentum_and_energy(body, twist):
     core = core_body(body)
     M = ref.spatial_inertia_matrix(body)
     close(core.matrix(), M)
-    same_body(rd.SpatialInertia.from_matrix(M), body, 1e-11)
+    # I_C = I_O - m hat(c) hat(c)^T cancels: relative to the size of I_O
+    same_body(rd.SpatialInertia.from_matrix(M), body, 1e-11, np.abs(M[:3, :3]).max())
     V = rd.Motion(twist[:3], twist[3:])
     h = core.momentum(V)
     assert isinstance(h, rd.Force)
-    close(h.to_vector(), ref.momentum(body, twist), 1e-11)
-    close(core.kinetic_energy(V), ref.kinetic_energy(body, twist), 1e-11)
-    close(core.kinetic_energy(V), 0.5 * twist @ M @ twist, 1e-11)  # the 6x6 quadratic form
+    # M V and V.M V/2: Higham's gamma_n |M||V| (entries of M V may cancel), relative to the result
+    want_h = ref.momentum(body, twist)
+    close(h.to_vector(), want_h, max(1e-11, product_tolerance(M, twist) / max(np.abs(want_h).max(), 1e-300)))
+    T = ref.kinetic_energy(body, twist)
+    tol_T = max(1e-11, 0.5 * (product_tolerance([np.abs(twist)], np.abs(M) @ np.abs(twist)) * 7) / max(T, 1e-300))
+    close(core.kinetic_energy(V), T, tol_T)
+    close(core.kinetic_energy(V), 0.5 * twist @ M @ twist, tol_T)  # the 6x6 quadratic form
 
 
 @given(inertias(), vec3, vec3, vec3)
 def test_angular_momentum(body, w, v_C, point):
     core = core_body(body)
     close(core.angular_momentum_about_com(w), ref.angular_momentum_about_com(body, w))
-    close(core.angular_momentum_about_point(w, v_C, point),
-          ref.angular_momentum_about_point(body, w, v_C, point), 1e-11)
+    # I_C w + m (c - point) x v_C: terms <= |I||w| + m |c - point||v_C|, relative to the result
+    want = ref.angular_momentum_about_point(body, w, v_C, point)
+    size = (np.abs(body.inertia_com).sum() * np.abs(w).max()
+            + body.mass * np.abs(body.com - point).sum() * np.abs(v_C).max())
+    close(core.angular_momentum_about_point(w, v_C, point), want,
+          max(1e-11, roundoff(size) / max(np.abs(want).max(), 1e-300)))
 
 
 # ------------------------------------------------------------------ principal axes
@@ -255,7 +283,7 @@ def test_principal_axes(body):
     gaps = np.diff(want_moments) / want_moments[-1]
     if np.all(gaps > 1e-4):  # distinct moments: each axis is defined up to sign
         signs = np.sign(np.sum(axes * want_axes, axis=0))
-        close(axes * signs, want_axes, 1e-12 / np.min(gaps))
+        close(axes * signs, want_axes, 1e-12 / np.min(gaps))  # eigenvectors: eps |I| / gap (Davis-Kahan)
     p = core_body(body).principal_axes()
     close(p.moments, moments)
     close(p.axes, axes)

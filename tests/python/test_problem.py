@@ -8,7 +8,7 @@ import warnings
 import numpy as np
 import pytest
 import rigiddyn
-from rigiddyn.problem import PRIMITIVES, example_problems, load_problem, parse_problem
+from rigiddyn.problem import PRIMITIVES, Problem, example_problems, load_problem, parse_problem
 
 try:
     import tomllib
@@ -62,10 +62,12 @@ def test_primitive_matches_the_core_constructor():
         density = 10.0
     """)
     box = rigiddyn.solid_box([1.0, 2.0, 3.0], density=10.0)
-    assert p.mass == pytest.approx(60.0)
-    np.testing.assert_allclose(p.inertia_com, box.inertia_com, rtol=1e-15)
-    # closed form I_xx = m (b^2 + c^2) / 12
-    assert p.inertia_com[0, 0] == pytest.approx(60.0 * (4 + 9) / 12)
+    eps = np.finfo(float).eps
+    # density x volume, products of small integers: exact in binary, <= 2 roundings in any order
+    assert p.mass == pytest.approx(60.0, rel=2 * eps, abs=0)
+    np.testing.assert_array_equal(p.inertia_com, box.inertia_com)  # the same constructor on the same doubles
+    # closed form I_xx = m (b^2 + c^2) / 12: <= 4 roundings on each side
+    assert p.inertia_com[0, 0] == pytest.approx(60.0 * (4 + 9) / 12, rel=8 * eps, abs=0)
 
 
 def test_mesh_file_matches_the_box(tmp_path):
@@ -77,6 +79,7 @@ def test_mesh_file_matches_the_box(tmp_path):
     (tmp_path / "box.obj").write_text("\n".join(lines) + "\n")
     (tmp_path / "p.toml").write_text('horizon = 1.0\n[body.mesh]\npath = "box.obj"\nmass = 6.0\n')
     p = load_problem(tmp_path / "p.toml")
+    # 12 faces of a mesh against the closed form: a few dozen roundings of numbers <= 7 kg m^2
     np.testing.assert_allclose(p.inertia_com, rigiddyn.solid_box([1.0, 2.0, 3.0], mass=6.0).inertia_com,
                                rtol=1e-12, atol=1e-12)
 
@@ -168,8 +171,10 @@ def test_mesh_validation(tmp_path):
 
 
 def test_unknown_example_and_bad_toml(tmp_path):
-    with pytest.raises(ValueError, match=r"^problem: expected .*t_handle"):
+    with pytest.raises(ValueError, match=r"^path_or_name: expected .*t_handle"):
         load_problem("no_such_example")
+    with pytest.raises(TypeError, match=r"^path_or_name: expected .*, got int 5"):
+        load_problem(5)
     bad = tmp_path / "bad.toml"
     bad.write_text("horizon = = 1")
     with pytest.raises(ValueError, match="expected valid TOML"):
@@ -211,3 +216,91 @@ def test_error_message_names_expected_value():
     with pytest.raises(ValueError) as e:
         parse(BASE.replace("mass = 2.0", "mass = -3"))
     assert re.search(r"body.mass: expected a finite number > 0, got -3", str(e.value))
+
+
+def test_primitive_shape_of_the_wrong_type():
+    # a TOML array where a string belongs (issue 9 item 11: was "TypeError: unhashable type")
+    with pytest.raises(ValueError, match=r"^body.primitive.shape: expected one of solid_sphere.*got \['solid_box'\]"):
+        parse_problem({"horizon": 1.0, "body": {"primitive": {"shape": ["solid_box"], "size": [1, 2, 3], "mass": 1.0}}})
+
+
+@pytest.mark.parametrize("field, value, error", [
+    ("name", 5, TypeError), ("mass", -1.0, ValueError), ("mass", "1", TypeError), ("horizon", 0.0, ValueError),
+    ("inertia_com", np.diag([1.0, 1.0, 5.0]), ValueError), ("inertia_com", np.eye(2), ValueError),
+    ("w_B", [np.nan, 0, 0], ValueError), ("q_WB", [0, 0, 0, 2.0], ValueError), ("loads", [1, 2], TypeError),
+    ("gravity", "down", TypeError), ("require_triangle_inequality", None, TypeError), ("tradeoff", [], TypeError),
+])
+def test_problem_constructor_checks_every_field(field, value, error):
+    # the dataclass is public: built directly it is checked as a problem file is (issue 9 item 10)
+    good = dict(name="p", mass=1.0, inertia_com=np.diag([1.0, 2.0, 2.5]), horizon=1.0)
+    with pytest.raises(error, match=rf"^{field}(\.\w+|\[0\])?: expected"):
+        Problem(**{**good, field: value})
+    problem = Problem(**good, w_B=[0, 1, 0])
+    assert problem.w_B.dtype == np.float64 and problem.w_B.shape == (3,)
+
+
+FULL = {  # every field a problem file may hold (one [body] source at a time)
+    "name": "full", "description": "every field", "horizon": 1.0, "gravity": [0.0, 0.0, -9.81],
+    "body": {"mass": 2.0, "inertia": [1.0, 2.0, 2.5], "require_triangle_inequality": True},
+    "initial": {"p_W": [0.0, 0, 0], "q_WB": [0.0, 0, 0, 1], "v_W": [0.0, 0, 0], "w_B": [0.1, 1, 0],
+                "scalar_first": False},
+    "loads": [{"force": [0.0, 0, 1], "torque": [0.0, 0, 1e-3], "frame": "body", "t_start": 0.0, "t_end": 0.5}],
+    "tradeoff": {"methods": ["rk4"], "dts": [0.01], "tolerance": 1e-6, "measure": "final_attitude_error"},
+}
+PRIMITIVE_BODY = {"primitive": {"shape": "solid_box", "size": [1.0, 2.0, 3.0], "mass": 1.0}}
+# TOML values of every kind but the right one: an array where a string belongs (the reported
+# `shape = ["solid_box"]`), a table, a string, a boolean, an array of tables
+WRONG_TOML = {"array of str": ["solid_box"], "table": {"a": 1}, "string": "text", "bool": True,
+              "array of tables": [{"a": 1}]}
+
+
+def _leaves(table, prefix=()):
+    for key, value in table.items():
+        if isinstance(value, dict):
+            yield from _leaves(value, (*prefix, key))
+        elif isinstance(value, list) and value and isinstance(value[0], dict):
+            for i, item in enumerate(value):
+                yield from _leaves(item, (*prefix, key, i))
+        else:
+            yield (*prefix, key)
+
+
+def _replaced(data, path, value):
+    import copy
+
+    data = copy.deepcopy(data)
+    target = data
+    for key in path[:-1]:
+        target = target[key]
+    target[path[-1]] = value
+    return data
+
+
+def _field_name(path):
+    name = ""
+    for key in path:
+        name += f"[{key}]" if isinstance(key, int) else (f".{key}" if name else key)
+    return name
+
+
+TOML_CASES = [(data, path, kind) for data in (FULL, {**FULL, "body": PRIMITIVE_BODY})
+              for path in _leaves(data) for kind in WRONG_TOML]
+
+
+@pytest.mark.parametrize("data, path, kind", TOML_CASES,
+                         ids=[f"{_field_name(p)}-{k}" for _, p, k in TOML_CASES])
+def test_every_toml_field_of_the_wrong_type_is_named(data, path, kind):
+    # issue 9 item 11: a value of the wrong TOML type is a ValueError "<field>: expected ..." naming the
+    # field (never "TypeError: unhashable type" or another Python error from inside the parser)
+    assert parse_problem(data).name == data["name"]  # the file is valid before the change
+    value = WRONG_TOML[kind]
+    try:
+        parse_problem(_replaced(data, path, value))
+    except ValueError as e:
+        field = re.escape(_field_name(path))
+        assert re.match(rf"^{field}(\[\d+\])?: expected ", str(e)), str(e)
+        return
+    # accepted: only where the value is a valid one (free text, the switches)
+    valid = {(("name",), "string"), (("description",), "string"), (("gravity",), "bool"),
+             (("body", "require_triangle_inequality"), "bool"), (("initial", "scalar_first"), "bool")}
+    assert (path, kind) in valid, f"{_field_name(path)} = {value!r} was accepted"

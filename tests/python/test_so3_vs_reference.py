@@ -15,6 +15,9 @@ from rigiddyn_ref import so3 as ref
 settings.register_profile("reference", max_examples=50, deadline=None)
 settings.load_profile("reference")
 
+# one conversion on each side: <= ~30 correctly rounded operations on numbers <= 2 pi (unit
+# quaternions, rotation matrices, angles), through well-conditioned forms (Shepperd, atan2 log,
+# sinc): <= 30 eps 2 pi = 4e-14 per side; TOL keeps a 10x margin over the sum of both sides
 TOL = 1e-12
 SEQUENCES = [s for base in ("xyz", "xzy", "yxz", "yzx", "zxy", "zyx",
                             "xyx", "xzx", "yxy", "yzy", "zxz", "zyz") for s in (base, base.upper())]
@@ -128,7 +131,9 @@ def test_matrix_to_rotvec(r):
     close(ref.rotvec_to_matrix(got), R)
     angles = np.linalg.norm(np.atleast_2d(want), axis=-1)
     if np.all(angles < np.pi - 1e-6):
-        close(got, want, 1e-10)  # (the log of R is conditioned like 1/sin(angle) near pi)
+        # both take the log through Shepperd's quaternion and atan2, well conditioned up to pi (TOL's
+        # bound); the angle < pi - 1e-6 filter only excludes the free axis sign at pi: 1e-10 >> bound
+        close(got, want, 1e-10)
 
 
 @given(single_or_stack(lambda n: arrays(np.float64, (3,) if n is None else (n, 3), elements=finite)
@@ -148,6 +153,7 @@ def test_quat_to_axis_angle(q):
     # the rotation is the same (the axis is undefined at angle 0 and its sign free at pi)
     close(ref.quat_to_matrix(ref.axis_angle_to_quat(axis, angle)), ref.quat_to_matrix(q))
     if np.all((np.atleast_1d(angle_ref) > 1e-6) & (np.atleast_1d(angle_ref) < np.pi - 1e-6)):
+        # axis = v/|v| with |v| = sin(angle/2) >= 5e-7: a rounding eps of q moves it eps/|v| <= 4.4e-10
         close(axis, axis_ref, 1e-9)
 
 
@@ -191,7 +197,7 @@ def test_quat_rotate_all_broadcasts(data):
     for q, v in [(q_single, v_single), (q_stack, v_stack), (q_single, v_stack), (q_stack, v_single)]:
         got, want = rd.quat_rotate(q, v), ref.quat_rotate(q, v)
         assert got.shape == want.shape
-        close(got, want, 1e-11)
+        close(got, want, 1e-11)  # |v| <= 10 sqrt(3): TOL's bound times |v| (17): 7e-13 per side
 
 
 @given(st.data(), st.sampled_from(["body", "world"]), st.booleans())
@@ -202,6 +208,7 @@ def test_quat_integrate(data, frame, scalar_first):
     dt = data.draw(st.floats(0.0, 0.5))
     sf = (lambda a: a[..., [3, 0, 1, 2]]) if scalar_first else (lambda a: a)
     got = rd.quat_integrate(sf(q), w, dt, frame=frame, scalar_first=scalar_first)
+    # angle h|w| <= 18 rad: exp rounds eps relative in the angle: <= 18 * 4 eps = 2e-14 per side
     same_rotation(got, sf(ref.quat_integrate(q, w, dt, frame=frame)), 1e-12)
 
 
@@ -249,7 +256,7 @@ def test_matrix_and_quat_to_euler(seq, q):
         assert got.shape == want.shape
         close(ref.euler_to_matrix(seq, got), R, 1e-12)  # always: the angles give R back
         cond = conditioning(seq, want)
-        if np.all(cond < 1e3):
+        if np.all(cond < 1e3):  # angles from R amplify R's round-off by cond: TOL's bound times cond
             np.testing.assert_allclose(wrapped(got - want), 0.0, atol=1e-12 * np.max(cond))
 
 
@@ -263,5 +270,7 @@ def test_euler_gimbal_lock_convention(seq, first, third, upper_end):
     R = ref.euler_to_matrix(seq, [first, middle, third])
     got, want = rd.matrix_to_euler(seq, R), ref.matrix_to_euler(seq, R)
     assert got[2] == 0.0 and want[2] == 0.0
+    # both declare the lock (R's entries in sin/cos theta2 are round-off, <= 1e-16, under the ~1e-7
+    # lock threshold) and read theta1 +- theta3 off O(1) entries: the ignored part is <= 1e-16/1e-7
     np.testing.assert_allclose(wrapped(got - want), 0.0, atol=1e-9)
     close(ref.euler_to_matrix(seq, got), R)

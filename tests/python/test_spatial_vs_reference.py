@@ -15,6 +15,9 @@ from rigiddyn_ref import spatial as ref
 settings.register_profile("reference", max_examples=80, deadline=None)
 settings.load_profile("reference")
 
+# one evaluation on each side: <= ~20 roundings (3x3 and 6x6 products, cross products) of terms
+# <= |R| |p| |v| <= 1e3 (inputs <= 10, rotations <= 4 rad): <= 40 eps 1e3 = 9e-12 absolute, i.e.
+# TOL relative to max(1e3, |value|) with a factor ~10 to spare
 TOL = 1e-12
 vec3 = arrays(np.float64, (3,), elements=st.floats(-10.0, 10.0))
 vec6 = arrays(np.float64, (6,), elements=st.floats(-10.0, 10.0))
@@ -104,6 +107,8 @@ def test_transform_actions(r, p, point, m, f):
     close(X.act_inv_point(point), ref.act_inv_point(R, p, point))
     close(X.act(motion(m)).to_vector(), ref.motion_matrix(R, p) @ m)
     close(X.act(force(f)).to_vector(), ref.force_matrix(R, p) @ f)
+    # the reference solves with the 6x6 X: its condition (1 + |p|)^2 <= 340 multiplies eps (LU,
+    # backward stable): <= 340 * 8 eps = 6e-13 relative; the core applies the closed-form inverse
     close(X.act_inv(motion(m)).to_vector(), np.linalg.solve(ref.motion_matrix(R, p), m), 1e-11)
     close(X.act_inv(force(f)).to_vector(), np.linalg.solve(ref.force_matrix(R, p), f), 1e-11)
     assert isinstance(X.act(motion(m)), rd.Motion)
@@ -146,5 +151,6 @@ def test_twist_to_screw(m):
     else:
         # pitch and point scale like |v|/|w|: compare relative to that size
         scale = max(1.0, np.linalg.norm(m[3:]) / magnitude)
+        # w.v/|w|^2 and w x v/|w|^2: a few roundings, relative to |v|/|w| (also where w.v cancels)
         close(screw.pitch / scale, pitch / scale, 1e-11)
         close(screw.point / scale, point / scale, 1e-11)

@@ -7,7 +7,7 @@ namespace rigiddyn {
 PlanarWrench wrench_at_com(double theta, const Eigen::Vector2d& force, double torque, const Eigen::Vector2d& p_GP,
                            Frame frame) {
   const Eigen::Vector2d f_W = frame == Frame::body ? Eigen::Rotation2Dd(theta) * force : force;
-  // moment about G of the force at P plus the couple (moment transfer, seed 001)
+  // moment about G of the force at P plus the couple (moment transfer, Craig)
   return {f_W, torque + cross2(p_GP, force)};
 }
 

@@ -14,7 +14,7 @@ Eigen::Vector3d to_body(const Eigen::Quaterniond& q_WB, const Eigen::Vector3d& v
 ComWrench wrench_at_com(const Eigen::Quaterniond& q_WB, const Eigen::Vector3d& force, const Eigen::Vector3d& torque,
                         const Eigen::Vector3d& p_GP, Frame frame) {
   const Eigen::Vector3d f_B = to_body(q_WB, force, frame);
-  // moment about G of the force at P plus the couple (moment transfer, seed 001)
+  // moment about G of the force at P plus the couple (moment transfer, Craig)
   const Eigen::Vector3d n_B = to_body(q_WB, torque + p_GP.cross(force), frame);
   return {q_WB * f_B, n_B};
 }

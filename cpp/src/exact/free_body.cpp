@@ -3,8 +3,8 @@
 // Säfström, Zanna 2008 with Leroy's errata).
 #include "rigiddyn/exact/free_body.hpp"
 
+#include "power_of_two.hpp"
 #include "rigiddyn/check.hpp"
-
 
 #include <algorithm>
 #include <cmath>
@@ -51,15 +51,17 @@ DoubleDouble operator+(const DoubleDouble& a, const DoubleDouble& b) {
 
 // Δ2 I1 I3 = m1² (I1 − I2) I3 + m3² (I3 − I2) I1 in double-double: the two terms have opposite
 // signs and cancel at the separatrix.
-DoubleDouble delta2_times_I1_I3(const Eigen::Vector3d& m, const Eigen::Vector3d& I) {
-  const DoubleDouble term1 = two_prod(m(0), m(0)) * two_sum(I(0), -I(1)) * DoubleDouble{I(2), 0.0};
-  const DoubleDouble term3 = two_prod(m(2), m(2)) * two_sum(I(2), -I(1)) * DoubleDouble{I(0), 0.0};
+DoubleDouble delta2_times_I1_I3(double m1, double m3, const Eigen::Vector3d& I) {
+  const DoubleDouble term1 = two_prod(m1, m1) * two_sum(I(0), -I(1)) * DoubleDouble{I(2), 0.0};
+  const DoubleDouble term3 = two_prod(m3, m3) * two_sum(I(2), -I(1)) * DoubleDouble{I(0), 0.0};
   return term1 + term3;
 }
 
+double square(double x) { return x * x; }
+
 // unit quaternion exp(v/2) of the rotation vector v [rad]
 Eigen::Quaterniond rotation_vector_to_quaternion(const Eigen::Vector3d& v) {
-  const double angle = v.norm();
+  const double angle = v.stableNorm();  // no overflow of the squares for a finite v
   if (angle == 0.0) return Eigen::Quaterniond::Identity();
   return Eigen::Quaterniond(Eigen::AngleAxisd(angle, v / angle));
 }
@@ -69,29 +71,30 @@ Eigen::Quaterniond about_z(double angle) {
 }
 
 // q_NQ of Z-X-Z angles (φ, θ, ψ) with θ and ψ read off m_Q = R_NQᵀ (0, 0, G):
-// m_Q = G (sin θ sin ψ, sin θ cos ψ, cos θ), θ ∈ [0, π], ψ = atan2(m_a, m_b) ∈ (−π, π]. The half-angle
-// cosines and sines come algebraically from m_Q (the larger of each pair by a square root of a sum of
+// m_Q = G (sin θ sin ψ, sin θ cos ψ, cos θ), θ ∈ [0, π], ψ = atan2(m_a, m_b) ∈ (−π, π]. The transverse
+// part comes as its magnitude rho = |(m_a, m_b)| (which may underflow: θ is then 0 or π to within it)
+// and its direction (x, y), any positive multiple of (m_a, m_b) not both 0 (so that a tiny transverse
+// part keeps its direction), r = |(x, y)|; rho and m_s in one unit, at most ~4 (no overflow in the squares). The
+// half-angle cosines and sines come algebraically (the larger of each pair by a square root of a sum of
 // like-signed terms, the other from sin x = 2 sin(x/2) cos(x/2)), accurate at both poles; then
 // Rz(φ) Rx(θ) Rz(ψ) = Rz(φ) (cθ cψ, sθ cψ, −sθ sψ, cθ sψ) with c·, s· of the half angles.
-// Needs m_a² + m_b² > 0 (never 0 on the elliptic orbits).
-Eigen::Quaterniond zxz_from_momentum(double phi, const Eigen::Vector3d& m_Q) {
-  const double rho2 = m_Q(0) * m_Q(0) + m_Q(1) * m_Q(1);
-  const double rho = std::sqrt(rho2), G = std::sqrt(rho2 + m_Q(2) * m_Q(2));
+Eigen::Quaterniond zxz_from_momentum(double phi, double x, double y, double r, double rho, double m_s) {
+  const double G = std::sqrt(rho * rho + m_s * m_s);
   double c_theta, s_theta;  // cos θ/2, sin θ/2 (both >= 0)
-  if (m_Q(2) >= 0.0) {
-    c_theta = std::sqrt((G + m_Q(2)) / (2.0 * G));
+  if (m_s >= 0.0) {
+    c_theta = std::sqrt((G + m_s) / (2.0 * G));
     s_theta = rho / (2.0 * G * c_theta);
   } else {
-    s_theta = std::sqrt((G - m_Q(2)) / (2.0 * G));
+    s_theta = std::sqrt((G - m_s) / (2.0 * G));
     c_theta = rho / (2.0 * G * s_theta);
   }
   double c_psi, s_psi;  // cos ψ/2 >= 0, sin ψ/2 with the sign of m_a (of atan2's ψ)
-  if (m_Q(1) >= 0.0) {
-    c_psi = std::sqrt((rho + m_Q(1)) / (2.0 * rho));
-    s_psi = m_Q(0) / (2.0 * rho * c_psi);
+  if (y >= 0.0) {
+    c_psi = std::sqrt((r + y) / (2.0 * r));
+    s_psi = x / (2.0 * r * c_psi);
   } else {
-    s_psi = std::copysign(std::sqrt((rho - m_Q(1)) / (2.0 * rho)), m_Q(0));
-    c_psi = m_Q(0) / (2.0 * rho * s_psi);
+    s_psi = std::copysign(std::sqrt((r - y) / (2.0 * r)), x);
+    c_psi = x / (2.0 * r * s_psi);
   }
   const Eigen::Quaterniond tilt(c_theta * c_psi, s_theta * c_psi, -s_theta * s_psi, c_theta * s_psi);
   return about_z(phi) * tilt;
@@ -118,9 +121,20 @@ const Eigen::Quaterniond& checked_attitude(const Eigen::Quaterniond& q_WB) {
   return q_WB;
 }
 
-const Eigen::Vector3d& checked_finite(const Eigen::Vector3d& v, const char* name) {
-  require_finite(v, name);
-  return v;
+const Eigen::Vector3d& checked_angular_velocity(const Eigen::Vector3d& w_B) {
+  require_finite(w_B, "w_B");
+  return w_B;
+}
+
+// v 2^e, componentwise
+Eigen::Vector3d times_pow2(const Eigen::Vector3d& v, int e) {
+  return {rigiddyn::times_pow2(v(0), e), rigiddyn::times_pow2(v(1), e), rigiddyn::times_pow2(v(2), e)};
+}
+
+// The exponent of max |v_i| (0 for v = 0).
+int exponent_of_largest(const Eigen::Vector3d& v) {
+  const double largest = v.cwiseAbs().maxCoeff();
+  return largest > 0.0 ? exponent_of(largest) : 0;
 }
 
 }  // namespace
@@ -138,7 +152,13 @@ std::string to_string(TorqueFreeCase c) {
 
 TorqueFreeSolution::TorqueFreeSolution(const Eigen::Matrix3d& I_B, const Eigen::Quaterniond& q_WB,
                                        const Eigen::Vector3d& w_B)
-    : TorqueFreeSolution(checked_principal_axes(I_B), checked_attitude(q_WB), checked_finite(w_B, "w_B"), true) {}
+    : TorqueFreeSolution(checked_principal_axes(I_B), checked_attitude(q_WB), checked_angular_velocity(w_B), true) {
+  // the motion is formed in scaled units: only its rates (of the order of |w_B| I_max/I_min) can overflow
+  if (!std::isfinite(max_rate())) {
+    throw_invalid("w_B", "an angular velocity whose rates of motion (up to |w_B| I_max/I_min) stay within the double range",
+                  w_B);
+  }
+}
 
 TorqueFreeSolution::TorqueFreeSolution(const PrincipalAxes& axes, const Eigen::Quaterniond& q_WB,
                                        const Eigen::Vector3d& w_B, bool eager_complete_pi)
@@ -147,14 +167,19 @@ TorqueFreeSolution::TorqueFreeSolution(const PrincipalAxes& axes, const Eigen::Q
   w_B0_ = w_B;
   const Eigen::Vector3d& I = I_principal_;
   const Eigen::Vector3d w_P = R_BP_.transpose() * w_B;
-  const Eigen::Vector3d m_P = I.cwiseProduct(w_P);
-  L_W_ = q_WB0_ * (R_BP_ * m_P);
-  kinetic_energy_ = 0.5 * w_P.dot(m_P);
+  // the momentum as m̃ = Î w̃ with Î = 2^−e_I I (the largest moment in [1, 2)) and w̃ = 2^−e_w w_P (the
+  // largest rate in [1, 2)), exact scalings: representable for any finite inertia and w_B, m = 2^(e_I + e_w) m̃.
+  // The motion depends only on Î and w̃ (rates scale with 2^e_w); L_W and T alone are formed in SI units.
+  const int e_I = exponent_of(I(2)), e_w = exponent_of_largest(w_P);
+  const Eigen::Vector3d I_hat = times_pow2(I, -e_I), w_tilde = times_pow2(w_P, -e_w);
+  const Eigen::Vector3d m_tilde = I_hat.cwiseProduct(w_tilde);
+  L_W_ = times_pow2(q_WB0_ * (R_BP_ * m_tilde), e_I + e_w);                 // ±inf beyond the double range
+  kinetic_energy_ = rigiddyn::times_pow2(0.5 * w_tilde.dot(m_tilde), e_I + 2 * e_w);  // +inf beyond it
 
   const double tol = 64.0 * kEps * I(2);
   if (I(2) - I(0) <= tol) {
     case_ = TorqueFreeCase::sphere;
-    init_rotation_about_axis(Eigen::Vector3d::Constant(I.mean()), R_BP_.col(2), I.mean());
+    init_rotation_about_axis(Eigen::Vector3d::Ones(), R_BP_.col(2), 1.0);
     return;
   }
   if (I(1) - I(0) <= tol || I(2) - I(1) <= tol) {
@@ -167,124 +192,182 @@ TorqueFreeSolution::TorqueFreeSolution(const PrincipalAxes& axes, const Eigen::Q
     return;
   }
 
-  // Δ1 ≥ 0 and Δ3 ≤ 0 are sums of like-signed terms; Δ2 cancels (see delta2_times_I1_I3)
-  const Eigen::Vector3d m2 = m_P.cwiseProduct(m_P);
-  const double delta1 = m2(1) * (I(1) - I(0)) / I(1) + m2(2) * (I(2) - I(0)) / I(2);
-  const double delta3 = m2(0) * (I(0) - I(2)) / I(0) + m2(1) * (I(1) - I(2)) / I(1);
-  const double delta2 = delta2_times_I1_I3(m_P, I).hi / (I(0) * I(2));
-  case_ = delta2 > 0.0 ? TorqueFreeCase::A : delta2 < 0.0 ? TorqueFreeCase::B : TorqueFreeCase::separatrix;
-  if ((m_P.array() == 0.0).count() >= 2) {
+  if ((m_tilde.array() == 0.0).count() >= 2) {
     // steady spin about a principal axis (or rest); about axis 2 the unstable equilibrium on the
     // separatrix. The Z-X-Z angles are singular there (θ = 0), so rotate about the fixed axis.
+    case_ = m_tilde(0) != 0.0 ? TorqueFreeCase::B : m_tilde(2) != 0.0 ? TorqueFreeCase::A : TorqueFreeCase::separatrix;
     about_axis_ = true;
     nu_W_ = q_WB0_ * w_B;
     beta_ = 0.0;
     period_ = kInf;
     return;
   }
-  init_elliptic(m_P, delta1, delta3, delta2);
+  init_elliptic(I_hat, m_tilde, e_w);
 }
 
 // Sphere and symmetric body: ω = m/I_t + β e with β = (I_t − I_a) ω_a / I_t, so that
-// R(t) = exp(t (L_W/I_t)^) R0 exp(t β ê) and m(t) = exp(−t β ê) m0 (Landau & Lifshitz §33).
+// R(t) = exp(t (L_W/I_t)^) R0 exp(t β ê) and m(t) = exp(−t β ê) m0 (Landau & Lifshitz §33). Only the
+// ratios of the moments enter (m/I_t = (I_Q/I_t) ω): any common scale of I_Q and I_axial.
 void TorqueFreeSolution::init_rotation_about_axis(const Eigen::Vector3d& I_Q, const Eigen::Vector3d& axis_B,
                                                   double I_axial) {
   about_axis_ = true;
-  const Eigen::Vector3d m_B = R_BP_ * I_Q.cwiseProduct(R_BP_.transpose() * w_B0_);
   const double I_t = I_Q(1);  // the transverse moment (the middle one is always transverse)
+  const Eigen::Vector3d m_over_I_t_B = R_BP_ * (I_Q / I_t).cwiseProduct(R_BP_.transpose() * w_B0_);
   e_B_ = axis_B;
-  beta_ = (I_t - I_axial) * e_B_.dot(w_B0_) / I_t;
-  nu_W_ = q_WB0_ * (m_B / I_t);
+  beta_ = (I_t - I_axial) / I_t * e_B_.dot(w_B0_);
+  nu_W_ = q_WB0_ * m_over_I_t_B;
   period_ = beta_ == 0.0 ? kInf : 2.0 * M_PI / std::abs(beta_);
 }
 
-void TorqueFreeSolution::init_elliptic(const Eigen::Vector3d& m_P, double delta1, double delta3, double delta2) {
-  const Eigen::Vector3d& I = I_principal_;
-  const double G = m_P.norm();
-  const double I1 = I(0), I2 = I(1), I3 = I(2);
-  const double A1 = std::sqrt(-delta3 / (I1 * (I3 - I1)));
-  const double A3 = std::sqrt(delta1 / (I3 * (I3 - I1)));
-  double m, mc;
+// The invariants Δ_j = G² − 2T I_j = Σ_{i≠j} m_i² (I_i − I_j)/I_i (Δ1 ≥ 0, Δ3 ≤ 0 sums of like-signed
+// terms; Δ2 cancels at the separatrix, see delta2_times_I1_I3) of the momentum m̂ = 2^−e m̃ (largest
+// component in [1, 2)), each as Δ_j = 4^(e + t_j) D_j with 2^t_j the scale of the two components it
+// involves: a transverse part down to the smallest subnormal is not squared to zero (issue 9).
+// Then, with the amplitudes, λ, m and kc = √(1 − m) of free-rigid-body.md in these units:
+// case A: ω = (σ1 A1 cn, σ1 s A2 sn, s A3 dn) on (1, 2, 3), s = sign m3, σ1 = sign m1 on the
+// separatrix (there cn ≥ 0), else 1; case B: ω = (s A1 dn, s A2 sn, A3 cn), s = sign m1, in the frame
+// Q = (P2, P3, P1) (a cyclic relabelling, det +1).
+void TorqueFreeSolution::init_elliptic(const Eigen::Vector3d& I, const Eigen::Vector3d& m_tilde, int e_rate) {
+  const double I1 = I(0), I2 = I(1), I3 = I(2);  // the largest in [1, 2): products of three stay in range
+  const int e = exponent_of(m_tilde.cwiseAbs().maxCoeff()), e_w = e + e_rate;  // ω = 2^e_w m̂/I
+  const Eigen::Vector3d mh = times_pow2(m_tilde, -e);
+  int t[3];
+  for (int j = 0; j < 3; ++j) t[j] = exponent_of(std::max(std::abs(mh((j + 1) % 3)), std::abs(mh((j + 2) % 3))));
+  const auto scaled = [&](int i, int j) { return times_pow2(mh(i), -t[j]); };  // m̂_i 2^−t_j
+  const double D1 = square(scaled(1, 0)) * (I2 - I1) / I2 + square(scaled(2, 0)) * (I3 - I1) / I3;
+  const double D3 = square(scaled(0, 2)) * (I1 - I3) / I1 + square(scaled(1, 2)) * (I2 - I3) / I2;
+  const double D2 = delta2_times_I1_I3(scaled(0, 1), scaled(2, 1), I).hi / (I1 * I3);
+  case_ = D2 > 0.0 ? TorqueFreeCase::A : D2 < 0.0 ? TorqueFreeCase::B : TorqueFreeCase::separatrix;
+
+  int t_axis, t_kc;                 // exponents of the dn amplitude and of kc (t_trans_: cn, sn)
+  double lambda, m, kc, I_s, phi_sign;
+  Eigen::Vector3d A, I_cn_sn_dn;    // signed (cn, sn, dn) amplitudes of ω (× 2^(e + t)) and their moments
   Eigen::Matrix3d R_PQ;
   if (case_ != TorqueFreeCase::B) {
-    // case A (and the separatrix with m = 1): ω = (σ1 A1 cn, σ1 s A2 sn, s A3 dn), s = sign m3,
-    // σ1 = sign m1 on the separatrix (there cn ≥ 0), else 1
-    const double A2 = std::sqrt(-delta3 / (I2 * (I3 - I2)));
-    const double s = sign_of(m_P(2));
-    const double sigma1 = case_ == TorqueFreeCase::separatrix ? sign_of(m_P(0)) : 1.0;
-    lambda_ = std::sqrt((I3 - I2) * delta1 / (I1 * I2 * I3));
-    m = (I2 - I1) * -delta3 / ((I3 - I2) * delta1);
-    mc = (I3 - I1) * delta2 / ((I3 - I2) * delta1);
+    const double s = sign_of(mh(2));
+    const double sigma1 = case_ == TorqueFreeCase::separatrix ? sign_of(mh(0)) : 1.0;
+    t_trans_ = t[2], t_axis = t[0], t_kc = t[1] - t[0];
+    A << sigma1 * std::sqrt(-D3 / (I1 * (I3 - I1))), sigma1 * s * std::sqrt(-D3 / (I2 * (I3 - I2))),
+        s * std::sqrt(D1 / (I3 * (I3 - I1)));
+    I_cn_sn_dn = I;
+    lambda = std::sqrt((I3 - I2) * D1 / (I1 * I2 * I3));
+    m = times_pow2((I2 - I1) * -D3 / ((I3 - I2) * D1), 2 * (t[2] - t[0]));
+    kc = std::sqrt((I3 - I1) * D2 / ((I3 - I2) * D1));
     n_ = -I3 * (I2 - I1) / (I1 * (I3 - I2));
     R_PQ.setIdentity();
-    cn_axis_ = 0;
-    sn_axis_ = 1;
-    w_amplitude_ = Eigen::Vector3d(sigma1 * A1, sigma1 * s * A2, s * A3);
-    phi_pi_ = G * (I3 - I1) / (I1 * I3 * lambda_);
-    phi_rate_ = G / I3;
-    I_Q_ = I;
+    cn_axis_ = 0, sn_axis_ = 1;
+    I_s = I3, phi_sign = 1.0;
   } else {
-    // case B: ω = (s A1 dn, s A2 sn, A3 cn), s = sign m1
-    const double A2 = std::sqrt(delta1 / (I2 * (I2 - I1)));
-    const double s = sign_of(m_P(0));
-    lambda_ = std::sqrt((I2 - I1) * -delta3 / (I1 * I2 * I3));
-    m = (I3 - I2) * delta1 / ((I2 - I1) * -delta3);
-    mc = (I3 - I1) * -delta2 / ((I2 - I1) * -delta3);
+    const double s = sign_of(mh(0));
+    t_trans_ = t[0], t_axis = t[2], t_kc = t[1] - t[2];
+    A << std::sqrt(D1 / (I3 * (I3 - I1))), s * std::sqrt(D1 / (I2 * (I2 - I1))), s * std::sqrt(-D3 / (I1 * (I3 - I1)));
+    I_cn_sn_dn << I3, I2, I1;
+    lambda = std::sqrt((I2 - I1) * -D3 / (I1 * I2 * I3));
+    m = times_pow2((I3 - I2) * D1 / ((I2 - I1) * -D3), 2 * (t[0] - t[2]));
+    kc = std::sqrt((I3 - I1) * -D2 / ((I2 - I1) * -D3));
     n_ = -I1 * (I3 - I2) / (I3 * (I2 - I1));
-    R_PQ << 0, 0, 1,  // Q = (P2, P3, P1): a cyclic relabelling, det +1
+    R_PQ << 0, 0, 1,  // Q = (P2, P3, P1)
         1, 0, 0,      //
         0, 1, 0;
-    sn_axis_ = 0;
-    cn_axis_ = 1;
-    w_amplitude_ = Eigen::Vector3d(A3, s * A2, s * A1);
-    phi_pi_ = -G * (I3 - I1) / (I1 * I3 * lambda_);
-    phi_rate_ = G / I1;
-    I_Q_ = Eigen::Vector3d(I2, I3, I1);
+    sn_axis_ = 0, cn_axis_ = 1;
+    I_s = I1, phi_sign = -1.0;
   }
-  // m and mc are each accurate; make them consistent from the smaller one
-  if (mc <= 0.5) {
-    mc = std::max(mc, 0.0);
-    m = 1.0 - mc;
+  // m and kc are each accurate; make them consistent from the smaller of m and mc = kc²
+  const double kc_hat = kc;
+  kc = times_pow2(kc_hat, t_kc);
+  double log_kc = 0.0;  // needed only for kc < 2^−27 (K = ln(4/kc) + ...)
+  if (kc * kc <= 0.5) {
+    m = 1.0 - kc * kc;
+    if (kc < 0x1p-27) log_kc = std::log(kc_hat) + t_kc * M_LN2;
   } else {
     m = std::min(std::max(m, 0.0), 1.0);
-    mc = 1.0 - m;
+    kc = std::sqrt(1.0 - m);
   }
-  elliptic_ = elliptic_parameter(m, mc);
+  elliptic_ = elliptic_parameter_kc(m, kc, log_kc);
 
-  // phase u0 from the initial (sn, cn, dn) = ω_Q / amplitudes
-  const Eigen::Vector3d w_Q = R_PQ.transpose() * m_P.cwiseQuotient(I);
-  JacobiSnCnDn f0;
-  f0.sn = std::min(std::max(w_Q(sn_axis_) / w_amplitude_(1), -1.0), 1.0);
-  f0.cn = w_Q(cn_axis_) / w_amplitude_(0);
-  f0.dn = w_Q(2) / w_amplitude_(2);
-  // u0 = v0 + 2 j0 K: v0 = sn0 R_F(cn0², dn0², 1) ∈ [−K, K] (j0 = 0) when cn0 >= 0; else the point
-  // (sn, cn) = (−sn0, −cn0) of [−K, K] shifted by 2 j0 K, j0 = sign(sn0) (sn, cn change sign under
-  // u → u + 2K, DLMF 22.4.2)
-  if (f0.cn < 0.0) {
-    f0.sn = -f0.sn;
-    f0.cn = -f0.cn;
-    j0_odd_ = true;
-  }
-  const EllipticFPi at_v0 = elliptic_f_pi_sncndn(f0, n_);
-  v0_ = at_v0.f;
-  pi0_ = at_v0.pi;
+  const double G_hat = mh.norm();
+  lambda_ = times_pow2(lambda, t_axis + e_w);
+  // φ(t) = (G/I_s) t − [G Δ_s/(I_s (G² − B²) λ)] [Π]_{u0}^{u}, the bracket's factor simplified
+  // (G² − B² = I1(−Δ3)/(I3 − I1) in case A, I3 Δ1/(I3 − I1) in case B) to ±G(I3 − I1)/(I1 I3 λ)
+  phi_rate_ = times_pow2(G_hat / I_s, e_w);
+  phi_pi_ = phi_sign * times_pow2(G_hat * (I3 - I1) / (I1 * I3 * lambda), -t_axis);
+  w_amplitude_ << times_pow2(A(0), t_trans_ + e_w), times_pow2(A(1), t_trans_ + e_w), times_pow2(A(2), t_axis + e_w);
+  kc_w_amplitude_ << times_pow2(A(0) * kc_hat, t_trans_ + t_kc + e_w), times_pow2(A(2) * kc_hat, t_axis + t_kc + e_w);
+  const Eigen::Vector3d M_hat = I_cn_sn_dn.cwiseProduct(A);
+  M_ << M_hat(0), M_hat(1), times_pow2(M_hat(2), t_axis);
+  kc_M_ << times_pow2(M_hat(0) * kc_hat, t_kc), times_pow2(M_hat(2) * kc_hat, t_axis + t_kc);
+
+  const Eigen::Vector3d mh_Q = R_PQ.transpose() * mh;
+  init_phase(mh_Q, M_hat(2) * kc_hat, t[1]);
   if (pi_complete_known_) pi_complete_ = complete_pi();
-  period_ = elliptic_.mc == 0.0 ? kInf : 4.0 * elliptic_.K / lambda_;
+  period_ = elliptic_.kc == 0.0 ? kInf : 4.0 * elliptic_.K / lambda_;
 
   q_BQ_ = Eigen::Quaterniond(R_BP_ * R_PQ);
   q_BQ_.normalize();
-  const Eigen::Vector3d m_Q = R_PQ.transpose() * m_P;
-  q_WN_ = q_WB0_ * q_BQ_ * zxz_from_momentum(0.0, m_Q).conjugate();
+  const double x = times_pow2(mh_Q(0), -t_trans_), y = times_pow2(mh_Q(1), -t_trans_), r = std::sqrt(x * x + y * y);
+  q_WN_ = q_WB0_ * q_BQ_ * zxz_from_momentum(0.0, x, y, r, times_pow2(r, t_trans_), mh_Q(2)).conjugate();
+}
+
+// The phase u0 = l0 K + w0 (|w0| ≤ K/2) and the reduced Π at it, from the initial (sn, cn, dn) =
+// (m_sn/M_sn, m_cn/M_cn, m_s/M_dn), each ratio taken between like-scaled numbers: near the saddle
+// (|sn0| dn0 > |cn0|: the odd quarters l0 = ±1) the functions of w0 = u0 ∓ K follow from DLMF Table
+// 22.4.3 inverted: (sn, cn, dn)(w0) = (∓cn0/dn0, |sn0| kc/dn0, kc/dn0), ratios of two small numbers
+// formed without forming either (kc dn0 is kc_M_dn/m_s with m_s scaled by 2^−t2, the scale of the two
+// components transverse to axis 2, both O(1) there). On the separatrix, u0 = asinh(sn0/cn0).
+void TorqueFreeSolution::init_phase(const Eigen::Vector3d& mh_Q, double kc_M_dn_hat, int t2) {
+  const double q_cn = mh_Q(cn_axis_), q_sn = mh_Q(sn_axis_), q_s = mh_Q(2);
+  const double sn0 = std::min(std::max(times_pow2(q_sn, -t_trans_) / M_(1), -1.0), 1.0);
+  const double cn0 = times_pow2(q_cn, -t_trans_) / M_(0);
+  const double dn0 = q_s / M_(2);
+  if (elliptic_.kc == 0.0) {  // separatrix: sn = tanh, cn = dn = sech > 0
+    const double X = (q_sn / q_cn) * (M_(0) / M_(1));  // sinh u0
+    w0_ = std::abs(X) < 0x1p60 ? std::asinh(X)
+                               : std::copysign(M_LN2 + std::log(std::abs(q_sn)) - std::log(std::abs(q_cn)) +
+                                                   std::log(std::abs(M_(0) / M_(1))),
+                                               X);
+    const double a = std::sqrt(-n_);
+    pi0_ = a * std::atan(a * std::tanh(w0_));
+    return;
+  }
+  const double cn_over_dn = times_pow2(q_cn, -t_trans_) / q_s * (M_(2) / M_(0));  // scaled before dividing
+  JacobiSnCnDn f;
+  const bool odd = std::abs(sn0) > std::abs(cn_over_dn);
+  if (odd) {
+    const double sigma = sign_of(sn0);
+    l0_ = sigma;
+    f.sn = -sigma * cn_over_dn;
+    f.dn = kc_M_dn_hat / times_pow2(q_s, -t2);
+    f.cn = std::abs(sn0) * f.dn;
+  } else {
+    l0_ = cn0 >= 0.0 ? 0.0 : 2.0;
+    const double sigma = cn0 >= 0.0 ? 1.0 : -1.0;
+    f = {sigma * sn0, sigma * cn0, dn0};
+  }
+  const EllipticFPi at_w0 = elliptic_f_pi_reduced(f, odd, n_, elliptic_);
+  w0_ = at_w0.f;
+  pi0_ = at_w0.pi;
+}
+
+double TorqueFreeSolution::max_rate() const {
+  return std::max({std::abs(lambda_), std::abs(phi_rate_), nu_W_.cwiseAbs().maxCoeff(), std::abs(beta_),
+                   w_amplitude_.cwiseAbs().maxCoeff(), kc_w_amplitude_.cwiseAbs().maxCoeff(), std::abs(phi_pi_ * lambda_)});
 }
 
 TorqueFreeState TorqueFreeSolution::state_at(double t) const {
   if (!std::isfinite(t)) throw_invalid("t", "a finite number", t);
-  return about_axis_ ? state_about_axis(t) : state_elliptic(t);
+  const TorqueFreeState s = evaluate(t);
+  // with finite rates only a phase (rate × t) can overflow
+  if (!(s.q_WB.coeffs().allFinite() && s.w_B.allFinite())) {
+    throw_invalid("t", "a time whose phases (rates up to " + format_value(max_rate()) + " rad/s) times t stay finite", t);
+  }
+  return s;
 }
 
-// Π(n|m) = K + (n/3) R_J(0, mc, 1, 1 − n) (DLMF 19.25.2); 0 on the separatrix (never used there)
+TorqueFreeState TorqueFreeSolution::evaluate(double t) const { return about_axis_ ? state_about_axis(t) : state_elliptic(t); }
+
+// Π(n|m) (elliptic.hpp); 0 on the separatrix (never used there)
 double TorqueFreeSolution::complete_pi() const {
-  return elliptic_.mc == 0.0 ? 0.0 : elliptic_.K + n_ / 3.0 * elliprj(0.0, elliptic_.mc, 1.0, 1.0 - n_);
+  return elliptic_.kc == 0.0 ? 0.0 : complete_ellippi(n_, elliptic_);
 }
 
 TorqueFreeState TorqueFreeSolution::state_about_axis(double t) const {
@@ -295,32 +378,68 @@ TorqueFreeState TorqueFreeSolution::state_about_axis(double t) const {
 }
 
 TorqueFreeState TorqueFreeSolution::state_elliptic(double t) const {
+  if (elliptic_.kc == 0.0) return state_separatrix(t);
   const EllipticParameter& p = elliptic_;
-  // u = λ t + u0 = v + 2jK with v ∈ [−K, K]; λ t kept as an exact two-product so that the reduction
-  // loses nothing beyond the rounding of λ and K
+  // u = λ t + u0 = l K + w with |w| <= K/2; λ t kept as an exact two-product so that the reduction
+  // loses nothing beyond the rounding of λ and K (repeated only when |λ t| ≳ K/eps)
   const DoubleDouble lambda_t = two_prod(lambda_, t);
-  double j = 0.0;
-  double v = lambda_t.hi + v0_;
-  if (p.mc != 0.0) {
-    j = std::nearbyint(v / (2.0 * p.K));
-    v = (std::fma(-2.0 * p.K, j, lambda_t.hi) + lambda_t.lo) + v0_;
+  double l = std::nearbyint((lambda_t.hi + w0_) / p.K);
+  double w = (std::fma(-p.K, l, lambda_t.hi) + lambda_t.lo) + w0_;
+  for (int i = 0; std::abs(w) > 0.75 * p.K && i < 40; ++i) {
+    const double l_more = std::nearbyint(w / p.K);
+    w = std::fma(-p.K, l_more, w);
+    l += l_more;
   }
-  JacobiSnCnDn f = jacobi_ellipj(v, p);
-  // Π(am u) − Π(am u0) = Π(am v) − Π(am v0) + 2j Π(n|m)   (quasi-periodicity)
-  double delta_pi = ellippi_sncndn(f, n_) - pi0_;
-  if (j != 0.0) delta_pi += 2.0 * j * (pi_complete_known_ ? pi_complete_ : complete_pi());
-  if ((std::fmod(j, 2.0) != 0.0) != j0_odd_) {  // sn(v + 2(j + j0)K) = (−1)^(j + j0) sn v, cn likewise
-    f.sn = -f.sn;
-    f.cn = -f.cn;
-  }
+  l += l0_;
+  const JacobiSnCnDn f_w = jacobi_ellipj_reduced(w, p);
+  const double quarter = quarter_of(l);
+  // Π(am u) − Π(am u0) = (l − l0) Π(n|m) + reduced Π(w) − reduced Π(w0)
+  double delta_pi = elliptic_f_pi_reduced(f_w, quarter == 1.0 || quarter == 3.0, n_, p).pi - pi0_;
+  if (l != l0_) delta_pi += (l - l0_) * (pi_complete_known_ ? pi_complete_ : complete_pi());
+  return state_from_functions(phi_rate_ * t + phi_pi_ * delta_pi, f_w, quarter);
+}
+
+// On the separatrix (kc = 0): (sn, cn, dn) = (tanh u, sech u, sech u) and Π(am u, n|1) in elementary
+// form (ellippi_am_separatrix), whose difference keeps λ t apart: [Π]_{u0}^{u} =
+// (λ t + a atan(a tanh u) − a atan(a tanh u0))/(1 − n), a = √−n (no cancellation of |u0| ~ ln(G/|m_⊥|)).
+TorqueFreeState TorqueFreeSolution::state_separatrix(double t) const {
+  const DoubleDouble lambda_t = two_prod(lambda_, t);
+  const double u = (lambda_t.hi + w0_) + lambda_t.lo;
+  const double a = std::sqrt(-n_), sech = 1.0 / std::cosh(u), tanh = std::tanh(u);
+  const double delta_pi = ((lambda_t.hi + lambda_t.lo) + (a * std::atan(a * tanh) - pi0_)) / (1.0 - n_);
+  return state_from_functions(phi_rate_ * t + phi_pi_ * delta_pi, {tanh, sech, sech}, 0.0);
+}
+
+// ω and the attitude at the phase φ from the functions of the reduced argument w in the quarter
+// (0..3) of u = l K + w: (sn, cn, dn)(u) = ±(sn, cn, dn)(w) for even quarters and
+// (±cd w, ∓kc sd w, kc nd w) for odd ones (DLMF Table 22.4.3), with the momentum's direction in the
+// (a, b) plane kept in the mantissas of the transverse amplitudes (M_ and kc_M_).
+TorqueFreeState TorqueFreeSolution::state_from_functions(double phi, const JacobiSnCnDn& f, double quarter) const {
   Eigen::Vector3d w_Q;
-  w_Q(cn_axis_) = w_amplitude_(0) * f.cn;
-  w_Q(sn_axis_) = w_amplitude_(1) * f.sn;
-  w_Q(2) = w_amplitude_(2) * f.dn;
-  // φ(t) = (G/I_s) t − [G Δ_s/(I_s (G² − B²) λ)] [Π]_{u0}^{u}, the bracket's factor simplified
-  // (G² − B² = I1(−Δ3)/(I3 − I1) in case A, I3 Δ1/(I3 − I1) in case B) to ±G(I3 − I1)/(I1 I3 λ)
-  const double phi = phi_rate_ * t + phi_pi_ * delta_pi;
-  const Eigen::Quaterniond q_NQ = zxz_from_momentum(phi, I_Q_.cwiseProduct(w_Q));
+  double m_cn, m_sn, r, rho, m_s;  // (cn, sn) momentum direction and its norm, |transverse| and axial momentum (units of |m|)
+  if (quarter == 0.0 || quarter == 2.0) {
+    const double sign = quarter == 0.0 ? 1.0 : -1.0;
+    w_Q(cn_axis_) = sign * w_amplitude_(0) * f.cn;
+    w_Q(sn_axis_) = sign * w_amplitude_(1) * f.sn;
+    w_Q(2) = w_amplitude_(2) * f.dn;
+    m_cn = sign * M_(0) * f.cn;
+    m_sn = sign * M_(1) * f.sn;
+    r = std::sqrt(m_cn * m_cn + m_sn * m_sn);
+    rho = times_pow2(r, t_trans_);
+    m_s = M_(2) * f.dn;
+  } else {
+    const double sign = quarter == 1.0 ? 1.0 : -1.0, nd = 1.0 / f.dn;
+    w_Q(cn_axis_) = -sign * kc_w_amplitude_(0) * f.sn * nd;
+    w_Q(sn_axis_) = sign * w_amplitude_(1) * f.cn * nd;
+    w_Q(2) = kc_w_amplitude_(1) * nd;
+    m_cn = -sign * kc_M_(0) * f.sn;
+    m_sn = sign * M_(1) * f.cn;
+    r = std::sqrt(m_cn * m_cn + m_sn * m_sn);
+    rho = times_pow2(r, t_trans_) * nd;
+    m_s = kc_M_(1) * nd;
+  }
+  const Eigen::Quaterniond q_NQ = cn_axis_ == 0 ? zxz_from_momentum(phi, m_cn, m_sn, r, rho, m_s)
+                                                : zxz_from_momentum(phi, m_sn, m_cn, r, rho, m_s);
   const Eigen::Quaterniond q_WB = q_WN_ * q_NQ * q_BQ_.conjugate();
   return {q_WB.normalized(), q_BQ_ * w_Q};
 }
@@ -337,7 +456,7 @@ void FreeRotationFlow::advance(Eigen::Quaterniond& q_WB, Eigen::Vector3d& w_B, d
     w_B.setConstant(std::numeric_limits<double>::quiet_NaN());
     return;
   }
-  const TorqueFreeState s = TorqueFreeSolution(axes_, q_WB, w_B, false).state_at(h);
+  const TorqueFreeState s = TorqueFreeSolution(axes_, q_WB, w_B, false).evaluate(h);  // NaN if it overflows
   q_WB = s.q_WB;
   w_B = s.w_B;
 }

@@ -1,9 +1,11 @@
 #include "rigiddyn/frames/frame_motion.hpp"
 
+#include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include "rigiddyn/check.hpp"
-#include "rigiddyn/so3/exp_log.hpp"
+#include "rigiddyn/so3/axis_angle.hpp"
 #include "rigiddyn/so3/matrix.hpp"
 
 namespace rigiddyn {
@@ -23,15 +25,19 @@ FrameMotion FrameMotion::fixed(const Eigen::Matrix3d& R_PF, const Eigen::Vector3
 FrameMotion FrameMotion::constant_rotation(const Eigen::Vector3d& axis_P, double rate,
                                            const Eigen::Matrix3d& R_PF0, const Eigen::Vector3d& p_PF_P) {
   require_finite(axis_P, "axis_P");
-  if (axis_P.norm() == 0.0) throw_invalid("axis_P", "a non-zero vector", axis_P);
+  if (axis_P.isZero(0.0)) throw_invalid("axis_P", "a non-zero vector", axis_P);
   require_finite(rate, "rate");
   checked_rotation_matrix(R_PF0, "R_PF0");
   require_finite(p_PF_P, "p_PF_P");
-  const Eigen::Vector3d w_PF_P = rate * axis_P.normalized();
-  return FrameMotion([w_PF_P, R_PF0, p_PF_P](double t) {
+  const Eigen::Vector3d u_P = axis_P.stableNormalized();  // any length, 1e-300 or 1e300
+  return FrameMotion([u_P, rate, R_PF0, p_PF_P](double t) {
+    // R_PF(t) = exp(rate t [u]x) R_PF0, from the unit axis and the angle (never a rotation vector
+    // whose norm could overflow at |rate t| ~ 1e300)
+    const double angle = rate * t;
+    if (!std::isfinite(angle)) throw_invalid("t", "a time with rate * t finite (rate = " + format_value(rate) + " rad/s)", t);
     FrameKinematics K;
-    K.R_PF = rotvec_to_matrix(w_PF_P * t) * R_PF0;
-    K.w_PF_P = w_PF_P;
+    K.R_PF = quat_to_matrix(axis_angle_to_quat(u_P, angle)) * R_PF0;
+    K.w_PF_P = rate * u_P;
     K.p_PF_P = p_PF_P;
     return K;
   });

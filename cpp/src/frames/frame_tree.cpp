@@ -1,8 +1,10 @@
 #include "rigiddyn/frames/frame_tree.hpp"
 
+#include <algorithm>
 #include <sstream>
 #include <stdexcept>
 #include <utility>
+#include <vector>
 
 #include "rigiddyn/check.hpp"
 
@@ -20,8 +22,10 @@ FrameTree::FrameTree() {
 }
 
 std::string FrameTree::known_names() const {
+  constexpr size_t listed = 20;  // a message stays readable for a tree of any size
   std::ostringstream out;
-  for (size_t i = 0; i < names_.size(); ++i) out << (i ? ", " : "") << names_[i];
+  for (size_t i = 0; i < std::min(names_.size(), listed); ++i) out << (i ? ", " : "") << names_[i];
+  if (names_.size() > listed) out << ", ... (" << names_.size() << " frames)";
   return out.str();
 }
 
@@ -58,20 +62,32 @@ void FrameTree::set_parent(const std::string& name, const std::string& parent, F
   n.motion = std::move(motion);
 }
 
-FrameKinematics FrameTree::in_world(const std::string& name, double t) const {
-  const Node& n = frames_.at(name);
-  if (n.parent.empty()) return FrameKinematics{};
-  FrameKinematics K_PF;
+FrameKinematics FrameTree::link(const std::string& name, const Node& n, double t) {
   try {
-    K_PF = n.motion.at(t);
+    FrameKinematics K_PF = n.motion.at(t);
     check_frame_kinematics(K_PF);
+    return K_PF;
   } catch (const std::invalid_argument& e) {  // name the frame whose motion failed
     std::ostringstream where;
     where.precision(17);
     where << "motion of frame " << quoted(name) << " at t=" << t << ": " << e.what();
     throw std::invalid_argument(where.str());
   }
-  return compose_kinematics(in_world(n.parent, t), K_PF);
+}
+
+FrameKinematics FrameTree::in_world(const std::string& name, double t) const {
+  // the path from `name` up to world (iterative: a chain of any depth, no recursion)
+  std::vector<std::pair<const std::string*, const Node*>> path;
+  for (const std::string* a = &name;;) {
+    const Node& n = frames_.at(*a);
+    if (n.parent.empty()) break;  // reached world
+    path.emplace_back(a, &n);
+    a = &n.parent;
+  }
+  // K_WF = K_WP1 (+) K_P1P2 (+) ... (+) K_PnF, composed from world down
+  FrameKinematics K_WF;
+  for (auto it = path.rbegin(); it != path.rend(); ++it) K_WF = compose_kinematics(K_WF, link(*it->first, *it->second, t));
+  return K_WF;
 }
 
 FrameTree::Query FrameTree::query(const std::string& frame, const std::string& relative_to,
@@ -110,6 +126,8 @@ Eigen::Vector3d FrameTree::transport_derivative(const Eigen::Vector3d& u_E, cons
                                                 const std::string& expressed_in, double t) const {
   require_finite(u_E, "u_E");
   require_finite(du_B_E, "du_B_E");
+  node(from_frame, "from_frame");  // named as this function's arguments, not as the query's
+  node(to_frame, "to_frame");
   const Eigen::Vector3d w_AB_E = angular_velocity(from_frame, to_frame, expressed_in, t);
   return rigiddyn::transport_derivative(w_AB_E, u_E, du_B_E);
 }

@@ -94,7 +94,7 @@ Moments area_moments(const Eigen::Ref<const MeshVertices>& vertices, const Eigen
 // mass m spread over the measured region with the given moments.
 SpatialInertia from_moments(const Moments& M, double m) {
   const double rho = m / M.measure;
-  const Eigen::Vector3d c = M.first / M.measure;  // seed 000 (4.55), relative to origin
+  const Eigen::Vector3d c = M.first / M.measure;  // Rigid-body notes (4.55), relative to origin
   return SpatialInertia::from_inertia_about_point(m, M.origin + c, inertia_from_second_moment(rho * M.second),
                                                   M.origin);
 }

@@ -11,6 +11,7 @@
 namespace rigiddyn {
 
 Eigen::Matrix3d point_inertia(double mass, const Eigen::Vector3d& r) {
+  require_positive(mass, "mass");
   return mass * (r.squaredNorm() * Eigen::Matrix3d::Identity() - r * r.transpose());
 }
 
@@ -31,7 +32,7 @@ SpatialInertia SpatialInertia::from_inertia_about_point(double mass, const Eigen
   require_finite(com, "com");
   require_finite(point, "point");
   require_finite(inertia_about_point, "inertia_about_point");
-  // parallel axis, seed 001: I_C = I_P - m (|r|^2 1 - r r^T), r = c - p
+  // parallel axis, Craig: I_C = I_P - m (|r|^2 1 - r r^T), r = c - p
   const Eigen::Matrix3d I_C = inertia_about_point - point_inertia(mass, com - point);
   const double scale = std::abs(inertia_about_point.trace()) + 2.0 * mass * (com - point).squaredNorm();
   return SpatialInertia(mass, com,
@@ -93,7 +94,7 @@ Eigen::Vector3d SpatialInertia::angular_momentum_about_com(const Eigen::Vector3d
 Eigen::Vector3d SpatialInertia::angular_momentum_about_point(const Eigen::Vector3d& angular_velocity,
                                                              const Eigen::Vector3d& com_velocity,
                                                              const Eigen::Vector3d& point) const {
-  // seed 001: H_P = r_PC x L + H_C
+  // Craig: H_P = r_PC x L + H_C
   return (com_ - point).cross(mass_ * com_velocity) + angular_momentum_about_com(angular_velocity);
 }
 
@@ -113,15 +114,15 @@ InertiaReport SpatialInertia::report() const { return inertia_report(mass_, iner
 
 bool SpatialInertia::admits_symmetry_plane(const Eigen::Vector3d& normal, double tolerance) const {
   require_finite(normal, "normal");
-  if (!(normal.norm() > 0.0)) throw_invalid("normal", "a nonzero vector", normal);
-  const Eigen::Vector3d n = normal.normalized();
+  if (normal.isZero(0.0)) throw_invalid("normal", "a nonzero vector", normal);
+  const Eigen::Vector3d n = normal.stableNormalized();  // any length, 1e-300 or 1e300
   const Eigen::Vector3d In = inertia_com_ * n;
   return (In - n.dot(In) * n).norm() <= tolerance * inertia_com_.trace();
 }
 
 SpatialInertia SpatialInertia::operator+(const SpatialInertia& part) const {
   const double m = mass_ + part.mass_;
-  const Eigen::Vector3d c = (mass_ * com_ + part.mass_ * part.com_) / m;  // seed 000 (4.54)
+  const Eigen::Vector3d c = (mass_ * com_ + part.mass_ * part.com_) / m;  // Rigid-body notes (4.54)
   const Eigen::Matrix3d I = inertia_about_point(c) + part.inertia_about_point(c);
   return SpatialInertia(m, c, I, Trusted{});
 }
@@ -147,7 +148,7 @@ bool SpatialInertia::isApprox(const SpatialInertia& o, double prec) const {
 
 namespace {
 
-// Sums of mass, first moment and inertia about a fixed reference point (seed 000 (4.53)-(4.54)):
+// Sums of mass, first moment and inertia about a fixed reference point (Rigid-body notes (4.53)-(4.54)):
 // a reference near the parts (the first centre) keeps the final shift's cancellation small.
 struct CompositeSum {
   Eigen::Vector3d ref;

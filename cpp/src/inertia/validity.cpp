@@ -14,7 +14,7 @@ namespace rigiddyn {
 
 namespace {
 
-constexpr double symmetry_tolerance = 1e-12;  // relative to max |I_ij|, as SpatialInertia always had
+constexpr double asymmetry_relative_tolerance = 1e-12;  // of max |I_ij|: a symmetric inertia up to round-off
 
 std::string vector_string(const Eigen::Vector3d& v) {
   std::ostringstream out;
@@ -37,7 +37,10 @@ std::string InertiaReport::summary() const {
       << vector_string(triangle_margins) << " (I0 + I1 - I2 = " << triangle_margins(2)
       << "), condition number " << condition_number << ", tolerance " << tolerance;
   if (!finite) out << "; not finite";
-  if (!symmetric) out << "; not symmetric (max |I - I^T| = " << asymmetry << ")";
+  if (!symmetric) {
+    out << "; not symmetric (max |I - I^T| = " << asymmetry << " > symmetry tolerance " << asymmetry_tolerance
+        << " = " << asymmetry_relative_tolerance << " max |I_ij|)";
+  }
   if (!positive_semidefinite) out << "; not positive semi-definite (I0 = " << principal_moments(0) << ")";
   if (!triangle_inequality) {
     out << "; violates the triangle inequality I0 + I1 >= I2 (no real body has this inertia: "
@@ -53,7 +56,8 @@ InertiaReport inertia_report(double mass, const Eigen::Matrix3d& inertia_com, do
   r.finite = inertia_com.allFinite();
   if (!r.finite) return r;
   r.asymmetry = (inertia_com - inertia_com.transpose()).cwiseAbs().maxCoeff();
-  r.symmetric = r.asymmetry <= symmetry_tolerance * inertia_com.cwiseAbs().maxCoeff();
+  r.asymmetry_tolerance = asymmetry_relative_tolerance * inertia_com.cwiseAbs().maxCoeff();
+  r.symmetric = r.asymmetry <= r.asymmetry_tolerance;
   const Eigen::Matrix3d S = 0.5 * (inertia_com + inertia_com.transpose());
   r.principal_moments = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(S, Eigen::EigenvaluesOnly).eigenvalues();
   const Eigen::Vector3d& I = r.principal_moments;

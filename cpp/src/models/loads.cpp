@@ -2,6 +2,7 @@
 
 #include "rigiddyn/check.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -27,6 +28,23 @@ bool is_constant_from(const std::vector<AppliedLoad>& schedule, double t0) {
     if (!(load.t_start <= t0 && std::isinf(load.t_end))) return false;
   }
   return true;
+}
+
+std::vector<double> switch_times(const std::vector<AppliedLoad>& schedule, double t_begin, double t_end) {
+  std::vector<double> times;
+  for (const AppliedLoad& load : schedule) {
+    for (const double t : {load.t_start, load.t_end}) {
+      if (t_begin < t && t < t_end) times.push_back(t);  // false for ±inf outside and for NaN
+    }
+  }
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end()), times.end());
+  return times;
+}
+
+bool has_time_window(const std::vector<AppliedLoad>& schedule) {
+  return std::any_of(schedule.begin(), schedule.end(),
+                     [](const AppliedLoad& load) { return std::isfinite(load.t_start) || std::isfinite(load.t_end); });
 }
 
 void check_loads(const std::vector<AppliedLoad>& schedule) {

@@ -1,9 +1,14 @@
-// Private to cpp/src/simulate: appending one recorded state to a Trajectory, shared by the stepping
-// loop (simulate.cpp) and the exact method (simulate_exact.cpp) so both record the same fields.
+// Private to cpp/src/simulate: reserving a Trajectory's records and appending one recorded state,
+// shared by the stepping loop (simulate.cpp) and the exact method (simulate_exact.cpp) so both
+// record the same fields.
 #pragma once
 #include "rigiddyn/simulate/simulate.hpp"
 
 namespace rigiddyn {
+
+// Reserves the records of a run of `steps` steps recorded every `record_every`-th (recording_bytes);
+// throws std::invalid_argument naming record_every when they exceed the memory available.
+void reserve_records(Trajectory& out, std::int64_t steps, std::int64_t record_every);
 
 // Append the record r at time t [s] to out: one row of every per-record column of Trajectory
 // (p_W, v_W [m, m/s] in W; q_WB as (x, y, z, w); w_B [rad/s] in B; energies [J]; |L| [kg m²/s];

@@ -38,9 +38,11 @@ Trajectory simulate_exact(const RigidBody& body, const RigidBodyState& initial, 
     using Euler = std::decay_t<decltype(euler)>;
     const RigidBodyModel<Euler> model(body.mass(), euler, o.gravity_W);
     Trajectory out;
+    reserve_records(out, o.steps, o.record_every);
     const auto start = std::chrono::steady_clock::now();
-    for (std::int64_t i = 0; i <= o.steps; ++i) {
-      if (!(i % o.record_every == 0 || i == o.steps)) continue;
+    // only the recorded steps are evaluated: 0, k, 2k, ... and the last (k = record_every)
+    std::int64_t next_monitor = monitor_interval_steps;
+    for (std::int64_t i = 0;; i = o.steps - i <= o.record_every ? o.steps : i + o.record_every) {
       const double t = static_cast<double>(i) * o.dt;
       const TorqueFreeState s = solution.state_at(t);
       RigidBodyState state;
@@ -50,6 +52,14 @@ Trajectory simulate_exact(const RigidBody& body, const RigidBodyState& initial, 
       state.w_B = s.w_B;
       const double work = body.mass() * a_W.dot(state.p_W - s0.p_W);
       append_record(out, o.t0 + t, model.record(to_coordinates(state, work)));
+      if (i == o.steps) break;
+      if (i >= next_monitor) {
+        if (o.monitor && o.monitor(i)) {
+          out.interrupted = true;
+          break;
+        }
+        next_monitor = i + monitor_interval_steps;
+      }
     }
     out.elapsed_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return out;

@@ -7,7 +7,7 @@
 
 namespace rigiddyn {
 
-// seed 000 §4.10 (ISA): direction w/|w|, point (w x v)/|w|^2, pitch (w . v)/|w|^2, magnitude |w|.
+// Rigid-body notes §4.10 (ISA): direction w/|w|, point (w x v)/|w|^2, pitch (w . v)/|w|^2, magnitude |w|.
 Screw twist_to_screw(const Motion& twist) {
   const Vector6d wv = twist.to_vector();
   require_finite(wv.transpose(), "twist");

@@ -1,6 +1,6 @@
 """rigiddyn_ref: the independent numpy reference implementation of rigiddyn.
 
-Written equation by equation from the seed texts (/work/shared/seeds) and textbook formulas
+Written equation by equation from the texts of docs/references.md and textbook formulas
 (Featherstone, "Rigid Body Dynamics Algorithms"; Shoemake; Diebel, "Representing Attitude"), in
 plain numpy. It never imports rigiddyn or scipy: it is the oracle the core is compared with, and
 the baseline of the Python benchmarks.

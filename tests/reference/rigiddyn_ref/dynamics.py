@@ -1,12 +1,12 @@
 """Newton–Euler dynamics of a particle, a planar rigid body and a spatial rigid body, in plain numpy.
 
-Written from the seeds: Newton's law for a point mass f = m a (seed 000 (4.35)) and its momentum
-p = m v (4.36); for a rigid body Newton's law at the centre of mass f = m d²r_c/dt² (seed 000 (4.58)),
-Euler's law n = d(I ω)/dt about the centre of mass (seed 000 (4.69)), which in the body frame B reads
-I ω̇ + ω × I ω = n (seed 001 "Euler's equations"); plane kinetics Σf = m a_G, Σn_z = I_zz α (seed
+Written from the seeds: Newton's law for a point mass f = m a (Rigid-body notes (4.35)) and its momentum
+p = m v (4.36); for a rigid body Newton's law at the centre of mass f = m d²r_c/dt² (Rigid-body notes (4.58)),
+Euler's law n = d(I ω)/dt about the centre of mass (Rigid-body notes (4.69)), which in the body frame B reads
+I ω̇ + ω × I ω = n (Craig "Euler's equations"); plane kinetics Σf = m a_G, Σn_z = I_zz α (seed
 001 supplement "Rigid Body Plane Kinetics"); angular momentum about a point H_P = r_PC × L + H_C
-(seed 001, seed 000 (4.65)); kinetic energy T = ½ m v·v + ½ ω·I ω (seed 001 "Kinetic Energy");
-impulse–momentum ∫f dt = m Δv, ∫n dt = ΔH (seed 001 "Impulse-Momentum Principle").
+(Craig, Rigid-body notes (4.65)); kinetic energy T = ½ m v·v + ½ ω·I ω (Craig "Kinetic Energy");
+impulse–momentum ∫f dt = m Δv, ∫n dt = ΔH (Craig "Impulse-Momentum Principle").
 
 State of a spatial body (docs/conventions.md): p_W centre of mass [m], q_WB (x, y, z, w) unit
 quaternion, v_W centre-of-mass velocity in W [m/s], w_B angular velocity in B [rad/s]. Inertias
@@ -109,7 +109,7 @@ def step_pieces(schedule, t: float, h: float):
 
 def wrench_of_force_at_point(q_WB, force, point, frame="world"):
     """A force applied at a point of the body, reduced to the centre of mass: the same force and the
-    couple r × f (moment about the centre of mass, seed 000 (4.41)). `point` is the point's position
+    couple r × f (moment about the centre of mass, Rigid-body notes (4.41)). `point` is the point's position
     relative to the centre of mass; `force` and `point` are both expressed in `frame`.
     Returns (f_W, n_B)."""
     f, r = np.asarray(force, float), np.asarray(point, float)
@@ -128,9 +128,9 @@ def body_wrench(q_WB, loads: Loads, mass: float = 0.0, g_W=None):
     return f_W, n_B
 
 
-# ---------------------------------------------------------------- particle (seed 000 §4.11)
+# ---------------------------------------------------------------- particle (Rigid-body notes §4.11)
 def particle_acceleration(mass, f_W, g_W=None) -> np.ndarray:
-    """a = f/m + g (seed 000 (4.35) with the weight m g added to the applied force)."""
+    """a = f/m + g (Rigid-body notes (4.35) with the weight m g added to the applied force)."""
     return np.asarray(f_W, float) / mass + _vec(g_W)
 
 
@@ -140,11 +140,11 @@ def particle_force(mass, a_W, g_W=None) -> np.ndarray:
 
 
 def linear_momentum(mass, v_W) -> np.ndarray:
-    """p = m v (seed 000 (4.36)); for a rigid body v is the centre-of-mass velocity."""
+    """p = m v (Rigid-body notes (4.36)); for a rigid body v is the centre-of-mass velocity."""
     return mass * np.asarray(v_W, float)
 
 
-# ---------------------------------------------------------------- planar rigid body (seed 001)
+# ---------------------------------------------------------------- planar rigid body (Craig)
 def rot2(theta) -> np.ndarray:
     c, s = np.cos(theta), np.sin(theta)
     return np.array([[c, -s], [s, c]])
@@ -156,7 +156,7 @@ def planar_force_W(mass, theta, loads: Loads, g_W=None) -> np.ndarray:
 
 
 def planar_accelerations(mass, inertia_zz, theta, loads: Loads, g_W=None):
-    """Plane kinetics (seed 001): Σf = m a_G, Σn_z = I_zz α. Returns (a_G (2,), α)."""
+    """Plane kinetics (Craig): Σf = m a_G, Σn_z = I_zz α. Returns (a_G (2,), α)."""
     f = planar_force_W(mass, theta, loads, g_W)
     return f / mass, (loads.n_W[2] + loads.n_B[2]) / inertia_zz
 
@@ -168,18 +168,18 @@ def planar_loads(mass, inertia_zz, a_G, alpha, g_W=None):
 
 # ---------------------------------------------------------------- spatial rigid body
 def gyroscopic_term(I, w_B) -> np.ndarray:
-    """ω × I ω (seed 001 "Euler's equations"; zero for a spherical inertia)."""
+    """ω × I ω (Craig "Euler's equations"; zero for a spherical inertia)."""
     return cross(w_B, np.asarray(I, float) @ w_B)
 
 
 def euler_angular_acceleration(I, w_B, n_B) -> np.ndarray:
-    """ω̇ = I⁻¹ (n - ω × I ω): Euler's law (seed 000 (4.69)) in the body frame, full form with
+    """ω̇ = I⁻¹ (n - ω × I ω): Euler's law (Rigid-body notes (4.69)) in the body frame, full form with
     products of inertia."""
     return np.linalg.solve(np.asarray(I, float), np.asarray(n_B, float) - gyroscopic_term(I, w_B))
 
 
 def euler_angular_acceleration_principal(I_diag, w_B, n_B) -> np.ndarray:
-    """Euler's equations on principal axes, written component by component as in seed 001:
+    """Euler's equations on principal axes, written component by component as in Craig:
     I1 ω̇1 + (I3 - I2) ω2 ω3 = M1, I2 ω̇2 + (I1 - I3) ω3 ω1 = M2, I3 ω̇3 + (I2 - I1) ω1 ω2 = M3."""
     I1, I2, I3 = I_diag
     w1, w2, w3 = w_B
@@ -196,7 +196,7 @@ def euler_torque(I, w_B, dw_B) -> np.ndarray:
 
 
 def rigid_body_accelerations(mass, I, q_WB, w_B, loads: Loads, g_W=None):
-    """Newton–Euler forward dynamics (seed 000 (4.58), (4.69)): returns (a_W, ω̇_B)."""
+    """Newton–Euler forward dynamics (Rigid-body notes (4.58), (4.69)): returns (a_W, ω̇_B)."""
     f_W, n_B = body_wrench(q_WB, loads, mass, g_W)
     return f_W / mass, euler_angular_acceleration(I, w_B, n_B)
 
@@ -209,20 +209,20 @@ def rigid_body_wrench(mass, I, w_B, a_W, dw_B, g_W=None):
 
 # ---------------------------------------------------------------- momentum, energy, power
 def angular_momentum_about_com(I, q_WB, w_B, frame="world") -> np.ndarray:
-    """H_C = I ω (seed 000 (4.67)): in B as I w_B, in W as R_WB I w_B."""
+    """H_C = I ω (Rigid-body notes (4.67)): in B as I w_B, in W as R_WB I w_B."""
     h_B = np.asarray(I, float) @ w_B
     return h_B if frame == "body" else to_world(q_WB, h_B)
 
 
 def angular_momentum_about_point(mass, I, p_W, q_WB, v_W, w_B, point_W) -> np.ndarray:
-    """H_P = r_PC × L + H_C in W, L = m v_C, r_PC = p_C - p_P (seed 001 "H_P = (r^PC x L) + H";
-    seed 000 (4.65) for P the origin). Holds for a fixed point and for any point P."""
+    """H_P = r_PC × L + H_C in W, L = m v_C, r_PC = p_C - p_P (Craig "H_P = (r^PC x L) + H";
+    Rigid-body notes (4.65) for P the origin). Holds for a fixed point and for any point P."""
     r_PC = np.asarray(p_W, float) - np.asarray(point_W, float)
     return cross(r_PC, linear_momentum(mass, v_W)) + angular_momentum_about_com(I, q_WB, w_B)
 
 
 def kinetic_energy(mass, I, v_W, w_B):
-    """(T_translation, T_rotation) = (½ m v·v, ½ ω·I ω) (seed 001 "Kinetic Energy")."""
+    """(T_translation, T_rotation) = (½ m v·v, ½ ω·I ω) (Craig "Kinetic Energy")."""
     v, w = np.asarray(v_W, float), np.asarray(w_B, float)
     return 0.5 * mass * v @ v, 0.5 * w @ np.asarray(I, float) @ w
 
@@ -234,7 +234,7 @@ def potential_energy(mass, p_W, g_W=None) -> float:
 
 def power(f_W, n_B, v_W, w_B) -> float:
     """P = f·v_C + n·ω of a force through the centre of mass and a couple (each dot product in one
-    frame); the rate of the work-energy equation T2 - T1 = U12 (seed 001)."""
+    frame); the rate of the work-energy equation T2 - T1 = U12 (Craig)."""
     return float(np.asarray(f_W, float) @ v_W + np.asarray(n_B, float) @ w_B)
 
 
@@ -245,7 +245,7 @@ def point_velocity(q_WB, v_W, w_B, point_B) -> np.ndarray:
 
 def apply_impulse(mass, I, q_WB, v_W, w_B, impulse, point, frame="world", angular_impulse=None):
     """Instant change of velocities from an impulse J [N s] applied at `point` (from the centre of
-    mass) and an angular impulse K [N m s], all three in `frame`: impulse–momentum (seed 001)
+    mass) and an angular impulse K [N m s], all three in `frame`: impulse–momentum (Craig)
     m Δv = J, ΔH_C = r × J + K, so Δv_W = J_W / m and Δω_B = I⁻¹ (r × J + K)_B.
     Returns (v_W', w_B')."""
     J_W, dH_B = wrench_of_force_at_point(q_WB, impulse, point, frame)

@@ -38,13 +38,13 @@ def _diag(m: float, moments) -> Inertia:
 # ---------------------------------------------------------------- point sets and shifts
 def point_inertia(mass, r) -> np.ndarray:
     """Inertia of a point mass m at r about the origin: m (|r|^2 1 - r r^T) = -m [r]x [r]x
-    (seed 000 (4.71))."""
+    (Rigid-body notes (4.71))."""
     return -np.asarray(mass, dtype=float)[..., None, None] * (hat(r) @ hat(r))
 
 
 def from_point_masses(masses, positions) -> Inertia:
-    """m = Σ m_i (seed 000 (4.53)), c = Σ m_i r_i / m (4.54),
-    I_C = Σ m_i (|r_i - c|^2 1 - (r_i - c)(r_i - c)^T) (seed 000 (4.70) as a sum)."""
+    """m = Σ m_i (Rigid-body notes (4.53)), c = Σ m_i r_i / m (4.54),
+    I_C = Σ m_i (|r_i - c|^2 1 - (r_i - c)(r_i - c)^T) (Rigid-body notes (4.70) as a sum)."""
     masses = np.asarray(masses, dtype=float)
     positions = np.asarray(positions, dtype=float)
     m = masses.sum()
@@ -53,8 +53,8 @@ def from_point_masses(masses, positions) -> Inertia:
 
 
 def inertia_about_point(body: Inertia, point) -> np.ndarray:
-    """Parallel axis (seed 001 "[I]_2 = [I]_C + m [[b²+c², -ab, -ac], ...]"): I_P = I_C + m (|r|^2 1 -
-    r r^T), r = c - p. Written element by element as in the seed."""
+    """Parallel axis (Craig "[I]_2 = [I]_C + m [[b²+c², -ab, -ac], ...]"): I_P = I_C + m (|r|^2 1 -
+    r r^T), r = c - p. Written element by element as in Craig."""
     a, b, c = np.asarray(body.com, dtype=float) - np.asarray(point, dtype=float)
     shift = np.array([[b * b + c * c, -a * b, -a * c],
                       [-a * b, c * c + a * a, -b * c],
@@ -82,7 +82,7 @@ def transformed(body: Inertia, R_AB, p_AB) -> Inertia:
 
 
 def composite(parts) -> Inertia:
-    """Parts in one frame: m = Σ m_i, c = Σ m_i c_i / m (seed 000 (4.54)), I_C = Σ [I_i + m_i
+    """Parts in one frame: m = Σ m_i, c = Σ m_i c_i / m (Rigid-body notes (4.54)), I_C = Σ [I_i + m_i
     (|d_i|^2 1 - d_i d_i^T)], d_i = c_i - c (parallel axis for each part)."""
     m = sum(p.mass for p in parts)
     c = sum(p.mass * np.asarray(p.com, dtype=float) for p in parts) / m
@@ -113,7 +113,7 @@ def momentum(body: Inertia, twist) -> np.ndarray:
 
 
 def kinetic_energy(body: Inertia, twist) -> float:
-    """T = 1/2 m v_C·v_C + 1/2 w·I_C w with v_C = v_O + w x c (seed 001 "Kinetic Energy")."""
+    """T = 1/2 m v_C·v_C + 1/2 w·I_C w with v_C = v_O + w x c (Craig "Kinetic Energy")."""
     twist = np.asarray(twist, dtype=float)
     w, v_O = twist[:3], twist[3:]
     v_C = v_O + np.cross(w, body.com)
@@ -121,12 +121,12 @@ def kinetic_energy(body: Inertia, twist) -> float:
 
 
 def angular_momentum_about_com(body: Inertia, w) -> np.ndarray:
-    """H_C = I_C w (seed 000 (4.67))."""
+    """H_C = I_C w (Rigid-body notes (4.67))."""
     return body.inertia_com @ np.asarray(w, dtype=float)
 
 
 def angular_momentum_about_point(body: Inertia, w, v_C, point) -> np.ndarray:
-    """H_P = r_PC x L + H_C, L = m v_C (seed 001 "H_P = (r^PC x L) + H")."""
+    """H_P = r_PC x L + H_C, L = m v_C (Craig "H_P = (r^PC x L) + H")."""
     r_PC = np.asarray(body.com, dtype=float) - np.asarray(point, dtype=float)
     return np.cross(r_PC, body.mass * np.asarray(v_C, float)) + angular_momentum_about_com(body, w)
 

@@ -2,11 +2,11 @@
 
 Each model's state is a flat coordinate vector whose last entry is the work W [J] done by the
 applied loads and gravity since the start, integrated with the motion (dW/dt = power), so that the
-work-energy equation T2 - T1 = U12 (seed 001) can be checked:
+work-energy equation T2 - T1 = U12 (Craig) can be checked:
   particle     y = (p_W:3, v_W:3, W)                                  (7,)
   planar body  y = (x, y, θ, v_x, v_y, ω, W)                          (7,)
   rigid body   y = (p_W:3, q_WB (x,y,z,w):4, v_W:3, w_B:3, W)         (14,)
-Loads (dynamics.Loads) are held constant over a step (the ones active at its start).
+Loads (dynamics.Loads) are piecewise constant: simulate splits a step at a switch time.
 
 Methods (the names of rigiddyn.methods()):
 - explicit_euler: y1 = y0 + h f(y0), quaternion renormalised (Euler 1768; order 1).
@@ -42,7 +42,7 @@ METHODS = ("explicit_euler", "semi_implicit_euler", "semi_implicit_euler_implici
 
 # ---------------------------------------------------------------- models
 class ParticleModel:
-    """m p̈ = f + m g (seed 000 (4.35)). 'Body' forces are world forces (no attitude)."""
+    """m p̈ = f + m g (Rigid-body notes (4.35)). 'Body' forces are world forces (no attitude)."""
 
     def __init__(self, mass, g_W=None):
         self.mass, self.g_W = float(mass), dyn._vec(g_W)
@@ -75,7 +75,7 @@ class ParticleModel:
 
 
 class PlanarBodyModel:
-    """Plane kinetics (seed 001): m a_G = Σf, I_zz α = Σn_z, B turned by θ about z."""
+    """Plane kinetics (Craig): m a_G = Σf, I_zz α = Σn_z, B turned by θ about z."""
 
     def __init__(self, mass, inertia_zz, g_W=None):
         self.mass, self.inertia_zz, self.g_W = float(mass), float(inertia_zz), dyn._vec(g_W)
@@ -124,7 +124,7 @@ def implicit_gyroscopic_kick(I, w, n, h):
 
 
 class RigidBodyModel:
-    """Newton–Euler about the centre of mass (seed 000 (4.58), (4.69); seed 001):
+    """Newton–Euler about the centre of mass (Rigid-body notes (4.58), (4.69); Craig):
     ṗ = v, q̇ = ½ q ⊗ (ω_B, 0), m v̇ = f_W + m g, I ω̇ + ω × I ω = n_B."""
 
     def __init__(self, mass, inertia_com, g_W=None):
@@ -249,10 +249,11 @@ def step(model, y, h, method):
 
 
 def simulate(model, y0, h, steps, method, schedule=(), t0=0.0):
-    """`steps` steps from y0 at t0; the loads active at the start of each step act during it.
-    Returns the final coordinates."""
+    """`steps` steps from y0 at t0; a step across a switch time of the schedule is split there
+    (dynamics.step_pieces), each piece with the loads active on it. Returns the final coordinates."""
     y = np.array(y0, dtype=float)
     for i in range(steps):
-        model.set_loads(dyn.loads_at(schedule, t0 + i * h))
-        y = step(model, y, h, method)
+        for start, length in dyn.step_pieces(schedule, t0 + i * h, h):
+            model.set_loads(dyn.loads_at(schedule, start))
+            y = step(model, y, length, method)
     return y

@@ -1,5 +1,5 @@
-"""Moving-frame kinematics in plain numpy, term by term (seed 001 "Kinematics of a Rigid Body",
-seed 000 §4.11.1 eqs (4.37)-(4.39)).
+"""Moving-frame kinematics in plain numpy, term by term (Craig "Kinematics of a Rigid Body",
+Rigid-body notes §4.11.1 eqs (4.37)-(4.39)).
 
 Notation: ω_PA is the angular velocity of frame A in frame P, α_PA = ^P d/dt ω_PA its angular
 acceleration (the derivative taken in P). Unless a function takes a rotation matrix, all vectors
@@ -12,20 +12,20 @@ import numpy as np
 
 
 def compose_angular_velocity(w_PA, w_AB) -> np.ndarray:
-    """Addition theorem: ω_PB = ω_PA + ω_AB (seed 001 "^Rω^R2 = ^Rω^R1 + ^R1ω^R2")."""
+    """Addition theorem: ω_PB = ω_PA + ω_AB (Craig "^Rω^R2 = ^Rω^R1 + ^R1ω^R2")."""
     return np.asarray(w_PA, dtype=float) + np.asarray(w_AB, dtype=float)
 
 
 def compose_angular_acceleration(w_PA, alpha_PA, w_AB, alpha_AB) -> np.ndarray:
     """α_PB = ^P d/dt (ω_PA + ω_AB) = α_PA + ^A d/dt ω_AB + ω_PA x ω_AB, with α_AB = ^A d/dt ω_AB
-    (transport theorem on ω_AB; seed 001 "There is no addition theorem for angular accelerations";
-    the seed's example: 5i x 4k1 = -20 j1)."""
+    (transport theorem on ω_AB; Craig "There is no addition theorem for angular accelerations";
+    Craig's example: 5i x 4k1 = -20 j1)."""
     return (np.asarray(alpha_PA, dtype=float) + np.asarray(alpha_AB, dtype=float)
             + np.cross(w_PA, w_AB))
 
 
 def chain_angular_velocity(w_rel) -> np.ndarray:
-    """ω_0N = Σ_i ω_(i-1)i for w_rel (..., N, 3) = [ω_01, ω_12, ..., ω_(N-1)N] (seed 001, the
+    """ω_0N = Σ_i ω_(i-1)i for w_rel (..., N, 3) = [ω_01, ω_12, ..., ω_(N-1)N] (Craig, the
     addition theorem for N frames)."""
     return np.sum(np.asarray(w_rel, dtype=float), axis=-2)
 
@@ -45,14 +45,14 @@ def chain_angular_acceleration(w_rel, alpha_rel) -> np.ndarray:
 
 
 def transport_derivative(w_AB, u, du_dt_in_B) -> np.ndarray:
-    """Transport theorem: ^A d/dt u = ^B d/dt u + ω_AB x u (seed 001 "^R dV/dt = ^R1 dV/dt +
-    ^Rω^R1 x V"; seed 000 (4.38)). All three vectors expressed in one frame."""
+    """Transport theorem: ^A d/dt u = ^B d/dt u + ω_AB x u (Craig "^R dV/dt = ^R1 dV/dt +
+    ^Rω^R1 x V"; Rigid-body notes (4.38)). All three vectors expressed in one frame."""
     return np.asarray(du_dt_in_B, dtype=float) + np.cross(w_AB, u)
 
 
 def point_velocity_terms(v_O, w, r, v_rel) -> dict:
-    """Velocity of a point P moving in a frame M whose origin O moves in the frame W (seed 001
-    "^R v^P = ^R v^A + ^R ω^R1 x r^AP + ^R1 v^P"; seed 000 (4.38)): terms
+    """Velocity of a point P moving in a frame M whose origin O moves in the frame W (Craig
+    "^R v^P = ^R v^A + ^R ω^R1 x r^AP + ^R1 v^P"; Rigid-body notes (4.38)): terms
       origin   = v_O          velocity of M's origin in W
       rotational = ω x r      r = r_OP, ω = ω_WM
       relative = v_rel        ^M d/dt r_OP
@@ -67,8 +67,8 @@ def point_velocity_terms(v_O, w, r, v_rel) -> dict:
 
 
 def point_acceleration_terms(a_O, w, alpha, r, v_rel, a_rel) -> dict:
-    """Acceleration of a point P moving in a moving frame M (seed 001 "^R a^P = ^R a^A +
-    ^Rα^R1 x r + ^Rω^R1 x (^Rω^R1 x r) + ^R1 a^P + 2 ^Rω^R1 x ^R1 v^P"; seed 000 (4.39)):
+    """Acceleration of a point P moving in a moving frame M (Craig "^R a^P = ^R a^A +
+    ^Rα^R1 x r + ^Rω^R1 x (^Rω^R1 x r) + ^R1 a^P + 2 ^Rω^R1 x ^R1 v^P"; Rigid-body notes (4.39)):
       origin      = a_O               acceleration of M's origin in W
       tangential  = α x r             α = ^W d/dt ω_WM
       centripetal = ω x (ω x r)

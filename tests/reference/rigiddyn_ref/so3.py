@@ -37,7 +37,7 @@ def _sinc(x):
 
 # ---------------------------------------------------------------- skew matrices
 def hat(v) -> np.ndarray:
-    """Skew matrix S = [v]x with S x = v x x (seed 000 (4.66) uses [r] for this matrix)."""
+    """Skew matrix S = [v]x with S x = v x x (Rigid-body notes (4.66) uses [r] for this matrix)."""
     v = np.asarray(v, dtype=float)
     x, y, z = v[..., 0], v[..., 1], v[..., 2]
     o = np.zeros_like(x)

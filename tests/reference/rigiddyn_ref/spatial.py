@@ -3,7 +3,7 @@
 A motion vector (twist) is the 6-array m = [w; v]; a force vector (wrench) f = [n; f]. A rigid
 transform X_AB is the pair (R_AB, p_AB): R_AB maps B coordinates to A coordinates and p_AB is the
 position of B's origin in A. References: Featherstone, "Rigid Body Dynamics Algorithms" (2008),
-cited as "RBDA §k"; seed 000 for the screw axis. Stacks (n, 6), (n, 3, 3), (n, 3) broadcast.
+cited as "RBDA §k"; Rigid-body notes for the screw axis. Stacks (n, 6), (n, 3, 3), (n, 3) broadcast.
 """
 
 from __future__ import annotations
@@ -123,7 +123,7 @@ def _norm_and_unit(u):
 
 def twist_to_screw(m):
     """Instantaneous screw axis of the twist m = [w; v] (v: velocity of the point at the origin of
-    the frame of expression; seed 000 §4.10-4.11 "ISA"; Murray-Li-Sastry Prop. 2.9):
+    the frame of expression; Rigid-body notes §4.10-4.11 "ISA"; Murray-Li-Sastry Prop. 2.9):
       direction = w/|w|, pitch h = w·v/|w|^2, point on the axis nearest the origin
       r = w x v/|w|^2, magnitude |w|.
     Pure translation (w = 0): direction v/|v|, pitch inf, point 0, magnitude |v|.

@@ -1,4 +1,4 @@
-// Dynamics of a particle (point mass; seed 000 §4.11, seed 001 "Principle of linear impulse and
+// Dynamics of a particle (point mass; Rigid-body notes §4.11, Craig "Principle of linear impulse and
 // momentum"): m a = f + m g,  L = m v,  H_P = (p − p_P) × m v,  T = ½ m v·v.
 // Everything in the world frame W. The same function names as the rigid body's
 // (rigid_body_dynamics.hpp), as overloads; a particle has no rotation, so its rotational parts are 0.
@@ -35,7 +35,7 @@ double potential_energy(const Particle& particle, const ParticleState& state, co
 // Power of a force f_W [N] (in W) on the particle [W]: P = f_W·v_W.
 double power(const ParticleState& state, const Eigen::Vector3d& f_W);
 
-// Impulse–momentum (seed 001): an impulse [N s] in W changes the velocity instantly, m Δv = impulse.
+// Impulse–momentum (Craig): an impulse [N s] in W changes the velocity instantly, m Δv = impulse.
 ParticleState apply_impulse(const Particle& particle, const ParticleState& state, const Eigen::Vector3d& impulse);
 
 }  // namespace rigiddyn

@@ -1,4 +1,4 @@
-// Dynamics of a planar rigid body (x, y, θ in the xy plane of W; seed 001 "plane kinetics"):
+// Dynamics of a planar rigid body (x, y, θ in the xy plane of W; Craig "plane kinetics"):
 //   m a_G = f,  I_zz α = n_G,  L = m v,  H_P = I_zz ω + (p_G − p_P) × m v,  T = ½ m v·v + ½ I_zz ω².
 // In-plane vectors are (2,) in W unless said otherwise; moments and angular quantities are the z
 // components (scalars). The same names as the rigid body's (rigid_body_dynamics.hpp), as overloads;
@@ -60,7 +60,7 @@ double potential_energy(const PlanarBody& body, const PlanarBodyState& state, co
 // Power of a wrench reduced to G [W]: P = f_W·v_W + n ω.
 double power(const PlanarBodyState& state, const PlanarWrench& wrench);
 
-// Impulse–momentum (seed 001): an impulse [N s] (2,) at point P (p_GP [m] (2,) from G) and an angular
+// Impulse–momentum (Craig): an impulse [N s] (2,) at point P (p_GP [m] (2,) from G) and an angular
 // impulse [N m s] (z), in `frame`, change the velocities instantly: m Δv = impulse,
 // I_zz Δω = p_GP × impulse + angular_impulse. Position and angle unchanged.
 PlanarBodyState apply_impulse(const PlanarBody& body, const PlanarBodyState& state, const Eigen::Vector2d& impulse,

@@ -1,5 +1,5 @@
-// Newton–Euler dynamics of one rigid body about its centre of mass G (seed 001 "Equations of motion",
-// "Principle of linear/angular impulse and momentum", "Kinetic energy"; seed 000 §4.11):
+// Newton–Euler dynamics of one rigid body about its centre of mass G (Craig "Equations of motion",
+// "Principle of linear/angular impulse and momentum", "Kinetic energy"; Rigid-body notes §4.11):
 //   m a_G = f,  I α + ω × I ω = n_G,   H_G = I ω,  T = ½ m v·v + ½ ω·I ω.
 // Frames: f_W, v_W, a_W in W; ω_B, α_B, n_B and the inertia in B (Euler's equations live in B).
 #pragma once
@@ -58,7 +58,7 @@ double potential_energy(const RigidBody& body, const RigidBodyState& state, cons
 // Power of a wrench reduced to G [W]: P = f_W·v_W + n_B·ω_B.
 double power(const RigidBodyState& state, const ComWrench& wrench);
 
-// Impulse–momentum (seed 001): an impulse `impulse` [N s] at point P (p_GP [m] from G) and an
+// Impulse–momentum (Craig): an impulse `impulse` [N s] at point P (p_GP [m] from G) and an
 // angular impulse `angular_impulse` [N m s], both in `frame`, change the velocities instantly:
 //   m Δv = impulse,  I Δω_B = (p_GP × impulse + angular_impulse) in B.  Position and attitude unchanged.
 RigidBodyState apply_impulse(const RigidBody& body, const RigidBodyState& state, const Eigen::Vector3d& impulse,

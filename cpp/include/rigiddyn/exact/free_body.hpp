@@ -49,14 +49,19 @@ class TorqueFreeSolution {
   // I_B: rotational inertia about the centre of mass, expressed in B [kg m²], symmetric positive
   // definite (any such matrix is accepted, also ones violating the triangle inequality);
   // q_WB: initial attitude (norm within 1e-6 of 1; normalised); w_B: initial angular velocity of
-  // B, expressed in B [rad/s]. Throws std::invalid_argument on bad input.
+  // B, expressed in B [rad/s], finite. Throws std::invalid_argument on bad input, and naming w_B when a
+  // rate of the motion (of the order of |w_B| I_max/I_min) exceeds the double range. Any magnitudes are
+  // accepted otherwise (the motion is formed with the inertia and w_B scaled by powers of two); the
+  // invariants L_W and T alone may overflow to inf (angular_momentum_W(), kinetic_energy()).
   TorqueFreeSolution(const Eigen::Matrix3d& I_B, const Eigen::Quaterniond& q_WB, const Eigen::Vector3d& w_B);
 
-  // The state at time t [s] (any finite real, also negative) after the initial one.
+  // The state at time t [s] (any finite real, also negative) after the initial one. Throws
+  // std::invalid_argument naming t when a phase (a rate times t) overflows the double range.
   TorqueFreeState state_at(double t) const;
 
   // Period of w_B(t) [s] (4K/λ in cases A and B; 2π/|β| for a symmetric body); +inf when w_B is
-  // constant or on the separatrix. One intermediate-axis flip (Dzhanibekov) takes half of it.
+  // constant, on the separatrix, or when the period exceeds the double range. One intermediate-axis
+  // flip (Dzhanibekov) takes half of it.
   double period() const { return period_; }
   TorqueFreeCase solution_case() const { return case_; }
   // Parameter m of the elliptic functions and its complement 1 − m (0 and 1 unless case A or B;
@@ -66,7 +71,8 @@ class TorqueFreeSolution {
   // Principal moments I1 ≤ I2 ≤ I3 [kg m²] and R_BP (columns: principal axes in B, det +1).
   const Eigen::Vector3d& principal_moments() const { return I_principal_; }
   const Eigen::Matrix3d& R_BP() const { return R_BP_; }
-  // The invariants: spatial angular momentum L_W [kg m²/s] and kinetic energy T [J].
+  // The invariants: spatial angular momentum L_W [kg m²/s] and kinetic energy T [J] (±inf beyond the
+  // double range, rounded towards 0 below it).
   const Eigen::Vector3d& angular_momentum_W() const { return L_W_; }
   double kinetic_energy() const { return kinetic_energy_; }
 
@@ -76,10 +82,17 @@ class TorqueFreeSolution {
   TorqueFreeSolution(const PrincipalAxes& axes, const Eigen::Quaterniond& q_WB, const Eigen::Vector3d& w_B,
                      bool eager_complete_pi);
   double complete_pi() const;
+  TorqueFreeState evaluate(double t) const;  // state_at without its checks (NaN where a phase overflows)
   void init_rotation_about_axis(const Eigen::Vector3d& I_Q, const Eigen::Vector3d& axis_B, double I_axial);
-  void init_elliptic(const Eigen::Vector3d& m_P, double delta1, double delta3, double delta2);
+  // I: principal moments scaled by a power of two (the largest in [1, 2)); m_tilde = I ∘ w̃ with the
+  // body rate ω_P = 2^e_rate w̃
+  void init_elliptic(const Eigen::Vector3d& I, const Eigen::Vector3d& m_tilde, int e_rate);
+  double max_rate() const;  // the largest rate of the motion [rad/s] (inf if one overflowed)
+  void init_phase(const Eigen::Vector3d& mh_Q, double kc_M_dn_hat, int t2);
   TorqueFreeState state_about_axis(double t) const;
   TorqueFreeState state_elliptic(double t) const;
+  TorqueFreeState state_separatrix(double t) const;
+  TorqueFreeState state_from_functions(double phi, const JacobiSnCnDn& f_w, double quarter) const;
 
   TorqueFreeCase case_;
   Eigen::Vector3d I_principal_;
@@ -98,21 +111,27 @@ class TorqueFreeSolution {
   double beta_ = 0.0;                               // body spin rate about e_B [rad/s]
 
   // cases A, B, separatrix: in the frame Q = (a, b, s) of principal axes, s carrying dn,
-  // ω_Q = (w_cn cn, w_sn sn, w_dn dn) placed at (cn_axis, sn_axis, 2); u = λ t + u0
-  EllipticParameter elliptic_{0.0, 1.0, 0.0};
+  // ω_Q = (A_cn cn, A_sn sn, A_dn dn) placed at (cn_axis, sn_axis, 2); u = λ t + u0, u0 = l0 K + w0.
+  // Momenta are kept in units of 2^e |m| (the largest component in [1, 2)); the transverse
+  // amplitudes (cn, sn) carry an extra 2^t_trans and kc = 2^t_kc k̂c, so that a transverse part down to
+  // the smallest subnormal keeps its direction and nothing underflows before it must.
+  EllipticParameter elliptic_{0.0, 1.0, 1.0, 0.0};
   Eigen::Quaterniond q_BQ_;
   Eigen::Quaterniond q_WN_;                         // N: inertial, z along L_W
-  Eigen::Vector3d I_Q_ = Eigen::Vector3d::Ones();
-  Eigen::Vector3d w_amplitude_ = Eigen::Vector3d::Zero();  // signed (w_cn, w_sn, w_dn) [rad/s]
+  Eigen::Vector3d w_amplitude_ = Eigen::Vector3d::Zero();  // signed (A_cn, A_sn, A_dn) [rad/s]
+  Eigen::Vector2d kc_w_amplitude_ = Eigen::Vector2d::Zero();  // kc (A_cn, A_dn) [rad/s] (odd quarters)
+  Eigen::Vector3d M_ = Eigen::Vector3d::Zero();     // I_Q A: (cn, sn) mantissas (× 2^t_trans), dn in units of |m|
+  Eigen::Vector2d kc_M_ = Eigen::Vector2d::Zero();  // kc times the cn mantissa and the dn momentum (odd quarters)
+  int t_trans_ = 0;
   int cn_axis_ = 0;
   int sn_axis_ = 1;
   double lambda_ = 0.0;                             // [1/s]
-  double v0_ = 0.0;                                 // u0 = v0 + 2 j0 K, v0 ∈ [−K, K]
-  bool j0_odd_ = false;                             // j0 ∈ {−1, 0, 1} odd
+  double w0_ = 0.0;                                 // reduced phase |w0| <= K/2 (the separatrix: u0)
+  double l0_ = 0.0;                                 // quarter periods in u0, in {-1, 0, 1, 2}
   double n_ = 0.0;                                  // characteristic of Π
   bool pi_complete_known_ = false;
   double pi_complete_ = 0.0;                        // Π(n|m) (if known)
-  double pi0_ = 0.0;                                // Π(am v0, n|m)
+  double pi0_ = 0.0;                                // reduced Π at w0 (the separatrix: a atan(a tanh u0))
   double phi_rate_ = 0.0;                           // G/I_s [rad/s]
   double phi_pi_ = 0.0;                             // coefficient of Π in φ [rad]
 };

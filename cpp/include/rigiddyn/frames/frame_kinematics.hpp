@@ -1,6 +1,6 @@
 // The kinematic state, at one instant, of a frame F relative to a reference frame P: the placement
-// of F in P and its first and second time derivatives as seen from P (seed 001 "Kinematics of a
-// Rigid Body"; seed 000 Sect. 4.11.1).
+// of F in P and its first and second time derivatives as seen from P (Craig "Kinematics of a
+// Rigid Body"; Rigid-body notes Sect. 4.11.1).
 #pragma once
 #include <Eigen/Core>
 
@@ -25,9 +25,9 @@ struct FrameKinematics {
 };
 
 // Frame F relative to A from P relative to A (K_AP) and F relative to P (K_PF). Angular velocity by
-// the addition theorem (seed 001), angular acceleration with its cross term
-// alpha_AF = alpha_AP + alpha_PF + w_AP x w_PF (seed 001: no addition theorem for angular
-// accelerations), origin motion by the point formulas (seed 000 (4.38), (4.39)). Result expressed in A.
+// the addition theorem (Craig), angular acceleration with its cross term
+// alpha_AF = alpha_AP + alpha_PF + w_AP x w_PF (Craig: no addition theorem for angular
+// accelerations), origin motion by the point formulas (Rigid-body notes (4.38), (4.39)). Result expressed in A.
 FrameKinematics compose_kinematics(const FrameKinematics& K_AP, const FrameKinematics& K_PF);
 
 // Frame F relative to frame A, from both relative to a common frame W (K_WA, K_WF); expressed in A.

@@ -23,7 +23,7 @@ class FrameMotion {
   static FrameMotion fixed(const Eigen::Matrix3d& R_PF = Eigen::Matrix3d::Identity(),
                            const Eigen::Vector3d& p_PF_P = Eigen::Vector3d::Zero());
 
-  // Simple angular velocity (seed 001): F turns at the constant rate `rate` [rad/s] about the axis
+  // Simple angular velocity (Craig): F turns at the constant rate `rate` [rad/s] about the axis
   // axis_P (expressed in P, any non-zero length; fixed in both P and F) through F's origin, which
   // stays at p_PF_P [m] in P:
   //   R_PF(t) = exp(hat(rate t axis_P/|axis_P|)) R_PF0,  w_PF_P = rate axis_P/|axis_P|, alpha = 0,

@@ -1,4 +1,4 @@
-// A tree of reference frames rooted at the inertial world frame "world" (seed 001: R ground,
+// A tree of reference frames rooted at the inertial world frame "world" (Craig: R ground,
 // R1 shaft, R2 disk, ...). Each frame is placed relative to its parent by a FrameMotion; queries
 // relate any frame to any other at a time t [s], with results expressed in a frame the caller
 // names. Cycles are impossible: a frame's parent must already be in the tree, and set_parent
@@ -51,16 +51,16 @@ class FrameTree {
   Eigen::Matrix3d rotation(const std::string& frame, const std::string& relative_to, double t) const;
 
   // w_AF_E: angular velocity of `frame` F relative to `relative_to` A, expressed in `expressed_in`
-  // E [rad/s] (addition theorem along the tree path, seed 001).
+  // E [rad/s] (addition theorem along the tree path, Craig).
   Eigen::Vector3d angular_velocity(const std::string& frame, const std::string& relative_to,
                                    const std::string& expressed_in, double t) const;
 
   // alpha_AF_E: angular acceleration of F relative to A (d/dt in A of w_AF), expressed in E
-  // [rad/s^2]. Not the sum of the links' accelerations: includes the w x w terms (seed 001).
+  // [rad/s^2]. Not the sum of the links' accelerations: includes the w x w terms (Craig).
   Eigen::Vector3d angular_acceleration(const std::string& frame, const std::string& relative_to,
                                        const std::string& expressed_in, double t) const;
 
-  // Transport theorem (seed 001): d^A u/dt = d^B u/dt + w_AB x u, with A = `to_frame`,
+  // Transport theorem (Craig): d^A u/dt = d^B u/dt + w_AB x u, with A = `to_frame`,
   // B = `from_frame`; u_E and du_B_E (the derivative of u seen from B) and the result are expressed
   // in `expressed_in` E.
   Eigen::Vector3d transport_derivative(const Eigen::Vector3d& u_E, const Eigen::Vector3d& du_B_E,
@@ -73,7 +73,7 @@ class FrameTree {
                                  const std::string& relative_to, const std::string& expressed_in,
                                  double t) const;
 
-  // Velocity of Q seen from A, term by term (seed 000 (4.38)), each term expressed in E [m/s].
+  // Velocity of Q seen from A, term by term (Rigid-body notes (4.38)), each term expressed in E [m/s].
   // Q is at p_FQ_F and moves with v_FQ_F as seen from F (both expressed in F); v = 0 for a point
   // fixed in F.
   PointVelocity point_velocity(const std::string& frame, const Eigen::Vector3d& p_FQ_F,
@@ -81,7 +81,7 @@ class FrameTree {
                                const std::string& expressed_in, double t) const;
 
   // Acceleration of Q seen from A, term by term (origin, tangential, centripetal, relative,
-  // Coriolis; seed 000 (4.39), seed 001), each term expressed in E [m/s^2]; a_FQ_F: Q's
+  // Coriolis; Rigid-body notes (4.39), Craig), each term expressed in E [m/s^2]; a_FQ_F: Q's
   // acceleration seen from F, expressed in F.
   PointAcceleration point_acceleration(const std::string& frame, const Eigen::Vector3d& p_FQ_F,
                                        const Eigen::Vector3d& v_FQ_F, const Eigen::Vector3d& a_FQ_F,
@@ -95,8 +95,12 @@ class FrameTree {
   };
   // The node of a known frame; else std::invalid_argument naming `argument`.
   const Node& node(const std::string& name, const std::string& argument) const;
-  // F relative to world at t, expressed in world (checking each link's FrameMotion value).
+  // F relative to world at t, expressed in world (checking each link's FrameMotion value). Walks
+  // the path iteratively, so a chain of any depth costs memory O(depth), never stack.
   FrameKinematics in_world(const std::string& name, double t) const;
+  // The checked value of node n's motion at t (F = `name` relative to its parent); throws
+  // std::invalid_argument naming the frame and t.
+  static FrameKinematics link(const std::string& name, const Node& n, double t);
   // What every query needs: F relative to A (K_AF, expressed in A) and R_EA; checks all names and t.
   struct Query {
     FrameKinematics K_AF;
@@ -104,7 +108,7 @@ class FrameTree {
   };
   Query query(const std::string& frame, const std::string& relative_to, const std::string& expressed_in,
               double t) const;
-  // The frame names as one string, for error messages ("world, A, ...").
+  // The frame names as one string, for error messages ("world, A, ..."; the first 20 and the count).
   std::string known_names() const;
 
   std::map<std::string, Node> frames_;

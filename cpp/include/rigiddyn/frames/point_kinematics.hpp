@@ -1,5 +1,5 @@
 // Velocity and acceleration of a point Q that moves in a moving frame F, seen from a frame A, term
-// by term (seed 001 "Relative Acceleration"; seed 000 (4.38), (4.39)), and the transport theorem.
+// by term (Craig "Relative Acceleration"; Rigid-body notes (4.38), (4.39)), and the transport theorem.
 #pragma once
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -8,7 +8,7 @@
 
 namespace rigiddyn {
 
-// v_AQ = v_AF + w_AF x r + v_rel   (seed 000 (4.38)), r = p_FQ. All terms expressed in one frame
+// v_AQ = v_AF + w_AF x r + v_rel   (Rigid-body notes (4.38)), r = p_FQ. All terms expressed in one frame
 // (the frame A of the query unless rotated) [m/s].
 struct PointVelocity {
   Eigen::Vector3d origin;      // v_AF: velocity of F's origin seen from A
@@ -19,8 +19,8 @@ struct PointVelocity {
   PointVelocity rotated(const Eigen::Matrix3d& R_EA) const;
 };
 
-// a_AQ = a_AF + alpha_AF x r + w_AF x (w_AF x r) + a_rel + 2 w_AF x v_rel   (seed 000 (4.39);
-// seed 001: origin, tangential, centripetal, relative, Coriolis). All terms expressed in one frame
+// a_AQ = a_AF + alpha_AF x r + w_AF x (w_AF x r) + a_rel + 2 w_AF x v_rel   (Rigid-body notes (4.39);
+// Craig: origin, tangential, centripetal, relative, Coriolis). All terms expressed in one frame
 // [m/s^2].
 struct PointAcceleration {
   Eigen::Vector3d origin;       // a_AF: acceleration of F's origin seen from A
@@ -43,7 +43,7 @@ PointVelocity point_velocity(const FrameKinematics& K_AF, const Eigen::Vector3d&
 PointAcceleration point_acceleration(const FrameKinematics& K_AF, const Eigen::Vector3d& p_FQ_F,
                                      const Eigen::Vector3d& v_FQ_F, const Eigen::Vector3d& a_FQ_F);
 
-// Transport theorem (seed 001): the time derivative of a vector u seen from A, from its derivative
+// Transport theorem (Craig): the time derivative of a vector u seen from A, from its derivative
 // seen from B: d^A u/dt = d^B u/dt + w_AB x u. All three vectors expressed in one frame.
 inline Eigen::Vector3d transport_derivative(const Eigen::Vector3d& w_AB, const Eigen::Vector3d& u,
                                  const Eigen::Vector3d& du_dt_in_B) {

@@ -1,5 +1,5 @@
 // Mass properties of a body of variable density rho(r) [kg/m^3] by numerical quadrature of
-// seed 000 (4.56) m = int rho dV, (4.55) c = (1/m) int rho r dV and (4.70) the inertia integral
+// Rigid-body notes (4.56) m = int rho dV, (4.55) c = (1/m) int rho r dV and (4.70) the inertia integral
 // (written as I = tr(C) 1 - C with C = int rho d d^T dV, d = r - c), with an error estimate.
 //
 // Rules: tensor-product Gauss-Legendre (nodes and weights by Golub-Welsch, Eigen's symmetric

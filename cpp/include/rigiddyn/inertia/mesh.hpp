@@ -1,5 +1,5 @@
 // Mass properties of a closed triangle mesh, exact (no quadrature error): the volume integrals of
-// seed 000 (4.55), (4.56), (4.70) become, by the divergence theorem, sums over the faces of signed
+// Rigid-body notes (4.55), (4.56), (4.70) become, by the divergence theorem, sums over the faces of signed
 // tetrahedra (reference point o, face a b c), whose integrals are closed-form:
 //   V_f = d_a . (d_b x d_c) / 6,  int d dV = V_f s/4,  int d d^T dV = V_f/20 (sum d_i d_i^T + s s^T),
 // with d_i = v_i - o and s = d_a + d_b + d_c. A thin shell integrates over the faces instead:

@@ -1,4 +1,4 @@
-// Mass properties of a set of point masses (seed 000 eqs. (4.53)-(4.54)):
+// Mass properties of a set of point masses (Rigid-body notes eqs. (4.53)-(4.54)):
 //   m = sum m_i,  c = (1/m) sum m_i r_i,  I_C = sum m_i (|r_i - c|^2 1 - (r_i - c)(r_i - c)^T).
 #pragma once
 #include <Eigen/Core>

@@ -1,4 +1,4 @@
-// Principal moments and principal axes of a rotational inertia (seed 001 "Principal Axes"): the
+// Principal moments and principal axes of a rotational inertia (Craig "Principal Axes"): the
 // rotation R whose columns are the axes, so that I = R diag(moments) R^T.
 #pragma once
 #include <Eigen/Core>

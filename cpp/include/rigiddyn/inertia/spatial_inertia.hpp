@@ -1,7 +1,7 @@
 // The mass properties of one rigid body (CONVENTIONS.md "Inertia"): mass m, centre of mass c and
 // rotational inertia I_C about the centre of mass, all expressed in one frame (the body frame B unless
 // a name says otherwise; "the frame" below). Every other form is derived:
-//   inertia about a point P (parallel axis, seed 001 [I]_2 = [I]_C + m[...], seed 000 (4.71)):
+//   inertia about a point P (parallel axis, Craig [I]_2 = [I]_C + m[...], Rigid-body notes (4.71)):
 //     I_P = I_C + m (|r|^2 1 - r r^T),  r = c - p_P   (= I_C - m hat(r) hat(r))
 //   6x6 spatial inertia about the frame's origin O, angular first (Featherstone):
 //     [[I_O, m hat(c)], [m hat(c)^T, m 1]],  I_O = I_C + m hat(c) hat(c)^T
@@ -57,7 +57,7 @@ class SpatialInertia {
   const Eigen::Vector3d& com() const { return com_; }
   const Eigen::Matrix3d& inertia_com() const { return inertia_com_; }
 
-  // Rotational inertia about the point p_P [m] (parallel axis, seed 001) [kg m^2], in the frame.
+  // Rotational inertia about the point p_P [m] (parallel axis, Craig) [kg m^2], in the frame.
   Eigen::Matrix3d inertia_about_point(const Eigen::Vector3d& point) const;
   // Rotational inertia about the frame's origin [kg m^2].
   Eigen::Matrix3d inertia_about_origin() const;
@@ -67,11 +67,11 @@ class SpatialInertia {
   // Spatial momentum h = I V (about the frame's origin, angular first) of the twist V = [w; v_O]
   // (v_O the velocity of the body point at the origin): h = [I_O w + m c x v_O; m (v_O + w x c)].
   Force momentum(const Motion& twist) const;
-  // Kinetic energy T = 1/2 V . I V [J] (seed 001: 1/2 m v_C.v_C + 1/2 w.I_C w).
+  // Kinetic energy T = 1/2 V . I V [J] (Craig: 1/2 m v_C.v_C + 1/2 w.I_C w).
   double kinetic_energy(const Motion& twist) const;
   // H_C = I_C w [kg m^2/s]: angular momentum about the centre of mass, w [rad/s] in the frame.
   Eigen::Vector3d angular_momentum_about_com(const Eigen::Vector3d& angular_velocity) const;
-  // H_P = r_PC x L + H_C (seed 001), L = m v_C: angular momentum about the point p_P [m] of the body
+  // H_P = r_PC x L + H_C (Craig), L = m v_C: angular momentum about the point p_P [m] of the body
   // moving with angular velocity w [rad/s] and centre-of-mass velocity v_C [m/s] (all in the frame).
   Eigen::Vector3d angular_momentum_about_point(const Eigen::Vector3d& angular_velocity,
                                                const Eigen::Vector3d& com_velocity,
@@ -88,13 +88,13 @@ class SpatialInertia {
   // The validity report of this inertia (validity.hpp).
   InertiaReport report() const;
   // Whether the plane through the centre of mass with this normal (any nonzero length, in the frame)
-  // can be a plane of symmetry: seed 001 — if the xy plane is one, I_xz = I_yz = 0, i.e. the normal is
+  // can be a plane of symmetry: Craig — if the xy plane is one, I_xz = I_yz = 0, i.e. the normal is
   // a principal axis: |I_C n - (n.I_C n) n| <= tolerance * trace(I_C). Necessary, not sufficient
   // (inertia alone cannot prove a geometric symmetry).
   bool admits_symmetry_plane(const Eigen::Vector3d& normal, double tolerance = 1e-9) const;
 
   // Composite of two bodies expressed in the same frame: masses add, the centre of mass is the
-  // mass-weighted mean (seed 000 (4.54)), inertias add about the common centre of mass.
+  // mass-weighted mean (Rigid-body notes (4.54)), inertias add about the common centre of mass.
   SpatialInertia operator+(const SpatialInertia& part) const;
   // This body with `part` removed (a hole): the inverse of operator+. Throws unless the rest has
   // mass > 0 and satisfies `check` (round-off scale: this body's inertia about the new centre).
@@ -120,9 +120,10 @@ SpatialInertia composite(const std::vector<std::pair<Transform, SpatialInertia>>
 SpatialInertia composite(const std::vector<SpatialInertia>& parts);
 
 // m (|r|^2 1 - r r^T) = -m hat(r) hat(r): the inertia of a point mass m at r about the origin.
+// Throws std::invalid_argument naming "mass" unless m is finite and > 0.
 Eigen::Matrix3d point_inertia(double mass, const Eigen::Vector3d& r);
 // tr(C) 1 - C: the rotational inertia of a second moment of mass C = integral rho r r^T dV
-// [kg m^2] (seed 000 (4.70) written with r r^T).
+// [kg m^2] (Rigid-body notes (4.70) written with r r^T).
 Eigen::Matrix3d inertia_from_second_moment(const Eigen::Matrix3d& second_moment);
 
 }  // namespace rigiddyn

@@ -1,8 +1,8 @@
-// Planes of symmetry of a mass distribution (seed 001 "Plane of Symmetry"): a plane is one when the
+// Planes of symmetry of a mass distribution (Craig "Plane of Symmetry"): a plane is one when the
 // reflection about it maps every mass element onto one of equal mass.
 //
 // Candidates. A symmetry plane passes through the centre of mass (the reflection fixes the com) and,
-// by the seed's statement (the xy plane a symmetry plane => I_xz = I_yz = 0), the inertia about the
+// by Craig's statement (the xy plane a symmetry plane => I_xz = I_yz = 0), the inertia about the
 // com maps its normal n onto itself, I_C n = (n.I_C n) n: n is a principal axis. So with three
 // distinct principal moments the three principal axes are the only candidates. When moments
 // coincide (relative gap <= degenerate_moments_tolerance) every direction of that eigenspace E is a

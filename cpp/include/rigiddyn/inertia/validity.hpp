@@ -34,12 +34,13 @@ struct InertiaReport {
   bool mass_positive = false;                                // finite and > 0
   bool finite = false;                                       // every entry of I_C finite
   double asymmetry = 0.0;                                    // max |I - I^T| [kg m^2]
-  bool symmetric = false;                                    // asymmetry <= 1e-12 max|I|
+  double asymmetry_tolerance = 0.0;                          // 1e-12 max |I_ij| [kg m^2]
+  bool symmetric = false;                                    // asymmetry <= asymmetry_tolerance
   Eigen::Vector3d principal_moments = Eigen::Vector3d::Zero();  // ascending I0 <= I1 <= I2 [kg m^2]
   // (I1 + I2 - I0, I0 + I2 - I1, I0 + I1 - I2) [kg m^2]; the last is the smallest, the binding one.
   Eigen::Vector3d triangle_margins = Eigen::Vector3d::Zero();
   double condition_number = 0.0;  // I2 / I0 (+inf when I0 <= 0)
-  double tolerance = 0.0;         // absolute tolerance used by the two checks below [kg m^2]
+  double tolerance = 0.0;         // absolute tolerance of the two checks below [kg m^2] (not of symmetric)
   bool positive_semidefinite = false;  // I0 >= -tolerance
   bool triangle_inequality = false;    // I0 + I1 - I2 >= -tolerance
 

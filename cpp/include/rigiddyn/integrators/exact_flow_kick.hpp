@@ -47,8 +47,8 @@ void exact_free_rotation(const Euler& euler, RigidBodyCoordinates& y, double h) 
 }
 
 // kick(h/2) · exact free flow(h) · kick(h/2); returns the sum of |Δω| of the two kicks [rad/s].
-template <class Euler>
-double exact_flow_kick_step(const RigidBodyModel<Euler>& model, RigidBodyCoordinates& y, double h) {
+template <class Euler, LoadKind kind>
+double exact_flow_kick_step(const RigidBodyModel<Euler, kind>& model, RigidBodyCoordinates& y, double h) {
   double kicked = loads_kick(model, y, 0.5 * h).norm();
   free_translation(y, h);
   exact_free_rotation(model.euler(), y, h);
@@ -61,7 +61,7 @@ struct ExactFlowKick {
   static void step(const Model& model, typename Model::Coordinates& y, double h) {
     if constexpr (is_rigid_body_model_v<Model>) {
       exact_flow_kick_step(model, y, h);
-    } else {
+    } else {  // no gyroscopic term (asserted in velocity_verlet)
       velocity_verlet(model, y, h);
     }
   }
@@ -78,7 +78,7 @@ struct ExactFreeFlow {
             "method: expected a torque-free body for 'exact' (no couple), got a couple; use "
             "'exact_flow_kick' for bodies under couples");
       }
-    } else {
+    } else {  // no gyroscopic term (asserted in velocity_verlet)
       velocity_verlet(model, y, h);
     }
   }

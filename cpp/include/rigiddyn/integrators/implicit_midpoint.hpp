@@ -25,9 +25,6 @@
 // the same tolerance and cap.
 #pragma once
 #include "rigiddyn/integrators/splitting_parts.hpp"
-#include "rigiddyn/so3/skew.hpp"
-
-#include <Eigen/LU>
 
 namespace rigiddyn {
 
@@ -43,9 +40,23 @@ inline Eigen::Quaterniond midpoint_rotation(const Eigen::Vector3d& h_w) {
   return Eigen::Quaterniond((1.0 - a2) * scale, 2.0 * scale * a.x(), 2.0 * scale * a.y(), 2.0 * scale * a.z());
 }
 
+// J⁻¹ r for the Jacobian J = I + τ (ω̄^ I − (I ω̄)^) (τ = h/2) of the midpoint residual multiplied by I:
+// column j is I e_j + τ (ω̄ × I e_j − (I ω̄) × e_j); solved in closed form (solve_3x3: J = I + O(h|ω|)
+// is far from singular where the iteration converges).
+inline Eigen::Vector3d midpoint_newton_correction(const Eigen::Matrix3d& I, const Eigen::Vector3d& w_bar, double tau,
+                                                  const Eigen::Vector3d& r) {
+  const Eigen::Vector3d Iw = times_3x3(I, w_bar);
+  Eigen::Matrix3d J;
+  for (int j = 0; j < 3; ++j) {
+    const Eigen::Vector3d w_x_Ij = cross_3(w_bar, I.col(j)), Iw_x_ej = cross_3(Iw, Eigen::Vector3d::Unit(j));
+    for (int i = 0; i < 3; ++i) J(i, j) = I(i, j) + tau * (w_x_Ij(i) - Iw_x_ej(i));
+  }
+  return solve_3x3(J.row(0), J.row(1), J.row(2), r);
+}
+
 // Returns true if the Newton iteration converged within max_iterations.
-template <class Euler>
-bool implicit_midpoint_step(const RigidBodyModel<Euler>& model, RigidBodyCoordinates& y, double h) {
+template <class Euler, LoadKind kind>
+bool implicit_midpoint_step(const RigidBodyModel<Euler, kind>& model, RigidBodyCoordinates& y, double h) {
   using namespace implicit_midpoint_solver;
   const Eigen::Matrix3d I = inertia_matrix(model.euler());
   const Eigen::Quaterniond q0(Eigen::Vector4d(y.segment<4>(3)));
@@ -63,8 +74,7 @@ bool implicit_midpoint_step(const RigidBodyModel<Euler>& model, RigidBodyCoordin
     power = xi(12);
     const Eigen::Vector3d r_w = w_bar - w0 - 0.5 * h * xi.segment<3>(9);
     const Eigen::Vector3d r_v = v_bar - v0 - 0.5 * h * xi.segment<3>(6);
-    const Eigen::Matrix3d J = I + 0.5 * h * (hat(w_bar) * I - hat(I * w_bar));
-    const Eigen::Vector3d dw = J.partialPivLu().solve(I * r_w);
+    const Eigen::Vector3d dw = midpoint_newton_correction(I, w_bar, 0.5 * h, times_3x3(I, r_w));
     w_bar -= dw;
     v_bar -= r_v;
     const bool w_done = dw.norm() <= tolerance * (w_bar.norm() + h * xi.segment<3>(9).norm());
@@ -86,6 +96,9 @@ struct ImplicitMidpoint {
     if constexpr (is_rigid_body_model_v<Model>) {
       return implicit_midpoint_step(model, y, h);
     } else {  // fixed point ȳ = y0 + (h/2) f(ȳ)
+      static_assert(!has_gyroscopic_term_v<Model>,
+                    "the fixed-point midpoint branch is for models without a gyroscopic term: a model with one must "
+                    "take the rigid-body branch (Newton on the mean angular velocity)");
       using namespace implicit_midpoint_solver;
       typename Model::Coordinates mid = y;
       bool converged = false;

@@ -1,5 +1,5 @@
 // Euler's equations for the rotation of a rigid body about its centre of mass, in the three forms an
-// inertia can need (seed 001, "Equations of motion for rotation"):
+// inertia can need (Craig, "Rigid Body Dynamics" slides, "Equations of motion for rotation"):
 //   I ω̇ + ω × I ω = n        (everything in the body frame B, moments about the centre of mass)
 // - SphericalEuler: I = s 1, so ω × I ω = 0: no gyroscopic term at all;
 // - PrincipalEuler: I = diag(I1, I2, I3) (B along principal axes):
@@ -97,7 +97,7 @@ struct PrincipalEuler {
   RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d momentum(const Eigen::Vector3d& w) const {
     return Eigen::Vector3d(inertia(0) * w(0), inertia(1) * w(1), inertia(2) * w(2));
   }
-  // I1 ω̇1 = n1 + (I2 − I3) ω2 ω3, and cyclic (seed 001, Euler's equations in principal axes)
+  // I1 ω̇1 = n1 + (I2 − I3) ω2 ω3, and cyclic (Craig, "Rigid Body Dynamics" slides, Euler's equations in principal axes)
   RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d angular_acceleration(const Eigen::Vector3d& w, const Eigen::Vector3d& n) const {
     return Eigen::Vector3d(inverse_inertia(0) * (n(0) + (inertia(1) - inertia(2)) * w(1) * w(2)),
                            inverse_inertia(1) * (n(1) + (inertia(2) - inertia(0)) * w(2) * w(0)),

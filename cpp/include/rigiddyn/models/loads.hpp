@@ -2,9 +2,12 @@
 // world frame W or in the body frame B, each active on a time interval [t_start, t_end), so that a
 // list of them is a piecewise-constant schedule. Uniform gravity is separate (models add m g).
 //
-// Time discretisation (zero-order hold): `simulate` sums the loads active at the START of each step
-// and holds them constant during the step, so a switch inside a step acts from the next step on.
-// Put switch times on the step grid (t_start = k dt) for an exact piecewise-constant schedule.
+// Time discretisation: the schedule is constant between its switch times (the finite t_start and
+// t_end), and `simulate` and `step` integrate each piece with that piece's loads. A step that
+// crosses a switch time is split there into sub-steps, each taken by the same method with the loads
+// of its piece, so every method keeps its order however the switch times fall on the step grid
+// (records stay on the grid t0 + i dt). A switch within a few ulps of a grid time is taken at that
+// time (simulate/simulate.hpp), which moves it by no more than the rounding of t itself.
 #pragma once
 #include "rigiddyn/so3/integrate.hpp"  // Frame
 
@@ -41,6 +44,14 @@ ComLoads loads_at(const std::vector<AppliedLoad>& schedule, double t);
 
 // True when every load of `schedule` is active for all t >= t0 (a constant schedule from t0 on).
 bool is_constant_from(const std::vector<AppliedLoad>& schedule, double t0);
+
+// The times strictly inside (t_begin, t_end) [s] at which the sum of `schedule` may change (every
+// finite t_start and t_end there), ascending, without repeats; empty for a constant schedule.
+std::vector<double> switch_times(const std::vector<AppliedLoad>& schedule, double t_begin, double t_end);
+
+// True when some load of `schedule` acts only on a bounded part of time (a finite t_start or t_end),
+// so that its effect depends on the time at which a state is taken.
+bool has_time_window(const std::vector<AppliedLoad>& schedule);
 
 // Throws std::invalid_argument naming "loads[i]..." for a non-finite force or torque or an
 // interval with t_start >= t_end or a NaN bound.

@@ -4,7 +4,7 @@
 // on (vector space) × SO(3)^k and is stored as flat coordinates y (a fixed-size Eigen vector; unit
 // quaternions stored (x, y, z, w) inside it); the last coordinate of every model is the work [J]
 // done by the applied loads (gravity included) since the start, integrated alongside the motion
-// (dW/dt = power), so the work-energy equation T2 − T1 = U12 (seed 001) can be checked on any run.
+// (dW/dt = power), so the work-energy equation T2 − T1 = U12 (Craig, "Rigid Body Dynamics" slides) can be checked on any run.
 //
 //   using Coordinates, Tangent;               Eigen::Matrix<double, nq, 1>, Eigen::Matrix<double, nv, 1>
 //   Coordinates rate(y)                       ẏ in coordinates (quaternion rate q̇ = ½ q ⊗ (ω_B, 0)),
@@ -22,13 +22,27 @@
 //   void drift(y, h)                          positions and attitudes (and work) moved over h with
 //                                             the current velocities
 //   RecordedState record(y)                   a uniform description for simulate's recorder
+// and states, next to its definition, whether its equations carry Euler's gyroscopic term
+// (has_gyroscopic_term below): the structure-preserving methods may fall back to a plain
+// kick-drift form only for models without one.
 #pragma once
 #include "rigiddyn/always_inline.hpp"  // RIGIDDYN_ALWAYS_INLINE, for every model and integrator function
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <type_traits>
+
 namespace rigiddyn {
+
+// True for a model whose equations of motion contain Euler's gyroscopic term ω × I ω (the spatial
+// rigid body, in every Euler form and under every LoadKind), false for one without it (particle,
+// planar body). Deliberately left undefined here: every model specialises it next to its own
+// definition, so a method asking about a model that has not said fails to compile.
+template <class Model>
+struct has_gyroscopic_term;
+template <class Model>
+inline constexpr bool has_gyroscopic_term_v = has_gyroscopic_term<Model>::value;
 
 // What simulate records of any model, in the rigid-body layout (a particle has q = identity and
 // ω = 0; a planar body lives in the xy plane of W and turns about z).

@@ -1,4 +1,4 @@
-// The particle (point mass, 3 DOF; seed 000 §4.11): m p̈_W = f_W + m g_W.
+// The particle (point mass, 3 DOF; "Rigid body kinematics and dynamics" notes, §4.11): m p̈_W = f_W + m g_W.
 // A particle has no attitude: loads given in the "body" frame are taken as world-frame forces, and
 // couples are rejected by simulate (they would do nothing).
 #pragma once
@@ -82,5 +82,9 @@ class ParticleModel {
   Eigen::Vector3d g_W_;
   Eigen::Vector3d f_W_;  // total force in W during the step, gravity included [N]
 };
+
+// a point mass has no attitude, hence no gyroscopic term (model_interface.hpp)
+template <>
+struct has_gyroscopic_term<ParticleModel> : std::false_type {};
 
 }  // namespace rigiddyn

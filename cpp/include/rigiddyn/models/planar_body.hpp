@@ -1,4 +1,4 @@
-// The planar rigid body (3 DOF: x, y, θ in the xy plane of W; seed 001 "plane kinetics"):
+// The planar rigid body (3 DOF: x, y, θ in the xy plane of W; Craig, "Rigid Body Dynamics" slides, "plane kinetics"):
 //   m a_G = Σ f (in the plane),  I_zz α = Σ n_z (moments about the centre of mass G).
 // There is no gyroscopic term in plane motion. Body frame B turns about z by θ: R_WB = Rz(θ).
 #pragma once
@@ -109,5 +109,9 @@ class PlanarBodyModel {
   double n_;                   // couple about z [N m]
   bool turning_force_;
 };
+
+// plane motion turns about a fixed axis: ω × I ω = 0, no gyroscopic term (model_interface.hpp)
+template <>
+struct has_gyroscopic_term<PlanarBodyModel> : std::false_type {};
 
 }  // namespace rigiddyn

@@ -2,7 +2,7 @@
 // integrator model RigidBodyModel<Euler> (see model_interface.hpp), templated on the form of
 // Euler's equations (euler_equations.hpp) so that a sphere pays nothing for the gyroscopic term.
 //
-// Equations of motion (seed 001, Newton–Euler about the centre of mass G):
+// Equations of motion (Craig, "Rigid Body Dynamics" slides, Newton–Euler about the centre of mass G):
 //   ṗ_W = v_W,  q̇_WB = ½ q_WB ⊗ (ω_B, 0),  m v̇_W = f_W + m g_W,  I ω̇_B + ω_B × I ω_B = n_B.
 #pragma once
 #include "rigiddyn/check.hpp"  // format_value
@@ -158,8 +158,8 @@ class RigidBodyModel {
     const Eigen::Vector3d alpha_B = euler_.angular_acceleration(w, n_B);
     Coordinates dy;
     for (int i = 0; i < 3; ++i) dy[i] = v[i], dy[7 + i] = inverse_mass_ * f_W[i], dy[10 + i] = alpha_B[i];
-    // quaternion kinematics q̇ = ½ q ⊗ (ω_B, 0) (seed 000, body-frame angular velocity), the Hamilton
-    // product written out
+    // quaternion kinematics q̇ = ½ q ⊗ (ω_B, 0) ("Rigid body kinematics and dynamics" notes,
+    // body-frame angular velocity), the Hamilton product written out
     dy(3) = 0.5 * (q.w() * w.x() + q.y() * w.z() - q.z() * w.y());
     dy(4) = 0.5 * (q.w() * w.y() + q.z() * w.x() - q.x() * w.z());
     dy(5) = 0.5 * (q.w() * w.z() + q.x() * w.y() - q.y() * w.x());
@@ -297,7 +297,7 @@ class RigidBodyModel {
     out[3] = s * e.w() - x * e.x() - y * e.y() - z * e.z();
   }
 
-  // dW/dt = f_W · v_W + n_B · ω_B [W] (seed 001, power of a force at G and a couple)
+  // dW/dt = f_W · v_W + n_B · ω_B [W] (Craig, "Rigid Body Dynamics" slides, power of a force at G and a couple)
   RIGIDDYN_ALWAYS_INLINE double power(const Eigen::Vector3d& f_W, const Eigen::Vector3d& n_B, const Eigen::Vector3d& v,
                                       const Eigen::Vector3d& w) const {
     if constexpr (kind == LoadKind::none) return 0.0;  // a free body does no work and pays nothing for it
@@ -312,5 +312,10 @@ class RigidBodyModel {
   Eigen::Vector3d f_fixed_W_;  // f_W + m g_W
   bool turning_loads_;         // f_B or n_W non-zero (only LoadKind::turning reads it)
 };
+
+// Euler's equations, I ω̇ + ω × I ω = n_B, in every form and under every LoadKind (for a sphere the
+// term vanishes, but the model is still the spatial body: model_interface.hpp)
+template <class Euler, LoadKind kind>
+struct has_gyroscopic_term<RigidBodyModel<Euler, kind>> : std::true_type {};
 
 }  // namespace rigiddyn

@@ -2,10 +2,10 @@
 // diagnostics. Usable from C++ directly; the Python binding releases the GIL around it.
 //
 // The method is chosen once (visit_method) and the Euler-equation form once (with_euler_form);
-// the loop below them is compiled per (model, method). Loads: see models/loads.hpp (held
-// constant over each step, evaluated at its start). The work of all loads and gravity is
+// the loop below them is compiled per (model, method). Loads: see models/loads.hpp (piecewise
+// constant; a step that crosses a switch time is split there). The work of all loads and gravity is
 // integrated with the motion by the same method, so T(t) − T(t0) = work(t) up to the method's
-// error (seed 001 work–energy principle, T2 − T1 = U12).
+// error (work–energy principle T2 − T1 = U12, Craig, "Rigid Body Dynamics" slides).
 #pragma once
 #include "rigiddyn/integrators/method.hpp"
 #include "rigiddyn/models/loads.hpp"
@@ -16,6 +16,7 @@
 #include <Eigen/Core>
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace rigiddyn {
@@ -31,7 +32,21 @@ struct SimulationOptions {
   double t0 = 0.0;                   // initial time [s] (load schedules refer to it)
   std::vector<AppliedLoad> loads;    // applied loads (models/loads.hpp)
   Eigen::Vector3d gravity_W = Eigen::Vector3d::Zero();  // uniform gravity [m/s²]; zero = none
+  // Called by simulate from the stepping thread every monitor_interval_steps steps with the number
+  // of steps done (a progress report, an interrupt check); returning true stops the run, which then
+  // returns its records so far with Trajectory::interrupted set. Empty: never called.
+  std::function<bool(std::int64_t steps_done)> monitor;
 };
+
+// Steps between two calls of SimulationOptions::monitor: many enough that a call costs nothing per
+// step, few enough that a run answers within milliseconds (4096 steps of the slowest method, ~1 µs
+// each).
+inline constexpr std::int64_t monitor_interval_steps = 4096;
+
+// The bytes a Trajectory of `steps` steps recorded every `record_every`-th holds (an upper bound:
+// steps / record_every + 2 records of 19 doubles each). simulate refuses a recording larger than
+// the memory available (std::invalid_argument naming record_every, with both figures).
+double recording_bytes(std::int64_t steps, std::int64_t record_every);
 
 // Records, one row per recorded step, row-major (n = size()):
 struct Trajectory {
@@ -46,6 +61,7 @@ struct Trajectory {
   std::vector<double> quaternion_norm_error;  // (n,) |q| − 1
   std::vector<double> work;                   // (n,) work of loads and gravity since t0 [J]
   bool diverged = false;                      // the state became non-finite; the run stopped there
+  bool interrupted = false;                   // options.monitor returned true; the run stopped there
   std::int64_t unconverged_steps = 0;         // steps whose implicit solve stopped at its iteration cap
                                               // (implicit_midpoint; always 0 for explicit methods)
   double elapsed_seconds = 0.0;               // wall time of the stepping loop (for benchmarks)
@@ -54,14 +70,18 @@ struct Trajectory {
 };
 
 // Throws std::invalid_argument naming the argument for dt <= 0, steps < 0, record_every < 1,
-// non-finite t0 or gravity, a bad state or load, and (particle, planar body) loads the model
-// cannot take (couples on a particle; out-of-plane forces, gravity or in-plane couples).
+// non-finite t0 or gravity, a bad state or load, a recording larger than the available memory
+// (record_every), and (particle, planar body) loads the model cannot take (couples on a particle;
+// out-of-plane forces, gravity or in-plane couples).
 Trajectory simulate(const RigidBody& body, const RigidBodyState& initial, const SimulationOptions& options);
 Trajectory simulate(const Particle& particle, const ParticleState& initial, const SimulationOptions& options);
 Trajectory simulate(const PlanarBody& body, const PlanarBodyState& initial, const SimulationOptions& options);
 
-// One step of `options.method` from `state` at time options.t0 with step options.dt (options.steps
-// and record_every are ignored). Same checks as simulate.
+// One step of `options.method` from `state` at time t = options.t0 [s] to t + options.dt: the state
+// at t + dt. Split at the switch times of options.loads inside (t, t + dt) as in simulate, so that
+// step after step from t0 follows simulate's records (up to the normalisation of q and the rounding of
+// t + dt against t0 + i dt); options.steps, record_every and monitor are ignored. Same checks as
+// simulate.
 RigidBodyState step(const RigidBody& body, const RigidBodyState& state, const SimulationOptions& options);
 ParticleState step(const Particle& particle, const ParticleState& state, const SimulationOptions& options);
 PlanarBodyState step(const PlanarBody& body, const PlanarBodyState& state, const SimulationOptions& options);

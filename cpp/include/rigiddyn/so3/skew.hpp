@@ -1,5 +1,5 @@
 // The skew-symmetric ("hat") matrix of a 3-vector and its inverse ("vee"):
-// hat(v) x = v × x for every x (the cross-product matrix, seed 001 / any mechanics text).
+// hat(v) x = v × x for every x (the cross-product matrix, Craig / any mechanics text).
 #pragma once
 #include <Eigen/Core>
 

@@ -1,4 +1,4 @@
-// The screw of a twist: its instantaneous screw axis (ISA, seed 000 §4.10-4.11; Chasles/Mozzi).
+// The screw of a twist: its instantaneous screw axis (ISA, Rigid-body notes §4.10-4.11; Chasles/Mozzi).
 // A twist [w; v] (expressed in a frame A, v at A's origin) equals a rotation at angular speed |w|
 // about the line {point + t direction} plus a translation pitch*|w| along it:
 //   direction = w/|w|, point = (w x v)/|w|^2 (the point of the axis closest to A's origin),

@@ -1,0 +1,525 @@
+"""Hypothesis strategies that draw call specs (see api_model) for every target of the public API.
+
+Each argument is either *plausible* (what its annotation, its name and the docstring's shapes suggest:
+unit quaternions, rotations, symmetric positive inertias, method names, objects built by the API's own
+constructors and factories, each possibly scaled by a magnitude from 1e-323 to 1e308) or *wild* (any
+type; arrays of random shape, dtype (float64/32/16, int, bool, complex, object, big-endian) and layout
+(Fortran, reversed, strided, unaligned); magnitudes log-uniform from 1e-323 to 1e308 of both signs,
+NaN, inf, subnormals, the largest double; empty and 0-d arrays; read-only broadcast views with up to
+1e12 rows). A call has all arguments plausible (half the calls), exactly one wild, or each wild by a coin flip;
+shrinking moves toward plausible values and omitted optional arguments, so a reproducer keeps only
+what makes it fail.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+import re
+
+import numpy as np
+from hypothesis import strategies as st
+from hypothesis.extra import numpy as hnp
+
+from api_model import Param, Target
+
+OMIT = object()  # an optional argument left out
+MAX_DEPTH = 3  # nesting of objects built to be passed to (or called as `self` of) a target
+
+NAN, INF = float("nan"), float("inf")
+
+# ---------------------------------------------------------------------------------------------
+# numbers
+
+SIGN = st.sampled_from([1.0, -1.0])
+# log-uniform magnitudes over the whole double range, 1e-323 (subnormal) .. 1e308, of both signs
+# (shrinks to 1.0); the boundary values themselves, where scalings overflow or underflow
+EXTREME = st.builds(lambda s, m, e: s * m * 10.0**e, SIGN, st.floats(1.0, 10.0, exclude_max=True), st.integers(-323, 307))
+POSITIVE_EXTREME = st.builds(lambda m, e: m * 10.0**e, st.floats(1.0, 10.0, exclude_max=True), st.integers(-323, 307))
+POSITIVE_BOUNDARY = st.sampled_from([1e300, 1e306, 1.7976931348623157e308, 1e-300, 2.2250738585072014e-308, 5e-324,
+                                     1e154, 1e-154])
+MODERATE = st.builds(lambda m, e: m * 10.0**e, st.floats(1.0, 10.0, exclude_max=True), st.integers(-3, 3))
+SPECIAL = st.one_of(st.sampled_from([NAN, INF, -INF, 0.0, -0.0, 2.0**53 + 2.0]), POSITIVE_BOUNDARY,
+                    POSITIVE_BOUNDARY.map(lambda x: -x))
+FLOATS = st.one_of(MODERATE, EXTREME, SPECIAL)
+UNIT_INTERVAL = st.floats(0.0, 1.0)
+PLAIN = st.one_of(st.floats(-10.0, 10.0), MODERATE)
+PLAUSIBLE_FLOAT = st.one_of(MODERATE, st.sampled_from([0.0, 1.0, 0.5, 0.1, 2.0]), UNIT_INTERVAL,
+                            st.floats(-10.0, 10.0), POSITIVE_EXTREME, POSITIVE_BOUNDARY)
+POSITIVE_FLOAT = st.one_of(MODERATE, st.sampled_from([1.0, 0.5, 2.0]), POSITIVE_EXTREME, POSITIVE_BOUNDARY)
+INTS = st.one_of(st.integers(-3, 20),
+                 st.sampled_from([2**31 - 1, 2**31, 2**32, 2**53 + 1, 2**63 - 1, 2**63, 2**64, -2**63, -2**63 - 1, 10**30]),
+                 st.builds(lambda s, e: int(s) * 10**e, SIGN, st.integers(0, 25)))
+SMALL_INT = st.integers(0, 30)
+COMPLEX = st.builds(complex, FLOATS, FLOATS)
+NUMPY_SCALAR = st.one_of(st.builds(np.float32, FLOATS), st.builds(np.float64, FLOATS), st.builds(np.float16, FLOATS),
+                         st.builds(np.int64, st.integers(-2**63, 2**63 - 1)), st.builds(np.bool_, st.booleans()))
+# strings stay inside the worker's scratch directory when used as paths: no separator
+SAFE_TEXT = st.text(alphabet=st.characters(blacklist_characters="/\\", blacklist_categories=("Cs",)), max_size=10)
+
+
+def lit(strategy):
+    return strategy.map(lambda v: ("lit", v))
+
+
+# ---------------------------------------------------------------------------------------------
+# arrays
+
+COMMON_SHAPES = [(), (0,), (1,), (2,), (3,), (4,), (6,), (3, 3), (4, 4), (6, 6), (2, 3), (2, 4), (0, 3), (0, 4),
+                 (3, 4), (2, 3, 3), (0, 3, 3), (1, 1, 3), (3, 0)]
+SHAPES = st.one_of(st.sampled_from(COMMON_SHAPES), hnp.array_shapes(min_dims=0, max_dims=4, min_side=0, max_side=4))
+DTYPES = ["<f8", "<f4", "<f2", ">f8", "<i8", "<i4", "|u1", "|b1", "<c16", "|O"]
+HUGE_ROWS = [10**5, 10**10, 10**12]  # 1e5 can be copied within the worker's memory limit; the others cannot
+
+
+def _cast(a: np.ndarray, dtype: str) -> np.ndarray:
+    with np.errstate(all="ignore"):
+        return a.astype(dtype)
+
+
+@functools.lru_cache(maxsize=None)
+def _floats_array(shape, elements=None):
+    return hnp.arrays(np.float64, shape, elements=FLOATS if elements is None else elements)
+
+
+@st.composite
+def wild_array(draw, shapes=SHAPES):
+    shape = draw(shapes)
+    dtype = draw(st.sampled_from(DTYPES))
+    kind = np.dtype(dtype).kind
+    if kind == "f":
+        a = _cast(draw(_floats_array(shape)), dtype)
+    elif kind in "iu":
+        a = _cast(draw(hnp.arrays(np.int64, shape, elements=st.one_of(st.integers(-3, 10), st.integers(-2**63, 2**63 - 1)))),
+                  dtype)
+    elif kind == "b":
+        a = draw(hnp.arrays(np.bool_, shape))
+    elif kind == "c":
+        a = np.empty(shape, dtype=complex)
+        a.real, a.imag = draw(_floats_array(shape)), draw(_floats_array(shape))
+    else:
+        a = np.empty(shape, dtype=object)
+        items = draw(st.lists(st.one_of(FLOATS, st.integers(-3, 3), SAFE_TEXT, st.none()), min_size=a.size, max_size=a.size))
+        for i, item in enumerate(items):
+            a.flat[i] = item
+    return ("array", a)
+
+
+LAYOUTS = st.sampled_from(["c", "c", "c", "fortran", "reversed", "strided", "unaligned"])
+
+
+def laid_out(arrays):
+    """An array spec possibly re-laid out (reversed and strided need a first axis)."""
+
+    def wrap(spec_layout):
+        spec, layout = spec_layout
+        if layout == "c" or (layout in ("reversed", "strided") and spec[1].ndim == 0) or (
+                layout == "unaligned" and spec[1].dtype.hasobject):
+            return spec
+        return ("layout", layout, spec)
+
+    return st.tuples(arrays, LAYOUTS).map(wrap)
+
+
+def huge(items):
+    """np.broadcast_to(item, (rows,) + item.shape): a read-only view of a batch of `rows` copies."""
+    return st.tuples(items, st.sampled_from(HUGE_ROWS)).map(lambda ir: ("broadcast", ir[0][1], (ir[1],) + ir[0][1].shape))
+
+
+@functools.lru_cache(maxsize=None)
+def _components(n, low, high):
+    return st.lists(st.floats(low, high), min_size=n, max_size=n)
+
+
+def _unit_quaternions(draw, batch):
+    q = np.array(draw(_components(4 * math.prod(batch), -1.0, 1.0)), dtype=float).reshape(batch + (4,))
+    norm = np.linalg.norm(q, axis=-1, keepdims=True)
+    q = np.where(norm > 1e-3, q / np.where(norm > 0, norm, 1.0), np.array([0.0, 0.0, 0.0, 1.0]))
+    return q
+
+
+def _rotations(q):
+    x, y, z, w = np.moveaxis(q, -1, 0)
+    return np.stack([np.stack([1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)], -1),
+                     np.stack([2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)], -1),
+                     np.stack([2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)], -1)], -2)
+
+
+@st.composite
+def quaternions(draw, batch=()):
+    return _unit_quaternions(draw, batch)
+
+
+@st.composite
+def rotations(draw, batch=()):
+    return _rotations(_unit_quaternions(draw, batch))
+
+
+@st.composite
+def inertias(draw, batch=()):
+    """Symmetric positive definite inertias about the centre of mass, R diag(I) R^T with the triangle
+    inequality (a box's moments) or sometimes a sphere's."""
+    n = math.prod(batch)
+    sides = np.array(draw(_components(3 * n, 0.05, 5.0))).reshape(batch + (3,))
+    s2 = sides**2
+    moments = np.stack([s2[..., 1] + s2[..., 2], s2[..., 0] + s2[..., 2], s2[..., 0] + s2[..., 1]], -1) / 12.0
+    R = _rotations(_unit_quaternions(draw, batch)) if draw(st.booleans()) else np.broadcast_to(np.eye(3), batch + (3, 3))
+    inertia = R @ (moments[..., :, None] * np.swapaxes(R, -1, -2))
+    return (inertia + np.swapaxes(inertia, -1, -2)) / 2
+
+
+def scaled(values):
+    """Plausible values times a magnitude (3 in 5 times 1, else log-uniform over the double range or a
+    boundary value)."""
+    return st.tuples(values, st.one_of(st.just(1.0), st.just(1.0), st.just(1.0), POSITIVE_EXTREME, POSITIVE_BOUNDARY)).map(
+        lambda vs: vs[0] * vs[1] if vs[1] != 1.0 else vs[0])
+
+
+def _batch(shape):
+    return st.sampled_from([(), (1,), (2,), (3,), (0,)]) if shape is None else st.just(shape)
+
+
+@functools.lru_cache(maxsize=None)
+def plausible_array_for_shape(shape):
+    """Values for a shape read from a docstring ('n' is a batch of 0 to 3)."""
+    batch_dims = tuple(d for d in shape if d == "n")
+
+    @st.composite
+    def draw_it(draw):
+        sizes = {d: draw(st.integers(0, 3)) for d in batch_dims}
+        concrete = tuple(sizes.get(d, d) if d == "n" else d for d in shape)
+        if concrete and concrete[-1] == 4 and draw(st.booleans()):
+            return _unit_quaternions(draw, concrete[:-1])
+        if concrete[-2:] == (3, 3):
+            which = draw(st.sampled_from(["rotation", "inertia", "any"]))
+            if which == "rotation":
+                return _rotations(_unit_quaternions(draw, concrete[:-2]))
+            if which == "inertia":
+                return draw(inertias(concrete[:-2]))
+        return draw(_floats_array(concrete, PLAIN))
+
+    return draw_it()
+
+
+def array_spec(values):
+    return laid_out(scaled(values).map(lambda a: ("array", np.asarray(a, dtype=float))))
+
+
+SHAPE_PATTERN = re.compile(r"\((?:\d+|n)(?:,\s*(?:\d+|n))*,?\)")
+
+
+def _shape_of(text: str):
+    return tuple(int(d) if d.isdigit() else "n" for d in re.findall(r"\d+|n", text))
+
+
+MONOGRAM = re.compile(r"_[A-Z]")  # p_FQ_F, w_B, R_PF: a vector or a matrix (docs/conventions.md)
+
+
+def doc_shapes(doc: str, name: str) -> tuple[list[tuple], bool]:
+    """Shapes the docstring gives for argument `name` ("q: (4,) or (n, 4)"), else every shape it names;
+    and whether `name` is known to be an array (a shape follows it in the docstring, or it is a
+    monogram name); if not, it may as well be a number."""
+    near = []
+    for m in re.finditer(rf"\b{re.escape(name)}\b", doc):
+        near += [_shape_of(s) for s in SHAPE_PATTERN.findall(doc[m.end():m.end() + 40])]
+    shapes = near or [_shape_of(s) for s in SHAPE_PATTERN.findall(doc)]
+    shapes = list(dict.fromkeys(s for s in shapes if len(s) <= 3)) or [(3,)]
+    return shapes, bool(near) or bool(MONOGRAM.search(name))
+
+
+# ---------------------------------------------------------------------------------------------
+# the model's vocabulary (hints by argument name; the annotation-based strategies apply as well)
+
+EULER_SEQUENCES = ["xyz", "ZYX", "zxz", "XYX", "yzy", "xyx", "ZXZ", "xYz", "xy", "xyzz", "abc", ""]
+FRAMES = ["world", "body", "A", "B"]
+MEASURES = ["final_attitude_error", "max_state_error", "energy_drift", "momentum_drift"]
+BOX_VERTICES = np.array([[x, y, z] for x in (-0.5, 0.5) for y in (-0.5, 0.5) for z in (-0.5, 0.5)])
+BOX_FACES = np.array([[0, 1, 3], [0, 3, 2], [4, 6, 7], [4, 7, 5], [0, 4, 5], [0, 5, 1], [2, 3, 7], [2, 7, 6],
+                      [0, 2, 6], [0, 6, 4], [1, 5, 7], [1, 7, 3]])
+TETRAHEDRON = np.array([[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]])
+
+
+class Strategies:
+    """Strategies for the targets of one module."""
+
+    def __init__(self, module, targets: list[Target], words: list[str]):
+        self.module = module
+        self.targets = targets
+        self.classes = [n for n in module.__all__ if isinstance(getattr(module, n), type)
+                        and not issubclass(getattr(module, n), BaseException)]
+        self.words = sorted(set(words)) or ["x"]
+        self._objects: dict[tuple[str, int], st.SearchStrategy] = {}
+        self.hints, self.untyped_hints = self._hints()
+
+    # -- types named in annotations
+    def _class_in(self, annotation: str) -> str | None:
+        name = annotation.strip().strip("'\"").split(".")[-1]
+        return name if name in self.classes else None
+
+    def _producers(self, cls: str) -> list[tuple[Target, tuple[Param, ...]]]:
+        out = []
+        for t in self.targets:
+            for params, ret in zip(t.overloads, t.returns):
+                if t.path == cls or self._class_in(ret) == cls:
+                    out.append((t, params))
+        return out
+
+    def objects(self, cls: str, depth: int) -> st.SearchStrategy:
+        """Instances of `cls` made by the API itself (constructors, factories, methods returning one),
+        with plausible arguments; a constructed object may get a few of its mutating methods called."""
+        key = (cls, depth)
+        if cls not in self.classes:
+            return st.nothing()
+        if key not in self._objects:
+            self._objects[key] = st.deferred(lambda: self._objects_now(cls, depth))
+        return self._objects[key]
+
+    def _objects_now(self, cls: str, depth: int) -> st.SearchStrategy:
+        if depth > MAX_DEPTH:
+            return st.nothing()
+        made = [self._call(t, params, depth, wild=False) for t, params in self._producers(cls)]
+        if not made:
+            return st.nothing()
+        made = st.one_of(*made)
+        mutators = [t for t in self.targets if t.owner == cls and all(r == "None" for r in t.returns)
+                    and not t.path.split(".")[-1].startswith("_")]
+        if not mutators:
+            return made
+        step = st.sampled_from(mutators).flatmap(
+            lambda t: st.sampled_from(t.overloads).flatmap(
+                lambda params: self.arguments(params, t.doc, depth + 1, False, cls).map(
+                    lambda a: (t.path.split(".")[-1], a[0], a[1]))))
+        return st.one_of(made, st.tuples(made, st.lists(step, min_size=1, max_size=3)).map(
+            lambda ms: ("chain", ms[0], ms[1])))
+
+    def _call(self, t: Target, params, depth: int, wild: bool):
+        args = self.arguments(params, t.doc, depth + 1, wild, t.owner)
+        if t.owner is None:
+            return args.map(lambda a: ("call", t.path, a[0], a[1]))
+        method = t.path.split(".")[-1]
+        return st.tuples(self.objects(t.owner, depth + 1), args).map(
+            lambda sa: ("method", sa[0], method, sa[1][0], sa[1][1]))
+
+    @functools.lru_cache(maxsize=None)
+    def call(self, t: Target) -> st.SearchStrategy:
+        """A top-level call of target t (arguments plausible and wild)."""
+        return st.one_of(*[self._call(t, params, 0, wild=True) for params in t.overloads])
+
+    # -- arguments
+    @functools.lru_cache(maxsize=None)
+    def arguments(self, params, doc: str, depth: int, wild: bool, owner: str | None = None):
+        """(args, kwargs) for one overload; `owner`: the class whose method takes them, if any."""
+        plausible = [self.plausible(p, doc, depth, owner) for p in params]
+        wild_value = self.wild(depth)
+
+        @st.composite
+        def draw_args(draw):
+            mode = draw(st.sampled_from(("plausible", "plausible", "one_wild", "mixed"))) if wild and params else "plausible"
+            wild_index = draw(st.integers(0, len(params) - 1)) if mode == "one_wild" else -1
+            values = []
+            for i, p in enumerate(params):
+                is_wild = draw(st.booleans()) if mode == "mixed" else i == wild_index
+                if p.optional and not is_wild and not draw(st.booleans()):
+                    values.append(OMIT)
+                else:
+                    values.append(draw(wild_value if is_wild else plausible[i]))
+            return _assemble(params, values)
+
+        return draw_args()
+
+    @functools.lru_cache(maxsize=None)
+    def plausible(self, p: Param, doc: str, depth: int, owner: str | None = None) -> st.SearchStrategy:
+        hints = self.hints + (self.untyped_hints if p.annotation in ("", "object", "typing.Any") else [])
+        options = [make(self, p, doc, depth) for pattern, make in hints if pattern.fullmatch(p.name)]
+        # a name hint is better knowledge than an untyped signature; a typed one adds to it
+        if not options or p.annotation not in ("", "object", "typing.Any"):
+            options.append(self.by_annotation(p.annotation, p.name, doc, depth))
+        if owner is not None and p.name in ("other", "arg0"):  # the other operand of a binary operation
+            options.append(self.objects(owner, depth + 1))
+        return st.one_of(*options)
+
+    @functools.lru_cache(maxsize=None)
+    def by_annotation(self, annotation: str, name: str, doc: str, depth: int) -> st.SearchStrategy:
+        parts = [a.strip() for a in annotation.split("|")] if annotation else ["object"]
+        options = []
+        for a in parts:
+            cls = self._class_in(a)
+            low = a.lower()
+            if "callable" in low:
+                options.append(self.callables(doc, depth))
+            elif cls is not None:
+                options.append(self.objects(cls, depth))
+            elif "supportsfloat" in low or low == "float":
+                options.append(lit(PLAUSIBLE_FLOAT))
+            elif "supportsint" in low or "supportsindex" in low or low == "int":
+                if "supportsfloat" not in annotation.lower():
+                    options.append(lit(SMALL_INT))
+            elif low == "bool":
+                options.append(lit(st.booleans()))
+            elif low in ("str", "path"):
+                options.append(lit(st.sampled_from(self.words)))
+            elif low == "none":
+                options.append(lit(st.none()))
+            elif low.startswith(("sequence", "collections.abc.sequence", "list", "iterable", "collections.abc.iterable",
+                                 "tuple")):
+                options.append(st.lists(self.plausible_array(name, doc), max_size=3).map(lambda xs: ("list", xs)))
+            elif low.startswith(("mapping", "dict")):
+                options.append(lit(st.just({})))
+            else:
+                options.append(self.plausible_array(name, doc))
+        return st.one_of(*options)
+
+    @functools.lru_cache(maxsize=None)
+    def plausible_array(self, name: str, doc: str) -> st.SearchStrategy:
+        shapes, named = doc_shapes(doc, name)
+        values = st.sampled_from(shapes).flatmap(plausible_array_for_shape)
+        singles = [s for s in shapes if "n" not in s]
+        as_list = values.map(lambda a: ("lit", a.tolist()))
+        options = [array_spec(values), array_spec(values), array_spec(values), as_list]
+        if not named:
+            options.insert(0, lit(PLAUSIBLE_FLOAT))
+        if singles:  # a huge read-only batch of one valid item
+            options.append(huge(st.sampled_from(singles).flatmap(plausible_array_for_shape).map(
+                lambda a: ("array", np.asarray(a, float)))))
+        return st.one_of(*options)
+
+    @functools.lru_cache(maxsize=None)
+    def callables(self, doc: str, depth: int) -> st.SearchStrategy:
+        """Callables returning a fixed value: a plausible number, or an object of a class the
+        docstring names, or anything."""
+        returned = [lit(PLAUSIBLE_FLOAT)]
+        returned += [self.objects(c, depth + 1) for c in self.classes if re.search(rf"\b{c}\b", doc)]
+        returned.append(self.wild(depth + 1))
+        return st.one_of(*returned).map(lambda v: ("lambda", v))
+
+    @functools.lru_cache(maxsize=None)
+    def wild(self, depth: int) -> st.SearchStrategy:
+        scalars = lit(st.one_of(FLOATS, FLOATS, INTS, st.booleans(), COMPLEX, NUMPY_SCALAR, st.none()))
+        options = [
+            laid_out(wild_array()),
+            scalars,
+            laid_out(wild_array()),
+            scalars,
+            lit(st.one_of(SAFE_TEXT, st.sampled_from(self.words))),
+            lit(st.lists(FLOATS, max_size=5)),
+            lit(st.lists(st.lists(FLOATS, max_size=4), max_size=4)),  # ragged
+            huge(wild_array(st.sampled_from([(), (3,), (4,), (3, 3)]))),
+            lit(st.just({})),
+        ]
+        if depth < MAX_DEPTH:
+            options.append(st.sampled_from(self.classes).flatmap(lambda c: self.objects(c, depth + 1)))
+            options.append(st.deferred(lambda: self.wild(depth + 1)).map(lambda v: ("lambda", v)))
+        return st.one_of(*options)
+
+    # -- hints by argument name
+    def _hints(self):
+        words = lambda ws: lambda s, p, doc, depth: lit(st.sampled_from(ws))  # noqa: E731
+        arr = lambda values: lambda s, p, doc, depth: array_spec(values)  # noqa: E731
+        method_names = _method_names(self.module)
+
+        def obj(*classes):
+            return lambda s, p, doc, depth: st.one_of(*[s.objects(c, depth + 1) for c in classes])
+
+        def returning(*classes):
+            return lambda s, p, doc, depth: st.one_of(
+                lit(PLAUSIBLE_FLOAT), *[s.objects(c, depth + 1) for c in classes]).map(lambda v: ("lambda", v))
+
+        # for arguments the signature leaves untyped (object): objects, by the monogram and noun names
+        # of docs/conventions.md
+        untyped = [
+            (r"K_[A-Za-z]+", obj("FrameKinematics")),
+            (r"X_[A-Za-z]+", obj("Transform")),
+            (r"motion", obj("FrameMotion")),
+            (r"spatial_vector", obj("Motion", "Force")),
+            (r"twist|m", obj("Motion")),
+            (r"f", obj("Force")),
+            (r"screw", obj("Screw")),
+            (r"check", obj("InertiaCheck")),
+            (r"part", obj("SpatialInertia")),
+            (r"body|model", obj("RigidBody", "Particle", "PlanarBody")),
+            (r"state|initial", obj("RigidBodyState", "ParticleState", "PlanarBodyState")),
+            (r"rho", returning()),
+            (r"kinematics_at", returning("FrameKinematics")),
+        ]
+        table = [
+            (r"scalar_first|require_triangle_inequality|progress", lambda s, p, doc, depth: lit(st.booleans())),
+            (r"q|q\d|q_[A-Za-z]+|quat", arr(_batch(None).flatmap(quaternions))),
+            (r"R|R_[A-Za-z0-9]+", arr(_batch(None).flatmap(rotations))),
+            (r"rotation", lambda s, p, doc, depth: st.one_of(
+                array_spec(rotations()), quaternions().map(lambda q: ("scipy_rotation", ("array", q))))),
+            (r"inertia\w*", arr(_batch(None).flatmap(inertias))),
+            (r"masses", arr(st.lists(st.floats(0.1, 10.0), min_size=1, max_size=5).map(np.array))),
+            (r"mass|density|\w*radius|length|height|size_[xy]|inertia_zz|horizon|magnitude|scale|tolerance|prec|rate",
+             lambda s, p, doc, depth: lit(POSITIVE_FLOAT)),
+            (r"size|semi_axes", arr(st.lists(st.floats(0.05, 5.0), min_size=3, max_size=3).map(np.array))),
+            (r"dt", lambda s, p, doc, depth: lit(st.sampled_from([1e-3, 1e-2, 0.05, 1e-4]))),
+            (r"dts", lambda s, p, doc, depth: lit(st.lists(st.sampled_from([1e-3, 2e-3, 1e-2, 0.05]), min_size=1, max_size=3))),
+            (r"steps|record_every|samples|order|subdivisions|max_reference_steps|n_vertices",
+             lambda s, p, doc, depth: lit(st.integers(0, 60))),
+            (r"t|t0|t_start|t_end|u", lambda s, p, doc, depth: st.one_of(lit(PLAUSIBLE_FLOAT), s.plausible_array(p.name, doc))),
+            (r"seq", words(EULER_SEQUENCES)),
+            (r"method", words(method_names or ["rk4"])),
+            (r"methods", lambda s, p, doc, depth: lit(st.lists(st.sampled_from(method_names or ["rk4"]), max_size=3))),
+            (r"frame|relative_to|expressed_in|from_frame|to_frame|parent|name", words(FRAMES)),
+            (r"measure", words(MEASURES)),
+            (r"cost", words(["time", "evaluations"])),
+            (r"problem|path_or_name", words(_examples())),
+            (r"vertices", lambda s, p, doc, depth: array_spec(st.sampled_from([BOX_VERTICES, TETRAHEDRON]))),
+            (r"faces", lambda s, p, doc, depth: lit(st.just(BOX_FACES.tolist()))),
+            (r"positions|points", arr(st.integers(1, 5).flatmap(
+                lambda n: hnp.arrays(np.float64, (n, 3), elements=st.floats(-2.0, 2.0))))),
+            (r"parts", lambda s, p, doc, depth: _list_of(st.one_of(
+                s.objects("SpatialInertia", depth + 1),
+                st.tuples(s.objects("Transform", depth + 1), s.objects("SpatialInertia", depth + 1)).map(
+                    lambda xy: ("tuple", list(xy)))), depth)),
+            (r"loads", lambda s, p, doc, depth: _list_of(s.objects("AppliedLoad", depth + 1), depth)),
+            (r"gravity", lambda s, p, doc, depth: st.one_of(array_spec(st.just(np.array([0.0, 0.0, -9.81]))),
+                                                            lit(st.sampled_from([True, False, None])))),
+            (r"formats", lambda s, p, doc, depth: lit(st.sampled_from([["png"], ["svg"], []]))),
+            (r"path|path_or_text", lambda s, p, doc, depth: lit(st.sampled_from(["out", "result.csv", ""]))),
+        ]
+        return ([(re.compile(pattern), make) for pattern, make in table],
+                [(re.compile(pattern), make) for pattern, make in untyped])
+
+
+def _list_of(items, depth: int):
+    """Lists of up to 3 objects (empty where objects may no longer be nested)."""
+    if depth + 1 > MAX_DEPTH:
+        return st.just(("list", []))
+    return st.lists(items, max_size=3).map(lambda xs: ("list", xs))
+
+
+def _assemble(params, values):
+    """(args, kwargs) spec lists: positional until the first omitted argument, then by keyword."""
+    args, kwargs, positional = [], [], True
+    for p, v in zip(params, values):
+        if v is OMIT:
+            positional = False
+            continue
+        if positional and not p.keyword_only:
+            args.append(v)
+        else:
+            kwargs.append((p.name, v))
+    return args, kwargs
+
+
+def _method_names(module) -> list[str]:
+    try:
+        return [m["name"] for m in module.methods()]
+    except Exception:  # another module (the harness's own planted-bug module): no method table
+        return []
+
+
+def _examples() -> list[str]:
+    try:
+        from rigiddyn.problem import example_problems
+
+        return example_problems()
+    except Exception:
+        return ["t_handle"]
+
+
+def docstring_words(module, targets: list[Target]) -> list[str]:
+    """Quoted words of the docstrings ('world', `rk4`): the strings the API documents."""
+    text = "\n".join(t.doc for t in targets) + (module.__doc__ or "")
+    return re.findall(r"['`\"]([A-Za-z_][A-Za-z0-9_]{0,30})['`\"]", text)

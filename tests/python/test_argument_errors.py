@@ -1,0 +1,336 @@
+"""Every public entry point names the argument it refuses (README: "<argument>: expected <what>, got
+<value>"; issue 9 item 11).
+
+The sweep introspects rigiddyn.__all__ (functions; classes: constructors, static and instance methods;
+tests/fuzz/api_model.py reads the signatures), so a new function is swept without a change here; the
+only thing it needs is a valid call, in EXAMPLES below (a test fails, naming it, when one is missing).
+Starting from that valid call, each argument in turn is replaced by a value of the wrong type (a str,
+None, a list of str, a complex, an object()). The call must raise TypeError or ValueError whose
+message says what was expected and whose subject (the text before ": expected") names that argument -
+never pybind11's "incompatible function arguments" list, never a crash - or, where the value is valid
+after all (None for an optional argument, a str for a frame's name), succeed. Every public property of
+those classes (results' classes included) reads and refuses assignment. The cases reported in issue 9
+(items 10, 11) are checked as reported at the end.
+"""
+
+from __future__ import annotations
+
+import functools
+import re
+import sys
+import tempfile
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import rigiddyn as rd
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "fuzz"))
+from api_model import OPERATORS, public_targets  # noqa: E402
+
+WRONG = {  # kind -> a fresh value of that kind
+    "str": lambda: "wrong",
+    "None": lambda: None,
+    "list of str": lambda: ["a", "b"],
+    "complex": lambda: 1j,
+    "object": lambda: object(),
+}
+
+PLOT_DIR = Path(tempfile.mkdtemp(prefix="rigiddyn_argument_errors_"))
+Q = np.array([0.0, 0.0, 0.0, 1.0])
+V = np.array([0.1, 0.2, 0.3])
+I_BOX = np.diag([1.0, 2.0, 2.5])
+# a closed, outward-oriented tetrahedron
+TET_V = np.array([[0.0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]])
+TET_F = np.array([[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]])
+
+
+def _tree():
+    tree = rd.FrameTree()
+    tree.add_frame("A", "world", rd.FrameMotion.constant_rotation([0, 0, 1.0], 0.5))
+    return tree
+
+
+def _problem():
+    return rd.Problem(name="p", mass=1.0, inertia_com=I_BOX, horizon=0.1, w_B=[0.1, 1.0, 0.0])
+
+
+@functools.lru_cache(maxsize=None)
+def _result():
+    return rd.tradeoff(_problem(), methods=["rk4"], dts=[0.05, 0.025], progress=False)
+
+
+def _body_state():
+    return {"body": rd.RigidBody(1.0, I_BOX), "state": rd.RigidBodyState(w_B=V)}
+
+
+# path -> a function returning the keyword arguments of a valid call (required arguments at least)
+EXAMPLES = {
+    "AppliedLoad": lambda: {}, "FrameKinematics": lambda: {}, "FrameTree": lambda: {}, "ParticleState": lambda: {},
+    "PlanarBodyState": lambda: {}, "RigidBodyState": lambda: {}, "Transform": lambda: {},
+    "Motion": lambda: {"angular": V, "linear": V}, "Force": lambda: {"angular": V, "linear": V},
+    "Motion.from_vector": lambda: {"vector": np.ones(6)}, "Force.from_vector": lambda: {"vector": np.ones(6)},
+    "Motion.cross": lambda: {"other": rd.Motion(V, V)}, "Motion.cross_force": lambda: {"f": rd.Force(V, V)},
+    "Motion.dot": lambda: {"f": rd.Force(V, V)}, "Force.dot": lambda: {"m": rd.Motion(V, V)},
+    "FrameMotion": lambda: {"kinematics_at": lambda t: rd.FrameKinematics()},
+    "FrameMotion.fixed": lambda: {},
+    "FrameMotion.constant_rotation": lambda: {"axis_P": [0, 0, 1.0], "rate": 0.5},
+    "FrameMotion.at": lambda: {"t": 0.5},
+    "FrameTree.add_frame": lambda: {"name": "B", "parent": "A", "motion": rd.FrameMotion.fixed()},
+    "FrameTree.set_parent": lambda: {"name": "A", "parent": "world", "motion": rd.FrameMotion.fixed()},
+    "FrameTree.has_frame": lambda: {"name": "A"}, "FrameTree.parent": lambda: {"name": "A"},
+    "FrameTree.kinematics": lambda: {"frame": "A", "relative_to": "world", "t": 0.5},
+    "FrameTree.rotation": lambda: {"frame": "A", "relative_to": "world", "t": 0.5},
+    "FrameTree.angular_velocity": lambda: {"frame": "A", "relative_to": "world", "expressed_in": "A", "t": 0.5},
+    "FrameTree.angular_acceleration": lambda: {"frame": "A", "relative_to": "world", "expressed_in": "A", "t": 0.5},
+    "FrameTree.transport_derivative": lambda: {"u_E": V, "du_B_E": V, "from_frame": "A", "to_frame": "world",
+                                               "expressed_in": "world", "t": 0.5},
+    "FrameTree.point_position": lambda: {"frame": "A", "p_FQ_F": V, "relative_to": "world", "expressed_in": "A",
+                                         "t": 0.5},
+    "FrameTree.point_velocity": lambda: {"frame": "A", "p_FQ_F": V, "v_FQ_F": V, "relative_to": "world",
+                                         "expressed_in": "A", "t": 0.5},
+    "FrameTree.point_acceleration": lambda: {"frame": "A", "p_FQ_F": V, "v_FQ_F": V, "a_FQ_F": V,
+                                             "relative_to": "world", "expressed_in": "A", "t": 0.5},
+    "InertiaCheck": lambda: {"value": 0},
+    "InertiaReport.valid": lambda: {},
+    "Particle": lambda: {"mass": 1.0}, "PlanarBody": lambda: {"mass": 1.0, "inertia_zz": 0.5},
+    "RigidBody": lambda: {"mass": 1.0, "inertia_com": I_BOX},
+    "RigidBodyState.quaternion": lambda: {},
+    "Screw": lambda: {"direction": [0, 0, 1.0], "point": V, "pitch": 0.1, "magnitude": 2.0},
+    "SpatialInertia": lambda: {"mass": 1.0, "com": V, "inertia_com": I_BOX},
+    "SpatialInertia.from_inertia_about_point": lambda: {"mass": 1.0, "com": V, "inertia_about_point": I_BOX,
+                                                        "point": V},
+    "SpatialInertia.from_inertia_about_origin": lambda: {"mass": 1.0, "com": [0, 0, 0.0], "inertia_about_origin": I_BOX},
+    "SpatialInertia.from_matrix": lambda: {"matrix": rd.SpatialInertia(1.0, V, I_BOX).matrix()},
+    "SpatialInertia.point_mass": lambda: {"mass": 1.0, "position": V},
+    "SpatialInertia.inertia_about_point": lambda: {"point": V},
+    "SpatialInertia.momentum": lambda: {"twist": rd.Motion(V, V)},
+    "SpatialInertia.kinetic_energy": lambda: {"twist": rd.Motion(V, V)},
+    "SpatialInertia.angular_momentum_about_com": lambda: {"angular_velocity": V},
+    "SpatialInertia.angular_momentum_about_point": lambda: {"angular_velocity": V, "com_velocity": V, "point": V},
+    "SpatialInertia.rotated": lambda: {"R_AB": np.eye(3)},
+    "SpatialInertia.transformed": lambda: {"X_AB": rd.Transform()},
+    "SpatialInertia.admits_symmetry_plane": lambda: {"normal": [0, 0, 1.0]},
+    "SpatialInertia.remove": lambda: {"part": rd.SpatialInertia(0.1, V, 0.01 * I_BOX)},
+    "SpatialInertia.is_approx": lambda: {"other": rd.SpatialInertia(1.0, V, I_BOX)},
+    "TorqueFreeSolution": lambda: {"inertia": I_BOX, "q_WB": Q, "w_B": V},
+    "TorqueFreeSolution.state_at": lambda: {"t": 0.5},
+    "Transform.from_quat": lambda: {"q_AB": Q}, "Transform.quat": lambda: {},
+    "Transform.act_point": lambda: {"p_B": V}, "Transform.act_inv_point": lambda: {"p_A": V},
+    "Transform.act": lambda: {"spatial_vector": rd.Motion(V, V)},
+    "Transform.act_inv": lambda: {"spatial_vector": rd.Force(V, V)},
+    "angular_momentum": _body_state, "kinetic_energy": _body_state, "linear_momentum": _body_state,
+    "potential_energy": _body_state, "forward_dynamics": _body_state,
+    "apply_impulse": lambda: {**_body_state(), "impulse": V},
+    "inverse_dynamics": lambda: {**_body_state(), "a_W": V, "alpha_B": V},
+    "power": lambda: {"state": rd.RigidBodyState(w_B=V), "f_W": V},
+    "axis_angle_to_quat": lambda: {"axis": V, "angle": 0.3},
+    "box_shell": lambda: {"size": V, "mass": 1.0}, "solid_box": lambda: {"size": V, "mass": 1.0},
+    "solid_ellipsoid": lambda: {"semi_axes": V, "mass": 1.0},
+    "solid_sphere": lambda: {"radius": 0.1, "mass": 1.0}, "spherical_shell": lambda: {"radius": 0.1, "mass": 1.0},
+    "thin_rod": lambda: {"length": 0.1, "mass": 1.0}, "thin_disk": lambda: {"radius": 0.1, "mass": 1.0},
+    "thin_plate": lambda: {"size_x": 0.1, "size_y": 0.2, "mass": 1.0},
+    "hollow_sphere": lambda: {"outer_radius": 0.2, "inner_radius": 0.1, "mass": 1.0},
+    "hollow_cylinder": lambda: {"outer_radius": 0.2, "inner_radius": 0.1, "height": 0.3, "mass": 1.0},
+    "solid_capsule": lambda: {"radius": 0.1, "length": 0.3, "mass": 1.0},
+    "solid_cone": lambda: {"radius": 0.1, "height": 0.3, "mass": 1.0},
+    "solid_cylinder": lambda: {"radius": 0.1, "height": 0.3, "mass": 1.0},
+    "solid_tetrahedron": lambda: {"vertices": TET_V, "mass": 1.0},
+    "solid_mesh": lambda: {"mesh_or_vertices": TET_V, "faces": TET_F, "mass": 1.0},
+    "mesh_shell": lambda: {"mesh_or_vertices": TET_V, "faces": TET_F, "mass": 1.0},
+    "mesh_volume": lambda: {"vertices": TET_V, "faces": TET_F},
+    "mesh_symmetry_planes": lambda: {"vertices": TET_V, "faces": TET_F},
+    "require_closed_oriented_mesh": lambda: {"faces": TET_F, "n_vertices": 4},
+    "from_point_masses": lambda: {"masses": [1.0, 2.0], "positions": [V, -V]},
+    "symmetry_planes": lambda: {"masses": [1.0, 1.0], "positions": [V, -V]},
+    "integrate_density_over_box": lambda: {"rho": lambda p: np.ones(len(p)), "lower": -V, "upper": V, "order": 2,
+                                           "subdivisions": 1},
+    "integrate_density_over_mesh": lambda: {"rho": lambda p: np.ones(len(p)), "vertices": TET_V, "faces": TET_F,
+                                            "order": 2},
+    "composite": lambda: {"parts": [rd.SpatialInertia(1.0, V, I_BOX), rd.SpatialInertia(1.0, -V, I_BOX)]},
+    "point_inertia": lambda: {"mass": 1.0, "r": V},
+    "inertia_report": lambda: {"mass": 1.0, "inertia_com": I_BOX},
+    "nearest_valid_inertia": lambda: {"inertia": I_BOX}, "principal_axes": lambda: {"inertia": I_BOX},
+    "compose_kinematics": lambda: {"K_AP": rd.FrameKinematics(), "K_PF": rd.FrameKinematics()},
+    "relative_kinematics": lambda: {"K_WA": rd.FrameKinematics(), "K_WF": rd.FrameKinematics()},
+    "point_velocity": lambda: {"K_AF": rd.FrameKinematics(), "p_FQ_F": V, "v_FQ_F": V},
+    "point_acceleration": lambda: {"K_AF": rd.FrameKinematics(), "p_FQ_F": V, "v_FQ_F": V, "a_FQ_F": V},
+    "transport_derivative": lambda: {"w_AB": V, "u": V, "du_dt_in_B": V},
+    "twist_to_screw": lambda: {"twist": rd.Motion(V, V)},
+    "screw_to_twist": lambda: {"screw": rd.Screw([0, 0, 1.0], V, 0.1, 2.0)},
+    "motion_cross_matrix": lambda: {"m": rd.Motion(V, V)}, "force_cross_matrix": lambda: {"m": rd.Motion(V, V)},
+    "transform_compose": lambda: {"R_AB": np.eye(3), "p_AB": V, "R_BC": np.eye(3), "p_BC": V},
+    "transform_points": lambda: {"R_AB": np.eye(3), "p_AB": V, "p_B": V},
+    "quat_to_matrix": lambda: {"q": Q}, "quat_to_rotvec": lambda: {"q": Q}, "quat_inverse": lambda: {"q": Q},
+    "quat_normalize": lambda: {"q": Q}, "quat_to_axis_angle": lambda: {"q": Q}, "to_scipy": lambda: {"q": Q},
+    "quat_multiply": lambda: {"q1": Q, "q2": Q}, "quat_rotate": lambda: {"q": Q, "v": V},
+    "quat_integrate": lambda: {"q": Q, "w": V, "dt": 0.1},
+    "quat_to_euler": lambda: {"seq": "xyz", "q": Q},
+    "matrix_to_quat": lambda: {"R": np.eye(3)}, "matrix_to_rotvec": lambda: {"R": np.eye(3)},
+    "matrix_to_euler": lambda: {"seq": "xyz", "R": np.eye(3)},
+    "euler_to_quat": lambda: {"seq": "xyz", "angles": V}, "euler_to_matrix": lambda: {"seq": "xyz", "angles": V},
+    "rotvec_to_quat": lambda: {"rotvec": V}, "rotvec_to_matrix": lambda: {"rotvec": V},
+    "rot_x": lambda: {"angle": 0.3}, "rot_y": lambda: {"angle": 0.3}, "rot_z": lambda: {"angle": 0.3},
+    "hat": lambda: {"v": V}, "vee": lambda: {"S": np.eye(3)},
+    "from_scipy": lambda: {"rotation": rd.to_scipy(Q)},
+    "elliprf": lambda: {"x": 1.0, "y": 2.0, "z": 3.0}, "elliprj": lambda: {"x": 1.0, "y": 2.0, "z": 3.0, "p": 4.0},
+    "ellipk": lambda: {"m": 0.5}, "ellippi": lambda: {"n": 0.3, "m": 0.5},
+    "ellippi_am": lambda: {"u": 0.4, "n": 0.3, "m": 0.5}, "jacobi_ellipj": lambda: {"u": 0.4, "m": 0.5},
+    "simulate": lambda: {"model": rd.RigidBody(1.0, I_BOX), "initial": rd.RigidBodyState(w_B=V), "dt": 0.01,
+                         "steps": 2},
+    "step": lambda: {"model": rd.RigidBody(1.0, I_BOX), "state": rd.RigidBodyState(w_B=V), "dt": 0.01},
+    "Problem": lambda: {"name": "p", "mass": 1.0, "inertia_com": I_BOX, "horizon": 0.1},
+    "Problem.simulate": lambda: {"method": "rk4", "dt": 0.01},
+    "Problem.with_horizon": lambda: {"horizon": 0.2},
+    "load_problem": lambda: {"path_or_name": "t_handle"},
+    "TradeoffResult": lambda: {"problem": "t_handle", "horizon": 0.1, "measure": "final_attitude_error",
+                               "tolerance": 1e-6, "rows": []},
+    "TradeoffResult.recommend": lambda: {"tolerance": 1e-6},
+    "TradeoffResult.to_table": lambda: {}, "TradeoffResult.to_csv": lambda: {}, "TradeoffResult.to_json": lambda: {},
+    "TradeoffResult.read_csv": lambda: {"path_or_text": _result().to_csv()},
+    "TradeoffResult.read_json": lambda: {"path_or_text": _result().to_json()},
+    "TradeoffResult.plot": lambda: {"path": str(PLOT_DIR / "plot")},
+    "tradeoff": lambda: {"problem": _problem(), "methods": ["rk4"], "dts": [0.05, 0.025], "progress": False},
+}
+
+# the instance a method is called on, by class
+INSTANCES = {
+    "Force": lambda: rd.Force(V, V), "Motion": lambda: rd.Motion(V, V), "FrameMotion": rd.FrameMotion.fixed,
+    "FrameTree": _tree, "InertiaReport": lambda: rd.inertia_report(1.0, I_BOX), "InertiaCheck": lambda: rd.InertiaCheck.physical,
+    "RigidBodyState": lambda: rd.RigidBodyState(w_B=V), "SpatialInertia": lambda: rd.SpatialInertia(1.0, V, I_BOX),
+    "TorqueFreeSolution": lambda: rd.TorqueFreeSolution(I_BOX, Q, V), "Transform": lambda: rd.Transform(None, V),
+    "Problem": _problem, "TradeoffResult": _result,
+}
+
+# (path, argument) -> the wrong kinds that are valid values after all (the call may succeed)
+VALID_AFTER_ALL = {
+    ("FrameTree.add_frame", "name"): {"str"},  # any new name
+    ("FrameTree.has_frame", "name"): {"str"},  # False
+    ("Problem", "name"): {"str"}, ("Problem", "description"): {"str"}, ("Problem", "source"): {"str"},
+    ("TradeoffResult", "problem"): {"str"}, ("TradeoffResult.read_csv", "problem"): {"str"},  # a problem's name
+    # a file name (written in the test's temporary folder)
+    ("TradeoffResult.to_csv", "path"): {"str"}, ("TradeoffResult.to_json", "path"): {"str"},
+    ("TradeoffResult.plot", "path"): {"str"},
+}
+
+
+def _targets():
+    targets, _ = public_targets(rd)
+    # operators (a + b, -a, repr) have no argument name to give; their TypeError is Python's own
+    return [t for t in targets if t.path.rsplit(".", 1)[-1] not in OPERATORS]
+
+
+TARGETS = _targets()
+CASES = [(t, p.name, p.optional, kind) for t in TARGETS for p in t.overloads[0] for kind in WRONG]
+
+
+def _call(target, kwargs):
+    if target.owner is not None:
+        return getattr(INSTANCES[target.owner](), target.path.rsplit(".", 1)[1])(**kwargs)
+    obj = rd
+    for part in target.path.split("."):
+        obj = getattr(obj, part)
+    return obj(**kwargs)
+
+
+def _names_argument(message: str, argument: str) -> bool:
+    subject = message.split(": expected", 1)[0] if ": expected" in message else ""
+    return re.search(rf"(?<![A-Za-z0-9_]){re.escape(argument)}(?![A-Za-z0-9_])", subject) is not None
+
+
+def test_every_entry_point_has_a_valid_example(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    missing = sorted({t.path for t in TARGETS if t.overloads[0] and t.path not in EXAMPLES}
+                     | {t.owner for t in TARGETS if t.owner and t.owner not in INSTANCES})
+    assert not missing, f"add a valid call (EXAMPLES) or an instance (INSTANCES) for: {missing}"
+    for target in TARGETS:  # the examples themselves are valid calls
+        if target.path in EXAMPLES:
+            _call(target, EXAMPLES[target.path]())
+
+
+@pytest.mark.parametrize("target, argument, optional, kind", CASES,
+                         ids=[f"{t.path}-{a}-{k}" for t, a, _, k in CASES])
+def test_wrong_type_names_the_argument(target, argument, optional, kind, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)  # a path argument given "wrong" that is accepted writes there
+    kwargs = {**EXAMPLES[target.path](), argument: WRONG[kind]()}
+    valid_after_all = VALID_AFTER_ALL.get((target.path, argument), set()) | ({"None"} if optional else set())
+    try:
+        _call(target, kwargs)
+    except (TypeError, ValueError) as error:
+        message = str(error)
+        assert "incompatible function arguments" not in message and "incompatible constructor" not in message, message
+        assert _names_argument(message, argument), f"{type(error).__name__} does not name {argument!r}: {message}"
+        return
+    assert kind in valid_after_all, f"{target.path}({argument}={WRONG[kind]()!r}) was accepted"
+
+
+def _properties():
+    """(class name, property) for every public property of every class of rigiddyn.__all__ that the
+    sweep has an instance of (results' classes included: their instances come from INSTANCES_OF_RESULTS)."""
+    out = []
+    for name in rd.__all__:
+        cls = getattr(rd, name)
+        if isinstance(cls, type) and not issubclass(cls, BaseException):
+            out += [(name, attr) for attr, raw in vars(cls).items() if not attr.startswith("_") and isinstance(raw, property)]
+    return out
+
+
+# instances of the classes that only results have (no constructor)
+INSTANCES_OF_RESULTS = {
+    "DensityIntegral": lambda: rd.integrate_density_over_box(lambda p: np.ones(len(p)), -V, V, order=2),
+    "KineticEnergy": lambda: rd.kinetic_energy(**_body_state()),
+    "PrincipalAxes": lambda: rd.SpatialInertia(1.0, V, I_BOX).principal_axes(),
+    "PointVelocity": lambda: rd.point_velocity(rd.FrameKinematics(), V, V),
+    "PointAcceleration": lambda: rd.point_acceleration(rd.FrameKinematics(), V, V, V),
+    "SimulationResult": lambda: rd.simulate(rd.RigidBody(1.0, I_BOX), rd.RigidBodyState(w_B=V), 0.01, 2),
+    "InertiaReport": INSTANCES["InertiaReport"], "FrameKinematics": rd.FrameKinematics, "AppliedLoad": rd.AppliedLoad,
+    "ParticleState": rd.ParticleState, "PlanarBodyState": rd.PlanarBodyState, "Particle": lambda: rd.Particle(1.0),
+    "PlanarBody": lambda: rd.PlanarBody(1.0, 0.5), "RigidBody": lambda: rd.RigidBody(1.0, I_BOX),
+    "Screw": lambda: rd.Screw([0, 0, 1.0], V, 0.1, 2.0),
+}
+PROPERTIES = _properties()
+
+
+def test_every_class_with_properties_has_an_instance():
+    missing = sorted({c for c, _ in PROPERTIES if c not in INSTANCES and c not in INSTANCES_OF_RESULTS})
+    assert not missing, f"add an instance (INSTANCES_OF_RESULTS) for: {missing}"
+
+
+@pytest.mark.parametrize("cls, attr", PROPERTIES, ids=[f"{c}.{a}" for c, a in PROPERTIES])
+def test_properties_read_and_refuse_assignment(cls, attr):
+    # a property reads without error and is read-only: assigning a wrong-typed value (or any value)
+    # raises AttributeError, never stores it (values are set through the constructors, which check)
+    obj = (INSTANCES.get(cls) or INSTANCES_OF_RESULTS[cls])()
+    getattr(obj, attr)
+    with pytest.raises(AttributeError):
+        setattr(obj, attr, "wrong")
+
+
+@pytest.mark.parametrize("call, error, message", [
+    (lambda: rd.FrameMotion(5), TypeError, r"^kinematics_at: expected a callable .*, got int 5$"),
+    (lambda: rd.composite([1, 2]), TypeError, r"^parts\[0\]: expected a SpatialInertia .*, got int 1$"),
+    (lambda: rd.require_closed_oriented_mesh(TET_F, -5), ValueError, r"^n_vertices: expected an integer in \[0, .*got -5$"),
+    (lambda: rd.point_inertia(float("nan"), V), ValueError, r"^mass: expected a finite number, got nan$"),
+    (lambda: rd.point_inertia(-5, V), ValueError, r"^mass: expected a finite number > 0, got -5$"),
+    (lambda: rd.quat_integrate(Q, V, "1"), TypeError, r"^dt: expected .*, got str '1'$"),
+])
+def test_the_reported_messages(call, error, message):
+    # the cases of issue 9 items 10 and 11, each as reported
+    with pytest.raises(error, match=message):
+        call()
+
+
+def test_the_symmetry_tolerance_printed_is_the_one_used():
+    # issue 9 item 11: max |I - I^T| = 1e-11 was refused with a message printing another tolerance
+    asymmetric = I_BOX.copy()
+    asymmetric[0, 1] += 1e-11
+    with pytest.raises(ValueError, match=r"^inertia_com: expected a symmetric inertia") as refused:
+        rd.RigidBody(1.0, asymmetric)
+    printed = float(re.search(r"> symmetry tolerance ([0-9.e+-]+)", str(refused.value)).group(1))
+    assert printed == rd.inertia_report(1.0, asymmetric).asymmetry_tolerance
+    # the printed figure is the threshold: an asymmetry just inside it is accepted, just outside refused
+    for factor, accepted in [(0.99, True), (1.01, False)]:
+        I = I_BOX.copy()
+        I[0, 1] += factor * printed
+        assert rd.inertia_report(1.0, I).symmetric == accepted, factor
