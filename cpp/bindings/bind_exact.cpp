@@ -140,7 +140,9 @@ void bind_exact(pybind11::module_& m) {
         "accuracy (unlike scipy.special.ellipj, accurate near m = 1 at any u).");
 
   py::class_<PyTorqueFreeSolution>(m, "TorqueFreeSolution",
-                                   "Exact motion of a torque-free rigid body (Euler-Poinsot), see rigiddyn/exact/free_body.hpp.")
+                                   "Exact motion of a torque-free rigid body (Euler-Poinsot): angular velocity in Jacobi's elliptic\n"
+                                   "functions, attitude by Legendre's third integral (Landau & Lifshitz, Mechanics §37;\n"
+                                   "Celledoni, Fassò, Säfström, Zanna 2008; docs/references.md), at any time t [s].")
       .def(py::init(&make_solution), py::arg("inertia"), py::arg("q_WB"), py::arg("w_B"), py::arg("scalar_first") = false,
            "inertia: (3, 3) rotational inertia about the centre of mass, in B [kg m^2], symmetric positive definite;\n"
            "q_WB: (4,) initial attitude, (x, y, z, w) or (w, x, y, z) if scalar_first; w_B: (3,) initial angular\n"

@@ -514,7 +514,7 @@ void bind_symmetry(py::module_& m) {
       "tolerance * (largest distance from the centre of mass to a point) [m] and tolerance * mass.\n"
       "Returns a list of (normal (3,) unit, largest-magnitude component positive; point (3,) [m] = the\n"
       "centre of mass), in the frame of the positions. Candidates: the principal axes, and when principal\n"
-      "moments coincide, normals built from the points (rigiddyn/inertia/symmetry.hpp); for such\n"
+      "moments coincide, normals built from the points; for such\n"
       "degenerate bodies (cube, regular tetrahedron) the planes found among them, not a proof of none else.");
   m.def(
       "mesh_symmetry_planes",

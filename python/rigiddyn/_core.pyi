@@ -922,7 +922,9 @@ class SimulationResult:
         """
 class TorqueFreeSolution:
     """
-    Exact motion of a torque-free rigid body (Euler-Poinsot), see rigiddyn/exact/free_body.hpp.
+    Exact motion of a torque-free rigid body (Euler-Poinsot): angular velocity in Jacobi's elliptic
+    functions, attitude by Legendre's third integral (Landau & Lifshitz, Mechanics §37;
+    Celledoni, Fassò, Säfström, Zanna 2008; docs/references.md), at any time t [s].
     """
     def __init__(self, inertia: typing.Any, q_WB: typing.Any, w_B: typing.Any, scalar_first: typing.Any = False) -> None:
         """
@@ -1389,7 +1391,7 @@ def symmetry_planes(masses: typing.Any, positions: typing.Any, tolerance: typing
     tolerance * (largest distance from the centre of mass to a point) [m] and tolerance * mass.
     Returns a list of (normal (3,) unit, largest-magnitude component positive; point (3,) [m] = the
     centre of mass), in the frame of the positions. Candidates: the principal axes, and when principal
-    moments coincide, normals built from the points (rigiddyn/inertia/symmetry.hpp); for such
+    moments coincide, normals built from the points; for such
     degenerate bodies (cube, regular tetrahedron) the planes found among them, not a proof of none else.
     """
 def thin_disk(radius: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:

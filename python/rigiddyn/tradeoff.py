@@ -269,7 +269,7 @@ def _switch_times(problem: Problem) -> list[float]:
 
 
 def _rate(problem: Problem, t: float) -> Callable[[float, np.ndarray], np.ndarray]:
-    """The Newton-Euler equations (rigid_body.hpp) of `problem` under the loads active at time t [s], on
+    """The Newton-Euler equations of `problem` under the loads active at time t [s], on
     y = (p_W, q_WB (x, y, z, w), v_W, w_B): p' = v, q' = q (x) (w, 0) / 2, m v' = f_W + R f_B + m g,
     I w' = n_B + R^T n_W - w x I w (R of q / |q|). Written apart from the core: a second opinion."""
     active = [load for load in problem.loads if load.t_start <= t < load.t_end]

@@ -49,7 +49,7 @@ def textbook_worked_example(r: float = 0.06, theta: float = math.radians(30.0)) 
     disk in the ground, R1 components); "terms" (first solution, P fixed in R2) and
     "terms_alternate" (P moving in R1): dicts term -> (3,) array in R1 components [m/s^2] from the
     library; "closed_form" and "closed_form_alternate": the same terms worked by hand from the
-    seed's ω and α; "textbook_answer" (3,): (-16 r cos θ, -41 r sin θ, 40 r cos θ); "max_error": the
+    textbook's ω and α; "textbook_answer" (3,): (-16 r cos θ, -41 r sin θ, 40 r cos θ); "max_error": the
     largest |library - closed form| over all terms of both solutions.
     """
     tree = FrameTree()
@@ -116,7 +116,7 @@ def format_worked_example(result: dict[str, Any]) -> str:
     acceleration term and the total from the library beside its closed form."""
     r, theta = result["r"], result["theta"]
     lines = [
-        "Seed 001 worked example (Kinematics of a Rigid Body): a disk on a rotating shaft",
+        "Worked example of K. Craig, \"Rigid Body Dynamics\" (Kinematics of a Rigid Body): a disk on a rotating shaft",
         "  R  ground, inertial frame ('world')",
         "  R1 shaft: simple angular velocity 5 i rad/s in R (FrameMotion.constant_rotation)",
         "  R2 disk:  simple angular velocity 4 k1 rad/s in R1, about k1 through O (end of the shaft)",
@@ -139,8 +139,8 @@ def format_worked_example(result: dict[str, Any]) -> str:
         lines += [f"  {TERM_LABELS[k]:<26}{_vec(got[k]):<36}{_vec(want[k])}" for k in (*TERMS, "total")]
     lines += [
         "",
-        "Seed's answer: a_P = (-16 r cos θ) i1 + (-41 r sin θ) j1 + (40 r cos θ) k1",
-        f"             = {_vec(result['textbook_answer'])} m/s²",
+        "Textbook answer: a_P = (-16 r cos θ) i1 + (-41 r sin θ) j1 + (40 r cos θ) k1",
+        f"               = {_vec(result['textbook_answer'])} m/s²",
         f"Largest |library - closed form| over all terms: {result['max_error']:.3g} m/s²",
     ]
     return "\n".join(lines)

@@ -20,7 +20,7 @@ SEED_ANSWER = np.array([-16 * R_DISK * C, -41 * R_DISK * S, 40 * R_DISK * C])
 
 
 def shaft_and_disk(shaft_length=0.0):
-    """Seed 001: ground R ('world'), shaft R1 at 5 rad/s about i, disk R2 at 4 rad/s about k1
+    """Craig's worked example: ground R ('world'), shaft R1 at 5 rad/s about i, disk R2 at 4 rad/s about k1
     relative to the shaft, about k1 through O (the end of the shaft, on its axis)."""
     tree = rd.FrameTree()
     tree.add_frame("shaft", "world", rd.FrameMotion.constant_rotation([1.0, 0, 0], 5.0))
@@ -85,7 +85,7 @@ def test_worked_example_function_and_command(capsys):
     for word in ("centripetal", "Coriolis", "tangential", "-16 r cos θ", "-1.230000", "+2.078461"):
         assert word in text
     assert main(["worked-example"]) == 0
-    assert "Seed 001 worked example" in capsys.readouterr().out
+    assert "Worked example of K. Craig" in capsys.readouterr().out
 
 
 # ------------------------------------------------------------------ a 3-level chain of user motions
