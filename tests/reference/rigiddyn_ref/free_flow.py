@@ -51,7 +51,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .so3 import rotvec_to_matrix
+from .so3 import axis_rotation, rotvec_to_matrix
 
 EPS = np.finfo(float).eps
 INVARIANT_TOLERANCE = 64 * EPS
@@ -115,15 +115,6 @@ def jacobi_add(sn_u, cn_u, dn_u, sn_v, cn_v, dn_v, k):
     return ((sn_u * cn_v * dn_v + sn_v * cn_u * dn_u) / d,
             (cn_u * cn_v - sn_u * dn_u * sn_v * dn_v) / d,
             (dn_u * dn_v - k * sn_u * cn_u * sn_v * cn_v) / d)
-
-
-def _axis_rotation(i, angle):
-    """Rotation matrix about axis i by `angle` [rad]."""
-    c, s = np.cos(angle), np.sin(angle)
-    j, k = (i + 1) % 3, (i + 2) % 3
-    R = np.eye(3)
-    R[j, j], R[j, k], R[k, j], R[k, k] = c, -s, s, c
-    return R
 
 
 def _tilt(n):
@@ -254,7 +245,7 @@ def _elliptic_flow(I, R_WP, m, h):
         triple = orbit.project(*(float(x) for x in orbit.advance(triple, sigma)))
     n1 = orbit.momentum(*triple)
     _check_invariants(I, m, G * n1)
-    R = R_WL @ _axis_rotation(2, phi) @ _tilt(C.T @ (n1 / np.linalg.norm(n1))) @ C.T
+    R = R_WL @ axis_rotation(2, phi) @ _tilt(C.T @ (n1 / np.linalg.norm(n1))) @ C.T
     return R, G * n1
 
 
@@ -265,8 +256,8 @@ def _symmetric_flow(I, R_WP, m, h, axis):
     I_t = 0.5 * (np.sum(I) - I[axis])
     beta = m[axis] * (1.0 / I[axis] - 1.0 / I_t)
     L_W = R_WP @ m
-    R = rotvec_to_matrix(h / I_t * L_W) @ R_WP @ _axis_rotation(axis, h * beta)
-    return R, _axis_rotation(axis, -h * beta) @ m
+    R = rotvec_to_matrix(h / I_t * L_W) @ R_WP @ axis_rotation(axis, h * beta)
+    return R, axis_rotation(axis, -h * beta) @ m
 
 
 def step_error_bound(I, h, w_B):

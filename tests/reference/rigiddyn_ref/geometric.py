@@ -28,7 +28,7 @@ import numpy as np
 
 from . import dynamics as dyn
 from .free_flow import free_rotation
-from .so3 import matrix_to_quat, quat_to_matrix, rotvec_to_matrix
+from .so3 import axis_rotation, matrix_to_quat, quat_to_matrix, rotvec_to_matrix
 
 METHODS = ("implicit_midpoint", "splitting_dlm", "splitting_dlm_yoshida4", "exact_flow_kick", "exact")
 
@@ -37,15 +37,6 @@ YOSHIDA_GAMMA0 = -(2.0 ** (1.0 / 3.0)) / (2.0 - 2.0 ** (1.0 / 3.0))
 MIDPOINT_TOLERANCE = np.finfo(float).eps  # per coordinate, relative to max(1, |coordinate|)
 MIDPOINT_STALL = 64 * np.finfo(float).eps  # a change that stops shrinking below this is round-off
 MIDPOINT_MAX_ITERATIONS = 200
-
-
-def _axis_rotation(i, angle):
-    """Rotation matrix about principal axis i by `angle` [rad]."""
-    c, s = np.cos(angle), np.sin(angle)
-    j, k = (i + 1) % 3, (i + 2) % 3
-    R = np.eye(3)
-    R[j, j], R[j, k], R[k, j], R[k, k] = c, -s, s, c
-    return R
 
 
 def principal_frame(I):
@@ -69,8 +60,8 @@ def dlm_free_rotation(I, R_WB, w_B, h):
     a, b, c = np.argsort(moments, kind="stable")
     for axis, tau in ((a, h / 2), (b, h / 2), (c, h), (b, h / 2), (a, h / 2)):
         theta = tau * m[axis] / moments[axis]
-        m = _axis_rotation(axis, -theta) @ m
-        R_WP = R_WP @ _axis_rotation(axis, theta)
+        m = axis_rotation(axis, -theta) @ m
+        R_WP = R_WP @ axis_rotation(axis, theta)
     return R_WP @ R_BP.T, R_BP @ (m / moments)
 
 

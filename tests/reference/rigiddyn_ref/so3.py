@@ -55,7 +55,7 @@ def vee(S) -> np.ndarray:
 
 
 # ---------------------------------------------------------------- elementary rotations
-def _elementary(axis: int, angle) -> np.ndarray:
+def axis_rotation(axis: int, angle) -> np.ndarray:
     """Active rotation by angle about coordinate axis `axis` (Diebel (59)-(61), transposed:
     Diebel writes passive rotations, rigiddyn active ones)."""
     a = np.asarray(angle, dtype=float)
@@ -72,17 +72,17 @@ def _elementary(axis: int, angle) -> np.ndarray:
 
 def rot_x(angle) -> np.ndarray:
     """R_x(angle) = [[1,0,0],[0,c,-s],[0,s,c]] (active)."""
-    return _elementary(0, angle)
+    return axis_rotation(0, angle)
 
 
 def rot_y(angle) -> np.ndarray:
     """R_y(angle) = [[c,0,s],[0,1,0],[-s,0,c]] (active)."""
-    return _elementary(1, angle)
+    return axis_rotation(1, angle)
 
 
 def rot_z(angle) -> np.ndarray:
     """R_z(angle) = [[c,-s,0],[s,c,0],[0,0,1]] (active)."""
-    return _elementary(2, angle)
+    return axis_rotation(2, angle)
 
 
 # ---------------------------------------------------------------- quaternion algebra
@@ -245,7 +245,7 @@ def euler_to_matrix(seq: str, angles) -> np.ndarray:
     (Shoemake 1994; the same product read in the opposite order)."""
     axes, extrinsic = _parse_seq(seq)
     a = np.asarray(angles, dtype=float)
-    Rs = [_elementary(ax, a[..., n]) for n, ax in enumerate(axes)]
+    Rs = [axis_rotation(ax, a[..., n]) for n, ax in enumerate(axes)]
     return Rs[2] @ Rs[1] @ Rs[0] if extrinsic else Rs[0] @ Rs[1] @ Rs[2]
 
 
