@@ -296,7 +296,7 @@ void planar_rk4(benchmark::State& state) {
   PlanarBodyModel model(PlanarBody(2.0, 0.5));
   ComLoads loads;
   loads.f_B = Eigen::Vector3d(1.0, 0.5, 0.0);
-  loads.n_B = Eigen::Vector3d(0, 0, 0.2);
+  loads.tau_B = Eigen::Vector3d(0, 0, 0.2);
   model.set_loads(loads);
   const std::int64_t n = steps();
   for (auto _ : state) {

@@ -19,7 +19,7 @@ import time
 import numpy as np
 import rigiddyn
 from rigiddyn.problem import load_problem
-from rigiddyn.tradeoff import _attitude_angle, reference_states
+from rigiddyn.work_precision import _attitude_angle, reference_states
 
 MUJOCO_INTEGRATORS = ("Euler", "RK4", "implicit", "implicitfast")
 

@@ -7,6 +7,7 @@
 #include "bindings.hpp"
 #include "common_args.hpp"
 #include "numpy_io.hpp"
+#include "repr.hpp"
 #include "rigiddyn/check.hpp"
 #include "rigiddyn/simulate/simulate.hpp"
 
@@ -69,11 +70,13 @@ auto with_model(py::handle model, py::handle state, const char* state_name, F&& 
   py_io::throw_type_error("model", "a RigidBody, PlanarBody or Particle", model);
 }
 
-// A numpy array taking ownership of a std::vector (no copy).
+// A read-only numpy array taking ownership of a std::vector (no copy): `result.w_B[0, 0] = 1` raises.
 Array adopt(std::vector<double>&& data, std::vector<py::ssize_t> shape) {
   auto* owner = new std::vector<double>(std::move(data));
   py::capsule free_owner(owner, [](void* p) { delete static_cast<std::vector<double>*>(p); });
-  return Array(shape, owner->data(), free_owner);
+  Array out(shape, owner->data(), free_owner);
+  out.attr("flags").attr("writeable") = false;
+  return out;
 }
 
 // simulate's result: numpy arrays, one row per record.
@@ -191,6 +194,47 @@ SimulationResult simulate_py(py::handle model, py::handle initial, py::handle dt
   });
 }
 
+// The arrays of a SimulationResult in order (pickle state, field by field).
+constexpr const char* result_arrays[] = {"t", "p_W", "q_WB", "v_W", "w_B", "kinetic_energy", "total_energy",
+                                         "angular_momentum_norm", "quaternion_norm_error", "work"};
+
+py::tuple result_state(const SimulationResult& r) {
+  return py::make_tuple(r.t, r.p_W, r.q_WB, r.v_W, r.w_B, r.kinetic_energy, r.total_energy, r.angular_momentum_norm,
+                        r.quaternion_norm_error, r.work, r.diverged, r.unconverged_steps, r.elapsed_seconds);
+}
+
+// A pickled array as a read-only float64 copy of the shape it must have ((n,) or (n, k), n records).
+Array unpickled_array(py::handle obj, const char* name, py::ssize_t n, py::ssize_t k) {
+  Array a = Array::ensure(py::module_::import("numpy").attr("array")(obj, "float64"));  // a copy
+  const bool ok = a && (k == 0 ? a.ndim() == 1 && a.shape(0) == n : a.ndim() == 2 && a.shape(0) == n && a.shape(1) == k);
+  if (!ok) {
+    py_io::throw_value_error(std::string("SimulationResult pickle ") + name,
+                             k == 0 ? "shape (n,)" : "shape (n, " + std::to_string(k) + ")", py_io::describe(obj));
+  }
+  a.attr("flags").attr("writeable") = false;
+  return a;
+}
+
+SimulationResult result_from_state(const py::tuple& t) {
+  if (t.size() != 13) py_io::throw_value_error("SimulationResult pickle", "a tuple of 13 items", std::to_string(t.size()) + " items");
+  const py::ssize_t n = py::len(t[0]);
+  auto column = [&](int i, py::ssize_t k) { return unpickled_array(t[i], result_arrays[i], n, k); };
+  return SimulationResult{column(0, 0), column(1, 3), column(2, 4), column(3, 3), column(4, 3), column(5, 0),
+                          column(6, 0), column(7, 0), column(8, 0), column(9, 0), t[10].cast<bool>(),
+                          t[11].cast<std::int64_t>(), t[12].cast<double>()};
+}
+
+// "SimulationResult(records=n, t=[t0, t_end], diverged=..., unconverged_steps=..., elapsed_seconds=...)".
+std::string result_repr(const SimulationResult& r) {
+  const py::ssize_t n = r.t.shape(0);
+  const py::object span = n == 0 ? py::object(py::list()) : py::object(py::make_tuple(r.t.at(0), r.t.at(n - 1)));
+  return repr_call("SimulationResult", {{"records", py::int_(n)},
+                                        {"t", span},
+                                        {"diverged", py::bool_(r.diverged)},
+                                        {"unconverged_steps", py::int_(r.unconverged_steps)},
+                                        {"elapsed_seconds", py::float_(r.elapsed_seconds)}});
+}
+
 bool all_finite(const RigidBodyState& s) {
   return s.p_W.allFinite() && s.q_WB.coeffs().allFinite() && s.v_W.allFinite() && s.w_B.allFinite();
 }
@@ -230,8 +274,9 @@ in C++ with the GIL released, and record every `record_every`-th step (plus the 
 model/initial: Particle/ParticleState, PlanarBody/PlanarBodyState or RigidBody/RigidBodyState.
 loads: an AppliedLoad or a sequence of them, a piecewise-constant schedule: a step that crosses a
   switch time (a t_start or t_end) is split there into sub-steps of the same method, so every method
-  keeps its order; records stay at t0 + i dt. gravity: None/False (none), True ((0, 0, -9.81) m/s^2
-  in W) or a 3-vector [m/s^2] in W. t0: initial time [s]. scalar_first: quaternions as (w, x, y, z).
+  keeps its order; records stay at t0 + i dt. gravity: None/False (the default: none), True
+  ((0, 0, -9.81) m/s^2 in W) or a 3-vector [m/s^2] in W. t0: initial time [s]. scalar_first: quaternions
+  as (w, x, y, z).
 progress: None or a callable(steps_done), called with the GIL about every 0.05 s of a long run; an
   exception it raises stops the run and propagates.
 
@@ -250,8 +295,8 @@ memory available (record_every, with both figures).
 
 const char* const step_doc = R"doc(
 One step of `method` (see methods()) of length dt [s] from `state` at time t [s] to t + dt under `loads`
-(AppliedLoad or sequence) and `gravity` (None/False, True for (0, 0, -9.81) m/s^2, or a 3-vector). A
-step across a switch time of the loads is split there, as in simulate.
+(AppliedLoad or sequence) and `gravity` (None/False, the default: none; True for (0, 0, -9.81) m/s^2, or a
+3-vector [m/s^2] in W). A step across a switch time of the loads is split there, as in simulate.
 
 t=None (default): returns the new state (same type as `state`); ValueError (naming t) if a load acts on a
   time window (finite t_start or t_end), since the step then depends on the time.
@@ -262,27 +307,63 @@ Warns RuntimeWarning if the new state is not finite, as simulate does. ValueErro
 }  // namespace
 
 void bind_dynamics(py::module_& m) {
-  py::class_<AppliedLoad>(m, "AppliedLoad",
-                          "A load: force (3,) [N] through the centre of mass and couple torque (3,) [N m], both in "
-                          "frame 'world' or 'body', active for t_start <= t < t_end [s].")
-      .def(py::init([](py::handle force, py::handle torque, py::handle frame, py::handle t_start, py::handle t_end) {
-             AppliedLoad load{py_io::as_vector3_or_zero(force, "force"), py_io::as_vector3_or_zero(torque, "torque"),
-                              as_frame(frame), py_io::as_extended_real(t_start, "t_start"),
-                              py_io::as_extended_real(t_end, "t_end")};
-             check_loads({load});
-             return load;
+  py::class_<AppliedLoad> load(m, "AppliedLoad",
+                               "A load: force (3,) [N] through the centre of mass and torque (3,) [N m] (a pure "
+                               "couple), both expressed in frame 'world' (W) or 'body' (B), active for t_start <= t < "
+                               "t_end [s]. Immutable.");
+  load.def(py::init([](py::handle force, py::handle torque, py::handle frame, py::handle t_start, py::handle t_end) {
+             AppliedLoad l{py_io::as_vector3_or_zero(force, "force"), py_io::as_vector3_or_zero(torque, "torque"),
+                           as_frame(frame), py_io::as_extended_real(t_start, "t_start"),
+                           py_io::as_extended_real(t_end, "t_end")};
+             check_loads({l});
+             return l;
            }),
            py::arg("force") = py::none(), py::arg("torque") = py::none(),
            py::arg("frame") = "world", py::arg("t_start") = -std::numeric_limits<double>::infinity(),
            py::arg("t_end") = std::numeric_limits<double>::infinity())
-      .def_property_readonly("force", [](const AppliedLoad& l) { return py_io::to_array(l.force); }, "(3,) [N]")
-      .def_property_readonly("torque", [](const AppliedLoad& l) { return py_io::to_array(l.torque); }, "(3,) [N m]")
+      .def_property_readonly("force", [](const AppliedLoad& l) { return py_io::read_only(l.force); }, "(3,) [N] in frame")
+      .def_property_readonly("torque", [](const AppliedLoad& l) { return py_io::read_only(l.torque); },
+                             "(3,) [N m] in frame")
       .def_property_readonly(
           "frame", [](const AppliedLoad& l) { return l.frame == Frame::world ? "world" : "body"; }, "'world' or 'body'")
       .def_readonly("t_start", &AppliedLoad::t_start, "[s]")
-      .def_readonly("t_end", &AppliedLoad::t_end, "[s]");
+      .def_readonly("t_end", &AppliedLoad::t_end, "[s]")
+      .def("__repr__",
+           [](const AppliedLoad& l) {
+             // the infinite ends are the defaults and left out, so that the text evaluates
+             std::string text = repr_call("AppliedLoad", {{"force", py::object(py_io::to_array(l.force))},
+                                                          {"torque", py::object(py_io::to_array(l.torque))},
+                                                          {"frame", py::str(l.frame == Frame::world ? "world" : "body")}});
+             text.pop_back();
+             if (std::isfinite(l.t_start)) text += ", t_start=" + py::repr(py::float_(l.t_start)).cast<std::string>();
+             if (std::isfinite(l.t_end)) text += ", t_end=" + py::repr(py::float_(l.t_end)).cast<std::string>();
+             return text + ")";
+           })
+      .def(py::pickle(
+          [](const AppliedLoad& l) {
+            return py::make_tuple(py_io::to_array(l.force), py_io::to_array(l.torque),
+                                  l.frame == Frame::world ? "world" : "body", l.t_start, l.t_end);
+          },
+          [](const py::tuple& t) {
+            if (t.size() != 5) py_io::throw_value_error("AppliedLoad pickle", "a tuple of 5 items", std::to_string(t.size()) + " items");
+            AppliedLoad l{py_io::as_vector3(t[0], "force"), py_io::as_vector3(t[1], "torque"), as_frame(t[2]),
+                          t[3].cast<double>(), t[4].cast<double>()};
+            check_loads({l});
+            return l;
+          }))
+      .def(
+          "__eq__",
+          [](const AppliedLoad& a, py::handle other) -> py::object {
+            if (!py::isinstance<AppliedLoad>(other)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
+            const AppliedLoad& b = other.cast<const AppliedLoad&>();
+            return py::bool_(a.force == b.force && a.torque == b.torque && a.frame == b.frame &&
+                             a.t_start == b.t_start && a.t_end == b.t_end);
+          },
+          py::arg("other"));
+  load.attr("__hash__") = py::none();
 
-  py::class_<SimulationResult>(m, "SimulationResult", "simulate's records (see simulate).")
+  py::class_<SimulationResult>(m, "SimulationResult",
+                               "simulate's records (see simulate), one row per record; the arrays are read-only.")
       .def_readonly("t", &SimulationResult::t, "(n,) time [s]")
       .def_readonly("p_W", &SimulationResult::p_W, "(n, 3) centre of mass position in W [m]")
       .def_readonly("q_WB", &SimulationResult::q_WB, "(n, 4) attitude, (x, y, z, w) unless scalar_first")
@@ -298,7 +379,24 @@ void bind_dynamics(py::module_& m) {
       .def_readonly("unconverged_steps", &SimulationResult::unconverged_steps,
                     "number of steps whose implicit solve stopped at its iteration cap (implicit_midpoint; "
                     "0 for explicit methods); simulate warns RuntimeWarning when > 0")
-      .def_readonly("elapsed_seconds", &SimulationResult::elapsed_seconds, "wall time of the C++ stepping loop [s]");
+      .def_readonly("elapsed_seconds", &SimulationResult::elapsed_seconds, "wall time of the C++ stepping loop [s]")
+      .def("__repr__", &result_repr)
+      .def(py::pickle(&result_state, &result_from_state))
+      // the table lives in Python (rigiddyn/trajectory.py): one definition of the columns for CSV, npz,
+      // Parquet and pandas
+      .def(
+          "to_dataframe",
+          [](py::object self, py::handle scalar_first) {
+            return py::module_::import("rigiddyn.trajectory")
+                .attr("to_dataframe")(self, py_io::as_bool(scalar_first, "scalar_first"));
+          },
+          py::arg("scalar_first") = false,
+          "A pandas.DataFrame of the records (needs pandas: pip install 'rigiddyn[dataframe]'): one row per "
+          "record, one column per scalar with its unit, as the CSV of `python -m rigiddyn simulate`: 't [s]' "
+          "(a column, not the index), 'p_W_x [m]' .. 'q_WB_x' .. 'q_WB_w', 'v_W_x [m/s]' .., 'w_B_x [rad/s]' "
+          ".., 'kinetic_energy [J]', 'total_energy [J]', 'angular_momentum_norm [kg m^2/s]', "
+          "'quaternion_norm_error', 'work [J]'. scalar_first=True for a result of simulate(..., "
+          "scalar_first=True) (q_WB as (w, x, y, z); the result does not record it).");
 
 #define RIGIDDYN_SIMULATE_ARGS                                                                              \
   py::arg("model"), py::arg("initial"), py::arg("dt"), py::arg("steps"), py::arg("method") = "rk4",      \

@@ -1,8 +1,11 @@
 // Python bindings of the exact layer: elliptic functions and the torque-free rigid body.
 #include "bindings.hpp"
 #include "numpy_io.hpp"
+#include "repr.hpp"
+#include "rigiddyn/dynamics/rigid_body_dynamics.hpp"  // KineticEnergy
 #include "rigiddyn/exact/elliptic.hpp"
 #include "rigiddyn/exact/free_body.hpp"
+#include "value_type.hpp"
 
 #include <optional>
 
@@ -28,10 +31,16 @@ double as_characteristic(py::handle n) {
   return value;
 }
 
-// The solution together with the quaternion order chosen at construction.
+// The solution together with its constructor's arguments as given (for ==, repr and pickle: the
+// constructor is deterministic, so equal arguments build a bitwise equal solution) and the
+// quaternion order chosen at construction.
 struct PyTorqueFreeSolution {
   TorqueFreeSolution solution;
+  Eigen::Matrix3d inertia;  // I_B [kg m^2] as given
+  Eigen::Quaterniond q_WB;  // as given (the solution normalises its copy)
+  Eigen::Vector3d w_B;      // [rad/s]
   bool scalar_first;
+  InertiaCheck check;
 };
 
 py::object jacobi_ellipj_py(py::handle u, py::handle m, py::handle mc) {
@@ -71,11 +80,40 @@ py::object ellippi_am_py(py::handle u, py::handle n, py::handle m, py::handle mc
   return py_io::finite_result(out, "ellippi_am");
 }
 
-PyTorqueFreeSolution make_solution(py::handle inertia, py::handle q_WB, py::handle w_B, py::handle scalar_first) {
+PyTorqueFreeSolution make_solution(py::handle inertia, py::handle q_WB, py::handle w_B, py::handle scalar_first,
+                                   py::handle check) {
   const bool first = py_io::as_bool(scalar_first, "scalar_first");
-  return {TorqueFreeSolution(py_io::as_matrix3(inertia, "inertia"), py_io::as_quaternion(q_WB, "q_WB", first),
-                             py_io::as_vector3(w_B, "w_B")),
-          first};
+  const Eigen::Matrix3d I_B = py_io::as_matrix3(inertia, "inertia");
+  const Eigen::Quaterniond q = py_io::as_quaternion(q_WB, "q_WB", first);
+  const Eigen::Vector3d w = py_io::as_vector3(w_B, "w_B");
+  const InertiaCheck c =
+      py_io::as_instance<InertiaCheck>(check, "check", "InertiaCheck.physical or InertiaCheck.allow_unrealizable");
+  return {TorqueFreeSolution(I_B, q, w, c), I_B, q, w, first, c};
+}
+
+bool same_arguments(const PyTorqueFreeSolution& a, const PyTorqueFreeSolution& b) {
+  return same(a.inertia, b.inertia) && same(a.q_WB.coeffs(), b.q_WB.coeffs()) && same(a.w_B, b.w_B) &&
+         a.scalar_first == b.scalar_first && a.check == b.check;
+}
+
+std::string solution_repr(const PyTorqueFreeSolution& s) {
+  std::string text = repr_call("TorqueFreeSolution", {{"inertia", py_io::to_array(s.inertia)},
+                                                      {"q_WB", py_io::to_array(s.q_WB, s.scalar_first)},
+                                                      {"w_B", py_io::to_array(s.w_B)},
+                                                      {"scalar_first", py::bool_(s.scalar_first)}});
+  if (s.check == InertiaCheck::physical) return text;
+  return text.substr(0, text.size() - 1) + ", check=InertiaCheck.allow_unrealizable)";
+}
+
+// Pickled state: (inertia, q_WB (in the order chosen), w_B, scalar_first, allow_unrealizable).
+py::tuple solution_state(const PyTorqueFreeSolution& s) {
+  return py::make_tuple(py_io::to_array(s.inertia), py_io::to_array(s.q_WB, s.scalar_first), py_io::to_array(s.w_B),
+                        s.scalar_first, s.check == InertiaCheck::allow_unrealizable);
+}
+PyTorqueFreeSolution solution_from_state(const py::tuple& state) {
+  const py::tuple s = pickled_state(state, 5, "TorqueFreeSolution");
+  const InertiaCheck check = s[4].cast<bool>() ? InertiaCheck::allow_unrealizable : InertiaCheck::physical;
+  return make_solution(s[0], s[1], s[2], s[3], py::cast(check));
 }
 
 py::tuple state_at_py(const PyTorqueFreeSolution& self, py::handle t) {
@@ -144,7 +182,11 @@ void bind_exact(pybind11::module_& m) {
                                    "functions, attitude by Legendre's third integral (Landau & Lifshitz, Mechanics §37;\n"
                                    "Celledoni, Fassò, Säfström, Zanna 2008; docs/references.md), at any time t [s].")
       .def(py::init(&make_solution), py::arg("inertia"), py::arg("q_WB"), py::arg("w_B"), py::arg("scalar_first") = false,
-           "inertia: (3, 3) rotational inertia about the centre of mass, in B [kg m^2], symmetric positive definite;\n"
+           py::arg("check") = InertiaCheck::physical,
+           "inertia: (3, 3) rotational inertia about the centre of mass, in B [kg m^2], symmetric positive definite\n"
+           "and, under check=InertiaCheck.physical (default), with principal moments satisfying the triangle\n"
+           "inequality I1 + I2 >= I3 (ValueError naming the moments otherwise; check=\n"
+           "InertiaCheck.allow_unrealizable opts in to test problems such as diag(2, 1, 2/3));\n"
            "q_WB: (4,) initial attitude, (x, y, z, w) or (w, x, y, z) if scalar_first; w_B: (3,) initial angular\n"
            "velocity of B in W, expressed in B [rad/s]. Any finite magnitudes (the motion is computed in scaled\n"
            "units); ValueError naming w_B when a rate of the motion exceeds the double range.")
@@ -162,7 +204,7 @@ void bind_exact(pybind11::module_& m) {
                              "Complement 1 - m, computed without cancellation.")
       .def_property_readonly("principal_moments",
                              [](const PyTorqueFreeSolution& s) { return py_io::to_array(s.solution.principal_moments()); },
-                             "(3,) principal moments I1 <= I2 <= I3 [kg m^2].")
+                             "(3,) principal moments I1 <= I2 <= I3 [kg m^2] about the centre of mass.")
       .def_property_readonly("R_BP", [](const PyTorqueFreeSolution& s) { return py_io::to_array(s.solution.R_BP()); },
                              "(3, 3) rotation from the sorted principal frame P to B (columns: principal axes in B).")
       .def_property_readonly(
@@ -170,13 +212,22 @@ void bind_exact(pybind11::module_& m) {
           [](const PyTorqueFreeSolution& s) {
             return py_io::finite_result(s.solution.angular_momentum_W(), "TorqueFreeSolution.angular_momentum_W");
           },
-          "(3,) constant spatial angular momentum L_W [kg m^2/s]; inf with a RuntimeWarning beyond the double range.")
+          "(3,) constant angular momentum about the centre of mass, expressed in W, L_W [kg m^2/s]; inf with a\n"
+          "RuntimeWarning beyond the double range.")
       .def_property_readonly(
           "kinetic_energy",
           [](const PyTorqueFreeSolution& s) {
-            return py_io::finite_result(s.solution.kinetic_energy(), "TorqueFreeSolution.kinetic_energy");
+            // the centre of mass does not enter the torque-free rotation: its kinetic energy is not part of it
+            return KineticEnergy{0.0, py_io::finite_result(s.solution.kinetic_energy(), "TorqueFreeSolution.kinetic_energy")};
           },
-          "Constant kinetic energy of rotation [J]; inf with a RuntimeWarning beyond the double range.");
+          "Constant KineticEnergy of the rotation [J]: rotational 1/2 w_B . I_B w_B, translational 0 (the\n"
+          "centre of mass is not part of this solution); inf with a RuntimeWarning beyond the double range.")
+      .def(
+          "__eq__",
+          [](const PyTorqueFreeSolution& a, py::handle b) { return equal_or_not_implemented(a, b, &same_arguments); },
+          py::is_operator(), "Built from exactly equal arguments (then every state is bitwise equal).")
+      .def("__repr__", &solution_repr)
+      .def(py::pickle(&solution_state, &solution_from_state));
 }
 
 }  // namespace rigiddyn::bindings

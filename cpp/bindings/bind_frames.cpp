@@ -10,11 +10,13 @@
 
 #include "bindings.hpp"
 #include "numpy_io.hpp"
+#include "repr.hpp"
 #include "rigiddyn/check.hpp"
 #include "rigiddyn/frames/frame_kinematics.hpp"
 #include "rigiddyn/frames/frame_motion.hpp"
 #include "rigiddyn/frames/frame_tree.hpp"
 #include "rigiddyn/frames/point_kinematics.hpp"
+#include "value_type.hpp"
 
 namespace rigiddyn::bindings {
 
@@ -58,10 +60,11 @@ FrameKinematics kinematics_from_python(py::handle value) {
   return K;
 }
 
-FrameMotion motion_from_python(py::handle kinematics_at) {
-  std::shared_ptr<py::object> f = hold(py_io::as_callable(
-      kinematics_at, "kinematics_at", "a callable t -> FrameKinematics or 6-tuple (R_PF, w_PF_P, ..., a_PF_P)"));
-  return FrameMotion([f](double t) {
+// The function of a FrameMotion given by a Python callable (named, so that repr and pickle find the
+// callable again through FrameMotion::function().target<PythonKinematics>()).
+struct PythonKinematics {
+  std::shared_ptr<py::object> f;
+  FrameKinematics operator()(double t) const {
     py::gil_scoped_acquire gil;
     const py::object value = (*f)(t);
     try {
@@ -69,7 +72,12 @@ FrameMotion motion_from_python(py::handle kinematics_at) {
     } catch (const py::value_error& e) {  // as std::invalid_argument, so the tree names the frame
       throw std::invalid_argument(e.what());
     }
-  });
+  }
+};
+
+FrameMotion motion_from_python(py::handle kinematics_at) {
+  return FrameMotion(PythonKinematics{hold(py_io::as_callable(
+      kinematics_at, "kinematics_at", "a callable t -> FrameKinematics or 6-tuple (R_PF, w_PF_P, ..., a_PF_P)"))});
 }
 
 // Bound arguments of the classes of this layer.
@@ -102,6 +110,153 @@ PointAcceleration checked(const PointAcceleration& a, const char* quantity) {
   return a;
 }
 
+// FrameKinematics: its six fields are its state (pickle, ==, repr).
+py::tuple kinematics_state(const FrameKinematics& K) {
+  return py::make_tuple(to_array(K.R_PF), to_array(K.w_PF_P), to_array(K.alpha_PF_P), to_array(K.p_PF_P),
+                        to_array(K.v_PF_P), to_array(K.a_PF_P));
+}
+FrameKinematics kinematics_from_state(const py::tuple& state) {
+  const py::tuple s = pickled_state(state, 6, "FrameKinematics");
+  FrameKinematics K;
+  K.R_PF = as_matrix3(s[0], "R_PF");
+  K.w_PF_P = as_vector3(s[1], "w_PF_P");
+  K.alpha_PF_P = as_vector3(s[2], "alpha_PF_P");
+  K.p_PF_P = as_vector3(s[3], "p_PF_P");
+  K.v_PF_P = as_vector3(s[4], "v_PF_P");
+  K.a_PF_P = as_vector3(s[5], "a_PF_P");
+  check_frame_kinematics(K);
+  return K;
+}
+bool same_kinematics(const FrameKinematics& a, const FrameKinematics& b) {
+  return same(a.R_PF, b.R_PF) && same(a.w_PF_P, b.w_PF_P) && same(a.alpha_PF_P, b.alpha_PF_P) &&
+         same(a.p_PF_P, b.p_PF_P) && same(a.v_PF_P, b.v_PF_P) && same(a.a_PF_P, b.a_PF_P);
+}
+std::string kinematics_repr(const FrameKinematics& K) {
+  return repr_call("FrameKinematics", {{"R_PF", to_array(K.R_PF)},
+                                       {"w_PF_P", to_array(K.w_PF_P)},
+                                       {"alpha_PF_P", to_array(K.alpha_PF_P)},
+                                       {"p_PF_P", to_array(K.p_PF_P)},
+                                       {"v_PF_P", to_array(K.v_PF_P)},
+                                       {"a_PF_P", to_array(K.a_PF_P)}});
+}
+
+// A FrameMotion's parameters, by how it was built: ("fixed", R_PF, p_PF_P), ("constant_rotation",
+// axis_P, rate, R_PF0, p_PF_P) or ("function", kinematics_at); TypeError for a C++ function.
+py::tuple motion_state(const FrameMotion& motion) {
+  const FrameMotion::Function& f = motion.function();
+  if (const auto* fixed = f.target<FixedPlacement>()) {
+    return py::make_tuple("fixed", to_array(fixed->R_PF), to_array(fixed->p_PF_P));
+  }
+  if (const auto* rotation = f.target<ConstantRotation>()) {
+    return py::make_tuple("constant_rotation", to_array(rotation->axis_P), rotation->rate, to_array(rotation->R_PF0),
+                          to_array(rotation->p_PF_P));
+  }
+  if (const auto* user = f.target<PythonKinematics>()) return py::make_tuple("function", *user->f);
+  throw py::type_error("FrameMotion: expected a motion built by FrameMotion(...), FrameMotion.fixed or "
+                       "FrameMotion.constant_rotation, got one built in C++ from a function");
+}
+
+// The pickled state: motion_state, with a TypeError saying what to do when the callable of a
+// general motion cannot be pickled (a lambda or a closure).
+py::tuple motion_pickled_state(const FrameMotion& motion) {
+  py::tuple state = motion_state(motion);
+  if (state[0].cast<std::string>() != "function") return state;
+  try {
+    py::module_::import("pickle").attr("dumps")(state[1]);
+  } catch (py::error_already_set& e) {
+    throw py::type_error("FrameMotion: cannot pickle its kinematics_at " + std::string(py::repr(state[1])) + " (" +
+                         e.what() + "); pickle saves functions defined at module level (not lambdas or closures), "
+                         "or use FrameMotion.fixed / FrameMotion.constant_rotation");
+  }
+  return state;
+}
+
+FrameMotion motion_from_state(const py::tuple& state) {
+  if (py::len(state) == 0) throw py::value_error("FrameMotion state: expected a non-empty tuple, got ()");
+  const std::string kind = py::str(state[0]);
+  if (kind == "fixed") {
+    const py::tuple s = pickled_state(state, 3, "FrameMotion.fixed");
+    return FrameMotion::fixed(as_matrix3(s[1], "R_PF"), as_vector3(s[2], "p_PF_P"));
+  }
+  if (kind == "constant_rotation") {
+    const py::tuple s = pickled_state(state, 5, "FrameMotion.constant_rotation");
+    return FrameMotion::constant_rotation(as_vector3(s[1], "axis_P"), as_scalar(s[2], "rate"),
+                                          as_matrix3(s[3], "R_PF0"), as_vector3(s[4], "p_PF_P"));
+  }
+  if (kind == "function") return motion_from_python(pickled_state(state, 2, "FrameMotion")[1]);
+  throw py::value_error("FrameMotion state: expected 'fixed', 'constant_rotation' or 'function' first, got " +
+                        std::string(py::repr(state[0])));
+}
+
+// Equal when built the same way from exactly equal parameters (a general motion: from equal callables).
+bool same_motion(const FrameMotion& a, const FrameMotion& b) {
+  const py::tuple x = motion_state(a), y = motion_state(b);
+  if (py::len(x) != py::len(y) || !x[0].equal(y[0])) return false;
+  const py::module_ np = py::module_::import("numpy");
+  for (size_t i = 1; i < py::len(x); ++i) {
+    if (!(x[0].cast<std::string>() == "function" ? x[i].equal(y[i]) : np.attr("array_equal")(x[i], y[i]).cast<bool>())) {
+      return false;
+    }
+  }
+  return true;
+}
+
+std::string motion_repr(const FrameMotion& motion) {
+  const py::tuple s = motion_state(motion);
+  const std::string kind = s[0].cast<std::string>();
+  if (kind == "fixed") return repr_call("FrameMotion.fixed", {{"R_PF", s[1]}, {"p_PF_P", s[2]}});
+  if (kind == "constant_rotation") {
+    return repr_call("FrameMotion.constant_rotation",
+                     {{"axis_P", s[1]}, {"rate", s[2]}, {"R_PF0", s[3]}, {"p_PF_P", s[4]}});
+  }
+  return repr_call("FrameMotion", {{"kinematics_at", s[1]}});
+}
+
+// A FrameTree as (name, parent, motion) triples of its frames but 'world', in the order added.
+py::list tree_frames(const FrameTree& tree) {
+  py::list frames;
+  for (const std::string& name : tree.frame_names()) {
+    if (name != FrameTree::world) frames.append(py::make_tuple(name, tree.parent(name), tree.motion(name)));
+  }
+  return frames;
+}
+
+// The tree of such triples: every frame is added under 'world', then moved under its parent, so that
+// a parent may come after its child (as after set_parent); the order of the names is kept.
+FrameTree tree_from_frames(py::handle frames) {
+  FrameTree tree;
+  if (frames.is_none()) return tree;
+  const char* expected = "a list of (name, parent, FrameMotion) triples";
+  if (!py::isinstance<py::sequence>(frames) || py::isinstance<py::str>(frames)) {
+    py_io::throw_type_error("frames", expected, frames);
+  }
+  const py::sequence items = py::reinterpret_borrow<py::sequence>(frames);
+  for (size_t i = 0; i < py::len(items); ++i) {
+    const py::object item = items[i];
+    const std::string name = "frames[" + std::to_string(i) + "]";
+    if (!py::isinstance<py::tuple>(item) || py::len(item) != 3) py_io::throw_type_error(name, expected, item);
+    tree.add_frame(as_string(item[py::int_(0)], name + "[0]"), FrameTree::world,
+                   py_io::as_instance<FrameMotion>(item[py::int_(2)], name + "[2]", "a FrameMotion"));
+  }
+  for (size_t i = 0; i < py::len(items); ++i) {
+    const py::object item = items[i];
+    const std::string name = "frames[" + std::to_string(i) + "]";
+    const std::string parent = as_string(item[py::int_(1)], name + "[1]");
+    if (parent != FrameTree::world) {
+      tree.set_parent(as_string(item[py::int_(0)], name + "[0]"), parent, item[py::int_(2)].cast<const FrameMotion&>());
+    }
+  }
+  return tree;
+}
+
+bool same_tree(const FrameTree& a, const FrameTree& b) {
+  if (a.frame_names() != b.frame_names()) return false;
+  for (const std::string& name : a.frame_names()) {
+    if (a.parent(name) != b.parent(name) || !same_motion(a.motion(name), b.motion(name))) return false;
+  }
+  return true;
+}
+
 void bind_frame_kinematics(py::module_& m) {
   py::class_<FrameKinematics>(m, "FrameKinematics",
                               "Frame F relative to frame P at one instant (P = the parent of a FrameMotion, or the\n"
@@ -132,7 +287,13 @@ void bind_frame_kinematics(py::module_& m) {
       .def_property_readonly("v_PF_P", [](const FrameKinematics& K) { return to_array(K.v_PF_P); },
                              "(3,) velocity of F's origin seen from P [m/s], expressed in P.")
       .def_property_readonly("a_PF_P", [](const FrameKinematics& K) { return to_array(K.a_PF_P); },
-                             "(3,) acceleration of F's origin seen from P [m/s^2], expressed in P.");
+                             "(3,) acceleration of F's origin seen from P [m/s^2], expressed in P.")
+      .def(
+          "__eq__",
+          [](const FrameKinematics& a, py::handle b) { return equal_or_not_implemented(a, b, &same_kinematics); },
+          py::is_operator(), "Exact equality of every field.")
+      .def("__repr__", &kinematics_repr)
+      .def(py::pickle(&kinematics_state, &kinematics_from_state));
 
   m.def(
       "compose_kinematics",
@@ -158,43 +319,96 @@ void bind_point_terms(py::module_& m) {
   py::class_<PointVelocity>(m, "PointVelocity",
                             "Velocity of a point Q moving in a frame F, seen from a frame A, term by term\n"
                             "(\"Rigid body kinematics and dynamics\" notes (4.38)): total = origin + rotational +\n"
-                            "relative. Each (3,) [m/s], all expressed in the same frame (the query's `expressed_in`).")
+                            "relative. Each (3,) [m/s], all expressed in the same frame E (the query's `expressed_in`;\n"
+                            "A for the free function point_velocity).")
+      .def(py::init([](py::handle origin, py::handle rotational, py::handle relative) {
+             return PointVelocity{as_vector3(origin, "origin"), as_vector3(rotational, "rotational"),
+                                  as_vector3(relative, "relative")};
+           }),
+           py::arg("origin"), py::arg("rotational"), py::arg("relative"), "From its terms (3,) [m/s], all in one frame.")
       .def_property_readonly("origin", [](const PointVelocity& v) { return to_array(v.origin); },
-                             "velocity of F's origin seen from A")
+                             "v_AF_E: velocity of F's origin seen from A, expressed in E [m/s]")
       .def_property_readonly("rotational", [](const PointVelocity& v) { return to_array(v.rotational); },
-                             "w_AF x r, r = position of Q relative to F's origin")
+                             "w_AF x r_FQ, r_FQ = position of Q relative to F's origin, expressed in E [m/s]")
       .def_property_readonly("relative", [](const PointVelocity& v) { return to_array(v.relative); },
-                             "velocity of Q seen from F")
+                             "v_FQ_E: velocity of Q seen from F, expressed in E [m/s]")
       .def_property_readonly("total", [](const PointVelocity& v) { return finite_result(v.total(), "PointVelocity.total"); },
-                             "velocity of Q seen from A (sum of the terms)")
-      .def("__repr__", [](const PointVelocity& v) {
-        return "PointVelocity(origin=" + format_value(v.origin.transpose()) + ", rotational=" +
-               format_value(v.rotational.transpose()) + ", relative=" + format_value(v.relative.transpose()) + ")";
-      });
+                             "v_AQ_E: velocity of Q seen from A (sum of the terms), expressed in E [m/s]")
+      .def(
+          "__eq__",
+          [](const PointVelocity& a, py::handle b) {
+            return equal_or_not_implemented(a, b, [](const PointVelocity& x, const PointVelocity& y) {
+              return same(x.origin, y.origin) && same(x.rotational, y.rotational) && same(x.relative, y.relative);
+            });
+          },
+          py::is_operator(), "Exact equality of every term.")
+      .def("__repr__",
+           [](const PointVelocity& v) {
+             return repr_call("PointVelocity", {{"origin", to_array(v.origin)},
+                                                {"rotational", to_array(v.rotational)},
+                                                {"relative", to_array(v.relative)}});
+           })
+      .def(py::pickle(
+          [](const PointVelocity& v) { return py::make_tuple(to_array(v.origin), to_array(v.rotational), to_array(v.relative)); },
+          [](const py::tuple& state) {
+            const py::tuple s = pickled_state(state, 3, "PointVelocity");
+            return PointVelocity{as_vector3(s[0], "origin"), as_vector3(s[1], "rotational"), as_vector3(s[2], "relative")};
+          }));
 
   py::class_<PointAcceleration>(m, "PointAcceleration",
                                 "Acceleration of a point Q moving in a frame F, seen from a frame A, term by term\n"
                                 "(\"Rigid body kinematics and dynamics\" notes (4.39); Craig's \"Rigid Body Dynamics\"\n"
                                 "slides): total = origin + tangential + centripetal + relative + coriolis. Each (3,)\n"
-                                "[m/s^2], all expressed in the query's `expressed_in` frame.")
+                                "[m/s^2], all expressed in one frame E (the query's `expressed_in`; A for the free\n"
+                                "function point_acceleration).")
+      .def(py::init([](py::handle origin, py::handle tangential, py::handle centripetal, py::handle relative,
+                       py::handle coriolis) {
+             return PointAcceleration{as_vector3(origin, "origin"), as_vector3(tangential, "tangential"),
+                                      as_vector3(centripetal, "centripetal"), as_vector3(relative, "relative"),
+                                      as_vector3(coriolis, "coriolis")};
+           }),
+           py::arg("origin"), py::arg("tangential"), py::arg("centripetal"), py::arg("relative"), py::arg("coriolis"),
+           "From its terms (3,) [m/s^2], all in one frame.")
       .def_property_readonly("origin", [](const PointAcceleration& a) { return to_array(a.origin); },
-                             "acceleration of F's origin seen from A")
+                             "a_AF_E: acceleration of F's origin seen from A, expressed in E [m/s^2]")
       .def_property_readonly("tangential", [](const PointAcceleration& a) { return to_array(a.tangential); },
-                             "alpha_AF x r")
+                             "alpha_AF x r_FQ (r_FQ: Q relative to F's origin), expressed in E [m/s^2]")
       .def_property_readonly("centripetal", [](const PointAcceleration& a) { return to_array(a.centripetal); },
-                             "w_AF x (w_AF x r)")
+                             "w_AF x (w_AF x r_FQ), expressed in E [m/s^2]")
       .def_property_readonly("relative", [](const PointAcceleration& a) { return to_array(a.relative); },
-                             "acceleration of Q seen from F")
+                             "a_FQ_E: acceleration of Q seen from F, expressed in E [m/s^2]")
       .def_property_readonly("coriolis", [](const PointAcceleration& a) { return to_array(a.coriolis); },
-                             "2 w_AF x v_rel, v_rel = velocity of Q seen from F")
+                             "2 w_AF x v_FQ (v_FQ: velocity of Q seen from F), expressed in E [m/s^2]")
       .def_property_readonly("total", [](const PointAcceleration& a) { return finite_result(a.total(), "PointAcceleration.total"); },
-                             "acceleration of Q seen from A (sum of the terms)")
-      .def("__repr__", [](const PointAcceleration& a) {
-        return "PointAcceleration(origin=" + format_value(a.origin.transpose()) + ", tangential=" +
-               format_value(a.tangential.transpose()) + ", centripetal=" + format_value(a.centripetal.transpose()) +
-               ", relative=" + format_value(a.relative.transpose()) + ", coriolis=" +
-               format_value(a.coriolis.transpose()) + ")";
-      });
+                             "a_AQ_E: acceleration of Q seen from A (sum of the terms), expressed in E [m/s^2]")
+      .def(
+          "__eq__",
+          [](const PointAcceleration& a, py::handle b) {
+            return equal_or_not_implemented(a, b, [](const PointAcceleration& x, const PointAcceleration& y) {
+              return same(x.origin, y.origin) && same(x.tangential, y.tangential) &&
+                     same(x.centripetal, y.centripetal) && same(x.relative, y.relative) && same(x.coriolis, y.coriolis);
+            });
+          },
+          py::is_operator(), "Exact equality of every term.")
+      .def("__repr__",
+           [](const PointAcceleration& a) {
+             return repr_call("PointAcceleration", {{"origin", to_array(a.origin)},
+                                                    {"tangential", to_array(a.tangential)},
+                                                    {"centripetal", to_array(a.centripetal)},
+                                                    {"relative", to_array(a.relative)},
+                                                    {"coriolis", to_array(a.coriolis)}});
+           })
+      .def(py::pickle(
+          [](const PointAcceleration& a) {
+            return py::make_tuple(to_array(a.origin), to_array(a.tangential), to_array(a.centripetal),
+                                  to_array(a.relative), to_array(a.coriolis));
+          },
+          [](const py::tuple& state) {
+            const py::tuple s = pickled_state(state, 5, "PointAcceleration");
+            return PointAcceleration{as_vector3(s[0], "origin"), as_vector3(s[1], "tangential"),
+                                     as_vector3(s[2], "centripetal"), as_vector3(s[3], "relative"),
+                                     as_vector3(s[4], "coriolis")};
+          }));
 
   m.def(
       "point_velocity",
@@ -263,7 +477,16 @@ void bind_frame_motion(py::module_& m) {
               throw py::value_error(std::string("motion at t=") + format_value(time) + ": " + e.what());
             }
           },
-          py::arg("t"), "F relative to P at time t [s] (not checked: the tree checks the values it uses).");
+          py::arg("t"), "F relative to P at time t [s] (not checked: the tree checks the values it uses).")
+      .def(
+          "__eq__", [](const FrameMotion& a, py::handle b) { return equal_or_not_implemented(a, b, &same_motion); },
+          py::is_operator(), "Built the same way from exactly equal parameters (or equal callables).")
+      .def("__repr__", &motion_repr)
+      .def("__copy__", [](const FrameMotion& motion) { return FrameMotion(motion); })
+      .def(
+          "__deepcopy__", [](const FrameMotion& motion, py::handle) { return FrameMotion(motion); }, py::arg("memo"),
+          "A copy; a general motion's callable is shared, as copy.deepcopy shares functions.")
+      .def(py::pickle(&motion_pickled_state, &motion_from_state));
 }
 
 void bind_frame_tree(py::module_& m) {
@@ -273,7 +496,27 @@ void bind_frame_tree(py::module_& m) {
                         "frame A (`relative_to`) at time t [s], with results expressed in `expressed_in` E.\n"
                         "Unknown names, duplicates and cycles raise ValueError. Trees of any depth (every walk\n"
                         "is iterative).")
-      .def(py::init<>(), "A tree holding only 'world'.")
+      .def(py::init(&tree_from_frames), py::arg("frames") = py::none(),
+           "A tree holding 'world' and the frames: a list of (name, parent, FrameMotion) triples (None: none),\n"
+           "as repr shows them; a parent may come after its child.")
+      .def(
+          "motion", [](const FrameTree& tree, py::handle name) { return tree.motion(as_string(name, "name")); },
+          py::arg("name"), "The FrameMotion placing frame `name` in its parent ('world': fixed at the identity).")
+      .def(
+          "__eq__", [](const FrameTree& a, py::handle b) { return equal_or_not_implemented(a, b, &same_tree); },
+          py::is_operator(), "Same names in the same order, same parents, equal motions.")
+      .def("__repr__", [](const FrameTree& tree) { return repr_call("FrameTree", {{"frames", tree_frames(tree)}}); })
+      .def("__copy__", [](const FrameTree& tree) { return FrameTree(tree); })
+      .def(
+          "__deepcopy__", [](const FrameTree& tree, py::handle) { return FrameTree(tree); }, py::arg("memo"),
+          "A copy; the motions' callables are shared, as copy.deepcopy shares functions.")
+      .def(py::pickle(
+          [](const FrameTree& tree) {
+            py::list frames = tree_frames(tree);
+            for (const py::handle frame : frames) motion_pickled_state(frame.cast<py::tuple>()[2].cast<const FrameMotion&>());
+            return py::make_tuple(frames);
+          },
+          [](const py::tuple& state) { return tree_from_frames(pickled_state(state, 1, "FrameTree")[0]); }))
       .def_property_readonly_static("world", [](const py::object&) { return FrameTree::world; },
                                     "The root's name, 'world'.")
       .def(

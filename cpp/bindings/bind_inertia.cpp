@@ -15,6 +15,8 @@
 
 #include "bindings.hpp"
 #include "numpy_io.hpp"
+#include "repr.hpp"
+#include "value_type.hpp"
 #include "rigiddyn/inertia/density.hpp"
 #include "rigiddyn/inertia/mesh.hpp"
 #include "rigiddyn/inertia/point_masses.hpp"
@@ -64,16 +66,63 @@ MeshFaces as_faces(py::handle obj) {
 
 using py_io::read_only;
 
+// MeshWeldWarning, the category of the warning saying what welding changed in a mesh (set by
+// bind_mesh_and_density; the module keeps the class alive).
+py::handle mesh_weld_warning;
+
+// Warns `category` at the first Python frame outside the rigiddyn package (the user's call, also
+// through rigiddyn's Python wrappers; what warnings.warn(skip_file_prefixes=...) does in Python 3.12).
+void warn_at_caller(py::handle category, const std::string& message) {
+  py::object frame = py::module_::import("sys").attr("_getframe")(0);
+  int stacklevel = 1;
+  for (; !frame.is_none(); frame = frame.attr("f_back"), ++stacklevel) {
+    const std::string module = py::str(frame.attr("f_globals").attr("get")("__name__", ""));
+    if (module != "rigiddyn" && module.rfind("rigiddyn.", 0) != 0) break;
+  }
+  if (PyErr_WarnEx(category.ptr(), message.c_str(), stacklevel) < 0) throw py::error_already_set();
+}
+
+// A MeshWeldWarning saying what the weld changed, when it changed anything.
+void warn_if_welded(const char* function, const WeldReport& report) {
+  if (report.welded_vertices == 0 && report.dropped_faces == 0) return;
+  warn_at_caller(mesh_weld_warning, std::string(function) + ": welded " + std::to_string(report.welded_vertices) +
+                                        " vertices lying within weld_tolerance " + format_value(report.tolerance) +
+                                        " m of another (duplicates, as in STL files) and dropped " +
+                                        std::to_string(report.dropped_faces) +
+                                        " faces left degenerate; weld_tolerance=0 turns welding off");
+}
+
+// The weld_tolerance argument: None (default_weld_tolerance, relative to the mesh) or a distance [m].
+std::optional<double> as_weld_tolerance(py::handle obj) { return py_io::as_optional_scalar(obj, "weld_tolerance"); }
+
+using MeshBuild = SpatialInertia (*)(const Eigen::Ref<const MeshVertices>&, const Eigen::Ref<const MeshFaces>&,
+                                     MassOrDensity, std::optional<double>, WeldReport*);
+
 // A body from a triangle mesh (solid_mesh or mesh_shell): vertices (n, 3) [m], faces (f, 3), exactly
-// one of mass= [kg] / density=; the mesh sums run without the GIL.
-template <SpatialInertia (*Build)(const Eigen::Ref<const MeshVertices>&, const Eigen::Ref<const MeshFaces>&,
-                                  MassOrDensity)>
-SpatialInertia mesh_body(py::handle vertices, py::handle faces, py::handle mass, py::handle density) {
+// one of mass= [kg] / density=, weld_tolerance; the mesh sums run without the GIL; warns what the weld changed.
+SpatialInertia mesh_body(MeshBuild build, const char* function, py::handle vertices, py::handle faces,
+                         py::handle mass, py::handle density, py::handle weld_tolerance) {
   const PointRows v = as_points(vertices, "vertices");
   const MeshFaces f = as_faces(faces);
   const MassOrDensity md = mass_or_density(mass, density);
-  py::gil_scoped_release release;
-  return Build(v, f, md);
+  const std::optional<double> tolerance = as_weld_tolerance(weld_tolerance);
+  WeldReport report;
+  const SpatialInertia body = [&] {
+    py::gil_scoped_release release;
+    return build(v, f, md, tolerance, &report);
+  }();
+  warn_if_welded(function, report);
+  return body;
+}
+
+// Indices as a read-only int64 numpy array of the given shape.
+template <typename Indices>
+py::array_t<std::int64_t> index_array(const Indices& values, std::vector<py::ssize_t> shape) {
+  py::array_t<std::int64_t> out(shape);
+  std::int64_t* data = out.mutable_data();
+  for (py::ssize_t k = 0; k < out.size(); ++k) data[k] = static_cast<std::int64_t>(values.data()[k]);
+  out.attr("flags").attr("writeable") = false;
+  return out;
 }
 
 InertiaCheck check_arg(py::handle check) {
@@ -116,6 +165,101 @@ const char* kCheckDoc =
     "check: InertiaCheck.physical (default: triangle inequality required) or\n"
     "InertiaCheck.allow_unrealizable (opt-in: symmetric PSD only, e.g. I = diag(2, 1, 2/3)).";
 
+// Principal axes as Python sees them: one inertia's (3,) moments and (3,3) axes, or the (n,3) and
+// (n,3,3) arrays of a stack, read-only. Unpacks as (moments, axes).
+struct PyPrincipalAxes {
+  Array moments;
+  Array axes;
+};
+
+// `value` itself, made read-only (a PrincipalAxes is a value: its arrays are not written to).
+Array frozen(Array value) {
+  value.attr("flags").attr("writeable") = false;
+  return value;
+}
+
+// From user arrays: copies, checked to be (3,)/(3,3) or (n,3)/(n,3,3) with the same n.
+PyPrincipalAxes make_principal_axes(py::handle moments_arg, py::handle axes_arg) {
+  const py_io::Stack moments = py_io::as_stack(moments_arg, "moments", {3});
+  const py_io::Stack axes = py_io::as_stack(axes_arg, "axes", {3, 3});
+  if (moments.stacked != axes.stacked || moments.n != axes.n) {
+    const std::string shape = moments.stacked ? "(" + std::to_string(moments.n) + ", 3, 3)" : "(3, 3)";
+    throw py::value_error("axes: expected shape " + shape + " (as moments), got " +
+                          std::string(py::str(axes.array.attr("shape"))));
+  }
+  return {frozen(moments.array.attr("copy")()), frozen(axes.array.attr("copy")())};
+}
+
+PyPrincipalAxes to_python(const PrincipalAxes& p) { return {read_only(p.moments), read_only(p.axes)}; }
+
+py::tuple as_tuple(const PyPrincipalAxes& p) { return py::make_tuple(p.moments, p.axes); }
+
+// An InertiaReport's fields as a tuple (its pickled state), in the order of the struct.
+py::tuple report_state(const InertiaReport& r) {
+  return py::make_tuple(r.mass, r.mass_positive, r.finite, r.asymmetry, r.asymmetry_tolerance, r.symmetric,
+                        read_only(r.principal_moments), read_only(r.triangle_margins), r.condition_number,
+                        r.tolerance, r.positive_semidefinite, r.triangle_inequality);
+}
+InertiaReport report_from_state(const py::tuple& state) {
+  const py::tuple s = pickled_state(state, 12, "InertiaReport");
+  InertiaReport r;
+  r.mass = s[0].cast<double>();
+  r.mass_positive = s[1].cast<bool>();
+  r.finite = s[2].cast<bool>();
+  r.asymmetry = s[3].cast<double>();
+  r.asymmetry_tolerance = s[4].cast<double>();
+  r.symmetric = s[5].cast<bool>();
+  r.principal_moments = py_io::as_vector3(s[6], "principal_moments");
+  r.triangle_margins = py_io::as_vector3(s[7], "triangle_margins");
+  r.condition_number = s[8].cast<double>();
+  r.tolerance = s[9].cast<double>();
+  r.positive_semidefinite = s[10].cast<bool>();
+  r.triangle_inequality = s[11].cast<bool>();
+  return r;
+}
+
+void bind_principal_axes(py::module_& m) {
+  py::class_<PyPrincipalAxes>(
+      m, "PrincipalAxes",
+      "Principal moments and axes of a rotational inertia (Craig \"Principal Axes\"), in the frame the\n"
+      "inertia is expressed in: moments ascending [kg m^2], axes as columns (column k is the unit axis of\n"
+      "moments[k]; right-handed, det +1), so that I = axes @ diag(moments) @ axes.T. For a stack of n\n"
+      "inertias, arrays (n, 3) and (n, 3, 3). Unpacks as `moments, axes = principal_axes(I)`.")
+      .def(py::init(&make_principal_axes), "moments"_a, "axes"_a,
+           "From moments (3,) [kg m^2] and axes (3,3) (or (n,3), (n,3,3)); copied, read-only.")
+      .def_readonly("moments", &PyPrincipalAxes::moments, "(3,) or (n, 3) ascending [kg m^2], read-only")
+      .def_readonly("axes", &PyPrincipalAxes::axes,
+                    "(3,3) or (n,3,3): column k is the unit axis of moments[k], expressed in the inertia's frame;\n"
+                    "det +1. Read-only.")
+      .def("__len__", [](const PyPrincipalAxes&) { return 2; })
+      .def("__iter__", [](const PyPrincipalAxes& p) { return as_tuple(p).attr("__iter__")(); })
+      .def(
+          "__getitem__",
+          [](const PyPrincipalAxes& p, py::handle index) {
+            const py::tuple items = as_tuple(p);
+            return py::object(items[index]);
+          },
+          "index"_a,
+          "0: moments, 1: axes (as the tuple (moments, axes)).")
+      .def(
+          "__eq__",
+          [](const PyPrincipalAxes& p, py::handle other) {
+            return equal_or_not_implemented(p, other, [](const PyPrincipalAxes& a, const PyPrincipalAxes& b) {
+              const py::module_ np = py::module_::import("numpy");
+              return np.attr("array_equal")(a.moments, b.moments).cast<bool>() &&
+                     np.attr("array_equal")(a.axes, b.axes).cast<bool>();
+            });
+          },
+          py::is_operator())
+      .def("__repr__",
+           [](const PyPrincipalAxes& p) { return repr_call("PrincipalAxes", {{"moments", p.moments}, {"axes", p.axes}}); })
+      .def(py::pickle([](const PyPrincipalAxes& p) { return as_tuple(p); },
+                      [](const py::tuple& state) {
+                        const py::tuple s = pickled_state(state, 2, "PrincipalAxes");
+                        return make_principal_axes(s[0], s[1]);
+                      }));
+}
+
 void bind_types(py::module_& m) {
   py::enum_<InertiaCheck>(m, "InertiaCheck",
                           "What a constructor requires of a rotational inertia: `physical` (symmetric, PSD,\n"
@@ -138,7 +282,7 @@ void bind_types(py::module_& m) {
       .def_readonly("asymmetry", &InertiaReport::asymmetry, "max |I - I^T| [kg m^2]")
       .def_readonly("symmetric", &InertiaReport::symmetric)
       .def_property_readonly("principal_moments", [](const InertiaReport& r) { return read_only(r.principal_moments); },
-                             "(3,) ascending I0 <= I1 <= I2 [kg m^2]")
+                             "(3,) ascending I0 <= I1 <= I2 [kg m^2] of the inertia about the centre of mass")
       .def_property_readonly("triangle_margins", [](const InertiaReport& r) { return read_only(r.triangle_margins); },
                              "(3,) (I1+I2-I0, I0+I2-I1, I0+I1-I2) [kg m^2]; the last is binding")
       .def_readonly("condition_number", &InertiaReport::condition_number, "I2 / I0 (inf when I0 <= 0)")
@@ -153,13 +297,31 @@ void bind_types(py::module_& m) {
           "check"_a = InertiaCheck::physical,
            "True when every check required by `check` passes.")
       .def("summary", &InertiaReport::summary, "One line with the key numbers.")
-      .def("__repr__", [](const InertiaReport& r) { return "InertiaReport(" + r.summary() + ")"; });
+      .def(
+          "__eq__",
+          [](const InertiaReport& r, py::handle other) {
+            return equal_or_not_implemented(r, other, [](const InertiaReport& a, const InertiaReport& b) {
+              return a.mass == b.mass && a.mass_positive == b.mass_positive && a.finite == b.finite &&
+                     a.asymmetry == b.asymmetry && a.asymmetry_tolerance == b.asymmetry_tolerance &&
+                     a.symmetric == b.symmetric && same(a.principal_moments, b.principal_moments) &&
+                     same(a.triangle_margins, b.triangle_margins) && a.condition_number == b.condition_number &&
+                     a.tolerance == b.tolerance && a.positive_semidefinite == b.positive_semidefinite &&
+                     a.triangle_inequality == b.triangle_inequality;
+            });
+          },
+          py::is_operator(), "Exact equality of every field.")
+      .def("__repr__",
+           [](const InertiaReport& r) {
+             return repr_call("InertiaReport", {{"mass", py::float_(r.mass)},
+                                                {"principal_moments", py_io::to_array(r.principal_moments)},
+                                                {"triangle_margins", py_io::to_array(r.triangle_margins)},
+                                                {"condition_number", py::float_(r.condition_number)},
+                                                {"tolerance", py::float_(r.tolerance)},
+                                                {"valid", py::bool_(r.valid())}});
+           })
+      .def(py::pickle(&report_state, &report_from_state));
 
-  py::class_<PrincipalAxes>(m, "PrincipalAxes", "Principal moments (ascending) and axes (columns, right-handed).")
-      .def_property_readonly("moments", [](const PrincipalAxes& p) { return read_only(p.moments); },
-                             "(3,) ascending [kg m^2]")
-      .def_property_readonly("axes", [](const PrincipalAxes& p) { return read_only(p.axes); },
-                             "(3,3): column k is the axis of moments[k]; det +1");
+  bind_principal_axes(m);
 }
 
 // composite's parts: a sequence of SpatialInertia, or of (X_AB, SpatialInertia) pairs.
@@ -189,6 +351,16 @@ SpatialInertia composite_py(py::handle parts) {
                         as_inertia(pair[1], name + "[1]"));
   }
   return pairs ? composite(placed) : composite(same_frame);
+}
+
+// SpatialInertia(mass=..., com=[...], inertia_com=[[...]]), with check=InertiaCheck.allow_unrealizable
+// when the inertia violates the triangle inequality (built with that opt-in), so that it evaluates.
+std::string spatial_inertia_repr(const SpatialInertia& I) {
+  std::string text = repr_call("SpatialInertia", {{"mass", py::float_(I.mass())},
+                                                  {"com", py_io::to_array(I.com())},
+                                                  {"inertia_com", py_io::to_array(I.inertia_com())}});
+  if (I.report().valid(InertiaCheck::physical)) return text;
+  return text.substr(0, text.size() - 1) + ", check=InertiaCheck.allow_unrealizable)";
 }
 
 void bind_spatial_inertia(py::module_& m) {
@@ -299,7 +471,10 @@ void bind_spatial_inertia(py::module_& m) {
           },
           "X_AB"_a,
            "Re-expressed in A (Transform X_AB): c_A = R_AB c_B + p_AB, I_C,A = R_AB I_C,B R_AB^T.")
-      .def("principal_axes", &SpatialInertia::principal_axes, "Principal moments and right-handed axes of I_C.")
+      .def(
+          "principal_axes", [](const SpatialInertia& I) { return to_python(I.principal_axes()); },
+          "PrincipalAxes of I_C (about the centre of mass, in the frame of expression): moments ascending\n"
+          "[kg m^2], axes as columns, right-handed.")
       .def("report", &SpatialInertia::report, "The validity report (InertiaReport).")
       .def(
           "admits_symmetry_plane",
@@ -321,18 +496,28 @@ void bind_spatial_inertia(py::module_& m) {
       .def(
           "is_approx",
           [](const SpatialInertia& I, py::handle other, py::handle prec) {
-            return I.isApprox(as_inertia(other, "other"), as_tolerance(prec, "prec"));
+            return I.is_approx(as_inertia(other, "other"), as_tolerance(prec, "prec"));
           },
-          "other"_a, "prec"_a = 1e-12, "Relative comparison.")
-      .def("__repr__", [](const SpatialInertia& I) {
-        std::ostringstream out;
-        out.precision(17);
-        const auto& J = I.inertia_com();
-        out << "SpatialInertia(mass=" << I.mass() << ", com=[" << I.com()(0) << ", " << I.com()(1) << ", "
-            << I.com()(2) << "], inertia_com=[[" << J(0, 0) << ", " << J(0, 1) << ", " << J(0, 2) << "], [" << J(1, 0)
-            << ", " << J(1, 1) << ", " << J(1, 2) << "], [" << J(2, 0) << ", " << J(2, 1) << ", " << J(2, 2) << "]])";
-        return out.str();
-      });
+          "other"_a, "prec"_a = 1e-12,
+          "True when mass, centre of mass and inertia_com agree to `prec` relative to their size (the centre of\n"
+          "mass relative to the radius of gyration plus |com|). == compares exactly.")
+      .def(
+          "__eq__",
+          [](const SpatialInertia& I, py::handle other) {
+            return equal_or_not_implemented(I, other, [](const SpatialInertia& a, const SpatialInertia& b) {
+              return a.mass() == b.mass() && same(a.com(), b.com()) && same(a.inertia_com(), b.inertia_com());
+            });
+          },
+          py::is_operator(), "Exact equality of mass, com and inertia_com (is_approx: up to a tolerance).")
+      .def("__repr__", &spatial_inertia_repr)
+      .def(py::pickle(
+          [](const SpatialInertia& I) { return py::make_tuple(I.mass(), read_only(I.com()), read_only(I.inertia_com())); },
+          [](const py::tuple& state) {
+            const py::tuple s = pickled_state(state, 3, "SpatialInertia");
+            // the stored inertia was checked when built (with the check its builder chose); no projection here
+            return SpatialInertia(py_io::as_scalar(s[0], "mass"), py_io::as_vector3(s[1], "com"),
+                                  py_io::as_matrix3(s[2], "inertia_com"), InertiaCheck::allow_unrealizable);
+          }));
 
   m.def(
       "composite",
@@ -387,12 +572,14 @@ void bind_validity(py::module_& m) {
           }
         }
         // unit axes; the moments overflow only for entries near the largest double
-        return py::make_tuple(py_io::finite_result(moments, "principal_axes moments"), axes);
+        return PyPrincipalAxes{frozen(py_io::finite_result(moments, "principal_axes moments")), frozen(axes)};
       },
       "inertia"_a,
-      "Principal moments and axes of symmetric inertias (3,3) or (n,3,3) [kg m^2] (lower triangles read):\n"
-      "returns (moments (3,) or (n,3) ascending, axes (3,3) or (n,3,3) with column k the axis of\n"
-      "moments[k], right-handed, canonical when moments coincide). Releases the GIL.");
+      "Principal moments and axes of symmetric inertias (3,3) or (n,3,3) [kg m^2] (lower triangles read),\n"
+      "about the point and in the frame the inertia is given for. Returns a PrincipalAxes: moments (3,)\n"
+      "or (n,3) ascending [kg m^2], axes (3,3) or (n,3,3) with column k the unit axis of moments[k],\n"
+      "right-handed, canonical when moments coincide; it unpacks as `moments, axes = principal_axes(I)`.\n"
+      "Releases the GIL.");
 }
 
 void bind_primitives(py::module_& m) {
@@ -518,23 +705,28 @@ void bind_symmetry(py::module_& m) {
       "degenerate bodies (cube, regular tetrahedron) the planes found among them, not a proof of none else.");
   m.def(
       "mesh_symmetry_planes",
-      [](py::handle vertices, py::handle faces, py::handle tolerance_arg) {
+      [](py::handle vertices, py::handle faces, py::handle tolerance_arg, py::handle weld_tolerance) {
         const double tolerance = as_tolerance(tolerance_arg, "tolerance");
         const PointRows v = as_points(vertices, "vertices");
         const MeshFaces f = as_faces(faces);
+        const std::optional<double> weld = as_weld_tolerance(weld_tolerance);
         std::vector<SymmetryPlane> planes;
         {
           py::gil_scoped_release release;
-          planes = mesh_symmetry_planes(v, f, tolerance);
+          planes = mesh_symmetry_planes(v, f, tolerance, weld);
         }
         return planes_to_list(planes);
       },
-      "vertices"_a, "faces"_a, "tolerance"_a = symmetry_tolerance,
+      "vertices"_a, "faces"_a, "tolerance"_a = symmetry_tolerance, py::kw_only(), "weld_tolerance"_a = py::none(),
       "Planes of symmetry of the uniform solid bounded by a closed, outward-oriented mesh: vertices (n, 3)\n"
-      "[m], faces (f, 3). A plane qualifies when its reflection maps the vertex set onto itself (within\n"
-      "tolerance * largest com-vertex distance [m]) and each face onto a face with reversed orientation.\n"
-      "Returns a list of (normal (3,) unit, point (3,) [m] = the solid's centre of mass); candidates as\n"
-      "in symmetry_planes. ValueError naming the argument on a bad mesh.");
+      "[m], faces (f, 3), welded as in solid_mesh (weld_tolerance). The planes of the solid, whatever its\n"
+      "triangulation: a plane qualifies when its reflection maps the solid's oriented boundary onto itself\n"
+      "(each reflected face covered by faces in the same plane and facing the same way, up to a strip of\n"
+      "width tolerance * L along its edges, L = largest distance from the centre of mass to a vertex [m];\n"
+      "normals within tolerance). A faceted cylinder or capsule of s sections has the s planes through its\n"
+      "axis and the plane normal to it, not the smooth solid's continuum. Returns a list of (normal (3,)\n"
+      "unit, largest-magnitude component positive; point (3,) [m] = the solid's centre of mass) in the frame\n"
+      "of the vertices; candidates as in symmetry_planes. ValueError naming the argument on a bad mesh.");
 }
 
 void bind_mesh_and_density(py::module_& m) {
@@ -554,27 +746,121 @@ void bind_mesh_and_density(py::module_& m) {
       "vertices"_a, "faces"_a, "Signed volume [m^3] of the mesh vertices (n, 3) [m], faces (f, 3).");
   m.def(
       "solid_mesh",
-      &mesh_body<solid_mesh>,
+      [](py::handle vertices, py::handle faces, py::handle mass, py::handle density, py::handle weld_tolerance) {
+        return mesh_body(&solid_mesh, "solid_mesh", vertices, faces, mass, density, weld_tolerance);
+      },
       "vertices"_a, "faces"_a, py::kw_only(), "mass"_a = py::none(), "density"_a = py::none(),
+      "weld_tolerance"_a = py::none(),
       "Solid bounded by a closed, outward-oriented triangle mesh: vertices (n, 3) [m], faces (f, 3),\n"
-      "exact (divergence theorem). ValueError naming the first open or misoriented edge, or an inward\n"
-      "orientation. Give exactly one of mass= [kg] or density= [kg/m^3]. (rigiddyn.solid_mesh also accepts\n"
-      "a trimesh object.)");
+      "exact (divergence theorem). Vertices closer than weld_tolerance [m] are first welded into one, as\n"
+      "trimesh does on load (None: 1e-8 x the bounding-box diagonal; 0: off), faces left degenerate dropped,\n"
+      "and a MeshWeldWarning says how many. ValueError naming the first open or misoriented edge (input\n"
+      "indices), or an inward orientation. Give exactly one of mass= [kg] or density= [kg/m^3].\n"
+      "(rigiddyn.solid_mesh also accepts a trimesh object.)");
   m.def(
       "mesh_shell",
-      &mesh_body<mesh_shell>,
+      [](py::handle vertices, py::handle faces, py::handle mass, py::handle density, py::handle weld_tolerance) {
+        return mesh_body(&mesh_shell, "mesh_shell", vertices, faces, mass, density, weld_tolerance);
+      },
       "vertices"_a, "faces"_a, py::kw_only(), "mass"_a = py::none(), "density"_a = py::none(),
+      "weld_tolerance"_a = py::none(),
       "Thin shell made of the faces (any orientation, need not be closed): vertices (n, 3) [m], faces\n"
-      "(f, 3). Give exactly one of mass= [kg] or density= [kg/m^2].");
+      "(f, 3), welded as in solid_mesh (weld_tolerance). Give exactly one of mass= [kg] or density= [kg/m^2].");
+  mesh_weld_warning = PyErr_NewExceptionWithDoc(
+      "rigiddyn._core.MeshWeldWarning",
+      "Warned by solid_mesh and mesh_shell when welding merged vertices or dropped faces (a UserWarning;\n"
+      "filter it with warnings.filterwarnings, or weld with weld_vertices first).",
+      PyExc_UserWarning, nullptr);
+  if (!mesh_weld_warning) throw py::error_already_set();
+  m.attr("MeshWeldWarning") = mesh_weld_warning;
+  py::class_<WeldedMesh>(m, "WeldedMesh", "A mesh after weld_vertices, with what the weld changed.")
+      .def_property_readonly("vertices", [](const WeldedMesh& w) { return read_only(w.vertices); },
+                             "(n', 3) [m] the kept vertices (each cluster's lowest-indexed), in input order")
+      .def_property_readonly("faces", [](const WeldedMesh& w) { return index_array(w.faces, {w.faces.rows(), 3}); },
+                             "(f', 3) int64 the non-degenerate faces, in input order, indexing vertices")
+      .def_property_readonly(
+          "vertex_index",
+          [](const WeldedMesh& w) { return index_array(w.vertex_index, {static_cast<py::ssize_t>(w.vertex_index.size())}); },
+          "(n',) int64 input index of each kept vertex")
+      .def_property_readonly(
+          "face_index",
+          [](const WeldedMesh& w) { return index_array(w.face_index, {static_cast<py::ssize_t>(w.face_index.size())}); },
+          "(f',) int64 input index of each kept face")
+      .def_property_readonly("welded_vertices", [](const WeldedMesh& w) { return w.report.welded_vertices; },
+                             "input vertices merged into another")
+      .def_property_readonly("dropped_faces", [](const WeldedMesh& w) { return w.report.dropped_faces; },
+                             "faces repeating a vertex after welding, dropped")
+      .def_property_readonly("tolerance", [](const WeldedMesh& w) { return w.report.tolerance; },
+                             "weld tolerance used [m]")
+      .def("__repr__", [](const WeldedMesh& w) {
+        return "WeldedMesh(" + std::to_string(w.vertices.rows()) + " vertices, " + std::to_string(w.faces.rows()) +
+               " faces, welded_vertices=" + std::to_string(w.report.welded_vertices) +
+               ", dropped_faces=" + std::to_string(w.report.dropped_faces) +
+               ", tolerance=" + py::repr(py::float_(w.report.tolerance)).cast<std::string>() + ")";
+      });
+  m.def(
+      "weld_vertices",
+      [](py::handle vertices, py::handle faces, py::handle tolerance_arg) {
+        const PointRows v = as_points(vertices, "vertices");
+        const MeshFaces f = as_faces(faces);
+        const std::optional<double> tolerance = py_io::as_optional_scalar(tolerance_arg, "tolerance");
+        py::gil_scoped_release release;
+        return weld_vertices(v, f, tolerance ? *tolerance : default_weld_tolerance(v));
+      },
+      "vertices"_a, "faces"_a, "tolerance"_a = py::none(),
+      "Welds vertices (n, 3) [m] closer than tolerance [m] (None: 1e-8 x the bounding-box diagonal), as\n"
+      "solid_mesh does: clusters of vertices within tolerance of one another (grid hashing, O(n log n)) keep\n"
+      "their lowest-indexed vertex; faces (f, 3) repeating a vertex afterwards are dropped. Returns a\n"
+      "WeldedMesh (vertices, faces, welded_vertices, dropped_faces, ...); warns nothing.");
 
   bind_symmetry(m);
 
-  py::class_<DensityIntegral>(m, "DensityIntegral", "Result of a density quadrature with its error estimate.")
-      .def_readonly("inertia", &DensityIntegral::inertia, "SpatialInertia from the higher-order rule")
+  py::class_<DensityIntegral>(m, "DensityIntegral",
+                              "Result of a density quadrature with its error estimate (all in the frame of the\n"
+                              "points rho was evaluated at).")
+      .def(py::init([](py::handle inertia, py::handle mass_error, py::handle com_error, py::handle inertia_error,
+                       py::handle evaluations) {
+             return DensityIntegral{as_inertia(inertia, "inertia"), py_io::as_scalar(mass_error, "mass_error"),
+                                    py_io::as_scalar(com_error, "com_error"),
+                                    py_io::as_scalar(inertia_error, "inertia_error"),
+                                    static_cast<Eigen::Index>(py_io::as_int(evaluations, "evaluations", 0))};
+           }),
+           "inertia"_a, "mass_error"_a, "com_error"_a, "inertia_error"_a, "evaluations"_a,
+           "From its fields (as the attributes).")
+      .def_readonly("inertia", &DensityIntegral::inertia,
+                    "SpatialInertia from the higher-order rule (centre of mass and inertia about it, in the frame\n"
+                    "of the points)")
       .def_readonly("mass_error", &DensityIntegral::mass_error, "|m_high - m_low| [kg]")
       .def_readonly("com_error", &DensityIntegral::com_error, "|c_high - c_low| [m]")
-      .def_readonly("inertia_error", &DensityIntegral::inertia_error, "||I_high - I_low||_F [kg m^2]")
-      .def_readonly("evaluations", &DensityIntegral::evaluations, "points at which rho was evaluated");
+      .def_readonly("inertia_error", &DensityIntegral::inertia_error,
+                    "||I_C,high - I_C,low||_F [kg m^2], inertias about the centre of mass")
+      .def_readonly("evaluations", &DensityIntegral::evaluations, "points at which rho was evaluated")
+      .def(
+          "__eq__",
+          [](const DensityIntegral& d, py::handle other) {
+            return equal_or_not_implemented(d, other, [](const DensityIntegral& a, const DensityIntegral& b) {
+              return py::cast(a.inertia).equal(py::cast(b.inertia)) && a.mass_error == b.mass_error &&
+                     a.com_error == b.com_error && a.inertia_error == b.inertia_error && a.evaluations == b.evaluations;
+            });
+          },
+          py::is_operator(), "Exact equality of every field.")
+      .def("__repr__",
+           [](const DensityIntegral& d) {
+             return repr_call("DensityIntegral", {{"inertia", py::cast(d.inertia)},
+                                                  {"mass_error", py::float_(d.mass_error)},
+                                                  {"com_error", py::float_(d.com_error)},
+                                                  {"inertia_error", py::float_(d.inertia_error)},
+                                                  {"evaluations", py::int_(d.evaluations)}});
+           })
+      .def(py::pickle(
+          [](const DensityIntegral& d) {
+            return py::make_tuple(d.inertia, d.mass_error, d.com_error, d.inertia_error, d.evaluations);
+          },
+          [](const py::tuple& state) {
+            const py::tuple s = pickled_state(state, 5, "DensityIntegral");
+            return DensityIntegral{s[0].cast<SpatialInertia>(), s[1].cast<double>(), s[2].cast<double>(),
+                                   s[3].cast<double>(), s[4].cast<Eigen::Index>()};
+          }));
   m.def(
       "integrate_density_over_box",
       [](py::handle rho_arg, py::handle lower, py::handle upper, py::handle order_arg, py::handle subdivisions_arg) {

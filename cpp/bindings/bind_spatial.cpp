@@ -8,12 +8,14 @@
 
 #include "bindings.hpp"
 #include "numpy_io.hpp"
+#include "repr.hpp"
 #include "rigiddyn/so3/matrix.hpp"
 #include "rigiddyn/spatial/cross.hpp"
 #include "rigiddyn/spatial/force.hpp"
 #include "rigiddyn/spatial/motion.hpp"
 #include "rigiddyn/spatial/screw.hpp"
 #include "rigiddyn/spatial/transform.hpp"
+#include "value_type.hpp"
 
 namespace rigiddyn::bindings {
 
@@ -26,8 +28,6 @@ namespace {
 
 using py_io::read_only;
 
-// Shortest round-trip text of a vector, as Python's float repr: [1.0, 2.5, -3.0].
-std::string list_repr(const Eigen::Vector3d& v) { return py::repr(py_io::to_array(v).attr("tolist")()); }
 
 // A finite scalar factor for `motion * s` (TypeError/ValueError naming "scalar").
 double as_factor(py::handle s) { return py_io::as_scalar(s, "scalar"); }
@@ -203,6 +203,43 @@ Array map_points(py::handle points_obj, const char* name, const char* quantity, 
   return py_io::finite_result(out, quantity);
 }
 
+// A precision >= 0 for is_approx.
+double as_precision(py::handle prec) {
+  const double value = py_io::as_scalar(prec, "prec");
+  if (value < 0.0) py_io::throw_value_error("prec", "a number >= 0", format_value(value));
+  return value;
+}
+
+// is_approx, == (exact), repr as the constructor call and pickling of a Motion or Force.
+template <class Spatial>
+void bind_value_protocol(py::class_<Spatial>& c, const std::string& type) {
+  c.def(
+       "is_approx",
+       [type](const Spatial& a, py::handle b, py::handle prec) {
+         return a.is_approx(py_io::as_instance<Spatial>(b, "other", "a " + type), as_precision(prec));
+       },
+       "other"_a, "prec"_a = 1e-12,
+       ("True when the 6-vectors agree to `prec` relative to the smaller norm (Eigen's isApprox: |a - b| <=\n"
+        "prec min(|a|, |b|), so only an exactly zero " + type + " is close to zero). == compares exactly.").c_str())
+      .def(
+          "__eq__",
+          [](const Spatial& a, py::handle b) {
+            return equal_or_not_implemented(a, b, [](const Spatial& x, const Spatial& y) {
+              return same(x.angular, y.angular) && same(x.linear, y.linear);
+            });
+          },
+          py::is_operator(), "Exact equality of the angular and linear parts.")
+      .def("__repr__",
+           [type](const Spatial& s) {
+             return repr_call(type, {{"angular", py_io::to_array(s.angular)}, {"linear", py_io::to_array(s.linear)}});
+           })
+      .def(py::pickle([](const Spatial& s) { return py::make_tuple(read_only(s.angular), read_only(s.linear)); },
+                      [type](const py::tuple& state) {
+                        const py::tuple s = pickled_state(state, 2, type);
+                        return Spatial(py_io::as_vector3(s[0], "angular"), py_io::as_vector3(s[1], "linear"));
+                      }));
+}
+
 void bind_motion(py::module_& m) {
   py::class_<Motion> c(m, "Motion",
                        "Spatial motion vector (twist) [w; v], angular part first: w angular velocity [rad/s], v\n"
@@ -212,9 +249,9 @@ void bind_motion(py::module_& m) {
        }),
        "angular"_a = py::none(), "linear"_a = py::none(), "Motion from w (3,) [rad/s] and v (3,) [m/s] (None: zero).")
       .def_property_readonly("angular", [](const Motion& s) { return read_only(s.angular); },
-                             "w (3,) [rad/s], read-only copy")
+                             "w (3,) [rad/s], expressed in the frame of the motion; read-only copy")
       .def_property_readonly("linear", [](const Motion& s) { return read_only(s.linear); },
-                             "v (3,) [m/s] at the frame's origin, read-only copy")
+                             "v (3,) [m/s] of the body point at the frame's origin, expressed in that frame; read-only copy")
       .def("to_vector", [](const Motion& s) { return py_io::to_array(s.to_vector()); }, "[w; v] as a (6,) array.")
       .def_static("from_vector", [](py::handle v) { return Motion::from_vector(py_io::as_vector6(v, "vector")); },
                   "vector"_a, "Motion from a (6,) array [w; v].")
@@ -223,14 +260,15 @@ void bind_motion(py::module_& m) {
           "other"_a, "Motion cross product (crm): self x other = [w1 x w2; w1 x v2 + v1 x w2].")
       .def(
           "cross_force",
-          [](const Motion& s, py::handle f) { return checked(s.cross(as_force(f, "f")), "Motion.cross_force"); }, "f"_a,
-          "Force cross product (crf): self x* f = [w x n + v x f; w x f].")
+          [](const Motion& s, py::handle force) { return checked(s.cross(as_force(force, "force")), "Motion.cross_force"); },
+          "force"_a, "Force cross product (crf): self x* force = [w x n + v x f; w x f].")
       .def(
-          "dot", [](const Motion& s, py::handle f) { return py_io::finite_result(s.dot(as_force(f, "f")), "Motion.dot"); },
-          "f"_a, "Power w . n + v . f [W] of the force f on this motion (same frame and reference point).")
-      .def("__repr__", [](const Motion& s) {
-        return "Motion(angular=" + list_repr(s.angular) + ", linear=" + list_repr(s.linear) + ")";
-      });
+          "dot",
+          [](const Motion& s, py::handle force) {
+            return py_io::finite_result(s.dot(as_force(force, "force")), "Motion.dot");
+          },
+          "force"_a, "Power w . n + v . f [W] of the force on this motion (same frame and reference point).");
+  bind_value_protocol(c, "Motion");
   bind_linear_operators(c, "Motion");
 }
 
@@ -243,14 +281,13 @@ void bind_force(py::module_& m) {
        }),
        "angular"_a = py::none(), "linear"_a = py::none(), "Force from n (3,) [N m] and f (3,) [N] (None: zero).")
       .def_property_readonly("angular", [](const Force& s) { return read_only(s.angular); },
-                             "n (3,) [N m] about the frame's origin, read-only copy")
-      .def_property_readonly("linear", [](const Force& s) { return read_only(s.linear); }, "f (3,) [N], read-only copy")
+                             "n (3,) [N m]: moment about the frame's origin, expressed in that frame; read-only copy")
+      .def_property_readonly("linear", [](const Force& s) { return read_only(s.linear); },
+                             "f (3,) [N], expressed in the frame of the force; read-only copy")
       .def("to_vector", [](const Force& s) { return py_io::to_array(s.to_vector()); }, "[n; f] as a (6,) array.")
       .def_static("from_vector", [](py::handle v) { return Force::from_vector(py_io::as_vector6(v, "vector")); },
-                  "vector"_a, "Force from a (6,) array [n; f].")
-      .def("__repr__", [](const Force& s) {
-        return "Force(angular=" + list_repr(s.angular) + ", linear=" + list_repr(s.linear) + ")";
-      });
+                  "vector"_a, "Force from a (6,) array [n; f].");
+  bind_value_protocol(c, "Force");
   bind_linear_operators(c, "Force");
 }
 
@@ -329,10 +366,33 @@ void bind_transform(py::module_& m) {
            "Featherstone's X (6,6), angular first: [[R, 0], [hat(p) R, R]].")
       .def("force_matrix", [](const Transform& X) { return py_io::finite_result(X.force_matrix(), "Transform.force_matrix"); },
            "Featherstone's X* (6,6) = X^-T: [[R, hat(p) R], [0, R]].")
-      .def("__repr__", [](const Transform& X) {
-        return "Transform(rotation=" + std::string(py::repr(py_io::to_array(X.rotation()).attr("tolist")())) +
-               ", translation=" + list_repr(X.translation()) + ")";
-      });
+      .def(
+          "is_approx",
+          [](const Transform& a, py::handle b, py::handle prec) {
+            return a.is_approx(py_io::as_instance<Transform>(b, "other", "a Transform"), as_precision(prec));
+          },
+          "other"_a, "prec"_a = 1e-12,
+          "True when rotations and translations each agree to `prec` relative to the smaller norm (Eigen's\n"
+          "isApprox; a zero translation compares only with an exactly zero one). == compares exactly.")
+      .def(
+          "__eq__",
+          [](const Transform& a, py::handle b) {
+            return equal_or_not_implemented(a, b, [](const Transform& x, const Transform& y) {
+              return same(x.rotation(), y.rotation()) && same(x.translation(), y.translation());
+            });
+          },
+          py::is_operator(), "Exact equality of rotation and translation.")
+      .def("__repr__",
+           [](const Transform& X) {
+             return repr_call("Transform", {{"rotation", py_io::to_array(X.rotation())},
+                                            {"translation", py_io::to_array(X.translation())}});
+           })
+      .def(py::pickle(
+          [](const Transform& X) { return py::make_tuple(read_only(X.rotation()), read_only(X.translation())); },
+          [](const py::tuple& state) {
+            const py::tuple s = pickled_state(state, 2, "Transform");
+            return Transform(py_io::as_matrix3(s[0], "rotation"), py_io::as_vector3(s[1], "translation"));
+          }));
 }
 
 void bind_screw(py::module_& m) {
@@ -347,16 +407,41 @@ void bind_screw(py::module_& m) {
            "direction"_a, "point"_a, "pitch"_a, "magnitude"_a,
            "Screw from its parts (checked by screw_to_twist): direction (3,) unit, point (3,) [m], pitch [m/rad]\n"
            "(inf: pure translation), magnitude [rad/s] (or [m/s]).")
-      .def_property_readonly("direction", [](const Screw& s) { return read_only(s.direction); }, "unit (3,)")
+      .def_property_readonly("direction", [](const Screw& s) { return read_only(s.direction); },
+                             "unit (3,), expressed in the twist's frame")
       .def_property_readonly("point", [](const Screw& s) { return read_only(s.point); },
-                             "(3,) [m], point of the axis closest to the origin")
+                             "(3,) [m], the point of the axis closest to the twist's frame's origin, expressed in that frame")
       .def_readonly("pitch", &Screw::pitch, "[m/rad]; inf for a pure translation")
       .def_readonly("magnitude", &Screw::magnitude, "|w| [rad/s], or |v| [m/s] for a pure translation")
-      .def("__repr__", [](const Screw& s) {
-        return "Screw(direction=" + list_repr(s.direction) + ", point=" + list_repr(s.point) +
-               ", pitch=" + std::string(py::repr(py::float_(s.pitch))) +
-               ", magnitude=" + std::string(py::repr(py::float_(s.magnitude))) + ")";
-      });
+      .def(
+          "__eq__",
+          [](const Screw& a, py::handle b) {
+            return equal_or_not_implemented(a, b, [](const Screw& x, const Screw& y) {
+              return same(x.direction, y.direction) && same(x.point, y.point) && x.pitch == y.pitch &&
+                     x.magnitude == y.magnitude;
+            });
+          },
+          py::is_operator(), "Exact equality of every part.")
+      .def("__repr__",
+           [](const Screw& s) {
+             const std::string text = repr_call("Screw", {{"direction", py_io::to_array(s.direction)},
+                                                          {"point", py_io::to_array(s.point)},
+                                                          {"pitch", py::float_(s.pitch)},
+                                                          {"magnitude", py::float_(s.magnitude)}});
+             // a pure translation's pitch +inf, written so that the text evaluates
+             const std::string inf = "pitch=inf,";
+             const size_t at = text.find(inf);
+             return at == std::string::npos ? text : text.substr(0, at) + "pitch=float('inf')," + text.substr(at + inf.size());
+           })
+      .def(py::pickle(
+          [](const Screw& s) {
+            return py::make_tuple(read_only(s.direction), read_only(s.point), s.pitch, s.magnitude);
+          },
+          [](const py::tuple& state) {
+            const py::tuple s = pickled_state(state, 4, "Screw");
+            return Screw{py_io::as_vector3(s[0], "direction"), py_io::as_vector3(s[1], "point"),
+                         py_io::as_extended_real(s[2], "pitch"), py_io::as_scalar(s[3], "magnitude")};
+          }));
   m.def(
       "twist_to_screw", [](py::handle twist) { return twist_to_screw(as_motion(twist, "twist")); }, "twist"_a,
         "The screw (instantaneous screw axis) of a twist [w; v]: direction w/|w|, point (w x v)/|w|^2,\n"
@@ -380,16 +465,21 @@ void bind_spatial(py::module_& m) {
   // Force.dot names Motion in its signature, so it is added once Motion is registered.
   py::reinterpret_borrow<py::class_<Force>>(m.attr("Force"))
       .def(
-          "dot", [](const Force& f, py::handle m) { return py_io::finite_result(f.dot(as_motion(m, "m")), "Force.dot"); },
-          "m"_a, "Power w . n + v . f [W] of this force on the motion m.");
+          "dot",
+          [](const Force& f, py::handle motion) {
+            return py_io::finite_result(f.dot(as_motion(motion, "motion")), "Force.dot");
+          },
+          "motion"_a, "Power w . n + v . f [W] of this force on the motion (same frame and reference point).");
   bind_transform(m);
   bind_screw(m);
   m.def(
-      "motion_cross_matrix", [](py::handle v) { return py_io::to_array(motion_cross_matrix(as_motion(v, "m"))); }, "m"_a,
-        "crm(m) (6,6) = [[hat(w), 0], [hat(v), hat(w)]], so crm(m) m2 = m x m2.");
+      "motion_cross_matrix",
+      [](py::handle motion) { return py_io::to_array(motion_cross_matrix(as_motion(motion, "motion"))); }, "motion"_a,
+      "crm(V) (6,6) = [[hat(w), 0], [hat(v), hat(w)]] of the motion V = [w; v], so crm(V) V2 = V x V2.");
   m.def(
-      "force_cross_matrix", [](py::handle v) { return py_io::to_array(force_cross_matrix(as_motion(v, "m"))); }, "m"_a,
-        "crf(m) (6,6) = [[hat(w), hat(v)], [0, hat(w)]] = -crm(m)^T, so crf(m) f = m x* f.");
+      "force_cross_matrix",
+      [](py::handle motion) { return py_io::to_array(force_cross_matrix(as_motion(motion, "motion"))); }, "motion"_a,
+      "crf(V) (6,6) = [[hat(w), hat(v)], [0, hat(w)]] = -crm(V)^T of the motion V = [w; v], so crf(V) F = V x* F.");
   m.def("transform_compose", &transform_compose, "R_AB"_a, "p_AB"_a, "R_BC"_a, "p_BC"_a,
         "X_AC = X_AB * X_BC item by item: R_AC = R_AB R_BC, p_AC = R_AB p_BC + p_AB. Rotations (3,3) or\n"
         "(n,3,3), translations (3,) or (n,3) [m]; single items broadcast. Returns (R_AC, p_AC).");

@@ -4,6 +4,7 @@
 
 namespace rigiddyn::bindings {
 void bind_so3(pybind11::module_& m);
+void bind_so3_ops(pybind11::module_& m);
 void bind_frames(pybind11::module_& m);
 void bind_spatial(pybind11::module_& m);
 void bind_inertia(pybind11::module_& m);

@@ -6,6 +6,7 @@ PYBIND11_MODULE(_core, m) {
   m.doc() = "rigiddyn's C++ core (rotations, frames, spatial algebra, inertia, dynamics).";
   m.attr("__version__") = rigiddyn::version();
   rigiddyn::bindings::bind_so3(m);
+  rigiddyn::bindings::bind_so3_ops(m);
   rigiddyn::bindings::bind_frames(m);
   rigiddyn::bindings::bind_spatial(m);
   rigiddyn::bindings::bind_inertia(m);

@@ -11,7 +11,7 @@ from .rotation_scipy import from_scipy, to_scipy
 from .inertia_mesh import mesh_shell, solid_mesh  # type: ignore[assignment]  # the core's, also taking trimesh objects
 from .problem import Problem, load_problem
 from .stability import StabilityWarning
-from .tradeoff import TradeoffResult, tradeoff  # the function shadows its module's name on the package
+from .work_precision import TradeoffResult, tradeoff  # the function; its module is rigiddyn.work_precision
 
 __version__: str = _core.__version__
 __all__ = [name for name in dir(_core) if not name.startswith("_")] + ["to_scipy", "from_scipy"] + [

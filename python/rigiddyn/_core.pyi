@@ -2,19 +2,31 @@
 rigiddyn's C++ core (rotations, frames, spatial algebra, inertia, dynamics).
 """
 from __future__ import annotations
+import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['AppliedLoad', 'DensityIntegral', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'InertiaCheck', 'InertiaReport', 'KineticEnergy', 'Motion', 'Particle', 'ParticleState', 'PlanarBody', 'PlanarBodyState', 'PointAcceleration', 'PointVelocity', 'PrincipalAxes', 'RigidBody', 'RigidBodyState', 'Screw', 'SimulationResult', 'SpatialInertia', 'TorqueFreeSolution', 'Transform', 'angular_momentum', 'apply_impulse', 'axis_angle_to_quat', 'box_shell', 'compose_kinematics', 'composite', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'from_point_masses', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'nearest_valid_inertia', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_euler', 'quat_to_matrix', 'quat_to_rotvec', 'relative_kinematics', 'require_closed_oriented_mesh', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'simulate', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'twist_to_screw', 'vee']
+__all__: list[str] = ['AppliedLoad', 'BodyAcceleration', 'ComWrench', 'DensityIntegral', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'InertiaCheck', 'InertiaReport', 'KineticEnergy', 'MeshWeldWarning', 'Motion', 'Particle', 'ParticleState', 'PlanarAcceleration', 'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointVelocity', 'PrincipalAxes', 'RigidBody', 'RigidBodyState', 'Screw', 'SimulationResult', 'SpatialInertia', 'TorqueFreeSolution', 'Transform', 'WeldedMesh', 'align_vectors', 'angular_distance', 'angular_momentum', 'angular_velocity_from_quat_rate', 'apply_impulse', 'axis_angle_to_quat', 'box_shell', 'compose_kinematics', 'composite', 'davenport_to_quat', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'from_point_masses', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation', 'nearest_valid_inertia', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix', 'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'simulate', 'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'twist_to_screw', 'vee', 'weld_vertices']
 class FrameKinematics:
     """
     Frame F relative to frame P at one instant (P = the parent of a FrameMotion, or the
     `relative_to` frame of a FrameTree query). Every vector is expressed in P; SI units.
     """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, arg0: typing.Any) -> typing.Any:
+        """
+        Exact equality of every field.
+        """
+    def __getstate__(self) -> tuple:
+        ...
     def __init__(self, R_PF: typing.Any = None, w_PF_P: typing.Any = None, alpha_PF_P: typing.Any = None, p_PF_P: typing.Any = None, v_PF_P: typing.Any = None, a_PF_P: typing.Any = None) -> None:
         """
         Arguments as the attributes (None: identity / zero). ValueError on a non-rotation R_PF or NaN/Inf.
         """
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
     @property
     def R_PF(self) -> numpy.typing.NDArray[numpy.float64]:
         """
@@ -49,74 +61,103 @@ class PointVelocity:
     """
     Velocity of a point Q moving in a frame F, seen from a frame A, term by term
     ("Rigid body kinematics and dynamics" notes (4.38)): total = origin + rotational +
-    relative. Each (3,) [m/s], all expressed in the same frame (the query's `expressed_in`).
+    relative. Each (3,) [m/s], all expressed in the same frame E (the query's `expressed_in`;
+    A for the free function point_velocity).
     """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, arg0: typing.Any) -> typing.Any:
+        """
+        Exact equality of every term.
+        """
+    def __getstate__(self) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+        ...
+    def __init__(self, origin: typing.Any, rotational: typing.Any, relative: typing.Any) -> None:
+        """
+        From its terms (3,) [m/s], all in one frame.
+        """
     def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
         ...
     @property
     def origin(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        velocity of F's origin seen from A
+        v_AF_E: velocity of F's origin seen from A, expressed in E [m/s]
         """
     @property
     def relative(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        velocity of Q seen from F
+        v_FQ_E: velocity of Q seen from F, expressed in E [m/s]
         """
     @property
     def rotational(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        w_AF x r, r = position of Q relative to F's origin
+        w_AF x r_FQ, r_FQ = position of Q relative to F's origin, expressed in E [m/s]
         """
     @property
     def total(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        velocity of Q seen from A (sum of the terms)
+        v_AQ_E: velocity of Q seen from A (sum of the terms), expressed in E [m/s]
         """
 class PointAcceleration:
     """
     Acceleration of a point Q moving in a frame F, seen from a frame A, term by term
     ("Rigid body kinematics and dynamics" notes (4.39); Craig's "Rigid Body Dynamics"
     slides): total = origin + tangential + centripetal + relative + coriolis. Each (3,)
-    [m/s^2], all expressed in the query's `expressed_in` frame.
+    [m/s^2], all expressed in one frame E (the query's `expressed_in`; A for the free
+    function point_acceleration).
     """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, arg0: typing.Any) -> typing.Any:
+        """
+        Exact equality of every term.
+        """
+    def __getstate__(self) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+        ...
+    def __init__(self, origin: typing.Any, tangential: typing.Any, centripetal: typing.Any, relative: typing.Any, coriolis: typing.Any) -> None:
+        """
+        From its terms (3,) [m/s^2], all in one frame.
+        """
     def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
         ...
     @property
     def centripetal(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        w_AF x (w_AF x r)
+        w_AF x (w_AF x r_FQ), expressed in E [m/s^2]
         """
     @property
     def coriolis(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        2 w_AF x v_rel, v_rel = velocity of Q seen from F
+        2 w_AF x v_FQ (v_FQ: velocity of Q seen from F), expressed in E [m/s^2]
         """
     @property
     def origin(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        acceleration of F's origin seen from A
+        a_AF_E: acceleration of F's origin seen from A, expressed in E [m/s^2]
         """
     @property
     def relative(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        acceleration of Q seen from F
+        a_FQ_E: acceleration of Q seen from F, expressed in E [m/s^2]
         """
     @property
     def tangential(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        alpha_AF x r
+        alpha_AF x r_FQ (r_FQ: Q relative to F's origin), expressed in E [m/s^2]
         """
     @property
     def total(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        acceleration of Q seen from A (sum of the terms)
+        a_AQ_E: acceleration of Q seen from A (sum of the terms), expressed in E [m/s^2]
         """
 class FrameMotion:
     """
     How a frame F moves relative to its parent P: a function of time t [s] giving its
     FrameKinematics (all vectors expressed in P).
     """
+    __hash__: typing.ClassVar[None] = None
     @staticmethod
     def constant_rotation(axis_P: typing.Any, rate: typing.Any, R_PF0: typing.Any = None, p_PF_P: typing.Any = None) -> FrameMotion:
         """
@@ -130,6 +171,18 @@ class FrameMotion:
         """
         F fixed in P: orientation R_PF (3,3) (None: identity), origin at p_PF_P (3,) [m] in P (None: 0).
         """
+    def __copy__(self) -> FrameMotion:
+        ...
+    def __deepcopy__(self, memo: typing.Any) -> FrameMotion:
+        """
+        A copy; a general motion's callable is shared, as copy.deepcopy shares functions.
+        """
+    def __eq__(self, arg0: typing.Any) -> typing.Any:
+        """
+        Built the same way from exactly equal parameters (or equal callables).
+        """
+    def __getstate__(self) -> tuple:
+        ...
     def __init__(self, kinematics_at: typing.Any) -> None:
         """
         General motion: kinematics_at(t) returns a FrameKinematics or a 6-tuple
@@ -137,6 +190,10 @@ class FrameMotion:
         keeps them consistent (w, alpha the derivatives of R; v, a those of p); the tree checks each value
         (finite, R_PF a rotation) and raises ValueError naming the frame.
         """
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
     def at(self, t: typing.Any) -> FrameKinematics:
         """
         F relative to P at time t [s] (not checked: the tree checks the values it uses).
@@ -149,11 +206,29 @@ class FrameTree:
     Unknown names, duplicates and cycles raise ValueError. Trees of any depth (every walk
     is iterative).
     """
+    __hash__: typing.ClassVar[None] = None
     world: typing.ClassVar[str] = 'world'
-    def __init__(self) -> None:
+    def __copy__(self) -> FrameTree:
+        ...
+    def __deepcopy__(self, memo: typing.Any) -> FrameTree:
         """
-        A tree holding only 'world'.
+        A copy; the motions' callables are shared, as copy.deepcopy shares functions.
         """
+    def __eq__(self, arg0: typing.Any) -> typing.Any:
+        """
+        Same names in the same order, same parents, equal motions.
+        """
+    def __getstate__(self) -> tuple[list]:
+        ...
+    def __init__(self, frames: typing.Any = None) -> None:
+        """
+        A tree holding 'world' and the frames: a list of (name, parent, FrameMotion) triples (None: none),
+        as repr shows them; a parent may come after its child.
+        """
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
     def add_frame(self, name: typing.Any, parent: typing.Any, motion: typing.Any) -> None:
         """
         Adds frame `name` under `parent` (which must exist), placed by `motion`.
@@ -178,6 +253,10 @@ class FrameTree:
     def kinematics(self, frame: typing.Any, relative_to: typing.Any, t: typing.Any) -> FrameKinematics:
         """
         FrameKinematics of `frame` F relative to `relative_to` A at t, expressed in A.
+        """
+    def motion(self, name: typing.Any) -> FrameMotion:
+        """
+        The FrameMotion placing frame `name` in its parent ('world': fixed at the identity).
         """
     def parent(self, name: typing.Any) -> str:
         """
@@ -218,12 +297,19 @@ class Force:
     Spatial force vector (wrench) [n; f], angular part first: n moment [N m] about the
     origin of the frame of expression, f force [N].
     """
+    __hash__: typing.ClassVar[None] = None
     @staticmethod
     def from_vector(vector: typing.Any) -> Force:
         """
         Force from a (6,) array [n; f].
         """
     def __add__(self, arg0: typing.Any) -> typing.Any:
+        ...
+    def __eq__(self, arg0: typing.Any) -> typing.Any:
+        """
+        Exact equality of the angular and linear parts.
+        """
+    def __getstate__(self) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
         ...
     def __init__(self, angular: typing.Any = None, linear: typing.Any = None) -> None:
         """
@@ -237,11 +323,18 @@ class Force:
         ...
     def __rmul__(self, arg0: typing.Any) -> Force:
         ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
     def __sub__(self, arg0: typing.Any) -> typing.Any:
         ...
-    def dot(self, m: typing.Any) -> float:
+    def dot(self, motion: typing.Any) -> float:
         """
-        Power w . n + v . f [W] of this force on the motion m.
+        Power w . n + v . f [W] of this force on the motion (same frame and reference point).
+        """
+    def is_approx(self, other: typing.Any, prec: typing.Any = 1e-12) -> bool:
+        """
+        True when the 6-vectors agree to `prec` relative to the smaller norm (Eigen's isApprox: |a - b| <=
+        prec min(|a|, |b|), so only an exactly zero Force is close to zero). == compares exactly.
         """
     def to_vector(self) -> numpy.typing.NDArray[numpy.float64]:
         """
@@ -250,24 +343,31 @@ class Force:
     @property
     def angular(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        n (3,) [N m] about the frame's origin, read-only copy
+        n (3,) [N m]: moment about the frame's origin, expressed in that frame; read-only copy
         """
     @property
     def linear(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        f (3,) [N], read-only copy
+        f (3,) [N], expressed in the frame of the force; read-only copy
         """
 class Motion:
     """
     Spatial motion vector (twist) [w; v], angular part first: w angular velocity [rad/s], v
     velocity [m/s] of the body point at the origin of the frame of expression.
     """
+    __hash__: typing.ClassVar[None] = None
     @staticmethod
     def from_vector(vector: typing.Any) -> Motion:
         """
         Motion from a (6,) array [w; v].
         """
     def __add__(self, arg0: typing.Any) -> typing.Any:
+        ...
+    def __eq__(self, arg0: typing.Any) -> typing.Any:
+        """
+        Exact equality of the angular and linear parts.
+        """
+    def __getstate__(self) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
         ...
     def __init__(self, angular: typing.Any = None, linear: typing.Any = None) -> None:
         """
@@ -281,19 +381,26 @@ class Motion:
         ...
     def __rmul__(self, arg0: typing.Any) -> Motion:
         ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
     def __sub__(self, arg0: typing.Any) -> typing.Any:
         ...
     def cross(self, other: typing.Any) -> Motion:
         """
         Motion cross product (crm): self x other = [w1 x w2; w1 x v2 + v1 x w2].
         """
-    def cross_force(self, f: typing.Any) -> Force:
+    def cross_force(self, force: typing.Any) -> Force:
         """
-        Force cross product (crf): self x* f = [w x n + v x f; w x f].
+        Force cross product (crf): self x* force = [w x n + v x f; w x f].
         """
-    def dot(self, f: typing.Any) -> float:
+    def dot(self, force: typing.Any) -> float:
         """
-        Power w . n + v . f [W] of the force f on this motion (same frame and reference point).
+        Power w . n + v . f [W] of the force on this motion (same frame and reference point).
+        """
+    def is_approx(self, other: typing.Any, prec: typing.Any = 1e-12) -> bool:
+        """
+        True when the 6-vectors agree to `prec` relative to the smaller norm (Eigen's isApprox: |a - b| <=
+        prec min(|a|, |b|), so only an exactly zero Motion is close to zero). == compares exactly.
         """
     def to_vector(self) -> numpy.typing.NDArray[numpy.float64]:
         """
@@ -302,24 +409,31 @@ class Motion:
     @property
     def angular(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        w (3,) [rad/s], read-only copy
+        w (3,) [rad/s], expressed in the frame of the motion; read-only copy
         """
     @property
     def linear(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        v (3,) [m/s] at the frame's origin, read-only copy
+        v (3,) [m/s] of the body point at the frame's origin, expressed in that frame; read-only copy
         """
 class Transform:
     """
     Rigid transform X_AB: R_AB (B coordinates -> A coordinates) and p_AB (B's origin in A)
     [m]. Maps points, motions and forces expressed in B to A; X_AB * X_BC = X_AC.
     """
+    __hash__: typing.ClassVar[None] = None
     @staticmethod
     def from_quat(q_AB: typing.Any, translation: typing.Any = None, scalar_first: typing.Any = False) -> Transform:
         """
         X_AB from the unit quaternion q_AB (4,) ((x, y, z, w), or (w, x, y, z) if scalar_first) and
         p_AB (3,) [m] (default zero).
         """
+    def __eq__(self, arg0: typing.Any) -> typing.Any:
+        """
+        Exact equality of rotation and translation.
+        """
+    def __getstate__(self) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+        ...
     def __init__(self, rotation: typing.Any = None, translation: typing.Any = None) -> None:
         """
         X_AB from rotation R_AB (3,3), orthonormal with det +1 (default identity), and translation
@@ -330,6 +444,8 @@ class Transform:
         X_AB * X_BC = X_AC.
         """
     def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
         ...
     def act(self, spatial_vector: typing.Any) -> typing.Any:
         """
@@ -355,6 +471,11 @@ class Transform:
         """
         X_BA = X_AB^-1.
         """
+    def is_approx(self, other: typing.Any, prec: typing.Any = 1e-12) -> bool:
+        """
+        True when rotations and translations each agree to `prec` relative to the smaller norm (Eigen's
+        isApprox; a zero translation compares only with an exactly zero one). == compares exactly.
+        """
     def motion_matrix(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         Featherstone's X (6,6), angular first: [[R, 0], [hat(p) R, R]].
@@ -379,6 +500,13 @@ class Screw:
     the origin [m], pitch [m/rad] (inf for a pure translation) and magnitude (|w| [rad/s], or
     |v| [m/s] for a pure translation), all in the twist's frame.
     """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, arg0: typing.Any) -> typing.Any:
+        """
+        Exact equality of every part.
+        """
+    def __getstate__(self) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64], float, float]:
+        ...
     def __init__(self, direction: typing.Any, point: typing.Any, pitch: typing.Any, magnitude: typing.Any) -> None:
         """
         Screw from its parts (checked by screw_to_twist): direction (3,) unit, point (3,) [m], pitch [m/rad]
@@ -386,10 +514,12 @@ class Screw:
         """
     def __repr__(self) -> str:
         ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
     @property
     def direction(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        unit (3,)
+        unit (3,), expressed in the twist's frame
         """
     @property
     def magnitude(self) -> float:
@@ -404,7 +534,7 @@ class Screw:
     @property
     def point(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3,) [m], point of the axis closest to the origin
+        (3,) [m], the point of the axis closest to the twist's frame's origin, expressed in that frame
         """
 class InertiaCheck:
     """
@@ -464,7 +594,16 @@ class InertiaReport:
     """
     Validity report of (mass, inertia about the centre of mass); see inertia_report.
     """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, arg0: typing.Any) -> typing.Any:
+        """
+        Exact equality of every field.
+        """
+    def __getstate__(self) -> tuple:
+        ...
     def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
         ...
     def summary(self) -> str:
         """
@@ -506,7 +645,7 @@ class InertiaReport:
     @property
     def principal_moments(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3,) ascending I0 <= I1 <= I2 [kg m^2]
+        (3,) ascending I0 <= I1 <= I2 [kg m^2] of the inertia about the centre of mass
         """
     @property
     def symmetric(self) -> bool:
@@ -526,17 +665,42 @@ class InertiaReport:
         """
 class PrincipalAxes:
     """
-    Principal moments (ascending) and axes (columns, right-handed).
+    Principal moments and axes of a rotational inertia (Craig "Principal Axes"), in the frame the
+    inertia is expressed in: moments ascending [kg m^2], axes as columns (column k is the unit axis of
+    moments[k]; right-handed, det +1), so that I = axes @ diag(moments) @ axes.T. For a stack of n
+    inertias, arrays (n, 3) and (n, 3, 3). Unpacks as `moments, axes = principal_axes(I)`.
     """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, arg0: typing.Any) -> typing.Any:
+        ...
+    def __getitem__(self, index: typing.Any) -> typing.Any:
+        """
+        0: moments, 1: axes (as the tuple (moments, axes)).
+        """
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, moments: typing.Any, axes: typing.Any) -> None:
+        """
+        From moments (3,) [kg m^2] and axes (3,3) (or (n,3), (n,3,3)); copied, read-only.
+        """
+    def __iter__(self) -> typing.Any:
+        ...
+    def __len__(self) -> int:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
     @property
     def axes(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3,3): column k is the axis of moments[k]; det +1
+        (3,3) or (n,3,3): column k is the unit axis of moments[k], expressed in the inertia's frame;
+        det +1. Read-only.
         """
     @property
     def moments(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3,) ascending [kg m^2]
+        (3,) or (n, 3) ascending [kg m^2], read-only
         """
 class SpatialInertia:
     """
@@ -544,6 +708,7 @@ class SpatialInertia:
     the centre of mass I_C [kg m^2], all expressed in one frame. Constructors check validity
     (ValueError with the principal moments, triangle margins and condition number).
     """
+    __hash__: typing.ClassVar[None] = None
     @staticmethod
     def from_inertia_about_origin(mass: typing.Any, com: typing.Any, inertia_about_origin: typing.Any, check: typing.Any = InertiaCheck.physical) -> SpatialInertia:
         """
@@ -568,6 +733,12 @@ class SpatialInertia:
         """
         Composite of two bodies expressed in the same frame.
         """
+    def __eq__(self, arg0: typing.Any) -> typing.Any:
+        """
+        Exact equality of mass, com and inertia_com (is_approx: up to a tolerance).
+        """
+    def __getstate__(self) -> tuple[float, numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+        ...
     def __init__(self, mass: typing.Any, com: typing.Any, inertia_com: typing.Any, check: typing.Any = InertiaCheck.physical) -> None:
         """
         mass [kg] > 0, com (3,) [m], inertia_com (3,3) [kg m^2] about the centre of mass.
@@ -575,6 +746,8 @@ class SpatialInertia:
         InertiaCheck.allow_unrealizable (opt-in: symmetric PSD only, e.g. I = diag(2, 1, 2/3)).
         """
     def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
         ...
     def __sub__(self, arg0: SpatialInertia) -> SpatialInertia:
         """
@@ -603,7 +776,8 @@ class SpatialInertia:
         """
     def is_approx(self, other: typing.Any, prec: typing.Any = 1e-12) -> bool:
         """
-        Relative comparison.
+        True when mass, centre of mass and inertia_com agree to `prec` relative to their size (the centre of
+        mass relative to the radius of gyration plus |com|). == compares exactly.
         """
     def kinetic_energy(self, twist: typing.Any) -> float:
         """
@@ -619,7 +793,8 @@ class SpatialInertia:
         """
     def principal_axes(self) -> PrincipalAxes:
         """
-        Principal moments and right-handed axes of I_C.
+        PrincipalAxes of I_C (about the centre of mass, in the frame of expression): moments ascending
+        [kg m^2], axes as columns, right-handed.
         """
     def remove(self, part: typing.Any, check: typing.Any = InertiaCheck.physical) -> SpatialInertia:
         """
@@ -652,10 +827,72 @@ class SpatialInertia:
         """
         m [kg]
         """
+class MeshWeldWarning(UserWarning):
+    """
+    Warned by solid_mesh and mesh_shell when welding merged vertices or dropped faces (a UserWarning;
+    filter it with warnings.filterwarnings, or weld with weld_vertices first).
+    """
+class WeldedMesh:
+    """
+    A mesh after weld_vertices, with what the weld changed.
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def dropped_faces(self) -> int:
+        """
+        faces repeating a vertex after welding, dropped
+        """
+    @property
+    def face_index(self) -> numpy.typing.NDArray[numpy.int64]:
+        """
+        (f',) int64 input index of each kept face
+        """
+    @property
+    def faces(self) -> numpy.typing.NDArray[numpy.int64]:
+        """
+        (f', 3) int64 the non-degenerate faces, in input order, indexing vertices
+        """
+    @property
+    def tolerance(self) -> float:
+        """
+        weld tolerance used [m]
+        """
+    @property
+    def vertex_index(self) -> numpy.typing.NDArray[numpy.int64]:
+        """
+        (n',) int64 input index of each kept vertex
+        """
+    @property
+    def vertices(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (n', 3) [m] the kept vertices (each cluster's lowest-indexed), in input order
+        """
+    @property
+    def welded_vertices(self) -> int:
+        """
+        input vertices merged into another
+        """
 class DensityIntegral:
     """
-    Result of a density quadrature with its error estimate.
+    Result of a density quadrature with its error estimate (all in the frame of the
+    points rho was evaluated at).
     """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, arg0: typing.Any) -> typing.Any:
+        """
+        Exact equality of every field.
+        """
+    def __getstate__(self) -> tuple[SpatialInertia, float, float, float, int]:
+        ...
+    def __init__(self, inertia: typing.Any, mass_error: typing.Any, com_error: typing.Any, inertia_error: typing.Any, evaluations: typing.Any) -> None:
+        """
+        From its fields (as the attributes).
+        """
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
     @property
     def com_error(self) -> float:
         """
@@ -669,12 +906,13 @@ class DensityIntegral:
     @property
     def inertia(self) -> SpatialInertia:
         """
-        SpatialInertia from the higher-order rule
+        SpatialInertia from the higher-order rule (centre of mass and inertia about it, in the frame
+        of the points)
         """
     @property
     def inertia_error(self) -> float:
         """
-        ||I_high - I_low||_F [kg m^2]
+        ||I_C,high - I_C,low||_F [kg m^2], inertias about the centre of mass
         """
     @property
     def mass_error(self) -> float:
@@ -685,7 +923,16 @@ class Particle:
     """
     A point mass (3 DOF; "Rigid body kinematics and dynamics" notes, section 4.11): mass [kg] > 0.
     """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple[float]:
+        ...
     def __init__(self, mass: typing.Any) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
         ...
     @property
     def mass(self) -> float:
@@ -696,7 +943,16 @@ class PlanarBody:
     """
     A rigid body moving in the xy plane of W (x, y, theta; plane kinetics of Craig's "Rigid Body Dynamics" slides): mass [kg] and inertia_zz [kg m^2] about the z axis through the centre of mass, both > 0.
     """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple[float, float]:
+        ...
     def __init__(self, mass: typing.Any, inertia_zz: typing.Any) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
         ...
     @property
     def inertia_zz(self) -> float:
@@ -710,9 +966,29 @@ class PlanarBody:
         """
 class RigidBody:
     """
-    A spatial rigid body (6 DOF): mass [kg] > 0 and inertia_com (3, 3) [kg m^2] about the centre of mass in the body frame B, symmetric positive definite, checked as every inertia of rigiddyn is (inertia_report): under check=InertiaCheck.physical (default) the principal moments must satisfy the triangle inequality; check=InertiaCheck.allow_unrealizable accepts test bodies no real body has, e.g. I = diag(2, 1, 2/3). (require_triangle_inequality=False, or False as the third positional argument, is the older spelling of allow_unrealizable.) euler_form tells which form of Euler's equations it uses: 'spherical', 'principal' or 'full'.
+    A spatial rigid body (6 DOF), in three forms:
+      RigidBody(mass, [I1, I2, I3])  mass [kg] > 0 and principal moments [kg m^2] about the centre of mass
+                                     (the body axes B principal: inertia_com = diag(I1, I2, I3));
+      RigidBody(mass, inertia_com)   inertia_com (3, 3) [kg m^2] about the centre of mass in B, moments on the
+                                     diagonal and negated products off it (I_xy = -sum x y dm);
+      RigidBody(spatial_inertia)     a SpatialInertia: its mass and inertia about its centre of mass, B placed
+                                     at the centre of mass with the SpatialInertia's axes.
+    The inertia must be symmetric positive definite and is checked as every inertia of rigiddyn is
+    (inertia_report): under check=InertiaCheck.physical (the default) the principal moments must satisfy the
+    triangle inequality I_a + I_b >= I_c; check=InertiaCheck.allow_unrealizable accepts test bodies no real
+    body has, e.g. I = diag(2, 1, 2/3). euler_form tells which form of Euler's equations it uses:
+    'spherical', 'principal' or 'full'.
     """
-    def __init__(self, mass: typing.Any, inertia_com: typing.Any, check: typing.Any = None, require_triangle_inequality: typing.Any = None) -> None:
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple[float, numpy.typing.NDArray[numpy.float64]]:
+        ...
+    def __init__(self, mass: typing.Any, inertia_com: typing.Any = None, check: typing.Any = None) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
         ...
     @property
     def euler_form(self) -> str:
@@ -722,7 +998,7 @@ class RigidBody:
     @property
     def inertia_com(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3, 3) inertia about the centre of mass in B [kg m^2]
+        (3, 3) inertia about the centre of mass in B [kg m^2] (read-only)
         """
     @property
     def mass(self) -> float:
@@ -731,51 +1007,96 @@ class RigidBody:
         """
 class ParticleState:
     """
-    Particle state: p_W (3,) [m] and v_W (3,) [m/s] in W (None: zero).
+    Particle state: p_W (3,) [m] and v_W (3,) [m/s] in W (None: zero). Fields are assigned whole (s.v_W = [...]); their arrays are read-only.
     """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+        ...
     def __init__(self, p_W: typing.Any = None, v_W: typing.Any = None) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
         ...
     @property
     def p_W(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3,) [m]
+        (3,) position in W [m]
         """
+    @p_W.setter
+    def p_W(self, arg1: typing.Any) -> None:
+        ...
     @property
     def v_W(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3,) [m/s]
+        (3,) velocity in W [m/s]
         """
+    @v_W.setter
+    def v_W(self, arg1: typing.Any) -> None:
+        ...
 class PlanarBodyState:
     """
-    Planar body state: p_W (2,) [m] centre of mass, theta [rad] angle of B about z, v_W (2,) [m/s], omega [rad/s] (None: zero).
+    Planar body state: p_W (2,) [m] centre of mass in W, theta [rad] angle of B about z, v_W (2,) [m/s] in W, omega [rad/s] (None: zero). Fields are assigned whole; their arrays are read-only.
     """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple[numpy.typing.NDArray[numpy.float64], float, numpy.typing.NDArray[numpy.float64], float]:
+        ...
     def __init__(self, p_W: typing.Any = None, theta: typing.Any = 0.0, v_W: typing.Any = None, omega: typing.Any = 0.0) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
         ...
     @property
     def omega(self) -> float:
         """
-        [rad/s]
+        angular velocity [rad/s]
         """
+    @omega.setter
+    def omega(self, arg1: typing.Any) -> None:
+        ...
     @property
     def p_W(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (2,) [m]
+        (2,) centre of mass in W [m]
         """
+    @p_W.setter
+    def p_W(self, arg1: typing.Any) -> None:
+        ...
     @property
     def theta(self) -> float:
         """
-        [rad]
+        angle of B about z [rad]
         """
+    @theta.setter
+    def theta(self, arg1: typing.Any) -> None:
+        ...
     @property
     def v_W(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (2,) [m/s]
+        (2,) velocity in W [m/s]
         """
+    @v_W.setter
+    def v_W(self, arg1: typing.Any) -> None:
+        ...
 class RigidBodyState:
     """
-    Rigid body state (docs/conventions.md): p_W (3,) centre of mass [m], q_WB (4,) unit quaternion (x, y, z, w), or (w, x, y, z) with scalar_first=True, v_W (3,) [m/s] in W, w_B (3,) angular velocity [rad/s] in B (None: zero, identity). q_WB is normalised; ValueError if | |q| - 1 | > 1e-6.
+    Rigid body state (docs/conventions.md): p_W (3,) centre of mass in W [m], q_WB (4,) unit quaternion (x, y, z, w), or (w, x, y, z) with scalar_first=True, v_W (3,) centre of mass velocity in W [m/s], w_B (3,) angular velocity [rad/s] in B (None: zero, identity). q_WB is normalised; ValueError if | |q| - 1 | > 1e-6. Fields are assigned whole (s.w_B = [...], s.q_WB = [x, y, z, w], checked as here); their arrays are read-only.
     """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+        ...
     def __init__(self, p_W: typing.Any = None, q_WB: typing.Any = None, v_W: typing.Any = None, w_B: typing.Any = None, scalar_first: typing.Any = False) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
         ...
     def quaternion(self, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
         """
@@ -784,52 +1105,208 @@ class RigidBodyState:
     @property
     def p_W(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3,) [m]
+        (3,) centre of mass position in W [m]
         """
+    @p_W.setter
+    def p_W(self, arg1: typing.Any) -> None:
+        ...
     @property
     def q_WB(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (4,) (x, y, z, w)
+        (4,) attitude (x, y, z, w), B to W; set from (x, y, z, w), normalised (ValueError beyond 1e-6 of unit norm)
         """
+    @q_WB.setter
+    def q_WB(self, arg1: typing.Any) -> None:
+        ...
     @property
     def v_W(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3,) [m/s]
+        (3,) centre of mass velocity in W [m/s]
         """
+    @v_W.setter
+    def v_W(self, arg1: typing.Any) -> None:
+        ...
     @property
     def w_B(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3,) [rad/s]
+        (3,) angular velocity of B in W, expressed in B [rad/s]
         """
+    @w_B.setter
+    def w_B(self, arg1: typing.Any) -> None:
+        ...
 class KineticEnergy:
     """
-    Kinetic energy split: translational 1/2 m v.v, rotational 1/2 w.I w [J].
+    Kinetic energy [J] split as T = translational + rotational: translational 1/2 m v_W.v_W of the centre of mass, rotational 1/2 w_B.I w_B about it (1/2 I_zz omega^2 for a planar body, 0 for a particle); total = their sum. Immutable.
     """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple[float, float]:
+        ...
+    def __init__(self, translational: typing.Any = 0.0, rotational: typing.Any = 0.0) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
     @property
     def rotational(self) -> float:
         """
-        [J]
+        1/2 w.I w about the centre of mass [J]
         """
     @property
     def total(self) -> float:
         """
-        [J]
+        translational + rotational [J]
         """
     @property
     def translational(self) -> float:
         """
-        [J]
+        1/2 m v.v [J]
+        """
+class ComWrench:
+    """
+    Loads reduced to the centre of mass G: f_W (3,) force in W [N] and tau_B (3,) torque about G in B [N m] (inverse_dynamics' result; unpacks as f_W, tau_B = ...). Immutable.
+    """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getitem__(self, index: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+        ...
+    def __init__(self, f_W: typing.Any = None, tau_B: typing.Any = None) -> None:
+        ...
+    def __iter__(self) -> collections.abc.Iterator:
+        ...
+    def __len__(self) -> int:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def f_W(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3,) force in W [N]
+        """
+    @property
+    def tau_B(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3,) torque about the centre of mass in B [N m]
+        """
+class PlanarWrench:
+    """
+    In-plane loads reduced to the centre of mass G: f_W (2,) force in W [N] and tau torque about z through G [N m] (inverse_dynamics' result for a PlanarBody; unpacks as f_W, tau = ...). Immutable.
+    """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getitem__(self, index: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple[numpy.typing.NDArray[numpy.float64], float]:
+        ...
+    def __init__(self, f_W: typing.Any = None, tau: typing.Any = 0.0) -> None:
+        ...
+    def __iter__(self) -> collections.abc.Iterator:
+        ...
+    def __len__(self) -> int:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def f_W(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (2,) force in W [N]
+        """
+    @property
+    def tau(self) -> float:
+        """
+        torque about z through the centre of mass [N m]
+        """
+class BodyAcceleration:
+    """
+    Accelerations of a rigid body: a_W (3,) of the centre of mass in W [m/s^2] and alpha_B (3,) angular, in B [rad/s^2] (forward_dynamics' result; unpacks as a_W, alpha_B = ...). Immutable.
+    """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getitem__(self, index: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+        ...
+    def __init__(self, a_W: typing.Any = None, alpha_B: typing.Any = None) -> None:
+        ...
+    def __iter__(self) -> collections.abc.Iterator:
+        ...
+    def __len__(self) -> int:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def a_W(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3,) centre of mass acceleration in W [m/s^2]
+        """
+    @property
+    def alpha_B(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3,) angular acceleration in B [rad/s^2]
+        """
+class PlanarAcceleration:
+    """
+    Accelerations of a planar body: a_W (2,) of the centre of mass in W [m/s^2] and alpha about z [rad/s^2] (forward_dynamics' result; unpacks as a_W, alpha = ...). Immutable.
+    """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getitem__(self, index: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple[numpy.typing.NDArray[numpy.float64], float]:
+        ...
+    def __init__(self, a_W: typing.Any = None, alpha: typing.Any = 0.0) -> None:
+        ...
+    def __iter__(self) -> collections.abc.Iterator:
+        ...
+    def __len__(self) -> int:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def a_W(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (2,) centre of mass acceleration in W [m/s^2]
+        """
+    @property
+    def alpha(self) -> float:
+        """
+        angular acceleration about z [rad/s^2]
         """
 class AppliedLoad:
     """
-    A load: force (3,) [N] through the centre of mass and couple torque (3,) [N m], both in frame 'world' or 'body', active for t_start <= t < t_end [s].
+    A load: force (3,) [N] through the centre of mass and torque (3,) [N m] (a pure couple), both expressed in frame 'world' (W) or 'body' (B), active for t_start <= t < t_end [s]. Immutable.
     """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64], str, float, float]:
+        ...
     def __init__(self, force: typing.Any = None, torque: typing.Any = None, frame: typing.Any = 'world', t_start: typing.Any = ..., t_end: typing.Any = ...) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
         ...
     @property
     def force(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3,) [N]
+        (3,) [N] in frame
         """
     @property
     def frame(self) -> str:
@@ -849,12 +1326,22 @@ class AppliedLoad:
     @property
     def torque(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3,) [N m]
+        (3,) [N m] in frame
         """
 class SimulationResult:
     """
-    simulate's records (see simulate).
+    simulate's records (see simulate), one row per record; the arrays are read-only.
     """
+    def __getstate__(self) -> tuple:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    def to_dataframe(self, scalar_first: typing.Any = False) -> typing.Any:
+        """
+        A pandas.DataFrame of the records (needs pandas: pip install 'rigiddyn[dataframe]'): one row per record, one column per scalar with its unit, as the CSV of `python -m rigiddyn simulate`: 't [s]' (a column, not the index), 'p_W_x [m]' .. 'q_WB_x' .. 'q_WB_w', 'v_W_x [m/s]' .., 'w_B_x [rad/s]' .., 'kinetic_energy [J]', 'total_energy [J]', 'angular_momentum_norm [kg m^2/s]', 'quaternion_norm_error', 'work [J]'. scalar_first=True for a result of simulate(..., scalar_first=True) (q_WB as (w, x, y, z); the result does not record it).
+        """
     @property
     def angular_momentum_norm(self) -> numpy.typing.NDArray[numpy.float64]:
         """
@@ -926,13 +1413,27 @@ class TorqueFreeSolution:
     functions, attitude by Legendre's third integral (Landau & Lifshitz, Mechanics §37;
     Celledoni, Fassò, Säfström, Zanna 2008; docs/references.md), at any time t [s].
     """
-    def __init__(self, inertia: typing.Any, q_WB: typing.Any, w_B: typing.Any, scalar_first: typing.Any = False) -> None:
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, arg0: typing.Any) -> typing.Any:
         """
-        inertia: (3, 3) rotational inertia about the centre of mass, in B [kg m^2], symmetric positive definite;
+        Built from exactly equal arguments (then every state is bitwise equal).
+        """
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, inertia: typing.Any, q_WB: typing.Any, w_B: typing.Any, scalar_first: typing.Any = False, check: typing.Any = InertiaCheck.physical) -> None:
+        """
+        inertia: (3, 3) rotational inertia about the centre of mass, in B [kg m^2], symmetric positive definite
+        and, under check=InertiaCheck.physical (default), with principal moments satisfying the triangle
+        inequality I1 + I2 >= I3 (ValueError naming the moments otherwise; check=
+        InertiaCheck.allow_unrealizable opts in to test problems such as diag(2, 1, 2/3));
         q_WB: (4,) initial attitude, (x, y, z, w) or (w, x, y, z) if scalar_first; w_B: (3,) initial angular
         velocity of B in W, expressed in B [rad/s]. Any finite magnitudes (the motion is computed in scaled
         units); ValueError naming w_B when a rate of the motion exceeds the double range.
         """
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
     def state_at(self, t: typing.Any) -> tuple:
         """
         State at time t [s] (scalar, or (n,) array; negative allowed): (q_WB, w_B) of shapes (4,), (3,) or
@@ -947,7 +1448,8 @@ class TorqueFreeSolution:
     @property
     def angular_momentum_W(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3,) constant spatial angular momentum L_W [kg m^2/s]; inf with a RuntimeWarning beyond the double range.
+        (3,) constant angular momentum about the centre of mass, expressed in W, L_W [kg m^2/s]; inf with a
+        RuntimeWarning beyond the double range.
         """
     @property
     def case(self) -> str:
@@ -955,9 +1457,10 @@ class TorqueFreeSolution:
         'sphere', 'symmetric', 'A' (about axis 3), 'B' (about axis 1) or 'separatrix'.
         """
     @property
-    def kinetic_energy(self) -> float:
+    def kinetic_energy(self) -> KineticEnergy:
         """
-        Constant kinetic energy of rotation [J]; inf with a RuntimeWarning beyond the double range.
+        Constant KineticEnergy of the rotation [J]: rotational 1/2 w_B . I_B w_B, translational 0 (the
+        centre of mass is not part of this solution); inf with a RuntimeWarning beyond the double range.
         """
     @property
     def parameter_m(self) -> float:
@@ -977,23 +1480,56 @@ class TorqueFreeSolution:
     @property
     def principal_moments(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3,) principal moments I1 <= I2 <= I3 [kg m^2].
+        (3,) principal moments I1 <= I2 <= I3 [kg m^2] about the centre of mass.
         """
+def align_vectors(a: typing.Any, b: typing.Any, weights: typing.Any = None, return_sensitivity: typing.Any = False, scalar_first: typing.Any = False) -> tuple:
+    """
+    The rotation R that best maps the vectors b onto the vectors a (Wahba's problem), as SciPy's
+    Rotation.align_vectors(a, b, weights): R minimises 1/2 sum_i w_i |a_i - R b_i|^2.
+    
+    a, b: (3,) or (N, 3), the same vectors observed in two frames: with a in W and b in B the result
+    is q_WB. Lengths act as weights (normalise for equal weighting). weights: None (all 1) or (N,)
+    of values >= 0; one may be inf: that primary pair is aligned exactly and the others only by the
+    turn about it. One pair (N = 1): the smallest rotation taking the direction of b to that of a.
+    General case by the SVD of B = sum w_i a_i b_i^T (Markley 1988), UserWarning when the optimum
+    is not unique (all pairs parallel).
+    Returns (q, rssd) or, with return_sensitivity=True, (q, rssd, sensitivity): q (4,) canonical
+    (w >= 0), (x, y, z, w) or (w, x, y, z) if scalar_first; rssd = sqrt(sum_i w_i |a_i - R b_i|^2)
+    [units of a] over the finite weights; sensitivity (3, 3), SciPy's covariance of the rotation-vector
+    error [rad^2 per unit of measurement variance] (not for one pair or an infinite weight).
+    """
+def angular_distance(q_a: typing.Any, q_b: typing.Any, scalar_first: typing.Any = False, degrees: typing.Any = False) -> typing.Any:
+    """
+    Angle [rad, or degrees if degrees=True] in [0, pi] of the rotation taking q_a to q_b: the
+    magnitude of q_a^-1 * q_b (SciPy's (r_a.inv() * r_b).magnitude()), a metric on rotations,
+    independent of the quaternions' signs. 2 atan2(|d_xyz|, |d_w|): accurate near 0 and near pi.
+    
+    q_a, q_b: (4,) or (n, 4) unit quaternions, (x, y, z, w) or (w, x, y, z) if scalar_first; a single
+    one is compared with every item of the other. Returns a float or (n,).
+    """
 def angular_momentum(body: typing.Any, state: typing.Any, point: typing.Any = None) -> typing.Any:
     """
-    Angular momentum about the point fixed in W at `point` (p_WP [m]; None = the centre of mass, for a Particle the particle itself). body: a RigidBody, PlanarBody or Particle; state: its state (RigidBodyState, PlanarBodyState or ParticleState), finite (ValueError naming it otherwise, e.g. for a state a diverged step returned). 
-    RigidBody: (3,) [kg m^2/s] in W, H_P = R_WB I w_B + (p_W - p_WP) x m v_W. PlanarBody: H_z [kg m^2/s] about z, I_zz omega + (p_W - p_WP) x m v_W, point (2,). Particle: (3,), (p_W - p_WP) x m v_W.
+    Angular momentum about the point P fixed in W at `point` (p_WP [m] in W; None = the world origin O, as the "Rigid body kinematics and dynamics" notes define it, eq. (4.42) and (4.65)), expressed in W. About the centre of mass: point=state.p_W. body: a RigidBody, PlanarBody or Particle; state: its state (RigidBodyState, PlanarBodyState or ParticleState), finite (ValueError naming it otherwise, e.g. for a state a diverged step returned). 
+    RigidBody: (3,) [kg m^2/s], H_P = R_WB I w_B + (p_W - p_WP) x m v_W. PlanarBody: H_z [kg m^2/s] about the z axis through P, I_zz omega + (p_W - p_WP) x m v_W, point (2,). Particle: (3,), (p_W - p_WP) x m v_W.
+    """
+def angular_velocity_from_quat_rate(q: typing.Any, dq_dt: typing.Any, frame: typing.Any = 'body', scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Angular velocity [rad/s] of the attitude q = q_WB changing at dq_dt [1/s], the inverse of quat_rate:
+    frame='body': w_B = 2 vec(q* ⊗ dq/dt); frame='world': w_W = 2 vec(dq/dt ⊗ q*).
+    The part of dq_dt along q (which would change |q|, not the rotation) is ignored.
+    q: (4,) or (n, 4) unit quaternions; dq_dt: (4,) or (n, 4), any finite values, in q's order.
+    Returns (3,) or (n, 3).
     """
 def apply_impulse(body: typing.Any, state: typing.Any, impulse: typing.Any, point: typing.Any = None, frame: typing.Any = 'world', angular_impulse: typing.Any = None) -> typing.Any:
     """
     The state just after an impulse [N s] at `point` (p_GP [m] from the centre of mass; None = the centre of mass) and an angular impulse [N m s] (None: none), all in `frame` ('world' or 'body'): m dv = impulse, I dw = p_GP x impulse + angular_impulse (impulse-momentum, Craig's "Rigid Body Dynamics" slides). body: a RigidBody, PlanarBody or Particle; state: its state (RigidBodyState, PlanarBodyState or ParticleState), finite (ValueError naming it otherwise, e.g. for a state a diverged step returned). 
     RigidBody: impulse, point, angular_impulse (3,). PlanarBody: impulse, point (2,), angular_impulse about z. Particle: impulse (3,) in W only.
     """
-def axis_angle_to_quat(axis: typing.Any, angle: typing.Any, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+def axis_angle_to_quat(axis: typing.Any, angle: typing.Any, scalar_first: typing.Any = False, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Unit quaternion of the rotation by angle [rad] about axis (right-hand rule).
     
-    axis: (3,) or (n, 3), any non-zero length (normalised); angle: float or (n,).
+    axis: (3,) or (n, 3), any non-zero length (normalised); angle: float or (n,), in degrees if degrees=True.
     Returns q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first.
     """
 def box_shell(size: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
@@ -1010,6 +1546,17 @@ def composite(parts: typing.Any) -> SpatialInertia:
     """
     Composite body: parts is a list of SpatialInertia (one frame) or of (X_AB, SpatialInertia) pairs,
     each part expressed in its B and placed in A by the Transform X_AB. Exact.
+    """
+def davenport_to_quat(axes: typing.Any, order: typing.Any, angles: typing.Any, scalar_first: typing.Any = False, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Unit quaternion of Davenport angles (rotations about three arbitrary axes).
+    
+    axes: (3, 3), the rotation axes n1, n2, n3 as rows (any non-zero length, normalised), n2
+    orthogonal to n1 and to n3 (|cos| <= 1e-7, as SciPy); order: 'e'/'extrinsic' (fixed axes,
+    R = R_n3(a3) R_n2(a2) R_n1(a1)) or 'i'/'intrinsic' (moving axes, R = R_n1(a1) R_n2(a2) R_n3(a3)),
+    as SciPy's Rotation.from_davenport / as_davenport. Coordinate axes give Euler angles.
+    angles: (3,) or (n, 3) [rad] (degrees if degrees=True), in the order of the axes.
+    Returns q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first.
     """
 def ellipk(m: typing.Any, mc: typing.Any = None) -> float:
     """
@@ -1037,33 +1584,34 @@ def elliprj(x: typing.Any, y: typing.Any, z: typing.Any, p: typing.Any) -> float
     Carlson's R_J(x, y, z, p) (DLMF 19.16.2) for finite x, y, z >= 0, at most one zero, and p > 0, of any
     magnitude; inf with a RuntimeWarning where the result exceeds the double range.
     """
-def euler_to_matrix(seq: typing.Any, angles: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+def euler_to_matrix(seq: typing.Any, angles: typing.Any, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Rotation matrix of Euler angles.
     
     seq: 3 letters as SciPy, lowercase 'xyz' = extrinsic (fixed axes), uppercase 'XYZ' = intrinsic
     (moving axes); the 12 sequences xyz xzy yxz yzx zxy zyx xyx xzx yxy yzy zxz zyz in either case.
-    angles: (3,) or (n, 3) [rad]. Returns R: (3, 3) or (n, 3, 3).
+    angles: (3,) or (n, 3) [rad] (degrees if degrees=True). Returns R: (3, 3) or (n, 3, 3).
     """
-def euler_to_quat(seq: typing.Any, angles: typing.Any, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+def euler_to_quat(seq: typing.Any, angles: typing.Any, scalar_first: typing.Any = False, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Unit quaternion of Euler angles.
     
     seq: 3 letters as SciPy, lowercase 'xyz' = extrinsic (fixed axes), uppercase 'XYZ' = intrinsic
     (moving axes); the 12 sequences xyz xzy yxz yzx zxy zyx xyx xzx yxy yzy zxz zyz in either case.
-    angles: (3,) or (n, 3) [rad], in the order of seq.
+    angles: (3,) or (n, 3) [rad] (degrees if degrees=True), in the order of seq.
     Returns q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first.
     """
-def force_cross_matrix(m: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+def force_cross_matrix(motion: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
     """
-    crf(m) (6,6) = [[hat(w), hat(v)], [0, hat(w)]] = -crm(m)^T, so crf(m) f = m x* f.
+    crf(V) (6,6) = [[hat(w), hat(v)], [0, hat(w)]] = -crm(V)^T of the motion V = [w; v], so crf(V) F = V x* F.
     """
 def forward_dynamics(body: typing.Any, state: typing.Any, force: typing.Any = None, torque: typing.Any = None, point: typing.Any = None, frame: typing.Any = 'world', gravity: typing.Any = None) -> typing.Any:
     """
-    Accelerations of `body` in `state` under a force applied at `point` and a couple `torque`.
+    Accelerations of `body` in `state` under a force applied at `point` and a torque `torque`.
     body: a RigidBody, PlanarBody or Particle; state: its state (RigidBodyState, PlanarBodyState or ParticleState), finite (ValueError naming it otherwise, e.g. for a state a diverged step returned). 
-    RigidBody: force (3,) [N] at point (p_GP (3,) [m], from the centre of mass; None = the centre of mass), torque (3,) [N m], all expressed in `frame` ('world' or 'body'), gravity None/False, True = (0, 0, -9.81) or (3,) [m/s^2] in W; returns (a_W (3,) [m/s^2] of the centre of mass in W, alpha_B (3,) [rad/s^2] in B). Newton: m a = f + m g; Euler: I alpha + w x I w = n_G.
-    PlanarBody: in-plane force (2,) [N] at point (2,) [m], torque [N m] about z, gravity None or (2,) [m/s^2]; returns (a_W (2,), alpha [rad/s^2]); I_zz alpha = n_G.
+    gravity: None (the default: no gravity, docs/conventions.md), True = (0, 0, -9.81) m/s^2, or a vector [m/s^2] in W.
+    RigidBody: force (3,) [N] at point (p_GP (3,) [m], from the centre of mass; None = the centre of mass), torque (3,) [N m], all expressed in `frame` ('world' or 'body'), gravity (3,); returns a BodyAcceleration (a_W (3,) [m/s^2] of the centre of mass in W, alpha_B (3,) [rad/s^2] in B; unpacks as a_W, alpha_B). Newton: m a = f + m g; Euler: I alpha + w x I w = tau_G.
+    PlanarBody: in-plane force (2,) [N] at point (2,) [m], torque [N m] about z, gravity (2,) [m/s^2]; returns a PlanarAcceleration (a_W (2,), alpha [rad/s^2]); I_zz alpha = tau_G.
     Particle: force (3,) [N] in W (torque and point None, frame 'world'); returns a_W (3,) = force/m + g.
     """
 def from_point_masses(masses: typing.Any, positions: typing.Any) -> SpatialInertia:
@@ -1104,11 +1652,12 @@ def integrate_density_over_mesh(rho: typing.Any, vertices: typing.Any, faces: ty
     """
 def inverse_dynamics(body: typing.Any, state: typing.Any, a_W: typing.Any, alpha_B: typing.Any = None, gravity: typing.Any = None) -> typing.Any:
     """
-    The applied wrench the motion requires (undoes forward_dynamics with a centre-of-mass load).
+    The applied loads the motion requires, reduced to the centre of mass (undoes forward_dynamics).
     body: a RigidBody, PlanarBody or Particle; state: its state (RigidBodyState, PlanarBodyState or ParticleState), finite (ValueError naming it otherwise, e.g. for a state a diverged step returned). 
-    RigidBody: a_W (3,) [m/s^2] in W, alpha_B (3,) [rad/s^2] in B, gravity as forward_dynamics; returns (f_W (3,) [N] in W, n_B (3,) [N m] about the centre of mass in B), f_W = m (a_W - g), n_B = I alpha_B + w_B x I w_B.
-    PlanarBody: a_W (2,), alpha_B [rad/s^2] about z, gravity None or (2,); returns (f_W (2,) [N], n [N m]).
-    Particle: a_W (3,) (alpha_B None); returns f_W (3,) = m (a_W - g).
+    gravity: None (the default: no gravity), True = (0, 0, -9.81) m/s^2, or a vector [m/s^2] in W.
+    RigidBody: a_W (3,) [m/s^2] in W, alpha_B (3,) [rad/s^2] in B; returns a ComWrench: f_W (3,) [N] in W and tau_B (3,) [N m] about the centre of mass in B (unpacks as f_W, tau_B), f_W = m (a_W - g), tau_B = I alpha_B + w_B x I w_B.
+    PlanarBody: a_W (2,), alpha_B [rad/s^2] about z, gravity (2,); returns a PlanarWrench: f_W (2,) [N] in W and tau [N m] about z (unpacks as f_W, tau).
+    Particle: a_W (3,) (alpha_B None); returns f_W (3,) [N] in W = m (a_W - g).
     """
 def jacobi_ellipj(u: typing.Any, m: typing.Any, mc: typing.Any = None) -> typing.Any:
     """
@@ -1118,45 +1667,62 @@ def jacobi_ellipj(u: typing.Any, m: typing.Any, mc: typing.Any = None) -> typing
     """
 def kinetic_energy(body: typing.Any, state: typing.Any) -> typing.Any:
     """
-    KineticEnergy(translational = 1/2 m v.v, rotational = 1/2 w_B.I w_B, 1/2 I_zz omega^2 for a PlanarBody, 0 for a Particle) [J]. body: a RigidBody, PlanarBody or Particle; state: its state (RigidBodyState, PlanarBodyState or ParticleState), finite (ValueError naming it otherwise, e.g. for a state a diverged step returned). 
+    Kinetic energy as a KineticEnergy [J]: translational = 1/2 m v_W.v_W, rotational = 1/2 w_B.I w_B about the centre of mass (1/2 I_zz omega^2 for a PlanarBody, 0 for a Particle), total = their sum. body: a RigidBody, PlanarBody or Particle; state: its state (RigidBodyState, PlanarBodyState or ParticleState), finite (ValueError naming it otherwise, e.g. for a state a diverged step returned). 
     """
 def linear_momentum(body: typing.Any, state: typing.Any) -> typing.Any:
     """
     Linear momentum m v_W [kg m/s] in W: (3,), or (2,) for a PlanarBody. body: a RigidBody, PlanarBody or Particle; state: its state (RigidBodyState, PlanarBodyState or ParticleState), finite (ValueError naming it otherwise, e.g. for a state a diverged step returned). 
     """
-def matrix_to_euler(seq: typing.Any, R: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+def matrix_to_euler(seq: typing.Any, R: typing.Any, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
-    Euler angles [rad] of rotation matrices (ranges and gimbal lock as quat_to_euler).
+    Euler angles [rad] of rotation matrices (ranges as quat_to_euler; degrees if degrees=True).
     
     seq: 3 letters as SciPy, lowercase 'xyz' = extrinsic (fixed axes), uppercase 'XYZ' = intrinsic
     (moving axes); the 12 sequences xyz xzy yxz yzx zxy zyx xyx xzx yxy yzy zxz zyz in either case.
-    R: (3, 3) or (n, 3, 3), orthonormal with det +1. Returns (3,) or (n, 3).
+    R: (3, 3) or (n, 3, 3), a rotation matrix up to rounding (det > 0, singular values within 0.05 of 1;
+    projected onto the nearest rotation as SciPy's Rotation.from_matrix).
+    Returns (3,) or (n, 3).
+    Gimbal lock: a UserWarning 'Gimbal lock detected. ...' (once per call) wherever SciPy warns: the
+    middle angle of some item within 1e-7 rad of its singularity (Euler angles: 0 or pi in proper
+    sequences, -pi/2 or pi/2 in Tait-Bryan ones; Davenport angles: the ends of its range). Within
+    round-off of it (1e-13 rad) only the sum or difference of the first and third angles is defined:
+    the third is set to 0 and the first carries it, with SciPy's message. Between 1e-13 and 1e-7 rad
+    the angles are the exact ones and the message says so (SciPy sets the third to 0 there too, which
+    moves the rotation by up to 2e-7 rad): the angles reproduce the rotation to round-off everywhere.
     """
 def matrix_to_quat(R: typing.Any, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Unit quaternion of rotation matrices, canonical sign w >= 0 (Shepperd's method, accurate at all angles).
     
-    R: (3, 3) or (n, 3, 3), orthonormal with det +1 (max |R^T R - I| <= 1e-6).
+    R: (3, 3) or (n, 3, 3), a rotation matrix up to rounding (det > 0, singular values within 0.05 of 1;
+    projected onto the nearest rotation as SciPy's Rotation.from_matrix).
     Returns q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first.
     """
-def matrix_to_rotvec(R: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+def matrix_to_rotvec(R: typing.Any, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Logarithm map of rotation matrices: rotation vector angle * axis [rad], angle in [0, pi].
     
-    R: (3, 3) or (n, 3, 3), orthonormal with det +1. Returns (3,) or (n, 3). Accurate near 0 and pi.
+    R: (3, 3) or (n, 3, 3), a rotation matrix up to rounding (det > 0, singular values within 0.05 of 1;
+    projected onto the nearest rotation as SciPy's Rotation.from_matrix).
+    Returns (3,) or (n, 3), in degrees if degrees=True.
+    Accurate near 0 and pi.
     """
-def mesh_shell(vertices: typing.Any, faces: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
+def mesh_shell(vertices: typing.Any, faces: typing.Any, *, mass: typing.Any = None, density: typing.Any = None, weld_tolerance: typing.Any = None) -> SpatialInertia:
     """
     Thin shell made of the faces (any orientation, need not be closed): vertices (n, 3) [m], faces
-    (f, 3). Give exactly one of mass= [kg] or density= [kg/m^2].
+    (f, 3), welded as in solid_mesh (weld_tolerance). Give exactly one of mass= [kg] or density= [kg/m^2].
     """
-def mesh_symmetry_planes(vertices: typing.Any, faces: typing.Any, tolerance: typing.Any = 1e-09) -> list:
+def mesh_symmetry_planes(vertices: typing.Any, faces: typing.Any, tolerance: typing.Any = 1e-09, *, weld_tolerance: typing.Any = None) -> list:
     """
     Planes of symmetry of the uniform solid bounded by a closed, outward-oriented mesh: vertices (n, 3)
-    [m], faces (f, 3). A plane qualifies when its reflection maps the vertex set onto itself (within
-    tolerance * largest com-vertex distance [m]) and each face onto a face with reversed orientation.
-    Returns a list of (normal (3,) unit, point (3,) [m] = the solid's centre of mass); candidates as
-    in symmetry_planes. ValueError naming the argument on a bad mesh.
+    [m], faces (f, 3), welded as in solid_mesh (weld_tolerance). The planes of the solid, whatever its
+    triangulation: a plane qualifies when its reflection maps the solid's oriented boundary onto itself
+    (each reflected face covered by faces in the same plane and facing the same way, up to a strip of
+    width tolerance * L along its edges, L = largest distance from the centre of mass to a vertex [m];
+    normals within tolerance). A faceted cylinder or capsule of s sections has the s planes through its
+    axis and the plane normal to it, not the smooth solid's continuum. Returns a list of (normal (3,)
+    unit, largest-magnitude component positive; point (3,) [m] = the solid's centre of mass) in the frame
+    of the vertices; candidates as in symmetry_planes. ValueError naming the argument on a bad mesh.
     """
 def mesh_volume(vertices: typing.Any, faces: typing.Any) -> float:
     """
@@ -1166,9 +1732,28 @@ def methods() -> list:
     """
     The fixed-step methods: a list of dicts with name, order (global), evaluations (derivative evaluations per step), conserves (what is kept exactly on a free rigid body), notes, stability_limit (largest dt*|w| [rad], |w| the largest body rate on the torque-free orbit, at which the method is documented stable on a free spin: inf if unconditionally, 0 if never) and exact_torque_free (True if torque-free motion is reproduced to round-off at any dt: no observed order applies).
     """
-def motion_cross_matrix(m: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+def motion_cross_matrix(motion: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
     """
-    crm(m) (6,6) = [[hat(w), 0], [hat(v), hat(w)]], so crm(m) m2 = m x m2.
+    crm(V) (6,6) = [[hat(w), 0], [hat(v), hat(w)]] of the motion V = [w; v], so crm(V) V2 = V x V2.
+    """
+def mrp_to_quat(mrp: typing.Any, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Unit quaternion ((2 p, 1 - |p|^2) / (1 + |p|^2)) of modified Rodrigues parameters p (either shadow
+    set: p and -p/|p|^2 are the same rotation; w < 0 when |p| > 1), as SciPy's Rotation.from_mrp.
+    
+    mrp: (3,) or (n, 3), any finite values. Returns q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if
+    scalar_first.
+    """
+def nearest_rotation(M: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    The rotation matrix nearest to M in the Frobenius norm (orthogonal Procrustes problem).
+    
+    M: (3, 3) or (n, 3, 3), any finite matrices. With the SVD M = U S V^T, returns
+    R = U diag(1, 1, det(U V^T)) V^T: (3, 3) or (n, 3, 3), orthonormal with det +1 to round-off.
+    For det M > 0 this is the orthogonal polar factor of M (Higham 1986), the matrix SciPy's
+    Rotation.from_matrix stores for a non-orthonormal M; for det M < 0 the smallest singular
+    direction is flipped (Kabsch). Unique when M has rank >= 2 (and, for det M < 0, distinct two
+    smallest singular values). Idempotent: a rotation matrix is returned unchanged to round-off.
     """
 def nearest_valid_inertia(inertia: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
     """
@@ -1189,19 +1774,29 @@ def point_velocity(K_AF: typing.Any, p_FQ_F: typing.Any, v_FQ_F: typing.Any) -> 
     Velocity terms of Q seen from A, expressed in A. K_AF: F relative to A; p_FQ_F (3,) [m] and v_FQ_F
     (3,) [m/s]: Q's position relative to F's origin and its velocity seen from F, expressed in F.
     """
-def potential_energy(body: typing.Any, state: typing.Any, gravity: typing.Any = True) -> typing.Any:
+def potential_energy(body: typing.Any, state: typing.Any, gravity: typing.Any = None) -> typing.Any:
     """
-    Potential energy of uniform gravity, -m g.p_W [J]: gravity True = (0, 0, -9.81) m/s^2, or (3,) in W; for a PlanarBody an in-plane (2,) [m/s^2] (required). body: a RigidBody, PlanarBody or Particle; state: its state (RigidBodyState, PlanarBodyState or ParticleState), finite (ValueError naming it otherwise, e.g. for a state a diverged step returned). 
+    Potential energy of uniform gravity, V = -m g.p_W [J] (zero at the origin of W). gravity: None (the default, as in simulate: no field, so V = 0 J), True = (0, 0, -9.81) m/s^2, or a vector (3,) [m/s^2] in W; for a PlanarBody None or an in-plane (2,) [m/s^2]. body: a RigidBody, PlanarBody or Particle; state: its state (RigidBodyState, PlanarBodyState or ParticleState), finite (ValueError naming it otherwise, e.g. for a state a diverged step returned). 
     """
-def power(state: typing.Any, f_W: typing.Any, n_B: typing.Any = None) -> typing.Any:
+def power(state: typing.Any, f_W: typing.Any, tau_B: typing.Any = None) -> typing.Any:
     """
-    Power [W] of a force f_W [N] in W at the centre of mass and a moment n_B about it (None: none): f_W.v_W + n_B.w_B. RigidBodyState: f_W (3,), n_B (3,) [N m] in B; PlanarBodyState: f_W (2,), n_B [N m] about z; ParticleState: f_W (3,) only.
+    Power [W] of a force f_W [N] in W at the centre of mass and a torque tau_B about it (None: none): f_W.v_W + tau_B.w_B. RigidBodyState: f_W (3,), tau_B (3,) [N m] in B; PlanarBodyState: f_W (2,), tau_B [N m] about z; ParticleState: f_W (3,) only.
     """
-def principal_axes(inertia: typing.Any) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+def principal_axes(inertia: typing.Any) -> PrincipalAxes:
     """
-    Principal moments and axes of symmetric inertias (3,3) or (n,3,3) [kg m^2] (lower triangles read):
-    returns (moments (3,) or (n,3) ascending, axes (3,3) or (n,3,3) with column k the axis of
-    moments[k], right-handed, canonical when moments coincide). Releases the GIL.
+    Principal moments and axes of symmetric inertias (3,3) or (n,3,3) [kg m^2] (lower triangles read),
+    about the point and in the frame the inertia is given for. Returns a PrincipalAxes: moments (3,)
+    or (n,3) ascending [kg m^2], axes (3,3) or (n,3,3) with column k the unit axis of moments[k],
+    right-handed, canonical when moments coincide; it unpacks as `moments, axes = principal_axes(I)`.
+    Releases the GIL.
+    """
+def quat_canonical(q: typing.Any, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    The canonical quaternion of each rotation (q and -q are the same rotation): w > 0, or where
+    w = 0 the first non-zero of x, y, z positive, exactly as SciPy's as_quat(canonical=True).
+    
+    q: (4,) or (n, 4) unit quaternions, (x, y, z, w) or (w, x, y, z) if scalar_first.
+    Returns (4,) or (n, 4) in the same order.
     """
 def quat_integrate(q: typing.Any, w: typing.Any, dt: typing.Any, frame: typing.Any = 'body', scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
@@ -1229,6 +1824,14 @@ def quat_normalize(q: typing.Any, scalar_first: typing.Any = False) -> numpy.typ
     q / |q| for finite non-zero quaternions of any norm (ValueError for q = 0).
     q: (4,) or (n, 4); returns the same shape, sign unchanged.
     """
+def quat_rate(q: typing.Any, w: typing.Any, frame: typing.Any = 'body', scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Quaternion rate dq/dt [1/s] of the attitude q = q_WB turning with angular velocity w [rad/s]:
+    frame='body': dq/dt = 1/2 q ⊗ (w, 0), w = w_B expressed in the body frame;
+    frame='world': dq/dt = 1/2 (w, 0) ⊗ q, w = w_W expressed in the world frame.
+    q: (4,) or (n, 4) unit quaternions; w: (3,) or (n, 3) (a single one is used with every item of the
+    other). Returns (4,) or (n, 4) in q's order, orthogonal to q, |dq/dt| = |w|/2.
+    """
 def quat_rotate(q: typing.Any, v: typing.Any, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     R(q) v: vectors rotated actively by unit quaternions (v_W = R_WB v_B for q = q_WB).
@@ -1236,21 +1839,49 @@ def quat_rotate(q: typing.Any, v: typing.Any, scalar_first: typing.Any = False) 
     q: (4,) or (n, 4); v: (3,) or (n, 3) (a single one is used with every item of the other).
     Returns (3,) or (n, 3).
     """
-def quat_to_axis_angle(q: typing.Any, scalar_first: typing.Any = False) -> tuple[numpy.typing.NDArray[numpy.float64], typing.Any]:
+def quat_to_axis_angle(q: typing.Any, scalar_first: typing.Any = False, *, degrees: typing.Any = False) -> tuple[numpy.typing.NDArray[numpy.float64], typing.Any]:
     """
-    Axis (unit) and angle [rad] in [0, pi] of unit quaternions; the identity gives axis (1, 0, 0), angle 0.
+    Axis (unit) and angle [rad] in [0, pi] (degrees in [0, 180] if degrees=True) of unit quaternions;
+    the identity gives axis (1, 0, 0), angle 0.
     
     q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first.
     Returns (axis, angle): ((3,), float) or ((n, 3), (n,)).
     """
-def quat_to_euler(seq: typing.Any, q: typing.Any, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+def quat_to_davenport(axes: typing.Any, order: typing.Any, q: typing.Any, scalar_first: typing.Any = False, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Davenport angles [rad] of unit quaternions (Bernardes & Viollet 2022, arbitrary axes).
+    
+    axes: (3, 3), the rotation axes n1, n2, n3 as rows (any non-zero length, normalised), n2
+    orthogonal to n1 and to n3 (|cos| <= 1e-7, as SciPy); order: 'e'/'extrinsic' (fixed axes,
+    R = R_n3(a3) R_n2(a2) R_n1(a1)) or 'i'/'intrinsic' (moving axes, R = R_n1(a1) R_n2(a2) R_n3(a3)),
+    as SciPy's Rotation.from_davenport / as_davenport. Coordinate axes give Euler angles.
+    q: (4,) or (n, 4). Returns (3,) or (n, 3) [rad] (degrees if degrees=True), as SciPy: first and
+    third in [-pi, pi], second in [-l, pi - l] if l >= 0, [-pi - l, -l] if l < 0, where
+    l = atan2(m3 . (m1 x n2), m3 . m1) with (m1, m3) = (n1, n3), or (n3, n1) if intrinsic (proper Euler:
+    l = 0, second in [0, pi]; Tait-Bryan: l = +-pi/2, second in [-pi/2, pi/2]).
+    Gimbal lock: a UserWarning 'Gimbal lock detected. ...' (once per call) wherever SciPy warns: the
+    middle angle of some item within 1e-7 rad of its singularity (Euler angles: 0 or pi in proper
+    sequences, -pi/2 or pi/2 in Tait-Bryan ones; Davenport angles: the ends of its range). Within
+    round-off of it (1e-13 rad) only the sum or difference of the first and third angles is defined:
+    the third is set to 0 and the first carries it, with SciPy's message. Between 1e-13 and 1e-7 rad
+    the angles are the exact ones and the message says so (SciPy sets the third to 0 there too, which
+    moves the rotation by up to 2e-7 rad): the angles reproduce the rotation to round-off everywhere.
+    """
+def quat_to_euler(seq: typing.Any, q: typing.Any, scalar_first: typing.Any = False, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Euler angles [rad] of unit quaternions (Bernardes & Viollet 2022).
     
     seq: 3 letters as SciPy, lowercase 'xyz' = extrinsic (fixed axes), uppercase 'XYZ' = intrinsic
     (moving axes); the 12 sequences xyz xzy yxz yzx zxy zyx xyx xzx yxy yzy zxz zyz in either case.
-    q: (4,) or (n, 4). Returns (3,) or (n, 3): first and third in [-pi, pi], second in [0, pi] (proper)
-    or [-pi/2, pi/2] (Tait-Bryan). At gimbal lock the third angle is set to 0, as SciPy does.
+    q: (4,) or (n, 4). Returns (3,) or (n, 3) [rad] (degrees if degrees=True): first and third in
+    [-pi, pi], second in [0, pi] (proper) or [-pi/2, pi/2] (Tait-Bryan).
+    Gimbal lock: a UserWarning 'Gimbal lock detected. ...' (once per call) wherever SciPy warns: the
+    middle angle of some item within 1e-7 rad of its singularity (Euler angles: 0 or pi in proper
+    sequences, -pi/2 or pi/2 in Tait-Bryan ones; Davenport angles: the ends of its range). Within
+    round-off of it (1e-13 rad) only the sum or difference of the first and third angles is defined:
+    the third is set to 0 and the first carries it, with SciPy's message. Between 1e-13 and 1e-7 rad
+    the angles are the exact ones and the message says so (SciPy sets the third to 0 there too, which
+    moves the rotation by up to 2e-7 rad): the angles reproduce the rotation to round-off everywhere.
     """
 def quat_to_matrix(q: typing.Any, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
@@ -1259,12 +1890,30 @@ def quat_to_matrix(q: typing.Any, scalar_first: typing.Any = False) -> numpy.typ
     q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first; unit norm within 1e-6.
     Returns R: (3, 3) or (n, 3, 3), active (R v rotates v; q_WB gives R_WB).
     """
-def quat_to_rotvec(q: typing.Any, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+def quat_to_mrp(q: typing.Any, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Modified Rodrigues parameters p = axis tan(angle/4) of unit quaternions, the set with |p| <= 1
+    (angle in [0, pi]; as SciPy's Rotation.as_mrp). Dimensionless.
+    
+    q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first. Returns (3,) or (n, 3).
+    """
+def quat_to_rotvec(q: typing.Any, scalar_first: typing.Any = False, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Logarithm map: rotation vector angle * axis [rad] of unit quaternions, angle in [0, pi].
     
-    q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first. Returns (3,) or (n, 3).
+    q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first. Returns (3,) or (n, 3),
+    in degrees (angle in [0, 180]) if degrees=True.
     Accurate near angle 0 and near pi (atan2 form).
+    """
+def random_rotations(n: typing.Any = None, rng: typing.Any = None, scalar_first: typing.Any = False, canonical: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Rotations drawn uniformly (Haar measure) from SO(3), as unit quaternions.
+    
+    n: None (one rotation, shape (4,)) or a count (shape (n, 4)). rng: a numpy.random.Generator,
+    or None / a seed (int >= 0) for numpy.random.default_rng. The draws are SciPy's: for the same
+    generator state the result equals Rotation.random(n, rng=rng).as_quat() (normalised
+    standard normal 4-vectors), and the generator advances by 4 n normal draws. Returns (x, y, z, w), or (w, x, y, z) if scalar_first; canonical=True gives the representative with w >= 0
+    (SciPy's as_quat(canonical=True): at w = 0 the first non-zero of x, y, z is positive).
     """
 def relative_kinematics(K_WA: typing.Any, K_WF: typing.Any) -> FrameKinematics:
     """
@@ -1274,31 +1923,32 @@ def require_closed_oriented_mesh(faces: typing.Any, n_vertices: typing.Any) -> N
     """
     ValueError unless faces (f, 3) index [0, n_vertices) and form a closed, consistently oriented mesh.
     """
-def rot_x(angle: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+def rot_x(angle: typing.Any, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Elementary rotation about x by angle [rad] (active): [[1, 0, 0], [0, c, -s], [0, s, c]].
-    angle: float or (n,). Returns (3, 3) or (n, 3, 3).
+    angle: float or (n,), in degrees if degrees=True. Returns (3, 3) or (n, 3, 3).
     """
-def rot_y(angle: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+def rot_y(angle: typing.Any, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Elementary rotation about y by angle [rad] (active): [[c, 0, s], [0, 1, 0], [-s, 0, c]].
-    angle: float or (n,). Returns (3, 3) or (n, 3, 3).
+    angle: float or (n,), in degrees if degrees=True. Returns (3, 3) or (n, 3, 3).
     """
-def rot_z(angle: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+def rot_z(angle: typing.Any, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Elementary rotation about z by angle [rad] (active): [[c, -s, 0], [s, c, 0], [0, 0, 1]].
-    angle: float or (n,). Returns (3, 3) or (n, 3, 3).
+    angle: float or (n,), in degrees if degrees=True. Returns (3, 3) or (n, 3, 3).
     """
-def rotvec_to_matrix(rotvec: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+def rotvec_to_matrix(rotvec: typing.Any, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
-    Exponential map into rotation matrices (Rodrigues): rotvec = angle * axis [rad], (3,) or (n, 3).
+    Exponential map into rotation matrices (Rodrigues): rotvec = angle * axis [rad], (3,) or (n, 3)
+    (in degrees if degrees=True).
     Returns R: (3, 3) or (n, 3, 3).
     """
-def rotvec_to_quat(rotvec: typing.Any, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+def rotvec_to_quat(rotvec: typing.Any, scalar_first: typing.Any = False, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Exponential map: unit quaternion of rotation vectors rotvec = angle * axis [rad] (any angle; exact near 0).
     
-    rotvec: (3,) or (n, 3). Returns q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first;
+    rotvec: (3,) or (n, 3), in degrees if degrees=True. Returns q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first;
     w < 0 when the angle exceeds pi (no sign flip).
     """
 def screw_to_twist(screw: typing.Any) -> Motion:
@@ -1314,8 +1964,9 @@ def simulate(model: typing.Any, initial: typing.Any, dt: typing.Any, steps: typi
     model/initial: Particle/ParticleState, PlanarBody/PlanarBodyState or RigidBody/RigidBodyState.
     loads: an AppliedLoad or a sequence of them, a piecewise-constant schedule: a step that crosses a
       switch time (a t_start or t_end) is split there into sub-steps of the same method, so every method
-      keeps its order; records stay at t0 + i dt. gravity: None/False (none), True ((0, 0, -9.81) m/s^2
-      in W) or a 3-vector [m/s^2] in W. t0: initial time [s]. scalar_first: quaternions as (w, x, y, z).
+      keeps its order; records stay at t0 + i dt. gravity: None/False (the default: none), True
+      ((0, 0, -9.81) m/s^2 in W) or a 3-vector [m/s^2] in W. t0: initial time [s]. scalar_first: quaternions
+      as (w, x, y, z).
     progress: None or a callable(steps_done), called with the GIL about every 0.05 s of a long run; an
       exception it raises stops the run and propagates.
     
@@ -1330,6 +1981,28 @@ def simulate(model: typing.Any, initial: typing.Any, dt: typing.Any, steps: typi
     count) if an implicit solve did not converge. Ctrl-C stops the run within about 0.05 s with
     KeyboardInterrupt (no result is kept). ValueError names a bad argument, also a recording larger than the
     memory available (record_every, with both figures).
+    """
+def slerp(q0: typing.Any, q1: typing.Any, t: typing.Any, scalar_first: typing.Any = False, canonical: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Spherical linear interpolation from q0 (t = 0) to q1 (t = 1), shortest path, constant rate.
+    
+    q(t) = q0 * exp(t log(q0^-1 * q1)), the log at angle in [0, pi]: SciPy's
+    Slerp([0, 1], Rotation.from_quat([q0, q1]))(t). Any finite t extrapolates along the arc.
+    q0, q1: (4,) or (n, 4) unit quaternions; t: float or (n,) (dimensionless fraction);
+    single items are used with every item of the stacks. Returns (4,) or (n, 4),
+    (x, y, z, w), or (w, x, y, z) if scalar_first; canonical=True gives the representative with w >= 0
+    (SciPy's as_quat(canonical=True): at w = 0 the first non-zero of x, y, z is positive).
+    To interpolate between key rotations at key times use slerp_keys.
+    """
+def slerp_keys(times: typing.Any, q: typing.Any, t: typing.Any, scalar_first: typing.Any = False, canonical: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Slerp through key rotations q[k] at key times times[k]: SciPy's Slerp(times, rotations)(t).
+    
+    times: (k,) strictly increasing, k >= 2 [any time unit]; q: (k, 4) unit quaternions;
+    t: float or (m,) within [times[0], times[-1]] (ValueError outside). On [times[j], times[j+1]]
+    the result is slerp(q[j], q[j+1], (t - times[j]) / (times[j+1] - times[j])).
+    Returns (4,) or (m, 4), (x, y, z, w), or (w, x, y, z) if scalar_first; canonical=True gives the representative with w >= 0
+    (SciPy's as_quat(canonical=True): at w = 0 the first non-zero of x, y, z is positive).
     """
 def solid_box(size: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
     """
@@ -1353,12 +2026,14 @@ def solid_ellipsoid(semi_axes: typing.Any, *, mass: typing.Any = None, density: 
     """
     Solid ellipsoid, semi-axes (3,) [m]: I = m/5 diag(b^2+c^2, a^2+c^2, a^2+b^2). Density [kg/m^3]. Give exactly one of mass= [kg] or density=.
     """
-def solid_mesh(vertices: typing.Any, faces: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
+def solid_mesh(vertices: typing.Any, faces: typing.Any, *, mass: typing.Any = None, density: typing.Any = None, weld_tolerance: typing.Any = None) -> SpatialInertia:
     """
     Solid bounded by a closed, outward-oriented triangle mesh: vertices (n, 3) [m], faces (f, 3),
-    exact (divergence theorem). ValueError naming the first open or misoriented edge, or an inward
-    orientation. Give exactly one of mass= [kg] or density= [kg/m^3]. (rigiddyn.solid_mesh also accepts
-    a trimesh object.)
+    exact (divergence theorem). Vertices closer than weld_tolerance [m] are first welded into one, as
+    trimesh does on load (None: 1e-8 x the bounding-box diagonal; 0: off), faces left degenerate dropped,
+    and a MeshWeldWarning says how many. ValueError naming the first open or misoriented edge (input
+    indices), or an inward orientation. Give exactly one of mass= [kg] or density= [kg/m^3].
+    (rigiddyn.solid_mesh also accepts a trimesh object.)
     """
 def solid_sphere(radius: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
     """
@@ -1376,8 +2051,8 @@ def spherical_shell(radius: typing.Any, *, mass: typing.Any = None, density: typ
 def step(model: typing.Any, state: typing.Any, dt: typing.Any, method: typing.Any = 'rk4', loads: typing.Any = None, gravity: typing.Any = None, t: typing.Any = None) -> typing.Any:
     """
     One step of `method` (see methods()) of length dt [s] from `state` at time t [s] to t + dt under `loads`
-    (AppliedLoad or sequence) and `gravity` (None/False, True for (0, 0, -9.81) m/s^2, or a 3-vector). A
-    step across a switch time of the loads is split there, as in simulate.
+    (AppliedLoad or sequence) and `gravity` (None/False, the default: none; True for (0, 0, -9.81) m/s^2, or a
+    3-vector [m/s^2] in W). A step across a switch time of the loads is split there, as in simulate.
     
     t=None (default): returns the new state (same type as `state`); ValueError (naming t) if a load acts on a
       time window (finite t_start or t_end), since the step then depends on the time.
@@ -1431,6 +2106,13 @@ def vee(S: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
     """
     Inverse of hat: v with hat(v) = (S - S^T)/2 (a symmetric part of S is ignored).
     S: (3, 3) or (n, 3, 3); returns (3,) or (n, 3).
+    """
+def weld_vertices(vertices: typing.Any, faces: typing.Any, tolerance: typing.Any = None) -> WeldedMesh:
+    """
+    Welds vertices (n, 3) [m] closer than tolerance [m] (None: 1e-8 x the bounding-box diagonal), as
+    solid_mesh does: clusters of vertices within tolerance of one another (grid hashing, O(n log n)) keep
+    their lowest-indexed vertex; faces (f, 3) repeating a vertex afterwards are dropped. Returns a
+    WeldedMesh (vertices, faces, welded_vertices, dropped_faces, ...); warns nothing.
     """
 __version__: str = '0.1.0'
 inertia_relative_tolerance: float = 1e-10

@@ -1,52 +1,80 @@
 """TOML problem files: one rigid body, its initial state, applied loads, gravity and a horizon.
 
-A problem file (SI units, frames as in docs/conventions.md)::
+``load_problem(path)`` reads a file, ``load_problem("t_handle")`` a shipped example (see
+``example_problems()``); ``python -m rigiddyn simulate PROBLEM`` and ``python -m rigiddyn tradeoff
+PROBLEM`` take either. Numbers are SI (m, kg, s, N, rad) with frames as in docs/conventions.md,
+except where a key states another unit: angles with ``degrees = true`` and an angular rate written
+as ``{value = ..., unit = ...}``. Every key the format knows, in one commented file (lines starting
+``# key =`` are alternatives)::
 
-    name = "tumbling T-handle"
-    description = "free text"
+    name = "tumbling T-handle"          # optional (default: the file name)
+    description = "free text"           # optional
     horizon = 10.0                      # [s] > 0
-    gravity = false                     # false | true (0, 0, -9.81) | [gx, gy, gz] [m/s^2] in W
+    gravity = false                     # false (default) | true = (0, 0, -9.81) | [gx, gy, gz] [m/s^2] in W
 
-    [body]                              # exactly one of: mass + inertia, primitive, mesh
+    [body]                              # exactly one of: mass + inertia, [body.primitive], [body.mesh]
     mass = 0.2                          # [kg] > 0
-    inertia = [1e-4, 4e-4, 5e-4]        # principal moments [kg m^2], or a (3, 3) matrix about the
-                                        # centre of mass in B
-    require_triangle_inequality = true  # optional (false accepts e.g. Hairer's I = (2, 1, 2/3))
-    # [body.primitive]  shape = "solid_box", size = [0.1, 0.2, 0.3], mass = 1.0 (or density = ...)
-    # [body.mesh]       path = "part.stl" (relative to the file), mass = ... or density = ...
-    #                   (needs trimesh; B is the mesh frame moved to the centre of mass)
+    inertia = [1e-4, 4e-4, 5e-4]        # principal moments [kg m^2], or a 3x3 matrix [[..], [..], [..]],
+                                        # about the centre of mass in B
+    inertia_check = "physical"          # optional: "physical" (default; the principal moments satisfy
+                                        # the triangle inequality) | "allow_unrealizable" (symmetric
+                                        # PSD only: test bodies such as Hairer's I = (2, 1, 2/3))
+    # [body.primitive]                  # instead of mass + inertia: a shape of PRIMITIVES
+    # shape = "solid_box"               # solid_sphere, hollow_sphere, solid_cylinder, ...
+    # size = [0.1, 0.2, 0.3]            # [m]: the shape's own keys (PRIMITIVES[shape])
+    # mass = 1.0                        # [kg], or density = ... [kg/m^3] (exactly one)
+    # [body.mesh]                       # instead: a closed triangle mesh file (needs trimesh);
+    # path = "part.stl"                 # relative to the problem file; B = the mesh frame moved to
+    # density = 2700.0                  # the centre of mass; [kg/m^3], or mass = ... [kg]
 
-    [initial]                           # all optional, default zero / identity
+    [initial]                           # all optional: default zero velocities, identity attitude
     p_W = [0, 0, 0]                     # [m]
-    q_WB = [0, 0, 0, 1]                 # (x, y, z, w) unless scalar_first = true
-    v_W = [0, 0, 0]                     # [m/s]
-    w_B = [0.01, 20, 0]                 # [rad/s] in B
+    v_W = [0, 0, 0]                     # [m/s] in W
+    w_B = [0.01, 20, 0]                 # [rad/s] in B; or with a unit, "rad/s" | "deg/s" | "rpm":
+    # w_B = {value = [0, 0, 3000], unit = "rpm"}
+    q_WB = [0, 0, 0, 1]                 # attitude (B to W), (x, y, z, w); at most one of q_WB, euler,
+                                        # rotvec, axis_angle. Within 1e-3 of unit norm it is normalised
+                                        # (a UserWarning notes it where | |q| - 1 | > 1e-12); farther
+                                        # is an error.
+    scalar_first = false                # optional, only beside q_WB: true reads it as (w, x, y, z)
+    # euler = {seq = "ZYX", angles = [30, 10, 0], degrees = true}
+    #                                   # seq as SciPy's: uppercase intrinsic (moving axes), lowercase
+    #                                   # extrinsic; angles in the order of seq; [rad] unless degrees
+    # rotvec = [0, 0, 0.5]              # rotation vector angle * axis [rad], or in degrees:
+    # rotvec = {value = [0, 0, 30], degrees = true}
+    # axis_angle = {axis = [0, 0, 1], angle = 30, degrees = true}   # axis of any non-zero length
 
     [[loads]]                           # any number; piecewise constant
     force = [0, 0, 0]                   # [N] through the centre of mass
     torque = [0, 0, 1e-3]               # [N m]
-    frame = "body"                      # "world" | "body"
+    frame = "body"                      # "world" (default) | "body": the frame of force and torque
     t_start = 0.0                       # [s], optional (default -inf)
     t_end = 5.0                         # [s], optional (default +inf)
 
     [tradeoff]                          # optional defaults for rigiddyn.tradeoff
     methods = ["rk4", "rkmk4"]
-    dts = [0.01, 0.005]
+    dts = [0.01, 0.005]                 # [s]
     tolerance = 1e-6
     measure = "final_attitude_error"
 
-Every error in a file is a ValueError "<field>: expected ..., got ..." (a value of the wrong TOML type
-included); Problem and Load built directly check their fields the same way, with TypeError for a
+Every error in a file is a ValueError "<field>: expected ..., got ..." naming the field by its path
+(``initial.euler.seq``, ``loads[0].frame``), a value of the wrong TOML type included; a key the
+format does not know is one too, with the closest known key ("did you mean ...?") or the table it
+belongs in. Problem and Load built directly check their fields the same way, with TypeError for a
 value of the wrong type.
 """
 
 from __future__ import annotations
 
+import difflib
 import math
+import os
 import sys
+import warnings
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
+from types import FrameType
 from typing import Any
 
 import numpy as np
@@ -78,8 +106,36 @@ PRIMITIVES: dict[str, tuple[str, ...]] = {
     "solid_capsule": ("radius", "length"),
 }
 _VECTOR_ARGS = {"size", "semi_axes"}
-_TOP_KEYS = {"name", "description", "horizon", "gravity", "body", "initial", "loads", "tradeoff"}
-_TRADEOFF_KEYS = {"methods", "dts", "tolerance", "measure"}
+_ORIENTATIONS = ("q_WB", "euler", "rotvec", "axis_angle")  # the forms of the initial attitude
+# table -> its keys; a key unknown to its table is looked up in the others ("belongs in [initial]")
+_KEYS: dict[str, frozenset[str]] = {
+    "problem": frozenset({"name", "description", "horizon", "gravity", "body", "initial", "loads", "tradeoff"}),
+    "body": frozenset({"mass", "inertia", "inertia_check", "primitive", "mesh"}),
+    "body.primitive": frozenset({"shape", "mass", "density"}.union(*PRIMITIVES.values())),
+    "body.mesh": frozenset({"path", "mass", "density"}),
+    "initial": frozenset({"p_W", "v_W", "w_B", "scalar_first", *_ORIENTATIONS}),
+    "initial.w_B": frozenset({"value", "unit"}),
+    "initial.euler": frozenset({"seq", "angles", "degrees"}),
+    "initial.rotvec": frozenset({"value", "degrees"}),
+    "initial.axis_angle": frozenset({"axis", "angle", "degrees"}),
+    "loads": frozenset({"force", "torque", "frame", "t_start", "t_end"}),
+    "tradeoff": frozenset({"methods", "dts", "tolerance", "measure"}),
+}
+# words users write for a key (no misspelling difflib would find)
+_SYNONYMS = {"omega": "w_B", "angular_velocity": "w_B", "position": "p_W", "velocity": "v_W",
+             "quaternion": "q_WB", "orientation": "q_WB", "attitude": "q_WB", "rotation_vector": "rotvec",
+             "moments": "inertia", "inertia_com": "inertia", "duration": "horizon", "t_final": "horizon"}
+# keys of earlier versions of the format -> what to write instead
+_RENAMED = {("body", "require_triangle_inequality"):
+            'inertia_check = "physical" | "allow_unrealizable" in its place (the key was renamed: true '
+            'is "physical", false is "allow_unrealizable")'}
+# angular rate unit -> its value in rad/s: pi / 180 as np.deg2rad (and SciPy's degrees=True) use it for
+# angles, 1 rpm = 2 pi rad / 60 s
+_RATE_UNITS = {"rad/s": 1.0, "deg/s": math.pi / 180.0, "rpm": 2.0 * math.pi / 60.0}
+_QUATERNION_NORM_TOLERANCE = 1e-3  # | |q| - 1 | up to this: a hand-typed quaternion, normalised
+# beyond this (and within the tolerance) the normalisation is noted: far above the few-ulp norm error
+# of a unit quaternion computed in double precision and printed in full, so only typed values get it
+_QUATERNION_NOTE_THRESHOLD = 1e-12
 _EXAMPLES_DIR = Path(__file__).resolve().parent / "problems"
 
 
@@ -95,12 +151,6 @@ def _string(value: Any, name: str) -> str:
     if not isinstance(value, str):
         raise _type_fail(name, "a string", value)
     return value
-
-
-def _flag(value: Any, name: str) -> bool:
-    if not isinstance(value, (bool, np.bool_)):
-        raise _type_fail(name, "True or False", value)
-    return bool(value)
 
 
 def _array(value: Any, name: str, shape: tuple[int, ...]) -> np.ndarray:
@@ -137,13 +187,54 @@ def _vector(value: Any, name: str, n: int = 3) -> np.ndarray:
     return np.array([_number(v, f"{name}[{i}]") for i, v in enumerate(value)])
 
 
-def _table(value: Any, name: str, allowed: set[str]) -> Mapping[str, Any]:
+def _table(value: Any, name: str, kind: str | None = None, allowed: frozenset[str] | set[str] | None = None
+           ) -> Mapping[str, Any]:
+    """`value` checked to be a table of known keys: `kind` names its entry of _KEYS (default `name`);
+    `allowed` narrows the keys (a primitive's shape)."""
+    kind = name if kind is None else kind
     if not isinstance(value, Mapping):
         raise _fail(name, "a table", value)
-    unknown = sorted(set(value) - allowed)
+    known = _KEYS[kind] if allowed is None else frozenset(allowed)
+    unknown = sorted(set(value) - known, key=str)
     if unknown:
-        raise _fail(f"{name}.{unknown[0]}", "one of the keys " + ", ".join(sorted(allowed)), "an unknown key")
+        raise _unknown_key(name, kind, str(unknown[0]), known, value[unknown[0]])
     return value
+
+
+def _unknown_key(name: str, kind: str, key: str, known: frozenset[str], value: Any) -> ValueError:
+    """"<table>.<key>: expected a key of [<table>]; did you mean '<closest>'? (one of: ...), got an
+    unknown key", the hint naming the table where the key belongs if it is no misspelling."""
+    field = f"{name}.{key}"
+    if (kind, key) in _RENAMED:
+        return _fail(field, _RENAMED[kind, key], value)
+    close = _closest(key, known)
+    if close is None and _SYNONYMS.get(key.lower()) in known:
+        close = _SYNONYMS[key.lower()]
+    homes = [t for t, keys in _KEYS.items() if key in keys and t != kind]
+    if close:
+        hint = f"; did you mean {close!r}?"
+    elif homes:
+        hint = f"; {key!r} belongs in " + " or ".join(_where(t, t) for t in homes)
+    else:
+        hint = ""
+    return ValueError(f"{field}: expected a key of {_where(name, kind)}{hint} (one of: {', '.join(sorted(known))}), "
+                      "got an unknown key")
+
+
+def _closest(word: str, choices: Any) -> str | None:
+    """The choice most like `word` (difflib's ratio >= 0.6, ignoring case: w_b -> w_B), or None."""
+    lower = {c.lower(): c for c in choices}
+    close = difflib.get_close_matches(word.lower(), list(lower), n=1, cutoff=0.6)
+    return lower[close[0]] if close else None
+
+
+def _where(name: str, kind: str) -> str:
+    """The table `name` as a file shows it: the top level, [initial], [[loads]] (loads[0])."""
+    if kind == "problem":
+        return "the top level"
+    if kind == "loads":
+        return "[[loads]]" if name == kind else f"[[loads]] ({name})"
+    return f"[{name}]"
 
 
 @dataclass(frozen=True)
@@ -174,14 +265,17 @@ class Load:
             raise _fail("t_end", f"a time > t_start = {self.t_start}", self.t_end)
 
     def applied_load(self) -> _core.AppliedLoad:
+        """This load as the core's AppliedLoad (for rigiddyn.simulate)."""
         return _core.AppliedLoad(self.force, self.torque, self.frame, self.t_start, self.t_end)
 
 
 @dataclass(frozen=True)
 class Problem:
-    """One rigid body: mass [kg], inertia_com (3, 3) [kg m^2] about the centre of mass in B, initial
-    state (p_W [m], q_WB (x, y, z, w), v_W [m/s] in W, w_B [rad/s] in B), loads, gravity (3,)
-    [m/s^2] in W and horizon [s]. `tradeoff` holds the file's optional sweep defaults."""
+    """One rigid body: mass [kg], inertia_com (3, 3) [kg m^2] about the centre of mass in B checked
+    by inertia_check (an InertiaCheck), initial state (p_W [m], q_WB (x, y, z, w), v_W [m/s] in W,
+    w_B [rad/s] in B), loads, gravity (3,) [m/s^2] in W and horizon [s]. `tradeoff` holds the
+    file's optional sweep defaults. q_WB within 1e-3 of unit norm is normalised (a UserWarning
+    notes it beyond 1e-12), as in a problem file."""
 
     name: str
     mass: float
@@ -193,15 +287,15 @@ class Problem:
     w_B: np.ndarray = field(default_factory=lambda: np.zeros(3))
     loads: tuple[Load, ...] = ()
     gravity: np.ndarray = field(default_factory=lambda: np.zeros(3))
-    require_triangle_inequality: bool = True
+    inertia_check: _core.InertiaCheck = _core.InertiaCheck.physical
     description: str = ""
     tradeoff: Mapping[str, Any] = field(default_factory=dict)
     source: str | None = None
 
     def __post_init__(self) -> None:
         """Checks every field as a problem file's are checked (TypeError/ValueError naming it: finite,
-        mass and horizon > 0, a valid inertia, a unit quaternion, loads of type Load); stores the
-        vectors as float64 arrays and q_WB normalised."""
+        mass and horizon > 0, a valid inertia, a unit quaternion to 1e-3, loads of type Load);
+        stores the vectors as float64 arrays and q_WB normalised."""
         def setf(key: str, value: Any) -> None:  # a frozen dataclass sets its fields this way
             object.__setattr__(self, key, value)
 
@@ -218,32 +312,34 @@ class Problem:
         setf("inertia_com", _array(self.inertia_com, "inertia_com", (3, 3)))
         for key in ("p_W", "v_W", "w_B", "gravity"):
             setf(key, _array(getattr(self, key), key, (3,)))
-        q = _array(self.q_WB, "q_WB", (4,))
-        if abs(np.linalg.norm(q) - 1.0) > 1e-6:
-            raise _fail("q_WB", "a unit quaternion (x, y, z, w) (| |q| - 1 | <= 1e-6)", q.tolist())
-        setf("q_WB", q / np.linalg.norm(q))
+        setf("q_WB", _unit_quaternion(_array(self.q_WB, "q_WB", (4,)), "q_WB"))
         if isinstance(self.loads, (str, bytes)) or not isinstance(self.loads, (tuple, list)):
             raise _type_fail("loads", "a sequence of Load", self.loads)
         for i, load in enumerate(self.loads):
             if not isinstance(load, Load):
                 raise _type_fail(f"loads[{i}]", "a Load", load)
         setf("loads", tuple(self.loads))
-        _flag(self.require_triangle_inequality, "require_triangle_inequality")
+        if not isinstance(self.inertia_check, _core.InertiaCheck):
+            raise _type_fail("inertia_check", "InertiaCheck.physical or InertiaCheck.allow_unrealizable",
+                             self.inertia_check)
         if not isinstance(self.tradeoff, Mapping):
             raise _type_fail("tradeoff", "a mapping of sweep defaults (methods, dts, tolerance, measure)", self.tradeoff)
         setf("tradeoff", _tradeoff_defaults(self.tradeoff))
         try:
-            _core.RigidBody(self.mass, self.inertia_com, self.require_triangle_inequality)
+            self.body()
         except ValueError as e:
             raise _core_error(e, "inertia_com") from None
 
     def body(self) -> _core.RigidBody:
-        return _core.RigidBody(self.mass, self.inertia_com, self.require_triangle_inequality)
+        """The RigidBody of mass [kg] and inertia_com [kg m^2] (B at the centre of mass)."""
+        return _core.RigidBody(self.mass, self.inertia_com, check=self.inertia_check)
 
     def initial_state(self) -> _core.RigidBodyState:
+        """The RigidBodyState at t = 0 (p_W [m], q_WB, v_W [m/s] in W, w_B [rad/s] in B)."""
         return _core.RigidBodyState(self.p_W, self.q_WB, self.v_W, self.w_B)
 
     def applied_loads(self) -> list[_core.AppliedLoad]:
+        """The loads as the core's AppliedLoad objects (for rigiddyn.simulate)."""
         return [load.applied_load() for load in self.loads]
 
     @property
@@ -313,13 +409,14 @@ def _mass_or_density(table: Mapping[str, Any], name: str) -> dict[str, float]:
 
 def _primitive(table: Any) -> tuple[Any, ...]:
     name = "body.primitive"
-    if not isinstance(table, Mapping) or "shape" not in table:
-        raise _fail(f"{name}.shape", "one of " + ", ".join(PRIMITIVES), table.get("shape") if isinstance(table, Mapping) else table)
-    shape = table["shape"]
+    table = _table(table, name)  # the keys of any shape first: `shap` gets its suggestion
+    shape = table.get("shape")
     if not isinstance(shape, str) or shape not in PRIMITIVES:
-        raise _fail(f"{name}.shape", "one of " + ", ".join(PRIMITIVES), shape)
+        close = _closest(shape, PRIMITIVES) if isinstance(shape, str) else None
+        hint = f" (did you mean {close!r}?)" if close else ""
+        raise _fail(f"{name}.shape", "one of " + ", ".join(PRIMITIVES) + hint, "nothing" if shape is None else shape)
     args = PRIMITIVES[shape]
-    _table(table, name, {"shape", "mass", "density", *args})
+    _table(table, name, allowed={"shape", "mass", "density", *args})
     values = []
     for arg in args:
         if arg not in table:
@@ -336,7 +433,7 @@ def _primitive(table: Any) -> tuple[Any, ...]:
 
 def _mesh(table: Any, base: Path | None) -> tuple[Any, ...]:
     name = "body.mesh"
-    table = _table(table, name, {"path", "mass", "density"})
+    table = _table(table, name)
     if not isinstance(table.get("path"), str):
         raise _fail(f"{name}.path", "a mesh file path (string)", table.get("path"))
     path = Path(table["path"])
@@ -359,13 +456,14 @@ def _mesh(table: Any, base: Path | None) -> tuple[Any, ...]:
 
 
 def _body(value: Any, base: Path | None) -> tuple[Any, ...]:
-    body = _table(value, "body", {"mass", "inertia", "primitive", "mesh", "require_triangle_inequality"})
+    body = _table(value, "body")
     sources = [k for k in ("inertia", "primitive", "mesh") if k in body]
     if len(sources) != 1:
         raise _fail("body", "exactly one of inertia (with mass), primitive or mesh", sources or "none")
-    triangle = body.get("require_triangle_inequality", True)
-    if not isinstance(triangle, bool):
-        raise _fail("body.require_triangle_inequality", "true or false", triangle)
+    check_name = body.get("inertia_check", "physical")
+    if not isinstance(check_name, str) or check_name not in _core.InertiaCheck.__members__:
+        raise _fail("body.inertia_check", " or ".join(map(repr, _core.InertiaCheck.__members__)), check_name)
+    check = _core.InertiaCheck.__members__[check_name]
     if sources[0] == "inertia":
         if "mass" not in body:
             raise _fail("body.mass", "a mass [kg] > 0 next to body.inertia", "nothing")
@@ -377,10 +475,10 @@ def _body(value: Any, base: Path | None) -> tuple[Any, ...]:
     else:
         mass, inertia = _mesh(body["mesh"], base)
     try:
-        _core.RigidBody(mass, inertia, triangle)
+        _core.RigidBody(mass, inertia, check=check)
     except ValueError as e:
         raise _core_error(e, "body.inertia") from None
-    return mass, inertia, triangle
+    return mass, inertia, check
 
 
 def _gravity(value: Any) -> np.ndarray:
@@ -389,19 +487,133 @@ def _gravity(value: Any) -> np.ndarray:
     return _vector(value, "gravity")
 
 
-def _initial(value: Any) -> dict[str, np.ndarray]:
-    table = _table(value, "initial", {"p_W", "q_WB", "v_W", "w_B", "scalar_first"})
+def _note(message: str) -> None:
+    """A UserWarning attributed to the first caller outside this package (the command line prints it
+    as "rigiddyn: UserWarning: ...")."""
+    package, level = os.path.dirname(os.path.abspath(__file__)), 2  # 2: the caller of _note
+    frame: FrameType | None = sys._getframe(1)
+    while frame is not None and (frame.f_code.co_filename == "<string>"  # a dataclass's __init__
+                                 or os.path.dirname(os.path.abspath(frame.f_code.co_filename)) == package):
+        frame, level = frame.f_back, level + 1
+    warnings.warn(message, UserWarning, stacklevel=level)
+
+
+def _unit_quaternion(q: np.ndarray, name: str) -> np.ndarray:
+    """q / |q| for | |q| - 1 | <= 1e-3 (noted beyond 1e-12: a hand-typed value such as 0.7071);
+    ValueError naming `name` farther from unit norm, where a typing error is likelier than rounding."""
+    norm = float(np.linalg.norm(q))
+    if not abs(norm - 1.0) <= _QUATERNION_NORM_TOLERANCE:
+        raise ValueError(f"{name}: expected a unit quaternion (| |q| - 1 | <= {_QUATERNION_NORM_TOLERANCE:g}, "
+                         f"then normalised), got {q.tolist()} of norm |q| = {norm:.9g}")
+    if abs(norm - 1.0) > _QUATERNION_NOTE_THRESHOLD:
+        _note(f"{name}: normalised {q.tolist()} (|q| = {norm:.9g}) to unit norm (a quaternion within "
+              f"{_QUATERNION_NORM_TOLERANCE:g} of unit norm is normalised, farther is an error)")
+    return q / norm
+
+
+def _degrees_flag(table: Mapping[str, Any], name: str) -> bool:
+    degrees = table.get("degrees", False)
+    if not isinstance(degrees, bool):
+        raise _fail(f"{name}.degrees", "true (angles in degrees) or false (radians)", degrees)
+    return degrees
+
+
+def _angles(values: Any, degrees: bool) -> Any:
+    """Angles [rad] from values [deg] if `degrees` (np.deg2rad, as SciPy's degrees=True) else values."""
+    return np.deg2rad(values) if degrees else values
+
+
+def _core_quaternion(convert: Any, name: str, args: tuple[str, ...], *values: Any) -> np.ndarray:
+    """The core's conversion `convert(*values)` to q_WB (x, y, z, w); its errors re-addressed to name.arg."""
+    try:
+        return np.asarray(convert(*values), dtype=np.float64)
+    except ValueError as e:
+        raise _core_error(e, name, args) from None
+
+
+def _euler(value: Any) -> np.ndarray:
+    name = "initial.euler"
+    table = _table(value, name)
+    for key in ("seq", "angles"):
+        if key not in table:
+            raise _fail(f"{name}.{key}", "a value (euler = {seq = \"ZYX\", angles = [..], degrees = true})", "nothing")
+    seq = table["seq"]
+    if not isinstance(seq, str):
+        raise _fail(f"{name}.seq", "an axis sequence such as \"ZYX\" (intrinsic) or \"xyz\" (extrinsic)", seq)
+    angles = _angles(_vector(table["angles"], f"{name}.angles"), _degrees_flag(table, name))
+    return _core_quaternion(_core.euler_to_quat, name, ("seq", "angles"), seq, angles)
+
+
+def _rotvec(value: Any) -> np.ndarray:
+    name = "initial.rotvec"
+    if not isinstance(value, (Mapping, list, tuple)):
+        raise _fail(name, "an array of 3 numbers [rad] or a table {value = [x, y, z], degrees = true}", value)
+    if isinstance(value, Mapping):
+        table = _table(value, name)
+        if "value" not in table:
+            raise _fail(f"{name}.value", "a rotation vector angle * axis [rad, or deg if degrees = true]", "nothing")
+        rotvec = _angles(_vector(table["value"], f"{name}.value"), _degrees_flag(table, name))
+    else:
+        rotvec = _vector(value, name)
+    return _core_quaternion(_core.rotvec_to_quat, name, ("rotvec",), rotvec)
+
+
+def _axis_angle(value: Any) -> np.ndarray:
+    name = "initial.axis_angle"
+    table = _table(value, name)
+    for key in ("axis", "angle"):
+        if key not in table:
+            raise _fail(f"{name}.{key}", "a value (axis_angle = {axis = [x, y, z], angle = .., degrees = true})",
+                        "nothing")
+    axis = _vector(table["axis"], f"{name}.axis")
+    angle = float(_angles(_number(table["angle"], f"{name}.angle"), _degrees_flag(table, name)))
+    return _core_quaternion(_core.axis_angle_to_quat, name, ("axis", "angle"), axis, angle)
+
+
+def _orientation(table: Mapping[str, Any]) -> np.ndarray | None:
+    """q_WB (x, y, z, w) from the one orientation form in [initial], or None if none is given."""
+    given = [k for k in _ORIENTATIONS if k in table]
+    if len(given) > 1:
+        raise ValueError("initial: expected at most one orientation of " + ", ".join(_ORIENTATIONS) +
+                         ", got " + " and ".join(given))
     scalar_first = table.get("scalar_first", False)
     if not isinstance(scalar_first, bool):
         raise _fail("initial.scalar_first", "true or false", scalar_first)
-    out = {k: _vector(table[k], f"initial.{k}") for k in ("p_W", "v_W", "w_B") if k in table}
-    if "q_WB" in table:
+    if "scalar_first" in table and given != ["q_WB"]:
+        raise ValueError("initial.scalar_first: expected it only beside q_WB (it orders q_WB's components), got "
+                         + (f"it with {given[0]}" if given else "it without q_WB"))
+    if not given:
+        return None
+    if given[0] == "q_WB":
         q = _vector(table["q_WB"], "initial.q_WB", 4)
-        if scalar_first:
-            q = np.roll(q, -1)
-        if abs(np.linalg.norm(q) - 1.0) > 1e-6:
-            raise _fail("initial.q_WB", "a unit quaternion (| |q| - 1 | <= 1e-6)", table["q_WB"])
-        out["q_WB"] = q / np.linalg.norm(q)
+        return _unit_quaternion(np.roll(q, -1) if scalar_first else q, "initial.q_WB")
+    return {"euler": _euler, "rotvec": _rotvec, "axis_angle": _axis_angle}[given[0]](table[given[0]])
+
+
+def _angular_rate(value: Any, name: str) -> np.ndarray:
+    """An angular rate [rad/s] from [x, y, z] in rad/s or {value = [x, y, z], unit = "rad/s" | "deg/s" | "rpm"}."""
+    if not isinstance(value, (Mapping, list, tuple)):
+        raise _fail(name, "an array of 3 numbers [rad/s] or a table {value = [x, y, z], unit = \"rpm\"}", value)
+    if not isinstance(value, Mapping):
+        return _vector(value, name)
+    table = _table(value, name, "initial.w_B")
+    if "value" not in table or "unit" not in table:
+        missing = "value" if "value" not in table else "unit"
+        raise _fail(f"{name}.{missing}", "a value (w_B = {value = [x, y, z], unit = \"rpm\"})", "nothing")
+    unit = table["unit"]
+    if not isinstance(unit, str) or unit not in _RATE_UNITS:
+        raise _fail(f"{name}.unit", "one of " + ", ".join(map(repr, _RATE_UNITS)), unit)
+    return _vector(table["value"], f"{name}.value") * _RATE_UNITS[unit]
+
+
+def _initial(value: Any) -> dict[str, np.ndarray]:
+    table = _table(value, "initial")
+    out = {k: _vector(table[k], f"initial.{k}") for k in ("p_W", "v_W") if k in table}
+    if "w_B" in table:
+        out["w_B"] = _angular_rate(table["w_B"], "initial.w_B")
+    q_WB = _orientation(table)
+    if q_WB is not None:
+        out["q_WB"] = q_WB
     return out
 
 
@@ -411,7 +623,7 @@ def _loads(value: Any) -> tuple[Any, ...]:
     loads = []
     for i, item in enumerate(value):
         name = f"loads[{i}]"
-        table = _table(item, name, {"force", "torque", "frame", "t_start", "t_end"})
+        table = _table(item, name, "loads")
         frame = table.get("frame", "world")
         if frame not in ("world", "body"):
             raise _fail(f"{name}.frame", "'world' or 'body'", frame)
@@ -427,7 +639,7 @@ def _loads(value: Any) -> tuple[Any, ...]:
 
 
 def _tradeoff_defaults(value: Any) -> dict[str, Any]:
-    table = dict(_table(value, "tradeoff", _TRADEOFF_KEYS))
+    table = dict(_table(value, "tradeoff"))
     if "dts" in table:
         dts = table["dts"]
         if not isinstance(dts, list) or not dts:
@@ -444,7 +656,7 @@ def _tradeoff_defaults(value: Any) -> dict[str, Any]:
     if "tolerance" in table:
         table["tolerance"] = _number(table["tolerance"], "tradeoff.tolerance", positive=True)
     if "measure" in table:
-        from .tradeoff import MEASURES  # imported here: rigiddyn.tradeoff imports this module
+        from .work_precision import MEASURES  # imported here: rigiddyn.work_precision imports this module
 
         if not isinstance(table["measure"], str) or table["measure"] not in MEASURES:
             raise _fail("tradeoff.measure", "one of " + ", ".join(MEASURES), table["measure"])
@@ -454,7 +666,7 @@ def _tradeoff_defaults(value: Any) -> dict[str, Any]:
 def parse_problem(data: Mapping[str, Any], base: str | Path | None = None,
                   source: str | None = None) -> Problem:
     """A Problem from parsed TOML `data`; `base` is the folder that relative mesh paths refer to."""
-    data = _table(data, "problem", _TOP_KEYS)
+    data = _table(data, "problem")
     if "horizon" not in data:
         raise _fail("horizon", "a time span [s] > 0", "nothing")
     if "body" not in data:
@@ -465,11 +677,11 @@ def parse_problem(data: Mapping[str, Any], base: str | Path | None = None,
     description = data.get("description", "")
     if not isinstance(description, str):
         raise _fail("description", "a string", description)
-    mass, inertia, triangle = _body(data["body"], Path(base) if base is not None else None)
+    mass, inertia, check = _body(data["body"], Path(base) if base is not None else None)
     return Problem(name=name, description=description, mass=mass, inertia_com=inertia,
                    horizon=_number(data["horizon"], "horizon", positive=True),
                    loads=_loads(data.get("loads", [])), gravity=_gravity(data.get("gravity", False)),
-                   require_triangle_inequality=triangle, tradeoff=_tradeoff_defaults(data.get("tradeoff", {})),
+                   inertia_check=check, tradeoff=_tradeoff_defaults(data.get("tradeoff", {})),
                    source=source, **_initial(data.get("initial", {})))
 
 

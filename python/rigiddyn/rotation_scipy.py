@@ -47,18 +47,21 @@ def to_scipy(q: npt.ArrayLike, scalar_first: bool = False) -> Any:
     return Rotation.from_quat(xyzw)
 
 
-def from_scipy(rotation: Any, scalar_first: bool = False) -> npt.NDArray[np.float64]:
+def from_scipy(rotation: Any, scalar_first: bool = False, canonical: bool = False) -> npt.NDArray[np.float64]:
     """The unit quaternions of a ``scipy.spatial.transform.Rotation``.
 
     Returns (4,) for a single rotation, (n, 4) for a stack: (x, y, z, w), or (w, x, y, z) if
-    ``scalar_first``. TypeError naming ``rotation`` for anything but a Rotation.
+    ``scalar_first``; with ``canonical=True`` the representative with w >= 0 (SciPy's
+    ``as_quat(canonical=True)``, ties as ``quat_canonical``). TypeError naming ``rotation`` for
+    anything but a Rotation.
     """
     Rotation = _rotation_class()
-    if not isinstance(scalar_first, (bool, np.bool_)):
-        raise TypeError(f"scalar_first: expected True or False, got {type(scalar_first).__name__} {scalar_first!r:.60}")
+    for name, flag in (("scalar_first", scalar_first), ("canonical", canonical)):
+        if not isinstance(flag, (bool, np.bool_)):
+            raise TypeError(f"{name}: expected True or False, got {type(flag).__name__} {flag!r:.60}")
     if not isinstance(rotation, Rotation):
         raise TypeError(
             f"rotation: expected a scipy.spatial.transform.Rotation, got {type(rotation).__name__}"
         )
-    xyzw = np.asarray(rotation.as_quat(), dtype=np.float64)
+    xyzw = np.asarray(rotation.as_quat(canonical=bool(canonical)), dtype=np.float64)
     return np.roll(xyzw, 1, axis=-1) if scalar_first else xyzw

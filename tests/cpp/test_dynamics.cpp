@@ -97,7 +97,7 @@ TEST(Dynamics, InverseUndoesForward) {
     // forward then inverse: a solve with I (kappa ~3) and terms <= |w| |I w| + |n| ~ 30 (normal
     // inputs), a few dozen roundings: 30 x 3 x 30 eps = 6e-13
     EXPECT_LT((back.f_W - w.f_W).norm(), 1e-12);
-    EXPECT_LT((back.n_B - w.n_B).norm(), 1e-12);
+    EXPECT_LT((back.tau_B - w.tau_B).norm(), 1e-12);
   }
 }
 
@@ -185,7 +185,18 @@ TEST(Models, RigidBodyUsesTheInertiaLayersCheck) {
   EXPECT_EQ(body_message, inertia_message);
   EXPECT_EQ(RigidBody(1.0, hlw, InertiaCheck::allow_unrealizable).euler_form(), EulerForm::principal);
   // positive semi-definite (valid for the inertia layer) but singular: Euler's equations need I^-1
-  EXPECT_THROW(RigidBody(1.0, Eigen::Vector3d(0.0, 1.0, 1.0).asDiagonal()), std::invalid_argument);
+  EXPECT_THROW(RigidBody(1.0, Eigen::Vector3d(0.0, 1.0, 1.0)), std::invalid_argument);
+}
+
+TEST(Models, RigidBodyFromPrincipalMomentsIsTheDiagonalInertia) {
+  const Eigen::Vector3d moments(1.0, 2.0, 2.5), hlw(2.0, 1.0, 2.0 / 3.0);
+  const RigidBody body(3.0, moments);
+  EXPECT_EQ(body.mass(), 3.0);
+  EXPECT_EQ(body.inertia_com(), Eigen::Matrix3d(moments.asDiagonal()));  // stored exactly
+  EXPECT_EQ(body.euler_form(), EulerForm::principal);
+  // the same realizability check as the matrix form
+  EXPECT_THROW(RigidBody(1.0, hlw), std::invalid_argument);
+  EXPECT_EQ(RigidBody(1.0, hlw, InertiaCheck::allow_unrealizable).inertia_com(), Eigen::Matrix3d(hlw.asDiagonal()));
 }
 
 TEST(Dynamics, ParticleInverseUndoesForwardAndImpulseIsMomentum) {
@@ -202,9 +213,28 @@ TEST(Dynamics, ParticleInverseUndoesForwardAndImpulseIsMomentum) {
   EXPECT_LT((dH - (s.p_W - O).cross(J)).norm(), 1e-14);
 }
 
+TEST(Dynamics, DefaultsAreTheWorldOriginAndNoGravity) {
+  // one default for all three models: angular momentum about the world origin O, no gravity
+  const RigidBody body(2.0, full_inertia());
+  const RigidBodyState s = generic_state();
+  const Particle particle(2.0);
+  const ParticleState ps{s.p_W, s.v_W};
+  const PlanarBody planar(2.0, 0.8);
+  const PlanarBodyState qs{Eigen::Vector2d(0.3, -1.0), 0.7, Eigen::Vector2d(1.0, -0.4), 1.3};
+  const Eigen::Vector3d O = Eigen::Vector3d::Zero();
+  EXPECT_EQ(angular_momentum(body, s), angular_momentum(body, s, O));
+  EXPECT_EQ(angular_momentum(particle, ps), angular_momentum(particle, ps, O));
+  EXPECT_EQ(angular_momentum(planar, qs), angular_momentum(planar, qs, Eigen::Vector2d::Zero()));
+  // about O the particle's is p x m v (eq. (4.42)), not zero
+  EXPECT_EQ(angular_momentum(particle, ps), s.p_W.cross(2.0 * s.v_W));
+  EXPECT_EQ(potential_energy(body, s), 0.0);
+  EXPECT_EQ(potential_energy(particle, ps), 0.0);
+  EXPECT_EQ(potential_energy(planar, qs), 0.0);
+}
+
 TEST(Dynamics, PlanarEqualsSpatialKeptInThePlane) {
   const PlanarBody planar(2.2, 0.8);
-  const RigidBody spatial(2.2, Eigen::Vector3d(0.5, 0.6, 0.8).asDiagonal());
+  const RigidBody spatial(2.2, Eigen::Vector3d(0.5, 0.6, 0.8));  // principal moments
   const PlanarBodyState ps{Eigen::Vector2d(0.3, -1.0), 0.7, Eigen::Vector2d(1.0, -0.4), 1.3};
   RigidBodyState bs;
   bs.p_W << ps.p_W, 0.0;
@@ -222,7 +252,7 @@ TEST(Dynamics, PlanarEqualsSpatialKeptInThePlane) {
     EXPECT_LT((Eigen::Vector3d(a.a_W.x(), a.a_W.y(), 0.0) - a3.a_W).norm(), 1e-14);
     EXPECT_LT((Eigen::Vector3d(0.0, 0.0, a.alpha) - a3.alpha_B).norm(), 1e-14);
     const PlanarWrench back = inverse_dynamics(planar, ps, a);
-    EXPECT_NEAR(back.n, n + p_GP.x() * f.y() - p_GP.y() * f.x(), 1e-14);
+    EXPECT_NEAR(back.tau, n + p_GP.x() * f.y() - p_GP.y() * f.x(), 1e-14);
   }
   const Eigen::Vector2d O(1.0, 1.0);
   EXPECT_NEAR(angular_momentum(planar, ps, O), angular_momentum(spatial, bs, Eigen::Vector3d(O.x(), O.y(), 0)).z(),

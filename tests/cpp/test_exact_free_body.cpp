@@ -26,7 +26,7 @@ Eigen::Matrix3d tilted(const Eigen::Vector3d& moments) {
 // max over sample times of the residuals of I ω̇ = (I ω) × ω and q̇ = q ⊗ (0, ω)/2 (central
 // differences, h = 1e-4: truncation ~1e-9) and of the drift of L_W and energy
 void expect_solves_the_free_body(const Eigen::Matrix3d& I, const Eigen::Vector3d& w0, const std::string& expected_case) {
-  const TorqueFreeSolution s(I, initial_attitude(), w0);
+  const TorqueFreeSolution s(I, initial_attitude(), w0, InertiaCheck::allow_unrealizable);
   EXPECT_EQ(to_string(s.solution_case()), expected_case);
   const double h = 1e-4, G = s.angular_momentum_W().norm();
   for (double t : {0.0, 0.3, 1.7, 5.2, 13.1, -40.3}) {
@@ -73,7 +73,8 @@ TEST(TorqueFreeSolution, PublishedPeriods) {
   // Hairer, Lubich, Wanner GNI IV.1: I = (2, 1, 2/3), m0 = (cos 1.1, 0, sin 1.1): case B, T = 10.7315
   const Eigen::Vector3d I(2.0, 1.0, 2.0 / 3.0);
   const TorqueFreeSolution hlw(I.asDiagonal(), Eigen::Quaterniond::Identity(),
-                               Eigen::Vector3d(std::cos(1.1), 0.0, std::sin(1.1)).cwiseQuotient(I));
+                               Eigen::Vector3d(std::cos(1.1), 0.0, std::sin(1.1)).cwiseQuotient(I),
+                               InertiaCheck::allow_unrealizable);
   EXPECT_EQ(hlw.solution_case(), TorqueFreeCase::B);
   EXPECT_NEAR(hlw.period(), 10.7315, 5e-5);  // published to 4 decimals
 }
@@ -91,6 +92,27 @@ TEST(TorqueFreeSolution, RejectsBadInput) {
   EXPECT_THROW(s.state_at(std::nan("")), std::invalid_argument);
 }
 
+// Under the default InertiaCheck::physical, an inertia violating the triangle inequality I1 + I2 >= I3
+// is refused with its moments named (as SpatialInertia and RigidBody do); the opt-in accepts it.
+TEST(TorqueFreeSolution, RequiresARealizableInertiaByDefault) {
+  const Eigen::Matrix3d hlw = Eigen::Vector3d(2.0, 1.0, 2.0 / 3.0).asDiagonal();
+  try {
+    TorqueFreeSolution(hlw, Eigen::Quaterniond::Identity(), Eigen::Vector3d(1, 2, 3));
+    ADD_FAILURE() << "an unrealizable inertia was accepted";
+  } catch (const std::invalid_argument& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("inertia: expected"), std::string::npos) << message;
+    EXPECT_NE(message.find("triangle inequality"), std::string::npos) << message;
+    EXPECT_NE(message.find("principal moments (0.66666666666666663, 1, 2)"), std::string::npos) << message;
+    EXPECT_EQ(message.find("::"), std::string::npos) << message;  // read from Python too
+  }
+  EXPECT_NO_THROW(TorqueFreeSolution(hlw, Eigen::Quaterniond::Identity(), Eigen::Vector3d(1, 2, 3),
+                                     InertiaCheck::allow_unrealizable));
+  // the boundary I1 + I2 = I3 (a flat plate) is realizable
+  EXPECT_NO_THROW(TorqueFreeSolution(Eigen::Vector3d(1.0, 2.0, 3.0).asDiagonal(), Eigen::Quaterniond::Identity(),
+                                     Eigen::Vector3d(1, 2, 3)));
+}
+
 // Any finite magnitudes (issue 9, item 10): I -> 2^j I is exact and leaves the motion unchanged, and the
 // solution scales the inertia by a power of two itself, so both make the same operations: equal to the
 // last bit in every branch, also where the momentum I w (2^±1000 times that of I) is not representable.
@@ -101,10 +123,10 @@ TEST(TorqueFreeSolution, AnyInertiaScaleGivesTheSameMotion) {
   const Eigen::Vector3d symmetric_moments[] = {{2.0, 3.0, 5.0}, {2.0, 2.0, 5.0}, {3.0, 3.0, 3.0}};
   for (const Eigen::Vector3d& I : symmetric_moments) {
     for (const Eigen::Vector3d& w0 : velocities) {
-      const TorqueFreeSolution ref(I.asDiagonal(), initial_attitude(), w0);
+      const TorqueFreeSolution ref(I.asDiagonal(), initial_attitude(), w0, InertiaCheck::allow_unrealizable);
       for (int j : {-1000, -300, 300, 1000}) {
         const Eigen::Vector3d I_scaled(std::ldexp(I(0), j), std::ldexp(I(1), j), std::ldexp(I(2), j));
-        const TorqueFreeSolution s(I_scaled.asDiagonal(), initial_attitude(), w0);
+        const TorqueFreeSolution s(I_scaled.asDiagonal(), initial_attitude(), w0, InertiaCheck::allow_unrealizable);
         EXPECT_EQ(s.solution_case(), ref.solution_case());
         for (double t : {0.0, 0.7, -4.0, 13.0}) {
           const TorqueFreeState a = s.state_at(t), b = ref.state_at(t);
@@ -116,14 +138,17 @@ TEST(TorqueFreeSolution, AnyInertiaScaleGivesTheSameMotion) {
   }
   // L_W = 2^1000 (6e10) and T beyond the double range: inf, the motion unaffected
   const TorqueFreeSolution big(Eigen::Vector3d(std::ldexp(2.0, 1000), std::ldexp(3.0, 1000), std::ldexp(5.0, 1000)).asDiagonal(),
-                               initial_attitude(), Eigen::Vector3d(0.3e10, -0.5e10, 1.1e10));
+                               initial_attitude(), Eigen::Vector3d(0.3e10, -0.5e10, 1.1e10),
+                               InertiaCheck::allow_unrealizable);
   EXPECT_FALSE(big.angular_momentum_W().allFinite());
   EXPECT_EQ(big.kinetic_energy(), std::numeric_limits<double>::infinity());
   // φ would turn at G/I1 ~ 3e600 rad/s
-  EXPECT_THROW(TorqueFreeSolution(Eigen::Vector3d(1e-300, 2.0, 3.0).asDiagonal(), initial_attitude(), Eigen::Vector3d::Constant(1e300)),
+  EXPECT_THROW(TorqueFreeSolution(Eigen::Vector3d(1e-300, 2.0, 3.0).asDiagonal(), initial_attitude(), Eigen::Vector3d::Constant(1e300),
+                                  InertiaCheck::allow_unrealizable),
                std::invalid_argument);
   // a phase beyond the double range
-  const TorqueFreeSolution fast(moments.asDiagonal(), initial_attitude(), Eigen::Vector3d(0.3e300, -0.5e300, 1.1e300));
+  const TorqueFreeSolution fast(moments.asDiagonal(), initial_attitude(), Eigen::Vector3d(0.3e300, -0.5e300, 1.1e300),
+                                InertiaCheck::allow_unrealizable);
   EXPECT_TRUE(fast.state_at(1.0).q_WB.coeffs().allFinite());
   EXPECT_THROW(fast.state_at(1e10), std::invalid_argument);
 }
@@ -144,7 +169,8 @@ TEST(FreeRotationFlow, OneStepEqualsTheClosedForm) {
   for (const Case& c : cases) {
     const FreeRotationFlow flow(c.I);
     for (double h : {0.01, 0.7, 5.0, -0.3, 40.0}) {
-      const TorqueFreeState exact = TorqueFreeSolution(c.I, initial_attitude(), c.w0).state_at(h);
+      const TorqueFreeState exact = TorqueFreeSolution(c.I, initial_attitude(), c.w0,
+                                                       InertiaCheck::allow_unrealizable).state_at(h);
       Eigen::Quaterniond q = initial_attitude();
       Eigen::Vector3d w = c.w0;
       flow.advance(q, w, h);
@@ -155,12 +181,14 @@ TEST(FreeRotationFlow, OneStepEqualsTheClosedForm) {
     }
     // 1000 steps of 0.05 s against the closed form at 50 s (round-off grows ~ eps per step), away
     // from the separatrix, where round-off grows exponentially (the flow itself is ill-conditioned)
-    const double mc = TorqueFreeSolution(c.I, initial_attitude(), c.w0).parameter_mc();
+    const double mc = TorqueFreeSolution(c.I, initial_attitude(), c.w0,
+                                         InertiaCheck::allow_unrealizable).parameter_mc();
     if (mc < 0.1 && mc != 1.0) continue;
     Eigen::Quaterniond q = initial_attitude();
     Eigen::Vector3d w = c.w0;
     for (int i = 0; i < 1000; ++i) flow.advance(q, w, 0.05);
-    const TorqueFreeState exact = TorqueFreeSolution(c.I, initial_attitude(), c.w0).state_at(50.0);
+    const TorqueFreeState exact = TorqueFreeSolution(c.I, initial_attitude(), c.w0,
+                                                     InertiaCheck::allow_unrealizable).state_at(50.0);
     // each step rounds by exact_step_roundoff, carried to 50 s by the flow's Jacobian, plus the
     // closed form's own error at 50 s (error_bounds.hpp)
     const double bound = test::torque_free_amplification_sum(c.I, initial_attitude(), c.w0, 50.0, 1000) *

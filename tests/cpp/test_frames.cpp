@@ -271,6 +271,33 @@ TEST(ConstantRotation, MatchesItsDefinition) {
   expect_near(tree.point_position("f", Vector3d::Zero(), "world", "world", t), Vector3d(1, 2, 3), 0, "origin");
 }
 
+// A motion keeps how it was built: FrameTree::motion(name).function().target<...>() gives the
+// parameters back (what the Python bindings save), and nothing for a general function.
+TEST(FrameMotion, KeepsItsParameters) {
+  const Vector3d axis(1, -1, 2), p(1, 2, 3);
+  const Matrix3d R0 = rotvec_to_matrix(Vector3d(0.2, 0.1, -0.4));
+  FrameTree tree;
+  tree.add_frame("spin", "world", FrameMotion::constant_rotation(axis, -3.0, R0, p));
+  tree.add_frame("fixed", "spin", FrameMotion::fixed(R0, p));
+  tree.add_frame("user", "fixed", FrameMotion([](double) { return FrameKinematics(); }));
+  const auto* spin = tree.motion("spin").function().target<ConstantRotation>();
+  ASSERT_NE(spin, nullptr);
+  EXPECT_EQ(spin->axis_P, axis);  // as given (not normalised), so that rebuilding gives the same motion
+  EXPECT_EQ(spin->rate, -3.0);
+  EXPECT_EQ(spin->R_PF0, R0);
+  EXPECT_EQ(spin->p_PF_P, p);
+  const auto* fixed = tree.motion("fixed").function().target<FixedPlacement>();
+  ASSERT_NE(fixed, nullptr);
+  EXPECT_EQ(fixed->R_PF, R0);
+  EXPECT_EQ(fixed->p_PF_P, p);
+  EXPECT_NE(tree.motion("world").function().target<FixedPlacement>(), nullptr);
+  EXPECT_EQ(tree.motion("user").function().target<FixedPlacement>(), nullptr);
+  // rebuilt from its parameters, the motion is bitwise the same at any time
+  const FrameMotion again = FrameMotion::constant_rotation(spin->axis_P, spin->rate, spin->R_PF0, spin->p_PF_P);
+  for (double t : {0.0, 0.4, -7.0}) EXPECT_EQ(again.at(t).R_PF, tree.motion("spin").at(t).R_PF);
+  EXPECT_THROW(tree.motion("nowhere"), std::invalid_argument);
+}
+
 // ---------------------------------------------------------------------------------------------
 // Bad input: std::invalid_argument whose message names the argument (and the frame).
 void expect_invalid(const std::function<void()>& f, const std::string& part1, const std::string& part2 = "") {

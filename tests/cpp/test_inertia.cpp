@@ -51,7 +51,7 @@ TEST(SpatialInertia, MatrixMatchesFeatherstoneForm) {
   expected << I.inertia_com() - I.mass() * c_hat * c_hat, I.mass() * c_hat, -I.mass() * c_hat,
       I.mass() * Matrix3d::Identity();
   EXPECT_TRUE(I.matrix().isApprox(expected, 1e-13));
-  EXPECT_TRUE(SpatialInertia::from_matrix(I.matrix()).isApprox(I, 1e-12));
+  EXPECT_TRUE(SpatialInertia::from_matrix(I.matrix()).is_approx(I, 1e-12));
   EXPECT_TRUE(I.matrix().isApprox(I.matrix().transpose(), 1e-14));
 }
 
@@ -87,8 +87,8 @@ TEST(SpatialInertia, ParallelAxisBothDirections) {
       -r.y() * r.z(), -r.x() * r.z(), -r.y() * r.z(), r.x() * r.x() + r.y() * r.y();
   EXPECT_TRUE(I.inertia_about_point(p).isApprox(I.inertia_com() + I.mass() * shift, 1e-13));
   const SpatialInertia back = SpatialInertia::from_inertia_about_point(I.mass(), I.com(), I.inertia_about_point(p), p);
-  EXPECT_TRUE(back.isApprox(I, 1e-12));
-  EXPECT_TRUE(SpatialInertia::from_inertia_about_origin(I.mass(), I.com(), I.inertia_about_origin()).isApprox(I, 1e-12));
+  EXPECT_TRUE(back.is_approx(I, 1e-12));
+  EXPECT_TRUE(SpatialInertia::from_inertia_about_origin(I.mass(), I.com(), I.inertia_about_origin()).is_approx(I, 1e-12));
 }
 
 TEST(SpatialInertia, TransformMatchesDenseSpatialTransform) {
@@ -98,7 +98,7 @@ TEST(SpatialInertia, TransformMatchesDenseSpatialTransform) {
   // I_A = X* I_B X^-1 (Featherstone 2.66): force_matrix * I * motion_matrix(inverse)
   const Matrix6d expected = X_AB.force_matrix() * I_B.matrix() * X_AB.inverse().motion_matrix();
   EXPECT_TRUE(I_A.matrix().isApprox(expected, 1e-12));
-  EXPECT_TRUE(I_A.transformed(X_AB.inverse()).isApprox(I_B, 1e-12));
+  EXPECT_TRUE(I_A.transformed(X_AB.inverse()).is_approx(I_B, 1e-12));
   const SpatialInertia rot = I_B.rotated(X_AB.rotation());
   EXPECT_TRUE(rot.inertia_com().isApprox(X_AB.rotation() * I_B.inertia_com() * X_AB.rotation().transpose()));
   EXPECT_THROW(I_B.rotated(2.0 * Matrix3d::Identity()), std::invalid_argument);
@@ -153,10 +153,10 @@ TEST(SpatialInertia, CompositeSplitBoxEqualsWhole) {
   const SpatialInertia whole = solid_box(Vector3d(2, 1, 1), Density{3.0});
   const SpatialInertia cube = solid_box(Vector3d(1, 1, 1), Density{3.0});
   const Transform left(Matrix3d::Identity(), Vector3d(-0.5, 0, 0)), right(Matrix3d::Identity(), Vector3d(0.5, 0, 0));
-  EXPECT_TRUE(composite({{left, cube}, {right, cube}}).isApprox(whole, 1e-14));
-  EXPECT_TRUE((cube.transformed(left) + cube.transformed(right)).isApprox(whole, 1e-14));
+  EXPECT_TRUE(composite({{left, cube}, {right, cube}}).is_approx(whole, 1e-14));
+  EXPECT_TRUE((cube.transformed(left) + cube.transformed(right)).is_approx(whole, 1e-14));
   // removal cancels: the whole's inertia (shift terms m 0.25) against a cube's (0.5): ~10x eps more
-  EXPECT_TRUE((whole - cube.transformed(left)).isApprox(cube.transformed(right), 1e-13));
+  EXPECT_TRUE((whole - cube.transformed(left)).is_approx(cube.transformed(right), 1e-13));
   // removing more than the body's mass fails
   EXPECT_THROW(cube - whole, std::invalid_argument);
 }
@@ -167,13 +167,13 @@ TEST(SpatialInertia, RandomCompositeAddRemoveRoundTrip) {
   const SpatialInertia all = composite(parts);
   SpatialInertia pairwise = parts[0];
   for (size_t i = 1; i < parts.size(); ++i) pairwise = pairwise + parts[i];
-  EXPECT_TRUE(all.isApprox(pairwise, 1e-12));
+  EXPECT_TRUE(all.is_approx(pairwise, 1e-12));
   SpatialInertia rest = all;
   for (size_t i = parts.size() - 1; i > 0; --i) rest = rest - parts[i];
   // nine removals cancel the whole's inertia (with its shift terms m |d|^2) down to one box's: each
   // rounds ~8 eps of |I_all|, relative to |I_0|
   const double cancellation = all.inertia_com().norm() / parts[0].inertia_com().norm();
-  EXPECT_TRUE(rest.isApprox(parts[0], 9 * 8 * std::numeric_limits<double>::epsilon() * cancellation));
+  EXPECT_TRUE(rest.is_approx(parts[0], 9 * 8 * std::numeric_limits<double>::epsilon() * cancellation));
 }
 
 TEST(Validity, NoFalsePositivesAfterShiftsAndRotations) {

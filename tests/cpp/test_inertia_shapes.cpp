@@ -62,13 +62,13 @@ TEST(Primitives, HandbookFormulas) {
   EXPECT_NEAR(solid_capsule(1.0, 2.0, Density{1.0}).mass(), M_PI * 2.0 + 4.0 / 3.0 * M_PI, 1e-14);
   // hollow sphere = big sphere minus small sphere (composite removal), and its thin limit
   const SpatialInertia hollow = hollow_sphere(2.0, 1.0, Density{1.0});
-  EXPECT_TRUE(hollow.isApprox(solid_sphere(2.0, Density{1.0}) - solid_sphere(1.0, Density{1.0}), 1e-14));
+  EXPECT_TRUE(hollow.is_approx(solid_sphere(2.0, Density{1.0}) - solid_sphere(1.0, Density{1.0}), 1e-14));
   // a shell 1e-6 thick tends to the spherical shell's 2/3 m R^2: the thickness changes it by O(1e-6)
   EXPECT_NEAR(hollow_sphere(1.0, 1.0 - 1e-6, Mass{1.0}).inertia_com()(0, 0), 2.0 / 3.0, 1e-5);
   // capsule with zero length is a sphere; tube = cylinder minus cylinder
-  EXPECT_TRUE(solid_capsule(0.7, 0.0, Mass{1.0}).isApprox(solid_sphere(0.7, Mass{1.0}), 1e-14));
+  EXPECT_TRUE(solid_capsule(0.7, 0.0, Mass{1.0}).is_approx(solid_sphere(0.7, Mass{1.0}), 1e-14));
   EXPECT_TRUE(hollow_cylinder(2.0, 1.0, 3.0, Density{1.0})
-                  .isApprox(solid_cylinder(2.0, 3.0, Density{1.0}) - solid_cylinder(1.0, 3.0, Density{1.0}), 1e-14));
+                  .is_approx(solid_cylinder(2.0, 3.0, Density{1.0}) - solid_cylinder(1.0, 3.0, Density{1.0}), 1e-14));
 }
 
 TEST(Primitives, SolidsConvergeToMeshApproximations) {
@@ -123,12 +123,12 @@ TEST(Primitives, ShellsAndThinBodiesConverge) {
   // box shell and thin plate are exact as meshes
   const Vector3d size(1.0, 2.0, 0.5);
   const Mesh b = test::box_mesh(size);
-  EXPECT_TRUE(mesh_shell(b.V, b.F, Density{2.0}).isApprox(box_shell(size, Density{2.0}), 1e-14));
+  EXPECT_TRUE(mesh_shell(b.V, b.F, Density{2.0}).is_approx(box_shell(size, Density{2.0}), 1e-14));
   MeshFaces plate(2, 3);
   plate << 0, 2, 1, 1, 2, 3;  // the z- face of the box
   MeshVertices V = b.V;
   V.col(2).setZero();
-  EXPECT_TRUE(mesh_shell(V, plate, Mass{3.0}).isApprox(thin_plate(1.0, 2.0, Mass{3.0}), 1e-14));
+  EXPECT_TRUE(mesh_shell(V, plate, Mass{3.0}).is_approx(thin_plate(1.0, 2.0, Mass{3.0}), 1e-14));
 }
 
 TEST(Primitives, SolidsConvergeToPointClouds) {
@@ -165,7 +165,7 @@ TEST(Mesh, BoxAndTetrahedronExact) {
   const Vector3d size(1.0, 2.0, 3.0);
   Mesh b = test::box_mesh(size);
   EXPECT_NEAR(mesh_volume(b.V, b.F), 6.0, 1e-14);  // 12 faces: a few dozen roundings of numbers <= 6
-  EXPECT_TRUE(solid_mesh(b.V, b.F, Mass{5.0}).isApprox(solid_box(size, Mass{5.0}), 1e-14));
+  EXPECT_TRUE(solid_mesh(b.V, b.F, Mass{5.0}).is_approx(solid_box(size, Mass{5.0}), 1e-14));
   // translated far away: same inertia about the centre, centre moved
   b.V.rowwise() += Eigen::RowVector3d(1e3, -2e3, 5e2);
   const SpatialInertia far = solid_mesh(b.V, b.F, Mass{5.0});
@@ -179,7 +179,7 @@ TEST(Mesh, BoxAndTetrahedronExact) {
   MeshFaces F(4, 3);
   F << 0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3;
   const SpatialInertia tet = solid_tetrahedron(V.row(0), V.row(1), V.row(2), V.row(3), Density{6.0});
-  EXPECT_TRUE(solid_mesh(V, F, Density{6.0}).isApprox(tet, 1e-14));
+  EXPECT_TRUE(solid_mesh(V, F, Density{6.0}).is_approx(tet, 1e-14));
   // about the origin, unit density: I_xx = 1/30 (volume 1/6 * (y^2 + z^2) mean 2/10), I_xy = -1/120
   Matrix3d I_O;
   I_O << 1.0 / 30, -1.0 / 120, -1.0 / 120, -1.0 / 120, 1.0 / 30, -1.0 / 120, -1.0 / 120, -1.0 / 120, 1.0 / 30;
@@ -231,11 +231,11 @@ TEST(Density, UniformDensityMatchesPrimitivesWithSmallErrorEstimate) {
   const auto one = [](const Vector3d&) { return 2.0; };
   const DensityIntegral box = integrate_density_over_box(one, Vector3d(-0.5, -1, -1.5), Vector3d(0.5, 1, 1.5), 3, 1);
   // a constant density: every rule is exact; round-off of 27 (box) or 12 faces x 8 (mesh) points
-  EXPECT_TRUE(box.inertia.isApprox(solid_box(Vector3d(1, 2, 3), Density{2.0}), 1e-13));
+  EXPECT_TRUE(box.inertia.is_approx(solid_box(Vector3d(1, 2, 3), Density{2.0}), 1e-13));
   EXPECT_LT(box.mass_error, 1e-12);
   const Mesh b = test::box_mesh(Vector3d(1, 2, 3));
   const DensityIntegral mesh = integrate_density_over_mesh(one, b.V, b.F, 2);
-  EXPECT_TRUE(mesh.inertia.isApprox(solid_box(Vector3d(1, 2, 3), Density{2.0}), 1e-12));
+  EXPECT_TRUE(mesh.inertia.is_approx(solid_box(Vector3d(1, 2, 3), Density{2.0}), 1e-12));
 }
 
 TEST(Density, LinearDensityClosedFormAndErrorEstimate) {

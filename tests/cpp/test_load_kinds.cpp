@@ -50,7 +50,7 @@ void expect_same_steps_every_kind() {
   const FullEuler full(I);
   ComLoads fixed;
   fixed.f_W = Eigen::Vector3d(0.4, -0.2, 1.0);
-  fixed.n_B = Eigen::Vector3d(-0.1, 0.2, 0.15);
+  fixed.tau_B = Eigen::Vector3d(-0.1, 0.2, 0.15);
   expect_same_steps<Integrator, LoadKind::none>(principal, Eigen::Vector3d::Zero(), ComLoads{});
   expect_same_steps<Integrator, LoadKind::none>(full, Eigen::Vector3d::Zero(), ComLoads{});
   expect_same_steps<Integrator, LoadKind::fixed>(principal, standard_gravity(), fixed);
@@ -80,7 +80,7 @@ TEST(LoadKinds, RkmkStagesSkipTheAttitudeOnlyWhenTheVelocityIgnoresIt) {
   RigidBodyModel<PrincipalEuler> model(2.0, PrincipalEuler(Eigen::Vector3d(1.0, 2.0, 3.0)));
   ComLoads turning;
   turning.f_B = Eigen::Vector3d(1.0, 0.0, 0.0);
-  turning.n_W = Eigen::Vector3d(0.0, 0.3, 0.0);
+  turning.tau_W = Eigen::Vector3d(0.0, 0.3, 0.0);
   model.set_loads(turning);
   const RigidBodyCoordinates y = generic_coordinates();
   RigidBodyTangent theta;

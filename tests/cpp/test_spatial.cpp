@@ -94,7 +94,7 @@ TEST(Motion, ArithmeticMatchesVectorArithmetic) {
     Motion c = a;
     c += b;
     c -= b;
-    EXPECT_TRUE(c.isApprox(a));
+    EXPECT_TRUE(c.is_approx(a));
     EXPECT_NEAR(a.dot(f), a.to_vector().dot(f.to_vector()), kTol);
     EXPECT_DOUBLE_EQ(f.dot(a), a.dot(f));
   }
@@ -277,7 +277,7 @@ TEST(Transform, QuaternionRoundTrip) {
     EXPECT_TRUE(Near(Y.rotation(), X.rotation()));
     EXPECT_EQ(Y.translation(), X.translation());
   }
-  EXPECT_TRUE(Transform().isApprox(Transform::Identity()));
+  EXPECT_TRUE(Transform().is_approx(Transform::Identity()));
   EXPECT_EQ(Transform().rotation(), Eigen::Matrix3d::Identity());
 }
 

@@ -14,6 +14,7 @@ sent as its base and shape) and prints as the Python expression that rebuilds it
   ("broadcast", ndarray, shape)   np.broadcast_to(ndarray, shape): a read-only view, possibly huge
   ("list", [spec, ...]) / ("tuple", [spec, ...])
   ("lambda", spec)                a callable returning the value of spec whatever it is passed
+  ("per_row", spec)               a callable returning the value of spec once per row of its first argument
   ("scipy_rotation", spec)        scipy.spatial.transform.Rotation.from_quat(value of spec)
   ("call", path, args, kwargs)    module.<path>(*args, **kwargs), path "f" or "Class" or "Class.static"
   ("method", self, name, args, kwargs)   (value of self).name(*args, **kwargs)
@@ -253,6 +254,8 @@ def source(spec, _depth=[0]) -> str:  # noqa: B006  (depth counter for chain var
         return "(" + ", ".join(source(s) for s in spec[1]) + (",)" if len(spec[1]) == 1 else ")")
     if tag == "lambda":
         return f"(lambda *args, **kwargs: {source(spec[1])})"
+    if tag == "per_row":
+        return f"(lambda rows, *args, **kwargs: np.full(len(rows), {source(spec[1])}))"
     if tag == "scipy_rotation":
         return f"Rotation.from_quat({source(spec[1])})"
     if tag == "call":
@@ -312,6 +315,9 @@ def build(spec, module, on_call):
     if tag == "lambda":
         value = build(spec[1], module, on_call)
         return lambda *args, **kwargs: value
+    if tag == "per_row":
+        value = build(spec[1], module, on_call)
+        return lambda rows, *args, **kwargs: np.full(len(rows), value)
     if tag == "scipy_rotation":
         from scipy.spatial.transform import Rotation
 

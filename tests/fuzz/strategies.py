@@ -434,20 +434,21 @@ class Strategies:
             (r"twist|m", obj("Motion")),
             (r"f", obj("Force")),
             (r"screw", obj("Screw")),
-            (r"check", obj("InertiaCheck")),
+            (r"check|inertia_check", obj("InertiaCheck")),
             (r"part", obj("SpatialInertia")),
             (r"body|model", obj("RigidBody", "Particle", "PlanarBody")),
             (r"state|initial", obj("RigidBodyState", "ParticleState", "PlanarBodyState")),
-            (r"rho", returning()),
+            (r"rho", lambda s, p, doc, depth: st.one_of(  # a density per point [kg/m^3], or anything
+                lit(POSITIVE_FLOAT).map(lambda v: ("per_row", v)), returning()(s, p, doc, depth))),
             (r"kinematics_at", returning("FrameKinematics")),
         ]
         table = [
-            (r"scalar_first|require_triangle_inequality|progress", lambda s, p, doc, depth: lit(st.booleans())),
+            (r"scalar_first|degrees|canonical|return_sensitivity|progress", lambda s, p, doc, depth: lit(st.booleans())),
             (r"q|q\d|q_[A-Za-z]+|quat", arr(_batch(None).flatmap(quaternions))),
             (r"R|R_[A-Za-z0-9]+", arr(_batch(None).flatmap(rotations))),
             (r"rotation", lambda s, p, doc, depth: st.one_of(
                 array_spec(rotations()), quaternions().map(lambda q: ("scipy_rotation", ("array", q))))),
-            (r"inertia\w*", arr(_batch(None).flatmap(inertias))),
+            (r"inertia(?!_check)\w*", arr(_batch(None).flatmap(inertias))),
             (r"masses", arr(st.lists(st.floats(0.1, 10.0), min_size=1, max_size=5).map(np.array))),
             (r"mass|density|\w*radius|length|height|size_[xy]|inertia_zz|horizon|magnitude|scale|tolerance|prec|rate",
              lambda s, p, doc, depth: lit(POSITIVE_FLOAT)),

@@ -70,9 +70,12 @@ EXAMPLES = {
     "AppliedLoad": lambda: {}, "FrameKinematics": lambda: {}, "FrameTree": lambda: {}, "ParticleState": lambda: {},
     "PlanarBodyState": lambda: {}, "RigidBodyState": lambda: {}, "Transform": lambda: {},
     "Motion": lambda: {"angular": V, "linear": V}, "Force": lambda: {"angular": V, "linear": V},
+    "SimulationResult.to_dataframe": lambda: {},
     "Motion.from_vector": lambda: {"vector": np.ones(6)}, "Force.from_vector": lambda: {"vector": np.ones(6)},
-    "Motion.cross": lambda: {"other": rd.Motion(V, V)}, "Motion.cross_force": lambda: {"f": rd.Force(V, V)},
-    "Motion.dot": lambda: {"f": rd.Force(V, V)}, "Force.dot": lambda: {"m": rd.Motion(V, V)},
+    "Motion.cross": lambda: {"other": rd.Motion(V, V)}, "Motion.cross_force": lambda: {"force": rd.Force(V, V)},
+    "Motion.dot": lambda: {"force": rd.Force(V, V)}, "Force.dot": lambda: {"motion": rd.Motion(V, V)},
+    "Motion.is_approx": lambda: {"other": rd.Motion(V, V)}, "Force.is_approx": lambda: {"other": rd.Force(V, V)},
+    "Transform.is_approx": lambda: {"other": rd.Transform()},
     "FrameMotion": lambda: {"kinematics_at": lambda t: rd.FrameKinematics()},
     "FrameMotion.fixed": lambda: {},
     "FrameMotion.constant_rotation": lambda: {"axis_P": [0, 0, 1.0], "rate": 0.5},
@@ -80,6 +83,7 @@ EXAMPLES = {
     "FrameTree.add_frame": lambda: {"name": "B", "parent": "A", "motion": rd.FrameMotion.fixed()},
     "FrameTree.set_parent": lambda: {"name": "A", "parent": "world", "motion": rd.FrameMotion.fixed()},
     "FrameTree.has_frame": lambda: {"name": "A"}, "FrameTree.parent": lambda: {"name": "A"},
+    "FrameTree.motion": lambda: {"name": "A"},
     "FrameTree.kinematics": lambda: {"frame": "A", "relative_to": "world", "t": 0.5},
     "FrameTree.rotation": lambda: {"frame": "A", "relative_to": "world", "t": 0.5},
     "FrameTree.angular_velocity": lambda: {"frame": "A", "relative_to": "world", "expressed_in": "A", "t": 0.5},
@@ -115,6 +119,11 @@ EXAMPLES = {
     "SpatialInertia.remove": lambda: {"part": rd.SpatialInertia(0.1, V, 0.01 * I_BOX)},
     "SpatialInertia.is_approx": lambda: {"other": rd.SpatialInertia(1.0, V, I_BOX)},
     "TorqueFreeSolution": lambda: {"inertia": I_BOX, "q_WB": Q, "w_B": V},
+    "PrincipalAxes": lambda: {"moments": [1.0, 2.0, 2.5], "axes": np.eye(3)},
+    "DensityIntegral": lambda: {"inertia": rd.SpatialInertia(1.0, V, I_BOX), "mass_error": 0.0, "com_error": 0.0,
+                                "inertia_error": 0.0, "evaluations": 8},
+    "PointVelocity": lambda: {"origin": V, "rotational": V, "relative": V},
+    "PointAcceleration": lambda: {"origin": V, "tangential": V, "centripetal": V, "relative": V, "coriolis": V},
     "TorqueFreeSolution.state_at": lambda: {"t": 0.5},
     "Transform.from_quat": lambda: {"q_AB": Q}, "Transform.quat": lambda: {},
     "Transform.act_point": lambda: {"p_B": V}, "Transform.act_inv_point": lambda: {"p_A": V},
@@ -124,6 +133,10 @@ EXAMPLES = {
     "potential_energy": _body_state, "forward_dynamics": _body_state,
     "apply_impulse": lambda: {**_body_state(), "impulse": V},
     "inverse_dynamics": lambda: {**_body_state(), "a_W": V, "alpha_B": V},
+    "KineticEnergy": lambda: {"translational": 1.0, "rotational": 2.0},
+    "ComWrench": lambda: {"f_W": V, "tau_B": V}, "PlanarWrench": lambda: {"f_W": [0.1, 0.2], "tau": 0.3},
+    "BodyAcceleration": lambda: {"a_W": V, "alpha_B": V},
+    "PlanarAcceleration": lambda: {"a_W": [0.1, 0.2], "alpha": 0.3},
     "power": lambda: {"state": rd.RigidBodyState(w_B=V), "f_W": V},
     "axis_angle_to_quat": lambda: {"axis": V, "angle": 0.3},
     "box_shell": lambda: {"size": V, "mass": 1.0}, "solid_box": lambda: {"size": V, "mass": 1.0},
@@ -141,6 +154,7 @@ EXAMPLES = {
     "mesh_shell": lambda: {"mesh_or_vertices": TET_V, "faces": TET_F, "mass": 1.0},
     "mesh_volume": lambda: {"vertices": TET_V, "faces": TET_F},
     "mesh_symmetry_planes": lambda: {"vertices": TET_V, "faces": TET_F},
+    "weld_vertices": lambda: {"vertices": TET_V, "faces": TET_F},
     "require_closed_oriented_mesh": lambda: {"faces": TET_F, "n_vertices": 4},
     "from_point_masses": lambda: {"masses": [1.0, 2.0], "positions": [V, -V]},
     "symmetry_planes": lambda: {"masses": [1.0, 1.0], "positions": [V, -V]},
@@ -159,7 +173,7 @@ EXAMPLES = {
     "transport_derivative": lambda: {"w_AB": V, "u": V, "du_dt_in_B": V},
     "twist_to_screw": lambda: {"twist": rd.Motion(V, V)},
     "screw_to_twist": lambda: {"screw": rd.Screw([0, 0, 1.0], V, 0.1, 2.0)},
-    "motion_cross_matrix": lambda: {"m": rd.Motion(V, V)}, "force_cross_matrix": lambda: {"m": rd.Motion(V, V)},
+    "motion_cross_matrix": lambda: {"motion": rd.Motion(V, V)}, "force_cross_matrix": lambda: {"motion": rd.Motion(V, V)},
     "transform_compose": lambda: {"R_AB": np.eye(3), "p_AB": V, "R_BC": np.eye(3), "p_BC": V},
     "transform_points": lambda: {"R_AB": np.eye(3), "p_AB": V, "p_B": V},
     "quat_to_matrix": lambda: {"q": Q}, "quat_to_rotvec": lambda: {"q": Q}, "quat_inverse": lambda: {"q": Q},
@@ -167,6 +181,10 @@ EXAMPLES = {
     "quat_multiply": lambda: {"q1": Q, "q2": Q}, "quat_rotate": lambda: {"q": Q, "v": V},
     "quat_integrate": lambda: {"q": Q, "w": V, "dt": 0.1},
     "quat_to_euler": lambda: {"seq": "xyz", "q": Q},
+    "davenport_to_quat": lambda: {"axes": np.eye(3), "order": "e", "angles": V},
+    "quat_to_davenport": lambda: {"axes": np.eye(3), "order": "e", "q": Q},
+    "quat_to_mrp": lambda: {"q": Q}, "mrp_to_quat": lambda: {"mrp": V},
+    "quat_rate": lambda: {"q": Q, "w": V}, "angular_velocity_from_quat_rate": lambda: {"q": Q, "dq_dt": Q},
     "matrix_to_quat": lambda: {"R": np.eye(3)}, "matrix_to_rotvec": lambda: {"R": np.eye(3)},
     "matrix_to_euler": lambda: {"seq": "xyz", "R": np.eye(3)},
     "euler_to_quat": lambda: {"seq": "xyz", "angles": V}, "euler_to_matrix": lambda: {"seq": "xyz", "angles": V},
@@ -174,6 +192,10 @@ EXAMPLES = {
     "rot_x": lambda: {"angle": 0.3}, "rot_y": lambda: {"angle": 0.3}, "rot_z": lambda: {"angle": 0.3},
     "hat": lambda: {"v": V}, "vee": lambda: {"S": np.eye(3)},
     "from_scipy": lambda: {"rotation": rd.to_scipy(Q)},
+    "nearest_rotation": lambda: {"M": np.eye(3)}, "quat_canonical": lambda: {"q": Q},
+    "slerp": lambda: {"q0": Q, "q1": Q, "t": 0.5}, "slerp_keys": lambda: {"times": [0.0, 1.0], "q": [Q, Q], "t": 0.5},
+    "angular_distance": lambda: {"q_a": Q, "q_b": Q}, "random_rotations": lambda: {"n": 2, "rng": 0},
+    "align_vectors": lambda: {"a": [V, V[::-1]], "b": [V, V[::-1]]},
     "elliprf": lambda: {"x": 1.0, "y": 2.0, "z": 3.0}, "elliprj": lambda: {"x": 1.0, "y": 2.0, "z": 3.0, "p": 4.0},
     "ellipk": lambda: {"m": 0.5}, "ellippi": lambda: {"n": 0.3, "m": 0.5},
     "ellippi_am": lambda: {"u": 0.4, "n": 0.3, "m": 0.5}, "jacobi_ellipj": lambda: {"u": 0.4, "m": 0.5},
@@ -186,7 +208,7 @@ EXAMPLES = {
     "load_problem": lambda: {"path_or_name": "t_handle"},
     "TradeoffResult": lambda: {"problem": "t_handle", "horizon": 0.1, "measure": "final_attitude_error",
                                "tolerance": 1e-6, "rows": []},
-    "TradeoffResult.recommend": lambda: {"tolerance": 1e-6},
+    "TradeoffResult.recommend": lambda: {"tolerance": 1e-6}, "TradeoffResult.pareto": lambda: {},
     "TradeoffResult.to_table": lambda: {}, "TradeoffResult.to_csv": lambda: {}, "TradeoffResult.to_json": lambda: {},
     "TradeoffResult.read_csv": lambda: {"path_or_text": _result().to_csv()},
     "TradeoffResult.read_json": lambda: {"path_or_text": _result().to_json()},
@@ -201,6 +223,7 @@ INSTANCES = {
     "RigidBodyState": lambda: rd.RigidBodyState(w_B=V), "SpatialInertia": lambda: rd.SpatialInertia(1.0, V, I_BOX),
     "TorqueFreeSolution": lambda: rd.TorqueFreeSolution(I_BOX, Q, V), "Transform": lambda: rd.Transform(None, V),
     "Problem": _problem, "TradeoffResult": _result,
+    "SimulationResult": lambda: rd.simulate(rd.RigidBody(1.0, I_BOX), rd.RigidBodyState(w_B=V), 0.01, 2),
 }
 
 # (path, argument) -> the wrong kinds that are valid values after all (the call may succeed)
@@ -281,6 +304,7 @@ INSTANCES_OF_RESULTS = {
     "DensityIntegral": lambda: rd.integrate_density_over_box(lambda p: np.ones(len(p)), -V, V, order=2),
     "KineticEnergy": lambda: rd.kinetic_energy(**_body_state()),
     "PrincipalAxes": lambda: rd.SpatialInertia(1.0, V, I_BOX).principal_axes(),
+    "WeldedMesh": lambda: rd.weld_vertices(TET_V, TET_F),
     "PointVelocity": lambda: rd.point_velocity(rd.FrameKinematics(), V, V),
     "PointAcceleration": lambda: rd.point_acceleration(rd.FrameKinematics(), V, V, V),
     "SimulationResult": lambda: rd.simulate(rd.RigidBody(1.0, I_BOX), rd.RigidBodyState(w_B=V), 0.01, 2),
@@ -288,8 +312,17 @@ INSTANCES_OF_RESULTS = {
     "ParticleState": rd.ParticleState, "PlanarBodyState": rd.PlanarBodyState, "Particle": lambda: rd.Particle(1.0),
     "PlanarBody": lambda: rd.PlanarBody(1.0, 0.5), "RigidBody": lambda: rd.RigidBody(1.0, I_BOX),
     "Screw": lambda: rd.Screw([0, 0, 1.0], V, 0.1, 2.0),
+    "ComWrench": lambda: rd.inverse_dynamics(**_body_state(), a_W=V, alpha_B=V),
+    "PlanarWrench": lambda: rd.inverse_dynamics(rd.PlanarBody(1.0, 0.5), rd.PlanarBodyState(), [0.1, 0.2], 0.3),
+    "BodyAcceleration": lambda: rd.forward_dynamics(**_body_state(), force=V),
+    "PlanarAcceleration": lambda: rd.forward_dynamics(rd.PlanarBody(1.0, 0.5), rd.PlanarBodyState(), [0.1, 0.2]),
 }
 PROPERTIES = _properties()
+# the states' fields: assigned whole, checked as the constructor checks (their arrays are read-only)
+ASSIGNABLE = {("ParticleState", "p_W"), ("ParticleState", "v_W"), ("PlanarBodyState", "p_W"),
+              ("PlanarBodyState", "theta"), ("PlanarBodyState", "v_W"), ("PlanarBodyState", "omega"),
+              ("RigidBodyState", "p_W"), ("RigidBodyState", "q_WB"), ("RigidBodyState", "v_W"),
+              ("RigidBodyState", "w_B")}
 
 
 def test_every_class_with_properties_has_an_instance():
@@ -300,9 +333,15 @@ def test_every_class_with_properties_has_an_instance():
 @pytest.mark.parametrize("cls, attr", PROPERTIES, ids=[f"{c}.{a}" for c, a in PROPERTIES])
 def test_properties_read_and_refuse_assignment(cls, attr):
     # a property reads without error and is read-only: assigning a wrong-typed value (or any value)
-    # raises AttributeError, never stores it (values are set through the constructors, which check)
+    # raises AttributeError, never stores it (values are set through the constructors, which check);
+    # a state's field is assignable, and a wrong value is refused naming it, the state unchanged
     obj = (INSTANCES.get(cls) or INSTANCES_OF_RESULTS[cls])()
-    getattr(obj, attr)
+    before = getattr(obj, attr)
+    if (cls, attr) in ASSIGNABLE:
+        with pytest.raises(TypeError, match=rf"^{attr}: expected"):
+            setattr(obj, attr, "wrong")
+        np.testing.assert_array_equal(getattr(obj, attr), before)
+        return
     with pytest.raises(AttributeError):
         setattr(obj, attr, "wrong")
 

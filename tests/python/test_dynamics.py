@@ -17,7 +17,7 @@ METHODS = ["explicit_euler", "semi_implicit_euler", "semi_implicit_euler_implici
 ORDER = {m["name"]: m["order"] for m in rd.methods()}
 
 # A body with products of inertia (full Euler form), a generic initial state and constant loads
-# of every kind (world force, body force, world couple, body couple) plus gravity.
+# of every kind (world force, body force, world torque, body torque) plus gravity.
 MASS = 2.5
 INERTIA = np.array([[0.9, 0.05, -0.1], [0.05, 1.4, 0.08], [-0.1, 0.08, 1.9]])
 Q0 = Rotation.from_rotvec([0.3, -0.5, 0.8]).as_quat()
@@ -37,8 +37,8 @@ def rigid_body_rhs(t, y):
     q, v, w = y[3:7], y[7:10], y[10:13]
     R = Rotation.from_quat(q / np.linalg.norm(q)).as_matrix()
     f_W = LOADS[0].force + R @ LOADS[1].force + MASS * GRAVITY
-    n_B = R.T @ LOADS[0].torque + LOADS[1].torque
-    w_dot = np.linalg.solve(INERTIA, n_B - np.cross(w, INERTIA @ w))
+    tau_B = R.T @ LOADS[0].torque + LOADS[1].torque
+    w_dot = np.linalg.solve(INERTIA, tau_B - np.cross(w, INERTIA @ w))
     x, yq, z, s = q
     # q_dot = 1/2 q (x) (w, 0), Hamilton product written out
     q_dot = 0.5 * np.array([
@@ -287,7 +287,7 @@ def test_inverse_dynamics_undoes_forward(seed):
     f, n, point = rng.normal(size=3), rng.normal(size=3), rng.normal(size=3)
     for frame in ("world", "body"):
         a_W, alpha_B = rd.forward_dynamics(body, state, force=f, torque=n, point=point, frame=frame, gravity=True)
-        f_W, n_B = rd.inverse_dynamics(body, state, a_W, alpha_B, gravity=True)
+        f_W, tau_B = rd.inverse_dynamics(body, state, a_W, alpha_B, gravity=True)
         R = Rotation.from_quat(state.q_WB).as_matrix()
         f_expected = f if frame == "world" else R @ f
         n_G = n + np.cross(point, f)
@@ -295,7 +295,7 @@ def test_inverse_dynamics_undoes_forward(seed):
         # forward then inverse: a solve with I (kappa <= 3) and terms <= |w| |I w| + |n| ~ 30 (normal
         # inputs), a few dozen roundings: 30 kappa 30 eps = 6e-13
         np.testing.assert_allclose(f_W, f_expected, atol=1e-12)
-        np.testing.assert_allclose(n_B, n_expected, atol=1e-12)
+        np.testing.assert_allclose(tau_B, n_expected, atol=1e-12)
 
 
 def test_forward_dynamics_matches_euler_equations():
@@ -331,14 +331,16 @@ def test_momentum_energy_power():
     q = Rotation.from_rotvec([0, 0, math.pi / 2]).as_quat()
     state = rd.RigidBodyState(p_W=[1.0, 0, 2.0], q_WB=q, v_W=[0, 3.0, 0], w_B=[1.0, 0, 0])
     np.testing.assert_array_equal(rd.linear_momentum(body, state), [0, 6.0, 0])  # small integers: exact
-    # H_G = R I w = Rz(90 deg) (1, 0, 0) = (0, 1, 0); about the origin add p x m v = (1,0,2) x (0,6,0)
-    # (cos 90 deg rounds to 6e-17: the only inexact entry)
-    np.testing.assert_allclose(rd.angular_momentum(body, state), [0, 1.0, 0], atol=1e-15)
+    # H_G = R I w = Rz(90 deg) (1, 0, 0) = (0, 1, 0); about the origin (the default) add
+    # p x m v = (1,0,2) x (0,6,0) (cos 90 deg rounds to 6e-17: the only inexact entry)
+    np.testing.assert_allclose(rd.angular_momentum(body, state, point=state.p_W), [0, 1.0, 0], atol=1e-15)
     np.testing.assert_allclose(rd.angular_momentum(body, state, point=[0, 0, 0]), [-12.0, 1.0, 6.0], atol=1e-15)
+    np.testing.assert_array_equal(rd.angular_momentum(body, state), rd.angular_momentum(body, state, point=[0, 0, 0]))
     T = rd.kinetic_energy(body, state)
     # small integers and halves: exact but for the rotation's 6e-17 entries (one rounding each)
     assert (T.translational, T.rotational, T.total) == pytest.approx((9.0, 0.5, 9.5), rel=4 * EPS, abs=0)
-    assert rd.potential_energy(body, state) == pytest.approx(2.0 * 9.81 * 2.0, rel=4 * EPS, abs=0)  # m g.p: 2 roundings
+    assert rd.potential_energy(body, state) == 0.0  # no gravity unless asked
+    assert rd.potential_energy(body, state, gravity=True) == pytest.approx(2.0 * 9.81 * 2.0, rel=4 * EPS, abs=0)  # m g.p: 2 roundings
     assert rd.power(state, [0, 1.0, 0], [2.0, 0, 0]) == pytest.approx(3.0 + 2.0, rel=4 * EPS, abs=0)
 
 
@@ -387,11 +389,14 @@ def test_particle_momentum_energy_power():
     state = rd.ParticleState(p_W=[1.0, 0, 2.0], v_W=[0, 3.0, 0])
     # small integers: exact
     np.testing.assert_array_equal(rd.linear_momentum(particle, state), [0, 6.0, 0])
-    np.testing.assert_array_equal(rd.angular_momentum(particle, state), [0, 0, 0])
+    # about the world origin by default, H_O = p x m v (the notes' eq. (4.42)); about itself, zero
+    np.testing.assert_array_equal(rd.angular_momentum(particle, state), [-12.0, 0, 6.0])
     np.testing.assert_array_equal(rd.angular_momentum(particle, state, point=[0, 0, 0]), [-12.0, 0, 6.0])
+    np.testing.assert_array_equal(rd.angular_momentum(particle, state, point=state.p_W), [0, 0, 0])
     T = rd.kinetic_energy(particle, state)
     assert (T.translational, T.rotational, T.total) == (9.0, 0.0, 9.0)
-    assert rd.potential_energy(particle, state) == pytest.approx(2.0 * 9.81 * 2.0, rel=4 * EPS, abs=0)  # 2 roundings
+    assert rd.potential_energy(particle, state) == 0.0  # no gravity unless asked
+    assert rd.potential_energy(particle, state, gravity=True) == pytest.approx(2.0 * 9.81 * 2.0, rel=4 * EPS, abs=0)  # 2 roundings
     assert rd.power(state, [0, 1.0, 5.0]) == 3.0
 
 
@@ -406,7 +411,7 @@ def test_particle_equals_non_rotating_rigid_body_dynamics():
     np.testing.assert_allclose(rd.angular_momentum(particle, ps, point=origin),
                                rd.angular_momentum(body, bs, point=origin), atol=1e-15)
     assert rd.kinetic_energy(particle, ps).total == rd.kinetic_energy(body, bs).total
-    assert rd.potential_energy(particle, ps) == rd.potential_energy(body, bs)
+    assert rd.potential_energy(particle, ps, True) == rd.potential_energy(body, bs, True)
     assert rd.power(ps, f) == rd.power(bs, f, [0.0, 0.0, 0.0])
 
 
@@ -422,7 +427,7 @@ def test_planar_inverse_dynamics_undoes_forward(seed):
         f_back, n_back = rd.inverse_dynamics(body, state, a_W, alpha, gravity=g)
         # forward then inverse: a few roundings of numbers <= 15 (normal inputs, g, m 1.7): 16 eps 15
         np.testing.assert_allclose(f_back, f_W, atol=1e-13)
-        # moment about G of the force at P (2-D cross product, frame independent) plus the couple
+        # torque about G of the force at P (2-D cross product, frame independent) plus the applied torque
         assert n_back == pytest.approx(n + point[0] * f[1] - point[1] * f[0], abs=1e-13)
 
 
@@ -482,9 +487,11 @@ def test_planar_momentum_energy_closed_form():
     body = rd.PlanarBody(2.0, 0.5)
     state = rd.PlanarBodyState(p_W=[1.0, 2.0], theta=0.3, v_W=[3.0, 0.0], omega=4.0)
     np.testing.assert_array_equal(rd.linear_momentum(body, state), [6.0, 0.0])  # small integers: exact
-    assert rd.angular_momentum(body, state) == 2.0  # I_zz omega
-    # about the origin: I_zz omega + p x m v = 2 + (1 * 0 - 2 * 6), small integers: exact
+    assert rd.angular_momentum(body, state, point=state.p_W) == 2.0  # about G: I_zz omega
+    # about the origin (the default): I_zz omega + p x m v = 2 + (1 * 0 - 2 * 6), small integers: exact
     assert rd.angular_momentum(body, state, point=[0.0, 0.0]) == 2.0 - 12.0
+    assert rd.angular_momentum(body, state) == 2.0 - 12.0
+    assert rd.potential_energy(body, state) == 0.0  # no gravity unless asked
     T = rd.kinetic_energy(body, state)
     assert (T.translational, T.rotational) == (9.0, 4.0)
     assert rd.power(state, [1.0, 0.0], 0.5) == 3.0 + 2.0
@@ -509,11 +516,12 @@ def test_rigid_body_inertia_check_is_the_inertia_layers():
         rd.SpatialInertia(1.0, [0, 0, 0], hlw)
     assert str(body_error.value) == str(inertia_error.value)  # one check, one message
     assert rd.RigidBody(1.0, hlw, check=rd.InertiaCheck.allow_unrealizable).euler_form == "principal"
-    # the older spellings still work
-    assert rd.RigidBody(1.0, hlw, require_triangle_inequality=False).euler_form == "principal"
-    assert rd.RigidBody(1.0, hlw, False).euler_form == "principal"
-    with pytest.raises(ValueError, match="^require_triangle_inequality"):
-        rd.RigidBody(1.0, hlw, check=rd.InertiaCheck.physical, require_triangle_inequality=False)
+    assert rd.RigidBody(1.0, hlw, rd.InertiaCheck.allow_unrealizable).euler_form == "principal"
+    # one spelling: the older require_triangle_inequality flag (or a bool) is refused, naming check
+    with pytest.raises(TypeError):
+        rd.RigidBody(1.0, hlw, require_triangle_inequality=False)
+    with pytest.raises(TypeError, match=r"^check: expected InertiaCheck\.physical or InertiaCheck\.allow_unrealizable"):
+        rd.RigidBody(1.0, hlw, False)
     with pytest.raises(TypeError, match="^check"):
         rd.RigidBody(1.0, hlw, check="allow_unrealizable")
     # PSD but singular (a thin rod) passes the inertia layer, not Euler's equations
@@ -560,7 +568,7 @@ def test_bad_states_and_bodies():
         rd.RigidBody(1.0, [[1.0, 0.5, 0], [0, 1.0, 0], [0, 0, 1.0]])
     with pytest.raises(ValueError, match="^inertia_com.*triangle"):
         rd.RigidBody(1.0, np.diag([2.0, 1.0, 2.0 / 3.0]))
-    assert rd.RigidBody(1.0, np.diag([2.0, 1.0, 2.0 / 3.0]), require_triangle_inequality=False).euler_form == "principal"
+    assert rd.RigidBody(1.0, np.diag([2.0, 1.0, 2.0 / 3.0]), check=rd.InertiaCheck.allow_unrealizable).euler_form == "principal"
     with pytest.raises(ValueError, match="^inertia_com"):
         rd.RigidBody(1.0, np.eye(2))
     with pytest.raises(ValueError, match="^inertia_zz"):

@@ -172,28 +172,31 @@ def test_forward_and_inverse_dynamics(body_state, force, torque, point, frame, g
 
 
 @given(rigid_states(), vec3, gravities("rigid"), vec3, vec3)
-def test_momentum_energy_and_power(body_state, point, g, f_W, n_B):
+def test_momentum_energy_and_power(body_state, point, g, f_W, tau_B):
     body, state, mass, I, p, q, v, w = body_state
     # one evaluation each side: round-off of the sum of the terms' sizes (evaluation_tolerance)
     Iw, mv = np.linalg.norm(I, 2) * magnitude(w), mass * magnitude(v)
     arm = magnitude(p) + magnitude(point)
     close(rd.linear_momentum(body, state), dyn.linear_momentum(mass, v), evaluation_tolerance(mv, mv))
-    close(rd.angular_momentum(body, state), dyn.angular_momentum_about_com(I, q, w), evaluation_tolerance(Iw, Iw))
-    H_O = dyn.angular_momentum_about_point(mass, I, p, q, v, w, point)
-    close(rd.angular_momentum(body, state, point), H_O, evaluation_tolerance(Iw + arm * mv, H_O))
+    close(rd.angular_momentum(body, state, p), dyn.angular_momentum_about_com(I, q, w), evaluation_tolerance(Iw, Iw))
+    H_P = dyn.angular_momentum_about_point(mass, I, p, q, v, w, point)
+    close(rd.angular_momentum(body, state, point), H_P, evaluation_tolerance(Iw + arm * mv, H_P))
+    # the default point is the world origin O
+    H_O = dyn.angular_momentum_about_point(mass, I, p, q, v, w, np.zeros(3))
+    close(rd.angular_momentum(body, state), H_O, evaluation_tolerance(Iw + magnitude(p) * mv, H_O))
     T = rd.kinetic_energy(body, state)
     T_trans, T_rot = dyn.kinetic_energy(mass, I, v, w)
     close(T.translational, T_trans, evaluation_tolerance(T_trans, T_trans))
     close(T.rotational, T_rot, evaluation_tolerance(Iw * magnitude(w), T_rot))
     close(T.total, T_trans + T_rot, evaluation_tolerance(T_trans + Iw * magnitude(w), T_trans + T_rot))
-    for gravity in (g, dyn.STANDARD_GRAVITY):  # g None: no gravity; standard: the default
+    for gravity in (g, dyn.STANDARD_GRAVITY):  # g None: no gravity
         V = dyn.potential_energy(mass, p, gravity)
-        got_V = rd.potential_energy(body, state, gravity) if gravity is g else rd.potential_energy(body, state)
-        close(got_V, V, evaluation_tolerance(mass * magnitude(p) * magnitude(gravity if gravity is not None
-                                                                                       else 0.0), V))
-    P = dyn.power(f_W, n_B, v, w)
-    close(rd.power(state, f_W, n_B), P,
-          evaluation_tolerance(magnitude(f_W) * magnitude(v) + magnitude(n_B) * magnitude(w), P))
+        close(rd.potential_energy(body, state, gravity), V,
+              evaluation_tolerance(mass * magnitude(p) * magnitude(gravity if gravity is not None else 0.0), V))
+    assert rd.potential_energy(body, state) == 0.0  # the default: no gravity, as simulate
+    P = dyn.power(f_W, tau_B, v, w)
+    close(rd.power(state, f_W, tau_B), P,
+          evaluation_tolerance(magnitude(f_W) * magnitude(v) + magnitude(tau_B) * magnitude(w), P))
 
 
 @given(rigid_states(), vec3, vec3, vec3, st.sampled_from(["world", "body"]))

@@ -110,7 +110,7 @@ def test_invariants_to_round_off():
         G = np.linalg.norm(sol.angular_momentum_W)
         # the orbit's identities hold to a few ulps at any t (sn^2 + cn^2 = 1 at any phase; only the
         # phase errs with t, free_body.hpp): E and |m| to a few ulps, numpy's evaluation adds <= 8 eps
-        assert np.abs(energy / sol.kinetic_energy - 1).max() < 32 * EPS
+        assert np.abs(energy / sol.kinetic_energy.rotational - 1).max() < 32 * EPS
         assert np.abs(np.linalg.norm(m, axis=1) / G - 1).max() < 32 * EPS
         # the attitude error grows like eps times the phase (about 1e3 rad here): closed_form_error
         assert np.abs(L_W - sol.angular_momentum_W).max() / G < 2 * closed_form_error(3.0, w0, t[-1])
@@ -243,20 +243,21 @@ def test_nearly_symmetric_body_tends_to_the_symmetric_branch():
 
 
 def test_hairer_lubich_wanner_problem():
-    # GNI IV.1: I = (2, 1, 2/3) (not physically realizable; accepted as a raw SPD matrix),
-    # m0 = (cos 1.1, 0, sin 1.1): case B about the smallest moment's axis, period 10.7315
+    # GNI IV.1: I = (2, 1, 2/3) (not physically realizable; accepted with the opt-in),
+    # L0 = (cos 1.1, 0, sin 1.1): case B about the smallest moment's axis, period 10.7315
     I = np.diag([2.0, 1.0, 2.0 / 3.0])
-    m0 = np.array([math.cos(1.1), 0.0, math.sin(1.1)])
-    sol = rigiddyn.TorqueFreeSolution(I, [0, 0, 0, 1], m0 / np.diag(I))
+    L0 = np.array([math.cos(1.1), 0.0, math.sin(1.1)])
+    sol = rigiddyn.TorqueFreeSolution(I, [0, 0, 0, 1], L0 / np.diag(I), check=rigiddyn.InertiaCheck.allow_unrealizable)
     assert sol.case == "B"
     assert sol.period == pytest.approx(10.7315, abs=5e-5)  # published to 4 decimals
     np.testing.assert_allclose(sol.principal_moments, [2.0 / 3.0, 1.0, 2.0])
 
 
 def test_separatrix_and_steady_spins():
-    # I = (2, 3, 6), m = (6, ., 6): m1²(I2 - I1)/I1 = m3²(I3 - I2)/I3 exactly, so Δ2 = 0
+    # I = (2, 3, 6) (unrealizable: the opt-in), L = (6, ., 6): L1²(I2 - I1)/I1 = L3²(I3 - I2)/I3 exactly,
+    # so Δ2 = 0
     I = np.diag([2.0, 3.0, 6.0])
-    sol = rigiddyn.TorqueFreeSolution(I, Q0, [3.0, 0.4, 1.0])
+    sol = rigiddyn.TorqueFreeSolution(I, Q0, [3.0, 0.4, 1.0], check=rigiddyn.InertiaCheck.allow_unrealizable)
     assert sol.case == "separatrix" and sol.period == math.inf
     t = np.linspace(0, 6, 31)  # the separatrix is unstable: DOP853 leaves it once close to the saddle
     ode = solve_ivp(euler_quaternion_rhs(I), (0, 6), np.concatenate([[3.0, 0.4, 1.0], Q0]), method="DOP853",
@@ -270,7 +271,7 @@ def test_separatrix_and_steady_spins():
     np.testing.assert_allclose(w, ode.y[:3].T, rtol=0, atol=np.abs(coarse.y[:3] - ode.y[:3]).max() + own * 3.2)
     assert np.all(angle_between(q, ode.y[3:].T) < angle_between(coarse.y[3:].T, ode.y[3:].T).max() + own)
     for w0, case in (([0, 2.0, 0], "separatrix"), ([0, 0, 2.0], "A"), ([2.0, 0, 0], "B"), ([0, 0, 0], "separatrix")):
-        steady = rigiddyn.TorqueFreeSolution(I, Q0, w0)
+        steady = rigiddyn.TorqueFreeSolution(I, Q0, w0, check=rigiddyn.InertiaCheck.allow_unrealizable)
         q, w = steady.state_at(t)
         assert steady.case == case
         np.testing.assert_array_equal(w, np.tile(w0, (len(t), 1)))  # steady: returned as given

@@ -23,7 +23,7 @@ import pytest
 import rigiddyn
 from rigiddyn.problem import Problem, parse_problem
 from rigiddyn.stability import STABILITY_POLYNOMIALS, orbit, stability_message
-from rigiddyn.tradeoff import reference_states
+from rigiddyn.work_precision import reference_states
 
 try:
     import tomllib
@@ -157,7 +157,7 @@ def test_accurate_at_the_extremes(case, method):
 
 def test_near_separatrix_reference_is_the_closed_form():
     _, problem, _, _ = next(c for c in CASES if c[0] == "near_separatrix")
-    solution = rigiddyn.TorqueFreeSolution(problem.inertia_com, problem.q_WB, problem.w_B)
+    solution = rigiddyn.TorqueFreeSolution(problem.inertia_com, problem.q_WB, problem.w_B, check=problem.inertia_check)
     assert solution.case == "A" and 0.0 < solution.parameter_mc < 1e-8
 
 

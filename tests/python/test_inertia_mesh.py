@@ -122,3 +122,109 @@ def test_density_over_mesh_uniform_matches_solid_mesh():
     # n ~ 320 x 4 (the error estimate is the difference of two such exact rules)
     assert uniform.inertia.is_approx(rd.solid_mesh(mesh, density=2.0), roundoff(1, 4 * len(mesh.faces)))
     assert uniform.mass_error < roundoff(uniform.inertia.mass, 4 * len(mesh.faces))
+
+
+# --- welding (vertices closer than weld_tolerance become one, as trimesh merges them on load) ---
+
+def unshared(mesh, delta, rng):
+    """The mesh as an STL file stores it: every face with its own three vertex copies. Each vertex's
+    first copy (lowest index) is exact; the others move by `delta` [m] in a random direction (at a
+    coordinate 0 a 1e-33 move gives the -0.0 / 1e-33 pairs of CAD exports; elsewhere it rounds away)."""
+    corners = np.asarray(mesh.faces).ravel()
+    vertices = np.asarray(mesh.vertices)[corners].copy()
+    _, first = np.unique(corners, return_index=True)
+    moved = np.ones(len(corners), bool)
+    moved[first] = False
+    directions = rng.normal(size=(int(moved.sum()), 3))
+    vertices[moved] += delta * directions / np.linalg.norm(directions, axis=1, keepdims=True)
+    return vertices, np.arange(len(corners)).reshape(-1, 3)
+
+
+def corner_at_origin_box():
+    box = trimesh.creation.box(extents=[1.0, 2.0, 0.5])
+    box.apply_translation([0.5, 1.0, 0.25])  # coordinates 0 and the extents: 1e-33 moves are representable
+    return box
+
+
+@pytest.mark.parametrize("relative_delta", [1e-33, 1e-12])
+@pytest.mark.parametrize("make", [corner_at_origin_box, lambda: trimesh.creation.cylinder(radius=0.3, height=1.2)],
+                         ids=["box", "cylinder"])
+def test_stl_duplicates_are_welded_and_counted(make, relative_delta):
+    mesh = make()
+    size = np.linalg.norm(mesh.extents)
+    V, F = unshared(mesh, relative_delta * size, np.random.default_rng(1))
+    duplicates = len(V) - len(mesh.vertices)
+    for build, density in ((rd.solid_mesh, 2.5), (rd.mesh_shell, 0.5)):
+        with pytest.warns(rd.MeshWeldWarning, match=rf"^{build.__name__}: welded {duplicates} vertices .* dropped 0"):
+            welded = build(V, F, density=density)
+        # the welded mesh has the exact shared vertices (each cluster keeps its exact first copy):
+        # it differs from the shared mesh only by summation order and the reference point (the
+        # vertex mean), i.e. the round-off of the face sums, gamma_n with n = 4 f roundings per side on
+        # numbers <= the size (the reference point is inside: no cancellation amplification)
+        shared = build(mesh, density=density)
+        assert welded.is_approx(shared, roundoff(1.0, 4 * len(F)))
+        with pytest.warns(rd.MeshWeldWarning):  # a trimesh object with the same arrays, unprocessed
+            assert build(trimesh.Trimesh(V, F, process=False), density=density).is_approx(welded, 0.0)
+    # against trimesh's own mass properties of the shared mesh: both exact formulas, round-off as in
+    # test_solid_mesh_matches_trimesh (origin within the mesh's extent: shift <= 2)
+    mesh.density = 2.5
+    body = build_quietly(V, F)
+    assert body.mass == pytest.approx(mesh.mass, rel=roundoff(2.0, len(F)))
+    np.testing.assert_allclose(body.com, mesh.center_mass, atol=roundoff(2.0 * size, len(F)))
+    np.testing.assert_allclose(body.inertia_com, mesh.moment_inertia,
+                               atol=roundoff(4.0, len(F)) * np.abs(mesh.moment_inertia).max())
+    report = rd.weld_vertices(V, F)
+    assert (report.welded_vertices, report.dropped_faces) == (duplicates, 0)
+    assert len(report.vertices) == len(mesh.vertices) and len(report.faces) == len(F)
+    assert report.tolerance == pytest.approx(1e-8 * np.linalg.norm(V.max(axis=0) - V.min(axis=0)), rel=1e-15)
+
+
+def build_quietly(V, F, **kwargs):
+    with pytest.warns(rd.MeshWeldWarning):
+        return rd.solid_mesh(V, F, density=2.5, **kwargs)
+
+
+def test_welding_off_or_too_tight_refuses_with_a_clear_message():
+    mesh = corner_at_origin_box()
+    V, F = unshared(mesh, 1e-12 * np.linalg.norm(mesh.extents), np.random.default_rng(2))
+    with pytest.raises(ValueError, match=r"^faces: expected a closed mesh.*open boundary\); welding is off "
+                                         r"\(weld_tolerance=0\) and 28 vertices lie within the default weld tolerance"):
+        rd.solid_mesh(V, F, density=1.0, weld_tolerance=0)
+    # a tolerance below the 1e-12 moves welds nothing (no copy is exact): still open, and said so
+    with pytest.raises(ValueError, match=r"open boundary\) \(after welding 0 vertices within 1\.0*\d*e-15 m\)"):
+        rd.solid_mesh(V, F, density=1.0, weld_tolerance=1e-15)
+    assert rd.mesh_shell(V, F, density=1.0, weld_tolerance=0).mass > 0  # a shell need not be closed
+    for bad, match in ((-1.0, r"^weld_tolerance: expected a finite distance >= 0"), (np.nan, r"^weld_tolerance: expected"),
+                       ("x", r"^weld_tolerance: expected")):
+        with pytest.raises((ValueError, TypeError), match=match):
+            rd.solid_mesh(V, F, density=1.0, weld_tolerance=bad)
+
+
+def test_degenerate_faces_after_welding_are_dropped_and_counted():
+    box = trimesh.creation.box(extents=[1.0, 2.0, 3.0])
+    V = np.vstack([box.vertices, box.vertices[0] + 1e-13])  # vertex 8: a copy of vertex 0
+    # a sliver (0, 8, 1) closed by the sliver (8, 0, 1): both collapse to edges once 8 is welded to 0
+    F = np.vstack([box.faces, [[0, 8, 1], [8, 0, 1]]])
+    with pytest.warns(rd.MeshWeldWarning, match=r"welded 1 vertices .* dropped 2 faces"):
+        body = rd.solid_mesh(V, F, density=1.0)
+    assert body.is_approx(rd.solid_box([1.0, 2.0, 3.0], density=1.0), 1e-14)  # as in the box test above
+    with pytest.raises(ValueError, match=r"^faces"):
+        rd.solid_mesh(V, F, density=1.0, weld_tolerance=0)
+    report = rd.weld_vertices(V, F)
+    assert (report.welded_vertices, report.dropped_faces) == (1, 2)
+    np.testing.assert_array_equal(report.face_index, np.arange(12))
+    np.testing.assert_array_equal(report.vertex_index, np.arange(8))
+
+
+def test_weld_clusters_across_grid_cells_and_not_beyond_the_tolerance():
+    h = 1e-8
+    # 0.3 -/+ 2e-9 lie on both sides of a grid line at 0.3 (cells of side h from 0): welded all the same
+    # (a rounding to multiples of h, as trimesh's digits, would keep them apart); 1.1 h apart: kept
+    V = np.array([[0.0, 0, 0], [1, 1, 1], [0.3 - 2e-9, 0, 0], [0.3 + 2e-9, 0, 0], [0.5, 0, 0], [0.5 + 1.1 * h, 0, 0]])
+    F = np.array([[0, 1, 2], [0, 1, 3], [0, 1, 4], [0, 1, 5]])
+    report = rd.weld_vertices(V, F, tolerance=h)
+    assert report.welded_vertices == 1
+    np.testing.assert_array_equal(report.vertex_index, [0, 1, 2, 4, 5])
+    np.testing.assert_array_equal(report.faces, [[0, 1, 2], [0, 1, 2], [0, 1, 3], [0, 1, 4]])
+    assert rd.weld_vertices(V, F, tolerance=0.0).welded_vertices == 0
+    assert "welded_vertices=1" in repr(report)

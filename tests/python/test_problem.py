@@ -208,8 +208,19 @@ def test_hairer_body_needs_the_explicit_opt_out():
     text = BASE.replace("inertia = [1.0, 2.0, 2.5]", "inertia = [2.0, 1.0, 0.6666666666666666]")
     with pytest.raises(ValueError, match="^body.inertia: "):
         parse(text)
-    p = parse(text.replace("[initial]", "require_triangle_inequality = false\n[initial]"))
-    assert not p.require_triangle_inequality and p.body().mass == 2.0
+    p = parse(text.replace("[initial]", "inertia_check = 'allow_unrealizable'\n[initial]"))
+    assert p.inertia_check == rigiddyn.InertiaCheck.allow_unrealizable and p.body().mass == 2.0
+    with pytest.raises(ValueError, match="^body.inertia_check: expected 'physical' or 'allow_unrealizable', got 'off'"):
+        parse(text.replace("[initial]", "inertia_check = 'off'\n[initial]"))
+
+
+@pytest.mark.parametrize("old", ["true", "false"])
+def test_renamed_triangle_inequality_key_points_to_inertia_check(old):
+    # one way to say it: the key of earlier versions is refused with the key that replaces it
+    with pytest.raises(ValueError, match=r'^body.require_triangle_inequality: expected inertia_check = '
+                                         r'"physical" \| "allow_unrealizable" in its place '
+                                         r'.*false is "allow_unrealizable"'):
+        parse(BASE.replace("[initial]", f"require_triangle_inequality = {old}\n[initial]"))
 
 
 def test_error_message_names_expected_value():
@@ -228,7 +239,8 @@ def test_primitive_shape_of_the_wrong_type():
     ("name", 5, TypeError), ("mass", -1.0, ValueError), ("mass", "1", TypeError), ("horizon", 0.0, ValueError),
     ("inertia_com", np.diag([1.0, 1.0, 5.0]), ValueError), ("inertia_com", np.eye(2), ValueError),
     ("w_B", [np.nan, 0, 0], ValueError), ("q_WB", [0, 0, 0, 2.0], ValueError), ("loads", [1, 2], TypeError),
-    ("gravity", "down", TypeError), ("require_triangle_inequality", None, TypeError), ("tradeoff", [], TypeError),
+    ("gravity", "down", TypeError), ("inertia_check", True, TypeError), ("inertia_check", "physical", TypeError),
+    ("tradeoff", [], TypeError),
 ])
 def test_problem_constructor_checks_every_field(field, value, error):
     # the dataclass is public: built directly it is checked as a problem file is (issue 9 item 10)
@@ -241,7 +253,7 @@ def test_problem_constructor_checks_every_field(field, value, error):
 
 FULL = {  # every field a problem file may hold (one [body] source at a time)
     "name": "full", "description": "every field", "horizon": 1.0, "gravity": [0.0, 0.0, -9.81],
-    "body": {"mass": 2.0, "inertia": [1.0, 2.0, 2.5], "require_triangle_inequality": True},
+    "body": {"mass": 2.0, "inertia": [1.0, 2.0, 2.5], "inertia_check": "physical"},
     "initial": {"p_W": [0.0, 0, 0], "q_WB": [0.0, 0, 0, 1], "v_W": [0.0, 0, 0], "w_B": [0.1, 1, 0],
                 "scalar_first": False},
     "loads": [{"force": [0.0, 0, 1], "torque": [0.0, 0, 1e-3], "frame": "body", "t_start": 0.0, "t_end": 0.5}],
@@ -283,7 +295,13 @@ def _field_name(path):
     return name
 
 
-TOML_CASES = [(data, path, kind) for data in (FULL, {**FULL, "body": PRIMITIVE_BODY})
+# the other forms of the attitude and an angular rate with a unit (issue 10 item 4)
+INITIAL_FORMS = [{"euler": {"seq": "ZYX", "angles": [10, 0, 0], "degrees": True},
+                  "w_B": {"value": [0, 0, 60], "unit": "rpm"}},
+                 {"rotvec": {"value": [0, 0, 10], "degrees": True}},
+                 {"axis_angle": {"axis": [0, 0, 1], "angle": 10, "degrees": True}}]
+TOML_CASES = [(data, path, kind) for data in (FULL, {**FULL, "body": PRIMITIVE_BODY},
+                                              *({**FULL, "initial": initial} for initial in INITIAL_FORMS))
               for path in _leaves(data) for kind in WRONG_TOML]
 
 
@@ -298,9 +316,12 @@ def test_every_toml_field_of_the_wrong_type_is_named(data, path, kind):
         parse_problem(_replaced(data, path, value))
     except ValueError as e:
         field = re.escape(_field_name(path))
-        assert re.match(rf"^{field}(\[\d+\])?: expected ", str(e)), str(e)
+        # a table {a = 1} where a table belongs (initial.w_B = {value, unit}): its unknown key is named
+        sub_key = r"|\.a" if kind == "table" else ""
+        assert re.match(rf"^{field}(\[\d+\]{sub_key})?: expected ", str(e)), str(e)
         return
     # accepted: only where the value is a valid one (free text, the switches)
     valid = {(("name",), "string"), (("description",), "string"), (("gravity",), "bool"),
-             (("body", "require_triangle_inequality"), "bool"), (("initial", "scalar_first"), "bool")}
+             (("initial", "scalar_first"), "bool"),
+             *((("initial", form, "degrees"), "bool") for form in ("euler", "rotvec", "axis_angle"))}
     assert (path, kind) in valid, f"{_field_name(path)} = {value!r} was accepted"

@@ -37,3 +37,17 @@ def test_main_job_names_a_shipped_problem() -> None:
     (command,) = [line for line in code_blocks("bash") if "rigiddyn tradeoff" in line]
     name = re.search(r"tradeoff (\w+)", command).group(1)
     assert (ROOT / "python/rigiddyn/problems" / f"{name}.toml").exists()
+
+
+def test_simulate_command_runs_as_written(tmp_path) -> None:
+    import shlex
+
+    from rigiddyn.__main__ import main
+
+    (block,) = [block for block in code_blocks("bash") if "rigiddyn simulate" in block]
+    argv = shlex.split(block.strip())[3:]  # after "python3 -m rigiddyn"
+    out = argv.index("--out")
+    argv[out + 1] = str(tmp_path / argv[out + 1])
+    assert main([*argv, "--no-plot", "--no-progress"]) == 0
+    written = {path.name for path in (tmp_path / argv[out + 1]).iterdir()}
+    assert {"trajectory.csv", "trajectory.npz"} <= written, written

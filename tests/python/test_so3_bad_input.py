@@ -25,6 +25,10 @@ QUATERNION_ARGS = [
     (rd.quat_multiply, (Q,), (), "q2"),
     (rd.quat_integrate, (), (V, 0.1), "q"),
     (rd.to_scipy, (), (), "q"),
+    (rd.quat_to_mrp, (), (), "q"),
+    (lambda q: rd.quat_to_davenport(R, "intrinsic", q), (), (), "q"),
+    (rd.quat_rate, (), (V,), "q"),
+    (rd.angular_velocity_from_quat_rate, (), (Q,), "q"),
 ]
 VECTOR_ARGS = [
     (rd.rotvec_to_quat, (), (), "rotvec"),
@@ -35,11 +39,20 @@ VECTOR_ARGS = [
     (rd.quat_rotate, (Q,), (), "v"),
     (rd.quat_integrate, (Q,), (0.1,), "w"),
     (rd.hat, (), (), "v"),
+    (rd.mrp_to_quat, (), (), "mrp"),
+    (lambda a: rd.davenport_to_quat(R, "e", a), (), (), "angles"),
+    (rd.quat_rate, (Q,), (), "w"),
 ]
 MATRIX_ARGS = [
     (rd.matrix_to_quat, (), (), "R"),
     (rd.matrix_to_rotvec, (), (), "R"),
-    (lambda m: rd.matrix_to_euler("xyx", m), (), (), "R"),
+    (lambda m: rd.matrix_to_euler("xzy", m), (), (), "R"),  # not a proper sequence: R = I is no gimbal lock
+]
+# arguments checked as plain arrays (the Davenport axes, a quaternion rate of any norm)
+OTHER_ARGS = [
+    (lambda a: rd.quat_to_davenport(a, "e", Q), (), (), "axes", R),
+    (lambda a: rd.davenport_to_quat(a, "i", V), (), (), "axes", R),
+    (rd.angular_velocity_from_quat_rate, (Q,), (), "dq_dt", Q),
 ]
 SCALAR_ARGS = [
     (rd.rot_x, (), (), "angle"),
@@ -53,6 +66,7 @@ ALL_ARGS = (
     + [case + (V,) for case in VECTOR_ARGS]
     + [case + (R,) for case in MATRIX_ARGS]
     + [case + (0.5,) for case in SCALAR_ARGS]
+    + OTHER_ARGS
 )
 IDS = [f"{getattr(f, '__name__', 'f')}-{name}" for f, _, _, name, _ in ALL_ARGS]
 
@@ -127,10 +141,26 @@ def test_quat_normalize_accepts_any_norm_but_zero():
 
 @pytest.mark.parametrize("case", [c + (R,) for c in MATRIX_ARGS], ids=lambda c: c[3])
 @pytest.mark.parametrize("bad", [2 * np.eye(3), np.zeros((3, 3)), np.diag([1.0, 1.0, -1.0]),
-                                 np.eye(3) + 1e-4 * np.triu(np.ones((3, 3)), 1), -np.eye(3)])
+                                 np.eye(3) + 0.1 * np.triu(np.ones((3, 3)), 1), -np.eye(3)])
 def test_non_rotation_matrix_raises(case, bad):
     with pytest.raises(ValueError, match=rf"^{case[3]}: expected a rotation matrix"):
         call(case, bad)
+
+
+def test_nearly_orthonormal_matrix_is_projected_as_scipy():
+    """A rotation matrix rounded to 3 decimals is read as the nearest rotation, as SciPy's
+    Rotation.from_matrix reads it, by every function that takes a matrix."""
+    from scipy.spatial.transform import Rotation
+
+    M = np.round(Rotation.from_euler("xyz", [0.3, -0.2, 1.1]).as_matrix(), 3)
+    r = Rotation.from_matrix(M)
+    q = rd.matrix_to_quat(M)
+    # both sides take the same polar factor (SVD to ~10 eps) then one well-conditioned conversion
+    # each: test_so3.TOL
+    assert min(np.abs(q - r.as_quat()).max(), np.abs(q + r.as_quat()).max()) < 1e-12
+    np.testing.assert_allclose(rd.matrix_to_rotvec(M), r.as_rotvec(), rtol=0, atol=1e-12)
+    # Tait-Bryan angles away from lock (θ2 = -0.2): conditioning 1/cos(0.2) ~ 1
+    np.testing.assert_allclose(rd.matrix_to_euler("xyz", M), r.as_euler("xyz"), rtol=0, atol=1e-12)
 
 
 def test_zero_axis_raises():

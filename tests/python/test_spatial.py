@@ -73,7 +73,7 @@ def test_repr_round_trips():
     Y = eval(repr(X), ns)
     np.testing.assert_array_equal(Y.rotation, X.rotation)
     np.testing.assert_array_equal(Y.translation, X.translation)
-    assert "pitch=inf" in repr(rd.twist_to_screw(rd.Motion([0, 0, 0], [1, 0, 0])))
+    assert "pitch=float('inf')" in repr(rd.twist_to_screw(rd.Motion([0, 0, 0], [1, 0, 0])))
 
 
 def test_members_are_read_only():
@@ -357,13 +357,13 @@ def _overflowed(cls):
 
 
 @pytest.mark.parametrize("call, name", [
-    (lambda m, f: rd.motion_cross_matrix(m), "m"),  # returned inf without a word (the API fuzz's finding)
-    (lambda m, f: rd.force_cross_matrix(m), "m"),
+    (lambda m, f: rd.motion_cross_matrix(m), "motion"),  # returned inf without a word (the API fuzz's finding)
+    (lambda m, f: rd.force_cross_matrix(m), "motion"),
     (lambda m, f: rd.twist_to_screw(m), "twist"),
     (lambda m, f: rd.Motion().cross(m), "other"),
-    (lambda m, f: rd.Motion().cross_force(f), "f"),
-    (lambda m, f: rd.Motion().dot(f), "f"),
-    (lambda m, f: rd.Force().dot(m), "m"),
+    (lambda m, f: rd.Motion().cross_force(f), "force"),
+    (lambda m, f: rd.Motion().dot(f), "force"),
+    (lambda m, f: rd.Force().dot(m), "motion"),
     (lambda m, f: rd.Transform().act(m), "spatial_vector"),
     (lambda m, f: rd.Transform().act_inv(f), "spatial_vector"),
     (lambda m, f: rd.SpatialInertia(1.0, [0, 0, 0], np.eye(3)).momentum(m), "twist"),

@@ -20,10 +20,6 @@ Eigen::Vector3d angular_momentum(const Particle& particle, const ParticleState& 
   return (state.p_W - p_WP).cross(linear_momentum(particle, state));
 }
 
-Eigen::Vector3d angular_momentum(const Particle& particle, const ParticleState& state) {
-  return angular_momentum(particle, state, state.p_W);
-}
-
 KineticEnergy kinetic_energy(const Particle& particle, const ParticleState& state) {
   return {0.5 * particle.mass() * state.v_W.squaredNorm(), 0.0};
 }

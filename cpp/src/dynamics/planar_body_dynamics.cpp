@@ -7,13 +7,13 @@ namespace rigiddyn {
 PlanarWrench wrench_at_com(double theta, const Eigen::Vector2d& force, double torque, const Eigen::Vector2d& p_GP,
                            Frame frame) {
   const Eigen::Vector2d f_W = frame == Frame::body ? Eigen::Rotation2Dd(theta) * force : force;
-  // moment about G of the force at P plus the couple (moment transfer, Craig)
+  // torque about G of the force at P plus the applied torque (moment transfer, Craig)
   return {f_W, torque + cross2(p_GP, force)};
 }
 
 PlanarAcceleration forward_dynamics(const PlanarBody& body, const PlanarBodyState& /*state*/,
                                     const PlanarWrench& wrench, const Eigen::Vector2d& g_W) {
-  return {wrench.f_W / body.mass() + g_W, wrench.n / body.inertia_zz()};
+  return {wrench.f_W / body.mass() + g_W, wrench.tau / body.inertia_zz()};
 }
 
 PlanarWrench inverse_dynamics(const PlanarBody& body, const PlanarBodyState& /*state*/,
@@ -29,10 +29,6 @@ double angular_momentum(const PlanarBody& body, const PlanarBodyState& state, co
   return body.inertia_zz() * state.omega + cross2(state.p_W - p_WP, linear_momentum(body, state));
 }
 
-double angular_momentum(const PlanarBody& body, const PlanarBodyState& state) {
-  return angular_momentum(body, state, state.p_W);
-}
-
 KineticEnergy kinetic_energy(const PlanarBody& body, const PlanarBodyState& state) {
   return {0.5 * body.mass() * state.v_W.squaredNorm(), 0.5 * body.inertia_zz() * state.omega * state.omega};
 }
@@ -42,7 +38,7 @@ double potential_energy(const PlanarBody& body, const PlanarBodyState& state, co
 }
 
 double power(const PlanarBodyState& state, const PlanarWrench& wrench) {
-  return wrench.f_W.dot(state.v_W) + wrench.n * state.omega;
+  return wrench.f_W.dot(state.v_W) + wrench.tau * state.omega;
 }
 
 PlanarBodyState apply_impulse(const PlanarBody& body, const PlanarBodyState& state, const Eigen::Vector2d& impulse,
@@ -50,7 +46,7 @@ PlanarBodyState apply_impulse(const PlanarBody& body, const PlanarBodyState& sta
   const PlanarWrench J = wrench_at_com(state.theta, impulse, angular_impulse, p_GP, frame);
   PlanarBodyState out = state;
   out.v_W += J.f_W / body.mass();
-  out.omega += J.n / body.inertia_zz();
+  out.omega += J.tau / body.inertia_zz();
   return out;
 }
 

@@ -14,16 +14,16 @@ Eigen::Vector3d to_body(const Eigen::Quaterniond& q_WB, const Eigen::Vector3d& v
 ComWrench wrench_at_com(const Eigen::Quaterniond& q_WB, const Eigen::Vector3d& force, const Eigen::Vector3d& torque,
                         const Eigen::Vector3d& p_GP, Frame frame) {
   const Eigen::Vector3d f_B = to_body(q_WB, force, frame);
-  // moment about G of the force at P plus the couple (moment transfer, Craig)
-  const Eigen::Vector3d n_B = to_body(q_WB, torque + p_GP.cross(force), frame);
-  return {q_WB * f_B, n_B};
+  // torque about G of the force at P plus the applied torque (moment transfer, Craig)
+  const Eigen::Vector3d tau_B = to_body(q_WB, torque + p_GP.cross(force), frame);
+  return {q_WB * f_B, tau_B};
 }
 
 BodyAcceleration forward_dynamics(const RigidBody& body, const RigidBodyState& state, const ComWrench& wrench,
                                   const Eigen::Vector3d& g_W) {
   const Eigen::Matrix3d& I = body.inertia_com();
   const Eigen::Vector3d& w = state.w_B;
-  return {wrench.f_W / body.mass() + g_W, I.llt().solve(wrench.n_B - w.cross(I * w))};
+  return {wrench.f_W / body.mass() + g_W, I.llt().solve(wrench.tau_B - w.cross(I * w))};
 }
 
 ComWrench inverse_dynamics(const RigidBody& body, const RigidBodyState& state, const BodyAcceleration& acceleration,
@@ -40,10 +40,6 @@ Eigen::Vector3d angular_momentum(const RigidBody& body, const RigidBodyState& st
   return H_G_W + (state.p_W - p_WP).cross(body.mass() * state.v_W);
 }
 
-Eigen::Vector3d angular_momentum(const RigidBody& body, const RigidBodyState& state) {
-  return angular_momentum(body, state, state.p_W);
-}
-
 KineticEnergy kinetic_energy(const RigidBody& body, const RigidBodyState& state) {
   return {0.5 * body.mass() * state.v_W.squaredNorm(), 0.5 * state.w_B.dot(body.inertia_com() * state.w_B)};
 }
@@ -53,7 +49,7 @@ double potential_energy(const RigidBody& body, const RigidBodyState& state, cons
 }
 
 double power(const RigidBodyState& state, const ComWrench& wrench) {
-  return wrench.f_W.dot(state.v_W) + wrench.n_B.dot(state.w_B);
+  return wrench.f_W.dot(state.v_W) + wrench.tau_B.dot(state.w_B);
 }
 
 RigidBodyState apply_impulse(const RigidBody& body, const RigidBodyState& state, const Eigen::Vector3d& impulse,
@@ -61,7 +57,7 @@ RigidBodyState apply_impulse(const RigidBody& body, const RigidBodyState& state,
   const ComWrench J = wrench_at_com(state.q_WB, impulse, angular_impulse, p_GP, frame);
   RigidBodyState out = state;
   out.v_W += J.f_W / body.mass();
-  out.w_B += body.inertia_com().llt().solve(J.n_B);
+  out.w_B += body.inertia_com().llt().solve(J.tau_B);
   return out;
 }
 

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace rigiddyn {
 
@@ -102,14 +103,24 @@ Eigen::Quaterniond zxz_from_momentum(double phi, double x, double y, double r, d
 
 double sign_of(double x) { return x < 0.0 ? -1.0 : 1.0; }
 
-// The principal frame (inertia/principal_axes.hpp) of a finite, symmetric, positive definite I_B.
-PrincipalAxes checked_principal_axes(const Eigen::Matrix3d& I_B) {
+// The principal frame (inertia/principal_axes.hpp) of a finite, symmetric, positive definite I_B
+// that, under InertiaCheck::physical, satisfies the triangle inequality (ascending I0 + I1 >= I2) within the
+// tolerance of validity.hpp (the message names the moments and the margin).
+PrincipalAxes checked_principal_axes(const Eigen::Matrix3d& I_B, InertiaCheck check) {
   require_finite(I_B, "inertia");
   if (!((I_B - I_B.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * I_B.cwiseAbs().maxCoeff())) {
     throw_invalid("inertia", "a symmetric matrix (to 1e-12 relative)", I_B);
   }
   PrincipalAxes axes = principal_axes(0.5 * (I_B + I_B.transpose()));
   if (!(axes.moments(0) > 0.0)) throw_invalid("inertia", "a positive definite matrix", I_B);
+  if (check == InertiaCheck::physical) {
+    const InertiaReport report = inertia_report(1.0, I_B);  // the mass plays no part in the moments' checks
+    if (!report.triangle_inequality) {
+      throw std::invalid_argument(
+          "inertia: expected principal moments satisfying the triangle inequality I0 + I1 >= I2 (a realizable "
+          "body), got " + report.summary());
+    }
+  }
   return axes;
 }
 
@@ -151,8 +162,9 @@ std::string to_string(TorqueFreeCase c) {
 }
 
 TorqueFreeSolution::TorqueFreeSolution(const Eigen::Matrix3d& I_B, const Eigen::Quaterniond& q_WB,
-                                       const Eigen::Vector3d& w_B)
-    : TorqueFreeSolution(checked_principal_axes(I_B), checked_attitude(q_WB), checked_angular_velocity(w_B), true) {
+                                       const Eigen::Vector3d& w_B, InertiaCheck check)
+    : TorqueFreeSolution(checked_principal_axes(I_B, check), checked_attitude(q_WB), checked_angular_velocity(w_B),
+                         true) {
   // the motion is formed in scaled units: only its rates (of the order of |w_B| I_max/I_min) can overflow
   if (!std::isfinite(max_rate())) {
     throw_invalid("w_B", "an angular velocity whose rates of motion (up to |w_B| I_max/I_min) stay within the double range",
@@ -167,14 +179,14 @@ TorqueFreeSolution::TorqueFreeSolution(const PrincipalAxes& axes, const Eigen::Q
   w_B0_ = w_B;
   const Eigen::Vector3d& I = I_principal_;
   const Eigen::Vector3d w_P = R_BP_.transpose() * w_B;
-  // the momentum as m̃ = Î w̃ with Î = 2^−e_I I (the largest moment in [1, 2)) and w̃ = 2^−e_w w_P (the
-  // largest rate in [1, 2)), exact scalings: representable for any finite inertia and w_B, m = 2^(e_I + e_w) m̃.
+  // the momentum as L̃ = Î w̃ with Î = 2^−e_I I (the largest moment in [1, 2)) and w̃ = 2^−e_w w_P (the
+  // largest rate in [1, 2)), exact scalings: representable for any finite inertia and w_B, m = 2^(e_I + e_w) L̃.
   // The motion depends only on Î and w̃ (rates scale with 2^e_w); L_W and T alone are formed in SI units.
   const int e_I = exponent_of(I(2)), e_w = exponent_of_largest(w_P);
   const Eigen::Vector3d I_hat = times_pow2(I, -e_I), w_tilde = times_pow2(w_P, -e_w);
-  const Eigen::Vector3d m_tilde = I_hat.cwiseProduct(w_tilde);
-  L_W_ = times_pow2(q_WB0_ * (R_BP_ * m_tilde), e_I + e_w);                 // ±inf beyond the double range
-  kinetic_energy_ = rigiddyn::times_pow2(0.5 * w_tilde.dot(m_tilde), e_I + 2 * e_w);  // +inf beyond it
+  const Eigen::Vector3d L_tilde = I_hat.cwiseProduct(w_tilde);
+  L_W_ = times_pow2(q_WB0_ * (R_BP_ * L_tilde), e_I + e_w);                 // ±inf beyond the double range
+  kinetic_energy_ = rigiddyn::times_pow2(0.5 * w_tilde.dot(L_tilde), e_I + 2 * e_w);  // +inf beyond it
 
   const double tol = 64.0 * kEps * I(2);
   if (I(2) - I(0) <= tol) {
@@ -192,17 +204,17 @@ TorqueFreeSolution::TorqueFreeSolution(const PrincipalAxes& axes, const Eigen::Q
     return;
   }
 
-  if ((m_tilde.array() == 0.0).count() >= 2) {
+  if ((L_tilde.array() == 0.0).count() >= 2) {
     // steady spin about a principal axis (or rest); about axis 2 the unstable equilibrium on the
     // separatrix. The Z-X-Z angles are singular there (θ = 0), so rotate about the fixed axis.
-    case_ = m_tilde(0) != 0.0 ? TorqueFreeCase::B : m_tilde(2) != 0.0 ? TorqueFreeCase::A : TorqueFreeCase::separatrix;
+    case_ = L_tilde(0) != 0.0 ? TorqueFreeCase::B : L_tilde(2) != 0.0 ? TorqueFreeCase::A : TorqueFreeCase::separatrix;
     about_axis_ = true;
     nu_W_ = q_WB0_ * w_B;
     beta_ = 0.0;
     period_ = kInf;
     return;
   }
-  init_elliptic(I_hat, m_tilde, e_w);
+  init_elliptic(I_hat, L_tilde, e_w);
 }
 
 // Sphere and symmetric body: ω = m/I_t + β e with β = (I_t − I_a) ω_a / I_t, so that
@@ -220,17 +232,17 @@ void TorqueFreeSolution::init_rotation_about_axis(const Eigen::Vector3d& I_Q, co
 }
 
 // The invariants Δ_j = G² − 2T I_j = Σ_{i≠j} m_i² (I_i − I_j)/I_i (Δ1 ≥ 0, Δ3 ≤ 0 sums of like-signed
-// terms; Δ2 cancels at the separatrix, see delta2_times_I1_I3) of the momentum m̂ = 2^−e m̃ (largest
+// terms; Δ2 cancels at the separatrix, see delta2_times_I1_I3) of the momentum m̂ = 2^−e L̃ (largest
 // component in [1, 2)), each as Δ_j = 4^(e + t_j) D_j with 2^t_j the scale of the two components it
 // involves: a transverse part down to the smallest subnormal is not squared to zero (issue 9).
 // Then, with the amplitudes, λ, m and kc = √(1 − m) of free-rigid-body.md in these units:
 // case A: ω = (σ1 A1 cn, σ1 s A2 sn, s A3 dn) on (1, 2, 3), s = sign m3, σ1 = sign m1 on the
 // separatrix (there cn ≥ 0), else 1; case B: ω = (s A1 dn, s A2 sn, A3 cn), s = sign m1, in the frame
 // Q = (P2, P3, P1) (a cyclic relabelling, det +1).
-void TorqueFreeSolution::init_elliptic(const Eigen::Vector3d& I, const Eigen::Vector3d& m_tilde, int e_rate) {
+void TorqueFreeSolution::init_elliptic(const Eigen::Vector3d& I, const Eigen::Vector3d& L_tilde, int e_rate) {
   const double I1 = I(0), I2 = I(1), I3 = I(2);  // the largest in [1, 2): products of three stay in range
-  const int e = exponent_of(m_tilde.cwiseAbs().maxCoeff()), e_w = e + e_rate;  // ω = 2^e_w m̂/I
-  const Eigen::Vector3d mh = times_pow2(m_tilde, -e);
+  const int e = exponent_of(L_tilde.cwiseAbs().maxCoeff()), e_w = e + e_rate;  // ω = 2^e_w m̂/I
+  const Eigen::Vector3d mh = times_pow2(L_tilde, -e);
   int t[3];
   for (int j = 0; j < 3; ++j) t[j] = exponent_of(std::max(std::abs(mh((j + 1) % 3)), std::abs(mh((j + 2) % 3))));
   const auto scaled = [&](int i, int j) { return times_pow2(mh(i), -t[j]); };  // m̂_i 2^−t_j
@@ -448,7 +460,8 @@ TorqueFreeState TorqueFreeSolution::state_from_functions(double phi, const Jacob
 
 namespace rigiddyn {
 
-FreeRotationFlow::FreeRotationFlow(const Eigen::Matrix3d& I_B) : I_B_(I_B), axes_(checked_principal_axes(I_B)) {}
+FreeRotationFlow::FreeRotationFlow(const Eigen::Matrix3d& I_B)
+    : I_B_(I_B), axes_(checked_principal_axes(I_B, InertiaCheck::allow_unrealizable)) {}
 
 void FreeRotationFlow::advance(Eigen::Quaterniond& q_WB, Eigen::Vector3d& w_B, double h) const {
   if (!(q_WB.coeffs().allFinite() && w_B.allFinite() && std::isfinite(h))) {

@@ -37,6 +37,8 @@ const FrameTree::Node& FrameTree::node(const std::string& name, const std::strin
 
 const std::string& FrameTree::parent(const std::string& name) const { return node(name, "name").parent; }
 
+const FrameMotion& FrameTree::motion(const std::string& name) const { return node(name, "name").motion; }
+
 void FrameTree::add_frame(const std::string& name, const std::string& parent, FrameMotion motion) {
   if (name.empty()) throw_invalid("name", "a non-empty frame name", quoted(name));
   if (has_frame(name)) throw_invalid("name", "a name not already in the tree (" + known_names() + ")", quoted(name));

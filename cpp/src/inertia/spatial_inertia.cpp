@@ -98,14 +98,23 @@ Eigen::Vector3d SpatialInertia::angular_momentum_about_point(const Eigen::Vector
   return (com_ - point).cross(mass_ * com_velocity) + angular_momentum_about_com(angular_velocity);
 }
 
+namespace {
+// R I R^T, symmetrised: the rounding of the product differs in the last bits between (i, j) and (j, i);
+// the stored inertia stays exactly symmetric (as the constructors store it), so that rebuilding a
+// body from its members (pickle, repr) gives it back bitwise.
+Eigen::Matrix3d rotated_inertia(const Eigen::Matrix3d& R, const Eigen::Matrix3d& I) {
+  const Eigen::Matrix3d RIRt = R * I * R.transpose();
+  return 0.5 * (RIRt + RIRt.transpose());
+}
+}  // namespace
+
 SpatialInertia SpatialInertia::rotated(const Eigen::Matrix3d& R_AB) const {
   const Eigen::Matrix3d R = checked_rotation_matrix(R_AB, "R_AB");
-  return SpatialInertia(mass_, R * com_, R * inertia_com_ * R.transpose(), Trusted{});
+  return SpatialInertia(mass_, R * com_, rotated_inertia(R, inertia_com_), Trusted{});
 }
 
 SpatialInertia SpatialInertia::transformed(const Transform& X_AB) const {
-  const Eigen::Matrix3d& R = X_AB.rotation();
-  return SpatialInertia(mass_, X_AB.act_point(com_), R * inertia_com_ * R.transpose(), Trusted{});
+  return SpatialInertia(mass_, X_AB.act_point(com_), rotated_inertia(X_AB.rotation(), inertia_com_), Trusted{});
 }
 
 PrincipalAxes SpatialInertia::principal_axes() const { return rigiddyn::principal_axes(inertia_com_); }
@@ -139,7 +148,7 @@ SpatialInertia SpatialInertia::remove(const SpatialInertia& part, InertiaCheck c
                         Trusted{});
 }
 
-bool SpatialInertia::isApprox(const SpatialInertia& o, double prec) const {
+bool SpatialInertia::is_approx(const SpatialInertia& o, double prec) const {
   const double length = std::sqrt(std::max(inertia_com_.trace(), o.inertia_com_.trace()) / mass_) + com_.norm();
   return std::abs(mass_ - o.mass_) <= prec * std::max(mass_, o.mass_) &&
          (com_ - o.com_).norm() <= prec * std::max(length, 1e-300) &&

@@ -44,7 +44,8 @@ std::string InertiaReport::summary() const {
   if (!positive_semidefinite) out << "; not positive semi-definite (I0 = " << principal_moments(0) << ")";
   if (!triangle_inequality) {
     out << "; violates the triangle inequality I0 + I1 >= I2 (no real body has this inertia: "
-           "repair it with nearest_valid_inertia, or pass InertiaCheck::allow_unrealizable on purpose)";
+           "repair it with nearest_valid_inertia, or opt in on purpose with the check allow_unrealizable of "
+           "InertiaCheck)";
   }
   return out.str();
 }

@@ -14,10 +14,10 @@ ComLoads loads_at(const std::vector<AppliedLoad>& schedule, double t) {
     if (!load.active_at(t)) continue;
     if (load.frame == Frame::world) {
       sum.f_W += load.force;
-      sum.n_W += load.torque;
+      sum.tau_W += load.torque;
     } else {
       sum.f_B += load.force;
-      sum.n_B += load.torque;
+      sum.tau_B += load.torque;
     }
   }
   return sum;

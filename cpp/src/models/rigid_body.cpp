@@ -28,7 +28,7 @@ EulerForm classify(const Eigen::Matrix3d& I) {
 LoadKind load_kind_of(const std::vector<AppliedLoad>& schedule, const Eigen::Vector3d& g_W) {
   LoadKind kind = g_W.isZero(0.0) ? LoadKind::none : LoadKind::fixed;
   for (const AppliedLoad& load : schedule) {
-    // a body-frame force or a world-frame couple turns with the body
+    // a body-frame force or a world-frame torque turns with the body
     const bool turning = load.frame == Frame::body ? !load.force.isZero(0.0) : !load.torque.isZero(0.0);
     if (turning) return LoadKind::turning;
     if (!(load.force.isZero(0.0) && load.torque.isZero(0.0))) kind = LoadKind::fixed;

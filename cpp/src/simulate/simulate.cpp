@@ -80,7 +80,7 @@ void check_options(const SimulationOptions& o, bool stepping) {
 void check_particle_loads(const SimulationOptions& o) {
   for (std::size_t i = 0; i < o.loads.size(); ++i) {
     if (!o.loads[i].torque.isZero(0.0)) {
-      throw_invalid("loads[" + std::to_string(i) + "].torque", "zero (a particle takes no couple)", o.loads[i].torque);
+      throw_invalid("loads[" + std::to_string(i) + "].torque", "zero (a particle takes no torque)", o.loads[i].torque);
     }
   }
 }
@@ -90,7 +90,7 @@ void check_planar_loads(const SimulationOptions& o) {
     const std::string name = "loads[" + std::to_string(i) + "]";
     if (o.loads[i].force.z() != 0.0) throw_invalid(name + ".force", "a force in the xy plane (z = 0)", o.loads[i].force);
     if (!o.loads[i].torque.head<2>().isZero(0.0)) {
-      throw_invalid(name + ".torque", "a couple about z only (x = y = 0)", o.loads[i].torque);
+      throw_invalid(name + ".torque", "a torque about z only (x = y = 0)", o.loads[i].torque);
     }
   }
   if (o.gravity_W.z() != 0.0) throw_invalid("gravity", "gravity in the xy plane (z = 0)", o.gravity_W);

@@ -122,7 +122,7 @@ def quat_to_matrix(q, scalar_first: bool = False) -> np.ndarray:
 
 def matrix_to_quat(R, scalar_first: bool = False) -> np.ndarray:
     """Shepperd's method (1978): from the largest of 4w^2 = 1 + tr R, 4x^2 = 1 + 2 R00 - tr R, ...
-    take that component, the others from the off-diagonal sums/differences; canonical w >= 0."""
+    take that component, the others from the off-diagonal sums/differences; canonical sign as SciPy."""
     R = np.asarray(R, dtype=float)
     tr = R[..., 0, 0] + R[..., 1, 1] + R[..., 2, 2]
     # four candidates, each as (x, y, z, w) times 4*(its large component)
@@ -138,7 +138,9 @@ def matrix_to_quat(R, scalar_first: bool = False) -> np.ndarray:
     best = np.argmax(np.stack([R[..., 0, 0], R[..., 1, 1], R[..., 2, 2], tr], -1), axis=-1)
     c = np.take_along_axis(candidates, best[..., None, None], axis=-2)[..., 0, :]
     q = c / np.linalg.norm(c, axis=-1, keepdims=True)
-    q = np.where(q[..., 3:4] < 0.0, -q, q)
+    # canonical sign: the first non-zero of w, x, y, z positive (SciPy's as_quat(canonical=True))
+    first_nonzero = np.take_along_axis(q[..., [3, 0, 1, 2]], np.argmax(q[..., [3, 0, 1, 2]] != 0.0, axis=-1)[..., None], -1)
+    q = np.where(first_nonzero < 0.0, -q, q)
     return _from_xyzw(q, scalar_first)
 
 

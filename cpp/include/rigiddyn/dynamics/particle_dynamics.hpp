@@ -21,16 +21,19 @@ Eigen::Vector3d inverse_dynamics(const Particle& particle, const ParticleState& 
 // Linear momentum L = m v_W [kg m/s] in W.
 Eigen::Vector3d linear_momentum(const Particle& particle, const ParticleState& state);
 
-// Angular momentum about the point fixed in W at p_WP [m], in W [kg m²/s]: H_P = (p_W − p_WP) × m v_W.
-// Without a point: about the particle itself, 0.
-Eigen::Vector3d angular_momentum(const Particle& particle, const ParticleState& state, const Eigen::Vector3d& p_WP);
-Eigen::Vector3d angular_momentum(const Particle& particle, const ParticleState& state);
+// Angular momentum (moment of momentum) about the point P fixed in W at p_WP [m] (default: the world
+// origin O, "Rigid body kinematics and dynamics" notes, eq. (4.42) l = r × m ṙ), in W [kg m²/s]:
+// H_P = (p_W − p_WP) × m v_W.
+Eigen::Vector3d angular_momentum(const Particle& particle, const ParticleState& state,
+                                 const Eigen::Vector3d& p_WP = Eigen::Vector3d::Zero());
 
 // T = ½ m v·v, all translational (rotational = 0) [J].
 KineticEnergy kinetic_energy(const Particle& particle, const ParticleState& state);
 
-// Potential energy of uniform gravity g_W [m/s²]: V = −m g_W·p_W [J] (zero at the origin of W).
-double potential_energy(const Particle& particle, const ParticleState& state, const Eigen::Vector3d& g_W);
+// Potential energy of uniform gravity g_W [m/s²] in W: V = −m g_W·p_W [J] (zero at the origin of W;
+// zero without gravity, the default).
+double potential_energy(const Particle& particle, const ParticleState& state,
+                        const Eigen::Vector3d& g_W = Eigen::Vector3d::Zero());
 
 // Power of a force f_W [N] (in W) on the particle [W]: P = f_W·v_W.
 double power(const ParticleState& state, const Eigen::Vector3d& f_W);

@@ -1,19 +1,19 @@
 // The exact motion of a torque-free rigid body (Euler–Poinsot), as a function of time.
 //
-// Body angular momentum m = I ω (about the centre of mass, in the body's principal frame), Euler's
-// equations ṁ = m × ω, attitude Ṙ_WB = R_WB ω̂, spatial L_W = R_WB m constant
+// Body angular momentum L_B = I ω (about the centre of mass, in the body's principal frame), Euler's
+// equations L̇_B = L_B × ω, attitude Ṙ_WB = R_WB ω̂, spatial L_W = R_WB L_B constant
 // (Landau & Lifshitz, Mechanics §37; ../shared/notes/free-rigid-body.md). Principal moments are
 // sorted I1 < I2 < I3 by a rotation (a signed permutation when I is diagonal) of determinant +1.
-// With G² = |m|², 2T = Σ m_i²/I_i and Δ_j = G² − 2T I_j (computed without cancellation):
+// With G² = |L_B|², 2T = Σ L_i²/I_i and Δ_j = G² − 2T I_j (computed without cancellation):
 //
 // case           | when                                   | ω(t)                                   | attitude
 // ---------------|----------------------------------------|----------------------------------------|----------------------------------
 // sphere         | I3 − I1 ≤ tol                           | constant                               | exp(ω_W t) q0
 // symmetric      | I2 − I1 ≤ tol or I3 − I2 ≤ tol          | rotates about the symmetry axis        | exp(L_W t/I_t) q0 exp(β t e_B)
-// A              | Δ2 > 0 (m circulates about axis 3)      | (cn, sn, dn)(λt + u0 | m) on (1, 2, 3) | Z-X-Z about L, φ via Π(am u, n|m)
-// B              | Δ2 < 0 (m circulates about axis 1)      | (dn, sn, cn)(λt + u0 | m) on (1, 2, 3) | Z-X-Z about L, φ via Π(am u, n|m)
+// A              | Δ2 > 0 (L_B circulates about axis 3)    | (cn, sn, dn)(λt + u0 | m) on (1, 2, 3) | Z-X-Z about L, φ via Π(am u, n|m)
+// B              | Δ2 < 0 (L_B circulates about axis 1)    | (dn, sn, cn)(λt + u0 | m) on (1, 2, 3) | Z-X-Z about L, φ via Π(am u, n|m)
 // separatrix     | Δ2 = 0 exactly (in double-double)       | (sech, tanh, sech)(λt + u0) on (1,2,3) | as A with m = 1
-// (A, B, sep.)   | steady spin: two of m1, m2, m3 are 0    | constant                               | exp(ω_W t) q0
+// (A, B, sep.)   | steady spin: two of L1, L2, L3 are 0    | constant                               | exp(ω_W t) q0
 //
 // tol = 64 eps I3: moments closer than this are not resolvable from a Matrix3d inertia (its
 // eigen-decomposition is only that accurate); the equal pair is replaced by its mean, which changes
@@ -23,6 +23,7 @@
 #pragma once
 #include "rigiddyn/exact/elliptic.hpp"
 #include "rigiddyn/inertia/principal_axes.hpp"
+#include "rigiddyn/inertia/validity.hpp"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -47,13 +48,17 @@ struct TorqueFreeState {
 class TorqueFreeSolution {
  public:
   // I_B: rotational inertia about the centre of mass, expressed in B [kg m²], symmetric positive
-  // definite (any such matrix is accepted, also ones violating the triangle inequality);
+  // definite and, under InertiaCheck::physical (the default, as every inertia in rigiddyn), satisfying
+  // the triangle inequality I1 + I2 >= I3 on its principal moments (validity.hpp: a body exists with
+  // it); InertiaCheck::allow_unrealizable accepts any symmetric positive definite matrix (test
+  // problems such as Hairer-Lubich-Wanner's diag(2, 1, 2/3));
   // q_WB: initial attitude (norm within 1e-6 of 1; normalised); w_B: initial angular velocity of
   // B, expressed in B [rad/s], finite. Throws std::invalid_argument on bad input, and naming w_B when a
   // rate of the motion (of the order of |w_B| I_max/I_min) exceeds the double range. Any magnitudes are
   // accepted otherwise (the motion is formed with the inertia and w_B scaled by powers of two); the
   // invariants L_W and T alone may overflow to inf (angular_momentum_W(), kinetic_energy()).
-  TorqueFreeSolution(const Eigen::Matrix3d& I_B, const Eigen::Quaterniond& q_WB, const Eigen::Vector3d& w_B);
+  TorqueFreeSolution(const Eigen::Matrix3d& I_B, const Eigen::Quaterniond& q_WB, const Eigen::Vector3d& w_B,
+                     InertiaCheck check = InertiaCheck::physical);
 
   // The state at time t [s] (any finite real, also negative) after the initial one. Throws
   // std::invalid_argument naming t when a phase (a rate times t) overflows the double range.
@@ -84,9 +89,9 @@ class TorqueFreeSolution {
   double complete_pi() const;
   TorqueFreeState evaluate(double t) const;  // state_at without its checks (NaN where a phase overflows)
   void init_rotation_about_axis(const Eigen::Vector3d& I_Q, const Eigen::Vector3d& axis_B, double I_axial);
-  // I: principal moments scaled by a power of two (the largest in [1, 2)); m_tilde = I ∘ w̃ with the
+  // I: principal moments scaled by a power of two (the largest in [1, 2)); L_tilde = I ∘ w̃ with the
   // body rate ω_P = 2^e_rate w̃
-  void init_elliptic(const Eigen::Vector3d& I, const Eigen::Vector3d& m_tilde, int e_rate);
+  void init_elliptic(const Eigen::Vector3d& I, const Eigen::Vector3d& L_tilde, int e_rate);
   double max_rate() const;  // the largest rate of the motion [rad/s] (inf if one overflowed)
   void init_phase(const Eigen::Vector3d& mh_Q, double kc_M_dn_hat, int t2);
   TorqueFreeState state_about_axis(double t) const;
@@ -112,7 +117,7 @@ class TorqueFreeSolution {
 
   // cases A, B, separatrix: in the frame Q = (a, b, s) of principal axes, s carrying dn,
   // ω_Q = (A_cn cn, A_sn sn, A_dn dn) placed at (cn_axis, sn_axis, 2); u = λ t + u0, u0 = l0 K + w0.
-  // Momenta are kept in units of 2^e |m| (the largest component in [1, 2)); the transverse
+  // Momenta are kept in units of 2^e |L_B| (the largest component in [1, 2)); the transverse
   // amplitudes (cn, sn) carry an extra 2^t_trans and kc = 2^t_kc k̂c, so that a transverse part down to
   // the smallest subnormal keeps its direction and nothing underflows before it must.
   EllipticParameter elliptic_{0.0, 1.0, 1.0, 0.0};
@@ -120,7 +125,7 @@ class TorqueFreeSolution {
   Eigen::Quaterniond q_WN_;                         // N: inertial, z along L_W
   Eigen::Vector3d w_amplitude_ = Eigen::Vector3d::Zero();  // signed (A_cn, A_sn, A_dn) [rad/s]
   Eigen::Vector2d kc_w_amplitude_ = Eigen::Vector2d::Zero();  // kc (A_cn, A_dn) [rad/s] (odd quarters)
-  Eigen::Vector3d M_ = Eigen::Vector3d::Zero();     // I_Q A: (cn, sn) mantissas (× 2^t_trans), dn in units of |m|
+  Eigen::Vector3d M_ = Eigen::Vector3d::Zero();     // I_Q A: (cn, sn) mantissas (× 2^t_trans), dn in units of |L_B|
   Eigen::Vector2d kc_M_ = Eigen::Vector2d::Zero();  // kc times the cn mantissa and the dn momentum (odd quarters)
   int t_trans_ = 0;
   int cn_axis_ = 0;
@@ -143,7 +148,9 @@ class TorqueFreeSolution {
 // crosses a half period of ω).
 class FreeRotationFlow {
  public:
-  // I_B as for TorqueFreeSolution (throws std::invalid_argument on a bad inertia).
+  // I_B as for TorqueFreeSolution under InertiaCheck::allow_unrealizable (throws std::invalid_argument
+  // unless symmetric positive definite): a stepper advances a body whose inertia was checked when
+  // the body was built.
   explicit FreeRotationFlow(const Eigen::Matrix3d& I_B);
   const Eigen::Matrix3d& inertia() const { return I_B_; }
   // Advances the attitude q_WB (unit) and the angular velocity w_B [rad/s] (in B) by h [s]. A

@@ -10,6 +10,23 @@
 
 namespace rigiddyn {
 
+// The function of FrameMotion::fixed: F at the constant orientation R_PF and origin p_PF_P [m] in P.
+struct FixedPlacement {
+  Eigen::Matrix3d R_PF;
+  Eigen::Vector3d p_PF_P;
+  FrameKinematics operator()(double t) const;
+};
+
+// The function of FrameMotion::constant_rotation (parameters as given there; u_P = axis_P/|axis_P|).
+struct ConstantRotation {
+  Eigen::Vector3d axis_P;
+  double rate;  // [rad/s]
+  Eigen::Matrix3d R_PF0;
+  Eigen::Vector3d p_PF_P;  // [m]
+  Eigen::Vector3d u_P;
+  FrameKinematics operator()(double t) const;
+};
+
 class FrameMotion {
  public:
   // kinematics_at(t): F relative to P at time t [s]. The caller is responsible for its consistency
@@ -35,6 +52,9 @@ class FrameMotion {
 
   // F relative to P at time t [s] (not checked here; FrameTree checks).
   FrameKinematics at(double t) const { return kinematics_at_(t); }
+  // The function itself: function().target<FixedPlacement>() (or ConstantRotation) recovers the
+  // parameters of a motion built by fixed() (or constant_rotation()), e.g. to save it.
+  const Function& function() const { return kinematics_at_; }
 
  private:
   Function kinematics_at_;

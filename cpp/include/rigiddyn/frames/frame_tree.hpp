@@ -37,6 +37,8 @@ class FrameTree {
   bool has_frame(const std::string& name) const { return frames_.count(name) != 0; }
   // The parent's name ("" for world). Throws on an unknown name.
   const std::string& parent(const std::string& name) const;
+  // The motion placing `name` in its parent (world: fixed at the identity). Throws on an unknown name.
+  const FrameMotion& motion(const std::string& name) const;
   // All names, world first, then in the order they were added.
   const std::vector<std::string>& frame_names() const { return names_; }
 

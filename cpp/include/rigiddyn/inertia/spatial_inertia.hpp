@@ -101,7 +101,9 @@ class SpatialInertia {
   SpatialInertia remove(const SpatialInertia& part, InertiaCheck check = InertiaCheck::physical) const;
   SpatialInertia operator-(const SpatialInertia& part) const { return remove(part); }
 
-  bool isApprox(const SpatialInertia& other, double prec = 1e-12) const;
+  // Mass, centre of mass and I_C each equal up to prec relative to their size (the centre of mass
+  // relative to the body's radius of gyration plus |c|).
+  bool is_approx(const SpatialInertia& other, double prec = 1e-12) const;
 
  private:
   struct Trusted {};

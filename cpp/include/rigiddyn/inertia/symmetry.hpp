@@ -14,19 +14,22 @@
 //  - E all of space: p0 = the point farthest from the com, p1 = the point farthest from the line
 //    com-p0; the plane swaps p0 with some q (n = r0 - r_q), or contains p0 and swaps p1 with some q
 //    (n = r1 - r_q), or contains both (n = r0 x r1).
-// Every candidate is then verified on the points. This list contains every symmetry plane of a set
+// Every candidate is then verified: on the points for point masses, on the solid's boundary surface
+// for a mesh (mesh_symmetry_planes below). This list contains every symmetry plane of a set
 // of exactly symmetric points, but with a tolerance a candidate built from a pair of points close to
 // each other is imprecise; so for a degenerate body (a cube, a regular tetrahedron, a sphere-like
 // point set) the result is the set of planes found among these candidates, not a proof that no
 // others exist. Points all on one line (a continuum of planes through the line) and a single point
 // return representatives only: the planes of the principal axes spanning the degenerate eigenspace.
 //
-// Tolerance: a point matches the mirror image of another when they are within
+// Tolerance (point masses): a point matches the mirror image of another when they are within
 // tolerance * (largest distance from the com to a point) [m] and their masses differ by at most
-// tolerance * the larger mass.
+// tolerance * the larger mass. For a mesh, the points are its vertices (for the candidates only) and
+// the tolerance is the one stated at mesh_symmetry_planes.
 #pragma once
 #include <Eigen/Core>
 
+#include <optional>
 #include <vector>
 
 #include "rigiddyn/inertia/mesh.hpp"
@@ -55,13 +58,22 @@ std::vector<SymmetryPlane> symmetry_planes(const Eigen::Ref<const Eigen::VectorX
                                            const Eigen::Ref<const PointPositions>& positions,
                                            double tolerance = symmetry_tolerance);
 
-// Symmetry planes of the uniform solid bounded by a closed, outward-oriented triangle mesh (checked
-// as in solid_mesh, mesh.hpp): the planes through the solid's centre of mass whose reflection maps
-// the vertex set onto itself (vertices (n, 3) [m]) and every face (a, b, c) onto a face of the mesh
-// with reversed orientation (the reflection reverses handedness, so the image of an outward face
-// is (a', c', b')). Tolerance as above, relative to the largest distance from the com to a vertex.
+// Symmetry planes of the uniform solid bounded by a closed, outward-oriented triangle mesh
+// (vertices (n, 3) [m], faces (f, 3)), welded and checked as in solid_mesh (mesh.hpp; weld_tolerance
+// likewise). The planes of the solid, whatever its triangulation: a plane counts when the
+// reflection maps the solid onto itself, decided on its oriented boundary surface (every reflected
+// face covered by faces of the mesh in the same plane with the same outward side, up to an
+// uncovered strip of width eps = tolerance * L along its edges, L = the largest distance from the
+// com to a vertex; face planes equal when their unit normals differ by <= tolerance and their
+// distances from the com by <= eps). Candidate normals as above, from the inertia of the solid and
+// the mesh's vertices: vertices inside flat faces need not map onto vertices. A faceted solid of
+// revolution (a cylinder or capsule of s sections) has the planes of its polyhedron: the s planes
+// through its axis of the regular s-gon, and the plane normal to the axis when the ends match -
+// not the continuum of the smooth solid. Normals and point in the frame of the vertices (the body
+// frame when the mesh is given in it).
 std::vector<SymmetryPlane> mesh_symmetry_planes(const Eigen::Ref<const MeshVertices>& vertices,
                                                 const Eigen::Ref<const MeshFaces>& faces,
-                                                double tolerance = symmetry_tolerance);
+                                                double tolerance = symmetry_tolerance,
+                                                std::optional<double> weld_tolerance = std::nullopt);
 
 }  // namespace rigiddyn

@@ -75,8 +75,8 @@ struct ExactFreeFlow {
       if (exact_flow_kick_step(model, y, h) != 0.0) {
         y = y0;
         throw std::invalid_argument(
-            "method: expected a torque-free body for 'exact' (no couple), got a couple; use "
-            "'exact_flow_kick' for bodies under couples");
+            "method: expected a torque-free body for 'exact' (no torque), got a torque; use "
+            "'exact_flow_kick' for bodies under torques");
       }
     } else {  // no gyroscopic term (asserted in velocity_verlet)
       velocity_verlet(model, y, h);

@@ -1,17 +1,17 @@
 // Euler's equations for the rotation of a rigid body about its centre of mass, in the three forms an
 // inertia can need (Craig, "Rigid Body Dynamics" slides, "Equations of motion for rotation"):
-//   I ω̇ + ω × I ω = n        (everything in the body frame B, moments about the centre of mass)
+//   I ω̇ + ω × I ω = τ        (everything in the body frame B, torques about the centre of mass)
 // - SphericalEuler: I = s 1, so ω × I ω = 0: no gyroscopic term at all;
 // - PrincipalEuler: I = diag(I1, I2, I3) (B along principal axes):
-//     I1 ω̇1 = n1 + (I2 − I3) ω2 ω3, and cyclic;
+//     I1 ω̇1 = τ1 + (I2 − I3) ω2 ω3, and cyclic;
 // - FullEuler: any symmetric positive definite I (products of inertia present).
 // A model is templated on one of them, chosen once (see RigidBody::form and with_euler_form), so a
 // sphere pays nothing for the gyroscopic term. Every form has the same members:
-//   momentum(w)                       h_B = I ω_B [kg m²/s]
-//   angular_acceleration(w, n)        ω̇_B = I⁻¹ (n_B − ω × I ω) [rad/s²]
-//   explicit_gyroscopic_kick(w, n, h) ω + h I⁻¹ (n − ω × I ω)  (explicit gyroscopic term)
-//   implicit_gyroscopic_kick(w, n, h) ω' from one Newton step on
-//                                     I (ω' − ω) + h ω' × I ω' = h n, started at ω' = ω
+//   momentum(w)                          h_B = I ω_B [kg m²/s]
+//   angular_acceleration(w, tau)         ω̇_B = I⁻¹ (τ_B − ω × I ω) [rad/s²]
+//   explicit_gyroscopic_kick(w, tau, h)  ω + h I⁻¹ (τ − ω × I ω)  (explicit gyroscopic term)
+//   implicit_gyroscopic_kick(w, tau, h)  ω' from one Newton step on
+//                                        I (ω' − ω) + h ω' × I ω' = h τ, started at ω' = ω
 //
 // The members are written element by element, each vector built from three scalar expressions:
 // Eigen's arithmetic on Vector3d uses a 2-wide packet plus a scalar, and in the integrators' loops
@@ -34,16 +34,16 @@ struct SphericalEuler {
   RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d momentum(const Eigen::Vector3d& w) const {
     return Eigen::Vector3d(inertia * w(0), inertia * w(1), inertia * w(2));
   }
-  RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d angular_acceleration(const Eigen::Vector3d& /*w*/, const Eigen::Vector3d& n) const {
-    return Eigen::Vector3d(inverse_inertia * n(0), inverse_inertia * n(1), inverse_inertia * n(2));
+  RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d angular_acceleration(const Eigen::Vector3d& /*w*/, const Eigen::Vector3d& tau) const {
+    return Eigen::Vector3d(inverse_inertia * tau(0), inverse_inertia * tau(1), inverse_inertia * tau(2));
   }
-  RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d explicit_gyroscopic_kick(const Eigen::Vector3d& w, const Eigen::Vector3d& n, double h) const {
+  RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d explicit_gyroscopic_kick(const Eigen::Vector3d& w, const Eigen::Vector3d& tau, double h) const {
     const double k = h * inverse_inertia;
-    return Eigen::Vector3d(w(0) + k * n(0), w(1) + k * n(1), w(2) + k * n(2));
+    return Eigen::Vector3d(w(0) + k * tau(0), w(1) + k * tau(1), w(2) + k * tau(2));
   }
   // no gyroscopic term: the implicit update is the explicit one, exactly
-  RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d implicit_gyroscopic_kick(const Eigen::Vector3d& w, const Eigen::Vector3d& n, double h) const {
-    return explicit_gyroscopic_kick(w, n, h);
+  RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d implicit_gyroscopic_kick(const Eigen::Vector3d& w, const Eigen::Vector3d& tau, double h) const {
+    return explicit_gyroscopic_kick(w, tau, h);
   }
 };
 
@@ -70,14 +70,14 @@ RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d solve_3x3(const Eigen::Vector3d& r0, cons
                          inverse_det * (b(0) * c0(2) + b(1) * c1(2) + b(2) * c2(2)));
 }
 
-// One Newton step on F(ω') = I (ω' − ω) + h ω' × I ω' − h n = 0 from ω' = ω (the implicit
-// gyroscopic term; I and n in B, h [s]):
-//   F(ω) = h (ω × I ω − n),  J = ∂F/∂ω' = I + h (ω̂ I − (I ω)^),  ω' = ω − J⁻¹ F(ω).
+// One Newton step on F(ω') = I (ω' − ω) + h ω' × I ω' − h tau = 0 from ω' = ω (the implicit
+// gyroscopic term; I and tau in B, h [s]):
+//   F(ω) = h (ω × I ω − tau),  J = ∂F/∂ω' = I + h (ω̂ I − (I ω)^),  ω' = ω − J⁻¹ F(ω).
 RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d gyroscopic_newton_kick(const Eigen::Matrix3d& I, const Eigen::Vector3d& w,
-                                                              const Eigen::Vector3d& n, double h) {
+                                                              const Eigen::Vector3d& tau, double h) {
   const Eigen::Vector3d Iw = times_3x3(I, w);
   const Eigen::Vector3d w_x_Iw = cross_3(w, Iw);
-  const Eigen::Vector3d F(h * (w_x_Iw(0) - n(0)), h * (w_x_Iw(1) - n(1)), h * (w_x_Iw(2) - n(2)));
+  const Eigen::Vector3d F(h * (w_x_Iw(0) - tau(0)), h * (w_x_Iw(1) - tau(1)), h * (w_x_Iw(2) - tau(2)));
   // column j of J: I e_j + h (ω × I e_j − I ω × e_j), with I ω × e_j = (I ω)^ e_j
   Eigen::Matrix3d J;
   for (int j = 0; j < 3; ++j) {
@@ -97,23 +97,23 @@ struct PrincipalEuler {
   RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d momentum(const Eigen::Vector3d& w) const {
     return Eigen::Vector3d(inertia(0) * w(0), inertia(1) * w(1), inertia(2) * w(2));
   }
-  // I1 ω̇1 = n1 + (I2 − I3) ω2 ω3, and cyclic (Craig, "Rigid Body Dynamics" slides, Euler's equations in principal axes)
-  RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d angular_acceleration(const Eigen::Vector3d& w, const Eigen::Vector3d& n) const {
-    return Eigen::Vector3d(inverse_inertia(0) * (n(0) + (inertia(1) - inertia(2)) * w(1) * w(2)),
-                           inverse_inertia(1) * (n(1) + (inertia(2) - inertia(0)) * w(2) * w(0)),
-                           inverse_inertia(2) * (n(2) + (inertia(0) - inertia(1)) * w(0) * w(1)));
+  // I1 ω̇1 = τ1 + (I2 − I3) ω2 ω3, and cyclic (Craig, "Rigid Body Dynamics" slides, Euler's equations in principal axes)
+  RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d angular_acceleration(const Eigen::Vector3d& w, const Eigen::Vector3d& tau) const {
+    return Eigen::Vector3d(inverse_inertia(0) * (tau(0) + (inertia(1) - inertia(2)) * w(1) * w(2)),
+                           inverse_inertia(1) * (tau(1) + (inertia(2) - inertia(0)) * w(2) * w(0)),
+                           inverse_inertia(2) * (tau(2) + (inertia(0) - inertia(1)) * w(0) * w(1)));
   }
-  RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d explicit_gyroscopic_kick(const Eigen::Vector3d& w, const Eigen::Vector3d& n, double h) const {
-    const Eigen::Vector3d alpha = angular_acceleration(w, n);
+  RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d explicit_gyroscopic_kick(const Eigen::Vector3d& w, const Eigen::Vector3d& tau, double h) const {
+    const Eigen::Vector3d alpha = angular_acceleration(w, tau);
     return Eigen::Vector3d(w(0) + h * alpha(0), w(1) + h * alpha(1), w(2) + h * alpha(2));
   }
   // gyroscopic_newton_kick for diagonal I: with d = (I3 − I2, I1 − I3, I2 − I1),
   //   F_i = h (d_i ω_j ω_k − n_i),  J = diag(I) + h [[0, d1 ω3, d1 ω2], [d2 ω3, 0, d2 ω1], [d3 ω2, d3 ω1, 0]]
   // ((i, j, k) cyclic), solved in closed form.
-  RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d implicit_gyroscopic_kick(const Eigen::Vector3d& w, const Eigen::Vector3d& n,
+  RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d implicit_gyroscopic_kick(const Eigen::Vector3d& w, const Eigen::Vector3d& tau,
                                                                   double h) const {
     const double d0 = inertia(2) - inertia(1), d1 = inertia(0) - inertia(2), d2 = inertia(1) - inertia(0);
-    const Eigen::Vector3d F(h * (d0 * w(1) * w(2) - n(0)), h * (d1 * w(2) * w(0) - n(1)), h * (d2 * w(0) * w(1) - n(2)));
+    const Eigen::Vector3d F(h * (d0 * w(1) * w(2) - tau(0)), h * (d1 * w(2) * w(0) - tau(1)), h * (d2 * w(0) * w(1) - tau(2)));
     const Eigen::Vector3d J0(inertia(0), h * d0 * w(2), h * d0 * w(1)), J1(h * d1 * w(2), inertia(1), h * d1 * w(0)),
         J2(h * d2 * w(1), h * d2 * w(0), inertia(2));
     const Eigen::Vector3d dw = solve_3x3(J0, J1, J2, F);
@@ -128,17 +128,17 @@ struct FullEuler {
 
   explicit FullEuler(const Eigen::Matrix3d& I) : inertia(I), inverse_inertia(I.inverse()) {}
   RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d momentum(const Eigen::Vector3d& w) const { return times_3x3(inertia, w); }
-  // ω̇ = I⁻¹ (n − ω × I ω)
-  RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d angular_acceleration(const Eigen::Vector3d& w, const Eigen::Vector3d& n) const {
+  // ω̇ = I⁻¹ (tau − ω × I ω)
+  RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d angular_acceleration(const Eigen::Vector3d& w, const Eigen::Vector3d& tau) const {
     const Eigen::Vector3d w_x_Iw = cross_3(w, momentum(w));
-    return times_3x3(inverse_inertia, Eigen::Vector3d(n(0) - w_x_Iw(0), n(1) - w_x_Iw(1), n(2) - w_x_Iw(2)));
+    return times_3x3(inverse_inertia, Eigen::Vector3d(tau(0) - w_x_Iw(0), tau(1) - w_x_Iw(1), tau(2) - w_x_Iw(2)));
   }
-  RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d explicit_gyroscopic_kick(const Eigen::Vector3d& w, const Eigen::Vector3d& n, double h) const {
-    const Eigen::Vector3d alpha = angular_acceleration(w, n);
+  RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d explicit_gyroscopic_kick(const Eigen::Vector3d& w, const Eigen::Vector3d& tau, double h) const {
+    const Eigen::Vector3d alpha = angular_acceleration(w, tau);
     return Eigen::Vector3d(w(0) + h * alpha(0), w(1) + h * alpha(1), w(2) + h * alpha(2));
   }
-  RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d implicit_gyroscopic_kick(const Eigen::Vector3d& w, const Eigen::Vector3d& n, double h) const {
-    return gyroscopic_newton_kick(inertia, w, n, h);
+  RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d implicit_gyroscopic_kick(const Eigen::Vector3d& w, const Eigen::Vector3d& tau, double h) const {
+    return gyroscopic_newton_kick(inertia, w, tau, h);
   }
 };
 

@@ -1,4 +1,4 @@
-// Applied loads of a single body: forces through the centre of mass and couples, each given in the
+// Applied loads of a single body: forces through the centre of mass and torques (pure couples), each given in the
 // world frame W or in the body frame B, each active on a time interval [t_start, t_end), so that a
 // list of them is a piecewise-constant schedule. Uniform gravity is separate (models add m g).
 //
@@ -18,7 +18,7 @@
 
 namespace rigiddyn {
 
-// One load: force [N] through the centre of mass and couple [N m], both expressed in `frame`,
+// One load: force [N] through the centre of mass and torque [N m], both expressed in `frame`,
 // active for t in [t_start, t_end) [s].
 struct AppliedLoad {
   Eigen::Vector3d force = Eigen::Vector3d::Zero();
@@ -35,8 +35,8 @@ struct AppliedLoad {
 struct ComLoads {
   Eigen::Vector3d f_W = Eigen::Vector3d::Zero();  // force in W [N] (gravity m g is added by the model)
   Eigen::Vector3d f_B = Eigen::Vector3d::Zero();  // force in B [N]
-  Eigen::Vector3d n_W = Eigen::Vector3d::Zero();  // couple in W [N m]
-  Eigen::Vector3d n_B = Eigen::Vector3d::Zero();  // couple in B [N m]
+  Eigen::Vector3d tau_W = Eigen::Vector3d::Zero();  // torque in W [N m]
+  Eigen::Vector3d tau_B = Eigen::Vector3d::Zero();  // torque in B [N m]
 };
 
 // The sum of the loads of `schedule` active at time t [s].

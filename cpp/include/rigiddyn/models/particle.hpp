@@ -1,6 +1,6 @@
 // The particle (point mass, 3 DOF; "Rigid body kinematics and dynamics" notes, §4.11): m p̈_W = f_W + m g_W.
 // A particle has no attitude: loads given in the "body" frame are taken as world-frame forces, and
-// couples are rejected by simulate (they would do nothing).
+// torques are rejected by simulate (they would do nothing).
 #pragma once
 #include "rigiddyn/models/loads.hpp"
 #include "rigiddyn/models/model_interface.hpp"
@@ -41,7 +41,7 @@ class ParticleModel {
   ParticleModel(const Particle& particle, const Eigen::Vector3d& g_W = Eigen::Vector3d::Zero())
       : mass_(particle.mass()), inverse_mass_(1.0 / particle.mass()), g_W_(g_W), f_W_(particle.mass() * g_W) {}
 
-  // world- and "body"-frame forces add (no attitude); couples are ignored here (simulate rejects them)
+  // world- and "body"-frame forces add (no attitude); torques are ignored here (simulate rejects them)
   void set_loads(const ComLoads& loads) { f_W_ = loads.f_W + loads.f_B + mass_ * g_W_; }
 
   RIGIDDYN_ALWAYS_INLINE Coordinates rate(const Coordinates& y) const {

@@ -1,5 +1,5 @@
 // The planar rigid body (3 DOF: x, y, θ in the xy plane of W; Craig, "Rigid Body Dynamics" slides, "plane kinetics"):
-//   m a_G = Σ f (in the plane),  I_zz α = Σ n_z (moments about the centre of mass G).
+//   m a_G = Σ f (in the plane),  I_zz α = Σ τ_z (torques about the centre of mass G).
 // There is no gyroscopic term in plane motion. Body frame B turns about z by θ: R_WB = Rz(θ).
 #pragma once
 #include "rigiddyn/models/loads.hpp"
@@ -53,18 +53,18 @@ class PlanarBodyModel {
     set_loads(ComLoads{});
   }
 
-  // in-plane parts: f = f_W.xy + Rz(θ) f_B.xy + m g, n = n_W.z + n_B.z (out-of-plane parts ignored)
+  // in-plane parts: f = f_W.xy + Rz(θ) f_B.xy + m g, τ = tau_W.z + tau_B.z (out-of-plane parts ignored)
   void set_loads(const ComLoads& loads) {
     f_fixed_W_ = loads.f_W.head<2>() + mass_ * g_W_;
     f_B_ = loads.f_B.head<2>();
-    n_ = loads.n_W.z() + loads.n_B.z();
+    tau_ = loads.tau_W.z() + loads.tau_B.z();
     turning_force_ = !f_B_.isZero(0.0);
   }
 
   RIGIDDYN_ALWAYS_INLINE Coordinates rate(const Coordinates& y) const {
     const Eigen::Vector2d f = force_W(y(2));
     Coordinates dy;
-    dy << y.segment<3>(3), f / mass_, n_ / inertia_zz_, f.dot(y.segment<2>(3)) + n_ * y(5);
+    dy << y.segment<3>(3), f / mass_, tau_ / inertia_zz_, f.dot(y.segment<2>(3)) + tau_ * y(5);
     return dy;
   }
   static void project(Coordinates& /*y*/) {}
@@ -74,11 +74,11 @@ class PlanarBodyModel {
   static Tangent dexp_inv(const Tangent& /*theta*/, const Tangent& xi) { return xi; }
   RIGIDDYN_ALWAYS_INLINE void kick(Coordinates& y, double h) const {
     y.segment<2>(3) += (h / mass_) * force_W(y(2));
-    y(5) += h * n_ / inertia_zz_;
+    y(5) += h * tau_ / inertia_zz_;
   }
   void kick_implicit_gyroscopic(Coordinates& y, double h) const { kick(y, h); }
   RIGIDDYN_ALWAYS_INLINE void drift(Coordinates& y, double h) const {
-    y(6) += h * (force_W(y(2)).dot(y.segment<2>(3)) + n_ * y(5));
+    y(6) += h * (force_W(y(2)).dot(y.segment<2>(3)) + tau_ * y(5));
     y.segment<3>(0) += h * y.segment<3>(3);
   }
 
@@ -106,7 +106,7 @@ class PlanarBodyModel {
   Eigen::Vector2d g_W_;
   Eigen::Vector2d f_fixed_W_;  // f_W + m g [N]
   Eigen::Vector2d f_B_;        // body-frame force [N]
-  double n_;                   // couple about z [N m]
+  double tau_;                 // torque about z [N m]
   bool turning_force_;
 };
 

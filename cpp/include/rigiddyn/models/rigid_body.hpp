@@ -3,7 +3,7 @@
 // Euler's equations (euler_equations.hpp) so that a sphere pays nothing for the gyroscopic term.
 //
 // Equations of motion (Craig, "Rigid Body Dynamics" slides, Newton–Euler about the centre of mass G):
-//   ṗ_W = v_W,  q̇_WB = ½ q_WB ⊗ (ω_B, 0),  m v̇_W = f_W + m g_W,  I ω̇_B + ω_B × I ω_B = n_B.
+//   ṗ_W = v_W,  q̇_WB = ½ q_WB ⊗ (ω_B, 0),  m v̇_W = f_W + m g_W,  I ω̇_B + ω_B × I ω_B = tau_B.
 #pragma once
 #include "rigiddyn/check.hpp"  // format_value
 #include "rigiddyn/inertia/spatial_inertia.hpp"
@@ -37,6 +37,13 @@ class RigidBody {
   // InertiaCheck::allow_unrealizable to accept e.g. the Hairer–Lubich–Wanner test body
   // I = (2, 1, 2/3) on purpose); and for a singular inertia (Euler's equations need I⁻¹).
   RigidBody(double mass, const Eigen::Matrix3d& inertia_com, InertiaCheck check = InertiaCheck::physical);
+  // The same from any Eigen expression: a 3×3 one is inertia_com; a 3-vector holds the principal
+  // moments (I1, I2, I3) [kg m²] about the centre of mass, B's axes principal: inertia_com =
+  // diag(I1, I2, I3). (One template for both, so that `RigidBody(m, Eigen::Matrix3d::Identity())` and
+  // `RigidBody(m, Eigen::Vector3d(1, 2, 2.5))` are never ambiguous.)
+  template <class Derived>
+  RigidBody(double mass, const Eigen::MatrixBase<Derived>& inertia, InertiaCheck check = InertiaCheck::physical)
+      : RigidBody(mass, as_inertia_com(inertia), check) {}
   // From mass properties: uses mass() and inertia_com() (B's axes, origin moved to the centre of mass).
   explicit RigidBody(const SpatialInertia& inertia, InertiaCheck check = InertiaCheck::physical);
 
@@ -47,6 +54,17 @@ class RigidBody {
   EulerForm euler_form() const { return form_; }
 
  private:
+  template <class Derived>
+  static Eigen::Matrix3d as_inertia_com(const Eigen::MatrixBase<Derived>& inertia) {
+    if constexpr (Derived::ColsAtCompileTime == 1) {
+      static_assert(Derived::RowsAtCompileTime == 3, "RigidBody: principal moments are a 3-vector");
+      return Eigen::Vector3d(inertia).asDiagonal();
+    } else {
+      static_assert(Derived::RowsAtCompileTime == 3 && Derived::ColsAtCompileTime == 3, "RigidBody: inertia_com is 3x3");
+      return inertia;
+    }
+  }
+
   double mass_;
   Eigen::Matrix3d inertia_com_;
   EulerForm form_;
@@ -88,9 +106,9 @@ RigidBodyState to_rigid_body_state(const RigidBodyCoordinates& y);
 // The applied loads a RigidBodyModel evaluates, fixed at compile time so that a step pays only
 // for the loads a scene has ("model only what a scene requires"; simulate chooses once per run):
 //   none     no applied load and no gravity: the free body, which does no work;
-//   fixed    gravity, world-fixed forces f_W and body-fixed couples n_B: constant during a step and
+//   fixed    gravity, world-fixed forces f_W and body-fixed torques tau_B: constant during a step and
 //            independent of the attitude;
-//   turning  any loads, also body-fixed forces f_B and world-fixed couples n_W, which turn with the
+//   turning  any loads, also body-fixed forces f_B and world-fixed torques tau_W, which turn with the
 //            body (the wrench then depends on the attitude at every derivative evaluation).
 enum class LoadKind { none, fixed, turning };
 
@@ -128,21 +146,21 @@ class RigidBodyModel {
   // std::invalid_argument for loads that `kind` does not cover (see LoadKind).
   void set_loads(const ComLoads& loads) {
     if constexpr (kind != LoadKind::turning) {
-      if (!(loads.f_B.isZero(0.0) && loads.n_W.isZero(0.0))) {
-        throw std::invalid_argument("loads: expected no body-fixed force and no world-fixed couple (LoadKind::none or fixed), got f_B = " +
-                                    format_value(loads.f_B.transpose()) + ", n_W = " + format_value(loads.n_W.transpose()));
+      if (!(loads.f_B.isZero(0.0) && loads.tau_W.isZero(0.0))) {
+        throw std::invalid_argument("loads: expected no body-fixed force and no world-fixed torque (LoadKind::none or fixed), got f_B = " +
+                                    format_value(loads.f_B.transpose()) + ", tau_W = " + format_value(loads.tau_W.transpose()));
       }
     }
     if constexpr (kind == LoadKind::none) {
-      if (!(loads.f_W.isZero(0.0) && loads.n_B.isZero(0.0) && g_W_.isZero(0.0))) {
+      if (!(loads.f_W.isZero(0.0) && loads.tau_B.isZero(0.0) && g_W_.isZero(0.0))) {
         throw std::invalid_argument("loads: expected no loads and no gravity (LoadKind::none), got f_W = " +
-                                    format_value(loads.f_W.transpose()) + ", n_B = " + format_value(loads.n_B.transpose()) +
+                                    format_value(loads.f_W.transpose()) + ", tau_B = " + format_value(loads.tau_B.transpose()) +
                                     ", g_W = " + format_value(g_W_.transpose()));
       }
     }
     loads_ = loads;
     f_fixed_W_ = loads.f_W + mass_ * g_W_;
-    turning_loads_ = !(loads.f_B.isZero(0.0) && loads.n_W.isZero(0.0));
+    turning_loads_ = !(loads.f_B.isZero(0.0) && loads.tau_W.isZero(0.0));
   }
   const Euler& euler() const { return euler_; }
   double mass() const { return mass_; }
@@ -153,9 +171,9 @@ class RigidBodyModel {
   RIGIDDYN_ALWAYS_INLINE Coordinates rate(const Coordinates& y) const {
     const Eigen::Map<const Eigen::Quaterniond> q(y.data() + 3);
     const Eigen::Vector3d v = three_at(y, 7), w = three_at(y, 10);
-    Eigen::Vector3d f_W, n_B;
-    wrench(y, f_W, n_B);
-    const Eigen::Vector3d alpha_B = euler_.angular_acceleration(w, n_B);
+    Eigen::Vector3d f_W, tau_B;
+    wrench(y, f_W, tau_B);
+    const Eigen::Vector3d alpha_B = euler_.angular_acceleration(w, tau_B);
     Coordinates dy;
     for (int i = 0; i < 3; ++i) dy[i] = v[i], dy[7 + i] = inverse_mass_ * f_W[i], dy[10 + i] = alpha_B[i];
     // quaternion kinematics q̇ = ½ q ⊗ (ω_B, 0) ("Rigid body kinematics and dynamics" notes,
@@ -164,7 +182,7 @@ class RigidBodyModel {
     dy(4) = 0.5 * (q.w() * w.y() + q.z() * w.x() - q.x() * w.z());
     dy(5) = 0.5 * (q.w() * w.z() + q.x() * w.y() - q.y() * w.x());
     dy(6) = -0.5 * (q.x() * w.x() + q.y() * w.y() + q.z() * w.z());
-    dy(13) = power(f_W, n_B, v, w);
+    dy(13) = power(f_W, tau_B, v, w);
     return dy;
   }
 
@@ -176,12 +194,12 @@ class RigidBodyModel {
 
   RIGIDDYN_ALWAYS_INLINE Tangent velocity(const Coordinates& y) const {
     const Eigen::Vector3d v = three_at(y, 7), w = three_at(y, 10);
-    Eigen::Vector3d f_W, n_B;
-    wrench(y, f_W, n_B);
-    const Eigen::Vector3d alpha_B = euler_.angular_acceleration(w, n_B);
+    Eigen::Vector3d f_W, tau_B;
+    wrench(y, f_W, tau_B);
+    const Eigen::Vector3d alpha_B = euler_.angular_acceleration(w, tau_B);
     Tangent xi;
     for (int i = 0; i < 3; ++i) xi[i] = v[i], xi[3 + i] = w[i], xi[6 + i] = inverse_mass_ * f_W[i], xi[9 + i] = alpha_B[i];
-    xi[12] = power(f_W, n_B, v, w);
+    xi[12] = power(f_W, tau_B, v, w);
     return xi;
   }
 
@@ -192,7 +210,7 @@ class RigidBodyModel {
     return out;
   }
 
-  // ξ(y ⊕ Θ). Without body-fixed forces or world-fixed couples ξ does not read the attitude, so
+  // ξ(y ⊕ Θ). Without body-fixed forces or world-fixed torques ξ does not read the attitude, so
   // the exponential of the stage attitude is skipped (a torque-free body, gravity, world forces).
   RIGIDDYN_ALWAYS_INLINE Tangent velocity_at(const Coordinates& y, const Tangent& theta) const {
     if constexpr (kind == LoadKind::turning) {
@@ -213,25 +231,25 @@ class RigidBodyModel {
   }
 
   RIGIDDYN_ALWAYS_INLINE void kick(Coordinates& y, double h) const {
-    Eigen::Vector3d f_W, n_B;
-    wrench(y, f_W, n_B);
-    const Eigen::Vector3d w = euler_.explicit_gyroscopic_kick(three_at(y, 10), n_B, h);
+    Eigen::Vector3d f_W, tau_B;
+    wrench(y, f_W, tau_B);
+    const Eigen::Vector3d w = euler_.explicit_gyroscopic_kick(three_at(y, 10), tau_B, h);
     for (int i = 0; i < 3; ++i) y[7 + i] += (h * inverse_mass_) * f_W[i], y[10 + i] = w[i];
   }
 
   RIGIDDYN_ALWAYS_INLINE void kick_implicit_gyroscopic(Coordinates& y, double h) const {
-    Eigen::Vector3d f_W, n_B;
-    wrench(y, f_W, n_B);
-    const Eigen::Vector3d w = euler_.implicit_gyroscopic_kick(three_at(y, 10), n_B, h);
+    Eigen::Vector3d f_W, tau_B;
+    wrench(y, f_W, tau_B);
+    const Eigen::Vector3d w = euler_.implicit_gyroscopic_kick(three_at(y, 10), tau_B, h);
     for (int i = 0; i < 3; ++i) y[7 + i] += (h * inverse_mass_) * f_W[i], y[10 + i] = w[i];
   }
 
   // p += h v, q ← q ⊗ exp(h ω_B) (exact for constant ω), work += h × power at the current velocities
   RIGIDDYN_ALWAYS_INLINE void drift(Coordinates& y, double h) const {
     const Eigen::Vector3d v = three_at(y, 7), w = three_at(y, 10);
-    Eigen::Vector3d f_W, n_B;
-    wrench(y, f_W, n_B);
-    y(13) += h * power(f_W, n_B, v, w);
+    Eigen::Vector3d f_W, tau_B;
+    wrench(y, f_W, tau_B);
+    y(13) += h * power(f_W, tau_B, v, w);
     for (int i = 0; i < 3; ++i) y[i] += h * v[i];
     const double q[4] = {y[3], y[4], y[5], y[6]};
     times_exp(q, Eigen::Vector3d(h * w[0], h * w[1], h * w[2]), y.data() + 3);
@@ -253,20 +271,20 @@ class RigidBodyModel {
   }
 
  private:
-  // total force in W (gravity included) and couple in B at the attitude q of y (unit up to the
+  // total force in W (gravity included) and torque in B at the attitude q of y (unit up to the
   // method's error; q is read only under LoadKind::turning, when loads turn with the body)
-  RIGIDDYN_ALWAYS_INLINE void wrench([[maybe_unused]] const Coordinates& y, Eigen::Vector3d& f_W, Eigen::Vector3d& n_B) const {
+  RIGIDDYN_ALWAYS_INLINE void wrench([[maybe_unused]] const Coordinates& y, Eigen::Vector3d& f_W, Eigen::Vector3d& tau_B) const {
     if constexpr (kind == LoadKind::none) {
-      for (int i = 0; i < 3; ++i) f_W[i] = 0.0, n_B[i] = 0.0;
+      for (int i = 0; i < 3; ++i) f_W[i] = 0.0, tau_B[i] = 0.0;
     } else {
-      for (int i = 0; i < 3; ++i) f_W[i] = f_fixed_W_[i], n_B[i] = loads_.n_B[i];
+      for (int i = 0; i < 3; ++i) f_W[i] = f_fixed_W_[i], tau_B[i] = loads_.tau_B[i];
     }
     if constexpr (kind == LoadKind::turning) {
       if (turning_loads_) {
         Eigen::Quaterniond u(y[6], y[3], y[4], y[5]);
         u.coeffs() *= 1.0 / u.coeffs().norm();
         f_W += u * loads_.f_B;
-        n_B += u.conjugate() * loads_.n_W;
+        tau_B += u.conjugate() * loads_.tau_W;
       }
     }
   }
@@ -297,11 +315,11 @@ class RigidBodyModel {
     out[3] = s * e.w() - x * e.x() - y * e.y() - z * e.z();
   }
 
-  // dW/dt = f_W · v_W + n_B · ω_B [W] (Craig, "Rigid Body Dynamics" slides, power of a force at G and a couple)
-  RIGIDDYN_ALWAYS_INLINE double power(const Eigen::Vector3d& f_W, const Eigen::Vector3d& n_B, const Eigen::Vector3d& v,
+  // dW/dt = f_W · v_W + tau_B · ω_B [W] (Craig, "Rigid Body Dynamics" slides, power of a force at G and a torque)
+  RIGIDDYN_ALWAYS_INLINE double power(const Eigen::Vector3d& f_W, const Eigen::Vector3d& tau_B, const Eigen::Vector3d& v,
                                       const Eigen::Vector3d& w) const {
     if constexpr (kind == LoadKind::none) return 0.0;  // a free body does no work and pays nothing for it
-    return f_W[0] * v[0] + f_W[1] * v[1] + f_W[2] * v[2] + n_B[0] * w[0] + n_B[1] * w[1] + n_B[2] * w[2];
+    return f_W[0] * v[0] + f_W[1] * v[1] + f_W[2] * v[2] + tau_B[0] * w[0] + tau_B[1] * w[1] + tau_B[2] * w[2];
   }
 
   double mass_;
@@ -310,10 +328,10 @@ class RigidBodyModel {
   Eigen::Vector3d g_W_;
   ComLoads loads_;
   Eigen::Vector3d f_fixed_W_;  // f_W + m g_W
-  bool turning_loads_;         // f_B or n_W non-zero (only LoadKind::turning reads it)
+  bool turning_loads_;         // f_B or tau_W non-zero (only LoadKind::turning reads it)
 };
 
-// Euler's equations, I ω̇ + ω × I ω = n_B, in every form and under every LoadKind (for a sphere the
+// Euler's equations, I ω̇ + ω × I ω = tau_B, in every form and under every LoadKind (for a sphere the
 // term vanishes, but the model is still the spatial body: model_interface.hpp)
 template <class Euler, LoadKind kind>
 struct has_gyroscopic_term<RigidBodyModel<Euler, kind>> : std::true_type {};

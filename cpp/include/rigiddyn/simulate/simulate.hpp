@@ -71,8 +71,8 @@ struct Trajectory {
 
 // Throws std::invalid_argument naming the argument for dt <= 0, steps < 0, record_every < 1,
 // non-finite t0 or gravity, a bad state or load, a recording larger than the available memory
-// (record_every), and (particle, planar body) loads the model cannot take (couples on a particle;
-// out-of-plane forces, gravity or in-plane couples).
+// (record_every), and (particle, planar body) loads the model cannot take (torques on a particle;
+// out-of-plane forces, gravity or torques, for a planar body).
 Trajectory simulate(const RigidBody& body, const RigidBodyState& initial, const SimulationOptions& options);
 Trajectory simulate(const Particle& particle, const ParticleState& initial, const SimulationOptions& options);
 Trajectory simulate(const PlanarBody& body, const PlanarBodyState& initial, const SimulationOptions& options);

@@ -9,7 +9,7 @@
 namespace rigiddyn {
 
 // The Trajectory simulate(body, initial, options) returns for options.method == Method::exact
-// (options already checked by simulate). Throws std::invalid_argument naming the load for a couple
+// (options already checked by simulate). Throws std::invalid_argument naming the load for a torque
 // ("loads[i].torque"), a body-frame force ("loads[i].force") or a schedule that is not constant
 // from t0 ("loads"): the exact method covers torque-free bodies under constant world-frame forces.
 Trajectory simulate_exact(const RigidBody& body, const RigidBodyState& initial, const SimulationOptions& options);

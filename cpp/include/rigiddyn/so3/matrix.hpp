@@ -29,9 +29,12 @@ inline Eigen::Matrix3d checked_rotation_matrix(const Eigen::Matrix3d& R, std::st
 // R(q) of a unit quaternion q (Eigen's toRotationMatrix; inline, as it runs per item in loops).
 inline Eigen::Matrix3d quat_to_matrix(const Eigen::Quaterniond& q) { return q.toRotationMatrix(); }
 
-// The unit quaternion of a rotation matrix R, with w >= 0. Shepperd's method (Eigen), which picks
-// the largest of w, x, y, z to divide by and so is accurate at every angle, including pi.
-// R is assumed orthonormal (see checked_rotation_matrix); the result is normalised.
+// The unit quaternion of a rotation matrix R, canonical (quat_canonical: w >= 0). Markley's
+// method (F. L. Markley, "Unit Quaternion from Rotation Matrix", J. Guidance, Control, and Dynamics
+// 31(2), 2008), with SciPy's choice of branch: the largest of R_00, R_11, R_22 and tr R picks the
+// component computed from the diagonal, so it is accurate at every angle, including pi.
+// R is assumed orthonormal (see checked_rotation_matrix, projected_rotation_matrix in
+// nearest_rotation.hpp); the result is normalised.
 Eigen::Quaterniond matrix_to_quat(const Eigen::Matrix3d& R);
 
 }  // namespace rigiddyn

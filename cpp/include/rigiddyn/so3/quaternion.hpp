@@ -34,9 +34,13 @@ inline Eigen::Quaterniond checked_unit_quaternion(const Eigen::Quaterniond& q, c
 // q / |q| for any finite non-zero q; throws std::invalid_argument naming `name` otherwise.
 Eigen::Quaterniond quat_normalize(const Eigen::Quaterniond& q, const std::string& name = "q");
 
-// The same rotation with w >= 0 (q and -q are the same rotation; this picks one representative).
+// The canonical representative of q's rotation (q and -q are the same rotation): the one with
+// w > 0, or where w = 0 the first non-zero of x, y, z positive. SciPy's as_quat(canonical=True)
+// ties exactly (-0.0 counts as 0), so that half turns map to one representative too.
 inline Eigen::Quaterniond quat_canonical(const Eigen::Quaterniond& q) {
-  return q.w() < 0.0 ? Eigen::Quaterniond(-q.coeffs()) : q;
+  const bool flip = q.w() < 0.0 ||
+                    (q.w() == 0.0 && (q.x() < 0.0 || (q.x() == 0.0 && (q.y() < 0.0 || (q.y() == 0.0 && q.z() < 0.0)))));
+  return flip ? Eigen::Quaterniond(-q.coeffs()) : q;
 }
 
 // Hamilton product q1 ⊗ q2: the rotation q2 followed by q1, R(q1 ⊗ q2) = R(q1) R(q2).

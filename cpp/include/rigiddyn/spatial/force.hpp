@@ -43,7 +43,8 @@ struct Force {
     linear -= o.linear;
     return *this;
   }
-  bool isApprox(const Force& o, double prec = 1e-12) const { return to_vector().isApprox(o.to_vector(), prec); }
+  // Equal up to prec relative to the smaller norm of [n; f] (Eigen's isApprox on the 6-vectors).
+  bool is_approx(const Force& o, double prec = 1e-12) const { return to_vector().isApprox(o.to_vector(), prec); }
 
   // Power pairing m . f = w . n + v . f [W] (defined in motion.hpp).
   double dot(const Motion& m) const;

@@ -40,7 +40,8 @@ struct Motion {
     linear -= o.linear;
     return *this;
   }
-  bool isApprox(const Motion& o, double prec = 1e-12) const { return to_vector().isApprox(o.to_vector(), prec); }
+  // Equal up to prec relative to the smaller norm of [w; v] (Eigen's isApprox on the 6-vectors).
+  bool is_approx(const Motion& o, double prec = 1e-12) const { return to_vector().isApprox(o.to_vector(), prec); }
 
   // Motion cross product (Featherstone's crm): m1 x m2 = [w1 x w2; w1 x v2 + v1 x w2].
   Motion cross(const Motion& m2) const {

@@ -68,7 +68,8 @@ class Transform {
   Matrix6d motion_matrix() const;
   Matrix6d force_matrix() const;
 
-  bool isApprox(const Transform& o, double prec = 1e-12) const {
+  // Rotations and translations each equal up to prec relative to the smaller norm (Eigen's isApprox).
+  bool is_approx(const Transform& o, double prec = 1e-12) const {
     return R_.isApprox(o.R_, prec) && p_.isApprox(o.p_, prec);
   }
 

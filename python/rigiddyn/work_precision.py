@@ -1,8 +1,9 @@
 """Speed against accuracy on the user's own problem: a work-precision sweep over methods and steps.
 
-For each method x dt, `tradeoff` runs the C++ `simulate` over the problem's horizon, measures the
-cost (wall time of the C++ loop per step; derivative evaluations per step from `methods()`), and
-compares every recorded state with a reference at the same times:
+The sweep is the function `rigiddyn.tradeoff` (this module, rigiddyn.work_precision, holds it and its
+result, TradeoffResult). For each method x dt, `tradeoff` runs the C++ `simulate` over the problem's
+horizon, measures the cost (wall time of the C++ loop per step; derivative evaluations per step from
+`methods()`), and compares every recorded state with a reference at the same times:
 
 - ``"exact"`` when the problem has a closed form: torque-free rotation (`TorqueFreeSolution`,
   Euler-Poinsot) and a centre of mass under gravity and world-fixed piecewise-constant forces
@@ -34,9 +35,19 @@ at the horizon and "max_" over the recorded states:
 observed_order: slope of log(measure) against log(dt) between a run and the next larger dt of the
   same method, reported only in the asymptotic range: both errors above the floor (round-off,
   ROUND_OFF_PER_STEP x steps, and REFERENCE_MARGIN x reference_error) and the slope agreeing
-  with a neighbouring pair's (within ORDER_AGREEMENT, relative). Otherwise nan, with the reason in
+  with a neighbouring pair's (within ORDER_AGREEMENT, relative), and not both errors 1 or more (in rad
+  or relative: nothing left to converge). Otherwise nan, with the reason in
   order_note; also nan for a method that is exact on the problem (order 0, or exact_torque_free
   on a torque-free problem: its error is round-off at every dt).
+
+time_noise: how well a run's time repeats: (second fastest - fastest) / fastest of its repeated
+  timings (nan for a run timed once; the time reported is the fastest). The sweep's timing noise is the
+  NOISE_QUANTILE quantile over its runs (a minimum repeats better within a process than across runs).
+  The recommendation by time counts two total times as equal when their ranges t (1 +- noise) overlap
+  and breaks such ties by fewer derivative evaluations, then fewer steps (`cheapest`): timing noise
+  does not flip it.
+Without a tolerance there is no recommendation: the report gives the Pareto front of (cost, error)
+instead, the runs that no other run beats in both (`pareto_front`).
 
 Before the sweep, a short timed probe of every method estimates the sweep's cost, printed on stderr
 (progress=True), and a progress bar in steps follows the runs while stderr is a terminal (tqdm if
@@ -51,6 +62,7 @@ import json
 import math
 import os
 import sys
+import textwrap
 import time
 import warnings
 from collections.abc import Callable, Iterable, Mapping, Sequence, Sized
@@ -64,12 +76,26 @@ from . import _core
 from .problem import Problem, load_problem
 from .stability import StabilityWarning, stability_message
 
-__all__ = ["COLUMNS", "MEASURES", "Recommendation", "TradeoffResult", "reference_states", "tradeoff"]
+__all__ = ["COLUMNS", "MEASURES", "Recommendation", "TradeoffResult", "cheapest", "measure_unit", "pareto_front",
+           "reference_states", "timing_noise", "tradeoff"]
 
 _QUANTITIES = ("state_error", "attitude_error", "momentum_error", "position_error", "velocity_error")
 MEASURES = tuple(f"{w}_{q}" for q in _QUANTITIES for w in ("final", "max")) + (
     "energy_drift", "momentum_drift", "quaternion_norm_error")
-COLUMNS = ("method", "dt", "steps", "order", "evaluations_per_step", "time_per_step", "total_time",
+# the unit of each measure's quantity ("-": dimensionless) and what it is, for headers, axes and --help
+_UNITS = {"state_error": "-", "attitude_error": "rad", "momentum_error": "-", "position_error": "m",
+          "velocity_error": "m/s", "energy_drift": "-", "momentum_drift": "-", "quaternion_norm_error": "-"}
+_MEANINGS = {
+    "state_error": "max of attitude, momentum, position / L_p, velocity / L_v (dimensionless)",
+    "attitude_error": "geodesic angle between the attitude and the reference's",
+    "momentum_error": "|I (w_B - w_ref)| / |I w_ref|, body angular momentum (relative)",
+    "position_error": "|p_W - p_ref|, centre of mass",
+    "velocity_error": "|v_W - v_ref|, centre of mass",
+    "energy_drift": "max_t |T - T_ref| / max_t T_ref, kinetic energy (relative)",
+    "momentum_drift": "max_t ||L| - |L_ref|| / max_t |L_ref| (relative)",
+    "quaternion_norm_error": "max_t ||q| - 1|",
+}
+COLUMNS = ("method", "dt", "steps", "order", "evaluations_per_step", "time_per_step", "time_noise", "total_time",
            "total_evaluations") + MEASURES + ("observed_order", "order_note", "reference", "reference_error",
                                               "reference_check", "diverged", "stability")
 _COSTS = {"time": "total_time", "evaluations": "total_evaluations"}
@@ -85,6 +111,7 @@ DOP853_RTOL = 1e-13  # the independent reference's relative tolerance (its error
 DOP853_MAX_STEPS = 100_000  # per DOP853 run; beyond it the check uses the core's other 4th-order family
 MAX_STEPS = 2**53  # steps of one run at most (exact in a float; far beyond any run that ends)
 MAX_DTS = 64  # step sizes of one tradeoff at most (one run each; 8 halvings by default)
+NOISE_QUANTILE = 0.9  # the sweep's timing noise: this quantile of its runs' time_noise
 PROBE_STEPS = 2000  # steps of each method's timed probe for the cost estimate
 _EPS = np.finfo(float).eps
 
@@ -134,7 +161,8 @@ def reference_states(problem: Problem, t: np.ndarray) -> States:
         raise ValueError("problem: expected torque-free rotation and world-fixed forces (a closed form), got "
                          "body torques or body-frame forces")
     t = np.asarray(t, float)
-    q, w = _core.TorqueFreeSolution(problem.inertia_com, problem.q_WB, problem.w_B).state_at(t)
+    q, w = _core.TorqueFreeSolution(problem.inertia_com, problem.q_WB, problem.w_B,
+                                    check=problem.inertia_check).state_at(t)
     p, v = _ballistic(problem, t)
     return States(t, p, np.asarray(q), v, np.asarray(w))
 
@@ -187,10 +215,14 @@ def _measures(problem: Problem, run: States, ref: States, quaternion_norm_error:
 
 @dataclass
 class _Run:
+    """A run's states, whether it diverged, its fastest time per step [s] over the repeats and the gap
+    to the second fastest relative to it (nan if timed once)."""
+
     states: States
     quaternion_norm_error: np.ndarray
     diverged: bool
     time_per_step: float
+    time_noise: float = math.nan
 
 
 def _core_simulate(problem: Problem, method: str, dt: float, steps: int, record_every: int,
@@ -206,17 +238,21 @@ def _core_simulate(problem: Problem, method: str, dt: float, steps: int, record_
 def _simulate(problem: Problem, method: str, dt: float, steps: int, record_every: int, timed: bool,
               bar: _Progress | None = None) -> _Run:
     """One run of `method`; timed: repeated (up to 5 times, until MIN_TIMED_SECONDS, once if longer than
-    LONG_RUN_SECONDS) keeping the fastest time per step. `bar` follows the steps."""
-    best, spent = math.inf, 0.0
+    LONG_RUN_SECONDS) keeping the fastest time per step and the repeats' spread. `bar` follows the steps."""
+    times: list[float] = []
     for repeat in range(5 if timed else 1):
         at = bar.begin(steps, f"{method} dt={dt:.3g}") if bar is not None else None
         result = _core_simulate(problem, method, dt, steps, record_every, at)
         if bar is not None:
             bar.end(steps)
-        best, spent = min(best, result.elapsed_seconds / max(steps, 1)), spent + result.elapsed_seconds
+        times.append(result.elapsed_seconds / max(steps, 1))
+        spent = sum(times) * max(steps, 1)
         if result.diverged or spent >= LONG_RUN_SECONDS or (repeat >= 1 and spent >= MIN_TIMED_SECONDS):
             break
-    return _Run(_states(result), np.asarray(result.quaternion_norm_error), bool(result.diverged), best)
+    fastest = sorted(times)[:2]  # the gap between the two fastest: how well the minimum repeats
+    best = fastest[0]
+    noise = (fastest[1] - best) / best if len(fastest) > 1 and best > 0 else math.nan
+    return _Run(_states(result), np.asarray(result.quaternion_norm_error), bool(result.diverged), best, noise)
 
 
 def _reference_method(methods_info: dict[str, dict[str, Any]]) -> str:
@@ -536,18 +572,110 @@ def _fmt(x: Any) -> str:
 
 
 # ---------------------------------------------------------------------------------------------
+# ranking: timing noise, the cheapest run, the Pareto front
+
+
+def measure_unit(measure: str) -> str:
+    """The unit of `measure` (a name from MEASURES): "rad", "m", "m/s" or "-" (dimensionless)."""
+    _check_measure(measure)
+    return _UNITS[measure.removeprefix("final_").removeprefix("max_")]
+
+
+def measure_help() -> list[str]:
+    """One line per quantity of MEASURES: its names, unit and meaning (for --help)."""
+    lines = []
+    for quantity, meaning in _MEANINGS.items():
+        names = [m for m in MEASURES if m.removeprefix("final_").removeprefix("max_") == quantity]
+        unit = "" if _UNITS[quantity] == "-" else f" [{_UNITS[quantity]}]"
+        lines.append(f"{', '.join(names)}{unit}: {meaning}")
+    return lines
+
+
+def timing_noise(rows: Iterable[Mapping[str, Any]]) -> float:
+    """The sweep's relative timing noise: the NOISE_QUANTILE quantile of the rows' time_noise (the gap
+    between the two fastest of each run's repeated timings, relative), 0 if no run was timed twice."""
+    spreads = [float(r["time_noise"]) for r in rows
+               if _is_real(r.get("time_noise")) and math.isfinite(r["time_noise"])]
+    return float(np.quantile(spreads, NOISE_QUANTILE)) if spreads else 0.0
+
+
+def _equal_within(t_a: float, t_b: float, noise: float) -> bool:
+    """Two times [s] equal within the relative noise: the ranges t (1 +- noise) overlap."""
+    low, high = min(t_a, t_b), max(t_a, t_b)
+    return high * (1.0 - noise) <= low * (1.0 + noise)
+
+
+def cheapest(rows: Sequence[Mapping[str, Any]], cost: str = "time", noise: float = 0.0) -> Mapping[str, Any] | None:
+    """The cheapest of `rows` (None if empty). cost 'evaluations': fewest total_evaluations, then
+    steps. cost 'time': among the rows whose total_time equals the fastest's within the relative
+    `noise` (ranges t (1 +- noise) overlap), the fewest total_evaluations, then steps, then time: a
+    recommendation that timing noise cannot flip."""
+    _check_cost(cost)
+    if not _is_real(noise):
+        raise TypeError(f"noise: expected a relative timing noise (a finite number >= 0), got {noise!r}")
+    if not (math.isfinite(noise) and noise >= 0):
+        raise ValueError(f"noise: expected a relative timing noise (a finite number >= 0), got {noise!r}")
+    if not rows:
+        return None
+    if cost == "evaluations":
+        return min(rows, key=lambda r: (r["total_evaluations"], r["steps"], r["total_time"]))
+    fastest = min(r["total_time"] for r in rows)
+    tied = [r for r in rows if _equal_within(r["total_time"], fastest, noise)]
+    return min(tied, key=lambda r: (r["total_evaluations"], r["steps"], r["total_time"]))
+
+
+def pareto_front(points: Sequence[tuple[float, float]]) -> list[int]:
+    """Indices of the non-dominated (cost, error) points, by ascending cost: no other point has cost
+    and error both <= and one of them <. Equal points are all kept."""
+    order = sorted(range(len(points)), key=lambda i: (points[i][0], points[i][1]))
+    front: list[int] = []
+    for i in order:
+        cost, error = points[i]
+        if not front:
+            front.append(i)
+            continue
+        last_cost, last_error = points[front[-1]]
+        # sorted by cost: i is dominated iff an earlier point has error < its own, or equal error at lower cost
+        if error < last_error or (error == last_error and cost == last_cost):
+            front.append(i)
+    return front
+
+
+def _ranking_rule(cost: str, noise: float) -> str:
+    if cost == "evaluations":
+        return "ranked by derivative evaluations, then steps"
+    return (f"ranked by wall time, times equal within the timing noise ({100 * noise:.2g} %: the gap between "
+            f"the two fastest repeats of a run, {100 * NOISE_QUANTILE:g}th percentile), then by fewer derivative "
+            "evaluations")
+
+
+# ---------------------------------------------------------------------------------------------
 # results
+
+
+def _cost_text(r: Mapping[str, Any]) -> str:
+    return (f"{_fmt(r['total_time'])} s ({_fmt(r['time_per_step'] * 1e9)} ns/step), "
+            f"{r['total_evaluations']} derivative evaluations")
+
+
+def _run_name(r: Mapping[str, Any]) -> str:
+    """`method with dt = ... s (n steps)`, or `exact (closed form)` for a method of order 0."""
+    if r.get("order") == 0:
+        return f"{r['method']} (closed form)"
+    return f"{r['method']} with dt = {_fmt(r['dt'])} s ({r['steps']} steps)"
 
 
 @dataclass
 class Recommendation:
-    """The cheapest (method, dt) whose `measure` is <= tolerance (row is None if none is)."""
+    """The cheapest (method, dt) whose `measure` is <= tolerance (row is None if none is), `cost`
+    ranked as `cheapest` does with the sweep's relative timing `noise`."""
 
     measure: str
     tolerance: float
     cost: str
     row: dict[str, Any] | None
     best: dict[str, Any] | None  # the most accurate run, for "none meets it"
+    noise: float = 0.0
 
     @property
     def met(self) -> bool:
@@ -556,16 +684,15 @@ class Recommendation:
     def __str__(self) -> str:
         if self.row is not None:
             r = self.row
-            return (f"recommendation: {r['method']} with dt = {_fmt(r['dt'])} s ({r['steps']} steps): "
-                    f"{self.measure} = {_fmt(r[self.measure])} <= tolerance {_fmt(self.tolerance)}, "
-                    f"cost {_fmt(r['total_time'])} s ({_fmt(r['time_per_step'] * 1e9)} ns/step), "
-                    f"{r['total_evaluations']} derivative evaluations; reference ({r['reference']}) error "
-                    f"{_fmt(r['reference_error'])}")
+            return (f"recommendation: {_run_name(r)}: {self.measure} = {_fmt(r[self.measure])} "
+                    f"{_unit_text(self.measure)}<= tolerance {_fmt(self.tolerance)}, cost {_cost_text(r)}; "
+                    f"reference ({r['reference']}) error {_fmt(r['reference_error'])}; "
+                    f"{_ranking_rule(self.cost, self.noise)}")
         if self.best is None:
             return f"recommendation: none; every run diverged ({self.measure}, tolerance {_fmt(self.tolerance)})"
         b = self.best
-        text = (f"recommendation: none meets {self.measure} <= {_fmt(self.tolerance)}; best is {b['method']} "
-                f"with dt = {_fmt(b['dt'])} s: {self.measure} = {_fmt(b[self.measure])} at {_fmt(b['total_time'])} s")
+        text = (f"recommendation: none meets {self.measure} <= {_fmt(self.tolerance)}; best is {_run_name(b)}: "
+                f"{self.measure} = {_fmt(b[self.measure])} at {_fmt(b['total_time'])} s")
         if str(b.get("reference", "")).startswith("unreliable"):
             return (text + f"; its reference is unreliable (error {_fmt(b['reference_error'])}, see the reference "
                     f"checks): errors below it cannot be measured")
@@ -618,44 +745,101 @@ class TradeoffResult:
             return math.inf if str(r.get("reference", "")).startswith("unreliable") else float(r[measure])
 
         meeting = [r for r in usable if bound(r) <= tolerance]
-        row = min(meeting, key=lambda r: (r[_COSTS[cost]], r[measure])) if meeting else None
+        noise = timing_noise(self.rows)
+        row: Any = cheapest(meeting, cost, noise)
         best = min(usable, key=lambda r: (r[measure], r[_COSTS[cost]])) if usable else None
-        return Recommendation(measure, float(tolerance), cost, row, best)
+        return Recommendation(measure, float(tolerance), cost, row, best, noise)
+
+    def pareto(self, measure: str | None = None, cost: str | None = None) -> list[dict[str, Any]]:
+        """The runs on the Pareto front of (cost, `measure`) (default: the sweep's cost and measure):
+        those no other run beats in both, by ascending cost; diverged and non-finite runs excluded."""
+        measure = self.measure if measure is None else measure
+        _check_measure(measure)
+        cost = self.cost if cost is None else cost
+        _check_cost(cost)
+        usable = [r for r in self.rows if not r["diverged"] and math.isfinite(r.get(measure, math.nan))]
+        front = pareto_front([(float(r[_COSTS[cost]]), float(r[measure])) for r in usable])
+        return [usable[i] for i in front]
 
     def methods(self) -> list[str]:
         return list(dict.fromkeys(r["method"] for r in self.rows))
 
     # -- text
-    def to_table(self, columns: Sequence[str] = ("method", "dt", "steps", "time_per_step", "total_evaluations",
-                                                  "final_state_error", "max_state_error", "max_attitude_error",
-                                                  "energy_drift", "momentum_drift", "quaternion_norm_error",
-                                                  "observed_order", "order_note", "stability")) -> str:
-        """A fixed-width text table of `columns` (names from COLUMNS; time_per_step shown in ns)."""
-        columns = _check_columns(columns)
-        headers = [("ns/step" if c == "time_per_step" else c) for c in columns]
-        cells = []
-        for r in self.rows:
-            line = []
-            for c in columns:
-                v = r.get(c, "")
-                if c == "time_per_step" and v != "":
-                    v = v * 1e9
-                if c == "stability":
-                    v = "beyond limit" if v else ""
-                if c == "method" and r["diverged"]:
-                    v = f"{v} (diverged)"
-                line.append(_fmt(v))
-            cells.append(line)
-        widths = [max(len(h), *(len(line[i]) for line in cells)) if cells else len(h) for i, h in enumerate(headers)]
-        out = [f"{self.problem}: horizon {_fmt(self.horizon)} s, measure {self.measure}"]
-        checks = dict.fromkeys(f"  dt = {_fmt(r['dt'])}: reference {r['reference']}, {r['reference_check']}"
-                               for r in sorted(self.rows, key=lambda r: -r["dt"]) if r.get("reference_check"))
-        out += list(checks)
-        out += ["  ".join(h.ljust(w) for h, w in zip(headers, widths)), "  ".join("-" * w for w in widths)]
-        out += ["  ".join(v.ljust(w) for v, w in zip(line, widths)) for line in cells]
+    def to_table(self, width: int = 100) -> str:
+        """The report for a terminal, no line wider than `width` characters (>= 60; or than the fixed
+        columns and a 10-character note, where the method names make those wider): the problem and
+        reference, one row per run (method, dt [s], steps, ns/step, the sweep's measure with its unit,
+        observed order, short notes explained below the table; a closed-form method once, without dt),
+        then the recommendation or, without a tolerance, the Pareto front. Every column of every run:
+        to_csv / to_json."""
+        if isinstance(width, (bool, np.bool_)) or not isinstance(width, (int, np.integer)):
+            raise TypeError(f"width: expected an integer >= 60 (characters), got {width!r}")
+        if width < 60:
+            raise ValueError(f"width: expected an integer >= 60 (characters), got {width!r}")
+        front = self.pareto() if self.tolerance is None else []
+        cells, used = self._table_cells(front)
+        headers = ["method", "dt [s]", "steps", "ns/step", f"error [{measure_unit(self.measure)}]", "order", "note"]
+        widths = [max([len(h)] + [len(c[i]) for c in cells if i not in (1, 2) or c[2] != _MERGED])
+                  for i, h in enumerate(headers[:-1])]
+        note_width = max(10, width - sum(widths) - 2 * len(widths))
+        out = self._title(width)
+        out += [_table_line(headers, widths, note_width)[0], "  ".join("-" * w for w in widths + [note_width])]
+        for c in cells:
+            out += _table_line(c, widths, note_width)
+        legend = [f"{tag} = {_TAGS[tag]}" for tag in _TAGS if tag in used]
+        out += _wrap("order: the observed order of convergence (- where it cannot be measured; the reason in note). "
+                     + ("notes: " + "; ".join(legend) + "." if legend else ""), width)
         if self.recommendation is not None:
-            out.append(str(self.recommendation))
+            out += _wrap(str(self.recommendation), width)
+        else:
+            out += self._front_text(front, width)
         return "\n".join(out)
+
+    def _title(self, width: int) -> list[str]:
+        """The problem, the measure and what it is measured against."""
+        title = f"{self.problem}, {_fmt(self.horizon)} s: error = {self.measure} [{measure_unit(self.measure)}] vs "
+        references = list(dict.fromkeys(str(r["reference"]) for r in self.rows))
+        if references == ["exact"]:
+            return _wrap(title + "the exact solution", width)
+        checked = {r["dt"]: r for r in self.rows if r.get("reference_check")}
+        bad = [r for r in checked.values() if str(r["reference"]).startswith("unreliable")]
+        out = _wrap(title + f"a refined reference ({', '.join(references)}), checked against an independent one at "
+                    f"each dt: {len(checked) - len(bad)} of {len(checked)} agree", width)
+        for r in bad:
+            out += _wrap(f"  dt = {_fmt(r['dt'])} s: {r['reference_check']}", width)
+        return out
+
+    def _table_cells(self, front: Sequence[Mapping[str, Any]]) -> tuple[list[list[str]], set[str]]:
+        """The table's cells (a closed-form method's rows merged into one) and the note tags used."""
+        rec = self.recommendation.row if self.recommendation is not None else None
+        on_front = {_run_key(r) for r in front}
+        cells, used = [], set()
+        for method in self.methods():
+            mine = [r for r in self.rows if r["method"] == method]
+            closed = all(r.get("order") == 0 for r in mine)
+            for r in ([max(mine, key=lambda r: r["steps"])] if closed else mine):
+                tags = _tags(r, closed, rec is not None and (_run_key(r) == _run_key(rec) or
+                                                              (closed and rec["method"] == method)),
+                             _run_key(r) in on_front or (closed and any(f["method"] == method for f in front)))
+                used.update(tags)
+                order = r.get("observed_order", math.nan)
+                cells.append([method, "closed form" if closed else _fmt(r["dt"]), _MERGED if closed else str(r["steps"]),
+                              _fmt(r["time_per_step"] * 1e9), _fmt(r[self.measure]),
+                              f"{order:.2f}" if _is_real(order) and math.isfinite(order) else "-", ", ".join(tags)])
+        return cells, used
+
+    def _front_text(self, front: Sequence[Mapping[str, Any]], width: int) -> list[str]:
+        """Without a tolerance: say so, and list the Pareto front."""
+        cost = "wall time" if self.cost == "time" else "derivative evaluations"
+        out = _wrap("no tolerance given (--tolerance, or tolerance in the problem file's [tradeoff]): no "
+                    f"recommendation. The Pareto front of ({cost}, {self.measure}), the runs no other run beats in "
+                    "both (marked 'front'):", width)
+        unit = measure_unit(self.measure)
+        for r in front:
+            where = "closed form" if r.get("order") == 0 else f"dt = {_fmt(r['dt'])} s"
+            out += _wrap(f"  {r['method']}, {where}: {_fmt(r[self.measure])}{'' if unit == '-' else ' ' + unit} in "
+                         f"{_fmt(r['total_time'])} s, {r['total_evaluations']} evaluations", width)
+        return out if front else out + ["  (none: every run diverged)"]
 
     def __str__(self) -> str:
         return self.to_table()
@@ -681,7 +865,7 @@ class TradeoffResult:
         rows only: problem (name), horizon [s] (nan: unknown), measure and tolerance are given here."""
         text = _read_text(path_or_text)
         reader = csv.DictReader(io.StringIO(text))
-        missing = [c for c in COLUMNS if c not in (reader.fieldnames or [])]
+        missing = [c for c in COLUMNS if c not in (reader.fieldnames or []) and c not in _OPTIONAL_COLUMNS]
         if missing:
             raise ValueError(f"path_or_text: expected a CSV file or text written by to_csv (columns {', '.join(COLUMNS)}), "
                              f"got {_describe_text(path_or_text, text)} without {', '.join(missing[:3])}"
@@ -694,16 +878,19 @@ class TradeoffResult:
         return TradeoffResult(problem, horizon, measure, tolerance, rows)
 
     def to_dict(self) -> dict[str, Any]:
+        """The sweep's settings, rows and recommendation (with the relative timing noise it ranked with)."""
         rec = self.recommendation
         return {"problem": self.problem, "horizon": self.horizon, "measure": self.measure,
                 "tolerance": self.tolerance, "cost": self.cost, "rows": self.rows,
                 "recommendation": None if rec is None else {"met": rec.met, "text": str(rec), "row": rec.row,
-                                                            "best": rec.best}}
+                                                            "best": rec.best, "timing_noise": rec.noise}}
 
     def to_json(self, path: str | Path | None = None) -> str:
-        """JSON with the sweep's settings, rows and recommendation (inf/nan as JSON strings)."""
+        """JSON with the sweep's settings, rows and recommendation: numbers as numbers, null where a number
+        is not finite (nan: not measured, e.g. observed_order; inf: the errors of a diverged run, whose
+        `diverged` is true). read_json restores both."""
         path = _check_path(path, "path", optional=True)
-        text = json.dumps(_json_safe(self.to_dict()), indent=1)
+        text = json.dumps(_json_safe(self.to_dict()), indent=1, allow_nan=False)
         if path is not None:
             Path(path).write_text(text)
         return text
@@ -714,20 +901,60 @@ class TradeoffResult:
         text = _read_text(path_or_text)
         expected = "a JSON file or text written by to_json (keys problem, horizon, measure, tolerance, rows)"
         try:
-            d = _json_restore(json.loads(text))
+            d = json.loads(text)
         except json.JSONDecodeError as error:
             raise ValueError(f"path_or_text: expected {expected}, got {_describe_text(path_or_text, text)} "
                              f"({error})") from None
         if not isinstance(d, dict) or any(k not in d for k in ("problem", "horizon", "measure", "tolerance", "rows")):
             raise ValueError(f"path_or_text: expected {expected}, got {_describe_text(path_or_text, text)}")
-        return TradeoffResult(d["problem"], d["horizon"], d["measure"], d["tolerance"], d["rows"], d.get("cost", "time"))
+        rows = [_json_row(r) for r in d["rows"]] if isinstance(d["rows"], list) else d["rows"]
+        horizon = math.nan if d["horizon"] is None else d["horizon"]
+        return TradeoffResult(d["problem"], horizon, d["measure"], d["tolerance"], rows, d.get("cost", "time"))
 
     # -- plot
+    def _plot_axis(self, ax: Any, cost: str, measure: str) -> None:
+        """One work-precision panel: `measure` against `cost` per method (log-log), a closed-form method as
+        markers without line, zeros (an exact error, no evaluations), which a log axis cannot show, drawn
+        on the axis itself (its floor) with a downward marker, the tolerance and the recommendation."""
+        from matplotlib.transforms import blended_transform_factory
+
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        rows = [r for r in self.rows if not r["diverged"] and math.isfinite(r[measure])]
+        # a zero coordinate goes to the axes' edge (axes fraction 0), the other stays data
+        on_floor = {(False, True): blended_transform_factory(ax.transData, ax.transAxes),
+                    (True, False): blended_transform_factory(ax.transAxes, ax.transData),
+                    (True, True): ax.transAxes}
+        for i, method in enumerate(self.methods()):
+            mine = [r for r in rows if r["method"] == method]
+            closed = bool(mine) and all(r.get("order") == 0 for r in mine)
+            on_scale = [r for r in mine if r[measure] > 0 and r[cost] > 0]
+            name = f"{method} (closed form)" if closed else method
+            if on_scale:
+                ax.plot([r[cost] for r in on_scale], [r[measure] for r in on_scale], "s" if closed else "o-",
+                        color=f"C{i % 10}", label=name)
+            for zero, transform in on_floor.items():
+                at_floor = [r for r in mine if (r[cost] <= 0, r[measure] <= 0) == zero]
+                if at_floor:
+                    ax.plot([0.0 if zero[0] else r[cost] for r in at_floor],
+                            [0.0 if zero[1] else r[measure] for r in at_floor], "v", markersize=9,
+                            color=f"C{i % 10}", clip_on=False, transform=transform,
+                            label=f"{name}: 0, drawn on the axis")
+        if self.tolerance is not None:
+            ax.axhline(self.tolerance, color="gray", linestyle="--", linewidth=1, label="tolerance")
+        rec = self.recommendation
+        if rec is not None and rec.row is not None:
+            zero = (rec.row[cost] <= 0, rec.row[measure] <= 0)
+            ax.plot([0.0 if zero[0] else rec.row[cost]], [0.0 if zero[1] else rec.row[measure]], "o", markersize=14,
+                    markerfacecolor="none", markeredgecolor="black", clip_on=False,
+                    transform=on_floor.get(zero, ax.transData), label="recommended")
+
     def plot(self, path: str | Path, formats: Sequence[str] = ("png", "svg"),
              measure: str | None = None) -> list[Path]:
-        """Work-precision plot (log-log; `measure` against wall time and against derivative
-        evaluations, one line per method, the tolerance as a dashed line, the recommendation
-        circled); written as path.<format> for each format. Needs matplotlib (pip install
+        """Work-precision plot (log-log; `measure` [its unit] against wall time [s] and against derivative
+        evaluations, one line per method, a closed-form method as markers, a zero error or cost at the
+        axis floor (a downward triangle), the tolerance as a dashed line, the recommendation circled,
+        the legend outside the axes); written as path.<format> for each format. Needs matplotlib (pip install
         'rigiddyn[plot]'). Returns the files written."""
         try:
             import matplotlib
@@ -742,24 +969,21 @@ class TradeoffResult:
         from matplotlib.backend_bases import FigureCanvasBase
 
         formats = _check_formats(formats, FigureCanvasBase.get_supported_filetypes())
-        fig, axes = plt.subplots(1, 2, figsize=(11, 4.5), constrained_layout=True)
+        fig, axes = plt.subplots(1, 2, figsize=(12, 4.5), constrained_layout=True)
+        unit = measure_unit(measure)
         for ax, cost, label in ((axes[0], "total_time", "wall time of the run [s]"),
-                                (axes[1], "total_evaluations", "derivative evaluations")):
-            for method in self.methods():
-                rows = [r for r in self.rows if r["method"] == method and not r["diverged"]
-                        and r[measure] > 0 and math.isfinite(r[measure])]
-                if rows:
-                    ax.loglog([r[cost] for r in rows], [r[measure] for r in rows], "o-", label=method)
-            if self.tolerance is not None:
-                ax.axhline(self.tolerance, color="gray", linestyle="--", linewidth=1, label="tolerance")
-            rec = self.recommendation
-            if rec is not None and rec.row is not None and rec.row[measure] > 0:
-                ax.loglog([rec.row[cost]], [rec.row[measure]], "o", markersize=14, markerfacecolor="none",
-                          markeredgecolor="black", label="recommended")
+                                (axes[1], "total_evaluations", "derivative evaluations of the run")):
+            self._plot_axis(ax, cost, measure)
             ax.set_xlabel(label)
-            ax.set_ylabel(measure)
+            ax.set_ylabel(f"{measure} [{unit}]" if unit != "-" else f"{measure} (dimensionless)")
             ax.grid(True, which="both", alpha=0.3)
-        axes[0].legend(fontsize=8)
+        labels: dict[str, Any] = {}
+        for ax in axes:
+            for handle, text in zip(*ax.get_legend_handles_labels()):
+                labels.setdefault(text, handle)
+        # outside the axes, right of the second: it never covers data
+        axes[1].legend(labels.values(), labels.keys(), loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0,
+                       fontsize=8)
         fig.suptitle(f"{self.problem}: work-precision over {_fmt(self.horizon)} s")
         written = []
         for fmt in formats:
@@ -768,6 +992,65 @@ class TradeoffResult:
             written.append(out)
         plt.close(fig)
         return written
+
+
+_MERGED = "\0"  # the steps cell of a closed-form row: its dt cell ("closed form") spans both
+# the table's note tags, in the order they are shown, and their explanation below the table
+_TAGS = {
+    "diverged": "the state became non-finite (errors inf)",
+    "unstable": "dt beyond the method's stability limit for this spin (see the warning)",
+    "recommended": "the recommendation below",
+    "front": "on the Pareto front: no other run is both cheaper and more accurate",
+    "exact here": "exact on this problem (torque-free), the error is round-off",
+    "round-off": "error at round-off",
+    "ref. limit": f"error within {REFERENCE_MARGIN:g}x the reference's",
+    "pre-asympt.": "slope not yet steady (before the asymptotic range)",
+    "unconfirmed": "a single slope, none beside it to confirm it",
+    "error O(1)": "errors of 1 rad (or 100 %) or more at this dt and the previous one: no accuracy left",
+    "same dt": "the same dt as the previous row",
+    "bad ref.": "the reference failed its independent check (see above)",
+}
+_ORDER_TAGS = {"exact on this problem": "exact here", "error at round-off": "round-off", "same dt": "same dt",
+               "error O(1)": "error O(1)",
+               f"error within {REFERENCE_MARGIN:g}x the reference's": "ref. limit"}
+
+
+def _tags(r: Mapping[str, Any], closed: bool, recommended: bool, front: bool) -> list[str]:
+    """The short notes of a row (see _TAGS)."""
+    note = str(r.get("order_note", ""))
+    order_tag = _ORDER_TAGS.get(note, "pre-asympt." if note.startswith("not asymptotic") else
+                                "unconfirmed" if note.startswith("unconfirmed") else "")
+    flags = {"diverged": r["diverged"], "unstable": bool(r.get("stability")), "recommended": recommended,
+             "front": front, "bad ref.": str(r.get("reference", "")).startswith("unreliable"),
+             order_tag: bool(order_tag) and not closed}  # a closed form's dt cell says why it has no order
+    return [t for t in _TAGS if flags.get(t)]
+
+
+def _run_key(r: Mapping[str, Any]) -> tuple[Any, ...]:
+    return r["method"], r["dt"], r["steps"]
+
+
+def _wrap(text: str, width: int) -> list[str]:
+    """text in lines of at most `width` characters, continuation lines indented by 4."""
+    indent = " " * (len(text) - len(text.lstrip(" ")))
+    return textwrap.wrap(text, width, initial_indent="", subsequent_indent=indent + "    ",
+                         break_long_words=True, break_on_hyphens=False) or [""]
+
+
+def _table_line(cells: Sequence[str], widths: Sequence[int], note_width: int) -> list[str]:
+    """One table row (the last cell, the note, wrapped to note_width on continuation lines)."""
+    parts = [c.ljust(w) for c, w in zip(cells[:-1], widths)]
+    if cells[2] == _MERGED:  # "closed form" over the dt and steps columns
+        parts[1:3] = [cells[1].ljust(widths[1] + 2 + widths[2])]
+    head = "  ".join(parts)
+    notes = textwrap.wrap(cells[-1], note_width, break_long_words=True, break_on_hyphens=False) or [""]
+    blank = " " * len(head)
+    return [((head if i == 0 else blank) + "  " + n).rstrip() for i, n in enumerate(notes)]
+
+
+def _unit_text(measure: str) -> str:
+    unit = measure_unit(measure)
+    return "" if unit == "-" else f"{unit} "
 
 
 def _is_file(x: Any) -> bool:
@@ -851,15 +1134,12 @@ def _check_name_list(values: Any, name: str, allowed: Sequence[str]) -> list[str
     return names
 
 
-def _check_columns(columns: Any) -> list[str]:
-    return _check_name_list(columns, "columns", COLUMNS)
-
-
 def _check_formats(formats: Any, supported: Mapping[str, str]) -> list[str]:
     return _check_name_list(formats, "formats", sorted(supported))
 
 
 _INT_COLUMNS = {"steps", "order", "evaluations_per_step", "total_evaluations"}
+_OPTIONAL_COLUMNS = {"time_noise"}  # absent from the CSV files of earlier versions
 _STR_COLUMNS = {"method", "reference", "reference_check", "order_note", "stability"}
 
 
@@ -879,9 +1159,13 @@ def _typed_row(r: dict[str, str]) -> dict[str, Any]:
     return out
 
 
+_FLOAT_COLUMNS = set(COLUMNS) - _INT_COLUMNS - _STR_COLUMNS - {"diverged"}
+
+
 def _json_safe(x: Any) -> Any:
+    """x with every non-finite float as None (JSON null: JSON has no nan or inf)."""
     if isinstance(x, float) and not math.isfinite(x):
-        return str(x)
+        return None
     if isinstance(x, dict):
         return {k: _json_safe(v) for k, v in x.items()}
     if isinstance(x, list):
@@ -889,14 +1173,13 @@ def _json_safe(x: Any) -> Any:
     return x
 
 
-def _json_restore(x: Any) -> Any:
-    if isinstance(x, str) and x in ("inf", "-inf", "nan"):
-        return float(x)
-    if isinstance(x, dict):
-        return {k: _json_restore(v) for k, v in x.items()}
-    if isinstance(x, list):
-        return [_json_restore(v) for v in x]
-    return x
+def _json_row(row: Any) -> Any:
+    """A row read from JSON: null in a number column back to inf (an error of a diverged run) or nan."""
+    if not isinstance(row, dict):
+        return row
+    diverged = row.get("diverged") is True
+    return {k: ((math.inf if diverged and k in MEASURES else math.nan) if v is None and k in _FLOAT_COLUMNS else v)
+            for k, v in row.items()}
 
 
 def _check_measure(measure: Any) -> None:
@@ -989,10 +1272,12 @@ def _exact_on(problem: Problem, info: dict[str, Any]) -> bool:
 def _observed_orders(rows: list[dict[str, Any]], measure: str, exact_methods: set[str]) -> None:
     """observed_order and order_note of every row (see the module docstring): the slope from the next
     larger dt, kept only in the asymptotic range."""
+    # an angle [rad] or a relative error of 1 or more says the run has lost all accuracy: no slope
+    saturates = measure_unit(measure) in ("rad", "-")
     for method in dict.fromkeys(r["method"] for r in rows):
         mine = sorted((r for r in rows if r["method"] == method), key=lambda r: -r["dt"])
         slopes: list[float | None] = [None]  # slope of the pair (i - 1, i), None where it says nothing
-        notes = ["coarsest step"]
+        notes = ["exact on this problem" if method in exact_methods else "coarsest step"]
         for coarse, fine in zip(mine[:-1], mine[1:]):
             e0, e1 = coarse[measure], fine[measure]
             floor = max(ROUND_OFF_PER_STEP * max(coarse["steps"], fine["steps"]),
@@ -1004,6 +1289,8 @@ def _observed_orders(rows: list[dict[str, Any]], measure: str, exact_methods: se
                 note = "diverged"
             elif coarse["dt"] == fine["dt"]:
                 note = "same dt"
+            elif saturates and min(e0, e1) >= 1.0:
+                note = "error O(1)"
             elif min(e0, e1) <= REFERENCE_MARGIN * max(coarse["reference_error"], fine["reference_error"]):
                 note = f"error within {REFERENCE_MARGIN:g}x the reference's"
             elif min(e0, e1) <= floor:
@@ -1055,8 +1342,10 @@ def tradeoff(problem: Problem | str | Path, methods: Iterable[str] | None = None
     default final_attitude_error). cost: 'time' or 'evaluations' for the recommendation.
     samples: states compared per run (>= 1); max_reference_steps: the Richardson reference's step budget.
     progress: print the estimated cost on stderr first (a timed probe of each method), then a progress
-    bar while stderr is a terminal. Emits one StabilityWarning listing the runs whose dt is beyond the
-    method's linear stability limit (rigiddyn.stability); diverged runs get inf errors. Every argument
+    bar while stderr is a terminal. Emits one StabilityWarning with one line per method that has runs
+    whose dt is beyond its linear stability limit (rigiddyn.stability; each run's message in its row's
+    `stability`); diverged runs get inf errors. The recommendation by time treats times within the
+    measured timing noise as equal (see the module docstring). Every argument
     is checked: TypeError or ValueError naming it. Ctrl-C stops the sweep with KeyboardInterrupt.
     """
     problem = _as_problem(problem, horizon)
@@ -1086,7 +1375,7 @@ def tradeoff(problem: Problem | str | Path, methods: Iterable[str] | None = None
     total = 1
     if progress:
         estimate = _estimate(problem, methods, grid, None if exact else ref_method)
-        print(estimate.text, file=sys.stderr, flush=True)
+        print("\n".join(_wrap(estimate.text, 100)), file=sys.stderr, flush=True)
         total = estimate.steps
     bar = _Progress(total, bool(progress) and sys.stderr.isatty())
     sweeps: list[tuple[int, float, list[_Run], _Reference | None]] = []
@@ -1102,13 +1391,13 @@ def tradeoff(problem: Problem | str | Path, methods: Iterable[str] | None = None
     finally:
         bar.close()
     rows: list[dict[str, Any]] = []
-    unstable: list[str] = []
+    unstable: list[tuple[str, float, str]] = []
     for steps, dt, runs, ref in sweeps:
         for method, run in zip(methods, runs):
             m = info[method]
             row: dict[str, Any] = {"method": method, "dt": dt, "steps": steps, "order": m["order"],
                                    "evaluations_per_step": m["evaluations"], "time_per_step": run.time_per_step,
-                                   "total_time": run.time_per_step * steps,
+                                   "time_noise": run.time_noise, "total_time": run.time_per_step * steps,
                                    "total_evaluations": m["evaluations"] * steps}
             if run.diverged:
                 row.update({k: math.inf for k in MEASURES})
@@ -1117,7 +1406,7 @@ def tradeoff(problem: Problem | str | Path, methods: Iterable[str] | None = None
                 row.update(_measures(problem, run.states, ref_states, run.quaternion_norm_error))
             message = stability_message(method, dt, steps, problem.inertia_com, problem.w_B, problem.torque_free)
             if message:
-                unstable.append(message)
+                unstable.append((method, dt, message))
             if ref is None:
                 reference, reference_error, reference_check = "exact", 0.0, ""
             else:
@@ -1131,9 +1420,23 @@ def tradeoff(problem: Problem | str | Path, methods: Iterable[str] | None = None
     _observed_orders(rows, measure, {m for m in methods if _exact_on(problem, info[m])})
     rows.sort(key=lambda r: (methods.index(r["method"]), -r["dt"]))
     if unstable:
-        warnings.warn("tradeoff: some steps are beyond the method's stability limit:\n  " + "\n  ".join(unstable),
-                      StabilityWarning, stacklevel=2)
+        warnings.warn(_stability_summary(unstable), StabilityWarning, stacklevel=2)
     return TradeoffResult(problem.name, problem.horizon, measure, tolerance, rows, cost)
+
+
+def _stability_summary(unstable: Sequence[tuple[str, float, str]]) -> str:
+    """One line per method from (method, dt [s], stability message) of the runs beyond a stability
+    limit: its steps, and the message of its largest step (the full messages: the rows' `stability`)."""
+    lines = ["tradeoff: dt beyond the method's stability limit for this spin (rows marked 'unstable'; every "
+             "run's reason: column stability of the CSV/JSON):"]
+    for method in dict.fromkeys(m for m, _, _ in unstable):
+        mine = sorted(((dt, text) for m, dt, text in unstable if m == method), reverse=True)
+        dts = (", ".join(_fmt(dt) for dt, _ in mine) + " s" if len(mine) <= 3 else
+               f"{_fmt(mine[0][0])} to {_fmt(mine[-1][0])} s ({len(mine)} runs)")
+        # the figure beyond the limit at the largest step: stability_message's text between ": " and "; "
+        figure = mine[0][1].split(": ", 1)[-1].split("; ", 1)[0]
+        lines.append(f"  {method} at dt = {dts}: at {_fmt(mine[0][0])} s {figure}")
+    return "\n".join(lines)
 
 
 def _check_references(problem: Problem, sweeps: Sequence[tuple[int, float, list[_Run], _Reference | None]],

@@ -1,0 +1,115 @@
+"""The command ``python -m rigiddyn tradeoff PROBLEM``: the work-precision report of rigiddyn.tradeoff."""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+import sys
+import tempfile
+import textwrap
+from pathlib import Path
+
+OUTPUTS = ("tradeoff.csv", "tradeoff.json", "tradeoff.png", "tradeoff.svg")  # written to --out
+
+
+def _floats(text: str) -> list[float]:
+    return [float(x) for x in text.replace(",", " ").split()]
+
+
+def _names(text: str) -> list[str]:
+    return [x for x in text.replace(",", " ").split() if x]
+
+
+def _epilog() -> str:
+    """The methods (from the core's method table) and the error measures, for --help."""
+    from rigiddyn import _core
+    from rigiddyn.work_precision import measure_help
+
+    def item(text: str) -> str:
+        return textwrap.fill(text, 100, initial_indent="  ", subsequent_indent="      ")
+
+    methods = [item(f"{m['name']}: order {m['order']}, {m['evaluations']} derivative evaluations per step"
+                    + (" (closed form: torque-free bodies only)" if m["order"] == 0 else ""))
+               for m in _core.methods()]
+    measures = [item(line) for line in measure_help()]
+    return "\n".join(["methods (--methods):", *methods,
+                      "measures (--measure; final_: at the horizon, max_: the largest over the run):", *measures])
+
+
+def add_tradeoff_parser(sub: "argparse._SubParsersAction[argparse.ArgumentParser]") -> None:
+    """The `tradeoff` subcommand's arguments."""
+    p = sub.add_parser(
+        "tradeoff",
+        help="measure speed against accuracy of every method and step on a problem file; recommend the cheapest",
+        description=textwrap.fill(
+            "Run each method at each step on PROBLEM (a TOML file or a shipped example: t_handle, fast_top, "
+            "satellite_torque, projectile), compare with the exact solution or a refined reference, print a "
+            "table 100 columns wide and the recommendation (without a tolerance: the Pareto front), and "
+            "write every column to tradeoff.csv/.json and the plot to tradeoff.png/.svg in --out.", 100),
+        epilog=_epilog(),
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    p.add_argument("problem", help="problem .toml path or example name")
+    p.add_argument("--methods", type=_names, help="comma-separated method names (default: the file's, else all)")
+    p.add_argument("--dts", type=_floats, help="comma-separated steps [s] (default: the file's)")
+    p.add_argument("--horizon", type=float, help="time span [s] (default: the file's)")
+    p.add_argument("--tolerance", type=float,
+                   help="tolerance on --measure for the recommendation (default: the file's; none: the Pareto front)")
+    p.add_argument("--measure", help="error measure (default: the file's, else final_attitude_error)")
+    p.add_argument("--cost", choices=("time", "evaluations"), default="time", help="cost to minimise")
+    p.add_argument("--out", help="folder for " + ", ".join(OUTPUTS) + " (checked before the sweep)")
+    p.add_argument("--no-progress", action="store_true",
+                   help="no cost estimate and no progress bar on stderr (the bar shows only on a terminal)")
+
+
+def check_out(out: str) -> Path:
+    """The --out folder, created if missing, after checking that the files can be written there;
+    ValueError "--out: expected ..., got ..." otherwise (before the sweep, not after it)."""
+    folder = Path(out)
+    expected = f"--out: expected a folder where {', '.join(OUTPUTS)} can be written, got {out!r}"
+    if folder.exists() and not folder.is_dir():
+        raise ValueError(f"{expected} (a file)")
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+    except OSError as error:
+        raise ValueError(f"{expected} ({error.strerror or error})") from None
+    taken = [name for name in OUTPUTS if (folder / name).is_dir()]
+    if taken:
+        raise ValueError(f"{expected} (it holds a folder named {taken[0]})")
+    try:
+        with tempfile.TemporaryFile(dir=folder):
+            pass
+    except OSError as error:
+        raise ValueError(f"{expected} (not writable: {error.strerror or error})") from None
+    return folder
+
+
+def run_tradeoff(args: argparse.Namespace) -> int:
+    """Check --out, run the sweep, print the report and write the files; the exit code."""
+    from rigiddyn.work_precision import tradeoff
+
+    new_folder = bool(args.out) and not Path(args.out).exists()
+    out = None
+    try:
+        out = check_out(args.out) if args.out else None
+        result = tradeoff(args.problem, methods=args.methods, dts=args.dts, horizon=args.horizon,
+                          tolerance=args.tolerance, measure=args.measure, cost=args.cost,
+                          progress=not args.no_progress)
+    except (ValueError, TypeError, KeyboardInterrupt) as e:
+        if out is not None and new_folder:
+            with contextlib.suppress(OSError):
+                out.rmdir()  # made by check_out, still empty: the run wrote nothing
+        interrupted = isinstance(e, KeyboardInterrupt)
+        print(f"rigiddyn tradeoff: {'interrupted' if interrupted else e}", file=sys.stderr)
+        return 130 if interrupted else 2
+    print(result.to_table())
+    if out is not None:
+        written = [out / "tradeoff.csv", out / "tradeoff.json"]
+        result.to_csv(written[0])
+        result.to_json(written[1])
+        try:
+            written += result.plot(out / "tradeoff")
+        except ImportError as e:
+            print(f"rigiddyn tradeoff: no plot: {e}", file=sys.stderr)
+        print(f"wrote {', '.join(w.name for w in written)} to {out}")
+    return 0

@@ -1,0 +1,176 @@
+"""Pictures of a recorded trajectory (needs matplotlib, extra ``plot``): the time histories of the
+angular velocity, the attitude, the energy and |L|, and an animation of the body's axes.
+
+Attitude is shown as ``"euler:SEQ"`` (Euler angles of q_WB in the sequence SEQ, as in
+``rigiddyn.quat_to_euler``: uppercase intrinsic, lowercase extrinsic; the values the CSV's q_WB gives
+there, jumps at the ±π cut and near gimbal lock included) or ``"rotvec"`` (the rotation vector of
+q_WB, angle × axis, in W). Energy and |L| are drawn as their change since t = 0, the initial value in
+the legend: a drift of 1e-14 J on 3e-3 J stays readable.
+"""
+
+from __future__ import annotations
+
+import warnings
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from . import _core
+
+__all__ = ["ATTITUDE_HELP", "animate_axes", "animation_writer", "check_attitude", "plot_trajectory",
+           "trajectory_figure"]
+
+ATTITUDE_HELP = "euler:SEQ (SEQ as quat_to_euler, e.g. euler:ZYX) or rotvec"
+
+
+def check_attitude(attitude: str) -> str:
+    """`attitude` if it is "rotvec" or "euler:SEQ" with a sequence quat_to_euler takes, else
+    ValueError "attitude: expected ..., got ..."."""
+    if not isinstance(attitude, str):
+        raise TypeError(f"attitude: expected a string ({ATTITUDE_HELP}), got {attitude!r}")
+    kind, _, seq = attitude.partition(":")
+    if attitude == "rotvec":
+        return attitude
+    if kind == "euler":
+        try:
+            with warnings.catch_warnings():  # a gimbal-lock warning is no verdict on the sequence
+                warnings.simplefilter("ignore")
+                _core.quat_to_euler(seq, [0.0, 0.0, 0.0, 1.0])
+        except (ValueError, TypeError):
+            pass
+        else:
+            return attitude
+    raise ValueError(f"attitude: expected {ATTITUDE_HELP}, got {attitude!r}")
+
+
+def _attitude(q_WB: np.ndarray, attitude: str) -> tuple[np.ndarray, list[str], str, str]:
+    """(n, 3) angles [rad], their legend labels, the axis label and a note (gimbal lock) or ""."""
+    if attitude == "rotvec":
+        return _core.quat_to_rotvec(q_WB), ["rotvec x", "rotvec y", "rotvec z"], "rotation vector in W [rad]", ""
+    seq = attitude.partition(":")[2]
+    with warnings.catch_warnings(record=True) as caught:  # a gimbal-lock warning becomes the plot's note
+        warnings.simplefilter("always")
+        angles = _core.quat_to_euler(seq, q_WB)
+    note = f"gimbal lock met: {caught[0].message}" if caught else ""
+    primes = ("", "\u2032", "\u2033") if seq.isupper() else ("", "", "")  # intrinsic: about moved axes
+    labels = [f"angle {i + 1} about {axis.upper()}{primes[i]}" for i, axis in enumerate(seq)]
+    kind = "intrinsic" if seq.isupper() else "extrinsic"
+    return angles, labels, f"Euler {seq} ({kind}) [rad]", note
+
+
+def _change(series: list[Any], names: list[str], quantity: str, unit: str) -> tuple[np.ndarray, list[str], str]:
+    """(values - initial values, labels "name(0) = value unit", axis label) of scalar series."""
+    values = np.stack([np.asarray(x, dtype=np.float64) for x in series], axis=1)
+    labels = [f"{name}(0) = {values[0, j]:.6g} {unit}" for j, name in enumerate(names)]
+    return values - values[0], labels, f"{quantity} change\nsince t = 0 [{unit}]"
+
+
+def trajectory_figure(result: Any, attitude: str = "euler:ZYX", title: str = "") -> Any:
+    """A matplotlib Figure of four panels over t [s]: w_B [rad/s] (components in B), the attitude
+    (see check_attitude), the change since t = 0 of the kinetic and total energy [J] and of
+    |L| = |H_G| [kg m^2/s] about the centre of mass (initial values in the legends). Legends sit
+    outside the axes, to the right. `result`: a SimulationResult with q_WB as (x, y, z, w)."""
+    import matplotlib.pyplot as plt
+
+    check_attitude(attitude)
+    t = np.asarray(result.t)
+    angles, angle_labels, angle_axis, note = _attitude(np.asarray(result.q_WB), attitude)
+    fig, axes = plt.subplots(4, 1, sharex=True, figsize=(9.0, 9.0), layout="constrained")
+    panels = [
+        (np.asarray(result.w_B), ["w_B x", "w_B y", "w_B z"], "angular velocity w_B [rad/s]"),
+        (angles, angle_labels, angle_axis),
+        _change([result.kinetic_energy, result.total_energy], ["kinetic T", "total E"], "energy", "J"),
+        _change([result.angular_momentum_norm], ["|L|"], "|L|", "kg m^2/s"),
+    ]
+    for ax, (values, labels, ylabel) in zip(axes, panels):
+        for j, label in enumerate(labels):
+            ax.plot(t, values[:, j], label=label, linestyle="--" if label.startswith("total") else "-")
+        ax.set_ylabel(ylabel)
+        ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0, fontsize="small")
+        ax.grid(True, alpha=0.3)
+    if note:
+        axes[1].set_title(note, fontsize="small")
+    axes[-1].set_xlabel("t [s]")
+    if title:
+        fig.suptitle(title)
+    return fig
+
+
+def plot_trajectory(result: Any, path: str | Path, attitude: str = "euler:ZYX", title: str = "") -> Path:
+    """Save trajectory_figure(result, attitude, title) to `path` (format from its suffix, e.g. .png);
+    returns the path."""
+    import matplotlib.pyplot as plt
+
+    fig = trajectory_figure(result, attitude, title)
+    try:
+        fig.savefig(path, dpi=120)
+    finally:
+        plt.close(fig)
+    return Path(path)
+
+
+def animation_writer(fmt: str = "auto") -> tuple[str, str]:
+    """(matplotlib writer name, file suffix) for `fmt`: "mp4" (ffmpeg), "gif" (Pillow) or "auto"
+    (MP4 if ffmpeg is present, else GIF). RuntimeError naming both when no writer is available;
+    ValueError for an unknown fmt or one whose writer is missing."""
+    from matplotlib import animation
+
+    writers = {"mp4": ("ffmpeg", ".mp4"), "gif": ("pillow", ".gif")}
+    if fmt == "auto":
+        for name, suffix in writers.values():
+            if animation.writers.is_available(name):
+                return name, suffix
+        raise RuntimeError("animate: no animation writer: MP4 needs ffmpeg on the PATH, GIF needs Pillow "
+                           "(pip install pillow); neither is available")
+    if fmt not in writers:
+        raise ValueError(f"animate: expected one of auto, mp4, gif, got {fmt!r}")
+    name, suffix = writers[fmt]
+    if not animation.writers.is_available(name):
+        raise ValueError(f"animate: expected a format whose writer is present ({fmt} needs {name}), got {fmt!r}")
+    return name, suffix
+
+
+def animate_axes(result: Any, path: str | Path, fmt: str = "auto", frames: int = 100, fps: int = 25,
+                 title: str = "") -> Path:
+    """Animate the body axes (the columns of R_WB: x red, y green, z blue, unit length, drawn from
+    the origin of W) over the records, at most `frames` frames evenly spaced in record index, `fps`
+    frames per second. Written with animation_writer(fmt) to `path` with the writer's suffix;
+    returns that path."""
+    import matplotlib.pyplot as plt
+    from matplotlib import animation
+
+    for name, value in (("frames", frames), ("fps", fps)):
+        if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 1:
+            raise ValueError(f"{name}: expected an integer >= 1, got {value!r}")
+    writer, suffix = animation_writer(fmt)
+    path = Path(path).with_suffix(suffix)
+    t = np.asarray(result.t)
+    R_WB = _core.quat_to_matrix(np.asarray(result.q_WB)).reshape(-1, 3, 3)
+    shown = np.unique(np.linspace(0, len(t) - 1, min(int(frames), len(t))).round().astype(int))
+    fig = plt.figure(figsize=(4.5, 4.5), dpi=100)
+    ax: Any = fig.add_axes((0.02, 0.12, 0.86, 0.8), projection="3d")  # Axes3D; room for the z label and legend
+    for lim, ticks in ((ax.set_xlim, ax.set_xticks), (ax.set_ylim, ax.set_yticks), (ax.set_zlim, ax.set_zticks)):
+        lim(-1.0, 1.0)
+        ticks([-1.0, 0.0, 1.0])
+    ax.set_xlabel("x_W")
+    ax.set_ylabel("y_W")
+    ax.set_zlabel("z_W")
+    lines: list[Any] = [ax.plot([0.0, 0.0], [0.0, 0.0], [0.0, 0.0], color=c, linewidth=3, label=f"body {a}")[0]
+             for a, c in zip("xyz", ("tab:red", "tab:green", "tab:blue"))]
+    fig.legend(loc="lower center", ncol=3, fontsize="small")  # below the axes, never over the data
+    label = ax.set_title("")
+
+    def draw(i: int) -> list[Any]:
+        for k, line in enumerate(lines):
+            axis_W = R_WB[i, :, k]
+            line.set_data_3d([0.0, axis_W[0]], [0.0, axis_W[1]], [0.0, axis_W[2]])
+        label.set_text(f"{title}  t = {t[i]:.3f} s".strip())
+        return [*lines, label]
+
+    try:
+        movie = animation.FuncAnimation(fig, draw, frames=shown.tolist(), blit=False)
+        movie.save(str(path), writer=writer, fps=int(fps))
+    finally:
+        plt.close(fig)
+    return path

@@ -1,0 +1,136 @@
+"""rigiddyn.trajectory: a SimulationResult as a table (columns with units), written to CSV, .npz and
+Parquet and read back exactly, and as a pandas DataFrame."""
+
+import sys
+
+import numpy as np
+import pytest
+import rigiddyn as rd
+from rigiddyn import trajectory as tj
+
+
+def _run(scalar_first=False):
+    """A run that moves every recorded field: a spinning, translating body under gravity, a body-frame
+    torque switched off half-way and a world force (the records hold non-trivial p_W, v_W, work)."""
+    body = rd.RigidBody(1.5, np.diag([0.02, 0.03, 0.04]))
+    start = rd.RigidBodyState(p_W=[0.1, -0.2, 3.0], q_WB=[0.1, 0.2, 0.3, np.sqrt(1 - 0.14)], v_W=[1.0, 0.5, 4.0],
+                              w_B=[0.3, 7.0, -0.2])
+    loads = [rd.AppliedLoad(torque=[0.0, 0.0, 0.01], frame="body", t_end=0.25), rd.AppliedLoad(force=[0.2, 0.0, 0.0])]
+    return rd.simulate(body, start, 1e-3, 500, "rk4", record_every=7, loads=loads, gravity=True,
+                       scalar_first=scalar_first)
+
+
+def _assert_same_fields(fields, result):
+    for name in tj.FIELDS:
+        # bitwise: every format stores the float64 values exactly (CSV via repr, the shortest text
+        # that float() reads back to the same double), so no tolerance applies
+        np.testing.assert_array_equal(fields[name], np.asarray(getattr(result, name)), strict=True, err_msg=name)
+
+
+def test_columns_name_every_component_with_its_unit():
+    result = _run()
+    table = tj.columns(result)
+    assert list(table) == tj.column_names()
+    assert list(table)[:8] == ["t [s]", "p_W_x [m]", "p_W_y [m]", "p_W_z [m]", "q_WB_x", "q_WB_y", "q_WB_z", "q_WB_w"]
+    for name in ("v_W_z [m/s]", "w_B_x [rad/s]", "kinetic_energy [J]", "total_energy [J]",
+                 "angular_momentum_norm [kg m^2/s]", "quaternion_norm_error", "work [J]"):
+        assert name in table
+    assert all(v.dtype == np.float64 and v.shape == result.t.shape for v in table.values())
+    np.testing.assert_array_equal(table["w_B_y [rad/s]"], result.w_B[:, 1])
+    assert len(table) == 19
+
+
+def test_scalar_first_results_are_labelled_w_first():
+    xyzw, wxyz = _run(), _run(scalar_first=True)
+    table = tj.columns(wxyz, scalar_first=True)
+    assert [n for n in table if n.startswith("q_WB")] == ["q_WB_w", "q_WB_x", "q_WB_y", "q_WB_z"]
+    # the same run, its quaternion only reordered: the fields read back in (x, y, z, w) order
+    np.testing.assert_array_equal(tj.fields_from_columns(table)["q_WB"], xyzw.q_WB)
+
+
+@pytest.mark.parametrize("suffix", ["csv", "npz", "parquet"])
+def test_files_read_back_to_the_same_arrays(tmp_path, suffix):
+    if suffix == "parquet":
+        pytest.importorskip("pyarrow", reason="the parquet extra (in the test extra: runs in CI)")
+    result = _run()
+    path = getattr(tj, f"write_{suffix}")(result, tmp_path / f"run.{suffix}")
+    table = tj.read_columns(path)
+    assert list(table) == tj.column_names()
+    _assert_same_fields(tj.fields_from_columns(table), result)
+
+
+def test_csv_keeps_non_finite_values_and_reads_with_pandas(tmp_path):
+    pd = pytest.importorskip("pandas", reason="the dataframe extra (in the test extra: runs in CI)")
+    body = rd.RigidBody(1.0, np.diag([1.0, 2.0, 2.5]))
+    with pytest.warns(RuntimeWarning, match="non-finite"):  # explicit Euler blows up at this step
+        result = rd.simulate(body, rd.RigidBodyState(w_B=[1e3, 1e3, 1e3]), 1.0, 2000, "explicit_euler")
+    assert result.diverged and not np.all(np.isfinite(result.w_B[-1]))
+    path = tj.write_csv(result, tmp_path / "run.csv")
+    _assert_same_fields(tj.fields_from_columns(tj.read_columns(path)), result)
+    frame = pd.read_csv(path)
+    assert list(frame.columns) == tj.column_names()
+    read = tj.fields_from_columns(frame)
+    for name in tj.FIELDS:
+        got, want = read[name], np.asarray(getattr(result, name))
+        finite = np.isfinite(want)
+        np.testing.assert_array_equal(got[~finite], want[~finite])  # nan, inf and -inf as written
+        # pandas' C parser (its "high" precision before pandas 3) may round a 17-digit decimal one unit
+        # in the last place off the nearest double; Python's float(), as read_columns uses, is exact
+        np.testing.assert_array_max_ulp(got[finite], want[finite], maxulp=1)
+
+
+def test_npz_loads_into_pandas_as_the_table(tmp_path):
+    pd = pytest.importorskip("pandas", reason="the dataframe extra (in the test extra: runs in CI)")
+    result = _run()
+    path = tj.write_npz(result, tmp_path / "run")  # no suffix given: written as given, not run.npz
+    assert path.is_file() and path.name == "run"
+    with np.load(path) as data:
+        frame = pd.DataFrame(dict(data))
+    assert list(frame.columns) == tj.column_names()
+    _assert_same_fields(tj.fields_from_columns(frame), result)
+
+
+def test_parquet_carries_the_metadata(tmp_path):
+    pq = pytest.importorskip("pyarrow.parquet", reason="the parquet extra (in the test extra: runs in CI)")
+    path = tj.write_parquet(_run(), tmp_path / "run.parquet", metadata={"method": "rk4", "dt [s]": 1e-3})
+    meta = pq.read_schema(path).metadata
+    assert b'"method": "rk4"' in meta[b"rigiddyn"]
+
+
+def test_to_dataframe_has_the_csv_columns_and_t_as_a_column(tmp_path):
+    pytest.importorskip("pandas", reason="the dataframe extra (in the test extra: runs in CI)")
+    result = _run()
+    frame = tj.to_dataframe(result)
+    assert list(frame.columns) == tj.column_names()
+    assert frame.index.equals(frame.index.__class__(range(len(result.t))))  # a plain row index
+    _assert_same_fields(tj.fields_from_columns(frame), result)
+    assert result.to_dataframe().equals(frame)  # the method of SimulationResult calls the same function
+    wxyz = _run(scalar_first=True).to_dataframe(scalar_first=True)
+    assert wxyz[frame.columns].equals(frame)  # the same run: the same columns, q_WB_w moved first
+
+
+def test_to_dataframe_names_the_extra_without_pandas(monkeypatch):
+    monkeypatch.setitem(sys.modules, "pandas", None)  # import pandas now raises ImportError
+    with pytest.raises(ImportError, match=r"rigiddyn\[dataframe\]"):
+        tj.to_dataframe(_run())
+
+
+def test_parquet_names_the_extra_without_pyarrow(monkeypatch, tmp_path):
+    monkeypatch.setitem(sys.modules, "pyarrow", None)
+    with pytest.raises(ImportError, match=r"rigiddyn\[parquet\]"):
+        tj.write_parquet(_run(), tmp_path / "run.parquet")
+    assert not (tmp_path / "run.parquet").exists()
+
+
+def test_bad_input_names_the_argument(tmp_path):
+    with pytest.raises(TypeError, match=r"result: expected a SimulationResult \(with \.t\), got dict"):
+        tj.columns({"t": [0.0]})
+    with pytest.raises(TypeError, match="scalar_first: expected True or False, got 'yes'"):
+        tj.columns(_run(), scalar_first="yes")
+    with pytest.raises(ValueError, match=r"path: expected a \.csv, \.npz or \.parquet file, got .*run\.txt"):
+        tj.read_columns(tmp_path / "run.txt")
+    with pytest.raises(ValueError, match=r"table: expected the column 't \[s\]'"):
+        tj.fields_from_columns({"time": np.zeros(2)})
+    (tmp_path / "empty.csv").write_text("")
+    with pytest.raises(ValueError, match="path: expected a CSV table with a header row"):
+        tj.read_columns(tmp_path / "empty.csv")
