@@ -797,7 +797,28 @@ void bind_mesh_and_density(py::module_& m) {
                " faces, welded_vertices=" + std::to_string(w.report.welded_vertices) +
                ", dropped_faces=" + std::to_string(w.report.dropped_faces) +
                ", tolerance=" + py::repr(py::float_(w.report.tolerance)).cast<std::string>() + ")";
-      });
+      })
+      .def(py::pickle(
+          [](const WeldedMesh& w) {
+            return py::make_tuple(read_only(w.vertices), index_array(w.faces, {w.faces.rows(), 3}),
+                                  index_array(w.vertex_index, {static_cast<py::ssize_t>(w.vertex_index.size())}),
+                                  index_array(w.face_index, {static_cast<py::ssize_t>(w.face_index.size())}),
+                                  w.report.welded_vertices, w.report.dropped_faces, w.report.tolerance);
+          },
+          [](const py::tuple& state) {
+            if (state.size() != 7) py_io::throw_value_error("state", "a tuple of 7 items (WeldedMesh.__getstate__)", py_io::describe(state));
+            const auto indices = [](py::handle obj, const char* name) {
+              const py_io::IndexArray a = py_io::as_index_array(obj, name);
+              return std::vector<Eigen::Index>(a.data(), a.data() + a.size());
+            };
+            WeldedMesh w;
+            w.vertices = as_points(state[0], "vertices");
+            w.faces = as_faces(state[1]);
+            w.vertex_index = indices(state[2], "vertex_index");
+            w.face_index = indices(state[3], "face_index");
+            w.report = {state[4].cast<Eigen::Index>(), state[5].cast<Eigen::Index>(), state[6].cast<double>()};
+            return w;
+          }));
   m.def(
       "weld_vertices",
       [](py::handle vertices, py::handle faces, py::handle tolerance_arg) {

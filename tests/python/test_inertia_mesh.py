@@ -2,6 +2,7 @@
 it approximates; mesh errors; density quadrature with its error estimate."""
 
 import math
+import pickle
 
 import numpy as np
 import pytest
@@ -177,6 +178,10 @@ def test_stl_duplicates_are_welded_and_counted(make, relative_delta):
     assert (report.welded_vertices, report.dropped_faces) == (duplicates, 0)
     assert len(report.vertices) == len(mesh.vertices) and len(report.faces) == len(F)
     assert report.tolerance == pytest.approx(1e-8 * np.linalg.norm(V.max(axis=0) - V.min(axis=0)), rel=1e-15)
+    copy = pickle.loads(pickle.dumps(report))  # a result pickles as every rigiddyn object does
+    for field in ("vertices", "faces", "vertex_index", "face_index", "welded_vertices", "dropped_faces", "tolerance"):
+        np.testing.assert_array_equal(getattr(copy, field), getattr(report, field))
+    assert repr(copy) == repr(report)
 
 
 def build_quietly(V, F, **kwargs):
