@@ -15,7 +15,6 @@ from __future__ import annotations
 import argparse
 import json
 import math
-import os
 import sys
 from collections.abc import Callable
 from pathlib import Path
@@ -24,8 +23,12 @@ from typing import Any, TextIO
 import numpy as np
 
 from . import _core
+from .out_folder import check_out_folder
 from .problem import Problem, load_problem
 from .stability import warn_if_unstable
+
+# written to --out (trajectory.parquet with pyarrow; axes.mp4 or axes.gif with --animate)
+OUTPUTS = ("trajectory.csv", "trajectory.npz", "trajectory.parquet", "run.json", "trajectory.png")
 
 __all__ = ["MAX_DEFAULT_RECORDS", "add_simulate_parser", "progress_bar", "run_simulate", "simulate_problem"]
 
@@ -162,22 +165,8 @@ class _Plan:
                 self.writer = animation_writer(self.animate)
             except RuntimeError as e:
                 raise ValueError(f"--animate: {e}") from None
-        self.out = _checked_out(args.out)
+        self.out = check_out_folder(args.out, OUTPUTS)
         self.progress = not args.no_progress
-
-
-def _checked_out(text: str) -> Path:
-    """The folder --out, created if missing; ValueError if it is a file or not writable."""
-    out = Path(text)
-    if out.exists() and not out.is_dir():
-        raise ValueError(f"--out: expected a folder (or a path to create one), got the file {text!r}")
-    try:
-        out.mkdir(parents=True, exist_ok=True)
-    except OSError as e:
-        raise ValueError(f"--out: expected a folder that can be created, got {text!r} ({e.strerror})") from None
-    if not os.access(out, os.W_OK | os.X_OK):
-        raise ValueError(f"--out: expected a writable folder, got {text!r}")
-    return out
 
 
 def _run_record(plan: _Plan, result: Any) -> dict[str, Any]:

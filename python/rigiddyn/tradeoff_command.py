@@ -5,9 +5,10 @@ from __future__ import annotations
 import argparse
 import contextlib
 import sys
-import tempfile
 import textwrap
 from pathlib import Path
+
+from .out_folder import check_out_folder
 
 OUTPUTS = ("tradeoff.csv", "tradeoff.json", "tradeoff.png", "tradeoff.svg")  # written to --out
 
@@ -62,28 +63,6 @@ def add_tradeoff_parser(sub: "argparse._SubParsersAction[argparse.ArgumentParser
                    help="no cost estimate and no progress bar on stderr (the bar shows only on a terminal)")
 
 
-def check_out(out: str) -> Path:
-    """The --out folder, created if missing, after checking that the files can be written there;
-    ValueError "--out: expected ..., got ..." otherwise (before the sweep, not after it)."""
-    folder = Path(out)
-    expected = f"--out: expected a folder where {', '.join(OUTPUTS)} can be written, got {out!r}"
-    if folder.exists() and not folder.is_dir():
-        raise ValueError(f"{expected} (a file)")
-    try:
-        folder.mkdir(parents=True, exist_ok=True)
-    except OSError as error:
-        raise ValueError(f"{expected} ({error.strerror or error})") from None
-    taken = [name for name in OUTPUTS if (folder / name).is_dir()]
-    if taken:
-        raise ValueError(f"{expected} (it holds a folder named {taken[0]})")
-    try:
-        with tempfile.TemporaryFile(dir=folder):
-            pass
-    except OSError as error:
-        raise ValueError(f"{expected} (not writable: {error.strerror or error})") from None
-    return folder
-
-
 def run_tradeoff(args: argparse.Namespace) -> int:
     """Check --out, run the sweep, print the report and write the files; the exit code."""
     from rigiddyn.work_precision import tradeoff
@@ -91,7 +70,7 @@ def run_tradeoff(args: argparse.Namespace) -> int:
     new_folder = bool(args.out) and not Path(args.out).exists()
     out = None
     try:
-        out = check_out(args.out) if args.out else None
+        out = check_out_folder(args.out, OUTPUTS) if args.out else None
         result = tradeoff(args.problem, methods=args.methods, dts=args.dts, horizon=args.horizon,
                           tolerance=args.tolerance, measure=args.measure, cost=args.cost,
                           progress=not args.no_progress)

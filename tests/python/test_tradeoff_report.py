@@ -322,7 +322,7 @@ def test_help_lists_every_core_method_and_measure(capsys):
 
 @pytest.mark.parametrize("make", ["a file", "below a file", "a folder in the way", "not writable"])
 def test_a_bad_out_fails_before_the_sweep(tmp_path, monkeypatch, capsys, make):
-    import rigiddyn.tradeoff_command as command
+    import rigiddyn.out_folder as out_folder
     import rigiddyn.work_precision as module
 
     def no_sweep(*args, **kwargs):
@@ -339,7 +339,7 @@ def test_a_bad_out_fails_before_the_sweep(tmp_path, monkeypatch, capsys, make):
         def refuse(*args, **kwargs):
             raise PermissionError(13, "Permission denied")
 
-        monkeypatch.setattr(command.tempfile, "TemporaryFile", refuse)
+        monkeypatch.setattr(out_folder.tempfile, "TemporaryFile", refuse)
     assert main(["tradeoff", "t_handle", "--out", str(out), "--no-progress"]) == 2
     assert "rigiddyn tradeoff: --out: expected a folder where tradeoff.csv" in capsys.readouterr().err
 

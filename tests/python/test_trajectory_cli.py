@@ -101,9 +101,9 @@ def test_cli_out_must_be_a_writable_folder(tmp_path, capsys):
     file = tmp_path / "a_file"
     file.write_text("")
     assert main(["simulate", "t_handle", "--method", "rk4", "--dt", "0.01", "--out", str(file)]) == 2
-    assert "--out: expected a folder (or a path to create one), got the file" in capsys.readouterr().err
+    assert "--out: expected a folder where trajectory.csv" in capsys.readouterr().err
     assert main(["simulate", "t_handle", "--method", "rk4", "--dt", "0.01", "--out", str(file / "below")]) == 2
-    assert "--out: expected a folder that can be created" in capsys.readouterr().err
+    assert "--out: expected a folder where trajectory.csv" in capsys.readouterr().err
 
 
 def test_cli_animate_without_any_writer_is_refused_before_the_run(tmp_path, capsys, monkeypatch):
