@@ -11,6 +11,12 @@ Cases: spin rates up to 1e4 rad/s; principal-moment ratios up to 1e6 and the thi
 masses 1e-9..1e9 kg; dt |w| from 1e-4 to 10; initial conditions on and near the separatrix; a long
 run for secular drift. The pytest subset is tests/python/test_extremes.py.
 
+Scene cases (a second table, against a Richardson-checked reference, rigiddyn.scene_precision): a stiff
+spring (omega = 1e3 rad/s) at dt omega from 0.1 to 10; a close two-body encounter (pericentre 1e-3 of
+the initial separation) with and without softening; a spring chain with masses 1e-6, 1 and 1e6 kg, of
+particles and of rigid cubes joined at their faces (the springs turn them). The pytest subset is
+tests/python/test_extremes_scene.py.
+
 The document records how it was made (command, date, machine, rigiddyn revision) and a digest of its
 INPUTS; tests/python/test_generated_docs.py fails once any input differs from what the document was
 made from, and names the command that regenerates it (REGENERATE).
@@ -32,10 +38,13 @@ from rigiddyn.problem import Problem
 from rigiddyn.stability import StabilityWarning
 
 ROOT = Path(__file__).resolve().parents[2]
-# what the figures depend on: this script, and the Python and C++ the runs execute
-INPUTS = ["bench/python/bench_extremes.py", *SIMULATION_INPUTS]
+# what the figures depend on: this script, and the Python and C++ the runs execute (the scene cases: also
+# the scene sweep, the scene layer and its bindings)
+INPUTS = ["bench/python/bench_extremes.py", *SIMULATION_INPUTS, "python/rigiddyn/scene_precision.py",
+          "cpp/include/rigiddyn/scene/*", "cpp/include/rigiddyn/scene/elements/*", "cpp/src/scene/*",
+          "cpp/bindings/bind_scene*.cpp", "cpp/bindings/scene_run.hpp"]
 REGENERATE = ("cmake --build build/<dir> --target _core && "
-              "PYTHONPATH=build/<dir>/python python3 bench/python/bench_extremes.py  (about 1 min)")
+              "PYTHONPATH=build/<dir>/python python3 bench/python/bench_extremes.py  (a few minutes)")
 
 
 def body(moments, w_B, mass=1.0, gravity=(0.0, 0.0, 0.0), v_W=(0.0, 0.0, 0.0)):
@@ -47,6 +56,72 @@ def separatrix_w(closeness):
     """w_B of I = (1, 2, 3) with Delta2 = -m1^2 + m3^2/3 ~ 2 closeness (0: on the separatrix)."""
     m = np.array([1.0, 0.5, math.sqrt(3.0) * (1.0 + closeness)])
     return m / np.array([1.0, 2.0, 3.0])
+
+
+def stiff_spring(omega=1e3):
+    """A 1 kg particle on a spring to a world anchor, k = omega^2 [N/m], released 1 mm from it."""
+    scene = rigiddyn.Scene()
+    scene.add_body(rigiddyn.Particle(1.0), name="mass")
+    scene.add(rigiddyn.SpringDamper(body_a=0, stiffness=omega**2))
+    return scene, [rigiddyn.ParticleState(p_W=(1e-3, 0.0, 0.0))]
+
+
+def encounter(softening):
+    """Two 1 kg particles (G = 1) 2 m apart, each at 0.5 m/s, aimed to pass at 1e-3 m (a near-parabolic
+    close encounter: about 63 m/s at the pericentre, unsoftened)."""
+    scene = rigiddyn.Scene()
+    for name in ("a", "b"):
+        scene.add_body(rigiddyn.Particle(1.0), name=name)
+    scene.add(rigiddyn.MutualGravity(G=1.0, softening=softening))
+    return scene, [rigiddyn.ParticleState(p_W=(-1.0, -5e-4, 0.0), v_W=(0.5, 0.0, 0.0)),
+                   rigiddyn.ParticleState(p_W=(1.0, 5e-4, 0.0), v_W=(-0.5, 0.0, 0.0))]
+
+
+def mass_chain(masses=(1e-6, 1.0, 1e6), stiffness=1.0):
+    """Particles of these masses [kg] in a line 1 m apart, neighbours joined by springs of rest length
+    1 m; the first is pulled 1 mm out: its mode, omega = sqrt(k (1/m0 + 1/m1)), is the fastest."""
+    scene = rigiddyn.Scene()
+    for i, m in enumerate(masses):
+        scene.add_body(rigiddyn.Particle(m), name=f"m{i}")
+    for i in range(len(masses) - 1):
+        scene.add(rigiddyn.SpringDamper(body_a=i, body_b=i + 1, stiffness=stiffness, rest_length=1.0))
+    states = [rigiddyn.ParticleState(p_W=(float(i), 0.0, 0.0)) for i in range(len(masses))]
+    states[0] = rigiddyn.ParticleState(p_W=(-1e-3, 0.0, 0.0))
+    return scene, states
+
+
+def rigid_chain(masses=(1e-6, 1.0, 1e6), side=0.1, stiffness=1.0):
+    """Solid cubes of these masses [kg] and side [m] with centres 1 m apart in a line, neighbours joined
+    face to face (+x face to -x face) by springs of rest length 1 - side; the first is moved 1 mm in -x
+    and +y, so the springs also turn it: its fastest mode is the rotation, k (side/2)^2 / (m0 side^2 / 6)."""
+    scene = rigiddyn.Scene()
+    for i, m in enumerate(masses):
+        scene.add_body(rigiddyn.RigidBody(m, np.eye(3) * m * side**2 / 6.0), name=f"cube{i}")
+    for i in range(len(masses) - 1):
+        scene.add(rigiddyn.SpringDamper(body_a=i, point_a_B=(side / 2, 0.0, 0.0), body_b=i + 1,
+                                        point_b=(-side / 2, 0.0, 0.0), stiffness=stiffness, rest_length=1.0 - side))
+    states = [rigiddyn.RigidBodyState(p_W=(float(i), 0.0, 0.0)) for i in range(len(masses))]
+    states[0] = rigiddyn.RigidBodyState(p_W=(-1e-3, 1e-3, 0.0))
+    return scene, states
+
+
+def scene_cases(small):
+    """(group, case, (scene, initial states), dt [s], steps)."""
+    n = 1000 if small else 20_000
+    out = []
+    for dtw in (0.1, 1.9, 3.0, 10.0):
+        out.append(("stiff spring", f"omega = 1e3 rad/s, dt omega = {dtw:g}", stiff_spring(), dtw / 1e3, n))
+    for softening in (0.0, 0.05):
+        out.append(("close encounter", f"two bodies, pericentre 1e-3 m, softening {softening:g} m", encounter(softening),
+                    1e-3, 4000))
+    chain_rate = math.sqrt(1.0 / 1e-6 + 1.0)
+    for dt in (1e-4, 1e-2):
+        out.append(("mass ratio", f"chain of 1e-6, 1, 1e6 kg, dt omega = {dt * chain_rate:.2g}", mass_chain(), dt, n))
+    cube_rate = math.sqrt(1.0 * 0.05**2 / (1e-6 * 0.1**2 / 6.0))
+    for dt in (1e-4, 1e-2):
+        out.append(("mass ratio", f"rigid cubes of 1e-6, 1, 1e6 kg joined at their faces, dt omega = {dt * cube_rate:.2g}",
+                    rigid_chain(), dt, n))
+    return out
 
 
 def cases(small):
@@ -108,6 +183,50 @@ def cpu_ns_per_step(problem, method, dt, steps):
     return best / steps * 1e9
 
 
+def measure_scene(scene_and_initial, dt, steps, methods):
+    """One rigiddyn.tradeoff sweep of a scene at a single dt; rows keyed by method name."""
+    scene, initial = scene_and_initial
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", StabilityWarning)  # each row's `stability` says it
+        result = rigiddyn.tradeoff(scene, initial=initial, horizon=dt * steps, methods=methods, dts=[dt],
+                                   progress=False)
+    return {r["method"]: r for r in result.rows}
+
+
+def scene_cpu_ns_per_step(scene_and_initial, method, dt, steps):
+    """CPU time of the simulate loop per step [ns] of the scene compiled for `method`, as cpu_ns_per_step."""
+    scene, initial = scene_and_initial
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # compatibility and divergence: reported by the tradeoff row
+        model = scene.compile(method=method)
+        best = math.inf
+        for _ in range(3 if steps <= 100_000 else 1):
+            start = time.thread_time()
+            rigiddyn.simulate(model, initial, dt, steps, method, record_every=steps)
+            best = min(best, time.thread_time() - start)
+    return best / steps * 1e9
+
+
+def scene_lines(small, methods, failures):
+    """The scene table's lines; diverged runs without a StabilityWarning appended to failures."""
+    lines = ["| case | method | outcome | max position error [m] | max attitude error [rad] | energy error "
+             "| momentum error | CPU ns/step |", "|---|---|---|---|---|---|---|---|"]
+    for group, case, scene, dt, steps in scene_cases(small):
+        rows = measure_scene(scene, dt, steps, methods)
+        for method in methods:
+            r = rows[method]
+            if r["order_note"].startswith("not applicable"):
+                lines.append(f"| {group}: {case} ({steps} steps) | {method} | {r['order_note'][:90]} | | | | | |")
+                continue
+            cost = "-" if r["diverged"] else f"{scene_cpu_ns_per_step(scene, method, dt, steps):.0f}"
+            if r["diverged"] and not r["stability"]:
+                failures.append(f"{case} / {method}: diverged without a StabilityWarning")
+            lines.append(f"| {group}: {case} ({steps} steps) | {method} | {outcome(r)} | {fmt(r['max_position_error'])} "
+                         f"| {fmt(r['max_attitude_error'])} | {fmt(r['energy_drift'])} | {fmt(r['momentum_drift'])} "
+                         f"| {cost} |")
+    return lines
+
+
 def outcome(row):
     if row["diverged"]:
         return "diverged (warned)"
@@ -151,10 +270,12 @@ def main(argv=None):
             lines.append(f"| {group}: {case} ({steps} steps) | {method} | {outcome(r)} | {fmt(r['max_attitude_error'])} "
                          f"| {fmt(r['max_momentum_error'])} | {fmt(r['energy_drift'])} | {fmt(r['momentum_drift'])} "
                          f"| {fmt(r['quaternion_norm_error'])} | {cost} |")
+    lines += ["", SCENES_HEADER] + scene_lines(args.small, methods, failures)
     elapsed = time.perf_counter() - start
     table = "\n".join(lines)
     print(table)
-    print(f"\n{len(lines) - 2} rows in {elapsed:.1f} s; {len(failures)} unexpected behaviours")
+    rows = sum(1 for line in lines if line.startswith("| ") and not line.startswith("| case "))
+    print(f"\n{rows} rows in {elapsed:.1f} s; {len(failures)} unexpected behaviours")
     for f in failures:
         print("UNEXPECTED:", f)
     if out is not None:
@@ -202,6 +323,18 @@ for implicit midpoint after 500 steps at moment ratio 1e6, exactly N (h Omega)^3
 round-off. `exact` (order 0) and `exact_flow_kick` (exact without couples) are at round-off on
 every torque-free case, at any step.
 
+"""
+
+SCENES_HEADER = """## Scenes
+
+Every method on scenes of several bodies and force elements, against a Richardson-refined reference (the
+highest-order method the scene compiles without a warning, checked against another method family; see
+`python/rigiddyn/scene_precision.py`), measured with `rigiddyn.tradeoff`. Position and attitude errors
+are the largest over the bodies; energy error: max |E - E_ref| / max (T + |V|) of the reference; momentum
+error: the larger relative error of the total linear and angular momentum. Outcomes as above, with
+stability judged from the scene's linear modes (`rigiddyn.stability.scene_modes`: springs, gravity, drag),
+and **not applicable** where compiling the scene for the method refuses it (the reason given).
+An unsoftened close encounter has no linear warning at the start: its error grows at the pericentre.
 """
 
 FOOTER = "Run time of the whole matrix: {elapsed:.1f} s on the machine above.\n"

@@ -35,7 +35,7 @@ Eigen::Vector2d as_planar_gravity(py::handle obj) {
   if (py::isinstance<py::bool_>(obj)) {
     py_io::throw_value_error("gravity", "None or an in-plane vector (2,) [m/s^2] for a PlanarBody", py_io::describe(obj));
   }
-  return py_io::as_vector2_or_zero(obj, "gravity");
+  return py_io::as_vector2_or_zero(py_io::in_si(obj, "m/s^2", "gravity"), "gravity");
 }
 
 // RigidBody's `check`: None (InertiaCheck.physical) or an InertiaCheck.
@@ -57,12 +57,12 @@ RigidBody as_rigid_body(py::handle mass, py::handle inertia_com, py::handle chec
     }
     return RigidBody(mass.cast<const SpatialInertia&>(), check);
   }
-  const double m = py_io::as_scalar(mass, "mass");
+  const double m = py_io::as_scalar(py_io::in_si(mass, "kg", "mass"), "mass");
   if (inertia_com.is_none()) {
     py_io::throw_type_error("inertia_com", "principal moments (3,) or an inertia matrix (3, 3) [kg m^2] next to a mass "
                             "(or a SpatialInertia alone)", inertia_com);
   }
-  const py_io::Array I = py_io::as_array(inertia_com, "inertia_com");
+  const py_io::Array I = py_io::as_array(py_io::in_si(inertia_com, "kg*m^2", "inertia_com"), "inertia_com");
   if (I.ndim() == 1 && I.shape(0) == 3) return RigidBody(m, Eigen::Vector3d(py_io::as_vector3(I, "inertia_com")), check);
   if (I.ndim() == 2 && I.shape(0) == 3 && I.shape(1) == 3) return RigidBody(m, py_io::as_matrix3(I, "inertia_com"), check);
   py_io::throw_value_error("inertia_com", "principal moments (3,) or an inertia matrix (3, 3) [kg m^2]",
@@ -195,8 +195,8 @@ ParticleState checked(const ParticleState& s, const char* quantity) {
 void bind_particle_and_planar_body(py::module_& m) {
   py::class_<Particle> particle(m, "Particle",
                                 "A point mass (3 DOF; \"Rigid body kinematics and dynamics\" notes, section 4.11): mass "
-                                "[kg] > 0.");
-  particle.def(py::init([](py::handle mass) { return Particle(py_io::as_scalar(mass, "mass")); }), py::arg("mass"))
+                                "float [kg] > 0 or a pint quantity.");
+  particle.def(py::init([](py::handle mass) { return Particle(py_io::as_scalar(py_io::in_si(mass, "kg", "mass"), "mass")); }), py::arg("mass"))
       .def_property_readonly("mass", &Particle::mass, "mass [kg]")
       .def("__repr__", [](const Particle& p) { return repr_call("Particle", {{"mass", py::float_(p.mass())}}); })
       .def(py::pickle([](const Particle& p) { return py::make_tuple(p.mass()); },
@@ -206,10 +206,11 @@ void bind_particle_and_planar_body(py::module_& m) {
   py::class_<PlanarBody> planar(m, "PlanarBody",
                                 "A rigid body moving in the xy plane of W (x, y, theta; plane kinetics of Craig's \"Rigid "
                                 "Body Dynamics\" slides): mass [kg] and inertia_zz [kg m^2] about the z axis through the "
-                                "centre of mass, both > 0.");
+                                "centre of mass, both > 0; each a float [unit] or a pint quantity.");
   planar
       .def(py::init([](py::handle mass, py::handle inertia_zz) {
-             return PlanarBody(py_io::as_scalar(mass, "mass"), py_io::as_scalar(inertia_zz, "inertia_zz"));
+             return PlanarBody(py_io::as_scalar(py_io::in_si(mass, "kg", "mass"), "mass"),
+                               py_io::as_scalar(py_io::in_si(inertia_zz, "kg*m^2", "inertia_zz"), "inertia_zz"));
            }),
            py::arg("mass"), py::arg("inertia_zz"))
       .def_property_readonly("mass", &PlanarBody::mass, "mass [kg]")
@@ -257,7 +258,9 @@ void bind_rigid_body(py::module_& m) {
       "(inertia_report): under check=InertiaCheck.physical (the default) the principal moments must satisfy the\n"
       "triangle inequality I_a + I_b >= I_c; check=InertiaCheck.allow_unrealizable accepts test bodies no real\n"
       "body has, e.g. I = diag(2, 1, 2/3). euler_form tells which form of Euler's equations it uses:\n"
-      "'spherical', 'principal' or 'full'.");
+      "'spherical', 'principal' or 'full'.\n"
+      "mass and inertia_com: floats [kg], [kg m^2] or pint quantities (an array quantity for the inertia; converted, "
+      "ValueError naming the argument for another dimension).");
   body.def(py::init(&as_rigid_body), py::arg("mass"), py::arg("inertia_com") = py::none(), py::arg("check") = py::none())
       .def_property_readonly("mass", &RigidBody::mass, "mass [kg]")
       .def_property_readonly(
@@ -292,19 +295,23 @@ void bind_rigid_body(py::module_& m) {
 // constructor does) and read as a read-only array (`s.w_B[0] = 5` raises instead of writing to a copy).
 void bind_states(py::module_& m) {
   py::class_<ParticleState> particle(m, "ParticleState",
-                                     "Particle state: p_W (3,) [m] and v_W (3,) [m/s] in W (None: zero). Fields are "
-                                     "assigned whole (s.v_W = [...]); their arrays are read-only.");
+                                     "Particle state: p_W (3,) [m] and v_W (3,) [m/s] in W (None: zero), each floats [unit] "
+                                     "or a pint quantity. Fields are assigned whole (s.v_W = [...]); their arrays are "
+                                     "read-only.");
   particle
       .def(py::init([](py::handle p_W, py::handle v_W) {
-             return ParticleState{py_io::as_vector3_or_zero(p_W, "p_W"), py_io::as_vector3_or_zero(v_W, "v_W")};
+             return ParticleState{py_io::as_vector3_or_zero(py_io::in_si(p_W, "m", "p_W"), "p_W"),
+                                  py_io::as_vector3_or_zero(py_io::in_si(v_W, "m/s", "v_W"), "v_W")};
            }),
            py::arg("p_W") = py::none(), py::arg("v_W") = py::none())
       .def_property(
           "p_W", [](const ParticleState& s) { return read_only(s.p_W); },
-          [](ParticleState& s, py::handle v) { s.p_W = py_io::as_vector3(v, "p_W"); }, "(3,) position in W [m]")
+          [](ParticleState& s, py::handle v) {
+            s.p_W = py_io::as_vector3(py_io::in_si(v, "m", "p_W"), "p_W"); }, "(3,) position in W [m]")
       .def_property(
           "v_W", [](const ParticleState& s) { return read_only(s.v_W); },
-          [](ParticleState& s, py::handle v) { s.v_W = py_io::as_vector3(v, "v_W"); }, "(3,) velocity in W [m/s]")
+          [](ParticleState& s, py::handle v) {
+            s.v_W = py_io::as_vector3(py_io::in_si(v, "m/s", "v_W"), "v_W"); }, "(3,) velocity in W [m/s]")
       .def("__repr__",
            [](const ParticleState& s) {
              return repr_call("ParticleState", {{"p_W", as_list(s.p_W)}, {"v_W", as_list(s.v_W)}});
@@ -319,26 +326,33 @@ void bind_states(py::module_& m) {
 
   py::class_<PlanarBodyState> planar(m, "PlanarBodyState",
                                      "Planar body state: p_W (2,) [m] centre of mass in W, theta [rad] angle of B about "
-                                     "z, v_W (2,) [m/s] in W, omega [rad/s] (None: zero). Fields are assigned whole; "
+                                     "z, v_W (2,) [m/s] in W, omega [rad/s] (None: zero), each floats [unit] or a pint "
+                                     "quantity. Fields are assigned whole; "
                                      "their arrays are read-only.");
   planar
       .def(py::init([](py::handle p_W, py::handle theta, py::handle v_W, py::handle omega) {
-             return PlanarBodyState{py_io::as_vector2_or_zero(p_W, "p_W"), py_io::as_scalar(theta, "theta"),
-                                    py_io::as_vector2_or_zero(v_W, "v_W"), py_io::as_scalar(omega, "omega")};
+             return PlanarBodyState{py_io::as_vector2_or_zero(py_io::in_si(p_W, "m", "p_W"), "p_W"),
+                                    py_io::as_scalar(py_io::in_si(theta, "rad", "theta"), "theta"),
+                                    py_io::as_vector2_or_zero(py_io::in_si(v_W, "m/s", "v_W"), "v_W"),
+                                    py_io::as_scalar(py_io::in_si(omega, "rad/s", "omega"), "omega")};
            }),
            py::arg("p_W") = py::none(), py::arg("theta") = 0.0, py::arg("v_W") = py::none(), py::arg("omega") = 0.0)
       .def_property(
           "p_W", [](const PlanarBodyState& s) { return read_only(s.p_W); },
-          [](PlanarBodyState& s, py::handle v) { s.p_W = py_io::as_vector2(v, "p_W"); }, "(2,) centre of mass in W [m]")
+          [](PlanarBodyState& s, py::handle v) {
+            s.p_W = py_io::as_vector2(py_io::in_si(v, "m", "p_W"), "p_W"); }, "(2,) centre of mass in W [m]")
       .def_property(
           "theta", [](const PlanarBodyState& s) { return s.theta; },
-          [](PlanarBodyState& s, py::handle v) { s.theta = py_io::as_scalar(v, "theta"); }, "angle of B about z [rad]")
+          [](PlanarBodyState& s, py::handle v) {
+            s.theta = py_io::as_scalar(py_io::in_si(v, "rad", "theta"), "theta"); }, "angle of B about z [rad]")
       .def_property(
           "v_W", [](const PlanarBodyState& s) { return read_only(s.v_W); },
-          [](PlanarBodyState& s, py::handle v) { s.v_W = py_io::as_vector2(v, "v_W"); }, "(2,) velocity in W [m/s]")
+          [](PlanarBodyState& s, py::handle v) {
+            s.v_W = py_io::as_vector2(py_io::in_si(v, "m/s", "v_W"), "v_W"); }, "(2,) velocity in W [m/s]")
       .def_property(
           "omega", [](const PlanarBodyState& s) { return s.omega; },
-          [](PlanarBodyState& s, py::handle v) { s.omega = py_io::as_scalar(v, "omega"); }, "angular velocity [rad/s]")
+          [](PlanarBodyState& s, py::handle v) {
+            s.omega = py_io::as_scalar(py_io::in_si(v, "rad/s", "omega"), "omega"); }, "angular velocity [rad/s]")
       .def("__repr__",
            [](const PlanarBodyState& s) {
              return repr_call("PlanarBodyState", {{"p_W", as_list(s.p_W)},
@@ -363,7 +377,8 @@ void bind_states(py::module_& m) {
       m, "RigidBodyState",
       "Rigid body state (docs/conventions.md): p_W (3,) centre of mass in W [m], q_WB (4,) unit quaternion "
       "(x, y, z, w), or (w, x, y, z) with scalar_first=True, v_W (3,) centre of mass velocity in W [m/s], w_B (3,) "
-      "angular velocity [rad/s] in B (None: zero, identity). q_WB is normalised; ValueError if | |q| - 1 | > 1e-6. "
+      "angular velocity [rad/s] in B (None: zero, identity); p_W, v_W, w_B: floats [unit] or pint quantities. "
+      "q_WB is normalised; ValueError if | |q| - 1 | > 1e-6. "
       "Fields are assigned whole (s.w_B = [...], s.q_WB = [x, y, z, w], checked as here); their arrays are "
       "read-only.");
   rigid
@@ -371,14 +386,15 @@ void bind_states(py::module_& m) {
              const bool wxyz = py_io::as_bool(scalar_first, "scalar_first");
              const Eigen::Quaterniond q =
                  q_WB.is_none() ? Eigen::Quaterniond::Identity() : as_unit_quaternion(q_WB, "q_WB", wxyz);
-             return RigidBodyState{py_io::as_vector3_or_zero(p_W, "p_W"), q, py_io::as_vector3_or_zero(v_W, "v_W"),
-                                   py_io::as_vector3_or_zero(w_B, "w_B")};
+             return RigidBodyState{py_io::as_vector3_or_zero(py_io::in_si(p_W, "m", "p_W"), "p_W"), q,
+                                   py_io::as_vector3_or_zero(py_io::in_si(v_W, "m/s", "v_W"), "v_W"),
+                                   py_io::as_vector3_or_zero(py_io::in_si(w_B, "rad/s", "w_B"), "w_B")};
            }),
            py::arg("p_W") = py::none(), py::arg("q_WB") = py::none(), py::arg("v_W") = py::none(),
            py::arg("w_B") = py::none(), py::arg("scalar_first") = false)
       .def_property(
           "p_W", [](const RigidBodyState& s) { return read_only(s.p_W); },
-          [](RigidBodyState& s, py::handle v) { s.p_W = py_io::as_vector3(v, "p_W"); },
+          [](RigidBodyState& s, py::handle v) { s.p_W = py_io::as_vector3(py_io::in_si(v, "m", "p_W"), "p_W"); },
           "(3,) centre of mass position in W [m]")
       .def_property(
           "q_WB", [](const RigidBodyState& s) { return read_only(s.q_WB); },
@@ -393,11 +409,11 @@ void bind_states(py::module_& m) {
           py::arg("scalar_first") = false, "q_WB (4,) as (x, y, z, w), or (w, x, y, z) with scalar_first=True")
       .def_property(
           "v_W", [](const RigidBodyState& s) { return read_only(s.v_W); },
-          [](RigidBodyState& s, py::handle v) { s.v_W = py_io::as_vector3(v, "v_W"); },
+          [](RigidBodyState& s, py::handle v) { s.v_W = py_io::as_vector3(py_io::in_si(v, "m/s", "v_W"), "v_W"); },
           "(3,) centre of mass velocity in W [m/s]")
       .def_property(
           "w_B", [](const RigidBodyState& s) { return read_only(s.w_B); },
-          [](RigidBodyState& s, py::handle v) { s.w_B = py_io::as_vector3(v, "w_B"); },
+          [](RigidBodyState& s, py::handle v) { s.w_B = py_io::as_vector3(py_io::in_si(v, "rad/s", "w_B"), "w_B"); },
           "(3,) angular velocity of B in W, expressed in B [rad/s]")
       .def("__repr__",
            [](const RigidBodyState& s) {
@@ -448,8 +464,8 @@ void bind_result_types(py::module_& m) {
                                    "body, 0 for a particle); total = their sum. Immutable.");
   energy
       .def(py::init([](py::handle translational, py::handle rotational) {
-             return KineticEnergy{py_io::as_extended_real(translational, "translational"),
-                                  py_io::as_extended_real(rotational, "rotational")};
+             return KineticEnergy{py_io::as_extended_real(py_io::in_si(translational, "J", "translational"), "translational"),
+                                  py_io::as_extended_real(py_io::in_si(rotational, "J", "rotational"), "rotational")};
            }),
            py::arg("translational") = 0.0, py::arg("rotational") = 0.0)
       .def_readonly("translational", &KineticEnergy::translational, "1/2 m v.v [J]")
@@ -474,7 +490,8 @@ void bind_result_types(py::module_& m) {
                                "about G in B [N m] (inverse_dynamics' result; unpacks as f_W, tau_B = ...). Immutable.");
   wrench
       .def(py::init([](py::handle f_W, py::handle tau_B) {
-             return ComWrench{py_io::as_vector3_or_zero(f_W, "f_W"), py_io::as_vector3_or_zero(tau_B, "tau_B")};
+             return ComWrench{py_io::as_vector3_or_zero(py_io::in_si(f_W, "N", "f_W"), "f_W"),
+                              py_io::as_vector3_or_zero(py_io::in_si(tau_B, "N*m", "tau_B"), "tau_B")};
            }),
            py::arg("f_W") = py::none(), py::arg("tau_B") = py::none())
       .def_property_readonly("f_W", [](const ComWrench& w) { return read_only(w.f_W); }, "(3,) force in W [N]")
@@ -497,7 +514,8 @@ void bind_result_types(py::module_& m) {
                                          "unpacks as f_W, tau = ...). Immutable.");
   planar_wrench
       .def(py::init([](py::handle f_W, py::handle tau) {
-             return PlanarWrench{py_io::as_vector2_or_zero(f_W, "f_W"), py_io::as_scalar(tau, "tau")};
+             return PlanarWrench{py_io::as_vector2_or_zero(py_io::in_si(f_W, "N", "f_W"), "f_W"),
+                                 py_io::as_scalar(py_io::in_si(tau, "N*m", "tau"), "tau")};
            }),
            py::arg("f_W") = py::none(), py::arg("tau") = 0.0)
       .def_property_readonly("f_W", [](const PlanarWrench& w) { return read_only(w.f_W); }, "(2,) force in W [N]")
@@ -519,7 +537,8 @@ void bind_result_types(py::module_& m) {
                                             "unpacks as a_W, alpha_B = ...). Immutable.");
   acceleration
       .def(py::init([](py::handle a_W, py::handle alpha_B) {
-             return BodyAcceleration{py_io::as_vector3_or_zero(a_W, "a_W"), py_io::as_vector3_or_zero(alpha_B, "alpha_B")};
+             return BodyAcceleration{py_io::as_vector3_or_zero(py_io::in_si(a_W, "m/s^2", "a_W"), "a_W"),
+                                     py_io::as_vector3_or_zero(py_io::in_si(alpha_B, "rad/s^2", "alpha_B"), "alpha_B")};
            }),
            py::arg("a_W") = py::none(), py::arg("alpha_B") = py::none())
       .def_property_readonly("a_W", [](const BodyAcceleration& a) { return read_only(a.a_W); },
@@ -546,7 +565,8 @@ void bind_result_types(py::module_& m) {
                                                      "unpacks as a_W, alpha = ...). Immutable.");
   planar_acceleration
       .def(py::init([](py::handle a_W, py::handle alpha) {
-             return PlanarAcceleration{py_io::as_vector2_or_zero(a_W, "a_W"), py_io::as_scalar(alpha, "alpha")};
+             return PlanarAcceleration{py_io::as_vector2_or_zero(py_io::in_si(a_W, "m/s^2", "a_W"), "a_W"),
+                                       py_io::as_scalar(py_io::in_si(alpha, "rad/s^2", "alpha"), "alpha")};
            }),
            py::arg("a_W") = py::none(), py::arg("alpha") = 0.0)
       .def_property_readonly("a_W", [](const PlanarAcceleration& a) { return read_only(a.a_W); },
@@ -596,23 +616,25 @@ void bind_dynamics_functions(py::module_& m) {
         return dispatch(
             body, state,
             [&](const RigidBody& b, const RigidBodyState& s) {
-              const ComWrench w = wrench_at_com(s.q_WB, py_io::as_vector3_or_zero(force, "force"),
-                                                py_io::as_vector3_or_zero(torque, "torque"),
-                                                py_io::as_vector3_or_zero(point, "point"), frame);
+              const ComWrench w =
+                  wrench_at_com(s.q_WB, py_io::as_vector3_or_zero(py_io::in_si(force, "N", "force"), "force"),
+                                py_io::as_vector3_or_zero(py_io::in_si(torque, "N*m", "torque"), "torque"),
+                                py_io::as_vector3_or_zero(py_io::in_si(point, "m", "point"), "point"), frame);
               return checked(forward_dynamics(b, s, w, as_gravity(gravity)), "forward_dynamics");
             },
             [&](const PlanarBody& b, const PlanarBodyState& s) {
-              const double tau = torque.is_none() ? 0.0 : py_io::as_scalar(torque, "torque");
-              const PlanarWrench w = wrench_at_com(s.theta, py_io::as_vector2_or_zero(force, "force"), tau,
-                                                   py_io::as_vector2_or_zero(point, "point"), frame);
+              const double tau = torque.is_none() ? 0.0 : py_io::as_scalar(py_io::in_si(torque, "N*m", "torque"), "torque");
+              const PlanarWrench w =
+                  wrench_at_com(s.theta, py_io::as_vector2_or_zero(py_io::in_si(force, "N", "force"), "force"), tau,
+                                py_io::as_vector2_or_zero(py_io::in_si(point, "m", "point"), "point"), frame);
               return checked(forward_dynamics(b, s, w, as_planar_gravity(gravity)), "forward_dynamics");
             },
             [&](const Particle& p, const ParticleState& s) {
               require_none_for_particle(torque, "torque", "a point mass takes no torque");
               require_none_for_particle(point, "point", "a point mass has one point");
               if (frame != Frame::world) py_io::throw_value_error("frame", "'world' for a Particle", "'body'");
-              return finite_result(forward_dynamics(p, s, py_io::as_vector3_or_zero(force, "force"), as_gravity(gravity)),
-                                   "forward_dynamics a_W");
+              const Eigen::Vector3d f_W = py_io::as_vector3_or_zero(py_io::in_si(force, "N", "force"), "force");
+              return finite_result(forward_dynamics(p, s, f_W, as_gravity(gravity)), "forward_dynamics a_W");
             });
       },
       py::arg("body"), py::arg("state"), py::arg("force") = py::none(), py::arg("torque") = py::none(),
@@ -637,21 +659,22 @@ void bind_dynamics_functions(py::module_& m) {
             body, state,
             [&](const RigidBody& b, const RigidBodyState& s) {
               return checked(inverse_dynamics(b, s,
-                                              BodyAcceleration{py_io::as_vector3(a_W, "a_W"),
-                                                               py_io::as_vector3(alpha_B, "alpha_B")},
+                                              BodyAcceleration{py_io::as_vector3(py_io::in_si(a_W, "m/s^2", "a_W"), "a_W"),
+                                                               py_io::as_vector3(py_io::in_si(alpha_B, "rad/s^2", "alpha_B"), "alpha_B")},
                                               as_gravity(gravity)),
                              "inverse_dynamics");
             },
             [&](const PlanarBody& b, const PlanarBodyState& s) {
               return checked(inverse_dynamics(b, s,
-                                              PlanarAcceleration{py_io::as_vector2(a_W, "a_W"),
-                                                                 py_io::as_scalar(alpha_B, "alpha_B")},
+                                              PlanarAcceleration{py_io::as_vector2(py_io::in_si(a_W, "m/s^2", "a_W"), "a_W"),
+                                                                 py_io::as_scalar(py_io::in_si(alpha_B, "rad/s^2", "alpha_B"), "alpha_B")},
                                               as_planar_gravity(gravity)),
                              "inverse_dynamics");
             },
             [&](const Particle& p, const ParticleState& s) {
               require_none_for_particle(alpha_B, "alpha_B", "a point mass has no angular acceleration");
-              return finite_result(inverse_dynamics(p, s, py_io::as_vector3(a_W, "a_W"), as_gravity(gravity)),
+              return finite_result(inverse_dynamics(p, s,
+                  py_io::as_vector3(py_io::in_si(a_W, "m/s^2", "a_W"), "a_W"), as_gravity(gravity)),
                                    "inverse_dynamics f_W");
             });
       },
@@ -685,13 +708,16 @@ void bind_dynamics_functions(py::module_& m) {
         return dispatch(
             body, state,
             [&](const RigidBody& b, const RigidBodyState& s) {
-              return finite_result(angular_momentum(b, s, py_io::as_vector3_or_zero(point, "point")), "angular_momentum");
+              return finite_result(angular_momentum(b, s,
+                  py_io::as_vector3_or_zero(py_io::in_si(point, "m", "point"), "point")), "angular_momentum");
             },
             [&](const PlanarBody& b, const PlanarBodyState& s) {
-              return finite_result(angular_momentum(b, s, py_io::as_vector2_or_zero(point, "point")), "angular_momentum");
+              return finite_result(angular_momentum(b, s,
+                  py_io::as_vector2_or_zero(py_io::in_si(point, "m", "point"), "point")), "angular_momentum");
             },
             [&](const Particle& p, const ParticleState& s) {
-              return finite_result(angular_momentum(p, s, py_io::as_vector3_or_zero(point, "point")), "angular_momentum");
+              return finite_result(angular_momentum(p, s,
+                  py_io::as_vector3_or_zero(py_io::in_si(point, "m", "point"), "point")), "angular_momentum");
             });
       },
       py::arg("body"), py::arg("state"), py::arg("point") = py::none(),
@@ -747,17 +773,18 @@ void bind_dynamics_functions(py::module_& m) {
         if (py::isinstance<RigidBodyState>(state)) {
           const RigidBodyState& s = checked_state_of<RigidBodyState>(state, "RigidBody");
           return py::cast(finite_result(
-              power(s, ComWrench{py_io::as_vector3(f_W, "f_W"), py_io::as_vector3_or_zero(tau_B, "tau_B")}), "power"));
+              power(s, ComWrench{py_io::as_vector3(py_io::in_si(f_W, "N", "f_W"), "f_W"),
+                                 py_io::as_vector3_or_zero(py_io::in_si(tau_B, "N*m", "tau_B"), "tau_B")}), "power"));
         }
         if (py::isinstance<PlanarBodyState>(state)) {
           const PlanarBodyState& s = checked_state_of<PlanarBodyState>(state, "PlanarBody");
-          const double tau = tau_B.is_none() ? 0.0 : py_io::as_scalar(tau_B, "tau_B");
-          return py::cast(finite_result(power(s, PlanarWrench{py_io::as_vector2(f_W, "f_W"), tau}), "power"));
+          const double tau = tau_B.is_none() ? 0.0 : py_io::as_scalar(py_io::in_si(tau_B, "N*m", "tau_B"), "tau_B");
+          return py::cast(finite_result(power(s, PlanarWrench{py_io::as_vector2(py_io::in_si(f_W, "N", "f_W"), "f_W"), tau}), "power"));
         }
         if (py::isinstance<ParticleState>(state)) {
           const ParticleState& s = checked_state_of<ParticleState>(state, "Particle");
           require_none_for_particle(tau_B, "tau_B", "a point mass takes no torque");
-          return py::cast(finite_result(power(s, py_io::as_vector3(f_W, "f_W")), "power"));
+          return py::cast(finite_result(power(s, py_io::as_vector3(py_io::in_si(f_W, "N", "f_W"), "f_W")), "power"));
         }
         py_io::throw_type_error("state", "a RigidBodyState, PlanarBodyState or ParticleState", state);
       },
@@ -774,22 +801,23 @@ void bind_dynamics_functions(py::module_& m) {
         return dispatch(
             body, state,
             [&](const RigidBody& b, const RigidBodyState& s) {
-              return checked(apply_impulse(b, s, py_io::as_vector3(impulse, "impulse"),
-                                           py_io::as_vector3_or_zero(point, "point"), frame,
-                                           py_io::as_vector3_or_zero(angular_impulse, "angular_impulse")),
+              return checked(apply_impulse(b, s, py_io::as_vector3(py_io::in_si(impulse, "N*s", "impulse"), "impulse"),
+                                           py_io::as_vector3_or_zero(py_io::in_si(point, "m", "point"), "point"), frame,
+                                           py_io::as_vector3_or_zero(py_io::in_si(angular_impulse, "N*m*s", "angular_impulse"), "angular_impulse")),
                              "apply_impulse");
             },
             [&](const PlanarBody& b, const PlanarBodyState& s) {
-              const double J = angular_impulse.is_none() ? 0.0 : py_io::as_scalar(angular_impulse, "angular_impulse");
-              return checked(apply_impulse(b, s, py_io::as_vector2(impulse, "impulse"),
-                                           py_io::as_vector2_or_zero(point, "point"), frame, J),
+              const double J = angular_impulse.is_none() ? 0.0 : py_io::as_scalar(py_io::in_si(angular_impulse, "N*m*s", "angular_impulse"), "angular_impulse");
+              return checked(apply_impulse(b, s, py_io::as_vector2(py_io::in_si(impulse, "N*s", "impulse"), "impulse"),
+                                           py_io::as_vector2_or_zero(py_io::in_si(point, "m", "point"), "point"), frame, J),
                              "apply_impulse");
             },
             [&](const Particle& p, const ParticleState& s) {
               require_none_for_particle(point, "point", "a point mass has one point");
               require_none_for_particle(angular_impulse, "angular_impulse", "a point mass takes no angular impulse");
               if (frame != Frame::world) py_io::throw_value_error("frame", "'world' for a Particle", "'body'");
-              return checked(apply_impulse(p, s, py_io::as_vector3(impulse, "impulse")), "apply_impulse");
+              return checked(apply_impulse(p, s,
+                  py_io::as_vector3(py_io::in_si(impulse, "N*s", "impulse"), "impulse")), "apply_impulse");
             });
       },
       py::arg("body"), py::arg("state"), py::arg("impulse"), py::arg("point") = py::none(),

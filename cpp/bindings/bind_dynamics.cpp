@@ -3,12 +3,16 @@
 // Every argument is taken as a handle and converted by name (numpy_io.hpp), so a wrong one raises
 // TypeError/ValueError naming it, never pybind11's overload list.
 #include <pybind11/stl.h>
+#include <pybind11/typing.h>
 
 #include "bindings.hpp"
 #include "common_args.hpp"
 #include "numpy_io.hpp"
+#include "python_run.hpp"
+#include "scene_run.hpp"
 #include "repr.hpp"
 #include "rigiddyn/check.hpp"
+#include "rigiddyn/scene/compile.hpp"  // scene_features
 #include "rigiddyn/simulate/simulate.hpp"
 
 #include <chrono>
@@ -23,28 +27,12 @@ using py_io::Array;
 
 namespace {
 
-// None, an AppliedLoad or an iterable of them.
-std::vector<AppliedLoad> as_loads(py::handle obj) {
-  constexpr const char* expected = "None, an AppliedLoad or a sequence of AppliedLoad";
-  std::vector<AppliedLoad> loads;
-  if (obj.is_none()) return loads;
-  if (py::isinstance<AppliedLoad>(obj)) return {obj.cast<AppliedLoad>()};
-  if (py::isinstance<py::str>(obj) || py::isinstance<py::bytes>(obj) || !py::isinstance<py::iterable>(obj)) {
-    py_io::throw_type_error("loads", expected, obj);
-  }
-  for (py::handle item : obj) {
-    if (!py::isinstance<AppliedLoad>(item)) py_io::throw_type_error("loads", std::string(expected) + " (items)", item);
-    loads.push_back(item.cast<AppliedLoad>());
-  }
-  return loads;
-}
-
 // The options shared by simulate and step, each argument converted by name (TypeError/ValueError
 // naming it); the core checks the values (dt > 0, finite gravity, ...).
 SimulationOptions as_options(py::handle dt, py::handle method, py::handle loads, py::handle gravity) {
   SimulationOptions o;
-  o.dt = py_io::as_scalar(dt, "dt");
-  o.method = method_from_name(py_io::as_string(method, "method"), "method");
+  o.dt = py_io::as_scalar(py_io::in_si(dt, "s", "dt"), "dt");
+  o.method = method.is_none() ? Method::rk4 : method_from_name(py_io::as_string(method, "method"), "method");
   o.loads = as_loads(loads);
   o.gravity_W = as_gravity(gravity);
   return o;
@@ -70,15 +58,6 @@ auto with_model(py::handle model, py::handle state, const char* state_name, F&& 
   py_io::throw_type_error("model", "a RigidBody, PlanarBody or Particle", model);
 }
 
-// A read-only numpy array taking ownership of a std::vector (no copy): `result.w_B[0, 0] = 1` raises.
-Array adopt(std::vector<double>&& data, std::vector<py::ssize_t> shape) {
-  auto* owner = new std::vector<double>(std::move(data));
-  py::capsule free_owner(owner, [](void* p) { delete static_cast<std::vector<double>*>(p); });
-  Array out(shape, owner->data(), free_owner);
-  out.attr("flags").attr("writeable") = false;
-  return out;
-}
-
 // simulate's result: numpy arrays, one row per record.
 struct SimulationResult {
   Array t, p_W, q_WB, v_W, w_B, kinetic_energy, total_energy, angular_momentum_norm, quaternion_norm_error, work;
@@ -89,13 +68,7 @@ struct SimulationResult {
 
 SimulationResult to_result(Trajectory&& tr, bool scalar_first) {
   const auto n = static_cast<py::ssize_t>(tr.size());
-  if (scalar_first) {
-    for (py::ssize_t i = 0; i < n; ++i) {
-      double* q = tr.q_WB.data() + 4 * i;
-      const double w = q[3];
-      q[3] = q[2], q[2] = q[1], q[1] = q[0], q[0] = w;
-    }
-  }
+  if (scalar_first) to_scalar_first(tr.q_WB);
   return SimulationResult{adopt(std::move(tr.t), {n}),
                           adopt(std::move(tr.p_W), {n, 3}),
                           adopt(std::move(tr.q_WB), {n, 4}),
@@ -111,48 +84,6 @@ SimulationResult to_result(Trajectory&& tr, bool scalar_first) {
                           tr.elapsed_seconds};
 }
 
-// simulate's monitor from Python (SimulationOptions::monitor): at most every 50 ms of the run it takes
-// the GIL, lets Python handle signals (Ctrl-C raises KeyboardInterrupt; only the main thread gets
-// them, so other threads skip this unless they report progress) and calls progress(steps_done). An
-// exception from either stops the run and is kept for simulate_py to raise once the GIL is back.
-class PythonMonitor {
- public:
-  explicit PythonMonitor(py::handle progress)
-      : progress_(progress.is_none() ? py::object() : py_io::as_callable(progress, "progress", "a callable(steps_done) or None")),
-        main_thread_(PyThread_get_thread_ident() ==
-                     py::module_::import("threading").attr("main_thread")().attr("ident").cast<unsigned long>()) {}
-
-  // Whether the run needs the monitor at all.
-  bool needed() const { return main_thread_ || progress_; }
-
-  bool operator()(std::int64_t steps_done) {
-    const auto now = std::chrono::steady_clock::now();
-    if (now < next_call_) return false;
-    next_call_ = now + std::chrono::milliseconds(50);
-    py::gil_scoped_acquire gil;
-    try {
-      if (main_thread_ && PyErr_CheckSignals() != 0) throw py::error_already_set();
-      if (progress_) progress_(steps_done);
-    } catch (py::error_already_set& e) {
-      error_ = std::move(e);
-      return true;
-    }
-    return false;
-  }
-
-  // The exception that stopped the run (call with the GIL held, after an interrupted run).
-  [[noreturn]] void raise() {
-    if (error_) throw *error_;
-    throw std::logic_error("simulate: interrupted without an exception");
-  }
-
- private:
-  py::object progress_;
-  bool main_thread_;
-  std::chrono::steady_clock::time_point next_call_ = std::chrono::steady_clock::now();
-  std::optional<py::error_already_set> error_;
-};
-
 template <class Body, class State>
 SimulationResult simulate_one(const Body& body, const State& initial, const SimulationOptions& o,
                               const std::string& method, py::handle progress, bool scalar_first) {
@@ -165,33 +96,29 @@ SimulationResult simulate_one(const Body& body, const State& initial, const Simu
     tr = simulate(body, initial, options);
   }
   if (tr.interrupted) monitor.raise();  // the records so far are dropped with tr
-  if (tr.diverged) {
-    const std::string msg = "simulate: the state became non-finite by t = " + format_value(tr.t.back()) +
-                            " (method '" + method + "', dt = " + format_value(o.dt) + "); the run stopped there";
-    if (PyErr_WarnEx(PyExc_RuntimeWarning, msg.c_str(), 1) != 0) throw py::error_already_set();
-  }
-  if (tr.unconverged_steps > 0) {
-    const std::string msg = "simulate: the implicit solve of method '" + method + "' did not converge in " +
-                            std::to_string(tr.unconverged_steps) + " of " + std::to_string(o.steps) +
-                            " steps at dt = " + format_value(o.dt) +
-                            " (its conservation is lost there); reduce dt (see methods() stability_limit)";
-    if (PyErr_WarnEx(PyExc_RuntimeWarning, msg.c_str(), 1) != 0) throw py::error_already_set();
-  }
+  warn_after_run(tr.diverged, tr.t.empty() ? o.t0 : tr.t.back(), tr.unconverged_steps, o.steps, method, o.dt);
   return to_result(std::move(tr), scalar_first);
 }
 
-// simulate: every argument converted by name before the run (see simulate_doc).
-SimulationResult simulate_py(py::handle model, py::handle initial, py::handle dt, py::handle steps, py::handle method,
-                       py::handle record_every, py::handle loads, py::handle gravity, py::handle t0,
-                       py::handle scalar_first, py::handle progress) {
-  return with_model(model, initial, "initial", [&](const auto& body, const auto& state) {
+// simulate: every argument converted by name before the run (see simulate_doc); a scene's run is
+// bind_scene.cpp's.
+py::typing::Union<SimulationResult, SceneResult> simulate_py(py::handle model, py::handle initial, py::handle dt,
+                                                             py::handle steps, py::handle method,
+                                                             py::handle record_every, py::handle loads,
+                                                             py::handle gravity, py::handle t0,
+                                                             py::handle scalar_first, py::handle progress) {
+  if (is_scene(model)) {
+    return py::cast(
+        simulate_scene_py(model, initial, dt, steps, method, record_every, loads, gravity, t0, scalar_first, progress));
+  }
+  return py::cast(with_model(model, initial, "initial", [&](const auto& body, const auto& state) {
     SimulationOptions o = as_options(dt, method, loads, gravity);
     o.steps = py_io::as_int(steps, "steps", 0);
     o.record_every = py_io::as_int(record_every, "record_every", 1);
-    o.t0 = py_io::as_scalar(t0, "t0");
+    o.t0 = py_io::as_scalar(py_io::in_si(t0, "s", "t0"), "t0");
     const bool first = py_io::as_bool(scalar_first, "scalar_first");
-    return simulate_one(body, state, o, method.cast<std::string>(), progress, first);
-  });
+    return simulate_one(body, state, o, method_info(o.method).name, progress, first);
+  }));
 }
 
 // The arrays of a SimulationResult in order (pickle state, field by field).
@@ -247,10 +174,11 @@ bool all_finite(const PlanarBodyState& s) {
 // t given: (new state, t + dt). Warns when the new state is not finite.
 py::object step_py(py::handle model, py::handle state, py::handle dt, py::handle method, py::handle loads,
                    py::handle gravity, py::handle t) {
+  if (is_scene(model)) return step_scene_py(model, state, dt, method, loads, gravity, t);
   return with_model(model, state, "state", [&](const auto& body, const auto& current) -> py::object {
     SimulationOptions o = as_options(dt, method, loads, gravity);
     if (!t.is_none()) {
-      o.t0 = py_io::as_scalar(t, "t");
+      o.t0 = py_io::as_scalar(py_io::in_si(t, "s", "t"), "t");
     } else if (has_time_window(o.loads)) {
       py_io::throw_value_error("t", "the time [s] of `state` (a load acts on a time window: t_start or t_end "
                                "finite; pass t=... and use the time returned)", "None");
@@ -259,7 +187,7 @@ py::object step_py(py::handle model, py::handle state, py::handle dt, py::handle
     if (!all_finite(next)) {
       const std::string msg = "step: the state became non-finite in the step of dt = " + format_value(o.dt) +
                               (t.is_none() ? std::string() : " from t = " + format_value(o.t0)) + " (method '" +
-                              method.cast<std::string>() + "')";
+                              method_info(o.method).name + "')";
       if (PyErr_WarnEx(PyExc_RuntimeWarning, msg.c_str(), 1) != 0) throw py::error_already_set();
     }
     if (t.is_none()) return py::cast(next);
@@ -270,8 +198,11 @@ py::object step_py(py::handle model, py::handle state, py::handle dt, py::handle
 const char* const simulate_doc = R"doc(
 Integrate `model` from `initial` over `steps` fixed steps of `dt` [s] with `method` (see methods()),
 in C++ with the GIL released, and record every `record_every`-th step (plus the first and the last).
+dt and t0: each a float [s] or a pint quantity (converted to s; ValueError naming it for another dimension).
 
-model/initial: Particle/ParticleState, PlanarBody/PlanarBodyState or RigidBody/RigidBodyState.
+model/initial: Particle/ParticleState, PlanarBody/PlanarBodyState or RigidBody/RigidBodyState; or a Scene
+  or CompiledScene and a list of the states of its bodies (returns a SceneResult: see Scene).
+method: a name of methods(); None (the default): 'rk4', or the method a CompiledScene was compiled for.
 loads: an AppliedLoad or a sequence of them, a piecewise-constant schedule: a step that crosses a
   switch time (a t_start or t_end) is split there into sub-steps of the same method, so every method
   keeps its order; records stay at t0 + i dt. gravity: None/False (the default: none), True
@@ -297,11 +228,15 @@ const char* const step_doc = R"doc(
 One step of `method` (see methods()) of length dt [s] from `state` at time t [s] to t + dt under `loads`
 (AppliedLoad or sequence) and `gravity` (None/False, the default: none; True for (0, 0, -9.81) m/s^2, or a
 3-vector [m/s^2] in W). A step across a switch time of the loads is split there, as in simulate.
+dt and t: each a float [s] or a pint quantity (converted to s; ValueError naming it for another dimension).
 
 t=None (default): returns the new state (same type as `state`); ValueError (naming t) if a load acts on a
   time window (finite t_start or t_end), since the step then depends on the time.
 t given: returns (new state, t + dt), e.g. `state, t = step(body, state, dt, loads=loads, t=t)` in a loop.
 Warns RuntimeWarning if the new state is not finite, as simulate does. ValueError names a bad argument.
+method: a name of methods(); None (the default): 'rk4', or the method a CompiledScene was compiled for.
+model may also be a Scene or CompiledScene with `state` a list of the states of its bodies: returns the
+list of new states (or (list, t + dt)).
 )doc";
 
 }  // namespace
@@ -310,11 +245,13 @@ void bind_dynamics(py::module_& m) {
   py::class_<AppliedLoad> load(m, "AppliedLoad",
                                "A load: force (3,) [N] through the centre of mass and torque (3,) [N m] (a pure "
                                "couple), both expressed in frame 'world' (W) or 'body' (B), active for t_start <= t < "
-                               "t_end [s]. Immutable.");
+                               "t_end [s]. Immutable. Each of force, torque, t_start, t_end: float(s) [unit] or a pint quantity (converted; "
+                               "ValueError naming it for another dimension).");
   load.def(py::init([](py::handle force, py::handle torque, py::handle frame, py::handle t_start, py::handle t_end) {
-             AppliedLoad l{py_io::as_vector3_or_zero(force, "force"), py_io::as_vector3_or_zero(torque, "torque"),
-                           as_frame(frame), py_io::as_extended_real(t_start, "t_start"),
-                           py_io::as_extended_real(t_end, "t_end")};
+             AppliedLoad l{py_io::as_vector3_or_zero(py_io::in_si(force, "N", "force"), "force"),
+                           py_io::as_vector3_or_zero(py_io::in_si(torque, "N*m", "torque"), "torque"), as_frame(frame),
+                           py_io::as_extended_real(py_io::in_si(t_start, "s", "t_start"), "t_start"),
+                           py_io::as_extended_real(py_io::in_si(t_end, "s", "t_end"), "t_end")};
              check_loads({l});
              return l;
            }),
@@ -399,11 +336,11 @@ void bind_dynamics(py::module_& m) {
           "scalar_first=True) (q_WB as (w, x, y, z); the result does not record it).");
 
 #define RIGIDDYN_SIMULATE_ARGS                                                                              \
-  py::arg("model"), py::arg("initial"), py::arg("dt"), py::arg("steps"), py::arg("method") = "rk4",      \
+  py::arg("model"), py::arg("initial"), py::arg("dt"), py::arg("steps"), py::arg("method") = py::none(),      \
       py::arg("record_every") = 1, py::arg("loads") = py::none(), py::arg("gravity") = py::none(),         \
       py::arg("t0") = 0.0, py::arg("scalar_first") = false, py::arg("progress") = py::none()
 #define RIGIDDYN_STEP_ARGS                                                                                  \
-  py::arg("model"), py::arg("state"), py::arg("dt"), py::arg("method") = "rk4", py::arg("loads") = py::none(), \
+  py::arg("model"), py::arg("state"), py::arg("dt"), py::arg("method") = py::none(), py::arg("loads") = py::none(), \
       py::arg("gravity") = py::none(), py::arg("t") = py::none()
   m.def("simulate", &simulate_py, RIGIDDYN_SIMULATE_ARGS, simulate_doc);
   m.def("step", &step_py, RIGIDDYN_STEP_ARGS, step_doc);
@@ -424,6 +361,7 @@ void bind_dynamics(py::module_& m) {
           d["notes"] = info.notes;
           d["stability_limit"] = info.stability_limit;
           d["exact_torque_free"] = info.exact_torque_free;
+          d["scene_features"] = scene_features(info.method);
           out.append(d);
         }
         return out;
@@ -431,8 +369,9 @@ void bind_dynamics(py::module_& m) {
       "The fixed-step methods: a list of dicts with name, order (global), evaluations (derivative "
       "evaluations per step), conserves (what is kept exactly on a free rigid body), notes, stability_limit "
       "(largest dt*|w| [rad], |w| the largest body rate on the torque-free orbit, at which the method is "
-      "documented stable on a free spin: inf if unconditionally, 0 if never) and exact_torque_free (True if "
-      "torque-free motion is reproduced to round-off at any dt: no observed order applies).");
+      "documented stable on a free spin: inf if unconditionally, 0 if never), exact_torque_free (True if "
+      "torque-free motion is reproduced to round-off at any dt: no observed order applies) and scene_features "
+      "(what of a Scene the method runs: bodies, elements, and its compatibility notes).");
 }
 
 }  // namespace rigiddyn::bindings

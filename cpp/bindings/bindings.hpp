@@ -11,4 +11,6 @@ void bind_inertia(pybind11::module_& m);
 void bind_bodies(pybind11::module_& m);
 void bind_dynamics(pybind11::module_& m);
 void bind_exact(pybind11::module_& m);
+void bind_scene_elements(pybind11::module_& m);
+void bind_scene(pybind11::module_& m);
 }  // namespace rigiddyn::bindings

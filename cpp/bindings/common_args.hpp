@@ -21,7 +21,7 @@ inline Eigen::Vector3d as_gravity(pybind11::handle obj) {
   if (obj.is_none()) return Eigen::Vector3d::Zero();
   if (pybind11::isinstance<pybind11::bool_>(obj))
     return obj.cast<bool>() ? standard_gravity() : Eigen::Vector3d::Zero();
-  return py_io::as_vector3(obj, "gravity");
+  return py_io::as_vector3(py_io::in_si(obj, "m/s^2", "gravity"), "gravity");  // a float array [m/s²] or a pint quantity
 }
 
 }  // namespace rigiddyn::bindings

@@ -11,6 +11,8 @@ PYBIND11_MODULE(_core, m) {
   rigiddyn::bindings::bind_spatial(m);
   rigiddyn::bindings::bind_inertia(m);
   rigiddyn::bindings::bind_bodies(m);
+  rigiddyn::bindings::bind_scene_elements(m);
+  rigiddyn::bindings::bind_scene(m);  // before bind_dynamics: simulate's signature names SceneResult
   rigiddyn::bindings::bind_dynamics(m);
   rigiddyn::bindings::bind_exact(m);
 }

@@ -95,7 +95,35 @@ Target contiguous(const py::array& raw, const std::string& name) {
   }
 }
 
+// True for an object with a pint Quantity's attributes (any registry; pint is not imported to ask).
+bool looks_like_quantity(PyObject* p) {
+  return PyObject_HasAttrString(p, "magnitude") && PyObject_HasAttrString(p, "units") && PyObject_HasAttrString(p, "to");
+}
+
+// True when p is a quantity or a list/tuple holding one (`depth` levels of nesting looked into). Plain
+// numbers, None, strings and numpy arrays answer at once, without an attribute lookup.
+bool holds_quantity(PyObject* p, int depth) {
+  if (PyFloat_Check(p) || PyLong_Check(p) || p == Py_None || PyUnicode_Check(p)) return false;
+  const bool list = PyList_Check(p);
+  if (list || PyTuple_Check(p)) {
+    if (depth == 0) return false;
+    const Py_ssize_t n = list ? PyList_GET_SIZE(p) : PyTuple_GET_SIZE(p);
+    for (Py_ssize_t i = 0; i < n; ++i)
+      if (holds_quantity(list ? PyList_GET_ITEM(p, i) : PyTuple_GET_ITEM(p, i), depth - 1)) return true;
+    return false;
+  }
+  if (py::isinstance<py::array>(p)) return false;
+  return looks_like_quantity(p);
+}
+
 }  // namespace
+
+// ------------------------------------------------------------ units
+
+py::object in_si(py::handle obj, const char* unit, const char* name) {
+  if (!holds_quantity(obj.ptr(), 2)) return py::reinterpret_borrow<py::object>(obj);
+  return py::module_::import("rigiddyn.units").attr("to_si")(obj, unit, name);
+}
 
 // ------------------------------------------------------------ messages
 

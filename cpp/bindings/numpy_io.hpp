@@ -98,6 +98,16 @@ const T& as_finite_spatial(py::handle obj, const std::string& name, const std::s
 // A callable object.
 py::function as_callable(py::handle obj, const std::string& name, const std::string& expected);
 
+// ------------------------------------------------------------ units
+// The argument `obj` in the SI unit `unit` (a pint expression: "kg", "kg*m^2", "m/s", "N*m*s"), to be
+// converted next by as_scalar, as_vector3, ... as a plain SI value: a pint Quantity of any registry
+// (holding a number, or an array with one unit), or a list or tuple with quantities among its items
+// (nested once: rows of a matrix), is converted by rigiddyn.units.to_si, which raises ValueError
+// "<name>: expected <unit>, got <value>" for a quantity of another dimension; anything else is returned
+// unchanged, without a Python call (a float is SI as it is). A quantity is recognised by its attributes
+// (magnitude, units, to), so pint is imported only when one is passed.
+py::object in_si(py::handle obj, const char* unit, const char* name);
+
 // ------------------------------------------------------------ arrays
 // obj as a C-contiguous float64 array (no copy when it is one already). TypeError unless its dtype
 // is bool, integer or real float (or it is not array-like), ValueError for a ragged sequence,

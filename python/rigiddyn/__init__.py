@@ -10,9 +10,11 @@ from ._core import *  # noqa: F401,F403  (the core's names are the package's API
 from .rotation_scipy import from_scipy, to_scipy
 from .inertia_mesh import mesh_shell, solid_mesh  # type: ignore[assignment]  # the core's, also taking trimesh objects
 from .problem import Problem, load_problem
+from . import scene_describe as _scene_describe  # noqa: F401  (attaches Scene.describe, CompiledScene.describe)
+from .scene_file import load_scene
 from .stability import StabilityWarning
 from .work_precision import TradeoffResult, tradeoff  # the function; its module is rigiddyn.work_precision
 
 __version__: str = _core.__version__
 __all__ = [name for name in dir(_core) if not name.startswith("_")] + ["to_scipy", "from_scipy"] + [
-    "Problem", "load_problem", "StabilityWarning", "TradeoffResult", "tradeoff"]
+    "Problem", "load_problem", "StabilityWarning", "TradeoffResult", "tradeoff", "load_scene"]

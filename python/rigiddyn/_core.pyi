@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['AppliedLoad', 'BodyAcceleration', 'ComWrench', 'DensityIntegral', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'InertiaCheck', 'InertiaReport', 'KineticEnergy', 'MeshWeldWarning', 'Motion', 'Particle', 'ParticleState', 'PlanarAcceleration', 'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointVelocity', 'PrincipalAxes', 'RigidBody', 'RigidBodyState', 'Screw', 'SimulationResult', 'SpatialInertia', 'TorqueFreeSolution', 'Transform', 'WeldedMesh', 'align_vectors', 'angular_distance', 'angular_momentum', 'angular_velocity_from_quat_rate', 'apply_impulse', 'axis_angle_to_quat', 'box_shell', 'compose_kinematics', 'composite', 'davenport_to_quat', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'from_point_masses', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation', 'nearest_valid_inertia', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix', 'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'simulate', 'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'twist_to_screw', 'vee', 'weld_vertices']
+__all__: list[str] = ['AppliedLoad', 'BodyAcceleration', 'ComWrench', 'CompiledScene', 'DensityIntegral', 'Drag', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'GravityGradient', 'InertiaCheck', 'InertiaReport', 'KineticEnergy', 'MeshWeldWarning', 'Motion', 'MutualGravity', 'Particle', 'ParticleState', 'PlanarAcceleration', 'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointMassGravity', 'PointVelocity', 'PrincipalAxes', 'PythonForce', 'RigidBody', 'RigidBodyState', 'Scene', 'SceneCompatibilityWarning', 'SceneResult', 'ScheduledLoads', 'Screw', 'SimulationResult', 'SpatialInertia', 'SpringDamper', 'TorqueFreeSolution', 'Transform', 'UniformGravity', 'WeldedMesh', 'align_vectors', 'angular_distance', 'angular_momentum', 'angular_velocity_from_quat_rate', 'apply_impulse', 'axis_angle_to_quat', 'box_shell', 'compose_kinematics', 'composite', 'davenport_to_quat', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'from_point_masses', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation', 'nearest_valid_inertia', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix', 'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'simulate', 'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'twist_to_screw', 'vee', 'weld_vertices']
 class FrameKinematics:
     """
     Frame F relative to frame P at one instant (P = the parent of a FrameMotion, or the
@@ -925,7 +925,7 @@ class DensityIntegral:
         """
 class Particle:
     """
-    A point mass (3 DOF; "Rigid body kinematics and dynamics" notes, section 4.11): mass [kg] > 0.
+    A point mass (3 DOF; "Rigid body kinematics and dynamics" notes, section 4.11): mass float [kg] > 0 or a pint quantity.
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, other: typing.Any) -> typing.Any:
@@ -945,7 +945,7 @@ class Particle:
         """
 class PlanarBody:
     """
-    A rigid body moving in the xy plane of W (x, y, theta; plane kinetics of Craig's "Rigid Body Dynamics" slides): mass [kg] and inertia_zz [kg m^2] about the z axis through the centre of mass, both > 0.
+    A rigid body moving in the xy plane of W (x, y, theta; plane kinetics of Craig's "Rigid Body Dynamics" slides): mass [kg] and inertia_zz [kg m^2] about the z axis through the centre of mass, both > 0; each a float [unit] or a pint quantity.
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, other: typing.Any) -> typing.Any:
@@ -982,6 +982,7 @@ class RigidBody:
     triangle inequality I_a + I_b >= I_c; check=InertiaCheck.allow_unrealizable accepts test bodies no real
     body has, e.g. I = diag(2, 1, 2/3). euler_form tells which form of Euler's equations it uses:
     'spherical', 'principal' or 'full'.
+    mass and inertia_com: floats [kg], [kg m^2] or pint quantities (an array quantity for the inertia; converted, ValueError naming the argument for another dimension).
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, other: typing.Any) -> typing.Any:
@@ -1011,7 +1012,7 @@ class RigidBody:
         """
 class ParticleState:
     """
-    Particle state: p_W (3,) [m] and v_W (3,) [m/s] in W (None: zero). Fields are assigned whole (s.v_W = [...]); their arrays are read-only.
+    Particle state: p_W (3,) [m] and v_W (3,) [m/s] in W (None: zero), each floats [unit] or a pint quantity. Fields are assigned whole (s.v_W = [...]); their arrays are read-only.
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, other: typing.Any) -> typing.Any:
@@ -1042,7 +1043,7 @@ class ParticleState:
         ...
 class PlanarBodyState:
     """
-    Planar body state: p_W (2,) [m] centre of mass in W, theta [rad] angle of B about z, v_W (2,) [m/s] in W, omega [rad/s] (None: zero). Fields are assigned whole; their arrays are read-only.
+    Planar body state: p_W (2,) [m] centre of mass in W, theta [rad] angle of B about z, v_W (2,) [m/s] in W, omega [rad/s] (None: zero), each floats [unit] or a pint quantity. Fields are assigned whole; their arrays are read-only.
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, other: typing.Any) -> typing.Any:
@@ -1089,7 +1090,7 @@ class PlanarBodyState:
         ...
 class RigidBodyState:
     """
-    Rigid body state (docs/conventions.md): p_W (3,) centre of mass in W [m], q_WB (4,) unit quaternion (x, y, z, w), or (w, x, y, z) with scalar_first=True, v_W (3,) centre of mass velocity in W [m/s], w_B (3,) angular velocity [rad/s] in B (None: zero, identity). q_WB is normalised; ValueError if | |q| - 1 | > 1e-6. Fields are assigned whole (s.w_B = [...], s.q_WB = [x, y, z, w], checked as here); their arrays are read-only.
+    Rigid body state (docs/conventions.md): p_W (3,) centre of mass in W [m], q_WB (4,) unit quaternion (x, y, z, w), or (w, x, y, z) with scalar_first=True, v_W (3,) centre of mass velocity in W [m/s], w_B (3,) angular velocity [rad/s] in B (None: zero, identity); p_W, v_W, w_B: floats [unit] or pint quantities. q_WB is normalised; ValueError if | |q| - 1 | > 1e-6. Fields are assigned whole (s.w_B = [...], s.q_WB = [x, y, z, w], checked as here); their arrays are read-only.
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, other: typing.Any) -> typing.Any:
@@ -1292,9 +1293,484 @@ class PlanarAcceleration:
         """
         angular acceleration about z [rad/s^2]
         """
+class UniformGravity:
+    """
+    Uniform gravity on the listed bodies: f_W = m g_W at each centre of mass, potential V = -m g_W . p_W [J]. g_W (3,) [m/s^2] in W (default (0, 0, -9.81)); bodies: None (every body) or body indices. A planar body keeps the in-plane part (the plane takes the rest). Each physical argument: a float [its unit above] or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
+    """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, *, g_W: typing.Any = (0.0, 0.0, -9.81), bodies: typing.Any = None) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def bodies(self) -> typing.Any:
+        """
+        None (every body) or a tuple of the indices of the bodies it acts on
+        """
+    @property
+    def g_W(self) -> typing.Any:
+        """
+        (3,) gravitational acceleration in W [m/s^2]
+        """
+class PointMassGravity:
+    """
+    A fixed attractor of gravitational parameter gm [m^3/s^2] at p_W (3,) [m] in W: on each listed body f_W = -gm m r/(|r|^2 + softening^2)^(3/2), r = p_body - p_W, potential V = -gm m/sqrt(|r|^2 + softening^2) [J]; softening [m] >= 0; bodies: None (every body) or body indices. Each physical argument: a float [its unit above] or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
+    """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, *, gm: typing.Any, p_W: typing.Any = (0.0, 0.0, 0.0), softening: typing.Any = 0.0, bodies: typing.Any = None) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def bodies(self) -> typing.Any:
+        """
+        None (every body) or a tuple of the indices of the bodies it acts on
+        """
+    @property
+    def gm(self) -> typing.Any:
+        """
+        gravitational parameter GM of the attractor [m^3/s^2]
+        """
+    @property
+    def p_W(self) -> typing.Any:
+        """
+        (3,) position of the fixed attractor in W [m]
+        """
+    @property
+    def softening(self) -> typing.Any:
+        """
+        softening length epsilon [m] (0: none)
+        """
+class MutualGravity:
+    """
+    Newtonian gravity between the listed bodies (direct O(N^2) sum over the pairs): f on i = -G m_i m_j r/(|r|^2 + softening^2)^(3/2), r = p_i - p_j [N], potential V = sum -G m_i m_j/sqrt(|r|^2 + softening^2) [J]. G [m^3/(kg s^2)] (default 6.67430e-11); softening [m] >= 0; bodies: None (every body) or body indices. Each physical argument: a float [its unit above] or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
+    """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, *, G: typing.Any = 6.6743e-11, softening: typing.Any = 0.0, bodies: typing.Any = None) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def G(self) -> typing.Any:
+        """
+        gravitational constant [m^3/(kg s^2)]
+        """
+    @property
+    def bodies(self) -> typing.Any:
+        """
+        None (every body) or a tuple of the indices of the bodies that attract each other
+        """
+    @property
+    def softening(self) -> typing.Any:
+        """
+        softening length epsilon [m] (0: none)
+        """
+class GravityGradient:
+    """
+    The gravity-gradient (MacCullagh) term of a central attractor gm [m^3/s^2] at p_W (3,) [m] in W on extended bodies: torque tau_B = 3 gm/|r|^5 r_B x (I r_B) [N m] and the matching force, so that the potential V2 = -gm/(2|r|^3) (tr I - 3 r^T I_W r/|r|^2) [J] is conserved with the motion; no effect on particles. bodies: None (every body) or body indices. Each physical argument: a float [its unit above] or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
+    """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, *, gm: typing.Any, p_W: typing.Any = (0.0, 0.0, 0.0), bodies: typing.Any = None) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def bodies(self) -> typing.Any:
+        """
+        None (every body) or a tuple of the indices of the bodies it acts on
+        """
+    @property
+    def gm(self) -> typing.Any:
+        """
+        gravitational parameter GM of the central attractor [m^3/s^2]
+        """
+    @property
+    def p_W(self) -> typing.Any:
+        """
+        (3,) position of the attractor in W [m]
+        """
+class SpringDamper:
+    """
+    A linear spring and damper between point_a_B (3,) [m] of body_a (in its frame B, from its centre of mass) and point_b (3,) [m] of body_b (in its B) or, body_b None, the world anchor point_b in W. Force on a: -(stiffness (l - rest_length) + damping dl/dt) u, u = (x_a - x_b)/l, l = |x_a - x_b| [N], along the line (no force at l = 0), so the pair conserves momentum and angular momentum; the opposite on b; torque r x f about each centre of mass. stiffness [N/m], rest_length [m], damping [N s/m], each >= 0. Potential V = stiffness (l - rest_length)^2/2 [J]. Each physical argument: a float [its unit above] or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
+    """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, *, body_a: typing.Any, point_a_B: typing.Any = (0.0, 0.0, 0.0), body_b: typing.Any = None, point_b: typing.Any = (0.0, 0.0, 0.0), stiffness: typing.Any, rest_length: typing.Any = 0.0, damping: typing.Any = 0.0) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def body_a(self) -> typing.Any:
+        """
+        index of the body at end a
+        """
+    @property
+    def body_b(self) -> typing.Any:
+        """
+        index of the body at end b, or None: end b is the world anchor point_b
+        """
+    @property
+    def damping(self) -> typing.Any:
+        """
+        damping coefficient c [N s/m]
+        """
+    @property
+    def point_a_B(self) -> typing.Any:
+        """
+        (3,) end a in body a's frame B, from its centre of mass [m]
+        """
+    @property
+    def point_b(self) -> typing.Any:
+        """
+        (3,) end b: in body b's frame B from its centre of mass, or in W if body_b is None [m]
+        """
+    @property
+    def rest_length(self) -> typing.Any:
+        """
+        rest length l0 [m]
+        """
+    @property
+    def stiffness(self) -> typing.Any:
+        """
+        spring stiffness k [N/m]
+        """
+class Drag:
+    """
+    Linear and quadratic drag on the listed bodies: f_W = -(linear + quadratic |v_W|) v_W [N] at the centre of mass and tau_B = -(angular_linear + angular_quadratic |w_B|) w_B [N m]; coefficients >= 0 ([N s/m], [N s^2/m^2], [N m s/rad], [N m s^2/rad^2]). Velocity-dependent: the splitting methods warn (SceneCompatibilityWarning). bodies: None (every body) or body indices. Each physical argument: a float [its unit above] or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
+    """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, *, linear: typing.Any = 0.0, quadratic: typing.Any = 0.0, angular_linear: typing.Any = 0.0, angular_quadratic: typing.Any = 0.0, bodies: typing.Any = None) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def angular_linear(self) -> typing.Any:
+        """
+        d1 of tau_B = -(d1 + d2 |w_B|) w_B [N m s/rad]
+        """
+    @property
+    def angular_quadratic(self) -> typing.Any:
+        """
+        d2 of tau_B = -(d1 + d2 |w_B|) w_B [N m s^2/rad^2]
+        """
+    @property
+    def bodies(self) -> typing.Any:
+        """
+        None (every body) or a tuple of the indices of the bodies it acts on
+        """
+    @property
+    def linear(self) -> typing.Any:
+        """
+        c1 of f_W = -(c1 + c2 |v_W|) v_W [N s/m]
+        """
+    @property
+    def quadratic(self) -> typing.Any:
+        """
+        c2 of f_W = -(c1 + c2 |v_W|) v_W [N s^2/m^2]
+        """
+class ScheduledLoads:
+    """
+    The piecewise-constant schedule `loads` (AppliedLoad or a sequence: force [N] and torque [N m], each in W or B, active on [t_start, t_end) [s]) on body `body`, the forces applied at point_B (3,) [m] (in B, from the centre of mass; adds the torque point_B x f_B). A run splits its steps at the switch times, as simulate does for one body. Each physical argument: a float [its unit above] or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
+    """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, *, body: typing.Any, loads: typing.Any = (), point_B: typing.Any = (0.0, 0.0, 0.0)) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def body(self) -> typing.Any:
+        """
+        index of the body the loads act on
+        """
+    @property
+    def loads(self) -> typing.Any:
+        """
+        tuple of AppliedLoad: the piecewise-constant schedule
+        """
+    @property
+    def point_B(self) -> typing.Any:
+        """
+        (3,) point of application of the forces in B, from the centre of mass [m]
+        """
+class PythonForce:
+    """
+    A force written in Python: fn(t, body, p_W, q_WB, v_W, w_B) -> (f_W, tau_B) is called for each listed body at every derivative evaluation, with t [s], the body's index, p_W (3,) [m] and v_W (3,) [m/s] in W, q_WB (4,) (x, y, z, w) and w_B (3,) [rad/s] in B (a particle: q_WB identity, w_B 0; a planar body: p_W = (x, y, 0), q_WB = Rz(theta), w_B = (0, 0, omega)); it returns f_W (3,) [N] in W at the centre of mass and tau_B (3,) [N m] in B. It is treated as time- and velocity-dependent. Each call takes the GIL (the run otherwise releases it: other Python threads wait during fn) and costs about 1.2 us per call against about 10 ns for a built-in element (measured 2026-11-24, 10 particles, RK4: python bench/python/bench_scene.py). An exception raised by fn stops the run and propagates; a return value other than two finite 3-vectors raises TypeError/ValueError naming fn. bodies: None (every body) or body indices.
+    """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, fn: typing.Any, bodies: typing.Any = None) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def bodies(self) -> typing.Any:
+        """
+        None (every body) or a tuple of the indices of the bodies it acts on
+        """
+    @property
+    def fn(self) -> typing.Any:
+        """
+        the callable fn(t, body, p_W, q_WB, v_W, w_B) -> (f_W, tau_B)
+        """
+class SceneCompatibilityWarning(UserWarning):
+    """
+    Warned when a scene is compiled for a method whose properties its elements break (e.g. velocity-dependent forces with a splitting method: order 1 in the damping, energy behaviour not symplectic). A UserWarning.
+    """
+class Scene:
+    """
+    A scene: bodies (Particle, PlanarBody, RigidBody) and the force elements acting on them, as data.
+    
+        scene = rigiddyn.Scene()
+        sat = scene.add_body(rigiddyn.RigidBody(500.0, [400.0, 300.0, 200.0]), name="sat")
+        scene.add(rigiddyn.PointMassGravity(gm=3.986004418e14))
+        result = rigiddyn.simulate(scene, [rigiddyn.RigidBodyState(p_W=[7e6, 0, 0], v_W=[0, 7546.0, 0])],
+                                   dt=1.0, steps=6000, method="rk4")
+    
+    Scene(bodies=None, body_names=None, elements=None) builds the same from lists (body_names: one str or
+    None per body); it is what repr prints. Bodies are indexed in the order added; an element refers to bodies
+    by index and is checked against the bodies added so far (add bodies first). Compile it for a method with
+    compile(method) (a CompiledScene, immutable), or give it to rigiddyn.simulate / rigiddyn.step, which
+    compile it. Mutable (add_body, add); pickles; == compares bodies, names and elements.
+    """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple[list, list, list]:
+        ...
+    def __init__(self, bodies: typing.Any = None, body_names: typing.Any = None, elements: typing.Any = None) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    def add(self, element: typing.Any) -> int:
+        """
+        Adds a force element (UniformGravity, PointMassGravity, MutualGravity, GravityGradient, SpringDamper, Drag, ScheduledLoads, PythonForce) after checking it against the bodies added so far (indices in range, loads the body's kind can take: ValueError naming element.<field>); returns its index (the column of SceneResult.work and power).
+        """
+    def add_body(self, body: typing.Any, name: typing.Any = None) -> int:
+        """
+        Adds `body` (a Particle, PlanarBody or RigidBody) named `name` (a str no other body has; None: 'body<index>'); returns its index, by which elements refer to it.
+        """
+    def compile(self, method: typing.Any = 'rk4') -> CompiledScene:
+        """
+        The scene compiled for `method` (a name of methods()): an immutable CompiledScene whose derivative evaluates only the declared elements. ValueError with the reason when the method cannot run the scene (e.g. 'exact' with any force element); SceneCompatibilityWarning when it runs it with weaker properties (velocity-dependent elements with a splitting method).
+        """
+    def describe(self, method: typing.Any = None) -> typing.Any:
+        """
+        A text table of the scene: bodies (kind, mass [kg], inertia [kg m^2] in B, state), force elements (parameters in SI with their frames, properties, the terms on each body), the frame (W, inertial), the units and, with `method` (a name of methods()), its order and the compile's verdict (rigiddyn.scene_describe.describe).
+        """
+    def to_toml(self, initial: typing.Any = None, run: typing.Any = None, name: typing.Any = None, description: typing.Any = None) -> typing.Any:
+        """
+        The canonical scene file (TOML text: SI units, radians, q_WB as (x, y, z, w)) of the scene with `initial` (one state per body, or None), `run` (a rigiddyn.scene_file.RunOptions or None), `name` and `description`; rigiddyn.load_scene reads it back to the same scene (rigiddyn.scene_file.scene_to_toml).
+        """
+    @property
+    def bodies(self) -> tuple:
+        """
+        tuple of the bodies (copies), in index order
+        """
+    @property
+    def body_names(self) -> tuple:
+        """
+        tuple of the bodies' names (str), in index order
+        """
+    @property
+    def elements(self) -> tuple:
+        """
+        tuple of the force elements (copies), in the order added
+        """
+class CompiledScene:
+    """
+    A scene compiled for one method (Scene.compile): immutable; its derivative evaluates only the declared elements. CompiledScene(scene, method='rk4') is scene.compile(method). Give it to rigiddyn.simulate / rigiddyn.step (method None or its own). Pickles (as its scene and method); == compares both.
+    """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple[Scene, str]:
+        ...
+    def __init__(self, scene: typing.Any, method: typing.Any = 'rk4') -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    def describe(self) -> typing.Any:
+        """
+        Scene.describe of its scene with its method: bodies, force elements, frame, units, the method's order and the compile's verdict (rigiddyn.scene_describe.describe).
+        """
+    @property
+    def method(self) -> str:
+        """
+        the method's name (see methods())
+        """
+    @property
+    def scene(self) -> Scene:
+        """
+        the Scene it was compiled from (a copy)
+        """
+    @property
+    def warnings(self) -> tuple:
+        """
+        tuple of the compatibility warnings (str) compiling gave
+        """
+class SceneResult:
+    """
+    The records of simulate(scene, ...), one row per record (n records, nb bodies in the scene's order, ne
+    elements in the scene's order); every array is read-only and shares the memory the C++ run filled.
+    
+    t (n,) [s]; p_W (n, nb, 3) centre of mass positions in W [m]; q_WB (n, nb, 4) attitudes, (x, y, z, w)
+    unless simulate(..., scalar_first=True); v_W (n, nb, 3) [m/s] in W; w_B (n, nb, 3) [rad/s] in each body's
+    B. A particle records q_WB = identity and w_B = 0; a planar body p_W = (x, y, 0), q_WB = Rz(theta),
+    w_B = (0, 0, omega). kinetic_energy, potential_energy (the sum of the elements' potentials), total_energy
+    (n,) [J]; linear_momentum_W (n, 3) [kg m/s]; angular_momentum_W (n, 3) about W's origin [kg m^2/s];
+    work (n, ne) each element's work since t0 [J] and power (n, ne) its power at the record [W] (integrated by
+    the run's method: kinetic_energy - kinetic_energy[0] ~ work.sum(axis=1)); body_names (nb,) and elements
+    (ne,) (each element's class name) label the axes; diverged, unconverged_steps, elapsed_seconds as in
+    SimulationResult.
+    """
+    def __getstate__(self) -> tuple:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    def to_dataframe(self, scalar_first: typing.Any = False) -> typing.Any:
+        """
+        A pandas.DataFrame of the records (needs pandas): one row per record, one column per scalar with its unit (wide format; rigiddyn.scene_result documents the columns): 't [s]', then per body '<name>:p_W_x [m]' .. '<name>:q_WB_x' .. '<name>:v_W_x [m/s]' .. '<name>:w_B_x [rad/s]' .., then 'kinetic_energy [J]', 'potential_energy [J]', 'total_energy [J]', 'linear_momentum_W_x [kg m/s]' .., 'angular_momentum_W_x [kg m^2/s]' .., then per element i 'work[i] <Class> [J]' and 'power[i] <Class> [W]'. scalar_first=True for a result of simulate(..., scalar_first=True).
+        """
+    @property
+    def angular_momentum_W(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (n, 3) about W's origin, in W: sum of p_W x m v_W + R_WB I w_B [kg m^2/s]
+        """
+    @property
+    def body_names(self) -> tuple:
+        """
+        (nb,) tuple of the bodies' names
+        """
+    @property
+    def diverged(self) -> bool:
+        """
+        True if the run stopped on a non-finite state
+        """
+    @property
+    def elapsed_seconds(self) -> float:
+        """
+        wall time of the C++ stepping loop [s]
+        """
+    @property
+    def elements(self) -> tuple:
+        """
+        (ne,) tuple of the elements' class names
+        """
+    @property
+    def kinetic_energy(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (n,) sum over the bodies [J]
+        """
+    @property
+    def linear_momentum_W(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (n, 3) sum of m v_W, in W [kg m/s]
+        """
+    @property
+    def p_W(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (n, nb, 3) centre of mass positions in W [m]
+        """
+    @property
+    def potential_energy(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (n,) sum of the elements' potentials [J]
+        """
+    @property
+    def power(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (n, ne) each element's power at the record [W]
+        """
+    @property
+    def q_WB(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (n, nb, 4) attitudes, (x, y, z, w) unless scalar_first
+        """
+    @property
+    def t(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (n,) time [s]
+        """
+    @property
+    def total_energy(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (n,) kinetic + potential [J]
+        """
+    @property
+    def unconverged_steps(self) -> int:
+        """
+        number of steps whose implicit solve stopped at its iteration cap (0 for explicit methods)
+        """
+    @property
+    def v_W(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (n, nb, 3) centre of mass velocities in W [m/s]
+        """
+    @property
+    def w_B(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (n, nb, 3) angular velocities, each in its body's B [rad/s]
+        """
+    @property
+    def work(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (n, ne) each element's work since t0 [J]
+        """
 class AppliedLoad:
     """
-    A load: force (3,) [N] through the centre of mass and torque (3,) [N m] (a pure couple), both expressed in frame 'world' (W) or 'body' (B), active for t_start <= t < t_end [s]. Immutable.
+    A load: force (3,) [N] through the centre of mass and torque (3,) [N m] (a pure couple), both expressed in frame 'world' (W) or 'body' (B), active for t_start <= t < t_end [s]. Immutable. Each of force, torque, t_start, t_end: float(s) [unit] or a pint quantity (converted; ValueError naming it for another dimension).
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, other: typing.Any) -> typing.Any:
@@ -1734,7 +2210,7 @@ def mesh_volume(vertices: typing.Any, faces: typing.Any) -> float:
     """
 def methods() -> list:
     """
-    The fixed-step methods: a list of dicts with name, order (global), evaluations (derivative evaluations per step), conserves (what is kept exactly on a free rigid body), notes, stability_limit (largest dt*|w| [rad], |w| the largest body rate on the torque-free orbit, at which the method is documented stable on a free spin: inf if unconditionally, 0 if never) and exact_torque_free (True if torque-free motion is reproduced to round-off at any dt: no observed order applies).
+    The fixed-step methods: a list of dicts with name, order (global), evaluations (derivative evaluations per step), conserves (what is kept exactly on a free rigid body), notes, stability_limit (largest dt*|w| [rad], |w| the largest body rate on the torque-free orbit, at which the method is documented stable on a free spin: inf if unconditionally, 0 if never), exact_torque_free (True if torque-free motion is reproduced to round-off at any dt: no observed order applies) and scene_features (what of a Scene the method runs: bodies, elements, and its compatibility notes).
     """
 def motion_cross_matrix(motion: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
     """
@@ -1960,12 +2436,15 @@ def screw_to_twist(screw: typing.Any) -> Motion:
     The twist of a screw: w = magnitude direction, v = magnitude (point x direction + pitch direction)
     (v = magnitude direction for pitch inf).
     """
-def simulate(model: typing.Any, initial: typing.Any, dt: typing.Any, steps: typing.Any, method: typing.Any = 'rk4', record_every: typing.Any = 1, loads: typing.Any = None, gravity: typing.Any = None, t0: typing.Any = 0.0, scalar_first: typing.Any = False, progress: typing.Any = None) -> SimulationResult:
+def simulate(model: typing.Any, initial: typing.Any, dt: typing.Any, steps: typing.Any, method: typing.Any = None, record_every: typing.Any = 1, loads: typing.Any = None, gravity: typing.Any = None, t0: typing.Any = 0.0, scalar_first: typing.Any = False, progress: typing.Any = None) -> SimulationResult | SceneResult:
     """
     Integrate `model` from `initial` over `steps` fixed steps of `dt` [s] with `method` (see methods()),
     in C++ with the GIL released, and record every `record_every`-th step (plus the first and the last).
+    dt and t0: each a float [s] or a pint quantity (converted to s; ValueError naming it for another dimension).
     
-    model/initial: Particle/ParticleState, PlanarBody/PlanarBodyState or RigidBody/RigidBodyState.
+    model/initial: Particle/ParticleState, PlanarBody/PlanarBodyState or RigidBody/RigidBodyState; or a Scene
+      or CompiledScene and a list of the states of its bodies (returns a SceneResult: see Scene).
+    method: a name of methods(); None (the default): 'rk4', or the method a CompiledScene was compiled for.
     loads: an AppliedLoad or a sequence of them, a piecewise-constant schedule: a step that crosses a
       switch time (a t_start or t_end) is split there into sub-steps of the same method, so every method
       keeps its order; records stay at t0 + i dt. gravity: None/False (the default: none), True
@@ -2052,16 +2531,20 @@ def spherical_shell(radius: typing.Any, *, mass: typing.Any = None, density: typ
     """
     Thin spherical surface [m]: I = 2/3 m r^2 1. Density [kg/m^2]. Give exactly one of mass= [kg] or density=.
     """
-def step(model: typing.Any, state: typing.Any, dt: typing.Any, method: typing.Any = 'rk4', loads: typing.Any = None, gravity: typing.Any = None, t: typing.Any = None) -> typing.Any:
+def step(model: typing.Any, state: typing.Any, dt: typing.Any, method: typing.Any = None, loads: typing.Any = None, gravity: typing.Any = None, t: typing.Any = None) -> typing.Any:
     """
     One step of `method` (see methods()) of length dt [s] from `state` at time t [s] to t + dt under `loads`
     (AppliedLoad or sequence) and `gravity` (None/False, the default: none; True for (0, 0, -9.81) m/s^2, or a
     3-vector [m/s^2] in W). A step across a switch time of the loads is split there, as in simulate.
+    dt and t: each a float [s] or a pint quantity (converted to s; ValueError naming it for another dimension).
     
     t=None (default): returns the new state (same type as `state`); ValueError (naming t) if a load acts on a
       time window (finite t_start or t_end), since the step then depends on the time.
     t given: returns (new state, t + dt), e.g. `state, t = step(body, state, dt, loads=loads, t=t)` in a loop.
     Warns RuntimeWarning if the new state is not finite, as simulate does. ValueError names a bad argument.
+    method: a name of methods(); None (the default): 'rk4', or the method a CompiledScene was compiled for.
+    model may also be a Scene or CompiledScene with `state` a list of the states of its bodies: returns the
+    list of new states (or (list, t + dt)).
     """
 def symmetry_planes(masses: typing.Any, positions: typing.Any, tolerance: typing.Any = 1e-09) -> list:
     """

@@ -65,9 +65,12 @@ def add_simulate_parser(sub: "argparse._SubParsersAction[argparse.ArgumentParser
         "(when pyarrow is installed), run.json and trajectory.png (w_B, attitude, energy, |L| over time); "
         "--animate adds an animation of the body's axes. Columns carry their units, e.g. 'w_B_x [rad/s]'.",
     )
-    p.add_argument("problem", help="problem .toml path or example name")
-    p.add_argument("--method", required=True, help=f"integration method, one of: {methods}")
-    p.add_argument("--dt", required=True, type=_positive(float, "a time step [s] > 0"), help="time step [s]")
+    p.add_argument("problem", help="problem .toml path or example name, or a scene file ([[body]] tables, "
+                                   "rigiddyn.scene_simulate) or shipped scene name")
+    p.add_argument("--method", help=f"integration method, one of: {methods} (required for a problem file; a scene "
+                                    "file's [run] gives the default)")
+    p.add_argument("--dt", type=_positive(float, "a time step [s] > 0"),
+                   help="time step [s] (required for a problem file; a scene file's [run] gives the default)")
     span = p.add_mutually_exclusive_group()
     span.add_argument("--duration", type=_positive(float, "a time span [s] > 0"),
                       help="time span [s] (default: the problem's horizon); runs round(duration / dt) steps")
@@ -128,6 +131,8 @@ class _Plan:
         except ValueError as e:  # the command line calls load_problem's argument PROBLEM
             raise ValueError(str(e).replace("path_or_name: ", "PROBLEM: ", 1)) from None
         names = [m["name"] for m in _core.methods()]
+        if args.dt is None:  # a scene file's [run] may give it; a problem file has none
+            raise ValueError("--dt: expected a time step [s] > 0 for a problem file, got nothing")
         if args.method not in names:
             raise ValueError(f"--method: expected one of {', '.join(names)}, got {args.method!r}")
         self.method: str = args.method
@@ -232,16 +237,32 @@ def _write(plan: _Plan, result: Any) -> list[Path]:
 def run_simulate(args: argparse.Namespace) -> int:
     """The `simulate` command: check everything, run, write; returns the exit code (0: done, 1: the
     state became non-finite (the records up to there are written), 2: bad input, 130: interrupted)."""
+    from .scene_simulate import is_scene_file, run_scene_simulate
+
+    if is_scene_file(args.problem):  # [[body]] tables: a scene (wide per-body tables, no plot)
+        return run_scene_simulate(args)
     try:
         plan = _Plan(args)
     except (ValueError, TypeError) as e:
         print(f"rigiddyn simulate: {e}", file=sys.stderr)
         return 2
-    update, close = progress_bar(plan.steps) if plan.progress else (None, lambda: None)
+    return run_and_report(plan.steps, plan.progress,
+                          lambda update: simulate_problem(plan.problem, plan.method, plan.dt, plan.steps,
+                                                          plan.record_every, update),
+                          _summary, lambda result: _write(plan, result))
+
+
+def run_and_report(steps: int, progress: bool, run: Callable[[Callable[[int], None] | None], Any],
+                   summary: Callable[[Any], str], write: Callable[[Any], list[Path]]) -> int:
+    """`run(update)` (update: the progress bar's callback, None without one) over `steps` steps, then its
+    summary and the files `write` made printed; returns the exit code (0: done, 1: the state became
+    non-finite (the records up to there are written), 2: bad input, 130: interrupted). Shared by the
+    problem and the scene forms of the `simulate` command."""
+    update, close = progress_bar(steps) if progress else (None, lambda: None)
     try:
-        result = simulate_problem(plan.problem, plan.method, plan.dt, plan.steps, plan.record_every, update)
+        result = run(update)
         if update is not None and not result.diverged:
-            update(plan.steps)
+            update(steps)
     except KeyboardInterrupt:
         print("rigiddyn simulate: interrupted", file=sys.stderr)
         return 130
@@ -250,7 +271,7 @@ def run_simulate(args: argparse.Namespace) -> int:
         return 2
     finally:
         close()
-    print(_summary(result))
-    written = _write(plan, result)
+    print(summary(result))
+    written = write(result)
     print("wrote " + ", ".join(str(w) for w in written))
     return 1 if result.diverged else 0

@@ -1,4 +1,7 @@
-"""The command ``python -m rigiddyn tradeoff PROBLEM``: the work-precision report of rigiddyn.tradeoff."""
+"""The command ``python -m rigiddyn tradeoff PROBLEM``: the work-precision report of rigiddyn.tradeoff.
+
+PROBLEM is a problem file or example, or a scene file or shipped scene (a file whose `body` is an array
+of tables, [[body]], is a scene; rigiddyn.scene_precision)."""
 
 from __future__ import annotations
 
@@ -21,6 +24,14 @@ def _names(text: str) -> list[str]:
     return [x for x in text.replace(",", " ").split() if x]
 
 
+def _examples() -> list[str]:
+    """The shipped problem examples and scenes, by name."""
+    from rigiddyn.problem import example_problems
+    from rigiddyn.scene_file import example_scenes
+
+    return example_problems() + example_scenes()
+
+
 def _epilog() -> str:
     """The methods (from the core's method table) and the error measures, for --help."""
     from rigiddyn import _core
@@ -41,22 +52,26 @@ def add_tradeoff_parser(sub: "argparse._SubParsersAction[argparse.ArgumentParser
     """The `tradeoff` subcommand's arguments."""
     p = sub.add_parser(
         "tradeoff",
-        help="measure speed against accuracy of every method and step on a problem file; recommend the cheapest",
+        help="measure speed against accuracy of every method and step on a problem or scene file; recommend the "
+             "cheapest",
         description=textwrap.fill(
-            "Run each method at each step on PROBLEM (a TOML file or a shipped example: t_handle, fast_top, "
-            "satellite_torque, projectile), compare with the exact solution or a refined reference, print a "
+            "Run each method at each step on PROBLEM (a TOML file or a shipped example: "
+            + ", ".join(_examples()) + "), compare with the exact solution or a refined reference, print a "
             "table 100 columns wide and the recommendation (without a tolerance: the Pareto front), and "
-            "write every column to tradeoff.csv/.json and the plot to tradeoff.png/.svg in --out.", 100),
+            "write every column to tradeoff.csv/.json and the plot to tradeoff.png/.svg in --out. A scene "
+            "file ([[body]] tables) is swept the same way: errors over its bodies, a method it refuses shown "
+            "'not applicable' with the reason, compile warnings as notes.", 100),
         epilog=_epilog(),
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
-    p.add_argument("problem", help="problem .toml path or example name")
+    p.add_argument("problem", help="problem or scene .toml path, or example or shipped scene name")
     p.add_argument("--methods", type=_names, help="comma-separated method names (default: the file's, else all)")
     p.add_argument("--dts", type=_floats, help="comma-separated steps [s] (default: the file's)")
     p.add_argument("--horizon", type=float, help="time span [s] (default: the file's)")
     p.add_argument("--tolerance", type=float,
                    help="tolerance on --measure for the recommendation (default: the file's; none: the Pareto front)")
-    p.add_argument("--measure", help="error measure (default: the file's, else final_attitude_error)")
+    p.add_argument("--measure", help="error measure (default: the file's, else final_attitude_error; "
+                                     "final_state_error for a scene)")
     p.add_argument("--cost", choices=("time", "evaluations"), default="time", help="cost to minimise")
     p.add_argument("--out", help="folder for " + ", ".join(OUTPUTS) + " (checked before the sweep)")
     p.add_argument("--no-progress", action="store_true",

@@ -49,6 +49,10 @@ time_noise: how well a run's time repeats: (second fastest - fastest) / fastest 
 Without a tolerance there is no recommendation: the report gives the Pareto front of (cost, error)
 instead, the runs that no other run beats in both (`pareto_front`).
 
+A scene (many bodies, force elements; rigiddyn.Scene or a scene TOML file) is swept the same way by
+rigiddyn.scene_precision: Richardson reference checked against another method family, the errors taken
+over the bodies, a method the scene refuses at compile reported "not applicable: <reason>".
+
 Before the sweep, a short timed probe of every method estimates the sweep's cost, printed on stderr
 (progress=True), and a progress bar in steps follows the runs while stderr is a terminal (tqdm if
 installed, else a plain one).
@@ -74,6 +78,7 @@ import numpy as np
 
 from . import _core
 from .problem import Problem, load_problem
+from .scene_precision import SceneCase, scene_case
 from .stability import StabilityWarning, stability_message
 
 __all__ = ["COLUMNS", "MEASURES", "Recommendation", "TradeoffResult", "cheapest", "measure_unit", "pareto_front",
@@ -179,7 +184,10 @@ def _attitude_angle(q_ref: np.ndarray, q: np.ndarray) -> np.ndarray:
     return np.asarray(2.0 * np.arctan2(np.linalg.norm(vec, axis=1), scalar))
 
 
-def _measures(problem: Problem, run: States, ref: States, quaternion_norm_error: np.ndarray) -> dict[str, float]:
+def _measures(problem: Problem | SceneCase, run: Any, ref: Any, quaternion_norm_error: np.ndarray) -> dict[str, float]:
+    """The error measures of `run` against `ref` (States, or SceneStates of a scene) at the same times."""
+    if isinstance(problem, SceneCase):
+        return problem.measures(run, ref, quaternion_norm_error)
     inertia, mass = problem.inertia_com, problem.mass
     h, h_ref = run.w_B @ inertia.T, ref.w_B @ inertia.T
     g_ref = np.linalg.norm(h_ref, axis=1)
@@ -218,24 +226,27 @@ class _Run:
     """A run's states, whether it diverged, its fastest time per step [s] over the repeats and the gap
     to the second fastest relative to it (nan if timed once)."""
 
-    states: States
+    states: Any  # States, or SceneStates of a scene
     quaternion_norm_error: np.ndarray
     diverged: bool
     time_per_step: float
     time_noise: float = math.nan
 
 
-def _core_simulate(problem: Problem, method: str, dt: float, steps: int, record_every: int,
+def _core_simulate(problem: Problem | SceneCase, method: str, dt: float, steps: int, record_every: int,
                    progress: Callable[[int], None] | None = None) -> Any:
-    """_core.simulate of `problem` (its non-finite and convergence warnings are the sweep's rows)."""
+    """_core.simulate of `problem`, or rigiddyn.simulate of a scene compiled for `method` (their non-finite
+    and convergence warnings are the sweep's rows)."""
     with warnings.catch_warnings():
         warnings.filterwarnings("ignore", message="simulate: the state became non-finite", category=RuntimeWarning)
         warnings.filterwarnings("ignore", message="simulate: the implicit solve", category=RuntimeWarning)
+        if isinstance(problem, SceneCase):
+            return problem.simulate(method, dt, steps, record_every, progress)
         return _core.simulate(problem.body(), problem.initial_state(), dt, steps, method, record_every=record_every,
                               loads=problem.applied_loads(), gravity=problem.gravity, progress=progress)
 
 
-def _simulate(problem: Problem, method: str, dt: float, steps: int, record_every: int, timed: bool,
+def _simulate(problem: Problem | SceneCase, method: str, dt: float, steps: int, record_every: int, timed: bool,
               bar: _Progress | None = None) -> _Run:
     """One run of `method`; timed: repeated (up to 5 times, until MIN_TIMED_SECONDS, once if longer than
     LONG_RUN_SECONDS) keeping the fastest time per step and the repeats' spread. `bar` follows the steps."""
@@ -252,6 +263,8 @@ def _simulate(problem: Problem, method: str, dt: float, steps: int, record_every
     fastest = sorted(times)[:2]  # the gap between the two fastest: how well the minimum repeats
     best = fastest[0]
     noise = (fastest[1] - best) / best if len(fastest) > 1 and best > 0 else math.nan
+    if isinstance(problem, SceneCase):
+        return _Run(problem.states(result), problem.quaternion_norm_error(result), bool(result.diverged), best, noise)
     return _Run(_states(result), np.asarray(result.quaternion_norm_error), bool(result.diverged), best, noise)
 
 
@@ -271,7 +284,7 @@ class _Reference:
     record_every: int
 
 
-def _richardson_reference(problem: Problem, method: str, order: int, dt: float, steps: int, record_every: int,
+def _richardson_reference(problem: Problem | SceneCase, method: str, order: int, dt: float, steps: int, record_every: int,
                           runs: Sequence[_Run], max_steps: int, bar: _Progress | None = None) -> _Reference:
     """`method` at dt/2^j, j = 1, 2, ..., until the Richardson estimate of max_state_error is below
     REFERENCE_TARGET x every run's error, hits round-off, or the next refinement would exceed max_steps."""
@@ -424,7 +437,7 @@ def _other_family(ref_method: str, info: dict[str, dict[str, Any]]) -> str:
                                                 key=lambda m: info[m]["order"])
 
 
-def _family_reference(problem: Problem, method: str, order: int, dt: float, steps: int, every: int,
+def _family_reference(problem: Problem | SceneCase, method: str, order: int, dt: float, steps: int, every: int,
                       bar: _Progress | None) -> _Independent:
     """`method` at dt and 2 dt (steps, every: at dt; both even) with its Richardson error estimate."""
     fine = _simulate(problem, method, dt, steps, every, timed=False, bar=bar)
@@ -444,7 +457,7 @@ class _Check:
     text: str
 
 
-def _check_reference(problem: Problem, ref: States, estimate: dict[str, float], independent: _Independent,
+def _check_reference(problem: Problem | SceneCase, ref: Any, estimate: dict[str, float], independent: _Independent,
                      steps: int) -> _Check:
     """Compare the reference (Richardson `estimate` of its error, `steps` steps) with `independent`.
     Their disagreement d bounds |e_ref| from below by d - e_ind; the reference is unreliable when that
@@ -466,7 +479,7 @@ def _check_reference(problem: Problem, ref: States, estimate: dict[str, float], 
 # cost estimate and progress
 
 
-def _probe(problem: Problem, method: str, dt: float, steps: int) -> float:
+def _probe(problem: Problem | SceneCase, method: str, dt: float, steps: int) -> float:
     """Wall time per step [s] of `method` at dt, from a short run (PROBE_STEPS steps at most)."""
     n = max(1, min(steps, PROBE_STEPS))
     return float(_core_simulate(problem, method, dt, n, n).elapsed_seconds / n)
@@ -490,7 +503,7 @@ class _Estimate:
     text: str
 
 
-def _estimate(problem: Problem, methods: Sequence[str], grid: Sequence[int], ref_method: str | None) -> _Estimate:
+def _estimate(problem: Problem | SceneCase, methods: Sequence[str], grid: Sequence[int], ref_method: str | None) -> _Estimate:
     """Probe each method at the finest step, then sum steps x time per step over the sweep: each run
     once, and (ref_method) the least Richardson reference (2 and 4 x the steps) and its check."""
     finest = max(grid)
@@ -703,8 +716,9 @@ class Recommendation:
 class TradeoffResult:
     """Rows (one per method x dt, dicts with the keys COLUMNS) of a sweep of `problem` (its name) over
     `horizon` [s] (nan if unknown), and the recommendation for `tolerance` in `measure` (none if
-    tolerance is None) at the least `cost` ('time' or 'evaluations'). Every argument is checked:
-    TypeError or ValueError naming it."""
+    tolerance is None) at the least `cost` ('time' or 'evaluations'); `notes`: what the report says
+    besides (a scene's compatibility warnings). Every argument is checked: TypeError or ValueError
+    naming it."""
 
     problem: str
     horizon: float
@@ -713,6 +727,7 @@ class TradeoffResult:
     rows: list[dict[str, Any]] = field(default_factory=list)
     cost: str = "time"
     recommendation: Recommendation | None = field(default=None)
+    notes: list[str] = field(default_factory=list)
 
     def __post_init__(self) -> None:
         if not isinstance(self.problem, str):
@@ -727,6 +742,7 @@ class TradeoffResult:
             raise TypeError(f"recommendation: expected None or a Recommendation, got {self.recommendation!r}")
         if self.recommendation is None and self.tolerance is not None:
             self.recommendation = self.recommend(self.tolerance, self.measure, self.cost)
+        self.notes = _check_name_list(self.notes, "notes", None)
 
     def recommend(self, tolerance: float, measure: str | None = None, cost: str = "time") -> Recommendation:
         """The cheapest run (cost 'time': total wall time; 'evaluations': derivative evaluations) whose
@@ -781,11 +797,20 @@ class TradeoffResult:
         headers = ["method", "dt [s]", "steps", "ns/step", f"error [{measure_unit(self.measure)}]", "order", "note"]
         widths = [max([len(h)] + [len(c[i]) for c in cells if i not in (1, 2) or c[2] != _MERGED])
                   for i, h in enumerate(headers[:-1])]
+        merged = max((len(c[1]) for c in cells if c[2] == _MERGED), default=0)  # spans dt and steps
+        widths[2] = max(widths[2], merged - widths[1] - 2)
         note_width = max(10, width - sum(widths) - 2 * len(widths))
         out = self._title(width)
+        for note in self.notes:
+            out += _wrap("note: " + note, width)
         out += [_table_line(headers, widths, note_width)[0], "  ".join("-" * w for w in widths + [note_width])]
         for c in cells:
             out += _table_line(c, widths, note_width)
+        for method in self.methods():  # the reason of each method a scene refuses, once
+            reason = next((str(r["order_note"]) for r in self.rows if r["method"] == method and
+                           str(r.get("order_note", "")).startswith(_REFUSED)), None)
+            if reason is not None:
+                out += _wrap(f"{method}: {reason}", width)
         legend = [f"{tag} = {_TAGS[tag]}" for tag in _TAGS if tag in used]
         out += _wrap("order: the observed order of convergence (- where it cannot be measured; the reason in note). "
                      + ("notes: " + "; ".join(legend) + "." if legend else ""), width)
@@ -816,6 +841,10 @@ class TradeoffResult:
         cells, used = [], set()
         for method in self.methods():
             mine = [r for r in self.rows if r["method"] == method]
+            refused = [str(r.get("order_note", "")) for r in mine if str(r.get("order_note", "")).startswith(_REFUSED)]
+            if refused and len(refused) == len(mine):  # refused by the scene's compile: the reason below the table
+                cells.append([method, "not applicable", _MERGED, "-", "-", "-", "reason below"])
+                continue
             closed = all(r.get("order") == 0 for r in mine)
             for r in ([max(mine, key=lambda r: r["steps"])] if closed else mine):
                 tags = _tags(r, closed, rec is not None and (_run_key(r) == _run_key(rec) or
@@ -881,7 +910,7 @@ class TradeoffResult:
         """The sweep's settings, rows and recommendation (with the relative timing noise it ranked with)."""
         rec = self.recommendation
         return {"problem": self.problem, "horizon": self.horizon, "measure": self.measure,
-                "tolerance": self.tolerance, "cost": self.cost, "rows": self.rows,
+                "tolerance": self.tolerance, "cost": self.cost, "rows": self.rows, "notes": self.notes,
                 "recommendation": None if rec is None else {"met": rec.met, "text": str(rec), "row": rec.row,
                                                             "best": rec.best, "timing_noise": rec.noise}}
 
@@ -909,7 +938,8 @@ class TradeoffResult:
             raise ValueError(f"path_or_text: expected {expected}, got {_describe_text(path_or_text, text)}")
         rows = [_json_row(r) for r in d["rows"]] if isinstance(d["rows"], list) else d["rows"]
         horizon = math.nan if d["horizon"] is None else d["horizon"]
-        return TradeoffResult(d["problem"], horizon, d["measure"], d["tolerance"], rows, d.get("cost", "time"))
+        return TradeoffResult(d["problem"], horizon, d["measure"], d["tolerance"], rows, d.get("cost", "time"),
+                              notes=d.get("notes", []))
 
     # -- plot
     def _plot_axis(self, ax: Any, cost: str, measure: str) -> None:
@@ -994,11 +1024,12 @@ class TradeoffResult:
         return written
 
 
+_REFUSED = "not applicable: "  # the order_note of a method a scene refuses at compile (its reason follows)
 _MERGED = "\0"  # the steps cell of a closed-form row: its dt cell ("closed form") spans both
 # the table's note tags, in the order they are shown, and their explanation below the table
 _TAGS = {
     "diverged": "the state became non-finite (errors inf)",
-    "unstable": "dt beyond the method's stability limit for this spin (see the warning)",
+    "unstable": "dt beyond the method's stability limit for this spin or scene (see the warning)",
     "recommended": "the recommendation below",
     "front": "on the Pareto front: no other run is both cheaper and more accurate",
     "exact here": "exact on this problem (torque-free), the error is round-off",
@@ -1120,16 +1151,16 @@ def _check_rows(rows: Any, keys: Sequence[str]) -> list[dict[str, Any]]:
     return [dict(row) for row in out]
 
 
-def _check_name_list(values: Any, name: str, allowed: Sequence[str]) -> list[str]:
-    """A list of strings from `allowed`: TypeError / ValueError naming `name` otherwise."""
-    expected = f"a list of names from {', '.join(allowed)}"
+def _check_name_list(values: Any, name: str, allowed: Sequence[str] | None) -> list[str]:
+    """A list of strings from `allowed` (any string if None): TypeError / ValueError naming `name` otherwise."""
+    expected = "a list of strings" if allowed is None else f"a list of names from {', '.join(allowed)}"
     if isinstance(values, (str, bytes)) or not isinstance(values, Iterable):
         raise TypeError(f"{name}: expected {expected}, got {values!r}")
     names = list(values)
     for v in names:
         if not isinstance(v, str):
             raise TypeError(f"{name}: expected {expected}, got {v!r}")
-        if v not in allowed:
+        if allowed is not None and v not in allowed:
             raise ValueError(f"{name}: expected {expected}, got {v!r}")
     return names
 
@@ -1314,9 +1345,16 @@ def _observed_orders(rows: list[dict[str, Any]], measure: str, exact_methods: se
                 row["order_note"] = f"unconfirmed: slope {p:.2g}, no neighbouring slope"
 
 
-def _as_problem(problem: Any, horizon: Any) -> Problem:
+def _as_problem(problem: Any, horizon: Any, initial: Any = None) -> Problem | SceneCase:
+    """A Problem, or the SceneCase of a scene (see rigiddyn.scene_precision.scene_case)."""
+    scene = scene_case(problem, initial, None if horizon is None else _check_positive(horizon, "horizon"))
+    if scene is not None:
+        return scene
+    if initial is not None:
+        raise TypeError(f"initial: expected None for a problem (its file gives the initial state), got {initial!r}")
     if not isinstance(problem, (Problem, str, os.PathLike)):
-        raise TypeError(f"problem: expected a Problem, a .toml path or an example name, got {problem!r}")
+        raise TypeError(f"problem: expected a Problem, a Scene (with initial), a .toml path or an example name, "
+                        f"got {problem!r}")
     try:
         out = problem if isinstance(problem, Problem) else load_problem(problem if isinstance(problem, str) else Path(problem))
     except (TypeError, ValueError) as error:  # load_problem names its argument path_or_name: here it is `problem`
@@ -1327,19 +1365,29 @@ def _as_problem(problem: Any, horizon: Any) -> Problem:
     return out if horizon is None else out.with_horizon(_check_positive(horizon, "horizon"))
 
 
-def tradeoff(problem: Problem | str | Path, methods: Iterable[str] | None = None,
+def tradeoff(problem: Any, methods: Iterable[str] | None = None,
              dts: Iterable[float] | None = None, horizon: float | None = None,
              tolerance: float | None = None, measure: str | None = None, progress: bool = True,
-             cost: str = "time", samples: int = SAMPLES, max_reference_steps: int = 4_000_000) -> TradeoffResult:
+             cost: str = "time", samples: int = SAMPLES, max_reference_steps: int = 4_000_000,
+             initial: Sequence[Any] | None = None) -> TradeoffResult:
     """Run every method x dt on `problem` (a Problem, a TOML path or an example name) and measure
     cost and error against a reference (see the module docstring).
+
+    A scene is taken the same way (rigiddyn.scene_precision): `problem` a rigiddyn.Scene with `initial`
+    (its bodies' initial states) and `horizon`, the tuple of rigiddyn.load_scene, or a scene file (its
+    `body` an array of tables, [[body]]) or shipped scene name. Its reference is Richardson-refined
+    (the best method that compiles without a warning) and checked against another method family; a
+    method the scene refuses at compile has rows "not applicable: <reason>" (order_note), compile
+    warnings are the result's notes; the errors are taken over the bodies (scene_precision's docstring);
+    by default every method runs, and the dts are eight halvings from dt rho = 1, rho the fastest spin or
+    linear mode of the elements (rigiddyn.stability.scene_modes), or from horizon / 16 if shorter.
 
     methods: names from methods() (default: the file's [tradeoff] list, else all that can run the problem:
     `exact` only for a torque-free body); dts [s]
     (default: the file's, else eight halvings from dt |w| = 1); each dt is adjusted to
     horizon / round(horizon / dt) so that every run ends exactly at the horizon [s] (default:
     the problem's). tolerance/measure: the recommendation's criterion (measure in MEASURES,
-    default final_attitude_error). cost: 'time' or 'evaluations' for the recommendation.
+    default final_attitude_error; final_state_error for a scene). cost: 'time' or 'evaluations' for the recommendation.
     samples: states compared per run (>= 1); max_reference_steps: the Richardson reference's step budget.
     progress: print the estimated cost on stderr first (a timed probe of each method), then a progress
     bar while stderr is a terminal. Emits one StabilityWarning with one line per method that has runs
@@ -1348,15 +1396,19 @@ def tradeoff(problem: Problem | str | Path, methods: Iterable[str] | None = None
     measured timing noise as equal (see the module docstring). Every argument
     is checked: TypeError or ValueError naming it. Ctrl-C stops the sweep with KeyboardInterrupt.
     """
-    problem = _as_problem(problem, horizon)
+    problem = _as_problem(problem, horizon, initial)
     defaults = problem.tradeoff
     info = {m["name"]: m for m in _core.methods()}
-    # by default every method that can run the problem: the exact flow (order 0) is for torque-free bodies only
-    runnable = [name for name, m in info.items() if m["order"] != 0 or problem.torque_free]
+    # by default every method that can run the problem: the exact flow (order 0) is for torque-free bodies only;
+    # on a scene every method (a refused one shows why in its rows)
+    runnable = [name for name, m in info.items() if isinstance(problem, SceneCase) or m["order"] != 0 or problem.torque_free]
     methods = _check_names(methods if methods is not None else defaults.get("methods", runnable), info)
     dts_name = "dts" if dts is not None else "horizon"  # what a step count out of range is due to
-    dts = _check_dts(dts if dts is not None else defaults.get("dts", _default_dts(problem)))
-    measure = measure if measure is not None else defaults.get("measure", "final_attitude_error")
+    default_dts = problem.default_dts() if isinstance(problem, SceneCase) else _default_dts(problem)
+    dts = _check_dts(dts if dts is not None else defaults.get("dts", default_dts))
+    # a scene's bodies may have no attitude (particles): its default measure takes every part of the state
+    default_measure = "final_state_error" if isinstance(problem, SceneCase) else "final_attitude_error"
+    measure = measure if measure is not None else defaults.get("measure", default_measure)
     _check_measure(measure)
     tolerance = tolerance if tolerance is not None else defaults.get("tolerance")
     if tolerance is not None:
@@ -1368,6 +1420,12 @@ def tradeoff(problem: Problem | str | Path, methods: Iterable[str] | None = None
             f"cost: expected one of {', '.join(_COSTS)}, got {cost!r}")
     samples = _check_count(samples, "samples")
     max_reference_steps = _check_count(max_reference_steps, "max_reference_steps")
+    if isinstance(problem, SceneCase):
+        from .scene_precision import scene_sweep
+
+        grid = _step_grid(problem.horizon, dts, dts_name)
+        return scene_sweep(problem, methods, grid, measure, tolerance, bool(progress), cost, samples,
+                           max_reference_steps, info)
 
     exact = problem.has_exact_solution
     ref_method = _reference_method(info)
@@ -1424,10 +1482,10 @@ def tradeoff(problem: Problem | str | Path, methods: Iterable[str] | None = None
     return TradeoffResult(problem.name, problem.horizon, measure, tolerance, rows, cost)
 
 
-def _stability_summary(unstable: Sequence[tuple[str, float, str]]) -> str:
+def _stability_summary(unstable: Sequence[tuple[str, float, str]], subject: str = "for this spin") -> str:
     """One line per method from (method, dt [s], stability message) of the runs beyond a stability
     limit: its steps, and the message of its largest step (the full messages: the rows' `stability`)."""
-    lines = ["tradeoff: dt beyond the method's stability limit for this spin (rows marked 'unstable'; every "
+    lines = [f"tradeoff: dt beyond the method's stability limit {subject} (rows marked 'unstable'; every "
              "run's reason: column stability of the CSV/JSON):"]
     for method in dict.fromkeys(m for m, _, _ in unstable):
         mine = sorted(((dt, text) for m, dt, text in unstable if m == method), reverse=True)

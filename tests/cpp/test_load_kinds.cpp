@@ -66,8 +66,8 @@ TEST(LoadKinds, SpecialisedModelStepsAsTheGeneralModel) {
   expect_same_steps_every_kind<Rkmk4>();
 }
 
-// The structure-preserving methods take their rigid-body branch on every kind (is_rigid_body_model
-// matches RigidBodyModel<Euler, kind> for all three), so they too step as on the general model.
+// The structure-preserving methods are compositions of the model's loads_kick and free_flow, which
+// every kind of RigidBodyModel<Euler, kind> defines alike, so they too step as on the general model.
 TEST(LoadKinds, StructurePreservingMethodsStepAsOnTheGeneralModel) {
   expect_same_steps_every_kind<ImplicitMidpoint>();
   expect_same_steps_every_kind<SplittingDlm>();

@@ -66,15 +66,37 @@ def _call_spec(path, args=(), **kwargs):
     return ("call", path, list(args), list(kwargs.items()))
 
 
-# Objects that only a run makes (SimulationResult: simulate needs a body and a state of the same kind),
-# built by a valid call with drawn sizes, so that every such class's methods are fuzzed on every machine.
+# A scene of a particle and a rigid body under gravity (body indices 0 and 1), and its initial states.
+_SCENE = _call_spec("Scene", bodies=("list", [_call_spec("Particle", [("lit", 2.0)]),
+                                              _call_spec("RigidBody", [("lit", 1.0), ("lit", [1.0, 2.0, 2.5])])]),
+                    elements=("list", [_call_spec("UniformGravity")]))
+_SCENE_STATES = ("list", [_call_spec("ParticleState", v_W=("lit", [0.0, 1.0, 0.0])),
+                          _call_spec("RigidBodyState", w_B=("lit", [0.1, 1.0, 0.1]))])
+
+# Objects that only a run makes (SimulationResult: simulate needs a body and a state of the same kind;
+# SceneResult: a scene and one state per body), or that random arguments rarely make (a scene with
+# bodies, compilable; loads on body 0), built by a valid call with drawn sizes, so that every such
+# class's methods are fuzzed on every machine.
 RECIPES = {
     "SimulationResult": st.tuples(st.integers(0, 30), st.integers(1, 5)).map(lambda nr: _call_spec(
         "simulate",
         [_call_spec("RigidBody", [("lit", 1.0), ("lit", [1.0, 2.0, 2.5])]),
          _call_spec("RigidBodyState", w_B=("lit", [0.1, 1.0, 0.1]))],
         dt=("lit", 0.01), steps=("lit", nr[0]), record_every=("lit", nr[1]))),
+    "Scene": st.just(_SCENE),
+    "CompiledScene": st.sampled_from(["rk4", "splitting_dlm", "implicit_midpoint"]).map(
+        lambda method: ("method", _SCENE, "compile", [("lit", method)], [])),
+    "SceneResult": st.tuples(st.integers(0, 30), st.integers(1, 5)).map(lambda nr: _call_spec(
+        "simulate", [_SCENE, _SCENE_STATES], dt=("lit", 0.01), steps=("lit", nr[0]), record_every=("lit", nr[1]))),
+    # a density integral needs a callable rho: a constant density per point, over a drawn box
+    "DensityIntegral": st.floats(0.1, 10.0).map(lambda rho: _call_spec(
+        "integrate_density_over_box", [("per_row", ("lit", rho)), ("lit", [0.0, 0.0, 0.0]), ("lit", [1.0, 2.0, 0.5])])),
+    "ScheduledLoads": st.just(_call_spec("ScheduledLoads", body=("lit", 0),
+                                         loads=("list", [_call_spec("AppliedLoad", force=("lit", [1.0, 0.0, 0.0]))]))),
 }
+# the force element classes of a scene (Scene.add, Scene(elements=...))
+ELEMENT_CLASSES = ("UniformGravity", "PointMassGravity", "MutualGravity", "GravityGradient", "SpringDamper", "Drag",
+                   "ScheduledLoads", "PythonForce")
 
 
 # ---------------------------------------------------------------------------------------------
@@ -271,6 +293,10 @@ class Strategies:
         name = annotation.strip().strip("'\"").split(".")[-1]
         return name if name in self.classes else None
 
+    def objects_of(self, classes, depth: int) -> st.SearchStrategy:
+        """Instances of any of `classes`."""
+        return st.one_of(*[self.objects(c, depth) for c in classes])
+
     def _producers(self, cls: str) -> list[tuple[Target, tuple[Param, ...]]]:
         out = []
         for t in self.targets:
@@ -454,6 +480,19 @@ class Strategies:
             (r"check|inertia_check", obj("InertiaCheck")),
             (r"part", obj("SpatialInertia")),
             (r"body|model", obj("RigidBody", "Particle", "PlanarBody")),
+            (r"model", obj("Scene", "CompiledScene")),
+            (r"scene", obj("Scene")),
+            (r"element", obj(*ELEMENT_CLASSES)),
+            (r"elements", lambda s, p, doc, depth: _list_of(s.objects_of(ELEMENT_CLASSES, depth + 1), depth)),
+            (r"bodies", lambda s, p, doc, depth: st.one_of(  # indices (an element's), or bodies (a Scene's)
+                lit(st.one_of(st.none(), st.lists(st.integers(0, 2), min_size=1, max_size=3, unique=True))),
+                _list_of(s.objects_of(("Particle", "RigidBody", "PlanarBody"), depth + 1), depth))),
+            (r"body_a|body_b", lambda s, p, doc, depth: lit(st.one_of(st.integers(0, 2), st.none()))),
+            (r"body_names", lambda s, p, doc, depth: lit(st.one_of(st.none(), st.lists(
+                st.one_of(st.none(), st.sampled_from(["a", "b", "c"])), max_size=3)))),
+            (r"fn", lambda s, p, doc, depth: st.one_of(  # a force fn(t, body, p_W, q_WB, v_W, w_B) -> (f_W, tau_B)
+                array_spec(st.just(np.zeros(3))).map(lambda a: ("lambda", ("tuple", [a, a]))),
+                s.callables(doc, depth))),
             (r"state|initial", obj("RigidBodyState", "ParticleState", "PlanarBodyState")),
             (r"rho", lambda s, p, doc, depth: st.one_of(  # a density per point [kg/m^3], or anything
                 lit(POSITIVE_FLOAT).map(lambda v: ("per_row", v)), returning()(s, p, doc, depth))),

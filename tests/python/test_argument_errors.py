@@ -65,6 +65,32 @@ def _body_state():
     return {"body": rd.RigidBody(1.0, I_BOX), "state": rd.RigidBodyState(w_B=V)}
 
 
+def _scene():
+    """A scene of a particle and a rigid body under gravity."""
+    scene = rd.Scene()
+    scene.add_body(rd.Particle(1.0), name="dot")
+    scene.add_body(rd.RigidBody(1.0, I_BOX), name="box")
+    scene.add(rd.UniformGravity())
+    return scene
+
+
+def _scene_result():
+    return rd.simulate(_scene(), [rd.ParticleState(), rd.RigidBodyState(w_B=V)], 0.01, 2)
+
+
+def _push(t, body, p_W, q_WB, v_W, w_B):
+    return V, V
+
+
+# one instance of each force element class
+ELEMENTS = {
+    "UniformGravity": lambda: rd.UniformGravity(), "PointMassGravity": lambda: rd.PointMassGravity(gm=1.0),
+    "MutualGravity": lambda: rd.MutualGravity(), "GravityGradient": lambda: rd.GravityGradient(gm=1.0),
+    "SpringDamper": lambda: rd.SpringDamper(body_a=0, stiffness=1.0), "Drag": lambda: rd.Drag(linear=0.1),
+    "ScheduledLoads": lambda: rd.ScheduledLoads(body=0), "PythonForce": lambda: rd.PythonForce(_push),
+}
+
+
 # path -> a function returning the keyword arguments of a valid call (required arguments at least)
 EXAMPLES = {
     "AppliedLoad": lambda: {}, "FrameKinematics": lambda: {}, "FrameTree": lambda: {}, "ParticleState": lambda: {},
@@ -214,6 +240,15 @@ EXAMPLES = {
     "TradeoffResult.read_json": lambda: {"path_or_text": _result().to_json()},
     "TradeoffResult.plot": lambda: {"path": str(PLOT_DIR / "plot")},
     "tradeoff": lambda: {"problem": _problem(), "methods": ["rk4"], "dts": [0.05, 0.025], "progress": False},
+    "Scene": lambda: {}, "Scene.add_body": lambda: {"body": rd.Particle(1.0)},
+    "Scene.add": lambda: {"element": rd.Drag(linear=0.1)}, "Scene.compile": lambda: {"method": "rk4"},
+    "Scene.describe": lambda: {}, "Scene.to_toml": lambda: {},
+    "CompiledScene": lambda: {"scene": _scene()}, "CompiledScene.describe": lambda: {},
+    "SceneResult.to_dataframe": lambda: {},
+    "UniformGravity": lambda: {}, "PointMassGravity": lambda: {"gm": 1.0}, "MutualGravity": lambda: {},
+    "GravityGradient": lambda: {"gm": 1.0}, "SpringDamper": lambda: {"body_a": 0, "stiffness": 1.0},
+    "Drag": lambda: {}, "ScheduledLoads": lambda: {"body": 0}, "PythonForce": lambda: {"fn": _push},
+    "load_scene": lambda: {"path_or_text": "kepler"},
 }
 
 # the instance a method is called on, by class
@@ -224,6 +259,7 @@ INSTANCES = {
     "TorqueFreeSolution": lambda: rd.TorqueFreeSolution(I_BOX, Q, V), "Transform": lambda: rd.Transform(None, V),
     "Problem": _problem, "TradeoffResult": _result,
     "SimulationResult": lambda: rd.simulate(rd.RigidBody(1.0, I_BOX), rd.RigidBodyState(w_B=V), 0.01, 2),
+    "Scene": _scene, "CompiledScene": lambda: _scene().compile("rk4"), "SceneResult": _scene_result,
 }
 
 # (path, argument) -> the wrong kinds that are valid values after all (the call may succeed)
@@ -232,9 +268,12 @@ VALID_AFTER_ALL = {
     ("FrameTree.has_frame", "name"): {"str"},  # False
     ("Problem", "name"): {"str"}, ("Problem", "description"): {"str"}, ("Problem", "source"): {"str"},
     ("TradeoffResult", "problem"): {"str"}, ("TradeoffResult.read_csv", "problem"): {"str"},  # a problem's name
+    ("TradeoffResult", "notes"): {"list of str"},  # the report's notes
     # a file name (written in the test's temporary folder)
     ("TradeoffResult.to_csv", "path"): {"str"}, ("TradeoffResult.to_json", "path"): {"str"},
     ("TradeoffResult.plot", "path"): {"str"},
+    ("Scene.add_body", "name"): {"str"},  # any new name
+    ("Scene.to_toml", "name"): {"str"}, ("Scene.to_toml", "description"): {"str"},  # the file's name and text
 }
 
 
@@ -316,6 +355,7 @@ INSTANCES_OF_RESULTS = {
     "PlanarWrench": lambda: rd.inverse_dynamics(rd.PlanarBody(1.0, 0.5), rd.PlanarBodyState(), [0.1, 0.2], 0.3),
     "BodyAcceleration": lambda: rd.forward_dynamics(**_body_state(), force=V),
     "PlanarAcceleration": lambda: rd.forward_dynamics(rd.PlanarBody(1.0, 0.5), rd.PlanarBodyState(), [0.1, 0.2]),
+    "Scene": _scene, "CompiledScene": lambda: _scene().compile("rk4"), "SceneResult": _scene_result, **ELEMENTS,
 }
 PROPERTIES = _properties()
 # the states' fields: assigned whole, checked as the constructor checks (their arrays are read-only)

@@ -19,18 +19,18 @@ ComWrench wrench_at_com(const Eigen::Quaterniond& q_WB, const Eigen::Vector3d& f
   return {q_WB * f_B, tau_B};
 }
 
+// Euler's equations in FullEuler, their form for any inertia (models/euler_equations.hpp, the one home of
+// Euler's equations; the stored I⁻¹ rounds within κ(I) ε, as the solve with I did). Not with_euler_form's
+// choice: it drops products of inertia and moment differences below 1e-12 relative, right for an
+// integrator's step, not for an evaluation that is exact to round-off.
 BodyAcceleration forward_dynamics(const RigidBody& body, const RigidBodyState& state, const ComWrench& wrench,
                                   const Eigen::Vector3d& g_W) {
-  const Eigen::Matrix3d& I = body.inertia_com();
-  const Eigen::Vector3d& w = state.w_B;
-  return {wrench.f_W / body.mass() + g_W, I.llt().solve(wrench.tau_B - w.cross(I * w))};
+  return {wrench.f_W / body.mass() + g_W, FullEuler(body.inertia_com()).angular_acceleration(state.w_B, wrench.tau_B)};
 }
 
 ComWrench inverse_dynamics(const RigidBody& body, const RigidBodyState& state, const BodyAcceleration& acceleration,
                            const Eigen::Vector3d& g_W) {
-  const Eigen::Matrix3d& I = body.inertia_com();
-  const Eigen::Vector3d& w = state.w_B;
-  return {body.mass() * (acceleration.a_W - g_W), I * acceleration.alpha_B + w.cross(I * w)};
+  return {body.mass() * (acceleration.a_W - g_W), euler_torque(FullEuler(body.inertia_com()), state.w_B, acceleration.alpha_B)};
 }
 
 Eigen::Vector3d linear_momentum(const RigidBody& body, const RigidBodyState& state) { return body.mass() * state.v_W; }

@@ -10,6 +10,6 @@ Conventions follow docs/conventions.md: SI units; quaternions (x, y, z, w) unles
 Every function accepts one item or a stack with a leading axis n (numpy broadcasting over ``...``).
 """
 
-from . import dynamics, inertia, integrators, kinematics, so3, spatial
+from . import dynamics, inertia, integrators, kinematics, scene, scene_exact, so3, spatial
 
-__all__ = ["dynamics", "inertia", "integrators", "kinematics", "so3", "spatial"]
+__all__ = ["dynamics", "inertia", "integrators", "kinematics", "scene", "scene_exact", "so3", "spatial"]

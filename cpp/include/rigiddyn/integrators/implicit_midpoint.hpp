@@ -21,10 +21,24 @@
 // iteration, typically 3–5 at h|ω| ~ 0.01–0.5. Conserves on a free body: the energy and |L|
 // (quadratic invariants of Euler's equations) up to the solver tolerance, unit |q| exactly. Does
 // NOT keep the spatial L_W (the attitude drifts from the invariable plane by O(h²) per unit time).
-// For models without a gyroscopic term (particle, planar body): fixed-point iteration on ȳ with
-// the same tolerance and cap.
+//
+// Written once against the model interface, with one optional hook. A model may offer
+//   bool implicit_midpoint_newton(Coordinates& y, double h) const
+// which takes the whole step by a Newton solve of the midpoint equations that uses its structure
+// (RigidBodyModel: the Newton iteration on ω̄ above, the Jacobian of Euler's equations
+// gyroscopic_jacobian, the attitude by the Cayley map midpoint_rotation, the stopping rule of
+// implicit_midpoint_solver) and returns whether it converged. A model without the hook (particle,
+// planar body, any model whose coordinates are a vector space or whose derivative has no stiff
+// gyroscopic part) gets the fixed-point iteration ȳ = y0 + (h/2) rate(ȳ) on its rate() with the same
+// tolerance and cap, then y1 = 2ȳ − y0 and project(y1).
 #pragma once
-#include "rigiddyn/integrators/splitting_parts.hpp"
+#include "rigiddyn/models/model_interface.hpp"
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <type_traits>
+#include <utility>
 
 namespace rigiddyn {
 
@@ -40,65 +54,21 @@ inline Eigen::Quaterniond midpoint_rotation(const Eigen::Vector3d& h_w) {
   return Eigen::Quaterniond((1.0 - a2) * scale, 2.0 * scale * a.x(), 2.0 * scale * a.y(), 2.0 * scale * a.z());
 }
 
-// J⁻¹ r for the Jacobian J = I + τ (ω̄^ I − (I ω̄)^) (τ = h/2) of the midpoint residual multiplied by I:
-// column j is I e_j + τ (ω̄ × I e_j − (I ω̄) × e_j); solved in closed form (solve_3x3: J = I + O(h|ω|)
-// is far from singular where the iteration converges).
-inline Eigen::Vector3d midpoint_newton_correction(const Eigen::Matrix3d& I, const Eigen::Vector3d& w_bar, double tau,
-                                                  const Eigen::Vector3d& r) {
-  const Eigen::Vector3d Iw = times_3x3(I, w_bar);
-  Eigen::Matrix3d J;
-  for (int j = 0; j < 3; ++j) {
-    const Eigen::Vector3d w_x_Ij = cross_3(w_bar, I.col(j)), Iw_x_ej = cross_3(Iw, Eigen::Vector3d::Unit(j));
-    for (int i = 0; i < 3; ++i) J(i, j) = I(i, j) + tau * (w_x_Ij(i) - Iw_x_ej(i));
-  }
-  return solve_3x3(J.row(0), J.row(1), J.row(2), r);
-}
-
-// Returns true if the Newton iteration converged within max_iterations.
-template <class Euler, LoadKind kind>
-bool implicit_midpoint_step(const RigidBodyModel<Euler, kind>& model, RigidBodyCoordinates& y, double h) {
-  using namespace implicit_midpoint_solver;
-  const Eigen::Matrix3d I = inertia_matrix(model.euler());
-  const Eigen::Quaterniond q0(Eigen::Vector4d(y.segment<4>(3)));
-  const Eigen::Vector3d v0 = y.segment<3>(7), w0 = y.segment<3>(10);
-  Eigen::Vector3d w_bar = w0, v_bar = v0;
-  RigidBodyCoordinates mid = y;  // ȳ = (y0 + y1)/2
-  double power = 0.0;
-  bool converged = false;
-  for (int k = 0; k < max_iterations && !converged; ++k) {
-    const Eigen::Quaterniond q1 = q0 * midpoint_rotation(h * w_bar);
-    mid.segment<4>(3) = 0.5 * (q0.coeffs() + q1.coeffs());
-    mid.segment<3>(7) = v_bar;
-    mid.segment<3>(10) = w_bar;
-    const RigidBodyTangent xi = model.velocity(mid);
-    power = xi(12);
-    const Eigen::Vector3d r_w = w_bar - w0 - 0.5 * h * xi.segment<3>(9);
-    const Eigen::Vector3d r_v = v_bar - v0 - 0.5 * h * xi.segment<3>(6);
-    const Eigen::Vector3d dw = midpoint_newton_correction(I, w_bar, 0.5 * h, times_3x3(I, r_w));
-    w_bar -= dw;
-    v_bar -= r_v;
-    const bool w_done = dw.norm() <= tolerance * (w_bar.norm() + h * xi.segment<3>(9).norm());
-    const bool v_done = r_v.norm() <= tolerance * (v_bar.norm() + h * xi.segment<3>(6).norm());
-    converged = w_done && v_done;
-  }
-  y.segment<3>(0) += h * v_bar;
-  y.segment<4>(3) = (q0 * midpoint_rotation(h * w_bar)).normalized().coeffs();
-  y.segment<3>(7) = 2.0 * v_bar - v0;
-  y.segment<3>(10) = 2.0 * w_bar - w0;
-  y(13) += h * power;
-  return converged;
-}
+// True for a model with the hook implicit_midpoint_newton(y, h) (see the top of this file).
+template <class Model, class = void>
+struct has_implicit_midpoint_newton : std::false_type {};
+template <class Model>
+struct has_implicit_midpoint_newton<Model, std::void_t<decltype(std::declval<const Model&>().implicit_midpoint_newton(
+                                               std::declval<typename Model::Coordinates&>(), 0.0))>>
+    : std::true_type {};
 
 // step() returns true if the solver converged (the only integrator whose step reports it).
 struct ImplicitMidpoint {
   template <class Model>
   static bool step(const Model& model, typename Model::Coordinates& y, double h) {
-    if constexpr (is_rigid_body_model_v<Model>) {
-      return implicit_midpoint_step(model, y, h);
+    if constexpr (has_implicit_midpoint_newton<Model>::value) {
+      return model.implicit_midpoint_newton(y, h);
     } else {  // fixed point ȳ = y0 + (h/2) f(ȳ)
-      static_assert(!has_gyroscopic_term_v<Model>,
-                    "the fixed-point midpoint branch is for models without a gyroscopic term: a model with one must "
-                    "take the rigid-body branch (Newton on the mean angular velocity)");
       using namespace implicit_midpoint_solver;
       typename Model::Coordinates mid = y;
       bool converged = false;

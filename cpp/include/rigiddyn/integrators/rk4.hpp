@@ -26,7 +26,7 @@ inline constexpr double b4 = 1.0 / 6.0;
 // measured 2-15x slower per step than a hand-written loop).
 template <class Vector>
 Vector axpy(const Vector& y, double a, const Vector& k) {
-  Vector out;
+  Vector out(y.size());  // sized from y: fixed-size and dynamic-size (Eigen::VectorXd) models alike
   for (Eigen::Index i = 0; i < y.size(); ++i) out[i] = y[i] + a * k[i];
   return out;
 }
@@ -34,7 +34,7 @@ Vector axpy(const Vector& y, double a, const Vector& k) {
 // a k, element by element (see axpy).
 template <class Vector>
 Vector scaled(double a, const Vector& k) {
-  Vector out;
+  Vector out(k.size());
   for (Eigen::Index i = 0; i < k.size(); ++i) out[i] = a * k[i];
   return out;
 }

@@ -24,7 +24,7 @@ struct Rkmk4 {
     const Tangent K3 = model.dexp_inv(theta3, model.velocity_at(y, theta3));
     const Tangent theta4 = scaled(a43 * h, K3);
     const Tangent K4 = model.dexp_inv(theta4, model.velocity_at(y, theta4));
-    Tangent theta;
+    Tangent theta(K1.size());
     for (Eigen::Index i = 0; i < theta.size(); ++i) theta[i] = h * (b1 * K1[i] + b2 * K2[i] + b3 * K3[i] + b4 * K4[i]);
     y = model.retract(y, theta);
     model.project(y);

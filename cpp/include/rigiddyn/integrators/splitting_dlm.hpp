@@ -19,8 +19,13 @@
 // dlm_principal_increment and unit_quaternion); the energy error stays bounded (symplectic, no
 // drift). Under constant loads: the translation is velocity Verlet, exact for a constant
 // world-frame force and gravity.
-// For models without a gyroscopic term (particle, planar body) the step is velocity Verlet.
+// Written once against the model interface (model_interface.hpp) as
+//   step(h) = loads_kick(h/2) · free_flow<DlmRotation<true>>(h) · loads_kick(h/2),
+// so every model takes the same composition: the free part of each body comes from the model (a rigid
+// body's rotation by dlm_free_rotation below; a particle's and a planar body's free parts have no
+// gyroscopic term, and there the step is velocity Verlet, exact for constant loads).
 #pragma once
+#include "rigiddyn/integrators/free_flow_tags.hpp"
 #include "rigiddyn/integrators/splitting_parts.hpp"
 #include "rigiddyn/so3/exp_log.hpp"
 
@@ -50,50 +55,48 @@ inline Eigen::Vector3d dlm_principal_increment(const PrincipalSplit& P, const Ei
   return dm.cwiseQuotient(P.moments);
 }
 
-// The DLM approximation of the free (Euler–Poinsot) rotation over h [s]; exact for a sphere. The
-// attitude is normalised at the end (unit_quaternion) unless `normalise` is false: a composition of
-// free rotations (yoshida4.hpp) normalises once, after the last (|q| moves by O(ε) in each).
+// The DLM approximation of the free (Euler–Poinsot) rotation over h [s] of one body with the Euler
+// form `euler` (exact for a sphere): q_WB_xyzw (4 doubles, x y z w, unit) and w_B (3 doubles, ω in B
+// [rad/s]) are updated in place. The attitude is normalised at the end (unit_quaternion) unless
+// `normalise` is false: a composition of free rotations (yoshida4.hpp) normalises once, after the last
+// (|q| moves by O(ε) in each). The per-body kernel of every model's free_flow<DlmRotation<normalise>>.
 template <bool normalise = true, class Euler>
-void dlm_free_rotation(const Euler& euler, RigidBodyCoordinates& y, double h) {
-  Eigen::Map<Eigen::Quaterniond> q_WB(y.data() + 3);
-  const Eigen::Vector3d w_B = y.segment<3>(10);
+void dlm_free_rotation(const Euler& euler, double* q_WB_xyzw, double* w_B, double h) {
+  // read and written by scalars: Eigen's packet copies of the pointed-to doubles would reload, as one
+  // 2-wide load, values the previous sub-flow has just stored one by one (a store-forwarding stall;
+  // see euler_equations.hpp)
+  const Eigen::Quaterniond q0(q_WB_xyzw[3], q_WB_xyzw[0], q_WB_xyzw[1], q_WB_xyzw[2]);
+  const Eigen::Vector3d w0(w_B[0], w_B[1], w_B[2]);
   const auto unit = [](const Eigen::Quaterniond& q) {
     if constexpr (normalise) return unit_quaternion(q);
     else return q;
   };
+  Eigen::Quaterniond q1;
+  Eigen::Vector3d w1 = w0;
   if constexpr (std::is_same_v<Euler, SphericalEuler>) {
-    q_WB = unit(q_WB * rotvec_to_quat(h * w_B));
+    q1 = unit(q0 * rotvec_to_quat(h * w0));
   } else if constexpr (std::is_same_v<Euler, PrincipalEuler>) {  // P = B
-    Eigen::Quaterniond q_WP = q_WB;
-    const Eigen::Vector3d dw = dlm_principal_increment(principal_split(euler), w_B, q_WP, h);
-    q_WB = unit(q_WP);
-    y.segment<3>(10) = w_B + dw;
+    Eigen::Quaterniond q_WP = q0;
+    const Eigen::Vector3d dw = dlm_principal_increment(principal_split(euler), w0, q_WP, h);
+    q1 = unit(q_WP);
+    w1 = w0 + dw;
   } else {
     const PrincipalSplit P = principal_split(euler);
-    Eigen::Quaterniond q_WP = q_WB * P.q_BP;
-    const Eigen::Vector3d dw_P = dlm_principal_increment(P, P.q_BP.conjugate() * w_B, q_WP, h);
-    q_WB = unit(q_WP * P.q_BP.conjugate());
-    y.segment<3>(10) = w_B + P.q_BP * dw_P;  // the turns B → P → B by the stored q_BP act on the increment only
+    Eigen::Quaterniond q_WP = q0 * P.q_BP;
+    const Eigen::Vector3d dw_P = dlm_principal_increment(P, P.q_BP.conjugate() * w0, q_WP, h);
+    q1 = unit(q_WP * P.q_BP.conjugate());
+    w1 = w0 + P.q_BP * dw_P;  // the turns B → P → B by the stored q_BP act on the increment only
   }
-}
-
-// kick(h/2) · free(h) · kick(h/2) with the DLM free rotation, for a rigid-body model.
-template <class Euler, LoadKind kind>
-void dlm_strang_step(const RigidBodyModel<Euler, kind>& model, RigidBodyCoordinates& y, double h) {
-  loads_kick(model, y, 0.5 * h);
-  free_translation(y, h);
-  dlm_free_rotation(model.euler(), y, h);
-  loads_kick(model, y, 0.5 * h);
+  for (int i = 0; i < 4; ++i) q_WB_xyzw[i] = q1.coeffs()[i];
+  for (int i = 0; i < 3; ++i) w_B[i] = w1[i];
 }
 
 struct SplittingDlm {
   template <class Model>
   static void step(const Model& model, typename Model::Coordinates& y, double h) {
-    if constexpr (is_rigid_body_model_v<Model>) {
-      dlm_strang_step(model, y, h);
-    } else {  // no gyroscopic term (asserted in velocity_verlet)
-      velocity_verlet(model, y, h);
-    }
+    model.loads_kick(y, 0.5 * h);
+    model.template free_flow<DlmRotation<true>>(y, h);
+    model.loads_kick(y, 0.5 * h);
   }
 };
 

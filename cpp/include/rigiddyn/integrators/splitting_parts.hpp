@@ -1,18 +1,18 @@
 // The sub-flows the structure-preserving rigid-body methods are built from (splitting_dlm.hpp,
-// yoshida4.hpp, exact_flow_kick.hpp, implicit_midpoint.hpp). Each is the EXACT flow of one part of
-// the split Newton–Euler equations (Craig, "Rigid Body Dynamics" slides), so a composition of them
-// keeps what each part keeps:
+// yoshida4.hpp, exact_flow_kick.hpp). Each is the EXACT flow of one part of the split Newton–Euler
+// equations (Craig, "Rigid Body Dynamics" slides), so a composition of them keeps what each part keeps:
 //
-//   loads part   ṗ = 0, q̇ = 0, m v̇ = f_W(q), I ω̇ = n_B(q)      (loads_kick: v, ω move linearly)
-//   free part    ṗ = v, v̇ = 0 (free_translation);  Euler–Poinsot ṁ = m × ω, Ṙ = R ω̂ (rotation)
+//   loads part   ṗ = 0, q̇ = 0, m v̇ = f_W(q), I ω̇ = n_B(q)      (a model's loads_kick: v, ω move linearly)
+//   free part    ṗ = v, v̇ = 0;  Euler–Poinsot ṁ = m × ω, Ṙ = R ω̂ (a model's free_flow<Rotation>)
 //
 // The free rotation is split once more, H = Σ m_i²/(2 I_i) over the principal axes
 // (Dullweber, Leimkuhler & McLachlan 1997; McLachlan 1993; Reich 1994): the flow of one term
 // H_i turns m about the principal axis e_i by −θ and the attitude about it by +θ, θ = h m_i/I_i,
 // so |m|, the spatial L_W = R m and unit |q| are exact in every sub-flow (principal_axis_flow).
+// Nothing here knows a model or a state layout: the kernels act on one body's quaternion and ω_B.
 #pragma once
 #include "rigiddyn/integrators/compensated.hpp"
-#include "rigiddyn/models/rigid_body.hpp"
+#include "rigiddyn/models/euler_equations.hpp"
 
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
@@ -20,25 +20,8 @@
 
 #include <array>
 #include <cmath>
-#include <type_traits>
 
 namespace rigiddyn {
-
-// True for RigidBodyModel<Euler, kind>, every Euler form under every LoadKind: the methods below use
-// the rigid body's structure there. Their fallbacks (velocity-Verlet-like forms) are for models
-// without a gyroscopic term only, and each asserts so at compile time (has_gyroscopic_term,
-// model_interface.hpp): a rigid-body model can never reach one.
-template <class Model>
-struct is_rigid_body_model : std::false_type {};
-template <class Euler, LoadKind kind>
-struct is_rigid_body_model<RigidBodyModel<Euler, kind>> : std::true_type {};
-template <class Model>
-inline constexpr bool is_rigid_body_model_v = is_rigid_body_model<Model>::value;
-
-// The rotational inertia about the centre of mass in B as a matrix [kg m²].
-inline Eigen::Matrix3d inertia_matrix(const SphericalEuler& e) { return e.inertia * Eigen::Matrix3d::Identity(); }
-inline Eigen::Matrix3d inertia_matrix(const PrincipalEuler& e) { return e.inertia.asDiagonal(); }
-inline Eigen::Matrix3d inertia_matrix(const FullEuler& e) { return e.inertia; }
 
 // Principal axes of an inertia: moments I_P (3,) [kg m²], the principal frame P in B (q_BP, det +1;
 // identity for a diagonal inertia) and the axis indices sorted by increasing moment.
@@ -69,39 +52,6 @@ inline PrincipalSplit principal_split(const FullEuler& e) {
   return {solver.eigenvalues(), Eigen::Quaterniond(R_BP).normalized(), {0, 1, 2}};
 }
 
-// The exact flow of the loads part over h [s] at the current attitude (no gyroscopic term):
-// v += h f_W/m, ω += h I⁻¹ n_B, and the work += h (f_W·v̄ + n_B·ω̄) with v̄, ω̄ the mean velocities
-// (exact: v and ω are linear in t in this flow). One derivative evaluation (ξ at ω = 0 is
-// (v, 0, f_W/m, I⁻¹ n_B, ·)); none for LoadKind::none, where the flow is the identity. Returns the
-// angular velocity increment h I⁻¹ n_B [rad/s].
-template <class Euler, LoadKind kind>
-Eigen::Vector3d loads_kick(const RigidBodyModel<Euler, kind>& model, RigidBodyCoordinates& y, double h) {
-  if constexpr (kind == LoadKind::none) {
-    return Eigen::Vector3d::Zero();
-  } else {
-    RigidBodyCoordinates still = y;
-    still.segment<3>(10).setZero();
-    const RigidBodyTangent xi = model.velocity(still);
-    const Eigen::Vector3d dv = h * xi.segment<3>(6), dw = h * xi.segment<3>(9);
-    const Eigen::Vector3d v_mean = y.segment<3>(7) + 0.5 * dv, w_mean = y.segment<3>(10) + 0.5 * dw;
-    y(13) += model.mass() * dv.dot(v_mean) + model.euler().momentum(dw).dot(w_mean);
-    y.segment<3>(7) += dv;
-    y.segment<3>(10) += dw;
-    return dw;
-  }
-}
-
-// Velocity Verlet kick(h/2) · drift(h) · kick(h/2) with the model's own kick and drift: what the
-// splitting methods reduce to for models without a gyroscopic term (particle, planar body).
-template <class Model>
-void velocity_verlet(const Model& model, typename Model::Coordinates& y, double h) {
-  static_assert(!has_gyroscopic_term_v<Model>,
-                "velocity_verlet drops the gyroscopic term: a model with one must take its method's rigid-body branch");
-  model.kick(y, 0.5 * h);
-  model.drift(y, h);
-  model.kick(y, 0.5 * h);
-}
-
 // q / |q| for a quaternion that is unit up to round-off (| |q|² − 1 | ≤ 1e-5), applied as an increment
 // q + f q with f = 1/|q| − 1 = −d/2 + 3d²/8 + O(d³), d = |q|² − 1 from a compensated sum of squares
 // (the O(d³) ≤ 3e-16 |d| is below round-off). The product q · (1/|q|) rounds 1/|q| ≈ 1 to a double near
@@ -119,9 +69,6 @@ RIGIDDYN_ALWAYS_INLINE Eigen::Quaterniond unit_quaternion(const Eigen::Quaternio
   out.coeffs() = q.coeffs() + f * q.coeffs();
   return out;
 }
-
-// The free translation over h [s]: p += h v (no work: no load acts in this part).
-inline void free_translation(RigidBodyCoordinates& y, double h) { y.segment<3>(0) += h * y.segment<3>(7); }
 
 // The exact flow of H_i = m_i²/(2 I_i) over h [s] (axis i of the principal frame P, moment I_i):
 // m_P ← Rot(e_i, −θ) m_P, q_WP ← q_WP ⊗ Rot(e_i, θ), θ = h m_i/I_i (m_i is constant in this flow);

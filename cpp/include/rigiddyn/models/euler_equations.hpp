@@ -70,6 +70,21 @@ RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d solve_3x3(const Eigen::Vector3d& r0, cons
                          inverse_det * (b(0) * c0(2) + b(1) * c1(2) + b(2) * c2(2)));
 }
 
+// The Jacobian ∂/∂ω' of the residual I (ω' − ω) + τ ω' × I ω' at ω' = w (I and w in B, τ [s]):
+//   J = I + τ (ω̂ I − (I ω)^),  column j: I e_j + τ (ω × I e_j − (I ω) × e_j)
+// (d(ω × I ω) = ω × I dω − (I ω) × dω). The one copy of the derivative of Euler's gyroscopic term:
+// the implicit kick (gyroscopic_newton_kick, τ = h) and the implicit midpoint rule's Newton step
+// (RigidBodyModel::implicit_midpoint_newton, τ = h/2) both solve with it.
+RIGIDDYN_ALWAYS_INLINE Eigen::Matrix3d gyroscopic_jacobian(const Eigen::Matrix3d& I, const Eigen::Vector3d& w,
+                                                           const Eigen::Vector3d& Iw, double tau) {
+  Eigen::Matrix3d J;
+  for (int j = 0; j < 3; ++j) {
+    const Eigen::Vector3d w_x_Ij = cross_3(w, I.col(j)), Iw_x_ej = cross_3(Iw, Eigen::Vector3d::Unit(j));
+    for (int i = 0; i < 3; ++i) J(i, j) = I(i, j) + tau * (w_x_Ij(i) - Iw_x_ej(i));
+  }
+  return J;
+}
+
 // One Newton step on F(ω') = I (ω' − ω) + h ω' × I ω' − h tau = 0 from ω' = ω (the implicit
 // gyroscopic term; I and tau in B, h [s]):
 //   F(ω) = h (ω × I ω − tau),  J = ∂F/∂ω' = I + h (ω̂ I − (I ω)^),  ω' = ω − J⁻¹ F(ω).
@@ -78,12 +93,7 @@ RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d gyroscopic_newton_kick(const Eigen::Matri
   const Eigen::Vector3d Iw = times_3x3(I, w);
   const Eigen::Vector3d w_x_Iw = cross_3(w, Iw);
   const Eigen::Vector3d F(h * (w_x_Iw(0) - tau(0)), h * (w_x_Iw(1) - tau(1)), h * (w_x_Iw(2) - tau(2)));
-  // column j of J: I e_j + h (ω × I e_j − I ω × e_j), with I ω × e_j = (I ω)^ e_j
-  Eigen::Matrix3d J;
-  for (int j = 0; j < 3; ++j) {
-    const Eigen::Vector3d w_x_Ij = cross_3(w, I.col(j)), Iw_x_ej = cross_3(Iw, Eigen::Vector3d::Unit(j));
-    for (int i = 0; i < 3; ++i) J(i, j) = I(i, j) + h * (w_x_Ij(i) - Iw_x_ej(i));
-  }
+  const Eigen::Matrix3d J = gyroscopic_jacobian(I, w, Iw, h);
   const Eigen::Vector3d dw = solve_3x3(J.row(0), J.row(1), J.row(2), F);
   return Eigen::Vector3d(w(0) - dw(0), w(1) - dw(1), w(2) - dw(2));
 }
@@ -141,5 +151,18 @@ struct FullEuler {
     return gyroscopic_newton_kick(inertia, w, tau, h);
   }
 };
+
+// Euler's equations solved for the torque (inverse dynamics): τ_B = I ω̇ + ω × I ω [N m] for the angular
+// velocity w and acceleration alpha in B, with the form's own I ω (momentum).
+template <class Euler>
+Eigen::Vector3d euler_torque(const Euler& euler, const Eigen::Vector3d& w, const Eigen::Vector3d& alpha) {
+  const Eigen::Vector3d I_alpha = euler.momentum(alpha), w_x_Iw = cross_3(w, euler.momentum(w));
+  return Eigen::Vector3d(I_alpha(0) + w_x_Iw(0), I_alpha(1) + w_x_Iw(1), I_alpha(2) + w_x_Iw(2));
+}
+
+// The rotational inertia about the centre of mass in B as a matrix [kg m²].
+inline Eigen::Matrix3d inertia_matrix(const SphericalEuler& e) { return e.inertia * Eigen::Matrix3d::Identity(); }
+inline Eigen::Matrix3d inertia_matrix(const PrincipalEuler& e) { return e.inertia.asDiagonal(); }
+inline Eigen::Matrix3d inertia_matrix(const FullEuler& e) { return e.inertia; }
 
 }  // namespace rigiddyn

@@ -1,12 +1,14 @@
 // The small interface every model offers to the fixed-step integrators (integrators/*.hpp), so each
 // method is written once and compiles, per model, to what a hand-written loop would be (no virtual
-// call). A model is a body plus the loads held constant during the current step. Its state lives
-// on (vector space) × SO(3)^k and is stored as flat coordinates y (a fixed-size Eigen vector; unit
-// quaternions stored (x, y, z, w) inside it); the last coordinate of every model is the work [J]
-// done by the applied loads (gravity included) since the start, integrated alongside the motion
-// (dW/dt = power), so the work-energy equation T2 − T1 = U12 (Craig, "Rigid Body Dynamics" slides) can be checked on any run.
+// call). A model is one or more bodies plus the loads held constant during the current step. Its state
+// lives on (vector space) × SO(3)^k and is stored as flat coordinates y (an Eigen vector, fixed-size
+// for the one-body models, Eigen::VectorXd for a scene: an integrator sizes what it builds from y and
+// never default-constructs a vector to index it; unit quaternions stored (x, y, z, w) inside y); the
+// last coordinate of the one-body models is the work [J] done by the applied loads (gravity included)
+// since the start, integrated alongside the motion (dW/dt = power), so the work-energy equation
+// T2 − T1 = U12 (Craig, "Rigid Body Dynamics" slides) can be checked on any run.
 //
-//   using Coordinates, Tangent;               Eigen::Matrix<double, nq, 1>, Eigen::Matrix<double, nv, 1>
+//   using Coordinates, Tangent;               e.g. Eigen::Matrix<double, nq, 1>, Eigen::Matrix<double, nv, 1>
 //   Coordinates rate(y)                       ẏ in coordinates (quaternion rate q̇ = ½ q ⊗ (ω_B, 0)),
 //                                             for methods that add increments to y (Euler, RK4)
 //   void project(y)                           back onto the state space (normalise the quaternions)
@@ -21,28 +23,29 @@
 //                                             Euler; the second with the implicit gyroscopic term)
 //   void drift(y, h)                          positions and attitudes (and work) moved over h with
 //                                             the current velocities
+//   double loads_kick(y, h)                   the exact flow of the loads part over h [s]: positions,
+//                                             attitudes (and time) frozen, velocities += h M⁻¹ × the
+//                                             applied wrench WITHOUT the gyroscopic term, work updated;
+//                                             returns Σ |Δω_B| [rad/s] over the bodies whose free
+//                                             rotation has a gyroscopic term (the spatial rigid bodies;
+//                                             ExactFreeFlow refuses a step where it is non-zero)
+//   template <class Rotation>
+//   void free_flow(y, h)                      the free part over h [s]: p += h v for every body, each
+//                                             attitude by the rotation flow Rotation (a tag of
+//                                             integrators/free_flow_tags.hpp: DlmRotation<normalise>,
+//                                             ExactRotation)
 //   RecordedState record(y)                   a uniform description for simulate's recorder
-// and states, next to its definition, whether its equations carry Euler's gyroscopic term
-// (has_gyroscopic_term below): the structure-preserving methods may fall back to a plain
-// kick-drift form only for models without one.
+// and, optionally, bool implicit_midpoint_newton(y, h): its own solve of the implicit midpoint rule
+// (integrators/implicit_midpoint.hpp). The structure-preserving methods (splitting_dlm, yoshida4,
+// exact_flow_kick) are compositions of loads_kick and free_flow only: the gyroscopic term lives in
+// each model's free rotation, so no method has a branch (or a fallback) per kind of model.
 #pragma once
 #include "rigiddyn/always_inline.hpp"  // RIGIDDYN_ALWAYS_INLINE, for every model and integrator function
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-#include <type_traits>
-
 namespace rigiddyn {
-
-// True for a model whose equations of motion contain Euler's gyroscopic term ω × I ω (the spatial
-// rigid body, in every Euler form and under every LoadKind), false for one without it (particle,
-// planar body). Deliberately left undefined here: every model specialises it next to its own
-// definition, so a method asking about a model that has not said fails to compile.
-template <class Model>
-struct has_gyroscopic_term;
-template <class Model>
-inline constexpr bool has_gyroscopic_term_v = has_gyroscopic_term<Model>::value;
 
 // What simulate records of any model, in the rigid-body layout (a particle has q = identity and
 // ω = 0; a planar body lives in the xy plane of W and turns about z).

@@ -62,6 +62,18 @@ class ParticleModel {
     y(6) += h * f_W_.dot(y.segment<3>(3));
     y.segment<3>(0) += h * y.segment<3>(3);
   }
+  // the loads part: the force is constant over a step, so kick is its exact flow (v += h f/m); no
+  // attitude, so no angular velocity changes (returns 0)
+  RIGIDDYN_ALWAYS_INLINE double loads_kick(Coordinates& y, double h) const {
+    kick(y, h);
+    return 0.0;
+  }
+  // the free part p += h v (no attitude: the rotation flow is not used); with the work of the force
+  // over the drift (drift), so that a kick–free–kick step is velocity Verlet
+  template <class Rotation>
+  RIGIDDYN_ALWAYS_INLINE void free_flow(Coordinates& y, double h) const {
+    drift(y, h);
+  }
 
   RecordedState record(const Coordinates& y) const {
     RecordedState r;
@@ -82,9 +94,5 @@ class ParticleModel {
   Eigen::Vector3d g_W_;
   Eigen::Vector3d f_W_;  // total force in W during the step, gravity included [N]
 };
-
-// a point mass has no attitude, hence no gyroscopic term (model_interface.hpp)
-template <>
-struct has_gyroscopic_term<ParticleModel> : std::false_type {};
 
 }  // namespace rigiddyn

@@ -81,6 +81,21 @@ class PlanarBodyModel {
     y(6) += h * (force_W(y(2)).dot(y.segment<2>(3)) + tau_ * y(5));
     y.segment<3>(0) += h * y.segment<3>(3);
   }
+  // the loads part: kick, the exact flow at the frozen angle θ (v += h f/m, ω += h τ/I_zz). Returns 0:
+  // plane motion turns about a fixed axis and has no gyroscopic term, so the kick–free–kick step is
+  // exact under a constant torque too and the 'exact' method takes it (ExactFreeFlow refuses only
+  // kicks of a spatial body's ω)
+  RIGIDDYN_ALWAYS_INLINE double loads_kick(Coordinates& y, double h) const {
+    kick(y, h);
+    return 0.0;
+  }
+  // the free part (x, y, θ) += h (v_x, v_y, ω), the same under every rotation flow (a turn about a
+  // fixed axis is exact), with the work of the loads over the drift (drift): kick–free–kick is
+  // velocity Verlet
+  template <class Rotation>
+  RIGIDDYN_ALWAYS_INLINE void free_flow(Coordinates& y, double h) const {
+    drift(y, h);
+  }
 
   RecordedState record(const Coordinates& y) const {
     RecordedState r;
@@ -109,9 +124,5 @@ class PlanarBodyModel {
   double tau_;                 // torque about z [N m]
   bool turning_force_;
 };
-
-// plane motion turns about a fixed axis: ω × I ω = 0, no gyroscopic term (model_interface.hpp)
-template <>
-struct has_gyroscopic_term<PlanarBodyModel> : std::false_type {};
 
 }  // namespace rigiddyn

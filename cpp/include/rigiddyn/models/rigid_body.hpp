@@ -8,15 +8,20 @@
 #include "rigiddyn/check.hpp"  // format_value
 #include "rigiddyn/inertia/spatial_inertia.hpp"
 #include "rigiddyn/inertia/validity.hpp"
+#include "rigiddyn/integrators/exact_flow_kick.hpp"    // exact_free_rotation, FreeRotationFlow
+#include "rigiddyn/integrators/implicit_midpoint.hpp"  // midpoint_rotation, implicit_midpoint_solver
+#include "rigiddyn/integrators/splitting_dlm.hpp"      // dlm_free_rotation
 #include "rigiddyn/models/euler_equations.hpp"
 #include "rigiddyn/models/loads.hpp"
 #include "rigiddyn/models/model_interface.hpp"
 #include "rigiddyn/so3/exp_log.hpp"
+#include "rigiddyn/so3/quaternion_kernels.hpp"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <type_traits>
 #include <vector>
@@ -169,19 +174,13 @@ class RigidBodyModel {
   // copies of segments would reload, as one 2-wide load, values just stored one by one by the
   // previous stage (a store-forwarding stall on the critical path; see euler_equations.hpp).
   RIGIDDYN_ALWAYS_INLINE Coordinates rate(const Coordinates& y) const {
-    const Eigen::Map<const Eigen::Quaterniond> q(y.data() + 3);
     const Eigen::Vector3d v = three_at(y, 7), w = three_at(y, 10);
     Eigen::Vector3d f_W, tau_B;
     wrench(y, f_W, tau_B);
     const Eigen::Vector3d alpha_B = euler_.angular_acceleration(w, tau_B);
     Coordinates dy;
     for (int i = 0; i < 3; ++i) dy[i] = v[i], dy[7 + i] = inverse_mass_ * f_W[i], dy[10 + i] = alpha_B[i];
-    // quaternion kinematics q̇ = ½ q ⊗ (ω_B, 0) ("Rigid body kinematics and dynamics" notes,
-    // body-frame angular velocity), the Hamilton product written out
-    dy(3) = 0.5 * (q.w() * w.x() + q.y() * w.z() - q.z() * w.y());
-    dy(4) = 0.5 * (q.w() * w.y() + q.z() * w.x() - q.x() * w.z());
-    dy(5) = 0.5 * (q.w() * w.z() + q.x() * w.y() - q.y() * w.x());
-    dy(6) = -0.5 * (q.x() * w.x() + q.y() * w.y() + q.z() * w.z());
+    quat_rate_body(y.data() + 3, w, dy.data() + 3);  // q̇ = ½ q ⊗ (ω_B, 0)
     dy(13) = power(f_W, tau_B, v, w);
     return dy;
   }
@@ -256,6 +255,74 @@ class RigidBodyModel {
     project(y);
   }
 
+  // The exact flow of the loads part over h [s] at the current attitude (no gyroscopic term):
+  // v += h f_W/m, ω += h I⁻¹ n_B, and the work += h (f_W·v̄ + n_B·ω̄) with v̄, ω̄ the mean velocities
+  // (exact: v and ω are linear in t in this flow). One derivative evaluation (ξ at ω = 0 is
+  // (v, 0, f_W/m, I⁻¹ n_B, ·)); none for LoadKind::none, where the flow is the identity. Returns
+  // |Δω_B| = |h I⁻¹ n_B| [rad/s].
+  double loads_kick(Coordinates& y, double h) const {
+    if constexpr (kind == LoadKind::none) {
+      return 0.0;
+    } else {
+      Coordinates still = y;
+      still.template segment<3>(10).setZero();
+      const Tangent xi = velocity(still);
+      const Eigen::Vector3d dv = h * xi.template segment<3>(6), dw = h * xi.template segment<3>(9);
+      const Eigen::Vector3d v_mean = y.template segment<3>(7) + 0.5 * dv, w_mean = y.template segment<3>(10) + 0.5 * dw;
+      y(13) += mass_ * dv.dot(v_mean) + euler_.momentum(dw).dot(w_mean);
+      y.template segment<3>(7) += dv;
+      y.template segment<3>(10) += dw;
+      return dw.norm();
+    }
+  }
+
+  // The free part over h [s]: p += h v, then the attitude and ω_B by the free rotation Rotation
+  // (integrators/free_flow_tags.hpp): the DLM splitting or the exact Euler–Poinsot flow of this body.
+  template <class Rotation>
+  void free_flow(Coordinates& y, double h) const {
+    y.template segment<3>(0) += h * y.template segment<3>(7);
+    free_rotation(Rotation{}, y.data() + 3, y.data() + 10, h);
+  }
+
+  // The implicit midpoint rule's hook (integrators/implicit_midpoint.hpp): Newton on the mean angular
+  // velocity ω̄ with the Jacobian of Euler's equations (gyroscopic_jacobian, τ = h/2; the residual
+  // multiplied by I), v̄ by the fixed point (the force does not depend on v), the attitude by the
+  // Cayley map (unit |q| exactly). Returns true if the iteration converged within max_iterations.
+  bool implicit_midpoint_newton(Coordinates& y, double h) const {
+    using namespace implicit_midpoint_solver;
+    const Eigen::Matrix3d I = inertia_matrix(euler_);
+    const Eigen::Quaterniond q0(Eigen::Vector4d(y.template segment<4>(3)));
+    const Eigen::Vector3d v0 = y.template segment<3>(7), w0 = y.template segment<3>(10);
+    Eigen::Vector3d w_bar = w0, v_bar = v0;
+    Coordinates mid = y;  // ȳ = (y0 + y1)/2
+    double power = 0.0;
+    bool converged = false;
+    for (int k = 0; k < max_iterations && !converged; ++k) {
+      const Eigen::Quaterniond q1 = q0 * midpoint_rotation(h * w_bar);
+      mid.template segment<4>(3) = 0.5 * (q0.coeffs() + q1.coeffs());
+      mid.template segment<3>(7) = v_bar;
+      mid.template segment<3>(10) = w_bar;
+      const Tangent xi = velocity(mid);
+      power = xi(12);
+      const Eigen::Vector3d r_w = w_bar - w0 - 0.5 * h * xi.template segment<3>(9);
+      const Eigen::Vector3d r_v = v_bar - v0 - 0.5 * h * xi.template segment<3>(6);
+      const Eigen::Vector3d I_r_w = times_3x3(I, r_w);
+      const Eigen::Matrix3d J = gyroscopic_jacobian(I, w_bar, times_3x3(I, w_bar), 0.5 * h);
+      const Eigen::Vector3d dw = solve_3x3(J.row(0), J.row(1), J.row(2), I_r_w);
+      w_bar -= dw;
+      v_bar -= r_v;
+      const bool w_done = dw.norm() <= tolerance * (w_bar.norm() + h * xi.template segment<3>(9).norm());
+      const bool v_done = r_v.norm() <= tolerance * (v_bar.norm() + h * xi.template segment<3>(6).norm());
+      converged = w_done && v_done;
+    }
+    y.template segment<3>(0) += h * v_bar;
+    y.template segment<4>(3) = (q0 * midpoint_rotation(h * w_bar)).normalized().coeffs();
+    y.template segment<3>(7) = 2.0 * v_bar - v0;
+    y.template segment<3>(10) = 2.0 * w_bar - w0;
+    y(13) += h * power;
+    return converged;
+  }
+
   RecordedState record(const Coordinates& y) const {
     RecordedState r;
     r.p_W = y.segment<3>(0);
@@ -289,6 +356,16 @@ class RigidBodyModel {
     }
   }
 
+  // the free rotation of the attitude q (x, y, z, w) and ω_B over h, per rotation flow
+  template <bool normalise>
+  RIGIDDYN_ALWAYS_INLINE void free_rotation(DlmRotation<normalise>, double* q, double* w, double h) const {
+    dlm_free_rotation<normalise>(euler_, q, w, h);
+  }
+  RIGIDDYN_ALWAYS_INLINE void free_rotation(ExactRotation, double* q, double* w, double h) const {
+    if (!free_rotation_) free_rotation_.emplace(inertia_matrix(euler_));
+    exact_free_rotation(*free_rotation_, q, w, h);
+  }
+
   // (x[i], x[i + 1], x[i + 2]) by scalar loads
   template <class Vector>
   RIGIDDYN_ALWAYS_INLINE static Eigen::Vector3d three_at(const Vector& x, int i) {
@@ -302,17 +379,6 @@ class RigidBodyModel {
     for (int i = 3; i < 7; ++i) out[i] = y[i];
     for (int i = 7; i < 14; ++i) out[i] = y[i] + theta[i - 1];
     return out;
-  }
-
-  // out = q ⊗ exp(θ) for q, out stored (x, y, z, w) (the Hamilton product written out: scalar
-  // stores; q and out may not overlap)
-  RIGIDDYN_ALWAYS_INLINE static void times_exp(const double* q, const Eigen::Vector3d& theta, double* out) {
-    const double x = q[0], y = q[1], z = q[2], s = q[3];
-    const Eigen::Quaterniond e = rotvec_to_quat(theta);
-    out[0] = s * e.x() + x * e.w() + y * e.z() - z * e.y();
-    out[1] = s * e.y() - x * e.z() + y * e.w() + z * e.x();
-    out[2] = s * e.z() + x * e.y() - y * e.x() + z * e.w();
-    out[3] = s * e.w() - x * e.x() - y * e.y() - z * e.z();
   }
 
   // dW/dt = f_W · v_W + tau_B · ω_B [W] (Craig, "Rigid Body Dynamics" slides, power of a force at G and a torque)
@@ -329,11 +395,11 @@ class RigidBodyModel {
   ComLoads loads_;
   Eigen::Vector3d f_fixed_W_;  // f_W + m g_W
   bool turning_loads_;         // f_B or tau_W non-zero (only LoadKind::turning reads it)
+  // The closed-form free rotation of this body's inertia, its principal frame computed once per model on
+  // the first exact free flow (so that a model for any other method, e.g. step()'s, does not pay the
+  // eigen-decomposition). Filled from a const member: a model is stepped by one thread at a time (simulate
+  // and step each build their own, as every model carries its step's loads).
+  mutable std::optional<FreeRotationFlow> free_rotation_;
 };
-
-// Euler's equations, I ω̇ + ω × I ω = tau_B, in every form and under every LoadKind (for a sphere the
-// term vanishes, but the model is still the spatial body: model_interface.hpp)
-template <class Euler, LoadKind kind>
-struct has_gyroscopic_term<RigidBodyModel<Euler, kind>> : std::true_type {};
 
 }  // namespace rigiddyn

@@ -1,0 +1,588 @@
+// Python bindings of scenes (scene/scene.hpp, scene/compile.hpp, scene/simulate_scene.hpp): Scene (bodies
+// and force elements as data), CompiledScene (the immutable model of one method), SceneResult (the
+// records of a run, read-only numpy arrays adopting the C++ vectors) and the scene branch of
+// rigiddyn.simulate / rigiddyn.step (routed here by bind_dynamics.cpp). The element classes are in
+// bind_scene_elements.cpp. Compatibility warnings are rigiddyn.SceneCompatibilityWarning (a UserWarning).
+#include <pybind11/stl.h>
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "bindings.hpp"
+#include "numpy_io.hpp"
+#include "python_run.hpp"
+#include "repr.hpp"
+#include "scene_run.hpp"
+#include "rigiddyn/scene/compile.hpp"
+#include "rigiddyn/scene/simulate_scene.hpp"
+
+namespace rigiddyn::bindings {
+
+namespace py = pybind11;
+using py_io::Array;
+
+namespace {
+
+// rigiddyn.SceneCompatibilityWarning, created in bind_scene.
+PyObject* scene_compatibility_warning = nullptr;
+
+// ------------------------------------------------------------ bodies and their states
+
+Body as_body(py::handle obj, const std::string& name) {
+  if (py::isinstance<RigidBody>(obj)) return obj.cast<const RigidBody&>();
+  if (py::isinstance<PlanarBody>(obj)) return obj.cast<const PlanarBody&>();
+  if (py::isinstance<Particle>(obj)) return obj.cast<const Particle&>();
+  py_io::throw_type_error(name, "a Particle, PlanarBody or RigidBody", obj);
+}
+
+py::object body_object(const Body& body) {
+  return std::visit([](const auto& b) { return py::cast(b); }, body);
+}
+
+// The state of `body` (its kind's state class), else TypeError naming `name`.
+BodyState as_body_state(py::handle obj, const Body& body, const std::string& name, const std::string& body_label) {
+  return std::visit(
+      [&](const auto& b) -> BodyState {
+        using B = std::decay_t<decltype(b)>;
+        using S = std::conditional_t<std::is_same_v<B, RigidBody>, RigidBodyState,
+                                     std::conditional_t<std::is_same_v<B, PlanarBody>, PlanarBodyState, ParticleState>>;
+        constexpr const char* state = std::is_same_v<B, RigidBody>    ? "RigidBodyState"
+                                      : std::is_same_v<B, PlanarBody> ? "PlanarBodyState"
+                                                                      : "ParticleState";
+        return py_io::as_instance<S>(obj, name, std::string("a ") + state + " (the state of " + body_label + ")");
+      },
+      body);
+}
+
+// One state per body of `scene`, in its order: a list or tuple of the bodies' state classes.
+std::vector<BodyState> as_scene_states(py::handle obj, const Scene& scene, const std::string& name) {
+  const std::size_t nb = scene.bodies.size();
+  const std::string expected = "a list of " + std::to_string(nb) + " body states (one per body of the scene, in order)";
+  if (!py::isinstance<py::list>(obj) && !py::isinstance<py::tuple>(obj)) py_io::throw_type_error(name, expected, obj);
+  if (py::len(obj) != nb) py_io::throw_value_error(name, expected, std::to_string(py::len(obj)) + " states");
+  std::vector<BodyState> out;
+  for (std::size_t i = 0; i < nb; ++i) {
+    const std::string label = "body " + std::to_string(i) + " '" + body_name(scene, i) + "'";
+    out.push_back(as_body_state(obj[py::int_(i)], scene.bodies[i], name + "[" + std::to_string(i) + "]", label));
+  }
+  return out;
+}
+
+py::list states_object(const std::vector<BodyState>& states) {
+  py::list out;
+  for (const BodyState& s : states) out.append(std::visit([](const auto& x) { return py::cast(x); }, s));
+  return out;
+}
+
+// ------------------------------------------------------------ building a scene
+
+// Adds `body` named `name` (None: the default "body<i>"); names are unique. Returns its index.
+int add_body(Scene& scene, py::handle body, py::handle name, const std::string& body_arg, const std::string& name_arg) {
+  Body b = as_body(body, body_arg);
+  const std::string given = name.is_none() ? std::string() : py_io::as_string(name, name_arg);
+  const std::size_t index = scene.bodies.size();
+  const std::string effective = given.empty() ? "body" + std::to_string(index) : given;
+  for (std::size_t i = 0; i < index; ++i) {
+    if (body_name(scene, i) == effective) {
+      py_io::throw_value_error(name_arg, "a name no other body of the scene has ('" + effective + "' is body " +
+                                             std::to_string(i) + "'s)",
+                               name.is_none() ? "None" : "'" + given + "'");
+    }
+  }
+  scene.body_names.resize(index, "");
+  scene.bodies.push_back(std::move(b));
+  scene.body_names.push_back(given);
+  return static_cast<int>(index);
+}
+
+// Adds `element` after checking it against the bodies so far (its compiled term's checks, messages
+// naming `name`: "element.bodies[0]: expected a body index in [0, 2), got 5"). Returns its index.
+int add_element(Scene& scene, py::handle element, const std::string& name) {
+  Element e = as_element(element, name);
+  std::visit(
+      [&](const auto& spec) {
+        using Term = typename TermOf<std::decay_t<decltype(spec)>>::type;
+        const Term check(spec, scene.bodies, name);
+        (void)check;
+      },
+      e);
+  scene.elements.push_back(std::move(e));
+  return static_cast<int>(scene.elements.size() - 1);
+}
+
+// Scene(bodies, body_names, elements), each item checked as add_body/add check it.
+Scene make_scene(py::handle bodies, py::handle body_names, py::handle elements) {
+  Scene scene;
+  auto items = [](py::handle obj, const char* name) {
+    if (obj.is_none()) return py::list();
+    if (!py::isinstance<py::list>(obj) && !py::isinstance<py::tuple>(obj)) py_io::throw_type_error(name, "None or a list", obj);
+    return py::list(py::reinterpret_borrow<py::object>(obj));
+  };
+  const py::list b = items(bodies, "bodies"), names = items(body_names, "body_names"), e = items(elements, "elements");
+  if (!body_names.is_none() && names.size() != b.size()) {
+    py_io::throw_value_error("body_names", "None or one name (str or None) per body (" + std::to_string(b.size()) + ")",
+                             std::to_string(names.size()) + " names");
+  }
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    const std::string k = "[" + std::to_string(i) + "]";
+    add_body(scene, b[i], body_names.is_none() ? py::none() : py::object(names[i]), "bodies" + k, "body_names" + k);
+  }
+  for (std::size_t i = 0; i < e.size(); ++i) add_element(scene, e[i], "elements[" + std::to_string(i) + "]");
+  return scene;
+}
+
+py::list bodies_list(const Scene& s) {
+  py::list out;
+  for (const Body& b : s.bodies) out.append(body_object(b));
+  return out;
+}
+py::list raw_names_list(const Scene& s) {  // None for a body named by default
+  py::list out;
+  for (std::size_t i = 0; i < s.bodies.size(); ++i) {
+    const bool named = i < s.body_names.size() && !s.body_names[i].empty();
+    out.append(named ? py::object(py::str(s.body_names[i])) : py::object(py::none()));
+  }
+  return out;
+}
+py::tuple names_tuple(const Scene& s) {
+  py::tuple out(s.bodies.size());
+  for (std::size_t i = 0; i < s.bodies.size(); ++i) out[i] = py::str(body_name(s, i));
+  return out;
+}
+py::list elements_list(const Scene& s) {
+  py::list out;
+  for (const Element& e : s.elements) out.append(element_object(e));
+  return out;
+}
+py::tuple element_kinds(const Scene& s) {
+  py::tuple out(s.elements.size());
+  for (std::size_t i = 0; i < s.elements.size(); ++i) out[i] = py::str(element_kind(s.elements[i]));
+  return out;
+}
+
+std::string scene_repr(const Scene& s) {
+  return repr_call("Scene", {{"bodies", bodies_list(s)}, {"body_names", raw_names_list(s)}, {"elements", elements_list(s)}});
+}
+
+bool same_scene(const Scene& a, const Scene& b) {
+  return bodies_list(a).equal(bodies_list(b)) && raw_names_list(a).equal(raw_names_list(b)) &&
+         elements_list(a).equal(elements_list(b));
+}
+
+// ------------------------------------------------------------ compiling
+
+// A compiled scene as Python holds it: the scene it came from (attributes, pickle), the method and the
+// immutable C++ model, shared (never copied) by the runs.
+struct CompiledSceneHandle {
+  Scene scene;
+  Method method;
+  std::shared_ptr<const CompiledScene> compiled;
+};
+
+// compile_scene(scene, method) (std::invalid_argument -> ValueError with the reason); with `warn`, each
+// of its warnings as a SceneCompatibilityWarning.
+CompiledSceneHandle compile_handle(const Scene& scene, Method method, bool warn) {
+  CompiledSceneHandle h{scene, method, std::make_shared<const CompiledScene>(compile_scene(scene, method))};
+  if (warn) {
+    for (const std::string& w : h.compiled->warnings()) {
+      if (PyErr_WarnEx(scene_compatibility_warning, w.c_str(), 2) != 0) throw py::error_already_set();
+    }
+  }
+  return h;
+}
+
+Method as_method_name(py::handle method) { return method_from_name(py_io::as_string(method, "method"), "method"); }
+
+// The compiled model a run of `model` uses: a CompiledScene itself (method None or its own), or a Scene
+// compiled for `method` (None: rk4), with its warnings.
+CompiledSceneHandle compiled_for(py::handle model, py::handle method) {
+  if (py::isinstance<CompiledSceneHandle>(model)) {
+    const auto& h = model.cast<const CompiledSceneHandle&>();
+    if (!method.is_none() && as_method_name(method) != h.method) {
+      py_io::throw_value_error("method", "None or '" + method_info(h.method).name + "' (the method `model` was compiled for)",
+                               "'" + py::str(method).cast<std::string>() + "'");
+    }
+    return h;
+  }
+  return compile_handle(model.cast<const Scene&>(), method.is_none() ? Method::rk4 : as_method_name(method), true);
+}
+
+// A scene's forces are its elements: simulate's loads and gravity must be left out.
+void refuse_body_arguments(py::handle loads, py::handle gravity) {
+  if (!loads.is_none()) {
+    py_io::throw_value_error("loads", "None for a scene (declare a ScheduledLoads element)", py_io::describe(loads));
+  }
+  if (!gravity.is_none() && !(py::isinstance<py::bool_>(gravity) && !gravity.cast<bool>())) {
+    py_io::throw_value_error("gravity", "None for a scene (declare a UniformGravity element)", py_io::describe(gravity));
+  }
+}
+
+// ------------------------------------------------------------ results
+
+SceneResult to_scene_result(SceneSimulation&& r, const Scene& scene, bool scalar_first) {
+  const auto n = static_cast<py::ssize_t>(r.size());
+  const auto nb = static_cast<py::ssize_t>(scene.bodies.size()), ne = static_cast<py::ssize_t>(scene.elements.size());
+  if (scalar_first) to_scalar_first(r.q_WB);
+  return SceneResult{adopt(std::move(r.t), {n}),
+                     adopt(std::move(r.p_W), {n, nb, 3}),
+                     adopt(std::move(r.q_WB), {n, nb, 4}),
+                     adopt(std::move(r.v_W), {n, nb, 3}),
+                     adopt(std::move(r.w_B), {n, nb, 3}),
+                     adopt(std::move(r.kinetic_energy), {n}),
+                     adopt(std::move(r.potential_energy), {n}),
+                     adopt(std::move(r.total_energy), {n}),
+                     adopt(std::move(r.linear_momentum_W), {n, 3}),
+                     adopt(std::move(r.angular_momentum_W), {n, 3}),
+                     adopt(std::move(r.work), {n, ne}),
+                     adopt(std::move(r.power), {n, ne}),
+                     names_tuple(scene),
+                     element_kinds(scene),
+                     r.diverged,
+                     r.unconverged_steps,
+                     r.elapsed_seconds};
+}
+
+// The arrays of a SceneResult in pickle order, with their shapes after the record axis (-1: bodies,
+// -2: elements).
+struct ResultArray {
+  const char* name;
+  Array SceneResult::*member;
+  std::vector<py::ssize_t> tail;
+};
+const ResultArray result_arrays[] = {
+    {"t", &SceneResult::t, {}},
+    {"p_W", &SceneResult::p_W, {-1, 3}},
+    {"q_WB", &SceneResult::q_WB, {-1, 4}},
+    {"v_W", &SceneResult::v_W, {-1, 3}},
+    {"w_B", &SceneResult::w_B, {-1, 3}},
+    {"kinetic_energy", &SceneResult::kinetic_energy, {}},
+    {"potential_energy", &SceneResult::potential_energy, {}},
+    {"total_energy", &SceneResult::total_energy, {}},
+    {"linear_momentum_W", &SceneResult::linear_momentum_W, {3}},
+    {"angular_momentum_W", &SceneResult::angular_momentum_W, {3}},
+    {"work", &SceneResult::work, {-2}},
+    {"power", &SceneResult::power, {-2}},
+};
+constexpr std::size_t result_array_count = sizeof(result_arrays) / sizeof(result_arrays[0]);
+
+py::tuple scene_result_state(const SceneResult& r) {
+  py::tuple out(result_array_count + 5);
+  for (std::size_t i = 0; i < result_array_count; ++i) out[i] = r.*(result_arrays[i].member);
+  out[result_array_count] = r.body_names;
+  out[result_array_count + 1] = r.elements;
+  out[result_array_count + 2] = py::bool_(r.diverged);
+  out[result_array_count + 3] = py::int_(r.unconverged_steps);
+  out[result_array_count + 4] = py::float_(r.elapsed_seconds);
+  return out;
+}
+
+SceneResult scene_result_from_state(const py::tuple& t) {
+  if (t.size() != result_array_count + 5) {
+    py_io::throw_value_error("SceneResult pickle", "a tuple of " + std::to_string(result_array_count + 5) + " items",
+                             std::to_string(t.size()) + " items");
+  }
+  SceneResult r;
+  r.body_names = py::tuple(t[result_array_count]);
+  r.elements = py::tuple(t[result_array_count + 1]);
+  const py::ssize_t n = py::len(t[0]);
+  const auto nb = static_cast<py::ssize_t>(r.body_names.size()), ne = static_cast<py::ssize_t>(r.elements.size());
+  for (std::size_t i = 0; i < result_array_count; ++i) {
+    std::vector<py::ssize_t> shape{n};
+    for (py::ssize_t d : result_arrays[i].tail) shape.push_back(d == -1 ? nb : d == -2 ? ne : d);
+    Array a = Array::ensure(py::module_::import("numpy").attr("array")(t[i], "float64"));  // a copy
+    bool ok = a && a.ndim() == static_cast<py::ssize_t>(shape.size());
+    for (std::size_t d = 0; ok && d < shape.size(); ++d) ok = a.shape(d) == shape[d];
+    if (!ok) {
+      std::string expected = "shape (";
+      for (std::size_t d = 0; d < shape.size(); ++d) expected += (d ? ", " : "") + std::to_string(shape[d]);
+      py_io::throw_value_error(std::string("SceneResult pickle ") + result_arrays[i].name, expected + ")",
+                               py_io::describe(t[i]));
+    }
+    a.attr("flags").attr("writeable") = false;
+    r.*(result_arrays[i].member) = a;
+  }
+  r.diverged = t[result_array_count + 2].cast<bool>();
+  r.unconverged_steps = t[result_array_count + 3].cast<std::int64_t>();
+  r.elapsed_seconds = t[result_array_count + 4].cast<double>();
+  return r;
+}
+
+std::string scene_result_repr(const SceneResult& r) {
+  const py::ssize_t n = r.t.shape(0);
+  const py::object span = n == 0 ? py::object(py::list()) : py::object(py::make_tuple(r.t.at(0), r.t.at(n - 1)));
+  return repr_call("SceneResult", {{"records", py::int_(n)},
+                                   {"body_names", r.body_names},
+                                   {"elements", r.elements},
+                                   {"t", span},
+                                   {"diverged", py::bool_(r.diverged)},
+                                   {"unconverged_steps", py::int_(r.unconverged_steps)},
+                                   {"elapsed_seconds", py::float_(r.elapsed_seconds)}});
+}
+
+bool all_finite(const std::vector<BodyState>& states) {
+  for (const BodyState& s : states) {
+    const BodyKinematics k = kinematics_of(s);
+    if (!(k.p_W.allFinite() && k.q_WB.coeffs().allFinite() && k.v_W.allFinite() && k.w_B.allFinite())) return false;
+  }
+  return true;
+}
+
+// Whether a step's result depends on its start time (a load with a time window, a Python force).
+bool time_dependent(const Scene& scene) {
+  for (const Element& e : scene.elements) {
+    if (std::holds_alternative<FunctionForce>(e)) return true;
+    if (const auto* s = std::get_if<ScheduledLoads>(&e); s && has_time_window(s->loads)) return true;
+  }
+  return false;
+}
+
+const char* const scene_doc = R"doc(
+A scene: bodies (Particle, PlanarBody, RigidBody) and the force elements acting on them, as data.
+
+    scene = rigiddyn.Scene()
+    sat = scene.add_body(rigiddyn.RigidBody(500.0, [400.0, 300.0, 200.0]), name="sat")
+    scene.add(rigiddyn.PointMassGravity(gm=3.986004418e14))
+    result = rigiddyn.simulate(scene, [rigiddyn.RigidBodyState(p_W=[7e6, 0, 0], v_W=[0, 7546.0, 0])],
+                               dt=1.0, steps=6000, method="rk4")
+
+Scene(bodies=None, body_names=None, elements=None) builds the same from lists (body_names: one str or
+None per body); it is what repr prints. Bodies are indexed in the order added; an element refers to bodies
+by index and is checked against the bodies added so far (add bodies first). Compile it for a method with
+compile(method) (a CompiledScene, immutable), or give it to rigiddyn.simulate / rigiddyn.step, which
+compile it. Mutable (add_body, add); pickles; == compares bodies, names and elements.
+)doc";
+
+const char* const scene_result_doc = R"doc(
+The records of simulate(scene, ...), one row per record (n records, nb bodies in the scene's order, ne
+elements in the scene's order); every array is read-only and shares the memory the C++ run filled.
+
+t (n,) [s]; p_W (n, nb, 3) centre of mass positions in W [m]; q_WB (n, nb, 4) attitudes, (x, y, z, w)
+unless simulate(..., scalar_first=True); v_W (n, nb, 3) [m/s] in W; w_B (n, nb, 3) [rad/s] in each body's
+B. A particle records q_WB = identity and w_B = 0; a planar body p_W = (x, y, 0), q_WB = Rz(theta),
+w_B = (0, 0, omega). kinetic_energy, potential_energy (the sum of the elements' potentials), total_energy
+(n,) [J]; linear_momentum_W (n, 3) [kg m/s]; angular_momentum_W (n, 3) about W's origin [kg m^2/s];
+work (n, ne) each element's work since t0 [J] and power (n, ne) its power at the record [W] (integrated by
+the run's method: kinetic_energy - kinetic_energy[0] ~ work.sum(axis=1)); body_names (nb,) and elements
+(ne,) (each element's class name) label the axes; diverged, unconverged_steps, elapsed_seconds as in
+SimulationResult.
+)doc";
+
+}  // namespace
+
+bool is_scene(py::handle model) {
+  return py::isinstance<Scene>(model) || py::isinstance<CompiledSceneHandle>(model);
+}
+
+SceneResult simulate_scene_py(py::handle model, py::handle initial, py::handle dt, py::handle steps, py::handle method,
+                             py::handle record_every, py::handle loads, py::handle gravity, py::handle t0,
+                             py::handle scalar_first, py::handle progress) {
+  refuse_body_arguments(loads, gravity);
+  SimulationOptions o;
+  o.dt = py_io::as_scalar(py_io::in_si(dt, "s", "dt"), "dt");
+  o.steps = py_io::as_int(steps, "steps", 0);
+  o.record_every = py_io::as_int(record_every, "record_every", 1);
+  o.t0 = py_io::as_scalar(py_io::in_si(t0, "s", "t0"), "t0");
+  const bool first = py_io::as_bool(scalar_first, "scalar_first");
+  const CompiledSceneHandle h = compiled_for(model, method);
+  o.method = h.method;
+  const std::vector<BodyState> initial_states = as_scene_states(initial, h.scene, "initial");
+  PythonMonitor monitor(progress);
+  if (monitor.needed()) o.monitor = [&monitor](std::int64_t steps_done) { return monitor(steps_done); };
+  SceneSimulation r;
+  {
+    py::gil_scoped_release release;  // a PythonForce takes it back for each of its calls
+    r = simulate(*h.compiled, initial_states, o);
+  }
+  if (r.interrupted) monitor.raise();  // the records so far are dropped with r
+  warn_after_run(r.diverged, r.t.empty() ? o.t0 : r.t.back(), r.unconverged_steps, o.steps, method_info(h.method).name,
+                 o.dt);
+  return to_scene_result(std::move(r), h.scene, first);
+}
+
+py::object step_scene_py(py::handle model, py::handle state, py::handle dt, py::handle method, py::handle loads,
+                         py::handle gravity, py::handle t) {
+  refuse_body_arguments(loads, gravity);
+  SimulationOptions o;
+  o.dt = py_io::as_scalar(py_io::in_si(dt, "s", "dt"), "dt");
+  const CompiledSceneHandle h = compiled_for(model, method);
+  o.method = h.method;
+  if (!t.is_none()) {
+    o.t0 = py_io::as_scalar(py_io::in_si(t, "s", "t"), "t");
+  } else if (time_dependent(h.scene)) {
+    py_io::throw_value_error("t", "the time [s] of `state` (the scene has a PythonForce or a load with a time window; "
+                             "pass t=... and use the time returned)", "None");
+  }
+  const std::vector<BodyState> current = as_scene_states(state, h.scene, "state");
+  SceneState next;
+  {
+    py::gil_scoped_release release;
+    next = step(*h.compiled, current, o);
+  }
+  if (!all_finite(next.bodies)) {
+    const std::string msg = "step: the state became non-finite in the step of dt = " + format_value(o.dt) +
+                            (t.is_none() ? std::string() : " from t = " + format_value(o.t0)) + " (method '" +
+                            method_info(h.method).name + "')";
+    if (PyErr_WarnEx(PyExc_RuntimeWarning, msg.c_str(), 1) != 0) throw py::error_already_set();
+  }
+  py::list states = states_object(next.bodies);
+  if (t.is_none()) return std::move(states);
+  return py::make_tuple(states, o.t0 + o.dt);
+}
+
+void bind_scene(py::module_& m) {
+  scene_compatibility_warning = PyErr_NewExceptionWithDoc(
+      "rigiddyn._core.SceneCompatibilityWarning",
+      "Warned when a scene is compiled for a method whose properties its elements break (e.g. velocity-dependent "
+      "forces with a splitting method: order 1 in the damping, energy behaviour not symplectic). A UserWarning.",
+      PyExc_UserWarning, nullptr);
+  if (scene_compatibility_warning == nullptr) throw py::error_already_set();
+  m.attr("SceneCompatibilityWarning") = py::handle(scene_compatibility_warning);
+
+  // both classes first, so that each one's signatures name the other
+  py::class_<Scene> scene(m, "Scene", scene_doc);
+  py::class_<CompiledSceneHandle> compiled(
+      m, "CompiledScene",
+      "A scene compiled for one method (Scene.compile): immutable; its derivative evaluates only the declared "
+      "elements. CompiledScene(scene, method='rk4') is scene.compile(method). Give it to rigiddyn.simulate / "
+      "rigiddyn.step (method None or its own). Pickles (as its scene and method); == compares both.");
+  scene.def(py::init(&make_scene), py::arg("bodies") = py::none(), py::arg("body_names") = py::none(),
+            py::arg("elements") = py::none())
+      .def(
+          "add_body",
+          [](Scene& s, py::handle body, py::handle name) { return add_body(s, body, name, "body", "name"); },
+          py::arg("body"), py::arg("name") = py::none(),
+          "Adds `body` (a Particle, PlanarBody or RigidBody) named `name` (a str no other body has; None: "
+          "'body<index>'); returns its index, by which elements refer to it.")
+      .def(
+          "add", [](Scene& s, py::handle element) { return add_element(s, element, "element"); }, py::arg("element"),
+          "Adds a force element (UniformGravity, PointMassGravity, MutualGravity, GravityGradient, SpringDamper, "
+          "Drag, ScheduledLoads, PythonForce) after checking it against the bodies added so far (indices in range, "
+          "loads the body's kind can take: ValueError naming element.<field>); returns its index (the column of "
+          "SceneResult.work and power).")
+      .def_property_readonly("bodies", [](const Scene& s) { return py::tuple(bodies_list(s)); },
+                             "tuple of the bodies (copies), in index order")
+      .def_property_readonly("body_names", &names_tuple, "tuple of the bodies' names (str), in index order")
+      .def_property_readonly("elements", [](const Scene& s) { return py::tuple(elements_list(s)); },
+                             "tuple of the force elements (copies), in the order added")
+      .def(
+          "compile",
+          [](const Scene& s, py::handle method) { return compile_handle(s, as_method_name(method), true); },
+          py::arg("method") = "rk4",
+          "The scene compiled for `method` (a name of methods()): an immutable CompiledScene whose derivative "
+          "evaluates only the declared elements. ValueError with the reason when the method cannot run the scene "
+          "(e.g. 'exact' with any force element); SceneCompatibilityWarning when it runs it with weaker "
+          "properties (velocity-dependent elements with a splitting method).")
+      // describe and to_toml live in Python (rigiddyn/scene_describe.py, rigiddyn/scene_file.py)
+      .def(
+          "describe",
+          [](py::object self, py::handle method) {
+            return py::module_::import("rigiddyn.scene_describe").attr("describe")(self, method);
+          },
+          py::arg("method") = py::none(),
+          "A text table of the scene: bodies (kind, mass [kg], inertia [kg m^2] in B, state), force elements "
+          "(parameters in SI with their frames, properties, the terms on each body), the frame (W, inertial), the "
+          "units and, with `method` (a name of methods()), its order and the compile's verdict "
+          "(rigiddyn.scene_describe.describe).")
+      .def(
+          "to_toml",
+          [](py::object self, py::handle initial, py::handle run, py::handle name, py::handle description) {
+            return py::module_::import("rigiddyn.scene_file")
+                .attr("scene_to_toml")(self, initial, run, name, description);
+          },
+          py::arg("initial") = py::none(), py::arg("run") = py::none(), py::arg("name") = py::none(),
+          py::arg("description") = py::none(),
+          "The canonical scene file (TOML text: SI units, radians, q_WB as (x, y, z, w)) of the scene with "
+          "`initial` (one state per body, or None), `run` (a rigiddyn.scene_file.RunOptions or None), `name` and "
+          "`description`; rigiddyn.load_scene reads it back to the same scene (rigiddyn.scene_file.scene_to_toml).")
+      .def("__repr__", &scene_repr)
+      .def(py::pickle([](const Scene& s) { return py::make_tuple(bodies_list(s), raw_names_list(s), elements_list(s)); },
+                      [](const py::tuple& t) {
+                        if (t.size() != 3) py_io::throw_value_error("Scene pickle", "a tuple of 3 items", std::to_string(t.size()) + " items");
+                        return make_scene(t[0], t[1], t[2]);
+                      }))
+      .def(
+          "__eq__",
+          [](const Scene& a, py::handle b) -> py::object {
+            if (!py::isinstance<Scene>(b)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
+            return py::bool_(same_scene(a, b.cast<const Scene&>()));
+          },
+          py::arg("other"));
+  scene.attr("__hash__") = py::none();
+
+  compiled
+      .def(py::init([](py::handle s, py::handle method) {
+             return compile_handle(py_io::as_instance<Scene>(s, "scene", "a Scene"), as_method_name(method), true);
+           }),
+           py::arg("scene"), py::arg("method") = "rk4")
+      .def_property_readonly("scene", [](const CompiledSceneHandle& h) { return h.scene; },
+                             "the Scene it was compiled from (a copy)")
+      .def_property_readonly("method", [](const CompiledSceneHandle& h) { return method_info(h.method).name; },
+                             "the method's name (see methods())")
+      .def_property_readonly(
+          "warnings", [](const CompiledSceneHandle& h) { return py::tuple(py::cast(h.compiled->warnings())); },
+          "tuple of the compatibility warnings (str) compiling gave")
+      .def(
+          "describe",
+          [](py::object self) { return py::module_::import("rigiddyn.scene_describe").attr("describe")(self); },
+          "Scene.describe of its scene with its method: bodies, force elements, frame, units, the method's order "
+          "and the compile's verdict (rigiddyn.scene_describe.describe).")
+      .def("__repr__",
+           [](const CompiledSceneHandle& h) {
+             return "CompiledScene(scene=" + scene_repr(h.scene) + ", method='" + method_info(h.method).name + "')";
+           })
+      .def(py::pickle(
+          [](const CompiledSceneHandle& h) { return py::make_tuple(h.scene, method_info(h.method).name); },
+          [](const py::tuple& t) {
+            if (t.size() != 2) py_io::throw_value_error("CompiledScene pickle", "a tuple of 2 items", std::to_string(t.size()) + " items");
+            return compile_handle(py_io::as_instance<Scene>(t[0], "scene", "a Scene"), as_method_name(t[1]), false);
+          }))
+      .def(
+          "__eq__",
+          [](const CompiledSceneHandle& a, py::handle b) -> py::object {
+            if (!py::isinstance<CompiledSceneHandle>(b)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
+            const auto& other = b.cast<const CompiledSceneHandle&>();
+            return py::bool_(a.method == other.method && same_scene(a.scene, other.scene));
+          },
+          py::arg("other"));
+  compiled.attr("__hash__") = py::none();
+
+  py::class_<SceneResult>(m, "SceneResult", scene_result_doc)
+      .def_readonly("t", &SceneResult::t, "(n,) time [s]")
+      .def_readonly("p_W", &SceneResult::p_W, "(n, nb, 3) centre of mass positions in W [m]")
+      .def_readonly("q_WB", &SceneResult::q_WB, "(n, nb, 4) attitudes, (x, y, z, w) unless scalar_first")
+      .def_readonly("v_W", &SceneResult::v_W, "(n, nb, 3) centre of mass velocities in W [m/s]")
+      .def_readonly("w_B", &SceneResult::w_B, "(n, nb, 3) angular velocities, each in its body's B [rad/s]")
+      .def_readonly("kinetic_energy", &SceneResult::kinetic_energy, "(n,) sum over the bodies [J]")
+      .def_readonly("potential_energy", &SceneResult::potential_energy, "(n,) sum of the elements' potentials [J]")
+      .def_readonly("total_energy", &SceneResult::total_energy, "(n,) kinetic + potential [J]")
+      .def_readonly("linear_momentum_W", &SceneResult::linear_momentum_W, "(n, 3) sum of m v_W, in W [kg m/s]")
+      .def_readonly("angular_momentum_W", &SceneResult::angular_momentum_W,
+                    "(n, 3) about W's origin, in W: sum of p_W x m v_W + R_WB I w_B [kg m^2/s]")
+      .def_readonly("work", &SceneResult::work, "(n, ne) each element's work since t0 [J]")
+      .def_readonly("power", &SceneResult::power, "(n, ne) each element's power at the record [W]")
+      .def_readonly("body_names", &SceneResult::body_names, "(nb,) tuple of the bodies' names")
+      .def_readonly("elements", &SceneResult::elements, "(ne,) tuple of the elements' class names")
+      .def_readonly("diverged", &SceneResult::diverged, "True if the run stopped on a non-finite state")
+      .def_readonly("unconverged_steps", &SceneResult::unconverged_steps,
+                    "number of steps whose implicit solve stopped at its iteration cap (0 for explicit methods)")
+      .def_readonly("elapsed_seconds", &SceneResult::elapsed_seconds, "wall time of the C++ stepping loop [s]")
+      .def("__repr__", &scene_result_repr)
+      .def(py::pickle(&scene_result_state, &scene_result_from_state))
+      .def(
+          "to_dataframe",
+          [](py::object self, py::handle scalar_first) {
+            return py::module_::import("rigiddyn.scene_result")
+                .attr("to_dataframe")(self, py_io::as_bool(scalar_first, "scalar_first"));
+          },
+          py::arg("scalar_first") = false,
+          "A pandas.DataFrame of the records (needs pandas): one row per record, one column per scalar with its "
+          "unit (wide format; rigiddyn.scene_result documents the columns): 't [s]', then per body "
+          "'<name>:p_W_x [m]' .. '<name>:q_WB_x' .. '<name>:v_W_x [m/s]' .. '<name>:w_B_x [rad/s]' .., then "
+          "'kinetic_energy [J]', 'potential_energy [J]', 'total_energy [J]', 'linear_momentum_W_x [kg m/s]' .., "
+          "'angular_momentum_W_x [kg m^2/s]' .., then per element i 'work[i] <Class> [J]' and 'power[i] <Class> "
+          "[W]'. scalar_first=True for a result of simulate(..., scalar_first=True).");
+}
+
+}  // namespace rigiddyn::bindings

@@ -1,0 +1,41 @@
+// The seams between the scene bindings (bind_scene.cpp, bind_scene_elements.cpp) and simulate/step of
+// bind_dynamics.cpp, which route a Scene or a CompiledScene here.
+#pragma once
+#include <pybind11/pybind11.h>
+
+#include <cstdint>
+#include <string>
+
+#include "numpy_io.hpp"
+#include "rigiddyn/scene/scene.hpp"
+
+namespace rigiddyn::bindings {
+
+// A force element given from Python as the C++ Element (TypeError naming `name` for anything else), and
+// back (a new Python object holding a copy); the Python class name of an element ("Drag", "PythonForce").
+Element as_element(pybind11::handle obj, const std::string& name);
+pybind11::object element_object(const Element& element);
+std::string element_kind(const Element& element);
+
+// simulate's records of a scene (rigiddyn.SceneResult; its docstring in bind_scene.cpp).
+struct SceneResult {
+  py_io::Array t, p_W, q_WB, v_W, w_B, kinetic_energy, potential_energy, total_energy, linear_momentum_W,
+      angular_momentum_W, work, power;
+  pybind11::tuple body_names, elements;
+  bool diverged;
+  std::int64_t unconverged_steps;
+  double elapsed_seconds;
+};
+
+// True for a Scene or a CompiledScene.
+bool is_scene(pybind11::handle model);
+// rigiddyn.simulate and rigiddyn.step of a Scene or a CompiledScene (their arguments as documented there).
+SceneResult simulate_scene_py(pybind11::handle model, pybind11::handle initial, pybind11::handle dt,
+                                   pybind11::handle steps, pybind11::handle method, pybind11::handle record_every,
+                                   pybind11::handle loads, pybind11::handle gravity, pybind11::handle t0,
+                                   pybind11::handle scalar_first, pybind11::handle progress);
+pybind11::object step_scene_py(pybind11::handle model, pybind11::handle state, pybind11::handle dt,
+                               pybind11::handle method, pybind11::handle loads, pybind11::handle gravity,
+                               pybind11::handle t);
+
+}  // namespace rigiddyn::bindings

@@ -1,0 +1,33 @@
+// What a force element sees of a body, and what it returns (scene_api.md §2). Both are taken at the
+// body's centre of mass G, the origin of its body frame B (docs/conventions.md "Body state").
+#pragma once
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+namespace rigiddyn {
+
+// The kinematics of one body at one instant:
+//   p_W   position of the centre of mass in W [m];
+//   q_WB  unit attitude quaternion, maps B coordinates to W (Hamilton, active);
+//   v_W   velocity of the centre of mass, expressed in W [m/s];
+//   w_B   angular velocity of B relative to W, expressed in B [rad/s].
+// Each body kind as elements see it: particle q_WB = identity, w_B = 0; planar body p_W = (x, y, 0),
+// q_WB = Rz(θ), v_W = (v_x, v_y, 0), w_B = (0, 0, ω).
+struct BodyKinematics {
+  Eigen::Vector3d p_W = Eigen::Vector3d::Zero();
+  Eigen::Quaterniond q_WB = Eigen::Quaterniond::Identity();
+  Eigen::Vector3d v_W = Eigen::Vector3d::Zero();
+  Eigen::Vector3d w_B = Eigen::Vector3d::Zero();
+};
+
+// The wrench on one body, reduced to its centre of mass:
+//   f_W    the resultant force, expressed in W [N];
+//   tau_B  the resultant torque about the centre of mass, expressed in B [N m].
+// Its power on the body is f_W·v_W + tau_B·w_B [W]. A planar body's scene model keeps only f_W's x, y
+// parts and tau_B's z part (the plane takes the rest: the constraint reaction).
+struct BodyWrench {
+  Eigen::Vector3d f_W = Eigen::Vector3d::Zero();
+  Eigen::Vector3d tau_B = Eigen::Vector3d::Zero();
+};
+
+}  // namespace rigiddyn

@@ -1,0 +1,15 @@
+// What a compiled force element depends on and provides (scene_api.md §2): read once when a scene is
+// compiled (method compatibility, which diagnostics to record), never per evaluation.
+#pragma once
+
+namespace rigiddyn {
+
+struct ElementTraits {
+  bool reads_attitude;      // its wrench depends on some body's q_WB
+  bool velocity_dependent;  // its wrench depends on some v_W or w_B (drag, dampers)
+  bool time_dependent;      // its wrench depends on t (schedules, user forces)
+  bool has_potential;       // potential() is its potential energy V with f = −∇_p V, τ = −∂V/∂(rotation)
+  bool has_torque;          // it may produce a non-zero tau_B
+};
+
+}  // namespace rigiddyn

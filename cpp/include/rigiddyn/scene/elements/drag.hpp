@@ -1,0 +1,78 @@
+// Linear and quadratic drag on each listed body: a force at the centre of mass opposing its velocity and,
+// optionally, a torque opposing its rotation (still-fluid model; Stokes' linear and Newton's quadratic law,
+// both coefficients lumped, e.g. c₂ = ½ ρ C_d A):
+//   f_W = −(c₁ + c₂ |v_W|) v_W,   tau_B = −(d₁ + d₂ |w_B|) w_B.
+// Dissipative (power −(c₁ + c₂|v|)|v|² − (d₁ + d₂|ω|)|ω|² ≤ 0), no potential. A particle has w_B = 0
+// and gets no torque.
+#pragma once
+#include "rigiddyn/scene/body.hpp"
+#include "rigiddyn/scene/body_kinematics.hpp"
+#include "rigiddyn/scene/element_bodies.hpp"
+#include "rigiddyn/scene/element_traits.hpp"
+#include "rigiddyn/scene/elements/element_checks.hpp"
+
+#include <Eigen/Core>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace rigiddyn {
+
+// The spec: linear c₁ [N s/m] and quadratic c₂ [N s²/m²] coefficients of the force, angular_linear d₁
+// [N m s] and angular_quadratic d₂ [N m s²] of the torque, all >= 0, on `bodies` (empty: every body).
+struct Drag {
+  double linear = 0.0;
+  double quadratic = 0.0;
+  double angular_linear = 0.0;
+  double angular_quadratic = 0.0;
+  BodyList bodies;
+};
+
+// The compiled term (scene_api.md §2).
+class DragTerm {
+ public:
+  // Throws std::invalid_argument "<name>.<coefficient>: ..." for a negative or non-finite coefficient,
+  // "<name>.bodies[k]: ..." for an index out of range or repeated.
+  DragTerm(const Drag& spec, const std::vector<Body>& bodies, const std::string& name)
+      : c1_(spec.linear), c2_(spec.quadratic), d1_(spec.angular_linear), d2_(spec.angular_quadratic),
+        bodies_(detail::resolve_bodies(spec.bodies, bodies.size(), name)) {
+    detail::require_nonnegative(spec.linear, name + ".linear");
+    detail::require_nonnegative(spec.quadratic, name + ".quadratic");
+    detail::require_nonnegative(spec.angular_linear, name + ".angular_linear");
+    detail::require_nonnegative(spec.angular_quadratic, name + ".angular_quadratic");
+  }
+
+  ElementTraits traits() const {
+    ElementTraits t{};
+    t.reads_attitude = false, t.velocity_dependent = true, t.time_dependent = false;
+    t.has_potential = false, t.has_torque = d1_ > 0.0 || d2_ > 0.0;
+    return t;
+  }
+
+  // Adds f_W and tau_B above to each listed body; returns their power Σ f_W·v_W + tau_B·w_B (<= 0) [W].
+  double add_wrenches(double /*t*/, const std::vector<BodyKinematics>& kinematics, std::vector<BodyWrench>& wrenches) const {
+    double power = 0.0;
+    for (const int b : bodies_) {
+      const Eigen::Vector3d& v = kinematics[b].v_W;
+      const Eigen::Vector3d& w = kinematics[b].w_B;
+      const double v2 = v.squaredNorm(), w2 = w.squaredNorm();
+      const double force_rate = c1_ + c2_ * std::sqrt(v2);   // [N s/m]
+      const double torque_rate = d1_ + d2_ * std::sqrt(w2);  // [N m s]
+      wrenches[b].f_W -= force_rate * v;
+      wrenches[b].tau_B -= torque_rate * w;
+      power -= force_rate * v2 + torque_rate * w2;
+    }
+    return power;
+  }
+
+  double potential(const std::vector<BodyKinematics>& /*kinematics*/) const { return 0.0; }
+
+  const std::vector<int>& bodies() const { return bodies_; }
+
+ private:
+  double c1_, c2_, d1_, d2_;
+  std::vector<int> bodies_;
+};
+
+}  // namespace rigiddyn

@@ -1,0 +1,127 @@
+// Newtonian gravity between the listed bodies (the N-body problem), each a point mass at its centre of
+// mass ("Rigid body kinematics and dynamics" notes, §4.11, Newton's law of gravitation), by the direct
+// sum over the pairs i < j (O(N²)), with optional Plummer softening ε:
+//   d = p_j − p_i,   f_i = G m_i m_j d / (|d|² + ε²)^{3/2} = −f_j,   V = Σ_{i<j} −G m_i m_j / √(|d|² + ε²).
+// Each pair's force is computed once and added to i and subtracted from j, so Newton's third law holds
+// exactly pair by pair in floating point (the total force differs from zero only by the rounding of the
+// per-body sums, so total momentum is conserved to round-off). No torque about
+// the centres of mass at this order. With ε = 0 two bodies that meet get non-finite forces.
+#pragma once
+#include "rigiddyn/scene/body.hpp"
+#include "rigiddyn/scene/body_kinematics.hpp"
+#include "rigiddyn/scene/element_bodies.hpp"
+#include "rigiddyn/scene/element_traits.hpp"
+#include "rigiddyn/scene/elements/element_checks.hpp"
+
+#include <Eigen/Core>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace rigiddyn {
+
+// The spec: gravitational constant G [m³/(kg s²)], softening length [m] (0: exact law), between the
+// `bodies` (empty: every body; fewer than two: no pair, no force).
+struct MutualGravity {
+  double G = 6.67430e-11;
+  double softening = 0.0;
+  BodyList bodies;
+};
+
+// The compiled term (scene_api.md §2): the listed bodies and their masses.
+class MutualGravityTerm {
+ public:
+  // Throws std::invalid_argument "<name>.G: ..." unless G is finite and > 0, "<name>.softening: ..."
+  // unless finite and >= 0, "<name>.bodies[k]: ..." for an index out of range or repeated.
+  MutualGravityTerm(const MutualGravity& spec, const std::vector<Body>& bodies, const std::string& name)
+      : G_(spec.G), softening2_(spec.softening * spec.softening),
+        bodies_(detail::resolve_bodies(spec.bodies, bodies.size(), name)) {
+    require_positive(spec.G, name + ".G");
+    detail::require_nonnegative(spec.softening, name + ".softening");
+    mass_.resize(static_cast<Eigen::Index>(bodies_.size()));
+    for (std::size_t k = 0; k < bodies_.size(); ++k) mass_(k) = mass_of(bodies[bodies_[k]]);
+  }
+
+  static ElementTraits traits() {
+    ElementTraits t{};
+    t.reads_attitude = false, t.velocity_dependent = false, t.time_dependent = false;
+    t.has_potential = true, t.has_torque = false;
+    return t;
+  }
+
+  // f_W += the pair forces on every listed body; returns Σ f_W·v_W [W].
+  // Layout for speed: the positions are gathered into per-thread columns (x, y, z), so that the inner
+  // loop over j > i is whole-array arithmetic that Eigen vectorises (sqrt and division included); the
+  // element's forces collect in columns (f_x, f_y, f_z) and are added to `wrenches` once per body, with the
+  // power Σ f·v. The scratch grows with the largest body count seen and is never freed: no allocation
+  // per evaluation, and two threads evaluating one model do not share it.
+  double add_wrenches(double /*t*/, const std::vector<BodyKinematics>& kinematics, std::vector<BodyWrench>& wrenches) const {
+    const Eigen::Index n = static_cast<Eigen::Index>(bodies_.size());
+    Eigen::ArrayXXd& columns = scratch(n);  // (n x 7): x, y, z, f_x, f_y, f_z, g
+    auto x = columns.col(0), y = columns.col(1), z = columns.col(2);
+    auto f_x = columns.col(3), f_y = columns.col(4), f_z = columns.col(5), g = columns.col(6);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const Eigen::Vector3d& p = kinematics[bodies_[i]].p_W;
+      x(i) = p.x(), y(i) = p.y(), z(i) = p.z();
+    }
+    columns.block(0, 3, n, 3).setZero();  // only this scene's n rows (the scratch may be longer)
+    for (Eigen::Index i = 0; i + 1 < n; ++i) {
+      // the pairs (i, j > i): d = p_j − p_i, g = G m_i m_j/(|d|² + ε²)^{3/2}, f on i = g d = −f on j
+      const Eigen::Index j = i + 1, count = n - j;
+      const auto dx = x.segment(j, count) - x(i);
+      const auto dy = y.segment(j, count) - y(i);
+      const auto dz = z.segment(j, count) - z(i);
+      auto g_j = g.segment(j, count);
+      g_j = dx.square() + dy.square() + dz.square() + softening2_;                  // |d|² + ε²
+      g_j = (G_ * mass_(i)) * mass_.segment(j, count) / (g_j * g_j.sqrt());
+      f_x(i) += (g_j * dx).sum(), f_x.segment(j, count) -= g_j * dx;
+      f_y(i) += (g_j * dy).sum(), f_y.segment(j, count) -= g_j * dy;
+      f_z(i) += (g_j * dz).sum(), f_z.segment(j, count) -= g_j * dz;
+    }
+    double power = 0.0;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const Eigen::Vector3d f(f_x(i), f_y(i), f_z(i));
+      wrenches[bodies_[i]].f_W += f;
+      power += f.dot(kinematics[bodies_[i]].v_W);
+    }
+    return power;
+  }
+
+  // V = Σ_{i<j} −G m_i m_j / √(|p_j − p_i|² + ε²) [J] (the same per-thread columns as add_wrenches)
+  double potential(const std::vector<BodyKinematics>& kinematics) const {
+    const Eigen::Index n = static_cast<Eigen::Index>(bodies_.size());
+    Eigen::ArrayXXd& columns = scratch(n);
+    auto x = columns.col(0), y = columns.col(1), z = columns.col(2), r = columns.col(6);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const Eigen::Vector3d& p = kinematics[bodies_[i]].p_W;
+      x(i) = p.x(), y(i) = p.y(), z(i) = p.z();
+    }
+    double V = 0.0;
+    for (Eigen::Index i = 0; i + 1 < n; ++i) {
+      const Eigen::Index j = i + 1, count = n - j;
+      auto r_j = r.segment(j, count);
+      r_j = ((x.segment(j, count) - x(i)).square() + (y.segment(j, count) - y(i)).square() +
+             (z.segment(j, count) - z(i)).square() + softening2_).sqrt();  // √(|d|² + ε²)
+      V -= G_ * mass_(i) * (mass_.segment(j, count) / r_j).sum();
+    }
+    return V;
+  }
+
+  const std::vector<int>& bodies() const { return bodies_; }
+
+ private:
+  // this thread's scratch columns, at least n rows (grown, never shrunk)
+  static Eigen::ArrayXXd& scratch(Eigen::Index n) {
+    thread_local Eigen::ArrayXXd columns;
+    if (columns.rows() < n) columns.resize(n, 7);
+    return columns;
+  }
+
+  double G_;                   // [m³/(kg s²)]
+  double softening2_;          // ε² [m²]
+  std::vector<int> bodies_;
+  Eigen::ArrayXd mass_;        // [kg], per listed body
+};
+
+}  // namespace rigiddyn

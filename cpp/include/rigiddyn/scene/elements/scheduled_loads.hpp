@@ -1,0 +1,119 @@
+// Applied loads with a time schedule on one body (models/loads.hpp: forces and torques, each in W or
+// in B, each active on [t_start, t_end)), the forces applied at the point point_B of the body (from its
+// centre of mass, in B), which adds the torque r_B × f_B about the centre of mass (Craig, "Rigid Body
+// Dynamics" slides, moment of a force about G). No potential (the loads may do any work).
+//
+// The schedule is piecewise constant: the run loop (simulate_scene) splits every step at the switch
+// times, as simulate does for one body, and sets the loads of the next piece (set_time) between the
+// sub-steps; a derivative evaluation never looks at the time.
+#pragma once
+#include "rigiddyn/models/loads.hpp"
+#include "rigiddyn/scene/body.hpp"
+#include "rigiddyn/scene/body_kinematics.hpp"
+#include "rigiddyn/scene/element_traits.hpp"
+
+#include <Eigen/Core>
+
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace rigiddyn {
+
+// The spec: the schedule `loads` on body `body`, forces applied at point_B [m] (in B, from the centre of
+// mass; zero: through the centre of mass).
+struct ScheduledLoads {
+  int body = 0;
+  std::vector<AppliedLoad> loads;
+  Eigen::Vector3d point_B = Eigen::Vector3d::Zero();
+};
+
+// The compiled term (scene_api.md §2): the schedule and the loads of the current piece.
+class ScheduledLoadsTerm {
+ public:
+  // Throws std::invalid_argument naming "<name>.body", "<name>.point_B", "<name>.loads[i]..." for a body
+  // index out of range, a non-finite point or load (check_loads), and for loads the body's kind cannot
+  // take: a torque or a point off the centre of mass on a particle; an out-of-plane force, a torque
+  // about x or y or a point off the plane on a planar body (the messages of the one-body simulate).
+  ScheduledLoadsTerm(const ScheduledLoads& spec, const std::vector<Body>& bodies, const std::string& name)
+      : body_(spec.body), schedule_(spec.loads), point_B_(spec.point_B) {
+    check_body_index(spec.body, static_cast<int>(bodies.size()), name + ".body");
+    require_finite(spec.point_B, name + ".point_B");
+    check_loads_named(spec.loads, name);
+    check_kind(bodies[spec.body], name);
+    set_time(0.0);
+  }
+
+  ElementTraits traits() const {
+    bool turning = !point_B_.isZero(0.0), torque = !point_B_.isZero(0.0);
+    for (const AppliedLoad& load : schedule_) {
+      const bool body_force = load.frame == Frame::body && !load.force.isZero(0.0);
+      const bool world_torque = load.frame == Frame::world && !load.torque.isZero(0.0);
+      turning = turning || body_force || world_torque;
+      torque = torque || !load.torque.isZero(0.0);
+    }
+    ElementTraits t{};
+    t.reads_attitude = turning, t.velocity_dependent = false, t.time_dependent = has_time_window(schedule_);
+    t.has_potential = false, t.has_torque = torque;
+    return t;
+  }
+
+  // Sets the loads of the piece that contains t [s] (between switch times the loads are constant).
+  void set_time(double t) { loads_ = loads_at(schedule_, t); }
+
+  // f_W = f_W + R f_B, τ_B = τ_B + Rᵀ τ_W + r_B × Rᵀ f_W on the body (R = R_WB of its unit attitude);
+  // returns f_W·v_W + τ_B·ω_B [W].
+  double add_wrenches(double /*t*/, const std::vector<BodyKinematics>& kinematics, std::vector<BodyWrench>& wrenches) const {
+    const BodyKinematics& k = kinematics[body_];
+    const Eigen::Quaterniond q_BW = k.q_WB.conjugate();
+    const Eigen::Vector3d f_W = loads_.f_W + k.q_WB * loads_.f_B;
+    const Eigen::Vector3d tau_B = loads_.tau_B + q_BW * loads_.tau_W + point_B_.cross(q_BW * f_W);
+    wrenches[body_].f_W += f_W;
+    wrenches[body_].tau_B += tau_B;
+    return f_W.dot(k.v_W) + tau_B.dot(k.w_B);
+  }
+
+  double potential(const std::vector<BodyKinematics>& /*kinematics*/) const { return 0.0; }
+
+  int body() const { return body_; }
+  const std::vector<AppliedLoad>& loads() const { return schedule_; }
+  const Eigen::Vector3d& point_B() const { return point_B_; }
+
+ private:
+  // check_loads with the element's name in front of "loads[i]..."
+  static void check_loads_named(const std::vector<AppliedLoad>& loads, const std::string& name) {
+    try {
+      check_loads(loads);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(name + "." + e.what());
+    }
+  }
+
+  void check_kind(const Body& body, const std::string& name) const {
+    if (std::holds_alternative<Particle>(body)) {
+      for (std::size_t i = 0; i < schedule_.size(); ++i) {
+        if (!schedule_[i].torque.isZero(0.0)) {
+          throw_invalid(name + ".loads[" + std::to_string(i) + "].torque", "zero (a particle takes no torque)",
+                        schedule_[i].torque);
+        }
+      }
+      if (!point_B_.isZero(0.0)) throw_invalid(name + ".point_B", "zero (a particle is a point)", point_B_);
+    } else if (std::holds_alternative<PlanarBody>(body)) {
+      for (std::size_t i = 0; i < schedule_.size(); ++i) {
+        const std::string load = name + ".loads[" + std::to_string(i) + "]";
+        if (schedule_[i].force.z() != 0.0) throw_invalid(load + ".force", "a force in the xy plane (z = 0)", schedule_[i].force);
+        if (!schedule_[i].torque.head<2>().isZero(0.0)) {
+          throw_invalid(load + ".torque", "a torque about z only (x = y = 0)", schedule_[i].torque);
+        }
+      }
+      if (point_B_.z() != 0.0) throw_invalid(name + ".point_B", "a point in the body's xy plane (z = 0)", point_B_);
+    }
+  }
+
+  int body_;
+  std::vector<AppliedLoad> schedule_;
+  Eigen::Vector3d point_B_;
+  ComLoads loads_;  // the sum of the loads active in the current piece
+};
+
+}  // namespace rigiddyn

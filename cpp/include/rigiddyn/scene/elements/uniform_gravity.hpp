@@ -1,0 +1,69 @@
+// Uniform gravity: every listed body feels f_W = m g_W at its centre of mass (no torque about it), with
+// the potential V = −m g_W·p_W (Craig, "Rigid Body Dynamics" slides, work of a constant force).
+// A planar body keeps the in-plane part of f (the plane takes g_z: the constraint reaction).
+#pragma once
+#include "rigiddyn/scene/body.hpp"
+#include "rigiddyn/scene/body_kinematics.hpp"
+#include "rigiddyn/scene/element_bodies.hpp"
+#include "rigiddyn/scene/element_traits.hpp"
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace rigiddyn {
+
+// The spec: gravity g_W [m/s²] in W on `bodies` (empty: every body).
+struct UniformGravity {
+  Eigen::Vector3d g_W = Eigen::Vector3d::Zero();
+  BodyList bodies;
+};
+
+// The compiled term (scene_api.md §2): the listed bodies with their masses.
+class UniformGravityTerm {
+ public:
+  // Throws std::invalid_argument "<name>.g_W: ..." for a non-finite g_W and "<name>.bodies[k]: ..." for an
+  // index out of range or repeated.
+  UniformGravityTerm(const UniformGravity& spec, const std::vector<Body>& bodies, const std::string& name)
+      : g_W_(spec.g_W), bodies_(detail::resolve_bodies(spec.bodies, bodies.size(), name)) {
+    require_finite(spec.g_W, name + ".g_W");
+    for (const int b : bodies_) mass_.push_back(mass_of(bodies[b]));
+  }
+
+  static ElementTraits traits() {
+    ElementTraits t{};
+    t.reads_attitude = false, t.velocity_dependent = false, t.time_dependent = false;
+    t.has_potential = true, t.has_torque = false;
+    return t;
+  }
+
+  // f_W += m g_W on each listed body; returns Σ m g_W·v_W [W].
+  double add_wrenches(double /*t*/, const std::vector<BodyKinematics>& kinematics, std::vector<BodyWrench>& wrenches) const {
+    double power = 0.0;
+    for (std::size_t k = 0; k < bodies_.size(); ++k) {
+      const int b = bodies_[k];
+      const Eigen::Vector3d f = mass_[k] * g_W_;
+      wrenches[b].f_W += f;
+      power += f.dot(kinematics[b].v_W);
+    }
+    return power;
+  }
+
+  // V = −Σ m g_W·p_W [J]
+  double potential(const std::vector<BodyKinematics>& kinematics) const {
+    double V = 0.0;
+    for (std::size_t k = 0; k < bodies_.size(); ++k) V -= mass_[k] * g_W_.dot(kinematics[bodies_[k]].p_W);
+    return V;
+  }
+
+  const Eigen::Vector3d& g_W() const { return g_W_; }
+  const std::vector<int>& bodies() const { return bodies_; }
+
+ private:
+  Eigen::Vector3d g_W_;
+  std::vector<int> bodies_;
+  std::vector<double> mass_;  // [kg], per listed body
+};
+
+}  // namespace rigiddyn

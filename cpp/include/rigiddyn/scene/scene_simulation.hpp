@@ -1,0 +1,45 @@
+// What simulate records of a scene (scene_api.md §3) and what step returns.
+#pragma once
+#include "rigiddyn/scene/body.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace rigiddyn {
+
+// Records of a scene run, one row per recorded step, row-major (n = size() records, nb = body_count
+// bodies, ne = element_count elements). Bodies of every kind in the rigid-body layout: a particle has
+// q_WB = identity and w_B = 0, a planar body p_W = (x, y, 0), q_WB = Rz(θ), v_W = (v_x, v_y, 0),
+// w_B = (0, 0, ω).
+struct SceneSimulation {
+  std::int64_t body_count = 0;
+  std::int64_t element_count = 0;
+  std::vector<double> t;                  // (n,) time [s]
+  std::vector<double> p_W;                // (n, nb, 3) centre of mass positions in W [m]
+  std::vector<double> q_WB;               // (n, nb, 4) attitudes (x, y, z, w), as integrated (norm not forced)
+  std::vector<double> v_W;                // (n, nb, 3) centre of mass velocities in W [m/s]
+  std::vector<double> w_B;                // (n, nb, 3) angular velocities in B [rad/s]
+  std::vector<double> kinetic_energy;     // (n,) Σ ½ m v·v + ½ ω·I ω [J]
+  std::vector<double> potential_energy;   // (n,) Σ of the element potentials [J] (0 for those without one)
+  std::vector<double> total_energy;       // (n,) kinetic + potential [J]
+  std::vector<double> linear_momentum_W;  // (n, 3) Σ m v_W [kg m/s]
+  std::vector<double> angular_momentum_W; // (n, 3) about W's origin: Σ p_W × m v_W + R_WB I ω_B [kg m²/s]
+  std::vector<double> work;               // (n, ne) each element's work since t0 [J]
+  std::vector<double> power;              // (n, ne) each element's power at the record [W]
+  bool diverged = false;                  // the state became non-finite; the run stopped there
+  bool interrupted = false;               // options.monitor returned true; the run stopped there
+  std::int64_t unconverged_steps = 0;     // steps whose implicit solve stopped at its iteration cap
+  double elapsed_seconds = 0.0;           // wall time of the stepping loop [s]
+
+  std::size_t size() const { return t.size(); }
+};
+
+// The state of a scene after `step`: the time t [s], each body's state (the kind of its body) and each
+// element's work over the step [J].
+struct SceneState {
+  double t = 0.0;
+  std::vector<BodyState> bodies;
+  std::vector<double> work;
+};
+
+}  // namespace rigiddyn

@@ -1,0 +1,105 @@
+// simulate and step for scenes (scene_api.md §3): the run loop of the one-body simulate
+// (simulate/run_loop.hpp) on a compiled scene's model, recording every body, the energies, the momenta
+// and each element's work and power. Usable from C++ directly; the Python binding releases the GIL
+// around simulate (a FunctionForce takes it back in its calls).
+//
+// Time: y carries t, so every method evaluates time-dependent elements at its own stage times; after
+// each step the loop sets y's t to the grid time t0 + i dt (no accumulated rounding). ScheduledLoads are
+// piecewise constant: a step that crosses one of their switch times is split there (models/loads.hpp).
+#pragma once
+#include "rigiddyn/scene/compile.hpp"
+#include "rigiddyn/scene/custom_force.hpp"
+#include "rigiddyn/scene/scene_model.hpp"
+#include "rigiddyn/scene/scene_simulation.hpp"
+#include "rigiddyn/simulate/run_loop.hpp"
+#include "rigiddyn/simulate/simulate.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace rigiddyn {
+
+// Runs the compiled scene from the body states `initial` (one per body, of its body's kind) at
+// options.t0 for options.steps steps of options.method (which must be the method it was compiled for),
+// recording every options.record_every-th step (and the first and the last). A one-body scene of
+// today's kind (CompiledScene::one_body_path) runs on today's one-body model: the same states and
+// energies bitwise as simulate(body, state, options) with the scene's gravity and loads (its work split
+// between gravity, m g·(p − p0), and the loads, the rest).
+// Throws std::invalid_argument naming the argument for the checks of the one-body simulate (dt, steps,
+// record_every, t0, a recording too large) and: options.loads or options.gravity_W given (a scene
+// declares them as elements), another method, a wrong number of states or a state of another kind than
+// its body ("initial[i]").
+SceneSimulation simulate(const CompiledScene& compiled, const std::vector<BodyState>& initial, const SimulationOptions& options);
+// compile_scene(scene, options.method) then the above (its warnings are dropped: compile to read them).
+SceneSimulation simulate(const Scene& scene, const std::vector<BodyState>& initial, const SimulationOptions& options);
+
+// One step of options.method from `state` at t = options.t0 [s] to t + options.dt (split at the switch
+// times inside it, as simulate), always on the scene's model (SceneModel); returns the states at t + dt
+// and each element's work over the step [J]. Same checks as simulate (options.steps, record_every and
+// monitor are ignored).
+SceneState step(const CompiledScene& compiled, const std::vector<BodyState>& state, const SimulationOptions& options);
+SceneState step(const Scene& scene, const std::vector<BodyState>& state, const SimulationOptions& options);
+
+// simulate with C++ forces compiled into the model (scene/custom_force.hpp): the scene's elements and
+// then each custom force (named "custom_forces[k]" in messages; their work and power columns follow the
+// elements'). Compiles, for the model with these forces, every method's loop in the caller's
+// translation unit.
+template <class... F>
+SceneSimulation simulate(const Scene& scene, const std::vector<BodyState>& initial, const SimulationOptions& options,
+                         const CustomForce<F>&... custom);
+
+// The record hook of the run loop (simulate/run_loop.hpp, found by argument-dependent lookup).
+template <class... Extra>
+void append_state(SceneSimulation& out, double t, const BasicSceneModel<Extra...>& model, const Eigen::VectorXd& y) {
+  model.record(y, t, out);
+}
+
+namespace detail {
+
+// The scene's Pieces policy for run_loop.hpp: switch times from every ScheduledLoads element, the
+// pieces set by the model (set_time), y's t set after each step.
+struct ScenePieces {
+  const std::vector<AppliedLoad>& schedule;
+  Eigen::Index time_index;
+  template <class Model>
+  void set_piece(Model& model, double t) const { model.set_time(t); }
+  void at_time(Eigen::VectorXd& y, double t) const { y[time_index] = t; }
+};
+
+// The checks of simulate/step on the options and the initial states (see simulate above); returns the
+// states with their quaternions normalised.
+std::vector<BodyState> checked_scene_input(const Scene& scene, Method compiled_method, const std::vector<BodyState>& initial,
+                                           const SimulationOptions& options, bool stepping, const char* states_name);
+
+// An empty SceneSimulation with its records reserved (throws std::invalid_argument naming record_every
+// for a recording larger than the memory available).
+SceneSimulation reserved_scene_simulation(std::int64_t steps, std::int64_t record_every, std::size_t bodies,
+                                          std::size_t elements);
+
+// run_loop.hpp's run of options.method on `model` from y.
+template <class Model>
+SceneSimulation run_scene(const Model& model, const Eigen::VectorXd& y, const SimulationOptions& o,
+                          const std::vector<AppliedLoad>& switch_schedule) {
+  SceneSimulation out = reserved_scene_simulation(o.steps, o.record_every, model.body_count(), model.element_count());
+  return visit_method(o.method, [&](auto integrator) {
+    return run<decltype(integrator)>(model, y, o, ScenePieces{switch_schedule, model.time_index()}, std::move(out));
+  });
+}
+
+}  // namespace detail
+
+template <class... F>
+SceneSimulation simulate(const Scene& scene, const std::vector<BodyState>& initial, const SimulationOptions& options,
+                         const CustomForce<F>&... custom) {
+  detail::check_exact(scene, options.method, sizeof...(F));
+  const CompiledScene compiled = compile_scene(scene, options.method);
+  const std::vector<BodyState> states = detail::checked_scene_input(scene, options.method, initial, options, true, "initial");
+  using Model = BasicSceneModel<CustomForceTerm<F>...>;
+  std::vector<typename Model::Term> terms = detail::compile_terms<typename Model::Term>(scene);
+  std::size_t k = 0;
+  (terms.emplace_back(CustomForceTerm<F>(custom, scene.bodies, "custom_forces[" + std::to_string(k++) + "]")), ...);
+  const Model model(scene.bodies, std::move(terms));
+  return detail::run_scene(model, model.coordinates(states, options.t0), options, compiled.switch_schedule());
+}
+
+}  // namespace rigiddyn

@@ -1,0 +1,180 @@
+// The stepping loop shared by every simulate and step (one body: simulate/simulate.hpp; a scene:
+// scene/simulate_scene.hpp), in rigiddyn::detail: compiled per (integrator, model), the runs of plain
+// steps as tight as a hand-written loop, steps that contain a switch time of a piecewise-constant
+// schedule split there (models/loads.hpp "Time discretisation").
+//
+// What differs between a one-body model and a scene is a `Pieces` policy:
+//   const std::vector<AppliedLoad>& schedule   every load whose t_start/t_end are switch times
+//   void set_piece(Model&, double t) const     sets the model's loads of the piece that contains t
+//   void at_time(Coordinates& y, double t) const
+//                                              after a (sub-)step that ends at t [s]: a model that
+//                                              carries t in y sets it to t (no accumulated rounding);
+//                                              a no-op otherwise (compiled away)
+// and the result type, filled by the overloads reserve/append_state found for it (by ADL).
+#pragma once
+#include "rigiddyn/always_inline.hpp"
+#include "rigiddyn/integrators/method.hpp"
+#include "rigiddyn/models/loads.hpp"
+#include "rigiddyn/simulate/simulate.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <type_traits>
+#include <vector>
+
+#if defined(__GNUC__) || defined(__clang__)
+#define RIGIDDYN_NOINLINE __attribute__((noinline))
+#else
+#define RIGIDDYN_NOINLINE
+#endif
+
+namespace rigiddyn::detail {
+
+// The one-body policy (Pieces above): the loads of options.loads, no time in y.
+struct OneBodySchedule {
+  const std::vector<AppliedLoad>& schedule;
+  template <class Model>
+  void set_piece(Model& model, double t) const { model.set_loads(loads_at(schedule, t)); }
+  template <class Coordinates>
+  static void at_time(Coordinates& /*y*/, double /*t*/) {}
+};
+
+// The switch times of the run's schedule on its step grid t_i = t0 + i dt (grid_time): switch k at
+// time[k] falls in step step[k], the step from t_{j-1} to t_j with t_{j-1} <= time[k] < t_j; a switch
+// within on_grid_tolerance of a grid time is taken at that time (it then starts a step). Switches
+// at or after the last grid time change nothing and are left out.
+struct SwitchGrid {
+  std::vector<double> time;        // [s], ascending
+  std::vector<std::int64_t> step;  // in [1, steps]
+};
+
+inline double grid_time(const SimulationOptions& o, std::int64_t i) { return o.t0 + static_cast<double>(i) * o.dt; }
+
+// A few ulps of the grid time t_i (or of dt near t = 0): the rounding of t_i itself, far below any
+// method's error, so that a switch meant to lie on the grid makes no sub-step of round-off length.
+inline double on_grid_tolerance(double t, double dt) {
+  return 64.0 * std::numeric_limits<double>::epsilon() * std::max(std::abs(t), dt);
+}
+
+inline SwitchGrid switch_grid(const SimulationOptions& o, const std::vector<AppliedLoad>& schedule) {
+  SwitchGrid grid;
+  for (const double s : switch_times(schedule, o.t0, grid_time(o, o.steps))) {
+    // the nearest grid index m ((s - t0) / dt <= steps up to rounding)
+    const double x = std::clamp(std::round((s - o.t0) / o.dt), 0.0, static_cast<double>(o.steps));
+    const auto m = static_cast<std::int64_t>(x);
+    const double t_m = grid_time(o, m);
+    const std::int64_t j = (s > t_m || std::abs(s - t_m) <= on_grid_tolerance(t_m, o.dt)) ? m + 1 : m;
+    if (j > o.steps) continue;  // at the last grid time: acts after the run
+    grid.time.push_back(s);
+    grid.step.push_back(j);
+  }
+  return grid;
+}
+
+// One step of Integrator over h [s]; 1 if its implicit solve stopped at the iteration cap, else 0.
+template <class Integrator, class Model>
+RIGIDDYN_ALWAYS_INLINE int advance(const Model& model, typename Model::Coordinates& y, double h) {
+  if constexpr (std::is_same_v<decltype(Integrator::step(model, y, h)), bool>) {
+    return Integrator::step(model, y, h) ? 0 : 1;
+  } else {
+    Integrator::step(model, y, h);
+    return 0;
+  }
+}
+
+// One step of Integrator from t_begin to t_end = t_begin + dt across the switch times [first, last)
+// (inside it, ascending): a sub-step over each piece between them, the loads of the next piece set
+// at each switch; a piece shorter than the on-grid tolerance is skipped (its switch then acts from
+// the start). Returns the number of sub-steps whose implicit solve did not converge. Out of line,
+// so that the loop of plain steps compiles as it would without switch times.
+template <class Integrator, class Model, class Pieces>
+RIGIDDYN_NOINLINE int split_step(Model& model, typename Model::Coordinates& y, const Pieces& pieces, const double* first,
+                                 const double* last, double t_begin, double t_end, double dt) {
+  const double tolerance = on_grid_tolerance(t_end, dt);
+  double t = t_begin;
+  int unconverged = 0;
+  for (const double* s = first; s != last; ++s) {
+    if (*s - t > tolerance) {
+      unconverged += advance<Integrator>(model, y, *s - t);
+      t = *s;
+      pieces.at_time(y, t);
+    }
+    pieces.set_piece(model, *s);
+  }
+  return unconverged + advance<Integrator>(model, y, t == t_begin ? dt : t_end - t);
+}
+
+// The stepping loop, compiled per (model, integrator): records step 0, every record_every-th step
+// and the last one into `out` (reserved by the caller); stops after recording a non-finite state, or
+// when options.monitor (called every monitor_interval_steps steps) returns true. The runs of plain
+// steps between the steps that contain a switch time are as tight as a hand-written loop.
+template <class Integrator, class Model, class Pieces, class Result>
+Result run(Model model, typename Model::Coordinates y, const SimulationOptions& o, const Pieces& pieces, Result out) {
+  const SwitchGrid switches = switch_grid(o, pieces.schedule);
+  pieces.set_piece(model, o.t0);
+  append_state(out, o.t0, model, y);
+  const auto start = std::chrono::steady_clock::now();
+  const double dt = o.dt;
+  const std::int64_t steps = o.steps, record_every = o.record_every;
+  std::int64_t i = 0, until_record = record_every, next_monitor = monitor_interval_steps;
+  std::size_t k = 0;  // the next switch
+  bool stop = false;  // the monitor asked to stop
+  while (!stop && i < steps) {
+    // plain steps up to the next step that contains a switch time, or the next monitor call
+    const std::int64_t split = k < switches.step.size() ? switches.step[k] : steps + 1;
+    const std::int64_t plain_end = std::min({split - 1, steps, next_monitor});
+    while (i < plain_end) {
+      out.unconverged_steps += advance<Integrator>(model, y, dt);
+      ++i;
+      pieces.at_time(y, grid_time(o, i));
+      if (--until_record == 0 || i == steps) {
+        until_record = record_every;
+        append_state(out, grid_time(o, i), model, y);
+        if ((out.diverged = !y.allFinite())) break;
+      }
+    }
+    if (out.diverged) break;
+    if (split <= steps && i == split - 1) {  // step `split` crosses switch times: sub-steps between them
+      const std::size_t first = k;
+      while (k < switches.step.size() && switches.step[k] == split) ++k;
+      out.unconverged_steps += split_step<Integrator>(model, y, pieces, switches.time.data() + first,
+                                                      switches.time.data() + k, grid_time(o, i), grid_time(o, i + 1), dt);
+      ++i;
+      pieces.at_time(y, grid_time(o, i));
+      if (--until_record == 0 || i == steps) {
+        until_record = record_every;
+        append_state(out, grid_time(o, i), model, y);
+        if ((out.diverged = !y.allFinite())) break;
+      }
+    }
+    if (i >= next_monitor) {
+      stop = o.monitor && o.monitor(i);
+      next_monitor = i + monitor_interval_steps;
+    }
+  }
+  out.interrupted = stop;
+  out.elapsed_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+// One step from t = o.t0 to t + o.dt, split at the switch times inside it (as run does).
+template <class Model, class Pieces>
+typename Model::Coordinates one_step(Model model, typename Model::Coordinates y, const SimulationOptions& o,
+                                     const Pieces& pieces) {
+  pieces.set_piece(model, o.t0);
+  const double t_end = o.t0 + o.dt;
+  std::vector<double> switches = switch_times(pieces.schedule, o.t0, t_end);
+  // a switch within the on-grid tolerance of t + dt acts from the next step on (as in run)
+  while (!switches.empty() && t_end - switches.back() <= on_grid_tolerance(t_end, o.dt)) switches.pop_back();
+  visit_method(o.method, [&](auto integrator) {
+    split_step<decltype(integrator)>(model, y, pieces, switches.data(), switches.data() + switches.size(), o.t0, t_end,
+                                     o.dt);
+  });
+  pieces.at_time(y, t_end);
+  return y;
+}
+
+}  // namespace rigiddyn::detail

@@ -1,0 +1,35 @@
+// Written-out quaternion kernels on raw (x, y, z, w) storage, for the integrator models, which keep
+// attitudes inside flat coordinate vectors and read and write them element by element (scalar stores:
+// Eigen's packet copies would reload values just stored one by one, a store-forwarding stall; see
+// models/euler_equations.hpp).
+#pragma once
+#include "rigiddyn/always_inline.hpp"
+#include "rigiddyn/so3/exp_log.hpp"
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+namespace rigiddyn {
+
+// out = q ⊗ exp(θ) [θ in rad, a body-frame rotation vector], q and out stored (x, y, z, w): the Hamilton
+// product written out (q and out may not overlap).
+RIGIDDYN_ALWAYS_INLINE void times_exp(const double* q, const Eigen::Vector3d& theta, double* out) {
+  const double x = q[0], y = q[1], z = q[2], s = q[3];
+  const Eigen::Quaterniond e = rotvec_to_quat(theta);
+  out[0] = s * e.x() + x * e.w() + y * e.z() - z * e.y();
+  out[1] = s * e.y() - x * e.z() + y * e.w() + z * e.x();
+  out[2] = s * e.z() + x * e.y() - y * e.x() + z * e.w();
+  out[3] = s * e.w() - x * e.x() - y * e.y() - z * e.z();
+}
+
+// dq = q̇ = ½ q ⊗ (ω_B, 0) [1/s] for the body-frame angular velocity w_B [rad/s] ("Rigid body kinematics
+// and dynamics" notes; Solà (2017), the local form), q and dq stored (x, y, z, w).
+RIGIDDYN_ALWAYS_INLINE void quat_rate_body(const double* q, const Eigen::Vector3d& w_B, double* dq) {
+  const double x = q[0], y = q[1], z = q[2], s = q[3];
+  dq[0] = 0.5 * (s * w_B.x() + y * w_B.z() - z * w_B.y());
+  dq[1] = 0.5 * (s * w_B.y() + z * w_B.x() - x * w_B.z());
+  dq[2] = 0.5 * (s * w_B.z() + x * w_B.y() - y * w_B.x());
+  dq[3] = -0.5 * (x * w_B.x() + y * w_B.y() + z * w_B.z());
+}
+
+}  // namespace rigiddyn

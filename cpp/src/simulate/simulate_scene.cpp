@@ -1,0 +1,162 @@
+// simulate for scenes (scene/simulate_scene.hpp): the generic model's runs (one per method) and the
+// one-body path on today's simulate. step is in step_scene.cpp (its own instantiations, built in parallel).
+#include "rigiddyn/scene/simulate_scene.hpp"
+
+#include "append_record.hpp"
+
+#include "rigiddyn/check.hpp"
+
+#include <cmath>
+#include <optional>
+#include <string>
+#include <type_traits>
+#include <variant>
+
+namespace rigiddyn {
+
+namespace detail {
+
+namespace {
+
+const char* state_type_name(std::size_t kind) {
+  static const char* const names[] = {"ParticleState", "PlanarBodyState", "RigidBodyState"};
+  return names[kind];
+}
+
+}  // namespace
+
+std::vector<BodyState> checked_scene_input(const Scene& scene, Method compiled_method, const std::vector<BodyState>& initial,
+                                           const SimulationOptions& o, bool stepping, const char* states_name) {
+  check_options(o, stepping);
+  if (!o.loads.empty()) {
+    throw std::invalid_argument("loads: expected none in the options of a scene (declare a ScheduledLoads element), got " +
+                                std::to_string(o.loads.size()) + " loads");
+  }
+  if (!o.gravity_W.isZero(0.0)) {
+    throw_invalid("gravity", "zero in the options of a scene (declare a UniformGravity element)", o.gravity_W);
+  }
+  if (o.method != compiled_method) {
+    throw std::invalid_argument("method: expected the method the scene was compiled for ('" +
+                                method_info(compiled_method).name + "'), got '" + method_info(o.method).name + "'");
+  }
+  const std::string name = states_name;
+  if (initial.size() != scene.bodies.size()) {
+    throw std::invalid_argument(name + ": expected " + std::to_string(scene.bodies.size()) +
+                                " body states (one per body), got " + std::to_string(initial.size()));
+  }
+  std::vector<BodyState> out;
+  out.reserve(initial.size());
+  for (std::size_t i = 0; i < initial.size(); ++i) {
+    const std::string item = name + "[" + std::to_string(i) + "]";
+    if (initial[i].index() != scene.bodies[i].index()) {
+      throw std::invalid_argument(item + ": expected a " + state_type_name(scene.bodies[i].index()) + " (body " +
+                                  std::to_string(i) + " '" + body_name(scene, i) + "' is a " + kind_name(scene.bodies[i]) +
+                                  "), got a " + state_type_name(initial[i].index()));
+    }
+    out.push_back(std::visit([&](const auto& s) -> BodyState { return checked_state(s, item); }, initial[i]));
+  }
+  return out;
+}
+
+SceneSimulation reserved_scene_simulation(std::int64_t steps, std::int64_t record_every, std::size_t bodies,
+                                          std::size_t elements) {
+  const double records = std::floor(static_cast<double>(steps) / static_cast<double>(record_every)) + 2.0;
+  // per record: t, 13 per body, 3 energies, 6 momenta, 2 per element
+  const double per_record = 10.0 + 13.0 * static_cast<double>(bodies) + 2.0 * static_cast<double>(elements);
+  check_recording_fits(records * per_record * sizeof(double), steps, record_every);
+  SceneSimulation out;
+  out.body_count = static_cast<std::int64_t>(bodies);
+  out.element_count = static_cast<std::int64_t>(elements);
+  const auto n = static_cast<std::size_t>(records);
+  for (auto* v : {&out.t, &out.kinetic_energy, &out.potential_energy, &out.total_energy}) v->reserve(n);
+  for (auto* v : {&out.linear_momentum_W, &out.angular_momentum_W}) v->reserve(3 * n);
+  for (auto* v : {&out.p_W, &out.v_W, &out.w_B}) v->reserve(3 * bodies * n);
+  out.q_WB.reserve(4 * bodies * n);
+  for (auto* v : {&out.work, &out.power}) v->reserve(elements * n);
+  return out;
+}
+
+}  // namespace detail
+
+namespace {
+
+// Today's simulate of the one body with the plan's gravity and loads.
+Trajectory one_body_trajectory(const Body& body, const BodyState& initial, const OneBodyPlan& plan, const SimulationOptions& o) {
+  SimulationOptions one = o;
+  one.gravity_W = plan.gravity_W;
+  one.loads = plan.loads;
+  return std::visit(
+      [&](const auto& b) -> Trajectory {
+        using B = std::decay_t<decltype(b)>;
+        using State = std::conditional_t<std::is_same_v<B, Particle>, ParticleState,
+                                         std::conditional_t<std::is_same_v<B, PlanarBody>, PlanarBodyState, RigidBodyState>>;
+        return simulate(b, std::get<State>(initial), one);
+      },
+      body);
+}
+
+// The one-body path's records as a SceneSimulation: the states and energies as today's simulate
+// recorded them; the potential, the momenta and each element's power from the scene's terms at each
+// record; the work of gravity −ΔV (exact for a uniform field), the loads' the rest of the integrated work.
+SceneSimulation one_body_simulation(const CompiledScene& compiled, const std::vector<BodyState>& initial,
+                                    const SimulationOptions& o) {
+  const Body& body = compiled.scene().bodies[0];
+  const OneBodyPlan& plan = compiled.one_body_plan();
+  const Trajectory tr = one_body_trajectory(body, initial[0], plan, o);
+  const std::size_t n = tr.size(), ne = compiled.scene().elements.size();
+  SceneSimulation out = detail::reserved_scene_simulation(o.steps, o.record_every, 1, ne);
+  out.t = tr.t, out.p_W = tr.p_W, out.q_WB = tr.q_WB, out.v_W = tr.v_W, out.w_B = tr.w_B;
+  out.kinetic_energy = tr.kinetic_energy, out.total_energy = tr.total_energy;
+  out.diverged = tr.diverged, out.interrupted = tr.interrupted, out.unconverged_steps = tr.unconverged_steps;
+  out.elapsed_seconds = tr.elapsed_seconds;
+  const double m = mass_of(body);
+  const Eigen::Matrix3d I = inertia_com_of(body);
+  const auto& terms = compiled.model().terms();
+  const UniformGravityTerm* gravity = plan.gravity_element >= 0 ? &std::get<UniformGravityTerm>(terms[plan.gravity_element]) : nullptr;
+  std::optional<ScheduledLoadsTerm> loads;
+  if (plan.loads_element >= 0) loads = std::get<ScheduledLoadsTerm>(terms[plan.loads_element]);
+  std::vector<BodyKinematics> k(1);
+  std::vector<BodyWrench> w(1);
+  double V0 = 0.0;
+  for (std::size_t r = 0; r < n; ++r) {
+    k[0].p_W = Eigen::Vector3d(&tr.p_W[3 * r]);
+    k[0].q_WB.coeffs() = Eigen::Vector4d(&tr.q_WB[4 * r]).normalized();
+    k[0].v_W = Eigen::Vector3d(&tr.v_W[3 * r]);
+    k[0].w_B = Eigen::Vector3d(&tr.w_B[3 * r]);
+    const double V = gravity ? gravity->potential(k) : 0.0;
+    if (r == 0) V0 = V;
+    out.potential_energy.push_back(V);
+    const Eigen::Vector3d L = m * k[0].v_W, H = k[0].p_W.cross(L) + k[0].q_WB * (I * k[0].w_B);
+    out.linear_momentum_W.insert(out.linear_momentum_W.end(), L.data(), L.data() + 3);
+    out.angular_momentum_W.insert(out.angular_momentum_W.end(), H.data(), H.data() + 3);
+    double gravity_power = 0.0, loads_power = 0.0;
+    if (gravity) gravity_power = gravity->add_wrenches(tr.t[r], k, w);
+    if (loads) {
+      loads->set_time(tr.t[r]);
+      loads_power = loads->add_wrenches(tr.t[r], k, w);
+    }
+    const double gravity_work = V0 - V, loads_work = gravity ? tr.work[r] - gravity_work : tr.work[r];
+    for (std::size_t e = 0; e < ne; ++e) {
+      const bool is_gravity = static_cast<int>(e) == plan.gravity_element;
+      out.work.push_back(is_gravity ? gravity_work : loads_work);
+      out.power.push_back(is_gravity ? gravity_power : loads_power);
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+SceneSimulation simulate(const CompiledScene& compiled, const std::vector<BodyState>& initial, const SimulationOptions& o) {
+  const std::vector<BodyState> states =
+      detail::checked_scene_input(compiled.scene(), compiled.method(), initial, o, true, "initial");
+  if (compiled.one_body_path()) return one_body_simulation(compiled, states, o);
+  const SceneModel& model = compiled.model();
+  return detail::run_scene(model, model.coordinates(states, o.t0), o, compiled.switch_schedule());
+}
+
+SceneSimulation simulate(const Scene& scene, const std::vector<BodyState>& initial, const SimulationOptions& options) {
+  return simulate(compile_scene(scene, options.method), initial, options);
+}
+
+}  // namespace rigiddyn

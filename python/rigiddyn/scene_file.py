@@ -1,0 +1,738 @@
+"""TOML scene files: bodies, force elements (bodies named), initial states and run options, with units.
+
+``load_scene(path_or_text)`` returns ``(scene, initial, run)``: a rigiddyn.Scene, the list of initial
+states (ParticleState, PlanarBodyState or RigidBodyState, one per body, in file order) and a RunOptions;
+``load_scene("kepler")`` reads a shipped scene (``example_scenes()``). ``scene_to_toml(scene, initial,
+run)`` writes the canonical file (SI, radians, q_WB, every field explicit) that loads back to the same
+scene, states and options.
+
+Every number may carry a unit as a string, parsed with pint (rigiddyn.units): ``"2 slug"``, ``"3 ft"``,
+``"30 deg"``, ``"1500 rpm"``, ``"398600.4418 km^3/s^2"``; a plain number is SI in the unit shown
+below. A vector is ``[x, y, z]`` (each entry may carry a unit) or ``{value = [x, y, z], unit = "km"}``.
+Every key the format knows (alternatives commented)::
+
+    name = "two-body Kepler orbit"      # optional (default: the file name)
+    description = "free text"           # optional
+
+    [run]                               # optional; every key optional
+    method = "rk4"                      # default "rk4"; one of rigiddyn.methods()
+    dt = "10 s"                         # [s] > 0 (no default: simulate needs it)
+    duration = "2 h"                    # [s] > 0 (no default: simulate needs it)
+    record_every = 1                    # integer >= 1 (default 1)
+
+    [[body]]                            # one table per body, in index order
+    name = "sat"                        # optional, unique (default "body<i>"); forces refer to it
+    kind = "rigid"                      # "particle" | "planar" | "rigid"
+    mass = "2 slug"                     # [kg] > 0
+    inertia = [1, 2, 3]                 # rigid: principal moments or a 3x3 [[..], [..], [..]] [kg m^2]
+                                        # about the centre of mass in B; planar: I_zz [kg m^2]
+    inertia_check = "physical"          # rigid only: "physical" (default) | "allow_unrealizable"
+    p_W = [7000, 0, 0]                  # [m] in W (planar: [x, y]); default 0
+    v_W = [0, 7.5, 0]                   # [m/s] in W (planar: [vx, vy]); default 0
+    w_B = {value = [0, 0, 3000], unit = "rpm"}   # rigid: [rad/s] in B; default 0
+    q_WB = [0, 0, 0, 1]                 # rigid: attitude B to W, (x, y, z, w); or one of (as in
+    # scalar_first = true               # problem files, rigiddyn.problem; angles may carry units):
+    # euler = {seq = "ZYX", angles = ["30 deg", 0, 0]}
+    # rotvec = [0, 0, 0.5]              # angle * axis [rad]
+    # axis_angle = {axis = [0, 0, 1], angle = "30 deg"}
+    # theta = "30 deg"                  # planar: angle about z [rad]; default 0
+    # omega = "60 rpm"                  # planar: rate about z [rad/s]; default 0
+
+    [[force]]                           # one table per force element; `type` picks it
+    type = "uniform_gravity"            # g_W [m/s^2] (default [0, 0, -9.81]), bodies
+    # type = "point_mass_gravity"       # gm [m^3/s^2], p_W [m] (default 0), softening [m] (0), bodies
+    # type = "mutual_gravity"           # G [m^3/(kg s^2)] (default 6.67430e-11), softening [m] (0), bodies
+    # type = "gravity_gradient"         # gm [m^3/s^2], p_W [m] (default 0), bodies
+    # type = "spring_damper"            # body_a (a name), point_a_B [m] in a's B (0), body_b (a name;
+    #                                   # absent: point_b is a world anchor in W), point_b [m] (0),
+    #                                   # stiffness [N/m], rest_length [m] (0), damping [N s/m] (0)
+    # type = "drag"                     # linear [N s/m], quadratic [N s^2/m^2], angular_linear
+    #                                   # [N m s/rad], angular_quadratic [N m s^2/rad^2] (each 0), bodies
+    # type = "scheduled_loads"          # body (a name), point_B [m] in B (0), and its loads:
+    # [[force.loads]]                   # force [N], torque [N m] (0), frame "world" | "body",
+    #                                   # t_start, t_end [s] (default -inf, +inf), as in problem files
+    bodies = ["sat", "boom"]            # names of the bodies it acts on; absent: every body
+
+    [[cluster]]                         # generated particles, after the [[body]] tables, with their own
+    model = "plummer"                   # MutualGravity (after the [[force]] elements); model: "plummer"
+    count = 1000                        # integer >= 2 particles of mass total_mass / count
+    total_mass = 1                      # [kg] > 0
+    scale_radius = 0.5890486225480862   # Plummer scale radius a [m] > 0 (3 pi / 16: E = -1/4 with G = M = 1)
+    G = 1                               # [m^3/(kg s^2)] > 0 (default 6.67430e-11), of the sampling and the gravity
+    softening = 0.01                    # [m] >= 0 (default 0) of the MutualGravity
+    seed = 1                            # integer >= 0: numpy.random.default_rng(seed) draws the sample
+    name_prefix = "star"                # bodies "star0", "star1", ... (default "cluster<k>_")
+
+A [[cluster]] is a Plummer sphere in virial equilibrium (scene_file.plummer_sphere: Aarseth, Henon
+& Wielen 1974) with its centre of mass at rest at W's origin; its bodies may be named in [[force]] tables.
+scene_to_toml writes the generated bodies out as [[body]] tables and the gravity as a [[force]] (a Scene
+does not remember its generator); that file reads back to the same scene and states.
+
+A field without a default is required. Every error is a ValueError "<field>: expected ..., got ..."
+naming the field by its path (``body[2].inertia: expected kg m^2, got '3 kg m' ([mass] * [length])``,
+``force[1].body_a``); an unknown key is one too, with the closest known key.
+"""
+
+from __future__ import annotations
+
+import math
+import sys
+import warnings
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from . import _core
+from .problem import _closest, _orientation
+from .units import quantity, vector_quantity
+
+if sys.version_info >= (3, 11):
+    import tomllib
+else:  # pragma: no cover - exercised on Python 3.9/3.10 only
+    import tomli as tomllib
+
+__all__ = ["FORCE_TYPES", "RunOptions", "SceneFile", "example_scenes", "load_scene", "parse_scene",
+           "plummer_sphere", "read_scene", "scene_path", "scene_to_toml"]
+
+_SCENES_DIR = Path(__file__).resolve().parent / "scenes"
+_ATTITUDES = ("q_WB", "euler", "rotvec", "axis_angle", "scalar_first")
+_BODY_KEYS = {
+    "particle": frozenset({"name", "kind", "mass", "p_W", "v_W"}),
+    "planar": frozenset({"name", "kind", "mass", "inertia", "p_W", "v_W", "theta", "omega"}),
+    "rigid": frozenset({"name", "kind", "mass", "inertia", "inertia_check", "p_W", "v_W", "w_B", *_ATTITUDES}),
+}
+_TOP_KEYS = frozenset({"name", "description", "run", "body", "force", "cluster"})
+_CLUSTER_KEYS = frozenset({"model", "count", "total_mass", "scale_radius", "G", "softening", "seed", "name_prefix"})
+_RUN_KEYS = frozenset({"method", "dt", "duration", "record_every"})
+_LOAD_KEYS = frozenset({"force", "torque", "frame", "t_start", "t_end"})
+_REQUIRED = object()  # a field default: the field must be given
+# | |q| - 1 | up to this: q_WB is a unit quaternion to round-off (4 ulp of 1), taken as written; dividing
+# it by its norm again would move its last bits, so a written canonical file would not read back exactly
+_UNIT_NORM = 4 * np.finfo(np.float64).eps
+
+
+@dataclass(frozen=True)
+class _Field:
+    """A force field: how it is read ("scalar", "vector", "bodies", "body", "optional_body", "loads"),
+    its SI unit (a pint expression) and its default (_REQUIRED, or a value in SI)."""
+
+    kind: str
+    unit: str = "1"
+    default: Any = _REQUIRED
+
+
+_BODIES = _Field("bodies", default=None)
+# force type -> (its class in rigiddyn, its fields in the order of the class's constructor)
+FORCE_TYPES: dict[str, tuple[str, dict[str, _Field]]] = {
+    "uniform_gravity": ("UniformGravity", {"g_W": _Field("vector", "m/s^2", (0.0, 0.0, -9.81)), "bodies": _BODIES}),
+    "point_mass_gravity": ("PointMassGravity", {
+        "gm": _Field("scalar", "m^3/s^2"), "p_W": _Field("vector", "m", (0.0, 0.0, 0.0)),
+        "softening": _Field("scalar", "m", 0.0), "bodies": _BODIES}),
+    "mutual_gravity": ("MutualGravity", {
+        "G": _Field("scalar", "m^3/(kg*s^2)", 6.67430e-11), "softening": _Field("scalar", "m", 0.0),
+        "bodies": _BODIES}),
+    "gravity_gradient": ("GravityGradient", {
+        "gm": _Field("scalar", "m^3/s^2"), "p_W": _Field("vector", "m", (0.0, 0.0, 0.0)), "bodies": _BODIES}),
+    "spring_damper": ("SpringDamper", {
+        "body_a": _Field("body"), "point_a_B": _Field("vector", "m", (0.0, 0.0, 0.0)),
+        "body_b": _Field("optional_body", default=None), "point_b": _Field("vector", "m", (0.0, 0.0, 0.0)),
+        "stiffness": _Field("scalar", "N/m"), "rest_length": _Field("scalar", "m", 0.0),
+        "damping": _Field("scalar", "N*s/m", 0.0)}),
+    "drag": ("Drag", {
+        "linear": _Field("scalar", "N*s/m", 0.0), "quadratic": _Field("scalar", "N*s^2/m^2", 0.0),
+        "angular_linear": _Field("scalar", "N*m*s/rad", 0.0),
+        "angular_quadratic": _Field("scalar", "N*m*s^2/rad^2", 0.0), "bodies": _BODIES}),
+    "scheduled_loads": ("ScheduledLoads", {
+        "body": _Field("body"), "loads": _Field("loads", default=()),
+        "point_B": _Field("vector", "m", (0.0, 0.0, 0.0))}),
+}
+_TYPE_OF_CLASS = {cls: name for name, (cls, _) in FORCE_TYPES.items()}
+
+
+@dataclass(frozen=True)
+class RunOptions:
+    """A scene file's [run]: method (a name of rigiddyn.methods()), dt [s] and duration [s] (None when
+    the file gives none), record_every (record every k-th step)."""
+
+    method: str = "rk4"
+    dt: float | None = None
+    duration: float | None = None
+    record_every: int = 1
+
+    @property
+    def steps(self) -> int | None:
+        """round(duration / dt) (at least 1), or None without both."""
+        if self.dt is None or self.duration is None:
+            return None
+        return max(1, round(self.duration / self.dt))
+
+
+@dataclass(frozen=True)
+class SceneFile:
+    """A read scene file: the scene, its initial states (one per body), run options, name, description."""
+
+    scene: Any
+    initial: list[Any]
+    run: RunOptions
+    name: str
+    description: str = ""
+
+
+# ------------------------------------------------------------------------------------------ reading
+
+def _fail(name: str, expected: str, got: Any) -> ValueError:
+    return ValueError(f"{name}: expected {expected}, got {got!r}")
+
+
+def _check_keys(table: Any, name: str, known: frozenset[str], where: str) -> Mapping[str, Any]:
+    """`table` checked to be a table whose keys are all in `known` (else the first unknown is named,
+    with the closest known key)."""
+    if not isinstance(table, Mapping):
+        raise _fail(name, f"a table {where}", table)
+    unknown = sorted(set(table) - known, key=str)
+    if unknown:
+        close = _closest(str(unknown[0]), known)
+        hint = f"; did you mean {close!r}?" if close else ""
+        raise ValueError(f"{name}.{unknown[0]}: expected a key of {where}{hint} (one of: {', '.join(sorted(known))}), "
+                         "got an unknown key")
+    return table
+
+
+def _required(table: Mapping[str, Any], key: str, name: str, expected: str) -> Any:
+    if key not in table:
+        raise _fail(f"{name}.{key}", expected, "nothing")
+    return table[key]
+
+
+def _string(value: Any, name: str, expected: str = "a string") -> str:
+    if not isinstance(value, str):
+        raise _fail(name, expected, value)
+    return value
+
+
+def _core_call(make: Callable[..., Any], name: str, *args: Any, keys: Mapping[str, str] | None = None,
+               **kwargs: Any) -> Any:
+    """make(*args, **kwargs), its "<arg>: expected ..." errors re-addressed to "<name>.<key>", key the
+    file's key of the argument (keys[arg], default arg itself)."""
+    try:
+        return make(*args, **kwargs)
+    except (ValueError, TypeError) as e:
+        arg, sep, rest = str(e).partition(": ")
+        text = f"{name}.{(keys or {}).get(arg, arg)}: {rest}" if sep and " " not in arg else f"{name}: {e}"
+        raise ValueError(text) from None
+
+
+def _readdressed(function: Callable[[Mapping[str, Any]], Any], table: Mapping[str, Any], name: str) -> Any:
+    """function(table) of rigiddyn.problem (its messages name "initial.<key>"), its errors and
+    warnings naming "<name>.<key>" instead."""
+    def readdress(text: str) -> str:
+        return text.replace("initial.", f"{name}.").replace("[initial]", f"[{name}]").replace("initial:", f"{name}:")
+
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        try:
+            result = function(table)
+        except ValueError as e:
+            raise ValueError(readdress(str(e))) from None
+    for w in caught:
+        warnings.warn(readdress(str(w.message)), w.category, stacklevel=4)
+    return result
+
+
+def _angles_in_radians(table: Mapping[str, Any], name: str) -> dict[str, Any]:
+    """The attitude keys of a [[body]] with every angle that carries a unit ("30 deg") converted to
+    radians, for rigiddyn.problem's parser (which takes numbers and a `degrees` flag)."""
+    out = {k: table[k] for k in _ATTITUDES if k in table}
+
+    def has_unit(value: Any) -> bool:
+        return isinstance(value, str) or (isinstance(value, list) and any(isinstance(v, str) for v in value))
+
+    for key, angle_key in (("euler", "angles"), ("axis_angle", "angle"), ("rotvec", "value")):
+        sub = out.get(key)
+        if isinstance(sub, Mapping) and has_unit(sub.get(angle_key)):
+            if sub.get("degrees", False) is True:
+                raise _fail(f"{name}.{key}.degrees", "no degrees flag beside angles with units", True)
+            value = sub[angle_key]
+            field = f"{name}.{key}.{angle_key}"
+            converted = (quantity(value, field, "rad") if isinstance(value, str)
+                         else list(vector_quantity(value, field, "rad", len(value))))
+            out[key] = {**{k: v for k, v in sub.items() if k != "degrees"}, angle_key: converted}
+    if has_unit(out.get("rotvec")):
+        out["rotvec"] = list(vector_quantity(out["rotvec"], f"{name}.rotvec", "rad"))
+    return out
+
+
+def _inertia(value: Any, name: str) -> np.ndarray:
+    """3 principal moments or a 3x3 matrix [kg m^2] (entries may carry units) as a 3x3 array."""
+    unit = "kg*m^2"
+    if isinstance(value, list) and len(value) == 3 and all(isinstance(row, list) for row in value):
+        return np.array([vector_quantity(row, f"{name}[{i}]", unit) for i, row in enumerate(value)])
+    if isinstance(value, list) and len(value) == 3:
+        return np.diag(vector_quantity(value, name, unit))
+    raise _fail(name, "3 principal moments [I1, I2, I3] or a 3x3 matrix [kg m^2]", value)
+
+
+def _body(table: Any, i: int) -> tuple[str, Any, Any]:
+    """(name, body, initial state) of the [[body]] table number i."""
+    name = f"body[{i}]"
+    if not isinstance(table, Mapping):
+        raise _fail(name, "a table [[body]]", table)
+    kind = _string(_required(table, "kind", name, "one of 'particle', 'planar', 'rigid'"), f"{name}.kind",
+                   "one of 'particle', 'planar', 'rigid'")
+    if kind not in _BODY_KEYS:
+        raise _fail(f"{name}.kind", "one of 'particle', 'planar', 'rigid'", kind)
+    _check_keys(table, name, _BODY_KEYS[kind], f"a [[body]] of kind {kind!r}")
+    body_name = _string(table.get("name", f"body{i}"), f"{name}.name")
+    mass = quantity(_required(table, "mass", name, "a mass [kg] > 0"), f"{name}.mass", "kg", positive=True)
+    n = 2 if kind == "planar" else 3
+    p_W = vector_quantity(table.get("p_W", [0.0] * n), f"{name}.p_W", "m", n)
+    v_W = vector_quantity(table.get("v_W", [0.0] * n), f"{name}.v_W", "m/s", n)
+    if kind == "particle":
+        return body_name, _core_call(_core.Particle, name, mass), _core_call(_core.ParticleState, name, p_W, v_W)
+    inertia_value = _required(table, "inertia", name, "I_zz [kg m^2]" if kind == "planar" else
+                              "3 principal moments or a 3x3 matrix [kg m^2]")
+    if kind == "planar":
+        inertia_zz = quantity(inertia_value, f"{name}.inertia", "kg*m^2", positive=True)
+        theta = quantity(table.get("theta", 0.0), f"{name}.theta", "rad")
+        omega = quantity(table.get("omega", 0.0), f"{name}.omega", "rad/s")
+        return (body_name, _core_call(_core.PlanarBody, name, mass, inertia_zz, keys={"inertia_zz": "inertia"}),
+                _core_call(_core.PlanarBodyState, name, p_W, theta, v_W, omega))
+    inertia = _inertia(inertia_value, f"{name}.inertia")
+    check = table.get("inertia_check", "physical")
+    if not isinstance(check, str) or check not in _core.InertiaCheck.__members__:
+        raise _fail(f"{name}.inertia_check", " or ".join(map(repr, _core.InertiaCheck.__members__)), check)
+    body = _core_call(_core.RigidBody, name, mass, inertia, check=_core.InertiaCheck.__members__[check],
+                      keys={"inertia_com": "inertia"})
+    w_B = vector_quantity(table.get("w_B", [0.0, 0.0, 0.0]), f"{name}.w_B", "rad/s")
+    q_WB = _readdressed(_orientation, _angles_in_radians(table, name), name)
+    if "q_WB" in table and not table.get("scalar_first", False):
+        written = np.asarray(table["q_WB"], dtype=np.float64)  # numbers: _orientation checked them
+        if abs(np.linalg.norm(written) - 1.0) <= _UNIT_NORM:
+            q_WB = written  # unit to round-off already: kept bit for bit
+    state = _core_call(_core.RigidBodyState, name, p_W, q_WB if q_WB is not None else (0.0, 0.0, 0.0, 1.0), v_W, w_B)
+    return body_name, body, state
+
+
+def _body_ref(value: Any, name: str, names: Sequence[str]) -> int:
+    """The index of the body named `value`."""
+    if not isinstance(value, str) or value not in names:
+        close = _closest(value, names) if isinstance(value, str) else None
+        hint = f" (did you mean {close!r}?)" if close else ""
+        raise _fail(name, "the name of a [[body]]: one of " + ", ".join(map(repr, names)) + hint, value)
+    return names.index(value)
+
+
+def _loads(value: Any, name: str) -> list[Any]:
+    """[[force.loads]]: a list of AppliedLoad."""
+    if not isinstance(value, list):
+        raise _fail(name, "an array of tables [[force.loads]]", value)
+    loads = []
+    for j, item in enumerate(value):
+        field = f"{name}[{j}]"
+        table = _check_keys(item, field, _LOAD_KEYS, "[[force.loads]]")
+        frame = _string(table.get("frame", "world"), f"{field}.frame", "'world' or 'body'")
+        kwargs: dict[str, Any] = {"force": vector_quantity(table.get("force", [0.0] * 3), f"{field}.force", "N"),
+                  "torque": vector_quantity(table.get("torque", [0.0] * 3), f"{field}.torque", "N*m"),
+                  "frame": frame,
+                  "t_start": quantity(table.get("t_start", -math.inf), f"{field}.t_start", "s") if "t_start" in table
+                  else -math.inf,
+                  "t_end": quantity(table.get("t_end", math.inf), f"{field}.t_end", "s") if "t_end" in table
+                  else math.inf}
+        loads.append(_core_call(_core.AppliedLoad, field, **kwargs))
+    return loads
+
+
+def _force(table: Any, i: int, names: Sequence[str]) -> Any:
+    """The force element of the [[force]] table number i (bodies resolved by name in `names`)."""
+    name = f"force[{i}]"
+    if not isinstance(table, Mapping):
+        raise _fail(name, "a table [[force]]", table)
+    types = ", ".join(map(repr, FORCE_TYPES))
+    kind = _required(table, "type", name, f"one of {types}")
+    if not isinstance(kind, str) or kind not in FORCE_TYPES:
+        close = _closest(kind, FORCE_TYPES) if isinstance(kind, str) else None
+        raise _fail(f"{name}.type", f"one of {types}" + (f" (did you mean {close!r}?)" if close else ""), kind)
+    cls, fields = FORCE_TYPES[kind]
+    _check_keys(table, name, frozenset({"type", *fields}), f"a [[force]] of type {kind!r}")
+    kwargs: dict[str, Any] = {}
+    for key, f in fields.items():
+        field = f"{name}.{key}"
+        if key not in table:
+            if f.default is _REQUIRED:
+                raise _fail(field, f"a value [{f.unit}]" if f.kind in ("scalar", "vector") else "a value", "nothing")
+            kwargs[key] = f.default
+            continue
+        value = table[key]
+        if f.kind == "scalar":
+            kwargs[key] = quantity(value, field, f.unit)
+        elif f.kind == "vector":
+            kwargs[key] = vector_quantity(value, field, f.unit)
+        elif f.kind in ("body", "optional_body"):
+            kwargs[key] = _body_ref(value, field, names)
+        elif f.kind == "bodies":
+            if not isinstance(value, list) or not value:
+                raise _fail(field, "a non-empty array of body names (absent: every body)", value)
+            kwargs[key] = [_body_ref(v, f"{field}[{j}]", names) for j, v in enumerate(value)]
+        else:
+            kwargs[key] = _loads(value, field)
+    return _core_call(getattr(_core, cls), name, **kwargs)
+
+
+def _run(value: Any) -> RunOptions:
+    table = _check_keys(value, "run", _RUN_KEYS, "[run]")
+    method = _string(table.get("method", "rk4"), "run.method", "a method name")
+    names = [m["name"] for m in _core.methods()]
+    if method not in names:
+        raise _fail("run.method", "one of " + ", ".join(names), method)
+    dt = quantity(table["dt"], "run.dt", "s", positive=True) if "dt" in table else None
+    duration = quantity(table["duration"], "run.duration", "s", positive=True) if "duration" in table else None
+    record_every = table.get("record_every", 1)
+    if isinstance(record_every, bool) or not isinstance(record_every, int) or record_every < 1:
+        raise _fail("run.record_every", "an integer >= 1", record_every)
+    return RunOptions(method, dt, duration, record_every)
+
+
+# ------------------------------------------------------------------------------------------ [[cluster]]
+
+# Equal-mass samples of a Plummer sphere in virial equilibrium (Aarseth, Henon & Wielen 1974).
+#
+# The Plummer model of total mass M and scale radius a has the density and potential
+#
+#     rho(r) = 3 M / (4 pi a^3) (1 + r^2/a^2)^(-5/2),      Phi(r) = -G M / sqrt(r^2 + a^2),
+#
+# cumulative mass M(r)/M = r^3 / (r^2 + a^2)^(3/2), and an isotropic distribution function in which the
+# speed v at radius r, as a fraction q = v / v_esc(r) of the local escape speed
+# v_esc(r) = sqrt(2 G M) (r^2 + a^2)^(-1/4), has the density g(q) proportional to q^2 (1 - q^2)^(7/2).
+# Its kinetic energy T = 3 pi G M^2 / (64 a) and potential energy V = -3 pi G M^2 / (32 a) satisfy the
+# virial theorem 2T = -V; with G = M = 1 and a = 3 pi / 16 the energy is E = -1/4 (the standard N-body
+# units of Henon and Heggie & Mathieu).
+
+# g(q) = q^2 (1 - q^2)^(7/2) peaks at q^2 = 2/9 with g = 0.0921...; 0.1 bounds it (the rejection step
+# of Aarseth, Henon & Wielen 1974)
+_G_BOUND = 0.1
+
+
+def _isotropic(rng: np.random.Generator, lengths: np.ndarray) -> np.ndarray:
+    """Vectors of the given lengths in directions uniform on the sphere (cos(theta) uniform in [-1, 1],
+    phi uniform in [0, 2 pi)), shape (n, 3)."""
+    cos_theta = rng.uniform(-1.0, 1.0, lengths.size)
+    phi = rng.uniform(0.0, 2.0 * np.pi, lengths.size)
+    sin_theta = np.sqrt(1.0 - cos_theta**2)
+    directions = np.column_stack((sin_theta * np.cos(phi), sin_theta * np.sin(phi), cos_theta))
+    out: np.ndarray = lengths[:, None] * directions
+    return out
+
+
+def _speed_fractions(rng: np.random.Generator, n: int) -> np.ndarray:
+    """n draws of q = v / v_esc from g(q) ~ q^2 (1 - q^2)^(7/2) on [0, 1) by von Neumann rejection."""
+    q = np.empty(n)
+    filled = 0
+    while filled < n:
+        want = n - filled
+        x = rng.uniform(0.0, 1.0, want)
+        y = rng.uniform(0.0, _G_BOUND, want)
+        accepted = x[y < x**2 * (1.0 - x**2) ** 3.5]
+        q[filled:filled + accepted.size] = accepted
+        filled += accepted.size
+    return q
+
+
+def plummer_sphere(count: int, total_mass: float, scale_radius: float, G: float,
+                   rng: np.random.Generator) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(masses [kg] (count,), p_W [m] (count, 3), v_W [m/s] (count, 3)) of `count` equal-mass particles
+    drawn from the Plummer sphere of `total_mass` [kg], `scale_radius` a [m] and gravitational constant
+    G [m^3/(kg s^2)] (Aarseth, Henon & Wielen 1974): radius from the inverted cumulative mass
+    r = a / sqrt(X^(-2/3) - 1) with X uniform in [0, 1) (no radial cut-off), speed v = q v_esc(r) with q
+    drawn by rejection from q^2 (1 - q^2)^(7/2), both directions isotropic. The centre of mass is then
+    moved to W's origin and the total momentum removed (each a shift by the sample mean, equal masses).
+    Deterministic for a given state of `rng`. The velocities are those of the unsoftened potential."""
+    m = total_mass / count
+    x = rng.uniform(0.0, 1.0, count)
+    # r = a / sqrt(X^(-2/3) - 1) written without the division by 0 at X = 0
+    x13 = np.cbrt(x)
+    r = scale_radius * x13 / np.sqrt(1.0 - x13**2)
+    p_W = _isotropic(rng, r)
+    v_esc = np.sqrt(2.0 * G * total_mass) * (r**2 + scale_radius**2) ** -0.25
+    v_W = _isotropic(rng, _speed_fractions(rng, count) * v_esc)
+    p_W -= p_W.mean(axis=0)
+    v_W -= v_W.mean(axis=0)
+    return np.full(count, m), p_W, v_W
+
+
+def _integer(value: Any, name: str, least: int) -> int:
+    if isinstance(value, bool) or not isinstance(value, int) or value < least:
+        raise _fail(name, f"an integer >= {least}", value)
+    return value
+
+
+@dataclass(frozen=True)
+class _Cluster:
+    """A read [[cluster]]: its bodies' names, particles and states, and its gravity's G and softening."""
+
+    names: list[str]
+    bodies: list[Any]
+    states: list[Any]
+    G: float
+    softening: float
+
+
+def _cluster(table: Any, k: int) -> _Cluster:
+    """The generated particles of the [[cluster]] table number k (a Plummer sphere: plummer_sphere)."""
+    name = f"cluster[{k}]"
+    _check_keys(table, name, _CLUSTER_KEYS, "[[cluster]]")
+    model = _required(table, "model", name, "'plummer'")
+    if model != "plummer":
+        raise _fail(f"{name}.model", "'plummer'", model)
+    count = _integer(_required(table, "count", name, "an integer >= 2"), f"{name}.count", 2)
+    total_mass = quantity(_required(table, "total_mass", name, "a mass [kg] > 0"), f"{name}.total_mass", "kg",
+                          positive=True)
+    scale_radius = quantity(_required(table, "scale_radius", name, "a length [m] > 0"), f"{name}.scale_radius",
+                            "m", positive=True)
+    G = quantity(table.get("G", 6.67430e-11), f"{name}.G", "m^3/(kg*s^2)", positive=True)
+    softening = quantity(table.get("softening", 0.0), f"{name}.softening", "m", nonnegative=True)
+    seed = _integer(_required(table, "seed", name, "an integer >= 0"), f"{name}.seed", 0)
+    prefix = _string(table.get("name_prefix", f"cluster{k}_"), f"{name}.name_prefix")
+    masses, p_W, v_W = plummer_sphere(count, total_mass, scale_radius, G, np.random.default_rng(seed))
+    return _Cluster([f"{prefix}{j}" for j in range(count)], [_core.Particle(m) for m in masses],
+                    [_core.ParticleState(p, v) for p, v in zip(p_W, v_W)], G, softening)
+
+
+def parse_scene(data: Mapping[str, Any], source: str = "scene") -> SceneFile:
+    """A SceneFile from parsed TOML `data` (`source` names it when the file sets no name)."""
+    data = _check_keys(data, "scene", _TOP_KEYS, "the top level")
+    if "body" not in data and "cluster" not in data:
+        raise _fail("scene.body", "at least one [[body]] table", "nothing")
+    tables = data.get("body", [])
+    if not isinstance(tables, list) or ("body" in data and not tables):
+        raise _fail("body", "an array of [[body]] tables", tables)
+    clusters = data.get("cluster", [])
+    if not isinstance(clusters, list) or ("cluster" in data and not clusters):
+        raise _fail("cluster", "an array of [[cluster]] tables", clusters)
+    scene = _core.Scene()
+    names: list[str] = []
+    initial = []
+    for i, table in enumerate(tables):
+        body_name, body, state = _body(table, i)
+        if body_name in names:
+            raise _fail(f"body[{i}].name", "a name no other [[body]] has", body_name)
+        names.append(body_name)
+        scene.add_body(body, name=body_name)
+        initial.append(state)
+    gravities = []  # (first body, count, G, softening) of each cluster
+    for k, table in enumerate(clusters):
+        cluster = _cluster(table, k)
+        taken = set(names).intersection(cluster.names)
+        if taken:
+            raise _fail(f"cluster[{k}].name_prefix", "a prefix giving names no other body has",
+                        f"{table.get('name_prefix', f'cluster{k}_')!r} (names {sorted(taken)[0]!r})")
+        gravities.append((len(names), len(cluster.names), cluster.G, cluster.softening))
+        for body_name, body, state in zip(cluster.names, cluster.bodies, cluster.states):
+            names.append(body_name)
+            scene.add_body(body, name=body_name)
+            initial.append(state)
+    forces = data.get("force", [])
+    if not isinstance(forces, list):
+        raise _fail("force", "an array of [[force]] tables", forces)
+    for i, table in enumerate(forces):
+        _core_call(scene.add, f"force[{i}]", _force(table, i, names))
+    for first, count, G, softening in gravities:  # one cluster's bodies, or None when they are all of them
+        bodies = None if count == len(names) else list(range(first, first + count))
+        scene.add(_core.MutualGravity(G=G, softening=softening, bodies=bodies))
+    description = _string(data.get("description", ""), "description")
+    return SceneFile(scene, initial, _run(data.get("run", {})), _string(data.get("name", source), "name"),
+                     description.strip())
+
+
+def example_scenes() -> list[str]:
+    """Names of the shipped scenes (rigiddyn/scenes/*.toml)."""
+    return sorted(p.stem for p in _SCENES_DIR.glob("*.toml"))
+
+
+def scene_path(name: str) -> Path:
+    """The file of the shipped scene `name` (ValueError for an unknown one)."""
+    path = _SCENES_DIR / f"{name}.toml"
+    if not isinstance(name, str) or not _is_file(str(path)):
+        raise _fail("path_or_text", "a .toml path, TOML text or one of the shipped scenes "
+                    + ", ".join(example_scenes()), name)
+    return path
+
+
+def _is_file(path: str) -> bool:
+    """Path(path).is_file(), False for a string no file system takes as a path (too long, a NUL)."""
+    try:
+        return Path(path).is_file()
+    except (OSError, ValueError):
+        return False
+
+
+def read_scene(path_or_text: str | Path) -> SceneFile:
+    """Read a scene: a path (str or Path) to a .toml file, the TOML text itself (a str holding a
+    newline, or an '=' and naming no file), or the name of a shipped scene (example_scenes())."""
+    if not isinstance(path_or_text, (str, Path)):
+        raise TypeError(f"path_or_text: expected a path, TOML text or a shipped scene name, got "
+                        f"{type(path_or_text).__name__}")
+    if isinstance(path_or_text, str) and ("\n" in path_or_text or ("=" in path_or_text and not _is_file(path_or_text))):
+        text, source = path_or_text, "scene"
+    else:
+        path = Path(path_or_text)
+        if not _is_file(str(path)):
+            if isinstance(path_or_text, Path) or path.suffix or len(path.parts) > 1:
+                raise _fail("path_or_text", "an existing .toml file", str(path_or_text))
+            path = scene_path(str(path_or_text))
+        text, source = path.read_text(encoding="utf-8"), path.stem
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as e:
+        raise ValueError(f"{source}: expected valid TOML, got {e}") from None
+    return parse_scene(data, source)
+
+
+def load_scene(path_or_text: str | Path) -> tuple[Any, list[Any], RunOptions]:
+    """(Scene, initial states, RunOptions) of a scene file, TOML text or shipped scene (read_scene)."""
+    f = read_scene(path_or_text)
+    return f.scene, f.initial, f.run
+
+
+# ------------------------------------------------------------------------------------------ writing
+
+def _floats(v: Any) -> Any:
+    """Arrays and numbers as (nested lists of) Python floats, for tomli-w."""
+    return np.asarray(v, dtype=np.float64).tolist()
+
+
+def _body_table(name: str, body: Any, state: Any) -> dict[str, Any]:
+    """A [[body]] table; its initial state left out for state None (the file's defaults: at rest)."""
+    if isinstance(body, _core.Particle):
+        head = {"name": name, "kind": "particle", "mass": float(body.mass)}
+        return head if state is None else {**head, "p_W": _floats(state.p_W), "v_W": _floats(state.v_W)}
+    if isinstance(body, _core.PlanarBody):
+        head = {"name": name, "kind": "planar", "mass": float(body.mass), "inertia": float(body.inertia_zz)}
+        return head if state is None else {**head, "p_W": _floats(state.p_W), "v_W": _floats(state.v_W),
+                                           "theta": float(state.theta), "omega": float(state.omega)}
+    inertia = np.asarray(body.inertia_com, dtype=np.float64)
+    table: dict[str, Any] = {"name": name, "kind": "rigid", "mass": float(body.mass),
+                             "inertia": _floats(np.diag(inertia)) if not np.any(inertia - np.diag(np.diag(inertia)))
+                             else _floats(inertia)}
+    try:
+        _core.RigidBody(body.mass, inertia)
+    except ValueError:
+        table["inertia_check"] = "allow_unrealizable"
+    if state is not None:
+        table.update({"p_W": _floats(state.p_W), "v_W": _floats(state.v_W), "w_B": _floats(state.w_B),
+                      "q_WB": _floats(state.q_WB)})
+    return table
+
+
+def _force_table(element: Any, i: int, names: Sequence[str]) -> dict[str, Any]:
+    cls = type(element).__name__
+    if cls not in _TYPE_OF_CLASS:
+        raise _fail(f"scene.elements[{i}]", "an element a scene file can hold (" + ", ".join(_TYPE_OF_CLASS) + ")", cls)
+    kind = _TYPE_OF_CLASS[cls]
+    table: dict[str, Any] = {"type": kind}
+    for key, f in FORCE_TYPES[kind][1].items():
+        value = getattr(element, key)
+        if f.kind in ("scalar", "vector"):
+            table[key] = _floats(value)
+        elif f.kind in ("body", "optional_body"):
+            if value is not None:
+                table[key] = names[value]
+        elif f.kind == "bodies":
+            if value is not None:
+                table[key] = [names[b] for b in value]
+        else:
+            table[key] = [_load_table(load) for load in value]
+    return table
+
+
+def _load_table(load: Any) -> dict[str, Any]:
+    table = {"force": _floats(load.force), "torque": _floats(load.torque), "frame": str(load.frame)}
+    for key in ("t_start", "t_end"):  # infinite: the default, left out
+        if math.isfinite(getattr(load, key)):
+            table[key] = float(getattr(load, key))
+    return table
+
+
+def scene_to_toml(scene: Any, initial: Sequence[Any] | None = None, run: RunOptions | None = None,
+                  name: str | None = None, description: str | None = None) -> str:
+    """The canonical scene file of `scene` with `initial` states (one per body; None: none written, the
+    bodies start at rest) and `run`: SI units, radians, attitudes as q_WB (x, y, z, w), every field
+    explicit except bodies = every body, a world anchor and infinite load times. read_scene of it gives
+    the same scene, states and run options. ValueError for an element no file can hold (PythonForce)."""
+    if not isinstance(scene, _core.Scene):
+        raise TypeError(f"scene: expected a Scene, got {type(scene).__name__}")
+    bodies, names, elements = list(scene.bodies), _body_names(scene), list(scene.elements)
+    initial = _checked_states(initial, bodies, names)
+    if run is not None and not isinstance(run, RunOptions):
+        raise TypeError(f"run: expected None or a RunOptions, got {type(run).__name__}")
+    for key, text in (("name", name), ("description", description)):
+        if text is not None and not isinstance(text, str):
+            raise TypeError(f"{key}: expected None or a str, got {type(text).__name__}")
+    data: dict[str, Any] = {}
+    if name is not None:
+        data["name"] = name
+    if description:
+        data["description"] = description
+    if run is not None:
+        data["run"] = {k: v for k, v in (("method", run.method), ("dt", run.dt), ("duration", run.duration),
+                                         ("record_every", run.record_every)) if v is not None}
+    lines = [f"{k} = {_literal(v)}" for k, v in data.items() if k != "run"]
+    if "run" in data:
+        lines += ["", "[run]"] + [f"{k} = {_literal(v)}" for k, v in data["run"].items()]
+    for n, b, s in zip(names, bodies, initial):
+        lines += ["", "[[body]]"] + [f"{k} = {_literal(v)}" for k, v in _body_table(n, b, s).items()]
+    for i, e in enumerate(elements):
+        table = _force_table(e, i, names)
+        lines += ["", "[[force]]"] + [f"{k} = {_literal(v)}" for k, v in table.items() if k != "loads"]
+        for load in table.get("loads", []):
+            lines += ["[[force.loads]]"] + [f"{k} = {_literal(v)}" for k, v in load.items()]
+    return "\n".join(lines).lstrip("\n") + "\n"
+
+
+def _literal(value: Any) -> str:
+    """A TOML value: arrays on one line (tomli-w writes one entry a line), scalars as tomli-w writes
+    them (floats by repr: they read back bit for bit)."""
+    import tomli_w
+
+    if isinstance(value, list):
+        return "[" + ", ".join(_literal(v) for v in value) + "]"
+    return str(tomli_w.dumps({"v": value}, multiline_strings=True))[len("v = "):].rstrip("\n")
+
+
+def _checked_states(initial: Any, bodies: Sequence[Any], names: Sequence[str]) -> list[Any]:
+    """`initial` (None: no states) as a list of one state per body, each of its body's kind."""
+    if initial is None:
+        return [None] * len(bodies)
+    if isinstance(initial, (str, bytes, Mapping)) or not isinstance(initial, Sequence):
+        raise TypeError(f"initial: expected None or a sequence of one state per body, got {type(initial).__name__}")
+    if len(initial) != len(bodies):
+        raise _fail("initial", f"one state per body ({len(bodies)})", f"{len(initial)} states")
+    for i, (body, state) in enumerate(zip(bodies, initial)):
+        kind = type(body).__name__ + "State"  # Particle -> ParticleState, ...
+        if type(state).__name__ != kind:
+            raise TypeError(f"initial[{i}]: expected a {kind} (body {names[i]!r} is a {type(body).__name__}), "
+                            f"got {type(state).__name__}")
+    return list(initial)
+
+
+def _body_names(scene: Any) -> list[str]:
+    """Each body's name ("body<i>" where the scene has none)."""
+    names = list(getattr(scene, "body_names", []))
+    return [names[i] if i < len(names) and names[i] else f"body{i}" for i in range(len(scene.bodies))]
+
+
+def _attach() -> None:
+    """Scene.to_toml(initial=None, run=None, name=None, description=None) as a method (when the core has Scene)."""
+    scene_cls = getattr(_core, "Scene", None)
+    if scene_cls is not None and not hasattr(scene_cls, "to_toml"):
+        def to_toml(self: Any, initial: Sequence[Any] | None = None, run: RunOptions | None = None,
+                    name: str | None = None, description: str | None = None) -> str:
+            return scene_to_toml(self, initial, run, name, description)
+
+        to_toml.__doc__ = scene_to_toml.__doc__
+        scene_cls.to_toml = to_toml
+
+
+_attach()

@@ -1,0 +1,430 @@
+"""rigiddyn.tradeoff on a scene: many bodies, force elements, a reference without a closed form.
+
+`tradeoff` (rigiddyn.work_precision) takes a scene the way it takes a one-body problem: a
+rigiddyn.Scene with its initial states (initial=..., horizon=...), the (scene, initial states, run
+options) that rigiddyn.load_scene returns, or a scene TOML file or shipped scene name (a file whose
+`body` is an array of tables, [[body]], is a scene; [body] is a problem). This module holds the scene
+side of the sweep (SceneCase: compile, run, states, error measures) and the sweep's loop; the rows,
+the report, the reference refinement and its check are work_precision's.
+
+Each method is compiled once (`scene.compile(method=...)`): a refusal (ValueError, e.g. `exact` on a
+scene with forces) becomes the method's rows with "not applicable: <reason>" in order_note and nan
+errors; a compatibility warning (rigiddyn.SceneCompatibilityWarning, e.g. a damper with a splitting)
+becomes a note of the report. The reference is the highest-order method that compiles without a
+warning, refined by Richardson (work_precision._richardson_reference), and checked against the core's
+other method family at the reference's finest step with its own Richardson estimate (the scenes have no
+closed form in the package and no independent rate in Python: SciPy's DOP853 checks problems only).
+
+The error measures of MEASURES, many bodies (b) at the recorded times t:
+  position_error  max_b |p_W - p_ref| [m];  velocity_error  max_b |v_W - v_ref| [m/s]
+  attitude_error  max_b geodesic angle |log(q_ref^-1 q)| [rad] (rigid and planar bodies; a particle's
+                  attitude is the identity in both, angle 0)
+  momentum_error  max_b |I_b (w_B - w_ref)| / max_t |I_b w_ref| (body angular momentum relative to
+                  its largest value over the run; 0 for a particle)
+  state_error     max of attitude, momentum, position / L_p and velocity / L_v (L_p = max(largest radius
+                  of gyration, largest displacement of a body), L_v = max(largest speed, L_p / horizon))
+  energy_drift    max_t |E - E_ref| / max_t (T_ref + |V_ref|): total energy E = T + V (kinetic plus the
+                  elements' potentials), relative
+  momentum_drift  max_t of |P - P_ref| / max_t sum_b m_b |v_ref| and |L - L_ref| / max_t sum_b (m_b |p x
+                  v_ref| + |I_b w_ref|): total linear momentum P and angular momentum L about W's origin,
+                  relative to the sum of the bodies' magnitudes (a scene whose totals are 0 still has a scale)
+  quaternion_norm_error  max_b,t ||q| - 1| (rigid bodies)
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import sys
+import warnings
+from collections.abc import Callable, Iterable, Mapping, Sequence
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from . import _core
+
+if sys.version_info >= (3, 11):
+    import tomllib
+else:  # pragma: no cover - exercised on Python 3.9/3.10 only
+    import tomli as tomllib
+if TYPE_CHECKING:
+    from .work_precision import TradeoffResult
+
+__all__ = ["BodyData", "SceneCase", "SceneStates", "is_scene_source", "scene_case", "scene_measures", "scene_sweep"]
+
+_TINY = np.finfo(float).tiny
+CHECK_HALVINGS = 4  # the independent check's step is halved at most this often below the reference's finest
+
+
+def _toml_tables(path: Path) -> Mapping[str, Any] | None:
+    """The TOML file's top-level tables, None if it does not parse (its loader says why)."""
+    try:
+        with open(path, "rb") as f:
+            data: Mapping[str, Any] = tomllib.load(f)
+        return data
+    except (OSError, tomllib.TOMLDecodeError):
+        return None
+
+
+def is_scene_source(source: Any) -> bool:
+    """True if `source` (a path or a name) is a scene file: a TOML file whose `body` is an array of
+    tables ([[body]]; a problem file has one [body] table), or the name of a shipped scene."""
+    if not isinstance(source, (str, os.PathLike)):
+        return False
+    path = Path(source)
+    if path.is_file():
+        data = _toml_tables(path)
+        return data is not None and isinstance(data.get("body"), list)
+    from .scene_file import example_scenes
+
+    return isinstance(source, str) and not path.suffix and len(path.parts) == 1 and source in example_scenes()
+
+
+def _option(options: Any, key: str) -> Any:
+    """A run option of load_scene (a mapping or an object with attributes), None if absent."""
+    if options is None:
+        return None
+    if isinstance(options, Mapping):
+        return options.get(key)
+    return getattr(options, key, None)
+
+
+@dataclass(frozen=True)
+class BodyData:
+    """What the measures need of a body: its kind ('particle', 'planar', 'rigid'), mass [kg] and inertia
+    about its centre of mass in B [kg m^2] (0 for a particle, diag(0, 0, I_zz) for a planar body)."""
+
+    kind: str
+    mass: float
+    inertia_com: np.ndarray
+
+
+def _body_data(body: Any) -> BodyData:
+    if isinstance(body, _core.RigidBody):
+        return BodyData("rigid", float(body.mass), np.asarray(body.inertia_com, float))
+    if isinstance(body, _core.PlanarBody):
+        return BodyData("planar", float(body.mass), np.diag([0.0, 0.0, float(body.inertia_zz)]))
+    return BodyData("particle", float(body.mass), np.zeros((3, 3)))
+
+
+@dataclass(frozen=True)
+class Compiled:
+    """A method compiled on a scene: the model (None if refused), the refusal's reason and the
+    compatibility warnings."""
+
+    model: Any
+    reason: str
+    warnings: tuple[str, ...]
+
+
+@dataclass
+class SceneStates:
+    """States of nb bodies at n times: t (n,), p_W, v_W, w_B (n, nb, 3), q_WB (n, nb, 4) (x, y, z, w), and
+    the scene's totals: kinetic, potential and total energy (n,) [J], linear_momentum_W (n, 3) [kg m/s],
+    angular_momentum_W (n, 3) [kg m^2/s] about W's origin."""
+
+    t: np.ndarray
+    p_W: np.ndarray
+    q_WB: np.ndarray
+    v_W: np.ndarray
+    w_B: np.ndarray
+    kinetic_energy: np.ndarray
+    potential_energy: np.ndarray
+    total_energy: np.ndarray
+    linear_momentum_W: np.ndarray
+    angular_momentum_W: np.ndarray
+
+
+@dataclass
+class SceneCase:
+    """A scene swept by tradeoff: `scene` (rigiddyn.Scene), its `initial` states (one per body), the
+    `horizon` [s], its `name` and the sweep defaults `tradeoff` (methods, dts, tolerance, measure)."""
+
+    name: str
+    scene: Any
+    initial: list[Any]
+    horizon: float
+    tradeoff: dict[str, Any] = field(default_factory=dict)
+    bodies: list[BodyData] = field(default_factory=list)
+    _compiled: dict[str, Compiled] = field(default_factory=dict, repr=False)
+
+    has_exact_solution = False  # issue 12 adds exact references for scenes
+
+    def __post_init__(self) -> None:
+        if not self.bodies:
+            self.bodies = [_body_data(b) for b in self.scene.bodies]
+
+    def with_horizon(self, horizon: float) -> SceneCase:
+        return replace(self, horizon=float(horizon))
+
+    def compile(self, method: str) -> Compiled:
+        """The scene compiled for `method` (cached): a refusal's reason instead of a model, and the
+        compatibility warnings (SceneCompatibilityWarning) as text."""
+        if method not in self._compiled:
+            category: type[Warning] = getattr(_core, "SceneCompatibilityWarning")
+            with warnings.catch_warnings():  # the report's notes say them
+                warnings.simplefilter("ignore", category)
+                try:
+                    model, reason = self.scene.compile(method=method), ""
+                except ValueError as error:
+                    model, reason = None, str(error)
+            texts = () if model is None else tuple(str(w) for w in model.warnings)
+            self._compiled[method] = Compiled(model, reason, texts)
+        return self._compiled[method]
+
+    def simulate(self, method: str, dt: float, steps: int, record_every: int,
+                 progress: Callable[[int], None] | None = None) -> Any:
+        """rigiddyn.simulate of the scene compiled for `method` (ValueError if it is refused); `progress`
+        is called with the steps done."""
+        compiled = self.compile(method)
+        if compiled.model is None:
+            raise ValueError(compiled.reason)
+        return _core.simulate(compiled.model, self.initial, dt, steps, method, record_every=record_every,
+                              progress=progress)
+
+    def states(self, result: Any) -> SceneStates:
+        """The recorded states and totals of a scene result."""
+        return SceneStates(*(np.asarray(getattr(result, k), float) for k in (
+            "t", "p_W", "q_WB", "v_W", "w_B", "kinetic_energy", "potential_energy", "total_energy",
+            "linear_momentum_W", "angular_momentum_W")))
+
+    def quaternion_norm_error(self, result: Any) -> np.ndarray:
+        """||q_WB| - 1| of the rigid bodies at each record (n,) (0 without a rigid body)."""
+        rigid = [i for i, b in enumerate(self.bodies) if b.kind == "rigid"]
+        q = np.asarray(result.q_WB, float)
+        if not rigid or q.shape[0] == 0:
+            return np.zeros(q.shape[0])
+        return np.asarray(np.max(np.abs(np.linalg.norm(q[:, rigid], axis=2) - 1.0), axis=1))
+
+    def measures(self, run: SceneStates, ref: SceneStates, quaternion_norm_error: np.ndarray) -> dict[str, float]:
+        """The error measures of `run` against `ref` at the same times (module docstring)."""
+        return scene_measures(self.bodies, self.horizon, run, ref, quaternion_norm_error)
+
+    def fastest_rate(self) -> float:
+        """rho [1/s]: the fastest body spin |w_B| or linear mode of the elements (rigiddyn.stability.scene_modes,
+        sqrt|k| + gamma) at the initial states."""
+        from .stability import scene_modes
+
+        rates = [float(np.linalg.norm(s.w_B)) for s in self.initial if hasattr(s, "w_B")]
+        rates += [abs(float(s.omega)) for s in self.initial if hasattr(s, "omega")]
+        rates += [math.sqrt(abs(k)) + gamma for _, k, gamma in scene_modes(self.scene, self.initial)]
+        return max(rates, default=0.0)
+
+    def default_dts(self) -> list[float]:
+        """Eight halvings from dt rho = 1 (rho: fastest_rate), or from horizon / 16 if that is shorter."""
+        rho = max(self.fastest_rate(), 1e-300)
+        dt0 = min(1.0 / rho, self.horizon / 16)
+        return [dt0 / 2**j for j in range(8)]
+
+
+def _attitude_angle(q_ref: np.ndarray, q: np.ndarray) -> np.ndarray:
+    from .work_precision import _attitude_angle as angle
+
+    return angle(q_ref.reshape(-1, 4), q.reshape(-1, 4)).reshape(q.shape[:-1])
+
+
+def scene_measures(bodies: Sequence[BodyData], horizon: float, run: SceneStates, ref: SceneStates,
+                   quaternion_norm_error: np.ndarray) -> dict[str, float]:
+    """The error measures of `run` against `ref` (module docstring) for bodies of these masses and
+    inertias over `horizon` [s]."""
+    mass = np.array([b.mass for b in bodies])
+    inertia = np.array([b.inertia_com for b in bodies]).reshape(len(bodies), 3, 3)
+    h, h_ref = (np.einsum("bij,nbj->nbi", inertia, s.w_B) for s in (run, ref))  # I_b w_B per body
+    h_scale = np.maximum(np.max(np.linalg.norm(h_ref, axis=2), axis=0), _TINY)  # (nb,)
+    radius = float(np.max(np.sqrt(np.trace(inertia, axis1=1, axis2=2) / (2.0 * mass))))
+    moved = float(np.max(np.linalg.norm(ref.p_W - ref.p_W[:1], axis=2)))
+    length = max(radius, moved, _TINY)
+    speed = max(float(np.max(np.linalg.norm(ref.v_W, axis=2))), length / horizon)
+    series = {
+        "attitude_error": np.max(_attitude_angle(ref.q_WB, run.q_WB), axis=1),
+        "momentum_error": np.max(np.linalg.norm(h - h_ref, axis=2) / h_scale, axis=1),
+        "position_error": np.max(np.linalg.norm(run.p_W - ref.p_W, axis=2), axis=1),
+        "velocity_error": np.max(np.linalg.norm(run.v_W - ref.v_W, axis=2), axis=1),
+    }
+    series["state_error"] = np.max([series["attitude_error"], series["momentum_error"],
+                                    series["position_error"] / length, series["velocity_error"] / speed], axis=0)
+    out = {}
+    for name, values in series.items():
+        out[f"final_{name}"], out[f"max_{name}"] = float(values[-1]), float(np.max(values))
+    energy_scale = max(float(np.max(ref.kinetic_energy + np.abs(ref.potential_energy))), _TINY)
+    out["energy_drift"] = float(np.max(np.abs(run.total_energy - ref.total_energy))) / energy_scale
+    momentum_W = mass[None, :, None] * ref.v_W  # m_b v_b per body (n, nb, 3)
+    p_scale = max(float(np.max(np.sum(np.linalg.norm(momentum_W, axis=2), axis=1))), _TINY)
+    l_scale = max(float(np.max(np.sum(np.linalg.norm(np.cross(ref.p_W, momentum_W), axis=2)
+                                      + np.linalg.norm(h_ref, axis=2), axis=1))), _TINY)
+    out["momentum_drift"] = max(
+        float(np.max(np.linalg.norm(run.linear_momentum_W - ref.linear_momentum_W, axis=1))) / p_scale,
+        float(np.max(np.linalg.norm(run.angular_momentum_W - ref.angular_momentum_W, axis=1))) / l_scale)
+    out["quaternion_norm_error"] = float(np.max(np.abs(quaternion_norm_error)))
+    return out
+
+
+# ---------------------------------------------------------------------------------------------
+# what tradeoff accepts as a scene
+
+
+def _is_scene(x: Any) -> bool:
+    scene_type = getattr(_core, "Scene", None)
+    return scene_type is not None and isinstance(x, scene_type)
+
+
+def scene_case(source: Any, initial: Any = None, horizon: float | None = None) -> SceneCase | None:
+    """The SceneCase of `source`: a SceneCase, a rigiddyn.Scene (with `initial`, one state per body),
+    the tuple rigiddyn.load_scene returns, or a scene file path / shipped scene name; None if `source`
+    is none of these (a problem). The horizon [s]: `horizon`, else the [run] duration of the file."""
+    if isinstance(source, SceneCase):
+        return source
+    options: Any = None
+    if _is_scene(source):
+        scene, name = source, "scene"
+        if initial is None:
+            raise ValueError("initial: expected the initial states of the scene's bodies (one per body), got None")
+    elif isinstance(source, tuple) and len(source) == 3 and _is_scene(source[0]):
+        scene, initial, options = (source[0], source[1] if initial is None else initial, source[2])
+        name = "scene"
+    elif is_scene_source(source):
+        from .scene_file import read_scene
+
+        read = read_scene(source)
+        scene, options, name = read.scene, read.run, read.name
+        initial = read.initial if initial is None else initial
+    else:
+        return None
+    kinds = (_core.ParticleState, _core.PlanarBodyState, _core.RigidBodyState)
+    expected = f"a list of initial states (ParticleState, PlanarBodyState, RigidBodyState), one per body ({len(scene.bodies)})"
+    if isinstance(initial, (str, bytes)) or not isinstance(initial, Iterable):
+        raise TypeError(f"initial: expected {expected}, got {initial!r}")
+    initial = list(initial)
+    if len(initial) != len(scene.bodies) or not all(isinstance(s, kinds) for s in initial):
+        raise ValueError(f"initial: expected {expected}, got {initial!r}")
+    span = horizon if horizon is not None else _option(options, "duration")
+    if span is None:
+        raise ValueError("horizon: expected a finite number > 0 [s] (the scene file's [run] duration gives none), "
+                         "got None")
+    if isinstance(span, bool) or not isinstance(span, (int, float, np.integer, np.floating)):
+        raise TypeError(f"horizon: expected a finite number > 0 [s], got {span!r}")
+    if not (math.isfinite(span) and span > 0):
+        raise ValueError(f"horizon: expected a finite number > 0 [s], got {span!r}")
+    defaults = _option(options, "tradeoff")
+    return SceneCase(name, scene, initial, float(span), dict(defaults) if isinstance(defaults, Mapping) else {})
+
+
+# ---------------------------------------------------------------------------------------------
+# the sweep
+
+
+def _family(method: str) -> str:
+    """The method's family, for the independent check: splittings (kick and free flow), Runge-Kutta,
+    or the method itself (implicit midpoint, the semi-implicit Eulers)."""
+    if "splitting" in method or method == "exact_flow_kick":
+        return "splitting"
+    if method in ("explicit_euler", "rk4", "rkmk4"):
+        return "runge-kutta"
+    return method
+
+
+def _best(candidates: Iterable[str], info: Mapping[str, Mapping[str, Any]]) -> str | None:
+    """The highest-order method of `candidates` (ties to one that keeps SO(3) exactly), None if empty."""
+    return max(candidates, key=lambda m: (info[m]["order"], "SO(3)" in info[m]["conserves"]), default=None)
+
+
+def _independent(case: SceneCase, method: str, order: int, dt: float, steps: int, ref: Any, max_steps: int,
+                 bar: Any) -> Any:
+    """`method` (of another family) with its Richardson error estimate, from the reference's finest step
+    dt / ref.sub, halved while its estimate exceeds CHECK_FACTOR x the reference's (a lower-order method
+    needs finer steps to say anything), at most CHECK_HALVINGS times and within max_steps."""
+    from . import work_precision as wp
+
+    sub = ref.sub
+    while True:
+        independent = wp._family_reference(case, method, order, dt / sub, steps * sub, ref.record_every * sub // ref.sub,
+                                           bar)
+        wanted = wp.CHECK_FACTOR * ref.estimate["max_state_error"]
+        if (independent.error["max_state_error"] <= wanted or steps * sub * 2 > max_steps
+                or sub >= ref.sub * 2**CHECK_HALVINGS):
+            return independent
+        sub *= 2
+
+
+def scene_sweep(case: SceneCase, methods: list[str], grid: list[int], measure: str, tolerance: float | None,
+                progress: bool, cost: str, samples: int, max_reference_steps: int,
+                info: dict[str, dict[str, Any]]) -> TradeoffResult:
+    """The sweep of rigiddyn.tradeoff on a scene (arguments checked by it; `grid`: the step counts)."""
+    from . import work_precision as wp
+    from .stability import StabilityWarning, scene_modes, scene_stability_message
+
+    clean = [m for m in info if info[m]["order"] > 0 and case.compile(m).model is not None and not case.compile(m).warnings]
+    ref_method = _best(clean, info)
+    if ref_method is None:
+        raise ValueError(f"problem: expected a scene that a method of order >= 1 runs without a compatibility warning, "
+                         f"got {case.name!r} (" + "; ".join(f"{m}: {case.compile(m).reason or 'warned'}" for m in info) + ")")
+    other = _best([m for m in clean if _family(m) != _family(ref_method)], info)
+    runnable = [m for m in methods if case.compile(m).model is not None]
+    free = not list(case.scene.elements)  # no element: every body torque-free
+    exact = {m for m in runnable if info[m]["order"] == 0 or (free and info[m]["exact_torque_free"])}
+    total = 1
+    if progress:
+        estimate = wp._estimate(case, runnable, grid, ref_method)
+        print("\n".join(wp._wrap(estimate.text, 100)), file=sys.stderr, flush=True)
+        total = estimate.steps
+    bar = wp._Progress(total, bool(progress) and sys.stderr.isatty())
+    sweeps: list[tuple[int, float, dict[str, Any], Any, Any]] = []
+    try:
+        for steps in grid:
+            dt = case.horizon / steps
+            every = max(1, steps // samples)
+            runs = {m: wp._simulate(case, m, dt, steps, every, timed=True, bar=bar) for m in runnable}
+            # refined against the methods with a truncation error (an exact one's round-off sets no target)
+            ref = wp._richardson_reference(case, ref_method, info[ref_method]["order"], dt, steps, every,
+                                           [r for m, r in runs.items() if m not in exact], max_reference_steps, bar)
+            if other is None:
+                check = wp._Check(True, ref.estimate, "no method of another family runs this scene without a warning: "
+                                  "Richardson estimate only")
+            else:
+                independent = _independent(case, other, info[other]["order"], dt, steps, ref, max_reference_steps, bar)
+                check = wp._check_reference(case, ref.states, ref.estimate, independent, steps * ref.sub)
+            sweeps.append((steps, dt, runs, ref, check))
+    finally:
+        bar.close()
+    modes = scene_modes(case.scene, case.initial)
+    rows: list[dict[str, Any]] = []
+    unstable: list[tuple[str, float, str]] = []
+    for steps, dt, runs, ref, check in sweeps:
+        reference = f"richardson({ref_method})" if check.reliable else f"unreliable: richardson({ref_method})"
+        for method in methods:
+            m = info[method]
+            row: dict[str, Any] = {"method": method, "dt": dt, "steps": steps, "order": m["order"],
+                                   "evaluations_per_step": m["evaluations"]}
+            compiled = case.compile(method)
+            if compiled.model is None:
+                row.update({"time_per_step": math.nan, "time_noise": math.nan, "total_time": math.nan,
+                            "total_evaluations": 0, **{k: math.nan for k in wp.MEASURES},
+                            "observed_order": math.nan, "order_note": f"not applicable: {compiled.reason}",
+                            "reference": reference, "reference_error": check.error[measure],
+                            "reference_check": check.text, "diverged": False, "stability": ""})
+                rows.append(row)
+                continue
+            run = runs[method]
+            row.update({"time_per_step": run.time_per_step, "time_noise": run.time_noise,
+                        "total_time": run.time_per_step * steps, "total_evaluations": m["evaluations"] * steps})
+            if run.diverged:
+                row.update({k: math.inf for k in wp.MEASURES})
+            else:
+                row.update(case.measures(run.states, ref.states, run.quaternion_norm_error))
+            message = scene_stability_message(method, dt, steps, case.scene, case.initial, modes)
+            if message:
+                unstable.append((method, dt, message))
+            row.update({"observed_order": math.nan, "order_note": "", "reference": reference,
+                        "reference_error": check.error[measure], "reference_check": check.text,
+                        "diverged": run.diverged, "stability": message or ""})
+            rows.append(row)
+    applicable = [r for r in rows if not r["order_note"].startswith("not applicable")]
+    wp._observed_orders(applicable, measure, exact)
+    rows.sort(key=lambda r: (methods.index(r["method"]), -r["dt"]))
+    if unstable:
+        warnings.warn(wp._stability_summary(unstable, "for this scene"), StabilityWarning, stacklevel=3)
+    notes = [f"{m}: {text} (SceneCompatibilityWarning)" for m in methods for text in case.compile(m).warnings]
+    return wp.TradeoffResult(case.name, case.horizon, measure, tolerance, rows, cost, notes=notes)

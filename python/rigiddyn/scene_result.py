@@ -1,0 +1,88 @@
+"""A SceneResult (``rigiddyn.simulate`` of a Scene) as one wide table: one row per record, one float64
+column per scalar, named ``[<body>:]<field>[_<component>] [<unit>]`` (frames as in docs/conventions.md;
+dimensionless columns carry no unit)::
+
+    t [s] | sat:p_W_x [m] ... | sat:q_WB_x ... sat:q_WB_w | sat:v_W_x [m/s] ... | sat:w_B_x [rad/s] ... |
+    (the same for every body, in the scene's order) |
+    kinetic_energy [J] | potential_energy [J] | total_energy [J] |
+    linear_momentum_W_x [kg m/s] ... | angular_momentum_W_x [kg m^2/s] ... |
+    work[0] UniformGravity [J] ... | power[0] UniformGravity [W] ...
+
+Wide rather than long (one row per record and body): the scene-wide columns (energies, momenta, each
+element's work and power) belong to a record, not to a body, so a long table would repeat them on every
+body's row; the wide one has SimulationResult's shape (one row per record, ``t [s]`` an ordinary column)
+and ``df.filter(like="sat:")`` selects one body.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+__all__ = ["BODY_FIELDS", "SCENE_FIELDS", "column_names", "columns", "to_dataframe"]
+
+# per-body SceneResult attribute -> (components, unit or None)
+BODY_FIELDS: dict[str, tuple[str, str | None]] = {
+    "p_W": ("xyz", "m"),
+    "q_WB": ("xyzw", None),
+    "v_W": ("xyz", "m/s"),
+    "w_B": ("xyz", "rad/s"),
+}
+# scene-wide attribute -> (components or None for a scalar, unit)
+SCENE_FIELDS: dict[str, tuple[str | None, str]] = {
+    "kinetic_energy": (None, "J"),
+    "potential_energy": (None, "J"),
+    "total_energy": (None, "J"),
+    "linear_momentum_W": ("xyz", "kg m/s"),
+    "angular_momentum_W": ("xyz", "kg m^2/s"),
+}
+ELEMENT_FIELDS: dict[str, str] = {"work": "J", "power": "W"}
+
+
+def _unit(name: str, unit: str | None) -> str:
+    return name if unit is None else f"{name} [{unit}]"
+
+
+def columns(result: Any, scalar_first: bool = False) -> dict[str, np.ndarray]:
+    """The columns of a SceneResult: name -> contiguous float64 (n,) array, in table order.
+
+    scalar_first: the result's q_WB rows are (w, x, y, z), i.e. it came from
+    ``simulate(..., scalar_first=True)`` (the result does not record it); default (x, y, z, w).
+    """
+    if not isinstance(scalar_first, (bool, np.bool_)):
+        raise TypeError(f"scalar_first: expected True or False, got {scalar_first!r}")
+    out: dict[str, np.ndarray] = {"t [s]": np.ascontiguousarray(result.t, dtype=np.float64)}
+    for b, body in enumerate(result.body_names):
+        for field, (components, unit) in BODY_FIELDS.items():
+            if field == "q_WB" and scalar_first:
+                components = "wxyz"
+            values = np.asarray(getattr(result, field), dtype=np.float64)[:, b, :]
+            for i, c in enumerate(components):
+                out[_unit(f"{body}:{field}_{c}", unit)] = np.ascontiguousarray(values[:, i])
+    for field, (parts, unit) in SCENE_FIELDS.items():
+        values = np.asarray(getattr(result, field), dtype=np.float64)
+        if parts is None:
+            out[_unit(field, unit)] = np.ascontiguousarray(values)
+        else:
+            for i, c in enumerate(parts):
+                out[_unit(f"{field}_{c}", unit)] = np.ascontiguousarray(values[:, i])
+    for field, unit in ELEMENT_FIELDS.items():
+        values = np.asarray(getattr(result, field), dtype=np.float64)
+        for i, kind in enumerate(result.elements):
+            out[_unit(f"{field}[{i}] {kind}", unit)] = np.ascontiguousarray(values[:, i])
+    return out
+
+
+def column_names(result: Any, scalar_first: bool = False) -> list[str]:
+    """The table's column names in order (they depend on the scene's bodies and elements)."""
+    return list(columns(result, scalar_first))
+
+
+def to_dataframe(result: Any, scalar_first: bool = False) -> Any:
+    """The table as a pandas.DataFrame (needs pandas: pip install 'rigiddyn[dataframe]')."""
+    try:
+        import pandas as pd
+    except ImportError as error:  # pragma: no cover - depends on the environment
+        raise ImportError("SceneResult.to_dataframe needs pandas: pip install 'rigiddyn[dataframe]'") from error
+    return pd.DataFrame(columns(result, scalar_first))

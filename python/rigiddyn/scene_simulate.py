@@ -1,0 +1,175 @@
+"""``python -m rigiddyn simulate SCENE``: the simulate command for scene files (rigiddyn.scene_file).
+
+simulate_command.run_simulate hands a scene file (a .toml with [[body]] tables, or a shipped scene's
+name, rigiddyn.scene_file.example_scenes()) to run_scene_simulate. The scene's [run] gives the defaults
+of --method, --dt, --duration and --record-every; the command-line options override them.
+
+Writes to --out: trajectory.csv, trajectory.npz, trajectory.parquet (when pyarrow is installed) and
+run.json. The tables are WIDE, one row per record, the columns of rigiddyn.scene_result (what
+SceneResult.to_dataframe gives): ``t [s]``, then per body ``<name>:p_W_x [m]`` .. ``<name>:q_WB_x`` ..
+``<name>:v_W_x [m/s]`` .. ``<name>:w_B_x [rad/s]``, then the energies, momenta, and each element's
+``work[i] <Class> [J]`` and ``power[i] <Class> [W]``. One file rather than one per body: the
+scene-wide columns (energy, momenta, work) belong to a record, and ``df.filter(like="sat:")`` selects
+a body. No plot or animation yet (trajectory_plot draws one body): --animate is refused, --attitude
+and the plot are skipped with a note.
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import json
+import math
+import sys
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from . import _core
+from .out_folder import check_out_folder
+from .scene_file import SceneFile, read_scene
+
+if sys.version_info >= (3, 11):
+    import tomllib
+else:  # pragma: no cover - exercised on Python 3.9/3.10 only
+    import tomli as tomllib
+
+__all__ = ["SCENE_OUTPUTS", "is_scene_file", "run_scene_simulate"]
+
+SCENE_OUTPUTS = ("trajectory.csv", "trajectory.npz", "trajectory.parquet", "run.json")
+MAX_DEFAULT_RECORDS = 10_000  # as simulate_command: without --record-every or [run] record_every
+
+
+def is_scene_file(path_or_name: str) -> bool:
+    """True for a shipped scene's name or a readable .toml file with [[body]] tables (a problem file
+    has one [body] table)."""
+    from .scene_file import example_scenes
+
+    try:
+        is_file = Path(path_or_name).is_file()
+        if not is_file:
+            return path_or_name in example_scenes()
+        data = tomllib.loads(Path(path_or_name).read_text(encoding="utf-8"))
+    except (OSError, UnicodeDecodeError, ValueError):
+        return False  # load_problem names what is wrong with it
+    return isinstance(data.get("body"), list)
+
+
+class _ScenePlan:
+    """The checked settings of one `simulate` of a scene file."""
+
+    def __init__(self, args: argparse.Namespace) -> None:
+        try:
+            self.file: SceneFile = read_scene(args.problem)
+        except ValueError as e:
+            raise ValueError(f"PROBLEM: {e}") from None
+        self.source = str(args.problem)
+        run = self.file.run
+        names = [m["name"] for m in _core.methods()]
+        self.method: str = args.method if args.method is not None else run.method
+        if self.method not in names:
+            raise ValueError(f"--method: expected one of {', '.join(names)}, got {self.method!r}")
+        dt = args.dt if args.dt is not None else run.dt
+        if dt is None:
+            raise ValueError("--dt: expected a time step [s] > 0 (or dt in the scene's [run]), got nothing")
+        self.dt: float = dt
+        if args.steps is not None:
+            self.steps: int = args.steps
+        else:
+            duration = args.duration if args.duration is not None else run.duration
+            if duration is None:
+                raise ValueError("--duration: expected a time span [s] (or --steps, or duration in the scene's [run]), "
+                                 "got nothing")
+            self.steps = round(duration / self.dt)
+            if self.steps < 1:
+                raise ValueError(f"--duration: expected a time span >= dt = {self.dt!r} s, got {duration!r}")
+        self.record_every: int = (args.record_every if args.record_every is not None else
+                                  max(run.record_every, -(-self.steps // MAX_DEFAULT_RECORDS)))
+        if args.animate:
+            raise ValueError(f"--animate: expected a problem file (scene files have no animation yet), "
+                             f"got the scene {args.problem!r}")
+        self.out = check_out_folder(args.out, SCENE_OUTPUTS)
+        self.progress = not args.no_progress
+
+
+def _run_record(plan: _ScenePlan, result: Any, columns: list[str]) -> dict[str, Any]:
+    """run.json: what was run and what came out (numbers, null for not-a-number)."""
+    from . import __version__
+
+    def number(x: float) -> float | None:
+        return float(x) if math.isfinite(x) else None
+
+    return {
+        "rigiddyn": __version__,
+        "scene": plan.file.name,
+        "source": plan.source,
+        "method": plan.method,
+        "dt [s]": plan.dt,
+        "steps": plan.steps,
+        "record_every": plan.record_every,
+        "records": int(len(result.t)),
+        "t_end [s]": number(result.t[-1]),
+        "bodies": list(result.body_names),
+        "elements": list(result.elements),
+        "diverged": bool(result.diverged),
+        "unconverged_steps": int(result.unconverged_steps),
+        "elapsed_seconds [s]": result.elapsed_seconds,
+        "columns": columns,
+        "quaternion order": "x, y, z, w",
+    }
+
+
+def _write(plan: _ScenePlan, result: Any) -> list[Path]:
+    from .scene_result import columns
+
+    table = columns(result)
+    record = _run_record(plan, result, list(table))
+    csv_path, npz_path = plan.out / "trajectory.csv", plan.out / "trajectory.npz"
+    with open(csv_path, "w", newline="") as f:  # numbers by repr: read back to the same doubles
+        writer = csv.writer(f)
+        writer.writerow(table)
+        writer.writerows(zip(*(values.tolist() for values in table.values())))
+    with open(npz_path, "wb") as f:
+        arrays: dict[str, Any] = dict(table)
+        np.savez(f, **arrays)
+    written = [csv_path, npz_path]
+    try:
+        import pyarrow as pa
+        import pyarrow.parquet as pq
+
+        parquet = pa.table(table).replace_schema_metadata({b"rigiddyn": json.dumps(record).encode()})
+        pq.write_table(parquet, plan.out / "trajectory.parquet")
+        written.append(plan.out / "trajectory.parquet")
+    except ImportError:
+        print("rigiddyn simulate: no Parquet file: it needs pyarrow (pip install 'rigiddyn[parquet]')", file=sys.stderr)
+    (plan.out / "run.json").write_text(json.dumps(record, indent=2) + "\n")
+    written.append(plan.out / "run.json")
+    return written
+
+
+def _summary(result: Any) -> str:
+    E = np.asarray(result.total_energy)
+    drift = f"{(E[-1] - E[0]) / abs(E[0]):+.2e}" if E[0] != 0 else f"{E[-1] - E[0]:+.2e} J (absolute)"
+    return (f"{len(result.t)} records of {len(result.body_names)} bodies to t = {result.t[-1]:.6g} s in "
+            f"{result.elapsed_seconds:.3g} s; relative drift of the total energy {drift}")
+
+
+def run_scene_simulate(args: argparse.Namespace) -> int:
+    """The `simulate` command of a scene file: check everything, run, write; returns the exit code (0:
+    done, 1: the state became non-finite (the records up to there are written), 2: bad input, 130:
+    interrupted)."""
+    from .simulate_command import run_and_report
+
+    try:
+        plan = _ScenePlan(args)
+    except (ValueError, TypeError) as e:
+        print(f"rigiddyn simulate: {e}", file=sys.stderr)
+        return 2
+    if not args.no_plot:
+        print("rigiddyn simulate: no plot for a scene file (the plot draws one body): tables only", file=sys.stderr)
+    return run_and_report(plan.steps, plan.progress,
+                          lambda update: _core.simulate(plan.file.scene, plan.file.initial, dt=plan.dt,
+                                                        steps=plan.steps, method=plan.method,
+                                                        record_every=plan.record_every, progress=update),
+                          _summary, lambda result: _write(plan, result))

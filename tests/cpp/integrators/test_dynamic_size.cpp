@@ -1,0 +1,164 @@
+// Every integrator runs on a model whose Coordinates and Tangent are Eigen::VectorXd (a scene,
+// issue 11: the integrators are written once for the one-body models and SceneModel). The test model
+// wraps a fixed-size one-body model: each member converts y to the fixed size, calls the wrapped
+// member and converts back, so the model arithmetic is the wrapped model's and only the integrators'
+// own work (stage sums, copies, the fixed-point iteration, the loads_kick/free_flow compositions)
+// runs on dynamic-size vectors. A run must then equal the fixed-size run bitwise, for every method.
+#include "rigiddyn/integrators/method.hpp"
+#include "rigiddyn/models/particle.hpp"
+#include "rigiddyn/models/planar_body.hpp"
+#include "rigiddyn/models/rigid_body.hpp"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+
+namespace {
+
+using namespace rigiddyn;
+
+// The model interface (models/model_interface.hpp) of `Fixed` on Eigen::VectorXd.
+template <class Fixed>
+class DynamicSize {
+ public:
+  using Coordinates = Eigen::VectorXd;
+  using Tangent = Eigen::VectorXd;
+
+  explicit DynamicSize(const Fixed& model) : model_(model) {}
+
+  Coordinates rate(const Coordinates& y) const { return model_.rate(fixed(y)); }
+  static void project(Coordinates& y) { apply(y, [](auto& f) { Fixed::project(f); }); }
+  Tangent velocity(const Coordinates& y) const { return model_.velocity(fixed(y)); }
+  static Coordinates retract(const Coordinates& y, const Tangent& theta) { return Fixed::retract(fixed(y), fixed_tangent(theta)); }
+  Tangent velocity_at(const Coordinates& y, const Tangent& theta) const {
+    return model_.velocity_at(fixed(y), fixed_tangent(theta));
+  }
+  static Tangent dexp_inv(const Tangent& theta, const Tangent& xi) { return Fixed::dexp_inv(fixed_tangent(theta), fixed_tangent(xi)); }
+  void kick(Coordinates& y, double h) const { apply(y, [&](auto& f) { model_.kick(f, h); }); }
+  void kick_implicit_gyroscopic(Coordinates& y, double h) const { apply(y, [&](auto& f) { model_.kick_implicit_gyroscopic(f, h); }); }
+  void drift(Coordinates& y, double h) const { apply(y, [&](auto& f) { model_.drift(f, h); }); }
+  double loads_kick(Coordinates& y, double h) const {
+    double kicked = 0.0;
+    apply(y, [&](auto& f) { kicked = model_.loads_kick(f, h); });
+    return kicked;
+  }
+  template <class Rotation>
+  void free_flow(Coordinates& y, double h) const {
+    apply(y, [&](auto& f) { model_.template free_flow<Rotation>(f, h); });
+  }
+  // the hook only where the wrapped model has it (else ImplicitMidpoint's fixed point runs on VectorXd)
+  template <class M = Fixed, std::enable_if_t<has_implicit_midpoint_newton<M>::value, int> = 0>
+  bool implicit_midpoint_newton(Coordinates& y, double h) const {
+    bool converged = false;
+    apply(y, [&](auto& f) { converged = model_.implicit_midpoint_newton(f, h); });
+    return converged;
+  }
+
+ private:
+  static typename Fixed::Coordinates fixed(const Coordinates& y) {
+    EXPECT_EQ(y.size(), typename Fixed::Coordinates().size());
+    return y;
+  }
+  static typename Fixed::Tangent fixed_tangent(const Tangent& x) {
+    EXPECT_EQ(x.size(), typename Fixed::Tangent().size());
+    return x;
+  }
+  template <class F>
+  static void apply(Coordinates& y, F&& f) {
+    typename Fixed::Coordinates y_fixed = fixed(y);
+    f(y_fixed);
+    y = y_fixed;
+  }
+
+  Fixed model_;
+};
+
+static_assert(has_implicit_midpoint_newton<DynamicSize<RigidBodyModel<FullEuler>>>::value);
+static_assert(!has_implicit_midpoint_newton<DynamicSize<ParticleModel>>::value);
+
+// n steps of Integrator from y0 on `model`; the message of the first exception (ExactFreeFlow under a torque)
+template <class Integrator, class Model>
+std::string run(const Model& model, typename Model::Coordinates& y, int n, double h) {
+  try {
+    for (int k = 0; k < n; ++k) Integrator::step(model, y, h);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+template <class Fixed>
+void expect_dynamic_equals_fixed(const Fixed& model, const typename Fixed::Coordinates& y0, const std::string& name) {
+  for (const MethodInfo& info : method_table()) {
+    visit_method(info.method, [&](auto integrator) {
+      using Integrator = decltype(integrator);
+      typename Fixed::Coordinates y_fixed = y0;
+      Eigen::VectorXd y_dynamic = y0;
+      const std::string fixed_error = run<Integrator>(model, y_fixed, 50, 0.02);
+      const std::string dynamic_error = run<Integrator>(DynamicSize<Fixed>(model), y_dynamic, 50, 0.02);
+      EXPECT_EQ(fixed_error, dynamic_error) << name << ' ' << info.name;
+      ASSERT_EQ(y_dynamic.size(), y_fixed.size());
+      // bitwise: the same arithmetic in the same order on both (see the top of this file)
+      for (Eigen::Index i = 0; i < y_fixed.size(); ++i) EXPECT_EQ(y_dynamic[i], y_fixed[i]) << name << ' ' << info.name << " y[" << i << ']';
+      if (fixed_error.empty()) {
+        EXPECT_NE(y_fixed, y0) << name << ' ' << info.name;  // it moved
+      } else {                                               // 'exact' refused a torque at the first step
+        EXPECT_EQ(y_fixed, y0) << name << ' ' << info.name;
+      }
+    });
+  }
+}
+
+ComLoads some_loads(bool torque) {
+  ComLoads loads;
+  loads.f_W = Eigen::Vector3d(0.7, -1.3, 2.1);
+  loads.f_B = Eigen::Vector3d(-0.4, 0.9, 0.5);
+  if (torque) loads.tau_W = Eigen::Vector3d(-0.1, 0.45, -0.25), loads.tau_B = Eigen::Vector3d(0.3, -0.2, 0.35);
+  return loads;
+}
+
+RigidBodyCoordinates rigid_y0() {
+  RigidBodyState s;
+  s.p_W = Eigen::Vector3d(0.1, -0.2, 0.3);
+  s.q_WB = Eigen::Quaterniond(0.9, 0.1, 0.2, 0.3).normalized();
+  s.v_W = Eigen::Vector3d(1.0, -0.5, 2.0);
+  s.w_B = Eigen::Vector3d(0.3, 2.0, -0.7);
+  return to_coordinates(s);
+}
+
+template <class Euler>
+void expect_rigid(const Euler& euler, const std::string& name) {
+  for (const bool torque : {false, true}) {
+    RigidBodyModel<Euler> model(1.5, euler, Eigen::Vector3d(0.0, 0.0, -9.81));
+    model.set_loads(some_loads(torque));
+    expect_dynamic_equals_fixed(model, rigid_y0(), name + (torque ? " with torques" : " forces only"));
+  }
+}
+
+TEST(DynamicSize, ParticleStepsAsTheFixedSizeModel) {
+  ParticleModel model(Particle(2.0), Eigen::Vector3d(0.0, 0.0, -9.81));
+  model.set_loads(some_loads(false));
+  ParticleCoordinates y0;
+  y0 << 0.1, -0.2, 0.3, 1.0, -0.5, 2.0, 0.0;
+  expect_dynamic_equals_fixed(model, y0, "particle");
+}
+
+TEST(DynamicSize, PlanarBodyStepsAsTheFixedSizeModel) {
+  PlanarBodyModel model(PlanarBody(2.0, 0.6), Eigen::Vector3d(0.0, -9.81, 0.0));
+  model.set_loads(some_loads(true));
+  PlanarBodyCoordinates y0;
+  y0 << 0.1, -0.2, 0.4, 1.0, -0.5, 1.7, 0.0;
+  expect_dynamic_equals_fixed(model, y0, "planar body");
+}
+
+TEST(DynamicSize, RigidBodyStepsAsTheFixedSizeModelInEveryEulerForm) {
+  Eigen::Matrix3d full;
+  full << 1.1, 0.12, -0.05, 0.12, 2.3, 0.08, -0.05, 0.08, 2.9;
+  expect_rigid(SphericalEuler(0.8), "sphere");
+  expect_rigid(PrincipalEuler(Eigen::Vector3d(1.1, 2.3, 2.9)), "principal");
+  expect_rigid(FullEuler(full), "full");
+}
+
+}  // namespace

@@ -1,0 +1,316 @@
+// SceneModel (scene/scene_model.hpp) and compile_scene (scene/compile.hpp): independent bodies in one
+// scene move as they do alone, under every method; a particle carries no attitude; N-body momentum is
+// conserved to round-off; every refusal and warning of compile and of the scene's simulate/step.
+#include <gtest/gtest.h>
+
+#include "rigiddyn/scene/simulate_scene.hpp"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace rigiddyn {
+namespace {
+
+// EXPECT_THAT(text, HasSubstr(part)) without gmock
+#define EXPECT_CONTAINS(text, part) EXPECT_NE(std::string(text).find(part), std::string::npos) << (text)
+
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+// Every method that steps (Method::exact is refused for more than one body).
+std::vector<Method> stepping_methods() {
+  std::vector<Method> out;
+  for (const MethodInfo& info : method_table()) {
+    if (info.method != Method::exact) out.push_back(info.method);
+  }
+  return out;
+}
+
+RigidBodyState tumbling_state() {
+  RigidBodyState s;
+  s.p_W = Eigen::Vector3d(0.5, -1.0, 2.0);
+  s.q_WB = Eigen::Quaterniond(Eigen::AngleAxisd(0.4, Eigen::Vector3d(1.0, -1.0, 2.0).normalized()));
+  s.v_W = Eigen::Vector3d(0.2, 0.0, -0.1);
+  s.w_B = Eigen::Vector3d(0.3, 1.0, 0.2);
+  return s;
+}
+
+// A body-fixed force and couple on for t in [t_start, t_end) [s].
+AppliedLoad window(double t_start, double t_end) {
+  AppliedLoad load{Eigen::Vector3d(0.1, -0.3, 0.2), Eigen::Vector3d(0.3, -0.2, 0.4), Frame::body};
+  load.t_start = t_start;
+  load.t_end = t_end;
+  return load;
+}
+
+// Largest difference between body b's columns of a scene run and a one-body trajectory, over all records.
+double largest_difference(const SceneSimulation& scene, std::size_t b, const Trajectory& one) {
+  const std::size_t nb = static_cast<std::size_t>(scene.body_count);
+  double d = 0.0;
+  EXPECT_EQ(scene.size(), one.size());
+  for (std::size_t r = 0; r < std::min(scene.size(), one.size()); ++r) {
+    for (int i = 0; i < 3; ++i) {
+      d = std::max(d, std::abs(scene.p_W[3 * (r * nb + b) + i] - one.p_W[3 * r + i]));
+      d = std::max(d, std::abs(scene.v_W[3 * (r * nb + b) + i] - one.v_W[3 * r + i]));
+      d = std::max(d, std::abs(scene.w_B[3 * (r * nb + b) + i] - one.w_B[3 * r + i]));
+    }
+    for (int i = 0; i < 4; ++i) d = std::max(d, std::abs(scene.q_WB[4 * (r * nb + b) + i] - one.q_WB[4 * r + i]));
+  }
+  return d;
+}
+
+// Three independent bodies (rigid under a scheduled window of loads that switches inside a step,
+// particle and planar body under gravity in their own frames) in one scene give, for every method, the
+// runs each body makes alone on today's one-body models.
+TEST(SceneModel, IndependentBodiesMoveAsTheyDoAlone) {
+  const RigidBody rigid(2.0, Eigen::Vector3d(1.0, 2.0, 3.0));
+  const Particle particle(0.7);
+  const PlanarBody planar(1.5, 0.4);
+  const Eigen::Vector3d g_W(0.0, 0.0, -9.81), g_plane(0.3, -9.81, 0.0);
+  Scene scene;
+  scene.bodies = {rigid, particle, planar};
+  scene.elements.push_back(ScheduledLoads{0, {window(0.0125, 0.1037)}, Eigen::Vector3d::Zero()});
+  scene.elements.push_back(UniformGravity{g_W, {1}});
+  scene.elements.push_back(UniformGravity{g_plane, {2}});
+  ParticleState p0{Eigen::Vector3d(1.0, 2.0, 3.0), Eigen::Vector3d(-0.5, 0.25, 4.0)};
+  PlanarBodyState s0{Eigen::Vector2d(0.3, -0.2), 0.7, Eigen::Vector2d(1.0, 2.0), -1.5};
+  for (const Method method : stepping_methods()) {
+    SCOPED_TRACE(method_info(method).name);
+    SimulationOptions o;
+    o.method = method;
+    o.dt = 0.01;
+    o.steps = 200;
+    const SceneSimulation run = simulate(scene, {tumbling_state(), p0, s0}, o);
+    SimulationOptions alone = o;
+    alone.loads = {window(0.0125, 0.1037)};
+    const Trajectory a = simulate(rigid, tumbling_state(), alone);
+    // the scene splits every body's step at the switch times: so do the runs alone (a zero load with the
+    // same window), else the order-1 methods differ by O(dt²) there
+    AppliedLoad same_switches;
+    same_switches.t_start = 0.0125, same_switches.t_end = 0.1037;
+    alone.loads = {same_switches};
+    alone.gravity_W = g_W;
+    const Trajectory b = simulate(particle, p0, alone);
+    alone.gravity_W = g_plane;
+    const Trajectory c = simulate(planar, s0, alone);
+    // Bound: the two computations differ only by the association of a few products per step (e.g.
+    // (h/m) f against h (f/m), the kick of the exact work formula against today's kick), ≤ 4 ε |y| per
+    // component and step (|y| ≤ 60 here: p, v under gravity over 2 s). The difference made at a step reaches
+    // the end through the flow's Jacobian, ≤ 10 over 2 s for these motions (|ω| ≤ 1.1 rad/s, Lyapunov rate
+    // ≤ |ω|). The implicit midpoint's two solvers (Newton on the rigid body alone, the fixed point in the
+    // scene) each stop at a relative correction of 1e-14: 2e-14 |y| per step instead of 4 ε. Over N = 200 steps:
+    const double per_step = method == Method::implicit_midpoint ? 2e-14 : 4.0 * kEps;
+    const double bound = 200.0 * per_step * 60.0 * 10.0;
+    EXPECT_LE(largest_difference(run, 0, a), bound);
+    EXPECT_LE(largest_difference(run, 1, b), bound);
+    EXPECT_LE(largest_difference(run, 2, c), bound);
+  }
+}
+
+// Particles carry no attitude: y holds (p, v) for a particle, 13 numbers for a rigid body, then t and
+// one work slot per element; the records give a particle q = identity and ω = 0.
+TEST(SceneModel, AParticleCostsNoAttitude) {
+  Scene scene;
+  scene.bodies = {Particle(1.0), RigidBody(1.0, Eigen::Vector3d(1.0, 1.0, 1.0)), Particle(2.0), PlanarBody(1.0, 1.0)};
+  scene.elements.push_back(UniformGravity{Eigen::Vector3d(0.0, 0.0, -9.81), {0, 1, 2}});
+  scene.elements.push_back(MutualGravity{1.0, 0.0, {}});
+  const CompiledScene compiled = compile_scene(scene, Method::rk4);
+  EXPECT_FALSE(compiled.one_body_path());
+  EXPECT_EQ(compiled.model().coordinate_count(), 6 + 13 + 6 + 6 + 1 + 2);
+  EXPECT_EQ(compiled.model().tangent_count(), 6 + 12 + 6 + 6 + 1 + 2);
+  ParticleState p;
+  p.p_W = Eigen::Vector3d(3.0, 0.0, 0.0);
+  RigidBodyState r;
+  r.w_B = Eigen::Vector3d(0.1, 0.2, 0.3);
+  ParticleState p2;
+  p2.p_W = Eigen::Vector3d(0.0, 4.0, 0.0);
+  PlanarBodyState s;
+  s.p_W = Eigen::Vector2d(-2.0, -2.0);
+  SimulationOptions o;
+  o.steps = 3;
+  const SceneSimulation run = simulate(compiled, {p, r, p2, s}, o);
+  for (std::size_t rec = 0; rec < run.size(); ++rec) {
+    for (const std::size_t b : {0u, 2u}) {
+      EXPECT_EQ(run.q_WB[4 * (4 * rec + b) + 3], 1.0);
+      for (int i = 0; i < 3; ++i) {
+        EXPECT_EQ(run.q_WB[4 * (4 * rec + b) + i], 0.0);
+        EXPECT_EQ(run.w_B[3 * (4 * rec + b) + i], 0.0);
+      }
+    }
+  }
+}
+
+// MutualGravity between particles and rigid bodies: Σ m v is conserved to round-off by every method
+// (the pair forces cancel in every kick and every stage; the methods are linear in the forces).
+TEST(SceneModel, NBodyMomentumIsConservedToRoundoff) {
+  Scene scene;
+  scene.bodies = {Particle(1.0), Particle(2.0), Particle(0.5), RigidBody(1.5, Eigen::Vector3d(1.0, 2.0, 3.0)),
+                  RigidBody(0.8, Eigen::Vector3d(0.5, 0.5, 0.5))};
+  scene.elements.push_back(MutualGravity{1.0, 0.05, {}});
+  std::vector<BodyState> initial;
+  const Eigen::Vector3d positions[] = {{1.0, 0.0, 0.0}, {-1.0, 0.5, 0.0}, {0.0, -1.0, 0.3}, {0.3, 0.2, 1.0}, {-0.4, -0.3, -1.0}};
+  const Eigen::Vector3d velocities[] = {{0.0, 0.5, 0.1}, {0.1, -0.3, 0.0}, {0.4, 0.0, -0.2}, {0.0, 0.0, 0.3}, {-0.2, 0.1, 0.0}};
+  for (int b = 0; b < 5; ++b) {
+    if (b < 3) {
+      initial.push_back(ParticleState{positions[b], velocities[b]});
+    } else {
+      RigidBodyState r;
+      r.p_W = positions[b], r.v_W = velocities[b], r.w_B = Eigen::Vector3d(0.2, -0.1, 0.5);
+      initial.push_back(r);
+    }
+  }
+  for (const Method method : stepping_methods()) {
+    SCOPED_TRACE(method_info(method).name);
+    SimulationOptions o;
+    o.method = method;
+    o.dt = 1e-3;
+    o.steps = 500;
+    o.record_every = 500;
+    const SceneSimulation run = simulate(scene, initial, o);
+    ASSERT_EQ(run.size(), 2u);
+    // Bound: every step updates each v_b by a Δv_b whose Σ m_b Δv_b is 0 up to the rounding of each term,
+    // ≤ 4 ε m_b |v_b| per body and step (|v| ≤ 3 m/s here, Σ m = 5.8 kg); the implicit midpoint's fixed point
+    // stops at a relative correction of 1e-14 instead. Over 500 steps:
+    const double per_step = method == Method::implicit_midpoint ? 1e-14 : 4.0 * kEps;
+    const double bound = 500.0 * per_step * 5.8 * 3.0;
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(run.linear_momentum_W[3 + i], run.linear_momentum_W[i], bound);
+  }
+}
+
+Scene two_particles() {
+  Scene scene;
+  scene.bodies = {Particle(1.0), Particle(2.0)};
+  return scene;
+}
+
+std::string compile_error(const Scene& scene, Method method) {
+  try {
+    compile_scene(scene, method);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+TEST(CompileScene, RefusesAnEmptySceneAndBadNames) {
+  EXPECT_EQ(compile_error(Scene{}, Method::rk4), "bodies: expected at least one body, got none");
+  Scene scene = two_particles();
+  scene.body_names = {"a"};
+  EXPECT_EQ(compile_error(scene, Method::rk4), "body_names: expected 2 names (one per body) or none, got 1");
+  scene.body_names = {"body1", ""};  // "" is named body1 too
+  EXPECT_EQ(compile_error(scene, Method::rk4), "body_names[1]: expected a name no other body has, got \"body1\"");
+}
+
+TEST(CompileScene, RefusesExactForAnythingButOneTorqueFreeBody) {
+  EXPECT_CONTAINS(compile_error(two_particles(), Method::exact), ("method: 'exact' needs a torque-free body (no force model): expected one body and no element, got 2 "
+                        "bodies and 0 elements"));
+  Scene scene;
+  scene.bodies = {RigidBody(1.0, Eigen::Vector3d(1.0, 2.0, 3.0))};
+  scene.elements.push_back(UniformGravity{Eigen::Vector3d(0.0, 0.0, -1.0), {}});
+  EXPECT_CONTAINS(compile_error(scene, Method::exact), ("got 1 body and 1 element (UniformGravity)"));
+  scene.elements.clear();
+  EXPECT_NO_THROW(compile_scene(scene, Method::exact));
+}
+
+TEST(CompileScene, WarnsOfVelocityDependentElementsUnderKicks) {
+  Scene scene = two_particles();
+  scene.elements.push_back(UniformGravity{Eigen::Vector3d(0.0, 0.0, -1.0), {}});
+  scene.elements.push_back(Drag{0.1, 0.0, 0.0, 0.0, {}});
+  for (const Method method : {Method::splitting_dlm, Method::splitting_dlm_yoshida4, Method::exact_flow_kick}) {
+    const CompiledScene compiled = compile_scene(scene, method);
+    ASSERT_EQ(compiled.warnings().size(), 1u);
+    EXPECT_CONTAINS(compiled.warnings()[0], ("elements[1] (Drag) is velocity-dependent"));
+    EXPECT_CONTAINS(compiled.warnings()[0], ("order 1 in the damping, energy behaviour not symplectic"));
+  }
+  for (const Method method : {Method::rk4, Method::rkmk4, Method::implicit_midpoint, Method::semi_implicit_euler}) {
+    EXPECT_TRUE(compile_scene(scene, method).warnings().empty());
+  }
+}
+
+TEST(CompileScene, NamesTheBadFieldOfAnElement) {
+  Scene scene = two_particles();
+  scene.elements.push_back(UniformGravity{Eigen::Vector3d(0.0, 0.0, -1.0), {}});
+  scene.elements.push_back(UniformGravity{Eigen::Vector3d(0.0, 0.0, -1.0), {0, 2}});
+  EXPECT_CONTAINS(compile_error(scene, Method::rk4), ("elements[1].bodies[1]: expected a body index in [0, 2), got 2"));
+  scene.elements.pop_back();
+  scene.elements.push_back(UniformGravity{Eigen::Vector3d(0.0, NAN, -1.0), {}});
+  EXPECT_CONTAINS(compile_error(scene, Method::rk4), ("elements[1].g_W: expected finite values"));
+  scene.elements.pop_back();
+  AppliedLoad torque;
+  torque.torque = Eigen::Vector3d(0.0, 0.0, 1.0);
+  scene.elements.push_back(ScheduledLoads{1, {torque}, Eigen::Vector3d::Zero()});
+  EXPECT_EQ(compile_error(scene, Method::rk4),
+            "elements[1].loads[0].torque: expected zero (a particle takes no torque), got [0; 0; 1]");
+  scene.elements.back() = ScheduledLoads{1, {}, Eigen::Vector3d(0.1, 0.0, 0.0)};
+  EXPECT_EQ(compile_error(scene, Method::rk4), "elements[1].point_B: expected zero (a particle is a point), got [0.1; 0; 0]");
+  scene.elements.back() = ScheduledLoads{2, {}, Eigen::Vector3d::Zero()};
+  EXPECT_EQ(compile_error(scene, Method::rk4), "elements[1].body: expected a body index in [0, 2), got 2");
+  AppliedLoad bad;
+  bad.t_start = 1.0, bad.t_end = 0.5;
+  scene.elements.back() = ScheduledLoads{0, {bad}, Eigen::Vector3d::Zero()};
+  EXPECT_CONTAINS(compile_error(scene, Method::rk4), ("elements[1].loads[0]"));
+  Scene planar;
+  planar.bodies = {PlanarBody(1.0, 1.0)};
+  AppliedLoad out_of_plane;
+  out_of_plane.force = Eigen::Vector3d(1.0, 0.0, 1.0);
+  planar.elements.push_back(ScheduledLoads{0, {out_of_plane}, Eigen::Vector3d::Zero()});
+  EXPECT_EQ(compile_error(planar, Method::rk4),
+            "elements[0].loads[0].force: expected a force in the xy plane (z = 0), got [1; 0; 1]");
+  planar.elements.back() = ScheduledLoads{0, {}, Eigen::Vector3d(0.0, 0.0, 0.5)};
+  EXPECT_EQ(compile_error(planar, Method::rk4),
+            "elements[0].point_B: expected a point in the body's xy plane (z = 0), got [0; 0; 0.5]");
+}
+
+std::string simulate_error(const Scene& scene, const std::vector<BodyState>& initial, const SimulationOptions& o) {
+  try {
+    simulate(scene, initial, o);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+TEST(SimulateScene, RefusesOneBodyOptionsAndBadStates) {
+  const Scene scene = two_particles();
+  const std::vector<BodyState> initial{ParticleState{}, ParticleState{}};
+  SimulationOptions o;
+  o.steps = 2;
+  EXPECT_EQ(simulate_error(scene, initial, o), "(no error)");
+  SimulationOptions with_loads = o;
+  with_loads.loads.push_back(AppliedLoad{});
+  EXPECT_EQ(simulate_error(scene, initial, with_loads),
+            "loads: expected none in the options of a scene (declare a ScheduledLoads element), got 1 loads");
+  SimulationOptions with_gravity = o;
+  with_gravity.gravity_W = Eigen::Vector3d(0.0, 0.0, -9.81);
+  EXPECT_EQ(simulate_error(scene, initial, with_gravity),
+            "gravity: expected zero in the options of a scene (declare a UniformGravity element), got [0; 0; -9.81]");
+  EXPECT_EQ(simulate_error(scene, {ParticleState{}}, o), "initial: expected 2 body states (one per body), got 1");
+  EXPECT_EQ(simulate_error(scene, {ParticleState{}, RigidBodyState{}}, o),
+            "initial[1]: expected a ParticleState (body 1 'body1' is a particle), got a RigidBodyState");
+  ParticleState bad;
+  bad.v_W.x() = NAN;
+  EXPECT_CONTAINS(simulate_error(scene, {ParticleState{}, bad}, o), ("initial[1].v_W: expected finite values"));
+  SimulationOptions bad_dt = o;
+  bad_dt.dt = -1.0;
+  EXPECT_EQ(simulate_error(scene, initial, bad_dt), "dt: expected a finite number > 0, got -1");
+  const CompiledScene compiled = compile_scene(scene, Method::rk4);
+  SimulationOptions other = o;
+  other.method = Method::rkmk4;
+  try {
+    simulate(compiled, initial, other);
+    ADD_FAILURE() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "method: expected the method the scene was compiled for ('rk4'), got 'rkmk4'");
+  }
+  try {
+    step(compiled, {ParticleState{}}, o);
+    ADD_FAILURE() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "state: expected 2 body states (one per body), got 1");
+  }
+}
+
+}  // namespace
+}  // namespace rigiddyn
