@@ -404,3 +404,20 @@ def test_an_exception_in_progress_stops_a_scene_run_and_propagates():
             return
         steps *= 4
     pytest.fail("progress was never called")
+
+
+def test_exact_runs_todays_one_body_problem_as_a_scene():
+    """'exact' compiles for one body under uniform gravity (the closed form and a constant force, as
+    simulate(body, ...) runs it) and gives today's numbers bitwise (the one-body path)."""
+    body = rd.RigidBody(2.0, [1.0, 2.0, 3.0])
+    state = rd.RigidBodyState(v_W=[1.0, 0.0, 2.0], w_B=[0.1, 1.0, 0.2])
+    scene = rd.Scene()
+    scene.add_body(body)
+    scene.add(rd.UniformGravity(g_W=[0.0, 0.0, -9.81]))
+    got = rd.simulate(scene.compile("exact"), [state], dt=0.01, steps=50)
+    want = rd.simulate(body, state, dt=0.01, steps=50, method="exact", gravity=[0.0, 0.0, -9.81])
+    for name in ("p_W", "q_WB", "v_W", "w_B"):
+        np.testing.assert_array_equal(getattr(got, name)[:, 0], getattr(want, name))
+    scene.add(rd.Drag(linear=0.1))
+    with pytest.raises(ValueError, match=r"^method: 'exact' needs one torque-free body"):
+        scene.compile("exact")
