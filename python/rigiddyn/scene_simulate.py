@@ -151,7 +151,8 @@ def _write(plan: _ScenePlan, result: Any) -> list[Path]:
 def _summary(result: Any) -> str:
     E = np.asarray(result.total_energy)
     drift = f"{(E[-1] - E[0]) / abs(E[0]):+.2e}" if E[0] != 0 else f"{E[-1] - E[0]:+.2e} J (absolute)"
-    return (f"{len(result.t)} records of {len(result.body_names)} bodies to t = {result.t[-1]:.6g} s in "
+    n = len(result.body_names)
+    return (f"{len(result.t)} records of {n} {'body' if n == 1 else 'bodies'} to t = {result.t[-1]:.6g} s in "
             f"{result.elapsed_seconds:.3g} s; relative drift of the total energy {drift}")
 
 
