@@ -17,6 +17,13 @@ the initial separation) with and without softening; a spring chain with masses 1
 particles and of rigid cubes joined at their faces (the springs turn them). The pytest subset is
 tests/python/test_extremes_scene.py.
 
+Issue 12's models (in the scene table, against their exact reference where the scene is one's case,
+rigiddyn.scene_precision.exact_reference; the reference column says which): the shipped `pendulum`,
+`heavy_top`, `foucault` and `rocket`, and their extremes: the pendulum next to the separatrix
+(theta0 = pi - 1e-6) and spun over the top, the heavy top at dt |w| from 0.02 to 2 and pinned 1e4
+radii of gyration from its centre of mass (digits of I_C lost), the rocket burning to 1 % of its mass,
+free particles seen from a frame turning at dt Omega = 0.5.
+
 The document records how it was made (command, date, machine, rigiddyn revision) and a digest of its
 INPUTS; tests/python/test_generated_docs.py fails once any input differs from what the document was
 made from, and names the command that regenerates it (REGENERATE).
@@ -42,7 +49,10 @@ ROOT = Path(__file__).resolve().parents[2]
 # the scene sweep, the scene layer and its bindings)
 INPUTS = ["bench/python/bench_extremes.py", *SIMULATION_INPUTS, "python/rigiddyn/scene_precision.py",
           "cpp/include/rigiddyn/scene/*", "cpp/include/rigiddyn/scene/elements/*", "cpp/src/scene/*",
-          "cpp/bindings/bind_scene*.cpp", "cpp/bindings/scene_run.hpp"]
+          "cpp/bindings/bind_scene*.cpp", "cpp/bindings/scene_run.hpp",
+          # issue 12: the fast one-body models, the bindings of the new bodies and references, the shipped scenes
+          "cpp/include/rigiddyn/scene/fast/*", "cpp/bindings/bind_pivoted.cpp", "cpp/bindings/pivoted.hpp",
+          "cpp/bindings/bind_exact_dynamics.cpp", "python/rigiddyn/scene_file.py", "python/rigiddyn/scenes/*.toml"]
 REGENERATE = ("cmake --build build/<dir> --target _core && "
               "PYTHONPATH=build/<dir>/python python3 bench/python/bench_extremes.py  (a few minutes)")
 
@@ -105,6 +115,68 @@ def rigid_chain(masses=(1e-6, 1.0, 1e6), side=0.1, stiffness=1.0):
     return scene, states
 
 
+def shipped(name):
+    """(scene, initial states), dt [s] and steps of a shipped scene's [run]."""
+    scene, initial, run = rigiddyn.load_scene(name)
+    return (scene, initial), run.dt, run.steps
+
+
+def pendulum(theta, omega=0.0):
+    """The shipped pendulum's rod (1 m, 1 kg, pinned at one end, gravity along -y) from theta [rad], omega [rad/s]."""
+    scene = rigiddyn.Scene()
+    scene.add_body(rigiddyn.PivotedPlanarBody(1.0, 1.0 / 12.0, (0.0, -0.5)), name="rod")
+    scene.add(rigiddyn.UniformGravity(g_W=(0.0, -9.81, 0.0)))
+    return scene, [rigiddyn.PivotedPlanarBodyState(theta=theta, omega=omega)]
+
+
+def far_pivot(distance):
+    """A symmetric top (1 kg, I_C = diag(0.004, 0.004, 0.006)) pinned `distance` [m] from its centre of
+    mass on its axis, spinning at 100 rad/s, tilted 30 degrees, under gravity."""
+    scene = rigiddyn.Scene()
+    body = rigiddyn.RigidBody(1.0, np.diag([0.004, 0.004, 0.006]))
+    scene.add_body(rigiddyn.PivotedBody(body, (0.0, 0.0, distance)), name="top")
+    scene.add(rigiddyn.UniformGravity())
+    half = math.radians(15.0)
+    return scene, [rigiddyn.PivotedBodyState(q_WB=(math.sin(half), 0.0, 0.0, math.cos(half)), w_B=(0.0, 0.0, 100.0))]
+
+
+def carousel(rate=1.0):
+    """Two free particles seen from a frame turning at `rate` [rad/s] about (0.3, 0.4, 1)."""
+    scene = rigiddyn.Scene()
+    for i in range(2):
+        scene.add_body(rigiddyn.Particle(1.0 + i), name=f"p{i}")
+    scene.frame = rigiddyn.SceneFrame.rotating((0.3, 0.4, 1.0), rate)
+    return scene, [rigiddyn.ParticleState(p_W=(1.0, 0.5, 0.0), v_W=(0.1, 0.0, 0.2)),
+                   rigiddyn.ParticleState(p_W=(2.0, 0.5, -0.2), v_W=(0.1, -0.3, 0.2))]
+
+
+def rocket(burnt):
+    """The shipped rocket (200 kg, -2 kg/s, 2500 m/s, gravity) burning the fraction `burnt` of its mass."""
+    (scene, initial), _, _ = shipped("rocket")
+    return (scene, initial), burnt * 200.0 / 2.0
+
+
+def issue12_cases(small):
+    """Issue 12's models: the shipped scenes and their extremes, (group, case, (scene, initial), dt, steps)."""
+    n = 1000 if small else 20_000
+    out = []
+    for name in ("pendulum", "heavy_top", "foucault"):
+        scene, dt, steps = shipped(name)
+        out.append(("shipped", f"{name} (its [run] step)", scene, dt, min(n, steps)))
+    rocket_scene, burn = rocket(0.99)
+    out.append(("shipped", "rocket burning to 1 % of its mass", rocket_scene, burn / min(n, 6000), min(n, 6000)))
+    omega0 = math.sqrt(9.81 * 0.5 / (1.0 / 3.0))
+    out.append(("pendulum", "theta0 = pi - 1e-6 (next to the separatrix)", pendulum(math.pi - 1e-6), 1e-3, n))
+    out.append(("pendulum", "spun over the top (omega0 = 3 x the separatrix's)", pendulum(0.0, 6.0 * omega0), 1e-3, n))
+    for dtw in (0.02, 0.5, 2.0):
+        out.append(("heavy top", f"dt |w| = {dtw:g}", far_pivot(0.1), dtw / 100.0, n))
+    radius = math.sqrt(0.004)  # radius of gyration about a transverse axis [m]
+    out.append(("heavy top", "pinned 1e4 radii of gyration from C (~8 digits of I_C lost)", far_pivot(1e4 * radius),
+                2e-3, n))
+    out.append(("rotating frame", "free particles, dt Omega = 0.5", carousel(), 0.5, n))
+    return out
+
+
 def scene_cases(small):
     """(group, case, (scene, initial states), dt [s], steps)."""
     n = 1000 if small else 20_000
@@ -121,7 +193,7 @@ def scene_cases(small):
     for dt in (1e-4, 1e-2):
         out.append(("mass ratio", f"rigid cubes of 1e-6, 1, 1e6 kg joined at their faces, dt omega = {dt * cube_rate:.2g}",
                     rigid_chain(), dt, n))
-    return out
+    return out + issue12_cases(small)
 
 
 def cases(small):
@@ -209,21 +281,23 @@ def scene_cpu_ns_per_step(scene_and_initial, method, dt, steps):
 
 def scene_lines(small, methods, failures):
     """The scene table's lines; diverged runs without a StabilityWarning appended to failures."""
-    lines = ["| case | method | outcome | max position error [m] | max attitude error [rad] | energy error "
-             "| momentum error | CPU ns/step |", "|---|---|---|---|---|---|---|---|"]
+    lines = ["| case | reference | method | outcome | max position error [m] | max attitude error [rad] "
+             "| energy error | momentum error | CPU ns/step |", "|---|---|---|---|---|---|---|---|---|"]
     for group, case, scene, dt, steps in scene_cases(small):
         rows = measure_scene(scene, dt, steps, methods)
         for method in methods:
             r = rows[method]
+            reference = r["reference"].replace("richardson", "Richardson")
             if r["order_note"].startswith("not applicable"):
-                lines.append(f"| {group}: {case} ({steps} steps) | {method} | {r['order_note'][:90]} | | | | | |")
+                lines.append(f"| {group}: {case} ({steps} steps) | {reference} | {method} | {r['order_note'][:90]} "
+                             "| | | | | |")
                 continue
             cost = "-" if r["diverged"] else f"{scene_cpu_ns_per_step(scene, method, dt, steps):.0f}"
             if r["diverged"] and not r["stability"]:
                 failures.append(f"{case} / {method}: diverged without a StabilityWarning")
-            lines.append(f"| {group}: {case} ({steps} steps) | {method} | {outcome(r)} | {fmt(r['max_position_error'])} "
-                         f"| {fmt(r['max_attitude_error'])} | {fmt(r['energy_drift'])} | {fmt(r['momentum_drift'])} "
-                         f"| {cost} |")
+            lines.append(f"| {group}: {case} ({steps} steps) | {reference} | {method} | {outcome(r)} "
+                         f"| {fmt(r['max_position_error'])} | {fmt(r['max_attitude_error'])} | {fmt(r['energy_drift'])} "
+                         f"| {fmt(r['momentum_drift'])} | {cost} |")
     return lines
 
 
@@ -329,12 +403,18 @@ SCENES_HEADER = """## Scenes
 
 Every method on scenes of several bodies and force elements, against a Richardson-refined reference (the
 highest-order method the scene compiles without a warning, checked against another method family; see
-`python/rigiddyn/scene_precision.py`), measured with `rigiddyn.tradeoff`. Position and attitude errors
+`python/rigiddyn/scene_precision.py`) or, where the scene is the case of a closed form (the pendulum,
+the symmetric heavy top, the constant-thrust rocket, free particles in a rotating frame), against that
+exact solution (the reference column names it), measured with `rigiddyn.tradeoff`. Position and attitude errors
 are the largest over the bodies; energy error: max |E - E_ref| / max (T + |V|) of the reference; momentum
 error: the larger relative error of the total linear and angular momentum. Outcomes as above, with
 stability judged from the scene's linear modes (`rigiddyn.stability.scene_modes`: springs, gravity, drag),
 and **not applicable** where compiling the scene for the method refuses it (the reason given).
 An unsoftened close encounter has no linear warning at the start: its error grows at the pericentre.
+The last rows are issue 12's models: bodies pinned at a point, a frame turning with the Earth or a
+carousel, a rocket losing 99 % of its mass (docs/fixed_point_frames_mass.md). Energy error there: the
+Jacobi integral in a rotating frame; with a mass flow the energy is not conserved (the thrust works)
+and its error is measured against the exact reference's.
 """
 
 FOOTER = "Run time of the whole matrix: {elapsed:.1f} s on the machine above.\n"

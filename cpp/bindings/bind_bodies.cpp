@@ -15,6 +15,7 @@
 #include "bindings.hpp"
 #include "common_args.hpp"
 #include "numpy_io.hpp"
+#include "pivoted.hpp"
 #include "repr.hpp"
 #include "rigiddyn/check.hpp"
 #include "rigiddyn/dynamics/particle_dynamics.hpp"
@@ -612,6 +613,7 @@ void bind_dynamics_functions(py::module_& m) {
       "forward_dynamics",
       [](py::handle body, py::handle state, py::handle force, py::handle torque, py::handle point, py::handle frame_arg,
          py::handle gravity) {
+        if (is_pivoted(body)) return pivoted_forward_dynamics_py(body, state, force, torque, point, frame_arg, gravity);
         const Frame frame = as_frame(frame_arg);
         return dispatch(
             body, state,
@@ -649,12 +651,14 @@ void bind_dynamics_functions(py::module_& m) {
        "Newton: m a = f + m g; Euler: I alpha + w x I w = tau_G.\n"
        "PlanarBody: in-plane force (2,) [N] at point (2,) [m], torque [N m] about z, gravity (2,) [m/s^2]; "
        "returns a PlanarAcceleration (a_W (2,), alpha [rad/s^2]); I_zz alpha = tau_G.\n"
-       "Particle: force (3,) [N] in W (torque and point None, frame 'world'); returns a_W (3,) = force/m + g.")
+       "Particle: force (3,) [N] in W (torque and point None, frame 'world'); returns a_W (3,) = force/m + g.\n" +
+       pivoted_forward_dynamics_doc)
           .c_str());
 
   m.def(
       "inverse_dynamics",
       [](py::handle body, py::handle state, py::handle a_W, py::handle alpha_B, py::handle gravity) {
+        if (is_pivoted(body)) return pivoted_inverse_dynamics_py(body, state, a_W, alpha_B, gravity);
         return dispatch(
             body, state,
             [&](const RigidBody& b, const RigidBodyState& s) {
@@ -678,7 +682,7 @@ void bind_dynamics_functions(py::module_& m) {
                                    "inverse_dynamics f_W");
             });
       },
-      py::arg("body"), py::arg("state"), py::arg("a_W"), py::arg("alpha_B") = py::none(), py::arg("gravity") = py::none(),
+      py::arg("body"), py::arg("state"), py::arg("a_W") = py::none(), py::arg("alpha_B") = py::none(), py::arg("gravity") = py::none(),
       (std::string("The applied loads the motion requires, reduced to the centre of mass (undoes forward_dynamics).\n") +
        body_state_doc +
        "\ngravity: None (the default: no gravity), True = (0, 0, -9.81) m/s^2, or a vector [m/s^2] in W.\n"
@@ -687,7 +691,7 @@ void bind_dynamics_functions(py::module_& m) {
        "tau_B = I alpha_B + w_B x I w_B.\n"
        "PlanarBody: a_W (2,), alpha_B [rad/s^2] about z, gravity (2,); returns a PlanarWrench: f_W (2,) [N] in W "
        "and tau [N m] about z (unpacks as f_W, tau).\n"
-       "Particle: a_W (3,) (alpha_B None); returns f_W (3,) [N] in W = m (a_W - g).")
+       "Particle: a_W (3,) (alpha_B None); returns f_W (3,) [N] in W = m (a_W - g).\n" + pivoted_inverse_dynamics_doc)
           .c_str());
 
   m.def(

@@ -30,30 +30,38 @@ PyObject* scene_compatibility_warning = nullptr;
 
 // ------------------------------------------------------------ bodies and their states
 
-Body as_body(py::handle obj, const std::string& name) {
-  if (py::isinstance<RigidBody>(obj)) return obj.cast<const RigidBody&>();
-  if (py::isinstance<PlanarBody>(obj)) return obj.cast<const PlanarBody&>();
-  if (py::isinstance<Particle>(obj)) return obj.cast<const Particle&>();
-  py_io::throw_type_error(name, "a Particle, PlanarBody or RigidBody", obj);
+// A body of any kind of Body (the first alternative whose Python class `obj` is), else TypeError naming `name`.
+template <class... B>
+Body body_from(py::handle obj, const std::string& name, std::variant<B...>*) {
+  std::optional<Body> out;
+  ((!out && py::isinstance<B>(obj) ? (void)(out = obj.cast<const B&>()) : void()), ...);
+  if (!out) py_io::throw_type_error(name, "a Particle, PlanarBody, RigidBody, PivotedBody or PivotedPlanarBody", obj);
+  return *out;
 }
+
+Body as_body(py::handle obj, const std::string& name) { return body_from(obj, name, static_cast<Body*>(nullptr)); }
 
 py::object body_object(const Body& body) {
   return std::visit([](const auto& b) { return py::cast(b); }, body);
 }
 
-// The state of `body` (its kind's state class), else TypeError naming `name`.
+// The state of `body` (its kind's state class: the alternative of BodyState at the body's index), else
+// TypeError naming `name`.
+template <std::size_t... K>
+BodyState state_of_kind(py::handle obj, std::size_t kind, const std::string& name, const std::string& expected,
+                        std::index_sequence<K...>) {
+  std::optional<BodyState> out;
+  ((kind == K && py::isinstance<std::variant_alternative_t<K, BodyState>>(obj)
+        ? (void)(out = obj.cast<const std::variant_alternative_t<K, BodyState>&>())
+        : void()),
+   ...);
+  if (!out) py_io::throw_type_error(name, expected, obj);
+  return *out;
+}
+
 BodyState as_body_state(py::handle obj, const Body& body, const std::string& name, const std::string& body_label) {
-  return std::visit(
-      [&](const auto& b) -> BodyState {
-        using B = std::decay_t<decltype(b)>;
-        using S = std::conditional_t<std::is_same_v<B, RigidBody>, RigidBodyState,
-                                     std::conditional_t<std::is_same_v<B, PlanarBody>, PlanarBodyState, ParticleState>>;
-        constexpr const char* state = std::is_same_v<B, RigidBody>    ? "RigidBodyState"
-                                      : std::is_same_v<B, PlanarBody> ? "PlanarBodyState"
-                                                                      : "ParticleState";
-        return py_io::as_instance<S>(obj, name, std::string("a ") + state + " (the state of " + body_label + ")");
-      },
-      body);
+  const std::string expected = std::string("a ") + state_type_name(body.index()) + " (the state of " + body_label + ")";
+  return state_of_kind(obj, body.index(), name, expected, std::make_index_sequence<std::variant_size_v<BodyState>>());
 }
 
 // One state per body of `scene`, in its order: a list or tuple of the bodies' state classes.
@@ -78,9 +86,12 @@ py::list states_object(const std::vector<BodyState>& states) {
 
 // ------------------------------------------------------------ building a scene
 
-// Adds `body` named `name` (None: the default "body<i>"); names are unique. Returns its index.
-int add_body(Scene& scene, py::handle body, py::handle name, const std::string& body_arg, const std::string& name_arg) {
+// Adds `body` named `name` (None: the default "body<i>"; names are unique) with its mass flow (None: a
+// constant mass). Returns its index.
+int add_body(Scene& scene, py::handle body, py::handle name, py::handle mass_flow, const std::string& body_arg,
+             const std::string& name_arg, const std::string& flow_arg) {
   Body b = as_body(body, body_arg);
+  std::optional<MassFlow> flow = as_mass_flow(mass_flow, flow_arg);
   const std::string given = name.is_none() ? std::string() : py_io::as_string(name, name_arg);
   const std::size_t index = scene.bodies.size();
   const std::string effective = given.empty() ? "body" + std::to_string(index) : given;
@@ -94,6 +105,10 @@ int add_body(Scene& scene, py::handle body, py::handle name, const std::string& 
   scene.body_names.resize(index, "");
   scene.bodies.push_back(std::move(b));
   scene.body_names.push_back(given);
+  if (flow || !scene.mass_flows.empty()) {  // empty while every mass is constant
+    scene.mass_flows.resize(index);
+    scene.mass_flows.push_back(std::move(flow));
+  }
   return static_cast<int>(index);
 }
 
@@ -103,31 +118,44 @@ int add_element(Scene& scene, py::handle element, const std::string& name) {
   Element e = as_element(element, name);
   std::visit(
       [&](const auto& spec) {
-        using Term = typename TermOf<std::decay_t<decltype(spec)>>::type;
-        const Term check(spec, scene.bodies, name);
-        (void)check;
+        using Spec = std::decay_t<decltype(spec)>;
+        using Term = typename TermOf<Spec>::type;
+        if constexpr (std::is_same_v<Spec, Thrust>) {  // it needs the body's mass flow
+          const Term check(spec, scene.bodies, scene.mass_flows, name);
+          (void)check;
+        } else {
+          const Term check(spec, scene.bodies, name);
+          (void)check;
+        }
       },
       e);
   scene.elements.push_back(std::move(e));
   return static_cast<int>(scene.elements.size() - 1);
 }
 
-// Scene(bodies, body_names, elements), each item checked as add_body/add check it.
-Scene make_scene(py::handle bodies, py::handle body_names, py::handle elements) {
+// Scene(bodies, body_names, elements, frame, mass_flows), each item checked as add_body/add check it.
+Scene make_scene(py::handle bodies, py::handle body_names, py::handle elements, py::handle frame, py::handle mass_flows) {
   Scene scene;
   auto items = [](py::handle obj, const char* name) {
     if (obj.is_none()) return py::list();
     if (!py::isinstance<py::list>(obj) && !py::isinstance<py::tuple>(obj)) py_io::throw_type_error(name, "None or a list", obj);
     return py::list(py::reinterpret_borrow<py::object>(obj));
   };
-  const py::list b = items(bodies, "bodies"), names = items(body_names, "body_names"), e = items(elements, "elements");
+  const py::list b = items(bodies, "bodies"), names = items(body_names, "body_names"), e = items(elements, "elements"),
+                 flows = items(mass_flows, "mass_flows");
   if (!body_names.is_none() && names.size() != b.size()) {
     py_io::throw_value_error("body_names", "None or one name (str or None) per body (" + std::to_string(b.size()) + ")",
                              std::to_string(names.size()) + " names");
   }
+  if (!mass_flows.is_none() && flows.size() != b.size()) {
+    py_io::throw_value_error("mass_flows", "None or one MassFlow (or None) per body (" + std::to_string(b.size()) + ")",
+                             std::to_string(flows.size()) + " items");
+  }
+  if (!frame.is_none()) scene.frame = as_scene_frame(frame, "frame");
   for (std::size_t i = 0; i < b.size(); ++i) {
     const std::string k = "[" + std::to_string(i) + "]";
-    add_body(scene, b[i], body_names.is_none() ? py::none() : py::object(names[i]), "bodies" + k, "body_names" + k);
+    add_body(scene, b[i], body_names.is_none() ? py::none() : py::object(names[i]),
+             mass_flows.is_none() ? py::none() : py::object(flows[i]), "bodies" + k, "body_names" + k, "mass_flows" + k);
   }
   for (std::size_t i = 0; i < e.size(); ++i) add_element(scene, e[i], "elements[" + std::to_string(i) + "]");
   return scene;
@@ -156,19 +184,29 @@ py::list elements_list(const Scene& s) {
   for (const Element& e : s.elements) out.append(element_object(e));
   return out;
 }
-py::tuple element_kinds(const Scene& s) {
-  py::tuple out(s.elements.size());
-  for (std::size_t i = 0; i < s.elements.size(); ++i) out[i] = py::str(element_kind(s.elements[i]));
-  return out;
+py::object frame_object(const Scene& s) { return s.frame ? py::cast(*s.frame) : py::object(py::none()); }
+// None when every mass is constant, else one MassFlow or None per body.
+py::object mass_flows_object(const Scene& s) {
+  if (s.mass_flows.empty()) return py::none();
+  py::list out;
+  for (std::size_t i = 0; i < s.bodies.size(); ++i) out.append(has_mass_flow(s, i) ? py::cast(*s.mass_flows[i]) : py::none());
+  return std::move(out);
 }
 
+// The repr lists frame and mass_flows only when the scene has them (so that it reads as it was built).
 std::string scene_repr(const Scene& s) {
-  return repr_call("Scene", {{"bodies", bodies_list(s)}, {"body_names", raw_names_list(s)}, {"elements", elements_list(s)}});
+  std::string text =
+      repr_call("Scene", {{"bodies", bodies_list(s)}, {"body_names", raw_names_list(s)}, {"elements", elements_list(s)}});
+  text.pop_back();
+  if (s.frame) text += ", frame=" + py::repr(frame_object(s)).cast<std::string>();
+  if (!s.mass_flows.empty()) text += ", mass_flows=" + py::repr(mass_flows_object(s)).cast<std::string>();
+  return text + ")";
 }
 
 bool same_scene(const Scene& a, const Scene& b) {
   return bodies_list(a).equal(bodies_list(b)) && raw_names_list(a).equal(raw_names_list(b)) &&
-         elements_list(a).equal(elements_list(b));
+         elements_list(a).equal(elements_list(b)) && frame_object(a).equal(frame_object(b)) &&
+         mass_flows_object(a).equal(mass_flows_object(b));
 }
 
 // ------------------------------------------------------------ compiling
@@ -221,9 +259,14 @@ void refuse_body_arguments(py::handle loads, py::handle gravity) {
 
 // ------------------------------------------------------------ results
 
-SceneResult to_scene_result(SceneSimulation&& r, const Scene& scene, bool scalar_first) {
+// The compiled terms' class names, in the order of the work and power columns: the scene's elements, then the
+// frame's fictitious terms ("CentrifugalForce", ...).
+py::tuple element_kinds(const CompiledScene& compiled) { return py::tuple(py::cast(compiled.element_types())); }
+
+SceneResult to_scene_result(SceneSimulation&& r, const Scene& scene, const CompiledScene& compiled, bool scalar_first) {
   const auto n = static_cast<py::ssize_t>(r.size());
-  const auto nb = static_cast<py::ssize_t>(scene.bodies.size()), ne = static_cast<py::ssize_t>(scene.elements.size());
+  const auto nb = static_cast<py::ssize_t>(scene.bodies.size());
+  const auto ne = static_cast<py::ssize_t>(compiled.element_types().size());
   if (scalar_first) to_scalar_first(r.q_WB);
   return SceneResult{adopt(std::move(r.t), {n}),
                      adopt(std::move(r.p_W), {n, nb, 3}),
@@ -235,10 +278,13 @@ SceneResult to_scene_result(SceneSimulation&& r, const Scene& scene, bool scalar
                      adopt(std::move(r.total_energy), {n}),
                      adopt(std::move(r.linear_momentum_W), {n, 3}),
                      adopt(std::move(r.angular_momentum_W), {n, 3}),
+                     adopt(std::move(r.pivot_reaction_W), {n, nb, 3}),
+                     adopt(std::move(r.angular_momentum_O_W), {n, nb, 3}),
+                     adopt(std::move(r.mass), {n, nb}),
                      adopt(std::move(r.work), {n, ne}),
                      adopt(std::move(r.power), {n, ne}),
                      names_tuple(scene),
-                     element_kinds(scene),
+                     element_kinds(compiled),
                      r.diverged,
                      r.unconverged_steps,
                      r.elapsed_seconds};
@@ -262,6 +308,9 @@ const ResultArray result_arrays[] = {
     {"total_energy", &SceneResult::total_energy, {}},
     {"linear_momentum_W", &SceneResult::linear_momentum_W, {3}},
     {"angular_momentum_W", &SceneResult::angular_momentum_W, {3}},
+    {"pivot_reaction_W", &SceneResult::pivot_reaction_W, {-1, 3}},
+    {"angular_momentum_O_W", &SceneResult::angular_momentum_O_W, {-1, 3}},
+    {"mass", &SceneResult::mass, {-1}},
     {"work", &SceneResult::work, {-2}},
     {"power", &SceneResult::power, {-2}},
 };
@@ -321,16 +370,21 @@ std::string scene_result_repr(const SceneResult& r) {
                                    {"elapsed_seconds", py::float_(r.elapsed_seconds)}});
 }
 
-bool all_finite(const std::vector<BodyState>& states) {
-  for (const BodyState& s : states) {
-    const BodyKinematics k = kinematics_of(s);
+bool all_finite(const Scene& scene, const std::vector<BodyState>& states) {
+  for (std::size_t i = 0; i < states.size(); ++i) {
+    const BodyKinematics k = kinematics_of(scene.bodies[i], states[i]);
     if (!(k.p_W.allFinite() && k.q_WB.coeffs().allFinite() && k.v_W.allFinite() && k.w_B.allFinite())) return false;
   }
   return true;
 }
 
-// Whether a step's result depends on its start time (a load with a time window, a Python force).
+// Whether a step's result depends on its start time (a load with a time window, a Python force, a frame
+// moving other than at a constant rotation, a mass rate given as a function of t).
 bool time_dependent(const Scene& scene) {
+  if (scene.frame && !scene.frame->constant_rotation) return true;
+  for (const auto& flow : scene.mass_flows) {
+    if (flow && !has_constant_rate(*flow)) return true;
+  }
   for (const Element& e : scene.elements) {
     if (std::holds_alternative<FunctionForce>(e)) return true;
     if (const auto* s = std::get_if<ScheduledLoads>(&e); s && has_time_window(s->loads)) return true;
@@ -339,7 +393,10 @@ bool time_dependent(const Scene& scene) {
 }
 
 const char* const scene_doc = R"doc(
-A scene: bodies (Particle, PlanarBody, RigidBody) and the force elements acting on them, as data.
+A scene: bodies (Particle, PlanarBody, RigidBody, PivotedBody, PivotedPlanarBody) and the force elements
+acting on them, as data, in a frame: W (inertial; the default) or the SceneFrame `frame` (states, elements and
+records are then relative to it, with its fictitious forces compiled in). A body may carry a MassFlow (its mass
+changes; a Thrust element gives its force).
 
     scene = rigiddyn.Scene()
     sat = scene.add_body(rigiddyn.RigidBody(500.0, [400.0, 300.0, 200.0]), name="sat")
@@ -347,25 +404,30 @@ A scene: bodies (Particle, PlanarBody, RigidBody) and the force elements acting 
     result = rigiddyn.simulate(scene, [rigiddyn.RigidBodyState(p_W=[7e6, 0, 0], v_W=[0, 7546.0, 0])],
                                dt=1.0, steps=6000, method="rk4")
 
-Scene(bodies=None, body_names=None, elements=None) builds the same from lists (body_names: one str or
-None per body); it is what repr prints. Bodies are indexed in the order added; an element refers to bodies
+Scene(bodies=None, body_names=None, elements=None, frame=None, mass_flows=None) builds the same from lists
+(body_names: one str or None per body; mass_flows: one MassFlow or None per body); it is what repr prints. Bodies are indexed in the order added; an element refers to bodies
 by index and is checked against the bodies added so far (add bodies first). Compile it for a method with
 compile(method) (a CompiledScene, immutable), or give it to rigiddyn.simulate / rigiddyn.step, which
-compile it. Mutable (add_body, add); pickles; == compares bodies, names and elements.
+compile it. Mutable (add_body, add, frame); pickles; == compares bodies, names, elements, frame and mass flows.
 )doc";
 
 const char* const scene_result_doc = R"doc(
 The records of simulate(scene, ...), one row per record (n records, nb bodies in the scene's order, ne
 elements in the scene's order); every array is read-only and shares the memory the C++ run filled.
 
+"W" is the scene frame: W itself, or the scene's SceneFrame F (every array is then relative to F).
 t (n,) [s]; p_W (n, nb, 3) centre of mass positions in W [m]; q_WB (n, nb, 4) attitudes, (x, y, z, w)
 unless simulate(..., scalar_first=True); v_W (n, nb, 3) [m/s] in W; w_B (n, nb, 3) [rad/s] in each body's
 B. A particle records q_WB = identity and w_B = 0; a planar body p_W = (x, y, 0), q_WB = Rz(theta),
-w_B = (0, 0, omega). kinetic_energy, potential_energy (the sum of the elements' potentials), total_energy
-(n,) [J]; linear_momentum_W (n, 3) [kg m/s]; angular_momentum_W (n, 3) about W's origin [kg m^2/s];
+w_B = (0, 0, omega); a pinned body its centre of mass. pivot_reaction_W (n, nb, 3) the pivot's force on each
+body in W [N] (0 unpinned); angular_momentum_O_W (n, nb, 3) each body's about its pivot (about its centre of
+mass unpinned), in W [kg m^2/s]; mass (n, nb) [kg]. kinetic_energy (relative to W), potential_energy (the sum
+of the elements' potentials, and the centrifugal one of a frame turning at a constant rate: total_energy is
+then the Jacobi integral), total_energy (n,) [J]; linear_momentum_W (n, 3) [kg m/s]; angular_momentum_W (n, 3) about W's origin [kg m^2/s];
 work (n, ne) each element's work since t0 [J] and power (n, ne) its power at the record [W] (integrated by
-the run's method: kinetic_energy - kinetic_energy[0] ~ work.sum(axis=1)); body_names (nb,) and elements
-(ne,) (each element's class name) label the axes; diverged, unconverged_steps, elapsed_seconds as in
+the run's method: kinetic_energy - kinetic_energy[0] ~ work.sum(axis=1)); the columns are the scene's elements
+then the frame's fictitious terms that act (CentrifugalForce, CoriolisForce, ...); body_names (nb,) and
+elements (ne,) (each column's class name) label the axes; diverged, unconverged_steps, elapsed_seconds as in
 SimulationResult.
 )doc";
 
@@ -398,7 +460,7 @@ SceneResult simulate_scene_py(py::handle model, py::handle initial, py::handle d
   if (r.interrupted) monitor.raise();  // the records so far are dropped with r
   warn_after_run(r.diverged, r.t.empty() ? o.t0 : r.t.back(), r.unconverged_steps, o.steps, method_info(h.method).name,
                  o.dt);
-  return to_scene_result(std::move(r), h.scene, first);
+  return to_scene_result(std::move(r), h.scene, *h.compiled, first);
 }
 
 py::object step_scene_py(py::handle model, py::handle state, py::handle dt, py::handle method, py::handle loads,
@@ -408,11 +470,18 @@ py::object step_scene_py(py::handle model, py::handle state, py::handle dt, py::
   o.dt = py_io::as_scalar(py_io::in_si(dt, "s", "dt"), "dt");
   const CompiledSceneHandle h = compiled_for(model, method);
   o.method = h.method;
+  for (std::size_t i = 0; i < h.scene.bodies.size(); ++i) {  // a body state does not carry its mass
+    if (has_mass_flow(h.scene, i)) {
+      py_io::throw_value_error("model", "a scene without mass flows for step (a body's state does not carry its mass, "
+                               "so a second step would restart from the initial mass; use simulate)",
+                               "mass_flows[" + std::to_string(i) + "] of body '" + body_name(h.scene, i) + "'");
+    }
+  }
   if (!t.is_none()) {
     o.t0 = py_io::as_scalar(py_io::in_si(t, "s", "t"), "t");
   } else if (time_dependent(h.scene)) {
-    py_io::throw_value_error("t", "the time [s] of `state` (the scene has a PythonForce or a load with a time window; "
-                             "pass t=... and use the time returned)", "None");
+    py_io::throw_value_error("t", "the time [s] of `state` (the scene has a PythonForce, a load with a time window, a "
+                             "moving frame or a mass rate of t; pass t=... and use the time returned)", "None");
   }
   const std::vector<BodyState> current = as_scene_states(state, h.scene, "state");
   SceneState next;
@@ -420,7 +489,7 @@ py::object step_scene_py(py::handle model, py::handle state, py::handle dt, py::
     py::gil_scoped_release release;
     next = step(*h.compiled, current, o);
   }
-  if (!all_finite(next.bodies)) {
+  if (!all_finite(h.scene, next.bodies)) {
     const std::string msg = "step: the state became non-finite in the step of dt = " + format_value(o.dt) +
                             (t.is_none() ? std::string() : " from t = " + format_value(o.t0)) + " (method '" +
                             method_info(h.method).name + "')";
@@ -448,17 +517,20 @@ void bind_scene(py::module_& m) {
       "elements. CompiledScene(scene, method='rk4') is scene.compile(method). Give it to rigiddyn.simulate / "
       "rigiddyn.step (method None or its own). Pickles (as its scene and method); == compares both.");
   scene.def(py::init(&make_scene), py::arg("bodies") = py::none(), py::arg("body_names") = py::none(),
-            py::arg("elements") = py::none())
+            py::arg("elements") = py::none(), py::arg("frame") = py::none(), py::arg("mass_flows") = py::none())
       .def(
           "add_body",
-          [](Scene& s, py::handle body, py::handle name) { return add_body(s, body, name, "body", "name"); },
-          py::arg("body"), py::arg("name") = py::none(),
-          "Adds `body` (a Particle, PlanarBody or RigidBody) named `name` (a str no other body has; None: "
-          "'body<index>'); returns its index, by which elements refer to it.")
+          [](Scene& s, py::handle body, py::handle name, py::handle mass_flow) {
+            return add_body(s, body, name, mass_flow, "body", "name", "mass_flow");
+          },
+          py::arg("body"), py::arg("name") = py::none(), py::arg("mass_flow") = py::none(),
+          "Adds `body` (a Particle, PlanarBody, RigidBody, PivotedBody or PivotedPlanarBody) named `name` (a str no "
+          "other body has; None: 'body<index>') with its mass flow `mass_flow` (a MassFlow; None: a constant mass); "
+          "returns its index, by which elements refer to it.")
       .def(
           "add", [](Scene& s, py::handle element) { return add_element(s, element, "element"); }, py::arg("element"),
           "Adds a force element (UniformGravity, PointMassGravity, MutualGravity, GravityGradient, SpringDamper, "
-          "Drag, ScheduledLoads, PythonForce) after checking it against the bodies added so far (indices in range, "
+          "Drag, ScheduledLoads, PythonForce, Thrust) after checking it against the bodies added so far (indices in range, "
           "loads the body's kind can take: ValueError naming element.<field>); returns its index (the column of "
           "SceneResult.work and power).")
       .def_property_readonly("bodies", [](const Scene& s) { return py::tuple(bodies_list(s)); },
@@ -466,6 +538,21 @@ void bind_scene(py::module_& m) {
       .def_property_readonly("body_names", &names_tuple, "tuple of the bodies' names (str), in index order")
       .def_property_readonly("elements", [](const Scene& s) { return py::tuple(elements_list(s)); },
                              "tuple of the force elements (copies), in the order added")
+      .def_property(
+          "frame", &frame_object,
+          [](Scene& s, py::handle frame) {
+            s.frame = frame.is_none() ? std::nullopt : std::optional<SceneFrame>(as_scene_frame(frame, "frame"));
+          },
+          "the SceneFrame F the states, elements and records are relative to, or None (the default: W, inertial); "
+          "assignable")
+      .def_property_readonly(
+          "mass_flows",
+          [](const Scene& s) {
+            py::tuple out(s.bodies.size());
+            for (std::size_t i = 0; i < s.bodies.size(); ++i) out[i] = has_mass_flow(s, i) ? py::cast(*s.mass_flows[i]) : py::none();
+            return out;
+          },
+          "tuple of each body's MassFlow, or None for a constant mass, in index order")
       .def(
           "compile",
           [](const Scene& s, py::handle method) { return compile_handle(s, as_method_name(method), true); },
@@ -497,11 +584,14 @@ void bind_scene(py::module_& m) {
           "`initial` (one state per body, or None), `run` (a rigiddyn.scene_file.RunOptions or None), `name` and "
           "`description`; rigiddyn.load_scene reads it back to the same scene (rigiddyn.scene_file.scene_to_toml).")
       .def("__repr__", &scene_repr)
-      .def(py::pickle([](const Scene& s) { return py::make_tuple(bodies_list(s), raw_names_list(s), elements_list(s)); },
-                      [](const py::tuple& t) {
-                        if (t.size() != 3) py_io::throw_value_error("Scene pickle", "a tuple of 3 items", std::to_string(t.size()) + " items");
-                        return make_scene(t[0], t[1], t[2]);
-                      }))
+      .def(py::pickle(
+          [](const Scene& s) {
+            return py::make_tuple(bodies_list(s), raw_names_list(s), elements_list(s), frame_object(s), mass_flows_object(s));
+          },
+          [](const py::tuple& t) {
+            if (t.size() != 5) py_io::throw_value_error("Scene pickle", "a tuple of 5 items", std::to_string(t.size()) + " items");
+            return make_scene(t[0], t[1], t[2], t[3], t[4]);
+          }))
       .def(
           "__eq__",
           [](const Scene& a, py::handle b) -> py::object {
@@ -560,10 +650,18 @@ void bind_scene(py::module_& m) {
       .def_readonly("linear_momentum_W", &SceneResult::linear_momentum_W, "(n, 3) sum of m v_W, in W [kg m/s]")
       .def_readonly("angular_momentum_W", &SceneResult::angular_momentum_W,
                     "(n, 3) about W's origin, in W: sum of p_W x m v_W + R_WB I w_B [kg m^2/s]")
+      .def_readonly("pivot_reaction_W", &SceneResult::pivot_reaction_W,
+                    "(n, nb, 3) the pivot's force on each body, in W [N] (0 for a body not pinned)")
+      .def_readonly("angular_momentum_O_W", &SceneResult::angular_momentum_O_W,
+                    "(n, nb, 3) each body's angular momentum about its pivot O (about its centre of mass when not "
+                    "pinned), in W [kg m^2/s]")
+      .def_readonly("mass", &SceneResult::mass, "(n, nb) each body's mass [kg] (changing under a MassFlow)")
       .def_readonly("work", &SceneResult::work, "(n, ne) each element's work since t0 [J]")
       .def_readonly("power", &SceneResult::power, "(n, ne) each element's power at the record [W]")
       .def_readonly("body_names", &SceneResult::body_names, "(nb,) tuple of the bodies' names")
-      .def_readonly("elements", &SceneResult::elements, "(ne,) tuple of the elements' class names")
+      .def_readonly("elements", &SceneResult::elements,
+                    "(ne,) tuple of the elements' class names, then the frame's fictitious terms' ('CentrifugalForce', "
+                    "...)")
       .def_readonly("diverged", &SceneResult::diverged, "True if the run stopped on a non-finite state")
       .def_readonly("unconverged_steps", &SceneResult::unconverged_steps,
                     "number of steps whose implicit solve stopped at its iteration cap (0 for explicit methods)")

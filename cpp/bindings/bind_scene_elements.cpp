@@ -1,6 +1,6 @@
 // Python bindings of the force elements of a scene (scene/elements/*.hpp): UniformGravity,
-// PointMassGravity, MutualGravity, GravityGradient, SpringDamper, Drag, ScheduledLoads and PythonForce
-// (the C++ FunctionForce calling a Python callable with the GIL). Each class has a keyword constructor
+// PointMassGravity, MutualGravity, GravityGradient, SpringDamper, Drag, ScheduledLoads, PythonForce
+// (the C++ FunctionForce calling a Python callable with the GIL) and Thrust (issue 12). Each class has a keyword constructor
 // that converts and checks every argument by name (TypeError/ValueError "<argument>: expected ..."),
 // read-only attributes, a repr that evaluates back to an equal element, pickle and ==. What needs the
 // scene's bodies (an index in range, a load the body's kind can take) is checked by Scene.add.
@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "common_args.hpp"
 #include "numpy_io.hpp"
 #include "python_run.hpp"
 #include "scene_run.hpp"
@@ -325,6 +326,25 @@ const ElementClass<FunctionForce> python_force{
     },
     [](const FunctionForce& e) -> py::tuple { return py::make_tuple(python_fn(e), body_list_object(e.bodies)); }};
 
+const ElementClass<Thrust> thrust{
+    "Thrust",
+    {{"body", "index of the body (one with a MassFlow) whose exchanged mass pushes it"},
+     {"u_rel", "(3,) velocity of the exchanged mass relative to the body, in `frame` [m/s]"},
+     {"frame", "'body' (u_rel in B, turning with the body) or 'world' (in the scene frame W)"},
+     {"r_B", "(3,) point of application in B, from the centre of mass [m]"}},
+    [](const py::tuple& v) {
+      Thrust e;
+      e.body = as_body_index(v[0], "body");
+      e.u_rel = py_io::as_vector3(py_io::in_si(v[1], "m/s", "u_rel"), "u_rel");
+      e.frame = as_frame(v[2], "frame");
+      e.r_B = py_io::as_vector3(py_io::in_si(v[3], "m", "r_B"), "r_B");
+      return e;
+    },
+    [](const Thrust& e) -> py::tuple {
+      return py::make_tuple(e.body, vector_object(e.u_rel), e.frame == Frame::body ? "body" : "world",
+                            vector_object(e.r_B));
+    }};
+
 // A Python element as the C++ Element, else TypeError naming `name`.
 template <class... T>
 Element element_from(py::handle obj, const std::string& name, std::variant<T...>*) {
@@ -332,7 +352,7 @@ Element element_from(py::handle obj, const std::string& name, std::variant<T...>
   ((py::isinstance<T>(obj) ? (void)(out = obj.cast<const T&>()) : void()), ...);
   if (!out) {
     py_io::throw_type_error(name, "a force element (UniformGravity, PointMassGravity, MutualGravity, GravityGradient, "
-                            "SpringDamper, Drag, ScheduledLoads or PythonForce)", obj);
+                            "SpringDamper, Drag, ScheduledLoads, PythonForce or Thrust)", obj);
   }
   return *out;
 }
@@ -449,6 +469,21 @@ void bind_scene_elements(py::module_& m) {
                "TypeError/ValueError naming fn. bodies: None (every body) or body indices.",
                [](py::handle fn, py::handle bodies) { return python_force.make(py::make_tuple(fn, bodies)); },
                py::arg("fn"), py::arg("bodies") = none);
+  bind_element(m, thrust,
+               "The thrust of a body whose mass changes (its MassFlow, given to Scene.add_body): f = (dm/dt) u_rel "
+               "[N] (\"Rigid body kinematics and dynamics\" notes, eq. (4.36): d(m v)/dt = f + (dm/dt)(v + u_rel), so "
+               "m dv/dt = f + (dm/dt) u_rel), u_rel (3,) [m/s] the velocity of the mass leaving (dm/dt < 0: u_rel "
+               "backwards pushes forwards) or joining the body, relative to it, in `frame` ('body': in B, turning "
+               "with the body; 'world': in the scene frame W), applied at r_B (3,) [m] in B from the centre of mass "
+               "(adds the torque r_B x f_B). Scene.add refuses it (ValueError naming element.body) on a body without "
+               "a MassFlow. No potential; its power is in SceneResult.power."
+               " Each physical argument: a float [its unit above] or a pint quantity (any registry; converted to that "
+               "unit, ValueError naming the argument for another dimension).",
+               [](py::handle body, py::handle u_rel, py::handle frame, py::handle r_B) {
+                 return thrust.make(py::make_tuple(body, u_rel, frame, r_B));
+               },
+               py::arg("body"), py::arg("u_rel"), py::arg("frame") = "body",
+               py::arg("r_B") = py::make_tuple(0.0, 0.0, 0.0));
 }
 
 }  // namespace rigiddyn::bindings

@@ -11,6 +11,7 @@ void bind_inertia(pybind11::module_& m);
 void bind_bodies(pybind11::module_& m);
 void bind_dynamics(pybind11::module_& m);
 void bind_exact(pybind11::module_& m);
+void bind_exact_dynamics(pybind11::module_& m);  // after bind_pivoted and bind_scene_frame
 void bind_scene_elements(pybind11::module_& m);
 void bind_scene(pybind11::module_& m);
 }  // namespace rigiddyn::bindings

@@ -1,5 +1,7 @@
 // rigiddyn._core: the compiled core. Users import `rigiddyn`, which re-exports it.
 #include "bindings.hpp"
+#include "pivoted.hpp"
+#include "scene_run.hpp"
 #include "rigiddyn/version.hpp"
 
 PYBIND11_MODULE(_core, m) {
@@ -11,8 +13,11 @@ PYBIND11_MODULE(_core, m) {
   rigiddyn::bindings::bind_spatial(m);
   rigiddyn::bindings::bind_inertia(m);
   rigiddyn::bindings::bind_bodies(m);
+  rigiddyn::bindings::bind_pivoted(m);
   rigiddyn::bindings::bind_scene_elements(m);
+  rigiddyn::bindings::bind_scene_frame(m);
   rigiddyn::bindings::bind_scene(m);  // before bind_dynamics: simulate's signature names SceneResult
   rigiddyn::bindings::bind_dynamics(m);
   rigiddyn::bindings::bind_exact(m);
+  rigiddyn::bindings::bind_exact_dynamics(m);
 }

@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <string>
 
+#include <optional>
+
 #include "numpy_io.hpp"
 #include "rigiddyn/scene/scene.hpp"
 
@@ -17,10 +19,16 @@ Element as_element(pybind11::handle obj, const std::string& name);
 pybind11::object element_object(const Element& element);
 std::string element_kind(const Element& element);
 
+// The scene's frame and a body's mass flow given from Python (bind_scene_frame.cpp): a SceneFrame, a MassFlow
+// or None (nullopt), else TypeError naming `name`; bind_scene_frame registers both classes.
+SceneFrame as_scene_frame(pybind11::handle obj, const std::string& name);
+std::optional<MassFlow> as_mass_flow(pybind11::handle obj, const std::string& name);
+void bind_scene_frame(pybind11::module_& m);
+
 // simulate's records of a scene (rigiddyn.SceneResult; its docstring in bind_scene.cpp).
 struct SceneResult {
   py_io::Array t, p_W, q_WB, v_W, w_B, kinetic_energy, potential_energy, total_energy, linear_momentum_W,
-      angular_momentum_W, work, power;
+      angular_momentum_W, pivot_reaction_W, angular_momentum_O_W, mass, work, power;
   pybind11::tuple body_names, elements;
   bool diverged;
   std::int64_t unconverged_steps;

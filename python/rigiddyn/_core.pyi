@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['AppliedLoad', 'BodyAcceleration', 'ComWrench', 'CompiledScene', 'DensityIntegral', 'Drag', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'GravityGradient', 'InertiaCheck', 'InertiaReport', 'KineticEnergy', 'MeshWeldWarning', 'Motion', 'MutualGravity', 'Particle', 'ParticleState', 'PlanarAcceleration', 'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointMassGravity', 'PointVelocity', 'PrincipalAxes', 'PythonForce', 'RigidBody', 'RigidBodyState', 'Scene', 'SceneCompatibilityWarning', 'SceneResult', 'ScheduledLoads', 'Screw', 'SimulationResult', 'SpatialInertia', 'SpringDamper', 'TorqueFreeSolution', 'Transform', 'UniformGravity', 'WeldedMesh', 'align_vectors', 'angular_distance', 'angular_momentum', 'angular_velocity_from_quat_rate', 'apply_impulse', 'axis_angle_to_quat', 'box_shell', 'compose_kinematics', 'composite', 'davenport_to_quat', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'from_point_masses', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation', 'nearest_valid_inertia', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix', 'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'simulate', 'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'twist_to_screw', 'vee', 'weld_vertices']
+__all__: list[str] = ['AppliedLoad', 'BodyAcceleration', 'ComWrench', 'CompiledScene', 'CompoundPendulumSolution', 'ConstantThrustSolution', 'DensityIntegral', 'Drag', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'GravityGradient', 'InertiaCheck', 'InertiaReport', 'KineticEnergy', 'LagrangeTopSolution', 'MassFlow', 'MeshWeldWarning', 'Motion', 'MutualGravity', 'Particle', 'ParticleState', 'PivotedAcceleration', 'PivotedBody', 'PivotedBodyState', 'PivotedPlanarAcceleration', 'PivotedPlanarBody', 'PivotedPlanarBodyState', 'PivotedPlanarTorque', 'PivotedTorque', 'PlanarAcceleration', 'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointMassGravity', 'PointVelocity', 'PrincipalAxes', 'PythonForce', 'RigidBody', 'RigidBodyState', 'RotatingFrameFreeParticle', 'Scene', 'SceneCompatibilityWarning', 'SceneFrame', 'SceneResult', 'ScheduledLoads', 'Screw', 'SimulationResult', 'SpatialInertia', 'SpringDamper', 'Thrust', 'TorqueFreeSolution', 'Transform', 'UniformGravity', 'WeldedMesh', 'align_vectors', 'angular_distance', 'angular_momentum', 'angular_velocity_from_quat_rate', 'apply_impulse', 'axis_angle_to_quat', 'box_shell', 'compose_kinematics', 'composite', 'davenport_to_quat', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'from_point_masses', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation', 'nearest_valid_inertia', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix', 'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'simulate', 'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'twist_to_screw', 'vee', 'weld_vertices']
 class FrameKinematics:
     """
     Frame F relative to frame P at one instant (P = the parent of a FrameMotion, or the
@@ -1293,6 +1293,295 @@ class PlanarAcceleration:
         """
         angular acceleration about z [rad/s^2]
         """
+class PivotedBody:
+    """
+    A rigid body pinned at a point O fixed in the scene frame W (3 rotational DOF): the heavy top, the gyroscope.
+      PivotedBody(body, p_OC_B, p_WO=(0, 0, 0))
+    body: a RigidBody (mass [kg], inertia_com [kg m^2] about the centre of mass C in B); p_OC_B (3,): C relative to O, in B [m] (zero allowed: the free rotation about C); p_WO (3,): O in W [m]; each a float array or a pint quantity. B is the body frame at C as for RigidBody; C is at p_WO + R_WB p_OC_B. Euler's law is written about O (Craig, "Rigid Body Dynamics" slides: M_O = dH_O/dt) with inertia_O = I_C + m (|c|^2 1 - c c^T), the parallel-axis theorem with the products of inertia. digits_lost tells how many decimal digits of I_C the rounding of inertia_O loses (the compile of a scene warns above 6); ValueError naming p_OC_B when inertia_O is no longer positive definite in double precision. Immutable; pickles; == compares body, p_OC_B and p_WO.
+    """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple[RigidBody, typing.Any, typing.Any]:
+        ...
+    def __init__(self, body: typing.Any, p_OC_B: typing.Any, p_WO: typing.Any = None) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def body(self) -> RigidBody:
+        """
+        the RigidBody (a copy)
+        """
+    @property
+    def digits_lost(self) -> float:
+        """
+        decimal digits of I_C lost in inertia_O: max(0, log10(m |c|^2 / smallest moment of I_C))
+        """
+    @property
+    def euler_form(self) -> str:
+        """
+        the form of Euler's equations of inertia_O: 'spherical', 'principal' or 'full'
+        """
+    @property
+    def inertia_O(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3, 3) inertia about O in B, I_C + m (|c|^2 1 - c c^T) [kg m^2]
+        """
+    @property
+    def inertia_com(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3, 3) inertia about the centre of mass C, in B [kg m^2]
+        """
+    @property
+    def mass(self) -> float:
+        """
+        mass [kg]
+        """
+    @property
+    def p_OC_B(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3,) the centre of mass C relative to the pivot O, in B [m]
+        """
+    @property
+    def p_WO(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3,) the pivot O in the scene frame W [m]
+        """
+class PivotedPlanarBody:
+    """
+    The compound pendulum: a planar body pinned at a point O fixed in the scene frame W, turning about W's z axis (1 DOF, R_WB = Rz(theta)).
+      PivotedPlanarBody(mass, inertia_zz, p_OC_B, p_WO=(0, 0))
+    mass [kg] > 0; inertia_zz [kg m^2] > 0 about the z axis through the centre of mass C; p_OC_B (2,): C relative to O in B's xy plane [m] (zero allowed); p_WO (2,): O in W's xy plane [m]; each a float or a pint quantity. Plane kinetics about O: inertia_O_zz alpha = tau_O, inertia_O_zz = inertia_zz + m |c|^2 (Craig, "Rigid Body Dynamics" slides). Immutable; pickles; == compares every field.
+    """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple[float, float, typing.Any, typing.Any]:
+        ...
+    def __init__(self, mass: typing.Any, inertia_zz: typing.Any, p_OC_B: typing.Any, p_WO: typing.Any = None) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def inertia_O_zz(self) -> float:
+        """
+        moment of inertia about z through O, inertia_zz + m |c|^2 [kg m^2]
+        """
+    @property
+    def inertia_zz(self) -> float:
+        """
+        moment of inertia about z through C [kg m^2]
+        """
+    @property
+    def mass(self) -> float:
+        """
+        mass [kg]
+        """
+    @property
+    def p_OC_B(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (2,) C relative to O in B's xy plane [m]
+        """
+    @property
+    def p_WO(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (2,) the pivot O in W's xy plane [m]
+        """
+class PivotedBodyState:
+    """
+    State of a PivotedBody: q_WB (4,) unit quaternion B to the scene frame W, (x, y, z, w), or (w, x, y, z) with scalar_first=True (None: identity); w_B (3,) angular velocity of B relative to W, in B [rad/s] (None: zero; floats or a pint quantity). q_WB is normalised; ValueError if | |q| - 1 | > 1e-6. Fields are assigned whole (s.w_B = [...], checked as here); their arrays are read-only.
+    """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple[numpy.typing.NDArray[numpy.float64], typing.Any]:
+        ...
+    def __init__(self, q_WB: typing.Any = None, w_B: typing.Any = None, scalar_first: typing.Any = False) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    def quaternion(self, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        q_WB (4,) as (x, y, z, w), or (w, x, y, z) with scalar_first=True
+        """
+    @property
+    def q_WB(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (4,) attitude (x, y, z, w), B to W; set from (x, y, z, w), normalised (ValueError beyond 1e-6 of unit norm)
+        """
+    @q_WB.setter
+    def q_WB(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def w_B(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3,) angular velocity of B relative to W, expressed in B [rad/s]
+        """
+    @w_B.setter
+    def w_B(self, arg1: typing.Any) -> None:
+        ...
+class PivotedPlanarBodyState:
+    """
+    State of a PivotedPlanarBody: theta [rad], the angle of B about z (R_WB = Rz(theta)), and omega = d theta/dt [rad/s]; each a float or a pint quantity. Fields are assignable (checked as here).
+    """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple[float, float]:
+        ...
+    def __init__(self, theta: typing.Any = 0.0, omega: typing.Any = 0.0) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def omega(self) -> float:
+        """
+        angular velocity about z [rad/s]
+        """
+    @omega.setter
+    def omega(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def theta(self) -> float:
+        """
+        angle of B about z [rad]
+        """
+    @theta.setter
+    def theta(self, arg1: typing.Any) -> None:
+        ...
+class PivotedAcceleration:
+    """
+    forward_dynamics' result for a PivotedBody: alpha_B (3,) angular acceleration in B [rad/s^2] and reaction_W (3,) the pivot's force on the body in W [N] (unpacks as alpha_B, reaction_W = ...). Immutable.
+    """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getitem__(self, index: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple[typing.Any, typing.Any]:
+        ...
+    def __init__(self, alpha_B: typing.Any = None, reaction_W: typing.Any = None) -> None:
+        ...
+    def __iter__(self) -> collections.abc.Iterator:
+        ...
+    def __len__(self) -> int:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def alpha_B(self) -> typing.Any:
+        """
+        (3,) angular acceleration in B [rad/s^2]
+        """
+    @property
+    def reaction_W(self) -> typing.Any:
+        """
+        (3,) the pivot's force on the body, in W [N]
+        """
+class PivotedTorque:
+    """
+    inverse_dynamics' result for a PivotedBody: tau_O_B (3,) the torque about O the motion needs besides gravity, in B [N m], and reaction_W (3,) the pivot's force on the body in W [N] (unpacks as tau_O_B, reaction_W = ...). Immutable.
+    """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getitem__(self, index: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple[typing.Any, typing.Any]:
+        ...
+    def __init__(self, tau_O_B: typing.Any = None, reaction_W: typing.Any = None) -> None:
+        ...
+    def __iter__(self) -> collections.abc.Iterator:
+        ...
+    def __len__(self) -> int:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def reaction_W(self) -> typing.Any:
+        """
+        (3,) the pivot's force on the body, in W [N]
+        """
+    @property
+    def tau_O_B(self) -> typing.Any:
+        """
+        (3,) torque about the pivot O, in B [N m]
+        """
+class PivotedPlanarAcceleration:
+    """
+    forward_dynamics' result for a PivotedPlanarBody: alpha [rad/s^2] about z and reaction_W (3,) the pivot's force on the body in W [N] (its z part is what the pin and the plane hold; unpacks as alpha, reaction_W = ...). Immutable.
+    """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getitem__(self, index: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple[typing.Any, typing.Any]:
+        ...
+    def __init__(self, alpha: typing.Any = 0.0, reaction_W: typing.Any = None) -> None:
+        ...
+    def __iter__(self) -> collections.abc.Iterator:
+        ...
+    def __len__(self) -> int:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def alpha(self) -> typing.Any:
+        """
+        angular acceleration about z [rad/s^2]
+        """
+    @property
+    def reaction_W(self) -> typing.Any:
+        """
+        (3,) the pivot's force on the body, in W [N]
+        """
+class PivotedPlanarTorque:
+    """
+    inverse_dynamics' result for a PivotedPlanarBody: tau_O [N m] the torque about z the motion needs besides gravity, and reaction_W (3,) the pivot's force on the body in W [N] (unpacks as tau_O, reaction_W = ...). Immutable.
+    """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getitem__(self, index: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple[typing.Any, typing.Any]:
+        ...
+    def __init__(self, tau_O: typing.Any = 0.0, reaction_W: typing.Any = None) -> None:
+        ...
+    def __iter__(self) -> collections.abc.Iterator:
+        ...
+    def __len__(self) -> int:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def reaction_W(self) -> typing.Any:
+        """
+        (3,) the pivot's force on the body, in W [N]
+        """
+    @property
+    def tau_O(self) -> typing.Any:
+        """
+        torque about the z axis through O [N m]
+        """
 class UniformGravity:
     """
     Uniform gravity on the listed bodies: f_W = m g_W at each centre of mass, potential V = -m g_W . p_W [J]. g_W (3,) [m/s^2] in W (default (0, 0, -9.81)); bodies: None (every body) or body indices. A planar body keeps the in-plane part (the plane takes the rest). Each physical argument: a float [its unit above] or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
@@ -1558,13 +1847,141 @@ class PythonForce:
         """
         the callable fn(t, body, p_W, q_WB, v_W, w_B) -> (f_W, tau_B)
         """
+class Thrust:
+    """
+    The thrust of a body whose mass changes (its MassFlow, given to Scene.add_body): f = (dm/dt) u_rel [N] ("Rigid body kinematics and dynamics" notes, eq. (4.36): d(m v)/dt = f + (dm/dt)(v + u_rel), so m dv/dt = f + (dm/dt) u_rel), u_rel (3,) [m/s] the velocity of the mass leaving (dm/dt < 0: u_rel backwards pushes forwards) or joining the body, relative to it, in `frame` ('body': in B, turning with the body; 'world': in the scene frame W), applied at r_B (3,) [m] in B from the centre of mass (adds the torque r_B x f_B). Scene.add refuses it (ValueError naming element.body) on a body without a MassFlow. No potential; its power is in SceneResult.power. Each physical argument: a float [its unit above] or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
+    """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, body: typing.Any, u_rel: typing.Any, frame: typing.Any = 'body', r_B: typing.Any = (0.0, 0.0, 0.0)) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def body(self) -> typing.Any:
+        """
+        index of the body (one with a MassFlow) whose exchanged mass pushes it
+        """
+    @property
+    def frame(self) -> typing.Any:
+        """
+        'body' (u_rel in B, turning with the body) or 'world' (in the scene frame W)
+        """
+    @property
+    def r_B(self) -> typing.Any:
+        """
+        (3,) point of application in B, from the centre of mass [m]
+        """
+    @property
+    def u_rel(self) -> typing.Any:
+        """
+        (3,) velocity of the exchanged mass relative to the body, in `frame` [m/s]
+        """
+class SceneFrame:
+    """
+    The frame F a scene's states are relative to, moving relative to the inertial frame W (Scene.frame; None:
+    W itself). Build it with
+      SceneFrame.rotating(axis, rate)   F turns at `rate` [rad/s] about `axis` (3,) (any non-zero length; fixed
+                                        in F and in W) through its origin, fixed at W's origin; F = W at t = 0;
+      SceneFrame.earth(latitude)        the local frame (x east, y north, z up) at `latitude` [rad] on the turning
+                                        Earth: Omega = 7.2921159e-5 rad/s about (0, cos(latitude), sin(latitude));
+      SceneFrame.moving(frame_motion)   any motion of F relative to W, a FrameMotion (a Python kinematics_at(t) is
+                                        called with the GIL taken, at each derivative evaluation).
+    Each physical argument: a float [its unit] or a pint quantity. Newton's and Euler's laws seen from F gain the
+    fictitious terms ("Rigid body kinematics and dynamics" notes, eqs. (4.39)-(4.40)): frame origin -m a_O, Euler
+    -m alpha x r, centrifugal -m Omega x (Omega x r), Coriolis -2 m Omega x v (and their torques on bodies with an
+    attitude); compiling a scene adds those that act as elements "FrameOriginForce", "EulerForce",
+    "CentrifugalForce", "CoriolisForce" after the scene's own (columns of SceneResult.work and power). Every
+    element, state and record of the scene is then in F. A motion function returning a non-finite value raises
+    ValueError naming `frame`; an exception it raises propagates out of simulate. Immutable; pickles (a
+    FrameMotion of a module-level function); == compares how it was built.
+    """
+    __hash__: typing.ClassVar[None] = None
+    @staticmethod
+    def earth(latitude: typing.Any) -> SceneFrame:
+        """
+        The local frame at `latitude` [rad] in [-pi/2, pi/2] (a pint angle: '48.85 deg') on the turning Earth: x east, y north, z up, Omega = 7.2921159e-5 rad/s about (0, cos(latitude), sin(latitude)); its origin is taken as fixed (the centripetal acceleration of the ground is part of the local gravity, a UniformGravity).
+        """
+    @staticmethod
+    def moving(frame_motion: typing.Any) -> SceneFrame:
+        """
+        F moving relative to W as the FrameMotion `frame_motion` gives (P = W: R_WF, angular velocity and acceleration, origin position, velocity and acceleration, all in W); every fictitious term may act.
+        """
+    @staticmethod
+    def rotating(axis: typing.Any, rate: typing.Any) -> SceneFrame:
+        """
+        F turning at `rate` [rad/s] about `axis` (3,) (non-zero) through its origin, fixed at W's origin; F = W at t = 0 (only the centrifugal and Coriolis terms act; the centrifugal one has a potential).
+        """
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def constant_rotation(self) -> bool:
+        """
+        True when F turns at a constant rate about its fixed origin (rotating, earth)
+        """
+    @property
+    def motion(self) -> FrameMotion:
+        """
+        the FrameMotion of F relative to W
+        """
+class MassFlow:
+    """
+    The mass flow of a body (Scene.add_body(body, mass_flow=...)): its mass changes at the rate
+      rate          dm/dt [kg/s]: a float (or a pint quantity; negative: the body loses mass) or a callable
+                    rate(t) -> float of the time t [s];
+    and its rotational inertia about the centre of mass follows
+      inertia_rule  'scaled' (I_C(m) = I_C0 m / m0: the body's shape is kept; every method applies) or a callable
+                    inertia_rule(m) -> (3, 3) [kg m^2] in B of the mass m [kg] (the splitting methods are refused).
+    The mass starts at the body's mass and is a coordinate of the run (SceneResult.mass). Its force is the
+    Thrust element, f = rate u_rel ("Rigid body kinematics and dynamics" notes, eq. (4.36): m dv/dt = f + (dm/dt)
+    u_rel). The mass leaving carries its own angular momentum (no jet damping): I(m) dw/dt + w x I(m) w = tau.
+    Callables are called with the GIL taken, at each derivative evaluation; an exception they raise stops the run
+    and propagates; a non-finite value raises ValueError naming mass_flows[i].rate or inertia_rule. A mass reaching
+    zero raises ValueError naming mass_flows[i] and the step (for a constant rate, before the run: naming steps, dt).
+    Immutable; pickles (callables defined at module level); == compares rate and inertia_rule.
+    """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, rate: typing.Any = 0.0, inertia_rule: typing.Any = 'scaled') -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def inertia_rule(self) -> typing.Any:
+        """
+        'scaled' or the callable inertia_rule(m) -> (3, 3) [kg m^2]
+        """
+    @property
+    def rate(self) -> typing.Any:
+        """
+        dm/dt [kg/s] (a float) or the callable rate(t)
+        """
 class SceneCompatibilityWarning(UserWarning):
     """
     Warned when a scene is compiled for a method whose properties its elements break (e.g. velocity-dependent forces with a splitting method: order 1 in the damping, energy behaviour not symplectic). A UserWarning.
     """
 class Scene:
     """
-    A scene: bodies (Particle, PlanarBody, RigidBody) and the force elements acting on them, as data.
+    A scene: bodies (Particle, PlanarBody, RigidBody, PivotedBody, PivotedPlanarBody) and the force elements
+    acting on them, as data, in a frame: W (inertial; the default) or the SceneFrame `frame` (states, elements and
+    records are then relative to it, with its fictitious forces compiled in). A body may carry a MassFlow (its mass
+    changes; a Thrust element gives its force).
     
         scene = rigiddyn.Scene()
         sat = scene.add_body(rigiddyn.RigidBody(500.0, [400.0, 300.0, 200.0]), name="sat")
@@ -1572,18 +1989,18 @@ class Scene:
         result = rigiddyn.simulate(scene, [rigiddyn.RigidBodyState(p_W=[7e6, 0, 0], v_W=[0, 7546.0, 0])],
                                    dt=1.0, steps=6000, method="rk4")
     
-    Scene(bodies=None, body_names=None, elements=None) builds the same from lists (body_names: one str or
-    None per body); it is what repr prints. Bodies are indexed in the order added; an element refers to bodies
+    Scene(bodies=None, body_names=None, elements=None, frame=None, mass_flows=None) builds the same from lists
+    (body_names: one str or None per body; mass_flows: one MassFlow or None per body); it is what repr prints. Bodies are indexed in the order added; an element refers to bodies
     by index and is checked against the bodies added so far (add bodies first). Compile it for a method with
     compile(method) (a CompiledScene, immutable), or give it to rigiddyn.simulate / rigiddyn.step, which
-    compile it. Mutable (add_body, add); pickles; == compares bodies, names and elements.
+    compile it. Mutable (add_body, add, frame); pickles; == compares bodies, names, elements, frame and mass flows.
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, other: typing.Any) -> typing.Any:
         ...
-    def __getstate__(self) -> tuple[list, list, list]:
+    def __getstate__(self) -> tuple[list, list, list, typing.Any, typing.Any]:
         ...
-    def __init__(self, bodies: typing.Any = None, body_names: typing.Any = None, elements: typing.Any = None) -> None:
+    def __init__(self, bodies: typing.Any = None, body_names: typing.Any = None, elements: typing.Any = None, frame: typing.Any = None, mass_flows: typing.Any = None) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -1591,11 +2008,11 @@ class Scene:
         ...
     def add(self, element: typing.Any) -> int:
         """
-        Adds a force element (UniformGravity, PointMassGravity, MutualGravity, GravityGradient, SpringDamper, Drag, ScheduledLoads, PythonForce) after checking it against the bodies added so far (indices in range, loads the body's kind can take: ValueError naming element.<field>); returns its index (the column of SceneResult.work and power).
+        Adds a force element (UniformGravity, PointMassGravity, MutualGravity, GravityGradient, SpringDamper, Drag, ScheduledLoads, PythonForce, Thrust) after checking it against the bodies added so far (indices in range, loads the body's kind can take: ValueError naming element.<field>); returns its index (the column of SceneResult.work and power).
         """
-    def add_body(self, body: typing.Any, name: typing.Any = None) -> int:
+    def add_body(self, body: typing.Any, name: typing.Any = None, mass_flow: typing.Any = None) -> int:
         """
-        Adds `body` (a Particle, PlanarBody or RigidBody) named `name` (a str no other body has; None: 'body<index>'); returns its index, by which elements refer to it.
+        Adds `body` (a Particle, PlanarBody, RigidBody, PivotedBody or PivotedPlanarBody) named `name` (a str no other body has; None: 'body<index>') with its mass flow `mass_flow` (a MassFlow; None: a constant mass); returns its index, by which elements refer to it.
         """
     def compile(self, method: typing.Any = 'rk4') -> CompiledScene:
         """
@@ -1623,6 +2040,19 @@ class Scene:
     def elements(self) -> tuple:
         """
         tuple of the force elements (copies), in the order added
+        """
+    @property
+    def frame(self) -> typing.Any:
+        """
+        the SceneFrame F the states, elements and records are relative to, or None (the default: W, inertial); assignable
+        """
+    @frame.setter
+    def frame(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def mass_flows(self) -> tuple:
+        """
+        tuple of each body's MassFlow, or None for a constant mass, in index order
         """
 class CompiledScene:
     """
@@ -1663,14 +2093,19 @@ class SceneResult:
     The records of simulate(scene, ...), one row per record (n records, nb bodies in the scene's order, ne
     elements in the scene's order); every array is read-only and shares the memory the C++ run filled.
     
+    "W" is the scene frame: W itself, or the scene's SceneFrame F (every array is then relative to F).
     t (n,) [s]; p_W (n, nb, 3) centre of mass positions in W [m]; q_WB (n, nb, 4) attitudes, (x, y, z, w)
     unless simulate(..., scalar_first=True); v_W (n, nb, 3) [m/s] in W; w_B (n, nb, 3) [rad/s] in each body's
     B. A particle records q_WB = identity and w_B = 0; a planar body p_W = (x, y, 0), q_WB = Rz(theta),
-    w_B = (0, 0, omega). kinetic_energy, potential_energy (the sum of the elements' potentials), total_energy
-    (n,) [J]; linear_momentum_W (n, 3) [kg m/s]; angular_momentum_W (n, 3) about W's origin [kg m^2/s];
+    w_B = (0, 0, omega); a pinned body its centre of mass. pivot_reaction_W (n, nb, 3) the pivot's force on each
+    body in W [N] (0 unpinned); angular_momentum_O_W (n, nb, 3) each body's about its pivot (about its centre of
+    mass unpinned), in W [kg m^2/s]; mass (n, nb) [kg]. kinetic_energy (relative to W), potential_energy (the sum
+    of the elements' potentials, and the centrifugal one of a frame turning at a constant rate: total_energy is
+    then the Jacobi integral), total_energy (n,) [J]; linear_momentum_W (n, 3) [kg m/s]; angular_momentum_W (n, 3) about W's origin [kg m^2/s];
     work (n, ne) each element's work since t0 [J] and power (n, ne) its power at the record [W] (integrated by
-    the run's method: kinetic_energy - kinetic_energy[0] ~ work.sum(axis=1)); body_names (nb,) and elements
-    (ne,) (each element's class name) label the axes; diverged, unconverged_steps, elapsed_seconds as in
+    the run's method: kinetic_energy - kinetic_energy[0] ~ work.sum(axis=1)); the columns are the scene's elements
+    then the frame's fictitious terms that act (CentrifugalForce, CoriolisForce, ...); body_names (nb,) and
+    elements (ne,) (each column's class name) label the axes; diverged, unconverged_steps, elapsed_seconds as in
     SimulationResult.
     """
     def __getstate__(self) -> tuple:
@@ -1682,6 +2117,11 @@ class SceneResult:
     def to_dataframe(self, scalar_first: typing.Any = False) -> typing.Any:
         """
         A pandas.DataFrame of the records (needs pandas): one row per record, one column per scalar with its unit (wide format; rigiddyn.scene_result documents the columns): 't [s]', then per body '<name>:p_W_x [m]' .. '<name>:q_WB_x' .. '<name>:v_W_x [m/s]' .. '<name>:w_B_x [rad/s]' .., then 'kinetic_energy [J]', 'potential_energy [J]', 'total_energy [J]', 'linear_momentum_W_x [kg m/s]' .., 'angular_momentum_W_x [kg m^2/s]' .., then per element i 'work[i] <Class> [J]' and 'power[i] <Class> [W]'. scalar_first=True for a result of simulate(..., scalar_first=True).
+        """
+    @property
+    def angular_momentum_O_W(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (n, nb, 3) each body's angular momentum about its pivot O (about its centre of mass when not pinned), in W [kg m^2/s]
         """
     @property
     def angular_momentum_W(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -1706,7 +2146,7 @@ class SceneResult:
     @property
     def elements(self) -> tuple:
         """
-        (ne,) tuple of the elements' class names
+        (ne,) tuple of the elements' class names, then the frame's fictitious terms' ('CentrifugalForce', ...)
         """
     @property
     def kinetic_energy(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -1719,9 +2159,19 @@ class SceneResult:
         (n, 3) sum of m v_W, in W [kg m/s]
         """
     @property
+    def mass(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (n, nb) each body's mass [kg] (changing under a MassFlow)
+        """
+    @property
     def p_W(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         (n, nb, 3) centre of mass positions in W [m]
+        """
+    @property
+    def pivot_reaction_W(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (n, nb, 3) the pivot's force on each body, in W [N] (0 for a body not pinned)
         """
     @property
     def potential_energy(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -1962,6 +2412,322 @@ class TorqueFreeSolution:
         """
         (3,) principal moments I1 <= I2 <= I3 [kg m^2] about the centre of mass.
         """
+class CompoundPendulumSolution:
+    """
+    Exact motion of the compound pendulum (a PivotedPlanarBody under uniform gravity) at any energy, in Jacobi's
+    elliptic functions (Landau & Lifshitz, Mechanics §11; DLMF §22.19): libration sin(v/2) = k sn(w0 t + u0|k^2),
+    rotation v/2 = am(k w0 t + u0|1/k^2), the separatrix and the equilibria, with v = theta - theta_stable the
+    angle from the stable equilibrium (where R_WB p_OC_B points along g) and w0^2 = m g d / I_O. Accurate up
+    to v0 -> pi: the complement 1 - k^2 is formed without cancellation.
+    """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, arg0: typing.Any) -> typing.Any:
+        """
+        Built from equal arguments (then every state is bitwise equal).
+        """
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, body: typing.Any, g_W: typing.Any, state: typing.Any) -> None:
+        """
+        body: a PivotedPlanarBody; g_W: (2,) or (3,) uniform gravity in W [m/s^2] (only its xy part acts);
+        state: the PivotedPlanarBodyState (theta [rad], omega [rad/s]) at t = 0. ValueError naming g_W or
+        state.theta / state.omega for non-finite values.
+        """
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    def at(self, t: typing.Any) -> tuple:
+        """
+        State at time t [s] (a float, or an (n,) array; negative allowed): (theta [rad], omega [rad/s]), floats
+        or (n,) arrays. theta is continuous from the initial theta (not wrapped; a rotating pendulum's theta grows).
+        """
+    @property
+    def amplitude(self) -> float:
+        """
+        Amplitude 2 asin k of a libration about the stable equilibrium [rad] (pi otherwise).
+        """
+    @property
+    def case(self) -> str:
+        """
+        'libration', 'rotation', 'separatrix', 'rest' (an equilibrium) or 'uniform' (no torque).
+        """
+    @property
+    def energy(self) -> float:
+        """
+        Energy about O [J]: 1/2 I_O omega^2 - m g_W . (R_WB p_OC_B) (constant).
+        """
+    @property
+    def k_squared(self) -> float:
+        """
+        k^2 = sin^2(v0/2) + (omega0_state/(2 w0))^2 (> 1 for a rotation).
+        """
+    @property
+    def k_squared_complement(self) -> float:
+        """
+        1 - k^2, computed without cancellation (cos^2(v0/2) at rest; negative for a rotation).
+        """
+    @property
+    def omega0(self) -> float:
+        """
+        w0 = sqrt(m g d / I_O) [rad/s], the small-oscillation angular frequency (0 without torque).
+        """
+    @property
+    def period(self) -> float:
+        """
+        Period [s]: 4 K(k^2)/w0 for a libration, the time of one turn for a rotation; inf at an
+        equilibrium, on the separatrix, and without torque and rate.
+        """
+    @property
+    def theta_stable(self) -> float:
+        """
+        theta of the stable equilibrium [rad] in (-pi, pi].
+        """
+class LagrangeTopSolution:
+    """
+    Exact motion of the heavy symmetric (Lagrange) top about its fixed point O (Goldstein, Classical Mechanics
+    §5.7; Landau & Lifshitz, Mechanics §35): u = cos(theta) = u1 + (u2 - u1) sn^2(lambda t + tau0|m) between the
+    roots u1 <= u2 of the cubic u'^2 = (1 - u^2)(alpha - beta u) - (b - a u)^2, the precession phi and spin psi by
+    Legendre's integral of the third kind. Euler angles Z-X-Z of the frame S (e1, e2, e3 = p_OC_B/|p_OC_B|, fixed in
+    B) in the inertial frame N: z_N = -g_W/|g_W| (up), x_N the line of nodes at t = 0 (phi(0) = 0). Cases:
+    'nutation' and 'sleeping' (e3 vertical, w_B along it); a motion whose axis passes through a vertical is refused
+    (ValueError naming state).
+    """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, arg0: typing.Any) -> typing.Any:
+        """
+        Built from equal arguments (then every state is bitwise equal).
+        """
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, body: typing.Any, g_W: typing.Any, state: typing.Any, scalar_first: typing.Any = False) -> None:
+        """
+        body: a PivotedBody whose inertia about O (inertia_O) is symmetric about the axis O->C to 1e-12 relative,
+        with C off O (ValueError naming body otherwise); g_W: (3,) uniform gravity in W [m/s^2], non-zero;
+        state: the PivotedBodyState (q_WB, w_B [rad/s] in B) at t = 0; scalar_first: the order of the quaternions
+        at() returns ((x, y, z, w) by default).
+        """
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    def angles_at(self, t: typing.Any) -> tuple:
+        """
+        Euler angles Z-X-Z (phi, theta, psi) [rad] of S in N at time t [s] (floats or (n,) arrays): precession
+        (phi(0) = 0), nutation (the tilt of e3 from the upward vertical), spin; phi and psi continuous.
+        """
+    def at(self, t: typing.Any) -> tuple:
+        """
+        State at time t [s] (a float, or an (n,) array; negative allowed): (q_WB, w_B) of shapes (4,), (3,) or
+        (n, 4), (n, 3); q_WB B to W in the order chosen at construction, w_B the angular velocity of B in W,
+        expressed in B [rad/s].
+        """
+    @property
+    def H_3(self) -> float:
+        """
+        Angular momentum about O along e3, I3 omega3 [kg m^2/s] (constant).
+        """
+    @property
+    def H_z(self) -> float:
+        """
+        Angular momentum about O along the upward vertical -g_W/|g_W| [kg m^2/s] (constant).
+        """
+    @property
+    def I1(self) -> float:
+        """
+        I1 = I2, the transverse moment about O [kg m^2].
+        """
+    @property
+    def I3(self) -> float:
+        """
+        I3, the axial moment [kg m^2].
+        """
+    @property
+    def a(self) -> float:
+        """
+        a = I3 omega3 / I1 [rad/s].
+        """
+    @property
+    def alpha(self) -> float:
+        """
+        alpha = 2 E'/I1 [1/s^2], E' the energy about O less 1/2 I3 omega3^2.
+        """
+    @property
+    def b(self) -> float:
+        """
+        b = H_z / I1 [rad/s].
+        """
+    @property
+    def beta(self) -> float:
+        """
+        beta = 2 m |g| l / I1 [1/s^2].
+        """
+    @property
+    def case(self) -> str:
+        """
+        'nutation' or 'sleeping'.
+        """
+    @property
+    def e3_B(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3,) the symmetry axis p_OC_B/|p_OC_B| in B.
+        """
+    @property
+    def elliptic_rate(self) -> float:
+        """
+        lambda = sqrt(beta (u3 - u1))/2 [1/s], the rate of the argument of sn.
+        """
+    @property
+    def energy(self) -> float:
+        """
+        Energy about O [J]: 1/2 w_B . I_O w_B - m g_W . (R_WB p_OC_B) (constant).
+        """
+    @property
+    def mean_precession_rate(self) -> float:
+        """
+        phi's change over one nutation period divided by it [rad/s] (0 when sleeping).
+        """
+    @property
+    def nutation_period(self) -> float:
+        """
+        Period of theta(t), 2 K(m)/lambda [s] (inf when sleeping).
+        """
+    @property
+    def parameter_m(self) -> float:
+        """
+        m = (u2 - u1)/(u3 - u1), the parameter of sn.
+        """
+    @property
+    def parameter_mc(self) -> float:
+        """
+        1 - m, computed without cancellation.
+        """
+    @property
+    def q_WN(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (4,) the frame N of the Euler angles, N to W (in the order chosen at construction).
+        """
+    @property
+    def roots(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3,) roots u1 <= u2 <= u3 of the cubic in u = cos(theta).
+        """
+    @property
+    def theta_max(self) -> float:
+        """
+        Largest tilt of e3 from the upward vertical, acos(u1) [rad].
+        """
+    @property
+    def theta_min(self) -> float:
+        """
+        Smallest tilt of e3 from the upward vertical, acos(u2) [rad].
+        """
+class RotatingFrameFreeParticle:
+    """
+    Exact motion of a free particle seen from a frame F turning at a constant rate about a fixed axis through its
+    origin: the straight line of the inertial frame turned into F, p_F(t) = R_FW(t) (p0 + v_W t), v_F = R_FW(t)
+    (v_W - w x p_W) ("Rigid body kinematics and dynamics" notes §4.11.1); it solves a_F = -w x (w x p_F) -
+    2 w x v_F (centrifugal and Coriolis only) and keeps the Jacobi integral 1/2|v_F|^2 - 1/2|w x p_F|^2.
+    """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, arg0: typing.Any) -> typing.Any:
+        """
+        Built from equal arguments (then every state is bitwise equal).
+        """
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, frame: typing.Any, p0_F: typing.Any, v0_F: typing.Any) -> None:
+        """
+        frame: a SceneFrame turning at a constant rate (SceneFrame.rotating or SceneFrame.earth; ValueError naming
+        frame for a general moving frame); p0_F (3,) [m], v0_F (3,) [m/s]: position and velocity relative to F,
+        in F, at t = 0.
+        """
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    def at(self, t: typing.Any) -> tuple:
+        """
+        State at time t [s] (a float, or an (n,) array): (p_F [m], v_F [m/s]) relative to F, in F, of shapes (3,)
+        or (n, 3).
+        """
+    @property
+    def jacobi_integral(self) -> float:
+        """
+        1/2 |v_F|^2 - 1/2 |w x p_F|^2 [J/kg], constant.
+        """
+    @property
+    def v_W(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3,) the constant inertial velocity [m/s], in F's axes at t = 0.
+        """
+    @property
+    def w_F(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3,) F's angular velocity [rad/s], in F.
+        """
+class ConstantThrustSolution:
+    """
+    Exact motion of a particle whose mass changes at a constant rate, m(t) = m0 + rate t, with the thrust
+    rate u_rel_W along a fixed direction and uniform gravity ("Rigid body kinematics and dynamics" notes, eq. (4.36):
+    m v' = m g + rate u_rel): v(t) = v0 + g t + u_rel ln(m(t)/m0), p(t) = p0 + v0 t + g t^2/2 + u_rel t h(x)/x with
+    x = rate t/m0, h(x) = (1 + x) ln(1 + x) - x (series near x = 0). Everything in the inertial frame W.
+    """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, arg0: typing.Any) -> typing.Any:
+        """
+        Built from equal arguments (then every state is bitwise equal).
+        """
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, m0: typing.Any, rate: typing.Any, u_rel_W: typing.Any, g_W: typing.Any = None, p0_W: typing.Any = None, v0_W: typing.Any = None) -> None:
+        """
+        m0: mass at t = 0 [kg] > 0; rate: dm/dt [kg/s] (negative: losing mass); u_rel_W (3,): velocity of the
+        ejected mass relative to the particle, in W [m/s]; g_W (3,) [m/s^2], p0_W (3,) [m], v0_W (3,) [m/s] (None:
+        zero). ValueError naming the argument for m0 <= 0 or a non-finite value.
+        """
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    def at(self, t: typing.Any) -> tuple:
+        """
+        State at time t [s] (a float, or an (n,) array): (p_W [m], v_W [m/s], mass [kg]) of shapes (3,), (3,), float
+        or (n, 3), (n, 3), (n,). ValueError naming t where the mass m0 + rate t is not positive (burn-out).
+        """
+    def delta_v(self, m1: typing.Any) -> float:
+        """
+        Tsiolkovsky: the speed the thrust gives while the mass goes from m0 to m1 [kg], |u_rel| ln(m0/m1) [m/s].
+        """
+    def mass_at(self, t: typing.Any) -> float:
+        """
+        m0 + rate t [kg] (not checked positive).
+        """
+    @property
+    def burnout_time(self) -> float:
+        """
+        -m0/rate [s], when the mass reaches zero; inf when rate >= 0.
+        """
+    @property
+    def g_W(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3,) uniform gravity in W [m/s^2]
+        """
+    @property
+    def m0(self) -> float:
+        """
+        mass at t = 0 [kg]
+        """
+    @property
+    def rate(self) -> float:
+        """
+        dm/dt [kg/s]
+        """
+    @property
+    def u_rel_W(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3,) velocity of the ejected mass relative to the particle, in W [m/s]
+        """
 def align_vectors(a: typing.Any, b: typing.Any, weights: typing.Any = None, return_sensitivity: typing.Any = False, scalar_first: typing.Any = False) -> tuple:
     """
     The rotation R that best maps the vectors b onto the vectors a (Wahba's problem), as SciPy's
@@ -2093,6 +2859,8 @@ def forward_dynamics(body: typing.Any, state: typing.Any, force: typing.Any = No
     RigidBody: force (3,) [N] at point (p_GP (3,) [m], from the centre of mass; None = the centre of mass), torque (3,) [N m], all expressed in `frame` ('world' or 'body'), gravity (3,); returns a BodyAcceleration (a_W (3,) [m/s^2] of the centre of mass in W, alpha_B (3,) [rad/s^2] in B; unpacks as a_W, alpha_B). Newton: m a = f + m g; Euler: I alpha + w x I w = tau_G.
     PlanarBody: in-plane force (2,) [N] at point (2,) [m], torque [N m] about z, gravity (2,) [m/s^2]; returns a PlanarAcceleration (a_W (2,), alpha [rad/s^2]); I_zz alpha = tau_G.
     Particle: force (3,) [N] in W (torque and point None, frame 'world'); returns a_W (3,) = force/m + g.
+    PivotedBody (state a PivotedBodyState): force (3,) [N] at point (p_CP (3,) [m] from the centre of mass; None = the centre of mass) and torque (3,) [N m], in `frame`, gravity (3,) [m/s^2] in W; returns a PivotedAcceleration (alpha_B (3,) [rad/s^2] in B, reaction_W (3,) [N] the pivot's force in W; unpacks as alpha_B, reaction_W): Euler about O, inertia_O alpha_B + w_B x inertia_O w_B = tau_O, and Newton for C, reaction = m a_C - f.
+    PivotedPlanarBody (state a PivotedPlanarBodyState): in-plane force (2,) [N] at point (2,) [m], torque [N m] about z, gravity (2,) or (3,) in W's plane; returns a PivotedPlanarAcceleration (alpha [rad/s^2], reaction_W).
     """
 def from_point_masses(masses: typing.Any, positions: typing.Any) -> SpatialInertia:
     """
@@ -2130,7 +2898,7 @@ def integrate_density_over_mesh(rho: typing.Any, vertices: typing.Any, faces: ty
     Gauss-Legendre, order^3 and (2 order)^3 points per face). rho: points (n, 3) -> (n,) [kg/m^3], must
     be defined on the mesh's convex hull. Returns a DensityIntegral.
     """
-def inverse_dynamics(body: typing.Any, state: typing.Any, a_W: typing.Any, alpha_B: typing.Any = None, gravity: typing.Any = None) -> typing.Any:
+def inverse_dynamics(body: typing.Any, state: typing.Any, a_W: typing.Any = None, alpha_B: typing.Any = None, gravity: typing.Any = None) -> typing.Any:
     """
     The applied loads the motion requires, reduced to the centre of mass (undoes forward_dynamics).
     body: a RigidBody, PlanarBody or Particle; state: its state (RigidBodyState, PlanarBodyState or ParticleState), finite (ValueError naming it otherwise, e.g. for a state a diverged step returned). 
@@ -2138,6 +2906,7 @@ def inverse_dynamics(body: typing.Any, state: typing.Any, a_W: typing.Any, alpha
     RigidBody: a_W (3,) [m/s^2] in W, alpha_B (3,) [rad/s^2] in B; returns a ComWrench: f_W (3,) [N] in W and tau_B (3,) [N m] about the centre of mass in B (unpacks as f_W, tau_B), f_W = m (a_W - g), tau_B = I alpha_B + w_B x I w_B.
     PlanarBody: a_W (2,), alpha_B [rad/s^2] about z, gravity (2,); returns a PlanarWrench: f_W (2,) [N] in W and tau [N m] about z (unpacks as f_W, tau).
     Particle: a_W (3,) (alpha_B None); returns f_W (3,) [N] in W = m (a_W - g).
+    PivotedBody: alpha_B (3,) [rad/s^2] in B (a_W None: the pivot fixes it); returns a PivotedTorque: tau_O_B (3,) [N m] the torque about O in B the motion needs besides gravity, and reaction_W (3,) [N] in W (unpacks as tau_O_B, reaction_W). PivotedPlanarBody: alpha_B [rad/s^2] about z; returns a PivotedPlanarTorque (tau_O [N m], reaction_W).
     """
 def jacobi_ellipj(u: typing.Any, m: typing.Any, mc: typing.Any = None) -> typing.Any:
     """
@@ -2443,7 +3212,10 @@ def simulate(model: typing.Any, initial: typing.Any, dt: typing.Any, steps: typi
     dt and t0: each a float [s] or a pint quantity (converted to s; ValueError naming it for another dimension).
     
     model/initial: Particle/ParticleState, PlanarBody/PlanarBodyState or RigidBody/RigidBodyState; or a Scene
-      or CompiledScene and a list of the states of its bodies (returns a SceneResult: see Scene).
+      or CompiledScene and a list of the states of its bodies (returns a SceneResult: see Scene); or a PivotedBody/
+      PivotedBodyState or PivotedPlanarBody/PivotedPlanarBodyState: the one-body scene of the body, UniformGravity
+      (gravity) and ScheduledLoads (loads) (returns a SceneResult; a PivotedPlanarBody takes an in-plane gravity
+      (2,) or (3,)).
     method: a name of methods(); None (the default): 'rk4', or the method a CompiledScene was compiled for.
     loads: an AppliedLoad or a sequence of them, a piecewise-constant schedule: a step that crosses a
       switch time (a t_start or t_end) is split there into sub-steps of the same method, so every method
@@ -2544,7 +3316,9 @@ def step(model: typing.Any, state: typing.Any, dt: typing.Any, method: typing.An
     Warns RuntimeWarning if the new state is not finite, as simulate does. ValueError names a bad argument.
     method: a name of methods(); None (the default): 'rk4', or the method a CompiledScene was compiled for.
     model may also be a Scene or CompiledScene with `state` a list of the states of its bodies: returns the
-    list of new states (or (list, t + dt)).
+    list of new states (or (list, t + dt)); ValueError naming model for a scene with a MassFlow (a state does
+    not carry the mass: use simulate); or a PivotedBody / PivotedPlanarBody with its state (the step of its
+    one-body scene, as simulate): returns the new state (or (state, t + dt)).
     """
 def symmetry_planes(masses: typing.Any, positions: typing.Any, tolerance: typing.Any = 1e-09) -> list:
     """

@@ -3,12 +3,17 @@
 ``Scene.describe(method=None)`` and ``CompiledScene.describe()`` call this (attached when rigiddyn is
 imported). The text has four parts:
 
-- a header: counts, the reference frame (W, inertial: moving frames come with a later issue), the units;
+- a header: counts, the scene frame (W, inertial; or F, its motion relative to the inertial W), the units;
 - Bodies: index, name, kind, mass [kg], inertia [kg m^2] about the centre of mass in B, state variables;
+  then, for bodies pinned at a point O (pivoted kinds), the pivot O, the centre of mass relative to it,
+  the inertia about O (parallel-axis theorem) and the decimal digits of I_C it loses; and the bodies
+  whose mass changes (rate, inertia rule);
 - Force elements: index, type, parameters in SI with their units and frames, properties (potential,
   velocity- or time-dependent), and one column per body naming the terms it puts on that body
   (``f`` a force, ``tau`` a torque, ``f+tau`` both, ``.`` none): a declared element acts only where marked,
-  and a compiled model evaluates nothing else;
+  and a compiled model evaluates nothing else; in a moving frame, the fictitious terms compile adds
+  (frame.origin, frame.euler, frame.centrifugal, frame.coriolis: those not identically zero) follow
+  the user's elements, numbered as in the result's work and power columns;
 - Method (when one is given or the scene is compiled): order, evaluations per step, what it conserves,
   and the compile's verdict (accepted, its compatibility warnings, or the refusal with its reason).
 """
@@ -28,13 +33,62 @@ __all__ = ["describe"]
 _UNITS = ("Units: SI (m, kg, s, N, N m, J, rad); p_W [m] and v_W [m/s] in W; q_WB (x, y, z, w) maps B to W; "
           "w_B [rad/s] in B; inertia about the centre of mass in B")
 _FRAME = "Frame: W, inertial (fixed)"
-_STATE = {"particle": "p_W, v_W (6)", "planar": "x, y, theta, vx, vy, omega (6)", "rigid": "p_W, q_WB, v_W, w_B (13)"}
+_STATE = {"particle": "p_W, v_W (6)", "planar": "x, y, theta, vx, vy, omega (6)", "rigid": "p_W, q_WB, v_W, w_B (13)",
+          "pivoted": "q_WB, w_B (7)", "pivoted_planar": "theta, omega (2)"}
+_KIND = {"Particle": "particle", "PlanarBody": "planar", "RigidBody": "rigid", "PivotedBody": "pivoted",
+         "PivotedPlanarBody": "pivoted_planar"}
+# the fictitious terms compile adds for a moving frame: (name, class in SceneResult.elements, force)
+_FICTITIOUS = (("frame.origin", "FrameOriginForce", "-m a_O"), ("frame.euler", "EulerForce", "-m alpha x r"),
+               ("frame.centrifugal", "CentrifugalForce", "-m Omega x (Omega x r)"),
+               ("frame.coriolis", "CoriolisForce", "-2 m Omega x v_rel"))
 
 
 def _kind(body: Any) -> str:
-    if isinstance(body, _core.Particle):
-        return "particle"
-    return "planar" if isinstance(body, _core.PlanarBody) else "rigid"
+    return _KIND[type(body).__name__]
+
+
+def frame_rotation(frame: Any) -> tuple[np.ndarray, float] | None:
+    """(axis in F, rate [rad/s]) of a SceneFrame turning at a constant rate about a fixed origin
+    (SceneFrame.rotating, .earth, or .moving of a FrameMotion.constant_rotation; a FrameMotion.fixed
+    placement: rate 0), None for another motion."""
+    try:
+        state = frame.motion.__getstate__()
+    except (AttributeError, TypeError, ValueError):
+        return None
+    if state[0] == "fixed":
+        return np.array([0.0, 0.0, 1.0]), 0.0
+    if state[0] != "constant_rotation":
+        return None
+    _, axis_W, rate, R_WF0, _ = state
+    return np.asarray(R_WF0, dtype=np.float64).T @ np.asarray(axis_W, dtype=np.float64), float(rate)  # axis fixed in F
+
+
+def frame_terms_of(frame: Any) -> list[str]:
+    """The names of the fictitious terms compile adds for `frame` (None: none): a constant rotation about
+    a fixed origin adds frame.centrifugal and frame.coriolis (none at rate 0); a general motion every term."""
+    if frame is None:
+        return []
+    rotation = frame_rotation(frame)
+    if rotation is None:
+        return [name for name, _, _ in _FICTITIOUS]
+    return ["frame.centrifugal", "frame.coriolis"] if rotation[1] != 0.0 else []
+
+
+def _frame_line(frame: Any) -> str:
+    """The header's frame line: W, or F and its motion relative to the inertial W."""
+    if frame is None:
+        return _FRAME
+    rotation = frame_rotation(frame)
+    if rotation is None:
+        return ("Frame: F, moving relative to the inertial W (a general SceneFrame.moving: angular velocity, "
+                "angular acceleration and origin acceleration from its FrameMotion); states relative to F")
+    axis, rate = rotation
+    u = axis / np.linalg.norm(axis)
+    state = frame.__getstate__()  # ("earth", latitude) for SceneFrame.earth
+    earth = (f" = SceneFrame.earth at latitude {np.degrees(state[1]):.6g} deg (x east, y north, z up)"
+             if state[0] == "earth" else "")
+    return (f"Frame: F{earth}, rotating relative to the inertial W at Omega = {rate:.6g} rad/s about {_g(u)} "
+            "(in F) through its origin; states relative to F")
 
 
 def _g(x: Any) -> str:
@@ -46,12 +100,53 @@ def _g(x: Any) -> str:
 def _inertia(body: Any, kind: str) -> str:
     if kind == "particle":
         return "-"
-    if kind == "planar":
+    if kind in ("planar", "pivoted_planar"):
         return f"I_zz {_g(body.inertia_zz)}"
-    inertia = np.asarray(body.inertia_com, dtype=np.float64)
+    return _matrix(body.inertia_com)
+
+
+def _matrix(inertia: Any) -> str:
+    """An inertia matrix: diag(...) when diagonal, else its rows."""
+    inertia = np.asarray(inertia, dtype=np.float64)
     if not np.any(inertia - np.diag(np.diag(inertia))):
         return "diag" + _g(np.diag(inertia))
     return "[" + "; ".join(_g(row)[1:-1] for row in inertia) + "]"
+
+
+def _pivot_lines(bodies: Sequence[Any], names: Sequence[str], kinds: Sequence[str]) -> list[str]:
+    """The pinned bodies: pivot O, centre of mass relative to O, inertia about O, digits of I_C lost."""
+    rows = []
+    for i, (b, kind) in enumerate(zip(bodies, kinds)):
+        if kind == "pivoted":
+            lost = float(b.digits_lost)
+            rows.append((str(i), names[i], _g(b.p_WO), _g(b.p_OC_B), _matrix(b.inertia_O),
+                         f"{lost:.2g}" + (" (WARNING: > 6)" if lost > 6 else "")))
+        elif kind == "pivoted_planar":
+            rows.append((str(i), names[i], _g(b.p_WO), _g(b.p_OC_B), f"I_zz {_g(b.inertia_O_zz)}", "-"))
+    if not rows:
+        return []
+    return (["", "Pivots (Euler's equations about O fixed in the scene frame; the reaction at O from Newton's law "
+             "for C)"]
+            + _table(("#", "name", "O: p_WO [m]", "C - O: p_OC_B [m] (B)", "inertia about O [kg m^2] (B)",
+                      "digits of I_C lost"), rows))
+
+
+def _mass_flow_lines(scene: Any, names: Sequence[str]) -> list[str]:
+    """The bodies whose mass changes: rate [kg/s] and inertia rule."""
+    flows = list(getattr(scene, "mass_flows", []) or [])
+    rows = []
+    for i, flow in enumerate(flows):
+        if flow is None:
+            continue
+        rate = "a function of t" if callable(flow.rate) else f"{_g(flow.rate)} kg/s"
+        rule = ("I_C = I_C0 m / m0" if flow.inertia_rule == "scaled" else "I_C = a function of m")
+        if isinstance(scene.bodies[i], _core.Particle):
+            rule = "- (a particle)"
+        rows.append((str(i), names[i], rate, rule))
+    if not rows:
+        return []
+    return (["", "Mass flows (the mass is one more state; the ejected mass carries its own angular momentum: "
+             "no jet damping)"] + _table(("#", "name", "dm/dt", "inertia rule"), rows))
 
 
 def _acts_on(element: Any, nb: int) -> list[int]:
@@ -77,11 +172,19 @@ def _terms(element: Any, body: int, kind: str) -> str:
     elif cls == "Drag":
         force = element.linear > 0 or element.quadratic > 0
         torque = torque and (element.angular_linear > 0 or element.angular_quadratic > 0)
+    elif cls == "Thrust":
+        torque = torque and bool(np.any(np.asarray(element.r_B)))
     elif cls == "ScheduledLoads":
         force = any(np.any(np.asarray(load.force)) for load in element.loads)
         torque = torque and (any(np.any(np.asarray(load.torque)) for load in element.loads)
                              or (force and bool(np.any(np.asarray(element.point_B)))))
     return "+".join(t for t, on in (("f", force), ("tau", torque)) if on) or "."
+
+
+def _fictitious_terms(kind: str) -> str:
+    """The terms a fictitious force of the frame puts on a body of `kind` (a torque on bodies with an
+    attitude: Euler's equations relative to F)."""
+    return "f" if kind == "particle" else "f+tau"
 
 
 def _parameters(element: Any, names: Sequence[str]) -> str:
@@ -104,6 +207,9 @@ def _parameters(element: Any, names: Sequence[str]) -> str:
     if cls == "Drag":
         return (f"linear {_g(element.linear)} N s/m, quadratic {_g(element.quadratic)} N s^2/m^2, angular "
                 f"{_g(element.angular_linear)} N m s/rad, {_g(element.angular_quadratic)} N m s^2/rad^2")
+    if cls == "Thrust":
+        return (f"f = (dm/dt) u_rel, u_rel = {_g(element.u_rel)} m/s in {'B' if str(element.frame) == 'body' else 'W'}"
+                f", at r_B = {_g(element.r_B)} m in B")
     if cls == "ScheduledLoads":
         frames = sorted({str(load.frame) for load in element.loads}) or ["-"]
         return (f"{len(element.loads)} piecewise-constant loads (force N, torque N m in {' and '.join(frames)}) "
@@ -125,6 +231,8 @@ def _properties(element: Any) -> str:
         props.append("velocity-dependent")
     if cls in ("ScheduledLoads", "PythonForce"):
         props.append("time-dependent")
+    if cls == "Thrust":
+        props.append("scales with dm/dt")
     return ", ".join(props) or "-"
 
 
@@ -151,6 +259,11 @@ def _method_lines(scene: Any, method: str, compiled: Any | None) -> list[str]:
     return lines + ([f"  warning: {w}" for w in found] or ["  accepted: no compatibility warning"])
 
 
+def _count(n: int, one: str, many: str) -> str:
+    """'1 body', '3 bodies': n with the noun in its number."""
+    return f"{n} {one if n == 1 else many}"
+
+
 def describe(scene: Any, method: str | None = None) -> str:
     """A text table of `scene` (a Scene, or a CompiledScene: its scene and method): bodies (kind, mass
     [kg], inertia [kg m^2] in B, state), force elements (parameters in SI with frames, properties, the
@@ -167,18 +280,29 @@ def describe(scene: Any, method: str | None = None) -> str:
         raise TypeError(f"method: expected None or a method name (str), got {type(method).__name__}")
     bodies, names, elements = list(scene.bodies), list(scene.body_names), list(scene.elements)
     kinds = [_kind(b) for b in bodies]
-    lines = [f"Scene: {len(bodies)} bodies, {len(elements)} force elements", _FRAME, _UNITS, "", "Bodies"]
+    frame = getattr(scene, "frame", None)
+    units = _UNITS if frame is None else _UNITS.replace(" in W;", " in F (the scene frame: 'W' in names);").replace(
+        "maps B to W", "maps B to F")
+    lines = [f"Scene: {_count(len(bodies), 'body', 'bodies')}, {_count(len(elements), 'force element', 'force elements')}",
+             _frame_line(frame), units, "", "Bodies"]
+    flows = list(getattr(scene, "mass_flows", []) or [None] * len(bodies))
     lines += _table(("#", "name", "kind", "mass [kg]", "inertia [kg m^2] (B)", "state"),
-                    [(str(i), names[i], kinds[i], _g(b.mass), _inertia(b, kinds[i]), _STATE[kinds[i]])
-                     for i, b in enumerate(bodies)])
+                    [(str(i), names[i], kinds[i], _g(b.mass), _inertia(b, kinds[i]),
+                      _STATE[kinds[i]] + ("" if flows[i] is None else " + m (1)")) for i, b in enumerate(bodies)])
+    lines += _pivot_lines(bodies, names, kinds) + _mass_flow_lines(scene, names)
     lines += ["", "Force elements (terms per body: f force, tau torque, . none)"]
-    if elements:
-        rows = []
-        for i, e in enumerate(elements):
-            acting = set(_acts_on(e, len(bodies)))
-            rows.append((str(i), type(e).__name__, _properties(e),
-                         *[_terms(e, b, kinds[b]) if b in acting else "." for b in range(len(bodies))],
-                         _parameters(e, names)))
+    rows = []
+    for i, e in enumerate(elements):
+        acting = set(_acts_on(e, len(bodies)))
+        rows.append((str(i), type(e).__name__, _properties(e),
+                     *[_terms(e, b, kinds[b]) if b in acting else "." for b in range(len(bodies))],
+                     _parameters(e, names)))
+    fictitious = {name: (cls, force) for name, cls, force in _FICTITIOUS}
+    for j, name in enumerate(frame_terms_of(frame)):
+        cls, force = fictitious[name]
+        rows.append((str(len(elements) + j), f"{cls} ({name})", "fictitious, of the frame",
+                     *[_fictitious_terms(kinds[b]) for b in range(len(bodies))], f"f = {force} on every body"))
+    if rows:
         lines += _table(("#", "element", "properties", *names, "parameters (SI)"), rows)
     else:
         lines.append("  none: free bodies")

@@ -1,7 +1,8 @@
 """TOML scene files: bodies, force elements (bodies named), initial states and run options, with units.
 
 ``load_scene(path_or_text)`` returns ``(scene, initial, run)``: a rigiddyn.Scene, the list of initial
-states (ParticleState, PlanarBodyState or RigidBodyState, one per body, in file order) and a RunOptions;
+states (ParticleState, PlanarBodyState, RigidBodyState, PivotedBodyState or PivotedPlanarBodyState, one
+per body, in file order) and a RunOptions;
 ``load_scene("kepler")`` reads a shipped scene (``example_scenes()``). ``scene_to_toml(scene, initial,
 run)`` writes the canonical file (SI, radians, q_WB, every field explicit) that loads back to the same
 scene, states and options.
@@ -20,9 +21,22 @@ Every key the format knows (alternatives commented)::
     duration = "2 h"                    # [s] > 0 (no default: simulate needs it)
     record_every = 1                    # integer >= 1 (default 1)
 
+    [tradeoff]                          # optional defaults of rigiddyn.tradeoff on this scene
+    methods = ["rk4", "splitting_dlm"]  # names of rigiddyn.methods() (default: all)
+    dts = ["1 ms", "0.5 ms"]            # steps [s]
+    horizon = "2 s"                     # [s] (default: the [run] duration)
+    tolerance = 1e-6                    # of measure, for the recommendation
+    measure = "final_state_error"       # one of rigiddyn.work_precision.MEASURES
+
+    [frame]                             # optional: the frame F the states are relative to (absent: W,
+    kind = "rotating"                   # inertial); "rotating": axis (any length, in F = W at t = 0)
+    axis = [0, 0, 1]                    # and rate [rad/s] about it through the origin; or
+    rate = "1 rpm"                      # kind = "earth", latitude = "48.85 deg": the local frame (x east,
+                                        # y north, z up) turning at 7.2921159e-5 rad/s with the Earth
+
     [[body]]                            # one table per body, in index order
     name = "sat"                        # optional, unique (default "body<i>"); forces refer to it
-    kind = "rigid"                      # "particle" | "planar" | "rigid"
+    kind = "rigid"                      # "particle" | "planar" | "rigid" | "pivoted" | "pivoted_planar"
     mass = "2 slug"                     # [kg] > 0
     inertia = [1, 2, 3]                 # rigid: principal moments or a 3x3 [[..], [..], [..]] [kg m^2]
                                         # about the centre of mass in B; planar: I_zz [kg m^2]
@@ -37,6 +51,13 @@ Every key the format knows (alternatives commented)::
     # axis_angle = {axis = [0, 0, 1], angle = "30 deg"}
     # theta = "30 deg"                  # planar: angle about z [rad]; default 0
     # omega = "60 rpm"                  # planar: rate about z [rad/s]; default 0
+    # p_OC_B = [0, 0, 0.1]              # pivoted (pinned at a point O fixed in the scene frame; the
+    # p_WO = [0, 0, 0]                  # fields of "rigid" but p_W, v_W) and pivoted_planar (those of
+    #                                   # "planar" but p_W, v_W): the centre of mass relative to O in B
+    #                                   # [m] (required; [x, y] planar) and O in the scene frame [m] (0)
+    # [body.mass_flow]                  # optional, any kind: the body's mass changes (after its table)
+    # rate = "-2 kg/s"                  # dm/dt [kg/s] (negative: losing mass; default 0)
+    # inertia_rule = "scaled"           # I_C = I_C0 m / m0 (the only rule a file holds)
 
     [[force]]                           # one table per force element; `type` picks it
     type = "uniform_gravity"            # g_W [m/s^2] (default [0, 0, -9.81]), bodies
@@ -51,6 +72,10 @@ Every key the format knows (alternatives commented)::
     # type = "scheduled_loads"          # body (a name), point_B [m] in B (0), and its loads:
     # [[force.loads]]                   # force [N], torque [N m] (0), frame "world" | "body",
     #                                   # t_start, t_end [s] (default -inf, +inf), as in problem files
+    # type = "thrust"                   # body (a name; it needs a [body.mass_flow]), u_rel [m/s] the
+    #                                   # velocity of the ejected mass relative to the body, frame
+    #                                   # "body" (default) | "world" (of u_rel), r_B [m] in B (0):
+    #                                   # f = (dm/dt) u_rel at the point r_B
     bodies = ["sat", "boom"]            # names of the bodies it acts on; absent: every body
 
     [[cluster]]                         # generated particles, after the [[body]] tables, with their own
@@ -68,6 +93,10 @@ A [[cluster]] is a Plummer sphere in virial equilibrium (scene_file.plummer_sphe
 scene_to_toml writes the generated bodies out as [[body]] tables and the gravity as a [[force]] (a Scene
 does not remember its generator); that file reads back to the same scene and states.
 
+In a scene with a [frame], "W" in the names above is that frame: the elements act in it and the
+states are relative to it (rigiddyn.SceneFrame). A [body.mass_flow] table belongs to the [[body]]
+table above it (TOML's rule for sub-tables of an array of tables).
+
 A field without a default is required. Every error is a ValueError "<field>: expected ..., got ..."
 naming the field by its path (``body[2].inertia: expected kg m^2, got '3 kg m' ([mass] * [length])``,
 ``force[1].body_a``); an unknown key is one too, with the closest known key.
@@ -79,14 +108,14 @@ import math
 import sys
 import warnings
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
 from . import _core
-from .problem import _closest, _orientation
+from .problem import _closest, _orientation, _tradeoff_defaults
 from .units import quantity, vector_quantity
 
 if sys.version_info >= (3, 11):
@@ -100,11 +129,19 @@ __all__ = ["FORCE_TYPES", "RunOptions", "SceneFile", "example_scenes", "load_sce
 _SCENES_DIR = Path(__file__).resolve().parent / "scenes"
 _ATTITUDES = ("q_WB", "euler", "rotvec", "axis_angle", "scalar_first")
 _BODY_KEYS = {
-    "particle": frozenset({"name", "kind", "mass", "p_W", "v_W"}),
-    "planar": frozenset({"name", "kind", "mass", "inertia", "p_W", "v_W", "theta", "omega"}),
-    "rigid": frozenset({"name", "kind", "mass", "inertia", "inertia_check", "p_W", "v_W", "w_B", *_ATTITUDES}),
+    "particle": frozenset({"name", "kind", "mass", "p_W", "v_W", "mass_flow"}),
+    "planar": frozenset({"name", "kind", "mass", "inertia", "p_W", "v_W", "theta", "omega", "mass_flow"}),
+    "rigid": frozenset({"name", "kind", "mass", "inertia", "inertia_check", "p_W", "v_W", "w_B", *_ATTITUDES,
+                        "mass_flow"}),
+    "pivoted": frozenset({"name", "kind", "mass", "inertia", "inertia_check", "p_OC_B", "p_WO", "w_B", *_ATTITUDES,
+                          "mass_flow"}),
+    "pivoted_planar": frozenset({"name", "kind", "mass", "inertia", "p_OC_B", "p_WO", "theta", "omega", "mass_flow"}),
 }
-_TOP_KEYS = frozenset({"name", "description", "run", "body", "force", "cluster"})
+_KINDS = "one of " + ", ".join(map(repr, _BODY_KEYS))
+_TOP_KEYS = frozenset({"name", "description", "run", "tradeoff", "frame", "body", "force", "cluster"})
+_TRADEOFF_KEYS = frozenset({"methods", "dts", "tolerance", "measure", "horizon"})
+_MASS_FLOW_KEYS = frozenset({"rate", "inertia_rule"})
+_FRAME_KEYS = {"rotating": frozenset({"kind", "axis", "rate"}), "earth": frozenset({"kind", "latitude"})}
 _CLUSTER_KEYS = frozenset({"model", "count", "total_mass", "scale_radius", "G", "softening", "seed", "name_prefix"})
 _RUN_KEYS = frozenset({"method", "dt", "duration", "record_every"})
 _LOAD_KEYS = frozenset({"force", "torque", "frame", "t_start", "t_end"})
@@ -116,7 +153,8 @@ _UNIT_NORM = 4 * np.finfo(np.float64).eps
 
 @dataclass(frozen=True)
 class _Field:
-    """A force field: how it is read ("scalar", "vector", "bodies", "body", "optional_body", "loads"),
+    """A force field: how it is read ("scalar", "vector", "bodies", "body", "optional_body", "loads",
+    "frame": 'body' or 'world'),
     its SI unit (a pint expression) and its default (_REQUIRED, or a value in SI)."""
 
     kind: str
@@ -148,6 +186,9 @@ FORCE_TYPES: dict[str, tuple[str, dict[str, _Field]]] = {
     "scheduled_loads": ("ScheduledLoads", {
         "body": _Field("body"), "loads": _Field("loads", default=()),
         "point_B": _Field("vector", "m", (0.0, 0.0, 0.0))}),
+    "thrust": ("Thrust", {
+        "body": _Field("body"), "u_rel": _Field("vector", "m/s"), "frame": _Field("frame", default="body"),
+        "r_B": _Field("vector", "m", (0.0, 0.0, 0.0))}),
 }
 _TYPE_OF_CLASS = {cls: name for name, (cls, _) in FORCE_TYPES.items()}
 
@@ -155,12 +196,14 @@ _TYPE_OF_CLASS = {cls: name for name, (cls, _) in FORCE_TYPES.items()}
 @dataclass(frozen=True)
 class RunOptions:
     """A scene file's [run]: method (a name of rigiddyn.methods()), dt [s] and duration [s] (None when
-    the file gives none), record_every (record every k-th step)."""
+    the file gives none), record_every (record every k-th step); and its [tradeoff] table, the defaults
+    of rigiddyn.tradeoff on the scene (methods, dts [s], tolerance, measure, horizon [s]; empty: none)."""
 
     method: str = "rk4"
     dt: float | None = None
     duration: float | None = None
     record_every: int = 1
+    tradeoff: Mapping[str, Any] = field(default_factory=dict)
 
     @property
     def steps(self) -> int | None:
@@ -280,27 +323,41 @@ def _body(table: Any, i: int) -> tuple[str, Any, Any]:
     name = f"body[{i}]"
     if not isinstance(table, Mapping):
         raise _fail(name, "a table [[body]]", table)
-    kind = _string(_required(table, "kind", name, "one of 'particle', 'planar', 'rigid'"), f"{name}.kind",
-                   "one of 'particle', 'planar', 'rigid'")
+    kind = _string(_required(table, "kind", name, _KINDS), f"{name}.kind", _KINDS)
     if kind not in _BODY_KEYS:
-        raise _fail(f"{name}.kind", "one of 'particle', 'planar', 'rigid'", kind)
+        close = _closest(kind, _BODY_KEYS)
+        raise _fail(f"{name}.kind", _KINDS + (f" (did you mean {close!r}?)" if close else ""), kind)
     _check_keys(table, name, _BODY_KEYS[kind], f"a [[body]] of kind {kind!r}")
     body_name = _string(table.get("name", f"body{i}"), f"{name}.name")
     mass = quantity(_required(table, "mass", name, "a mass [kg] > 0"), f"{name}.mass", "kg", positive=True)
+    if kind.startswith("pivoted"):
+        return (body_name, *_pivoted(table, name, kind, mass))
     n = 2 if kind == "planar" else 3
     p_W = vector_quantity(table.get("p_W", [0.0] * n), f"{name}.p_W", "m", n)
     v_W = vector_quantity(table.get("v_W", [0.0] * n), f"{name}.v_W", "m/s", n)
     if kind == "particle":
         return body_name, _core_call(_core.Particle, name, mass), _core_call(_core.ParticleState, name, p_W, v_W)
-    inertia_value = _required(table, "inertia", name, "I_zz [kg m^2]" if kind == "planar" else
-                              "3 principal moments or a 3x3 matrix [kg m^2]")
     if kind == "planar":
-        inertia_zz = quantity(inertia_value, f"{name}.inertia", "kg*m^2", positive=True)
-        theta = quantity(table.get("theta", 0.0), f"{name}.theta", "rad")
-        omega = quantity(table.get("omega", 0.0), f"{name}.omega", "rad/s")
+        inertia_zz, theta, omega = _planar_rotation(table, name)
         return (body_name, _core_call(_core.PlanarBody, name, mass, inertia_zz, keys={"inertia_zz": "inertia"}),
                 _core_call(_core.PlanarBodyState, name, p_W, theta, v_W, omega))
-    inertia = _inertia(inertia_value, f"{name}.inertia")
+    body, q_WB, w_B = _rigid_rotation(table, name, mass)
+    return body_name, body, _core_call(_core.RigidBodyState, name, p_W, q_WB, v_W, w_B)
+
+
+def _planar_rotation(table: Mapping[str, Any], name: str) -> tuple[float, float, float]:
+    """inertia I_zz [kg m^2], theta [rad] and omega [rad/s] of a planar [[body]] (planar, pivoted_planar)."""
+    inertia_zz = quantity(_required(table, "inertia", name, "I_zz [kg m^2]"), f"{name}.inertia", "kg*m^2",
+                          positive=True)
+    theta = quantity(table.get("theta", 0.0), f"{name}.theta", "rad")
+    omega = quantity(table.get("omega", 0.0), f"{name}.omega", "rad/s")
+    return inertia_zz, theta, omega
+
+
+def _rigid_rotation(table: Mapping[str, Any], name: str, mass: float) -> tuple[Any, Any, np.ndarray]:
+    """(RigidBody, q_WB (x, y, z, w), w_B [rad/s]) of a [[body]] with an attitude (rigid, pivoted)."""
+    inertia = _inertia(_required(table, "inertia", name, "3 principal moments or a 3x3 matrix [kg m^2]"),
+                       f"{name}.inertia")
     check = table.get("inertia_check", "physical")
     if not isinstance(check, str) or check not in _core.InertiaCheck.__members__:
         raise _fail(f"{name}.inertia_check", " or ".join(map(repr, _core.InertiaCheck.__members__)), check)
@@ -312,8 +369,57 @@ def _body(table: Any, i: int) -> tuple[str, Any, Any]:
         written = np.asarray(table["q_WB"], dtype=np.float64)  # numbers: _orientation checked them
         if abs(np.linalg.norm(written) - 1.0) <= _UNIT_NORM:
             q_WB = written  # unit to round-off already: kept bit for bit
-    state = _core_call(_core.RigidBodyState, name, p_W, q_WB if q_WB is not None else (0.0, 0.0, 0.0, 1.0), v_W, w_B)
-    return body_name, body, state
+    return body, q_WB if q_WB is not None else np.array([0.0, 0.0, 0.0, 1.0]), w_B
+
+
+def _pivoted(table: Mapping[str, Any], name: str, kind: str, mass: float) -> tuple[Any, Any]:
+    """(body, initial state) of a [[body]] pinned at a point O fixed in the scene frame: kind 'pivoted'
+    (a RigidBody, attitude and w_B) or 'pivoted_planar' (I_zz, theta, omega); p_OC_B: the centre of mass
+    relative to O in B [m] (required), p_WO: O in the scene frame [m] (default 0)."""
+    n = 2 if kind == "pivoted_planar" else 3
+    p_OC_B = vector_quantity(_required(table, "p_OC_B", name, f"the centre of mass relative to the pivot, {n} "
+                                       "lengths [m] in B"), f"{name}.p_OC_B", "m", n)
+    p_WO = vector_quantity(table.get("p_WO", [0.0] * n), f"{name}.p_WO", "m", n)
+    if kind == "pivoted_planar":
+        inertia_zz, theta, omega = _planar_rotation(table, name)
+        body = _core_call(_core.PivotedPlanarBody, name, mass, inertia_zz, p_OC_B, p_WO, keys={"inertia_zz": "inertia"})
+        return body, _core_call(_core.PivotedPlanarBodyState, name, theta=theta, omega=omega)
+    rigid, q_WB, w_B = _rigid_rotation(table, name, mass)
+    body = _core_call(_core.PivotedBody, name, rigid, p_OC_B, p_WO)
+    return body, _core_call(_core.PivotedBodyState, name, q_WB=q_WB, w_B=w_B)
+
+
+def _mass_flow(table: Mapping[str, Any], name: str) -> Any:
+    """The MassFlow of a [[body]]'s [body.mass_flow] table, None without one: rate [kg/s] (negative: the
+    body loses mass; default 0), inertia_rule "scaled" (I_C = I_C0 m / m0; a function of the mass
+    cannot be written in a file)."""
+    if "mass_flow" not in table:
+        return None
+    field = f"{name}.mass_flow"
+    flow = _check_keys(table["mass_flow"], field, _MASS_FLOW_KEYS, "[body.mass_flow]")
+    rate = quantity(flow.get("rate", 0.0), f"{field}.rate", "kg/s")
+    rule = flow.get("inertia_rule", "scaled")
+    if rule != "scaled":
+        raise _fail(f"{field}.inertia_rule", "'scaled' (a function of the mass: MassFlow in Python)", rule)
+    return _core_call(_core.MassFlow, field, rate=rate, inertia_rule=rule)
+
+
+def _frame(value: Any) -> Any:
+    """The SceneFrame of the [frame] table: kind "rotating" (axis, any non-zero length, and rate [rad/s]
+    about it through the origin) or "earth" (latitude [rad]: the local frame x east, y north, z up)."""
+    kinds = " or ".join(map(repr, _FRAME_KEYS))
+    if not isinstance(value, Mapping):
+        raise _fail("frame", "a table [frame]", value)
+    kind = _required(value, "kind", "frame", kinds)
+    if kind not in _FRAME_KEYS:
+        raise _fail("frame.kind", kinds, kind)
+    _check_keys(value, "frame", _FRAME_KEYS[kind], f"a [frame] of kind {kind!r}")
+    if kind == "earth":
+        latitude = quantity(_required(value, "latitude", "frame", "an angle [rad]"), "frame.latitude", "rad")
+        return _core_call(_core.SceneFrame.earth, "frame", latitude)
+    axis = vector_quantity(_required(value, "axis", "frame", "an axis [x, y, z]"), "frame.axis", "1")
+    rate = quantity(_required(value, "rate", "frame", "a rate [rad/s]"), "frame.rate", "rad/s")
+    return _core_call(_core.SceneFrame.rotating, "frame", axis, rate)
 
 
 def _body_ref(value: Any, name: str, names: Sequence[str]) -> int:
@@ -372,6 +478,10 @@ def _force(table: Any, i: int, names: Sequence[str]) -> Any:
             kwargs[key] = vector_quantity(value, field, f.unit)
         elif f.kind in ("body", "optional_body"):
             kwargs[key] = _body_ref(value, field, names)
+        elif f.kind == "frame":
+            if value not in ("body", "world"):
+                raise _fail(field, "'body' or 'world'", value)
+            kwargs[key] = value
         elif f.kind == "bodies":
             if not isinstance(value, list) or not value:
                 raise _fail(field, "a non-empty array of body names (absent: every body)", value)
@@ -381,7 +491,22 @@ def _force(table: Any, i: int, names: Sequence[str]) -> Any:
     return _core_call(getattr(_core, cls), name, **kwargs)
 
 
-def _run(value: Any) -> RunOptions:
+def _tradeoff(value: Any) -> dict[str, Any]:
+    """The [tradeoff] table: rigiddyn.tradeoff's defaults for the scene, as in problem files (methods,
+    dts [s], tolerance, measure), plus horizon [s] (default: the [run] duration)."""
+    table = _check_keys(value, "tradeoff", _TRADEOFF_KEYS, "[tradeoff]")
+    out = _tradeoff_defaults({k: v for k, v in table.items() if k not in ("dts", "horizon")})
+    if "dts" in table:
+        if not isinstance(table["dts"], list) or not table["dts"]:
+            raise _fail("tradeoff.dts", "a non-empty array of steps [s]", table["dts"])
+        out["dts"] = [quantity(d, f"tradeoff.dts[{i}]", "s", positive=True) for i, d in enumerate(table["dts"])]
+    if "horizon" in table:
+        out["horizon"] = quantity(table["horizon"], "tradeoff.horizon", "s", positive=True)
+    return out
+
+
+def _run(value: Any, tradeoff: Any = None) -> RunOptions:
+    """The [run] table (and the [tradeoff] table) as RunOptions."""
     table = _check_keys(value, "run", _RUN_KEYS, "[run]")
     method = _string(table.get("method", "rk4"), "run.method", "a method name")
     names = [m["name"] for m in _core.methods()]
@@ -392,7 +517,7 @@ def _run(value: Any) -> RunOptions:
     record_every = table.get("record_every", 1)
     if isinstance(record_every, bool) or not isinstance(record_every, int) or record_every < 1:
         raise _fail("run.record_every", "an integer >= 1", record_every)
-    return RunOptions(method, dt, duration, record_every)
+    return RunOptions(method, dt, duration, record_every, _tradeoff({} if tradeoff is None else tradeoff))
 
 
 # ------------------------------------------------------------------------------------------ [[cluster]]
@@ -519,8 +644,10 @@ def parse_scene(data: Mapping[str, Any], source: str = "scene") -> SceneFile:
         if body_name in names:
             raise _fail(f"body[{i}].name", "a name no other [[body]] has", body_name)
         names.append(body_name)
-        scene.add_body(body, name=body_name)
+        scene.add_body(body, name=body_name, mass_flow=_mass_flow(table, f"body[{i}]"))
         initial.append(state)
+    if "frame" in data:
+        scene.frame = _frame(data["frame"])
     gravities = []  # (first body, count, G, softening) of each cluster
     for k, table in enumerate(clusters):
         cluster = _cluster(table, k)
@@ -542,8 +669,8 @@ def parse_scene(data: Mapping[str, Any], source: str = "scene") -> SceneFile:
         bodies = None if count == len(names) else list(range(first, first + count))
         scene.add(_core.MutualGravity(G=G, softening=softening, bodies=bodies))
     description = _string(data.get("description", ""), "description")
-    return SceneFile(scene, initial, _run(data.get("run", {})), _string(data.get("name", source), "name"),
-                     description.strip())
+    run = _run(data.get("run", {}), data.get("tradeoff", {}))
+    return SceneFile(scene, initial, run, _string(data.get("name", source), "name"), description.strip())
 
 
 def example_scenes() -> list[str]:
@@ -612,18 +739,51 @@ def _body_table(name: str, body: Any, state: Any) -> dict[str, Any]:
         head = {"name": name, "kind": "planar", "mass": float(body.mass), "inertia": float(body.inertia_zz)}
         return head if state is None else {**head, "p_W": _floats(state.p_W), "v_W": _floats(state.v_W),
                                            "theta": float(state.theta), "omega": float(state.omega)}
+    if isinstance(body, _core.RigidBody):
+        table = {"name": name, "kind": "rigid", **_rigid_head(body)}
+        return table if state is None else {**table, "p_W": _floats(state.p_W), "v_W": _floats(state.v_W),
+                                            "w_B": _floats(state.w_B), "q_WB": _floats(state.q_WB)}
+    if type(body).__name__ == "PivotedPlanarBody":
+        head = {"name": name, "kind": "pivoted_planar", "mass": float(body.mass), "inertia": float(body.inertia_zz),
+                "p_OC_B": _floats(body.p_OC_B), "p_WO": _floats(body.p_WO)}
+        return head if state is None else {**head, "theta": float(state.theta), "omega": float(state.omega)}
+    table = {"name": name, "kind": "pivoted", **_rigid_head(body.body), "p_OC_B": _floats(body.p_OC_B),
+             "p_WO": _floats(body.p_WO)}  # a PivotedBody
+    return table if state is None else {**table, "w_B": _floats(state.w_B), "q_WB": _floats(state.q_WB)}
+
+
+def _rigid_head(body: Any) -> dict[str, Any]:
+    """mass, inertia (principal moments when diagonal) and, when needed, inertia_check of a RigidBody."""
     inertia = np.asarray(body.inertia_com, dtype=np.float64)
-    table: dict[str, Any] = {"name": name, "kind": "rigid", "mass": float(body.mass),
+    table: dict[str, Any] = {"mass": float(body.mass),
                              "inertia": _floats(np.diag(inertia)) if not np.any(inertia - np.diag(np.diag(inertia)))
                              else _floats(inertia)}
     try:
         _core.RigidBody(body.mass, inertia)
     except ValueError:
         table["inertia_check"] = "allow_unrealizable"
-    if state is not None:
-        table.update({"p_W": _floats(state.p_W), "v_W": _floats(state.v_W), "w_B": _floats(state.w_B),
-                      "q_WB": _floats(state.q_WB)})
     return table
+
+
+def _mass_flow_table(flow: Any, name: str) -> dict[str, Any]:
+    """The [body.mass_flow] table of a MassFlow (ValueError for one given by Python functions)."""
+    rate, rule = flow.rate, flow.inertia_rule
+    if callable(rate) or not isinstance(rule, str):
+        raise _fail(f"{name}.mass_flow", "a constant rate and inertia_rule 'scaled' (a scene file holds no function)",
+                    flow)
+    return {"rate": float(rate), "inertia_rule": rule}
+
+
+def _frame_table(frame: Any) -> dict[str, Any]:
+    """The [frame] table of a SceneFrame built by SceneFrame.rotating (axis and rate as stored) or
+    SceneFrame.earth (its latitude), so that the file reads back bit for bit; ValueError for a general
+    moving frame (its motion is a function)."""
+    state = frame.__getstate__()  # ("rotating", axis, rate), ("earth", latitude) or ("moving", motion)
+    if state[0] == "earth":
+        return {"kind": "earth", "latitude": float(state[1])}
+    if state[0] == "rotating":
+        return {"kind": "rotating", "axis": _floats(state[1]), "rate": float(state[2])}
+    raise _fail("scene.frame", "a frame a scene file can hold (SceneFrame.rotating or SceneFrame.earth)", frame)
 
 
 def _force_table(element: Any, i: int, names: Sequence[str]) -> dict[str, Any]:
@@ -636,6 +796,8 @@ def _force_table(element: Any, i: int, names: Sequence[str]) -> dict[str, Any]:
         value = getattr(element, key)
         if f.kind in ("scalar", "vector"):
             table[key] = _floats(value)
+        elif f.kind == "frame":
+            table[key] = str(value)
         elif f.kind in ("body", "optional_body"):
             if value is not None:
                 table[key] = names[value]
@@ -681,8 +843,17 @@ def scene_to_toml(scene: Any, initial: Sequence[Any] | None = None, run: RunOpti
     lines = [f"{k} = {_literal(v)}" for k, v in data.items() if k != "run"]
     if "run" in data:
         lines += ["", "[run]"] + [f"{k} = {_literal(v)}" for k, v in data["run"].items()]
-    for n, b, s in zip(names, bodies, initial):
+    if run is not None and run.tradeoff:
+        lines += ["", "[tradeoff]"] + [f"{k} = {_literal(v)}" for k, v in run.tradeoff.items()]
+    frame = getattr(scene, "frame", None)
+    if frame is not None:
+        lines += ["", "[frame]"] + [f"{k} = {_literal(v)}" for k, v in _frame_table(frame).items()]
+    flows = list(getattr(scene, "mass_flows", []) or [None] * len(bodies))
+    for i, (n, b, s) in enumerate(zip(names, bodies, initial)):
         lines += ["", "[[body]]"] + [f"{k} = {_literal(v)}" for k, v in _body_table(n, b, s).items()]
+        if flows[i] is not None:
+            lines += ["[body.mass_flow]"] + [f"{k} = {_literal(v)}"
+                                             for k, v in _mass_flow_table(flows[i], f"body[{i}]").items()]
     for i, e in enumerate(elements):
         table = _force_table(e, i, names)
         lines += ["", "[[force]]"] + [f"{k} = {_literal(v)}" for k, v in table.items() if k != "loads"]

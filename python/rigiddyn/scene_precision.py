@@ -10,10 +10,16 @@ the report, the reference refinement and its check are work_precision's.
 Each method is compiled once (`scene.compile(method=...)`): a refusal (ValueError, e.g. `exact` on a
 scene with forces) becomes the method's rows with "not applicable: <reason>" in order_note and nan
 errors; a compatibility warning (rigiddyn.SceneCompatibilityWarning, e.g. a damper with a splitting)
-becomes a note of the report. The reference is the highest-order method that compiles without a
-warning, refined by Richardson (work_precision._richardson_reference), and checked against the core's
-other method family at the reference's finest step with its own Richardson estimate (the scenes have no
-closed form in the package and no independent rate in Python: SciPy's DOP853 checks problems only).
+becomes a note of the report. The reference is the scene's closed form when the scene is one's case
+(exact_reference: one pivoted planar body under uniform gravity, CompoundPendulumSolution; one
+symmetric pivoted body with its centre of mass on its axis under uniform gravity, LagrangeTopSolution;
+one particle with a constant mass rate, one thrust and at most uniform gravity, ConstantThrustSolution;
+free particles in a frame turning at a constant rate, RotatingFrameFreeParticle): every row's
+`reference` is then "exact: <class>", the title says "the exact solution (<class>)" and a note names the
+case. Otherwise it is the highest-order method that compiles without a warning, refined by Richardson
+(work_precision._richardson_reference), and checked against the core's other method family at the
+reference's finest step with its own Richardson estimate (no independent rate in Python: SciPy's
+DOP853 checks problems only).
 
 The error measures of MEASURES, many bodies (b) at the recorded times t:
   position_error  max_b |p_W - p_ref| [m];  velocity_error  max_b |v_W - v_ref| [m/s]
@@ -28,7 +34,10 @@ The error measures of MEASURES, many bodies (b) at the recorded times t:
   momentum_drift  max_t of |P - P_ref| / max_t sum_b m_b |v_ref| and |L - L_ref| / max_t sum_b (m_b |p x
                   v_ref| + |I_b w_ref|): total linear momentum P and angular momentum L about W's origin,
                   relative to the sum of the bodies' magnitudes (a scene whose totals are 0 still has a scale)
-  quaternion_norm_error  max_b,t ||q| - 1| (rigid bodies)
+  quaternion_norm_error  max_b,t ||q| - 1| (rigid and pivoted bodies)
+A pinned body is measured as a free one (its centre of mass, attitude and w_B); a body whose mass
+changes by its mass at t = 0 in the scales. The default steps also resolve a pinned body's swing
+(pendulum_rates).
 """
 
 from __future__ import annotations
@@ -94,7 +103,8 @@ def _option(options: Any, key: str) -> Any:
 
 @dataclass(frozen=True)
 class BodyData:
-    """What the measures need of a body: its kind ('particle', 'planar', 'rigid'), mass [kg] and inertia
+    """What the measures need of a body: its kind ('particle', 'planar', 'rigid', 'pivoted', 'pivoted_planar'),
+    mass [kg] (at t = 0) and inertia
     about its centre of mass in B [kg m^2] (0 for a particle, diag(0, 0, I_zz) for a planar body)."""
 
     kind: str
@@ -103,10 +113,15 @@ class BodyData:
 
 
 def _body_data(body: Any) -> BodyData:
-    if isinstance(body, _core.RigidBody):
-        return BodyData("rigid", float(body.mass), np.asarray(body.inertia_com, float))
-    if isinstance(body, _core.PlanarBody):
-        return BodyData("planar", float(body.mass), np.diag([0.0, 0.0, float(body.inertia_zz)]))
+    """A pinned body's data are its rigid body's (mass, inertia about its centre of mass), its kind
+    'pivoted' or 'pivoted_planar'; the measures compare its centre of mass and attitude as for a free one."""
+    kind = type(body).__name__
+    if kind in ("RigidBody", "PivotedBody"):
+        return BodyData("rigid" if kind == "RigidBody" else "pivoted", float(body.mass),
+                        np.asarray(body.inertia_com, float))
+    if kind in ("PlanarBody", "PivotedPlanarBody"):
+        return BodyData("planar" if kind == "PlanarBody" else "pivoted_planar", float(body.mass),
+                        np.diag([0.0, 0.0, float(body.inertia_zz)]))
     return BodyData("particle", float(body.mass), np.zeros((3, 3)))
 
 
@@ -150,12 +165,18 @@ class SceneCase:
     tradeoff: dict[str, Any] = field(default_factory=dict)
     bodies: list[BodyData] = field(default_factory=list)
     _compiled: dict[str, Compiled] = field(default_factory=dict, repr=False)
-
-    has_exact_solution = False  # issue 12 adds exact references for scenes
+    exact: ExactReference | None = field(default=None, repr=False)
 
     def __post_init__(self) -> None:
         if not self.bodies:
             self.bodies = [_body_data(b) for b in self.scene.bodies]
+        if self.exact is None:
+            self.exact = exact_reference(self.scene, self.initial)
+
+    @property
+    def has_exact_solution(self) -> bool:
+        """True when the scene is a case of a closed form (exact_reference)."""
+        return self.exact is not None
 
     def with_horizon(self, horizon: float) -> SceneCase:
         return replace(self, horizon=float(horizon))
@@ -192,8 +213,8 @@ class SceneCase:
             "linear_momentum_W", "angular_momentum_W")))
 
     def quaternion_norm_error(self, result: Any) -> np.ndarray:
-        """||q_WB| - 1| of the rigid bodies at each record (n,) (0 without a rigid body)."""
-        rigid = [i for i, b in enumerate(self.bodies) if b.kind == "rigid"]
+        """||q_WB| - 1| of the rigid and pivoted bodies at each record (n,) (0 without one)."""
+        rigid = [i for i, b in enumerate(self.bodies) if b.kind in ("rigid", "pivoted")]
         q = np.asarray(result.q_WB, float)
         if not rigid or q.shape[0] == 0:
             return np.zeros(q.shape[0])
@@ -210,6 +231,7 @@ class SceneCase:
 
         rates = [float(np.linalg.norm(s.w_B)) for s in self.initial if hasattr(s, "w_B")]
         rates += [abs(float(s.omega)) for s in self.initial if hasattr(s, "omega")]
+        rates += pendulum_rates(self.scene)
         rates += [math.sqrt(abs(k)) + gamma for _, k, gamma in scene_modes(self.scene, self.initial)]
         return max(rates, default=0.0)
 
@@ -218,6 +240,35 @@ class SceneCase:
         rho = max(self.fastest_rate(), 1e-300)
         dt0 = min(1.0 / rho, self.horizon / 16)
         return [dt0 / 2**j for j in range(8)]
+
+
+def _swing_inertia(inertia_O: np.ndarray, c: np.ndarray) -> float:
+    """The smallest moment of inertia about O [kg m^2] about an axis perpendicular to c (gravity at C
+    has no torque about c itself): the smallest eigenvalue of I_O restricted to the plane normal to c."""
+    u = c / np.linalg.norm(c)
+    e1 = np.cross(u, np.eye(3)[int(np.argmin(np.abs(u)))])
+    e1 /= np.linalg.norm(e1)
+    plane = np.column_stack((e1, np.cross(u, e1)))
+    return float(np.min(np.linalg.eigvalsh(plane.T @ inertia_O @ plane)))
+
+
+def pendulum_rates(scene: Any) -> list[float]:
+    """The small-oscillation rates sqrt(m |g| d / I) [rad/s] of the scene's pinned bodies under its
+    uniform gravity (d = |p_OC_B|; I the smallest moment about O about an axis normal to p_OC_B: the
+    fastest swing), each a linear mode the step choices must resolve; [] without pinned bodies."""
+    g = sum((np.asarray(e.g_W, float) for e in scene.elements if type(e).__name__ == "UniformGravity"), np.zeros(3))
+    rates = []
+    for body in scene.bodies:
+        kind = type(body).__name__
+        c = np.asarray(body.p_OC_B, float) if kind.startswith("Pivoted") else np.zeros(1)
+        if not np.any(c):
+            continue  # unpinned, or pinned at its centre of mass: gravity has no torque
+        if kind == "PivotedPlanarBody":
+            inertia = float(body.inertia_O_zz)
+        else:
+            inertia = _swing_inertia(np.asarray(body.inertia_O, float), c)
+        rates.append(math.sqrt(float(body.mass) * float(np.linalg.norm(g)) * float(np.linalg.norm(c)) / inertia))
+    return rates
 
 
 def _attitude_angle(q_ref: np.ndarray, q: np.ndarray) -> np.ndarray:
@@ -263,6 +314,190 @@ def scene_measures(bodies: Sequence[BodyData], horizon: float, run: SceneStates,
 
 
 # ---------------------------------------------------------------------------------------------
+# exact references: scenes that are one of the closed forms' cases
+
+
+@dataclass(frozen=True)
+class ExactReference:
+    """The closed form a scene is measured against: `name` (its rigiddyn class), `case` (the scene's
+    case, in words) and `states(t)`, the exact SceneStates at the times t (n,) [s]."""
+
+    name: str
+    case: str
+    states: Callable[[np.ndarray], SceneStates]
+
+
+def _rotation_z(theta: np.ndarray) -> np.ndarray:
+    """q_WB (n, 4) (x, y, z, w) of the rotations by theta [rad] about z."""
+    half = 0.5 * np.asarray(theta, float)
+    zero = np.zeros_like(half)
+    return np.column_stack((zero, zero, np.sin(half), np.cos(half)))
+
+
+def _rotate(q: np.ndarray, x: np.ndarray) -> np.ndarray:
+    """R(q) x row by row: q (n, 4) (x, y, z, w), x (n, 3) or (3,)."""
+    u, w = q[:, :3], q[:, 3:]
+    x = np.broadcast_to(x, u.shape)
+    t = 2.0 * np.cross(u, x)
+    return np.asarray(x + w * t + np.cross(u, t))
+
+
+def _one_body_states(t: np.ndarray, body: BodyData, p: np.ndarray, q: np.ndarray, v: np.ndarray, w: np.ndarray,
+                     potential: np.ndarray, mass: np.ndarray | None = None) -> SceneStates:
+    """SceneStates of one body (centre of mass p_W, q_WB, v_W, w_B at the times t) with the totals as
+    SceneResult defines them: T = m |v|^2 / 2 + w_B . I_C w_B / 2, V = `potential`, P = m v,
+    L = p x m v + R I_C w_B (about the origin). `mass` (n,): the mass at each time (default constant)."""
+    m = np.full(t.shape, body.mass) if mass is None else np.asarray(mass, float)
+    h_B = w @ body.inertia_com.T
+    kinetic = 0.5 * m * np.sum(v * v, axis=1) + 0.5 * np.sum(w * h_B, axis=1)
+    momentum = m[:, None] * v
+    return SceneStates(t, p[:, None], q[:, None], v[:, None], w[:, None], kinetic, potential, kinetic + potential,
+                       momentum, np.cross(p, momentum) + _rotate(q, h_B))
+
+
+def _vector_rows(values: Any, n: int, width: int) -> np.ndarray:
+    """An array of n rows of `width` numbers (a (width,) vector repeated when n = 1 comes back flat)."""
+    return np.asarray(values, float).reshape(n, width)
+
+
+def _gravity(elements: Sequence[Any], classes: Sequence[str]) -> np.ndarray | None:
+    """g_W [m/s^2] of a scene whose elements, on its one body, are at most one UniformGravity and one of
+    each of `classes` (the zero vector without gravity); None for any other element list."""
+    names = [type(e).__name__ for e in elements]
+    if any(n not in ("UniformGravity", *classes) for n in names) or len(set(names)) != len(names):
+        return None
+    if any(getattr(e, "bodies", None) not in (None, [0]) for e in elements):
+        return None
+    gravity = [e for e in elements if type(e).__name__ == "UniformGravity"]
+    return np.asarray(gravity[0].g_W, float) if gravity else np.zeros(3)
+
+
+def _pendulum(body: Any, state: Any, g_W: np.ndarray) -> ExactReference:
+    """A pivoted planar body under uniform gravity: rigiddyn.CompoundPendulumSolution."""
+    g_plane = np.array([g_W[0], g_W[1], 0.0])  # the plane takes g's z part (and it does no work: z = 0)
+    solution = _core.CompoundPendulumSolution(body, g_plane, state)
+    data = _body_data(body)
+    c, o = np.append(np.asarray(body.p_OC_B, float), 0.0), np.append(np.asarray(body.p_WO, float), 0.0)
+
+    def states(t: np.ndarray) -> SceneStates:
+        t = np.asarray(t, float)
+        theta, omega = (np.asarray(x, float).reshape(t.shape) for x in solution.at(t))
+        q = _rotation_z(theta)
+        r = _rotate(q, c)  # C - O in W
+        w = np.column_stack((np.zeros_like(omega), np.zeros_like(omega), omega))
+        p, v = o + r, np.cross(w, r)
+        return _one_body_states(t, data, p, q, v, w, -data.mass * (p @ g_plane))
+
+    return ExactReference("CompoundPendulumSolution", "one pivoted planar body under uniform gravity", states)
+
+
+def _top(body: Any, state: Any, g_W: np.ndarray) -> ExactReference:
+    """A symmetric pivoted body, its centre of mass on its axis, under uniform gravity: rigiddyn.LagrangeTopSolution."""
+    solution = _core.LagrangeTopSolution(body, g_W, state)
+    data = _body_data(body)
+    c, o = np.asarray(body.p_OC_B, float), np.asarray(body.p_WO, float)
+
+    def states(t: np.ndarray) -> SceneStates:
+        t = np.asarray(t, float)
+        q_WB, w_B = solution.at(t)
+        q, w = _vector_rows(q_WB, t.size, 4), _vector_rows(w_B, t.size, 3)
+        p, v = o + _rotate(q, c), _rotate(q, np.cross(w, c))  # p_WC = p_WO + R c, v = R (w x c)
+        return _one_body_states(t, data, p, q, v, w, -data.mass * (p @ g_W))
+
+    return ExactReference("LagrangeTopSolution", "one symmetric pivoted body, centre of mass on its axis, under "
+                          "uniform gravity", states)
+
+
+def _rocket(body: Any, flow: Any, thrust: Any, state: Any, g_W: np.ndarray) -> ExactReference:
+    """A particle with a constant mass rate, one thrust along a fixed direction, uniform gravity:
+    rigiddyn.ConstantThrustSolution."""
+    solution = _core.ConstantThrustSolution(float(body.mass), float(flow.rate), np.asarray(thrust.u_rel, float), g_W,
+                                            np.asarray(state.p_W, float), np.asarray(state.v_W, float))
+    data = _body_data(body)
+
+    def states(t: np.ndarray) -> SceneStates:
+        t = np.asarray(t, float)
+        p_W, v_W = solution.at(t)[:2]
+        p, v = _vector_rows(p_W, t.size, 3), _vector_rows(v_W, t.size, 3)
+        mass = body.mass + flow.rate * t  # m(t) = m0 + (dm/dt) t
+        q = np.tile([0.0, 0.0, 0.0, 1.0], (t.size, 1))
+        return _one_body_states(t, data, p, q, v, np.zeros_like(v), -mass * (p @ g_W), mass)
+
+    return ExactReference("ConstantThrustSolution", "one particle with a constant mass rate, one thrust along a "
+                          "fixed direction, uniform gravity", states)
+
+
+def _rotating(scene: Any, initial: Sequence[Any], axis: np.ndarray, rate: float) -> ExactReference:
+    """Free particles seen from a frame turning at a constant rate about `axis` [rad/s]:
+    rigiddyn.RotatingFrameFreeParticle."""
+    solutions = [_core.RotatingFrameFreeParticle(scene.frame, s.p_W, s.v_W) for s in initial]
+    bodies = [_body_data(b) for b in scene.bodies]
+    omega = rate * axis / np.linalg.norm(axis)
+
+    def states(t: np.ndarray) -> SceneStates:
+        t = np.asarray(t, float)
+        parts = []
+        for solution, body in zip(solutions, bodies):
+            p_F, v_F = solution.at(t)[:2]
+            p, v = _vector_rows(p_F, t.size, 3), _vector_rows(v_F, t.size, 3)
+            q = np.tile([0.0, 0.0, 0.0, 1.0], (t.size, 1))
+            # the centrifugal potential -m |Omega x r|^2 / 2 (total energy: the Jacobi integral)
+            centrifugal = -0.5 * body.mass * np.sum(np.cross(omega, p) ** 2, axis=1)
+            parts.append(_one_body_states(t, body, p, q, v, np.zeros_like(v), centrifugal))
+        return SceneStates(t, *(np.concatenate([getattr(s, k) for s in parts], axis=1)
+                                for k in ("p_W", "q_WB", "v_W", "w_B")),
+                           *(np.sum([getattr(s, k) for s in parts], axis=0) for k in (
+                               "kinetic_energy", "potential_energy", "total_energy", "linear_momentum_W",
+                               "angular_momentum_W")))
+
+    return ExactReference("RotatingFrameFreeParticle", "free particles in a frame turning at a constant rate", states)
+
+
+def exact_reference(scene: Any, initial: Sequence[Any]) -> ExactReference | None:
+    """The closed form `scene` (with its `initial` states) is a case of, None if none:
+    - one pivoted planar body under uniform gravity (or none): CompoundPendulumSolution;
+    - one pivoted body, symmetric about the line through its pivot and centre of mass, under uniform
+      gravity: LagrangeTopSolution (the class refuses an unsymmetric body: then None);
+    - one particle with a constant mass rate, one Thrust (a particle does not turn: its direction is
+      fixed in W) and at most uniform gravity: ConstantThrustSolution;
+    - particles without elements in a frame turning at a constant rate about a fixed origin:
+      RotatingFrameFreeParticle.
+    Each in an inertial scene without mass flows unless named."""
+    from .scene_describe import frame_rotation
+
+    bodies, elements = list(scene.bodies), list(scene.elements)
+    frame = getattr(scene, "frame", None)
+    flows = [f for f in (getattr(scene, "mass_flows", None) or []) if f is not None]
+    kinds = [type(b).__name__ for b in bodies]
+    if frame is not None:  # F = W at t = 0, turning about its origin: SceneFrame.rotating or .earth
+        rotation = frame_rotation(frame)
+        if frame.__getstate__()[0] not in ("rotating", "earth") or rotation is None or flows or elements \
+                or set(kinds) != {"Particle"}:
+            return None
+        return _rotating(scene, initial, *rotation)
+    if len(bodies) != 1:
+        return None
+    kind, body, state = kinds[0], bodies[0], initial[0]
+    if kind == "Particle" and len(flows) == 1 and not callable(flows[0].rate):
+        g_W = _gravity(elements, ["Thrust"])
+        thrusts = [e for e in elements if type(e).__name__ == "Thrust"]
+        if g_W is None or not thrusts:
+            return None
+        return _rocket(body, flows[0], thrusts[0], state, g_W)
+    g_W = _gravity(elements, [])
+    if flows or g_W is None:
+        return None
+    try:
+        if kind == "PivotedPlanarBody":
+            return _pendulum(body, state, g_W)
+        if kind == "PivotedBody" and elements:
+            return _top(body, state, g_W)
+    except ValueError:  # not the closed form's case (e.g. an unsymmetric top)
+        return None
+    return None
+
+
+# ---------------------------------------------------------------------------------------------
 # what tradeoff accepts as a scene
 
 
@@ -293,23 +528,26 @@ def scene_case(source: Any, initial: Any = None, horizon: float | None = None) -
         initial = read.initial if initial is None else initial
     else:
         return None
-    kinds = (_core.ParticleState, _core.PlanarBodyState, _core.RigidBodyState)
-    expected = f"a list of initial states (ParticleState, PlanarBodyState, RigidBodyState), one per body ({len(scene.bodies)})"
+    names = ("ParticleState", "PlanarBodyState", "RigidBodyState", "PivotedBodyState", "PivotedPlanarBodyState")
+    kinds = tuple(getattr(_core, n) for n in names if hasattr(_core, n))
+    expected = f"a list of initial states ({', '.join(names)}), one per body ({len(scene.bodies)})"
     if isinstance(initial, (str, bytes)) or not isinstance(initial, Iterable):
         raise TypeError(f"initial: expected {expected}, got {initial!r}")
     initial = list(initial)
     if len(initial) != len(scene.bodies) or not all(isinstance(s, kinds) for s in initial):
         raise ValueError(f"initial: expected {expected}, got {initial!r}")
-    span = horizon if horizon is not None else _option(options, "duration")
+    defaults = _option(options, "tradeoff")
+    defaults = dict(defaults) if isinstance(defaults, Mapping) else {}
+    span = horizon if horizon is not None else defaults.pop("horizon", None) or _option(options, "duration")
     if span is None:
-        raise ValueError("horizon: expected a finite number > 0 [s] (the scene file's [run] duration gives none), "
-                         "got None")
+        raise ValueError("horizon: expected a finite number > 0 [s] (the scene file's [tradeoff] horizon or [run] "
+                         "duration gives none), got None")
     if isinstance(span, bool) or not isinstance(span, (int, float, np.integer, np.floating)):
         raise TypeError(f"horizon: expected a finite number > 0 [s], got {span!r}")
     if not (math.isfinite(span) and span > 0):
         raise ValueError(f"horizon: expected a finite number > 0 [s], got {span!r}")
-    defaults = _option(options, "tradeoff")
-    return SceneCase(name, scene, initial, float(span), dict(defaults) if isinstance(defaults, Mapping) else {})
+    defaults.pop("horizon", None)
+    return SceneCase(name, scene, initial, float(span), defaults)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -349,21 +587,33 @@ def _independent(case: SceneCase, method: str, order: int, dt: float, steps: int
         sub *= 2
 
 
+def _fixed(states: SceneStates) -> Callable[[np.ndarray], SceneStates]:
+    """The reference states of a Richardson reference, already at the runs' record times."""
+    return lambda t: states
+
+
 def scene_sweep(case: SceneCase, methods: list[str], grid: list[int], measure: str, tolerance: float | None,
                 progress: bool, cost: str, samples: int, max_reference_steps: int,
                 info: dict[str, dict[str, Any]]) -> TradeoffResult:
-    """The sweep of rigiddyn.tradeoff on a scene (arguments checked by it; `grid`: the step counts)."""
+    """The sweep of rigiddyn.tradeoff on a scene (arguments checked by it; `grid`: the step counts):
+    against the scene's closed form when it is one's case (case.exact), else against a Richardson
+    reference checked against another method family."""
     from . import work_precision as wp
     from .stability import StabilityWarning, scene_modes, scene_stability_message
 
-    clean = [m for m in info if info[m]["order"] > 0 and case.compile(m).model is not None and not case.compile(m).warnings]
-    ref_method = _best(clean, info)
-    if ref_method is None:
-        raise ValueError(f"problem: expected a scene that a method of order >= 1 runs without a compatibility warning, "
-                         f"got {case.name!r} (" + "; ".join(f"{m}: {case.compile(m).reason or 'warned'}" for m in info) + ")")
-    other = _best([m for m in clean if _family(m) != _family(ref_method)], info)
+    ref_method = other = None
+    closed_form = case.exact
+    if case.exact is None:
+        clean = [m for m in info if info[m]["order"] > 0 and case.compile(m).model is not None
+                 and not case.compile(m).warnings]
+        ref_method = _best(clean, info)
+        if ref_method is None:
+            raise ValueError(f"problem: expected a scene that a method of order >= 1 runs without a compatibility "
+                             f"warning, got {case.name!r} (" + "; ".join(f"{m}: {case.compile(m).reason or 'warned'}"
+                                                                         for m in info) + ")")
+        other = _best([m for m in clean if _family(m) != _family(ref_method)], info)
     runnable = [m for m in methods if case.compile(m).model is not None]
-    free = not list(case.scene.elements)  # no element: every body torque-free
+    free = not list(case.scene.elements) and getattr(case.scene, "frame", None) is None  # every body torque-free
     exact = {m for m in runnable if info[m]["order"] == 0 or (free and info[m]["exact_torque_free"])}
     total = 1
     if progress:
@@ -377,6 +627,9 @@ def scene_sweep(case: SceneCase, methods: list[str], grid: list[int], measure: s
             dt = case.horizon / steps
             every = max(1, steps // samples)
             runs = {m: wp._simulate(case, m, dt, steps, every, timed=True, bar=bar) for m in runnable}
+            if ref_method is None:  # the closed form is the reference (case.exact)
+                sweeps.append((steps, dt, runs, None, None))
+                continue
             # refined against the methods with a truncation error (an exact one's round-off sets no target)
             ref = wp._richardson_reference(case, ref_method, info[ref_method]["order"], dt, steps, every,
                                            [r for m, r in runs.items() if m not in exact], max_reference_steps, bar)
@@ -393,7 +646,14 @@ def scene_sweep(case: SceneCase, methods: list[str], grid: list[int], measure: s
     rows: list[dict[str, Any]] = []
     unstable: list[tuple[str, float, str]] = []
     for steps, dt, runs, ref, check in sweeps:
-        reference = f"richardson({ref_method})" if check.reliable else f"unreliable: richardson({ref_method})"
+        if ref is None:  # the closed form: no error of its own beyond round-off
+            assert closed_form is not None  # a sweep without a Richardson reference has one
+            reference, reference_error, reference_check = f"exact: {closed_form.name}", 0.0, ""
+            states_at = closed_form.states
+        else:
+            states_at = _fixed(ref.states)
+            reference = f"richardson({ref_method})" if check.reliable else f"unreliable: richardson({ref_method})"
+            reference_error, reference_check = check.error[measure], check.text
         for method in methods:
             m = info[method]
             row: dict[str, Any] = {"method": method, "dt": dt, "steps": steps, "order": m["order"],
@@ -403,8 +663,8 @@ def scene_sweep(case: SceneCase, methods: list[str], grid: list[int], measure: s
                 row.update({"time_per_step": math.nan, "time_noise": math.nan, "total_time": math.nan,
                             "total_evaluations": 0, **{k: math.nan for k in wp.MEASURES},
                             "observed_order": math.nan, "order_note": f"not applicable: {compiled.reason}",
-                            "reference": reference, "reference_error": check.error[measure],
-                            "reference_check": check.text, "diverged": False, "stability": ""})
+                            "reference": reference, "reference_error": reference_error,
+                            "reference_check": reference_check, "diverged": False, "stability": ""})
                 rows.append(row)
                 continue
             run = runs[method]
@@ -413,12 +673,12 @@ def scene_sweep(case: SceneCase, methods: list[str], grid: list[int], measure: s
             if run.diverged:
                 row.update({k: math.inf for k in wp.MEASURES})
             else:
-                row.update(case.measures(run.states, ref.states, run.quaternion_norm_error))
+                row.update(case.measures(run.states, states_at(run.states.t), run.quaternion_norm_error))
             message = scene_stability_message(method, dt, steps, case.scene, case.initial, modes)
             if message:
                 unstable.append((method, dt, message))
             row.update({"observed_order": math.nan, "order_note": "", "reference": reference,
-                        "reference_error": check.error[measure], "reference_check": check.text,
+                        "reference_error": reference_error, "reference_check": reference_check,
                         "diverged": run.diverged, "stability": message or ""})
             rows.append(row)
     applicable = [r for r in rows if not r["order_note"].startswith("not applicable")]
@@ -427,4 +687,6 @@ def scene_sweep(case: SceneCase, methods: list[str], grid: list[int], measure: s
     if unstable:
         warnings.warn(wp._stability_summary(unstable, "for this scene"), StabilityWarning, stacklevel=3)
     notes = [f"{m}: {text} (SceneCompatibilityWarning)" for m in methods for text in case.compile(m).warnings]
+    if case.exact is not None:
+        notes.insert(0, f"reference: the exact solution rigiddyn.{case.exact.name} ({case.exact.case})")
     return wp.TradeoffResult(case.name, case.horizon, measure, tolerance, rows, cost, notes=notes)

@@ -3,6 +3,7 @@ column per scalar, named ``[<body>:]<field>[_<component>] [<unit>]`` (frames as 
 dimensionless columns carry no unit)::
 
     t [s] | sat:p_W_x [m] ... | sat:q_WB_x ... sat:q_WB_w | sat:v_W_x [m/s] ... | sat:w_B_x [rad/s] ... |
+    sat:pivot_reaction_W_x [N] ... | sat:angular_momentum_O_W_x [kg m^2/s] ... | sat:mass [kg] |
     (the same for every body, in the scene's order) |
     kinetic_energy [J] | potential_energy [J] | total_energy [J] |
     linear_momentum_W_x [kg m/s] ... | angular_momentum_W_x [kg m^2/s] ... |
@@ -12,6 +13,11 @@ Wide rather than long (one row per record and body): the scene-wide columns (ene
 element's work and power) belong to a record, not to a body, so a long table would repeat them on every
 body's row; the wide one has SimulationResult's shape (one row per record, ``t [s]`` an ordinary column)
 and ``df.filter(like="sat:")`` selects one body.
+
+"W" is the scene frame (F when the scene has a moving frame: states relative to it). Per body:
+pivot_reaction_W is the pivot's force on a pinned body (0 for an unpinned one), angular_momentum_O_W
+the angular momentum about the pivot O (about the centre of mass for an unpinned body), mass the body's
+mass at the record (it changes with a MassFlow).
 """
 
 from __future__ import annotations
@@ -22,12 +28,15 @@ import numpy as np
 
 __all__ = ["BODY_FIELDS", "SCENE_FIELDS", "column_names", "columns", "to_dataframe"]
 
-# per-body SceneResult attribute -> (components, unit or None)
+# per-body SceneResult attribute -> (components ("" for a scalar), unit or None)
 BODY_FIELDS: dict[str, tuple[str, str | None]] = {
     "p_W": ("xyz", "m"),
     "q_WB": ("xyzw", None),
     "v_W": ("xyz", "m/s"),
     "w_B": ("xyz", "rad/s"),
+    "pivot_reaction_W": ("xyz", "N"),
+    "angular_momentum_O_W": ("xyz", "kg m^2/s"),
+    "mass": ("", "kg"),
 }
 # scene-wide attribute -> (components or None for a scalar, unit)
 SCENE_FIELDS: dict[str, tuple[str | None, str]] = {
@@ -57,7 +66,9 @@ def columns(result: Any, scalar_first: bool = False) -> dict[str, np.ndarray]:
         for field, (components, unit) in BODY_FIELDS.items():
             if field == "q_WB" and scalar_first:
                 components = "wxyz"
-            values = np.asarray(getattr(result, field), dtype=np.float64)[:, b, :]
+            values = np.asarray(getattr(result, field), dtype=np.float64)[:, b]
+            if not components:
+                out[_unit(f"{body}:{field}", unit)] = np.ascontiguousarray(values)
             for i, c in enumerate(components):
                 out[_unit(f"{body}:{field}_{c}", unit)] = np.ascontiguousarray(values[:, i])
     for field, (parts, unit) in SCENE_FIELDS.items():

@@ -7,8 +7,12 @@ of --method, --dt, --duration and --record-every; the command-line options overr
 Writes to --out: trajectory.csv, trajectory.npz, trajectory.parquet (when pyarrow is installed) and
 run.json. The tables are WIDE, one row per record, the columns of rigiddyn.scene_result (what
 SceneResult.to_dataframe gives): ``t [s]``, then per body ``<name>:p_W_x [m]`` .. ``<name>:q_WB_x`` ..
-``<name>:v_W_x [m/s]`` .. ``<name>:w_B_x [rad/s]``, then the energies, momenta, and each element's
-``work[i] <Class> [J]`` and ``power[i] <Class> [W]``. One file rather than one per body: the
+``<name>:v_W_x [m/s]`` .. ``<name>:w_B_x [rad/s]``, ``<name>:pivot_reaction_W_x [N]`` ..,
+``<name>:angular_momentum_O_W_x [kg m^2/s]`` .., ``<name>:mass [kg]``, then the energies, momenta, and
+each element's ``work[i] <Class> [J]`` and ``power[i] <Class> [W]`` (in a moving frame, the fictitious
+terms' too: CentrifugalForce, CoriolisForce, ...). The summary line says what matters for the scene: the
+energy drift (the Jacobi integral in a frame turning at a constant rate), the mass burnt by each body
+with a mass flow (whose energy is not conserved: the thrust works), the range of each pivot's reaction. One file rather than one per body: the
 scene-wide columns (energy, momenta, work) belong to a record, and ``df.filter(like="sat:")`` selects
 a body. No plot or animation yet (trajectory_plot draws one body): --animate is refused, --attitude
 and the plot are skipped with a note.
@@ -148,12 +152,30 @@ def _write(plan: _ScenePlan, result: Any) -> list[Path]:
     return written
 
 
-def _summary(result: Any) -> str:
-    E = np.asarray(result.total_energy)
-    drift = f"{(E[-1] - E[0]) / abs(E[0]):+.2e}" if E[0] != 0 else f"{E[-1] - E[0]:+.2e} J (absolute)"
+def _summary(result: Any, scene: Any = None) -> str:
+    """One line: records, bodies, time; the energy drift (or, with mass flows, the mass burnt); the range
+    of each pivot's reaction force."""
     n = len(result.body_names)
-    return (f"{len(result.t)} records of {n} {'body' if n == 1 else 'bodies'} to t = {result.t[-1]:.6g} s in "
-            f"{result.elapsed_seconds:.3g} s; relative drift of the total energy {drift}")
+    head = (f"{len(result.t)} records of {n} {'body' if n == 1 else 'bodies'} to t = {result.t[-1]:.6g} s in "
+            f"{result.elapsed_seconds:.3g} s")
+    flows = [i for i, f in enumerate(getattr(scene, "mass_flows", None) or []) if f is not None]
+    parts = [head]
+    if flows:
+        mass = np.asarray(result.mass)
+        parts += [f"{result.body_names[i]}: mass {mass[0, i]:.6g} -> {mass[-1, i]:.6g} kg "
+                  f"({mass[0, i] - mass[-1, i]:.6g} kg burnt)" for i in flows]
+        parts.append("total energy not conserved (the thrust works)")
+    else:
+        E = np.asarray(result.total_energy)
+        drift = f"{(E[-1] - E[0]) / abs(E[0]):+.2e}" if E[0] != 0 else f"{E[-1] - E[0]:+.2e} J (absolute)"
+        jacobi = " (the Jacobi integral)" if getattr(scene, "frame", None) is not None else ""
+        parts.append(f"relative drift of the total energy{jacobi} {drift}")
+    pinned = [i for i, b in enumerate(getattr(scene, "bodies", [])) if type(b).__name__.startswith("Pivoted")]
+    if pinned:
+        reaction = np.linalg.norm(np.asarray(result.pivot_reaction_W), axis=2)
+        parts += [f"{result.body_names[i]}: pivot reaction |R| {reaction[:, i].min():.4g} to "
+                  f"{reaction[:, i].max():.4g} N" for i in pinned]
+    return "; ".join(parts)
 
 
 def run_scene_simulate(args: argparse.Namespace) -> int:
@@ -173,4 +195,4 @@ def run_scene_simulate(args: argparse.Namespace) -> int:
                           lambda update: _core.simulate(plan.file.scene, plan.file.initial, dt=plan.dt,
                                                         steps=plan.steps, method=plan.method,
                                                         record_every=plan.record_every, progress=update),
-                          _summary, lambda result: _write(plan, result))
+                          lambda result: _summary(result, plan.file.scene), lambda result: _write(plan, result))

@@ -29,6 +29,31 @@ elements at the initial state (scene_modes: springs, dampers, gravity, drag, gra
 checked with the method's one-step map on x'' = -k x - gamma x' (oscillator_map; the documented
 stability_limit on dt (sqrt|k| + gamma) for a method not modelled there). The modes are taken one at a
 time and at the start only: an estimate of the scene's fastest rates, not its full linearisation.
+
+Issue 12's bodies and frames (same reasoning, their own rates):
+- a pivoted body (PivotedBody) turns about its pivot O with Euler's equations about O, I_O w' = tau_O -
+  w x I_O w ("Rigid body kinematics and dynamics" notes, M_O = dH_O/dt): its spin is checked as a rigid
+  body's above with the inertia about O, I_O (torque-free along its orbit when the scene has no element
+  and no frame);
+- its swing under uniform gravity g: the potential V = -m g.(R c) (c = p_OC_B) has, about the hanging
+  attitude, the Hessian m |g| |c| P (P: the projector normal to c; gravity has no torque about c), so the
+  small oscillations solve I_O x'' = -m |g| |c| P x: modes x'' = -k x with k up to m |g| |c| lambda_max(P
+  I_O^-1 P) (the generalised eigenvalue of (K, I_O); m |g_xy| |c| / I_O,zz for the PivotedPlanarBody:
+  the compound pendulum's sqrt(m g d / I_O)), checked as a spring's mode (pivot_swing_modes). k is taken
+  positive, the swing about the hanging attitude that any swing passes near; upright (the heavy top) the
+  same |k| is a physical instability, which the exact flow shares. A PivotedPlanarBody's own rate omega adds
+  no mode (theta' = omega: no gyroscopic term in one degree of freedom);
+- a rotating frame (scene.frame, turning at Omega) adds to every body the centrifugal -Omega x (Omega x r)
+  and the Coriolis -2 Omega x v ("Rigid body kinematics and dynamics" notes, eq. 4.40). In the plane
+  normal to Omega, with r written as a complex number x, they are x'' = Omega^2 x - 2 i |Omega| x': the
+  mode of x'' = -k x - gamma x' with k = -Omega^2 and an imaginary gamma = 2 i |Omega| (the Coriolis
+  term turns the velocity at the rate 2 |Omega|; the exact flow's eigenvalues are -i|Omega| twice, a
+  turn: no growth). Every method's map of the oscillator (oscillator_map) is taken in complex
+  arithmetic: explicit Euler and the kicks of the semi-implicit Euler methods (explicit in the velocity)
+  grow by about sqrt(1 + (2 |Omega| s)^2) per kick of length s; the splittings' kicks take the turn's
+  exact flow (the core's loads_kick), so they are bounded while the drifts resolve the centrifugal term;
+  RK4's map of the eigenvalues -i|Omega| is stable up to dt |Omega| = 2 sqrt(2), and implicit midpoint's
+  Cayley map is an isometry of the turn (frame_modes).
 """
 
 from __future__ import annotations
@@ -45,6 +70,7 @@ __all__ = [
     "ISOTROPY_TOLERANCE",
     "STABILITY_POLYNOMIALS",
     "StabilityWarning",
+    "frame_modes",
     "growth_factor",
     "gyroscopic_free",
     "linear_modes",
@@ -54,6 +80,7 @@ __all__ = [
     "orbit_rate",
     "oscillator_growth",
     "oscillator_map",
+    "pivot_swing_modes",
     "scene_modes",
     "scene_stability_message",
     "spin_rate",
@@ -209,8 +236,9 @@ def warn_if_unstable(method: str, dt: float, steps: int, inertia_com: np.ndarray
 # it couples (k [1/s^2], gamma [1/s]; k < 0: a physical instability, the radial mode of gravity). A
 # method's one-step map on y = (x, x') is a 2x2 matrix M(h); its spurious growth per step is the
 # spectral radius of M over the exact flow's, exp(h max Re lambda) (lambda: eigenvalues of
-# A = [[0, 1], [-k, -gamma]]). Splittings kick with the force (velocities frozen: explicit in gamma)
-# and drift the positions, as the core's loads_kick . free_flow . loads_kick compositions do.
+# A = [[0, 1], [-k, -gamma]]). Splittings kick with the force (velocities frozen: explicit in gamma,
+# exact for a turn) and drift the positions, as the core's loads_kick . free_flow . loads_kick
+# compositions do.
 
 MIDPOINT_TOLERANCE = 1e-14  # implicit midpoint's stage tolerance and iteration cap (integrators/implicit_midpoint.hpp)
 MIDPOINT_ITERATIONS = 20
@@ -218,9 +246,12 @@ _YOSHIDA_OUTER = 1.0 / (2.0 - 2.0 ** (1.0 / 3.0))  # the triple jump's outer wei
 _YOSHIDA_INNER = 1.0 - 2.0 * _YOSHIDA_OUTER
 
 
-def _kick(s: float, k: float, gamma: float) -> np.ndarray:
-    """v += s (-k x - gamma v) with x frozen."""
-    return np.array([[1.0, 0.0], [-s * k, 1.0 - s * gamma]])
+def _kick(s: float, k: float, gamma: complex, exact_turn: bool = False) -> np.ndarray:
+    """v += phi (-k x - gamma v) with x frozen: phi = s (explicit), or, for a turn (imaginary gamma) with
+    `exact_turn`, phi = (1 - exp(-gamma s)) / gamma, the exact flow of v' = -k x - gamma v (the splittings'
+    loads_kick takes the Coriolis part's exact flow: scene_model.hpp, detail::exact_linear_kick)."""
+    phi = (1.0 - np.exp(-gamma * s)) / gamma if exact_turn and isinstance(gamma, complex) and gamma != 0 else s
+    return np.array([[1.0, 0.0], [-phi * k, 1.0 - phi * gamma]])
 
 
 def _drift(s: float) -> np.ndarray:
@@ -228,14 +259,16 @@ def _drift(s: float) -> np.ndarray:
     return np.array([[1.0, s], [0.0, 1.0]])
 
 
-def _strang(h: float, k: float, gamma: float) -> np.ndarray:
-    """kick(h/2) drift(h) kick(h/2) (the rightmost factor acts first)."""
-    return np.asarray(_kick(h / 2, k, gamma) @ _drift(h) @ _kick(h / 2, k, gamma))
+def _strang(h: float, k: float, gamma: complex) -> np.ndarray:
+    """loads_kick(h/2) drift(h) loads_kick(h/2) (the rightmost factor acts first; a turn's kick exact)."""
+    return np.asarray(_kick(h / 2, k, gamma, True) @ _drift(h) @ _kick(h / 2, k, gamma, True))
 
 
-def oscillator_map(method: str, h: float, k: float, gamma: float) -> np.ndarray | None:
+def oscillator_map(method: str, h: float, k: float, gamma: complex) -> np.ndarray | None:
     """The one-step map of `method` at step h [s] on x'' = -k x - gamma x' (y = (x, x')), None for a
-    method not modelled here (its documented stability_limit is used instead)."""
+    method not modelled here (its documented stability_limit is used instead). gamma [1/s] may be
+    imaginary (a turn of the velocity: the Coriolis term of frame_modes, x complex); the map is then
+    complex."""
     a = np.array([[0.0, 1.0], [-k, -gamma]])
     if method in STABILITY_POLYNOMIALS and method not in ("semi_implicit_euler",):
         coefficients, _ = STABILITY_POLYNOMIALS[method]
@@ -255,7 +288,7 @@ def oscillator_map(method: str, h: float, k: float, gamma: float) -> np.ndarray 
     return None
 
 
-def oscillator_growth(method: str, h: float, k: float, gamma: float) -> float | None:
+def oscillator_growth(method: str, h: float, k: float, gamma: complex) -> float | None:
     """Spurious growth per step of `method` on x'' = -k x - gamma x': the spectral radius of its map
     over exp(h max Re lambda) of the exact flow; None for a method not modelled."""
     m = oscillator_map(method, h, k, gamma)
@@ -274,6 +307,19 @@ def _minimum_moment(body: object) -> float:
     return 0.0
 
 
+def _inverse_mass_at(body: object, r_B: np.ndarray) -> float:
+    """1 / m_eff [1/kg] of the body point r_B (from the centre of mass, in B [m]) moved by a spring: 1/m
+    for a free body (its turn is a mode of its own), |c + r|^2 / I_min about O for a pinned body, which
+    can only turn about its pivot (c = p_OC_B; _turn_compliance; the in-plane part and I_O,zz for a
+    PivotedPlanarBody)."""
+    if isinstance(body, _core.PivotedBody):
+        return _turn_compliance(np.asarray(body.inertia_O, float), np.asarray(body.p_OC_B, float) + r_B)
+    if isinstance(body, _core.PivotedPlanarBody):
+        arm = np.asarray(body.p_OC_B, float) + r_B[:2]
+        return float(arm @ arm) / float(body.inertia_O_zz)
+    return 1.0 / float(getattr(body, "mass"))
+
+
 def _listed(element: object, n: int) -> list[int]:
     bodies = getattr(element, "bodies", None)
     return list(range(n)) if not bodies else [int(b) for b in bodies]
@@ -290,13 +336,66 @@ def _gravity_modes(label: str, gm: float, r: np.ndarray, softening: float) -> li
     return [(label, gm / rho3, 0.0), (label + " (radial)", gm * (softening**2 - 2.0 * r2) / (rho2 * rho3), 0.0)]
 
 
+def _swing_stiffness(body: object) -> float:
+    """k / |g| [1/m] of a pinned body's fastest swing, 0 for another body or one pinned at its centre of
+    mass: m |c| lambda_max(P I_O^-1 P) (P the projector normal to c = p_OC_B; module docstring), m |c| /
+    I_O,zz in the plane (the caller projects g onto it)."""
+    if isinstance(body, _core.PivotedPlanarBody):
+        return float(body.mass) * float(np.linalg.norm(np.asarray(body.p_OC_B, float))) / float(body.inertia_O_zz)
+    if not isinstance(body, _core.PivotedBody):
+        return 0.0
+    c = np.asarray(body.p_OC_B, float)
+    d = float(np.linalg.norm(c))
+    return 0.0 if d == 0.0 else float(body.mass) / d * _turn_compliance(np.asarray(body.inertia_O, float), c)
+
+
+def _turn_compliance(inertia_O: np.ndarray, arm: np.ndarray) -> float:
+    """|a|^2 lambda_max(P I_O^-1 P) [1/kg], P the projector normal to the arm a (from O, in B [m]): the
+    largest (a x f).I_O^-1 (a x f) / |f|^2 over forces f at a, the inverse mass a force at a meets on a
+    body that can only turn about O (I_O [kg m^2] in B); 0 for a = 0."""
+    length2 = float(arm @ arm)
+    if length2 == 0.0:
+        return 0.0
+    normal = np.eye(3) - np.outer(arm, arm) / length2
+    return length2 * float(np.max(np.linalg.eigvalsh(normal @ np.linalg.inv(inertia_O) @ normal)))
+
+
+def pivot_swing_modes(label: str, bodies: list[object], listed: list[int], g_W: np.ndarray) -> list[tuple[str, float, float]]:
+    """The swing modes (label, k [1/s^2], 0) of the pinned bodies `listed` under uniform gravity g_W
+    [m/s^2] in the scene frame: k = |g| m |c| lambda_max(P I_O^-1 P), sqrt(k) the pendulum frequency
+    sqrt(m g d / I_O) of the fastest swing (g's in-plane part for a PivotedPlanarBody)."""
+    g = np.asarray(g_W, float)
+    modes = []
+    for i in listed:
+        stiffness = _swing_stiffness(bodies[i])
+        g_acting = g[:2] if isinstance(bodies[i], _core.PivotedPlanarBody) else g
+        if stiffness > 0.0 and np.any(g_acting):
+            modes.append((f"the swing of body {i} under {label}", stiffness * float(np.linalg.norm(g_acting)), 0.0))
+    return modes
+
+
+def frame_modes(scene: object, t: float = 0.0) -> list[tuple[str, float, complex]]:
+    """The mode (label, k = -|Omega|^2 [1/s^2], gamma = 2 i |Omega| [1/s]) of the scene's frame turning at
+    Omega [rad/s] at time t [s] (the centrifugal and Coriolis terms in the plane normal to Omega, module
+    docstring); [] without a frame or while it does not turn."""
+    frame = getattr(scene, "frame", None)
+    if frame is None or not len(list(getattr(scene, "bodies"))):
+        return []
+    rate = float(np.linalg.norm(np.asarray(frame.motion.at(t).w_PF_P, float)))
+    if rate == 0.0 or not math.isfinite(rate):  # non-finite: compile refuses the frame, naming it
+        return []
+    return [(f"the rotating frame (|Omega| = {rate:.3g} rad/s: Coriolis turn 2|Omega|, centrifugal |Omega|^2)",
+             -rate**2, 2j * rate)]
+
+
 def scene_modes(scene: object, initial: list[object]) -> list[tuple[str, float, float]]:
     """The linear modes (label, k [1/s^2], gamma [1/s]) of the scene's elements at the initial states:
-    springs k (1/m_a + 1/m_b) and, at a point r off a body's centre, k |r|^2 / I_min (dampers the
-    same in gamma); point-mass gravity the Hessian of the (softened) potential per body, mutual gravity
+    springs k (1/m_a + 1/m_b) (a pinned end: |c + r|^2 / I_O,min for 1/m, _inverse_mass_at) and, at a
+    point r off a free body's centre, k |r|^2 / I_min (dampers the same in gamma); point-mass gravity the Hessian of the (softened) potential per body, mutual gravity
     that of its strongest pair (largest G (m_i + m_j) / rho^3); drag gamma = (c1 + 2 c2 |v|) / m and
-    (d1 + 2 d2 |w|) / I_min; gravity gradient k = 3 GM / |r|^3 (I_max - I_min) / I_min. Uniform gravity,
-    scheduled loads and user forces add no mode."""
+    (d1 + 2 d2 |w|) / I_min; gravity gradient k = 3 GM / |r|^3 (I_max - I_min) / I_min; uniform gravity
+    the swing of each pinned body (pivot_swing_modes). Scheduled loads and user forces add no mode, nor
+    does uniform gravity on a free body; the frame's modes are frame_modes."""
     bodies = list(getattr(scene, "bodies"))
     n = len(bodies)
     p = [np.asarray(getattr(s, "p_W", np.zeros(3)), float) for s in initial]
@@ -313,7 +412,7 @@ def scene_modes(scene: object, initial: list[object]) -> list[tuple[str, float, 
             ends = [(a, np.asarray(element.point_a_B, float))]
             if b is not None and int(b) >= 0:
                 ends.append((int(b), np.asarray(element.point_b, float)))
-            inverse_mass = sum(1.0 / mass[i] for i, _ in ends)
+            inverse_mass = sum(_inverse_mass_at(bodies[i], r) for i, r in ends)
             k, c = float(element.stiffness), float(element.damping)
             modes.append((f"the spring {label}", k * inverse_mass, c * inverse_mass))
             for i, r in ends:
@@ -342,6 +441,8 @@ def scene_modes(scene: object, initial: list[object]) -> list[tuple[str, float, 
                 if moment[i] > 0:
                     modes.append((f"the angular drag {label} on body {i}", 0.0,
                                   (float(element.angular_linear) + 2.0 * float(element.angular_quadratic) * w[i]) / moment[i]))
+        elif kind == "UniformGravity":
+            modes += pivot_swing_modes(f"the gravity {label}", bodies, _listed(element, n), np.asarray(element.g_W, float))
         elif kind == "GravityGradient":
             for i in _listed(element, n):
                 if isinstance(bodies[i], _core.RigidBody) and moment[i] > 0:
@@ -352,23 +453,36 @@ def scene_modes(scene: object, initial: list[object]) -> list[tuple[str, float, 
     return modes
 
 
-def mode_message(method: str, dt: float, steps: int, label: str, k: float, gamma: float) -> str | None:
+def _mode_rate(k: float, gamma: complex) -> float:
+    """The fastest rate [1/s] of x'' = -k x - gamma x': sqrt|k| + gamma (a bound on |lambda|); for a turn
+    (imaginary gamma: frame_modes) |gamma| = 2 |Omega|, the rate at which a kick turns the velocity."""
+    return abs(gamma) if isinstance(gamma, complex) else math.sqrt(abs(k)) + gamma
+
+
+def mode_message(method: str, dt: float, steps: int, label: str, k: float, gamma: complex) -> str | None:
     """A message if `method` at dt [s] amplifies the mode x'' = -k x - gamma x' spuriously by more than
     GROWTH_LIMIT over `steps` steps (or, for a method not modelled, dt sqrt(|k|) or dt gamma exceeds
-    its documented stability_limit), else None; worded as stability_message."""
-    rate = math.sqrt(abs(k)) + gamma  # the mode's fastest rate [1/s]
+    its documented stability_limit), else None; worded as stability_message. An imaginary gamma is a
+    turn (frame_modes)."""
+    turn = isinstance(gamma, complex)
+    rate = _mode_rate(k, gamma)  # the mode's fastest rate [1/s]
     if not math.isfinite(rate):
         return (f"{method} at dt = {dt:.3g} s is beyond its stability limit for {label}: an infinite rate "
                 f"(bodies at zero separation)")
-    contraction = dt * rate / 2
-    if method == "implicit_midpoint" and contraction**MIDPOINT_ITERATIONS > MIDPOINT_TOLERANCE:
+    # the fixed-point iteration below contracts by h |lambda| / 2, |lambda| = |Omega| = sqrt|k| for a turn
+    contraction = dt * (math.sqrt(abs(k)) if turn else rate) / 2
+    # a turn: warned only once the iteration diverges; while it converges slowly it stays within the
+    # tolerance's reach (measured on two free particles at dt |Omega| = 0.5, contraction 0.25: the run is
+    # within 4e-10 relative of the converged Cayley map after 1000 steps, the Jacobi integral at 1e-14)
+    unconverged = contraction >= 1.0 if turn else contraction**MIDPOINT_ITERATIONS > MIDPOINT_TOLERANCE
+    if method == "implicit_midpoint" and unconverged:
         # its stage solves y = y0 + (h/2) f(y) by fixed-point iteration on the forces (the Newton step covers
         # only the gyroscopic term), contracting by h |lambda| / 2 per iteration: beyond this it stops at
         # its cap unconverged and keeps neither energy nor its order
         return (f"{method} at dt = {dt:.3g} s is beyond its stability limit for {label}: dt*rate/2 = "
                 f"{contraction:.3g}, the contraction of its fixed-point iteration, does not reach the tolerance "
                 f"{MIDPOINT_TOLERANCE:g} in {MIDPOINT_ITERATIONS} iterations ({'diverges' if contraction >= 1 else 'slow'}); "
-                f"rate = {rate:.3g} 1/s (sqrt|k| + gamma at the start)")
+                f"rate = {2 * contraction / dt:.3g} 1/s ({'|Omega|' if turn else 'sqrt|k| + gamma'} at the start)")
     g = oscillator_growth(method, dt, k, gamma)
     if g is None:
         limit = stability_limit(method)
@@ -378,28 +492,32 @@ def mode_message(method: str, dt: float, steps: int, label: str, k: float, gamma
                 f"> {limit:.3g}, the documented limit (methods()); rate {rate:.3g} 1/s")
     if g <= 1.0 or steps * math.log(g) <= math.log(GROWTH_LIMIT):
         return None
+    figures = (f"2|Omega| = {rate:.3g} rad/s (the Coriolis turn of the velocity; centrifugal k = {k:.3g} 1/s^2)" if turn
+               else f"{rate:.3g} 1/s (sqrt|k| + gamma, k = {k:.3g} 1/s^2, gamma = {gamma:.3g} 1/s at the start)")
     return (f"{method} at dt = {dt:.3g} s is beyond its stability limit for {label}: dt*rate = {dt * rate:.3g}, "
             f"perturbations grow spuriously about 10^{steps * math.log(g) / math.log(10):.3g}-fold over {steps} "
-            f"steps; rate = {rate:.3g} 1/s (sqrt|k| + gamma, k = {k:.3g} 1/s^2, gamma = {gamma:.3g} 1/s at the "
-            f"start), x{g:.6g} per step")
+            f"steps; rate = {figures}, x{g:.6g} per step")
 
 
 def scene_stability_message(method: str, dt: float, steps: int, scene: object, initial: list[object],
                             modes: list[tuple[str, float, float]] | None = None) -> str | None:
     """The first (largest-rate) stability message of `method` at dt [s] over `steps` steps on a scene:
-    each rigid body's spin (stability_message, torque-free along the orbit if the scene has no
-    element) and each mode of scene_modes (or `modes`, computed once by the caller); None if stable."""
+    each rigid body's spin (stability_message; a pinned body's with its inertia about the pivot, I_O;
+    torque-free along the orbit if the scene has no element and no frame), each mode of scene_modes (or
+    `modes`, computed once by the caller) and of frame_modes; None if stable."""
     modes = scene_modes(scene, initial) if modes is None else modes
     messages: list[tuple[float, str]] = []
-    free = len(list(getattr(scene, "elements"))) == 0
+    free = len(list(getattr(scene, "elements"))) == 0 and getattr(scene, "frame", None) is None
     for i, (body, state) in enumerate(zip(getattr(scene, "bodies"), initial)):
-        if isinstance(body, _core.RigidBody):
+        inertia = (body.inertia_com if isinstance(body, _core.RigidBody)
+                   else body.inertia_O if isinstance(body, _core.PivotedBody) else None)
+        if inertia is not None:
             w_B = np.asarray(getattr(state, "w_B"), float)
-            text = stability_message(method, dt, steps, np.asarray(body.inertia_com, float), w_B, free)
+            text = stability_message(method, dt, steps, np.asarray(inertia, float), w_B, free)
             if text:
                 messages.append((float(np.linalg.norm(w_B)), text.replace("for this spin", f"for the spin of body {i}")))
-    for label, k, gamma in modes:
+    for label, k, gamma in [*modes, *frame_modes(scene)]:
         text = mode_message(method, dt, steps, label, k, gamma)
         if text:
-            messages.append((math.sqrt(abs(k)) + gamma, text))
+            messages.append((_mode_rate(k, gamma), text))
     return max(messages)[1] if messages else None

@@ -826,6 +826,8 @@ class TradeoffResult:
         references = list(dict.fromkeys(str(r["reference"]) for r in self.rows))
         if references == ["exact"]:
             return _wrap(title + "the exact solution", width)
+        if len(references) == 1 and references[0].startswith("exact: "):  # a scene's closed form, named
+            return _wrap(title + f"the exact solution ({references[0][len('exact: '):]})", width)
         checked = {r["dt"]: r for r in self.rows if r.get("reference_check")}
         bad = [r for r in checked.values() if str(r["reference"]).startswith("unreliable")]
         out = _wrap(title + f"a refined reference ({', '.join(references)}), checked against an independent one at "

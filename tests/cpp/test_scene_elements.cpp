@@ -74,6 +74,8 @@ Kinematics random_kinematics(std::mt19937& rng) {
   k[0].q_WB = Eigen::Quaterniond::Identity(), k[0].w_B.setZero();  // particle
   k[1].p_W.z() = 0.0, k[1].v_W.z() = 0.0, k[1].w_B.head<2>().setZero();  // planar
   k[1].q_WB = Eigen::AngleAxisd(std::uniform_real_distribution<double>(-3, 3)(rng), Eigen::Vector3d::UnitZ());
+  const std::vector<Body> bodies = mixed_bodies();
+  for (int b = 0; b < 4; ++b) k[b].m = mass_of(bodies[b]);  // the mass now, as the model sets it
   return k;
 }
 
@@ -199,6 +201,7 @@ TEST(PointMassGravity, NewtonsLawAtKnownGeometry) {
   const std::vector<Body> bodies = {Particle(2.0)};
   Kinematics k(1);
   k[0].p_W = Eigen::Vector3d(1.0, 1.0, 1.0) + Eigen::Vector3d(3.0, 4.0, 0.0);  // r = (3, 4, 0), |r| = 5
+  k[0].m = 2.0;
   const PointMassGravityTerm term(PointMassGravity{5.0, Eigen::Vector3d(1, 1, 1), 0.0, {}}, bodies, kName);
   // f = −GM m r/|r|³ = −10 (3, 4, 0)/125, V = −GM m/|r| = −2; to a few ulps of the operands
   const Wrenches w = wrenches_of(term, k);
@@ -242,6 +245,7 @@ TEST(MutualGravity, TwoBodiesAtKnownGeometry) {
   const std::vector<Body> bodies = {Particle(2.0), Particle(3.0)};
   Kinematics k(2);
   k[1].p_W = Eigen::Vector3d(0.0, 0.0, 2.0);
+  k[0].m = 2.0, k[1].m = 3.0;
   const MutualGravityTerm term(MutualGravity{0.5, 0.0, {}}, bodies, kName);
   // |f| = G m1 m2/r² = 0.5·6/4 = 0.75, body 0 pulled towards +z; V = −G m1 m2/r = −1.5 (few ulps)
   const Wrenches w = wrenches_of(term, k);
@@ -300,6 +304,7 @@ TEST(MutualGravity, ManyBodiesAgainstDirectSum) {
   for (int i = 0; i < n; ++i) {
     bodies.emplace_back(Particle(0.5 + std::uniform_real_distribution<double>(0, 1)(rng)));
     k[i].p_W = random_vector(rng, 3.0), k[i].v_W = random_vector(rng, 1.0);
+    k[i].m = mass_of(bodies[i]);
   }
   const double G = 1.5, softening = 0.05;
   const MutualGravityTerm term(MutualGravity{G, softening, {}}, bodies, kName);
@@ -417,6 +422,7 @@ TEST(GravityGradient, MatchesExactAttractionOfPointMassCloud) {
     Kinematics k(1);
     k[0].p_W = distance * random_vector(rng, 1.0).normalized();
     k[0].q_WB = random_rotation(rng);
+    k[0].m = mass;
     Eigen::Vector3d f_exact = Eigen::Vector3d::Zero(), tau_exact = Eigen::Vector3d::Zero();
     for (const auto& [m_k, rho_B] : points) {
       const Eigen::Vector3d x = k[0].p_W + k[0].q_WB * rho_B;

@@ -70,6 +70,8 @@ def _call_spec(path, args=(), **kwargs):
 _SCENE = _call_spec("Scene", bodies=("list", [_call_spec("Particle", [("lit", 2.0)]),
                                               _call_spec("RigidBody", [("lit", 1.0), ("lit", [1.0, 2.0, 2.5])])]),
                     elements=("list", [_call_spec("UniformGravity")]))
+_PIVOTED = _call_spec("PivotedBody", [_call_spec("RigidBody", [("lit", 1.0), ("lit", [1.0, 2.0, 2.5])]),
+                                      ("lit", [0.0, 0.0, 0.5])])
 _SCENE_STATES = ("list", [_call_spec("ParticleState", v_W=("lit", [0.0, 1.0, 0.0])),
                           _call_spec("RigidBodyState", w_B=("lit", [0.1, 1.0, 0.1]))])
 
@@ -93,10 +95,38 @@ RECIPES = {
         "integrate_density_over_box", [("per_row", ("lit", rho)), ("lit", [0.0, 0.0, 0.0]), ("lit", [1.0, 2.0, 0.5])])),
     "ScheduledLoads": st.just(_call_spec("ScheduledLoads", body=("lit", 0),
                                          loads=("list", [_call_spec("AppliedLoad", force=("lit", [1.0, 0.0, 0.0]))]))),
+    # issue 12: a top pinned below its centre of mass, the frames of a scene, a pivoted run's records
+    "PivotedBody": st.just(_PIVOTED),
+    "PivotedPlanarBody": st.just(_call_spec("PivotedPlanarBody", [("lit", 1.0), ("lit", 0.1), ("lit", [0.0, -0.5])])),
+    "Thrust": st.sampled_from(["body", "world"]).map(lambda frame: _call_spec(
+        "Thrust", [("lit", 0), ("lit", [0.0, 0.0, -100.0])], frame=("lit", frame))),
+    "SceneFrame": st.sampled_from([_call_spec("SceneFrame.rotating", [("lit", [0.0, 0.0, 1.0]), ("lit", 0.5)]),
+                                   _call_spec("SceneFrame.earth", [("lit", 0.85)])]),
+    "PivotedAcceleration": st.just(_call_spec("forward_dynamics", [_PIVOTED, _call_spec("PivotedBodyState")],
+                                              gravity=("lit", True))),
+    # issue 12's exact references: a pendulum at a drawn angle and rate (libration or rotation), a symmetric top
+    # (inertia about O symmetric about O->C) tilted by a drawn angle about x with a drawn spin (not 0: its axis would
+    # swing through the vertical, refused), a particle seen from a rotating frame, a rocket losing mass at a drawn rate
+    "CompoundPendulumSolution": st.tuples(st.floats(-3.1, 3.1), st.floats(-20.0, 20.0)).map(lambda tw: _call_spec(
+        "CompoundPendulumSolution", [_call_spec("PivotedPlanarBody", [("lit", 1.0), ("lit", 0.1), ("lit", [0.0, -0.5])]),
+                                     ("lit", [0.0, -9.81]),
+                                     _call_spec("PivotedPlanarBodyState", theta=("lit", tw[0]), omega=("lit", tw[1]))])),
+    "LagrangeTopSolution": st.tuples(st.floats(0.1, 3.0), SIGN, st.floats(1.0, 20.0)).map(lambda ts: _call_spec(
+        "LagrangeTopSolution", [_call_spec("PivotedBody", [_call_spec("RigidBody", [("lit", 1.0), ("lit", [1.0, 1.0, 0.5])]),
+                                                           ("lit", [0.0, 0.0, 0.2])]),
+                                ("lit", [0.0, 0.0, -9.81]),
+                                _call_spec("PivotedBodyState", w_B=("lit", [0.1, 0.0, ts[1] * ts[2]]),
+                                           q_WB=("lit", [math.sin(ts[0] / 2), 0.0, 0.0, math.cos(ts[0] / 2)]))])),
+    "RotatingFrameFreeParticle": st.just(_call_spec(
+        "RotatingFrameFreeParticle", [_call_spec("SceneFrame.rotating", [("lit", [0.0, 0.0, 1.0]), ("lit", 0.5)]),
+                                      ("lit", [1.0, 0.0, 0.0]), ("lit", [0.0, 1.0, 0.0])])),
+    "ConstantThrustSolution": st.tuples(st.floats(0.1, 100.0), st.floats(-10.0, -0.01)).map(lambda mr: _call_spec(
+        "ConstantThrustSolution", [("lit", mr[0]), ("lit", mr[1]), ("lit", [0.0, 0.0, -100.0])],
+        g_W=("lit", [0.0, 0.0, -9.81]))),
 }
 # the force element classes of a scene (Scene.add, Scene(elements=...))
 ELEMENT_CLASSES = ("UniformGravity", "PointMassGravity", "MutualGravity", "GravityGradient", "SpringDamper", "Drag",
-                   "ScheduledLoads", "PythonForce")
+                   "ScheduledLoads", "PythonForce", "Thrust")
 
 
 # ---------------------------------------------------------------------------------------------
@@ -479,7 +509,9 @@ class Strategies:
             (r"screw", obj("Screw")),
             (r"check|inertia_check", obj("InertiaCheck")),
             (r"part", obj("SpatialInertia")),
-            (r"body|model", obj("RigidBody", "Particle", "PlanarBody")),
+            (r"body|model", obj("RigidBody", "Particle", "PlanarBody", "PivotedBody", "PivotedPlanarBody")),
+            (r"frame_motion", obj("FrameMotion")),
+            (r"mass_flow", lambda s, p, doc, depth: st.one_of(lit(st.none()), s.objects("MassFlow", depth + 1))),
             (r"model", obj("Scene", "CompiledScene")),
             (r"scene", obj("Scene")),
             (r"element", obj(*ELEMENT_CLASSES)),
@@ -493,7 +525,8 @@ class Strategies:
             (r"fn", lambda s, p, doc, depth: st.one_of(  # a force fn(t, body, p_W, q_WB, v_W, w_B) -> (f_W, tau_B)
                 array_spec(st.just(np.zeros(3))).map(lambda a: ("lambda", ("tuple", [a, a]))),
                 s.callables(doc, depth))),
-            (r"state|initial", obj("RigidBodyState", "ParticleState", "PlanarBodyState")),
+            (r"state|initial", obj("RigidBodyState", "ParticleState", "PlanarBodyState", "PivotedBodyState",
+                                   "PivotedPlanarBodyState")),
             (r"rho", lambda s, p, doc, depth: st.one_of(  # a density per point [kg/m^3], or anything
                 lit(POSITIVE_FLOAT).map(lambda v: ("per_row", v)), returning()(s, p, doc, depth))),
             (r"kinematics_at", returning("FrameKinematics")),

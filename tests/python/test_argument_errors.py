@@ -88,7 +88,28 @@ ELEMENTS = {
     "MutualGravity": lambda: rd.MutualGravity(), "GravityGradient": lambda: rd.GravityGradient(gm=1.0),
     "SpringDamper": lambda: rd.SpringDamper(body_a=0, stiffness=1.0), "Drag": lambda: rd.Drag(linear=0.1),
     "ScheduledLoads": lambda: rd.ScheduledLoads(body=0), "PythonForce": lambda: rd.PythonForce(_push),
+    "Thrust": lambda: rd.Thrust(body=0, u_rel=V),
 }
+
+
+def _pivoted():
+    return rd.PivotedBody(rd.RigidBody(1.0, I_BOX), V)
+
+
+def _pendulum():
+    """A compound pendulum swinging in a vertical plane."""
+    return {"body": rd.PivotedPlanarBody(1.0, 0.5, [0.1, 0.2]), "g_W": [0.0, -9.81],
+            "state": rd.PivotedPlanarBodyState(theta=0.3, omega=0.1)}
+
+
+def _top():
+    """A spinning symmetric top (inertia about O symmetric about O->C), its axis 0.3 rad from the vertical."""
+    return {"body": rd.PivotedBody(rd.RigidBody(1.0, [1.0, 1.0, 0.5]), p_OC_B=[0.0, 0.0, 0.2]), "g_W": [0.0, 0.0, -9.81],
+            "state": rd.PivotedBodyState(q_WB=rd.axis_angle_to_quat([1.0, 0.0, 0.0], 0.3), w_B=[0.1, 0.0, 5.0])}
+
+
+def _thrust():
+    return {"m0": 10.0, "rate": -0.1, "u_rel_W": [0.0, 0.0, -100.0]}
 
 
 # path -> a function returning the keyword arguments of a valid call (required arguments at least)
@@ -249,6 +270,24 @@ EXAMPLES = {
     "GravityGradient": lambda: {"gm": 1.0}, "SpringDamper": lambda: {"body_a": 0, "stiffness": 1.0},
     "Drag": lambda: {}, "ScheduledLoads": lambda: {"body": 0}, "PythonForce": lambda: {"fn": _push},
     "load_scene": lambda: {"path_or_text": "kepler"},
+    # issue 12: bodies about a fixed point, the scene's frame, variable mass
+    "PivotedBody": lambda: {"body": rd.RigidBody(1.0, I_BOX), "p_OC_B": V},
+    "PivotedPlanarBody": lambda: {"mass": 1.0, "inertia_zz": 0.5, "p_OC_B": [0.1, 0.2]},
+    "PivotedBodyState": lambda: {}, "PivotedPlanarBodyState": lambda: {}, "PivotedBodyState.quaternion": lambda: {},
+    "PivotedAcceleration": lambda: {"alpha_B": V, "reaction_W": V}, "PivotedTorque": lambda: {"tau_O_B": V, "reaction_W": V},
+    "PivotedPlanarAcceleration": lambda: {"alpha": 0.3, "reaction_W": V},
+    "PivotedPlanarTorque": lambda: {"tau_O": 0.3, "reaction_W": V},
+    "SceneFrame.rotating": lambda: {"axis": [0, 0, 1.0], "rate": 0.5}, "SceneFrame.earth": lambda: {"latitude": 0.8},
+    "SceneFrame.moving": lambda: {"frame_motion": rd.FrameMotion.fixed()},
+    "MassFlow": lambda: {}, "Thrust": lambda: {"body": 0, "u_rel": V},
+    # issue 12's exact references
+    "CompoundPendulumSolution": _pendulum, "CompoundPendulumSolution.at": lambda: {"t": 0.5},
+    "LagrangeTopSolution": _top, "LagrangeTopSolution.at": lambda: {"t": 0.5},
+    "LagrangeTopSolution.angles_at": lambda: {"t": 0.5},
+    "RotatingFrameFreeParticle": lambda: {"frame": rd.SceneFrame.rotating([0, 0, 1.0], 0.5), "p0_F": V, "v0_F": V},
+    "RotatingFrameFreeParticle.at": lambda: {"t": 0.5},
+    "ConstantThrustSolution": _thrust, "ConstantThrustSolution.at": lambda: {"t": 0.5},
+    "ConstantThrustSolution.delta_v": lambda: {"m1": 5.0}, "ConstantThrustSolution.mass_at": lambda: {"t": 0.5},
 }
 
 # the instance a method is called on, by class
@@ -260,6 +299,11 @@ INSTANCES = {
     "Problem": _problem, "TradeoffResult": _result,
     "SimulationResult": lambda: rd.simulate(rd.RigidBody(1.0, I_BOX), rd.RigidBodyState(w_B=V), 0.01, 2),
     "Scene": _scene, "CompiledScene": lambda: _scene().compile("rk4"), "SceneResult": _scene_result,
+    "PivotedBodyState": lambda: rd.PivotedBodyState(w_B=V),
+    "CompoundPendulumSolution": lambda: rd.CompoundPendulumSolution(**_pendulum()),
+    "LagrangeTopSolution": lambda: rd.LagrangeTopSolution(**_top()),
+    "RotatingFrameFreeParticle": lambda: rd.RotatingFrameFreeParticle(rd.SceneFrame.rotating([0, 0, 1.0], 0.5), V, V),
+    "ConstantThrustSolution": lambda: rd.ConstantThrustSolution(**_thrust()),
 }
 
 # (path, argument) -> the wrong kinds that are valid values after all (the call may succeed)
@@ -356,13 +400,24 @@ INSTANCES_OF_RESULTS = {
     "BodyAcceleration": lambda: rd.forward_dynamics(**_body_state(), force=V),
     "PlanarAcceleration": lambda: rd.forward_dynamics(rd.PlanarBody(1.0, 0.5), rd.PlanarBodyState(), [0.1, 0.2]),
     "Scene": _scene, "CompiledScene": lambda: _scene().compile("rk4"), "SceneResult": _scene_result, **ELEMENTS,
+    "PivotedBody": _pivoted, "PivotedPlanarBody": lambda: rd.PivotedPlanarBody(1.0, 0.5, [0.1, 0.2]),
+    "PivotedPlanarBodyState": rd.PivotedPlanarBodyState,
+    "PivotedAcceleration": lambda: rd.forward_dynamics(_pivoted(), rd.PivotedBodyState(w_B=V), gravity=True),
+    "PivotedTorque": lambda: rd.inverse_dynamics(_pivoted(), rd.PivotedBodyState(w_B=V), alpha_B=V),
+    "PivotedPlanarAcceleration": lambda: rd.forward_dynamics(rd.PivotedPlanarBody(1.0, 0.5, [0.1, 0.2]),
+                                                             rd.PivotedPlanarBodyState(), gravity=[0.0, -9.81]),
+    "PivotedPlanarTorque": lambda: rd.inverse_dynamics(rd.PivotedPlanarBody(1.0, 0.5, [0.1, 0.2]),
+                                                       rd.PivotedPlanarBodyState(), alpha_B=0.3),
+    "SceneFrame": lambda: rd.SceneFrame.rotating([0, 0, 1.0], 0.5), "MassFlow": lambda: rd.MassFlow(-0.1),
 }
 PROPERTIES = _properties()
 # the states' fields: assigned whole, checked as the constructor checks (their arrays are read-only)
 ASSIGNABLE = {("ParticleState", "p_W"), ("ParticleState", "v_W"), ("PlanarBodyState", "p_W"),
               ("PlanarBodyState", "theta"), ("PlanarBodyState", "v_W"), ("PlanarBodyState", "omega"),
               ("RigidBodyState", "p_W"), ("RigidBodyState", "q_WB"), ("RigidBodyState", "v_W"),
-              ("RigidBodyState", "w_B")}
+              ("RigidBodyState", "w_B"), ("PivotedBodyState", "q_WB"), ("PivotedBodyState", "w_B"),
+              ("PivotedPlanarBodyState", "theta"), ("PivotedPlanarBodyState", "omega"),
+              ("Scene", "frame")}  # a scene's frame: a SceneFrame or None
 
 
 def test_every_class_with_properties_has_an_instance():

@@ -110,7 +110,7 @@ def test_scene_add_checks_the_element_against_the_bodies_so_far():
         scene.add(rd.Particle(1.0))
     with pytest.raises(ValueError, match=r"^name: expected a name no other body of the scene has"):
         scene.add_body(rd.Particle(1.0), name="dot")
-    with pytest.raises(TypeError, match=r"^body: expected a Particle, PlanarBody or RigidBody"):
+    with pytest.raises(TypeError, match=r"^body: expected a Particle, PlanarBody, RigidBody, PivotedBody or PivotedPlanarBody"):
         scene.add_body(rd.ParticleState())
     assert len(scene.elements) == 0 and len(scene.bodies) == 2  # nothing refused was added
 
@@ -227,7 +227,7 @@ def test_to_dataframe_is_one_row_per_record_with_each_body_s_columns():
     np.testing.assert_array_equal(df["dot:p_W_x [m]"], r.p_W[:, 0, 0])
     np.testing.assert_array_equal(df["work[0] UniformGravity [J]"], r.work[:, 0])
     np.testing.assert_array_equal(df["angular_momentum_W_z [kg m^2/s]"], r.angular_momentum_W[:, 2])
-    assert len(df.columns) == 1 + 2 * 13 + 3 + 6 + 2
+    assert len(df.columns) == 1 + 2 * (13 + 7) + 3 + 6 + 2  # per body: state 13, reaction 3, H_O 3, mass
 
 
 @pytest.mark.parametrize("method", ["rk4", "splitting_dlm", "implicit_midpoint"])

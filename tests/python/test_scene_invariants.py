@@ -134,6 +134,8 @@ def test_work_energy_on_every_shipped_scene(name):
     T2 − T1 = Σ work within RK4's error bound, Richardson as in the test above (|r(h/2)| ≤ 2 |r(h) − r(h/2)|/15)
     plus the round-off of n steps × 16 eps × (max T + Σ max |work|)."""
     scene, initial, options = rd.load_scene(name)
+    if any(flow is not None for flow in scene.mass_flows):  # d(m v^2/2)/dt = f.v + (dm/dt) v^2/2: not work alone
+        pytest.skip("a body whose mass changes: its kinetic energy changes by more than the work (the rocket)")
     residuals, scale, steps = [], 0.0, options.steps
     for dt, n in ((options.dt, steps), (options.dt / 2, 2 * steps)):
         result = rd.simulate(scene, initial, dt=dt, steps=n, method="rk4", record_every=n)

@@ -2,6 +2,8 @@
 
 #include "rigiddyn/check.hpp"
 
+#include <cmath>
+#include <cstdio>
 #include <set>
 #include <string>
 
@@ -44,7 +46,7 @@ void check_names(const Scene& scene) {
 // UniformGravity (in the plane for a planar body, as today's planar simulate requires) and at most one
 // ScheduledLoads through the centre of mass. Returns false otherwise.
 bool one_body_plan(const Scene& scene, OneBodyPlan& plan) {
-  if (scene.bodies.size() != 1) return false;
+  if (scene.bodies.size() != 1 || is_pivoted(scene.bodies[0]) || scene.frame || has_mass_flow(scene, 0)) return false;
   for (std::size_t i = 0; i < scene.elements.size(); ++i) {
     const Element& element = scene.elements[i];
     if (const auto* g = std::get_if<UniformGravity>(&element)) {
@@ -63,11 +65,100 @@ bool one_body_plan(const Scene& scene, OneBodyPlan& plan) {
   return true;
 }
 
+bool has_frame(const Scene& scene) { return scene.frame.has_value(); }
+
+// True when the scene's elements are at most one UniformGravity and one ScheduledLoads (indices into
+// `gravity`, `loads`, -1 when absent) and, with allow_thrust, one Thrust (`thrust`)
+bool only_gravity_loads_thrust(const Scene& scene, int& gravity, int& loads, int& thrust, bool allow_loads, bool allow_thrust) {
+  gravity = loads = thrust = -1;
+  for (std::size_t i = 0; i < scene.elements.size(); ++i) {
+    const Element& element = scene.elements[i];
+    int* slot = std::holds_alternative<UniformGravity>(element)                 ? &gravity
+                : allow_loads && std::holds_alternative<ScheduledLoads>(element) ? &loads
+                : allow_thrust && std::holds_alternative<Thrust>(element)        ? &thrust
+                                                                                 : nullptr;
+    if (!slot || *slot >= 0) return false;
+    *slot = static_cast<int>(i);
+  }
+  return true;
+}
+
+// g [m/s²] of the scene's first UniformGravity element (zero without one)
+Eigen::Vector3d gravity_of(const Scene& scene) {
+  for (const Element& e : scene.elements) {
+    if (const auto* u = std::get_if<UniformGravity>(&e)) return u->g_W;
+  }
+  return Eigen::Vector3d::Zero();
+}
+
+// The fast model of issue 12 for a scene that is exactly its case (api12.md §2), or monostate. The
+// compiled element count `element_count` includes the frame's terms (after the user's elements).
+FastSceneModel fast_model_of(const Scene& scene, const detail::FrameTermSet& frame, std::size_t element_count,
+                             ScenePath& path) {
+  if (scene.bodies.size() != 1) return std::monostate{};
+  int gravity = -1, loads = -1, thrust = -1;
+  const Body& body = scene.bodies[0];
+  const Eigen::Vector3d g = gravity_of(scene);
+  if (const auto* pivoted = std::get_if<PivotedBody>(&body)) {
+    if (has_frame(scene) || !only_gravity_loads_thrust(scene, gravity, loads, thrust, true, false)) return std::monostate{};
+    const ScheduledLoads* l = loads >= 0 ? &std::get<ScheduledLoads>(scene.elements[loads]) : nullptr;
+    path = ScenePath::pivoted_body;
+    return with_euler_form(*pivoted, [&](const auto& euler_O) -> FastSceneModel {
+      using Euler = std::decay_t<decltype(euler_O)>;
+      return PivotedBodyModel<Euler>(*pivoted, g, gravity, l ? l->loads : std::vector<AppliedLoad>{}, loads, element_count,
+                                     l ? l->point_B : Eigen::Vector3d::Zero());
+    });
+  }
+  const auto* particle = std::get_if<Particle>(&body);
+  if (!particle) return std::monostate{};
+  if (has_frame(scene) && scene.frame->constant_rotation && !has_mass_flow(scene, 0) &&
+      only_gravity_loads_thrust(scene, gravity, loads, thrust, false, false)) {
+    const int n = static_cast<int>(scene.elements.size());
+    path = ScenePath::rotating_frame_particle;
+    return RotatingFrameParticleModel(*particle, *scene.frame, g, gravity, frame.centrifugal ? n : -1,
+                                      frame.coriolis ? n + (frame.centrifugal ? 1 : 0) : -1, element_count);
+  }
+  if (!has_frame(scene) && has_mass_flow(scene, 0) && has_constant_rate(*scene.mass_flows[0]) &&
+      only_gravity_loads_thrust(scene, gravity, loads, thrust, false, true) && thrust >= 0) {
+    const Thrust& t = std::get<Thrust>(scene.elements[thrust]);
+    if (t.frame != Frame::world || !t.r_B.isZero(0.0)) return std::monostate{};
+    path = ScenePath::variable_mass_particle;
+    return VariableMassParticleModel(*particle, *scene.mass_flows[0], t, thrust, g, gravity, element_count, body_name(scene, 0));
+  }
+  return std::monostate{};
+}
+
+// "12.3" (the digits kept, rounded down to one decimal)
+std::string one_decimal(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f", x);
+  return text;
+}
+
+// "632.456" or "10000": a distance for a message, to six significant digits
+std::string six_digits(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", x);
+  return text;
+}
+
+bool is_splitting(Method method) {
+  return method == Method::splitting_dlm || method == Method::splitting_dlm_yoshida4 ||
+         method == Method::exact_flow_kick || method == Method::exact;
+}
+
 }  // namespace
+
+const char* scene_path_name(ScenePath path) {
+  static const char* const names[] = {"generic", "one_body", "pivoted_body", "rotating_frame_particle",
+                                      "variable_mass_particle"};
+  return names[static_cast<int>(path)];
+}
 
 std::string element_type_name(const Element& element) {
   static const char* const names[] = {"UniformGravity", "PointMassGravity", "MutualGravity", "GravityGradient",
-                                      "SpringDamper",   "Drag",             "ScheduledLoads", "FunctionForce"};
+                                      "SpringDamper",   "Drag",             "ScheduledLoads", "FunctionForce",
+                                      "Thrust"};
   static_assert(std::variant_size_v<Element> == sizeof names / sizeof names[0], "a name per element type");
   return names[element.index()];
 }
@@ -75,13 +166,14 @@ std::string element_type_name(const Element& element) {
 std::string scene_features(Method method) {
   switch (method) {
     case Method::exact:
-      return "one torque-free body under at most UniformGravity and ScheduledLoads through its centre of mass "
-             "(closed form)";
+      return "one torque-free body under at most UniformGravity and ScheduledLoads through its centre of mass, or one "
+             "torque-free pivoted body (closed form); no moving frame, no mass flow";
     case Method::splitting_dlm:
     case Method::splitting_dlm_yoshida4:
     case Method::exact_flow_kick:
-      return "any bodies and elements; velocity-dependent elements (drag, dampers) with a warning: the kick freezes "
-             "velocities (order 1 in the damping, not symplectic)";
+      return "any bodies and elements; velocity-dependent elements (drag, dampers, the Coriolis force) with a warning: "
+             "the kick freezes velocities (order 1 in the damping, not symplectic); not a rigid body whose inertia is "
+             "a function of its mass";
     default:
       return "any bodies and elements";
   }
@@ -101,29 +193,132 @@ void check_compatibility(Method method, const ElementTraits& traits, const std::
 
 void check_exact(const Scene& scene, Method method, std::size_t extra_elements) {
   if (method != Method::exact) return;
+  const auto refuse = [&](const std::string& why) {
+    throw std::invalid_argument("method: 'exact' needs " + why + ", got " + describe_contents(scene, extra_elements) +
+                                "; use 'exact_flow_kick' (or another method) for this scene");
+  };
+  if (scene.frame) refuse("an inertial scene (no moving frame: its fictitious forces have no closed form)");
+  for (std::size_t i = 0; i < scene.mass_flows.size(); ++i) {
+    if (scene.mass_flows[i]) refuse("bodies of constant mass (mass_flows[" + std::to_string(i) + "] is given)");
+  }
+  if (scene.bodies.size() == 1 && is_pivoted(scene.bodies[0])) {
+    // the free rotation about O (Euler–Poinsot with I_O) is exact; forces at the centre of mass are
+    // torque-free about O only when it is the pivot (c = 0): then uniform gravity and loads through it
+    const Body& body = scene.bodies[0];
+    const bool at_pivot = std::holds_alternative<PivotedBody>(body) ? std::get<PivotedBody>(body).p_OC_B().isZero(0.0)
+                                                                     : std::get<PivotedPlanarBody>(body).p_OC_B().isZero(0.0);
+    int gravity = -1, loads = -1, thrust = -1;
+    if (extra_elements == 0 && (scene.elements.empty() || (at_pivot && only_gravity_loads_thrust(scene, gravity, loads, thrust, true, false)))) {
+      return;
+    }
+    refuse("a torque-free pivoted body (no element, or its centre of mass at the pivot under at most uniform gravity "
+           "and loads through it)");
+  }
   OneBodyPlan plan;
   // today's problems of one body (the closed form; constant forces through the centre of mass are exact
   // in its kicks; a torque is refused when the run meets it, as by simulate(body, ...))
   if (extra_elements > 0 || !one_body_plan(scene, plan)) {
-    throw std::invalid_argument(
-        "method: 'exact' needs one torque-free body under at most uniform gravity and loads through its centre "
-        "of mass (the closed form and constant forces), got " +
-        describe_contents(scene, extra_elements) + "; use 'exact_flow_kick' (or another method) for this scene");
+    refuse("one torque-free body under at most uniform gravity and loads through its centre of mass (the closed form "
+           "and constant forces)");
   }
+}
+
+void check_scene(const Scene& scene, Method method) {
+  method_info(method);  // throws for a Method out of range
+  check_names(scene);
+  const std::size_t n = scene.bodies.size();
+  if (!scene.mass_flows.empty() && scene.mass_flows.size() != n) {
+    throw std::invalid_argument("mass_flows: expected " + std::to_string(n) + " entries (one per body) or none, got " +
+                                std::to_string(scene.mass_flows.size()));
+  }
+  for (std::size_t i = 0; i < scene.mass_flows.size(); ++i) {
+    if (!scene.mass_flows[i]) continue;
+    const std::string name = "mass_flows[" + std::to_string(i) + "]";
+    const Body& body = scene.bodies[i];
+    if (!std::holds_alternative<Particle>(body) && !std::holds_alternative<RigidBody>(body)) {
+      throw std::invalid_argument(name + ": expected none for a " + kind_name(body) +
+                                  " (a mass flow applies to particles and rigid bodies), got a MassFlow on body " +
+                                  std::to_string(i) + " '" + body_name(scene, i) + "'");
+    }
+    check_mass_flow(*scene.mass_flows[i], name);
+    if (scene.mass_flows[i]->inertia_rule != InertiaRule::function || !std::holds_alternative<RigidBody>(body)) continue;
+    if (scene.frame) {
+      throw std::invalid_argument(name + ".inertia_rule: expected InertiaRule::scaled in a moving frame (the fictitious "
+                                         "torques scale the initial inertia with the mass), got InertiaRule::function");
+    }
+    if (is_splitting(method)) {
+      throw std::invalid_argument("method: expected a method that is not a splitting for a body whose inertia is a "
+                                  "function of its mass (" + name + ": the free rotation needs a fixed inertia), got '" +
+                                  method_info(method).name + "'");
+    }
+  }
+  for (std::size_t e = 0; e < scene.elements.size(); ++e) {
+    const auto* gradient = std::get_if<GravityGradient>(&scene.elements[e]);
+    if (!gradient) continue;
+    for (const int b : resolve_bodies(gradient->bodies, n, "elements[" + std::to_string(e) + "]")) {
+      if (has_mass_flow(scene, static_cast<std::size_t>(b))) {
+        throw std::invalid_argument("elements[" + std::to_string(e) + "].bodies: expected bodies of constant mass (the "
+                                    "gravity gradient holds the inertia about the centre of mass), got body " +
+                                    std::to_string(b) + " '" + body_name(scene, b) + "' with a mass flow (mass_flows[" +
+                                    std::to_string(b) + "])");
+      }
+    }
+  }
+}
+
+FrameTermSet frame_term_set(const Scene& scene) {
+  FrameTermSet set;
+  if (!scene.frame) return set;
+  if (scene.frame->constant_rotation) {
+    const bool turning = !frame_terms(*scene.frame, 0.0).w_F.isZero(0.0);
+    set.centrifugal = set.coriolis = turning;
+  } else {
+    set.origin = set.euler = set.centrifugal = set.coriolis = true;
+  }
+  return set;
+}
+
+std::vector<std::string> body_names_of(const Scene& scene) {
+  std::vector<std::string> names;
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i) names.push_back(body_name(scene, i));
+  return names;
 }
 
 }  // namespace detail
 
 CompiledScene compile_scene(const Scene& scene, Method method) {
-  method_info(method);  // throws for a Method out of range
-  check_names(scene);
+  detail::check_scene(scene, method);
   std::vector<SceneModel::Term> terms = detail::compile_terms<SceneModel::Term>(scene);
   detail::check_exact(scene, method, 0);
   CompiledScene out;
-  for (std::size_t i = 0; i < terms.size(); ++i) {
+  for (std::size_t i = 0; i < scene.elements.size(); ++i) {
     const ElementTraits traits = std::visit([](const auto& term) { return term.traits(); }, terms[i]);
-    detail::check_compatibility(method, traits, "elements[" + std::to_string(i) + "]", element_type_name(scene.elements[i]),
-                                out.warnings_);
+    out.element_names_.push_back("elements[" + std::to_string(i) + "]");
+    out.element_types_.push_back(element_type_name(scene.elements[i]));
+    detail::check_compatibility(method, traits, out.element_names_.back(), out.element_types_.back(), out.warnings_);
+  }
+  const detail::FrameTermSet frame = detail::frame_term_set(scene);
+  const std::pair<bool, const char*> frame_terms[] = {{frame.origin, "origin"}, {frame.euler, "euler"},
+                                                      {frame.centrifugal, "centrifugal"}, {frame.coriolis, "coriolis"}};
+  const char* const frame_types[] = {"FrameOriginForce", "EulerForce", "CentrifugalForce", "CoriolisForce"};
+  for (int k = 0; k < 4; ++k) {
+    if (!frame_terms[k].first) continue;
+    out.element_names_.push_back(std::string("frame.") + frame_terms[k].second);
+    out.element_types_.push_back(frame_types[k]);
+    // the Coriolis term is velocity-dependent but linear in the velocities: every model's loads kick takes its
+    // exact flow (scene_model.hpp detail::exact_linear_kick, the fast particle model's closed form), so the
+    // kick-based splittings keep their order with it and warrant no warning
+    if (k == 3) continue;
+    const ElementTraits traits = std::visit([](const auto& term) { return term.traits(); }, terms[out.element_names_.size() - 1]);
+    detail::check_compatibility(method, traits, out.element_names_.back(), out.element_types_.back(), out.warnings_);
+  }
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+    const auto* pivoted = std::get_if<PivotedBody>(&scene.bodies[i]);
+    if (!pivoted || !(pivoted->digits_lost() > 6.0)) continue;
+    out.warnings_.push_back("bodies[" + std::to_string(i) + "] '" + body_name(scene, i) + "': the pivot is " +
+                            six_digits(pivoted->p_OC_B().norm()) + " m from the centre of mass; the inertia about O "
+                            "keeps only ~" + one_decimal(16.0 - pivoted->digits_lost()) +
+                            " of the 16 digits of the inertia about the centre of mass");
   }
   for (const Element& element : scene.elements) {
     if (const auto* l = std::get_if<ScheduledLoads>(&element)) {
@@ -132,8 +327,14 @@ CompiledScene compile_scene(const Scene& scene, Method method) {
   }
   out.scene_ = std::make_shared<const Scene>(scene);
   out.method_ = method;
-  out.model_ = std::make_shared<const SceneModel>(scene.bodies, std::move(terms));
+  const std::size_t element_count = terms.size();
+  out.model_ = std::make_shared<const SceneModel>(scene.bodies, std::move(terms), scene.mass_flows, detail::body_names_of(scene));
   out.one_body_path_ = one_body_plan(scene, out.plan_);
+  if (out.one_body_path_) {
+    out.path_ = ScenePath::one_body;
+  } else {
+    out.fast_ = std::make_shared<const FastSceneModel>(fast_model_of(scene, frame, element_count, out.path_));
+  }
   return out;
 }
 

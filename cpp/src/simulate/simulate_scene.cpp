@@ -16,15 +16,6 @@ namespace rigiddyn {
 
 namespace detail {
 
-namespace {
-
-const char* state_type_name(std::size_t kind) {
-  static const char* const names[] = {"ParticleState", "PlanarBodyState", "RigidBodyState"};
-  return names[kind];
-}
-
-}  // namespace
-
 std::vector<BodyState> checked_scene_input(const Scene& scene, Method compiled_method, const std::vector<BodyState>& initial,
                                            const SimulationOptions& o, bool stepping, const char* states_name) {
   check_options(o, stepping);
@@ -58,11 +49,20 @@ std::vector<BodyState> checked_scene_input(const Scene& scene, Method compiled_m
   return out;
 }
 
+void check_masses_over_run(const Scene& scene, const SimulationOptions& o, std::int64_t steps) {
+  for (std::size_t i = 0; i < scene.mass_flows.size(); ++i) {
+    if (!scene.mass_flows[i]) continue;
+    check_mass_over_run(*scene.mass_flows[i], mass_of(scene.bodies[i]), o.t0, o.dt, steps,
+                        "mass_flows[" + std::to_string(i) + "]", body_name(scene, i));
+  }
+}
+
 SceneSimulation reserved_scene_simulation(std::int64_t steps, std::int64_t record_every, std::size_t bodies,
                                           std::size_t elements) {
   const double records = std::floor(static_cast<double>(steps) / static_cast<double>(record_every)) + 2.0;
-  // per record: t, 13 per body, 3 energies, 6 momenta, 2 per element
-  const double per_record = 10.0 + 13.0 * static_cast<double>(bodies) + 2.0 * static_cast<double>(elements);
+  // per record: t, 20 per body (state 13, pivot reaction 3, H_O 3, mass 1), 3 energies, 6 momenta,
+  // 2 per element
+  const double per_record = 10.0 + 20.0 * static_cast<double>(bodies) + 2.0 * static_cast<double>(elements);
   check_recording_fits(records * per_record * sizeof(double), steps, record_every);
   SceneSimulation out;
   out.body_count = static_cast<std::int64_t>(bodies);
@@ -70,8 +70,11 @@ SceneSimulation reserved_scene_simulation(std::int64_t steps, std::int64_t recor
   const auto n = static_cast<std::size_t>(records);
   for (auto* v : {&out.t, &out.kinetic_energy, &out.potential_energy, &out.total_energy}) v->reserve(n);
   for (auto* v : {&out.linear_momentum_W, &out.angular_momentum_W}) v->reserve(3 * n);
-  for (auto* v : {&out.p_W, &out.v_W, &out.w_B}) v->reserve(3 * bodies * n);
+  for (auto* v : {&out.p_W, &out.v_W, &out.w_B, &out.pivot_reaction_W, &out.angular_momentum_O_W}) {
+    v->reserve(3 * bodies * n);
+  }
   out.q_WB.reserve(4 * bodies * n);
+  out.mass.reserve(bodies * n);
   for (auto* v : {&out.work, &out.power}) v->reserve(elements * n);
   return out;
 }
@@ -85,14 +88,9 @@ Trajectory one_body_trajectory(const Body& body, const BodyState& initial, const
   SimulationOptions one = o;
   one.gravity_W = plan.gravity_W;
   one.loads = plan.loads;
-  return std::visit(
-      [&](const auto& b) -> Trajectory {
-        using B = std::decay_t<decltype(b)>;
-        using State = std::conditional_t<std::is_same_v<B, Particle>, ParticleState,
-                                         std::conditional_t<std::is_same_v<B, PlanarBody>, PlanarBodyState, RigidBodyState>>;
-        return simulate(b, std::get<State>(initial), one);
-      },
-      body);
+  if (const auto* p = std::get_if<Particle>(&body)) return simulate(*p, std::get<ParticleState>(initial), one);
+  if (const auto* s = std::get_if<PlanarBody>(&body)) return simulate(*s, std::get<PlanarBodyState>(initial), one);
+  return simulate(std::get<RigidBody>(body), std::get<RigidBodyState>(initial), one);
 }
 
 // The one-body path's records as a SceneSimulation: the states and energies as today's simulate
@@ -116,6 +114,7 @@ SceneSimulation one_body_simulation(const CompiledScene& compiled, const std::ve
   std::optional<ScheduledLoadsTerm> loads;
   if (plan.loads_element >= 0) loads = std::get<ScheduledLoadsTerm>(terms[plan.loads_element]);
   std::vector<BodyKinematics> k(1);
+  k[0].m = m;
   std::vector<BodyWrench> w(1);
   double V0 = 0.0;
   for (std::size_t r = 0; r < n; ++r) {
@@ -126,9 +125,12 @@ SceneSimulation one_body_simulation(const CompiledScene& compiled, const std::ve
     const double V = gravity ? gravity->potential(k) : 0.0;
     if (r == 0) V0 = V;
     out.potential_energy.push_back(V);
-    const Eigen::Vector3d L = m * k[0].v_W, H = k[0].p_W.cross(L) + k[0].q_WB * (I * k[0].w_B);
+    const Eigen::Vector3d L = m * k[0].v_W, H_C = k[0].q_WB * (I * k[0].w_B), H = k[0].p_W.cross(L) + H_C;
     out.linear_momentum_W.insert(out.linear_momentum_W.end(), L.data(), L.data() + 3);
     out.angular_momentum_W.insert(out.angular_momentum_W.end(), H.data(), H.data() + 3);
+    out.pivot_reaction_W.insert(out.pivot_reaction_W.end(), 3, 0.0);  // no pivot
+    out.angular_momentum_O_W.insert(out.angular_momentum_O_W.end(), H_C.data(), H_C.data() + 3);
+    out.mass.push_back(m);
     double gravity_power = 0.0, loads_power = 0.0;
     if (gravity) gravity_power = gravity->add_wrenches(tr.t[r], k, w);
     if (loads) {
@@ -150,9 +152,18 @@ SceneSimulation one_body_simulation(const CompiledScene& compiled, const std::ve
 SceneSimulation simulate(const CompiledScene& compiled, const std::vector<BodyState>& initial, const SimulationOptions& o) {
   const std::vector<BodyState> states =
       detail::checked_scene_input(compiled.scene(), compiled.method(), initial, o, true, "initial");
+  detail::check_masses_over_run(compiled.scene(), o, o.steps);
   if (compiled.one_body_path()) return one_body_simulation(compiled, states, o);
-  const SceneModel& model = compiled.model();
-  return detail::run_scene(model, model.coordinates(states, o.t0), o, compiled.switch_schedule());
+  return std::visit(
+      [&](const auto& fast) {
+        if constexpr (std::is_same_v<std::decay_t<decltype(fast)>, std::monostate>) {
+          const SceneModel& model = compiled.model();
+          return detail::run_scene(model, model.coordinates(states, o.t0), o, compiled.switch_schedule());
+        } else {
+          return detail::run_scene(fast, fast.coordinates(states, o.t0), o, compiled.switch_schedule());
+        }
+      },
+      compiled.fast_model());
 }
 
 SceneSimulation simulate(const Scene& scene, const std::vector<BodyState>& initial, const SimulationOptions& options) {

@@ -1,8 +1,11 @@
-// The bodies of a scene (scene_api.md §2): one of today's body kinds each, with the helpers that force
-// elements need to read their mass properties and to check the body indices they are given.
+// The bodies of a scene (scene_api.md §2, api12.md §2): one body kind each, with the helpers that force
+// elements need to read their mass properties and to check the body indices they are given. "W" is the
+// scene frame: W itself when the scene declares no moving frame, else F (states are relative to it).
 #pragma once
 #include "rigiddyn/check.hpp"
 #include "rigiddyn/models/particle.hpp"
+#include "rigiddyn/models/pivoted_body.hpp"
+#include "rigiddyn/models/pivoted_planar_body.hpp"
 #include "rigiddyn/models/planar_body.hpp"
 #include "rigiddyn/models/rigid_body.hpp"
 #include "rigiddyn/scene/body_kinematics.hpp"
@@ -11,17 +14,19 @@
 #include <Eigen/Geometry>
 
 #include <string>
+#include <stdexcept>
 #include <type_traits>
 #include <variant>
 #include <vector>
 
 namespace rigiddyn {
 
-// A body of a scene: a particle (3 DOF, no attitude), a planar body (x, y, θ in W's xy plane) or a
-// spatial rigid body (6 DOF).
-using Body = std::variant<Particle, PlanarBody, RigidBody>;
+// A body of a scene: a particle (3 DOF, no attitude), a planar body (x, y, θ in W's xy plane), a
+// spatial rigid body (6 DOF), a rigid body pinned at a point O fixed in W (3 rotational DOF) or a planar
+// body pinned at O (the compound pendulum, θ about z).
+using Body = std::variant<Particle, PlanarBody, RigidBody, PivotedBody, PivotedPlanarBody>;
 // The state of a body of the matching kind (same alternative index as its Body).
-using BodyState = std::variant<ParticleState, PlanarBodyState, RigidBodyState>;
+using BodyState = std::variant<ParticleState, PlanarBodyState, RigidBodyState, PivotedBodyState, PivotedPlanarBodyState>;
 // Indices into a scene's bodies that an element acts on; empty means every body.
 using BodyList = std::vector<int>;
 
@@ -31,17 +36,18 @@ inline double mass_of(const Body& body) {
 }
 
 // The rotational inertia about the centre of mass, expressed in B [kg m²]:
-//   particle      zero (a point mass has none);
-//   planar body   diag(0, 0, I_zz): the only moment a planar body carries; its in-plane moments are
-//                 unknown and taken as zero (an element that needs them must refuse planar bodies);
-//   rigid body    inertia_com().
+//   particle                    zero (a point mass has none);
+//   planar body (also pinned)   diag(0, 0, I_zz): the only moment a planar body carries; its in-plane
+//                               moments are unknown and taken as zero (an element that needs them must
+//                               refuse planar bodies);
+//   rigid body (also pinned)    inertia_com(), about the centre of mass (not the pivot's I_O).
 inline Eigen::Matrix3d inertia_com_of(const Body& body) {
   return std::visit(
       [](const auto& b) -> Eigen::Matrix3d {
         using T = std::decay_t<decltype(b)>;
-        if constexpr (std::is_same_v<T, RigidBody>) {
+        if constexpr (std::is_same_v<T, RigidBody> || std::is_same_v<T, PivotedBody>) {
           return b.inertia_com();
-        } else if constexpr (std::is_same_v<T, PlanarBody>) {
+        } else if constexpr (std::is_same_v<T, PlanarBody> || std::is_same_v<T, PivotedPlanarBody>) {
           return Eigen::Vector3d(0.0, 0.0, b.inertia_zz()).asDiagonal();
         } else {
           return Eigen::Matrix3d::Zero();
@@ -50,13 +56,34 @@ inline Eigen::Matrix3d inertia_com_of(const Body& body) {
       body);
 }
 
-// True for a body with an attitude that forces can turn (planar and rigid bodies), false for a particle.
+// True for a body with an attitude that forces can turn (every kind but the particle).
 inline bool has_attitude(const Body& body) { return !std::holds_alternative<Particle>(body); }
 
-// A short name of the body's kind for messages: "particle", "planar body" or "rigid body".
+// True for a body that moves in W's xy plane (planar bodies, free or pinned): forces keep their x, y
+// parts and torques their z part (the plane takes the rest).
+inline bool is_planar(const Body& body) {
+  return std::holds_alternative<PlanarBody>(body) || std::holds_alternative<PivotedPlanarBody>(body);
+}
+
+// True for a body pinned at a point O fixed in W (PivotedBody, PivotedPlanarBody).
+inline bool is_pivoted(const Body& body) {
+  return std::holds_alternative<PivotedBody>(body) || std::holds_alternative<PivotedPlanarBody>(body);
+}
+
+// A short name of the body's kind for messages: "particle", "planar body", "rigid body", "pivoted body"
+// or "pivoted planar body".
 inline const char* kind_name(const Body& body) {
-  static constexpr const char* names[] = {"particle", "planar body", "rigid body"};
+  static constexpr const char* names[] = {"particle", "planar body", "rigid body", "pivoted body", "pivoted planar body"};
+  static_assert(std::variant_size_v<Body> == sizeof names / sizeof names[0], "a name per body kind");
   return names[body.index()];
+}
+
+// The name of the state type of each body kind for messages ("ParticleState", ...).
+inline const char* state_type_name(std::size_t kind) {
+  static constexpr const char* names[] = {"ParticleState", "PlanarBodyState", "RigidBodyState", "PivotedBodyState",
+                                          "PivotedPlanarBodyState"};
+  static_assert(std::variant_size_v<BodyState> == sizeof names / sizeof names[0], "a name per state type");
+  return names[kind];
 }
 
 // Throws std::invalid_argument "<name>: expected a body index in [0, n_bodies), got i" unless
@@ -65,14 +92,19 @@ inline void check_body_index(int i, int n_bodies, const std::string& name) {
   if (i < 0 || i >= n_bodies) throw_invalid(name, "a body index in [0, " + std::to_string(n_bodies) + ")", i);
 }
 
-// The kinematics an element sees of a body in `state` (body_kinematics.hpp): a particle has q_WB =
-// identity and w_B = 0; a planar body p_W = (x, y, 0), q_WB = Rz(θ), v_W = (v_x, v_y, 0), w_B = (0, 0, ω).
+// The kinematics an element sees of a free body in `state` (body_kinematics.hpp), without its mass
+// (k.m = 0; kinematics_of(body, state) sets it): a particle has q_WB = identity and w_B = 0; a planar body
+// p_W = (x, y, 0), q_WB = Rz(θ), v_W = (v_x, v_y, 0), w_B = (0, 0, ω). A pinned body's kinematics need the
+// body (its pivot): std::invalid_argument "state: ..." for a pivoted state.
 inline BodyKinematics kinematics_of(const BodyState& state) {
   return std::visit(
       [](const auto& s) {
         using T = std::decay_t<decltype(s)>;
         BodyKinematics k;
-        if constexpr (std::is_same_v<T, RigidBodyState>) {
+        if constexpr (std::is_same_v<T, PivotedBodyState> || std::is_same_v<T, PivotedPlanarBodyState>) {
+          throw std::invalid_argument("state: expected the state of a free body (a pinned body's kinematics "
+                                      "need its pivot: use kinematics_of(body, state)), got a pivoted state");
+        } else if constexpr (std::is_same_v<T, RigidBodyState>) {
           k.p_W = s.p_W, k.q_WB = s.q_WB, k.v_W = s.v_W, k.w_B = s.w_B;
         } else if constexpr (std::is_same_v<T, PlanarBodyState>) {
           k.p_W << s.p_W, 0.0;
@@ -85,6 +117,16 @@ inline BodyKinematics kinematics_of(const BodyState& state) {
         return k;
       },
       state);
+}
+
+// The kinematics an element sees of `body` in `state` (of its kind), with its (initial) mass k.m [kg];
+// a pinned body at its centre of mass (models/pivoted_body.hpp, pivoted_planar_body.hpp).
+inline BodyKinematics kinematics_of(const Body& body, const BodyState& state) {
+  if (const auto* b = std::get_if<PivotedBody>(&body)) return kinematics_of(*b, std::get<PivotedBodyState>(state));
+  if (const auto* b = std::get_if<PivotedPlanarBody>(&body)) return kinematics_of(*b, std::get<PivotedPlanarBodyState>(state));
+  BodyKinematics k = kinematics_of(state);
+  k.m = mass_of(body);
+  return k;
 }
 
 }  // namespace rigiddyn

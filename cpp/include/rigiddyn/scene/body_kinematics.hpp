@@ -10,7 +10,11 @@ namespace rigiddyn {
 //   p_W   position of the centre of mass in W [m];
 //   q_WB  unit attitude quaternion, maps B coordinates to W (Hamilton, active);
 //   v_W   velocity of the centre of mass, expressed in W [m/s];
-//   w_B   angular velocity of B relative to W, expressed in B [rad/s].
+//   w_B   angular velocity of B relative to W, expressed in B [rad/s];
+//   m     the body's mass now [kg] (set by the model: constant, or the mass coordinate of a body with a
+//         MassFlow); elements whose force scales with the mass read it here, never a copy.
+// "W" is the scene frame (api12.md §0): W itself when the scene declares no moving frame, else F; the
+// kinematics are relative to it.
 // Each body kind as elements see it: particle q_WB = identity, w_B = 0; planar body p_W = (x, y, 0),
 // q_WB = Rz(θ), v_W = (v_x, v_y, 0), w_B = (0, 0, ω).
 struct BodyKinematics {
@@ -18,6 +22,7 @@ struct BodyKinematics {
   Eigen::Quaterniond q_WB = Eigen::Quaterniond::Identity();
   Eigen::Vector3d v_W = Eigen::Vector3d::Zero();
   Eigen::Vector3d w_B = Eigen::Vector3d::Zero();
+  double m = 0.0;
 };
 
 // The wrench on one body, reduced to its centre of mass:

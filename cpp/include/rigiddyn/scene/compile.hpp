@@ -1,15 +1,23 @@
-// Compiling a scene (issue 11, items 1 and 3): the scene is checked (bodies, names, every element's own
-// checks, the method's compatibility with it) and turned into an immutable CompiledScene that holds the
-// model whose derivative evaluates only the declared elements (SceneModel) — or, for exactly today's
-// problems (one body under at most one UniformGravity and one ScheduledLoads through the centre of mass),
-// the plan to run today's one-body models, bitwise as today's simulate.
+// Compiling a scene (issue 11, items 1 and 3; issue 12): the scene is checked (bodies, names, mass flows,
+// every element's own checks, the method's compatibility with it) and turned into an immutable
+// CompiledScene that holds the model whose derivative evaluates only the declared elements and the frame's
+// fictitious terms that are not identically zero (SceneModel) — or, for exactly today's problems (one body
+// under at most one UniformGravity and one ScheduledLoads through the centre of mass), the plan to run
+// today's one-body models, bitwise as today's simulate — and, for the one-body cases of issue 12 (a pivoted
+// body under gravity and loads; a particle in a frame turning at a constant rate; a variable-mass particle
+// with one thrust), a fast model with fixed-size coordinates (scene/fast/) that runs through the same loop
+// and records the same SceneSimulation.
 #pragma once
 #include "rigiddyn/integrators/method.hpp"
+#include "rigiddyn/scene/fast/pivoted_body_model.hpp"
+#include "rigiddyn/scene/fast/rotating_frame_particle_model.hpp"
+#include "rigiddyn/scene/fast/variable_mass_particle_model.hpp"
 #include "rigiddyn/scene/scene.hpp"
 #include "rigiddyn/scene/scene_model.hpp"
 
 #include <memory>
 #include <string>
+#include <variant>
 #include <vector>
 
 namespace rigiddyn {
@@ -30,6 +38,21 @@ struct OneBodyPlan {
   int loads_element = -1;
 };
 
+// The path simulate runs a compiled scene on.
+enum class ScenePath {
+  generic,                  // SceneModel, any scene
+  one_body,                 // today's one-body models (one_body_plan), bitwise today's simulate
+  pivoted_body,             // PivotedBodyModel<Euler>: one PivotedBody, inertial, gravity and loads at most
+  rotating_frame_particle,  // RotatingFrameParticleModel: one particle in a constant rotation, gravity at most
+  variable_mass_particle,   // VariableMassParticleModel: one particle, constant mass rate, one world thrust
+};
+// "generic", "one_body", "pivoted_body", "rotating_frame_particle", "variable_mass_particle"
+const char* scene_path_name(ScenePath path);
+
+// The fast one-body models of issue 12 (std::monostate: none).
+using FastSceneModel = std::variant<std::monostate, PivotedBodyModel<SphericalEuler>, PivotedBodyModel<PrincipalEuler>,
+                                    PivotedBodyModel<FullEuler>, RotatingFrameParticleModel, VariableMassParticleModel>;
+
 // A scene compiled for one method: immutable; cheap to copy (shares its parts).
 class CompiledScene {
  public:
@@ -46,6 +69,15 @@ class CompiledScene {
   const OneBodyPlan& one_body_plan() const { return plan_; }
   // Every load of every ScheduledLoads element: their t_start/t_end are the run's switch times.
   const std::vector<AppliedLoad>& switch_schedule() const { return switch_schedule_; }
+  // The path simulate runs (describe: which model runs the scene), and the fast model of the fast paths.
+  ScenePath path() const { return path_; }
+  const FastSceneModel& fast_model() const { return *fast_; }
+  // The compiled terms in the order of the work/power columns: the scene's elements ("elements[i]", their
+  // type "UniformGravity", ...), then the frame's fictitious terms that act ("frame.origin", "frame.euler",
+  // "frame.centrifugal", "frame.coriolis"; types "FrameOriginForce", "EulerForce", "CentrifugalForce",
+  // "CoriolisForce").
+  const std::vector<std::string>& element_names() const { return element_names_; }
+  const std::vector<std::string>& element_types() const { return element_types_; }
 
  private:
   friend CompiledScene compile_scene(const Scene& scene, Method method);
@@ -56,44 +88,75 @@ class CompiledScene {
   bool one_body_path_ = false;
   OneBodyPlan plan_;
   std::vector<AppliedLoad> switch_schedule_;
+  ScenePath path_ = ScenePath::generic;
+  std::shared_ptr<const FastSceneModel> fast_ = std::make_shared<const FastSceneModel>();
+  std::vector<std::string> element_names_, element_types_;
 };
 
 // Checks `scene` and compiles it for `method`. Throws std::invalid_argument "<field>: expected ..., got
 // ..." for: no bodies ("bodies"); body_names neither empty nor one per body, or a name used twice
-// ("body_names[i]"); an element's bad field ("elements[i].<field>", the element's own checks); and a
-// method that cannot run the scene ("method": 'exact' needs one torque-free body and no element).
-// Velocity-dependent elements under splitting_dlm, splitting_dlm_yoshida4 or exact_flow_kick compile
-// with a warning (warnings()).
+// ("body_names[i]"); mass_flows neither empty nor one per body ("mass_flows"), a bad flow or a flow on a
+// body that is not a particle or a rigid body ("mass_flows[i]"); an element's bad field
+// ("elements[i].<field>", the element's own checks: a Thrust on a body without a mass flow among them); a
+// GravityGradient on a body with a mass flow ("elements[i].bodies"); InertiaRule::function in a moving
+// frame ("mass_flows[i].inertia_rule"); and a method that cannot run the scene ("method": 'exact' needs one
+// torque-free body, no frame and no mass flow; the splitting methods need InertiaRule::scaled).
+// Warnings (warnings()): velocity-dependent elements under splitting_dlm, splitting_dlm_yoshida4 or
+// exact_flow_kick; a pivoted body whose inertia about O loses more than 6 digits of I_C.
 CompiledScene compile_scene(const Scene& scene, Method method);
 
 namespace detail {
 
-// The compiled terms of the scene's elements, named "elements[i]" in their messages, as alternatives of
-// the variant Term (BasicSceneModel<Extra...>::Term).
+// The fictitious terms of the scene's frame that are not identically zero, in the order frame.origin,
+// frame.euler, frame.centrifugal, frame.coriolis: none without a frame (or for a frame at rest); the
+// centrifugal and Coriolis terms for a constant rotation; all four for a general motion.
+struct FrameTermSet {
+  bool origin = false, euler = false, centrifugal = false, coriolis = false;
+};
+FrameTermSet frame_term_set(const Scene& scene);
+
+// The compiled terms of the scene's elements, named "elements[i]" in their messages, then the frame's
+// fictitious terms (frame_term_set), as alternatives of the variant Term (BasicSceneModel<Extra...>::Term).
 template <class Term>
 std::vector<Term> compile_terms(const Scene& scene) {
   std::vector<Term> terms;
-  terms.reserve(scene.elements.size());
+  terms.reserve(scene.elements.size() + 4);
   for (std::size_t i = 0; i < scene.elements.size(); ++i) {
     const std::string name = "elements[" + std::to_string(i) + "]";
     std::visit(
         [&](const auto& spec) {
           using Spec = std::decay_t<decltype(spec)>;
-          terms.emplace_back(typename TermOf<Spec>::type(spec, scene.bodies, name));
+          if constexpr (std::is_same_v<Spec, Thrust>) {
+            terms.emplace_back(ThrustTerm(spec, scene.bodies, scene.mass_flows, name));
+          } else {
+            terms.emplace_back(typename TermOf<Spec>::type(spec, scene.bodies, name));
+          }
         },
         scene.elements[i]);
   }
+  const FrameTermSet frame = frame_term_set(scene);
+  if (frame.origin) terms.emplace_back(FrameOriginTerm(*scene.frame, scene.bodies, "frame.origin"));
+  if (frame.euler) terms.emplace_back(EulerForceTerm(*scene.frame, scene.bodies, "frame.euler"));
+  if (frame.centrifugal) terms.emplace_back(CentrifugalTerm(*scene.frame, scene.bodies, "frame.centrifugal"));
+  if (frame.coriolis) terms.emplace_back(CoriolisTerm(*scene.frame, scene.bodies, "frame.coriolis"));
   return terms;
 }
+
+// The body names of the scene, one per body (body_name)
+std::vector<std::string> body_names_of(const Scene& scene);
 
 // The compatibility of `method` with an element of `traits` named `name` (type `type`): adds a warning
 // for a velocity-dependent element under a kick-based splitting.
 void check_compatibility(Method method, const ElementTraits& traits, const std::string& name, const std::string& type,
                          std::vector<std::string>& warnings);
 
-// Throws std::invalid_argument for 'exact' on anything but one body without elements (`extra_elements`:
-// the user's compiled-in forces besides the scene's elements).
+// Throws std::invalid_argument for 'exact' on anything but one torque-free body (`extra_elements`: the
+// user's compiled-in forces besides the scene's elements).
 void check_exact(const Scene& scene, Method method, std::size_t extra_elements);
+
+// The checks of the scene's bodies, names and mass flows, and of the method against them (compile_scene's
+// list above, but the elements' own checks).
+void check_scene(const Scene& scene, Method method);
 
 }  // namespace detail
 

@@ -10,7 +10,10 @@ namespace rigiddyn {
 // Records of a scene run, one row per recorded step, row-major (n = size() records, nb = body_count
 // bodies, ne = element_count elements). Bodies of every kind in the rigid-body layout: a particle has
 // q_WB = identity and w_B = 0, a planar body p_W = (x, y, 0), q_WB = Rz(θ), v_W = (v_x, v_y, 0),
-// w_B = (0, 0, ω).
+// w_B = (0, 0, ω); a pivoted body its centre of mass p_W = p_WO + R_WB p_OC_B and v_W = R_WB (ω × p_OC_B).
+// "W" is the scene frame (api12.md §0): W itself when the scene declares no moving frame, else F, and
+// every record is relative to it (kinetic energy included; the potential includes the centrifugal one
+// of a frame turning at a constant rate, so that total_energy is then the Jacobi integral).
 struct SceneSimulation {
   std::int64_t body_count = 0;
   std::int64_t element_count = 0;
@@ -24,6 +27,10 @@ struct SceneSimulation {
   std::vector<double> total_energy;       // (n,) kinetic + potential [J]
   std::vector<double> linear_momentum_W;  // (n, 3) Σ m v_W [kg m/s]
   std::vector<double> angular_momentum_W; // (n, 3) about W's origin: Σ p_W × m v_W + R_WB I ω_B [kg m²/s]
+  std::vector<double> pivot_reaction_W;   // (n, nb, 3) the pivot's force on each body in W [N] (0 unpinned)
+  std::vector<double> angular_momentum_O_W;  // (n, nb, 3) each body's H about its pivot O (about its
+                                          // centre of mass when unpinned), in W [kg m²/s]
+  std::vector<double> mass;               // (n, nb) each body's mass [kg]
   std::vector<double> work;               // (n, ne) each element's work since t0 [J]
   std::vector<double> power;              // (n, ne) each element's power at the record [W]
   bool diverged = false;                  // the state became non-finite; the run stopped there
@@ -34,11 +41,12 @@ struct SceneSimulation {
   std::size_t size() const { return t.size(); }
 };
 
-// The state of a scene after `step`: the time t [s], each body's state (the kind of its body) and each
-// element's work over the step [J].
+// The state of a scene after `step`: the time t [s], each body's state (the kind of its body), each
+// body's mass [kg] (its mass flow's result for a body with one) and each element's work over the step [J].
 struct SceneState {
   double t = 0.0;
   std::vector<BodyState> bodies;
+  std::vector<double> mass;
   std::vector<double> work;
 };
 

@@ -48,9 +48,10 @@ template <class... F>
 SceneSimulation simulate(const Scene& scene, const std::vector<BodyState>& initial, const SimulationOptions& options,
                          const CustomForce<F>&... custom);
 
-// The record hook of the run loop (simulate/run_loop.hpp, found by argument-dependent lookup).
-template <class... Extra>
-void append_state(SceneSimulation& out, double t, const BasicSceneModel<Extra...>& model, const Eigen::VectorXd& y) {
+// The record hook of the run loop (simulate/run_loop.hpp, found by argument-dependent lookup): any scene
+// model (SceneModel, the fast models of scene/fast/) records itself.
+template <class Model>
+void append_state(SceneSimulation& out, double t, const Model& model, const typename Model::Coordinates& y) {
   model.record(y, t, out);
 }
 
@@ -63,7 +64,8 @@ struct ScenePieces {
   Eigen::Index time_index;
   template <class Model>
   void set_piece(Model& model, double t) const { model.set_time(t); }
-  void at_time(Eigen::VectorXd& y, double t) const { y[time_index] = t; }
+  template <class Coordinates>
+  void at_time(Coordinates& y, double t) const { y[time_index] = t; }
 };
 
 // The checks of simulate/step on the options and the initial states (see simulate above); returns the
@@ -76,9 +78,13 @@ std::vector<BodyState> checked_scene_input(const Scene& scene, Method compiled_m
 SceneSimulation reserved_scene_simulation(std::int64_t steps, std::int64_t record_every, std::size_t bodies,
                                           std::size_t elements);
 
-// run_loop.hpp's run of options.method on `model` from y.
+// The up-front check of each constant mass rate against the run's steps and dt (check_mass_over_run,
+// naming `steps`/`dt`): std::invalid_argument when a body runs out of mass within the run.
+void check_masses_over_run(const Scene& scene, const SimulationOptions& options, std::int64_t steps);
+
+// run_loop.hpp's run of options.method on `model` (SceneModel or a fast model: any Coordinates) from y.
 template <class Model>
-SceneSimulation run_scene(const Model& model, const Eigen::VectorXd& y, const SimulationOptions& o,
+SceneSimulation run_scene(const Model& model, const typename Model::Coordinates& y, const SimulationOptions& o,
                           const std::vector<AppliedLoad>& switch_schedule) {
   SceneSimulation out = reserved_scene_simulation(o.steps, o.record_every, model.body_count(), model.element_count());
   return visit_method(o.method, [&](auto integrator) {
@@ -94,11 +100,12 @@ SceneSimulation simulate(const Scene& scene, const std::vector<BodyState>& initi
   detail::check_exact(scene, options.method, sizeof...(F));
   const CompiledScene compiled = compile_scene(scene, options.method);
   const std::vector<BodyState> states = detail::checked_scene_input(scene, options.method, initial, options, true, "initial");
+  detail::check_masses_over_run(scene, options, options.steps);
   using Model = BasicSceneModel<CustomForceTerm<F>...>;
   std::vector<typename Model::Term> terms = detail::compile_terms<typename Model::Term>(scene);
   std::size_t k = 0;
   (terms.emplace_back(CustomForceTerm<F>(custom, scene.bodies, "custom_forces[" + std::to_string(k++) + "]")), ...);
-  const Model model(scene.bodies, std::move(terms));
+  const Model model(scene.bodies, std::move(terms), scene.mass_flows, detail::body_names_of(scene));
   return detail::run_scene(model, model.coordinates(states, options.t0), options, compiled.switch_schedule());
 }
 

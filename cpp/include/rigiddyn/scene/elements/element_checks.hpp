@@ -17,14 +17,14 @@ inline void require_nonnegative(double value, const std::string& name) {
 }
 
 // A point of `body` given in its frame B, from its centre of mass [m]: finite; zero on a particle (a
-// point mass has no attitude to carry an offset); in the body's xy plane (z = 0) on a planar body (as
-// scheduled loads' point_B).
+// point mass has no attitude to carry an offset); in the body's xy plane (z = 0) on a planar body, free
+// or pinned (as scheduled loads' point_B).
 inline void require_body_point(const Body& body, const Eigen::Vector3d& point_B, const std::string& name) {
   require_finite(point_B, name);
   if (std::holds_alternative<Particle>(body) && !point_B.isZero(0.0)) {
     throw_invalid(name, "zero (a particle is a point)", point_B);
   }
-  if (std::holds_alternative<PlanarBody>(body) && point_B.z() != 0.0) {
+  if (is_planar(body) && point_B.z() != 0.0) {
     throw_invalid(name, "a point in the body's xy plane (z = 0)", point_B);
   }
 }

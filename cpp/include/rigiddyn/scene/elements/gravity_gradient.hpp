@@ -15,7 +15,8 @@
 //   conjugate to w_B): r_B → r_B + r_B × δθ, δs = 2 (I r_B)·(r_B × δθ) = 2 δθ·((I r_B) × r_B), so
 //     tau_B = 3GM/|r|⁵ r_B × (I r_B).
 // The element is conservative: f_W·v_W + tau_B·w_B = −dV₂/dt, so T + V is conserved with it.
-// Particles have I = 0 and feel nothing (they are skipped). A planar body is refused: its in-plane moments
+// Particles have I = 0 and feel nothing (they are skipped). A pinned rigid body feels the same wrench at
+// its centre of mass (the model reduces it to the pivot). A planar body (free or pinned) is refused: its in-plane moments
 // I_xx, I_yy, which the in-plane torque needs, are not part of it. Singular at the attractor (r = 0).
 #pragma once
 #include "rigiddyn/check.hpp"
@@ -53,15 +54,15 @@ class GravityGradientTerm {
     require_positive(spec.gm, name + ".gm");
     require_finite(spec.p_W, name + ".p_W");
     for (const int b : detail::resolve_bodies(spec.bodies, bodies.size(), name)) {
-      if (std::holds_alternative<PlanarBody>(bodies[b])) {
+      if (is_planar(bodies[b])) {
         throw_invalid(name + ".bodies",
                       "particles or rigid bodies (a planar body has no in-plane moments I_xx, I_yy, which the "
                       "gravity-gradient torque needs)",
                       "planar body " + std::to_string(b));
       }
-      if (const auto* rigid = std::get_if<RigidBody>(&bodies[b])) {
+      if (std::holds_alternative<RigidBody>(bodies[b]) || std::holds_alternative<PivotedBody>(bodies[b])) {
         bodies_.push_back(b);
-        inertia_com_.push_back(rigid->inertia_com());
+        inertia_com_.push_back(inertia_com_of(bodies[b]));  // about the centre of mass, also when pinned
       }
     }
   }

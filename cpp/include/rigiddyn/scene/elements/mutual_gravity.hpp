@@ -29,7 +29,8 @@ struct MutualGravity {
   BodyList bodies;
 };
 
-// The compiled term (scene_api.md §2): the listed bodies and their masses.
+// The compiled term (scene_api.md §2): the listed bodies (their masses read from the kinematics, k.m, with
+// the positions).
 class MutualGravityTerm {
  public:
   // Throws std::invalid_argument "<name>.G: ..." unless G is finite and > 0, "<name>.softening: ..."
@@ -39,8 +40,6 @@ class MutualGravityTerm {
         bodies_(detail::resolve_bodies(spec.bodies, bodies.size(), name)) {
     require_positive(spec.G, name + ".G");
     detail::require_nonnegative(spec.softening, name + ".softening");
-    mass_.resize(static_cast<Eigen::Index>(bodies_.size()));
-    for (std::size_t k = 0; k < bodies_.size(); ++k) mass_(k) = mass_of(bodies[bodies_[k]]);
   }
 
   static ElementTraits traits() {
@@ -58,13 +57,10 @@ class MutualGravityTerm {
   // per evaluation, and two threads evaluating one model do not share it.
   double add_wrenches(double /*t*/, const std::vector<BodyKinematics>& kinematics, std::vector<BodyWrench>& wrenches) const {
     const Eigen::Index n = static_cast<Eigen::Index>(bodies_.size());
-    Eigen::ArrayXXd& columns = scratch(n);  // (n x 7): x, y, z, f_x, f_y, f_z, g
+    Eigen::ArrayXXd& columns = scratch(n);  // (n x 8): x, y, z, f_x, f_y, f_z, g, m
     auto x = columns.col(0), y = columns.col(1), z = columns.col(2);
-    auto f_x = columns.col(3), f_y = columns.col(4), f_z = columns.col(5), g = columns.col(6);
-    for (Eigen::Index i = 0; i < n; ++i) {
-      const Eigen::Vector3d& p = kinematics[bodies_[i]].p_W;
-      x(i) = p.x(), y(i) = p.y(), z(i) = p.z();
-    }
+    auto f_x = columns.col(3), f_y = columns.col(4), f_z = columns.col(5), g = columns.col(6), mass = columns.col(7);
+    gather(kinematics, columns);
     columns.block(0, 3, n, 3).setZero();  // only this scene's n rows (the scratch may be longer)
     for (Eigen::Index i = 0; i + 1 < n; ++i) {
       // the pairs (i, j > i): d = p_j − p_i, g = G m_i m_j/(|d|² + ε²)^{3/2}, f on i = g d = −f on j
@@ -74,7 +70,7 @@ class MutualGravityTerm {
       const auto dz = z.segment(j, count) - z(i);
       auto g_j = g.segment(j, count);
       g_j = dx.square() + dy.square() + dz.square() + softening2_;                  // |d|² + ε²
-      g_j = (G_ * mass_(i)) * mass_.segment(j, count) / (g_j * g_j.sqrt());
+      g_j = (G_ * mass(i)) * mass.segment(j, count) / (g_j * g_j.sqrt());
       f_x(i) += (g_j * dx).sum(), f_x.segment(j, count) -= g_j * dx;
       f_y(i) += (g_j * dy).sum(), f_y.segment(j, count) -= g_j * dy;
       f_z(i) += (g_j * dz).sum(), f_z.segment(j, count) -= g_j * dz;
@@ -92,18 +88,15 @@ class MutualGravityTerm {
   double potential(const std::vector<BodyKinematics>& kinematics) const {
     const Eigen::Index n = static_cast<Eigen::Index>(bodies_.size());
     Eigen::ArrayXXd& columns = scratch(n);
-    auto x = columns.col(0), y = columns.col(1), z = columns.col(2), r = columns.col(6);
-    for (Eigen::Index i = 0; i < n; ++i) {
-      const Eigen::Vector3d& p = kinematics[bodies_[i]].p_W;
-      x(i) = p.x(), y(i) = p.y(), z(i) = p.z();
-    }
+    auto x = columns.col(0), y = columns.col(1), z = columns.col(2), r = columns.col(6), mass = columns.col(7);
+    gather(kinematics, columns);
     double V = 0.0;
     for (Eigen::Index i = 0; i + 1 < n; ++i) {
       const Eigen::Index j = i + 1, count = n - j;
       auto r_j = r.segment(j, count);
       r_j = ((x.segment(j, count) - x(i)).square() + (y.segment(j, count) - y(i)).square() +
              (z.segment(j, count) - z(i)).square() + softening2_).sqrt();  // √(|d|² + ε²)
-      V -= G_ * mass_(i) * (mass_.segment(j, count) / r_j).sum();
+      V -= G_ * mass(i) * (mass.segment(j, count) / r_j).sum();
     }
     return V;
   }
@@ -114,14 +107,21 @@ class MutualGravityTerm {
   // this thread's scratch columns, at least n rows (grown, never shrunk)
   static Eigen::ArrayXXd& scratch(Eigen::Index n) {
     thread_local Eigen::ArrayXXd columns;
-    if (columns.rows() < n) columns.resize(n, 7);
+    if (columns.rows() < n) columns.resize(n, 8);
     return columns;
+  }
+
+  // the listed bodies' positions into columns 0-2 and masses into column 7
+  void gather(const std::vector<BodyKinematics>& kinematics, Eigen::ArrayXXd& columns) const {
+    for (Eigen::Index i = 0; i < static_cast<Eigen::Index>(bodies_.size()); ++i) {
+      const BodyKinematics& k = kinematics[bodies_[i]];
+      columns(i, 0) = k.p_W.x(), columns(i, 1) = k.p_W.y(), columns(i, 2) = k.p_W.z(), columns(i, 7) = k.m;
+    }
   }
 
   double G_;                   // [m³/(kg s²)]
   double softening2_;          // ε² [m²]
   std::vector<int> bodies_;
-  Eigen::ArrayXd mass_;        // [kg], per listed body
 };
 
 }  // namespace rigiddyn

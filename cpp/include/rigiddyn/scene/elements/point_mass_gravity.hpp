@@ -29,19 +29,18 @@ struct PointMassGravity {
   BodyList bodies;
 };
 
-// The compiled term (scene_api.md §2): the listed bodies with GM m for each.
+// The compiled term (scene_api.md §2): the listed bodies (their masses read from the kinematics, k.m).
 class PointMassGravityTerm {
  public:
   // Throws std::invalid_argument "<name>.gm: ..." unless gm is finite and > 0, "<name>.p_W: ..." for a
   // non-finite p_W, "<name>.softening: ..." unless finite and >= 0, "<name>.bodies[k]: ..." for an index
   // out of range or repeated.
   PointMassGravityTerm(const PointMassGravity& spec, const std::vector<Body>& bodies, const std::string& name)
-      : p_W_(spec.p_W), softening2_(spec.softening * spec.softening),
+      : gm_(spec.gm), p_W_(spec.p_W), softening2_(spec.softening * spec.softening),
         bodies_(detail::resolve_bodies(spec.bodies, bodies.size(), name)) {
     require_positive(spec.gm, name + ".gm");
     require_finite(spec.p_W, name + ".p_W");
     detail::require_nonnegative(spec.softening, name + ".softening");
-    for (const int b : bodies_) gm_m_.push_back(spec.gm * mass_of(bodies[b]));
   }
 
   static ElementTraits traits() {
@@ -58,7 +57,7 @@ class PointMassGravityTerm {
       const BodyKinematics& body = kinematics[bodies_[k]];
       const Eigen::Vector3d r = body.p_W - p_W_;
       const double s2 = r.squaredNorm() + softening2_;
-      const Eigen::Vector3d f = (-gm_m_[k] / (s2 * std::sqrt(s2))) * r;
+      const Eigen::Vector3d f = (-(gm_ * body.m) / (s2 * std::sqrt(s2))) * r;
       wrenches[bodies_[k]].f_W += f;
       power += f.dot(body.v_W);
     }
@@ -68,8 +67,8 @@ class PointMassGravityTerm {
   // V = −Σ GM m / √(|r|²+ε²) [J]
   double potential(const std::vector<BodyKinematics>& kinematics) const {
     double V = 0.0;
-    for (std::size_t k = 0; k < bodies_.size(); ++k) {
-      V -= gm_m_[k] / std::sqrt((kinematics[bodies_[k]].p_W - p_W_).squaredNorm() + softening2_);
+    for (const int b : bodies_) {
+      V -= gm_ * kinematics[b].m / std::sqrt((kinematics[b].p_W - p_W_).squaredNorm() + softening2_);
     }
     return V;
   }
@@ -77,10 +76,10 @@ class PointMassGravityTerm {
   const std::vector<int>& bodies() const { return bodies_; }
 
  private:
+  double gm_;                 // GM [m³/s²]
   Eigen::Vector3d p_W_;
   double softening2_;         // ε² [m²]
   std::vector<int> bodies_;
-  std::vector<double> gm_m_;  // GM m [m³ kg/s²], per listed body
 };
 
 }  // namespace rigiddyn

@@ -98,7 +98,7 @@ class ScheduledLoadsTerm {
         }
       }
       if (!point_B_.isZero(0.0)) throw_invalid(name + ".point_B", "zero (a particle is a point)", point_B_);
-    } else if (std::holds_alternative<PlanarBody>(body)) {
+    } else if (is_planar(body)) {
       for (std::size_t i = 0; i < schedule_.size(); ++i) {
         const std::string load = name + ".loads[" + std::to_string(i) + "]";
         if (schedule_[i].force.z() != 0.0) throw_invalid(load + ".force", "a force in the xy plane (z = 0)", schedule_[i].force);

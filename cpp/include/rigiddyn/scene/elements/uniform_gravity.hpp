@@ -20,7 +20,8 @@ struct UniformGravity {
   BodyList bodies;
 };
 
-// The compiled term (scene_api.md §2): the listed bodies with their masses.
+// The compiled term (scene_api.md §2): the listed bodies (their masses read from the kinematics, k.m, so
+// that a body with a MassFlow feels its mass now).
 class UniformGravityTerm {
  public:
   // Throws std::invalid_argument "<name>.g_W: ..." for a non-finite g_W and "<name>.bodies[k]: ..." for an
@@ -28,7 +29,6 @@ class UniformGravityTerm {
   UniformGravityTerm(const UniformGravity& spec, const std::vector<Body>& bodies, const std::string& name)
       : g_W_(spec.g_W), bodies_(detail::resolve_bodies(spec.bodies, bodies.size(), name)) {
     require_finite(spec.g_W, name + ".g_W");
-    for (const int b : bodies_) mass_.push_back(mass_of(bodies[b]));
   }
 
   static ElementTraits traits() {
@@ -43,7 +43,7 @@ class UniformGravityTerm {
     double power = 0.0;
     for (std::size_t k = 0; k < bodies_.size(); ++k) {
       const int b = bodies_[k];
-      const Eigen::Vector3d f = mass_[k] * g_W_;
+      const Eigen::Vector3d f = kinematics[b].m * g_W_;
       wrenches[b].f_W += f;
       power += f.dot(kinematics[b].v_W);
     }
@@ -53,7 +53,7 @@ class UniformGravityTerm {
   // V = −Σ m g_W·p_W [J]
   double potential(const std::vector<BodyKinematics>& kinematics) const {
     double V = 0.0;
-    for (std::size_t k = 0; k < bodies_.size(); ++k) V -= mass_[k] * g_W_.dot(kinematics[bodies_[k]].p_W);
+    for (const int b : bodies_) V -= kinematics[b].m * g_W_.dot(kinematics[b].p_W);
     return V;
   }
 
@@ -63,7 +63,6 @@ class UniformGravityTerm {
  private:
   Eigen::Vector3d g_W_;
   std::vector<int> bodies_;
-  std::vector<double> mass_;  // [kg], per listed body
 };
 
 }  // namespace rigiddyn

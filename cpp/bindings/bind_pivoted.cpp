@@ -1,0 +1,463 @@
+// Python bindings of the bodies about a fixed point (models/pivoted_body.hpp, pivoted_planar_body.hpp;
+// issue 12 item 1): PivotedBody (the heavy top, the gyroscope), PivotedPlanarBody (the compound pendulum),
+// their states, and their forward and inverse dynamics (dynamics/pivoted_body_dynamics.hpp) with the result
+// classes. forward_dynamics / inverse_dynamics (bind_bodies.cpp) and simulate / step (bind_dynamics.cpp)
+// route a pivoted body here (pivoted.hpp). "W" is the scene frame: W itself (inertial) for these functions.
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <type_traits>
+#include <utility>
+
+#include "common_args.hpp"
+#include "numpy_io.hpp"
+#include "pivoted.hpp"
+#include "python_run.hpp"
+#include "repr.hpp"
+#include "rigiddyn/check.hpp"
+#include "rigiddyn/dynamics/pivoted_body_dynamics.hpp"
+#include "rigiddyn/dynamics/planar_body_dynamics.hpp"
+#include "rigiddyn/scene/scene.hpp"
+#include "rigiddyn/so3/quaternion.hpp"
+#include "value_type.hpp"
+
+namespace rigiddyn::bindings {
+
+namespace py = pybind11;
+using py_io::Array;
+
+namespace {
+
+// ------------------------------------------------------------ conversions
+
+py::object list_of(const Eigen::Vector2d& v) { return py_io::to_array(v); }
+py::object list_of(const Eigen::Vector3d& v) { return py_io::to_array(v); }
+
+// A unit quaternion from `obj` (checked_unit_quaternion: ValueError naming `name` farther than 1e-6 from
+// unit norm), kept bit for bit when it is unit to round-off (4 eps) so that a state rebuilt from its repr
+// equals the original, normalised otherwise (as RigidBodyState does).
+Eigen::Quaterniond as_unit_quaternion(py::handle obj, const std::string& name, bool scalar_first) {
+  const Eigen::Quaterniond q = py_io::as_quaternion(obj, name, scalar_first);
+  const Eigen::Quaterniond unit = checked_unit_quaternion(q, name);
+  return std::abs(q.norm() - 1.0) <= 4 * std::numeric_limits<double>::epsilon() ? q : unit;
+}
+
+// N numbers of a pickled array, bit for bit (not checked finite: a state a diverged step returned pickles
+// as it is).
+template <int N>
+Eigen::Matrix<double, N, 1> unpickled(py::handle obj, const std::string& what) {
+  const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(obj);
+  if (!a || a.size() != N) py_io::throw_value_error(what, std::to_string(N) + " numbers", py_io::describe(obj));
+  return Eigen::Map<const Eigen::Matrix<double, N, 1>>(a.data());
+}
+
+Array read_only_quaternion(const Eigen::Quaterniond& q, bool scalar_first) {
+  Array out = py_io::to_array(q, scalar_first);
+  out.attr("flags").attr("writeable") = false;
+  return out;
+}
+
+template <class T, class Equal>
+void def_equality(py::class_<T>& cls, Equal equal) {
+  cls.def(
+      "__eq__", [equal](const T& a, py::handle b) { return equal_or_not_implemented(a, b, equal); }, py::arg("other"));
+  cls.attr("__hash__") = py::none();
+}
+
+const char* euler_form_name(EulerForm form) {
+  switch (form) {
+    case EulerForm::spherical: return "spherical";
+    case EulerForm::principal: return "principal";
+    case EulerForm::full: return "full";
+  }
+  return "full";
+}
+
+// A pivoted planar body's gravity: None (none) or an in-plane vector (2,) or (3,) [m/s^2] in W (its z part
+// is taken by the plane). True is refused: standard gravity (0, 0, -9.81) is normal to the plane.
+Eigen::Vector3d as_in_plane_gravity(py::handle obj) {
+  if (obj.is_none()) return Eigen::Vector3d::Zero();
+  constexpr const char* expected = "None or an in-plane vector (2,) or (3,) [m/s^2] in W for a PivotedPlanarBody "
+                                   "(True's (0, 0, -9.81) is normal to its plane)";
+  if (py::isinstance<py::bool_>(obj)) py_io::throw_value_error("gravity", expected, py_io::describe(obj));
+  const Array g = py_io::as_array(py_io::in_si(obj, "m/s^2", "gravity"), "gravity");
+  if (g.ndim() == 1 && g.shape(0) == 2) {
+    const Eigen::Vector2d g2 = py_io::as_vector2(g, "gravity");
+    return Eigen::Vector3d(g2.x(), g2.y(), 0.0);
+  }
+  if (g.ndim() == 1 && g.shape(0) == 3) return py_io::as_vector3(g, "gravity");
+  py_io::throw_value_error("gravity", expected, py_io::describe(obj));
+}
+
+// A state of the kind `State`, checked (finite, unit quaternion: ValueError naming state.<member>), else
+// TypeError naming `state`.
+template <class State>
+State checked_state_of(py::handle state, const char* model) {
+  constexpr const char* type = std::is_same_v<State, PivotedBodyState> ? "PivotedBodyState" : "PivotedPlanarBodyState";
+  const State& s = py_io::as_instance<State>(state, "state", std::string("a ") + type + " (the state of a " + model + ")");
+  return checked_state(s, "state");
+}
+
+// ------------------------------------------------------------ the bodies
+
+std::string pivoted_body_repr(const PivotedBody& b) {
+  return repr_call("PivotedBody", {{"body", py::cast(b.body())}, {"p_OC_B", list_of(b.p_OC_B())}, {"p_WO", list_of(b.p_WO())}});
+}
+
+PivotedBody make_pivoted_body(py::handle body, py::handle p_OC_B, py::handle p_WO) {
+  const RigidBody& b = py_io::as_instance<RigidBody>(body, "body", "a RigidBody (mass and inertia about the centre of mass)");
+  return PivotedBody(b, py_io::as_vector3(py_io::in_si(p_OC_B, "m", "p_OC_B"), "p_OC_B"),
+                     py_io::as_vector3_or_zero(py_io::in_si(p_WO, "m", "p_WO"), "p_WO"));
+}
+
+void bind_pivoted_body(py::module_& m) {
+  py::class_<PivotedBody> cls(
+      m, "PivotedBody",
+      "A rigid body pinned at a point O fixed in the scene frame W (3 rotational DOF): the heavy top, the gyroscope.\n"
+      "  PivotedBody(body, p_OC_B, p_WO=(0, 0, 0))\n"
+      "body: a RigidBody (mass [kg], inertia_com [kg m^2] about the centre of mass C in B); p_OC_B (3,): C relative to "
+      "O, in B [m] (zero allowed: the free rotation about C); p_WO (3,): O in W [m]; each a float array or a pint "
+      "quantity. B is the body frame at C as for RigidBody; C is at p_WO + R_WB p_OC_B. Euler's law is written about "
+      "O (Craig, \"Rigid Body Dynamics\" slides: M_O = dH_O/dt) with inertia_O = I_C + m (|c|^2 1 - c c^T), the "
+      "parallel-axis theorem with the products of inertia. digits_lost tells how many decimal digits of I_C the "
+      "rounding of inertia_O loses (the compile of a scene warns above 6); ValueError naming p_OC_B when inertia_O "
+      "is no longer positive definite in double precision. Immutable; pickles; == compares body, p_OC_B and p_WO.");
+  cls.def(py::init(&make_pivoted_body), py::arg("body"), py::arg("p_OC_B"), py::arg("p_WO") = py::none())
+      .def_property_readonly("body", [](const PivotedBody& b) { return b.body(); }, "the RigidBody (a copy)")
+      .def_property_readonly("mass", &PivotedBody::mass, "mass [kg]")
+      .def_property_readonly("inertia_com", [](const PivotedBody& b) { return py_io::read_only(b.inertia_com()); },
+                             "(3, 3) inertia about the centre of mass C, in B [kg m^2]")
+      .def_property_readonly("p_OC_B", [](const PivotedBody& b) { return py_io::read_only(b.p_OC_B()); },
+                             "(3,) the centre of mass C relative to the pivot O, in B [m]")
+      .def_property_readonly("p_WO", [](const PivotedBody& b) { return py_io::read_only(b.p_WO()); },
+                             "(3,) the pivot O in the scene frame W [m]")
+      .def_property_readonly("inertia_O", [](const PivotedBody& b) { return py_io::read_only(b.inertia_O()); },
+                             "(3, 3) inertia about O in B, I_C + m (|c|^2 1 - c c^T) [kg m^2]")
+      .def_property_readonly("digits_lost", &PivotedBody::digits_lost,
+                             "decimal digits of I_C lost in inertia_O: max(0, log10(m |c|^2 / smallest moment of I_C))")
+      .def_property_readonly("euler_form", [](const PivotedBody& b) { return euler_form_name(b.euler_form()); },
+                             "the form of Euler's equations of inertia_O: 'spherical', 'principal' or 'full'")
+      .def("__repr__", &pivoted_body_repr)
+      .def(py::pickle([](const PivotedBody& b) { return py::make_tuple(b.body(), list_of(b.p_OC_B()), list_of(b.p_WO())); },
+                      [](const py::tuple& t) {
+                        pickled_state(t, 3, "PivotedBody");
+                        return PivotedBody(py_io::as_instance<RigidBody>(t[0], "PivotedBody pickle body", "a RigidBody"),
+                                           unpickled<3>(t[1], "PivotedBody pickle p_OC_B"),
+                                           unpickled<3>(t[2], "PivotedBody pickle p_WO"));
+                      }));
+  def_equality(cls, [](const PivotedBody& a, const PivotedBody& b) {
+    return a.mass() == b.mass() && a.inertia_com() == b.inertia_com() && a.p_OC_B() == b.p_OC_B() && a.p_WO() == b.p_WO();
+  });
+
+  py::class_<PivotedPlanarBody> planar(
+      m, "PivotedPlanarBody",
+      "The compound pendulum: a planar body pinned at a point O fixed in the scene frame W, turning about W's z axis "
+      "(1 DOF, R_WB = Rz(theta)).\n"
+      "  PivotedPlanarBody(mass, inertia_zz, p_OC_B, p_WO=(0, 0))\n"
+      "mass [kg] > 0; inertia_zz [kg m^2] > 0 about the z axis through the centre of mass C; p_OC_B (2,): C relative "
+      "to O in B's xy plane [m] (zero allowed); p_WO (2,): O in W's xy plane [m]; each a float or a pint quantity. "
+      "Plane kinetics about O: inertia_O_zz alpha = tau_O, inertia_O_zz = inertia_zz + m |c|^2 (Craig, \"Rigid Body "
+      "Dynamics\" slides). Immutable; pickles; == compares every field.");
+  planar
+      .def(py::init([](py::handle mass, py::handle inertia_zz, py::handle p_OC_B, py::handle p_WO) {
+             return PivotedPlanarBody(py_io::as_scalar(py_io::in_si(mass, "kg", "mass"), "mass"),
+                                      py_io::as_scalar(py_io::in_si(inertia_zz, "kg*m^2", "inertia_zz"), "inertia_zz"),
+                                      py_io::as_vector2(py_io::in_si(p_OC_B, "m", "p_OC_B"), "p_OC_B"),
+                                      py_io::as_vector2_or_zero(py_io::in_si(p_WO, "m", "p_WO"), "p_WO"));
+           }),
+           py::arg("mass"), py::arg("inertia_zz"), py::arg("p_OC_B"), py::arg("p_WO") = py::none())
+      .def_property_readonly("mass", &PivotedPlanarBody::mass, "mass [kg]")
+      .def_property_readonly("inertia_zz", &PivotedPlanarBody::inertia_zz, "moment of inertia about z through C [kg m^2]")
+      .def_property_readonly("inertia_O_zz", &PivotedPlanarBody::inertia_O_zz,
+                             "moment of inertia about z through O, inertia_zz + m |c|^2 [kg m^2]")
+      .def_property_readonly("p_OC_B", [](const PivotedPlanarBody& b) { return py_io::read_only(b.p_OC_B()); },
+                             "(2,) C relative to O in B's xy plane [m]")
+      .def_property_readonly("p_WO", [](const PivotedPlanarBody& b) { return py_io::read_only(b.p_WO()); },
+                             "(2,) the pivot O in W's xy plane [m]")
+      .def("__repr__",
+           [](const PivotedPlanarBody& b) {
+             return repr_call("PivotedPlanarBody", {{"mass", py::float_(b.mass())},
+                                                    {"inertia_zz", py::float_(b.inertia_zz())},
+                                                    {"p_OC_B", list_of(b.p_OC_B())},
+                                                    {"p_WO", list_of(b.p_WO())}});
+           })
+      .def(py::pickle(
+          [](const PivotedPlanarBody& b) {
+            return py::make_tuple(b.mass(), b.inertia_zz(), list_of(b.p_OC_B()), list_of(b.p_WO()));
+          },
+          [](const py::tuple& t) {
+            pickled_state(t, 4, "PivotedPlanarBody");
+            return PivotedPlanarBody(t[0].cast<double>(), t[1].cast<double>(), unpickled<2>(t[2], "PivotedPlanarBody pickle p_OC_B"),
+                                     unpickled<2>(t[3], "PivotedPlanarBody pickle p_WO"));
+          }));
+  def_equality(planar, [](const PivotedPlanarBody& a, const PivotedPlanarBody& b) {
+    return a.mass() == b.mass() && a.inertia_zz() == b.inertia_zz() && a.p_OC_B() == b.p_OC_B() && a.p_WO() == b.p_WO();
+  });
+}
+
+// ------------------------------------------------------------ the states
+
+void bind_pivoted_states(py::module_& m) {
+  py::class_<PivotedBodyState> state(
+      m, "PivotedBodyState",
+      "State of a PivotedBody: q_WB (4,) unit quaternion B to the scene frame W, (x, y, z, w), or (w, x, y, z) with "
+      "scalar_first=True (None: identity); w_B (3,) angular velocity of B relative to W, in B [rad/s] (None: zero; "
+      "floats or a pint quantity). q_WB is normalised; ValueError if | |q| - 1 | > 1e-6. Fields are assigned whole "
+      "(s.w_B = [...], checked as here); their arrays are read-only.");
+  state
+      .def(py::init([](py::handle q_WB, py::handle w_B, py::handle scalar_first) {
+             const bool wxyz = py_io::as_bool(scalar_first, "scalar_first");
+             return PivotedBodyState{q_WB.is_none() ? Eigen::Quaterniond::Identity() : as_unit_quaternion(q_WB, "q_WB", wxyz),
+                                     py_io::as_vector3_or_zero(py_io::in_si(w_B, "rad/s", "w_B"), "w_B")};
+           }),
+           py::arg("q_WB") = py::none(), py::arg("w_B") = py::none(), py::arg("scalar_first") = false)
+      .def_property(
+          "q_WB", [](const PivotedBodyState& s) { return read_only_quaternion(s.q_WB, false); },
+          [](PivotedBodyState& s, py::handle v) { s.q_WB = as_unit_quaternion(v, "q_WB", false); },
+          "(4,) attitude (x, y, z, w), B to W; set from (x, y, z, w), normalised (ValueError beyond 1e-6 of unit norm)")
+      .def(
+          "quaternion",
+          [](const PivotedBodyState& s, py::handle scalar_first) {
+            return read_only_quaternion(s.q_WB, py_io::as_bool(scalar_first, "scalar_first"));
+          },
+          py::arg("scalar_first") = false, "q_WB (4,) as (x, y, z, w), or (w, x, y, z) with scalar_first=True")
+      .def_property(
+          "w_B", [](const PivotedBodyState& s) { return py_io::read_only(s.w_B); },
+          [](PivotedBodyState& s, py::handle v) { s.w_B = py_io::as_vector3(py_io::in_si(v, "rad/s", "w_B"), "w_B"); },
+          "(3,) angular velocity of B relative to W, expressed in B [rad/s]")
+      .def("__repr__",
+           [](const PivotedBodyState& s) {
+             return repr_call("PivotedBodyState",
+                              {{"q_WB", py::object(py_io::to_array(s.q_WB, false))}, {"w_B", list_of(s.w_B)}});
+           })
+      .def(py::pickle(
+          [](const PivotedBodyState& s) { return py::make_tuple(py_io::to_array(s.q_WB, false), list_of(s.w_B)); },
+          [](const py::tuple& t) {
+            pickled_state(t, 2, "PivotedBodyState");
+            const Eigen::Vector4d q = unpickled<4>(t[0], "PivotedBodyState pickle q_WB");
+            return PivotedBodyState{py_io::read_quaternion(q.data(), false), unpickled<3>(t[1], "PivotedBodyState pickle w_B")};
+          }));
+  def_equality(state, [](const PivotedBodyState& a, const PivotedBodyState& b) {
+    return a.q_WB.coeffs() == b.q_WB.coeffs() && a.w_B == b.w_B;
+  });
+
+  py::class_<PivotedPlanarBodyState> planar(
+      m, "PivotedPlanarBodyState",
+      "State of a PivotedPlanarBody: theta [rad], the angle of B about z (R_WB = Rz(theta)), and omega = d theta/dt "
+      "[rad/s]; each a float or a pint quantity. Fields are assignable (checked as here).");
+  planar
+      .def(py::init([](py::handle theta, py::handle omega) {
+             return PivotedPlanarBodyState{py_io::as_scalar(py_io::in_si(theta, "rad", "theta"), "theta"),
+                                           py_io::as_scalar(py_io::in_si(omega, "rad/s", "omega"), "omega")};
+           }),
+           py::arg("theta") = 0.0, py::arg("omega") = 0.0)
+      .def_property(
+          "theta", [](const PivotedPlanarBodyState& s) { return s.theta; },
+          [](PivotedPlanarBodyState& s, py::handle v) { s.theta = py_io::as_scalar(py_io::in_si(v, "rad", "theta"), "theta"); },
+          "angle of B about z [rad]")
+      .def_property(
+          "omega", [](const PivotedPlanarBodyState& s) { return s.omega; },
+          [](PivotedPlanarBodyState& s, py::handle v) { s.omega = py_io::as_scalar(py_io::in_si(v, "rad/s", "omega"), "omega"); },
+          "angular velocity about z [rad/s]")
+      .def("__repr__",
+           [](const PivotedPlanarBodyState& s) {
+             return repr_call("PivotedPlanarBodyState", {{"theta", py::float_(s.theta)}, {"omega", py::float_(s.omega)}});
+           })
+      .def(py::pickle([](const PivotedPlanarBodyState& s) { return py::make_tuple(s.theta, s.omega); },
+                      [](const py::tuple& t) {
+                        pickled_state(t, 2, "PivotedPlanarBodyState");
+                        return PivotedPlanarBodyState{t[0].cast<double>(), t[1].cast<double>()};
+                      }));
+  def_equality(planar, [](const PivotedPlanarBodyState& a, const PivotedPlanarBodyState& b) {
+    return a.theta == b.theta && a.omega == b.omega;
+  });
+}
+
+// ------------------------------------------------------------ the dynamics results
+
+// A member of a result: a 3-vector or a number, with its unit for pint quantities.
+Eigen::Vector3d as_member(py::handle obj, const char* unit, const char* name, Eigen::Vector3d*) {
+  return py_io::as_vector3_or_zero(py_io::in_si(obj, unit, name), name);
+}
+double as_member(py::handle obj, const char* unit, const char* name, double*) {
+  return py_io::as_scalar(py_io::in_si(obj, unit, name), name);
+}
+py::object member_object(const Eigen::Vector3d& v) { return py_io::read_only(v); }
+py::object member_object(double x) { return py::float_(x); }
+py::object member_state(const Eigen::Vector3d& v) { return py_io::to_array(v); }
+py::object member_state(double x) { return py::float_(x); }
+Eigen::Vector3d unpickled_member(py::handle obj, const std::string& what, Eigen::Vector3d*) { return unpickled<3>(obj, what); }
+double unpickled_member(py::handle obj, const std::string&, double*) { return obj.cast<double>(); }
+bool finite_member(const Eigen::Vector3d& v) { return v.allFinite(); }
+bool finite_member(double x) { return std::isfinite(x); }
+
+struct Member {
+  const char* name;
+  const char* unit;
+  const char* doc;
+};
+
+// An immutable result of two named members (a, b) that unpacks as the pair it is: keyword constructor
+// (None or 0: zero), read-only attributes, repr, pickle, ==, len/iter/[i].
+template <class T, class A, class B>
+void bind_result_pair(py::module_& m, const char* name, const char* doc, A T::*a, Member ma, B T::*b, Member mb) {
+  py::class_<T> cls(m, name, doc);
+  const auto zero_a = std::is_same_v<A, double> ? py::object(py::float_(0.0)) : py::object(py::none());
+  const auto zero_b = std::is_same_v<B, double> ? py::object(py::float_(0.0)) : py::object(py::none());
+  cls.def(py::init([=](py::handle x, py::handle y) {
+            T out;
+            out.*a = as_member(x, ma.unit, ma.name, static_cast<A*>(nullptr));
+            out.*b = as_member(y, mb.unit, mb.name, static_cast<B*>(nullptr));
+            return out;
+          }),
+          py::arg(ma.name) = zero_a, py::arg(mb.name) = zero_b)
+      .def_property_readonly(ma.name, [a](const T& r) { return member_object(r.*a); }, ma.doc)
+      .def_property_readonly(mb.name, [b](const T& r) { return member_object(r.*b); }, mb.doc)
+      .def("__repr__",
+           [=](const T& r) { return repr_call(name, {{ma.name, member_state(r.*a)}, {mb.name, member_state(r.*b)}}); })
+      .def(py::pickle([=](const T& r) { return py::make_tuple(member_state(r.*a), member_state(r.*b)); },
+                      [=](const py::tuple& t) {
+                        pickled_state(t, 2, name);
+                        T out;
+                        out.*a = unpickled_member(t[0], std::string(name) + " pickle " + ma.name, static_cast<A*>(nullptr));
+                        out.*b = unpickled_member(t[1], std::string(name) + " pickle " + mb.name, static_cast<B*>(nullptr));
+                        return out;
+                      }))
+      .def("__len__", [](const T&) { return 2; })
+      .def("__iter__", [=](const T& r) { return py::iter(py::make_tuple(member_object(r.*a), member_object(r.*b))); })
+      .def(
+          "__getitem__",
+          [=](const T& r, py::handle i) {
+            return py::make_tuple(member_object(r.*a), member_object(r.*b)).attr("__getitem__")(i);
+          },
+          py::arg("index"));
+  def_equality(cls, [a, b](const T& x, const T& y) { return x.*a == y.*a && x.*b == y.*b; });
+}
+
+// A result checked finite (RuntimeWarning naming the quantity otherwise), then as a Python object.
+template <class T, class A, class B>
+py::object checked_pair(const T& r, A T::*a, B T::*b, const char* quantity) {
+  py_io::warn_unless_finite(finite_member(r.*a) && finite_member(r.*b), quantity,
+                            py::repr(py::cast(r)).template cast<std::string>());
+  return py::cast(r);
+}
+
+void bind_pivoted_results(py::module_& m) {
+  bind_result_pair(m, "PivotedAcceleration",
+                   "forward_dynamics' result for a PivotedBody: alpha_B (3,) angular acceleration in B [rad/s^2] and "
+                   "reaction_W (3,) the pivot's force on the body in W [N] (unpacks as alpha_B, reaction_W = ...). "
+                   "Immutable.",
+                   &PivotedAcceleration::alpha_B, Member{"alpha_B", "rad/s^2", "(3,) angular acceleration in B [rad/s^2]"},
+                   &PivotedAcceleration::reaction_W, Member{"reaction_W", "N", "(3,) the pivot's force on the body, in W [N]"});
+  bind_result_pair(m, "PivotedTorque",
+                   "inverse_dynamics' result for a PivotedBody: tau_O_B (3,) the torque about O the motion needs besides "
+                   "gravity, in B [N m], and reaction_W (3,) the pivot's force on the body in W [N] (unpacks as "
+                   "tau_O_B, reaction_W = ...). Immutable.",
+                   &PivotedTorque::tau_O_B, Member{"tau_O_B", "N*m", "(3,) torque about the pivot O, in B [N m]"},
+                   &PivotedTorque::reaction_W, Member{"reaction_W", "N", "(3,) the pivot's force on the body, in W [N]"});
+  bind_result_pair(m, "PivotedPlanarAcceleration",
+                   "forward_dynamics' result for a PivotedPlanarBody: alpha [rad/s^2] about z and reaction_W (3,) the "
+                   "pivot's force on the body in W [N] (its z part is what the pin and the plane hold; unpacks as "
+                   "alpha, reaction_W = ...). Immutable.",
+                   &PivotedPlanarAcceleration::alpha, Member{"alpha", "rad/s^2", "angular acceleration about z [rad/s^2]"},
+                   &PivotedPlanarAcceleration::reaction_W,
+                   Member{"reaction_W", "N", "(3,) the pivot's force on the body, in W [N]"});
+  bind_result_pair(m, "PivotedPlanarTorque",
+                   "inverse_dynamics' result for a PivotedPlanarBody: tau_O [N m] the torque about z the motion needs "
+                   "besides gravity, and reaction_W (3,) the pivot's force on the body in W [N] (unpacks as tau_O, "
+                   "reaction_W = ...). Immutable.",
+                   &PivotedPlanarTorque::tau_O, Member{"tau_O", "N*m", "torque about the z axis through O [N m]"},
+                   &PivotedPlanarTorque::reaction_W, Member{"reaction_W", "N", "(3,) the pivot's force on the body, in W [N]"});
+}
+
+}  // namespace
+
+// ------------------------------------------------------------ the seams (pivoted.hpp)
+
+bool is_pivoted(py::handle body) {
+  return py::isinstance<PivotedBody>(body) || py::isinstance<PivotedPlanarBody>(body);
+}
+
+const char* const pivoted_forward_dynamics_doc =
+    "PivotedBody (state a PivotedBodyState): force (3,) [N] at point (p_CP (3,) [m] from the centre of mass; None = "
+    "the centre of mass) and torque (3,) [N m], in `frame`, gravity (3,) [m/s^2] in W; returns a PivotedAcceleration "
+    "(alpha_B (3,) [rad/s^2] in B, reaction_W (3,) [N] the pivot's force in W; unpacks as alpha_B, reaction_W): Euler "
+    "about O, inertia_O alpha_B + w_B x inertia_O w_B = tau_O, and Newton for C, reaction = m a_C - f.\n"
+    "PivotedPlanarBody (state a PivotedPlanarBodyState): in-plane force (2,) [N] at point (2,) [m], torque [N m] "
+    "about z, gravity (2,) or (3,) in W's plane; returns a PivotedPlanarAcceleration (alpha [rad/s^2], reaction_W).";
+const char* const pivoted_inverse_dynamics_doc =
+    "PivotedBody: alpha_B (3,) [rad/s^2] in B (a_W None: the pivot fixes it); returns a PivotedTorque: tau_O_B (3,) "
+    "[N m] the torque about O in B the motion needs besides gravity, and reaction_W (3,) [N] in W (unpacks as "
+    "tau_O_B, reaction_W). PivotedPlanarBody: alpha_B [rad/s^2] about z; returns a PivotedPlanarTorque (tau_O [N m], "
+    "reaction_W).";
+
+py::object pivoted_forward_dynamics_py(py::handle body, py::handle state, py::handle force, py::handle torque,
+                                       py::handle point, py::handle frame_arg, py::handle gravity) {
+  const Frame frame = as_frame(frame_arg);
+  if (py::isinstance<PivotedBody>(body)) {
+    const auto& b = body.cast<const PivotedBody&>();
+    const PivotedBodyState s = checked_state_of<PivotedBodyState>(state, "PivotedBody");
+    const ComWrench w = wrench_at_com(s.q_WB, py_io::as_vector3_or_zero(py_io::in_si(force, "N", "force"), "force"),
+                                      py_io::as_vector3_or_zero(py_io::in_si(torque, "N*m", "torque"), "torque"),
+                                      py_io::as_vector3_or_zero(py_io::in_si(point, "m", "point"), "point"), frame);
+    const PivotedAcceleration r = forward_dynamics(b, s, w, as_gravity(gravity));
+    return checked_pair(r, &PivotedAcceleration::alpha_B, &PivotedAcceleration::reaction_W, "forward_dynamics");
+  }
+  const auto& b = body.cast<const PivotedPlanarBody&>();
+  const PivotedPlanarBodyState s = checked_state_of<PivotedPlanarBodyState>(state, "PivotedPlanarBody");
+  const double tau = torque.is_none() ? 0.0 : py_io::as_scalar(py_io::in_si(torque, "N*m", "torque"), "torque");
+  const PlanarWrench w2 = wrench_at_com(s.theta, py_io::as_vector2_or_zero(py_io::in_si(force, "N", "force"), "force"),
+                                        tau, py_io::as_vector2_or_zero(py_io::in_si(point, "m", "point"), "point"), frame);
+  const ComWrench w{Eigen::Vector3d(w2.f_W.x(), w2.f_W.y(), 0.0), Eigen::Vector3d(0.0, 0.0, w2.tau)};
+  const PivotedPlanarAcceleration r = forward_dynamics(b, s, w, as_in_plane_gravity(gravity));
+  return checked_pair(r, &PivotedPlanarAcceleration::alpha, &PivotedPlanarAcceleration::reaction_W, "forward_dynamics");
+}
+
+py::object pivoted_inverse_dynamics_py(py::handle body, py::handle state, py::handle a_W, py::handle alpha_B,
+                                       py::handle gravity) {
+  if (!a_W.is_none()) {
+    py_io::throw_value_error("a_W", "None for a pivoted body (the pivot fixes the centre of mass's acceleration)",
+                             py_io::describe(a_W));
+  }
+  if (py::isinstance<PivotedBody>(body)) {
+    const auto& b = body.cast<const PivotedBody&>();
+    const PivotedBodyState s = checked_state_of<PivotedBodyState>(state, "PivotedBody");
+    const PivotedTorque r = inverse_dynamics(
+        b, s, py_io::as_vector3(py_io::in_si(alpha_B, "rad/s^2", "alpha_B"), "alpha_B"), as_gravity(gravity));
+    return checked_pair(r, &PivotedTorque::tau_O_B, &PivotedTorque::reaction_W, "inverse_dynamics");
+  }
+  const auto& b = body.cast<const PivotedPlanarBody&>();
+  const PivotedPlanarBodyState s = checked_state_of<PivotedPlanarBodyState>(state, "PivotedPlanarBody");
+  const PivotedPlanarTorque r = inverse_dynamics(
+      b, s, py_io::as_scalar(py_io::in_si(alpha_B, "rad/s^2", "alpha_B"), "alpha_B"), as_in_plane_gravity(gravity));
+  return checked_pair(r, &PivotedPlanarTorque::tau_O, &PivotedPlanarTorque::reaction_W, "inverse_dynamics");
+}
+
+py::object pivoted_scene(py::handle model, py::handle loads, py::handle gravity) {
+  Scene scene;
+  Eigen::Vector3d g_W;
+  if (py::isinstance<PivotedBody>(model)) {
+    scene.bodies.push_back(model.cast<const PivotedBody&>());
+    g_W = as_gravity(gravity);
+  } else {
+    scene.bodies.push_back(model.cast<const PivotedPlanarBody&>());
+    g_W = as_in_plane_gravity(gravity);
+  }
+  if (!g_W.isZero(0.0)) scene.elements.push_back(UniformGravity{g_W, {}});
+  std::vector<AppliedLoad> schedule = as_loads(loads);
+  if (!schedule.empty()) {
+    check_loads(schedule);
+    scene.elements.push_back(ScheduledLoads{0, std::move(schedule), Eigen::Vector3d::Zero()});
+  }
+  return py::cast(std::move(scene));
+}
+
+void bind_pivoted(py::module_& m) {
+  bind_pivoted_body(m);
+  bind_pivoted_states(m);
+  bind_pivoted_results(m);
+}
+
+}  // namespace rigiddyn::bindings

@@ -1,0 +1,64 @@
+#include "rigiddyn/scene/scene_frame.hpp"
+
+#include "rigiddyn/check.hpp"
+#include "rigiddyn/so3/matrix.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <utility>
+
+namespace rigiddyn {
+
+namespace {
+
+// Every value of K finite.
+bool all_finite(const FrameKinematics& K) {
+  return K.R_PF.allFinite() && K.w_PF_P.allFinite() && K.alpha_PF_P.allFinite() && K.p_PF_P.allFinite() &&
+         K.v_PF_P.allFinite() && K.a_PF_P.allFinite();
+}
+
+[[noreturn]] void throw_non_finite_motion(const FrameKinematics& K, double t) {
+  std::ostringstream got;
+  got << "R_WF = " << format_value(K.R_PF) << ", w_W = " << format_value(K.w_PF_P) << ", alpha_W = " << format_value(K.alpha_PF_P)
+      << ", p_WO = " << format_value(K.p_PF_P) << ", v_WO = " << format_value(K.v_PF_P) << ", a_WO = " << format_value(K.a_PF_P);
+  throw std::invalid_argument("frame: expected finite values from the motion function at t = " + format_value(t) + " s, got " +
+                              got.str());
+}
+
+}  // namespace
+
+SceneFrame SceneFrame::rotating(const Eigen::Vector3d& axis_F, double rate) {
+  require_finite(axis_F, "axis_F");
+  if (axis_F.isZero(0.0)) throw_invalid("axis_F", "a non-zero vector", axis_F);
+  require_finite(rate, "rate");
+  return SceneFrame{FrameMotion::constant_rotation(axis_F, rate), true};
+}
+
+SceneFrame SceneFrame::earth(double latitude) {
+  constexpr double half_pi = 1.57079632679489661923;
+  if (!(std::isfinite(latitude) && std::abs(latitude) <= half_pi)) {
+    throw_invalid("latitude", "a finite angle in [-pi/2, pi/2] rad", latitude);
+  }
+  // x east, y north, z up: the Earth's axis points north, tilted up by the latitude
+  return rotating(Eigen::Vector3d(0.0, std::cos(latitude), std::sin(latitude)), earth_rotation_rate);
+}
+
+SceneFrame SceneFrame::moving(FrameMotion motion) {
+  const FrameMotion::Function& f = motion.function();
+  const bool constant = f.target<ConstantRotation>() != nullptr || f.target<FixedPlacement>() != nullptr;
+  return SceneFrame{std::move(motion), constant};
+}
+
+FrameTerms frame_terms(const SceneFrame& frame, double t) {
+  const FrameKinematics K = frame.motion.at(t);
+  if (!all_finite(K)) throw_non_finite_motion(K, t);
+  const Eigen::Matrix3d R_WF = checked_rotation_matrix(K.R_PF, "frame");
+  FrameTerms out;
+  out.w_F = R_WF.transpose() * K.w_PF_P;
+  out.alpha_F = R_WF.transpose() * K.alpha_PF_P;
+  out.a_O_F = R_WF.transpose() * K.a_PF_P;
+  return out;
+}
+
+}  // namespace rigiddyn
