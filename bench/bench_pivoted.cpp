@@ -112,7 +112,6 @@ inline void loop_rate(const LoopTop& t, const double* y, double* dy) {
 
 template <bool principal>
 BENCH_NOINLINE void steps_baseline(const LoopTop& t, double* y, double h, std::int64_t n) {
-  constexpr double b1 = 1.0 / 6.0, b2 = 1.0 / 3.0;
   double k1[8], k2[8], k3[8], k4[8], s[8];
   for (std::int64_t i = 0; i < n; ++i) {
     loop_rate<principal>(t, y, k1);
@@ -122,7 +121,7 @@ BENCH_NOINLINE void steps_baseline(const LoopTop& t, double* y, double h, std::i
     loop_rate<principal>(t, s, k3);
     for (int j = 0; j < 8; ++j) s[j] = y[j] + h * k3[j];
     loop_rate<principal>(t, s, k4);
-    for (int j = 0; j < 8; ++j) y[j] += h * (b1 * k1[j] + b2 * k2[j] + b2 * k3[j] + b1 * k4[j]);
+    for (int j = 0; j < 8; ++j) y[j] += h / 6.0 * (k1[j] + 2.0 * k2[j] + 2.0 * k3[j] + k4[j]);
     const double inverse_norm = 1.0 / std::sqrt(y[0] * y[0] + y[1] * y[1] + y[2] * y[2] + y[3] * y[3]);
     for (int j = 0; j < 4; ++j) y[j] *= inverse_norm;
   }

@@ -48,7 +48,10 @@ struct Rk4 {
     const Coordinates k2 = model.rate(axpy(y, a21 * h, k1));
     const Coordinates k3 = model.rate(axpy(y, a32 * h, k2));
     const Coordinates k4 = model.rate(axpy(y, a43 * h, k3));
-    for (Eigen::Index i = 0; i < y.size(); ++i) y[i] += h * (b1 * k1[i] + b2 * k2[i] + b3 * k3[i] + b4 * k4[i]);
+    // y += h (b1 k1 + b2 k2 + b3 k3 + b4 k4) written as h/6 (k1 + 2 k2 + 2 k3 + k4): 6 operations per
+    // entry instead of 9 (b = (1, 2, 2, 1)/6; the same value to a rounding)
+    const double h_6 = h / 6.0;
+    for (Eigen::Index i = 0; i < y.size(); ++i) y[i] += h_6 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
     model.project(y);
   }
 };
