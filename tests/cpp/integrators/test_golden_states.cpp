@@ -9,6 +9,8 @@
 // The tolerance is zero on purpose: the refactoring only moves code, so the compiled arithmetic, and
 // hence every rounding, must be the same (no -ffp-contract/-march flag is set by the project; a build
 // that adds one may contract differently and must regenerate the file from its own HEAD build).
+// Regenerated only for a deliberate change of arithmetic, named here: RK4's final update as one sum
+// times h/6 (issue 12; only the rk4 lines changed).
 // A case that throws (the 'exact' method refuses a torque) stores its message; the test checks it
 // still throws the same.
 #include "rigiddyn/integrators/method.hpp"
