@@ -11,7 +11,7 @@
 // hand_rotating_rk4, hand_inertial_rk4); per step = its inclusive Ir / (calls × n), n = 2000 under
 // RIGIDDYN_BENCH_SMALL=1:
 //   RIGIDDYN_BENCH_SMALL=1 valgrind --tool=callgrind --callgrind-out-file=/tmp/cg.out \
-//     build/B/bench/bench_moving_frame --benchmark_min_time=0.01
+//     build/lead/bench/bench_moving_frame --benchmark_min_time=0.01
 //   callgrind_annotate --inclusive=yes /tmp/cg.out | grep -E "model_rk4|hand_"   (Ir; calls: --tree=caller)
 #include <benchmark/benchmark.h>
 

@@ -11,7 +11,7 @@
 // Callgrind (instructions per step, machine-independent): the loops are the noinline functions
 // *steps_rigiddyn* and *steps_baseline*, e.g.
 //   valgrind --tool=callgrind --toggle-collect='*steps_rigiddyn*' --toggle-collect='*steps_baseline*' \
-//     build/A/bench/bench_pivoted --benchmark_filter=heavy_top_rk4 --benchmark_min_time=0.01
+//     build/lead/bench/bench_pivoted --benchmark_filter=heavy_top_rk4 --benchmark_min_time=0.01
 //   callgrind_annotate --inclusive=yes callgrind.out.<pid> | grep steps_
 // (Ir of each function / (its calls × steps per call)).
 #include <benchmark/benchmark.h>

@@ -14,4 +14,5 @@ void bind_exact(pybind11::module_& m);
 void bind_exact_dynamics(pybind11::module_& m);  // after bind_pivoted and bind_scene_frame
 void bind_scene_elements(pybind11::module_& m);
 void bind_scene(pybind11::module_& m);
+void bind_batch(pybind11::module_& m);  // after bind_dynamics: result[i] is a SimulationResult
 }  // namespace rigiddyn::bindings

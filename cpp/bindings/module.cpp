@@ -18,6 +18,7 @@ PYBIND11_MODULE(_core, m) {
   rigiddyn::bindings::bind_scene_frame(m);
   rigiddyn::bindings::bind_scene(m);  // before bind_dynamics: simulate's signature names SceneResult
   rigiddyn::bindings::bind_dynamics(m);
+  rigiddyn::bindings::bind_batch(m);
   rigiddyn::bindings::bind_exact(m);
   rigiddyn::bindings::bind_exact_dynamics(m);
 }

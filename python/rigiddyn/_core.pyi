@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['AppliedLoad', 'BodyAcceleration', 'ComWrench', 'CompiledScene', 'CompoundPendulumSolution', 'ConstantThrustSolution', 'DensityIntegral', 'Drag', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'GravityGradient', 'InertiaCheck', 'InertiaReport', 'KineticEnergy', 'LagrangeTopSolution', 'MassFlow', 'MeshWeldWarning', 'Motion', 'MutualGravity', 'Particle', 'ParticleState', 'PivotedAcceleration', 'PivotedBody', 'PivotedBodyState', 'PivotedPlanarAcceleration', 'PivotedPlanarBody', 'PivotedPlanarBodyState', 'PivotedPlanarTorque', 'PivotedTorque', 'PlanarAcceleration', 'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointMassGravity', 'PointVelocity', 'PrincipalAxes', 'PythonForce', 'RigidBody', 'RigidBodyState', 'RotatingFrameFreeParticle', 'Scene', 'SceneCompatibilityWarning', 'SceneFrame', 'SceneResult', 'ScheduledLoads', 'Screw', 'SimulationResult', 'SpatialInertia', 'SpringDamper', 'Thrust', 'TorqueFreeSolution', 'Transform', 'UniformGravity', 'WeldedMesh', 'align_vectors', 'angular_distance', 'angular_momentum', 'angular_velocity_from_quat_rate', 'apply_impulse', 'axis_angle_to_quat', 'box_shell', 'compose_kinematics', 'composite', 'davenport_to_quat', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'from_point_masses', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation', 'nearest_valid_inertia', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix', 'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'simulate', 'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'twist_to_screw', 'vee', 'weld_vertices']
+__all__: list[str] = ['AppliedLoad', 'BatchResult', 'BatchSceneResult', 'BodyAcceleration', 'ComWrench', 'CompiledScene', 'CompoundPendulumSolution', 'ConstantThrustSolution', 'DensityIntegral', 'Drag', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'GravityGradient', 'InertiaCheck', 'InertiaReport', 'KineticEnergy', 'LagrangeTopSolution', 'MassFlow', 'MeshWeldWarning', 'Motion', 'MutualGravity', 'Particle', 'ParticleState', 'PivotedAcceleration', 'PivotedBody', 'PivotedBodyState', 'PivotedPlanarAcceleration', 'PivotedPlanarBody', 'PivotedPlanarBodyState', 'PivotedPlanarTorque', 'PivotedTorque', 'PlanarAcceleration', 'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointMassGravity', 'PointVelocity', 'PrincipalAxes', 'PythonForce', 'RigidBody', 'RigidBodyState', 'RotatingFrameFreeParticle', 'Scene', 'SceneCompatibilityWarning', 'SceneFrame', 'SceneResult', 'ScheduledLoads', 'Screw', 'SimulationResult', 'SpatialInertia', 'SpringDamper', 'Thrust', 'TorqueFreeSolution', 'Transform', 'UniformGravity', 'WeldedMesh', 'align_vectors', 'angular_distance', 'angular_momentum', 'angular_velocity_from_quat_rate', 'apply_impulse', 'axis_angle_to_quat', 'box_shell', 'compose_kinematics', 'composite', 'davenport_to_quat', 'default_thread_count', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'from_point_masses', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation', 'nearest_valid_inertia', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix', 'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'simulate', 'simulate_batch', 'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'twist_to_screw', 'vee', 'weld_vertices']
 class FrameKinematics:
     """
     Frame F relative to frame P at one instant (P = the parent of a FrameMotion, or the
@@ -2337,6 +2337,230 @@ class SimulationResult:
         """
         (n,) work of loads and gravity since t0 [J]
         """
+class BatchResult:
+    """
+    The records of simulate_batch over bodies: N samples of n records each (the arrays of SimulationResult with a
+    leading sample axis), read-only, sample-major. t (N, n) [s]; p_W (N, n, 3) centre of mass position in W [m];
+    q_WB (N, n, 4) attitude, (x, y, z, w) unless scalar_first; v_W (N, n, 3) [m/s] in W; w_B (N, n, 3) [rad/s] in
+    B; kinetic_energy, total_energy (N, n) [J]; angular_momentum_norm (N, n) |H_G| [kg m^2/s];
+    quaternion_norm_error (N, n) |q| - 1; work (N, n) [J]. diverged (N,) bool; filled (N,) rows filled per sample
+    (n unless it diverged: its rows after filled[i] are NaN); unconverged_steps (N,); elapsed_seconds: wall time
+    of the whole batch [s]. len(result) is N; result[i] is sample i as a SimulationResult (its filled rows, copies);
+    pickles.
+    """
+    def __getitem__(self, i: typing.Any) -> typing.Any:
+        """
+        sample i's records (negative i counts from the end)
+        """
+    def __getstate__(self) -> tuple:
+        ...
+    def __len__(self) -> int:
+        """
+        N, the number of samples
+        """
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def angular_momentum_norm(self) -> numpy.ndarray:
+        """
+        (N, n) |H_G| about the centre of mass [kg m^2/s]
+        """
+    @property
+    def diverged(self) -> numpy.ndarray:
+        """
+        (N,) bool: the sample's state became non-finite; its run stopped
+        """
+    @property
+    def elapsed_seconds(self) -> float:
+        """
+        wall time of the whole batch [s]
+        """
+    @property
+    def filled(self) -> numpy.ndarray:
+        """
+        (N,) int64: rows filled per sample (n unless it diverged)
+        """
+    @property
+    def kinetic_energy(self) -> numpy.ndarray:
+        """
+        (N, n) kinetic energy [J]
+        """
+    @property
+    def p_W(self) -> numpy.ndarray:
+        """
+        (N, n, 3) centre of mass position in W [m]
+        """
+    @property
+    def q_WB(self) -> numpy.ndarray:
+        """
+        (N, n, 4) attitude, (x, y, z, w) unless scalar_first
+        """
+    @property
+    def quaternion_norm_error(self) -> numpy.ndarray:
+        """
+        (N, n) |q| - 1
+        """
+    @property
+    def t(self) -> numpy.ndarray:
+        """
+        (N, n) time [s]
+        """
+    @property
+    def total_energy(self) -> numpy.ndarray:
+        """
+        (N, n) kinetic + gravity potential [J]
+        """
+    @property
+    def unconverged_steps(self) -> numpy.ndarray:
+        """
+        (N,) int64: steps whose implicit solve stopped at its iteration cap (0 for explicit methods)
+        """
+    @property
+    def v_W(self) -> numpy.ndarray:
+        """
+        (N, n, 3) centre of mass velocity in W [m/s]
+        """
+    @property
+    def w_B(self) -> numpy.ndarray:
+        """
+        (N, n, 3) angular velocity in B [rad/s]
+        """
+    @property
+    def work(self) -> numpy.ndarray:
+        """
+        (N, n) work of loads and gravity since t0 [J]
+        """
+class BatchSceneResult:
+    """
+    The records of simulate_batch over scenes: the arrays of SceneResult with a leading sample axis (N samples, n
+    records, nb bodies, ne work columns), read-only: t (N, n) [s]; p_W, v_W, w_B, pivot_reaction_W,
+    angular_momentum_O_W (N, n, nb, 3); q_WB (N, n, nb, 4); kinetic_energy, potential_energy, total_energy (N, n)
+    [J]; linear_momentum_W, angular_momentum_W (N, n, 3); mass (N, n, nb) [kg]; work, power (N, n, ne) [J], [W];
+    body_names and elements (the first scene's labels of the axes); diverged (N,) bool; filled (N,) rows filled per
+    sample (the rest NaN); unconverged_steps (N,); elapsed_seconds: wall time of the batch [s]. Frames and units as
+    SceneResult. len(result) is N; result[i] is sample i as a SceneResult (its filled rows, copies); pickles.
+    """
+    def __getitem__(self, i: typing.Any) -> typing.Any:
+        """
+        sample i's records (negative i counts from the end)
+        """
+    def __getstate__(self) -> tuple:
+        ...
+    def __len__(self) -> int:
+        """
+        N, the number of samples
+        """
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def angular_momentum_O_W(self) -> numpy.ndarray:
+        """
+        (N, n, nb, 3) each body's angular momentum about its pivot (its centre of mass unpinned), in W [kg m^2/s]
+        """
+    @property
+    def angular_momentum_W(self) -> numpy.ndarray:
+        """
+        (N, n, 3) about W's origin, in W [kg m^2/s]
+        """
+    @property
+    def body_names(self) -> tuple:
+        """
+        (nb,) tuple of the bodies' names
+        """
+    @property
+    def diverged(self) -> numpy.ndarray:
+        """
+        (N,) bool: the sample's state became non-finite; its run stopped
+        """
+    @property
+    def elapsed_seconds(self) -> float:
+        """
+        wall time of the whole batch [s]
+        """
+    @property
+    def elements(self) -> tuple:
+        """
+        (ne,) tuple of the work columns' class names
+        """
+    @property
+    def filled(self) -> numpy.ndarray:
+        """
+        (N,) int64: rows filled per sample (n unless it diverged)
+        """
+    @property
+    def kinetic_energy(self) -> numpy.ndarray:
+        """
+        (N, n) sum over the bodies [J]
+        """
+    @property
+    def linear_momentum_W(self) -> numpy.ndarray:
+        """
+        (N, n, 3) sum of m v_W, in W [kg m/s]
+        """
+    @property
+    def mass(self) -> numpy.ndarray:
+        """
+        (N, n, nb) each body's mass [kg]
+        """
+    @property
+    def p_W(self) -> numpy.ndarray:
+        """
+        (N, n, nb, 3) centre of mass positions in W [m]
+        """
+    @property
+    def pivot_reaction_W(self) -> numpy.ndarray:
+        """
+        (N, n, nb, 3) the pivot's force on each body, in W [N]
+        """
+    @property
+    def potential_energy(self) -> numpy.ndarray:
+        """
+        (N, n) sum of the elements' potentials [J]
+        """
+    @property
+    def power(self) -> numpy.ndarray:
+        """
+        (N, n, ne) each element's power at the record [W]
+        """
+    @property
+    def q_WB(self) -> numpy.ndarray:
+        """
+        (N, n, nb, 4) attitudes, (x, y, z, w) unless scalar_first
+        """
+    @property
+    def t(self) -> numpy.ndarray:
+        """
+        (N, n) time [s]
+        """
+    @property
+    def total_energy(self) -> numpy.ndarray:
+        """
+        (N, n) kinetic + potential [J]
+        """
+    @property
+    def unconverged_steps(self) -> numpy.ndarray:
+        """
+        (N,) int64: steps whose implicit solve stopped at its iteration cap (0 for explicit methods)
+        """
+    @property
+    def v_W(self) -> numpy.ndarray:
+        """
+        (N, n, nb, 3) centre of mass velocities in W [m/s]
+        """
+    @property
+    def w_B(self) -> numpy.ndarray:
+        """
+        (N, n, nb, 3) angular velocities, each in its body's B [rad/s]
+        """
+    @property
+    def work(self) -> numpy.ndarray:
+        """
+        (N, n, ne) each element's work since t0 [J]
+        """
 class TorqueFreeSolution:
     """
     Exact motion of a torque-free rigid body (Euler-Poinsot): angular velocity in Jacobi's elliptic
@@ -2804,6 +3028,10 @@ def davenport_to_quat(axes: typing.Any, order: typing.Any, angles: typing.Any, s
     angles: (3,) or (n, 3) [rad] (degrees if degrees=True), in the order of the axes.
     Returns q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first.
     """
+def default_thread_count() -> int:
+    """
+    The number of hardware threads (at least 1): simulate_batch's threads=None.
+    """
 def ellipk(m: typing.Any, mc: typing.Any = None) -> float:
     """
     Complete elliptic integral K(m) = R_F(0, mc, 1) for the parameter m in [0, 1] (as scipy.special.ellipk).
@@ -3236,6 +3464,42 @@ def simulate(model: typing.Any, initial: typing.Any, dt: typing.Any, steps: typi
     count) if an implicit solve did not converge. Ctrl-C stops the run within about 0.05 s with
     KeyboardInterrupt (no result is kept). ValueError names a bad argument, also a recording larger than the
     memory available (record_every, with both figures).
+    """
+def simulate_batch(model: typing.Any, initial: typing.Any, dt: typing.Any, steps: typing.Any, method: typing.Any = None, record_every: typing.Any = 1, loads: typing.Any = None, gravity: typing.Any = None, t0: typing.Any = 0.0, threads: typing.Any = None, simd: typing.Any = False, scalar_first: typing.Any = False, progress: typing.Any = None) -> BatchResult | BatchSceneResult:
+    """
+    N independent runs of `model`, one per initial state, with per-sample parameters, integrated in C++ on
+    `threads` threads with the GIL released. Sample i is exactly rigiddyn.simulate(model_i, initial[i], dt_i, steps,
+    method, record_every, loads_i, gravity_i, t0): the records equal N serial simulate calls bitwise, whatever the
+    thread count.
+    
+    model: a Particle, PlanarBody or RigidBody shared by every sample, or a list of N of one kind (per-sample
+      mass [kg] and inertia about the centre of mass in B [kg m^2]); or a Scene or CompiledScene, or a list of N of
+      them (of the same structure: bodies and elements). A scene with a PythonForce runs, slowly: each call takes
+      the GIL, so its samples run one at a time.
+    initial: a list of N states of the body's kind (ParticleState, PlanarBodyState, RigidBodyState), or a dict of
+      stacked arrays: RigidBody {'p_W': (N, 3) [m], 'q_WB': (N, 4) (x, y, z, w), or (w, x, y, z) with scalar_first,
+      'v_W': (N, 3) [m/s] in W, 'w_B': (N, 3) [rad/s] in B}; Particle {'p_W', 'v_W'}; PlanarBody {'p_W': (N, 2) [m],
+      'theta': (N,) [rad], 'v_W': (N, 2) [m/s], 'omega': (N,) [rad/s]}. A scene: a list of N lists of the states of
+      its bodies.
+    dt: a float [s] for every sample or an (N,) array [s] (pint quantities converted). steps, record_every, t0,
+      method, scalar_first: as simulate, shared by every sample (so every sample has the same record count n).
+    loads (bodies): as simulate (one schedule for every sample), or a list of N schedules (lists of AppliedLoad).
+    gravity (bodies): as simulate (None/False, True, a 3-vector [m/s^2] in W), or an (N, 3) array [m/s^2] in W.
+      A scene declares its loads and gravity as elements (loads and gravity must be None).
+    threads: None (the default: every hardware thread) or an int >= 1.
+    simd: True runs the SIMD path across samples (RigidBody, method 'rk4', constant loads: a force in W and a
+      torque in B without time window): equal to the scalar path up to round-off, not bitwise.
+    progress: None or a callable(samples_done), called with the GIL about every 0.05 s from the calling thread; an
+      exception it raises stops every sample and propagates. Ctrl-C stops every sample within about 0.05 s of a
+      sample's monitor check and raises KeyboardInterrupt (no result is kept).
+    
+    Returns a BatchResult (bodies) or a BatchSceneResult (scenes): the arrays of SimulationResult / SceneResult
+    with a leading sample axis (N, n, ...). A sample whose state becomes non-finite stops alone: diverged[i] is
+    True, filled[i] its rows, the rest of its rows NaN; one RuntimeWarning names how many samples diverged and
+    the first few. Input errors (N = 0, mismatched N between model, initial, dt, gravity and loads, a wrong dict
+    key or shape, threads < 1) raise ValueError/TypeError naming the argument before any sample runs; an error of
+    one sample (a bad state, a body running out of mass) raises ValueError "sample <i>: ..." for the lowest such
+    sample, after every sample has run.
     """
 def slerp(q0: typing.Any, q1: typing.Any, t: typing.Any, scalar_first: typing.Any = False, canonical: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """

@@ -90,6 +90,14 @@ RECIPES = {
         lambda method: ("method", _SCENE, "compile", [("lit", method)], [])),
     "SceneResult": st.tuples(st.integers(0, 30), st.integers(1, 5)).map(lambda nr: _call_spec(
         "simulate", [_SCENE, _SCENE_STATES], dt=("lit", 0.01), steps=("lit", nr[0]), record_every=("lit", nr[1]))),
+    # issue 13: batches of drawn sizes (samples, steps, record_every)
+    "BatchResult": st.tuples(st.integers(1, 4), st.integers(0, 30), st.integers(1, 5)).map(lambda snr: _call_spec(
+        "simulate_batch",
+        [_call_spec("RigidBody", [("lit", 1.0), ("lit", [1.0, 2.0, 2.5])]),
+         ("list", [_call_spec("RigidBodyState", w_B=("lit", [0.1 * k, 1.0, 0.1])) for k in range(snr[0])])],
+        dt=("lit", 0.01), steps=("lit", snr[1]), record_every=("lit", snr[2]), threads=("lit", 2))),
+    "BatchSceneResult": st.tuples(st.integers(1, 3), st.integers(0, 30)).map(lambda sn: _call_spec(
+        "simulate_batch", [_SCENE, ("list", [_SCENE_STATES] * sn[0])], dt=("lit", 0.01), steps=("lit", sn[1]))),
     # a density integral needs a callable rho: a constant density per point, over a drawn box
     "DensityIntegral": st.floats(0.1, 10.0).map(lambda rho: _call_spec(
         "integrate_density_over_box", [("per_row", ("lit", rho)), ("lit", [0.0, 0.0, 0.0]), ("lit", [1.0, 2.0, 0.5])])),

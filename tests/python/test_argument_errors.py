@@ -249,6 +249,9 @@ EXAMPLES = {
     "simulate": lambda: {"model": rd.RigidBody(1.0, I_BOX), "initial": rd.RigidBodyState(w_B=V), "dt": 0.01,
                          "steps": 2},
     "step": lambda: {"model": rd.RigidBody(1.0, I_BOX), "state": rd.RigidBodyState(w_B=V), "dt": 0.01},
+    "simulate_batch": lambda: {"model": rd.RigidBody(1.0, I_BOX), "initial": [rd.RigidBodyState(w_B=V)], "dt": 0.01,
+                               "steps": 2},
+    "default_thread_count": lambda: {},
     "Problem": lambda: {"name": "p", "mass": 1.0, "inertia_com": I_BOX, "horizon": 0.1},
     "Problem.simulate": lambda: {"method": "rk4", "dt": 0.01},
     "Problem.with_horizon": lambda: {"horizon": 0.2},
@@ -384,6 +387,8 @@ def _properties():
 
 # instances of the classes that only results have (no constructor)
 INSTANCES_OF_RESULTS = {
+    "BatchResult": lambda: rd.simulate_batch(rd.RigidBody(1.0, I_BOX), [rd.RigidBodyState(w_B=V)], 0.01, 2),
+    "BatchSceneResult": lambda: rd.simulate_batch(_scene(), [[rd.ParticleState(), rd.RigidBodyState(w_B=V)]], 0.01, 2),
     "DensityIntegral": lambda: rd.integrate_density_over_box(lambda p: np.ones(len(p)), -V, V, order=2),
     "KineticEnergy": lambda: rd.kinetic_energy(**_body_state()),
     "PrincipalAxes": lambda: rd.SpatialInertia(1.0, V, I_BOX).principal_axes(),

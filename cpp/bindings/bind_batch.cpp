@@ -1,0 +1,866 @@
+// Python bindings of batch runs (batch/simulate_batch.hpp, batch/simd_rigid_body.hpp): rigiddyn.simulate_batch
+// and its results BatchResult (bodies) and BatchSceneResult (scenes), read-only numpy arrays with a leading
+// sample axis adopting the C++ records. Every argument is converted by name (numpy_io.hpp) before the run;
+// the run itself holds no GIL (python_run.hpp's PythonMonitor gives progress and Ctrl-C from the calling
+// thread only).
+#include <pybind11/stl.h>
+#include <pybind11/typing.h>
+
+#include <algorithm>
+#include <climits>
+#include <cstring>
+#include <optional>
+#include <type_traits>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include "bindings.hpp"
+#include "common_args.hpp"
+#include "numpy_io.hpp"
+#include "python_run.hpp"
+#include "repr.hpp"
+#include "scene_run.hpp"
+#include "rigiddyn/batch/parallel_for.hpp"
+#include "rigiddyn/batch/simd_rigid_body.hpp"
+#include "rigiddyn/batch/simulate_batch.hpp"
+#include "rigiddyn/scene/compile.hpp"
+
+namespace rigiddyn::bindings {
+
+namespace py = pybind11;
+using py_io::Array;
+
+namespace {
+
+// ------------------------------------------------------------ numpy views of the stacked records
+
+// A read-only numpy array adopting a std::vector of any element type (no copy).
+template <class T>
+py::array adopt_vector(std::vector<T>&& data, std::vector<py::ssize_t> shape) {
+  auto* owner = new std::vector<T>(std::move(data));
+  py::capsule free_owner(owner, [](void* p) { delete static_cast<std::vector<T>*>(p); });
+  py::array_t<T> out(shape, owner->data(), free_owner);
+  out.attr("flags").attr("writeable") = false;
+  return std::move(out);
+}
+
+// diverged as a read-only numpy bool array (N,).
+py::array bool_array(const std::vector<std::uint8_t>& flags) {
+  py::array_t<bool> out(static_cast<py::ssize_t>(flags.size()));
+  bool* p = out.mutable_data();
+  for (std::size_t i = 0; i < flags.size(); ++i) p[i] = flags[i] != 0;
+  out.attr("flags").attr("writeable") = false;
+  return std::move(out);
+}
+
+// A read-only float64 copy of `obj` with exactly `shape` (a pickle's array), else ValueError naming it.
+py::array checked_copy(py::handle obj, const std::string& name, const std::vector<py::ssize_t>& shape,
+                       const char* dtype = "float64") {
+  py::array a = py::module_::import("numpy").attr("array")(obj, dtype);  // a copy
+  bool ok = a.ndim() == static_cast<py::ssize_t>(shape.size());
+  for (std::size_t d = 0; ok && d < shape.size(); ++d) ok = a.shape(d) == shape[d];
+  if (!ok) {
+    std::string expected = "shape (";
+    for (std::size_t d = 0; d < shape.size(); ++d) expected += (d ? ", " : "") + std::to_string(shape[d]);
+    py_io::throw_value_error(name, expected + ")", py_io::describe(obj));
+  }
+  a.attr("flags").attr("writeable") = false;
+  return a;
+}
+
+// Rows [0, rows) of sample i of a stacked array (N, n, ...) as a new read-only float64 array (rows, ...).
+Array sample_rows(const py::array& stacked, py::ssize_t i, py::ssize_t rows) {
+  const py::object row = stacked[py::int_(i)];
+  const py::object cut = row[py::slice(0, rows, 1)];
+  Array out = Array::ensure(py::module_::import("numpy").attr("array")(cut, "float64"));  // a copy
+  out.attr("flags").attr("writeable") = false;
+  return out;
+}
+
+// The index `key` of a sequence of n (negative counts from the end), else IndexError.
+py::ssize_t sample_index(py::handle key, py::ssize_t n, const char* cls) {
+  const std::int64_t i = py_io::as_int(key, "index");
+  const std::int64_t j = i < 0 ? i + n : i;
+  if (j < 0 || j >= n) {
+    throw py::index_error(std::string(cls) + " index: expected an integer in [-" + std::to_string(n) + ", " +
+                          std::to_string(n) + "), got " + std::to_string(i));
+  }
+  return static_cast<py::ssize_t>(j);
+}
+
+// ------------------------------------------------------------ BatchResult (bodies)
+
+constexpr const char* batch_arrays[] = {"t", "p_W", "q_WB", "v_W", "w_B", "kinetic_energy", "total_energy",
+                                        "angular_momentum_norm", "quaternion_norm_error", "work"};
+constexpr py::ssize_t batch_widths[] = {0, 3, 4, 3, 3, 0, 0, 0, 0, 0};  // values per record (0: a scalar)
+constexpr std::size_t batch_array_count = 10;
+
+struct BatchResult {
+  py::array arrays[batch_array_count];  // batch_arrays, each (N, n) or (N, n, width)
+  py::array diverged, filled, unconverged_steps;  // (N,) bool, int64, int64
+  double elapsed_seconds = 0.0;
+
+  py::ssize_t samples() const { return filled.shape(0); }
+  py::ssize_t records() const { return arrays[0].shape(1); }
+};
+
+std::vector<py::ssize_t> batch_shape(py::ssize_t n_samples, py::ssize_t n, py::ssize_t width) {
+  return width == 0 ? std::vector<py::ssize_t>{n_samples, n} : std::vector<py::ssize_t>{n_samples, n, width};
+}
+
+BatchResult to_batch_result(BatchTrajectory&& b, bool scalar_first) {
+  const auto N = static_cast<py::ssize_t>(b.samples), n = static_cast<py::ssize_t>(b.records);
+  if (scalar_first) to_scalar_first(b.q_WB);
+  std::vector<double>* data[batch_array_count] = {&b.t, &b.p_W, &b.q_WB, &b.v_W, &b.w_B, &b.kinetic_energy,
+                                                  &b.total_energy, &b.angular_momentum_norm,
+                                                  &b.quaternion_norm_error, &b.work};
+  BatchResult r;
+  for (std::size_t k = 0; k < batch_array_count; ++k) {
+    r.arrays[k] = adopt_vector(std::move(*data[k]), batch_shape(N, n, batch_widths[k]));
+  }
+  r.diverged = bool_array(b.diverged);
+  r.filled = adopt_vector(std::move(b.filled), {N});
+  r.unconverged_steps = adopt_vector(std::move(b.unconverged_steps), {N});
+  r.elapsed_seconds = b.elapsed_seconds;
+  return r;
+}
+
+py::tuple batch_result_state(const BatchResult& r) {
+  py::tuple out(batch_array_count + 4);
+  for (std::size_t k = 0; k < batch_array_count; ++k) out[k] = r.arrays[k];
+  out[batch_array_count] = r.diverged;
+  out[batch_array_count + 1] = r.filled;
+  out[batch_array_count + 2] = r.unconverged_steps;
+  out[batch_array_count + 3] = py::float_(r.elapsed_seconds);
+  return out;
+}
+
+BatchResult batch_result_from_state(const py::tuple& t) {
+  if (t.size() != batch_array_count + 4) {
+    py_io::throw_value_error("BatchResult pickle", "a tuple of " + std::to_string(batch_array_count + 4) + " items",
+                             std::to_string(t.size()) + " items");
+  }
+  const py::array t0 = py::module_::import("numpy").attr("asarray")(t[0]);
+  if (t0.ndim() != 2) py_io::throw_value_error("BatchResult pickle t", "shape (N, n)", py_io::describe(t[0]));
+  const py::ssize_t N = t0.shape(0), n = t0.shape(1);
+  BatchResult r;
+  for (std::size_t k = 0; k < batch_array_count; ++k) {
+    r.arrays[k] = checked_copy(t[k], std::string("BatchResult pickle ") + batch_arrays[k], batch_shape(N, n, batch_widths[k]));
+  }
+  r.diverged = checked_copy(t[batch_array_count], "BatchResult pickle diverged", {N}, "bool");
+  r.filled = checked_copy(t[batch_array_count + 1], "BatchResult pickle filled", {N}, "int64");
+  r.unconverged_steps = checked_copy(t[batch_array_count + 2], "BatchResult pickle unconverged_steps", {N}, "int64");
+  r.elapsed_seconds = t[batch_array_count + 3].cast<double>();
+  return r;
+}
+
+// result[i]: sample i's records (its filled rows) as a rigiddyn.SimulationResult (built through its pickle
+// state, the one public way to make one); elapsed_seconds is the batch's.
+py::object batch_sample(const BatchResult& r, py::handle key) {
+  const py::ssize_t i = sample_index(key, r.samples(), "BatchResult");
+  const py::ssize_t rows = r.filled.attr("__getitem__")(i).cast<py::ssize_t>();
+  py::tuple state(batch_array_count + 3);
+  for (std::size_t k = 0; k < batch_array_count; ++k) state[k] = sample_rows(r.arrays[k], i, rows);
+  state[batch_array_count] = py::bool_(r.diverged.attr("__getitem__")(i).cast<bool>());
+  state[batch_array_count + 1] = py::int_(r.unconverged_steps.attr("__getitem__")(i).cast<std::int64_t>());
+  state[batch_array_count + 2] = py::float_(r.elapsed_seconds);
+  const py::object cls = py::module_::import("rigiddyn._core").attr("SimulationResult");
+  py::object out = cls.attr("__new__")(cls);
+  out.attr("__setstate__")(state);
+  return out;
+}
+
+std::int64_t count_true(const py::array& flags) { return py::int_(flags.attr("sum")()).cast<std::int64_t>(); }
+
+std::string batch_result_repr(const BatchResult& r) {
+  return repr_call("BatchResult", {{"samples", py::int_(r.samples())},
+                                   {"records", py::int_(r.records())},
+                                   {"diverged", py::int_(count_true(r.diverged))},
+                                   {"elapsed_seconds", py::float_(r.elapsed_seconds)}});
+}
+
+// ------------------------------------------------------------ BatchSceneResult
+
+// The arrays of a scene batch, with their shapes after (N, n) (-1: bodies, -2: work columns), and the member
+// of SceneResult each sample's rows go to.
+struct SceneColumn {
+  const char* name;
+  std::vector<double> BatchSceneSimulation::*data;
+  py_io::Array SceneResult::*member;
+  std::vector<py::ssize_t> tail;
+};
+const SceneColumn scene_columns[] = {
+    {"t", &BatchSceneSimulation::t, &SceneResult::t, {}},
+    {"p_W", &BatchSceneSimulation::p_W, &SceneResult::p_W, {-1, 3}},
+    {"q_WB", &BatchSceneSimulation::q_WB, &SceneResult::q_WB, {-1, 4}},
+    {"v_W", &BatchSceneSimulation::v_W, &SceneResult::v_W, {-1, 3}},
+    {"w_B", &BatchSceneSimulation::w_B, &SceneResult::w_B, {-1, 3}},
+    {"kinetic_energy", &BatchSceneSimulation::kinetic_energy, &SceneResult::kinetic_energy, {}},
+    {"potential_energy", &BatchSceneSimulation::potential_energy, &SceneResult::potential_energy, {}},
+    {"total_energy", &BatchSceneSimulation::total_energy, &SceneResult::total_energy, {}},
+    {"linear_momentum_W", &BatchSceneSimulation::linear_momentum_W, &SceneResult::linear_momentum_W, {3}},
+    {"angular_momentum_W", &BatchSceneSimulation::angular_momentum_W, &SceneResult::angular_momentum_W, {3}},
+    {"pivot_reaction_W", &BatchSceneSimulation::pivot_reaction_W, &SceneResult::pivot_reaction_W, {-1, 3}},
+    {"angular_momentum_O_W", &BatchSceneSimulation::angular_momentum_O_W, &SceneResult::angular_momentum_O_W, {-1, 3}},
+    {"mass", &BatchSceneSimulation::mass, &SceneResult::mass, {-1}},
+    {"work", &BatchSceneSimulation::work, &SceneResult::work, {-2}},
+    {"power", &BatchSceneSimulation::power, &SceneResult::power, {-2}},
+};
+constexpr std::size_t scene_column_count = sizeof(scene_columns) / sizeof(scene_columns[0]);
+
+struct BatchSceneResult {
+  py::array arrays[scene_column_count];  // scene_columns, each (N, n, ...)
+  py::tuple body_names, elements;
+  py::array diverged, filled, unconverged_steps;  // (N,) bool, int64, int64
+  double elapsed_seconds = 0.0;
+
+  py::ssize_t samples() const { return filled.shape(0); }
+  py::ssize_t records() const { return arrays[0].shape(1); }
+};
+
+std::vector<py::ssize_t> scene_shape(py::ssize_t N, py::ssize_t n, const std::vector<py::ssize_t>& tail, py::ssize_t nb,
+                                     py::ssize_t ne) {
+  std::vector<py::ssize_t> shape{N, n};
+  for (py::ssize_t d : tail) shape.push_back(d == -1 ? nb : d == -2 ? ne : d);
+  return shape;
+}
+
+BatchSceneResult to_batch_scene_result(BatchSceneSimulation&& b, py::tuple body_names, py::tuple elements,
+                                       bool scalar_first) {
+  const auto N = static_cast<py::ssize_t>(b.samples), n = static_cast<py::ssize_t>(b.records);
+  if (scalar_first) to_scalar_first(b.q_WB);
+  BatchSceneResult r;
+  for (std::size_t k = 0; k < scene_column_count; ++k) {
+    r.arrays[k] = adopt_vector(std::move(b.*(scene_columns[k].data)),
+                               scene_shape(N, n, scene_columns[k].tail, b.body_count, b.element_count));
+  }
+  r.body_names = std::move(body_names);
+  r.elements = std::move(elements);
+  r.diverged = bool_array(b.diverged);
+  r.filled = adopt_vector(std::move(b.filled), {N});
+  r.unconverged_steps = adopt_vector(std::move(b.unconverged_steps), {N});
+  r.elapsed_seconds = b.elapsed_seconds;
+  return r;
+}
+
+py::tuple batch_scene_state(const BatchSceneResult& r) {
+  py::tuple out(scene_column_count + 6);
+  for (std::size_t k = 0; k < scene_column_count; ++k) out[k] = r.arrays[k];
+  out[scene_column_count] = r.body_names;
+  out[scene_column_count + 1] = r.elements;
+  out[scene_column_count + 2] = r.diverged;
+  out[scene_column_count + 3] = r.filled;
+  out[scene_column_count + 4] = r.unconverged_steps;
+  out[scene_column_count + 5] = py::float_(r.elapsed_seconds);
+  return out;
+}
+
+BatchSceneResult batch_scene_from_state(const py::tuple& t) {
+  if (t.size() != scene_column_count + 6) {
+    py_io::throw_value_error("BatchSceneResult pickle", "a tuple of " + std::to_string(scene_column_count + 6) + " items",
+                             std::to_string(t.size()) + " items");
+  }
+  BatchSceneResult r;
+  r.body_names = py::tuple(t[scene_column_count]);
+  r.elements = py::tuple(t[scene_column_count + 1]);
+  const py::array t0 = py::module_::import("numpy").attr("asarray")(t[0]);
+  if (t0.ndim() != 2) py_io::throw_value_error("BatchSceneResult pickle t", "shape (N, n)", py_io::describe(t[0]));
+  const py::ssize_t N = t0.shape(0), n = t0.shape(1);
+  const auto nb = static_cast<py::ssize_t>(r.body_names.size()), ne = static_cast<py::ssize_t>(r.elements.size());
+  for (std::size_t k = 0; k < scene_column_count; ++k) {
+    r.arrays[k] = checked_copy(t[k], std::string("BatchSceneResult pickle ") + scene_columns[k].name,
+                               scene_shape(N, n, scene_columns[k].tail, nb, ne));
+  }
+  r.diverged = checked_copy(t[scene_column_count + 2], "BatchSceneResult pickle diverged", {N}, "bool");
+  r.filled = checked_copy(t[scene_column_count + 3], "BatchSceneResult pickle filled", {N}, "int64");
+  r.unconverged_steps = checked_copy(t[scene_column_count + 4], "BatchSceneResult pickle unconverged_steps", {N}, "int64");
+  r.elapsed_seconds = t[scene_column_count + 5].cast<double>();
+  return r;
+}
+
+// result[i]: sample i's records (its filled rows) as a rigiddyn.SceneResult; elapsed_seconds is the batch's.
+SceneResult batch_scene_sample(const BatchSceneResult& r, py::handle key) {
+  const py::ssize_t i = sample_index(key, r.samples(), "BatchSceneResult");
+  const py::ssize_t rows = r.filled.attr("__getitem__")(i).cast<py::ssize_t>();
+  SceneResult out;
+  for (std::size_t k = 0; k < scene_column_count; ++k) out.*(scene_columns[k].member) = sample_rows(r.arrays[k], i, rows);
+  out.body_names = r.body_names;
+  out.elements = r.elements;
+  out.diverged = r.diverged.attr("__getitem__")(i).cast<bool>();
+  out.unconverged_steps = r.unconverged_steps.attr("__getitem__")(i).cast<std::int64_t>();
+  out.elapsed_seconds = r.elapsed_seconds;
+  return out;
+}
+
+std::string batch_scene_repr(const BatchSceneResult& r) {
+  return repr_call("BatchSceneResult", {{"samples", py::int_(r.samples())},
+                                        {"records", py::int_(r.records())},
+                                        {"body_names", r.body_names},
+                                        {"elements", r.elements},
+                                        {"diverged", py::int_(count_true(r.diverged))},
+                                        {"elapsed_seconds", py::float_(r.elapsed_seconds)}});
+}
+
+// ------------------------------------------------------------ arguments
+
+bool is_sequence(py::handle obj) { return py::isinstance<py::list>(obj) || py::isinstance<py::tuple>(obj); }
+
+// threads: None -> every hardware thread; else an int >= 1.
+int as_threads(py::handle obj) {
+  if (obj.is_none()) return default_thread_count();
+  const std::int64_t threads = py_io::as_int(obj, "threads");
+  if (threads < 1) py_io::throw_value_error("threads", "None (all cores) or an integer >= 1", std::to_string(threads));
+  return static_cast<int>(std::min<std::int64_t>(threads, INT_MAX));
+}
+
+// ValueError "<name>: expected <what> (N = <n>, as initial), got <count>".
+void require_count(py::ssize_t count, py::ssize_t N, const std::string& name, const std::string& what) {
+  if (count != N) {
+    py_io::throw_value_error(name, what + " (N = " + std::to_string(N) + ", as initial)", std::to_string(count));
+  }
+}
+
+// dt: a float [s] (or a pint quantity) for every sample, or an (N,) array of them (empty result: common).
+std::vector<double> as_dt(py::handle obj, double& common, py::ssize_t N) {
+  const py::object si = py_io::in_si(obj, "s", "dt");
+  if (!py::isinstance<py::array>(si) && !is_sequence(si)) {
+    common = py_io::as_scalar(si, "dt");
+    return {};
+  }
+  const Array a = py_io::as_array(si, "dt");
+  if (a.ndim() == 0) {
+    common = py_io::as_scalar(si, "dt");
+    return {};
+  }
+  if (a.ndim() != 1) py_io::throw_value_error("dt", "a float [s] or an array of shape (N,)", py_io::describe(si));
+  require_count(a.shape(0), N, "dt", "one step [s] per sample");
+  common = a.data()[0];  // unused by the runs (each sample has its own); a valid value for checks of the common one
+  return std::vector<double>(a.data(), a.data() + a.shape(0));
+}
+
+// gravity: as simulate's (None/False, True, a 3-vector [m/s²] in W) for every sample, or an (N, 3) array.
+std::vector<Eigen::Vector3d> as_batch_gravity(py::handle obj, Eigen::Vector3d& common, py::ssize_t N) {
+  if (obj.is_none() || py::isinstance<py::bool_>(obj)) {
+    common = as_gravity(obj);
+    return {};
+  }
+  const py::object si = py_io::in_si(obj, "m/s^2", "gravity");
+  const Array a = py_io::as_array(si, "gravity");
+  if (a.ndim() != 2) {
+    common = as_gravity(si);
+    return {};
+  }
+  if (a.shape(1) != 3) py_io::throw_value_error("gravity", "a 3-vector [m/s^2] or an array of shape (N, 3)", py_io::describe(si));
+  require_count(a.shape(0), N, "gravity", "one gravity vector per sample");
+  std::vector<Eigen::Vector3d> out;
+  for (py::ssize_t i = 0; i < N; ++i) out.emplace_back(a.data() + 3 * i);
+  return out;
+}
+
+// loads: as simulate's (None, an AppliedLoad or a sequence of them) for every sample, or a sequence of N
+// schedules (each a sequence of AppliedLoad).
+std::vector<std::vector<AppliedLoad>> as_batch_loads(py::handle obj, std::vector<AppliedLoad>& common, py::ssize_t N) {
+  const bool per_sample = is_sequence(obj) && py::len(obj) > 0 && is_sequence(obj[py::int_(0)]);
+  if (!per_sample) {
+    common = as_loads(obj);
+    return {};
+  }
+  require_count(static_cast<py::ssize_t>(py::len(obj)), N, "loads", "one load schedule per sample");
+  std::vector<std::vector<AppliedLoad>> out;
+  for (py::ssize_t i = 0; i < N; ++i) {
+    const py::object item = obj[py::int_(i)];
+    const std::string name = "loads[" + std::to_string(i) + "]";
+    if (!is_sequence(item)) py_io::throw_type_error(name, "a list of AppliedLoad (one schedule per sample)", item);
+    out.push_back(as_loads(item, name));
+  }
+  return out;
+}
+
+// The models: one (shared) or a sequence of N of the kind of the first ("model[i]").
+template <class Model>
+std::vector<Model> as_models(py::handle model, const char* kind, py::ssize_t N) {
+  if (!is_sequence(model)) return {model.cast<const Model&>()};
+  require_count(static_cast<py::ssize_t>(py::len(model)), N, "model", std::string("one ") + kind + " per sample");
+  std::vector<Model> out;
+  for (py::ssize_t i = 0; i < N; ++i) {
+    out.push_back(py_io::as_instance<Model>(model[py::int_(i)], "model[" + std::to_string(i) + "]",
+                                            std::string("a ") + kind + " (as model[0])"));
+  }
+  return out;
+}
+
+// The dict form of `initial`: exactly `keys`, each (N, width) (width 0: (N,)); returns N.
+py::ssize_t check_state_dict(const py::dict& d, std::initializer_list<std::pair<const char*, py::ssize_t>> keys,
+                             std::vector<Array>& arrays) {
+  std::string listed;
+  for (const auto& [key, width] : keys) listed += (listed.empty() ? "'" : ", '") + std::string(key) + "'";
+  bool same = d.size() == keys.size();
+  for (const auto& [key, width] : keys) same = same && d.contains(key);
+  if (!same) {
+    std::string given;
+    for (const auto& item : d) given += (given.empty() ? "'" : ", '") + py::str(item.first).cast<std::string>() + "'";
+    py_io::throw_value_error("initial", "a dict with the keys " + listed, "keys " + given);
+  }
+  py::ssize_t N = -1;
+  for (const auto& [key, width] : keys) {
+    const std::string name = std::string("initial['") + key + "']";
+    Array a = py_io::as_array(d[key], name);
+    const std::string shape = width == 0 ? "(N,)" : "(N, " + std::to_string(width) + ")";
+    const bool ok = width == 0 ? a.ndim() == 1 : a.ndim() == 2 && a.shape(1) == width;
+    if (!ok) py_io::throw_value_error(name, "an array of shape " + shape, py_io::describe(d[key]));
+    if (N < 0) {
+      N = a.shape(0);
+    } else if (a.shape(0) != N) {
+      py_io::throw_value_error(name, "an array of shape " + shape + " with N = " + std::to_string(N) + " (as initial['" +
+                                         keys.begin()->first + "'])",
+                               py_io::describe(d[key]));
+    }
+    arrays.push_back(std::move(a));
+  }
+  return N;
+}
+
+std::vector<RigidBodyState> states_from_dict(const py::dict& d, bool scalar_first) {
+  std::vector<Array> a;
+  const py::ssize_t N = check_state_dict(d, {{"p_W", 3}, {"q_WB", 4}, {"v_W", 3}, {"w_B", 3}}, a);
+  std::vector<RigidBodyState> out(static_cast<std::size_t>(N));
+  for (py::ssize_t i = 0; i < N; ++i) {
+    RigidBodyState& s = out[static_cast<std::size_t>(i)];
+    s.p_W = Eigen::Vector3d(a[0].data() + 3 * i);
+    s.q_WB = py_io::read_quaternion(a[1].data() + 4 * i, scalar_first);
+    s.v_W = Eigen::Vector3d(a[2].data() + 3 * i);
+    s.w_B = Eigen::Vector3d(a[3].data() + 3 * i);
+  }
+  return out;
+}
+
+std::vector<ParticleState> particle_states_from_dict(const py::dict& d, bool) {
+  std::vector<Array> a;
+  const py::ssize_t N = check_state_dict(d, {{"p_W", 3}, {"v_W", 3}}, a);
+  std::vector<ParticleState> out(static_cast<std::size_t>(N));
+  for (py::ssize_t i = 0; i < N; ++i) {
+    out[static_cast<std::size_t>(i)].p_W = Eigen::Vector3d(a[0].data() + 3 * i);
+    out[static_cast<std::size_t>(i)].v_W = Eigen::Vector3d(a[1].data() + 3 * i);
+  }
+  return out;
+}
+
+std::vector<PlanarBodyState> planar_states_from_dict(const py::dict& d, bool) {
+  std::vector<Array> a;
+  const py::ssize_t N = check_state_dict(d, {{"p_W", 2}, {"theta", 0}, {"v_W", 2}, {"omega", 0}}, a);
+  std::vector<PlanarBodyState> out(static_cast<std::size_t>(N));
+  for (py::ssize_t i = 0; i < N; ++i) {
+    PlanarBodyState& s = out[static_cast<std::size_t>(i)];
+    s.p_W = Eigen::Vector2d(a[0].data() + 2 * i);
+    s.theta = a[1].data()[i];
+    s.v_W = Eigen::Vector2d(a[2].data() + 2 * i);
+    s.omega = a[3].data()[i];
+  }
+  return out;
+}
+
+// initial for bodies: a sequence of N states of the model's kind, or the dict of stacked arrays.
+template <class State, class FromDict>
+std::vector<State> as_states(py::handle initial, const char* state_kind, FromDict from_dict, bool scalar_first) {
+  const std::string expected = std::string("a sequence of ") + state_kind + " (one per sample) or a dict of stacked arrays";
+  if (py::isinstance<py::dict>(initial)) return from_dict(py::reinterpret_borrow<py::dict>(initial), scalar_first);
+  if (!is_sequence(initial)) py_io::throw_type_error("initial", expected, initial);
+  std::vector<State> out;
+  for (py::ssize_t i = 0; i < static_cast<py::ssize_t>(py::len(initial)); ++i) {
+    out.push_back(py_io::as_instance<State>(initial[py::int_(i)], "initial[" + std::to_string(i) + "]",
+                                            std::string("a ") + state_kind));
+  }
+  return out;
+}
+
+// The number of samples: at least one.
+py::ssize_t require_samples(std::size_t n) {
+  if (n == 0) py_io::throw_value_error("initial", "at least one sample", "0");
+  return static_cast<py::ssize_t>(n);
+}
+
+// The one RuntimeWarning naming the diverged samples (the first five), and one for unconverged solves.
+void warn_after_batch(const py::array& diverged, const py::array& unconverged, const std::string& method) {
+  const auto* d = static_cast<const bool*>(diverged.data());
+  const py::ssize_t N = diverged.shape(0);
+  std::vector<py::ssize_t> bad;
+  for (py::ssize_t i = 0; i < N; ++i) {
+    if (d[i]) bad.push_back(i);
+  }
+  if (!bad.empty()) {
+    std::string list;
+    for (std::size_t k = 0; k < std::min<std::size_t>(bad.size(), 5); ++k) list += (k ? ", " : "") + std::to_string(bad[k]);
+    if (bad.size() > 5) list += ", ...";
+    const std::string msg = "simulate_batch: " + std::to_string(bad.size()) + " of " + std::to_string(N) +
+                            " samples became non-finite (samples " + list + "); their runs stopped there";
+    if (PyErr_WarnEx(PyExc_RuntimeWarning, msg.c_str(), 1) != 0) throw py::error_already_set();
+  }
+  const auto* u = static_cast<const std::int64_t*>(unconverged.data());
+  std::int64_t samples = 0, steps = 0;
+  for (py::ssize_t i = 0; i < N; ++i) samples += u[i] > 0, steps += u[i];
+  if (samples > 0) {
+    const std::string msg = "simulate_batch: the implicit solve of method '" + method + "' did not converge in " +
+                            std::to_string(steps) + " steps of " + std::to_string(samples) +
+                            " samples (see unconverged_steps; their conservation is lost there); reduce dt";
+    if (PyErr_WarnEx(PyExc_RuntimeWarning, msg.c_str(), 1) != 0) throw py::error_already_set();
+  }
+}
+
+// The options every sample shares.
+struct CommonArgs {
+  SimulationOptions options;
+  bool scalar_first;
+  int threads;
+  bool simd;
+};
+
+CommonArgs as_common(py::handle steps, py::handle record_every, py::handle t0, py::handle threads, py::handle simd,
+                     py::handle scalar_first) {
+  CommonArgs c;
+  c.options.steps = py_io::as_int(steps, "steps", 0);
+  c.options.record_every = py_io::as_int(record_every, "record_every", 1);
+  c.options.t0 = py_io::as_scalar(py_io::in_si(t0, "s", "t0"), "t0");
+  c.threads = as_threads(threads);
+  c.simd = py_io::as_bool(simd, "simd");
+  c.scalar_first = py_io::as_bool(scalar_first, "scalar_first");
+  return c;
+}
+
+// ValueError naming record_every when the stacked records of N samples (`doubles_per_record` values each) do not
+// fit in the memory available (as simulate refuses a recording larger than it).
+void require_batch_memory(py::ssize_t N, const SimulationOptions& o, double doubles_per_record) {
+  const double records = static_cast<double>(batch_record_count(o.steps, o.record_every));
+  const double bytes = static_cast<double>(N) * records * doubles_per_record * sizeof(double);
+  const auto available = static_cast<double>(py_io::available_memory_bytes());
+  if (bytes > available) {
+    py_io::throw_value_error("record_every",
+                             "a batch recording that fits in the available memory (" + format_value(available) + " bytes)",
+                             std::to_string(o.record_every) + " (" + std::to_string(N) + " samples of " +
+                                 format_value(records) + " records: " + format_value(bytes) +
+                                 " bytes; record less often)");
+  }
+}
+
+// Runs `batch(options)` without the GIL, the calling thread's PythonMonitor reporting progress(samples done)
+// and Ctrl-C; raises the monitor's exception if it stopped the batch.
+template <class Run>
+auto run_without_gil(SimulationOptions& o, py::handle progress, Run&& batch) {
+  PythonMonitor monitor(progress);
+  bool stopped = false;  // the monitor asked to stop (whether or not the path sets `interrupted`)
+  if (monitor.needed()) {
+    o.monitor = [&monitor, &stopped](std::int64_t samples_done) { return stopped = monitor(samples_done) || stopped; };
+  }
+  decltype(batch(o)) out;
+  {
+    py::gil_scoped_release release;
+    out = batch(o);
+  }
+  if (stopped || out.interrupted) monitor.raise();  // the records so far are dropped with out
+  return out;
+}
+
+// ------------------------------------------------------------ the runs
+
+template <class Body, class State, class FromDict>
+BatchResult body_batch(py::handle model, py::handle initial, py::handle dt, py::handle method, py::handle loads,
+                       py::handle gravity, CommonArgs c, py::handle progress, const char* kind, const char* state_kind,
+                       FromDict from_dict) {
+  const std::vector<State> states = as_states<State>(initial, state_kind, from_dict, c.scalar_first);
+  const py::ssize_t N = require_samples(states.size());
+  const std::vector<Body> bodies = as_models<Body>(model, kind, N);
+  SimulationOptions& o = c.options;
+  o.method = method.is_none() ? Method::rk4 : method_from_name(py_io::as_string(method, "method"), "method");
+  BatchParameters p;
+  p.dt = as_dt(dt, o.dt, N);
+  p.gravity_W = as_batch_gravity(gravity, o.gravity_W, N);
+  p.loads = as_batch_loads(loads, o.loads, N);
+  require_batch_memory(N, o, 29.0);
+  const bool simd_path = c.simd;
+  if (simd_path && !std::is_same_v<Body, RigidBody>) {
+    py_io::throw_value_error("simd", std::string("False for a ") + kind + " (the SIMD path runs RigidBody batches)", "True");
+  }
+  if (simd_path && o.method != Method::rk4) {
+    py_io::throw_value_error("simd", "False for method '" + method_info(o.method).name + "' (the SIMD path runs rk4)",
+                             "True");
+  }
+  BatchTrajectory b = run_without_gil(o, progress, [&](const SimulationOptions& opt) {
+    if constexpr (std::is_same_v<Body, RigidBody>) {
+      // the SIMD path (engineer B's batch/simd_rigid_body.hpp); its own checks name loads (a time window, a
+      // torque in W or a force in B)
+      if (simd_path) return simulate_batch_simd(bodies, states, opt, p, c.threads);
+    }
+    return simulate_batch(bodies, states, opt, p, c.threads);
+  });
+  BatchResult r = to_batch_result(std::move(b), c.scalar_first);
+  warn_after_batch(r.diverged, r.unconverged_steps, method_info(o.method).name);
+  return r;
+}
+
+// A scene given from Python (Scene or CompiledScene) compiled for `method` (None: a CompiledScene's own, a
+// Scene's rk4), as rigiddyn.simulate compiles it (a Scene's SceneCompatibilityWarnings raised here).
+CompiledScene compiled_scene(py::handle obj, py::handle method, const std::string& name) {
+  if (py::isinstance<Scene>(obj)) {
+    const Method m = method.is_none() ? Method::rk4 : method_from_name(py_io::as_string(method, "method"), "method");
+    CompiledScene compiled = compile_scene(obj.cast<const Scene&>(), m);
+    const py::object warning = py::module_::import("rigiddyn._core").attr("SceneCompatibilityWarning");
+    for (const std::string& w : compiled.warnings()) {
+      if (PyErr_WarnEx(warning.ptr(), w.c_str(), 2) != 0) throw py::error_already_set();
+    }
+    return compiled;
+  }
+  if (!is_scene(obj)) py_io::throw_type_error(name, "a Scene or CompiledScene (as model[0])", obj);
+  const std::string own = obj.attr("method").cast<std::string>();
+  if (!method.is_none() && py_io::as_string(method, "method") != own) {
+    py_io::throw_value_error("method", "None or '" + own + "' (the method `" + name + "` was compiled for)",
+                             "'" + py::str(method).cast<std::string>() + "'");
+  }
+  // a CompiledScene's C++ model is private to bind_scene.cpp: its scene is compiled again for its method (the
+  // same model: compile_scene is a function of the scene and the method; its warnings were given at its compile)
+  return compile_scene(obj.attr("scene").cast<Scene>(), method_from_name(own, "method"));
+}
+
+// A body state of body `body`'s kind (the alternative of BodyState at its index), else TypeError naming it.
+template <std::size_t... K>
+BodyState state_of_kind(py::handle obj, std::size_t kind, const std::string& name, std::index_sequence<K...>) {
+  std::optional<BodyState> out;
+  ((kind == K && py::isinstance<std::variant_alternative_t<K, BodyState>>(obj)
+        ? (void)(out = obj.cast<const std::variant_alternative_t<K, BodyState>&>())
+        : void()),
+   ...);
+  if (!out) py_io::throw_type_error(name, std::string("a ") + state_type_name(kind) + " (the state of its body)", obj);
+  return *out;
+}
+
+// initial for scenes: N lists of one state per body of the sample's scene.
+std::vector<std::vector<BodyState>> as_scene_batch_states(py::handle initial, const std::vector<CompiledScene>& scenes) {
+  if (!is_sequence(initial)) {
+    py_io::throw_type_error("initial", "a sequence of N lists of body states (one list per sample)", initial);
+  }
+  std::vector<std::vector<BodyState>> out;
+  for (py::ssize_t i = 0; i < static_cast<py::ssize_t>(py::len(initial)); ++i) {
+    const std::string name = "initial[" + std::to_string(i) + "]";
+    const py::object item = initial[py::int_(i)];
+    const Scene& scene = scenes[scenes.size() == 1 ? 0 : static_cast<std::size_t>(i)].scene();
+    const std::size_t nb = scene.bodies.size();
+    const std::string expected = "a list of " + std::to_string(nb) + " body states (one per body of the scene)";
+    if (!is_sequence(item)) py_io::throw_type_error(name, expected, item);
+    if (py::len(item) != nb) py_io::throw_value_error(name, expected, std::to_string(py::len(item)) + " states");
+    std::vector<BodyState> states;
+    for (std::size_t b = 0; b < nb; ++b) {
+      states.push_back(state_of_kind(item[py::int_(b)], scene.bodies[b].index(), name + "[" + std::to_string(b) + "]",
+                                     std::make_index_sequence<std::variant_size_v<BodyState>>()));
+    }
+    out.push_back(std::move(states));
+  }
+  return out;
+}
+
+BatchSceneResult scene_batch(py::handle model, py::handle initial, py::handle dt, py::handle method, py::handle loads,
+                             py::handle gravity, CommonArgs c, py::handle progress) {
+  if (!loads.is_none()) {
+    py_io::throw_value_error("loads", "None for a scene (declare a ScheduledLoads element)", py_io::describe(loads));
+  }
+  if (!gravity.is_none() && !(py::isinstance<py::bool_>(gravity) && !gravity.cast<bool>())) {
+    py_io::throw_value_error("gravity", "None for a scene (declare a UniformGravity element)", py_io::describe(gravity));
+  }
+  if (c.simd) py_io::throw_value_error("simd", "False for a scene (the SIMD path runs RigidBody batches)", "True");
+  if (!is_sequence(initial)) {
+    py_io::throw_type_error("initial", "a sequence of N lists of body states (one list per sample)", initial);
+  }
+  const py::ssize_t N = require_samples(py::len(initial));
+  std::vector<CompiledScene> scenes;
+  if (is_sequence(model)) {
+    require_count(static_cast<py::ssize_t>(py::len(model)), N, "model", "one Scene or CompiledScene per sample");
+    for (py::ssize_t i = 0; i < N; ++i) {
+      scenes.push_back(compiled_scene(model[py::int_(i)], method, "model[" + std::to_string(i) + "]"));
+      if (scenes.back().method() != scenes[0].method()) {
+        py_io::throw_value_error("model[" + std::to_string(i) + "]",
+                                 "a scene compiled for '" + method_info(scenes[0].method()).name + "' (as model[0])",
+                                 "'" + method_info(scenes.back().method()).name + "'");
+      }
+    }
+  } else {
+    scenes.push_back(compiled_scene(model, method, "model"));
+  }
+  const std::vector<std::vector<BodyState>> states = as_scene_batch_states(initial, scenes);
+  SimulationOptions& o = c.options;
+  o.method = scenes[0].method();
+  const std::vector<double> dts = as_dt(dt, o.dt, N);
+  const Scene& first = scenes[0].scene();
+  const double nb = static_cast<double>(first.bodies.size()), ne = static_cast<double>(scenes[0].element_types().size());
+  require_batch_memory(N, o, 10.0 + 20.0 * nb + 2.0 * ne);
+  py::tuple body_names = py::tuple(py::cast(detail::body_names_of(first)));
+  py::tuple elements = py::tuple(py::cast(scenes[0].element_types()));
+  BatchSceneSimulation b = run_without_gil(o, progress, [&](const SimulationOptions& opt) {
+    return simulate_batch(scenes, states, opt, dts, c.threads);  // a PythonForce takes the GIL back per call
+  });
+  BatchSceneResult r = to_batch_scene_result(std::move(b), std::move(body_names), std::move(elements), c.scalar_first);
+  warn_after_batch(r.diverged, r.unconverged_steps, method_info(o.method).name);
+  return r;
+}
+
+bool is_scene_model(py::handle model) {
+  return is_scene(model) || (is_sequence(model) && py::len(model) > 0 && is_scene(model[py::int_(0)]));
+}
+
+// The kind of the model (the first item of a sequence); TypeError naming model otherwise.
+py::object model_kind(py::handle model) {
+  const py::handle first = is_sequence(model) && py::len(model) > 0 ? py::handle(model[py::int_(0)]) : model;
+  for (const char* cls : {"RigidBody", "PlanarBody", "Particle"}) {
+    if (py::isinstance(first, py::module_::import("rigiddyn._core").attr(cls))) return py::str(cls);
+  }
+  py_io::throw_type_error(is_sequence(model) ? "model[0]" : "model",
+                          "a RigidBody, PlanarBody, Particle, Scene or CompiledScene, or a list of N of one kind", first);
+}
+
+py::typing::Union<BatchResult, BatchSceneResult> simulate_batch_py(py::handle model, py::handle initial, py::handle dt,
+                                                                   py::handle steps, py::handle method,
+                                                                   py::handle record_every, py::handle loads,
+                                                                   py::handle gravity, py::handle t0, py::handle threads,
+                                                                   py::handle simd, py::handle scalar_first,
+                                                                   py::handle progress) {
+  const CommonArgs c = as_common(steps, record_every, t0, threads, simd, scalar_first);
+  if (is_scene_model(model)) return py::cast(scene_batch(model, initial, dt, method, loads, gravity, c, progress));
+  const std::string kind = model_kind(model).cast<std::string>();
+  if (kind == "RigidBody") {
+    return py::cast(body_batch<RigidBody, RigidBodyState>(model, initial, dt, method, loads, gravity, c, progress,
+                                                          "RigidBody", "RigidBodyState", &states_from_dict));
+  }
+  if (kind == "PlanarBody") {
+    return py::cast(body_batch<PlanarBody, PlanarBodyState>(model, initial, dt, method, loads, gravity, c, progress,
+                                                            "PlanarBody", "PlanarBodyState", &planar_states_from_dict));
+  }
+  return py::cast(body_batch<Particle, ParticleState>(model, initial, dt, method, loads, gravity, c, progress, "Particle",
+                                                      "ParticleState", &particle_states_from_dict));
+}
+
+const char* const simulate_batch_doc = R"doc(
+N independent runs of `model`, one per initial state, with per-sample parameters, integrated in C++ on
+`threads` threads with the GIL released. Sample i is exactly rigiddyn.simulate(model_i, initial[i], dt_i, steps,
+method, record_every, loads_i, gravity_i, t0): the records equal N serial simulate calls bitwise, whatever the
+thread count.
+
+model: a Particle, PlanarBody or RigidBody shared by every sample, or a list of N of one kind (per-sample
+  mass [kg] and inertia about the centre of mass in B [kg m^2]); or a Scene or CompiledScene, or a list of N of
+  them (of the same structure: bodies and elements). A scene with a PythonForce runs, slowly: each call takes
+  the GIL, so its samples run one at a time.
+initial: a list of N states of the body's kind (ParticleState, PlanarBodyState, RigidBodyState), or a dict of
+  stacked arrays: RigidBody {'p_W': (N, 3) [m], 'q_WB': (N, 4) (x, y, z, w), or (w, x, y, z) with scalar_first,
+  'v_W': (N, 3) [m/s] in W, 'w_B': (N, 3) [rad/s] in B}; Particle {'p_W', 'v_W'}; PlanarBody {'p_W': (N, 2) [m],
+  'theta': (N,) [rad], 'v_W': (N, 2) [m/s], 'omega': (N,) [rad/s]}. A scene: a list of N lists of the states of
+  its bodies.
+dt: a float [s] for every sample or an (N,) array [s] (pint quantities converted). steps, record_every, t0,
+  method, scalar_first: as simulate, shared by every sample (so every sample has the same record count n).
+loads (bodies): as simulate (one schedule for every sample), or a list of N schedules (lists of AppliedLoad).
+gravity (bodies): as simulate (None/False, True, a 3-vector [m/s^2] in W), or an (N, 3) array [m/s^2] in W.
+  A scene declares its loads and gravity as elements (loads and gravity must be None).
+threads: None (the default: every hardware thread) or an int >= 1.
+simd: True runs the SIMD path across samples (RigidBody, method 'rk4', constant loads: a force in W and a
+  torque in B without time window): equal to the scalar path up to round-off, not bitwise.
+progress: None or a callable(samples_done), called with the GIL about every 0.05 s from the calling thread; an
+  exception it raises stops every sample and propagates. Ctrl-C stops every sample within about 0.05 s of a
+  sample's monitor check and raises KeyboardInterrupt (no result is kept).
+
+Returns a BatchResult (bodies) or a BatchSceneResult (scenes): the arrays of SimulationResult / SceneResult
+with a leading sample axis (N, n, ...). A sample whose state becomes non-finite stops alone: diverged[i] is
+True, filled[i] its rows, the rest of its rows NaN; one RuntimeWarning names how many samples diverged and
+the first few. Input errors (N = 0, mismatched N between model, initial, dt, gravity and loads, a wrong dict
+key or shape, threads < 1) raise ValueError/TypeError naming the argument before any sample runs; an error of
+one sample (a bad state, a body running out of mass) raises ValueError "sample <i>: ..." for the lowest such
+sample, after every sample has run.
+)doc";
+
+const char* const batch_result_doc = R"doc(
+The records of simulate_batch over bodies: N samples of n records each (the arrays of SimulationResult with a
+leading sample axis), read-only, sample-major. t (N, n) [s]; p_W (N, n, 3) centre of mass position in W [m];
+q_WB (N, n, 4) attitude, (x, y, z, w) unless scalar_first; v_W (N, n, 3) [m/s] in W; w_B (N, n, 3) [rad/s] in
+B; kinetic_energy, total_energy (N, n) [J]; angular_momentum_norm (N, n) |H_G| [kg m^2/s];
+quaternion_norm_error (N, n) |q| - 1; work (N, n) [J]. diverged (N,) bool; filled (N,) rows filled per sample
+(n unless it diverged: its rows after filled[i] are NaN); unconverged_steps (N,); elapsed_seconds: wall time
+of the whole batch [s]. len(result) is N; result[i] is sample i as a SimulationResult (its filled rows, copies);
+pickles.
+)doc";
+
+const char* const batch_scene_result_doc = R"doc(
+The records of simulate_batch over scenes: the arrays of SceneResult with a leading sample axis (N samples, n
+records, nb bodies, ne work columns), read-only: t (N, n) [s]; p_W, v_W, w_B, pivot_reaction_W,
+angular_momentum_O_W (N, n, nb, 3); q_WB (N, n, nb, 4); kinetic_energy, potential_energy, total_energy (N, n)
+[J]; linear_momentum_W, angular_momentum_W (N, n, 3); mass (N, n, nb) [kg]; work, power (N, n, ne) [J], [W];
+body_names and elements (the first scene's labels of the axes); diverged (N,) bool; filled (N,) rows filled per
+sample (the rest NaN); unconverged_steps (N,); elapsed_seconds: wall time of the batch [s]. Frames and units as
+SceneResult. len(result) is N; result[i] is sample i as a SceneResult (its filled rows, copies); pickles.
+)doc";
+
+template <class Result>
+void def_common(py::class_<Result>& cls, py::object (*sample)(const Result&, py::handle)) {
+  cls.def_readonly("diverged", &Result::diverged, "(N,) bool: the sample's state became non-finite; its run stopped")
+      .def_readonly("filled", &Result::filled, "(N,) int64: rows filled per sample (n unless it diverged)")
+      .def_readonly("unconverged_steps", &Result::unconverged_steps,
+                    "(N,) int64: steps whose implicit solve stopped at its iteration cap (0 for explicit methods)")
+      .def_readonly("elapsed_seconds", &Result::elapsed_seconds, "wall time of the whole batch [s]")
+      .def("__len__", [](const Result& r) { return r.samples(); }, "N, the number of samples")
+      .def("__getitem__", sample, py::arg("i"), "sample i's records (negative i counts from the end)");
+}
+
+py::object batch_sample_object(const BatchResult& r, py::handle key) { return batch_sample(r, key); }
+py::object batch_scene_sample_object(const BatchSceneResult& r, py::handle key) {
+  return py::cast(batch_scene_sample(r, key));
+}
+
+}  // namespace
+
+void bind_batch(py::module_& m) {
+  py::class_<BatchResult> batch(m, "BatchResult", batch_result_doc);
+  for (std::size_t k = 0; k < batch_array_count; ++k) {
+    static const char* const docs[batch_array_count] = {
+        "(N, n) time [s]",
+        "(N, n, 3) centre of mass position in W [m]",
+        "(N, n, 4) attitude, (x, y, z, w) unless scalar_first",
+        "(N, n, 3) centre of mass velocity in W [m/s]",
+        "(N, n, 3) angular velocity in B [rad/s]",
+        "(N, n) kinetic energy [J]",
+        "(N, n) kinetic + gravity potential [J]",
+        "(N, n) |H_G| about the centre of mass [kg m^2/s]",
+        "(N, n) |q| - 1",
+        "(N, n) work of loads and gravity since t0 [J]"};
+    batch.def_property_readonly(batch_arrays[k], [k](const BatchResult& r) { return r.arrays[k]; }, docs[k]);
+  }
+  def_common(batch, &batch_sample_object);
+  batch.def("__repr__", &batch_result_repr).def(py::pickle(&batch_result_state, &batch_result_from_state));
+
+  py::class_<BatchSceneResult> scene(m, "BatchSceneResult", batch_scene_result_doc);
+  for (std::size_t k = 0; k < scene_column_count; ++k) {
+    static const char* const docs[scene_column_count] = {
+        "(N, n) time [s]",
+        "(N, n, nb, 3) centre of mass positions in W [m]",
+        "(N, n, nb, 4) attitudes, (x, y, z, w) unless scalar_first",
+        "(N, n, nb, 3) centre of mass velocities in W [m/s]",
+        "(N, n, nb, 3) angular velocities, each in its body's B [rad/s]",
+        "(N, n) sum over the bodies [J]",
+        "(N, n) sum of the elements' potentials [J]",
+        "(N, n) kinetic + potential [J]",
+        "(N, n, 3) sum of m v_W, in W [kg m/s]",
+        "(N, n, 3) about W's origin, in W [kg m^2/s]",
+        "(N, n, nb, 3) the pivot's force on each body, in W [N]",
+        "(N, n, nb, 3) each body's angular momentum about its pivot (its centre of mass unpinned), in W [kg m^2/s]",
+        "(N, n, nb) each body's mass [kg]",
+        "(N, n, ne) each element's work since t0 [J]",
+        "(N, n, ne) each element's power at the record [W]"};
+    scene.def_property_readonly(scene_columns[k].name, [k](const BatchSceneResult& r) { return r.arrays[k]; }, docs[k]);
+  }
+  scene.def_readonly("body_names", &BatchSceneResult::body_names, "(nb,) tuple of the bodies' names")
+      .def_readonly("elements", &BatchSceneResult::elements, "(ne,) tuple of the work columns' class names");
+  def_common(scene, &batch_scene_sample_object);
+  scene.def("__repr__", &batch_scene_repr).def(py::pickle(&batch_scene_state, &batch_scene_from_state));
+
+  m.def("simulate_batch", &simulate_batch_py, py::arg("model"), py::arg("initial"), py::arg("dt"), py::arg("steps"),
+        py::arg("method") = py::none(), py::arg("record_every") = 1, py::arg("loads") = py::none(),
+        py::arg("gravity") = py::none(), py::arg("t0") = 0.0, py::arg("threads") = py::none(),
+        py::arg("simd") = false, py::arg("scalar_first") = false, py::arg("progress") = py::none(), simulate_batch_doc);
+  m.def("default_thread_count", &default_thread_count,
+        "The number of hardware threads (at least 1): simulate_batch's threads=None.");
+}
+
+}  // namespace rigiddyn::bindings

@@ -1,0 +1,68 @@
+// simulate_batch: N independent runs of one model (a body, or a compiled scene) from per-sample initial
+// states with per-sample parameters, on a thread pool (batch/parallel_for.hpp). Each sample is the EXISTING
+// single run (simulate/simulate.hpp, scene/simulate_scene.hpp) into a thread-owned record, copied once into
+// the sample's rows of the stacked result (batch/batch_result.hpp): the batch equals N serial simulate calls
+// bitwise, whatever the thread count. A sample whose state becomes non-finite stops alone (its diverged flag
+// set, the rest of its rows NaN); the other samples are untouched.
+//
+// Samples are handed out in chunks of consecutive indices, so that each thread writes one contiguous block
+// of the output (no false sharing between threads writing neighbouring rows).
+#pragma once
+#include "rigiddyn/batch/batch_result.hpp"
+#include "rigiddyn/scene/compile.hpp"
+#include "rigiddyn/scene/scene_simulation.hpp"
+#include "rigiddyn/simulate/simulate.hpp"
+
+#include <Eigen/Core>
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace rigiddyn {
+
+// Per-sample parameters; an empty vector means "the common value (SimulationOptions) for every sample".
+struct BatchParameters {
+  std::vector<double> dt;                       // (N,) step of each sample [s]; empty: common.dt
+  std::vector<Eigen::Vector3d> gravity_W;       // (N,) uniform gravity in W [m/s²]; empty: common.gravity_W
+  std::vector<std::vector<AppliedLoad>> loads;  // (N,) load schedules (models/loads.hpp); empty: common.loads
+};
+
+// The record count of one full run of `steps` steps recorded every `record_every`-th step: the first,
+// every record_every-th and the last (1 + ceil(steps / record_every)). std::invalid_argument naming steps
+// (< 0) or record_every (< 1).
+std::size_t batch_record_count(std::int64_t steps, std::int64_t record_every);
+
+// N = initial.size() runs: sample i is simulate(bodies[i] (or bodies[0] when one body is shared),
+// initial[i], options_i), options_i = common with the sample's dt, gravity_W and loads. threads >= 1 (the
+// calling thread is one of them; the Python layer turns None into default_thread_count()).
+// common.monitor, if set, is called from the calling thread only, with the number of samples done (about
+// every 10 ms while it waits, after each of its samples and at each of its samples' monitor checks);
+// returning true stops every sample at its next monitor check, skips those not started, and returns
+// the batch so far with interrupted set.
+// Checked before any thread starts (std::invalid_argument naming the argument and both sizes): N >= 1
+// ("initial"), bodies 1 or N ("bodies"), per_sample's vectors empty or N ("dt", "gravity", "loads"),
+// threads >= 1, steps >= 0, record_every >= 1. Every other check is simulate's, per sample: its exception
+// of the lowest failing sample is rethrown after every thread has joined, the message prefixed with
+// "sample <i>: " (std::invalid_argument, std::domain_error and std::runtime_error keep their type; any
+// other exception, e.g. a Python force's, propagates unchanged).
+BatchTrajectory simulate_batch(const std::vector<RigidBody>& bodies, const std::vector<RigidBodyState>& initial,
+                               const SimulationOptions& common, const BatchParameters& per_sample, int threads);
+// The same for particles (records: q_WB = identity, w_B = 0) and planar bodies (p_W = (x, y, 0),
+// q_WB = Rz(θ), w_B = (0, 0, ω)), as simulate records them.
+BatchTrajectory simulate_batch(const std::vector<Particle>& particles, const std::vector<ParticleState>& initial,
+                               const SimulationOptions& common, const BatchParameters& per_sample, int threads);
+BatchTrajectory simulate_batch(const std::vector<PlanarBody>& bodies, const std::vector<PlanarBodyState>& initial,
+                               const SimulationOptions& common, const BatchParameters& per_sample, int threads);
+
+// N = initial.size() runs of simulate(scenes[i] (or scenes[0] when one is shared), initial[i], options_i),
+// options_i = common with the sample's dt (dt empty: common.dt). A scene's gravity and loads are its
+// elements (common.gravity_W and common.loads must be left empty, as simulate requires). N scenes must have
+// the same structure: as many bodies and work columns as scenes[0] ("scenes[i]"). Checks, monitor, threads
+// and exceptions as the bodies' simulate_batch above (a sample whose body runs out of mass: "sample <i>:
+// mass_flows[..]: ...").
+BatchSceneSimulation simulate_batch(const std::vector<CompiledScene>& scenes,
+                                    const std::vector<std::vector<BodyState>>& initial,
+                                    const SimulationOptions& common, const std::vector<double>& dt, int threads);
+
+}  // namespace rigiddyn
