@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Installs everything rigiddyn's tests need, then runs every test: pytest (Python API against the
-# numpy reference, SciPy and exact solutions) and ctest (C++ unit tests, the find_package
-# packaging test, and the benchmarks at a small size). Run from the repository root:
+# numpy reference, SciPy and exact solutions), ctest (C++ unit tests, the find_package packaging
+# test, and the benchmarks at a small size) and the documentation site (built with warnings as
+# errors, its gallery run, then checked in headless chromium: tests/docs/run.sh). Run from the
+# repository root:
 #   bash tests/run_all.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -13,16 +15,7 @@ if [ "${1:-}" = "--list-packages" ]; then
   printf '%s\n' "${packages[@]}"
   exit 0
 fi
-missing=()
-for p in "${packages[@]}"; do
-  dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p")
-done
-if ((${#missing[@]})); then
-  sudo=""
-  [ "$(id -u)" -eq 0 ] || sudo="sudo"
-  $sudo apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${missing[@]}"
-fi
+bash tests/install_debian_packages.sh "${packages[@]}"
 
 # reuse earlier compilations when ccache is there (CMake reads this variable; optional)
 if command -v ccache >/dev/null 2>&1; then export CMAKE_CXX_COMPILER_LAUNCHER=ccache; fi
@@ -40,3 +33,6 @@ if ! ctest --preset test --label-regex bench --verbose > "$log" 2>&1; then
   exit 1
 fi
 grep -E ": ratio |Test +#" "$log" || true
+
+# the documentation site: the gallery's examples run and assert in the build; pages, images and links checked
+bash tests/docs/run.sh

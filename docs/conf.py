@@ -1,0 +1,112 @@
+"""Sphinx configuration of rigiddyn's documentation site (furo, MyST Markdown, autodoc + autosummary,
+sphinx-gallery).
+
+Build (README, "Documentation"), warnings as errors:
+
+    python3 -m pip install ".[docs]" && python3 -m sphinx -W -b html docs docs/_build/html
+
+and check the built site (headless chromium, internal links): ``bash tests/docs/run.sh``.
+
+Iterating on prose without running the gallery (every docs/examples/plot_*.py runs at each full build):
+
+    RIGIDDYN_DOCS_GALLERY=0 python3 -m sphinx -W -b html docs /tmp/html      # gallery pages, no run, no figures
+    RIGIDDYN_DOCS_EXAMPLES=plot_kepler python3 -m sphinx -W -b html docs /tmp/html   # run only the
+                                                 # examples whose path matches this regular expression
+
+(the first is sphinx-gallery's ``plot_gallery`` option, also ``-D plot_gallery=0``; the second its
+``filename_pattern``). A build of the published site sets neither.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import sys
+from pathlib import Path
+
+import rigiddyn
+
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE / "_ext"))  # rigiddyn_docstrings (the docstring hook), gallery_order
+
+from rigiddyn_docstrings import render_docstring  # noqa: E402
+from sphinx.util.docstrings import prepare_docstring  # noqa: E402
+
+project = "rigiddyn"
+author = "the rigiddyn developers"
+copyright = "the rigiddyn developers, BSD-3-Clause"
+version = release = rigiddyn.__version__
+
+extensions = [
+    "myst_parser",
+    "sphinx.ext.autodoc",
+    "sphinx.ext.autosummary",
+    "sphinx.ext.mathjax",
+    "sphinx_gallery.gen_gallery",
+]
+
+source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
+root_doc = "index"
+templates_path = ["_templates"]
+# examples/: the gallery's sources (sphinx-gallery turns them into auto_examples/); _build: the output
+exclude_patterns = ["_build", "examples", "Thumbs.db", ".DS_Store"]
+
+# MyST: ::: fences for directives, $...$ and $$...$$ math, definition lists; anchors for headings
+# down to ### so that [text](page.md#a-heading) links resolve (and are checked)
+myst_enable_extensions = ["colon_fence", "dollarmath", "deflist"]
+myst_heading_anchors = 3
+
+# no intersphinx: the build needs no network
+
+# ---- API reference (docs/api/): autosummary writes one page per name into docs/api/generated/
+autosummary_generate = True
+# classes: every member, documented or not (docs/_templates/autosummary/class.rst); modules: their docstring
+# and the names listed on the page
+autoclass_content = "class"          # the class docstring; pybind11's __init__ docstrings are signatures only
+autodoc_class_signature = "mixed"
+autodoc_member_order = "bysource"
+autodoc_typehints = "signature"
+autodoc_inherit_docstrings = False   # a pybind11 class inherits object's generic docstrings otherwise
+
+
+def _render(app, what, name, obj, options, lines):  # noqa: ARG001  (Sphinx's event signature)
+    """rigiddyn's docstrings are free-form text (pybind11 and Python alike), whose line layout carries
+    meaning (aligned forms, "argument: ..." lines with indented continuations, code samples); reST would
+    reflow or misread it. Render each one faithfully (rigiddyn_docstrings.render_docstring)."""
+    if not (name == "rigiddyn" or name.startswith("rigiddyn.")):
+        return
+    if what in ("data", "attribute") and lines == prepare_docstring(type(obj).__doc__ or ""):
+        lines[:] = []  # a constant's type's docstring (tuple's, float's, an enum's): not the constant's
+    else:
+        lines[:] = render_docstring(lines)
+
+
+def setup(app):
+    app.connect("autodoc-process-docstring", _render)
+
+
+# ---- gallery: every docs/examples/plot_*.py runs at build time; a failing example fails the build
+_examples = os.environ.get("RIGIDDYN_DOCS_EXAMPLES")
+sphinx_gallery_conf = {
+    "examples_dirs": ["examples"],
+    "gallery_dirs": ["auto_examples"],
+    "filename_pattern": _examples if _examples else re.escape(os.sep) + "plot_",
+    "ignore_pattern": r"__init__\.py",
+    "within_subsection_order": "gallery_order.TextbookOrder",   # docs/_ext/gallery_order.py
+    "plot_gallery": os.environ.get("RIGIDDYN_DOCS_GALLERY", "1") != "0",
+    "abort_on_example_error": True,
+    "only_warn_on_example_error": False,
+    "image_scrapers": ("matplotlib",),
+    "download_all_examples": False,
+    "remove_config_comments": True,
+    "show_memory": False,
+    # no sg_execution_times pages: their table needs jQuery and DataTables from a CDN (a console error
+    # offline, and in the browser check)
+    "write_computation_times": False,
+}
+
+# ---- HTML
+html_theme = "furo"
+html_title = f"rigiddyn {release}"
+html_static_path = ["_static"]
+html_css_files = ["rigiddyn.css"]
