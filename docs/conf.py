@@ -42,6 +42,9 @@ extensions = [
     "sphinx.ext.autodoc",
     "sphinx.ext.autosummary",
     "sphinx.ext.mathjax",
+    # MathJax 3 shipped inside the built site (docs/_build/html/_static/mathjax) instead of loaded from
+    # its CDN: the pages render their equations offline, and the browser check sees them typeset
+    "sphinx-mathjax-offline",
     "sphinx_gallery.gen_gallery",
 ]
 

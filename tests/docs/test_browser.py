@@ -78,3 +78,28 @@ def test_gallery_pages_have_figures(site: Site, browser):
     assert len(pages) >= 2, "the gallery has no example pages"
     without = [str(p.relative_to(site.root)) for p in pages if open_page(browser, p)["images"] < 1]
     assert not without, f"gallery pages without an image: {without}"
+
+
+# equations: Sphinx writes each as an element of class "math"; MathJax (shipped in the site's _static,
+# docs/conf.py) replaces its TeX by an <mjx-container>, asynchronously, once its startup promise resolves
+MATH_TYPESET = """
+const done = arguments[arguments.length - 1];
+const count = () => ({math: document.querySelectorAll('.math').length,
+                      typeset: document.querySelectorAll('mjx-container').length});
+if (!window.MathJax || !MathJax.startup || !MathJax.startup.promise) { done({...count(), loaded: false}); return; }
+MathJax.startup.promise.then(() => done({...count(), loaded: true}), () => done({...count(), loaded: false}));
+"""
+
+
+def test_equations_are_typeset_offline(site: Site, browser):
+    pages = [p for p in site.pages() if 'class="math' in p.read_text(encoding="utf-8")]
+    assert pages, "no page has an equation: the check would test nothing"
+    browser.set_script_timeout(60)
+    failures = []
+    for page in pages:
+        browser.get(page.as_uri())
+        seen = browser.execute_async_script(MATH_TYPESET)
+        if not seen["loaded"] or seen["typeset"] < 1:
+            failures.append(f"{page.relative_to(site.root)}: {seen['math']} equations, MathJax loaded "
+                            f"{seen['loaded']}, {seen['typeset']} typeset")
+    assert not failures, f"equations not typeset in {len(failures)} of {len(pages)} pages:\n" + "\n".join(failures)
