@@ -8,8 +8,12 @@
 // Eigen's expression evaluation (operator=, packet access) is forced inline in this translation unit (the
 // define below, before any Eigen header): GCC 12 otherwise outlines the assignments of lane expressions from
 // the stepping loop ("call is unlikely and code size would grow"), measured 1.5-2x SLOWER than the scalar
-// hand loop instead of 2.2x faster. It changes inlining decisions only, never an operation.
+// hand loop instead of 2.2x faster. It changes inlining decisions only, never an operation. The sanitizer
+// build (RIGIDDYN_SANITIZE_BUILD, CMakeLists.txt) leaves it out, and the clones below: under ASan's
+// instrumentation they made this file take ~6 minutes to compile, and the sanitizers check memory, not speed.
+#ifndef RIGIDDYN_SANITIZE_BUILD
 #define EIGEN_STRONG_INLINE inline __attribute__((always_inline))
+#endif
 #include "rigiddyn/batch/simd_rigid_body.hpp"
 
 #include "rigiddyn/batch/parallel_for.hpp"
@@ -53,7 +57,7 @@ using VectorLanes8 = Lanes<8>;
 // clones round every operation as the scalar path does (the tests hold for both). Measured
 // (bench/bench_simd.cpp, one core): vector4 3.4-3.6x the scalar hand loop in the AVX2 clone, 2.2x in the
 // default one; Eigen's arrays 2.2x in both (their packets are fixed at SSE2 when the library is compiled).
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__) && !defined(RIGIDDYN_SANITIZE_BUILD)
 #define RIGIDDYN_SIMD_CLONES __attribute__((target_clones("avx2", "default")))
 #else
 #define RIGIDDYN_SIMD_CLONES
