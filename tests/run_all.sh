@@ -10,18 +10,20 @@ cd "$(dirname "$0")/.."
 
 # Debian packages for the C++ tests and benchmarks (installed only when missing). .ci/run checks
 # that every system header the C++ build reads comes from one of these (or their dependencies).
-packages=(cmake ninja-build g++ libeigen3-dev libgtest-dev libbenchmark-dev libboost-dev)
+packages=(cmake ninja-build g++ ccache libeigen3-dev libgtest-dev libbenchmark-dev libboost-dev)
 if [ "${1:-}" = "--list-packages" ]; then
   printf '%s\n' "${packages[@]}"
   exit 0
 fi
 bash tests/install_debian_packages.sh "${packages[@]}"
 
-# reuse earlier compilations when ccache is there (CMake reads this variable; optional)
-if command -v ccache >/dev/null 2>&1; then export CMAKE_CXX_COMPILER_LAUNCHER=ccache; fi
+# ccache: the library compiled once for the extension (pip) serves the C++ tests' build below, and a
+# second run reuses every compilation. CCACHE_BASEDIR makes the paths relative, so the two build folders
+# (build/<wheel tag>, build/test) share entries. CMake reads CMAKE_CXX_COMPILER_LAUNCHER.
+export CMAKE_CXX_COMPILER_LAUNCHER=ccache CCACHE_BASEDIR="$PWD"
 
 python3 -m pip install --quiet ".[test]"
-python3 -m pytest
+python3 -m pytest -n auto
 
 cmake --preset test
 cmake --build --preset test -j 2
