@@ -66,6 +66,7 @@ struct SimulationResult {
   bool diverged;
   std::int64_t unconverged_steps;
   double elapsed_seconds;
+  bool scalar_first = false;  // q_WB rows as (w, x, y, z)
 };
 
 SimulationResult to_result(Trajectory&& tr, bool scalar_first) {
@@ -83,7 +84,8 @@ SimulationResult to_result(Trajectory&& tr, bool scalar_first) {
                           adopt(std::move(tr.work), {n}),
                           tr.diverged,
                           tr.unconverged_steps,
-                          tr.elapsed_seconds};
+                          tr.elapsed_seconds,
+                          scalar_first};
 }
 
 template <class Body, class State>
@@ -133,7 +135,8 @@ constexpr const char* result_arrays[] = {"t", "p_W", "q_WB", "v_W", "w_B", "kine
 
 py::tuple result_state(const SimulationResult& r) {
   return py::make_tuple(r.t, r.p_W, r.q_WB, r.v_W, r.w_B, r.kinetic_energy, r.total_energy, r.angular_momentum_norm,
-                        r.quaternion_norm_error, r.work, r.diverged, r.unconverged_steps, r.elapsed_seconds);
+                        r.quaternion_norm_error, r.work, r.diverged, r.unconverged_steps, r.elapsed_seconds,
+                        r.scalar_first);
 }
 
 // A pickled array as a read-only float64 copy of the shape it must have ((n,) or (n, k), n records).
@@ -148,13 +151,16 @@ Array unpickled_array(py::handle obj, const char* name, py::ssize_t n, py::ssize
   return a;
 }
 
+// 13 items: a state without scalar_first (q_WB as (x, y, z, w)), as simulate_batch's samples and earlier pickles
 SimulationResult result_from_state(const py::tuple& t) {
-  if (t.size() != 13) py_io::throw_value_error("SimulationResult pickle", "a tuple of 13 items", std::to_string(t.size()) + " items");
+  if (t.size() != 13 && t.size() != 14) {
+    py_io::throw_value_error("SimulationResult pickle", "a tuple of 13 or 14 items", std::to_string(t.size()) + " items");
+  }
   const py::ssize_t n = py::len(t[0]);
   auto column = [&](int i, py::ssize_t k) { return unpickled_array(t[i], result_arrays[i], n, k); };
   return SimulationResult{column(0, 0), column(1, 3), column(2, 4), column(3, 3), column(4, 3), column(5, 0),
                           column(6, 0), column(7, 0), column(8, 0), column(9, 0), t[10].cast<bool>(),
-                          t[11].cast<std::int64_t>(), t[12].cast<double>()};
+                          t[11].cast<std::int64_t>(), t[12].cast<double>(), t.size() == 14 && t[13].cast<bool>()};
 }
 
 // "SimulationResult(records=n, t=[t0, t_end], diverged=..., unconverged_steps=..., elapsed_seconds=...)".
@@ -334,6 +340,8 @@ void bind_dynamics(py::module_& m) {
                     "number of steps whose implicit solve stopped at its iteration cap (implicit_midpoint; "
                     "0 for explicit methods); simulate warns RuntimeWarning when > 0")
       .def_readonly("elapsed_seconds", &SimulationResult::elapsed_seconds, "wall time of the C++ stepping loop [s]")
+      .def_readonly("scalar_first", &SimulationResult::scalar_first,
+                    "True if q_WB's rows are (w, x, y, z): the result of simulate(..., scalar_first=True)")
       .def("__repr__", &result_repr)
       .def(py::pickle(&result_state, &result_from_state))
       // the table lives in Python (rigiddyn/trajectory.py): one definition of the columns for CSV, npz,
@@ -341,16 +349,16 @@ void bind_dynamics(py::module_& m) {
       .def(
           "to_dataframe",
           [](py::object self, py::handle scalar_first) {
-            return py::module_::import("rigiddyn.trajectory")
-                .attr("to_dataframe")(self, py_io::as_bool(scalar_first, "scalar_first"));
+            return py::module_::import("rigiddyn.trajectory").attr("to_dataframe")(self, scalar_first);
           },
-          py::arg("scalar_first") = false,
+          py::arg("scalar_first") = py::none(),
           "A pandas.DataFrame of the records (needs pandas: pip install 'rigiddyn[dataframe]'): one row per "
           "record, one column per scalar with its unit, as the CSV of `python -m rigiddyn simulate`: 't [s]' "
           "(a column, not the index), 'p_W_x [m]' .. 'q_WB_x' .. 'q_WB_w', 'v_W_x [m/s]' .., 'w_B_x [rad/s]' "
           ".., 'kinetic_energy [J]', 'total_energy [J]', 'angular_momentum_norm [kg m^2/s]', "
-          "'quaternion_norm_error', 'work [J]'. scalar_first=True for a result of simulate(..., "
-          "scalar_first=True) (q_WB as (w, x, y, z); the result does not record it).");
+          "'quaternion_norm_error', 'work [J]'; q_WB's columns in the result's order ('q_WB_w' first when "
+          "its scalar_first is True). scalar_first: None (the default) for the order the result records; "
+          "True or False declares the order of its q_WB rows instead.");
 
 #define RIGIDDYN_SIMULATE_ARGS                                                                              \
   py::arg("model"), py::arg("initial"), py::arg("dt"), py::arg("steps"), py::arg("method") = py::none(),      \

@@ -287,7 +287,8 @@ SceneResult to_scene_result(SceneSimulation&& r, const Scene& scene, const Compi
                      element_kinds(compiled),
                      r.diverged,
                      r.unconverged_steps,
-                     r.elapsed_seconds};
+                     r.elapsed_seconds,
+                     scalar_first};
 }
 
 // The arrays of a SceneResult in pickle order, with their shapes after the record axis (-1: bodies,
@@ -317,20 +318,22 @@ const ResultArray result_arrays[] = {
 constexpr std::size_t result_array_count = sizeof(result_arrays) / sizeof(result_arrays[0]);
 
 py::tuple scene_result_state(const SceneResult& r) {
-  py::tuple out(result_array_count + 5);
+  py::tuple out(result_array_count + 6);
   for (std::size_t i = 0; i < result_array_count; ++i) out[i] = r.*(result_arrays[i].member);
   out[result_array_count] = r.body_names;
   out[result_array_count + 1] = r.elements;
   out[result_array_count + 2] = py::bool_(r.diverged);
   out[result_array_count + 3] = py::int_(r.unconverged_steps);
   out[result_array_count + 4] = py::float_(r.elapsed_seconds);
+  out[result_array_count + 5] = py::bool_(r.scalar_first);
   return out;
 }
 
+// result_array_count + 5 items: a state without scalar_first (q_WB as (x, y, z, w)), as earlier pickles
 SceneResult scene_result_from_state(const py::tuple& t) {
-  if (t.size() != result_array_count + 5) {
-    py_io::throw_value_error("SceneResult pickle", "a tuple of " + std::to_string(result_array_count + 5) + " items",
-                             std::to_string(t.size()) + " items");
+  if (t.size() != result_array_count + 5 && t.size() != result_array_count + 6) {
+    py_io::throw_value_error("SceneResult pickle", "a tuple of " + std::to_string(result_array_count + 5) + " or " +
+                             std::to_string(result_array_count + 6) + " items", std::to_string(t.size()) + " items");
   }
   SceneResult r;
   r.body_names = py::tuple(t[result_array_count]);
@@ -355,6 +358,7 @@ SceneResult scene_result_from_state(const py::tuple& t) {
   r.diverged = t[result_array_count + 2].cast<bool>();
   r.unconverged_steps = t[result_array_count + 3].cast<std::int64_t>();
   r.elapsed_seconds = t[result_array_count + 4].cast<double>();
+  r.scalar_first = t.size() == result_array_count + 6 && t[result_array_count + 5].cast<bool>();
   return r;
 }
 
@@ -666,21 +670,24 @@ void bind_scene(py::module_& m) {
       .def_readonly("unconverged_steps", &SceneResult::unconverged_steps,
                     "number of steps whose implicit solve stopped at its iteration cap (0 for explicit methods)")
       .def_readonly("elapsed_seconds", &SceneResult::elapsed_seconds, "wall time of the C++ stepping loop [s]")
+      .def_readonly("scalar_first", &SceneResult::scalar_first,
+                    "True if q_WB's rows are (w, x, y, z): the result of simulate(..., scalar_first=True)")
       .def("__repr__", &scene_result_repr)
       .def(py::pickle(&scene_result_state, &scene_result_from_state))
       .def(
           "to_dataframe",
           [](py::object self, py::handle scalar_first) {
-            return py::module_::import("rigiddyn.scene_result")
-                .attr("to_dataframe")(self, py_io::as_bool(scalar_first, "scalar_first"));
+            return py::module_::import("rigiddyn.scene_result").attr("to_dataframe")(self, scalar_first);
           },
-          py::arg("scalar_first") = false,
+          py::arg("scalar_first") = py::none(),
           "A pandas.DataFrame of the records (needs pandas): one row per record, one column per scalar with its "
           "unit (wide format; rigiddyn.scene_result documents the columns): 't [s]', then per body "
           "'<name>:p_W_x [m]' .. '<name>:q_WB_x' .. '<name>:v_W_x [m/s]' .. '<name>:w_B_x [rad/s]' .., then "
           "'kinetic_energy [J]', 'potential_energy [J]', 'total_energy [J]', 'linear_momentum_W_x [kg m/s]' .., "
           "'angular_momentum_W_x [kg m^2/s]' .., then per element i 'work[i] <Class> [J]' and 'power[i] <Class> "
-          "[W]'. scalar_first=True for a result of simulate(..., scalar_first=True).");
+          "[W]'; q_WB's columns in the result's order ('<name>:q_WB_w' first when its scalar_first is True). "
+          "scalar_first: None (the default) for the order the result records; True or False declares the order "
+          "of its q_WB rows instead.");
 }
 
 }  // namespace rigiddyn::bindings

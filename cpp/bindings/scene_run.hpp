@@ -33,6 +33,7 @@ struct SceneResult {
   bool diverged;
   std::int64_t unconverged_steps;
   double elapsed_seconds;
+  bool scalar_first = false;  // q_WB rows as (w, x, y, z)
 };
 
 // True for a Scene or a CompiledScene.

@@ -2114,9 +2114,9 @@ class SceneResult:
         ...
     def __setstate__(self, arg0: tuple) -> None:
         ...
-    def to_dataframe(self, scalar_first: typing.Any = False) -> typing.Any:
+    def to_dataframe(self, scalar_first: typing.Any = None) -> typing.Any:
         """
-        A pandas.DataFrame of the records (needs pandas): one row per record, one column per scalar with its unit (wide format; rigiddyn.scene_result documents the columns): 't [s]', then per body '<name>:p_W_x [m]' .. '<name>:q_WB_x' .. '<name>:v_W_x [m/s]' .. '<name>:w_B_x [rad/s]' .., then 'kinetic_energy [J]', 'potential_energy [J]', 'total_energy [J]', 'linear_momentum_W_x [kg m/s]' .., 'angular_momentum_W_x [kg m^2/s]' .., then per element i 'work[i] <Class> [J]' and 'power[i] <Class> [W]'. scalar_first=True for a result of simulate(..., scalar_first=True).
+        A pandas.DataFrame of the records (needs pandas): one row per record, one column per scalar with its unit (wide format; rigiddyn.scene_result documents the columns): 't [s]', then per body '<name>:p_W_x [m]' .. '<name>:q_WB_x' .. '<name>:v_W_x [m/s]' .. '<name>:w_B_x [rad/s]' .., then 'kinetic_energy [J]', 'potential_energy [J]', 'total_energy [J]', 'linear_momentum_W_x [kg m/s]' .., 'angular_momentum_W_x [kg m^2/s]' .., then per element i 'work[i] <Class> [J]' and 'power[i] <Class> [W]'; q_WB's columns in the result's order ('<name>:q_WB_w' first when its scalar_first is True). scalar_first: None (the default) for the order the result records; True or False declares the order of its q_WB rows instead.
         """
     @property
     def angular_momentum_O_W(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -2187,6 +2187,11 @@ class SceneResult:
     def q_WB(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         (n, nb, 4) attitudes, (x, y, z, w) unless scalar_first
+        """
+    @property
+    def scalar_first(self) -> bool:
+        """
+        True if q_WB's rows are (w, x, y, z): the result of simulate(..., scalar_first=True)
         """
     @property
     def t(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -2268,9 +2273,9 @@ class SimulationResult:
         ...
     def __setstate__(self, arg0: tuple) -> None:
         ...
-    def to_dataframe(self, scalar_first: typing.Any = False) -> typing.Any:
+    def to_dataframe(self, scalar_first: typing.Any = None) -> typing.Any:
         """
-        A pandas.DataFrame of the records (needs pandas: pip install 'rigiddyn[dataframe]'): one row per record, one column per scalar with its unit, as the CSV of `python -m rigiddyn simulate`: 't [s]' (a column, not the index), 'p_W_x [m]' .. 'q_WB_x' .. 'q_WB_w', 'v_W_x [m/s]' .., 'w_B_x [rad/s]' .., 'kinetic_energy [J]', 'total_energy [J]', 'angular_momentum_norm [kg m^2/s]', 'quaternion_norm_error', 'work [J]'. scalar_first=True for a result of simulate(..., scalar_first=True) (q_WB as (w, x, y, z); the result does not record it).
+        A pandas.DataFrame of the records (needs pandas: pip install 'rigiddyn[dataframe]'): one row per record, one column per scalar with its unit, as the CSV of `python -m rigiddyn simulate`: 't [s]' (a column, not the index), 'p_W_x [m]' .. 'q_WB_x' .. 'q_WB_w', 'v_W_x [m/s]' .., 'w_B_x [rad/s]' .., 'kinetic_energy [J]', 'total_energy [J]', 'angular_momentum_norm [kg m^2/s]', 'quaternion_norm_error', 'work [J]'; q_WB's columns in the result's order ('q_WB_w' first when its scalar_first is True). scalar_first: None (the default) for the order the result records; True or False declares the order of its q_WB rows instead.
         """
     @property
     def angular_momentum_norm(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -2306,6 +2311,11 @@ class SimulationResult:
     def quaternion_norm_error(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         (n,) |q| - 1
+        """
+    @property
+    def scalar_first(self) -> bool:
+        """
+        True if q_WB's rows are (w, x, y, z): the result of simulate(..., scalar_first=True)
         """
     @property
     def t(self) -> numpy.typing.NDArray[numpy.float64]:

@@ -53,14 +53,15 @@ def _unit(name: str, unit: str | None) -> str:
     return name if unit is None else f"{name} [{unit}]"
 
 
-def columns(result: Any, scalar_first: bool = False) -> dict[str, np.ndarray]:
+def columns(result: Any, scalar_first: bool | None = None) -> dict[str, np.ndarray]:
     """The columns of a SceneResult: name -> contiguous float64 (n,) array, in table order.
 
-    scalar_first: the result's q_WB rows are (w, x, y, z), i.e. it came from
-    ``simulate(..., scalar_first=True)`` (the result does not record it); default (x, y, z, w).
+    scalar_first: the order of the result's q_WB rows; None (the default): the order the result records
+    (``result.scalar_first``, set by ``simulate(..., scalar_first=True)``); True or False declares it.
     """
-    if not isinstance(scalar_first, (bool, np.bool_)):
-        raise TypeError(f"scalar_first: expected True or False, got {scalar_first!r}")
+    from .trajectory import stored_order
+
+    scalar_first = stored_order(result, scalar_first)
     out: dict[str, np.ndarray] = {"t [s]": np.ascontiguousarray(result.t, dtype=np.float64)}
     for b, body in enumerate(result.body_names):
         for field, (components, unit) in BODY_FIELDS.items():
@@ -85,12 +86,12 @@ def columns(result: Any, scalar_first: bool = False) -> dict[str, np.ndarray]:
     return out
 
 
-def column_names(result: Any, scalar_first: bool = False) -> list[str]:
+def column_names(result: Any, scalar_first: bool | None = None) -> list[str]:
     """The table's column names in order (they depend on the scene's bodies and elements)."""
     return list(columns(result, scalar_first))
 
 
-def to_dataframe(result: Any, scalar_first: bool = False) -> Any:
+def to_dataframe(result: Any, scalar_first: bool | None = None) -> Any:
     """The table as a pandas.DataFrame (needs pandas: pip install 'rigiddyn[dataframe]')."""
     try:
         import pandas as pd

@@ -4,18 +4,24 @@ simulate_command.run_simulate hands a scene file (a .toml with [[body]] tables, 
 name, rigiddyn.scene_file.example_scenes()) to run_scene_simulate. The scene's [run] gives the defaults
 of --method, --dt, --duration and --record-every; the command-line options override them.
 
-Writes to --out: trajectory.csv, trajectory.npz, trajectory.parquet (when pyarrow is installed) and
-run.json. The tables are WIDE, one row per record, the columns of rigiddyn.scene_result (what
+Writes to --out (default: simulate-<name>, as for a problem): trajectory.csv, trajectory.npz,
+trajectory.parquet (when pyarrow is installed), run.json and trajectory.png (unless --no-plot). The
+tables are WIDE, one row per record, the columns of rigiddyn.scene_result (what
 SceneResult.to_dataframe gives): ``t [s]``, then per body ``<name>:p_W_x [m]`` .. ``<name>:q_WB_x`` ..
 ``<name>:v_W_x [m/s]`` .. ``<name>:w_B_x [rad/s]``, ``<name>:pivot_reaction_W_x [N]`` ..,
 ``<name>:angular_momentum_O_W_x [kg m^2/s]`` .., ``<name>:mass [kg]``, then the energies, momenta, and
 each element's ``work[i] <Class> [J]`` and ``power[i] <Class> [W]`` (in a moving frame, the fictitious
-terms' too: CentrifugalForce, CoriolisForce, ...). The summary line says what matters for the scene: the
-energy drift (the Jacobi integral in a frame turning at a constant rate), the mass burnt by each body
-with a mass flow (whose energy is not conserved: the thrust works), the range of each pivot's reaction. One file rather than one per body: the
-scene-wide columns (energy, momenta, work) belong to a record, and ``df.filter(like="sat:")`` selects
-a body. No plot or animation yet (trajectory_plot draws one body): --animate is refused, --attitude
-and the plot are skipped with a note.
+terms' too: CentrifugalForce, CoriolisForce, ...). One file rather than one per body: the scene-wide
+columns (energy, momenta, work) belong to a record, and ``df.filter(like="sat:")`` selects a body. The
+plot overlays the bodies (rigiddyn.trajectory_plot.scene_figure: positions, the angular velocity and
+attitude of the bodies that have one, energies and work, |H|, the masses when they change);
+--animate (one body's axes) is refused.
+
+The summary line says what matters for the scene: the energy drift when every element is conservative
+(the Jacobi integral in a frame turning at a constant rate); the energy balance T(t) - T(0) - W(t) (W
+the work of every element) when one is not (damping, drag, scheduled loads, a force in Python); the
+mass burnt by each body with a mass flow (whose energy is not conserved: the thrust works); the range
+of each pivot's reaction. The files are written all at once after the run, as simulate_command's.
 """
 
 from __future__ import annotations
@@ -31,7 +37,7 @@ from typing import Any
 import numpy as np
 
 from . import _core
-from .out_folder import check_out_folder
+from .out_folder import EXIT_EXISTS, OutFolder, OutputExists
 from .scene_file import SceneFile, read_scene
 
 if sys.version_info >= (3, 11):
@@ -41,8 +47,11 @@ else:  # pragma: no cover - exercised on Python 3.9/3.10 only
 
 __all__ = ["SCENE_OUTPUTS", "is_scene_file", "run_scene_simulate"]
 
-SCENE_OUTPUTS = ("trajectory.csv", "trajectory.npz", "trajectory.parquet", "run.json")
+SCENE_OUTPUTS = ("trajectory.csv", "trajectory.npz", "trajectory.parquet", "run.json", "trajectory.png")
 MAX_DEFAULT_RECORDS = 10_000  # as simulate_command: without --record-every or [run] record_every
+# the elements whose forces derive from a potential (SpringDamper only without damping): a scene of
+# these alone conserves its total energy
+CONSERVATIVE = ("UniformGravity", "PointMassGravity", "MutualGravity", "GravityGradient", "SpringDamper")
 
 
 def is_scene_file(path_or_name: str) -> bool:
@@ -64,6 +73,9 @@ class _ScenePlan:
     """The checked settings of one `simulate` of a scene file."""
 
     def __init__(self, args: argparse.Namespace) -> None:
+        from .simulate_command import default_out, step_count
+        from .trajectory_plot import check_attitude
+
         try:
             self.file: SceneFile = read_scene(args.problem)
         except ValueError as e:
@@ -78,23 +90,40 @@ class _ScenePlan:
         if dt is None:
             raise ValueError("--dt: expected a time step [s] > 0 (or dt in the scene's [run]), got nothing")
         self.dt: float = dt
-        if args.steps is not None:
-            self.steps: int = args.steps
-        else:
-            duration = args.duration if args.duration is not None else run.duration
-            if duration is None:
-                raise ValueError("--duration: expected a time span [s] (or --steps, or duration in the scene's [run]), "
-                                 "got nothing")
-            self.steps = round(duration / self.dt)
-            if self.steps < 1:
-                raise ValueError(f"--duration: expected a time span >= dt = {self.dt!r} s, got {duration!r}")
+        duration = args.duration if args.duration is not None else run.duration
+        if args.steps is None and duration is None:
+            raise ValueError("--duration: expected a time span [s] (or --steps, or duration in the scene's [run]), "
+                             "got nothing")
+        self.steps = step_count(args.steps, duration, self.dt)
         self.record_every: int = (args.record_every if args.record_every is not None else
                                   max(run.record_every, -(-self.steps // MAX_DEFAULT_RECORDS)))
         if args.animate:
             raise ValueError(f"--animate: expected a problem file (scene files have no animation yet), "
                              f"got the scene {args.problem!r}")
-        self.out = check_out_folder(args.out, SCENE_OUTPUTS)
+        self.attitude = check_attitude(args.attitude)
+        self.plot = not args.no_plot and _matplotlib()
+        self.kinds = [type(body).__name__ for body in self.file.scene.bodies]
+        self.out = OutFolder(args.out if args.out is not None else default_out(args.problem), self.outputs(),
+                             args.force, SCENE_OUTPUTS)
         self.progress = not args.no_progress
+
+    def outputs(self) -> list[str]:
+        """The files this run writes."""
+        from .simulate_command import table_outputs
+
+        return table_outputs() + (["trajectory.png"] if self.plot else [])
+
+
+def _matplotlib() -> bool:
+    """True if matplotlib is installed (set to draw files only); else False, with a note on stderr."""
+    try:
+        import matplotlib
+
+        matplotlib.use("Agg")  # files only, never a window
+    except ImportError:
+        print("rigiddyn simulate: no plot: matplotlib is not installed (pip install 'rigiddyn[plot]')", file=sys.stderr)
+        return False
+    return True
 
 
 def _run_record(plan: _ScenePlan, result: Any, columns: list[str]) -> dict[str, Any]:
@@ -124,12 +153,13 @@ def _run_record(plan: _ScenePlan, result: Any, columns: list[str]) -> dict[str, 
     }
 
 
-def _write(plan: _ScenePlan, result: Any) -> list[Path]:
+def _write(plan: _ScenePlan, result: Any, folder: Path) -> list[Path]:
+    """The files of the run, written to `folder`; returns their paths."""
     from .scene_result import columns
 
     table = columns(result)
     record = _run_record(plan, result, list(table))
-    csv_path, npz_path = plan.out / "trajectory.csv", plan.out / "trajectory.npz"
+    csv_path, npz_path = folder / "trajectory.csv", folder / "trajectory.npz"
     with open(csv_path, "w", newline="") as f:  # numbers by repr: read back to the same doubles
         writer = csv.writer(f)
         writer.writerow(table)
@@ -138,18 +168,31 @@ def _write(plan: _ScenePlan, result: Any) -> list[Path]:
         arrays: dict[str, Any] = dict(table)
         np.savez(f, **arrays)
     written = [csv_path, npz_path]
-    try:
+    if "trajectory.parquet" in plan.out.outputs:
         import pyarrow as pa
         import pyarrow.parquet as pq
 
         parquet = pa.table(table).replace_schema_metadata({b"rigiddyn": json.dumps(record).encode()})
-        pq.write_table(parquet, plan.out / "trajectory.parquet")
-        written.append(plan.out / "trajectory.parquet")
-    except ImportError:
+        pq.write_table(parquet, folder / "trajectory.parquet")
+        written.append(folder / "trajectory.parquet")
+    else:
         print("rigiddyn simulate: no Parquet file: it needs pyarrow (pip install 'rigiddyn[parquet]')", file=sys.stderr)
-    (plan.out / "run.json").write_text(json.dumps(record, indent=2) + "\n")
-    written.append(plan.out / "run.json")
+    (folder / "run.json").write_text(json.dumps(record, indent=2) + "\n")
+    written.append(folder / "run.json")
+    if plan.plot:
+        from .trajectory_plot import plot_scene
+
+        title = f"{plan.file.name}: {plan.method}, dt = {plan.dt:g} s"
+        written.append(plot_scene(result, plan.kinds, folder / "trajectory.png", plan.attitude, title))
     return written
+
+
+def conservative(scene: Any) -> bool:
+    """True if every element of `scene` derives from a potential (CONSERVATIVE; a SpringDamper without
+    damping): its total energy is then conserved, else its elements do work that the energy balance
+    accounts for."""
+    return all(type(e).__name__ in CONSERVATIVE and getattr(e, "damping", 0.0) == 0.0
+               for e in getattr(scene, "elements", []))
 
 
 def _summary(result: Any, scene: Any = None) -> str:
@@ -165,6 +208,11 @@ def _summary(result: Any, scene: Any = None) -> str:
         parts += [f"{result.body_names[i]}: mass {mass[0, i]:.6g} -> {mass[-1, i]:.6g} kg "
                   f"({mass[0, i] - mass[-1, i]:.6g} kg burnt)" for i in flows]
         parts.append("total energy not conserved (the thrust works)")
+    elif not conservative(scene):  # damping, drag, loads: the work of every element, against T's change
+        from .simulate_command import energy_balance
+
+        work = np.sum(np.asarray(result.work).reshape(len(result.t), -1), axis=1)
+        parts.append(energy_balance(result.kinetic_energy, work, "every element"))
     else:
         E = np.asarray(result.total_energy)
         drift = f"{(E[-1] - E[0]) / abs(E[0]):+.2e}" if E[0] != 0 else f"{E[-1] - E[0]:+.2e} J (absolute)"
@@ -179,20 +227,19 @@ def _summary(result: Any, scene: Any = None) -> str:
 
 
 def run_scene_simulate(args: argparse.Namespace) -> int:
-    """The `simulate` command of a scene file: check everything, run, write; returns the exit code (0:
-    done, 1: the state became non-finite (the records up to there are written), 2: bad input, 130:
-    interrupted)."""
-    from .simulate_command import run_and_report
+    """The `simulate` command of a scene file: check everything, run, write; returns the exit code
+    (rigiddyn.out_folder's, as simulate_command.run_simulate)."""
+    from .simulate_command import fail, run_and_report
 
     try:
         plan = _ScenePlan(args)
-    except (ValueError, TypeError) as e:
-        print(f"rigiddyn simulate: {e}", file=sys.stderr)
-        return 2
-    if not args.no_plot:
-        print("rigiddyn simulate: no plot for a scene file (the plot draws one body): tables only", file=sys.stderr)
+    except (ValueError, TypeError, OSError, Warning) as e:
+        return fail(e)
+    except OutputExists as e:
+        return fail(e, EXIT_EXISTS)
     return run_and_report(plan.steps, plan.progress,
                           lambda update: _core.simulate(plan.file.scene, plan.file.initial, dt=plan.dt,
                                                         steps=plan.steps, method=plan.method,
                                                         record_every=plan.record_every, progress=update),
-                          lambda result: _summary(result, plan.file.scene), lambda result: _write(plan, result))
+                          lambda result: _summary(result, plan.file.scene), plan.out,
+                          lambda result, folder: _write(plan, result, folder))

@@ -1,9 +1,12 @@
 """``python -m rigiddyn simulate``: run a problem file with one method and save what it records.
 
-Writes to --out: trajectory.csv, trajectory.npz, trajectory.parquet (when pyarrow is installed),
-run.json (the run's settings and outcome), trajectory.png (ω, attitude, energy and |L| over t) and,
-with --animate, axes.mp4 or axes.gif (the body's axes turning). The columns are those of
-rigiddyn.trajectory. Every argument and --out are checked before the run starts.
+Writes to --out (default: simulate-<name> in the current folder, <name> the example's or the file's):
+trajectory.csv, trajectory.npz, trajectory.parquet (when pyarrow is installed), run.json (the run's
+settings and outcome), trajectory.png (ω, attitude, energy and |L| over t) and, with --animate,
+axes.mp4 or axes.gif (the body's axes turning). The columns are those of rigiddyn.trajectory. Every
+argument and --out are checked before the run starts; the files are written all at once after it
+(rigiddyn.out_folder: nothing half-written, earlier outputs replaced only with --force). The exit codes
+are rigiddyn.out_folder's.
 
 The time loop stays in C++: the progress bar is fed by simulate's `progress` callback, which the
 core calls from its loop at most every 0.05 s (SimulationOptions::monitor), not per step; a run with
@@ -23,18 +26,23 @@ from typing import Any, TextIO
 import numpy as np
 
 from . import _core
-from .out_folder import check_out_folder
+from .out_folder import (EXIT_BAD_INPUT, EXIT_CODES_HELP, EXIT_DIVERGED, EXIT_EXISTS, EXIT_INTERRUPTED, EXIT_OK,
+                         EXIT_UNWRITABLE, OutFolder, OutputError, OutputExists)
 from .problem import Problem, load_problem
 from .stability import warn_if_unstable
 
-# written to --out (trajectory.parquet with pyarrow; axes.mp4 or axes.gif with --animate)
-OUTPUTS = ("trajectory.csv", "trajectory.npz", "trajectory.parquet", "run.json", "trajectory.png")
+# every file the command may write to --out (trajectory.parquet with pyarrow, trajectory.png unless
+# --no-plot, axes.mp4 or axes.gif with --animate)
+OUTPUTS = ("trajectory.csv", "trajectory.npz", "trajectory.parquet", "run.json", "trajectory.png", "axes.mp4",
+           "axes.gif")
 
-__all__ = ["MAX_DEFAULT_RECORDS", "add_simulate_parser", "progress_bar", "run_simulate", "simulate_problem"]
+__all__ = ["MAX_DEFAULT_RECORDS", "MAX_STEPS", "add_simulate_parser", "default_out", "energy_balance", "fail",
+           "progress_bar", "run_and_report", "run_simulate", "simulate_problem", "step_count", "table_outputs"]
 
 # without --record-every a run records every k-th step, k the least giving at most this many records
 # (+ the last): a table a plot and a spreadsheet still take whole
 MAX_DEFAULT_RECORDS = 10_000
+MAX_STEPS = 2**53  # steps of one run at most (every step count below it is exact in a float)
 
 
 def _positive(kind: type, what: str) -> Callable[[str], Any]:
@@ -64,6 +72,7 @@ def add_simulate_parser(sub: "argparse._SubParsersAction[argparse.ArgumentParser
         "--method at fixed step --dt, and write to --out: trajectory.csv, trajectory.npz, trajectory.parquet "
         "(when pyarrow is installed), run.json and trajectory.png (w_B, attitude, energy, |L| over time); "
         "--animate adds an animation of the body's axes. Columns carry their units, e.g. 'w_B_x [rad/s]'.",
+        epilog=EXIT_CODES_HELP,
     )
     p.add_argument("problem", help="problem .toml path or example name, or a scene file ([[body]] tables, "
                                    "rigiddyn.scene_simulate) or shipped scene name")
@@ -78,7 +87,11 @@ def add_simulate_parser(sub: "argparse._SubParsersAction[argparse.ArgumentParser
     p.add_argument("--record-every", type=_positive(int, "an integer >= 1"),
                    help=f"record every k-th step and the last (default: the least k giving at most "
                         f"{MAX_DEFAULT_RECORDS} records)")
-    p.add_argument("--out", required=True, help="folder for the files (created if missing)")
+    p.add_argument("--out", help="folder for the files (created if missing; default: simulate-<name> in the current "
+                                 "folder, <name> the example's or the file's name without .toml)")
+    p.add_argument("--force", action="store_true",
+                   help="replace the files of an earlier run in --out (and symbolic links in their place: the "
+                        "link, not what it points to); without it they are refused, naming the file")
     p.add_argument("--attitude", default="euler:ZYX", help=f"attitude in the plot: {ATTITUDE_HELP} (default euler:ZYX)")
     p.add_argument("--animate", nargs="?", const="auto", choices=("auto", "mp4", "gif"),
                    help="also write an animation of the body's axes: mp4 (needs ffmpeg), gif (needs Pillow) or "
@@ -88,6 +101,36 @@ def add_simulate_parser(sub: "argparse._SubParsersAction[argparse.ArgumentParser
     p.add_argument("--no-plot", action="store_true", help="write the tables only, no trajectory.png")
     p.add_argument("--no-progress", action="store_true",
                    help="no progress bar on stderr (shown only on a terminal and when tqdm is installed)")
+
+
+def _shown(text: str) -> str:
+    """`text` quoted, or its length and start when it is long."""
+    return repr(text) if len(text) <= 80 else f"a path of {len(text)} characters, {text[:30]!r}..."
+
+
+def default_out(problem: str) -> str:
+    """The default --out of `simulate PROBLEM`: simulate-<name>, <name> the shipped example's or scene's
+    name, or the file's name without its suffix."""
+    return f"simulate-{Path(problem).stem or problem}"
+
+
+def step_count(steps: int | None, duration: float | None, dt: float) -> int:
+    """The steps of a run: `steps` (--steps) if given, else round(duration / dt) for `duration` [s] at `dt`
+    [s]; ValueError naming --steps or --duration when that is below 1 or beyond MAX_STEPS (a quotient
+    that overflows to inf included)."""
+    if steps is not None:
+        if not 1 <= steps <= MAX_STEPS:
+            raise ValueError(f"--steps: expected an integer number of steps from 1 to 2**53, got {steps}")
+        return steps
+    assert duration is not None, "a duration where --steps is not given"
+    ratio = duration / dt
+    if not ratio <= MAX_STEPS:  # also inf (1e300 / 1e-300) and nan
+        raise ValueError(f"--duration: expected a run of at most 2**53 steps of dt = {dt!r} s, got {duration!r} s "
+                         f"(duration / dt = {ratio:.3g} steps)")
+    steps = round(ratio)
+    if steps < 1:
+        raise ValueError(f"--duration: expected a time span >= dt = {dt!r} s, got {duration!r}")
+    return steps
 
 
 def progress_bar(total: int, stream: TextIO | None = None) -> tuple[Callable[[int], None] | None, Callable[[], None]]:
@@ -130,6 +173,9 @@ class _Plan:
             self.problem = load_problem(args.problem)
         except ValueError as e:  # the command line calls load_problem's argument PROBLEM
             raise ValueError(str(e).replace("path_or_name: ", "PROBLEM: ", 1)) from None
+        except OSError as e:  # a path the system refuses (too long, ...)
+            raise ValueError(f"PROBLEM: expected a problem file or example name, got {_shown(args.problem)} "
+                             f"({e.strerror or e})") from None
         names = [m["name"] for m in _core.methods()]
         if args.dt is None:  # a scene file's [run] may give it; a problem file has none
             raise ValueError("--dt: expected a time step [s] > 0 for a problem file, got nothing")
@@ -137,13 +183,7 @@ class _Plan:
             raise ValueError(f"--method: expected one of {', '.join(names)}, got {args.method!r}")
         self.method: str = args.method
         self.dt: float = args.dt
-        if args.steps is not None:
-            self.steps: int = args.steps
-        else:
-            duration = self.problem.horizon if args.duration is None else args.duration
-            self.steps = round(duration / self.dt)
-            if self.steps < 1:
-                raise ValueError(f"--duration: expected a time span >= dt = {self.dt!r} s, got {duration!r}")
+        self.steps = step_count(args.steps, self.problem.horizon if args.duration is None else args.duration, self.dt)
         self.record_every: int = (args.record_every if args.record_every is not None
                                   else max(1, -(-self.steps // MAX_DEFAULT_RECORDS)))
         self.attitude = check_attitude(args.attitude)
@@ -170,8 +210,23 @@ class _Plan:
                 self.writer = animation_writer(self.animate)
             except RuntimeError as e:
                 raise ValueError(f"--animate: {e}") from None
-        self.out = check_out_folder(args.out, OUTPUTS)
+        self.out = OutFolder(args.out if args.out is not None else default_out(args.problem), self.outputs(),
+                             args.force, OUTPUTS)
         self.progress = not args.no_progress
+
+    def outputs(self) -> list[str]:
+        """The files this run writes."""
+        return (table_outputs() + (["trajectory.png"] if self.plot else []) +
+                ([f"axes{self.writer[1]}"] if self.writer is not None else []))
+
+
+def table_outputs() -> list[str]:
+    """The tables and run.json that `simulate` writes: trajectory.parquet only when pyarrow is installed."""
+    try:
+        import pyarrow  # noqa: F401
+    except ImportError:
+        return ["trajectory.csv", "trajectory.npz", "run.json"]
+    return ["trajectory.csv", "trajectory.npz", "trajectory.parquet", "run.json"]
 
 
 def _run_record(plan: _Plan, result: Any) -> dict[str, Any]:
@@ -200,78 +255,114 @@ def _run_record(plan: _Plan, result: Any) -> dict[str, Any]:
     }
 
 
-def _summary(result: Any) -> str:
-    T, L = np.asarray(result.total_energy), np.asarray(result.angular_momentum_norm)
-
-    def drift(x: np.ndarray) -> str:
-        return f"{(x[-1] - x[0]) / abs(x[0]):+.2e}" if x[0] != 0 else f"{x[-1] - x[0]:+.2e} (absolute)"
-
-    return (f"{len(result.t)} records to t = {result.t[-1]:.6g} s in {result.elapsed_seconds:.3g} s; "
-            f"relative drift: total energy {drift(T)}, |L| {drift(L)}")
+def _drift(x: np.ndarray) -> str:
+    """The change of x over the run relative to its initial value (absolute if that is 0)."""
+    return f"{(x[-1] - x[0]) / abs(x[0]):+.2e}" if x[0] != 0 else f"{x[-1] - x[0]:+.2e} (absolute)"
 
 
-def _write(plan: _Plan, result: Any) -> list[Path]:
+def energy_balance(kinetic_energy: Any, work: Any, what: str) -> str:
+    """The work-energy balance of a run whose forces do work, T(t) - T(0) - W(t) at the end [J], zero for
+    the exact motion (the kinetic energy theorem: the change of kinetic energy T is the work W of every
+    force and couple; `what` says whose work W is), also relative to the energy scale max_t max(T, |W|)."""
+    T, W = np.asarray(kinetic_energy, dtype=np.float64), np.asarray(work, dtype=np.float64)
+    residual = float(T[-1] - T[0] - W[-1])
+    scale = float(max(np.max(np.abs(T)), np.max(np.abs(W))))
+    relative = f"{residual / scale:+.2e} of max(T, |W|) = {scale:.4g} J; " if scale > 0 else ""
+    return f"energy balance T(t) - T(0) - W(t) = {residual:+.2e} J ({relative}W the work of {what})"
+
+
+def _summary(problem: Problem, result: Any) -> str:
+    """One line: records, time; without loads the relative drift of the total energy and |L|, with loads
+    (they do work) the energy balance and the change of |L|."""
+    head = f"{len(result.t)} records to t = {result.t[-1]:.6g} s in {result.elapsed_seconds:.3g} s"
+    L = np.asarray(result.angular_momentum_norm)
+    if any(np.any(load.force) or np.any(load.torque) for load in problem.loads):
+        balance = energy_balance(result.kinetic_energy, result.work, "the loads and gravity")
+        return f"{head}; {balance}; relative change of |L| {_drift(L)} (the loads' couples change it)"
+    return f"{head}; relative drift: total energy {_drift(np.asarray(result.total_energy))}, |L| {_drift(L)}"
+
+
+def _write(plan: _Plan, result: Any, folder: Path) -> list[Path]:
+    """The files of the run, written to `folder`; returns their paths."""
     from .trajectory import write_csv, write_npz, write_parquet
 
     record = _run_record(plan, result)
-    written = [write_csv(result, plan.out / "trajectory.csv"), write_npz(result, plan.out / "trajectory.npz")]
-    try:
-        written.append(write_parquet(result, plan.out / "trajectory.parquet", metadata=record))
-    except ImportError as e:
-        print(f"rigiddyn simulate: no Parquet file: {e}", file=sys.stderr)
-    (plan.out / "run.json").write_text(json.dumps(record, indent=2) + "\n")
-    written.append(plan.out / "run.json")
+    written = [write_csv(result, folder / "trajectory.csv"), write_npz(result, folder / "trajectory.npz")]
+    if "trajectory.parquet" in plan.out.outputs:
+        written.append(write_parquet(result, folder / "trajectory.parquet", metadata=record))
+    else:
+        print("rigiddyn simulate: no Parquet file: it needs pyarrow (pip install 'rigiddyn[parquet]')", file=sys.stderr)
+    (folder / "run.json").write_text(json.dumps(record, indent=2) + "\n")
+    written.append(folder / "run.json")
     title = f"{plan.problem.name}: {plan.method}, dt = {plan.dt:g} s"
     if plan.plot:
         from .trajectory_plot import plot_trajectory
 
-        written.append(plot_trajectory(result, plan.out / "trajectory.png", plan.attitude, title))
+        written.append(plot_trajectory(result, folder / "trajectory.png", plan.attitude, title))
     if plan.writer is not None:
         from .trajectory_plot import animate_axes
 
-        written.append(animate_axes(result, plan.out / "axes", "mp4" if plan.writer[1] == ".mp4" else "gif",
+        written.append(animate_axes(result, folder / "axes", "mp4" if plan.writer[1] == ".mp4" else "gif",
                                     frames=plan.frames, title=plan.method))
     return written
 
 
 def run_simulate(args: argparse.Namespace) -> int:
-    """The `simulate` command: check everything, run, write; returns the exit code (0: done, 1: the
-    state became non-finite (the records up to there are written), 2: bad input, 130: interrupted)."""
+    """The `simulate` command: check everything, run, write; returns the exit code (rigiddyn.out_folder:
+    0 done, 1 the state became non-finite (the records up to there are written), 2 bad input, 3 the
+    files could not be written, 4 earlier files in --out without --force, 130 interrupted)."""
     from .scene_simulate import is_scene_file, run_scene_simulate
 
-    if is_scene_file(args.problem):  # [[body]] tables: a scene (wide per-body tables, no plot)
+    if is_scene_file(args.problem):  # [[body]] tables: a scene (wide per-body tables)
         return run_scene_simulate(args)
     try:
         plan = _Plan(args)
-    except (ValueError, TypeError) as e:
-        print(f"rigiddyn simulate: {e}", file=sys.stderr)
-        return 2
+    except (ValueError, TypeError, OSError, Warning) as e:
+        return fail(e)
+    except OutputExists as e:
+        return fail(e, EXIT_EXISTS)
     return run_and_report(plan.steps, plan.progress,
                           lambda update: simulate_problem(plan.problem, plan.method, plan.dt, plan.steps,
                                                           plan.record_every, update),
-                          _summary, lambda result: _write(plan, result))
+                          lambda result: _summary(plan.problem, result), plan.out,
+                          lambda result, folder: _write(plan, result, folder))
+
+
+def fail(error: BaseException, code: int = EXIT_BAD_INPUT, command: str = "simulate") -> int:
+    """Print `error` as one line on stderr, "rigiddyn <command>: <message>" (a warning turned into an error
+    by python -W error named by its category); returns `code`."""
+    text = str(error)
+    if isinstance(error, Warning):
+        text = f"{type(error).__name__}: {text} (a warning, raised as an error)"
+    print(f"rigiddyn {command}: {text}", file=sys.stderr)
+    return code
 
 
 def run_and_report(steps: int, progress: bool, run: Callable[[Callable[[int], None] | None], Any],
-                   summary: Callable[[Any], str], write: Callable[[Any], list[Path]]) -> int:
+                   summary: Callable[[Any], str], out: OutFolder, write: Callable[[Any, Path], list[Path]]) -> int:
     """`run(update)` (update: the progress bar's callback, None without one) over `steps` steps, then its
-    summary and the files `write` made printed; returns the exit code (0: done, 1: the state became
-    non-finite (the records up to there are written), 2: bad input, 130: interrupted). Shared by the
-    problem and the scene forms of the `simulate` command."""
+    summary printed and its files written by `write(result, folder)` to `out` (all at once, see
+    OutFolder.write) and named; returns the exit code (rigiddyn.out_folder's). Shared by the problem and
+    the scene forms of the `simulate` command."""
     update, close = progress_bar(steps) if progress else (None, lambda: None)
     try:
         result = run(update)
         if update is not None and not result.diverged:
             update(steps)
     except KeyboardInterrupt:
-        print("rigiddyn simulate: interrupted", file=sys.stderr)
-        return 130
-    except (ValueError, TypeError) as e:
-        print(f"rigiddyn simulate: {e}", file=sys.stderr)
-        return 2
+        return fail(KeyboardInterrupt("interrupted"), EXIT_INTERRUPTED)
+    except (ValueError, TypeError, Warning) as e:
+        return fail(e)
     finally:
         close()
     print(summary(result))
-    written = write(result)
-    print("wrote " + ", ".join(str(w) for w in written))
-    return 1 if result.diverged else 0
+    try:
+        written = out.write(lambda folder: write(result, folder))
+    except KeyboardInterrupt:
+        return fail(KeyboardInterrupt("interrupted; nothing written"), EXIT_INTERRUPTED)
+    except OutputError as e:
+        return fail(e, EXIT_UNWRITABLE)
+    except OutputExists as e:
+        return fail(e, EXIT_EXISTS)
+    print(f"wrote {', '.join(w.name for w in written)} to {out.path}")
+    return EXIT_DIVERGED if result.diverged else EXIT_OK

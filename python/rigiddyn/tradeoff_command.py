@@ -1,19 +1,26 @@
 """The command ``python -m rigiddyn tradeoff PROBLEM``: the work-precision report of rigiddyn.tradeoff.
 
 PROBLEM is a problem file or example, or a scene file or shipped scene (a file whose `body` is an array
-of tables, [[body]], is a scene; rigiddyn.scene_precision)."""
+of tables, [[body]], is a scene; rigiddyn.scene_precision). With --out, the files are written all at once
+after the sweep (rigiddyn.out_folder: nothing half-written; earlier files replaced only with --force);
+the exit codes are rigiddyn.out_folder's."""
 
 from __future__ import annotations
 
 import argparse
-import contextlib
 import sys
 import textwrap
 from pathlib import Path
+from typing import TYPE_CHECKING
 
-from .out_folder import check_out_folder
+from .out_folder import (EXIT_BAD_INPUT, EXIT_CODES_HELP, EXIT_EXISTS, EXIT_INTERRUPTED, EXIT_OK, EXIT_UNWRITABLE,
+                         OutFolder, OutputError, OutputExists)
 
-OUTPUTS = ("tradeoff.csv", "tradeoff.json", "tradeoff.png", "tradeoff.svg")  # written to --out
+if TYPE_CHECKING:
+    from .work_precision import TradeoffResult
+
+# written to --out (the plot with matplotlib)
+OUTPUTS = ("tradeoff.csv", "tradeoff.json", "tradeoff.png", "tradeoff.svg")
 
 
 def _floats(text: str) -> list[float]:
@@ -45,7 +52,8 @@ def _epilog() -> str:
                for m in _core.methods()]
     measures = [item(line) for line in measure_help()]
     return "\n".join(["methods (--methods):", *methods,
-                      "measures (--measure; final_: at the horizon, max_: the largest over the run):", *measures])
+                      "measures (--measure; final_: at the horizon, max_: the largest over the run):", *measures,
+                      textwrap.fill(EXIT_CODES_HELP, 100)])
 
 
 def add_tradeoff_parser(sub: "argparse._SubParsersAction[argparse.ArgumentParser]") -> None:
@@ -73,37 +81,63 @@ def add_tradeoff_parser(sub: "argparse._SubParsersAction[argparse.ArgumentParser
     p.add_argument("--measure", help="error measure (default: the file's, else final_attitude_error; "
                                      "final_state_error for a scene)")
     p.add_argument("--cost", choices=("time", "evaluations"), default="time", help="cost to minimise")
-    p.add_argument("--out", help="folder for " + ", ".join(OUTPUTS) + " (checked before the sweep)")
+    p.add_argument("--out", help="folder for " + ", ".join(OUTPUTS) + " (checked before the sweep; default: no files)")
+    p.add_argument("--force", action="store_true",
+                   help="replace the files of an earlier sweep in --out (and symbolic links in their place: the "
+                        "link, not what it points to); without it they are refused, naming the file")
     p.add_argument("--no-progress", action="store_true",
                    help="no cost estimate and no progress bar on stderr (the bar shows only on a terminal)")
 
 
+def _outputs() -> list[str]:
+    """The files a sweep writes to --out: the plot only with matplotlib."""
+    try:
+        import matplotlib  # noqa: F401
+    except ImportError:
+        return list(OUTPUTS[:2])
+    return list(OUTPUTS)
+
+
+def _write(result: TradeoffResult, folder: Path) -> list[Path]:
+    """The sweep's files, written to `folder`; returns their paths."""
+    written = [folder / "tradeoff.csv", folder / "tradeoff.json"]
+    result.to_csv(written[0])
+    result.to_json(written[1])
+    try:
+        written += result.plot(folder / "tradeoff")
+    except ImportError as e:
+        print(f"rigiddyn tradeoff: no plot: {e}", file=sys.stderr)
+    return written
+
+
 def run_tradeoff(args: argparse.Namespace) -> int:
-    """Check --out, run the sweep, print the report and write the files; the exit code."""
+    """Check --out, run the sweep, print the report and write the files; the exit code
+    (rigiddyn.out_folder's: 0 done, 2 bad input, 3 the files could not be written, 4 earlier files in --out
+    without --force, 130 interrupted)."""
+    from rigiddyn.simulate_command import fail
     from rigiddyn.work_precision import tradeoff
 
-    new_folder = bool(args.out) and not Path(args.out).exists()
-    out = None
     try:
-        out = check_out_folder(args.out, OUTPUTS) if args.out else None
+        out = OutFolder(args.out, _outputs(), args.force, OUTPUTS) if args.out is not None else None
         result = tradeoff(args.problem, methods=args.methods, dts=args.dts, horizon=args.horizon,
                           tolerance=args.tolerance, measure=args.measure, cost=args.cost,
                           progress=not args.no_progress)
-    except (ValueError, TypeError, KeyboardInterrupt) as e:
-        if out is not None and new_folder:
-            with contextlib.suppress(OSError):
-                out.rmdir()  # made by check_out, still empty: the run wrote nothing
-        interrupted = isinstance(e, KeyboardInterrupt)
-        print(f"rigiddyn tradeoff: {'interrupted' if interrupted else e}", file=sys.stderr)
-        return 130 if interrupted else 2
+    except (ValueError, TypeError, OSError, Warning) as e:
+        return fail(e, EXIT_BAD_INPUT, "tradeoff")
+    except OutputExists as e:
+        return fail(e, EXIT_EXISTS, "tradeoff")
+    except KeyboardInterrupt:
+        return fail(KeyboardInterrupt("interrupted"), EXIT_INTERRUPTED, "tradeoff")
     print(result.to_table())
-    if out is not None:
-        written = [out / "tradeoff.csv", out / "tradeoff.json"]
-        result.to_csv(written[0])
-        result.to_json(written[1])
-        try:
-            written += result.plot(out / "tradeoff")
-        except ImportError as e:
-            print(f"rigiddyn tradeoff: no plot: {e}", file=sys.stderr)
-        print(f"wrote {', '.join(w.name for w in written)} to {out}")
-    return 0
+    if out is None:
+        return EXIT_OK
+    try:
+        written = out.write(lambda folder: _write(result, folder))
+    except OutputError as e:
+        return fail(e, EXIT_UNWRITABLE, "tradeoff")
+    except OutputExists as e:
+        return fail(e, EXIT_EXISTS, "tradeoff")
+    except KeyboardInterrupt:
+        return fail(KeyboardInterrupt("interrupted; nothing written"), EXIT_INTERRUPTED, "tradeoff")
+    print(f"wrote {', '.join(w.name for w in written)} to {out.path}")
+    return EXIT_OK

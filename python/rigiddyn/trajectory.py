@@ -8,6 +8,8 @@ in docs/conventions.md; dimensionless columns carry no unit)::
     kinetic_energy [J] | total_energy [J] | angular_momentum_norm [kg m^2/s] |
     quaternion_norm_error | work [J]
 
+The quaternion's columns follow the order of the result's q_WB rows, which the result records: a run
+of ``simulate(..., scalar_first=True)`` has ``result.scalar_first`` True and gives q_WB_w first.
 `t [s]` is an ordinary column, not an index, in every format and in `to_dataframe`, so that all
 of them hold the same columns (``df.set_index("t [s]")`` gives a time index). The files hold the
 values exactly: CSV prints each number with Python's ``repr`` (the shortest text that reads back to
@@ -25,7 +27,7 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["FIELDS", "column_names", "columns", "fields_from_columns", "read_columns", "to_dataframe",
+__all__ = ["FIELDS", "column_names", "columns", "fields_from_columns", "read_columns", "stored_order", "to_dataframe",
            "write_csv", "write_npz", "write_parquet"]
 
 # SimulationResult attribute -> (component suffixes or None for a scalar, unit or None)
@@ -62,14 +64,25 @@ def column_names(scalar_first: bool = False) -> list[str]:
     return names
 
 
-def columns(result: Any, scalar_first: bool = False) -> dict[str, np.ndarray]:
-    """The columns of a SimulationResult: name -> contiguous float64 (n,) array, in table order.
-
-    scalar_first: the result's q_WB rows are (w, x, y, z), i.e. it came from
-    ``simulate(..., scalar_first=True)`` (the result does not record it); default (x, y, z, w).
-    """
+def stored_order(result: Any, scalar_first: bool | None) -> bool:
+    """The order of `result`'s q_WB rows: scalar_first if given (True: (w, x, y, z)), else the order the
+    result records (its `scalar_first`, True for a run of ``simulate(..., scalar_first=True)``; a result
+    that records none holds (x, y, z, w)). TypeError for anything but None, True or False."""
+    if scalar_first is None:
+        scalar_first = getattr(result, "scalar_first", False)
     if not isinstance(scalar_first, (bool, np.bool_)):
-        raise TypeError(f"scalar_first: expected True or False, got {scalar_first!r}")
+        raise TypeError(f"scalar_first: expected None, True or False, got {scalar_first!r}")
+    return bool(scalar_first)
+
+
+def columns(result: Any, scalar_first: bool | None = None) -> dict[str, np.ndarray]:
+    """The columns of a SimulationResult: name -> contiguous float64 (n,) array, in table order, the
+    quaternion's columns in the order of its q_WB rows (q_WB_w first when they are (w, x, y, z)).
+
+    scalar_first: the order of the result's q_WB rows; None (the default): the order the result records
+    (``result.scalar_first``, set by ``simulate(..., scalar_first=True)``); True or False declares it.
+    """
+    scalar_first = stored_order(result, scalar_first)
     out: dict[str, np.ndarray] = {}
     for field, (_, unit) in FIELDS.items():
         try:
@@ -77,7 +90,7 @@ def columns(result: Any, scalar_first: bool = False) -> dict[str, np.ndarray]:
         except AttributeError:
             got = type(result).__name__
             raise TypeError(f"result: expected a SimulationResult (with .{field}), got {got}") from None
-        components = _components(field, bool(scalar_first))
+        components = _components(field, scalar_first)
         if components is None:
             out[_name(field, None, unit)] = np.ascontiguousarray(values)
         else:
@@ -100,10 +113,10 @@ def fields_from_columns(table: Mapping[str, Any]) -> dict[str, np.ndarray]:
     return out
 
 
-def write_csv(result: Any, path: str | Path, scalar_first: bool = False) -> Path:
+def write_csv(result: Any, path: str | Path, scalar_first: bool | None = None) -> Path:
     """Write the table to CSV: a header row of column names, then one row per record, each number as
     Python's repr (read back by float() or pandas.read_csv to the same double; nan and inf as
-    'nan', 'inf'). Returns the path."""
+    'nan', 'inf'). scalar_first: as in `columns`. Returns the path."""
     table = columns(result, scalar_first)
     path = Path(path)
     with open(path, "w", newline="") as f:
@@ -113,9 +126,10 @@ def write_csv(result: Any, path: str | Path, scalar_first: bool = False) -> Path
     return path
 
 
-def write_npz(result: Any, path: str | Path, scalar_first: bool = False) -> Path:
+def write_npz(result: Any, path: str | Path, scalar_first: bool | None = None) -> Path:
     """Write the table to an uncompressed ``.npz``, one (n,) float64 array per column name:
-    ``pandas.DataFrame(dict(numpy.load(path)))`` is the table. Returns the path."""
+    ``pandas.DataFrame(dict(numpy.load(path)))`` is the table. scalar_first: as in `columns`. Returns the
+    path."""
     path = Path(path)
     table: dict[str, Any] = columns(result, scalar_first)  # Any: numpy's stub types savez's keywords as its own
     with open(path, "wb") as f:  # a file object: numpy would append '.npz' to a name without it
@@ -123,10 +137,11 @@ def write_npz(result: Any, path: str | Path, scalar_first: bool = False) -> Path
     return path
 
 
-def write_parquet(result: Any, path: str | Path, scalar_first: bool = False,
+def write_parquet(result: Any, path: str | Path, scalar_first: bool | None = None,
                   metadata: Mapping[str, Any] | None = None) -> Path:
     """Write the table to Parquet (needs pyarrow, extra ``parquet``); `metadata` (JSON-serialisable)
-    is stored in the file's key-value metadata under b"rigiddyn". Returns the path."""
+    is stored in the file's key-value metadata under b"rigiddyn". scalar_first: as in `columns`.
+    Returns the path."""
     try:
         import pyarrow as pa
         import pyarrow.parquet as pq
@@ -165,7 +180,7 @@ def read_columns(path: str | Path) -> dict[str, np.ndarray]:
     raise ValueError(f"path: expected a .csv, .npz or .parquet file, got {str(path)!r}")
 
 
-def to_dataframe(result: Any, scalar_first: bool = False) -> Any:
+def to_dataframe(result: Any, scalar_first: bool | None = None) -> Any:
     """The SimulationResult as a pandas.DataFrame (needs pandas, extra ``dataframe``): one row per
     record, the columns of the CSV file in the same order, `t [s]` a column (not the index; use
     ``.set_index("t [s]")`` for a time index). scalar_first: as in `columns`."""

@@ -1,5 +1,6 @@
 """Pictures of a recorded trajectory (needs matplotlib, extra ``plot``): the time histories of the
-angular velocity, the attitude, the energy and |L|, and an animation of the body's axes.
+angular velocity, the attitude, the energy and |L|, and an animation of the body's axes; for a scene
+(a SceneResult), the same over every body, overlaid (a colour per body, a line style per component).
 
 Attitude is shown as ``"euler:SEQ"`` (Euler angles of q_WB in the sequence SEQ, as in
 ``rigiddyn.quat_to_euler``: uppercase intrinsic, lowercase extrinsic; the values the CSV's q_WB gives
@@ -12,16 +13,20 @@ from __future__ import annotations
 
 import warnings
 from pathlib import Path
-from typing import Any
+from typing import Any, Literal
 
 import numpy as np
 
 from . import _core
 
-__all__ = ["ATTITUDE_HELP", "animate_axes", "animation_writer", "check_attitude", "plot_trajectory",
-           "trajectory_figure"]
+__all__ = ["ATTITUDE_HELP", "MAX_SCENE_BODIES", "animate_axes", "animation_writer", "check_attitude", "plot_scene",
+           "plot_trajectory", "scene_figure", "trajectory_figure"]
 
 ATTITUDE_HELP = "euler:SEQ (SEQ as quat_to_euler, e.g. euler:ZYX) or rotvec"
+MAX_SCENE_BODIES = 10  # bodies drawn in a scene's plot (the first ones; the title says how many of how many)
+# the line styles of the x, y, z components (or angles 1, 2, 3) of a scene's body
+_STYLES: tuple[Literal["-", "--", ":"], ...] = ("-", "--", ":")
+_ATTITUDE_KINDS = ("RigidBody", "PlanarBody", "PivotedBody", "PivotedPlanarBody")  # bodies with an attitude
 
 
 def check_attitude(attitude: str) -> str:
@@ -62,7 +67,7 @@ def _attitude(q_WB: np.ndarray, attitude: str) -> tuple[np.ndarray, list[str], s
 def _change(series: list[Any], names: list[str], quantity: str, unit: str) -> tuple[np.ndarray, list[str], str]:
     """(values - initial values, labels "name(0) = value unit", axis label) of scalar series."""
     values = np.stack([np.asarray(x, dtype=np.float64) for x in series], axis=1)
-    labels = [f"{name}(0) = {values[0, j]:.6g} {unit}" for j, name in enumerate(names)]
+    labels = [f"{name}(0) = {values[0, j] + 0.0:.6g} {unit}" for j, name in enumerate(names)]  # + 0.0: no "-0"
     return values - values[0], labels, f"{quantity} change\nsince t = 0 [{unit}]"
 
 
@@ -103,6 +108,99 @@ def plot_trajectory(result: Any, path: str | Path, attitude: str = "euler:ZYX", 
     import matplotlib.pyplot as plt
 
     fig = trajectory_figure(result, attitude, title)
+    try:
+        fig.savefig(path, dpi=120)
+    finally:
+        plt.close(fig)
+    return Path(path)
+
+
+def _overlaid(ax: Any, t: np.ndarray, values: np.ndarray, drawn: list[int], names: list[str], ylabel: str,
+              components: list[str]) -> None:
+    """values (n, nb, 3) of the bodies `drawn` on `ax`: a colour per body, a line style per component,
+    and a legend of both (outside the axes, to the right)."""
+    from matplotlib.lines import Line2D
+
+    for colour, b in enumerate(drawn):
+        for j in range(values.shape[2]):
+            ax.plot(t, values[:, b, j], color=f"C{colour % 10}", linestyle=_STYLES[j], linewidth=1.2)
+    handles = [Line2D([], [], color=f"C{colour % 10}", label=names[b]) for colour, b in enumerate(drawn)]
+    if len(components) > 1:
+        handles += [Line2D([], [], color="black", linestyle=_STYLES[j], label=c) for j, c in enumerate(components)]
+    ax.set_ylabel(ylabel)
+    ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0, fontsize="small")
+
+
+def _series(ax: Any, t: np.ndarray, panel: tuple[np.ndarray, list[str], str]) -> None:
+    """Scalar series (n, k) with their labels and axis label on `ax`, legend outside to the right."""
+    values, labels, ylabel = panel
+    for j, label in enumerate(labels):
+        ax.plot(t, values[:, j], label=label, linestyle="--" if label.startswith("total") else "-")
+    ax.set_ylabel(ylabel)
+    ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0, fontsize="small")
+
+
+def scene_figure(result: Any, kinds: list[str], attitude: str = "euler:ZYX", title: str = "") -> Any:
+    """A matplotlib Figure of a SceneResult over t [s], the bodies overlaid (a colour per body, a line
+    style per component; the first MAX_SCENE_BODIES drawn): p_W [m] of each body in W; for the bodies
+    with an attitude (`kinds`: the type name of each body, e.g. "RigidBody", "Particle"; a particle has
+    none) w_B [rad/s] in B and the attitude (see check_attitude); the change since t = 0 of the
+    scene's kinetic, potential and total energy and of the work of all its elements [J] (initial values
+    in the legend); |H| about W's origin [kg m^2/s]; each body's mass [kg] when one changes.
+    `result`: a SceneResult with q_WB as (x, y, z, w)."""
+    import matplotlib.pyplot as plt
+
+    check_attitude(attitude)
+    t = np.asarray(result.t)
+    names = list(result.body_names)
+    if len(kinds) != len(names):
+        raise ValueError(f"kinds: expected one body type per body ({len(names)}), got {len(kinds)}")
+    drawn = list(range(min(len(names), MAX_SCENE_BODIES)))
+    turning = [b for b in drawn if kinds[b] in _ATTITUDE_KINDS]
+    mass = np.asarray(result.mass)
+    mass_changes = bool(np.any(mass != mass[:1]))
+    rows = 3 + 2 * bool(turning) + mass_changes
+    fig, axes = plt.subplots(rows, 1, sharex=True, figsize=(9.0, 2.0 + 1.9 * rows), layout="constrained")
+    panels = iter(axes)
+    _overlaid(next(panels), t, np.asarray(result.p_W), drawn, names, "position p_W [m]", ["x", "y", "z"])
+    if turning:
+        _overlaid(next(panels), t, np.asarray(result.w_B), turning, names, "angular velocity\nw_B [rad/s]",
+                  ["x", "y", "z"])
+        q_WB = np.asarray(result.q_WB)
+        angles, notes = [], []
+        for b in turning:
+            values, labels, angle_axis, note = _attitude(q_WB[:, b], attitude)
+            angles.append(values)
+            notes += [f"{names[b]}: {note}"] if note else []
+        ax = next(panels)
+        stacked = np.zeros((len(t), len(names), 3))
+        stacked[:, turning] = np.stack(angles, axis=1)
+        _overlaid(ax, t, stacked, turning, names, angle_axis.replace(" [", "\n["),
+                  [label.partition(" about ")[2] or label for label in labels])
+        if notes:
+            ax.set_title("; ".join(notes), fontsize="small")
+    work = np.sum(np.asarray(result.work).reshape(len(t), -1), axis=1)
+    _series(next(panels), t, _change([result.kinetic_energy, result.potential_energy, result.total_energy, work],
+                                     ["kinetic T", "potential V", "total E", "work of the elements W"], "energy", "J"))
+    _series(next(panels), t, _change([np.linalg.norm(np.asarray(result.angular_momentum_W), axis=1)],
+                                     ["|H|"], "|H| about W's origin", "kg m^2/s"))
+    if mass_changes:
+        _overlaid(next(panels), t, mass[:, :, None], drawn, names, "mass [kg]", [""])
+    for ax in axes:
+        ax.grid(True, alpha=0.3)
+    axes[-1].set_xlabel("t [s]")
+    shown = "" if len(drawn) == len(names) else f" (the first {len(drawn)} of {len(names)} bodies drawn)"
+    if title or shown:
+        fig.suptitle(f"{title}{shown}")
+    return fig
+
+
+def plot_scene(result: Any, kinds: list[str], path: str | Path, attitude: str = "euler:ZYX", title: str = "") -> Path:
+    """Save scene_figure(result, kinds, attitude, title) to `path` (format from its suffix, e.g. .png);
+    returns the path."""
+    import matplotlib.pyplot as plt
+
+    fig = scene_figure(result, kinds, attitude, title)
     try:
         fig.savefig(path, dpi=120)
     finally:

@@ -176,8 +176,17 @@ def reference_states(problem: Problem, t: np.ndarray) -> States:
 # error measures
 
 
+def _rescaled(q: np.ndarray) -> np.ndarray:
+    """Each row divided by its largest absolute component (a zero row left as it is)."""
+    largest = np.max(np.abs(q), axis=1, keepdims=True)
+    return q / np.where(largest > 0, largest, 1.0)
+
+
 def _attitude_angle(q_ref: np.ndarray, q: np.ndarray) -> np.ndarray:
-    """Geodesic angle 2 atan2(|vec(q_ref^-1 q)|, |scalar|) [rad], rows (x, y, z, w)."""
+    """Geodesic angle 2 atan2(|vec(q_ref^-1 q)|, |scalar|) [rad], rows (x, y, z, w), of any norm: the angle
+    does not change when a row is scaled, so each is divided by its largest component first (a run
+    blowing up may hold quaternions of 1e200, whose squares would overflow)."""
+    q_ref, q = _rescaled(q_ref), _rescaled(q)
     a_v, a_w, b_v, b_w = q_ref[:, :3], q_ref[:, 3:], q[:, :3], q[:, 3:]
     vec = a_w * b_v - b_w * a_v - np.cross(a_v, b_v)
     scalar = np.abs(a_w[:, 0] * b_w[:, 0] + np.sum(a_v * b_v, axis=1))
@@ -186,8 +195,17 @@ def _attitude_angle(q_ref: np.ndarray, q: np.ndarray) -> np.ndarray:
 
 def _measures(problem: Problem | SceneCase, run: Any, ref: Any, quaternion_norm_error: np.ndarray) -> dict[str, float]:
     """The error measures of `run` against `ref` (States, or SceneStates of a scene) at the same times."""
-    if isinstance(problem, SceneCase):
-        return problem.measures(run, ref, quaternion_norm_error)
+    # a run far beyond its stability limit may end with finite states of 1e154 and more, whose squares
+    # overflow (norms, the kinetic energy): its errors are then inf, the verdict (beyond any tolerance)
+    # that a diverged run gets, without numpy's overflow warning
+    with np.errstate(over="ignore"):
+        if isinstance(problem, SceneCase):
+            return problem.measures(run, ref, quaternion_norm_error)
+        return _body_measures(problem, run, ref, quaternion_norm_error)
+
+
+def _body_measures(problem: Problem, run: States, ref: States, quaternion_norm_error: np.ndarray) -> dict[str, float]:
+    """_measures of one rigid body."""
     inertia, mass = problem.inertia_com, problem.mass
     h, h_ref = run.w_B @ inertia.T, ref.w_B @ inertia.T
     g_ref = np.linalg.norm(h_ref, axis=1)
@@ -376,7 +394,9 @@ def _dop853_states(problem: Problem, times: np.ndarray, rtol: float, max_steps: 
     out = np.empty((times.size, 13))
     k = int(np.searchsorted(times, 0.0, side="right"))
     out[:k] = y
-    edges = [0.0] + _switch_times(problem) + [problem.horizon]
+    # the last record time i dt may exceed the horizon by an ulp (dt = horizon / steps, rounded): the last
+    # piece runs to it, so that every time is filled (an np.empty row left would be garbage)
+    edges = [0.0] + _switch_times(problem) + [max(problem.horizon, float(times[-1]))]
     taken = 0
     for start, end in zip(edges[:-1], edges[1:]):
         solver = DOP853(_rate(problem, start), start, y, end, rtol=rtol, atol=atol)
@@ -391,6 +411,7 @@ def _dop853_states(problem: Problem, times: np.ndarray, rtol: float, max_steps: 
                 k = done
         y = np.array(solver.y)
         y[3:7] /= np.linalg.norm(y[3:7])
+    assert k == times.size, "every time is in [0, the last edge]"
     q = out[:, 3:7] / np.linalg.norm(out[:, 3:7], axis=1, keepdims=True)
     return States(times, out[:, 0:3], q, out[:, 7:10], out[:, 10:13])
 
@@ -667,8 +688,10 @@ def _ranking_rule(cost: str, noise: float) -> str:
 
 
 def _cost_text(r: Mapping[str, Any]) -> str:
-    return (f"{_fmt(r['total_time'])} s ({_fmt(r['time_per_step'] * 1e9)} ns/step), "
-            f"{r['total_evaluations']} derivative evaluations")
+    """The run's cost: total time (and per step, except for a closed form, which has no step) and
+    derivative evaluations."""
+    per_step = "" if r.get("order") == 0 else f" ({_fmt(r['time_per_step'] * 1e9)} ns/step)"
+    return f"{_fmt(r['total_time'])} s{per_step}, {r['total_evaluations']} derivative evaluations"
 
 
 def _run_name(r: Mapping[str, Any]) -> str:

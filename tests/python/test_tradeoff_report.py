@@ -372,3 +372,78 @@ def test_a_sweep_that_fails_leaves_no_empty_out_folder(tmp_path, capsys):
     out = tmp_path / "new"
     assert main(["tradeoff", "t_handle", "--measure", "speed", "--out", str(out), "--no-progress"]) == 2
     assert "measure: expected one of" in capsys.readouterr().err and not out.exists()
+
+
+# ------------------------------------------------------------------ the closed form's recommendation
+
+
+def test_a_closed_form_recommendation_has_no_step():
+    """The exact method has no step: its recommendation names neither dt nor a time per step."""
+    rows = [row("exact", 0.1, order=0, final_attitude_error=0.0, total_evaluations=0, evaluations_per_step=0),
+            row("exact", 0.05, order=0, final_attitude_error=0.0, total_evaluations=0, evaluations_per_step=0),
+            row("rk4", 0.1, final_attitude_error=1e-3)]
+    result = TradeoffResult("p", 1.0, "final_attitude_error", 1e-6, rows)
+    text = str(result.recommendation)
+    assert text.startswith("recommendation: exact (closed form): final_attitude_error = 0 rad")
+    assert "dt" not in text and "/step" not in text and "steps)" not in text
+    assert "/step" in str(TradeoffResult("p", 1.0, "final_attitude_error", 1e-2, rows[2:]).recommendation)
+
+
+# ------------------------------------------------------------------ no raw numpy warnings
+
+
+TORQUE = """name = "box under a body torque"
+horizon = 10.0
+[body.primitive]
+shape = "solid_box"
+size = [1.0, 1.2, 1.6]
+mass = 200.0
+[initial]
+w_B = [0.2, -0.1, 0.5]
+[[loads]]
+torque = [1.0, 0.0, 2.0]
+frame = "body"
+"""
+
+
+def test_the_independent_reference_covers_a_record_an_ulp_past_the_horizon(tmp_path):
+    """10 s in 147 steps: the last record is at 147 x (10 / 147) = 10.000000000000002 s. DOP853 stopped at
+    10 s left that row unset (np.empty: garbage, and numpy's divide, overflow and invalid warnings)."""
+    from rigiddyn.work_precision import _dop853_states
+
+    (tmp_path / "torque.toml").write_text(TORQUE)
+    problem = load_problem(tmp_path / "torque.toml")
+    t = np.array([0.0, 5.0, 147 * (10.0 / 147)])
+    assert t[-1] > problem.horizon
+    states = _dop853_states(problem, t, 1e-12, 100_000)
+    at_horizon = _dop853_states(problem, np.array([0.0, problem.horizon]), 1e-12, 100_000)
+    # 2.2e-15 s later: the state moves by |w| 2.2e-15 ~ 1e-15 rad, far below DOP853's rtol 1e-12
+    np.testing.assert_allclose(states.q_WB[-1], at_horizon.q_WB[-1], atol=1e-10)
+    np.testing.assert_allclose(states.w_B[-1], at_horizon.w_B[-1], rtol=1e-10)
+
+
+def test_tradeoff_on_a_torque_leaks_no_warning(tmp_path):
+    """The sweep of a torqued body whose steps do not divide the horizon exactly, with every warning an
+    error (python -W error): exit 0, nothing on stderr but the cost estimate."""
+    import subprocess
+    import sys
+
+    (tmp_path / "torque.toml").write_text(TORQUE)
+    done = subprocess.run([sys.executable, "-W", "error", "-m", "rigiddyn", "tradeoff", "torque.toml", "--methods",
+                           "rk4,rkmk4", "--dts", f"{10 / 147},{10 / 294}", "--no-progress"], cwd=tmp_path,
+                          capture_output=True, text=True, timeout=600)
+    assert done.returncode == 0 and done.stderr == "", done.stderr
+
+
+def test_a_run_far_beyond_its_limit_measures_inf_without_a_warning():
+    """States of 1e200, still finite, from a run blowing up: their squares overflow, the errors are inf."""
+    from rigiddyn.work_precision import States, _measures, reference_states
+
+    problem = load_problem("t_handle")
+    t = np.array([0.0, 1.0])
+    ref = reference_states(problem, t)
+    huge = States(t, ref.p_W, ref.q_WB * 1e200, np.full((2, 3), 1e200), np.full((2, 3), 1e200))
+    measures = _measures(problem, huge, ref, np.zeros(2))  # warnings are errors in this suite
+    assert measures["energy_drift"] == math.inf and measures["final_momentum_error"] == math.inf
+    # q and 1e200 q are the same attitude: angle 0, computed from products rounded at a few eps
+    assert measures["final_attitude_error"] < 1e-14

@@ -48,6 +48,64 @@ def test_scalar_first_results_are_labelled_w_first():
     np.testing.assert_array_equal(tj.fields_from_columns(table)["q_WB"], xyzw.q_WB)
 
 
+def test_a_scalar_first_result_remembers_its_order():
+    """A run of simulate(..., scalar_first=True) records its order: its table, DataFrame and files label
+    the quaternion's columns (w, x, y, z) without the flag being passed again."""
+    pytest.importorskip("pandas", reason="the dataframe extra (in the test extra: runs in CI)")
+    xyzw, wxyz = _run(), _run(scalar_first=True)
+    assert wxyz.scalar_first is True and xyzw.scalar_first is False
+    frame = wxyz.to_dataframe()
+    assert [n for n in frame.columns if n.startswith("q_WB")] == ["q_WB_w", "q_WB_x", "q_WB_y", "q_WB_z"]
+    # the same run, its quaternion only reordered: every column holds the value it names
+    assert frame[list(xyzw.to_dataframe().columns)].equals(xyzw.to_dataframe())
+    np.testing.assert_array_equal(tj.fields_from_columns(tj.columns(wxyz))["q_WB"], xyzw.q_WB)
+    # True or False still declares the rows' order (a result that records none, e.g. a batch's sample)
+    assert list(wxyz.to_dataframe(scalar_first=True).columns) == list(frame.columns)
+    assert list(wxyz.to_dataframe(scalar_first=False).columns) == tj.column_names()
+
+
+@pytest.mark.parametrize("suffix", ["csv", "npz", "parquet"])
+def test_a_scalar_first_result_is_written_in_its_order(tmp_path, suffix):
+    if suffix == "parquet":
+        pytest.importorskip("pyarrow", reason="the parquet extra (in the test extra: runs in CI)")
+    path = getattr(tj, f"write_{suffix}")(_run(scalar_first=True), tmp_path / f"run.{suffix}")
+    table = tj.read_columns(path)
+    assert list(table) == tj.column_names(scalar_first=True)
+    _assert_same_fields(tj.fields_from_columns(table), _run())  # read back as (x, y, z, w): the plain run
+
+
+def test_the_order_survives_pickling():
+    import pickle
+
+    wxyz = _run(scalar_first=True)
+    back = pickle.loads(pickle.dumps(wxyz))
+    assert back.scalar_first is True
+    np.testing.assert_array_equal(back.q_WB, wxyz.q_WB)
+    state = wxyz.__getstate__()
+    old = type(wxyz).__new__(type(wxyz))
+    old.__setstate__(state[:13])  # a state without the order (an earlier pickle, a batch's sample): (x, y, z, w)
+    assert old.scalar_first is False
+
+
+def test_a_scene_result_remembers_its_order():
+    """SceneResult as SimulationResult: its columns follow the order it records, also through pickle."""
+    import pickle
+
+    from rigiddyn import scene_result
+    from rigiddyn.scene_file import read_scene
+
+    file = read_scene("satellite_boom")
+    runs = [rd.simulate(file.scene, file.initial, dt=0.02, steps=10, scalar_first=first) for first in (False, True)]
+    assert [r.scalar_first for r in runs] == [False, True]
+    plain, wxyz = (scene_result.columns(r) for r in runs)
+    assert [n for n in wxyz if n.startswith("hub:q_WB")] == ["hub:q_WB_w", "hub:q_WB_x", "hub:q_WB_y", "hub:q_WB_z"]
+    for name, values in plain.items():
+        np.testing.assert_array_equal(wxyz[name], values, err_msg=name)  # each column holds what it names
+    assert pickle.loads(pickle.dumps(runs[1])).scalar_first is True
+    pytest.importorskip("pandas", reason="the dataframe extra (in the test extra: runs in CI)")
+    assert list(runs[1].to_dataframe().columns) == list(wxyz)
+
+
 @pytest.mark.parametrize("suffix", ["csv", "npz", "parquet"])
 def test_files_read_back_to_the_same_arrays(tmp_path, suffix):
     if suffix == "parquet":
@@ -125,7 +183,7 @@ def test_parquet_names_the_extra_without_pyarrow(monkeypatch, tmp_path):
 def test_bad_input_names_the_argument(tmp_path):
     with pytest.raises(TypeError, match=r"result: expected a SimulationResult \(with \.t\), got dict"):
         tj.columns({"t": [0.0]})
-    with pytest.raises(TypeError, match="scalar_first: expected True or False, got 'yes'"):
+    with pytest.raises(TypeError, match="scalar_first: expected None, True or False, got 'yes'"):
         tj.columns(_run(), scalar_first="yes")
     with pytest.raises(ValueError, match=r"path: expected a \.csv, \.npz or \.parquet file, got .*run\.txt"):
         tj.read_columns(tmp_path / "run.txt")

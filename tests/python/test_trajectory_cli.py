@@ -160,3 +160,42 @@ def test_command_line_help_lists_simulate():
     for option in ("--method", "--dt", "--duration", "--steps", "--record-every", "--out", "--attitude", "--animate",
                    "--no-progress", "splitting_dlm"):
         assert option in done.stdout
+
+
+# ------------------------------------------------------------------ what the summary says about energy
+
+
+def _balance(printed):
+    """The residual [J] of the summary's energy balance."""
+    return float(re.search(r"energy balance T\(t\) - T\(0\) - W\(t\) = (\S+) J", printed).group(1))
+
+
+def test_loads_that_work_give_the_energy_balance_not_a_drift(tmp_path, capsys):
+    """A body torque does work: the total energy changes by it (by +114 % here), which is no drift; the
+    summary gives T(t) - T(0) - W(t) instead, as the written table's columns give it."""
+    out = tmp_path / "out"
+    assert main(["simulate", "satellite_torque", "--method", "rk4", "--dt", "1", "--out", str(out), "--no-plot",
+                 "--no-progress"]) == 0
+    printed = capsys.readouterr().out
+    assert "relative drift: total energy" not in printed and "W the work of the loads and gravity" in printed
+    table = tj.read_columns(out / "trajectory.csv")
+    T, W = table["kinetic_energy [J]"], table["work [J]"]
+    # printed with 3 significant digits ("%+.2e"): equal to 0.5 % of itself
+    assert _balance(printed) == pytest.approx(T[-1] - T[0] - W[-1], rel=5e-3)
+    assert abs(T[-1] - T[0]) > 1e6 * abs(_balance(printed))  # the energy did change, by the work
+
+
+def test_without_loads_the_summary_gives_the_drift(tmp_path, capsys):
+    assert main(["simulate", "t_handle", "--method", "rk4", "--dt", "0.01", "--out", str(tmp_path / "o"),
+                 "--no-plot", "--no-progress"]) == 0
+    assert "relative drift: total energy" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("name,balance", [("box_on_springs", True), ("spring_chain", True), ("kepler", False)])
+def test_a_scene_with_dampers_gives_the_energy_balance(tmp_path, capsys, name, balance):
+    """Dampers dissipate: the total energy of box_on_springs falls by most of itself, no drift; the
+    balance with the work of every element is the measure. kepler (gravity only) keeps its drift."""
+    assert main(["simulate", name, "--steps", "200", "--out", str(tmp_path / "o"), "--no-plot", "--no-progress"]) == 0
+    printed = capsys.readouterr().out
+    assert ("W the work of every element" in printed) is balance
+    assert ("relative drift of the total energy" in printed) is not balance

@@ -113,3 +113,63 @@ def test_gimbal_lock_is_noted_on_the_plot_not_raised(result):
         assert fig.axes[1].get_title() == ""
     finally:
         plt.close(fig)
+
+
+# ------------------------------------------------------------------ scenes
+
+
+def _scene_run(name, steps=20):
+    from rigiddyn.scene_file import read_scene
+
+    file = read_scene(name)
+    result = rd.simulate(file.scene, file.initial, dt=file.run.dt, steps=steps, method=file.run.method)
+    return result, [type(b).__name__ for b in file.scene.bodies]
+
+
+@pytest.mark.parametrize("name,ylabels", [
+    # a rigid body and a particle: the attitude panels draw the rigid body only
+    ("satellite_boom", ["position p_W [m]", "angular velocity\nw_B [rad/s]", "Euler ZYX (intrinsic)\n[rad]",
+                        "energy change\nsince t = 0 [J]", "|H| about W's origin change\nsince t = 0 [kg m^2/s]"]),
+    # particles only: no attitude panels
+    ("spring_chain", ["position p_W [m]", "energy change\nsince t = 0 [J]",
+                      "|H| about W's origin change\nsince t = 0 [kg m^2/s]"]),
+    # a mass flow: the mass panel
+    ("rocket", ["position p_W [m]", "energy change\nsince t = 0 [J]",
+                "|H| about W's origin change\nsince t = 0 [kg m^2/s]", "mass [kg]"]),
+])
+def test_a_scene_figure_overlays_its_bodies(name, ylabels):
+    result, kinds = _scene_run(name)
+    fig = tp.scene_figure(result, kinds, title=name)
+    try:
+        assert [ax.get_ylabel() for ax in fig.axes] == ylabels
+        nb = len(result.body_names)
+        assert len(fig.axes[0].get_lines()) == 3 * nb  # x, y, z of each body
+        turning = [i for i, k in enumerate(kinds) if k != "Particle"]
+        if turning:
+            assert len(fig.axes[1].get_lines()) == 3 * len(turning)
+            np.testing.assert_array_equal(fig.axes[1].get_lines()[1].get_ydata(), result.w_B[:, turning[0], 1])
+        # the bodies in the legend by name, the components by line style
+        legend = [t.get_text() for t in fig.axes[0].get_legend().get_texts()]
+        assert legend == [*result.body_names, "x", "y", "z"]
+        assert all(_legend_outside(ax) for ax in fig.axes)
+    finally:
+        plt.close(fig)
+
+
+def test_a_scene_of_many_bodies_draws_the_first_and_says_so():
+    result, kinds = _scene_run("cluster", steps=2)
+    fig = tp.scene_figure(result, kinds, title="cluster")
+    try:
+        assert len(fig.axes[0].get_lines()) == 3 * tp.MAX_SCENE_BODIES
+        assert f"(the first {tp.MAX_SCENE_BODIES} of 1000 bodies drawn)" in fig._suptitle.get_text()
+    finally:
+        plt.close(fig)
+
+
+def test_the_simulate_command_plots_a_scene(tmp_path, capsys):
+    from rigiddyn.__main__ import main
+
+    out = tmp_path / "out"
+    assert main(["simulate", "satellite_boom", "--steps", "50", "--out", str(out), "--no-progress"]) == 0
+    assert (out / "trajectory.png").stat().st_size > 0
+    assert "no plot" not in capsys.readouterr().err
