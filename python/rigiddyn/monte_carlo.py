@@ -22,7 +22,11 @@ Dispersion keys (units SI, frames as docs/conventions.md):
   "loads"   LoadDispersion: one constant load per sample (force through the centre of mass [N], torque [N m])
             added to the nominal `loads` schedule
 A scene's bodies are dispersed under "<body name>.<field>" (a RigidBody's p_W, q_WB, v_W, w_B, mass, inertia; a
-Particle's p_W, v_W, mass), drawn body after body; its loads and gravity are its elements.
+Particle's p_W, v_W, mass; a PivotedBody's q_WB, w_B; a PivotedPlanarBody's "theta" [rad] and "omega" [rad/s],
+Normal / Uniform), drawn body after body; its loads and gravity are its elements.
+
+Before any draw, the memory the run needs (each sample's records and what drawing it holds) is estimated
+and a run that would not fit in the memory available is refused, naming n.
 
 Invalid draws (a mass <= 0; an inertia with a principal moment <= 0 or a broken triangle inequality) are
 REJECTED AND REDRAWN from the same sample's generator (still a function of (seed, i)), at most
@@ -34,8 +38,10 @@ dispersion is then a distribution truncated to valid values: every redraw is cou
 from __future__ import annotations
 
 import importlib
+import itertools
 import math
 import numbers
+import sys
 import warnings
 from dataclasses import dataclass
 from typing import Any, Callable, Mapping, Sequence, Union
@@ -43,6 +49,7 @@ from typing import Any, Callable, Mapping, Sequence, Union
 import numpy as np
 
 from . import _core
+from ._memory import available_bytes, format_bytes
 
 STATE_KEYS = ("p_W", "q_WB", "v_W", "w_B")
 # the order in which one sample's generator serves the dispersed inputs
@@ -55,6 +62,17 @@ SCENE_RECORD_FIELDS = ("t", "p_W", "q_WB", "v_W", "w_B", "mass", "kinetic_energy
                        "total_energy", "linear_momentum_W", "angular_momentum_W", "angular_momentum_O_W",
                        "pivot_reaction_W", "power", "work")
 STANDARD_GRAVITY_W = (0.0, 0.0, -9.81)  # [m/s^2] in W, what gravity=True means (as simulate)
+_KEYS_SHOWN = 40  # dispersible keys an error about an unknown key lists
+# the memory estimate that refuses a run before any draw (_check_memory): float64 values per record of a
+# body's batch (as simulate_batch's own check), and of a scene's (constant, per body, per element term);
+# the frame terms a scene's frame adds at most; memory per sample while drawing (its SeedSequence,
+# generator, drawn values and bodies) and per body state of a scene's sample [bytes]: measured at 1.2 kB a
+# sample with four keys dispersed (an inertia among them) and 0.3 kB a particle's state, rounded up
+RECORD_DOUBLES = 29
+SCENE_RECORD_DOUBLES = (10, 20, 2)
+_FRAME_TERMS = 4
+SAMPLE_BYTES = 2048
+STATE_BYTES = 512
 
 
 # a recorded field's name, or a function of the BatchResult returning (N, n_records, ...)
@@ -114,7 +132,7 @@ class Normal(Dispersion):
     std: standard deviation >= 0 per component, same unit and broadcasting (0 gives the mean exactly).
     """
 
-    keys = ("p_W", "v_W", "w_B", "mass", "gravity", "force", "torque")
+    keys = ("p_W", "v_W", "w_B", "theta", "omega", "mass", "gravity", "force", "torque")
 
     def __init__(self, mean: Any = None, std: Any = None):
         if std is None:
@@ -554,11 +572,20 @@ def _check_dispersions(dispersions: Any, nominal: dict[str, Any]) -> dict[str, D
         raise TypeError(f"dispersions: expected a dict {{key: dispersion}}, got {dispersions!r}")
     for key, dispersion in dispersions.items():
         if key not in nominal:
-            raise ValueError(f"dispersions: expected keys among {', '.join(nominal)}, got {key!r}")
+            raise ValueError(f"dispersions: expected {_keys_among(nominal)}, got {key!r}")
         if not isinstance(dispersion, Dispersion):
             raise TypeError(f"dispersions[{key!r}]: expected {_classes_for(key)}, got {dispersion!r}")
         dispersion.bind(key, nominal[key])
     return dict(dispersions)
+
+
+def _keys_among(nominal: Mapping[str, Any]) -> str:
+    """The dispersible keys as an error lists them (the first _KEYS_SHOWN of a large scene, and how many)."""
+    if not nominal:
+        return "no key (no body of the scene has a dispersible field: see SCENE_BODY_FIELDS)"
+    shown = list(itertools.islice(nominal, _KEYS_SHOWN))
+    more = f", ... ({len(nominal)} keys)" if len(nominal) > len(shown) else ""
+    return "keys among " + ", ".join(shown) + more
 
 
 def _draw_valid(dispersion: Dispersion, rng: np.random.Generator, nominal: Any, key: str, i: int,
@@ -634,10 +661,17 @@ def _batch_inputs(model: Any, n: int, inputs: dict[str, np.ndarray], dispersions
     return model, initial, gravity, loads
 
 
-# the dispersible fields of a scene's body, by its kind, in draw order (a PlanarBody's are not dispersed)
+# the dispersible fields of a scene's body, by its kind, in draw order (a PlanarBody's are not dispersed; a
+# pivoted body's state: its attitude and rate about the pivot)
 SCENE_BODY_FIELDS = {"RigidBody": ("p_W", "q_WB", "v_W", "w_B", "mass", "inertia"),
-                     "Particle": ("p_W", "v_W", "mass")}
-STATE_OF_BODY = {"RigidBody": "RigidBodyState", "Particle": "ParticleState"}
+                     "Particle": ("p_W", "v_W", "mass"),
+                     "PivotedBody": ("q_WB", "w_B"),
+                     "PivotedPlanarBody": ("theta", "omega")}
+STATE_OF_BODY = {"RigidBody": "RigidBodyState", "Particle": "ParticleState", "PivotedBody": "PivotedBodyState",
+                 "PivotedPlanarBody": "PivotedPlanarBodyState"}
+# the state fields of each body kind, in its state class's constructor order
+_STATE_FIELDS = {"RigidBody": STATE_KEYS, "Particle": ("p_W", "v_W"), "PivotedBody": ("q_WB", "w_B"),
+                 "PivotedPlanarBody": ("theta", "omega")}
 
 
 def _scene_nominal(scene: Any, nominal_state: Any) -> dict[str, Any]:
@@ -669,11 +703,10 @@ def _scene_batch_inputs(model: Any, nominal_state: Any, n: int, inputs: dict[str
 
     def state(name: str, body: Any, nominal: Any, i: int) -> Any:
         kind = type(body).__name__
-        if kind == "RigidBody":
-            return _core.RigidBodyState(*(drawn(name, f, i, getattr(nominal, f)) for f in STATE_KEYS))
-        if kind == "Particle":
-            return _core.ParticleState(*(drawn(name, f, i, getattr(nominal, f)) for f in ("p_W", "v_W")))
-        return nominal
+        if kind not in _STATE_FIELDS:
+            return nominal
+        return getattr(_core, STATE_OF_BODY[kind])(**{f: drawn(name, f, i, getattr(nominal, f))
+                                                     for f in _STATE_FIELDS[kind]})
 
     def body_of(name: str, body: Any, i: int) -> Any:
         kind = type(body).__name__
@@ -695,6 +728,38 @@ def _scene_batch_inputs(model: Any, nominal_state: Any, n: int, inputs: dict[str
     return model, initial
 
 
+def _count(value: Any, name: str, least: int) -> int:
+    """`value` as an int >= `least` (TypeError / ValueError naming `name`)."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral):
+        raise TypeError(f"{name}: expected an integer >= {least}, got {value!r}")
+    if value < least:
+        raise ValueError(f"{name}: expected an integer >= {least}, got {value!r}")
+    return int(value)
+
+
+def _check_memory(n: int, steps: int, record_every: int, model: Any) -> None:
+    """ValueError naming n, before any draw, when N samples would not fit in the available memory: each
+    sample's records (as simulate_batch counts them: step 0, every record_every-th step and the last;
+    RECORD_DOUBLES of a body, SCENE_RECORD_DOUBLES of a scene per record) and what drawing it holds
+    (SAMPLE_BYTES, and a state object per body of a scene, STATE_BYTES)."""
+    records = 1 + steps // record_every + (1 if steps % record_every else 0)
+    if isinstance(model, _core.Scene):
+        nb = len(model.bodies)
+        terms = len(model.elements) + (_FRAME_TERMS if model.frame is not None else 0)
+        per_record = SCENE_RECORD_DOUBLES[0] + SCENE_RECORD_DOUBLES[1] * nb + SCENE_RECORD_DOUBLES[2] * terms
+        per_sample = SAMPLE_BYTES + STATE_BYTES * nb
+    else:
+        per_record, per_sample = RECORD_DOUBLES, SAMPLE_BYTES
+    per_sample += records * per_record * 8
+    available = available_bytes()
+    available = sys.maxsize if available is None else available  # unknown: only what no array can hold
+    if n * per_sample > available:
+        raise ValueError(f"n: expected a sample count whose runs fit in the available memory "
+                         f"({format_bytes(available)}: at most {available // per_sample} samples of {records} records, "
+                         f"{format_bytes(per_sample)} each), got {n} (an estimated {format_bytes(n * per_sample)}; "
+                         "fewer samples, or a larger record_every)")
+
+
 def monte_carlo(model: Any, nominal_state: Any, n: int, *, seed: Any,
                 dispersions: Mapping[str, Dispersion] | None = None,
                 dt: Any, steps: int, method: str | None = None, record_every: int = 1, loads: Any = None,
@@ -705,10 +770,12 @@ def monte_carlo(model: Any, nominal_state: Any, n: int, *, seed: Any,
     model: a RigidBody (mass [kg], inertia about the centre of mass in B [kg m^2]): the nominal body; or a
       Scene / CompiledScene, whose bodies' states and mass properties are dispersed under the keys
       "<body name>.<field>" (fields p_W, q_WB, v_W, w_B, mass, inertia of a RigidBody; p_W, v_W, mass of a
-      Particle; a PlanarBody is not dispersed); its loads and gravity are its elements.
+      Particle; q_WB, w_B of a PivotedBody; theta [rad], omega [rad/s] of a PivotedPlanarBody; a PlanarBody is
+      not dispersed); its loads and gravity are its elements.
     nominal_state: a RigidBodyState (p_W [m], q_WB (x, y, z, w), v_W [m/s] in W, w_B [rad/s] in B); for a
       scene, the list of its bodies' states.
-    n: number of samples N >= 1. seed: an integer >= 0, a numpy.random.SeedSequence, or None (fresh
+    n: number of samples N >= 1, whose records fit in the memory available (estimated before any draw:
+      ValueError naming n otherwise). seed: an integer >= 0, a numpy.random.SeedSequence, or None (fresh
       entropy, kept as result.seed); sample i draws from SeedSequence(seed).spawn(n)[i] (module docstring).
     dispersions: {key: dispersion} (keys and classes in the module docstring); a key not given keeps its
       nominal value (the state's field, the body's mass and inertia, `gravity`, `loads`).
@@ -735,6 +802,7 @@ def monte_carlo(model: Any, nominal_state: Any, n: int, *, seed: Any,
     if client is not None and threads is not None:
         raise ValueError(f"threads: expected None with client= (the workers' threads are the cluster's), "
                          f"got {threads!r}")
+    _check_memory(int(n), _count(steps, "steps", 0), _count(record_every, "record_every", 1), scene)
     seeds = _seed_sequence(seed)
     if isinstance(model, _core.RigidBody):
         nominal = {"p_W": nominal_state.p_W, "q_WB": nominal_state.q_WB, "v_W": nominal_state.v_W,

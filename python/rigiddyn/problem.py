@@ -69,6 +69,7 @@ from __future__ import annotations
 import difflib
 import math
 import os
+import re
 import sys
 import warnings
 from collections.abc import Mapping
@@ -81,6 +82,7 @@ import numpy as np
 
 from . import _core
 from .stability import warn_if_unstable
+from .units import _shown
 
 if sys.version_info >= (3, 11):
     import tomllib
@@ -137,10 +139,17 @@ _QUATERNION_NORM_TOLERANCE = 1e-3  # | |q| - 1 | up to this: a hand-typed quater
 # of a unit quaternion computed in double precision and printed in full, so only typed values get it
 _QUATERNION_NOTE_THRESHOLD = 1e-12
 _EXAMPLES_DIR = Path(__file__).resolve().parent / "problems"
+# arrays and tables within each other in a problem or scene file (a 3x3 inertia in a [[body]] is 4 deep);
+# deeper text is refused before Python's recursion limit (tomllib reads each level by a recursive call)
+MAX_TOML_NESTING = 32
+# what the nesting scan of a TOML text looks at: strings and comments (skipped whole), brackets, the dots
+# of dotted keys and what ends a key (=, a comma, a newline)
+_TOML_SCAN = re.compile(r'''"""(?:[^"\\]|\\.|"(?!""))*"{3,5}|"(?:[^"\\\n]|\\.)*"'''
+                        r"""|'''(?:[^']|'(?!''))*'{3,5}|'[^'\n]*'|#[^\n]*|[\[\]{}=,\n.]""", re.DOTALL)
 
 
 def _fail(name: str, expected: str, got: Any) -> ValueError:
-    return ValueError(f"{name}: expected {expected}, got {got!r}")
+    return ValueError(f"{name}: expected {expected}, got {_shown(got)}")
 
 
 def _type_fail(name: str, expected: str, got: Any) -> TypeError:
@@ -175,7 +184,7 @@ def _array(value: Any, name: str, shape: tuple[int, ...]) -> np.ndarray:
 def _number(value: Any, name: str, positive: bool = False) -> float:
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         raise _fail(name, "a number", value)
-    x = float(value)
+    x = float(value) if not isinstance(value, int) or abs(value) <= sys.float_info.max else math.inf
     if not math.isfinite(x) or (positive and x <= 0.0):
         raise _fail(name, "a finite number > 0" if positive else "a finite number", value)
     return x
@@ -666,6 +675,7 @@ def _tradeoff_defaults(value: Any) -> dict[str, Any]:
 def parse_problem(data: Mapping[str, Any], base: str | Path | None = None,
                   source: str | None = None) -> Problem:
     """A Problem from parsed TOML `data`; `base` is the folder that relative mesh paths refer to."""
+    _check_nesting(data, source or "problem")
     data = _table(data, "problem")
     if "horizon" not in data:
         raise _fail("horizon", "a time span [s] > 0", "nothing")
@@ -709,9 +719,63 @@ def load_problem(path_or_name: str | Path) -> Problem:
         if path.suffix or len(path.parts) > 1:
             raise _fail("path_or_name", expected, str(path_or_name))
         path = example_path(str(path_or_name), "path_or_name")
-    with open(path, "rb") as f:
-        try:
-            data = tomllib.load(f)
-        except tomllib.TOMLDecodeError as e:
-            raise ValueError(f"{path}: expected valid TOML, got {e}") from None
-    return parse_problem(data, base=path.parent, source=str(path))
+    try:
+        text = path.read_bytes().decode("utf-8")
+    except UnicodeDecodeError as e:
+        raise ValueError(f"{path}: expected a UTF-8 text file, got {e}") from None
+    return parse_problem(_read_toml(text, str(path)), base=path.parent, source=str(path))
+
+
+def _read_toml(text: str, source: str) -> dict[str, Any]:
+    """The parsed TOML `text` of the file `source` (a problem or scene file): ValueError naming `source`
+    for invalid TOML or for arrays and inline tables nested beyond Python's recursion limit (the parsers
+    of the data, parse_problem and parse_scene, refuse more than MAX_TOML_NESTING levels)."""
+    _check_text_nesting(text, source)
+    try:
+        data = tomllib.loads(text)
+    except ValueError as e:  # TOMLDecodeError, or an integer of more digits than int() converts
+        raise ValueError(f"{source}: expected valid TOML, got {e}") from None
+    except RecursionError:  # tomllib recurses once per level of an array or inline table (a deep caller's stack)
+        raise _nesting_error(source) from None
+    return data
+
+
+def _check_text_nesting(text: str, source: str) -> None:
+    """ValueError naming `source` when, outside strings and comments, brackets [ { are open more than
+    MAX_TOML_NESTING deep or a dotted key has more than MAX_TOML_NESTING parts: one pass over the text
+    before tomllib reads it (its time grows with the square of a dotted key's parts: 5 s for 10^4)."""
+    depth = dots = 0
+    for token in _TOML_SCAN.finditer(text):
+        c = token.group()[0]
+        if c in "[{":
+            depth, dots = depth + 1, 0
+        elif c in "]}":
+            depth, dots = max(depth - 1, 0), 0
+        elif c == ".":
+            dots += 1
+        elif c in "=,\n":
+            dots = 0
+        if depth > MAX_TOML_NESTING or dots >= MAX_TOML_NESTING:
+            raise _nesting_error(source)
+
+
+def _check_nesting(data: Any, source: str) -> None:
+    """ValueError naming `source` when arrays and tables (lists, tuples, mappings) lie within each other more
+    than MAX_TOML_NESTING deep in `data` (dotted keys a.b.c... build such tables without tomllib
+    recursing; what reads them would). Walks the values without recursion."""
+    stack = [(data, 0)]
+    while stack:
+        value, depth = stack.pop()
+        if isinstance(value, Mapping):
+            children: Any = value.values()
+        elif isinstance(value, (list, tuple)):
+            children = value
+        else:
+            continue
+        if depth == MAX_TOML_NESTING:
+            raise _nesting_error(source)
+        stack.extend((child, depth + 1) for child in children)
+
+
+def _nesting_error(source: str) -> ValueError:
+    return ValueError(f"{source}: expected arrays and tables nested at most {MAX_TOML_NESTING} deep, got deeper ones")

@@ -7,10 +7,15 @@ per body, in file order) and a RunOptions;
 run)`` writes the canonical file (SI, radians, q_WB, every field explicit) that loads back to the same
 scene, states and options.
 
-Every number may carry a unit as a string, parsed with pint (rigiddyn.units): ``"2 slug"``, ``"3 ft"``,
-``"30 deg"``, ``"1500 rpm"``, ``"398600.4418 km^3/s^2"``; a plain number is SI in the unit shown
-below. A vector is ``[x, y, z]`` (each entry may carry a unit) or ``{value = [x, y, z], unit = "km"}``.
-Every key the format knows (alternatives commented)::
+Every number may carry a unit as a string, a number then its unit and nothing else (rigiddyn.units;
+pint's registry gives the unit names): ``"2 slug"``, ``"3 ft"``, ``"30 deg"``, ``"1500 rpm"``,
+``"398600.4418 km^3/s^2"``, ``"6.6743e-8 cm^3/(g*s^2)"``, ``"1_000 kg"``; a plain number is SI in the
+unit shown below. The number is written as TOML writes one (a decimal point, never a comma: ``"1,5 kg"``
+is refused; underscores only between digits); the unit is names joined by ``*``, ``/`` or a space, with
+powers ``^`` or ``**`` of literal numbers and parentheses; a comment goes after the closing quote
+(``mass = "2 kg"  # dry``: a ``#`` inside the string is refused). A vector is ``[x, y, z]`` (each entry
+may carry a unit) or ``{value = [x, y, z], unit = "km"}``. Every key the format knows (alternatives
+commented)::
 
     name = "two-body Kepler orbit"      # optional (default: the file name)
     description = "free text"           # optional
@@ -80,7 +85,8 @@ Every key the format knows (alternatives commented)::
 
     [[cluster]]                         # generated particles, after the [[body]] tables, with their own
     model = "plummer"                   # MutualGravity (after the [[force]] elements); model: "plummer"
-    count = 1000                        # integer >= 2 particles of mass total_mass / count
+    count = 1000                        # integer >= 2 particles of mass total_mass / count (at most what
+                                        # the memory holds: CLUSTER_BYTES_PER_PARTICLE each)
     total_mass = 1                      # [kg] > 0
     scale_radius = 0.5890486225480862   # Plummer scale radius a [m] > 0 (3 pi / 16: E = -1/4 with G = M = 1)
     G = 1                               # [m^3/(kg s^2)] > 0 (default 6.67430e-11), of the sampling and the gravity
@@ -97,15 +103,21 @@ In a scene with a [frame], "W" in the names above is that frame: the elements ac
 states are relative to it (rigiddyn.SceneFrame). A [body.mass_flow] table belongs to the [[body]]
 table above it (TOML's rule for sub-tables of an array of tables).
 
+A file of [[body]] tables, [[cluster]] tables or both is a scene file (is_scene_toml; a problem file,
+rigiddyn.problem, has one [body] table). A scene of N bodies loads in O(N) time: bodies are named through
+a name index, and forces refer to them by name.
+
 A field without a default is required. Every error is a ValueError "<field>: expected ..., got ..."
 naming the field by its path (``body[2].inertia: expected kg m^2, got '3 kg m' ([mass] * [length])``,
-``force[1].body_a``); an unknown key is one too, with the closest known key.
+``force[1].body_a``); an unknown key is one too, with the closest known key. A file that is no valid
+TOML, or whose arrays and tables nest more than rigiddyn.problem.MAX_TOML_NESTING deep, is a ValueError
+naming the file.
 """
 
 from __future__ import annotations
 
+import itertools
 import math
-import sys
 import warnings
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
@@ -115,15 +127,11 @@ from typing import Any
 import numpy as np
 
 from . import _core
-from .problem import _closest, _orientation, _tradeoff_defaults
-from .units import quantity, vector_quantity
+from ._memory import available_bytes, format_bytes
+from .problem import _check_nesting, _closest, _orientation, _read_toml, _tradeoff_defaults
+from .units import _shown, quantity, vector_quantity
 
-if sys.version_info >= (3, 11):
-    import tomllib
-else:  # pragma: no cover - exercised on Python 3.9/3.10 only
-    import tomli as tomllib
-
-__all__ = ["FORCE_TYPES", "RunOptions", "SceneFile", "example_scenes", "load_scene", "parse_scene",
+__all__ = ["FORCE_TYPES", "RunOptions", "SceneFile", "example_scenes", "is_scene_toml", "load_scene", "parse_scene",
            "plummer_sphere", "read_scene", "scene_path", "scene_to_toml"]
 
 _SCENES_DIR = Path(__file__).resolve().parent / "scenes"
@@ -146,6 +154,8 @@ _CLUSTER_KEYS = frozenset({"model", "count", "total_mass", "scale_radius", "G", 
 _RUN_KEYS = frozenset({"method", "dt", "duration", "record_every"})
 _LOAD_KEYS = frozenset({"force", "torque", "frame", "t_start", "t_end"})
 _REQUIRED = object()  # a field default: the field must be given
+_NAMES_SHOWN = 20  # body names an error about a body reference lists
+_NAMES_SEARCHED = 10_000  # up to this many bodies, that error also suggests the closest name
 # | |q| - 1 | up to this: q_WB is a unit quaternion to round-off (4 ulp of 1), taken as written; dividing
 # it by its norm again would move its last bits, so a written canonical file would not read back exactly
 _UNIT_NORM = 4 * np.finfo(np.float64).eps
@@ -227,7 +237,7 @@ class SceneFile:
 # ------------------------------------------------------------------------------------------ reading
 
 def _fail(name: str, expected: str, got: Any) -> ValueError:
-    return ValueError(f"{name}: expected {expected}, got {got!r}")
+    return ValueError(f"{name}: expected {expected}, got {_shown(got)}")
 
 
 def _check_keys(table: Any, name: str, known: frozenset[str], where: str) -> Mapping[str, Any]:
@@ -422,13 +432,15 @@ def _frame(value: Any) -> Any:
     return _core_call(_core.SceneFrame.rotating, "frame", axis, rate)
 
 
-def _body_ref(value: Any, name: str, names: Sequence[str]) -> int:
-    """The index of the body named `value`."""
-    if not isinstance(value, str) or value not in names:
-        close = _closest(value, names) if isinstance(value, str) else None
-        hint = f" (did you mean {close!r}?)" if close else ""
-        raise _fail(name, "the name of a [[body]]: one of " + ", ".join(map(repr, names)) + hint, value)
-    return names.index(value)
+def _body_ref(value: Any, name: str, names: Mapping[str, int]) -> int:
+    """The index of the body named `value` (`names`: each body's name -> its index, in index order)."""
+    if isinstance(value, str) and value in names:
+        return names[value]
+    shown = list(itertools.islice(names, _NAMES_SHOWN))
+    listed = ", ".join(map(repr, shown)) + (f", ... ({len(names)} bodies)" if len(names) > len(shown) else "")
+    close = _closest(value, names) if isinstance(value, str) and len(names) <= _NAMES_SEARCHED else None
+    hint = f" (did you mean {close!r}?)" if close else ""
+    raise _fail(name, "the name of a [[body]]: one of " + listed + hint, value)
 
 
 def _loads(value: Any, name: str) -> list[Any]:
@@ -451,7 +463,7 @@ def _loads(value: Any, name: str) -> list[Any]:
     return loads
 
 
-def _force(table: Any, i: int, names: Sequence[str]) -> Any:
+def _force(table: Any, i: int, names: Mapping[str, int]) -> Any:
     """The force element of the [[force]] table number i (bodies resolved by name in `names`)."""
     name = f"force[{i}]"
     if not isinstance(table, Mapping):
@@ -538,6 +550,10 @@ def _run(value: Any, tradeoff: Any = None) -> RunOptions:
 # g(q) = q^2 (1 - q^2)^(7/2) peaks at q^2 = 2/9 with g = 0.0921...; 0.1 bounds it (the rejection step
 # of Aarseth, Henon & Wielen 1974)
 _G_BOUND = 0.1
+# memory a generated particle takes until the scene is loaded [bytes]: the peak resident memory of loading
+# 10^6 particles was 845 MiB (the draws, the bodies and states in Python and C++, the names and their index),
+# rounded up
+CLUSTER_BYTES_PER_PARTICLE = 1000
 
 
 def _isotropic(rng: np.random.Generator, lengths: np.ndarray) -> np.ndarray:
@@ -612,6 +628,7 @@ def _cluster(table: Any, k: int) -> _Cluster:
     if model != "plummer":
         raise _fail(f"{name}.model", "'plummer'", model)
     count = _integer(_required(table, "count", name, "an integer >= 2"), f"{name}.count", 2)
+    _check_cluster_memory(count, f"{name}.count")
     total_mass = quantity(_required(table, "total_mass", name, "a mass [kg] > 0"), f"{name}.total_mass", "kg",
                           positive=True)
     scale_radius = quantity(_required(table, "scale_radius", name, "a length [m] > 0"), f"{name}.scale_radius",
@@ -625,8 +642,21 @@ def _cluster(table: Any, k: int) -> _Cluster:
                     [_core.ParticleState(p, v) for p, v in zip(p_W, v_W)], G, softening)
 
 
+def _check_cluster_memory(count: int, name: str) -> None:
+    """ValueError naming `name` when `count` generated particles would not fit in the memory available
+    (CLUSTER_BYTES_PER_PARTICLE each), before any is drawn."""
+    available = available_bytes()
+    needed = count * CLUSTER_BYTES_PER_PARTICLE
+    if available is not None and needed > available:
+        raise ValueError(f"{name}: expected a count whose particles fit in the available memory "
+                         f"({format_bytes(available)}: at most {available // CLUSTER_BYTES_PER_PARTICLE} particles of "
+                         f"about {CLUSTER_BYTES_PER_PARTICLE} bytes), got {count} "
+                         f"(an estimated {format_bytes(needed)})")
+
+
 def parse_scene(data: Mapping[str, Any], source: str = "scene") -> SceneFile:
     """A SceneFile from parsed TOML `data` (`source` names it when the file sets no name)."""
+    _check_nesting(data, source)
     data = _check_keys(data, "scene", _TOP_KEYS, "the top level")
     if "body" not in data and "cluster" not in data:
         raise _fail("scene.body", "at least one [[body]] table", "nothing")
@@ -636,38 +666,40 @@ def parse_scene(data: Mapping[str, Any], source: str = "scene") -> SceneFile:
     clusters = data.get("cluster", [])
     if not isinstance(clusters, list) or ("cluster" in data and not clusters):
         raise _fail("cluster", "an array of [[cluster]] tables", clusters)
-    scene = _core.Scene()
-    names: list[str] = []
-    initial = []
+    names: dict[str, int] = {}  # each body's name -> its index (a dict: a name is checked in O(1))
+    bodies, flows, initial = [], [], []
     for i, table in enumerate(tables):
         body_name, body, state = _body(table, i)
         if body_name in names:
             raise _fail(f"body[{i}].name", "a name no other [[body]] has", body_name)
-        names.append(body_name)
-        scene.add_body(body, name=body_name, mass_flow=_mass_flow(table, f"body[{i}]"))
+        names[body_name] = i
+        bodies.append(body)
+        flows.append(_mass_flow(table, f"body[{i}]"))
         initial.append(state)
-    if "frame" in data:
-        scene.frame = _frame(data["frame"])
+    frame = _frame(data["frame"]) if "frame" in data else None
     gravities = []  # (first body, count, G, softening) of each cluster
     for k, table in enumerate(clusters):
         cluster = _cluster(table, k)
-        taken = set(names).intersection(cluster.names)
-        if taken:
+        taken = next((n for n in cluster.names if n in names), None)
+        if taken is not None:
             raise _fail(f"cluster[{k}].name_prefix", "a prefix giving names no other body has",
-                        f"{table.get('name_prefix', f'cluster{k}_')!r} (names {sorted(taken)[0]!r})")
+                        f"{table.get('name_prefix', f'cluster{k}_')!r} (names {taken!r})")
         gravities.append((len(names), len(cluster.names), cluster.G, cluster.softening))
-        for body_name, body, state in zip(cluster.names, cluster.bodies, cluster.states):
-            names.append(body_name)
-            scene.add_body(body, name=body_name)
-            initial.append(state)
+        names.update(zip(cluster.names, range(len(names), len(names) + len(cluster.names))))
+        bodies += cluster.bodies
+        flows += [None] * len(cluster.bodies)
+        initial += cluster.states
+    # one call: the scene's bodies, named, with their flows (each name checked by the scene's name index)
+    scene = _core.Scene(bodies=bodies, body_names=list(names), frame=frame,
+                        mass_flows=flows if any(f is not None for f in flows) else None)
     forces = data.get("force", [])
     if not isinstance(forces, list):
         raise _fail("force", "an array of [[force]] tables", forces)
     for i, table in enumerate(forces):
         _core_call(scene.add, f"force[{i}]", _force(table, i, names))
     for first, count, G, softening in gravities:  # one cluster's bodies, or None when they are all of them
-        bodies = None if count == len(names) else list(range(first, first + count))
-        scene.add(_core.MutualGravity(G=G, softening=softening, bodies=bodies))
+        cluster_bodies = None if count == len(names) else list(range(first, first + count))
+        scene.add(_core.MutualGravity(G=G, softening=softening, bodies=cluster_bodies))
     description = _string(data.get("description", ""), "description")
     run = _run(data.get("run", {}), data.get("tradeoff", {}))
     return SceneFile(scene, initial, run, _string(data.get("name", source), "name"), description.strip())
@@ -695,6 +727,17 @@ def _is_file(path: str) -> bool:
         return False
 
 
+def is_scene_toml(path: str | Path) -> bool:
+    """True for a readable TOML file that is a scene file: [[body]] tables (a problem file has one [body]
+    table) or [[cluster]] tables (a scene of generated particles only). False for anything else, a file
+    that is no valid TOML included (its loader says what is wrong with it)."""
+    try:
+        data = _read_toml(Path(path).read_text(encoding="utf-8"), str(path))
+    except (OSError, ValueError):  # UnicodeDecodeError is a ValueError
+        return False
+    return isinstance(data.get("body"), list) or "cluster" in data
+
+
 def read_scene(path_or_text: str | Path) -> SceneFile:
     """Read a scene: a path (str or Path) to a .toml file, the TOML text itself (a str holding a
     newline, or an '=' and naming no file), or the name of a shipped scene (example_scenes())."""
@@ -710,11 +753,7 @@ def read_scene(path_or_text: str | Path) -> SceneFile:
                 raise _fail("path_or_text", "an existing .toml file", str(path_or_text))
             path = scene_path(str(path_or_text))
         text, source = path.read_text(encoding="utf-8"), path.stem
-    try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as e:
-        raise ValueError(f"{source}: expected valid TOML, got {e}") from None
-    return parse_scene(data, source)
+    return parse_scene(_read_toml(text, source), source)
 
 
 def load_scene(path_or_text: str | Path) -> tuple[Any, list[Any], RunOptions]:

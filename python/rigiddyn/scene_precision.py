@@ -55,10 +55,6 @@ import numpy as np
 
 from . import _core
 
-if sys.version_info >= (3, 11):
-    import tomllib
-else:  # pragma: no cover - exercised on Python 3.9/3.10 only
-    import tomli as tomllib
 if TYPE_CHECKING:
     from .work_precision import TradeoffResult
 
@@ -68,16 +64,6 @@ _TINY = np.finfo(float).tiny
 CHECK_HALVINGS = 4  # the independent check's step is halved at most this often below the reference's finest
 
 
-def _toml_tables(path: Path) -> Mapping[str, Any] | None:
-    """The TOML file's top-level tables, None if it does not parse (its loader says why)."""
-    try:
-        with open(path, "rb") as f:
-            data: Mapping[str, Any] = tomllib.load(f)
-        return data
-    except (OSError, tomllib.TOMLDecodeError):
-        return None
-
-
 def is_scene_source(source: Any) -> bool:
     """True if `source` (a path or a name) is a scene file: a TOML file whose `body` is an array of
     tables ([[body]]; a problem file has one [body] table), or the name of a shipped scene."""
@@ -85,8 +71,9 @@ def is_scene_source(source: Any) -> bool:
         return False
     path = Path(source)
     if path.is_file():
-        data = _toml_tables(path)
-        return data is not None and isinstance(data.get("body"), list)
+        from .scene_file import is_scene_toml
+
+        return is_scene_toml(path)
     from .scene_file import example_scenes
 
     return isinstance(source, str) and not path.suffix and len(path.parts) == 1 and source in example_scenes()

@@ -40,11 +40,6 @@ from . import _core
 from .out_folder import EXIT_EXISTS, OutFolder, OutputExists
 from .scene_file import SceneFile, read_scene
 
-if sys.version_info >= (3, 11):
-    import tomllib
-else:  # pragma: no cover - exercised on Python 3.9/3.10 only
-    import tomli as tomllib
-
 __all__ = ["SCENE_OUTPUTS", "is_scene_file", "run_scene_simulate"]
 
 SCENE_OUTPUTS = ("trajectory.csv", "trajectory.npz", "trajectory.parquet", "run.json", "trajectory.png")
@@ -55,18 +50,16 @@ CONSERVATIVE = ("UniformGravity", "PointMassGravity", "MutualGravity", "GravityG
 
 
 def is_scene_file(path_or_name: str) -> bool:
-    """True for a shipped scene's name or a readable .toml file with [[body]] tables (a problem file
-    has one [body] table)."""
-    from .scene_file import example_scenes
+    """True for a shipped scene's name or a readable .toml file with [[body]] or [[cluster]] tables (a
+    problem file has one [body] table): scene_file.is_scene_toml."""
+    from .scene_file import example_scenes, is_scene_toml
 
     try:
-        is_file = Path(path_or_name).is_file()
-        if not is_file:
+        if not Path(path_or_name).is_file():
             return path_or_name in example_scenes()
-        data = tomllib.loads(Path(path_or_name).read_text(encoding="utf-8"))
-    except (OSError, UnicodeDecodeError, ValueError):
+    except (OSError, ValueError):
         return False  # load_problem names what is wrong with it
-    return isinstance(data.get("body"), list)
+    return is_scene_toml(path_or_name)
 
 
 class _ScenePlan:

@@ -1,9 +1,29 @@
 """Quantities with units, read once at the edge (scene files, the Python API) and handed on in SI.
 
 A value is either a plain number, read as SI in the unit the field expects (kg, m, s, rad, N, ...), a
-string "<number> <unit>" parsed with pint ("2 slug", "3 ft", "30 deg", "1500 rpm",
-"398600.4418 km^3/s^2"), or a pint Quantity (the Python API). A vector is a list of such values
-(each may carry its own unit) or a table ``{value = [x, y, z], unit = "km"}``.
+string "<number> <unit>" ("2 slug", "3 ft", "30 deg", "1500 rpm", "398600.4418 km^3/s^2"), or a pint
+Quantity (the Python API). A vector is a list of such values (each may carry its own unit) or a table
+``{value = [x, y, z], unit = "km"}``.
+
+A unit string is a number then its unit, nothing else, read by this module's own grammar before pint
+sees any of it (so that no text can run code or take unbounded time):
+
+- the number as TOML writes one: an optional sign, digits with a decimal point (never a comma:
+  "1,5 kg" is refused), an optional exponent ("1e3", "-.5", "6.6743e-11"), digits grouped by
+  underscores between digits ("1_000"); or inf / nan (then refused as not finite);
+- then, after optional spaces, the unit: names of pint's registry ("kg", "ft", "rpm", "°", "µm")
+  joined by "*", "/" or a space (a product: "kg m"), each name or parenthesised group ("(m/s)^2")
+  raised, if at all, by "^" or "**" to a literal integer or decimal exponent ("s^-2", "Hz^0.5",
+  "s**(-1)"), with "1" for a unit of its own ("1/s"). Parentheses nest at most
+  MAX_UNIT_NESTING deep, every unit's total power is at most MAX_UNIT_POWER in size, and the whole
+  string is at most MAX_UNIT_TEXT characters;
+- nothing else: no comment ("3 kg # mass": the comment goes after the closing quote of the TOML
+  string), no second number, no operator after the number ("2**10 kg").
+
+Only single unit names reach pint (its registry looks each one up); the number is read by Python's
+float (one beyond the float range is refused, never rounded to inf), and the powers are combined here.
+The factor from each unit to the SI unit asked for is pint's, computed once per process and cached, so
+that a file of many numbers with units reads in about 10 us a number.
 
 Errors are ValueErrors naming the field, the value and the unit expected:
 ``body[2].inertia: expected kg m^2, got '3 kg m' ([mass] * [length])``. pint is imported, and its
@@ -20,13 +40,23 @@ import functools
 import math
 import re
 from collections.abc import Mapping, Sequence
-from typing import Any
+from typing import Any, NoReturn
 
 import numpy as np
 
 __all__ = ["is_quantity", "quantity", "registry", "to_si", "vector_quantity"]
 
-_LEADING_NUMBER = re.compile(r"\s*[+-]?(\d|\.\d|inf|nan)", re.IGNORECASE)  # "3 ft", "-.5 m", "1e3 s"
+MAX_UNIT_TEXT = 100  # characters of a unit string
+MAX_UNIT_NESTING = 4  # parentheses within parentheses of a unit
+MAX_UNIT_POWER = 99  # |total power| of each unit name (km^3 has 3; ((km^3)^2)^2 has 12)
+
+_DIGITS = r"[0-9]+(?:_[0-9]+)*"  # TOML's digits: underscores only between digits
+_NUMBER = re.compile(rf"\s*(?P<number>[+-]?(?:(?:{_DIGITS}(?:\.(?:{_DIGITS})?)?|\.{_DIGITS})(?:[eE][+-]?{_DIGITS})?"
+                     r"|(?:inf|nan)(?![\w°])))", re.IGNORECASE)  # "3", "-.5", "1_000", "6.6743e-11", "inf"
+_UNIT_NAME = re.compile(r"(?:[^\W\d_]|°)(?:\w|°)*|%")  # "kg", "µm", "degC", "°", "%": a letter (or °, %) first
+_EXPONENT = re.compile(r"[+-]?[0-9]+(?:\.[0-9]+)?|\(\s*[+-]?[0-9]+(?:\.[0-9]+)?\s*\)")  # "-2", "0.5", "(-1)"
+_HINTS = {",": "a decimal comma? write a point, 1.5", "#": "a comment goes after the closing quote",
+          "_": "an underscore only between digits, 1_000"}
 
 
 @functools.lru_cache(maxsize=1)
@@ -66,7 +96,13 @@ def to_si(value: Any, unit: str, name: str) -> Any:
 
 
 def _fail(name: str, unit: str, got: Any, why: str = "") -> ValueError:
-    return ValueError(f"{name}: expected {_spoken(unit)}, got {got!r}" + (f" ({why})" if why else ""))
+    return ValueError(f"{name}: expected {_spoken(unit)}, got {_shown(got)}" + (f" ({why})" if why else ""))
+
+
+def _shown(value: Any) -> str:
+    """repr(value) for a message, cut to its first 160 characters when longer than 200."""
+    text = repr(value)
+    return text if len(text) <= 200 else f"{text[:160]}... ({len(text)} characters)"
 
 
 def _spoken(unit: str) -> str:
@@ -82,7 +118,10 @@ def quantity(value: Any, name: str, unit: str, positive: bool = False, nonnegati
     if isinstance(value, bool):
         raise _fail(name, unit, value, "a boolean is no number")
     if isinstance(value, (int, float, np.integer, np.floating)):
-        x = float(value)
+        try:
+            x = float(value)
+        except OverflowError:  # a Python int beyond 1.8e308
+            raise _fail(name, unit, value, "beyond the float range") from None
     elif isinstance(value, str) or is_quantity(value):
         x = _convert(value, name, unit)
     else:
@@ -97,26 +136,174 @@ def quantity(value: Any, name: str, unit: str, positive: bool = False, nonnegati
 
 
 def _convert(value: Any, name: str, unit: str) -> float:
-    """A unit string or a pint Quantity converted to `unit` (the quantity's own registry parses it)."""
+    """A unit string (read by the grammar of the module docstring) or a pint Quantity (by its own registry)
+    converted to `unit`."""
     import pint
 
-    if isinstance(value, str):
-        if not _LEADING_NUMBER.match(value):
-            raise _fail(name, unit, value, "a number then its unit, such as \"3 ft\"")
-        try:
-            q = registry().Quantity(value)
-        except pint.UndefinedUnitError as e:
-            raise _fail(name, unit, value, f"unknown unit {str(e.args[0]) if e.args else ''}".strip()) from None
-        except Exception as e:  # pint's parser raises several types for text that is no quantity
-            raise _fail(name, unit, value, f"no quantity: {type(e).__name__}") from None
-    else:
-        q = value
+    if not isinstance(value, str):
+        return _convert_quantity(value, value, name, unit)
+    try:
+        magnitude, powers = _read(value)
+        factor = _factor(tuple(powers.items()), unit)
+        if factor is None:  # an offset unit: pint's conversion of the quantity
+            return _convert_quantity(registry().Quantity(magnitude, _unit_of(powers)), value, name, unit)
+    except _Refused as e:
+        raise _fail(name, unit, value, str(e)) from None
+    except pint.DimensionalityError:
+        raise _fail(name, unit, value, str(_unit_of(powers).dimensionality)) from None
+    except OverflowError:  # the factor itself (a power of a large unit)
+        raise _fail(name, unit, value, f"beyond the float range in {_spoken(unit)}") from None
+    except pint.PintError as e:  # an offset unit (degC) raised to a power, ...
+        raise _fail(name, unit, value, f"no quantity: {e}") from None
+    return _finite_in(magnitude * factor, magnitude, name, unit, value)
+
+
+def _convert_quantity(q: Any, value: Any, name: str, unit: str) -> float:
+    """The pint Quantity q (given as `value`) converted to `unit` by its registry."""
+    import pint
+
     if not isinstance(q.magnitude, (int, float, np.integer, np.floating)) or isinstance(q.magnitude, bool):
         raise _fail(name, unit, value, "a single number with a unit")
     try:
-        return float(q.to(unit).magnitude)
+        x = float(q.to(unit).magnitude)
     except pint.DimensionalityError:
         raise _fail(name, unit, value, str(q.dimensionality)) from None
+    except OverflowError:
+        x = math.inf
+    except pint.PintError as e:  # an offset unit (degC) in a product, ...
+        raise _fail(name, unit, value, f"no quantity: {e}") from None
+    return _finite_in(x, q.magnitude, name, unit, value)
+
+
+def _finite_in(x: float, magnitude: Any, name: str, unit: str, value: Any) -> float:
+    """x, the value in `unit` of a quantity of `magnitude`: ValueError when a finite magnitude (an integer,
+    of any size, or a finite float) converts to inf."""
+    if math.isinf(x) and (isinstance(magnitude, (int, np.integer)) or math.isfinite(magnitude)):
+        raise _fail(name, unit, value, f"beyond the float range in {_spoken(unit)}")
+    return x
+
+
+@functools.lru_cache(maxsize=256)
+def _factor(powers: tuple[tuple[str, float], ...], unit: str) -> float | None:
+    """The factor pint converts the unit prod(name ** power) to `unit` by, cached (pint's conversion of x is
+    x * factor, so the product is pint's result bit for bit); None for an offset unit (degC), whose
+    conversion is no product."""
+    source = _unit_of(dict(powers))
+    ureg = registry()
+    if ureg.Quantity(0.0, source).to(unit).magnitude != 0.0:
+        return None
+    return float(ureg.Quantity(1.0, source).to(unit).magnitude)
+
+
+class _Refused(Exception):
+    """A unit string outside the grammar (the reason: the message's parenthesis)."""
+
+
+def _read(text: str) -> tuple[float, dict[str, float]]:
+    """(number, {unit name: total power}) of a unit string "<number> <unit>" (module docstring's grammar)."""
+    if len(text) > MAX_UNIT_TEXT:
+        raise _Refused(f"a unit string of at most {MAX_UNIT_TEXT} characters")
+    match = _NUMBER.match(text)
+    if not match:
+        raise _Refused('a number then its unit, such as "3 ft"')
+    number = match.group("number")
+    magnitude = float(number)
+    if not math.isfinite(magnitude) and number.lstrip("+-").lower() not in ("inf", "nan"):
+        raise _Refused("beyond the float range")
+    reader = _UnitReader(text, match.end())
+    powers = reader.product(depth=0)
+    if reader.pos < len(text):  # a ')' without its '('
+        reader.refuse()
+    for unit_name, power in powers.items():
+        if not abs(power) <= MAX_UNIT_POWER:
+            raise _Refused(f"{unit_name} to the power {power:g}: a power of at most {MAX_UNIT_POWER} in size")
+    return magnitude, powers
+
+
+class _UnitReader:
+    """Recursive descent over the unit of a unit string from character `pos` on, giving {name: power}:
+
+        product := factor (("*" | "/" | spaces) factor)*
+        factor  := (name | "1" | "(" product ")") [("^" | "**") exponent]
+        exponent := a literal number, optionally signed and in parentheses ("-2", "0.5", "(-1)")
+    """
+
+    def __init__(self, text: str, pos: int):
+        self.text, self.pos = text, pos
+
+    def refuse(self) -> NoReturn:
+        rule = 'a number then its unit, such as "3 ft"'
+        if self.pos == len(self.text):
+            raise _Refused(f"a unit or an exponent missing at the end: {rule}")
+        char = self.text[self.pos]
+        raise _Refused(f"{char!r} at character {self.pos + 1}: {_HINTS.get(char, rule)}")
+
+    def _spaces(self) -> None:
+        while self.pos < len(self.text) and self.text[self.pos].isspace():
+            self.pos += 1
+
+    def _at(self, token: str) -> bool:
+        return self.text.startswith(token, self.pos)
+
+    def product(self, depth: int) -> dict[str, float]:
+        powers: dict[str, float] = {}
+        sign = 1.0
+        while True:
+            for unit_name, power in self.factor(depth).items():
+                powers[unit_name] = powers.get(unit_name, 0.0) + sign * power
+            self._spaces()
+            if self.pos == len(self.text) or self._at(")"):
+                return powers
+            sign = -1.0 if self._at("/") else 1.0
+            if self._at("*") or self._at("/"):
+                self.pos += 1
+
+    def factor(self, depth: int) -> dict[str, float]:
+        self._spaces()
+        name = _UNIT_NAME.match(self.text, self.pos)
+        if self._at("("):
+            if depth == MAX_UNIT_NESTING:
+                raise _Refused(f"parentheses nested at most {MAX_UNIT_NESTING} deep")
+            self.pos += 1
+            powers = self.product(depth + 1)
+            if not self._at(")"):
+                self.refuse()
+            self.pos += 1
+        elif self._at("1") and not self.text[self.pos + 1:self.pos + 2].isdigit():
+            self.pos += 1
+            powers = {}  # the unit one, as in "1/s"
+        elif name:
+            self.pos = name.end()
+            powers = {name.group(): 1.0}
+        else:
+            self.refuse()
+        self._spaces()
+        if self._at("**") or self._at("^"):
+            self.pos += 2 if self._at("**") else 1
+            self._spaces()
+            exponent = _EXPONENT.match(self.text, self.pos)
+            if not exponent:
+                self.refuse()
+            self.pos = exponent.end()
+            e = float(exponent.group().strip("() \t"))
+            powers = {k: v * e for k, v in powers.items()}
+        return powers
+
+
+def _unit_of(powers: Mapping[str, float]) -> Any:
+    """The pint Unit prod(name ** power): each name looked up alone in the registry (never an expression),
+    an integral power as an int."""
+    import pint
+
+    ureg = registry()
+    unit = ureg.Unit("")
+    for unit_name, power in powers.items():
+        try:
+            named = ureg.Unit(unit_name)
+        except (pint.UndefinedUnitError, ValueError):  # ValueError: a name pint reads as a number ("nan")
+            raise _Refused(f"unknown unit {unit_name!r}") from None
+        unit = unit * named ** (int(power) if power.is_integer() else power)
+    return unit
 
 
 def vector_quantity(value: Any, name: str, unit: str, n: int = 3) -> np.ndarray:

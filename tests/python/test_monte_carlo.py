@@ -388,6 +388,90 @@ def test_scene_bad_input():
         mc.monte_carlo(scene, [nominal[0], nominal[0]], 2, seed=1, dt=0.1, steps=1)
 
 
+def pivoted_top_and_pendulum():
+    """A heavy top pinned at its tip and a planar pendulum, under gravity, with their nominal states."""
+    scene = rd.Scene()
+    scene.add_body(rd.PivotedBody(rd.RigidBody(2.0, [0.02, 0.02, 0.01]), p_OC_B=[0.0, 0.0, 0.1]), name="top")
+    scene.add_body(rd.PivotedPlanarBody(1.0, 0.01, p_OC_B=[0.0, -0.5]), name="p")
+    scene.add(rd.UniformGravity())
+    tilted = [math.sin(0.1), 0.0, 0.0, math.cos(0.1)]  # 0.2 rad about x
+    return scene, [rd.PivotedBodyState(q_WB=tilted, w_B=[0.0, 0.0, 30.0]), rd.PivotedPlanarBodyState(theta=0.3)]
+
+
+def test_pivoted_bodies_states_are_dispersed():
+    scene, nominal = pivoted_top_and_pendulum()
+    dispersions = {"p.omega": mc.Uniform(-0.1, 0.1), "p.theta": Normal(std=0.05),
+                   "top.w_B": Normal(std=[0.1, 0.1, 1.0]), "top.q_WB": mc.RotationNormal(0.02)}
+    run = mc.monte_carlo(scene, nominal, 4, seed=3, dt=0.01, steps=6, record_every=3, dispersions=dispersions)
+    assert list(run.inputs) == ["top.q_WB", "top.w_B", "p.theta", "p.omega"]
+    assert run.inputs["p.theta"].shape == (4,) and run.inputs["top.w_B"].shape == (4, 3)
+    assert np.all(run.inputs["p.theta"] != 0.3) and np.all(run.inputs["p.omega"] != 0.0)
+    np.testing.assert_array_equal(run.values("w_B", at=0.0)[:, 0], run.inputs["top.w_B"])
+    np.testing.assert_array_equal(run.values("q_WB", at=0.0)[:, 0], run.inputs["top.q_WB"])
+    # each sample is the serial run of the scene from its drawn states
+    for i in range(4):
+        states = [rd.PivotedBodyState(q_WB=run.inputs["top.q_WB"][i], w_B=run.inputs["top.w_B"][i]),
+                  rd.PivotedPlanarBodyState(theta=run.inputs["p.theta"][i], omega=run.inputs["p.omega"][i])]
+        serial = rd.simulate(scene, states, 0.01, 6, record_every=3)
+        for field in ("q_WB", "w_B", "total_energy"):
+            np.testing.assert_array_equal(np.asarray(getattr(run.batch, field))[i], getattr(serial, field))
+
+
+def test_a_wrong_key_lists_the_valid_ones():
+    scene, nominal = pivoted_top_and_pendulum()
+    with pytest.raises(ValueError, match=r"^dispersions: expected keys among top\.q_WB, top\.w_B, p\.theta, p\.omega, "
+                                         r"got 'p\.thetta'$"):
+        mc.monte_carlo(scene, nominal, 2, seed=1, dt=0.1, steps=1, dispersions={"p.thetta": Normal(std=1.0)})
+    many = rd.Scene(bodies=[rd.Particle(1.0)] * 100)
+    with pytest.raises(ValueError) as e:
+        mc.monte_carlo(many, [rd.ParticleState()] * 100, 2, seed=1, dt=0.1, steps=1, dispersions={"x": Normal(std=1.0)})
+    assert str(e.value).startswith("dispersions: expected keys among body0.p_W, body0.v_W, body0.mass, body1.p_W, ")
+    assert str(e.value).endswith(", ... (300 keys), got 'x'")
+    planar = rd.Scene(bodies=[rd.PlanarBody(1.0, 1.0)])
+    with pytest.raises(ValueError, match=r"^dispersions: expected no key \(no body of the scene has a dispersible"):
+        mc.monte_carlo(planar, [rd.PlanarBodyState()], 2, seed=1, dt=0.1, steps=1, dispersions={"x": Normal(std=1.0)})
+
+
+def test_the_memory_estimate_refuses_a_run_before_any_draw(monkeypatch):
+    def no_draw(*args, **kwargs):
+        raise AssertionError("drawn before the memory estimate")
+
+    monkeypatch.setattr(mc, "_sample", no_draw)
+    monkeypatch.setattr(mc, "available_bytes", lambda: 2**34)
+    with pytest.raises(ValueError) as e:
+        mc.monte_carlo(SATELLITE, TUMBLE, 10**7, seed=1, dt=0.01, steps=10**4, dispersions={"w_B": Normal(std=0.1)})
+    per_sample = mc.SAMPLE_BYTES + 10001 * mc.RECORD_DOUBLES * 8  # 10^4 steps: 10001 records
+    assert str(e.value) == (
+        f"n: expected a sample count whose runs fit in the available memory (16 GiB: at most {2**34 // per_sample} "
+        f"samples of 10001 records, {mc.format_bytes(per_sample)} each), got 10000000 (an estimated "
+        f"{mc.format_bytes(10**7 * per_sample)}; fewer samples, or a larger record_every)")
+    scene, nominal = sat_and_tip()
+    # 2 bodies, 1 element; 10 steps recorded every 4th: steps 0, 4, 8 and the last, 10
+    per_sample = mc.SAMPLE_BYTES + 2 * mc.STATE_BYTES + 4 * (10 + 20 * 2 + 2 * 1) * 8
+    with pytest.raises(ValueError, match=rf"at most {2**34 // per_sample} samples of 4 records"):
+        mc.monte_carlo(scene, nominal, 10**9, seed=1, dt=0.01, steps=10, record_every=4)
+
+
+def test_a_sample_count_beyond_any_memory_is_named():
+    with pytest.raises(ValueError, match=r"^n: expected a sample count whose runs fit in the available memory .* "
+                                         r"got 100000000000000000000 \(an estimated"):
+        mc.monte_carlo(SATELLITE, TUMBLE, 10**20, seed=1, dt=0.1, steps=1)
+
+
+@pytest.mark.parametrize("kwargs, error, message", [
+    (dict(steps=-1), ValueError, r"^steps: expected an integer >= 0, got -1$"),
+    (dict(steps=2.5), TypeError, r"^steps: expected an integer >= 0, got 2.5$"),
+    (dict(record_every=0), ValueError, r"^record_every: expected an integer >= 1, got 0$"),
+    (dict(record_every=True), TypeError, r"^record_every: expected an integer >= 1, got True$"),
+])
+def test_steps_and_record_every_are_checked_before_any_draw(monkeypatch, kwargs, error, message):
+    monkeypatch.setattr(mc, "_sample", None)  # a draw would be a TypeError naming no argument
+    options = dict(seed=1, dt=0.1, steps=2)
+    options.update(kwargs)
+    with pytest.raises(error, match=message):
+        mc.monte_carlo(SATELLITE, TUMBLE, 2, **options)
+
+
 # ---------------------------------------------------------------------------------------------------
 # statistics
 
