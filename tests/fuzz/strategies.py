@@ -92,11 +92,13 @@ RECIPES = {
     "SceneResult": st.tuples(st.integers(0, 30), st.integers(1, 5)).map(lambda nr: _call_spec(
         "simulate", [_SCENE, _SCENE_STATES], dt=("lit", 0.01), steps=("lit", nr[0]), record_every=("lit", nr[1]))),
     # issue 13: batches of drawn sizes (samples, steps, record_every)
-    "BatchResult": st.tuples(st.integers(1, 4), st.integers(0, 30), st.integers(1, 5)).map(lambda snr: _call_spec(
-        "simulate_batch",
-        [_call_spec("RigidBody", [("lit", 1.0), ("lit", [1.0, 2.0, 2.5])]),
-         ("list", [_call_spec("RigidBodyState", w_B=("lit", [0.1 * k, 1.0, 0.1])) for k in range(snr[0])])],
-        dt=("lit", 0.01), steps=("lit", snr[1]), record_every=("lit", snr[2]), threads=("lit", 2))),
+    "BatchResult": st.tuples(st.integers(1, 9), st.integers(0, 30), st.integers(1, 5), st.booleans()).map(
+        lambda snrs: _call_spec(
+            "simulate_batch",
+            [_call_spec("RigidBody", [("lit", 1.0), ("lit", [1.0, 2.0, 2.5])]),
+             ("list", [_call_spec("RigidBodyState", w_B=("lit", [0.1 * k, 1.0, 0.1])) for k in range(snrs[0])])],
+            dt=("lit", 0.01), steps=("lit", snrs[1]), record_every=("lit", snrs[2]), threads=("lit", 2),
+            simd=("lit", snrs[3]))),  # the SIMD path across up to 9 samples (lanes and remainders)
     "BatchSceneResult": st.tuples(st.integers(1, 3), st.integers(0, 30)).map(lambda sn: _call_spec(
         "simulate_batch", [_SCENE, ("list", [_SCENE_STATES] * sn[0])], dt=("lit", 0.01), steps=("lit", sn[1]))),
     # a density integral needs a callable rho: a constant density per point, over a drawn box
@@ -132,6 +134,20 @@ RECIPES = {
     "ConstantThrustSolution": st.tuples(st.floats(0.1, 100.0), st.floats(-10.0, -0.01)).map(lambda mr: _call_spec(
         "ConstantThrustSolution", [("lit", mr[0]), ("lit", mr[1]), ("lit", [0.0, 0.0, -100.0])],
         g_W=("lit", [0.0, 0.0, -9.81]))),
+}
+# a pivoted top's run (the one-body scene of the body and gravity)
+RECIPES["PivotedSceneResult"] = st.tuples(st.integers(0, 30), st.sampled_from(["rk4", "implicit_midpoint", "splitting_dlm"])
+                                          ).map(lambda nm: _call_spec(
+    "simulate", [_PIVOTED, _call_spec("PivotedBodyState", w_B=("lit", [0.0, 0.0, 10.0]))], dt=("lit", 0.01),
+    steps=("lit", nm[0]), method=("lit", nm[1]), gravity=("lit", True)))
+# the recipes that are valid calls of a target: that target's calls also draw them, whole or with one argument wild
+RECIPE_CALLS = {
+    "simulate": ["SimulationResult", "SceneResult", "PivotedSceneResult"], "simulate_batch": ["BatchResult", "BatchSceneResult"],
+    "integrate_density_over_box": ["DensityIntegral"], "forward_dynamics": ["PivotedAcceleration"],
+    "monte_carlo.monte_carlo": ["monte_carlo.MonteCarloResult"],
+    **{name: [name] for name in ("Scene", "ScheduledLoads", "PivotedBody", "PivotedPlanarBody", "Thrust",
+                                 "CompoundPendulumSolution", "LagrangeTopSolution", "RotatingFrameFreeParticle",
+                                 "ConstantThrustSolution")},
 }
 UNTYPED = ("", "object", "typing.Any", "Any")  # annotations that say nothing of the argument
 # monte_carlo: a valid run of a body or of the scene above with drawn dispersions, sizes and seed (rigiddyn.monte_carlo)
@@ -428,8 +444,28 @@ class Strategies:
 
     @functools.lru_cache(maxsize=None)
     def call(self, t: Target) -> st.SearchStrategy:
-        """A top-level call of target t (arguments plausible and wild)."""
-        return st.one_of(*[self._call(t, params, 0, wild=True) for params in t.overloads])
+        """A top-level call of target t (arguments plausible and wild); where a recipe makes a valid call of it
+        (RECIPE_CALLS), that call too, whole or with one argument replaced by a wild value."""
+        calls = [self._call(t, params, 0, wild=True) for params in t.overloads]
+        for name in RECIPE_CALLS.get(t.path, []):
+            calls += [RECIPES[name], RECIPES[name].flatmap(lambda spec: self._one_wild(spec))]
+        return st.one_of(*calls)
+
+    def _one_wild(self, spec) -> st.SearchStrategy:
+        """spec ("call", path, args, kwargs) with one of its arguments replaced by a wild value."""
+        _, path, args, kwargs = spec
+        n = len(args) + len(kwargs)
+        if n == 0:
+            return st.just(spec)
+
+        def replace(i_value):
+            i, value = i_value
+            if i < len(args):
+                return ("call", path, args[:i] + [value] + args[i + 1:], kwargs)
+            j = i - len(args)
+            return ("call", path, args, kwargs[:j] + [(kwargs[j][0], value)] + kwargs[j + 1:])
+
+        return st.tuples(st.integers(0, n - 1), self.wild(1)).map(replace)
 
     # -- arguments
     @functools.lru_cache(maxsize=None)
@@ -583,6 +619,14 @@ class Strategies:
             (r"rho", lambda s, p, doc, depth: st.one_of(  # a density per point [kg/m^3], or anything
                 lit(POSITIVE_FLOAT).map(lambda v: ("per_row", v)), returning()(s, p, doc, depth))),
             (r"kinematics_at", returning("FrameKinematics")),
+            (r"frame", obj("SceneFrame")),  # a Scene's frame (an element's frame is a word, below)
+            (r"mass_flows", lambda s, p, doc, depth: _list_of(st.one_of(
+                lit(st.none()), s.objects("MassFlow", depth + 1)), depth)),
+            # a MassFlow: dm/dt [kg/s] (negative: losing mass) or rate(t); inertia_rule 'scaled' or I(m) (3, 3)
+            (r"rate", lambda s, p, doc, depth: st.one_of(lit(st.floats(-10.0, 10.0)), lit(st.floats(-10.0, 0.0)).map(
+                lambda v: ("lambda", v)))),
+            (r"inertia_rule", lambda s, p, doc, depth: st.one_of(
+                lit(st.sampled_from(["scaled", "constant", ""])), array_spec(inertias()).map(lambda a: ("lambda", a)))),
         ]
         table = [
             (r"scalar_first|degrees|canonical|return_sensitivity|progress", lambda s, p, doc, depth: lit(st.booleans())),
@@ -664,15 +708,19 @@ def _shipped_scenes() -> list[str]:
         return ["kepler"]
 
 
-def _unit_string(draw) -> str:
-    """"<number> <unit>" in a unit of some dimension (UNITS), or a string no quantity should be read from."""
+@st.composite
+def unit_strings(draw) -> str:
+    """"<number> <unit>" in a unit of some dimension (UNITS), or (one in four) a string no quantity should be
+    read from (TORTURE)."""
     units = draw(st.sampled_from(sorted(UNITS)))
     name, _ = draw(st.sampled_from(UNITS[units]))
     number = draw(st.one_of(PLAIN, FLOATS, st.integers(-10**6, 10**6)))
     return f"{number!r} {name}" if draw(st.integers(0, 3)) else draw(st.sampled_from(TORTURE))
 
 
-UNIT_STRINGS = st.composite(lambda draw: _unit_string(draw))()
+UNIT_STRINGS = unit_strings()
+# a value a units function reads: a unit string, a number (SI), a list of them, a {value, unit} table, a pint
+# Quantity (made by rigiddyn.units.registry()), or something else
 UNIT_VALUES = st.one_of(
     lit(UNIT_STRINGS), lit(UNIT_STRINGS), lit(FLOATS), lit(st.lists(st.one_of(UNIT_STRINGS, PLAIN), min_size=2, max_size=4)),
     lit(st.tuples(st.lists(PLAIN, min_size=2, max_size=4), UNIT_STRINGS.map(lambda u: u.split(" ", 1)[-1])).map(
