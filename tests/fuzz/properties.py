@@ -277,6 +277,20 @@ def unit_string_value(x: float, unit: str, pick: int) -> None:
             f"unit table: {{value = [{x!r}, 0, {-x!r}], unit = {name!r}}} read as {vector.tolist()}"
 
 
+def unit_decimal_comma(x: float, unit: str, pick: int) -> None:
+    """A number written with a decimal comma ("1,5 m") is refused (ValueError naming the field) or read as the
+    decimal number it is; never as another number (4 eps relative, as unit_string_value)."""
+    name, size = UNITS[unit][pick % len(UNITS[unit])]
+    text = f"{x:.3f} {name}".replace(".", ",")
+    try:
+        got = rd.units.quantity(text, "x", unit)
+    except ValueError as e:
+        assert str(e).startswith("x: "), f"decimal comma: {text!r} refused without naming the field: {e}"
+        return
+    want = float(f"{x:.3f}") * size
+    assert abs(got - want) <= 4 * EPS * abs(want), f"decimal comma: {text!r} read as {got!r} {unit}, expected {want!r}"
+
+
 # ---------------------------------------------------------------------------------------------
 # monte_carlo: "sample i's draws depend only on (seed, i): serial and threaded runs agree, and a run of N
 # samples is the prefix of a run of N' > N samples with the same seed"
@@ -396,6 +410,13 @@ def cli_matches_api(scene: str, options: list) -> None:
             lines = [line for line in err.splitlines() if line.strip()]
             assert lines and (lines[-1].startswith("rigiddyn simulate: ") or "error:" in lines[-1]), \
                 f"cli: exit 2 without a message naming the problem; stderr:\n{err[-1000:]}"
+            if "PROBLEM" in lines[-1]:  # the file refused: load_scene must refuse it too
+                try:
+                    rd.load_scene(scene)
+                except (ValueError, TypeError):
+                    return
+                raise AssertionError(f"cli refuses a scene file load_scene reads (cluster-only: "
+                                     f"{'body' not in tomllib.loads(scene)}): {lines[-1]}")
             return
         record = json.loads((out / "run.json").read_text())
         model, initial, _ = rd.load_scene(scene)
@@ -624,6 +645,8 @@ STRATEGIES = {
     "scene_file_round_trip": _round_trip_params(),
     "units_match_si": _units_params(),
     "unit_string_value": _unit_string_params(),
+    "unit_decimal_comma": st.fixed_dictionaries({"x": st.floats(0.001, 1000.0), "unit": st.sampled_from(["m", "kg", "s"]),
+                                                 "pick": st.integers(0, 5)}),
     "monte_carlo_reproducible": _monte_carlo_params(),
     "cli_matches_api": _cli_params(),
     "lagrange_top_invariants": _top_params(),

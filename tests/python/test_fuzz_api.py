@@ -21,10 +21,10 @@ Findings of known defects being fixed (fuzz_api.KNOWN_DEFECTS) are listed apart 
 
 Cost: the CI profile below is bounded by counts, not time (fixed seeds per target, no example
 database, at most 20 examples and 100 calls per target with shrinking), so CI makes the same calls on
-every machine (with the same hypothesis version). Measured 2026-11-28: about 100 s of CPU (the scenes,
-Monte Carlo, units and properties added about 16 s of it), 3-7 min of wall time on 2 CPUs shared with
-other jobs, for the fuzz and the planted-bug check together (`time python3 -m pytest
-tests/python/test_fuzz_api.py`). A deeper hunt: RIGIDDYN_FUZZ_PROFILE=deep (PROFILES below), or
+every machine (with the same hypothesis version). Measured 2026-11-28 on 2 CPUs shared with other jobs (load
+about 10), for the fuzz and the planted-bug check together (`time python3 -m pytest tests/python/test_fuzz_api.py`):
+129 s of CPU, 6.5 min of wall time; the same run before the scenes, Monte Carlo, units, scene files, command line
+and properties were fuzzed: 101 s of CPU, 5 min of wall time (so they add about 28 s of CPU). A deeper hunt: RIGIDDYN_FUZZ_PROFILE=deep (PROFILES below), or
 python tests/fuzz/fuzz_api.py --examples 300 --calls 2000 [--only REGEX].
 """
 
