@@ -13,20 +13,27 @@ sent as its base and shape) and prints as the Python expression that rebuilds it
   ("layout", kind, spec)          the array re-laid out: "fortran", "reversed", "strided", "unaligned"
   ("broadcast", ndarray, shape)   np.broadcast_to(ndarray, shape): a read-only view, possibly huge
   ("list", [spec, ...]) / ("tuple", [spec, ...])
+  ("dict", [(key, spec), ...])   a dict of literal keys
+  ("file", name, text)            a file `name` written with `text` in the working directory; its name
+  ("rng", seed)                   numpy.random.default_rng(seed)
   ("lambda", spec)                a callable returning the value of spec whatever it is passed
   ("per_row", spec)               a callable returning the value of spec once per row of its first argument
   ("scipy_rotation", spec)        scipy.spatial.transform.Rotation.from_quat(value of spec)
   ("call", path, args, kwargs)    module.<path>(*args, **kwargs), path "f" or "Class" or "Class.static"
   ("method", self, name, args, kwargs)   (value of self).name(*args, **kwargs)
   ("chain", self, [(name, args, kwargs), ...])  self after calling each mutating method on it
+  ("check", module, name, params) <module>.<name>(**params): a property of results (properties.py), found by
+                                  the fuzz's import path
 """
 
 from __future__ import annotations
 
+import importlib
 import inspect
 import math
 import re
 from dataclasses import dataclass, fields, is_dataclass
+from pathlib import Path
 
 import numpy as np
 
@@ -138,7 +145,8 @@ def _annotation_text(annotation, empty) -> str:
 
 
 def _overloads(fn, name: str, drop_self: bool):
-    if inspect.isfunction(fn) or inspect.ismethod(fn) or isinstance(fn, type):  # Python: a real signature
+    # Python (a function, a method, a class, a decorated function such as functools.lru_cache's): a real signature
+    if inspect.isfunction(fn) or inspect.ismethod(fn) or isinstance(fn, type) or hasattr(fn, "__wrapped__"):
         return python_overloads(fn, drop_self)
     return pybind_overloads(name, getattr(fn, "__doc__", "") or "", drop_self)
 
@@ -150,33 +158,76 @@ def _target(path, owner, fn, name, drop_self):
     return Target(path, owner, tuple(p for p, _ in found), tuple(r for _, r in found), getattr(fn, "__doc__", "") or "")
 
 
-def public_targets(module) -> tuple[list[Target], dict[str, str]]:
-    """Every callable of module.__all__, and the names that have none with the reason."""
+def public_targets(module, submodules: tuple[str, ...] = ()) -> tuple[list[Target], dict[str, str]]:
+    """Every callable of module.__all__, and the names that have none with the reason. A module among
+    them (rigiddyn.monte_carlo), and each of `submodules` (public modules the package does not list in
+    __all__, such as rigiddyn.units), is walked in turn: its callables get paths "<submodule>.<name>"."""
     targets, skipped = [], {}
     for name in module.__all__:
         obj = getattr(module, name)
-        if isinstance(obj, type):
-            if issubclass(obj, BaseException):
-                skipped[name] = "an exception or warning category (raised by the API, not called)"
-                continue
-            found = _class_targets(name, obj)
-            if not found:
-                skipped[name] = "a class with no constructor or methods (reached as a result, its properties read)"
-            targets += found
-        elif callable(obj):
-            targets.append(_target(name, None, obj, getattr(obj, "__name__", name), False))
+        if inspect.ismodule(obj):
+            targets += _module_targets(name, obj, skipped)
         else:
-            skipped[name] = f"a constant ({type(obj).__name__})"
+            targets += _named_targets(name, obj, skipped)
+    for name in submodules:
+        targets += _module_targets(name, importlib.import_module(f"{module.__name__}.{name}"), skipped)
     return targets, skipped
+
+
+def public_names(submodule) -> list[str]:
+    """The public names of a submodule: its __all__, else the names it defines (not those it imports)."""
+    if hasattr(submodule, "__all__"):
+        return list(submodule.__all__)
+    return [n for n, obj in vars(submodule).items() if not n.startswith("_") and not inspect.ismodule(obj)
+            and getattr(obj, "__module__", None) == submodule.__name__]
+
+
+def public_classes(module, submodules: tuple[str, ...] = ()) -> dict[str, type]:
+    """{path: class} of every class the fuzz may build or take: module.__all__'s, and the public classes of
+    its submodules (those in __all__ and `submodules`) as "<submodule>.<Class>"."""
+    found = {}
+    walked = [(n, getattr(module, n)) for n in module.__all__ if inspect.ismodule(getattr(module, n))]
+    walked += [(n, importlib.import_module(f"{module.__name__}.{n}")) for n in submodules]
+    for prefix, names, owner in [("", module.__all__, module)] + [(f"{n}.", public_names(m), m) for n, m in walked]:
+        for name in names:
+            obj = getattr(owner, name)
+            if isinstance(obj, type) and not issubclass(obj, BaseException):
+                found[prefix + name] = obj
+    return found
+
+
+def _module_targets(prefix: str, submodule, skipped: dict[str, str]) -> list[Target]:
+    targets = []
+    for name in public_names(submodule):
+        targets += _named_targets(f"{prefix}.{name}", getattr(submodule, name), skipped)
+    return targets
+
+
+def _named_targets(path: str, obj, skipped: dict[str, str]) -> list[Target]:
+    if isinstance(obj, type):
+        if issubclass(obj, BaseException):
+            skipped[path] = "an exception or warning category (raised by the API, not called)"
+            return []
+        found = _class_targets(path, obj)
+        if not found:
+            skipped[path] = "a class with no constructor or methods (reached as a result, its properties read)"
+        return found
+    if callable(obj):
+        return [_target(path, None, obj, getattr(obj, "__name__", path.split(".")[-1]), False)]
+    skipped[path] = f"a constant ({type(obj).__name__})"
+    return []
 
 
 def _class_targets(name: str, cls: type) -> list[Target]:
     out = []
     init = vars(cls).get("__init__")
+    python_class = not _is_pybind(cls)
     # pybind11 gives a class without a constructor an __init__ that only raises "No constructor defined"
     if init is not None and not (init.__doc__ or "").startswith("Initialize self."):
         fn = cls if inspect.isfunction(init) else init  # a Python class: its signature without self
         out.append(_target(name, None, fn, "__init__", True))
+    elif init is None and python_class:  # a Python class constructed by its base's __init__ (or object's)
+        out.append(_target(name, None, cls, "__init__", True))
     for attr, raw in vars(cls).items():
         if attr.startswith("_") and attr not in OPERATORS:
             continue
@@ -185,6 +236,10 @@ def _class_targets(name: str, cls: type) -> list[Target]:
         elif callable(raw) and not isinstance(raw, type):
             out.append(_target(f"{name}.{attr}", name, raw, attr, True))
     return out
+
+
+def _is_pybind(cls: type) -> bool:
+    return any(type(k).__name__ == "pybind11_type" for k in cls.__mro__)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -252,6 +307,14 @@ def source(spec, _depth=[0]) -> str:  # noqa: B006  (depth counter for chain var
         return "[" + ", ".join(source(s) for s in spec[1]) + "]"
     if tag == "tuple":
         return "(" + ", ".join(source(s) for s in spec[1]) + (",)" if len(spec[1]) == 1 else ")")
+    if tag == "dict":
+        return "{" + ", ".join(f"{_lit(k)}: {source(v)}" for k, v in spec[1]) + "}"
+    if tag == "file":
+        return f"(Path({spec[1]!r}).write_text({spec[2]!r}), {spec[1]!r})[1]"
+    if tag == "check":
+        return f"{spec[1]}.{spec[2]}(**{_lit(spec[3])})"
+    if tag == "rng":
+        return f"np.random.default_rng({spec[1]!r})"
     if tag == "lambda":
         return f"(lambda *args, **kwargs: {source(spec[1])})"
     if tag == "per_row":
@@ -284,6 +347,11 @@ def reproducer(expr: str, module_name: str) -> str:
     lines = ["import numpy as np", f"import {module_name} as rd", 'nan, inf = float("nan"), float("inf")']
     if "Rotation." in expr:
         lines.append("from scipy.spatial.transform import Rotation")
+    if "Path(" in expr:
+        lines.append("from pathlib import Path")
+    checked = re.match(r"(\w+)\.\w+\(\*\*", expr)
+    if checked and checked.group(1) != "rd":  # a property of a module beside the fuzz: run from the repository root
+        lines += ["import sys", "sys.path.insert(0, 'tests/fuzz')", f"import {checked.group(1)}"]
     if "unaligned(" in expr:
         lines.append("unaligned = lambda a: np.frombuffer(b'\\0' + a.tobytes(), dtype=a.dtype, offset=1)"
                      ".reshape(a.shape)")
@@ -312,6 +380,16 @@ def build(spec, module, on_call):
     if tag in ("list", "tuple"):
         items = [build(s, module, on_call) for s in spec[1]]
         return items if tag == "list" else tuple(items)
+    if tag == "dict":
+        return {k: build(v, module, on_call) for k, v in spec[1]}
+    if tag == "file":
+        Path(spec[1]).write_text(spec[2])
+        return spec[1]
+    if tag == "rng":
+        return np.random.default_rng(spec[1])
+    if tag == "check":
+        properties = importlib.import_module(spec[1])
+        return on_call(f"check.{spec[2]}", getattr(properties, spec[2]), [], dict(spec[3]), spec)
     if tag == "lambda":
         value = build(spec[1], module, on_call)
         return lambda *args, **kwargs: value

@@ -13,7 +13,8 @@ __all__ = ["crash", "hang", "silent_nan", "warned_nan", "wrong_exception", "empt
 
 # (call, kind) of every planted bug
 EXPECTED = {("crash", "crash"), ("hang", "hang"), ("silent_nan", "non-finite"), ("wrong_exception", "exception"),
-            ("empty_message", "message"), ("Box", "non-finite"), ("Box.ratio", "exception")}
+            ("empty_message", "message"), ("Box", "non-finite"), ("Box.ratio", "exception"),
+            ("check.mean_within_range", "wrong result")}
 
 
 def crash(x: float) -> float:
@@ -92,3 +93,27 @@ class Box:
         """ZeroDivisionError for other = 0."""
         self.size / other
         return 1.0
+
+
+# properties of results (as tests/fuzz/properties.py): one that holds, one that fails for some inputs (the bug)
+
+
+def mean_is_symmetric(a: float, b: float) -> None:
+    """(a + b) / 2 == (b + a) / 2: holds."""
+    assert (a + b) / 2 == (b + a) / 2, f"mean not symmetric: {a!r}, {b!r}"
+
+
+def mean_within_range(a: float, b: float) -> None:
+    """min(a, b) <= (a + b) / 2 <= max(a, b): fails where a + b overflows (the planted wrong result)."""
+    m = (a + b) / 2
+    assert min(a, b) <= m <= max(a, b), f"mean out of range: ({a!r} + {b!r}) / 2 = {m!r}"
+
+
+def _strategies():
+    from hypothesis import strategies as st
+
+    pairs = st.fixed_dictionaries({"a": st.floats(0.0, 1.7e308), "b": st.floats(0.0, 1.7e308)})
+    return {"mean_is_symmetric": pairs, "mean_within_range": pairs}
+
+
+STRATEGIES = _strategies()

@@ -21,7 +21,8 @@ import numpy as np
 from hypothesis import strategies as st
 from hypothesis.extra import numpy as hnp
 
-from api_model import Param, Target
+from api_model import Param, Target, public_classes
+from scene_files import TORTURE, UNITS, scene_texts
 
 OMIT = object()  # an optional argument left out
 MAX_DEPTH = 3  # nesting of objects built to be passed to (or called as `self` of) a target
@@ -91,11 +92,13 @@ RECIPES = {
     "SceneResult": st.tuples(st.integers(0, 30), st.integers(1, 5)).map(lambda nr: _call_spec(
         "simulate", [_SCENE, _SCENE_STATES], dt=("lit", 0.01), steps=("lit", nr[0]), record_every=("lit", nr[1]))),
     # issue 13: batches of drawn sizes (samples, steps, record_every)
-    "BatchResult": st.tuples(st.integers(1, 4), st.integers(0, 30), st.integers(1, 5)).map(lambda snr: _call_spec(
-        "simulate_batch",
-        [_call_spec("RigidBody", [("lit", 1.0), ("lit", [1.0, 2.0, 2.5])]),
-         ("list", [_call_spec("RigidBodyState", w_B=("lit", [0.1 * k, 1.0, 0.1])) for k in range(snr[0])])],
-        dt=("lit", 0.01), steps=("lit", snr[1]), record_every=("lit", snr[2]), threads=("lit", 2))),
+    "BatchResult": st.tuples(st.integers(1, 9), st.integers(0, 30), st.integers(1, 5), st.booleans()).map(
+        lambda snrs: _call_spec(
+            "simulate_batch",
+            [_call_spec("RigidBody", [("lit", 1.0), ("lit", [1.0, 2.0, 2.5])]),
+             ("list", [_call_spec("RigidBodyState", w_B=("lit", [0.1 * k, 1.0, 0.1])) for k in range(snrs[0])])],
+            dt=("lit", 0.01), steps=("lit", snrs[1]), record_every=("lit", snrs[2]), threads=("lit", 2),
+            simd=("lit", snrs[3]))),  # the SIMD path across up to 9 samples (lanes and remainders)
     "BatchSceneResult": st.tuples(st.integers(1, 3), st.integers(0, 30)).map(lambda sn: _call_spec(
         "simulate_batch", [_SCENE, ("list", [_SCENE_STATES] * sn[0])], dt=("lit", 0.01), steps=("lit", sn[1]))),
     # a density integral needs a callable rho: a constant density per point, over a drawn box
@@ -132,6 +135,59 @@ RECIPES = {
         "ConstantThrustSolution", [("lit", mr[0]), ("lit", mr[1]), ("lit", [0.0, 0.0, -100.0])],
         g_W=("lit", [0.0, 0.0, -9.81]))),
 }
+# a pivoted top's run (the one-body scene of the body and gravity)
+RECIPES["PivotedSceneResult"] = st.tuples(st.integers(0, 30), st.sampled_from(["rk4", "implicit_midpoint", "splitting_dlm"])
+                                          ).map(lambda nm: _call_spec(
+    "simulate", [_PIVOTED, _call_spec("PivotedBodyState", w_B=("lit", [0.0, 0.0, 10.0]))], dt=("lit", 0.01),
+    steps=("lit", nm[0]), method=("lit", nm[1]), gravity=("lit", True)))
+# the recipes that are valid calls of a target: that target's calls also draw them, whole or with one argument wild
+RECIPE_CALLS = {
+    "simulate": ["SimulationResult", "SceneResult", "PivotedSceneResult"], "simulate_batch": ["BatchResult", "BatchSceneResult"],
+    "integrate_density_over_box": ["DensityIntegral"], "forward_dynamics": ["PivotedAcceleration"],
+    "monte_carlo.monte_carlo": ["monte_carlo.MonteCarloResult"],
+    **{name: [name] for name in ("Scene", "ScheduledLoads", "PivotedBody", "PivotedPlanarBody", "Thrust",
+                                 "CompoundPendulumSolution", "LagrangeTopSolution", "RotatingFrameFreeParticle",
+                                 "ConstantThrustSolution")},
+}
+UNTYPED = ("", "object", "typing.Any", "Any")  # annotations that say nothing of the argument
+# monte_carlo: a valid run of a body or of the scene above with drawn dispersions, sizes and seed (rigiddyn.monte_carlo)
+_MC_KEYS = ["p_W", "q_WB", "v_W", "w_B", "mass", "inertia", "gravity", "loads"]
+
+
+def _mc_dispersion(key: str):
+    """A valid dispersion spec of one monte_carlo key (a body's field name, or a scene's "<body>.<field>")."""
+    field = key.rsplit(".", 1)[-1]
+    normal = st.floats(0.0, 0.5).map(lambda s: _call_spec("monte_carlo.Normal", std=("lit", s)))
+    uniform = st.floats(0.0, 0.5).map(lambda h: _call_spec("monte_carlo.Uniform", [("lit", 1.0 - h), ("lit", 1.0 + h)]))
+    if field == "q_WB":
+        return st.one_of(st.just(_call_spec("monte_carlo.UniformRotation")),
+                         st.floats(0.0, 1.0).map(lambda s: _call_spec("monte_carlo.RotationNormal", [("lit", s)])))
+    if field == "inertia":
+        return st.tuples(st.floats(0.0, 0.5), st.floats(0.0, 0.5)).map(lambda ra: _call_spec(
+            "monte_carlo.InertiaDispersion", [("lit", ra[0]), ("lit", ra[1])]))
+    if field == "loads":
+        return st.tuples(normal, uniform).map(lambda fu: _call_spec("monte_carlo.LoadDispersion", force=fu[0], torque=fu[1]))
+    return st.one_of(normal, uniform)
+
+
+def _mc_dispersions(keys):
+    return st.lists(st.sampled_from(keys), unique=True, max_size=4).flatmap(
+        lambda ks: st.tuples(*[_mc_dispersion(k) for k in ks]).map(lambda ds: ("dict", list(zip(ks, ds)))))
+
+
+_SCENE_MC_KEYS = [f"body0.{f}" for f in ("p_W", "v_W", "mass")] + [f"body1.{f}" for f in _MC_KEYS[:6]]
+RECIPES["monte_carlo.MonteCarloResult"] = st.one_of(
+    st.tuples(st.integers(1, 4), st.integers(0, 2**64), _mc_dispersions(_MC_KEYS), st.integers(0, 20)).map(
+        lambda a: _call_spec("monte_carlo.monte_carlo", [_call_spec("RigidBody", [("lit", 1.0), ("lit", [1.0, 2.0, 2.5])]),
+                                                         _call_spec("RigidBodyState", w_B=("lit", [0.1, 1.0, 0.1])),
+                                                         ("lit", a[0])],
+                             seed=("lit", a[1]), dispersions=a[2], dt=("lit", 0.01), steps=("lit", a[3]))),
+    st.tuples(st.integers(1, 3), st.integers(0, 100), _mc_dispersions(_SCENE_MC_KEYS), st.integers(0, 20)).map(
+        lambda a: _call_spec("monte_carlo.monte_carlo", [_SCENE, _SCENE_STATES, ("lit", a[0])], seed=("lit", a[1]),
+                             dispersions=a[2], dt=("lit", 0.01), steps=("lit", a[3]))))
+RECIPES["monte_carlo.Statistics"] = st.tuples(RECIPES["monte_carlo.MonteCarloResult"], st.sampled_from(
+    ["t", "w_B", "total_energy", "kinetic_energy"])).map(lambda rq: ("method", rq[0], "statistics", [("lit", rq[1])], []))
+
 # the force element classes of a scene (Scene.add, Scene(elements=...))
 ELEMENT_CLASSES = ("UniformGravity", "PointMassGravity", "MutualGravity", "GravityGradient", "SpringDamper", "Drag",
                    "ScheduledLoads", "PythonForce", "Thrust")
@@ -317,11 +373,13 @@ TETRAHEDRON = np.array([[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0,
 class Strategies:
     """Strategies for the targets of one module."""
 
-    def __init__(self, module, targets: list[Target], words: list[str]):
+    def __init__(self, module, targets: list[Target], words: list[str], submodules: tuple[str, ...] = ()):
         self.module = module
         self.targets = targets
-        self.classes = [n for n in module.__all__ if isinstance(getattr(module, n), type)
-                        and not issubclass(getattr(module, n), BaseException)]
+        # class paths: "Scene", and a submodule's "monte_carlo.Normal"; found in annotations by the last part
+        self.class_objects = public_classes(module, submodules)
+        self.classes = list(self.class_objects)
+        self._short = {path.split(".")[-1]: path for path in self.classes}
         self.words = sorted(set(words)) or ["x"]
         self._objects: dict[tuple[str, int], st.SearchStrategy] = {}
         self.hints, self.untyped_hints = self._hints()
@@ -329,7 +387,7 @@ class Strategies:
     # -- types named in annotations
     def _class_in(self, annotation: str) -> str | None:
         name = annotation.strip().strip("'\"").split(".")[-1]
-        return name if name in self.classes else None
+        return self._short.get(name)
 
     def objects_of(self, classes, depth: int) -> st.SearchStrategy:
         """Instances of any of `classes`."""
@@ -357,6 +415,9 @@ class Strategies:
         if depth > MAX_DEPTH:
             return st.nothing()
         made = [self._call(t, params, depth, wild=False) for t, params in self._producers(cls)]
+        # a base class (monte_carlo.Dispersion) is also taken by its public subclasses' objects
+        made += [self.objects(sub, depth) for sub, klass in self.class_objects.items()
+                 if sub != cls and issubclass(klass, self.class_objects[cls])]
         if cls in RECIPES:  # a valid call that always makes one (random producers rarely match their arguments)
             made.append(RECIPES[cls])
         if not made:
@@ -383,8 +444,28 @@ class Strategies:
 
     @functools.lru_cache(maxsize=None)
     def call(self, t: Target) -> st.SearchStrategy:
-        """A top-level call of target t (arguments plausible and wild)."""
-        return st.one_of(*[self._call(t, params, 0, wild=True) for params in t.overloads])
+        """A top-level call of target t (arguments plausible and wild); where a recipe makes a valid call of it
+        (RECIPE_CALLS), that call too, whole or with one argument replaced by a wild value."""
+        calls = [self._call(t, params, 0, wild=True) for params in t.overloads]
+        for name in RECIPE_CALLS.get(t.path, []):
+            calls += [RECIPES[name], RECIPES[name].flatmap(lambda spec: self._one_wild(spec))]
+        return st.one_of(*calls)
+
+    def _one_wild(self, spec) -> st.SearchStrategy:
+        """spec ("call", path, args, kwargs) with one of its arguments replaced by a wild value."""
+        _, path, args, kwargs = spec
+        n = len(args) + len(kwargs)
+        if n == 0:
+            return st.just(spec)
+
+        def replace(i_value):
+            i, value = i_value
+            if i < len(args):
+                return ("call", path, args[:i] + [value] + args[i + 1:], kwargs)
+            j = i - len(args)
+            return ("call", path, args, kwargs[:j] + [(kwargs[j][0], value)] + kwargs[j + 1:])
+
+        return st.tuples(st.integers(0, n - 1), self.wild(1)).map(replace)
 
     # -- arguments
     @functools.lru_cache(maxsize=None)
@@ -410,10 +491,10 @@ class Strategies:
 
     @functools.lru_cache(maxsize=None)
     def plausible(self, p: Param, doc: str, depth: int, owner: str | None = None) -> st.SearchStrategy:
-        hints = self.hints + (self.untyped_hints if p.annotation in ("", "object", "typing.Any") else [])
+        hints = self.hints + (self.untyped_hints if p.annotation in UNTYPED else [])
         options = [make(self, p, doc, depth) for pattern, make in hints if pattern.fullmatch(p.name)]
         # a name hint is better knowledge than an untyped signature; a typed one adds to it
-        if not options or p.annotation not in ("", "object", "typing.Any"):
+        if not options or p.annotation not in UNTYPED:
             options.append(self.by_annotation(p.annotation, p.name, doc, depth))
         if owner is not None and p.name in ("other", "arg0"):  # the other operand of a binary operation
             options.append(self.objects(owner, depth + 1))
@@ -469,7 +550,7 @@ class Strategies:
         """Callables returning a fixed value: a plausible number, or an object of a class the
         docstring names, or anything."""
         returned = [lit(PLAUSIBLE_FLOAT)]
-        returned += [self.objects(c, depth + 1) for c in self.classes if re.search(rf"\b{c}\b", doc)]
+        returned += [self.objects(c, depth + 1) for c in self.classes if re.search(rf"\b{c.split('.')[-1]}\b", doc)]
         returned.append(self.wild(depth + 1))
         return st.one_of(*returned).map(lambda v: ("lambda", v))
 
@@ -538,6 +619,14 @@ class Strategies:
             (r"rho", lambda s, p, doc, depth: st.one_of(  # a density per point [kg/m^3], or anything
                 lit(POSITIVE_FLOAT).map(lambda v: ("per_row", v)), returning()(s, p, doc, depth))),
             (r"kinematics_at", returning("FrameKinematics")),
+            (r"frame", obj("SceneFrame")),  # a Scene's frame (an element's frame is a word, below)
+            (r"mass_flows", lambda s, p, doc, depth: _list_of(st.one_of(
+                lit(st.none()), s.objects("MassFlow", depth + 1)), depth)),
+            # a MassFlow: dm/dt [kg/s] (negative: losing mass) or rate(t); inertia_rule 'scaled' or I(m) (3, 3)
+            (r"rate", lambda s, p, doc, depth: st.one_of(lit(st.floats(-10.0, 10.0)), lit(st.floats(-10.0, 0.0)).map(
+                lambda v: ("lambda", v)))),
+            (r"inertia_rule", lambda s, p, doc, depth: st.one_of(
+                lit(st.sampled_from(["scaled", "constant", ""])), array_spec(inertias()).map(lambda a: ("lambda", a)))),
         ]
         table = [
             (r"scalar_first|degrees|canonical|return_sensitivity|progress", lambda s, p, doc, depth: lit(st.booleans())),
@@ -574,10 +663,71 @@ class Strategies:
             (r"gravity", lambda s, p, doc, depth: st.one_of(array_spec(st.just(np.array([0.0, 0.0, -9.81]))),
                                                             lit(st.sampled_from([True, False, None])))),
             (r"formats", lambda s, p, doc, depth: lit(st.sampled_from([["png"], ["svg"], []]))),
-            (r"path|path_or_text", lambda s, p, doc, depth: lit(st.sampled_from(["out", "result.csv", ""]))),
+            (r"path", lambda s, p, doc, depth: lit(st.sampled_from(["out", "result.csv", ""]))),
+            # a scene file: its text, a file holding it, a shipped scene's name, or a path that is none
+            (r"path_or_text", lambda s, p, doc, depth: st.one_of(
+                lit(scene_texts()), scene_texts().map(lambda text: ("file", "scene.toml", text)),
+                lit(st.sampled_from(_shipped_scenes() + ["out", "result.csv", "", "no_such.toml", "kepler.toml"])))),
+            # monte_carlo: its dispersions (a body's keys or the RECIPES scene's), a nominal state, seeds, no cluster
+            (r"dispersions", lambda s, p, doc, depth: st.one_of(
+                _mc_dispersions(_MC_KEYS), _mc_dispersions(_SCENE_MC_KEYS), lit(st.none()))),
+            (r"nominal_state", lambda s, p, doc, depth: st.one_of(s.objects("RigidBodyState", depth + 1),
+                                                                   st.just(_SCENE_STATES))),
+            (r"seed", lambda s, p, doc, depth: lit(st.one_of(st.integers(0, 2**64), st.sampled_from([-1, 2**128, None])))),
+            (r"client", lambda s, p, doc, depth: lit(st.none())),  # a Dask cluster is rigiddyn.distributed's fuzz
+            (r"quantity", lambda s, p, doc, depth: st.one_of(
+                lit(st.sampled_from(["t", "p_W", "q_WB", "w_B", "total_energy", "mass", "work", "pivot_reaction_W", "x"])),
+                s.callables(doc, depth))),
+            (r"at", lambda s, p, doc, depth: lit(st.sampled_from([None, 0.0, 0.01, 0.05, 0.1, 1.0, -1.0, NAN, 1e300]))),
+            (r"q", lambda s, p, doc, depth: lit(st.one_of(st.lists(st.floats(0.0, 100.0), max_size=4), st.floats(0.0, 100.0)))
+             if "percent" in doc else st.nothing()),
+            (r"mean|std|low|high|rel_std|axis_std", lambda s, p, doc, depth: st.one_of(
+                lit(st.one_of(st.none(), st.floats(-2.0, 2.0), st.lists(st.floats(0.0, 2.0), min_size=3, max_size=3))),
+                lit(POSITIVE_FLOAT))),
+            (r"nominal", lambda s, p, doc, depth: st.one_of(
+                lit(st.none()), arr(st.sampled_from([(3,), (3, 3)]).flatmap(plausible_array_for_shape))(s, p, doc, depth),
+                array_spec(quaternions()), lit(POSITIVE_FLOAT))),
+            (r"rng", lambda s, p, doc, depth: st.integers(0, 2**32).map(lambda seed: ("rng", seed))),
+            (r"max_redraws", lambda s, p, doc, depth: lit(st.integers(-1, 5))),
+            (r"batch", obj("BatchResult", "BatchSceneResult")),
+            (r"inputs|redraws", lambda s, p, doc, depth: lit(st.just({}))),
+            # rigiddyn.units: values with units, the SI unit expected
+            (r"value", lambda s, p, doc, depth: UNIT_VALUES),
+            (r"unit", lambda s, p, doc, depth: lit(st.sampled_from(sorted(UNITS) + ["kg m^2", "degC", "", "nope", "m^"]))),
         ]
         return ([(re.compile(pattern), make) for pattern, make in table],
                 [(re.compile(pattern), make) for pattern, make in untyped])
+
+
+def _shipped_scenes() -> list[str]:
+    try:
+        from rigiddyn.scene_file import example_scenes
+
+        return example_scenes()
+    except Exception:  # another module (the planted bugs): no scenes
+        return ["kepler"]
+
+
+@st.composite
+def unit_strings(draw) -> str:
+    """"<number> <unit>" in a unit of some dimension (UNITS), or (one in four) a string no quantity should be
+    read from (TORTURE)."""
+    units = draw(st.sampled_from(sorted(UNITS)))
+    name, _ = draw(st.sampled_from(UNITS[units]))
+    number = draw(st.one_of(PLAIN, FLOATS, st.integers(-10**6, 10**6)))
+    return f"{number!r} {name}" if draw(st.integers(0, 3)) else draw(st.sampled_from(TORTURE))
+
+
+UNIT_STRINGS = unit_strings()
+# a value a units function reads: a unit string, a number (SI), a list of them, a {value, unit} table, a pint
+# Quantity (made by rigiddyn.units.registry()), or something else
+UNIT_VALUES = st.one_of(
+    lit(UNIT_STRINGS), lit(UNIT_STRINGS), lit(FLOATS), lit(st.lists(st.one_of(UNIT_STRINGS, PLAIN), min_size=2, max_size=4)),
+    lit(st.tuples(st.lists(PLAIN, min_size=2, max_size=4), UNIT_STRINGS.map(lambda u: u.split(" ", 1)[-1])).map(
+        lambda vu: {"value": vu[0], "unit": vu[1]})),
+    st.tuples(st.one_of(PLAIN, FLOATS), st.sampled_from([u for us in UNITS.values() for u, _ in us if u])).map(
+        lambda mu: ("method", ("call", "units.registry", [], []), "Quantity", [("lit", mu[0]), ("lit", mu[1])], [])),
+    lit(st.one_of(st.none(), st.booleans(), st.just({}), st.just([]))))
 
 
 def _list_of(items, depth: int):
