@@ -481,8 +481,28 @@ py::ssize_t require_samples(std::size_t n) {
   return static_cast<py::ssize_t>(n);
 }
 
-// The one RuntimeWarning naming the diverged samples (the first five), and one for unconverged solves.
-void warn_after_batch(const py::array& diverged, const py::array& unconverged, const std::string& method) {
+// "sample 0: kinetic_energy from t = 0, ...; sample 3: ..." for the samples (the first five, then their count) whose
+// recorded quantities became non-finite while their state stayed finite (overflowed_quantities); "" for none.
+template <class Batch>
+std::string overflowed_samples(const Batch& b) {
+  const std::vector<RecordColumn> columns = record_columns(b);
+  std::string found;
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < b.samples; ++i) {
+    if (b.diverged[i]) continue;  // its state is not finite: the diverged warning names it
+    const std::string quantities =
+        non_finite_quantities(columns, b.t, b.samples, b.records, i, static_cast<std::size_t>(b.filled[i]));
+    if (quantities.empty()) continue;
+    if (++count <= 5) found += (found.empty() ? "" : "; ") + ("sample " + std::to_string(i) + ": ") + quantities;
+  }
+  if (count > 5) found += "; ...";
+  return count == 0 ? found : std::to_string(count) + " of " + std::to_string(b.samples) + " samples: " + found;
+}
+
+// The one RuntimeWarning naming the diverged samples (the first five), one naming the samples whose records
+// overflowed (`overflowed`: overflowed_samples, "" for none), and one for unconverged solves.
+void warn_after_batch(const py::array& diverged, const py::array& unconverged, const std::string& method,
+                      const std::string& overflowed) {
   const auto* d = static_cast<const bool*>(diverged.data());
   const py::ssize_t N = diverged.shape(0);
   std::vector<py::ssize_t> bad;
@@ -495,6 +515,11 @@ void warn_after_batch(const py::array& diverged, const py::array& unconverged, c
     if (bad.size() > 5) list += ", ...";
     const std::string msg = "simulate_batch: " + std::to_string(bad.size()) + " of " + std::to_string(N) +
                             " samples became non-finite (samples " + list + "); their runs stopped there";
+    if (PyErr_WarnEx(PyExc_RuntimeWarning, msg.c_str(), 1) != 0) throw py::error_already_set();
+  }
+  if (!overflowed.empty()) {
+    const std::string msg = "simulate_batch: recorded quantities became non-finite while the state stayed finite "
+                            "(an overflow) in " + overflowed;
     if (PyErr_WarnEx(PyExc_RuntimeWarning, msg.c_str(), 1) != 0) throw py::error_already_set();
   }
   const auto* u = static_cast<const std::int64_t*>(unconverged.data());
@@ -543,21 +568,64 @@ void require_batch_memory(py::ssize_t N, const SimulationOptions& o, double doub
   }
 }
 
+// Prefixes the message of the Python exception `error` with "sample <i>: " (its args[0] when a str, else its
+// args become that and its class name); a KeyboardInterrupt or SystemExit (not an Exception) stays as raised.
+void prefix_sample(py::error_already_set& error, std::size_t i) {
+  if (!error.matches(PyExc_Exception)) return;
+  const std::string prefix = "sample " + std::to_string(i) + ": ";
+  try {
+    const py::object value = error.value();
+    py::list args(value.attr("args"));
+    if (args.empty()) {
+      args.append(py::str(prefix + Py_TYPE(value.ptr())->tp_name));
+    } else if (py::isinstance<py::str>(args[0])) {
+      args[0] = py::str(prefix) + args[0];
+    } else {
+      args.insert(0, py::str(prefix.substr(0, prefix.size() - 2)));
+    }
+    value.attr("args") = py::tuple(args);
+  } catch (py::error_already_set& e) {  // an exception whose args cannot be set: raised unprefixed
+    if (!e.matches(PyExc_Exception)) throw;  // never swallow a KeyboardInterrupt met here
+  }
+}
+
+// The Python exception of a SampleFailure (a sample's exception that stopped the batch): a Python exception
+// (from a PythonForce) or a pybind11 one (its ValueError/TypeError naming a bad return), prefixed with
+// "sample <i>: "; any other C++ exception as pybind11 translates it.
+[[noreturn]] void raise_sample_failure(const SampleFailure& failure) {
+  try {
+    std::rethrow_exception(failure.cause());
+  } catch (py::error_already_set& e) {
+    prefix_sample(e, failure.sample());
+    throw;
+  } catch (const py::builtin_exception& e) {
+    e.set_error();  // the Python exception it stands for, fetched next
+    py::error_already_set python;
+    prefix_sample(python, failure.sample());
+    throw python;
+  }
+}
+
 // Runs `batch(options)` without the GIL, the calling thread's PythonMonitor reporting progress(samples done)
-// and Ctrl-C; raises the monitor's exception if it stopped the batch.
+// and Ctrl-C; raises the monitor's exception if it stopped the batch, also when the batch failed meanwhile
+// (a Ctrl-C is never lost to a sample's error), else the batch's exception (a SampleFailure as the Python
+// exception of its sample).
 template <class Run>
 auto run_without_gil(SimulationOptions& o, py::handle progress, Run&& batch) {
   PythonMonitor monitor(progress);
-  bool stopped = false;  // the monitor asked to stop (whether or not the path sets `interrupted`)
-  if (monitor.needed()) {
-    o.monitor = [&monitor, &stopped](std::int64_t samples_done) { return stopped = monitor(samples_done) || stopped; };
-  }
+  if (monitor.needed()) o.monitor = [&monitor](std::int64_t samples_done) { return monitor(samples_done); };
   decltype(batch(o)) out;
-  {
+  try {
     py::gil_scoped_release release;
     out = batch(o);
+  } catch (const SampleFailure& failure) {
+    if (monitor.failed()) monitor.raise();
+    raise_sample_failure(failure);
+  } catch (...) {
+    if (monitor.failed()) monitor.raise();
+    throw;
   }
-  if (stopped || out.interrupted) monitor.raise();  // the records so far are dropped with out
+  if (monitor.failed() || out.interrupted) monitor.raise();  // the records so far are dropped with out
   return out;
 }
 
@@ -593,8 +661,9 @@ BatchResult body_batch(py::handle model, py::handle initial, py::handle dt, py::
     }
     return simulate_batch(bodies, states, opt, p, c.threads);
   });
+  const std::string overflowed = overflowed_samples(b);
   BatchResult r = to_batch_result(std::move(b), c.scalar_first);
-  warn_after_batch(r.diverged, r.unconverged_steps, method_info(o.method).name);
+  warn_after_batch(r.diverged, r.unconverged_steps, method_info(o.method).name, overflowed);
   return r;
 }
 
@@ -696,8 +765,9 @@ BatchSceneResult scene_batch(py::handle model, py::handle initial, py::handle dt
   BatchSceneSimulation b = run_without_gil(o, progress, [&](const SimulationOptions& opt) {
     return simulate_batch(scenes, states, opt, dts, c.threads);  // a PythonForce takes the GIL back per call
   });
+  const std::string overflowed = overflowed_samples(b);
   BatchSceneResult r = to_batch_scene_result(std::move(b), std::move(body_names), std::move(elements), c.scalar_first);
-  warn_after_batch(r.diverged, r.unconverged_steps, method_info(o.method).name);
+  warn_after_batch(r.diverged, r.unconverged_steps, method_info(o.method).name, overflowed);
   return r;
 }
 
@@ -759,17 +829,21 @@ gravity (bodies): as simulate (None/False, True, a 3-vector [m/s^2] in W), or an
 threads: None (the default: every hardware thread) or an int >= 1.
 simd: True runs the SIMD path across samples (RigidBody, method 'rk4', constant loads: a force in W and a
   torque in B without time window): equal to the scalar path up to round-off, not bitwise.
-progress: None or a callable(samples_done), called with the GIL about every 0.05 s from the calling thread; an
-  exception it raises stops every sample and propagates. Ctrl-C stops every sample within about 0.05 s of a
-  sample's monitor check and raises KeyboardInterrupt (no result is kept).
+progress: None or a callable(samples_done), called with the GIL from the calling thread once before the samples
+  start and then about every 0.05 s; an exception it raises stops every sample and propagates. Ctrl-C stops every sample within about 0.05 s however
+  long a step takes (the steps under way are finished first) and raises KeyboardInterrupt (no result is kept).
 
 Returns a BatchResult (bodies) or a BatchSceneResult (scenes): the arrays of SimulationResult / SceneResult
 with a leading sample axis (N, n, ...). A sample whose state becomes non-finite stops alone: diverged[i] is
 True, filled[i] its rows, the rest of its rows NaN; one RuntimeWarning names how many samples diverged and
-the first few. Input errors (N = 0, mismatched N between model, initial, dt, gravity and loads, a wrong dict
-key or shape, threads < 1) raise ValueError/TypeError naming the argument before any sample runs; an error of
-one sample (a bad state, a body running out of mass) raises ValueError "sample <i>: ..." for the lowest such
-sample, after every sample has run.
+the first few; another names the samples whose recorded quantities became non-finite although their state
+stayed finite (an overflow, e.g. a kinetic energy of |v_W| > 1e154 m/s), each quantity with its first time.
+Input errors (N = 0, mismatched N between model, initial, dt, gravity and loads, a wrong dict key or shape,
+threads < 1) raise ValueError/TypeError naming the argument before any sample runs; an error of one sample (a
+bad state, a body running out of mass) raises ValueError "sample <i>: ..." for the lowest such sample, after
+every sample has run. An exception raised by a PythonForce (or its wrong return value) stops every sample
+within about 0.05 s and is raised, its message prefixed "sample <i>: " (the first sample that raised; a
+KeyboardInterrupt as it is).
 )doc";
 
 const char* const batch_result_doc = R"doc(

@@ -100,7 +100,7 @@ SimulationResult simulate_one(const Body& body, const State& initial, const Simu
     tr = simulate(body, initial, options);
   }
   if (tr.interrupted) monitor.raise();  // the records so far are dropped with tr
-  warn_after_run(tr.diverged, tr.t.empty() ? o.t0 : tr.t.back(), tr.unconverged_steps, o.steps, method, o.dt);
+  warn_after_run(tr, o, method);
   return to_result(std::move(tr), scalar_first);
 }
 
@@ -229,8 +229,8 @@ loads: an AppliedLoad or a sequence of them, a piecewise-constant schedule: a st
   keeps its order; records stay at t0 + i dt. gravity: None/False (the default: none), True
   ((0, 0, -9.81) m/s^2 in W) or a 3-vector [m/s^2] in W. t0: initial time [s]. scalar_first: quaternions
   as (w, x, y, z).
-progress: None or a callable(steps_done), called with the GIL about every 0.05 s of a long run; an
-  exception it raises stops the run and propagates.
+progress: None or a callable(steps_done), called with the GIL after the first step and then about every
+  0.05 s of a long run, however long a step takes; an exception it raises stops the run and propagates.
 
 Returns a SimulationResult, arrays with one row per record (n records): t (n,) [s]; p_W (n, 3) [m];
 q_WB (n, 4) (x, y, z, w); v_W (n, 3) [m/s]; w_B (n, 3) [rad/s]; kinetic_energy (n,) [J];
@@ -239,10 +239,12 @@ quaternion_norm_error (n,) |q| - 1; work (n,) work of loads and gravity since t0
 same method (kinetic_energy - kinetic_energy[0] ~ work); diverged; unconverged_steps (implicit solves that
 hit their iteration cap); elapsed_seconds (C++ loop wall time).
 A particle records q = identity, w = 0; a planar body p = (x, y, 0), q = Rz(theta), w = (0, 0, omega).
-Warns RuntimeWarning and stops if the state becomes non-finite; warns RuntimeWarning (naming dt and the
-count) if an implicit solve did not converge. Ctrl-C stops the run within about 0.05 s with
-KeyboardInterrupt (no result is kept). ValueError names a bad argument, also a recording larger than the
-memory available (record_every, with both figures).
+Warns RuntimeWarning and stops if the state becomes non-finite; warns RuntimeWarning naming the quantities
+and their first times if a recorded quantity is not finite although the state is (an overflow, e.g. the
+kinetic energy of |v_W| > 1e154 m/s); warns RuntimeWarning (naming dt and the count) if an implicit solve
+did not converge. Ctrl-C stops the run within about 0.05 s however long a step takes (a step under way is
+finished first) with KeyboardInterrupt (no result is kept). ValueError names a bad argument, also a
+recording larger than the memory available (record_every, with both figures).
 )doc";
 
 const char* const step_doc = R"doc(

@@ -164,6 +164,7 @@ py::tuple motion_pickled_state(const FrameMotion& motion) {
   try {
     py::module_::import("pickle").attr("dumps")(state[1]);
   } catch (py::error_already_set& e) {
+    if (py_io::is_interrupt(e)) throw;
     throw py::type_error("FrameMotion: cannot pickle its kinematics_at " + std::string(py::repr(state[1])) + " (" +
                          e.what() + "); pickle saves functions defined at module level (not lambdas or closures), "
                          "or use FrameMotion.fixed / FrameMotion.constant_rotation");

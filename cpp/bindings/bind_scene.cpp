@@ -462,8 +462,7 @@ SceneResult simulate_scene_py(py::handle model, py::handle initial, py::handle d
     r = simulate(*h.compiled, initial_states, o);
   }
   if (r.interrupted) monitor.raise();  // the records so far are dropped with r
-  warn_after_run(r.diverged, r.t.empty() ? o.t0 : r.t.back(), r.unconverged_steps, o.steps, method_info(h.method).name,
-                 o.dt);
+  warn_after_run(r, o, method_info(h.method).name);
   return to_scene_result(std::move(r), h.scene, *h.compiled, first);
 }
 

@@ -86,7 +86,8 @@ std::string motion_text(const py::object& motion) {
   try {
     const py::tuple state = motion.attr("__getstate__")();
     if (py::str(state[0]).cast<std::string>() == "function") return "FrameMotion(kinematics_at=" + callable_text(state[1]) + ")";
-  } catch (py::error_already_set&) {  // a lambda or a closure: shown by its repr
+  } catch (py::error_already_set& e) {  // a lambda or a closure: shown by its repr
+    if (py_io::is_interrupt(e)) throw;
   }
   return py::repr(motion);
 }
@@ -178,7 +179,7 @@ struct PythonRate {
     }
     const double rate = PyFloat_AsDouble(out.ptr());
     if (rate == -1.0 && PyErr_Occurred()) {
-      PyErr_Clear();
+      py_io::clear_error_unless_interrupt();
       py_io::throw_type_error("rate", "a callable rate(t) returning the mass rate [kg/s] (a float)", out);
     }
     return rate;

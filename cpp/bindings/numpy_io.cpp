@@ -62,13 +62,13 @@ bool never_array_like(PyObject* p) {
 bool is_memory_error(const py::error_already_set& e) { return e.matches(PyExc_MemoryError); }
 
 // numpy.asarray(obj): TypeError naming `name` for what numpy cannot read (ValueError for a
-// ragged sequence); MemoryError and KeyboardInterrupt pass through.
+// ragged sequence); MemoryError and interrupts (KeyboardInterrupt) pass through.
 py::array numpy_asarray(py::handle obj, const std::string& name, const std::string& expected) {
   if (never_array_like(obj.ptr())) throw_type_error(name, expected, obj);
   try {
     return py::module_::import("numpy").attr("asarray")(obj);
   } catch (py::error_already_set& e) {
-    if (is_memory_error(e) || e.matches(PyExc_KeyboardInterrupt)) throw;
+    if (is_memory_error(e) || is_interrupt(e)) throw;
     if (e.matches(PyExc_ValueError)) throw_value_error(name, expected + " of a regular shape", describe(obj));
     throw_type_error(name, expected, obj);
   }
@@ -95,9 +95,20 @@ Target contiguous(const py::array& raw, const std::string& name) {
   }
 }
 
+// hasattr(p, name), an interrupt met in a Python __getattr__ thrown on (PyObject_HasAttrString would clear it).
+bool has_attribute(PyObject* p, const char* name) {
+  PyObject* value = PyObject_GetAttrString(p, name);
+  if (value == nullptr) {
+    clear_error_unless_interrupt();
+    return false;
+  }
+  Py_DECREF(value);
+  return true;
+}
+
 // True for an object with a pint Quantity's attributes (any registry; pint is not imported to ask).
 bool looks_like_quantity(PyObject* p) {
-  return PyObject_HasAttrString(p, "magnitude") && PyObject_HasAttrString(p, "units") && PyObject_HasAttrString(p, "to");
+  return has_attribute(p, "magnitude") && has_attribute(p, "units") && has_attribute(p, "to");
 }
 
 // True when p is a quantity or a list/tuple holding one (`depth` levels of nesting looked into). Plain
@@ -118,6 +129,18 @@ bool holds_quantity(PyObject* p, int depth) {
 
 }  // namespace
 
+// ------------------------------------------------------------ interrupts
+
+bool is_interrupt(const py::error_already_set& e) { return !e.matches(PyExc_Exception); }
+
+void clear_error_unless_interrupt() {
+  if (PyErr_ExceptionMatches(PyExc_Exception)) {
+    PyErr_Clear();
+  } else {
+    throw py::error_already_set();
+  }
+}
+
 // ------------------------------------------------------------ units
 
 py::object in_si(py::handle obj, const char* unit, const char* name) {
@@ -136,7 +159,8 @@ std::string describe(py::handle obj) {
   std::string text;
   try {
     text = py::repr(obj);
-  } catch (py::error_already_set&) {
+  } catch (py::error_already_set& e) {
+    if (is_interrupt(e)) throw;
     text = "(no repr)";
   }
   if (text.size() > 60) text = text.substr(0, 57) + "...";
@@ -207,7 +231,7 @@ std::int64_t as_int(py::handle obj, const std::string& name, std::int64_t lo, st
   if (PyBool_Check(p) || PyFloat_Check(p) || !PyIndex_Check(p)) throw_type_error(name, expected, obj);
   const py::object index = py::reinterpret_steal<py::object>(PyNumber_Index(p));
   if (!index) {
-    PyErr_Clear();
+    clear_error_unless_interrupt();
     throw_type_error(name, expected, obj);
   }
   int overflow = 0;

@@ -35,6 +35,14 @@ namespace py = pybind11;
 using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
 using IndexArray = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>;
 
+// ------------------------------------------------------------ interrupts
+// True for a Python exception that a conversion must never swallow into its own TypeError/ValueError: one
+// that is not an Exception (KeyboardInterrupt from a Ctrl-C met while Python code ran for the conversion, a
+// __repr__ or __index__; SystemExit).
+bool is_interrupt(const py::error_already_set& e);
+// After a C API call failed: clears its Python error, or throws it on (error_already_set) when is_interrupt.
+void clear_error_unless_interrupt();
+
 // ------------------------------------------------------------ messages
 // A value for a message: "None", an array's dtype and shape, or the type and a repr cut to 60
 // characters ("str '1'").

@@ -1,6 +1,7 @@
 // What the Python runs of one body (bind_dynamics.cpp) and of a scene (bind_scene.cpp) share: the loads
 // argument, read-only numpy arrays that adopt the C++ records, the monitor that gives Python its
-// progress callback and Ctrl-C during a run without the GIL, and the warnings after a run.
+// progress callback and Ctrl-C during a run without the GIL, and the warnings after a run (a non-finite state, a
+// recorded quantity that overflowed, unconverged implicit solves).
 #pragma once
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -14,8 +15,11 @@
 #include <vector>
 
 #include "numpy_io.hpp"
+#include "rigiddyn/batch/batch_result.hpp"
 #include "rigiddyn/check.hpp"
 #include "rigiddyn/models/loads.hpp"
+#include "rigiddyn/scene/scene_simulation.hpp"
+#include "rigiddyn/simulate/simulate.hpp"
 
 namespace rigiddyn::bindings {
 
@@ -87,6 +91,9 @@ class PythonMonitor {
     return false;
   }
 
+  // Whether a signal handler or progress raised (the run was asked to stop).
+  bool failed() const { return error_.has_value(); }
+
   // The exception that stopped the run (call with the GIL held, after an interrupted run).
   [[noreturn]] void raise() {
     if (error_) throw *error_;
@@ -100,19 +107,101 @@ class PythonMonitor {
   std::optional<pybind11::error_already_set> error_;
 };
 
-// The RuntimeWarnings after a run (GIL held): the state became non-finite by t_end, or `unconverged` of
-// `steps` implicit solves hit their iteration cap.
-inline void warn_after_run(bool diverged, double t_end, std::int64_t unconverged, std::int64_t steps,
-                           const std::string& method, double dt) {
-  if (diverged) {
-    const std::string msg = "simulate: the state became non-finite by t = " + format_value(t_end) + " (method '" +
-                            method + "', dt = " + format_value(dt) + "); the run stopped there";
+// ------------------------------------------------------------ non-finite records
+
+// A recorded quantity by name: its values, (N, n, width) row-major for N runs of n records each (N = 1 for
+// one run), width the values per record (e.g. 3 * bodies).
+struct RecordColumn {
+  const char* name;
+  const std::vector<double>* values;
+};
+
+// The recorded quantities of a body's run (Trajectory) or batch (BatchTrajectory), every one but t.
+template <class Records>
+std::vector<RecordColumn> body_record_columns(const Records& r) {
+  return {{"p_W", &r.p_W},
+          {"q_WB", &r.q_WB},
+          {"v_W", &r.v_W},
+          {"w_B", &r.w_B},
+          {"kinetic_energy", &r.kinetic_energy},
+          {"total_energy", &r.total_energy},
+          {"angular_momentum_norm", &r.angular_momentum_norm},
+          {"quaternion_norm_error", &r.quaternion_norm_error},
+          {"work", &r.work}};
+}
+
+// The recorded quantities of a scene's run (SceneSimulation) or batch (BatchSceneSimulation), every one but t.
+template <class Records>
+std::vector<RecordColumn> scene_record_columns(const Records& r) {
+  return {{"p_W", &r.p_W},
+          {"q_WB", &r.q_WB},
+          {"v_W", &r.v_W},
+          {"w_B", &r.w_B},
+          {"kinetic_energy", &r.kinetic_energy},
+          {"potential_energy", &r.potential_energy},
+          {"total_energy", &r.total_energy},
+          {"linear_momentum_W", &r.linear_momentum_W},
+          {"angular_momentum_W", &r.angular_momentum_W},
+          {"pivot_reaction_W", &r.pivot_reaction_W},
+          {"angular_momentum_O_W", &r.angular_momentum_O_W},
+          {"mass", &r.mass},
+          {"work", &r.work},
+          {"power", &r.power}};
+}
+
+inline std::vector<RecordColumn> record_columns(const Trajectory& r) { return body_record_columns(r); }
+inline std::vector<RecordColumn> record_columns(const BatchTrajectory& r) { return body_record_columns(r); }
+inline std::vector<RecordColumn> record_columns(const SceneSimulation& r) { return scene_record_columns(r); }
+inline std::vector<RecordColumn> record_columns(const BatchSceneSimulation& r) { return scene_record_columns(r); }
+
+// "kinetic_energy from t = 0, total_energy from t = 0": each quantity of `columns` with a non-finite value in
+// the first `rows` records of run i (of N runs of n records; t (N, n) their times [s]), with the time of the
+// first such record; "" when there is none.
+inline std::string non_finite_quantities(const std::vector<RecordColumn>& columns, const std::vector<double>& t,
+                                         std::size_t N, std::size_t n, std::size_t i, std::size_t rows) {
+  std::string found;
+  for (const RecordColumn& c : columns) {
+    const std::size_t width = N * n == 0 ? 0 : c.values->size() / (N * n);
+    const double* run = c.values->data() + i * n * width;
+    if (width == 0 || Eigen::Map<const Eigen::ArrayXd>(run, static_cast<Eigen::Index>(rows * width)).allFinite()) continue;
+    std::size_t r = 0;
+    while (Eigen::Map<const Eigen::ArrayXd>(run + r * width, static_cast<Eigen::Index>(width)).allFinite()) ++r;
+    found += (found.empty() ? "" : ", ") + std::string(c.name) + " from t = " + format_value(t[i * n + r]);
+  }
+  return found;
+}
+
+// The quantities of a run's records that are not finite although its state is (an overflow of a quantity
+// computed from a finite state, e.g. the kinetic energy of |v_W| > 1e154 m/s), as non_finite_quantities; ""
+// for a run that diverged (its state is not finite at its last record: warn_after_run says so).
+template <class Records>
+std::string overflowed_quantities(const Records& r) {
+  if (r.diverged) return {};
+  return non_finite_quantities(record_columns(r), r.t, 1, r.size(), 0, r.size());
+}
+
+// The RuntimeWarnings after a run of `options` (GIL held): the state became non-finite by the last record, a
+// recorded quantity is not finite although the state is (overflowed_quantities), or some implicit solves hit
+// their iteration cap.
+template <class Records>
+void warn_after_run(const Records& r, const SimulationOptions& options, const std::string& method) {
+  const std::string dt = format_value(options.dt);
+  if (r.diverged) {
+    const std::string msg = "simulate: the state became non-finite by t = " +
+                            format_value(r.t.empty() ? options.t0 : r.t.back()) + " (method '" + method +
+                            "', dt = " + dt + "); the run stopped there";
     if (PyErr_WarnEx(PyExc_RuntimeWarning, msg.c_str(), 1) != 0) throw pybind11::error_already_set();
   }
-  if (unconverged > 0) {
+  const std::string overflowed = overflowed_quantities(r);
+  if (!overflowed.empty()) {
+    const std::string msg = "simulate: recorded quantities became non-finite while the state stayed finite (an "
+                            "overflow): " + overflowed;
+    if (PyErr_WarnEx(PyExc_RuntimeWarning, msg.c_str(), 1) != 0) throw pybind11::error_already_set();
+  }
+  if (r.unconverged_steps > 0) {
     const std::string msg = "simulate: the implicit solve of method '" + method + "' did not converge in " +
-                            std::to_string(unconverged) + " of " + std::to_string(steps) +
-                            " steps at dt = " + format_value(dt) +
+                            std::to_string(r.unconverged_steps) + " of " + std::to_string(options.steps) +
+                            " steps at dt = " + dt +
                             " (its conservation is lost there); reduce dt (see methods() stability_limit)";
     if (PyErr_WarnEx(PyExc_RuntimeWarning, msg.c_str(), 1) != 0) throw pybind11::error_already_set();
   }

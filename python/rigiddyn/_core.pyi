@@ -3460,8 +3460,8 @@ def simulate(model: typing.Any, initial: typing.Any, dt: typing.Any, steps: typi
       keeps its order; records stay at t0 + i dt. gravity: None/False (the default: none), True
       ((0, 0, -9.81) m/s^2 in W) or a 3-vector [m/s^2] in W. t0: initial time [s]. scalar_first: quaternions
       as (w, x, y, z).
-    progress: None or a callable(steps_done), called with the GIL about every 0.05 s of a long run; an
-      exception it raises stops the run and propagates.
+    progress: None or a callable(steps_done), called with the GIL after the first step and then about every
+      0.05 s of a long run, however long a step takes; an exception it raises stops the run and propagates.
     
     Returns a SimulationResult, arrays with one row per record (n records): t (n,) [s]; p_W (n, 3) [m];
     q_WB (n, 4) (x, y, z, w); v_W (n, 3) [m/s]; w_B (n, 3) [rad/s]; kinetic_energy (n,) [J];
@@ -3470,10 +3470,12 @@ def simulate(model: typing.Any, initial: typing.Any, dt: typing.Any, steps: typi
     same method (kinetic_energy - kinetic_energy[0] ~ work); diverged; unconverged_steps (implicit solves that
     hit their iteration cap); elapsed_seconds (C++ loop wall time).
     A particle records q = identity, w = 0; a planar body p = (x, y, 0), q = Rz(theta), w = (0, 0, omega).
-    Warns RuntimeWarning and stops if the state becomes non-finite; warns RuntimeWarning (naming dt and the
-    count) if an implicit solve did not converge. Ctrl-C stops the run within about 0.05 s with
-    KeyboardInterrupt (no result is kept). ValueError names a bad argument, also a recording larger than the
-    memory available (record_every, with both figures).
+    Warns RuntimeWarning and stops if the state becomes non-finite; warns RuntimeWarning naming the quantities
+    and their first times if a recorded quantity is not finite although the state is (an overflow, e.g. the
+    kinetic energy of |v_W| > 1e154 m/s); warns RuntimeWarning (naming dt and the count) if an implicit solve
+    did not converge. Ctrl-C stops the run within about 0.05 s however long a step takes (a step under way is
+    finished first) with KeyboardInterrupt (no result is kept). ValueError names a bad argument, also a
+    recording larger than the memory available (record_every, with both figures).
     """
 def simulate_batch(model: typing.Any, initial: typing.Any, dt: typing.Any, steps: typing.Any, method: typing.Any = None, record_every: typing.Any = 1, loads: typing.Any = None, gravity: typing.Any = None, t0: typing.Any = 0.0, threads: typing.Any = None, simd: typing.Any = False, scalar_first: typing.Any = False, progress: typing.Any = None) -> BatchResult | BatchSceneResult:
     """
@@ -3499,17 +3501,21 @@ def simulate_batch(model: typing.Any, initial: typing.Any, dt: typing.Any, steps
     threads: None (the default: every hardware thread) or an int >= 1.
     simd: True runs the SIMD path across samples (RigidBody, method 'rk4', constant loads: a force in W and a
       torque in B without time window): equal to the scalar path up to round-off, not bitwise.
-    progress: None or a callable(samples_done), called with the GIL about every 0.05 s from the calling thread; an
-      exception it raises stops every sample and propagates. Ctrl-C stops every sample within about 0.05 s of a
-      sample's monitor check and raises KeyboardInterrupt (no result is kept).
+    progress: None or a callable(samples_done), called with the GIL from the calling thread once before the samples
+      start and then about every 0.05 s; an exception it raises stops every sample and propagates. Ctrl-C stops every sample within about 0.05 s however
+      long a step takes (the steps under way are finished first) and raises KeyboardInterrupt (no result is kept).
     
     Returns a BatchResult (bodies) or a BatchSceneResult (scenes): the arrays of SimulationResult / SceneResult
     with a leading sample axis (N, n, ...). A sample whose state becomes non-finite stops alone: diverged[i] is
     True, filled[i] its rows, the rest of its rows NaN; one RuntimeWarning names how many samples diverged and
-    the first few. Input errors (N = 0, mismatched N between model, initial, dt, gravity and loads, a wrong dict
-    key or shape, threads < 1) raise ValueError/TypeError naming the argument before any sample runs; an error of
-    one sample (a bad state, a body running out of mass) raises ValueError "sample <i>: ..." for the lowest such
-    sample, after every sample has run.
+    the first few; another names the samples whose recorded quantities became non-finite although their state
+    stayed finite (an overflow, e.g. a kinetic energy of |v_W| > 1e154 m/s), each quantity with its first time.
+    Input errors (N = 0, mismatched N between model, initial, dt, gravity and loads, a wrong dict key or shape,
+    threads < 1) raise ValueError/TypeError naming the argument before any sample runs; an error of one sample (a
+    bad state, a body running out of mass) raises ValueError "sample <i>: ..." for the lowest such sample, after
+    every sample has run. An exception raised by a PythonForce (or its wrong return value) stops every sample
+    within about 0.05 s and is raised, its message prefixed "sample <i>: " (the first sample that raised; a
+    KeyboardInterrupt as it is).
     """
 def slerp(q0: typing.Any, q1: typing.Any, t: typing.Any, scalar_first: typing.Any = False, canonical: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """

@@ -258,7 +258,7 @@ TEST(SimdRigidBody, ADivergedLaneStopsAloneAndTheOthersAreUntouched) {
 
 TEST(SimdRigidBody, AMonitorThatAsksToStopStopsEverySample) {
   Batch b = tumbling(3, 6);
-  b.common.steps = 3 * monitor_interval_steps;
+  b.common.steps = 12288;
   b.common.record_every = 1000;
   int calls = 0;
   b.common.monitor = [&](std::int64_t) { return ++calls >= 1; };

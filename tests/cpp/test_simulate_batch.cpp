@@ -307,7 +307,7 @@ TEST(SimulateBatch, TheLowestFailingSampleIsRethrownWithItsIndex) {
 
 TEST(SimulateBatch, MonitorStopsEverySample) {
   const auto initial = tumbling_states(6);
-  SimulationOptions o = rk4_options(2 * monitor_interval_steps, 1024);
+  SimulationOptions o = rk4_options(8192, 1024);
   std::vector<std::int64_t> seen;
   o.monitor = [&](std::int64_t samples_done) {  // called from this thread only: no lock
     seen.push_back(samples_done);
@@ -317,10 +317,21 @@ TEST(SimulateBatch, MonitorStopsEverySample) {
   EXPECT_TRUE(b.interrupted);
   ASSERT_FALSE(seen.empty());
   EXPECT_EQ(seen.front(), 0);
-  // one thread: sample 0 stopped at its first monitor check (step 4096, record 4 of every 1024th), the
-  // others never started
-  EXPECT_EQ(b.filled[0], monitor_interval_steps / 1024 + 1);
-  for (std::size_t i = 1; i < initial.size(); ++i) EXPECT_EQ(b.filled[i], 0);
+  // the first call comes before any sample starts: none ever starts
+  EXPECT_EQ(seen.size(), 1u);
+  for (std::size_t i = 0; i < initial.size(); ++i) EXPECT_EQ(b.filled[i], 0);
+  // a monitor that stops at its second call: sample 0 (one thread) stopped at its first monitor check (after its
+  // first step: its initial record only), the others never started
+  seen.clear();
+  o.monitor = [&](std::int64_t samples_done) {
+    seen.push_back(samples_done);
+    return seen.size() == 2;
+  };
+  const BatchTrajectory c = simulate_batch({kBody}, initial, o, {}, 1);
+  EXPECT_TRUE(c.interrupted);
+  EXPECT_EQ(seen, (std::vector<std::int64_t>{0, 0}));
+  EXPECT_EQ(c.filled[0], 1);
+  for (std::size_t i = 1; i < initial.size(); ++i) EXPECT_EQ(c.filled[i], 0);
 }
 
 // ---- scenes ---------------------------------------------------------------------------------------------

@@ -3,9 +3,10 @@ kind and for scenes, whatever the thread count; per-sample bodies, dt, gravity a
 run with that parameter; a diverged sample stops alone (flagged, NaN-padded, one RuntimeWarning); a failing
 sample raises "sample <i>: ..."; bad input is refused naming the argument; BatchResult pickles."""
 
-import _thread
+import os
 import pickle
 import re
+import signal
 import threading
 
 import numpy as np
@@ -292,15 +293,44 @@ def test_progress_is_called_and_its_exception_stops_the_batch():
 
 
 def test_ctrl_c_stops_every_sample():
-    # a batch of about a minute of stepping; a simulated Ctrl-C after 0.2 s stops it (a failure would be a slow
-    # test, not a hang: the samples end)
-    timer = threading.Timer(0.2, _thread.interrupt_main)
-    timer.start()
+    # SIGINT handled as at a terminal (a process started as a background job inherits it ignored, and then no
+    # Ctrl-C, real or simulated, does anything), sent from another thread once progress reports the batch
+    # running: 4 samples of 1e8 steps, minutes, stopped on both threads (a failure is a slow test, not a hang)
+    started, done = threading.Event(), threading.Event()
+
+    def send():
+        while not started.wait(0.01):
+            if done.is_set():
+                return
+        os.kill(os.getpid(), signal.SIGINT)
+
+    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
+    sender = threading.Thread(target=send)
+    sender.start()
     try:
         with pytest.raises(KeyboardInterrupt):
-            rd.simulate_batch(BODY, tumbling_states(4), 1e-4, 10**8, record_every=10**8, threads=2)
+            try:
+                rd.simulate_batch(BODY, tumbling_states(4), 1e-4, 10**8, record_every=10**8, threads=2,
+                                  progress=lambda samples_done: started.set())
+            finally:
+                done.set()
+                sender.join()
     finally:
-        timer.cancel()
+        signal.signal(signal.SIGINT, previous)
+    assert started.is_set()
+
+
+def test_simd_refuses_a_load_that_turns_with_the_body_naming_its_part_under_its_frame():
+    # a world-frame load: its force (in W) is taken, its torque (in W) is not; the message names that torque as
+    # the load's, in W (before: "got a force in B [0, 0, 0] N and a torque in W ...", a force the load lacks)
+    load = rd.AppliedLoad(force=[1.0, 0.0, 0.0], torque=[0.0, 0.0, 2.0])
+    with pytest.raises(ValueError, match=r"^loads: expected forces in W and torques in B \(.*\), got loads\[0\] "
+                                         r"\(frame 'world'\) with a torque in W of \[0, 0, 2\] N m$"):
+        rd.simulate_batch(BODY, tumbling_states(2), 0.01, 10, loads=load, simd=True)
+    body_force = rd.AppliedLoad(force=[0.0, 3.0, 0.0], torque=[0.0, 0.0, 2.0], frame="body")
+    with pytest.raises(ValueError, match=r"got loads\[1\] \(frame 'body'\) with a force in B of \[0, 3, 0\] N$"):
+        rd.simulate_batch(BODY, tumbling_states(2), 0.01, 10, loads=[rd.AppliedLoad(force=[1.0, 0.0, 0.0]), body_force],
+                          simd=True)
 
 
 def test_simd_path_matches_the_scalar_path_to_round_off():

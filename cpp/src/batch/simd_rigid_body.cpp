@@ -21,7 +21,7 @@
 #include "rigiddyn/integrators/method.hpp"
 #include "rigiddyn/integrators/rk4.hpp"  // rk4_tableau
 #include "rigiddyn/models/euler_equations.hpp"
-#include "rigiddyn/simulate/run_loop.hpp"  // monitor_interval_steps, RIGIDDYN_NOINLINE
+#include "rigiddyn/simulate/run_loop.hpp"  // RIGIDDYN_NOINLINE
 
 #include <Eigen/Core>
 
@@ -31,6 +31,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -268,7 +269,8 @@ void run_block(const std::vector<Sample>& samples, std::size_t first, Control& c
   std::array<bool, L> active{};
   for (int l = 0; l < used; ++l) active[l] = true;
   record_lanes<V>(samples, first, used, y, 0, 0, active, out, o);
-  std::int64_t i = 0, next_monitor = monitor_interval_steps;
+  MonitorPace pace;  // every block checks the stop request at this pace; the calling thread's asks the monitor
+  std::int64_t i = 0, next_monitor = pace.interval();
   std::size_t row = 0;
   const auto any_active = [&] { return std::any_of(active.begin(), active.begin() + used, [](bool a) { return a; }); };
   while (i < o.steps && any_active() && !control.stop.load(std::memory_order_relaxed)) {
@@ -278,9 +280,14 @@ void run_block(const std::vector<Sample>& samples, std::size_t first, Control& c
     i = until;
     if (i == next_record) record_lanes<V>(samples, first, used, y, i, ++row, active, out, o);
     if (i == next_monitor) {
-      next_monitor += monitor_interval_steps;
-      if (calling_thread) control.ask_monitor();
-      if (control.stop) break;
+      const bool stop = pace.check(
+          [&](std::int64_t) {
+            if (calling_thread) control.ask_monitor();
+            return control.stop.load(std::memory_order_relaxed);
+          },
+          i);
+      if (stop) break;
+      next_monitor = i + std::min(pace.interval(), std::numeric_limits<std::int64_t>::max() - i);
     }
   }
   control.samples_done += static_cast<std::size_t>(used);
@@ -331,9 +338,19 @@ ComLoads constant_loads(const std::vector<AppliedLoad>& schedule, double t0) {
   }
   const ComLoads sum = loads_at(schedule, t0);
   if (!(sum.f_B.isZero(0.0) && sum.tau_W.isZero(0.0))) {
-    throw std::invalid_argument("loads: expected forces in W and torques in B (the SIMD path takes no load that turns with "
-                                "the body), got a force in B " + format_value(sum.f_B.transpose()) + " N and a torque in W " +
-                                format_value(sum.tau_W.transpose()) + " N m");
+    // each load's part that turns with the body, under its own frame: a torque of a world-frame load, a force
+    // of a body-frame one
+    std::string got;
+    for (std::size_t k = 0; k < schedule.size(); ++k) {
+      const bool world = schedule[k].frame == Frame::world;
+      const Eigen::Vector3d& part = world ? schedule[k].torque : schedule[k].force;
+      if (part.isZero(0.0)) continue;
+      got += (got.empty() ? "" : " and ") + ("loads[" + std::to_string(k) + "]") +
+             (world ? " (frame 'world') with a torque in W of " + format_value(part.transpose()) + " N m"
+                    : " (frame 'body') with a force in B of " + format_value(part.transpose()) + " N");
+    }
+    throw std::invalid_argument("loads: expected forces in W and torques in B (the SIMD path takes no torque in W nor "
+                                "force in B: they turn with the body), got " + got);
   }
   return sum;
 }
@@ -399,6 +416,7 @@ void run_blocks(const std::vector<Sample>& samples, int threads, Control& contro
   // consecutive blocks per task, so that each thread writes contiguous rows
   const std::size_t per_task = std::max<std::size_t>(1, blocks / (8 * static_cast<std::size_t>(threads)));
   const std::size_t tasks = (blocks + per_task - 1) / per_task;
+  control.ask_monitor();  // once before any block starts (whichever thread then takes the blocks)
   parallel_for(
       tasks, threads,
       [&](std::size_t k, int worker) {

@@ -9,6 +9,7 @@
 #include <chrono>
 #include <exception>
 #include <functional>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <typeinfo>
@@ -22,6 +23,25 @@ std::size_t batch_record_count(std::int64_t steps, std::int64_t record_every) {
   // step 0, steps k·record_every for k = 1 .. floor(steps / record_every), and the last step if not among them
   return static_cast<std::size_t>(1 + steps / record_every + (steps % record_every != 0 ? 1 : 0));
 }
+
+namespace {
+
+// "sample <i>: " and the message of `cause` (std::exception's what(), else its lack of one).
+std::string sample_failure_message(std::size_t sample, const std::exception_ptr& cause) {
+  std::string what = "an exception not derived from std::exception";
+  try {
+    std::rethrow_exception(cause);
+  } catch (const std::exception& e) {
+    what = e.what();
+  } catch (...) {
+  }
+  return "sample " + std::to_string(sample) + ": " + what;
+}
+
+}  // namespace
+
+SampleFailure::SampleFailure(std::size_t sample, std::exception_ptr cause)
+    : std::runtime_error(sample_failure_message(sample, cause)), sample_(sample), cause_(std::move(cause)) {}
 
 namespace {
 
@@ -47,8 +67,21 @@ void check_batch(std::size_t samples, std::size_t models, const char* model_name
   if (threads < 1) throw_invalid("threads", "an integer >= 1", threads);
 }
 
-// The exception of sample i with its message prefixed "sample <i>: " (the standard types that carry a
-// message keep their type; any other is rethrown unchanged).
+// True for a sample's own error (simulate_batch.hpp): exactly std::invalid_argument, std::domain_error or
+// std::runtime_error, the types the core throws for a bad sample.
+bool is_sample_error(const std::exception_ptr& error) {
+  try {
+    std::rethrow_exception(error);
+  } catch (const std::exception& e) {
+    const std::type_info& type = typeid(e);
+    return type == typeid(std::invalid_argument) || type == typeid(std::domain_error) ||
+           type == typeid(std::runtime_error);
+  } catch (...) {
+    return false;
+  }
+}
+
+// A sample's own error rethrown with its message prefixed "sample <i>: ", its type kept.
 [[noreturn]] void rethrow_for_sample(std::size_t i, const std::exception_ptr& error) {
   const std::string prefix = "sample " + std::to_string(i) + ": ";
   try {
@@ -58,26 +91,48 @@ void check_batch(std::size_t samples, std::size_t models, const char* model_name
   } catch (const std::domain_error& e) {
     throw std::domain_error(prefix + e.what());
   } catch (const std::runtime_error& e) {
-    if (typeid(e) != typeid(std::runtime_error)) throw;  // a subclass: its type matters more than the prefix
     throw std::runtime_error(prefix + e.what());
   }
 }
 
+// The first failure (in time) that stops the batch, and its sample; any thread may report one.
+class FirstStop {
+ public:
+  // Keeps (i, error) if it is the first; returns whether it was.
+  bool keep(std::size_t i, std::exception_ptr error) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (error_) return false;
+    error_ = std::move(error), sample_ = i;
+    return true;
+  }
+  void rethrow() const {
+    if (error_) throw SampleFailure(sample_, error_);
+  }
+
+ private:
+  std::mutex mutex_;
+  std::exception_ptr error_;
+  std::size_t sample_ = 0;
+};
+
 // Runs run_sample(i, monitor) for every sample i in [0, samples) on `threads` threads, in chunks of
-// consecutive samples; run_sample returns true when its run was interrupted by the monitor it was given
-// (empty unless `monitor` is set). `monitor` (the batch's: samples done -> stop) is called from the calling
-// thread only. Rethrows the failure of the lowest sample (prefixed) after every thread joined; returns
-// whether the monitor stopped the batch.
+// consecutive samples; run_sample returns true when its run was interrupted by the monitor it was given,
+// which every sample gets: it stops the run once the batch is stopped (by `monitor`, or by a failure that is
+// not a sample's own error), checked at simulate's monitor pace. `monitor` (the batch's: samples done ->
+// stop; may be empty) is called from the calling thread only. Rethrows, after every thread joined, the
+// first failure that stopped the batch (SampleFailure), else the own error of the lowest failing sample
+// (prefixed); returns whether the monitor stopped the batch.
 bool run_samples(std::size_t samples, int threads, const StepMonitor& monitor,
                  const std::function<bool(std::size_t i, const StepMonitor& sample_monitor)>& run_sample) {
   // about 8 chunks per thread: balance between threads, and few chunk boundaries (each one a place where
   // two threads write neighbouring rows)
   const std::size_t chunk = std::max<std::size_t>(1, samples / (8 * static_cast<std::size_t>(threads)));
   const std::size_t chunks = (samples + chunk - 1) / chunk;
-  std::atomic<bool> stop{false};
+  std::atomic<bool> stop{false}, monitor_stopped{false};
   std::atomic<std::int64_t> done{0};
   auto ask_monitor = [&] {  // calling thread only
     if (monitor && !stop.load(std::memory_order_relaxed) && monitor(done.load(std::memory_order_relaxed))) {
+      monitor_stopped.store(true, std::memory_order_relaxed);
       stop.store(true, std::memory_order_relaxed);
     }
   };
@@ -86,30 +141,38 @@ bool run_samples(std::size_t samples, int threads, const StepMonitor& monitor,
     ask_monitor();
     return stop.load(std::memory_order_relaxed);
   };
-  const StepMonitor no_monitor;
-  // the first failure of each chunk (its lowest sample): chunk-owned, no lock
+  // the first own error of each chunk (its lowest sample): chunk-owned, no lock
   std::vector<std::exception_ptr> failure(chunks);
   std::vector<std::size_t> failed_sample(chunks, 0);
+  FirstStop first_stop;
+  ask_monitor();  // once before any sample starts (whichever thread then takes the samples)
   parallel_for(
       chunks, threads,
       [&](std::size_t c, int worker) {
-        const StepMonitor& sample_monitor = !monitor ? no_monitor : worker == 0 ? main_monitor : follow_stop;
+        const StepMonitor& sample_monitor = monitor && worker == 0 ? main_monitor : follow_stop;
         for (std::size_t i = c * chunk; i < std::min(samples, (c + 1) * chunk); ++i) {
           if (stop.load(std::memory_order_relaxed)) return;
           try {
             if (run_sample(i, sample_monitor)) return;
           } catch (...) {
-            if (!failure[c]) failure[c] = std::current_exception(), failed_sample[c] = i;
+            std::exception_ptr error = std::current_exception();
+            if (!is_sample_error(error)) {  // e.g. a Python force's exception: every sample stops
+              first_stop.keep(i, std::move(error));
+              stop.store(true, std::memory_order_relaxed);
+              return;
+            }
+            if (!failure[c]) failure[c] = std::move(error), failed_sample[c] = i;
           }
           done.fetch_add(1, std::memory_order_relaxed);
           if (worker == 0) ask_monitor();
         }
       },
       monitor ? std::function<void()>(ask_monitor) : std::function<void()>());
+  first_stop.rethrow();
   for (std::size_t c = 0; c < chunks; ++c) {
     if (failure[c]) rethrow_for_sample(failed_sample[c], failure[c]);
   }
-  return stop.load();
+  return monitor_stopped.load();
 }
 
 // Sample i's options: common with its dt, gravity and loads.

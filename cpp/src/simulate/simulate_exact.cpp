@@ -40,8 +40,10 @@ Trajectory simulate_exact(const RigidBody& body, const RigidBodyState& initial, 
     Trajectory out;
     reserve_records(out, o.steps, o.record_every);
     const auto start = std::chrono::steady_clock::now();
-    // only the recorded steps are evaluated: 0, k, 2k, ... and the last (k = record_every)
-    std::int64_t next_monitor = monitor_interval_steps;
+    // only the recorded steps are evaluated: 0, k, 2k, ... and the last (k = record_every); the monitor is
+    // paced in evaluations (each one the cost of a step)
+    MonitorPace pace;
+    std::int64_t until_monitor = pace.interval();
     for (std::int64_t i = 0;; i = o.steps - i <= o.record_every ? o.steps : i + o.record_every) {
       const double t = static_cast<double>(i) * o.dt;
       const TorqueFreeState s = solution.state_at(t);
@@ -53,12 +55,12 @@ Trajectory simulate_exact(const RigidBody& body, const RigidBodyState& initial, 
       const double work = body.mass() * a_W.dot(state.p_W - s0.p_W);
       append_record(out, o.t0 + t, model.record(to_coordinates(state, work)));
       if (i == o.steps) break;
-      if (i >= next_monitor) {
-        if (o.monitor && o.monitor(i)) {
+      if (o.monitor && i > 0 && --until_monitor == 0) {
+        if (pace.check(o.monitor, i)) {
           out.interrupted = true;
           break;
         }
-        next_monitor = i + monitor_interval_steps;
+        until_monitor = pace.interval();
       }
     }
     out.elapsed_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

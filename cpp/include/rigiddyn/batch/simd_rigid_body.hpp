@@ -58,11 +58,11 @@ int lane_count(SimdLanes lanes);
 // and a torque in B (AppliedLoad with frame = world and zero torque, or frame = body and zero force, every
 // one without a time window). A sample whose state becomes non-finite stops recording alone (diverged[i] = 1,
 // filled[i] rows, NaN after, as simulate: non-finiteness is checked at records); the other samples are
-// computed bitwise as without it. common.monitor, if set, is called from the calling thread only (every
-// monitor_interval_steps steps of its blocks, after each block, and about every 10 ms while it waits for the
-// other threads) with the number of samples finished; returning true stops every sample at its next check
-// (every monitor_interval_steps steps) and sets interrupted: their rows after that stay NaN, filled[i] says
-// how many they have.
+// computed bitwise as without it. common.monitor, if set, is called from the calling thread only (once before
+// any block starts, at the pace of simulate's calls, about every monitor_period_seconds of its blocks' steps
+// (simulate/monitor_pace.hpp), after each block, and about every 10 ms while it waits for the other threads)
+// with the number of samples finished; returning true stops every sample at its next check (at the same
+// pace) and sets interrupted: their rows after that stay NaN, filled[i] says how many they have.
 // Throws std::invalid_argument naming the argument: "method" (not rk4), "loads" (a time window, a torque in W
 // or a force in B, non-finite), "bodies" / "dt" / "gravity" (a size other than 1 or N resp. 0 or N),
 // "initial" (no sample), "threads" (< 1), "lanes" (not a SimdLanes), "steps", "record_every", and per sample

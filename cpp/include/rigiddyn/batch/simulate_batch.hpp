@@ -17,6 +17,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <exception>
+#include <stdexcept>
 #include <vector>
 
 namespace rigiddyn {
@@ -33,19 +35,39 @@ struct BatchParameters {
 // (< 0) or record_every (< 1).
 std::size_t batch_record_count(std::int64_t steps, std::int64_t record_every);
 
+// The exception simulate_batch throws when a sample fails with anything but its own error (see below), e.g.
+// a Python force's exception or std::bad_alloc: the first such failure stops every sample. what() is
+// "sample <i>: " and the cause's message; cause() is the exception itself (to rethrow, e.g. as the Python
+// exception it carries).
+class SampleFailure : public std::runtime_error {
+ public:
+  SampleFailure(std::size_t sample, std::exception_ptr cause);
+  std::size_t sample() const noexcept { return sample_; }
+  const std::exception_ptr& cause() const noexcept { return cause_; }
+
+ private:
+  std::size_t sample_;
+  std::exception_ptr cause_;
+};
+
 // N = initial.size() runs: sample i is simulate(bodies[i] (or bodies[0] when one body is shared),
 // initial[i], options_i), options_i = common with the sample's dt, gravity_W and loads. threads >= 1 (the
 // calling thread is one of them; the Python layer turns None into default_thread_count()).
-// common.monitor, if set, is called from the calling thread only, with the number of samples done (about
-// every 10 ms while it waits, after each of its samples and at each of its samples' monitor checks);
-// returning true stops every sample at its next monitor check, skips those not started, and returns
-// the batch so far with interrupted set.
+// common.monitor, if set, is called from the calling thread only, with the number of samples done (once
+// before any sample starts, about every 10 ms while it waits, after each of its samples and at each of its
+// samples' monitor checks, at simulate's pace: about every monitor_period_seconds); returning true stops
+// every sample at its next check
+// (every sample checks at that pace), skips those not started, and returns the batch so far with
+// interrupted set.
 // Checked before any thread starts (std::invalid_argument naming the argument and both sizes): N >= 1
 // ("initial"), bodies 1 or N ("bodies"), per_sample's vectors empty or N ("dt", "gravity", "loads"),
-// threads >= 1, steps >= 0, record_every >= 1. Every other check is simulate's, per sample: its exception
-// of the lowest failing sample is rethrown after every thread has joined, the message prefixed with
-// "sample <i>: " (std::invalid_argument, std::domain_error and std::runtime_error keep their type; any
-// other exception, e.g. a Python force's, propagates unchanged).
+// threads >= 1, steps >= 0, record_every >= 1. Every other check is simulate's, per sample. A sample's own
+// error (exactly std::invalid_argument, std::domain_error or std::runtime_error: a bad state, a body
+// running out of mass) stops that sample alone: the one of the lowest failing sample is rethrown after every
+// thread has joined, its type kept and its message prefixed with "sample <i>: ". Any other exception
+// (a subclass of those, e.g. a Python force's, or any other type) stops every sample at its next check,
+// skips those not started, and is rethrown as SampleFailure (the first one raised) after every thread has
+// joined.
 BatchTrajectory simulate_batch(const std::vector<RigidBody>& bodies, const std::vector<RigidBodyState>& initial,
                                const SimulationOptions& common, const BatchParameters& per_sample, int threads);
 // The same for particles (records: q_WB = identity, w_B = 0) and planar bodies (p_W = (x, y, 0),

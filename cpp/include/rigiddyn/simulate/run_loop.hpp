@@ -109,8 +109,9 @@ RIGIDDYN_NOINLINE int split_step(Model& model, typename Model::Coordinates& y, c
 
 // The stepping loop, compiled per (model, integrator): records step 0, every record_every-th step
 // and the last one into `out` (reserved by the caller); stops after recording a non-finite state, or
-// when options.monitor (called every monitor_interval_steps steps) returns true. The runs of plain
-// steps between the steps that contain a switch time are as tight as a hand-written loop.
+// when options.monitor (called at the pace of MonitorPace, about every monitor_period_seconds) returns
+// true. The runs of plain steps between the steps that contain a switch time, or a monitor call, are as
+// tight as a hand-written loop.
 template <class Integrator, class Model, class Pieces, class Result>
 Result run(Model model, typename Model::Coordinates y, const SimulationOptions& o, const Pieces& pieces, Result out) {
   const SwitchGrid switches = switch_grid(o, pieces.schedule);
@@ -119,7 +120,9 @@ Result run(Model model, typename Model::Coordinates y, const SimulationOptions& 
   const auto start = std::chrono::steady_clock::now();
   const double dt = o.dt;
   const std::int64_t steps = o.steps, record_every = o.record_every;
-  std::int64_t i = 0, until_record = record_every, next_monitor = monitor_interval_steps;
+  MonitorPace pace;
+  std::int64_t i = 0, until_record = record_every;
+  std::int64_t next_monitor = o.monitor ? pace.interval() : std::numeric_limits<std::int64_t>::max();
   std::size_t k = 0;  // the next switch
   bool stop = false;  // the monitor asked to stop
   while (!stop && i < steps) {
@@ -151,8 +154,8 @@ Result run(Model model, typename Model::Coordinates y, const SimulationOptions& 
       }
     }
     if (i >= next_monitor) {
-      stop = o.monitor && o.monitor(i);
-      next_monitor = i + monitor_interval_steps;
+      stop = pace.check(o.monitor, i);
+      next_monitor = i + std::min(pace.interval(), std::numeric_limits<std::int64_t>::max() - i);
     }
   }
   out.interrupted = stop;

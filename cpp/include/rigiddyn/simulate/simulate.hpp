@@ -12,6 +12,7 @@
 #include "rigiddyn/models/particle.hpp"
 #include "rigiddyn/models/planar_body.hpp"
 #include "rigiddyn/models/rigid_body.hpp"
+#include "rigiddyn/simulate/monitor_pace.hpp"
 
 #include <Eigen/Core>
 
@@ -32,16 +33,12 @@ struct SimulationOptions {
   double t0 = 0.0;                   // initial time [s] (load schedules refer to it)
   std::vector<AppliedLoad> loads;    // applied loads (models/loads.hpp)
   Eigen::Vector3d gravity_W = Eigen::Vector3d::Zero();  // uniform gravity [m/s²]; zero = none
-  // Called by simulate from the stepping thread every monitor_interval_steps steps with the number
+  // Called by simulate from the stepping thread between steps, after the first step and then about every
+  // monitor_period_seconds of wall time whatever a step costs (simulate/monitor_pace.hpp), with the number
   // of steps done (a progress report, an interrupt check); returning true stops the run, which then
   // returns its records so far with Trajectory::interrupted set. Empty: never called.
   std::function<bool(std::int64_t steps_done)> monitor;
 };
-
-// Steps between two calls of SimulationOptions::monitor: many enough that a call costs nothing per
-// step, few enough that a run answers within milliseconds (4096 steps of the slowest method, ~1 µs
-// each).
-inline constexpr std::int64_t monitor_interval_steps = 4096;
 
 // The bytes a Trajectory of `steps` steps recorded every `record_every`-th holds (an upper bound:
 // steps / record_every + 2 records of 19 doubles each). simulate refuses a recording larger than
