@@ -86,30 +86,20 @@ py::list states_object(const std::vector<BodyState>& states) {
 
 // ------------------------------------------------------------ building a scene
 
-// Adds `body` named `name` (None: the default "body<i>"; names are unique) with its mass flow (None: a
-// constant mass). Returns its index.
+// Adds `body` named `name` (None: the default "body<i>"; names are unique, checked in O(1) by the scene's name
+// index) with its mass flow (None: a constant mass). Returns its index.
 int add_body(Scene& scene, py::handle body, py::handle name, py::handle mass_flow, const std::string& body_arg,
              const std::string& name_arg, const std::string& flow_arg) {
   Body b = as_body(body, body_arg);
   std::optional<MassFlow> flow = as_mass_flow(mass_flow, flow_arg);
   const std::string given = name.is_none() ? std::string() : py_io::as_string(name, name_arg);
-  const std::size_t index = scene.bodies.size();
-  const std::string effective = given.empty() ? "body" + std::to_string(index) : given;
-  for (std::size_t i = 0; i < index; ++i) {
-    if (body_name(scene, i) == effective) {
-      py_io::throw_value_error(name_arg, "a name no other body of the scene has ('" + effective + "' is body " +
-                                             std::to_string(i) + "'s)",
-                               name.is_none() ? "None" : "'" + given + "'");
-    }
+  const std::string effective = given.empty() ? "body" + std::to_string(scene.bodies.size()) : given;
+  if (const auto other = find_body(scene, effective)) {
+    py_io::throw_value_error(name_arg, "a name no other body of the scene has ('" + effective + "' is body " +
+                                           std::to_string(*other) + "'s)",
+                             name.is_none() ? "None" : "'" + given + "'");
   }
-  scene.body_names.resize(index, "");
-  scene.bodies.push_back(std::move(b));
-  scene.body_names.push_back(given);
-  if (flow || !scene.mass_flows.empty()) {  // empty while every mass is constant
-    scene.mass_flows.resize(index);
-    scene.mass_flows.push_back(std::move(flow));
-  }
-  return static_cast<int>(index);
+  return static_cast<int>(rigiddyn::add_body(scene, std::move(b), given, std::move(flow)));
 }
 
 // Adds `element` after checking it against the bodies so far (its compiled term's checks, messages
