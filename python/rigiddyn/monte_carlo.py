@@ -528,6 +528,9 @@ def attitude_error(q_WB: Any, q_WB_ref: Any) -> np.ndarray:
     (..., 4) (x, y, z, w) quaternions, broadcasting. Returns (...)."""
     q = np.asarray(q_WB, float)
     r = np.asarray(q_WB_ref, float)
+    for name, a in (("q_WB", q), ("q_WB_ref", r)):
+        if a.ndim == 0 or a.shape[-1] != 4:
+            raise ValueError(f"{name}: expected quaternions of shape (..., 4), got shape {a.shape}")
     rv, rw, qv, qw = -r[..., :3], r[..., 3:], q[..., :3], q[..., 3:]  # r^-1 = conj(r) for a unit r
     vec = rw * qv + qw * rv + np.cross(rv, qv)
     w = rw[..., 0] * qw[..., 0] - np.sum(rv * qv, axis=-1)

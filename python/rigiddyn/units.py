@@ -82,10 +82,12 @@ def to_si(value: Any, unit: str, name: str) -> Any:
     check it as they check a plain SI number). ValueError "<name>: expected <unit>, got <value>" for a
     quantity of another dimension. The bindings call this only when the argument holds a quantity,
     so pint is imported only then."""
+    _check_si_unit(unit)
     if isinstance(value, (list, tuple)):
         return [to_si(v, unit, f"{name}[{i}]") for i, v in enumerate(value)]
     if not is_quantity(value):
         return value
+    _check_si_unit(unit, known=True)
     import pint
 
     try:
@@ -110,11 +112,32 @@ def _spoken(unit: str) -> str:
     return "a pure number" if unit == "1" else unit.replace("*", " ")
 
 
+@functools.lru_cache(maxsize=64)
+def _si_unit_checked(unit: str, known: bool) -> None:
+    """ValueError naming `unit` unless it is a unit expression of this module's grammar ("kg*m^2", "1") and,
+    if `known`, made of names the registry knows (which imports pint)."""
+    try:
+        powers = _read(f"1 {unit}")[1]
+        if known:
+            _unit_of(powers)
+    except _Refused as e:
+        raise ValueError(f"unit: expected an SI unit expression such as \"kg*m^2\", got {unit!r} ({e})") from None
+
+
+def _check_si_unit(unit: Any, known: bool = False) -> None:
+    """TypeError or ValueError naming `unit` unless it is a unit expression string (the target of a conversion);
+    its names are looked up in the registry only when `known` (where a conversion imports pint anyway)."""
+    if not isinstance(unit, str):
+        raise TypeError(f"unit: expected an SI unit expression as a string such as \"kg*m^2\", got {_shown(unit)}")
+    _si_unit_checked(unit, known)
+
+
 def quantity(value: Any, name: str, unit: str, positive: bool = False, nonnegative: bool = False) -> float:
     """The value of `value` in the SI unit `unit` (a pint expression such as "kg*m^2", "rad/s", "1")
     as a finite float: a plain number is taken to be in `unit` already, a string "<number> <unit>"
     or a pint Quantity is converted. ValueError naming `name` for a wrong type, an unknown unit, a
     unit of another dimension, a non-finite value, or (if asked) a value <= 0 or < 0."""
+    _check_si_unit(unit)
     if isinstance(value, bool):
         raise _fail(name, unit, value, "a boolean is no number")
     if isinstance(value, (int, float, np.integer, np.floating)):
@@ -138,6 +161,7 @@ def quantity(value: Any, name: str, unit: str, positive: bool = False, nonnegati
 def _convert(value: Any, name: str, unit: str) -> float:
     """A unit string (read by the grammar of the module docstring) or a pint Quantity (by its own registry)
     converted to `unit`."""
+    _check_si_unit(unit, known=True)
     import pint
 
     if not isinstance(value, str):
@@ -310,6 +334,7 @@ def vector_quantity(value: Any, name: str, unit: str, n: int = 3) -> np.ndarray:
     """An (n,) float64 array in the SI unit `unit` from a list of n values (numbers in SI, unit
     strings, quantities), a table {value = [..], unit = ".."}, or a pint Quantity holding an array.
     Elements are named name[i] in errors."""
+    _check_si_unit(unit)
     if isinstance(value, Mapping):
         unknown = sorted(set(value) - {"value", "unit"})
         if unknown:

@@ -112,25 +112,7 @@ EXCLUDED = {
 # Findings of defects known and being fixed: (call regex, kind regex, regex on the finding's detail or reproducer,
 # the defect in plain words). A finding that matches is reported under "known", not as a finding; remove the entry
 # when the fix lands (the fuzz then checks the fix).
-KNOWN_DEFECTS = [
-    (r"load_scene|check\..*", r"exception", r"RecursionError",
-     "a deeply nested TOML array ([[[...]]] thousands deep) overflows the TOML reader's recursion"),
-    (r".*", r"hang", r"\^9\^9",
-     "a unit string with a power tower ('1 m^9^9^9') makes the unit reader compute a gigantic power: no return"),
-    (r"units\..*|load_scene|check\..*", r"exception", r"OverflowError: int too large to convert to float",
-     "a unit string with a number of hundreds of digits raises OverflowError (int too large to convert to float) "
-     "instead of a ValueError naming the field"),
-    (r"check\.unit_decimal_comma", r"wrong result", r".*",
-     "a decimal comma ('1,5 m') is read as a digit group separator (15 m) instead of being refused"),
-    (r"check\.cli_matches_api", r"wrong result", r"cluster-only: True",
-     "the simulate command does not take a scene file of [[cluster]] tables only (no [[body]]) for a scene file"),
-    # found by this fuzz, reported with it
-    (r"monte_carlo\.attitude_error", r"exception", r"IndexError",
-     "attitude_error of a quaternion that is no (..., 4) array (a number, a 0-d array) raises numpy's IndexError"),
-    (r"units\.(quantity|vector_quantity|to_si)", r"exception", r"UndefinedUnitError|AssertionError|"
-     r"DefinitionSyntaxError|has no attribute '(replace|items)'", "an unknown, malformed or non-str `unit` argument (the SI unit "
-     "expected) raises pint's own exception (UndefinedUnitError, AssertionError, ...) instead of a ValueError naming unit"),
-]
+KNOWN_DEFECTS: list[tuple[str, str, str, str]] = []
 # functions that return an argument unchanged where it is not theirs to convert (a NaN passed is a NaN returned)
 PASS_THROUGH = {"units.to_si": "returns a value that is not a pint quantity unchanged (its docstring)"}
 _DOCUMENTED = [(re.compile(re.escape(p).replace(r"\*", ".*")), kinds) for p, kinds, _ in DOCUMENTED_NON_FINITE]

@@ -13,6 +13,7 @@ import pint
 import pytest
 
 import rigiddyn as rd
+import rigiddyn.units as rd_units
 
 # A user's own registry (not rigiddyn.units.registry()): its quantities convert with its own definitions.
 ureg = pint.UnitRegistry()
@@ -246,3 +247,21 @@ def test_the_body_functions_take_quantities():
         rd.apply_impulse(body, state, newtons)
     with pytest.raises(ValueError, match=r"^gravity: expected m/s\^2, got"):
         rd.simulate(body, state, dt=0.1, steps=1, gravity=Q(VECTOR, "m/s"))
+
+
+@pytest.mark.parametrize("unit, error", [("rk4", ValueError), ("m^", ValueError), ("m^9^9^9", ValueError),
+                                         (1.0, TypeError), (None, TypeError)])
+def test_a_bad_target_unit_is_refused_naming_unit(unit, error):
+    # the SI unit a value is converted to is itself read by the unit grammar: never pint's own exceptions
+    for convert in (lambda: rd_units.quantity("1 m", "x", unit), lambda: rd_units.vector_quantity(["1 m", "2 m", "3 m"], "x", unit),
+                    lambda: rd_units.to_si(rd_units.registry().Quantity(1.0, "m"), unit, "x")):
+        with pytest.raises(error, match="unit: expected"):
+            convert()
+
+
+def test_attitude_error_refuses_what_is_no_quaternion_array():
+    from rigiddyn.monte_carlo import attitude_error
+
+    for q, ref in ((0.0, 0.0), (np.array(1.0), np.zeros(3)), (np.zeros(3), np.array([0.0, 0.0, 0.0, 1.0]))):
+        with pytest.raises(ValueError, match=r"q_WB(_ref)?: expected quaternions of shape \(\.\.\., 4\)"):
+            attitude_error(q, ref)
