@@ -68,11 +68,11 @@ _KEYS_SHOWN = 40  # dispersible keys an error about an unknown key lists
 # the frame terms a scene's frame adds at most; memory per sample while drawing (its SeedSequence,
 # generator, drawn values and bodies) and per body state of a scene's sample [bytes]: measured at 1.2 kB a
 # sample with four keys dispersed (an inertia among them) and 0.3 kB a particle's state, rounded up
-RECORD_DOUBLES = 29
-SCENE_RECORD_DOUBLES = (10, 20, 2)
+_RECORD_DOUBLES = 29
+_SCENE_RECORD_DOUBLES = (10, 20, 2)
 _FRAME_TERMS = 4
-SAMPLE_BYTES = 2048
-STATE_BYTES = 512
+_SAMPLE_BYTES = 2048
+_STATE_BYTES = 512
 
 
 # a recorded field's name, or a function of the BatchResult returning (N, n_records, ...)
@@ -743,16 +743,16 @@ def _count(value: Any, name: str, least: int) -> int:
 def _check_memory(n: int, steps: int, record_every: int, model: Any) -> None:
     """ValueError naming n, before any draw, when N samples would not fit in the available memory: each
     sample's records (as simulate_batch counts them: step 0, every record_every-th step and the last;
-    RECORD_DOUBLES of a body, SCENE_RECORD_DOUBLES of a scene per record) and what drawing it holds
-    (SAMPLE_BYTES, and a state object per body of a scene, STATE_BYTES)."""
+    _RECORD_DOUBLES of a body, _SCENE_RECORD_DOUBLES of a scene per record) and what drawing it holds
+    (_SAMPLE_BYTES, and a state object per body of a scene, _STATE_BYTES)."""
     records = 1 + steps // record_every + (1 if steps % record_every else 0)
     if isinstance(model, _core.Scene):
         nb = len(model.bodies)
         terms = len(model.elements) + (_FRAME_TERMS if model.frame is not None else 0)
-        per_record = SCENE_RECORD_DOUBLES[0] + SCENE_RECORD_DOUBLES[1] * nb + SCENE_RECORD_DOUBLES[2] * terms
-        per_sample = SAMPLE_BYTES + STATE_BYTES * nb
+        per_record = _SCENE_RECORD_DOUBLES[0] + _SCENE_RECORD_DOUBLES[1] * nb + _SCENE_RECORD_DOUBLES[2] * terms
+        per_sample = _SAMPLE_BYTES + _STATE_BYTES * nb
     else:
-        per_record, per_sample = RECORD_DOUBLES, SAMPLE_BYTES
+        per_record, per_sample = _RECORD_DOUBLES, _SAMPLE_BYTES
     per_sample += records * per_record * 8
     available = available_bytes()
     available = sys.maxsize if available is None else available  # unknown: only what no array can hold

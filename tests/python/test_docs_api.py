@@ -33,6 +33,7 @@ INTERNAL = {
     "rotation_scipy": "its names are rigiddyn's (to_scipy, from_scipy)",
     "scene_describe": "attaches Scene.describe and CompiledScene.describe",
     "scene_precision": "tradeoff's machinery for scenes (documented through rigiddyn.tradeoff)",
+    "_memory": "the memory estimates of scene_file's [[cluster]] and monte_carlo (their docs state them)",
 }
 
 _DIRECTIVE = re.compile(r"^\.\. (currentmodule|automodule|autosummary)::\s*(\S*)\s*$")
