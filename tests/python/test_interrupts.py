@@ -88,9 +88,9 @@ def mutual_gravity_cluster(n):
 
 
 def expensive_cluster():
-    """A scene whose 4096 steps (the fixed interval between two checks of Ctrl-C before they were paced by the
-    clock) take at least 6 s on this machine: 300 particles under mutual gravity (~1 ms a step), more on a
-    machine fast enough to run those 4096 steps sooner (the cost grows as n^2)."""
+    """A scene whose 4096 steps take at least 6 s on this machine (a loop that checked for Ctrl-C every 4096
+    steps would answer that late): 300 particles under mutual gravity (~1 ms a step), more on a machine fast
+    enough to run those 4096 steps sooner (the cost grows as n^2)."""
     n = 300
     scene, states = mutual_gravity_cluster(n)
     step_seconds = rd.simulate(scene, states, 1e-3, 20, record_every=20).elapsed_seconds / 20
@@ -102,8 +102,8 @@ def expensive_cluster():
 
 # The stop after a Ctrl-C of a run of expensive steps: within the 0.05 s of the Python monitor, the clock's pace
 # of checks (about 0.01 s) and one step (~1 ms here, a few times that on a loaded machine), well under 1.5 s;
-# before the checks were paced by the clock, every 4096 steps, the same run stopped 4096 steps (>= 6 s) later.
-# 1.5 s catches that and leaves 10x room for a loaded machine.
+# checks every 4096 steps would stop the same run 4096 steps (>= 6 s) later. 1.5 s catches that and leaves 10x
+# room for a loaded machine.
 PROMPT_SECONDS = 1.5
 
 

@@ -288,7 +288,7 @@ def test_progress_is_called_and_its_exception_stops_the_batch():
 
     with pytest.raises(KeyboardInterrupt):
         rd.simulate_batch(BODY, tumbling_states(4), 0.01, 10, threads=2, progress=stop)
-    with pytest.raises(KeyboardInterrupt):  # the SIMD path asks its monitor every 4096 steps
+    with pytest.raises(KeyboardInterrupt):  # the SIMD path asks its monitor too
         rd.simulate_batch(BODY, tumbling_states(4), 0.01, 5000, record_every=5000, threads=2, simd=True, progress=stop)
 
 
