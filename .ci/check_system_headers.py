@@ -78,7 +78,11 @@ def closure(roots: list[str], deps: dict[str, set[str]]) -> set[str]:
 
 
 def headers_read(build_dir: Path) -> set[str]:
-    """Absolute paths of the files outside the repository that the build's objects depend on."""
+    """Absolute paths of the files outside the repository that the build's objects depend on.
+
+    A dependency is recorded relative to the build folder where the compiler was given a relative
+    path (ccache's base_dir rewrites the repository's paths so), hence the folder's absolute form."""
+    build_dir = build_dir.absolute()
     out = subprocess.run(["ninja", "-C", str(build_dir), "-t", "deps"], check=True, capture_output=True,
                          text=True).stdout
     found: set[str] = set()
