@@ -1890,13 +1890,19 @@ class SceneFrame:
                                         in F and in W) through its origin, fixed at W's origin; F = W at t = 0;
       SceneFrame.earth(latitude)        the local frame (x east, y north, z up) at `latitude` [rad] on the turning
                                         Earth: Omega = 7.2921159e-5 rad/s about (0, cos(latitude), sin(latitude));
-      SceneFrame.moving(frame_motion)   any motion of F relative to W, a FrameMotion (a Python kinematics_at(t) is
-                                        called with the GIL taken, at each derivative evaluation).
+      SceneFrame.moving(frame_motion, terms=None)
+                                        any motion of F relative to W, a FrameMotion (a Python kinematics_at(t) is
+                                        called with the GIL taken, at each derivative evaluation); terms: the
+                                        fictitious terms that act, when the motion leaves some identically zero.
     Each physical argument: a float [its unit] or a pint quantity. Newton's and Euler's laws seen from F gain the
     fictitious terms ("Rigid body kinematics and dynamics" notes, eqs. (4.39)-(4.40)): frame origin -m a_O, Euler
     -m alpha x r, centrifugal -m Omega x (Omega x r), Coriolis -2 m Omega x v (and their torques on bodies with an
-    attitude); compiling a scene adds those that act as elements "FrameOriginForce", "EulerForce",
-    "CentrifugalForce", "CoriolisForce" after the scene's own (columns of SceneResult.work and power). Every
+    attitude); compiling a scene adds those that act (SceneFrame.terms) as elements "FrameOriginForce", "EulerForce",
+    "CentrifugalForce", "CoriolisForce" after the scene's own (columns of SceneResult.work and power): the centrifugal
+    and Coriolis ones for rotating and earth (none at rate 0), none for a FrameMotion.fixed placement, every term
+    for a general motion unless `terms` names those that act (a motion turning at a constant rate has no Euler term,
+    one whose origin does not accelerate no origin term; each evaluation of the motion then checks that the values
+    of the terms left out are zero, else ValueError naming `frame`). Every
     element, state and record of the scene is then in F. A motion function returning a non-finite value raises
     ValueError naming `frame`; an exception it raises propagates out of simulate. Immutable; pickles (a
     FrameMotion of a module-level function); == compares how it was built.
@@ -1908,9 +1914,9 @@ class SceneFrame:
         The local frame at `latitude` [rad] in [-pi/2, pi/2] (a pint angle: '48.85 deg') on the turning Earth: x east, y north, z up, Omega = 7.2921159e-5 rad/s about (0, cos(latitude), sin(latitude)); its origin is taken as fixed (the centripetal acceleration of the ground is part of the local gravity, a UniformGravity).
         """
     @staticmethod
-    def moving(frame_motion: typing.Any) -> SceneFrame:
+    def moving(frame_motion: typing.Any, terms: typing.Any = None) -> SceneFrame:
         """
-        F moving relative to W as the FrameMotion `frame_motion` gives (P = W: R_WF, angular velocity and acceleration, origin position, velocity and acceleration, all in W); every fictitious term may act.
+        F moving relative to W as the FrameMotion `frame_motion` gives (P = W: R_WF, angular velocity and acceleration, origin position, velocity and acceleration, all in W). terms: None (a FrameMotion.fixed placement: none; a FrameMotion.constant_rotation: 'centrifugal' and 'coriolis'; any other motion: every term) or the names of the fictitious terms that act, among 'origin' (a_O not identically 0), 'euler' (alpha), 'centrifugal' and 'coriolis' (Omega: both or neither; 'euler' only with them); compile adds those alone, and each evaluation of the motion checks that the values of the others are zero (ValueError naming `frame` at that t). ValueError naming `terms` for a set that cannot be, or another set than a fixed placement's or a constant rotation's own.
         """
     @staticmethod
     def rotating(axis: typing.Any, rate: typing.Any) -> SceneFrame:
@@ -1935,6 +1941,11 @@ class SceneFrame:
         """
         the FrameMotion of F relative to W
         """
+    @property
+    def terms(self) -> tuple:
+        """
+        the fictitious terms that act, a tuple of names among 'origin', 'euler', 'centrifugal', 'coriolis' (in that order): compile adds them as 'frame.<name>' (FrameOriginForce, EulerForce, CentrifugalForce, CoriolisForce)
+        """
 class MassFlow:
     """
     The mass flow of a body (Scene.add_body(body, mass_flow=...)): its mass changes at the rate
@@ -1949,6 +1960,8 @@ class MassFlow:
     Callables are called with the GIL taken, at each derivative evaluation; an exception they raise stops the run
     and propagates; a non-finite value raises ValueError naming mass_flows[i].rate or inertia_rule. A mass reaching
     zero raises ValueError naming mass_flows[i] and the step (for a constant rate, before the run: naming steps, dt).
+    The kinetic energy the flow takes away or brings at the body's own velocity, 1/2 (dm/dt) |v|^2 + 1/2 w.(dI/dt) w
+    integrated, is SceneResult.mass_flow_energy: kinetic_energy - kinetic_energy[0] ~ work + mass-flow energy.
     Immutable; pickles (callables defined at module level); == compares rate and inertia_rule.
     """
     __hash__: typing.ClassVar[None] = None
@@ -2102,9 +2115,13 @@ class SceneResult:
     mass unpinned), in W [kg m^2/s]; mass (n, nb) [kg]. kinetic_energy (relative to W), potential_energy (the sum
     of the elements' potentials, and the centrifugal one of a frame turning at a constant rate: total_energy is
     then the Jacobi integral), total_energy (n,) [J]; linear_momentum_W (n, 3) [kg m/s]; angular_momentum_W (n, 3) about W's origin [kg m^2/s];
-    work (n, ne) each element's work since t0 [J] and power (n, ne) its power at the record [W] (integrated by
-    the run's method: kinetic_energy - kinetic_energy[0] ~ work.sum(axis=1)); the columns are the scene's elements
-    then the frame's fictitious terms that act (CentrifugalForce, CoriolisForce, ...); body_names (nb,) and
+    work (n, ne) each element's work since t0 [J] and power (n, ne) its power at the record [W]; the columns are
+    the scene's elements then the frame's fictitious terms that act (CentrifugalForce, CoriolisForce, ...);
+    mass_flow_energy (n, nb) each body's mass-flow energy since t0 [J]: the integral of 1/2 (dm/dt) |v|^2 +
+    1/2 w.(dI/dt) w, the kinetic energy its mass flow takes away or brings at its own velocity (0 for a constant
+    mass). Work-energy balance, integrated by the run's method (to its error):
+    kinetic_energy - kinetic_energy[0] ~ work.sum(axis=1) + mass_flow_energy.sum(axis=1)
+    (without a MassFlow the last sum is 0: the work alone); body_names (nb,) and
     elements (ne,) (each column's class name) label the axes; diverged, unconverged_steps, elapsed_seconds as in
     SimulationResult.
     """
@@ -2116,7 +2133,7 @@ class SceneResult:
         ...
     def to_dataframe(self, scalar_first: typing.Any = False) -> typing.Any:
         """
-        A pandas.DataFrame of the records (needs pandas): one row per record, one column per scalar with its unit (wide format; rigiddyn.scene_result documents the columns): 't [s]', then per body '<name>:p_W_x [m]' .. '<name>:q_WB_x' .. '<name>:v_W_x [m/s]' .. '<name>:w_B_x [rad/s]' .., then 'kinetic_energy [J]', 'potential_energy [J]', 'total_energy [J]', 'linear_momentum_W_x [kg m/s]' .., 'angular_momentum_W_x [kg m^2/s]' .., then per element i 'work[i] <Class> [J]' and 'power[i] <Class> [W]'. scalar_first=True for a result of simulate(..., scalar_first=True).
+        A pandas.DataFrame of the records (needs pandas): one row per record, one column per scalar with its unit (wide format; rigiddyn.scene_result documents the columns): 't [s]', then per body '<name>:p_W_x [m]' .. '<name>:q_WB_x' .. '<name>:v_W_x [m/s]' .. '<name>:w_B_x [rad/s]' .. through '<name>:mass [kg]' and '<name>:mass_flow_energy [J]', then 'kinetic_energy [J]', 'potential_energy [J]', 'total_energy [J]', 'linear_momentum_W_x [kg m/s]' .., 'angular_momentum_W_x [kg m^2/s]' .., then per element i 'work[i] <Class> [J]' and 'power[i] <Class> [W]'. scalar_first=True for a result of simulate(..., scalar_first=True).
         """
     @property
     def angular_momentum_O_W(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -2162,6 +2179,11 @@ class SceneResult:
     def mass(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         (n, nb) each body's mass [kg] (changing under a MassFlow)
+        """
+    @property
+    def mass_flow_energy(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (n, nb) each body's mass-flow energy since t0 [J]: the integral of 1/2 (dm/dt) |v|^2 + 1/2 w.(dI/dt) w (0 for a constant mass); kinetic_energy - kinetic_energy[0] ~ work.sum(axis=1) + mass_flow_energy.sum(axis=1)
         """
     @property
     def p_W(self) -> numpy.typing.NDArray[numpy.float64]:
