@@ -2459,7 +2459,8 @@ class BatchSceneResult:
     The records of simulate_batch over scenes: the arrays of SceneResult with a leading sample axis (N samples, n
     records, nb bodies, ne work columns), read-only: t (N, n) [s]; p_W, v_W, w_B, pivot_reaction_W,
     angular_momentum_O_W (N, n, nb, 3); q_WB (N, n, nb, 4); kinetic_energy, potential_energy, total_energy (N, n)
-    [J]; linear_momentum_W, angular_momentum_W (N, n, 3); mass (N, n, nb) [kg]; work, power (N, n, ne) [J], [W];
+    [J]; linear_momentum_W, angular_momentum_W (N, n, 3); mass, mass_flow_energy (N, n, nb) [kg], [J]; work, power
+    (N, n, ne) [J], [W];
     body_names and elements (the first scene's labels of the axes); diverged (N,) bool; filled (N,) rows filled per
     sample (the rest NaN); unconverged_steps (N,); elapsed_seconds: wall time of the batch [s]. Frames and units as
     SceneResult. len(result) is N; result[i] is sample i as a SceneResult (its filled rows, copies); pickles.
@@ -2527,6 +2528,11 @@ class BatchSceneResult:
     def mass(self) -> numpy.ndarray:
         """
         (N, n, nb) each body's mass [kg]
+        """
+    @property
+    def mass_flow_energy(self) -> numpy.ndarray:
+        """
+        (N, n, nb) each body's mass-flow energy since t0 [J] (0 for a constant mass)
         """
     @property
     def p_W(self) -> numpy.ndarray:

@@ -23,9 +23,9 @@
 // Φ2 is symmetric and of order 2 and the triple jump of it of order 4 (Hairer, Lubich & Wanner, GNI II.4). The
 // adjacent M of neighbouring sub-steps merge (exact flows); the kicks do not (M moves the mass between them), so
 // a step is M · kick · free · kick · M · kick · free · kick · M · kick · free · kick · M: 6 kicks, and the model's
-// project (the attitudes normalised; the next step's start noted for the out-of-mass message). The masses
-// meet the M parts in the order of the cumulative sums of their coefficients, γ1/2, γ1 + γ0/2, γ1 + γ0 + γ1/2,
-// 1 = 0.676, 0.5, 0.324, 1: for a constant rate every mass the step meets lies between those at its ends.
+// project (the attitudes normalised; the next step's start noted for the out-of-mass message). After each M the
+// masses are those at the cumulative sums of the M coefficients, the fractions γ1/2, γ1 + γ0/2, 3γ1/2 + γ0, 1 =
+// 0.676, 0.5, 0.324, 1 of the step: for a constant rate every mass the step meets lies between those at its ends.
 // Moving the masses with the kicks' coefficients instead would keep the order only with kicks that integrate the
 // changing mass exactly; clamping the free part's times into the step leaves the loads a trapezoidal rule
 // (order 2).
