@@ -207,6 +207,7 @@ const SceneColumn scene_columns[] = {
     {"mass", &BatchSceneSimulation::mass, &SceneResult::mass, {-1}},
     {"work", &BatchSceneSimulation::work, &SceneResult::work, {-2}},
     {"power", &BatchSceneSimulation::power, &SceneResult::power, {-2}},
+    {"mass_flow_energy", &BatchSceneSimulation::mass_flow_energy, &SceneResult::mass_flow_energy, {-1}},
 };
 constexpr std::size_t scene_column_count = sizeof(scene_columns) / sizeof(scene_columns[0]);
 
@@ -861,7 +862,8 @@ const char* const batch_scene_result_doc = R"doc(
 The records of simulate_batch over scenes: the arrays of SceneResult with a leading sample axis (N samples, n
 records, nb bodies, ne work columns), read-only: t (N, n) [s]; p_W, v_W, w_B, pivot_reaction_W,
 angular_momentum_O_W (N, n, nb, 3); q_WB (N, n, nb, 4); kinetic_energy, potential_energy, total_energy (N, n)
-[J]; linear_momentum_W, angular_momentum_W (N, n, 3); mass (N, n, nb) [kg]; work, power (N, n, ne) [J], [W];
+[J]; linear_momentum_W, angular_momentum_W (N, n, 3); mass, mass_flow_energy (N, n, nb) [kg], [J]; work, power
+(N, n, ne) [J], [W];
 body_names and elements (the first scene's labels of the axes); diverged (N,) bool; filled (N,) rows filled per
 sample (the rest NaN); unconverged_steps (N,); elapsed_seconds: wall time of the batch [s]. Frames and units as
 SceneResult. len(result) is N; result[i] is sample i as a SceneResult (its filled rows, copies); pickles.
@@ -921,7 +923,8 @@ void bind_batch(py::module_& m) {
         "(N, n, nb, 3) each body's angular momentum about its pivot (its centre of mass unpinned), in W [kg m^2/s]",
         "(N, n, nb) each body's mass [kg]",
         "(N, n, ne) each element's work since t0 [J]",
-        "(N, n, ne) each element's power at the record [W]"};
+        "(N, n, ne) each element's power at the record [W]",
+        "(N, n, nb) each body's mass-flow energy since t0 [J] (0 for a constant mass)"};
     scene.def_property_readonly(scene_columns[k].name, [k](const BatchSceneResult& r) { return r.arrays[k]; }, docs[k]);
   }
   scene.def_readonly("body_names", &BatchSceneResult::body_names, "(nb,) tuple of the bodies' names")

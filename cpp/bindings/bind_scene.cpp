@@ -258,6 +258,7 @@ SceneResult to_scene_result(SceneSimulation&& r, const Scene& scene, const Compi
   const auto nb = static_cast<py::ssize_t>(scene.bodies.size());
   const auto ne = static_cast<py::ssize_t>(compiled.element_types().size());
   if (scalar_first) to_scalar_first(r.q_WB);
+  if (r.mass_flow_energy.empty()) r.mass_flow_energy.assign(r.mass.size(), 0.0);  // no mass flow: all 0
   return SceneResult{adopt(std::move(r.t), {n}),
                      adopt(std::move(r.p_W), {n, nb, 3}),
                      adopt(std::move(r.q_WB), {n, nb, 4}),
@@ -273,6 +274,7 @@ SceneResult to_scene_result(SceneSimulation&& r, const Scene& scene, const Compi
                      adopt(std::move(r.mass), {n, nb}),
                      adopt(std::move(r.work), {n, ne}),
                      adopt(std::move(r.power), {n, ne}),
+                     adopt(std::move(r.mass_flow_energy), {n, nb}),
                      names_tuple(scene),
                      element_kinds(compiled),
                      r.diverged,
@@ -304,6 +306,7 @@ const ResultArray result_arrays[] = {
     {"mass", &SceneResult::mass, {-1}},
     {"work", &SceneResult::work, {-2}},
     {"power", &SceneResult::power, {-2}},
+    {"mass_flow_energy", &SceneResult::mass_flow_energy, {-1}},
 };
 constexpr std::size_t result_array_count = sizeof(result_arrays) / sizeof(result_arrays[0]);
 
@@ -418,9 +421,13 @@ body in W [N] (0 unpinned); angular_momentum_O_W (n, nb, 3) each body's about it
 mass unpinned), in W [kg m^2/s]; mass (n, nb) [kg]. kinetic_energy (relative to W), potential_energy (the sum
 of the elements' potentials, and the centrifugal one of a frame turning at a constant rate: total_energy is
 then the Jacobi integral), total_energy (n,) [J]; linear_momentum_W (n, 3) [kg m/s]; angular_momentum_W (n, 3) about W's origin [kg m^2/s];
-work (n, ne) each element's work since t0 [J] and power (n, ne) its power at the record [W] (integrated by
-the run's method: kinetic_energy - kinetic_energy[0] ~ work.sum(axis=1)); the columns are the scene's elements
-then the frame's fictitious terms that act (CentrifugalForce, CoriolisForce, ...); body_names (nb,) and
+work (n, ne) each element's work since t0 [J] and power (n, ne) its power at the record [W]; the columns are
+the scene's elements then the frame's fictitious terms that act (CentrifugalForce, CoriolisForce, ...);
+mass_flow_energy (n, nb) each body's mass-flow energy since t0 [J]: the integral of 1/2 (dm/dt) |v|^2 +
+1/2 w.(dI/dt) w, the kinetic energy its mass flow takes away or brings at its own velocity (0 for a constant
+mass). Work-energy balance, integrated by the run's method (to its error):
+kinetic_energy - kinetic_energy[0] ~ work.sum(axis=1) + mass_flow_energy.sum(axis=1)
+(without a MassFlow the last sum is 0: the work alone); body_names (nb,) and
 elements (ne,) (each column's class name) label the axes; diverged, unconverged_steps, elapsed_seconds as in
 SimulationResult.
 )doc";
@@ -651,6 +658,10 @@ void bind_scene(py::module_& m) {
       .def_readonly("mass", &SceneResult::mass, "(n, nb) each body's mass [kg] (changing under a MassFlow)")
       .def_readonly("work", &SceneResult::work, "(n, ne) each element's work since t0 [J]")
       .def_readonly("power", &SceneResult::power, "(n, ne) each element's power at the record [W]")
+      .def_readonly("mass_flow_energy", &SceneResult::mass_flow_energy,
+                    "(n, nb) each body's mass-flow energy since t0 [J]: the integral of 1/2 (dm/dt) |v|^2 + 1/2 "
+                    "w.(dI/dt) w (0 for a constant mass); kinetic_energy - kinetic_energy[0] ~ work.sum(axis=1) + "
+                    "mass_flow_energy.sum(axis=1)")
       .def_readonly("body_names", &SceneResult::body_names, "(nb,) tuple of the bodies' names")
       .def_readonly("elements", &SceneResult::elements,
                     "(ne,) tuple of the elements' class names, then the frame's fictitious terms' ('CentrifugalForce', "
@@ -671,7 +682,8 @@ void bind_scene(py::module_& m) {
           py::arg("scalar_first") = py::none(),
           "A pandas.DataFrame of the records (needs pandas): one row per record, one column per scalar with its "
           "unit (wide format; rigiddyn.scene_result documents the columns): 't [s]', then per body "
-          "'<name>:p_W_x [m]' .. '<name>:q_WB_x' .. '<name>:v_W_x [m/s]' .. '<name>:w_B_x [rad/s]' .., then "
+          "'<name>:p_W_x [m]' .. '<name>:q_WB_x' .. '<name>:v_W_x [m/s]' .. '<name>:w_B_x [rad/s]' .. through "
+          "'<name>:mass [kg]' and '<name>:mass_flow_energy [J]', then "
           "'kinetic_energy [J]', 'potential_energy [J]', 'total_energy [J]', 'linear_momentum_W_x [kg m/s]' .., "
           "'angular_momentum_W_x [kg m^2/s]' .., then per element i 'work[i] <Class> [J]' and 'power[i] <Class> "
           "[W]'; q_WB's columns in the result's order ('<name>:q_WB_w' first when its scalar_first is True). "

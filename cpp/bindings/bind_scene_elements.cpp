@@ -320,6 +320,7 @@ const ElementClass<FunctionForce> python_force{
      {"bodies", "None (every body) or a tuple of the indices of the bodies it acts on"}},
     [](const py::tuple& v) {
       FunctionForce e;
+      e.type_name = "PythonForce";  // this class's name, in records and messages (compile's element_type_name)
       e.f = PythonForceCall(py_io::as_callable(v[0], "fn", "a callable fn(t, body, p_W, q_WB, v_W, w_B) -> (f_W, tau_B)"));
       e.bodies = as_body_list(v[1], "bodies");
       return e;

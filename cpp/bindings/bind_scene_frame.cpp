@@ -46,14 +46,46 @@ std::string callable_text(const py::object& f) {
 
 // ------------------------------------------------------------ the scene frame
 
+// The names of the fictitious terms, in their order ("origin", "euler", "centrifugal", "coriolis")
+constexpr const char* term_names[] = {"origin", "euler", "centrifugal", "coriolis"};
+constexpr bool FictitiousTerms::*term_members[] = {&FictitiousTerms::origin, &FictitiousTerms::euler,
+                                                   &FictitiousTerms::centrifugal, &FictitiousTerms::coriolis};
+
+// The terms as a tuple of their names, in order
+py::tuple terms_tuple(const FictitiousTerms& terms) {
+  py::list out;
+  for (int k = 0; k < 4; ++k) {
+    if (terms.*term_members[k]) out.append(term_names[k]);
+  }
+  return py::tuple(out);
+}
+
+// A collection of term names (any order) as FictitiousTerms: TypeError naming `terms` for a str or a non-iterable,
+// ValueError for an unknown or repeated name.
+FictitiousTerms as_terms(py::handle obj) {
+  constexpr const char* expected = "a collection of the names 'origin', 'euler', 'centrifugal', 'coriolis'";
+  if (py::isinstance<py::str>(obj) || !py::isinstance<py::iterable>(obj)) py_io::throw_type_error("terms", expected, obj);
+  FictitiousTerms terms;
+  for (const py::handle item : obj) {
+    const std::string name = py::isinstance<py::str>(item) ? item.cast<std::string>() : std::string();
+    int k = 0;
+    while (k < 4 && name != term_names[k]) ++k;
+    if (k == 4 || terms.*term_members[k]) {
+      py_io::throw_value_error("terms", std::string(expected) + ", each once", py::repr(obj).cast<std::string>());
+    }
+    terms.*term_members[k] = true;
+  }
+  return terms;
+}
+
 // How a SceneFrame reads as a constructor call: ("rotating", axis, rate), ("earth", latitude) or ("moving",
-// motion). A constant rotation about a fixed origin, F = W at t = 0, is rotating (earth when its axis and rate
-// are those of SceneFrame::earth at some latitude, bit for bit).
+// motion, terms) (terms: the tuple of the terms that act). A constant rotation about a fixed origin, F = W at t = 0,
+// is rotating (earth when its axis and rate are those of SceneFrame::earth at some latitude, bit for bit).
 py::tuple frame_state(const SceneFrame& frame) {
   const auto* rotation = frame.motion.function().target<ConstantRotation>();
   const bool simple = rotation && frame.constant_rotation && rotation->R_PF0 == Eigen::Matrix3d::Identity() &&
                       rotation->p_PF_P.isZero(0.0);
-  if (!simple) return py::make_tuple("moving", py::cast(frame.motion));
+  if (!simple) return py::make_tuple("moving", py::cast(frame.motion), terms_tuple(frame.terms));
   if (rotation->rate == earth_rotation_rate && rotation->axis_P.x() == 0.0 && rotation->axis_P.y() >= 0.0) {
     // the latitude whose (0, cos, sin) is the axis bit for bit: atan2's, or one of its nearest neighbours
     double latitude = std::atan2(rotation->axis_P.z(), rotation->axis_P.y());
@@ -73,10 +105,12 @@ SceneFrame frame_from_state(const py::tuple& s) {
     return SceneFrame::rotating(py_io::as_vector3(s[1], "axis"), py_io::as_scalar(s[2], "rate"));
   }
   if (kind == "earth" && s.size() == 2) return SceneFrame::earth(py_io::as_scalar(s[1], "latitude"));
-  if (kind == "moving" && s.size() == 2) {
-    return SceneFrame::moving(py_io::as_instance<FrameMotion>(s[1], "frame_motion", "a FrameMotion"));
+  if (kind == "moving" && (s.size() == 2 || s.size() == 3)) {
+    FrameMotion motion = py_io::as_instance<FrameMotion>(s[1], "frame_motion", "a FrameMotion");
+    return s.size() == 2 ? SceneFrame::moving(std::move(motion)) : SceneFrame::moving(std::move(motion), as_terms(s[2]));
   }
-  py_io::throw_value_error("SceneFrame pickle", "('rotating', axis, rate), ('earth', latitude) or ('moving', motion)",
+  py_io::throw_value_error("SceneFrame pickle",
+                           "('rotating', axis, rate), ('earth', latitude) or ('moving', motion[, terms])",
                            py::repr(s).cast<std::string>());
 }
 
@@ -97,7 +131,9 @@ std::string frame_repr(const SceneFrame& frame) {
   const std::string kind = s[0].cast<std::string>();
   if (kind == "rotating") return repr_call("SceneFrame.rotating", {{"axis", s[1]}, {"rate", s[2]}});
   if (kind == "earth") return repr_call("SceneFrame.earth", {{"latitude", s[1]}});
-  return "SceneFrame.moving(frame_motion=" + motion_text(s[1]) + ")";
+  const bool declared = frame.terms != SceneFrame::moving(frame.motion).terms;  // not the motion's own
+  return "SceneFrame.moving(frame_motion=" + motion_text(s[1]) +
+         (declared ? ", terms=" + py::repr(s[2]).cast<std::string>() : std::string()) + ")";
 }
 
 const char* const scene_frame_doc = R"doc(
@@ -107,13 +143,19 @@ W itself). Build it with
                                     in F and in W) through its origin, fixed at W's origin; F = W at t = 0;
   SceneFrame.earth(latitude)        the local frame (x east, y north, z up) at `latitude` [rad] on the turning
                                     Earth: Omega = 7.2921159e-5 rad/s about (0, cos(latitude), sin(latitude));
-  SceneFrame.moving(frame_motion)   any motion of F relative to W, a FrameMotion (a Python kinematics_at(t) is
-                                    called with the GIL taken, at each derivative evaluation).
+  SceneFrame.moving(frame_motion, terms=None)
+                                    any motion of F relative to W, a FrameMotion (a Python kinematics_at(t) is
+                                    called with the GIL taken, at each derivative evaluation); terms: the
+                                    fictitious terms that act, when the motion leaves some identically zero.
 Each physical argument: a float [its unit] or a pint quantity. Newton's and Euler's laws seen from F gain the
 fictitious terms ("Rigid body kinematics and dynamics" notes, eqs. (4.39)-(4.40)): frame origin -m a_O, Euler
 -m alpha x r, centrifugal -m Omega x (Omega x r), Coriolis -2 m Omega x v (and their torques on bodies with an
-attitude); compiling a scene adds those that act as elements "FrameOriginForce", "EulerForce",
-"CentrifugalForce", "CoriolisForce" after the scene's own (columns of SceneResult.work and power). Every
+attitude); compiling a scene adds those that act (SceneFrame.terms) as elements "FrameOriginForce", "EulerForce",
+"CentrifugalForce", "CoriolisForce" after the scene's own (columns of SceneResult.work and power): the centrifugal
+and Coriolis ones for rotating and earth (none at rate 0), none for a FrameMotion.fixed placement, every term
+for a general motion unless `terms` names those that act (a motion turning at a constant rate has no Euler term,
+one whose origin does not accelerate no origin term; each evaluation of the motion then checks that the values
+of the terms left out are zero, else ValueError naming `frame`). Every
 element, state and record of the scene is then in F. A motion function returning a non-finite value raises
 ValueError naming `frame`; an exception it raises propagates out of simulate. Immutable; pickles (a
 FrameMotion of a module-level function); == compares how it was built.
@@ -142,15 +184,26 @@ void bind_frame_class(py::module_& m) {
           "taken as fixed (the centripetal acceleration of the ground is part of the local gravity, a UniformGravity).")
       .def_static(
           "moving",
-          [](py::handle frame_motion) {
-            return SceneFrame::moving(py_io::as_instance<FrameMotion>(frame_motion, "frame_motion", "a FrameMotion"));
+          [](py::handle frame_motion, py::handle terms) {
+            FrameMotion motion = py_io::as_instance<FrameMotion>(frame_motion, "frame_motion", "a FrameMotion");
+            return terms.is_none() ? SceneFrame::moving(std::move(motion)) : SceneFrame::moving(std::move(motion), as_terms(terms));
           },
-          py::arg("frame_motion"),
+          py::arg("frame_motion"), py::arg("terms") = py::none(),
           "F moving relative to W as the FrameMotion `frame_motion` gives (P = W: R_WF, angular velocity and "
-          "acceleration, origin position, velocity and acceleration, all in W); every fictitious term may act.")
+          "acceleration, origin position, velocity and acceleration, all in W). terms: None (a FrameMotion.fixed "
+          "placement: none; a FrameMotion.constant_rotation: 'centrifugal' and 'coriolis'; any other motion: every "
+          "term) or the names of the fictitious terms that act, among 'origin' (a_O not identically 0), 'euler' "
+          "(alpha), 'centrifugal' and 'coriolis' (Omega: both or neither; 'euler' only with them); compile adds "
+          "those alone, and each evaluation of the motion checks that the values of the others are zero "
+          "(ValueError naming `frame` at that t). ValueError naming `terms` for a set that cannot be, or another "
+          "set than a fixed placement's or a constant rotation's own.")
       .def_property_readonly("motion", [](const SceneFrame& f) { return f.motion; }, "the FrameMotion of F relative to W")
       .def_property_readonly("constant_rotation", [](const SceneFrame& f) { return f.constant_rotation; },
                              "True when F turns at a constant rate about its fixed origin (rotating, earth)")
+      .def_property_readonly("terms", [](const SceneFrame& f) { return terms_tuple(f.terms); },
+                             "the fictitious terms that act, a tuple of names among 'origin', 'euler', 'centrifugal', "
+                             "'coriolis' (in that order): compile adds them as 'frame.<name>' (FrameOriginForce, "
+                             "EulerForce, CentrifugalForce, CoriolisForce)")
       .def("__repr__", &frame_repr)
       .def(py::pickle(&frame_state, &frame_from_state))
       .def(
@@ -265,6 +318,8 @@ u_rel). The mass leaving carries its own angular momentum (no jet damping): I(m)
 Callables are called with the GIL taken, at each derivative evaluation; an exception they raise stops the run
 and propagates; a non-finite value raises ValueError naming mass_flows[i].rate or inertia_rule. A mass reaching
 zero raises ValueError naming mass_flows[i] and the step (for a constant rate, before the run: naming steps, dt).
+The kinetic energy the flow takes away or brings at the body's own velocity, 1/2 (dm/dt) |v|^2 + 1/2 w.(dI/dt) w
+integrated, is SceneResult.mass_flow_energy: kinetic_energy - kinetic_energy[0] ~ work + mass-flow energy.
 Immutable; pickles (callables defined at module level); == compares rate and inertia_rule.
 )doc";
 

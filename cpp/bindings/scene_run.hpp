@@ -28,7 +28,7 @@ void bind_scene_frame(pybind11::module_& m);
 // simulate's records of a scene (rigiddyn.SceneResult; its docstring in bind_scene.cpp).
 struct SceneResult {
   py_io::Array t, p_W, q_WB, v_W, w_B, kinetic_energy, potential_energy, total_energy, linear_momentum_W,
-      angular_momentum_W, pivot_reaction_W, angular_momentum_O_W, mass, work, power;
+      angular_momentum_W, pivot_reaction_W, angular_momentum_O_W, mass, work, power, mass_flow_energy;
   pybind11::tuple body_names, elements;
   bool diverged;
   std::int64_t unconverged_steps;

@@ -1890,13 +1890,19 @@ class SceneFrame:
                                         in F and in W) through its origin, fixed at W's origin; F = W at t = 0;
       SceneFrame.earth(latitude)        the local frame (x east, y north, z up) at `latitude` [rad] on the turning
                                         Earth: Omega = 7.2921159e-5 rad/s about (0, cos(latitude), sin(latitude));
-      SceneFrame.moving(frame_motion)   any motion of F relative to W, a FrameMotion (a Python kinematics_at(t) is
-                                        called with the GIL taken, at each derivative evaluation).
+      SceneFrame.moving(frame_motion, terms=None)
+                                        any motion of F relative to W, a FrameMotion (a Python kinematics_at(t) is
+                                        called with the GIL taken, at each derivative evaluation); terms: the
+                                        fictitious terms that act, when the motion leaves some identically zero.
     Each physical argument: a float [its unit] or a pint quantity. Newton's and Euler's laws seen from F gain the
     fictitious terms ("Rigid body kinematics and dynamics" notes, eqs. (4.39)-(4.40)): frame origin -m a_O, Euler
     -m alpha x r, centrifugal -m Omega x (Omega x r), Coriolis -2 m Omega x v (and their torques on bodies with an
-    attitude); compiling a scene adds those that act as elements "FrameOriginForce", "EulerForce",
-    "CentrifugalForce", "CoriolisForce" after the scene's own (columns of SceneResult.work and power). Every
+    attitude); compiling a scene adds those that act (SceneFrame.terms) as elements "FrameOriginForce", "EulerForce",
+    "CentrifugalForce", "CoriolisForce" after the scene's own (columns of SceneResult.work and power): the centrifugal
+    and Coriolis ones for rotating and earth (none at rate 0), none for a FrameMotion.fixed placement, every term
+    for a general motion unless `terms` names those that act (a motion turning at a constant rate has no Euler term,
+    one whose origin does not accelerate no origin term; each evaluation of the motion then checks that the values
+    of the terms left out are zero, else ValueError naming `frame`). Every
     element, state and record of the scene is then in F. A motion function returning a non-finite value raises
     ValueError naming `frame`; an exception it raises propagates out of simulate. Immutable; pickles (a
     FrameMotion of a module-level function); == compares how it was built.
@@ -1908,9 +1914,9 @@ class SceneFrame:
         The local frame at `latitude` [rad] in [-pi/2, pi/2] (a pint angle: '48.85 deg') on the turning Earth: x east, y north, z up, Omega = 7.2921159e-5 rad/s about (0, cos(latitude), sin(latitude)); its origin is taken as fixed (the centripetal acceleration of the ground is part of the local gravity, a UniformGravity).
         """
     @staticmethod
-    def moving(frame_motion: typing.Any) -> SceneFrame:
+    def moving(frame_motion: typing.Any, terms: typing.Any = None) -> SceneFrame:
         """
-        F moving relative to W as the FrameMotion `frame_motion` gives (P = W: R_WF, angular velocity and acceleration, origin position, velocity and acceleration, all in W); every fictitious term may act.
+        F moving relative to W as the FrameMotion `frame_motion` gives (P = W: R_WF, angular velocity and acceleration, origin position, velocity and acceleration, all in W). terms: None (a FrameMotion.fixed placement: none; a FrameMotion.constant_rotation: 'centrifugal' and 'coriolis'; any other motion: every term) or the names of the fictitious terms that act, among 'origin' (a_O not identically 0), 'euler' (alpha), 'centrifugal' and 'coriolis' (Omega: both or neither; 'euler' only with them); compile adds those alone, and each evaluation of the motion checks that the values of the others are zero (ValueError naming `frame` at that t). ValueError naming `terms` for a set that cannot be, or another set than a fixed placement's or a constant rotation's own.
         """
     @staticmethod
     def rotating(axis: typing.Any, rate: typing.Any) -> SceneFrame:
@@ -1935,6 +1941,11 @@ class SceneFrame:
         """
         the FrameMotion of F relative to W
         """
+    @property
+    def terms(self) -> tuple:
+        """
+        the fictitious terms that act, a tuple of names among 'origin', 'euler', 'centrifugal', 'coriolis' (in that order): compile adds them as 'frame.<name>' (FrameOriginForce, EulerForce, CentrifugalForce, CoriolisForce)
+        """
 class MassFlow:
     """
     The mass flow of a body (Scene.add_body(body, mass_flow=...)): its mass changes at the rate
@@ -1949,6 +1960,8 @@ class MassFlow:
     Callables are called with the GIL taken, at each derivative evaluation; an exception they raise stops the run
     and propagates; a non-finite value raises ValueError naming mass_flows[i].rate or inertia_rule. A mass reaching
     zero raises ValueError naming mass_flows[i] and the step (for a constant rate, before the run: naming steps, dt).
+    The kinetic energy the flow takes away or brings at the body's own velocity, 1/2 (dm/dt) |v|^2 + 1/2 w.(dI/dt) w
+    integrated, is SceneResult.mass_flow_energy: kinetic_energy - kinetic_energy[0] ~ work + mass-flow energy.
     Immutable; pickles (callables defined at module level); == compares rate and inertia_rule.
     """
     __hash__: typing.ClassVar[None] = None
@@ -2102,9 +2115,13 @@ class SceneResult:
     mass unpinned), in W [kg m^2/s]; mass (n, nb) [kg]. kinetic_energy (relative to W), potential_energy (the sum
     of the elements' potentials, and the centrifugal one of a frame turning at a constant rate: total_energy is
     then the Jacobi integral), total_energy (n,) [J]; linear_momentum_W (n, 3) [kg m/s]; angular_momentum_W (n, 3) about W's origin [kg m^2/s];
-    work (n, ne) each element's work since t0 [J] and power (n, ne) its power at the record [W] (integrated by
-    the run's method: kinetic_energy - kinetic_energy[0] ~ work.sum(axis=1)); the columns are the scene's elements
-    then the frame's fictitious terms that act (CentrifugalForce, CoriolisForce, ...); body_names (nb,) and
+    work (n, ne) each element's work since t0 [J] and power (n, ne) its power at the record [W]; the columns are
+    the scene's elements then the frame's fictitious terms that act (CentrifugalForce, CoriolisForce, ...);
+    mass_flow_energy (n, nb) each body's mass-flow energy since t0 [J]: the integral of 1/2 (dm/dt) |v|^2 +
+    1/2 w.(dI/dt) w, the kinetic energy its mass flow takes away or brings at its own velocity (0 for a constant
+    mass). Work-energy balance, integrated by the run's method (to its error):
+    kinetic_energy - kinetic_energy[0] ~ work.sum(axis=1) + mass_flow_energy.sum(axis=1)
+    (without a MassFlow the last sum is 0: the work alone); body_names (nb,) and
     elements (ne,) (each column's class name) label the axes; diverged, unconverged_steps, elapsed_seconds as in
     SimulationResult.
     """
@@ -2114,9 +2131,9 @@ class SceneResult:
         ...
     def __setstate__(self, arg0: tuple) -> None:
         ...
-    def to_dataframe(self, scalar_first: typing.Any = None) -> typing.Any:
+    def to_dataframe(self, scalar_first: typing.Any = False) -> typing.Any:
         """
-        A pandas.DataFrame of the records (needs pandas): one row per record, one column per scalar with its unit (wide format; rigiddyn.scene_result documents the columns): 't [s]', then per body '<name>:p_W_x [m]' .. '<name>:q_WB_x' .. '<name>:v_W_x [m/s]' .. '<name>:w_B_x [rad/s]' .., then 'kinetic_energy [J]', 'potential_energy [J]', 'total_energy [J]', 'linear_momentum_W_x [kg m/s]' .., 'angular_momentum_W_x [kg m^2/s]' .., then per element i 'work[i] <Class> [J]' and 'power[i] <Class> [W]'; q_WB's columns in the result's order ('<name>:q_WB_w' first when its scalar_first is True). scalar_first: None (the default) for the order the result records; True or False declares the order of its q_WB rows instead.
+        A pandas.DataFrame of the records (needs pandas): one row per record, one column per scalar with its unit (wide format; rigiddyn.scene_result documents the columns): 't [s]', then per body '<name>:p_W_x [m]' .. '<name>:q_WB_x' .. '<name>:v_W_x [m/s]' .. '<name>:w_B_x [rad/s]' .. through '<name>:mass [kg]' and '<name>:mass_flow_energy [J]', then 'kinetic_energy [J]', 'potential_energy [J]', 'total_energy [J]', 'linear_momentum_W_x [kg m/s]' .., 'angular_momentum_W_x [kg m^2/s]' .., then per element i 'work[i] <Class> [J]' and 'power[i] <Class> [W]'. scalar_first=True for a result of simulate(..., scalar_first=True).
         """
     @property
     def angular_momentum_O_W(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -2164,6 +2181,11 @@ class SceneResult:
         (n, nb) each body's mass [kg] (changing under a MassFlow)
         """
     @property
+    def mass_flow_energy(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (n, nb) each body's mass-flow energy since t0 [J]: the integral of 1/2 (dm/dt) |v|^2 + 1/2 w.(dI/dt) w (0 for a constant mass); kinetic_energy - kinetic_energy[0] ~ work.sum(axis=1) + mass_flow_energy.sum(axis=1)
+        """
+    @property
     def p_W(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         (n, nb, 3) centre of mass positions in W [m]
@@ -2187,11 +2209,6 @@ class SceneResult:
     def q_WB(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         (n, nb, 4) attitudes, (x, y, z, w) unless scalar_first
-        """
-    @property
-    def scalar_first(self) -> bool:
-        """
-        True if q_WB's rows are (w, x, y, z): the result of simulate(..., scalar_first=True)
         """
     @property
     def t(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -2273,9 +2290,9 @@ class SimulationResult:
         ...
     def __setstate__(self, arg0: tuple) -> None:
         ...
-    def to_dataframe(self, scalar_first: typing.Any = None) -> typing.Any:
+    def to_dataframe(self, scalar_first: typing.Any = False) -> typing.Any:
         """
-        A pandas.DataFrame of the records (needs pandas: pip install 'rigiddyn[dataframe]'): one row per record, one column per scalar with its unit, as the CSV of `python -m rigiddyn simulate`: 't [s]' (a column, not the index), 'p_W_x [m]' .. 'q_WB_x' .. 'q_WB_w', 'v_W_x [m/s]' .., 'w_B_x [rad/s]' .., 'kinetic_energy [J]', 'total_energy [J]', 'angular_momentum_norm [kg m^2/s]', 'quaternion_norm_error', 'work [J]'; q_WB's columns in the result's order ('q_WB_w' first when its scalar_first is True). scalar_first: None (the default) for the order the result records; True or False declares the order of its q_WB rows instead.
+        A pandas.DataFrame of the records (needs pandas: pip install 'rigiddyn[dataframe]'): one row per record, one column per scalar with its unit, as the CSV of `python -m rigiddyn simulate`: 't [s]' (a column, not the index), 'p_W_x [m]' .. 'q_WB_x' .. 'q_WB_w', 'v_W_x [m/s]' .., 'w_B_x [rad/s]' .., 'kinetic_energy [J]', 'total_energy [J]', 'angular_momentum_norm [kg m^2/s]', 'quaternion_norm_error', 'work [J]'. scalar_first=True for a result of simulate(..., scalar_first=True) (q_WB as (w, x, y, z); the result does not record it).
         """
     @property
     def angular_momentum_norm(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -2311,11 +2328,6 @@ class SimulationResult:
     def quaternion_norm_error(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         (n,) |q| - 1
-        """
-    @property
-    def scalar_first(self) -> bool:
-        """
-        True if q_WB's rows are (w, x, y, z): the result of simulate(..., scalar_first=True)
         """
     @property
     def t(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -2447,7 +2459,8 @@ class BatchSceneResult:
     The records of simulate_batch over scenes: the arrays of SceneResult with a leading sample axis (N samples, n
     records, nb bodies, ne work columns), read-only: t (N, n) [s]; p_W, v_W, w_B, pivot_reaction_W,
     angular_momentum_O_W (N, n, nb, 3); q_WB (N, n, nb, 4); kinetic_energy, potential_energy, total_energy (N, n)
-    [J]; linear_momentum_W, angular_momentum_W (N, n, 3); mass (N, n, nb) [kg]; work, power (N, n, ne) [J], [W];
+    [J]; linear_momentum_W, angular_momentum_W (N, n, 3); mass, mass_flow_energy (N, n, nb) [kg], [J]; work, power
+    (N, n, ne) [J], [W];
     body_names and elements (the first scene's labels of the axes); diverged (N,) bool; filled (N,) rows filled per
     sample (the rest NaN); unconverged_steps (N,); elapsed_seconds: wall time of the batch [s]. Frames and units as
     SceneResult. len(result) is N; result[i] is sample i as a SceneResult (its filled rows, copies); pickles.
@@ -2515,6 +2528,11 @@ class BatchSceneResult:
     def mass(self) -> numpy.ndarray:
         """
         (N, n, nb) each body's mass [kg]
+        """
+    @property
+    def mass_flow_energy(self) -> numpy.ndarray:
+        """
+        (N, n, nb) each body's mass-flow energy since t0 [J] (0 for a constant mass)
         """
     @property
     def p_W(self) -> numpy.ndarray:
@@ -3460,8 +3478,8 @@ def simulate(model: typing.Any, initial: typing.Any, dt: typing.Any, steps: typi
       keeps its order; records stay at t0 + i dt. gravity: None/False (the default: none), True
       ((0, 0, -9.81) m/s^2 in W) or a 3-vector [m/s^2] in W. t0: initial time [s]. scalar_first: quaternions
       as (w, x, y, z).
-    progress: None or a callable(steps_done), called with the GIL after the first step and then about every
-      0.05 s of a long run, however long a step takes; an exception it raises stops the run and propagates.
+    progress: None or a callable(steps_done), called with the GIL about every 0.05 s of a long run; an
+      exception it raises stops the run and propagates.
     
     Returns a SimulationResult, arrays with one row per record (n records): t (n,) [s]; p_W (n, 3) [m];
     q_WB (n, 4) (x, y, z, w); v_W (n, 3) [m/s]; w_B (n, 3) [rad/s]; kinetic_energy (n,) [J];
@@ -3470,12 +3488,10 @@ def simulate(model: typing.Any, initial: typing.Any, dt: typing.Any, steps: typi
     same method (kinetic_energy - kinetic_energy[0] ~ work); diverged; unconverged_steps (implicit solves that
     hit their iteration cap); elapsed_seconds (C++ loop wall time).
     A particle records q = identity, w = 0; a planar body p = (x, y, 0), q = Rz(theta), w = (0, 0, omega).
-    Warns RuntimeWarning and stops if the state becomes non-finite; warns RuntimeWarning naming the quantities
-    and their first times if a recorded quantity is not finite although the state is (an overflow, e.g. the
-    kinetic energy of |v_W| > 1e154 m/s); warns RuntimeWarning (naming dt and the count) if an implicit solve
-    did not converge. Ctrl-C stops the run within about 0.05 s however long a step takes (a step under way is
-    finished first) with KeyboardInterrupt (no result is kept). ValueError names a bad argument, also a
-    recording larger than the memory available (record_every, with both figures).
+    Warns RuntimeWarning and stops if the state becomes non-finite; warns RuntimeWarning (naming dt and the
+    count) if an implicit solve did not converge. Ctrl-C stops the run within about 0.05 s with
+    KeyboardInterrupt (no result is kept). ValueError names a bad argument, also a recording larger than the
+    memory available (record_every, with both figures).
     """
 def simulate_batch(model: typing.Any, initial: typing.Any, dt: typing.Any, steps: typing.Any, method: typing.Any = None, record_every: typing.Any = 1, loads: typing.Any = None, gravity: typing.Any = None, t0: typing.Any = 0.0, threads: typing.Any = None, simd: typing.Any = False, scalar_first: typing.Any = False, progress: typing.Any = None) -> BatchResult | BatchSceneResult:
     """
@@ -3501,21 +3517,17 @@ def simulate_batch(model: typing.Any, initial: typing.Any, dt: typing.Any, steps
     threads: None (the default: every hardware thread) or an int >= 1.
     simd: True runs the SIMD path across samples (RigidBody, method 'rk4', constant loads: a force in W and a
       torque in B without time window): equal to the scalar path up to round-off, not bitwise.
-    progress: None or a callable(samples_done), called with the GIL from the calling thread once before the samples
-      start and then about every 0.05 s; an exception it raises stops every sample and propagates. Ctrl-C stops every sample within about 0.05 s however
-      long a step takes (the steps under way are finished first) and raises KeyboardInterrupt (no result is kept).
+    progress: None or a callable(samples_done), called with the GIL about every 0.05 s from the calling thread; an
+      exception it raises stops every sample and propagates. Ctrl-C stops every sample within about 0.05 s of a
+      sample's monitor check and raises KeyboardInterrupt (no result is kept).
     
     Returns a BatchResult (bodies) or a BatchSceneResult (scenes): the arrays of SimulationResult / SceneResult
     with a leading sample axis (N, n, ...). A sample whose state becomes non-finite stops alone: diverged[i] is
     True, filled[i] its rows, the rest of its rows NaN; one RuntimeWarning names how many samples diverged and
-    the first few; another names the samples whose recorded quantities became non-finite although their state
-    stayed finite (an overflow, e.g. a kinetic energy of |v_W| > 1e154 m/s), each quantity with its first time.
-    Input errors (N = 0, mismatched N between model, initial, dt, gravity and loads, a wrong dict key or shape,
-    threads < 1) raise ValueError/TypeError naming the argument before any sample runs; an error of one sample (a
-    bad state, a body running out of mass) raises ValueError "sample <i>: ..." for the lowest such sample, after
-    every sample has run. An exception raised by a PythonForce (or its wrong return value) stops every sample
-    within about 0.05 s and is raised, its message prefixed "sample <i>: " (the first sample that raised; a
-    KeyboardInterrupt as it is).
+    the first few. Input errors (N = 0, mismatched N between model, initial, dt, gravity and loads, a wrong dict
+    key or shape, threads < 1) raise ValueError/TypeError naming the argument before any sample runs; an error of
+    one sample (a bad state, a body running out of mass) raises ValueError "sample <i>: ..." for the lowest such
+    sample, after every sample has run.
     """
 def slerp(q0: typing.Any, q1: typing.Any, t: typing.Any, scalar_first: typing.Any = False, canonical: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """

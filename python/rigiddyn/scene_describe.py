@@ -64,14 +64,12 @@ def frame_rotation(frame: Any) -> tuple[np.ndarray, float] | None:
 
 
 def frame_terms_of(frame: Any) -> list[str]:
-    """The names of the fictitious terms compile adds for `frame` (None: none): a constant rotation about
-    a fixed origin adds frame.centrifugal and frame.coriolis (none at rate 0); a general motion every term."""
+    """The names of the fictitious terms compile adds for `frame` (None: none), SceneFrame.terms as
+    'frame.<term>': a constant rotation about a fixed origin adds frame.centrifugal and frame.coriolis (none at
+    rate 0); a general motion every term, or those SceneFrame.moving(..., terms=...) declares."""
     if frame is None:
         return []
-    rotation = frame_rotation(frame)
-    if rotation is None:
-        return [name for name, _, _ in _FICTITIOUS]
-    return ["frame.centrifugal", "frame.coriolis"] if rotation[1] != 0.0 else []
+    return [f"frame.{term}" for term in frame.terms]
 
 
 def _frame_line(frame: Any) -> str:
@@ -81,7 +79,8 @@ def _frame_line(frame: Any) -> str:
     rotation = frame_rotation(frame)
     if rotation is None:
         return ("Frame: F, moving relative to the inertial W (a general SceneFrame.moving: angular velocity, "
-                "angular acceleration and origin acceleration from its FrameMotion); states relative to F")
+                "angular acceleration and origin acceleration from its FrameMotion; terms that act: "
+                f"{', '.join(frame.terms) or 'none'}); states relative to F")
     axis, rate = rotation
     u = axis / np.linalg.norm(axis)
     state = frame.__getstate__()  # ("earth", latitude) for SceneFrame.earth

@@ -4,6 +4,7 @@ dimensionless columns carry no unit)::
 
     t [s] | sat:p_W_x [m] ... | sat:q_WB_x ... sat:q_WB_w | sat:v_W_x [m/s] ... | sat:w_B_x [rad/s] ... |
     sat:pivot_reaction_W_x [N] ... | sat:angular_momentum_O_W_x [kg m^2/s] ... | sat:mass [kg] |
+    sat:mass_flow_energy [J] |
     (the same for every body, in the scene's order) |
     kinetic_energy [J] | potential_energy [J] | total_energy [J] |
     linear_momentum_W_x [kg m/s] ... | angular_momentum_W_x [kg m^2/s] ... |
@@ -17,7 +18,9 @@ and ``df.filter(like="sat:")`` selects one body.
 "W" is the scene frame (F when the scene has a moving frame: states relative to it). Per body:
 pivot_reaction_W is the pivot's force on a pinned body (0 for an unpinned one), angular_momentum_O_W
 the angular momentum about the pivot O (about the centre of mass for an unpinned body), mass the body's
-mass at the record (it changes with a MassFlow).
+mass at the record (it changes with a MassFlow), mass_flow_energy the kinetic energy its mass flow has taken
+away or brought since t0 (0 for a constant mass): the work–energy balance reads
+``kinetic_energy − kinetic_energy[0] ≈ Σ work[i] + Σ <body>:mass_flow_energy``.
 """
 
 from __future__ import annotations
@@ -37,6 +40,7 @@ BODY_FIELDS: dict[str, tuple[str, str | None]] = {
     "pivot_reaction_W": ("xyz", "N"),
     "angular_momentum_O_W": ("xyz", "kg m^2/s"),
     "mass": ("", "kg"),
+    "mass_flow_energy": ("", "J"),
 }
 # scene-wide attribute -> (components or None for a scalar, unit)
 SCENE_FIELDS: dict[str, tuple[str | None, str]] = {

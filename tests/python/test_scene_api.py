@@ -227,7 +227,8 @@ def test_to_dataframe_is_one_row_per_record_with_each_body_s_columns():
     np.testing.assert_array_equal(df["dot:p_W_x [m]"], r.p_W[:, 0, 0])
     np.testing.assert_array_equal(df["work[0] UniformGravity [J]"], r.work[:, 0])
     np.testing.assert_array_equal(df["angular_momentum_W_z [kg m^2/s]"], r.angular_momentum_W[:, 2])
-    assert len(df.columns) == 1 + 2 * (13 + 7) + 3 + 6 + 2  # per body: state 13, reaction 3, H_O 3, mass
+    # per body: state 13, reaction 3, H_O 3, mass, mass-flow energy
+    assert len(df.columns) == 1 + 2 * (13 + 8) + 3 + 6 + 2
 
 
 @pytest.mark.parametrize("method", ["rk4", "splitting_dlm", "implicit_midpoint"])

@@ -72,7 +72,7 @@ BatchSceneSimulation empty_scene_batch(std::size_t samples, std::size_t records,
   b.kinetic_energy = b.potential_energy = b.total_energy = b.t;
   b.linear_momentum_W = nans(samples, records, 3);
   b.angular_momentum_W = b.linear_momentum_W;
-  b.mass = nans(samples, records, nb);
+  b.mass = b.mass_flow_energy = nans(samples, records, nb);
   b.work = nans(samples, records, ne);
   b.power = b.work;
   b.filled.assign(samples, 0);
@@ -106,6 +106,11 @@ void put_sample(BatchSceneSimulation& batch, std::size_t i, const SceneSimulatio
   copy_rows(batch.mass, i, n, nb, run.mass, rows);
   copy_rows(batch.work, i, n, ne, run.work, rows);
   copy_rows(batch.power, i, n, ne, run.power, rows);
+  if (run.mass_flow_energy.empty()) {  // no body with a mass flow: every value 0 (scene_simulation.hpp)
+    std::fill_n(batch.mass_flow_energy.begin() + static_cast<std::ptrdiff_t>(i * n * nb), rows * nb, 0.0);
+  } else {
+    copy_rows(batch.mass_flow_energy, i, n, nb, run.mass_flow_energy, rows);
+  }
   batch.filled[i] = static_cast<std::int64_t>(rows);
   batch.diverged[i] = run.diverged ? 1 : 0;
   batch.unconverged_steps[i] = run.unconverged_steps;

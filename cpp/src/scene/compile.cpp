@@ -160,6 +160,7 @@ std::string element_type_name(const Element& element) {
                                       "SpringDamper",   "Drag",             "ScheduledLoads", "FunctionForce",
                                       "Thrust"};
   static_assert(std::variant_size_v<Element> == sizeof names / sizeof names[0], "a name per element type");
+  if (const auto* f = std::get_if<FunctionForce>(&element)) return f->type_name;  // the name its maker gave it
   return names[element.index()];
 }
 
@@ -266,17 +267,7 @@ void check_scene(const Scene& scene, Method method) {
   }
 }
 
-FrameTermSet frame_term_set(const Scene& scene) {
-  FrameTermSet set;
-  if (!scene.frame) return set;
-  if (scene.frame->constant_rotation) {
-    const bool turning = !frame_terms(*scene.frame, 0.0).w_F.isZero(0.0);
-    set.centrifugal = set.coriolis = turning;
-  } else {
-    set.origin = set.euler = set.centrifugal = set.coriolis = true;
-  }
-  return set;
-}
+FrameTermSet frame_term_set(const Scene& scene) { return scene.frame ? scene.frame->terms : FrameTermSet{}; }
 
 std::vector<std::string> body_names_of(const Scene& scene) {
   std::vector<std::string> names;

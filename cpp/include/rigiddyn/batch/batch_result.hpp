@@ -62,6 +62,7 @@ struct BatchSceneSimulation {
   std::vector<double> mass;                   // (N, n, nb) [kg]
   std::vector<double> work;                   // (N, n, ne) each element's work since t0 [J]
   std::vector<double> power;                  // (N, n, ne) each element's power [W]
+  std::vector<double> mass_flow_energy;       // (N, n, nb) each body's mass-flow energy since t0 [J]
   std::vector<std::int64_t> filled;           // (N,) rows filled per sample (n unless it stopped early)
   std::vector<std::uint8_t> diverged;         // (N,) 1 where the sample's state became non-finite
   std::vector<std::int64_t> unconverged_steps;  // (N,)

@@ -26,7 +26,7 @@ namespace rigiddyn {
 // exact, "one torque-free body, no element").
 std::string scene_features(Method method);
 
-// The name of an element spec's type in messages ("UniformGravity", ...).
+// The name of an element spec's type in messages and records ("UniformGravity", ...; a FunctionForce's type_name).
 std::string element_type_name(const Element& element);
 
 // The one-body plan: today's simulate(body, state, options) with gravity_W and loads taken from the
@@ -109,10 +109,9 @@ namespace detail {
 
 // The fictitious terms of the scene's frame that are not identically zero, in the order frame.origin,
 // frame.euler, frame.centrifugal, frame.coriolis: none without a frame (or for a frame at rest); the
-// centrifugal and Coriolis terms for a constant rotation; all four for a general motion.
-struct FrameTermSet {
-  bool origin = false, euler = false, centrifugal = false, coriolis = false;
-};
+// centrifugal and Coriolis terms for a constant rotation; those the frame declares for a general motion (every
+// term unless SceneFrame::moving was told otherwise).
+using FrameTermSet = FictitiousTerms;
 FrameTermSet frame_term_set(const Scene& scene);
 
 // The compiled terms of the scene's elements, named "elements[i]" in their messages, then the frame's

@@ -89,6 +89,16 @@ inline double mass_rate(const MassFlow& flow, double t, const std::string& name 
 Eigen::Matrix3d inertia_at_mass(const MassFlow& flow, const Eigen::Matrix3d& inertia_com0, double m0, double m,
                                 const std::string& name = "mass_flow");
 
+// dI_C/dm [m²] at the mass m [kg], in B, for a body whose mass changes at the rate `rate` [kg/s] (not 0):
+//   InertiaRule::scaled    I_C0 / m0 (exact);
+//   InertiaRule::function  the one-sided difference of second order toward the masses the body reaches (the sign
+//                          of the rate), (−3 I(m) + 4 I(m + δ) − I(m + 2δ)) / (2δ) with δ = ±2⁻¹⁷ m: truncation
+//                          δ² |d³I/dm³|/3, round-off about 4 ε |I| / |δ| (~3e-11 |I|/m); every I checked by
+//                          inertia_at_mass (its message names `name`).
+// With it the mass-flow power ½ ω·(dI/dt) ω = ½ ṁ ω·(dI/dm) ω (scene_model.hpp).
+Eigen::Matrix3d inertia_mass_derivative(const MassFlow& flow, const Eigen::Matrix3d& inertia_com0, double m0, double m,
+                                        double rate, const std::string& name = "mass_flow");
+
 // The torque scale m0/m of InertiaRule::scaled (see the top of this file): with it, Euler's equations of
 // the constant inertia I_C0, α_B = I_C0⁻¹ (torque_scale(m0, m) τ − ω × I_C0 ω), are those of I_C0 m/m0.
 inline double torque_scale(double m0, double m) { return m0 / m; }
@@ -108,10 +118,29 @@ std::invalid_argument out_of_mass_error(const std::string& name, const std::stri
 [[noreturn]] void throw_out_of_mass(const std::string& name, const std::string& body_name, double m, double t,
                                     double step_start);
 
-// The up-front check of a run with a constant rate: the body of mass m0 [kg] at t0 [s], stepped `steps`
-// times by dt [s]. Throws out_of_mass_error for the first grid step whose end mass m0 + ṁ (t − t0) is not
-// positive, followed by "; steps, dt: expected a run that ends before the mass runs out at t = <t_out> s
-// (at most <k> steps of dt = <dt> s), got <steps> steps". Nothing for a rate_of_t (checked as it runs).
+// The round-off of a mass accumulated over a run, per step, relative to the initial mass: every method moves
+// the mass by a few increments per step (RK4's stages: one sum h/6 (ṁ + 2ṁ + 2ṁ + ṁ); Yoshida's four mass
+// parts), each rounding once relative to the mass and a few times relative to h |ṁ| ≤ m0/steps, so that after
+// k steps the mass is within 16 ε k m0 of m0 + ṁ k dt (ε the machine epsilon).
+inline constexpr double mass_roundoff_per_step = 16.0 * std::numeric_limits<double>::epsilon();
+
+// The up-front check of a run with a constant rate ṁ < 0: the body of mass m0 [kg] at t0 [s], stepped `steps`
+// times by dt [s]. A run is accepted when its end mass stays above the round-off of its accumulation,
+//   m0 + ṁ steps dt > mass_roundoff_per_step steps m0,
+// so that no method meets a mass m <= 0 at any evaluation of it (every stage and sub-step mass of every
+// method lies between the masses at the ends of its step, splitting_dlm_yoshida4's included:
+// integrators/yoshida4.hpp). Otherwise throws std::invalid_argument:
+//   - when the first step already empties the body (dt longer than the time the mass lasts):
+//     "<name>: expected a positive mass, got a body that is empty within the first step: '<body_name>' (m =
+//     <m0> kg at t = <t0> s, dm/dt = <ṁ> kg/s) runs out at t = <t_out> s, before the step of dt = <dt> s ends;
+//     steps, dt: expected dt < <(1 − 16 ε) m0/(−ṁ)> s (the time the mass lasts, less 16 eps of it), got dt =
+//     <dt> s";
+//   - else, for the first grid step k whose end mass m = m0 + ṁ k dt fails the test, out_of_mass_error when
+//     m <= 0, or "<name>: expected a mass above the round-off of its accumulation (16 eps k m0 = <r> kg), got
+//     m = <m> kg at t = ... s (the body ... runs out of mass in the step from t = ... s)" when m is positive
+//     but within it, followed by "; steps, dt: expected a run that ends before the mass runs out at t =
+//     <t_out> s (at most <k − 1> steps of dt = <dt> s), got <steps> steps".
+// Nothing for ṁ >= 0 or a rate_of_t (checked as it runs).
 void check_mass_over_run(const MassFlow& flow, double m0, double t0, double dt, std::int64_t steps,
                          const std::string& name, const std::string& body_name);
 

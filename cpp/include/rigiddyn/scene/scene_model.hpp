@@ -9,9 +9,20 @@
 //   pivoted planar (θ, ω)
 // and, right after its own, the mass m [kg] of a particle or rigid body with a MassFlow (scene/mass_flow.hpp;
 // tangent ṁ); then t [s] (so that every method evaluates time-dependent forces at its own stage times), then one
-// work slot per element [J] (its work since t0, integrated with the motion: dW_e/dt = P_e).
+// work slot per element [J] (its work since t0, integrated with the motion: dW_e/dt = P_e), then one mass-flow
+// energy slot per body with a MassFlow, in the scene's order [J] (dE_b/dt = the mass-flow power below).
 // Tangent ξ: per body (particle v_W, a_W; planar the 6 rates; rigid v_W, w_B, a_W, alpha_B; pivoted
-// w_B, alpha_B; pivoted planar ω, α), then dt/dt = 1, then each element's power [W].
+// w_B, alpha_B; pivoted planar ω, α), then dt/dt = 1, then each element's power [W], then each mass-flow power [W].
+//
+// The work–energy balance with a mass flow. T = ½ m |v|² + ½ ω·I ω changes with the mass as well as with the work:
+// m v̇ = f and I ω̇ + ω × I ω = τ (mass_flow.hpp) give
+//   dT/dt = Σ_e P_e + ½ ṁ |v|² + ½ ω·(dI/dt) ω,     dI/dt = ṁ dI/dm (I_C0 ṁ/m0 under InertiaRule::scaled),
+// the last two terms the mass-flow power of the body: the kinetic energy, at the body's own velocity, of the
+// mass that leaves (ṁ < 0) or joins it. Its integral, the mass-flow energy E_b, is integrated with the motion as
+// the works are, so that T − T(0) = Σ_e W_e + Σ_b E_b holds to the method's error on every run. Where a method
+// moves the masses alone (drift, free_flow, mass_part: v and ω fixed), E_b takes the exact change of T there,
+// ½ Δm |v|² + ½ ω·(I(m + Δm) − I(m)) ω; the kicks keep the masses (no E_b), and the splittings then close the
+// balance to round-off but for the free rotation's own energy error (none with ExactRotation).
 // "W" is the scene frame: in a moving frame F the states are relative to F and the model is the same
 // (the compiled fictitious terms, scene/elements/fictitious_forces.hpp, add the frame's forces).
 //
@@ -120,6 +131,7 @@ struct MassCoordinate {
   MassFlow flow;
   double m0;
   std::string flow_name, body_name;  // "mass_flows[i]", the body's name
+  Eigen::Index energy;               // its mass-flow energy's rank among the bodies with a MassFlow
 };
 // A particle with a MassFlow: y (p_W 3, v_W 3, m), ξ (v_W 3, a_W 3, ṁ).
 struct MassParticleSlot {
@@ -295,10 +307,13 @@ class BasicSceneModel {
     find_coriolis_terms(bodies);
   }
 
-  Eigen::Index coordinate_count() const { return t_y_ + 1 + static_cast<Eigen::Index>(terms_.size()); }
-  Eigen::Index tangent_count() const { return t_xi_ + 1 + static_cast<Eigen::Index>(terms_.size()); }
+  Eigen::Index coordinate_count() const { return t_y_ + 1 + extra_count(); }
+  Eigen::Index tangent_count() const { return t_xi_ + 1 + extra_count(); }
   Eigen::Index time_index() const { return t_y_; }  // where t [s] is in y
   Eigen::Index work_index(std::size_t element) const { return t_y_ + 1 + static_cast<Eigen::Index>(element); }
+  // True when a body's mass changes (a MassFlow): then the model has a mass part (mass_part) for the splittings'
+  // three-part form (integrators/yoshida4.hpp)
+  bool has_mass_flow() const { return !energy_body_.empty(); }
   std::size_t body_count() const { return kinematics_.size(); }
   std::size_t element_count() const { return terms_.size(); }
   const std::vector<Term>& terms() const { return terms_; }
@@ -316,7 +331,8 @@ class BasicSceneModel {
     }
   }
 
-  // ẏ: (v, a) per body, q̇ = ½ q ⊗ (ω_B, 0) for attitudes, dt/dt = 1, dW_e/dt = P_e.
+  // ẏ: (v, a) per body, q̇ = ½ q ⊗ (ω_B, 0) for attitudes, dt/dt = 1, dW_e/dt = P_e, dE_b/dt = the mass-flow
+  // power of body b.
   Coordinates rate(const Coordinates& y) const {
     evaluate(y);
     Coordinates dy(y.size());
@@ -346,6 +362,7 @@ class BasicSceneModel {
       const Eigen::Vector3d a = wrenches_[s.body].f_W / kinematics_[s.body].m;  // m v̇ = f (thrust included)
       for (int i = 0; i < 3; ++i) dy[s.y + i] = y[s.y + 3 + i], dy[s.y + 3 + i] = a[i];
       dy[s.mass.m_y] = mass_rate_at(s.mass, y);
+      dy[energy_y(s.mass)] = mass_flow_power(s, y, dy[s.mass.m_y]);
     }
     for_each_mass_rigid([&](const auto& s) {
       const Eigen::Vector3d w = detail::three_at(y, s.y + 10);
@@ -354,6 +371,7 @@ class BasicSceneModel {
       for (int i = 0; i < 3; ++i) dy[s.y + i] = y[s.y + 7 + i], dy[s.y + 7 + i] = a[i], dy[s.y + 10 + i] = alpha[i];
       quat_rate_body(y.data() + s.y + 3, w, dy.data() + s.y + 3);
       dy[s.mass.m_y] = mass_rate_at(s.mass, y);
+      dy[energy_y(s.mass)] = mass_flow_power(s, y, dy[s.mass.m_y]);
     });
     dy[t_y_] = 1.0;
     for (std::size_t e = 0; e < terms_.size(); ++e) dy[t_y_ + 1 + e] = power_[e];
@@ -368,7 +386,7 @@ class BasicSceneModel {
     step_start_ = y[t_y_];  // the methods that end with project: the next step starts here
   }
 
-  // ξ = (velocities, accelerations per body; 1; element powers)
+  // ξ = (velocities, accelerations per body; 1; element powers; mass-flow powers)
   Tangent velocity(const Coordinates& y) const {
     evaluate(y);
     Tangent xi(tangent_count());
@@ -398,6 +416,7 @@ class BasicSceneModel {
       const Eigen::Vector3d a = wrenches_[s.body].f_W / kinematics_[s.body].m;
       for (int i = 0; i < 3; ++i) xi[s.xi + i] = y[s.y + 3 + i], xi[s.xi + 3 + i] = a[i];
       xi[s.mass.m_xi] = mass_rate_at(s.mass, y);
+      xi[energy_xi(s.mass)] = mass_flow_power(s, y, xi[s.mass.m_xi]);
     }
     for_each_mass_rigid([&](const auto& s) {
       const Eigen::Vector3d w = detail::three_at(y, s.y + 10);
@@ -407,6 +426,7 @@ class BasicSceneModel {
         xi[s.xi + i] = y[s.y + 7 + i], xi[s.xi + 3 + i] = w[i], xi[s.xi + 6 + i] = a[i], xi[s.xi + 9 + i] = alpha[i];
       }
       xi[s.mass.m_xi] = mass_rate_at(s.mass, y);
+      xi[energy_xi(s.mass)] = mass_flow_power(s, y, xi[s.mass.m_xi]);
     });
     xi[t_xi_] = 1.0;
     for (std::size_t e = 0; e < terms_.size(); ++e) xi[t_xi_ + 1 + e] = power_[e];
@@ -434,7 +454,7 @@ class BasicSceneModel {
       times_exp(y.data() + s.y + 3, detail::three_at(theta, s.xi + 3), out.data() + s.y + 3);
       for (int i = 0; i < 7; ++i) out[s.y + 7 + i] = y[s.y + 7 + i] + theta[s.xi + 6 + i];  // v, ω, m
     });
-    for (Eigen::Index i = 0; i <= static_cast<Eigen::Index>(terms_.size()); ++i) out[t_y_ + i] = y[t_y_ + i] + theta[t_xi_ + i];
+    for (Eigen::Index i = 0; i <= extra_count(); ++i) out[t_y_ + i] = y[t_y_ + i] + theta[t_xi_ + i];
     return out;
   }
 
@@ -464,7 +484,8 @@ class BasicSceneModel {
     kick_with(y, h, [](const auto& euler, const auto& w, const auto& tau, double k) { return euler.implicit_gyroscopic_kick(w, tau, k); });
   }
 
-  // work_e += h P_e at y; then p += h v, q ← q ⊗ exp(h ω_B) (exact for constant ω), θ += h ω, t += h
+  // work_e += h P_e at y; then p += h v, q ← q ⊗ exp(h ω_B) (exact for constant ω), θ += h ω, m += h ṁ (and
+  // E_b with it: advance_masses), t += h
   void drift(Coordinates& y, double h) const {
     evaluate(y);
     for (std::size_t e = 0; e < terms_.size(); ++e) y[t_y_ + 1 + e] += h * power_[e];
@@ -507,6 +528,38 @@ class BasicSceneModel {
   // body's own FreeRotationFlow), t += h; no work (no load acts in this part).
   template <class Rotation>
   void free_flow(Coordinates& y, double h) const {
+    free_motion<Rotation>(y, h);
+    advance_masses(y, h);
+    y[t_y_] += h;
+    step_start_ = y[t_y_];
+  }
+
+  // The free part at fixed masses (free_flow without advance_masses): p, attitudes and ω_B, t += h. With mass_part,
+  // the three parts of the splittings' form that keeps the masses inside each step (integrators/yoshida4.hpp,
+  // which ends its step with project).
+  template <class Rotation>
+  void free_flow_at_fixed_mass(Coordinates& y, double h) const {
+    free_motion<Rotation>(y, h);
+    y[t_y_] += h;
+  }
+
+  // The masses' part over h [s] at the time t of y, which it keeps: m += h ṁ(t) for each body with a MassFlow (the
+  // exact flow of ṁ at a frozen t), E_b with it (advance_masses' exact change of T); positions, velocities,
+  // attitudes and works unchanged. The out-of-mass error (mass_flow.hpp) when a mass is no longer positive, in
+  // the step from the last project (or the run's start).
+  void mass_part(Coordinates& y, double h) const {
+    const double t = y[t_y_];
+    const auto move = [&](const auto& s) {
+      const double rate = has_constant_rate(s.mass.flow) ? s.mass.flow.rate : mass_rate(s.mass.flow, t, s.mass.flow_name);
+      change_mass(s, y, h * rate, t, step_start_);
+    };
+    for (const auto& s : mass_particles_) move(s);
+    for_each_mass_rigid(move);
+  }
+
+  // p += h v, θ += h ω, each rigid body's attitude and ω_B by the flow Rotation (free_flow); masses and t unchanged
+  template <class Rotation>
+  void free_motion(Coordinates& y, double h) const {
     translate(y, h);
     for (const auto& s : planars_) y[s.y + 2] += h * y[s.y + 5];
     for_each_rigid([&](const auto& s) {
@@ -525,13 +578,10 @@ class BasicSceneModel {
     });
     for (const auto& s : pivoted_planars_) y[s.y] += h * y[s.y + 1];
     for_each_mass_rigid([&](const auto& s) { mass_free_rotation(Rotation{}, s, y, h); });
-    advance_masses(y, h);
-    y[t_y_] += h;
-    step_start_ = y[t_y_];
   }
 
   // Appends the record of y at time t [s] to `out` (scene_simulation.hpp): the bodies, energies,
-  // momenta, each element's work and power.
+  // momenta, each element's work and power, and (when a body has a MassFlow) each body's mass-flow energy.
   void record(const Coordinates& y, double t, SceneSimulation& out) const {
     evaluate(y);
     out.t.push_back(t);
@@ -613,9 +663,15 @@ class BasicSceneModel {
     out.angular_momentum_W.insert(out.angular_momentum_W.end(), H_W.data(), H_W.data() + 3);
     for (std::size_t e = 0; e < terms_.size(); ++e) out.work.push_back(y[t_y_ + 1 + e]);
     out.power.insert(out.power.end(), power_.begin(), power_.end());
+    if (has_mass_flow()) {
+      const std::size_t first = out.mass_flow_energy.size();
+      out.mass_flow_energy.resize(first + kinematics_.size(), 0.0);
+      for (std::size_t k = 0; k < energy_body_.size(); ++k) out.mass_flow_energy[first + energy_body_[k]] = y[energy_y(k)];
+    }
   }
 
-  // y of the bodies' states (each of its body's kind, checked by the caller) at time t [s], work 0
+  // y of the bodies' states (each of its body's kind, checked by the caller) at time t [s], works and mass-flow
+  // energies 0
   Coordinates coordinates(const std::vector<BodyState>& states, double t) const {
     Coordinates y = Coordinates::Zero(coordinate_count());
     for (const auto& s : particles_) {
@@ -872,13 +928,15 @@ class BasicSceneModel {
   void add_mass_slot(const Body& body, int b, const MassFlow& flow, const std::string& body_name, Eigen::Index& y,
                      Eigen::Index& xi) {
     const std::string flow_name = "mass_flows[" + std::to_string(b) + "]";
+    const auto energy = static_cast<Eigen::Index>(energy_body_.size());
+    energy_body_.push_back(b);
     if (const auto* p = std::get_if<Particle>(&body)) {
-      mass_particles_.push_back({b, y, xi, {y + 6, xi + 6, flow, p->mass(), flow_name, body_name}});
+      mass_particles_.push_back({b, y, xi, {y + 6, xi + 6, flow, p->mass(), flow_name, body_name, energy}});
       y += 7, xi += 7;
       return;
     }
     const RigidBody& r = std::get<RigidBody>(body);
-    const detail::MassCoordinate mass{y + 13, xi + 12, flow, r.mass(), flow_name, body_name};
+    const detail::MassCoordinate mass{y + 13, xi + 12, flow, r.mass(), flow_name, body_name, energy};
     if (flow.inertia_rule == InertiaRule::function) {
       std::get<std::vector<detail::FunctionRigidSlot>>(mass_rigid_).push_back({b, y, xi, mass, r.inertia_com()});
     } else {
@@ -904,17 +962,73 @@ class BasicSceneModel {
   }
 
   // The masses over the free part of a splitting (t → t + h, t of y): m += h ṁ, exact for a constant rate,
-  // the midpoint rule h ṁ(t + h/2) for a rate of t (second order, as the compositions); the out-of-mass
-  // error when a mass is no longer positive
+  // the midpoint rule h ṁ(t + h/2) for a rate of t (second order, as the compositions), E_b with them
+  // (change_mass); the out-of-mass error when a mass is no longer positive
   void advance_masses(Coordinates& y, double h) const {
     const double t = y[t_y_];
-    const auto advance = [&](const detail::MassCoordinate& c) {
-      const double m = y[c.m_y] + h * (has_constant_rate(c.flow) ? c.flow.rate : mass_rate(c.flow, t + 0.5 * h, c.flow_name));
-      if (!(m > 0.0)) throw_out_of_mass(c.flow_name, c.body_name, m, t + h, t);
-      y[c.m_y] = m;
+    const auto advance = [&](const auto& s) {
+      const MassFlow& flow = s.mass.flow;
+      const double rate = has_constant_rate(flow) ? flow.rate : mass_rate(flow, t + 0.5 * h, s.mass.flow_name);
+      change_mass(s, y, h * rate, t + h, t);
     };
-    for (const auto& s : mass_particles_) advance(s.mass);
-    for_each_mass_rigid([&](const auto& s) { advance(s.mass); });
+    for (const auto& s : mass_particles_) advance(s);
+    for_each_mass_rigid(advance);
+  }
+
+  // m += dm for the body of slot s at fixed velocities, and E_b += the exact change of T that makes (the model's
+  // top: ½ dm |v|² + ½ ω·(I(m + dm) − I(m)) ω); the out-of-mass error (at t, in the step from step_start) when
+  // the new mass is not positive
+  template <class Slot>
+  void change_mass(const Slot& s, Coordinates& y, double dm, double t, double step_start) const {
+    const detail::MassCoordinate& c = s.mass;
+    const double m = y[c.m_y], m_new = m + dm;
+    if (!(m_new > 0.0)) throw_out_of_mass(c.flow_name, c.body_name, m_new, t, step_start);
+    y[energy_y(c)] += kinetic_energy_change(s, y, m, m_new);
+    y[c.m_y] = m_new;
+  }
+
+  // The change of T [J] when the mass goes from m to m_new [kg] at the velocities of y: ½ (m_new − m) |v|², and for
+  // a rigid body ½ ω·(I(m_new) − I(m)) ω (scaled: ½ ((m_new − m)/m0) ω·I_C0 ω)
+  double kinetic_energy_change(const detail::MassParticleSlot& s, const Coordinates& y, double m, double m_new) const {
+    return 0.5 * (m_new - m) * detail::three_at(y, s.y + 3).squaredNorm();
+  }
+  template <class Euler>
+  double kinetic_energy_change(const detail::MassRigidSlot<Euler>& s, const Coordinates& y, double m, double m_new) const {
+    const Eigen::Vector3d w = detail::three_at(y, s.y + 10);
+    return 0.5 * (m_new - m) * (detail::three_at(y, s.y + 7).squaredNorm() + w.dot(s.euler.momentum(w)) / s.mass.m0);
+  }
+  double kinetic_energy_change(const detail::FunctionRigidSlot& s, const Coordinates& y, double m, double m_new) const {
+    const Eigen::Vector3d w = detail::three_at(y, s.y + 10);
+    const Eigen::Matrix3d dI = inertia_at_mass(s.mass.flow, s.inertia_com0, s.mass.m0, m_new, s.mass.flow_name) -
+                               inertia_at_mass(s.mass.flow, s.inertia_com0, s.mass.m0, m, s.mass.flow_name);
+    return 0.5 * (m_new - m) * detail::three_at(y, s.y + 7).squaredNorm() + 0.5 * w.dot(dI * w);
+  }
+
+  // The mass-flow power [W] of a body at y with the mass rate ṁ [kg/s] (the model's top): ½ ṁ |v|², and for a rigid
+  // body ½ ṁ ω·(dI/dm) ω (inertia_mass_derivative: I_C0/m0 under the scaled rule)
+  double mass_flow_power(const detail::MassParticleSlot& s, const Coordinates& y, double rate) const {
+    return 0.5 * rate * detail::three_at(y, s.y + 3).squaredNorm();
+  }
+  template <class Euler>
+  double mass_flow_power(const detail::MassRigidSlot<Euler>& s, const Coordinates& y, double rate) const {
+    const Eigen::Vector3d w = detail::three_at(y, s.y + 10);
+    return 0.5 * rate * (detail::three_at(y, s.y + 7).squaredNorm() + w.dot(s.euler.momentum(w)) / s.mass.m0);
+  }
+  double mass_flow_power(const detail::FunctionRigidSlot& s, const Coordinates& y, double rate) const {
+    if (rate == 0.0) return 0.0;
+    const Eigen::Vector3d w = detail::three_at(y, s.y + 10);
+    const Eigen::Matrix3d dI_dm =
+        inertia_mass_derivative(s.mass.flow, s.inertia_com0, s.mass.m0, y[s.mass.m_y], rate, s.mass.flow_name);
+    return 0.5 * rate * (detail::three_at(y, s.y + 7).squaredNorm() + w.dot(dI_dm * w));
+  }
+
+  // How many slots follow t in y (and ξ): the works, then the mass-flow energies
+  Eigen::Index extra_count() const { return static_cast<Eigen::Index>(terms_.size() + energy_body_.size()); }
+  // where the k-th mass-flow energy is in y, and that of the flow c in y and ξ
+  Eigen::Index energy_y(std::size_t k) const { return t_y_ + 1 + static_cast<Eigen::Index>(terms_.size() + k); }
+  Eigen::Index energy_y(const detail::MassCoordinate& c) const { return energy_y(static_cast<std::size_t>(c.energy)); }
+  Eigen::Index energy_xi(const detail::MassCoordinate& c) const {
+    return t_xi_ + 1 + static_cast<Eigen::Index>(terms_.size()) + c.energy;
   }
 
   // Newton–Euler of a variable-mass rigid body at kinematics_ and wrenches_: m v̇ = f (mass_flow.hpp), and
@@ -1090,6 +1204,7 @@ class BasicSceneModel {
   mutable double step_start_ = std::numeric_limits<double>::quiet_NaN();
   bool has_pivoted_ = false, has_mass_rigid_ = false;  // any slot in pivoted_, mass_rigid_
   std::vector<Eigen::Index> q_y_;  // offset of each body's q_WB in y, −1 without one (for the recorder only)
+  std::vector<int> energy_body_;   // the bodies with a MassFlow, in the scene's order (their mass-flow energies')
   // scratch, sized here (an evaluation allocates nothing)
   mutable std::vector<BodyKinematics> kinematics_;
   mutable std::vector<BodyWrench> wrenches_;

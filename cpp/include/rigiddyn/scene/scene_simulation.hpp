@@ -33,6 +33,11 @@ struct SceneSimulation {
   std::vector<double> mass;               // (n, nb) each body's mass [kg]
   std::vector<double> work;               // (n, ne) each element's work since t0 [J]
   std::vector<double> power;              // (n, ne) each element's power at the record [W]
+  std::vector<double> mass_flow_energy;   // (n, nb) each body's mass-flow energy since t0 [J]: the integral of
+                                          // ½ ṁ |v|² + ½ ω·(dI/dt) ω, the kinetic energy its mass flow takes away
+                                          // or brings (0 for a constant mass), so that kinetic_energy − its first
+                                          // value = Σ work + Σ mass_flow_energy to the method's error
+                                          // (scene_model.hpp); empty when no body has a MassFlow (all 0)
   bool diverged = false;                  // the state became non-finite; the run stopped there
   bool interrupted = false;               // options.monitor returned true; the run stopped there
   std::int64_t unconverged_steps = 0;     // steps whose implicit solve stopped at its iteration cap

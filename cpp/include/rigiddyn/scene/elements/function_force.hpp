@@ -43,10 +43,13 @@ double add_callable_wrenches(const F& f, const std::vector<int>& bodies, double 
 using ForceFunction = std::function<void(double t, const BodyKinematics& body, int index, Eigen::Vector3d& f_W,
                                          Eigen::Vector3d& tau_B)>;
 
-// The spec: the user function `f` applied to `bodies` (empty: every body).
+// The spec: the user function `f` applied to `bodies` (empty: every body), and the name the element goes by in
+// records and messages (element_type_name: compile's warnings and refusals, the work and power columns' labels).
+// The Python binding sets "PythonForce", its class's name, so that a Python user meets one name everywhere.
 struct FunctionForce {
   BodyList bodies;
   ForceFunction f;
+  std::string type_name = "FunctionForce";
 };
 
 // The compiled term (scene_api.md §2).

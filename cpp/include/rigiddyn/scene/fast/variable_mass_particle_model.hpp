@@ -4,18 +4,21 @@
 // for such a scene). Fixed-size coordinates, no allocation, no visit; the same members as SceneModel
 // (scene/scene_model.hpp), so the run loop and every integrator take it unchanged.
 //
-// Coordinates y (10,): (p_W 3, v_W 3, m, t, work of gravity, work of the thrust) [m, m/s, kg, s, J, J].
-// Tangent ξ (10,): the rates of the same (a vector space: ξ = ẏ).
+// Coordinates y (11,): (p_W 3, v_W 3, m, t, work of gravity, work of the thrust, mass-flow energy) [m, m/s, kg,
+// s, J, J, J]. Tangent ξ (11,): the rates of the same (a vector space: ξ = ẏ).
 //
 // Equations ("Rigid body kinematics and dynamics" notes, eq. (4.36), f = d(m v)/dt for the particle and the
 // mass it exchanges: d(m v)/dt = m g + ṁ (v + u_rel)):
 //   ṗ = v,   m v̇ = m g + ṁ u_rel  (v̇ = g + (ṁ/m) u_rel),   ṁ = const,   ṫ = 1,
-//   dW_gravity/dt = m g·v,   dW_thrust/dt = ṁ u_rel·v.
+//   dW_gravity/dt = m g·v,   dW_thrust/dt = ṁ u_rel·v,   dE/dt = ½ ṁ |v|²,
+// E the mass-flow energy: with T = ½ m |v|², dT/dt = dW_gravity/dt + dW_thrust/dt + ½ ṁ |v|² (scene_model.hpp).
 // The mass is a position-like coordinate: it moves with t in the free part of the splitting methods
-// (free_flow, drift: m += h ṁ, exact for a constant rate) and is frozen in the kicks, which use the
-// mass at the kick's time (kick: v += h (g + ṁ u_rel / m); loads_kick: the same, the exact flow of the
-// loads part at that frozen mass, v linear in time). Strang's kick · free · kick is then a splitting of the
-// whole system into two exactly solved parts (order 2; Yoshida's triple jump order 4).
+// (free_flow, drift: m += h ṁ, exact for a constant rate, E += ½ h ṁ |v|² with it, exact at fixed v) and is
+// frozen in the kicks, which use the mass at the kick's time (kick: v += h (g + ṁ u_rel / m); loads_kick: the
+// same, the exact flow of the loads part at that frozen mass, v linear in time). Strang's kick · free · kick is
+// then a splitting of the whole system into two exactly solved parts (order 2). Yoshida's triple jump takes the
+// three-part form (mass_part, free_flow_at_fixed_mass: integrators/yoshida4.hpp), order 4, which keeps every
+// mass it meets between those at the ends of its step.
 //
 // Mass running out: the mass changes only where a (sub-)step ends (project, the last call of explicit
 // Euler, RK4, RKMK4 and the implicit midpoint rule; drift and free_flow, the parts of the kick/drift and
@@ -26,8 +29,8 @@
 // without its step raising at its end (a stage at m = 0 gives inf, replaced by the raise); the evaluations
 // themselves do not check (no per-stage branch). drift and free_flow know their step's start (t of y before
 // them); the methods that end with project have theirs from the previous project (or set_time/coordinates
-// at the start of a run), kept in the model (a run copies its model). Yoshida4's first sub-step reaches
-// t0 + 1.35 h: it raises one step early when the mass runs out in the first 0.35 h of the next step.
+// at the start of a run), kept in the model (a run copies its model). Yoshida4's mass parts keep the masses
+// between those of the step's ends (their t is that of the sub-step, which may lie outside the step).
 #pragma once
 #include "rigiddyn/always_inline.hpp"
 #include "rigiddyn/check.hpp"
@@ -49,8 +52,8 @@ namespace rigiddyn {
 
 class VariableMassParticleModel {
  public:
-  using Coordinates = Eigen::Matrix<double, 10, 1>;
-  using Tangent = Eigen::Matrix<double, 10, 1>;
+  using Coordinates = Eigen::Matrix<double, 11, 1>;
+  using Tangent = Eigen::Matrix<double, 11, 1>;
 
   // particle: its mass() is the mass at the start of a run [kg]; flow: its MassFlow (a constant rate; no
   // rate_of_t); thrust: the Thrust element on it (body 0, u_rel [m/s] in W: Frame::world, r_B = 0), at index
@@ -89,10 +92,12 @@ class VariableMassParticleModel {
     }
   }
 
-  Eigen::Index coordinate_count() const { return 10; }
-  Eigen::Index tangent_count() const { return 10; }
+  Eigen::Index coordinate_count() const { return 11; }
+  Eigen::Index tangent_count() const { return 11; }
   Eigen::Index mass_index() const { return 6; }  // where m [kg] is in y
   Eigen::Index time_index() const { return 7; }  // where t [s] is in y
+  Eigen::Index mass_flow_energy_index() const { return 10; }  // where E [J] is in y
+  bool has_mass_flow() const { return true; }  // (the model has a mass part: mass_part)
   // where element e's work is in y (gravity's or the thrust's slot; -1 for any other element, which a scene
   // on this fast path does not have)
   Eigen::Index work_index(std::size_t element) const {
@@ -110,7 +115,7 @@ class VariableMassParticleModel {
   // the out-of-mass message).
   void set_time(double t) { step_start_ = t; }
 
-  // ẏ = (v, g + ṁ u_rel/m, ṁ, 1, m g·v, ṁ u_rel·v)
+  // ẏ = (v, g + ṁ u_rel/m, ṁ, 1, m g·v, ṁ u_rel·v, ½ ṁ |v|²)
   RIGIDDYN_ALWAYS_INLINE Coordinates rate(const Coordinates& y) const {
     const double m = y[6];
     const double inverse_mass = 1.0 / m;
@@ -120,6 +125,7 @@ class VariableMassParticleModel {
     dy[7] = 1.0;
     dy[8] = m * (g_W_[0] * y[3] + g_W_[1] * y[4] + g_W_[2] * y[5]);
     dy[9] = thrust_W_[0] * y[3] + thrust_W_[1] * y[4] + thrust_W_[2] * y[5];
+    dy[10] = 0.5 * rate_ * (y[3] * y[3] + y[4] * y[4] + y[5] * y[5]);
     return dy;
   }
 
@@ -136,7 +142,7 @@ class VariableMassParticleModel {
   // y + Θ
   RIGIDDYN_ALWAYS_INLINE static Coordinates retract(const Coordinates& y, const Tangent& theta) {
     Coordinates out;
-    for (int i = 0; i < 10; ++i) out[i] = y[i] + theta[i];
+    for (int i = 0; i < 11; ++i) out[i] = y[i] + theta[i];
     return out;
   }
 
@@ -153,7 +159,7 @@ class VariableMassParticleModel {
   // no gyroscopic term: the same kick
   RIGIDDYN_ALWAYS_INLINE void kick_implicit_gyroscopic(Coordinates& y, double h) const { kick(y, h); }
 
-  // works += h × powers at y (m g·v, ṁ u_rel·v), then p += h v, m += h ṁ, t += h
+  // works += h × powers at y (m g·v, ṁ u_rel·v), then p += h v, m += h ṁ (E with it), t += h
   RIGIDDYN_ALWAYS_INLINE void drift(Coordinates& y, double h) const {
     const double m = y[6];
     y[8] += h * m * (g_W_[0] * y[3] + g_W_[1] * y[4] + g_W_[2] * y[5]);
@@ -177,16 +183,27 @@ class VariableMassParticleModel {
     return 0.0;
   }
 
-  // The free part over h [s] (no attitude: the rotation flow is not used): p += h v, m += h ṁ (exact), t += h;
-  // no work. Throws out_of_mass_error when the mass at the end is not positive.
+  // The free part over h [s] (no attitude: the rotation flow is not used): p += h v, m += h ṁ (exact; E += ½ h ṁ
+  // |v|², exact at fixed v), t += h; no work. Throws out_of_mass_error when the mass at the end is not positive.
   template <class Rotation>
   RIGIDDYN_ALWAYS_INLINE void free_flow(Coordinates& y, double h) const {
     advance_free(y, h);
   }
 
+  // The free part at fixed mass: p += h v, t += h (the three-part form of integrators/yoshida4.hpp)
+  template <class Rotation>
+  RIGIDDYN_ALWAYS_INLINE void free_flow_at_fixed_mass(Coordinates& y, double h) const {
+    for (int i = 0; i < 3; ++i) y[i] += h * y[3 + i];
+    y[7] += h;
+  }
+
+  // The mass part over h [s] at the t of y, which it keeps: m += h ṁ, E += ½ h ṁ |v|² (exact at fixed v); the
+  // out-of-mass error (in the step from the last project) when the new mass is not positive.
+  RIGIDDYN_ALWAYS_INLINE void mass_part(Coordinates& y, double h) const { change_mass(y, h * rate_, y[7], step_start_); }
+
   // Appends the record of y at time t [s] to `out` (scene_simulation.hpp): the particle (q_WB identity,
   // w_B 0), T = ½ m v·v, V = −m g·p (uniform gravity on the mass now), L = m v, H = p × m v (about W's
-  // origin), no pivot (reaction 0; H about C: 0), the mass, each element's work and power.
+  // origin), no pivot (reaction 0; H about C: 0), the mass, each element's work and power, the mass-flow energy.
   void record(const Coordinates& y, double t, SceneSimulation& out) const {
     const double m = y[6];
     const Eigen::Vector3d p(y[0], y[1], y[2]), v(y[3], y[4], y[5]);
@@ -213,10 +230,11 @@ class VariableMassParticleModel {
       out.work.push_back(i < 0 ? 0.0 : y[i]);
       out.power.push_back(i == 8 ? gravity_power : i == 9 ? thrust_power : 0.0);
     }
+    out.mass_flow_energy.push_back(y[10]);
   }
 
   // y of the particle's state at time t [s] with the mass m [kg] (finite > 0, else std::invalid_argument
-  // naming "mass"), works 0; the start of the first step for the out-of-mass message.
+  // naming "mass"), works and mass-flow energy 0; the start of the first step for the out-of-mass message.
   Coordinates coordinates(const ParticleState& state, double m, double t) const {
     if (!(std::isfinite(m) && m > 0.0)) throw_invalid("mass", "a finite mass > 0 [kg]", m);
     Coordinates y = Coordinates::Zero();
@@ -245,13 +263,21 @@ class VariableMassParticleModel {
     return m;
   }
 
-  // p += h v, m += h ṁ (exact for a constant rate), t += h; out_of_mass_error when the new mass is not
+  // p += h v, m += h ṁ (exact for a constant rate; E with it), t += h; out_of_mass_error when the new mass is not
   // positive (in the step from t of y)
   RIGIDDYN_ALWAYS_INLINE void advance_free(Coordinates& y, double h) const {
     for (int i = 0; i < 3; ++i) y[i] += h * y[3 + i];
-    const double t0 = y[7], m = y[6] + h * rate_;
+    const double t0 = y[7];
     y[7] = t0 + h;
-    if (!(m > 0.0)) throw_out_of_mass(flow_name_, body_name_, m, y[7], t0);
+    change_mass(y, h * rate_, y[7], t0);
+  }
+
+  // m += dm at fixed v and E += ½ dm |v|² (the exact change of T = ½ m |v|²); out_of_mass_error (at t, in the step
+  // from step_start) when the new mass is not positive
+  RIGIDDYN_ALWAYS_INLINE void change_mass(Coordinates& y, double dm, double t, double step_start) const {
+    const double m = y[6] + dm;
+    if (!(m > 0.0)) throw_out_of_mass(flow_name_, body_name_, m, t, step_start);
+    y[10] += 0.5 * dm * (y[3] * y[3] + y[4] * y[4] + y[5] * y[5]);
     y[6] = m;
   }
 
