@@ -189,7 +189,9 @@ void bind_exact(pybind11::module_& m) {
            "InertiaCheck.allow_unrealizable opts in to test problems such as diag(2, 1, 2/3));\n"
            "q_WB: (4,) initial attitude, (x, y, z, w) or (w, x, y, z) if scalar_first; w_B: (3,) initial angular\n"
            "velocity of B in W, expressed in B [rad/s]. Any finite magnitudes (the motion is computed in scaled\n"
-           "units); ValueError naming w_B when a rate of the motion exceeds the double range.")
+           "units); ValueError naming w_B when a rate of the motion exceeds the double range, and naming inertia\n"
+           "when its principal moments span so many orders (~1e150 and more) that the parameters of the elliptic\n"
+           "functions, up to ~(I_max/I_min)^2 in scaled units, exceed it.")
       .def("state_at", &state_at_py, py::arg("t"),
            "State at time t [s] (scalar, or (n,) array; negative allowed): (q_WB, w_B) of shapes (4,), (3,) or\n"
            "(n, 4), (n, 3); q in the order chosen at construction. ValueError naming t when a phase (rate times t)\n"

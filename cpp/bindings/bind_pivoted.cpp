@@ -122,8 +122,10 @@ void bind_pivoted_body(py::module_& m) {
       "quantity. B is the body frame at C as for RigidBody; C is at p_WO + R_WB p_OC_B. Euler's law is written about "
       "O (Craig, \"Rigid Body Dynamics\" slides: M_O = dH_O/dt) with inertia_O = I_C + m (|c|^2 1 - c c^T), the "
       "parallel-axis theorem with the products of inertia. digits_lost tells how many decimal digits of I_C the "
-      "rounding of inertia_O loses (the compile of a scene warns above 6); ValueError naming p_OC_B when inertia_O "
-      "is no longer positive definite in double precision. Immutable; pickles; == compares body, p_OC_B and p_WO.");
+      "rounding of inertia_O loses (the compile of a scene warns above 6); ValueError naming p_OC_B beyond 15 digits "
+      "lost (m |c|^2 > 1e15 times the smallest moment of I_C: inertia_O's moment about the axis through O and C, I_C's "
+      "about it, is then rounding noise) or when inertia_O is no longer positive definite in double precision. "
+      "Immutable; pickles; == compares body, p_OC_B and p_WO.");
   cls.def(py::init(&make_pivoted_body), py::arg("body"), py::arg("p_OC_B"), py::arg("p_WO") = py::none())
       .def_property_readonly("body", [](const PivotedBody& b) { return b.body(); }, "the RigidBody (a copy)")
       .def_property_readonly("mass", &PivotedBody::mass, "mass [kg]")
@@ -136,7 +138,7 @@ void bind_pivoted_body(py::module_& m) {
       .def_property_readonly("inertia_O", [](const PivotedBody& b) { return py_io::read_only(b.inertia_O()); },
                              "(3, 3) inertia about O in B, I_C + m (|c|^2 1 - c c^T) [kg m^2]")
       .def_property_readonly("digits_lost", &PivotedBody::digits_lost,
-                             "decimal digits of I_C lost in inertia_O: max(0, log10(m |c|^2 / smallest moment of I_C))")
+                             "decimal digits of I_C lost in inertia_O: max(0, log10(m |c|^2 / smallest moment of I_C)), at most 15")
       .def_property_readonly("euler_form", [](const PivotedBody& b) { return euler_form_name(b.euler_form()); },
                              "the form of Euler's equations of inertia_O: 'spherical', 'principal' or 'full'")
       .def("__repr__", &pivoted_body_repr)
@@ -159,7 +161,8 @@ void bind_pivoted_body(py::module_& m) {
       "mass [kg] > 0; inertia_zz [kg m^2] > 0 about the z axis through the centre of mass C; p_OC_B (2,): C relative "
       "to O in B's xy plane [m] (zero allowed); p_WO (2,): O in W's xy plane [m]; each a float or a pint quantity. "
       "Plane kinetics about O: inertia_O_zz alpha = tau_O, inertia_O_zz = inertia_zz + m |c|^2 (Craig, \"Rigid Body "
-      "Dynamics\" slides). Immutable; pickles; == compares every field.");
+      "Dynamics\" slides); ValueError naming p_OC_B when inertia_O_zz exceeds the double range. Immutable; pickles; "
+      "== compares every field.");
   planar
       .def(py::init([](py::handle mass, py::handle inertia_zz, py::handle p_OC_B, py::handle p_WO) {
              return PivotedPlanarBody(py_io::as_scalar(py_io::in_si(mass, "kg", "mass"), "mass"),

@@ -1297,7 +1297,7 @@ class PivotedBody:
     """
     A rigid body pinned at a point O fixed in the scene frame W (3 rotational DOF): the heavy top, the gyroscope.
       PivotedBody(body, p_OC_B, p_WO=(0, 0, 0))
-    body: a RigidBody (mass [kg], inertia_com [kg m^2] about the centre of mass C in B); p_OC_B (3,): C relative to O, in B [m] (zero allowed: the free rotation about C); p_WO (3,): O in W [m]; each a float array or a pint quantity. B is the body frame at C as for RigidBody; C is at p_WO + R_WB p_OC_B. Euler's law is written about O (Craig, "Rigid Body Dynamics" slides: M_O = dH_O/dt) with inertia_O = I_C + m (|c|^2 1 - c c^T), the parallel-axis theorem with the products of inertia. digits_lost tells how many decimal digits of I_C the rounding of inertia_O loses (the compile of a scene warns above 6); ValueError naming p_OC_B when inertia_O is no longer positive definite in double precision. Immutable; pickles; == compares body, p_OC_B and p_WO.
+    body: a RigidBody (mass [kg], inertia_com [kg m^2] about the centre of mass C in B); p_OC_B (3,): C relative to O, in B [m] (zero allowed: the free rotation about C); p_WO (3,): O in W [m]; each a float array or a pint quantity. B is the body frame at C as for RigidBody; C is at p_WO + R_WB p_OC_B. Euler's law is written about O (Craig, "Rigid Body Dynamics" slides: M_O = dH_O/dt) with inertia_O = I_C + m (|c|^2 1 - c c^T), the parallel-axis theorem with the products of inertia. digits_lost tells how many decimal digits of I_C the rounding of inertia_O loses (the compile of a scene warns above 6); ValueError naming p_OC_B beyond 15 digits lost (m |c|^2 > 1e15 times the smallest moment of I_C: inertia_O's moment about the axis through O and C, I_C's about it, is then rounding noise) or when inertia_O is no longer positive definite in double precision. Immutable; pickles; == compares body, p_OC_B and p_WO.
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, other: typing.Any) -> typing.Any:
@@ -1318,7 +1318,7 @@ class PivotedBody:
     @property
     def digits_lost(self) -> float:
         """
-        decimal digits of I_C lost in inertia_O: max(0, log10(m |c|^2 / smallest moment of I_C))
+        decimal digits of I_C lost in inertia_O: max(0, log10(m |c|^2 / smallest moment of I_C)), at most 15
         """
     @property
     def euler_form(self) -> str:
@@ -1354,7 +1354,7 @@ class PivotedPlanarBody:
     """
     The compound pendulum: a planar body pinned at a point O fixed in the scene frame W, turning about W's z axis (1 DOF, R_WB = Rz(theta)).
       PivotedPlanarBody(mass, inertia_zz, p_OC_B, p_WO=(0, 0))
-    mass [kg] > 0; inertia_zz [kg m^2] > 0 about the z axis through the centre of mass C; p_OC_B (2,): C relative to O in B's xy plane [m] (zero allowed); p_WO (2,): O in W's xy plane [m]; each a float or a pint quantity. Plane kinetics about O: inertia_O_zz alpha = tau_O, inertia_O_zz = inertia_zz + m |c|^2 (Craig, "Rigid Body Dynamics" slides). Immutable; pickles; == compares every field.
+    mass [kg] > 0; inertia_zz [kg m^2] > 0 about the z axis through the centre of mass C; p_OC_B (2,): C relative to O in B's xy plane [m] (zero allowed); p_WO (2,): O in W's xy plane [m]; each a float or a pint quantity. Plane kinetics about O: inertia_O_zz alpha = tau_O, inertia_O_zz = inertia_zz + m |c|^2 (Craig, "Rigid Body Dynamics" slides); ValueError naming p_OC_B when inertia_O_zz exceeds the double range. Immutable; pickles; == compares every field.
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, other: typing.Any) -> typing.Any:
@@ -2610,7 +2610,9 @@ class TorqueFreeSolution:
         InertiaCheck.allow_unrealizable opts in to test problems such as diag(2, 1, 2/3));
         q_WB: (4,) initial attitude, (x, y, z, w) or (w, x, y, z) if scalar_first; w_B: (3,) initial angular
         velocity of B in W, expressed in B [rad/s]. Any finite magnitudes (the motion is computed in scaled
-        units); ValueError naming w_B when a rate of the motion exceeds the double range.
+        units); ValueError naming w_B when a rate of the motion exceeds the double range, and naming inertia
+        when its principal moments span so many orders (~1e150 and more) that the parameters of the elliptic
+        functions, up to ~(I_max/I_min)^2 in scaled units, exceed it.
         """
     def __repr__(self) -> str:
         ...

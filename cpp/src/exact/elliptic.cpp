@@ -166,6 +166,14 @@ double ellippi(double n, double m, double mc) {
 }
 
 JacobiSnCnDn jacobi_ellipj_reduced(double w, const EllipticParameter& p) {
+  // kc < 2^-200: the functions of m = 1, (tanh w, sech w, sech w) (DLMF 22.10.ii: their first corrections,
+  // (kc²/4)(sinh w cosh w ∓ w) times sech² w or tanh w sech w, are below kc² e^{2|w|}/16 ≤ √kc/2 ≤ 2^-101 relative
+  // for |w| ≤ 3K/4, e^K ≈ 4/kc). The doubling would square cn, down to kc^{3/4} there, into the subnormals:
+  // below kc ~ 1e-230 it returned cn = dn = 0, which Carlson's R_F does not take.
+  if (p.kc < 0x1p-200) {
+    const double sech = 1.0 / std::cosh(w);
+    return {std::tanh(w), sech, sech};
+  }
   const JacobiSnCnDn f = sncndn_first_eighth(std::abs(w), p.m, p.mc);
   return {std::copysign(f.sn, w), f.cn, f.dn};
 }

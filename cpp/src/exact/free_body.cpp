@@ -103,15 +103,25 @@ Eigen::Quaterniond zxz_from_momentum(double phi, double x, double y, double r, d
 
 double sign_of(double x) { return x < 0.0 ? -1.0 : 1.0; }
 
-// The principal frame (inertia/principal_axes.hpp) of a finite, symmetric, positive definite I_B
-// that, under InertiaCheck::physical, satisfies the triangle inequality (ascending I0 + I1 >= I2) within the
-// tolerance of validity.hpp (the message names the moments and the margin).
+// |(a, b)|: the root of the sum of squares where the larger is above 2^-500 (then no square that matters
+// underflows), std::hypot below. The transverse mantissas are O(1) except a hair from the separatrix (kc below
+// ~1e-150), where past K/2 both are of the order of kc^{3/4} and their squares underflowed to a zero norm.
+double transverse_norm(double a, double b) {
+  const double r = std::sqrt(a * a + b * b);
+  return r >= 0x1p-500 ? r : std::hypot(a, b);
+}
+
+// The principal frame of a finite, symmetric, positive definite I_B that, under InertiaCheck::physical,
+// satisfies the triangle inequality (ascending I0 + I1 >= I2) within the tolerance of validity.hpp (the
+// message names the moments and the margin). The frame is principal_decomposition's, which reproduces I_B to
+// round-off for any spacing of the moments; principal_axes' canonical axes for moments within 1e-9 of each
+// other do not, and the closed form, which keeps moments apart down to 64 eps, would follow another body.
 PrincipalAxes checked_principal_axes(const Eigen::Matrix3d& I_B, InertiaCheck check) {
   require_finite(I_B, "inertia");
   if (!((I_B - I_B.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * I_B.cwiseAbs().maxCoeff())) {
     throw_invalid("inertia", "a symmetric matrix (to 1e-12 relative)", I_B);
   }
-  PrincipalAxes axes = principal_axes(0.5 * (I_B + I_B.transpose()));
+  PrincipalAxes axes = principal_decomposition(0.5 * (I_B + I_B.transpose()));
   if (!(axes.moments(0) > 0.0)) throw_invalid("inertia", "a positive definite matrix", I_B);
   if (check == InertiaCheck::physical) {
     const InertiaReport report = inertia_report(1.0, I_B);  // the mass plays no part in the moments' checks
@@ -165,6 +175,13 @@ TorqueFreeSolution::TorqueFreeSolution(const Eigen::Matrix3d& I_B, const Eigen::
                                        const Eigen::Vector3d& w_B, InertiaCheck check)
     : TorqueFreeSolution(checked_principal_axes(I_B, check), checked_attitude(q_WB), checked_angular_velocity(w_B),
                          true) {
+  if (!parameters_in_range_) {
+    throw_invalid("inertia",
+                  "principal moments whose spread keeps the parameters of the closed form (up to ~(I_max/I_min)² in "
+                  "scaled units) within the double range for this w_B (I_min/I_max = " +
+                      format_value(I_principal_(0) / I_principal_(2)) + ")",
+                  I_B);
+  }
   // the motion is formed in scaled units: only its rates (of the order of |w_B| I_max/I_min) can overflow
   if (!std::isfinite(max_rate())) {
     throw_invalid("w_B", "an angular velocity whose rates of motion (up to |w_B| I_max/I_min) stay within the double range",
@@ -284,6 +301,14 @@ void TorqueFreeSolution::init_elliptic(const Eigen::Vector3d& I, const Eigen::Ve
     sn_axis_ = 0, cn_axis_ = 1;
     I_s = I1, phi_sign = -1.0;
   }
+  // In these units the amplitudes, λ and n are of the order of I3/I1 and their squares (I3/I1)²: beyond the
+  // double range when the moments span more than ~1e150 and the momentum has a part along the smallest. Such a
+  // motion is not formed (the elliptic integrals would receive infinities): evaluate() gives NaN and the public
+  // constructor refuses the inertia.
+  if (!(A.allFinite() && std::isfinite(lambda) && std::isfinite(m) && std::isfinite(kc) && std::isfinite(n_))) {
+    parameters_in_range_ = false;
+    return;
+  }
   // m and kc are each accurate; make them consistent from the smaller of m and mc = kc²
   const double kc_hat = kc;
   kc = times_pow2(kc_hat, t_kc);
@@ -375,7 +400,13 @@ TorqueFreeState TorqueFreeSolution::state_at(double t) const {
   return s;
 }
 
-TorqueFreeState TorqueFreeSolution::evaluate(double t) const { return about_axis_ ? state_about_axis(t) : state_elliptic(t); }
+TorqueFreeState TorqueFreeSolution::evaluate(double t) const {
+  if (!parameters_in_range_) {
+    constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+    return {Eigen::Quaterniond(nan, nan, nan, nan), Eigen::Vector3d::Constant(nan)};
+  }
+  return about_axis_ ? state_about_axis(t) : state_elliptic(t);
+}
 
 // Π(n|m) (elliptic.hpp); 0 on the separatrix (never used there)
 double TorqueFreeSolution::complete_pi() const {
@@ -436,7 +467,7 @@ TorqueFreeState TorqueFreeSolution::state_from_functions(double phi, const Jacob
     w_Q(2) = w_amplitude_(2) * f.dn;
     m_cn = sign * M_(0) * f.cn;
     m_sn = sign * M_(1) * f.sn;
-    r = std::sqrt(m_cn * m_cn + m_sn * m_sn);
+    r = transverse_norm(m_cn, m_sn);
     rho = times_pow2(r, t_trans_);
     m_s = M_(2) * f.dn;
   } else {
@@ -446,7 +477,7 @@ TorqueFreeState TorqueFreeSolution::state_from_functions(double phi, const Jacob
     w_Q(2) = kc_w_amplitude_(1) * nd;
     m_cn = -sign * kc_M_(0) * f.sn;
     m_sn = sign * M_(1) * f.cn;
-    r = std::sqrt(m_cn * m_cn + m_sn * m_sn);
+    r = transverse_norm(m_cn, m_sn);
     rho = times_pow2(r, t_trans_) * nd;
     m_s = kc_M_(1) * nd;
   }

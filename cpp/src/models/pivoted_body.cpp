@@ -42,12 +42,22 @@ PivotedBody::PivotedBody(const RigidBody& body, const Eigen::Vector3d& p_OC_B, c
   const double smallest_C = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(body.inertia_com()).eigenvalues()(0);
   const double transfer = body.mass() * p_OC_B.squaredNorm();
   digits_lost_ = transfer > 0.0 ? std::max(0.0, std::log10(transfer / smallest_C)) : 0.0;
+  const std::string transfer_against_C = "m|c|² = " + format_value(transfer) + " kg m² against the smallest moment " +
+                                         format_value(smallest_C) + " kg m² about C: " + format_value(digits_lost_) +
+                                         " digits lost";
+  // digits_lost_ is NaN or inf where m|c|² overflows: refused here as well
+  if (!(digits_lost_ <= max_digits_lost)) {
+    throw_invalid("p_OC_B",
+                  "a pivot near enough to the centre of mass that the inertia about O keeps at least one digit of the "
+                  "inertia about C, at most " + format_value(max_digits_lost) + " of its 16 digits lost (" +
+                      transfer_against_C + ")",
+                  p_OC_B.transpose().eval());
+  }
   const double smallest_O = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(inertia_O_).eigenvalues()(0);
   if (!(smallest_O > 0.0)) {
     throw_invalid("p_OC_B",
                   "a pivot near enough to the centre of mass that the inertia about O stays positive definite in double "
-                  "precision (m|c|² = " + format_value(transfer) + " kg m² against the smallest moment " +
-                      format_value(smallest_C) + " kg m² about C: " + format_value(digits_lost_) + " digits lost)",
+                  "precision (" + transfer_against_C + ")",
                   p_OC_B.transpose().eval());
   }
   form_ = form_of(inertia_O_);

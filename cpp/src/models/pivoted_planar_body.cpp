@@ -2,6 +2,8 @@
 
 #include "rigiddyn/check.hpp"
 
+#include <cmath>
+
 namespace rigiddyn {
 
 PivotedPlanarBody::PivotedPlanarBody(double mass, double inertia_zz, const Eigen::Vector2d& p_OC_B, const Eigen::Vector2d& p_WO)
@@ -9,6 +11,13 @@ PivotedPlanarBody::PivotedPlanarBody(double mass, double inertia_zz, const Eigen
   require_finite(p_OC_B, "p_OC_B");
   require_finite(p_WO, "p_WO");
   inertia_O_zz_ = inertia_zz + mass * p_OC_B.squaredNorm();  // parallel-axis theorem about z
+  // a sum of positive terms: no digits lost, but it may overflow (then every energy and momentum is NaN)
+  if (!std::isfinite(inertia_O_zz_)) {
+    throw_invalid("p_OC_B",
+                  "a pivot near enough to the centre of mass that the inertia about O, inertia_zz + m |c|² = " +
+                      format_value(inertia_O_zz_) + " kg m², stays within the double range",
+                  p_OC_B.transpose().eval());
+  }
 }
 
 PivotedPlanarBodyState checked_state(const PivotedPlanarBodyState& state, const std::string& name) {

@@ -79,8 +79,8 @@ double complete_ellippi(double n, const EllipticParameter& p);
 JacobiSnCnDn jacobi_ellipj(double u, double m, double mc);
 JacobiSnCnDn jacobi_ellipj(double u, const EllipticParameter& p);
 
-// sn, cn, dn of a reduced argument |w| ≤ K/2 (a few ulps beyond is fine), kc > 0: each to a few ulps
-// relative (cn, dn >= √kc/√2 there).
+// sn, cn, dn of a reduced argument |w| ≤ K/2 (up to 3K/4 is fine, where a reduction of a huge u leaves it),
+// kc > 0: each to a few ulps relative (cn, dn >= √kc/√2 at K/2).
 JacobiSnCnDn jacobi_ellipj_reduced(double w, const EllipticParameter& p);
 // l mod 4 ∈ {0, 1, 2, 3} of an integer-valued l, exactly for any double (l/4 and its floor are exact).
 inline double quarter_of(double l) { return l - 4.0 * std::floor(0.25 * l); }

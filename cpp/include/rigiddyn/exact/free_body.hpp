@@ -56,7 +56,9 @@ class TorqueFreeSolution {
   // B, expressed in B [rad/s], finite. Throws std::invalid_argument on bad input, and naming w_B when a
   // rate of the motion (of the order of |w_B| I_max/I_min) exceeds the double range. Any magnitudes are
   // accepted otherwise (the motion is formed with the inertia and w_B scaled by powers of two); the
-  // invariants L_W and T alone may overflow to inf (angular_momentum_W(), kinetic_energy()).
+  // invariants L_W and T alone may overflow to inf (angular_momentum_W(), kinetic_energy()). Throws naming the
+  // inertia when its principal moments span so many orders (~1e150 and more) that the parameters of the
+  // elliptic functions, up to ~(I_max/I_min)² in the scaled units, exceed the double range for this w_B.
   TorqueFreeSolution(const Eigen::Matrix3d& I_B, const Eigen::Quaterniond& q_WB, const Eigen::Vector3d& w_B,
                      InertiaCheck check = InertiaCheck::physical);
 
@@ -139,6 +141,7 @@ class TorqueFreeSolution {
   double pi0_ = 0.0;                                // reduced Π at w0 (the separatrix: a atan(a tanh u0))
   double phi_rate_ = 0.0;                           // G/I_s [rad/s]
   double phi_pi_ = 0.0;                             // coefficient of Π in φ [rad]
+  bool parameters_in_range_ = true;                 // false: the elliptic parameters overflowed (evaluate gives NaN)
 };
 
 // The exact torque-free rotation over one step, for a fixed inertia: the principal frame is computed
@@ -154,7 +157,8 @@ class FreeRotationFlow {
   explicit FreeRotationFlow(const Eigen::Matrix3d& I_B);
   const Eigen::Matrix3d& inertia() const { return I_B_; }
   // Advances the attitude q_WB (unit) and the angular velocity w_B [rad/s] (in B) by h [s]. A
-  // non-finite state becomes NaN (no exception: a stepping loop records the divergence).
+  // non-finite state, and one whose motion exceeds the double range (where TorqueFreeSolution throws),
+  // becomes NaN (no exception: a stepping loop records the divergence).
   void advance(Eigen::Quaterniond& q_WB, Eigen::Vector3d& w_B, double h) const;
 
  private:

@@ -23,7 +23,20 @@ struct PrincipalAxes {
 //    axis is the projection of the frame basis vector least aligned with d, the second completes a
 //    right-handed set;
 //  - three coincident moments: the identity.
-// Only the lower triangle of `inertia` is read.
+// Only the lower triangle of `inertia` is read. The canonical axes of coincident moments reproduce
+// `inertia` only to within the moments' difference (up to coincident_moments_tolerance relative): a
+// computation that needs `inertia` back from its moments and axes uses principal_decomposition.
 PrincipalAxes principal_axes(const Eigen::Matrix3d& inertia);
+
+// The same decomposition without the canonical choice: moments ascending and axes that reproduce the
+// matrix, axes diag(moments) axesᵀ = inertia to a few ε |inertia| (the solver is backward stable), for
+// any spacing of the moments, equal and nearly equal ones included. Axes 0 and 1 are the solver's with
+// the sign rule above (largest-magnitude component positive), axis 2 = axis 0 × axis 1; where the
+// moments are distinct by more than coincident_moments_tolerance this is principal_axes, bit for bit.
+// What the closed-form motion of a free body (exact/free_body.hpp) and the splittings that turn about
+// the principal axes (integrators/splitting_parts.hpp) are built on: axes within a plane of two moments
+// that differ by δ may turn by up to ~ε |inertia| / δ between nearby inputs, but the body they describe
+// is `inertia` to round-off. Only the lower triangle of `inertia` is read.
+PrincipalAxes principal_decomposition(const Eigen::Matrix3d& inertia);
 
 }  // namespace rigiddyn

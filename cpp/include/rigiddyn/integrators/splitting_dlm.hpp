@@ -12,8 +12,8 @@
 // worse. A sphere's free rotation is done exactly (q ⊗ exp(h ω), ω constant).
 //
 // Order 2 (symmetric); cost per step: 2 derivative evaluations (the kicks; none without loads) + 5
-// axis rotations (one sin/cos pair each); a full (non-diagonal) inertia adds a 3×3
-// eigen-decomposition per step. Conserves exactly (to round-off) on a free body: |L|, the spatial
+// axis rotations (one sin/cos pair each); a full (non-diagonal) inertia adds two turns B ↔ P by its
+// principal frame (computed once per inertia, FullEuler). Conserves exactly (to round-off) on a free body: |L|, the spatial
 // L_W, unit |q| (SO(3)), their round-off an unbiased walk (≤ 10 ε √N after N steps: the rotations,
 // the update of ω and the normalisation of q are written as increments, see principal_axis_flow,
 // dlm_principal_increment and unit_quaternion); the energy error stays bounded (symplectic, no

@@ -18,7 +18,8 @@
 // GCC then assembles packets in memory from values just stored as scalars (a store-forwarding
 // stall on the critical path, measured 1.7x slower per step than a hand-written loop).
 #pragma once
-#include "rigiddyn/models/model_interface.hpp"  // RIGIDDYN_ALWAYS_INLINE
+#include "rigiddyn/inertia/principal_axes.hpp"  // principal_decomposition
+#include "rigiddyn/models/model_interface.hpp"   // RIGIDDYN_ALWAYS_INLINE
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -131,12 +132,19 @@ struct PrincipalEuler {
   }
 };
 
-// Any symmetric positive definite I [kg m²] in B, products of inertia included.
+// Any symmetric positive definite I [kg m²] in B, products of inertia included. Its principal frame is
+// computed once here, for the splittings that turn about the principal axes (splitting_parts.hpp).
 struct FullEuler {
   Eigen::Matrix3d inertia;
   Eigen::Matrix3d inverse_inertia;
+  Eigen::Vector3d principal_moments;  // ascending [kg m²]
+  Eigen::Quaterniond q_BP;            // principal frame P in B: I = R_BP diag(principal_moments) R_BPᵀ to round-off
 
-  explicit FullEuler(const Eigen::Matrix3d& I) : inertia(I), inverse_inertia(I.inverse()) {}
+  explicit FullEuler(const Eigen::Matrix3d& I) : inertia(I), inverse_inertia(I.inverse()) {
+    const PrincipalAxes P = principal_decomposition(I);
+    principal_moments = P.moments;
+    q_BP = Eigen::Quaterniond(P.axes).normalized();
+  }
   RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d momentum(const Eigen::Vector3d& w) const { return times_3x3(inertia, w); }
   // ω̇ = I⁻¹ (tau − ω × I ω)
   RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d angular_acceleration(const Eigen::Vector3d& w, const Eigen::Vector3d& tau) const {

@@ -26,10 +26,17 @@
 namespace rigiddyn {
 
 // A rigid body pinned at O. Throws std::invalid_argument naming p_OC_B / p_WO for non-finite entries, and
-// p_OC_B when the pivot is so far from C that the inertia about O, rounded, is no longer positive definite
-// (Euler's equations about O need its inverse; see digits_lost for the loss of precision before that).
+// p_OC_B when the pivot is so far from C that the rounding of the inertia about O loses more than
+// max_digits_lost decimal digits of the inertia about C (digits_lost), or leaves it no longer positive
+// definite (Euler's equations about O need its inverse).
 class PivotedBody {
  public:
+  // The most digits of I_C that the rounding of I_O may lose: I_O's moment about the axis through O and C
+  // is I_C's about it, formed as a difference of terms up to m|c|², so it carries an error of ~ε m|c|² =
+  // 2.2e-16 · 10^digits_lost of that moment: 22 % at 15 digits lost (the last digit kept), and rounding
+  // noise beyond.
+  static constexpr double max_digits_lost = 15.0;
+
   // body: mass [kg] and inertia_com [kg m²] about C in B; p_OC_B: C relative to O, in B [m] (zero allowed:
   // the free rotation about C); p_WO: O in the scene frame [m].
   PivotedBody(const RigidBody& body, const Eigen::Vector3d& p_OC_B, const Eigen::Vector3d& p_WO = Eigen::Vector3d::Zero());
@@ -43,6 +50,7 @@ class PivotedBody {
   const Eigen::Matrix3d& inertia_O() const { return inertia_O_; }
   // Decimal digits of I_C lost when I_O is rounded: max(0, log10(m|c|² / λ_min(I_C))) (0 for c = 0): the
   // smallest moment of I_C is added to terms up to m|c|², so I_O keeps ~16 − digits_lost() of its digits.
+  // At most max_digits_lost (the constructor refuses a farther pivot).
   double digits_lost() const { return digits_lost_; }
   // The form of Euler's equations I_O needs (spherical / principal / full), by RigidBody::euler_form's rule.
   EulerForm euler_form() const { return form_; }

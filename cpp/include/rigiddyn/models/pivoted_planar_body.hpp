@@ -16,7 +16,7 @@
 namespace rigiddyn {
 
 // A planar body pinned at O. Throws std::invalid_argument naming mass / inertia_zz (each a finite number
-// > 0) and p_OC_B / p_WO (finite).
+// > 0), p_OC_B / p_WO (finite), and p_OC_B when the inertia about O, inertia_zz + m |c|², overflows.
 class PivotedPlanarBody {
  public:
   // mass [kg], inertia_zz [kg m²] about the z axis through C, p_OC_B: C relative to O in B's xy plane [m]
