@@ -101,6 +101,7 @@ struct BatchResult {
   py::array arrays[batch_array_count];  // batch_arrays, each (N, n) or (N, n, width)
   py::array diverged, filled, unconverged_steps;  // (N,) bool, int64, int64
   double elapsed_seconds = 0.0;
+  bool scalar_first = false;  // q_WB rows as (w, x, y, z)
 
   py::ssize_t samples() const { return filled.shape(0); }
   py::ssize_t records() const { return arrays[0].shape(1); }
@@ -124,22 +125,27 @@ BatchResult to_batch_result(BatchTrajectory&& b, bool scalar_first) {
   r.filled = adopt_vector(std::move(b.filled), {N});
   r.unconverged_steps = adopt_vector(std::move(b.unconverged_steps), {N});
   r.elapsed_seconds = b.elapsed_seconds;
+  r.scalar_first = scalar_first;
   return r;
 }
 
 py::tuple batch_result_state(const BatchResult& r) {
-  py::tuple out(batch_array_count + 4);
+  py::tuple out(batch_array_count + 5);
   for (std::size_t k = 0; k < batch_array_count; ++k) out[k] = r.arrays[k];
   out[batch_array_count] = r.diverged;
   out[batch_array_count + 1] = r.filled;
   out[batch_array_count + 2] = r.unconverged_steps;
   out[batch_array_count + 3] = py::float_(r.elapsed_seconds);
+  out[batch_array_count + 4] = py::bool_(r.scalar_first);
   return out;
 }
 
+// batch_array_count + 4 items: a state without scalar_first (q_WB as (x, y, z, w)), as earlier pickles
 BatchResult batch_result_from_state(const py::tuple& t) {
-  if (t.size() != batch_array_count + 4) {
-    py_io::throw_value_error("BatchResult pickle", "a tuple of " + std::to_string(batch_array_count + 4) + " items",
+  if (t.size() != batch_array_count + 4 && t.size() != batch_array_count + 5) {
+    py_io::throw_value_error("BatchResult pickle",
+                             "a tuple of " + std::to_string(batch_array_count + 4) + " or " +
+                                 std::to_string(batch_array_count + 5) + " items",
                              std::to_string(t.size()) + " items");
   }
   const py::array t0 = py::module_::import("numpy").attr("asarray")(t[0]);
@@ -153,6 +159,7 @@ BatchResult batch_result_from_state(const py::tuple& t) {
   r.filled = checked_copy(t[batch_array_count + 1], "BatchResult pickle filled", {N}, "int64");
   r.unconverged_steps = checked_copy(t[batch_array_count + 2], "BatchResult pickle unconverged_steps", {N}, "int64");
   r.elapsed_seconds = t[batch_array_count + 3].cast<double>();
+  r.scalar_first = t.size() == batch_array_count + 5 && t[batch_array_count + 4].cast<bool>();
   return r;
 }
 
@@ -161,11 +168,12 @@ BatchResult batch_result_from_state(const py::tuple& t) {
 py::object batch_sample(const BatchResult& r, py::handle key) {
   const py::ssize_t i = sample_index(key, r.samples(), "BatchResult");
   const py::ssize_t rows = r.filled.attr("__getitem__")(i).cast<py::ssize_t>();
-  py::tuple state(batch_array_count + 3);
+  py::tuple state(batch_array_count + 4);
   for (std::size_t k = 0; k < batch_array_count; ++k) state[k] = sample_rows(r.arrays[k], i, rows);
   state[batch_array_count] = py::bool_(r.diverged.attr("__getitem__")(i).cast<bool>());
   state[batch_array_count + 1] = py::int_(r.unconverged_steps.attr("__getitem__")(i).cast<std::int64_t>());
   state[batch_array_count + 2] = py::float_(r.elapsed_seconds);
+  state[batch_array_count + 3] = py::bool_(r.scalar_first);
   const py::object cls = py::module_::import("rigiddyn._core").attr("SimulationResult");
   py::object out = cls.attr("__new__")(cls);
   out.attr("__setstate__")(state);
@@ -216,6 +224,7 @@ struct BatchSceneResult {
   py::tuple body_names, elements;
   py::array diverged, filled, unconverged_steps;  // (N,) bool, int64, int64
   double elapsed_seconds = 0.0;
+  bool scalar_first = false;  // q_WB rows as (w, x, y, z)
 
   py::ssize_t samples() const { return filled.shape(0); }
   py::ssize_t records() const { return arrays[0].shape(1); }
@@ -243,11 +252,12 @@ BatchSceneResult to_batch_scene_result(BatchSceneSimulation&& b, py::tuple body_
   r.filled = adopt_vector(std::move(b.filled), {N});
   r.unconverged_steps = adopt_vector(std::move(b.unconverged_steps), {N});
   r.elapsed_seconds = b.elapsed_seconds;
+  r.scalar_first = scalar_first;
   return r;
 }
 
 py::tuple batch_scene_state(const BatchSceneResult& r) {
-  py::tuple out(scene_column_count + 6);
+  py::tuple out(scene_column_count + 7);
   for (std::size_t k = 0; k < scene_column_count; ++k) out[k] = r.arrays[k];
   out[scene_column_count] = r.body_names;
   out[scene_column_count + 1] = r.elements;
@@ -255,12 +265,16 @@ py::tuple batch_scene_state(const BatchSceneResult& r) {
   out[scene_column_count + 3] = r.filled;
   out[scene_column_count + 4] = r.unconverged_steps;
   out[scene_column_count + 5] = py::float_(r.elapsed_seconds);
+  out[scene_column_count + 6] = py::bool_(r.scalar_first);
   return out;
 }
 
+// scene_column_count + 6 items: a state without scalar_first (q_WB as (x, y, z, w)), as earlier pickles
 BatchSceneResult batch_scene_from_state(const py::tuple& t) {
-  if (t.size() != scene_column_count + 6) {
-    py_io::throw_value_error("BatchSceneResult pickle", "a tuple of " + std::to_string(scene_column_count + 6) + " items",
+  if (t.size() != scene_column_count + 6 && t.size() != scene_column_count + 7) {
+    py_io::throw_value_error("BatchSceneResult pickle",
+                             "a tuple of " + std::to_string(scene_column_count + 6) + " or " +
+                                 std::to_string(scene_column_count + 7) + " items",
                              std::to_string(t.size()) + " items");
   }
   BatchSceneResult r;
@@ -278,6 +292,7 @@ BatchSceneResult batch_scene_from_state(const py::tuple& t) {
   r.filled = checked_copy(t[scene_column_count + 3], "BatchSceneResult pickle filled", {N}, "int64");
   r.unconverged_steps = checked_copy(t[scene_column_count + 4], "BatchSceneResult pickle unconverged_steps", {N}, "int64");
   r.elapsed_seconds = t[scene_column_count + 5].cast<double>();
+  r.scalar_first = t.size() == scene_column_count + 7 && t[scene_column_count + 6].cast<bool>();
   return r;
 }
 
@@ -292,6 +307,7 @@ SceneResult batch_scene_sample(const BatchSceneResult& r, py::handle key) {
   out.diverged = r.diverged.attr("__getitem__")(i).cast<bool>();
   out.unconverged_steps = r.unconverged_steps.attr("__getitem__")(i).cast<std::int64_t>();
   out.elapsed_seconds = r.elapsed_seconds;
+  out.scalar_first = r.scalar_first;
   return out;
 }
 
@@ -854,8 +870,8 @@ q_WB (N, n, 4) attitude, (x, y, z, w) unless scalar_first; v_W (N, n, 3) [m/s] i
 B; kinetic_energy, total_energy (N, n) [J]; angular_momentum_norm (N, n) |H_G| [kg m^2/s];
 quaternion_norm_error (N, n) |q| - 1; work (N, n) [J]. diverged (N,) bool; filled (N,) rows filled per sample
 (n unless it diverged: its rows after filled[i] are NaN); unconverged_steps (N,); elapsed_seconds: wall time
-of the whole batch [s]. len(result) is N; result[i] is sample i as a SimulationResult (its filled rows, copies);
-pickles.
+of the whole batch [s]; scalar_first: True if q_WB's rows are (w, x, y, z). len(result) is N; result[i] is sample
+i as a SimulationResult (its filled rows, copies, the same scalar_first); pickles.
 )doc";
 
 const char* const batch_scene_result_doc = R"doc(
@@ -865,8 +881,9 @@ angular_momentum_O_W (N, n, nb, 3); q_WB (N, n, nb, 4); kinetic_energy, potentia
 [J]; linear_momentum_W, angular_momentum_W (N, n, 3); mass, mass_flow_energy (N, n, nb) [kg], [J]; work, power
 (N, n, ne) [J], [W];
 body_names and elements (the first scene's labels of the axes); diverged (N,) bool; filled (N,) rows filled per
-sample (the rest NaN); unconverged_steps (N,); elapsed_seconds: wall time of the batch [s]. Frames and units as
-SceneResult. len(result) is N; result[i] is sample i as a SceneResult (its filled rows, copies); pickles.
+sample (the rest NaN); unconverged_steps (N,); elapsed_seconds: wall time of the batch [s]; scalar_first: True if
+q_WB's rows are (w, x, y, z). Frames and units as SceneResult. len(result) is N; result[i] is sample i as a
+SceneResult (its filled rows, copies, the same scalar_first); pickles.
 )doc";
 
 template <class Result>
@@ -876,6 +893,8 @@ void def_common(py::class_<Result>& cls, py::object (*sample)(const Result&, py:
       .def_readonly("unconverged_steps", &Result::unconverged_steps,
                     "(N,) int64: steps whose implicit solve stopped at its iteration cap (0 for explicit methods)")
       .def_readonly("elapsed_seconds", &Result::elapsed_seconds, "wall time of the whole batch [s]")
+      .def_readonly("scalar_first", &Result::scalar_first,
+                    "True if q_WB's rows are (w, x, y, z): the result of simulate_batch(..., scalar_first=True)")
       .def("__len__", [](const Result& r) { return r.samples(); }, "N, the number of samples")
       .def("__getitem__", sample, py::arg("i"), "sample i's records (negative i counts from the end)");
 }

@@ -2131,9 +2131,9 @@ class SceneResult:
         ...
     def __setstate__(self, arg0: tuple) -> None:
         ...
-    def to_dataframe(self, scalar_first: typing.Any = False) -> typing.Any:
+    def to_dataframe(self, scalar_first: typing.Any = None) -> typing.Any:
         """
-        A pandas.DataFrame of the records (needs pandas): one row per record, one column per scalar with its unit (wide format; rigiddyn.scene_result documents the columns): 't [s]', then per body '<name>:p_W_x [m]' .. '<name>:q_WB_x' .. '<name>:v_W_x [m/s]' .. '<name>:w_B_x [rad/s]' .. through '<name>:mass [kg]' and '<name>:mass_flow_energy [J]', then 'kinetic_energy [J]', 'potential_energy [J]', 'total_energy [J]', 'linear_momentum_W_x [kg m/s]' .., 'angular_momentum_W_x [kg m^2/s]' .., then per element i 'work[i] <Class> [J]' and 'power[i] <Class> [W]'. scalar_first=True for a result of simulate(..., scalar_first=True).
+        A pandas.DataFrame of the records (needs pandas): one row per record, one column per scalar with its unit (wide format; rigiddyn.scene_result documents the columns): 't [s]', then per body '<name>:p_W_x [m]' .. '<name>:q_WB_x' .. '<name>:v_W_x [m/s]' .. '<name>:w_B_x [rad/s]' .. through '<name>:mass [kg]' and '<name>:mass_flow_energy [J]', then 'kinetic_energy [J]', 'potential_energy [J]', 'total_energy [J]', 'linear_momentum_W_x [kg m/s]' .., 'angular_momentum_W_x [kg m^2/s]' .., then per element i 'work[i] <Class> [J]' and 'power[i] <Class> [W]'; q_WB's columns in the result's order ('<name>:q_WB_w' first when its scalar_first is True). scalar_first: None (the default) for the order the result records; True or False declares the order of its q_WB rows instead.
         """
     @property
     def angular_momentum_O_W(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -2209,6 +2209,11 @@ class SceneResult:
     def q_WB(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         (n, nb, 4) attitudes, (x, y, z, w) unless scalar_first
+        """
+    @property
+    def scalar_first(self) -> bool:
+        """
+        True if q_WB's rows are (w, x, y, z): the result of simulate(..., scalar_first=True)
         """
     @property
     def t(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -2290,9 +2295,9 @@ class SimulationResult:
         ...
     def __setstate__(self, arg0: tuple) -> None:
         ...
-    def to_dataframe(self, scalar_first: typing.Any = False) -> typing.Any:
+    def to_dataframe(self, scalar_first: typing.Any = None) -> typing.Any:
         """
-        A pandas.DataFrame of the records (needs pandas: pip install 'rigiddyn[dataframe]'): one row per record, one column per scalar with its unit, as the CSV of `python -m rigiddyn simulate`: 't [s]' (a column, not the index), 'p_W_x [m]' .. 'q_WB_x' .. 'q_WB_w', 'v_W_x [m/s]' .., 'w_B_x [rad/s]' .., 'kinetic_energy [J]', 'total_energy [J]', 'angular_momentum_norm [kg m^2/s]', 'quaternion_norm_error', 'work [J]'. scalar_first=True for a result of simulate(..., scalar_first=True) (q_WB as (w, x, y, z); the result does not record it).
+        A pandas.DataFrame of the records (needs pandas: pip install 'rigiddyn[dataframe]'): one row per record, one column per scalar with its unit, as the CSV of `python -m rigiddyn simulate`: 't [s]' (a column, not the index), 'p_W_x [m]' .. 'q_WB_x' .. 'q_WB_w', 'v_W_x [m/s]' .., 'w_B_x [rad/s]' .., 'kinetic_energy [J]', 'total_energy [J]', 'angular_momentum_norm [kg m^2/s]', 'quaternion_norm_error', 'work [J]'; q_WB's columns in the result's order ('q_WB_w' first when its scalar_first is True). scalar_first: None (the default) for the order the result records; True or False declares the order of its q_WB rows instead.
         """
     @property
     def angular_momentum_norm(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -2328,6 +2333,11 @@ class SimulationResult:
     def quaternion_norm_error(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         (n,) |q| - 1
+        """
+    @property
+    def scalar_first(self) -> bool:
+        """
+        True if q_WB's rows are (w, x, y, z): the result of simulate(..., scalar_first=True)
         """
     @property
     def t(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -2367,8 +2377,8 @@ class BatchResult:
     B; kinetic_energy, total_energy (N, n) [J]; angular_momentum_norm (N, n) |H_G| [kg m^2/s];
     quaternion_norm_error (N, n) |q| - 1; work (N, n) [J]. diverged (N,) bool; filled (N,) rows filled per sample
     (n unless it diverged: its rows after filled[i] are NaN); unconverged_steps (N,); elapsed_seconds: wall time
-    of the whole batch [s]. len(result) is N; result[i] is sample i as a SimulationResult (its filled rows, copies);
-    pickles.
+    of the whole batch [s]; scalar_first: True if q_WB's rows are (w, x, y, z). len(result) is N; result[i] is sample
+    i as a SimulationResult (its filled rows, copies, the same scalar_first); pickles.
     """
     def __getitem__(self, i: typing.Any) -> typing.Any:
         """
@@ -2425,6 +2435,11 @@ class BatchResult:
         (N, n) |q| - 1
         """
     @property
+    def scalar_first(self) -> bool:
+        """
+        True if q_WB's rows are (w, x, y, z): the result of simulate_batch(..., scalar_first=True)
+        """
+    @property
     def t(self) -> numpy.ndarray:
         """
         (N, n) time [s]
@@ -2462,8 +2477,9 @@ class BatchSceneResult:
     [J]; linear_momentum_W, angular_momentum_W (N, n, 3); mass, mass_flow_energy (N, n, nb) [kg], [J]; work, power
     (N, n, ne) [J], [W];
     body_names and elements (the first scene's labels of the axes); diverged (N,) bool; filled (N,) rows filled per
-    sample (the rest NaN); unconverged_steps (N,); elapsed_seconds: wall time of the batch [s]. Frames and units as
-    SceneResult. len(result) is N; result[i] is sample i as a SceneResult (its filled rows, copies); pickles.
+    sample (the rest NaN); unconverged_steps (N,); elapsed_seconds: wall time of the batch [s]; scalar_first: True if
+    q_WB's rows are (w, x, y, z). Frames and units as SceneResult. len(result) is N; result[i] is sample i as a
+    SceneResult (its filled rows, copies, the same scalar_first); pickles.
     """
     def __getitem__(self, i: typing.Any) -> typing.Any:
         """
@@ -2558,6 +2574,11 @@ class BatchSceneResult:
     def q_WB(self) -> numpy.ndarray:
         """
         (N, n, nb, 4) attitudes, (x, y, z, w) unless scalar_first
+        """
+    @property
+    def scalar_first(self) -> bool:
+        """
+        True if q_WB's rows are (w, x, y, z): the result of simulate_batch(..., scalar_first=True)
         """
     @property
     def t(self) -> numpy.ndarray:
@@ -3480,8 +3501,8 @@ def simulate(model: typing.Any, initial: typing.Any, dt: typing.Any, steps: typi
       keeps its order; records stay at t0 + i dt. gravity: None/False (the default: none), True
       ((0, 0, -9.81) m/s^2 in W) or a 3-vector [m/s^2] in W. t0: initial time [s]. scalar_first: quaternions
       as (w, x, y, z).
-    progress: None or a callable(steps_done), called with the GIL about every 0.05 s of a long run; an
-      exception it raises stops the run and propagates.
+    progress: None or a callable(steps_done), called with the GIL after the first step and then about every
+      0.05 s of a long run, however long a step takes; an exception it raises stops the run and propagates.
     
     Returns a SimulationResult, arrays with one row per record (n records): t (n,) [s]; p_W (n, 3) [m];
     q_WB (n, 4) (x, y, z, w); v_W (n, 3) [m/s]; w_B (n, 3) [rad/s]; kinetic_energy (n,) [J];
@@ -3490,10 +3511,12 @@ def simulate(model: typing.Any, initial: typing.Any, dt: typing.Any, steps: typi
     same method (kinetic_energy - kinetic_energy[0] ~ work); diverged; unconverged_steps (implicit solves that
     hit their iteration cap); elapsed_seconds (C++ loop wall time).
     A particle records q = identity, w = 0; a planar body p = (x, y, 0), q = Rz(theta), w = (0, 0, omega).
-    Warns RuntimeWarning and stops if the state becomes non-finite; warns RuntimeWarning (naming dt and the
-    count) if an implicit solve did not converge. Ctrl-C stops the run within about 0.05 s with
-    KeyboardInterrupt (no result is kept). ValueError names a bad argument, also a recording larger than the
-    memory available (record_every, with both figures).
+    Warns RuntimeWarning and stops if the state becomes non-finite; warns RuntimeWarning naming the quantities
+    and their first times if a recorded quantity is not finite although the state is (an overflow, e.g. the
+    kinetic energy of |v_W| > 1e154 m/s); warns RuntimeWarning (naming dt and the count) if an implicit solve
+    did not converge. Ctrl-C stops the run within about 0.05 s however long a step takes (a step under way is
+    finished first) with KeyboardInterrupt (no result is kept). ValueError names a bad argument, also a
+    recording larger than the memory available (record_every, with both figures).
     """
 def simulate_batch(model: typing.Any, initial: typing.Any, dt: typing.Any, steps: typing.Any, method: typing.Any = None, record_every: typing.Any = 1, loads: typing.Any = None, gravity: typing.Any = None, t0: typing.Any = 0.0, threads: typing.Any = None, simd: typing.Any = False, scalar_first: typing.Any = False, progress: typing.Any = None) -> BatchResult | BatchSceneResult:
     """
@@ -3519,17 +3542,21 @@ def simulate_batch(model: typing.Any, initial: typing.Any, dt: typing.Any, steps
     threads: None (the default: every hardware thread) or an int >= 1.
     simd: True runs the SIMD path across samples (RigidBody, method 'rk4', constant loads: a force in W and a
       torque in B without time window): equal to the scalar path up to round-off, not bitwise.
-    progress: None or a callable(samples_done), called with the GIL about every 0.05 s from the calling thread; an
-      exception it raises stops every sample and propagates. Ctrl-C stops every sample within about 0.05 s of a
-      sample's monitor check and raises KeyboardInterrupt (no result is kept).
+    progress: None or a callable(samples_done), called with the GIL from the calling thread once before the samples
+      start and then about every 0.05 s; an exception it raises stops every sample and propagates. Ctrl-C stops every sample within about 0.05 s however
+      long a step takes (the steps under way are finished first) and raises KeyboardInterrupt (no result is kept).
     
     Returns a BatchResult (bodies) or a BatchSceneResult (scenes): the arrays of SimulationResult / SceneResult
     with a leading sample axis (N, n, ...). A sample whose state becomes non-finite stops alone: diverged[i] is
     True, filled[i] its rows, the rest of its rows NaN; one RuntimeWarning names how many samples diverged and
-    the first few. Input errors (N = 0, mismatched N between model, initial, dt, gravity and loads, a wrong dict
-    key or shape, threads < 1) raise ValueError/TypeError naming the argument before any sample runs; an error of
-    one sample (a bad state, a body running out of mass) raises ValueError "sample <i>: ..." for the lowest such
-    sample, after every sample has run.
+    the first few; another names the samples whose recorded quantities became non-finite although their state
+    stayed finite (an overflow, e.g. a kinetic energy of |v_W| > 1e154 m/s), each quantity with its first time.
+    Input errors (N = 0, mismatched N between model, initial, dt, gravity and loads, a wrong dict key or shape,
+    threads < 1) raise ValueError/TypeError naming the argument before any sample runs; an error of one sample (a
+    bad state, a body running out of mass) raises ValueError "sample <i>: ..." for the lowest such sample, after
+    every sample has run. An exception raised by a PythonForce (or its wrong return value) stops every sample
+    within about 0.05 s and is raised, its message prefixed "sample <i>: " (the first sample that raised; a
+    KeyboardInterrupt as it is).
     """
 def slerp(q0: typing.Any, q1: typing.Any, t: typing.Any, scalar_first: typing.Any = False, canonical: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """

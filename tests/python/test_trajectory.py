@@ -59,7 +59,7 @@ def test_a_scalar_first_result_remembers_its_order():
     # the same run, its quaternion only reordered: every column holds the value it names
     assert frame[list(xyzw.to_dataframe().columns)].equals(xyzw.to_dataframe())
     np.testing.assert_array_equal(tj.fields_from_columns(tj.columns(wxyz))["q_WB"], xyzw.q_WB)
-    # True or False still declares the rows' order (a result that records none, e.g. a batch's sample)
+    # True or False still declares the rows' order (a result that records none, e.g. an earlier pickle)
     assert list(wxyz.to_dataframe(scalar_first=True).columns) == list(frame.columns)
     assert list(wxyz.to_dataframe(scalar_first=False).columns) == tj.column_names()
 
@@ -83,7 +83,7 @@ def test_the_order_survives_pickling():
     np.testing.assert_array_equal(back.q_WB, wxyz.q_WB)
     state = wxyz.__getstate__()
     old = type(wxyz).__new__(type(wxyz))
-    old.__setstate__(state[:13])  # a state without the order (an earlier pickle, a batch's sample): (x, y, z, w)
+    old.__setstate__(state[:13])  # a state without the order (an earlier pickle): (x, y, z, w)
     assert old.scalar_first is False
 
 
@@ -104,6 +104,36 @@ def test_a_scene_result_remembers_its_order():
     assert pickle.loads(pickle.dumps(runs[1])).scalar_first is True
     pytest.importorskip("pandas", reason="the dataframe extra (in the test extra: runs in CI)")
     assert list(runs[1].to_dataframe().columns) == list(wxyz)
+
+
+@pytest.mark.parametrize("kind", ["body", "scene"])
+def test_a_batch_remembers_its_order_and_gives_it_to_its_samples(kind):
+    """simulate_batch(..., scalar_first=True) records its order; result[i] (a SimulationResult or SceneResult)
+    carries it, so the sample's columns are labelled by what they hold; the order survives pickling, and a
+    batch pickled without it reads as (x, y, z, w)."""
+    import pickle
+
+    from rigiddyn import scene_result
+    from rigiddyn.scene_file import read_scene
+
+    if kind == "body":
+        state = rd.RigidBodyState(q_WB=[0.1, 0.2, 0.3, np.sqrt(1 - 0.14)], w_B=[0.3, 7.0, -0.2])
+        model, initial, dt = rd.RigidBody(2.0, [1.0, 2.0, 3.0]), [state, state], 0.01
+        table = tj.columns
+    else:
+        file = read_scene("satellite_boom")
+        model, initial, dt = file.scene, [file.initial, file.initial], 0.02
+        table = scene_result.columns
+    plain, wxyz = (rd.simulate_batch(model, initial, dt=dt, steps=10, scalar_first=first) for first in (False, True))
+    assert (plain.scalar_first, wxyz.scalar_first) == (False, True)
+    assert (plain[1].scalar_first, wxyz[1].scalar_first) == (False, True)
+    for name, values in table(plain[1]).items():
+        np.testing.assert_array_equal(table(wxyz[1])[name], values, err_msg=name)  # each column holds what it names
+    back = pickle.loads(pickle.dumps(wxyz))
+    assert back.scalar_first is True and back[0].scalar_first is True
+    old = type(wxyz).__new__(type(wxyz))
+    old.__setstate__(wxyz.__getstate__()[:-1])  # an earlier pickle, without the order: (x, y, z, w)
+    assert old.scalar_first is False
 
 
 @pytest.mark.parametrize("suffix", ["csv", "npz", "parquet"])
