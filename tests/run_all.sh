@@ -19,10 +19,12 @@ bash tests/install_debian_packages.sh "${packages[@]}"
 
 # ccache: the library compiled once for the extension (pip) serves the C++ tests' build below, and a
 # second run reuses every compilation. CCACHE_BASEDIR makes the paths relative, so the two build folders
-# (build/<wheel tag>, build/test) share entries. CMake reads CMAKE_CXX_COMPILER_LAUNCHER.
-export CMAKE_CXX_COMPILER_LAUNCHER=ccache CCACHE_BASEDIR="$PWD"
+# (build/<wheel tag>, build/test) share entries; both compile with g++ against Debian's Eigen
+# (tests/pip_install.sh). CMake reads CMAKE_CXX_COMPILER_LAUNCHER and CXX.
+export CMAKE_CXX_COMPILER_LAUNCHER=ccache CCACHE_BASEDIR="$PWD" CXX="${CXX:-g++}"
 
-python3 -m pip install --quiet ".[test]"
+# the package with the test and docs extras, once (tests/docs/run.sh below finds it installed)
+bash tests/pip_install.sh test,docs
 # (-p no:benchmark: pytest-benchmark, where a machine has it, warns under xdist, and warnings are errors)
 python3 -m pytest -n auto -p no:benchmark
 

@@ -11,6 +11,8 @@
 #include "rigiddyn/integrators/method.hpp"
 #include "rigiddyn/simulate/simulate.hpp"
 
+#include <Eigen/Eigenvalues>
+
 #include <cmath>
 #include <cstdlib>
 #include <fstream>

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Installs rigiddyn from this tree with the extras named (comma-separated), built the same way every
+# time so that installing again compiles only what changed. Used by tests/run_all.sh and
+# tests/docs/run.sh; run from anywhere:
+#   bash tests/pip_install.sh test,docs
+# - Without pip's build isolation (its build requirements, [build-system] requires of pyproject.toml,
+#   installed into this Python first): an isolated build compiles against the pybind11 and Eigen
+#   headers of a new temporary folder each time, so every command line changes and the persistent
+#   build folder (build/<wheel tag>) is rebuilt from scratch.
+# - Against Debian's Eigen where libeigen3-dev is installed (the C++ tests' build uses it), and with
+#   g++ as the C++ tests' build has it: the library's objects compiled for the extension are then
+#   ccache hits for the C++ tests' build (tests/run_all.sh sets the launcher and its base folder).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+extras="${1:?usage: bash tests/pip_install.sh EXTRA[,EXTRA...]}"
+
+requires=$(python3 - <<'EOF'
+try:
+    import tomllib
+except ImportError:  # Python < 3.11: pip's own copy of the same parser
+    from pip._vendor import tomli as tomllib
+with open("pyproject.toml", "rb") as f:
+    print("\n".join(tomllib.load(f)["build-system"]["requires"]))
+EOF
+)
+mapfile -t requires <<< "$requires"
+python3 -m pip install --quiet "${requires[@]}"
+
+options=(--no-build-isolation)
+if [ -f /usr/share/eigen3/cmake/Eigen3Config.cmake ]; then
+  options+=(--config-settings=cmake.define.Eigen3_DIR=/usr/share/eigen3/cmake)
+fi
+CXX="${CXX:-g++}" python3 -m pip install --quiet "${options[@]}" ".[$extras]"
