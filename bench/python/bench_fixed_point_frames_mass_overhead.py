@@ -14,8 +14,8 @@ loop, wrapping the records), the fastest of several runs. So the overhead printe
 also counts compiling the scene, which a C++ caller of simulate(scene, ...) pays too: it bounds the Python
 overhead from above.
 
-    python bench/python/bench_issue12_overhead.py           # 100 000 steps
-    python bench/python/bench_issue12_overhead.py --small   # 5 000 steps (what ctest runs)
+    python bench/python/bench_fixed_point_frames_mass_overhead.py           # 100 000 steps
+    python bench/python/bench_fixed_point_frames_mass_overhead.py --small   # 5 000 steps (what ctest runs)
 """
 
 import time
