@@ -1,4 +1,5 @@
-"""The Python overhead of rigiddyn.simulate on each model of issue 12 (the issue: < 10 % over the C++ call).
+"""The Python overhead of rigiddyn.simulate on each model of a body about a fixed point, a moving frame or
+variable mass (target: < 10 % over the C++ call).
 
 For each model, one run of `steps` RK4 steps recording every step (the arrays the user gets: SceneResult
 adopts the C++ records without a copy) and one recording only the first and last state:

@@ -1,5 +1,6 @@
-"""The figures of the shipped scenes of issue 12 quoted in docs/fixed_point_frames_mass.md (section 5):
-each scene run with its file's [run] (method, dt, duration) and measured against its closed form.
+"""The figures of the shipped pendulum, heavy_top, foucault and rocket scenes quoted in
+docs/fixed_point_frames_mass.md (section 5): each scene run with its file's [run] (method, dt, duration) and
+measured against its closed form.
 
     PYTHONPATH=build/<dir>/python python3 bench/python/fixed_point_frames_mass_figures.py
 
