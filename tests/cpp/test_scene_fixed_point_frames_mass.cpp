@@ -1,7 +1,7 @@
-// The scene pipeline's issue-12 parts (api12.md §2): pivoted bodies, the scene frame and mass flows in
-// SceneModel; each fast one-body model equals the generic model on the same scene; mixed scenes keep what
-// they must (energy, the frame equivalence, Tsiolkovsky's momentum bookkeeping); the refusals and warnings
-// of compile and simulate.
+// The scene pipeline's parts for bodies about a fixed point, moving frames and variable mass: pivoted bodies,
+// the scene frame and mass flows in SceneModel; each fast one-body model equals the generic model on the same
+// scene; mixed scenes keep what they must (energy, the frame equivalence, Tsiolkovsky's momentum bookkeeping);
+// the refusals and warnings of compile and simulate.
 #include <gtest/gtest.h>
 
 #include "rigiddyn/scene/simulate_scene.hpp"

@@ -1,4 +1,4 @@
-"""The exact layer at extreme magnitudes (issue 9, items 9 and 10): Carlson's R_F and R_J for arguments
+"""The exact layer at extreme magnitudes: Carlson's R_F and R_J for arguments
 spanning 1e-300..1e300 (they used to loop forever or return NaN), and the torque-free solution for any
 finite inertia and angular velocity (computed in units scaled by powers of two).
 

@@ -1,4 +1,4 @@
-// Golden states (issue 11, item 0): the refactoring of the models and integrators into the scene
+// Golden states: the refactoring of the models and integrators into the scene
 // pipeline must not move a single bit of any trajectory. Every method of method_table() runs, through
 // the PUBLIC simulate and step, on every one-body model (particle, planar body, rigid body with a
 // spherical, a principal and a full inertia) under every load kind (none; fixed: world force, body
@@ -10,7 +10,7 @@
 // hence every rounding, must be the same (no -ffp-contract/-march flag is set by the project; a build
 // that adds one may contract differently and must regenerate the file from its own HEAD build).
 // Regenerated only for a deliberate change of arithmetic, named here: RK4's final update as one sum
-// times h/6 (issue 12; only the rk4 lines changed).
+// times h/6 (only the rk4 lines changed).
 // A case that throws (the 'exact' method refuses a torque) stores its message; the test checks it
 // still throws the same.
 #include "rigiddyn/integrators/method.hpp"
