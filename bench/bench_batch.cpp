@@ -1,4 +1,4 @@
-// Batch runs (issue 13, "Performance"): simulate_batch of N tumbling bodies × n RK4 steps, recording only
+// Batch runs, performance: simulate_batch of N tumbling bodies × n RK4 steps, recording only
 // the first and the last state of each sample (record_every = n), against a hand-written scalar RK4 loop
 // over the same samples in the same run.
 //   batch_rk4:rigiddyn/threads:T  rigiddyn::simulate_batch(threads = T) (batch/simulate_batch.hpp)
@@ -10,7 +10,7 @@
 //   batch_scaling                 counters scaling_rigiddyn = t(1 thread) / t(2 threads) of simulate_batch
 //                                 and scaling_hand, the same of the hand loop, timed alternately in the same
 //                                 iterations (the hand loop's figure is what the machine's load allows:
-//                                 read the library's against it). Target (issue 13): >= 1.8 on 2 cores.
+//                                 read the library's against it). Target: >= 1.8 on 2 cores.
 //                                 cpu_2_over_1_*: process CPU time of the 2-thread run / the 1-thread run's
 //                                 (1 = threading adds no work; independent of the load, unlike the scaling)
 // The problem: a T-handle (m = 0.1 kg, I = diag(2, 6.5, 8)e-5 kg m², the tumbling body of
@@ -19,7 +19,7 @@
 // 2.8); dt = 0.01 s. bench/python/bench_batch.py runs the same problem against MuJoCo.
 // Full size: N = 10⁴ samples × n = 10³ steps; ctest (RIGIDDYN_BENCH_SMALL=1): 64 × 100.
 // The hand loop is an out-of-line function (hand_rk4_samples), so that
-//   valgrind --tool=callgrind --toggle-collect='*hand_rk4_samples*' build/lead/bench/bench_batch
+//   valgrind --tool=callgrind --toggle-collect='*hand_rk4_samples*' build/<dir>/bench/bench_batch
 //     --benchmark_filter='batch_rk4:baseline/threads:1$'
 // counts its instructions alone (and --toggle-collect='*simulate_batch*' the library's).
 #include <benchmark/benchmark.h>

@@ -8,7 +8,7 @@
 // implicit_midpoint 301, splitting_dlm 148, splitting_dlm_yoshida4 430, exact_flow_kick 572 (was 5670
 // before FreeRotationFlow and the duplication R_J), rk4 57 ns/step; exact_state 286 ns/evaluation
 // (was 1580); hand-written RK4 baseline ~90 ns/step.
-// The splittings' rotations by increments (|L| a round-off walk, issue 9), measured on 2026-11-23 as
+// The splittings' rotations by increments (|L| a round-off walk, not a drift), measured on 2026-11-23 as
 // rigiddyn/baseline, median of 3 runs each, before → after: splitting_dlm 1.47 → 1.52,
 // splitting_dlm_yoshida4 4.17 → 4.16 (`--benchmark_filter=splitting --benchmark_min_time=0.2`).
 #include <benchmark/benchmark.h>

@@ -1,4 +1,4 @@
-// Dynamics in a moving frame (issue 12, "Performance"): ns per RK4 step, each next to a hand-written loop of
+// Dynamics in a moving frame, performance: ns per RK4 step, each next to a hand-written loop of
 // the same method on plain double arrays in the same run (bench_main.cpp prints rigiddyn/baseline).
 //   rotating_particle_rk4        the fast model RotatingFrameParticleModel (one particle in a frame turning at
 //                                a constant rate, under gravity) vs a hand loop with the centrifugal and
@@ -11,7 +11,7 @@
 // hand_rotating_rk4, hand_inertial_rk4); per step = its inclusive Ir / (calls × n), n = 2000 under
 // RIGIDDYN_BENCH_SMALL=1:
 //   RIGIDDYN_BENCH_SMALL=1 valgrind --tool=callgrind --callgrind-out-file=/tmp/cg.out \
-//     build/lead/bench/bench_moving_frame --benchmark_min_time=0.01
+//     build/<dir>/bench/bench_moving_frame --benchmark_min_time=0.01
 //   callgrind_annotate --inclusive=yes /tmp/cg.out | grep -E "model_rk4|hand_"   (Ir; calls: --tree=caller)
 #include <benchmark/benchmark.h>
 

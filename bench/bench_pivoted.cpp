@@ -1,4 +1,4 @@
-// Bodies about a fixed point (issue 12, "Performance"): the fast model of one pivoted body
+// Bodies about a fixed point, performance: the fast model of one pivoted body
 // (scene/fast/pivoted_body_model.hpp) stepped by RK4 next to a hand-written RK4 loop of the same equations
 // in the same run; target ≤ 1.2×.
 //   heavy_top_rk4      the symmetric heavy top under gravity (PrincipalEuler, c on the axis): per step
@@ -11,7 +11,7 @@
 // Callgrind (instructions per step, machine-independent): the loops are the noinline functions
 // *steps_rigiddyn* and *steps_baseline*, e.g.
 //   valgrind --tool=callgrind --toggle-collect='*steps_rigiddyn*' --toggle-collect='*steps_baseline*' \
-//     build/lead/bench/bench_pivoted --benchmark_filter=heavy_top_rk4 --benchmark_min_time=0.01
+//     build/<dir>/bench/bench_pivoted --benchmark_filter=heavy_top_rk4 --benchmark_min_time=0.01
 //   callgrind_annotate --inclusive=yes callgrind.out.<pid> | grep steps_
 // (Ir of each function / (its calls × steps per call)).
 #include <benchmark/benchmark.h>

@@ -1,4 +1,4 @@
-// Scenes (issue 11, "Performance"): the cost of a declared scene next to what it replaces, in one run.
+// Scenes, performance: the cost of a declared scene next to what it replaces, in one run.
 //   nbody_gravity_rk4/N             N gravitating particles (MutualGravity), the compiled scene's model
 //                                   stepped by RK4, vs a hand-written RK4 on the same direct sum
 //                                   (scene_baselines.hpp, the packed columns); N = 10 … 4000 gives the N²

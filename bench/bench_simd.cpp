@@ -1,4 +1,4 @@
-// SIMD across samples (issue 13, "Performance": the SIMD path >= 3x the per-sample throughput of the scalar
+// SIMD across samples (target: the SIMD path >= 3x the per-sample throughput of the scalar
 // hand-written RK4 loop on one core). 10^4 tumbling rigid bodies x 10^3 RK4 steps, recording only the last
 // state (RIGIDDYN_BENCH_SMALL=1: 256 x 100), on one thread:
 //   tumbling_rk4_<lanes>  simulate_batch_simd with each SimdLanes (eigen2/4/8: Eigen arrays, vector4/8:
@@ -11,8 +11,8 @@
 // One op = one sample-step; bench_main prints rigiddyn/baseline (the SIMD speed-up is its inverse). Each
 // baseline is checked first to compute the same final states as the SIMD path (relative 1e-12).
 // Both stepping loops are out-of-line functions, so that
-//   valgrind --tool=callgrind --toggle-collect='*lane_rk4_steps*' build/lead/bench/bench_simd --benchmark_filter=tumbling_rk4_vector4:rigiddyn
-//   valgrind --tool=callgrind --toggle-collect='*hand_rk4_steps*' build/lead/bench/bench_simd --benchmark_filter=tumbling_rk4_vector4:baseline
+//   valgrind --tool=callgrind --toggle-collect='*lane_rk4_steps*' build/<dir>/bench/bench_simd --benchmark_filter=tumbling_rk4_vector4:rigiddyn
+//   valgrind --tool=callgrind --toggle-collect='*hand_rk4_steps*' build/<dir>/bench/bench_simd --benchmark_filter=tumbling_rk4_vector4:baseline
 // count the instructions of each alone (Ir / (samples x steps x iterations): instructions per sample-step).
 #include <benchmark/benchmark.h>
 

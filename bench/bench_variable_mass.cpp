@@ -1,4 +1,4 @@
-// Variable mass (issue 12, "Performance": variable-mass particle ≤ 1.2× a hand-written loop).
+// Variable mass, performance (target: the variable-mass particle ≤ 1.2× a hand-written loop).
 //   variable_mass_particle_rk4   the fast model (scene/fast/variable_mass_particle_model.hpp) stepped by
 //                                rigiddyn's Rk4, vs a hand-written RK4 on a double[10] of the same
 //                                equations and outputs: p, v, m, t, the work of gravity and of the thrust

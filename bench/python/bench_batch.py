@@ -1,6 +1,6 @@
-"""Batch runs against MuJoCo's rollout and on a Dask LocalCluster (issue 13, "Performance").
+"""Batch runs against MuJoCo's rollout and on a Dask LocalCluster.
 
-  PYTHONPATH=build/lead/python python3 bench/python/bench_batch.py [--small] [--part scaling|mujoco|dask ...]
+  PYTHONPATH=build/<dir>/python python3 bench/python/bench_batch.py [--small] [--part scaling|mujoco|dask ...]
 
 The problem (the same as bench/bench_batch.cpp): N free T-handles (m = 0.1 kg, I = diag(2, 6.5, 8)e-5
 kg m^2, python/rigiddyn/problems/t_handle.toml), no gravity, no loads, each from a uniform random attitude
@@ -47,7 +47,7 @@ MASS = 0.1  # [kg]
 INERTIA = (2.0e-5, 6.5e-5, 8.0e-5)  # principal moments about the centre of mass [kg m^2]
 DT = 0.01  # [s]
 SEED = 20261124
-COMMAND = "PYTHONPATH=build/lead/python python3 bench/python/bench_batch.py"
+COMMAND = "PYTHONPATH=build/<dir>/python python3 bench/python/bench_batch.py"
 
 
 def cores():

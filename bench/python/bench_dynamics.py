@@ -1,7 +1,7 @@
 """simulate() from Python against the same run timed inside C++, and against the numpy reference.
 
-One free rigid body (I = diag(1, 2, 3), w_B = (0.3, 2, 0.5)) stepped by RK4 (and every method of
-this issue) for n steps, recording every 1000th step:
+One free rigid body (I = diag(1, 2, 3), w_B = (0.3, 2, 0.5)) stepped by RK4 (and every classical
+method) for n steps, recording every 1000th step:
   - python: wall time of rd.simulate(...) called from Python (argument conversion, GIL release,
     the C++ loop, result arrays);
   - c++: result.elapsed_seconds, the wall time of the same C++ stepping loop measured inside the

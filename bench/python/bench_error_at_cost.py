@@ -1,5 +1,5 @@
 """Error at equal cost for EVERY method of rigiddyn.methods(), against the exact torque-free solution
-(rigiddyn.TorqueFreeSolution), on the two problems of issue 5 (I = diag(1, 2, 3) kg m^2, 100 s):
+(rigiddyn.TorqueFreeSolution), on two problems (I = diag(1, 2, 3) kg m^2, 100 s):
 
   tumbling  w0 = (0.01, 2, 0.01) rad/s  (near the intermediate-axis separatrix: flips)
   fast_spin w0 = (0.1, 0.1, 50) rad/s

@@ -17,12 +17,12 @@ the initial separation) with and without softening; a spring chain with masses 1
 particles and of rigid cubes joined at their faces (the springs turn them). The pytest subset is
 tests/python/test_extremes_scene.py.
 
-Issue 12's models (in the scene table, against their exact reference where the scene is one's case,
-rigiddyn.scene_precision.exact_reference; the reference column says which): the shipped `pendulum`,
-`heavy_top`, `foucault` and `rocket`, and their extremes: the pendulum next to the separatrix
-(theta0 = pi - 1e-6) and spun over the top, the heavy top at dt |w| from 0.02 to 2 and pinned 1e4
-radii of gyration from its centre of mass (digits of I_C lost), the rocket burning to 1 % of its mass,
-free particles seen from a frame turning at dt Omega = 0.5.
+The models of bodies about a fixed point, moving frames and variable mass (in the scene table, against their
+exact reference where the scene is one's case, rigiddyn.scene_precision.exact_reference; the reference column
+says which): the shipped `pendulum`, `heavy_top`, `foucault` and `rocket`, and their extremes: the pendulum next
+to the separatrix (theta0 = pi - 1e-6) and spun over the top, the heavy top at dt |w| from 0.02 to 2 and pinned
+1e4 radii of gyration from its centre of mass (digits of I_C lost), the rocket burning to 1 % of its mass, free
+particles seen from a frame turning at dt Omega = 0.5.
 
 The document records how it was made (command, date, machine, rigiddyn revision) and a digest of its
 INPUTS; tests/python/test_generated_docs.py fails once any input differs from what the document was
@@ -50,7 +50,8 @@ ROOT = Path(__file__).resolve().parents[2]
 INPUTS = ["bench/python/bench_extremes.py", *SIMULATION_INPUTS, "python/rigiddyn/scene_precision.py",
           "cpp/include/rigiddyn/scene/*", "cpp/include/rigiddyn/scene/elements/*", "cpp/src/scene/*",
           "cpp/bindings/bind_scene*.cpp", "cpp/bindings/scene_run.hpp",
-          # issue 12: the fast one-body models, the bindings of the new bodies and references, the shipped scenes
+          # bodies about a fixed point, moving frames, variable mass: the fast one-body models, the bindings of
+          # the new bodies and references, the shipped scenes
           "cpp/include/rigiddyn/scene/fast/*", "cpp/bindings/bind_pivoted.cpp", "cpp/bindings/pivoted.hpp",
           "cpp/bindings/bind_exact_dynamics.cpp", "python/rigiddyn/scene_file.py", "python/rigiddyn/scenes/*.toml"]
 REGENERATE = ("cmake --build build/<dir> --target _core && "
@@ -156,8 +157,9 @@ def rocket(burnt):
     return (scene, initial), burnt * 200.0 / 2.0
 
 
-def issue12_cases(small):
-    """Issue 12's models: the shipped scenes and their extremes, (group, case, (scene, initial), dt, steps)."""
+def fixed_point_frames_mass_cases(small):
+    """Bodies about a fixed point, moving frames, variable mass: the shipped scenes and their extremes,
+    (group, case, (scene, initial), dt, steps)."""
     n = 1000 if small else 20_000
     out = []
     for name in ("pendulum", "heavy_top", "foucault"):
@@ -193,7 +195,7 @@ def scene_cases(small):
     for dt in (1e-4, 1e-2):
         out.append(("mass ratio", f"rigid cubes of 1e-6, 1, 1e6 kg joined at their faces, dt omega = {dt * cube_rate:.2g}",
                     rigid_chain(), dt, n))
-    return out + issue12_cases(small)
+    return out + fixed_point_frames_mass_cases(small)
 
 
 def cases(small):
@@ -411,7 +413,7 @@ error: the larger relative error of the total linear and angular momentum. Outco
 stability judged from the scene's linear modes (`rigiddyn.stability.scene_modes`: springs, gravity, drag),
 and **not applicable** where compiling the scene for the method refuses it (the reason given).
 An unsoftened close encounter has no linear warning at the start: its error grows at the pericentre.
-The last rows are issue 12's models: bodies pinned at a point, a frame turning with the Earth or a
+The last rows are the models of bodies pinned at a point, a frame turning with the Earth or a
 carousel, a rocket losing 99 % of its mass (docs/fixed_point_frames_mass.md). Energy error there: the
 Jacobi integral in a rotating frame; with a mass flow the energy is not conserved (the thrust works)
 and its error is measured against the exact reference's.

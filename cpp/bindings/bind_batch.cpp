@@ -672,7 +672,7 @@ BatchResult body_batch(py::handle model, py::handle initial, py::handle dt, py::
   }
   BatchTrajectory b = run_without_gil(o, progress, [&](const SimulationOptions& opt) {
     if constexpr (std::is_same_v<Body, RigidBody>) {
-      // the SIMD path (engineer B's batch/simd_rigid_body.hpp); its own checks name loads (a time window, a
+      // the SIMD path (batch/simd_rigid_body.hpp); its own checks name loads (a time window, a
       // torque in W or a force in B)
       if (simd_path) return simulate_batch_simd(bodies, states, opt, p, c.threads);
     }

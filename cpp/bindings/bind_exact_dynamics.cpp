@@ -1,4 +1,5 @@
-// Python bindings of the exact references of issue 12's models: the compound pendulum, the heavy
+// Python bindings of the exact references of bodies about a fixed point, moving frames and variable
+// mass: the compound pendulum, the heavy
 // symmetric (Lagrange) top, the free particle seen from a turning frame, the constant-rate burn
 // (exact/compound_pendulum.hpp, lagrange_top.hpp, rotating_frame.hpp, constant_thrust.hpp). Each class
 // keeps its constructor's arguments: its repr reads as that call, it pickles as them, and == compares them

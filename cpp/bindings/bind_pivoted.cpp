@@ -1,5 +1,5 @@
-// Python bindings of the bodies about a fixed point (models/pivoted_body.hpp, pivoted_planar_body.hpp;
-// issue 12 item 1): PivotedBody (the heavy top, the gyroscope), PivotedPlanarBody (the compound pendulum),
+// Python bindings of the bodies about a fixed point (models/pivoted_body.hpp, pivoted_planar_body.hpp):
+// PivotedBody (the heavy top, the gyroscope), PivotedPlanarBody (the compound pendulum),
 // their states, and their forward and inverse dynamics (dynamics/pivoted_body_dynamics.hpp) with the result
 // classes. forward_dynamics / inverse_dynamics (bind_bodies.cpp) and simulate / step (bind_dynamics.cpp)
 // route a pivoted body here (pivoted.hpp). "W" is the scene frame: W itself (inertial) for these functions.

@@ -1,6 +1,6 @@
 // Python bindings of the force elements of a scene (scene/elements/*.hpp): UniformGravity,
 // PointMassGravity, MutualGravity, GravityGradient, SpringDamper, Drag, ScheduledLoads, PythonForce
-// (the C++ FunctionForce calling a Python callable with the GIL) and Thrust (issue 12). Each class has a keyword constructor
+// (the C++ FunctionForce calling a Python callable with the GIL) and Thrust. Each class has a keyword constructor
 // that converts and checks every argument by name (TypeError/ValueError "<argument>: expected ..."),
 // read-only attributes, a repr that evaluates back to an equal element, pickle and ==. What needs the
 // scene's bodies (an index in range, a load the body's kind can take) is checked by Scene.add.

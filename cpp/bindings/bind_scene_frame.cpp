@@ -1,5 +1,5 @@
 // Python bindings of a scene's moving frame (scene/scene_frame.hpp) and of a body's mass flow
-// (scene/mass_flow.hpp; issue 12 items 2 and 3): SceneFrame (rotating, earth, moving with a FrameMotion)
+// (scene/mass_flow.hpp): SceneFrame (rotating, earth, moving with a FrameMotion)
 // and MassFlow (a constant rate or a Python callable of t; the inertia scaled with the mass or a Python
 // callable of m). Python callables are called with the GIL taken for the call (a run releases it), as
 // PythonForce does; an exception they raise stops the run and propagates, and a non-finite value raises

@@ -151,7 +151,7 @@ def measure_task_overhead(client: Any, tasks: int | None = None) -> float:
     empty tasks submitted together (default 10 per worker thread, at least 20; after a warm-up round),
     divided by `tasks` and multiplied by the worker threads, i.e. the time each task takes from a worker
     thread beyond its own work. Measured on a 2-worker LocalCluster of a 2-core machine: 4-17 ms under a
-    load average of 10 (docs/distributed.md); 1.6-2.1 ms idle (issue 13)."""
+    load average of 10 (docs/distributed.md); 1.6-2.1 ms idle."""
     distributed = _distributed()
     if distributed is None or not isinstance(client, distributed.Client):
         raise TypeError(f"client: expected a distributed.Client, got {client!r}")

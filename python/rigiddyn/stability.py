@@ -30,7 +30,7 @@ checked with the method's one-step map on x'' = -k x - gamma x' (oscillator_map;
 stability_limit on dt (sqrt|k| + gamma) for a method not modelled there). The modes are taken one at a
 time and at the start only: an estimate of the scene's fastest rates, not its full linearisation.
 
-Issue 12's bodies and frames (same reasoning, their own rates):
+Bodies about a fixed point and moving frames (same reasoning, their own rates):
 - a pivoted body (PivotedBody) turns about its pivot O with Euler's equations about O, I_O w' = tau_O -
   w x I_O w ("Rigid body kinematics and dynamics" notes, M_O = dH_O/dt): its spin is checked as a rigid
   body's above with the inertia about O, I_O (torque-free along its orbit when the scene has no element

@@ -22,7 +22,7 @@ horizon, measures the cost (wall time of the C++ loop per step; derivative evalu
   compared. Loads switching inside a step cost no accuracy: `simulate` splits such a step at the
   switch time, so every method keeps its order.
 
-Error measures (the SciML work-precision convention, shared/notes/free-rigid-body.md), "final_"
+Error measures (the SciML work-precision convention), "final_"
 at the horizon and "max_" over the recorded states:
   attitude_error  geodesic angle |log(q_ref^-1 q)| [rad]
   momentum_error  |I (w_B - w_ref)| / |I w_ref| (body angular momentum relative to G)

@@ -511,7 +511,7 @@ TEST(ConstantThrustSolution, MatchesTheOdeAndTsiolkovsky) {
     const double textbook = u_rel.norm() * std::log(m0 / m1);
     EXPECT_NEAR(solution.delta_v(m1), textbook, (4 + 1 / std::log(m0 / m1)) * kEps * textbook) << t;
   }
-  // 1e-9 relative (the issue's figure): the thrust's velocity change with gravity removed
+  // 1e-9 relative (the required accuracy): the thrust's velocity change with gravity removed
   EXPECT_NEAR((solution.at(20.0).v_W - v0 - g * 20.0).norm(), solution.delta_v(60.0), 1e-9 * solution.delta_v(60.0));
   // no mass change: a plain ballistic arc, exactly
   const ConstantThrustSolution coasting(m0, 0.0, u_rel, g, p0, v0);
@@ -557,7 +557,7 @@ TEST(ConstantThrustSolution, RefusesBadInput) {
 }
 
 // ---------------------------------------------------------------- states across the double range
-// (fuzz review of issue 12: underflow and overflow of intermediates; each test failed before the fix)
+// (found by fuzzing: underflow and overflow of intermediates; each test failed before the fix)
 
 std::string message_of(const std::function<void()>& make) {
   try {

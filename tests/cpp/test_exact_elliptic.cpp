@@ -113,7 +113,7 @@ TEST(CarlsonIntegrals, MatchBoost) {
   EXPECT_LE(worst_rj, 16 * kEps);
 }
 
-// Arguments spanning the double range (issue 9): R_F(1, 1e306, 1) and R_J(1, 1e306, 1, 1) looped forever,
+// Arguments spanning the double range: R_F(1, 1e306, 1) and R_J(1, 1e306, 1, 1) looped forever,
 // R_J(1e-300, 1e300, 1e8, 1e16) was NaN, and the next two overflowed in the scaled units. References:
 // mpmath at 400 digits (fewer are not enough: at 50 digits its R_J of the fifth case is 3.6x off), by
 //   python3 -c 'import mpmath as mp; mp.mp.dps = 400; a = [mp.mpf(x) for x in (x, y, z, p)]

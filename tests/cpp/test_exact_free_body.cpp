@@ -113,7 +113,7 @@ TEST(TorqueFreeSolution, RequiresARealizableInertiaByDefault) {
                                      Eigen::Vector3d(1, 2, 3)));
 }
 
-// Any finite magnitudes (issue 9, item 10): I -> 2^j I is exact and leaves the motion unchanged, and the
+// Any finite magnitudes: I -> 2^j I is exact and leaves the motion unchanged, and the
 // solution scales the inertia by a power of two itself, so both make the same operations: equal to the
 // last bit in every branch, also where the momentum I w (2^±1000 times that of I) is not representable.
 // Rates of the motion beyond the double range are refused naming w_B; invariants beyond it are inf.

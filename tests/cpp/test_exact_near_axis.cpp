@@ -1,4 +1,4 @@
-// The exact torque-free solution close to a principal axis (issue 9, item 3): the transverse body
+// The exact torque-free solution close to a principal axis: the transverse body
 // momentum |m⊥| from the smallest subnormal to 1e-3 |L|, log-spaced, about each principal axis, with
 // either sign of the axial momentum, for a triaxial body, a permuted one and (nearly) symmetric ones.
 //  - state_at(0) is the initial state (no reference needed);
@@ -143,9 +143,9 @@ TEST(TorqueFreeSolution, NearEachPrincipalAxisKeepsTheAttitudeToUlps) {
               worst_ulps[0], worst_ulps[1], worst_ulps[2]);
 }
 
-// The issue's case: I = diag(2, 3, 5), body momentum (3.5 √(smallest subnormal), 0, 1): the
+// The reported case: I = diag(2, 3, 5), body momentum (3.5 √(smallest subnormal), 0, 1): the
 // elliptic parameter m ~ 1e-323 used to be a subnormal of a few bits (0.010 rad wrong at t = 0).
-TEST(TorqueFreeSolution, IssueCaseNearTheMajorAxis) {
+TEST(TorqueFreeSolution, ReportedCaseNearTheMajorAxis) {
   const Eigen::Vector3d I(2.0, 3.0, 5.0), m0(3.5 * std::sqrt(kSmallestSubnormal), 0.0, 1.0);
   const Eigen::Vector3d w0 = m0.cwiseQuotient(I);
   const TorqueFreeSolution s(I.asDiagonal(), initial_attitude(), w0, InertiaCheck::allow_unrealizable);

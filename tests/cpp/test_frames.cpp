@@ -49,7 +49,7 @@ const Vector3d p_R2P_R2(r, 0, 0);
 const Vector3d c_s_0(std::cos(theta), std::sin(theta), 0);
 const Vector3d textbook_answer_R1(-16 * r * std::cos(theta), -41 * r * std::sin(theta), 40 * r * std::cos(theta));
 
-TEST(SeedWorkedExample, DiskAnglesAndAngularVelocityAndAcceleration) {
+TEST(CraigWorkedExample, DiskAnglesAndAngularVelocityAndAcceleration) {
   for (double L : {0.0, 0.25}) {
     const FrameTree tree = shaft_and_disk(L);
     const Vector3d r_OP_R1 = tree.point_position("disk", p_R2P_R2, "shaft", "shaft", t_example) - Vector3d(L, 0, 0);
@@ -66,7 +66,7 @@ TEST(SeedWorkedExample, DiskAnglesAndAngularVelocityAndAcceleration) {
   }
 }
 
-TEST(SeedWorkedExample, FirstSolutionPointFixedInDisk) {
+TEST(CraigWorkedExample, FirstSolutionPointFixedInDisk) {
   for (double L : {0.0, 0.25}) {
     const PointAcceleration a =
         shaft_and_disk(L).point_acceleration("disk", p_R2P_R2, Vector3d::Zero(), Vector3d::Zero(), "world", "shaft", t_example);
@@ -80,7 +80,7 @@ TEST(SeedWorkedExample, FirstSolutionPointFixedInDisk) {
   }
 }
 
-TEST(SeedWorkedExample, AlternateSolutionPointMovingInShaft) {
+TEST(CraigWorkedExample, AlternateSolutionPointMovingInShaft) {
   const FrameTree tree = shaft_and_disk(0.0);
   // P seen from R1: it circles O at 4 rad/s; its velocity and acceleration in R1 from the library
   const Vector3d r_OP_R1 = tree.point_position("disk", p_R2P_R2, "shaft", "shaft", t_example);
@@ -327,7 +327,7 @@ TEST(ConstantRotation, AnyFiniteAngleGivesARotation) {
 }
 
 TEST(DeepChain, EveryWalkIsIterative) {
-  // issue 9 item 8: a chain of 12 000 frames overflowed the stack of a recursive walk; 100 000 here
+  // a chain of 12 000 frames overflowed the stack of a recursive walk; 100 000 here
   constexpr int depth = 100000;
   constexpr double rate = 1e-4, t = 1.0;
   FrameTree tree;

@@ -151,7 +151,7 @@ struct Conservation {
 TEST(Geometric, InvariantsOverAMillionStepsWithoutDrift) {
   const RigidBody body(1.0, kDiagonal);
   // Bounds: |L| (all four) and the midpoint's energy are kept exactly in exact arithmetic: round-off
-  // only, a random walk of <= 2 eps per (sub)step stays within 5 sigma = 10 eps sqrt(N) (issue 9's
+  // only, a random walk of <= 2 eps per (sub)step stays within 5 sigma = 10 eps sqrt(N) (the
   // bound for the Lie-Poisson methods); the exact flow's closed form rounds with a bias (~3e-17 per
   // step, exact/free_body.cpp): worst case linear, 4 eps N. The splittings' energy error is
   // bounded, C (h|ω|)^p with h|ω| = 0.02 (backward error analysis; the method table states 8e-3 at

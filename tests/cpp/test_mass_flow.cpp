@@ -1,4 +1,4 @@
-// Mass flows and the Thrust element (scene/mass_flow.hpp, scene/elements/thrust.hpp, api12.md §4): every
+// Mass flows and the Thrust element (scene/mass_flow.hpp, scene/elements/thrust.hpp): every
 // check names its field; the inertia rules; the torque scale against Euler's equations of I(m); the
 // out-of-mass error and the up-front check of a constant rate at the exact grid step; the thrust's force,
 // torque and power against the notes' eq. (4.36) written out by hand at random states.

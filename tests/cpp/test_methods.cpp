@@ -87,7 +87,7 @@ TEST(Splitting, KeepsAngularMomentumExactlyBeyondItsStabilityLimit) {
     const Trajectory r = simulate(body, spinning({0.1, 10.0, 0.0}), torque_free(method, 1.0, 1000));  // dt |w| = 10
     ASSERT_FALSE(r.diverged);
     // exact rotations of m: round-off only, a random walk of <= 2 eps per sub-flow step (1 for DLM,
-    // 3 for Yoshida's triple jump): 5 sigma = 10 eps sqrt(N) (issue 9's bound)
+    // 3 for Yoshida's triple jump): 5 sigma = 10 eps sqrt(N)
     const double substeps = method == Method::splitting_dlm ? 1000.0 : 3000.0;
     EXPECT_LT(max_relative_drift(r.angular_momentum_norm), 10 * test::kRoundoff * std::sqrt(substeps))
         << method_info(method).name;

@@ -1,4 +1,4 @@
-// Bodies about a fixed point (issue 12 item 1): PivotedBody / PivotedPlanarBody, the per-body kernels of
+// Bodies about a fixed point: PivotedBody / PivotedPlanarBody, the per-body kernels of
 // models/pivoted_body.hpp and the dynamics of dynamics/pivoted_body_dynamics.hpp.
 #include "rigiddyn/dynamics/pivoted_body_dynamics.hpp"
 #include "rigiddyn/dynamics/rigid_body_dynamics.hpp"

@@ -60,7 +60,7 @@ double line_error(double h) {
   return std::max((got.p_W - expected.p_W).norm(), (got.v_W - expected.v_W).norm());
 }
 
-// The check: the run in F equals the run in W transformed, to 1e-10, for every method of order >= 2
+// The run in F equals the run in W transformed, to 1e-10, for every method of order >= 2
 // at a small step. The error of an order-p method is C h^p + round-off. Each case checks first that the
 // error at 2h is 2^p times that at h within 30 % (the asymptotic regime, so that C h^p is the error at h and
 // no term is missing: a wrong force would leave an O(1) error independent of h), then that it is <= 1e-10.

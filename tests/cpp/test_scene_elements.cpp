@@ -1,4 +1,4 @@
-// The force elements of scenes (scene/elements/*.hpp, scene_api.md §2), each against what defines it:
+// The force elements of scenes (scene/elements/*.hpp), each against what defines it:
 // force = −∇_p V and torque = −∂V/∂δθ (a small body rotation) by central differences of the element's own
 // potential; the returned power = Σ f_W·v_W + tau_B·w_B; Newton's third law for internal elements; closed
 // forms at known geometry (Newton's law, the spring, drag, the gravity-gradient pitch torque); the

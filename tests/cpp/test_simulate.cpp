@@ -1,5 +1,5 @@
 // simulate and step (simulate/simulate.hpp): a step that crosses a switch time of the load schedule
-// is split there, so every method keeps its order (issue 9, item 7); a switch on the step grid makes
+// is split there, so every method keeps its order; a switch on the step grid makes
 // no sub-step; the monitor stops a run; a recording larger than the memory is refused.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// The fast variable-mass particle (scene/fast/variable_mass_particle_model.hpp, api12.md §2 and §4) against
+// The fast variable-mass particle (scene/fast/variable_mass_particle_model.hpp) against
 // the closed form of a constant-rate burn in uniform gravity (derived below), Tsiolkovsky's Δv, the
 // momentum bookkeeping of the notes' eq. (4.36) on the recorded trajectory, the element terms (Thrust,
 // UniformGravity) it replaces, the observed order of every method, the step at which the mass runs out,
@@ -132,7 +132,7 @@ TEST(VariableMassParticleModel, TsiolkovskyDeltaV) {
   const Eigen::Vector3d dv_thrust = three(r.v_W, last) - kBurn.v0 - kBurn.g * r.t[last];
   const double tsiolkovsky = kBurn.u_rel.norm() * std::log(kBurn.m0 / m1);
   // RK4's v bound (+ 8 ulps of the subtraction of |v| ≤ 600 m/s); it is 1e-12 of Δv here, under the
-  // issue's 1e-9
+  // required 1e-9
   const double bound = rk4_bounds(kBurn, kBurnTime, kH).v + 8.0 * kEps * 600.0;
   EXPECT_LE(std::abs(dv_thrust.norm() - tsiolkovsky), bound);
   EXPECT_LE(bound / tsiolkovsky, 1e-9);

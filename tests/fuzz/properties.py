@@ -456,7 +456,7 @@ def _cli_params(draw):
 
 def lagrange_top_invariants(tilt: float, spin: float, w_x: float, c: float, moments: list, times: list) -> None:
     """LagrangeTopSolution.at(t) keeps the energy, H_z and H_3 (its own constants) at any t: the closed form's
-    attitude and w_B are accurate to 1e-12 relative (test_issue12_physics' comparison with DOP853); an invariant
+    attitude and w_B are accurate to 1e-12 relative (test_fixed_point_frames_mass_physics' comparison with DOP853); an invariant
     sums products of them with I_O (condition <= 100 here), hence 1e-12 * 100 * 10 of the invariant's scale."""
     I1, I3 = moments
     body = rd.PivotedBody(rd.RigidBody(1.0, [I1, I1, I3]), [0.0, 0.0, c])

@@ -91,7 +91,7 @@ RECIPES = {
         lambda method: ("method", _SCENE, "compile", [("lit", method)], [])),
     "SceneResult": st.tuples(st.integers(0, 30), st.integers(1, 5)).map(lambda nr: _call_spec(
         "simulate", [_SCENE, _SCENE_STATES], dt=("lit", 0.01), steps=("lit", nr[0]), record_every=("lit", nr[1]))),
-    # issue 13: batches of drawn sizes (samples, steps, record_every)
+    # batches of drawn sizes (samples, steps, record_every)
     "BatchResult": st.tuples(st.integers(1, 9), st.integers(0, 30), st.integers(1, 5), st.booleans()).map(
         lambda snrs: _call_spec(
             "simulate_batch",
@@ -106,7 +106,8 @@ RECIPES = {
         "integrate_density_over_box", [("per_row", ("lit", rho)), ("lit", [0.0, 0.0, 0.0]), ("lit", [1.0, 2.0, 0.5])])),
     "ScheduledLoads": st.just(_call_spec("ScheduledLoads", body=("lit", 0),
                                          loads=("list", [_call_spec("AppliedLoad", force=("lit", [1.0, 0.0, 0.0]))]))),
-    # issue 12: a top pinned below its centre of mass, the frames of a scene, a pivoted run's records
+    # bodies about a fixed point: a top pinned below its centre of mass; the frames of a scene; a pivoted
+    # run's records
     "PivotedBody": st.just(_PIVOTED),
     "PivotedPlanarBody": st.just(_call_spec("PivotedPlanarBody", [("lit", 1.0), ("lit", 0.1), ("lit", [0.0, -0.5])])),
     "Thrust": st.sampled_from(["body", "world"]).map(lambda frame: _call_spec(
@@ -115,7 +116,7 @@ RECIPES = {
                                    _call_spec("SceneFrame.earth", [("lit", 0.85)])]),
     "PivotedAcceleration": st.just(_call_spec("forward_dynamics", [_PIVOTED, _call_spec("PivotedBodyState")],
                                               gravity=("lit", True))),
-    # issue 12's exact references: a pendulum at a drawn angle and rate (libration or rotation), a symmetric top
+    # their exact references: a pendulum at a drawn angle and rate (libration or rotation), a symmetric top
     # (inertia about O symmetric about O->C) tilted by a drawn angle about x with a drawn spin (not 0: its axis would
     # swing through the vertical, refused), a particle seen from a rotating frame, a rocket losing mass at a drawn rate
     "CompoundPendulumSolution": st.tuples(st.floats(-3.1, 3.1), st.floats(-20.0, 20.0)).map(lambda tw: _call_spec(

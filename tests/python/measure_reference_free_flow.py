@@ -17,7 +17,7 @@ from rigiddyn_ref import free_flow
 
 EPS = np.finfo(float).eps
 D = np.diag([1.0, 2.0, 3.0])
-ORBITS = [("issue-9 body", geo.INERTIA, geo.W0), ("diag(1, 2, 3), case B", D, np.array([1.0, 0.5, -0.3])),
+ORBITS = [("geometric-test body", geo.INERTIA, geo.W0), ("diag(1, 2, 3), case B", D, np.array([1.0, 0.5, -0.3])),
           ("diag(1, 2, 3), 1e-9 off the separatrix", D, np.array([0.3, 2.0, 0.1 * np.sqrt(3) * (1 + 1e-9)]))]
 
 

@@ -1,4 +1,4 @@
-"""One way to say each thing, for the bodies, their states and the dynamics functions (issue 10, item 1):
+"""One way to say each thing, for the bodies, their states and the dynamics functions:
 the three ways to build a RigidBody agree (as the C++ constructors and the problem files do); one
 realizability check (`check=InertiaCheck...`); one gravity default (none) everywhere; angular momentum
 about the world origin by default for every model; named results whose fields name their frame;

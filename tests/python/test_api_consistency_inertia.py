@@ -1,4 +1,4 @@
-"""One way to say each thing (issue 10, item 1) in the inertia, spatial, frames and exact layers:
+"""One way to say each thing in the inertia, spatial, frames and exact layers:
 one realizability check (InertiaCheck) also for TorqueFreeSolution, Python spelling in messages, one
 return type per concept (PrincipalAxes, KineticEnergy), one name per concept (is_approx, force/motion
 arguments), and every value object with a repr that evaluates back to it, pickling, deep copies and a

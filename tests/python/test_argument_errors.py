@@ -1,5 +1,5 @@
 """Every public entry point names the argument it refuses (README: "<argument>: expected <what>, got
-<value>"; issue 9 item 11).
+<value>").
 
 The sweep introspects rigiddyn.__all__ (functions; classes: constructors, static and instance methods;
 tests/fuzz/api_model.py reads the signatures), so a new function is swept without a change here; the
@@ -9,8 +9,8 @@ None, a list of str, a complex, an object()). The call must raise TypeError or V
 message says what was expected and whose subject (the text before ": expected") names that argument -
 never pybind11's "incompatible function arguments" list, never a crash - or, where the value is valid
 after all (None for an optional argument, a str for a frame's name), succeed. Every public property of
-those classes (results' classes included) reads and refuses assignment. The cases reported in issue 9
-(items 10, 11) are checked as reported at the end.
+those classes (results' classes included) reads and refuses assignment. The cases once
+reported as bugs are checked as reported at the end.
 """
 
 from __future__ import annotations
@@ -274,7 +274,7 @@ EXAMPLES = {
     "GravityGradient": lambda: {"gm": 1.0}, "SpringDamper": lambda: {"body_a": 0, "stiffness": 1.0},
     "Drag": lambda: {}, "ScheduledLoads": lambda: {"body": 0}, "PythonForce": lambda: {"fn": _push},
     "load_scene": lambda: {"path_or_text": "kepler"},
-    # issue 12: bodies about a fixed point, the scene's frame, variable mass
+    # bodies about a fixed point, the scene's frame, variable mass
     "PivotedBody": lambda: {"body": rd.RigidBody(1.0, I_BOX), "p_OC_B": V},
     "PivotedPlanarBody": lambda: {"mass": 1.0, "inertia_zz": 0.5, "p_OC_B": [0.1, 0.2]},
     "PivotedBodyState": lambda: {}, "PivotedPlanarBodyState": lambda: {}, "PivotedBodyState.quaternion": lambda: {},
@@ -284,7 +284,7 @@ EXAMPLES = {
     "SceneFrame.rotating": lambda: {"axis": [0, 0, 1.0], "rate": 0.5}, "SceneFrame.earth": lambda: {"latitude": 0.8},
     "SceneFrame.moving": lambda: {"frame_motion": rd.FrameMotion.fixed()},
     "MassFlow": lambda: {}, "Thrust": lambda: {"body": 0, "u_rel": V},
-    # issue 12's exact references
+    # their exact references
     "CompoundPendulumSolution": _pendulum, "CompoundPendulumSolution.at": lambda: {"t": 0.5},
     "LagrangeTopSolution": _top, "LagrangeTopSolution.at": lambda: {"t": 0.5},
     "LagrangeTopSolution.angles_at": lambda: {"t": 0.5},
@@ -459,13 +459,13 @@ def test_properties_read_and_refuse_assignment(cls, attr):
     (lambda: rd.quat_integrate(Q, V, "1"), TypeError, r"^dt: expected .*, got str '1'$"),
 ])
 def test_the_reported_messages(call, error, message):
-    # the cases of issue 9 items 10 and 11, each as reported
+    # the cases once reported as bugs, each as reported
     with pytest.raises(error, match=message):
         call()
 
 
 def test_the_symmetry_tolerance_printed_is_the_one_used():
-    # issue 9 item 11: max |I - I^T| = 1e-11 was refused with a message printing another tolerance
+    # max |I - I^T| = 1e-11 was refused with a message printing another tolerance
     asymmetric = I_BOX.copy()
     asymmetric[0, 1] += 1e-11
     with pytest.raises(ValueError, match=r"^inertia_com: expected a symmetric inertia") as refused:

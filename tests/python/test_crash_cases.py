@@ -1,4 +1,4 @@
-"""The two crashes of issue 9 item 8 raise instead, each checked in a child process so that a crash
+"""Two former crashes raise instead, each checked in a child process so that a crash
 (a segfault cannot be caught) fails one test instead of taking pytest down:
 
 (a) a FrameTree chain deeper than any recursion could go (the tree walks are iterative);
@@ -92,7 +92,7 @@ def test_deep_frame_chain_is_walked_without_recursion():
 
 
 def test_quat_to_matrix_of_ten_billion_rows_raises_memory_error():
-    # the reproducer of issue 9 item 8 (b): 298 GiB for the float64 copy
+    # the reproducer of case (b): 298 GiB for the float64 copy
     code = """
     import numpy as np
     import rigiddyn as rd

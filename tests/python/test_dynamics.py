@@ -12,7 +12,7 @@ import rigiddyn as rd
 from _error_bounds import EPS, local_roundoff, roundoff
 from _helpers import planar_and_rigid_runs
 
-# the methods of this issue (structure-preserving methods of the exact-solution work are tested there)
+# the classical methods (the structure-preserving ones are tested with the exact solution)
 METHODS = ["explicit_euler", "semi_implicit_euler", "semi_implicit_euler_implicit_gyroscopic", "rk4", "rkmk4"]
 ORDER = {m["name"]: m["order"] for m in rd.methods()}
 

@@ -36,7 +36,7 @@ def close(got, want, tol):
 
 
 def test_method_names_exist_in_the_core():
-    """The five classical methods of issue 4 (the structure-preserving ones are compared with
+    """The five classical methods (the structure-preserving ones are compared with
     rigiddyn_ref.geometric elsewhere)."""
     assert set(METHODS) <= {m["name"] for m in rd.methods()}
 

@@ -1,4 +1,4 @@
-"""The exact layer at extreme magnitudes (issue 9, items 9 and 10): Carlson's R_F and R_J for arguments
+"""The exact layer at extreme magnitudes: Carlson's R_F and R_J for arguments
 spanning 1e-300..1e300 (they used to loop forever or return NaN), and the torque-free solution for any
 finite inertia and angular velocity (computed in units scaled by powers of two).
 
@@ -43,7 +43,7 @@ def close(value, ref):
     return abs(value - ref) <= 8 * EPS * abs(ref) + 2 * SUBNORMAL_ULP
 
 
-def test_issue_cases():
+def test_the_reported_cases_that_looped_or_returned_nan():
     # they looped forever (the stopping tolerance overflowed) or returned NaN; SciPy gives 3.53e-151 for R_F
     assert close(rigiddyn.elliprf(1.0, 1e306, 1.0), mp_rf(1.0, 1e306, 1.0))
     assert close(rigiddyn.elliprj(1.0, 1e306, 1.0, 1.0), mp_rj(1.0, 1e306, 1.0, 1.0))

@@ -69,7 +69,7 @@ def test_matches_dop853_over_many_periods(inertia, w0, case):
 @pytest.mark.slow
 @pytest.mark.parametrize("w0, case", [([0.3, 0.5, 1.0], "A"), ([1.0, 0.5, -0.3], "B")])
 def test_dop853_converges_to_it_over_100_periods(w0, case):
-    # Issue 5 asks for agreement with DOP853 at rtol = atol = 1e-13 over 100 periods. There DOP853's own
+    # The requirement: agreement with DOP853 at rtol = atol = 1e-13 over 100 periods. There DOP853's own
     # global error (~5e-11 |w0| in w, ~5e-10 rad in attitude; it grows ~13x per decade of tolerance)
     # dominates, so show the difference is the ODE solver's: as DOP853's tolerance goes 1e-12 -> 1e-13
     # -> 3e-14 its distance to the closed form shrinks with its own error, and at 1e-13 it is a small
@@ -94,7 +94,7 @@ def test_dop853_converges_to_it_over_100_periods(w0, case):
     for diff, estimate in ((w_diff, w_estimate), (angle_diff, angle_estimate)):
         assert diff[2] < 0.5 * diff[1] and diff[1] < 0.25 * diff[0]  # converging as DOP853 tightens
         assert diff[1] < 0.25 * estimate
-    # the agreement issue 5 asks for, within DOP853's own error estimate (not a figure seen once)
+    # the agreement required, within DOP853's own error estimate (not a figure seen once)
     assert w_diff[1] <= w_estimate and angle_diff[1] <= angle_estimate
 
 

@@ -1,4 +1,4 @@
-"""The exact torque-free solution close to a principal axis (issue 9, item 3), through the Python API:
+"""The exact torque-free solution close to a principal axis, through the Python API:
 the transverse body momentum |m_perp| log-spaced from the smallest subnormal to 1e-3 |L| about each
 principal axis, either sign of the axial momentum.
 
@@ -58,7 +58,7 @@ def steady_spin_reference(axis, m0, t):
 
 
 def mp_closed_form(m0, t, dps):
-    """R_WB(t) from the Z-X-Z closed form of free-rigid-body.md (Landau & Lifshitz §37) in mpmath at
+    """R_WB(t) from the Z-X-Z closed form (Landau & Lifshitz §37) in mpmath at
     `dps` digits, for the diagonal inertia I_DIAG (ascending) and body momentum m0, R(0) = Q0. Case A
     (Delta2 > 0) as written; case B through the signed reversal of the axes (e3, e2, -e1), which maps it
     onto case A with the moments in descending order: every formula keeps its sign except Euler's
@@ -140,7 +140,7 @@ def test_attitude_to_16_ulps_of_the_angle_turned(axis, sign):
                 # enough digits for 1 - m ~ (|m_perp|/G)^2 and 30 more: the reference is exact
                 R_ref = mp_closed_form(m0, t, 30 + int(-2 * math.log10(eps_m)))
             error = angle(q, R_ref)
-            # the bound the issue sets: 16 ulps of the angle turned, which also covers the reference's
+            # the required bound: 16 ulps of the angle turned, which also covers the reference's
             # own rounding to double (~3 ulps for the steady-spin one, 1 for mpmath's)
             assert error <= 16 * ulp, (eps_m, t, error / ulp)
             worst = max(worst, error / ulp)
@@ -159,7 +159,7 @@ def test_references_agree_where_both_hold():
             assert (R1.inv() * R2).magnitude() <= 4 * ulps_of_angle(axis, t)
 
 
-def test_issue_case():
+def test_reported_case_near_the_major_axis():
     # I = diag(2, 3, 5), body momentum (3.5 sqrt(5e-324), 0, 1): 0.010 rad off at t = 0 before
     m0 = np.array([3.5 * math.sqrt(SMALLEST_SUBNORMAL), 0.0, 1.0])
     sol = rigiddyn.TorqueFreeSolution(np.diag(I_DIAG), [0, 0, 0, 1.0], m0 / I_DIAG)

@@ -11,10 +11,11 @@ Documented behaviour asserted for every method of methods() on every scene case:
    chain sqrt(k (1/m0 + 1/m1)) (and, joined at the faces of cubes, the light cube's rotation
    k (s/2)^2 / (m0 s^2 / 6)), the softened pair's G M / eps^3 at zero separation;
 5. methods that keep unit |q| keep ||q| - 1| at round-off on the rigid chain while stable;
-6. issue 12's models run the same matrix (the shipped pendulum, heavy_top, foucault and rocket, the
-   pendulum next to its separatrix, the heavy top at large dt |w| and pinned far from its centre of
-   mass, a rocket burning 99 % of its mass, free particles in a fast carousel): 1-3 hold, a pivot far
-   from the centre of mass warns (digits of I_C lost) and the mass never goes non-positive.
+6. the models of bodies about a fixed point, moving frames and variable mass run the same matrix (the
+   shipped pendulum, heavy_top, foucault and rocket, the pendulum next to its separatrix, the heavy top at
+   large dt |w| and pinned far from its centre of mass, a rocket burning 99 % of its mass, free particles in
+   a fast carousel): 1-3 hold, a pivot far from the centre of mass warns (digits of I_C lost) and the mass
+   never goes non-positive.
 """
 
 import math

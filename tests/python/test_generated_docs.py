@@ -4,7 +4,7 @@ Each generated document records (bench/python/provenance.py) the command that ma
 machine, and a digest of the content of every input its generator declares (the generator itself and
 the sources whose behaviour it measures). A document whose recorded digests differ from its inputs'
 current content is stale: the test fails naming the changed inputs and the command that regenerates
-it. Regenerating is a step the lead runs (a few minutes); it never needs a build inside the test.
+it. Regenerating is a step a maintainer runs (a few minutes); it never needs a build inside the test.
 """
 
 from __future__ import annotations

@@ -150,7 +150,7 @@ def test_invariants_over_1e5_steps(method, w0):
     dE = np.abs(r.kinetic_energy / r.kinetic_energy[0] - 1)
     dL = np.abs(r.angular_momentum_norm / r.angular_momentum_norm[0] - 1)
     # both keep |L| exactly in exact arithmetic: round-off only, a random walk of <= 2 eps per step
-    # stays within 5 sigma = 10 eps sqrt(N) (the bound issue 9 sets for the Lie-Poisson methods)
+    # stays within 5 sigma = 10 eps sqrt(N) (the bound for the Lie-Poisson methods)
     roundoff_walk = 10 * EPS * np.sqrt(steps)
     assert dL.max() <= roundoff_walk
     if method == "implicit_midpoint":

@@ -230,7 +230,7 @@ def test_error_message_names_expected_value():
 
 
 def test_primitive_shape_of_the_wrong_type():
-    # a TOML array where a string belongs (issue 9 item 11: was "TypeError: unhashable type")
+    # a TOML array where a string belongs (was "TypeError: unhashable type")
     with pytest.raises(ValueError, match=r"^body.primitive.shape: expected one of solid_sphere.*got \['solid_box'\]"):
         parse_problem({"horizon": 1.0, "body": {"primitive": {"shape": ["solid_box"], "size": [1, 2, 3], "mass": 1.0}}})
 
@@ -243,7 +243,7 @@ def test_primitive_shape_of_the_wrong_type():
     ("tradeoff", [], TypeError),
 ])
 def test_problem_constructor_checks_every_field(field, value, error):
-    # the dataclass is public: built directly it is checked as a problem file is (issue 9 item 10)
+    # the dataclass is public: built directly it is checked as a problem file is
     good = dict(name="p", mass=1.0, inertia_com=np.diag([1.0, 2.0, 2.5]), horizon=1.0)
     with pytest.raises(error, match=rf"^{field}(\.\w+|\[0\])?: expected"):
         Problem(**{**good, field: value})
@@ -295,7 +295,7 @@ def _field_name(path):
     return name
 
 
-# the other forms of the attitude and an angular rate with a unit (issue 10 item 4)
+# the other forms of the attitude and an angular rate with a unit
 INITIAL_FORMS = [{"euler": {"seq": "ZYX", "angles": [10, 0, 0], "degrees": True},
                   "w_B": {"value": [0, 0, 60], "unit": "rpm"}},
                  {"rotvec": {"value": [0, 0, 10], "degrees": True}},
@@ -308,7 +308,7 @@ TOML_CASES = [(data, path, kind) for data in (FULL, {**FULL, "body": PRIMITIVE_B
 @pytest.mark.parametrize("data, path, kind", TOML_CASES,
                          ids=[f"{_field_name(p)}-{k}" for _, p, k in TOML_CASES])
 def test_every_toml_field_of_the_wrong_type_is_named(data, path, kind):
-    # issue 9 item 11: a value of the wrong TOML type is a ValueError "<field>: expected ..." naming the
+    # a value of the wrong TOML type is a ValueError "<field>: expected ..." naming the
     # field (never "TypeError: unhashable type" or another Python error from inside the parser)
     assert parse_problem(data).name == data["name"]  # the file is valid before the change
     value = WRONG_TOML[kind]

@@ -1,4 +1,4 @@
-"""Problem files (issue 10, item 4): the attitude as q_WB, Euler angles, a rotation vector or an axis
+"""Problem files: the attitude as q_WB, Euler angles, a rotation vector or an axis
 and angle, in degrees where `degrees = true`; a near-unit quaternion normalised with a note; angular
 rates with a unit; "did you mean" for unknown keys in every table; the documented example."""
 

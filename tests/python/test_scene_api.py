@@ -1,4 +1,4 @@
-"""The Python API of scenes (issue 11; docs: rigiddyn.Scene, rigiddyn.simulate): building a scene, the
+"""The Python API of scenes (docs: rigiddyn.Scene, rigiddyn.simulate): building a scene, the
 force elements' constructors and their checks, repr/pickle round trips, compile with its refusals and
 SceneCompatibilityWarning, runs and the shapes of their records, the one-body scene against today's
 simulate, PythonForce (its errors propagate; it holds the GIL only in its calls) and the GIL released

@@ -204,7 +204,7 @@ def test_gravity_gradient_pitch_libration_frequency_within_a_tenth_of_a_percent(
     crossings = result.t[i] - pitch[i] * (result.t[i + 1] - result.t[i]) / (pitch[i + 1] - pitch[i])
     assert len(crossings) >= 15
     measured = np.pi * (len(crossings) - 1) / (crossings[-1] - crossings[0])   # half a period between crossings
-    assert abs(measured / omega - 1) <= 1e-3   # the requirement on the linearised frequency
+    assert abs(measured / omega - 1) <= 1e-3   # the required accuracy of the linearised frequency
     # sharper: the pitch obeys φ̈ = −ω² sin φ with φ = 2θ (I_y θ̈ = −3n² (I_x − I_z) sin θ cos θ), a pendulum
     # of amplitude φ0 = 0.02 whose frequency is ω (1 − φ0²/16 + O(φ0⁴ 11/3072 ≈ 6e-10)); the rest of the
     # budget above (interpolation ~2e-8, RK4 ~1e-7, the orbit's perturbation 1e-14) stays below 1e-6

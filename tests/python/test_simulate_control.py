@@ -1,4 +1,4 @@
-"""simulate and step as a user drives them (issue 9, items 7, 9, 10): Ctrl-C stops a long run, a
+"""simulate and step as a user drives them: Ctrl-C stops a long run, a
 recording larger than the memory is refused with the figures, progress is reported, step takes and
 returns the time (and refuses a time-windowed load without it), and step warns on a non-finite state
 as simulate does."""
@@ -133,7 +133,7 @@ def test_steps_from_t0_follow_simulate_across_switch_times(method):
 
 def test_step_warns_on_a_non_finite_state_as_simulate_does():
     """Explicit Euler, I = diag(1, 2, 3), w0 = (0.1, 50, 0.1), dt = 0.05: the spin about the intermediate
-    axis blows up to inf within 20 steps (issue 9, item 10)."""
+    axis blows up to inf within 20 steps."""
     body = rd.RigidBody(1.0, np.diag([1.0, 2.0, 3.0]))
     start = rd.RigidBodyState(w_B=[0.1, 50.0, 0.1])
     with pytest.warns(RuntimeWarning, match=r"^simulate: the state became non-finite by t = "):

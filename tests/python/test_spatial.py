@@ -370,7 +370,7 @@ def _overflowed(cls):
     (lambda m, f: rd.SpatialInertia(1.0, [0, 0, 0], np.eye(3)).kinetic_energy(m), "twist"),
 ])
 def test_a_non_finite_spatial_argument_is_refused(call, name):
-    # issue 9 item 10: every public function validates what it takes (a non-finite Motion/Force exists
+    # every public function validates what it takes (a non-finite Motion/Force exists
     # only as the result of an overflow, which warned)
     m, f = _overflowed(rd.Motion), _overflowed(rd.Force)
     with pytest.raises(ValueError, match=rf"^{name}: expected a (Motion|Force) with finite values, got angular \[0, 0, inf\], linear \[0, 0, 0\]"):

@@ -1,4 +1,4 @@
-"""Every method keeps its order when a load switches inside a step (issue 9, item 7).
+"""Every method keeps its order when a load switches inside a step.
 
 The problem (tests/python/problems/satellite_switching_torque.toml): a 200 kg box tumbling slowly,
 a body-fixed couple on from t = 10 s to t = 200 s, horizon 300 s. The steps dt = 300 s / (877 2^k)
@@ -11,9 +11,9 @@ log2(e(dt) / e(dt/2)) of the largest attitude error over the run.
 Before simulate split a step at a switch time, the loads active at a step's start were held over the
 whole step (the switch took effect at the next grid time) and every method was first order, erratically.
 The table also shows that behaviour ("held"), emulated by moving each switch time up to the next grid
-time: the same figures the issue reported. Print the table:
+time: the same figures the old behaviour gave. Print the table:
 
-    PYTHONPATH=build/<you>/python python3 tests/python/test_switching_load_orders.py
+    PYTHONPATH=build/<dir>/python python3 tests/python/test_switching_load_orders.py
 """
 
 from __future__ import annotations
@@ -173,7 +173,7 @@ def test_every_method_keeps_its_order_with_a_torque_switching_inside_steps(metho
 def test_holding_the_loads_over_a_step_loses_the_order():
     """The emulated old behaviour: a switch off by up to a step is an O(dt) error that does not shrink
     smoothly (it depends on where the switch falls in its step): no 4th order, and errors ~1e-3 rad at
-    dt ~ 0.04 s, the figures the issue reported for rkmk4. The order test above fails on it."""
+    dt ~ 0.04 s, the figures the old behaviour gave for rkmk4. The order test above fails on it."""
     held, split = errors("rkmk4", held=True), errors("rkmk4")
     assert not all(abs(p - 4) <= 0.25 for p in slopes(held)), held
     assert held[-1][1] > 1e6 * split[-1][1], (held, split)

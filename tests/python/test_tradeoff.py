@@ -381,7 +381,7 @@ def switching_sweeps():
 
 @pytest.mark.parametrize("method", sorted(m for m in METHODS if METHODS[m]["order"] > 0))
 def test_every_method_keeps_its_order_with_a_torque_switching_inside_steps(switching_sweeps, method):
-    """Issue 9, item 7: simulate splits a step at a switch time of the loads, so each method keeps its
+    """simulate splits a step at a switch time of the loads, so each method keeps its
     order whatever the step grid (before, the loads held over a step made every method first order,
     erratically); the table: python -m rigiddyn tradeoff tests/python/problems/satellite_switching_torque.toml"""
     rows = switching_sweeps[method]

@@ -1,4 +1,4 @@
-"""The tradeoff report (issue 10, item 6): the module/function names, the terminal table, CSV/JSON,
+"""The tradeoff report: the module/function names, the terminal table, CSV/JSON,
 warnings, --help, the Pareto front, the closed-form method, the plot, the stability warning on a
 sphere, a recommendation that timing noise does not flip, and --out checked before the sweep."""
 

@@ -1,4 +1,4 @@
-"""Units in the Python API (issue 11, item 5): wherever a physical number enters a body, a state, a force
+"""Units in the Python API: wherever a physical number enters a body, a state, a force
 element, a load or a run, a pint quantity of any registry is accepted and converted to the argument's SI
 unit; a plain float is SI as before. The converted float is the one the SI call passes, so every object
 and every run equals the SI-float call bit for bit; a quantity of another dimension is a ValueError

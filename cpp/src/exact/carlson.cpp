@@ -9,7 +9,7 @@
 //   the ratios (√p − √x_i)/(√p + √x_i)),  1 + e_m = 2√p (p + λ)/d_m (all at step m: the sum of
 //   Π(√p ± √x_i) over the signs, so that R_C keeps full precision when p ≪ x, y, z drives 1 + e_m to 0).
 //
-// Arguments spanning 1e-300..1e300 (issue 9): the public functions scale them by 4^−k, exactly, so that
+// Arguments spanning 1e-300..1e300: the public functions scale them by 4^−k, exactly, so that
 // the largest is below 4 (R_F(4^−k ·) = 2^k R_F, R_J(4^−k ·) = 8^k R_J, DLMF 19.16.1-2), and pass their
 // square roots, which the first step uses as given: a tiny argument may underflow once scaled while its
 // root, all that the sequence needs of it, does not. Every later argument is at least λ_0/4. R_J's first

@@ -1,6 +1,5 @@
-// The exact torque-free motion: see free_body.hpp for the cases and
-// ../shared/notes/free-rigid-body.md for the formulas (Landau & Lifshitz §37; Celledoni, Fassò,
-// Säfström, Zanna 2008 with Leroy's errata).
+// The exact torque-free motion: see free_body.hpp for the cases; the formulas are those of Landau &
+// Lifshitz §37 and Celledoni, Fassò, Säfström, Zanna 2008 (with Leroy's errata).
 #include "rigiddyn/exact/free_body.hpp"
 
 #include "power_of_two.hpp"
@@ -251,11 +250,11 @@ void TorqueFreeSolution::init_rotation_about_axis(const Eigen::Vector3d& I_Q, co
 // The invariants Δ_j = G² − 2T I_j = Σ_{i≠j} m_i² (I_i − I_j)/I_i (Δ1 ≥ 0, Δ3 ≤ 0 sums of like-signed
 // terms; Δ2 cancels at the separatrix, see delta2_times_I1_I3) of the momentum m̂ = 2^−e L̃ (largest
 // component in [1, 2)), each as Δ_j = 4^(e + t_j) D_j with 2^t_j the scale of the two components it
-// involves: a transverse part down to the smallest subnormal is not squared to zero (issue 9).
-// Then, with the amplitudes, λ, m and kc = √(1 − m) of free-rigid-body.md in these units:
-// case A: ω = (σ1 A1 cn, σ1 s A2 sn, s A3 dn) on (1, 2, 3), s = sign m3, σ1 = sign m1 on the
-// separatrix (there cn ≥ 0), else 1; case B: ω = (s A1 dn, s A2 sn, A3 cn), s = sign m1, in the frame
-// Q = (P2, P3, P1) (a cyclic relabelling, det +1).
+// involves: a transverse part down to the smallest subnormal is not squared to zero.
+// Then, with the amplitudes, λ, m and kc = √(1 − m) of the closed form (Landau & Lifshitz §37) in these units:
+// case A: ω = (σ1 A1 cn, σ1 s A2 sn, s A3 dn) on (1, 2, 3), s = sign m3, σ1 = sign m1 on the separatrix (there
+// cn ≥ 0), else 1; case B: ω = (s A1 dn, s A2 sn, A3 cn), s = sign m1, in the frame Q = (P2, P3, P1) (a cyclic
+// relabelling, det +1).
 void TorqueFreeSolution::init_elliptic(const Eigen::Vector3d& I, const Eigen::Vector3d& L_tilde, int e_rate) {
   const double I1 = I(0), I2 = I(1), I3 = I(2);  // the largest in [1, 2): products of three stay in range
   const int e = exponent_of(L_tilde.cwiseAbs().maxCoeff()), e_w = e + e_rate;  // ω = 2^e_w m̂/I

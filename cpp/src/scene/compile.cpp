@@ -91,7 +91,7 @@ Eigen::Vector3d gravity_of(const Scene& scene) {
   return Eigen::Vector3d::Zero();
 }
 
-// The fast model of issue 12 for a scene that is exactly its case (api12.md §2), or monostate. The
+// The fast one-body model for a scene that is exactly its case (scene/fast/), or monostate. The
 // compiled element count `element_count` includes the frame's terms (after the user's elements).
 FastSceneModel fast_model_of(const Scene& scene, const detail::FrameTermSet& frame, std::size_t element_count,
                              ScenePath& path) {

@@ -1,6 +1,6 @@
 // |L| of the Lie–Poisson splittings (splitting_dlm, splitting_dlm_yoshida4) over 1e7 steps: its
 // round-off must be a random walk, |Δ|L||/|L| ≤ 10 ε √N after N steps, not the linear drift of a
-// biased rounding (issue 9: +2.5e-12 after 1e6 steps, ~11 000 ε, before the fix). Registered with the
+// biased rounding (+2.5e-12 after 1e6 steps, ~11 000 ε, before the fix). Registered with the
 // label `bench` (10⁷ steps of each method take seconds).
 //
 // Bound: every sub-flow turns m exactly in exact arithmetic, and the step adds to ω only the increment
@@ -9,7 +9,7 @@
 // that the flow scrambles: unbiased) plus second-order terms: a walk of standard deviation ≤ ε √N
 // (|L|: about √3 roundings of ≤ ε/2 per sub-step, less once weighted by the component's share of |L|;
 // measured over 16 starts after 1e6 steps: 0.1–0.25 ε √N for |L|, ≤ 1.1 ε √N for L_W). 10 ε √N,
-// issue 9's bound, is ≥ 9 such deviations, while a bias of 0.01 ε per step (the code before the fix
+// the bound, is ≥ 9 such deviations, while a bias of 0.01 ε per step (the code before the fix
 // had 0.01–0.24) crosses it before 1e6 steps. The spatial L_W = R I ω has the same bound (the
 // attitude turns and is normalised by increments as well: unit_quaternion, splitting_parts.hpp). The
 // energy error stays the method's bounded oscillation (symplectic): no larger over the last tenth of
@@ -35,7 +35,7 @@ struct Body {
   Eigen::Vector3d w0_B;
 };
 
-// issue 9's spin about the major axis, and a tumble; each with I = diag(1, 2, 3) and turned off the
+// a spin about the major axis, and a tumble; each with I = diag(1, 2, 3) and turned off the
 // body axes (full Euler form: the passage B → P → B at every step)
 std::vector<Body> bodies() {
   const Eigen::Matrix3d I = Eigen::Vector3d(1.0, 2.0, 3.0).asDiagonal();

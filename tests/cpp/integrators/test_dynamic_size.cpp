@@ -1,5 +1,5 @@
-// Every integrator runs on a model whose Coordinates and Tangent are Eigen::VectorXd (a scene,
-// issue 11: the integrators are written once for the one-body models and SceneModel). The test model
+// Every integrator runs on a model whose Coordinates and Tangent are Eigen::VectorXd (a scene:
+// the integrators are written once for the one-body models and SceneModel). The test model
 // wraps a fixed-size one-body model: each member converts y to the fixed size, calls the wrapped
 // member and converts back, so the model arithmetic is the wrapped model's and only the integrators'
 // own work (stage sums, copies, the fixed-point iteration, the loads_kick/free_flow compositions)

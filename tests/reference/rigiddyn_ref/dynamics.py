@@ -1,12 +1,12 @@
 """Newton–Euler dynamics of a particle, a planar rigid body and a spatial rigid body, in plain numpy.
 
-Written from the seeds: Newton's law for a point mass f = m a (Rigid-body notes (4.35)) and its momentum
-p = m v (4.36); for a rigid body Newton's law at the centre of mass f = m d²r_c/dt² (Rigid-body notes (4.58)),
-Euler's law n = d(I ω)/dt about the centre of mass (Rigid-body notes (4.69)), which in the body frame B reads
-I ω̇ + ω × I ω = n (Craig "Euler's equations"); plane kinetics Σf = m a_G, Σn_z = I_zz α (seed
-001 supplement "Rigid Body Plane Kinetics"); angular momentum about a point H_P = r_PC × L + H_C
-(Craig, Rigid-body notes (4.65)); kinetic energy T = ½ m v·v + ½ ω·I ω (Craig "Kinetic Energy");
-impulse–momentum ∫f dt = m Δv, ∫n dt = ΔH (Craig "Impulse-Momentum Principle").
+Written from the theory texts (docs/references.md): Newton's law for a point mass f = m a (Rigid-body notes
+(4.35)) and its momentum p = m v (4.36); for a rigid body Newton's law at the centre of mass f = m d²r_c/dt²
+(Rigid-body notes (4.58)), Euler's law n = d(I ω)/dt about the centre of mass (Rigid-body notes (4.69)), which
+in the body frame B reads I ω̇ + ω × I ω = n (Craig "Euler's equations"); plane kinetics Σf = m a_G,
+Σn_z = I_zz α (Craig, "Supplement: Rigid Body Plane Kinetics"); angular momentum about a point
+H_P = r_PC × L + H_C (Craig, Rigid-body notes (4.65)); kinetic energy T = ½ m v·v + ½ ω·I ω (Craig "Kinetic
+Energy"); impulse–momentum ∫f dt = m Δv, ∫n dt = ΔH (Craig "Impulse-Momentum Principle").
 
 State of a spatial body (docs/conventions.md): p_W centre of mass [m], q_WB (x, y, z, w) unit
 quaternion, v_W centre-of-mass velocity in W [m/s], w_B angular velocity in B [rad/s]. Inertias

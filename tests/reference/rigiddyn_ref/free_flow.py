@@ -6,8 +6,8 @@ momentum m = I ω in the principal frame P, ṁ = m × ω, Ṙ_WP = R_WP ω̂, L
 With G² = |m|², 2T = Σ m_i²/I_i and Δ_j = G² − 2T I_j (Δ1, Δ3 summed without cancellation):
   case A (Δ2 ≥ 0): m = (I1 A1 cn, s I2 A2 sn, s I3 A3 dn)(u | k),  s = sign m3, dn axis 3
   case B (Δ2 < 0): m = (s I1 A1 dn, s I2 A2 sn, I3 A3 cn)(u | k),  s = sign m1, dn axis 1
-  u = λ t + u0, amplitudes A_i, rate λ, parameter k and its complement 1 − k as in the free-body
-  notes (/work/shared/notes/free-rigid-body.md).
+  u = λ t + u0, amplitudes A_i, rate λ, parameter k and its complement 1 − k as in Landau &
+  Lifshitz §37.
 
 The route differs on purpose from rigiddyn's (which evaluates sn, cn, dn at λt + u0, with u0 from
 Carlson's R_F, and the attitude through Legendre's Π):

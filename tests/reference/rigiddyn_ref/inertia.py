@@ -132,8 +132,8 @@ def angular_momentum_about_point(body: Inertia, w, v_C, point) -> np.ndarray:
 
 
 def principal_axes(inertia):
-    """Principal moments (ascending) and axes (columns, right-handed) of a symmetric inertia (seed
-    001 "Principal Axes") by numpy's symmetric eigensolver. Sign convention for distinct moments:
+    """Principal moments (ascending) and axes (columns, right-handed) of a symmetric inertia (Craig,
+    "Principal Axes") by numpy's symmetric eigensolver. Sign convention for distinct moments:
     axes 0 and 1 with their largest-magnitude component positive, axis 2 = axis 0 x axis 1."""
     moments, axes = np.linalg.eigh(np.asarray(inertia, dtype=float))
     for k in (0, 1):

@@ -1,5 +1,5 @@
 """Scenes (bodies + force elements) in plain numpy: each force model its own function, Newton–Euler per
-body, a scene derivative and classical RK4. The oracle of rigiddyn's scenes (issue 11); it never imports
+body, a scene derivative and classical RK4. The oracle of rigiddyn's scenes; it never imports
 rigiddyn or scipy.
 
 Written from the texts: Newton's law f = m a per body (Rigid-body notes (4.35), at the centre of mass

@@ -1,4 +1,4 @@
-// SIMD across samples (issue 13, item 2): RK4 on many rigid bodies at once, in structure-of-arrays
+// SIMD across samples: RK4 on many rigid bodies at once, in structure-of-arrays
 // form with one lane per sample, so that one vector instruction advances L samples by the same
 // operation. The per-sample arithmetic is that of the scalar path (RigidBodyModel<FullEuler, fixed>
 // stepped by Rk4, models/rigid_body.hpp and integrators/rk4.hpp), written once on a lane type (an

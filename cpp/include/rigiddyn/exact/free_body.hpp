@@ -2,7 +2,7 @@
 //
 // Body angular momentum L_B = I ω (about the centre of mass, in the body's principal frame), Euler's
 // equations L̇_B = L_B × ω, attitude Ṙ_WB = R_WB ω̂, spatial L_W = R_WB L_B constant
-// (Landau & Lifshitz, Mechanics §37; ../shared/notes/free-rigid-body.md). Principal moments are
+// (Landau & Lifshitz, Mechanics §37; Celledoni, Fassò, Säfström, Zanna 2008). Principal moments are
 // sorted I1 < I2 < I3 by a rotation (a signed permutation when I is diagonal) of determinant +1.
 // With G² = |L_B|², 2T = Σ L_i²/I_i and Δ_j = G² − 2T I_j (computed without cancellation):
 //

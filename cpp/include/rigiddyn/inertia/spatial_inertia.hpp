@@ -1,4 +1,4 @@
-// The mass properties of one rigid body (CONVENTIONS.md "Inertia"): mass m, centre of mass c and
+// The mass properties of one rigid body (docs/conventions.md "Inertia"): mass m, centre of mass c and
 // rotational inertia I_C about the centre of mass, all expressed in one frame (the body frame B unless
 // a name says otherwise; "the frame" below). Every other form is derived:
 //   inertia about a point P (parallel axis, Craig [I]_2 = [I]_C + m[...], Rigid-body notes (4.71)):

@@ -75,7 +75,7 @@ RIGIDDYN_ALWAYS_INLINE Eigen::Quaterniond unit_quaternion(const Eigen::Quaternio
 //   dm_j += (cos θ − 1) m_j + sin θ m_k,  dm_k += (cos θ − 1) m_k − sin θ m_j.
 // The increments round at the scale of dm, far below that of m: |m| moves only by an unbiased walk. The
 // product form m_j ← cos θ m_j + sin θ m_k rounds cos θ ≈ 1 first, and at the small, nearly repeating
-// angles of a long run that rounding is biased: |L| drifted linearly (issue 9: +2.5e-12 relative after
+// angles of a long run that rounding is biased: |L| drifted linearly (+2.5e-12 relative after
 // 1e6 steps); adding the increments to m itself still rounds at m's ulp, four times per step, and left a
 // bias of ~4e-4 ε per step (Yoshida, ω0 = (0.1, 0.1, 50) rad/s). The rounding of m0 + dm below acts on
 // the step's result only at second order (θ times it).

@@ -1,4 +1,4 @@
-// A rigid body pinned at a point O fixed in the scene frame (3 rotational DOF; issue 12 item 1): the
+// A rigid body pinned at a point O fixed in the scene frame (3 rotational DOF): the
 // heavy top, the gyroscope. "W" below is the scene frame (W itself when the scene declares no moving
 // frame). B is the body frame at the centre of mass C, as for RigidBody; C is at
 //   p_WC = p_WO + R_WB p_OC_B.

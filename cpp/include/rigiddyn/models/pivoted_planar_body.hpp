@@ -1,4 +1,4 @@
-// The compound pendulum (issue 12 item 1): a planar body pinned at a point O fixed in the scene frame,
+// The compound pendulum: a planar body pinned at a point O fixed in the scene frame,
 // turning about the scene frame's z axis (1 DOF, the angle θ of B about z, R_WB = Rz(θ)). "W" below is the
 // scene frame. Plane kinetics about the fixed point O (Craig, "Rigid Body Dynamics" slides, "plane kinetics",
 // rotation about a fixed axis, with the parallel-axis theorem):

@@ -1,6 +1,6 @@
-// The bodies of a scene (scene_api.md §2, api12.md §2): one body kind each, with the helpers that force
-// elements need to read their mass properties and to check the body indices they are given. "W" is the
-// scene frame: W itself when the scene declares no moving frame, else F (states are relative to it).
+// The bodies of a scene (docs/scenes.md §1, docs/fixed_point_frames_mass.md §1): one body kind each, with the
+// helpers that force elements need to read their mass properties and to check the body indices they are given.
+// "W" is the scene frame: W itself when the scene declares no moving frame, else F (states are relative to it).
 #pragma once
 #include "rigiddyn/check.hpp"
 #include "rigiddyn/models/particle.hpp"

@@ -1,4 +1,4 @@
-// What a force element sees of a body, and what it returns (scene_api.md §2). Both are taken at the
+// What a force element sees of a body, and what it returns. Both are taken at the
 // body's centre of mass G, the origin of its body frame B (docs/conventions.md "Body state").
 #pragma once
 #include <Eigen/Core>
@@ -13,8 +13,8 @@ namespace rigiddyn {
 //   w_B   angular velocity of B relative to W, expressed in B [rad/s];
 //   m     the body's mass now [kg] (set by the model: constant, or the mass coordinate of a body with a
 //         MassFlow); elements whose force scales with the mass read it here, never a copy.
-// "W" is the scene frame (api12.md §0): W itself when the scene declares no moving frame, else F; the
-// kinematics are relative to it.
+// "W" is the scene frame (docs/fixed_point_frames_mass.md §2): W itself when the scene declares no moving
+// frame, else F; the kinematics are relative to it.
 // Each body kind as elements see it: particle q_WB = identity, w_B = 0; planar body p_W = (x, y, 0),
 // q_WB = Rz(θ), v_W = (v_x, v_y, 0), w_B = (0, 0, ω).
 struct BodyKinematics {

@@ -1,9 +1,9 @@
-// Compiling a scene (issue 11, items 1 and 3; issue 12): the scene is checked (bodies, names, mass flows,
+// Compiling a scene (docs/scenes.md §3): the scene is checked (bodies, names, mass flows,
 // every element's own checks, the method's compatibility with it) and turned into an immutable
 // CompiledScene that holds the model whose derivative evaluates only the declared elements and the frame's
 // fictitious terms that are not identically zero (SceneModel) — or, for exactly today's problems (one body
 // under at most one UniformGravity and one ScheduledLoads through the centre of mass), the plan to run
-// today's one-body models, bitwise as today's simulate — and, for the one-body cases of issue 12 (a pivoted
+// today's one-body models, bitwise as today's simulate — and, for the one-body cases below (a pivoted
 // body under gravity and loads; a particle in a frame turning at a constant rate; a variable-mass particle
 // with one thrust), a fast model with fixed-size coordinates (scene/fast/) that runs through the same loop
 // and records the same SceneSimulation.
@@ -49,7 +49,7 @@ enum class ScenePath {
 // "generic", "one_body", "pivoted_body", "rotating_frame_particle", "variable_mass_particle"
 const char* scene_path_name(ScenePath path);
 
-// The fast one-body models of issue 12 (std::monostate: none).
+// The fast one-body models (std::monostate: none).
 using FastSceneModel = std::variant<std::monostate, PivotedBodyModel<SphericalEuler>, PivotedBodyModel<PrincipalEuler>,
                                     PivotedBodyModel<FullEuler>, RotatingFrameParticleModel, VariableMassParticleModel>;
 
@@ -58,7 +58,7 @@ class CompiledScene {
  public:
   const Scene& scene() const { return *scene_; }
   Method method() const { return method_; }
-  // The compatibility warnings of the scene with the method (item 3), each a sentence naming the
+  // The compatibility warnings of the scene with the method, each a sentence naming the
   // element: e.g. a velocity-dependent element under a kick-based splitting.
   const std::vector<std::string>& warnings() const { return warnings_; }
   // The generic model (used by step, and by simulate unless one_body_path()).

@@ -1,4 +1,4 @@
-// A user force compiled into the model (issue 11, item 2): CustomForce<F> holds any C++ callable F,
+// A user force compiled into the model: CustomForce<F> holds any C++ callable F,
 // called directly (no std::function, no virtual call: the compiler can inline it) once per listed body
 // per evaluation. Run it with simulate(scene, initial, options, custom_force...) (simulate_scene.hpp).
 // FunctionForce (scene/elements/function_force.hpp) is the type-erased form for bindings.
@@ -35,7 +35,7 @@ CustomForce<F> custom_force(BodyList bodies, F f, ElementTraits traits = Element
   return CustomForce<F>{std::move(bodies), std::move(f), traits};
 }
 
-// The compiled term (scene_api.md §2 concept).
+// The compiled term (the term concept of scene/element_traits.hpp).
 template <class F>
 class CustomForceTerm {
  public:

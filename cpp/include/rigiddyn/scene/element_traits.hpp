@@ -1,4 +1,4 @@
-// What a compiled force element depends on and provides (scene_api.md §2): read once when a scene is
+// What a compiled force element depends on and provides: read once when a scene is
 // compiled (method compatibility, which diagnostics to record), never per evaluation.
 #pragma once
 

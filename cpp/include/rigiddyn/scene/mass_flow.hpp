@@ -1,7 +1,7 @@
-// A body whose mass changes (api12.md §4): the mass rate ṁ [kg/s] and the rule its rotational inertia
-// follows, given per body when it is added to a scene (Scene::mass_flows), with the helpers the scene
-// models call. Its companion is the Thrust element (scene/elements/thrust.hpp): the force ṁ u_rel of the
-// mass that leaves (ṁ < 0) or joins (ṁ > 0) the body with the velocity u_rel relative to it.
+// A body whose mass changes (docs/fixed_point_frames_mass.md §3): the mass rate ṁ [kg/s] and the rule its
+// rotational inertia follows, given per body when it is added to a scene (Scene::mass_flows), with the helpers
+// the scene models call. Its companion is the Thrust element (scene/elements/thrust.hpp): the force ṁ u_rel of
+// the mass that leaves (ṁ < 0) or joins (ṁ > 0) the body with the velocity u_rel relative to it.
 //
 // Translation ("Rigid body kinematics and dynamics" notes, eq. (4.36), f = d(m v)/dt, written for the
 // body and the mass it exchanges): d(m v)/dt = f + ṁ (v + u_rel), so m v̇ = f + ṁ u_rel. The external
@@ -109,7 +109,7 @@ inline double burn_out_time(double m, double rate, double t) {
   return rate < 0.0 ? t + m / -rate : std::numeric_limits<double>::infinity();
 }
 
-// The error of a mass that is no longer positive (api12.md §2): std::invalid_argument
+// The error of a mass that is no longer positive: std::invalid_argument
 // "<name>: expected a positive mass, got m = <m> kg at t = <t> s (the body '<body_name>' runs out of mass
 // in the step from t = <step_start> s)"; name is the flow's ("mass_flows[i]").
 std::invalid_argument out_of_mass_error(const std::string& name, const std::string& body_name, double m, double t,

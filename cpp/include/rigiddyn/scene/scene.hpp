@@ -1,4 +1,4 @@
-// A scene (issues 11, 12): bodies and the force elements acting on them, as data, with the frame its
+// A scene: bodies and the force elements acting on them, as data, with the frame its
 // states are relative to and each body's mass flow. Compiling it (scene/compile.hpp) gives the model whose
 // derivative evaluates only the declared elements (and the frame's fictitious terms that are not
 // identically zero); simulate/step (scene/simulate_scene.hpp) run it.
@@ -87,7 +87,7 @@ inline bool has_mass_flow(const Scene& scene, std::size_t i) {
   return i < scene.mass_flows.size() && scene.mass_flows[i].has_value();
 }
 
-// The compiled term of each element spec (scene_api.md §2): TermOf<UniformGravity> = UniformGravityTerm, ...
+// The compiled term of each element spec: TermOf<UniformGravity> = UniformGravityTerm, ...
 template <class Spec>
 struct TermOf;
 template <>

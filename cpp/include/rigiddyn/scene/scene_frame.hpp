@@ -1,4 +1,5 @@
-// The frame F a scene's states are expressed in, moving relative to the inertial frame W (api12.md §3).
+// The frame F a scene's states are expressed in, moving relative to the inertial frame W
+// (docs/fixed_point_frames_mass.md §2).
 // A scene with a SceneFrame is integrated relative to F: Newton's law seen by an observer moving with F
 // gains the fictitious forces of the "Rigid body kinematics and dynamics" notes, eqs. (4.39)–(4.40),
 //   m r̈ = f − m a_O − m α × r − m Ω × (Ω × r) − 2 m Ω × ṙ

@@ -1,5 +1,5 @@
 // SceneModel: the integrator model (models/model_interface.hpp) of a compiled scene — any number of
-// bodies of any kind and the force elements declared, nothing else (scene_api.md §3).
+// bodies of any kind and the force elements declared, nothing else.
 //
 // Coordinates y (Eigen::VectorXd), per body in the scene's order:
 //   particle  (p_W 3, v_W 3)                        no attitude: a particle pays nothing for one

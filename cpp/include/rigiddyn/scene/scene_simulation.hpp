@@ -1,4 +1,4 @@
-// What simulate records of a scene (scene_api.md §3) and what step returns.
+// What simulate records of a scene (docs/scenes.md §5) and what step returns.
 #pragma once
 #include "rigiddyn/scene/body.hpp"
 
@@ -11,7 +11,7 @@ namespace rigiddyn {
 // bodies, ne = element_count elements). Bodies of every kind in the rigid-body layout: a particle has
 // q_WB = identity and w_B = 0, a planar body p_W = (x, y, 0), q_WB = Rz(θ), v_W = (v_x, v_y, 0),
 // w_B = (0, 0, ω); a pivoted body its centre of mass p_W = p_WO + R_WB p_OC_B and v_W = R_WB (ω × p_OC_B).
-// "W" is the scene frame (api12.md §0): W itself when the scene declares no moving frame, else F, and
+// "W" is the scene frame: W itself when the scene declares no moving frame, else F, and
 // every record is relative to it (kinetic energy included; the potential includes the centrifugal one
 // of a frame turning at a constant rate, so that total_energy is then the Jacobi integral).
 struct SceneSimulation {

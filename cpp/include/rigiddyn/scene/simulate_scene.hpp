@@ -1,4 +1,4 @@
-// simulate and step for scenes (scene_api.md §3): the run loop of the one-body simulate
+// simulate and step for scenes (docs/scenes.md §5): the run loop of the one-body simulate
 // (simulate/run_loop.hpp) on a compiled scene's model, recording every body, the energies, the momenta
 // and each element's work and power. Usable from C++ directly; the Python binding releases the GIL
 // around simulate (a FunctionForce takes it back in its calls).

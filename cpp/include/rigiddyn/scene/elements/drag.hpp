@@ -29,7 +29,7 @@ struct Drag {
   BodyList bodies;
 };
 
-// The compiled term (scene_api.md §2).
+// The compiled term.
 class DragTerm {
  public:
   // Throws std::invalid_argument "<name>.<coefficient>: ..." for a negative or non-finite coefficient,

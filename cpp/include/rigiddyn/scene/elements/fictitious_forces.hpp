@@ -1,7 +1,8 @@
-// The fictitious forces and torques of a scene whose states are relative to a moving frame F (api12.md §3;
-// the scene's SceneFrame, scene/scene_frame.hpp). Compile adds them after the user's elements; they are
-// not user specs. "W" in the kinematics is F here: p_W = r, the centre of mass relative to F's origin,
-// v_W = ṙ its velocity relative to F, q_WB = q_FB, w_B = ω, B's angular velocity relative to F, in B.
+// The fictitious forces and torques of a scene whose states are relative to a moving frame F
+// (docs/fixed_point_frames_mass.md §2; the scene's SceneFrame, scene/scene_frame.hpp). Compile adds them after
+// the user's elements; they are not user specs. "W" in the kinematics is F here: p_W = r, the centre of mass
+// relative to F's origin, v_W = ṙ its velocity relative to F, q_WB = q_FB, w_B = ω, B's angular velocity
+// relative to F, in B.
 //
 // Forces, at the centre of mass ("Rigid body kinematics and dynamics" notes, eqs. (4.39)–(4.40): Newton's
 // law seen by an observer moving with F), with Ω, α, a_O of frame_terms (in F):

@@ -52,7 +52,7 @@ struct FunctionForce {
   std::string type_name = "FunctionForce";
 };
 
-// The compiled term (scene_api.md §2).
+// The compiled term.
 class FunctionForceTerm {
  public:
   // Throws std::invalid_argument "<name>.f: ..." for an empty function, "<name>.bodies[k]: ..." for an

@@ -43,7 +43,7 @@ struct GravityGradient {
   BodyList bodies;
 };
 
-// The compiled term (scene_api.md §2): the listed rigid bodies with their inertia about the centre of mass.
+// The compiled term: the listed rigid bodies with their inertia about the centre of mass.
 class GravityGradientTerm {
  public:
   // Throws std::invalid_argument "<name>.gm: ..." unless gm is finite and > 0, "<name>.p_W: ..." for a

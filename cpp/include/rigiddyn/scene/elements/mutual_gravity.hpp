@@ -29,7 +29,7 @@ struct MutualGravity {
   BodyList bodies;
 };
 
-// The compiled term (scene_api.md §2): the listed bodies (their masses read from the kinematics, k.m, with
+// The compiled term: the listed bodies (their masses read from the kinematics, k.m, with
 // the positions).
 class MutualGravityTerm {
  public:

@@ -29,7 +29,7 @@ struct PointMassGravity {
   BodyList bodies;
 };
 
-// The compiled term (scene_api.md §2): the listed bodies (their masses read from the kinematics, k.m).
+// The compiled term: the listed bodies (their masses read from the kinematics, k.m).
 class PointMassGravityTerm {
  public:
   // Throws std::invalid_argument "<name>.gm: ..." unless gm is finite and > 0, "<name>.p_W: ..." for a

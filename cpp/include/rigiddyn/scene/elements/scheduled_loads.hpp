@@ -28,7 +28,7 @@ struct ScheduledLoads {
   Eigen::Vector3d point_B = Eigen::Vector3d::Zero();
 };
 
-// The compiled term (scene_api.md §2): the schedule and the loads of the current piece.
+// The compiled term: the schedule and the loads of the current piece.
 class ScheduledLoadsTerm {
  public:
   // Throws std::invalid_argument naming "<name>.body", "<name>.point_B", "<name>.loads[i]..." for a body

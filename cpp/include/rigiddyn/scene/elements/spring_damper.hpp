@@ -38,7 +38,7 @@ struct SpringDamper {
   double damping = 0.0;
 };
 
-// The compiled term (scene_api.md §2).
+// The compiled term.
 class SpringDamperTerm {
  public:
   // Throws std::invalid_argument naming "<name>.<field>": body_a not a body index; body_b neither −1 nor

@@ -1,12 +1,12 @@
-// Thrust: the force of the mass a body exchanges (api12.md §4). A body with a MassFlow (scene/mass_flow.hpp)
-// loses (ṁ < 0) or gains (ṁ > 0) mass at the rate ṁ(t); the mass moves with the velocity u_rel relative to
-// the body. The "Rigid body kinematics and dynamics" notes' eq. (4.36), f = d(m v)/dt, written for the body
-// and the exchanged mass together, gives d(m v)/dt = f + ṁ (v + u_rel), i.e.
+// Thrust: the force of the mass a body exchanges (docs/fixed_point_frames_mass.md §3). A body with a MassFlow
+// (scene/mass_flow.hpp) loses (ṁ < 0) or gains (ṁ > 0) mass at the rate ṁ(t); the mass moves with the velocity
+// u_rel relative to the body. The "Rigid body kinematics and dynamics" notes' eq. (4.36), f = d(m v)/dt,
+// written for the body and the exchanged mass together, gives d(m v)/dt = f + ṁ (v + u_rel), i.e.
 //   m v̇ = f + ṁ u_rel:
 // the thrust f_T = ṁ u_rel [N] acts on the body like an applied force (ṁ < 0 and u_rel backwards: a push
 // forwards). It is applied at the body point C + r_B (r_B in B, from the centre of mass), which adds the
 // torque r_B × f_B about the centre of mass (Craig, "Rigid Body Dynamics" slides, moment of a force about G).
-// "W" is the scene frame (api12.md §0). No potential.
+// "W" is the scene frame. No potential.
 #pragma once
 #include "rigiddyn/check.hpp"
 #include "rigiddyn/scene/body.hpp"
@@ -70,7 +70,7 @@ inline void check_thrust(const Thrust& spec, const std::vector<Body>& bodies,
 
 }  // namespace detail
 
-// The compiled term (scene_api.md §2): the body, u_rel in its frame, r_B and the body's mass flow (ṁ(t) is
+// The compiled term: the body, u_rel in its frame, r_B and the body's mass flow (ṁ(t) is
 // read from it at each evaluation: mass_rate, checked finite).
 class ThrustTerm {
  public:

@@ -20,7 +20,7 @@ struct UniformGravity {
   BodyList bodies;
 };
 
-// The compiled term (scene_api.md §2): the listed bodies (their masses read from the kinematics, k.m, so
+// The compiled term: the listed bodies (their masses read from the kinematics, k.m, so
 // that a body with a MassFlow feels its mass now).
 class UniformGravityTerm {
  public:

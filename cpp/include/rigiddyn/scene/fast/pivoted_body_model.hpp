@@ -1,6 +1,6 @@
 // PivotedBodyModel<Euler>: the fast model of ONE pivoted body (models/pivoted_body.hpp) in the inertial
-// frame W under uniform gravity g_W and a piecewise-constant ScheduledLoads schedule (api12.md §2: the fast
-// path compile chooses for such a scene). Fixed-size coordinates, no allocation, no visit; the same members
+// frame W under uniform gravity g_W and a piecewise-constant ScheduledLoads schedule (the fast path
+// compile chooses for such a scene). Fixed-size coordinates, no allocation, no visit; the same members
 // as SceneModel (scene/scene_model.hpp), so the run loop and every integrator take it unchanged.
 //
 // Coordinates y (10,): (q_WB xyzw 4, w_B 3, t, work of gravity, work of the loads) [-, rad/s, s, J, J].

@@ -1,7 +1,7 @@
 // RotatingFrameParticleModel: the fast model of ONE particle whose state is relative to a frame F turning at
 // a constant angular velocity Ω about its fixed origin (SceneFrame::rotating / earth, constant_rotation),
-// under at most uniform gravity g_F (given in F) — the fast path compile chooses for such a scene
-// (api12.md §2). Fixed-size coordinates, no allocation, no visit; the same members as SceneModel
+// under at most uniform gravity g_F (given in F) — the fast path compile chooses for such a scene.
+// Fixed-size coordinates, no allocation, no visit; the same members as SceneModel
 // (scene/scene_model.hpp), so the run loop and every integrator take it unchanged. "W" in the records is F.
 //
 // Coordinates y (10,): (p_F 3, v_F 3, t, work of gravity, work of the centrifugal force, work of the

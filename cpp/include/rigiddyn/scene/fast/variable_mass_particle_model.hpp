@@ -1,6 +1,6 @@
 // VariableMassParticleModel: the fast model of ONE particle whose mass changes at a constant rate ṁ
 // (scene/mass_flow.hpp), pushed by one Thrust along a fixed direction of the inertial frame W
-// (scene/elements/thrust.hpp) and, optionally, uniform gravity (api12.md §2: the fast path compile chooses
+// (scene/elements/thrust.hpp) and, optionally, uniform gravity (the fast path compile chooses
 // for such a scene). Fixed-size coordinates, no allocation, no visit; the same members as SceneModel
 // (scene/scene_model.hpp), so the run loop and every integrator take it unchanged.
 //

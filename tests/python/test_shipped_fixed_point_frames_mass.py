@@ -1,8 +1,8 @@
-"""The shipped scenes of issue 12 (heavy_top, pendulum, foucault, rocket): each loads, describes what
-matters about it (the pivot and I_O, the frame and its fictitious terms, the mass flow and thrust),
-runs finite from Python and from `python3 -m rigiddyn simulate` (whose summary line says the mass
-burnt, the pivot's reaction range), and its physics is what its file's comment says where that is
-cheap to check exactly."""
+"""The shipped scenes of bodies about a fixed point, moving frames and variable mass (heavy_top, pendulum,
+foucault, rocket): each loads, describes what matters about it (the pivot and I_O, the frame and its fictitious
+terms, the mass flow and thrust), runs finite from Python and from `python3 -m rigiddyn simulate` (whose summary
+line says the mass burnt, the pivot's reaction range), and its physics is what its file's comment says where
+that is cheap to check exactly."""
 
 import json
 import math

@@ -1,11 +1,12 @@
-"""The Python API of issue 12 (item 5; bad input at the Python surface, item 6): the bodies about a fixed
-point (PivotedBody, PivotedPlanarBody, their states, forward and inverse dynamics), the scene's moving frame
-(SceneFrame), variable mass (MassFlow, Thrust), and what a run of them records (SceneResult.pivot_reaction_W,
-angular_momentum_O_W, mass). Construction and its checks (ValueError/TypeError naming the argument), repr and
-pickle round trips, ==, the shapes and dtypes of the new records, Python callables (frame motion, mass rate,
-inertia rule) whose exceptions propagate and whose non-finite values raise ValueError naming the field, and
-the GIL released while a pivoted body runs. The physics of these models is tested against the numpy
-reference elsewhere (test_pivoted*.py, test_moving_frame*.py, test_variable_mass*.py); here only the wiring."""
+"""The Python API of bodies about a fixed point, moving frames and variable mass (and bad input at the Python
+surface): the bodies about a fixed point (PivotedBody, PivotedPlanarBody, their states, forward and inverse
+dynamics), the scene's moving frame (SceneFrame), variable mass (MassFlow, Thrust), and what a run of them
+records (SceneResult.pivot_reaction_W, angular_momentum_O_W, mass). Construction and its checks
+(ValueError/TypeError naming the argument), repr and pickle round trips, ==, the shapes and dtypes of the new
+records, Python callables (frame motion, mass rate, inertia rule) whose exceptions propagate and whose
+non-finite values raise ValueError naming the field, and the GIL released while a pivoted body runs. The physics
+of these models is tested against the numpy reference elsewhere (test_pivoted*.py, test_moving_frame*.py,
+test_variable_mass*.py); here only the wiring."""
 
 from __future__ import annotations
 

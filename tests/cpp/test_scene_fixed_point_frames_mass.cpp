@@ -1,7 +1,7 @@
-// The scene pipeline's issue-12 parts (api12.md §2): pivoted bodies, the scene frame and mass flows in
-// SceneModel; each fast one-body model equals the generic model on the same scene; mixed scenes keep what
-// they must (energy, the frame equivalence, Tsiolkovsky's momentum bookkeeping); the refusals and warnings
-// of compile and simulate.
+// The scene pipeline's parts for bodies about a fixed point, moving frames and variable mass: pivoted bodies,
+// the scene frame and mass flows in SceneModel; each fast one-body model equals the generic model on the same
+// scene; mixed scenes keep what they must (energy, the frame equivalence, Tsiolkovsky's momentum bookkeeping);
+// the refusals and warnings of compile and simulate.
 #include <gtest/gtest.h>
 
 #include "rigiddyn/scene/simulate_scene.hpp"
@@ -96,7 +96,7 @@ void expect_error_containing(const std::function<void()>& make, const std::strin
 // ---------------------------------------------------------------------------------------------------
 // fast models = the generic model
 
-TEST(SceneIssue12Fast, PivotedBodyModelEqualsGenericModel) {
+TEST(SceneFixedPointFramesMassFast, PivotedBodyModelEqualsGenericModel) {
   Scene scene;
   scene.bodies = {heavy_top()};
   scene.elements = {UniformGravity{Eigen::Vector3d(0.0, 0.0, -9.81), {}},
@@ -111,7 +111,7 @@ TEST(SceneIssue12Fast, PivotedBodyModelEqualsGenericModel) {
   }
 }
 
-TEST(SceneIssue12Fast, RotatingFrameParticleModelEqualsGenericModel) {
+TEST(SceneFixedPointFramesMassFast, RotatingFrameParticleModelEqualsGenericModel) {
   Scene scene;
   scene.bodies = {Particle(1.5)};
   scene.frame = SceneFrame::rotating(Eigen::Vector3d(0.2, 0.3, 1.0), 0.8);
@@ -131,7 +131,7 @@ TEST(SceneIssue12Fast, RotatingFrameParticleModelEqualsGenericModel) {
   }
 }
 
-TEST(SceneIssue12Fast, VariableMassParticleModelEqualsGenericModel) {
+TEST(SceneFixedPointFramesMassFast, VariableMassParticleModelEqualsGenericModel) {
   Scene scene;
   scene.bodies = {Particle(10.0)};
   MassFlow flow;
@@ -161,7 +161,7 @@ double energy_drift(const SceneSimulation& r) {
   return drift;
 }
 
-TEST(SceneIssue12Mixed, PivotedBodyWithSpringToParticleConservesEnergy) {
+TEST(SceneFixedPointFramesMassMixed, PivotedBodyWithSpringToParticleConservesEnergy) {
   Scene scene;
   scene.bodies = {heavy_top(), Particle(0.7)};
   scene.elements = {UniformGravity{Eigen::Vector3d(0.0, 0.0, -9.81), {}},
@@ -188,7 +188,7 @@ TEST(SceneIssue12Mixed, PivotedBodyWithSpringToParticleConservesEnergy) {
   EXPECT_EQ(r.mass[1], 0.7);
 }
 
-TEST(SceneIssue12Mixed, PivotedReactionAndMomentumAboutPivotAtRest) {
+TEST(SceneFixedPointFramesMassMixed, PivotedReactionAndMomentumAboutPivotAtRest) {
   // hanging at rest below the pivot: the reaction holds the weight, H_O = 0, T = 0
   Scene scene;
   scene.bodies = {PivotedBody(RigidBody(2.0, full_inertia()), Eigen::Vector3d(0.0, 0.0, -0.5))};
@@ -232,7 +232,7 @@ double state_distance(const RigidBodyState& a, const RigidBodyState& b) {
   return std::max({(a.p_W - b.p_W).norm(), (a.v_W - b.v_W).norm(), (a.w_B - b.w_B).norm(), dq});
 }
 
-TEST(SceneIssue12Mixed, VariableMassBodyWithOffCentreThrustInRotatingFrameEqualsInertialRun) {
+TEST(SceneFixedPointFramesMassMixed, VariableMassBodyWithOffCentreThrustInRotatingFrameEqualsInertialRun) {
   const Eigen::Vector3d axis(0.3, -0.2, 1.0);
   const double rate = 0.7;
   MassFlow flow;
@@ -279,7 +279,7 @@ TEST(SceneIssue12Mixed, VariableMassBodyWithOffCentreThrustInRotatingFrameEquals
   }
 }
 
-TEST(SceneIssue12Mixed, RigidBodyInRotatingFrameKeepsJacobiIntegral) {
+TEST(SceneFixedPointFramesMassMixed, RigidBodyInRotatingFrameKeepsJacobiIntegral) {
   // a rigid body under gravity along the rotation axis, seen from the turning frame: kinetic energy relative to
   // F plus the gravity and centrifugal potentials (Jacobi's integral) is conserved by the equations, so RK4's
   // drift is C dt⁴ (halving dt divides it by ~16; a rate < 10 would mean a non-conserved quantity)
@@ -297,7 +297,7 @@ TEST(SceneIssue12Mixed, RigidBodyInRotatingFrameKeepsJacobiIntegral) {
   EXPECT_GT(coarse / fine, 10.0) << coarse << " " << fine;
 }
 
-TEST(SceneIssue12Mixed, VariableMassBodyFollowsTsiolkovsky) {
+TEST(SceneFixedPointFramesMassMixed, VariableMassBodyFollowsTsiolkovsky) {
   // thrust along a fixed body axis through C, no rotation: v(t) = v0 + u_rel ln(m(t)/m0) (the momentum
   // bookkeeping d(m v)/dt = ṁ (v + u_rel) integrated)
   MassFlow flow;
@@ -321,7 +321,7 @@ TEST(SceneIssue12Mixed, VariableMassBodyFollowsTsiolkovsky) {
 // ---------------------------------------------------------------------------------------------------
 // refusals and warnings
 
-TEST(SceneIssue12Checks, Refusals) {
+TEST(SceneFixedPointFramesMassChecks, Refusals) {
   Scene thrust_without_flow;
   thrust_without_flow.bodies = {Particle(1.0)};
   thrust_without_flow.elements = {Thrust{0, Eigen::Vector3d(1.0, 0.0, 0.0), Frame::world, Eigen::Vector3d::Zero()}};
@@ -379,7 +379,7 @@ TEST(SceneIssue12Checks, Refusals) {
   expect_error_containing([&] { compile_scene(shaped, Method::rk4); }, "mass_flows[0].inertia_rule: expected InertiaRule::scaled");
 }
 
-TEST(SceneIssue12Checks, MassRunningOut) {
+TEST(SceneFixedPointFramesMassChecks, MassRunningOut) {
   MassFlow flow;
   flow.rate = -2.0;
   Scene scene;
@@ -400,7 +400,7 @@ TEST(SceneIssue12Checks, MassRunningOut) {
   }
 }
 
-TEST(SceneIssue12Checks, DigitsLostWarning) {
+TEST(SceneFixedPointFramesMassChecks, DigitsLostWarning) {
   Scene scene;
   // I_C ~ 1 kg m², m |c|² = 1e8: ~8 digits lost
   scene.bodies = {PivotedBody(RigidBody(1.0, Eigen::Vector3d(1.0, 1.0, 1.0)), Eigen::Vector3d(0.0, 0.0, 1e4))};
@@ -414,7 +414,7 @@ TEST(SceneIssue12Checks, DigitsLostWarning) {
   EXPECT_TRUE(compile_scene(scene, Method::rk4).warnings().empty());
 }
 
-TEST(SceneIssue12Checks, FrameTermsOfAGeneralMotion) {
+TEST(SceneFixedPointFramesMassChecks, FrameTermsOfAGeneralMotion) {
   Scene scene;
   scene.bodies = {Particle(1.0), RigidBody(2.0, full_inertia())};
   scene.frame = SceneFrame::moving(FrameMotion([](double t) {
@@ -434,7 +434,7 @@ TEST(SceneIssue12Checks, FrameTermsOfAGeneralMotion) {
   EXPECT_LT(r.p_W[3 * 2 * 10], 0.0);
 }
 
-TEST(SceneIssue12Checks, StepReportsMasses) {
+TEST(SceneFixedPointFramesMassChecks, StepReportsMasses) {
   MassFlow flow;
   flow.rate = -0.5;
   Scene scene;

@@ -1,4 +1,5 @@
-"""The Python overhead of rigiddyn.simulate on each model of issue 12 (the issue: < 10 % over the C++ call).
+"""The Python overhead of rigiddyn.simulate on each model of a body about a fixed point, a moving frame or
+variable mass (target: < 10 % over the C++ call).
 
 For each model, one run of `steps` RK4 steps recording every step (the arrays the user gets: SceneResult
 adopts the C++ records without a copy) and one recording only the first and last state:
@@ -14,8 +15,8 @@ loop, wrapping the records), the fastest of several runs. So the overhead printe
 also counts compiling the scene, which a C++ caller of simulate(scene, ...) pays too: it bounds the Python
 overhead from above.
 
-    python bench/python/bench_issue12_overhead.py           # 100 000 steps
-    python bench/python/bench_issue12_overhead.py --small   # 5 000 steps (what ctest runs)
+    python bench/python/bench_fixed_point_frames_mass_overhead.py           # 100 000 steps
+    python bench/python/bench_fixed_point_frames_mass_overhead.py --small   # 5 000 steps (what ctest runs)
 """
 
 import time

@@ -1,8 +1,8 @@
-"""Issue 12's "Done when" physics: the heavy top against its closed form, the exact top against DOP853, the pendulum's
-period against K(m) up to the separatrix, a run in a rotating frame against the inertial run turned into it, zero
-Coriolis power, Foucault's pendulum, Tsiolkovsky, the observed order of every method on every new model, and the
-bad-input cases of item 6. The closed forms are the independent numpy/scipy reference (rigiddyn_ref.exact_dynamics,
-which never calls rigiddyn)."""
+"""The physics of bodies about a fixed point, moving frames and variable mass: the heavy top against its closed
+form, the exact top against DOP853, the pendulum's period against K(m) up to the separatrix, a run in a rotating
+frame against the inertial run turned into it, zero Coriolis power, Foucault's pendulum, Tsiolkovsky, the
+observed order of every method on every new model, and the bad-input cases. The closed forms are the independent
+numpy/scipy reference (rigiddyn_ref.exact_dynamics, which never calls rigiddyn)."""
 
 import math
 import warnings
@@ -58,9 +58,10 @@ def top_errors(steps_per_period, periods=10, method="rk4"):
 
 
 def test_heavy_top_rk4_follows_the_closed_form_over_ten_nutation_periods():
-    """RK4 at T/6000 over 10 nutation periods within 1e-9 relative (the issue's figure) of the Lagrange top's closed
-    form. Why this step: RK4's global error is C h⁴ once asymptotic, so the run at 2h (T/3000) has 16× the error;
-    its measured error bounds this one's by e(h) ≈ e(2h)/16 and the asymptotic regime is checked (ratio 16 ± 25 %).
+    """RK4 at T/6000 over 10 nutation periods within 1e-9 relative (the required accuracy) of the Lagrange top's
+    closed form. Why this step: RK4's global error is C h⁴ once asymptotic, so the run at 2h (T/3000) has 16×
+    the error; its measured error bounds this one's by e(h) ≈ e(2h)/16 and the asymptotic regime is checked
+    (ratio 16 ± 25 %).
     The closed form's own error (test_exact_dynamics_reference: ≲ 1e-12 per unit phase) and the round-off of 60000
     steps (a random walk √N × 16 eps κ(I_O) ≈ 3e-12; ≤ 60000 × 16 eps × 3.8 ≈ 8e-10 even if every rounding added up)
     are below 1e-9."""
@@ -72,7 +73,7 @@ def test_heavy_top_rk4_follows_the_closed_form_over_ten_nutation_periods():
 
 def test_exact_top_agrees_with_dop853_over_one_nutation_period():
     """rigiddyn.LagrangeTopSolution against DOP853 (rtol 1e-13) of Euler's equations about O (the reference's rate) over
-    one nutation period: within 1e-12 (the issue's figure), with DOP853's own error bounded first: by tolerance
+    one nutation period: within 1e-12 (the required accuracy), with DOP853's own error bounded first: by tolerance
     proportionality its error at rtol 1e-13 is ≲ 1/10^(8/9) of its difference from the run at 1e-12, asserted ≤ 3e-13,
     so the comparison can fail only by the closed form."""
     top = top_reference()
@@ -107,7 +108,7 @@ def test_exact_top_precession_bounds_and_period_match_the_reference():
 
 
 def test_exact_applies_to_a_pivoted_body_without_gravity():
-    """Without gravity the pivoted body turns freely about O with I_O (item 1: the torque-free machinery applies):
+    """Without gravity the pivoted body turns freely about O with I_O (the torque-free machinery applies):
     'exact' against RK4 at h = 1e-3 s over 2 s. RK4's error e(h) is bounded by its Richardson estimate |y(2h) −
     y(h)|/15 (C h⁴ asymptotic), doubled for the next term; the closed form's own error 16 eps κ (1 + |ω| t) (κ of
     I_O ≈ 3); the pivot's reaction is then m a_C = m R (ω × (ω × c) + α × c) at each record (same formula both
@@ -225,10 +226,10 @@ def frame_difference(inertial, in_frame):
 def test_run_in_a_rotating_frame_equals_the_inertial_run_turned_into_it(method):
     """Both runs (1 s, state sizes ~1, rates ≲ 1.5 /s) differ by the two runs' truncation errors and round-off:
     C h^p. The step is checked to be in the truncation-dominated range: the difference at 8h must be 8^p times
-    larger (within 25 %), so the difference at h is (difference at 8h)/8^p. With h = 1e-5 s (100000 steps) for p = 2
-    (implicit midpoint: C ≈ 0.2, 2e-11) and 1e-3 s for p = 4 (≈ 1e-13) that is ≤ 1e-10 (the issue's figure); the
-    round-off of 1e5 steps (a random walk √N × 16 eps ≈ 1e-12; implicit midpoint's Newton stops at 1e-14 per
-    step, also unbiased) stays below it."""
+    larger (within 25 %), so the difference at h is (difference at 8h)/8^p. With h = 1e-5 s (100000 steps) for
+    p = 2 (implicit midpoint: C ≈ 0.2, 2e-11) and 1e-3 s for p = 4 (≈ 1e-13) that is ≤ 1e-10 (the required
+    accuracy); the round-off of 1e5 steps (a random walk √N × 16 eps ≈ 1e-12; implicit midpoint's Newton stops
+    at 1e-14 per step, also unbiased) stays below it."""
     p = ORDERS[method]
     dt = 1e-5 if p == 2 else 1e-3
     steps = round(1.0 / dt)
@@ -290,7 +291,7 @@ def test_foucault_plane_turns_at_omega_sin_latitude_clockwise_in_the_north(latit
     vertical (turns nothing at first order) and ≈ (ω0 dt)⁴/120 ≈ 1.3e-9 per radian of phase (≈ 2e-6 rad over the
     run); the run at dt/2, recorded at the same times, checks it: the rates agree within 1e-4 relative. The fit over
     ~280 swings of a turn of ~0.1 rad: its error shrinks with the duration (about −0.06 %, −0.03 %, +0.02 % at
-    900, 1800, 3600 s in this session's runs), ≪ 0.5 % at 1800 s."""
+    900, 1800, 3600 s in the runs measured), ≪ 0.5 % at 1800 s."""
     want = -7.2921159e-5 * np.sin(latitude)
     got = foucault_rate(latitude)
     assert got == pytest.approx(want, rel=5e-3)
@@ -387,7 +388,7 @@ def test_observed_order_of_every_method_on_every_new_model(method, model):
     assert abs(slopes[-1] - p) <= max(2 * abs(slopes[-1] - slopes[-2]), 0.05), (slopes, d)
 
 
-# ---------------------------------------------------------------- bad input (item 6)
+# ---------------------------------------------------------------- bad input
 def test_pivot_at_the_centre_of_mass_is_the_free_rotation():
     """c = 0: gravity has no moment about O = C, so the body turns as the free RigidBody (same RK4 on the same Euler
     equations, I_O = I_C): attitude and ω agree to the round-off of 200 steps (200 × 16 eps κ, κ = 3); 'exact'

@@ -1,7 +1,8 @@
-"""Scene files for issue 12's models (rigiddyn.scene_file): pinned bodies ([[body]] kind "pivoted" and
-"pivoted_planar"), mass flows ([body.mass_flow]), the thrust element ([[force]] type "thrust"), the
-scene frame ([frame] kind "rotating" | "earth") and the [tradeoff] table: what each key reads to, the
-field-named errors, and the canonical file (scene_to_toml) reading back to the same scene bit for bit."""
+"""Scene files for bodies about a fixed point, moving frames and variable mass (rigiddyn.scene_file): pinned
+bodies ([[body]] kind "pivoted" and "pivoted_planar"), mass flows ([body.mass_flow]), the thrust element
+([[force]] type "thrust"), the scene frame ([frame] kind "rotating" | "earth") and the [tradeoff] table: what
+each key reads to, the field-named errors, and the canonical file (scene_to_toml) reading back to the same scene
+bit for bit."""
 
 import math
 

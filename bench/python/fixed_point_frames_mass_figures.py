@@ -1,7 +1,8 @@
-"""The figures of the shipped scenes of issue 12 quoted in docs/fixed_point_frames_mass.md (section 5):
-each scene run with its file's [run] (method, dt, duration) and measured against its closed form.
+"""The figures of the shipped pendulum, heavy_top, foucault and rocket scenes quoted in
+docs/fixed_point_frames_mass.md (section 5): each scene run with its file's [run] (method, dt, duration) and
+measured against its closed form.
 
-    PYTHONPATH=build/<dir>/python python3 bench/python/issue12_figures.py
+    PYTHONPATH=build/<dir>/python python3 bench/python/fixed_point_frames_mass_figures.py
 
 - pendulum: the period, from the times the rod passes theta = 0 going up (linear interpolation between
   records), against CompoundPendulumSolution.period = 4 K(m) / omega0, and the largest angle error;

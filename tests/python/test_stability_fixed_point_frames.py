@@ -1,6 +1,6 @@
-"""rigiddyn.stability on issue 12's bodies and frames: a pinned body's spin (Euler's equations about O with
-I_O) and swing (sqrt(m g d / I_O)), and a rotating frame's centrifugal and Coriolis terms (a turn of the
-velocity at 2 |Omega|). Each rule is checked three ways: its rate against the closed form, its warning
+"""rigiddyn.stability on bodies about a fixed point and moving frames: a pinned body's spin (Euler's equations
+about O with I_O) and swing (sqrt(m g d / I_O)), and a rotating frame's centrifugal and Coriolis terms (a turn
+of the velocity at 2 |Omega|). Each rule is checked three ways: its rate against the closed form, its warning
 where the run really grows or diverges, and its silence where the run stays bounded."""
 
 import math
