@@ -357,6 +357,28 @@ std::vector<double> as_dt(py::handle obj, double& common, py::ssize_t N) {
   return std::vector<double>(a.data(), a.data() + a.shape(0));
 }
 
+// steps of every sample: `steps`, or `duration` [s] in whole steps of the samples' dt (a float, or an (N,) array whose
+// every entry gives the same count: the samples' records share their times' count), as simulate's as_steps.
+std::int64_t batch_steps(py::handle steps, py::handle duration, py::handle dt) {
+  if (steps.is_none() == duration.is_none() || !steps.is_none()) return as_steps(steps, duration, 1.0);
+  const py::object si = py_io::in_si(dt, "s", "dt");
+  py::ssize_t n = 1;  // the samples' count as dt gives it (as_dt checks its shape)
+  if (is_sequence(si)) n = py::len(si);
+  if (py::isinstance<py::array>(si) && py::array(si).ndim() > 0) n = py::array(si).shape(0);
+  double common = 0.0;
+  const std::vector<double> per_sample = as_dt(si, common, n);
+  const std::int64_t count = as_steps(steps, duration, per_sample.empty() ? common : per_sample[0]);
+  for (std::size_t i = 1; i < per_sample.size(); ++i) {
+    if (as_steps(steps, duration, per_sample[i]) != count) {
+      py_io::throw_value_error("duration", "the same number of steps for every sample's dt (or steps= instead)",
+                               std::to_string(count) + " steps of dt[0] = " + format_value(per_sample[0]) + " s and " +
+                                   std::to_string(as_steps(steps, duration, per_sample[i])) + " of dt[" +
+                                   std::to_string(i) + "] = " + format_value(per_sample[i]) + " s");
+    }
+  }
+  return count;
+}
+
 // gravity: as simulate's (None/False, True, a 3-vector [m/s²] in W) for every sample, or an (N, 3) array.
 std::vector<Eigen::Vector3d> as_batch_gravity(py::handle obj, Eigen::Vector3d& common, py::ssize_t N) {
   if (obj.is_none() || py::isinstance<py::bool_>(obj)) {
@@ -558,10 +580,10 @@ struct CommonArgs {
   bool simd;
 };
 
-CommonArgs as_common(py::handle steps, py::handle record_every, py::handle t0, py::handle threads, py::handle simd,
+CommonArgs as_common(std::int64_t steps, py::handle record_every, py::handle t0, py::handle threads, py::handle simd,
                      py::handle scalar_first) {
   CommonArgs c;
-  c.options.steps = py_io::as_int(steps, "steps", 0);
+  c.options.steps = steps;
   c.options.record_every = py_io::as_int(record_every, "record_every", 1);
   c.options.t0 = py_io::as_scalar(py_io::in_si(t0, "s", "t0"), "t0");
   c.threads = as_threads(threads);
@@ -807,8 +829,8 @@ py::typing::Union<BatchResult, BatchSceneResult> simulate_batch_py(py::handle mo
                                                                    py::handle record_every, py::handle loads,
                                                                    py::handle gravity, py::handle t0, py::handle threads,
                                                                    py::handle simd, py::handle scalar_first,
-                                                                   py::handle progress) {
-  const CommonArgs c = as_common(steps, record_every, t0, threads, simd, scalar_first);
+                                                                   py::handle progress, py::handle duration) {
+  const CommonArgs c = as_common(batch_steps(steps, duration, dt), record_every, t0, threads, simd, scalar_first);
   if (is_scene_model(model)) return py::cast(scene_batch(model, initial, dt, method, loads, gravity, c, progress));
   const std::string kind = model_kind(model).cast<std::string>();
   if (kind == "RigidBody") {
@@ -838,8 +860,9 @@ initial: a list of N states of the body's kind (ParticleState, PlanarBodyState, 
   'v_W': (N, 3) [m/s] in W, 'w_B': (N, 3) [rad/s] in B}; Particle {'p_W', 'v_W'}; PlanarBody {'p_W': (N, 2) [m],
   'theta': (N,) [rad], 'v_W': (N, 2) [m/s], 'omega': (N,) [rad/s]}. A scene: a list of N lists of the states of
   its bodies.
-dt: a float [s] for every sample or an (N,) array [s] (pint quantities converted). steps, record_every, t0,
-  method, scalar_first: as simulate, shared by every sample (so every sample has the same record count n).
+dt: a float [s] for every sample or an (N,) array [s] (pint quantities converted). steps (or duration= by
+  keyword), record_every, t0, method, scalar_first: as simulate, shared by every sample (so every sample has the
+  same record count n; a duration must give the same number of steps at every sample's dt).
 loads (bodies): as simulate (one schedule for every sample), or a list of N schedules (lists of AppliedLoad).
 gravity (bodies): as simulate (None/False, True, a 3-vector [m/s^2] in W), or an (N, 3) array [m/s^2] in W.
   A scene declares its loads and gravity as elements (loads and gravity must be None).
@@ -951,10 +974,12 @@ void bind_batch(py::module_& m) {
   def_common(scene, &batch_scene_sample_object);
   scene.def("__repr__", &batch_scene_repr).def(py::pickle(&batch_scene_state, &batch_scene_from_state));
 
-  m.def("simulate_batch", &simulate_batch_py, py::arg("model"), py::arg("initial"), py::arg("dt"), py::arg("steps"),
+  m.def("simulate_batch", &simulate_batch_py, py::arg("model"), py::arg("initial"), py::arg("dt"),
+        py::arg("steps") = py::none(),
         py::arg("method") = py::none(), py::arg("record_every") = 1, py::arg("loads") = py::none(),
         py::arg("gravity") = py::none(), py::arg("t0") = 0.0, py::arg("threads") = py::none(),
-        py::arg("simd") = false, py::arg("scalar_first") = false, py::arg("progress") = py::none(), simulate_batch_doc);
+        py::arg("simd") = false, py::arg("scalar_first") = false, py::arg("progress") = py::none(), py::kw_only(),
+        py::arg("duration") = py::none(), simulate_batch_doc);
   m.def("default_thread_count", &default_thread_count,
         "The number of hardware threads (at least 1): simulate_batch's threads=None.");
 }

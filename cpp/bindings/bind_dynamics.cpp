@@ -110,18 +110,19 @@ py::typing::Union<SimulationResult, SceneResult> simulate_py(py::handle model, p
                                                              py::handle steps, py::handle method,
                                                              py::handle record_every, py::handle loads,
                                                              py::handle gravity, py::handle t0,
-                                                             py::handle scalar_first, py::handle progress) {
+                                                             py::handle scalar_first, py::handle progress,
+                                                             py::handle duration) {
   if (is_scene(model)) {
-    return py::cast(
-        simulate_scene_py(model, initial, dt, steps, method, record_every, loads, gravity, t0, scalar_first, progress));
+    return py::cast(simulate_scene_py(model, initial, dt, steps, method, record_every, loads, gravity, t0, scalar_first,
+                                      progress, duration));
   }
   if (is_pivoted(model)) {  // the one-body scene of the body, its gravity and loads
     return py::cast(simulate_scene_py(pivoted_scene(model, loads, gravity), py::make_tuple(initial), dt, steps, method,
-                                      record_every, py::none(), py::none(), t0, scalar_first, progress));
+                                      record_every, py::none(), py::none(), t0, scalar_first, progress, duration));
   }
   return py::cast(with_model(model, initial, "initial", [&](const auto& body, const auto& state) {
     SimulationOptions o = as_options(dt, method, loads, gravity);
-    o.steps = py_io::as_int(steps, "steps", 0);
+    o.steps = as_steps(steps, duration, o.dt);
     o.record_every = py_io::as_int(record_every, "record_every", 1);
     o.t0 = py_io::as_scalar(py_io::in_si(t0, "s", "t0"), "t0");
     const bool first = py_io::as_bool(scalar_first, "scalar_first");
@@ -216,7 +217,11 @@ py::object step_py(py::handle model, py::handle state, py::handle dt, py::handle
 const char* const simulate_doc = R"doc(
 Integrate `model` from `initial` over `steps` fixed steps of `dt` [s] with `method` (see methods()),
 in C++ with the GIL released, and record every `record_every`-th step (plus the first and the last).
-dt and t0: each a float [s] or a pint quantity (converted to s; ValueError naming it for another dimension).
+The run's length: steps= (an int >= 0) or, by keyword, duration= [s] (a float or a pint quantity), exactly one;
+a duration must be a whole number of steps of dt (to 1e-9 relative: 10 s at dt = 0.01 s is 1000 steps),
+else ValueError naming duration and dt with the nearest durations that are.
+dt, t0 and duration: each a float [s] or a pint quantity (converted to s; ValueError naming it for another
+dimension).
 
 model/initial: Particle/ParticleState, PlanarBody/PlanarBodyState or RigidBody/RigidBodyState; or a Scene
   or CompiledScene and a list of the states of its bodies (returns a SceneResult: see Scene); or a PivotedBody/
@@ -363,14 +368,23 @@ void bind_dynamics(py::module_& m) {
           "True or False declares the order of its q_WB rows instead.");
 
 #define RIGIDDYN_SIMULATE_ARGS                                                                              \
-  py::arg("model"), py::arg("initial"), py::arg("dt"), py::arg("steps"), py::arg("method") = py::none(),      \
-      py::arg("record_every") = 1, py::arg("loads") = py::none(), py::arg("gravity") = py::none(),         \
-      py::arg("t0") = 0.0, py::arg("scalar_first") = false, py::arg("progress") = py::none()
+  py::arg("model"), py::arg("initial"), py::arg("dt"), py::arg("steps") = py::none(),                        \
+      py::arg("method") = py::none(), py::arg("record_every") = 1, py::arg("loads") = py::none(),          \
+      py::arg("gravity") = py::none(), py::arg("t0") = 0.0, py::arg("scalar_first") = false,               \
+      py::arg("progress") = py::none(), py::kw_only(), py::arg("duration") = py::none()
 #define RIGIDDYN_STEP_ARGS                                                                                  \
   py::arg("model"), py::arg("state"), py::arg("dt"), py::arg("method") = py::none(), py::arg("loads") = py::none(), \
       py::arg("gravity") = py::none(), py::arg("t") = py::none()
   m.def("simulate", &simulate_py, RIGIDDYN_SIMULATE_ARGS, simulate_doc);
   m.def("step", &step_py, RIGIDDYN_STEP_ARGS, step_doc);
+  m.def(
+      "_steps_of",
+      [](py::handle steps, py::handle duration, py::handle dt) {
+        return as_steps(steps, duration, py_io::as_scalar(py_io::in_si(dt, "s", "dt"), "dt"));
+      },
+      py::arg("steps"), py::arg("duration"), py::arg("dt"),
+      "The step count of a run of simulate(..., steps=, duration=) at one dt [s] (the package's Python front ends "
+      "check it before their own work); ValueError as simulate's.");
 #undef RIGIDDYN_SIMULATE_ARGS
 #undef RIGIDDYN_STEP_ARGS
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "common_args.hpp"
 #include "numpy_io.hpp"
 #include "python_run.hpp"
 #include "repr.hpp"
@@ -440,11 +441,11 @@ bool is_scene(py::handle model) {
 
 SceneResult simulate_scene_py(py::handle model, py::handle initial, py::handle dt, py::handle steps, py::handle method,
                              py::handle record_every, py::handle loads, py::handle gravity, py::handle t0,
-                             py::handle scalar_first, py::handle progress) {
+                             py::handle scalar_first, py::handle progress, py::handle duration) {
   refuse_body_arguments(loads, gravity);
   SimulationOptions o;
   o.dt = py_io::as_scalar(py_io::in_si(dt, "s", "dt"), "dt");
-  o.steps = py_io::as_int(steps, "steps", 0);
+  o.steps = as_steps(steps, duration, o.dt);
   o.record_every = py_io::as_int(record_every, "record_every", 1);
   o.t0 = py_io::as_scalar(py_io::in_si(t0, "s", "t0"), "t0");
   const bool first = py_io::as_bool(scalar_first, "scalar_first");

@@ -42,7 +42,8 @@ bool is_scene(pybind11::handle model);
 SceneResult simulate_scene_py(pybind11::handle model, pybind11::handle initial, pybind11::handle dt,
                                    pybind11::handle steps, pybind11::handle method, pybind11::handle record_every,
                                    pybind11::handle loads, pybind11::handle gravity, pybind11::handle t0,
-                                   pybind11::handle scalar_first, pybind11::handle progress);
+                                   pybind11::handle scalar_first, pybind11::handle progress,
+                                   pybind11::handle duration);
 pybind11::object step_scene_py(pybind11::handle model, pybind11::handle state, pybind11::handle dt,
                                pybind11::handle method, pybind11::handle loads, pybind11::handle gravity,
                                pybind11::handle t);

@@ -3003,6 +3003,10 @@ class ConstantThrustSolution:
         """
         (3,) velocity of the ejected mass relative to the particle, in W [m/s]
         """
+def _steps_of(steps: typing.Any, duration: typing.Any, dt: typing.Any) -> int:
+    """
+    The step count of a run of simulate(..., steps=, duration=) at one dt [s] (the package's Python front ends check it before their own work); ValueError as simulate's.
+    """
 def align_vectors(a: typing.Any, b: typing.Any, weights: typing.Any = None, return_sensitivity: typing.Any = False, scalar_first: typing.Any = False) -> tuple:
     """
     The rotation R that best maps the vectors b onto the vectors a (Wahba's problem), as SciPy's
@@ -3484,11 +3488,15 @@ def screw_to_twist(screw: typing.Any) -> Motion:
     The twist of a screw: w = magnitude direction, v = magnitude (point x direction + pitch direction)
     (v = magnitude direction for pitch inf).
     """
-def simulate(model: typing.Any, initial: typing.Any, dt: typing.Any, steps: typing.Any, method: typing.Any = None, record_every: typing.Any = 1, loads: typing.Any = None, gravity: typing.Any = None, t0: typing.Any = 0.0, scalar_first: typing.Any = False, progress: typing.Any = None) -> SimulationResult | SceneResult:
+def simulate(model: typing.Any, initial: typing.Any, dt: typing.Any, steps: typing.Any = None, method: typing.Any = None, record_every: typing.Any = 1, loads: typing.Any = None, gravity: typing.Any = None, t0: typing.Any = 0.0, scalar_first: typing.Any = False, progress: typing.Any = None, *, duration: typing.Any = None) -> SimulationResult | SceneResult:
     """
     Integrate `model` from `initial` over `steps` fixed steps of `dt` [s] with `method` (see methods()),
     in C++ with the GIL released, and record every `record_every`-th step (plus the first and the last).
-    dt and t0: each a float [s] or a pint quantity (converted to s; ValueError naming it for another dimension).
+    The run's length: steps= (an int >= 0) or, by keyword, duration= [s] (a float or a pint quantity), exactly one;
+    a duration must be a whole number of steps of dt (to 1e-9 relative: 10 s at dt = 0.01 s is 1000 steps),
+    else ValueError naming duration and dt with the nearest durations that are.
+    dt, t0 and duration: each a float [s] or a pint quantity (converted to s; ValueError naming it for another
+    dimension).
     
     model/initial: Particle/ParticleState, PlanarBody/PlanarBodyState or RigidBody/RigidBodyState; or a Scene
       or CompiledScene and a list of the states of its bodies (returns a SceneResult: see Scene); or a PivotedBody/
@@ -3518,7 +3526,7 @@ def simulate(model: typing.Any, initial: typing.Any, dt: typing.Any, steps: typi
     finished first) with KeyboardInterrupt (no result is kept). ValueError names a bad argument, also a
     recording larger than the memory available (record_every, with both figures).
     """
-def simulate_batch(model: typing.Any, initial: typing.Any, dt: typing.Any, steps: typing.Any, method: typing.Any = None, record_every: typing.Any = 1, loads: typing.Any = None, gravity: typing.Any = None, t0: typing.Any = 0.0, threads: typing.Any = None, simd: typing.Any = False, scalar_first: typing.Any = False, progress: typing.Any = None) -> BatchResult | BatchSceneResult:
+def simulate_batch(model: typing.Any, initial: typing.Any, dt: typing.Any, steps: typing.Any = None, method: typing.Any = None, record_every: typing.Any = 1, loads: typing.Any = None, gravity: typing.Any = None, t0: typing.Any = 0.0, threads: typing.Any = None, simd: typing.Any = False, scalar_first: typing.Any = False, progress: typing.Any = None, *, duration: typing.Any = None) -> BatchResult | BatchSceneResult:
     """
     N independent runs of `model`, one per initial state, with per-sample parameters, integrated in C++ on
     `threads` threads with the GIL released. Sample i is exactly rigiddyn.simulate(model_i, initial[i], dt_i, steps,
@@ -3534,8 +3542,9 @@ def simulate_batch(model: typing.Any, initial: typing.Any, dt: typing.Any, steps
       'v_W': (N, 3) [m/s] in W, 'w_B': (N, 3) [rad/s] in B}; Particle {'p_W', 'v_W'}; PlanarBody {'p_W': (N, 2) [m],
       'theta': (N,) [rad], 'v_W': (N, 2) [m/s], 'omega': (N,) [rad/s]}. A scene: a list of N lists of the states of
       its bodies.
-    dt: a float [s] for every sample or an (N,) array [s] (pint quantities converted). steps, record_every, t0,
-      method, scalar_first: as simulate, shared by every sample (so every sample has the same record count n).
+    dt: a float [s] for every sample or an (N,) array [s] (pint quantities converted). steps (or duration= by
+      keyword), record_every, t0, method, scalar_first: as simulate, shared by every sample (so every sample has the
+      same record count n; a duration must give the same number of steps at every sample's dt).
     loads (bodies): as simulate (one schedule for every sample), or a list of N schedules (lists of AppliedLoad).
     gravity (bodies): as simulate (None/False, True, a 3-vector [m/s^2] in W), or an (N, 3) array [m/s^2] in W.
       A scene declares its loads and gravity as elements (loads and gravity must be None).

@@ -550,15 +550,34 @@ def _method_name(model: Any, method: Any) -> str:
     return str(getattr(first, "method", "rk4"))
 
 
-def simulate_batch(model: Any, initial: Any, dt: Any, steps: Any, *, client: Any = None, chunk_size: int | None = None,
-                   retries: int = 2, progress: bool = True, **simulate_batch_kwargs: Any) -> Any:
+def _batch_steps(steps: Any, duration: Any, dt: Any, n: int) -> int:
+    """The steps of every sample from steps= or duration= [s] at dt (a float, or one per sample, each giving the
+    same count: the chunks' records are stacked), as rigiddyn.simulate_batch checks them."""
+    from . import _core
+
+    if steps is not None or duration is None or not _per_sample("dt", dt, n):
+        return int(_core._steps_of(steps, duration, dt))
+    counts: dict[int, int] = {}  # step count -> the first sample with it
+    for i, dt_i in enumerate(dt):
+        counts.setdefault(int(_core._steps_of(None, duration, dt_i)), i)
+    if len(counts) > 1:
+        (first, i), (other, j) = list(counts.items())[:2]
+        raise ValueError(f"duration: expected the same number of steps for every sample's dt (or steps= instead), "
+                         f"got {first} steps of dt[{i}] and {other} of dt[{j}]")
+    return next(iter(counts))
+
+
+def simulate_batch(model: Any, initial: Any, dt: Any, steps: Any = None, *, client: Any = None,
+                   chunk_size: int | None = None, retries: int = 2, progress: bool = True,
+                   **simulate_batch_kwargs: Any) -> Any:
     """rigiddyn.simulate_batch on a Dask cluster: N runs of `model` in chunks of consecutive samples, one
     task each, concatenated in sample order; BITWISE the local rigiddyn.simulate_batch's result (a
     BatchResult / BatchSceneResult: arrays with a leading sample axis, e.g. p_W (N, n_records, 3) [m],
     q_WB (N, n_records, 4), w_B (N, n_records, 3) [rad/s] in B; elapsed_seconds the call's wall time [s]).
 
-    model, initial, dt [s], steps and simulate_batch_kwargs (method, record_every, loads, gravity, t0,
-    simd, scalar_first) as rigiddyn.simulate_batch; a model common to the samples (one body or scene) is
+    model, initial, dt [s], steps and simulate_batch_kwargs (duration, method, record_every, loads, gravity,
+    t0, simd, scalar_first) as rigiddyn.simulate_batch (a duration is turned into steps here, at dt or at
+    each sample's dt, which must agree, before any chunk is sent); a model common to the samples (one body or scene) is
     sent once per worker, per-sample inputs (a sequence of N models, the N initial states, an (N,) dt, an
     (N, 3) gravity [m/s^2] in W, N load schedules) only with their chunk. Each task runs on one thread
     (threads is not an argument: the workers' threads run tasks side by side). client, chunk_size,
@@ -580,6 +599,7 @@ def simulate_batch(model: Any, initial: Any, dt: Any, steps: Any, *, client: Any
     n = _samples_of(initial)
     if n == 0:
         raise ValueError("initial: expected at least one sample, got 0")
+    steps = _batch_steps(steps, simulate_batch_kwargs.pop("duration", None), dt, n)
     inputs = {"model": model, "initial": initial, "dt": dt, **simulate_batch_kwargs}
     sliced = {k: v for k, v in inputs.items() if k == "initial" or (k in ("model", "dt", "gravity", "loads")
                                                                     and _per_sample(k, v, n))}

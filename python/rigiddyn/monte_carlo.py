@@ -765,9 +765,9 @@ def _check_memory(n: int, steps: int, record_every: int, model: Any) -> None:
 
 def monte_carlo(model: Any, nominal_state: Any, n: int, *, seed: Any,
                 dispersions: Mapping[str, Dispersion] | None = None,
-                dt: Any, steps: int, method: str | None = None, record_every: int = 1, loads: Any = None,
-                gravity: Any = None, t0: Any = 0.0, threads: int | None = None, client: Any = None
-                ) -> MonteCarloResult:
+                dt: Any, steps: int | None = None, duration: Any = None, method: str | None = None,
+                record_every: int = 1, loads: Any = None, gravity: Any = None, t0: Any = 0.0,
+                threads: int | None = None, client: Any = None) -> MonteCarloResult:
     """N runs of a rigid body, or of a scene, with dispersed initial states, mass properties and loads.
 
     model: a RigidBody (mass [kg], inertia about the centre of mass in B [kg m^2]): the nominal body; or a
@@ -782,9 +782,9 @@ def monte_carlo(model: Any, nominal_state: Any, n: int, *, seed: Any,
       entropy, kept as result.seed); sample i draws from SeedSequence(seed).spawn(n)[i] (module docstring).
     dispersions: {key: dispersion} (keys and classes in the module docstring); a key not given keeps its
       nominal value (the state's field, the body's mass and inertia, `gravity`, `loads`).
-    dt [s], steps, method (None: 'rk4', or a CompiledScene's), record_every, loads (the nominal schedule),
-      gravity (None/False: none, True: (0, 0, -9.81) m/s^2, or a 3-vector in W), t0 [s]: as rigiddyn.simulate,
-      common to every sample.
+    dt [s], steps or duration [s] (exactly one; a duration in whole steps of dt), method (None: 'rk4', or a
+      CompiledScene's), record_every, loads (the nominal schedule), gravity (None/False: none, True: (0, 0,
+      -9.81) m/s^2, or a 3-vector in W), t0 [s]: as rigiddyn.simulate, common to every sample.
     threads: threads of the local run (None: all cores). client: None (run on this machine with
       rigiddyn.simulate_batch), or a dask.distributed Client / scheduler address: the samples run through
       rigiddyn.distributed.simulate_batch (the same draws and, bitwise, the same result).
@@ -805,7 +805,9 @@ def monte_carlo(model: Any, nominal_state: Any, n: int, *, seed: Any,
     if client is not None and threads is not None:
         raise ValueError(f"threads: expected None with client= (the workers' threads are the cluster's), "
                          f"got {threads!r}")
-    _check_memory(int(n), _count(steps, "steps", 0), _count(record_every, "record_every", 1), scene)
+    # checked before any draw, as the memory below
+    steps = _core._steps_of(None if steps is None else _count(steps, "steps", 0), duration, dt)
+    _check_memory(int(n), steps, _count(record_every, "record_every", 1), scene)
     seeds = _seed_sequence(seed)
     if isinstance(model, _core.RigidBody):
         nominal = {"p_W": nominal_state.p_W, "q_WB": nominal_state.q_WB, "v_W": nominal_state.v_W,

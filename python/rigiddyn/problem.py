@@ -66,7 +66,6 @@ value of the wrong type.
 
 from __future__ import annotations
 
-import difflib
 import math
 import os
 import re
@@ -81,6 +80,7 @@ from typing import Any
 import numpy as np
 
 from . import _core
+from ._names import closest as _closest
 from .stability import warn_if_unstable
 from .units import _shown
 
@@ -228,13 +228,6 @@ def _unknown_key(name: str, kind: str, key: str, known: frozenset[str], value: A
         hint = ""
     return ValueError(f"{field}: expected a key of {_where(name, kind)}{hint} (one of: {', '.join(sorted(known))}), "
                       "got an unknown key")
-
-
-def _closest(word: str, choices: Any) -> str | None:
-    """The choice most like `word` (difflib's ratio >= 0.6, ignoring case: w_b -> w_B), or None."""
-    lower = {c.lower(): c for c in choices}
-    close = difflib.get_close_matches(word.lower(), list(lower), n=1, cutoff=0.6)
-    return lower[close[0]] if close else None
 
 
 def _where(name: str, kind: str) -> str:

@@ -27,6 +27,7 @@ from typing import Any
 import numpy as np
 
 from . import _core
+from ._names import require_method
 
 __all__ = ["describe"]
 
@@ -242,9 +243,8 @@ def _table(header: Sequence[str], rows: Sequence[Sequence[str]]) -> list[str]:
 
 
 def _method_lines(scene: Any, method: str, compiled: Any | None) -> list[str]:
-    info = next((m for m in _core.methods() if m["name"] == method), None)
-    if info is None:
-        raise ValueError(f"method: expected one of {', '.join(m['name'] for m in _core.methods())}, got {method!r}")
+    require_method(method)
+    info = next(m for m in _core.methods() if m["name"] == method)
     lines = [f"Method: {method} (order {info['order']}, {info['evaluations']} evaluations per step; conserves "
              f"{info['conserves']})"]
     if compiled is None:

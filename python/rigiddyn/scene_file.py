@@ -128,7 +128,8 @@ import numpy as np
 
 from . import _core
 from ._memory import available_bytes, format_bytes
-from .problem import _check_nesting, _closest, _orientation, _read_toml, _tradeoff_defaults
+from ._names import closest as _closest
+from .problem import _check_nesting, _orientation, _read_toml, _tradeoff_defaults
 from .units import _shown, quantity, vector_quantity
 
 __all__ = ["FORCE_TYPES", "RunOptions", "SceneFile", "example_scenes", "is_scene_toml", "load_scene", "parse_scene",

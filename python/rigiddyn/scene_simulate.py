@@ -37,6 +37,7 @@ from typing import Any
 import numpy as np
 
 from . import _core
+from ._names import require_method
 from .out_folder import EXIT_EXISTS, OutFolder, OutputExists
 from .scene_file import SceneFile, read_scene
 
@@ -75,10 +76,7 @@ class _ScenePlan:
             raise ValueError(f"PROBLEM: {e}") from None
         self.source = str(args.problem)
         run = self.file.run
-        names = [m["name"] for m in _core.methods()]
-        self.method: str = args.method if args.method is not None else run.method
-        if self.method not in names:
-            raise ValueError(f"--method: expected one of {', '.join(names)}, got {self.method!r}")
+        self.method: str = require_method(args.method if args.method is not None else run.method, "--method")
         dt = args.dt if args.dt is not None else run.dt
         if dt is None:
             raise ValueError("--dt: expected a time step [s] > 0 (or dt in the scene's [run]), got nothing")

@@ -26,6 +26,7 @@ from typing import Any, TextIO
 import numpy as np
 
 from . import _core
+from ._names import require_method
 from .out_folder import (EXIT_BAD_INPUT, EXIT_CODES_HELP, EXIT_DIVERGED, EXIT_EXISTS, EXIT_INTERRUPTED, EXIT_OK,
                          EXIT_UNWRITABLE, OutFolder, OutputError, OutputExists)
 from .problem import Problem, load_problem
@@ -176,12 +177,9 @@ class _Plan:
         except OSError as e:  # a path the system refuses (too long, ...)
             raise ValueError(f"PROBLEM: expected a problem file or example name, got {_shown(args.problem)} "
                              f"({e.strerror or e})") from None
-        names = [m["name"] for m in _core.methods()]
         if args.dt is None:  # a scene file's [run] may give it; a problem file has none
             raise ValueError("--dt: expected a time step [s] > 0 for a problem file, got nothing")
-        if args.method not in names:
-            raise ValueError(f"--method: expected one of {', '.join(names)}, got {args.method!r}")
-        self.method: str = args.method
+        self.method: str = require_method(args.method, "--method")
         self.dt: float = args.dt
         self.steps = step_count(args.steps, self.problem.horizon if args.duration is None else args.duration, self.dt)
         self.record_every: int = (args.record_every if args.record_every is not None

@@ -64,6 +64,7 @@ import warnings
 import numpy as np
 
 from . import _core
+from ._names import require_method
 
 __all__ = [
     "GROWTH_LIMIT",
@@ -171,10 +172,8 @@ def mean_growth_factor(method: str, dt: float, inertia_com: np.ndarray, w_B: np.
 
 def stability_limit(method: str) -> float:
     """The documented largest dt |w| [rad] of `method` on a free spin (methods()['stability_limit'])."""
-    for info in _core.methods():
-        if info["name"] == method:
-            return float(info["stability_limit"])
-    raise ValueError(f"method: expected one of {', '.join(m['name'] for m in _core.methods())}, got {method!r}")
+    require_method(method)
+    return float(next(m["stability_limit"] for m in _core.methods() if m["name"] == method))
 
 
 def orbit_rate(inertia_com: np.ndarray, w_B: np.ndarray, span: float, torque_free: bool = True) -> float:

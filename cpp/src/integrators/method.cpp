@@ -1,6 +1,7 @@
 #include "rigiddyn/integrators/method.hpp"
 
 #include "rigiddyn/check.hpp"
+#include "rigiddyn/closest_name.hpp"
 
 #include <cmath>
 #include <limits>
@@ -77,12 +78,14 @@ const MethodInfo& method_info(Method method) {
 }
 
 Method method_from_name(const std::string& name, const std::string& argument) {
-  std::string names;
+  std::vector<std::string> names;
+  std::string listed;
   for (const MethodInfo& info : method_table()) {
     if (info.name == name) return info.method;
-    names += (names.empty() ? "" : ", ") + info.name;
+    names.push_back(info.name);
+    listed += (listed.empty() ? "" : ", ") + info.name;
   }
-  throw_invalid(argument, "one of " + names, "'" + name + "'");
+  throw_invalid(argument, "one of " + listed + did_you_mean(name, names), "'" + name + "'");
 }
 
 }  // namespace rigiddyn
