@@ -550,13 +550,15 @@ def _method_name(model: Any, method: Any) -> str:
     return str(getattr(first, "method", "rk4"))
 
 
-def _batch_steps(steps: Any, duration: Any, dt: Any, n: int) -> int:
+def _batch_steps(steps: Any, duration: Any, dt: Any, n: int) -> Any:
     """The steps of every sample from steps= or duration= [s] at dt (a float, or one per sample, each giving the
     same count: the chunks' records are stacked), as rigiddyn.simulate_batch checks them."""
     from . import _core
 
-    if steps is not None or duration is None or not _per_sample("dt", dt, n):
-        return int(_core._steps_of(steps, duration, dt))
+    if duration is None:
+        return steps  # (checked by each chunk's simulate_batch, as dt)
+    if steps is not None or not _per_sample("dt", dt, n):
+        return int(_core._steps_of(steps, duration, dt if steps is None else 1.0))
     counts: dict[int, int] = {}  # step count -> the first sample with it
     for i, dt_i in enumerate(dt):
         counts.setdefault(int(_core._steps_of(None, duration, dt_i)), i)

@@ -153,6 +153,21 @@ def test_local_cluster_bitwise(client: Any, capsys: pytest.CaptureFixture[str]) 
 
 
 @needs_dask
+def test_a_duration_is_the_same_steps_on_the_cluster(client: Any) -> None:
+    """duration= [s] is turned into steps before any chunk is sent: at a common dt, and at per-sample dt that
+    agree; per-sample dt that give different counts are refused naming them (nothing runs)."""
+    initial = tumbling_states(6)
+    local = LOCAL_BATCH(BODY, initial, 0.01, 50, method="rk4", record_every=10)
+    for dt in (0.01, np.full(6, 0.01)):
+        assert_bitwise(rd.simulate_batch(BODY, initial, dt, duration=0.5, method="rk4", record_every=10,
+                                         client=client, chunk_size=2, progress=False), local)
+    with pytest.raises(ValueError, match=r"^duration: expected the same number of steps for every sample's dt "
+                                         r"\(or steps= instead\), got 50 steps of dt\[0\] and 25 of dt\[3\]$"):
+        rd.simulate_batch(BODY, initial, np.array([0.01] * 3 + [0.02] * 3), duration=0.5, client=client,
+                          chunk_size=2, progress=False)
+
+
+@needs_dask
 def test_nonfinite_samples_named_once(client: Any) -> None:
     # explicit Euler at dt = 0.1 s: |w| about 70 rad/s grows without bound (dt |w| = 7), |w| about 1 rad/s does not
     initial = tumbling_states(9)

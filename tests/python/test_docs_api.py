@@ -33,6 +33,7 @@ INTERNAL = {
     "rotation_scipy": "its names are rigiddyn's (to_scipy, from_scipy)",
     "scene_describe": "attaches Scene.describe and CompiledScene.describe",
     "scene_precision": "tradeoff's machinery for scenes (documented through rigiddyn.tradeoff)",
+    "_names": "the closest known name for the 'did you mean' of error messages (their messages state it)",
     "_memory": "the memory estimates of scene_file's [[cluster]] and monte_carlo (their docs state them)",
 }
 

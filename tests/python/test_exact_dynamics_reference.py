@@ -162,6 +162,18 @@ def test_core_lagrange_top_solution_matches_the_reference(seed):
         np.testing.assert_allclose(w_core, w_ref, rtol=0, atol=2 * 64 * EPS * phase * 10 * np.linalg.norm(w))
 
 
+def test_lagrange_top_at_a_start_near_a_turning_point():
+    """The heavy top of seed 25494 (35.6 rad/s, its transverse rate putting it near a turning point of its nutation at
+    t = 0): the core and the reference both give back the initial w_B at t = 0 within the bound of the test above.
+    The reference once took the initial phase from an arcsin of sn alone, which loses half the digits there (1.8e-11,
+    1.8 x the bound); it now takes sn and cn each where it is well conditioned."""
+    mass, inertia, c, g, q, w = heavy_top(25494)
+    core = rd.LagrangeTopSolution(rd.PivotedBody(rd.RigidBody(mass, inertia), c), g, rd.PivotedBodyState(q_WB=q, w_B=w))
+    top = ref.LagrangeTop(mass, pivoted.inertia_about_pivot(mass, inertia, c), c, g, q, w)
+    for _, w_0 in (core.at(0.0), top.at(0.0)):
+        np.testing.assert_allclose(w_0, w, rtol=0, atol=2 * 64 * EPS * 10 * np.linalg.norm(w))
+
+
 @settings(settings.get_profile("exact_dynamics_reference"))
 @given(seed=seeds)
 def test_core_rotating_frame_free_particle_matches_the_reference(seed):

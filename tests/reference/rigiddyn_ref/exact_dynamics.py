@@ -141,10 +141,20 @@ class LagrangeTop:
         self.m = (self.u2 - self.u1) / (self.u3 - self.u1)
         self.lam = 0.5 * np.sqrt(self.beta * (self.u3 - self.u1))
         udot0 = (R_WB @ cross(w_B, e3_B)) @ z_N
-        amp0 = np.arcsin(np.sqrt(np.clip((u0 - self.u1) / (self.u2 - self.u1), 0.0, 1.0)))
-        self.tau0 = np.sign(udot0) * special.ellipkinc(amp0, self.m) if udot0 != 0 else (
-            special.ellipkinc(amp0, self.m))
+        self.tau0 = special.ellipkinc(self._initial_amplitude(u0, udot0), self.m)
         self.n_plus, self.n_minus = (self.u2 - self.u1) / (1.0 - self.u1), -(self.u2 - self.u1) / (1.0 + self.u1)
+
+    def _initial_amplitude(self, u0, udot0):
+        """am(τ0) from u0 = u1 + (u2 − u1) sn² and u̇0 = 2 (u2 − u1) λ sn cn dn: the square root of sn² (or cn²) is
+        taken where it is well conditioned (sn² ≤ 1/2: cn, near u1; else sn, near u2), the other factor from u̇0,
+        which carries the sign; an arcsin of sn alone loses half the digits at a turning point."""
+        s2 = np.clip((u0 - self.u1) / (self.u2 - self.u1), 0.0, 1.0)
+        sn_cn = udot0 / (2.0 * (self.u2 - self.u1) * self.lam * np.sqrt(1.0 - self.m * s2))
+        if s2 <= 0.5:
+            cn = np.sqrt(1.0 - s2)
+            return np.arctan2(sn_cn / cn, cn)
+        sn = np.sqrt(s2)
+        return np.arctan2(sn, sn_cn / sn)
 
     def _f(self, u):
         return (1.0 - u * u) * (self.alpha - self.beta * u) - (self.b - self.a * u) ** 2
