@@ -197,7 +197,8 @@ void library(benchmark::State& state, const Euler& euler) {
   const std::int64_t n = steps();
   for (auto _ : state) {
     RigidBodyCoordinates y = to_coordinates(s0);
-    for (std::int64_t i = 0; i < n; ++i) Integrator::step(model, y, h);
+    auto work = workspace<Integrator>(model, y);
+    for (std::int64_t i = 0; i < n; ++i) Integrator::step(model, y, h, work);
     benchmark::DoNotOptimize(y);
   }
   state.SetItemsProcessed(state.iterations() * n);
@@ -272,7 +273,8 @@ void particle_rk4(benchmark::State& state) {
   const std::int64_t n = steps();
   for (auto _ : state) {
     ParticleCoordinates y = to_coordinates(ParticleState{Eigen::Vector3d::Zero(), Eigen::Vector3d(1, 2, 3)});
-    for (std::int64_t i = 0; i < n; ++i) Rk4::step(model, y, h);
+    auto work = workspace<Rk4>(model, y);
+    for (std::int64_t i = 0; i < n; ++i) Rk4::step(model, y, h, work);
     benchmark::DoNotOptimize(y);
   }
   state.SetItemsProcessed(state.iterations() * n);
@@ -311,7 +313,8 @@ void planar_rk4(benchmark::State& state) {
   const std::int64_t n = steps();
   for (auto _ : state) {
     PlanarBodyCoordinates y = to_coordinates(PlanarBodyState{Eigen::Vector2d::Zero(), 0.0, Eigen::Vector2d(1, 0), 1.0});
-    for (std::int64_t i = 0; i < n; ++i) Rk4::step(model, y, h);
+    auto work = workspace<Rk4>(model, y);
+    for (std::int64_t i = 0; i < n; ++i) Rk4::step(model, y, h, work);
     benchmark::DoNotOptimize(y);
   }
   state.SetItemsProcessed(state.iterations() * n);

@@ -37,7 +37,8 @@ void step_rigiddyn(benchmark::State& state) {
     rigiddyn::RigidBodyState s0;
     s0.w_B = kW0;
     rigiddyn::RigidBodyCoordinates y = rigiddyn::to_coordinates(s0);
-    for (std::int64_t i = 0; i < n; ++i) Integrator::step(model, y, kH);
+    auto work = rigiddyn::workspace<Integrator>(model, y);
+    for (std::int64_t i = 0; i < n; ++i) Integrator::step(model, y, kH, work);
     benchmark::DoNotOptimize(y);
   }
   state.SetItemsProcessed(state.iterations() * n);

@@ -124,7 +124,8 @@ const SceneFrame& frame() {
 // n RK4 steps of a model from y
 template <class Model>
 BENCH_NOINLINE void model_rk4(const Model& model, typename Model::Coordinates& y, std::int64_t n) {
-  for (std::int64_t i = 0; i < n; ++i) Rk4::step(model, y, h);
+  auto work = workspace<Rk4>(model, y);
+  for (std::int64_t i = 0; i < n; ++i) Rk4::step(model, y, h, work);
 }
 
 RotatingFrameParticleModel fast_model() { return RotatingFrameParticleModel(Particle(mass), frame(), g_F, 0, 1, 2, 3); }

@@ -137,7 +137,8 @@ void loop_initial(const PivotedBodyState& s, double* y) {
 template <class Euler>
 BENCH_NOINLINE void steps_rigiddyn(const PivotedBodyModel<Euler>& model, typename PivotedBodyModel<Euler>::Coordinates& y,
                                    double h, std::int64_t n) {
-  for (std::int64_t i = 0; i < n; ++i) Rk4::step(model, y, h);
+  auto work = workspace<Rk4>(model, y);
+  for (std::int64_t i = 0; i < n; ++i) Rk4::step(model, y, h, work);
 }
 
 template <class Euler>

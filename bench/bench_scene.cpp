@@ -19,6 +19,9 @@
 //                                   (CustomForce) and type-erased (FunctionForce, std::function).
 //   term_drag_zero_over_drag/10     a declared Drag with zero coefficients over a non-zero one: equal cost
 //                                   (a zero term is evaluated, never skipped by a flag).
+//   swarm_spheres_page_faults_rk4/1000  the minor page faults per step of the swarm of 1000 spheres through
+//                                   simulate after the first step, in a heap trimmed before each run: 0 when no
+//                                   step allocates (counter faults_per_step).
 // ctest runs it with RIGIDDYN_BENCH_SMALL=1 (N <= 100, fewer steps).
 #include <benchmark/benchmark.h>
 
@@ -36,7 +39,9 @@
 #include <string>
 #include <vector>
 
-#include <time.h>  // clock_gettime (POSIX): the thread's CPU time
+#include <malloc.h>        // malloc_trim (glibc)
+#include <sys/resource.h>  // getrusage (POSIX): the minor page faults
+#include <time.h>          // clock_gettime (POSIX): the thread's CPU time
 
 namespace {
 
@@ -103,9 +108,11 @@ std::pair<Scene, std::vector<BodyState>> cluster_scene(const bench::ParticleClus
 void step_model(benchmark::State& state, const Scene& scene, const std::vector<BodyState>& initial, std::int64_t steps) {
   const CompiledScene compiled = compile_scene(scene, Method::rk4);
   const SceneModel& model = compiled.model();
+  Eigen::VectorXd y = model.coordinates(initial, 0.0);
+  auto work = workspace<Rk4>(model, y);
   for (auto _ : state) {
-    Eigen::VectorXd y = model.coordinates(initial, 0.0);
-    for (std::int64_t i = 0; i < steps; ++i) Rk4::step(model, y, h);
+    y = model.coordinates(initial, 0.0);
+    for (std::int64_t i = 0; i < steps; ++i) Rk4::step(model, y, h, work);
     benchmark::DoNotOptimize(y.data());
     benchmark::ClobberMemory();
   }
@@ -129,7 +136,8 @@ double baseline_mismatch(const bench::ParticleCluster& c, bench::NBodyRk4Baselin
   const auto [scene, initial] = cluster_scene(c, ClusterBody::particle);
   const CompiledScene compiled = compile_scene(scene, Method::rk4);
   Eigen::VectorXd y = compiled.model().coordinates(initial, 0.0);
-  Rk4::step(compiled.model(), y, h);
+  auto work = workspace<Rk4>(compiled.model(), y);
+  Rk4::step(compiled.model(), y, h, work);
   double mismatch = 0.0;
   for (std::size_t i = 0; i < c.mass.size(); ++i)
     for (int k = 0; k < 3; ++k) mismatch = std::max(mismatch, std::abs(y[6 * i + k] - y_loop[6 * i + k]));
@@ -186,6 +194,34 @@ void swarm_scene(benchmark::State& state, ClusterBody kind) {
 }
 void swarm_particles(benchmark::State& state) { swarm_scene(state, ClusterBody::particle); }
 void swarm_spheres(benchmark::State& state) { swarm_scene(state, ClusterBody::sphere); }
+
+// ---- page faults per step ------------------------------------------------------------------------
+// The same swarm of 1000 spheres through simulate (RK4, the first and last records): the minor page
+// faults of the steps after the first, per step. Each run starts after malloc_trim has handed the heap's
+// free memory back to the system, as a process that freed a large block would have it: a step that
+// allocated a stage of the state's size (13 000 doubles) would then fault its pages in again at every
+// step. 0 when no step allocates (integrators/workspace.hpp).
+long minor_faults() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_minflt;
+}
+
+void swarm_page_faults(benchmark::State& state) {
+  const std::int64_t n = 1000, steps = bench::bench_size(100, 20);
+  auto [scene, initial] = cluster_scene(bench::particle_cluster(n), ClusterBody::sphere);
+  scene.elements = {UniformGravity{standard_gravity(), {}}};
+  const CompiledScene compiled = compile_scene(scene, Method::rk4);
+  const auto faults_of_run = [&](std::int64_t run_steps) {
+    malloc_trim(0);
+    const long before = minor_faults();
+    benchmark::DoNotOptimize(simulate(compiled, initial, run_options(run_steps)));
+    return minor_faults() - before;
+  };
+  long after_first = 0;
+  for (auto _ : state) after_first = faults_of_run(steps + 1) - faults_of_run(1);
+  state.counters["faults_per_step"] = static_cast<double>(after_first) / static_cast<double>(steps);
+}
 
 // ---- 4: one free body as a scene vs today's simulate ----------------------------------------------
 std::int64_t one_body_steps() { return bench::bench_size(200000, 2000); }
@@ -366,6 +402,7 @@ BENCHMARK(nbody_spheres)->Name("nbody_spheres_over_particles_rk4:rigiddyn")->App
 BENCHMARK(nbody_particles)->Name("nbody_spheres_over_particles_rk4:baseline")->Apply(size_10_100_1000);
 BENCHMARK(swarm_spheres)->Name("swarm_spheres_over_particles_rk4:rigiddyn")->Apply(size_10_100_1000);
 BENCHMARK(swarm_particles)->Name("swarm_spheres_over_particles_rk4:baseline")->Apply(size_10_100_1000);
+BENCHMARK(swarm_page_faults)->Name("swarm_spheres_page_faults_rk4/1000")->Iterations(3)->Unit(benchmark::kMillisecond);
 BENCHMARK(scene_rigid_body_fast)->Name("scene_free_rigid_body_rk4:rigiddyn");
 BENCHMARK(today_rigid_body)->Name("scene_free_rigid_body_rk4:baseline");
 BENCHMARK(scene_rigid_body_generic)->Name("scene_generic_free_rigid_body_rk4:rigiddyn");

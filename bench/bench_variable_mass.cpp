@@ -63,7 +63,8 @@ BENCH_NOINLINE void rk4_model_steps(const VariableMassParticleModel& model, Vari
                                     std::int64_t n) {
   const VariableMassParticleModel local = model;
   VariableMassParticleModel::Coordinates z = y;
-  for (std::int64_t i = 0; i < n; ++i) Rk4::step(local, z, h);
+  auto work = workspace<Rk4>(local, z);
+  for (std::int64_t i = 0; i < n; ++i) Rk4::step(local, z, h, work);
   y = z;
 }
 

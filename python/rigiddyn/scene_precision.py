@@ -4,8 +4,9 @@
 rigiddyn.Scene with its initial states (initial=..., horizon=...), the (scene, initial states, run
 options) that rigiddyn.load_scene returns, or a scene TOML file or shipped scene name (a file whose
 `body` is an array of tables, [[body]], is a scene; [body] is a problem). This module holds the scene
-side of the sweep (SceneCase: compile, run, states, error measures) and the sweep's loop; the rows,
-the report, the reference refinement and its check are work_precision's.
+side of the sweep (SceneCase: compile, run, states, error measures, exact references); the sweep's loop
+(work_precision.scene_sweep), the rows, the report, the reference refinement and its check are
+work_precision's.
 
 Each method is compiled once (`scene.compile(method=...)`): a refusal (ValueError, e.g. `exact` on a
 scene with forces) becomes the method's rows with "not applicable: <reason>" in order_note and nan
@@ -44,24 +45,19 @@ from __future__ import annotations
 
 import math
 import os
-import sys
 import warnings
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import numpy as np
 
 from . import _core
 
-if TYPE_CHECKING:
-    from .work_precision import TradeoffResult
-
-__all__ = ["BodyData", "SceneCase", "SceneStates", "is_scene_source", "scene_case", "scene_measures", "scene_sweep"]
+__all__ = ["BodyData", "SceneCase", "SceneStates", "is_scene_source", "scene_case", "scene_measures"]
 
 _TINY = np.finfo(float).tiny
-CHECK_HALVINGS = 4  # the independent check's step is halved at most this often below the reference's finest
 
 
 def is_scene_source(source: Any) -> bool:
@@ -258,10 +254,22 @@ def pendulum_rates(scene: Any) -> list[float]:
     return rates
 
 
-def _attitude_angle(q_ref: np.ndarray, q: np.ndarray) -> np.ndarray:
-    from .work_precision import _attitude_angle as angle
+def _rescaled(q: np.ndarray) -> np.ndarray:
+    """Each quaternion (last axis) divided by its largest absolute component (a zero one left as it is)."""
+    largest = np.max(np.abs(q), axis=-1, keepdims=True)
+    return q / np.where(largest > 0, largest, 1.0)
 
-    return angle(q_ref.reshape(-1, 4), q.reshape(-1, 4)).reshape(q.shape[:-1])
+
+def _attitude_angle(q_ref: np.ndarray, q: np.ndarray) -> np.ndarray:
+    """Geodesic angle 2 atan2(|vec(q_ref^-1 q)|, |scalar|) [rad] between quaternions (x, y, z, w) along the
+    last axis, shape (..., 4) -> (...), of any norm: the angle does not change when a quaternion is scaled,
+    so each is divided by its largest component first (a run blowing up may hold quaternions of 1e200,
+    whose squares would overflow). The attitude_error of a problem (rigiddyn.work_precision) and of a scene."""
+    q_ref, q = _rescaled(q_ref), _rescaled(q)
+    a_v, a_w, b_v, b_w = q_ref[..., :3], q_ref[..., 3:], q[..., :3], q[..., 3:]
+    vec = a_w * b_v - b_w * a_v - np.cross(a_v, b_v)
+    scalar = np.abs(a_w[..., 0] * b_w[..., 0] + np.sum(a_v * b_v, axis=-1))
+    return np.asarray(2.0 * np.arctan2(np.linalg.norm(vec, axis=-1), scalar))
 
 
 def scene_measures(bodies: Sequence[BodyData], horizon: float, run: SceneStates, ref: SceneStates,
@@ -535,145 +543,3 @@ def scene_case(source: Any, initial: Any = None, horizon: float | None = None) -
         raise ValueError(f"horizon: expected a finite number > 0 [s], got {span!r}")
     defaults.pop("horizon", None)
     return SceneCase(name, scene, initial, float(span), defaults)
-
-
-# ---------------------------------------------------------------------------------------------
-# the sweep
-
-
-def _family(method: str) -> str:
-    """The method's family, for the independent check: splittings (kick and free flow), Runge-Kutta,
-    or the method itself (implicit midpoint, the semi-implicit Eulers)."""
-    if "splitting" in method or method == "exact_flow_kick":
-        return "splitting"
-    if method in ("explicit_euler", "rk4", "rkmk4"):
-        return "runge-kutta"
-    return method
-
-
-def _best(candidates: Iterable[str], info: Mapping[str, Mapping[str, Any]]) -> str | None:
-    """The highest-order method of `candidates` (ties to one that keeps SO(3) exactly), None if empty."""
-    return max(candidates, key=lambda m: (info[m]["order"], "SO(3)" in info[m]["conserves"]), default=None)
-
-
-def _independent(case: SceneCase, method: str, order: int, dt: float, steps: int, ref: Any, max_steps: int,
-                 bar: Any) -> Any:
-    """`method` (of another family) with its Richardson error estimate, from the reference's finest step
-    dt / ref.sub, halved while its estimate exceeds CHECK_FACTOR x the reference's (a lower-order method
-    needs finer steps to say anything), at most CHECK_HALVINGS times and within max_steps."""
-    from . import work_precision as wp
-
-    sub = ref.sub
-    while True:
-        independent = wp._family_reference(case, method, order, dt / sub, steps * sub, ref.record_every * sub // ref.sub,
-                                           bar)
-        wanted = wp.CHECK_FACTOR * ref.estimate["max_state_error"]
-        if (independent.error["max_state_error"] <= wanted or steps * sub * 2 > max_steps
-                or sub >= ref.sub * 2**CHECK_HALVINGS):
-            return independent
-        sub *= 2
-
-
-def _fixed(states: SceneStates) -> Callable[[np.ndarray], SceneStates]:
-    """The reference states of a Richardson reference, already at the runs' record times."""
-    return lambda t: states
-
-
-def scene_sweep(case: SceneCase, methods: list[str], grid: list[int], measure: str, tolerance: float | None,
-                progress: bool, cost: str, samples: int, max_reference_steps: int,
-                info: dict[str, dict[str, Any]]) -> TradeoffResult:
-    """The sweep of rigiddyn.tradeoff on a scene (arguments checked by it; `grid`: the step counts):
-    against the scene's closed form when it is one's case (case.exact), else against a Richardson
-    reference checked against another method family."""
-    from . import work_precision as wp
-    from .stability import StabilityWarning, scene_modes, scene_stability_message
-
-    ref_method = other = None
-    closed_form = case.exact
-    if case.exact is None:
-        clean = [m for m in info if info[m]["order"] > 0 and case.compile(m).model is not None
-                 and not case.compile(m).warnings]
-        ref_method = _best(clean, info)
-        if ref_method is None:
-            raise ValueError(f"problem: expected a scene that a method of order >= 1 runs without a compatibility "
-                             f"warning, got {case.name!r} (" + "; ".join(f"{m}: {case.compile(m).reason or 'warned'}"
-                                                                         for m in info) + ")")
-        other = _best([m for m in clean if _family(m) != _family(ref_method)], info)
-    runnable = [m for m in methods if case.compile(m).model is not None]
-    free = not list(case.scene.elements) and getattr(case.scene, "frame", None) is None  # every body torque-free
-    exact = {m for m in runnable if info[m]["order"] == 0 or (free and info[m]["exact_torque_free"])}
-    total = 1
-    if progress:
-        estimate = wp._estimate(case, runnable, grid, ref_method)
-        print("\n".join(wp._wrap(estimate.text, 100)), file=sys.stderr, flush=True)
-        total = estimate.steps
-    bar = wp._Progress(total, bool(progress) and sys.stderr.isatty())
-    sweeps: list[tuple[int, float, dict[str, Any], Any, Any]] = []
-    try:
-        for steps in grid:
-            dt = case.horizon / steps
-            every = max(1, steps // samples)
-            runs = {m: wp._simulate(case, m, dt, steps, every, timed=True, bar=bar) for m in runnable}
-            if ref_method is None:  # the closed form is the reference (case.exact)
-                sweeps.append((steps, dt, runs, None, None))
-                continue
-            # refined against the methods with a truncation error (an exact one's round-off sets no target)
-            ref = wp._richardson_reference(case, ref_method, info[ref_method]["order"], dt, steps, every,
-                                           [r for m, r in runs.items() if m not in exact], max_reference_steps, bar)
-            if other is None:
-                check = wp._Check(True, ref.estimate, "no method of another family runs this scene without a warning: "
-                                  "Richardson estimate only")
-            else:
-                independent = _independent(case, other, info[other]["order"], dt, steps, ref, max_reference_steps, bar)
-                check = wp._check_reference(case, ref.states, ref.estimate, independent, steps * ref.sub)
-            sweeps.append((steps, dt, runs, ref, check))
-    finally:
-        bar.close()
-    modes = scene_modes(case.scene, case.initial)
-    rows: list[dict[str, Any]] = []
-    unstable: list[tuple[str, float, str]] = []
-    for steps, dt, runs, ref, check in sweeps:
-        if ref is None:  # the closed form: no error of its own beyond round-off
-            assert closed_form is not None  # a sweep without a Richardson reference has one
-            reference, reference_error, reference_check = f"exact: {closed_form.name}", 0.0, ""
-            states_at = closed_form.states
-        else:
-            states_at = _fixed(ref.states)
-            reference = f"richardson({ref_method})" if check.reliable else f"unreliable: richardson({ref_method})"
-            reference_error, reference_check = check.error[measure], check.text
-        for method in methods:
-            m = info[method]
-            row: dict[str, Any] = {"method": method, "dt": dt, "steps": steps, "order": m["order"],
-                                   "evaluations_per_step": m["evaluations"]}
-            compiled = case.compile(method)
-            if compiled.model is None:
-                row.update({"time_per_step": math.nan, "time_noise": math.nan, "total_time": math.nan,
-                            "total_evaluations": 0, **{k: math.nan for k in wp.MEASURES},
-                            "observed_order": math.nan, "order_note": f"not applicable: {compiled.reason}",
-                            "reference": reference, "reference_error": reference_error,
-                            "reference_check": reference_check, "diverged": False, "stability": ""})
-                rows.append(row)
-                continue
-            run = runs[method]
-            row.update({"time_per_step": run.time_per_step, "time_noise": run.time_noise,
-                        "total_time": run.time_per_step * steps, "total_evaluations": m["evaluations"] * steps})
-            if run.diverged:
-                row.update({k: math.inf for k in wp.MEASURES})
-            else:
-                row.update(case.measures(run.states, states_at(run.states.t), run.quaternion_norm_error))
-            message = scene_stability_message(method, dt, steps, case.scene, case.initial, modes)
-            if message:
-                unstable.append((method, dt, message))
-            row.update({"observed_order": math.nan, "order_note": "", "reference": reference,
-                        "reference_error": reference_error, "reference_check": reference_check,
-                        "diverged": run.diverged, "stability": message or ""})
-            rows.append(row)
-    applicable = [r for r in rows if not r["order_note"].startswith("not applicable")]
-    wp._observed_orders(applicable, measure, exact)
-    rows.sort(key=lambda r: (methods.index(r["method"]), -r["dt"]))
-    if unstable:
-        warnings.warn(wp._stability_summary(unstable, "for this scene"), StabilityWarning, stacklevel=3)
-    notes = [f"{m}: {text} (SceneCompatibilityWarning)" for m in methods for text in case.compile(m).warnings]
-    if case.exact is not None:
-        notes.insert(0, f"reference: the exact solution rigiddyn.{case.exact.name} ({case.exact.case})")
-    return wp.TradeoffResult(case.name, case.horizon, measure, tolerance, rows, cost, notes=notes)

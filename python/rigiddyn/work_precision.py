@@ -50,8 +50,9 @@ Without a tolerance there is no recommendation: the report gives the Pareto fron
 instead, the runs that no other run beats in both (`pareto_front`).
 
 A scene (many bodies, force elements; rigiddyn.Scene or a scene TOML file) is swept the same way by
-rigiddyn.scene_precision: Richardson reference checked against another method family, the errors taken
-over the bodies, a method the scene refuses at compile reported "not applicable: <reason>".
+scene_sweep, on the scene side that rigiddyn.scene_precision holds (SceneCase): Richardson reference
+checked against another method family, the errors taken over the bodies, a method the scene refuses at
+compile reported "not applicable: <reason>".
 
 Before the sweep, a short timed probe of every method estimates the sweep's cost, printed on stderr
 (progress=True), and a progress bar in steps follows the runs while stderr is a terminal (tqdm if
@@ -78,8 +79,8 @@ import numpy as np
 
 from . import _core
 from .problem import Problem, load_problem
-from .scene_precision import SceneCase, scene_case
-from .stability import StabilityWarning, stability_message
+from .scene_precision import SceneCase, SceneStates, _attitude_angle, scene_case
+from .stability import StabilityWarning, scene_modes, scene_stability_message, stability_message
 
 __all__ = ["COLUMNS", "MEASURES", "Recommendation", "TradeoffResult", "cheapest", "measure_unit", "pareto_front",
            "reference_states", "timing_noise", "tradeoff"]
@@ -112,6 +113,7 @@ REFERENCE_TARGET = 0.01  # the Richardson reference is refined until its error i
 REFERENCE_MARGIN = 10.0  # an error within this factor of the reference's says nothing about the method
 ORDER_AGREEMENT = 0.1  # neighbouring slopes p, p' agree if |p - p'| <= this x max(|p|, |p'|, 1)
 CHECK_FACTOR = 10.0  # the second reference may disagree by this x the Richardson estimate (+ its own error)
+CHECK_HALVINGS = 4  # a scene's independent check: its step halved at most this often below the reference's finest
 DOP853_RTOL = 1e-13  # the independent reference's relative tolerance (its error: a second run at 10x)
 DOP853_MAX_STEPS = 100_000  # per DOP853 run; beyond it the check uses the core's other 4th-order family
 MAX_STEPS = 2**53  # steps of one run at most (exact in a float; far beyond any run that ends)
@@ -174,23 +176,6 @@ def reference_states(problem: Problem, t: np.ndarray) -> States:
 
 # ---------------------------------------------------------------------------------------------
 # error measures
-
-
-def _rescaled(q: np.ndarray) -> np.ndarray:
-    """Each row divided by its largest absolute component (a zero row left as it is)."""
-    largest = np.max(np.abs(q), axis=1, keepdims=True)
-    return q / np.where(largest > 0, largest, 1.0)
-
-
-def _attitude_angle(q_ref: np.ndarray, q: np.ndarray) -> np.ndarray:
-    """Geodesic angle 2 atan2(|vec(q_ref^-1 q)|, |scalar|) [rad], rows (x, y, z, w), of any norm: the angle
-    does not change when a row is scaled, so each is divided by its largest component first (a run
-    blowing up may hold quaternions of 1e200, whose squares would overflow)."""
-    q_ref, q = _rescaled(q_ref), _rescaled(q)
-    a_v, a_w, b_v, b_w = q_ref[:, :3], q_ref[:, 3:], q[:, :3], q[:, 3:]
-    vec = a_w * b_v - b_w * a_v - np.cross(a_v, b_v)
-    scalar = np.abs(a_w[:, 0] * b_w[:, 0] + np.sum(a_v * b_v, axis=1))
-    return np.asarray(2.0 * np.arctan2(np.linalg.norm(vec, axis=1), scalar))
 
 
 def _measures(problem: Problem | SceneCase, run: Any, ref: Any, quaternion_norm_error: np.ndarray) -> dict[str, float]:
@@ -1446,8 +1431,6 @@ def tradeoff(problem: Any, methods: Iterable[str] | None = None,
     samples = _check_count(samples, "samples")
     max_reference_steps = _check_count(max_reference_steps, "max_reference_steps")
     if isinstance(problem, SceneCase):
-        from .scene_precision import scene_sweep
-
         grid = _step_grid(problem.horizon, dts, dts_name)
         return scene_sweep(problem, methods, grid, measure, tolerance, bool(progress), cost, samples,
                            max_reference_steps, info)
@@ -1542,3 +1525,141 @@ def _check_references(problem: Problem, sweeps: Sequence[tuple[int, float, list[
                                             ref.record_every, bar)
         checks[steps] = _check_reference(problem, ref.states, ref.estimate, independent, steps * ref.sub)
     return checks
+
+
+# ---------------------------------------------------------------------------------------------
+# the sweep on a scene (scene_precision.SceneCase)
+
+
+def _family(method: str) -> str:
+    """The method's family, for the independent check: splittings (kick and free flow), Runge-Kutta,
+    or the method itself (implicit midpoint, the semi-implicit Eulers)."""
+    if "splitting" in method or method == "exact_flow_kick":
+        return "splitting"
+    if method in ("explicit_euler", "rk4", "rkmk4"):
+        return "runge-kutta"
+    return method
+
+
+def _best(candidates: Iterable[str], info: Mapping[str, Mapping[str, Any]]) -> str | None:
+    """The highest-order method of `candidates` (ties to one that keeps SO(3) exactly), None if empty."""
+    return max(candidates, key=lambda m: (info[m]["order"], "SO(3)" in info[m]["conserves"]), default=None)
+
+
+def _scene_independent(case: SceneCase, method: str, order: int, dt: float, steps: int, ref: Any, max_steps: int,
+                       bar: Any) -> Any:
+    """`method` (of another family) with its Richardson error estimate, from the reference's finest step
+    dt / ref.sub, halved while its estimate exceeds CHECK_FACTOR x the reference's (a lower-order method
+    needs finer steps to say anything), at most CHECK_HALVINGS times and within max_steps."""
+    sub = ref.sub
+    while True:
+        independent = _family_reference(case, method, order, dt / sub, steps * sub, ref.record_every * sub // ref.sub,
+                                        bar)
+        wanted = CHECK_FACTOR * ref.estimate["max_state_error"]
+        if (independent.error["max_state_error"] <= wanted or steps * sub * 2 > max_steps
+                or sub >= ref.sub * 2**CHECK_HALVINGS):
+            return independent
+        sub *= 2
+
+
+def _fixed(states: SceneStates) -> Callable[[np.ndarray], SceneStates]:
+    """The reference states of a Richardson reference, already at the runs' record times."""
+    return lambda t: states
+
+
+def scene_sweep(case: SceneCase, methods: list[str], grid: list[int], measure: str, tolerance: float | None,
+                progress: bool, cost: str, samples: int, max_reference_steps: int,
+                info: dict[str, dict[str, Any]]) -> TradeoffResult:
+    """The sweep of rigiddyn.tradeoff on a scene (arguments checked by it; `grid`: the step counts):
+    against the scene's closed form when it is one's case (case.exact), else against a Richardson
+    reference checked against another method family."""
+    ref_method = other = None
+    closed_form = case.exact
+    if case.exact is None:
+        clean = [m for m in info if info[m]["order"] > 0 and case.compile(m).model is not None
+                 and not case.compile(m).warnings]
+        ref_method = _best(clean, info)
+        if ref_method is None:
+            raise ValueError(f"problem: expected a scene that a method of order >= 1 runs without a compatibility "
+                             f"warning, got {case.name!r} (" + "; ".join(f"{m}: {case.compile(m).reason or 'warned'}"
+                                                                         for m in info) + ")")
+        other = _best([m for m in clean if _family(m) != _family(ref_method)], info)
+    runnable = [m for m in methods if case.compile(m).model is not None]
+    free = not list(case.scene.elements) and getattr(case.scene, "frame", None) is None  # every body torque-free
+    exact = {m for m in runnable if info[m]["order"] == 0 or (free and info[m]["exact_torque_free"])}
+    total = 1
+    if progress:
+        estimate = _estimate(case, runnable, grid, ref_method)
+        print("\n".join(_wrap(estimate.text, 100)), file=sys.stderr, flush=True)
+        total = estimate.steps
+    bar = _Progress(total, bool(progress) and sys.stderr.isatty())
+    sweeps: list[tuple[int, float, dict[str, Any], Any, Any]] = []
+    try:
+        for steps in grid:
+            dt = case.horizon / steps
+            every = max(1, steps // samples)
+            runs = {m: _simulate(case, m, dt, steps, every, timed=True, bar=bar) for m in runnable}
+            if ref_method is None:  # the closed form is the reference (case.exact)
+                sweeps.append((steps, dt, runs, None, None))
+                continue
+            # refined against the methods with a truncation error (an exact one's round-off sets no target)
+            ref = _richardson_reference(case, ref_method, info[ref_method]["order"], dt, steps, every,
+                                           [r for m, r in runs.items() if m not in exact], max_reference_steps, bar)
+            if other is None:
+                check = _Check(True, ref.estimate, "no method of another family runs this scene without a warning: "
+                                  "Richardson estimate only")
+            else:
+                independent = _scene_independent(case, other, info[other]["order"], dt, steps, ref,
+                                                 max_reference_steps, bar)
+                check = _check_reference(case, ref.states, ref.estimate, independent, steps * ref.sub)
+            sweeps.append((steps, dt, runs, ref, check))
+    finally:
+        bar.close()
+    modes = scene_modes(case.scene, case.initial)
+    rows: list[dict[str, Any]] = []
+    unstable: list[tuple[str, float, str]] = []
+    for steps, dt, runs, ref, check in sweeps:
+        if ref is None:  # the closed form: no error of its own beyond round-off
+            assert closed_form is not None  # a sweep without a Richardson reference has one
+            reference, reference_error, reference_check = f"exact: {closed_form.name}", 0.0, ""
+            states_at = closed_form.states
+        else:
+            states_at = _fixed(ref.states)
+            reference = f"richardson({ref_method})" if check.reliable else f"unreliable: richardson({ref_method})"
+            reference_error, reference_check = check.error[measure], check.text
+        for method in methods:
+            m = info[method]
+            row: dict[str, Any] = {"method": method, "dt": dt, "steps": steps, "order": m["order"],
+                                   "evaluations_per_step": m["evaluations"]}
+            compiled = case.compile(method)
+            if compiled.model is None:
+                row.update({"time_per_step": math.nan, "time_noise": math.nan, "total_time": math.nan,
+                            "total_evaluations": 0, **{k: math.nan for k in MEASURES},
+                            "observed_order": math.nan, "order_note": f"not applicable: {compiled.reason}",
+                            "reference": reference, "reference_error": reference_error,
+                            "reference_check": reference_check, "diverged": False, "stability": ""})
+                rows.append(row)
+                continue
+            run = runs[method]
+            row.update({"time_per_step": run.time_per_step, "time_noise": run.time_noise,
+                        "total_time": run.time_per_step * steps, "total_evaluations": m["evaluations"] * steps})
+            if run.diverged:
+                row.update({k: math.inf for k in MEASURES})
+            else:
+                row.update(case.measures(run.states, states_at(run.states.t), run.quaternion_norm_error))
+            message = scene_stability_message(method, dt, steps, case.scene, case.initial, modes)
+            if message:
+                unstable.append((method, dt, message))
+            row.update({"observed_order": math.nan, "order_note": "", "reference": reference,
+                        "reference_error": reference_error, "reference_check": reference_check,
+                        "diverged": run.diverged, "stability": message or ""})
+            rows.append(row)
+    applicable = [r for r in rows if not r["order_note"].startswith("not applicable")]
+    _observed_orders(applicable, measure, exact)
+    rows.sort(key=lambda r: (methods.index(r["method"]), -r["dt"]))
+    if unstable:
+        warnings.warn(_stability_summary(unstable, "for this scene"), StabilityWarning, stacklevel=3)
+    notes = [f"{m}: {text} (SceneCompatibilityWarning)" for m in methods for text in case.compile(m).warnings]
+    if case.exact is not None:
+        notes.insert(0, f"reference: the exact solution rigiddyn.{case.exact.name} ({case.exact.case})")
+    return TradeoffResult(case.name, case.horizon, measure, tolerance, rows, cost, notes=notes)

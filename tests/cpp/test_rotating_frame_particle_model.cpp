@@ -34,7 +34,8 @@ Model free_model(const SceneFrame& frame) { return Model(Particle(mass), frame, 
 
 template <class Integrator>
 Model::Coordinates run(const Model& model, Model::Coordinates y, double h, int steps) {
-  for (int i = 0; i < steps; ++i) Integrator::step(model, y, h);
+  auto work = workspace<Integrator>(model, y);
+  for (int i = 0; i < steps; ++i) Integrator::step(model, y, h, work);
   return y;
 }
 
@@ -177,9 +178,10 @@ TEST(RotatingFrameParticleModel, CoriolisPowerAndWorkAreZero) {
   const Model model(Particle(mass), frame, Eigen::Vector3d(0.0, 0.0, -9.81), 0, 1, 2, 3);
   Model::Coordinates y = Model::coordinates(ParticleState{Eigen::Vector3d(1, 2, 3), Eigen::Vector3d(4, -5, 6)}, 0.0);
   SceneSimulation r;
+  auto work = workspace<Rk4>(model, y);
   for (int i = 0; i < 100; ++i) {
     model.record(y, y[6], r);
-    Rk4::step(model, y, 0.01);
+    Rk4::step(model, y, 0.01, work);
   }
   for (std::size_t i = 0; i < r.size(); ++i) {
     const Eigen::Vector3d v(&r.v_W[3 * i]);
@@ -211,7 +213,9 @@ TEST(RotatingFrameParticleModel, AgreesWithTheSceneModel) {
   Eigen::VectorXd y_generic = generic.coordinates(s0, 0.1);
   Model::Coordinates y_fast = fast.coordinates(s0, 0.1);
   SceneSimulation r_generic, r_fast;
-  for (int i = 0; i < 500; ++i) Rk4::step(generic, y_generic, 0.002), Rk4::step(fast, y_fast, 0.002);
+  auto work_generic = workspace<Rk4>(generic, y_generic);
+  auto work_fast = workspace<Rk4>(fast, y_fast);
+  for (int i = 0; i < 500; ++i) Rk4::step(generic, y_generic, 0.002, work_generic), Rk4::step(fast, y_fast, 0.002, work_fast);
   generic.record(y_generic, 1.1, r_generic);
   fast.record(y_fast, 1.1, r_fast);
   const double tolerance = 500 * 16.0 * eps * 20.0;  // 500 steps × 16 ε × the state's size (~20) × e^{1.5}/e

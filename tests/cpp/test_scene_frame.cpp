@@ -269,7 +269,8 @@ std::vector<FrameModel::Term> frame_terms_of(const SceneFrame& frame, const std:
 
 template <class Model>
 typename Model::Coordinates run_rk4(const Model& model, typename Model::Coordinates y, double h, int steps) {
-  for (int i = 0; i < steps; ++i) Rk4::step(model, y, h);
+  auto work = workspace<Rk4>(model, y);
+  for (int i = 0; i < steps; ++i) Rk4::step(model, y, h, work);
   return y;
 }
 

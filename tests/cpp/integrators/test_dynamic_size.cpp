@@ -28,14 +28,23 @@ class DynamicSize {
 
   explicit DynamicSize(const Fixed& model) : model_(model) {}
 
-  Coordinates rate(const Coordinates& y) const { return model_.rate(fixed(y)); }
-  static void project(Coordinates& y) { apply(y, [](auto& f) { Fixed::project(f); }); }
-  Tangent velocity(const Coordinates& y) const { return model_.velocity(fixed(y)); }
-  static Coordinates retract(const Coordinates& y, const Tangent& theta) { return Fixed::retract(fixed(y), fixed_tangent(theta)); }
-  Tangent velocity_at(const Coordinates& y, const Tangent& theta) const {
-    return model_.velocity_at(fixed(y), fixed_tangent(theta));
+  Eigen::Index tangent_count() const { return typename Fixed::Tangent().size(); }
+  void rate(const Coordinates& y, Coordinates& dy) const {
+    apply_as<typename Fixed::Coordinates>(dy, [&](auto& f) { model_.rate(fixed(y), f); });
   }
-  static Tangent dexp_inv(const Tangent& theta, const Tangent& xi) { return Fixed::dexp_inv(fixed_tangent(theta), fixed_tangent(xi)); }
+  static void project(Coordinates& y) { apply(y, [](auto& f) { Fixed::project(f); }); }
+  void velocity(const Coordinates& y, Tangent& xi) const {
+    apply_as<typename Fixed::Tangent>(xi, [&](auto& f) { model_.velocity(fixed(y), f); });
+  }
+  static void retract(const Coordinates& y, const Tangent& theta, Coordinates& out) {
+    apply_as<typename Fixed::Coordinates>(out, [&](auto& f) { Fixed::retract(fixed(y), fixed_tangent(theta), f); });
+  }
+  void velocity_at(const Coordinates& y, const Tangent& theta, Tangent& xi) const {
+    apply_as<typename Fixed::Tangent>(xi, [&](auto& f) { model_.velocity_at(fixed(y), fixed_tangent(theta), f); });
+  }
+  static void dexp_inv(const Tangent& theta, Tangent& xi) {
+    apply_as<typename Fixed::Tangent>(xi, [&](auto& f) { Fixed::dexp_inv(fixed_tangent(theta), f); });
+  }
   void kick(Coordinates& y, double h) const { apply(y, [&](auto& f) { model_.kick(f, h); }); }
   void kick_implicit_gyroscopic(Coordinates& y, double h) const { apply(y, [&](auto& f) { model_.kick_implicit_gyroscopic(f, h); }); }
   void drift(Coordinates& y, double h) const { apply(y, [&](auto& f) { model_.drift(f, h); }); }
@@ -65,13 +74,16 @@ class DynamicSize {
     EXPECT_EQ(x.size(), typename Fixed::Tangent().size());
     return x;
   }
-  template <class F>
-  static void apply(Coordinates& y, F&& f) {
-    typename Fixed::Coordinates y_fixed = fixed(y);
-    f(y_fixed);
-    y = y_fixed;
+  // x ← f(x) on a fixed-size copy of x, of type Vector (Fixed's Coordinates or Tangent)
+  template <class Vector, class F>
+  static void apply_as(Eigen::VectorXd& x, F&& f) {
+    EXPECT_EQ(x.size(), Vector().size());
+    Vector x_fixed = x;
+    f(x_fixed);
+    x = x_fixed;
   }
-
+  template <class F>
+  static void apply(Coordinates& y, F&& f) { apply_as<typename Fixed::Coordinates>(y, f); }
   Fixed model_;
 };
 
@@ -82,7 +94,8 @@ static_assert(!has_implicit_midpoint_newton<DynamicSize<ParticleModel>>::value);
 template <class Integrator, class Model>
 std::string run(const Model& model, typename Model::Coordinates& y, int n, double h) {
   try {
-    for (int k = 0; k < n; ++k) Integrator::step(model, y, h);
+    auto work = workspace<Integrator>(model, y);
+    for (int k = 0; k < n; ++k) Integrator::step(model, y, h, work);
   } catch (const std::invalid_argument& e) {
     return e.what();
   }

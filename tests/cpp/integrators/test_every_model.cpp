@@ -166,7 +166,8 @@ std::vector<double> step_model(Model model, const Case& c) {
   typename Model::Coordinates y;
   for (Eigen::Index i = 0; i < y.size(); ++i) y[i] = c.y0.at(static_cast<std::size_t>(i));
   visit_method(method_from_name(c.method), [&](auto integrator) {
-    for (int k = 0; k < c.steps; ++k) decltype(integrator)::step(model, y, c.h);
+    auto work = workspace<decltype(integrator)>(model, y);
+    for (int k = 0; k < c.steps; ++k) decltype(integrator)::step(model, y, c.h, work);
   });
   return std::vector<double>(y.data(), y.data() + y.size());
 }

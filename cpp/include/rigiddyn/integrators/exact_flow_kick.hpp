@@ -24,6 +24,7 @@
 #pragma once
 #include "rigiddyn/exact/free_body.hpp"
 #include "rigiddyn/integrators/free_flow_tags.hpp"
+#include "rigiddyn/integrators/workspace.hpp"
 
 #include <stdexcept>
 
@@ -52,17 +53,27 @@ double exact_flow_kick_step(const Model& model, typename Model::Coordinates& y, 
 
 struct ExactFlowKick {
   template <class Model>
-  static void step(const Model& model, typename Model::Coordinates& y, double h) {
+  using Workspace = NoWorkspace;
+
+  template <class Model>
+  static void step(const Model& model, typename Model::Coordinates& y, double h, NoWorkspace& /*w*/) {
     exact_flow_kick_step(model, y, h);
   }
 };
 
 struct ExactFreeFlow {
+  // the state at the start of the step (restored when the step is refused)
   template <class Model>
-  static void step(const Model& model, typename Model::Coordinates& y, double h) {
-    const typename Model::Coordinates y0 = y;
+  struct Workspace {
+    typename Model::Coordinates y0;
+    Workspace(const Model& /*model*/, const typename Model::Coordinates& y) : y0(y.size()) {}
+  };
+
+  template <class Model>
+  static void step(const Model& model, typename Model::Coordinates& y, double h, Workspace<Model>& w) {
+    w.y0 = y;
     if (exact_flow_kick_step(model, y, h) != 0.0) {
-      y = y0;
+      y = w.y0;
       throw std::invalid_argument(
           "method: expected a torque-free body for 'exact' (no torque), got a torque; use "
           "'exact_flow_kick' for bodies under torques");

@@ -32,6 +32,7 @@
 // gyroscopic part) gets the fixed-point iteration ȳ = y0 + (h/2) rate(ȳ) on its rate() with the same
 // tolerance and cap, then y1 = 2ȳ − y0 and project(y1).
 #pragma once
+#include "rigiddyn/integrators/workspace.hpp"
 #include "rigiddyn/models/model_interface.hpp"
 
 #include <Eigen/Core>
@@ -64,21 +65,29 @@ struct has_implicit_midpoint_newton<Model, std::void_t<decltype(std::declval<con
 
 // step() returns true if the solver converged (the only integrator whose step reports it).
 struct ImplicitMidpoint {
+  // the fixed point's iterates ȳ and the rate at ȳ (unused by a model with the hook)
   template <class Model>
-  static bool step(const Model& model, typename Model::Coordinates& y, double h) {
+  struct Workspace {
+    typename Model::Coordinates mid, next, rate;
+    Workspace(const Model& /*model*/, const typename Model::Coordinates& y) : mid(y.size()), next(y.size()), rate(y.size()) {}
+  };
+
+  template <class Model>
+  static bool step(const Model& model, typename Model::Coordinates& y, double h, Workspace<Model>& w) {
     if constexpr (has_implicit_midpoint_newton<Model>::value) {
       return model.implicit_midpoint_newton(y, h);
     } else {  // fixed point ȳ = y0 + (h/2) f(ȳ)
       using namespace implicit_midpoint_solver;
-      typename Model::Coordinates mid = y;
+      w.mid = y;
       bool converged = false;
       for (int k = 0; k < max_iterations && !converged; ++k) {
-        const typename Model::Coordinates next = y + (0.5 * h) * model.rate(mid);
-        const double change = (next - mid).norm();
-        mid = next;
-        converged = change <= tolerance * mid.norm();
+        model.rate(w.mid, w.rate);
+        w.next = y + (0.5 * h) * w.rate;
+        const double change = (w.next - w.mid).norm();
+        w.mid.swap(w.next);
+        converged = change <= tolerance * w.mid.norm();
       }
-      y = 2.0 * mid - y;
+      y = 2.0 * w.mid - y;
       model.project(y);
       return converged;
     }

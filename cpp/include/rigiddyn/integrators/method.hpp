@@ -2,8 +2,10 @@
 // evaluations per step, what it conserves) and the single switch from a Method to the compiled
 // integrator (visit_method), used once at the top of `step` and `simulate`, never inside a loop.
 //
-// Adding a method: write integrators/<method>.hpp (a struct with
-//   template <class Model> static void step(const Model&, typename Model::Coordinates&, double h)
+// Adding a method: write integrators/<method>.hpp (a struct with its scratch vectors
+//   template <class Model> struct Workspace (or NoWorkspace; integrators/workspace.hpp)
+// and its step
+//   template <class Model> static void step(const Model&, typename Model::Coordinates&, double h, Workspace<Model>&)
 // against models/model_interface.hpp), add an enumerator, a row of method_table() and a case in
 // visit_method.
 #pragma once

@@ -6,6 +6,7 @@
 // Butcher tableau (named constants, MuJoCo style):
 //   c = (0, 1/2, 1/2, 1),  a21 = 1/2, a32 = 1/2, a43 = 1,  b = (1/6, 1/3, 1/3, 1/6).
 #pragma once
+#include "rigiddyn/integrators/workspace.hpp"
 #include "rigiddyn/models/model_interface.hpp"  // RIGIDDYN_ALWAYS_INLINE
 #include <Eigen/Core>
 
@@ -21,37 +22,44 @@ inline constexpr double b3 = 1.0 / 3.0;
 inline constexpr double b4 = 1.0 / 6.0;
 }  // namespace rk4_tableau
 
-// y + a k, element by element. A plain loop rather than an Eigen expression: Eigen's 2-wide packets
-// at odd offsets reload values just written as scalars by Model::rate (a store-forwarding stall that
-// measured 2-15x slower per step than a hand-written loop).
+// out = y + a k, element by element. A plain loop rather than an Eigen expression: Eigen's 2-wide
+// packets at odd offsets reload values just written as scalars by Model::rate (a store-forwarding stall
+// that measured 2-15x slower per step than a hand-written loop).
 template <class Vector>
-Vector axpy(const Vector& y, double a, const Vector& k) {
-  Vector out(y.size());  // sized from y: fixed-size and dynamic-size (Eigen::VectorXd) models alike
+RIGIDDYN_ALWAYS_INLINE void axpy(const Vector& y, double a, const Vector& k, Vector& out) {
   for (Eigen::Index i = 0; i < y.size(); ++i) out[i] = y[i] + a * k[i];
-  return out;
 }
 
-// a k, element by element (see axpy).
+// out = a k, element by element (see axpy).
 template <class Vector>
-Vector scaled(double a, const Vector& k) {
-  Vector out(k.size());
+RIGIDDYN_ALWAYS_INLINE void scaled(double a, const Vector& k, Vector& out) {
   for (Eigen::Index i = 0; i < k.size(); ++i) out[i] = a * k[i];
-  return out;
 }
 
 struct Rk4 {
+  // the four rates k1 … k4 and the stage state
   template <class Model>
-  RIGIDDYN_ALWAYS_INLINE static void step(const Model& model, typename Model::Coordinates& y, double h) {
+  struct Workspace {
+    typename Model::Coordinates k1, k2, k3, k4, stage;
+    Workspace(const Model& /*model*/, const typename Model::Coordinates& y)
+        : k1(y.size()), k2(y.size()), k3(y.size()), k4(y.size()), stage(y.size()) {}
+  };
+
+  template <class Model>
+  RIGIDDYN_ALWAYS_INLINE static void step(const Model& model, typename Model::Coordinates& y, double h,
+                                          Workspace<Model>& w) {
     using namespace rk4_tableau;
-    using Coordinates = typename Model::Coordinates;
-    const Coordinates k1 = model.rate(y);
-    const Coordinates k2 = model.rate(axpy(y, a21 * h, k1));
-    const Coordinates k3 = model.rate(axpy(y, a32 * h, k2));
-    const Coordinates k4 = model.rate(axpy(y, a43 * h, k3));
+    model.rate(y, w.k1);
+    axpy(y, a21 * h, w.k1, w.stage);
+    model.rate(w.stage, w.k2);
+    axpy(y, a32 * h, w.k2, w.stage);
+    model.rate(w.stage, w.k3);
+    axpy(y, a43 * h, w.k3, w.stage);
+    model.rate(w.stage, w.k4);
     // y += h (b1 k1 + b2 k2 + b3 k3 + b4 k4) written as h/6 (k1 + 2 k2 + 2 k3 + k4): 6 operations per
     // entry instead of 9 (b = (1, 2, 2, 1)/6; the same value to a rounding)
     const double h_6 = h / 6.0;
-    for (Eigen::Index i = 0; i < y.size(); ++i) y[i] += h_6 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
+    for (Eigen::Index i = 0; i < y.size(); ++i) y[i] += h_6 * (w.k1[i] + 2.0 * w.k2[i] + 2.0 * w.k3[i] + w.k4[i]);
     model.project(y);
   }
 };

@@ -13,20 +13,34 @@
 namespace rigiddyn {
 
 struct Rkmk4 {
+  // the four stage velocities K1 … K4, the stage increment Θ and the next state
   template <class Model>
-  RIGIDDYN_ALWAYS_INLINE static void step(const Model& model, typename Model::Coordinates& y, double h) {
+  struct Workspace {
+    typename Model::Tangent K1, K2, K3, K4, theta;
+    typename Model::Coordinates next;
+    Workspace(const Model& model, const typename Model::Coordinates& y)
+        : K1(new_tangent(model)), K2(K1.size()), K3(K1.size()), K4(K1.size()), theta(K1.size()), next(y.size()) {}
+  };
+
+  template <class Model>
+  RIGIDDYN_ALWAYS_INLINE static void step(const Model& model, typename Model::Coordinates& y, double h,
+                                          Workspace<Model>& w) {
     using namespace rk4_tableau;
-    using Tangent = typename Model::Tangent;
-    const Tangent K1 = model.velocity(y);
-    const Tangent theta2 = scaled(a21 * h, K1);
-    const Tangent K2 = model.dexp_inv(theta2, model.velocity_at(y, theta2));
-    const Tangent theta3 = scaled(a32 * h, K2);
-    const Tangent K3 = model.dexp_inv(theta3, model.velocity_at(y, theta3));
-    const Tangent theta4 = scaled(a43 * h, K3);
-    const Tangent K4 = model.dexp_inv(theta4, model.velocity_at(y, theta4));
-    Tangent theta(K1.size());
-    for (Eigen::Index i = 0; i < theta.size(); ++i) theta[i] = h * (b1 * K1[i] + b2 * K2[i] + b3 * K3[i] + b4 * K4[i]);
-    y = model.retract(y, theta);
+    model.velocity(y, w.K1);
+    scaled(a21 * h, w.K1, w.theta);
+    model.velocity_at(y, w.theta, w.K2);
+    model.dexp_inv(w.theta, w.K2);
+    scaled(a32 * h, w.K2, w.theta);
+    model.velocity_at(y, w.theta, w.K3);
+    model.dexp_inv(w.theta, w.K3);
+    scaled(a43 * h, w.K3, w.theta);
+    model.velocity_at(y, w.theta, w.K4);
+    model.dexp_inv(w.theta, w.K4);
+    for (Eigen::Index i = 0; i < w.theta.size(); ++i) {
+      w.theta[i] = h * (b1 * w.K1[i] + b2 * w.K2[i] + b3 * w.K3[i] + b4 * w.K4[i]);
+    }
+    model.retract(y, w.theta, w.next);
+    y.swap(w.next);
     model.project(y);
   }
 };

@@ -11,13 +11,17 @@
 //   (euler_equations.hpp): no blow-up on a fast spin; dissipative (energy decays monotonically) for
 //   h |ω| below about 1; beyond that the single Newton step lets the energy grow transiently.
 #pragma once
+#include "rigiddyn/integrators/workspace.hpp"
 #include "rigiddyn/models/model_interface.hpp"  // RIGIDDYN_ALWAYS_INLINE
 
 namespace rigiddyn {
 
 struct SemiImplicitEuler {
   template <class Model>
-  RIGIDDYN_ALWAYS_INLINE static void step(const Model& model, typename Model::Coordinates& y, double h) {
+  using Workspace = NoWorkspace;
+
+  template <class Model>
+  RIGIDDYN_ALWAYS_INLINE static void step(const Model& model, typename Model::Coordinates& y, double h, NoWorkspace&) {
     model.kick(y, h);
     model.drift(y, h);
   }
@@ -25,7 +29,10 @@ struct SemiImplicitEuler {
 
 struct SemiImplicitEulerImplicitGyroscopic {
   template <class Model>
-  RIGIDDYN_ALWAYS_INLINE static void step(const Model& model, typename Model::Coordinates& y, double h) {
+  using Workspace = NoWorkspace;
+
+  template <class Model>
+  RIGIDDYN_ALWAYS_INLINE static void step(const Model& model, typename Model::Coordinates& y, double h, NoWorkspace&) {
     model.kick_implicit_gyroscopic(y, h);
     model.drift(y, h);
   }

@@ -27,6 +27,7 @@
 #pragma once
 #include "rigiddyn/integrators/free_flow_tags.hpp"
 #include "rigiddyn/integrators/splitting_parts.hpp"
+#include "rigiddyn/integrators/workspace.hpp"
 #include "rigiddyn/so3/exp_log.hpp"
 
 #include <cmath>
@@ -93,7 +94,10 @@ void dlm_free_rotation(const Euler& euler, double* q_WB_xyzw, double* w_B, doubl
 
 struct SplittingDlm {
   template <class Model>
-  static void step(const Model& model, typename Model::Coordinates& y, double h) {
+  using Workspace = NoWorkspace;
+
+  template <class Model>
+  static void step(const Model& model, typename Model::Coordinates& y, double h, NoWorkspace& /*w*/) {
     model.loads_kick(y, 0.5 * h);
     model.template free_flow<DlmRotation<true>>(y, h);
     model.loads_kick(y, 0.5 * h);

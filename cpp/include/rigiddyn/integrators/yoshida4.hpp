@@ -53,7 +53,10 @@ inline constexpr double gamma0 = -1.7024143839193152680953756;  // −2^{1/3}/(2
 
 struct Yoshida4 {
   template <class Model>
-  static void step(const Model& model, typename Model::Coordinates& y, double h) {
+  using Workspace = NoWorkspace;
+
+  template <class Model>
+  static void step(const Model& model, typename Model::Coordinates& y, double h, NoWorkspace& /*w*/) {
     using namespace yoshida4_coefficients;
     if constexpr (detail::has_mass_part<Model>::value) {
       if (model.has_mass_flow()) return step_with_masses(model, y, h);

@@ -2,21 +2,24 @@
 // method is written once and compiles, per model, to what a hand-written loop would be (no virtual
 // call). A model is one or more bodies plus the loads held constant during the current step. Its state
 // lives on (vector space) × SO(3)^k and is stored as flat coordinates y (an Eigen vector, fixed-size
-// for the one-body models, Eigen::VectorXd for a scene: an integrator sizes what it builds from y and
-// never default-constructs a vector to index it; unit quaternions stored (x, y, z, w) inside y); the
+// for the one-body models, Eigen::VectorXd for a scene: an integrator sizes its workspace from y once per
+// run, integrators/workspace.hpp, and never default-constructs a vector to index it; unit quaternions
+// stored (x, y, z, w) inside y). Every member writes into vectors its caller sized, so that no evaluation
+// allocates (out never overlaps y or Θ); the
 // last coordinate of the one-body models is the work [J] done by the applied loads (gravity included)
 // since the start, integrated alongside the motion (dW/dt = power), so the work-energy equation
 // T2 − T1 = U12 (Craig, "Rigid Body Dynamics" slides) can be checked on any run.
 //
 //   using Coordinates, Tangent;               e.g. Eigen::Matrix<double, nq, 1>, Eigen::Matrix<double, nv, 1>
-//   Coordinates rate(y)                       ẏ in coordinates (quaternion rate q̇ = ½ q ⊗ (ω_B, 0)),
+//   Eigen::Index tangent_count()              the size of ξ (a dynamic-size model only)
+//   void rate(y, dy)                          dy = ẏ in coordinates (quaternion rate q̇ = ½ q ⊗ (ω_B, 0)),
 //                                             for methods that add increments to y (Euler, RK4)
 //   void project(y)                           back onto the state space (normalise the quaternions)
-//   Tangent velocity(y)                       ξ: body-trivialised velocity (ω_B for each attitude)
-//   Coordinates retract(y, Θ)                 y ⊕ Θ: vector parts added, q ⊗ exp(Θ_rot) for attitudes
-//   Tangent velocity_at(y, Θ)                 ξ(y ⊕ Θ), free to skip the parts of y ⊕ Θ that ξ does
+//   void velocity(y, ξ)                       ξ: body-trivialised velocity (ω_B for each attitude)
+//   void retract(y, Θ, out)                   out = y ⊕ Θ: vector parts added, q ⊗ exp(Θ_rot) for attitudes
+//   void velocity_at(y, Θ, ξ)                 ξ = ξ(y ⊕ Θ), free to skip the parts of y ⊕ Θ that ξ does
 //                                             not read (RKMK4's stages)
-//   Tangent dexp_inv(Θ, ξ)                    dexp⁻¹ of the attitude parts (identity elsewhere),
+//   void dexp_inv(Θ, ξ)                       ξ ← dexp⁻¹ of its attitude parts (identity elsewhere),
 //                                             truncated after the second commutator (RKMK4)
 //   void kick(y, h), kick_implicit_gyroscopic(y, h)
 //                                             velocities += h × accelerations at y (semi-implicit

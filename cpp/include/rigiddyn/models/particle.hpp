@@ -44,18 +44,20 @@ class ParticleModel {
   // world- and "body"-frame forces add (no attitude); torques are ignored here (simulate rejects them)
   void set_loads(const ComLoads& loads) { f_W_ = loads.f_W + loads.f_B + mass_ * g_W_; }
 
-  RIGIDDYN_ALWAYS_INLINE Coordinates rate(const Coordinates& y) const {
+  RIGIDDYN_ALWAYS_INLINE void rate(const Coordinates& y, Coordinates& dy) const {
     // element by element (scalar stores; see rk4.hpp's axpy on store forwarding)
-    Coordinates dy;
     for (int i = 0; i < 3; ++i) dy[i] = y[3 + i], dy[3 + i] = inverse_mass_ * f_W_[i];
     dy[6] = f_W_[0] * y[3] + f_W_[1] * y[4] + f_W_[2] * y[5];
-    return dy;
   }
   static void project(Coordinates& /*y*/) {}
-  RIGIDDYN_ALWAYS_INLINE Tangent velocity(const Coordinates& y) const { return rate(y); }
-  static Coordinates retract(const Coordinates& y, const Tangent& theta) { return y + theta; }
-  RIGIDDYN_ALWAYS_INLINE Tangent velocity_at(const Coordinates& y, const Tangent& theta) const { return velocity(retract(y, theta)); }
-  static Tangent dexp_inv(const Tangent& /*theta*/, const Tangent& xi) { return xi; }
+  RIGIDDYN_ALWAYS_INLINE void velocity(const Coordinates& y, Tangent& xi) const { rate(y, xi); }
+  static void retract(const Coordinates& y, const Tangent& theta, Coordinates& out) { out = y + theta; }
+  RIGIDDYN_ALWAYS_INLINE void velocity_at(const Coordinates& y, const Tangent& theta, Tangent& xi) const {
+    Coordinates stage;
+    retract(y, theta, stage);
+    velocity(stage, xi);
+  }
+  static void dexp_inv(const Tangent& /*theta*/, Tangent& /*xi*/) {}
   RIGIDDYN_ALWAYS_INLINE void kick(Coordinates& y, double h) const { y.segment<3>(3) += (h * inverse_mass_) * f_W_; }
   void kick_implicit_gyroscopic(Coordinates& y, double h) const { kick(y, h); }
   RIGIDDYN_ALWAYS_INLINE void drift(Coordinates& y, double h) const {

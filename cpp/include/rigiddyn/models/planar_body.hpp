@@ -61,17 +61,19 @@ class PlanarBodyModel {
     turning_force_ = !f_B_.isZero(0.0);
   }
 
-  RIGIDDYN_ALWAYS_INLINE Coordinates rate(const Coordinates& y) const {
+  RIGIDDYN_ALWAYS_INLINE void rate(const Coordinates& y, Coordinates& dy) const {
     const Eigen::Vector2d f = force_W(y(2));
-    Coordinates dy;
     dy << y.segment<3>(3), f / mass_, tau_ / inertia_zz_, f.dot(y.segment<2>(3)) + tau_ * y(5);
-    return dy;
   }
   static void project(Coordinates& /*y*/) {}
-  RIGIDDYN_ALWAYS_INLINE Tangent velocity(const Coordinates& y) const { return rate(y); }
-  static Coordinates retract(const Coordinates& y, const Tangent& theta) { return y + theta; }
-  RIGIDDYN_ALWAYS_INLINE Tangent velocity_at(const Coordinates& y, const Tangent& theta) const { return velocity(retract(y, theta)); }
-  static Tangent dexp_inv(const Tangent& /*theta*/, const Tangent& xi) { return xi; }
+  RIGIDDYN_ALWAYS_INLINE void velocity(const Coordinates& y, Tangent& xi) const { rate(y, xi); }
+  static void retract(const Coordinates& y, const Tangent& theta, Coordinates& out) { out = y + theta; }
+  RIGIDDYN_ALWAYS_INLINE void velocity_at(const Coordinates& y, const Tangent& theta, Tangent& xi) const {
+    Coordinates stage;
+    retract(y, theta, stage);
+    velocity(stage, xi);
+  }
+  static void dexp_inv(const Tangent& /*theta*/, Tangent& /*xi*/) {}
   RIGIDDYN_ALWAYS_INLINE void kick(Coordinates& y, double h) const {
     y.segment<2>(3) += (h / mass_) * force_W(y(2));
     y(5) += h * tau_ / inertia_zz_;

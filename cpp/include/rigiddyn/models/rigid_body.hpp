@@ -14,6 +14,7 @@
 #include "rigiddyn/models/euler_equations.hpp"
 #include "rigiddyn/models/loads.hpp"
 #include "rigiddyn/models/model_interface.hpp"
+#include "rigiddyn/so3/dexp_inv.hpp"
 #include "rigiddyn/so3/exp_log.hpp"
 #include "rigiddyn/so3/quaternion_kernels.hpp"
 
@@ -173,16 +174,14 @@ class RigidBodyModel {
   // The members below read and write y element by element (three_at, scalar stores): Eigen's packet
   // copies of segments would reload, as one 2-wide load, values just stored one by one by the
   // previous stage (a store-forwarding stall on the critical path; see euler_equations.hpp).
-  RIGIDDYN_ALWAYS_INLINE Coordinates rate(const Coordinates& y) const {
+  RIGIDDYN_ALWAYS_INLINE void rate(const Coordinates& y, Coordinates& dy) const {
     const Eigen::Vector3d v = three_at(y, 7), w = three_at(y, 10);
     Eigen::Vector3d f_W, tau_B;
     wrench(y, f_W, tau_B);
     const Eigen::Vector3d alpha_B = euler_.angular_acceleration(w, tau_B);
-    Coordinates dy;
     for (int i = 0; i < 3; ++i) dy[i] = v[i], dy[7 + i] = inverse_mass_ * f_W[i], dy[10 + i] = alpha_B[i];
     quat_rate_body(y.data() + 3, w, dy.data() + 3);  // q̇ = ½ q ⊗ (ω_B, 0)
     dy(13) = power(f_W, tau_B, v, w);
-    return dy;
   }
 
   // q ← q / |q| (written out: Eigen's normalize() is not always inlined)
@@ -191,43 +190,37 @@ class RigidBodyModel {
     for (int i = 3; i < 7; ++i) y[i] *= inverse_norm;
   }
 
-  RIGIDDYN_ALWAYS_INLINE Tangent velocity(const Coordinates& y) const {
+  RIGIDDYN_ALWAYS_INLINE void velocity(const Coordinates& y, Tangent& xi) const {
     const Eigen::Vector3d v = three_at(y, 7), w = three_at(y, 10);
     Eigen::Vector3d f_W, tau_B;
     wrench(y, f_W, tau_B);
     const Eigen::Vector3d alpha_B = euler_.angular_acceleration(w, tau_B);
-    Tangent xi;
     for (int i = 0; i < 3; ++i) xi[i] = v[i], xi[3 + i] = w[i], xi[6 + i] = inverse_mass_ * f_W[i], xi[9 + i] = alpha_B[i];
     xi[12] = power(f_W, tau_B, v, w);
-    return xi;
   }
 
   // y ⊕ Θ: vector parts added, q ← q ⊗ exp(Θ_rot)
-  RIGIDDYN_ALWAYS_INLINE static Coordinates retract(const Coordinates& y, const Tangent& theta) {
-    Coordinates out = translated(y, theta);
+  RIGIDDYN_ALWAYS_INLINE static void retract(const Coordinates& y, const Tangent& theta, Coordinates& out) {
+    out = translated(y, theta);
     times_exp(y.data() + 3, three_at(theta, 3), out.data() + 3);
-    return out;
   }
 
   // ξ(y ⊕ Θ). Without body-fixed forces or world-fixed torques ξ does not read the attitude, so
   // the exponential of the stage attitude is skipped (a torque-free body, gravity, world forces).
-  RIGIDDYN_ALWAYS_INLINE Tangent velocity_at(const Coordinates& y, const Tangent& theta) const {
+  RIGIDDYN_ALWAYS_INLINE void velocity_at(const Coordinates& y, const Tangent& theta, Tangent& xi) const {
+    Coordinates stage;
     if constexpr (kind == LoadKind::turning) {
-      if (turning_loads_) return velocity(retract(y, theta));
+      if (turning_loads_) {
+        retract(y, theta, stage);
+        return velocity(stage, xi);
+      }
     }
-    return velocity(translated(y, theta));
+    stage = translated(y, theta);
+    velocity(stage, xi);
   }
 
-  // Body-frame RKMK: R = R0 exp(Θ̂) gives Θ̇ = dexp⁻¹_{−Θ} ω = ω + ½ Θ × ω + (1/12) Θ × (Θ × ω) + O(|Θ|⁴)
-  // (Iserles, Munthe-Kaas, Nørsett, Zanna, Acta Numerica 2000, §3; two commutators suffice for order 4).
-  RIGIDDYN_ALWAYS_INLINE static Tangent dexp_inv(const Tangent& theta, const Tangent& xi) {
-    const Eigen::Vector3d th = three_at(theta, 3), w = three_at(xi, 3);
-    const Eigen::Vector3d th_x_w = cross_3(th, w), th_x_th_x_w = cross_3(th, th_x_w);
-    Tangent out;
-    for (int i = 0; i < 13; ++i) out[i] = xi[i];
-    for (int i = 0; i < 3; ++i) out[3 + i] = w[i] + 0.5 * th_x_w[i] + (1.0 / 12.0) * th_x_th_x_w[i];
-    return out;
-  }
+  // ω ← dexp⁻¹_{−Θ} ω for the attitude part (so3/dexp_inv.hpp), identity elsewhere
+  RIGIDDYN_ALWAYS_INLINE static void dexp_inv(const Tangent& theta, Tangent& xi) { dexp_inv_body(theta.data() + 3, xi.data() + 3); }
 
   RIGIDDYN_ALWAYS_INLINE void kick(Coordinates& y, double h) const {
     Eigen::Vector3d f_W, tau_B;
@@ -266,7 +259,8 @@ class RigidBodyModel {
     } else {
       Coordinates still = y;
       still.template segment<3>(10).setZero();
-      const Tangent xi = velocity(still);
+      Tangent xi;
+      velocity(still, xi);
       const Eigen::Vector3d dv = h * xi.template segment<3>(6), dw = h * xi.template segment<3>(9);
       const Eigen::Vector3d v_mean = y.template segment<3>(7) + 0.5 * dv, w_mean = y.template segment<3>(10) + 0.5 * dw;
       y(13) += mass_ * dv.dot(v_mean) + euler_.momentum(dw).dot(w_mean);
@@ -302,7 +296,8 @@ class RigidBodyModel {
       mid.template segment<4>(3) = 0.5 * (q0.coeffs() + q1.coeffs());
       mid.template segment<3>(7) = v_bar;
       mid.template segment<3>(10) = w_bar;
-      const Tangent xi = velocity(mid);
+      Tangent xi;
+      velocity(mid, xi);
       power = xi(12);
       const Eigen::Vector3d r_w = w_bar - w0 - 0.5 * h * xi.template segment<3>(9);
       const Eigen::Vector3d r_v = v_bar - v0 - 0.5 * h * xi.template segment<3>(6);

@@ -44,6 +44,7 @@
 #include "rigiddyn/scene/mass_flow.hpp"
 #include "rigiddyn/scene/scene.hpp"
 #include "rigiddyn/scene/scene_simulation.hpp"
+#include "rigiddyn/so3/dexp_inv.hpp"
 #include "rigiddyn/so3/exp_log.hpp"
 #include "rigiddyn/so3/quaternion_kernels.hpp"
 
@@ -305,6 +306,7 @@ class BasicSceneModel {
     reaction_W_.assign(bodies.size(), Eigen::Vector3d::Zero());
     momentum_O_W_.assign(bodies.size(), Eigen::Vector3d::Zero());
     find_coriolis_terms(bodies);
+    stage_.resize(coordinate_count());
   }
 
   Eigen::Index coordinate_count() const { return t_y_ + 1 + extra_count(); }
@@ -333,9 +335,8 @@ class BasicSceneModel {
 
   // ẏ: (v, a) per body, q̇ = ½ q ⊗ (ω_B, 0) for attitudes, dt/dt = 1, dW_e/dt = P_e, dE_b/dt = the mass-flow
   // power of body b.
-  Coordinates rate(const Coordinates& y) const {
+  void rate(const Coordinates& y, Coordinates& dy) const {
     evaluate(y);
-    Coordinates dy(y.size());
     for (const auto& s : particles_) {
       const Eigen::Vector3d a = detail::particle_newton_euler(s, wrenches_[s.body]);
       for (int i = 0; i < 3; ++i) dy[s.y + i] = y[s.y + 3 + i], dy[s.y + 3 + i] = a[i];
@@ -375,7 +376,6 @@ class BasicSceneModel {
     });
     dy[t_y_] = 1.0;
     for (std::size_t e = 0; e < terms_.size(); ++e) dy[t_y_ + 1 + e] = power_[e];
-    return dy;
   }
 
   // every attitude q ← q / |q|
@@ -387,9 +387,8 @@ class BasicSceneModel {
   }
 
   // ξ = (velocities, accelerations per body; 1; element powers; mass-flow powers)
-  Tangent velocity(const Coordinates& y) const {
+  void velocity(const Coordinates& y, Tangent& xi) const {
     evaluate(y);
-    Tangent xi(tangent_count());
     for (const auto& s : particles_) {
       const Eigen::Vector3d a = detail::particle_newton_euler(s, wrenches_[s.body]);
       for (int i = 0; i < 3; ++i) xi[s.xi + i] = y[s.y + 3 + i], xi[s.xi + 3 + i] = a[i];
@@ -430,12 +429,10 @@ class BasicSceneModel {
     });
     xi[t_xi_] = 1.0;
     for (std::size_t e = 0; e < terms_.size(); ++e) xi[t_xi_ + 1 + e] = power_[e];
-    return xi;
   }
 
   // y ⊕ Θ: vector parts added, q ← q ⊗ exp(Θ_rot) for each rigid body
-  Coordinates retract(const Coordinates& y, const Tangent& theta) const {
-    Coordinates out(y.size());
+  void retract(const Coordinates& y, const Tangent& theta, Coordinates& out) const {
     for (const auto& s : particles_) for (int i = 0; i < 6; ++i) out[s.y + i] = y[s.y + i] + theta[s.xi + i];
     for (const auto& s : planars_) for (int i = 0; i < 6; ++i) out[s.y + i] = y[s.y + i] + theta[s.xi + i];
     for_each_rigid([&](const auto& s) {
@@ -455,24 +452,20 @@ class BasicSceneModel {
       for (int i = 0; i < 7; ++i) out[s.y + 7 + i] = y[s.y + 7 + i] + theta[s.xi + 6 + i];  // v, ω, m
     });
     for (Eigen::Index i = 0; i <= extra_count(); ++i) out[t_y_ + i] = y[t_y_ + i] + theta[t_xi_ + i];
-    return out;
   }
 
   // ξ(y ⊕ Θ) (elements may read any attitude: the stage attitude is always built)
-  Tangent velocity_at(const Coordinates& y, const Tangent& theta) const { return velocity(retract(y, theta)); }
+  void velocity_at(const Coordinates& y, const Tangent& theta, Tangent& xi) const {
+    retract(y, theta, stage_);
+    velocity(stage_, xi);
+  }
 
-  // dexp⁻¹ of each rigid body's attitude part, truncated after the second commutator (RigidBodyModel)
-  Tangent dexp_inv(const Tangent& theta, const Tangent& xi) const {
-    Tangent out = xi;
-    const auto attitude = [&](Eigen::Index at) {
-      const Eigen::Vector3d th = detail::three_at(theta, at), w = detail::three_at(xi, at);
-      const Eigen::Vector3d th_x_w = cross_3(th, w), th_x_th_x_w = cross_3(th, th_x_w);
-      for (int i = 0; i < 3; ++i) out[at + i] = w[i] + 0.5 * th_x_w[i] + (1.0 / 12.0) * th_x_th_x_w[i];
-    };
+  // ω ← dexp⁻¹_{−Θ} ω for each attitude part (so3/dexp_inv.hpp), identity elsewhere
+  void dexp_inv(const Tangent& theta, Tangent& xi) const {
+    const auto attitude = [&](Eigen::Index at) { dexp_inv_body(theta.data() + at, xi.data() + at); };
     for_each_rigid([&](const auto& s) { attitude(s.xi + 3); });
     for_each_pivoted([&](const auto& s) { attitude(s.xi); });
     for_each_mass_rigid([&](const auto& s) { attitude(s.xi + 3); });
-    return out;
   }
 
   // velocities += h × accelerations at y (the explicit gyroscopic term); positions, work, t unchanged
@@ -1211,6 +1204,7 @@ class BasicSceneModel {
   mutable std::vector<double> power_;
   mutable std::vector<std::vector<BodyWrench>> element_wrenches_;  // per element (loads_kick's exact work)
   mutable std::vector<Eigen::Vector3d> reaction_W_, momentum_O_W_;  // per body, for the recorder only
+  mutable Coordinates stage_;  // y ⊕ Θ of velocity_at
   // the Coriolis terms (loads_kick's exact kick; empty without a turning frame) and the bodies' inertias for it
   struct CoriolisFrame {
     std::size_t element;

@@ -24,6 +24,7 @@
 #include "rigiddyn/models/pivoted_body.hpp"
 #include "rigiddyn/scene/body.hpp"
 #include "rigiddyn/scene/scene_simulation.hpp"
+#include "rigiddyn/so3/dexp_inv.hpp"
 #include "rigiddyn/so3/quaternion_kernels.hpp"
 
 #include <Eigen/Core>
@@ -109,19 +110,17 @@ class PivotedBodyModel {
   }
 
   // ẏ = (½ q ⊗ (ω, 0), α_B, 1, τ_gravity·ω, τ_loads·ω)
-  RIGIDDYN_ALWAYS_INLINE Coordinates rate(const Coordinates& y) const {
+  RIGIDDYN_ALWAYS_INLINE void rate(const Coordinates& y, Coordinates& dy) const {
     const Eigen::Vector3d w = three_at(y, 4);
     Eigen::Vector3d tau_O;
     double P_gravity, P_loads;
     torque_and_powers(y, w, tau_O, P_gravity, P_loads);
     const Eigen::Vector3d alpha = euler_.angular_acceleration(w, tau_O);
-    Coordinates dy;
     quat_rate_body(y.data(), w, dy.data());
     for (int i = 0; i < 3; ++i) dy[4 + i] = alpha[i];
     dy[7] = 1.0;
     dy[8] = P_gravity;
     dy[9] = P_loads;
-    return dy;
   }
 
   // q ← q / |q|
@@ -131,41 +130,37 @@ class PivotedBodyModel {
   }
 
   // ξ = (ω, α, 1, powers)
-  RIGIDDYN_ALWAYS_INLINE Tangent velocity(const Coordinates& y) const {
+  RIGIDDYN_ALWAYS_INLINE void velocity(const Coordinates& y, Tangent& xi) const {
     const Eigen::Vector3d w = three_at(y, 4);
     Eigen::Vector3d tau_O;
     double P_gravity, P_loads;
     torque_and_powers(y, w, tau_O, P_gravity, P_loads);
     const Eigen::Vector3d alpha = euler_.angular_acceleration(w, tau_O);
-    Tangent xi;
     for (int i = 0; i < 3; ++i) xi[i] = w[i], xi[3 + i] = alpha[i];
     xi[6] = 1.0;
     xi[7] = P_gravity;
     xi[8] = P_loads;
-    return xi;
   }
 
   // y ⊕ Θ: q ← q ⊗ exp(Θ_rot), the rest added
-  RIGIDDYN_ALWAYS_INLINE static Coordinates retract(const Coordinates& y, const Tangent& theta) {
-    Coordinates out = translated(y, theta);
+  RIGIDDYN_ALWAYS_INLINE static void retract(const Coordinates& y, const Tangent& theta, Coordinates& out) {
+    out = translated(y, theta);
     times_exp(y.data(), three_at(theta, 0), out.data());
-    return out;
   }
 
   // ξ(y ⊕ Θ); a torque-free body's ξ does not read the attitude, so its exponential is skipped
-  RIGIDDYN_ALWAYS_INLINE Tangent velocity_at(const Coordinates& y, const Tangent& theta) const {
-    if (!(has_gravity_ || has_loads_)) return velocity(translated(y, theta));
-    return velocity(retract(y, theta));
+  RIGIDDYN_ALWAYS_INLINE void velocity_at(const Coordinates& y, const Tangent& theta, Tangent& xi) const {
+    Coordinates stage;
+    if (has_gravity_ || has_loads_) {
+      retract(y, theta, stage);
+    } else {
+      stage = translated(y, theta);
+    }
+    velocity(stage, xi);
   }
 
-  // dexp⁻¹ of the attitude part, truncated after the second commutator (as RigidBodyModel::dexp_inv)
-  RIGIDDYN_ALWAYS_INLINE static Tangent dexp_inv(const Tangent& theta, const Tangent& xi) {
-    const Eigen::Vector3d th = three_at(theta, 0), w = three_at(xi, 0);
-    const Eigen::Vector3d th_x_w = cross_3(th, w), th_x_th_x_w = cross_3(th, th_x_w);
-    Tangent out = xi;
-    for (int i = 0; i < 3; ++i) out[i] = w[i] + 0.5 * th_x_w[i] + (1.0 / 12.0) * th_x_th_x_w[i];
-    return out;
-  }
+  // ω ← dexp⁻¹_{−Θ} ω for the attitude part (so3/dexp_inv.hpp), identity elsewhere
+  RIGIDDYN_ALWAYS_INLINE static void dexp_inv(const Tangent& theta, Tangent& xi) { dexp_inv_body(theta.data(), xi.data()); }
 
   // ω += h α at y (explicit gyroscopic term); attitude, t and work unchanged
   RIGIDDYN_ALWAYS_INLINE void kick(Coordinates& y, double h) const {

@@ -112,27 +112,28 @@ class RotatingFrameParticleModel {
   static void set_time(double /*t*/) {}
 
   // ẏ = (v, g + a_cf + a_co, 1, m g·v, m a_cf·v, m a_co·v)
-  RIGIDDYN_ALWAYS_INLINE Coordinates rate(const Coordinates& y) const {
+  RIGIDDYN_ALWAYS_INLINE void rate(const Coordinates& y, Coordinates& dy) const {
     Eigen::Vector3d a_cf, a_co;
     fictitious_accelerations(y, a_cf, a_co);
-    Coordinates dy;  // element by element (scalar stores; see rk4.hpp's axpy on store forwarding)
+    // element by element (scalar stores; see rk4.hpp's axpy on store forwarding)
     for (int i = 0; i < 3; ++i) dy[i] = y[3 + i], dy[3 + i] = g_[i] + a_cf[i] + a_co[i];
     dy[6] = 1.0;
     dy[7] = mass_ * (g_[0] * y[3] + g_[1] * y[4] + g_[2] * y[5]);
     dy[8] = mass_ * (a_cf[0] * y[3] + a_cf[1] * y[4] + a_cf[2] * y[5]);
     dy[9] = mass_ * (a_co[0] * y[3] + a_co[1] * y[4] + a_co[2] * y[5]);
-    return dy;
   }
 
   static void project(Coordinates& /*y*/) {}
-  RIGIDDYN_ALWAYS_INLINE Tangent velocity(const Coordinates& y) const { return rate(y); }
-  static Coordinates retract(const Coordinates& y, const Tangent& theta) {
-    Coordinates out;
+  RIGIDDYN_ALWAYS_INLINE void velocity(const Coordinates& y, Tangent& xi) const { rate(y, xi); }
+  static void retract(const Coordinates& y, const Tangent& theta, Coordinates& out) {
     for (int i = 0; i < 10; ++i) out[i] = y[i] + theta[i];
-    return out;
   }
-  RIGIDDYN_ALWAYS_INLINE Tangent velocity_at(const Coordinates& y, const Tangent& theta) const { return velocity(retract(y, theta)); }
-  static Tangent dexp_inv(const Tangent& /*theta*/, const Tangent& xi) { return xi; }
+  RIGIDDYN_ALWAYS_INLINE void velocity_at(const Coordinates& y, const Tangent& theta, Tangent& xi) const {
+    Coordinates stage;
+    retract(y, theta, stage);
+    velocity(stage, xi);
+  }
+  static void dexp_inv(const Tangent& /*theta*/, Tangent& /*xi*/) {}
 
   // v += h a(p, v) (Coriolis explicit); p, t and the works unchanged
   RIGIDDYN_ALWAYS_INLINE void kick(Coordinates& y, double h) const {
@@ -145,7 +146,8 @@ class RotatingFrameParticleModel {
 
   // works += h × powers at y, then p += h v, t += h
   RIGIDDYN_ALWAYS_INLINE void drift(Coordinates& y, double h) const {
-    const Coordinates dy = rate(y);
+    Coordinates dy;
+    rate(y, dy);
     for (int i = 7; i < 10; ++i) y[i] += h * dy[i];
     for (int i = 0; i < 3; ++i) y[i] += h * y[3 + i];
     y[6] += h;
@@ -191,7 +193,8 @@ class RotatingFrameParticleModel {
   // mass, each element's work and power.
   void record(const Coordinates& y, double t, SceneSimulation& out) const {
     const Eigen::Vector3d p(y[0], y[1], y[2]), v(y[3], y[4], y[5]);
-    const Coordinates dy = rate(y);
+    Coordinates dy;
+    rate(y, dy);
     out.t.push_back(t);
     out.p_W.insert(out.p_W.end(), p.data(), p.data() + 3);
     const double identity[4] = {0.0, 0.0, 0.0, 1.0}, zero[3] = {0.0, 0.0, 0.0};

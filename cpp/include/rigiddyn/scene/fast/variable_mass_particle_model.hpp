@@ -116,17 +116,15 @@ class VariableMassParticleModel {
   void set_time(double t) { step_start_ = t; }
 
   // ẏ = (v, g + ṁ u_rel/m, ṁ, 1, m g·v, ṁ u_rel·v, ½ ṁ |v|²)
-  RIGIDDYN_ALWAYS_INLINE Coordinates rate(const Coordinates& y) const {
+  RIGIDDYN_ALWAYS_INLINE void rate(const Coordinates& y, Coordinates& dy) const {
     const double m = y[6];
     const double inverse_mass = 1.0 / m;
-    Coordinates dy;
     for (int i = 0; i < 3; ++i) dy[i] = y[3 + i], dy[3 + i] = g_W_[i] + inverse_mass * thrust_W_[i];
     dy[6] = rate_;
     dy[7] = 1.0;
     dy[8] = m * (g_W_[0] * y[3] + g_W_[1] * y[4] + g_W_[2] * y[5]);
     dy[9] = thrust_W_[0] * y[3] + thrust_W_[1] * y[4] + thrust_W_[2] * y[5];
     dy[10] = 0.5 * rate_ * (y[3] * y[3] + y[4] * y[4] + y[5] * y[5]);
-    return dy;
   }
 
   // No attitude: checks the mass at the end of the step (out_of_mass_error at t of y, in the step from the
@@ -137,19 +135,21 @@ class VariableMassParticleModel {
   }
 
   // ξ = ẏ (a vector space)
-  RIGIDDYN_ALWAYS_INLINE Tangent velocity(const Coordinates& y) const { return rate(y); }
+  RIGIDDYN_ALWAYS_INLINE void velocity(const Coordinates& y, Tangent& xi) const { rate(y, xi); }
 
   // y + Θ
-  RIGIDDYN_ALWAYS_INLINE static Coordinates retract(const Coordinates& y, const Tangent& theta) {
-    Coordinates out;
+  RIGIDDYN_ALWAYS_INLINE static void retract(const Coordinates& y, const Tangent& theta, Coordinates& out) {
     for (int i = 0; i < 11; ++i) out[i] = y[i] + theta[i];
-    return out;
   }
 
-  RIGIDDYN_ALWAYS_INLINE Tangent velocity_at(const Coordinates& y, const Tangent& theta) const { return velocity(retract(y, theta)); }
+  RIGIDDYN_ALWAYS_INLINE void velocity_at(const Coordinates& y, const Tangent& theta, Tangent& xi) const {
+    Coordinates stage;
+    retract(y, theta, stage);
+    velocity(stage, xi);
+  }
 
   // identity (no attitude)
-  RIGIDDYN_ALWAYS_INLINE static Tangent dexp_inv(const Tangent& /*theta*/, const Tangent& xi) { return xi; }
+  RIGIDDYN_ALWAYS_INLINE static void dexp_inv(const Tangent& /*theta*/, Tangent& /*xi*/) {}
 
   // v += h (g + ṁ u_rel / m), m the mass at the kick's time; p, m, t and the works unchanged
   RIGIDDYN_ALWAYS_INLINE void kick(Coordinates& y, double h) const {

@@ -1,0 +1,238 @@
+// No step allocates: every method on every model sizes its workspace once per run
+// (integrators/workspace.hpp) and every evaluation writes into scratch sized when the model was built.
+//
+// The test binary counts every heap allocation of the process: it defines malloc, calloc, realloc and the
+// aligned allocators itself (an executable's definitions take precedence over the C library's for every
+// shared library, libstdc++'s operator new and Eigen's aligned_malloc included) and forwards them to
+// glibc's __libc_* entry points. A run of 1000 steps must then allocate exactly as often as a run of 10
+// steps with the same records (the first and the last) and the same switch times: one allocation per step
+// would differ by 990; and no member of a scene model's interface may allocate at all.
+// Where the counting cannot be installed (not glibc, or under AddressSanitizer, which owns malloc) the
+// tests are skipped, saying why.
+#include <gtest/gtest.h>
+
+#include "rigiddyn/integrators/method.hpp"
+#include "rigiddyn/scene/compile.hpp"
+#include "rigiddyn/scene/simulate_scene.hpp"
+#include "rigiddyn/simulate/simulate.hpp"
+
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#if defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__)
+#define RIGIDDYN_COUNTS_ALLOCATIONS 1
+#include <cerrno>
+
+namespace {
+std::atomic<std::int64_t> allocation_count{0};
+}  // namespace
+
+extern "C" {
+void* __libc_malloc(std::size_t size);
+void* __libc_calloc(std::size_t count, std::size_t size);
+void* __libc_realloc(void* pointer, std::size_t size);
+void* __libc_memalign(std::size_t alignment, std::size_t size);
+
+void* malloc(std::size_t size) {
+  allocation_count.fetch_add(1, std::memory_order_relaxed);
+  return __libc_malloc(size);
+}
+void* calloc(std::size_t count, std::size_t size) {
+  allocation_count.fetch_add(1, std::memory_order_relaxed);
+  return __libc_calloc(count, size);
+}
+void* realloc(void* pointer, std::size_t size) {
+  allocation_count.fetch_add(1, std::memory_order_relaxed);
+  return __libc_realloc(pointer, size);
+}
+void* aligned_alloc(std::size_t alignment, std::size_t size) {
+  allocation_count.fetch_add(1, std::memory_order_relaxed);
+  return __libc_memalign(alignment, size);
+}
+void* memalign(std::size_t alignment, std::size_t size) {
+  allocation_count.fetch_add(1, std::memory_order_relaxed);
+  return __libc_memalign(alignment, size);
+}
+int posix_memalign(void** out, std::size_t alignment, std::size_t size) {
+  allocation_count.fetch_add(1, std::memory_order_relaxed);
+  void* pointer = __libc_memalign(alignment, size);
+  if (pointer == nullptr) return ENOMEM;
+  *out = pointer;
+  return 0;
+}
+}
+#endif
+
+namespace rigiddyn {
+namespace {
+
+// The heap allocations made while f runs.
+template <class F>
+std::int64_t allocations_during(F&& f) {
+#ifdef RIGIDDYN_COUNTS_ALLOCATIONS
+  const std::int64_t before = allocation_count.load();
+  f();
+  return allocation_count.load() - before;
+#else
+  f();
+  return 0;
+#endif
+}
+
+void skip_without_counting() {
+#ifndef RIGIDDYN_COUNTS_ALLOCATIONS
+  GTEST_SKIP() << "allocations are counted only with glibc and without AddressSanitizer";
+#endif
+}
+
+RigidBodyState tumbling(const Eigen::Vector3d& p_W) {
+  RigidBodyState s;
+  s.p_W = p_W;
+  s.q_WB = Eigen::Quaterniond(Eigen::AngleAxisd(0.4, Eigen::Vector3d(1.0, -1.0, 2.0).normalized()));
+  s.v_W = Eigen::Vector3d(0.2, 0.0, -0.1);
+  s.w_B = Eigen::Vector3d(0.3, 1.0, 0.2);
+  return s;
+}
+
+struct SceneCase {
+  std::string name;
+  Scene scene;
+  std::vector<BodyState> initial;
+  bool torque_free = false;  // the only scenes the method 'exact' takes
+};
+
+// Every body kind (the rigid bodies in each Euler form) under every element that acts on it, a schedule
+// whose switches fall inside the shortest run, and springs between bodies.
+SceneCase every_body_kind() {
+  SceneCase c{"every body kind", {}, {}};
+  Scene& s = c.scene;
+  Eigen::Matrix3d full;
+  full << 2.0, 0.1, 0.0, 0.1, 3.0, 0.2, 0.0, 0.2, 4.0;
+  s.bodies = {Particle(1.0),
+              PlanarBody(2.0, 0.3),
+              RigidBody(1.5, Eigen::Vector3d(1.0, 1.0, 1.0)),
+              RigidBody(1.5, Eigen::Vector3d(1.0, 2.0, 3.0)),
+              RigidBody(1.5, full),
+              PivotedBody(RigidBody(2.0, Eigen::Vector3d(1.0, 1.0, 0.5)), Eigen::Vector3d(0.0, 0.0, 0.5)),
+              PivotedPlanarBody(2.0, 0.05, Eigen::Vector2d(0.0, -0.4))};
+  c.initial = {ParticleState{Eigen::Vector3d(1.0, 0.0, 0.0), Eigen::Vector3d(0.0, 1.0, 0.0)},
+               PlanarBodyState{Eigen::Vector2d(0.0, 2.0), 0.1, Eigen::Vector2d(0.3, 0.0), 0.5},
+               tumbling(Eigen::Vector3d(3.0, 0.0, 0.0)),
+               tumbling(Eigen::Vector3d(0.0, 3.0, 0.0)),
+               tumbling(Eigen::Vector3d(0.0, 0.0, 3.0)),
+               PivotedBodyState{Eigen::Quaterniond(Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitX())), Eigen::Vector3d(0.0, 0.0, 5.0)},
+               PivotedPlanarBodyState{0.4, 0.0}};
+  s.elements.push_back(UniformGravity{Eigen::Vector3d(0.0, 0.0, -9.81), {}});
+  s.elements.push_back(Drag{0.1, 0.01, 0.02, 0.001, {}});
+  s.elements.push_back(SpringDamper{0, Eigen::Vector3d::Zero(), 3, Eigen::Vector3d(0.1, 0.0, 0.0), 5.0, 1.0, 0.2});
+  s.elements.push_back(SpringDamper{4, Eigen::Vector3d(0.0, 0.1, 0.0), -1, Eigen::Vector3d(0.0, 0.0, 4.0), 2.0, 0.5, 0.1});
+  s.elements.push_back(MutualGravity{1e-2, 0.1, {0, 2, 3, 4}});
+  s.elements.push_back(PointMassGravity{5.0, Eigen::Vector3d(0.0, 0.0, -10.0), 0.0, {0, 2, 3, 4}});
+  s.elements.push_back(GravityGradient{5.0, Eigen::Vector3d(0.0, 0.0, -10.0), {2, 3, 4}});
+  AppliedLoad window{Eigen::Vector3d(0.1, -0.3, 0.2), Eigen::Vector3d(0.3, -0.2, 0.4), Frame::body};
+  window.t_start = 0.0025, window.t_end = 0.0065;  // switches inside the first 10 steps of 1 ms
+  s.elements.push_back(ScheduledLoads{3, {window}, Eigen::Vector3d(0.1, 0.0, 0.0)});
+  return c;
+}
+
+// Particles and rigid bodies in a turning frame (the fictitious terms and the exact Coriolis kick).
+SceneCase turning_frame() {
+  SceneCase c{"turning frame", {}, {}};
+  c.scene.bodies = {Particle(1.0), RigidBody(1.5, Eigen::Vector3d(1.0, 2.0, 3.0))};
+  c.initial = {ParticleState{Eigen::Vector3d(1.0, 0.0, 0.0), Eigen::Vector3d(0.0, 1.0, 0.0)}, tumbling(Eigen::Vector3d::Zero())};
+  c.scene.frame = SceneFrame::rotating(Eigen::Vector3d(0.0, 0.3, 1.0).normalized(), 0.5);
+  c.scene.elements.push_back(UniformGravity{Eigen::Vector3d(0.0, 0.0, -9.81), {}});
+  return c;
+}
+
+// A particle and a rigid body losing mass, one of them under thrust.
+SceneCase mass_flow() {
+  SceneCase c{"mass flow", {}, {}};
+  add_body(c.scene, Particle(10.0), "rocket", MassFlow{-0.5, {}, InertiaRule::scaled, {}});
+  add_body(c.scene, RigidBody(10.0, Eigen::Vector3d(1.0, 2.0, 3.0)), "stage", MassFlow{-0.2, {}, InertiaRule::scaled, {}});
+  c.initial = {ParticleState{Eigen::Vector3d::Zero(), Eigen::Vector3d(0.0, 0.0, 1.0)}, tumbling(Eigen::Vector3d::Zero())};
+  c.scene.elements.push_back(UniformGravity{Eigen::Vector3d(0.0, 0.0, -9.81), {}});
+  c.scene.elements.push_back(Thrust{0, Eigen::Vector3d(0.0, 0.0, -100.0), Frame::world, Eigen::Vector3d::Zero()});
+  return c;
+}
+
+// One torque-free body (every method, 'exact' included).
+SceneCase torque_free() {
+  SceneCase c{"torque free", {}, {}, true};
+  c.scene.bodies = {RigidBody(1.5, Eigen::Vector3d(1.0, 2.0, 3.0))};
+  c.initial = {tumbling(Eigen::Vector3d::Zero())};
+  return c;
+}
+
+SimulationOptions options(Method method, std::int64_t steps) {
+  SimulationOptions o;
+  o.method = method;
+  o.dt = 1e-3;
+  o.steps = steps;
+  o.record_every = steps;  // the first and the last state: the same records for every length
+  return o;
+}
+
+TEST(AllocationFree, NoSceneRunAllocatesPerStep) {
+  skip_without_counting();
+  for (const SceneCase& c : {every_body_kind(), turning_frame(), mass_flow(), torque_free()}) {
+    for (const MethodInfo& info : method_table()) {
+      if (info.method == Method::exact && !c.torque_free) continue;
+      SCOPED_TRACE(c.name + ", " + info.name);
+      const CompiledScene compiled = compile_scene(c.scene, info.method);
+      simulate(compiled, c.initial, options(info.method, 10));  // what a first run initialises once per process
+      const std::int64_t short_run = allocations_during([&] { simulate(compiled, c.initial, options(info.method, 10)); });
+      const std::int64_t long_run = allocations_during([&] { simulate(compiled, c.initial, options(info.method, 1000)); });
+      EXPECT_EQ(long_run, short_run) << "allocations in 1000 steps against 10 steps";
+      EXPECT_GT(short_run, 0);  // the counting works: a run allocates its records
+    }
+  }
+}
+
+TEST(AllocationFree, NoSceneEvaluationAllocates) {
+  skip_without_counting();
+  // every member of the model interface an integrator calls (models/model_interface.hpp), on vectors sized once
+  for (const SceneCase& c : {every_body_kind(), turning_frame(), mass_flow(), torque_free()}) {
+    SCOPED_TRACE(c.name);
+    const CompiledScene compiled = compile_scene(c.scene, Method::rk4);
+    const SceneModel& model = compiled.model();
+    Eigen::VectorXd y = model.coordinates(c.initial, 0.0), dy(y.size()), stage(y.size());
+    Eigen::VectorXd xi(model.tangent_count()), theta = Eigen::VectorXd::Constant(model.tangent_count(), 1e-3);
+    const auto evaluate_all = [&] {
+      model.rate(y, dy);
+      model.velocity(y, xi);
+      model.retract(y, theta, stage);
+      model.velocity_at(y, theta, xi);
+      model.dexp_inv(theta, xi);
+      model.kick(y, 1e-3);
+      model.kick_implicit_gyroscopic(y, 1e-3);
+      model.drift(y, 1e-3);
+      model.loads_kick(y, 1e-3);
+      model.free_flow<DlmRotation<true>>(y, 1e-3);
+      model.free_flow<ExactRotation>(y, 1e-3);
+      model.project(y);
+    };
+    evaluate_all();  // the first evaluation sizes MutualGravity's thread-local scratch columns, once per thread
+    EXPECT_EQ(allocations_during(evaluate_all), 0);
+  }
+}
+
+TEST(AllocationFree, NoOneBodyRunAllocatesPerStep) {
+  skip_without_counting();
+  const RigidBody body(2.0, Eigen::Vector3d(1.0, 2.0, 3.0));
+  for (const MethodInfo& info : method_table()) {
+    SCOPED_TRACE(info.name);
+    const auto run = [&](std::int64_t steps) {
+      SimulationOptions o = options(info.method, steps);
+      if (info.method != Method::exact) o.gravity_W = Eigen::Vector3d(0.0, 0.0, -9.81);
+      return allocations_during([&] { simulate(body, tumbling(Eigen::Vector3d::Zero()), o); });
+    };
+    EXPECT_EQ(run(1000), run(10));
+  }
+}
+
+}  // namespace
+}  // namespace rigiddyn
