@@ -189,7 +189,7 @@ py::class_<T> bind_element(py::module_& m, const ElementClass<T>& c, const char*
 // ------------------------------------------------------------ the element classes
 
 const ElementClass<UniformGravity> uniform_gravity{
-    "UniformGravity",
+    UniformGravity::element_type,
     {{"g_W", "(3,) gravitational acceleration in W [m/s^2]"},
      {"bodies", "None (every body) or a tuple of the indices of the bodies it acts on"}},
     [](const py::tuple& v) {
@@ -201,7 +201,7 @@ const ElementClass<UniformGravity> uniform_gravity{
     [](const UniformGravity& e) -> py::tuple { return py::make_tuple(vector_object(e.g_W), body_list_object(e.bodies)); }};
 
 const ElementClass<PointMassGravity> point_mass_gravity{
-    "PointMassGravity",
+    PointMassGravity::element_type,
     {{"gm", "gravitational parameter GM of the attractor [m^3/s^2]"},
      {"p_W", "(3,) position of the fixed attractor in W [m]"},
      {"softening", "softening length epsilon [m] (0: none)"},
@@ -219,7 +219,7 @@ const ElementClass<PointMassGravity> point_mass_gravity{
     }};
 
 const ElementClass<MutualGravity> mutual_gravity{
-    "MutualGravity",
+    MutualGravity::element_type,
     {{"G", "gravitational constant [m^3/(kg s^2)]"},
      {"softening", "softening length epsilon [m] (0: none)"},
      {"bodies", "None (every body) or a tuple of the indices of the bodies that attract each other"}},
@@ -233,7 +233,7 @@ const ElementClass<MutualGravity> mutual_gravity{
     [](const MutualGravity& e) -> py::tuple { return py::make_tuple(e.G, e.softening, body_list_object(e.bodies)); }};
 
 const ElementClass<GravityGradient> gravity_gradient{
-    "GravityGradient",
+    GravityGradient::element_type,
     {{"gm", "gravitational parameter GM of the central attractor [m^3/s^2]"},
      {"p_W", "(3,) position of the attractor in W [m]"},
      {"bodies", "None (every body) or a tuple of the indices of the bodies it acts on"}},
@@ -247,7 +247,7 @@ const ElementClass<GravityGradient> gravity_gradient{
     [](const GravityGradient& e) -> py::tuple { return py::make_tuple(e.gm, vector_object(e.p_W), body_list_object(e.bodies)); }};
 
 const ElementClass<SpringDamper> spring_damper{
-    "SpringDamper",
+    SpringDamper::element_type,
     {{"body_a", "index of the body at end a"},
      {"point_a_B", "(3,) end a in body a's frame B, from its centre of mass [m]"},
      {"body_b", "index of the body at end b, or None: end b is the world anchor point_b"},
@@ -276,7 +276,7 @@ const ElementClass<SpringDamper> spring_damper{
     }};
 
 const ElementClass<Drag> drag{
-    "Drag",
+    Drag::element_type,
     {{"linear", "c1 of f_W = -(c1 + c2 |v_W|) v_W [N s/m]"},
      {"quadratic", "c2 of f_W = -(c1 + c2 |v_W|) v_W [N s^2/m^2]"},
      {"angular_linear", "d1 of tau_B = -(d1 + d2 |w_B|) w_B [N m s/rad]"},
@@ -296,7 +296,7 @@ const ElementClass<Drag> drag{
     }};
 
 const ElementClass<ScheduledLoads> scheduled_loads{
-    "ScheduledLoads",
+    ScheduledLoads::element_type,
     {{"body", "index of the body the loads act on"},
      {"loads", "tuple of AppliedLoad: the piecewise-constant schedule"},
      {"point_B", "(3,) point of application of the forces in B, from the centre of mass [m]"}},
@@ -328,7 +328,7 @@ const ElementClass<FunctionForce> python_force{
     [](const FunctionForce& e) -> py::tuple { return py::make_tuple(python_fn(e), body_list_object(e.bodies)); }};
 
 const ElementClass<Thrust> thrust{
-    "Thrust",
+    Thrust::element_type,
     {{"body", "index of the body (one with a MassFlow) whose exchanged mass pushes it"},
      {"u_rel", "(3,) velocity of the exchanged mass relative to the body, in `frame` [m/s]"},
      {"frame", "'body' (u_rel in B, turning with the body) or 'world' (in the scene frame W)"},

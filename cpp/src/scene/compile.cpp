@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <set>
 #include <string>
+#include <type_traits>
+#include <variant>
 
 namespace rigiddyn {
 
@@ -156,12 +158,15 @@ const char* scene_path_name(ScenePath path) {
 }
 
 std::string element_type_name(const Element& element) {
-  static const char* const names[] = {"UniformGravity", "PointMassGravity", "MutualGravity", "GravityGradient",
-                                      "SpringDamper",   "Drag",             "ScheduledLoads", "FunctionForce",
-                                      "Thrust"};
-  static_assert(std::variant_size_v<Element> == sizeof names / sizeof names[0], "a name per element type");
-  if (const auto* f = std::get_if<FunctionForce>(&element)) return f->type_name;  // the name its maker gave it
-  return names[element.index()];
+  return std::visit(
+      [](const auto& spec) -> std::string {
+        if constexpr (std::is_same_v<std::decay_t<decltype(spec)>, FunctionForce>) {
+          return spec.type_name;  // the name its maker gave it
+        } else {
+          return std::decay_t<decltype(spec)>::element_type;
+        }
+      },
+      element);
 }
 
 std::string scene_features(Method method) {

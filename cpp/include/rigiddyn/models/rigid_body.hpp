@@ -184,11 +184,8 @@ class RigidBodyModel {
     dy(13) = power(f_W, tau_B, v, w);
   }
 
-  // q ← q / |q| (written out: Eigen's normalize() is not always inlined)
-  RIGIDDYN_ALWAYS_INLINE static void project(Coordinates& y) {
-    const double inverse_norm = 1.0 / std::sqrt(y[3] * y[3] + y[4] * y[4] + y[5] * y[5] + y[6] * y[6]);
-    for (int i = 3; i < 7; ++i) y[i] *= inverse_norm;
-  }
+  // q ← q / |q| (written out, so3/quaternion_kernels.hpp: Eigen's normalize() is not always inlined)
+  RIGIDDYN_ALWAYS_INLINE static void project(Coordinates& y) { normalise_quaternion(y.data() + 3); }
 
   RIGIDDYN_ALWAYS_INLINE void velocity(const Coordinates& y, Tangent& xi) const {
     const Eigen::Vector3d v = three_at(y, 7), w = three_at(y, 10);

@@ -380,9 +380,9 @@ class BasicSceneModel {
 
   // every attitude q ← q / |q|
   void project(Coordinates& y) const {
-    for_each_rigid([&](const auto& s) { normalise(y.data() + s.y + 3); });
-    for_each_pivoted([&](const auto& s) { normalise(y.data() + s.y); });
-    for_each_mass_rigid([&](const auto& s) { normalise(y.data() + s.y + 3); });
+    for_each_rigid([&](const auto& s) { normalise_quaternion(y.data() + s.y + 3); });
+    for_each_pivoted([&](const auto& s) { normalise_quaternion(y.data() + s.y); });
+    for_each_mass_rigid([&](const auto& s) { normalise_quaternion(y.data() + s.y + 3); });
     step_start_ = y[t_y_];  // the methods that end with project: the next step starts here
   }
 
@@ -1048,12 +1048,6 @@ class BasicSceneModel {
   static void mass_free_rotation(Rotation, const detail::FunctionRigidSlot& /*s*/, Coordinates& /*y*/, double /*h*/) {
     throw std::logic_error("free_flow: a rigid body with InertiaRule::function has no free rotation (compile refuses "
                            "the splitting methods for it)");
-  }
-
-  // q ← q / |q| (4 doubles)
-  static void normalise(double* q) {
-    const double inverse_norm = 1.0 / std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-    for (int i = 0; i < 4; ++i) q[i] *= inverse_norm;
   }
 
   // α [rad/s²] of a pinned planar body at y under its wrench (plane kinetics about O)

@@ -9,6 +9,9 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <cmath>
+#include <Eigen/Geometry>
+
 namespace rigiddyn {
 
 // out = q ⊗ exp(θ) [θ in rad, a body-frame rotation vector], q and out stored (x, y, z, w): the Hamilton
@@ -30,6 +33,13 @@ RIGIDDYN_ALWAYS_INLINE void quat_rate_body(const double* q, const Eigen::Vector3
   dq[1] = 0.5 * (s * w_B.y() + z * w_B.x() - x * w_B.z());
   dq[2] = 0.5 * (s * w_B.z() + x * w_B.y() - y * w_B.x());
   dq[3] = -0.5 * (x * w_B.x() + y * w_B.y() + z * w_B.z());
+}
+
+// q ← q / |q| in place, q stored (x, y, z, w): the projection of the methods that leave the unit sphere
+// (RK4, explicit Euler, RKMK4) after each step.
+RIGIDDYN_ALWAYS_INLINE void normalise_quaternion(double* q) {
+  const double inverse_norm = 1.0 / std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+  for (int i = 0; i < 4; ++i) q[i] *= inverse_norm;
 }
 
 }  // namespace rigiddyn

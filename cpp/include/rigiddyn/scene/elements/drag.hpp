@@ -22,6 +22,7 @@ namespace rigiddyn {
 // The spec: linear c₁ [N s/m] and quadratic c₂ [N s²/m²] coefficients of the force, angular_linear d₁
 // [N m s] and angular_quadratic d₂ [N m s²] of the torque, all >= 0, on `bodies` (empty: every body).
 struct Drag {
+  static constexpr const char* element_type = "Drag";  // its name in records and messages
   double linear = 0.0;
   double quadratic = 0.0;
   double angular_linear = 0.0;

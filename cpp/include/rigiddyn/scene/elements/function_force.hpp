@@ -47,9 +47,10 @@ using ForceFunction = std::function<void(double t, const BodyKinematics& body, i
 // records and messages (element_type_name: compile's warnings and refusals, the work and power columns' labels).
 // The Python binding sets "PythonForce", its class's name, so that a Python user meets one name everywhere.
 struct FunctionForce {
+  static constexpr const char* element_type = "FunctionForce";  // the default of type_name
   BodyList bodies;
   ForceFunction f;
-  std::string type_name = "FunctionForce";
+  std::string type_name = element_type;
 };
 
 // The compiled term.

@@ -38,6 +38,7 @@ namespace rigiddyn {
 // The spec: gravitational parameter gm = G M [m³/s²] of an attractor fixed at p_W [m] in W, acting on
 // `bodies` (empty: every body; particles are skipped, planar bodies refused).
 struct GravityGradient {
+  static constexpr const char* element_type = "GravityGradient";  // its name in records and messages
   double gm = 0.0;
   Eigen::Vector3d p_W = Eigen::Vector3d::Zero();
   BodyList bodies;

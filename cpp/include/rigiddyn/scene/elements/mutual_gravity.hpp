@@ -24,6 +24,7 @@ namespace rigiddyn {
 // The spec: gravitational constant G [m³/(kg s²)], softening length [m] (0: exact law), between the
 // `bodies` (empty: every body; fewer than two: no pair, no force).
 struct MutualGravity {
+  static constexpr const char* element_type = "MutualGravity";  // its name in records and messages
   double G = 6.67430e-11;
   double softening = 0.0;
   BodyList bodies;

@@ -23,6 +23,7 @@ namespace rigiddyn {
 // The spec: gravitational parameter gm = G M [m³/s²] of an attractor fixed at p_W [m] in W, softening
 // length [m] (0: exact Newtonian law), acting on `bodies` (empty: every body).
 struct PointMassGravity {
+  static constexpr const char* element_type = "PointMassGravity";  // its name in records and messages
   double gm = 0.0;
   Eigen::Vector3d p_W = Eigen::Vector3d::Zero();
   double softening = 0.0;

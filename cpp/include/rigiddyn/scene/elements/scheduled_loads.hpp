@@ -23,6 +23,7 @@ namespace rigiddyn {
 // The spec: the schedule `loads` on body `body`, forces applied at point_B [m] (in B, from the centre of
 // mass; zero: through the centre of mass).
 struct ScheduledLoads {
+  static constexpr const char* element_type = "ScheduledLoads";  // its name in records and messages
   int body = 0;
   std::vector<AppliedLoad> loads;
   Eigen::Vector3d point_B = Eigen::Vector3d::Zero();

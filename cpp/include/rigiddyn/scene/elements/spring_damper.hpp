@@ -29,6 +29,7 @@ namespace rigiddyn {
 // world anchor point_b [m] in W, or body_b >= 0 with point_b in b's frame B (from its centre of mass);
 // stiffness k [N/m], rest_length ℓ0 [m], damping c [N s/m], all >= 0.
 struct SpringDamper {
+  static constexpr const char* element_type = "SpringDamper";  // its name in records and messages
   int body_a = 0;
   Eigen::Vector3d point_a_B = Eigen::Vector3d::Zero();
   int body_b = -1;

@@ -31,6 +31,7 @@ namespace rigiddyn {
 // exchanged mass relative to the body, in `frame` (Frame::body: in B, turning with the body; Frame::world:
 // in the scene frame), applied at r_B [m] (in B, from the centre of mass; zero: through it).
 struct Thrust {
+  static constexpr const char* element_type = "Thrust";  // its name in records and messages
   int body = 0;
   Eigen::Vector3d u_rel = Eigen::Vector3d::Zero();
   Frame frame = Frame::body;

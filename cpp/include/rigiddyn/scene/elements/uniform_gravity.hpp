@@ -16,6 +16,7 @@ namespace rigiddyn {
 
 // The spec: gravity g_W [m/s²] in W on `bodies` (empty: every body).
 struct UniformGravity {
+  static constexpr const char* element_type = "UniformGravity";  // its name in records and messages
   Eigen::Vector3d g_W = Eigen::Vector3d::Zero();
   BodyList bodies;
 };

@@ -123,11 +123,8 @@ class PivotedBodyModel {
     dy[9] = P_loads;
   }
 
-  // q ← q / |q|
-  RIGIDDYN_ALWAYS_INLINE static void project(Coordinates& y) {
-    const double inverse_norm = 1.0 / std::sqrt(y[0] * y[0] + y[1] * y[1] + y[2] * y[2] + y[3] * y[3]);
-    for (int i = 0; i < 4; ++i) y[i] *= inverse_norm;
-  }
+  // q ← q / |q| (so3/quaternion_kernels.hpp)
+  RIGIDDYN_ALWAYS_INLINE static void project(Coordinates& y) { normalise_quaternion(y.data()); }
 
   // ξ = (ω, α, 1, powers)
   RIGIDDYN_ALWAYS_INLINE void velocity(const Coordinates& y, Tangent& xi) const {
