@@ -39,6 +39,7 @@
 #include "rigiddyn/integrators/exact_flow_kick.hpp"
 #include "rigiddyn/integrators/free_flow_tags.hpp"
 #include "rigiddyn/integrators/splitting_dlm.hpp"
+#include "rigiddyn/overloaded.hpp"
 #include "rigiddyn/models/euler_equations.hpp"
 #include "rigiddyn/scene/elements/fictitious_forces.hpp"
 #include "rigiddyn/scene/mass_flow.hpp"
@@ -264,32 +265,40 @@ class BasicSceneModel {
       const int b = static_cast<int>(i);
       if (i < mass_flows.size() && mass_flows[i]) {
         add_mass_slot(bodies[i], b, *mass_flows[i], i < body_names.size() ? body_names[i] : "body" + std::to_string(i), y, xi);
-      } else if (const auto* p = std::get_if<Particle>(&bodies[i])) {
-        particles_.push_back({b, y, xi, p->mass(), 1.0 / p->mass()});
-        y += 6, xi += 6;
-      } else if (const auto* s = std::get_if<PlanarBody>(&bodies[i])) {
-        planars_.push_back({b, y, xi, s->mass(), 1.0 / s->mass(), s->inertia_zz(), 1.0 / s->inertia_zz()});
-        y += 6, xi += 6;
-      } else if (const auto* r = std::get_if<RigidBody>(&bodies[i])) {
-        with_euler_form(*r, [&](const auto& euler) {
-          using Euler = std::decay_t<decltype(euler)>;
-          std::get<std::vector<detail::RigidSlot<Euler>>>(rigid_).push_back(
-              {b, y, xi, r->mass(), 1.0 / r->mass(), euler, FreeRotationFlow(r->inertia_com())});
-        });
-        y += 13, xi += 12;
-      } else if (const auto* o = std::get_if<PivotedBody>(&bodies[i])) {
-        with_euler_form(*o, [&](const auto& euler_O) {
-          using Euler = std::decay_t<decltype(euler_O)>;
-          std::get<std::vector<detail::PivotedSlot<Euler>>>(pivoted_).push_back(
-              {b, y, xi, o->mass(), o->p_OC_B(), o->p_WO(), euler_O, FreeRotationFlow(o->inertia_O())});
-        });
-        y += 7, xi += 6;
-      } else {
-        const auto& pendulum = std::get<PivotedPlanarBody>(bodies[i]);
-        pivoted_planars_.push_back(
-            {b, y, xi, pendulum.mass(), pendulum.inertia_O_zz(), pendulum.p_OC_B(), pendulum.p_WO()});
-        y += 2, xi += 2;
+        continue;
       }
+      // one lambda per body kind: a kind added to Body and not handled here does not compile
+      std::visit(overloaded{
+                     [&](const Particle& p) {
+                       particles_.push_back({b, y, xi, p.mass(), 1.0 / p.mass()});
+                       y += 6, xi += 6;
+                     },
+                     [&](const PlanarBody& s) {
+                       planars_.push_back({b, y, xi, s.mass(), 1.0 / s.mass(), s.inertia_zz(), 1.0 / s.inertia_zz()});
+                       y += 6, xi += 6;
+                     },
+                     [&](const RigidBody& r) {
+                       with_euler_form(r, [&](const auto& euler) {
+                         using Euler = std::decay_t<decltype(euler)>;
+                         std::get<std::vector<detail::RigidSlot<Euler>>>(rigid_).push_back(
+                             {b, y, xi, r.mass(), 1.0 / r.mass(), euler, FreeRotationFlow(r.inertia_com())});
+                       });
+                       y += 13, xi += 12;
+                     },
+                     [&](const PivotedBody& o) {
+                       with_euler_form(o, [&](const auto& euler_O) {
+                         using Euler = std::decay_t<decltype(euler_O)>;
+                         std::get<std::vector<detail::PivotedSlot<Euler>>>(pivoted_).push_back(
+                             {b, y, xi, o.mass(), o.p_OC_B(), o.p_WO(), euler_O, FreeRotationFlow(o.inertia_O())});
+                       });
+                       y += 7, xi += 6;
+                     },
+                     [&](const PivotedPlanarBody& pendulum) {
+                       pivoted_planars_.push_back(
+                           {b, y, xi, pendulum.mass(), pendulum.inertia_O_zz(), pendulum.p_OC_B(), pendulum.p_WO()});
+                       y += 2, xi += 2;
+                     }},
+                 bodies[i]);
     }
     t_y_ = y, t_xi_ = xi;
     kinematics_.resize(bodies.size());
