@@ -1,0 +1,124 @@
+"""Every body kind and every force element the package knows round-trips and is described by name.
+
+The registries are the scene file's: its body kinds (``scene_file._BODY_KEYS``) and its force types
+(``scene_file.FORCE_TYPES``), plus ``PythonForce``, which no file can hold. Each kind and element needs an
+example below: a kind or element added to a registry without one fails here, so that the checks reach it.
+For each example:
+
+- ``repr`` evaluates (with ``rigiddyn`` as ``rd``'s names) to an equal object, and ``pickle`` round-trips it;
+- a scene holding it, written by ``scene_to_toml`` and read back, is equal (``PythonForce``: refused with a
+  ``ValueError`` naming it);
+- ``Scene.describe`` names it in its own words: the kind's short name in the bodies table, the element's class
+  name with parameters of its own (the text of a Python callable only for ``PythonForce``).
+"""
+from __future__ import annotations
+
+import pickle
+
+import numpy as np
+import pytest
+
+import rigiddyn as rd
+from rigiddyn import scene_file
+
+# one example of each body kind, keyed by the scene file's kind, with a state of its kind
+BODY_EXAMPLES = {
+    "particle": (rd.Particle(1.5), rd.ParticleState(p_W=[1.0, 0.0, 0.0], v_W=[0.0, 1.0, 0.0])),
+    "planar": (rd.PlanarBody(2.0, 0.3), rd.PlanarBodyState(p_W=[0.0, 1.0], theta=0.2, v_W=[0.1, 0.0], omega=0.5)),
+    "rigid": (rd.RigidBody(2.0, [1.0, 2.0, 3.0]), rd.RigidBodyState(p_W=[0.0, 0.0, 1.0], w_B=[0.1, 0.2, 0.3])),
+    "pivoted": (rd.PivotedBody(rd.RigidBody(1.0, [0.5, 0.5, 0.2]), p_OC_B=[0.0, 0.0, 0.3]),
+                rd.PivotedBodyState(w_B=[0.0, 0.0, 10.0])),
+    "pivoted_planar": (rd.PivotedPlanarBody(2.0, 0.05, [0.0, -0.4]), rd.PivotedPlanarBodyState(theta=0.3, omega=0.0)),
+}
+
+
+def _force(t, body, p_W, q_WB, v_W, w_B):
+    """A force for the PythonForce example: none."""
+    return np.zeros(3), np.zeros(3)
+
+
+# one example of each element, keyed by its class name; bodies refer to the scene built in _scene_with
+ELEMENT_EXAMPLES = {
+    "UniformGravity": rd.UniformGravity(g_W=[0.0, 0.0, -9.81]),
+    "PointMassGravity": rd.PointMassGravity(gm=3.986004418e14, p_W=[0.0, 0.0, -7e6], softening=1.0),
+    "MutualGravity": rd.MutualGravity(G=1e-3, softening=0.05, bodies=[0, 1]),
+    "GravityGradient": rd.GravityGradient(gm=3.986004418e14, p_W=[0.0, 0.0, -7e6], bodies=[1]),
+    "SpringDamper": rd.SpringDamper(body_a=0, point_a_B=[0.0, 0.0, 0.0], body_b=1, point_b=[0.1, 0.0, 0.0],
+                                    stiffness=5.0, rest_length=0.5, damping=0.2),
+    "Drag": rd.Drag(linear=0.1, quadratic=0.01, angular_linear=0.02, angular_quadratic=0.001),
+    "ScheduledLoads": rd.ScheduledLoads(body=1, loads=[rd.AppliedLoad(force=[1.0, 0.0, 0.0], frame="body")]),
+    "Thrust": rd.Thrust(body=0, u_rel=[0.0, 0.0, -100.0], frame="world"),
+    "PythonForce": rd.PythonForce(_force),
+}
+
+
+def _scene_with(body=None, element=None) -> rd.Scene:
+    """A particle with a mass flow (body 0) and a rigid body (body 1), plus `body` and `element`."""
+    scene = rd.Scene()
+    scene.add_body(rd.Particle(10.0), name="rocket", mass_flow=rd.MassFlow(rate=-0.5))
+    scene.add_body(rd.RigidBody(2.0, [1.0, 2.0, 3.0]), name="box")
+    if body is not None:
+        scene.add_body(body, name="example")
+    if element is not None:
+        scene.add(element)
+    return scene
+
+
+def _states(scene: rd.Scene, extra=None) -> list:
+    states = [rd.ParticleState(v_W=[0.0, 0.0, 1.0]), rd.RigidBodyState(p_W=[0.0, 0.0, 0.5], w_B=[0.1, 0.2, 0.3])]
+    return states + ([extra] if extra is not None else [])
+
+
+def test_every_registered_kind_and_element_has_an_example() -> None:
+    assert set(BODY_EXAMPLES) == set(scene_file._BODY_KEYS)
+    assert set(ELEMENT_EXAMPLES) == {name for name, _ in scene_file.FORCE_TYPES.values()} | {"PythonForce"}
+    for name in ELEMENT_EXAMPLES:
+        assert type(ELEMENT_EXAMPLES[name]).__name__ == name
+        assert getattr(rd, name) is type(ELEMENT_EXAMPLES[name])
+
+
+def _round_trips(value) -> None:
+    names = {name: getattr(rd, name) for name in dir(rd) if not name.startswith("_")}
+    names["_force"] = _force
+    assert eval(repr(value), names) == value, repr(value)  # noqa: S307 (the package's own repr)
+    assert pickle.loads(pickle.dumps(value)) == value
+
+
+@pytest.mark.parametrize("kind", sorted(BODY_EXAMPLES))
+def test_a_body_kind_round_trips(kind: str) -> None:
+    body, state = BODY_EXAMPLES[kind]
+    _round_trips(body)
+    scene = _scene_with(body=body)
+    states = _states(scene, state)
+    read = scene_file.read_scene(scene_file.scene_to_toml(scene, states))
+    assert read.scene == scene
+
+
+@pytest.mark.parametrize("name", sorted(ELEMENT_EXAMPLES))
+def test_an_element_round_trips(name: str) -> None:
+    element = ELEMENT_EXAMPLES[name]
+    _round_trips(element)
+    scene = _scene_with(element=element)
+    if name == "PythonForce":
+        with pytest.raises(ValueError, match="PythonForce"):
+            scene_file.scene_to_toml(scene, _states(scene))
+        return
+    read = scene_file.read_scene(scene_file.scene_to_toml(scene, _states(scene)))
+    assert read.scene == scene
+
+
+@pytest.mark.parametrize("kind", sorted(BODY_EXAMPLES))
+def test_describe_names_a_body_kind(kind: str) -> None:
+    body, _ = BODY_EXAMPLES[kind]
+    bodies_table = _scene_with(body=body).describe().split("\nBodies\n", 1)[1].split("\n\n", 1)[0]
+    row = [line for line in bodies_table.splitlines() if line.split()[1:2] == ["example"]]
+    assert len(row) == 1, bodies_table
+    assert row[0].split()[2] == kind, row[0]
+
+
+@pytest.mark.parametrize("name", sorted(ELEMENT_EXAMPLES))
+def test_describe_names_an_element(name: str) -> None:
+    text = _scene_with(element=ELEMENT_EXAMPLES[name]).describe()
+    rows = [line for line in text.split("Force elements", 1)[1].splitlines() if line.split()[1:2] == [name]]
+    assert len(rows) == 1, text
+    assert ("a Python callable" in rows[0]) == (name == "PythonForce"), rows[0]
