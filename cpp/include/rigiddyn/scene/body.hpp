@@ -3,6 +3,7 @@
 // "W" is the scene frame: W itself when the scene declares no moving frame, else F (states are relative to it).
 #pragma once
 #include "rigiddyn/check.hpp"
+#include "rigiddyn/overloaded.hpp"
 #include "rigiddyn/models/particle.hpp"
 #include "rigiddyn/models/pivoted_body.hpp"
 #include "rigiddyn/models/pivoted_planar_body.hpp"
@@ -97,26 +98,32 @@ inline void check_body_index(int i, int n_bodies, const std::string& name) {
 // p_W = (x, y, 0), q_WB = Rz(θ), v_W = (v_x, v_y, 0), w_B = (0, 0, ω). A pinned body's kinematics need the
 // body (its pivot): std::invalid_argument "state: ..." for a pivoted state.
 inline BodyKinematics kinematics_of(const BodyState& state) {
-  return std::visit(
-      [](const auto& s) {
-        using T = std::decay_t<decltype(s)>;
-        BodyKinematics k;
-        if constexpr (std::is_same_v<T, PivotedBodyState> || std::is_same_v<T, PivotedPlanarBodyState>) {
-          throw std::invalid_argument("state: expected the state of a free body (a pinned body's kinematics "
-                                      "need its pivot: use kinematics_of(body, state)), got a pivoted state");
-        } else if constexpr (std::is_same_v<T, RigidBodyState>) {
-          k.p_W = s.p_W, k.q_WB = s.q_WB, k.v_W = s.v_W, k.w_B = s.w_B;
-        } else if constexpr (std::is_same_v<T, PlanarBodyState>) {
-          k.p_W << s.p_W, 0.0;
-          k.q_WB = Eigen::Quaterniond(Eigen::AngleAxisd(s.theta, Eigen::Vector3d::UnitZ()));
-          k.v_W << s.v_W, 0.0;
-          k.w_B << 0.0, 0.0, s.omega;
-        } else {
-          k.p_W = s.p_W, k.v_W = s.v_W;
-        }
-        return k;
-      },
-      state);
+  // one lambda per state kind: a kind added to BodyState and not handled here does not compile
+  const auto pinned = [](const auto& /*pivoted_state*/) -> BodyKinematics {
+    throw std::invalid_argument("state: expected the state of a free body (a pinned body's kinematics "
+                                "need its pivot: use kinematics_of(body, state)), got a pivoted state");
+  };
+  return std::visit(overloaded{[](const ParticleState& s) {
+                                 BodyKinematics k;
+                                 k.p_W = s.p_W, k.v_W = s.v_W;
+                                 return k;
+                               },
+                               [](const PlanarBodyState& s) {
+                                 BodyKinematics k;
+                                 k.p_W << s.p_W, 0.0;
+                                 k.q_WB = Eigen::Quaterniond(Eigen::AngleAxisd(s.theta, Eigen::Vector3d::UnitZ()));
+                                 k.v_W << s.v_W, 0.0;
+                                 k.w_B << 0.0, 0.0, s.omega;
+                                 return k;
+                               },
+                               [](const RigidBodyState& s) {
+                                 BodyKinematics k;
+                                 k.p_W = s.p_W, k.q_WB = s.q_WB, k.v_W = s.v_W, k.w_B = s.w_B;
+                                 return k;
+                               },
+                               [&](const PivotedBodyState& s) { return pinned(s); },
+                               [&](const PivotedPlanarBodyState& s) { return pinned(s); }},
+                    state);
 }
 
 // The kinematics an element sees of `body` in `state` (of its kind), with its (initial) mass k.m [kg];
