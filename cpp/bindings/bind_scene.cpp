@@ -110,7 +110,7 @@ int add_element(Scene& scene, py::handle element, const std::string& name) {
   std::visit(
       [&](const auto& spec) {
         using Spec = std::decay_t<decltype(spec)>;
-        using Term = typename TermOf<Spec>::type;
+        using Term = typename Spec::Term;
         if constexpr (std::is_same_v<Spec, Thrust>) {  // it needs the body's mass flow
           const Term check(spec, scene.bodies, scene.mass_flows, name);
           (void)check;
@@ -376,16 +376,15 @@ bool all_finite(const Scene& scene, const std::vector<BodyState>& states) {
   return true;
 }
 
-// Whether a step's result depends on its start time (a load with a time window, a Python force, a frame
-// moving other than at a constant rotation, a mass rate given as a function of t).
-bool time_dependent(const Scene& scene) {
-  if (scene.frame && !scene.frame->constant_rotation) return true;
-  for (const auto& flow : scene.mass_flows) {
+// Whether a step's result depends on its start time: a compiled term that does (a load with a time window, a
+// Python force, the fictitious forces of a frame moving other than at a constant rotation: their traits), or a
+// mass rate given as a function of t.
+bool time_dependent(const CompiledScene& compiled) {
+  for (const auto& flow : compiled.scene().mass_flows) {
     if (flow && !has_constant_rate(*flow)) return true;
   }
-  for (const Element& e : scene.elements) {
-    if (std::holds_alternative<FunctionForce>(e)) return true;
-    if (const auto* s = std::get_if<ScheduledLoads>(&e); s && has_time_window(s->loads)) return true;
+  for (const ElementTraits& traits : compiled.element_traits()) {
+    if (traits.time_dependent) return true;
   }
   return false;
 }
@@ -480,7 +479,7 @@ py::object step_scene_py(py::handle model, py::handle state, py::handle dt, py::
   }
   if (!t.is_none()) {
     o.t0 = py_io::as_scalar(py_io::in_si(t, "s", "t"), "t");
-  } else if (time_dependent(h.scene)) {
+  } else if (time_dependent(*h.compiled)) {
     py_io::throw_value_error("t", "the time [s] of `state` (the scene has a PythonForce, a load with a time window, a "
                              "moving frame or a mass rate of t; pass t=... and use the time returned)", "None");
   }
@@ -530,8 +529,7 @@ void bind_scene(py::module_& m) {
           "returns its index, by which elements refer to it.")
       .def(
           "add", [](Scene& s, py::handle element) { return add_element(s, element, "element"); }, py::arg("element"),
-          "Adds a force element (UniformGravity, PointMassGravity, MutualGravity, GravityGradient, SpringDamper, "
-          "Drag, ScheduledLoads, PythonForce, Thrust) after checking it against the bodies added so far (indices in range, "
+          "Adds a force element (an instance of a class of rigiddyn.FORCE_ELEMENTS) after checking it against the bodies added so far (indices in range, "
           "loads the body's kind can take: ValueError naming element.<field>); returns its index (the column of "
           "SceneResult.work and power).")
       .def_property_readonly("bodies", [](const Scene& s) { return py::tuple(bodies_list(s)); },
@@ -614,6 +612,21 @@ void bind_scene(py::module_& m) {
       .def_property_readonly(
           "warnings", [](const CompiledSceneHandle& h) { return py::tuple(py::cast(h.compiled->warnings())); },
           "tuple of the compatibility warnings (str) compiling gave")
+      .def_property_readonly(
+          "element_traits",
+          [](const CompiledSceneHandle& h) {
+            py::list out;
+            for (const ElementTraits& t : h.compiled->element_traits()) {
+              py::dict d;
+              d["reads_attitude"] = t.reads_attitude, d["velocity_dependent"] = t.velocity_dependent;
+              d["time_dependent"] = t.time_dependent, d["has_potential"] = t.has_potential, d["has_torque"] = t.has_torque;
+              out.append(d);
+            }
+            return py::tuple(out);
+          },
+          "tuple of dict, one per compiled term in the order of SceneResult.work's columns (the scene's elements, "
+          "then the frame's fictitious terms): reads_attitude, velocity_dependent, time_dependent, has_potential "
+          "(its forces derive from a potential energy) and has_torque (bool each)")
       .def(
           "describe",
           [](py::object self) { return py::module_::import("rigiddyn.scene_describe").attr("describe")(self); },

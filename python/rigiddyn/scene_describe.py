@@ -164,8 +164,8 @@ def _terms(element: Any, body: int, kind: str) -> str:
     force, torque = True, kind != "particle"
     if cls in ("UniformGravity", "PointMassGravity", "MutualGravity"):
         torque = False
-    elif cls == "GravityGradient":
-        force = torque  # the second-order term needs an extent (I = 0 for a particle)
+    elif cls in ("GravityGradient", "MagneticDipole"):
+        force = torque  # the second-order term needs an extent (I = 0 for a particle), a dipole an attitude
     elif cls == "SpringDamper":
         point = element.point_a_B if body == element.body_a else element.point_b
         torque = torque and bool(np.any(np.asarray(point)))
@@ -188,52 +188,46 @@ def _fictitious_terms(kind: str) -> str:
 
 
 def _parameters(element: Any, names: Sequence[str]) -> str:
-    """The element's parameters in SI with units and frames."""
-    cls = type(element).__name__
-    if cls == "UniformGravity":
-        return f"g_W = {_g(element.g_W)} m/s^2 in W"
-    if cls == "PointMassGravity":
-        return f"gm = {_g(element.gm)} m^3/s^2 at p_W = {_g(element.p_W)} m in W, softening {_g(element.softening)} m"
-    if cls == "MutualGravity":
-        return f"G = {_g(element.G)} m^3/(kg s^2), softening {_g(element.softening)} m, pairs i < j"
-    if cls == "GravityGradient":
-        return f"gm = {_g(element.gm)} m^3/s^2 at p_W = {_g(element.p_W)} m in W"
-    if cls == "SpringDamper":
-        a = _end(names[element.body_a], element.point_a_B)
-        b = f"the world anchor {_g(element.point_b)} m in W" if element.body_b is None else \
-            _end(names[element.body_b], element.point_b)
-        return (f"{a} to {b}; k = {_g(element.stiffness)} N/m, l0 = {_g(element.rest_length)} m, "
-                f"c = {_g(element.damping)} N s/m")
-    if cls == "Drag":
-        return (f"linear {_g(element.linear)} N s/m, quadratic {_g(element.quadratic)} N s^2/m^2, angular "
-                f"{_g(element.angular_linear)} N m s/rad, {_g(element.angular_quadratic)} N m s^2/rad^2")
-    if cls == "Thrust":
-        return (f"f = (dm/dt) u_rel, u_rel = {_g(element.u_rel)} m/s in {'B' if str(element.frame) == 'body' else 'W'}"
-                f", at r_B = {_g(element.r_B)} m in B")
-    if cls == "ScheduledLoads":
-        frames = sorted({str(load.frame) for load in element.loads}) or ["-"]
-        return (f"{len(element.loads)} piecewise-constant loads (force N, torque N m in {' and '.join(frames)}) "
-                f"at point_B = {_g(element.point_B)} m")
-    return "a Python callable fn(t, body, p_W, q_WB, v_W, w_B) -> (f_W N, tau_B N m); holds the GIL"
+    """The element's parameters in SI with their units, from its class's field table (``fields``); the
+    bodies it acts on are the columns, not repeated here."""
+    parts = []
+    for f in type(element).fields:
+        value = getattr(element, f.key)
+        unit = f" {f.unit}" if f.unit and f.unit != "1" else ""
+        if f.kind in ("scalar", "vector"):
+            parts.append(f"{f.key} = {_g(value)}{unit}")
+        elif f.kind in ("body", "optional_body"):
+            parts.append(f"{f.key} = {'none' if value is None else names[value]}")
+        elif f.kind == "frame":
+            parts.append(f"{f.key} = {value}")
+        elif f.kind == "loads":
+            frames = sorted({str(load.frame) for load in value}) or ["-"]
+            parts.append(f"{len(value)} piecewise-constant loads (force N, torque N m in {' and '.join(frames)})")
+        elif f.kind == "callable":
+            parts.append(f"{f.key} = a Python callable fn(t, body, p_W, q_WB, v_W, w_B) -> (f_W N, tau_B N m); holds the GIL")
+    return ", ".join(parts)
 
 
-def _end(name: str, point: Any) -> str:
-    """A spring end: a body's centre of mass, or a point of it in its frame B."""
-    return f"{name}'s centre of mass" if not np.any(np.asarray(point)) else f"{name} at {_g(point)} m in its B"
-
-
-def _properties(element: Any) -> str:
-    cls = type(element).__name__
-    props = []
-    if cls in ("UniformGravity", "PointMassGravity", "MutualGravity", "GravityGradient", "SpringDamper"):
-        props.append("potential")
-    if cls == "Drag" or cls == "PythonForce" or (cls == "SpringDamper" and element.damping > 0):
-        props.append("velocity-dependent")
-    if cls in ("ScheduledLoads", "PythonForce"):
-        props.append("time-dependent")
-    if cls == "Thrust":
-        props.append("scales with dm/dt")
+def _properties(traits: dict[str, bool] | None) -> str:
+    """What the compiled term depends on and provides (CompiledScene.element_traits)."""
+    if traits is None:
+        return "-"
+    props = [name for name, on in (("potential", traits["has_potential"]),
+                                   ("velocity-dependent", traits["velocity_dependent"]),
+                                   ("time-dependent", traits["time_dependent"])) if on]
     return ", ".join(props) or "-"
+
+
+def _element_traits(scene: Any, compiled: Any | None) -> list[dict[str, bool] | None]:
+    """Each element's traits, from `compiled` or a compile for rk4 (None each where the scene does not compile)."""
+    if compiled is None:
+        try:
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                compiled = scene.compile("rk4")
+        except ValueError:
+            return [None] * len(scene.elements)
+    return list(compiled.element_traits)
 
 
 def _table(header: Sequence[str], rows: Sequence[Sequence[str]]) -> list[str]:
@@ -291,9 +285,10 @@ def describe(scene: Any, method: str | None = None) -> str:
     lines += _pivot_lines(bodies, names, kinds) + _mass_flow_lines(scene, names)
     lines += ["", "Force elements (terms per body: f force, tau torque, . none)"]
     rows = []
+    traits = _element_traits(scene, compiled)
     for i, e in enumerate(elements):
         acting = set(_acts_on(e, len(bodies)))
-        rows.append((str(i), type(e).__name__, _properties(e),
+        rows.append((str(i), type(e).__name__, _properties(traits[i]),
                      *[_terms(e, b, kinds[b]) if b in acting else "." for b in range(len(bodies))],
                      _parameters(e, names)))
     fictitious = {name: (cls, force) for name, cls, force in _FICTITIOUS}

@@ -81,6 +81,10 @@ commented)::
     #                                   # velocity of the ejected mass relative to the body, frame
     #                                   # "body" (default) | "world" (of u_rel), r_B [m] in B (0):
     #                                   # f = (dm/dt) u_rel at the point r_B
+    # type = "magnetic_dipole"          # m_B [A m^2] in B, B_W [T] (0), source_moment_W [A m^2] (0) at
+    #                                   # source_p_W [m] (0): a dipole in a uniform and a dipole field
+    #                                   # (every class of rigiddyn.FORCE_ELEMENTS but PythonForce, its
+    #                                   # type the class name in snake case, its keys its `fields`)
     bodies = ["sat", "boom"]            # names of the bodies it acts on; absent: every body
 
     [[cluster]]                         # generated particles, after the [[body]] tables, with their own
@@ -118,6 +122,7 @@ from __future__ import annotations
 
 import itertools
 import math
+import re
 import warnings
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
@@ -173,34 +178,25 @@ class _Field:
     default: Any = _REQUIRED
 
 
-_BODIES = _Field("bodies", default=None)
+def _snake_case(name: str) -> str:
+    """'GravityGradient' -> 'gravity_gradient': a class's [[force]] type."""
+    return re.sub(r"(?<!^)(?=[A-Z])", "_", name).lower()
+
+
+def _force_types() -> dict[str, tuple[str, dict[str, _Field]]]:
+    """Every force element a file can hold, from the classes' own field tables (rigiddyn.FORCE_ELEMENTS,
+    each class's `fields`): every element but those holding a callable (PythonForce)."""
+    types = {}
+    for cls in _core.FORCE_ELEMENTS:
+        if any(f.kind == "callable" for f in cls.fields):
+            continue
+        types[_snake_case(cls.__name__)] = (cls.__name__, {
+            f.key: _Field(f.kind, f.unit or "1", _REQUIRED if f.required else f.default) for f in cls.fields})
+    return types
+
+
 # force type -> (its class in rigiddyn, its fields in the order of the class's constructor)
-FORCE_TYPES: dict[str, tuple[str, dict[str, _Field]]] = {
-    "uniform_gravity": ("UniformGravity", {"g_W": _Field("vector", "m/s^2", (0.0, 0.0, -9.81)), "bodies": _BODIES}),
-    "point_mass_gravity": ("PointMassGravity", {
-        "gm": _Field("scalar", "m^3/s^2"), "p_W": _Field("vector", "m", (0.0, 0.0, 0.0)),
-        "softening": _Field("scalar", "m", 0.0), "bodies": _BODIES}),
-    "mutual_gravity": ("MutualGravity", {
-        "G": _Field("scalar", "m^3/(kg*s^2)", 6.67430e-11), "softening": _Field("scalar", "m", 0.0),
-        "bodies": _BODIES}),
-    "gravity_gradient": ("GravityGradient", {
-        "gm": _Field("scalar", "m^3/s^2"), "p_W": _Field("vector", "m", (0.0, 0.0, 0.0)), "bodies": _BODIES}),
-    "spring_damper": ("SpringDamper", {
-        "body_a": _Field("body"), "point_a_B": _Field("vector", "m", (0.0, 0.0, 0.0)),
-        "body_b": _Field("optional_body", default=None), "point_b": _Field("vector", "m", (0.0, 0.0, 0.0)),
-        "stiffness": _Field("scalar", "N/m"), "rest_length": _Field("scalar", "m", 0.0),
-        "damping": _Field("scalar", "N*s/m", 0.0)}),
-    "drag": ("Drag", {
-        "linear": _Field("scalar", "N*s/m", 0.0), "quadratic": _Field("scalar", "N*s^2/m^2", 0.0),
-        "angular_linear": _Field("scalar", "N*m*s/rad", 0.0),
-        "angular_quadratic": _Field("scalar", "N*m*s^2/rad^2", 0.0), "bodies": _BODIES}),
-    "scheduled_loads": ("ScheduledLoads", {
-        "body": _Field("body"), "loads": _Field("loads", default=()),
-        "point_B": _Field("vector", "m", (0.0, 0.0, 0.0))}),
-    "thrust": ("Thrust", {
-        "body": _Field("body"), "u_rel": _Field("vector", "m/s"), "frame": _Field("frame", default="body"),
-        "r_B": _Field("vector", "m", (0.0, 0.0, 0.0))}),
-}
+FORCE_TYPES: dict[str, tuple[str, dict[str, _Field]]] = _force_types()
 _TYPE_OF_CLASS = {cls: name for name, (cls, _) in FORCE_TYPES.items()}
 
 

@@ -31,6 +31,7 @@ import csv
 import json
 import math
 import sys
+import warnings
 from pathlib import Path
 from typing import Any
 
@@ -45,9 +46,6 @@ __all__ = ["SCENE_OUTPUTS", "is_scene_file", "run_scene_simulate"]
 
 SCENE_OUTPUTS = ("trajectory.csv", "trajectory.npz", "trajectory.parquet", "run.json", "trajectory.png")
 MAX_DEFAULT_RECORDS = 10_000  # as simulate_command: without --record-every or [run] record_every
-# the elements whose forces derive from a potential (SpringDamper only without damping): a scene of
-# these alone conserves its total energy
-CONSERVATIVE = ("UniformGravity", "PointMassGravity", "MutualGravity", "GravityGradient", "SpringDamper")
 
 
 def is_scene_file(path_or_name: str) -> bool:
@@ -179,11 +177,16 @@ def _write(plan: _ScenePlan, result: Any, folder: Path) -> list[Path]:
 
 
 def conservative(scene: Any) -> bool:
-    """True if every element of `scene` derives from a potential (CONSERVATIVE; a SpringDamper without
-    damping): its total energy is then conserved, else its elements do work that the energy balance
-    accounts for."""
-    return all(type(e).__name__ in CONSERVATIVE and getattr(e, "damping", 0.0) == 0.0
-               for e in getattr(scene, "elements", []))
+    """True if every element of `scene` derives from a potential and depends on neither the velocities
+    nor the time (CompiledScene.element_traits; a SpringDamper only without damping): its total energy
+    (in a moving frame, the Jacobi integral) is then conserved, else its elements do work that the energy
+    balance accounts for. The frame's fictitious terms are not asked: they are the frame's, not work done."""
+    if scene is None or not scene.elements:
+        return True
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        traits = scene.compile("rk4").element_traits[:len(scene.elements)]
+    return all(t["has_potential"] and not t["velocity_dependent"] and not t["time_dependent"] for t in traits)
 
 
 def _summary(result: Any, scene: Any = None) -> str:

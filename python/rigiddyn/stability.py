@@ -449,7 +449,28 @@ def scene_modes(scene: object, initial: list[object]) -> list[tuple[str, float, 
                     spread = float(np.ptp(np.linalg.eigvalsh(np.asarray(bodies[i].inertia_com, float))))
                     modes.append((f"the gravity gradient {label} on body {i}",
                                   3.0 * float(element.gm) / float(r @ r) ** 1.5 * spread / moment[i], 0.0))
+        elif kind == "MagneticDipole":
+            dipole = float(np.linalg.norm(np.asarray(element.m_B, float)))
+            for i in _listed(element, n):
+                if moment[i] > 0:  # a compass needle's libration: I theta'' = -|m| |B| theta
+                    field = float(np.linalg.norm(_magnetic_field(p[i], element)))
+                    modes.append((f"the magnetic dipole {label} on body {i}", dipole * field / moment[i], 0.0))
     return modes
+
+
+MU0_OVER_4PI = 1.25663706212e-6 / (4.0 * math.pi)  # mu0/(4 pi) [N/A^2] (CODATA 2018), as the core's MagneticDipole
+
+
+def _magnetic_field(p_W: np.ndarray, element: object) -> np.ndarray:
+    """B(p_W) [T] of a MagneticDipole's field: its uniform B_W plus its source dipole's
+    mu0/(4 pi) (3 r (r . M)/|r|^5 - M/|r|^3), r = p_W - source_p_W."""
+    field = np.asarray(getattr(element, "B_W"), float).copy()
+    moment = np.asarray(getattr(element, "source_moment_W"), float)
+    if np.any(moment):
+        r = p_W - np.asarray(getattr(element, "source_p_W"), float)
+        r2 = float(r @ r)
+        field += MU0_OVER_4PI / (r2 * math.sqrt(r2)) * (3.0 * float(r @ moment) / r2 * r - moment)
+    return field
 
 
 def _mode_rate(k: float, gamma: complex) -> float:

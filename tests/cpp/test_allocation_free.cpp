@@ -133,6 +133,8 @@ SceneCase every_body_kind() {
   s.elements.push_back(MutualGravity{1e-2, 0.1, {0, 2, 3, 4}});
   s.elements.push_back(PointMassGravity{5.0, Eigen::Vector3d(0.0, 0.0, -10.0), 0.0, {0, 2, 3, 4}});
   s.elements.push_back(GravityGradient{5.0, Eigen::Vector3d(0.0, 0.0, -10.0), {2, 3, 4}});
+  s.elements.push_back(MagneticDipole{Eigen::Vector3d(0.2, 0.0, 0.1), Eigen::Vector3d(0.0, 1e-3, -2e-3),
+                                      Eigen::Vector3d(0.0, 0.0, 1e5), Eigen::Vector3d(0.0, 0.0, -10.0), {}});
   AppliedLoad window{Eigen::Vector3d(0.1, -0.3, 0.2), Eigen::Vector3d(0.3, -0.2, 0.4), Frame::body};
   window.t_start = 0.0025, window.t_end = 0.0065;  // switches inside the first 10 steps of 1 ms
   s.elements.push_back(ScheduledLoads{3, {window}, Eigen::Vector3d(0.1, 0.0, 0.0)});

@@ -1,7 +1,8 @@
 // The force elements of scenes (scene/elements/*.hpp), each against what defines it:
 // force = −∇_p V and torque = −∂V/∂δθ (a small body rotation) by central differences of the element's own
 // potential; the returned power = Σ f_W·v_W + tau_B·w_B; Newton's third law for internal elements; closed
-// forms at known geometry (Newton's law, the spring, drag, the gravity-gradient pitch torque); the
+// forms at known geometry (Newton's law, the spring, drag, the gravity-gradient pitch torque, the compass
+// needle's torque and the force between coaxial magnetic dipoles); the
 // gravity gradient against the exact attraction of a cloud of point masses; every validation message.
 #include <gtest/gtest.h>
 
@@ -9,6 +10,7 @@
 #include "rigiddyn/scene/elements/drag.hpp"
 #include "rigiddyn/scene/elements/function_force.hpp"
 #include "rigiddyn/scene/elements/gravity_gradient.hpp"
+#include "rigiddyn/scene/elements/magnetic_dipole.hpp"
 #include "rigiddyn/scene/elements/mutual_gravity.hpp"
 #include "rigiddyn/scene/elements/point_mass_gravity.hpp"
 #include "rigiddyn/scene/elements/spring_damper.hpp"
@@ -447,6 +449,73 @@ TEST(GravityGradient, MatchesExactAttractionOfPointMassCloud) {
 // Body a rigid at the origin, turned 90° about z, point_a_B = (1, 0, 0) ⇒ x_a = (0, 1, 0); anchor (0, 1, 2):
 // d = (0, 0, −2), ℓ = 2, u = −ẑ. v_a = (0, 0, 1), w_B = (0, 0, 2) ⇒ ẋ_a = v_a + R (w_B × point_a_B) =
 // (0, 0, 1) + Rz(90°)(0, 2, 0) = (−2, 0, 1), ℓ̇ = u·ẋ_a = −1.
+// A dipole in a uniform field plus a source dipole at the attractor's place (>= 4 from every body): with
+// μ₀/(4π)|M| = 2 [T m³] and |m_B| < 1.2, |V| <= |m|(|B_W| + 2·2/4³) < 2 and |∂³V| <= |m|·2·60/4⁶ + |m||B_W|
+// < 2 (the rotation derivatives of −(R m)·B are bounded by |m||B|): within expect_wrench_is_minus_gradient's
+// stated bound.
+MagneticDipole dipole_in_fields() {
+  MagneticDipole spec;
+  spec.m_B = Eigen::Vector3d(0.7, -0.4, 0.8);
+  spec.B_W = Eigen::Vector3d(0.3, 0.1, -0.5);
+  spec.source_moment_W = Eigen::Vector3d(1.0, -0.5, 1.5).normalized() * (2.0 / MagneticDipoleTerm::mu0_over_4pi);
+  spec.source_p_W = kAttractor;
+  return spec;
+}
+
+TEST(MagneticDipole, ConservativeWithCorrectPower) {
+  std::mt19937 rng(37);
+  const std::vector<Body> bodies = mixed_bodies();
+  const MagneticDipoleTerm term(dipole_in_fields(), bodies, kName);
+  EXPECT_EQ(term.bodies(), (std::vector<int>{1, 2, 3}));  // the particle skipped
+  for (int trial = 0; trial < 5; ++trial) {
+    const Kinematics k = random_kinematics(rng);
+    expect_wrench_is_minus_gradient(term, k);
+    expect_power_matches(term, k);
+    const Wrenches w = wrenches_of(term, k);
+    EXPECT_TRUE(w[0].f_W.isZero(0.0) && w[0].tau_B.isZero(0.0));
+    EXPECT_GT(w[2].f_W.norm(), 1e-3);  // the source's gradient is felt: the check above is not vacuous
+    EXPECT_GT(w[2].tau_B.norm(), 1e-3);
+  }
+  const auto traits = MagneticDipoleTerm::traits();
+  EXPECT_TRUE(traits.has_potential && traits.reads_attitude && traits.has_torque);
+  EXPECT_FALSE(traits.velocity_dependent || traits.time_dependent);
+}
+
+// A compass needle m_B = μ x̂ turned by θ about z in B_W = B x̂: tau_B = m_B × Rᵀ B_W = −μ B sin θ ẑ (it turns
+// back towards the field), no force, V = −μ B cos θ. Each entry to a few ulps of μ B.
+TEST(MagneticDipole, CompassNeedleInAUniformField) {
+  const double mu = 0.3, B = 5e-5;
+  MagneticDipole spec;
+  spec.m_B = Eigen::Vector3d(mu, 0.0, 0.0), spec.B_W = Eigen::Vector3d(B, 0.0, 0.0);
+  const MagneticDipoleTerm term(spec, {RigidBody(1.0, Eigen::Vector3d(1.0, 1.0, 1.0))}, kName);
+  for (const double theta : {0.0, 0.3, -1.2, 2.9}) {
+    Kinematics k(1);
+    k[0].q_WB = Eigen::AngleAxisd(theta, Eigen::Vector3d::UnitZ());
+    const Wrenches w = wrenches_of(term, k);
+    EXPECT_TRUE(w[0].f_W.isZero(0.0));
+    EXPECT_NEAR(w[0].tau_B.z(), -mu * B * std::sin(theta), 8 * kEps * mu * B);
+    EXPECT_NEAR(w[0].tau_B.head<2>().norm(), 0.0, 8 * kEps * mu * B);
+    EXPECT_NEAR(term.potential(k), -mu * B * std::cos(theta), 8 * kEps * mu * B);
+  }
+}
+
+// Two coaxial dipoles m ẑ and M ẑ a distance d apart along z attract: f = −3 μ₀ m M/(2π d⁴) ẑ on the upper
+// one (from ∇(m·B) of the on-axis field 2kM/d³); to a few ulps.
+TEST(MagneticDipole, CoaxialDipolesAttract) {
+  const double m = 2.0, M = 3e3, d = 0.25;
+  MagneticDipole spec;
+  spec.m_B = Eigen::Vector3d(0.0, 0.0, m), spec.source_moment_W = Eigen::Vector3d(0.0, 0.0, M);
+  spec.source_p_W = Eigen::Vector3d(1.0, -2.0, 0.5);
+  const MagneticDipoleTerm term(spec, {RigidBody(1.0, Eigen::Vector3d(1.0, 1.0, 1.0))}, kName);
+  Kinematics k(1);
+  k[0].p_W = spec.source_p_W + Eigen::Vector3d(0.0, 0.0, d);
+  const Wrenches w = wrenches_of(term, k);
+  const double expected = -3.0 * 1.25663706212e-6 * m * M / (2.0 * M_PI * std::pow(d, 4));
+  EXPECT_NEAR(w[0].f_W.z(), expected, 16 * kEps * std::abs(expected));
+  EXPECT_NEAR(w[0].f_W.head<2>().norm(), 0.0, 16 * kEps * std::abs(expected));
+  EXPECT_TRUE(w[0].tau_B.isZero(0.0));  // m parallel to the on-axis field
+}
+
 TEST(SpringDamper, ClosedFormWithWorldAnchor) {
   const std::vector<Body> bodies = {RigidBody(1.0, Eigen::Vector3d(1, 1, 1))};
   Kinematics k(1);
@@ -652,6 +721,24 @@ TEST(SceneElementErrors, Gravity) {
   expect_error([&] { GravityGradientTerm(GravityGradient{1.0, o, {}}, bodies, kName); }, planar);
   expect_error([&] { GravityGradientTerm(GravityGradient{1.0, o, {2, 1}}, bodies, kName); }, planar);
   EXPECT_NO_THROW(GravityGradientTerm(GravityGradient{1.0, o, {2, 0}}, bodies, kName));
+}
+
+TEST(SceneElementErrors, MagneticDipole) {
+  const std::vector<Body> bodies = mixed_bodies();
+  MagneticDipole spec;
+  spec.m_B = Eigen::Vector3d(kNaN, 0, 0);
+  expect_error([&] { MagneticDipoleTerm(spec, bodies, kName); }, "elements[2].m_B: expected finite values, got [nan; 0; 0]");
+  spec.m_B = Eigen::Vector3d::UnitX(), spec.B_W = Eigen::Vector3d(0, kInf, 0);
+  expect_error([&] { MagneticDipoleTerm(spec, bodies, kName); }, "elements[2].B_W: expected finite values, got [0; inf; 0]");
+  spec.B_W.setZero(), spec.source_moment_W = Eigen::Vector3d(0, 0, kNaN);
+  expect_error([&] { MagneticDipoleTerm(spec, bodies, kName); },
+               "elements[2].source_moment_W: expected finite values, got [0; 0; nan]");
+  spec.source_moment_W.setZero(), spec.source_p_W = Eigen::Vector3d(-kInf, 0, 0);
+  expect_error([&] { MagneticDipoleTerm(spec, bodies, kName); },
+               "elements[2].source_p_W: expected finite values, got [-inf; 0; 0]");
+  spec.source_p_W.setZero(), spec.bodies = {4};
+  expect_error([&] { MagneticDipoleTerm(spec, bodies, kName); },
+               "elements[2].bodies[0]: expected a body index in [0, 4), got 4");
 }
 
 TEST(SceneElementErrors, SpringDamper) {

@@ -50,6 +50,8 @@ UNITS = {
     "N*s^2/m^2": [("N*s^2/m^2", 1.0)],
     "N*m*s/rad": [("N*m*s/rad", 1.0)],
     "N*m*s^2/rad^2": [("N*m*s^2/rad^2", 1.0)],
+    "A*m^2": [("A*m^2", 1.0), ("mA*cm^2", 1e-7)],
+    "T": [("T", 1.0), ("gauss", 1e-4)],
     "1": [("", 1.0)],
 }
 
@@ -128,7 +130,7 @@ def body_table(draw, name):
 
 def _force(draw, names, flows):
     kinds = ["uniform_gravity", "point_mass_gravity", "mutual_gravity", "gravity_gradient", "spring_damper", "drag",
-             "scheduled_loads"] + (["thrust"] if flows else [])
+             "scheduled_loads", "magnetic_dipole"] + (["thrust"] if flows else [])
     kind = draw(st.sampled_from(kinds))
     table = {"type": kind}
     some = draw(st.one_of(st.none(), st.lists(st.sampled_from(names), min_size=1, max_size=len(names), unique=True)))
@@ -172,6 +174,12 @@ def _force(draw, names, flows):
             loads.append(load)
         table["loads"] = loads
         some = None
+    elif kind == "magnetic_dipole":
+        table["m_B"] = draw(_vector(3, st.floats(-1.0, 1.0), "A*m^2"))
+        table["B_W"] = draw(_vector(3, st.floats(-1.0, 1.0), "T"))
+        if draw(st.booleans()):  # a source dipole far outside the bodies' reach
+            table["source_moment_W"] = draw(_vector(3, st.floats(-1e7, 1e7), "A*m^2"))
+            table["source_p_W"] = [Q(0.0, "m"), Q(0.0, "m"), Q(-50.0, "m")]
     else:  # thrust on a body with a mass flow
         table["body"] = draw(st.sampled_from(flows))
         table["u_rel"] = draw(_vector(3, st.floats(-100.0, 100.0), "m/s"))

@@ -191,7 +191,7 @@ RECIPES["monte_carlo.Statistics"] = st.tuples(RECIPES["monte_carlo.MonteCarloRes
 
 # the force element classes of a scene (Scene.add, Scene(elements=...))
 ELEMENT_CLASSES = ("UniformGravity", "PointMassGravity", "MutualGravity", "GravityGradient", "SpringDamper", "Drag",
-                   "ScheduledLoads", "PythonForce", "Thrust")
+                   "ScheduledLoads", "PythonForce", "Thrust", "MagneticDipole")
 
 
 # ---------------------------------------------------------------------------------------------

@@ -29,7 +29,7 @@ DESCRIBED = {
                  "CentrifugalForce (frame.centrifugal)", "CoriolisForce (frame.coriolis)", "digits of I_C lost",
                  "p_W [m] and v_W [m/s] in F"],
     "rocket": ["Mass flows", "-2 kg/s", "p_W, v_W (6) + m (1)", "no jet damping", "Thrust",
-               "u_rel = (0, 0, -2500) m/s in W"],
+               "u_rel = (0, 0, -2500) m/s, frame = world"],
 }
 
 

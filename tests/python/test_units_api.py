@@ -103,6 +103,13 @@ CASES = [
      Q(0.3, "N*s")),
     ("Drag.angular_quadratic", keyword(rd.Drag, "angular_quadratic"), "angular_quadratic", "N m s^2",
      Q(0.3, "lbf*ft*s^2"), Q(0.3, "N*m*s")),
+    ("MagneticDipole.m_B", keyword(rd.MagneticDipole, "m_B"), "m_B", "A m^2", Q(VECTOR, "mA*cm^2"), Q(VECTOR, "A")),
+    ("MagneticDipole.B_W", keyword(rd.MagneticDipole, "B_W", m_B=VECTOR), "B_W", "T", Q(VECTOR, "gauss"),
+     Q(VECTOR, "A/m")),
+    ("MagneticDipole.source_moment_W", keyword(rd.MagneticDipole, "source_moment_W", m_B=VECTOR), "source_moment_W",
+     "A m^2", Q(VECTOR, "kA*km^2"), Q(VECTOR, "J")),
+    ("MagneticDipole.source_p_W", keyword(rd.MagneticDipole, "source_p_W", m_B=VECTOR), "source_p_W", "m",
+     Q(VECTOR, "km"), Q(VECTOR, "T")),
     ("ScheduledLoads.point_B", keyword(rd.ScheduledLoads, "point_B", body=0), "point_B", "m", Q(VECTOR, "mm"),
      Q(VECTOR, "N")),
     ("AppliedLoad.force", keyword(rd.AppliedLoad, "force"), "force", "N", Q(VECTOR, "lbf"), Q(VECTOR, "N*m")),
@@ -112,7 +119,7 @@ CASES = [
 ]
 IDS = [case[0] for case in CASES]
 SI = {"kg m^2": "kg*m^2", "m^3/(kg s^2)": "m^3/(kg*s^2)", "N s/m": "N*s/m", "N s^2/m^2": "N*s^2/m^2",
-      "N m s": "N*m*s", "N m s^2": "N*m*s^2", "N m": "N*m"}
+      "N m s": "N*m*s", "N m s^2": "N*m*s^2", "N m": "N*m", "A m^2": "A*m^2"}
 
 
 def si_unit(spoken):

@@ -291,6 +291,7 @@ CompiledScene compile_scene(const Scene& scene, Method method) {
     const ElementTraits traits = std::visit([](const auto& term) { return term.traits(); }, terms[i]);
     out.element_names_.push_back("elements[" + std::to_string(i) + "]");
     out.element_types_.push_back(element_type_name(scene.elements[i]));
+    out.element_traits_.push_back(traits);
     detail::check_compatibility(method, traits, out.element_names_.back(), out.element_types_.back(), out.warnings_);
   }
   const detail::FrameTermSet frame = detail::frame_term_set(scene);
@@ -301,11 +302,12 @@ CompiledScene compile_scene(const Scene& scene, Method method) {
     if (!frame_terms[k].first) continue;
     out.element_names_.push_back(std::string("frame.") + frame_terms[k].second);
     out.element_types_.push_back(frame_types[k]);
+    const ElementTraits traits = std::visit([](const auto& term) { return term.traits(); }, terms[out.element_names_.size() - 1]);
+    out.element_traits_.push_back(traits);
     // the Coriolis term is velocity-dependent but linear in the velocities: every model's loads kick takes its
     // exact flow (scene_model.hpp detail::exact_linear_kick, the fast particle model's closed form), so the
     // kick-based splittings keep their order with it and warrant no warning
     if (k == 3) continue;
-    const ElementTraits traits = std::visit([](const auto& term) { return term.traits(); }, terms[out.element_names_.size() - 1]);
     detail::check_compatibility(method, traits, out.element_names_.back(), out.element_types_.back(), out.warnings_);
   }
   for (std::size_t i = 0; i < scene.bodies.size(); ++i) {

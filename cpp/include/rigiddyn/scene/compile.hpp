@@ -78,6 +78,8 @@ class CompiledScene {
   // "CoriolisForce").
   const std::vector<std::string>& element_names() const { return element_names_; }
   const std::vector<std::string>& element_types() const { return element_types_; }
+  // What each of those terms depends on and provides (scene/element_traits.hpp), in the same order.
+  const std::vector<ElementTraits>& element_traits() const { return element_traits_; }
 
  private:
   friend CompiledScene compile_scene(const Scene& scene, Method method);
@@ -91,6 +93,7 @@ class CompiledScene {
   ScenePath path_ = ScenePath::generic;
   std::shared_ptr<const FastSceneModel> fast_ = std::make_shared<const FastSceneModel>();
   std::vector<std::string> element_names_, element_types_;
+  std::vector<ElementTraits> element_traits_;
 };
 
 // Checks `scene` and compiles it for `method`. Throws std::invalid_argument "<field>: expected ..., got
@@ -128,7 +131,7 @@ std::vector<Term> compile_terms(const Scene& scene) {
           if constexpr (std::is_same_v<Spec, Thrust>) {
             terms.emplace_back(ThrustTerm(spec, scene.bodies, scene.mass_flows, name));
           } else {
-            terms.emplace_back(typename TermOf<Spec>::type(spec, scene.bodies, name));
+            terms.emplace_back(typename Spec::Term(spec, scene.bodies, name));
           }
         },
         scene.elements[i]);

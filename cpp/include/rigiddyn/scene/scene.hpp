@@ -4,15 +4,7 @@
 // identically zero); simulate/step (scene/simulate_scene.hpp) run it.
 #pragma once
 #include "rigiddyn/scene/body.hpp"
-#include "rigiddyn/scene/elements/drag.hpp"
-#include "rigiddyn/scene/elements/function_force.hpp"
-#include "rigiddyn/scene/elements/gravity_gradient.hpp"
-#include "rigiddyn/scene/elements/mutual_gravity.hpp"
-#include "rigiddyn/scene/elements/point_mass_gravity.hpp"
-#include "rigiddyn/scene/elements/scheduled_loads.hpp"
-#include "rigiddyn/scene/elements/spring_damper.hpp"
-#include "rigiddyn/scene/elements/thrust.hpp"
-#include "rigiddyn/scene/elements/uniform_gravity.hpp"
+#include "rigiddyn/scene/elements/element_list.hpp"
 #include "rigiddyn/scene/mass_flow.hpp"
 #include "rigiddyn/scene/scene_frame.hpp"
 
@@ -24,10 +16,6 @@
 #include <vector>
 
 namespace rigiddyn {
-
-// Every force element a scene can declare (one spec per file under scene/elements/).
-using Element = std::variant<UniformGravity, PointMassGravity, MutualGravity, GravityGradient, SpringDamper, Drag,
-                             ScheduledLoads, FunctionForce, Thrust>;
 
 struct Scene;
 
@@ -86,28 +74,6 @@ std::optional<std::size_t> find_body(Scene& scene, const std::string& name);
 inline bool has_mass_flow(const Scene& scene, std::size_t i) {
   return i < scene.mass_flows.size() && scene.mass_flows[i].has_value();
 }
-
-// The compiled term of each element spec: TermOf<UniformGravity> = UniformGravityTerm, ...
-template <class Spec>
-struct TermOf;
-template <>
-struct TermOf<UniformGravity> { using type = UniformGravityTerm; };
-template <>
-struct TermOf<PointMassGravity> { using type = PointMassGravityTerm; };
-template <>
-struct TermOf<MutualGravity> { using type = MutualGravityTerm; };
-template <>
-struct TermOf<GravityGradient> { using type = GravityGradientTerm; };
-template <>
-struct TermOf<SpringDamper> { using type = SpringDamperTerm; };
-template <>
-struct TermOf<Drag> { using type = DragTerm; };
-template <>
-struct TermOf<ScheduledLoads> { using type = ScheduledLoadsTerm; };
-template <>
-struct TermOf<FunctionForce> { using type = FunctionForceTerm; };
-template <>
-struct TermOf<Thrust> { using type = ThrustTerm; };
 
 // The name of body i in messages and results: body_names[i], or "body<i>" when it is empty or missing.
 inline std::string body_name(const Scene& scene, std::size_t i) {

@@ -247,9 +247,7 @@ class BasicSceneModel {
  public:
   using Coordinates = Eigen::VectorXd;
   using Tangent = Eigen::VectorXd;
-  using Term = std::variant<UniformGravityTerm, PointMassGravityTerm, MutualGravityTerm, GravityGradientTerm,
-                            SpringDamperTerm, DragTerm, ScheduledLoadsTerm, FunctionForceTerm, ThrustTerm,
-                            FrameOriginTerm, EulerForceTerm, CentrifugalTerm, CoriolisTerm, Extra...>;
+  using Term = typename TermsOf<Element, FrameOriginTerm, EulerForceTerm, CentrifugalTerm, CoriolisTerm, Extra...>::type;
 
   // The bodies (checked when they were built) and the compiled terms, in the scene's order.
   BasicSceneModel(const std::vector<Body>& bodies, std::vector<Term> terms)

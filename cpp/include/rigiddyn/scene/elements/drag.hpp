@@ -8,6 +8,7 @@
 #include "rigiddyn/scene/body.hpp"
 #include "rigiddyn/scene/body_kinematics.hpp"
 #include "rigiddyn/scene/element_bodies.hpp"
+#include "rigiddyn/scene/element_fields.hpp"
 #include "rigiddyn/scene/element_traits.hpp"
 #include "rigiddyn/scene/elements/element_checks.hpp"
 
@@ -15,19 +16,39 @@
 
 #include <cmath>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace rigiddyn {
+
+class DragTerm;
 
 // The spec: linear c₁ [N s/m] and quadratic c₂ [N s²/m²] coefficients of the force, angular_linear d₁
 // [N m s] and angular_quadratic d₂ [N m s²] of the torque, all >= 0, on `bodies` (empty: every body).
 struct Drag {
   static constexpr const char* element_type = "Drag";  // its name in records and messages
+  static constexpr const char* doc =  // the Python class's docstring
+      "Linear and quadratic drag on the listed bodies: f_W = -(linear + quadratic |v_W|) v_W [N] at the centre "
+      "of mass and tau_B = -(angular_linear + angular_quadratic |w_B|) w_B [N m]. Velocity-dependent: the "
+      "splitting methods warn (SceneCompatibilityWarning).";
+  using Term = DragTerm;  // what compile makes of it
   double linear = 0.0;
   double quadratic = 0.0;
   double angular_linear = 0.0;
   double angular_quadratic = 0.0;
   BodyList bodies;
+
+  // the field table (scene/element_fields.hpp)
+  static constexpr auto fields() {
+    return std::make_tuple(
+        scalar_field("linear", &Drag::linear, "N*s/m", "c1 of f_W = -(c1 + c2 |v_W|) v_W [N s/m]").at_least_zero(),
+        scalar_field("quadratic", &Drag::quadratic, "N*s^2/m^2", "c2 of f_W = -(c1 + c2 |v_W|) v_W [N s^2/m^2]").at_least_zero(),
+        scalar_field("angular_linear", &Drag::angular_linear, "N*m*s", "d1 of tau_B = -(d1 + d2 |w_B|) w_B [N m s/rad]")
+            .at_least_zero(),
+        scalar_field("angular_quadratic", &Drag::angular_quadratic, "N*m*s^2",
+                     "d2 of tau_B = -(d1 + d2 |w_B|) w_B [N m s^2/rad^2]").at_least_zero(),
+        bodies_field(&Drag::bodies));
+  }
 };
 
 // The compiled term.

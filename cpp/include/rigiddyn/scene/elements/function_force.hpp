@@ -8,12 +8,14 @@
 #include "rigiddyn/scene/body.hpp"
 #include "rigiddyn/scene/body_kinematics.hpp"
 #include "rigiddyn/scene/element_bodies.hpp"
+#include "rigiddyn/scene/element_fields.hpp"
 #include "rigiddyn/scene/element_traits.hpp"
 
 #include <Eigen/Core>
 
 #include <functional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace rigiddyn {
@@ -46,11 +48,24 @@ using ForceFunction = std::function<void(double t, const BodyKinematics& body, i
 // The spec: the user function `f` applied to `bodies` (empty: every body), and the name the element goes by in
 // records and messages (element_type_name: compile's warnings and refusals, the work and power columns' labels).
 // The Python binding sets "PythonForce", its class's name, so that a Python user meets one name everywhere.
+class FunctionForceTerm;
+
 struct FunctionForce {
   static constexpr const char* element_type = "FunctionForce";  // the default of type_name
+  static constexpr bool keyword_only = false;  // PythonForce(fn) reads well
+  using Term = FunctionForceTerm;  // what compile makes of it
   BodyList bodies;
   ForceFunction f;
   std::string type_name = element_type;
+
+  // the field table (scene/element_fields.hpp): the function first, as the Python class takes it
+  static constexpr auto fields() {
+    return std::make_tuple(ElementField<FunctionForce, ForceFunction>{"fn", &FunctionForce::f, FieldKind::callable, "",
+                                                                      "the callable fn(t, body, p_W, q_WB, v_W, w_B) -> "
+                                                                      "(f_W, tau_B)"}
+                               .must_be_given(),
+                           bodies_field(&FunctionForce::bodies));
+  }
 };
 
 // The compiled term.

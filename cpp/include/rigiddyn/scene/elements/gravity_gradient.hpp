@@ -23,6 +23,7 @@
 #include "rigiddyn/scene/body.hpp"
 #include "rigiddyn/scene/body_kinematics.hpp"
 #include "rigiddyn/scene/element_bodies.hpp"
+#include "rigiddyn/scene/element_fields.hpp"
 #include "rigiddyn/scene/element_traits.hpp"
 
 #include <Eigen/Core>
@@ -30,18 +31,35 @@
 
 #include <cmath>
 #include <string>
+#include <tuple>
 #include <variant>
 #include <vector>
 
 namespace rigiddyn {
 
+class GravityGradientTerm;
+
 // The spec: gravitational parameter gm = G M [m³/s²] of an attractor fixed at p_W [m] in W, acting on
 // `bodies` (empty: every body; particles are skipped, planar bodies refused).
 struct GravityGradient {
   static constexpr const char* element_type = "GravityGradient";  // its name in records and messages
+  static constexpr const char* doc =  // the Python class's docstring
+      "The gravity-gradient (MacCullagh) term of a central attractor gm at p_W in W on extended bodies: torque "
+      "tau_B = 3 gm/|r|^5 r_B x (I r_B) [N m] and the matching force, so that the potential V2 = -gm/(2|r|^3) "
+      "(tr I - 3 r^T I_W r/|r|^2) [J] is conserved with the motion; no effect on particles.";
+  using Term = GravityGradientTerm;  // what compile makes of it
   double gm = 0.0;
   Eigen::Vector3d p_W = Eigen::Vector3d::Zero();
   BodyList bodies;
+
+  // the field table (scene/element_fields.hpp)
+  static constexpr auto fields() {
+    return std::make_tuple(
+        scalar_field("gm", &GravityGradient::gm, "m^3/s^2", "gravitational parameter GM of the central attractor [m^3/s^2]")
+            .must_be_given().above_zero(),
+        vector_field("p_W", &GravityGradient::p_W, "m", "(3,) position of the attractor in W [m]"),
+        bodies_field(&GravityGradient::bodies));
+  }
 };
 
 // The compiled term: the listed rigid bodies with their inertia about the centre of mass.

@@ -10,6 +10,7 @@
 #include "rigiddyn/scene/body.hpp"
 #include "rigiddyn/scene/body_kinematics.hpp"
 #include "rigiddyn/scene/element_bodies.hpp"
+#include "rigiddyn/scene/element_fields.hpp"
 #include "rigiddyn/scene/element_traits.hpp"
 #include "rigiddyn/scene/elements/element_checks.hpp"
 
@@ -17,17 +18,33 @@
 
 #include <cmath>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace rigiddyn {
+
+class MutualGravityTerm;
 
 // The spec: gravitational constant G [m³/(kg s²)], softening length [m] (0: exact law), between the
 // `bodies` (empty: every body; fewer than two: no pair, no force).
 struct MutualGravity {
   static constexpr const char* element_type = "MutualGravity";  // its name in records and messages
+  static constexpr const char* doc =  // the Python class's docstring
+      "Newtonian gravity between the listed bodies (direct O(N^2) sum over the pairs): f on i = -G m_i m_j "
+      "r/(|r|^2 + softening^2)^(3/2), r = p_i - p_j [N], potential V = sum -G m_i m_j/sqrt(|r|^2 + softening^2)"
+      " [J].";
+  using Term = MutualGravityTerm;  // what compile makes of it
   double G = 6.67430e-11;
   double softening = 0.0;
   BodyList bodies;
+
+  // the field table (scene/element_fields.hpp)
+  static constexpr auto fields() {
+    return std::make_tuple(
+        scalar_field("G", &MutualGravity::G, "m^3/(kg*s^2)", "gravitational constant [m^3/(kg s^2)]").above_zero(),
+        scalar_field("softening", &MutualGravity::softening, "m", "softening length epsilon [m] (0: none)").at_least_zero(),
+        bodies_field(&MutualGravity::bodies, "None (every body) or a tuple of the indices of the bodies that attract each other"));
+  }
 };
 
 // The compiled term: the listed bodies (their masses read from the kinematics, k.m, with

@@ -9,6 +9,7 @@
 #include "rigiddyn/scene/body.hpp"
 #include "rigiddyn/scene/body_kinematics.hpp"
 #include "rigiddyn/scene/element_bodies.hpp"
+#include "rigiddyn/scene/element_fields.hpp"
 #include "rigiddyn/scene/element_traits.hpp"
 #include "rigiddyn/scene/elements/element_checks.hpp"
 
@@ -16,18 +17,35 @@
 
 #include <cmath>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace rigiddyn {
+
+class PointMassGravityTerm;
 
 // The spec: gravitational parameter gm = G M [m³/s²] of an attractor fixed at p_W [m] in W, softening
 // length [m] (0: exact Newtonian law), acting on `bodies` (empty: every body).
 struct PointMassGravity {
   static constexpr const char* element_type = "PointMassGravity";  // its name in records and messages
+  static constexpr const char* doc =  // the Python class's docstring
+      "A fixed attractor of gravitational parameter gm at p_W in W: on each listed body f_W = -gm m r/(|r|^2 + "
+      "softening^2)^(3/2), r = p_body - p_W, potential V = -gm m/sqrt(|r|^2 + softening^2) [J].";
+  using Term = PointMassGravityTerm;  // what compile makes of it
   double gm = 0.0;
   Eigen::Vector3d p_W = Eigen::Vector3d::Zero();
   double softening = 0.0;
   BodyList bodies;
+
+  // the field table (scene/element_fields.hpp)
+  static constexpr auto fields() {
+    return std::make_tuple(
+        scalar_field("gm", &PointMassGravity::gm, "m^3/s^2", "gravitational parameter GM of the attractor [m^3/s^2]")
+            .must_be_given().above_zero(),
+        vector_field("p_W", &PointMassGravity::p_W, "m", "(3,) position of the fixed attractor in W [m]"),
+        scalar_field("softening", &PointMassGravity::softening, "m", "softening length epsilon [m] (0: none)").at_least_zero(),
+        bodies_field(&PointMassGravity::bodies));
+  }
 };
 
 // The compiled term: the listed bodies (their masses read from the kinematics, k.m).

@@ -10,23 +10,43 @@
 #include "rigiddyn/models/loads.hpp"
 #include "rigiddyn/scene/body.hpp"
 #include "rigiddyn/scene/body_kinematics.hpp"
+#include "rigiddyn/scene/element_fields.hpp"
 #include "rigiddyn/scene/element_traits.hpp"
 
 #include <Eigen/Core>
 
 #include <string>
+#include <tuple>
 #include <variant>
 #include <vector>
 
 namespace rigiddyn {
 
+class ScheduledLoadsTerm;
+
 // The spec: the schedule `loads` on body `body`, forces applied at point_B [m] (in B, from the centre of
 // mass; zero: through the centre of mass).
 struct ScheduledLoads {
   static constexpr const char* element_type = "ScheduledLoads";  // its name in records and messages
+  static constexpr const char* doc =  // the Python class's docstring
+      "The piecewise-constant schedule `loads` (AppliedLoad or a sequence: force [N] and torque [N m], each in "
+      "W or B, active on [t_start, t_end) [s]) on body `body`, the forces applied at point_B (in B, from the "
+      "centre of mass; adds the torque point_B x f_B). A run splits its steps at the switch times, as simulate "
+      "does for one body.";
+  using Term = ScheduledLoadsTerm;  // what compile makes of it
   int body = 0;
   std::vector<AppliedLoad> loads;
   Eigen::Vector3d point_B = Eigen::Vector3d::Zero();
+
+  // the field table (scene/element_fields.hpp)
+  static constexpr auto fields() {
+    return std::make_tuple(
+        body_field("body", &ScheduledLoads::body, "index of the body the loads act on"),
+        ElementField<ScheduledLoads, std::vector<AppliedLoad>>{"loads", &ScheduledLoads::loads, FieldKind::loads, "",
+                                                               "tuple of AppliedLoad: the piecewise-constant schedule"},
+        vector_field("point_B", &ScheduledLoads::point_B, "m",
+                     "(3,) point of application of the forces in B, from the centre of mass [m]"));
+  }
 };
 
 // The compiled term: the schedule and the loads of the current piece.

@@ -13,6 +13,7 @@
 #include "rigiddyn/check.hpp"
 #include "rigiddyn/scene/body.hpp"
 #include "rigiddyn/scene/body_kinematics.hpp"
+#include "rigiddyn/scene/element_fields.hpp"
 #include "rigiddyn/scene/element_traits.hpp"
 #include "rigiddyn/scene/elements/element_checks.hpp"
 
@@ -21,15 +22,25 @@
 
 #include <cmath>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace rigiddyn {
+
+class SpringDamperTerm;
 
 // The spec: body_a and point_a_B [m] (in a's frame B, from its centre of mass); body_b = −1 with the
 // world anchor point_b [m] in W, or body_b >= 0 with point_b in b's frame B (from its centre of mass);
 // stiffness k [N/m], rest_length ℓ0 [m], damping c [N s/m], all >= 0.
 struct SpringDamper {
   static constexpr const char* element_type = "SpringDamper";  // its name in records and messages
+  static constexpr const char* doc =  // the Python class's docstring
+      "A linear spring and damper between point_a_B of body_a (in its frame B, from its centre of mass) and "
+      "point_b of body_b (in its B) or, body_b None, the world anchor point_b in W. Force on a: -(stiffness (l "
+      "- rest_length) + damping dl/dt) u, u = (x_a - x_b)/l, l = |x_a - x_b| [N], along the line (no force at l"
+      " = 0), so the pair conserves momentum and angular momentum; the opposite on b; torque r x f about each "
+      "centre of mass. Potential V = stiffness (l - rest_length)^2/2 [J].";
+  using Term = SpringDamperTerm;  // what compile makes of it
   int body_a = 0;
   Eigen::Vector3d point_a_B = Eigen::Vector3d::Zero();
   int body_b = -1;
@@ -37,6 +48,27 @@ struct SpringDamper {
   double stiffness = 0.0;
   double rest_length = 0.0;
   double damping = 0.0;
+
+  // What the fields must satisfy together (the Python class checks it when built, the term again): end b
+  // is not body a.
+  void check_fields() const {
+    if (body_b == body_a) {
+      throw_invalid("body_b", "None (a world anchor) or a body other than body_a = " + std::to_string(body_a), body_b);
+    }
+  }
+
+  // the field table (scene/element_fields.hpp)
+  static constexpr auto fields() {
+    return std::make_tuple(
+        body_field("body_a", &SpringDamper::body_a, "index of the body at end a"),
+        vector_field("point_a_B", &SpringDamper::point_a_B, "m", "(3,) end a in body a's frame B, from its centre of mass [m]"),
+        optional_body_field("body_b", &SpringDamper::body_b, "index of the body at end b, or None: end b is the world anchor point_b"),
+        vector_field("point_b", &SpringDamper::point_b, "m",
+                     "(3,) end b: in body b's frame B from its centre of mass, or in W if body_b is None [m]"),
+        scalar_field("stiffness", &SpringDamper::stiffness, "N/m", "spring stiffness k [N/m]").must_be_given().at_least_zero(),
+        scalar_field("rest_length", &SpringDamper::rest_length, "m", "rest length l0 [m]").at_least_zero(),
+        scalar_field("damping", &SpringDamper::damping, "N*s/m", "damping coefficient c [N s/m]").at_least_zero());
+  }
 };
 
 // The compiled term.

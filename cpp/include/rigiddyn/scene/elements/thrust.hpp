@@ -11,6 +11,7 @@
 #include "rigiddyn/check.hpp"
 #include "rigiddyn/scene/body.hpp"
 #include "rigiddyn/scene/body_kinematics.hpp"
+#include "rigiddyn/scene/element_fields.hpp"
 #include "rigiddyn/scene/element_traits.hpp"
 #include "rigiddyn/scene/elements/element_checks.hpp"
 #include "rigiddyn/scene/mass_flow.hpp"
@@ -22,20 +23,44 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <variant>
 #include <vector>
 
 namespace rigiddyn {
+
+class ThrustTerm;
 
 // The spec: the thrust of body `body` (which must have a MassFlow), u_rel [m/s] the velocity of the
 // exchanged mass relative to the body, in `frame` (Frame::body: in B, turning with the body; Frame::world:
 // in the scene frame), applied at r_B [m] (in B, from the centre of mass; zero: through it).
 struct Thrust {
   static constexpr const char* element_type = "Thrust";  // its name in records and messages
+  static constexpr const char* doc =  // the Python class's docstring
+      "The thrust of a body whose mass changes (its MassFlow, given to Scene.add_body): f = (dm/dt) u_rel [N] "
+      "(\"Rigid body kinematics and dynamics\" notes, eq. (4.36): d(m v)/dt = f + (dm/dt)(v + u_rel), so m "
+      "dv/dt = f + (dm/dt) u_rel), u_rel the velocity of the mass leaving (dm/dt < 0: u_rel backwards pushes "
+      "forwards) or joining the body, relative to it, in `frame` ('body': in B, turning with the body; 'world':"
+      " in the scene frame W), applied at r_B in B from the centre of mass (adds the torque r_B x f_B). "
+      "Scene.add refuses it (ValueError naming element.body) on a body without a MassFlow. No potential; its "
+      "power is in SceneResult.power.";
+  static constexpr bool keyword_only = false;  // its Python class also takes its fields by position
+  using Term = ThrustTerm;  // what compile makes of it
   int body = 0;
   Eigen::Vector3d u_rel = Eigen::Vector3d::Zero();
   Frame frame = Frame::body;
   Eigen::Vector3d r_B = Eigen::Vector3d::Zero();
+
+  // the field table (scene/element_fields.hpp)
+  static constexpr auto fields() {
+    return std::make_tuple(
+        body_field("body", &Thrust::body, "index of the body (one with a MassFlow) whose exchanged mass pushes it"),
+        vector_field("u_rel", &Thrust::u_rel, "m/s", "(3,) velocity of the exchanged mass relative to the body, in `frame` [m/s]")
+            .must_be_given(),
+        ElementField<Thrust, Frame>{"frame", &Thrust::frame, FieldKind::frame, "",
+                                    "'body' (u_rel in B, turning with the body) or 'world' (in the scene frame W)"},
+        vector_field("r_B", &Thrust::r_B, "m", "(3,) point of application in B, from the centre of mass [m]"));
+  }
 };
 
 namespace detail {

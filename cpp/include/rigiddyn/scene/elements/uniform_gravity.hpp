@@ -5,20 +5,35 @@
 #include "rigiddyn/scene/body.hpp"
 #include "rigiddyn/scene/body_kinematics.hpp"
 #include "rigiddyn/scene/element_bodies.hpp"
+#include "rigiddyn/scene/element_fields.hpp"
 #include "rigiddyn/scene/element_traits.hpp"
 
 #include <Eigen/Core>
 
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace rigiddyn {
 
+class UniformGravityTerm;
+
 // The spec: gravity g_W [m/s²] in W on `bodies` (empty: every body).
 struct UniformGravity {
   static constexpr const char* element_type = "UniformGravity";  // its name in records and messages
-  Eigen::Vector3d g_W = Eigen::Vector3d::Zero();
+  static constexpr const char* doc =  // the Python class's docstring
+      "Uniform gravity on the listed bodies: f_W = m g_W at each centre of mass, potential V = -m g_W . p_W "
+      "[J]. A planar body keeps the in-plane part (the plane takes the rest).";
+  using Term = UniformGravityTerm;  // what compile makes of it
+  Eigen::Vector3d g_W = Eigen::Vector3d(0.0, 0.0, -9.81);  // standard gravity, downwards along −z_W
   BodyList bodies;
+
+  // the field table (scene/element_fields.hpp)
+  static constexpr auto fields() {
+    return std::make_tuple(
+        vector_field("g_W", &UniformGravity::g_W, "m/s^2", "(3,) gravitational acceleration in W [m/s^2]"),
+        bodies_field(&UniformGravity::bodies));
+  }
 };
 
 // The compiled term: the listed bodies (their masses read from the kinematics, k.m, so
