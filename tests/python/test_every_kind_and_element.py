@@ -48,6 +48,8 @@ ELEMENT_EXAMPLES = {
     "Drag": rd.Drag(linear=0.1, quadratic=0.01, angular_linear=0.02, angular_quadratic=0.001),
     "ScheduledLoads": rd.ScheduledLoads(body=1, loads=[rd.AppliedLoad(force=[1.0, 0.0, 0.0], frame="body")]),
     "Thrust": rd.Thrust(body=0, u_rel=[0.0, 0.0, -100.0], frame="world"),
+    "MagneticDipole": rd.MagneticDipole(m_B=[0.0, 0.0, 1.0], B_W=[2e-5, 0.0, -4e-5], source_moment_W=[0.0, 0.0, 1e3],
+                                        source_p_W=[0.0, 0.0, -1.0], bodies=[1]),
     "PythonForce": rd.PythonForce(_force),
 }
 
