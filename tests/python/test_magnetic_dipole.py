@@ -34,7 +34,7 @@ def magnetic_scene(seed, field):
     one with a full inertia, at the corners of a 2 m square) under two MagneticDipole elements of the `field`
     kind ('uniform': B_W only; 'source': the source dipole only; 'both'): one on every body, one listing the
     particle and the principal rigid body (the particle is skipped). |m_B| ≤ 1.7 A m², |B_W| ≤ 1.7 T, the
-    source within 0.35 m of W's origin with k|M| ≤ 0.35 T m³ (k = μ0/(4π)), so ≥ 0.8 m from every body: forces
+    source within 0.35 m of W's origin with k|M| ≤ 0.35 T m³ (k = μ0/(4π)), so ≥ 0.6 m from every body: forces
     ≲ 2 N, torques ≲ 2 N m."""
     rng = np.random.default_rng(seed)
     bodies = random_bodies(rng)
