@@ -99,6 +99,11 @@ def random_elements(rng, kind, bodies):
         c = rng.uniform(0, 2, 4)
         return [ref.Element(kind, dict(linear=c[0], quadratic=c[1], angular_linear=c[2], angular_quadratic=c[3],
                                        bodies=None))]
+    if kind == "MagneticDipole":  # the source ≥ 0.6 m from every body, k|M| ≤ 0.35 T m³: ≲ 2 N, 2 N m
+        return [ref.Element(kind, dict(m_B=rng.uniform(-1, 1, 3), B_W=rng.uniform(-1, 1, 3),
+                                       source_moment_W=rng.uniform(-2e6, 2e6, 3),
+                                       source_p_W=rng.uniform(-0.2, 0.2, 3), bodies=None)),
+                ref.Element(kind, dict(m_B=rng.uniform(-1, 1, 3), B_W=rng.uniform(-1, 1, 3), bodies=[0, 1, 3]))]
     if kind == "ScheduledLoads":
         kinds = [body.kind for body in bodies]
         return [ref.Element(kind, dict(body=b, point_B=rng.uniform(-0.5, 0.5, 3) if b >= 2 else np.zeros(3),
@@ -110,7 +115,8 @@ def random_elements(rng, kind, bodies):
 
 
 KINDS = list(ref.FORCE_MODELS)
-CONSERVATIVE = ["UniformGravity", "PointMassGravity", "MutualGravity", "GravityGradient", "SpringDamper"]
+CONSERVATIVE = ["UniformGravity", "PointMassGravity", "MutualGravity", "GravityGradient", "SpringDamper",
+                "MagneticDipole"]
 
 
 def random_scene(seed, kinds):

@@ -8,7 +8,10 @@ Written from the texts: Newton's law f = m a per body (Rigid-body notes (4.35), 
 F = G M m / r² along the line of centres (Craig, "Basic Concepts": Mass); plane kinetics Σf = m a_G,
 Σn_z = I α (Craig, "Rigid Body Plane Kinetics"); the work–energy equation T2 − T1 = U12 (Craig,
 "Work-Energy Equation"). The gravity-gradient term is MacCullagh's second-order potential of a central
-attractor on an extended body, V₂ = −GM/(2|r|³)(tr I − 3 r̂ᵀ I_W r̂); its force is derived below.
+attractor on an extended body, V₂ = −GM/(2|r|³)(tr I − 3 r̂ᵀ I_W r̂); its force is derived below. The
+magnetic dipole is standard magnetostatics (Jackson, "Classical Electrodynamics", §5.6: the field of a
+magnetic dipole, B = μ0/(4π) (3 r̂ (r̂·M) − M)/|r|³; §5.7: on a dipole m in a field B the torque τ = m × B,
+the energy U = −m·B and the force ∇(m·B)), with μ0 of CODATA 2018.
 
 Bodies (`particle`, `planar`, `rigid`) and the per-body state layout (y, a flat vector), per body:
   particle  (p_W:3, v_W:3)                                      6
@@ -20,10 +23,10 @@ q = Rz(θ), v = (v_x, v_y, 0), w = (0, 0, ω). A planar body keeps only the in-p
 (f_x, f_y, n_z): the plane's reaction takes the rest.
 
 An element is data, Element(kind, params) with the parameter names of rigiddyn's Python classes
-(UniformGravity, PointMassGravity, MutualGravity, GravityGradient, SpringDamper, Drag, ScheduledLoads);
-`evaluate` calls the force model of its kind, which returns an Effect: the force f_W (nb, 3) [N] in W at
-each centre of mass, the couple tau_B (nb, 3) [N m] in each body's B, the power Σ f·v + τ·ω [W] and the
-potential [J] (0 where the model has none). rk4_step splits a step at the schedules' switch times, as
+(UniformGravity, PointMassGravity, MutualGravity, GravityGradient, SpringDamper, Drag, ScheduledLoads,
+MagneticDipole); `evaluate` calls the force model of its kind, which returns an Effect: the force f_W (nb, 3)
+[N] in W at each centre of mass, the couple tau_B (nb, 3) [N m] in each body's B, the power Σ f·v + τ·ω [W]
+and the potential [J] (0 where the model has none). rk4_step splits a step at the schedules' switch times, as
 rigiddyn does.
 """
 
@@ -285,9 +288,66 @@ def scheduled_loads(bodies, kin, t, body, loads, point_B=(0.0, 0.0, 0.0)) -> Eff
     return _effect(f_W, tau_B, kin)
 
 
+MU0 = 1.25663706212e-6  # vacuum magnetic permeability μ0 [N/A²] (CODATA 2018)
+
+
+def dipole_field(moment_W, r_W) -> np.ndarray:
+    """B [T] at r_W [m] from a point dipole of moment moment_W [A m²] (both in W):
+    B = μ0/(4π) (3 r̂ (r̂·M) − M)/|r|³ (Jackson, §5.6)."""
+    d = np.sqrt(r_W @ r_W)
+    u = r_W / d
+    return MU0 / (4.0 * np.pi) * (3.0 * u * (u @ moment_W) - moment_W) / d ** 3
+
+
+def magnetic_field(p_W, B_W, source_moment_W, source_p_W) -> np.ndarray:
+    """B(p) = B_W + the field of the dipole source_moment_W [A m²] at source_p_W [m] (dipole_field of
+    r = p − source_p_W; left out when the moment is zero) [T], at p_W [m]; every vector in W."""
+    source_moment_W = np.asarray(source_moment_W, float)
+    field = np.array(B_W, float)
+    if np.any(source_moment_W != 0.0):
+        field += dipole_field(source_moment_W, np.asarray(p_W, float) - np.asarray(source_p_W, float))
+    return field
+
+
+def dipole_dipole_force(m_W, M_W, r_W) -> np.ndarray:
+    """f = ∇_r (m·B_M(r)) [N] on the dipole m at r from the dipole M (the attitude of m held). With k = μ0/(4π),
+    m·B_M = k (3 (m·r)(M·r)/|r|⁵ − (m·M)/|r|³), ∇(m·r) = m, ∇|r|⁻ⁿ = −n r |r|⁻ⁿ⁻²:
+        f = 3k/|r|⁵ ((m·r) M + (M·r) m + (m·M) r − 5 (m·r)(M·r) r/|r|²).
+    Symmetric in (m, M) and odd in r: the source feels −f (action and reaction)."""
+    d2 = r_W @ r_W
+    mr, Mr = m_W @ r_W, M_W @ r_W
+    return 3.0 * MU0 / (4.0 * np.pi) / d2 ** 2.5 * (mr * M_W + Mr * m_W + (m_W @ M_W) * r_W - 5.0 * mr * Mr / d2 * r_W)
+
+
+def magnetic_dipole(bodies, kin, t, m_B, B_W=(0.0, 0.0, 0.0), source_moment_W=(0.0, 0.0, 0.0),
+                    source_p_W=(0.0, 0.0, 0.0), bodies_acted=None) -> Effect:
+    """Each acting body carries the dipole m_B [A m²] fixed in its B, at its centre of mass, in the field
+    B(p) = B_W [T] + the field of the fixed dipole source_moment_W [A m²] at source_p_W [m] (magnetic_field).
+    With m_W = R_WB m_B (Jackson, §5.7):
+        τ_B = m_B × B_B, B_B = R_WBᵀ B(p);  f_W = ∇_p (m_W·B(p)) (dipole_dipole_force; 0 in the uniform part);
+        V = −m_W·B(p) [J],
+    so that f·v + τ·ω = −dV/dt. Particles have no attitude: skipped, even when listed. Planar bodies: the
+    full wrench (body_rate keeps f_x, f_y and τ_z), with p = (x, y, 0) and q = Rz(θ)."""
+    f_W, tau_B = _zeros(bodies)
+    m_B, source_moment_W = np.asarray(m_B, float), np.asarray(source_moment_W, float)
+    potential = 0.0
+    for i in _acting(bodies, bodies_acted):
+        if bodies[i].kind == "particle":
+            continue
+        k = kin[i]
+        m_W = to_world(k.q_WB, m_B)
+        field_W = magnetic_field(k.p_W, B_W, source_moment_W, source_p_W)
+        tau_B[i] = cross(m_B, to_body(k.q_WB, field_W))
+        if np.any(source_moment_W != 0.0):
+            f_W[i] = dipole_dipole_force(m_W, source_moment_W, k.p_W - np.asarray(source_p_W, float))
+        potential -= m_W @ field_W
+    return _effect(f_W, tau_B, kin, potential)
+
+
 FORCE_MODELS = {"UniformGravity": uniform_gravity, "PointMassGravity": point_mass_gravity,
                 "MutualGravity": mutual_gravity, "GravityGradient": gravity_gradient,
-                "SpringDamper": spring_damper, "Drag": drag, "ScheduledLoads": scheduled_loads}
+                "SpringDamper": spring_damper, "Drag": drag, "ScheduledLoads": scheduled_loads,
+                "MagneticDipole": magnetic_dipole}
 
 
 class Element(NamedTuple):
@@ -437,10 +497,11 @@ def angular_momentum(scene: Scene, y) -> np.ndarray:
                for b, k in zip(scene.bodies, kinematics(scene.bodies, y)))
 
 
-__all__ = ["Body", "Effect", "Element", "FORCE_MODELS", "IDENTITY", "Kinematics", "STATE_SIZE", "Scene",
-           "angular_momentum", "body_offsets", "body_rate", "drag", "effects", "evaluate", "gravity_gradient",
-           "gravity_gradient_force", "gravity_gradient_potential", "gravity_gradient_torque", "initial_state",
-           "kinematics", "kinetic_energy", "linear_momentum", "mutual_gravity", "normalise_attitudes", "particle",
-           "planar", "point_mass_gravity", "point_position", "point_velocity", "potential_energy", "rate", "rigid",
-           "rk4_run", "rk4_step", "rz_quat", "schedule_switches", "scheduled_loads", "spring_damper", "state_of",
-           "time_of", "uniform_gravity", "work_of"]
+__all__ = ["Body", "Effect", "Element", "FORCE_MODELS", "IDENTITY", "Kinematics", "MU0", "STATE_SIZE", "Scene",
+           "angular_momentum", "body_offsets", "body_rate", "dipole_dipole_force", "dipole_field", "drag",
+           "effects", "evaluate", "gravity_gradient", "gravity_gradient_force", "gravity_gradient_potential",
+           "gravity_gradient_torque", "initial_state", "kinematics", "kinetic_energy", "linear_momentum",
+           "magnetic_dipole", "magnetic_field", "mutual_gravity", "normalise_attitudes", "particle", "planar",
+           "point_mass_gravity", "point_position", "point_velocity", "potential_energy", "rate", "rigid", "rk4_run",
+           "rk4_step", "rz_quat", "schedule_switches", "scheduled_loads", "spring_damper", "state_of", "time_of",
+           "uniform_gravity", "work_of"]
