@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['AppliedLoad', 'BatchResult', 'BatchSceneResult', 'BodyAcceleration', 'ComWrench', 'CompiledScene', 'CompoundPendulumSolution', 'ConstantThrustSolution', 'DensityIntegral', 'Drag', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'GravityGradient', 'InertiaCheck', 'InertiaReport', 'KineticEnergy', 'LagrangeTopSolution', 'MassFlow', 'MeshWeldWarning', 'Motion', 'MutualGravity', 'Particle', 'ParticleState', 'PivotedAcceleration', 'PivotedBody', 'PivotedBodyState', 'PivotedPlanarAcceleration', 'PivotedPlanarBody', 'PivotedPlanarBodyState', 'PivotedPlanarTorque', 'PivotedTorque', 'PlanarAcceleration', 'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointMassGravity', 'PointVelocity', 'PrincipalAxes', 'PythonForce', 'RigidBody', 'RigidBodyState', 'RotatingFrameFreeParticle', 'Scene', 'SceneCompatibilityWarning', 'SceneFrame', 'SceneResult', 'ScheduledLoads', 'Screw', 'SimulationResult', 'SpatialInertia', 'SpringDamper', 'Thrust', 'TorqueFreeSolution', 'Transform', 'UniformGravity', 'WeldedMesh', 'align_vectors', 'angular_distance', 'angular_momentum', 'angular_velocity_from_quat_rate', 'apply_impulse', 'axis_angle_to_quat', 'box_shell', 'compose_kinematics', 'composite', 'davenport_to_quat', 'default_thread_count', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'from_point_masses', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation', 'nearest_valid_inertia', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix', 'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'simulate', 'simulate_batch', 'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'twist_to_screw', 'vee', 'weld_vertices']
+__all__: list[str] = ['AppliedLoad', 'BatchResult', 'BatchSceneResult', 'BodyAcceleration', 'ComWrench', 'CompiledScene', 'CompoundPendulumSolution', 'ConstantThrustSolution', 'DensityIntegral', 'Drag', 'ElementField', 'FORCE_ELEMENTS', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'GravityGradient', 'InertiaCheck', 'InertiaReport', 'KineticEnergy', 'LagrangeTopSolution', 'MagneticDipole', 'MassFlow', 'MeshWeldWarning', 'Motion', 'MutualGravity', 'Particle', 'ParticleState', 'PivotedAcceleration', 'PivotedBody', 'PivotedBodyState', 'PivotedPlanarAcceleration', 'PivotedPlanarBody', 'PivotedPlanarBodyState', 'PivotedPlanarTorque', 'PivotedTorque', 'PlanarAcceleration', 'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointMassGravity', 'PointVelocity', 'PrincipalAxes', 'PythonForce', 'RigidBody', 'RigidBodyState', 'RotatingFrameFreeParticle', 'Scene', 'SceneCompatibilityWarning', 'SceneFrame', 'SceneResult', 'ScheduledLoads', 'Screw', 'SimulationResult', 'SpatialInertia', 'SpringDamper', 'Thrust', 'TorqueFreeSolution', 'Transform', 'UniformGravity', 'WeldedMesh', 'align_vectors', 'angular_distance', 'angular_momentum', 'angular_velocity_from_quat_rate', 'apply_impulse', 'axis_angle_to_quat', 'box_shell', 'compose_kinematics', 'composite', 'davenport_to_quat', 'default_thread_count', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'from_point_masses', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation', 'nearest_valid_inertia', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix', 'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'simulate', 'simulate_batch', 'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'twist_to_screw', 'vee', 'weld_vertices']
 class FrameKinematics:
     """
     Frame F relative to frame P at one instant (P = the parent of a FrameMotion, or the
@@ -1582,11 +1582,45 @@ class PivotedPlanarTorque:
         """
         torque about the z axis through O [N m]
         """
+class ElementField:
+    """
+    One field of a force element class (its class attribute `fields`, in constructor order): key (the keyword and attribute), kind ('scalar', 'vector' (3,), 'bodies', 'body', 'optional_body', 'loads', 'frame' or 'callable'), unit (SI, pint syntax; '' when none), required, default (None when required; a vector as a tuple) and doc.
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def default(self) -> typing.Any:
+        ...
+    @property
+    def doc(self) -> str:
+        ...
+    @property
+    def key(self) -> str:
+        ...
+    @property
+    def kind(self) -> str:
+        ...
+    @property
+    def required(self) -> bool:
+        ...
+    @property
+    def unit(self) -> str:
+        ...
 class UniformGravity:
     """
-    Uniform gravity on the listed bodies: f_W = m g_W at each centre of mass, potential V = -m g_W . p_W [J]. g_W (3,) [m/s^2] in W (default (0, 0, -9.81)); bodies: None (every body) or body indices. A planar body keeps the in-plane part (the plane takes the rest). Each physical argument: a float [its unit above] or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
+    Uniform gravity on the listed bodies: f_W = m g_W at each centre of mass, potential V = -m g_W . p_W [J]. A planar body keeps the in-plane part (the plane takes the rest).
+    
+    Parameters
+    ----------
+    g_W : array_like, shape (3,) [m/s^2], default (0.0, 0.0, -9.81)
+        (3,) gravitational acceleration in W [m/s^2]
+    bodies : sequence of int or None, default None
+        None (every body) or a tuple of the indices of the bodies it acts on
+    
+    Each argument with a unit takes a float in that unit or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
     """
     __hash__: typing.ClassVar[None] = None
+    fields: typing.ClassVar[tuple]
     def __eq__(self, other: typing.Any) -> typing.Any:
         ...
     def __getstate__(self) -> tuple:
@@ -1609,9 +1643,23 @@ class UniformGravity:
         """
 class PointMassGravity:
     """
-    A fixed attractor of gravitational parameter gm [m^3/s^2] at p_W (3,) [m] in W: on each listed body f_W = -gm m r/(|r|^2 + softening^2)^(3/2), r = p_body - p_W, potential V = -gm m/sqrt(|r|^2 + softening^2) [J]; softening [m] >= 0; bodies: None (every body) or body indices. Each physical argument: a float [its unit above] or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
+    A fixed attractor of gravitational parameter gm at p_W in W: on each listed body f_W = -gm m r/(|r|^2 + softening^2)^(3/2), r = p_body - p_W, potential V = -gm m/sqrt(|r|^2 + softening^2) [J].
+    
+    Parameters
+    ----------
+    gm : float [m^3/s^2], required
+        gravitational parameter GM of the attractor [m^3/s^2]
+    p_W : array_like, shape (3,) [m], default (0.0, 0.0, 0.0)
+        (3,) position of the fixed attractor in W [m]
+    softening : float [m], default 0.0
+        softening length epsilon [m] (0: none)
+    bodies : sequence of int or None, default None
+        None (every body) or a tuple of the indices of the bodies it acts on
+    
+    Each argument with a unit takes a float in that unit or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
     """
     __hash__: typing.ClassVar[None] = None
+    fields: typing.ClassVar[tuple]
     def __eq__(self, other: typing.Any) -> typing.Any:
         ...
     def __getstate__(self) -> tuple:
@@ -1644,9 +1692,21 @@ class PointMassGravity:
         """
 class MutualGravity:
     """
-    Newtonian gravity between the listed bodies (direct O(N^2) sum over the pairs): f on i = -G m_i m_j r/(|r|^2 + softening^2)^(3/2), r = p_i - p_j [N], potential V = sum -G m_i m_j/sqrt(|r|^2 + softening^2) [J]. G [m^3/(kg s^2)] (default 6.67430e-11); softening [m] >= 0; bodies: None (every body) or body indices. Each physical argument: a float [its unit above] or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
+    Newtonian gravity between the listed bodies (direct O(N^2) sum over the pairs): f on i = -G m_i m_j r/(|r|^2 + softening^2)^(3/2), r = p_i - p_j [N], potential V = sum -G m_i m_j/sqrt(|r|^2 + softening^2) [J].
+    
+    Parameters
+    ----------
+    G : float [m^3/(kg*s^2)], default 6.6743e-11
+        gravitational constant [m^3/(kg s^2)]
+    softening : float [m], default 0.0
+        softening length epsilon [m] (0: none)
+    bodies : sequence of int or None, default None
+        None (every body) or a tuple of the indices of the bodies that attract each other
+    
+    Each argument with a unit takes a float in that unit or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
     """
     __hash__: typing.ClassVar[None] = None
+    fields: typing.ClassVar[tuple]
     def __eq__(self, other: typing.Any) -> typing.Any:
         ...
     def __getstate__(self) -> tuple:
@@ -1674,9 +1734,21 @@ class MutualGravity:
         """
 class GravityGradient:
     """
-    The gravity-gradient (MacCullagh) term of a central attractor gm [m^3/s^2] at p_W (3,) [m] in W on extended bodies: torque tau_B = 3 gm/|r|^5 r_B x (I r_B) [N m] and the matching force, so that the potential V2 = -gm/(2|r|^3) (tr I - 3 r^T I_W r/|r|^2) [J] is conserved with the motion; no effect on particles. bodies: None (every body) or body indices. Each physical argument: a float [its unit above] or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
+    The gravity-gradient (MacCullagh) term of a central attractor gm at p_W in W on extended bodies: torque tau_B = 3 gm/|r|^5 r_B x (I r_B) [N m] and the matching force, so that the potential V2 = -gm/(2|r|^3) (tr I - 3 r^T I_W r/|r|^2) [J] is conserved with the motion; no effect on particles.
+    
+    Parameters
+    ----------
+    gm : float [m^3/s^2], required
+        gravitational parameter GM of the central attractor [m^3/s^2]
+    p_W : array_like, shape (3,) [m], default (0.0, 0.0, 0.0)
+        (3,) position of the attractor in W [m]
+    bodies : sequence of int or None, default None
+        None (every body) or a tuple of the indices of the bodies it acts on
+    
+    Each argument with a unit takes a float in that unit or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
     """
     __hash__: typing.ClassVar[None] = None
+    fields: typing.ClassVar[tuple]
     def __eq__(self, other: typing.Any) -> typing.Any:
         ...
     def __getstate__(self) -> tuple:
@@ -1704,9 +1776,29 @@ class GravityGradient:
         """
 class SpringDamper:
     """
-    A linear spring and damper between point_a_B (3,) [m] of body_a (in its frame B, from its centre of mass) and point_b (3,) [m] of body_b (in its B) or, body_b None, the world anchor point_b in W. Force on a: -(stiffness (l - rest_length) + damping dl/dt) u, u = (x_a - x_b)/l, l = |x_a - x_b| [N], along the line (no force at l = 0), so the pair conserves momentum and angular momentum; the opposite on b; torque r x f about each centre of mass. stiffness [N/m], rest_length [m], damping [N s/m], each >= 0. Potential V = stiffness (l - rest_length)^2/2 [J]. Each physical argument: a float [its unit above] or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
+    A linear spring and damper between point_a_B of body_a (in its frame B, from its centre of mass) and point_b of body_b (in its B) or, body_b None, the world anchor point_b in W. Force on a: -(stiffness (l - rest_length) + damping dl/dt) u, u = (x_a - x_b)/l, l = |x_a - x_b| [N], along the line (no force at l = 0), so the pair conserves momentum and angular momentum; the opposite on b; torque r x f about each centre of mass. Potential V = stiffness (l - rest_length)^2/2 [J].
+    
+    Parameters
+    ----------
+    body_a : int, required
+        index of the body at end a
+    point_a_B : array_like, shape (3,) [m], default (0.0, 0.0, 0.0)
+        (3,) end a in body a's frame B, from its centre of mass [m]
+    body_b : int or None, default None
+        index of the body at end b, or None: end b is the world anchor point_b
+    point_b : array_like, shape (3,) [m], default (0.0, 0.0, 0.0)
+        (3,) end b: in body b's frame B from its centre of mass, or in W if body_b is None [m]
+    stiffness : float [N/m], required
+        spring stiffness k [N/m]
+    rest_length : float [m], default 0.0
+        rest length l0 [m]
+    damping : float [N*s/m], default 0.0
+        damping coefficient c [N s/m]
+    
+    Each argument with a unit takes a float in that unit or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
     """
     __hash__: typing.ClassVar[None] = None
+    fields: typing.ClassVar[tuple]
     def __eq__(self, other: typing.Any) -> typing.Any:
         ...
     def __getstate__(self) -> tuple:
@@ -1754,9 +1846,25 @@ class SpringDamper:
         """
 class Drag:
     """
-    Linear and quadratic drag on the listed bodies: f_W = -(linear + quadratic |v_W|) v_W [N] at the centre of mass and tau_B = -(angular_linear + angular_quadratic |w_B|) w_B [N m]; coefficients >= 0 ([N s/m], [N s^2/m^2], [N m s/rad], [N m s^2/rad^2]). Velocity-dependent: the splitting methods warn (SceneCompatibilityWarning). bodies: None (every body) or body indices. Each physical argument: a float [its unit above] or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
+    Linear and quadratic drag on the listed bodies: f_W = -(linear + quadratic |v_W|) v_W [N] at the centre of mass and tau_B = -(angular_linear + angular_quadratic |w_B|) w_B [N m]. Velocity-dependent: the splitting methods warn (SceneCompatibilityWarning).
+    
+    Parameters
+    ----------
+    linear : float [N*s/m], default 0.0
+        c1 of f_W = -(c1 + c2 |v_W|) v_W [N s/m]
+    quadratic : float [N*s^2/m^2], default 0.0
+        c2 of f_W = -(c1 + c2 |v_W|) v_W [N s^2/m^2]
+    angular_linear : float [N*m*s], default 0.0
+        d1 of tau_B = -(d1 + d2 |w_B|) w_B [N m s/rad]
+    angular_quadratic : float [N*m*s^2], default 0.0
+        d2 of tau_B = -(d1 + d2 |w_B|) w_B [N m s^2/rad^2]
+    bodies : sequence of int or None, default None
+        None (every body) or a tuple of the indices of the bodies it acts on
+    
+    Each argument with a unit takes a float in that unit or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
     """
     __hash__: typing.ClassVar[None] = None
+    fields: typing.ClassVar[tuple]
     def __eq__(self, other: typing.Any) -> typing.Any:
         ...
     def __getstate__(self) -> tuple:
@@ -1794,9 +1902,21 @@ class Drag:
         """
 class ScheduledLoads:
     """
-    The piecewise-constant schedule `loads` (AppliedLoad or a sequence: force [N] and torque [N m], each in W or B, active on [t_start, t_end) [s]) on body `body`, the forces applied at point_B (3,) [m] (in B, from the centre of mass; adds the torque point_B x f_B). A run splits its steps at the switch times, as simulate does for one body. Each physical argument: a float [its unit above] or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
+    The piecewise-constant schedule `loads` (AppliedLoad or a sequence: force [N] and torque [N m], each in W or B, active on [t_start, t_end) [s]) on body `body`, the forces applied at point_B (in B, from the centre of mass; adds the torque point_B x f_B). A run splits its steps at the switch times, as simulate does for one body.
+    
+    Parameters
+    ----------
+    body : int, required
+        index of the body the loads act on
+    loads : AppliedLoad or sequence of AppliedLoad, default ()
+        tuple of AppliedLoad: the piecewise-constant schedule
+    point_B : array_like, shape (3,) [m], default (0.0, 0.0, 0.0)
+        (3,) point of application of the forces in B, from the centre of mass [m]
+    
+    Each argument with a unit takes a float in that unit or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
     """
     __hash__: typing.ClassVar[None] = None
+    fields: typing.ClassVar[tuple]
     def __eq__(self, other: typing.Any) -> typing.Any:
         ...
     def __getstate__(self) -> tuple:
@@ -1824,9 +1944,17 @@ class ScheduledLoads:
         """
 class PythonForce:
     """
-    A force written in Python: fn(t, body, p_W, q_WB, v_W, w_B) -> (f_W, tau_B) is called for each listed body at every derivative evaluation, with t [s], the body's index, p_W (3,) [m] and v_W (3,) [m/s] in W, q_WB (4,) (x, y, z, w) and w_B (3,) [rad/s] in B (a particle: q_WB identity, w_B 0; a planar body: p_W = (x, y, 0), q_WB = Rz(theta), w_B = (0, 0, omega)); it returns f_W (3,) [N] in W at the centre of mass and tau_B (3,) [N m] in B. It is treated as time- and velocity-dependent. Each call takes the GIL (the run otherwise releases it: other Python threads wait during fn) and costs about 1.2 us per call against about 10 ns for a built-in element (measured 2026-11-24, 10 particles, RK4: python bench/python/bench_scene.py). An exception raised by fn stops the run and propagates; a return value other than two finite 3-vectors raises TypeError/ValueError naming fn. bodies: None (every body) or body indices.
+    A force written in Python: fn(t, body, p_W, q_WB, v_W, w_B) -> (f_W, tau_B) is called for each listed body at every derivative evaluation, with t [s], the body's index, p_W (3,) [m] and v_W (3,) [m/s] in W, q_WB (4,) (x, y, z, w) and w_B (3,) [rad/s] in B (a particle: q_WB identity, w_B 0; a planar body: p_W = (x, y, 0), q_WB = Rz(theta), w_B = (0, 0, omega)); it returns f_W (3,) [N] in W at the centre of mass and tau_B (3,) [N m] in B. It is treated as time- and velocity-dependent. Each call takes the GIL (the run otherwise releases it: other Python threads wait during fn) and costs about 1.2 us per call against about 10 ns for a built-in element (measured 2026-11-24, 10 particles, RK4: python bench/python/bench_scene.py). An exception raised by fn stops the run and propagates; a return value other than two finite 3-vectors raises TypeError/ValueError naming fn.
+    
+    Parameters
+    ----------
+    fn : callable, required
+        the callable fn(t, body, p_W, q_WB, v_W, w_B) -> (f_W, tau_B)
+    bodies : sequence of int or None, default None
+        None (every body) or a tuple of the indices of the bodies it acts on
     """
     __hash__: typing.ClassVar[None] = None
+    fields: typing.ClassVar[tuple]
     def __eq__(self, other: typing.Any) -> typing.Any:
         ...
     def __getstate__(self) -> tuple:
@@ -1849,9 +1977,23 @@ class PythonForce:
         """
 class Thrust:
     """
-    The thrust of a body whose mass changes (its MassFlow, given to Scene.add_body): f = (dm/dt) u_rel [N] ("Rigid body kinematics and dynamics" notes, eq. (4.36): d(m v)/dt = f + (dm/dt)(v + u_rel), so m dv/dt = f + (dm/dt) u_rel), u_rel (3,) [m/s] the velocity of the mass leaving (dm/dt < 0: u_rel backwards pushes forwards) or joining the body, relative to it, in `frame` ('body': in B, turning with the body; 'world': in the scene frame W), applied at r_B (3,) [m] in B from the centre of mass (adds the torque r_B x f_B). Scene.add refuses it (ValueError naming element.body) on a body without a MassFlow. No potential; its power is in SceneResult.power. Each physical argument: a float [its unit above] or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
+    The thrust of a body whose mass changes (its MassFlow, given to Scene.add_body): f = (dm/dt) u_rel [N] ("Rigid body kinematics and dynamics" notes, eq. (4.36): d(m v)/dt = f + (dm/dt)(v + u_rel), so m dv/dt = f + (dm/dt) u_rel), u_rel the velocity of the mass leaving (dm/dt < 0: u_rel backwards pushes forwards) or joining the body, relative to it, in `frame` ('body': in B, turning with the body; 'world': in the scene frame W), applied at r_B in B from the centre of mass (adds the torque r_B x f_B). Scene.add refuses it (ValueError naming element.body) on a body without a MassFlow. No potential; its power is in SceneResult.power.
+    
+    Parameters
+    ----------
+    body : int, required
+        index of the body (one with a MassFlow) whose exchanged mass pushes it
+    u_rel : array_like, shape (3,) [m/s], required
+        (3,) velocity of the exchanged mass relative to the body, in `frame` [m/s]
+    frame : {'body', 'world'}, default 'body'
+        'body' (u_rel in B, turning with the body) or 'world' (in the scene frame W)
+    r_B : array_like, shape (3,) [m], default (0.0, 0.0, 0.0)
+        (3,) point of application in B, from the centre of mass [m]
+    
+    Each argument with a unit takes a float in that unit or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
     """
     __hash__: typing.ClassVar[None] = None
+    fields: typing.ClassVar[tuple]
     def __eq__(self, other: typing.Any) -> typing.Any:
         ...
     def __getstate__(self) -> tuple:
@@ -1881,6 +2023,62 @@ class Thrust:
     def u_rel(self) -> typing.Any:
         """
         (3,) velocity of the exchanged mass relative to the body, in `frame` [m/s]
+        """
+class MagneticDipole:
+    """
+    A magnetic dipole m_B fixed in each listed body's frame B, in a static field: the uniform B_W plus the field of a fixed source dipole source_moment_W at source_p_W, B(p) = B_W + mu0/(4 pi) (3 r (r . M)/|r|^5 - M/|r|^3), r = p - source_p_W. Torque tau_B = m_B x B_B [N m], force f_W = grad(m_W . B) [N] (zero in a uniform field), potential V = -m_W . B [J]: the motion conserves T + V. A compass needle of moment of inertia I swings at sqrt(|m| |B| / I) [rad/s] for small angles. Particles (no attitude) are skipped; a planar body keeps the in-plane force and tau_z.
+    
+    Parameters
+    ----------
+    m_B : array_like, shape (3,) [A*m^2], required
+        (3,) magnetic dipole moment of each body, in its B [A m^2]
+    B_W : array_like, shape (3,) [T], default (0.0, 0.0, 0.0)
+        (3,) uniform magnetic flux density in W [T]
+    source_moment_W : array_like, shape (3,) [A*m^2], default (0.0, 0.0, 0.0)
+        (3,) moment of the fixed source dipole, in W [A m^2] (zero: no source)
+    source_p_W : array_like, shape (3,) [m], default (0.0, 0.0, 0.0)
+        (3,) position of the source dipole in W [m]
+    bodies : sequence of int or None, default None
+        None (every body) or a tuple of the indices of the bodies it acts on
+    
+    Each argument with a unit takes a float in that unit or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
+    """
+    __hash__: typing.ClassVar[None] = None
+    fields: typing.ClassVar[tuple]
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, *, m_B: typing.Any, B_W: typing.Any = (0.0, 0.0, 0.0), source_moment_W: typing.Any = (0.0, 0.0, 0.0), source_p_W: typing.Any = (0.0, 0.0, 0.0), bodies: typing.Any = None) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def B_W(self) -> typing.Any:
+        """
+        (3,) uniform magnetic flux density in W [T]
+        """
+    @property
+    def bodies(self) -> typing.Any:
+        """
+        None (every body) or a tuple of the indices of the bodies it acts on
+        """
+    @property
+    def m_B(self) -> typing.Any:
+        """
+        (3,) magnetic dipole moment of each body, in its B [A m^2]
+        """
+    @property
+    def source_moment_W(self) -> typing.Any:
+        """
+        (3,) moment of the fixed source dipole, in W [A m^2] (zero: no source)
+        """
+    @property
+    def source_p_W(self) -> typing.Any:
+        """
+        (3,) position of the source dipole in W [m]
         """
 class SceneFrame:
     """
@@ -2021,7 +2219,7 @@ class Scene:
         ...
     def add(self, element: typing.Any) -> int:
         """
-        Adds a force element (UniformGravity, PointMassGravity, MutualGravity, GravityGradient, SpringDamper, Drag, ScheduledLoads, PythonForce, Thrust) after checking it against the bodies added so far (indices in range, loads the body's kind can take: ValueError naming element.<field>); returns its index (the column of SceneResult.work and power).
+        Adds a force element (an instance of a class of rigiddyn.FORCE_ELEMENTS) after checking it against the bodies added so far (indices in range, loads the body's kind can take: ValueError naming element.<field>); returns its index (the column of SceneResult.work and power).
         """
     def add_body(self, body: typing.Any, name: typing.Any = None, mass_flow: typing.Any = None) -> int:
         """
@@ -2085,6 +2283,11 @@ class CompiledScene:
     def describe(self) -> typing.Any:
         """
         Scene.describe of its scene with its method: bodies, force elements, frame, units, the method's order and the compile's verdict (rigiddyn.scene_describe.describe).
+        """
+    @property
+    def element_traits(self) -> tuple:
+        """
+        tuple of dict, one per compiled term in the order of SceneResult.work's columns (the scene's elements, then the frame's fictitious terms): reads_attitude, velocity_dependent, time_dependent, has_potential (its forces derive from a potential energy) and has_torque (bool each)
         """
     @property
     def method(self) -> str:
@@ -3705,5 +3908,6 @@ def weld_vertices(vertices: typing.Any, faces: typing.Any, tolerance: typing.Any
     their lowest-indexed vertex; faces (f, 3) repeating a vertex afterwards are dropped. Returns a
     WeldedMesh (vertices, faces, welded_vertices, dropped_faces, ...); warns nothing.
     """
+FORCE_ELEMENTS: tuple = (UniformGravity, PointMassGravity, MutualGravity, GravityGradient, SpringDamper, Drag, ScheduledLoads, PythonForce, Thrust, MagneticDipole)
 __version__: str = '0.1.0'
 inertia_relative_tolerance: float = 1e-10

@@ -150,12 +150,16 @@ def _mass_flow_lines(scene: Any, names: Sequence[str]) -> list[str]:
 
 
 def _acts_on(element: Any, nb: int) -> list[int]:
-    """The indices of the bodies `element` acts on."""
-    if hasattr(element, "bodies"):
-        return list(range(nb)) if element.bodies is None else list(element.bodies)
-    if hasattr(element, "body_a"):
-        return [element.body_a] + ([] if element.body_b is None else [element.body_b])
-    return [element.body]
+    """The indices of the bodies `element` acts on, from its class's field table: a `bodies` field (None:
+    every body) and its body fields (an optional one when given)."""
+    acting: list[int] = []
+    for f in type(element).fields:
+        value = getattr(element, f.key)
+        if f.kind == "bodies":
+            acting += range(nb) if value is None else value
+        elif f.kind in ("body", "optional_body") and value is not None:
+            acting.append(value)
+    return acting
 
 
 def _terms(element: Any, body: int, kind: str) -> str:
@@ -193,7 +197,7 @@ def _parameters(element: Any, names: Sequence[str]) -> str:
     parts = []
     for f in type(element).fields:
         value = getattr(element, f.key)
-        unit = f" {f.unit}" if f.unit and f.unit != "1" else ""
+        unit = f" {f.unit.replace('*', ' ')}" if f.unit and f.unit != "1" else ""  # as messages write it
         if f.kind in ("scalar", "vector"):
             parts.append(f"{f.key} = {_g(value)}{unit}")
         elif f.kind in ("body", "optional_body"):

@@ -21,6 +21,7 @@ import numpy as np
 
 import rigiddyn as rd
 
+SUBNORMAL = float(np.finfo(np.float64).smallest_subnormal)  # 2^-1074, the spacing of the subnormals
 EPS = np.finfo(float).eps
 FD_STEP = 1e-7
 # substeps of one step of each method: the number of times its state is rebuilt from increments
@@ -241,9 +242,12 @@ def body_condition(body):
 def product_tolerance(A, x):
     """Absolute bound on the difference of two evaluations of A @ x (any summation order, both
     sides): |fl(A x) − A x| ≤ γ_n |A| |x| per side with γ_n ≈ n eps (Higham, "Accuracy and
-    Stability of Numerical Algorithms", (3.4)), n the inner dimension; A and x exact inputs."""
+    Stability of Numerical Algorithms", (3.4)), n the inner dimension; A and x exact inputs. Products
+    and sums that fall into the subnormal range add an absolute error of at most one subnormal unit each
+    (gradual underflow, Higham §2.1): 2n of them per side."""
     A, x = np.abs(np.asarray(A, float)), np.abs(np.asarray(x, float))
-    return 2.0 * A.shape[-1] * EPS * float(np.max(A @ x))
+    n = A.shape[-1]
+    return 2.0 * n * EPS * float(np.max(A @ x)) + 4.0 * n * SUBNORMAL
 
 
 def roundoff(size, roundings=8):

@@ -400,6 +400,7 @@ INSTANCES_OF_RESULTS = {
     "PointVelocity": lambda: rd.point_velocity(rd.FrameKinematics(), V, V),
     "PointAcceleration": lambda: rd.point_acceleration(rd.FrameKinematics(), V, V, V),
     "SimulationResult": lambda: rd.simulate(rd.RigidBody(1.0, I_BOX), rd.RigidBodyState(w_B=V), 0.01, 2),
+    "ElementField": lambda: rd.MagneticDipole.fields[0],
     "InertiaReport": INSTANCES["InertiaReport"], "FrameKinematics": rd.FrameKinematics, "AppliedLoad": rd.AppliedLoad,
     "ParticleState": rd.ParticleState, "PlanarBodyState": rd.PlanarBodyState, "Particle": lambda: rd.Particle(1.0),
     "PlanarBody": lambda: rd.PlanarBody(1.0, 0.5), "RigidBody": lambda: rd.RigidBody(1.0, I_BOX),

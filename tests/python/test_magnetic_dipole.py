@@ -344,7 +344,7 @@ p_W = [0.0, 1.0, 0.0]
 type = "magnetic_dipole"
 m_B = ["2 A*m^2", 0, 0]
 B_W = {value = [0, 50, 0], unit = "uT"}
-source_moment_W = [0, 0, 3e5]
+source_moment_W = [0, 0, 3e3]
 source_p_W = [0.1, -0.1, 0.0]
 bodies = ["needle", "disc", "bead"]
 [[force]]
@@ -362,7 +362,7 @@ def test_a_scene_file_round_trips_with_its_magnetic_dipoles():
     assert type(first) is rd.MagneticDipole and first.bodies == (0, 1, 2)
     np.testing.assert_allclose(first.m_B, [2.0, 0.0, 0.0], rtol=2 * EPS)
     np.testing.assert_allclose(first.B_W, [0.0, 5e-5, 0.0], rtol=2 * EPS)
-    np.testing.assert_array_equal(first.source_moment_W, [0.0, 0.0, 3e5])
+    np.testing.assert_array_equal(first.source_moment_W, [0.0, 0.0, 3e3])
     np.testing.assert_array_equal(first.source_p_W, [0.1, -0.1, 0.0])
     assert second == rd.MagneticDipole(m_B=[0.0, 0.5, 0.0])
     text = scene_to_toml(f.scene, f.initial, f.run, f.name, f.description)

@@ -104,7 +104,7 @@ CASES = [
     ("Drag.angular_quadratic", keyword(rd.Drag, "angular_quadratic"), "angular_quadratic", "N m s^2",
      Q(0.3, "lbf*ft*s^2"), Q(0.3, "N*m*s")),
     ("MagneticDipole.m_B", keyword(rd.MagneticDipole, "m_B"), "m_B", "A m^2", Q(VECTOR, "mA*cm^2"), Q(VECTOR, "A")),
-    ("MagneticDipole.B_W", keyword(rd.MagneticDipole, "B_W", m_B=VECTOR), "B_W", "T", Q(VECTOR, "gauss"),
+    ("MagneticDipole.B_W", keyword(rd.MagneticDipole, "B_W", m_B=VECTOR), "B_W", "T", Q(VECTOR, "uT"),
      Q(VECTOR, "A/m")),
     ("MagneticDipole.source_moment_W", keyword(rd.MagneticDipole, "source_moment_W", m_B=VECTOR), "source_moment_W",
      "A m^2", Q(VECTOR, "kA*km^2"), Q(VECTOR, "J")),

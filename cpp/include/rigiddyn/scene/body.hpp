@@ -57,19 +57,27 @@ inline Eigen::Matrix3d inertia_com_of(const Body& body) {
       body);
 }
 
-// True for a body with an attitude that forces can turn (every kind but the particle).
-inline bool has_attitude(const Body& body) { return !std::holds_alternative<Particle>(body); }
+// What elements and checks ask of a body kind (never its type): one entry per kind, so that a kind added to
+// Body and not described here does not compile.
+struct BodyTraits {
+  bool has_attitude;         // forces can turn it (every kind but the particle)
+  bool is_planar;            // it moves in W's xy plane: forces keep their x, y parts and torques their z part
+  bool is_pivoted;           // it is pinned at a point O fixed in W
+  bool has_spatial_inertia;  // it carries a full 3×3 inertia about its centre of mass (inertia_com_of)
+};
 
-// True for a body that moves in W's xy plane (planar bodies, free or pinned): forces keep their x, y
-// parts and torques their z part (the plane takes the rest).
-inline bool is_planar(const Body& body) {
-  return std::holds_alternative<PlanarBody>(body) || std::holds_alternative<PivotedPlanarBody>(body);
+inline BodyTraits body_traits(const Body& body) {
+  return std::visit(overloaded{[](const Particle&) { return BodyTraits{false, false, false, false}; },
+                               [](const PlanarBody&) { return BodyTraits{true, true, false, false}; },
+                               [](const RigidBody&) { return BodyTraits{true, false, false, true}; },
+                               [](const PivotedBody&) { return BodyTraits{true, false, true, true}; },
+                               [](const PivotedPlanarBody&) { return BodyTraits{true, true, true, false}; }},
+                    body);
 }
 
-// True for a body pinned at a point O fixed in W (PivotedBody, PivotedPlanarBody).
-inline bool is_pivoted(const Body& body) {
-  return std::holds_alternative<PivotedBody>(body) || std::holds_alternative<PivotedPlanarBody>(body);
-}
+inline bool has_attitude(const Body& body) { return body_traits(body).has_attitude; }
+inline bool is_planar(const Body& body) { return body_traits(body).is_planar; }
+inline bool is_pivoted(const Body& body) { return body_traits(body).is_pivoted; }
 
 // A short name of the body's kind for messages: "particle", "planar body", "rigid body", "pivoted body"
 // or "pivoted planar body".

@@ -21,7 +21,7 @@ inline void require_nonnegative(double value, const std::string& name) {
 // or pinned (as scheduled loads' point_B).
 inline void require_body_point(const Body& body, const Eigen::Vector3d& point_B, const std::string& name) {
   require_finite(point_B, name);
-  if (std::holds_alternative<Particle>(body) && !point_B.isZero(0.0)) {
+  if (!has_attitude(body) && !point_B.isZero(0.0)) {
     throw_invalid(name, "zero (a particle is a point)", point_B);
   }
   if (is_planar(body) && point_B.z() != 0.0) {

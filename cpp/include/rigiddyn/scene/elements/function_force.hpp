@@ -61,7 +61,7 @@ struct FunctionForce {
   // the field table (scene/element_fields.hpp): the function first, as the Python class takes it
   static constexpr auto fields() {
     return std::make_tuple(ElementField<FunctionForce, ForceFunction>{"fn", &FunctionForce::f, FieldKind::callable, "",
-                                                                      "the callable fn(t, body, p_W, q_WB, v_W, w_B) -> "
+                                                                      "a callable fn(t, body, p_W, q_WB, v_W, w_B) -> "
                                                                       "(f_W, tau_B)"}
                                .must_be_given(),
                            bodies_field(&FunctionForce::bodies));

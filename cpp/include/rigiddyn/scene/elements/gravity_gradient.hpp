@@ -79,7 +79,7 @@ class GravityGradientTerm {
                       "gravity-gradient torque needs)",
                       "planar body " + std::to_string(b));
       }
-      if (std::holds_alternative<RigidBody>(bodies[b]) || std::holds_alternative<PivotedBody>(bodies[b])) {
+      if (body_traits(bodies[b]).has_spatial_inertia) {
         bodies_.push_back(b);
         inertia_com_.push_back(inertia_com_of(bodies[b]));  // about the centre of mass, also when pinned
       }

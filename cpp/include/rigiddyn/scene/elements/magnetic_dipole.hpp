@@ -78,7 +78,7 @@ class MagneticDipoleTerm {
     require_finite(spec.source_moment_W, name + ".source_moment_W");
     require_finite(spec.source_p_W, name + ".source_p_W");
     for (const int b : detail::resolve_bodies(spec.bodies, bodies.size(), name)) {
-      if (!std::holds_alternative<Particle>(bodies[b])) bodies_.push_back(b);
+      if (has_attitude(bodies[b])) bodies_.push_back(b);
     }
   }
 

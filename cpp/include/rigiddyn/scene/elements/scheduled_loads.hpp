@@ -111,7 +111,7 @@ class ScheduledLoadsTerm {
   }
 
   void check_kind(const Body& body, const std::string& name) const {
-    if (std::holds_alternative<Particle>(body)) {
+    if (!has_attitude(body)) {
       for (std::size_t i = 0; i < schedule_.size(); ++i) {
         if (!schedule_[i].torque.isZero(0.0)) {
           throw_invalid(name + ".loads[" + std::to_string(i) + "].torque", "zero (a particle takes no torque)",

@@ -84,7 +84,7 @@ inline void check_thrust(const Thrust& spec, const std::vector<Body>& bodies,
   if (spec.frame != Frame::body && spec.frame != Frame::world) {
     throw_invalid(name + ".frame", "Frame::body or Frame::world", static_cast<int>(spec.frame));
   }
-  if (std::holds_alternative<Particle>(body) && spec.frame == Frame::body) {
+  if (!has_attitude(body) && spec.frame == Frame::body) {
     throw std::invalid_argument(name + ".frame: expected Frame::world on a particle (a point has no axes to turn u_rel "
                                        "with), got Frame::body");
   }
