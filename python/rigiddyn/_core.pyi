@@ -1949,7 +1949,7 @@ class PythonForce:
     Parameters
     ----------
     fn : callable, required
-        the callable fn(t, body, p_W, q_WB, v_W, w_B) -> (f_W, tau_B)
+        a callable fn(t, body, p_W, q_WB, v_W, w_B) -> (f_W, tau_B)
     bodies : sequence of int or None, default None
         None (every body) or a tuple of the indices of the bodies it acts on
     """
@@ -1973,7 +1973,7 @@ class PythonForce:
     @property
     def fn(self) -> typing.Any:
         """
-        the callable fn(t, body, p_W, q_WB, v_W, w_B) -> (f_W, tau_B)
+        a callable fn(t, body, p_W, q_WB, v_W, w_B) -> (f_W, tau_B)
         """
 class Thrust:
     """
