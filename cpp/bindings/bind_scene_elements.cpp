@@ -106,13 +106,13 @@ void require_bound(double x, FieldBound bound, const char* key) {
 // The field's value from a Python object (a float or a pint quantity for a field with a unit), checked.
 template <class Spec>
 double from_python(py::handle v, const ElementField<Spec, double>& f) {
-  const double x = py_io::as_scalar(py_io::in_si(v, f.unit, f.key), f.key);
+  const double x = py_io::as_scalar(*f.unit ? py_io::in_si(v, f.unit, f.key) : py::reinterpret_borrow<py::object>(v), f.key);
   require_bound(x, f.bound, f.key);
   return x;
 }
 template <class Spec>
 Eigen::Vector3d from_python(py::handle v, const ElementField<Spec, Eigen::Vector3d>& f) {
-  return py_io::as_vector3(py_io::in_si(v, f.unit, f.key), f.key);
+  return py_io::as_vector3(*f.unit ? py_io::in_si(v, f.unit, f.key) : py::reinterpret_borrow<py::object>(v), f.key);
 }
 template <class Spec>
 BodyList from_python(py::handle v, const ElementField<Spec, BodyList>& f) {

@@ -162,26 +162,15 @@ def _acts_on(element: Any, nb: int) -> list[int]:
     return acting
 
 
-def _terms(element: Any, body: int, kind: str) -> str:
-    """The terms `element` puts on body number `body` of kind `kind`: "f", "tau", "f+tau" or "."."""
-    cls = type(element).__name__
-    force, torque = True, kind != "particle"
-    if cls in ("UniformGravity", "PointMassGravity", "MutualGravity"):
-        torque = False
-    elif cls in ("GravityGradient", "MagneticDipole"):
-        force = torque  # the second-order term needs an extent (I = 0 for a particle), a dipole an attitude
-    elif cls == "SpringDamper":
-        point = element.point_a_B if body == element.body_a else element.point_b
-        torque = torque and bool(np.any(np.asarray(point)))
-    elif cls == "Drag":
-        force = element.linear > 0 or element.quadratic > 0
-        torque = torque and (element.angular_linear > 0 or element.angular_quadratic > 0)
-    elif cls == "Thrust":
-        torque = torque and bool(np.any(np.asarray(element.r_B)))
-    elif cls == "ScheduledLoads":
-        force = any(np.any(np.asarray(load.force)) for load in element.loads)
-        torque = torque and (any(np.any(np.asarray(load.torque)) for load in element.loads)
-                             or (force and bool(np.any(np.asarray(element.point_B)))))
+def _terms(traits: dict[str, bool] | None, kind: str) -> str:
+    """The terms an element with `traits` (CompiledScene.element_traits) puts on a body of `kind` it acts on:
+    "f", "tau", "f+tau" or "." (a particle feels no torque, and nothing from an element that needs an
+    attitude)."""
+    if traits is None:
+        return "f+tau" if kind != "particle" else "f"
+    if kind == "particle" and traits["needs_attitude"]:
+        return "."
+    force, torque = traits["has_force"], traits["has_torque"] and kind != "particle"
     return "+".join(t for t, on in (("f", force), ("tau", torque)) if on) or "."
 
 
@@ -293,7 +282,7 @@ def describe(scene: Any, method: str | None = None) -> str:
     for i, e in enumerate(elements):
         acting = set(_acts_on(e, len(bodies)))
         rows.append((str(i), type(e).__name__, _properties(traits[i]),
-                     *[_terms(e, b, kinds[b]) if b in acting else "." for b in range(len(bodies))],
+                     *[_terms(traits[i], kinds[b]) if b in acting else "." for b in range(len(bodies))],
                      _parameters(e, names)))
     fictitious = {name: (cls, force) for name, cls, force in _FICTITIOUS}
     for j, name in enumerate(frame_terms_of(frame)):

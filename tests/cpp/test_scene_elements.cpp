@@ -13,10 +13,12 @@
 #include "rigiddyn/scene/elements/magnetic_dipole.hpp"
 #include "rigiddyn/scene/elements/mutual_gravity.hpp"
 #include "rigiddyn/scene/elements/point_mass_gravity.hpp"
+#include "rigiddyn/scene/elements/reaction_wheel.hpp"
 #include "rigiddyn/scene/elements/spring_damper.hpp"
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -476,7 +478,7 @@ TEST(MagneticDipole, ConservativeWithCorrectPower) {
     EXPECT_GT(w[2].f_W.norm(), 1e-3);  // the source's gradient is felt: the check above is not vacuous
     EXPECT_GT(w[2].tau_B.norm(), 1e-3);
   }
-  const auto traits = MagneticDipoleTerm::traits();
+  const auto traits = term.traits();
   EXPECT_TRUE(traits.has_potential && traits.reads_attitude && traits.has_torque);
   EXPECT_FALSE(traits.velocity_dependent || traits.time_dependent);
 }
@@ -514,6 +516,55 @@ TEST(MagneticDipole, CoaxialDipolesAttract) {
   EXPECT_NEAR(w[0].f_W.z(), expected, 16 * kEps * std::abs(expected));
   EXPECT_NEAR(w[0].f_W.head<2>().norm(), 0.0, 16 * kEps * std::abs(expected));
   EXPECT_TRUE(w[0].tau_B.isZero(0.0));  // m parallel to the on-axis field
+}
+
+// The gyrostat's couple tau_B = −ω × J Ω a − J Ω̇ a, with Ω̇ held over the piece set_time chose and Ω(t)
+// clamped to the ramp; its power tau_B·ω = −J Ω̇ a·ω. Each entry to a few ulps of J |Ω| |ω| + J |Ω̇|.
+TEST(ReactionWheel, GyrostatCoupleAndPower) {
+  ReactionWheel spec;
+  spec.body = 2, spec.axis_B = Eigen::Vector3d(0.0, 3.0, 4.0), spec.inertia = 0.05;
+  spec.speed = 10.0, spec.acceleration = -4.0, spec.t_start = 1.0, spec.t_end = 2.0;
+  ReactionWheelTerm term(spec, mixed_bodies(), kName);
+  const Eigen::Vector3d a(0.0, 0.6, 0.8);
+  Kinematics k(4);
+  k[2].w_B = Eigen::Vector3d(0.3, -1.1, 0.7);
+  for (const double t : {0.5, 1.0, 1.5, 2.0, 3.0}) {
+    term.set_time(t);
+    const double Omega = 10.0 - 4.0 * (std::clamp(t, 1.0, 2.0) - 1.0);
+    const double Omega_dot = t >= 1.0 && t < 2.0 ? -4.0 : 0.0;
+    double power = 0.0;
+    const Wrenches w = wrenches_of(term, k, &power, t);
+    const Eigen::Vector3d expected = -0.05 * Omega * k[2].w_B.cross(a) - 0.05 * Omega_dot * a;
+    const double scale = 0.05 * (std::abs(Omega) * k[2].w_B.norm() + std::abs(Omega_dot));
+    EXPECT_LT((w[2].tau_B - expected).norm(), 16 * kEps * scale) << "t = " << t;
+    EXPECT_NEAR(power, -0.05 * Omega_dot * a.dot(k[2].w_B), 16 * kEps * scale * k[2].w_B.norm());
+    EXPECT_TRUE(w[2].f_W.isZero(0.0) && w[0].tau_B.isZero(0.0) && w[3].tau_B.isZero(0.0));
+  }
+  EXPECT_TRUE(term.traits().velocity_dependent && term.traits().time_dependent && term.traits().has_torque);
+  EXPECT_FALSE(term.traits().has_potential);
+  spec.acceleration = 0.0;
+  EXPECT_FALSE(ReactionWheelTerm(spec, mixed_bodies(), kName).traits().time_dependent);  // a constant speed
+}
+
+TEST(SceneElementErrors, ReactionWheel) {
+  const std::vector<Body> bodies = mixed_bodies();
+  ReactionWheel spec;
+  spec.body = 2, spec.inertia = 0.1;
+  auto make = [&] { ReactionWheelTerm(spec, bodies, kName); };
+  spec.body = 0;
+  expect_error(make, "elements[2].body: expected a rigid body, free or pinned (a wheel needs the body's full inertia), got particle 0");
+  spec.body = 1;
+  expect_error(make, "elements[2].body: expected a rigid body, free or pinned (a wheel needs the body's full inertia), got planar body 1");
+  spec.body = 4;
+  expect_error(make, "elements[2].body: expected a body index in [0, 4), got 4");
+  spec.body = 2, spec.inertia = 0.0;
+  expect_error(make, "elements[2].inertia: expected a finite number > 0, got 0");
+  spec.inertia = 0.1, spec.axis_B.setZero();
+  expect_error(make, "elements[2].axis_B: expected a finite non-zero vector, got [0; 0; 0]");
+  spec.axis_B = Eigen::Vector3d::UnitX(), spec.t_end = 0.0;
+  expect_error(make, "elements[2].t_end: expected a time after t_start = 0, got 0");
+  spec.t_end = 1.0, spec.speed = kNaN;
+  expect_error(make, "elements[2].speed: expected a finite number, got nan");
 }
 
 TEST(SpringDamper, ClosedFormWithWorldAnchor) {

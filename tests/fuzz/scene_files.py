@@ -128,9 +128,10 @@ def body_table(draw, name):
     return table
 
 
-def _force(draw, names, flows):
+def _force(draw, names, flows, rigid):
     kinds = ["uniform_gravity", "point_mass_gravity", "mutual_gravity", "gravity_gradient", "spring_damper", "drag",
              "scheduled_loads", "magnetic_dipole"] + (["thrust"] if flows else [])
+    kinds += ["reaction_wheel"] if rigid else []  # on a rigid body, free or pinned
     kind = draw(st.sampled_from(kinds))
     table = {"type": kind}
     some = draw(st.one_of(st.none(), st.lists(st.sampled_from(names), min_size=1, max_size=len(names), unique=True)))
@@ -180,6 +181,15 @@ def _force(draw, names, flows):
         if draw(st.booleans()):  # a source dipole far outside the bodies' reach
             table["source_moment_W"] = draw(_vector(3, st.floats(-1e7, 1e7), "A*m^2"))
             table["source_p_W"] = [Q(0.0, "m"), Q(0.0, "m"), Q(-50.0, "m")]
+    elif kind == "reaction_wheel":
+        table["body"] = draw(st.sampled_from(rigid))
+        table["axis_B"] = [draw(SMALL), draw(SMALL), 1.0]
+        table["inertia"] = draw(_q(st.floats(1e-3, 0.1), "kg*m^2"))
+        table["speed"] = draw(_q(st.floats(-100.0, 100.0), "rad/s"))
+        table["acceleration"] = draw(_q(st.floats(-50.0, 50.0), "rad/s^2"))
+        table["t_start"] = draw(_q(st.floats(0.0, 0.1), "s"))
+        table["t_end"] = draw(_q(st.floats(0.2, 0.3), "s"))
+        some = None
     else:  # thrust on a body with a mass flow
         table["body"] = draw(st.sampled_from(flows))
         table["u_rel"] = draw(_vector(3, st.floats(-100.0, 100.0), "m/s"))
@@ -197,7 +207,8 @@ def scene_data(draw, max_bodies=3):
     names = [f"b{i}" for i in range(draw(st.integers(1, max_bodies)))]
     data = {"name": "fuzzed", "body": [draw(body_table(n)) for n in names]}
     flows = [t["name"] for t in data["body"] if "mass_flow" in t]
-    forces = [_force(draw, names, flows) for _ in range(draw(st.integers(0, 3)))]
+    rigid = [t["name"] for t in data["body"] if t["kind"] in ("rigid", "pivoted")]
+    forces = [_force(draw, names, flows, rigid) for _ in range(draw(st.integers(0, 3)))]
     if forces:
         data["force"] = forces
     frame = draw(st.sampled_from([None, None, "rotating", "earth"]))

@@ -90,6 +90,7 @@ ELEMENTS = {
     "SpringDamper": lambda: rd.SpringDamper(body_a=0, stiffness=1.0), "Drag": lambda: rd.Drag(linear=0.1),
     "ScheduledLoads": lambda: rd.ScheduledLoads(body=0), "PythonForce": lambda: rd.PythonForce(_push),
     "Thrust": lambda: rd.Thrust(body=0, u_rel=V), "MagneticDipole": lambda: rd.MagneticDipole(m_B=V),
+    "ReactionWheel": lambda: rd.ReactionWheel(body=0, axis_B=V, inertia=0.1),
 }
 
 
@@ -284,6 +285,7 @@ EXAMPLES = {
     "SceneFrame.rotating": lambda: {"axis": [0, 0, 1.0], "rate": 0.5}, "SceneFrame.earth": lambda: {"latitude": 0.8},
     "SceneFrame.moving": lambda: {"frame_motion": rd.FrameMotion.fixed()},
     "MassFlow": lambda: {}, "Thrust": lambda: {"body": 0, "u_rel": V}, "MagneticDipole": lambda: {"m_B": V},
+    "ReactionWheel": lambda: {"body": 0, "axis_B": V, "inertia": 0.1},
     # their exact references
     "CompoundPendulumSolution": _pendulum, "CompoundPendulumSolution.at": lambda: {"t": 0.5},
     "LagrangeTopSolution": _top, "LagrangeTopSolution.at": lambda: {"t": 0.5},

@@ -50,6 +50,8 @@ ELEMENT_EXAMPLES = {
     "Thrust": rd.Thrust(body=0, u_rel=[0.0, 0.0, -100.0], frame="world"),
     "MagneticDipole": rd.MagneticDipole(m_B=[0.2, 0.0, 0.0], B_W=[2e-5, 0.0, -4e-5], source_moment_W=[0.0, 0.0, 1e3],
                                         source_p_W=[0.0, 0.0, -10.0], bodies=[1]),
+    "ReactionWheel": rd.ReactionWheel(body=1, axis_B=[0.0, 0.0, 1.0], inertia=0.01, speed=100.0, acceleration=-20.0,
+                                      t_start=0.5, t_end=2.5),
     "PythonForce": rd.PythonForce(_force),
 }
 

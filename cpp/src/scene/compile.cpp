@@ -318,10 +318,15 @@ CompiledScene compile_scene(const Scene& scene, Method method) {
                             "keeps only ~" + one_decimal(16.0 - pivoted->digits_lost()) +
                             " of the 16 digits of the inertia about the centre of mass");
   }
-  for (const Element& element : scene.elements) {
-    if (const auto* l = std::get_if<ScheduledLoads>(&element)) {
-      out.switch_schedule_.insert(out.switch_schedule_.end(), l->loads.begin(), l->loads.end());
-    }
+  for (const Element& element : scene.elements) {  // the switch times of every element that has some
+    std::visit(
+        [&](const auto& spec) {
+          if constexpr (has_switches<std::decay_t<decltype(spec)>>::value) {
+            const std::vector<AppliedLoad> switches = spec.switches();
+            out.switch_schedule_.insert(out.switch_schedule_.end(), switches.begin(), switches.end());
+          }
+        },
+        element);
   }
   out.scene_ = std::make_shared<const Scene>(scene);
   out.method_ = method;

@@ -87,6 +87,13 @@ struct has_keyword_only : std::false_type {};
 template <class Spec>
 struct has_keyword_only<Spec, std::void_t<decltype(Spec::keyword_only)>> : std::true_type {};
 
+// Whether Spec has switch times (`std::vector<AppliedLoad> switches() const`: each t_start and t_end is one),
+// at which a run splits its steps and sets its terms' pieces (set_time).
+template <class Spec, class = void>
+struct has_switches : std::false_type {};
+template <class Spec>
+struct has_switches<Spec, std::void_t<decltype(std::declval<const Spec&>().switches())>> : std::true_type {};
+
 // Calls f(field) for each field of Spec's table, in order.
 template <class Spec, class F>
 void for_each_field(F&& f) {

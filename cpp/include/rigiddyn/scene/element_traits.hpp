@@ -10,6 +10,8 @@ struct ElementTraits {
   bool time_dependent;      // its wrench depends on t (schedules, user forces)
   bool has_potential;       // potential() is its potential energy V with f = −∇_p V, τ = −∂V/∂(rotation)
   bool has_torque;          // it may produce a non-zero tau_B
+  bool has_force = true;        // it may produce a non-zero f_W
+  bool needs_attitude = false;  // it acts only on bodies with an attitude (it skips particles)
 };
 
 }  // namespace rigiddyn

@@ -238,6 +238,12 @@ inline double coriolis_torque_axis(const CoriolisInertia& b, const Eigen::Vector
   return std::sqrt(std::max(0.0, s.dot(b.inertia * s) / b.det));
 }
 
+// Whether a term is piecewise constant in time (it has set_time(t)).
+template <class Term, class = void>
+struct has_set_time : std::false_type {};
+template <class Term>
+struct has_set_time<Term, std::void_t<decltype(std::declval<Term&>().set_time(0.0))>> : std::true_type {};
+
 }  // namespace detail
 
 // The model of a scene whose elements compile to the terms UniformGravityTerm … FunctionForceTerm and
@@ -327,14 +333,14 @@ class BasicSceneModel {
   std::size_t element_count() const { return terms_.size(); }
   const std::vector<Term>& terms() const { return terms_; }
 
-  // Sets every piecewise-constant element (ScheduledLoads) to its piece at time t [s]: called by the
-  // run loop at t0 and at each switch time, never per evaluation.
+  // Sets every piecewise-constant element (a term with set_time: ScheduledLoads, ReactionWheel) to its piece
+  // at time t [s]: called by the run loop at t0 and at each switch time, never per evaluation.
   void set_time(double t) {
     step_start_ = t;
     for (Term& term : terms_) {
       std::visit(
           [t](auto& e) {
-            if constexpr (std::is_same_v<std::decay_t<decltype(e)>, ScheduledLoadsTerm>) e.set_time(t);
+            if constexpr (detail::has_set_time<std::decay_t<decltype(e)>>::value) e.set_time(t);
           },
           term);
     }

@@ -68,7 +68,7 @@ class DragTerm {
   ElementTraits traits() const {
     ElementTraits t{};
     t.reads_attitude = false, t.velocity_dependent = true, t.time_dependent = false;
-    t.has_potential = false, t.has_torque = d1_ > 0.0 || d2_ > 0.0;
+    t.has_potential = false, t.has_torque = d1_ > 0.0 || d2_ > 0.0, t.has_force = c1_ > 0.0 || c2_ > 0.0;
     return t;
   }
 

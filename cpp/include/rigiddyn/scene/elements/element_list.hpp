@@ -8,6 +8,7 @@
 #include "rigiddyn/scene/elements/magnetic_dipole.hpp"
 #include "rigiddyn/scene/elements/mutual_gravity.hpp"
 #include "rigiddyn/scene/elements/point_mass_gravity.hpp"
+#include "rigiddyn/scene/elements/reaction_wheel.hpp"
 #include "rigiddyn/scene/elements/scheduled_loads.hpp"
 #include "rigiddyn/scene/elements/spring_damper.hpp"
 #include "rigiddyn/scene/elements/thrust.hpp"
@@ -26,7 +27,8 @@ using Element = std::variant<UniformGravity,    //
                              ScheduledLoads,    //
                              FunctionForce,     //
                              Thrust,            //
-                             MagneticDipole>;
+                             MagneticDipole,    //
+                             ReactionWheel>;
 
 // The variant of the elements' compiled terms followed by More...: TermsOf<Element, X>::type =
 // std::variant<UniformGravityTerm, …, ThrustTerm, X>.

@@ -89,7 +89,7 @@ class GravityGradientTerm {
   static ElementTraits traits() {
     ElementTraits t{};
     t.reads_attitude = true, t.velocity_dependent = false, t.time_dependent = false;
-    t.has_potential = true, t.has_torque = true;
+    t.has_potential = true, t.has_torque = true, t.needs_attitude = true;
     return t;
   }
 

@@ -82,10 +82,11 @@ class MagneticDipoleTerm {
     }
   }
 
-  static ElementTraits traits() {
+  ElementTraits traits() const {
     ElementTraits t{};
     t.reads_attitude = true, t.velocity_dependent = false, t.time_dependent = false;
-    t.has_potential = true, t.has_torque = true;
+    t.has_potential = true, t.has_torque = true, t.needs_attitude = true;
+    t.has_force = !M_W_.isZero(0.0);  // the uniform field's gradient is zero
     return t;
   }
 

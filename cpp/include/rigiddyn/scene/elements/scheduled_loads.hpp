@@ -47,6 +47,9 @@ struct ScheduledLoads {
         vector_field("point_B", &ScheduledLoads::point_B, "m",
                      "(3,) point of application of the forces in B, from the centre of mass [m]"));
   }
+
+  // The times at which a run splits its steps: every load's t_start and t_end.
+  const std::vector<AppliedLoad>& switches() const { return loads; }
 };
 
 // The compiled term: the schedule and the loads of the current piece.
@@ -66,8 +69,9 @@ class ScheduledLoadsTerm {
   }
 
   ElementTraits traits() const {
-    bool turning = !point_B_.isZero(0.0), torque = !point_B_.isZero(0.0);
+    bool turning = !point_B_.isZero(0.0), torque = !point_B_.isZero(0.0), force = false;
     for (const AppliedLoad& load : schedule_) {
+      force = force || !load.force.isZero(0.0);
       const bool body_force = load.frame == Frame::body && !load.force.isZero(0.0);
       const bool world_torque = load.frame == Frame::world && !load.torque.isZero(0.0);
       turning = turning || body_force || world_torque;
@@ -75,7 +79,7 @@ class ScheduledLoadsTerm {
     }
     ElementTraits t{};
     t.reads_attitude = turning, t.velocity_dependent = false, t.time_dependent = has_time_window(schedule_);
-    t.has_potential = false, t.has_torque = torque;
+    t.has_potential = false, t.has_torque = torque, t.has_force = force;
     return t;
   }
 
