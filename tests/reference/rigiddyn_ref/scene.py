@@ -29,8 +29,8 @@ An element is data, Element(kind, params) with the parameter names of rigiddyn's
 (UniformGravity, PointMassGravity, MutualGravity, GravityGradient, SpringDamper, Drag, ScheduledLoads,
 MagneticDipole, ReactionWheel); `evaluate` calls the force model of its kind, which returns an Effect: the force
 f_W (nb, 3) [N] in W at each centre of mass, the couple tau_B (nb, 3) [N m] in each body's B, the power
-Σ f·v + τ·ω [W] and the potential [J] (0 where the model has none). rk4_step splits a step at the schedules' switch times, as
-rigiddyn does, and at a wheel's t_start and t_end, where its rate dΩ/dt jumps.
+Σ f·v + τ·ω [W] and the potential [J] (0 where the model has none). rk4_step splits a step at the schedules'
+switch times, as rigiddyn does, and at a wheel's t_start and t_end, where its rate dΩ/dt jumps.
 """
 
 from __future__ import annotations
