@@ -71,8 +71,8 @@ def random_load(rng, kind, frame, t_start=-np.inf, t_end=np.inf):
 
 def random_elements(rng, kind, bodies):
     """One or more elements of `kind` with random parameters (forces ≲ 10 N on the random bodies). Every
-    switch time of a schedule lies outside the compared step [0, 0.02] s; a planar body's points lie in its
-    xy plane (rigiddyn refuses others)."""
+    switch time of a schedule or of a wheel's ramp lies outside the compared step [0, 0.02] s; a planar body's
+    points lie in its xy plane (rigiddyn refuses others)."""
     direction = rng.normal(size=3)
     far = 4.0 * direction / np.linalg.norm(direction)
     if kind == "UniformGravity":
@@ -104,6 +104,12 @@ def random_elements(rng, kind, bodies):
                                        source_moment_W=rng.uniform(-2e6, 2e6, 3),
                                        source_p_W=rng.uniform(-0.2, 0.2, 3), bodies=None)),
                 ref.Element(kind, dict(m_B=rng.uniform(-1, 1, 3), B_W=rng.uniform(-1, 1, 3), bodies=[0, 1, 3]))]
+    if kind == "ReactionWheel":  # on the rigid bodies: |Ω| ≤ 20.4 rad/s, |h| ≤ 0.62 N m s, J |dΩ/dt| ≤ 0.6 N m
+        return [ref.Element(kind, dict(body=2, axis_B=rng.normal(size=3), inertia=rng.uniform(0.005, 0.03),
+                                       speed=rng.uniform(-10, 10))),
+                ref.Element(kind, dict(body=3, axis_B=rng.normal(size=3), inertia=rng.uniform(0.005, 0.03),
+                                       speed=rng.uniform(-10, 10), acceleration=rng.uniform(-20, 20), t_start=-0.5,
+                                       t_end=1.0))]
     if kind == "ScheduledLoads":
         kinds = [body.kind for body in bodies]
         return [ref.Element(kind, dict(body=b, point_B=rng.uniform(-0.5, 0.5, 3) if b >= 2 else np.zeros(3),

@@ -11,7 +11,10 @@ F = G M m / r² along the line of centres (Craig, "Basic Concepts": Mass); plane
 attractor on an extended body, V₂ = −GM/(2|r|³)(tr I − 3 r̂ᵀ I_W r̂); its force is derived below. The
 magnetic dipole is standard magnetostatics (Jackson, "Classical Electrodynamics", §5.6: the field of a
 magnetic dipole, B = μ0/(4π) (3 r̂ (r̂·M) − M)/|r|³; §5.7: on a dipole m in a field B the torque τ = m × B,
-the energy U = −m·B and the force ∇(m·B)), with μ0 of CODATA 2018.
+the energy U = −m·B and the force ∇(m·B)), with μ0 of CODATA 2018. The reaction wheel is the gyrostat of Hughes,
+"Spacecraft Attitude Dynamics", ch. 3: a rigid body carrying a wheel spun about an axis fixed in it, whose
+Euler equation I ω̇ + ω × (I ω + h) = n − ḣ (I the whole body's inertia, h the wheel's angular momentum
+relative to the body) makes the wheel a couple −ω × h − ḣ on the body.
 
 Bodies (`particle`, `planar`, `rigid`) and the per-body state layout (y, a flat vector), per body:
   particle  (p_W:3, v_W:3)                                      6
@@ -24,10 +27,10 @@ q = Rz(θ), v = (v_x, v_y, 0), w = (0, 0, ω). A planar body keeps only the in-p
 
 An element is data, Element(kind, params) with the parameter names of rigiddyn's Python classes
 (UniformGravity, PointMassGravity, MutualGravity, GravityGradient, SpringDamper, Drag, ScheduledLoads,
-MagneticDipole); `evaluate` calls the force model of its kind, which returns an Effect: the force f_W (nb, 3)
-[N] in W at each centre of mass, the couple tau_B (nb, 3) [N m] in each body's B, the power Σ f·v + τ·ω [W]
-and the potential [J] (0 where the model has none). rk4_step splits a step at the schedules' switch times, as
-rigiddyn does.
+MagneticDipole, ReactionWheel); `evaluate` calls the force model of its kind, which returns an Effect: the force
+f_W (nb, 3) [N] in W at each centre of mass, the couple tau_B (nb, 3) [N m] in each body's B, the power
+Σ f·v + τ·ω [W] and the potential [J] (0 where the model has none). rk4_step splits a step at the schedules'
+switch times, as rigiddyn does, and at a wheel's t_start and t_end, where its rate dΩ/dt jumps.
 """
 
 from __future__ import annotations
@@ -344,10 +347,38 @@ def magnetic_dipole(bodies, kin, t, m_B, B_W=(0.0, 0.0, 0.0), source_moment_W=(0
     return _effect(f_W, tau_B, kin, potential)
 
 
+def wheel_speed(t, speed, acceleration, t_start, t_end) -> tuple[float, float]:
+    """The wheel's speed relative to its body Ω(t) = speed + acceleration (min(max(t, t_start), t_end) − t_start)
+    [rad/s] and its rate dΩ/dt [rad/s²]: acceleration for t_start <= t < t_end, 0 outside. t_start finite."""
+    ramp = min(max(t, t_start), t_end) - t_start
+    return speed + acceleration * ramp, acceleration if t_start <= t < t_end else 0.0
+
+
+def reaction_wheel(bodies, kin, t, body, axis_B, inertia, speed=0.0, acceleration=0.0, t_start=0.0, t_end=np.inf,
+                   rate_time=None) -> Effect:
+    """A wheel of moment of inertia J = `inertia` [kg m²] about the unit axis a = axis_B/|axis_B| fixed in the B
+    of the rigid body `body`, spun relative to it at Ω(t) (wheel_speed) [rad/s]; the body's inertia is the whole
+    body's, wheel included. Its angular momentum relative to the body is h_B = J Ω a and the gyrostat's Euler
+    equation (Hughes, ch. 3) I ω̇ + ω × (I ω + h) = n − ḣ makes it the couple
+        τ_B = −ω_B × h_B − ḣ_B,  ḣ_B = J (dΩ/dt) a,
+    no force, no potential; its power τ·ω = −ḣ·ω (the motor's work: 0 at constant speed). dΩ/dt is read at
+    rate_time [s] (default t: rk4_step passes the middle of the piece, so that a step ending at t_end sees the
+    ramp throughout). Particles and planar bodies are refused (a wheel needs a full attitude)."""
+    if bodies[body].kind != "rigid":
+        raise ValueError(f"reaction_wheel: body {body} is a {bodies[body].kind}, expected a rigid body")
+    a = np.asarray(axis_B, float) / np.linalg.norm(axis_B)
+    omega, _ = wheel_speed(t, speed, acceleration, t_start, t_end)
+    _, omega_dot = wheel_speed(t if rate_time is None else rate_time, speed, acceleration, t_start, t_end)
+    h_B, h_dot_B = inertia * omega * a, inertia * omega_dot * a
+    f_W, tau_B = _zeros(bodies)
+    tau_B[body] = -cross(kin[body].w_B, h_B) - h_dot_B
+    return _effect(f_W, tau_B, kin)
+
+
 FORCE_MODELS = {"UniformGravity": uniform_gravity, "PointMassGravity": point_mass_gravity,
                 "MutualGravity": mutual_gravity, "GravityGradient": gravity_gradient,
                 "SpringDamper": spring_damper, "Drag": drag, "ScheduledLoads": scheduled_loads,
-                "MagneticDipole": magnetic_dipole}
+                "MagneticDipole": magnetic_dipole, "ReactionWheel": reaction_wheel}
 
 
 class Element(NamedTuple):
@@ -357,11 +388,17 @@ class Element(NamedTuple):
     params: dict[str, Any]
 
 
-def evaluate(element: Element, bodies, kin, t) -> Effect:
-    """The Effect of one element on the scene's bodies at time t [s]."""
+def evaluate(element: Element, bodies, kin, t, schedule_time=None) -> Effect:
+    """The Effect of one element on the scene's bodies at time t [s]; the piecewise-constant parts read theirs at
+    `schedule_time` instead when it is given (the piece of a step they are constant on): a schedule's loads
+    (ScheduledLoads), a wheel's rate dΩ/dt (ReactionWheel)."""
     params = dict(element.params)
     if "bodies" in params:
         params["bodies_acted"] = params.pop("bodies")
+    if schedule_time is not None and element.kind == "ScheduledLoads":
+        t = schedule_time
+    if schedule_time is not None and element.kind == "ReactionWheel":
+        params["rate_time"] = schedule_time
     return FORCE_MODELS[element.kind](bodies, kin, t, **params)
 
 
@@ -400,12 +437,11 @@ def body_rate(body: Body, k: Kinematics, f_W, tau_B) -> np.ndarray:
 
 
 def effects(scene: Scene, y, schedule_time=None) -> list[Effect]:
-    """Every element's Effect at the state y (its time t); schedules (ScheduledLoads) read theirs at
-    `schedule_time` instead when it is given (the piece of a step they are constant on)."""
+    """Every element's Effect at the state y (its time t); schedules (ScheduledLoads) and a wheel's rate
+    (ReactionWheel) read theirs at `schedule_time` instead when it is given (evaluate)."""
     kin = kinematics(scene.bodies, y)
     t = time_of(scene, y)
-    return [evaluate(e, scene.bodies, kin, schedule_time if e.kind == "ScheduledLoads" and schedule_time is not None
-                     else t) for e in scene.elements]
+    return [evaluate(e, scene.bodies, kin, t, schedule_time) for e in scene.elements]
 
 
 def rate(scene: Scene, y, schedule_time=None) -> np.ndarray:
@@ -445,15 +481,19 @@ def _rk4_piece(scene: Scene, y, h, schedule_time) -> np.ndarray:
 
 
 def schedule_switches(scene: Scene) -> list[float]:
-    """Every finite switch time (t_start, t_end) [s] of the scene's schedules."""
-    return sorted({b for e in scene.elements if e.kind == "ScheduledLoads" for load in e.params["loads"]
-                   for b in (load.t_start, load.t_end) if np.isfinite(b)})
+    """Every finite switch time (t_start, t_end) [s] of the scene's schedules and of its wheels' ramps."""
+    loads = {b for e in scene.elements if e.kind == "ScheduledLoads" for load in e.params["loads"]
+             for b in (load.t_start, load.t_end)}
+    wheels = {e.params.get(key, default) for e in scene.elements if e.kind == "ReactionWheel"
+              for key, default in (("t_start", 0.0), ("t_end", np.inf))}
+    return sorted(b for b in loads | wheels if np.isfinite(b))
 
 
 def rk4_step(scene: Scene, y, h) -> np.ndarray:
-    """One RK4 step of h [s] from y, split at the schedules' switch times strictly inside it into pieces,
-    each a full RK4 step during which the schedules hold the loads active inside the piece (read at its
-    middle), so that a piecewise-constant schedule is integrated exactly to the method's order."""
+    """One RK4 step of h [s] from y, split at the switch times strictly inside it (schedule_switches) into
+    pieces, each a full RK4 step during which the schedules hold the loads active inside the piece and the
+    wheels their rate dΩ/dt there (read at its middle), so that a piecewise-constant schedule and a wheel's
+    ramp are integrated to the method's order."""
     t = time_of(scene, y)
     cuts = [b for b in schedule_switches(scene) if t < b < t + h] + [t + h]
     start = t
@@ -498,10 +538,10 @@ def angular_momentum(scene: Scene, y) -> np.ndarray:
 
 
 __all__ = ["Body", "Effect", "Element", "FORCE_MODELS", "IDENTITY", "Kinematics", "MU0", "STATE_SIZE", "Scene",
-           "angular_momentum", "body_offsets", "body_rate", "dipole_dipole_force", "dipole_field", "drag",
-           "effects", "evaluate", "gravity_gradient", "gravity_gradient_force", "gravity_gradient_potential",
+           "angular_momentum", "body_offsets", "body_rate", "dipole_dipole_force", "dipole_field", "drag", "effects",
+           "evaluate", "gravity_gradient", "gravity_gradient_force", "gravity_gradient_potential",
            "gravity_gradient_torque", "initial_state", "kinematics", "kinetic_energy", "linear_momentum",
            "magnetic_dipole", "magnetic_field", "mutual_gravity", "normalise_attitudes", "particle", "planar",
-           "point_mass_gravity", "point_position", "point_velocity", "potential_energy", "rate", "rigid", "rk4_run",
-           "rk4_step", "rz_quat", "schedule_switches", "scheduled_loads", "spring_damper", "state_of", "time_of",
-           "uniform_gravity", "work_of"]
+           "point_mass_gravity", "point_position", "point_velocity", "potential_energy", "rate", "reaction_wheel",
+           "rigid", "rk4_run", "rk4_step", "rz_quat", "schedule_switches", "scheduled_loads", "spring_damper",
+           "state_of", "time_of", "uniform_gravity", "wheel_speed", "work_of"]
