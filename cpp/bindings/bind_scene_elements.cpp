@@ -7,6 +7,7 @@
 #include <pybind11/stl.h>
 
 #include <climits>
+#include <cmath>
 #include <memory>
 #include <string>
 #include <utility>
@@ -106,7 +107,9 @@ void require_bound(double x, FieldBound bound, const char* key) {
 // The field's value from a Python object (a float or a pint quantity for a field with a unit), checked.
 template <class Spec>
 double from_python(py::handle v, const ElementField<Spec, double>& f) {
-  const double x = py_io::as_scalar(*f.unit ? py_io::in_si(v, f.unit, f.key) : py::reinterpret_borrow<py::object>(v), f.key);
+  const py::object si = *f.unit ? py_io::in_si(v, f.unit, f.key) : py::reinterpret_borrow<py::object>(v);
+  if (f.infinite_ok && py::isinstance<py::float_>(si) && std::isinf(si.cast<double>())) return si.cast<double>();
+  const double x = py_io::as_scalar(si, f.key);
   require_bound(x, f.bound, f.key);
   return x;
 }

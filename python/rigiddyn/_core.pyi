@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['AppliedLoad', 'BatchResult', 'BatchSceneResult', 'BodyAcceleration', 'ComWrench', 'CompiledScene', 'CompoundPendulumSolution', 'ConstantThrustSolution', 'DensityIntegral', 'Drag', 'ElementField', 'FORCE_ELEMENTS', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'GravityGradient', 'InertiaCheck', 'InertiaReport', 'KineticEnergy', 'LagrangeTopSolution', 'MagneticDipole', 'MassFlow', 'MeshWeldWarning', 'Motion', 'MutualGravity', 'Particle', 'ParticleState', 'PivotedAcceleration', 'PivotedBody', 'PivotedBodyState', 'PivotedPlanarAcceleration', 'PivotedPlanarBody', 'PivotedPlanarBodyState', 'PivotedPlanarTorque', 'PivotedTorque', 'PlanarAcceleration', 'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointMassGravity', 'PointVelocity', 'PrincipalAxes', 'PythonForce', 'RigidBody', 'RigidBodyState', 'RotatingFrameFreeParticle', 'Scene', 'SceneCompatibilityWarning', 'SceneFrame', 'SceneResult', 'ScheduledLoads', 'Screw', 'SimulationResult', 'SpatialInertia', 'SpringDamper', 'Thrust', 'TorqueFreeSolution', 'Transform', 'UniformGravity', 'WeldedMesh', 'align_vectors', 'angular_distance', 'angular_momentum', 'angular_velocity_from_quat_rate', 'apply_impulse', 'axis_angle_to_quat', 'box_shell', 'compose_kinematics', 'composite', 'davenport_to_quat', 'default_thread_count', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'from_point_masses', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation', 'nearest_valid_inertia', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix', 'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'simulate', 'simulate_batch', 'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'twist_to_screw', 'vee', 'weld_vertices']
+__all__: list[str] = ['AppliedLoad', 'BatchResult', 'BatchSceneResult', 'BodyAcceleration', 'ComWrench', 'CompiledScene', 'CompoundPendulumSolution', 'ConstantThrustSolution', 'DensityIntegral', 'Drag', 'ElementField', 'FORCE_ELEMENTS', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'GravityGradient', 'InertiaCheck', 'InertiaReport', 'KineticEnergy', 'LagrangeTopSolution', 'MagneticDipole', 'MassFlow', 'MeshWeldWarning', 'Motion', 'MutualGravity', 'Particle', 'ParticleState', 'PivotedAcceleration', 'PivotedBody', 'PivotedBodyState', 'PivotedPlanarAcceleration', 'PivotedPlanarBody', 'PivotedPlanarBodyState', 'PivotedPlanarTorque', 'PivotedTorque', 'PlanarAcceleration', 'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointMassGravity', 'PointVelocity', 'PrincipalAxes', 'PythonForce', 'ReactionWheel', 'RigidBody', 'RigidBodyState', 'RotatingFrameFreeParticle', 'Scene', 'SceneCompatibilityWarning', 'SceneFrame', 'SceneResult', 'ScheduledLoads', 'Screw', 'SimulationResult', 'SpatialInertia', 'SpringDamper', 'Thrust', 'TorqueFreeSolution', 'Transform', 'UniformGravity', 'WeldedMesh', 'align_vectors', 'angular_distance', 'angular_momentum', 'angular_velocity_from_quat_rate', 'apply_impulse', 'axis_angle_to_quat', 'box_shell', 'compose_kinematics', 'composite', 'davenport_to_quat', 'default_thread_count', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'from_point_masses', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation', 'nearest_valid_inertia', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix', 'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'simulate', 'simulate_batch', 'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'twist_to_screw', 'vee', 'weld_vertices']
 class FrameKinematics:
     """
     Frame F relative to frame P at one instant (P = the parent of a FrameMotion, or the
@@ -2080,6 +2080,76 @@ class MagneticDipole:
         """
         (3,) position of the source dipole in W [m]
         """
+class ReactionWheel:
+    """
+    A reaction wheel inside a rigid body (a gyrostat): a wheel of moment of inertia J = inertia about the unit axis a = axis_B/|axis_B| (fixed in B) spins relative to the body at the commanded speed Omega(t) = speed + acceleration (clamp(t, t_start, t_end) - t_start), so its relative angular momentum is h_B = J Omega a. The body's inertia is the whole body's, wheel included; the element applies the couple tau_B = -w_B x h_B - dh_B/dt [N m] of Euler's equation of the gyrostat, I dw/dt + w x (I w + h) = tau - dh/dt. A run splits its steps at t_start and t_end. At a constant wheel speed the body's kinetic energy and the total angular momentum R (I w + h) are conserved; spinning the wheel up about a principal axis turns the body by -J/I times the wheel's angle. Rigid bodies, free or pinned.
+    
+    Parameters
+    ----------
+    body : int, required
+        index of the rigid body (free or pinned) that carries the wheel
+    axis_B : array_like, shape (3,), required
+        (3,) the wheel's spin axis in B (normalised; not zero)
+    inertia : float [kg*m^2], required
+        the wheel's moment of inertia J about its axis [kg m^2]
+    speed : float [rad/s], default 0.0
+        the wheel's speed relative to the body at t_start [rad/s]
+    acceleration : float [rad/s^2], default 0.0
+        the rate of the wheel's speed on [t_start, t_end) [rad/s^2]
+    t_start : float [s], default 0.0
+        the start of the ramp [s]
+    t_end : float [s], default inf
+        the end of the ramp [s] (inf: none)
+    
+    Each argument with a unit takes a float in that unit or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
+    """
+    __hash__: typing.ClassVar[None] = None
+    fields: typing.ClassVar[tuple]
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, *, body: typing.Any, axis_B: typing.Any, inertia: typing.Any, speed: typing.Any = 0.0, acceleration: typing.Any = 0.0, t_start: typing.Any = 0.0, t_end: typing.Any = ...) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def acceleration(self) -> typing.Any:
+        """
+        the rate of the wheel's speed on [t_start, t_end) [rad/s^2]
+        """
+    @property
+    def axis_B(self) -> typing.Any:
+        """
+        (3,) the wheel's spin axis in B (normalised; not zero)
+        """
+    @property
+    def body(self) -> typing.Any:
+        """
+        index of the rigid body (free or pinned) that carries the wheel
+        """
+    @property
+    def inertia(self) -> typing.Any:
+        """
+        the wheel's moment of inertia J about its axis [kg m^2]
+        """
+    @property
+    def speed(self) -> typing.Any:
+        """
+        the wheel's speed relative to the body at t_start [rad/s]
+        """
+    @property
+    def t_end(self) -> typing.Any:
+        """
+        the end of the ramp [s] (inf: none)
+        """
+    @property
+    def t_start(self) -> typing.Any:
+        """
+        the start of the ramp [s]
+        """
 class SceneFrame:
     """
     The frame F a scene's states are relative to, moving relative to the inertial frame W (Scene.frame; None:
@@ -2287,7 +2357,7 @@ class CompiledScene:
     @property
     def element_traits(self) -> tuple:
         """
-        tuple of dict, one per compiled term in the order of SceneResult.work's columns (the scene's elements, then the frame's fictitious terms): reads_attitude, velocity_dependent, time_dependent, has_potential (its forces derive from a potential energy) and has_torque (bool each)
+        tuple of dict, one per compiled term in the order of SceneResult.work's columns (the scene's elements, then the frame's fictitious terms): reads_attitude, velocity_dependent, time_dependent, has_potential (its forces derive from a potential energy), has_torque, has_force and needs_attitude (it skips particles) (bool each)
         """
     @property
     def method(self) -> str:
@@ -3908,6 +3978,6 @@ def weld_vertices(vertices: typing.Any, faces: typing.Any, tolerance: typing.Any
     their lowest-indexed vertex; faces (f, 3) repeating a vertex afterwards are dropped. Returns a
     WeldedMesh (vertices, faces, welded_vertices, dropped_faces, ...); warns nothing.
     """
-FORCE_ELEMENTS: tuple = (UniformGravity, PointMassGravity, MutualGravity, GravityGradient, SpringDamper, Drag, ScheduledLoads, PythonForce, Thrust, MagneticDipole)
+FORCE_ELEMENTS: tuple = (UniformGravity, PointMassGravity, MutualGravity, GravityGradient, SpringDamper, Drag, ScheduledLoads, PythonForce, Thrust, MagneticDipole, ReactionWheel)
 __version__: str = '0.1.0'
 inertia_relative_tolerance: float = 1e-10

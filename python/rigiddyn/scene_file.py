@@ -830,6 +830,8 @@ def _force_table(element: Any, i: int, names: Sequence[str]) -> dict[str, Any]:
     table: dict[str, Any] = {"type": kind}
     for key, f in FORCE_TYPES[kind][1].items():
         value = getattr(element, key)
+        if f.kind == "scalar" and not math.isfinite(value) and value == f.default:
+            continue  # an endless time (a ramp's t_end): the default, left out as a load's is
         if f.kind in ("scalar", "vector"):
             table[key] = _floats(value)
         elif f.kind == "frame":

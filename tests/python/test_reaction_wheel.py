@@ -347,7 +347,7 @@ body = "box"
 axis_B = [0, 0, 2]
 inertia = "20 g*m^2"
 speed = "30 rad/s"
-acceleration = {value = 180, unit = "deg/s^2"}
+acceleration = "180 deg/s^2"
 t_start = "100 ms"
 t_end = 0.6
 [[force]]

@@ -32,6 +32,7 @@ struct ElementField {
   const char* doc;         // one line: what it is, its frame and shape
   bool required = false;   // it must be given (the member's default is only a placeholder)
   FieldBound bound = FieldBound::any;
+  bool infinite_ok = false;  // a scalar that may be ±∞ (a time without end)
 
   constexpr ElementField must_be_given() const {
     ElementField f = *this;
@@ -46,6 +47,11 @@ struct ElementField {
   constexpr ElementField above_zero() const {
     ElementField f = *this;
     f.bound = FieldBound::positive;
+    return f;
+  }
+  constexpr ElementField may_be_infinite() const {
+    ElementField f = *this;
+    f.infinite_ok = true;
     return f;
   }
 };

@@ -64,8 +64,7 @@ struct ReactionWheel {
         scalar_field("acceleration", &ReactionWheel::acceleration, "rad/s^2",
                      "the rate of the wheel's speed on [t_start, t_end) [rad/s^2]"),
         scalar_field("t_start", &ReactionWheel::t_start, "s", "the start of the ramp [s]"),
-        ElementField<ReactionWheel, double>{"t_end", &ReactionWheel::t_end, FieldKind::scalar, "s",
-                                            "the end of the ramp [s] (inf: none)"});
+        scalar_field("t_end", &ReactionWheel::t_end, "s", "the end of the ramp [s] (inf: none)").may_be_infinite());
   }
 
   // What the fields must satisfy together: a non-zero axis, a ramp that ends after it starts.
