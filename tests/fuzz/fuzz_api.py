@@ -82,6 +82,7 @@ DOCUMENTED_NON_FINITE = [
     ("methods()[][stability_limit]", {"inf"}, ("rigiddyn", "methods")),
     ("AppliedLoad.t_start", {"-inf"}, ("rigiddyn", "AppliedLoad.__init__")),
     ("AppliedLoad.t_end", {"inf"}, ("rigiddyn", "AppliedLoad.__init__")),
+    ("ReactionWheel.t_end", {"inf"}, ("rigiddyn", "ReactionWheel")),  # its Parameters: "(inf: none)"
     ("Load.t_start", {"-inf"}, ("rigiddyn.problem", "Load")),
     ("Load.t_end", {"inf"}, ("rigiddyn.problem", "Load")),
     ("*[observed_order]", {"nan"}, ("rigiddyn.work_precision", "")),  # the module's docstring: the columns

@@ -110,6 +110,9 @@ RECIPES = {
     # run's records
     "PivotedBody": st.just(_PIVOTED),
     "PivotedPlanarBody": st.just(_call_spec("PivotedPlanarBody", [("lit", 1.0), ("lit", 0.1), ("lit", [0.0, -0.5])])),
+    "ReactionWheel": st.tuples(st.floats(-100.0, 100.0), st.floats(-10.0, 10.0)).map(lambda sa: _call_spec(
+        "ReactionWheel", body=("lit", 1), axis_B=("lit", [0.0, 0.6, 0.8]), inertia=("lit", 0.01), speed=("lit", sa[0]),
+        acceleration=("lit", sa[1]))),
     "Thrust": st.sampled_from(["body", "world"]).map(lambda frame: _call_spec(
         "Thrust", [("lit", 0), ("lit", [0.0, 0.0, -100.0])], frame=("lit", frame))),
     "SceneFrame": st.sampled_from([_call_spec("SceneFrame.rotating", [("lit", [0.0, 0.0, 1.0]), ("lit", 0.5)]),
