@@ -172,7 +172,7 @@ py::object default_object(const T& value, FieldKind kind) {
 
 // ------------------------------------------------------------ one class per spec, from its field table
 
-constexpr const char* kind_name(FieldKind kind) {
+constexpr const char* field_kind_name(FieldKind kind) {
   switch (kind) {
     case FieldKind::scalar: return "scalar";
     case FieldKind::vector: return "vector";
@@ -198,7 +198,7 @@ py::tuple field_infos() {
   const Spec defaults{};
   py::list out;
   for_each_field<Spec>([&](const auto& f) {
-    out.append(FieldInfo{f.key, kind_name(f.kind), f.unit, f.doc, f.required,
+    out.append(FieldInfo{f.key, field_kind_name(f.kind), f.unit, f.doc, f.required,
                          f.required ? py::object(py::none()) : default_object(defaults.*(f.member), f.kind)});
   });
   return py::tuple(out);
@@ -317,11 +317,9 @@ void bind_element(py::module_& m, const char* name, const char* text) {
   static const std::string doc = class_doc<Spec>(text);
   py::class_<Spec> cls(m, name, doc.c_str());
   def_init<Spec>(cls, name, std::make_index_sequence<field_count<Spec>()>());
-  std::size_t i = 0;
   for_each_field<Spec>([&](const auto& f) {
     cls.def_property_readonly(f.key, [member = f.member, kind = f.kind](const Spec& e) { return to_python(e.*member, kind); },
                               f.doc);
-    ++i;
   });
   cls.attr("fields") = field_infos<Spec>();
   cls.def("__repr__", [name](const Spec& e) {
