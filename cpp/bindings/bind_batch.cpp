@@ -222,6 +222,9 @@ constexpr std::size_t scene_column_count = sizeof(scene_columns) / sizeof(scene_
 struct BatchSceneResult {
   py::array arrays[scene_column_count];  // scene_columns, each (N, n, ...)
   py::tuple body_names, elements;
+  py::array wheel_speed;   // (N, n, nw) each gyrostat wheel's speed relative to its body [rad/s]
+  py::array motor_work;    // (N, n, nw) each wheel's motor work since t0 [J]
+  py::tuple wheel_bodies;  // (nw,) the body index of each wheel
   py::array diverged, filled, unconverged_steps;  // (N,) bool, int64, int64
   double elapsed_seconds = 0.0;
   bool scalar_first = false;  // q_WB rows as (w, x, y, z)
@@ -238,7 +241,7 @@ std::vector<py::ssize_t> scene_shape(py::ssize_t N, py::ssize_t n, const std::ve
 }
 
 BatchSceneResult to_batch_scene_result(BatchSceneSimulation&& b, py::tuple body_names, py::tuple elements,
-                                       bool scalar_first) {
+                                       py::tuple wheel_bodies, bool scalar_first) {
   const auto N = static_cast<py::ssize_t>(b.samples), n = static_cast<py::ssize_t>(b.records);
   if (scalar_first) to_scalar_first(b.q_WB);
   BatchSceneResult r;
@@ -248,6 +251,9 @@ BatchSceneResult to_batch_scene_result(BatchSceneSimulation&& b, py::tuple body_
   }
   r.body_names = std::move(body_names);
   r.elements = std::move(elements);
+  r.wheel_speed = adopt_vector(std::move(b.wheel_speed), {N, n, static_cast<py::ssize_t>(b.wheel_count)});
+  r.motor_work = adopt_vector(std::move(b.motor_work), {N, n, static_cast<py::ssize_t>(b.wheel_count)});
+  r.wheel_bodies = std::move(wheel_bodies);
   r.diverged = bool_array(b.diverged);
   r.filled = adopt_vector(std::move(b.filled), {N});
   r.unconverged_steps = adopt_vector(std::move(b.unconverged_steps), {N});
@@ -257,7 +263,7 @@ BatchSceneResult to_batch_scene_result(BatchSceneSimulation&& b, py::tuple body_
 }
 
 py::tuple batch_scene_state(const BatchSceneResult& r) {
-  py::tuple out(scene_column_count + 7);
+  py::tuple out(scene_column_count + 10);
   for (std::size_t k = 0; k < scene_column_count; ++k) out[k] = r.arrays[k];
   out[scene_column_count] = r.body_names;
   out[scene_column_count + 1] = r.elements;
@@ -266,16 +272,22 @@ py::tuple batch_scene_state(const BatchSceneResult& r) {
   out[scene_column_count + 4] = r.unconverged_steps;
   out[scene_column_count + 5] = py::float_(r.elapsed_seconds);
   out[scene_column_count + 6] = py::bool_(r.scalar_first);
+  out[scene_column_count + 7] = r.wheel_speed;
+  out[scene_column_count + 8] = r.motor_work;
+  out[scene_column_count + 9] = r.wheel_bodies;
   return out;
 }
 
-// scene_column_count + 6 items: a state without scalar_first (q_WB as (x, y, z, w)), as earlier pickles
+// scene_column_count + 6 or + 7 items: a state without scalar_first (q_WB as (x, y, z, w)) or without the wheels,
+// as earlier pickles
 BatchSceneResult batch_scene_from_state(const py::tuple& t) {
-  if (t.size() != scene_column_count + 6 && t.size() != scene_column_count + 7) {
+  const std::size_t size = t.size();
+  const std::size_t wheels = scene_column_count + 10;  // the size of a state with the wheels
+  if (size != scene_column_count + 6 && size != scene_column_count + 7 && size != wheels) {
     py_io::throw_value_error("BatchSceneResult pickle",
-                             "a tuple of " + std::to_string(scene_column_count + 6) + " or " +
-                                 std::to_string(scene_column_count + 7) + " items",
-                             std::to_string(t.size()) + " items");
+                             "a tuple of " + std::to_string(scene_column_count + 6) + ", " +
+                                 std::to_string(scene_column_count + 7) + " or " + std::to_string(wheels) + " items",
+                             std::to_string(size) + " items");
   }
   BatchSceneResult r;
   r.body_names = py::tuple(t[scene_column_count]);
@@ -292,7 +304,16 @@ BatchSceneResult batch_scene_from_state(const py::tuple& t) {
   r.filled = checked_copy(t[scene_column_count + 3], "BatchSceneResult pickle filled", {N}, "int64");
   r.unconverged_steps = checked_copy(t[scene_column_count + 4], "BatchSceneResult pickle unconverged_steps", {N}, "int64");
   r.elapsed_seconds = t[scene_column_count + 5].cast<double>();
-  r.scalar_first = t.size() == scene_column_count + 7 && t[scene_column_count + 6].cast<bool>();
+  r.scalar_first = size >= scene_column_count + 7 && t[scene_column_count + 6].cast<bool>();
+  r.wheel_bodies = size == wheels ? py::tuple(t[scene_column_count + 9]) : py::tuple();
+  const auto nw = static_cast<py::ssize_t>(r.wheel_bodies.size());
+  // each wheel column, (N, n, nw) (empty in an earlier pickle)
+  const auto wheel_column = [&](std::size_t at, const std::string& name) -> py::array {
+    if (size != wheels) return py::array_t<double>(std::vector<py::ssize_t>{N, n, 0});
+    return checked_copy(t[at], "BatchSceneResult pickle " + name, {N, n, nw});
+  };
+  r.wheel_speed = wheel_column(scene_column_count + 7, "wheel_speed");
+  r.motor_work = wheel_column(scene_column_count + 8, "motor_work");
   return r;
 }
 
@@ -304,6 +325,9 @@ SceneResult batch_scene_sample(const BatchSceneResult& r, py::handle key) {
   for (std::size_t k = 0; k < scene_column_count; ++k) out.*(scene_columns[k].member) = sample_rows(r.arrays[k], i, rows);
   out.body_names = r.body_names;
   out.elements = r.elements;
+  out.wheel_speed = sample_rows(r.wheel_speed, i, rows);
+  out.motor_work = sample_rows(r.motor_work, i, rows);
+  out.wheel_bodies = r.wheel_bodies;
   out.diverged = r.diverged.attr("__getitem__")(i).cast<bool>();
   out.unconverged_steps = r.unconverged_steps.attr("__getitem__")(i).cast<std::int64_t>();
   out.elapsed_seconds = r.elapsed_seconds;
@@ -805,7 +829,8 @@ BatchSceneResult scene_batch(py::handle model, py::handle initial, py::handle dt
     return simulate_batch(scenes, states, opt, dts, c.threads);  // a PythonForce takes the GIL back per call
   });
   const std::string overflowed = overflowed_samples(b);
-  BatchSceneResult r = to_batch_scene_result(std::move(b), std::move(body_names), std::move(elements), c.scalar_first);
+  BatchSceneResult r =
+      to_batch_scene_result(std::move(b), std::move(body_names), std::move(elements), wheel_bodies_of(first), c.scalar_first);
   warn_after_batch(r.diverged, r.unconverged_steps, method_info(o.method).name, overflowed);
   return r;
 }
@@ -970,7 +995,11 @@ void bind_batch(py::module_& m) {
     scene.def_property_readonly(scene_columns[k].name, [k](const BatchSceneResult& r) { return r.arrays[k]; }, docs[k]);
   }
   scene.def_readonly("body_names", &BatchSceneResult::body_names, "(nb,) tuple of the bodies' names")
-      .def_readonly("elements", &BatchSceneResult::elements, "(ne,) tuple of the work columns' class names");
+      .def_readonly("elements", &BatchSceneResult::elements, "(ne,) tuple of the work columns' class names")
+      .def_readonly("wheel_speed", &BatchSceneResult::wheel_speed,
+                    "(N, n, nw) each gyrostat wheel's speed relative to its body [rad/s] (nw = 0 without a gyrostat)")
+      .def_readonly("motor_work", &BatchSceneResult::motor_work, "(N, n, nw) each wheel's motor work since t0 [J]")
+      .def_readonly("wheel_bodies", &BatchSceneResult::wheel_bodies, "(nw,) tuple of the body index of each wheel");
   def_common(scene, &batch_scene_sample_object);
   scene.def("__repr__", &batch_scene_repr).def(py::pickle(&batch_scene_state, &batch_scene_from_state));
 

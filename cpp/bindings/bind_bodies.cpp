@@ -23,6 +23,7 @@
 #include "rigiddyn/dynamics/rigid_body_dynamics.hpp"
 #include "rigiddyn/simulate/simulate.hpp"  // standard_gravity
 #include "rigiddyn/so3/quaternion.hpp"
+#include "state_args.hpp"
 
 namespace rigiddyn::bindings {
 
@@ -78,29 +79,6 @@ py_io::Array read_only(const Eigen::Quaterniond& q, bool scalar_first = false) {
 }
 using py_io::read_only;
 
-// A unit quaternion from `obj` (checked_unit_quaternion: ValueError naming `name` farther than 1e-6
-// from unit norm), kept bit for bit when it is already unit to round-off (4 eps) so that a state
-// rebuilt from its repr equals the original, normalised otherwise.
-Eigen::Quaterniond as_unit_quaternion(py::handle obj, const std::string& name, bool scalar_first = false) {
-  const Eigen::Quaterniond q = py_io::as_quaternion(obj, name, scalar_first);
-  const Eigen::Quaterniond unit = checked_unit_quaternion(q, name);
-  return std::abs(q.norm() - 1.0) <= 4 * std::numeric_limits<double>::epsilon() ? q : unit;
-}
-
-// __eq__ (the values compared with ==, an unrelated type gives NotImplemented) and no hash: the
-// states are mutable.
-template <class T, class Equal>
-void def_equality(py::class_<T>& cls, Equal equal) {
-  cls.def(
-      "__eq__",
-      [equal](const T& a, py::handle b) -> py::object {
-        if (!py::isinstance<T>(b)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
-        return py::bool_(equal(a, b.cast<const T&>()));
-      },
-      py::arg("other"));
-  cls.attr("__hash__") = py::none();
-}
-
 bool same(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b) { return a.coeffs() == b.coeffs(); }
 
 // The pickled state tuple of `cls` with `n` items (ValueError otherwise).
@@ -110,15 +88,6 @@ py::tuple pickled(const py::tuple& t, std::size_t n, const char* cls) {
                              std::to_string(t.size()) + " items");
   }
   return t;
-}
-
-// N numbers of a pickled array, bit for bit (not checked finite: a state a diverged step returned is
-// pickled as it is).
-template <int N>
-Eigen::Matrix<double, N, 1> unpickled(py::handle obj, const char* what) {
-  const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(obj);
-  if (!a || a.size() != N) py_io::throw_value_error(what, std::to_string(N) + " numbers", py_io::describe(obj));
-  return Eigen::Map<const Eigen::Matrix<double, N, 1>>(a.data());
 }
 
 // A vector or matrix as a numpy array for repr_call (which shows it as nested lists).

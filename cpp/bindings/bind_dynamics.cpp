@@ -56,8 +56,8 @@ auto with_model(py::handle model, py::handle state, const char* state_name, F&& 
     return f(model.cast<const Particle&>(),
              py_io::as_instance<ParticleState>(state, state_name, "a ParticleState (the state of a Particle)"));
   }
-  py_io::throw_type_error("model", "a RigidBody, PlanarBody, Particle, PivotedBody, PivotedPlanarBody, Scene or "
-                          "CompiledScene", model);
+  py_io::throw_type_error("model", "a RigidBody, PlanarBody, Particle, PivotedBody, PivotedPlanarBody, Gyrostat, "
+                          "Scene or CompiledScene", model);
 }
 
 // simulate's result: numpy arrays, one row per record.
@@ -116,9 +116,10 @@ py::typing::Union<SimulationResult, SceneResult> simulate_py(py::handle model, p
     return py::cast(simulate_scene_py(model, initial, dt, steps, method, record_every, loads, gravity, t0, scalar_first,
                                       progress, duration));
   }
-  if (is_pivoted(model)) {  // the one-body scene of the body, its gravity and loads
-    return py::cast(simulate_scene_py(pivoted_scene(model, loads, gravity), py::make_tuple(initial), dt, steps, method,
-                                      record_every, py::none(), py::none(), t0, scalar_first, progress, duration));
+  if (is_pivoted(model) || is_gyrostat(model)) {  // the one-body scene of the body, its gravity and loads
+    const py::object scene = is_gyrostat(model) ? gyrostat_scene(model, loads, gravity) : pivoted_scene(model, loads, gravity);
+    return py::cast(simulate_scene_py(scene, py::make_tuple(initial), dt, steps, method, record_every, py::none(),
+                                      py::none(), t0, scalar_first, progress, duration));
   }
   return py::cast(with_model(model, initial, "initial", [&](const auto& body, const auto& state) {
     SimulationOptions o = as_options(dt, method, loads, gravity);
@@ -188,9 +189,9 @@ bool all_finite(const PlanarBodyState& s) {
 py::object step_py(py::handle model, py::handle state, py::handle dt, py::handle method, py::handle loads,
                    py::handle gravity, py::handle t) {
   if (is_scene(model)) return step_scene_py(model, state, dt, method, loads, gravity, t);
-  if (is_pivoted(model)) {  // the one-body scene's step, its one state out of the list
-    const py::object next =
-        step_scene_py(pivoted_scene(model, loads, gravity), py::make_tuple(state), dt, method, py::none(), py::none(), t);
+  if (is_pivoted(model) || is_gyrostat(model)) {  // the one-body scene's step, its one state out of the list
+    const py::object scene = is_gyrostat(model) ? gyrostat_scene(model, loads, gravity) : pivoted_scene(model, loads, gravity);
+    const py::object next = step_scene_py(scene, py::make_tuple(state), dt, method, py::none(), py::none(), t);
     if (t.is_none()) return next[py::int_(0)];
     return py::make_tuple(next[py::int_(0)][py::int_(0)], next[py::int_(1)]);
   }
@@ -225,9 +226,9 @@ dimension).
 
 model/initial: Particle/ParticleState, PlanarBody/PlanarBodyState or RigidBody/RigidBodyState; or a Scene
   or CompiledScene and a list of the states of its bodies (returns a SceneResult: see Scene); or a PivotedBody/
-  PivotedBodyState or PivotedPlanarBody/PivotedPlanarBodyState: the one-body scene of the body, UniformGravity
-  (gravity) and ScheduledLoads (loads) (returns a SceneResult; a PivotedPlanarBody takes an in-plane gravity
-  (2,) or (3,)).
+  PivotedBodyState, PivotedPlanarBody/PivotedPlanarBodyState or Gyrostat/GyrostatState: the one-body scene of
+  the body, UniformGravity (gravity) and ScheduledLoads (loads) (returns a SceneResult; a PivotedPlanarBody takes
+  an in-plane gravity (2,) or (3,)).
 method: a name of methods(); None (the default): 'rk4', or the method a CompiledScene was compiled for.
 loads: an AppliedLoad or a sequence of them, a piecewise-constant schedule: a step that crosses a
   switch time (a t_start or t_end) is split there into sub-steps of the same method, so every method
@@ -265,7 +266,7 @@ Warns RuntimeWarning if the new state is not finite, as simulate does. ValueErro
 method: a name of methods(); None (the default): 'rk4', or the method a CompiledScene was compiled for.
 model may also be a Scene or CompiledScene with `state` a list of the states of its bodies: returns the
 list of new states (or (list, t + dt)); ValueError naming model for a scene with a MassFlow (a state does
-not carry the mass: use simulate); or a PivotedBody / PivotedPlanarBody with its state (the step of its
+not carry the mass: use simulate); or a PivotedBody / PivotedPlanarBody / Gyrostat with its state (the step of its
 one-body scene, as simulate): returns the new state (or (state, t + dt)).
 )doc";
 

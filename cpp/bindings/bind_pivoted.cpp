@@ -21,6 +21,8 @@
 #include "rigiddyn/dynamics/planar_body_dynamics.hpp"
 #include "rigiddyn/scene/scene.hpp"
 #include "rigiddyn/so3/quaternion.hpp"
+#include "scene_run.hpp"
+#include "state_args.hpp"
 #include "value_type.hpp"
 
 namespace rigiddyn::bindings {
@@ -35,35 +37,10 @@ namespace {
 py::object list_of(const Eigen::Vector2d& v) { return py_io::to_array(v); }
 py::object list_of(const Eigen::Vector3d& v) { return py_io::to_array(v); }
 
-// A unit quaternion from `obj` (checked_unit_quaternion: ValueError naming `name` farther than 1e-6 from
-// unit norm), kept bit for bit when it is unit to round-off (4 eps) so that a state rebuilt from its repr
-// equals the original, normalised otherwise (as RigidBodyState does).
-Eigen::Quaterniond as_unit_quaternion(py::handle obj, const std::string& name, bool scalar_first) {
-  const Eigen::Quaterniond q = py_io::as_quaternion(obj, name, scalar_first);
-  const Eigen::Quaterniond unit = checked_unit_quaternion(q, name);
-  return std::abs(q.norm() - 1.0) <= 4 * std::numeric_limits<double>::epsilon() ? q : unit;
-}
-
-// N numbers of a pickled array, bit for bit (not checked finite: a state a diverged step returned pickles
-// as it is).
-template <int N>
-Eigen::Matrix<double, N, 1> unpickled(py::handle obj, const std::string& what) {
-  const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(obj);
-  if (!a || a.size() != N) py_io::throw_value_error(what, std::to_string(N) + " numbers", py_io::describe(obj));
-  return Eigen::Map<const Eigen::Matrix<double, N, 1>>(a.data());
-}
-
 Array read_only_quaternion(const Eigen::Quaterniond& q, bool scalar_first) {
   Array out = py_io::to_array(q, scalar_first);
   out.attr("flags").attr("writeable") = false;
   return out;
-}
-
-template <class T, class Equal>
-void def_equality(py::class_<T>& cls, Equal equal) {
-  cls.def(
-      "__eq__", [equal](const T& a, py::handle b) { return equal_or_not_implemented(a, b, equal); }, py::arg("other"));
-  cls.attr("__hash__") = py::none();
 }
 
 const char* euler_form_name(EulerForm form) {
@@ -439,22 +416,8 @@ py::object pivoted_inverse_dynamics_py(py::handle body, py::handle state, py::ha
 }
 
 py::object pivoted_scene(py::handle model, py::handle loads, py::handle gravity) {
-  Scene scene;
-  Eigen::Vector3d g_W;
-  if (py::isinstance<PivotedBody>(model)) {
-    scene.bodies.push_back(model.cast<const PivotedBody&>());
-    g_W = as_gravity(gravity);
-  } else {
-    scene.bodies.push_back(model.cast<const PivotedPlanarBody&>());
-    g_W = as_in_plane_gravity(gravity);
-  }
-  if (!g_W.isZero(0.0)) scene.elements.push_back(UniformGravity{g_W, {}});
-  std::vector<AppliedLoad> schedule = as_loads(loads);
-  if (!schedule.empty()) {
-    check_loads(schedule);
-    scene.elements.push_back(ScheduledLoads{0, std::move(schedule), Eigen::Vector3d::Zero()});
-  }
-  return py::cast(std::move(scene));
+  if (py::isinstance<PivotedBody>(model)) return one_body_scene(model.cast<const PivotedBody&>(), as_gravity(gravity), loads);
+  return one_body_scene(model.cast<const PivotedPlanarBody&>(), as_in_plane_gravity(gravity), loads);
 }
 
 void bind_pivoted(py::module_& m) {

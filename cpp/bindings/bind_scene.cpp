@@ -36,7 +36,7 @@ template <class... B>
 Body body_from(py::handle obj, const std::string& name, std::variant<B...>*) {
   std::optional<Body> out;
   ((!out && py::isinstance<B>(obj) ? (void)(out = obj.cast<const B&>()) : void()), ...);
-  if (!out) py_io::throw_type_error(name, "a Particle, PlanarBody, RigidBody, PivotedBody or PivotedPlanarBody", obj);
+  if (!out) py_io::throw_type_error(name, "a Particle, PlanarBody, RigidBody, PivotedBody, PivotedPlanarBody or Gyrostat", obj);
   return *out;
 }
 
@@ -260,6 +260,8 @@ SceneResult to_scene_result(SceneSimulation&& r, const Scene& scene, const Compi
   const auto ne = static_cast<py::ssize_t>(compiled.element_types().size());
   if (scalar_first) to_scalar_first(r.q_WB);
   if (r.mass_flow_energy.empty()) r.mass_flow_energy.assign(r.mass.size(), 0.0);  // no mass flow: all 0
+  const py::tuple wheel_bodies = wheel_bodies_of(scene);
+  const auto nw = static_cast<py::ssize_t>(wheel_bodies.size());
   return SceneResult{adopt(std::move(r.t), {n}),
                      adopt(std::move(r.p_W), {n, nb, 3}),
                      adopt(std::move(r.q_WB), {n, nb, 4}),
@@ -278,6 +280,9 @@ SceneResult to_scene_result(SceneSimulation&& r, const Scene& scene, const Compi
                      adopt(std::move(r.mass_flow_energy), {n, nb}),
                      names_tuple(scene),
                      element_kinds(compiled),
+                     adopt(std::move(r.wheel_speed), {n, nw}),
+                     adopt(std::move(r.motor_work), {n, nw}),
+                     wheel_bodies,
                      r.diverged,
                      r.unconverged_steps,
                      r.elapsed_seconds,
@@ -312,7 +317,7 @@ const ResultArray result_arrays[] = {
 constexpr std::size_t result_array_count = sizeof(result_arrays) / sizeof(result_arrays[0]);
 
 py::tuple scene_result_state(const SceneResult& r) {
-  py::tuple out(result_array_count + 6);
+  py::tuple out(result_array_count + 9);
   for (std::size_t i = 0; i < result_array_count; ++i) out[i] = r.*(result_arrays[i].member);
   out[result_array_count] = r.body_names;
   out[result_array_count + 1] = r.elements;
@@ -320,14 +325,20 @@ py::tuple scene_result_state(const SceneResult& r) {
   out[result_array_count + 3] = py::int_(r.unconverged_steps);
   out[result_array_count + 4] = py::float_(r.elapsed_seconds);
   out[result_array_count + 5] = py::bool_(r.scalar_first);
+  out[result_array_count + 6] = r.wheel_speed;
+  out[result_array_count + 7] = r.motor_work;
+  out[result_array_count + 8] = r.wheel_bodies;
   return out;
 }
 
-// result_array_count + 5 items: a state without scalar_first (q_WB as (x, y, z, w)), as earlier pickles
+// result_array_count + 5 or + 6 items: a state without scalar_first (q_WB as (x, y, z, w)) or without the wheels,
+// as earlier pickles
 SceneResult scene_result_from_state(const py::tuple& t) {
-  if (t.size() != result_array_count + 5 && t.size() != result_array_count + 6) {
-    py_io::throw_value_error("SceneResult pickle", "a tuple of " + std::to_string(result_array_count + 5) + " or " +
-                             std::to_string(result_array_count + 6) + " items", std::to_string(t.size()) + " items");
+  const std::size_t wheels = result_array_count + 9;  // the size of a state with the wheels
+  if (t.size() != result_array_count + 5 && t.size() != result_array_count + 6 && t.size() != wheels) {
+    py_io::throw_value_error("SceneResult pickle", "a tuple of " + std::to_string(result_array_count + 5) + ", " +
+                             std::to_string(result_array_count + 6) + " or " + std::to_string(wheels) + " items",
+                             std::to_string(t.size()) + " items");
   }
   SceneResult r;
   r.body_names = py::tuple(t[result_array_count]);
@@ -352,9 +363,48 @@ SceneResult scene_result_from_state(const py::tuple& t) {
   r.diverged = t[result_array_count + 2].cast<bool>();
   r.unconverged_steps = t[result_array_count + 3].cast<std::int64_t>();
   r.elapsed_seconds = t[result_array_count + 4].cast<double>();
-  r.scalar_first = t.size() == result_array_count + 6 && t[result_array_count + 5].cast<bool>();
+  r.scalar_first = t.size() >= result_array_count + 6 && t[result_array_count + 5].cast<bool>();
+  r.wheel_bodies = t.size() == wheels ? py::tuple(t[result_array_count + 8]) : py::tuple();
+  const auto nw = static_cast<py::ssize_t>(r.wheel_bodies.size());
+  // each wheel column, (n, nw) (empty in an earlier pickle)
+  const auto wheel_column = [&](std::size_t at, const char* name) {
+    Array a = t.size() == wheels ? Array::ensure(py::module_::import("numpy").attr("array")(t[at], "float64"))
+                                 : Array(std::vector<py::ssize_t>{n, 0});
+    if (!a || a.ndim() != 2 || a.shape(0) != n || a.shape(1) != nw) {
+      py_io::throw_value_error(std::string("SceneResult pickle ") + name,
+                               "shape (" + std::to_string(n) + ", " + std::to_string(nw) + ")", py_io::describe(t[at]));
+    }
+    a.attr("flags").attr("writeable") = false;
+    return a;
+  };
+  r.wheel_speed = wheel_column(result_array_count + 6, "wheel_speed");
+  r.motor_work = wheel_column(result_array_count + 7, "motor_work");
   return r;
 }
+
+}  // namespace
+
+py::object one_body_scene(const Body& body, const Eigen::Vector3d& g_W, py::handle loads) {
+  Scene scene;
+  scene.bodies.push_back(body);
+  if (!g_W.isZero(0.0)) scene.elements.push_back(UniformGravity{g_W, {}});
+  std::vector<AppliedLoad> schedule = as_loads(loads);
+  if (!schedule.empty()) {
+    check_loads(schedule);
+    scene.elements.push_back(ScheduledLoads{0, std::move(schedule), Eigen::Vector3d::Zero()});
+  }
+  return py::cast(std::move(scene));
+}
+
+py::tuple wheel_bodies_of(const Scene& scene) {
+  py::list out;
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
+    for (std::size_t k = 0; k < wheel_count(scene.bodies[b]); ++k) out.append(py::int_(b));
+  }
+  return py::tuple(out);
+}
+
+namespace {
 
 std::string scene_result_repr(const SceneResult& r) {
   const py::ssize_t n = r.t.shape(0);
@@ -524,7 +574,7 @@ void bind_scene(py::module_& m) {
             return add_body(s, body, name, mass_flow, "body", "name", "mass_flow");
           },
           py::arg("body"), py::arg("name") = py::none(), py::arg("mass_flow") = py::none(),
-          "Adds `body` (a Particle, PlanarBody, RigidBody, PivotedBody or PivotedPlanarBody) named `name` (a str no "
+          "Adds `body` (a Particle, PlanarBody, RigidBody, PivotedBody, PivotedPlanarBody or Gyrostat) named `name` (a str no "
           "other body has; None: 'body<index>') with its mass flow `mass_flow` (a MassFlow; None: a constant mass); "
           "returns its index, by which elements refer to it.")
       .def(
@@ -678,6 +728,14 @@ void bind_scene(py::module_& m) {
                     "(n, nb) each body's mass-flow energy since t0 [J]: the integral of 1/2 (dm/dt) |v|^2 + 1/2 "
                     "w.(dI/dt) w (0 for a constant mass); kinetic_energy - kinetic_energy[0] ~ work.sum(axis=1) + "
                     "mass_flow_energy.sum(axis=1)")
+      .def_readonly("wheel_speed", &SceneResult::wheel_speed,
+                    "(n, nw) each gyrostat wheel's speed relative to its body [rad/s], the wheels of the gyrostats in "
+                    "the scene's order (nw = 0 without a gyrostat)")
+      .def_readonly("motor_work", &SceneResult::motor_work,
+                    "(n, nw) each wheel's motor work since t0 [J], the integral of its motor torque times its speed: "
+                    "kinetic_energy - kinetic_energy[0] ~ work.sum(axis=1) + mass_flow_energy.sum(axis=1) + "
+                    "motor_work.sum(axis=1)")
+      .def_readonly("wheel_bodies", &SceneResult::wheel_bodies, "(nw,) tuple of the body index of each wheel")
       .def_readonly("body_names", &SceneResult::body_names, "(nb,) tuple of the bodies' names")
       .def_readonly("elements", &SceneResult::elements,
                     "(ne,) tuple of the elements' class names, then the frame's fictitious terms' ('CentrifugalForce', "
@@ -699,7 +757,7 @@ void bind_scene(py::module_& m) {
           "A pandas.DataFrame of the records (needs pandas): one row per record, one column per scalar with its "
           "unit (wide format; rigiddyn.scene_result documents the columns): 't [s]', then per body "
           "'<name>:p_W_x [m]' .. '<name>:q_WB_x' .. '<name>:v_W_x [m/s]' .. '<name>:w_B_x [rad/s]' .. through "
-          "'<name>:mass [kg]' and '<name>:mass_flow_energy [J]', then "
+          "'<name>:mass [kg]' and '<name>:mass_flow_energy [J]' (and a gyrostat's '<name>:wheel_speed_<k> [rad/s]'), then "
           "'kinetic_energy [J]', 'potential_energy [J]', 'total_energy [J]', 'linear_momentum_W_x [kg m/s]' .., "
           "'angular_momentum_W_x [kg m^2/s]' .., then per element i 'work[i] <Class> [J]' and 'power[i] <Class> "
           "[W]'; q_WB's columns in the result's order ('<name>:q_WB_w' first when its scalar_first is True). "

@@ -9,6 +9,11 @@ void bind_frames(pybind11::module_& m);
 void bind_spatial(pybind11::module_& m);
 void bind_inertia(pybind11::module_& m);
 void bind_bodies(pybind11::module_& m);
+void bind_gyrostat(pybind11::module_& m);  // after bind_bodies: a Gyrostat holds a RigidBody
+// True for a Gyrostat; the one-body Scene simulate/step run for it: the body, UniformGravity(gravity) when gravity is
+// not zero and ScheduledLoads(body=0, loads) when loads are given (bind_gyrostat.cpp)
+bool is_gyrostat(pybind11::handle body);
+pybind11::object gyrostat_scene(pybind11::handle model, pybind11::handle loads, pybind11::handle gravity);
 void bind_dynamics(pybind11::module_& m);
 void bind_exact(pybind11::module_& m);
 void bind_exact_dynamics(pybind11::module_& m);  // after bind_pivoted and bind_scene_frame

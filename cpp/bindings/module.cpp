@@ -14,6 +14,7 @@ PYBIND11_MODULE(_core, m) {
   rigiddyn::bindings::bind_inertia(m);
   rigiddyn::bindings::bind_bodies(m);
   rigiddyn::bindings::bind_pivoted(m);
+  rigiddyn::bindings::bind_gyrostat(m);
   rigiddyn::bindings::bind_scene_elements(m);
   rigiddyn::bindings::bind_scene_frame(m);
   rigiddyn::bindings::bind_scene(m);  // before bind_dynamics: simulate's signature names SceneResult

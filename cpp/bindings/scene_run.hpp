@@ -30,11 +30,22 @@ struct SceneResult {
   py_io::Array t, p_W, q_WB, v_W, w_B, kinetic_energy, potential_energy, total_energy, linear_momentum_W,
       angular_momentum_W, pivot_reaction_W, angular_momentum_O_W, mass, work, power, mass_flow_energy;
   pybind11::tuple body_names, elements;
+  py_io::Array wheel_speed;      // (n, nw) each gyrostat wheel's speed relative to its body [rad/s]
+  py_io::Array motor_work;       // (n, nw) each wheel's motor work since t0 [J]
+  pybind11::tuple wheel_bodies;  // (nw,) the body index of each wheel
   bool diverged;
   std::int64_t unconverged_steps;
   double elapsed_seconds;
   bool scalar_first = false;  // q_WB rows as (w, x, y, z)
 };
+
+// The body index of each gyrostat wheel of the scene, in the order of SceneSimulation::wheel_speed's columns.
+pybind11::tuple wheel_bodies_of(const Scene& scene);
+
+// The one-body Scene of simulate/step for a body that runs as a scene (a pivoted body, a gyrostat): the body,
+// UniformGravity(g_W) when g_W is not zero and ScheduledLoads(body=0, loads) when loads are given (argument
+// `loads` in the messages).
+pybind11::object one_body_scene(const Body& body, const Eigen::Vector3d& g_W, pybind11::handle loads);
 
 // True for a Scene or a CompiledScene.
 bool is_scene(pybind11::handle model);

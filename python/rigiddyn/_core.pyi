@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['AppliedLoad', 'BatchResult', 'BatchSceneResult', 'BodyAcceleration', 'ComWrench', 'CompiledScene', 'CompoundPendulumSolution', 'ConstantThrustSolution', 'DensityIntegral', 'Drag', 'ElementField', 'FORCE_ELEMENTS', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'GravityGradient', 'InertiaCheck', 'InertiaReport', 'KineticEnergy', 'LagrangeTopSolution', 'MagneticDipole', 'MassFlow', 'MeshWeldWarning', 'Motion', 'MutualGravity', 'Particle', 'ParticleState', 'PivotedAcceleration', 'PivotedBody', 'PivotedBodyState', 'PivotedPlanarAcceleration', 'PivotedPlanarBody', 'PivotedPlanarBodyState', 'PivotedPlanarTorque', 'PivotedTorque', 'PlanarAcceleration', 'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointMassGravity', 'PointVelocity', 'PrincipalAxes', 'PythonForce', 'ReactionWheel', 'RigidBody', 'RigidBodyState', 'RotatingFrameFreeParticle', 'Scene', 'SceneCompatibilityWarning', 'SceneFrame', 'SceneResult', 'ScheduledLoads', 'Screw', 'SimulationResult', 'SpatialInertia', 'SpringDamper', 'Thrust', 'TorqueFreeSolution', 'Transform', 'UniformGravity', 'WeldedMesh', 'align_vectors', 'angular_distance', 'angular_momentum', 'angular_velocity_from_quat_rate', 'apply_impulse', 'axis_angle_to_quat', 'box_shell', 'compose_kinematics', 'composite', 'davenport_to_quat', 'default_thread_count', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'from_point_masses', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation', 'nearest_valid_inertia', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix', 'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'simulate', 'simulate_batch', 'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'twist_to_screw', 'vee', 'weld_vertices']
+__all__: list[str] = ['AppliedLoad', 'BatchResult', 'BatchSceneResult', 'BodyAcceleration', 'ComWrench', 'CompiledScene', 'CompoundPendulumSolution', 'ConstantThrustSolution', 'DensityIntegral', 'Drag', 'ElementField', 'FORCE_ELEMENTS', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'GravityGradient', 'Gyrostat', 'GyrostatState', 'InertiaCheck', 'InertiaReport', 'KineticEnergy', 'LagrangeTopSolution', 'MagneticDipole', 'MassFlow', 'MeshWeldWarning', 'Motion', 'MutualGravity', 'Particle', 'ParticleState', 'PivotedAcceleration', 'PivotedBody', 'PivotedBodyState', 'PivotedPlanarAcceleration', 'PivotedPlanarBody', 'PivotedPlanarBodyState', 'PivotedPlanarTorque', 'PivotedTorque', 'PlanarAcceleration', 'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointMassGravity', 'PointVelocity', 'PrincipalAxes', 'PythonForce', 'ReactionWheel', 'RigidBody', 'RigidBodyState', 'RotatingFrameFreeParticle', 'Scene', 'SceneCompatibilityWarning', 'SceneFrame', 'SceneResult', 'ScheduledLoads', 'Screw', 'SimulationResult', 'SpatialInertia', 'SpringDamper', 'Thrust', 'TorqueFreeSolution', 'Transform', 'UniformGravity', 'WeldedMesh', 'Wheel', 'align_vectors', 'angular_distance', 'angular_momentum', 'angular_velocity_from_quat_rate', 'apply_impulse', 'axis_angle_to_quat', 'box_shell', 'compose_kinematics', 'composite', 'davenport_to_quat', 'default_thread_count', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'from_point_masses', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation', 'nearest_valid_inertia', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix', 'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'simulate', 'simulate_batch', 'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'twist_to_screw', 'vee', 'weld_vertices']
 class FrameKinematics:
     """
     Frame F relative to frame P at one instant (P = the parent of a FrameMotion, or the
@@ -1582,6 +1582,201 @@ class PivotedPlanarTorque:
         """
         torque about the z axis through O [N m]
         """
+class Wheel:
+    """
+    A wheel of a Gyrostat, spun about an axis fixed in the body by a motor.
+    
+    Parameters
+    ----------
+    axis_B : array_like, shape (3,)
+        The spin axis in the body frame B (any non-zero length; the unit axis is kept).
+    inertia : float or pint.Quantity
+        The wheel's moment of inertia about its spin axis [kg m^2], > 0.
+    motor_torque : float or pint.Quantity, default 0
+        The motor's torque on the wheel about its axis [N m] (the body feels its reaction), applied for t_start <= t < t_end.
+    t_start, t_end : float or pint.Quantity, default 0 and inf
+        The motor's time window [s] (a run splits its steps at both).
+    
+    Examples
+    --------
+    >>> import rigiddyn as rd
+    >>> rd.Wheel(axis_B=[0, 0, 2], inertia=0.01, motor_torque=0.002, t_end=5.0).axis_B
+    array([0., 0., 1.])
+    
+    Immutable; pickles; == compares every field.
+    """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple[typing.Any, float, float, float, float]:
+        ...
+    def __init__(self, axis_B: typing.Any, inertia: typing.Any, motor_torque: typing.Any = 0.0, t_start: typing.Any = 0.0, t_end: typing.Any = ...) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def axis_B(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3,) the unit spin axis in B
+        """
+    @property
+    def inertia(self) -> float:
+        """
+        axial moment of inertia [kg m^2]
+        """
+    @property
+    def motor_torque(self) -> float:
+        """
+        motor torque [N m]
+        """
+    @property
+    def t_end(self) -> float:
+        """
+        the motor's end [s] (inf: never)
+        """
+    @property
+    def t_start(self) -> float:
+        """
+        the motor's start [s]
+        """
+class Gyrostat:
+    """
+    A rigid body carrying wheels, each spun about an axis fixed in the body by a motor, each wheel's speed relative to the body a state (Hughes, "Spacecraft Attitude Dynamics", ch. 3): a reaction-wheel spacecraft.
+    
+    With I the whole body's inertia (wheels locked), wheel k's unit axis a_k, axial inertia J_k, speed Omega_k relative to the body and motor torque u_k, the transverse inertia A = I - sum J_k a_k a_k^T:
+        A dw/dt = tau_B - sum u_k a_k - w x (I w + h_w),  dOmega_k/dt = u_k / J_k - a_k . dw/dt,
+    h_w = sum J_k Omega_k a_k; kinetic energy T = 1/2 m |v|^2 + 1/2 w.A w + 1/2 sum J_k (a_k.w + Omega_k)^2.
+    
+    Parameters
+    ----------
+    body : RigidBody
+        The whole body with its wheels locked: mass [kg] and inertia_com [kg m^2] about its centre of mass in B, wheels included.
+    wheels : sequence of Wheel
+        Its wheels (ValueError naming wheels[k].inertia when a wheel's axial inertia leaves A not positive definite).
+    
+    Examples
+    --------
+    >>> import rigiddyn as rd
+    >>> sat = rd.Gyrostat(rd.RigidBody(100.0, [10.0, 12.0, 15.0]), [rd.Wheel([0, 0, 1], 0.05)])
+    >>> sat.transverse_inertia.diagonal()
+    array([10.  , 12.  , 14.95])
+    
+    Elements see it as its locked RigidBody. It runs in an inertial scene with explicit_euler, semi_implicit_euler, rk4, rkmk4 or implicit_midpoint. Immutable; pickles; == compares body and wheels.
+    """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple[RigidBody, list]:
+        ...
+    def __init__(self, body: typing.Any, wheels: typing.Any) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def body(self) -> RigidBody:
+        """
+        the RigidBody with the wheels locked (a copy)
+        """
+    @property
+    def inertia_com(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3, 3) inertia about the centre of mass in B, wheels locked [kg m^2]
+        """
+    @property
+    def mass(self) -> float:
+        """
+        mass [kg]
+        """
+    @property
+    def transverse_inertia(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3, 3) A = I - sum J_k a_k a_k^T [kg m^2]: the body with its wheels free to spin
+        """
+    @property
+    def wheels(self) -> tuple:
+        """
+        the wheels (a tuple)
+        """
+class GyrostatState:
+    """
+    State of a Gyrostat: the rigid body's and its wheels' speeds.
+    
+    Parameters
+    ----------
+    p_W : array_like, shape (3,), optional
+        Centre of mass position in W [m] (None: zero).
+    q_WB : array_like, shape (4,), optional
+        Unit quaternion B to W, (x, y, z, w), or (w, x, y, z) with scalar_first=True (None: identity; normalised, ValueError beyond 1e-6 of unit norm).
+    v_W : array_like, shape (3,), optional
+        Centre of mass velocity in W [m/s] (None: zero).
+    w_B : array_like, shape (3,), optional
+        Angular velocity of B relative to W, in B [rad/s] (None: zero).
+    wheel_speeds : array_like, shape (nw,), optional
+        Each wheel's speed relative to the body [rad/s], in the order of the gyrostat's wheels (None: none; a run checks one per wheel).
+    
+    Examples
+    --------
+    >>> import rigiddyn as rd
+    >>> rd.GyrostatState(w_B=[0, 0, 0.1], wheel_speeds=[100.0]).wheel_speeds
+    array([100.])
+    
+    Fields are assigned whole (checked as here); their arrays are read-only.
+    """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple[typing.Any, numpy.typing.NDArray[numpy.float64], typing.Any, typing.Any, numpy.typing.NDArray[numpy.float64]]:
+        ...
+    def __init__(self, p_W: typing.Any = None, q_WB: typing.Any = None, v_W: typing.Any = None, w_B: typing.Any = None, wheel_speeds: typing.Any = None, scalar_first: typing.Any = False) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def p_W(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3,) centre of mass position in W [m]
+        """
+    @p_W.setter
+    def p_W(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def q_WB(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (4,) attitude (x, y, z, w), B to W; set from (x, y, z, w), normalised (ValueError beyond 1e-6 of unit norm)
+        """
+    @q_WB.setter
+    def q_WB(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def v_W(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3,) centre of mass velocity in W [m/s]
+        """
+    @v_W.setter
+    def v_W(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def w_B(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (3,) angular velocity of B in W, expressed in B [rad/s]
+        """
+    @w_B.setter
+    def w_B(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def wheel_speeds(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (nw,) each wheel's speed relative to the body [rad/s]
+        """
+    @wheel_speeds.setter
+    def wheel_speeds(self, arg1: typing.Any) -> None:
+        ...
 class ElementField:
     """
     One field of a force element class (its class attribute `fields`, in constructor order): key (the keyword and attribute), kind ('scalar', 'vector' (3,), 'bodies', 'body', 'optional_body', 'loads', 'frame' or 'callable'), unit (SI, pint syntax; '' when none), required, default (None when required; a vector as a tuple) and doc.
@@ -2293,7 +2488,7 @@ class Scene:
         """
     def add_body(self, body: typing.Any, name: typing.Any = None, mass_flow: typing.Any = None) -> int:
         """
-        Adds `body` (a Particle, PlanarBody, RigidBody, PivotedBody or PivotedPlanarBody) named `name` (a str no other body has; None: 'body<index>') with its mass flow `mass_flow` (a MassFlow; None: a constant mass); returns its index, by which elements refer to it.
+        Adds `body` (a Particle, PlanarBody, RigidBody, PivotedBody, PivotedPlanarBody or Gyrostat) named `name` (a str no other body has; None: 'body<index>') with its mass flow `mass_flow` (a MassFlow; None: a constant mass); returns its index, by which elements refer to it.
         """
     def compile(self, method: typing.Any = 'rk4') -> CompiledScene:
         """
@@ -2406,7 +2601,7 @@ class SceneResult:
         ...
     def to_dataframe(self, scalar_first: typing.Any = None) -> typing.Any:
         """
-        A pandas.DataFrame of the records (needs pandas): one row per record, one column per scalar with its unit (wide format; rigiddyn.scene_result documents the columns): 't [s]', then per body '<name>:p_W_x [m]' .. '<name>:q_WB_x' .. '<name>:v_W_x [m/s]' .. '<name>:w_B_x [rad/s]' .. through '<name>:mass [kg]' and '<name>:mass_flow_energy [J]', then 'kinetic_energy [J]', 'potential_energy [J]', 'total_energy [J]', 'linear_momentum_W_x [kg m/s]' .., 'angular_momentum_W_x [kg m^2/s]' .., then per element i 'work[i] <Class> [J]' and 'power[i] <Class> [W]'; q_WB's columns in the result's order ('<name>:q_WB_w' first when its scalar_first is True). scalar_first: None (the default) for the order the result records; True or False declares the order of its q_WB rows instead.
+        A pandas.DataFrame of the records (needs pandas): one row per record, one column per scalar with its unit (wide format; rigiddyn.scene_result documents the columns): 't [s]', then per body '<name>:p_W_x [m]' .. '<name>:q_WB_x' .. '<name>:v_W_x [m/s]' .. '<name>:w_B_x [rad/s]' .. through '<name>:mass [kg]' and '<name>:mass_flow_energy [J]' (and a gyrostat's '<name>:wheel_speed_<k> [rad/s]'), then 'kinetic_energy [J]', 'potential_energy [J]', 'total_energy [J]', 'linear_momentum_W_x [kg m/s]' .., 'angular_momentum_W_x [kg m^2/s]' .., then per element i 'work[i] <Class> [J]' and 'power[i] <Class> [W]'; q_WB's columns in the result's order ('<name>:q_WB_w' first when its scalar_first is True). scalar_first: None (the default) for the order the result records; True or False declares the order of its q_WB rows instead.
         """
     @property
     def angular_momentum_O_W(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -2457,6 +2652,11 @@ class SceneResult:
     def mass_flow_energy(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         (n, nb) each body's mass-flow energy since t0 [J]: the integral of 1/2 (dm/dt) |v|^2 + 1/2 w.(dI/dt) w (0 for a constant mass); kinetic_energy - kinetic_energy[0] ~ work.sum(axis=1) + mass_flow_energy.sum(axis=1)
+        """
+    @property
+    def motor_work(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (n, nw) each wheel's motor work since t0 [J], the integral of its motor torque times its speed: kinetic_energy - kinetic_energy[0] ~ work.sum(axis=1) + mass_flow_energy.sum(axis=1) + motor_work.sum(axis=1)
         """
     @property
     def p_W(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -2512,6 +2712,16 @@ class SceneResult:
     def w_B(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         (n, nb, 3) angular velocities, each in its body's B [rad/s]
+        """
+    @property
+    def wheel_bodies(self) -> tuple:
+        """
+        (nw,) tuple of the body index of each wheel
+        """
+    @property
+    def wheel_speed(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (n, nw) each gyrostat wheel's speed relative to its body [rad/s], the wheels of the gyrostats in the scene's order (nw = 0 without a gyrostat)
         """
     @property
     def work(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -2824,6 +3034,11 @@ class BatchSceneResult:
         (N, n, nb) each body's mass-flow energy since t0 [J] (0 for a constant mass)
         """
     @property
+    def motor_work(self) -> numpy.ndarray:
+        """
+        (N, n, nw) each wheel's motor work since t0 [J]
+        """
+    @property
     def p_W(self) -> numpy.ndarray:
         """
         (N, n, nb, 3) centre of mass positions in W [m]
@@ -2877,6 +3092,16 @@ class BatchSceneResult:
     def w_B(self) -> numpy.ndarray:
         """
         (N, n, nb, 3) angular velocities, each in its body's B [rad/s]
+        """
+    @property
+    def wheel_bodies(self) -> tuple:
+        """
+        (nw,) tuple of the body index of each wheel
+        """
+    @property
+    def wheel_speed(self) -> numpy.ndarray:
+        """
+        (N, n, nw) each gyrostat wheel's speed relative to its body [rad/s] (nw = 0 without a gyrostat)
         """
     @property
     def work(self) -> numpy.ndarray:
@@ -3773,9 +3998,9 @@ def simulate(model: typing.Any, initial: typing.Any, dt: typing.Any, steps: typi
     
     model/initial: Particle/ParticleState, PlanarBody/PlanarBodyState or RigidBody/RigidBodyState; or a Scene
       or CompiledScene and a list of the states of its bodies (returns a SceneResult: see Scene); or a PivotedBody/
-      PivotedBodyState or PivotedPlanarBody/PivotedPlanarBodyState: the one-body scene of the body, UniformGravity
-      (gravity) and ScheduledLoads (loads) (returns a SceneResult; a PivotedPlanarBody takes an in-plane gravity
-      (2,) or (3,)).
+      PivotedBodyState, PivotedPlanarBody/PivotedPlanarBodyState or Gyrostat/GyrostatState: the one-body scene of
+      the body, UniformGravity (gravity) and ScheduledLoads (loads) (returns a SceneResult; a PivotedPlanarBody takes
+      an in-plane gravity (2,) or (3,)).
     method: a name of methods(); None (the default): 'rk4', or the method a CompiledScene was compiled for.
     loads: an AppliedLoad or a sequence of them, a piecewise-constant schedule: a step that crosses a
       switch time (a t_start or t_end) is split there into sub-steps of the same method, so every method
@@ -3920,7 +4145,7 @@ def step(model: typing.Any, state: typing.Any, dt: typing.Any, method: typing.An
     method: a name of methods(); None (the default): 'rk4', or the method a CompiledScene was compiled for.
     model may also be a Scene or CompiledScene with `state` a list of the states of its bodies: returns the
     list of new states (or (list, t + dt)); ValueError naming model for a scene with a MassFlow (a state does
-    not carry the mass: use simulate); or a PivotedBody / PivotedPlanarBody with its state (the step of its
+    not carry the mass: use simulate); or a PivotedBody / PivotedPlanarBody / Gyrostat with its state (the step of its
     one-body scene, as simulate): returns the new state (or (state, t + dt)).
     """
 def symmetry_planes(masses: typing.Any, positions: typing.Any, tolerance: typing.Any = 1e-09) -> list:

@@ -23,7 +23,8 @@ Dispersion keys (units SI, frames as docs/conventions.md):
             added to the nominal `loads` schedule
 A scene's bodies are dispersed under "<body name>.<field>" (a RigidBody's p_W, q_WB, v_W, w_B, mass, inertia; a
 Particle's p_W, v_W, mass; a PivotedBody's q_WB, w_B; a PivotedPlanarBody's "theta" [rad] and "omega" [rad/s],
-Normal / Uniform), drawn body after body; its loads and gravity are its elements.
+Normal / Uniform; a Gyrostat's p_W, q_WB, v_W, w_B, its wheel speeds kept), drawn body after body; its loads and
+gravity are its elements.
 
 Before any draw, the memory the run needs (each sample's records and what drawing it holds) is estimated
 and a run that would not fit in the memory available is refused, naming n.
@@ -669,12 +670,14 @@ def _batch_inputs(model: Any, n: int, inputs: dict[str, np.ndarray], dispersions
 SCENE_BODY_FIELDS = {"RigidBody": ("p_W", "q_WB", "v_W", "w_B", "mass", "inertia"),
                      "Particle": ("p_W", "v_W", "mass"),
                      "PivotedBody": ("q_WB", "w_B"),
-                     "PivotedPlanarBody": ("theta", "omega")}
+                     "PivotedPlanarBody": ("theta", "omega"),
+                     "Gyrostat": ("p_W", "q_WB", "v_W", "w_B")}
 STATE_OF_BODY = {"RigidBody": "RigidBodyState", "Particle": "ParticleState", "PivotedBody": "PivotedBodyState",
-                 "PivotedPlanarBody": "PivotedPlanarBodyState"}
-# the state fields of each body kind, in its state class's constructor order
+                 "PivotedPlanarBody": "PivotedPlanarBodyState", "Gyrostat": "GyrostatState"}
+# the state fields of each body kind, in its state class's constructor order (a gyrostat's wheel speeds kept at
+# their nominal values)
 _STATE_FIELDS = {"RigidBody": STATE_KEYS, "Particle": ("p_W", "v_W"), "PivotedBody": ("q_WB", "w_B"),
-                 "PivotedPlanarBody": ("theta", "omega")}
+                 "PivotedPlanarBody": ("theta", "omega"), "Gyrostat": (*STATE_KEYS, "wheel_speeds")}
 
 
 def _scene_nominal(scene: Any, nominal_state: Any) -> dict[str, Any]:

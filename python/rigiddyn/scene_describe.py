@@ -7,7 +7,7 @@ imported). The text has four parts:
 - Bodies: index, name, kind, mass [kg], inertia [kg m^2] about the centre of mass in B, state variables;
   then, for bodies pinned at a point O (pivoted kinds), the pivot O, the centre of mass relative to it,
   the inertia about O (parallel-axis theorem) and the decimal digits of I_C it loses; and the bodies
-  whose mass changes (rate, inertia rule);
+  whose mass changes (rate, inertia rule) and the wheels of gyrostats (axis, inertia, motor torque);
 - Force elements: index, type, parameters in SI with their units and frames, properties (potential,
   velocity- or time-dependent), and one column per body naming the terms it puts on that body
   (``f`` a force, ``tau`` a torque, ``f+tau`` both, ``.`` none): a declared element acts only where marked,
@@ -35,9 +35,10 @@ _UNITS = ("Units: SI (m, kg, s, N, N m, J, rad); p_W [m] and v_W [m/s] in W; q_W
           "w_B [rad/s] in B; inertia about the centre of mass in B")
 _FRAME = "Frame: W, inertial (fixed)"
 _STATE = {"particle": "p_W, v_W (6)", "planar": "x, y, theta, vx, vy, omega (6)", "rigid": "p_W, q_WB, v_W, w_B (13)",
-          "pivoted": "q_WB, w_B (7)", "pivoted_planar": "theta, omega (2)"}
+          "pivoted": "q_WB, w_B (7)", "pivoted_planar": "theta, omega (2)",
+          "gyrostat": "p_W, q_WB, v_W, w_B, per wheel speed and motor work (13 + 2 nw)"}
 _KIND = {"Particle": "particle", "PlanarBody": "planar", "RigidBody": "rigid", "PivotedBody": "pivoted",
-         "PivotedPlanarBody": "pivoted_planar"}
+         "PivotedPlanarBody": "pivoted_planar", "Gyrostat": "gyrostat"}
 # the fictitious terms compile adds for a moving frame: (name, class in SceneResult.elements, force)
 _FICTITIOUS = (("frame.origin", "FrameOriginForce", "-m a_O"), ("frame.euler", "EulerForce", "-m alpha x r"),
                ("frame.centrifugal", "CentrifugalForce", "-m Omega x (Omega x r)"),
@@ -129,6 +130,18 @@ def _pivot_lines(bodies: Sequence[Any], names: Sequence[str], kinds: Sequence[st
              "for C)"]
             + _table(("#", "name", "O: p_WO [m]", "C - O: p_OC_B [m] (B)", "inertia about O [kg m^2] (B)",
                       "digits of I_C lost"), rows))
+
+
+def _wheel_lines(bodies: Sequence[Any], names: Sequence[str], kinds: Sequence[str]) -> list[str]:
+    """The gyrostats' wheels: axis in B, axial inertia, motor torque and its window."""
+    rows = [(str(i), names[i], str(k), _g(w.axis_B), _g(w.inertia), _g(w.motor_torque), f"[{_g(w.t_start)}, {_g(w.t_end)})")
+            for i, (b, kind) in enumerate(zip(bodies, kinds)) if kind == "gyrostat" for k, w in enumerate(b.wheels)]
+    if not rows:
+        return []
+    return (["", "Wheels (each gyrostat's, spun by its motor; the body feels the reaction; I above is the whole "
+             "body's with its wheels locked)"]
+            + _table(("#", "body", "wheel", "axis_B (B)", "inertia [kg m^2]", "motor torque [N m]", "for t in [s]"),
+                     rows))
 
 
 def _mass_flow_lines(scene: Any, names: Sequence[str]) -> list[str]:
@@ -275,7 +288,7 @@ def describe(scene: Any, method: str | None = None) -> str:
     lines += _table(("#", "name", "kind", "mass [kg]", "inertia [kg m^2] (B)", "state"),
                     [(str(i), names[i], kinds[i], _g(b.mass), _inertia(b, kinds[i]),
                       _STATE[kinds[i]] + ("" if flows[i] is None else " + m (1)")) for i, b in enumerate(bodies)])
-    lines += _pivot_lines(bodies, names, kinds) + _mass_flow_lines(scene, names)
+    lines += _pivot_lines(bodies, names, kinds) + _wheel_lines(bodies, names, kinds) + _mass_flow_lines(scene, names)
     lines += ["", "Force elements (terms per body: f force, tau torque, . none)"]
     rows = []
     traits = _element_traits(scene, compiled)

@@ -1,7 +1,7 @@
 """TOML scene files: bodies, force elements (bodies named), initial states and run options, with units.
 
 ``load_scene(path_or_text)`` returns ``(scene, initial, run)``: a rigiddyn.Scene, the list of initial
-states (ParticleState, PlanarBodyState, RigidBodyState, PivotedBodyState or PivotedPlanarBodyState, one
+states (ParticleState, PlanarBodyState, RigidBodyState, PivotedBodyState, PivotedPlanarBodyState or GyrostatState, one
 per body, in file order) and a RunOptions;
 ``load_scene("kepler")`` reads a shipped scene (``example_scenes()``). ``scene_to_toml(scene, initial,
 run)`` writes the canonical file (SI, radians, q_WB, every field explicit) that loads back to the same
@@ -41,7 +41,8 @@ commented)::
 
     [[body]]                            # one table per body, in index order
     name = "sat"                        # optional, unique (default "body<i>"); forces refer to it
-    kind = "rigid"                      # "particle" | "planar" | "rigid" | "pivoted" | "pivoted_planar"
+    kind = "rigid"                      # "particle" | "planar" | "rigid" | "pivoted" | "pivoted_planar" |
+                                        # "gyrostat"
     mass = "2 slug"                     # [kg] > 0
     inertia = [1, 2, 3]                 # rigid: principal moments or a 3x3 [[..], [..], [..]] [kg m^2]
                                         # about the centre of mass in B; planar: I_zz [kg m^2]
@@ -60,6 +61,13 @@ commented)::
     # p_WO = [0, 0, 0]                  # fields of "rigid" but p_W, v_W) and pivoted_planar (those of
     #                                   # "planar" but p_W, v_W): the centre of mass relative to O in B
     #                                   # [m] (required; [x, y] planar) and O in the scene frame [m] (0)
+    # [[body.wheels]]                   # gyrostat (the fields of "rigid", inertia the whole body's with its
+    # axis_B = [0, 0, 1]                # wheels locked): one table per wheel, after its body's: spin axis in B,
+    # inertia = "0.05 kg m^2"           # axial moment of inertia (> 0),
+    # speed = "3000 rpm"                # initial speed relative to the body (default 0),
+    # motor_torque = "0.01 N m"         # motor torque on the wheel (default 0), acting for
+    # t_start = "0 s"                   # t_start <= t < t_end (defaults 0 and forever)
+    # t_end = "60 s"
     # [body.mass_flow]                  # optional, any kind: the body's mass changes (after its table)
     # rate = "-2 kg/s"                  # dm/dt [kg/s] (negative: losing mass; default 0)
     # inertia_rule = "scaled"           # I_C = I_C0 m / m0 (the only rule a file holds)
@@ -150,7 +158,10 @@ _BODY_KEYS = {
     "pivoted": frozenset({"name", "kind", "mass", "inertia", "inertia_check", "p_OC_B", "p_WO", "w_B", *_ATTITUDES,
                           "mass_flow"}),
     "pivoted_planar": frozenset({"name", "kind", "mass", "inertia", "p_OC_B", "p_WO", "theta", "omega", "mass_flow"}),
+    "gyrostat": frozenset({"name", "kind", "mass", "inertia", "inertia_check", "p_W", "v_W", "w_B", *_ATTITUDES,
+                           "wheels"}),
 }
+_WHEEL_KEYS = frozenset({"axis_B", "inertia", "speed", "motor_torque", "t_start", "t_end"})
 _KINDS = "one of " + ", ".join(map(repr, _BODY_KEYS))
 _TOP_KEYS = frozenset({"name", "description", "run", "tradeoff", "frame", "body", "force", "cluster"})
 _TRADEOFF_KEYS = frozenset({"methods", "dts", "tolerance", "measure", "horizon"})
@@ -349,7 +360,32 @@ def _body(table: Any, i: int) -> tuple[str, Any, Any]:
         return (body_name, _core_call(_core.PlanarBody, name, mass, inertia_zz, keys={"inertia_zz": "inertia"}),
                 _core_call(_core.PlanarBodyState, name, p_W, theta, v_W, omega))
     body, q_WB, w_B = _rigid_rotation(table, name, mass)
+    if kind == "gyrostat":
+        wheels, speeds = _wheels(table, name)
+        return (body_name, _core_call(_core.Gyrostat, name, body, wheels),
+                _core_call(_core.GyrostatState, name, p_W, q_WB, v_W, w_B, speeds))
     return body_name, body, _core_call(_core.RigidBodyState, name, p_W, q_WB, v_W, w_B)
+
+
+def _wheels(table: Mapping[str, Any], name: str) -> tuple[list[Any], list[float]]:
+    """(Wheels, initial speeds [rad/s]) of a gyrostat [[body]]'s [[body.wheels]] tables."""
+    given = _required(table, "wheels", name, "[[body.wheels]] tables (one per wheel)")
+    if not isinstance(given, list):
+        raise _fail(f"{name}.wheels", "[[body.wheels]] tables (one per wheel)", given)
+    wheels, speeds = [], []
+    for k, wheel in enumerate(given):
+        field = f"{name}.wheels[{k}]"
+        _check_keys(wheel, field, _WHEEL_KEYS, "[[body.wheels]]")
+        axis_B = vector_quantity(_required(wheel, "axis_B", field, "a spin axis in B"), f"{field}.axis_B", "1")
+        inertia = quantity(_required(wheel, "inertia", field, "an axial inertia [kg m^2] > 0"), f"{field}.inertia",
+                           "kg*m^2", positive=True)
+        t_start = quantity(wheel.get("t_start", 0.0), f"{field}.t_start", "s")
+        t_end = quantity(wheel["t_end"], f"{field}.t_end", "s") if "t_end" in wheel else float("inf")  # forever
+        wheels.append(_core_call(_core.Wheel, field, axis_B, inertia,
+                                 quantity(wheel.get("motor_torque", 0.0), f"{field}.motor_torque", "N*m"), t_start,
+                                 t_end))
+        speeds.append(quantity(wheel.get("speed", 0.0), f"{field}.speed", "rad/s"))
+    return wheels, speeds
 
 
 def _planar_rotation(table: Mapping[str, Any], name: str) -> tuple[float, float, float]:
@@ -779,6 +815,13 @@ def _body_table(name: str, body: Any, state: Any) -> dict[str, Any]:
         table = {"name": name, "kind": "rigid", **_rigid_head(body)}
         return table if state is None else {**table, "p_W": _floats(state.p_W), "v_W": _floats(state.v_W),
                                             "w_B": _floats(state.w_B), "q_WB": _floats(state.q_WB)}
+    if isinstance(body, _core.Gyrostat):
+        table = {"name": name, "kind": "gyrostat", **_rigid_head(body.body)}
+        if state is not None:
+            table.update({"p_W": _floats(state.p_W), "v_W": _floats(state.v_W), "w_B": _floats(state.w_B),
+                          "q_WB": _floats(state.q_WB)})
+        speeds = [0.0] * len(body.wheels) if state is None else _floats(state.wheel_speeds)
+        return {**table, "wheels": [_wheel_table(wheel, speed) for wheel, speed in zip(body.wheels, speeds)]}
     if type(body).__name__ == "PivotedPlanarBody":
         head = {"name": name, "kind": "pivoted_planar", "mass": float(body.mass), "inertia": float(body.inertia_zz),
                 "p_OC_B": _floats(body.p_OC_B), "p_WO": _floats(body.p_WO)}
@@ -786,6 +829,13 @@ def _body_table(name: str, body: Any, state: Any) -> dict[str, Any]:
     table = {"name": name, "kind": "pivoted", **_rigid_head(body.body), "p_OC_B": _floats(body.p_OC_B),
              "p_WO": _floats(body.p_WO)}  # a PivotedBody
     return table if state is None else {**table, "w_B": _floats(state.w_B), "q_WB": _floats(state.q_WB)}
+
+
+def _wheel_table(wheel: Any, speed: float) -> dict[str, Any]:
+    """A [[body.wheels]] table (t_end left out when the motor never stops: a file holds finite numbers)."""
+    table = {"axis_B": _floats(wheel.axis_B), "inertia": float(wheel.inertia), "speed": float(speed),
+             "motor_torque": float(wheel.motor_torque), "t_start": float(wheel.t_start)}
+    return table if np.isinf(wheel.t_end) else {**table, "t_end": float(wheel.t_end)}
 
 
 def _rigid_head(body: Any) -> dict[str, Any]:
@@ -888,7 +938,10 @@ def scene_to_toml(scene: Any, initial: Sequence[Any] | None = None, run: RunOpti
         lines += ["", "[frame]"] + [f"{k} = {_literal(v)}" for k, v in _frame_table(frame).items()]
     flows = list(getattr(scene, "mass_flows", []) or [None] * len(bodies))
     for i, (n, b, s) in enumerate(zip(names, bodies, initial)):
-        lines += ["", "[[body]]"] + [f"{k} = {_literal(v)}" for k, v in _body_table(n, b, s).items()]
+        table = _body_table(n, b, s)
+        lines += ["", "[[body]]"] + [f"{k} = {_literal(v)}" for k, v in table.items() if k != "wheels"]
+        for wheel in table.get("wheels", []):
+            lines += ["[[body.wheels]]"] + [f"{k} = {_literal(v)}" for k, v in wheel.items()]
         if flows[i] is not None:
             lines += ["[body.mass_flow]"] + [f"{k} = {_literal(v)}"
                                              for k, v in _mass_flow_table(flows[i], f"body[{i}]").items()]

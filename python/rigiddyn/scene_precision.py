@@ -99,9 +99,9 @@ def _body_data(body: Any) -> BodyData:
     """A pinned body's data are its rigid body's (mass, inertia about its centre of mass), its kind
     'pivoted' or 'pivoted_planar'; the measures compare its centre of mass and attitude as for a free one."""
     kind = type(body).__name__
-    if kind in ("RigidBody", "PivotedBody"):
-        return BodyData("rigid" if kind == "RigidBody" else "pivoted", float(body.mass),
-                        np.asarray(body.inertia_com, float))
+    if kind in ("RigidBody", "PivotedBody", "Gyrostat"):
+        return BodyData({"RigidBody": "rigid", "PivotedBody": "pivoted", "Gyrostat": "gyrostat"}[kind],
+                        float(body.mass), np.asarray(body.inertia_com, float))
     if kind in ("PlanarBody", "PivotedPlanarBody"):
         return BodyData("planar" if kind == "PlanarBody" else "pivoted_planar", float(body.mass),
                         np.diag([0.0, 0.0, float(body.inertia_zz)]))
@@ -196,8 +196,8 @@ class SceneCase:
             "linear_momentum_W", "angular_momentum_W")))
 
     def quaternion_norm_error(self, result: Any) -> np.ndarray:
-        """||q_WB| - 1| of the rigid and pivoted bodies at each record (n,) (0 without one)."""
-        rigid = [i for i, b in enumerate(self.bodies) if b.kind in ("rigid", "pivoted")]
+        """||q_WB| - 1| of the bodies with a 3-D attitude at each record (n,) (0 without one)."""
+        rigid = [i for i, b in enumerate(self.bodies) if b.kind in ("rigid", "pivoted", "gyrostat")]
         q = np.asarray(result.q_WB, float)
         if not rigid or q.shape[0] == 0:
             return np.zeros(q.shape[0])
@@ -523,7 +523,8 @@ def scene_case(source: Any, initial: Any = None, horizon: float | None = None) -
         initial = read.initial if initial is None else initial
     else:
         return None
-    names = ("ParticleState", "PlanarBodyState", "RigidBodyState", "PivotedBodyState", "PivotedPlanarBodyState")
+    names = ("ParticleState", "PlanarBodyState", "RigidBodyState", "PivotedBodyState", "PivotedPlanarBodyState",
+             "GyrostatState")
     kinds = tuple(getattr(_core, n) for n in names if hasattr(_core, n))
     expected = f"a list of initial states ({', '.join(names)}), one per body ({len(scene.bodies)})"
     if isinstance(initial, (str, bytes)) or not isinstance(initial, Iterable):

@@ -4,7 +4,7 @@ dimensionless columns carry no unit)::
 
     t [s] | sat:p_W_x [m] ... | sat:q_WB_x ... sat:q_WB_w | sat:v_W_x [m/s] ... | sat:w_B_x [rad/s] ... |
     sat:pivot_reaction_W_x [N] ... | sat:angular_momentum_O_W_x [kg m^2/s] ... | sat:mass [kg] |
-    sat:mass_flow_energy [J] |
+    sat:mass_flow_energy [J] | (a gyrostat's) sat:wheel_speed_0 [rad/s] ... | sat:motor_work_0 [J] ... |
     (the same for every body, in the scene's order) |
     kinetic_energy [J] | potential_energy [J] | total_energy [J] |
     linear_momentum_W_x [kg m/s] ... | angular_momentum_W_x [kg m^2/s] ... |
@@ -19,8 +19,10 @@ and ``df.filter(like="sat:")`` selects one body.
 pivot_reaction_W is the pivot's force on a pinned body (0 for an unpinned one), angular_momentum_O_W
 the angular momentum about the pivot O (about the centre of mass for an unpinned body), mass the body's
 mass at the record (it changes with a MassFlow), mass_flow_energy the kinetic energy its mass flow has taken
-away or brought since t0 (0 for a constant mass): the work–energy balance reads
-``kinetic_energy − kinetic_energy[0] ≈ Σ work[i] + Σ <body>:mass_flow_energy``.
+away or brought since t0 (0 for a constant mass); a gyrostat adds wheel_speed_<k>, wheel k's speed relative to
+the body, and motor_work_<k>, the work its motor has done since t0 (k counts the gyrostat's own wheels): the
+work–energy balance reads ``kinetic_energy − kinetic_energy[0] ≈ Σ work[i] + Σ <body>:mass_flow_energy + Σ
+<body>:motor_work_<k>``.
 """
 
 from __future__ import annotations
@@ -51,6 +53,8 @@ SCENE_FIELDS: dict[str, tuple[str | None, str]] = {
     "angular_momentum_W": ("xyz", "kg m^2/s"),
 }
 ELEMENT_FIELDS: dict[str, str] = {"work": "J", "power": "W"}
+# per-wheel attribute (n, nw) of a gyrostat -> unit
+WHEEL_FIELDS: dict[str, str] = {"wheel_speed": "rad/s", "motor_work": "J"}
 
 
 def _unit(name: str, unit: str | None) -> str:
@@ -76,6 +80,11 @@ def columns(result: Any, scalar_first: bool | None = None) -> dict[str, np.ndarr
                 out[_unit(f"{body}:{field}", unit)] = np.ascontiguousarray(values)
             for i, c in enumerate(components):
                 out[_unit(f"{body}:{field}_{c}", unit)] = np.ascontiguousarray(values[:, i])
+        wheels = [w for w, owner in enumerate(result.wheel_bodies) if owner == b]
+        for field, unit in WHEEL_FIELDS.items():
+            values = np.asarray(getattr(result, field), dtype=np.float64)
+            for k, w in enumerate(wheels):
+                out[_unit(f"{body}:{field}_{k}", unit)] = np.ascontiguousarray(values[:, w])
     for field, (parts, unit) in SCENE_FIELDS.items():
         values = np.asarray(getattr(result, field), dtype=np.float64)
         if parts is None:

@@ -423,7 +423,8 @@ TEST(SimulateBatch, ASampleWhoseMassRunsOutIsReportedByIndex) {
   EXPECT_EQ(message_of([&] {
               simulate_batch({compile_scene(spring_scene(1.0), Method::rk4), compiled}, spring_states(2), o, {}, 1);
             }),
-            "scenes[1]: expected a scene of 2 bodies and 2 work columns (as scenes[0]), got 1 bodies and 0 work columns");
+            "scenes[1]: expected a scene of 2 bodies, 2 work columns and 0 gyrostat wheels (as scenes[0]), got 1 bodies, 0 "
+            "work columns and 0 wheels");
 }
 
 }  // namespace

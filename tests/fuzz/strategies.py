@@ -73,6 +73,10 @@ _SCENE = _call_spec("Scene", bodies=("list", [_call_spec("Particle", [("lit", 2.
                     elements=("list", [_call_spec("UniformGravity")]))
 _PIVOTED = _call_spec("PivotedBody", [_call_spec("RigidBody", [("lit", 1.0), ("lit", [1.0, 2.0, 2.5])]),
                                       ("lit", [0.0, 0.0, 0.5])])
+# a gyrostat: a body with one wheel along z
+_WHEEL = _call_spec("Wheel", [("lit", [0.0, 0.0, 1.0]), ("lit", 0.05)])
+_GYROSTAT = _call_spec("Gyrostat", [_call_spec("RigidBody", [("lit", 100.0), ("lit", [10.0, 12.0, 15.0])]),
+                                    ("list", [_WHEEL])])
 _SCENE_STATES = ("list", [_call_spec("ParticleState", v_W=("lit", [0.0, 1.0, 0.0])),
                           _call_spec("RigidBodyState", w_B=("lit", [0.1, 1.0, 0.1]))])
 
@@ -113,6 +117,12 @@ RECIPES = {
     "ReactionWheel": st.tuples(st.floats(-100.0, 100.0), st.floats(-10.0, 10.0)).map(lambda sa: _call_spec(
         "ReactionWheel", body=("lit", 1), axis_B=("lit", [0.0, 0.6, 0.8]), inertia=("lit", 0.01), speed=("lit", sa[0]),
         acceleration=("lit", sa[1]))),
+    # a gyrostat with a wheel whose motor torque and initial speed are drawn
+    "Wheel": st.floats(-1.0, 1.0).map(lambda u: _call_spec("Wheel", [("lit", [0.0, 0.0, 1.0]), ("lit", 0.05)],
+                                                         motor_torque=("lit", u))),
+    "Gyrostat": st.just(_GYROSTAT),
+    "GyrostatState": st.floats(-100.0, 100.0).map(lambda w: _call_spec(
+        "GyrostatState", w_B=("lit", [0.1, 0.0, 0.2]), wheel_speeds=("lit", [w]))),
     "Thrust": st.sampled_from(["body", "world"]).map(lambda frame: _call_spec(
         "Thrust", [("lit", 0), ("lit", [0.0, 0.0, -100.0])], frame=("lit", frame))),
     "SceneFrame": st.sampled_from([_call_spec("SceneFrame.rotating", [("lit", [0.0, 0.0, 1.0]), ("lit", 0.5)]),
@@ -149,7 +159,8 @@ RECIPE_CALLS = {
     "simulate": ["SimulationResult", "SceneResult", "PivotedSceneResult"], "simulate_batch": ["BatchResult", "BatchSceneResult"],
     "integrate_density_over_box": ["DensityIntegral"], "forward_dynamics": ["PivotedAcceleration"],
     "monte_carlo.monte_carlo": ["monte_carlo.MonteCarloResult"],
-    **{name: [name] for name in ("Scene", "ScheduledLoads", "PivotedBody", "PivotedPlanarBody", "Thrust",
+    **{name: [name] for name in ("Scene", "ScheduledLoads", "PivotedBody", "PivotedPlanarBody", "Thrust", "Wheel",
+                                 "Gyrostat", "GyrostatState",
                                  "CompoundPendulumSolution", "LagrangeTopSolution", "RotatingFrameFreeParticle",
                                  "ConstantThrustSolution")},
 }
@@ -606,7 +617,7 @@ class Strategies:
             (r"screw", obj("Screw")),
             (r"check|inertia_check", obj("InertiaCheck")),
             (r"part", obj("SpatialInertia")),
-            (r"body|model", obj("RigidBody", "Particle", "PlanarBody", "PivotedBody", "PivotedPlanarBody")),
+            (r"body|model", obj("RigidBody", "Particle", "PlanarBody", "PivotedBody", "PivotedPlanarBody", "Gyrostat")),
             (r"frame_motion", obj("FrameMotion")),
             (r"mass_flow", lambda s, p, doc, depth: st.one_of(lit(st.none()), s.objects("MassFlow", depth + 1))),
             (r"model", obj("Scene", "CompiledScene")),
@@ -623,7 +634,7 @@ class Strategies:
                 array_spec(st.just(np.zeros(3))).map(lambda a: ("lambda", ("tuple", [a, a]))),
                 s.callables(doc, depth))),
             (r"state|initial", obj("RigidBodyState", "ParticleState", "PlanarBodyState", "PivotedBodyState",
-                                   "PivotedPlanarBodyState")),
+                                   "PivotedPlanarBodyState", "GyrostatState")),
             (r"rho", lambda s, p, doc, depth: st.one_of(  # a density per point [kg/m^3], or anything
                 lit(POSITIVE_FLOAT).map(lambda v: ("per_row", v)), returning()(s, p, doc, depth))),
             (r"kinematics_at", returning("FrameKinematics")),

@@ -286,6 +286,9 @@ EXAMPLES = {
     "SceneFrame.moving": lambda: {"frame_motion": rd.FrameMotion.fixed()},
     "MassFlow": lambda: {}, "Thrust": lambda: {"body": 0, "u_rel": V}, "MagneticDipole": lambda: {"m_B": V},
     "ReactionWheel": lambda: {"body": 0, "axis_B": V, "inertia": 0.1},
+    "Wheel": lambda: {"axis_B": V, "inertia": 0.1},
+    "Gyrostat": lambda: {"body": rd.RigidBody(1.0, I_BOX), "wheels": [rd.Wheel(V, 0.01)]},
+    "GyrostatState": lambda: {},
     # their exact references
     "CompoundPendulumSolution": _pendulum, "CompoundPendulumSolution.at": lambda: {"t": 0.5},
     "LagrangeTopSolution": _top, "LagrangeTopSolution.at": lambda: {"t": 0.5},
@@ -421,6 +424,8 @@ INSTANCES_OF_RESULTS = {
     "PivotedPlanarTorque": lambda: rd.inverse_dynamics(rd.PivotedPlanarBody(1.0, 0.5, [0.1, 0.2]),
                                                        rd.PivotedPlanarBodyState(), alpha_B=0.3),
     "SceneFrame": lambda: rd.SceneFrame.rotating([0, 0, 1.0], 0.5), "MassFlow": lambda: rd.MassFlow(-0.1),
+    "Wheel": lambda: rd.Wheel(V, 0.01), "Gyrostat": lambda: rd.Gyrostat(rd.RigidBody(1.0, I_BOX), [rd.Wheel(V, 0.01)]),
+    "GyrostatState": lambda: rd.GyrostatState(wheel_speeds=[1.0]),
 }
 PROPERTIES = _properties()
 # the states' fields: assigned whole, checked as the constructor checks (their arrays are read-only)
@@ -429,6 +434,8 @@ ASSIGNABLE = {("ParticleState", "p_W"), ("ParticleState", "v_W"), ("PlanarBodySt
               ("RigidBodyState", "p_W"), ("RigidBodyState", "q_WB"), ("RigidBodyState", "v_W"),
               ("RigidBodyState", "w_B"), ("PivotedBodyState", "q_WB"), ("PivotedBodyState", "w_B"),
               ("PivotedPlanarBodyState", "theta"), ("PivotedPlanarBodyState", "omega"),
+              ("GyrostatState", "p_W"), ("GyrostatState", "q_WB"), ("GyrostatState", "v_W"), ("GyrostatState", "w_B"),
+              ("GyrostatState", "wheel_speeds"),
               ("Scene", "frame")}  # a scene's frame: a SceneFrame or None
 
 

@@ -29,6 +29,9 @@ BODY_EXAMPLES = {
     "pivoted": (rd.PivotedBody(rd.RigidBody(1.0, [0.5, 0.5, 0.2]), p_OC_B=[0.0, 0.0, 0.3]),
                 rd.PivotedBodyState(w_B=[0.0, 0.0, 10.0])),
     "pivoted_planar": (rd.PivotedPlanarBody(2.0, 0.05, [0.0, -0.4]), rd.PivotedPlanarBodyState(theta=0.3, omega=0.0)),
+    "gyrostat": (rd.Gyrostat(rd.RigidBody(100.0, [10.0, 12.0, 15.0]),
+                             [rd.Wheel([0.0, 0.0, 1.0], 0.05, motor_torque=0.01, t_end=60.0), rd.Wheel([1.0, 0.0, 0.0], 0.05)]),
+                 rd.GyrostatState(w_B=[0.0, 0.0, 0.1], wheel_speeds=[300.0, -20.0])),
 }
 
 

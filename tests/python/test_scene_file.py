@@ -304,7 +304,7 @@ P = '[[body]]\nname = "ball"\nkind = "particle"\nmass = 1\n'
     (P + '[[force]]\ntype = "uniform_gravityy"', "(did you mean 'uniform_gravity'?), got 'uniform_gravityy'"),
     # missing required fields
     ('[[body]]\nkind = "particle"\n', "body[0].mass: expected a mass [kg] > 0, got 'nothing'"),
-    ('[[body]]\nmass = 1\n', "body[0].kind: expected one of 'particle', 'planar', 'rigid', 'pivoted', 'pivoted_planar', got 'nothing'"),
+    ('[[body]]\nmass = 1\n', "body[0].kind: expected one of 'particle', 'planar', 'rigid', 'pivoted', 'pivoted_planar', 'gyrostat', got 'nothing'"),
     ('[[body]]\nkind = "rigid"\nmass = 1\n', "body[0].inertia: expected 3 principal moments or a 3x3 matrix"),
     (P + '[[force]]\ntype = "point_mass_gravity"', "force[0].gm: expected a value [m^3/s^2], got 'nothing'"),
     (P + '[[force]]\ntype = "spring_damper"\nbody_a = "ball"', "force[0].stiffness: expected a value [N/m], got 'nothing'"),
@@ -322,7 +322,7 @@ P = '[[body]]\nname = "ball"\nkind = "particle"\nmass = 1\n'
      "force[0].loads[0].torq: expected a key of [[force.loads]]; did you mean 'torque'?"),
     # other values the core or the format refuses, named by their field
     (P + P, "body[1].name: expected a name no other [[body]] has, got 'ball'"),
-    ('[[body]]\nkind = "soft"\nmass = 1\n', "body[0].kind: expected one of 'particle', 'planar', 'rigid', 'pivoted', 'pivoted_planar', got 'soft'"),
+    ('[[body]]\nkind = "soft"\nmass = 1\n', "body[0].kind: expected one of 'particle', 'planar', 'rigid', 'pivoted', 'pivoted_planar', 'gyrostat', got 'soft'"),
     (B.replace("[1, 2, 3]", "[1, 2, 30]"), "body[0].inertia: expected a symmetric inertia satisfying the triangle"),
     ('[[body]]\nkind = "planar"\nmass = 1\ninertia = -1\n', "body[0].inertia: expected kg m^2 > 0, got -1"),
     (P.replace("mass = 1", "mass = 0"), "body[0].mass: expected kg > 0, got 0"),

@@ -124,7 +124,7 @@ BAD = [
     (PENDULUM.replace('p_OC_B = [0, "-50 cm"]', 'p_OC_B = [0, 0, -0.5]'), "body[0].p_OC_B"),
     (PENDULUM.replace('inertia = "0.5 kg*m^2"', 'inertia = "-0.5 kg*m^2"'), "body[0].inertia: expected"),
     (PENDULUM.replace('kind = "pivoted_planar"', 'kind = "pivoted_plane"'),
-     "body[0].kind: expected one of 'particle', 'planar', 'rigid', 'pivoted', 'pivoted_planar' (did you mean "
+     "body[0].kind: expected one of 'particle', 'planar', 'rigid', 'pivoted', 'pivoted_planar', 'gyrostat' (did you mean "
      "'pivoted_planar'?), got 'pivoted_plane'"),
     (ROCKET.replace('rate = "-120 kg/min"', 'rate = "-2 kg"'), "body[0].mass_flow.rate: expected kg/s"),
     (ROCKET.replace('rate = "-120 kg/min"', 'rate = inf'), "body[0].mass_flow.rate: expected kg/s, got inf"),

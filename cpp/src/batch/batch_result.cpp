@@ -61,10 +61,11 @@ void put_sample(BatchTrajectory& batch, std::size_t i, const Trajectory& run) {
 }
 
 BatchSceneSimulation empty_scene_batch(std::size_t samples, std::size_t records, std::int64_t body_count,
-                                       std::int64_t element_count) {
+                                       std::int64_t element_count, std::int64_t wheel_count) {
   const auto nb = static_cast<std::size_t>(body_count), ne = static_cast<std::size_t>(element_count);
   BatchSceneSimulation b;
   b.samples = samples, b.records = records, b.body_count = body_count, b.element_count = element_count;
+  b.wheel_count = wheel_count;
   b.t = nans(samples, records, 1);
   b.p_W = nans(samples, records, nb * 3);
   b.q_WB = nans(samples, records, nb * 4);
@@ -75,6 +76,7 @@ BatchSceneSimulation empty_scene_batch(std::size_t samples, std::size_t records,
   b.mass = b.mass_flow_energy = nans(samples, records, nb);
   b.work = nans(samples, records, ne);
   b.power = b.work;
+  b.wheel_speed = b.motor_work = nans(samples, records, static_cast<std::size_t>(wheel_count));
   b.filled.assign(samples, 0);
   b.diverged.assign(samples, 0);
   b.unconverged_steps.assign(samples, 0);
@@ -110,6 +112,16 @@ void put_sample(BatchSceneSimulation& batch, std::size_t i, const SceneSimulatio
     std::fill_n(batch.mass_flow_energy.begin() + static_cast<std::ptrdiff_t>(i * n * nb), rows * nb, 0.0);
   } else {
     copy_rows(batch.mass_flow_energy, i, n, nb, run.mass_flow_energy, rows);
+  }
+  const auto nw = static_cast<std::size_t>(batch.wheel_count);
+  if (run.wheel_speed.size() != run.size() * nw || run.motor_work.size() != run.size() * nw) {
+    throw std::invalid_argument("run: expected " + std::to_string(nw) + " wheel speeds per record (the batch's), got " +
+                                std::to_string(run.wheel_speed.size()) + " values in " + std::to_string(run.size()) +
+                                " records");
+  }
+  if (nw > 0) {
+    copy_rows(batch.wheel_speed, i, n, nw, run.wheel_speed, rows);
+    copy_rows(batch.motor_work, i, n, nw, run.motor_work, rows);
   }
   batch.filled[i] = static_cast<std::int64_t>(rows);
   batch.diverged[i] = run.diverged ? 1 : 0;

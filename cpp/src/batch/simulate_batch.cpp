@@ -228,16 +228,20 @@ BatchSceneSimulation simulate_batch(const std::vector<CompiledScene>& scenes,
   const std::size_t samples = initial.size();
   check_batch(samples, scenes.size(), "scenes", dt, threads);
   const std::size_t nb = scenes[0].scene().bodies.size(), ne = scenes[0].element_types().size();
+  const std::size_t nw = wheel_count(scenes[0].scene().bodies);
   for (std::size_t s = 1; s < scenes.size(); ++s) {
     const std::size_t nb_s = scenes[s].scene().bodies.size(), ne_s = scenes[s].element_types().size();
-    if (nb_s != nb || ne_s != ne) {
+    const std::size_t nw_s = wheel_count(scenes[s].scene().bodies);
+    if (nb_s != nb || ne_s != ne || nw_s != nw) {
       throw std::invalid_argument("scenes[" + std::to_string(s) + "]: expected a scene of " + std::to_string(nb) +
-                                  " bodies and " + std::to_string(ne) + " work columns (as scenes[0]), got " +
-                                  std::to_string(nb_s) + " bodies and " + std::to_string(ne_s) + " work columns");
+                                  " bodies, " + std::to_string(ne) + " work columns and " + std::to_string(nw) +
+                                  " gyrostat wheels (as scenes[0]), got " + std::to_string(nb_s) + " bodies, " +
+                                  std::to_string(ne_s) + " work columns and " + std::to_string(nw_s) + " wheels");
     }
   }
   BatchSceneSimulation out = empty_scene_batch(samples, batch_record_count(common.steps, common.record_every),
-                                               static_cast<std::int64_t>(nb), static_cast<std::int64_t>(ne));
+                                               static_cast<std::int64_t>(nb), static_cast<std::int64_t>(ne),
+                                               static_cast<std::int64_t>(nw));
   const BatchParameters p{dt, {}, {}};
   out.interrupted = run_samples(samples, threads, common.monitor, [&](std::size_t i, const StepMonitor& monitor) {
     const SceneSimulation run =

@@ -48,7 +48,10 @@ void check_names(const Scene& scene) {
 // UniformGravity (in the plane for a planar body, as today's planar simulate requires) and at most one
 // ScheduledLoads through the centre of mass. Returns false otherwise.
 bool one_body_plan(const Scene& scene, OneBodyPlan& plan) {
-  if (scene.bodies.size() != 1 || is_pivoted(scene.bodies[0]) || scene.frame || has_mass_flow(scene, 0)) return false;
+  if (scene.bodies.size() != 1 || is_pivoted(scene.bodies[0]) || body_traits(scene.bodies[0]).has_rotors || scene.frame ||
+      has_mass_flow(scene, 0)) {
+    return false;
+  }
   for (std::size_t i = 0; i < scene.elements.size(); ++i) {
     const Element& element = scene.elements[i];
     if (const auto* g = std::get_if<UniformGravity>(&element)) {
@@ -229,6 +232,23 @@ void check_exact(const Scene& scene, Method method, std::size_t extra_elements) 
   }
 }
 
+// A body with wheels spinning relative to it (a gyrostat) is refused in a moving frame (the fictitious terms hold
+// the body's inertia, not its wheels' momentum) and by the methods that need a closed-form free rotation or an
+// implicit gyroscopic kick of its Euler form (the splittings, semi_implicit_euler_implicit_gyroscopic)
+void check_rotors(const Scene& scene, std::size_t i, Method method) {
+  if (!body_traits(scene.bodies[i]).has_rotors) return;
+  const std::string body = "body " + std::to_string(i) + " '" + body_name(scene, i) + "' (a " + kind_name(scene.bodies[i]) + ")";
+  if (scene.frame) {
+    throw std::invalid_argument("frame: expected none in a scene with " + body +
+                                " (the fictitious terms do not carry its wheels' momentum), got a moving frame");
+  }
+  if (is_splitting(method) || method == Method::semi_implicit_euler_implicit_gyroscopic) {
+    throw std::invalid_argument("method: expected a method that integrates the whole motion (explicit_euler, "
+                                "semi_implicit_euler, rk4, rkmk4, implicit_midpoint) for " + body +
+                                ": it has no closed-form free rotation, got '" + method_info(method).name + "'");
+  }
+}
+
 void check_scene(const Scene& scene, Method method) {
   method_info(method);  // throws for a Method out of range
   check_names(scene);
@@ -258,6 +278,7 @@ void check_scene(const Scene& scene, Method method) {
                                   method_info(method).name + "'");
     }
   }
+  for (std::size_t i = 0; i < n; ++i) check_rotors(scene, i, method);
   for (std::size_t e = 0; e < scene.elements.size(); ++e) {
     const auto* gradient = std::get_if<GravityGradient>(&scene.elements[e]);
     if (!gradient) continue;
@@ -305,7 +326,7 @@ CompiledScene compile_scene(const Scene& scene, Method method) {
     const ElementTraits traits = std::visit([](const auto& term) { return term.traits(); }, terms[out.element_names_.size() - 1]);
     out.element_traits_.push_back(traits);
     // the Coriolis term is velocity-dependent but linear in the velocities: every model's loads kick takes its
-    // exact flow (scene_model.hpp detail::exact_linear_kick, the fast particle model's closed form), so the
+    // exact flow (so3/coriolis_flow.hpp exact_linear_kick, the fast particle model's closed form), so the
     // kick-based splittings keep their order with it and warrant no warning
     if (k == 3) continue;
     detail::check_compatibility(method, traits, out.element_names_.back(), out.element_types_.back(), out.warnings_);
@@ -317,6 +338,15 @@ CompiledScene compile_scene(const Scene& scene, Method method) {
                             six_digits(pivoted->p_OC_B().norm()) + " m from the centre of mass; the inertia about O "
                             "keeps only ~" + one_decimal(16.0 - pivoted->digits_lost()) +
                             " of the 16 digits of the inertia about the centre of mass");
+  }
+  for (const Body& body : scene.bodies) {  // a gyrostat's motor torques switch at their wheels' t_start and t_end
+    if (const auto* gyrostat = std::get_if<Gyrostat>(&body)) {
+      for (const Wheel& wheel : gyrostat->wheels()) {
+        AppliedLoad window;
+        window.t_start = wheel.t_start, window.t_end = wheel.t_end;
+        out.switch_schedule_.push_back(window);
+      }
+    }
   }
   for (const Element& element : scene.elements) {  // the switch times of every element that has some
     std::visit(

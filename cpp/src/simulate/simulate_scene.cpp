@@ -45,6 +45,9 @@ std::vector<BodyState> checked_scene_input(const Scene& scene, Method compiled_m
                                   "), got a " + state_type_name(initial[i].index()));
     }
     out.push_back(std::visit([&](const auto& s) -> BodyState { return checked_state(s, item); }, initial[i]));
+    if (const auto* gyrostat = std::get_if<Gyrostat>(&scene.bodies[i])) {
+      out.back() = checked_state(*gyrostat, std::get<GyrostatState>(out.back()), item);  // a speed per wheel
+    }
   }
   return out;
 }
@@ -58,11 +61,12 @@ void check_masses_over_run(const Scene& scene, const SimulationOptions& o, std::
 }
 
 SceneSimulation reserved_scene_simulation(std::int64_t steps, std::int64_t record_every, std::size_t bodies,
-                                          std::size_t elements) {
+                                          std::size_t elements, std::size_t wheels) {
   const double records = std::floor(static_cast<double>(steps) / static_cast<double>(record_every)) + 2.0;
   // per record: t, 20 per body (state 13, pivot reaction 3, H_O 3, mass 1), 3 energies, 6 momenta,
-  // 2 per element
-  const double per_record = 10.0 + 20.0 * static_cast<double>(bodies) + 2.0 * static_cast<double>(elements);
+  // 2 per element, 1 per gyrostat wheel
+  const double per_record = 10.0 + 20.0 * static_cast<double>(bodies) + 2.0 * static_cast<double>(elements) +
+                            static_cast<double>(wheels);
   check_recording_fits(records * per_record * sizeof(double), steps, record_every);
   SceneSimulation out;
   out.body_count = static_cast<std::int64_t>(bodies);
@@ -76,6 +80,7 @@ SceneSimulation reserved_scene_simulation(std::int64_t steps, std::int64_t recor
   out.q_WB.reserve(4 * bodies * n);
   out.mass.reserve(bodies * n);
   for (auto* v : {&out.work, &out.power}) v->reserve(elements * n);
+  for (auto* v : {&out.wheel_speed, &out.motor_work}) v->reserve(wheels * n);
   return out;
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 #include "rigiddyn/check.hpp"
 #include "rigiddyn/overloaded.hpp"
+#include "rigiddyn/models/gyrostat.hpp"
 #include "rigiddyn/models/particle.hpp"
 #include "rigiddyn/models/pivoted_body.hpp"
 #include "rigiddyn/models/pivoted_planar_body.hpp"
@@ -23,11 +24,13 @@
 namespace rigiddyn {
 
 // A body of a scene: a particle (3 DOF, no attitude), a planar body (x, y, θ in W's xy plane), a
-// spatial rigid body (6 DOF), a rigid body pinned at a point O fixed in W (3 rotational DOF) or a planar
-// body pinned at O (the compound pendulum, θ about z).
-using Body = std::variant<Particle, PlanarBody, RigidBody, PivotedBody, PivotedPlanarBody>;
+// spatial rigid body (6 DOF), a rigid body pinned at a point O fixed in W (3 rotational DOF), a planar
+// body pinned at O (the compound pendulum, θ about z) or a gyrostat (a rigid body carrying motor-driven wheels,
+// 6 DOF and one per wheel).
+using Body = std::variant<Particle, PlanarBody, RigidBody, PivotedBody, PivotedPlanarBody, Gyrostat>;
 // The state of a body of the matching kind (same alternative index as its Body).
-using BodyState = std::variant<ParticleState, PlanarBodyState, RigidBodyState, PivotedBodyState, PivotedPlanarBodyState>;
+using BodyState =
+    std::variant<ParticleState, PlanarBodyState, RigidBodyState, PivotedBodyState, PivotedPlanarBodyState, GyrostatState>;
 // Indices into a scene's bodies that an element acts on; empty means every body.
 using BodyList = std::vector<int>;
 
@@ -41,12 +44,13 @@ inline double mass_of(const Body& body) {
 //   planar body (also pinned)   diag(0, 0, I_zz): the only moment a planar body carries; its in-plane
 //                               moments are unknown and taken as zero (an element that needs them must
 //                               refuse planar bodies);
-//   rigid body (also pinned)    inertia_com(), about the centre of mass (not the pivot's I_O).
+//   rigid body (also pinned)    inertia_com(), about the centre of mass (not the pivot's I_O);
+//   gyrostat                    inertia_com(), the whole body's with its wheels locked.
 inline Eigen::Matrix3d inertia_com_of(const Body& body) {
   return std::visit(
       [](const auto& b) -> Eigen::Matrix3d {
         using T = std::decay_t<decltype(b)>;
-        if constexpr (std::is_same_v<T, RigidBody> || std::is_same_v<T, PivotedBody>) {
+        if constexpr (std::is_same_v<T, RigidBody> || std::is_same_v<T, PivotedBody> || std::is_same_v<T, Gyrostat>) {
           return b.inertia_com();
         } else if constexpr (std::is_same_v<T, PlanarBody> || std::is_same_v<T, PivotedPlanarBody>) {
           return Eigen::Vector3d(0.0, 0.0, b.inertia_zz()).asDiagonal();
@@ -64,25 +68,40 @@ struct BodyTraits {
   bool is_planar;            // it moves in W's xy plane: forces keep their x, y parts and torques their z part
   bool is_pivoted;           // it is pinned at a point O fixed in W
   bool has_spatial_inertia;  // it carries a full 3×3 inertia about its centre of mass (inertia_com_of)
+  bool has_rotors;           // it carries wheels spinning relative to it (a gyrostat): coordinates beyond its motion
 };
 
 inline BodyTraits body_traits(const Body& body) {
-  return std::visit(overloaded{[](const Particle&) { return BodyTraits{false, false, false, false}; },
-                               [](const PlanarBody&) { return BodyTraits{true, true, false, false}; },
-                               [](const RigidBody&) { return BodyTraits{true, false, false, true}; },
-                               [](const PivotedBody&) { return BodyTraits{true, false, true, true}; },
-                               [](const PivotedPlanarBody&) { return BodyTraits{true, true, true, false}; }},
+  return std::visit(overloaded{[](const Particle&) { return BodyTraits{false, false, false, false, false}; },
+                               [](const PlanarBody&) { return BodyTraits{true, true, false, false, false}; },
+                               [](const RigidBody&) { return BodyTraits{true, false, false, true, false}; },
+                               [](const PivotedBody&) { return BodyTraits{true, false, true, true, false}; },
+                               [](const PivotedPlanarBody&) { return BodyTraits{true, true, true, false, false}; },
+                               [](const Gyrostat&) { return BodyTraits{true, false, false, true, true}; }},
                     body);
 }
 
 inline bool has_attitude(const Body& body) { return body_traits(body).has_attitude; }
+
+// The wheels a body carries (a gyrostat's; 0 for the other kinds), and those of a scene's bodies: the columns of
+// SceneSimulation::wheel_speed.
+inline std::size_t wheel_count(const Body& body) {
+  const auto* gyrostat = std::get_if<Gyrostat>(&body);
+  return gyrostat ? gyrostat->wheels().size() : 0;
+}
+inline std::size_t wheel_count(const std::vector<Body>& bodies) {
+  std::size_t n = 0;
+  for (const Body& body : bodies) n += wheel_count(body);
+  return n;
+}
 inline bool is_planar(const Body& body) { return body_traits(body).is_planar; }
 inline bool is_pivoted(const Body& body) { return body_traits(body).is_pivoted; }
 
-// A short name of the body's kind for messages: "particle", "planar body", "rigid body", "pivoted body"
-// or "pivoted planar body".
+// A short name of the body's kind for messages: "particle", "planar body", "rigid body", "pivoted body",
+// "pivoted planar body" or "gyrostat".
 inline const char* kind_name(const Body& body) {
-  static constexpr const char* names[] = {"particle", "planar body", "rigid body", "pivoted body", "pivoted planar body"};
+  static constexpr const char* names[] = {"particle",     "planar body",         "rigid body",
+                                          "pivoted body", "pivoted planar body", "gyrostat"};
   static_assert(std::variant_size_v<Body> == sizeof names / sizeof names[0], "a name per body kind");
   return names[body.index()];
 }
@@ -90,7 +109,7 @@ inline const char* kind_name(const Body& body) {
 // The name of the state type of each body kind for messages ("ParticleState", ...).
 inline const char* state_type_name(std::size_t kind) {
   static constexpr const char* names[] = {"ParticleState", "PlanarBodyState", "RigidBodyState", "PivotedBodyState",
-                                          "PivotedPlanarBodyState"};
+                                          "PivotedPlanarBodyState", "GyrostatState"};
   static_assert(std::variant_size_v<BodyState> == sizeof names / sizeof names[0], "a name per state type");
   return names[kind];
 }
@@ -130,7 +149,12 @@ inline BodyKinematics kinematics_of(const BodyState& state) {
                                  return k;
                                },
                                [&](const PivotedBodyState& s) { return pinned(s); },
-                               [&](const PivotedPlanarBodyState& s) { return pinned(s); }},
+                               [&](const PivotedPlanarBodyState& s) { return pinned(s); },
+                               [](const GyrostatState& s) {
+                                 BodyKinematics k;
+                                 k.p_W = s.p_W, k.q_WB = s.q_WB, k.v_W = s.v_W, k.w_B = s.w_B;
+                                 return k;
+                               }},
                     state);
 }
 

@@ -67,7 +67,8 @@ class CompiledScene {
   // its gravity and loads.
   bool one_body_path() const { return one_body_path_; }
   const OneBodyPlan& one_body_plan() const { return plan_; }
-  // Every load of every ScheduledLoads element: their t_start/t_end are the run's switch times.
+  // The switch times of the run (their t_start/t_end): every load of every ScheduledLoads element, every element with
+  // switches() and every gyrostat wheel's motor-torque window.
   const std::vector<AppliedLoad>& switch_schedule() const { return switch_schedule_; }
   // The path simulate runs (describe: which model runs the scene), and the fast model of the fast paths.
   ScenePath path() const { return path_; }

@@ -10,7 +10,7 @@ namespace rigiddyn {
 // Records of a scene run, one row per recorded step, row-major (n = size() records, nb = body_count
 // bodies, ne = element_count elements). Bodies of every kind in the rigid-body layout: a particle has
 // q_WB = identity and w_B = 0, a planar body p_W = (x, y, 0), q_WB = Rz(θ), v_W = (v_x, v_y, 0),
-// w_B = (0, 0, ω); a pivoted body its centre of mass p_W = p_WO + R_WB p_OC_B and v_W = R_WB (ω × p_OC_B).
+// w_B = (0, 0, ω); a gyrostat as the rigid body it is, its wheel speeds in wheel_speed; a pivoted body its centre of mass p_W = p_WO + R_WB p_OC_B and v_W = R_WB (ω × p_OC_B).
 // "W" is the scene frame: W itself when the scene declares no moving frame, else F, and
 // every record is relative to it (kinetic energy included; the potential includes the centrifugal one
 // of a frame turning at a constant rate, so that total_energy is then the Jacobi integral).
@@ -38,6 +38,10 @@ struct SceneSimulation {
                                           // or brings (0 for a constant mass), so that kinetic_energy − its first
                                           // value = Σ work + Σ mass_flow_energy to the method's error
                                           // (scene_model.hpp); empty when no body has a MassFlow (all 0)
+  std::vector<double> wheel_speed;        // (n, nw) each gyrostat wheel's speed relative to its body [rad/s], the
+                                          // wheels of the gyrostats in the scene's order (empty without one)
+  std::vector<double> motor_work;         // (n, nw) each wheel's motor work since t0 [J] (∫ u Ω dt): T − T(0) =
+                                          // Σ work + Σ mass_flow_energy + Σ motor_work to the method's error
   bool diverged = false;                  // the state became non-finite; the run stopped there
   bool interrupted = false;               // options.monitor returned true; the run stopped there
   std::int64_t unconverged_steps = 0;     // steps whose implicit solve stopped at its iteration cap

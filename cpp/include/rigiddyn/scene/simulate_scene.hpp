@@ -74,9 +74,15 @@ std::vector<BodyState> checked_scene_input(const Scene& scene, Method compiled_m
                                            const SimulationOptions& options, bool stepping, const char* states_name);
 
 // An empty SceneSimulation with its records reserved (throws std::invalid_argument naming record_every
-// for a recording larger than the memory available).
+// for a recording larger than the memory available), `wheels` the gyrostat wheels recorded.
 SceneSimulation reserved_scene_simulation(std::int64_t steps, std::int64_t record_every, std::size_t bodies,
-                                          std::size_t elements);
+                                          std::size_t elements, std::size_t wheels = 0);
+
+// Whether a model records gyrostat wheels (wheel_count(): the generic model; the fast models have none).
+template <class Model, class = void>
+struct records_wheels : std::false_type {};
+template <class Model>
+struct records_wheels<Model, std::void_t<decltype(std::declval<const Model&>().wheel_count())>> : std::true_type {};
 
 // The up-front check of each constant mass rate against the run's steps and dt (check_mass_over_run,
 // naming `steps`/`dt`): std::invalid_argument when a body runs out of mass within the run.
@@ -86,7 +92,9 @@ void check_masses_over_run(const Scene& scene, const SimulationOptions& options,
 template <class Model>
 SceneSimulation run_scene(const Model& model, const typename Model::Coordinates& y, const SimulationOptions& o,
                           const std::vector<AppliedLoad>& switch_schedule) {
-  SceneSimulation out = reserved_scene_simulation(o.steps, o.record_every, model.body_count(), model.element_count());
+  std::size_t wheels = 0;
+  if constexpr (records_wheels<Model>::value) wheels = model.wheel_count();
+  SceneSimulation out = reserved_scene_simulation(o.steps, o.record_every, model.body_count(), model.element_count(), wheels);
   return visit_method(o.method, [&](auto integrator) {
     return run<decltype(integrator)>(model, y, o, ScenePieces{switch_schedule, model.time_index()}, std::move(out));
   });

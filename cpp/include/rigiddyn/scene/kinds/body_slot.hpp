@@ -1,0 +1,137 @@
+// What every body kind of the scene model shares (scene/kinds/, one file per kind; the list in kind_list.hpp).
+//
+// A kind's slot is where one body lives in the coordinates y and the tangent ξ (at_y, at_xi) plus the
+// constants its Newton–Euler needs. Every slot has the same members, which the scene model calls for each
+// body (scene_model.hpp; a member missing from a kind is a compile error there):
+//   y_size, xi_size                  its coordinates and tangent components
+//   kinematics(y, clock, k)          BodyKinematics from y (body_kinematics.hpp), as elements see the body
+//   rate(y, clock, k, w, dy)         its part of ẏ under the wrench w at the kinematics k
+//   velocity(y, clock, k, w, xi)     its part of ξ (velocities, accelerations)
+//   retract(y, θ, out)               y ⊕ Θ: vector parts added, an attitude q ⊗ exp(Θ_rot)
+//   dexp_inv(θ, xi)                  ω ← dexp⁻¹_{−Θ} ω on an attitude part, identity elsewhere
+//   project(y)                       an attitude back on the unit sphere
+//   kick(y, k, w, h, gyroscopic)     velocities += h × accelerations (the gyroscopic kick of an Euler form)
+//   translate(y, h), turn(y, h)      p += h v; an attitude or angle by h ω at fixed ω (drift)
+//   free_rotation<Rotation>(y, h)    its attitude and ω by the free flow Rotation (the splittings)
+//   loads_kick(y, k, w, h, kicks)    the exact flow of the loads part (VelocityKicks below); returns |Δω|
+//   record(y, k, w, sums, H_O, R)    its energy and momenta into sums, its own momentum and pivot reaction
+//   coordinates(state, y), state(y)  from and to its BodyState
+//   attitude_y()                     where q_WB is in y (−1 without one)
+// and has_mass_flow (a kind whose mass is a coordinate: scene/kinds/mass_*_slot.hpp add the mass part). Two members
+// are optional: set_time(t) (a kind with piecewise-constant inputs, set at each piece of a run, as the elements')
+// and record_internal(y, out) (a kind with coordinates of its own beyond the body's motion: the gyrostat's wheel
+// speeds).
+// The pointers y, dy, ξ, θ are the whole vectors; a slot reads its own block at at_y / at_xi.
+#pragma once
+#include "rigiddyn/always_inline.hpp"
+#include "rigiddyn/exact/free_body.hpp"
+#include "rigiddyn/integrators/exact_flow_kick.hpp"
+#include "rigiddyn/integrators/free_flow_tags.hpp"
+#include "rigiddyn/integrators/splitting_dlm.hpp"
+#include "rigiddyn/models/euler_equations.hpp"  // cross_3
+#include "rigiddyn/scene/body_kinematics.hpp"
+#include "rigiddyn/so3/coriolis_flow.hpp"
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <type_traits>
+#include <vector>
+
+namespace rigiddyn::detail {
+
+// Where a body lives in y and ξ: its index in the scene and the offsets of its blocks
+struct SlotPlace {
+  int body;
+  Eigen::Index at_y, at_xi;
+};
+
+// The instant of an evaluation: t of y [s], and the start of the step being taken [s] (the out-of-mass message)
+struct StepClock {
+  double t, step_start;
+};
+
+// What record sums over the bodies: kinetic energy T [J], linear momentum L_W [kg m/s], angular momentum H_W about
+// W's origin [kg m²/s]
+struct RecordSums {
+  double T = 0.0;
+  Eigen::Vector3d L_W = Eigen::Vector3d::Zero(), H_W = Eigen::Vector3d::Zero();
+  // m v, T = ½ m v·v and p × m v of a body's centre of mass
+  void add_translation(const BodyKinematics& k) {
+    T += 0.5 * k.m * k.v_W.squaredNorm();
+    L_W += k.m * k.v_W;
+    H_W += k.p_W.cross(k.m * k.v_W);
+  }
+};
+
+RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d three(const double* x) { return Eigen::Vector3d(x[0], x[1], x[2]); }
+
+template <bool normalise, class Euler>
+void free_dlm(DlmRotation<normalise>, const Euler& euler, double* q, double* w, double h) {
+  dlm_free_rotation<normalise>(euler, q, w, h);
+}
+
+// The free rotation over h [s] of an attitude q (x, y, z, w) and its ω_B [rad/s] by the flow Rotation: the
+// body's own exact flow (ExactRotation: free_flow<ExactRotation>), or the DLM rotation of its Euler form
+template <class Rotation, class Euler>
+void free_rotation_by(Rotation, const Euler& euler, const FreeRotationFlow& flow, double* q, double* w, double h) {
+  if constexpr (std::is_same_v<Rotation, ExactRotation>) {
+    exact_free_rotation(flow, q, w, h);
+  } else {
+    free_dlm(Rotation{}, euler, q, w, h);
+  }
+}
+
+// The velocity increments of the loads part over h [s] from the start increments h a0 (model_interface.hpp
+// loads_kick): Δu = h a0 and the mean ū − u = h a0 / 2, or, in a turning frame (turning = true), the exact flow
+// of u̇ = a0 + M u with the Coriolis part M (so3/coriolis_flow.hpp): M v = −2 Ω × v for a centre of mass (λ = 2|Ω|;
+// Ω = (0, 0, Ω_z) in a planar body's plane), M ω = I⁻¹ (s × ω) for a 3-D attitude (coriolis_torque_axis).
+template <bool turning>
+struct VelocityKicks {
+  double h;
+  Eigen::Vector3d w_F = Eigen::Vector3d::Zero(), w_plane = Eigen::Vector3d::Zero();  // the frame's Ω [rad/s] in F
+  TurnCoefficients c_F{}, c_plane{};  // of λ = 2|Ω| h and of λ = 2|Ω_z| h
+  const std::vector<CoriolisInertia>* inertia = nullptr;  // per body (a 3-D attitude's)
+
+  VelocityKicks(double h_, const Eigen::Vector3d& w_frame, const std::vector<CoriolisInertia>* inertia_)
+      : h(h_), inertia(inertia_) {
+    if constexpr (turning) {
+      w_F = w_frame, w_plane.z() = w_F.z();
+      c_F = turn_coefficients(2.0 * w_F.norm() * h), c_plane = turn_coefficients(2.0 * std::abs(w_F.z()) * h);
+    }
+  }
+  // Δv and v̄ − v of a centre of mass
+  void translation(const Eigen::Vector3d& h_a0, Eigen::Vector3d& dv, Eigen::Vector3d& mean) const {
+    linear(w_F, c_F, h_a0, dv, mean);
+  }
+  // the same for a planar body's centre of mass, in its plane
+  void translation_in_plane(const Eigen::Vector3d& h_a0, Eigen::Vector3d& dv, Eigen::Vector3d& mean) const {
+    linear(w_plane, c_plane, h_a0, dv, mean);
+  }
+  // Δω and ω̄ − ω of the 3-D attitude of body `body` at the attitude q_WB
+  void rotation(int body, const Eigen::Quaterniond& q_WB, const Eigen::Vector3d& h_a0, Eigen::Vector3d& dw,
+                Eigen::Vector3d& mean) const {
+    if constexpr (turning) {
+      const CoriolisInertia& b = (*inertia)[body];
+      Eigen::Vector3d axis;
+      const double lambda = coriolis_torque_axis(b, q_WB.conjugate() * w_F, axis);
+      const auto coriolis = [&](const Eigen::Vector3d& w) { return Eigen::Vector3d(b.inverse * cross_3(axis, w)); };
+      exact_linear_kick(h_a0, h, turn_coefficients(lambda * h), coriolis, dw, mean);
+    } else {
+      dw = h_a0, mean = 0.5 * h_a0;
+    }
+  }
+
+ private:
+  void linear(const Eigen::Vector3d& w, const TurnCoefficients& c, const Eigen::Vector3d& h_a0, Eigen::Vector3d& dv,
+              Eigen::Vector3d& mean) const {
+    if constexpr (turning) {
+      const auto coriolis = [&](const Eigen::Vector3d& v) { return Eigen::Vector3d(-2.0 * cross_3(w, v)); };
+      exact_linear_kick(h_a0, h, c, coriolis, dv, mean);
+    } else {
+      dv = h_a0, mean = 0.5 * h_a0;
+    }
+  }
+};
+
+}  // namespace rigiddyn::detail
