@@ -248,6 +248,22 @@ def test_bad_input_is_refused_naming_the_value(make, message):
         make()
 
 
+def test_an_axis_of_huge_entries_stays_an_axis():
+    """|axis_B|² overflows for entries of 1e308: the unit axis is taken after scaling (stableNormalized), never
+    the zero vector a plain normalisation gives; for the Wheel and for the ReactionWheel element, whose couple
+    −ω × J Ω a on a body at ω = (0, 0, 1) with a wheel at Ω = 1 must then be J (a_y, −a_x, 0)."""
+    np.testing.assert_allclose(rd.Wheel([1e308, 1e308, 0.0], 0.1).axis_B, [2**-0.5, 2**-0.5, 0.0], rtol=4 * EPS)
+    scene = rd.Scene()
+    scene.add_body(rd.RigidBody(1.0, [1.0, 1.0, 1.0]))
+    scene.add(rd.ReactionWheel(body=0, axis_B=[1e308, 1e308, 0.0], inertia=0.5, speed=1.0))
+    r = rd.simulate(scene, [rd.RigidBodyState(w_B=[0.0, 0.0, 1.0])], dt=1e-6, steps=1)
+    # the couple is τ ⟂ ω (no power): read it from the first step's Δω/h (unit sphere: ω̇ = τ). Bound: ω̇ turns
+    # with ω at |τ| = 0.5 rad/s², so Δω/h differs from ω̇(0) by ≤ h |∂ω̇/∂ω| |ω̇| ~ 1e-6 relative, and the
+    # difference's round-off is ≤ 2 eps |ω| / h ≈ 5e-10: rtol 1e-5
+    dw = (r.w_B[1, 0] - r.w_B[0, 0]) / 1e-6
+    np.testing.assert_allclose(dw[:2], 0.5 * np.array([2**-0.5, -(2**-0.5)]), rtol=1e-5)
+
+
 def test_a_run_refuses_what_the_gyrostat_cannot_do():
     body = rd.Gyrostat(rd.RigidBody(5.0, [3.0, 4.0, 5.0]), [rd.Wheel([0.0, 0.0, 1.0], 1.0)])
     with pytest.raises(ValueError, match=r"^initial\[0\]\.wheel_speeds: expected 1 speeds \(one per wheel"):

@@ -23,7 +23,7 @@ Wheel checked_wheel(const Wheel& wheel, const std::string& prefix) {
     throw_invalid(prefix + "t_end", "a time after t_start = " + format_value(wheel.t_start) + " s", wheel.t_end);
   }
   Wheel out = wheel;
-  out.axis_B = wheel.axis_B.normalized();
+  out.axis_B = wheel.axis_B.stableNormalized();  // (scaled first: an axis of 1e308 stays an axis)
   return out;
 }
 

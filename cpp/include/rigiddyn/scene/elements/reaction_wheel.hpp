@@ -104,7 +104,7 @@ class ReactionWheelTerm {
     } catch (const std::invalid_argument& e) {
       throw std::invalid_argument(name + "." + e.what());
     }
-    a_B_ = spec.axis_B.normalized();
+    a_B_ = spec.axis_B.stableNormalized();  // (scaled first: an axis of 1e308 stays an axis)
     set_time(t_start_);
   }
 
