@@ -1,0 +1,135 @@
+"""The API reference a SciPy user reads: every public name's docstring in numpydoc form, its examples run.
+
+Each public name (``rigiddyn.__all__``) and each public member of a public class is collected with its
+docstring. Two checks:
+
+- every ``>>>`` example runs as a doctest and prints what it shows (``np`` and ``rd`` are imported;
+  ``ELLIPSIS`` and ``NORMALIZE_WHITESPACE`` are on, so an example may elide digits beyond its point);
+- every public callable has the numpydoc sections a reader looks for: ``Parameters`` (when it takes
+  any), ``Returns`` (a function) and ``Examples``; the names not written that way yet are listed in
+  ``NOT_YET_NUMPYDOC`` (the list only shrinks: a name written in numpydoc form must leave it, which the
+  last test checks).
+"""
+
+from __future__ import annotations
+
+import doctest
+import inspect
+import re
+from typing import Iterator
+
+import numpy as np
+import pytest
+
+import rigiddyn as rd
+
+OPTIONS = doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE
+
+# The public names whose docstrings are not yet in numpydoc form (Parameters / Returns / Examples).
+NOT_YET_NUMPYDOC: frozenset[str] = frozenset({
+    'AppliedLoad', 'BatchResult', 'BatchSceneResult', 'BodyAcceleration', 'ComWrench', 'CompiledScene',
+    'CompoundPendulumSolution', 'ConstantThrustSolution', 'DensityIntegral', 'Drag', 'ElementField', 'Force',
+    'FrameKinematics', 'FrameMotion', 'FrameTree', 'GravityGradient', 'InertiaCheck', 'InertiaReport',
+    'KineticEnergy', 'LagrangeTopSolution', 'MagneticDipole', 'MassFlow', 'Motion', 'MutualGravity', 'Particle',
+    'ParticleState', 'PivotedAcceleration', 'PivotedBody', 'PivotedBodyState', 'PivotedPlanarAcceleration',
+    'PivotedPlanarBody', 'PivotedPlanarBodyState', 'PivotedPlanarTorque', 'PivotedTorque', 'PlanarAcceleration',
+    'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointMassGravity', 'PointVelocity',
+    'PrincipalAxes', 'Problem', 'PythonForce', 'ReactionWheel', 'RigidBody', 'RigidBodyState',
+    'RotatingFrameFreeParticle', 'Scene', 'SceneFrame', 'SceneResult', 'ScheduledLoads', 'Screw', 'SimulationResult',
+    'SpatialInertia', 'SpringDamper', 'Thrust', 'TorqueFreeSolution', 'TradeoffResult', 'Transform',
+    'UniformGravity', 'WeldedMesh', 'align_vectors', 'angular_distance', 'angular_momentum',
+    'angular_velocity_from_quat_rate', 'apply_impulse', 'axis_angle_to_quat', 'box_shell', 'compose_kinematics',
+    'composite', 'davenport_to_quat', 'default_thread_count', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf',
+    'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'from_point_masses',
+    'from_scipy', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_report', 'integrate_density_over_box',
+    'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kinetic_energy', 'linear_momentum',
+    'load_problem', 'load_scene', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mesh_shell',
+    'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation',
+    'nearest_valid_inertia', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power',
+    'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize',
+    'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix',
+    'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh',
+    'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'simulate', 'simulate_batch',
+    'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid',
+    'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'step', 'symmetry_planes', 'thin_disk',
+    'thin_plate', 'thin_rod', 'to_scipy', 'tradeoff', 'transform_compose', 'transform_points',
+    'transport_derivative', 'twist_to_screw', 'vee', 'weld_vertices',
+})
+
+
+def public_objects() -> Iterator[tuple[str, object]]:
+    """(qualified name, object) of every public name and every public member of a public class."""
+    for name in sorted(rd.__all__):
+        obj = getattr(rd, name)
+        yield name, obj
+        if inspect.isclass(obj):
+            for member, value in sorted(vars(obj).items()):
+                if not member.startswith("_"):
+                    yield f"{name}.{member}", value
+
+
+def docstring_of(obj: object) -> str:
+    """The docstring as the reader sees it (a property's from its getter)."""
+    if isinstance(obj, property):
+        return obj.__doc__ or (obj.fget.__doc__ if obj.fget else "") or ""
+    return getattr(obj, "__doc__", None) or ""
+
+
+def examples_of(name: str, obj: object) -> list[doctest.DocTest]:
+    text = docstring_of(obj)
+    if ">>>" not in text:
+        return []
+    parser = doctest.DocTestParser()
+    return [parser.get_doctest(text, {"np": np, "rd": rd}, name, None, 0)]
+
+
+ALL = list(public_objects())
+WITH_EXAMPLES = [(name, obj) for name, obj in ALL if ">>>" in docstring_of(obj)]
+
+
+@pytest.mark.parametrize(("name", "obj"), WITH_EXAMPLES, ids=[name for name, _ in WITH_EXAMPLES])
+def test_examples_run_and_print_what_they_show(name: str, obj: object) -> None:
+    runner = doctest.DocTestRunner(optionflags=OPTIONS)
+    for test in examples_of(name, obj):
+        runner.run(test)
+    result = runner.summarize(verbose=False)
+    assert result.failed == 0, f"{name}: {result.failed} of {result.attempted} examples failed (output above)"
+
+
+def _section(text: str, title: str) -> bool:
+    return re.search(rf"^\s*{title}\n\s*-{{{len(title)}}}\s*$", text, flags=re.MULTILINE) is not None
+
+
+def missing_sections(name: str, obj: object) -> list[str]:
+    """The numpydoc sections a public callable's docstring lacks."""
+    text = docstring_of(obj)
+    missing = [title for title in ("Examples",) if not _section(text, title)]
+    if inspect.isclass(obj) and issubclass(obj, Warning):
+        return []  # a warning category: its text says when it is raised
+    takes_arguments = True
+    try:
+        signature = inspect.signature(obj)  # type: ignore[arg-type]
+        takes_arguments = any(p.name not in ("self", "cls") for p in signature.parameters.values())
+    except (TypeError, ValueError):
+        pass
+    if takes_arguments and not _section(text, "Parameters"):
+        missing.append("Parameters")
+    if not inspect.isclass(obj) and not _section(text, "Returns") and not _section(text, "Yields"):
+        missing.append("Returns")
+    return missing
+
+
+TOP_LEVEL_CALLABLES = [(name, getattr(rd, name)) for name in sorted(rd.__all__)
+                       if callable(getattr(rd, name)) and name not in NOT_YET_NUMPYDOC]
+
+
+@pytest.mark.parametrize(("name", "obj"), TOP_LEVEL_CALLABLES, ids=[name for name, _ in TOP_LEVEL_CALLABLES])
+def test_public_callables_have_numpydoc_sections(name: str, obj: object) -> None:
+    assert not missing_sections(name, obj), f"{name}: no {', '.join(missing_sections(name, obj))} section"
+
+
+def test_the_list_of_names_not_yet_written_only_shrinks() -> None:
+    done = sorted(name for name in NOT_YET_NUMPYDOC if not missing_sections(name, getattr(rd, name, None)))
+    unknown = sorted(name for name in NOT_YET_NUMPYDOC if not hasattr(rd, name))
+    assert not done, f"in numpydoc form now: remove from NOT_YET_NUMPYDOC: {done}"
+    assert not unknown, f"no longer public names: remove from NOT_YET_NUMPYDOC: {unknown}"
