@@ -42,6 +42,8 @@ extensions = [
     "sphinx.ext.autodoc",
     "sphinx.ext.autosummary",
     "sphinx.ext.mathjax",
+    # the docstrings' numpydoc sections (Parameters, Returns, Raises, See Also, Examples) rendered as fields
+    "sphinx.ext.napoleon",
     # MathJax 3 shipped inside the built site (docs/_build/html/_static/mathjax) instead of loaded from
     # its CDN: the pages render their equations offline, and the browser check sees them typeset
     "sphinx-mathjax-offline",
@@ -69,6 +71,8 @@ autoclass_content = "class"          # the class docstring; pybind11's __init__ 
 autodoc_class_signature = "mixed"
 autodoc_member_order = "bysource"
 autodoc_typehints = "signature"
+napoleon_google_docstring = False
+napoleon_numpy_docstring = True
 autodoc_inherit_docstrings = False   # a pybind11 class inherits object's generic docstrings otherwise
 
 

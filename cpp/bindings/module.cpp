@@ -22,4 +22,5 @@ PYBIND11_MODULE(_core, m) {
   rigiddyn::bindings::bind_batch(m);
   rigiddyn::bindings::bind_exact(m);
   rigiddyn::bindings::bind_exact_dynamics(m);
+  rigiddyn::bindings::add_text_signatures(m);  // last: every function and class registered
 }

@@ -84,6 +84,9 @@ class DispersionWarning(UserWarning):
     """Some draws were invalid (mass <= 0, an unrealizable inertia) and were redrawn: the dispersion
     sampled is the stated one truncated to valid values."""
 
+    def __init__(self, *args: object) -> None:  # its signature for inspect (a built-in base has none)
+        super().__init__(*args)
+
 
 def _float_array(value: Any, name: str) -> np.ndarray:
     """`value` as a finite float array, TypeError/ValueError naming `name` otherwise."""

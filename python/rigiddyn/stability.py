@@ -110,6 +110,9 @@ ISOTROPY_TOLERANCE = 64 * np.finfo(float).eps
 class StabilityWarning(RuntimeWarning):
     """dt is beyond a method's linear stability limit for the spin at hand."""
 
+    def __init__(self, *args: object) -> None:  # its signature for inspect (a built-in base has none)
+        super().__init__(*args)
+
 
 def _skew(v: np.ndarray) -> np.ndarray:
     return np.array([[0.0, -v[2], v[1]], [v[2], 0.0, -v[0]], [-v[1], v[0], 0.0]])

@@ -1,8 +1,11 @@
-"""The API reference a SciPy user reads: every public name's docstring in numpydoc form, its examples run.
+"""The API reference a SciPy user reads: every public name's signature and docstring in numpydoc form, its
+examples run.
 
 Each public name (``rigiddyn.__all__``) and each public member of a public class is collected with its
-docstring. Two checks:
+docstring. Three checks:
 
+- ``inspect.signature`` works on every public callable (the compiled ones carry a runtime signature, and each
+  class its constructor's), so ``help()``, IDEs and Sphinx show the parameters;
 - every ``>>>`` example runs as a doctest and prints what it shows (``np`` and ``rd`` are imported;
   ``ELLIPSIS`` and ``NORMALIZE_WHITESPACE`` are on, so an example may elide digits beyond its point);
 - every public callable has the numpydoc sections a reader looks for: ``Parameters`` (when it takes
@@ -69,7 +72,9 @@ def public_objects() -> Iterator[tuple[str, object]]:
 
 
 def docstring_of(obj: object) -> str:
-    """The docstring as the reader sees it (a property's from its getter)."""
+    """The docstring as the reader sees it (a property's from its getter, a static method's from its function)."""
+    if isinstance(obj, (staticmethod, classmethod)):
+        obj = obj.__func__
     if isinstance(obj, property):
         return obj.__doc__ or (obj.fget.__doc__ if obj.fget else "") or ""
     return getattr(obj, "__doc__", None) or ""
@@ -94,6 +99,40 @@ def test_examples_run_and_print_what_they_show(name: str, obj: object) -> None:
         runner.run(test)
     result = runner.summarize(verbose=False)
     assert result.failed == 0, f"{name}: {result.failed} of {result.attempted} examples failed (output above)"
+
+
+# The public classes without a constructor: results and reports that the core makes (calling one raises TypeError).
+MADE_BY_THE_CORE = {
+    "BatchResult": "simulate_batch",
+    "BatchSceneResult": "simulate_batch on a Scene",
+    "ElementField": "the field table of each element class (SpringDamper.fields)",
+    "InertiaReport": "inertia_report",
+    "SceneFrame": "its static constructors (SceneFrame.rotating, ...)",
+    "SceneResult": "simulate on a Scene",
+    "SimulationResult": "simulate on one body",
+    "WeldedMesh": "weld_vertices",
+}
+CALLABLES = [(name, getattr(rd, name)) for name in sorted(rd.__all__) if callable(getattr(rd, name))]
+
+
+@pytest.mark.parametrize(("name", "obj"), CALLABLES, ids=[name for name, _ in CALLABLES])
+def test_every_public_callable_has_a_signature(name: str, obj: object) -> None:
+    if name in MADE_BY_THE_CORE:
+        with pytest.raises(TypeError):
+            obj()  # type: ignore[operator]
+        return
+    parameters = inspect.signature(obj).parameters  # type: ignore[arg-type]
+    assert all(p.name.isidentifier() for p in parameters.values()), f"{name}: {list(parameters)}"
+
+
+def test_signatures_name_the_parameters_and_defaults() -> None:
+    """The runtime signatures are pybind11's own record of each function: names, defaults, keyword-only marks."""
+    assert str(inspect.signature(rd.quat_multiply)) == "(q1, q2, scalar_first=False)"
+    assert str(inspect.signature(rd.RigidBody)) == "(mass, inertia_com=None, check=None)"
+    simulate = inspect.signature(rd.simulate).parameters
+    assert simulate["duration"].kind is inspect.Parameter.KEYWORD_ONLY and simulate["duration"].default is None
+    assert simulate["method"].default is None and simulate["record_every"].default == 1
+    assert str(inspect.signature(rd.StabilityWarning)).startswith("(*args")
 
 
 def _section(text: str, title: str) -> bool:
