@@ -61,14 +61,58 @@ def solid_mesh(
     density: Optional[float] = None,
     weld_tolerance: Optional[float] = None,
 ) -> _core.SpatialInertia:
-    """Solid bounded by a closed, outward-oriented triangle mesh (exact, divergence theorem).
+    """Mass properties of the solid bounded by a closed, outward-oriented triangle mesh.
 
-    Give exactly one of ``mass`` [kg] or ``density`` [kg/m^3]; the result is in the frame of the
-    vertices. Vertices closer than ``weld_tolerance`` [m] are welded first (None: 1e-8 times the
-    bounding-box diagonal; 0: off), faces left with a repeated vertex dropped, and a
-    ``MeshWeldWarning`` gives both counts (``weld_vertices`` gives them without a warning). Raises
-    ValueError naming the first open or inconsistently oriented edge (input indices), or an inward
-    orientation (negative volume).
+    Exact for the polyhedron (divergence theorem: each face spans a signed tetrahedron whose moments
+    sum to the solid's). When the weld changed anything, a ``MeshWeldWarning`` gives the numbers of
+    welded vertices and dropped faces (``weld_vertices`` gives them without a warning).
+
+    Parameters
+    ----------
+    mesh_or_vertices : array_like, shape (n, 3), or mesh object
+        Vertex positions [m] in any frame A, or an object with ``vertices`` and ``faces`` attributes
+        (a ``trimesh.Trimesh``; then `faces` is None).
+    faces : array_like of int, shape (f, 3), optional
+        Vertex indices of each triangle, counter-clockwise seen from outside.
+    mass : float, optional
+        Total mass [kg], finite and > 0. Give exactly one of `mass` and `density`.
+    density : float, optional
+        Volume density [kg/m^3], finite and > 0.
+    weld_tolerance : float or None, default None
+        Vertices closer than this [m] are welded first (None: 1e-8 times the bounding-box diagonal;
+        0: off), as trimesh does on load; faces left with a repeated vertex are dropped.
+
+    Returns
+    -------
+    SpatialInertia
+        Mass [kg], centre of mass [m] and inertia_com [kg m^2] about it, expressed in A.
+
+    Raises
+    ------
+    ValueError
+        The first open or inconsistently oriented edge (input indices), an inward orientation
+        (negative volume), a zero volume, bad vertices or indices (the message names the argument);
+        not exactly one of `mass` and `density`.
+    TypeError
+        `mesh_or_vertices` neither arrays nor a mesh object, or `faces` missing for arrays.
+
+    Warns
+    -----
+    MeshWeldWarning
+        When welding merged vertices or dropped faces.
+
+    See Also
+    --------
+    mesh_shell, weld_vertices, mesh_volume, require_closed_oriented_mesh, integrate_density_over_mesh
+
+    Examples
+    --------
+    The corner tetrahedron as a mesh gives the solid tetrahedron:
+
+    >>> v = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]
+    >>> faces = [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]]
+    >>> rd.solid_mesh(v, faces, density=6.0).is_approx(rd.solid_tetrahedron(v, density=6.0))
+    True
     """
     return _call_core(_core.solid_mesh, mesh_or_vertices, faces, mass, density, weld_tolerance)
 
@@ -81,6 +125,53 @@ def mesh_shell(
     density: Optional[float] = None,
     weld_tolerance: Optional[float] = None,
 ) -> _core.SpatialInertia:
-    """Thin shell made of the mesh's faces (need not be closed); ``density`` in [kg/m^2]; welded
-    as in ``solid_mesh`` (``weld_tolerance`` [m])."""
+    """Mass properties of a thin shell made of a mesh's triangles (need not be closed).
+
+    Each triangle is a uniform thin sheet; orientation does not matter. Welded as in ``solid_mesh``
+    (with its ``MeshWeldWarning``).
+
+    Parameters
+    ----------
+    mesh_or_vertices : array_like, shape (n, 3), or mesh object
+        Vertex positions [m] in any frame A, or an object with ``vertices`` and ``faces`` attributes
+        (a ``trimesh.Trimesh``; then `faces` is None).
+    faces : array_like of int, shape (f, 3), optional
+        Vertex indices of each triangle (any orientation).
+    mass : float, optional
+        Total mass [kg], finite and > 0. Give exactly one of `mass` and `density`.
+    density : float, optional
+        Area density [kg/m^2], finite and > 0.
+    weld_tolerance : float or None, default None
+        Vertices closer than this [m] are welded first (None: 1e-8 times the bounding-box diagonal;
+        0: off), as trimesh does on load; faces left with a repeated vertex are dropped.
+
+    Returns
+    -------
+    SpatialInertia
+        Mass [kg], centre of mass [m] and inertia_com [kg m^2] about it, expressed in A.
+
+    Raises
+    ------
+    ValueError
+        A zero total area, bad vertices or indices (the message names the argument); not exactly one
+        of `mass` and `density`.
+    TypeError
+        `mesh_or_vertices` neither arrays nor a mesh object, or `faces` missing for arrays.
+
+    Warns
+    -----
+    MeshWeldWarning
+        When welding merged vertices or dropped faces.
+
+    See Also
+    --------
+    solid_mesh, box_shell, spherical_shell, weld_vertices
+
+    Examples
+    --------
+    A single triangle has its centre of mass at its centroid:
+
+    >>> rd.mesh_shell([[0, 0, 0], [3, 0, 0], [0, 3, 0]], [[0, 1, 2]], mass=1.0).com
+    array([1., 1., 0.])
+    """
     return _call_core(_core.mesh_shell, mesh_or_vertices, faces, mass, density, weld_tolerance)
