@@ -166,6 +166,67 @@ py::object scalar_or_array(const Array& a, bool stacked) {
   return py::float_(a.data()[0]);
 }
 
+// numpydoc pieces shared by the docstrings below (Parameters, Raises and Warns entries)
+const char* const q_param =
+    "q : array_like, shape (4,) or (n, 4)\n"
+    "    Unit quaternions (x, y, z, w), or (w, x, y, z) if `scalar_first`; norm within 1e-6 of 1 (then\n"
+    "    normalised).\n";
+const char* const scalar_first_param =
+    "scalar_first : bool, default False\n"
+    "    Read and write quaternions scalar first, (w, x, y, z), as MuJoCo does.\n";
+const char* const q_raises =
+    "ValueError\n"
+    "    A quaternion with a non-finite entry or a norm farther than 1e-6 from 1 (the message names `q`\n"
+    "    and, in a stack, the item), or a shape other than (4,) or (n, 4).\n"
+    "TypeError\n"
+    "    `q` not an array of real numbers, or `scalar_first` not a bool.\n";
+const char* const R_param =
+    "R : array_like, shape (3, 3) or (n, 3, 3)\n"
+    "    Rotation matrices up to rounding: det > 0 and singular values within 0.05 of 1. One not\n"
+    "    orthonormal to SciPy's test is projected onto the nearest rotation (`nearest_rotation`), as\n"
+    "    SciPy's `Rotation.from_matrix` does.\n";
+const char* const R_raises =
+    "ValueError\n"
+    "    A matrix with det <= 0 (a reflection or a singular matrix), a singular value farther than 0.05\n"
+    "    from 1 or a non-finite entry (the message names `R` and, in a stack, the item), or a shape other\n"
+    "    than (3, 3) or (n, 3, 3).\n";
+const char* const degrees_param =
+    "degrees : bool, default False, keyword-only\n"
+    "    Angles in degrees instead of radians (converted as SciPy does: x * (pi/180) in,\n"
+    "    x * (180/pi) out).\n";
+const char* const euler_seq_param =
+    "seq : str\n"
+    "    The axis sequence, 3 letters as SciPy's: lowercase 'xyz' = extrinsic (rotations about the\n"
+    "    fixed axes of W), uppercase 'XYZ' = intrinsic (about the moving axes); the 12 sequences xyz xzy\n"
+    "    yxz yzx zxy zyx xyx xzx yxy yzy zxz zyz in either case.\n";
+const char* const euler_raises =
+    "ValueError\n"
+    "    `seq` not one of the 24 sequences.\n"
+    "TypeError\n"
+    "    `seq` not a str.\n";
+const char* const gimbal_warns =
+    "Warns\n"
+    "-----\n"
+    "UserWarning\n"
+    "    'Gimbal lock detected. ...' (once per call) wherever SciPy warns: the middle angle of some item\n"
+    "    within 1e-7 rad of its singularity (Euler angles: 0 or pi in proper sequences, -pi/2 or pi/2\n"
+    "    in Tait-Bryan ones; Davenport angles: the ends of its range). Within round-off of it (1e-13 rad)\n"
+    "    only the sum or difference of the first and third angles is defined: the third is set to 0 and\n"
+    "    the first carries it, with SciPy's message. Between 1e-13 and 1e-7 rad the angles are the exact ones\n"
+    "    and the message says so (SciPy sets the third to 0 there too, which moves the rotation by up to\n"
+    "    2e-7 rad): the angles reproduce the rotation to round-off everywhere.\n";
+const char* const davenport_params =
+    "axes : array_like, shape (3, 3)\n"
+    "    The rotation axes n1, n2, n3 as rows (any non-zero length, normalised), n2 orthogonal to n1 and\n"
+    "    to n3 (|cos| <= 1e-7, as SciPy). Coordinate axes give Euler angles.\n"
+    "order : str\n"
+    "    'e' or 'extrinsic' (fixed axes, R = R_n3(a3) R_n2(a2) R_n1(a1)) or 'i' or 'intrinsic' (moving\n"
+    "    axes, R = R_n1(a1) R_n2(a2) R_n3(a3)), as SciPy's `Rotation.from_davenport` / `as_davenport`.\n";
+const char* const davenport_raises =
+    "ValueError\n"
+    "    `axes` not of shape (3, 3), with a zero row or with n2 not orthogonal to n1 and n3 (the message\n"
+    "    names `axes`); `order` not one of 'e', 'extrinsic', 'i', 'intrinsic'.\n";
+
 }  // namespace
 
 void bind_so3(py::module_& m) {
@@ -180,9 +241,40 @@ void bind_so3(py::module_& m) {
         });
       },
       "q"_a, "scalar_first"_a = false,
-      "Rotation matrix R(q) of unit quaternions.\n\n"
-      "q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first; unit norm within 1e-6.\n"
-      "Returns R: (3, 3) or (n, 3, 3), active (R v rotates v; q_WB gives R_WB).");
+      (std::string() +
+       "Rotation matrix of unit quaternions.\n"
+       "\n"
+       "R(q) is the active rotation: R v rotates v, and the attitude q_WB gives R_WB (B coordinates to W\n"
+       "coordinates). SciPy: ``Rotation.from_quat(q).as_matrix()``.\n"
+       "\n"
+       "Parameters\n"
+       "----------\n" +
+       q_param +
+       scalar_first_param +
+       "\n"
+       "Returns\n"
+       "-------\n"
+       "ndarray, shape (3, 3) or (n, 3, 3)\n"
+       "    R(q), orthonormal with det +1.\n"
+       "\n"
+       "Raises\n"
+       "------\n" +
+       q_raises +
+       "\n"
+       "See Also\n"
+       "--------\n"
+       "matrix_to_quat, quat_rotate, rot_x\n"
+       "\n"
+       "Examples\n"
+       "--------\n"
+       "A quarter turn about z takes x to y:\n"
+       "\n"
+       ">>> q = rd.rotvec_to_quat([0.0, 0.0, np.pi / 2])\n"
+       ">>> rd.quat_to_matrix(q).round(12)\n"
+       "array([[ 0., -1.,  0.],\n"
+       "       [ 1.,  0.,  0.],\n"
+       "       [ 0.,  0.,  1.]])")
+          .c_str());
 
   m.def(
       "matrix_to_quat",
@@ -194,10 +286,40 @@ void bind_so3(py::module_& m) {
         });
       },
       "R"_a, "scalar_first"_a = false,
-      "Unit quaternion of rotation matrices, canonical sign w >= 0 (Shepperd's method, accurate at all angles).\n\n"
-      "R: (3, 3) or (n, 3, 3), a rotation matrix up to rounding (det > 0, singular values within 0.05 of 1;\n"
-      "projected onto the nearest rotation as SciPy's Rotation.from_matrix).\n"
-      "Returns q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first.");
+      (std::string() +
+       "Unit quaternion of rotation matrices, canonical sign w >= 0.\n"
+       "\n"
+       "Shepperd's method in Markley's form (Markley 2008, \"Unit quaternion from rotation matrix\") with\n"
+       "SciPy's choice of branch (the largest of R_00, R_11, R_22 and tr R): accurate at every angle,\n"
+       "including pi. SciPy: ``Rotation.from_matrix(R).as_quat(canonical=True)``.\n"
+       "\n"
+       "Parameters\n"
+       "----------\n" +
+       R_param +
+       scalar_first_param +
+       "\n"
+       "Returns\n"
+       "-------\n"
+       "ndarray, shape (4,) or (n, 4)\n"
+       "    q with R(q) = R and w >= 0, (x, y, z, w) or (w, x, y, z) if `scalar_first`.\n"
+       "\n"
+       "Raises\n"
+       "------\n" +
+       R_raises +
+       "\n"
+       "See Also\n"
+       "--------\n"
+       "quat_to_matrix, nearest_rotation, quat_canonical\n"
+       "\n"
+       "Examples\n"
+       "--------\n"
+       "A half turn about x:\n"
+       "\n"
+       ">>> rd.matrix_to_quat(np.diag([1.0, -1.0, -1.0]))\n"
+       "array([1., 0., 0., 0.])\n"
+       ">>> rd.matrix_to_quat(np.eye(3), scalar_first=True)\n"
+       "array([1., 0., 0., 0.])")
+          .c_str());
 
   // ------------------------------------------------------------ exp / log
   m.def(
@@ -210,9 +332,40 @@ void bind_so3(py::module_& m) {
         });
       },
       "rotvec"_a, "scalar_first"_a = false, py::kw_only(), "degrees"_a = false,
-      "Exponential map: unit quaternion of rotation vectors rotvec = angle * axis [rad] (any angle; exact near 0).\n\n"
-      "rotvec: (3,) or (n, 3), in degrees if degrees=True. Returns q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first;\n"
-      "w < 0 when the angle exceeds pi (no sign flip).");
+      (std::string() +
+       "Exponential map: unit quaternion of rotation vectors.\n"
+       "\n"
+       "q = (sin(theta/2) u, cos(theta/2)) for rotvec = theta u [rad], u a unit axis; any angle, exact near\n"
+       "0. No sign flip: w < 0 when the angle exceeds pi. SciPy: ``Rotation.from_rotvec(rotvec).as_quat()``.\n"
+       "\n"
+       "Parameters\n"
+       "----------\n"
+       "rotvec : array_like, shape (3,) or (n, 3)\n"
+       "    Rotation vectors angle * axis [rad] (degrees if `degrees`), finite.\n" +
+       scalar_first_param +
+       degrees_param +
+       "\n"
+       "Returns\n"
+       "-------\n"
+       "ndarray, shape (4,) or (n, 4)\n"
+       "    q, (x, y, z, w) or (w, x, y, z) if `scalar_first`.\n"
+       "\n"
+       "Raises\n"
+       "------\n"
+       "ValueError\n"
+       "    A non-finite entry, or a shape other than (3,) or (n, 3) (the message names `rotvec`).\n"
+       "\n"
+       "See Also\n"
+       "--------\n"
+       "quat_to_rotvec, rotvec_to_matrix, axis_angle_to_quat\n"
+       "\n"
+       "Examples\n"
+       "--------\n"
+       ">>> rd.rotvec_to_quat([0.0, 0.0, np.pi]).round(12)\n"
+       "array([0., 0., 1., 0.])\n"
+       ">>> rd.rotvec_to_quat([0.0, 90.0, 0.0], degrees=True)\n"
+       "array([0.        , 0.70710678, 0.        , 0.70710678])")
+          .c_str());
 
   m.def(
       "quat_to_rotvec",
@@ -225,10 +378,42 @@ void bind_so3(py::module_& m) {
         });
       },
       "q"_a, "scalar_first"_a = false, py::kw_only(), "degrees"_a = false,
-      "Logarithm map: rotation vector angle * axis [rad] of unit quaternions, angle in [0, pi].\n\n"
-      "q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first. Returns (3,) or (n, 3),\n"
-      "in degrees (angle in [0, 180]) if degrees=True.\n"
-      "Accurate near angle 0 and near pi (atan2 form).");
+      (std::string() +
+       "Logarithm map: rotation vectors of unit quaternions.\n"
+       "\n"
+       "rotvec = theta u with theta in [0, pi] (q and -q give the same vector), by the atan2 form: accurate\n"
+       "near angle 0 and near pi. SciPy: ``Rotation.from_quat(q).as_rotvec()``.\n"
+       "\n"
+       "Parameters\n"
+       "----------\n" +
+       q_param +
+       scalar_first_param +
+       degrees_param +
+       "\n"
+       "Returns\n"
+       "-------\n"
+       "ndarray, shape (3,) or (n, 3)\n"
+       "    Rotation vectors angle * axis [rad], angle in [0, pi] (degrees, angle in [0, 180], if\n"
+       "    `degrees`).\n"
+       "\n"
+       "Raises\n"
+       "------\n" +
+       q_raises +
+       "\n"
+       "See Also\n"
+       "--------\n"
+       "rotvec_to_quat, quat_to_axis_angle, matrix_to_rotvec\n"
+       "\n"
+       "Examples\n"
+       "--------\n"
+       "The logarithm undoes the exponential for angles up to pi:\n"
+       "\n"
+       ">>> rotvec = np.array([0.3, -1.2, 2.0])\n"
+       ">>> np.allclose(rd.quat_to_rotvec(rd.rotvec_to_quat(rotvec)), rotvec)\n"
+       "True\n"
+       ">>> rd.quat_to_rotvec([0.0, 0.0, -1.0, 0.0], degrees=True).round(9) + 0.0\n"
+       "array([  0.,   0., 180.])")
+          .c_str());
 
   m.def(
       "rotvec_to_matrix",
@@ -238,9 +423,39 @@ void bind_so3(py::module_& m) {
                          [&](const double* in, double* out) { write_matrix(rotvec_to_matrix(unit.to_radians * read_vector(in)), out); });
       },
       "rotvec"_a, py::kw_only(), "degrees"_a = false,
-      "Exponential map into rotation matrices (Rodrigues): rotvec = angle * axis [rad], (3,) or (n, 3)\n"
-      "(in degrees if degrees=True).\n"
-      "Returns R: (3, 3) or (n, 3, 3).");
+      (std::string() +
+       "Exponential map into rotation matrices (Rodrigues' formula).\n"
+       "\n"
+       "R = I + sin(theta) hat(u) + (1 - cos(theta)) hat(u)^2 for rotvec = theta u [rad]. SciPy:\n"
+       "``Rotation.from_rotvec(rotvec).as_matrix()``.\n"
+       "\n"
+       "Parameters\n"
+       "----------\n"
+       "rotvec : array_like, shape (3,) or (n, 3)\n"
+       "    Rotation vectors angle * axis [rad] (degrees if `degrees`), finite.\n" +
+       degrees_param +
+       "\n"
+       "Returns\n"
+       "-------\n"
+       "ndarray, shape (3, 3) or (n, 3, 3)\n"
+       "    R, orthonormal with det +1.\n"
+       "\n"
+       "Raises\n"
+       "------\n"
+       "ValueError\n"
+       "    A non-finite entry, or a shape other than (3,) or (n, 3) (the message names `rotvec`).\n"
+       "\n"
+       "See Also\n"
+       "--------\n"
+       "matrix_to_rotvec, rotvec_to_quat, hat\n"
+       "\n"
+       "Examples\n"
+       "--------\n"
+       ">>> rd.rotvec_to_matrix([0.0, 0.0, 90.0], degrees=True).round(12)\n"
+       "array([[ 0., -1.,  0.],\n"
+       "       [ 1.,  0.,  0.],\n"
+       "       [ 0.,  0.,  1.]])")
+          .c_str());
 
   m.def(
       "matrix_to_rotvec",
@@ -252,11 +467,37 @@ void bind_so3(py::module_& m) {
         });
       },
       "R"_a, py::kw_only(), "degrees"_a = false,
-      "Logarithm map of rotation matrices: rotation vector angle * axis [rad], angle in [0, pi].\n\n"
-      "R: (3, 3) or (n, 3, 3), a rotation matrix up to rounding (det > 0, singular values within 0.05 of 1;\n"
-      "projected onto the nearest rotation as SciPy's Rotation.from_matrix).\n"
-      "Returns (3,) or (n, 3), in degrees if degrees=True.\n"
-      "Accurate near 0 and pi.");
+      (std::string() +
+       "Logarithm map of rotation matrices: rotation vectors angle * axis.\n"
+       "\n"
+       "The angle is in [0, pi]; accurate near 0 and near pi. SciPy:\n"
+       "``Rotation.from_matrix(R).as_rotvec()``.\n"
+       "\n"
+       "Parameters\n"
+       "----------\n" +
+       R_param +
+       degrees_param +
+       "\n"
+       "Returns\n"
+       "-------\n"
+       "ndarray, shape (3,) or (n, 3)\n"
+       "    Rotation vectors [rad] (degrees if `degrees`).\n"
+       "\n"
+       "Raises\n"
+       "------\n" +
+       R_raises +
+       "\n"
+       "See Also\n"
+       "--------\n"
+       "rotvec_to_matrix, quat_to_rotvec\n"
+       "\n"
+       "Examples\n"
+       "--------\n"
+       ">>> rd.matrix_to_rotvec(rd.rot_y(0.5)).round(12)\n"
+       "array([0. , 0.5, 0. ])\n"
+       ">>> rd.matrix_to_rotvec(np.diag([-1.0, 1.0, -1.0]), degrees=True).round(9)\n"
+       "array([  0., 180.,   0.])")
+          .c_str());
 
   // ------------------------------------------------------------ axis-angle
   m.def(
@@ -270,9 +511,46 @@ void bind_so3(py::module_& m) {
                           });
       },
       "axis"_a, "angle"_a, "scalar_first"_a = false, py::kw_only(), "degrees"_a = false,
-      "Unit quaternion of the rotation by angle [rad] about axis (right-hand rule).\n\n"
-      "axis: (3,) or (n, 3), any non-zero length (normalised); angle: float or (n,), in degrees if degrees=True.\n"
-      "Returns q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first.");
+      (std::string() +
+       "Unit quaternion of the rotation by an angle about an axis (right-hand rule).\n"
+       "\n"
+       "q = (sin(angle/2) u, cos(angle/2)), u = axis / |axis|. SciPy:\n"
+       "``Rotation.from_rotvec(angle * u).as_quat()``.\n"
+       "\n"
+       "Parameters\n"
+       "----------\n"
+       "axis : array_like, shape (3,) or (n, 3)\n"
+       "    Rotation axes, any non-zero finite length (normalised, also beyond the range where |axis|^2\n"
+       "    would overflow or underflow).\n"
+       "angle : float or array_like, shape (n,)\n"
+       "    Rotation angles [rad] (degrees if `degrees`); a single axis or angle is used with every item of\n"
+       "    the other.\n" +
+       scalar_first_param +
+       degrees_param +
+       "\n"
+       "Returns\n"
+       "-------\n"
+       "ndarray, shape (4,) or (n, 4)\n"
+       "    q, (x, y, z, w) or (w, x, y, z) if `scalar_first`.\n"
+       "\n"
+       "Raises\n"
+       "------\n"
+       "ValueError\n"
+       "    A zero or non-finite axis, a non-finite angle, a wrong shape, or stacks of different lengths\n"
+       "    (the message names `axis` or `angle`).\n"
+       "\n"
+       "See Also\n"
+       "--------\n"
+       "quat_to_axis_angle, rotvec_to_quat\n"
+       "\n"
+       "Examples\n"
+       "--------\n"
+       ">>> rd.axis_angle_to_quat([0.0, 0.0, 2.0], 180.0, degrees=True).round(12)\n"
+       "array([0., 0., 1., 0.])\n"
+       ">>> rd.axis_angle_to_quat([1.0, 0.0, 0.0], [0.0, np.pi], scalar_first=True).round(12)\n"
+       "array([[1., 0., 0., 0.],\n"
+       "       [0., 1., 0., 0.]])")
+          .c_str());
 
   m.def(
       "quat_to_axis_angle",
@@ -295,23 +573,43 @@ void bind_so3(py::module_& m) {
         return py::make_tuple(axis, scalar_or_array(angle, in.stacked));
       },
       "q"_a, "scalar_first"_a = false, py::kw_only(), "degrees"_a = false,
-      "Axis (unit) and angle [rad] in [0, pi] (degrees in [0, 180] if degrees=True) of unit quaternions;\n"
-      "the identity gives axis (1, 0, 0), angle 0.\n\n"
-      "q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first.\n"
-      "Returns (axis, angle): ((3,), float) or ((n, 3), (n,)).");
+      (std::string() +
+       "Unit axis and angle in [0, pi] of unit quaternions.\n"
+       "\n"
+       "The identity gives axis (1, 0, 0), angle 0. SciPy has no axis-angle pair: ``as_rotvec`` gives their\n"
+       "product, and ``magnitude`` the angle.\n"
+       "\n"
+       "Parameters\n"
+       "----------\n" +
+       q_param +
+       scalar_first_param +
+       degrees_param +
+       "\n"
+       "Returns\n"
+       "-------\n"
+       "axis : ndarray, shape (3,) or (n, 3)\n"
+       "    Unit rotation axes.\n"
+       "angle : float or ndarray, shape (n,)\n"
+       "    Angles [rad] in [0, pi] (degrees in [0, 180] if `degrees`).\n"
+       "\n"
+       "Raises\n"
+       "------\n" +
+       q_raises +
+       "\n"
+       "See Also\n"
+       "--------\n"
+       "axis_angle_to_quat, quat_to_rotvec, angular_distance\n"
+       "\n"
+       "Examples\n"
+       "--------\n"
+       ">>> axis, angle = rd.quat_to_axis_angle([0.0, 0.0, -np.sin(0.25), np.cos(0.25)])\n"
+       ">>> axis.round(12), round(angle, 12)\n"
+       "(array([ 0.,  0., -1.]), 0.5)\n"
+       ">>> rd.quat_to_axis_angle([0.0, 0.0, 0.0, 1.0])\n"
+       "(array([1., 0., 0.]), 0.0)")
+          .c_str());
 
   // ------------------------------------------------------------ Euler angles
-  const char* euler_note =
-      "seq: 3 letters as SciPy, lowercase 'xyz' = extrinsic (fixed axes), uppercase 'XYZ' = intrinsic\n"
-      "(moving axes); the 12 sequences xyz xzy yxz yzx zxy zyx xyx xzx yxy yzy zxz zyz in either case.\n";
-  const std::string gimbal_note =
-      "Gimbal lock: a UserWarning 'Gimbal lock detected. ...' (once per call) wherever SciPy warns: the\n"
-      "middle angle of some item within 1e-7 rad of its singularity (Euler angles: 0 or pi in proper\n"
-      "sequences, -pi/2 or pi/2 in Tait-Bryan ones; Davenport angles: the ends of its range). Within\n"
-      "round-off of it (1e-13 rad) only the sum or difference of the first and third angles is defined:\n"
-      "the third is set to 0 and the first carries it, with SciPy's message. Between 1e-13 and 1e-7 rad\n"
-      "the angles are the exact ones and the message says so (SciPy sets the third to 0 there too, which\n"
-      "moves the rotation by up to 2e-7 rad): the angles reproduce the rotation to round-off everywhere.\n";
   m.def(
       "euler_to_quat",
       [](py::handle seq, py::handle angles, py::handle scalar_first_arg, py::handle degrees) {
@@ -323,9 +621,43 @@ void bind_so3(py::module_& m) {
         });
       },
       "seq"_a, "angles"_a, "scalar_first"_a = false, py::kw_only(), "degrees"_a = false,
-      (std::string("Unit quaternion of Euler angles.\n\n") + euler_note +
-       "angles: (3,) or (n, 3) [rad] (degrees if degrees=True), in the order of seq.\n"
-       "Returns q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first.")
+      (std::string() +
+       "Unit quaternion of Euler angles.\n"
+       "\n"
+       "SciPy: ``Rotation.from_euler(seq, angles).as_quat()``.\n"
+       "\n"
+       "Parameters\n"
+       "----------\n" +
+       euler_seq_param +
+       "angles : array_like, shape (3,) or (n, 3)\n"
+       "    Angles [rad] (degrees if `degrees`), in the order of `seq`.\n" +
+       scalar_first_param +
+       degrees_param +
+       "\n"
+       "Returns\n"
+       "-------\n"
+       "ndarray, shape (4,) or (n, 4)\n"
+       "    q, (x, y, z, w) or (w, x, y, z) if `scalar_first`.\n"
+       "\n"
+       "Raises\n"
+       "------\n" +
+       euler_raises +
+       "ValueError\n"
+       "    A non-finite angle or a wrong shape (the message names `angles`).\n"
+       "\n"
+       "See Also\n"
+       "--------\n"
+       "quat_to_euler, euler_to_matrix, davenport_to_quat\n"
+       "\n"
+       "Examples\n"
+       "--------\n"
+       "Yaw, pitch and roll (intrinsic z-y'-x''); a yaw alone is a turn about z:\n"
+       "\n"
+       ">>> rd.euler_to_quat(\"ZYX\", [90.0, 0.0, 0.0], degrees=True)\n"
+       "array([0.        , 0.        , 0.70710678, 0.70710678])\n"
+       ">>> q = rd.euler_to_quat(\"ZYX\", [0.1, 0.2, 0.3])\n"
+       ">>> np.allclose(rd.quat_to_matrix(q), rd.rot_z(0.1) @ rd.rot_y(0.2) @ rd.rot_x(0.3))\n"
+       "True")
           .c_str());
 
   m.def(
@@ -345,9 +677,44 @@ void bind_so3(py::module_& m) {
         return angles;
       },
       "seq"_a, "q"_a, "scalar_first"_a = false, py::kw_only(), "degrees"_a = false,
-      (std::string("Euler angles [rad] of unit quaternions (Bernardes & Viollet 2022).\n\n") + euler_note +
-       "q: (4,) or (n, 4). Returns (3,) or (n, 3) [rad] (degrees if degrees=True): first and third in\n"
-       "[-pi, pi], second in [0, pi] (proper) or [-pi/2, pi/2] (Tait-Bryan).\n" + gimbal_note)
+      (std::string() +
+       "Euler angles of unit quaternions.\n"
+       "\n"
+       "By the atan2-only method of Bernardes & Viollet (\"Quaternion to Euler angles conversion: a direct,\n"
+       "general and computationally efficient method\"), accurate at all angles. SciPy:\n"
+       "``Rotation.from_quat(q).as_euler(seq)``.\n"
+       "\n"
+       "Parameters\n"
+       "----------\n" +
+       euler_seq_param +
+       q_param +
+       scalar_first_param +
+       degrees_param +
+       "\n"
+       "Returns\n"
+       "-------\n"
+       "ndarray, shape (3,) or (n, 3)\n"
+       "    Angles [rad] (degrees if `degrees`) in the order of `seq`: first and third in [-pi, pi], second\n"
+       "    in [0, pi] (proper Euler sequences) or [-pi/2, pi/2] (Tait-Bryan).\n"
+       "\n"
+       "Raises\n"
+       "------\n" +
+       euler_raises +
+       q_raises +
+       "\n" +
+       gimbal_warns +
+       "\n"
+       "See Also\n"
+       "--------\n"
+       "euler_to_quat, matrix_to_euler, quat_to_davenport\n"
+       "\n"
+       "Examples\n"
+       "--------\n"
+       ">>> q = rd.euler_to_quat(\"ZYX\", [0.1, 0.2, 0.3])\n"
+       ">>> rd.quat_to_euler(\"ZYX\", q).round(12)\n"
+       "array([0.1, 0.2, 0.3])\n"
+       ">>> rd.quat_to_euler(\"zxz\", rd.rotvec_to_quat([90.0, 0.0, 0.0], degrees=True), degrees=True)\n"
+       "array([ 0., 90.,  0.])")
           .c_str());
 
   m.def(
@@ -359,8 +726,39 @@ void bind_so3(py::module_& m) {
                          [&](const double* in, double* out) { write_matrix(euler_to_matrix(s, unit.to_radians * read_vector(in)), out); });
       },
       "seq"_a, "angles"_a, py::kw_only(), "degrees"_a = false,
-      (std::string("Rotation matrix of Euler angles.\n\n") + euler_note +
-       "angles: (3,) or (n, 3) [rad] (degrees if degrees=True). Returns R: (3, 3) or (n, 3, 3).")
+      (std::string() +
+       "Rotation matrix of Euler angles.\n"
+       "\n"
+       "Extrinsic 'xyz' is R = R_z(a3) R_y(a2) R_x(a1), intrinsic 'XYZ' is R = R_x(a1) R_y(a2) R_z(a3).\n"
+       "SciPy: ``Rotation.from_euler(seq, angles).as_matrix()``.\n"
+       "\n"
+       "Parameters\n"
+       "----------\n" +
+       euler_seq_param +
+       "angles : array_like, shape (3,) or (n, 3)\n"
+       "    Angles [rad] (degrees if `degrees`), in the order of `seq`.\n" +
+       degrees_param +
+       "\n"
+       "Returns\n"
+       "-------\n"
+       "ndarray, shape (3, 3) or (n, 3, 3)\n"
+       "    R, orthonormal with det +1.\n"
+       "\n"
+       "Raises\n"
+       "------\n" +
+       euler_raises +
+       "ValueError\n"
+       "    A non-finite angle or a wrong shape (the message names `angles`).\n"
+       "\n"
+       "See Also\n"
+       "--------\n"
+       "matrix_to_euler, euler_to_quat, rot_x\n"
+       "\n"
+       "Examples\n"
+       "--------\n"
+       ">>> R = rd.euler_to_matrix(\"xyz\", [0.1, 0.2, 0.3])\n"
+       ">>> np.allclose(R, rd.rot_z(0.3) @ rd.rot_y(0.2) @ rd.rot_x(0.1))\n"
+       "True")
           .c_str());
 
   m.def(
@@ -379,18 +777,42 @@ void bind_so3(py::module_& m) {
         return angles;
       },
       "seq"_a, "R"_a, py::kw_only(), "degrees"_a = false,
-      (std::string("Euler angles [rad] of rotation matrices (ranges as quat_to_euler; degrees if degrees=True).\n\n") +
-       euler_note + "R: (3, 3) or (n, 3, 3), a rotation matrix up to rounding (det > 0, singular values within 0.05 of 1;\n"
-       "projected onto the nearest rotation as SciPy's Rotation.from_matrix).\n"
-       "Returns (3,) or (n, 3).\n" + gimbal_note)
+      (std::string() +
+       "Euler angles of rotation matrices.\n"
+       "\n"
+       "Ranges and method as `quat_to_euler`. SciPy: ``Rotation.from_matrix(R).as_euler(seq)``.\n"
+       "\n"
+       "Parameters\n"
+       "----------\n" +
+       euler_seq_param +
+       R_param +
+       degrees_param +
+       "\n"
+       "Returns\n"
+       "-------\n"
+       "ndarray, shape (3,) or (n, 3)\n"
+       "    Angles [rad] (degrees if `degrees`) in the order of `seq`: first and third in [-pi, pi], second\n"
+       "    in [0, pi] (proper Euler sequences) or [-pi/2, pi/2] (Tait-Bryan).\n"
+       "\n"
+       "Raises\n"
+       "------\n" +
+       euler_raises +
+       R_raises +
+       "\n" +
+       gimbal_warns +
+       "\n"
+       "See Also\n"
+       "--------\n"
+       "euler_to_matrix, quat_to_euler\n"
+       "\n"
+       "Examples\n"
+       "--------\n"
+       ">>> R = rd.euler_to_matrix(\"ZXZ\", [0.4, 1.0, -0.7])\n"
+       ">>> rd.matrix_to_euler(\"ZXZ\", R).round(12)\n"
+       "array([ 0.4,  1. , -0.7])")
           .c_str());
 
   // ------------------------------------------------------------ Davenport angles
-  const std::string davenport_note =
-      "axes: (3, 3), the rotation axes n1, n2, n3 as rows (any non-zero length, normalised), n2\n"
-      "orthogonal to n1 and to n3 (|cos| <= 1e-7, as SciPy); order: 'e'/'extrinsic' (fixed axes,\n"
-      "R = R_n3(a3) R_n2(a2) R_n1(a1)) or 'i'/'intrinsic' (moving axes, R = R_n1(a1) R_n2(a2) R_n3(a3)),\n"
-      "as SciPy's Rotation.from_davenport / as_davenport. Coordinate axes give Euler angles.\n";
   m.def(
       "davenport_to_quat",
       [](py::handle axes, py::handle order, py::handle angles, py::handle scalar_first_arg, py::handle degrees) {
@@ -402,9 +824,41 @@ void bind_so3(py::module_& m) {
         });
       },
       "axes"_a, "order"_a, "angles"_a, "scalar_first"_a = false, py::kw_only(), "degrees"_a = false,
-      (std::string("Unit quaternion of Davenport angles (rotations about three arbitrary axes).\n\n") + davenport_note +
-       "angles: (3,) or (n, 3) [rad] (degrees if degrees=True), in the order of the axes.\n"
-       "Returns q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first.")
+      (std::string() +
+       "Unit quaternion of Davenport angles (rotations about three arbitrary axes).\n"
+       "\n"
+       "SciPy: ``Rotation.from_davenport(axes, order, angles).as_quat()``.\n"
+       "\n"
+       "Parameters\n"
+       "----------\n" +
+       davenport_params +
+       "angles : array_like, shape (3,) or (n, 3)\n"
+       "    Angles [rad] (degrees if `degrees`), in the order of the axes.\n" +
+       scalar_first_param +
+       degrees_param +
+       "\n"
+       "Returns\n"
+       "-------\n"
+       "ndarray, shape (4,) or (n, 4)\n"
+       "    q, (x, y, z, w) or (w, x, y, z) if `scalar_first`.\n"
+       "\n"
+       "Raises\n"
+       "------\n" +
+       davenport_raises +
+       "ValueError\n"
+       "    A non-finite angle or a wrong shape (the message names `angles`).\n"
+       "\n"
+       "See Also\n"
+       "--------\n"
+       "quat_to_davenport, euler_to_quat\n"
+       "\n"
+       "Examples\n"
+       "--------\n"
+       "Coordinate axes give Euler angles:\n"
+       "\n"
+       ">>> q = rd.davenport_to_quat(np.eye(3), \"extrinsic\", [0.1, 0.2, 0.3])\n"
+       ">>> np.allclose(q, rd.euler_to_quat(\"xyz\", [0.1, 0.2, 0.3]))\n"
+       "True")
           .c_str());
 
   m.def(
@@ -424,12 +878,47 @@ void bind_so3(py::module_& m) {
         return angles;
       },
       "axes"_a, "order"_a, "q"_a, "scalar_first"_a = false, py::kw_only(), "degrees"_a = false,
-      (std::string("Davenport angles [rad] of unit quaternions (Bernardes & Viollet 2022, arbitrary axes).\n\n") +
-       davenport_note +
-       "q: (4,) or (n, 4). Returns (3,) or (n, 3) [rad] (degrees if degrees=True), as SciPy: first and\n"
-       "third in [-pi, pi], second in [-l, pi - l] if l >= 0, [-pi - l, -l] if l < 0, where\n"
-       "l = atan2(m3 . (m1 x n2), m3 . m1) with (m1, m3) = (n1, n3), or (n3, n1) if intrinsic (proper Euler:\n"
-       "l = 0, second in [0, pi]; Tait-Bryan: l = +-pi/2, second in [-pi/2, pi/2]).\n" + gimbal_note)
+      (std::string() +
+       "Davenport angles of unit quaternions (rotations about three arbitrary axes).\n"
+       "\n"
+       "By the method of Bernardes & Viollet (\"Quaternion to Euler angles conversion: a direct, general and\n"
+       "computationally efficient method\") for arbitrary axes. SciPy:\n"
+       "``Rotation.from_quat(q).as_davenport(axes, order)``.\n"
+       "\n"
+       "Parameters\n"
+       "----------\n" +
+       davenport_params +
+       q_param +
+       scalar_first_param +
+       degrees_param +
+       "\n"
+       "Returns\n"
+       "-------\n"
+       "ndarray, shape (3,) or (n, 3)\n"
+       "    Angles [rad] (degrees if `degrees`) in the order of the axes, as SciPy: first and third in\n"
+       "    [-pi, pi], second in [-l, pi - l] if l >= 0, [-pi - l, -l] if l < 0, where\n"
+       "    l = atan2(m3 . (m1 x n2), m3 . m1) with (m1, m3) = (n1, n3), or (n3, n1) if intrinsic (proper\n"
+       "    Euler: l = 0, second in [0, pi]; Tait-Bryan: l = +-pi/2, second in [-pi/2, pi/2]).\n"
+       "\n"
+       "Raises\n"
+       "------\n" +
+       davenport_raises +
+       q_raises +
+       "\n" +
+       gimbal_warns +
+       "\n"
+       "See Also\n"
+       "--------\n"
+       "davenport_to_quat, quat_to_euler\n"
+       "\n"
+       "Examples\n"
+       "--------\n"
+       "Angles about tilted axes come back:\n"
+       "\n"
+       ">>> axes = [[1.0, 0.0, 1.0], [0.0, 1.0, 0.0], [1.0, 0.0, 0.0]]\n"
+       ">>> q = rd.davenport_to_quat(axes, \"i\", [0.5, -0.3, 1.2])\n"
+       ">>> rd.quat_to_davenport(axes, \"i\", q).round(12)\n"
+       "array([ 0.5, -0.3,  1.2])")
           .c_str());
 
   // ------------------------------------------------------------ modified Rodrigues parameters
@@ -443,9 +932,38 @@ void bind_so3(py::module_& m) {
         });
       },
       "q"_a, "scalar_first"_a = false,
-      "Modified Rodrigues parameters p = axis tan(angle/4) of unit quaternions, the set with |p| <= 1\n"
-      "(angle in [0, pi]; as SciPy's Rotation.as_mrp). Dimensionless.\n\n"
-      "q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first. Returns (3,) or (n, 3).");
+      (std::string() +
+       "Modified Rodrigues parameters of unit quaternions.\n"
+       "\n"
+       "p = axis tan(angle/4) = (x, y, z) / (1 + w) for the representative with w >= 0, the set with\n"
+       "|p| <= 1 (angle in [0, pi]); dimensionless (Shuster, \"A survey of attitude representations\"). SciPy:\n"
+       "``Rotation.from_quat(q).as_mrp()``.\n"
+       "\n"
+       "Parameters\n"
+       "----------\n" +
+       q_param +
+       scalar_first_param +
+       "\n"
+       "Returns\n"
+       "-------\n"
+       "ndarray, shape (3,) or (n, 3)\n"
+       "    p, |p| <= 1.\n"
+       "\n"
+       "Raises\n"
+       "------\n" +
+       q_raises +
+       "\n"
+       "See Also\n"
+       "--------\n"
+       "mrp_to_quat\n"
+       "\n"
+       "Examples\n"
+       "--------\n"
+       "A half turn about z has |p| = tan(pi/4) = 1, whatever the quaternion's sign:\n"
+       "\n"
+       ">>> rd.quat_to_mrp([0.0, 0.0, -1.0, 0.0]).round(12) + 0.0\n"
+       "array([0., 0., 1.])")
+          .c_str());
 
   m.def(
       "mrp_to_quat",
@@ -456,10 +974,40 @@ void bind_so3(py::module_& m) {
         });
       },
       "mrp"_a, "scalar_first"_a = false,
-      "Unit quaternion ((2 p, 1 - |p|^2) / (1 + |p|^2)) of modified Rodrigues parameters p (either shadow\n"
-      "set: p and -p/|p|^2 are the same rotation; w < 0 when |p| > 1), as SciPy's Rotation.from_mrp.\n\n"
-      "mrp: (3,) or (n, 3), any finite values. Returns q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if\n"
-      "scalar_first.");
+      (std::string() +
+       "Unit quaternion of modified Rodrigues parameters.\n"
+       "\n"
+       "q = (2 p, 1 - |p|^2) / (1 + |p|^2): either shadow set is accepted (p and -p/|p|^2 are the same\n"
+       "rotation; w < 0 when |p| > 1). SciPy: ``Rotation.from_mrp(p).as_quat()``.\n"
+       "\n"
+       "Parameters\n"
+       "----------\n"
+       "mrp : array_like, shape (3,) or (n, 3)\n"
+       "    Modified Rodrigues parameters p, any finite values (dimensionless).\n" +
+       scalar_first_param +
+       "\n"
+       "Returns\n"
+       "-------\n"
+       "ndarray, shape (4,) or (n, 4)\n"
+       "    q, (x, y, z, w) or (w, x, y, z) if `scalar_first`.\n"
+       "\n"
+       "Raises\n"
+       "------\n"
+       "ValueError\n"
+       "    A non-finite entry or a wrong shape (the message names `mrp`).\n"
+       "\n"
+       "See Also\n"
+       "--------\n"
+       "quat_to_mrp\n"
+       "\n"
+       "Examples\n"
+       "--------\n"
+       "A shadow set gives the same rotation:\n"
+       "\n"
+       ">>> p = np.array([0.2, -0.4, 0.1])\n"
+       ">>> rd.angular_distance(rd.mrp_to_quat(p), rd.mrp_to_quat(-p / (p @ p))) < 1e-12\n"
+       "True")
+          .c_str());
 
   // ------------------------------------------------------------ elementary rotations
   const auto bind_elementary = [&m](const char* name, Eigen::Matrix3d (*rot)(double), const char* doc) {
@@ -471,15 +1019,109 @@ void bind_so3(py::module_& m) {
         },
         "angle"_a, py::kw_only(), "degrees"_a = false, doc);
   };
-  bind_elementary("rot_x", &rot_x,
-                  "Elementary rotation about x by angle [rad] (active): [[1, 0, 0], [0, c, -s], [0, s, c]].\n"
-                  "angle: float or (n,), in degrees if degrees=True. Returns (3, 3) or (n, 3, 3).");
-  bind_elementary("rot_y", &rot_y,
-                  "Elementary rotation about y by angle [rad] (active): [[c, 0, s], [0, 1, 0], [-s, 0, c]].\n"
-                  "angle: float or (n,), in degrees if degrees=True. Returns (3, 3) or (n, 3, 3).");
-  bind_elementary("rot_z", &rot_z,
-                  "Elementary rotation about z by angle [rad] (active): [[c, -s, 0], [s, c, 0], [0, 0, 1]].\n"
-                  "angle: float or (n,), in degrees if degrees=True. Returns (3, 3) or (n, 3, 3).");
+  const std::string rot_x_doc =
+      std::string() +
+       "Elementary rotation matrix about x (active).\n"
+       "\n"
+       "R_x(a) = [[1, 0, 0], [0, c, -s], [0, s, c]] with c = cos a, s = sin a. SciPy:\n"
+       "``Rotation.from_euler('x', angle).as_matrix()``.\n"
+       "\n"
+       "Parameters\n"
+       "----------\n"
+       "angle : float or array_like, shape (n,)\n"
+       "    Angles [rad] (degrees if `degrees`).\n" +
+       degrees_param +
+       "\n"
+       "Returns\n"
+       "-------\n"
+       "ndarray, shape (3, 3) or (n, 3, 3)\n"
+       "    R_x(angle).\n"
+       "\n"
+       "Raises\n"
+       "------\n"
+       "ValueError\n"
+       "    A non-finite angle or a shape other than () or (n,) (the message names `angle`).\n"
+       "\n"
+       "See Also\n"
+       "--------\n"
+       "rot_y, rot_z, euler_to_matrix\n"
+       "\n"
+       "Examples\n"
+       "--------\n"
+       "A quarter turn about x takes y to z:\n"
+       "\n"
+       ">>> rd.rot_x(90.0, degrees=True).round(12) @ [0.0, 1.0, 0.0]\n"
+       "array([0., 0., 1.])";
+  bind_elementary("rot_x", &rot_x, rot_x_doc.c_str());
+  const std::string rot_y_doc =
+      std::string() +
+       "Elementary rotation matrix about y (active).\n"
+       "\n"
+       "R_y(a) = [[c, 0, s], [0, 1, 0], [-s, 0, c]] with c = cos a, s = sin a. SciPy:\n"
+       "``Rotation.from_euler('y', angle).as_matrix()``.\n"
+       "\n"
+       "Parameters\n"
+       "----------\n"
+       "angle : float or array_like, shape (n,)\n"
+       "    Angles [rad] (degrees if `degrees`).\n" +
+       degrees_param +
+       "\n"
+       "Returns\n"
+       "-------\n"
+       "ndarray, shape (3, 3) or (n, 3, 3)\n"
+       "    R_y(angle).\n"
+       "\n"
+       "Raises\n"
+       "------\n"
+       "ValueError\n"
+       "    A non-finite angle or a shape other than () or (n,) (the message names `angle`).\n"
+       "\n"
+       "See Also\n"
+       "--------\n"
+       "rot_x, rot_z, euler_to_matrix\n"
+       "\n"
+       "Examples\n"
+       "--------\n"
+       "A quarter turn about y takes z to x:\n"
+       "\n"
+       ">>> rd.rot_y(np.pi / 2).round(12) @ [0.0, 0.0, 1.0]\n"
+       "array([1., 0., 0.])";
+  bind_elementary("rot_y", &rot_y, rot_y_doc.c_str());
+  const std::string rot_z_doc =
+      std::string() +
+       "Elementary rotation matrix about z (active).\n"
+       "\n"
+       "R_z(a) = [[c, -s, 0], [s, c, 0], [0, 0, 1]] with c = cos a, s = sin a. SciPy:\n"
+       "``Rotation.from_euler('z', angle).as_matrix()``.\n"
+       "\n"
+       "Parameters\n"
+       "----------\n"
+       "angle : float or array_like, shape (n,)\n"
+       "    Angles [rad] (degrees if `degrees`).\n" +
+       degrees_param +
+       "\n"
+       "Returns\n"
+       "-------\n"
+       "ndarray, shape (3, 3) or (n, 3, 3)\n"
+       "    R_z(angle).\n"
+       "\n"
+       "Raises\n"
+       "------\n"
+       "ValueError\n"
+       "    A non-finite angle or a shape other than () or (n,) (the message names `angle`).\n"
+       "\n"
+       "See Also\n"
+       "--------\n"
+       "rot_x, rot_y, euler_to_matrix\n"
+       "\n"
+       "Examples\n"
+       "--------\n"
+       "A stack of angles gives a stack of matrices:\n"
+       "\n"
+       ">>> rd.rot_z([0.0, np.pi / 2]).round(12) @ [1.0, 0.0, 0.0]\n"
+       "array([[1., 0., 0.],\n"
+       "       [0., 1., 0.]])";
+  bind_elementary("rot_z", &rot_z, rot_z_doc.c_str());
 
   // ------------------------------------------------------------ quaternion algebra
   m.def(
@@ -496,9 +1138,41 @@ void bind_so3(py::module_& m) {
                           });
       },
       "q1"_a, "q2"_a, "scalar_first"_a = false,
-      "Hamilton product q1 ⊗ q2 of unit quaternions: R(q1 ⊗ q2) = R(q1) R(q2) (q2 applied first).\n\n"
-      "q1, q2: (4,) or (n, 4) each (a single one is used with every item of the other).\n"
-      "Returns (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first.");
+      (std::string() +
+       "Hamilton product q1 ⊗ q2 of unit quaternions.\n"
+       "\n"
+       "R(q1 ⊗ q2) = R(q1) R(q2): q2 is applied first, so q_WC = q_WB ⊗ q_BC. SciPy: ``r1 * r2``.\n"
+       "\n"
+       "Parameters\n"
+       "----------\n"
+       "q1, q2 : array_like, shape (4,) or (n, 4)\n"
+       "    Unit quaternions (x, y, z, w), or (w, x, y, z) if `scalar_first`; norm within 1e-6 of 1 (then\n"
+       "    normalised). A single one is used with every item of the other.\n" +
+       scalar_first_param +
+       "\n"
+       "Returns\n"
+       "-------\n"
+       "ndarray, shape (4,) or (n, 4)\n"
+       "    q1 ⊗ q2, in the order of the input.\n"
+       "\n"
+       "Raises\n"
+       "------\n"
+       "ValueError\n"
+       "    A quaternion with a non-finite entry or a norm farther than 1e-6 from 1 (the message names it\n"
+       "    and, in a stack, the item), a wrong shape, or stacks of different lengths.\n"
+       "\n"
+       "See Also\n"
+       "--------\n"
+       "quat_inverse, quat_rotate\n"
+       "\n"
+       "Examples\n"
+       "--------\n"
+       "A quarter turn about z applied twice is a half turn:\n"
+       "\n"
+       ">>> q = rd.rotvec_to_quat([0.0, 0.0, np.pi / 2])\n"
+       ">>> rd.quat_multiply(q, q).round(12)\n"
+       "array([0., 0., 1., 0.])")
+          .c_str());
 
   m.def(
       "quat_inverse",
@@ -511,7 +1185,35 @@ void bind_so3(py::module_& m) {
         });
       },
       "q"_a, "scalar_first"_a = false,
-      "Inverse (conjugate) of unit quaternions: q_BW from q_WB. q: (4,) or (n, 4); returns the same shape.");
+      (std::string() +
+       "Inverse (conjugate) of unit quaternions.\n"
+       "\n"
+       "q^-1 = (-x, -y, -z, w): q_BW from q_WB. SciPy: ``Rotation.from_quat(q).inv()``.\n"
+       "\n"
+       "Parameters\n"
+       "----------\n" +
+       q_param +
+       scalar_first_param +
+       "\n"
+       "Returns\n"
+       "-------\n"
+       "ndarray, shape (4,) or (n, 4)\n"
+       "    q^-1, in the order of the input.\n"
+       "\n"
+       "Raises\n"
+       "------\n" +
+       q_raises +
+       "\n"
+       "See Also\n"
+       "--------\n"
+       "quat_multiply\n"
+       "\n"
+       "Examples\n"
+       "--------\n"
+       ">>> q = rd.rotvec_to_quat([0.3, -0.2, 0.9])\n"
+       ">>> rd.quat_multiply(q, rd.quat_inverse(q)).round(12)\n"
+       "array([0., 0., 0., 1.])")
+          .c_str());
 
   m.def(
       "quat_normalize",
@@ -523,8 +1225,37 @@ void bind_so3(py::module_& m) {
         });
       },
       "q"_a, "scalar_first"_a = false,
-      "q / |q| for finite non-zero quaternions of any norm (ValueError for q = 0).\n"
-      "q: (4,) or (n, 4); returns the same shape, sign unchanged.");
+      (std::string() +
+       "Quaternions scaled to unit norm, q / |q|.\n"
+       "\n"
+       "For finite non-zero quaternions of any norm; the sign is unchanged (no canonical sign). SciPy\n"
+       "normalises in ``Rotation.from_quat``.\n"
+       "\n"
+       "Parameters\n"
+       "----------\n"
+       "q : array_like, shape (4,) or (n, 4)\n"
+       "    Finite non-zero quaternions (x, y, z, w), or (w, x, y, z) if `scalar_first`.\n" +
+       scalar_first_param +
+       "\n"
+       "Returns\n"
+       "-------\n"
+       "ndarray, shape (4,) or (n, 4)\n"
+       "    q / |q|, in the order of the input.\n"
+       "\n"
+       "Raises\n"
+       "------\n"
+       "ValueError\n"
+       "    q = 0, a non-finite entry or a wrong shape (the message names `q` and, in a stack, the item).\n"
+       "\n"
+       "See Also\n"
+       "--------\n"
+       "quat_canonical\n"
+       "\n"
+       "Examples\n"
+       "--------\n"
+       ">>> rd.quat_normalize([0.0, 0.0, -3.0, 4.0])\n"
+       "array([ 0. ,  0. , -0.6,  0.8])")
+          .c_str());
 
   m.def(
       "quat_rotate",
@@ -536,9 +1267,40 @@ void bind_so3(py::module_& m) {
         });
       },
       "q"_a, "v"_a, "scalar_first"_a = false,
-      "R(q) v: vectors rotated actively by unit quaternions (v_W = R_WB v_B for q = q_WB).\n\n"
-      "q: (4,) or (n, 4); v: (3,) or (n, 3) (a single one is used with every item of the other).\n"
-      "Returns (3,) or (n, 3).");
+      (std::string() +
+       "Vectors rotated actively by unit quaternions, R(q) v.\n"
+       "\n"
+       "With q = q_WB, v_W = R_WB v_B. SciPy: ``Rotation.from_quat(q).apply(v)``.\n"
+       "\n"
+       "Parameters\n"
+       "----------\n" +
+       q_param +
+       "v : array_like, shape (3,) or (n, 3)\n"
+       "    Vectors (any unit); a single q or v is used with every item of the other.\n" +
+       scalar_first_param +
+       "\n"
+       "Returns\n"
+       "-------\n"
+       "ndarray, shape (3,) or (n, 3)\n"
+       "    R(q) v, in the unit of v.\n"
+       "\n"
+       "Raises\n"
+       "------\n" +
+       q_raises +
+       "ValueError\n"
+       "    `v` of a wrong shape or non-finite, or stacks of different lengths.\n"
+       "\n"
+       "See Also\n"
+       "--------\n"
+       "quat_to_matrix\n"
+       "\n"
+       "Examples\n"
+       "--------\n"
+       ">>> q = rd.rotvec_to_quat([0.0, 0.0, np.pi / 2])\n"
+       ">>> rd.quat_rotate(q, [[1.0, 0.0, 0.0], [0.0, 0.0, 2.0]]).round(12)\n"
+       "array([[0., 1., 0.],\n"
+       "       [0., 0., 2.]])")
+          .c_str());
 
   m.def(
       "quat_integrate",
@@ -554,12 +1316,52 @@ void bind_so3(py::module_& m) {
         });
       },
       "q"_a, "w"_a, "dt"_a, "frame"_a = "body", "scalar_first"_a = false,
-      "Exact attitude update for an angular velocity w [rad/s] constant over dt [s].\n\n"
-      "frame='body': q ⊗ exp(w dt/2), w = w_B expressed in the body frame;\n"
-      "frame='world': exp(w dt/2) ⊗ q, w = w_W expressed in the world frame;\n"
-      "exp of a pure vector u is (sin|u| u/|u|, cos|u|).\n"
-      "q: (4,) or (n, 4) unit quaternions q_WB; w: (3,) or (n, 3); dt: float.\n"
-      "Returns (4,) or (n, 4), normalised, (x, y, z, w) or (w, x, y, z) if scalar_first.");
+      (std::string() +
+       "Exact attitude update for an angular velocity constant over a step.\n"
+       "\n"
+       "frame='body': q(t + dt) = q ⊗ exp(w_B dt/2), w_B expressed in B; frame='world':\n"
+       "q(t + dt) = exp(w_W dt/2) ⊗ q, w_W expressed in W; exp of a pure vector u is (sin|u| u/|u|, cos|u|)\n"
+       "(Solà, \"Quaternion kinematics for the error-state Kalman filter\"). With SciPy, frame='body' is\n"
+       "``r * Rotation.from_rotvec(w * dt)``.\n"
+       "\n"
+       "Parameters\n"
+       "----------\n"
+       "q : array_like, shape (4,) or (n, 4)\n"
+       "    Attitudes q_WB, unit quaternions (x, y, z, w), or (w, x, y, z) if `scalar_first`; norm within\n"
+       "    1e-6 of 1 (then normalised).\n"
+       "w : array_like, shape (3,) or (n, 3)\n"
+       "    Angular velocity [rad/s] of B in W, expressed in B (frame='body') or in W (frame='world'); a\n"
+       "    single q or w is used with every item of the other.\n"
+       "dt : float\n"
+       "    Time step [s], finite.\n"
+       "frame : {'body', 'world'}, default 'body'\n"
+       "    The frame `w` is expressed in.\n" +
+       scalar_first_param +
+       "\n"
+       "Returns\n"
+       "-------\n"
+       "ndarray, shape (4,) or (n, 4)\n"
+       "    q(t + dt), normalised, in the order of the input.\n"
+       "\n"
+       "Raises\n"
+       "------\n" +
+       q_raises +
+       "ValueError\n"
+       "    `w` of a wrong shape or non-finite, a non-finite `dt`, stacks of different lengths, or `frame`\n"
+       "    not 'body' or 'world'.\n"
+       "\n"
+       "See Also\n"
+       "--------\n"
+       "quat_rate, rotvec_to_quat\n"
+       "\n"
+       "Examples\n"
+       "--------\n"
+       "Turning at pi/2 rad/s about z for 1 s is a quarter turn:\n"
+       "\n"
+       ">>> q = rd.quat_integrate([0.0, 0.0, 0.0, 1.0], [0.0, 0.0, np.pi / 2], 1.0)\n"
+       ">>> rd.quat_to_rotvec(q).round(12)\n"
+       "array([0.        , 0.        , 1.57079633])")
+          .c_str());
 
   m.def(
       "quat_rate",
@@ -573,11 +1375,48 @@ void bind_so3(py::module_& m) {
         });
       },
       "q"_a, "w"_a, "frame"_a = "body", "scalar_first"_a = false,
-      "Quaternion rate dq/dt [1/s] of the attitude q = q_WB turning with angular velocity w [rad/s]:\n"
-      "frame='body': dq/dt = 1/2 q ⊗ (w, 0), w = w_B expressed in the body frame;\n"
-      "frame='world': dq/dt = 1/2 (w, 0) ⊗ q, w = w_W expressed in the world frame.\n"
-      "q: (4,) or (n, 4) unit quaternions; w: (3,) or (n, 3) (a single one is used with every item of the\n"
-      "other). Returns (4,) or (n, 4) in q's order, orthogonal to q, |dq/dt| = |w|/2.");
+      (std::string() +
+       "Quaternion rate dq/dt of an attitude turning with an angular velocity.\n"
+       "\n"
+       "frame='body': dq/dt = 1/2 q ⊗ (w_B, 0), w_B expressed in B; frame='world': dq/dt = 1/2 (w_W, 0) ⊗ q,\n"
+       "w_W expressed in W (Solà, \"Quaternion kinematics for the error-state Kalman filter\"). The result is\n"
+       "orthogonal to q, with |dq/dt| = |w|/2. SciPy has no equivalent.\n"
+       "\n"
+       "Parameters\n"
+       "----------\n"
+       "q : array_like, shape (4,) or (n, 4)\n"
+       "    Attitudes q_WB, unit quaternions (x, y, z, w), or (w, x, y, z) if `scalar_first`; norm within\n"
+       "    1e-6 of 1 (then normalised).\n"
+       "w : array_like, shape (3,) or (n, 3)\n"
+       "    Angular velocity [rad/s] of B in W, expressed in B (frame='body') or in W (frame='world'); a\n"
+       "    single q or w is used with every item of the other.\n"
+       "frame : {'body', 'world'}, default 'body'\n"
+       "    The frame `w` is expressed in.\n" +
+       scalar_first_param +
+       "\n"
+       "Returns\n"
+       "-------\n"
+       "ndarray, shape (4,) or (n, 4)\n"
+       "    dq/dt [1/s], in the order of q.\n"
+       "\n"
+       "Raises\n"
+       "------\n" +
+       q_raises +
+       "ValueError\n"
+       "    `w` of a wrong shape or non-finite, stacks of different lengths, or `frame` not 'body' or\n"
+       "    'world'.\n"
+       "\n"
+       "See Also\n"
+       "--------\n"
+       "angular_velocity_from_quat_rate, quat_integrate\n"
+       "\n"
+       "Examples\n"
+       "--------\n"
+       ">>> q = rd.rotvec_to_quat([0.4, 0.0, 0.0])\n"
+       ">>> dq = rd.quat_rate(q, [0.0, 2.0, 0.0])\n"
+       ">>> f\"{q @ dq:.12f}\", f\"{np.linalg.norm(dq):.12f}\"\n"
+       "('0.000000000000', '1.000000000000')")
+          .c_str());
 
   m.def(
       "angular_velocity_from_quat_rate",
@@ -594,11 +1433,47 @@ void bind_so3(py::module_& m) {
                           });
       },
       "q"_a, "dq_dt"_a, "frame"_a = "body", "scalar_first"_a = false,
-      "Angular velocity [rad/s] of the attitude q = q_WB changing at dq_dt [1/s], the inverse of quat_rate:\n"
-      "frame='body': w_B = 2 vec(q* ⊗ dq/dt); frame='world': w_W = 2 vec(dq/dt ⊗ q*).\n"
-      "The part of dq_dt along q (which would change |q|, not the rotation) is ignored.\n"
-      "q: (4,) or (n, 4) unit quaternions; dq_dt: (4,) or (n, 4), any finite values, in q's order.\n"
-      "Returns (3,) or (n, 3).");
+      (std::string() +
+       "Angular velocity of an attitude changing at a quaternion rate (the inverse of `quat_rate`).\n"
+       "\n"
+       "frame='body': w_B = 2 vec(q* ⊗ dq/dt); frame='world': w_W = 2 vec(dq/dt ⊗ q*). The part of dq_dt\n"
+       "along q (which would change |q|, not the rotation) is ignored. SciPy has no equivalent.\n"
+       "\n"
+       "Parameters\n"
+       "----------\n"
+       "q : array_like, shape (4,) or (n, 4)\n"
+       "    Attitudes q_WB, unit quaternions (x, y, z, w), or (w, x, y, z) if `scalar_first`; norm within\n"
+       "    1e-6 of 1 (then normalised).\n"
+       "dq_dt : array_like, shape (4,) or (n, 4)\n"
+       "    Quaternion rates [1/s], any finite values, in the order of q; a single q or dq_dt is used with\n"
+       "    every item of the other.\n"
+       "frame : {'body', 'world'}, default 'body'\n"
+       "    The frame the result is expressed in.\n" +
+       scalar_first_param +
+       "\n"
+       "Returns\n"
+       "-------\n"
+       "ndarray, shape (3,) or (n, 3)\n"
+       "    Angular velocity [rad/s] of B in W, expressed in B (frame='body') or in W (frame='world').\n"
+       "\n"
+       "Raises\n"
+       "------\n" +
+       q_raises +
+       "ValueError\n"
+       "    `dq_dt` of a wrong shape or non-finite, stacks of different lengths, or `frame` not 'body' or\n"
+       "    'world'.\n"
+       "\n"
+       "See Also\n"
+       "--------\n"
+       "quat_rate\n"
+       "\n"
+       "Examples\n"
+       "--------\n"
+       ">>> q = rd.rotvec_to_quat([0.4, -1.0, 0.3])\n"
+       ">>> dq = rd.quat_rate(q, [1.0, 2.0, 3.0], frame=\"world\")\n"
+       ">>> rd.angular_velocity_from_quat_rate(q, dq, frame=\"world\").round(12)\n"
+       "array([1., 2., 3.])")
+          .c_str());
 
   // ------------------------------------------------------------ skew matrices
   m.def(
@@ -607,7 +1482,36 @@ void bind_so3(py::module_& m) {
         return map_unary(v, "v", vector3, matrix3, "hat", [&](const double* in, double* out) { write_matrix(hat(read_vector(in)), out); });
       },
       "v"_a,
-      "Skew-symmetric cross-product matrix S = hat(v), S x = v × x. v: (3,) or (n, 3); returns (3, 3) or (n, 3, 3).");
+      "Skew-symmetric cross-product matrices.\n"
+      "\n"
+      "S = hat(v) = [[0, -v3, v2], [v3, 0, -v1], [-v2, v1, 0]], so that S x = v × x. SciPy has no\n"
+      "equivalent.\n"
+      "\n"
+      "Parameters\n"
+      "----------\n"
+      "v : array_like, shape (3,) or (n, 3)\n"
+      "    Vectors (any unit), finite.\n"
+      "\n"
+      "Returns\n"
+      "-------\n"
+      "ndarray, shape (3, 3) or (n, 3, 3)\n"
+      "    hat(v), in the unit of v.\n"
+      "\n"
+      "Raises\n"
+      "------\n"
+      "ValueError\n"
+      "    A non-finite entry or a wrong shape (the message names `v`).\n"
+      "\n"
+      "See Also\n"
+      "--------\n"
+      "vee\n"
+      "\n"
+      "Examples\n"
+      "--------\n"
+      ">>> rd.hat([1.0, 2.0, 3.0]) @ [4.0, 5.0, 6.0]\n"
+      "array([-3.,  6., -3.])\n"
+      ">>> np.cross([1.0, 2.0, 3.0], [4.0, 5.0, 6.0])\n"
+      "array([-3.,  6., -3.])");
 
   m.def(
       "vee",
@@ -615,8 +1519,35 @@ void bind_so3(py::module_& m) {
         return map_unary(S, "S", matrix3, vector3, "vee", [&](const double* in, double* out) { write_vector(vee(read_matrix(in)), out); });
       },
       "S"_a,
-      "Inverse of hat: v with hat(v) = (S - S^T)/2 (a symmetric part of S is ignored).\n"
-      "S: (3, 3) or (n, 3, 3); returns (3,) or (n, 3).");
+      "Vectors of skew-symmetric matrices, the inverse of `hat`.\n"
+      "\n"
+      "v with hat(v) = (S - S^T)/2: a symmetric part of S is ignored. SciPy has no equivalent.\n"
+      "\n"
+      "Parameters\n"
+      "----------\n"
+      "S : array_like, shape (3, 3) or (n, 3, 3)\n"
+      "    Matrices, finite.\n"
+      "\n"
+      "Returns\n"
+      "-------\n"
+      "ndarray, shape (3,) or (n, 3)\n"
+      "    v, in the unit of S.\n"
+      "\n"
+      "Raises\n"
+      "------\n"
+      "ValueError\n"
+      "    A non-finite entry or a wrong shape (the message names `S`).\n"
+      "\n"
+      "See Also\n"
+      "--------\n"
+      "hat\n"
+      "\n"
+      "Examples\n"
+      "--------\n"
+      ">>> rd.vee(rd.hat([1.0, 2.0, 3.0]))\n"
+      "array([1., 2., 3.])\n"
+      ">>> rd.vee(rd.hat([1.0, 2.0, 3.0]) + np.ones((3, 3)))\n"
+      "array([1., 2., 3.])");
 }
 
 }  // namespace rigiddyn::bindings

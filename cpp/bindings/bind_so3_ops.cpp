@@ -77,9 +77,14 @@ py::object as_generator(py::handle rng) {
   return random.attr("default_rng")(seed);
 }
 
-const char* const quaternion_out =
-    "(x, y, z, w), or (w, x, y, z) if scalar_first; canonical=True gives the representative with w >= 0\n"
-    "(SciPy's as_quat(canonical=True): at w = 0 the first non-zero of x, y, z is positive).";
+// numpydoc pieces shared by the docstrings below (Parameters entries)
+const char* const scalar_first_param =
+    "scalar_first : bool, default False\n"
+    "    Read and write quaternions scalar first, (w, x, y, z), as MuJoCo does.\n";
+const char* const canonical_param =
+    "canonical : bool, default False\n"
+    "    Return the representative with w >= 0 (SciPy's ``as_quat(canonical=True)``: at w = 0 the first\n"
+    "    non-zero of x, y, z is positive).\n";
 
 }  // namespace
 
@@ -98,13 +103,45 @@ void bind_so3_ops(py::module_& m) {
         return out;
       },
       "M"_a,
-      "The rotation matrix nearest to M in the Frobenius norm (orthogonal Procrustes problem).\n\n"
-      "M: (3, 3) or (n, 3, 3), any finite matrices. With the SVD M = U S V^T, returns\n"
-      "R = U diag(1, 1, det(U V^T)) V^T: (3, 3) or (n, 3, 3), orthonormal with det +1 to round-off.\n"
-      "For det M > 0 this is the orthogonal polar factor of M (Higham 1986), the matrix SciPy's\n"
-      "Rotation.from_matrix stores for a non-orthonormal M; for det M < 0 the smallest singular\n"
-      "direction is flipped (Kabsch). Unique when M has rank >= 2 (and, for det M < 0, distinct two\n"
-      "smallest singular values). Idempotent: a rotation matrix is returned unchanged to round-off.");
+      "The rotation matrix nearest to a matrix in the Frobenius norm (orthogonal Procrustes problem).\n"
+      "\n"
+      "With the SVD M = U S V^T, R = U diag(1, 1, det(U V^T)) V^T. For det M > 0 this is the orthogonal\n"
+      "polar factor of M (Higham 1986, \"Computing the polar decomposition\"), the matrix SciPy's\n"
+      "``Rotation.from_matrix(M).as_matrix()`` gives for a non-orthonormal M; for det M < 0 the smallest\n"
+      "singular direction is flipped (Kabsch). Unique when M has rank >= 2 (and, for det M < 0, distinct\n"
+      "two smallest singular values). Idempotent: a rotation matrix is returned unchanged to round-off.\n"
+      "\n"
+      "Parameters\n"
+      "----------\n"
+      "M : array_like, shape (3, 3) or (n, 3, 3)\n"
+      "    Any finite matrices.\n"
+      "\n"
+      "Returns\n"
+      "-------\n"
+      "ndarray, shape (3, 3) or (n, 3, 3)\n"
+      "    R, orthonormal with det +1 to round-off.\n"
+      "\n"
+      "Raises\n"
+      "------\n"
+      "ValueError\n"
+      "    A non-finite entry or a wrong shape (the message names `M`).\n"
+      "\n"
+      "See Also\n"
+      "--------\n"
+      "matrix_to_quat\n"
+      "\n"
+      "Examples\n"
+      "--------\n"
+      "A rotation matrix with rounding noise is cleaned up:\n"
+      "\n"
+      ">>> M = rd.rot_z(0.3) + 1e-4 * np.array([[1.0, 2.0, 0.0], [0.0, -1.0, 3.0], [2.0, 0.0, 1.0]])\n"
+      ">>> R = rd.nearest_rotation(M)\n"
+      ">>> np.allclose(R @ R.T, np.eye(3)), f\"{np.linalg.det(R):.12f}\"\n"
+      "(True, '1.000000000000')\n"
+      ">>> rd.nearest_rotation(np.diag([2.0, 3.0, 4.0])).round(12) + 0.0\n"
+      "array([[1., 0., 0.],\n"
+      "       [0., 1., 0.],\n"
+      "       [0., 0., 1.]])");
 
   // ------------------------------------------------------------ canonical sign
   m.def(
@@ -122,10 +159,40 @@ void bind_so3_ops(py::module_& m) {
         return out;
       },
       "q"_a, "scalar_first"_a = false,
-      "The canonical quaternion of each rotation (q and -q are the same rotation): w > 0, or where\n"
-      "w = 0 the first non-zero of x, y, z positive, exactly as SciPy's as_quat(canonical=True).\n\n"
-      "q: (4,) or (n, 4) unit quaternions, (x, y, z, w) or (w, x, y, z) if scalar_first.\n"
-      "Returns (4,) or (n, 4) in the same order.");
+      (std::string() +
+       "The canonical quaternion of each rotation (q and -q are the same rotation).\n"
+       "\n"
+       "w > 0, or where w = 0 the first non-zero of x, y, z positive, exactly as SciPy's\n"
+       "``Rotation.from_quat(q).as_quat(canonical=True)``.\n"
+       "\n"
+       "Parameters\n"
+       "----------\n"
+       "q : array_like, shape (4,) or (n, 4)\n"
+       "    Unit quaternions (x, y, z, w), or (w, x, y, z) if `scalar_first`; norm within 1e-6 of 1 (then\n"
+       "    normalised).\n" +
+       scalar_first_param +
+       "\n"
+       "Returns\n"
+       "-------\n"
+       "ndarray, shape (4,) or (n, 4)\n"
+       "    q or -q, in the order of the input.\n"
+       "\n"
+       "Raises\n"
+       "------\n"
+       "ValueError\n"
+       "    A quaternion with a non-finite entry or a norm farther than 1e-6 from 1 (the message names `q`\n"
+       "    and, in a stack, the item), or a wrong shape.\n"
+       "\n"
+       "See Also\n"
+       "--------\n"
+       "quat_normalize, matrix_to_quat\n"
+       "\n"
+       "Examples\n"
+       "--------\n"
+       ">>> rd.quat_canonical([[0.0, 0.6, 0.0, -0.8], [0.0, -1.0, 0.0, 0.0]]) + 0.0\n"
+       "array([[ 0. , -0.6,  0. ,  0.8],\n"
+       "       [ 0. ,  1. ,  0. ,  0. ]])")
+          .c_str());
 
   // ------------------------------------------------------------ slerp
   m.def(
@@ -148,12 +215,48 @@ void bind_so3_ops(py::module_& m) {
         return out;
       },
       "q0"_a, "q1"_a, "t"_a, "scalar_first"_a = false, "canonical"_a = false,
-      (std::string("Spherical linear interpolation from q0 (t = 0) to q1 (t = 1), shortest path, constant rate.\n\n"
-                   "q(t) = q0 * exp(t log(q0^-1 * q1)), the log at angle in [0, pi]: SciPy's\n"
-                   "Slerp([0, 1], Rotation.from_quat([q0, q1]))(t). Any finite t extrapolates along the arc.\n"
-                   "q0, q1: (4,) or (n, 4) unit quaternions; t: float or (n,) (dimensionless fraction);\n"
-                   "single items are used with every item of the stacks. Returns (4,) or (n, 4),\n") +
-       quaternion_out + "\nTo interpolate between key rotations at key times use slerp_keys.")
+      (std::string() +
+       "Spherical linear interpolation from q0 (t = 0) to q1 (t = 1): shortest path, constant rate.\n"
+       "\n"
+       "q(t) = q0 ⊗ exp(t log(q0^-1 ⊗ q1)), the log at an angle in [0, pi] (Shoemake, \"Animating rotation\n"
+       "with quaternion curves\"). Any finite t extrapolates along the arc. SciPy:\n"
+       "``Slerp([0, 1], Rotation.from_quat([q0, q1]))(t)``. To interpolate between key rotations at key\n"
+       "times use `slerp_keys`.\n"
+       "\n"
+       "Parameters\n"
+       "----------\n"
+       "q0, q1 : array_like, shape (4,) or (n, 4)\n"
+       "    Unit quaternions (x, y, z, w), or (w, x, y, z) if `scalar_first`; norm within 1e-6 of 1 (then\n"
+       "    normalised).\n"
+       "t : float or array_like, shape (n,)\n"
+       "    Fraction of the way from q0 to q1 (dimensionless); single items of q0, q1, t are used with every\n"
+       "    item of the stacks.\n" +
+       scalar_first_param +
+       canonical_param +
+       "\n"
+       "Returns\n"
+       "-------\n"
+       "ndarray, shape (4,) or (n, 4)\n"
+       "    q(t), (x, y, z, w) or (w, x, y, z) if `scalar_first`.\n"
+       "\n"
+       "Raises\n"
+       "------\n"
+       "ValueError\n"
+       "    A quaternion with a non-finite entry or a norm farther than 1e-6 from 1 (the message names it\n"
+       "    and, in a stack, the item), a non-finite t, a wrong shape, or stacks of different lengths.\n"
+       "\n"
+       "See Also\n"
+       "--------\n"
+       "slerp_keys, angular_distance\n"
+       "\n"
+       "Examples\n"
+       "--------\n"
+       "Halfway between the identity and a quarter turn about z is an eighth turn:\n"
+       "\n"
+       ">>> q1 = rd.rotvec_to_quat([0.0, 0.0, np.pi / 2])\n"
+       ">>> q = rd.slerp([0.0, 0.0, 0.0, 1.0], q1, 0.5)\n"
+       ">>> f\"{rd.quat_to_rotvec(q)[2]:.12f}\", f\"{np.pi / 4:.12f}\"\n"
+       "('0.785398163397', '0.785398163397')")
           .c_str());
 
   m.def(
@@ -180,12 +283,50 @@ void bind_so3_ops(py::module_& m) {
         return out;
       },
       "times"_a, "q"_a, "t"_a, "scalar_first"_a = false, "canonical"_a = false,
-      (std::string("Slerp through key rotations q[k] at key times times[k]: SciPy's Slerp(times, rotations)(t).\n\n"
-                   "times: (k,) strictly increasing, k >= 2 [any time unit]; q: (k, 4) unit quaternions;\n"
-                   "t: float or (m,) within [times[0], times[-1]] (ValueError outside). On [times[j], times[j+1]]\n"
-                   "the result is slerp(q[j], q[j+1], (t - times[j]) / (times[j+1] - times[j])).\n"
-                   "Returns (4,) or (m, 4), ") +
-       quaternion_out)
+      (std::string() +
+       "Slerp through key rotations at key times.\n"
+       "\n"
+       "On [times[j], times[j+1]] the result is slerp(q[j], q[j+1], (t - times[j]) / (times[j+1] -\n"
+       "times[j])). SciPy: ``Slerp(times, Rotation.from_quat(q))(t)``.\n"
+       "\n"
+       "Parameters\n"
+       "----------\n"
+       "times : array_like, shape (k,)\n"
+       "    Key times, strictly increasing, k >= 2 (any time unit).\n"
+       "q : array_like, shape (k, 4)\n"
+       "    Key rotations, unit quaternions (x, y, z, w), or (w, x, y, z) if `scalar_first`; norm within\n"
+       "    1e-6 of 1 (then normalised).\n"
+       "t : float or array_like, shape (m,)\n"
+       "    Times within [times[0], times[-1]], in the unit of `times`.\n" +
+       scalar_first_param +
+       canonical_param +
+       "\n"
+       "Returns\n"
+       "-------\n"
+       "ndarray, shape (4,) or (m, 4)\n"
+       "    The interpolated rotations, (x, y, z, w) or (w, x, y, z) if `scalar_first`.\n"
+       "\n"
+       "Raises\n"
+       "------\n"
+       "ValueError\n"
+       "    `times` not strictly increasing, `q` not of shape (k, 4) or not unit quaternions, `t` outside\n"
+       "    the key times or non-finite (each message names the argument).\n"
+       "TypeError\n"
+       "    `times` not a 1-d array.\n"
+       "\n"
+       "See Also\n"
+       "--------\n"
+       "slerp\n"
+       "\n"
+       "Examples\n"
+       "--------\n"
+       "Three keys about z; at t = 1.5 the turn is halfway from the second key to the third:\n"
+       "\n"
+       ">>> q = rd.rotvec_to_quat([[0.0, 0.0, 0.0], [0.0, 0.0, 0.5], [0.0, 0.0, 1.5]])\n"
+       ">>> qt = rd.slerp_keys([0.0, 1.0, 2.0], q, [0.5, 1.5])\n"
+       ">>> rd.quat_to_rotvec(qt).round(12)\n"
+       "array([[0.  , 0.  , 0.25],\n"
+       "       [0.  , 0.  , 1.  ]])")
           .c_str());
 
   // ------------------------------------------------------------ angular distance
@@ -207,11 +348,47 @@ void bind_so3_ops(py::module_& m) {
         return float_or_array(out, b.stacked);
       },
       "q_a"_a, "q_b"_a, "scalar_first"_a = false, "degrees"_a = false,
-      "Angle [rad, or degrees if degrees=True] in [0, pi] of the rotation taking q_a to q_b: the\n"
-      "magnitude of q_a^-1 * q_b (SciPy's (r_a.inv() * r_b).magnitude()), a metric on rotations,\n"
-      "independent of the quaternions' signs. 2 atan2(|d_xyz|, |d_w|): accurate near 0 and near pi.\n\n"
-      "q_a, q_b: (4,) or (n, 4) unit quaternions, (x, y, z, w) or (w, x, y, z) if scalar_first; a single\n"
-      "one is compared with every item of the other. Returns a float or (n,).");
+      (std::string() +
+       "Angle of the rotation taking q_a to q_b.\n"
+       "\n"
+       "The magnitude of q_a^-1 ⊗ q_b, 2 atan2(|d_xyz|, |d_w|) for d = q_a^-1 ⊗ q_b: in [0, pi], accurate\n"
+       "near 0 and near pi; a metric on rotations, independent of the quaternions' signs. SciPy:\n"
+       "``(r_a.inv() * r_b).magnitude()``.\n"
+       "\n"
+       "Parameters\n"
+       "----------\n"
+       "q_a, q_b : array_like, shape (4,) or (n, 4)\n"
+       "    Unit quaternions (x, y, z, w), or (w, x, y, z) if `scalar_first`; norm within 1e-6 of 1 (then\n"
+       "    normalised). A single one is compared with every item of the other.\n" +
+       scalar_first_param +
+       "degrees : bool, default False\n"
+       "    Return degrees instead of radians.\n"
+       "\n"
+       "Returns\n"
+       "-------\n"
+       "float or ndarray, shape (n,)\n"
+       "    Angles [rad] in [0, pi] (degrees if `degrees`).\n"
+       "\n"
+       "Raises\n"
+       "------\n"
+       "ValueError\n"
+       "    A quaternion with a non-finite entry or a norm farther than 1e-6 from 1 (the message names it\n"
+       "    and, in a stack, the item), a wrong shape, or stacks of different lengths.\n"
+       "\n"
+       "See Also\n"
+       "--------\n"
+       "quat_to_axis_angle, slerp\n"
+       "\n"
+       "Examples\n"
+       "--------\n"
+       "q and -q are the same rotation:\n"
+       "\n"
+       ">>> q = rd.rotvec_to_quat([0.2, 0.0, 0.0])\n"
+       ">>> round(rd.angular_distance(q, -q), 12)\n"
+       "0.0\n"
+       ">>> rd.angular_distance([0.0, 0.0, 0.0, 1.0], [[0.0, 0.0, 1.0, 0.0]], degrees=True).round(9)\n"
+       "array([180.])")
+          .c_str());
 
   // ------------------------------------------------------------ random rotations
   m.def(
@@ -242,12 +419,43 @@ void bind_so3_ops(py::module_& m) {
         return out;
       },
       "n"_a = py::none(), "rng"_a = py::none(), "scalar_first"_a = false, "canonical"_a = false,
-      (std::string("Rotations drawn uniformly (Haar measure) from SO(3), as unit quaternions.\n\n"
-                   "n: None (one rotation, shape (4,)) or a count (shape (n, 4)). rng: a numpy.random.Generator,\n"
-                   "or None / a seed (int >= 0) for numpy.random.default_rng. The draws are SciPy's: for the same\n"
-                   "generator state the result equals Rotation.random(n, rng=rng).as_quat() (normalised\n"
-                   "standard normal 4-vectors), and the generator advances by 4 n normal draws. Returns ") +
-       quaternion_out)
+      (std::string() +
+       "Rotations drawn uniformly (Haar measure) from SO(3), as unit quaternions.\n"
+       "\n"
+       "Normalised standard normal 4-vectors are uniform on the unit sphere of R^4 (Shoemake 1992, \"Uniform\n"
+       "random rotations\"). The draws are SciPy's: for the same generator state the result equals\n"
+       "``Rotation.random(n, rng=rng).as_quat()``, and the generator advances by 4 n normal draws.\n"
+       "\n"
+       "Parameters\n"
+       "----------\n"
+       "n : int or None, default None\n"
+       "    None for one rotation (shape (4,)), or a count >= 0 (shape (n, 4)).\n"
+       "rng : numpy.random.Generator, int or None, default None\n"
+       "    A generator, or None / a seed (int >= 0) given to ``numpy.random.default_rng``.\n" +
+       scalar_first_param +
+       canonical_param +
+       "\n"
+       "Returns\n"
+       "-------\n"
+       "ndarray, shape (4,) or (n, 4)\n"
+       "    Unit quaternions, (x, y, z, w) or (w, x, y, z) if `scalar_first`.\n"
+       "\n"
+       "Raises\n"
+       "------\n"
+       "ValueError\n"
+       "    `n` negative or too large to allocate.\n"
+       "TypeError\n"
+       "    `rng` not a Generator, None or an int seed.\n"
+       "\n"
+       "See Also\n"
+       "--------\n"
+       "quat_canonical\n"
+       "\n"
+       "Examples\n"
+       "--------\n"
+       ">>> q = rd.random_rotations(1000, rng=0, canonical=True)\n"
+       ">>> q.shape, np.allclose(np.linalg.norm(q, axis=1), 1.0), bool((q[:, 3] >= 0).all())\n"
+       "((1000, 4), True, True)")
           .c_str());
 
   // ------------------------------------------------------------ Wahba's problem
@@ -296,18 +504,61 @@ void bind_so3_ops(py::module_& m) {
         return py::tuple(py::make_tuple(q, r.rssd));
       },
       "a"_a, "b"_a, "weights"_a = py::none(), "return_sensitivity"_a = false, "scalar_first"_a = false,
-      "The rotation R that best maps the vectors b onto the vectors a (Wahba's problem), as SciPy's\n"
-      "Rotation.align_vectors(a, b, weights): R minimises 1/2 sum_i w_i |a_i - R b_i|^2.\n\n"
-      "a, b: (3,) or (N, 3), the same vectors observed in two frames: with a in W and b in B the result\n"
-      "is q_WB. Lengths act as weights (normalise for equal weighting). weights: None (all 1) or (N,)\n"
-      "of values >= 0; one may be inf: that primary pair is aligned exactly and the others only by the\n"
-      "turn about it. One pair (N = 1): the smallest rotation taking the direction of b to that of a.\n"
-      "General case by the SVD of B = sum w_i a_i b_i^T (Markley 1988), UserWarning when the optimum\n"
-      "is not unique (all pairs parallel).\n"
-      "Returns (q, rssd) or, with return_sensitivity=True, (q, rssd, sensitivity): q (4,) canonical\n"
-      "(w >= 0), (x, y, z, w) or (w, x, y, z) if scalar_first; rssd = sqrt(sum_i w_i |a_i - R b_i|^2)\n"
-      "[units of a] over the finite weights; sensitivity (3, 3), SciPy's covariance of the rotation-vector\n"
-      "error [rad^2 per unit of measurement variance] (not for one pair or an infinite weight).");
+      (std::string() +
+       "The rotation that best maps vectors b onto vectors a (Wahba's problem).\n"
+       "\n"
+       "R minimises 1/2 sum_i w_i |a_i - R b_i|^2, by the SVD of B = sum_i w_i a_i b_i^T (Markley 1988,\n"
+       "\"Attitude determination using vector observations and the singular value decomposition\"). SciPy:\n"
+       "``Rotation.align_vectors(a, b, weights)``. One pair (N = 1): the smallest rotation taking the\n"
+       "direction of b to that of a.\n"
+       "\n"
+       "Parameters\n"
+       "----------\n"
+       "a, b : array_like, shape (3,) or (N, 3)\n"
+       "    The same vectors observed in two frames: with a in W and b in B the result is q_WB. Lengths act\n"
+       "    as weights (normalise for equal weighting).\n"
+       "weights : array_like, shape (N,), optional\n"
+       "    Weights >= 0 (default all 1); one may be inf: that primary pair is aligned exactly and the\n"
+       "    others only by the turn about it.\n"
+       "return_sensitivity : bool, default False\n"
+       "    Also return the sensitivity matrix (not for one pair or an infinite weight).\n" +
+       scalar_first_param +
+       "\n"
+       "Returns\n"
+       "-------\n"
+       "q : ndarray, shape (4,)\n"
+       "    The rotation, canonical (w >= 0), (x, y, z, w) or (w, x, y, z) if `scalar_first`.\n"
+       "rssd : float\n"
+       "    sqrt(sum_i w_i |a_i - R b_i|^2) over the finite weights [unit of a].\n"
+       "sensitivity : ndarray, shape (3, 3)\n"
+       "    Only with `return_sensitivity`: SciPy's covariance of the rotation-vector error [rad^2 per unit\n"
+       "    of measurement variance].\n"
+       "\n"
+       "Raises\n"
+       "------\n"
+       "ValueError\n"
+       "    `b` not of the shape of `a`, `weights` not of shape (N,), or `return_sensitivity` with one pair\n"
+       "    or an infinite weight (each message names the argument).\n"
+       "\n"
+       "Warns\n"
+       "-----\n"
+       "UserWarning\n"
+       "    When the optimal rotation is not unique or poorly defined (all pairs parallel, or zero weights).\n"
+       "\n"
+       "See Also\n"
+       "--------\n"
+       "quat_rotate\n"
+       "\n"
+       "Examples\n"
+       "--------\n"
+       "Vectors measured in B and known in W give the attitude q_WB:\n"
+       "\n"
+       ">>> q_WB = rd.rotvec_to_quat([0.3, -0.5, 1.1])\n"
+       ">>> b = np.array([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]])\n"
+       ">>> q, rssd = rd.align_vectors(rd.quat_rotate(q_WB, b), b)\n"
+       ">>> np.allclose(q, rd.quat_canonical(q_WB)), rssd < 1e-12\n"
+       "(True, True)")
+          .c_str());
 }
 
 }  // namespace rigiddyn::bindings
