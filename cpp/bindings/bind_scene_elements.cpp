@@ -258,9 +258,9 @@ constexpr const char* numpydoc_type(FieldKind kind) {
   return "";
 }
 
-// The numpydoc docstring: the spec's text, a Parameters section from the field table, the units note.
+// The numpydoc docstring: the spec's text, a Parameters section from the field table, the units note, the Examples.
 template <class Spec>
-std::string class_doc(const char* text) {
+std::string class_doc(const char* text, const char* example) {
   const Spec defaults{};
   std::string doc = std::string(text) + "\n\nParameters\n----------\n";
   bool physical = false;
@@ -275,7 +275,7 @@ std::string class_doc(const char* text) {
     doc += "\nEach argument with a unit takes a float in that unit or a pint quantity (any registry; converted to "
            "that unit, ValueError naming the argument for another dimension).";
   }
-  return doc;
+  return doc + "\n\nExamples\n--------\n" + example;
 }
 
 template <class Spec>
@@ -313,8 +313,8 @@ void def_init(py::class_<Spec>& cls, const char* name, std::index_sequence<I...>
 // Binds Spec as the Python class `name` (its docstring `text`): the constructor, read-only attributes,
 // a repr that evaluates back to an equal element, pickle, ==, and the class attribute `fields`.
 template <class Spec>
-void bind_element(py::module_& m, const char* name, const char* text) {
-  static const std::string doc = class_doc<Spec>(text);
+void bind_element(py::module_& m, const char* name, const char* text, const char* example) {
+  static const std::string doc = class_doc<Spec>(text, example);
   py::class_<Spec> cls(m, name, doc.c_str());
   def_init<Spec>(cls, name, std::make_index_sequence<field_count<Spec>()>());
   for_each_field<Spec>([&](const auto& f) {
@@ -372,6 +372,14 @@ constexpr const char* python_force_doc =
     "python bench/python/bench_scene.py). An exception raised by fn stops the run and propagates; a return "
     "value other than two finite 3-vectors raises TypeError/ValueError naming fn.";
 
+constexpr const char* python_force_example = R"py(The weight m g of a particle of 1 kg written in Python: it falls g t²/2:
+
+>>> weight = rd.PythonForce(lambda t, body, p_W, q_WB, v_W, w_B: ((0.0, 0.0, -9.81), (0.0, 0.0, 0.0)))
+>>> scene = rd.Scene([rd.Particle(1.0)], elements=[weight])
+>>> result = rd.simulate(scene, [rd.ParticleState()], 0.01, duration=1.0, method="rk4")
+>>> result.p_W[-1, 0].round(12)
+array([ 0.   ,  0.   , -4.905]))py";
+
 template <class Spec>
 const char* class_text() {
   if constexpr (std::is_same_v<Spec, FunctionForce>) {
@@ -381,9 +389,19 @@ const char* class_text() {
   }
 }
 
+// The class's Examples (each element's spec has its own, a compile error where one is missing)
+template <class Spec>
+const char* class_example() {
+  if constexpr (std::is_same_v<Spec, FunctionForce>) {
+    return python_force_example;
+  } else {
+    return Spec::example;
+  }
+}
+
 template <class... Spec>
 py::tuple bind_elements(py::module_& m, std::variant<Spec...>*) {
-  (bind_element<Spec>(m, class_name<Spec>(), class_text<Spec>()), ...);
+  (bind_element<Spec>(m, class_name<Spec>(), class_text<Spec>(), class_example<Spec>()), ...);
   return py::make_tuple(m.attr(class_name<Spec>())...);
 }
 

@@ -11,6 +11,7 @@
 
 #include <pybind11/pybind11.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <string>
@@ -20,9 +21,14 @@ namespace py = pybind11;
 namespace rigiddyn::bindings {
 namespace {
 
-// The default's text in a text signature: its repr when that is a Python literal (inspect evaluates it),
-// else "..." (the parameter has a default, which the docstring states).
+// The default's text in a text signature: its repr when that is a Python literal (inspect evaluates it), math.inf
+// for an infinite float (inspect looks the name up), else "..." (the parameter has a default, which the docstring
+// states).
 std::string default_text(const py::detail::argument_record& arg, const py::module_& ast) {
+  if (arg.value && PyFloat_Check(arg.value.ptr())) {
+    const double x = PyFloat_AsDouble(arg.value.ptr());
+    if (std::isinf(x)) return x > 0 ? "math.inf" : "-math.inf";
+  }
   if (!arg.descr) return "...";
   try {
     ast.attr("literal_eval")(arg.descr);

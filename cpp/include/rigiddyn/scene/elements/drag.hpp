@@ -31,6 +31,12 @@ struct Drag {
       "Linear and quadratic drag on the listed bodies: f_W = -(linear + quadratic |v_W|) v_W [N] at the centre "
       "of mass and tau_B = -(angular_linear + angular_quadratic |w_B|) w_B [N m]. Velocity-dependent: the "
       "splitting methods warn (SceneCompatibilityWarning).";
+  static constexpr const char* example = R"py(Linear drag slows a particle exponentially, v(t) = v0 exp(-c t/m):
+
+>>> scene = rd.Scene([rd.Particle(2.0)], elements=[rd.Drag(linear=1.0)])
+>>> result = rd.simulate(scene, [rd.ParticleState(v_W=(1.0, 0.0, 0.0))], 1e-3, duration=2.0, method="rk4")
+>>> bool(np.isclose(result.v_W[-1, 0, 0], np.exp(-1.0), rtol=1e-10))
+True)py";  // the docstring's Examples (run as doctests)
   using Term = DragTerm;  // what compile makes of it
   double linear = 0.0;
   double quadratic = 0.0;

@@ -47,6 +47,14 @@ struct GravityGradient {
       "The gravity-gradient (MacCullagh) term of a central attractor gm at p_W in W on extended bodies: torque "
       "tau_B = 3 gm/|r|^5 r_B x (I r_B) [N m] and the matching force, so that the potential V2 = -gm/(2|r|^3) "
       "(tr I - 3 r^T I_W r/|r|^2) [J] is conserved with the motion; no effect on particles.";
+  static constexpr const char* example = R"py(A body on a circular orbit at rest in W feels the torque 3 gm/|r|³ r̂ × I r̂ (here zero: r̂ along a principal
+axis, an equilibrium):
+
+>>> scene = rd.Scene([rd.RigidBody(1.0, [1.0, 2.0, 3.0])], elements=[rd.GravityGradient(gm=1.0)])
+>>> start = rd.RigidBodyState(p_W=(10.0, 0.0, 0.0))
+>>> result = rd.simulate(scene, [start], 0.01, steps=10, method="rk4")
+>>> bool(np.allclose(result.w_B[-1, 0], 0.0, atol=1e-15))
+True)py";  // the docstring's Examples (run as doctests)
   using Term = GravityGradientTerm;  // what compile makes of it
   double gm = 0.0;
   Eigen::Vector3d p_W = Eigen::Vector3d::Zero();

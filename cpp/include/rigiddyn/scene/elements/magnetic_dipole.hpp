@@ -44,6 +44,13 @@ struct MagneticDipole {
       "uniform field), potential V = -m_W . B [J]: the motion conserves T + V. A compass needle of moment of "
       "inertia I swings at sqrt(|m| |B| / I) [rad/s] for small angles. Particles (no attitude) are skipped; a "
       "planar body keeps the in-plane force and tau_z.";
+  static constexpr const char* example = R"py(A compass needle (dipole m along its x axis) in a uniform field along x is at rest: no torque:
+
+>>> needle = rd.RigidBody(1.0, [1e-4, 1e-3, 1e-3])
+>>> field = rd.MagneticDipole(m_B=(1.0, 0.0, 0.0), B_W=(1e-4, 0.0, 0.0))
+>>> result = rd.simulate(rd.Scene([needle], elements=[field]), [rd.RigidBodyState()], 0.01, steps=100, method="rk4")
+>>> bool(np.allclose(result.w_B[-1, 0], 0.0, atol=1e-15))
+True)py";  // the docstring's Examples (run as doctests)
   using Term = MagneticDipoleTerm;  // what compile makes of it
   Eigen::Vector3d m_B = Eigen::Vector3d::Zero();
   Eigen::Vector3d B_W = Eigen::Vector3d::Zero();

@@ -33,6 +33,16 @@ struct MutualGravity {
       "Newtonian gravity between the listed bodies (direct O(N^2) sum over the pairs): f on i = -G m_i m_j "
       "r/(|r|^2 + softening^2)^(3/2), r = p_i - p_j [N], potential V = sum -G m_i m_j/sqrt(|r|^2 + softening^2)"
       " [J].";
+  static constexpr const char* example = R"py(Two bodies attract each other: their momentum stays zero and their energy is kept to the method's error:
+
+>>> bodies = [rd.Particle(1.0), rd.Particle(1.0)]
+>>> scene = rd.Scene(bodies, elements=[rd.MutualGravity(G=1.0)])
+>>> start = [rd.ParticleState(p_W=(-0.5, 0.0, 0.0), v_W=(0.0, -0.5, 0.0)),
+...          rd.ParticleState(p_W=(0.5, 0.0, 0.0), v_W=(0.0, 0.5, 0.0))]
+>>> result = rd.simulate(scene, start, 1e-3, duration=5.0, method="rk4")
+>>> E = result.total_energy
+>>> bool(np.allclose(result.linear_momentum_W[-1], 0.0, atol=1e-14)), bool(abs(E[-1] - E[0]) < 1e-9)
+(True, True))py";  // the docstring's Examples (run as doctests)
   using Term = MutualGravityTerm;  // what compile makes of it
   double G = 6.67430e-11;
   double softening = 0.0;

@@ -31,6 +31,13 @@ struct PointMassGravity {
   static constexpr const char* doc =  // the Python class's docstring
       "A fixed attractor of gravitational parameter gm at p_W in W: on each listed body f_W = -gm m r/(|r|^2 + "
       "softening^2)^(3/2), r = p_body - p_W, potential V = -gm m/sqrt(|r|^2 + softening^2) [J].";
+  static constexpr const char* example = R"py(A particle on a circular orbit of radius 1 about gm = 1 comes back after one period 2π:
+
+>>> scene = rd.Scene([rd.Particle(1.0)], elements=[rd.PointMassGravity(gm=1.0)])
+>>> start = rd.ParticleState(p_W=(1.0, 0.0, 0.0), v_W=(0.0, 1.0, 0.0))
+>>> result = rd.simulate(scene, [start], 2 * np.pi / 1000, steps=1000, method="rk4")
+>>> bool(np.allclose(result.p_W[-1, 0], [1.0, 0.0, 0.0], atol=1e-9))
+True)py";  // the docstring's Examples (run as doctests)
   using Term = PointMassGravityTerm;  // what compile makes of it
   double gm = 0.0;
   Eigen::Vector3d p_W = Eigen::Vector3d::Zero();

@@ -42,6 +42,15 @@ struct ReactionWheel {
       "A run splits its steps at t_start and t_end. At a constant wheel speed the body's kinetic energy and "
       "the total angular momentum R (I w + h) are conserved; spinning the wheel up about a principal axis turns "
       "the body by -J/I times the wheel's angle. Rigid bodies, free or pinned.";
+  static constexpr const char* example = R"py(A wheel (J = 0.1 kg m²) spun up to 1 rad/s about z turns a body (I = 1 kg m², wheel included) the other way at
+J/I × 1 rad/s, so that the total angular momentum stays zero:
+
+>>> body = rd.RigidBody(10.0, [1.0, 1.0, 1.0])
+>>> wheel = rd.ReactionWheel(body=0, axis_B=(0.0, 0.0, 1.0), inertia=0.1, acceleration=1.0, t_end=1.0)
+>>> result = rd.simulate(rd.Scene([body], elements=[wheel]), [rd.RigidBodyState()], 0.01, duration=2.0,
+...                      method="rk4")
+>>> result.w_B[-1, 0].round(12)
+array([ 0. ,  0. , -0.1]))py";  // the docstring's Examples (run as doctests)
   using Term = ReactionWheelTerm;  // what compile makes of it
   int body = 0;
   Eigen::Vector3d axis_B = Eigen::Vector3d::UnitZ();

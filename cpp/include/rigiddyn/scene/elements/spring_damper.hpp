@@ -40,6 +40,15 @@ struct SpringDamper {
       "- rest_length) + damping dl/dt) u, u = (x_a - x_b)/l, l = |x_a - x_b| [N], along the line (no force at l"
       " = 0), so the pair conserves momentum and angular momentum; the opposite on b; torque r x f about each "
       "centre of mass. Potential V = stiffness (l - rest_length)^2/2 [J].";
+  static constexpr const char* example = R"py(A mass on a spring to a world anchor oscillates at ω = √(k/m): after one period 2π√(m/k) it is back at its
+start:
+
+>>> scene = rd.Scene([rd.Particle(2.0)], elements=[rd.SpringDamper(body_a=0, stiffness=8.0)])
+>>> start = rd.ParticleState(p_W=(0.1, 0.0, 0.0))
+>>> period = 2 * np.pi * np.sqrt(2.0 / 8.0)
+>>> result = rd.simulate(scene, [start], period / 1000, steps=1000, method="rk4")
+>>> result.p_W[-1, 0].round(9)
+array([0.1, 0. , 0. ]))py";  // the docstring's Examples (run as doctests)
   using Term = SpringDamperTerm;  // what compile makes of it
   int body_a = 0;
   Eigen::Vector3d point_a_B = Eigen::Vector3d::Zero();

@@ -44,6 +44,13 @@ struct Thrust {
       " in the scene frame W), applied at r_B in B from the centre of mass (adds the torque r_B x f_B). "
       "Scene.add refuses it (ValueError naming element.body) on a body without a MassFlow. No potential; its "
       "power is in SceneResult.power.";
+  static constexpr const char* example = R"py(A rocket particle that burns half its mass at 10 m/s exhaust speed gains 10 ln 2 m/s (Tsiolkovsky):
+
+>>> rocket = rd.Scene([rd.Particle(2.0)], elements=[rd.Thrust(body=0, u_rel=(-10.0, 0.0, 0.0), frame="world")],
+...                   mass_flows=[rd.MassFlow(rate=-0.5)])
+>>> result = rd.simulate(rocket, [rd.ParticleState()], 0.01, duration=2.0, method="rk4")
+>>> round(float(result.mass[-1, 0]), 12), bool(np.isclose(result.v_W[-1, 0, 0], 10 * np.log(2.0), rtol=1e-9))
+(1.0, True))py";  // the docstring's Examples (run as doctests)
   static constexpr bool keyword_only = false;  // its Python class also takes its fields by position
   using Term = ThrustTerm;  // what compile makes of it
   int body = 0;

@@ -24,6 +24,12 @@ struct UniformGravity {
   static constexpr const char* doc =  // the Python class's docstring
       "Uniform gravity on the listed bodies: f_W = m g_W at each centre of mass, potential V = -m g_W . p_W "
       "[J]. A planar body keeps the in-plane part (the plane takes the rest).";
+  static constexpr const char* example = R"py(A particle dropped from rest falls g t²/2 in t seconds:
+
+>>> scene = rd.Scene([rd.Particle(1.0)], elements=[rd.UniformGravity(g_W=(0.0, 0.0, -9.81))])
+>>> result = rd.simulate(scene, [rd.ParticleState()], 0.01, duration=2.0, method="rk4")
+>>> result.p_W[-1, 0].round(12)
+array([  0.  ,   0.  , -19.62]))py";  // the docstring's Examples (run as doctests)
   using Term = UniformGravityTerm;  // what compile makes of it
   Eigen::Vector3d g_W = Eigen::Vector3d(0.0, 0.0, -9.81);  // standard gravity, downwards along −z_W
   BodyList bodies;
