@@ -241,27 +241,52 @@ void bind_value_protocol(py::class_<Spatial>& c, const std::string& type) {
 }
 
 void bind_motion(py::module_& m) {
-  py::class_<Motion> c(m, "Motion",
-                       "Spatial motion vector (twist) [w; v], angular part first: w angular velocity [rad/s], v\n"
-                       "velocity [m/s] of the body point at the origin of the frame of expression.");
+  py::class_<Motion> c(
+      m, "Motion",
+      "Spatial motion vector (twist) V = [w; v], angular part first.\n\n"
+      "w is the angular velocity [rad/s] and v the velocity [m/s] of the body point at the origin of the frame\n"
+      "of expression, both expressed in that frame: Plücker coordinates in Featherstone's convention (\"Rigid\n"
+      "Body Dynamics Algorithms\"), the order of MuJoCo, Drake and RigidBodyDynamics.jl (Pinocchio puts\n"
+      "the linear part first). The order matters only at to_vector / from_vector.\n\n"
+      "Parameters\n----------\n"
+      "angular : array_like, shape (3,), optional\n    w [rad/s] (None: zero).\n"
+      "linear : array_like, shape (3,), optional\n    v [m/s] of the body point at the frame's origin (None: zero).\n\n"
+      "Raises\n------\nValueError\n    A part of another shape or non-finite (the message names it).\n\n"
+      "See Also\n--------\nForce, Transform, motion_cross_matrix, twist_to_screw\n\n"
+      "Examples\n--------\n"
+      "The power w . n + v . f of a force on a motion is the same in every frame:\n\n"
+      ">>> V = rd.Motion([0.0, 0.0, 1.0], [1.0, 0.0, 0.0])\n"
+      ">>> V.to_vector()\narray([0., 0., 1., 1., 0., 0.])\n"
+      ">>> F = rd.Force([0.0, 0.0, 2.0], [0.0, 3.0, 0.0])\n"
+      ">>> X = rd.Transform(rd.rot_z(np.pi / 2), [1.0, 0.0, 0.0])\n"
+      ">>> V.dot(F), bool(np.isclose(X.act(V).dot(X.act(F)), V.dot(F)))\n(2.0, True)\n\n"
+      "Immutable; supports +, -, scalar *; pickles; == compares exactly.");
   c.def(py::init([](py::handle angular, py::handle linear) {
          return Motion(py_io::as_vector3_or_zero(angular, "angular"), py_io::as_vector3_or_zero(linear, "linear"));
        }),
-       "angular"_a = py::none(), "linear"_a = py::none(), "Motion from w (3,) [rad/s] and v (3,) [m/s] (None: zero).")
+       "angular"_a = py::none(), "linear"_a = py::none(),
+       "Motion from w (3,) [rad/s] and v (3,) [m/s] in one frame (None: zero); see the class.")
       .def_property_readonly("angular", [](const Motion& s) { return read_only(s.angular); },
                              "w (3,) [rad/s], expressed in the frame of the motion; read-only copy")
       .def_property_readonly("linear", [](const Motion& s) { return read_only(s.linear); },
-                             "v (3,) [m/s] of the body point at the frame's origin, expressed in that frame; read-only copy")
-      .def("to_vector", [](const Motion& s) { return py_io::to_array(s.to_vector()); }, "[w; v] as a (6,) array.")
+                             "v (3,) [m/s] of the body point at the frame's origin, expressed in that frame; "
+                             "read-only copy")
+      .def("to_vector", [](const Motion& s) { return py_io::to_array(s.to_vector()); },
+           "[w; v] as a (6,) array, angular first ([rad/s], [m/s]), in the motion's frame.")
       .def_static("from_vector", [](py::handle v) { return Motion::from_vector(py_io::as_vector6(v, "vector")); },
-                  "vector"_a, "Motion from a (6,) array [w; v].")
+                  "vector"_a,
+                  "Motion from a (6,) array [w; v], angular first ([rad/s], [m/s]); ValueError on another shape or "
+                  "NaN/Inf.")
       .def(
           "cross", [](const Motion& s, py::handle other) { return checked(s.cross(as_motion(other, "other")), "Motion.cross"); },
-          "other"_a, "Motion cross product (crm): self x other = [w1 x w2; w1 x v2 + v1 x w2].")
+          "other"_a,
+          "Motion cross product (crm): self x other = [w1 x w2; w1 x v2 + v1 x w2], in the common frame\n"
+          "([rad/s^2], [m/s^2] for two twists).")
       .def(
           "cross_force",
           [](const Motion& s, py::handle force) { return checked(s.cross(as_force(force, "force")), "Motion.cross_force"); },
-          "force"_a, "Force cross product (crf): self x* force = [w x n + v x f; w x f].")
+          "force"_a,
+          "Force cross product (crf): self x* force = [w x n + v x f; w x f] ([N m/s], [N/s]), in the common frame.")
       .def(
           "dot",
           [](const Motion& s, py::handle force) {
@@ -273,20 +298,36 @@ void bind_motion(py::module_& m) {
 }
 
 void bind_force(py::module_& m) {
-  py::class_<Force> c(m, "Force",
-                      "Spatial force vector (wrench) [n; f], angular part first: n moment [N m] about the\n"
-                      "origin of the frame of expression, f force [N].");
+  py::class_<Force> c(
+      m, "Force",
+      "Spatial force vector (wrench) F = [n; f], angular part first.\n\n"
+      "n is the moment [N m] about the origin of the frame of expression and f the force [N], both expressed in\n"
+      "that frame: Featherstone's convention (\"Rigid Body Dynamics Algorithms\"), moment first as in\n"
+      "MuJoCo and Drake. The order matters only at to_vector / from_vector.\n\n"
+      "Parameters\n----------\n"
+      "angular : array_like, shape (3,), optional\n    n [N m] about the frame's origin (None: zero).\n"
+      "linear : array_like, shape (3,), optional\n    f [N] (None: zero).\n\n"
+      "Raises\n------\nValueError\n    A part of another shape or non-finite (the message names it).\n\n"
+      "See Also\n--------\nMotion, Transform, force_cross_matrix\n\n"
+      "Examples\n--------\n"
+      "A force f = (0, 1, 0) [N] through (1, 0, 0) [m], moved to the origin, has the moment p x f:\n\n"
+      ">>> F = rd.Transform(translation=[1.0, 0.0, 0.0]).act(rd.Force(linear=[0.0, 1.0, 0.0]))\n"
+      ">>> F.to_vector()\narray([0., 0., 1., 0., 1., 0.])\n\n"
+      "Immutable; supports +, -, scalar *; pickles; == compares exactly.");
   c.def(py::init([](py::handle angular, py::handle linear) {
          return Force(py_io::as_vector3_or_zero(angular, "angular"), py_io::as_vector3_or_zero(linear, "linear"));
        }),
-       "angular"_a = py::none(), "linear"_a = py::none(), "Force from n (3,) [N m] and f (3,) [N] (None: zero).")
+       "angular"_a = py::none(), "linear"_a = py::none(),
+       "Force from n (3,) [N m] and f (3,) [N] in one frame (None: zero); see the class.")
       .def_property_readonly("angular", [](const Force& s) { return read_only(s.angular); },
                              "n (3,) [N m]: moment about the frame's origin, expressed in that frame; read-only copy")
       .def_property_readonly("linear", [](const Force& s) { return read_only(s.linear); },
                              "f (3,) [N], expressed in the frame of the force; read-only copy")
-      .def("to_vector", [](const Force& s) { return py_io::to_array(s.to_vector()); }, "[n; f] as a (6,) array.")
+      .def("to_vector", [](const Force& s) { return py_io::to_array(s.to_vector()); },
+           "[n; f] as a (6,) array, moment first ([N m], [N]), in the force's frame.")
       .def_static("from_vector", [](py::handle v) { return Force::from_vector(py_io::as_vector6(v, "vector")); },
-                  "vector"_a, "Force from a (6,) array [n; f].");
+                  "vector"_a,
+                  "Force from a (6,) array [n; f], moment first ([N m], [N]); ValueError on another shape or NaN/Inf.");
   bind_value_protocol(c, "Force");
   bind_linear_operators(c, "Force");
 }
@@ -300,16 +341,29 @@ py::object act_on(py::handle spatial_vector, const char* quantity, Act act) {
 }
 
 void bind_transform(py::module_& m) {
-  py::class_<Transform>(m, "Transform",
-                        "Rigid transform X_AB: R_AB (B coordinates -> A coordinates) and p_AB (B's origin in A)\n"
-                        "[m]. Maps points, motions and forces expressed in B to A; X_AB * X_BC = X_AC.")
+  py::class_<Transform>(
+      m, "Transform",
+      "Rigid transform X_AB: R_AB (B coordinates -> A coordinates) and p_AB (B's origin in A) [m].\n\n"
+      "Maps points (p_A = R_AB p_B + p_AB), motions and forces expressed in B to A; X_AB * X_BC = X_AC. On\n"
+      "spatial vectors (angular part first) it is Featherstone's X (motion_matrix) and X* (force_matrix).\n\n"
+      "Parameters\n----------\n"
+      "rotation : array_like, shape (3, 3), optional\n    R_AB, orthonormal with det +1 (None: identity).\n"
+      "translation : array_like, shape (3,), optional\n    p_AB [m], B's origin in A (None: zero).\n\n"
+      "Raises\n------\nValueError\n    A non-rotation or non-finite input (the message names it).\n\n"
+      "See Also\n--------\ntransform_compose, transform_points, Motion, Force\n\n"
+      "Examples\n--------\n"
+      "B turned a quarter turn about z, its origin at (1, 0, 0) in A:\n\n"
+      ">>> X_AB = rd.Transform(rd.rot_z(np.pi / 2), [1.0, 0.0, 0.0])\n"
+      ">>> X_AB.act_point([1.0, 0.0, 0.0]).round(12)\narray([1., 1., 0.])\n"
+      ">>> (X_AB * X_AB.inverse()).is_approx(rd.Transform())\nTrue\n\n"
+      "Immutable; pickles; == compares exactly.")
       .def(py::init([](py::handle rotation, py::handle translation) {
              return Transform(py_io::as_matrix3_or_identity(rotation, "rotation"),
                               py_io::as_vector3_or_zero(translation, "translation"));
            }),
            "rotation"_a = py::none(), "translation"_a = py::none(),
            "X_AB from rotation R_AB (3,3), orthonormal with det +1 (default identity), and translation\n"
-           "p_AB (3,) [m] (default zero). ValueError on a non-rotation or non-finite input.")
+           "p_AB (3,) [m] (default zero); see the class. ValueError on a non-rotation or non-finite input.")
       .def_static(
           "from_quat",
           [](py::handle q, py::handle translation, py::handle scalar_first) {
@@ -320,9 +374,9 @@ void bind_transform(py::module_& m) {
           "X_AB from the unit quaternion q_AB (4,) ((x, y, z, w), or (w, x, y, z) if scalar_first) and\n"
           "p_AB (3,) [m] (default zero).")
       .def_property_readonly("rotation", [](const Transform& X) { return read_only(X.rotation()); },
-                             "R_AB (3,3), read-only copy")
+                             "R_AB (3,3): maps B coordinates to A coordinates; read-only copy")
       .def_property_readonly("translation", [](const Transform& X) { return read_only(X.translation()); },
-                             "p_AB (3,) [m], read-only copy")
+                             "p_AB (3,) [m]: B's origin relative to A's, expressed in A; read-only copy")
       .def(
           "quat",
           [](const Transform& X, py::handle scalar_first) { return py_io::to_array(X.quat(), as_scalar_first(scalar_first)); },
@@ -361,7 +415,8 @@ void bind_transform(py::module_& m) {
                                    [](const Transform& a, const Transform& b) { return a * b; });
           },
           py::is_operator(), "X_AB * X_BC = X_AC.")
-      .def("inverse", [](const Transform& X) { return checked(X.inverse(), "Transform.inverse"); }, "X_BA = X_AB^-1.")
+      .def("inverse", [](const Transform& X) { return checked(X.inverse(), "Transform.inverse"); },
+           "X_BA = X_AB^-1: R_BA = R_AB^T, p_BA = -R_AB^T p_AB [m].")
       .def("motion_matrix", [](const Transform& X) { return py_io::finite_result(X.motion_matrix(), "Transform.motion_matrix"); },
            "Featherstone's X (6,6), angular first: [[R, 0], [hat(p) R, R]].")
       .def("force_matrix", [](const Transform& X) { return py_io::finite_result(X.force_matrix(), "Transform.force_matrix"); },
@@ -396,10 +451,22 @@ void bind_transform(py::module_& m) {
 }
 
 void bind_screw(py::module_& m) {
-  py::class_<Screw>(m, "Screw",
-                    "Screw of a twist (instantaneous screw axis): unit direction, point of the axis closest to\n"
-                    "the origin [m], pitch [m/rad] (inf for a pure translation) and magnitude (|w| [rad/s], or\n"
-                    "|v| [m/s] for a pure translation), all in the twist's frame.")
+  py::class_<Screw>(
+      m, "Screw",
+      "Screw of a twist (instantaneous screw axis), all in the twist's frame.\n\n"
+      "A unit direction, the point of the axis closest to the origin [m], the pitch [m/rad] (inf for a pure\n"
+      "translation) and the magnitude (|w| [rad/s], or |v| [m/s] for a pure translation): the twist turns at\n"
+      "`magnitude` about the axis while it slides along it at pitch times that.\n\n"
+      "Parameters\n----------\n"
+      "direction : array_like, shape (3,)\n    Unit axis direction (checked by screw_to_twist).\n"
+      "point : array_like, shape (3,)\n    A point of the axis [m].\n"
+      "pitch : float\n    Translation per turn angle [m/rad]; inf for a pure translation.\n"
+      "magnitude : float\n    |w| [rad/s] (or |v| [m/s] for pitch inf).\n\n"
+      "See Also\n--------\ntwist_to_screw, screw_to_twist, Motion\n\n"
+      "Examples\n--------\n"
+      ">>> s = rd.Screw([0.0, 0.0, 1.0], [-1.0, 0.0, 0.0], 0.25, 2.0)\n"
+      ">>> rd.screw_to_twist(s).to_vector()\narray([0. , 0. , 2. , 0. , 2. , 0.5])\n\n"
+      "Immutable; pickles; == compares every part exactly.")
       .def(py::init([](py::handle direction, py::handle point, py::handle pitch, py::handle magnitude) {
              return Screw{py_io::as_vector3(direction, "direction"), py_io::as_vector3(point, "point"),
                           py_io::as_extended_real(pitch, "pitch"), py_io::as_scalar(magnitude, "magnitude")};
@@ -408,11 +475,12 @@ void bind_screw(py::module_& m) {
            "Screw from its parts (checked by screw_to_twist): direction (3,) unit, point (3,) [m], pitch [m/rad]\n"
            "(inf: pure translation), magnitude [rad/s] (or [m/s]).")
       .def_property_readonly("direction", [](const Screw& s) { return read_only(s.direction); },
-                             "unit (3,), expressed in the twist's frame")
+                             "Unit axis direction (3,), expressed in the twist's frame.")
       .def_property_readonly("point", [](const Screw& s) { return read_only(s.point); },
-                             "(3,) [m], the point of the axis closest to the twist's frame's origin, expressed in that frame")
-      .def_readonly("pitch", &Screw::pitch, "[m/rad]; inf for a pure translation")
-      .def_readonly("magnitude", &Screw::magnitude, "|w| [rad/s], or |v| [m/s] for a pure translation")
+                             "(3,) [m], the point of the axis closest to the twist's frame's origin, expressed in "
+                             "that frame")
+      .def_readonly("pitch", &Screw::pitch, "Pitch [m/rad] along the axis; inf for a pure translation.")
+      .def_readonly("magnitude", &Screw::magnitude, "Magnitude |w| [rad/s], or |v| [m/s] for a pure translation.")
       .def(
           "__eq__",
           [](const Screw& a, py::handle b) {
@@ -444,17 +512,38 @@ void bind_screw(py::module_& m) {
           }));
   m.def(
       "twist_to_screw", [](py::handle twist) { return twist_to_screw(as_motion(twist, "twist")); }, "twist"_a,
-        "The screw (instantaneous screw axis) of a twist [w; v]: direction w/|w|, point (w x v)/|w|^2,\n"
-        "pitch (w . v)/|w|^2, magnitude |w|; for w = 0: pitch inf, direction v/|v|, point 0, magnitude |v|.\n"
-        "ValueError for the zero twist (no axis).");
+        "The screw (instantaneous screw axis) of a twist.\n\n"
+        "For V = [w; v] (angular first): direction w/|w|, point (w x v)/|w|^2, pitch (w . v)/|w|^2, magnitude\n"
+        "|w|; for w = 0: pitch inf, direction v/|v|, point 0, magnitude |v|. Chasles' theorem: every rigid\n"
+        "motion is a rotation about the axis with a slide along it.\n\n"
+        "Parameters\n----------\ntwist : Motion\n    [w; v] ([rad/s], [m/s]) in any frame.\n\n"
+        "Returns\n-------\nScrew\n    Its axis, pitch [m/rad] and magnitude, in the twist's frame.\n\n"
+        "Raises\n------\nValueError\n    The zero twist (no axis), or a non-finite one.\nTypeError\n"
+        "    twist not a Motion.\n\n"
+        "See Also\n--------\nscrew_to_twist, Screw\n\n"
+        "Examples\n--------\n"
+        ">>> s = rd.twist_to_screw(rd.Motion([0.0, 0.0, 2.0], [0.0, 2.0, 0.5]))\n"
+        ">>> s.direction, s.point, s.pitch, s.magnitude\n"
+        "(array([0., 0., 1.]), array([-1.,  0.,  0.]), 0.25, 2.0)\n"
+        ">>> rd.twist_to_screw(rd.Motion(linear=[0.0, 0.0, 3.0])).pitch\ninf\n");
   m.def(
       "screw_to_twist",
       [](py::handle screw) {
         return checked(screw_to_twist(py_io::as_instance<Screw>(screw, "screw", "a Screw")), "screw_to_twist");
       },
       "screw"_a,
-        "The twist of a screw: w = magnitude direction, v = magnitude (point x direction + pitch direction)\n"
-        "(v = magnitude direction for pitch inf).");
+        "The twist of a screw, inverse of twist_to_screw.\n\n"
+        "w = magnitude direction, v = magnitude (point x direction + pitch direction) (v = magnitude direction for\n"
+        "pitch inf), angular part first.\n\n"
+        "Parameters\n----------\nscrew : Screw\n    Unit direction, point [m], pitch [m/rad], magnitude.\n\n"
+        "Returns\n-------\nMotion\n    [w; v] ([rad/s], [m/s]) in the screw's frame.\n\n"
+        "Raises\n------\nValueError\n"
+        "    A direction that is not a unit vector, or a non-finite part (the message names it).\n"
+        "TypeError\n    screw not a Screw.\n\n"
+        "See Also\n--------\ntwist_to_screw, Screw\n\n"
+        "Examples\n--------\n"
+        ">>> V = rd.Motion([0.0, 0.0, 2.0], [0.0, 2.0, 0.5])\n"
+        ">>> rd.screw_to_twist(rd.twist_to_screw(V)) == V\nTrue\n");
 }
 
 }  // namespace
@@ -475,17 +564,66 @@ void bind_spatial(py::module_& m) {
   m.def(
       "motion_cross_matrix",
       [](py::handle motion) { return py_io::to_array(motion_cross_matrix(as_motion(motion, "motion"))); }, "motion"_a,
-      "crm(V) (6,6) = [[hat(w), 0], [hat(v), hat(w)]] of the motion V = [w; v], so crm(V) V2 = V x V2.");
+      "Motion cross-product matrix crm(V) (Featherstone, \"Rigid Body Dynamics Algorithms\").\n\n"
+      "crm(V) = [[hat(w), 0], [hat(v), hat(w)]] for V = [w; v] (angular first), so that crm(V) V2 = V x V2\n"
+      "(Motion.cross).\n\n"
+      "Parameters\n----------\nmotion : Motion\n    V = [w; v] ([rad/s], [m/s]).\n\n"
+      "Returns\n-------\nndarray, shape (6, 6)\n    crm(V), in V's frame (hat(w) blocks [rad/s], hat(v) block [m/s]).\n\n"
+      "Raises\n------\nTypeError\n    motion not a Motion.\n\n"
+      "See Also\n--------\nforce_cross_matrix, Motion.cross\n\n"
+      "Examples\n--------\n"
+      ">>> V, V2 = rd.Motion([0.0, 0.0, 1.0], [1.0, 0.0, 0.0]), rd.Motion([1.0, 2.0, 3.0], [4.0, 5.0, 6.0])\n"
+      ">>> bool(np.allclose(rd.motion_cross_matrix(V) @ V2.to_vector(), V.cross(V2).to_vector()))\nTrue\n"
+      ">>> bool(np.allclose(rd.motion_cross_matrix(V) @ V.to_vector(), 0.0))  # V x V = 0\nTrue\n");
   m.def(
       "force_cross_matrix",
       [](py::handle motion) { return py_io::to_array(force_cross_matrix(as_motion(motion, "motion"))); }, "motion"_a,
-      "crf(V) (6,6) = [[hat(w), hat(v)], [0, hat(w)]] = -crm(V)^T of the motion V = [w; v], so crf(V) F = V x* F.");
+      "Force cross-product matrix crf(V) (Featherstone, \"Rigid Body Dynamics Algorithms\").\n\n"
+      "crf(V) = [[hat(w), hat(v)], [0, hat(w)]] = -crm(V)^T for V = [w; v] (angular first), so that\n"
+      "crf(V) F = V x* F (Motion.cross_force), as in the Newton-Euler equation I a + V x* I V.\n\n"
+      "Parameters\n----------\nmotion : Motion\n    V = [w; v] ([rad/s], [m/s]).\n\n"
+      "Returns\n-------\nndarray, shape (6, 6)\n    crf(V), in V's frame (hat(w) blocks [rad/s], hat(v) block [m/s]).\n\n"
+      "Raises\n------\nTypeError\n    motion not a Motion.\n\n"
+      "See Also\n--------\nmotion_cross_matrix, Motion.cross_force\n\n"
+      "Examples\n--------\n"
+      ">>> V, F = rd.Motion([0.0, 0.0, 1.0], [1.0, 0.0, 0.0]), rd.Force([0.0, 0.0, 2.0], [0.0, 3.0, 0.0])\n"
+      ">>> bool(np.allclose(rd.force_cross_matrix(V), -rd.motion_cross_matrix(V).T))\nTrue\n"
+      ">>> bool(np.allclose(rd.force_cross_matrix(V) @ F.to_vector(), V.cross_force(F).to_vector()))\nTrue\n");
   m.def("transform_compose", &transform_compose, "R_AB"_a, "p_AB"_a, "R_BC"_a, "p_BC"_a,
-        "X_AC = X_AB * X_BC item by item: R_AC = R_AB R_BC, p_AC = R_AB p_BC + p_AB. Rotations (3,3) or\n"
-        "(n,3,3), translations (3,) or (n,3) [m]; single items broadcast. Returns (R_AC, p_AC).");
+        "Compose rigid transforms item by item, X_AC = X_AB * X_BC, on arrays.\n\n"
+        "R_AC = R_AB R_BC, p_AC = R_AB p_BC + p_AB, as Transform.__mul__, for stacks of n transforms; a single\n"
+        "item broadcasts against the stacked ones.\n\n"
+        "Parameters\n----------\n"
+        "R_AB : array_like, shape (3, 3) or (n, 3, 3)\n    Rotations B -> A (orthonormal, det +1).\n"
+        "p_AB : array_like, shape (3,) or (n, 3)\n    B's origin in A [m].\n"
+        "R_BC : array_like, shape (3, 3) or (n, 3, 3)\n    Rotations C -> B.\n"
+        "p_BC : array_like, shape (3,) or (n, 3)\n    C's origin in B [m].\n\n"
+        "Returns\n-------\nR_AC : ndarray, shape (3, 3) or (n, 3, 3)\n    Rotations C -> A.\n"
+        "p_AC : ndarray, shape (3,) or (n, 3)\n    C's origin in A [m] (stacked if any input is).\n\n"
+        "Raises\n------\nValueError\n"
+        "    A non-rotation (naming it and the item, e.g. R_AB[2]), a non-finite value, a bad shape, or\n"
+        "    stacks of different lengths (naming the argument).\n\n"
+        "See Also\n--------\nTransform, transform_points\n\n"
+        "Examples\n--------\n"
+        "Two quarter turns about z, each with a step of 1 m along its frame's x:\n\n"
+        ">>> R, p = rd.transform_compose(rd.rot_z(np.pi / 2), [1.0, 0, 0], rd.rot_z(np.pi / 2), [1.0, 0, 0])\n"
+        ">>> bool(np.allclose(R, rd.rot_z(np.pi))), p.round(12)\n(True, array([1., 1., 0.]))\n");
   m.def("transform_points", &transform_points, "R_AB"_a, "p_AB"_a, "p_B"_a,
-        "p_A = R_AB p_B + p_AB item by item: R_AB (3,3)|(n,3,3), p_AB (3,)|(n,3), p_B (3,)|(n,3) [m];\n"
-        "single items broadcast.");
+        "Map points from frame B to frame A item by item: p_A = R_AB p_B + p_AB, on arrays.\n\n"
+        "As Transform.act_point for stacks of n transforms or points; a single item broadcasts against the\n"
+        "stacked ones.\n\n"
+        "Parameters\n----------\n"
+        "R_AB : array_like, shape (3, 3) or (n, 3, 3)\n    Rotations B -> A (orthonormal, det +1).\n"
+        "p_AB : array_like, shape (3,) or (n, 3)\n    B's origin in A [m].\n"
+        "p_B : array_like, shape (3,) or (n, 3)\n    Points in B [m].\n\n"
+        "Returns\n-------\nndarray, shape (3,) or (n, 3)\n    p_A, the points in A [m] (stacked if any input is).\n\n"
+        "Raises\n------\nValueError\n"
+        "    A non-rotation, a non-finite value, a bad shape, or stacks of different lengths (naming the\n"
+        "    argument).\n\n"
+        "See Also\n--------\nTransform.act_point, transform_compose\n\n"
+        "Examples\n--------\n"
+        ">>> rd.transform_points(rd.rot_z(np.pi / 2), [1.0, 0.0, 0.0], [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0]]).round(12)\n"
+        "array([[1., 1., 0.],\n       [0., 0., 0.]])\n");
 }
 
 }  // namespace rigiddyn::bindings
