@@ -519,7 +519,12 @@ void bind_thrust(py::module_& m) {
           "mass_at", [](const ConstantThrustSolution& s, py::handle t) {
             return py_io::finite_result(s.mass_at(py_io::as_scalar(t, "t")), "ConstantThrustSolution.mass_at");
           },
-          py::arg("t"), "Mass m0 + rate t [kg] at time t [s] (not checked positive).")
+          py::arg("t"),
+          "Mass m0 + rate t [kg] at time t (not checked positive).\n\n"
+          "Parameters\n----------\nt : float\n    Time [s].\n\n"
+          "Returns\n-------\nfloat\n    m0 + rate t [kg].\n\n"
+          "Examples\n--------\n"
+          ">>> rd.ConstantThrustSolution(100.0, -1.0, [0.0, 0.0, -2000.0]).mass_at(10.0)\n90.0\n")
       .def_property_readonly("burnout_time", &ConstantThrustSolution::burnout_time,
                              "-m0/rate [s], when the mass reaches zero; inf when rate >= 0.")
       .def_property_readonly("m0", &ConstantThrustSolution::m0, "Mass at t = 0 [kg].")

@@ -583,7 +583,12 @@ void bind_frame_motion(py::module_& m) {
             return FrameMotion::fixed(as_matrix3_or_identity(R_PF, "R_PF"), as_vector3_or_zero(p_PF_P, "p_PF_P"));
           },
           py::arg("R_PF") = py::none(), py::arg("p_PF_P") = py::none(),
-          "F fixed in P: orientation R_PF (3,3) (None: identity), origin at p_PF_P (3,) [m] in P (None: 0).")
+          "F fixed in P: orientation R_PF (3,3) (None: identity), origin at p_PF_P (3,) [m] in P (None: 0).\n\n"
+          "Parameters\n----------\nR_PF : array_like, shape (3, 3), optional\n    F coordinates to P coordinates.\n"
+          "p_PF_P : array_like, shape (3,), optional\n    F's origin relative to P's [m], in P.\n\n"
+          "Returns\n-------\nFrameMotion\n\n"
+          "Examples\n--------\n"
+          ">>> rd.FrameMotion.fixed(p_PF_P=[1.0, 2.0, 3.0]).at(5.0).p_PF_P\narray([1., 2., 3.])\n")
       .def_static(
           "constant_rotation",
           [](py::handle axis_P, py::handle rate, py::handle R_PF0, py::handle p_PF_P) {
@@ -594,7 +599,16 @@ void bind_frame_motion(py::module_& m) {
           "Simple angular velocity (Craig's \"Rigid Body Dynamics\" slides): F turns at `rate` [rad/s] about\n"
           "axis_P (3,) (expressed in P, any non-zero length) through F's origin, which stays at p_PF_P [m] in P\n"
           "(None: 0). R_PF(t) = exp(hat(rate t axis_P/|axis_P|)) R_PF0 (R_PF0: orientation at t = 0, None:\n"
-          "identity).")
+          "identity).\n\n"
+          "Parameters\n----------\naxis_P : array_like, shape (3,)\n    Rotation axis, in P (any non-zero length).\n"
+          "rate : float\n    Angular rate [rad/s].\n"
+          "R_PF0 : array_like, shape (3, 3), optional\n    R_PF at t = 0 (None: identity).\n"
+          "p_PF_P : array_like, shape (3,), optional\n    F's fixed origin relative to P's [m], in P (None: 0).\n\n"
+          "Returns\n-------\nFrameMotion\n\n"
+          "Examples\n--------\n"
+          ">>> M = rd.FrameMotion.constant_rotation([0.0, 0.0, 2.0], 1.0)\n"
+          ">>> bool(np.allclose(M.at(np.pi / 2).R_PF, rd.rot_z(np.pi / 2))), M.at(0.0).w_PF_P\n"
+          "(True, array([0., 0., 1.]))\n")
       .def(
           "at",
           [](const FrameMotion& motion, py::handle t) {
@@ -607,7 +621,13 @@ void bind_frame_motion(py::module_& m) {
           },
           py::arg("t"),
           "FrameKinematics of F relative to P at time t [s], expressed in P (not checked: the tree checks the values\n"
-          "it uses).")
+          "it uses).\n\n"
+          "Parameters\n----------\nt : float\n    Time [s].\n\n"
+          "Returns\n-------\nFrameKinematics\n    F relative to P, expressed in P.\n\n"
+          "Raises\n------\nTypeError\n    A general motion's value neither a FrameKinematics nor a 6-tuple.\n"
+          "ValueError\n    A part of that value of another shape (the message names t and the part).\n\n"
+          "Examples\n--------\n"
+          ">>> rd.FrameMotion.constant_rotation([0.0, 0.0, 1.0], 2.0).at(0.5).w_PF_P\narray([0., 0., 2.])\n")
       .def(
           "__eq__", [](const FrameMotion& a, py::handle b) { return equal_or_not_implemented(a, b, &same_motion); },
           py::is_operator(), "Built the same way from exactly equal parameters (or equal callables).")
@@ -671,7 +691,15 @@ void bind_frame_tree(py::module_& m) {
             tree.add_frame(as_string(name, "name"), as_string(parent, "parent"), as_motion(motion));
           },
           py::arg("name"), py::arg("parent"), py::arg("motion"),
-          "Adds frame `name` under `parent` (which must exist), placed by `motion`.")
+          "Adds frame `name` under `parent` (which must exist), placed by `motion`.\n\n"
+          "Parameters\n----------\nname : str\n    The new frame's name (not in the tree yet).\n"
+          "parent : str\n    An existing frame.\nmotion : FrameMotion\n"
+          "    How the new frame moves relative to `parent`.\n\n"
+          "Raises\n------\nValueError\n    A duplicate name or an unknown parent (naming it).\n\n"
+          "Examples\n--------\n"
+          ">>> tree = rd.FrameTree()\n"
+          ">>> tree.add_frame(\"table\", \"world\", rd.FrameMotion.fixed(p_PF_P=[0.0, 0.0, 1.0]))\n"
+          ">>> tree.frame_names(), tree.parent(\"table\")\n(['world', 'table'], 'world')\n")
       .def(
           "set_parent",
           [](FrameTree& tree, py::handle name, py::handle parent, py::handle motion) {
@@ -679,7 +707,14 @@ void bind_frame_tree(py::module_& m) {
           },
           py::arg("name"), py::arg("parent"), py::arg("motion"),
           "Moves frame `name` and its subtree under `parent`, placed by `motion`. ValueError if that would\n"
-          "make a cycle (parent is `name` or one of its descendants) or `name` is 'world'.")
+          "make a cycle (parent is `name` or one of its descendants) or `name` is 'world'.\n\n"
+          "Parameters\n----------\nname : str\n    The frame to move.\nparent : str\n    Its new parent.\n"
+          "motion : FrameMotion\n    How it moves relative to the new parent.\n\n"
+          "Examples\n--------\n"
+          ">>> tree = rd.FrameTree([(\"a\", \"world\", rd.FrameMotion.fixed()), (\"b\", \"world\", "
+          "rd.FrameMotion.fixed())])\n"
+          ">>> tree.set_parent(\"b\", \"a\", rd.FrameMotion.fixed())\n"
+          ">>> tree.parent(\"b\")\n'a'\n")
       .def(
           "has_frame", [](const FrameTree& tree, py::handle name) { return tree.has_frame(as_string(name, "name")); },
           py::arg("name"), "True if a frame of this name is in the tree.")
@@ -695,7 +730,20 @@ void bind_frame_tree(py::module_& m) {
                            "FrameTree.kinematics");
           },
           py::arg("frame"), py::arg("relative_to"), py::arg("t"),
-          "FrameKinematics of `frame` F relative to `relative_to` A at t, expressed in A.")
+          "FrameKinematics of `frame` F relative to `relative_to` A at t, expressed in A.\n\n"
+          "Parameters\n----------\n"
+          "frame : str\n    F, the frame queried.\n"
+          "relative_to : str\n    A, the frame it is seen from.\n"
+          "t : float\n    Time [s].\n"
+          "\nReturns\n-------\nFrameKinematics\n    F relative to A, every vector expressed in A (SI units).\n"
+          "\nRaises\n------\nValueError\n"
+          "    An unknown frame name, or a value of a user motion that is not finite or not a rotation (naming\n"
+          "    the frame).\n\n"
+          "Examples\n--------\n"
+          "An arm 2 m out on a table turning at 1 rad/s about z:\n\n"
+          ">>> tree = rd.FrameTree([(\"table\", \"world\", rd.FrameMotion.constant_rotation([0, 0, 1], 1.0)),\n"
+          "...                      (\"arm\", \"table\", rd.FrameMotion.fixed(p_PF_P=[2.0, 0, 0]))])\n"
+          ">>> tree.kinematics(\"arm\", \"world\", 0.0).v_PF_P\narray([0., 2., 0.])\n")
       .def(
           "rotation",
           [](const FrameTree& tree, py::handle frame, py::handle relative_to, py::handle t) {
@@ -704,7 +752,20 @@ void bind_frame_tree(py::module_& m) {
                                  "FrameTree.rotation");
           },
           py::arg("frame"), py::arg("relative_to"), py::arg("t"),
-          "R_AF (3,3): maps `frame` F coordinates to `relative_to` A coordinates at t.")
+          "R_AF (3,3): maps `frame` F coordinates to `relative_to` A coordinates at t.\n\n"
+          "Parameters\n----------\n"
+          "frame : str\n    F, the frame queried.\n"
+          "relative_to : str\n    A, the frame it is seen from.\n"
+          "t : float\n    Time [s].\n"
+          "\nReturns\n-------\nndarray, shape (3, 3)\n    R_AF.\n"
+          "\nRaises\n------\nValueError\n"
+          "    An unknown frame name, or a value of a user motion that is not finite or not a rotation (naming\n"
+          "    the frame).\n\n"
+          "Examples\n--------\n"
+          "An arm 2 m out on a table turning at 1 rad/s about z:\n\n"
+          ">>> tree = rd.FrameTree([(\"table\", \"world\", rd.FrameMotion.constant_rotation([0, 0, 1], 1.0)),\n"
+          "...                      (\"arm\", \"table\", rd.FrameMotion.fixed(p_PF_P=[2.0, 0, 0]))])\n"
+          ">>> bool(np.allclose(tree.rotation(\"arm\", \"world\", np.pi / 2), rd.rot_z(np.pi / 2)))\nTrue\n")
       .def(
           "angular_velocity",
           [](const FrameTree& tree, py::handle frame, py::handle relative_to, py::handle expressed_in, py::handle t) {
@@ -713,7 +774,21 @@ void bind_frame_tree(py::module_& m) {
                                  "FrameTree.angular_velocity");
           },
           py::arg("frame"), py::arg("relative_to"), py::arg("expressed_in"), py::arg("t"),
-          "w_AF_E (3,) [rad/s]: angular velocity of F relative to A (addition theorem), expressed in E.")
+          "w_AF_E (3,) [rad/s]: angular velocity of F relative to A (addition theorem), expressed in E.\n\n"
+          "Parameters\n----------\n"
+          "frame : str\n    F, the frame queried.\n"
+          "relative_to : str\n    A, the frame it is seen from.\n"
+          "expressed_in : str\n    E, the frame the result is expressed in.\n"
+          "t : float\n    Time [s].\n"
+          "\nReturns\n-------\nndarray, shape (3,)\n    w_AF_E [rad/s].\n"
+          "\nRaises\n------\nValueError\n"
+          "    An unknown frame name, or a value of a user motion that is not finite or not a rotation (naming\n"
+          "    the frame).\n\n"
+          "Examples\n--------\n"
+          "An arm 2 m out on a table turning at 1 rad/s about z:\n\n"
+          ">>> tree = rd.FrameTree([(\"table\", \"world\", rd.FrameMotion.constant_rotation([0, 0, 1], 1.0)),\n"
+          "...                      (\"arm\", \"table\", rd.FrameMotion.fixed(p_PF_P=[2.0, 0, 0]))])\n"
+          ">>> tree.angular_velocity(\"arm\", \"world\", \"arm\", 0.0)\narray([0., 0., 1.])\n")
       .def(
           "angular_acceleration",
           [](const FrameTree& tree, py::handle frame, py::handle relative_to, py::handle expressed_in, py::handle t) {
@@ -724,7 +799,21 @@ void bind_frame_tree(py::module_& m) {
           },
           py::arg("frame"), py::arg("relative_to"), py::arg("expressed_in"), py::arg("t"),
           "alpha_AF_E (3,) [rad/s^2]: d/dt in A of w_AF, expressed in E (includes the w x w terms; no\n"
-          "addition theorem for angular accelerations, Craig's \"Rigid Body Dynamics\" slides).")
+          "addition theorem for angular accelerations, Craig's \"Rigid Body Dynamics\" slides).\n\n"
+          "Parameters\n----------\n"
+          "frame : str\n    F, the frame queried.\n"
+          "relative_to : str\n    A, the frame it is seen from.\n"
+          "expressed_in : str\n    E, the frame the result is expressed in.\n"
+          "t : float\n    Time [s].\n"
+          "\nReturns\n-------\nndarray, shape (3,)\n    alpha_AF_E [rad/s^2].\n"
+          "\nRaises\n------\nValueError\n"
+          "    An unknown frame name, or a value of a user motion that is not finite or not a rotation (naming\n"
+          "    the frame).\n\n"
+          "Examples\n--------\n"
+          "An arm 2 m out on a table turning at 1 rad/s about z:\n\n"
+          ">>> tree = rd.FrameTree([(\"table\", \"world\", rd.FrameMotion.constant_rotation([0, 0, 1], 1.0)),\n"
+          "...                      (\"arm\", \"table\", rd.FrameMotion.fixed(p_PF_P=[2.0, 0, 0]))])\n"
+          ">>> tree.angular_acceleration(\"arm\", \"world\", \"world\", 0.0)\narray([0., 0., 0.])\n")
       .def(
           "transport_derivative",
           [](const FrameTree& tree, py::handle u, py::handle du, py::handle from_frame, py::handle to_frame,
@@ -739,7 +828,24 @@ void bind_frame_tree(py::module_& m) {
           py::arg("t"),
           "Transport theorem (Craig's \"Rigid Body Dynamics\" slides): the derivative of u seen from\n"
           "A = `to_frame`, from its derivative du_B_E seen from B = `from_frame`: du_B_E + w_AB x u_E. u_E,\n"
-          "du_B_E and the result (3,) in E.")
+          "du_B_E and the result (3,) in E.\n\n"
+          "Parameters\n----------\n"
+          "u_E : array_like, shape (3,)\n    The vector u (any unit), in E.\n"
+          "du_B_E : array_like, shape (3,)\n    Its derivative seen from B [unit of u / s], in E.\n"
+          "from_frame : str\n    B.\n"
+          "to_frame : str\n    A.\n"
+          "expressed_in : str\n    E, the frame the result is expressed in.\n"
+          "t : float\n    Time [s].\n"
+          "\nReturns\n-------\nndarray, shape (3,)\n    The derivative of u seen from A [unit of u / s], in E.\n"
+          "\nRaises\n------\nValueError\n"
+          "    An unknown frame name, or a value of a user motion that is not finite or not a rotation (naming\n"
+          "    the frame).\n\n"
+          "Examples\n--------\n"
+          "An arm 2 m out on a table turning at 1 rad/s about z:\n\n"
+          ">>> tree = rd.FrameTree([(\"table\", \"world\", rd.FrameMotion.constant_rotation([0, 0, 1], 1.0)),\n"
+          "...                      (\"arm\", \"table\", rd.FrameMotion.fixed(p_PF_P=[2.0, 0, 0]))])\n"
+          ">>> tree.transport_derivative([1.0, 0, 0], [0, 0, 0], \"table\", \"world\", \"world\", 0.0)\n"
+          "array([0., 1., 0.])\n")
       .def(
           "point_position",
           [](const FrameTree& tree, py::handle frame, py::handle p, py::handle relative_to, py::handle expressed_in,
@@ -751,7 +857,23 @@ void bind_frame_tree(py::module_& m) {
           },
           py::arg("frame"), py::arg("p_FQ_F"), py::arg("relative_to"), py::arg("expressed_in"), py::arg("t"),
           "p_AQ_E (3,) [m]: position of Q relative to A's origin, expressed in E; p_FQ_F (3,): Q relative\n"
-          "to F's origin, expressed in F.")
+          "to F's origin, expressed in F.\n\n"
+          "Parameters\n----------\n"
+          "frame : str\n    F, the frame queried.\n"
+          "p_FQ_F : array_like, shape (3,)\n    Q relative to F's origin [m], in F.\n"
+          "relative_to : str\n    A, the frame it is seen from.\n"
+          "expressed_in : str\n    E, the frame the result is expressed in.\n"
+          "t : float\n    Time [s].\n"
+          "\nReturns\n-------\nndarray, shape (3,)\n    p_AQ_E [m].\n"
+          "\nRaises\n------\nValueError\n"
+          "    An unknown frame name, or a value of a user motion that is not finite or not a rotation (naming\n"
+          "    the frame).\n\n"
+          "Examples\n--------\n"
+          "An arm 2 m out on a table turning at 1 rad/s about z:\n\n"
+          ">>> tree = rd.FrameTree([(\"table\", \"world\", rd.FrameMotion.constant_rotation([0, 0, 1], 1.0)),\n"
+          "...                      (\"arm\", \"table\", rd.FrameMotion.fixed(p_PF_P=[2.0, 0, 0]))])\n"
+          ">>> tree.point_position(\"arm\", [1.0, 0, 0], \"world\", \"world\", np.pi / 2).round(12)\n"
+          "array([0., 3., 0.])\n")
       .def(
           "point_velocity",
           [](const FrameTree& tree, py::handle frame, py::handle p, py::handle v, py::handle relative_to,
@@ -764,7 +886,24 @@ void bind_frame_tree(py::module_& m) {
           py::arg("frame"), py::arg("p_FQ_F"), py::arg("v_FQ_F"), py::arg("relative_to"), py::arg("expressed_in"),
           py::arg("t"),
           "PointVelocity of Q seen from A, terms expressed in E. Q at p_FQ_F [m] moving with v_FQ_F [m/s] as\n"
-          "seen from F (both (3,), expressed in F; zeros for a point fixed in F).")
+          "seen from F (both (3,), expressed in F; zeros for a point fixed in F).\n\n"
+          "Parameters\n----------\n"
+          "frame : str\n    F, the frame queried.\n"
+          "p_FQ_F : array_like, shape (3,)\n    Q relative to F's origin [m], in F.\n"
+          "v_FQ_F : array_like, shape (3,)\n    Q's velocity seen from F [m/s], in F.\n"
+          "relative_to : str\n    A, the frame it is seen from.\n"
+          "expressed_in : str\n    E, the frame the result is expressed in.\n"
+          "t : float\n    Time [s].\n"
+          "\nReturns\n-------\nPointVelocity\n    origin, rotational, relative and total [m/s], in E.\n"
+          "\nRaises\n------\nValueError\n"
+          "    An unknown frame name, or a value of a user motion that is not finite or not a rotation (naming\n"
+          "    the frame).\n\n"
+          "Examples\n--------\n"
+          "An arm 2 m out on a table turning at 1 rad/s about z:\n\n"
+          ">>> tree = rd.FrameTree([(\"table\", \"world\", rd.FrameMotion.constant_rotation([0, 0, 1], 1.0)),\n"
+          "...                      (\"arm\", \"table\", rd.FrameMotion.fixed(p_PF_P=[2.0, 0, 0]))])\n"
+          ">>> tree.point_velocity(\"arm\", [0, 0, 0], [0, 0, 0], \"world\", \"world\", 0.0).total\n"
+          "array([0., 2., 0.])\n")
       .def(
           "point_acceleration",
           [](const FrameTree& tree, py::handle frame, py::handle p, py::handle v, py::handle a, py::handle relative_to,
@@ -778,7 +917,27 @@ void bind_frame_tree(py::module_& m) {
           py::arg("frame"), py::arg("p_FQ_F"), py::arg("v_FQ_F"), py::arg("a_FQ_F"), py::arg("relative_to"),
           py::arg("expressed_in"), py::arg("t"),
           "PointAcceleration of Q seen from A (origin, tangential, centripetal, relative, coriolis, total),\n"
-          "terms expressed in E [m/s^2]; a_FQ_F (3,): Q's acceleration seen from F, expressed in F.");
+          "terms expressed in E [m/s^2]; a_FQ_F (3,): Q's acceleration seen from F, expressed in F.\n\n"
+          "Parameters\n----------\n"
+          "frame : str\n    F, the frame queried.\n"
+          "p_FQ_F : array_like, shape (3,)\n    Q relative to F's origin [m], in F.\n"
+          "v_FQ_F : array_like, shape (3,)\n    Q's velocity seen from F [m/s], in F.\n"
+          "a_FQ_F : array_like, shape (3,)\n    Q's acceleration seen from F [m/s^2], in F.\n"
+          "relative_to : str\n    A, the frame it is seen from.\n"
+          "expressed_in : str\n    E, the frame the result is expressed in.\n"
+          "t : float\n    Time [s].\n"
+          "\nReturns\n-------\nPointAcceleration\n"
+          "    origin, tangential, centripetal, relative, coriolis and total [m/s^2], in E.\n"
+          "\nRaises\n------\nValueError\n"
+          "    An unknown frame name, or a value of a user motion that is not finite or not a rotation (naming\n"
+          "    the frame).\n\n"
+          "Examples\n--------\n"
+          "An arm 2 m out on a table turning at 1 rad/s about z:\n\n"
+          ">>> tree = rd.FrameTree([(\"table\", \"world\", rd.FrameMotion.constant_rotation([0, 0, 1], 1.0)),\n"
+          "...                      (\"arm\", \"table\", rd.FrameMotion.fixed(p_PF_P=[2.0, 0, 0]))])\n"
+          ">>> tree.point_acceleration(\"arm\", [0, 0, 0], [0, 0, 0], [0, 0, 0], \"world\", \"world\", "
+          "0.0).origin\n"
+          "array([-2.,  0.,  0.])\n");
 }
 
 }  // namespace

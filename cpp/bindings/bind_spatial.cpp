@@ -292,7 +292,12 @@ void bind_motion(py::module_& m) {
           [](const Motion& s, py::handle force) {
             return py_io::finite_result(s.dot(as_force(force, "force")), "Motion.dot");
           },
-          "force"_a, "Power w . n + v . f [W] of the force on this motion (same frame and reference point).");
+          "force"_a,
+          "Power w . n + v . f [W] of the force on this motion (same frame and reference point).\n\n"
+          "Parameters\n----------\nforce : Force\n    [n; f] ([N m], [N]), in this motion's frame.\n\n"
+          "Returns\n-------\nfloat\n    The power [W], the same in every frame.\n\n"
+          "Examples\n--------\n"
+          ">>> rd.Motion([0.0, 0.0, 1.0], [1.0, 0.0, 0.0]).dot(rd.Force([0.0, 0.0, 2.0], [3.0, 0.0, 0.0]))\n5.0\n");
   bind_value_protocol(c, "Motion");
   bind_linear_operators(c, "Motion");
 }
@@ -371,8 +376,17 @@ void bind_transform(py::module_& m) {
             return Transform::from_quat(q_AB, py_io::as_vector3_or_zero(translation, "translation"));
           },
           "q_AB"_a, "translation"_a = py::none(), "scalar_first"_a = false,
-          "X_AB from the unit quaternion q_AB (4,) ((x, y, z, w), or (w, x, y, z) if scalar_first) and\n"
-          "p_AB (3,) [m] (default zero).")
+          "X_AB from a unit quaternion and a translation.\n\n"
+          "Parameters\n----------\nq_AB : array_like, shape (4,)\n"
+          "    Unit quaternion B -> A, (x, y, z, w), or (w, x, y, z) if `scalar_first`.\n"
+          "translation : array_like, shape (3,), optional\n    p_AB [m], B's origin in A (None: zero).\n"
+          "scalar_first : bool, default False\n    Read q_AB scalar first.\n\n"
+          "Returns\n-------\nTransform\n    X_AB.\n\n"
+          "Raises\n------\nValueError\n"
+          "    A quaternion not of unit norm, or a non-finite or badly shaped argument (naming it).\n\n"
+          "Examples\n--------\n"
+          ">>> X = rd.Transform.from_quat([0.0, 0.0, np.sin(np.pi / 4), np.cos(np.pi / 4)], [1.0, 0.0, 0.0])\n"
+          ">>> X.is_approx(rd.Transform(rd.rot_z(np.pi / 2), [1.0, 0.0, 0.0]))\nTrue\n")
       .def_property_readonly("rotation", [](const Transform& X) { return read_only(X.rotation()); },
                              "R_AB (3,3): maps B coordinates to A coordinates; read-only copy")
       .def_property_readonly("translation", [](const Transform& X) { return read_only(X.translation()); },
@@ -380,34 +394,71 @@ void bind_transform(py::module_& m) {
       .def(
           "quat",
           [](const Transform& X, py::handle scalar_first) { return py_io::to_array(X.quat(), as_scalar_first(scalar_first)); },
-          "scalar_first"_a = false, "q_AB (4,) with w >= 0, (x, y, z, w) or (w, x, y, z) if scalar_first.")
+          "scalar_first"_a = false,
+          "The rotation R_AB as a unit quaternion q_AB.\n\n"
+          "Parameters\n----------\nscalar_first : bool, default False\n"
+          "    Return (w, x, y, z) instead of (x, y, z, w).\n\n"
+          "Returns\n-------\nndarray, shape (4,)\n    q_AB with w >= 0.\n\n"
+          "Examples\n--------\n"
+          ">>> rd.Transform(rd.rot_z(np.pi / 2)).quat(scalar_first=True).round(12)\n"
+          "array([0.70710678, 0.        , 0.        , 0.70710678])\n")
       .def(
           "act_point",
           [](const Transform& X, py::handle p_B) {
             return map_points(p_B, "p_B", "Transform.act_point", [&X](const Eigen::Vector3d& p) { return X.act_point(p); });
           },
-          "p_B"_a, "p_A = R_AB p_B + p_AB for points p_B (3,) or (n, 3) [m].")
+          "p_B"_a,
+          "Map points from B to A: p_A = R_AB p_B + p_AB.\n\n"
+          "Parameters\n----------\np_B : array_like, shape (3,) or (n, 3)\n    Points in B [m].\n\n"
+          "Returns\n-------\nndarray, shape (3,) or (n, 3)\n    p_A, the points in A [m].\n\n"
+          "Examples\n--------\n"
+          ">>> rd.Transform(rd.rot_z(np.pi / 2), [1.0, 0.0, 0.0]).act_point([1.0, 0.0, 0.0]).round(12)\n"
+          "array([1., 1., 0.])\n")
       .def(
           "act_inv_point",
           [](const Transform& X, py::handle p_A) {
             return map_points(p_A, "p_A", "Transform.act_inv_point",
                               [&X](const Eigen::Vector3d& p) { return X.act_inv_point(p); });
           },
-          "p_A"_a, "p_B = R_AB^T (p_A - p_AB) for points p_A (3,) or (n, 3) [m].")
+          "p_A"_a,
+          "Map points from A to B: p_B = R_AB^T (p_A - p_AB), the inverse of act_point.\n\n"
+          "Parameters\n----------\np_A : array_like, shape (3,) or (n, 3)\n    Points in A [m].\n\n"
+          "Returns\n-------\nndarray, shape (3,) or (n, 3)\n    p_B, the points in B [m].\n\n"
+          "Examples\n--------\n"
+          ">>> X = rd.Transform(rd.rot_z(np.pi / 2), [1.0, 0.0, 0.0])\n"
+          ">>> X.act_inv_point(X.act_point([[1.0, 2.0, 3.0], [4.0, 5.0, 6.0]])).round(12)\n"
+          "array([[1., 2., 3.],\n       [4., 5., 6.]])\n")
       .def(
           "act",
           [](const Transform& X, py::handle spatial_vector) {
             return act_on(spatial_vector, "Transform.act", [&X](const auto& v) { return X.act(v); });
           },
           "spatial_vector"_a,
-          "A Motion in B -> in A: [R w; R v + p x (R w)]; a Force in B -> in A: [R n + p x (R f); R f].")
+          "Express a spatial vector given in B in A (Featherstone's X for a Motion, X* for a Force).\n\n"
+          "A Motion in B -> in A: [R w; R v + p x (R w)]; a Force in B -> in A: [R n + p x (R f); R f]\n"
+          "(R = R_AB, p = p_AB, angular part first).\n\n"
+          "Parameters\n----------\nspatial_vector : Motion or Force\n"
+          "    Expressed in B (a Force's moment about B's origin).\n\n"
+          "Returns\n-------\nMotion or Force\n    The same vector expressed in A (about A's origin).\n\n"
+          "Raises\n------\nTypeError\n    spatial_vector neither a Motion nor a Force.\n\n"
+          "Examples\n--------\n"
+          ">>> rd.Transform(translation=[1.0, 0.0, 0.0]).act(rd.Force(linear=[0.0, 1.0, 0.0])).angular\n"
+          "array([0., 0., 1.])\n")
       .def(
           "act_inv",
           [](const Transform& X, py::handle spatial_vector) {
             return act_on(spatial_vector, "Transform.act_inv", [&X](const auto& v) { return X.act_inv(v); });
           },
           "spatial_vector"_a,
-          "A Motion in A -> in B: [R^T w; R^T (v - p x w)]; a Force in A -> in B: [R^T (n - p x f); R^T f].")
+          "Express a spatial vector given in A in B, the inverse of act.\n\n"
+          "A Motion in A -> in B: [R^T w; R^T (v - p x w)]; a Force in A -> in B: [R^T (n - p x f); R^T f]\n"
+          "(R = R_AB, p = p_AB, angular part first).\n\n"
+          "Parameters\n----------\nspatial_vector : Motion or Force\n    Expressed in A.\n\n"
+          "Returns\n-------\nMotion or Force\n    The same vector expressed in B.\n\n"
+          "Raises\n------\nTypeError\n    spatial_vector neither a Motion nor a Force.\n\n"
+          "Examples\n--------\n"
+          ">>> X, V = rd.Transform(rd.rot_z(np.pi / 2), [1.0, 0.0, 0.0]), rd.Motion([0.0, 0.0, 1.0], [1.0, 0.0, 0.0])\n"
+          ">>> X.act_inv(X.act(V)).is_approx(V)\nTrue\n")
       .def(
           "__mul__",
           [](const Transform& X_AB, py::handle X_BC) {
@@ -558,7 +609,12 @@ void bind_spatial(py::module_& m) {
           [](const Force& f, py::handle motion) {
             return py_io::finite_result(f.dot(as_motion(motion, "motion")), "Force.dot");
           },
-          "motion"_a, "Power w . n + v . f [W] of this force on the motion (same frame and reference point).");
+          "motion"_a,
+          "Power w . n + v . f [W] of this force on the motion (same frame and reference point).\n\n"
+          "Parameters\n----------\nmotion : Motion\n    [w; v] ([rad/s], [m/s]), in this force's frame.\n\n"
+          "Returns\n-------\nfloat\n    The power [W], the same in every frame.\n\n"
+          "Examples\n--------\n"
+          ">>> rd.Force([0.0, 0.0, 2.0], [3.0, 0.0, 0.0]).dot(rd.Motion([0.0, 0.0, 1.0], [1.0, 0.0, 0.0]))\n5.0\n");
   bind_transform(m);
   bind_screw(m);
   m.def(
@@ -568,7 +624,8 @@ void bind_spatial(py::module_& m) {
       "crm(V) = [[hat(w), 0], [hat(v), hat(w)]] for V = [w; v] (angular first), so that crm(V) V2 = V x V2\n"
       "(Motion.cross).\n\n"
       "Parameters\n----------\nmotion : Motion\n    V = [w; v] ([rad/s], [m/s]).\n\n"
-      "Returns\n-------\nndarray, shape (6, 6)\n    crm(V), in V's frame (hat(w) blocks [rad/s], hat(v) block [m/s]).\n\n"
+      "Returns\n-------\nndarray, shape (6, 6)\n"
+      "    crm(V), in V's frame (hat(w) blocks [rad/s], hat(v) block [m/s]).\n\n"
       "Raises\n------\nTypeError\n    motion not a Motion.\n\n"
       "See Also\n--------\nforce_cross_matrix, Motion.cross\n\n"
       "Examples\n--------\n"
@@ -582,7 +639,8 @@ void bind_spatial(py::module_& m) {
       "crf(V) = [[hat(w), hat(v)], [0, hat(w)]] = -crm(V)^T for V = [w; v] (angular first), so that\n"
       "crf(V) F = V x* F (Motion.cross_force), as in the Newton-Euler equation I a + V x* I V.\n\n"
       "Parameters\n----------\nmotion : Motion\n    V = [w; v] ([rad/s], [m/s]).\n\n"
-      "Returns\n-------\nndarray, shape (6, 6)\n    crf(V), in V's frame (hat(w) blocks [rad/s], hat(v) block [m/s]).\n\n"
+      "Returns\n-------\nndarray, shape (6, 6)\n"
+      "    crf(V), in V's frame (hat(w) blocks [rad/s], hat(v) block [m/s]).\n\n"
       "Raises\n------\nTypeError\n    motion not a Motion.\n\n"
       "See Also\n--------\nmotion_cross_matrix, Motion.cross_force\n\n"
       "Examples\n--------\n"
