@@ -667,7 +667,12 @@ void bind_frame_tree(py::module_& m) {
            "as repr shows them; a parent may come after its child. See the class.")
       .def(
           "motion", [](const FrameTree& tree, py::handle name) { return tree.motion(as_string(name, "name")); },
-          py::arg("name"), "The FrameMotion placing frame `name` in its parent ('world': fixed at the identity).")
+          py::arg("name"),
+          "The FrameMotion placing frame `name` in its parent ('world': fixed at the identity).\n\n"
+          "Parameters\n----------\nname : str\n    A frame of the tree (ValueError otherwise).\n\n"
+          "Returns\n-------\nFrameMotion\n\n"
+          "Examples\n--------\n"
+          ">>> rd.FrameTree().motion(\"world\").at(0.0).p_PF_P\narray([0., 0., 0.])\n")
       .def(
           "__eq__", [](const FrameTree& a, py::handle b) { return equal_or_not_implemented(a, b, &same_tree); },
           py::is_operator(), "Same names in the same order, same parents, equal motions.")
@@ -717,10 +722,20 @@ void bind_frame_tree(py::module_& m) {
           ">>> tree.parent(\"b\")\n'a'\n")
       .def(
           "has_frame", [](const FrameTree& tree, py::handle name) { return tree.has_frame(as_string(name, "name")); },
-          py::arg("name"), "True if a frame of this name is in the tree.")
+          py::arg("name"),
+          "True if a frame of this name is in the tree.\n\n"
+          "Parameters\n----------\nname : str\n\n"
+          "Returns\n-------\nbool\n\n"
+          "Examples\n--------\n"
+          ">>> rd.FrameTree().has_frame(\"world\"), rd.FrameTree().has_frame(\"arm\")\n(True, False)\n")
       .def(
           "parent", [](const FrameTree& tree, py::handle name) { return tree.parent(as_string(name, "name")); },
-          py::arg("name"), "The parent's name ('' for 'world').")
+          py::arg("name"),
+          "The parent's name ('' for 'world').\n\n"
+          "Parameters\n----------\nname : str\n    A frame of the tree (ValueError otherwise).\n\n"
+          "Returns\n-------\nstr\n\n"
+          "Examples\n--------\n"
+          ">>> rd.FrameTree().parent(\"world\")\n''\n")
       .def("frame_names", &FrameTree::frame_names, "All names: 'world' first, then in the order added.")
       .def(
           "kinematics",

@@ -220,7 +220,13 @@ void bind_value_protocol(py::class_<Spatial>& c, const std::string& type) {
        },
        "other"_a, "prec"_a = 1e-12,
        ("True when the 6-vectors agree to `prec` relative to the smaller norm (Eigen's isApprox: |a - b| <=\n"
-        "prec min(|a|, |b|), so only an exactly zero " + type + " is close to zero). == compares exactly.").c_str())
+        "prec min(|a|, |b|), so only an exactly zero " + type + " is close to zero). == compares exactly.\n\n"
+        "Parameters\n----------\nother : " + type + "\n    In the same frame.\n"
+        "prec : float, default 1e-12\n    Relative tolerance, >= 0.\n\n"
+        "Returns\n-------\nbool\n\n"
+        "Raises\n------\nTypeError\n    other not a " + type + ".\nValueError\n    prec negative or not finite.\n\n"
+        "Examples\n--------\n"
+        ">>> rd." + type + "([1.0, 0.0, 0.0]).is_approx(rd." + type + "([1.0 + 1e-14, 0.0, 0.0]))\nTrue\n").c_str())
       .def(
           "__eq__",
           [](const Spatial& a, py::handle b) {
@@ -276,17 +282,29 @@ void bind_motion(py::module_& m) {
       .def_static("from_vector", [](py::handle v) { return Motion::from_vector(py_io::as_vector6(v, "vector")); },
                   "vector"_a,
                   "Motion from a (6,) array [w; v], angular first ([rad/s], [m/s]); ValueError on another shape or "
-                  "NaN/Inf.")
+                  "NaN/Inf.\n\n"
+                  "Parameters\n----------\nvector : array_like, shape (6,)\n    [w; v] ([rad/s], [m/s]).\n\n"
+                  "Returns\n-------\nMotion\n\n"
+                  "Examples\n--------\n"
+                  ">>> rd.Motion.from_vector([0.0, 0.0, 1.0, 1.0, 0.0, 0.0]).linear\narray([1., 0., 0.])\n")
       .def(
           "cross", [](const Motion& s, py::handle other) { return checked(s.cross(as_motion(other, "other")), "Motion.cross"); },
           "other"_a,
           "Motion cross product (crm): self x other = [w1 x w2; w1 x v2 + v1 x w2], in the common frame\n"
-          "([rad/s^2], [m/s^2] for two twists).")
+          "([rad/s^2], [m/s^2] for two twists).\n\n"
+          "Parameters\n----------\nother : Motion\n    In the same frame.\n\n"
+          "Returns\n-------\nMotion\n\n"
+          "Examples\n--------\n"
+          ">>> rd.Motion([0.0, 0.0, 1.0]).cross(rd.Motion(linear=[1.0, 0.0, 0.0])).linear\narray([0., 1., 0.])\n")
       .def(
           "cross_force",
           [](const Motion& s, py::handle force) { return checked(s.cross(as_force(force, "force")), "Motion.cross_force"); },
           "force"_a,
-          "Force cross product (crf): self x* force = [w x n + v x f; w x f] ([N m/s], [N/s]), in the common frame.")
+          "Force cross product (crf): self x* force = [w x n + v x f; w x f] ([N m/s], [N/s]), in the common frame.\n\n"
+          "Parameters\n----------\nforce : Force\n    In this motion's frame.\n\n"
+          "Returns\n-------\nForce\n\n"
+          "Examples\n--------\n"
+          ">>> rd.Motion([0.0, 0.0, 1.0]).cross_force(rd.Force(linear=[1.0, 0.0, 0.0])).linear\narray([0., 1., 0.])\n")
       .def(
           "dot",
           [](const Motion& s, py::handle force) {
@@ -332,7 +350,12 @@ void bind_force(py::module_& m) {
            "[n; f] as a (6,) array, moment first ([N m], [N]), in the force's frame.")
       .def_static("from_vector", [](py::handle v) { return Force::from_vector(py_io::as_vector6(v, "vector")); },
                   "vector"_a,
-                  "Force from a (6,) array [n; f], moment first ([N m], [N]); ValueError on another shape or NaN/Inf.");
+                  "Force from a (6,) array [n; f], moment first ([N m], [N]); ValueError on another shape or "
+                  "NaN/Inf.\n\n"
+                  "Parameters\n----------\nvector : array_like, shape (6,)\n    [n; f] ([N m], [N]).\n\n"
+                  "Returns\n-------\nForce\n\n"
+                  "Examples\n--------\n"
+                  ">>> rd.Force.from_vector([0.0, 0.0, 1.0, 0.0, 2.0, 0.0]).angular\narray([0., 0., 1.])\n");
   bind_value_protocol(c, "Force");
   bind_linear_operators(c, "Force");
 }
