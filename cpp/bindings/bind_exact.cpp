@@ -142,8 +142,19 @@ void bind_exact(pybind11::module_& m) {
             elliprf(py_io::as_scalar(x, "x"), py_io::as_scalar(y, "y"), py_io::as_scalar(z, "z")), "elliprf");
       },
       py::arg("x"), py::arg("y"), py::arg("z"),
-      "Carlson's R_F(x, y, z) (DLMF 19.16.1) for finite x, y, z >= 0, at most one zero, of any magnitude;\n"
-      "inf with a RuntimeWarning where the result exceeds the double range.");
+      "Carlson's symmetric elliptic integral of the first kind R_F(x, y, z).\n\n"
+      "R_F(x, y, z) = 1/2 int_0^inf dt / sqrt((t + x)(t + y)(t + z)) (DLMF 19.16.1), symmetric in its arguments,\n"
+      "to a few ulps for finite arguments of any magnitude (1e-300 to 1e300 together). K(m) = R_F(0, 1 - m, 1).\n\n"
+      "Parameters\n----------\n"
+      "x, y, z : float\n    Finite, >= 0, at most one of them zero.\n\n"
+      "Returns\n-------\nfloat\n    R_F(x, y, z) (it never exceeds the double range).\n\n"
+      "Raises\n------\nValueError\n"
+      "    An argument negative or non-finite, or two of them zero (the message names it).\n\n"
+      "See Also\n--------\nelliprj, ellipk\nscipy.special.elliprf : The same function (same argument order).\n\n"
+      "Examples\n--------\n"
+      "R_F(0, 1, 1) = K(0) = pi/2, and R_F(x, x, x) = 1/sqrt(x):\n\n"
+      ">>> bool(np.isclose(rd.elliprf(0.0, 1.0, 1.0), np.pi / 2))\nTrue\n"
+      ">>> bool(np.isclose(rd.elliprf(2.0, 2.0, 2.0), 1 / np.sqrt(2.0)))\nTrue\n");
   m.def(
       "elliprj",
       [](py::handle x, py::handle y, py::handle z, py::handle p) {
@@ -152,12 +163,45 @@ void bind_exact(pybind11::module_& m) {
                                     "elliprj");
       },
       py::arg("x"), py::arg("y"), py::arg("z"), py::arg("p"),
-      "Carlson's R_J(x, y, z, p) (DLMF 19.16.2) for finite x, y, z >= 0, at most one zero, and p > 0, of any\n"
-      "magnitude; inf with a RuntimeWarning where the result exceeds the double range.");
+      "Carlson's symmetric elliptic integral of the third kind R_J(x, y, z, p).\n\n"
+      "R_J(x, y, z, p) = 3/2 int_0^inf dt / ((t + p) sqrt((t + x)(t + y)(t + z))) (DLMF 19.16.2), symmetric in\n"
+      "x, y, z, to a few ulps for finite arguments of any magnitude; Pi(n|m) = R_F(0, 1 - m, 1) +\n"
+      "(n/3) R_J(0, 1 - m, 1, 1 - n).\n\n"
+      "Parameters\n----------\n"
+      "x, y, z : float\n    Finite, >= 0, at most one of them zero.\n"
+      "p : float\n    Finite, > 0.\n\n"
+      "Returns\n-------\nfloat\n"
+      "    R_J(x, y, z, p); inf with a RuntimeWarning where it exceeds the double range (R_J ~\n"
+      "    1/sqrt(x y z p) for tiny arguments), 0 or a subnormal below it.\n\n"
+      "Raises\n------\nValueError\n"
+      "    x, y or z negative, two of them zero, p <= 0, or a non-finite argument (the message names\n"
+      "    it).\n\n"
+      "See Also\n--------\nelliprf, ellippi\nscipy.special.elliprj : The same function (same argument order).\n\n"
+      "Examples\n--------\n"
+      "R_J(x, x, x, x) = x^(-3/2):\n\n"
+      ">>> rd.elliprj(4.0, 4.0, 4.0, 4.0)\n0.125\n");
   m.def(
       "ellipk", [](py::handle m, py::handle mc) { return as_parameter(m, mc).K; }, py::arg("m"), py::arg("mc") = py::none(),
-      "Complete elliptic integral K(m) = R_F(0, mc, 1) for the parameter m in [0, 1] (as scipy.special.ellipk).\n"
-      "mc: the complement 1 - m (default 1 - m); pass it near m = 1, where 1 - m loses digits. inf at mc = 0.");
+      "Complete elliptic integral of the first kind K(m).\n\n"
+      "K(m) = int_0^{pi/2} dt / sqrt(1 - m sin^2 t) = R_F(0, mc, 1), the quarter period of the Jacobi elliptic\n"
+      "functions. The argument is the parameter m = k^2 (k the modulus), as scipy.special.ellipk takes it. K is\n"
+      "computed from the complement mc, so that K ~ ln(16/mc)/2 keeps full relative precision as m -> 1.\n\n"
+      "Parameters\n----------\n"
+      "m : float\n    Parameter m = k^2, 0 <= m <= 1.\n"
+      "mc : float, optional\n    Its complement 1 - m, in [0, 1] and equal to 1 - m to within 4 eps (default: "
+      "computed as\n"
+      "    1 - m). Pass it near m = 1, where 1 - m loses digits.\n\n"
+      "Returns\n-------\nfloat\n    K(m); inf at mc = 0.\n\n"
+      "Raises\n------\nValueError\n    m or mc outside [0, 1], non-finite, or mc not 1 - m (the message names it).\n\n"
+      "See Also\n--------\nelliprf, ellippi, jacobi_ellipj\n"
+      "scipy.special.ellipk : The same function of m; scipy.special.ellipkm1 takes mc.\n\n"
+      "Examples\n--------\n"
+      "K(0) = pi/2 and K(1/2) = Gamma(1/4)^2 / (4 sqrt(pi)):\n\n"
+      ">>> rd.ellipk(0.0) == np.pi / 2\nTrue\n"
+      ">>> from math import gamma\n"
+      ">>> bool(np.isclose(rd.ellipk(0.5), gamma(0.25) ** 2 / (4 * np.sqrt(np.pi))))\nTrue\n\n"
+      "Near m = 1, given mc, K follows ln(16/mc)/2 (m = 1 - 1e-20 rounds to 1.0):\n\n"
+      ">>> f\"{rd.ellipk(1.0, mc=1e-20):.9f} {np.log(16 / 1e-20) / 2:.9f}\"\n'24.412145291 24.412145291'\n");
   m.def(
       "ellippi",
       [](py::handle n, py::handle m, py::handle mc) {
@@ -166,42 +210,134 @@ void bind_exact(pybind11::module_& m) {
         return ellippi(n_value, p.m, p.mc);  // finite for n < 1, mc > 0 (ValueError naming mc at mc = 0)
       },
       py::arg("n"), py::arg("m"), py::arg("mc") = py::none(),
-      "Complete elliptic integral of the third kind Pi(n|m) = int_0^{pi/2} dt / ((1 - n sin^2 t) sqrt(1 - m sin^2 t)),\n"
-      "n < 1, m in [0, 1), mc = 1 - m (default 1 - m). A few ulps for n <= 0.9; relative error ~eps/(1 - n) nearer 1.");
+      "Complete elliptic integral of the third kind Pi(n|m).\n\n"
+      "Pi(n|m) = int_0^{pi/2} dt / ((1 - n sin^2 t) sqrt(1 - m sin^2 t)) for the characteristic n < 1 and the\n"
+      "parameter m = k^2 (as scipy.special.ellipk takes it). A few ulps for n <= 0.9; relative error\n"
+      "~eps/(1 - n) nearer 1.\n\n"
+      "Parameters\n----------\n"
+      "n : float\n    Characteristic, n < 1.\n"
+      "m : float\n    Parameter m = k^2, 0 <= m < 1.\n"
+      "mc : float, optional\n    Its complement 1 - m, > 0 and equal to 1 - m to within 4 eps (default: computed as 1 "
+      "- m).\n\n"
+      "Returns\n-------\nfloat\n    Pi(n|m), finite.\n\n"
+      "Raises\n------\nValueError\n"
+      "    n >= 1 (naming n); m or mc outside [0, 1] or mc not 1 - m; mc = 0, where Pi(n|1) diverges\n"
+      "    (naming mc).\n\n"
+      "See Also\n--------\nellippi_am, ellipk, elliprj\n"
+      "scipy.special.elliprj : SciPy has no Pi(n|m); it is elliprf(0, 1 - m, 1) + n/3 elliprj(0, 1 - m, 1, 1 - n).\n\n"
+      "Examples\n--------\n"
+      "Pi(0|m) = K(m), and Pi(n|0) = pi / (2 sqrt(1 - n)):\n\n"
+      ">>> bool(np.isclose(rd.ellippi(0.0, 0.5), rd.ellipk(0.5)))\nTrue\n"
+      ">>> bool(np.isclose(rd.ellippi(0.5, 0.0), np.pi / (2 * np.sqrt(0.5))))\nTrue\n");
   m.def("ellippi_am", &ellippi_am_py, py::arg("u"), py::arg("n"), py::arg("m"), py::arg("mc") = py::none(),
-        "Incomplete Pi(am u, n|m) = int_0^u dv / (1 - n sn^2(v|m)) (mpmath.ellippi(n, am(u), m)), for u a scalar\n"
-        "or a 1-d array (then an array of the same length), n < 1, mc = 1 - m (default 1 - m); +-inf with a\n"
-        "RuntimeWarning where it exceeds the double range (|u| near it).");
+        "Incomplete elliptic integral of the third kind at the amplitude am u, Pi(am u, n|m).\n\n"
+        "Pi(am u, n|m) = int_0^u dv / (1 - n sn^2(v|m)) for any finite u (mpmath.ellippi(n, am(u), m)), the\n"
+        "parameter m = k^2; Pi(am(u + 2K), n|m) = Pi(am u, n|m) + 2 Pi(n|m), K = K(m).\n\n"
+        "Parameters\n----------\n"
+        "u : float or array_like, shape (n,)\n    Argument of the Jacobi functions, finite.\n"
+        "n : float\n    Characteristic, n < 1.\n"
+        "m : float\n    Parameter m = k^2, 0 <= m <= 1.\n"
+        "mc : float, optional\n    Its complement 1 - m, equal to 1 - m to within 4 eps (default: computed as 1 - "
+        "m).\n\n"
+        "Returns\n-------\nfloat or ndarray, shape (n,)\n"
+        "    Pi(am u, n|m), of u's shape; +-inf with a RuntimeWarning where it exceeds the double range\n"
+        "    (|u| near it).\n\n"
+        "Raises\n------\nValueError\n"
+        "    n >= 1, m or mc outside [0, 1] or mc not 1 - m, u non-finite or of another shape (the\n"
+        "    message names it).\n\n"
+        "See Also\n--------\nellippi, jacobi_ellipj\n\n"
+        "Notes\n-----\nSciPy has no incomplete integral of the third kind: for |am u| <= pi/2 it is\n"
+        "s R_F(c^2, d^2, 1) + (n/3) s^3 R_J(c^2, d^2, 1, 1 - n s^2) with (s, c, d) = (sn, cn, dn)(u|m)\n"
+        "(scipy.special.ellipj, elliprf, elliprj).\n\n"
+        "Examples\n--------\n"
+        "At u = K(m) it is the complete integral; for m = 0 (am u = u), atan(sqrt(1 - n) tan u) / sqrt(1 - n):\n\n"
+        ">>> K = rd.ellipk(0.5)\n"
+        ">>> bool(np.isclose(rd.ellippi_am(K, 0.3, 0.5), rd.ellippi(0.3, 0.5)))\nTrue\n"
+        ">>> bool(np.isclose(rd.ellippi_am(0.7, 0.4, 0.0), np.arctan(np.sqrt(0.6) * np.tan(0.7)) / np.sqrt(0.6)))\n"
+        "True\n"
+        ">>> rd.ellippi_am([0.0, 2 * K], 0.3, 0.5) / rd.ellippi(0.3, 0.5)\narray([0., 2.])\n");
   m.def("jacobi_ellipj", &jacobi_ellipj_py, py::arg("u"), py::arg("m"), py::arg("mc") = py::none(),
-        "Jacobi elliptic functions (sn, cn, dn)(u|m) for u a scalar (floats) or a 1-d array (three arrays of\n"
-        "shape (n,)), m in [0, 1]. mc: the complement 1 - m (default 1 - m); pass it near m = 1 for full\n"
-        "accuracy (unlike scipy.special.ellipj, accurate near m = 1 at any u).");
+        "Jacobi elliptic functions sn(u|m), cn(u|m), dn(u|m).\n\n"
+        "sn u = sin(am u), cn u = cos(am u), dn u = sqrt(1 - m sn^2 u), where am is the inverse of\n"
+        "u = int_0^am dt / sqrt(1 - m sin^2 t), for the parameter m = k^2 (as scipy.special.ellipj takes it).\n"
+        "Absolute error a few ulps for |u| up to K(m), growing as eps |u| beyond; m = 1 gives (tanh u, sech u,\n"
+        "sech u). Unlike scipy.special.ellipj, accurate near m = 1 at any u when mc is given.\n\n"
+        "Parameters\n----------\n"
+        "u : float or array_like, shape (n,)\n    Argument, finite.\n"
+        "m : float\n    Parameter m = k^2, 0 <= m <= 1.\n"
+        "mc : float, optional\n    Its complement 1 - m, equal to 1 - m to within 4 eps (default: computed as 1 - m); "
+        "pass it\n"
+        "    near m = 1 for full accuracy.\n\n"
+        "Returns\n-------\nsn, cn, dn : float or ndarray, shape (n,)\n"
+        "    Three floats for a scalar u, three arrays of u's length for an array.\n\n"
+        "Raises\n------\nValueError\n"
+        "    u non-finite or not a scalar or 1-d array, m or mc outside [0, 1], or mc not 1 - m (the\n"
+        "    message names it).\n\n"
+        "See Also\n--------\nellipk, ellippi_am\n"
+        "scipy.special.ellipj : The same functions of (u, m), with am u as a fourth result.\n\n"
+        "Examples\n--------\n"
+        "sn K = 1 and cn K = 0 at the quarter period K(m); sn^2 + cn^2 = 1 and dn^2 + m sn^2 = 1:\n\n"
+        ">>> sn, cn, dn = rd.jacobi_ellipj(rd.ellipk(0.5), 0.5)\n"
+        ">>> print(f\"{sn:.12f} {abs(cn):.12f} {dn:.12f}\")\n1.000000000000 0.000000000000 0.707106781187\n"
+        ">>> sn, cn, dn = rd.jacobi_ellipj(np.linspace(0.0, 5.0, 6), 0.7)\n"
+        ">>> bool(np.allclose(sn**2 + cn**2, 1.0) and np.allclose(dn**2 + 0.7 * sn**2, 1.0))\nTrue\n");
 
-  py::class_<PyTorqueFreeSolution>(m, "TorqueFreeSolution",
-                                   "Exact motion of a torque-free rigid body (Euler-Poinsot): angular velocity in Jacobi's elliptic\n"
-                                   "functions, attitude by Legendre's third integral (Landau & Lifshitz, Mechanics §37;\n"
-                                   "Celledoni, Fassò, Säfström, Zanna 2008; docs/references.md), at any time t [s].")
-      .def(py::init(&make_solution), py::arg("inertia"), py::arg("q_WB"), py::arg("w_B"), py::arg("scalar_first") = false,
+  py::class_<PyTorqueFreeSolution> cls(
+      m, "TorqueFreeSolution",
+      "Exact motion of a torque-free rigid body (Euler-Poinsot) at any time t [s].\n\n"
+      "The angular velocity w_B(t) in Jacobi's elliptic functions, the attitude q_WB(t) by Legendre's third\n"
+      "integral (Landau & Lifshitz, Mechanics §37; Celledoni, Fassò, Säfström, Zanna 2008; docs/references.md):\n"
+      "the solution of I_B dw_B/dt = -w_B x I_B w_B, dq_WB/dt = 1/2 q_WB ⊗ [w_B; 0], which keeps the angular\n"
+      "momentum L_W = R_WB I_B w_B and the kinetic energy constant. Any finite magnitudes (the motion is computed\n"
+      "in scaled units).\n\n"
+      "Parameters\n----------\n"
+      "inertia : array_like, shape (3, 3)\n"
+      "    Rotational inertia I_B about the centre of mass, in B [kg m^2], symmetric positive definite and, under\n"
+      "    check=InertiaCheck.physical, with principal moments satisfying the triangle inequality I1 + I2 >= I3.\n"
+      "q_WB : array_like, shape (4,)\n"
+      "    Initial attitude, B to W, (x, y, z, w) ((w, x, y, z) if `scalar_first`); normalised.\n"
+      "w_B : array_like, shape (3,)\n    Initial angular velocity of B in W, expressed in B [rad/s].\n"
+      "scalar_first : bool, default False\n    Read q_WB, and return the quaternions of state_at, scalar first.\n"
+      "check : InertiaCheck, default InertiaCheck.physical\n"
+      "    InertiaCheck.allow_unrealizable opts in to test problems such as diag(2, 1, 2/3).\n\n"
+      "Raises\n------\nValueError\n"
+      "    An inertia not symmetric positive definite or, under InertiaCheck.physical, breaking the triangle\n"
+      "    inequality (naming the moments); w_B when a rate of the motion exceeds the double range; inertia when\n"
+      "    its principal moments span so many orders (~1e150 and more) that the parameters of the elliptic\n"
+      "    functions, up to ~(I_max/I_min)^2 in scaled units, exceed it; a non-finite or badly shaped argument.\n\n"
+      "See Also\n--------\njacobi_ellipj, ellippi_am, LagrangeTopSolution, simulate\n\n"
+      "Examples\n--------\n"
+      "w_B returns after one period; L_W = R_WB I_B w_B stays constant:\n\n"
+      ">>> I_B = np.diag([1.0, 2.0, 3.0])\n"
+      ">>> s = rd.TorqueFreeSolution(I_B, [0, 0, 0, 1], [0.1, 1.0, 0.1])\n"
+      ">>> s.case, round(s.period, 6)\n('A', 22.996263)\n"
+      ">>> q_WB, w_B = s.state_at(s.period)\n"
+      ">>> bool(np.allclose(w_B, [0.1, 1.0, 0.1]))\nTrue\n"
+      ">>> q_WB, w_B = s.state_at(3.7)\n"
+      ">>> bool(np.allclose(rd.quat_rotate(q_WB, I_B @ w_B), s.angular_momentum_W))\nTrue\n\n"
+      "Immutable; pickles; == compares the constructor's arguments.");
+  cls.def(py::init(&make_solution), py::arg("inertia"), py::arg("q_WB"), py::arg("w_B"), py::arg("scalar_first") = false,
            py::arg("check") = InertiaCheck::physical,
-           "inertia: (3, 3) rotational inertia about the centre of mass, in B [kg m^2], symmetric positive definite\n"
-           "and, under check=InertiaCheck.physical (default), with principal moments satisfying the triangle\n"
-           "inequality I1 + I2 >= I3 (ValueError naming the moments otherwise; check=\n"
-           "InertiaCheck.allow_unrealizable opts in to test problems such as diag(2, 1, 2/3));\n"
-           "q_WB: (4,) initial attitude, (x, y, z, w) or (w, x, y, z) if scalar_first; w_B: (3,) initial angular\n"
-           "velocity of B in W, expressed in B [rad/s]. Any finite magnitudes (the motion is computed in scaled\n"
-           "units); ValueError naming w_B when a rate of the motion exceeds the double range, and naming inertia\n"
-           "when its principal moments span so many orders (~1e150 and more) that the parameters of the elliptic\n"
-           "functions, up to ~(I_max/I_min)^2 in scaled units, exceed it.")
+           "The exact motion from I_B (3, 3) [kg m^2] about the centre of mass in B, q_WB (4,) and w_B (3,) [rad/s]\n"
+           "in B at t = 0 (see the class).")
       .def("state_at", &state_at_py, py::arg("t"),
-           "State at time t [s] (scalar, or (n,) array; negative allowed): (q_WB, w_B) of shapes (4,), (3,) or\n"
-           "(n, 4), (n, 3); q in the order chosen at construction. ValueError naming t when a phase (rate times t)\n"
-           "exceeds the double range.")
+           "State at time t.\n\n"
+           "Parameters\n----------\nt : float or array_like, shape (n,)\n    Time [s]; negative allowed.\n\n"
+           "Returns\n-------\nq_WB : ndarray, shape (4,) or (n, 4)\n"
+           "    Attitude, B to W, in the order chosen at construction.\n"
+           "w_B : ndarray, shape (3,) or (n, 3)\n    Angular velocity of B in W, expressed in B [rad/s].\n\n"
+           "Raises\n------\nValueError\n    t when a phase (rate times t) exceeds the double range, or t non-finite.\n"
+           "\n"
+           "Examples\n--------\n"
+           ">>> s = rd.TorqueFreeSolution(np.diag([1.0, 2.0, 3.0]), [0, 0, 0, 1], [0.1, 1.0, 0.1])\n"
+           ">>> [a.shape for a in s.state_at([0.0, 1.0, 2.0])]\n[(3, 4), (3, 3)]\n")
       .def_property_readonly("period", [](const PyTorqueFreeSolution& s) { return s.solution.period(); },
-                             "Period of w_B(t) [s]; inf if w_B is constant or on the separatrix. A flip takes half.")
+                             "Period of w_B(t) [s] (w_B in B); inf if w_B is constant or on the separatrix. A flip "
+                             "takes half.")
       .def_property_readonly("case", [](const PyTorqueFreeSolution& s) { return to_string(s.solution.solution_case()); },
                              "'sphere', 'symmetric', 'A' (about axis 3), 'B' (about axis 1) or 'separatrix'.")
       .def_property_readonly("parameter_m", [](const PyTorqueFreeSolution& s) { return s.solution.parameter_m(); },
-                             "Parameter m of the elliptic functions.")
+                             "Parameter m = k^2 of the elliptic functions of w_B(t) (dimensionless, in [0, 1]).")
       .def_property_readonly("parameter_mc", [](const PyTorqueFreeSolution& s) { return s.solution.parameter_mc(); },
                              "Complement 1 - m, computed without cancellation.")
       .def_property_readonly("principal_moments",

@@ -259,9 +259,32 @@ bool same_tree(const FrameTree& a, const FrameTree& b) {
 }
 
 void bind_frame_kinematics(py::module_& m) {
-  py::class_<FrameKinematics>(m, "FrameKinematics",
-                              "Frame F relative to frame P at one instant (P = the parent of a FrameMotion, or the\n"
-                              "`relative_to` frame of a FrameTree query). Every vector is expressed in P; SI units.")
+  py::class_<FrameKinematics>(
+      m, "FrameKinematics",
+      "Frame F relative to frame P at one instant: orientation, angular velocity and acceleration, and the\n"
+      "position, velocity and acceleration of F's origin.\n\n"
+      "P is the parent of a FrameMotion, or the `relative_to` frame of a FrameTree query. Every vector is\n"
+      "expressed in P; SI units. The caller keeps the fields consistent (w, alpha the derivatives of R; v, a\n"
+      "those of p): only R_PF being a rotation and finiteness are checked.\n\n"
+      "Parameters\n----------\n"
+      "R_PF : array_like, shape (3, 3), optional\n"
+      "    Orientation of F in P, F coordinates to P coordinates (None: identity).\n"
+      "w_PF_P : array_like, shape (3,), optional\n    Angular velocity of F relative to P [rad/s], in P (None: zero).\n"
+      "alpha_PF_P : array_like, shape (3,), optional\n"
+      "    Angular acceleration of F relative to P [rad/s^2], in P (None: zero).\n"
+      "p_PF_P : array_like, shape (3,), optional\n    Position of F's origin relative to P's [m], in P (None: zero).\n"
+      "v_PF_P : array_like, shape (3,), optional\n    Velocity of F's origin seen from P [m/s], in P (None: zero).\n"
+      "a_PF_P : array_like, shape (3,), optional\n"
+      "    Acceleration of F's origin seen from P [m/s^2], in P (None: zero).\n\n"
+      "Raises\n------\nValueError\n    A non-rotation R_PF, NaN/Inf or a bad shape (the message names the argument).\n"
+      "\n"
+      "See Also\n--------\nFrameMotion, FrameTree.kinematics, compose_kinematics, point_velocity\n\n"
+      "Examples\n--------\n"
+      "F spins at 2 rad/s about its z axis, its origin fixed 1 m along P's x; a point fixed in F 1 m further out\n"
+      "moves at w x r_FQ = 2 m/s:\n\n"
+      ">>> K_PF = rd.FrameKinematics(w_PF_P=[0.0, 0.0, 2.0], p_PF_P=[1.0, 0.0, 0.0])\n"
+      ">>> rd.point_velocity(K_PF, [1.0, 0.0, 0.0], [0.0, 0.0, 0.0]).total\narray([0., 2., 0.])\n\n"
+      "Immutable; pickles; == compares every field exactly.")
       .def(py::init([](py::handle R_PF, py::handle w_PF_P, py::handle alpha_PF_P, py::handle p_PF_P,
                        py::handle v_PF_P, py::handle a_PF_P) {
              FrameKinematics K;
@@ -276,7 +299,8 @@ void bind_frame_kinematics(py::module_& m) {
            }),
            py::arg("R_PF") = py::none(), py::arg("w_PF_P") = py::none(), py::arg("alpha_PF_P") = py::none(),
            py::arg("p_PF_P") = py::none(), py::arg("v_PF_P") = py::none(), py::arg("a_PF_P") = py::none(),
-           "Arguments as the attributes (None: identity / zero). ValueError on a non-rotation R_PF or NaN/Inf.")
+           "Arguments as the attributes (None: identity / zero); see the class. ValueError on a non-rotation R_PF or\n"
+           "NaN/Inf.")
       .def_property_readonly("R_PF", [](const FrameKinematics& K) { return to_array(K.R_PF); },
                              "(3, 3) orientation of F in P: maps F coordinates to P coordinates.")
       .def_property_readonly("w_PF_P", [](const FrameKinematics& K) { return to_array(K.w_PF_P); },
@@ -303,9 +327,22 @@ void bind_frame_kinematics(py::module_& m) {
                        "compose_kinematics");
       },
       py::arg("K_AP"), py::arg("K_PF"),
-      "F relative to A from P relative to A and F relative to P (addition theorem for w; alpha with its\n"
-      "w_AP x w_PF term; origin by the point formulas of the \"Rigid body kinematics and dynamics\" notes,\n"
-      "(4.38), (4.39)). Result expressed in A.");
+      "Kinematics of F relative to A from those of P relative to A and of F relative to P.\n\n"
+      "R_AF = R_AP R_PF; the addition theorem w_AF = w_AP + w_PF; alpha_AF = alpha_AP + alpha_PF + w_AP x w_PF;\n"
+      "F's origin by the point formulas of the \"Rigid body kinematics and dynamics\" notes, (4.38), (4.39).\n\n"
+      "Parameters\n----------\n"
+      "K_AP : FrameKinematics\n    P relative to A, expressed in A.\n"
+      "K_PF : FrameKinematics\n    F relative to P, expressed in P.\n\n"
+      "Returns\n-------\nFrameKinematics\n    F relative to A, expressed in A.\n\n"
+      "Raises\n------\nTypeError\n    An argument not a FrameKinematics (naming it).\n\n"
+      "See Also\n--------\nrelative_kinematics, FrameTree.kinematics\n\n"
+      "Examples\n--------\n"
+      "P spins at 1 rad/s about z; F, 2 m along P's x, spins at 1 rad/s about P's x:\n\n"
+      ">>> K_AP = rd.FrameKinematics(w_PF_P=[0.0, 0.0, 1.0])\n"
+      ">>> K_PF = rd.FrameKinematics(w_PF_P=[1.0, 0.0, 0.0], p_PF_P=[2.0, 0.0, 0.0])\n"
+      ">>> K_AF = rd.compose_kinematics(K_AP, K_PF)\n"
+      ">>> K_AF.w_PF_P, K_AF.alpha_PF_P, K_AF.v_PF_P, K_AF.a_PF_P\n"
+      "(array([1., 0., 1.]), array([0., 1., 0.]), array([0., 2., 0.]), array([-2.,  0.,  0.]))\n");
   m.def(
       "relative_kinematics",
       [](py::handle K_WA, py::handle K_WF) {
@@ -313,20 +350,42 @@ void bind_frame_kinematics(py::module_& m) {
                        "relative_kinematics");
       },
       py::arg("K_WA"), py::arg("K_WF"),
-      "F relative to A from A and F relative to a common frame W; expressed in A. Inverse of compose_kinematics.");
+      "Kinematics of F relative to A from those of A and of F relative to a common frame W.\n\n"
+      "The inverse of compose_kinematics: compose_kinematics(K_WA, relative_kinematics(K_WA, K_WF)) is K_WF.\n\n"
+      "Parameters\n----------\n"
+      "K_WA : FrameKinematics\n    A relative to W, expressed in W.\n"
+      "K_WF : FrameKinematics\n    F relative to W, expressed in W.\n\n"
+      "Returns\n-------\nFrameKinematics\n    F relative to A, expressed in A.\n\n"
+      "Raises\n------\nTypeError\n    An argument not a FrameKinematics (naming it).\n\n"
+      "See Also\n--------\ncompose_kinematics, FrameTree.kinematics\n\n"
+      "Examples\n--------\n"
+      ">>> K_WA = rd.FrameKinematics(w_PF_P=[0.0, 0.0, 1.0])\n"
+      ">>> K_AF = rd.FrameKinematics(w_PF_P=[1.0, 0.0, 0.0], p_PF_P=[2.0, 0.0, 0.0])\n"
+      ">>> K = rd.relative_kinematics(K_WA, rd.compose_kinematics(K_WA, K_AF))\n"
+      ">>> bool(np.allclose(K.w_PF_P, K_AF.w_PF_P) and np.allclose(K.a_PF_P, K_AF.a_PF_P))\nTrue\n");
 }
 
 void bind_point_terms(py::module_& m) {
-  py::class_<PointVelocity>(m, "PointVelocity",
-                            "Velocity of a point Q moving in a frame F, seen from a frame A, term by term\n"
-                            "(\"Rigid body kinematics and dynamics\" notes (4.38)): total = origin + rotational +\n"
-                            "relative. Each (3,) [m/s], all expressed in the same frame E (the query's `expressed_in`;\n"
-                            "A for the free function point_velocity).")
+  py::class_<PointVelocity>(
+      m, "PointVelocity",
+      "Velocity of a point Q moving in a frame F, seen from a frame A, term by term.\n\n"
+      "v_AQ = v_AF + w_AF x r_FQ + v_FQ (\"Rigid body kinematics and dynamics\" notes (4.38)): total = origin +\n"
+      "rotational + relative. Each (3,) [m/s], all expressed in the same frame E (the query's `expressed_in`;\n"
+      "A for the free function point_velocity).\n\n"
+      "Parameters\n----------\n"
+      "origin : array_like, shape (3,)\n    v_AF_E, velocity of F's origin seen from A [m/s].\n"
+      "rotational : array_like, shape (3,)\n    w_AF x r_FQ [m/s].\n"
+      "relative : array_like, shape (3,)\n    v_FQ_E, velocity of Q seen from F [m/s].\n\n"
+      "See Also\n--------\npoint_velocity, FrameTree.point_velocity, PointAcceleration\n\n"
+      "Examples\n--------\n"
+      ">>> rd.PointVelocity([1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]).total\narray([1., 1., 1.])\n\n"
+      "Immutable; pickles; == compares every term exactly.")
       .def(py::init([](py::handle origin, py::handle rotational, py::handle relative) {
              return PointVelocity{as_vector3(origin, "origin"), as_vector3(rotational, "rotational"),
                                   as_vector3(relative, "relative")};
            }),
-           py::arg("origin"), py::arg("rotational"), py::arg("relative"), "From its terms (3,) [m/s], all in one frame.")
+           py::arg("origin"), py::arg("rotational"), py::arg("relative"),
+           "From its terms (3,) [m/s], all in one frame; see the class.")
       .def_property_readonly("origin", [](const PointVelocity& v) { return to_array(v.origin); },
                              "v_AF_E: velocity of F's origin seen from A, expressed in E [m/s]")
       .def_property_readonly("rotational", [](const PointVelocity& v) { return to_array(v.rotational); },
@@ -356,12 +415,24 @@ void bind_point_terms(py::module_& m) {
             return PointVelocity{as_vector3(s[0], "origin"), as_vector3(s[1], "rotational"), as_vector3(s[2], "relative")};
           }));
 
-  py::class_<PointAcceleration>(m, "PointAcceleration",
-                                "Acceleration of a point Q moving in a frame F, seen from a frame A, term by term\n"
-                                "(\"Rigid body kinematics and dynamics\" notes (4.39); Craig's \"Rigid Body Dynamics\"\n"
-                                "slides): total = origin + tangential + centripetal + relative + coriolis. Each (3,)\n"
-                                "[m/s^2], all expressed in one frame E (the query's `expressed_in`; A for the free\n"
-                                "function point_acceleration).")
+  py::class_<PointAcceleration>(
+      m, "PointAcceleration",
+      "Acceleration of a point Q moving in a frame F, seen from a frame A, term by term.\n\n"
+      "a_AQ = a_AF + alpha_AF x r_FQ + w_AF x (w_AF x r_FQ) + a_FQ + 2 w_AF x v_FQ (\"Rigid body kinematics and\n"
+      "dynamics\" notes (4.39); Craig's \"Rigid Body Dynamics\" slides): total = origin + tangential +\n"
+      "centripetal + relative + coriolis. Each (3,) [m/s^2], all expressed in one frame E (the query's\n"
+      "`expressed_in`; A for the free function point_acceleration).\n\n"
+      "Parameters\n----------\n"
+      "origin : array_like, shape (3,)\n    a_AF_E, acceleration of F's origin seen from A [m/s^2].\n"
+      "tangential : array_like, shape (3,)\n    alpha_AF x r_FQ [m/s^2].\n"
+      "centripetal : array_like, shape (3,)\n    w_AF x (w_AF x r_FQ) [m/s^2].\n"
+      "relative : array_like, shape (3,)\n    a_FQ_E, acceleration of Q seen from F [m/s^2].\n"
+      "coriolis : array_like, shape (3,)\n    2 w_AF x v_FQ [m/s^2].\n\n"
+      "See Also\n--------\npoint_acceleration, FrameTree.point_acceleration, PointVelocity\n\n"
+      "Examples\n--------\n"
+      ">>> a = rd.PointAcceleration([1.0, 0, 0], [0, 1.0, 0], [0, 0, 1.0], [1.0, 0, 0], [0, 1.0, 0])\n"
+      ">>> a.total\narray([2., 2., 1.])\n\n"
+      "Immutable; pickles; == compares every term exactly.")
       .def(py::init([](py::handle origin, py::handle tangential, py::handle centripetal, py::handle relative,
                        py::handle coriolis) {
              return PointAcceleration{as_vector3(origin, "origin"), as_vector3(tangential, "tangential"),
@@ -369,7 +440,7 @@ void bind_point_terms(py::module_& m) {
                                       as_vector3(coriolis, "coriolis")};
            }),
            py::arg("origin"), py::arg("tangential"), py::arg("centripetal"), py::arg("relative"), py::arg("coriolis"),
-           "From its terms (3,) [m/s^2], all in one frame.")
+           "From its terms (3,) [m/s^2], all in one frame; see the class.")
       .def_property_readonly("origin", [](const PointAcceleration& a) { return to_array(a.origin); },
                              "a_AF_E: acceleration of F's origin seen from A, expressed in E [m/s^2]")
       .def_property_readonly("tangential", [](const PointAcceleration& a) { return to_array(a.tangential); },
@@ -418,8 +489,22 @@ void bind_point_terms(py::module_& m) {
                        "point_velocity");
       },
       py::arg("K_AF"), py::arg("p_FQ_F"), py::arg("v_FQ_F"),
-      "Velocity terms of Q seen from A, expressed in A. K_AF: F relative to A; p_FQ_F (3,) [m] and v_FQ_F\n"
-      "(3,) [m/s]: Q's position relative to F's origin and its velocity seen from F, expressed in F.");
+      "Velocity of a point Q moving in frame F, seen from frame A, term by term.\n\n"
+      "v_AQ = v_AF + w_AF x r_FQ + v_FQ (\"Rigid body kinematics and dynamics\" notes (4.38)), every term\n"
+      "expressed in A.\n\n"
+      "Parameters\n----------\n"
+      "K_AF : FrameKinematics\n    F relative to A, expressed in A.\n"
+      "p_FQ_F : array_like, shape (3,)\n    Q's position relative to F's origin [m], expressed in F.\n"
+      "v_FQ_F : array_like, shape (3,)\n"
+      "    Q's velocity seen from F [m/s], expressed in F (zero for a point fixed in F).\n\n"
+      "Returns\n-------\nPointVelocity\n    origin, rotational, relative and total [m/s], expressed in A.\n\n"
+      "Raises\n------\nTypeError\n    K_AF not a FrameKinematics.\nValueError\n"
+      "    A vector of another shape or non-finite (naming it).\n\n"
+      "See Also\n--------\npoint_acceleration, FrameTree.point_velocity\n\n"
+      "Examples\n--------\n"
+      "A point 1 m from the axis of a frame spinning at 2 rad/s moves at 2 m/s:\n\n"
+      ">>> K_AF = rd.FrameKinematics(w_PF_P=[0.0, 0.0, 2.0])\n"
+      ">>> rd.point_velocity(K_AF, [1.0, 0.0, 0.0], [0.0, 0.0, 0.0]).total\narray([0., 2., 0.])\n");
   m.def(
       "point_acceleration",
       [](py::handle K_AF, py::handle p, py::handle v, py::handle a) {
@@ -428,8 +513,25 @@ void bind_point_terms(py::module_& m) {
                        "point_acceleration");
       },
       py::arg("K_AF"), py::arg("p_FQ_F"), py::arg("v_FQ_F"), py::arg("a_FQ_F"),
-      "Acceleration terms of Q seen from A, expressed in A; a_FQ_F (3,) [m/s^2]: Q's acceleration seen\n"
-      "from F, expressed in F; the rest as point_velocity.");
+      "Acceleration of a point Q moving in frame F, seen from frame A, term by term.\n\n"
+      "a_AQ = a_AF + alpha_AF x r_FQ + w_AF x (w_AF x r_FQ) + a_FQ + 2 w_AF x v_FQ (\"Rigid body kinematics and\n"
+      "dynamics\" notes (4.39)), every term expressed in A.\n\n"
+      "Parameters\n----------\n"
+      "K_AF : FrameKinematics\n    F relative to A, expressed in A.\n"
+      "p_FQ_F : array_like, shape (3,)\n    Q's position relative to F's origin [m], expressed in F.\n"
+      "v_FQ_F : array_like, shape (3,)\n    Q's velocity seen from F [m/s], expressed in F.\n"
+      "a_FQ_F : array_like, shape (3,)\n    Q's acceleration seen from F [m/s^2], expressed in F.\n\n"
+      "Returns\n-------\nPointAcceleration\n"
+      "    origin, tangential, centripetal, relative, coriolis and total [m/s^2], expressed in A.\n\n"
+      "Raises\n------\nTypeError\n    K_AF not a FrameKinematics.\nValueError\n"
+      "    A vector of another shape or non-finite (naming it).\n\n"
+      "See Also\n--------\npoint_velocity, FrameTree.point_acceleration\n\n"
+      "Examples\n--------\n"
+      "In a frame spinning at 2 rad/s about z: the centripetal term of a point 1 m out, and the Coriolis term of\n"
+      "a point at the origin moving at 1 m/s along x:\n\n"
+      ">>> K_AF = rd.FrameKinematics(w_PF_P=[0.0, 0.0, 2.0])\n"
+      ">>> rd.point_acceleration(K_AF, [1.0, 0, 0], [0, 0, 0], [0, 0, 0]).centripetal\narray([-4.,  0.,  0.])\n"
+      ">>> rd.point_acceleration(K_AF, [0, 0, 0], [1.0, 0, 0], [0, 0, 0]).coriolis\narray([0., 4., 0.])\n");
   m.def(
       "transport_derivative",
       [](py::handle w, py::handle u, py::handle du) {
@@ -437,26 +539,56 @@ void bind_point_terms(py::module_& m) {
                              "transport_derivative");
       },
       py::arg("w_AB"), py::arg("u"), py::arg("du_dt_in_B"),
-      "Transport theorem (Craig's \"Rigid Body Dynamics\" slides): d^A u/dt = d^B u/dt + w_AB x u. All (3,),\n"
-      "expressed in one frame.");
+      "Transport theorem: the derivative of a vector seen from A, from its derivative seen from B.\n\n"
+      "d^A u/dt = d^B u/dt + w_AB x u (Craig's \"Rigid Body Dynamics\" slides).\n\n"
+      "Parameters\n----------\n"
+      "w_AB : array_like, shape (3,)\n    Angular velocity of B relative to A [rad/s].\n"
+      "u : array_like, shape (3,)\n    The vector (any unit).\n"
+      "du_dt_in_B : array_like, shape (3,)\n    Its time derivative seen from B [unit of u / s].\n\n"
+      "Returns\n-------\nndarray, shape (3,)\n"
+      "    d^A u/dt [unit of u / s]. All vectors are expressed in one (any) frame.\n\n"
+      "Raises\n------\nValueError\n    A vector of another shape or non-finite (naming it).\n\n"
+      "See Also\n--------\nFrameTree.transport_derivative, point_velocity\n\n"
+      "Examples\n--------\n"
+      "A vector fixed in B (d^B u/dt = 0) turns with B:\n\n"
+      ">>> rd.transport_derivative([0.0, 0.0, 1.0], [1.0, 0.0, 0.0], [0.0, 0.0, 0.0])\narray([0., 1., 0.])\n");
 }
 
 void bind_frame_motion(py::module_& m) {
-  py::class_<FrameMotion>(m, "FrameMotion",
-                          "How a frame F moves relative to its parent P: a function of time t [s] giving its\n"
-                          "FrameKinematics (all vectors expressed in P).")
+  py::class_<FrameMotion>(
+      m, "FrameMotion",
+      "How a frame F moves relative to its parent P: a function of time t [s] giving its FrameKinematics (all\n"
+      "vectors expressed in P).\n\n"
+      "Built from a Python callable (general motion), or by FrameMotion.fixed or FrameMotion.constant_rotation.\n\n"
+      "Parameters\n----------\n"
+      "kinematics_at : callable\n"
+      "    t -> a FrameKinematics or a 6-tuple (R_PF (3,3), w_PF_P, alpha_PF_P, p_PF_P, v_PF_P, a_PF_P) (each\n"
+      "    (3,), expressed in P, SI units). The caller keeps them consistent (w, alpha the derivatives of R; v,\n"
+      "    a those of p); the tree checks each value (finite, R_PF a rotation) and raises ValueError naming the\n"
+      "    frame.\n\n"
+      "Raises\n------\nTypeError\n    kinematics_at not callable.\n\n"
+      "See Also\n--------\nFrameTree, FrameKinematics\n\n"
+      "Examples\n--------\n"
+      "A frame turning at 2 rad/s about P's z axis is a quarter turn on at t = pi/4 s:\n\n"
+      ">>> M = rd.FrameMotion.constant_rotation([0.0, 0.0, 1.0], 2.0)\n"
+      ">>> bool(np.allclose(M.at(np.pi / 4).R_PF, rd.rot_z(np.pi / 2))), M.at(0.1).w_PF_P\n"
+      "(True, array([0., 0., 2.]))\n\n"
+      "Immutable; pickles (a general motion when its callable pickles); == compares how it was built.")
       .def(py::init(&motion_from_python), py::arg("kinematics_at"),
            "General motion: kinematics_at(t) returns a FrameKinematics or a 6-tuple\n"
-           "(R_PF (3,3), w_PF_P, alpha_PF_P, p_PF_P, v_PF_P, a_PF_P) (each (3,), expressed in P). The caller\n"
-           "keeps them consistent (w, alpha the derivatives of R; v, a those of p); the tree checks each value\n"
-           "(finite, R_PF a rotation) and raises ValueError naming the frame.")
+           "(R_PF (3,3), w_PF_P, alpha_PF_P, p_PF_P, v_PF_P, a_PF_P) (each (3,), expressed in P); see the class.")
       .def_static(
           "fixed",
           [](py::handle R_PF, py::handle p_PF_P) {
             return FrameMotion::fixed(as_matrix3_or_identity(R_PF, "R_PF"), as_vector3_or_zero(p_PF_P, "p_PF_P"));
           },
           py::arg("R_PF") = py::none(), py::arg("p_PF_P") = py::none(),
-          "F fixed in P: orientation R_PF (3,3) (None: identity), origin at p_PF_P (3,) [m] in P (None: 0).")
+          "F fixed in P: orientation R_PF (3,3) (None: identity), origin at p_PF_P (3,) [m] in P (None: 0).\n\n"
+          "Parameters\n----------\nR_PF : array_like, shape (3, 3), optional\n    F coordinates to P coordinates.\n"
+          "p_PF_P : array_like, shape (3,), optional\n    F's origin relative to P's [m], in P.\n\n"
+          "Returns\n-------\nFrameMotion\n\n"
+          "Examples\n--------\n"
+          ">>> rd.FrameMotion.fixed(p_PF_P=[1.0, 2.0, 3.0]).at(5.0).p_PF_P\narray([1., 2., 3.])\n")
       .def_static(
           "constant_rotation",
           [](py::handle axis_P, py::handle rate, py::handle R_PF0, py::handle p_PF_P) {
@@ -467,7 +599,16 @@ void bind_frame_motion(py::module_& m) {
           "Simple angular velocity (Craig's \"Rigid Body Dynamics\" slides): F turns at `rate` [rad/s] about\n"
           "axis_P (3,) (expressed in P, any non-zero length) through F's origin, which stays at p_PF_P [m] in P\n"
           "(None: 0). R_PF(t) = exp(hat(rate t axis_P/|axis_P|)) R_PF0 (R_PF0: orientation at t = 0, None:\n"
-          "identity).")
+          "identity).\n\n"
+          "Parameters\n----------\naxis_P : array_like, shape (3,)\n    Rotation axis, in P (any non-zero length).\n"
+          "rate : float\n    Angular rate [rad/s].\n"
+          "R_PF0 : array_like, shape (3, 3), optional\n    R_PF at t = 0 (None: identity).\n"
+          "p_PF_P : array_like, shape (3,), optional\n    F's fixed origin relative to P's [m], in P (None: 0).\n\n"
+          "Returns\n-------\nFrameMotion\n\n"
+          "Examples\n--------\n"
+          ">>> M = rd.FrameMotion.constant_rotation([0.0, 0.0, 2.0], 1.0)\n"
+          ">>> bool(np.allclose(M.at(np.pi / 2).R_PF, rd.rot_z(np.pi / 2))), M.at(0.0).w_PF_P\n"
+          "(True, array([0., 0., 1.]))\n")
       .def(
           "at",
           [](const FrameMotion& motion, py::handle t) {
@@ -478,7 +619,15 @@ void bind_frame_motion(py::module_& m) {
               throw py::value_error(std::string("motion at t=") + format_value(time) + ": " + e.what());
             }
           },
-          py::arg("t"), "F relative to P at time t [s] (not checked: the tree checks the values it uses).")
+          py::arg("t"),
+          "FrameKinematics of F relative to P at time t [s], expressed in P (not checked: the tree checks the values\n"
+          "it uses).\n\n"
+          "Parameters\n----------\nt : float\n    Time [s].\n\n"
+          "Returns\n-------\nFrameKinematics\n    F relative to P, expressed in P.\n\n"
+          "Raises\n------\nTypeError\n    A general motion's value neither a FrameKinematics nor a 6-tuple.\n"
+          "ValueError\n    A part of that value of another shape (the message names t and the part).\n\n"
+          "Examples\n--------\n"
+          ">>> rd.FrameMotion.constant_rotation([0.0, 0.0, 1.0], 2.0).at(0.5).w_PF_P\narray([0., 0., 2.])\n")
       .def(
           "__eq__", [](const FrameMotion& a, py::handle b) { return equal_or_not_implemented(a, b, &same_motion); },
           py::is_operator(), "Built the same way from exactly equal parameters (or equal callables).")
@@ -491,18 +640,39 @@ void bind_frame_motion(py::module_& m) {
 }
 
 void bind_frame_tree(py::module_& m) {
-  py::class_<FrameTree>(m, "FrameTree",
-                        "A tree of reference frames rooted at the inertial frame 'world'. Each frame is placed\n"
-                        "relative to its parent by a FrameMotion. Queries relate any frame F (`frame`) to any\n"
-                        "frame A (`relative_to`) at time t [s], with results expressed in `expressed_in` E.\n"
-                        "Unknown names, duplicates and cycles raise ValueError. Trees of any depth (every walk\n"
-                        "is iterative).")
+  py::class_<FrameTree>(
+      m, "FrameTree",
+      "A tree of reference frames rooted at the inertial frame 'world'.\n\n"
+      "Each frame is placed relative to its parent by a FrameMotion. Queries relate any frame F (`frame`) to any\n"
+      "frame A (`relative_to`) at time t [s], with results expressed in `expressed_in` E. Unknown names,\n"
+      "duplicates and cycles raise ValueError. Trees of any depth (every walk is iterative).\n\n"
+      "Parameters\n----------\n"
+      "frames : list of (str, str, FrameMotion), optional\n"
+      "    (name, parent, motion) triples, as repr shows them (None: 'world' only); a parent may come after its\n"
+      "    child.\n\n"
+      "Raises\n------\nValueError\n    An unknown parent, a duplicate name or a cycle (naming it).\n"
+      "TypeError\n    frames not such a list (naming the bad item).\n\n"
+      "See Also\n--------\nFrameMotion, FrameKinematics, SceneFrame\n\n"
+      "Examples\n--------\n"
+      "An arm 2 m out on a table turning at 1 rad/s: its origin moves at 2 m/s, accelerates at 2 m/s^2 inward:\n\n"
+      ">>> tree = rd.FrameTree([(\"table\", \"world\", rd.FrameMotion.constant_rotation([0, 0, 1], 1.0)),\n"
+      "...                      (\"arm\", \"table\", rd.FrameMotion.fixed(p_PF_P=[2.0, 0, 0]))])\n"
+      ">>> tree.frame_names()\n['world', 'table', 'arm']\n"
+      ">>> tree.point_velocity(\"arm\", [0, 0, 0], [0, 0, 0], \"world\", \"world\", 0.0).total\narray([0., 2., 0.])\n"
+      ">>> tree.point_acceleration(\"arm\", [0, 0, 0], [0, 0, 0], [0, 0, 0], \"world\", \"world\", 0.0).total\n"
+      "array([-2.,  0.,  0.])\n\n"
+      "Mutable (add_frame, set_parent); pickles when its motions do; == compares names, parents and motions.")
       .def(py::init(&tree_from_frames), py::arg("frames") = py::none(),
            "A tree holding 'world' and the frames: a list of (name, parent, FrameMotion) triples (None: none),\n"
-           "as repr shows them; a parent may come after its child.")
+           "as repr shows them; a parent may come after its child. See the class.")
       .def(
           "motion", [](const FrameTree& tree, py::handle name) { return tree.motion(as_string(name, "name")); },
-          py::arg("name"), "The FrameMotion placing frame `name` in its parent ('world': fixed at the identity).")
+          py::arg("name"),
+          "The FrameMotion placing frame `name` in its parent ('world': fixed at the identity).\n\n"
+          "Parameters\n----------\nname : str\n    A frame of the tree (ValueError otherwise).\n\n"
+          "Returns\n-------\nFrameMotion\n\n"
+          "Examples\n--------\n"
+          ">>> rd.FrameTree().motion(\"world\").at(0.0).p_PF_P\narray([0., 0., 0.])\n")
       .def(
           "__eq__", [](const FrameTree& a, py::handle b) { return equal_or_not_implemented(a, b, &same_tree); },
           py::is_operator(), "Same names in the same order, same parents, equal motions.")
@@ -526,7 +696,15 @@ void bind_frame_tree(py::module_& m) {
             tree.add_frame(as_string(name, "name"), as_string(parent, "parent"), as_motion(motion));
           },
           py::arg("name"), py::arg("parent"), py::arg("motion"),
-          "Adds frame `name` under `parent` (which must exist), placed by `motion`.")
+          "Adds frame `name` under `parent` (which must exist), placed by `motion`.\n\n"
+          "Parameters\n----------\nname : str\n    The new frame's name (not in the tree yet).\n"
+          "parent : str\n    An existing frame.\nmotion : FrameMotion\n"
+          "    How the new frame moves relative to `parent`.\n\n"
+          "Raises\n------\nValueError\n    A duplicate name or an unknown parent (naming it).\n\n"
+          "Examples\n--------\n"
+          ">>> tree = rd.FrameTree()\n"
+          ">>> tree.add_frame(\"table\", \"world\", rd.FrameMotion.fixed(p_PF_P=[0.0, 0.0, 1.0]))\n"
+          ">>> tree.frame_names(), tree.parent(\"table\")\n(['world', 'table'], 'world')\n")
       .def(
           "set_parent",
           [](FrameTree& tree, py::handle name, py::handle parent, py::handle motion) {
@@ -534,13 +712,30 @@ void bind_frame_tree(py::module_& m) {
           },
           py::arg("name"), py::arg("parent"), py::arg("motion"),
           "Moves frame `name` and its subtree under `parent`, placed by `motion`. ValueError if that would\n"
-          "make a cycle (parent is `name` or one of its descendants) or `name` is 'world'.")
+          "make a cycle (parent is `name` or one of its descendants) or `name` is 'world'.\n\n"
+          "Parameters\n----------\nname : str\n    The frame to move.\nparent : str\n    Its new parent.\n"
+          "motion : FrameMotion\n    How it moves relative to the new parent.\n\n"
+          "Examples\n--------\n"
+          ">>> tree = rd.FrameTree([(\"a\", \"world\", rd.FrameMotion.fixed()), (\"b\", \"world\", "
+          "rd.FrameMotion.fixed())])\n"
+          ">>> tree.set_parent(\"b\", \"a\", rd.FrameMotion.fixed())\n"
+          ">>> tree.parent(\"b\")\n'a'\n")
       .def(
           "has_frame", [](const FrameTree& tree, py::handle name) { return tree.has_frame(as_string(name, "name")); },
-          py::arg("name"), "True if a frame of this name is in the tree.")
+          py::arg("name"),
+          "True if a frame of this name is in the tree.\n\n"
+          "Parameters\n----------\nname : str\n\n"
+          "Returns\n-------\nbool\n\n"
+          "Examples\n--------\n"
+          ">>> rd.FrameTree().has_frame(\"world\"), rd.FrameTree().has_frame(\"arm\")\n(True, False)\n")
       .def(
           "parent", [](const FrameTree& tree, py::handle name) { return tree.parent(as_string(name, "name")); },
-          py::arg("name"), "The parent's name ('' for 'world').")
+          py::arg("name"),
+          "The parent's name ('' for 'world').\n\n"
+          "Parameters\n----------\nname : str\n    A frame of the tree (ValueError otherwise).\n\n"
+          "Returns\n-------\nstr\n\n"
+          "Examples\n--------\n"
+          ">>> rd.FrameTree().parent(\"world\")\n''\n")
       .def("frame_names", &FrameTree::frame_names, "All names: 'world' first, then in the order added.")
       .def(
           "kinematics",
@@ -550,7 +745,20 @@ void bind_frame_tree(py::module_& m) {
                            "FrameTree.kinematics");
           },
           py::arg("frame"), py::arg("relative_to"), py::arg("t"),
-          "FrameKinematics of `frame` F relative to `relative_to` A at t, expressed in A.")
+          "FrameKinematics of `frame` F relative to `relative_to` A at t, expressed in A.\n\n"
+          "Parameters\n----------\n"
+          "frame : str\n    F, the frame queried.\n"
+          "relative_to : str\n    A, the frame it is seen from.\n"
+          "t : float\n    Time [s].\n"
+          "\nReturns\n-------\nFrameKinematics\n    F relative to A, every vector expressed in A (SI units).\n"
+          "\nRaises\n------\nValueError\n"
+          "    An unknown frame name, or a value of a user motion that is not finite or not a rotation (naming\n"
+          "    the frame).\n\n"
+          "Examples\n--------\n"
+          "An arm 2 m out on a table turning at 1 rad/s about z:\n\n"
+          ">>> tree = rd.FrameTree([(\"table\", \"world\", rd.FrameMotion.constant_rotation([0, 0, 1], 1.0)),\n"
+          "...                      (\"arm\", \"table\", rd.FrameMotion.fixed(p_PF_P=[2.0, 0, 0]))])\n"
+          ">>> tree.kinematics(\"arm\", \"world\", 0.0).v_PF_P\narray([0., 2., 0.])\n")
       .def(
           "rotation",
           [](const FrameTree& tree, py::handle frame, py::handle relative_to, py::handle t) {
@@ -559,7 +767,20 @@ void bind_frame_tree(py::module_& m) {
                                  "FrameTree.rotation");
           },
           py::arg("frame"), py::arg("relative_to"), py::arg("t"),
-          "R_AF (3,3): maps `frame` F coordinates to `relative_to` A coordinates at t.")
+          "R_AF (3,3): maps `frame` F coordinates to `relative_to` A coordinates at t.\n\n"
+          "Parameters\n----------\n"
+          "frame : str\n    F, the frame queried.\n"
+          "relative_to : str\n    A, the frame it is seen from.\n"
+          "t : float\n    Time [s].\n"
+          "\nReturns\n-------\nndarray, shape (3, 3)\n    R_AF.\n"
+          "\nRaises\n------\nValueError\n"
+          "    An unknown frame name, or a value of a user motion that is not finite or not a rotation (naming\n"
+          "    the frame).\n\n"
+          "Examples\n--------\n"
+          "An arm 2 m out on a table turning at 1 rad/s about z:\n\n"
+          ">>> tree = rd.FrameTree([(\"table\", \"world\", rd.FrameMotion.constant_rotation([0, 0, 1], 1.0)),\n"
+          "...                      (\"arm\", \"table\", rd.FrameMotion.fixed(p_PF_P=[2.0, 0, 0]))])\n"
+          ">>> bool(np.allclose(tree.rotation(\"arm\", \"world\", np.pi / 2), rd.rot_z(np.pi / 2)))\nTrue\n")
       .def(
           "angular_velocity",
           [](const FrameTree& tree, py::handle frame, py::handle relative_to, py::handle expressed_in, py::handle t) {
@@ -568,7 +789,21 @@ void bind_frame_tree(py::module_& m) {
                                  "FrameTree.angular_velocity");
           },
           py::arg("frame"), py::arg("relative_to"), py::arg("expressed_in"), py::arg("t"),
-          "w_AF_E (3,) [rad/s]: angular velocity of F relative to A (addition theorem), expressed in E.")
+          "w_AF_E (3,) [rad/s]: angular velocity of F relative to A (addition theorem), expressed in E.\n\n"
+          "Parameters\n----------\n"
+          "frame : str\n    F, the frame queried.\n"
+          "relative_to : str\n    A, the frame it is seen from.\n"
+          "expressed_in : str\n    E, the frame the result is expressed in.\n"
+          "t : float\n    Time [s].\n"
+          "\nReturns\n-------\nndarray, shape (3,)\n    w_AF_E [rad/s].\n"
+          "\nRaises\n------\nValueError\n"
+          "    An unknown frame name, or a value of a user motion that is not finite or not a rotation (naming\n"
+          "    the frame).\n\n"
+          "Examples\n--------\n"
+          "An arm 2 m out on a table turning at 1 rad/s about z:\n\n"
+          ">>> tree = rd.FrameTree([(\"table\", \"world\", rd.FrameMotion.constant_rotation([0, 0, 1], 1.0)),\n"
+          "...                      (\"arm\", \"table\", rd.FrameMotion.fixed(p_PF_P=[2.0, 0, 0]))])\n"
+          ">>> tree.angular_velocity(\"arm\", \"world\", \"arm\", 0.0)\narray([0., 0., 1.])\n")
       .def(
           "angular_acceleration",
           [](const FrameTree& tree, py::handle frame, py::handle relative_to, py::handle expressed_in, py::handle t) {
@@ -579,7 +814,21 @@ void bind_frame_tree(py::module_& m) {
           },
           py::arg("frame"), py::arg("relative_to"), py::arg("expressed_in"), py::arg("t"),
           "alpha_AF_E (3,) [rad/s^2]: d/dt in A of w_AF, expressed in E (includes the w x w terms; no\n"
-          "addition theorem for angular accelerations, Craig's \"Rigid Body Dynamics\" slides).")
+          "addition theorem for angular accelerations, Craig's \"Rigid Body Dynamics\" slides).\n\n"
+          "Parameters\n----------\n"
+          "frame : str\n    F, the frame queried.\n"
+          "relative_to : str\n    A, the frame it is seen from.\n"
+          "expressed_in : str\n    E, the frame the result is expressed in.\n"
+          "t : float\n    Time [s].\n"
+          "\nReturns\n-------\nndarray, shape (3,)\n    alpha_AF_E [rad/s^2].\n"
+          "\nRaises\n------\nValueError\n"
+          "    An unknown frame name, or a value of a user motion that is not finite or not a rotation (naming\n"
+          "    the frame).\n\n"
+          "Examples\n--------\n"
+          "An arm 2 m out on a table turning at 1 rad/s about z:\n\n"
+          ">>> tree = rd.FrameTree([(\"table\", \"world\", rd.FrameMotion.constant_rotation([0, 0, 1], 1.0)),\n"
+          "...                      (\"arm\", \"table\", rd.FrameMotion.fixed(p_PF_P=[2.0, 0, 0]))])\n"
+          ">>> tree.angular_acceleration(\"arm\", \"world\", \"world\", 0.0)\narray([0., 0., 0.])\n")
       .def(
           "transport_derivative",
           [](const FrameTree& tree, py::handle u, py::handle du, py::handle from_frame, py::handle to_frame,
@@ -594,7 +843,24 @@ void bind_frame_tree(py::module_& m) {
           py::arg("t"),
           "Transport theorem (Craig's \"Rigid Body Dynamics\" slides): the derivative of u seen from\n"
           "A = `to_frame`, from its derivative du_B_E seen from B = `from_frame`: du_B_E + w_AB x u_E. u_E,\n"
-          "du_B_E and the result (3,) in E.")
+          "du_B_E and the result (3,) in E.\n\n"
+          "Parameters\n----------\n"
+          "u_E : array_like, shape (3,)\n    The vector u (any unit), in E.\n"
+          "du_B_E : array_like, shape (3,)\n    Its derivative seen from B [unit of u / s], in E.\n"
+          "from_frame : str\n    B.\n"
+          "to_frame : str\n    A.\n"
+          "expressed_in : str\n    E, the frame the result is expressed in.\n"
+          "t : float\n    Time [s].\n"
+          "\nReturns\n-------\nndarray, shape (3,)\n    The derivative of u seen from A [unit of u / s], in E.\n"
+          "\nRaises\n------\nValueError\n"
+          "    An unknown frame name, or a value of a user motion that is not finite or not a rotation (naming\n"
+          "    the frame).\n\n"
+          "Examples\n--------\n"
+          "An arm 2 m out on a table turning at 1 rad/s about z:\n\n"
+          ">>> tree = rd.FrameTree([(\"table\", \"world\", rd.FrameMotion.constant_rotation([0, 0, 1], 1.0)),\n"
+          "...                      (\"arm\", \"table\", rd.FrameMotion.fixed(p_PF_P=[2.0, 0, 0]))])\n"
+          ">>> tree.transport_derivative([1.0, 0, 0], [0, 0, 0], \"table\", \"world\", \"world\", 0.0)\n"
+          "array([0., 1., 0.])\n")
       .def(
           "point_position",
           [](const FrameTree& tree, py::handle frame, py::handle p, py::handle relative_to, py::handle expressed_in,
@@ -606,7 +872,23 @@ void bind_frame_tree(py::module_& m) {
           },
           py::arg("frame"), py::arg("p_FQ_F"), py::arg("relative_to"), py::arg("expressed_in"), py::arg("t"),
           "p_AQ_E (3,) [m]: position of Q relative to A's origin, expressed in E; p_FQ_F (3,): Q relative\n"
-          "to F's origin, expressed in F.")
+          "to F's origin, expressed in F.\n\n"
+          "Parameters\n----------\n"
+          "frame : str\n    F, the frame queried.\n"
+          "p_FQ_F : array_like, shape (3,)\n    Q relative to F's origin [m], in F.\n"
+          "relative_to : str\n    A, the frame it is seen from.\n"
+          "expressed_in : str\n    E, the frame the result is expressed in.\n"
+          "t : float\n    Time [s].\n"
+          "\nReturns\n-------\nndarray, shape (3,)\n    p_AQ_E [m].\n"
+          "\nRaises\n------\nValueError\n"
+          "    An unknown frame name, or a value of a user motion that is not finite or not a rotation (naming\n"
+          "    the frame).\n\n"
+          "Examples\n--------\n"
+          "An arm 2 m out on a table turning at 1 rad/s about z:\n\n"
+          ">>> tree = rd.FrameTree([(\"table\", \"world\", rd.FrameMotion.constant_rotation([0, 0, 1], 1.0)),\n"
+          "...                      (\"arm\", \"table\", rd.FrameMotion.fixed(p_PF_P=[2.0, 0, 0]))])\n"
+          ">>> tree.point_position(\"arm\", [1.0, 0, 0], \"world\", \"world\", np.pi / 2).round(12)\n"
+          "array([0., 3., 0.])\n")
       .def(
           "point_velocity",
           [](const FrameTree& tree, py::handle frame, py::handle p, py::handle v, py::handle relative_to,
@@ -619,7 +901,24 @@ void bind_frame_tree(py::module_& m) {
           py::arg("frame"), py::arg("p_FQ_F"), py::arg("v_FQ_F"), py::arg("relative_to"), py::arg("expressed_in"),
           py::arg("t"),
           "PointVelocity of Q seen from A, terms expressed in E. Q at p_FQ_F [m] moving with v_FQ_F [m/s] as\n"
-          "seen from F (both (3,), expressed in F; zeros for a point fixed in F).")
+          "seen from F (both (3,), expressed in F; zeros for a point fixed in F).\n\n"
+          "Parameters\n----------\n"
+          "frame : str\n    F, the frame queried.\n"
+          "p_FQ_F : array_like, shape (3,)\n    Q relative to F's origin [m], in F.\n"
+          "v_FQ_F : array_like, shape (3,)\n    Q's velocity seen from F [m/s], in F.\n"
+          "relative_to : str\n    A, the frame it is seen from.\n"
+          "expressed_in : str\n    E, the frame the result is expressed in.\n"
+          "t : float\n    Time [s].\n"
+          "\nReturns\n-------\nPointVelocity\n    origin, rotational, relative and total [m/s], in E.\n"
+          "\nRaises\n------\nValueError\n"
+          "    An unknown frame name, or a value of a user motion that is not finite or not a rotation (naming\n"
+          "    the frame).\n\n"
+          "Examples\n--------\n"
+          "An arm 2 m out on a table turning at 1 rad/s about z:\n\n"
+          ">>> tree = rd.FrameTree([(\"table\", \"world\", rd.FrameMotion.constant_rotation([0, 0, 1], 1.0)),\n"
+          "...                      (\"arm\", \"table\", rd.FrameMotion.fixed(p_PF_P=[2.0, 0, 0]))])\n"
+          ">>> tree.point_velocity(\"arm\", [0, 0, 0], [0, 0, 0], \"world\", \"world\", 0.0).total\n"
+          "array([0., 2., 0.])\n")
       .def(
           "point_acceleration",
           [](const FrameTree& tree, py::handle frame, py::handle p, py::handle v, py::handle a, py::handle relative_to,
@@ -633,7 +932,27 @@ void bind_frame_tree(py::module_& m) {
           py::arg("frame"), py::arg("p_FQ_F"), py::arg("v_FQ_F"), py::arg("a_FQ_F"), py::arg("relative_to"),
           py::arg("expressed_in"), py::arg("t"),
           "PointAcceleration of Q seen from A (origin, tangential, centripetal, relative, coriolis, total),\n"
-          "terms expressed in E [m/s^2]; a_FQ_F (3,): Q's acceleration seen from F, expressed in F.");
+          "terms expressed in E [m/s^2]; a_FQ_F (3,): Q's acceleration seen from F, expressed in F.\n\n"
+          "Parameters\n----------\n"
+          "frame : str\n    F, the frame queried.\n"
+          "p_FQ_F : array_like, shape (3,)\n    Q relative to F's origin [m], in F.\n"
+          "v_FQ_F : array_like, shape (3,)\n    Q's velocity seen from F [m/s], in F.\n"
+          "a_FQ_F : array_like, shape (3,)\n    Q's acceleration seen from F [m/s^2], in F.\n"
+          "relative_to : str\n    A, the frame it is seen from.\n"
+          "expressed_in : str\n    E, the frame the result is expressed in.\n"
+          "t : float\n    Time [s].\n"
+          "\nReturns\n-------\nPointAcceleration\n"
+          "    origin, tangential, centripetal, relative, coriolis and total [m/s^2], in E.\n"
+          "\nRaises\n------\nValueError\n"
+          "    An unknown frame name, or a value of a user motion that is not finite or not a rotation (naming\n"
+          "    the frame).\n\n"
+          "Examples\n--------\n"
+          "An arm 2 m out on a table turning at 1 rad/s about z:\n\n"
+          ">>> tree = rd.FrameTree([(\"table\", \"world\", rd.FrameMotion.constant_rotation([0, 0, 1], 1.0)),\n"
+          "...                      (\"arm\", \"table\", rd.FrameMotion.fixed(p_PF_P=[2.0, 0, 0]))])\n"
+          ">>> tree.point_acceleration(\"arm\", [0, 0, 0], [0, 0, 0], [0, 0, 0], \"world\", \"world\", "
+          "0.0).origin\n"
+          "array([-2.,  0.,  0.])\n");
 }
 
 }  // namespace

@@ -220,7 +220,13 @@ void bind_value_protocol(py::class_<Spatial>& c, const std::string& type) {
        },
        "other"_a, "prec"_a = 1e-12,
        ("True when the 6-vectors agree to `prec` relative to the smaller norm (Eigen's isApprox: |a - b| <=\n"
-        "prec min(|a|, |b|), so only an exactly zero " + type + " is close to zero). == compares exactly.").c_str())
+        "prec min(|a|, |b|), so only an exactly zero " + type + " is close to zero). == compares exactly.\n\n"
+        "Parameters\n----------\nother : " + type + "\n    In the same frame.\n"
+        "prec : float, default 1e-12\n    Relative tolerance, >= 0.\n\n"
+        "Returns\n-------\nbool\n\n"
+        "Raises\n------\nTypeError\n    other not a " + type + ".\nValueError\n    prec negative or not finite.\n\n"
+        "Examples\n--------\n"
+        ">>> rd." + type + "([1.0, 0.0, 0.0]).is_approx(rd." + type + "([1.0 + 1e-14, 0.0, 0.0]))\nTrue\n").c_str())
       .def(
           "__eq__",
           [](const Spatial& a, py::handle b) {
@@ -241,52 +247,115 @@ void bind_value_protocol(py::class_<Spatial>& c, const std::string& type) {
 }
 
 void bind_motion(py::module_& m) {
-  py::class_<Motion> c(m, "Motion",
-                       "Spatial motion vector (twist) [w; v], angular part first: w angular velocity [rad/s], v\n"
-                       "velocity [m/s] of the body point at the origin of the frame of expression.");
+  py::class_<Motion> c(
+      m, "Motion",
+      "Spatial motion vector (twist) V = [w; v], angular part first.\n\n"
+      "w is the angular velocity [rad/s] and v the velocity [m/s] of the body point at the origin of the frame\n"
+      "of expression, both expressed in that frame: Plücker coordinates in Featherstone's convention (\"Rigid\n"
+      "Body Dynamics Algorithms\"), the order of MuJoCo, Drake and RigidBodyDynamics.jl (Pinocchio puts\n"
+      "the linear part first). The order matters only at to_vector / from_vector.\n\n"
+      "Parameters\n----------\n"
+      "angular : array_like, shape (3,), optional\n    w [rad/s] (None: zero).\n"
+      "linear : array_like, shape (3,), optional\n    v [m/s] of the body point at the frame's origin (None: zero).\n\n"
+      "Raises\n------\nValueError\n    A part of another shape or non-finite (the message names it).\n\n"
+      "See Also\n--------\nForce, Transform, motion_cross_matrix, twist_to_screw\n\n"
+      "Examples\n--------\n"
+      "The power w . n + v . f of a force on a motion is the same in every frame:\n\n"
+      ">>> V = rd.Motion([0.0, 0.0, 1.0], [1.0, 0.0, 0.0])\n"
+      ">>> V.to_vector()\narray([0., 0., 1., 1., 0., 0.])\n"
+      ">>> F = rd.Force([0.0, 0.0, 2.0], [0.0, 3.0, 0.0])\n"
+      ">>> X = rd.Transform(rd.rot_z(np.pi / 2), [1.0, 0.0, 0.0])\n"
+      ">>> V.dot(F), bool(np.isclose(X.act(V).dot(X.act(F)), V.dot(F)))\n(2.0, True)\n\n"
+      "Immutable; supports +, -, scalar *; pickles; == compares exactly.");
   c.def(py::init([](py::handle angular, py::handle linear) {
          return Motion(py_io::as_vector3_or_zero(angular, "angular"), py_io::as_vector3_or_zero(linear, "linear"));
        }),
-       "angular"_a = py::none(), "linear"_a = py::none(), "Motion from w (3,) [rad/s] and v (3,) [m/s] (None: zero).")
+       "angular"_a = py::none(), "linear"_a = py::none(),
+       "Motion from w (3,) [rad/s] and v (3,) [m/s] in one frame (None: zero); see the class.")
       .def_property_readonly("angular", [](const Motion& s) { return read_only(s.angular); },
                              "w (3,) [rad/s], expressed in the frame of the motion; read-only copy")
       .def_property_readonly("linear", [](const Motion& s) { return read_only(s.linear); },
-                             "v (3,) [m/s] of the body point at the frame's origin, expressed in that frame; read-only copy")
-      .def("to_vector", [](const Motion& s) { return py_io::to_array(s.to_vector()); }, "[w; v] as a (6,) array.")
+                             "v (3,) [m/s] of the body point at the frame's origin, expressed in that frame; "
+                             "read-only copy")
+      .def("to_vector", [](const Motion& s) { return py_io::to_array(s.to_vector()); },
+           "[w; v] as a (6,) array, angular first ([rad/s], [m/s]), in the motion's frame.")
       .def_static("from_vector", [](py::handle v) { return Motion::from_vector(py_io::as_vector6(v, "vector")); },
-                  "vector"_a, "Motion from a (6,) array [w; v].")
+                  "vector"_a,
+                  "Motion from a (6,) array [w; v], angular first ([rad/s], [m/s]); ValueError on another shape or "
+                  "NaN/Inf.\n\n"
+                  "Parameters\n----------\nvector : array_like, shape (6,)\n    [w; v] ([rad/s], [m/s]).\n\n"
+                  "Returns\n-------\nMotion\n\n"
+                  "Examples\n--------\n"
+                  ">>> rd.Motion.from_vector([0.0, 0.0, 1.0, 1.0, 0.0, 0.0]).linear\narray([1., 0., 0.])\n")
       .def(
           "cross", [](const Motion& s, py::handle other) { return checked(s.cross(as_motion(other, "other")), "Motion.cross"); },
-          "other"_a, "Motion cross product (crm): self x other = [w1 x w2; w1 x v2 + v1 x w2].")
+          "other"_a,
+          "Motion cross product (crm): self x other = [w1 x w2; w1 x v2 + v1 x w2], in the common frame\n"
+          "([rad/s^2], [m/s^2] for two twists).\n\n"
+          "Parameters\n----------\nother : Motion\n    In the same frame.\n\n"
+          "Returns\n-------\nMotion\n\n"
+          "Examples\n--------\n"
+          ">>> rd.Motion([0.0, 0.0, 1.0]).cross(rd.Motion(linear=[1.0, 0.0, 0.0])).linear\narray([0., 1., 0.])\n")
       .def(
           "cross_force",
           [](const Motion& s, py::handle force) { return checked(s.cross(as_force(force, "force")), "Motion.cross_force"); },
-          "force"_a, "Force cross product (crf): self x* force = [w x n + v x f; w x f].")
+          "force"_a,
+          "Force cross product (crf): self x* force = [w x n + v x f; w x f] ([N m/s], [N/s]), in the common frame.\n\n"
+          "Parameters\n----------\nforce : Force\n    In this motion's frame.\n\n"
+          "Returns\n-------\nForce\n\n"
+          "Examples\n--------\n"
+          ">>> rd.Motion([0.0, 0.0, 1.0]).cross_force(rd.Force(linear=[1.0, 0.0, 0.0])).linear\narray([0., 1., 0.])\n")
       .def(
           "dot",
           [](const Motion& s, py::handle force) {
             return py_io::finite_result(s.dot(as_force(force, "force")), "Motion.dot");
           },
-          "force"_a, "Power w . n + v . f [W] of the force on this motion (same frame and reference point).");
+          "force"_a,
+          "Power w . n + v . f [W] of the force on this motion (same frame and reference point).\n\n"
+          "Parameters\n----------\nforce : Force\n    [n; f] ([N m], [N]), in this motion's frame.\n\n"
+          "Returns\n-------\nfloat\n    The power [W], the same in every frame.\n\n"
+          "Examples\n--------\n"
+          ">>> rd.Motion([0.0, 0.0, 1.0], [1.0, 0.0, 0.0]).dot(rd.Force([0.0, 0.0, 2.0], [3.0, 0.0, 0.0]))\n5.0\n");
   bind_value_protocol(c, "Motion");
   bind_linear_operators(c, "Motion");
 }
 
 void bind_force(py::module_& m) {
-  py::class_<Force> c(m, "Force",
-                      "Spatial force vector (wrench) [n; f], angular part first: n moment [N m] about the\n"
-                      "origin of the frame of expression, f force [N].");
+  py::class_<Force> c(
+      m, "Force",
+      "Spatial force vector (wrench) F = [n; f], angular part first.\n\n"
+      "n is the moment [N m] about the origin of the frame of expression and f the force [N], both expressed in\n"
+      "that frame: Featherstone's convention (\"Rigid Body Dynamics Algorithms\"), moment first as in\n"
+      "MuJoCo and Drake. The order matters only at to_vector / from_vector.\n\n"
+      "Parameters\n----------\n"
+      "angular : array_like, shape (3,), optional\n    n [N m] about the frame's origin (None: zero).\n"
+      "linear : array_like, shape (3,), optional\n    f [N] (None: zero).\n\n"
+      "Raises\n------\nValueError\n    A part of another shape or non-finite (the message names it).\n\n"
+      "See Also\n--------\nMotion, Transform, force_cross_matrix\n\n"
+      "Examples\n--------\n"
+      "A force f = (0, 1, 0) [N] through (1, 0, 0) [m], moved to the origin, has the moment p x f:\n\n"
+      ">>> F = rd.Transform(translation=[1.0, 0.0, 0.0]).act(rd.Force(linear=[0.0, 1.0, 0.0]))\n"
+      ">>> F.to_vector()\narray([0., 0., 1., 0., 1., 0.])\n\n"
+      "Immutable; supports +, -, scalar *; pickles; == compares exactly.");
   c.def(py::init([](py::handle angular, py::handle linear) {
          return Force(py_io::as_vector3_or_zero(angular, "angular"), py_io::as_vector3_or_zero(linear, "linear"));
        }),
-       "angular"_a = py::none(), "linear"_a = py::none(), "Force from n (3,) [N m] and f (3,) [N] (None: zero).")
+       "angular"_a = py::none(), "linear"_a = py::none(),
+       "Force from n (3,) [N m] and f (3,) [N] in one frame (None: zero); see the class.")
       .def_property_readonly("angular", [](const Force& s) { return read_only(s.angular); },
                              "n (3,) [N m]: moment about the frame's origin, expressed in that frame; read-only copy")
       .def_property_readonly("linear", [](const Force& s) { return read_only(s.linear); },
                              "f (3,) [N], expressed in the frame of the force; read-only copy")
-      .def("to_vector", [](const Force& s) { return py_io::to_array(s.to_vector()); }, "[n; f] as a (6,) array.")
+      .def("to_vector", [](const Force& s) { return py_io::to_array(s.to_vector()); },
+           "[n; f] as a (6,) array, moment first ([N m], [N]), in the force's frame.")
       .def_static("from_vector", [](py::handle v) { return Force::from_vector(py_io::as_vector6(v, "vector")); },
-                  "vector"_a, "Force from a (6,) array [n; f].");
+                  "vector"_a,
+                  "Force from a (6,) array [n; f], moment first ([N m], [N]); ValueError on another shape or "
+                  "NaN/Inf.\n\n"
+                  "Parameters\n----------\nvector : array_like, shape (6,)\n    [n; f] ([N m], [N]).\n\n"
+                  "Returns\n-------\nForce\n\n"
+                  "Examples\n--------\n"
+                  ">>> rd.Force.from_vector([0.0, 0.0, 1.0, 0.0, 2.0, 0.0]).angular\narray([0., 0., 1.])\n");
   bind_value_protocol(c, "Force");
   bind_linear_operators(c, "Force");
 }
@@ -300,16 +369,29 @@ py::object act_on(py::handle spatial_vector, const char* quantity, Act act) {
 }
 
 void bind_transform(py::module_& m) {
-  py::class_<Transform>(m, "Transform",
-                        "Rigid transform X_AB: R_AB (B coordinates -> A coordinates) and p_AB (B's origin in A)\n"
-                        "[m]. Maps points, motions and forces expressed in B to A; X_AB * X_BC = X_AC.")
+  py::class_<Transform>(
+      m, "Transform",
+      "Rigid transform X_AB: R_AB (B coordinates -> A coordinates) and p_AB (B's origin in A) [m].\n\n"
+      "Maps points (p_A = R_AB p_B + p_AB), motions and forces expressed in B to A; X_AB * X_BC = X_AC. On\n"
+      "spatial vectors (angular part first) it is Featherstone's X (motion_matrix) and X* (force_matrix).\n\n"
+      "Parameters\n----------\n"
+      "rotation : array_like, shape (3, 3), optional\n    R_AB, orthonormal with det +1 (None: identity).\n"
+      "translation : array_like, shape (3,), optional\n    p_AB [m], B's origin in A (None: zero).\n\n"
+      "Raises\n------\nValueError\n    A non-rotation or non-finite input (the message names it).\n\n"
+      "See Also\n--------\ntransform_compose, transform_points, Motion, Force\n\n"
+      "Examples\n--------\n"
+      "B turned a quarter turn about z, its origin at (1, 0, 0) in A:\n\n"
+      ">>> X_AB = rd.Transform(rd.rot_z(np.pi / 2), [1.0, 0.0, 0.0])\n"
+      ">>> X_AB.act_point([1.0, 0.0, 0.0]).round(12)\narray([1., 1., 0.])\n"
+      ">>> (X_AB * X_AB.inverse()).is_approx(rd.Transform())\nTrue\n\n"
+      "Immutable; pickles; == compares exactly.")
       .def(py::init([](py::handle rotation, py::handle translation) {
              return Transform(py_io::as_matrix3_or_identity(rotation, "rotation"),
                               py_io::as_vector3_or_zero(translation, "translation"));
            }),
            "rotation"_a = py::none(), "translation"_a = py::none(),
            "X_AB from rotation R_AB (3,3), orthonormal with det +1 (default identity), and translation\n"
-           "p_AB (3,) [m] (default zero). ValueError on a non-rotation or non-finite input.")
+           "p_AB (3,) [m] (default zero); see the class. ValueError on a non-rotation or non-finite input.")
       .def_static(
           "from_quat",
           [](py::handle q, py::handle translation, py::handle scalar_first) {
@@ -317,43 +399,89 @@ void bind_transform(py::module_& m) {
             return Transform::from_quat(q_AB, py_io::as_vector3_or_zero(translation, "translation"));
           },
           "q_AB"_a, "translation"_a = py::none(), "scalar_first"_a = false,
-          "X_AB from the unit quaternion q_AB (4,) ((x, y, z, w), or (w, x, y, z) if scalar_first) and\n"
-          "p_AB (3,) [m] (default zero).")
+          "X_AB from a unit quaternion and a translation.\n\n"
+          "Parameters\n----------\nq_AB : array_like, shape (4,)\n"
+          "    Unit quaternion B -> A, (x, y, z, w), or (w, x, y, z) if `scalar_first`.\n"
+          "translation : array_like, shape (3,), optional\n    p_AB [m], B's origin in A (None: zero).\n"
+          "scalar_first : bool, default False\n    Read q_AB scalar first.\n\n"
+          "Returns\n-------\nTransform\n    X_AB.\n\n"
+          "Raises\n------\nValueError\n"
+          "    A quaternion not of unit norm, or a non-finite or badly shaped argument (naming it).\n\n"
+          "Examples\n--------\n"
+          ">>> X = rd.Transform.from_quat([0.0, 0.0, np.sin(np.pi / 4), np.cos(np.pi / 4)], [1.0, 0.0, 0.0])\n"
+          ">>> X.is_approx(rd.Transform(rd.rot_z(np.pi / 2), [1.0, 0.0, 0.0]))\nTrue\n")
       .def_property_readonly("rotation", [](const Transform& X) { return read_only(X.rotation()); },
-                             "R_AB (3,3), read-only copy")
+                             "R_AB (3,3): maps B coordinates to A coordinates; read-only copy")
       .def_property_readonly("translation", [](const Transform& X) { return read_only(X.translation()); },
-                             "p_AB (3,) [m], read-only copy")
+                             "p_AB (3,) [m]: B's origin relative to A's, expressed in A; read-only copy")
       .def(
           "quat",
           [](const Transform& X, py::handle scalar_first) { return py_io::to_array(X.quat(), as_scalar_first(scalar_first)); },
-          "scalar_first"_a = false, "q_AB (4,) with w >= 0, (x, y, z, w) or (w, x, y, z) if scalar_first.")
+          "scalar_first"_a = false,
+          "The rotation R_AB as a unit quaternion q_AB.\n\n"
+          "Parameters\n----------\nscalar_first : bool, default False\n"
+          "    Return (w, x, y, z) instead of (x, y, z, w).\n\n"
+          "Returns\n-------\nndarray, shape (4,)\n    q_AB with w >= 0.\n\n"
+          "Examples\n--------\n"
+          ">>> rd.Transform(rd.rot_z(np.pi / 2)).quat(scalar_first=True).round(12)\n"
+          "array([0.70710678, 0.        , 0.        , 0.70710678])\n")
       .def(
           "act_point",
           [](const Transform& X, py::handle p_B) {
             return map_points(p_B, "p_B", "Transform.act_point", [&X](const Eigen::Vector3d& p) { return X.act_point(p); });
           },
-          "p_B"_a, "p_A = R_AB p_B + p_AB for points p_B (3,) or (n, 3) [m].")
+          "p_B"_a,
+          "Map points from B to A: p_A = R_AB p_B + p_AB.\n\n"
+          "Parameters\n----------\np_B : array_like, shape (3,) or (n, 3)\n    Points in B [m].\n\n"
+          "Returns\n-------\nndarray, shape (3,) or (n, 3)\n    p_A, the points in A [m].\n\n"
+          "Examples\n--------\n"
+          ">>> rd.Transform(rd.rot_z(np.pi / 2), [1.0, 0.0, 0.0]).act_point([1.0, 0.0, 0.0]).round(12)\n"
+          "array([1., 1., 0.])\n")
       .def(
           "act_inv_point",
           [](const Transform& X, py::handle p_A) {
             return map_points(p_A, "p_A", "Transform.act_inv_point",
                               [&X](const Eigen::Vector3d& p) { return X.act_inv_point(p); });
           },
-          "p_A"_a, "p_B = R_AB^T (p_A - p_AB) for points p_A (3,) or (n, 3) [m].")
+          "p_A"_a,
+          "Map points from A to B: p_B = R_AB^T (p_A - p_AB), the inverse of act_point.\n\n"
+          "Parameters\n----------\np_A : array_like, shape (3,) or (n, 3)\n    Points in A [m].\n\n"
+          "Returns\n-------\nndarray, shape (3,) or (n, 3)\n    p_B, the points in B [m].\n\n"
+          "Examples\n--------\n"
+          ">>> X = rd.Transform(rd.rot_z(np.pi / 2), [1.0, 0.0, 0.0])\n"
+          ">>> X.act_inv_point(X.act_point([[1.0, 2.0, 3.0], [4.0, 5.0, 6.0]])).round(12)\n"
+          "array([[1., 2., 3.],\n       [4., 5., 6.]])\n")
       .def(
           "act",
           [](const Transform& X, py::handle spatial_vector) {
             return act_on(spatial_vector, "Transform.act", [&X](const auto& v) { return X.act(v); });
           },
           "spatial_vector"_a,
-          "A Motion in B -> in A: [R w; R v + p x (R w)]; a Force in B -> in A: [R n + p x (R f); R f].")
+          "Express a spatial vector given in B in A (Featherstone's X for a Motion, X* for a Force).\n\n"
+          "A Motion in B -> in A: [R w; R v + p x (R w)]; a Force in B -> in A: [R n + p x (R f); R f]\n"
+          "(R = R_AB, p = p_AB, angular part first).\n\n"
+          "Parameters\n----------\nspatial_vector : Motion or Force\n"
+          "    Expressed in B (a Force's moment about B's origin).\n\n"
+          "Returns\n-------\nMotion or Force\n    The same vector expressed in A (about A's origin).\n\n"
+          "Raises\n------\nTypeError\n    spatial_vector neither a Motion nor a Force.\n\n"
+          "Examples\n--------\n"
+          ">>> rd.Transform(translation=[1.0, 0.0, 0.0]).act(rd.Force(linear=[0.0, 1.0, 0.0])).angular\n"
+          "array([0., 0., 1.])\n")
       .def(
           "act_inv",
           [](const Transform& X, py::handle spatial_vector) {
             return act_on(spatial_vector, "Transform.act_inv", [&X](const auto& v) { return X.act_inv(v); });
           },
           "spatial_vector"_a,
-          "A Motion in A -> in B: [R^T w; R^T (v - p x w)]; a Force in A -> in B: [R^T (n - p x f); R^T f].")
+          "Express a spatial vector given in A in B, the inverse of act.\n\n"
+          "A Motion in A -> in B: [R^T w; R^T (v - p x w)]; a Force in A -> in B: [R^T (n - p x f); R^T f]\n"
+          "(R = R_AB, p = p_AB, angular part first).\n\n"
+          "Parameters\n----------\nspatial_vector : Motion or Force\n    Expressed in A.\n\n"
+          "Returns\n-------\nMotion or Force\n    The same vector expressed in B.\n\n"
+          "Raises\n------\nTypeError\n    spatial_vector neither a Motion nor a Force.\n\n"
+          "Examples\n--------\n"
+          ">>> X, V = rd.Transform(rd.rot_z(np.pi / 2), [1.0, 0.0, 0.0]), rd.Motion([0.0, 0.0, 1.0], [1.0, 0.0, 0.0])\n"
+          ">>> X.act_inv(X.act(V)).is_approx(V)\nTrue\n")
       .def(
           "__mul__",
           [](const Transform& X_AB, py::handle X_BC) {
@@ -361,7 +489,8 @@ void bind_transform(py::module_& m) {
                                    [](const Transform& a, const Transform& b) { return a * b; });
           },
           py::is_operator(), "X_AB * X_BC = X_AC.")
-      .def("inverse", [](const Transform& X) { return checked(X.inverse(), "Transform.inverse"); }, "X_BA = X_AB^-1.")
+      .def("inverse", [](const Transform& X) { return checked(X.inverse(), "Transform.inverse"); },
+           "X_BA = X_AB^-1: R_BA = R_AB^T, p_BA = -R_AB^T p_AB [m].")
       .def("motion_matrix", [](const Transform& X) { return py_io::finite_result(X.motion_matrix(), "Transform.motion_matrix"); },
            "Featherstone's X (6,6), angular first: [[R, 0], [hat(p) R, R]].")
       .def("force_matrix", [](const Transform& X) { return py_io::finite_result(X.force_matrix(), "Transform.force_matrix"); },
@@ -396,10 +525,22 @@ void bind_transform(py::module_& m) {
 }
 
 void bind_screw(py::module_& m) {
-  py::class_<Screw>(m, "Screw",
-                    "Screw of a twist (instantaneous screw axis): unit direction, point of the axis closest to\n"
-                    "the origin [m], pitch [m/rad] (inf for a pure translation) and magnitude (|w| [rad/s], or\n"
-                    "|v| [m/s] for a pure translation), all in the twist's frame.")
+  py::class_<Screw>(
+      m, "Screw",
+      "Screw of a twist (instantaneous screw axis), all in the twist's frame.\n\n"
+      "A unit direction, the point of the axis closest to the origin [m], the pitch [m/rad] (inf for a pure\n"
+      "translation) and the magnitude (|w| [rad/s], or |v| [m/s] for a pure translation): the twist turns at\n"
+      "`magnitude` about the axis while it slides along it at pitch times that.\n\n"
+      "Parameters\n----------\n"
+      "direction : array_like, shape (3,)\n    Unit axis direction (checked by screw_to_twist).\n"
+      "point : array_like, shape (3,)\n    A point of the axis [m].\n"
+      "pitch : float\n    Translation per turn angle [m/rad]; inf for a pure translation.\n"
+      "magnitude : float\n    |w| [rad/s] (or |v| [m/s] for pitch inf).\n\n"
+      "See Also\n--------\ntwist_to_screw, screw_to_twist, Motion\n\n"
+      "Examples\n--------\n"
+      ">>> s = rd.Screw([0.0, 0.0, 1.0], [-1.0, 0.0, 0.0], 0.25, 2.0)\n"
+      ">>> rd.screw_to_twist(s).to_vector()\narray([0. , 0. , 2. , 0. , 2. , 0.5])\n\n"
+      "Immutable; pickles; == compares every part exactly.")
       .def(py::init([](py::handle direction, py::handle point, py::handle pitch, py::handle magnitude) {
              return Screw{py_io::as_vector3(direction, "direction"), py_io::as_vector3(point, "point"),
                           py_io::as_extended_real(pitch, "pitch"), py_io::as_scalar(magnitude, "magnitude")};
@@ -408,11 +549,12 @@ void bind_screw(py::module_& m) {
            "Screw from its parts (checked by screw_to_twist): direction (3,) unit, point (3,) [m], pitch [m/rad]\n"
            "(inf: pure translation), magnitude [rad/s] (or [m/s]).")
       .def_property_readonly("direction", [](const Screw& s) { return read_only(s.direction); },
-                             "unit (3,), expressed in the twist's frame")
+                             "Unit axis direction (3,), expressed in the twist's frame.")
       .def_property_readonly("point", [](const Screw& s) { return read_only(s.point); },
-                             "(3,) [m], the point of the axis closest to the twist's frame's origin, expressed in that frame")
-      .def_readonly("pitch", &Screw::pitch, "[m/rad]; inf for a pure translation")
-      .def_readonly("magnitude", &Screw::magnitude, "|w| [rad/s], or |v| [m/s] for a pure translation")
+                             "(3,) [m], the point of the axis closest to the twist's frame's origin, expressed in "
+                             "that frame")
+      .def_readonly("pitch", &Screw::pitch, "Pitch [m/rad] along the axis; inf for a pure translation.")
+      .def_readonly("magnitude", &Screw::magnitude, "Magnitude |w| [rad/s], or |v| [m/s] for a pure translation.")
       .def(
           "__eq__",
           [](const Screw& a, py::handle b) {
@@ -444,17 +586,38 @@ void bind_screw(py::module_& m) {
           }));
   m.def(
       "twist_to_screw", [](py::handle twist) { return twist_to_screw(as_motion(twist, "twist")); }, "twist"_a,
-        "The screw (instantaneous screw axis) of a twist [w; v]: direction w/|w|, point (w x v)/|w|^2,\n"
-        "pitch (w . v)/|w|^2, magnitude |w|; for w = 0: pitch inf, direction v/|v|, point 0, magnitude |v|.\n"
-        "ValueError for the zero twist (no axis).");
+        "The screw (instantaneous screw axis) of a twist.\n\n"
+        "For V = [w; v] (angular first): direction w/|w|, point (w x v)/|w|^2, pitch (w . v)/|w|^2, magnitude\n"
+        "|w|; for w = 0: pitch inf, direction v/|v|, point 0, magnitude |v|. Chasles' theorem: every rigid\n"
+        "motion is a rotation about the axis with a slide along it.\n\n"
+        "Parameters\n----------\ntwist : Motion\n    [w; v] ([rad/s], [m/s]) in any frame.\n\n"
+        "Returns\n-------\nScrew\n    Its axis, pitch [m/rad] and magnitude, in the twist's frame.\n\n"
+        "Raises\n------\nValueError\n    The zero twist (no axis), or a non-finite one.\nTypeError\n"
+        "    twist not a Motion.\n\n"
+        "See Also\n--------\nscrew_to_twist, Screw\n\n"
+        "Examples\n--------\n"
+        ">>> s = rd.twist_to_screw(rd.Motion([0.0, 0.0, 2.0], [0.0, 2.0, 0.5]))\n"
+        ">>> s.direction, s.point, s.pitch, s.magnitude\n"
+        "(array([0., 0., 1.]), array([-1.,  0.,  0.]), 0.25, 2.0)\n"
+        ">>> rd.twist_to_screw(rd.Motion(linear=[0.0, 0.0, 3.0])).pitch\ninf\n");
   m.def(
       "screw_to_twist",
       [](py::handle screw) {
         return checked(screw_to_twist(py_io::as_instance<Screw>(screw, "screw", "a Screw")), "screw_to_twist");
       },
       "screw"_a,
-        "The twist of a screw: w = magnitude direction, v = magnitude (point x direction + pitch direction)\n"
-        "(v = magnitude direction for pitch inf).");
+        "The twist of a screw, inverse of twist_to_screw.\n\n"
+        "w = magnitude direction, v = magnitude (point x direction + pitch direction) (v = magnitude direction for\n"
+        "pitch inf), angular part first.\n\n"
+        "Parameters\n----------\nscrew : Screw\n    Unit direction, point [m], pitch [m/rad], magnitude.\n\n"
+        "Returns\n-------\nMotion\n    [w; v] ([rad/s], [m/s]) in the screw's frame.\n\n"
+        "Raises\n------\nValueError\n"
+        "    A direction that is not a unit vector, or a non-finite part (the message names it).\n"
+        "TypeError\n    screw not a Screw.\n\n"
+        "See Also\n--------\ntwist_to_screw, Screw\n\n"
+        "Examples\n--------\n"
+        ">>> V = rd.Motion([0.0, 0.0, 2.0], [0.0, 2.0, 0.5])\n"
+        ">>> rd.screw_to_twist(rd.twist_to_screw(V)) == V\nTrue\n");
 }
 
 }  // namespace
@@ -469,23 +632,79 @@ void bind_spatial(py::module_& m) {
           [](const Force& f, py::handle motion) {
             return py_io::finite_result(f.dot(as_motion(motion, "motion")), "Force.dot");
           },
-          "motion"_a, "Power w . n + v . f [W] of this force on the motion (same frame and reference point).");
+          "motion"_a,
+          "Power w . n + v . f [W] of this force on the motion (same frame and reference point).\n\n"
+          "Parameters\n----------\nmotion : Motion\n    [w; v] ([rad/s], [m/s]), in this force's frame.\n\n"
+          "Returns\n-------\nfloat\n    The power [W], the same in every frame.\n\n"
+          "Examples\n--------\n"
+          ">>> rd.Force([0.0, 0.0, 2.0], [3.0, 0.0, 0.0]).dot(rd.Motion([0.0, 0.0, 1.0], [1.0, 0.0, 0.0]))\n5.0\n");
   bind_transform(m);
   bind_screw(m);
   m.def(
       "motion_cross_matrix",
       [](py::handle motion) { return py_io::to_array(motion_cross_matrix(as_motion(motion, "motion"))); }, "motion"_a,
-      "crm(V) (6,6) = [[hat(w), 0], [hat(v), hat(w)]] of the motion V = [w; v], so crm(V) V2 = V x V2.");
+      "Motion cross-product matrix crm(V) (Featherstone, \"Rigid Body Dynamics Algorithms\").\n\n"
+      "crm(V) = [[hat(w), 0], [hat(v), hat(w)]] for V = [w; v] (angular first), so that crm(V) V2 = V x V2\n"
+      "(Motion.cross).\n\n"
+      "Parameters\n----------\nmotion : Motion\n    V = [w; v] ([rad/s], [m/s]).\n\n"
+      "Returns\n-------\nndarray, shape (6, 6)\n"
+      "    crm(V), in V's frame (hat(w) blocks [rad/s], hat(v) block [m/s]).\n\n"
+      "Raises\n------\nTypeError\n    motion not a Motion.\n\n"
+      "See Also\n--------\nforce_cross_matrix, Motion.cross\n\n"
+      "Examples\n--------\n"
+      ">>> V, V2 = rd.Motion([0.0, 0.0, 1.0], [1.0, 0.0, 0.0]), rd.Motion([1.0, 2.0, 3.0], [4.0, 5.0, 6.0])\n"
+      ">>> bool(np.allclose(rd.motion_cross_matrix(V) @ V2.to_vector(), V.cross(V2).to_vector()))\nTrue\n"
+      ">>> bool(np.allclose(rd.motion_cross_matrix(V) @ V.to_vector(), 0.0))  # V x V = 0\nTrue\n");
   m.def(
       "force_cross_matrix",
       [](py::handle motion) { return py_io::to_array(force_cross_matrix(as_motion(motion, "motion"))); }, "motion"_a,
-      "crf(V) (6,6) = [[hat(w), hat(v)], [0, hat(w)]] = -crm(V)^T of the motion V = [w; v], so crf(V) F = V x* F.");
+      "Force cross-product matrix crf(V) (Featherstone, \"Rigid Body Dynamics Algorithms\").\n\n"
+      "crf(V) = [[hat(w), hat(v)], [0, hat(w)]] = -crm(V)^T for V = [w; v] (angular first), so that\n"
+      "crf(V) F = V x* F (Motion.cross_force), as in the Newton-Euler equation I a + V x* I V.\n\n"
+      "Parameters\n----------\nmotion : Motion\n    V = [w; v] ([rad/s], [m/s]).\n\n"
+      "Returns\n-------\nndarray, shape (6, 6)\n"
+      "    crf(V), in V's frame (hat(w) blocks [rad/s], hat(v) block [m/s]).\n\n"
+      "Raises\n------\nTypeError\n    motion not a Motion.\n\n"
+      "See Also\n--------\nmotion_cross_matrix, Motion.cross_force\n\n"
+      "Examples\n--------\n"
+      ">>> V, F = rd.Motion([0.0, 0.0, 1.0], [1.0, 0.0, 0.0]), rd.Force([0.0, 0.0, 2.0], [0.0, 3.0, 0.0])\n"
+      ">>> bool(np.allclose(rd.force_cross_matrix(V), -rd.motion_cross_matrix(V).T))\nTrue\n"
+      ">>> bool(np.allclose(rd.force_cross_matrix(V) @ F.to_vector(), V.cross_force(F).to_vector()))\nTrue\n");
   m.def("transform_compose", &transform_compose, "R_AB"_a, "p_AB"_a, "R_BC"_a, "p_BC"_a,
-        "X_AC = X_AB * X_BC item by item: R_AC = R_AB R_BC, p_AC = R_AB p_BC + p_AB. Rotations (3,3) or\n"
-        "(n,3,3), translations (3,) or (n,3) [m]; single items broadcast. Returns (R_AC, p_AC).");
+        "Compose rigid transforms item by item, X_AC = X_AB * X_BC, on arrays.\n\n"
+        "R_AC = R_AB R_BC, p_AC = R_AB p_BC + p_AB, as Transform.__mul__, for stacks of n transforms; a single\n"
+        "item broadcasts against the stacked ones.\n\n"
+        "Parameters\n----------\n"
+        "R_AB : array_like, shape (3, 3) or (n, 3, 3)\n    Rotations B -> A (orthonormal, det +1).\n"
+        "p_AB : array_like, shape (3,) or (n, 3)\n    B's origin in A [m].\n"
+        "R_BC : array_like, shape (3, 3) or (n, 3, 3)\n    Rotations C -> B.\n"
+        "p_BC : array_like, shape (3,) or (n, 3)\n    C's origin in B [m].\n\n"
+        "Returns\n-------\nR_AC : ndarray, shape (3, 3) or (n, 3, 3)\n    Rotations C -> A.\n"
+        "p_AC : ndarray, shape (3,) or (n, 3)\n    C's origin in A [m] (stacked if any input is).\n\n"
+        "Raises\n------\nValueError\n"
+        "    A non-rotation (naming it and the item, e.g. R_AB[2]), a non-finite value, a bad shape, or\n"
+        "    stacks of different lengths (naming the argument).\n\n"
+        "See Also\n--------\nTransform, transform_points\n\n"
+        "Examples\n--------\n"
+        "Two quarter turns about z, each with a step of 1 m along its frame's x:\n\n"
+        ">>> R, p = rd.transform_compose(rd.rot_z(np.pi / 2), [1.0, 0, 0], rd.rot_z(np.pi / 2), [1.0, 0, 0])\n"
+        ">>> bool(np.allclose(R, rd.rot_z(np.pi))), p.round(12)\n(True, array([1., 1., 0.]))\n");
   m.def("transform_points", &transform_points, "R_AB"_a, "p_AB"_a, "p_B"_a,
-        "p_A = R_AB p_B + p_AB item by item: R_AB (3,3)|(n,3,3), p_AB (3,)|(n,3), p_B (3,)|(n,3) [m];\n"
-        "single items broadcast.");
+        "Map points from frame B to frame A item by item: p_A = R_AB p_B + p_AB, on arrays.\n\n"
+        "As Transform.act_point for stacks of n transforms or points; a single item broadcasts against the\n"
+        "stacked ones.\n\n"
+        "Parameters\n----------\n"
+        "R_AB : array_like, shape (3, 3) or (n, 3, 3)\n    Rotations B -> A (orthonormal, det +1).\n"
+        "p_AB : array_like, shape (3,) or (n, 3)\n    B's origin in A [m].\n"
+        "p_B : array_like, shape (3,) or (n, 3)\n    Points in B [m].\n\n"
+        "Returns\n-------\nndarray, shape (3,) or (n, 3)\n    p_A, the points in A [m] (stacked if any input is).\n\n"
+        "Raises\n------\nValueError\n"
+        "    A non-rotation, a non-finite value, a bad shape, or stacks of different lengths (naming the\n"
+        "    argument).\n\n"
+        "See Also\n--------\nTransform.act_point, transform_compose\n\n"
+        "Examples\n--------\n"
+        ">>> rd.transform_points(rd.rot_z(np.pi / 2), [1.0, 0.0, 0.0], [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0]]).round(12)\n"
+        "array([[1., 1., 0.],\n       [0., 0., 0.]])\n");
 }
 
 }  // namespace rigiddyn::bindings
