@@ -872,7 +872,6 @@ py::typing::Union<BatchResult, BatchSceneResult> simulate_batch_py(py::handle mo
 
 const char* const simulate_batch_doc = "N independent runs of a body or a scene, one per initial state, in parallel.\n"
     R"doc(
-
 Integrated in C++ on `threads` threads with the GIL released. Sample i is exactly
 ``rigiddyn.simulate(model_i, initial[i], dt_i, steps, method, record_every, loads_i, gravity_i, t0)``: the
 records equal N serial simulate calls bitwise, whatever the thread count (the SIMD path: up to round-off).

@@ -620,7 +620,6 @@ void bind_result_types(py::module_& m) {
   py::class_<KineticEnergy> energy(m, "KineticEnergy",
       "Kinetic energy T [J], split as T = translational + rotational.\n"
       R"doc(
-
 translational = 1/2 m v_W.v_W of the centre of mass, rotational = 1/2 w_B.I w_B about it (1/2 I_zz omega^2 for
 a planar body, 0 for a particle); total = their sum. kinetic_energy's result. Immutable; pickles.
 
@@ -674,7 +673,6 @@ Examples
   py::class_<ComWrench> wrench(m, "ComWrench",
       "Loads reduced to the centre of mass G: a force in W and a torque about G in B.\n"
       R"doc(
-
 inverse_dynamics' result for a RigidBody; unpacks as ``f_W, tau_B = ...``. Immutable; pickles.
 
 Parameters
@@ -913,7 +911,6 @@ const char* const state_raises_doc =
 const std::string forward_dynamics_doc = std::string(
     "Accelerations of `body` in `state` under an applied force, torque and gravity.\n"
     R"doc(
-
 The force f acts at `point` P (p_GP from the centre of mass G) and reduces to G as f and tau_G = tau + p_GP x f.
 Per body kind:
 
@@ -984,7 +981,6 @@ A rod of L = 2 m and 3 kg pinned at one end, held horizontal, starts at alpha = 
 const std::string inverse_dynamics_doc = std::string(
     "The applied loads a motion requires, reduced to the centre of mass (undoes forward_dynamics).\n"
     R"doc(
-
 Per body kind:
 
 - RigidBody: f_W = m (a_W - g_W) in W, tau_B = I alpha_B + w_B x I w_B about the centre of mass in B.
@@ -1110,7 +1106,6 @@ Spin I w = 6 about the centre of mass plus the orbit p_W x m v_W = 2 about the o
 const std::string kinetic_energy_doc = std::string(
     "Kinetic energy [J], split into its translational and rotational parts.\n"
     R"doc(
-
 translational = 1/2 m v_W.v_W, rotational = 1/2 w_B.I w_B about the centre of mass (1/2 I_zz omega^2 for a
 PlanarBody, 0 for a Particle), total = their sum.
 
@@ -1148,7 +1143,6 @@ A torque-free body keeps its kinetic energy:
 const std::string potential_energy_doc = std::string(
     "Potential energy of uniform gravity, V = -m g_W.p_W [J] (zero at the origin of W).\n"
     R"doc(
-
 Parameters
 ----------
 )doc") + state_param_doc + R"doc(gravity : None, bool or array_like, default None
@@ -1176,7 +1170,6 @@ Examples
 
 const char* const power_doc = "Power [W] of a force at the centre of mass and a torque about it: f_W.v_W + tau_B.w_B.\n"
     R"doc(
-
 Parameters
 ----------
 state : RigidBodyState, PlanarBodyState or ParticleState
@@ -1211,7 +1204,6 @@ Examples
 
 const std::string apply_impulse_doc = std::string("The state just after an impulse at a point and an angular impulse.\n"
     R"doc(
-
 Impulse-momentum (K. Craig, "Rigid Body Dynamics" slides): m dv = impulse, I dw = p_GP x impulse +
 angular_impulse, with p_GP the point of application from the centre of mass G; the position and the attitude
 do not change.

@@ -386,7 +386,6 @@ void bind_dynamics(py::module_& m) {
   py::class_<AppliedLoad> load(m, "AppliedLoad",
       "An applied load: a force through the centre of mass and a couple, on a time window.\n"
       R"doc(
-
 Both are expressed in frame 'world' (W) or 'body' (B) and act for t_start <= t < t_end. simulate and step take a
 sequence of them as a piecewise-constant schedule, splitting a step at each t_start and t_end. Immutable;
 pickles; == compares every field.
@@ -480,7 +479,6 @@ Examples
   py::class_<SimulationResult>(m, "SimulationResult",
       "The records of simulate: arrays with one row per record (n records).\n"
       R"doc(
-
 Read-only arrays; q_WB's rows (x, y, z, w) unless scalar_first. A Particle records q = identity and w = 0; a
 PlanarBody p = (x, y, 0), q = Rz(theta), w = (0, 0, omega). Pickles; to_dataframe gives a table.
 

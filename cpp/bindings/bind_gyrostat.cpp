@@ -143,7 +143,6 @@ void bind_gyrostat_body(py::module_& m) {
       m, "Gyrostat",
           "A rigid body carrying wheels spun by motors about axes fixed in the body: a reaction-wheel spacecraft.\n"
           R"doc(
-
 Each wheel's speed relative to the body is a state (Hughes, "Spacecraft Attitude Dynamics", ch. 3). With I the
 whole body's inertia about its centre of mass in B (wheels locked), wheel k's unit axis a_k, axial inertia J_k,
 speed Omega_k relative to the body and motor torque u_k, the transverse inertia A = I - sum J_k a_k a_k^T:

@@ -94,7 +94,6 @@ void bind_pivoted_body(py::module_& m) {
       m, "PivotedBody",
           "A rigid body pinned at a point O fixed in the scene frame W (3 DOF): the heavy top, the gyroscope.\n"
           R"doc(
-
 B is the body frame at the centre of mass C, as for RigidBody; C is at p_WO + R_WB p_OC_B. Euler's law is
 written about O (K. Craig, "Rigid Body Dynamics" slides: M_O = dH_O/dt) with
 inertia_O = I_C + m (|c|^2 1 - c c^T), c = p_OC_B, the parallel-axis theorem with the products of inertia.
@@ -167,7 +166,6 @@ array([0.  , 0.  , 9.81])
       m, "PivotedPlanarBody",
           "The compound pendulum: a planar body pinned at a point O fixed in the scene frame W (1 DOF).\n"
           R"doc(
-
 It turns about W's z axis, R_WB = Rz(theta). Plane kinetics about O (K. Craig, "Rigid Body Dynamics" slides):
 inertia_O_zz alpha = tau_O, inertia_O_zz = inertia_zz + m |c|^2, c = p_OC_B. Its state is a
 PivotedPlanarBodyState; its gravity an in-plane vector. Immutable; pickles; == compares every field.
