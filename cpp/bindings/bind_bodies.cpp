@@ -927,7 +927,7 @@ state : RigidBodyState, PlanarBodyState, ParticleState, PivotedBodyState or Pivo
 force : array_like, shape (3,) or (2,), or pint.Quantity, optional
     Applied force f [N], expressed in `frame` (None: zero); shape (2,), in the plane, for the planar bodies.
 torque : array_like, shape (3,), float or pint.Quantity, optional
-    Applied couple tau [N m], expressed in `frame` (None: zero); a float about z for the planar bodies. A
+    Applied torque tau [N m], expressed in `frame` (None: zero); a float about z for the planar bodies. A
     Particle takes None.
 point : array_like, shape (3,) or (2,), or pint.Quantity, optional
     Point of application of the force, p_GP [m] from the centre of mass, expressed in `frame` (None: the
@@ -1217,8 +1217,8 @@ point : array_like, shape (3,) or (2,), or pint.Quantity, optional
 frame : {'world', 'body'}, default 'world'
     Frame of impulse, point and angular_impulse: W or B. A Particle takes 'world'.
 angular_impulse : array_like, shape (3,), float or pint.Quantity, optional
-    An impulsive couple [N m s] in `frame` (None: none); a float about z for a PlanarBody. A Particle takes
-    None.
+    An angular impulse (impulsive torque) [N m s] in `frame` (None: none); a float about z for a PlanarBody.
+    A Particle takes None.
 
 Returns
 -------
