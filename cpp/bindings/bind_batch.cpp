@@ -870,79 +870,184 @@ py::typing::Union<BatchResult, BatchSceneResult> simulate_batch_py(py::handle mo
                                                       "ParticleState", &particle_states_from_dict));
 }
 
-const char* const simulate_batch_doc = R"doc(
-N independent runs of `model`, one per initial state, with per-sample parameters, integrated in C++ on
-`threads` threads with the GIL released. Sample i is exactly rigiddyn.simulate(model_i, initial[i], dt_i, steps,
-method, record_every, loads_i, gravity_i, t0): the records equal N serial simulate calls bitwise, whatever the
-thread count.
+const char* const simulate_batch_doc = "N independent runs of a body or a scene, one per initial state, in parallel.\n"
+    R"doc(
+Integrated in C++ on `threads` threads with the GIL released. Sample i is exactly
+``rigiddyn.simulate(model_i, initial[i], dt_i, steps, method, record_every, loads_i, gravity_i, t0)``: the
+records equal N serial simulate calls bitwise, whatever the thread count (the SIMD path: up to round-off).
+steps (or duration), record_every, t0, method and scalar_first are shared by every sample, so every sample has
+the same record count n.
 
-model: a Particle, PlanarBody or RigidBody shared by every sample, or a list of N of one kind (per-sample
-  mass [kg] and inertia about the centre of mass in B [kg m^2]); or a Scene or CompiledScene, or a list of N of
-  them (of the same structure: bodies and elements). A scene with a PythonForce runs, slowly: each call takes
-  the GIL, so its samples run one at a time.
-initial: a list of N states of the body's kind (ParticleState, PlanarBodyState, RigidBodyState), or a dict of
-  stacked arrays: RigidBody {'p_W': (N, 3) [m], 'q_WB': (N, 4) (x, y, z, w), or (w, x, y, z) with scalar_first,
-  'v_W': (N, 3) [m/s] in W, 'w_B': (N, 3) [rad/s] in B}; Particle {'p_W', 'v_W'}; PlanarBody {'p_W': (N, 2) [m],
-  'theta': (N,) [rad], 'v_W': (N, 2) [m/s], 'omega': (N,) [rad/s]}. A scene: a list of N lists of the states of
-  its bodies.
-dt: a float [s] for every sample or an (N,) array [s] (pint quantities converted). steps (or duration= by
-  keyword), record_every, t0, method, scalar_first: as simulate, shared by every sample (so every sample has the
-  same record count n; a duration must give the same number of steps at every sample's dt).
-loads (bodies): as simulate (one schedule for every sample), or a list of N schedules (lists of AppliedLoad).
-gravity (bodies): as simulate (None/False, True, a 3-vector [m/s^2] in W), or an (N, 3) array [m/s^2] in W.
-  A scene declares its loads and gravity as elements (loads and gravity must be None).
-threads: None (the default: every hardware thread) or an int >= 1.
-simd: True runs the SIMD path across samples (RigidBody, method 'rk4', constant loads: a force in W and a
-  torque in B without time window): equal to the scalar path up to round-off, not bitwise.
-progress: None or a callable(samples_done), called with the GIL from the calling thread once before the samples
-  start and then about every 0.05 s; an exception it raises stops every sample and propagates. Ctrl-C stops every sample within about 0.05 s however
-  long a step takes (the steps under way are finished first) and raises KeyboardInterrupt (no result is kept).
+Parameters
+----------
+model : Particle, PlanarBody, RigidBody, Scene or CompiledScene, or a list of N of them
+    One model shared by every sample, or a list of N of one kind (per-sample mass [kg] and inertia about the
+    centre of mass in B [kg m^2]; scenes of the same structure: bodies and elements). A scene with a
+    PythonForce runs, slowly: each call takes the GIL, so its samples run one at a time.
+initial : list of states, or dict of arrays
+    A list of N states of the body's kind (ParticleState, PlanarBodyState, RigidBodyState), or a dict of
+    stacked arrays: RigidBody {'p_W': (N, 3) [m] in W, 'q_WB': (N, 4) (x, y, z, w), or (w, x, y, z) with
+    scalar_first, 'v_W': (N, 3) [m/s] in W, 'w_B': (N, 3) [rad/s] in B}; Particle {'p_W', 'v_W'}; PlanarBody
+    {'p_W': (N, 2) [m], 'theta': (N,) [rad], 'v_W': (N, 2) [m/s], 'omega': (N,) [rad/s]}. A scene: a list of N
+    lists of the states of its bodies.
+dt : float, array_like, shape (N,), or pint.Quantity
+    Step [s] of every sample, or of each.
+steps : int, optional
+    Number of steps (>= 0) of every sample. Exactly one of steps and duration.
+method : str, optional
+    A name of methods(); None (the default): 'rk4', or the method the CompiledScenes were compiled for (the same
+    for every sample).
+record_every : int, default 1
+    Record every record_every-th step (>= 1), plus the first and the last.
+loads : AppliedLoad, sequence of AppliedLoad, or list of N lists of AppliedLoad, optional
+    Bodies: one schedule for every sample, as simulate, or one per sample. A scene takes None (it declares its
+    loads as elements).
+gravity : None, bool, array_like, shape (3,) or (N, 3), default None
+    Bodies: g_W [m/s^2] in W for every sample (None or False: none; True: (0, 0, -9.81)), or one per sample. A
+    scene takes None.
+t0 : float or pint.Quantity, default 0.0
+    Initial time [s] of every sample.
+threads : int, optional
+    Number of threads, >= 1 (None, the default: every hardware thread, default_thread_count()).
+simd : bool, default False
+    Run the SIMD path across samples (RigidBody, method 'rk4', constant loads: a force in W and a torque in B
+    without time window): equal to the scalar path up to round-off, not bitwise.
+scalar_first : bool, default False
+    Quaternions, read from a dict and recorded, as (w, x, y, z).
+progress : callable, optional
+    progress(samples_done), called with the GIL from the calling thread once before the samples start and then
+    about every 0.05 s; an exception it raises stops every sample and propagates.
+duration : float or pint.Quantity, keyword-only, optional
+    Length of the runs [s] instead of steps: it must give the same whole number of steps at every sample's dt.
 
-Returns a BatchResult (bodies) or a BatchSceneResult (scenes): the arrays of SimulationResult / SceneResult
-with a leading sample axis (N, n, ...). A sample whose state becomes non-finite stops alone: diverged[i] is
-True, filled[i] its rows, the rest of its rows NaN; one RuntimeWarning names how many samples diverged and
-the first few; another names the samples whose recorded quantities became non-finite although their state
-stayed finite (an overflow, e.g. a kinetic energy of |v_W| > 1e154 m/s), each quantity with its first time.
-Input errors (N = 0, mismatched N between model, initial, dt, gravity and loads, a wrong dict key or shape,
-threads < 1) raise ValueError/TypeError naming the argument before any sample runs; an error of one sample (a
-bad state, a body running out of mass) raises ValueError "sample <i>: ..." for the lowest such sample, after
-every sample has run. An exception raised by a PythonForce (or its wrong return value) stops every sample
-within about 0.05 s and is raised, its message prefixed "sample <i>: " (the first sample that raised; a
-KeyboardInterrupt as it is).
+Returns
+-------
+BatchResult or BatchSceneResult
+    For bodies a BatchResult, for scenes a BatchSceneResult: the arrays of SimulationResult / SceneResult with a
+    leading sample axis (N, n, ...). A sample whose state becomes non-finite stops alone: diverged[i] is True,
+    filled[i] its rows, the rest of its rows NaN.
+
+Raises
+------
+ValueError
+    Input errors, before any sample runs, naming the argument: N = 0, mismatched N between model, initial, dt,
+    gravity and loads, a wrong dict key or shape, threads < 1, simd for another kind or method, a duration
+    giving different step counts. An error of one sample (a bad state, a body running out of mass), after every
+    sample has run: "sample <i>: ..." for the lowest such sample.
+TypeError
+    A model or state of the wrong kind (the message names it).
+Exception
+    An exception raised by a PythonForce (or its wrong return value) stops every sample within about 0.05 s and
+    is raised, its message prefixed "sample <i>: " (the first sample that raised; a KeyboardInterrupt as it is).
+KeyboardInterrupt
+    Ctrl-C stops every sample within about 0.05 s however long a step takes (the steps under way are finished
+    first); no result is kept.
+
+Warns
+-----
+RuntimeWarning
+    One names how many samples diverged and the first few; another the samples whose recorded quantities
+    became non-finite although their state stayed finite (an overflow, e.g. a kinetic energy of |v_W| > 1e154
+    m/s), each quantity with its first time; another the implicit solves that did not converge.
+
+See Also
+--------
+simulate, BatchResult, BatchSceneResult, default_thread_count
+
+Examples
+--------
+Four spins; each sample equals its serial simulate bitwise:
+
+>>> body = rd.RigidBody(2.0, [1.0, 2.0, 3.0])
+>>> states = [rd.RigidBodyState(w_B=[1.0, 0.0, 0.1 * i]) for i in range(4)]
+>>> res = rd.simulate_batch(body, states, dt=0.01, steps=100, threads=2)
+>>> res.w_B.shape, np.array_equal(res.w_B[2], rd.simulate(body, states[2], dt=0.01, steps=100).w_B)
+((4, 101, 3), True)
+
+Three particles dropped for 1 s under their own gravity fall g t^2 / 2:
+
+>>> zeros = np.zeros((3, 3))
+>>> drop = rd.simulate_batch(rd.Particle(1.0), {"p_W": zeros, "v_W": zeros}, dt=0.01, duration=1.0,
+...                          gravity=[[0, 0, -1.0], [0, 0, -2.0], [0, 0, -3.0]], record_every=100)
+>>> drop.t[0], drop.p_W[:, -1, 2].round(12)
+(array([0., 1.]), array([-0.5, -1. , -1.5]))
 )doc";
 
-const char* const batch_result_doc = R"doc(
-The records of simulate_batch over bodies: N samples of n records each (the arrays of SimulationResult with a
-leading sample axis), read-only, sample-major. t (N, n) [s]; p_W (N, n, 3) centre of mass position in W [m];
-q_WB (N, n, 4) attitude, (x, y, z, w) unless scalar_first; v_W (N, n, 3) [m/s] in W; w_B (N, n, 3) [rad/s] in
-B; kinetic_energy, total_energy (N, n) [J]; angular_momentum_norm (N, n) |H_G| [kg m^2/s];
-quaternion_norm_error (N, n) |q| - 1; work (N, n) [J]. diverged (N,) bool; filled (N,) rows filled per sample
-(n unless it diverged: its rows after filled[i] are NaN); unconverged_steps (N,); elapsed_seconds: wall time
-of the whole batch [s]; scalar_first: True if q_WB's rows are (w, x, y, z). len(result) is N; result[i] is sample
-i as a SimulationResult (its filled rows, copies, the same scalar_first); pickles.
+const char* const batch_result_doc = R"doc(The records of simulate_batch over bodies: N samples of n records each.
+
+The arrays of SimulationResult with a leading sample axis, read-only, sample-major: t (N, n) [s]; p_W (N, n, 3)
+[m] in W; q_WB (N, n, 4); v_W (N, n, 3) [m/s] in W; w_B (N, n, 3) [rad/s] in B; kinetic_energy, total_energy
+(N, n) [J]; angular_momentum_norm (N, n) [kg m^2/s]; quaternion_norm_error (N, n); work (N, n) [J]. A diverged
+sample's rows after filled[i] are NaN. len(result) is N; result[i] is sample i as a SimulationResult (its filled
+rows, copies, the same scalar_first); pickles.
+
+Parameters
+----------
+None
+    Made by simulate_batch; it has no public constructor.
+
+See Also
+--------
+simulate_batch, SimulationResult, BatchSceneResult
+
+Examples
+--------
+>>> body = rd.RigidBody(2.0, [1.0, 2.0, 3.0])
+>>> res = rd.simulate_batch(body, [rd.RigidBodyState(w_B=[0, 0, w]) for w in (1.0, 2.0)], dt=0.1, steps=10)
+>>> len(res), res.t.shape, res.filled, res.diverged
+(2, (2, 11), array([11, 11]), array([False, False]))
+>>> res.kinetic_energy[:, -1]  # 1/2 I_z w_z^2
+array([1.5, 6. ])
+>>> type(res[1]).__name__
+'SimulationResult'
 )doc";
 
-const char* const batch_scene_result_doc = R"doc(
-The records of simulate_batch over scenes: the arrays of SceneResult with a leading sample axis (N samples, n
-records, nb bodies, ne work columns), read-only: t (N, n) [s]; p_W, v_W, w_B, pivot_reaction_W,
-angular_momentum_O_W (N, n, nb, 3); q_WB (N, n, nb, 4); kinetic_energy, potential_energy, total_energy (N, n)
-[J]; linear_momentum_W, angular_momentum_W (N, n, 3); mass, mass_flow_energy (N, n, nb) [kg], [J]; work, power
-(N, n, ne) [J], [W];
-body_names and elements (the first scene's labels of the axes); diverged (N,) bool; filled (N,) rows filled per
-sample (the rest NaN); unconverged_steps (N,); elapsed_seconds: wall time of the batch [s]; scalar_first: True if
-q_WB's rows are (w, x, y, z). Frames and units as SceneResult. len(result) is N; result[i] is sample i as a
-SceneResult (its filled rows, copies, the same scalar_first); pickles.
+const char* const batch_scene_result_doc = R"doc(The records of simulate_batch over scenes: N samples of n records each.
+
+The arrays of SceneResult with a leading sample axis (nb bodies, ne work columns, nw wheels), read-only: t (N, n)
+[s]; p_W, v_W, w_B, pivot_reaction_W, angular_momentum_O_W (N, n, nb, 3); q_WB (N, n, nb, 4); kinetic_energy,
+potential_energy, total_energy (N, n) [J]; linear_momentum_W, angular_momentum_W (N, n, 3); mass,
+mass_flow_energy (N, n, nb) [kg], [J]; work, power (N, n, ne) [J], [W]; wheel_speed, motor_work (N, n, nw).
+body_names and elements label the axes (the first scene's). Frames and units as SceneResult. A diverged
+sample's rows after filled[i] are NaN. len(result) is N; result[i] is sample i as a SceneResult (its filled
+rows, copies, the same scalar_first); pickles.
+
+Parameters
+----------
+None
+    Made by simulate_batch; it has no public constructor.
+
+See Also
+--------
+simulate_batch, SceneResult, BatchResult
+
+Examples
+--------
+Three balls thrown up at 0, 1 and 2 m/s, after 1 s: z = v t - g t^2 / 2:
+
+>>> scene = rd.Scene()
+>>> ball = scene.add_body(rd.Particle(1.0), name="ball")
+>>> gravity = scene.add(rd.UniformGravity())
+>>> res = rd.simulate_batch(scene, [[rd.ParticleState(v_W=[0, 0, v])] for v in (0.0, 1.0, 2.0)], dt=0.01,
+...                         steps=100, record_every=100)
+>>> res.p_W.shape, res.body_names, res.elements
+((3, 2, 1, 3), ('ball',), ('UniformGravity',))
+>>> res.p_W[:, -1, 0, 2].round(12)
+array([-4.905, -3.905, -2.905])
 )doc";
 
 template <class Result>
 void def_common(py::class_<Result>& cls, py::object (*sample)(const Result&, py::handle)) {
-  cls.def_readonly("diverged", &Result::diverged, "(N,) bool: the sample's state became non-finite; its run stopped")
-      .def_readonly("filled", &Result::filled, "(N,) int64: rows filled per sample (n unless it diverged)")
+  cls.def_readonly("diverged", &Result::diverged,
+                   "Per sample, True if its state became non-finite and its run stopped there, shape (N,) (bool).")
+      .def_readonly("filled", &Result::filled,
+                    "Rows filled per sample, shape (N,) (int64): n unless it diverged (its later rows are NaN).")
       .def_readonly("unconverged_steps", &Result::unconverged_steps,
-                    "(N,) int64: steps whose implicit solve stopped at its iteration cap (0 for explicit methods)")
-      .def_readonly("elapsed_seconds", &Result::elapsed_seconds, "wall time of the whole batch [s]")
+                    "Per sample, steps whose implicit solve stopped at its iteration cap, shape (N,) (int64; 0 for "
+                    "explicit methods).")
+      .def_readonly("elapsed_seconds", &Result::elapsed_seconds, "Wall time of the whole batch [s].")
       .def_readonly("scalar_first", &Result::scalar_first,
-                    "True if q_WB's rows are (w, x, y, z): the result of simulate_batch(..., scalar_first=True)")
+                    "True if q_WB's rows are (w, x, y, z): the result of simulate_batch(..., scalar_first=True).")
       .def("__len__", [](const Result& r) { return r.samples(); }, "N, the number of samples")
       .def("__getitem__", sample, py::arg("i"), "sample i's records (negative i counts from the end)");
 }
@@ -958,16 +1063,16 @@ void bind_batch(py::module_& m) {
   py::class_<BatchResult> batch(m, "BatchResult", batch_result_doc);
   for (std::size_t k = 0; k < batch_array_count; ++k) {
     static const char* const docs[batch_array_count] = {
-        "(N, n) time [s]",
-        "(N, n, 3) centre of mass position in W [m]",
-        "(N, n, 4) attitude, (x, y, z, w) unless scalar_first",
-        "(N, n, 3) centre of mass velocity in W [m/s]",
-        "(N, n, 3) angular velocity in B [rad/s]",
-        "(N, n) kinetic energy [J]",
-        "(N, n) kinetic + gravity potential [J]",
-        "(N, n) |H_G| about the centre of mass [kg m^2/s]",
-        "(N, n) |q| - 1",
-        "(N, n) work of loads and gravity since t0 [J]"};
+"Time of each record, shape (N, n) [s].",
+        "Centre of mass position in W, shape (N, n, 3) [m].",
+        "Attitude q_WB (B to W), shape (N, n, 4), (x, y, z, w) unless scalar_first.",
+        "Centre of mass velocity in W, shape (N, n, 3) [m/s].",
+        "Angular velocity of B in W, expressed in B, shape (N, n, 3) [rad/s].",
+        "Kinetic energy, shape (N, n) [J].",
+        "Kinetic + gravity potential energy, shape (N, n) [J].",
+        "|H_G|, the norm of the angular momentum about the centre of mass, shape (N, n) [kg m^2/s].",
+        "|q_WB| - 1 of each record, shape (N, n) (dimensionless).",
+        "Work of the loads and gravity since t0, shape (N, n) [J]."};
     batch.def_property_readonly(batch_arrays[k], [k](const BatchResult& r) { return r.arrays[k]; }, docs[k]);
   }
   def_common(batch, &batch_sample_object);
@@ -976,30 +1081,34 @@ void bind_batch(py::module_& m) {
   py::class_<BatchSceneResult> scene(m, "BatchSceneResult", batch_scene_result_doc);
   for (std::size_t k = 0; k < scene_column_count; ++k) {
     static const char* const docs[scene_column_count] = {
-        "(N, n) time [s]",
-        "(N, n, nb, 3) centre of mass positions in W [m]",
-        "(N, n, nb, 4) attitudes, (x, y, z, w) unless scalar_first",
-        "(N, n, nb, 3) centre of mass velocities in W [m/s]",
-        "(N, n, nb, 3) angular velocities, each in its body's B [rad/s]",
-        "(N, n) sum over the bodies [J]",
-        "(N, n) sum of the elements' potentials [J]",
-        "(N, n) kinetic + potential [J]",
-        "(N, n, 3) sum of m v_W, in W [kg m/s]",
-        "(N, n, 3) about W's origin, in W [kg m^2/s]",
-        "(N, n, nb, 3) the pivot's force on each body, in W [N]",
-        "(N, n, nb, 3) each body's angular momentum about its pivot (its centre of mass unpinned), in W [kg m^2/s]",
-        "(N, n, nb) each body's mass [kg]",
-        "(N, n, ne) each element's work since t0 [J]",
-        "(N, n, ne) each element's power at the record [W]",
-        "(N, n, nb) each body's mass-flow energy since t0 [J] (0 for a constant mass)"};
+"Time of each record, shape (N, n) [s].",
+        "Each body's centre of mass position in W, shape (N, n, nb, 3) [m].",
+        "Each body's attitude q_WB (B to W), shape (N, n, nb, 4), (x, y, z, w) unless scalar_first.",
+        "Each body's centre of mass velocity in W, shape (N, n, nb, 3) [m/s].",
+        "Each body's angular velocity, in its body frame B, shape (N, n, nb, 3) [rad/s].",
+        "Kinetic energy, the sum over the bodies, shape (N, n) [J].",
+        "Potential energy, the sum of the elements' potentials, shape (N, n) [J].",
+        "Kinetic + potential energy, shape (N, n) [J].",
+        "Linear momentum, the sum of m v_W, in W, shape (N, n, 3) [kg m/s].",
+        "Angular momentum about W's origin, in W, shape (N, n, 3) [kg m^2/s].",
+        "The pivot's force on each body, in W, shape (N, n, nb, 3) [N].",
+        "Each body's angular momentum about its pivot (its centre of mass unpinned), in W, shape (N, n, nb, 3) "
+        "[kg m^2/s].",
+        "Each body's mass, shape (N, n, nb) [kg].",
+        "Each element's work since t0, shape (N, n, ne) [J].",
+        "Each element's power at the record, shape (N, n, ne) [W].",
+        "Each body's mass-flow energy since t0, shape (N, n, nb) [J] (0 for a constant mass)."};
     scene.def_property_readonly(scene_columns[k].name, [k](const BatchSceneResult& r) { return r.arrays[k]; }, docs[k]);
   }
-  scene.def_readonly("body_names", &BatchSceneResult::body_names, "(nb,) tuple of the bodies' names")
-      .def_readonly("elements", &BatchSceneResult::elements, "(ne,) tuple of the work columns' class names")
+  scene.def_readonly("body_names", &BatchSceneResult::body_names, "The bodies' names, a tuple of nb str.")
+      .def_readonly("elements", &BatchSceneResult::elements, "The work columns' class names, a tuple of ne str.")
       .def_readonly("wheel_speed", &BatchSceneResult::wheel_speed,
-                    "(N, n, nw) each gyrostat wheel's speed relative to its body [rad/s] (nw = 0 without a gyrostat)")
-      .def_readonly("motor_work", &BatchSceneResult::motor_work, "(N, n, nw) each wheel's motor work since t0 [J]")
-      .def_readonly("wheel_bodies", &BatchSceneResult::wheel_bodies, "(nw,) tuple of the body index of each wheel");
+                    "Each gyrostat wheel's speed relative to its body, shape (N, n, nw) [rad/s] (nw = 0 without a "
+                    "gyrostat).")
+      .def_readonly("motor_work", &BatchSceneResult::motor_work,
+                    "Each wheel's motor work since t0, shape (N, n, nw) [J].")
+      .def_readonly("wheel_bodies", &BatchSceneResult::wheel_bodies,
+                    "The body index of each wheel, a tuple of nw int.");
   def_common(scene, &batch_scene_sample_object);
   scene.def("__repr__", &batch_scene_repr).def(py::pickle(&batch_scene_state, &batch_scene_from_state));
 
@@ -1009,8 +1118,28 @@ void bind_batch(py::module_& m) {
         py::arg("gravity") = py::none(), py::arg("t0") = 0.0, py::arg("threads") = py::none(),
         py::arg("simd") = false, py::arg("scalar_first") = false, py::arg("progress") = py::none(), py::kw_only(),
         py::arg("duration") = py::none(), simulate_batch_doc);
-  m.def("default_thread_count", &default_thread_count,
-        "The number of hardware threads (at least 1): simulate_batch's threads=None.");
+  m.def("default_thread_count", &default_thread_count, R"doc(The number of hardware threads, at least 1.
+
+simulate_batch runs on this many threads when threads=None.
+
+Parameters
+----------
+None
+
+Returns
+-------
+int
+    The hardware thread count (1 where it is unknown).
+
+See Also
+--------
+simulate_batch
+
+Examples
+--------
+>>> rd.default_thread_count() >= 1
+True
+)doc");
 }
 
 }  // namespace rigiddyn::bindings

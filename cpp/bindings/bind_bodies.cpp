@@ -163,28 +163,79 @@ ParticleState checked(const ParticleState& s, const char* quantity) {
 }
 
 void bind_particle_and_planar_body(py::module_& m) {
-  py::class_<Particle> particle(m, "Particle",
-                                "A point mass (3 DOF; \"Rigid body kinematics and dynamics\" notes, section 4.11): mass "
-                                "float [kg] > 0 or a pint quantity.");
+  py::class_<Particle> particle(m, "Particle", R"doc(A point mass (3 DOF).
+
+Newton's law for a point, m a_W = f_W + m g_W ("Rigid body kinematics and dynamics" notes, section 4.11); its
+state is a ParticleState (position and velocity in W). Immutable; pickles; == compares the mass.
+
+Parameters
+----------
+mass : float or pint.Quantity
+    Mass m [kg], finite and > 0 (a quantity is converted to kg).
+
+Raises
+------
+ValueError
+    A mass that is not a finite number > 0, or a quantity of another dimension (the message names mass).
+
+See Also
+--------
+ParticleState, PlanarBody, RigidBody, simulate, forward_dynamics
+
+Examples
+--------
+A force of 4 N on 2 kg accelerates it at 2 m/s^2:
+
+>>> p = rd.Particle(2.0)
+>>> rd.forward_dynamics(p, rd.ParticleState(), force=[0.0, 0.0, 4.0])
+array([0., 0., 2.])
+)doc");
   particle.def(py::init([](py::handle mass) { return Particle(py_io::as_scalar(py_io::in_si(mass, "kg", "mass"), "mass")); }), py::arg("mass"))
-      .def_property_readonly("mass", &Particle::mass, "mass [kg]")
+      .def_property_readonly("mass", &Particle::mass, "Mass m [kg].")
       .def("__repr__", [](const Particle& p) { return repr_call("Particle", {{"mass", py::float_(p.mass())}}); })
       .def(py::pickle([](const Particle& p) { return py::make_tuple(p.mass()); },
                       [](const py::tuple& t) { return Particle(pickled(t, 1, "Particle")[0].cast<double>()); }));
   def_equality(particle, [](const Particle& a, const Particle& b) { return a.mass() == b.mass(); });
 
-  py::class_<PlanarBody> planar(m, "PlanarBody",
-                                "A rigid body moving in the xy plane of W (x, y, theta; plane kinetics of Craig's \"Rigid "
-                                "Body Dynamics\" slides): mass [kg] and inertia_zz [kg m^2] about the z axis through the "
-                                "centre of mass, both > 0; each a float [unit] or a pint quantity.");
+  py::class_<PlanarBody> planar(m, "PlanarBody", R"doc(A rigid body moving in the xy plane of W (3 DOF: x, y, theta).
+
+Plane kinetics (K. Craig, "Rigid Body Dynamics" slides): m a_W = f_W + m g_W in W's plane and
+I_zz alpha = tau_G about the z axis through the centre of mass G. Its state is a PlanarBodyState.
+Immutable; pickles; == compares mass and inertia_zz.
+
+Parameters
+----------
+mass : float or pint.Quantity
+    Mass m [kg], finite and > 0.
+inertia_zz : float or pint.Quantity
+    Moment of inertia I_zz about the z axis through the centre of mass [kg m^2], finite and > 0.
+
+Raises
+------
+ValueError
+    A value that is not a finite number > 0, or a quantity of another dimension (the message names it).
+
+See Also
+--------
+PlanarBodyState, PivotedPlanarBody, RigidBody, simulate
+
+Examples
+--------
+Spinning at 2 rad/s, I_zz = 0.5 kg m^2 holds 1/2 I_zz omega^2 = 1 J:
+
+>>> b = rd.PlanarBody(2.0, 0.5)
+>>> rd.kinetic_energy(b, rd.PlanarBodyState(omega=2.0)).rotational
+1.0
+)doc");
   planar
       .def(py::init([](py::handle mass, py::handle inertia_zz) {
              return PlanarBody(py_io::as_scalar(py_io::in_si(mass, "kg", "mass"), "mass"),
                                py_io::as_scalar(py_io::in_si(inertia_zz, "kg*m^2", "inertia_zz"), "inertia_zz"));
            }),
            py::arg("mass"), py::arg("inertia_zz"))
-      .def_property_readonly("mass", &PlanarBody::mass, "mass [kg]")
-      .def_property_readonly("inertia_zz", &PlanarBody::inertia_zz, "moment of inertia about z through G [kg m^2]")
+      .def_property_readonly("mass", &PlanarBody::mass, "Mass m [kg].")
+      .def_property_readonly("inertia_zz", &PlanarBody::inertia_zz,
+                             "Moment of inertia I_zz about the z axis through the centre of mass G [kg m^2].")
       .def("__repr__",
            [](const PlanarBody& b) {
              return repr_call("PlanarBody", {{"mass", py::float_(b.mass())}, {"inertia_zz", py::float_(b.inertia_zz())}});
@@ -216,26 +267,65 @@ std::string rigid_body_repr(const RigidBody& b) {
 
 void bind_rigid_body(py::module_& m) {
   py::class_<RigidBody> body(
-      m, "RigidBody",
-      "A spatial rigid body (6 DOF), in three forms:\n"
-      "  RigidBody(mass, [I1, I2, I3])  mass [kg] > 0 and principal moments [kg m^2] about the centre of mass\n"
-      "                                 (the body axes B principal: inertia_com = diag(I1, I2, I3));\n"
-      "  RigidBody(mass, inertia_com)   inertia_com (3, 3) [kg m^2] about the centre of mass in B, moments on the\n"
-      "                                 diagonal and negated products off it (I_xy = -sum x y dm);\n"
-      "  RigidBody(spatial_inertia)     a SpatialInertia: its mass and inertia about its centre of mass, B placed\n"
-      "                                 at the centre of mass with the SpatialInertia's axes.\n"
-      "The inertia must be symmetric positive definite and is checked as every inertia of rigiddyn is\n"
-      "(inertia_report): under check=InertiaCheck.physical (the default) the principal moments must satisfy the\n"
-      "triangle inequality I_a + I_b >= I_c; check=InertiaCheck.allow_unrealizable accepts test bodies no real\n"
-      "body has, e.g. I = diag(2, 1, 2/3). euler_form tells which form of Euler's equations it uses:\n"
-      "'spherical', 'principal' or 'full'.\n"
-      "mass and inertia_com: floats [kg], [kg m^2] or pint quantities (an array quantity for the inertia; converted, "
-      "ValueError naming the argument for another dimension).");
+      m, "RigidBody", R"doc(A spatial rigid body (6 DOF): mass and inertia about its centre of mass.
+
+Newton's law for the centre of mass in W and Euler's equations in the body frame B (origin at the centre
+of mass): m a_W = f_W + m g_W, I alpha_B + w_B x I w_B = tau_B. Its state is a RigidBodyState. Three forms:
+
+- ``RigidBody(mass, [I1, I2, I3])``: principal moments, the axes of B principal (inertia_com = diag(I1, I2, I3));
+- ``RigidBody(mass, inertia_com)``: a full (3, 3) inertia about the centre of mass in B, moments on the
+  diagonal and negated products off it (I_xy = -sum x y dm);
+- ``RigidBody(spatial_inertia)``: a SpatialInertia: its mass and inertia about its centre of mass, B placed at
+  the centre of mass with the SpatialInertia's axes.
+
+The inertia must be symmetric positive definite and is checked as every inertia of rigiddyn is
+(inertia_report). euler_form tells which form of Euler's equations it uses: 'spherical', 'principal' or
+'full'. Immutable; pickles (an unrealizable test body stays one); == compares mass and inertia_com.
+
+Parameters
+----------
+mass : float, pint.Quantity or SpatialInertia
+    Mass m [kg], finite and > 0; or a SpatialInertia alone (then inertia_com is None).
+inertia_com : array_like, shape (3,) or (3, 3), or pint.Quantity
+    Principal moments [kg m^2], or the inertia matrix about the centre of mass in B [kg m^2] (an array
+    quantity is converted). Required next to a mass; None next to a SpatialInertia.
+check : InertiaCheck or None, default None
+    None or InertiaCheck.physical: the principal moments must also satisfy the triangle inequality
+    I_a + I_b >= I_c. InertiaCheck.allow_unrealizable accepts test bodies no real body has, e.g.
+    I = diag(2, 1, 2/3).
+
+Raises
+------
+ValueError
+    mass not a finite number > 0; inertia_com of another shape, not symmetric positive definite or (under
+    the physical check) violating the triangle inequality; inertia_com next to a SpatialInertia; a quantity
+    of another dimension. The message names the argument.
+TypeError
+    inertia_com None next to a mass, or check not an InertiaCheck.
+
+See Also
+--------
+RigidBodyState, SpatialInertia, inertia_report, nearest_valid_inertia, PivotedBody, Gyrostat, simulate
+
+Examples
+--------
+>>> b = rd.RigidBody(2.0, [1.0, 2.0, 3.0])
+>>> b.inertia_com.diagonal()
+array([1., 2., 3.])
+>>> b.euler_form, rd.RigidBody(1.0, [0.4, 0.4, 0.4]).euler_form
+('principal', 'spherical')
+
+A product of inertia makes Euler's equations 'full':
+
+>>> rd.RigidBody(1.0, [[2.0, -0.1, 0.0], [-0.1, 2.0, 0.0], [0.0, 0.0, 3.0]]).euler_form
+'full'
+)doc");
   body.def(py::init(&as_rigid_body), py::arg("mass"), py::arg("inertia_com") = py::none(), py::arg("check") = py::none())
-      .def_property_readonly("mass", &RigidBody::mass, "mass [kg]")
+      .def_property_readonly("mass", &RigidBody::mass, "Mass m [kg].")
       .def_property_readonly(
           "inertia_com", [](const RigidBody& b) { return read_only(b.inertia_com()); },
-          "(3, 3) inertia about the centre of mass in B [kg m^2] (read-only)")
+          "Inertia I about the centre of mass in B, shape (3, 3) [kg m^2], negated products off the diagonal "
+          "(read-only).")
       .def_property_readonly(
           "euler_form",
           [](const RigidBody& b) {
@@ -246,7 +336,8 @@ void bind_rigid_body(py::module_& m) {
             }
             return "full";
           },
-          "'spherical' (no gyroscopic term), 'principal' (diagonal inertia) or 'full'")
+          "Form of Euler's equations used: 'spherical' (no gyroscopic term), 'principal' (diagonal inertia) or "
+          "'full'.")
       .def("__repr__", &rigid_body_repr)
       .def(py::pickle(
           [](const RigidBody& b) { return py::make_tuple(b.mass(), py_io::to_array(b.inertia_com())); },
@@ -264,10 +355,35 @@ void bind_rigid_body(py::module_& m) {
 // The three states: every field assignable as a whole (`s.w_B = [...]`, converted and checked as the
 // constructor does) and read as a read-only array (`s.w_B[0] = 5` raises instead of writing to a copy).
 void bind_states(py::module_& m) {
-  py::class_<ParticleState> particle(m, "ParticleState",
-                                     "Particle state: p_W (3,) [m] and v_W (3,) [m/s] in W (None: zero), each floats [unit] "
-                                     "or a pint quantity. Fields are assigned whole (s.v_W = [...]); their arrays are "
-                                     "read-only.");
+  py::class_<ParticleState> particle(m, "ParticleState", R"doc(State of a Particle: position and velocity in W.
+
+Fields are assigned whole (``s.v_W = [...]``, converted and checked as the constructor does); the arrays read
+are read-only copies. Pickles; == compares every field.
+
+Parameters
+----------
+p_W : array_like, shape (3,), or pint.Quantity, optional
+    Position in W [m] (None: zero).
+v_W : array_like, shape (3,), or pint.Quantity, optional
+    Velocity in W [m/s] (None: zero).
+
+Raises
+------
+ValueError
+    A field of another shape, or a quantity of another dimension (the message names it).
+
+See Also
+--------
+Particle, simulate, step
+
+Examples
+--------
+>>> s = rd.ParticleState(p_W=[1.0, 0.0, 0.0], v_W=[0.0, 2.0, 0.0])
+>>> rd.linear_momentum(rd.Particle(3.0), s)
+array([0., 6., 0.])
+>>> rd.angular_momentum(rd.Particle(3.0), s)  # about the origin of W: p_W x m v_W
+array([0., 0., 6.])
+)doc");
   particle
       .def(py::init([](py::handle p_W, py::handle v_W) {
              return ParticleState{py_io::as_vector3_or_zero(py_io::in_si(p_W, "m", "p_W"), "p_W"),
@@ -277,11 +393,11 @@ void bind_states(py::module_& m) {
       .def_property(
           "p_W", [](const ParticleState& s) { return read_only(s.p_W); },
           [](ParticleState& s, py::handle v) {
-            s.p_W = py_io::as_vector3(py_io::in_si(v, "m", "p_W"), "p_W"); }, "(3,) position in W [m]")
+            s.p_W = py_io::as_vector3(py_io::in_si(v, "m", "p_W"), "p_W"); }, "Position p_W in W, shape (3,) [m].")
       .def_property(
           "v_W", [](const ParticleState& s) { return read_only(s.v_W); },
           [](ParticleState& s, py::handle v) {
-            s.v_W = py_io::as_vector3(py_io::in_si(v, "m/s", "v_W"), "v_W"); }, "(3,) velocity in W [m/s]")
+            s.v_W = py_io::as_vector3(py_io::in_si(v, "m/s", "v_W"), "v_W"); }, "Velocity v_W in W, shape (3,) [m/s].")
       .def("__repr__",
            [](const ParticleState& s) {
              return repr_call("ParticleState", {{"p_W", as_list(s.p_W)}, {"v_W", as_list(s.v_W)}});
@@ -294,11 +410,37 @@ void bind_states(py::module_& m) {
                       }));
   def_equality(particle, [](const ParticleState& a, const ParticleState& b) { return a.p_W == b.p_W && a.v_W == b.v_W; });
 
-  py::class_<PlanarBodyState> planar(m, "PlanarBodyState",
-                                     "Planar body state: p_W (2,) [m] centre of mass in W, theta [rad] angle of B about "
-                                     "z, v_W (2,) [m/s] in W, omega [rad/s] (None: zero), each floats [unit] or a pint "
-                                     "quantity. Fields are assigned whole; "
-                                     "their arrays are read-only.");
+  py::class_<PlanarBodyState> planar(m, "PlanarBodyState", R"doc(State of a PlanarBody in W's xy plane.
+
+Fields are assigned whole (converted and checked as the constructor does); the arrays read are read-only
+copies. Pickles; == compares every field.
+
+Parameters
+----------
+p_W : array_like, shape (2,), or pint.Quantity, optional
+    Centre of mass in W's xy plane [m] (None: zero).
+theta : float or pint.Quantity, default 0
+    Angle of B about z [rad] (R_WB = Rz(theta)).
+v_W : array_like, shape (2,), or pint.Quantity, optional
+    Centre of mass velocity in W [m/s] (None: zero).
+omega : float or pint.Quantity, default 0
+    Angular velocity about z [rad/s].
+
+Raises
+------
+ValueError
+    A field of another shape, or a quantity of another dimension (the message names it).
+
+See Also
+--------
+PlanarBody, simulate, step
+
+Examples
+--------
+>>> s = rd.PlanarBodyState(p_W=[1.0, 2.0], theta=np.pi / 2, omega=3.0)
+>>> s.p_W, s.omega
+(array([1., 2.]), 3.0)
+)doc");
   planar
       .def(py::init([](py::handle p_W, py::handle theta, py::handle v_W, py::handle omega) {
              return PlanarBodyState{py_io::as_vector2_or_zero(py_io::in_si(p_W, "m", "p_W"), "p_W"),
@@ -310,19 +452,23 @@ void bind_states(py::module_& m) {
       .def_property(
           "p_W", [](const PlanarBodyState& s) { return read_only(s.p_W); },
           [](PlanarBodyState& s, py::handle v) {
-            s.p_W = py_io::as_vector2(py_io::in_si(v, "m", "p_W"), "p_W"); }, "(2,) centre of mass in W [m]")
+            s.p_W = py_io::as_vector2(py_io::in_si(v, "m", "p_W"), "p_W"); },
+          "Centre of mass p_W in W's xy plane, shape (2,) [m].")
       .def_property(
           "theta", [](const PlanarBodyState& s) { return s.theta; },
           [](PlanarBodyState& s, py::handle v) {
-            s.theta = py_io::as_scalar(py_io::in_si(v, "rad", "theta"), "theta"); }, "angle of B about z [rad]")
+            s.theta = py_io::as_scalar(py_io::in_si(v, "rad", "theta"), "theta"); },
+          "Angle theta of B about z [rad], R_WB = Rz(theta).")
       .def_property(
           "v_W", [](const PlanarBodyState& s) { return read_only(s.v_W); },
           [](PlanarBodyState& s, py::handle v) {
-            s.v_W = py_io::as_vector2(py_io::in_si(v, "m/s", "v_W"), "v_W"); }, "(2,) velocity in W [m/s]")
+            s.v_W = py_io::as_vector2(py_io::in_si(v, "m/s", "v_W"), "v_W"); },
+          "Centre of mass velocity v_W in W, shape (2,) [m/s].")
       .def_property(
           "omega", [](const PlanarBodyState& s) { return s.omega; },
           [](PlanarBodyState& s, py::handle v) {
-            s.omega = py_io::as_scalar(py_io::in_si(v, "rad/s", "omega"), "omega"); }, "angular velocity [rad/s]")
+            s.omega = py_io::as_scalar(py_io::in_si(v, "rad/s", "omega"), "omega"); },
+          "Angular velocity omega about z [rad/s].")
       .def("__repr__",
            [](const PlanarBodyState& s) {
              return repr_call("PlanarBodyState", {{"p_W", as_list(s.p_W)},
@@ -344,13 +490,43 @@ void bind_states(py::module_& m) {
   });
 
   py::class_<RigidBodyState> rigid(
-      m, "RigidBodyState",
-      "Rigid body state (docs/conventions.md): p_W (3,) centre of mass in W [m], q_WB (4,) unit quaternion "
-      "(x, y, z, w), or (w, x, y, z) with scalar_first=True, v_W (3,) centre of mass velocity in W [m/s], w_B (3,) "
-      "angular velocity [rad/s] in B (None: zero, identity); p_W, v_W, w_B: floats [unit] or pint quantities. "
-      "q_WB is normalised; ValueError if | |q| - 1 | > 1e-6. "
-      "Fields are assigned whole (s.w_B = [...], s.q_WB = [x, y, z, w], checked as here); their arrays are "
-      "read-only.");
+      m, "RigidBodyState", R"doc(State of a RigidBody (docs/conventions.md).
+
+Position and velocity of the centre of mass in W, attitude q_WB (B to W) and the angular velocity of B in W,
+expressed in B. Fields are assigned whole (``s.w_B = [...]``, ``s.q_WB = [x, y, z, w]``, converted and checked
+as the constructor does); the arrays read are read-only copies. Pickles; == compares every field.
+
+Parameters
+----------
+p_W : array_like, shape (3,), or pint.Quantity, optional
+    Centre of mass position in W [m] (None: zero).
+q_WB : array_like, shape (4,), optional
+    Unit quaternion B to W, (x, y, z, w), or (w, x, y, z) with `scalar_first` (None: identity); normalised.
+v_W : array_like, shape (3,), or pint.Quantity, optional
+    Centre of mass velocity in W [m/s] (None: zero).
+w_B : array_like, shape (3,), or pint.Quantity, optional
+    Angular velocity of B in W, expressed in B [rad/s] (None: zero).
+scalar_first : bool, default False
+    Read q_WB as (w, x, y, z).
+
+Raises
+------
+ValueError
+    q_WB farther than 1e-6 from unit norm (| |q| - 1 | > 1e-6), a field of another shape or not finite, or
+    a quantity of another dimension (the message names it).
+
+See Also
+--------
+RigidBody, simulate, step, quat_normalize
+
+Examples
+--------
+A quarter turn about z, read scalar first:
+
+>>> s = rd.RigidBodyState(q_WB=[0.0, 0.0, np.sin(np.pi / 4), np.cos(np.pi / 4)], w_B=[0.0, 0.0, 1.0])
+>>> s.quaternion(scalar_first=True).round(12)
+array([0.70710678, 0.        , 0.        , 0.70710678])
+)doc");
   rigid
       .def(py::init([](py::handle p_W, py::handle q_WB, py::handle v_W, py::handle w_B, py::handle scalar_first) {
              const bool wxyz = py_io::as_bool(scalar_first, "scalar_first");
@@ -365,26 +541,42 @@ void bind_states(py::module_& m) {
       .def_property(
           "p_W", [](const RigidBodyState& s) { return read_only(s.p_W); },
           [](RigidBodyState& s, py::handle v) { s.p_W = py_io::as_vector3(py_io::in_si(v, "m", "p_W"), "p_W"); },
-          "(3,) centre of mass position in W [m]")
+          "Centre of mass position p_W in W, shape (3,) [m].")
       .def_property(
           "q_WB", [](const RigidBodyState& s) { return read_only(s.q_WB); },
           [](RigidBodyState& s, py::handle v) { s.q_WB = as_unit_quaternion(v, "q_WB"); },
-          "(4,) attitude (x, y, z, w), B to W; set from (x, y, z, w), normalised (ValueError beyond 1e-6 of unit "
-          "norm)")
+          "Attitude q_WB (B to W), shape (4,), (x, y, z, w); set from (x, y, z, w), normalised (ValueError beyond "
+          "1e-6 of unit norm).")
       .def(
           "quaternion",
           [](const RigidBodyState& s, py::handle scalar_first) {
             return read_only(s.q_WB, py_io::as_bool(scalar_first, "scalar_first"));
           },
-          py::arg("scalar_first") = false, "q_WB (4,) as (x, y, z, w), or (w, x, y, z) with scalar_first=True")
+          py::arg("scalar_first") = false, R"doc(The attitude q_WB (B to W) in the order asked.
+
+Parameters
+----------
+scalar_first : bool, default False
+    Return (w, x, y, z) instead of (x, y, z, w).
+
+Returns
+-------
+ndarray, shape (4,)
+    q_WB, read-only.
+
+Examples
+--------
+>>> rd.RigidBodyState().quaternion(scalar_first=True)
+array([1., 0., 0., 0.])
+)doc")
       .def_property(
           "v_W", [](const RigidBodyState& s) { return read_only(s.v_W); },
           [](RigidBodyState& s, py::handle v) { s.v_W = py_io::as_vector3(py_io::in_si(v, "m/s", "v_W"), "v_W"); },
-          "(3,) centre of mass velocity in W [m/s]")
+          "Centre of mass velocity v_W in W, shape (3,) [m/s].")
       .def_property(
           "w_B", [](const RigidBodyState& s) { return read_only(s.w_B); },
           [](RigidBodyState& s, py::handle v) { s.w_B = py_io::as_vector3(py_io::in_si(v, "rad/s", "w_B"), "w_B"); },
-          "(3,) angular velocity of B in W, expressed in B [rad/s]")
+          "Angular velocity w_B of B in W, expressed in B, shape (3,) [rad/s].")
       .def("__repr__",
            [](const RigidBodyState& s) {
              return repr_call("RigidBodyState", {{"p_W", as_list(s.p_W)},
@@ -414,9 +606,6 @@ void bind_models(py::module_& m) {
   bind_states(m);
 }
 
-const char* const body_state_doc =
-    "body: a RigidBody, PlanarBody or Particle; state: its state (RigidBodyState, PlanarBodyState or "
-    "ParticleState), finite (ValueError naming it otherwise, e.g. for a state a diverged step returned). ";
 
 // A result of two named parts (a, b) that still reads as the tuple it replaces: unpacking
 // `a, b = result`, len() and result[0], result[1].
@@ -429,18 +618,44 @@ void def_as_pair(py::class_<T>& cls, Parts parts) {
 
 void bind_result_types(py::module_& m) {
   py::class_<KineticEnergy> energy(m, "KineticEnergy",
-                                   "Kinetic energy [J] split as T = translational + rotational: translational 1/2 m v_W.v_W "
-                                   "of the centre of mass, rotational 1/2 w_B.I w_B about it (1/2 I_zz omega^2 for a planar "
-                                   "body, 0 for a particle); total = their sum. Immutable.");
+      "Kinetic energy T [J], split as T = translational + rotational.\n"
+      R"doc(
+translational = 1/2 m v_W.v_W of the centre of mass, rotational = 1/2 w_B.I w_B about it (1/2 I_zz omega^2 for
+a planar body, 0 for a particle); total = their sum. kinetic_energy's result. Immutable; pickles.
+
+Parameters
+----------
+translational : float or pint.Quantity, default 0
+    1/2 m v_W.v_W [J] (infinities allowed).
+rotational : float or pint.Quantity, default 0
+    1/2 w_B.I w_B about the centre of mass [J] (infinities allowed).
+
+Raises
+------
+ValueError
+    A NaN, or a quantity of another dimension (the message names it).
+
+See Also
+--------
+kinetic_energy, potential_energy
+
+Examples
+--------
+>>> T = rd.kinetic_energy(rd.RigidBody(2.0, [1.0, 2.0, 3.0]), rd.RigidBodyState(v_W=[1, 0, 0], w_B=[0, 0, 1]))
+>>> T.translational, T.rotational, T.total
+(1.0, 1.5, 2.5)
+)doc");
   energy
       .def(py::init([](py::handle translational, py::handle rotational) {
              return KineticEnergy{py_io::as_extended_real(py_io::in_si(translational, "J", "translational"), "translational"),
                                   py_io::as_extended_real(py_io::in_si(rotational, "J", "rotational"), "rotational")};
            }),
            py::arg("translational") = 0.0, py::arg("rotational") = 0.0)
-      .def_readonly("translational", &KineticEnergy::translational, "1/2 m v.v [J]")
-      .def_readonly("rotational", &KineticEnergy::rotational, "1/2 w.I w about the centre of mass [J]")
-      .def_property_readonly("total", &KineticEnergy::total, "translational + rotational [J]")
+      .def_readonly("translational", &KineticEnergy::translational,
+                    "Translational part 1/2 m v_W.v_W of the centre of mass [J].")
+      .def_readonly("rotational", &KineticEnergy::rotational,
+                    "Rotational part 1/2 w_B.I w_B about the centre of mass [J].")
+      .def_property_readonly("total", &KineticEnergy::total, "Total kinetic energy, translational + rotational [J].")
       .def("__repr__",
            [](const KineticEnergy& T) {
              return repr_call("KineticEnergy",
@@ -456,17 +671,45 @@ void bind_result_types(py::module_& m) {
   });
 
   py::class_<ComWrench> wrench(m, "ComWrench",
-                               "Loads reduced to the centre of mass G: f_W (3,) force in W [N] and tau_B (3,) torque "
-                               "about G in B [N m] (inverse_dynamics' result; unpacks as f_W, tau_B = ...). Immutable.");
+      "Loads reduced to the centre of mass G: a force in W and a torque about G in B.\n"
+      R"doc(
+inverse_dynamics' result for a RigidBody; unpacks as ``f_W, tau_B = ...``. Immutable; pickles.
+
+Parameters
+----------
+f_W : array_like, shape (3,), or pint.Quantity, optional
+    Force in W [N] (None: zero).
+tau_B : array_like, shape (3,), or pint.Quantity, optional
+    Torque about the centre of mass, in B [N m] (None: zero).
+
+Raises
+------
+ValueError
+    A field of another shape, or a quantity of another dimension (the message names it).
+
+See Also
+--------
+inverse_dynamics, BodyAcceleration, power
+
+Examples
+--------
+Holding 2 kg against gravity while lifting it at 1 m/s^2 takes m (a_W - g) = 21.62 N:
+
+>>> body = rd.RigidBody(2.0, [1.0, 2.0, 3.0])
+>>> f_W, tau_B = rd.inverse_dynamics(body, rd.RigidBodyState(), a_W=[0, 0, 1], alpha_B=[1, 0, 0], gravity=True)
+>>> f_W, tau_B
+(array([ 0.  ,  0.  , 21.62]), array([1., 0., 0.]))
+)doc");
   wrench
       .def(py::init([](py::handle f_W, py::handle tau_B) {
              return ComWrench{py_io::as_vector3_or_zero(py_io::in_si(f_W, "N", "f_W"), "f_W"),
                               py_io::as_vector3_or_zero(py_io::in_si(tau_B, "N*m", "tau_B"), "tau_B")};
            }),
            py::arg("f_W") = py::none(), py::arg("tau_B") = py::none())
-      .def_property_readonly("f_W", [](const ComWrench& w) { return read_only(w.f_W); }, "(3,) force in W [N]")
+      .def_property_readonly("f_W", [](const ComWrench& w) { return read_only(w.f_W); },
+                             "Force f_W in W, shape (3,) [N].")
       .def_property_readonly("tau_B", [](const ComWrench& w) { return read_only(w.tau_B); },
-                             "(3,) torque about the centre of mass in B [N m]")
+                             "Torque tau_B about the centre of mass, in B, shape (3,) [N m].")
       .def("__repr__", [](const ComWrench& w) {
         return repr_call("ComWrench", {{"f_W", as_list(w.f_W)}, {"tau_B", as_list(w.tau_B)}});
       })
@@ -478,18 +721,42 @@ void bind_result_types(py::module_& m) {
   def_equality(wrench, [](const ComWrench& a, const ComWrench& b) { return a.f_W == b.f_W && a.tau_B == b.tau_B; });
   def_as_pair(wrench, [](const ComWrench& w) { return py::make_tuple(read_only(w.f_W), read_only(w.tau_B)); });
 
-  py::class_<PlanarWrench> planar_wrench(m, "PlanarWrench",
-                                         "In-plane loads reduced to the centre of mass G: f_W (2,) force in W [N] and tau "
-                                         "torque about z through G [N m] (inverse_dynamics' result for a PlanarBody; "
-                                         "unpacks as f_W, tau = ...). Immutable.");
+  py::class_<PlanarWrench> planar_wrench(m, "PlanarWrench", R"doc(In-plane loads reduced to the centre of mass G.
+
+A force in W's xy plane and a torque about the z axis through G: inverse_dynamics' result for a PlanarBody;
+unpacks as ``f_W, tau = ...``. Immutable; pickles.
+
+Parameters
+----------
+f_W : array_like, shape (2,), or pint.Quantity, optional
+    Force in W [N] (None: zero).
+tau : float or pint.Quantity, default 0
+    Torque about the z axis through the centre of mass [N m].
+
+Raises
+------
+ValueError
+    A field of another shape, or a quantity of another dimension (the message names it).
+
+See Also
+--------
+inverse_dynamics, PlanarAcceleration
+
+Examples
+--------
+>>> body = rd.PlanarBody(2.0, 0.5)
+>>> rd.inverse_dynamics(body, rd.PlanarBodyState(), a_W=[1.0, 0.0], alpha_B=2.0)
+PlanarWrench(f_W=[2.0, 0.0], tau=1.0)
+)doc");
   planar_wrench
       .def(py::init([](py::handle f_W, py::handle tau) {
              return PlanarWrench{py_io::as_vector2_or_zero(py_io::in_si(f_W, "N", "f_W"), "f_W"),
                                  py_io::as_scalar(py_io::in_si(tau, "N*m", "tau"), "tau")};
            }),
            py::arg("f_W") = py::none(), py::arg("tau") = 0.0)
-      .def_property_readonly("f_W", [](const PlanarWrench& w) { return read_only(w.f_W); }, "(2,) force in W [N]")
-      .def_readonly("tau", &PlanarWrench::tau, "torque about z through the centre of mass [N m]")
+      .def_property_readonly("f_W", [](const PlanarWrench& w) { return read_only(w.f_W); },
+                             "Force f_W in W's xy plane, shape (2,) [N].")
+      .def_readonly("tau", &PlanarWrench::tau, "Torque tau about the z axis through the centre of mass [N m].")
       .def("__repr__", [](const PlanarWrench& w) {
         return repr_call("PlanarWrench", {{"f_W", as_list(w.f_W)}, {"tau", py::float_(w.tau)}});
       })
@@ -501,10 +768,36 @@ void bind_result_types(py::module_& m) {
   def_equality(planar_wrench, [](const PlanarWrench& a, const PlanarWrench& b) { return a.f_W == b.f_W && a.tau == b.tau; });
   def_as_pair(planar_wrench, [](const PlanarWrench& w) { return py::make_tuple(read_only(w.f_W), w.tau); });
 
-  py::class_<BodyAcceleration> acceleration(m, "BodyAcceleration",
-                                            "Accelerations of a rigid body: a_W (3,) of the centre of mass in W [m/s^2] "
-                                            "and alpha_B (3,) angular, in B [rad/s^2] (forward_dynamics' result; "
-                                            "unpacks as a_W, alpha_B = ...). Immutable.");
+  py::class_<BodyAcceleration> acceleration(m, "BodyAcceleration", R"doc(Accelerations of a rigid body.
+
+The centre of mass's acceleration in W and the angular acceleration in B: forward_dynamics' result for a
+RigidBody; unpacks as ``a_W, alpha_B = ...``. Immutable; pickles.
+
+Parameters
+----------
+a_W : array_like, shape (3,), or pint.Quantity, optional
+    Centre of mass acceleration in W [m/s^2] (None: zero).
+alpha_B : array_like, shape (3,), or pint.Quantity, optional
+    Angular acceleration of B in W, expressed in B [rad/s^2] (None: zero).
+
+Raises
+------
+ValueError
+    A field of another shape, or a quantity of another dimension (the message names it).
+
+See Also
+--------
+forward_dynamics, ComWrench
+
+Examples
+--------
+1 N along y at 1 m along x: a_W = f/m, alpha_B = I^-1 (p_GP x f):
+
+>>> body = rd.RigidBody(2.0, [1.0, 2.0, 3.0])
+>>> a_W, alpha_B = rd.forward_dynamics(body, rd.RigidBodyState(), force=[0, 1.0, 0], point=[1.0, 0, 0])
+>>> a_W, alpha_B.round(12)
+(array([0. , 0.5, 0. ]), array([0.        , 0.        , 0.33333333]))
+)doc");
   acceleration
       .def(py::init([](py::handle a_W, py::handle alpha_B) {
              return BodyAcceleration{py_io::as_vector3_or_zero(py_io::in_si(a_W, "m/s^2", "a_W"), "a_W"),
@@ -512,9 +805,9 @@ void bind_result_types(py::module_& m) {
            }),
            py::arg("a_W") = py::none(), py::arg("alpha_B") = py::none())
       .def_property_readonly("a_W", [](const BodyAcceleration& a) { return read_only(a.a_W); },
-                             "(3,) centre of mass acceleration in W [m/s^2]")
+                             "Centre of mass acceleration a_W in W, shape (3,) [m/s^2].")
       .def_property_readonly("alpha_B", [](const BodyAcceleration& a) { return read_only(a.alpha_B); },
-                             "(3,) angular acceleration in B [rad/s^2]")
+                             "Angular acceleration alpha_B of B in W, expressed in B, shape (3,) [rad/s^2].")
       .def("__repr__", [](const BodyAcceleration& a) {
         return repr_call("BodyAcceleration", {{"a_W", as_list(a.a_W)}, {"alpha_B", as_list(a.alpha_B)}});
       })
@@ -529,10 +822,33 @@ void bind_result_types(py::module_& m) {
                [](const BodyAcceleration& a, const BodyAcceleration& b) { return a.a_W == b.a_W && a.alpha_B == b.alpha_B; });
   def_as_pair(acceleration, [](const BodyAcceleration& a) { return py::make_tuple(read_only(a.a_W), read_only(a.alpha_B)); });
 
-  py::class_<PlanarAcceleration> planar_acceleration(m, "PlanarAcceleration",
-                                                     "Accelerations of a planar body: a_W (2,) of the centre of mass in W "
-                                                     "[m/s^2] and alpha about z [rad/s^2] (forward_dynamics' result; "
-                                                     "unpacks as a_W, alpha = ...). Immutable.");
+  py::class_<PlanarAcceleration> planar_acceleration(m, "PlanarAcceleration", R"doc(Accelerations of a planar body.
+
+The centre of mass's acceleration in W's xy plane and the angular acceleration about z: forward_dynamics'
+result for a PlanarBody; unpacks as ``a_W, alpha = ...``. Immutable; pickles.
+
+Parameters
+----------
+a_W : array_like, shape (2,), or pint.Quantity, optional
+    Centre of mass acceleration in W [m/s^2] (None: zero).
+alpha : float or pint.Quantity, default 0
+    Angular acceleration about z [rad/s^2].
+
+Raises
+------
+ValueError
+    A field of another shape, or a quantity of another dimension (the message names it).
+
+See Also
+--------
+forward_dynamics, PlanarWrench
+
+Examples
+--------
+>>> body = rd.PlanarBody(2.0, 0.5)
+>>> rd.forward_dynamics(body, rd.PlanarBodyState(), force=[0, 1.0], point=[1.0, 0])
+PlanarAcceleration(a_W=[0.0, 0.5], alpha=2.0)
+)doc");
   planar_acceleration
       .def(py::init([](py::handle a_W, py::handle alpha) {
              return PlanarAcceleration{py_io::as_vector2_or_zero(py_io::in_si(a_W, "m/s^2", "a_W"), "a_W"),
@@ -540,8 +856,8 @@ void bind_result_types(py::module_& m) {
            }),
            py::arg("a_W") = py::none(), py::arg("alpha") = 0.0)
       .def_property_readonly("a_W", [](const PlanarAcceleration& a) { return read_only(a.a_W); },
-                             "(2,) centre of mass acceleration in W [m/s^2]")
-      .def_readonly("alpha", &PlanarAcceleration::alpha, "angular acceleration about z [rad/s^2]")
+                             "Centre of mass acceleration a_W in W's xy plane, shape (2,) [m/s^2].")
+      .def_readonly("alpha", &PlanarAcceleration::alpha, "Angular acceleration alpha about z [rad/s^2].")
       .def("__repr__", [](const PlanarAcceleration& a) {
         return repr_call("PlanarAcceleration", {{"a_W", as_list(a.a_W)}, {"alpha", py::float_(a.alpha)}});
       })
@@ -577,6 +893,363 @@ PlanarWrench checked(const PlanarWrench& w, const char* quantity) {
   return w;
 }
 
+// ------------------------------------------------------------ the functions' docs (numpydoc)
+
+const char* const state_param_doc =
+    "body : RigidBody, PlanarBody or Particle\n"
+    "    The body.\n"
+    "state : RigidBodyState, PlanarBodyState or ParticleState\n"
+    "    Its state, of the body's kind and finite (a state a diverged step returned is refused).\n";
+
+const char* const state_raises_doc =
+    "TypeError\n"
+    "    body not one of the kinds listed, or state not of the body's kind (the message names it).\n"
+    "ValueError\n"
+    "    A state that is not finite or whose quaternion is farther than 1e-6 from unit norm (the message names\n"
+    "    state.<field>); an argument of another shape, or a quantity of another dimension (the message names it).\n";
+
+const std::string forward_dynamics_doc = std::string(
+    "Accelerations of `body` in `state` under an applied force, torque and gravity.\n"
+    R"doc(
+The force f acts at `point` P (p_GP from the centre of mass G) and reduces to G as f and tau_G = tau + p_GP x f.
+Per body kind:
+
+- RigidBody: Newton m a_W = f_W + m g_W, Euler I alpha_B + w_B x I w_B = tau_B (I about G, in B).
+- PlanarBody: m a_W = f_W + m g_W in W's xy plane, I_zz alpha = tau_G about z.
+- Particle: a_W = f_W / m + g_W.
+)doc") + pivoted_forward_dynamics_doc + R"doc(
+Parameters
+----------
+body : RigidBody, PlanarBody, Particle, PivotedBody or PivotedPlanarBody
+    The body.
+state : RigidBodyState, PlanarBodyState, ParticleState, PivotedBodyState or PivotedPlanarBodyState
+    Its state, of the body's kind and finite (a state a diverged step returned is refused).
+force : array_like, shape (3,) or (2,), or pint.Quantity, optional
+    Applied force f [N], expressed in `frame` (None: zero); shape (2,), in the plane, for the planar bodies.
+torque : array_like, shape (3,), float or pint.Quantity, optional
+    Applied torque tau [N m], expressed in `frame` (None: zero); a float about z for the planar bodies. A
+    Particle takes None.
+point : array_like, shape (3,) or (2,), or pint.Quantity, optional
+    Point of application of the force, p_GP [m] from the centre of mass, expressed in `frame` (None: the
+    centre of mass). A Particle takes None.
+frame : {'world', 'body'}, default 'world'
+    Frame of force, torque and point: W or B. A Particle takes 'world'.
+gravity : None, bool or array_like, default None
+    Uniform gravity g_W [m/s^2] in W: None (no gravity, docs/conventions.md), True (0, 0, -9.81) (False:
+    none), or a vector, shape (3,). PlanarBody: None or an in-plane vector, shape (2,). PivotedPlanarBody: None
+    or an in-plane vector, shape (2,) or (3,).
+
+Returns
+-------
+BodyAcceleration, PlanarAcceleration, ndarray, PivotedAcceleration or PivotedPlanarAcceleration
+    RigidBody: BodyAcceleration (a_W, shape (3,) [m/s^2] in W; alpha_B, shape (3,) [rad/s^2] in B).
+    PlanarBody: PlanarAcceleration (a_W, shape (2,); alpha [rad/s^2] about z). Particle: a_W, ndarray of
+    shape (3,) [m/s^2] in W. PivotedBody: PivotedAcceleration. PivotedPlanarBody: PivotedPlanarAcceleration.
+
+Raises
+------
+)doc" + state_raises_doc + R"doc(ValueError
+    torque or point given for a Particle, or frame 'body' for it; gravity True or False for a planar body.
+
+Warns
+-----
+RuntimeWarning
+    The result is not finite (an overflow; the message names forward_dynamics).
+
+See Also
+--------
+inverse_dynamics, simulate, step
+
+Examples
+--------
+>>> body = rd.RigidBody(2.0, [1.0, 2.0, 3.0])
+>>> rd.forward_dynamics(body, rd.RigidBodyState(), gravity=True)
+BodyAcceleration(a_W=[0.0, 0.0, -9.81], alpha_B=[0.0, 0.0, 0.0])
+
+Torque-free, a spin about two principal axes still accelerates (the gyroscopic term -I^-1 (w_B x I w_B)):
+
+>>> rd.forward_dynamics(body, rd.RigidBodyState(w_B=[1.0, 1.0, 0.0])).alpha_B.round(12)
+array([ 0.        ,  0.        , -0.33333333])
+
+A rod of L = 2 m and 3 kg pinned at one end, held horizontal, starts at alpha = -3 g / (2 L):
+
+>>> rod = rd.PivotedPlanarBody(3.0, 3.0 * 2.0**2 / 12, p_OC_B=[1.0, 0.0])
+>>> print(f"{rd.forward_dynamics(rod, rd.PivotedPlanarBodyState(), gravity=[0.0, -9.81]).alpha:.6f}")
+-7.357500
+)doc";
+
+const std::string inverse_dynamics_doc = std::string(
+    "The applied loads a motion requires, reduced to the centre of mass (undoes forward_dynamics).\n"
+    R"doc(
+Per body kind:
+
+- RigidBody: f_W = m (a_W - g_W) in W, tau_B = I alpha_B + w_B x I w_B about the centre of mass in B.
+- PlanarBody: f_W = m (a_W - g_W) in W's xy plane, tau = I_zz alpha about z.
+- Particle: f_W = m (a_W - g_W).
+)doc") + pivoted_inverse_dynamics_doc + R"doc(
+Parameters
+----------
+body : RigidBody, PlanarBody, Particle, PivotedBody or PivotedPlanarBody
+    The body.
+state : RigidBodyState, PlanarBodyState, ParticleState, PivotedBodyState or PivotedPlanarBodyState
+    Its state, of the body's kind and finite.
+a_W : array_like, shape (3,) or (2,), or pint.Quantity
+    Centre of mass acceleration in W [m/s^2]; shape (2,) for a PlanarBody. Required, except for the pivoted
+    bodies, which take None (the pivot fixes it).
+alpha_B : array_like, shape (3,), float or pint.Quantity
+    Angular acceleration in B [rad/s^2]; a float about z for the planar bodies. A Particle takes None.
+gravity : None, bool or array_like, default None
+    Uniform gravity g_W [m/s^2] in W, as forward_dynamics takes it.
+
+Returns
+-------
+ComWrench, PlanarWrench, ndarray, PivotedTorque or PivotedPlanarTorque
+    RigidBody: ComWrench (f_W, shape (3,) [N] in W; tau_B, shape (3,) [N m] in B). PlanarBody: PlanarWrench
+    (f_W, shape (2,); tau [N m] about z). Particle: f_W, ndarray of shape (3,) [N] in W. PivotedBody:
+    PivotedTorque. PivotedPlanarBody: PivotedPlanarTorque.
+
+Raises
+------
+)doc" + state_raises_doc + R"doc(TypeError
+    a_W or alpha_B None where the body needs it (the message names it).
+ValueError
+    alpha_B given for a Particle; a_W given for a pivoted body.
+
+Warns
+-----
+RuntimeWarning
+    The result is not finite (an overflow; the message names inverse_dynamics).
+
+See Also
+--------
+forward_dynamics, ComWrench, PivotedTorque
+
+Examples
+--------
+It undoes forward_dynamics, gyroscopic term included:
+
+>>> body = rd.RigidBody(2.0, [1.0, 2.0, 3.0])
+>>> s = rd.RigidBodyState(w_B=[1.0, 1.0, 0.0])
+>>> a = rd.forward_dynamics(body, s, force=[1.0, 0, 0], torque=[0, 0.5, 0], gravity=True)
+>>> w = rd.inverse_dynamics(body, s, a_W=a.a_W, alpha_B=a.alpha_B, gravity=True)
+>>> np.allclose(w.f_W, [1, 0, 0]), np.allclose(w.tau_B, [0, 0.5, 0])
+(True, True)
+
+The torque about the pivot that holds a top of 1 kg horizontal, its centre of mass 0.5 m out along x:
+
+>>> top = rd.PivotedBody(rd.RigidBody(1.0, [0.1, 0.1, 0.2]), p_OC_B=[0.0, 0.0, 0.5])
+>>> level = rd.PivotedBodyState(q_WB=rd.rotvec_to_quat([0.0, np.pi / 2, 0.0]))
+>>> rd.inverse_dynamics(top, level, alpha_B=[0, 0, 0], gravity=True).tau_O_B.round(12)
+array([ 0.   , -4.905,  0.   ])
+)doc";
+
+const std::string linear_momentum_doc = std::string(R"doc(Linear momentum m v_W [kg m/s] of the centre of mass, in W.
+
+Parameters
+----------
+)doc") + state_param_doc + R"doc(
+Returns
+-------
+ndarray, shape (3,) or (2,)
+    m v_W [kg m/s] in W; shape (2,) for a PlanarBody.
+
+Raises
+------
+)doc" + state_raises_doc + R"doc(
+See Also
+--------
+angular_momentum, kinetic_energy, apply_impulse
+
+Examples
+--------
+>>> rd.linear_momentum(rd.Particle(3.0), rd.ParticleState(v_W=[0.0, 2.0, 0.0]))
+array([0., 6., 0.])
+)doc";
+
+const std::string angular_momentum_doc = std::string(R"doc(Angular momentum about a point P fixed in W, expressed in W.
+
+About P at p_WP ("Rigid body kinematics and dynamics" notes, eq. (4.42) and (4.65); None: the origin O of W):
+
+- RigidBody: H_P = R_WB I w_B + (p_W - p_WP) x m v_W, shape (3,);
+- PlanarBody: H_z = I_zz omega + (p_W - p_WP) x m v_W about the z axis through P, a float;
+- Particle: (p_W - p_WP) x m v_W, shape (3,).
+
+About the centre of mass: point=state.p_W.
+
+Parameters
+----------
+)doc") + state_param_doc + R"doc(point : array_like, shape (3,) or (2,), or pint.Quantity, optional
+    p_WP, the point P in W [m] (None: the origin of W); shape (2,) for a PlanarBody.
+
+Returns
+-------
+ndarray, shape (3,), or float
+    H_P [kg m^2/s] in W; for a PlanarBody, H_z [kg m^2/s] about z.
+
+Raises
+------
+)doc" + state_raises_doc + R"doc(
+See Also
+--------
+linear_momentum, kinetic_energy
+
+Examples
+--------
+Spin I w = 6 about the centre of mass plus the orbit p_W x m v_W = 2 about the origin:
+
+>>> body = rd.RigidBody(2.0, [1.0, 2.0, 3.0])
+>>> s = rd.RigidBodyState(p_W=[1, 0, 0], v_W=[0, 1, 0], w_B=[0, 0, 2])
+>>> rd.angular_momentum(body, s), rd.angular_momentum(body, s, point=s.p_W)
+(array([0., 0., 8.]), array([0., 0., 6.]))
+)doc";
+
+const std::string kinetic_energy_doc = std::string(
+    "Kinetic energy [J], split into its translational and rotational parts.\n"
+    R"doc(
+translational = 1/2 m v_W.v_W, rotational = 1/2 w_B.I w_B about the centre of mass (1/2 I_zz omega^2 for a
+PlanarBody, 0 for a Particle), total = their sum.
+
+Parameters
+----------
+)doc") + state_param_doc + R"doc(
+Returns
+-------
+KineticEnergy
+    translational, rotational and total [J].
+
+Raises
+------
+)doc" + state_raises_doc + R"doc(
+Warns
+-----
+RuntimeWarning
+    A part is not finite (an overflow; the message names kinetic_energy).
+
+See Also
+--------
+KineticEnergy, potential_energy, simulate
+
+Examples
+--------
+A torque-free body keeps its kinetic energy:
+
+>>> body = rd.RigidBody(2.0, [1.0, 2.0, 3.0])
+>>> s0 = rd.RigidBodyState(v_W=[1, 0, 0], w_B=[1.0, 0.1, 0.2])
+>>> s1 = rd.step(body, s0, 0.001, method="rkmk4")
+>>> rd.kinetic_energy(body, s0).total, f"{rd.kinetic_energy(body, s1).total:.12f}"
+(1.57, '1.570000000000')
+)doc";
+
+const std::string potential_energy_doc = std::string(
+    "Potential energy of uniform gravity, V = -m g_W.p_W [J] (zero at the origin of W).\n"
+    R"doc(
+Parameters
+----------
+)doc") + state_param_doc + R"doc(gravity : None, bool or array_like, default None
+    g_W [m/s^2] in W: None (the default, as in simulate: no field, so V = 0 J), True (0, 0, -9.81) or a
+    vector, shape (3,); for a PlanarBody None or an in-plane vector, shape (2,).
+
+Returns
+-------
+float
+    V [J].
+
+Raises
+------
+)doc" + state_raises_doc + R"doc(
+See Also
+--------
+kinetic_energy, simulate
+
+Examples
+--------
+>>> V = rd.potential_energy(rd.Particle(2.0), rd.ParticleState(p_W=[0, 0, 10.0]), gravity=True)
+>>> print(f"{V:.6f}")  # m g h
+196.200000
+)doc";
+
+const char* const power_doc = "Power [W] of a force at the centre of mass and a torque about it: f_W.v_W + tau_B.w_B.\n"
+    R"doc(
+Parameters
+----------
+state : RigidBodyState, PlanarBodyState or ParticleState
+    The state, finite.
+f_W : array_like, shape (3,) or (2,), or pint.Quantity
+    Force at the centre of mass, in W [N]; shape (2,) for a PlanarBodyState.
+tau_B : array_like, shape (3,), float or pint.Quantity, optional
+    Torque about the centre of mass [N m] (None: none): in B, shape (3,), for a RigidBodyState; a float about
+    z for a PlanarBodyState; None for a ParticleState.
+
+Returns
+-------
+float
+    The power [W].
+
+Raises
+------
+TypeError
+    state not one of the kinds listed (the message names it).
+ValueError
+    A state that is not finite, an argument of another shape or dimension, or tau_B for a ParticleState.
+
+See Also
+--------
+inverse_dynamics, kinetic_energy
+
+Examples
+--------
+>>> rd.power(rd.RigidBodyState(v_W=[1, 0, 0], w_B=[0, 0, 2]), f_W=[3, 0, 0], tau_B=[0, 0, 0.5])
+4.0
+)doc";
+
+const std::string apply_impulse_doc = std::string("The state just after an impulse at a point and an angular impulse.\n"
+    R"doc(
+Impulse-momentum (K. Craig, "Rigid Body Dynamics" slides): m dv = impulse, I dw = p_GP x impulse +
+angular_impulse, with p_GP the point of application from the centre of mass G; the position and the attitude
+do not change.
+
+Parameters
+----------
+)doc") + state_param_doc + R"doc(impulse : array_like, shape (3,) or (2,), or pint.Quantity
+    The impulse [N s], in `frame`; shape (2,) for a PlanarBody.
+point : array_like, shape (3,) or (2,), or pint.Quantity, optional
+    p_GP [m] from the centre of mass, in `frame` (None: the centre of mass). A Particle takes None.
+frame : {'world', 'body'}, default 'world'
+    Frame of impulse, point and angular_impulse: W or B. A Particle takes 'world'.
+angular_impulse : array_like, shape (3,), float or pint.Quantity, optional
+    An angular impulse (impulsive torque) [N m s] in `frame` (None: none); a float about z for a PlanarBody.
+    A Particle takes None.
+
+Returns
+-------
+RigidBodyState, PlanarBodyState or ParticleState
+    The state after the impulse.
+
+Raises
+------
+)doc" + state_raises_doc + R"doc(ValueError
+    point or angular_impulse given for a Particle, or frame 'body' for it.
+
+Warns
+-----
+RuntimeWarning
+    The new velocities are not finite (an overflow).
+
+See Also
+--------
+linear_momentum, angular_momentum
+
+Examples
+--------
+2 N s along y at 1 m along x: dv = J / m, dw_z = (p_GP x J)_z / I_zz = 2 / 3:
+
+>>> body = rd.RigidBody(2.0, [1.0, 2.0, 3.0])
+>>> after = rd.apply_impulse(body, rd.RigidBodyState(), impulse=[0, 2.0, 0], point=[1.0, 0, 0])
+>>> after.v_W, after.w_B.round(12)
+(array([0., 1., 0.]), array([0.        , 0.        , 0.66666667]))
+)doc";
+
+
 void bind_dynamics_functions(py::module_& m) {
   m.def(
       "forward_dynamics",
@@ -610,19 +1283,7 @@ void bind_dynamics_functions(py::module_& m) {
       },
       py::arg("body"), py::arg("state"), py::arg("force") = py::none(), py::arg("torque") = py::none(),
       py::arg("point") = py::none(), py::arg("frame") = "world", py::arg("gravity") = py::none(),
-      (std::string("Accelerations of `body` in `state` under a force applied at `point` and a torque `torque`.\n") +
-       body_state_doc +
-       "\ngravity: None (the default: no gravity, docs/conventions.md), True = (0, 0, -9.81) m/s^2, or a vector "
-       "[m/s^2] in W.\n"
-       "RigidBody: force (3,) [N] at point (p_GP (3,) [m], from the centre of mass; None = the centre of mass), "
-       "torque (3,) [N m], all expressed in `frame` ('world' or 'body'), gravity (3,); returns a BodyAcceleration "
-       "(a_W (3,) [m/s^2] of the centre of mass in W, alpha_B (3,) [rad/s^2] in B; unpacks as a_W, alpha_B). "
-       "Newton: m a = f + m g; Euler: I alpha + w x I w = tau_G.\n"
-       "PlanarBody: in-plane force (2,) [N] at point (2,) [m], torque [N m] about z, gravity (2,) [m/s^2]; "
-       "returns a PlanarAcceleration (a_W (2,), alpha [rad/s^2]); I_zz alpha = tau_G.\n"
-       "Particle: force (3,) [N] in W (torque and point None, frame 'world'); returns a_W (3,) = force/m + g.\n" +
-       pivoted_forward_dynamics_doc)
-          .c_str());
+      forward_dynamics_doc.c_str());
 
   m.def(
       "inverse_dynamics",
@@ -652,16 +1313,7 @@ void bind_dynamics_functions(py::module_& m) {
             });
       },
       py::arg("body"), py::arg("state"), py::arg("a_W") = py::none(), py::arg("alpha_B") = py::none(), py::arg("gravity") = py::none(),
-      (std::string("The applied loads the motion requires, reduced to the centre of mass (undoes forward_dynamics).\n") +
-       body_state_doc +
-       "\ngravity: None (the default: no gravity), True = (0, 0, -9.81) m/s^2, or a vector [m/s^2] in W.\n"
-       "RigidBody: a_W (3,) [m/s^2] in W, alpha_B (3,) [rad/s^2] in B; returns a ComWrench: f_W (3,) [N] in W and "
-       "tau_B (3,) [N m] about the centre of mass in B (unpacks as f_W, tau_B), f_W = m (a_W - g), "
-       "tau_B = I alpha_B + w_B x I w_B.\n"
-       "PlanarBody: a_W (2,), alpha_B [rad/s^2] about z, gravity (2,); returns a PlanarWrench: f_W (2,) [N] in W "
-       "and tau [N m] about z (unpacks as f_W, tau).\n"
-       "Particle: a_W (3,) (alpha_B None); returns f_W (3,) [N] in W = m (a_W - g).\n" + pivoted_inverse_dynamics_doc)
-          .c_str());
+      inverse_dynamics_doc.c_str());
 
   m.def(
       "linear_momentum",
@@ -672,8 +1324,7 @@ void bind_dynamics_functions(py::module_& m) {
             [](const PlanarBody& b, const PlanarBodyState& s) { return finite_result(linear_momentum(b, s), "linear_momentum"); },
             [](const Particle& p, const ParticleState& s) { return finite_result(linear_momentum(p, s), "linear_momentum"); });
       },
-      py::arg("body"), py::arg("state"),
-      (std::string("Linear momentum m v_W [kg m/s] in W: (3,), or (2,) for a PlanarBody. ") + body_state_doc).c_str());
+      py::arg("body"), py::arg("state"), linear_momentum_doc.c_str());
 
   m.def(
       "angular_momentum",
@@ -694,14 +1345,7 @@ void bind_dynamics_functions(py::module_& m) {
             });
       },
       py::arg("body"), py::arg("state"), py::arg("point") = py::none(),
-      (std::string("Angular momentum about the point P fixed in W at `point` (p_WP [m] in W; None = the world origin "
-                   "O, as the \"Rigid body kinematics and dynamics\" notes define it, eq. (4.42) and (4.65)), expressed "
-                   "in W. About the centre of mass: point=state.p_W. ") +
-       body_state_doc +
-       "\nRigidBody: (3,) [kg m^2/s], H_P = R_WB I w_B + (p_W - p_WP) x m v_W. PlanarBody: H_z [kg m^2/s] "
-       "about the z axis through P, I_zz omega + (p_W - p_WP) x m v_W, point (2,). Particle: (3,), "
-       "(p_W - p_WP) x m v_W.")
-          .c_str());
+      angular_momentum_doc.c_str());
 
   m.def(
       "kinetic_energy",
@@ -712,11 +1356,7 @@ void bind_dynamics_functions(py::module_& m) {
             [](const Particle& p, const ParticleState& s) { return checked(kinetic_energy(p, s)); });
       },
       py::arg("body"), py::arg("state"),
-      (std::string("Kinetic energy as a KineticEnergy [J]: translational = 1/2 m v_W.v_W, rotational = 1/2 w_B.I w_B "
-                   "about the centre of mass (1/2 I_zz omega^2 for a PlanarBody, 0 for a Particle), total = their "
-                   "sum. ") +
-       body_state_doc)
-          .c_str());
+      kinetic_energy_doc.c_str());
 
   m.def(
       "potential_energy",
@@ -734,11 +1374,7 @@ void bind_dynamics_functions(py::module_& m) {
             });
       },
       py::arg("body"), py::arg("state"), py::arg("gravity") = py::none(),
-      (std::string("Potential energy of uniform gravity, V = -m g.p_W [J] (zero at the origin of W). gravity: None "
-                   "(the default, as in simulate: no field, so V = 0 J), True = (0, 0, -9.81) m/s^2, or a vector "
-                   "(3,) [m/s^2] in W; for a PlanarBody None or an in-plane (2,) [m/s^2]. ") +
-       body_state_doc)
-          .c_str());
+      potential_energy_doc.c_str());
 
   m.def(
       "power",
@@ -762,9 +1398,7 @@ void bind_dynamics_functions(py::module_& m) {
         py_io::throw_type_error("state", "a RigidBodyState, PlanarBodyState or ParticleState", state);
       },
       py::arg("state"), py::arg("f_W"), py::arg("tau_B") = py::none(),
-      "Power [W] of a force f_W [N] in W at the centre of mass and a torque tau_B about it (None: none): "
-      "f_W.v_W + tau_B.w_B. RigidBodyState: f_W (3,), tau_B (3,) [N m] in B; PlanarBodyState: f_W (2,), tau_B "
-      "[N m] about z; ParticleState: f_W (3,) only.");
+      power_doc);
 
   m.def(
       "apply_impulse",
@@ -795,14 +1429,7 @@ void bind_dynamics_functions(py::module_& m) {
       },
       py::arg("body"), py::arg("state"), py::arg("impulse"), py::arg("point") = py::none(),
       py::arg("frame") = "world", py::arg("angular_impulse") = py::none(),
-      (std::string("The state just after an impulse [N s] at `point` (p_GP [m] from the centre of mass; None = the "
-                   "centre of mass) and an angular impulse [N m s] (None: none), all in `frame` ('world' or 'body'): "
-                   "m dv = impulse, I dw = p_GP x impulse + angular_impulse (impulse-momentum, Craig's \"Rigid Body "
-                   "Dynamics\" slides). ") +
-       body_state_doc +
-       "\nRigidBody: impulse, point, angular_impulse (3,). PlanarBody: impulse, point (2,), angular_impulse about z. "
-       "Particle: impulse (3,) in W only.")
-          .c_str());
+      apply_impulse_doc.c_str());
 }
 
 }  // namespace

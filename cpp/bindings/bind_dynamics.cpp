@@ -215,69 +215,213 @@ py::object step_py(py::handle model, py::handle state, py::handle dt, py::handle
   });
 }
 
-const char* const simulate_doc = R"doc(
-Integrate `model` from `initial` over `steps` fixed steps of `dt` [s] with `method` (see methods()),
-in C++ with the GIL released, and record every `record_every`-th step (plus the first and the last).
-The run's length: steps= (an int >= 0) or, by keyword, duration= [s] (a float or a pint quantity), exactly one;
-a duration must be a whole number of steps of dt (to 1e-9 relative: 10 s at dt = 0.01 s is 1000 steps),
-else ValueError naming duration and dt with the nearest durations that are.
-dt, t0 and duration: each a float [s] or a pint quantity (converted to s; ValueError naming it for another
-dimension).
+const char* const simulate_doc = R"doc(Integrate a body or a scene over fixed steps and record its motion.
 
-model/initial: Particle/ParticleState, PlanarBody/PlanarBodyState or RigidBody/RigidBodyState; or a Scene
-  or CompiledScene and a list of the states of its bodies (returns a SceneResult: see Scene); or a PivotedBody/
-  PivotedBodyState, PivotedPlanarBody/PivotedPlanarBodyState or Gyrostat/GyrostatState: the one-body scene of
-  the body, UniformGravity (gravity) and ScheduledLoads (loads) (returns a SceneResult; a PivotedPlanarBody takes
-  an in-plane gravity (2,) or (3,)).
-method: a name of methods(); None (the default): 'rk4', or the method a CompiledScene was compiled for.
-loads: an AppliedLoad or a sequence of them, a piecewise-constant schedule: a step that crosses a
-  switch time (a t_start or t_end) is split there into sub-steps of the same method, so every method
-  keeps its order; records stay at t0 + i dt. gravity: None/False (the default: none), True
-  ((0, 0, -9.81) m/s^2 in W) or a 3-vector [m/s^2] in W. t0: initial time [s]. scalar_first: quaternions
-  as (w, x, y, z).
-progress: None or a callable(steps_done), called with the GIL after the first step and then about every
-  0.05 s of a long run, however long a step takes; an exception it raises stops the run and propagates.
+Runs `steps` fixed steps of `dt` with `method` (see methods()) from `initial` at time t0, in C++ with the GIL
+released, and records every `record_every`-th step plus the first and the last (records at t0 + i dt). The
+loads are a piecewise-constant schedule: a step that crosses a switch time (a t_start or t_end) is split there
+into sub-steps of the same method, so every method keeps its order.
 
-Returns a SimulationResult, arrays with one row per record (n records): t (n,) [s]; p_W (n, 3) [m];
-q_WB (n, 4) (x, y, z, w); v_W (n, 3) [m/s]; w_B (n, 3) [rad/s]; kinetic_energy (n,) [J];
-total_energy (n,) kinetic + gravity potential [J]; angular_momentum_norm (n,) |H_G| [kg m^2/s];
-quaternion_norm_error (n,) |q| - 1; work (n,) work of loads and gravity since t0 [J], integrated by the
-same method (kinetic_energy - kinetic_energy[0] ~ work); diverged; unconverged_steps (implicit solves that
-hit their iteration cap); elapsed_seconds (C++ loop wall time).
-A particle records q = identity, w = 0; a planar body p = (x, y, 0), q = Rz(theta), w = (0, 0, omega).
-Warns RuntimeWarning and stops if the state becomes non-finite; warns RuntimeWarning naming the quantities
-and their first times if a recorded quantity is not finite although the state is (an overflow, e.g. the
-kinetic energy of |v_W| > 1e154 m/s); warns RuntimeWarning (naming dt and the count) if an implicit solve
-did not converge. Ctrl-C stops the run within about 0.05 s however long a step takes (a step under way is
-finished first) with KeyboardInterrupt (no result is kept). ValueError names a bad argument, also a
-recording larger than the memory available (record_every, with both figures).
+Parameters
+----------
+model : Particle, PlanarBody, RigidBody, PivotedBody, PivotedPlanarBody, Gyrostat, Scene or CompiledScene
+    What to integrate. A PivotedBody, PivotedPlanarBody or Gyrostat runs as its one-body scene with a
+    UniformGravity (`gravity`) and a ScheduledLoads (`loads`).
+initial : ParticleState, PlanarBodyState, RigidBodyState, PivotedBodyState, ..., or list
+    The state of `model`'s kind at t0 (also PivotedPlanarBodyState or GyrostatState); for a Scene or
+    CompiledScene, a list of the states of its bodies.
+dt : float or pint.Quantity
+    Step [s], finite and > 0 (a quantity is converted to s).
+steps : int, optional
+    Number of steps, >= 0. Exactly one of steps and duration.
+method : str, optional
+    A name of methods(): 'explicit_euler', 'semi_implicit_euler', 'semi_implicit_euler_implicit_gyroscopic',
+    'rk4', 'rkmk4', 'implicit_midpoint', 'splitting_dlm', 'splitting_dlm_yoshida4', 'exact_flow_kick' or 'exact'.
+    None (the default): 'rk4', or the method a CompiledScene was compiled for.
+record_every : int, default 1
+    Record every record_every-th step (>= 1), plus the first and the last.
+loads : AppliedLoad or sequence of AppliedLoad, optional
+    The applied loads (None: none). A Scene or CompiledScene takes None (it declares its loads as elements).
+gravity : None, bool or array_like, shape (3,), default None
+    Uniform gravity g_W [m/s^2] in W: None or False (none), True ((0, 0, -9.81)) or a vector. A PivotedPlanarBody
+    takes None or an in-plane vector, shape (2,) or (3,); a Scene or CompiledScene takes None (declare a
+    UniformGravity element).
+t0 : float or pint.Quantity, default 0.0
+    Initial time [s].
+scalar_first : bool, default False
+    Record quaternions as (w, x, y, z) instead of (x, y, z, w).
+progress : callable, optional
+    progress(steps_done), called with the GIL after the first step and then about every 0.05 s of a long run,
+    however long a step takes; an exception it raises stops the run and propagates.
+duration : float or pint.Quantity, keyword-only, optional
+    Length of the run [s] instead of steps: a whole number of steps of dt (to 1e-9 relative: 10 s at
+    dt = 0.01 s is 1000 steps).
+
+Returns
+-------
+SimulationResult or SceneResult
+    A SimulationResult for a Particle, PlanarBody or RigidBody: one row per record, n records (t, p_W, q_WB, v_W,
+    w_B, kinetic_energy, total_energy, angular_momentum_norm, quaternion_norm_error, work; diverged,
+    unconverged_steps, elapsed_seconds). A SceneResult for a Scene, a CompiledScene, a pivoted body or a Gyrostat.
+
+Raises
+------
+ValueError
+    A bad argument, named: dt not > 0, steps < 0, both or neither of steps and duration, a duration that is not a
+    whole number of steps of dt (the message gives the nearest durations that are), an unknown method (with the
+    nearest name), record_every < 1, a recording larger than the memory available (record_every, with both
+    figures), a quantity of another dimension, loads or gravity for a scene.
+TypeError
+    model not one of the kinds listed, or initial not of its kind (the message names it).
+KeyboardInterrupt
+    Ctrl-C stops the run within about 0.05 s however long a step takes (a step under way is finished first); no
+    result is kept.
+
+Warns
+-----
+RuntimeWarning
+    The state became non-finite (the run stops there and diverged is True); a recorded quantity is not finite
+    although the state is (an overflow, e.g. the kinetic energy of |v_W| > 1e154 m/s; the message names the
+    quantities and their first times); an implicit solve did not converge (naming dt and the count).
+
+See Also
+--------
+step, simulate_batch, methods, SimulationResult, AppliedLoad, Scene
+
+Notes
+-----
+A Particle records q = identity and w = 0; a PlanarBody records p = (x, y, 0), q = Rz(theta), w = (0, 0, omega).
+work is integrated by the same method as the motion, so kinetic_energy - kinetic_energy[0] ~ work.
+
+Examples
+--------
+A dropped particle follows z = -1/2 g t^2; rk4 integrates a quadratic motion exactly (round-off only):
+
+>>> r = rd.simulate(rd.Particle(1.0), rd.ParticleState(), dt=0.01, duration=2.0, gravity=True, record_every=50)
+>>> r.t
+array([0. , 0.5, 1. , 1.5, 2. ])
+>>> np.allclose(r.p_W[:, 2], -0.5 * 9.81 * r.t**2, rtol=0, atol=1e-12)
+True
+
+A torque-free body keeps its kinetic energy and |H_G|; implicit_midpoint holds both to its Newton tolerance
+(1e-14 per step):
+
+>>> body = rd.RigidBody(2.0, [1.0, 2.0, 3.0])
+>>> r = rd.simulate(body, rd.RigidBodyState(w_B=[1.0, 0.1, 0.2]), dt=0.01, steps=1000, method="implicit_midpoint")
+>>> r.q_WB.shape, bool(np.ptp(r.kinetic_energy) < 1e-10), bool(np.ptp(r.angular_momentum_norm) < 1e-10)
+((1001, 4), True, True)
+
+A force of 2 N on 1 kg for the first second (the step across t = 1 s is split there):
+
+>>> push = rd.AppliedLoad(force=[2.0, 0.0, 0.0], t_end=1.0)
+>>> rd.simulate(rd.Particle(1.0), rd.ParticleState(), dt=0.3, steps=5, loads=push).v_W[-1].round(12)
+array([2., 0., 0.])
 )doc";
 
-const char* const step_doc = R"doc(
-One step of `method` (see methods()) of length dt [s] from `state` at time t [s] to t + dt under `loads`
-(AppliedLoad or sequence) and `gravity` (None/False, the default: none; True for (0, 0, -9.81) m/s^2, or a
-3-vector [m/s^2] in W). A step across a switch time of the loads is split there, as in simulate.
-dt and t: each a float [s] or a pint quantity (converted to s; ValueError naming it for another dimension).
+const char* const step_doc = R"doc(One step of `method` from `state` at time t to t + dt.
 
-t=None (default): returns the new state (same type as `state`); ValueError (naming t) if a load acts on a
-  time window (finite t_start or t_end), since the step then depends on the time.
-t given: returns (new state, t + dt), e.g. `state, t = step(body, state, dt, loads=loads, t=t)` in a loop.
-Warns RuntimeWarning if the new state is not finite, as simulate does. ValueError names a bad argument.
-method: a name of methods(); None (the default): 'rk4', or the method a CompiledScene was compiled for.
-model may also be a Scene or CompiledScene with `state` a list of the states of its bodies: returns the
-list of new states (or (list, t + dt)); ValueError naming model for a scene with a MassFlow (a state does
-not carry the mass: use simulate); or a PivotedBody / PivotedPlanarBody / Gyrostat with its state (the step of its
-one-body scene, as simulate): returns the new state (or (state, t + dt)).
+The step `simulate` takes, for a loop written in Python. A step across a switch time of the loads (a t_start or
+t_end) is split there, as in simulate.
+
+Parameters
+----------
+model : Particle, PlanarBody, RigidBody, PivotedBody, PivotedPlanarBody, Gyrostat, Scene or CompiledScene
+    What to step. A PivotedBody, PivotedPlanarBody or Gyrostat steps as its one-body scene, as in simulate.
+state : ParticleState, PlanarBodyState, RigidBodyState, PivotedBodyState, ..., or list
+    The state of `model`'s kind; for a Scene or CompiledScene, a list of the states of its bodies.
+dt : float or pint.Quantity
+    Step [s], finite and > 0.
+method : str, optional
+    A name of methods(); None (the default): 'rk4', or the method a CompiledScene was compiled for.
+loads : AppliedLoad or sequence of AppliedLoad, optional
+    The applied loads (None: none), as simulate takes them.
+gravity : None, bool or array_like, shape (3,), default None
+    Uniform gravity g_W [m/s^2] in W: None or False (none), True ((0, 0, -9.81)) or a vector; as simulate.
+t : float or pint.Quantity, optional
+    The time of `state` [s]. Needed when a load acts on a time window (finite t_start or t_end).
+
+Returns
+-------
+state or (state, float)
+    t None: the new state, of the type of `state` (a list of new states for a scene). t given: (new state,
+    t + dt), e.g. ``state, t = step(body, state, dt, loads=loads, t=t)`` in a loop.
+
+Raises
+------
+ValueError
+    A bad argument, named; t None while a load acts on a time window (the step then depends on the time); a
+    scene with a MassFlow (a state does not carry the mass: use simulate).
+TypeError
+    model not one of the kinds listed, or state not of its kind (the message names it).
+
+Warns
+-----
+RuntimeWarning
+    The new state is not finite, as simulate warns.
+
+See Also
+--------
+simulate, methods
+
+Examples
+--------
+Ten steps of 0.1 s at 1 rad/s about z turn a body 1 rad (rk4):
+
+>>> body = rd.RigidBody(2.0, [1.0, 2.0, 3.0])
+>>> state, t = rd.RigidBodyState(w_B=[0.0, 0.0, 1.0]), 0.0
+>>> for _ in range(10):
+...     state, t = rd.step(body, state, 0.1, t=t)
+>>> print(f"{t:.12f}", rd.quat_to_rotvec(state.q_WB).round(6))
+1.000000000000 [0. 0. 1.]
+
+One step of a falling particle (rk4 is exact on it):
+
+>>> rd.step(rd.Particle(1.0), rd.ParticleState(), 0.5, gravity=True).v_W.round(12)
+array([ 0.   ,  0.   , -4.905])
 )doc";
 
 }  // namespace
 
 void bind_dynamics(py::module_& m) {
   py::class_<AppliedLoad> load(m, "AppliedLoad",
-                               "A load: force (3,) [N] through the centre of mass and torque (3,) [N m] (a pure "
-                               "couple), both expressed in frame 'world' (W) or 'body' (B), active for t_start <= t < "
-                               "t_end [s]. Immutable. Each of force, torque, t_start, t_end: float(s) [unit] or a pint quantity (converted; "
-                               "ValueError naming it for another dimension).");
+      "An applied load: a force through the centre of mass and a couple, on a time window.\n"
+      R"doc(
+Both are expressed in frame 'world' (W) or 'body' (B) and act for t_start <= t < t_end. simulate and step take a
+sequence of them as a piecewise-constant schedule, splitting a step at each t_start and t_end. Immutable;
+pickles; == compares every field.
+
+Parameters
+----------
+force : array_like, shape (3,), or pint.Quantity, optional
+    Force through the centre of mass [N], in `frame` (None: zero).
+torque : array_like, shape (3,), or pint.Quantity, optional
+    Torque, a pure couple [N m], in `frame` (None: zero).
+frame : {'world', 'body'}, default 'world'
+    Frame of force and torque: W or B.
+t_start : float or pint.Quantity, default -inf
+    Start of the window [s].
+t_end : float or pint.Quantity, default inf
+    End of the window [s], excluded.
+
+Raises
+------
+ValueError
+    A field of another shape, a non-finite force or torque, an unknown frame, t_end not after t_start, or a
+    quantity of another dimension (the message names it).
+
+See Also
+--------
+simulate, step, simulate_batch
+
+Examples
+--------
+2 N on 1 kg for one second, then coasting: v = 2 m/s, and 1 m + 2 m/s x 1 s = 3 m after 2 s:
+
+>>> push = rd.AppliedLoad(force=[2.0, 0.0, 0.0], t_end=1.0)
+>>> r = rd.simulate(rd.Particle(1.0), rd.ParticleState(), dt=0.1, steps=20, loads=push)
+>>> r.v_W[-1].round(12), r.p_W[-1].round(12)
+(array([2., 0., 0.]), array([3., 0., 0.]))
+)doc");
   load.def(py::init([](py::handle force, py::handle torque, py::handle frame, py::handle t_start, py::handle t_end) {
              AppliedLoad l{py_io::as_vector3_or_zero(py_io::in_si(force, "N", "force"), "force"),
                            py_io::as_vector3_or_zero(py_io::in_si(torque, "N*m", "torque"), "torque"), as_frame(frame),
@@ -289,13 +433,15 @@ void bind_dynamics(py::module_& m) {
            py::arg("force") = py::none(), py::arg("torque") = py::none(),
            py::arg("frame") = "world", py::arg("t_start") = -std::numeric_limits<double>::infinity(),
            py::arg("t_end") = std::numeric_limits<double>::infinity())
-      .def_property_readonly("force", [](const AppliedLoad& l) { return py_io::read_only(l.force); }, "(3,) [N] in frame")
+      .def_property_readonly("force", [](const AppliedLoad& l) { return py_io::read_only(l.force); },
+                             "Force through the centre of mass, in `frame`, shape (3,) [N].")
       .def_property_readonly("torque", [](const AppliedLoad& l) { return py_io::read_only(l.torque); },
-                             "(3,) [N m] in frame")
+                             "Torque (a pure couple), in `frame`, shape (3,) [N m].")
       .def_property_readonly(
-          "frame", [](const AppliedLoad& l) { return l.frame == Frame::world ? "world" : "body"; }, "'world' or 'body'")
-      .def_readonly("t_start", &AppliedLoad::t_start, "[s]")
-      .def_readonly("t_end", &AppliedLoad::t_end, "[s]")
+          "frame", [](const AppliedLoad& l) { return l.frame == Frame::world ? "world" : "body"; },
+          "Frame of force and torque: 'world' (W) or 'body' (B).")
+      .def_readonly("t_start", &AppliedLoad::t_start, "Start of the window [s] (-inf: always on before t_end).")
+      .def_readonly("t_end", &AppliedLoad::t_end, "End of the window [s], excluded (inf: never ends).")
       .def("__repr__",
            [](const AppliedLoad& l) {
              // the infinite ends are the defaults and left out, so that the text evaluates
@@ -331,25 +477,51 @@ void bind_dynamics(py::module_& m) {
   load.attr("__hash__") = py::none();
 
   py::class_<SimulationResult>(m, "SimulationResult",
-                               "simulate's records (see simulate), one row per record; the arrays are read-only.")
-      .def_readonly("t", &SimulationResult::t, "(n,) time [s]")
-      .def_readonly("p_W", &SimulationResult::p_W, "(n, 3) centre of mass position in W [m]")
-      .def_readonly("q_WB", &SimulationResult::q_WB, "(n, 4) attitude, (x, y, z, w) unless scalar_first")
-      .def_readonly("v_W", &SimulationResult::v_W, "(n, 3) centre of mass velocity in W [m/s]")
-      .def_readonly("w_B", &SimulationResult::w_B, "(n, 3) angular velocity in B [rad/s]")
-      .def_readonly("kinetic_energy", &SimulationResult::kinetic_energy, "(n,) [J]")
-      .def_readonly("total_energy", &SimulationResult::total_energy, "(n,) kinetic + gravity potential [J]")
+      "The records of simulate: arrays with one row per record (n records).\n"
+      R"doc(
+Read-only arrays; q_WB's rows (x, y, z, w) unless scalar_first. A Particle records q = identity and w = 0; a
+PlanarBody p = (x, y, 0), q = Rz(theta), w = (0, 0, omega). Pickles; to_dataframe gives a table.
+
+Parameters
+----------
+None
+    Made by simulate (and by BatchResult[i]); it has no public constructor.
+
+See Also
+--------
+simulate, BatchResult, SceneResult
+
+Examples
+--------
+>>> body = rd.RigidBody(2.0, [1.0, 2.0, 3.0])
+>>> r = rd.simulate(body, rd.RigidBodyState(w_B=[0.0, 0.0, 1.0]), dt=0.1, steps=10, record_every=5)
+>>> r.t, r.p_W.shape, r.q_WB.shape, r.diverged, r.unconverged_steps
+(array([0. , 0.5, 1. ]), (3, 3), (3, 4), False, 0)
+>>> r.kinetic_energy  # 1/2 I_z w_z^2
+array([1.5, 1.5, 1.5])
+)doc")
+      .def_readonly("t", &SimulationResult::t, "Time of each record, shape (n,) [s].")
+      .def_readonly("p_W", &SimulationResult::p_W, "Centre of mass position in W, shape (n, 3) [m].")
+      .def_readonly("q_WB", &SimulationResult::q_WB,
+                    "Attitude q_WB (B to W), shape (n, 4), (x, y, z, w) unless scalar_first.")
+      .def_readonly("v_W", &SimulationResult::v_W, "Centre of mass velocity in W, shape (n, 3) [m/s].")
+      .def_readonly("w_B", &SimulationResult::w_B, "Angular velocity of B in W, expressed in B, shape (n, 3) [rad/s].")
+      .def_readonly("kinetic_energy", &SimulationResult::kinetic_energy, "Kinetic energy, shape (n,) [J].")
+      .def_readonly("total_energy", &SimulationResult::total_energy,
+                    "Kinetic + gravity potential energy (zero at W's origin), shape (n,) [J].")
       .def_readonly("angular_momentum_norm", &SimulationResult::angular_momentum_norm,
-                    "(n,) |H_G| about the centre of mass [kg m^2/s]")
-      .def_readonly("quaternion_norm_error", &SimulationResult::quaternion_norm_error, "(n,) |q| - 1")
-      .def_readonly("work", &SimulationResult::work, "(n,) work of loads and gravity since t0 [J]")
-      .def_readonly("diverged", &SimulationResult::diverged, "True if the run stopped on a non-finite state")
+                    "|H_G|, the norm of the angular momentum about the centre of mass, shape (n,) [kg m^2/s].")
+      .def_readonly("quaternion_norm_error", &SimulationResult::quaternion_norm_error,
+                    "|q_WB| - 1 of each record, shape (n,) (dimensionless).")
+      .def_readonly("work", &SimulationResult::work,
+                    "Work of the loads and gravity since t0, shape (n,) [J] (integrated by the run's method).")
+      .def_readonly("diverged", &SimulationResult::diverged, "True if the run stopped on a non-finite state (a bool).")
       .def_readonly("unconverged_steps", &SimulationResult::unconverged_steps,
-                    "number of steps whose implicit solve stopped at its iteration cap (implicit_midpoint; "
-                    "0 for explicit methods); simulate warns RuntimeWarning when > 0")
-      .def_readonly("elapsed_seconds", &SimulationResult::elapsed_seconds, "wall time of the C++ stepping loop [s]")
+                    "Number of steps whose implicit solve stopped at its iteration cap (implicit_midpoint; "
+                    "0 for explicit methods); simulate warns RuntimeWarning when > 0.")
+      .def_readonly("elapsed_seconds", &SimulationResult::elapsed_seconds, "Wall time of the C++ stepping loop [s].")
       .def_readonly("scalar_first", &SimulationResult::scalar_first,
-                    "True if q_WB's rows are (w, x, y, z): the result of simulate(..., scalar_first=True)")
+                    "True if q_WB's rows are (w, x, y, z): the result of simulate(..., scalar_first=True).")
       .def("__repr__", &result_repr)
       .def(py::pickle(&result_state, &result_from_state))
       // the table lives in Python (rigiddyn/trajectory.py): one definition of the columns for CSV, npz,
@@ -360,13 +532,31 @@ void bind_dynamics(py::module_& m) {
             return py::module_::import("rigiddyn.trajectory").attr("to_dataframe")(self, scalar_first);
           },
           py::arg("scalar_first") = py::none(),
-          "A pandas.DataFrame of the records (needs pandas: pip install 'rigiddyn[dataframe]'): one row per "
-          "record, one column per scalar with its unit, as the CSV of `python -m rigiddyn simulate`: 't [s]' "
-          "(a column, not the index), 'p_W_x [m]' .. 'q_WB_x' .. 'q_WB_w', 'v_W_x [m/s]' .., 'w_B_x [rad/s]' "
-          ".., 'kinetic_energy [J]', 'total_energy [J]', 'angular_momentum_norm [kg m^2/s]', "
-          "'quaternion_norm_error', 'work [J]'; q_WB's columns in the result's order ('q_WB_w' first when "
-          "its scalar_first is True). scalar_first: None (the default) for the order the result records; "
-          "True or False declares the order of its q_WB rows instead.");
+          R"doc(The records as a pandas.DataFrame (needs pandas: pip install 'rigiddyn[dataframe]').
+
+One row per record, one column per scalar with its unit, as the CSV of ``python -m rigiddyn simulate``:
+'t [s]' (a column, not the index), 'p_W_x [m]' .. 'q_WB_x' .. 'q_WB_w', 'v_W_x [m/s]' .., 'w_B_x [rad/s]' ..,
+'kinetic_energy [J]', 'total_energy [J]', 'angular_momentum_norm [kg m^2/s]', 'quaternion_norm_error',
+'work [J]'; q_WB's columns in the result's order ('q_WB_w' first when its scalar_first is True).
+
+Parameters
+----------
+scalar_first : bool, optional
+    None (the default): the order the result records. True or False declares the order of its q_WB rows
+    instead.
+
+Returns
+-------
+pandas.DataFrame
+    n rows, 19 columns.
+
+Examples
+--------
+>>> r = rd.simulate(rd.Particle(1.0), rd.ParticleState(), dt=0.5, steps=2, gravity=True)
+>>> df = r.to_dataframe()
+>>> df.shape, df["p_W_z [m]"].round(12).tolist()
+((3, 19), [0.0, -1.22625, -4.905])
+)doc");
 
 #define RIGIDDYN_SIMULATE_ARGS                                                                              \
   py::arg("model"), py::arg("initial"), py::arg("dt"), py::arg("steps") = py::none(),                        \
@@ -408,12 +598,36 @@ void bind_dynamics(py::module_& m) {
         }
         return out;
       },
-      "The fixed-step methods: a list of dicts with name, order (global), evaluations (derivative "
-      "evaluations per step), conserves (what is kept exactly on a free rigid body), notes, stability_limit "
-      "(largest dt*|w| [rad], |w| the largest body rate on the torque-free orbit, at which the method is "
-      "documented stable on a free spin: inf if unconditionally, 0 if never), exact_torque_free (True if "
-      "torque-free motion is reproduced to round-off at any dt: no observed order applies) and scene_features "
-      "(what of a Scene the method runs: bodies, elements, and its compatibility notes).");
+      R"doc(The fixed-step methods simulate, step and simulate_batch take, with their properties.
+
+Parameters
+----------
+None
+
+Returns
+-------
+list of dict
+    One dict per method, with the keys: name (str, the `method` argument); order (int, global order);
+    evaluations (int, derivative evaluations per step); conserves (str, what is kept exactly on a free rigid
+    body); notes (str); stability_limit (float, the largest dt*|w| [rad], |w| the largest body rate on the
+    torque-free orbit, at which the method is documented stable on a free spin: inf if unconditionally, 0 if
+    never); exact_torque_free (bool, True if torque-free motion is reproduced to round-off at any dt: no
+    observed order applies); scene_features (str, what of a Scene the method runs: bodies, elements, and its
+    compatibility notes).
+
+See Also
+--------
+simulate, step
+
+Examples
+--------
+>>> [m["name"] for m in rd.methods()]  # doctest: +NORMALIZE_WHITESPACE
+['explicit_euler', 'semi_implicit_euler', 'semi_implicit_euler_implicit_gyroscopic', 'rk4', 'rkmk4',
+ 'implicit_midpoint', 'splitting_dlm', 'splitting_dlm_yoshida4', 'exact_flow_kick', 'exact']
+>>> rk4 = next(m for m in rd.methods() if m["name"] == "rk4")
+>>> rk4["order"], rk4["evaluations"], f"{rk4['stability_limit']:.6f}"  # 2 sqrt(2)
+(4, 4, '2.828427')
+)doc");
 }
 
 }  // namespace rigiddyn::bindings

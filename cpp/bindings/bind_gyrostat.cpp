@@ -56,29 +56,48 @@ bool same_wheel(const Wheel& a, const Wheel& b) {
 
 void bind_wheel(py::module_& m) {
   py::class_<Wheel> cls(
-      m, "Wheel",
-      "A wheel of a Gyrostat, spun about an axis fixed in the body by a motor.\n\n"
-      "Parameters\n----------\n"
-      "axis_B : array_like, shape (3,)\n    The spin axis in the body frame B (any non-zero length; the unit axis is "
-      "kept).\n"
-      "inertia : float or pint.Quantity\n    The wheel's moment of inertia about its spin axis [kg m^2], > 0.\n"
-      "motor_torque : float or pint.Quantity, default 0\n    The motor's torque on the wheel about its axis [N m] "
-      "(the body feels its reaction), applied for t_start <= t < t_end.\n"
-      "t_start, t_end : float or pint.Quantity, default 0 and inf\n    The motor's time window [s] (a run splits its "
-      "steps at both).\n\n"
-      "Examples\n--------\n"
-      ">>> import rigiddyn as rd\n"
-      ">>> rd.Wheel(axis_B=[0, 0, 2], inertia=0.01, motor_torque=0.002, t_end=5.0).axis_B\n"
-      "array([0., 0., 1.])\n\n"
-      "Immutable; pickles; == compares every field.");
+      m, "Wheel", R"doc(A wheel of a Gyrostat, spun about an axis fixed in the body by a motor.
+
+Its speed relative to the body is a state of the gyrostat (GyrostatState.wheel_speeds). Immutable; pickles; ==
+compares every field.
+
+Parameters
+----------
+axis_B : array_like, shape (3,)
+    The spin axis in the body frame B (any non-zero length; the unit axis is kept).
+inertia : float or pint.Quantity
+    The wheel's moment of inertia about its spin axis [kg m^2], > 0.
+motor_torque : float or pint.Quantity, default 0
+    The motor's torque on the wheel about its axis [N m] (the body feels its reaction), applied for
+    t_start <= t < t_end.
+t_start, t_end : float or pint.Quantity, default 0 and inf
+    The motor's time window [s] (a run splits its steps at both).
+
+Raises
+------
+ValueError
+    A zero or non-finite axis, an inertia not > 0, a non-finite torque, t_end not after t_start, or a quantity
+    of another dimension (the message names it).
+
+See Also
+--------
+Gyrostat, GyrostatState
+
+Examples
+--------
+>>> rd.Wheel(axis_B=[0, 0, 2], inertia=0.01, motor_torque=0.002, t_end=5.0).axis_B
+array([0., 0., 1.])
+)doc");
   cls.def(py::init(&make_wheel), py::arg("axis_B"), py::arg("inertia"), py::arg("motor_torque") = 0.0,
           py::arg("t_start") = 0.0, py::arg("t_end") = std::numeric_limits<double>::infinity())
       .def_property_readonly("axis_B", [](const Wheel& w) { return py_io::read_only(w.axis_B); },
-                             "(3,) the unit spin axis in B")
-      .def_property_readonly("inertia", [](const Wheel& w) { return w.inertia; }, "axial moment of inertia [kg m^2]")
-      .def_property_readonly("motor_torque", [](const Wheel& w) { return w.motor_torque; }, "motor torque [N m]")
-      .def_property_readonly("t_start", [](const Wheel& w) { return w.t_start; }, "the motor's start [s]")
-      .def_property_readonly("t_end", [](const Wheel& w) { return w.t_end; }, "the motor's end [s] (inf: never)")
+                             "The unit spin axis a in B, shape (3,).")
+      .def_property_readonly("inertia", [](const Wheel& w) { return w.inertia; },
+                             "Axial moment of inertia J about the spin axis [kg m^2].")
+      .def_property_readonly("motor_torque", [](const Wheel& w) { return w.motor_torque; },
+                             "Motor torque u on the wheel about its axis [N m].")
+      .def_property_readonly("t_start", [](const Wheel& w) { return w.t_start; }, "The motor's start [s].")
+      .def_property_readonly("t_end", [](const Wheel& w) { return w.t_end; }, "The motor's end [s] (inf: never).")
       .def("__repr__", &wheel_repr)
       .def(py::pickle(
           [](const Wheel& w) { return py::make_tuple(list_of(w.axis_B), w.inertia, w.motor_torque, w.t_start, w.t_end); },
@@ -122,32 +141,63 @@ py::list wheels_list(const Gyrostat& g) {
 void bind_gyrostat_body(py::module_& m) {
   py::class_<Gyrostat> cls(
       m, "Gyrostat",
-      "A rigid body carrying wheels, each spun about an axis fixed in the body by a motor, each wheel's speed "
-      "relative to the body a state (Hughes, \"Spacecraft Attitude Dynamics\", ch. 3): a reaction-wheel spacecraft.\n\n"
-      "With I the whole body's inertia (wheels locked), wheel k's unit axis a_k, axial inertia J_k, speed Omega_k "
-      "relative to the body and motor torque u_k, the transverse inertia A = I - sum J_k a_k a_k^T:\n"
-      "    A dw/dt = tau_B - sum u_k a_k - w x (I w + h_w),  dOmega_k/dt = u_k / J_k - a_k . dw/dt,\n"
-      "h_w = sum J_k Omega_k a_k; kinetic energy T = 1/2 m |v|^2 + 1/2 w.A w + 1/2 sum J_k (a_k.w + Omega_k)^2.\n\n"
-      "Parameters\n----------\n"
-      "body : RigidBody\n    The whole body with its wheels locked: mass [kg] and inertia_com [kg m^2] about its "
-      "centre of mass in B, wheels included.\n"
-      "wheels : sequence of Wheel\n    Its wheels (ValueError naming wheels[k].inertia when a wheel's axial inertia "
-      "leaves A not positive definite).\n\n"
-      "Examples\n--------\n"
-      ">>> import rigiddyn as rd\n"
-      ">>> sat = rd.Gyrostat(rd.RigidBody(100.0, [10.0, 12.0, 15.0]), [rd.Wheel([0, 0, 1], 0.05)])\n"
-      ">>> sat.transverse_inertia.diagonal()\n"
-      "array([10.  , 12.  , 14.95])\n\n"
-      "Elements see it as its locked RigidBody. It runs in an inertial scene with explicit_euler, semi_implicit_euler, "
-      "rk4, rkmk4 or implicit_midpoint. Immutable; pickles; == compares body and wheels.");
+          "A rigid body carrying wheels spun by motors about axes fixed in the body: a reaction-wheel spacecraft.\n"
+          R"doc(
+Each wheel's speed relative to the body is a state (Hughes, "Spacecraft Attitude Dynamics", ch. 3). With I the
+whole body's inertia about its centre of mass in B (wheels locked), wheel k's unit axis a_k, axial inertia J_k,
+speed Omega_k relative to the body and motor torque u_k, the transverse inertia A = I - sum J_k a_k a_k^T:
+
+    A dw/dt = tau_B - sum u_k a_k - w x (I w + h_w),  dOmega_k/dt = u_k / J_k - a_k . dw/dt,
+
+h_w = sum J_k Omega_k a_k; kinetic energy T = 1/2 m |v|^2 + 1/2 w.A w + 1/2 sum J_k (a_k.w + Omega_k)^2.
+Elements see it as its locked RigidBody. It runs in an inertial scene with explicit_euler, semi_implicit_euler,
+rk4, rkmk4 or implicit_midpoint; simulate and step of a Gyrostat alone run its one-body scene. Immutable;
+pickles; == compares body and wheels.
+
+Parameters
+----------
+body : RigidBody
+    The whole body with its wheels locked: mass [kg] and inertia_com [kg m^2] about its centre of mass in B,
+    wheels included.
+wheels : sequence of Wheel
+    Its wheels (one Wheel alone is taken as a list of one).
+
+Raises
+------
+TypeError
+    body not a RigidBody, or wheels not a sequence of Wheel (the message names wheels[k]).
+ValueError
+    A wheel's axial inertia leaves A not positive definite (the message names wheels[k].inertia).
+
+See Also
+--------
+Wheel, GyrostatState, RigidBody, simulate
+
+Examples
+--------
+>>> sat = rd.Gyrostat(rd.RigidBody(100.0, [10.0, 12.0, 15.0]), [rd.Wheel([0, 0, 1], 0.05)])
+>>> sat.transverse_inertia.diagonal()
+array([10.  , 12.  , 14.95])
+
+Motor torque spins the wheel up and the body the other way; the total angular momentum stays zero:
+
+>>> sat = rd.Gyrostat(rd.RigidBody(100.0, [10.0, 12.0, 15.0]), [rd.Wheel([0, 0, 1], 0.05, motor_torque=0.01)])
+>>> r = rd.simulate(sat, rd.GyrostatState(wheel_speeds=[0.0]), dt=0.1, steps=100)
+>>> bool(r.w_B[-1, 0, 2] < 0 < r.wheel_speed[-1, 0]), bool(np.allclose(r.angular_momentum_W[-1], 0, atol=1e-12))
+(True, True)
+)doc");
   cls.def(py::init(&make_gyrostat), py::arg("body"), py::arg("wheels"))
-      .def_property_readonly("body", [](const Gyrostat& g) { return g.body(); }, "the RigidBody with the wheels locked (a copy)")
-      .def_property_readonly("mass", &Gyrostat::mass, "mass [kg]")
+      .def_property_readonly("body", [](const Gyrostat& g) { return g.body(); },
+                             "The RigidBody with the wheels locked: mass [kg] and inertia about C in B [kg m^2] "
+                             "(a copy).")
+      .def_property_readonly("mass", &Gyrostat::mass, "Mass m [kg], wheels included.")
       .def_property_readonly("inertia_com", [](const Gyrostat& g) { return py_io::read_only(g.inertia_com()); },
-                             "(3, 3) inertia about the centre of mass in B, wheels locked [kg m^2]")
+                             "Inertia I about the centre of mass in B, wheels locked, shape (3, 3) [kg m^2].")
       .def_property_readonly("transverse_inertia", [](const Gyrostat& g) { return py_io::read_only(g.transverse_inertia()); },
-                             "(3, 3) A = I - sum J_k a_k a_k^T [kg m^2]: the body with its wheels free to spin")
-      .def_property_readonly("wheels", [](const Gyrostat& g) { return py::tuple(wheels_list(g)); }, "the wheels (a tuple)")
+                             "A = I - sum J_k a_k a_k^T in B, shape (3, 3) [kg m^2]: the body with its wheels free to "
+                             "spin.")
+      .def_property_readonly("wheels", [](const Gyrostat& g) { return py::tuple(wheels_list(g)); },
+                             "The wheels, a tuple of Wheel in the order of the state's wheel_speeds.")
       .def("__repr__",
            [](const Gyrostat& g) { return repr_call("Gyrostat", {{"body", py::cast(g.body())}, {"wheels", wheels_list(g)}}); })
       .def(py::pickle([](const Gyrostat& g) { return py::make_tuple(g.body(), wheels_list(g)); },
@@ -186,21 +236,42 @@ Eigen::VectorXd as_wheel_speeds(py::handle obj) {
 
 void bind_gyrostat_state(py::module_& m) {
   py::class_<GyrostatState> cls(
-      m, "GyrostatState",
-      "State of a Gyrostat: the rigid body's and its wheels' speeds.\n\n"
-      "Parameters\n----------\n"
-      "p_W : array_like, shape (3,), optional\n    Centre of mass position in W [m] (None: zero).\n"
-      "q_WB : array_like, shape (4,), optional\n    Unit quaternion B to W, (x, y, z, w), or (w, x, y, z) with "
-      "scalar_first=True (None: identity; normalised, ValueError beyond 1e-6 of unit norm).\n"
-      "v_W : array_like, shape (3,), optional\n    Centre of mass velocity in W [m/s] (None: zero).\n"
-      "w_B : array_like, shape (3,), optional\n    Angular velocity of B relative to W, in B [rad/s] (None: zero).\n"
-      "wheel_speeds : array_like, shape (nw,), optional\n    Each wheel's speed relative to the body [rad/s], in the "
-      "order of the gyrostat's wheels (None: none; a run checks one per wheel).\n\n"
-      "Examples\n--------\n"
-      ">>> import rigiddyn as rd\n"
-      ">>> rd.GyrostatState(w_B=[0, 0, 0.1], wheel_speeds=[100.0]).wheel_speeds\n"
-      "array([100.])\n\n"
-      "Fields are assigned whole (checked as here); their arrays are read-only.");
+      m, "GyrostatState", R"doc(State of a Gyrostat: the rigid body's state and its wheels' speeds.
+
+Fields are assigned whole (converted and checked as the constructor does); the arrays read are read-only copies.
+Pickles; == compares every field.
+
+Parameters
+----------
+p_W : array_like, shape (3,), optional
+    Centre of mass position in W [m] (None: zero).
+q_WB : array_like, shape (4,), optional
+    Unit quaternion B to W, (x, y, z, w), or (w, x, y, z) with scalar_first=True (None: identity; normalised).
+v_W : array_like, shape (3,), optional
+    Centre of mass velocity in W [m/s] (None: zero).
+w_B : array_like, shape (3,), optional
+    Angular velocity of B relative to W, in B [rad/s] (None: zero).
+wheel_speeds : array_like, shape (nw,), optional
+    Each wheel's speed relative to the body [rad/s], in the order of the gyrostat's wheels (None: none; a run
+    checks one per wheel).
+scalar_first : bool, default False
+    Read q_WB as (w, x, y, z).
+
+Raises
+------
+ValueError
+    q_WB farther than 1e-6 from unit norm, wheel_speeds not 1-D or not finite, a field of another shape, or a
+    quantity of another dimension (the message names it).
+
+See Also
+--------
+Gyrostat, Wheel, simulate
+
+Examples
+--------
+>>> rd.GyrostatState(w_B=[0, 0, 0.1], wheel_speeds=[100.0]).wheel_speeds
+array([100.])
+)doc");
   cls.def(py::init([](py::handle p_W, py::handle q_WB, py::handle v_W, py::handle w_B, py::handle wheel_speeds,
                       py::handle scalar_first) {
             const bool wxyz = py_io::as_bool(scalar_first, "scalar_first");
@@ -215,7 +286,7 @@ void bind_gyrostat_state(py::module_& m) {
       .def_property(
           "p_W", [](const GyrostatState& s) { return py_io::read_only(s.p_W); },
           [](GyrostatState& s, py::handle v) { s.p_W = py_io::as_vector3(py_io::in_si(v, "m", "p_W"), "p_W"); },
-          "(3,) centre of mass position in W [m]")
+          "Centre of mass position p_W in W, shape (3,) [m].")
       .def_property(
           "q_WB",
           [](const GyrostatState& s) {
@@ -224,19 +295,20 @@ void bind_gyrostat_state(py::module_& m) {
             return q;
           },
           [](GyrostatState& s, py::handle v) { s.q_WB = as_unit_quaternion(v, "q_WB"); },
-          "(4,) attitude (x, y, z, w), B to W; set from (x, y, z, w), normalised (ValueError beyond 1e-6 of unit norm)")
+          "Attitude q_WB (B to W), shape (4,), (x, y, z, w); set from (x, y, z, w), normalised (ValueError beyond "
+          "1e-6 of unit norm).")
       .def_property(
           "v_W", [](const GyrostatState& s) { return py_io::read_only(s.v_W); },
           [](GyrostatState& s, py::handle v) { s.v_W = py_io::as_vector3(py_io::in_si(v, "m/s", "v_W"), "v_W"); },
-          "(3,) centre of mass velocity in W [m/s]")
+          "Centre of mass velocity v_W in W, shape (3,) [m/s].")
       .def_property(
           "w_B", [](const GyrostatState& s) { return py_io::read_only(s.w_B); },
           [](GyrostatState& s, py::handle v) { s.w_B = py_io::as_vector3(py_io::in_si(v, "rad/s", "w_B"), "w_B"); },
-          "(3,) angular velocity of B in W, expressed in B [rad/s]")
+          "Angular velocity w_B of B in W, expressed in B, shape (3,) [rad/s].")
       .def_property(
           "wheel_speeds", [](const GyrostatState& s) { return py_io::read_only(s.wheel_speeds); },
           [](GyrostatState& s, py::handle v) { s.wheel_speeds = as_wheel_speeds(v); },
-          "(nw,) each wheel's speed relative to the body [rad/s]")
+          "Each wheel's speed relative to the body, shape (nw,) [rad/s].")
       .def("__repr__",
            [](const GyrostatState& s) {
              return repr_call("GyrostatState", {{"p_W", list_of(s.p_W)},

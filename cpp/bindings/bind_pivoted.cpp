@@ -92,32 +92,64 @@ PivotedBody make_pivoted_body(py::handle body, py::handle p_OC_B, py::handle p_W
 void bind_pivoted_body(py::module_& m) {
   py::class_<PivotedBody> cls(
       m, "PivotedBody",
-      "A rigid body pinned at a point O fixed in the scene frame W (3 rotational DOF): the heavy top, the gyroscope.\n"
-      "  PivotedBody(body, p_OC_B, p_WO=(0, 0, 0))\n"
-      "body: a RigidBody (mass [kg], inertia_com [kg m^2] about the centre of mass C in B); p_OC_B (3,): C relative to "
-      "O, in B [m] (zero allowed: the free rotation about C); p_WO (3,): O in W [m]; each a float array or a pint "
-      "quantity. B is the body frame at C as for RigidBody; C is at p_WO + R_WB p_OC_B. Euler's law is written about "
-      "O (Craig, \"Rigid Body Dynamics\" slides: M_O = dH_O/dt) with inertia_O = I_C + m (|c|^2 1 - c c^T), the "
-      "parallel-axis theorem with the products of inertia. digits_lost tells how many decimal digits of I_C the "
-      "rounding of inertia_O loses (the compile of a scene warns above 6); ValueError naming p_OC_B beyond 15 digits "
-      "lost (m |c|^2 > 1e15 times the smallest moment of I_C: inertia_O's moment about the axis through O and C, I_C's "
-      "about it, is then rounding noise) or when inertia_O is no longer positive definite in double precision. "
-      "Immutable; pickles; == compares body, p_OC_B and p_WO.");
+          "A rigid body pinned at a point O fixed in the scene frame W (3 DOF): the heavy top, the gyroscope.\n"
+          R"doc(
+B is the body frame at the centre of mass C, as for RigidBody; C is at p_WO + R_WB p_OC_B. Euler's law is
+written about O (K. Craig, "Rigid Body Dynamics" slides: M_O = dH_O/dt) with
+inertia_O = I_C + m (|c|^2 1 - c c^T), c = p_OC_B, the parallel-axis theorem with the products of inertia.
+digits_lost tells how many decimal digits of I_C the rounding of inertia_O loses (the compile of a scene warns
+above 6). Its state is a PivotedBodyState. Immutable; pickles; == compares body, p_OC_B and p_WO.
+
+Parameters
+----------
+body : RigidBody
+    Mass [kg] and inertia_com [kg m^2] about the centre of mass C, in B.
+p_OC_B : array_like, shape (3,), or pint.Quantity
+    C relative to O, in B [m] (zero allowed: the free rotation about C).
+p_WO : array_like, shape (3,), or pint.Quantity, optional
+    O in W [m] (None: the origin).
+
+Raises
+------
+TypeError
+    body not a RigidBody.
+ValueError
+    p_OC_B beyond 15 digits lost (m |c|^2 > 1e15 times the smallest moment of I_C: inertia_O's moment about the
+    axis through O and C, I_C's about it, is then rounding noise), or inertia_O no longer positive definite in
+    double precision (the message names p_OC_B); a field of another shape or dimension.
+
+See Also
+--------
+PivotedBodyState, PivotedAcceleration, PivotedTorque, PivotedPlanarBody, forward_dynamics, simulate
+
+Examples
+--------
+A top of 1 kg, its centre of mass 0.5 m up its axis: the parallel-axis theorem adds m |c|^2 = 0.25 kg m^2 to
+the transverse moments:
+
+>>> top = rd.PivotedBody(rd.RigidBody(1.0, [0.1, 0.1, 0.2]), p_OC_B=[0.0, 0.0, 0.5])
+>>> top.inertia_O.diagonal()
+array([0.35, 0.35, 0.2 ])
+>>> rd.forward_dynamics(top, rd.PivotedBodyState(), gravity=True).reaction_W  # upright at rest: the pivot holds m g
+array([0.  , 0.  , 9.81])
+)doc");
   cls.def(py::init(&make_pivoted_body), py::arg("body"), py::arg("p_OC_B"), py::arg("p_WO") = py::none())
-      .def_property_readonly("body", [](const PivotedBody& b) { return b.body(); }, "the RigidBody (a copy)")
-      .def_property_readonly("mass", &PivotedBody::mass, "mass [kg]")
+      .def_property_readonly("body", [](const PivotedBody& b) { return b.body(); },
+                             "The RigidBody: mass [kg] and inertia about C in B [kg m^2] (a copy).")
+      .def_property_readonly("mass", &PivotedBody::mass, "Mass m [kg].")
       .def_property_readonly("inertia_com", [](const PivotedBody& b) { return py_io::read_only(b.inertia_com()); },
-                             "(3, 3) inertia about the centre of mass C, in B [kg m^2]")
+                             "Inertia I_C about the centre of mass C, in B, shape (3, 3) [kg m^2].")
       .def_property_readonly("p_OC_B", [](const PivotedBody& b) { return py_io::read_only(b.p_OC_B()); },
-                             "(3,) the centre of mass C relative to the pivot O, in B [m]")
+                             "The centre of mass C relative to the pivot O, in B, shape (3,) [m].")
       .def_property_readonly("p_WO", [](const PivotedBody& b) { return py_io::read_only(b.p_WO()); },
-                             "(3,) the pivot O in the scene frame W [m]")
+                             "The pivot O in the scene frame W, shape (3,) [m].")
       .def_property_readonly("inertia_O", [](const PivotedBody& b) { return py_io::read_only(b.inertia_O()); },
-                             "(3, 3) inertia about O in B, I_C + m (|c|^2 1 - c c^T) [kg m^2]")
+                             "Inertia about O in B, I_C + m (|c|^2 1 - c c^T), shape (3, 3) [kg m^2].")
       .def_property_readonly("digits_lost", &PivotedBody::digits_lost,
-                             "decimal digits of I_C lost in inertia_O: max(0, log10(m |c|^2 / smallest moment of I_C)), at most 15")
+                             "Decimal digits of I_C lost in inertia_O, max(0, log10(m |c|^2 / smallest moment "
+                             "of I_C)), at most 15 (a float).")
       .def_property_readonly("euler_form", [](const PivotedBody& b) { return euler_form_name(b.euler_form()); },
-                             "the form of Euler's equations of inertia_O: 'spherical', 'principal' or 'full'")
+                             "Form of Euler's equations of inertia_O: 'spherical', 'principal' or 'full'.")
       .def("__repr__", &pivoted_body_repr)
       .def(py::pickle([](const PivotedBody& b) { return py::make_tuple(b.body(), list_of(b.p_OC_B()), list_of(b.p_WO())); },
                       [](const py::tuple& t) {
@@ -132,14 +164,41 @@ void bind_pivoted_body(py::module_& m) {
 
   py::class_<PivotedPlanarBody> planar(
       m, "PivotedPlanarBody",
-      "The compound pendulum: a planar body pinned at a point O fixed in the scene frame W, turning about W's z axis "
-      "(1 DOF, R_WB = Rz(theta)).\n"
-      "  PivotedPlanarBody(mass, inertia_zz, p_OC_B, p_WO=(0, 0))\n"
-      "mass [kg] > 0; inertia_zz [kg m^2] > 0 about the z axis through the centre of mass C; p_OC_B (2,): C relative "
-      "to O in B's xy plane [m] (zero allowed); p_WO (2,): O in W's xy plane [m]; each a float or a pint quantity. "
-      "Plane kinetics about O: inertia_O_zz alpha = tau_O, inertia_O_zz = inertia_zz + m |c|^2 (Craig, \"Rigid Body "
-      "Dynamics\" slides); ValueError naming p_OC_B when inertia_O_zz exceeds the double range. Immutable; pickles; "
-      "== compares every field.");
+          "The compound pendulum: a planar body pinned at a point O fixed in the scene frame W (1 DOF).\n"
+          R"doc(
+It turns about W's z axis, R_WB = Rz(theta). Plane kinetics about O (K. Craig, "Rigid Body Dynamics" slides):
+inertia_O_zz alpha = tau_O, inertia_O_zz = inertia_zz + m |c|^2, c = p_OC_B. Its state is a
+PivotedPlanarBodyState; its gravity an in-plane vector. Immutable; pickles; == compares every field.
+
+Parameters
+----------
+mass : float or pint.Quantity
+    Mass m [kg], > 0.
+inertia_zz : float or pint.Quantity
+    Moment of inertia about the z axis through the centre of mass C [kg m^2], > 0.
+p_OC_B : array_like, shape (2,), or pint.Quantity
+    C relative to O in B's xy plane [m] (zero allowed).
+p_WO : array_like, shape (2,), or pint.Quantity, optional
+    O in W's xy plane [m] (None: the origin).
+
+Raises
+------
+ValueError
+    mass or inertia_zz not a finite number > 0; inertia_O_zz beyond the double range (the message names
+    p_OC_B); a field of another shape or dimension.
+
+See Also
+--------
+PivotedPlanarBodyState, PivotedPlanarAcceleration, PivotedPlanarTorque, PivotedBody, simulate
+
+Examples
+--------
+A uniform rod of 2 m and 3 kg pinned at one end: inertia_O_zz = m L^2 / 3 = 4 kg m^2.
+
+>>> rod = rd.PivotedPlanarBody(3.0, 3.0 * 2.0**2 / 12, p_OC_B=[1.0, 0.0])
+>>> rod.inertia_O_zz
+4.0
+)doc");
   planar
       .def(py::init([](py::handle mass, py::handle inertia_zz, py::handle p_OC_B, py::handle p_WO) {
              return PivotedPlanarBody(py_io::as_scalar(py_io::in_si(mass, "kg", "mass"), "mass"),
@@ -148,14 +207,15 @@ void bind_pivoted_body(py::module_& m) {
                                       py_io::as_vector2_or_zero(py_io::in_si(p_WO, "m", "p_WO"), "p_WO"));
            }),
            py::arg("mass"), py::arg("inertia_zz"), py::arg("p_OC_B"), py::arg("p_WO") = py::none())
-      .def_property_readonly("mass", &PivotedPlanarBody::mass, "mass [kg]")
-      .def_property_readonly("inertia_zz", &PivotedPlanarBody::inertia_zz, "moment of inertia about z through C [kg m^2]")
+      .def_property_readonly("mass", &PivotedPlanarBody::mass, "Mass m [kg].")
+      .def_property_readonly("inertia_zz", &PivotedPlanarBody::inertia_zz,
+                             "Moment of inertia about the z axis through C [kg m^2].")
       .def_property_readonly("inertia_O_zz", &PivotedPlanarBody::inertia_O_zz,
-                             "moment of inertia about z through O, inertia_zz + m |c|^2 [kg m^2]")
+                             "Moment of inertia about the z axis through O, inertia_zz + m |c|^2 [kg m^2].")
       .def_property_readonly("p_OC_B", [](const PivotedPlanarBody& b) { return py_io::read_only(b.p_OC_B()); },
-                             "(2,) C relative to O in B's xy plane [m]")
+                             "C relative to O in B's xy plane, shape (2,) [m].")
       .def_property_readonly("p_WO", [](const PivotedPlanarBody& b) { return py_io::read_only(b.p_WO()); },
-                             "(2,) the pivot O in W's xy plane [m]")
+                             "The pivot O in W's xy plane, shape (2,) [m].")
       .def("__repr__",
            [](const PivotedPlanarBody& b) {
              return repr_call("PivotedPlanarBody", {{"mass", py::float_(b.mass())},
@@ -181,11 +241,40 @@ void bind_pivoted_body(py::module_& m) {
 
 void bind_pivoted_states(py::module_& m) {
   py::class_<PivotedBodyState> state(
-      m, "PivotedBodyState",
-      "State of a PivotedBody: q_WB (4,) unit quaternion B to the scene frame W, (x, y, z, w), or (w, x, y, z) with "
-      "scalar_first=True (None: identity); w_B (3,) angular velocity of B relative to W, in B [rad/s] (None: zero; "
-      "floats or a pint quantity). q_WB is normalised; ValueError if | |q| - 1 | > 1e-6. Fields are assigned whole "
-      "(s.w_B = [...], checked as here); their arrays are read-only.");
+      m, "PivotedBodyState", R"doc(State of a PivotedBody: its attitude and angular velocity.
+
+Fields are assigned whole (``s.w_B = [...]``, converted and checked as the constructor does); the arrays read are
+read-only copies. Pickles; == compares every field.
+
+Parameters
+----------
+q_WB : array_like, shape (4,), optional
+    Unit quaternion B to the scene frame W, (x, y, z, w), or (w, x, y, z) with `scalar_first` (None:
+    identity); normalised.
+w_B : array_like, shape (3,), or pint.Quantity, optional
+    Angular velocity of B relative to W, in B [rad/s] (None: zero).
+scalar_first : bool, default False
+    Read q_WB as (w, x, y, z).
+
+Raises
+------
+ValueError
+    q_WB farther than 1e-6 from unit norm (| |q| - 1 | > 1e-6), a field of another shape, or a quantity of
+    another dimension (the message names it).
+
+See Also
+--------
+PivotedBody, simulate, step
+
+Examples
+--------
+A top spinning at 10 rad/s about its upright axis stays upright; one step of 0.01 s turns it 0.1 rad:
+
+>>> top = rd.PivotedBody(rd.RigidBody(1.0, [0.1, 0.1, 0.2]), p_OC_B=[0.0, 0.0, 0.5])
+>>> s = rd.step(top, rd.PivotedBodyState(w_B=[0.0, 0.0, 10.0]), 0.01, gravity=True)
+>>> rd.quat_to_rotvec(s.q_WB).round(6), s.w_B
+(array([0. , 0. , 0.1]), array([ 0.,  0., 10.]))
+)doc");
   state
       .def(py::init([](py::handle q_WB, py::handle w_B, py::handle scalar_first) {
              const bool wxyz = py_io::as_bool(scalar_first, "scalar_first");
@@ -196,17 +285,34 @@ void bind_pivoted_states(py::module_& m) {
       .def_property(
           "q_WB", [](const PivotedBodyState& s) { return read_only_quaternion(s.q_WB, false); },
           [](PivotedBodyState& s, py::handle v) { s.q_WB = as_unit_quaternion(v, "q_WB", false); },
-          "(4,) attitude (x, y, z, w), B to W; set from (x, y, z, w), normalised (ValueError beyond 1e-6 of unit norm)")
+          "Attitude q_WB (B to W), shape (4,), (x, y, z, w); set from (x, y, z, w), normalised (ValueError beyond "
+          "1e-6 of unit norm).")
       .def(
           "quaternion",
           [](const PivotedBodyState& s, py::handle scalar_first) {
             return read_only_quaternion(s.q_WB, py_io::as_bool(scalar_first, "scalar_first"));
           },
-          py::arg("scalar_first") = false, "q_WB (4,) as (x, y, z, w), or (w, x, y, z) with scalar_first=True")
+          py::arg("scalar_first") = false, R"doc(The attitude q_WB (B to W) in the order asked.
+
+Parameters
+----------
+scalar_first : bool, default False
+    Return (w, x, y, z) instead of (x, y, z, w).
+
+Returns
+-------
+ndarray, shape (4,)
+    q_WB, read-only.
+
+Examples
+--------
+>>> rd.PivotedBodyState().quaternion(scalar_first=True)
+array([1., 0., 0., 0.])
+)doc")
       .def_property(
           "w_B", [](const PivotedBodyState& s) { return py_io::read_only(s.w_B); },
           [](PivotedBodyState& s, py::handle v) { s.w_B = py_io::as_vector3(py_io::in_si(v, "rad/s", "w_B"), "w_B"); },
-          "(3,) angular velocity of B relative to W, expressed in B [rad/s]")
+          "Angular velocity w_B of B relative to W, expressed in B, shape (3,) [rad/s].")
       .def("__repr__",
            [](const PivotedBodyState& s) {
              return repr_call("PivotedBodyState",
@@ -224,9 +330,35 @@ void bind_pivoted_states(py::module_& m) {
   });
 
   py::class_<PivotedPlanarBodyState> planar(
-      m, "PivotedPlanarBodyState",
-      "State of a PivotedPlanarBody: theta [rad], the angle of B about z (R_WB = Rz(theta)), and omega = d theta/dt "
-      "[rad/s]; each a float or a pint quantity. Fields are assignable (checked as here).");
+      m, "PivotedPlanarBodyState", R"doc(State of a PivotedPlanarBody: its angle and angular velocity about z.
+
+Fields are assignable (converted and checked as the constructor does). Pickles; == compares every field.
+
+Parameters
+----------
+theta : float or pint.Quantity, default 0
+    Angle of B about z [rad] (R_WB = Rz(theta)).
+omega : float or pint.Quantity, default 0
+    d theta/dt [rad/s].
+
+Raises
+------
+ValueError
+    A value that is not a number, or a quantity of another dimension (the message names it).
+
+See Also
+--------
+PivotedPlanarBody, simulate, step
+
+Examples
+--------
+A pendulum released horizontal keeps its energy (rk4's drift is O(dt^4): below 1e-9 J here at dt = 1 ms):
+
+>>> rod = rd.PivotedPlanarBody(3.0, 1.0, p_OC_B=[1.0, 0.0])
+>>> r = rd.simulate(rod, rd.PivotedPlanarBodyState(theta=0.0), 0.001, steps=1000, gravity=[0.0, -9.81])
+>>> bool(abs(r.total_energy - r.total_energy[0]).max() < 1e-9)
+True
+)doc");
   planar
       .def(py::init([](py::handle theta, py::handle omega) {
              return PivotedPlanarBodyState{py_io::as_scalar(py_io::in_si(theta, "rad", "theta"), "theta"),
@@ -236,11 +368,11 @@ void bind_pivoted_states(py::module_& m) {
       .def_property(
           "theta", [](const PivotedPlanarBodyState& s) { return s.theta; },
           [](PivotedPlanarBodyState& s, py::handle v) { s.theta = py_io::as_scalar(py_io::in_si(v, "rad", "theta"), "theta"); },
-          "angle of B about z [rad]")
+          "Angle theta of B about z [rad], R_WB = Rz(theta).")
       .def_property(
           "omega", [](const PivotedPlanarBodyState& s) { return s.omega; },
           [](PivotedPlanarBodyState& s, py::handle v) { s.omega = py_io::as_scalar(py_io::in_si(v, "rad/s", "omega"), "omega"); },
-          "angular velocity about z [rad/s]")
+          "Angular velocity omega = d theta/dt about z [rad/s].")
       .def("__repr__",
            [](const PivotedPlanarBodyState& s) {
              return repr_call("PivotedPlanarBodyState", {{"theta", py::float_(s.theta)}, {"omega", py::float_(s.omega)}});
@@ -325,33 +457,124 @@ py::object checked_pair(const T& r, A T::*a, B T::*b, const char* quantity) {
 }
 
 void bind_pivoted_results(py::module_& m) {
-  bind_result_pair(m, "PivotedAcceleration",
-                   "forward_dynamics' result for a PivotedBody: alpha_B (3,) angular acceleration in B [rad/s^2] and "
-                   "reaction_W (3,) the pivot's force on the body in W [N] (unpacks as alpha_B, reaction_W = ...). "
-                   "Immutable.",
-                   &PivotedAcceleration::alpha_B, Member{"alpha_B", "rad/s^2", "(3,) angular acceleration in B [rad/s^2]"},
-                   &PivotedAcceleration::reaction_W, Member{"reaction_W", "N", "(3,) the pivot's force on the body, in W [N]"});
-  bind_result_pair(m, "PivotedTorque",
-                   "inverse_dynamics' result for a PivotedBody: tau_O_B (3,) the torque about O the motion needs besides "
-                   "gravity, in B [N m], and reaction_W (3,) the pivot's force on the body in W [N] (unpacks as "
-                   "tau_O_B, reaction_W = ...). Immutable.",
-                   &PivotedTorque::tau_O_B, Member{"tau_O_B", "N*m", "(3,) torque about the pivot O, in B [N m]"},
-                   &PivotedTorque::reaction_W, Member{"reaction_W", "N", "(3,) the pivot's force on the body, in W [N]"});
-  bind_result_pair(m, "PivotedPlanarAcceleration",
-                   "forward_dynamics' result for a PivotedPlanarBody: alpha [rad/s^2] about z and reaction_W (3,) the "
-                   "pivot's force on the body in W [N] (its z part is what the pin and the plane hold; unpacks as "
-                   "alpha, reaction_W = ...). Immutable.",
-                   &PivotedPlanarAcceleration::alpha, Member{"alpha", "rad/s^2", "angular acceleration about z [rad/s^2]"},
-                   &PivotedPlanarAcceleration::reaction_W,
-                   Member{"reaction_W", "N", "(3,) the pivot's force on the body, in W [N]"});
-  bind_result_pair(m, "PivotedPlanarTorque",
-                   "inverse_dynamics' result for a PivotedPlanarBody: tau_O [N m] the torque about z the motion needs "
-                   "besides gravity, and reaction_W (3,) the pivot's force on the body in W [N] (unpacks as tau_O, "
-                   "reaction_W = ...). Immutable.",
-                   &PivotedPlanarTorque::tau_O, Member{"tau_O", "N*m", "torque about the z axis through O [N m]"},
-                   &PivotedPlanarTorque::reaction_W, Member{"reaction_W", "N", "(3,) the pivot's force on the body, in W [N]"});
-}
+  bind_result_pair(m, "PivotedAcceleration", R"doc(forward_dynamics' result for a PivotedBody.
 
+The angular acceleration in B and the pivot's force on the body in W; unpacks as
+``alpha_B, reaction_W = ...``. Immutable; pickles.
+
+Parameters
+----------
+alpha_B : array_like, shape (3,), or pint.Quantity, optional
+    Angular acceleration of B, in B [rad/s^2] (None: zero).
+reaction_W : array_like, shape (3,), or pint.Quantity, optional
+    The pivot's force on the body, in W [N] (None: zero).
+
+See Also
+--------
+forward_dynamics, PivotedBody, PivotedTorque
+
+Examples
+--------
+A top of 1 kg held horizontal, its centre of mass 0.5 m from the pivot: alpha = m g |c| / I_O = 14.01 rad/s^2:
+
+>>> top = rd.PivotedBody(rd.RigidBody(1.0, [0.1, 0.1, 0.2]), p_OC_B=[0.0, 0.0, 0.5])
+>>> level = rd.PivotedBodyState(q_WB=rd.rotvec_to_quat([0.0, np.pi / 2, 0.0]))
+>>> alpha_B, reaction_W = rd.forward_dynamics(top, level, gravity=True)
+>>> alpha_B.round(6)
+array([ 0.      , 14.014286,  0.      ])
+)doc",
+                   &PivotedAcceleration::alpha_B,
+                   Member{"alpha_B", "rad/s^2", "Angular acceleration alpha_B of B, in B, shape (3,) [rad/s^2]."},
+                   &PivotedAcceleration::reaction_W,
+                   Member{"reaction_W", "N", "The pivot's force on the body, in W, shape (3,) [N]."});
+  bind_result_pair(m, "PivotedTorque", R"doc(inverse_dynamics' result for a PivotedBody.
+
+The torque about the pivot O the motion needs besides gravity, in B, and the pivot's force on the body in W;
+unpacks as ``tau_O_B, reaction_W = ...``. Immutable; pickles.
+
+Parameters
+----------
+tau_O_B : array_like, shape (3,), or pint.Quantity, optional
+    Torque about O, in B [N m] (None: zero).
+reaction_W : array_like, shape (3,), or pint.Quantity, optional
+    The pivot's force on the body, in W [N] (None: zero).
+
+See Also
+--------
+inverse_dynamics, PivotedBody, PivotedAcceleration
+
+Examples
+--------
+At rest upright, the pivot alone holds the top's weight:
+
+>>> top = rd.PivotedBody(rd.RigidBody(1.0, [0.1, 0.1, 0.2]), p_OC_B=[0.0, 0.0, 0.5])
+>>> rd.inverse_dynamics(top, rd.PivotedBodyState(), alpha_B=[0, 0, 0], gravity=True)
+PivotedTorque(tau_O_B=[0.0, 0.0, 0.0], reaction_W=[0.0, 0.0, 9.81])
+)doc",
+                   &PivotedTorque::tau_O_B,
+                   Member{"tau_O_B", "N*m", "Torque tau_O_B about the pivot O, in B, shape (3,) [N m]."},
+                   &PivotedTorque::reaction_W,
+                   Member{"reaction_W", "N", "The pivot's force on the body, in W, shape (3,) [N]."});
+  bind_result_pair(m, "PivotedPlanarAcceleration", R"doc(forward_dynamics' result for a PivotedPlanarBody.
+
+The angular acceleration about z and the pivot's force on the body in W (its z part is what the pin and the
+plane hold); unpacks as ``alpha, reaction_W = ...``. Immutable; pickles.
+
+Parameters
+----------
+alpha : float or pint.Quantity, default 0
+    Angular acceleration about z [rad/s^2].
+reaction_W : array_like, shape (3,), or pint.Quantity, optional
+    The pivot's force on the body, in W [N] (None: zero).
+
+See Also
+--------
+forward_dynamics, PivotedPlanarBody, PivotedPlanarTorque
+
+Examples
+--------
+A rod of L = 2 m and 3 kg pinned at one end, released horizontal: alpha = -3 g / (2 L), and the pin carries
+m g / 4 (the centre of mass accelerates down at 3 g / 4):
+
+>>> rod = rd.PivotedPlanarBody(3.0, 3.0 * 2.0**2 / 12, p_OC_B=[1.0, 0.0])
+>>> alpha, reaction_W = rd.forward_dynamics(rod, rd.PivotedPlanarBodyState(), gravity=[0.0, -9.81])
+>>> print(f"{alpha:.6f} {reaction_W[1]:.6f} {3.0 * 9.81 / 4:.6f}")
+-7.357500 7.357500 7.357500
+)doc",
+                   &PivotedPlanarAcceleration::alpha,
+                   Member{"alpha", "rad/s^2", "Angular acceleration alpha about z [rad/s^2]."},
+                   &PivotedPlanarAcceleration::reaction_W,
+                   Member{"reaction_W", "N", "The pivot's force on the body, in W, shape (3,) [N]."});
+  bind_result_pair(m, "PivotedPlanarTorque", R"doc(inverse_dynamics' result for a PivotedPlanarBody.
+
+The torque about the z axis through the pivot O the motion needs besides gravity, and the pivot's force on the
+body in W; unpacks as ``tau_O, reaction_W = ...``. Immutable; pickles.
+
+Parameters
+----------
+tau_O : float or pint.Quantity, default 0
+    Torque about the z axis through O [N m].
+reaction_W : array_like, shape (3,), or pint.Quantity, optional
+    The pivot's force on the body, in W [N] (None: zero).
+
+See Also
+--------
+inverse_dynamics, PivotedPlanarBody, PivotedPlanarAcceleration
+
+Examples
+--------
+Holding the rod horizontal takes the torque m g L / 2 about the pin:
+
+>>> rod = rd.PivotedPlanarBody(3.0, 3.0 * 2.0**2 / 12, p_OC_B=[1.0, 0.0])
+>>> tau_O, reaction_W = rd.inverse_dynamics(rod, rd.PivotedPlanarBodyState(), alpha_B=0.0, gravity=[0.0, -9.81])
+>>> print(f"{tau_O:.6f} {3.0 * 9.81 * 1.0:.6f}")
+29.430000 29.430000
+)doc",
+                   &PivotedPlanarTorque::tau_O,
+                   Member{"tau_O", "N*m", "Torque tau_O about the z axis through O [N m]."},
+                   &PivotedPlanarTorque::reaction_W,
+                   Member{"reaction_W", "N", "The pivot's force on the body, in W, shape (3,) [N]."});
+}
 }  // namespace
 
 // ------------------------------------------------------------ the seams (pivoted.hpp)
@@ -360,19 +583,16 @@ bool is_pivoted(py::handle body) {
   return py::isinstance<PivotedBody>(body) || py::isinstance<PivotedPlanarBody>(body);
 }
 
+// The lines of forward_dynamics' and inverse_dynamics' docstrings on the pivoted bodies (bind_bodies.cpp).
 const char* const pivoted_forward_dynamics_doc =
-    "PivotedBody (state a PivotedBodyState): force (3,) [N] at point (p_CP (3,) [m] from the centre of mass; None = "
-    "the centre of mass) and torque (3,) [N m], in `frame`, gravity (3,) [m/s^2] in W; returns a PivotedAcceleration "
-    "(alpha_B (3,) [rad/s^2] in B, reaction_W (3,) [N] the pivot's force in W; unpacks as alpha_B, reaction_W): Euler "
-    "about O, inertia_O alpha_B + w_B x inertia_O w_B = tau_O, and Newton for C, reaction = m a_C - f.\n"
-    "PivotedPlanarBody (state a PivotedPlanarBodyState): in-plane force (2,) [N] at point (2,) [m], torque [N m] "
-    "about z, gravity (2,) or (3,) in W's plane; returns a PivotedPlanarAcceleration (alpha [rad/s^2], reaction_W).";
+    "- PivotedBody: Euler about the pivot O, inertia_O alpha_B + w_B x inertia_O w_B = tau_O (in B), and Newton for\n"
+    "  the centre of mass C, reaction_W = m a_C - f_W - m g_W; `point` is p_CP from C.\n"
+    "- PivotedPlanarBody: inertia_O_zz alpha = tau_O about the z axis through O, and the reaction as for a\n"
+    "  PivotedBody.\n";
 const char* const pivoted_inverse_dynamics_doc =
-    "PivotedBody: alpha_B (3,) [rad/s^2] in B (a_W None: the pivot fixes it); returns a PivotedTorque: tau_O_B (3,) "
-    "[N m] the torque about O in B the motion needs besides gravity, and reaction_W (3,) [N] in W (unpacks as "
-    "tau_O_B, reaction_W). PivotedPlanarBody: alpha_B [rad/s^2] about z; returns a PivotedPlanarTorque (tau_O [N m], "
-    "reaction_W).";
-
+    "- PivotedBody: the torque about O in B the motion needs besides gravity, tau_O_B = inertia_O alpha_B +\n"
+    "  w_B x inertia_O w_B - p_OC_B x m g_B (g_B: gravity in B), and the pivot's reaction_W in W.\n"
+    "- PivotedPlanarBody: the torque tau_O about the z axis through O besides gravity, and reaction_W.\n";
 py::object pivoted_forward_dynamics_py(py::handle body, py::handle state, py::handle force, py::handle torque,
                                        py::handle point, py::handle frame_arg, py::handle gravity) {
   const Frame frame = as_frame(frame_arg);
