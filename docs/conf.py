@@ -46,7 +46,8 @@ extensions = [
     # its CDN: the pages render their equations offline, and the browser check sees them typeset
     "sphinx-mathjax-offline",
     "sphinx_gallery.gen_gallery",
-    # ```{plot} blocks (getting_started.md): the code shown runs at every build, its figure below it
+    # `.. plot::` (getting_started.md, in an ```{eval-rst} block: MyST cannot run it directly): the code
+    # shown runs at every build, its figure below it
     "matplotlib.sphinxext.plot_directive",
 ]
 
@@ -110,7 +111,7 @@ sphinx_gallery_conf = {
     "write_computation_times": False,
 }
 
-# ---- ```{plot} blocks: the source shown, then its figure as one PNG; no links to download the source or
+# ---- `.. plot::` directives: the source shown, then its figure as one PNG; no links to download the source or
 # other formats
 plot_include_source = True
 plot_html_show_source_link = False

@@ -4,7 +4,8 @@ say what the code does:
 - every command block marked `% same as README.md` (a MyST comment line right above the fence) is
   the README's, literally (whitespace aside), and the README's two set-up commands are on the
   getting-started page;
-- every ```python block (and ```{plot} block: the code shown with its figure) of docs/index.md,
+- every ```python block (and matplotlib's `.. plot::` directive in an ```{eval-rst} block: the code
+  shown with its figure, made by the build) of docs/index.md,
   docs/getting_started.md, docs/conventions.md and docs/guide/*.md runs as written: the blocks of a page
   in order, in one namespace (as a reader runs them in one session), in a scratch folder, each with the
   asserts of what the text claims (their bounds are argued next to them on the page); a ```text block
@@ -21,6 +22,7 @@ import math
 import pathlib
 import re
 import sys
+import textwrap
 
 import pytest
 
@@ -41,17 +43,18 @@ def fenced_blocks(text: str, language: str) -> list[str]:
 
 
 def runnable_blocks(text: str) -> list[tuple[str, str | None]]:
-    """The ```python and ```{plot} blocks of a Markdown text in order (a {plot} block's option lines
-    dropped), each with what it prints: the body of the ```text block right below a PRINTED_MARK line
-    that follows it, or None where no such block does."""
+    """The ```python blocks and the code of the `.. plot::` directives in ```{eval-rst} blocks of a Markdown
+    text, in order, each with what it prints: the body of the ```text block right below a PRINTED_MARK
+    line that follows it, or None where no such block does."""
     blocks: list[tuple[str, str | None]] = []
     end = 0
     for fence in re.finditer(r"^```([^\n]*)\n(.*?)^```", text, flags=re.DOTALL | re.MULTILINE):
         info, body = fence.group(1).strip(), fence.group(2)
         line_above = text[end:fence.start()].rstrip("\n").rsplit("\n", 1)[-1]
         end = fence.end()
-        if info in ("python", "{plot}"):
-            blocks.append((re.sub(r"\A(?::[\w-]+:.*\n)+\n?", "", body), None))
+        plot = re.fullmatch(r"\.\. plot::\n(?:   :[\w-]+:[^\n]*\n)*\n?(.*)", body, flags=re.DOTALL)
+        if info == "python" or (info == "{eval-rst}" and plot):
+            blocks.append((body if info == "python" else textwrap.dedent(plot.group(1)), None))
         elif line_above == PRINTED_MARK:
             assert info == "text" and blocks and blocks[-1][1] is None, \
                 f"{PRINTED_MARK!r} above a ```{info} block that follows no runnable block, or a second one"
@@ -94,7 +97,7 @@ def test_every_topic_page_has_python_blocks() -> None:
 def test_python_blocks_run_as_written(page: pathlib.Path, tmp_path: pathlib.Path,
                                       monkeypatch: pytest.MonkeyPatch) -> None:
     blocks = runnable_blocks(page.read_text())
-    assert blocks, f"{page.name}: no ```python or ```{{plot}} block"
+    assert blocks, f"{page.name}: no ```python block or plot directive"
     monkeypatch.chdir(tmp_path)  # files the blocks write (plots) go to a scratch folder
     monkeypatch.setenv("MPLBACKEND", "Agg")
     namespace: dict[str, object] = {"__name__": "__docs__"}
@@ -110,8 +113,10 @@ def test_python_blocks_run_as_written(page: pathlib.Path, tmp_path: pathlib.Path
 
 
 def test_printed_output_is_marked_below_a_runnable_block() -> None:
-    text = "```python\nprint(1)\n```\n\n" + PRINTED_MARK + "\n```text\n1\n```\n\n```{plot}\n:context:\n\nx = 2\n```\n"
-    assert runnable_blocks(text) == [("print(1)\n", "1\n"), ("x = 2\n", None)]
+    text = ("```python\nprint(1)\n```\n\n" + PRINTED_MARK + "\n```text\n1\n```\n\n"
+            "```{eval-rst}\n.. plot::\n   :context:\n\n   x = 2\n   if x:\n       y = 3\n```\n"
+            "```{eval-rst}\n.. note:: not code\n```\n")
+    assert runnable_blocks(text) == [("print(1)\n", "1\n"), ("x = 2\nif x:\n    y = 3\n", None)]
     with pytest.raises(AssertionError, match="follows no runnable block"):
         runnable_blocks(PRINTED_MARK + "\n```text\n1\n```\n")
 
