@@ -48,6 +48,9 @@ extensions = [
     # its CDN: the pages render their equations offline, and the browser check sees them typeset
     "sphinx-mathjax-offline",
     "sphinx_gallery.gen_gallery",
+    # `.. plot::` (getting_started.md, in an ```{eval-rst} block: MyST cannot run it directly): the code
+    # shown runs at every build, its figure below it
+    "matplotlib.sphinxext.plot_directive",
 ]
 
 source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
@@ -111,6 +114,13 @@ sphinx_gallery_conf = {
     # offline, and in the browser check)
     "write_computation_times": False,
 }
+
+# ---- `.. plot::` directives: the source shown, then its figure as one PNG; no links to download the source or
+# other formats
+plot_include_source = True
+plot_html_show_source_link = False
+plot_html_show_formats = False
+plot_formats = [("png", 120)]
 
 # ---- HTML
 html_theme = "furo"

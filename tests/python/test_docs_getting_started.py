@@ -4,18 +4,25 @@ say what the code does:
 - every command block marked `% same as README.md` (a MyST comment line right above the fence) is
   the README's, literally (whitespace aside), and the README's two set-up commands are on the
   getting-started page;
-- every ```python block of docs/getting_started.md and docs/guide/*.md runs as written: the blocks of
-  a page in order, in one namespace (as a reader runs them in one session), in a scratch folder, each
-  with the asserts of what the text claims (their bounds are argued next to them on the page);
+- every ```python block (and matplotlib's `.. plot::` directive in an ```{eval-rst} block: the code
+  shown with its figure, made by the build) of docs/index.md,
+  docs/getting_started.md, docs/conventions.md and docs/guide/*.md runs as written: the blocks of a page
+  in order, in one namespace (as a reader runs them in one session), in a scratch folder, each with the
+  asserts of what the text claims (their bounds are argued next to them on the page); a ```text block
+  right below a `% printed by the block above` line is what the block above it prints, literally;
 - the methods table of docs/guide/models_integrators.md is rigiddyn.methods();
 - docs/cpp.md describes every layer folder of cpp/include/rigiddyn/ and includes files that exist.
 """
 
 from __future__ import annotations
 
+import contextlib
+import io
 import math
 import pathlib
 import re
+import sys
+import textwrap
 
 import pytest
 
@@ -24,12 +31,35 @@ DOCS = ROOT / "docs"
 README = (ROOT / "README.md").read_text()
 GUIDE_PAGES = sorted((DOCS / "guide").glob("*.md"))
 PROSE_PAGES = [DOCS / "getting_started.md", *GUIDE_PAGES]
+RUN_PAGES = [DOCS / "index.md", DOCS / "getting_started.md", DOCS / "conventions.md",
+             *[p for p in GUIDE_PAGES if p.name != "index.md"]]
 README_MARK = "% same as README.md"
+PRINTED_MARK = "% printed by the block above"
 
 
 def fenced_blocks(text: str, language: str) -> list[str]:
     """The bodies of the ```<language> blocks of a Markdown text, in order."""
     return re.findall(rf"^```{language}\n(.*?)^```", text, flags=re.DOTALL | re.MULTILINE)
+
+
+def runnable_blocks(text: str) -> list[tuple[str, str | None]]:
+    """The ```python blocks and the code of the `.. plot::` directives in ```{eval-rst} blocks of a Markdown
+    text, in order, each with what it prints: the body of the ```text block right below a PRINTED_MARK
+    line that follows it, or None where no such block does."""
+    blocks: list[tuple[str, str | None]] = []
+    end = 0
+    for fence in re.finditer(r"^```([^\n]*)\n(.*?)^```", text, flags=re.DOTALL | re.MULTILINE):
+        info, body = fence.group(1).strip(), fence.group(2)
+        line_above = text[end:fence.start()].rstrip("\n").rsplit("\n", 1)[-1]
+        end = fence.end()
+        plot = re.fullmatch(r"\.\. plot::\n(?:   :[\w-]+:[^\n]*\n)*\n?(.*)", body, flags=re.DOTALL)
+        if info == "python" or (info == "{eval-rst}" and plot):
+            blocks.append((body if info == "python" else textwrap.dedent(plot.group(1)), None))
+        elif line_above == PRINTED_MARK:
+            assert info == "text" and blocks and blocks[-1][1] is None, \
+                f"{PRINTED_MARK!r} above a ```{info} block that follows no runnable block, or a second one"
+            blocks[-1] = (blocks[-1][0], body)
+    return blocks
 
 
 def marked_blocks(text: str) -> list[str]:
@@ -63,16 +93,32 @@ def test_every_topic_page_has_python_blocks() -> None:
     assert [p.name for p in PROSE_PAGES if not fenced_blocks(p.read_text(), "python")] == ["index.md"]
 
 
-@pytest.mark.parametrize("page", [p for p in PROSE_PAGES if p.name != "index.md"],
-                         ids=lambda p: str(p.relative_to(DOCS)))
+@pytest.mark.parametrize("page", RUN_PAGES, ids=lambda p: str(p.relative_to(DOCS)))
 def test_python_blocks_run_as_written(page: pathlib.Path, tmp_path: pathlib.Path,
                                       monkeypatch: pytest.MonkeyPatch) -> None:
-    blocks = fenced_blocks(page.read_text(), "python")
+    blocks = runnable_blocks(page.read_text())
+    assert blocks, f"{page.name}: no ```python block or plot directive"
     monkeypatch.chdir(tmp_path)  # files the blocks write (plots) go to a scratch folder
     monkeypatch.setenv("MPLBACKEND", "Agg")
     namespace: dict[str, object] = {"__name__": "__docs__"}
-    for i, block in enumerate(blocks):
-        exec(compile(block, f"{page.relative_to(DOCS)}, python block {i + 1}", "exec"), namespace)
+    for i, (block, printed) in enumerate(blocks):
+        out = io.StringIO()
+        with contextlib.redirect_stdout(out):
+            exec(compile(block, f"{page.relative_to(DOCS)}, python block {i + 1}", "exec"), namespace)
+        if printed is not None:
+            assert out.getvalue() == printed, f"{page.name}, block {i + 1} printed:\n{out.getvalue()}"
+    plt = sys.modules.get("matplotlib.pyplot")
+    if plt is not None:
+        plt.close("all")
+
+
+def test_printed_output_is_marked_below_a_runnable_block() -> None:
+    text = ("```python\nprint(1)\n```\n\n" + PRINTED_MARK + "\n```text\n1\n```\n\n"
+            "```{eval-rst}\n.. plot::\n   :context:\n\n   x = 2\n   if x:\n       y = 3\n```\n"
+            "```{eval-rst}\n.. note:: not code\n```\n")
+    assert runnable_blocks(text) == [("print(1)\n", "1\n"), ("x = 2\nif x:\n    y = 3\n", None)]
+    with pytest.raises(AssertionError, match="follows no runnable block"):
+        runnable_blocks(PRINTED_MARK + "\n```text\n1\n```\n")
 
 
 def _limit_text(limit: float) -> str:
