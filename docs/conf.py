@@ -76,6 +76,7 @@ autodoc_member_order = "bysource"
 autodoc_typehints = "signature"
 napoleon_google_docstring = False
 napoleon_numpy_docstring = True
+napoleon_use_ivar = True  # a class's Attributes as fields (its member pages describe each attribute once)
 autodoc_inherit_docstrings = False   # a pybind11 class inherits object's generic docstrings otherwise
 
 

@@ -439,47 +439,151 @@ bool time_dependent(const CompiledScene& compiled) {
   return false;
 }
 
-const char* const scene_doc = R"doc(
-A scene: bodies (Particle, PlanarBody, RigidBody, PivotedBody, PivotedPlanarBody) and the force elements
-acting on them, as data, in a frame: W (inertial; the default) or the SceneFrame `frame` (states, elements and
-records are then relative to it, with its fictitious forces compiled in). A body may carry a MassFlow (its mass
-changes; a Thrust element gives its force).
+const char* const scene_doc = R"doc(Bodies and the force elements acting on them, as data, in a frame.
 
-    scene = rigiddyn.Scene()
-    sat = scene.add_body(rigiddyn.RigidBody(500.0, [400.0, 300.0, 200.0]), name="sat")
-    scene.add(rigiddyn.PointMassGravity(gm=3.986004418e14))
-    result = rigiddyn.simulate(scene, [rigiddyn.RigidBodyState(p_W=[7e6, 0, 0], v_W=[0, 7546.0, 0])],
-                               dt=1.0, steps=6000, method="rk4")
+The bodies are Particle, PlanarBody, RigidBody, PivotedBody, PivotedPlanarBody or Gyrostat; the elements
+(UniformGravity, SpringDamper, Drag, ...) refer to bodies by index. The frame is W (inertial; the default) or the
+SceneFrame `frame`: states, elements and records are then relative to it, with its fictitious forces compiled in.
+A body may carry a MassFlow (its mass changes; a Thrust element gives its force). Compile it for a method with
+compile(method) (a CompiledScene, immutable), or give it to rigiddyn.simulate / rigiddyn.step, which compile it.
+Mutable (add_body, add, frame); pickles; == compares bodies, names, elements, frame and mass flows.
 
-Scene(bodies=None, body_names=None, elements=None, frame=None, mass_flows=None) builds the same from lists
-(body_names: one str or None per body; mass_flows: one MassFlow or None per body); it is what repr prints. Bodies are indexed in the order added; an element refers to bodies
-by index and is checked against the bodies added so far (add bodies first). Compile it for a method with
-compile(method) (a CompiledScene, immutable), or give it to rigiddyn.simulate / rigiddyn.step, which
-compile it. Mutable (add_body, add, frame); pickles; == compares bodies, names, elements, frame and mass flows.
+Parameters
+----------
+bodies : sequence of bodies, optional
+    The bodies, indexed in order (add_body appends more).
+body_names : sequence of str or None, optional
+    One name or None per body (records and DataFrame columns use them).
+elements : sequence of force elements, optional
+    Checked against the bodies (add bodies first).
+frame : SceneFrame or None, default None
+    The frame the states are relative to; None: W.
+mass_flows : sequence of MassFlow or None, optional
+    One per body (None: a constant mass).
+
+Raises
+------
+TypeError, ValueError
+    A body, element or frame that is not valid, or an element naming a body that does not exist (the message
+    names it).
+
+See Also
+--------
+simulate : runs the scene.
+load_scene : reads one from a TOML file (with units).
+CompiledScene : the scene compiled for one method.
+
+Examples
+--------
+)doc"
+    R"doc(A satellite in a circular low Earth orbit keeps its orbital energy to RK4's error:
+
+>>> scene = rd.Scene()
+>>> scene.add_body(rd.RigidBody(500.0, [400.0, 300.0, 200.0]), name="sat")
+0
+>>> scene.add(rd.PointMassGravity(gm=3.986004418e14))
+0
+>>> start = rd.RigidBodyState(p_W=[7e6, 0.0, 0.0], v_W=[0.0, 7546.0, 0.0])
+>>> result = rd.simulate(scene, [start], dt=1.0, steps=6000, method="rk4")
+>>> result.body_names, result.elements
+(('sat',), ('PointMassGravity',))
+>>> E = result.total_energy
+>>> bool(abs(E[-1] - E[0]) < 1e-12 * abs(E[0]))
+True
+
+The same kind of scene from lists, as repr prints it:
+
+>>> rd.Scene([rd.Particle(1.0)], elements=[rd.UniformGravity()])
+Scene(bodies=[Particle(mass=1.0)], body_names=[None], elements=[UniformGravity(g_W=[0.0, 0.0, -9.81], bodies=None)])
 )doc";
 
-const char* const scene_result_doc = R"doc(
-The records of simulate(scene, ...), one row per record (n records, nb bodies in the scene's order, ne
-elements in the scene's order); every array is read-only and shares the memory the C++ run filled.
+const char* const compiled_scene_doc = R"doc(A scene compiled for one method: immutable; its derivative evaluates only the declared elements.
 
-"W" is the scene frame: W itself, or the scene's SceneFrame F (every array is then relative to F).
-t (n,) [s]; p_W (n, nb, 3) centre of mass positions in W [m]; q_WB (n, nb, 4) attitudes, (x, y, z, w)
-unless simulate(..., scalar_first=True); v_W (n, nb, 3) [m/s] in W; w_B (n, nb, 3) [rad/s] in each body's
-B. A particle records q_WB = identity and w_B = 0; a planar body p_W = (x, y, 0), q_WB = Rz(theta),
-w_B = (0, 0, omega); a pinned body its centre of mass. pivot_reaction_W (n, nb, 3) the pivot's force on each
-body in W [N] (0 unpinned); angular_momentum_O_W (n, nb, 3) each body's about its pivot (about its centre of
-mass unpinned), in W [kg m^2/s]; mass (n, nb) [kg]. kinetic_energy (relative to W), potential_energy (the sum
-of the elements' potentials, and the centrifugal one of a frame turning at a constant rate: total_energy is
-then the Jacobi integral), total_energy (n,) [J]; linear_momentum_W (n, 3) [kg m/s]; angular_momentum_W (n, 3) about W's origin [kg m^2/s];
-work (n, ne) each element's work since t0 [J] and power (n, ne) its power at the record [W]; the columns are
-the scene's elements then the frame's fictitious terms that act (CentrifugalForce, CoriolisForce, ...);
-mass_flow_energy (n, nb) each body's mass-flow energy since t0 [J]: the integral of 1/2 (dm/dt) |v|^2 +
-1/2 w.(dI/dt) w, the kinetic energy its mass flow takes away or brings at its own velocity (0 for a constant
-mass). Work-energy balance, integrated by the run's method (to its error):
-kinetic_energy - kinetic_energy[0] ~ work.sum(axis=1) + mass_flow_energy.sum(axis=1)
-(without a MassFlow the last sum is 0: the work alone); body_names (nb,) and
-elements (ne,) (each column's class name) label the axes; diverged, unconverged_steps, elapsed_seconds as in
-SimulationResult.
+CompiledScene(scene, method='rk4') is scene.compile(method). Give it to rigiddyn.simulate / rigiddyn.step
+(method None or its own). Pickles (as its scene and method); == compares both.
+
+Parameters
+----------
+scene : Scene
+    The bodies and elements (copied: later changes to the scene do not reach it).
+method : str, default 'rk4'
+    A name from methods(); a method the scene cannot take is refused here (ValueError naming it).
+
+Examples
+--------
+)doc"
+    R"doc(Compile once, run many times (here the DLM splitting, whose derivative evaluates the declared elements only):
+
+>>> scene = rd.Scene([rd.Particle(1.0)], elements=[rd.UniformGravity()])
+>>> compiled = scene.compile("splitting_dlm")
+>>> compiled == rd.CompiledScene(scene, "splitting_dlm")
+True
+>>> result = rd.simulate(compiled, [rd.ParticleState()], 0.1, steps=10)
+>>> result.p_W[-1, 0].round(12)
+array([ 0.   ,  0.   , -4.905])
+)doc";
+
+const char* const scene_result_doc = R"doc(The records of simulate(scene, ...): one row per record, every array read-only.
+
+n records, nb bodies in the scene's order, ne elements in the scene's order; every array shares the memory the
+C++ run filled. "W" is the scene frame: W itself, or the scene's SceneFrame F (every array is then relative to
+F). Made by simulate (no public constructor).
+
+Attributes
+----------
+t : ndarray, shape (n,)
+    Record times [s].
+p_W, v_W : ndarray, shape (n, nb, 3)
+    Centre of mass positions [m] and velocities [m/s] in W (a pinned body: its centre of mass).
+q_WB : ndarray, shape (n, nb, 4)
+    Attitudes, (x, y, z, w) unless simulate(..., scalar_first=True).
+w_B : ndarray, shape (n, nb, 3)
+    Angular velocities [rad/s] in each body's B. A particle records q_WB = identity and w_B = 0; a planar body
+    p_W = (x, y, 0), q_WB = Rz(theta), w_B = (0, 0, omega).
+pivot_reaction_W : ndarray, shape (n, nb, 3)
+    The pivot's force on each body in W [N] (0 unpinned).
+angular_momentum_O_W : ndarray, shape (n, nb, 3)
+    Each body's angular momentum about its pivot (about its centre of mass unpinned), in W [kg m^2/s].
+mass : ndarray, shape (n, nb)
+    Masses [kg].
+kinetic_energy, potential_energy, total_energy : ndarray, shape (n,)
+    [J]; the kinetic energy relative to W; the potential energy is the sum of the elements' potentials, and the
+    centrifugal one of a frame turning at a constant rate (total_energy is then the Jacobi integral).
+linear_momentum_W : ndarray, shape (n, 3)
+    [kg m/s] in W.
+angular_momentum_W : ndarray, shape (n, 3)
+    About W's origin [kg m^2/s].
+work, power : ndarray, shape (n, ne)
+    Each element's work since t0 [J] and its power at the record [W]; the columns are the scene's elements, then
+    the frame's fictitious terms that act (CentrifugalForce, CoriolisForce, ...).
+mass_flow_energy : ndarray, shape (n, nb)
+    Each body's mass-flow energy since t0 [J]: the integral of 1/2 (dm/dt) |v|^2 + 1/2 w.(dI/dt) w, the kinetic
+    energy its mass flow takes away or brings at its own velocity (0 for a constant mass).
+body_names : tuple of str, shape (nb,)
+    Label the body axis.
+elements : tuple of str, shape (ne,)
+    Each work and power column's class name.
+diverged, unconverged_steps, elapsed_seconds
+    As in SimulationResult.
+
+Notes
+-----
+The work-energy balance, integrated by the run's method (to its error):
+kinetic_energy - kinetic_energy[0] ~ work.sum(axis=1) + mass_flow_energy.sum(axis=1) (without a MassFlow the
+last sum is 0: the work alone).
+
+Examples
+--------
+Two particles under gravity: the change of kinetic energy is the work of gravity.
+
+)doc"
+    R"doc(>>> scene = rd.Scene([rd.Particle(2.0), rd.Particle(1.0)], elements=[rd.UniformGravity()])
+>>> result = rd.simulate(scene, [rd.ParticleState(), rd.ParticleState(v_W=(1.0, 0.0, 0.0))], 0.01, steps=100)
+>>> result.t.shape, result.p_W.shape, result.work.shape
+((101,), (101, 2, 3), (101, 1))
+>>> T = result.kinetic_energy
+>>> bool(np.allclose(T - T[0], result.work.sum(axis=1), atol=1e-12))
+True
 )doc";
 
 }  // namespace
@@ -561,11 +665,7 @@ void bind_scene(py::module_& m) {
 
   // both classes first, so that each one's signatures name the other
   py::class_<Scene> scene(m, "Scene", scene_doc);
-  py::class_<CompiledSceneHandle> compiled(
-      m, "CompiledScene",
-      "A scene compiled for one method (Scene.compile): immutable; its derivative evaluates only the declared "
-      "elements. CompiledScene(scene, method='rk4') is scene.compile(method). Give it to rigiddyn.simulate / "
-      "rigiddyn.step (method None or its own). Pickles (as its scene and method); == compares both.");
+  py::class_<CompiledSceneHandle> compiled(m, "CompiledScene", compiled_scene_doc);
   scene.def(py::init(&make_scene), py::arg("bodies") = py::none(), py::arg("body_names") = py::none(),
             py::arg("elements") = py::none(), py::arg("frame") = py::none(), py::arg("mass_flows") = py::none())
       .def(

@@ -437,12 +437,38 @@ std::string element_kind(const Element& element) {
   return py::type::of(element_object(element)).attr("__name__").cast<std::string>();
 }
 
+const char* const element_field_doc = R"doc(One field of a force element class: its class attribute `fields`, in constructor order.
+
+Made by the element classes (no public constructor); the scene files, describe() and the stability check read
+them.
+
+Attributes
+----------
+key : str
+    The keyword and attribute.
+kind : str
+    'scalar', 'vector' (3,), 'bodies', 'body', 'optional_body', 'loads', 'frame' or 'callable'.
+unit : str
+    SI, pint syntax ('' when none).
+required : bool
+    The constructor needs it.
+default : object
+    None when required; a vector as a tuple.
+doc : str
+    What it is, with its unit.
+
+Examples
+--------
+)doc"
+    R"doc(>>> field = rd.SpringDamper.fields[4]
+>>> field.key, field.unit, field.required
+('stiffness', 'N/m', True)
+>>> [f.key for f in rd.SpringDamper.fields]
+['body_a', 'point_a_B', 'body_b', 'point_b', 'stiffness', 'rest_length', 'damping']
+)doc";
+
 void bind_scene_elements(py::module_& m) {
-  py::class_<FieldInfo>(m, "ElementField",
-                        "One field of a force element class (its class attribute `fields`, in constructor order): key "
-                        "(the keyword and attribute), kind ('scalar', 'vector' (3,), 'bodies', 'body', "
-                        "'optional_body', 'loads', 'frame' or 'callable'), unit (SI, pint syntax; '' when none), "
-                        "required, default (None when required; a vector as a tuple) and doc.")
+  py::class_<FieldInfo>(m, "ElementField", element_field_doc)
       .def_readonly("key", &FieldInfo::key)
       .def_readonly("kind", &FieldInfo::kind)
       .def_readonly("unit", &FieldInfo::unit)

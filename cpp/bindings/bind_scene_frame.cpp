@@ -136,29 +136,49 @@ std::string frame_repr(const SceneFrame& frame) {
          (declared ? ", terms=" + py::repr(s[2]).cast<std::string>() : std::string()) + ")";
 }
 
-const char* const scene_frame_doc = R"doc(
-The frame F a scene's states are relative to, moving relative to the inertial frame W (Scene.frame; None:
-W itself). Build it with
-  SceneFrame.rotating(axis, rate)   F turns at `rate` [rad/s] about `axis` (3,) (any non-zero length; fixed
-                                    in F and in W) through its origin, fixed at W's origin; F = W at t = 0;
-  SceneFrame.earth(latitude)        the local frame (x east, y north, z up) at `latitude` [rad] on the turning
-                                    Earth: Omega = 7.2921159e-5 rad/s about (0, cos(latitude), sin(latitude));
-  SceneFrame.moving(frame_motion, terms=None)
-                                    any motion of F relative to W, a FrameMotion (a Python kinematics_at(t) is
-                                    called with the GIL taken, at each derivative evaluation); terms: the
-                                    fictitious terms that act, when the motion leaves some identically zero.
-Each physical argument: a float [its unit] or a pint quantity. Newton's and Euler's laws seen from F gain the
-fictitious terms ("Rigid body kinematics and dynamics" notes, eqs. (4.39)-(4.40)): frame origin -m a_O, Euler
--m alpha x r, centrifugal -m Omega x (Omega x r), Coriolis -2 m Omega x v (and their torques on bodies with an
-attitude); compiling a scene adds those that act (SceneFrame.terms) as elements "FrameOriginForce", "EulerForce",
-"CentrifugalForce", "CoriolisForce" after the scene's own (columns of SceneResult.work and power): the centrifugal
-and Coriolis ones for rotating and earth (none at rate 0), none for a FrameMotion.fixed placement, every term
-for a general motion unless `terms` names those that act (a motion turning at a constant rate has no Euler term,
-one whose origin does not accelerate no origin term; each evaluation of the motion then checks that the values
-of the terms left out are zero, else ValueError naming `frame`). Every
-element, state and record of the scene is then in F. A motion function returning a non-finite value raises
-ValueError naming `frame`; an exception it raises propagates out of simulate. Immutable; pickles (a
-FrameMotion of a module-level function); == compares how it was built.
+const char* const scene_frame_doc = R"doc(The frame F a scene's states are relative to, moving relative to the inertial frame W.
+
+Scene.frame (None: W itself). Built by its static constructors (no public constructor):
+
+- SceneFrame.rotating(axis, rate): F turns at `rate` [rad/s] about `axis` (3,) (any non-zero length; fixed in F
+  and in W) through its origin, fixed at W's origin; F = W at t = 0;
+- SceneFrame.earth(latitude): the local frame (x east, y north, z up) at `latitude` [rad] on the turning Earth:
+  Omega = 7.2921159e-5 rad/s about (0, cos(latitude), sin(latitude));
+- SceneFrame.moving(frame_motion, terms=None): any motion of F relative to W, a FrameMotion (a Python
+  kinematics_at(t) is called with the GIL taken, at each derivative evaluation); terms: the fictitious terms
+  that act, when the motion leaves some identically zero.
+
+Each physical argument: a float [its unit] or a pint quantity. Immutable; pickles (a FrameMotion of a
+module-level function); == compares how it was built.
+
+Notes
+-----
+Newton's and Euler's laws seen from F gain the fictitious terms ("Rigid body kinematics and dynamics" notes,
+eqs. (4.39)-(4.40)): frame origin -m a_O, Euler -m alpha x r, centrifugal -m Omega x (Omega x r), Coriolis
+-2 m Omega x v (and their torques on bodies with an attitude). Compiling a scene adds those that act
+(SceneFrame.terms) as elements "FrameOriginForce", "EulerForce", "CentrifugalForce", "CoriolisForce" after the
+scene's own (columns of SceneResult.work and power): the centrifugal and Coriolis ones for rotating and earth
+(none at rate 0), none for a FrameMotion.fixed placement, every term for a general motion unless `terms` names
+those that act (a motion turning at a constant rate has no Euler term, one whose origin does not accelerate no
+origin term; each evaluation of the motion then checks that the values of the terms left out are zero, else
+ValueError naming `frame`). Every element, state and record of the scene is then in F. A motion function
+returning a non-finite value raises ValueError naming `frame`; an exception it raises propagates out of
+simulate.
+
+Examples
+--------
+)doc"
+    R"doc(A particle at rest in W, seen from a frame turning at 1 rad/s about z, circles the other way: after a quarter
+turn it is at (0, -1, 0) in F:
+
+>>> frame = rd.SceneFrame.rotating([0.0, 0.0, 1.0], 1.0)
+>>> frame.terms
+('centrifugal', 'coriolis')
+>>> scene = rd.Scene([rd.Particle(1.0)], frame=frame)
+>>> at_rest_in_W = rd.ParticleState(p_W=(1.0, 0.0, 0.0), v_W=(0.0, -1.0, 0.0))
+>>> result = rd.simulate(scene, [at_rest_in_W], np.pi / 2000, steps=1000, method="rk4")
+>>> result.p_W[-1, 0].round(9)
+array([ 0., -1.,  0.])
 )doc";
 
 void bind_frame_class(py::module_& m) {
@@ -305,22 +325,46 @@ std::string mass_flow_repr(const MassFlow& flow) {
   return "MassFlow(rate=" + text(s[0]) + ", inertia_rule=" + text(s[1]) + ")";
 }
 
-const char* const mass_flow_doc = R"doc(
-The mass flow of a body (Scene.add_body(body, mass_flow=...)): its mass changes at the rate
-  rate          dm/dt [kg/s]: a float (or a pint quantity; negative: the body loses mass) or a callable
-                rate(t) -> float of the time t [s];
-and its rotational inertia about the centre of mass follows
-  inertia_rule  'scaled' (I_C(m) = I_C0 m / m0: the body's shape is kept; every method applies) or a callable
-                inertia_rule(m) -> (3, 3) [kg m^2] in B of the mass m [kg] (the splitting methods are refused).
-The mass starts at the body's mass and is a coordinate of the run (SceneResult.mass). Its force is the
-Thrust element, f = rate u_rel ("Rigid body kinematics and dynamics" notes, eq. (4.36): m dv/dt = f + (dm/dt)
-u_rel). The mass leaving carries its own angular momentum (no jet damping): I(m) dw/dt + w x I(m) w = tau.
+const char* const mass_flow_doc = R"doc(The mass flow of a body: its mass changes at a given rate, its inertia by a rule.
+
+Given to Scene.add_body(body, mass_flow=...) or Scene(..., mass_flows=[...]). The mass starts at the body's mass
+and is a coordinate of the run (SceneResult.mass). Its force is the Thrust element, f = rate u_rel ("Rigid body
+kinematics and dynamics" notes, eq. (4.36): m dv/dt = f + (dm/dt) u_rel). The mass leaving carries its own
+angular momentum (no jet damping): I(m) dw/dt + w x I(m) w = tau. Immutable; pickles (callables defined at
+module level); == compares rate and inertia_rule.
+
+Parameters
+----------
+rate : float or callable, default 0.0
+    dm/dt [kg/s]: a float (or a pint quantity; negative: the body loses mass) or a callable rate(t) -> float of
+    the time t [s].
+inertia_rule : {'scaled'} or callable, default 'scaled'
+    How the rotational inertia about the centre of mass follows the mass: 'scaled' (I_C(m) = I_C0 m / m0: the
+    body's shape is kept; every method applies) or a callable inertia_rule(m) -> (3, 3) [kg m^2] in B of the
+    mass m [kg] (the splitting methods are refused).
+
+Raises
+------
+ValueError
+    A non-finite value of a callable (naming mass_flows[i].rate or inertia_rule); a mass reaching zero (naming
+    mass_flows[i] and the step; for a constant rate before the run, naming steps and dt).
+
+Notes
+-----
 Callables are called with the GIL taken, at each derivative evaluation; an exception they raise stops the run
-and propagates; a non-finite value raises ValueError naming mass_flows[i].rate or inertia_rule. A mass reaching
-zero raises ValueError naming mass_flows[i] and the step (for a constant rate, before the run: naming steps, dt).
-The kinetic energy the flow takes away or brings at the body's own velocity, 1/2 (dm/dt) |v|^2 + 1/2 w.(dI/dt) w
-integrated, is SceneResult.mass_flow_energy: kinetic_energy - kinetic_energy[0] ~ work + mass-flow energy.
-Immutable; pickles (callables defined at module level); == compares rate and inertia_rule.
+and propagates. The kinetic energy the flow takes away or brings at the body's own velocity,
+1/2 (dm/dt) |v|^2 + 1/2 w.(dI/dt) w integrated, is SceneResult.mass_flow_energy:
+kinetic_energy - kinetic_energy[0] ~ work + mass-flow energy.
+
+Examples
+--------
+)doc"
+    R"doc(A particle of 2 kg losing 0.5 kg/s has 1 kg left after 2 s:
+
+>>> scene = rd.Scene([rd.Particle(2.0)], mass_flows=[rd.MassFlow(rate=-0.5)])
+>>> result = rd.simulate(scene, [rd.ParticleState()], 0.1, duration=2.0, method="rk4")
+>>> result.mass[[0, 10, 20], 0].round(12)
+array([2. , 1.5, 1. ])
 )doc";
 
 void bind_mass_flow_class(py::module_& m) {

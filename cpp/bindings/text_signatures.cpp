@@ -3,8 +3,9 @@
 // docstring when it has the form "name(a, b=1, /, *, c=None)\n--\n\n" (its __text_signature__); pybind11 writes
 // its typed signature line there instead, which inspect cannot parse. After every binding is registered, each
 // function's docstring gets that line in front, built from pybind11's own record of the parameters (their names,
-// positional-only and keyword-only marks, defaults), and each class the signature of its constructor
-// (__signature__). The typed line pybind11 wrote stays first in __doc__, for readers and the stub generator:
+// positional-only and keyword-only marks, defaults), each method and static method of a class too, and each class
+// the signature of its constructor (__signature__). The typed line pybind11 wrote stays first in __doc__, for
+// readers and the stub generator:
 // pybind11-stubgen reads those typed lines only where inspect finds no signature, so under RIGIDDYN_STUBGEN=1
 // (set by the stub's generation, tests/python/test_stubs.py) the signatures are not added.
 #include "bindings.hpp"
@@ -39,14 +40,14 @@ std::string default_text(const py::detail::argument_record& arg, const py::modul
 }
 
 // "(a, b=False, /, *, c=None)" of one pybind11 function record; "(*args, **kwargs)" for an overload set (no single
-// signature: the docstring lists each). A method's first parameter is marked "$self" (bound, not shown).
+// signature: the docstring lists each).
 std::string text_signature(const py::detail::function_record& rec, const py::module_& ast) {
-  if (rec.next) return rec.is_method ? "($self, /, *args, **kwargs)" : "(*args, **kwargs)";
+  if (rec.next) return rec.is_method ? "(self, /, *args, **kwargs)" : "(*args, **kwargs)";
   std::string out = "(";
   const auto parameter = [&](std::size_t i) -> std::string {
     const bool named = i < rec.args.size() && rec.args[i].name;
     std::string name = named ? rec.args[i].name : "arg" + std::to_string(i);
-    if (i == 0 && rec.is_method) return "$" + name;
+    if (i == 0 && rec.is_method) return name;  // self: unbound through the class, dropped by a bound method
     if (rec.has_kwargs && i + 1 == rec.nargs) return "**" + name;
     if (rec.has_args && i == rec.nargs_pos) return "*" + name;
     if (named && (rec.args[i].descr || rec.args[i].value)) name += "=" + default_text(rec.args[i], ast);
@@ -78,6 +79,18 @@ void add_text_signature(PyObject* f, const py::module_& ast) {
   PYBIND11_PYCFUNCTION_SET_DOC(function, text);
 }
 
+// The text signatures of a class's methods and static methods (its constructor's too: __init__ is one of them)
+void add_method_signatures(const py::dict& members, const py::module_& ast) {
+  for (const auto item : members) {
+    PyObject* f = item.second.ptr();
+    if (PyInstanceMethod_Check(f)) {
+      add_text_signature(PyInstanceMethod_GET_FUNCTION(f), ast);
+    } else if (py::isinstance(item.second, py::module_::import("builtins").attr("staticmethod"))) {
+      add_text_signature(item.second.attr("__func__").ptr(), ast);
+    }
+  }
+}
+
 // A warning's or an exception's (*args), as every exception takes (inspect finds none for a built-in base)
 void exception_signature(const py::handle& cls, const py::module_& inspect) {
   const py::object parameter = inspect.attr("Parameter");
@@ -85,7 +98,7 @@ void exception_signature(const py::handle& cls, const py::module_& inspect) {
       py::make_tuple(parameter("args", parameter.attr("VAR_POSITIONAL"))));
 }
 
-// The class's __signature__: its constructor's (self, marked bound, left out); none for a class without an __init__
+// The class's __signature__: its constructor's without self; none for a class without an __init__
 // of its own (a result or report that the core makes: calling it raises TypeError).
 void add_class_signature(const py::handle& cls, const py::module_& ast, const py::module_& inspect) {
   if (PyType_IsSubtype(reinterpret_cast<PyTypeObject*>(cls.ptr()), reinterpret_cast<PyTypeObject*>(PyExc_BaseException))) {
@@ -93,13 +106,15 @@ void add_class_signature(const py::handle& cls, const py::module_& ast, const py
     return;
   }
   const py::dict members = cls.attr("__dict__");
+  add_method_signatures(members, ast);
   if (!members.contains("__init__")) return;
   PyObject* init = py::handle(members["__init__"]).ptr();
   if (PyInstanceMethod_Check(init)) init = PyInstanceMethod_GET_FUNCTION(init);
   if (!PyCFunction_Check(init) || !PyCFunction_GET_SELF(init)) return;
-  add_text_signature(init, ast);
   if (!py::hasattr(py::handle(init), "__text_signature__") || py::handle(init).attr("__text_signature__").is_none()) return;
-  cls.attr("__signature__") = inspect.attr("signature")(py::handle(init));
+  const py::object signature = inspect.attr("signature")(py::handle(init));  // (self, ...)
+  const py::list parameters(signature.attr("parameters").attr("values")());
+  cls.attr("__signature__") = signature.attr("replace")(py::arg("parameters") = parameters[py::slice(1, {}, {})]);
 }
 
 }  // namespace

@@ -9,8 +9,47 @@ import typing
 __all__: list[str] = ['AppliedLoad', 'BatchResult', 'BatchSceneResult', 'BodyAcceleration', 'ComWrench', 'CompiledScene', 'CompoundPendulumSolution', 'ConstantThrustSolution', 'DensityIntegral', 'Drag', 'ElementField', 'FORCE_ELEMENTS', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'GravityGradient', 'Gyrostat', 'GyrostatState', 'InertiaCheck', 'InertiaReport', 'KineticEnergy', 'LagrangeTopSolution', 'MagneticDipole', 'MassFlow', 'MeshWeldWarning', 'Motion', 'MutualGravity', 'Particle', 'ParticleState', 'PivotedAcceleration', 'PivotedBody', 'PivotedBodyState', 'PivotedPlanarAcceleration', 'PivotedPlanarBody', 'PivotedPlanarBodyState', 'PivotedPlanarTorque', 'PivotedTorque', 'PlanarAcceleration', 'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointMassGravity', 'PointVelocity', 'PrincipalAxes', 'PythonForce', 'ReactionWheel', 'RigidBody', 'RigidBodyState', 'RotatingFrameFreeParticle', 'Scene', 'SceneCompatibilityWarning', 'SceneFrame', 'SceneResult', 'ScheduledLoads', 'Screw', 'SimulationResult', 'SpatialInertia', 'SpringDamper', 'Thrust', 'TorqueFreeSolution', 'Transform', 'UniformGravity', 'WeldedMesh', 'Wheel', 'align_vectors', 'angular_distance', 'angular_momentum', 'angular_velocity_from_quat_rate', 'apply_impulse', 'axis_angle_to_quat', 'box_shell', 'compose_kinematics', 'composite', 'davenport_to_quat', 'default_thread_count', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'from_point_masses', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation', 'nearest_valid_inertia', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix', 'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'simulate', 'simulate_batch', 'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'twist_to_screw', 'vee', 'weld_vertices']
 class FrameKinematics:
     """
-    Frame F relative to frame P at one instant (P = the parent of a FrameMotion, or the
-    `relative_to` frame of a FrameTree query). Every vector is expressed in P; SI units.
+    Frame F relative to frame P at one instant: orientation, angular velocity and acceleration, and the
+    position, velocity and acceleration of F's origin.
+    
+    P is the parent of a FrameMotion, or the `relative_to` frame of a FrameTree query. Every vector is
+    expressed in P; SI units. The caller keeps the fields consistent (w, alpha the derivatives of R; v, a
+    those of p): only R_PF being a rotation and finiteness are checked.
+    
+    Parameters
+    ----------
+    R_PF : array_like, shape (3, 3), optional
+        Orientation of F in P, F coordinates to P coordinates (None: identity).
+    w_PF_P : array_like, shape (3,), optional
+        Angular velocity of F relative to P [rad/s], in P (None: zero).
+    alpha_PF_P : array_like, shape (3,), optional
+        Angular acceleration of F relative to P [rad/s^2], in P (None: zero).
+    p_PF_P : array_like, shape (3,), optional
+        Position of F's origin relative to P's [m], in P (None: zero).
+    v_PF_P : array_like, shape (3,), optional
+        Velocity of F's origin seen from P [m/s], in P (None: zero).
+    a_PF_P : array_like, shape (3,), optional
+        Acceleration of F's origin seen from P [m/s^2], in P (None: zero).
+    
+    Raises
+    ------
+    ValueError
+        A non-rotation R_PF, NaN/Inf or a bad shape (the message names the argument).
+    
+    See Also
+    --------
+    FrameMotion, FrameTree.kinematics, compose_kinematics, point_velocity
+    
+    Examples
+    --------
+    F spins at 2 rad/s about its z axis, its origin fixed 1 m along P's x; a point fixed in F 1 m further out
+    moves at w x r_FQ = 2 m/s:
+    
+    >>> K_PF = rd.FrameKinematics(w_PF_P=[0.0, 0.0, 2.0], p_PF_P=[1.0, 0.0, 0.0])
+    >>> rd.point_velocity(K_PF, [1.0, 0.0, 0.0], [0.0, 0.0, 0.0]).total
+    array([0., 2., 0.])
+    
+    Immutable; pickles; == compares every field exactly.
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, arg0: typing.Any) -> typing.Any:
@@ -21,7 +60,8 @@ class FrameKinematics:
         ...
     def __init__(self, R_PF: typing.Any = None, w_PF_P: typing.Any = None, alpha_PF_P: typing.Any = None, p_PF_P: typing.Any = None, v_PF_P: typing.Any = None, a_PF_P: typing.Any = None) -> None:
         """
-        Arguments as the attributes (None: identity / zero). ValueError on a non-rotation R_PF or NaN/Inf.
+        Arguments as the attributes (None: identity / zero); see the class. ValueError on a non-rotation R_PF or
+        NaN/Inf.
         """
     def __repr__(self) -> str:
         ...
@@ -59,10 +99,31 @@ class FrameKinematics:
         """
 class PointVelocity:
     """
-    Velocity of a point Q moving in a frame F, seen from a frame A, term by term
-    ("Rigid body kinematics and dynamics" notes (4.38)): total = origin + rotational +
-    relative. Each (3,) [m/s], all expressed in the same frame E (the query's `expressed_in`;
+    Velocity of a point Q moving in a frame F, seen from a frame A, term by term.
+    
+    v_AQ = v_AF + w_AF x r_FQ + v_FQ ("Rigid body kinematics and dynamics" notes (4.38)): total = origin +
+    rotational + relative. Each (3,) [m/s], all expressed in the same frame E (the query's `expressed_in`;
     A for the free function point_velocity).
+    
+    Parameters
+    ----------
+    origin : array_like, shape (3,)
+        v_AF_E, velocity of F's origin seen from A [m/s].
+    rotational : array_like, shape (3,)
+        w_AF x r_FQ [m/s].
+    relative : array_like, shape (3,)
+        v_FQ_E, velocity of Q seen from F [m/s].
+    
+    See Also
+    --------
+    point_velocity, FrameTree.point_velocity, PointAcceleration
+    
+    Examples
+    --------
+    >>> rd.PointVelocity([1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]).total
+    array([1., 1., 1.])
+    
+    Immutable; pickles; == compares every term exactly.
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, arg0: typing.Any) -> typing.Any:
@@ -73,7 +134,7 @@ class PointVelocity:
         ...
     def __init__(self, origin: typing.Any, rotational: typing.Any, relative: typing.Any) -> None:
         """
-        From its terms (3,) [m/s], all in one frame.
+        From its terms (3,) [m/s], all in one frame; see the class.
         """
     def __repr__(self) -> str:
         ...
@@ -101,11 +162,37 @@ class PointVelocity:
         """
 class PointAcceleration:
     """
-    Acceleration of a point Q moving in a frame F, seen from a frame A, term by term
-    ("Rigid body kinematics and dynamics" notes (4.39); Craig's "Rigid Body Dynamics"
-    slides): total = origin + tangential + centripetal + relative + coriolis. Each (3,)
-    [m/s^2], all expressed in one frame E (the query's `expressed_in`; A for the free
-    function point_acceleration).
+    Acceleration of a point Q moving in a frame F, seen from a frame A, term by term.
+    
+    a_AQ = a_AF + alpha_AF x r_FQ + w_AF x (w_AF x r_FQ) + a_FQ + 2 w_AF x v_FQ ("Rigid body kinematics and
+    dynamics" notes (4.39); Craig's "Rigid Body Dynamics" slides): total = origin + tangential +
+    centripetal + relative + coriolis. Each (3,) [m/s^2], all expressed in one frame E (the query's
+    `expressed_in`; A for the free function point_acceleration).
+    
+    Parameters
+    ----------
+    origin : array_like, shape (3,)
+        a_AF_E, acceleration of F's origin seen from A [m/s^2].
+    tangential : array_like, shape (3,)
+        alpha_AF x r_FQ [m/s^2].
+    centripetal : array_like, shape (3,)
+        w_AF x (w_AF x r_FQ) [m/s^2].
+    relative : array_like, shape (3,)
+        a_FQ_E, acceleration of Q seen from F [m/s^2].
+    coriolis : array_like, shape (3,)
+        2 w_AF x v_FQ [m/s^2].
+    
+    See Also
+    --------
+    point_acceleration, FrameTree.point_acceleration, PointVelocity
+    
+    Examples
+    --------
+    >>> a = rd.PointAcceleration([1.0, 0, 0], [0, 1.0, 0], [0, 0, 1.0], [1.0, 0, 0], [0, 1.0, 0])
+    >>> a.total
+    array([2., 2., 1.])
+    
+    Immutable; pickles; == compares every term exactly.
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, arg0: typing.Any) -> typing.Any:
@@ -116,7 +203,7 @@ class PointAcceleration:
         ...
     def __init__(self, origin: typing.Any, tangential: typing.Any, centripetal: typing.Any, relative: typing.Any, coriolis: typing.Any) -> None:
         """
-        From its terms (3,) [m/s^2], all in one frame.
+        From its terms (3,) [m/s^2], all in one frame; see the class.
         """
     def __repr__(self) -> str:
         ...
@@ -154,8 +241,37 @@ class PointAcceleration:
         """
 class FrameMotion:
     """
-    How a frame F moves relative to its parent P: a function of time t [s] giving its
-    FrameKinematics (all vectors expressed in P).
+    How a frame F moves relative to its parent P: a function of time t [s] giving its FrameKinematics (all
+    vectors expressed in P).
+    
+    Built from a Python callable (general motion), or by FrameMotion.fixed or FrameMotion.constant_rotation.
+    
+    Parameters
+    ----------
+    kinematics_at : callable
+        t -> a FrameKinematics or a 6-tuple (R_PF (3,3), w_PF_P, alpha_PF_P, p_PF_P, v_PF_P, a_PF_P) (each
+        (3,), expressed in P, SI units). The caller keeps them consistent (w, alpha the derivatives of R; v,
+        a those of p); the tree checks each value (finite, R_PF a rotation) and raises ValueError naming the
+        frame.
+    
+    Raises
+    ------
+    TypeError
+        kinematics_at not callable.
+    
+    See Also
+    --------
+    FrameTree, FrameKinematics
+    
+    Examples
+    --------
+    A frame turning at 2 rad/s about P's z axis is a quarter turn on at t = pi/4 s:
+    
+    >>> M = rd.FrameMotion.constant_rotation([0.0, 0.0, 1.0], 2.0)
+    >>> bool(np.allclose(M.at(np.pi / 4).R_PF, rd.rot_z(np.pi / 2))), M.at(0.1).w_PF_P
+    (True, array([0., 0., 2.]))
+    
+    Immutable; pickles (a general motion when its callable pickles); == compares how it was built.
     """
     __hash__: typing.ClassVar[None] = None
     @staticmethod
@@ -165,11 +281,48 @@ class FrameMotion:
         axis_P (3,) (expressed in P, any non-zero length) through F's origin, which stays at p_PF_P [m] in P
         (None: 0). R_PF(t) = exp(hat(rate t axis_P/|axis_P|)) R_PF0 (R_PF0: orientation at t = 0, None:
         identity).
+        
+        Parameters
+        ----------
+        axis_P : array_like, shape (3,)
+            Rotation axis, in P (any non-zero length).
+        rate : float
+            Angular rate [rad/s].
+        R_PF0 : array_like, shape (3, 3), optional
+            R_PF at t = 0 (None: identity).
+        p_PF_P : array_like, shape (3,), optional
+            F's fixed origin relative to P's [m], in P (None: 0).
+        
+        Returns
+        -------
+        FrameMotion
+        
+        Examples
+        --------
+        >>> M = rd.FrameMotion.constant_rotation([0.0, 0.0, 2.0], 1.0)
+        >>> bool(np.allclose(M.at(np.pi / 2).R_PF, rd.rot_z(np.pi / 2))), M.at(0.0).w_PF_P
+        (True, array([0., 0., 1.]))
         """
     @staticmethod
     def fixed(R_PF: typing.Any = None, p_PF_P: typing.Any = None) -> FrameMotion:
         """
         F fixed in P: orientation R_PF (3,3) (None: identity), origin at p_PF_P (3,) [m] in P (None: 0).
+        
+        Parameters
+        ----------
+        R_PF : array_like, shape (3, 3), optional
+            F coordinates to P coordinates.
+        p_PF_P : array_like, shape (3,), optional
+            F's origin relative to P's [m], in P.
+        
+        Returns
+        -------
+        FrameMotion
+        
+        Examples
+        --------
+        >>> rd.FrameMotion.fixed(p_PF_P=[1.0, 2.0, 3.0]).at(5.0).p_PF_P
+        array([1., 2., 3.])
         """
     def __copy__(self) -> FrameMotion:
         ...
@@ -186,9 +339,7 @@ class FrameMotion:
     def __init__(self, kinematics_at: typing.Any) -> None:
         """
         General motion: kinematics_at(t) returns a FrameKinematics or a 6-tuple
-        (R_PF (3,3), w_PF_P, alpha_PF_P, p_PF_P, v_PF_P, a_PF_P) (each (3,), expressed in P). The caller
-        keeps them consistent (w, alpha the derivatives of R; v, a those of p); the tree checks each value
-        (finite, R_PF a rotation) and raises ValueError naming the frame.
+        (R_PF (3,3), w_PF_P, alpha_PF_P, p_PF_P, v_PF_P, a_PF_P) (each (3,), expressed in P); see the class.
         """
     def __repr__(self) -> str:
         ...
@@ -196,15 +347,70 @@ class FrameMotion:
         ...
     def at(self, t: typing.Any) -> FrameKinematics:
         """
-        F relative to P at time t [s] (not checked: the tree checks the values it uses).
+        FrameKinematics of F relative to P at time t [s], expressed in P (not checked: the tree checks the values
+        it uses).
+        
+        Parameters
+        ----------
+        t : float
+            Time [s].
+        
+        Returns
+        -------
+        FrameKinematics
+            F relative to P, expressed in P.
+        
+        Raises
+        ------
+        TypeError
+            A general motion's value neither a FrameKinematics nor a 6-tuple.
+        ValueError
+            A part of that value of another shape (the message names t and the part).
+        
+        Examples
+        --------
+        >>> rd.FrameMotion.constant_rotation([0.0, 0.0, 1.0], 2.0).at(0.5).w_PF_P
+        array([0., 0., 2.])
         """
 class FrameTree:
     """
-    A tree of reference frames rooted at the inertial frame 'world'. Each frame is placed
-    relative to its parent by a FrameMotion. Queries relate any frame F (`frame`) to any
-    frame A (`relative_to`) at time t [s], with results expressed in `expressed_in` E.
-    Unknown names, duplicates and cycles raise ValueError. Trees of any depth (every walk
-    is iterative).
+    A tree of reference frames rooted at the inertial frame 'world'.
+    
+    Each frame is placed relative to its parent by a FrameMotion. Queries relate any frame F (`frame`) to any
+    frame A (`relative_to`) at time t [s], with results expressed in `expressed_in` E. Unknown names,
+    duplicates and cycles raise ValueError. Trees of any depth (every walk is iterative).
+    
+    Parameters
+    ----------
+    frames : list of (str, str, FrameMotion), optional
+        (name, parent, motion) triples, as repr shows them (None: 'world' only); a parent may come after its
+        child.
+    
+    Raises
+    ------
+    ValueError
+        An unknown parent, a duplicate name or a cycle (naming it).
+    TypeError
+        frames not such a list (naming the bad item).
+    
+    See Also
+    --------
+    FrameMotion, FrameKinematics, SceneFrame
+    
+    Examples
+    --------
+    An arm 2 m out on a table turning at 1 rad/s: its origin moves at 2 m/s, accelerates at 2 m/s^2 inward:
+    
+    >>> tree = rd.FrameTree([("table", "world", rd.FrameMotion.constant_rotation([0, 0, 1], 1.0)),
+    ...                      ("arm", "table", rd.FrameMotion.fixed(p_PF_P=[2.0, 0, 0]))])
+    >>> tree.frame_names()
+    ['world', 'table', 'arm']
+    >>> tree.point_velocity("arm", [0, 0, 0], [0, 0, 0], "world", "world", 0.0).total
+    array([0., 2., 0.])
+    >>> tree.point_acceleration("arm", [0, 0, 0], [0, 0, 0], [0, 0, 0], "world", "world", 0.0).total
+    array([-2.,  0.,  0.])
+    
+    Mutable (add_frame, set_parent); pickles when its motions do; == compares names, parents and motions.
     """
     __hash__: typing.ClassVar[None] = None
     world: typing.ClassVar[str] = 'world'
@@ -223,7 +429,7 @@ class FrameTree:
     def __init__(self, frames: typing.Any = None) -> None:
         """
         A tree holding 'world' and the frames: a list of (name, parent, FrameMotion) triples (None: none),
-        as repr shows them; a parent may come after its child.
+        as repr shows them; a parent may come after its child. See the class.
         """
     def __repr__(self) -> str:
         ...
@@ -232,15 +438,98 @@ class FrameTree:
     def add_frame(self, name: typing.Any, parent: typing.Any, motion: typing.Any) -> None:
         """
         Adds frame `name` under `parent` (which must exist), placed by `motion`.
+        
+        Parameters
+        ----------
+        name : str
+            The new frame's name (not in the tree yet).
+        parent : str
+            An existing frame.
+        motion : FrameMotion
+            How the new frame moves relative to `parent`.
+        
+        Raises
+        ------
+        ValueError
+            A duplicate name or an unknown parent (naming it).
+        
+        Examples
+        --------
+        >>> tree = rd.FrameTree()
+        >>> tree.add_frame("table", "world", rd.FrameMotion.fixed(p_PF_P=[0.0, 0.0, 1.0]))
+        >>> tree.frame_names(), tree.parent("table")
+        (['world', 'table'], 'world')
         """
     def angular_acceleration(self, frame: typing.Any, relative_to: typing.Any, expressed_in: typing.Any, t: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
         """
         alpha_AF_E (3,) [rad/s^2]: d/dt in A of w_AF, expressed in E (includes the w x w terms; no
         addition theorem for angular accelerations, Craig's "Rigid Body Dynamics" slides).
+        
+        Parameters
+        ----------
+        frame : str
+            F, the frame queried.
+        relative_to : str
+            A, the frame it is seen from.
+        expressed_in : str
+            E, the frame the result is expressed in.
+        t : float
+            Time [s].
+        
+        Returns
+        -------
+        ndarray, shape (3,)
+            alpha_AF_E [rad/s^2].
+        
+        Raises
+        ------
+        ValueError
+            An unknown frame name, or a value of a user motion that is not finite or not a rotation (naming
+            the frame).
+        
+        Examples
+        --------
+        An arm 2 m out on a table turning at 1 rad/s about z:
+        
+        >>> tree = rd.FrameTree([("table", "world", rd.FrameMotion.constant_rotation([0, 0, 1], 1.0)),
+        ...                      ("arm", "table", rd.FrameMotion.fixed(p_PF_P=[2.0, 0, 0]))])
+        >>> tree.angular_acceleration("arm", "world", "world", 0.0)
+        array([0., 0., 0.])
         """
     def angular_velocity(self, frame: typing.Any, relative_to: typing.Any, expressed_in: typing.Any, t: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
         """
         w_AF_E (3,) [rad/s]: angular velocity of F relative to A (addition theorem), expressed in E.
+        
+        Parameters
+        ----------
+        frame : str
+            F, the frame queried.
+        relative_to : str
+            A, the frame it is seen from.
+        expressed_in : str
+            E, the frame the result is expressed in.
+        t : float
+            Time [s].
+        
+        Returns
+        -------
+        ndarray, shape (3,)
+            w_AF_E [rad/s].
+        
+        Raises
+        ------
+        ValueError
+            An unknown frame name, or a value of a user motion that is not finite or not a rotation (naming
+            the frame).
+        
+        Examples
+        --------
+        An arm 2 m out on a table turning at 1 rad/s about z:
+        
+        >>> tree = rd.FrameTree([("table", "world", rd.FrameMotion.constant_rotation([0, 0, 1], 1.0)),
+        ...                      ("arm", "table", rd.FrameMotion.fixed(p_PF_P=[2.0, 0, 0]))])
+        >>> tree.angular_velocity("arm", "world", "arm", 0.0)
+        array([0., 0., 1.])
         """
     def frame_names(self) -> list[str]:
         """
@@ -249,59 +538,357 @@ class FrameTree:
     def has_frame(self, name: typing.Any) -> bool:
         """
         True if a frame of this name is in the tree.
+        
+        Parameters
+        ----------
+        name : str
+        
+        Returns
+        -------
+        bool
+        
+        Examples
+        --------
+        >>> rd.FrameTree().has_frame("world"), rd.FrameTree().has_frame("arm")
+        (True, False)
         """
     def kinematics(self, frame: typing.Any, relative_to: typing.Any, t: typing.Any) -> FrameKinematics:
         """
         FrameKinematics of `frame` F relative to `relative_to` A at t, expressed in A.
+        
+        Parameters
+        ----------
+        frame : str
+            F, the frame queried.
+        relative_to : str
+            A, the frame it is seen from.
+        t : float
+            Time [s].
+        
+        Returns
+        -------
+        FrameKinematics
+            F relative to A, every vector expressed in A (SI units).
+        
+        Raises
+        ------
+        ValueError
+            An unknown frame name, or a value of a user motion that is not finite or not a rotation (naming
+            the frame).
+        
+        Examples
+        --------
+        An arm 2 m out on a table turning at 1 rad/s about z:
+        
+        >>> tree = rd.FrameTree([("table", "world", rd.FrameMotion.constant_rotation([0, 0, 1], 1.0)),
+        ...                      ("arm", "table", rd.FrameMotion.fixed(p_PF_P=[2.0, 0, 0]))])
+        >>> tree.kinematics("arm", "world", 0.0).v_PF_P
+        array([0., 2., 0.])
         """
     def motion(self, name: typing.Any) -> FrameMotion:
         """
         The FrameMotion placing frame `name` in its parent ('world': fixed at the identity).
+        
+        Parameters
+        ----------
+        name : str
+            A frame of the tree (ValueError otherwise).
+        
+        Returns
+        -------
+        FrameMotion
+        
+        Examples
+        --------
+        >>> rd.FrameTree().motion("world").at(0.0).p_PF_P
+        array([0., 0., 0.])
         """
     def parent(self, name: typing.Any) -> str:
         """
         The parent's name ('' for 'world').
+        
+        Parameters
+        ----------
+        name : str
+            A frame of the tree (ValueError otherwise).
+        
+        Returns
+        -------
+        str
+        
+        Examples
+        --------
+        >>> rd.FrameTree().parent("world")
+        ''
         """
     def point_acceleration(self, frame: typing.Any, p_FQ_F: typing.Any, v_FQ_F: typing.Any, a_FQ_F: typing.Any, relative_to: typing.Any, expressed_in: typing.Any, t: typing.Any) -> PointAcceleration:
         """
         PointAcceleration of Q seen from A (origin, tangential, centripetal, relative, coriolis, total),
         terms expressed in E [m/s^2]; a_FQ_F (3,): Q's acceleration seen from F, expressed in F.
+        
+        Parameters
+        ----------
+        frame : str
+            F, the frame queried.
+        p_FQ_F : array_like, shape (3,)
+            Q relative to F's origin [m], in F.
+        v_FQ_F : array_like, shape (3,)
+            Q's velocity seen from F [m/s], in F.
+        a_FQ_F : array_like, shape (3,)
+            Q's acceleration seen from F [m/s^2], in F.
+        relative_to : str
+            A, the frame it is seen from.
+        expressed_in : str
+            E, the frame the result is expressed in.
+        t : float
+            Time [s].
+        
+        Returns
+        -------
+        PointAcceleration
+            origin, tangential, centripetal, relative, coriolis and total [m/s^2], in E.
+        
+        Raises
+        ------
+        ValueError
+            An unknown frame name, or a value of a user motion that is not finite or not a rotation (naming
+            the frame).
+        
+        Examples
+        --------
+        An arm 2 m out on a table turning at 1 rad/s about z:
+        
+        >>> tree = rd.FrameTree([("table", "world", rd.FrameMotion.constant_rotation([0, 0, 1], 1.0)),
+        ...                      ("arm", "table", rd.FrameMotion.fixed(p_PF_P=[2.0, 0, 0]))])
+        >>> tree.point_acceleration("arm", [0, 0, 0], [0, 0, 0], [0, 0, 0], "world", "world", 0.0).origin
+        array([-2.,  0.,  0.])
         """
     def point_position(self, frame: typing.Any, p_FQ_F: typing.Any, relative_to: typing.Any, expressed_in: typing.Any, t: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
         """
         p_AQ_E (3,) [m]: position of Q relative to A's origin, expressed in E; p_FQ_F (3,): Q relative
         to F's origin, expressed in F.
+        
+        Parameters
+        ----------
+        frame : str
+            F, the frame queried.
+        p_FQ_F : array_like, shape (3,)
+            Q relative to F's origin [m], in F.
+        relative_to : str
+            A, the frame it is seen from.
+        expressed_in : str
+            E, the frame the result is expressed in.
+        t : float
+            Time [s].
+        
+        Returns
+        -------
+        ndarray, shape (3,)
+            p_AQ_E [m].
+        
+        Raises
+        ------
+        ValueError
+            An unknown frame name, or a value of a user motion that is not finite or not a rotation (naming
+            the frame).
+        
+        Examples
+        --------
+        An arm 2 m out on a table turning at 1 rad/s about z:
+        
+        >>> tree = rd.FrameTree([("table", "world", rd.FrameMotion.constant_rotation([0, 0, 1], 1.0)),
+        ...                      ("arm", "table", rd.FrameMotion.fixed(p_PF_P=[2.0, 0, 0]))])
+        >>> tree.point_position("arm", [1.0, 0, 0], "world", "world", np.pi / 2).round(12)
+        array([0., 3., 0.])
         """
     def point_velocity(self, frame: typing.Any, p_FQ_F: typing.Any, v_FQ_F: typing.Any, relative_to: typing.Any, expressed_in: typing.Any, t: typing.Any) -> PointVelocity:
         """
         PointVelocity of Q seen from A, terms expressed in E. Q at p_FQ_F [m] moving with v_FQ_F [m/s] as
         seen from F (both (3,), expressed in F; zeros for a point fixed in F).
+        
+        Parameters
+        ----------
+        frame : str
+            F, the frame queried.
+        p_FQ_F : array_like, shape (3,)
+            Q relative to F's origin [m], in F.
+        v_FQ_F : array_like, shape (3,)
+            Q's velocity seen from F [m/s], in F.
+        relative_to : str
+            A, the frame it is seen from.
+        expressed_in : str
+            E, the frame the result is expressed in.
+        t : float
+            Time [s].
+        
+        Returns
+        -------
+        PointVelocity
+            origin, rotational, relative and total [m/s], in E.
+        
+        Raises
+        ------
+        ValueError
+            An unknown frame name, or a value of a user motion that is not finite or not a rotation (naming
+            the frame).
+        
+        Examples
+        --------
+        An arm 2 m out on a table turning at 1 rad/s about z:
+        
+        >>> tree = rd.FrameTree([("table", "world", rd.FrameMotion.constant_rotation([0, 0, 1], 1.0)),
+        ...                      ("arm", "table", rd.FrameMotion.fixed(p_PF_P=[2.0, 0, 0]))])
+        >>> tree.point_velocity("arm", [0, 0, 0], [0, 0, 0], "world", "world", 0.0).total
+        array([0., 2., 0.])
         """
     def rotation(self, frame: typing.Any, relative_to: typing.Any, t: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
         """
         R_AF (3,3): maps `frame` F coordinates to `relative_to` A coordinates at t.
+        
+        Parameters
+        ----------
+        frame : str
+            F, the frame queried.
+        relative_to : str
+            A, the frame it is seen from.
+        t : float
+            Time [s].
+        
+        Returns
+        -------
+        ndarray, shape (3, 3)
+            R_AF.
+        
+        Raises
+        ------
+        ValueError
+            An unknown frame name, or a value of a user motion that is not finite or not a rotation (naming
+            the frame).
+        
+        Examples
+        --------
+        An arm 2 m out on a table turning at 1 rad/s about z:
+        
+        >>> tree = rd.FrameTree([("table", "world", rd.FrameMotion.constant_rotation([0, 0, 1], 1.0)),
+        ...                      ("arm", "table", rd.FrameMotion.fixed(p_PF_P=[2.0, 0, 0]))])
+        >>> bool(np.allclose(tree.rotation("arm", "world", np.pi / 2), rd.rot_z(np.pi / 2)))
+        True
         """
     def set_parent(self, name: typing.Any, parent: typing.Any, motion: typing.Any) -> None:
         """
         Moves frame `name` and its subtree under `parent`, placed by `motion`. ValueError if that would
         make a cycle (parent is `name` or one of its descendants) or `name` is 'world'.
+        
+        Parameters
+        ----------
+        name : str
+            The frame to move.
+        parent : str
+            Its new parent.
+        motion : FrameMotion
+            How it moves relative to the new parent.
+        
+        Examples
+        --------
+        >>> tree = rd.FrameTree([("a", "world", rd.FrameMotion.fixed()), ("b", "world", rd.FrameMotion.fixed())])
+        >>> tree.set_parent("b", "a", rd.FrameMotion.fixed())
+        >>> tree.parent("b")
+        'a'
         """
     def transport_derivative(self, u_E: typing.Any, du_B_E: typing.Any, from_frame: typing.Any, to_frame: typing.Any, expressed_in: typing.Any, t: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
         """
         Transport theorem (Craig's "Rigid Body Dynamics" slides): the derivative of u seen from
         A = `to_frame`, from its derivative du_B_E seen from B = `from_frame`: du_B_E + w_AB x u_E. u_E,
         du_B_E and the result (3,) in E.
+        
+        Parameters
+        ----------
+        u_E : array_like, shape (3,)
+            The vector u (any unit), in E.
+        du_B_E : array_like, shape (3,)
+            Its derivative seen from B [unit of u / s], in E.
+        from_frame : str
+            B.
+        to_frame : str
+            A.
+        expressed_in : str
+            E, the frame the result is expressed in.
+        t : float
+            Time [s].
+        
+        Returns
+        -------
+        ndarray, shape (3,)
+            The derivative of u seen from A [unit of u / s], in E.
+        
+        Raises
+        ------
+        ValueError
+            An unknown frame name, or a value of a user motion that is not finite or not a rotation (naming
+            the frame).
+        
+        Examples
+        --------
+        An arm 2 m out on a table turning at 1 rad/s about z:
+        
+        >>> tree = rd.FrameTree([("table", "world", rd.FrameMotion.constant_rotation([0, 0, 1], 1.0)),
+        ...                      ("arm", "table", rd.FrameMotion.fixed(p_PF_P=[2.0, 0, 0]))])
+        >>> tree.transport_derivative([1.0, 0, 0], [0, 0, 0], "table", "world", "world", 0.0)
+        array([0., 1., 0.])
         """
 class Force:
     """
-    Spatial force vector (wrench) [n; f], angular part first: n moment [N m] about the
-    origin of the frame of expression, f force [N].
+    Spatial force vector (wrench) F = [n; f], angular part first.
+    
+    n is the moment [N m] about the origin of the frame of expression and f the force [N], both expressed in
+    that frame: Featherstone's convention ("Rigid Body Dynamics Algorithms"), moment first as in
+    MuJoCo and Drake. The order matters only at to_vector / from_vector.
+    
+    Parameters
+    ----------
+    angular : array_like, shape (3,), optional
+        n [N m] about the frame's origin (None: zero).
+    linear : array_like, shape (3,), optional
+        f [N] (None: zero).
+    
+    Raises
+    ------
+    ValueError
+        A part of another shape or non-finite (the message names it).
+    
+    See Also
+    --------
+    Motion, Transform, force_cross_matrix
+    
+    Examples
+    --------
+    A force f = (0, 1, 0) [N] through (1, 0, 0) [m], moved to the origin, has the moment p x f:
+    
+    >>> F = rd.Transform(translation=[1.0, 0.0, 0.0]).act(rd.Force(linear=[0.0, 1.0, 0.0]))
+    >>> F.to_vector()
+    array([0., 0., 1., 0., 1., 0.])
+    
+    Immutable; supports +, -, scalar *; pickles; == compares exactly.
     """
     __hash__: typing.ClassVar[None] = None
     @staticmethod
     def from_vector(vector: typing.Any) -> Force:
         """
-        Force from a (6,) array [n; f].
+        Force from a (6,) array [n; f], moment first ([N m], [N]); ValueError on another shape or NaN/Inf.
+        
+        Parameters
+        ----------
+        vector : array_like, shape (6,)
+            [n; f] ([N m], [N]).
+        
+        Returns
+        -------
+        Force
+        
+        Examples
+        --------
+        >>> rd.Force.from_vector([0.0, 0.0, 1.0, 0.0, 2.0, 0.0]).angular
+        array([0., 0., 1.])
         """
     def __add__(self, arg0: typing.Any) -> typing.Any:
         ...
@@ -313,7 +900,7 @@ class Force:
         ...
     def __init__(self, angular: typing.Any = None, linear: typing.Any = None) -> None:
         """
-        Force from n (3,) [N m] and f (3,) [N] (None: zero).
+        Force from n (3,) [N m] and f (3,) [N] in one frame (None: zero); see the class.
         """
     def __mul__(self, arg0: typing.Any) -> Force:
         ...
@@ -330,15 +917,53 @@ class Force:
     def dot(self, motion: typing.Any) -> float:
         """
         Power w . n + v . f [W] of this force on the motion (same frame and reference point).
+        
+        Parameters
+        ----------
+        motion : Motion
+            [w; v] ([rad/s], [m/s]), in this force's frame.
+        
+        Returns
+        -------
+        float
+            The power [W], the same in every frame.
+        
+        Examples
+        --------
+        >>> rd.Force([0.0, 0.0, 2.0], [3.0, 0.0, 0.0]).dot(rd.Motion([0.0, 0.0, 1.0], [1.0, 0.0, 0.0]))
+        5.0
         """
     def is_approx(self, other: typing.Any, prec: typing.Any = 1e-12) -> bool:
         """
         True when the 6-vectors agree to `prec` relative to the smaller norm (Eigen's isApprox: |a - b| <=
         prec min(|a|, |b|), so only an exactly zero Force is close to zero). == compares exactly.
+        
+        Parameters
+        ----------
+        other : Force
+            In the same frame.
+        prec : float, default 1e-12
+            Relative tolerance, >= 0.
+        
+        Returns
+        -------
+        bool
+        
+        Raises
+        ------
+        TypeError
+            other not a Force.
+        ValueError
+            prec negative or not finite.
+        
+        Examples
+        --------
+        >>> rd.Force([1.0, 0.0, 0.0]).is_approx(rd.Force([1.0 + 1e-14, 0.0, 0.0]))
+        True
         """
     def to_vector(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        [n; f] as a (6,) array.
+        [n; f] as a (6,) array, moment first ([N m], [N]), in the force's frame.
         """
     @property
     def angular(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -352,14 +977,62 @@ class Force:
         """
 class Motion:
     """
-    Spatial motion vector (twist) [w; v], angular part first: w angular velocity [rad/s], v
-    velocity [m/s] of the body point at the origin of the frame of expression.
+    Spatial motion vector (twist) V = [w; v], angular part first.
+    
+    w is the angular velocity [rad/s] and v the velocity [m/s] of the body point at the origin of the frame
+    of expression, both expressed in that frame: Plücker coordinates in Featherstone's convention ("Rigid
+    Body Dynamics Algorithms"), the order of MuJoCo, Drake and RigidBodyDynamics.jl (Pinocchio puts
+    the linear part first). The order matters only at to_vector / from_vector.
+    
+    Parameters
+    ----------
+    angular : array_like, shape (3,), optional
+        w [rad/s] (None: zero).
+    linear : array_like, shape (3,), optional
+        v [m/s] of the body point at the frame's origin (None: zero).
+    
+    Raises
+    ------
+    ValueError
+        A part of another shape or non-finite (the message names it).
+    
+    See Also
+    --------
+    Force, Transform, motion_cross_matrix, twist_to_screw
+    
+    Examples
+    --------
+    The power w . n + v . f of a force on a motion is the same in every frame:
+    
+    >>> V = rd.Motion([0.0, 0.0, 1.0], [1.0, 0.0, 0.0])
+    >>> V.to_vector()
+    array([0., 0., 1., 1., 0., 0.])
+    >>> F = rd.Force([0.0, 0.0, 2.0], [0.0, 3.0, 0.0])
+    >>> X = rd.Transform(rd.rot_z(np.pi / 2), [1.0, 0.0, 0.0])
+    >>> V.dot(F), bool(np.isclose(X.act(V).dot(X.act(F)), V.dot(F)))
+    (2.0, True)
+    
+    Immutable; supports +, -, scalar *; pickles; == compares exactly.
     """
     __hash__: typing.ClassVar[None] = None
     @staticmethod
     def from_vector(vector: typing.Any) -> Motion:
         """
-        Motion from a (6,) array [w; v].
+        Motion from a (6,) array [w; v], angular first ([rad/s], [m/s]); ValueError on another shape or NaN/Inf.
+        
+        Parameters
+        ----------
+        vector : array_like, shape (6,)
+            [w; v] ([rad/s], [m/s]).
+        
+        Returns
+        -------
+        Motion
+        
+        Examples
+        --------
+        >>> rd.Motion.from_vector([0.0, 0.0, 1.0, 1.0, 0.0, 0.0]).linear
+        array([1., 0., 0.])
         """
     def __add__(self, arg0: typing.Any) -> typing.Any:
         ...
@@ -371,7 +1044,7 @@ class Motion:
         ...
     def __init__(self, angular: typing.Any = None, linear: typing.Any = None) -> None:
         """
-        Motion from w (3,) [rad/s] and v (3,) [m/s] (None: zero).
+        Motion from w (3,) [rad/s] and v (3,) [m/s] in one frame (None: zero); see the class.
         """
     def __mul__(self, arg0: typing.Any) -> Motion:
         ...
@@ -387,24 +1060,91 @@ class Motion:
         ...
     def cross(self, other: typing.Any) -> Motion:
         """
-        Motion cross product (crm): self x other = [w1 x w2; w1 x v2 + v1 x w2].
+        Motion cross product (crm): self x other = [w1 x w2; w1 x v2 + v1 x w2], in the common frame
+        ([rad/s^2], [m/s^2] for two twists).
+        
+        Parameters
+        ----------
+        other : Motion
+            In the same frame.
+        
+        Returns
+        -------
+        Motion
+        
+        Examples
+        --------
+        >>> rd.Motion([0.0, 0.0, 1.0]).cross(rd.Motion(linear=[1.0, 0.0, 0.0])).linear
+        array([0., 1., 0.])
         """
     def cross_force(self, force: typing.Any) -> Force:
         """
-        Force cross product (crf): self x* force = [w x n + v x f; w x f].
+        Force cross product (crf): self x* force = [w x n + v x f; w x f] ([N m/s], [N/s]), in the common frame.
+        
+        Parameters
+        ----------
+        force : Force
+            In this motion's frame.
+        
+        Returns
+        -------
+        Force
+        
+        Examples
+        --------
+        >>> rd.Motion([0.0, 0.0, 1.0]).cross_force(rd.Force(linear=[1.0, 0.0, 0.0])).linear
+        array([0., 1., 0.])
         """
     def dot(self, force: typing.Any) -> float:
         """
         Power w . n + v . f [W] of the force on this motion (same frame and reference point).
+        
+        Parameters
+        ----------
+        force : Force
+            [n; f] ([N m], [N]), in this motion's frame.
+        
+        Returns
+        -------
+        float
+            The power [W], the same in every frame.
+        
+        Examples
+        --------
+        >>> rd.Motion([0.0, 0.0, 1.0], [1.0, 0.0, 0.0]).dot(rd.Force([0.0, 0.0, 2.0], [3.0, 0.0, 0.0]))
+        5.0
         """
     def is_approx(self, other: typing.Any, prec: typing.Any = 1e-12) -> bool:
         """
         True when the 6-vectors agree to `prec` relative to the smaller norm (Eigen's isApprox: |a - b| <=
         prec min(|a|, |b|), so only an exactly zero Motion is close to zero). == compares exactly.
+        
+        Parameters
+        ----------
+        other : Motion
+            In the same frame.
+        prec : float, default 1e-12
+            Relative tolerance, >= 0.
+        
+        Returns
+        -------
+        bool
+        
+        Raises
+        ------
+        TypeError
+            other not a Motion.
+        ValueError
+            prec negative or not finite.
+        
+        Examples
+        --------
+        >>> rd.Motion([1.0, 0.0, 0.0]).is_approx(rd.Motion([1.0 + 1e-14, 0.0, 0.0]))
+        True
         """
     def to_vector(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        [w; v] as a (6,) array.
+        [w; v] as a (6,) array, angular first ([rad/s], [m/s]), in the motion's frame.
         """
     @property
     def angular(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -418,15 +1158,69 @@ class Motion:
         """
 class Transform:
     """
-    Rigid transform X_AB: R_AB (B coordinates -> A coordinates) and p_AB (B's origin in A)
-    [m]. Maps points, motions and forces expressed in B to A; X_AB * X_BC = X_AC.
+    Rigid transform X_AB: R_AB (B coordinates -> A coordinates) and p_AB (B's origin in A) [m].
+    
+    Maps points (p_A = R_AB p_B + p_AB), motions and forces expressed in B to A; X_AB * X_BC = X_AC. On
+    spatial vectors (angular part first) it is Featherstone's X (motion_matrix) and X* (force_matrix).
+    
+    Parameters
+    ----------
+    rotation : array_like, shape (3, 3), optional
+        R_AB, orthonormal with det +1 (None: identity).
+    translation : array_like, shape (3,), optional
+        p_AB [m], B's origin in A (None: zero).
+    
+    Raises
+    ------
+    ValueError
+        A non-rotation or non-finite input (the message names it).
+    
+    See Also
+    --------
+    transform_compose, transform_points, Motion, Force
+    
+    Examples
+    --------
+    B turned a quarter turn about z, its origin at (1, 0, 0) in A:
+    
+    >>> X_AB = rd.Transform(rd.rot_z(np.pi / 2), [1.0, 0.0, 0.0])
+    >>> X_AB.act_point([1.0, 0.0, 0.0]).round(12)
+    array([1., 1., 0.])
+    >>> (X_AB * X_AB.inverse()).is_approx(rd.Transform())
+    True
+    
+    Immutable; pickles; == compares exactly.
     """
     __hash__: typing.ClassVar[None] = None
     @staticmethod
     def from_quat(q_AB: typing.Any, translation: typing.Any = None, scalar_first: typing.Any = False) -> Transform:
         """
-        X_AB from the unit quaternion q_AB (4,) ((x, y, z, w), or (w, x, y, z) if scalar_first) and
-        p_AB (3,) [m] (default zero).
+        X_AB from a unit quaternion and a translation.
+        
+        Parameters
+        ----------
+        q_AB : array_like, shape (4,)
+            Unit quaternion B -> A, (x, y, z, w), or (w, x, y, z) if `scalar_first`.
+        translation : array_like, shape (3,), optional
+            p_AB [m], B's origin in A (None: zero).
+        scalar_first : bool, default False
+            Read q_AB scalar first.
+        
+        Returns
+        -------
+        Transform
+            X_AB.
+        
+        Raises
+        ------
+        ValueError
+            A quaternion not of unit norm, or a non-finite or badly shaped argument (naming it).
+        
+        Examples
+        --------
+        >>> X = rd.Transform.from_quat([0.0, 0.0, np.sin(np.pi / 4), np.cos(np.pi / 4)], [1.0, 0.0, 0.0])
+        >>> X.is_approx(rd.Transform(rd.rot_z(np.pi / 2), [1.0, 0.0, 0.0]))
+        True
         """
     def __eq__(self, arg0: typing.Any) -> typing.Any:
         """
@@ -437,7 +1231,7 @@ class Transform:
     def __init__(self, rotation: typing.Any = None, translation: typing.Any = None) -> None:
         """
         X_AB from rotation R_AB (3,3), orthonormal with det +1 (default identity), and translation
-        p_AB (3,) [m] (default zero). ValueError on a non-rotation or non-finite input.
+        p_AB (3,) [m] (default zero); see the class. ValueError on a non-rotation or non-finite input.
         """
     def __mul__(self, arg0: typing.Any) -> typing.Any:
         """
@@ -449,19 +1243,98 @@ class Transform:
         ...
     def act(self, spatial_vector: typing.Any) -> typing.Any:
         """
-        A Motion in B -> in A: [R w; R v + p x (R w)]; a Force in B -> in A: [R n + p x (R f); R f].
+        Express a spatial vector given in B in A (Featherstone's X for a Motion, X* for a Force).
+        
+        A Motion in B -> in A: [R w; R v + p x (R w)]; a Force in B -> in A: [R n + p x (R f); R f]
+        (R = R_AB, p = p_AB, angular part first).
+        
+        Parameters
+        ----------
+        spatial_vector : Motion or Force
+            Expressed in B (a Force's moment about B's origin).
+        
+        Returns
+        -------
+        Motion or Force
+            The same vector expressed in A (about A's origin).
+        
+        Raises
+        ------
+        TypeError
+            spatial_vector neither a Motion nor a Force.
+        
+        Examples
+        --------
+        >>> rd.Transform(translation=[1.0, 0.0, 0.0]).act(rd.Force(linear=[0.0, 1.0, 0.0])).angular
+        array([0., 0., 1.])
         """
     def act_inv(self, spatial_vector: typing.Any) -> typing.Any:
         """
-        A Motion in A -> in B: [R^T w; R^T (v - p x w)]; a Force in A -> in B: [R^T (n - p x f); R^T f].
+        Express a spatial vector given in A in B, the inverse of act.
+        
+        A Motion in A -> in B: [R^T w; R^T (v - p x w)]; a Force in A -> in B: [R^T (n - p x f); R^T f]
+        (R = R_AB, p = p_AB, angular part first).
+        
+        Parameters
+        ----------
+        spatial_vector : Motion or Force
+            Expressed in A.
+        
+        Returns
+        -------
+        Motion or Force
+            The same vector expressed in B.
+        
+        Raises
+        ------
+        TypeError
+            spatial_vector neither a Motion nor a Force.
+        
+        Examples
+        --------
+        >>> X, V = rd.Transform(rd.rot_z(np.pi / 2), [1.0, 0.0, 0.0]), rd.Motion([0.0, 0.0, 1.0], [1.0, 0.0, 0.0])
+        >>> X.act_inv(X.act(V)).is_approx(V)
+        True
         """
     def act_inv_point(self, p_A: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
         """
-        p_B = R_AB^T (p_A - p_AB) for points p_A (3,) or (n, 3) [m].
+        Map points from A to B: p_B = R_AB^T (p_A - p_AB), the inverse of act_point.
+        
+        Parameters
+        ----------
+        p_A : array_like, shape (3,) or (n, 3)
+            Points in A [m].
+        
+        Returns
+        -------
+        ndarray, shape (3,) or (n, 3)
+            p_B, the points in B [m].
+        
+        Examples
+        --------
+        >>> X = rd.Transform(rd.rot_z(np.pi / 2), [1.0, 0.0, 0.0])
+        >>> X.act_inv_point(X.act_point([[1.0, 2.0, 3.0], [4.0, 5.0, 6.0]])).round(12)
+        array([[1., 2., 3.],
+               [4., 5., 6.]])
         """
     def act_point(self, p_B: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
         """
-        p_A = R_AB p_B + p_AB for points p_B (3,) or (n, 3) [m].
+        Map points from B to A: p_A = R_AB p_B + p_AB.
+        
+        Parameters
+        ----------
+        p_B : array_like, shape (3,) or (n, 3)
+            Points in B [m].
+        
+        Returns
+        -------
+        ndarray, shape (3,) or (n, 3)
+            p_A, the points in A [m].
+        
+        Examples
+        --------
+        >>> rd.Transform(rd.rot_z(np.pi / 2), [1.0, 0.0, 0.0]).act_point([1.0, 0.0, 0.0]).round(12)
+        array([1., 1., 0.])
         """
     def force_matrix(self) -> numpy.typing.NDArray[numpy.float64]:
         """
@@ -469,7 +1342,7 @@ class Transform:
         """
     def inverse(self) -> Transform:
         """
-        X_BA = X_AB^-1.
+        X_BA = X_AB^-1: R_BA = R_AB^T, p_BA = -R_AB^T p_AB [m].
         """
     def is_approx(self, other: typing.Any, prec: typing.Any = 1e-12) -> bool:
         """
@@ -482,23 +1355,63 @@ class Transform:
         """
     def quat(self, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
         """
-        q_AB (4,) with w >= 0, (x, y, z, w) or (w, x, y, z) if scalar_first.
+        The rotation R_AB as a unit quaternion q_AB.
+        
+        Parameters
+        ----------
+        scalar_first : bool, default False
+            Return (w, x, y, z) instead of (x, y, z, w).
+        
+        Returns
+        -------
+        ndarray, shape (4,)
+            q_AB with w >= 0.
+        
+        Examples
+        --------
+        >>> rd.Transform(rd.rot_z(np.pi / 2)).quat(scalar_first=True).round(12)
+        array([0.70710678, 0.        , 0.        , 0.70710678])
         """
     @property
     def rotation(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        R_AB (3,3), read-only copy
+        R_AB (3,3): maps B coordinates to A coordinates; read-only copy
         """
     @property
     def translation(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        p_AB (3,) [m], read-only copy
+        p_AB (3,) [m]: B's origin relative to A's, expressed in A; read-only copy
         """
 class Screw:
     """
-    Screw of a twist (instantaneous screw axis): unit direction, point of the axis closest to
-    the origin [m], pitch [m/rad] (inf for a pure translation) and magnitude (|w| [rad/s], or
-    |v| [m/s] for a pure translation), all in the twist's frame.
+    Screw of a twist (instantaneous screw axis), all in the twist's frame.
+    
+    A unit direction, the point of the axis closest to the origin [m], the pitch [m/rad] (inf for a pure
+    translation) and the magnitude (|w| [rad/s], or |v| [m/s] for a pure translation): the twist turns at
+    `magnitude` about the axis while it slides along it at pitch times that.
+    
+    Parameters
+    ----------
+    direction : array_like, shape (3,)
+        Unit axis direction (checked by screw_to_twist).
+    point : array_like, shape (3,)
+        A point of the axis [m].
+    pitch : float
+        Translation per turn angle [m/rad]; inf for a pure translation.
+    magnitude : float
+        |w| [rad/s] (or |v| [m/s] for pitch inf).
+    
+    See Also
+    --------
+    twist_to_screw, screw_to_twist, Motion
+    
+    Examples
+    --------
+    >>> s = rd.Screw([0.0, 0.0, 1.0], [-1.0, 0.0, 0.0], 0.25, 2.0)
+    >>> rd.screw_to_twist(s).to_vector()
+    array([0. , 0. , 2. , 0. , 2. , 0.5])
+    
+    Immutable; pickles; == compares every part exactly.
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, arg0: typing.Any) -> typing.Any:
@@ -519,17 +1432,17 @@ class Screw:
     @property
     def direction(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        unit (3,), expressed in the twist's frame
+        Unit axis direction (3,), expressed in the twist's frame.
         """
     @property
     def magnitude(self) -> float:
         """
-        |w| [rad/s], or |v| [m/s] for a pure translation
+        Magnitude |w| [rad/s], or |v| [m/s] for a pure translation.
         """
     @property
     def pitch(self) -> float:
         """
-        [m/rad]; inf for a pure translation
+        Pitch [m/rad] along the axis; inf for a pure translation.
         """
     @property
     def point(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -538,10 +1451,29 @@ class Screw:
         """
 class InertiaCheck:
     """
-    What a constructor requires of a rotational inertia: `physical` (symmetric, PSD,
-    triangle inequality I0 + I1 >= I2 on the principal moments) or `allow_unrealizable`
-    (symmetric PSD only; a documented opt-in for test problems such as
-    Hairer-Lubich-Wanner's I = diag(2, 1, 2/3), never the default).
+    What a constructor requires of a rotational inertia.
+    
+    `physical`: symmetric, positive semi-definite and the triangle inequality I0 + I1 >= I2 on the
+    principal moments (every real body). `allow_unrealizable`: symmetric positive semi-definite only; a
+    documented opt-in for test problems such as Hairer-Lubich-Wanner's I = diag(2, 1, 2/3), never the
+    default.
+    
+    Parameters
+    ----------
+    value : int
+        0 (physical) or 1 (allow_unrealizable); TypeError otherwise.
+    
+    See Also
+    --------
+    SpatialInertia, inertia_report
+    
+    Examples
+    --------
+    >>> I = np.diag([2.0, 1.0, 2 / 3])
+    >>> rd.SpatialInertia(1.0, [0, 0, 0], I, check=rd.InertiaCheck.allow_unrealizable).mass
+    1.0
+    >>> rd.InertiaCheck(0)
+    <InertiaCheck.physical: 0>
     
     Members:
     
@@ -592,7 +1524,24 @@ class InertiaCheck:
         ...
 class InertiaReport:
     """
-    Validity report of (mass, inertia about the centre of mass); see inertia_report.
+    Validity report of a mass and a rotational inertia about the centre of mass.
+    
+    Made by inertia_report and SpatialInertia.report; == compares every field; it pickles.
+    
+    Parameters
+    ----------
+    mass, inertia_com, scale
+        As inertia_report (there is no constructor from Python).
+    
+    See Also
+    --------
+    inertia_report, nearest_valid_inertia
+    
+    Examples
+    --------
+    >>> r = rd.solid_box([1.0, 1.0, 1.0], mass=12.0).report()
+    >>> r.valid(), r.principal_moments.round(12), r.condition_number
+    (True, array([2., 2., 2.]), 1.0)
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, arg0: typing.Any) -> typing.Any:
@@ -607,68 +1556,117 @@ class InertiaReport:
         ...
     def summary(self) -> str:
         """
-        One line with the key numbers.
+        One line with the principal moments and triangle margins [kg m^2], condition number, tolerance
+        [kg m^2] and verdict.
         """
     def valid(self, check: typing.Any = InertiaCheck.physical) -> bool:
         """
-        True when every check required by `check` passes.
+        Whether every check required by `check` passes.
+        
+        Parameters
+        ----------
+        check : InertiaCheck, default InertiaCheck.physical
+            physical: mass, finite, symmetric, PSD and triangle inequality; allow_unrealizable: all but
+            the last.
+        
+        Returns
+        -------
+        bool
         """
     @property
     def asymmetry(self) -> float:
         """
-        max |I - I^T| [kg m^2]
+        Largest asymmetry max |I - I^T| [kg m^2] of the inertia about the centre of mass.
         """
     @property
     def asymmetry_tolerance(self) -> float:
         """
-        largest asymmetry accepted, 1e-12 max |I_ij| [kg m^2]
+        Largest asymmetry accepted, 1e-12 max |I_ij| [kg m^2].
         """
     @property
     def condition_number(self) -> float:
         """
-        I2 / I0 (inf when I0 <= 0)
+        Condition number I2 / I0 of the principal moments, dimensionless (inf when I0 <= 0).
         """
     @property
     def finite(self) -> bool:
-        ...
+        """
+        Whether every entry of the inertia is finite.
+        """
     @property
     def mass(self) -> float:
         """
-        [kg]
+        Mass m [kg].
         """
     @property
     def mass_positive(self) -> bool:
-        ...
+        """
+        Whether the mass is finite and > 0.
+        """
     @property
     def positive_semidefinite(self) -> bool:
-        ...
+        """
+        Whether I0 >= -tolerance (the inertia is positive semi-definite).
+        """
     @property
     def principal_moments(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3,) ascending I0 <= I1 <= I2 [kg m^2] of the inertia about the centre of mass
+        Principal moments (3,) ascending I0 <= I1 <= I2 [kg m^2] of the inertia about the
+        centre of mass (its symmetric part), read-only.
         """
     @property
     def symmetric(self) -> bool:
-        ...
+        """
+        Whether asymmetry <= asymmetry_tolerance.
+        """
     @property
     def tolerance(self) -> float:
         """
-        absolute tolerance of the positive semi-definite and triangle-inequality checks [kg m^2]
+        Absolute tolerance [kg m^2] of the positive semi-definite and triangle-inequality checks.
         """
     @property
     def triangle_inequality(self) -> bool:
-        ...
+        """
+        Whether I0 + I1 - I2 >= -tolerance (the triangle inequality on the principal moments).
+        """
     @property
     def triangle_margins(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3,) (I1+I2-I0, I0+I2-I1, I0+I1-I2) [kg m^2]; the last is binding
+        Triangle margins (3,) (I1+I2-I0, I0+I2-I1, I0+I1-I2) [kg m^2]; the last is binding;
+        read-only.
         """
 class PrincipalAxes:
     """
-    Principal moments and axes of a rotational inertia (Craig "Principal Axes"), in the frame the
-    inertia is expressed in: moments ascending [kg m^2], axes as columns (column k is the unit axis of
-    moments[k]; right-handed, det +1), so that I = axes @ diag(moments) @ axes.T. For a stack of n
-    inertias, arrays (n, 3) and (n, 3, 3). Unpacks as `moments, axes = principal_axes(I)`.
+    Principal moments and axes of a rotational inertia (Craig, "Principal Axes").
+    
+    In the frame the inertia is expressed in: moments ascending [kg m^2], axes as columns (column k is
+    the unit axis of moments[k]; right-handed, det +1), so that I = axes @ diag(moments) @ axes.T. For a
+    stack of n inertias, arrays (n, 3) and (n, 3, 3). Unpacks as ``moments, axes = principal_axes(I)``.
+    
+    Parameters
+    ----------
+    moments : array_like, shape (3,) or (n, 3)
+        Principal moments [kg m^2]; copied, read-only.
+    axes : array_like, shape (3, 3) or (n, 3, 3)
+        Unit axes as columns; copied, read-only.
+    
+    Raises
+    ------
+    ValueError
+        Shapes that do not match (the message names `axes`).
+    
+    See Also
+    --------
+    principal_axes, SpatialInertia.principal_axes
+    
+    Examples
+    --------
+    >>> p = rd.solid_box([1.0, 2.0, 3.0], mass=12.0).principal_axes()
+    >>> moments, axes = p
+    >>> moments
+    array([ 5., 10., 13.])
+    >>> np.allclose(axes @ np.diag(moments) @ axes.T, np.diag([13.0, 10.0, 5.0]))
+    True
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, arg0: typing.Any) -> typing.Any:
@@ -681,7 +1679,7 @@ class PrincipalAxes:
         ...
     def __init__(self, moments: typing.Any, axes: typing.Any) -> None:
         """
-        From moments (3,) [kg m^2] and axes (3,3) (or (n,3), (n,3,3)); copied, read-only.
+        From moments (3,) [kg m^2] and axes (3,3) (or (n,3), (n,3,3)); copied, read-only; see the class.
         """
     def __iter__(self) -> typing.Any:
         ...
@@ -694,40 +1692,157 @@ class PrincipalAxes:
     @property
     def axes(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3,3) or (n,3,3): column k is the unit axis of moments[k], expressed in the inertia's frame;
-        det +1. Read-only.
+        Principal axes (3,3) or (n,3,3): column k is the unit axis of moments[k], expressed in the
+        inertia's frame; det +1. Read-only.
         """
     @property
     def moments(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3,) or (n, 3) ascending [kg m^2], read-only
+        Principal moments (3,) or (n, 3), ascending [kg m^2], read-only.
         """
 class SpatialInertia:
     """
-    Mass properties of one rigid body: mass m [kg], centre of mass c [m] and rotational inertia about
-    the centre of mass I_C [kg m^2], all expressed in one frame. Constructors check validity
-    (ValueError with the principal moments, triangle margins and condition number).
+    Mass properties of one rigid body: mass, centre of mass and rotational inertia about it.
+    
+    Mass m [kg], centre of mass c [m] and rotational inertia I_C [kg m^2] about the centre of mass, all
+    expressed in one frame (moments on the diagonal of I_C, negated products off it). Constructors check
+    validity. + composes two bodies in one frame, - removes a part (a hole); == compares exactly.
+    
+    Parameters
+    ----------
+    mass : float
+        Mass m [kg], finite and > 0.
+    com : array_like, shape (3,)
+        Centre of mass c [m].
+    inertia_com : array_like, shape (3, 3)
+        Rotational inertia about the centre of mass [kg m^2].
+    check : InertiaCheck, default InertiaCheck.physical
+        InertiaCheck.physical (triangle inequality required) or InertiaCheck.allow_unrealizable (opt-in:
+        symmetric PSD only, e.g. I = diag(2, 1, 2/3)).
+    
+    Raises
+    ------
+    ValueError
+        A mass not finite and > 0, a non-finite com, or an inertia that fails `check` (the message gives
+        its principal moments, triangle margins and condition number).
+    
+    See Also
+    --------
+    inertia_report, composite, solid_box, from_point_masses
+    
+    Examples
+    --------
+    The parallel-axis theorem: a 2 kg sphere of radius 0.5 m centred 1 m from the origin along x has,
+    about the origin, I = 2/5 m r^2 + m d^2 = 0.2 + 2 = 2.2 kg m^2 about the axes across the offset:
+    
+    >>> body = rd.SpatialInertia(2.0, [1.0, 0.0, 0.0], 0.2 * np.eye(3))
+    >>> body.inertia_about_origin().diagonal().round(12)
+    array([0.2, 2.2, 2.2])
     """
     __hash__: typing.ClassVar[None] = None
     @staticmethod
     def from_inertia_about_origin(mass: typing.Any, com: typing.Any, inertia_about_origin: typing.Any, check: typing.Any = InertiaCheck.physical) -> SpatialInertia:
         """
-        From the inertia (3,3) [kg m^2] about the frame's origin.
+        From the inertia about the frame's origin (parallel-axis theorem, Craig).
+        
+        Parameters
+        ----------
+        mass : float
+            Mass m [kg], finite and > 0.
+        com : array_like, shape (3,)
+            Centre of mass c [m].
+        inertia_about_origin : array_like, shape (3, 3)
+            Rotational inertia I_O about the origin [kg m^2].
+        check : InertiaCheck, default InertiaCheck.physical
+            What I_C must satisfy, as the constructor.
+        
+        Returns
+        -------
+        SpatialInertia
+        
+        Examples
+        --------
+        >>> body = rd.SpatialInertia.from_inertia_about_origin(3.0, [0, 0, 1.0], np.diag([4.0, 4.0, 0.0]))
+        >>> body.inertia_com.diagonal()
+        array([1., 1., 0.])
         """
     @staticmethod
     def from_inertia_about_point(mass: typing.Any, com: typing.Any, inertia_about_point: typing.Any, point: typing.Any, check: typing.Any = InertiaCheck.physical) -> SpatialInertia:
         """
-        From the inertia (3,3) [kg m^2] about `point` (3,) [m] (parallel axis, Craig).
+        From the inertia about a point (parallel-axis theorem, Craig).
+        
+        I_C = I_P - m (|r|^2 1 - r r^T), r = c - p, all in one frame.
+        
+        Parameters
+        ----------
+        mass : float
+            Mass m [kg], finite and > 0.
+        com : array_like, shape (3,)
+            Centre of mass c [m].
+        inertia_about_point : array_like, shape (3, 3)
+            Rotational inertia I_P about `point` [kg m^2].
+        point : array_like, shape (3,)
+            The point p [m].
+        check : InertiaCheck, default InertiaCheck.physical
+            What I_C must satisfy, as the constructor.
+        
+        Returns
+        -------
+        SpatialInertia
+        
+        Examples
+        --------
+        A 3 kg rod of length 2 m along z has m L^2/3 = 4 kg m^2 about its end, m L^2/12 = 1 kg m^2 about its
+        centre:
+        
+        >>> rd.SpatialInertia.from_inertia_about_point(3.0, [0, 0, 1.0], np.diag([4.0, 4.0, 0.0]),
+        ...                                            [0, 0, 2.0]).inertia_com.diagonal()
+        array([1., 1., 0.])
         """
     @staticmethod
     def from_matrix(matrix: typing.Any, check: typing.Any = InertiaCheck.physical) -> SpatialInertia:
         """
-        From the (6,6) spatial inertia about the origin, angular first [[I_O, m hat(c)], [m hat(c)^T, m 1]].
+        From the (6, 6) spatial inertia about the origin.
+        
+        Angular first: [[I_O, m hat(c)], [m hat(c)^T, m 1]] (I_O [kg m^2], m hat(c) [kg m], m [kg]).
+        
+        Parameters
+        ----------
+        matrix : array_like, shape (6, 6)
+            The spatial inertia about the frame's origin.
+        check : InertiaCheck, default InertiaCheck.physical
+            What I_C must satisfy, as the constructor.
+        
+        Returns
+        -------
+        SpatialInertia
+        
+        Examples
+        --------
+        >>> body = rd.solid_box([1.0, 2.0, 3.0], mass=12.0).transformed(rd.Transform(translation=[1.0, 0, 0]))
+        >>> rd.SpatialInertia.from_matrix(body.matrix()).is_approx(body)
+        True
         """
     @staticmethod
     def point_mass(mass: typing.Any, position: typing.Any) -> SpatialInertia:
         """
-        A point mass [kg] at position (3,) [m].
+        A point mass (zero inertia about its centre of mass).
+        
+        Parameters
+        ----------
+        mass : float
+            Mass [kg], finite and > 0.
+        position : array_like, shape (3,)
+            Its position [m], which becomes the centre of mass.
+        
+        Returns
+        -------
+        SpatialInertia
+        
+        Examples
+        --------
+        >>> rd.SpatialInertia.point_mass(2.0, [1.0, 0, 0]).inertia_about_origin().diagonal()
+        array([0., 2., 2.])
         """
     def __add__(self, arg0: SpatialInertia) -> SpatialInertia:
         """
@@ -741,9 +1856,8 @@ class SpatialInertia:
         ...
     def __init__(self, mass: typing.Any, com: typing.Any, inertia_com: typing.Any, check: typing.Any = InertiaCheck.physical) -> None:
         """
-        mass [kg] > 0, com (3,) [m], inertia_com (3,3) [kg m^2] about the centre of mass.
-        check: InertiaCheck.physical (default: triangle inequality required) or
-        InertiaCheck.allow_unrealizable (opt-in: symmetric PSD only, e.g. I = diag(2, 1, 2/3)).
+        From mass [kg] > 0, com (3,) [m] and inertia_com (3,3) [kg m^2] about the centre of mass, checked
+        as `check` requires (InertiaCheck.physical by default); see the class.
         """
     def __repr__(self) -> str:
         ...
@@ -757,39 +1871,161 @@ class SpatialInertia:
         """
         Whether the plane through the centre of mass with this normal (3,) can be a plane of symmetry
         (Craig: then the products of inertia with the normal vanish). Necessary, not sufficient.
+        
+        Parameters
+        ----------
+        normal : array_like, shape (3,)
+            The plane's normal, in the frame of expression.
+        tolerance : float, default 1e-9
+            Relative tolerance, >= 0.
+        
+        Returns
+        -------
+        bool
+        
+        Examples
+        --------
+        >>> box = rd.solid_box([1.0, 2.0, 3.0], mass=12.0)
+        >>> box.admits_symmetry_plane([1.0, 0, 0]), box.admits_symmetry_plane([1.0, 1.0, 0])
+        (True, False)
         """
     def angular_momentum_about_com(self, angular_velocity: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
         """
-        H_C = I_C w (3,) [kg m^2/s]; w (3,) [rad/s] in the frame.
+        Angular momentum about the centre of mass, H_C = I_C w.
+        
+        Parameters
+        ----------
+        angular_velocity : array_like, shape (3,)
+            w [rad/s], in the frame of expression.
+        
+        Returns
+        -------
+        ndarray, shape (3,)
+            H_C [kg m^2/s], in the same frame.
+        
+        Examples
+        --------
+        >>> rd.solid_sphere(1.0, mass=5.0).angular_momentum_about_com([0, 0, 2.0])
+        array([0., 0., 4.])
         """
     def angular_momentum_about_point(self, angular_velocity: typing.Any, com_velocity: typing.Any, point: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
         """
-        H_P = r_PC x (m v_C) + H_C (3,) [kg m^2/s] (Craig); w [rad/s], v_C [m/s], point [m].
+        Angular momentum about a point, H_P = r_PC x (m v_C) + H_C (Craig).
+        
+        Parameters
+        ----------
+        angular_velocity : array_like, shape (3,)
+            w [rad/s].
+        com_velocity : array_like, shape (3,)
+            Velocity of the centre of mass v_C [m/s].
+        point : array_like, shape (3,)
+            The point P [m]; r_PC = c - p.
+        
+        Returns
+        -------
+        ndarray, shape (3,)
+            H_P [kg m^2/s]; all vectors in the frame of expression.
+        
+        Examples
+        --------
+        >>> rd.solid_sphere(1.0, mass=5.0).angular_momentum_about_point([0, 0, 0], [1.0, 0, 0], [0, -1.0, 0])
+        array([ 0.,  0., -5.])
         """
     def inertia_about_origin(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        Inertia (3,3) [kg m^2] about the frame's origin.
+        Rotational inertia (3,3) [kg m^2] about the frame's origin, in that frame: I_C + m (|c|^2 1 - c c^T).
         """
     def inertia_about_point(self, point: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
         """
-        Inertia (3,3) [kg m^2] about point (3,) [m]: I_C + m (|r|^2 1 - r r^T), r = c - p.
+        Rotational inertia about a point (parallel-axis theorem, Craig).
+        
+        I_P = I_C + m (|r|^2 1 - r r^T), r = c - p, in the frame of expression.
+        
+        Parameters
+        ----------
+        point : array_like, shape (3,)
+            The point p [m].
+        
+        Returns
+        -------
+        ndarray, shape (3, 3)
+            I_P [kg m^2].
+        
+        Examples
+        --------
+        A 5 kg ball of radius 1 m about a point of its surface: 2/5 m r^2 + m r^2 = 7 kg m^2 across:
+        
+        >>> rd.solid_sphere(1.0, mass=5.0).inertia_about_point([1.0, 0, 0]).diagonal()
+        array([2., 7., 7.])
         """
     def is_approx(self, other: typing.Any, prec: typing.Any = 1e-12) -> bool:
         """
         True when mass, centre of mass and inertia_com agree to `prec` relative to their size (the centre of
         mass relative to the radius of gyration plus |com|). == compares exactly.
+        
+        Parameters
+        ----------
+        other : SpatialInertia
+            The body to compare, in the same frame.
+        prec : float, default 1e-12
+            Relative tolerance, >= 0.
+        
+        Returns
+        -------
+        bool
+        
+        Examples
+        --------
+        >>> box = rd.solid_box([1.0, 2.0, 3.0], mass=12.0)
+        >>> other = rd.solid_box([1.0, 2.0, 3.0 + 1e-14], mass=12.0)
+        >>> box.is_approx(other), box == other
+        (True, False)
         """
     def kinetic_energy(self, twist: typing.Any) -> float:
         """
-        T = 1/2 V . I V [J] of the twist (Motion).
+        Kinetic energy T = 1/2 V . I V of a twist.
+        
+        Parameters
+        ----------
+        twist : Motion
+            V = [w; v_O] [rad/s, m/s], as in momentum.
+        
+        Returns
+        -------
+        float
+            T [J].
+        
+        Examples
+        --------
+        >>> ball = rd.solid_sphere(1.0, mass=5.0)  # I = 2 kg m^2
+        >>> spin, slide = rd.Motion(angular=[0, 0, 2.0]), rd.Motion(linear=[3.0, 0, 0])
+        >>> ball.kinetic_energy(spin), ball.kinetic_energy(slide)  # 1/2 I w^2, 1/2 m v^2
+        (4.0, 22.5)
         """
     def matrix(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (6,6) spatial inertia about the origin, angular first.
+        Spatial inertia (6,6) about the frame's origin, angular first: [[I_O, m hat(c)], [m hat(c)^T, m 1]]
+        (I_O [kg m^2], m [kg]).
         """
     def momentum(self, twist: typing.Any) -> Force:
         """
-        Spatial momentum h = I V (Force, moment about the origin) of the twist V = [w; v_O] (Motion).
+        Spatial momentum h = I V of a twist, about the frame's origin.
+        
+        Parameters
+        ----------
+        twist : Motion
+            V = [w; v_O]: angular velocity w [rad/s] and velocity v_O [m/s] of the body point at the origin,
+            in the frame of expression.
+        
+        Returns
+        -------
+        Force
+            h = [moment of momentum about the origin [kg m^2/s]; linear momentum [kg m/s]].
+        
+        Examples
+        --------
+        >>> rd.solid_sphere(1.0, mass=5.0).momentum(rd.Motion(linear=[3.0, 0, 0])).linear  # m v
+        array([15.,  0.,  0.])
         """
     def principal_axes(self) -> PrincipalAxes:
         """
@@ -799,33 +2035,82 @@ class SpatialInertia:
     def remove(self, part: typing.Any, check: typing.Any = InertiaCheck.physical) -> SpatialInertia:
         """
         This body with `part` removed (a hole), checked as the constructor.
+        
+        Parameters
+        ----------
+        part : SpatialInertia
+            The removed part, in the same frame.
+        check : InertiaCheck, default InertiaCheck.physical
+            What the rest's I_C must satisfy.
+        
+        Returns
+        -------
+        SpatialInertia
+        
+        Examples
+        --------
+        >>> ball, core = rd.solid_sphere(2.0, density=1.0), rd.solid_sphere(1.0, density=1.0)
+        >>> ball.remove(core).is_approx(rd.hollow_sphere(2.0, 1.0, density=1.0))
+        True
         """
     def report(self) -> InertiaReport:
         """
-        The validity report (InertiaReport).
+        The validity report (InertiaReport) of the mass [kg] and I_C [kg m^2].
         """
     def rotated(self, R_AB: typing.Any) -> SpatialInertia:
         """
-        Re-expressed in A: c_A = R_AB c_B, I_C,A = R_AB I_C,B R_AB^T.
+        The same body re-expressed in frame A: c_A = R_AB c_B, I_C,A = R_AB I_C,B R_AB^T.
+        
+        Parameters
+        ----------
+        R_AB : array_like, shape (3, 3)
+            Rotation taking B (this body's frame) coordinates to A coordinates.
+        
+        Returns
+        -------
+        SpatialInertia
+        
+        Examples
+        --------
+        A quarter turn about z swaps the x and y moments:
+        
+        >>> box = rd.solid_box([1.0, 2.0, 3.0], mass=12.0)
+        >>> box.rotated(rd.rot_z(np.pi / 2)).inertia_com.diagonal().round(12)
+        array([10., 13.,  5.])
         """
     def transformed(self, X_AB: typing.Any) -> SpatialInertia:
         """
-        Re-expressed in A (Transform X_AB): c_A = R_AB c_B + p_AB, I_C,A = R_AB I_C,B R_AB^T.
+        The same body re-expressed in frame A: c_A = R_AB c_B + p_AB, I_C,A = R_AB I_C,B R_AB^T.
+        
+        Parameters
+        ----------
+        X_AB : Transform
+            Pose of B (this body's frame) in A, p_AB [m].
+        
+        Returns
+        -------
+        SpatialInertia
+        
+        Examples
+        --------
+        >>> rd.solid_box([1.0, 2.0, 3.0], mass=12.0).transformed(rd.Transform(translation=[1.0, 0, 0])).com
+        array([1., 0., 0.])
         """
     @property
     def com(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        centre of mass (3,) [m], read-only copy
+        Centre of mass c (3,) [m] in the frame of expression, a read-only copy.
         """
     @property
     def inertia_com(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        rotational inertia about the centre of mass (3,3) [kg m^2], read-only copy
+        Rotational inertia I_C (3,3) [kg m^2] about the centre of mass in the frame of
+        expression, a read-only copy.
         """
     @property
     def mass(self) -> float:
         """
-        m [kg]
+        Mass m [kg].
         """
 class MeshWeldWarning(UserWarning):
     """
@@ -835,6 +2120,22 @@ class MeshWeldWarning(UserWarning):
 class WeldedMesh:
     """
     A mesh after weld_vertices, with what the weld changed.
+    
+    Parameters
+    ----------
+    vertices, faces, tolerance
+        As weld_vertices (there is no constructor from Python; it pickles).
+    
+    See Also
+    --------
+    weld_vertices, solid_mesh
+    
+    Examples
+    --------
+    >>> w = rd.weld_vertices([[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]],
+    ...                      [[0, 1, 2], [3, 4, 5]])
+    >>> w.vertex_index, w.dropped_faces
+    (array([0, 1, 2, 4]), 0)
     """
     def __getstate__(self) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.int64], numpy.typing.NDArray[numpy.int64], numpy.typing.NDArray[numpy.int64], int, int, float]:
         ...
@@ -845,42 +2146,67 @@ class WeldedMesh:
     @property
     def dropped_faces(self) -> int:
         """
-        faces repeating a vertex after welding, dropped
+        Number of faces dropped for repeating a vertex after welding.
         """
     @property
     def face_index(self) -> numpy.typing.NDArray[numpy.int64]:
         """
-        (f',) int64 input index of each kept face
+        Input index (f',) int64 of each kept face.
         """
     @property
     def faces(self) -> numpy.typing.NDArray[numpy.int64]:
         """
-        (f', 3) int64 the non-degenerate faces, in input order, indexing vertices
+        Non-degenerate faces (f', 3) int64, in input order, indexing vertices.
         """
     @property
     def tolerance(self) -> float:
         """
-        weld tolerance used [m]
+        Weld tolerance used [m].
         """
     @property
     def vertex_index(self) -> numpy.typing.NDArray[numpy.int64]:
         """
-        (n',) int64 input index of each kept vertex
+        Input index (n',) int64 of each kept vertex.
         """
     @property
     def vertices(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (n', 3) [m] the kept vertices (each cluster's lowest-indexed), in input order
+        Kept vertices (n', 3) [m] (each cluster's lowest-indexed), in input order and frame,
+        read-only.
         """
     @property
     def welded_vertices(self) -> int:
         """
-        input vertices merged into another
+        Number of input vertices merged into another.
         """
 class DensityIntegral:
     """
-    Result of a density quadrature with its error estimate (all in the frame of the
-    points rho was evaluated at).
+    Result of a density quadrature with its error estimate.
+    
+    All in the frame A of the points rho was evaluated at. == compares every field exactly; it pickles.
+    
+    Parameters
+    ----------
+    inertia : SpatialInertia
+        Result of the higher-order rule, in A.
+    mass_error : float
+        |m_high - m_low| [kg].
+    com_error : float
+        |c_high - c_low| [m].
+    inertia_error : float
+        ||I_C,high - I_C,low||_F [kg m^2], inertias about the centre of mass.
+    evaluations : int
+        Points at which rho was evaluated, both rules together, >= 0.
+    
+    See Also
+    --------
+    integrate_density_over_box, integrate_density_over_mesh
+    
+    Examples
+    --------
+    >>> d = rd.integrate_density_over_box(lambda p: np.full(len(p), 1000.0), [0, 0, 0], [1, 1, 1])
+    >>> f"{d.inertia.mass:.9f}", f"{d.inertia.inertia_com[0, 0]:.9f}", d.evaluations  # m a^2 / 6
+    ('1000.000000000', '166.666666667', 15552)
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, arg0: typing.Any) -> typing.Any:
@@ -900,32 +2226,57 @@ class DensityIntegral:
     @property
     def com_error(self) -> float:
         """
-        |c_high - c_low| [m]
+        Centre-of-mass error estimate |c_high - c_low| [m], in the frame of the points.
         """
     @property
     def evaluations(self) -> int:
         """
-        points at which rho was evaluated
+        Number of points at which rho was evaluated (both rules).
         """
     @property
     def inertia(self) -> SpatialInertia:
         """
-        SpatialInertia from the higher-order rule (centre of mass and inertia about it, in the frame
-        of the points)
+        SpatialInertia from the higher-order rule (mass [kg], centre of mass [m] and inertia about it
+        [kg m^2], in the frame of the points).
         """
     @property
     def inertia_error(self) -> float:
         """
-        ||I_C,high - I_C,low||_F [kg m^2], inertias about the centre of mass
+        Inertia error estimate ||I_C,high - I_C,low||_F [kg m^2], inertias about the centre of mass.
         """
     @property
     def mass_error(self) -> float:
         """
-        |m_high - m_low| [kg]
+        Mass error estimate |m_high - m_low| [kg].
         """
 class Particle:
     """
-    A point mass (3 DOF; "Rigid body kinematics and dynamics" notes, section 4.11): mass float [kg] > 0 or a pint quantity.
+    A point mass (3 DOF).
+    
+    Newton's law for a point, m a_W = f_W + m g_W ("Rigid body kinematics and dynamics" notes, section 4.11); its
+    state is a ParticleState (position and velocity in W). Immutable; pickles; == compares the mass.
+    
+    Parameters
+    ----------
+    mass : float or pint.Quantity
+        Mass m [kg], finite and > 0 (a quantity is converted to kg).
+    
+    Raises
+    ------
+    ValueError
+        A mass that is not a finite number > 0, or a quantity of another dimension (the message names mass).
+    
+    See Also
+    --------
+    ParticleState, PlanarBody, RigidBody, simulate, forward_dynamics
+    
+    Examples
+    --------
+    A force of 4 N on 2 kg accelerates it at 2 m/s^2:
+    
+    >>> p = rd.Particle(2.0)
+    >>> rd.forward_dynamics(p, rd.ParticleState(), force=[0.0, 0.0, 4.0])
+    array([0., 0., 2.])
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, other: typing.Any) -> typing.Any:
@@ -941,11 +2292,39 @@ class Particle:
     @property
     def mass(self) -> float:
         """
-        mass [kg]
+        Mass m [kg].
         """
 class PlanarBody:
     """
-    A rigid body moving in the xy plane of W (x, y, theta; plane kinetics of Craig's "Rigid Body Dynamics" slides): mass [kg] and inertia_zz [kg m^2] about the z axis through the centre of mass, both > 0; each a float [unit] or a pint quantity.
+    A rigid body moving in the xy plane of W (3 DOF: x, y, theta).
+    
+    Plane kinetics (K. Craig, "Rigid Body Dynamics" slides): m a_W = f_W + m g_W in W's plane and
+    I_zz alpha = tau_G about the z axis through the centre of mass G. Its state is a PlanarBodyState.
+    Immutable; pickles; == compares mass and inertia_zz.
+    
+    Parameters
+    ----------
+    mass : float or pint.Quantity
+        Mass m [kg], finite and > 0.
+    inertia_zz : float or pint.Quantity
+        Moment of inertia I_zz about the z axis through the centre of mass [kg m^2], finite and > 0.
+    
+    Raises
+    ------
+    ValueError
+        A value that is not a finite number > 0, or a quantity of another dimension (the message names it).
+    
+    See Also
+    --------
+    PlanarBodyState, PivotedPlanarBody, RigidBody, simulate
+    
+    Examples
+    --------
+    Spinning at 2 rad/s, I_zz = 0.5 kg m^2 holds 1/2 I_zz omega^2 = 1 J:
+    
+    >>> b = rd.PlanarBody(2.0, 0.5)
+    >>> rd.kinetic_energy(b, rd.PlanarBodyState(omega=2.0)).rotational
+    1.0
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, other: typing.Any) -> typing.Any:
@@ -961,28 +2340,67 @@ class PlanarBody:
     @property
     def inertia_zz(self) -> float:
         """
-        moment of inertia about z through G [kg m^2]
+        Moment of inertia I_zz about the z axis through the centre of mass G [kg m^2].
         """
     @property
     def mass(self) -> float:
         """
-        mass [kg]
+        Mass m [kg].
         """
 class RigidBody:
     """
-    A spatial rigid body (6 DOF), in three forms:
-      RigidBody(mass, [I1, I2, I3])  mass [kg] > 0 and principal moments [kg m^2] about the centre of mass
-                                     (the body axes B principal: inertia_com = diag(I1, I2, I3));
-      RigidBody(mass, inertia_com)   inertia_com (3, 3) [kg m^2] about the centre of mass in B, moments on the
-                                     diagonal and negated products off it (I_xy = -sum x y dm);
-      RigidBody(spatial_inertia)     a SpatialInertia: its mass and inertia about its centre of mass, B placed
-                                     at the centre of mass with the SpatialInertia's axes.
+    A spatial rigid body (6 DOF): mass and inertia about its centre of mass.
+    
+    Newton's law for the centre of mass in W and Euler's equations in the body frame B (origin at the centre
+    of mass): m a_W = f_W + m g_W, I alpha_B + w_B x I w_B = tau_B. Its state is a RigidBodyState. Three forms:
+    
+    - ``RigidBody(mass, [I1, I2, I3])``: principal moments, the axes of B principal (inertia_com = diag(I1, I2, I3));
+    - ``RigidBody(mass, inertia_com)``: a full (3, 3) inertia about the centre of mass in B, moments on the
+      diagonal and negated products off it (I_xy = -sum x y dm);
+    - ``RigidBody(spatial_inertia)``: a SpatialInertia: its mass and inertia about its centre of mass, B placed at
+      the centre of mass with the SpatialInertia's axes.
+    
     The inertia must be symmetric positive definite and is checked as every inertia of rigiddyn is
-    (inertia_report): under check=InertiaCheck.physical (the default) the principal moments must satisfy the
-    triangle inequality I_a + I_b >= I_c; check=InertiaCheck.allow_unrealizable accepts test bodies no real
-    body has, e.g. I = diag(2, 1, 2/3). euler_form tells which form of Euler's equations it uses:
-    'spherical', 'principal' or 'full'.
-    mass and inertia_com: floats [kg], [kg m^2] or pint quantities (an array quantity for the inertia; converted, ValueError naming the argument for another dimension).
+    (inertia_report). euler_form tells which form of Euler's equations it uses: 'spherical', 'principal' or
+    'full'. Immutable; pickles (an unrealizable test body stays one); == compares mass and inertia_com.
+    
+    Parameters
+    ----------
+    mass : float, pint.Quantity or SpatialInertia
+        Mass m [kg], finite and > 0; or a SpatialInertia alone (then inertia_com is None).
+    inertia_com : array_like, shape (3,) or (3, 3), or pint.Quantity
+        Principal moments [kg m^2], or the inertia matrix about the centre of mass in B [kg m^2] (an array
+        quantity is converted). Required next to a mass; None next to a SpatialInertia.
+    check : InertiaCheck or None, default None
+        None or InertiaCheck.physical: the principal moments must also satisfy the triangle inequality
+        I_a + I_b >= I_c. InertiaCheck.allow_unrealizable accepts test bodies no real body has, e.g.
+        I = diag(2, 1, 2/3).
+    
+    Raises
+    ------
+    ValueError
+        mass not a finite number > 0; inertia_com of another shape, not symmetric positive definite or (under
+        the physical check) violating the triangle inequality; inertia_com next to a SpatialInertia; a quantity
+        of another dimension. The message names the argument.
+    TypeError
+        inertia_com None next to a mass, or check not an InertiaCheck.
+    
+    See Also
+    --------
+    RigidBodyState, SpatialInertia, inertia_report, nearest_valid_inertia, PivotedBody, Gyrostat, simulate
+    
+    Examples
+    --------
+    >>> b = rd.RigidBody(2.0, [1.0, 2.0, 3.0])
+    >>> b.inertia_com.diagonal()
+    array([1., 2., 3.])
+    >>> b.euler_form, rd.RigidBody(1.0, [0.4, 0.4, 0.4]).euler_form
+    ('principal', 'spherical')
+    
+    A product of inertia makes Euler's equations 'full':
+    
+    >>> rd.RigidBody(1.0, [[2.0, -0.1, 0.0], [-0.1, 2.0, 0.0], [0.0, 0.0, 3.0]]).euler_form
+    'full'
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, other: typing.Any) -> typing.Any:
@@ -998,21 +2416,48 @@ class RigidBody:
     @property
     def euler_form(self) -> str:
         """
-        'spherical' (no gyroscopic term), 'principal' (diagonal inertia) or 'full'
+        Form of Euler's equations used: 'spherical' (no gyroscopic term), 'principal' (diagonal inertia) or 'full'.
         """
     @property
     def inertia_com(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3, 3) inertia about the centre of mass in B [kg m^2] (read-only)
+        Inertia I about the centre of mass in B, shape (3, 3) [kg m^2], negated products off the diagonal (read-only).
         """
     @property
     def mass(self) -> float:
         """
-        mass [kg]
+        Mass m [kg].
         """
 class ParticleState:
     """
-    Particle state: p_W (3,) [m] and v_W (3,) [m/s] in W (None: zero), each floats [unit] or a pint quantity. Fields are assigned whole (s.v_W = [...]); their arrays are read-only.
+    State of a Particle: position and velocity in W.
+    
+    Fields are assigned whole (``s.v_W = [...]``, converted and checked as the constructor does); the arrays read
+    are read-only copies. Pickles; == compares every field.
+    
+    Parameters
+    ----------
+    p_W : array_like, shape (3,), or pint.Quantity, optional
+        Position in W [m] (None: zero).
+    v_W : array_like, shape (3,), or pint.Quantity, optional
+        Velocity in W [m/s] (None: zero).
+    
+    Raises
+    ------
+    ValueError
+        A field of another shape, or a quantity of another dimension (the message names it).
+    
+    See Also
+    --------
+    Particle, simulate, step
+    
+    Examples
+    --------
+    >>> s = rd.ParticleState(p_W=[1.0, 0.0, 0.0], v_W=[0.0, 2.0, 0.0])
+    >>> rd.linear_momentum(rd.Particle(3.0), s)
+    array([0., 6., 0.])
+    >>> rd.angular_momentum(rd.Particle(3.0), s)  # about the origin of W: p_W x m v_W
+    array([0., 0., 6.])
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, other: typing.Any) -> typing.Any:
@@ -1028,7 +2473,7 @@ class ParticleState:
     @property
     def p_W(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3,) position in W [m]
+        Position p_W in W, shape (3,) [m].
         """
     @p_W.setter
     def p_W(self, arg1: typing.Any) -> None:
@@ -1036,14 +2481,43 @@ class ParticleState:
     @property
     def v_W(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3,) velocity in W [m/s]
+        Velocity v_W in W, shape (3,) [m/s].
         """
     @v_W.setter
     def v_W(self, arg1: typing.Any) -> None:
         ...
 class PlanarBodyState:
     """
-    Planar body state: p_W (2,) [m] centre of mass in W, theta [rad] angle of B about z, v_W (2,) [m/s] in W, omega [rad/s] (None: zero), each floats [unit] or a pint quantity. Fields are assigned whole; their arrays are read-only.
+    State of a PlanarBody in W's xy plane.
+    
+    Fields are assigned whole (converted and checked as the constructor does); the arrays read are read-only
+    copies. Pickles; == compares every field.
+    
+    Parameters
+    ----------
+    p_W : array_like, shape (2,), or pint.Quantity, optional
+        Centre of mass in W's xy plane [m] (None: zero).
+    theta : float or pint.Quantity, default 0
+        Angle of B about z [rad] (R_WB = Rz(theta)).
+    v_W : array_like, shape (2,), or pint.Quantity, optional
+        Centre of mass velocity in W [m/s] (None: zero).
+    omega : float or pint.Quantity, default 0
+        Angular velocity about z [rad/s].
+    
+    Raises
+    ------
+    ValueError
+        A field of another shape, or a quantity of another dimension (the message names it).
+    
+    See Also
+    --------
+    PlanarBody, simulate, step
+    
+    Examples
+    --------
+    >>> s = rd.PlanarBodyState(p_W=[1.0, 2.0], theta=np.pi / 2, omega=3.0)
+    >>> s.p_W, s.omega
+    (array([1., 2.]), 3.0)
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, other: typing.Any) -> typing.Any:
@@ -1059,7 +2533,7 @@ class PlanarBodyState:
     @property
     def omega(self) -> float:
         """
-        angular velocity [rad/s]
+        Angular velocity omega about z [rad/s].
         """
     @omega.setter
     def omega(self, arg1: typing.Any) -> None:
@@ -1067,7 +2541,7 @@ class PlanarBodyState:
     @property
     def p_W(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (2,) centre of mass in W [m]
+        Centre of mass p_W in W's xy plane, shape (2,) [m].
         """
     @p_W.setter
     def p_W(self, arg1: typing.Any) -> None:
@@ -1075,7 +2549,7 @@ class PlanarBodyState:
     @property
     def theta(self) -> float:
         """
-        angle of B about z [rad]
+        Angle theta of B about z [rad], R_WB = Rz(theta).
         """
     @theta.setter
     def theta(self, arg1: typing.Any) -> None:
@@ -1083,14 +2557,49 @@ class PlanarBodyState:
     @property
     def v_W(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (2,) velocity in W [m/s]
+        Centre of mass velocity v_W in W, shape (2,) [m/s].
         """
     @v_W.setter
     def v_W(self, arg1: typing.Any) -> None:
         ...
 class RigidBodyState:
     """
-    Rigid body state (docs/conventions.md): p_W (3,) centre of mass in W [m], q_WB (4,) unit quaternion (x, y, z, w), or (w, x, y, z) with scalar_first=True, v_W (3,) centre of mass velocity in W [m/s], w_B (3,) angular velocity [rad/s] in B (None: zero, identity); p_W, v_W, w_B: floats [unit] or pint quantities. q_WB is normalised; ValueError if | |q| - 1 | > 1e-6. Fields are assigned whole (s.w_B = [...], s.q_WB = [x, y, z, w], checked as here); their arrays are read-only.
+    State of a RigidBody (docs/conventions.md).
+    
+    Position and velocity of the centre of mass in W, attitude q_WB (B to W) and the angular velocity of B in W,
+    expressed in B. Fields are assigned whole (``s.w_B = [...]``, ``s.q_WB = [x, y, z, w]``, converted and checked
+    as the constructor does); the arrays read are read-only copies. Pickles; == compares every field.
+    
+    Parameters
+    ----------
+    p_W : array_like, shape (3,), or pint.Quantity, optional
+        Centre of mass position in W [m] (None: zero).
+    q_WB : array_like, shape (4,), optional
+        Unit quaternion B to W, (x, y, z, w), or (w, x, y, z) with `scalar_first` (None: identity); normalised.
+    v_W : array_like, shape (3,), or pint.Quantity, optional
+        Centre of mass velocity in W [m/s] (None: zero).
+    w_B : array_like, shape (3,), or pint.Quantity, optional
+        Angular velocity of B in W, expressed in B [rad/s] (None: zero).
+    scalar_first : bool, default False
+        Read q_WB as (w, x, y, z).
+    
+    Raises
+    ------
+    ValueError
+        q_WB farther than 1e-6 from unit norm (| |q| - 1 | > 1e-6), a field of another shape or not finite, or
+        a quantity of another dimension (the message names it).
+    
+    See Also
+    --------
+    RigidBody, simulate, step, quat_normalize
+    
+    Examples
+    --------
+    A quarter turn about z, read scalar first:
+    
+    >>> s = rd.RigidBodyState(q_WB=[0.0, 0.0, np.sin(np.pi / 4), np.cos(np.pi / 4)], w_B=[0.0, 0.0, 1.0])
+    >>> s.quaternion(scalar_first=True).round(12)
+    array([0.70710678, 0.        , 0.        , 0.70710678])
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, other: typing.Any) -> typing.Any:
@@ -1105,12 +2614,27 @@ class RigidBodyState:
         ...
     def quaternion(self, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
         """
-        q_WB (4,) as (x, y, z, w), or (w, x, y, z) with scalar_first=True
+        The attitude q_WB (B to W) in the order asked.
+        
+        Parameters
+        ----------
+        scalar_first : bool, default False
+            Return (w, x, y, z) instead of (x, y, z, w).
+        
+        Returns
+        -------
+        ndarray, shape (4,)
+            q_WB, read-only.
+        
+        Examples
+        --------
+        >>> rd.RigidBodyState().quaternion(scalar_first=True)
+        array([1., 0., 0., 0.])
         """
     @property
     def p_W(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3,) centre of mass position in W [m]
+        Centre of mass position p_W in W, shape (3,) [m].
         """
     @p_W.setter
     def p_W(self, arg1: typing.Any) -> None:
@@ -1118,7 +2642,7 @@ class RigidBodyState:
     @property
     def q_WB(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (4,) attitude (x, y, z, w), B to W; set from (x, y, z, w), normalised (ValueError beyond 1e-6 of unit norm)
+        Attitude q_WB (B to W), shape (4,), (x, y, z, w); set from (x, y, z, w), normalised (ValueError beyond 1e-6 of unit norm).
         """
     @q_WB.setter
     def q_WB(self, arg1: typing.Any) -> None:
@@ -1126,7 +2650,7 @@ class RigidBodyState:
     @property
     def v_W(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3,) centre of mass velocity in W [m/s]
+        Centre of mass velocity v_W in W, shape (3,) [m/s].
         """
     @v_W.setter
     def v_W(self, arg1: typing.Any) -> None:
@@ -1134,14 +2658,39 @@ class RigidBodyState:
     @property
     def w_B(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3,) angular velocity of B in W, expressed in B [rad/s]
+        Angular velocity w_B of B in W, expressed in B, shape (3,) [rad/s].
         """
     @w_B.setter
     def w_B(self, arg1: typing.Any) -> None:
         ...
 class KineticEnergy:
     """
-    Kinetic energy [J] split as T = translational + rotational: translational 1/2 m v_W.v_W of the centre of mass, rotational 1/2 w_B.I w_B about it (1/2 I_zz omega^2 for a planar body, 0 for a particle); total = their sum. Immutable.
+    Kinetic energy T [J], split as T = translational + rotational.
+    
+    translational = 1/2 m v_W.v_W of the centre of mass, rotational = 1/2 w_B.I w_B about it (1/2 I_zz omega^2 for
+    a planar body, 0 for a particle); total = their sum. kinetic_energy's result. Immutable; pickles.
+    
+    Parameters
+    ----------
+    translational : float or pint.Quantity, default 0
+        1/2 m v_W.v_W [J] (infinities allowed).
+    rotational : float or pint.Quantity, default 0
+        1/2 w_B.I w_B about the centre of mass [J] (infinities allowed).
+    
+    Raises
+    ------
+    ValueError
+        A NaN, or a quantity of another dimension (the message names it).
+    
+    See Also
+    --------
+    kinetic_energy, potential_energy
+    
+    Examples
+    --------
+    >>> T = rd.kinetic_energy(rd.RigidBody(2.0, [1.0, 2.0, 3.0]), rd.RigidBodyState(v_W=[1, 0, 0], w_B=[0, 0, 1]))
+    >>> T.translational, T.rotational, T.total
+    (1.0, 1.5, 2.5)
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, other: typing.Any) -> typing.Any:
@@ -1157,21 +2706,48 @@ class KineticEnergy:
     @property
     def rotational(self) -> float:
         """
-        1/2 w.I w about the centre of mass [J]
+        Rotational part 1/2 w_B.I w_B about the centre of mass [J].
         """
     @property
     def total(self) -> float:
         """
-        translational + rotational [J]
+        Total kinetic energy, translational + rotational [J].
         """
     @property
     def translational(self) -> float:
         """
-        1/2 m v.v [J]
+        Translational part 1/2 m v_W.v_W of the centre of mass [J].
         """
 class ComWrench:
     """
-    Loads reduced to the centre of mass G: f_W (3,) force in W [N] and tau_B (3,) torque about G in B [N m] (inverse_dynamics' result; unpacks as f_W, tau_B = ...). Immutable.
+    Loads reduced to the centre of mass G: a force in W and a torque about G in B.
+    
+    inverse_dynamics' result for a RigidBody; unpacks as ``f_W, tau_B = ...``. Immutable; pickles.
+    
+    Parameters
+    ----------
+    f_W : array_like, shape (3,), or pint.Quantity, optional
+        Force in W [N] (None: zero).
+    tau_B : array_like, shape (3,), or pint.Quantity, optional
+        Torque about the centre of mass, in B [N m] (None: zero).
+    
+    Raises
+    ------
+    ValueError
+        A field of another shape, or a quantity of another dimension (the message names it).
+    
+    See Also
+    --------
+    inverse_dynamics, BodyAcceleration, power
+    
+    Examples
+    --------
+    Holding 2 kg against gravity while lifting it at 1 m/s^2 takes m (a_W - g) = 21.62 N:
+    
+    >>> body = rd.RigidBody(2.0, [1.0, 2.0, 3.0])
+    >>> f_W, tau_B = rd.inverse_dynamics(body, rd.RigidBodyState(), a_W=[0, 0, 1], alpha_B=[1, 0, 0], gravity=True)
+    >>> f_W, tau_B
+    (array([ 0.  ,  0.  , 21.62]), array([1., 0., 0.]))
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, other: typing.Any) -> typing.Any:
@@ -1193,16 +2769,41 @@ class ComWrench:
     @property
     def f_W(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3,) force in W [N]
+        Force f_W in W, shape (3,) [N].
         """
     @property
     def tau_B(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3,) torque about the centre of mass in B [N m]
+        Torque tau_B about the centre of mass, in B, shape (3,) [N m].
         """
 class PlanarWrench:
     """
-    In-plane loads reduced to the centre of mass G: f_W (2,) force in W [N] and tau torque about z through G [N m] (inverse_dynamics' result for a PlanarBody; unpacks as f_W, tau = ...). Immutable.
+    In-plane loads reduced to the centre of mass G.
+    
+    A force in W's xy plane and a torque about the z axis through G: inverse_dynamics' result for a PlanarBody;
+    unpacks as ``f_W, tau = ...``. Immutable; pickles.
+    
+    Parameters
+    ----------
+    f_W : array_like, shape (2,), or pint.Quantity, optional
+        Force in W [N] (None: zero).
+    tau : float or pint.Quantity, default 0
+        Torque about the z axis through the centre of mass [N m].
+    
+    Raises
+    ------
+    ValueError
+        A field of another shape, or a quantity of another dimension (the message names it).
+    
+    See Also
+    --------
+    inverse_dynamics, PlanarAcceleration
+    
+    Examples
+    --------
+    >>> body = rd.PlanarBody(2.0, 0.5)
+    >>> rd.inverse_dynamics(body, rd.PlanarBodyState(), a_W=[1.0, 0.0], alpha_B=2.0)
+    PlanarWrench(f_W=[2.0, 0.0], tau=1.0)
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, other: typing.Any) -> typing.Any:
@@ -1224,16 +2825,44 @@ class PlanarWrench:
     @property
     def f_W(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (2,) force in W [N]
+        Force f_W in W's xy plane, shape (2,) [N].
         """
     @property
     def tau(self) -> float:
         """
-        torque about z through the centre of mass [N m]
+        Torque tau about the z axis through the centre of mass [N m].
         """
 class BodyAcceleration:
     """
-    Accelerations of a rigid body: a_W (3,) of the centre of mass in W [m/s^2] and alpha_B (3,) angular, in B [rad/s^2] (forward_dynamics' result; unpacks as a_W, alpha_B = ...). Immutable.
+    Accelerations of a rigid body.
+    
+    The centre of mass's acceleration in W and the angular acceleration in B: forward_dynamics' result for a
+    RigidBody; unpacks as ``a_W, alpha_B = ...``. Immutable; pickles.
+    
+    Parameters
+    ----------
+    a_W : array_like, shape (3,), or pint.Quantity, optional
+        Centre of mass acceleration in W [m/s^2] (None: zero).
+    alpha_B : array_like, shape (3,), or pint.Quantity, optional
+        Angular acceleration of B in W, expressed in B [rad/s^2] (None: zero).
+    
+    Raises
+    ------
+    ValueError
+        A field of another shape, or a quantity of another dimension (the message names it).
+    
+    See Also
+    --------
+    forward_dynamics, ComWrench
+    
+    Examples
+    --------
+    1 N along y at 1 m along x: a_W = f/m, alpha_B = I^-1 (p_GP x f):
+    
+    >>> body = rd.RigidBody(2.0, [1.0, 2.0, 3.0])
+    >>> a_W, alpha_B = rd.forward_dynamics(body, rd.RigidBodyState(), force=[0, 1.0, 0], point=[1.0, 0, 0])
+    >>> a_W, alpha_B.round(12)
+    (array([0. , 0.5, 0. ]), array([0.        , 0.        , 0.33333333]))
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, other: typing.Any) -> typing.Any:
@@ -1255,16 +2884,41 @@ class BodyAcceleration:
     @property
     def a_W(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3,) centre of mass acceleration in W [m/s^2]
+        Centre of mass acceleration a_W in W, shape (3,) [m/s^2].
         """
     @property
     def alpha_B(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3,) angular acceleration in B [rad/s^2]
+        Angular acceleration alpha_B of B in W, expressed in B, shape (3,) [rad/s^2].
         """
 class PlanarAcceleration:
     """
-    Accelerations of a planar body: a_W (2,) of the centre of mass in W [m/s^2] and alpha about z [rad/s^2] (forward_dynamics' result; unpacks as a_W, alpha = ...). Immutable.
+    Accelerations of a planar body.
+    
+    The centre of mass's acceleration in W's xy plane and the angular acceleration about z: forward_dynamics'
+    result for a PlanarBody; unpacks as ``a_W, alpha = ...``. Immutable; pickles.
+    
+    Parameters
+    ----------
+    a_W : array_like, shape (2,), or pint.Quantity, optional
+        Centre of mass acceleration in W [m/s^2] (None: zero).
+    alpha : float or pint.Quantity, default 0
+        Angular acceleration about z [rad/s^2].
+    
+    Raises
+    ------
+    ValueError
+        A field of another shape, or a quantity of another dimension (the message names it).
+    
+    See Also
+    --------
+    forward_dynamics, PlanarWrench
+    
+    Examples
+    --------
+    >>> body = rd.PlanarBody(2.0, 0.5)
+    >>> rd.forward_dynamics(body, rd.PlanarBodyState(), force=[0, 1.0], point=[1.0, 0])
+    PlanarAcceleration(a_W=[0.0, 0.5], alpha=2.0)
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, other: typing.Any) -> typing.Any:
@@ -1286,18 +2940,55 @@ class PlanarAcceleration:
     @property
     def a_W(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (2,) centre of mass acceleration in W [m/s^2]
+        Centre of mass acceleration a_W in W's xy plane, shape (2,) [m/s^2].
         """
     @property
     def alpha(self) -> float:
         """
-        angular acceleration about z [rad/s^2]
+        Angular acceleration alpha about z [rad/s^2].
         """
 class PivotedBody:
     """
-    A rigid body pinned at a point O fixed in the scene frame W (3 rotational DOF): the heavy top, the gyroscope.
-      PivotedBody(body, p_OC_B, p_WO=(0, 0, 0))
-    body: a RigidBody (mass [kg], inertia_com [kg m^2] about the centre of mass C in B); p_OC_B (3,): C relative to O, in B [m] (zero allowed: the free rotation about C); p_WO (3,): O in W [m]; each a float array or a pint quantity. B is the body frame at C as for RigidBody; C is at p_WO + R_WB p_OC_B. Euler's law is written about O (Craig, "Rigid Body Dynamics" slides: M_O = dH_O/dt) with inertia_O = I_C + m (|c|^2 1 - c c^T), the parallel-axis theorem with the products of inertia. digits_lost tells how many decimal digits of I_C the rounding of inertia_O loses (the compile of a scene warns above 6); ValueError naming p_OC_B beyond 15 digits lost (m |c|^2 > 1e15 times the smallest moment of I_C: inertia_O's moment about the axis through O and C, I_C's about it, is then rounding noise) or when inertia_O is no longer positive definite in double precision. Immutable; pickles; == compares body, p_OC_B and p_WO.
+    A rigid body pinned at a point O fixed in the scene frame W (3 DOF): the heavy top, the gyroscope.
+    
+    B is the body frame at the centre of mass C, as for RigidBody; C is at p_WO + R_WB p_OC_B. Euler's law is
+    written about O (K. Craig, "Rigid Body Dynamics" slides: M_O = dH_O/dt) with
+    inertia_O = I_C + m (|c|^2 1 - c c^T), c = p_OC_B, the parallel-axis theorem with the products of inertia.
+    digits_lost tells how many decimal digits of I_C the rounding of inertia_O loses (the compile of a scene warns
+    above 6). Its state is a PivotedBodyState. Immutable; pickles; == compares body, p_OC_B and p_WO.
+    
+    Parameters
+    ----------
+    body : RigidBody
+        Mass [kg] and inertia_com [kg m^2] about the centre of mass C, in B.
+    p_OC_B : array_like, shape (3,), or pint.Quantity
+        C relative to O, in B [m] (zero allowed: the free rotation about C).
+    p_WO : array_like, shape (3,), or pint.Quantity, optional
+        O in W [m] (None: the origin).
+    
+    Raises
+    ------
+    TypeError
+        body not a RigidBody.
+    ValueError
+        p_OC_B beyond 15 digits lost (m |c|^2 > 1e15 times the smallest moment of I_C: inertia_O's moment about the
+        axis through O and C, I_C's about it, is then rounding noise), or inertia_O no longer positive definite in
+        double precision (the message names p_OC_B); a field of another shape or dimension.
+    
+    See Also
+    --------
+    PivotedBodyState, PivotedAcceleration, PivotedTorque, PivotedPlanarBody, forward_dynamics, simulate
+    
+    Examples
+    --------
+    A top of 1 kg, its centre of mass 0.5 m up its axis: the parallel-axis theorem adds m |c|^2 = 0.25 kg m^2 to
+    the transverse moments:
+    
+    >>> top = rd.PivotedBody(rd.RigidBody(1.0, [0.1, 0.1, 0.2]), p_OC_B=[0.0, 0.0, 0.5])
+    >>> top.inertia_O.diagonal()
+    array([0.35, 0.35, 0.2 ])
+    >>> rd.forward_dynamics(top, rd.PivotedBodyState(), gravity=True).reaction_W  # upright at rest: the pivot holds m g
+    array([0.  , 0.  , 9.81])
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, other: typing.Any) -> typing.Any:
@@ -1313,48 +3004,79 @@ class PivotedBody:
     @property
     def body(self) -> RigidBody:
         """
-        the RigidBody (a copy)
+        The RigidBody: mass [kg] and inertia about C in B [kg m^2] (a copy).
         """
     @property
     def digits_lost(self) -> float:
         """
-        decimal digits of I_C lost in inertia_O: max(0, log10(m |c|^2 / smallest moment of I_C)), at most 15
+        Decimal digits of I_C lost in inertia_O, max(0, log10(m |c|^2 / smallest moment of I_C)), at most 15 (a float).
         """
     @property
     def euler_form(self) -> str:
         """
-        the form of Euler's equations of inertia_O: 'spherical', 'principal' or 'full'
+        Form of Euler's equations of inertia_O: 'spherical', 'principal' or 'full'.
         """
     @property
     def inertia_O(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3, 3) inertia about O in B, I_C + m (|c|^2 1 - c c^T) [kg m^2]
+        Inertia about O in B, I_C + m (|c|^2 1 - c c^T), shape (3, 3) [kg m^2].
         """
     @property
     def inertia_com(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3, 3) inertia about the centre of mass C, in B [kg m^2]
+        Inertia I_C about the centre of mass C, in B, shape (3, 3) [kg m^2].
         """
     @property
     def mass(self) -> float:
         """
-        mass [kg]
+        Mass m [kg].
         """
     @property
     def p_OC_B(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3,) the centre of mass C relative to the pivot O, in B [m]
+        The centre of mass C relative to the pivot O, in B, shape (3,) [m].
         """
     @property
     def p_WO(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3,) the pivot O in the scene frame W [m]
+        The pivot O in the scene frame W, shape (3,) [m].
         """
 class PivotedPlanarBody:
     """
-    The compound pendulum: a planar body pinned at a point O fixed in the scene frame W, turning about W's z axis (1 DOF, R_WB = Rz(theta)).
-      PivotedPlanarBody(mass, inertia_zz, p_OC_B, p_WO=(0, 0))
-    mass [kg] > 0; inertia_zz [kg m^2] > 0 about the z axis through the centre of mass C; p_OC_B (2,): C relative to O in B's xy plane [m] (zero allowed); p_WO (2,): O in W's xy plane [m]; each a float or a pint quantity. Plane kinetics about O: inertia_O_zz alpha = tau_O, inertia_O_zz = inertia_zz + m |c|^2 (Craig, "Rigid Body Dynamics" slides); ValueError naming p_OC_B when inertia_O_zz exceeds the double range. Immutable; pickles; == compares every field.
+    The compound pendulum: a planar body pinned at a point O fixed in the scene frame W (1 DOF).
+    
+    It turns about W's z axis, R_WB = Rz(theta). Plane kinetics about O (K. Craig, "Rigid Body Dynamics" slides):
+    inertia_O_zz alpha = tau_O, inertia_O_zz = inertia_zz + m |c|^2, c = p_OC_B. Its state is a
+    PivotedPlanarBodyState; its gravity an in-plane vector. Immutable; pickles; == compares every field.
+    
+    Parameters
+    ----------
+    mass : float or pint.Quantity
+        Mass m [kg], > 0.
+    inertia_zz : float or pint.Quantity
+        Moment of inertia about the z axis through the centre of mass C [kg m^2], > 0.
+    p_OC_B : array_like, shape (2,), or pint.Quantity
+        C relative to O in B's xy plane [m] (zero allowed).
+    p_WO : array_like, shape (2,), or pint.Quantity, optional
+        O in W's xy plane [m] (None: the origin).
+    
+    Raises
+    ------
+    ValueError
+        mass or inertia_zz not a finite number > 0; inertia_O_zz beyond the double range (the message names
+        p_OC_B); a field of another shape or dimension.
+    
+    See Also
+    --------
+    PivotedPlanarBodyState, PivotedPlanarAcceleration, PivotedPlanarTorque, PivotedBody, simulate
+    
+    Examples
+    --------
+    A uniform rod of 2 m and 3 kg pinned at one end: inertia_O_zz = m L^2 / 3 = 4 kg m^2.
+    
+    >>> rod = rd.PivotedPlanarBody(3.0, 3.0 * 2.0**2 / 12, p_OC_B=[1.0, 0.0])
+    >>> rod.inertia_O_zz
+    4.0
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, other: typing.Any) -> typing.Any:
@@ -1370,31 +3092,63 @@ class PivotedPlanarBody:
     @property
     def inertia_O_zz(self) -> float:
         """
-        moment of inertia about z through O, inertia_zz + m |c|^2 [kg m^2]
+        Moment of inertia about the z axis through O, inertia_zz + m |c|^2 [kg m^2].
         """
     @property
     def inertia_zz(self) -> float:
         """
-        moment of inertia about z through C [kg m^2]
+        Moment of inertia about the z axis through C [kg m^2].
         """
     @property
     def mass(self) -> float:
         """
-        mass [kg]
+        Mass m [kg].
         """
     @property
     def p_OC_B(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (2,) C relative to O in B's xy plane [m]
+        C relative to O in B's xy plane, shape (2,) [m].
         """
     @property
     def p_WO(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (2,) the pivot O in W's xy plane [m]
+        The pivot O in W's xy plane, shape (2,) [m].
         """
 class PivotedBodyState:
     """
-    State of a PivotedBody: q_WB (4,) unit quaternion B to the scene frame W, (x, y, z, w), or (w, x, y, z) with scalar_first=True (None: identity); w_B (3,) angular velocity of B relative to W, in B [rad/s] (None: zero; floats or a pint quantity). q_WB is normalised; ValueError if | |q| - 1 | > 1e-6. Fields are assigned whole (s.w_B = [...], checked as here); their arrays are read-only.
+    State of a PivotedBody: its attitude and angular velocity.
+    
+    Fields are assigned whole (``s.w_B = [...]``, converted and checked as the constructor does); the arrays read are
+    read-only copies. Pickles; == compares every field.
+    
+    Parameters
+    ----------
+    q_WB : array_like, shape (4,), optional
+        Unit quaternion B to the scene frame W, (x, y, z, w), or (w, x, y, z) with `scalar_first` (None:
+        identity); normalised.
+    w_B : array_like, shape (3,), or pint.Quantity, optional
+        Angular velocity of B relative to W, in B [rad/s] (None: zero).
+    scalar_first : bool, default False
+        Read q_WB as (w, x, y, z).
+    
+    Raises
+    ------
+    ValueError
+        q_WB farther than 1e-6 from unit norm (| |q| - 1 | > 1e-6), a field of another shape, or a quantity of
+        another dimension (the message names it).
+    
+    See Also
+    --------
+    PivotedBody, simulate, step
+    
+    Examples
+    --------
+    A top spinning at 10 rad/s about its upright axis stays upright; one step of 0.01 s turns it 0.1 rad:
+    
+    >>> top = rd.PivotedBody(rd.RigidBody(1.0, [0.1, 0.1, 0.2]), p_OC_B=[0.0, 0.0, 0.5])
+    >>> s = rd.step(top, rd.PivotedBodyState(w_B=[0.0, 0.0, 10.0]), 0.01, gravity=True)
+    >>> rd.quat_to_rotvec(s.q_WB).round(6), s.w_B
+    (array([0. , 0. , 0.1]), array([ 0.,  0., 10.]))
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, other: typing.Any) -> typing.Any:
@@ -1409,12 +3163,27 @@ class PivotedBodyState:
         ...
     def quaternion(self, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
         """
-        q_WB (4,) as (x, y, z, w), or (w, x, y, z) with scalar_first=True
+        The attitude q_WB (B to W) in the order asked.
+        
+        Parameters
+        ----------
+        scalar_first : bool, default False
+            Return (w, x, y, z) instead of (x, y, z, w).
+        
+        Returns
+        -------
+        ndarray, shape (4,)
+            q_WB, read-only.
+        
+        Examples
+        --------
+        >>> rd.PivotedBodyState().quaternion(scalar_first=True)
+        array([1., 0., 0., 0.])
         """
     @property
     def q_WB(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (4,) attitude (x, y, z, w), B to W; set from (x, y, z, w), normalised (ValueError beyond 1e-6 of unit norm)
+        Attitude q_WB (B to W), shape (4,), (x, y, z, w); set from (x, y, z, w), normalised (ValueError beyond 1e-6 of unit norm).
         """
     @q_WB.setter
     def q_WB(self, arg1: typing.Any) -> None:
@@ -1422,14 +3191,41 @@ class PivotedBodyState:
     @property
     def w_B(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3,) angular velocity of B relative to W, expressed in B [rad/s]
+        Angular velocity w_B of B relative to W, expressed in B, shape (3,) [rad/s].
         """
     @w_B.setter
     def w_B(self, arg1: typing.Any) -> None:
         ...
 class PivotedPlanarBodyState:
     """
-    State of a PivotedPlanarBody: theta [rad], the angle of B about z (R_WB = Rz(theta)), and omega = d theta/dt [rad/s]; each a float or a pint quantity. Fields are assignable (checked as here).
+    State of a PivotedPlanarBody: its angle and angular velocity about z.
+    
+    Fields are assignable (converted and checked as the constructor does). Pickles; == compares every field.
+    
+    Parameters
+    ----------
+    theta : float or pint.Quantity, default 0
+        Angle of B about z [rad] (R_WB = Rz(theta)).
+    omega : float or pint.Quantity, default 0
+        d theta/dt [rad/s].
+    
+    Raises
+    ------
+    ValueError
+        A value that is not a number, or a quantity of another dimension (the message names it).
+    
+    See Also
+    --------
+    PivotedPlanarBody, simulate, step
+    
+    Examples
+    --------
+    A pendulum released horizontal keeps its energy (rk4's drift is O(dt^4): below 1e-9 J here at dt = 1 ms):
+    
+    >>> rod = rd.PivotedPlanarBody(3.0, 1.0, p_OC_B=[1.0, 0.0])
+    >>> r = rd.simulate(rod, rd.PivotedPlanarBodyState(theta=0.0), 0.001, steps=1000, gravity=[0.0, -9.81])
+    >>> bool(abs(r.total_energy - r.total_energy[0]).max() < 1e-9)
+    True
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, other: typing.Any) -> typing.Any:
@@ -1445,7 +3241,7 @@ class PivotedPlanarBodyState:
     @property
     def omega(self) -> float:
         """
-        angular velocity about z [rad/s]
+        Angular velocity omega = d theta/dt about z [rad/s].
         """
     @omega.setter
     def omega(self, arg1: typing.Any) -> None:
@@ -1453,14 +3249,38 @@ class PivotedPlanarBodyState:
     @property
     def theta(self) -> float:
         """
-        angle of B about z [rad]
+        Angle theta of B about z [rad], R_WB = Rz(theta).
         """
     @theta.setter
     def theta(self, arg1: typing.Any) -> None:
         ...
 class PivotedAcceleration:
     """
-    forward_dynamics' result for a PivotedBody: alpha_B (3,) angular acceleration in B [rad/s^2] and reaction_W (3,) the pivot's force on the body in W [N] (unpacks as alpha_B, reaction_W = ...). Immutable.
+    forward_dynamics' result for a PivotedBody.
+    
+    The angular acceleration in B and the pivot's force on the body in W; unpacks as
+    ``alpha_B, reaction_W = ...``. Immutable; pickles.
+    
+    Parameters
+    ----------
+    alpha_B : array_like, shape (3,), or pint.Quantity, optional
+        Angular acceleration of B, in B [rad/s^2] (None: zero).
+    reaction_W : array_like, shape (3,), or pint.Quantity, optional
+        The pivot's force on the body, in W [N] (None: zero).
+    
+    See Also
+    --------
+    forward_dynamics, PivotedBody, PivotedTorque
+    
+    Examples
+    --------
+    A top of 1 kg held horizontal, its centre of mass 0.5 m from the pivot: alpha = m g |c| / I_O = 14.01 rad/s^2:
+    
+    >>> top = rd.PivotedBody(rd.RigidBody(1.0, [0.1, 0.1, 0.2]), p_OC_B=[0.0, 0.0, 0.5])
+    >>> level = rd.PivotedBodyState(q_WB=rd.rotvec_to_quat([0.0, np.pi / 2, 0.0]))
+    >>> alpha_B, reaction_W = rd.forward_dynamics(top, level, gravity=True)
+    >>> alpha_B.round(6)
+    array([ 0.      , 14.014286,  0.      ])
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, other: typing.Any) -> typing.Any:
@@ -1482,16 +3302,38 @@ class PivotedAcceleration:
     @property
     def alpha_B(self) -> typing.Any:
         """
-        (3,) angular acceleration in B [rad/s^2]
+        Angular acceleration alpha_B of B, in B, shape (3,) [rad/s^2].
         """
     @property
     def reaction_W(self) -> typing.Any:
         """
-        (3,) the pivot's force on the body, in W [N]
+        The pivot's force on the body, in W, shape (3,) [N].
         """
 class PivotedTorque:
     """
-    inverse_dynamics' result for a PivotedBody: tau_O_B (3,) the torque about O the motion needs besides gravity, in B [N m], and reaction_W (3,) the pivot's force on the body in W [N] (unpacks as tau_O_B, reaction_W = ...). Immutable.
+    inverse_dynamics' result for a PivotedBody.
+    
+    The torque about the pivot O the motion needs besides gravity, in B, and the pivot's force on the body in W;
+    unpacks as ``tau_O_B, reaction_W = ...``. Immutable; pickles.
+    
+    Parameters
+    ----------
+    tau_O_B : array_like, shape (3,), or pint.Quantity, optional
+        Torque about O, in B [N m] (None: zero).
+    reaction_W : array_like, shape (3,), or pint.Quantity, optional
+        The pivot's force on the body, in W [N] (None: zero).
+    
+    See Also
+    --------
+    inverse_dynamics, PivotedBody, PivotedAcceleration
+    
+    Examples
+    --------
+    At rest upright, the pivot alone holds the top's weight:
+    
+    >>> top = rd.PivotedBody(rd.RigidBody(1.0, [0.1, 0.1, 0.2]), p_OC_B=[0.0, 0.0, 0.5])
+    >>> rd.inverse_dynamics(top, rd.PivotedBodyState(), alpha_B=[0, 0, 0], gravity=True)
+    PivotedTorque(tau_O_B=[0.0, 0.0, 0.0], reaction_W=[0.0, 0.0, 9.81])
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, other: typing.Any) -> typing.Any:
@@ -1513,16 +3355,40 @@ class PivotedTorque:
     @property
     def reaction_W(self) -> typing.Any:
         """
-        (3,) the pivot's force on the body, in W [N]
+        The pivot's force on the body, in W, shape (3,) [N].
         """
     @property
     def tau_O_B(self) -> typing.Any:
         """
-        (3,) torque about the pivot O, in B [N m]
+        Torque tau_O_B about the pivot O, in B, shape (3,) [N m].
         """
 class PivotedPlanarAcceleration:
     """
-    forward_dynamics' result for a PivotedPlanarBody: alpha [rad/s^2] about z and reaction_W (3,) the pivot's force on the body in W [N] (its z part is what the pin and the plane hold; unpacks as alpha, reaction_W = ...). Immutable.
+    forward_dynamics' result for a PivotedPlanarBody.
+    
+    The angular acceleration about z and the pivot's force on the body in W (its z part is what the pin and the
+    plane hold); unpacks as ``alpha, reaction_W = ...``. Immutable; pickles.
+    
+    Parameters
+    ----------
+    alpha : float or pint.Quantity, default 0
+        Angular acceleration about z [rad/s^2].
+    reaction_W : array_like, shape (3,), or pint.Quantity, optional
+        The pivot's force on the body, in W [N] (None: zero).
+    
+    See Also
+    --------
+    forward_dynamics, PivotedPlanarBody, PivotedPlanarTorque
+    
+    Examples
+    --------
+    A rod of L = 2 m and 3 kg pinned at one end, released horizontal: alpha = -3 g / (2 L), and the pin carries
+    m g / 4 (the centre of mass accelerates down at 3 g / 4):
+    
+    >>> rod = rd.PivotedPlanarBody(3.0, 3.0 * 2.0**2 / 12, p_OC_B=[1.0, 0.0])
+    >>> alpha, reaction_W = rd.forward_dynamics(rod, rd.PivotedPlanarBodyState(), gravity=[0.0, -9.81])
+    >>> print(f"{alpha:.6f} {reaction_W[1]:.6f} {3.0 * 9.81 / 4:.6f}")
+    -7.357500 7.357500 7.357500
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, other: typing.Any) -> typing.Any:
@@ -1544,16 +3410,39 @@ class PivotedPlanarAcceleration:
     @property
     def alpha(self) -> typing.Any:
         """
-        angular acceleration about z [rad/s^2]
+        Angular acceleration alpha about z [rad/s^2].
         """
     @property
     def reaction_W(self) -> typing.Any:
         """
-        (3,) the pivot's force on the body, in W [N]
+        The pivot's force on the body, in W, shape (3,) [N].
         """
 class PivotedPlanarTorque:
     """
-    inverse_dynamics' result for a PivotedPlanarBody: tau_O [N m] the torque about z the motion needs besides gravity, and reaction_W (3,) the pivot's force on the body in W [N] (unpacks as tau_O, reaction_W = ...). Immutable.
+    inverse_dynamics' result for a PivotedPlanarBody.
+    
+    The torque about the z axis through the pivot O the motion needs besides gravity, and the pivot's force on the
+    body in W; unpacks as ``tau_O, reaction_W = ...``. Immutable; pickles.
+    
+    Parameters
+    ----------
+    tau_O : float or pint.Quantity, default 0
+        Torque about the z axis through O [N m].
+    reaction_W : array_like, shape (3,), or pint.Quantity, optional
+        The pivot's force on the body, in W [N] (None: zero).
+    
+    See Also
+    --------
+    inverse_dynamics, PivotedPlanarBody, PivotedPlanarAcceleration
+    
+    Examples
+    --------
+    Holding the rod horizontal takes the torque m g L / 2 about the pin:
+    
+    >>> rod = rd.PivotedPlanarBody(3.0, 3.0 * 2.0**2 / 12, p_OC_B=[1.0, 0.0])
+    >>> tau_O, reaction_W = rd.inverse_dynamics(rod, rd.PivotedPlanarBodyState(), alpha_B=0.0, gravity=[0.0, -9.81])
+    >>> print(f"{tau_O:.6f} {3.0 * 9.81 * 1.0:.6f}")
+    29.430000 29.430000
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, other: typing.Any) -> typing.Any:
@@ -1575,16 +3464,19 @@ class PivotedPlanarTorque:
     @property
     def reaction_W(self) -> typing.Any:
         """
-        (3,) the pivot's force on the body, in W [N]
+        The pivot's force on the body, in W, shape (3,) [N].
         """
     @property
     def tau_O(self) -> typing.Any:
         """
-        torque about the z axis through O [N m]
+        Torque tau_O about the z axis through O [N m].
         """
 class Wheel:
     """
     A wheel of a Gyrostat, spun about an axis fixed in the body by a motor.
+    
+    Its speed relative to the body is a state of the gyrostat (GyrostatState.wheel_speeds). Immutable; pickles; ==
+    compares every field.
     
     Parameters
     ----------
@@ -1593,17 +3485,25 @@ class Wheel:
     inertia : float or pint.Quantity
         The wheel's moment of inertia about its spin axis [kg m^2], > 0.
     motor_torque : float or pint.Quantity, default 0
-        The motor's torque on the wheel about its axis [N m] (the body feels its reaction), applied for t_start <= t < t_end.
+        The motor's torque on the wheel about its axis [N m] (the body feels its reaction), applied for
+        t_start <= t < t_end.
     t_start, t_end : float or pint.Quantity, default 0 and inf
         The motor's time window [s] (a run splits its steps at both).
     
+    Raises
+    ------
+    ValueError
+        A zero or non-finite axis, an inertia not > 0, a non-finite torque, t_end not after t_start, or a quantity
+        of another dimension (the message names it).
+    
+    See Also
+    --------
+    Gyrostat, GyrostatState
+    
     Examples
     --------
-    >>> import rigiddyn as rd
     >>> rd.Wheel(axis_B=[0, 0, 2], inertia=0.01, motor_torque=0.002, t_end=5.0).axis_B
     array([0., 0., 1.])
-    
-    Immutable; pickles; == compares every field.
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, other: typing.Any) -> typing.Any:
@@ -1619,51 +3519,74 @@ class Wheel:
     @property
     def axis_B(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3,) the unit spin axis in B
+        The unit spin axis a in B, shape (3,).
         """
     @property
     def inertia(self) -> float:
         """
-        axial moment of inertia [kg m^2]
+        Axial moment of inertia J about the spin axis [kg m^2].
         """
     @property
     def motor_torque(self) -> float:
         """
-        motor torque [N m]
+        Motor torque u on the wheel about its axis [N m].
         """
     @property
     def t_end(self) -> float:
         """
-        the motor's end [s] (inf: never)
+        The motor's end [s] (inf: never).
         """
     @property
     def t_start(self) -> float:
         """
-        the motor's start [s]
+        The motor's start [s].
         """
 class Gyrostat:
     """
-    A rigid body carrying wheels, each spun about an axis fixed in the body by a motor, each wheel's speed relative to the body a state (Hughes, "Spacecraft Attitude Dynamics", ch. 3): a reaction-wheel spacecraft.
+    A rigid body carrying wheels spun by motors about axes fixed in the body: a reaction-wheel spacecraft.
     
-    With I the whole body's inertia (wheels locked), wheel k's unit axis a_k, axial inertia J_k, speed Omega_k relative to the body and motor torque u_k, the transverse inertia A = I - sum J_k a_k a_k^T:
+    Each wheel's speed relative to the body is a state (Hughes, "Spacecraft Attitude Dynamics", ch. 3). With I the
+    whole body's inertia about its centre of mass in B (wheels locked), wheel k's unit axis a_k, axial inertia J_k,
+    speed Omega_k relative to the body and motor torque u_k, the transverse inertia A = I - sum J_k a_k a_k^T:
+    
         A dw/dt = tau_B - sum u_k a_k - w x (I w + h_w),  dOmega_k/dt = u_k / J_k - a_k . dw/dt,
+    
     h_w = sum J_k Omega_k a_k; kinetic energy T = 1/2 m |v|^2 + 1/2 w.A w + 1/2 sum J_k (a_k.w + Omega_k)^2.
+    Elements see it as its locked RigidBody. It runs in an inertial scene with explicit_euler, semi_implicit_euler,
+    rk4, rkmk4 or implicit_midpoint; simulate and step of a Gyrostat alone run its one-body scene. Immutable;
+    pickles; == compares body and wheels.
     
     Parameters
     ----------
     body : RigidBody
-        The whole body with its wheels locked: mass [kg] and inertia_com [kg m^2] about its centre of mass in B, wheels included.
+        The whole body with its wheels locked: mass [kg] and inertia_com [kg m^2] about its centre of mass in B,
+        wheels included.
     wheels : sequence of Wheel
-        Its wheels (ValueError naming wheels[k].inertia when a wheel's axial inertia leaves A not positive definite).
+        Its wheels (one Wheel alone is taken as a list of one).
+    
+    Raises
+    ------
+    TypeError
+        body not a RigidBody, or wheels not a sequence of Wheel (the message names wheels[k]).
+    ValueError
+        A wheel's axial inertia leaves A not positive definite (the message names wheels[k].inertia).
+    
+    See Also
+    --------
+    Wheel, GyrostatState, RigidBody, simulate
     
     Examples
     --------
-    >>> import rigiddyn as rd
     >>> sat = rd.Gyrostat(rd.RigidBody(100.0, [10.0, 12.0, 15.0]), [rd.Wheel([0, 0, 1], 0.05)])
     >>> sat.transverse_inertia.diagonal()
     array([10.  , 12.  , 14.95])
     
-    Elements see it as its locked RigidBody. It runs in an inertial scene with explicit_euler, semi_implicit_euler, rk4, rkmk4 or implicit_midpoint. Immutable; pickles; == compares body and wheels.
+    Motor torque spins the wheel up and the body the other way; the total angular momentum stays zero:
+    
+    >>> sat = rd.Gyrostat(rd.RigidBody(100.0, [10.0, 12.0, 15.0]), [rd.Wheel([0, 0, 1], 0.05, motor_torque=0.01)])
+    >>> r = rd.simulate(sat, rd.GyrostatState(wheel_speeds=[0.0]), dt=0.1, steps=100)
+    >>> bool(r.w_B[-1, 0, 2] < 0 < r.wheel_speed[-1, 0]), bool(np.allclose(r.angular_momentum_W[-1], 0, atol=1e-12))
+    (True, True)
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, other: typing.Any) -> typing.Any:
@@ -1679,52 +3602,65 @@ class Gyrostat:
     @property
     def body(self) -> RigidBody:
         """
-        the RigidBody with the wheels locked (a copy)
+        The RigidBody with the wheels locked: mass [kg] and inertia about C in B [kg m^2] (a copy).
         """
     @property
     def inertia_com(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3, 3) inertia about the centre of mass in B, wheels locked [kg m^2]
+        Inertia I about the centre of mass in B, wheels locked, shape (3, 3) [kg m^2].
         """
     @property
     def mass(self) -> float:
         """
-        mass [kg]
+        Mass m [kg], wheels included.
         """
     @property
     def transverse_inertia(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3, 3) A = I - sum J_k a_k a_k^T [kg m^2]: the body with its wheels free to spin
+        A = I - sum J_k a_k a_k^T in B, shape (3, 3) [kg m^2]: the body with its wheels free to spin.
         """
     @property
     def wheels(self) -> tuple:
         """
-        the wheels (a tuple)
+        The wheels, a tuple of Wheel in the order of the state's wheel_speeds.
         """
 class GyrostatState:
     """
-    State of a Gyrostat: the rigid body's and its wheels' speeds.
+    State of a Gyrostat: the rigid body's state and its wheels' speeds.
+    
+    Fields are assigned whole (converted and checked as the constructor does); the arrays read are read-only copies.
+    Pickles; == compares every field.
     
     Parameters
     ----------
     p_W : array_like, shape (3,), optional
         Centre of mass position in W [m] (None: zero).
     q_WB : array_like, shape (4,), optional
-        Unit quaternion B to W, (x, y, z, w), or (w, x, y, z) with scalar_first=True (None: identity; normalised, ValueError beyond 1e-6 of unit norm).
+        Unit quaternion B to W, (x, y, z, w), or (w, x, y, z) with scalar_first=True (None: identity; normalised).
     v_W : array_like, shape (3,), optional
         Centre of mass velocity in W [m/s] (None: zero).
     w_B : array_like, shape (3,), optional
         Angular velocity of B relative to W, in B [rad/s] (None: zero).
     wheel_speeds : array_like, shape (nw,), optional
-        Each wheel's speed relative to the body [rad/s], in the order of the gyrostat's wheels (None: none; a run checks one per wheel).
+        Each wheel's speed relative to the body [rad/s], in the order of the gyrostat's wheels (None: none; a run
+        checks one per wheel).
+    scalar_first : bool, default False
+        Read q_WB as (w, x, y, z).
+    
+    Raises
+    ------
+    ValueError
+        q_WB farther than 1e-6 from unit norm, wheel_speeds not 1-D or not finite, a field of another shape, or a
+        quantity of another dimension (the message names it).
+    
+    See Also
+    --------
+    Gyrostat, Wheel, simulate
     
     Examples
     --------
-    >>> import rigiddyn as rd
     >>> rd.GyrostatState(w_B=[0, 0, 0.1], wheel_speeds=[100.0]).wheel_speeds
     array([100.])
-    
-    Fields are assigned whole (checked as here); their arrays are read-only.
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, other: typing.Any) -> typing.Any:
@@ -1740,7 +3676,7 @@ class GyrostatState:
     @property
     def p_W(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3,) centre of mass position in W [m]
+        Centre of mass position p_W in W, shape (3,) [m].
         """
     @p_W.setter
     def p_W(self, arg1: typing.Any) -> None:
@@ -1748,7 +3684,7 @@ class GyrostatState:
     @property
     def q_WB(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (4,) attitude (x, y, z, w), B to W; set from (x, y, z, w), normalised (ValueError beyond 1e-6 of unit norm)
+        Attitude q_WB (B to W), shape (4,), (x, y, z, w); set from (x, y, z, w), normalised (ValueError beyond 1e-6 of unit norm).
         """
     @q_WB.setter
     def q_WB(self, arg1: typing.Any) -> None:
@@ -1756,7 +3692,7 @@ class GyrostatState:
     @property
     def v_W(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3,) centre of mass velocity in W [m/s]
+        Centre of mass velocity v_W in W, shape (3,) [m/s].
         """
     @v_W.setter
     def v_W(self, arg1: typing.Any) -> None:
@@ -1764,7 +3700,7 @@ class GyrostatState:
     @property
     def w_B(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3,) angular velocity of B in W, expressed in B [rad/s]
+        Angular velocity w_B of B in W, expressed in B, shape (3,) [rad/s].
         """
     @w_B.setter
     def w_B(self, arg1: typing.Any) -> None:
@@ -1772,14 +3708,40 @@ class GyrostatState:
     @property
     def wheel_speeds(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (nw,) each wheel's speed relative to the body [rad/s]
+        Each wheel's speed relative to the body, shape (nw,) [rad/s].
         """
     @wheel_speeds.setter
     def wheel_speeds(self, arg1: typing.Any) -> None:
         ...
 class ElementField:
     """
-    One field of a force element class (its class attribute `fields`, in constructor order): key (the keyword and attribute), kind ('scalar', 'vector' (3,), 'bodies', 'body', 'optional_body', 'loads', 'frame' or 'callable'), unit (SI, pint syntax; '' when none), required, default (None when required; a vector as a tuple) and doc.
+    One field of a force element class: its class attribute `fields`, in constructor order.
+    
+    Made by the element classes (no public constructor); the scene files, describe() and the stability check read
+    them.
+    
+    Attributes
+    ----------
+    key : str
+        The keyword and attribute.
+    kind : str
+        'scalar', 'vector' (3,), 'bodies', 'body', 'optional_body', 'loads', 'frame' or 'callable'.
+    unit : str
+        SI, pint syntax ('' when none).
+    required : bool
+        The constructor needs it.
+    default : object
+        None when required; a vector as a tuple.
+    doc : str
+        What it is, with its unit.
+    
+    Examples
+    --------
+    >>> field = rd.SpringDamper.fields[4]
+    >>> field.key, field.unit, field.required
+    ('stiffness', 'N/m', True)
+    >>> [f.key for f in rd.SpringDamper.fields]
+    ['body_a', 'point_a_B', 'body_b', 'point_b', 'stiffness', 'rest_length', 'damping']
     """
     def __repr__(self) -> str:
         ...
@@ -1813,6 +3775,15 @@ class UniformGravity:
         None (every body) or a tuple of the indices of the bodies it acts on
     
     Each argument with a unit takes a float in that unit or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
+    
+    Examples
+    --------
+    A particle dropped from rest falls g t²/2 in t seconds:
+    
+    >>> scene = rd.Scene([rd.Particle(1.0)], elements=[rd.UniformGravity(g_W=(0.0, 0.0, -9.81))])
+    >>> result = rd.simulate(scene, [rd.ParticleState()], 0.01, duration=2.0, method="rk4")
+    >>> result.p_W[-1, 0].round(12)
+    array([  0.  ,   0.  , -19.62])
     """
     __hash__: typing.ClassVar[None] = None
     fields: typing.ClassVar[tuple]
@@ -1852,6 +3823,16 @@ class PointMassGravity:
         None (every body) or a tuple of the indices of the bodies it acts on
     
     Each argument with a unit takes a float in that unit or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
+    
+    Examples
+    --------
+    A particle on a circular orbit of radius 1 about gm = 1 comes back after one period 2π:
+    
+    >>> scene = rd.Scene([rd.Particle(1.0)], elements=[rd.PointMassGravity(gm=1.0)])
+    >>> start = rd.ParticleState(p_W=(1.0, 0.0, 0.0), v_W=(0.0, 1.0, 0.0))
+    >>> result = rd.simulate(scene, [start], 2 * np.pi / 1000, steps=1000, method="rk4")
+    >>> bool(np.allclose(result.p_W[-1, 0], [1.0, 0.0, 0.0], atol=1e-9))
+    True
     """
     __hash__: typing.ClassVar[None] = None
     fields: typing.ClassVar[tuple]
@@ -1899,6 +3880,19 @@ class MutualGravity:
         None (every body) or a tuple of the indices of the bodies that attract each other
     
     Each argument with a unit takes a float in that unit or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
+    
+    Examples
+    --------
+    Two bodies attract each other: their momentum stays zero and their energy is kept to the method's error:
+    
+    >>> bodies = [rd.Particle(1.0), rd.Particle(1.0)]
+    >>> scene = rd.Scene(bodies, elements=[rd.MutualGravity(G=1.0)])
+    >>> start = [rd.ParticleState(p_W=(-0.5, 0.0, 0.0), v_W=(0.0, -0.5, 0.0)),
+    ...          rd.ParticleState(p_W=(0.5, 0.0, 0.0), v_W=(0.0, 0.5, 0.0))]
+    >>> result = rd.simulate(scene, start, 1e-3, duration=5.0, method="rk4")
+    >>> E = result.total_energy
+    >>> bool(np.allclose(result.linear_momentum_W[-1], 0.0, atol=1e-14)), bool(abs(E[-1] - E[0]) < 1e-9)
+    (True, True)
     """
     __hash__: typing.ClassVar[None] = None
     fields: typing.ClassVar[tuple]
@@ -1941,6 +3935,17 @@ class GravityGradient:
         None (every body) or a tuple of the indices of the bodies it acts on
     
     Each argument with a unit takes a float in that unit or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
+    
+    Examples
+    --------
+    A body on a circular orbit at rest in W feels the torque 3 gm/|r|³ r̂ × I r̂ (here zero: r̂ along a principal
+    axis, an equilibrium):
+    
+    >>> scene = rd.Scene([rd.RigidBody(1.0, [1.0, 2.0, 3.0])], elements=[rd.GravityGradient(gm=1.0)])
+    >>> start = rd.RigidBodyState(p_W=(10.0, 0.0, 0.0))
+    >>> result = rd.simulate(scene, [start], 0.01, steps=10, method="rk4")
+    >>> bool(np.allclose(result.w_B[-1, 0], 0.0, atol=1e-15))
+    True
     """
     __hash__: typing.ClassVar[None] = None
     fields: typing.ClassVar[tuple]
@@ -1991,6 +3996,18 @@ class SpringDamper:
         damping coefficient c [N s/m]
     
     Each argument with a unit takes a float in that unit or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
+    
+    Examples
+    --------
+    A mass on a spring to a world anchor oscillates at ω = √(k/m): after one period 2π√(m/k) it is back at its
+    start:
+    
+    >>> scene = rd.Scene([rd.Particle(2.0)], elements=[rd.SpringDamper(body_a=0, stiffness=8.0)])
+    >>> start = rd.ParticleState(p_W=(0.1, 0.0, 0.0))
+    >>> period = 2 * np.pi * np.sqrt(2.0 / 8.0)
+    >>> result = rd.simulate(scene, [start], period / 1000, steps=1000, method="rk4")
+    >>> result.p_W[-1, 0].round(9)
+    array([0.1, 0. , 0. ])
     """
     __hash__: typing.ClassVar[None] = None
     fields: typing.ClassVar[tuple]
@@ -2057,6 +4074,15 @@ class Drag:
         None (every body) or a tuple of the indices of the bodies it acts on
     
     Each argument with a unit takes a float in that unit or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
+    
+    Examples
+    --------
+    Linear drag slows a particle exponentially, v(t) = v0 exp(-c t/m):
+    
+    >>> scene = rd.Scene([rd.Particle(2.0)], elements=[rd.Drag(linear=1.0)])
+    >>> result = rd.simulate(scene, [rd.ParticleState(v_W=(1.0, 0.0, 0.0))], 1e-3, duration=2.0, method="rk4")
+    >>> bool(np.isclose(result.v_W[-1, 0, 0], np.exp(-1.0), rtol=1e-10))
+    True
     """
     __hash__: typing.ClassVar[None] = None
     fields: typing.ClassVar[tuple]
@@ -2109,6 +4135,17 @@ class ScheduledLoads:
         (3,) point of application of the forces in B, from the centre of mass [m]
     
     Each argument with a unit takes a float in that unit or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
+    
+    Examples
+    --------
+    A torque of 1 N m about z on for the first second of a sphere with I = 0.5 kg m²: ω = 2 rad/s after it:
+    
+    >>> sphere = rd.RigidBody(1.0, [0.5, 0.5, 0.5])
+    >>> torque = rd.AppliedLoad(torque=(0.0, 0.0, 1.0), t_end=1.0)
+    >>> scene = rd.Scene([sphere], elements=[rd.ScheduledLoads(body=0, loads=torque)])
+    >>> result = rd.simulate(scene, [rd.RigidBodyState()], 0.01, duration=3.0, method="rk4")
+    >>> result.w_B[-1, 0].round(12)
+    array([0., 0., 2.])
     """
     __hash__: typing.ClassVar[None] = None
     fields: typing.ClassVar[tuple]
@@ -2147,6 +4184,17 @@ class PythonForce:
         a callable fn(t, body, p_W, q_WB, v_W, w_B) -> (f_W, tau_B)
     bodies : sequence of int or None, default None
         None (every body) or a tuple of the indices of the bodies it acts on
+    
+    
+    Examples
+    --------
+    The weight m g of a particle of 1 kg written in Python: it falls g t²/2:
+    
+    >>> weight = rd.PythonForce(lambda t, body, p_W, q_WB, v_W, w_B: ((0.0, 0.0, -9.81), (0.0, 0.0, 0.0)))
+    >>> scene = rd.Scene([rd.Particle(1.0)], elements=[weight])
+    >>> result = rd.simulate(scene, [rd.ParticleState()], 0.01, duration=1.0, method="rk4")
+    >>> result.p_W[-1, 0].round(12)
+    array([ 0.   ,  0.   , -4.905])
     """
     __hash__: typing.ClassVar[None] = None
     fields: typing.ClassVar[tuple]
@@ -2186,6 +4234,16 @@ class Thrust:
         (3,) point of application in B, from the centre of mass [m]
     
     Each argument with a unit takes a float in that unit or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
+    
+    Examples
+    --------
+    A rocket particle that burns half its mass at 10 m/s exhaust speed gains 10 ln 2 m/s (Tsiolkovsky):
+    
+    >>> rocket = rd.Scene([rd.Particle(2.0)], elements=[rd.Thrust(body=0, u_rel=(-10.0, 0.0, 0.0), frame="world")],
+    ...                   mass_flows=[rd.MassFlow(rate=-0.5)])
+    >>> result = rd.simulate(rocket, [rd.ParticleState()], 0.01, duration=2.0, method="rk4")
+    >>> round(float(result.mass[-1, 0]), 12), bool(np.isclose(result.v_W[-1, 0, 0], 10 * np.log(2.0), rtol=1e-9))
+    (1.0, True)
     """
     __hash__: typing.ClassVar[None] = None
     fields: typing.ClassVar[tuple]
@@ -2237,6 +4295,16 @@ class MagneticDipole:
         None (every body) or a tuple of the indices of the bodies it acts on
     
     Each argument with a unit takes a float in that unit or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
+    
+    Examples
+    --------
+    A compass needle (dipole m along its x axis) in a uniform field along x is at rest: no torque:
+    
+    >>> needle = rd.RigidBody(1.0, [1e-4, 1e-3, 1e-3])
+    >>> field = rd.MagneticDipole(m_B=(1.0, 0.0, 0.0), B_W=(1e-4, 0.0, 0.0))
+    >>> result = rd.simulate(rd.Scene([needle], elements=[field]), [rd.RigidBodyState()], 0.01, steps=100, method="rk4")
+    >>> bool(np.allclose(result.w_B[-1, 0], 0.0, atol=1e-15))
+    True
     """
     __hash__: typing.ClassVar[None] = None
     fields: typing.ClassVar[tuple]
@@ -2297,6 +4365,18 @@ class ReactionWheel:
         the end of the ramp [s] (inf: none)
     
     Each argument with a unit takes a float in that unit or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
+    
+    Examples
+    --------
+    A wheel (J = 0.1 kg m²) spun up to 1 rad/s about z turns a body (I = 1 kg m², wheel included) the other way at
+    J/I × 1 rad/s, so that the total angular momentum stays zero:
+    
+    >>> body = rd.RigidBody(10.0, [1.0, 1.0, 1.0])
+    >>> wheel = rd.ReactionWheel(body=0, axis_B=(0.0, 0.0, 1.0), inertia=0.1, acceleration=1.0, t_end=1.0)
+    >>> result = rd.simulate(rd.Scene([body], elements=[wheel]), [rd.RigidBodyState()], 0.01, duration=2.0,
+    ...                      method="rk4")
+    >>> result.w_B[-1, 0].round(12)
+    array([ 0. ,  0. , -0.1])
     """
     __hash__: typing.ClassVar[None] = None
     fields: typing.ClassVar[tuple]
@@ -2347,28 +4427,48 @@ class ReactionWheel:
         """
 class SceneFrame:
     """
-    The frame F a scene's states are relative to, moving relative to the inertial frame W (Scene.frame; None:
-    W itself). Build it with
-      SceneFrame.rotating(axis, rate)   F turns at `rate` [rad/s] about `axis` (3,) (any non-zero length; fixed
-                                        in F and in W) through its origin, fixed at W's origin; F = W at t = 0;
-      SceneFrame.earth(latitude)        the local frame (x east, y north, z up) at `latitude` [rad] on the turning
-                                        Earth: Omega = 7.2921159e-5 rad/s about (0, cos(latitude), sin(latitude));
-      SceneFrame.moving(frame_motion, terms=None)
-                                        any motion of F relative to W, a FrameMotion (a Python kinematics_at(t) is
-                                        called with the GIL taken, at each derivative evaluation); terms: the
-                                        fictitious terms that act, when the motion leaves some identically zero.
-    Each physical argument: a float [its unit] or a pint quantity. Newton's and Euler's laws seen from F gain the
-    fictitious terms ("Rigid body kinematics and dynamics" notes, eqs. (4.39)-(4.40)): frame origin -m a_O, Euler
-    -m alpha x r, centrifugal -m Omega x (Omega x r), Coriolis -2 m Omega x v (and their torques on bodies with an
-    attitude); compiling a scene adds those that act (SceneFrame.terms) as elements "FrameOriginForce", "EulerForce",
-    "CentrifugalForce", "CoriolisForce" after the scene's own (columns of SceneResult.work and power): the centrifugal
-    and Coriolis ones for rotating and earth (none at rate 0), none for a FrameMotion.fixed placement, every term
-    for a general motion unless `terms` names those that act (a motion turning at a constant rate has no Euler term,
-    one whose origin does not accelerate no origin term; each evaluation of the motion then checks that the values
-    of the terms left out are zero, else ValueError naming `frame`). Every
-    element, state and record of the scene is then in F. A motion function returning a non-finite value raises
-    ValueError naming `frame`; an exception it raises propagates out of simulate. Immutable; pickles (a
-    FrameMotion of a module-level function); == compares how it was built.
+    The frame F a scene's states are relative to, moving relative to the inertial frame W.
+    
+    Scene.frame (None: W itself). Built by its static constructors (no public constructor):
+    
+    - SceneFrame.rotating(axis, rate): F turns at `rate` [rad/s] about `axis` (3,) (any non-zero length; fixed in F
+      and in W) through its origin, fixed at W's origin; F = W at t = 0;
+    - SceneFrame.earth(latitude): the local frame (x east, y north, z up) at `latitude` [rad] on the turning Earth:
+      Omega = 7.2921159e-5 rad/s about (0, cos(latitude), sin(latitude));
+    - SceneFrame.moving(frame_motion, terms=None): any motion of F relative to W, a FrameMotion (a Python
+      kinematics_at(t) is called with the GIL taken, at each derivative evaluation); terms: the fictitious terms
+      that act, when the motion leaves some identically zero.
+    
+    Each physical argument: a float [its unit] or a pint quantity. Immutable; pickles (a FrameMotion of a
+    module-level function); == compares how it was built.
+    
+    Notes
+    -----
+    Newton's and Euler's laws seen from F gain the fictitious terms ("Rigid body kinematics and dynamics" notes,
+    eqs. (4.39)-(4.40)): frame origin -m a_O, Euler -m alpha x r, centrifugal -m Omega x (Omega x r), Coriolis
+    -2 m Omega x v (and their torques on bodies with an attitude). Compiling a scene adds those that act
+    (SceneFrame.terms) as elements "FrameOriginForce", "EulerForce", "CentrifugalForce", "CoriolisForce" after the
+    scene's own (columns of SceneResult.work and power): the centrifugal and Coriolis ones for rotating and earth
+    (none at rate 0), none for a FrameMotion.fixed placement, every term for a general motion unless `terms` names
+    those that act (a motion turning at a constant rate has no Euler term, one whose origin does not accelerate no
+    origin term; each evaluation of the motion then checks that the values of the terms left out are zero, else
+    ValueError naming `frame`). Every element, state and record of the scene is then in F. A motion function
+    returning a non-finite value raises ValueError naming `frame`; an exception it raises propagates out of
+    simulate.
+    
+    Examples
+    --------
+    A particle at rest in W, seen from a frame turning at 1 rad/s about z, circles the other way: after a quarter
+    turn it is at (0, -1, 0) in F:
+    
+    >>> frame = rd.SceneFrame.rotating([0.0, 0.0, 1.0], 1.0)
+    >>> frame.terms
+    ('centrifugal', 'coriolis')
+    >>> scene = rd.Scene([rd.Particle(1.0)], frame=frame)
+    >>> at_rest_in_W = rd.ParticleState(p_W=(1.0, 0.0, 0.0), v_W=(0.0, -1.0, 0.0))
+    >>> result = rd.simulate(scene, [at_rest_in_W], np.pi / 2000, steps=1000, method="rk4")
+    >>> result.p_W[-1, 0].round(9)
+    array([ 0., -1.,  0.])
     """
     __hash__: typing.ClassVar[None] = None
     @staticmethod
@@ -2411,21 +4511,45 @@ class SceneFrame:
         """
 class MassFlow:
     """
-    The mass flow of a body (Scene.add_body(body, mass_flow=...)): its mass changes at the rate
-      rate          dm/dt [kg/s]: a float (or a pint quantity; negative: the body loses mass) or a callable
-                    rate(t) -> float of the time t [s];
-    and its rotational inertia about the centre of mass follows
-      inertia_rule  'scaled' (I_C(m) = I_C0 m / m0: the body's shape is kept; every method applies) or a callable
-                    inertia_rule(m) -> (3, 3) [kg m^2] in B of the mass m [kg] (the splitting methods are refused).
-    The mass starts at the body's mass and is a coordinate of the run (SceneResult.mass). Its force is the
-    Thrust element, f = rate u_rel ("Rigid body kinematics and dynamics" notes, eq. (4.36): m dv/dt = f + (dm/dt)
-    u_rel). The mass leaving carries its own angular momentum (no jet damping): I(m) dw/dt + w x I(m) w = tau.
+    The mass flow of a body: its mass changes at a given rate, its inertia by a rule.
+    
+    Given to Scene.add_body(body, mass_flow=...) or Scene(..., mass_flows=[...]). The mass starts at the body's mass
+    and is a coordinate of the run (SceneResult.mass). Its force is the Thrust element, f = rate u_rel ("Rigid body
+    kinematics and dynamics" notes, eq. (4.36): m dv/dt = f + (dm/dt) u_rel). The mass leaving carries its own
+    angular momentum (no jet damping): I(m) dw/dt + w x I(m) w = tau. Immutable; pickles (callables defined at
+    module level); == compares rate and inertia_rule.
+    
+    Parameters
+    ----------
+    rate : float or callable, default 0.0
+        dm/dt [kg/s]: a float (or a pint quantity; negative: the body loses mass) or a callable rate(t) -> float of
+        the time t [s].
+    inertia_rule : {'scaled'} or callable, default 'scaled'
+        How the rotational inertia about the centre of mass follows the mass: 'scaled' (I_C(m) = I_C0 m / m0: the
+        body's shape is kept; every method applies) or a callable inertia_rule(m) -> (3, 3) [kg m^2] in B of the
+        mass m [kg] (the splitting methods are refused).
+    
+    Raises
+    ------
+    ValueError
+        A non-finite value of a callable (naming mass_flows[i].rate or inertia_rule); a mass reaching zero (naming
+        mass_flows[i] and the step; for a constant rate before the run, naming steps and dt).
+    
+    Notes
+    -----
     Callables are called with the GIL taken, at each derivative evaluation; an exception they raise stops the run
-    and propagates; a non-finite value raises ValueError naming mass_flows[i].rate or inertia_rule. A mass reaching
-    zero raises ValueError naming mass_flows[i] and the step (for a constant rate, before the run: naming steps, dt).
-    The kinetic energy the flow takes away or brings at the body's own velocity, 1/2 (dm/dt) |v|^2 + 1/2 w.(dI/dt) w
-    integrated, is SceneResult.mass_flow_energy: kinetic_energy - kinetic_energy[0] ~ work + mass-flow energy.
-    Immutable; pickles (callables defined at module level); == compares rate and inertia_rule.
+    and propagates. The kinetic energy the flow takes away or brings at the body's own velocity,
+    1/2 (dm/dt) |v|^2 + 1/2 w.(dI/dt) w integrated, is SceneResult.mass_flow_energy:
+    kinetic_energy - kinetic_energy[0] ~ work + mass-flow energy.
+    
+    Examples
+    --------
+    A particle of 2 kg losing 0.5 kg/s has 1 kg left after 2 s:
+    
+    >>> scene = rd.Scene([rd.Particle(2.0)], mass_flows=[rd.MassFlow(rate=-0.5)])
+    >>> result = rd.simulate(scene, [rd.ParticleState()], 0.1, duration=2.0, method="rk4")
+    >>> result.mass[[0, 10, 20], 0].round(12)
+    array([2. , 1.5, 1. ])
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, other: typing.Any) -> typing.Any:
@@ -2454,22 +4578,61 @@ class SceneCompatibilityWarning(UserWarning):
     """
 class Scene:
     """
-    A scene: bodies (Particle, PlanarBody, RigidBody, PivotedBody, PivotedPlanarBody) and the force elements
-    acting on them, as data, in a frame: W (inertial; the default) or the SceneFrame `frame` (states, elements and
-    records are then relative to it, with its fictitious forces compiled in). A body may carry a MassFlow (its mass
-    changes; a Thrust element gives its force).
+    Bodies and the force elements acting on them, as data, in a frame.
     
-        scene = rigiddyn.Scene()
-        sat = scene.add_body(rigiddyn.RigidBody(500.0, [400.0, 300.0, 200.0]), name="sat")
-        scene.add(rigiddyn.PointMassGravity(gm=3.986004418e14))
-        result = rigiddyn.simulate(scene, [rigiddyn.RigidBodyState(p_W=[7e6, 0, 0], v_W=[0, 7546.0, 0])],
-                                   dt=1.0, steps=6000, method="rk4")
+    The bodies are Particle, PlanarBody, RigidBody, PivotedBody, PivotedPlanarBody or Gyrostat; the elements
+    (UniformGravity, SpringDamper, Drag, ...) refer to bodies by index. The frame is W (inertial; the default) or the
+    SceneFrame `frame`: states, elements and records are then relative to it, with its fictitious forces compiled in.
+    A body may carry a MassFlow (its mass changes; a Thrust element gives its force). Compile it for a method with
+    compile(method) (a CompiledScene, immutable), or give it to rigiddyn.simulate / rigiddyn.step, which compile it.
+    Mutable (add_body, add, frame); pickles; == compares bodies, names, elements, frame and mass flows.
     
-    Scene(bodies=None, body_names=None, elements=None, frame=None, mass_flows=None) builds the same from lists
-    (body_names: one str or None per body; mass_flows: one MassFlow or None per body); it is what repr prints. Bodies are indexed in the order added; an element refers to bodies
-    by index and is checked against the bodies added so far (add bodies first). Compile it for a method with
-    compile(method) (a CompiledScene, immutable), or give it to rigiddyn.simulate / rigiddyn.step, which
-    compile it. Mutable (add_body, add, frame); pickles; == compares bodies, names, elements, frame and mass flows.
+    Parameters
+    ----------
+    bodies : sequence of bodies, optional
+        The bodies, indexed in order (add_body appends more).
+    body_names : sequence of str or None, optional
+        One name or None per body (records and DataFrame columns use them).
+    elements : sequence of force elements, optional
+        Checked against the bodies (add bodies first).
+    frame : SceneFrame or None, default None
+        The frame the states are relative to; None: W.
+    mass_flows : sequence of MassFlow or None, optional
+        One per body (None: a constant mass).
+    
+    Raises
+    ------
+    TypeError, ValueError
+        A body, element or frame that is not valid, or an element naming a body that does not exist (the message
+        names it).
+    
+    See Also
+    --------
+    simulate : runs the scene.
+    load_scene : reads one from a TOML file (with units).
+    CompiledScene : the scene compiled for one method.
+    
+    Examples
+    --------
+    A satellite in a circular low Earth orbit keeps its orbital energy to RK4's error:
+    
+    >>> scene = rd.Scene()
+    >>> scene.add_body(rd.RigidBody(500.0, [400.0, 300.0, 200.0]), name="sat")
+    0
+    >>> scene.add(rd.PointMassGravity(gm=3.986004418e14))
+    0
+    >>> start = rd.RigidBodyState(p_W=[7e6, 0.0, 0.0], v_W=[0.0, 7546.0, 0.0])
+    >>> result = rd.simulate(scene, [start], dt=1.0, steps=6000, method="rk4")
+    >>> result.body_names, result.elements
+    (('sat',), ('PointMassGravity',))
+    >>> E = result.total_energy
+    >>> bool(abs(E[-1] - E[0]) < 1e-12 * abs(E[0]))
+    True
+    
+    The same kind of scene from lists, as repr prints it:
+    
+    >>> rd.Scene([rd.Particle(1.0)], elements=[rd.UniformGravity()])
+    Scene(bodies=[Particle(mass=1.0)], body_names=[None], elements=[UniformGravity(g_W=[0.0, 0.0, -9.81], bodies=None)])
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, other: typing.Any) -> typing.Any:
@@ -2532,7 +4695,29 @@ class Scene:
         """
 class CompiledScene:
     """
-    A scene compiled for one method (Scene.compile): immutable; its derivative evaluates only the declared elements. CompiledScene(scene, method='rk4') is scene.compile(method). Give it to rigiddyn.simulate / rigiddyn.step (method None or its own). Pickles (as its scene and method); == compares both.
+    A scene compiled for one method: immutable; its derivative evaluates only the declared elements.
+    
+    CompiledScene(scene, method='rk4') is scene.compile(method). Give it to rigiddyn.simulate / rigiddyn.step
+    (method None or its own). Pickles (as its scene and method); == compares both.
+    
+    Parameters
+    ----------
+    scene : Scene
+        The bodies and elements (copied: later changes to the scene do not reach it).
+    method : str, default 'rk4'
+        A name from methods(); a method the scene cannot take is refused here (ValueError naming it).
+    
+    Examples
+    --------
+    Compile once, run many times (here the DLM splitting, whose derivative evaluates the declared elements only):
+    
+    >>> scene = rd.Scene([rd.Particle(1.0)], elements=[rd.UniformGravity()])
+    >>> compiled = scene.compile("splitting_dlm")
+    >>> compiled == rd.CompiledScene(scene, "splitting_dlm")
+    True
+    >>> result = rd.simulate(compiled, [rd.ParticleState()], 0.1, steps=10)
+    >>> result.p_W[-1, 0].round(12)
+    array([ 0.   ,  0.   , -4.905])
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, other: typing.Any) -> typing.Any:
@@ -2571,27 +4756,66 @@ class CompiledScene:
         """
 class SceneResult:
     """
-    The records of simulate(scene, ...), one row per record (n records, nb bodies in the scene's order, ne
-    elements in the scene's order); every array is read-only and shares the memory the C++ run filled.
+    The records of simulate(scene, ...): one row per record, every array read-only.
     
-    "W" is the scene frame: W itself, or the scene's SceneFrame F (every array is then relative to F).
-    t (n,) [s]; p_W (n, nb, 3) centre of mass positions in W [m]; q_WB (n, nb, 4) attitudes, (x, y, z, w)
-    unless simulate(..., scalar_first=True); v_W (n, nb, 3) [m/s] in W; w_B (n, nb, 3) [rad/s] in each body's
-    B. A particle records q_WB = identity and w_B = 0; a planar body p_W = (x, y, 0), q_WB = Rz(theta),
-    w_B = (0, 0, omega); a pinned body its centre of mass. pivot_reaction_W (n, nb, 3) the pivot's force on each
-    body in W [N] (0 unpinned); angular_momentum_O_W (n, nb, 3) each body's about its pivot (about its centre of
-    mass unpinned), in W [kg m^2/s]; mass (n, nb) [kg]. kinetic_energy (relative to W), potential_energy (the sum
-    of the elements' potentials, and the centrifugal one of a frame turning at a constant rate: total_energy is
-    then the Jacobi integral), total_energy (n,) [J]; linear_momentum_W (n, 3) [kg m/s]; angular_momentum_W (n, 3) about W's origin [kg m^2/s];
-    work (n, ne) each element's work since t0 [J] and power (n, ne) its power at the record [W]; the columns are
-    the scene's elements then the frame's fictitious terms that act (CentrifugalForce, CoriolisForce, ...);
-    mass_flow_energy (n, nb) each body's mass-flow energy since t0 [J]: the integral of 1/2 (dm/dt) |v|^2 +
-    1/2 w.(dI/dt) w, the kinetic energy its mass flow takes away or brings at its own velocity (0 for a constant
-    mass). Work-energy balance, integrated by the run's method (to its error):
-    kinetic_energy - kinetic_energy[0] ~ work.sum(axis=1) + mass_flow_energy.sum(axis=1)
-    (without a MassFlow the last sum is 0: the work alone); body_names (nb,) and
-    elements (ne,) (each column's class name) label the axes; diverged, unconverged_steps, elapsed_seconds as in
-    SimulationResult.
+    n records, nb bodies in the scene's order, ne elements in the scene's order; every array shares the memory the
+    C++ run filled. "W" is the scene frame: W itself, or the scene's SceneFrame F (every array is then relative to
+    F). Made by simulate (no public constructor).
+    
+    Attributes
+    ----------
+    t : ndarray, shape (n,)
+        Record times [s].
+    p_W, v_W : ndarray, shape (n, nb, 3)
+        Centre of mass positions [m] and velocities [m/s] in W (a pinned body: its centre of mass).
+    q_WB : ndarray, shape (n, nb, 4)
+        Attitudes, (x, y, z, w) unless simulate(..., scalar_first=True).
+    w_B : ndarray, shape (n, nb, 3)
+        Angular velocities [rad/s] in each body's B. A particle records q_WB = identity and w_B = 0; a planar body
+        p_W = (x, y, 0), q_WB = Rz(theta), w_B = (0, 0, omega).
+    pivot_reaction_W : ndarray, shape (n, nb, 3)
+        The pivot's force on each body in W [N] (0 unpinned).
+    angular_momentum_O_W : ndarray, shape (n, nb, 3)
+        Each body's angular momentum about its pivot (about its centre of mass unpinned), in W [kg m^2/s].
+    mass : ndarray, shape (n, nb)
+        Masses [kg].
+    kinetic_energy, potential_energy, total_energy : ndarray, shape (n,)
+        [J]; the kinetic energy relative to W; the potential energy is the sum of the elements' potentials, and the
+        centrifugal one of a frame turning at a constant rate (total_energy is then the Jacobi integral).
+    linear_momentum_W : ndarray, shape (n, 3)
+        [kg m/s] in W.
+    angular_momentum_W : ndarray, shape (n, 3)
+        About W's origin [kg m^2/s].
+    work, power : ndarray, shape (n, ne)
+        Each element's work since t0 [J] and its power at the record [W]; the columns are the scene's elements, then
+        the frame's fictitious terms that act (CentrifugalForce, CoriolisForce, ...).
+    mass_flow_energy : ndarray, shape (n, nb)
+        Each body's mass-flow energy since t0 [J]: the integral of 1/2 (dm/dt) |v|^2 + 1/2 w.(dI/dt) w, the kinetic
+        energy its mass flow takes away or brings at its own velocity (0 for a constant mass).
+    body_names : tuple of str, shape (nb,)
+        Label the body axis.
+    elements : tuple of str, shape (ne,)
+        Each work and power column's class name.
+    diverged, unconverged_steps, elapsed_seconds
+        As in SimulationResult.
+    
+    Notes
+    -----
+    The work-energy balance, integrated by the run's method (to its error):
+    kinetic_energy - kinetic_energy[0] ~ work.sum(axis=1) + mass_flow_energy.sum(axis=1) (without a MassFlow the
+    last sum is 0: the work alone).
+    
+    Examples
+    --------
+    Two particles under gravity: the change of kinetic energy is the work of gravity.
+    
+    >>> scene = rd.Scene([rd.Particle(2.0), rd.Particle(1.0)], elements=[rd.UniformGravity()])
+    >>> result = rd.simulate(scene, [rd.ParticleState(), rd.ParticleState(v_W=(1.0, 0.0, 0.0))], 0.01, steps=100)
+    >>> result.t.shape, result.p_W.shape, result.work.shape
+    ((101,), (101, 2, 3), (101, 1))
+    >>> T = result.kinetic_energy
+    >>> bool(np.allclose(T - T[0], result.work.sum(axis=1), atol=1e-12))
+    True
     """
     def __getstate__(self) -> tuple:
         ...
@@ -2730,7 +4954,43 @@ class SceneResult:
         """
 class AppliedLoad:
     """
-    A load: force (3,) [N] through the centre of mass and torque (3,) [N m] (a pure couple), both expressed in frame 'world' (W) or 'body' (B), active for t_start <= t < t_end [s]. Immutable. Each of force, torque, t_start, t_end: float(s) [unit] or a pint quantity (converted; ValueError naming it for another dimension).
+    An applied load: a force through the centre of mass and a couple, on a time window.
+    
+    Both are expressed in frame 'world' (W) or 'body' (B) and act for t_start <= t < t_end. simulate and step take a
+    sequence of them as a piecewise-constant schedule, splitting a step at each t_start and t_end. Immutable;
+    pickles; == compares every field.
+    
+    Parameters
+    ----------
+    force : array_like, shape (3,), or pint.Quantity, optional
+        Force through the centre of mass [N], in `frame` (None: zero).
+    torque : array_like, shape (3,), or pint.Quantity, optional
+        Torque, a pure couple [N m], in `frame` (None: zero).
+    frame : {'world', 'body'}, default 'world'
+        Frame of force and torque: W or B.
+    t_start : float or pint.Quantity, default -inf
+        Start of the window [s].
+    t_end : float or pint.Quantity, default inf
+        End of the window [s], excluded.
+    
+    Raises
+    ------
+    ValueError
+        A field of another shape, a non-finite force or torque, an unknown frame, t_end not after t_start, or a
+        quantity of another dimension (the message names it).
+    
+    See Also
+    --------
+    simulate, step, simulate_batch
+    
+    Examples
+    --------
+    2 N on 1 kg for one second, then coasting: v = 2 m/s, and 1 m + 2 m/s x 1 s = 3 m after 2 s:
+    
+    >>> push = rd.AppliedLoad(force=[2.0, 0.0, 0.0], t_end=1.0)
+    >>> r = rd.simulate(rd.Particle(1.0), rd.ParticleState(), dt=0.1, steps=20, loads=push)
+    >>> r.v_W[-1].round(12), r.p_W[-1].round(12)
+    (array([2., 0., 0.]), array([3., 0., 0.]))
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, other: typing.Any) -> typing.Any:
@@ -2746,31 +5006,52 @@ class AppliedLoad:
     @property
     def force(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3,) [N] in frame
+        Force through the centre of mass, in `frame`, shape (3,) [N].
         """
     @property
     def frame(self) -> str:
         """
-        'world' or 'body'
+        Frame of force and torque: 'world' (W) or 'body' (B).
         """
     @property
     def t_end(self) -> float:
         """
-        [s]
+        End of the window [s], excluded (inf: never ends).
         """
     @property
     def t_start(self) -> float:
         """
-        [s]
+        Start of the window [s] (-inf: always on before t_end).
         """
     @property
     def torque(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3,) [N m] in frame
+        Torque (a pure couple), in `frame`, shape (3,) [N m].
         """
 class SimulationResult:
     """
-    simulate's records (see simulate), one row per record; the arrays are read-only.
+    The records of simulate: arrays with one row per record (n records).
+    
+    Read-only arrays; q_WB's rows (x, y, z, w) unless scalar_first. A Particle records q = identity and w = 0; a
+    PlanarBody p = (x, y, 0), q = Rz(theta), w = (0, 0, omega). Pickles; to_dataframe gives a table.
+    
+    Parameters
+    ----------
+    None
+        Made by simulate (and by BatchResult[i]); it has no public constructor.
+    
+    See Also
+    --------
+    simulate, BatchResult, SceneResult
+    
+    Examples
+    --------
+    >>> body = rd.RigidBody(2.0, [1.0, 2.0, 3.0])
+    >>> r = rd.simulate(body, rd.RigidBodyState(w_B=[0.0, 0.0, 1.0]), dt=0.1, steps=10, record_every=5)
+    >>> r.t, r.p_W.shape, r.q_WB.shape, r.diverged, r.unconverged_steps
+    (array([0. , 0.5, 1. ]), (3, 3), (3, 4), False, 0)
+    >>> r.kinetic_energy  # 1/2 I_z w_z^2
+    array([1.5, 1.5, 1.5])
     """
     def __getstate__(self) -> tuple:
         ...
@@ -2780,88 +5061,130 @@ class SimulationResult:
         ...
     def to_dataframe(self, scalar_first: typing.Any = None) -> typing.Any:
         """
-        A pandas.DataFrame of the records (needs pandas: pip install 'rigiddyn[dataframe]'): one row per record, one column per scalar with its unit, as the CSV of `python -m rigiddyn simulate`: 't [s]' (a column, not the index), 'p_W_x [m]' .. 'q_WB_x' .. 'q_WB_w', 'v_W_x [m/s]' .., 'w_B_x [rad/s]' .., 'kinetic_energy [J]', 'total_energy [J]', 'angular_momentum_norm [kg m^2/s]', 'quaternion_norm_error', 'work [J]'; q_WB's columns in the result's order ('q_WB_w' first when its scalar_first is True). scalar_first: None (the default) for the order the result records; True or False declares the order of its q_WB rows instead.
+        The records as a pandas.DataFrame (needs pandas: pip install 'rigiddyn[dataframe]').
+        
+        One row per record, one column per scalar with its unit, as the CSV of ``python -m rigiddyn simulate``:
+        't [s]' (a column, not the index), 'p_W_x [m]' .. 'q_WB_x' .. 'q_WB_w', 'v_W_x [m/s]' .., 'w_B_x [rad/s]' ..,
+        'kinetic_energy [J]', 'total_energy [J]', 'angular_momentum_norm [kg m^2/s]', 'quaternion_norm_error',
+        'work [J]'; q_WB's columns in the result's order ('q_WB_w' first when its scalar_first is True).
+        
+        Parameters
+        ----------
+        scalar_first : bool, optional
+            None (the default): the order the result records. True or False declares the order of its q_WB rows
+            instead.
+        
+        Returns
+        -------
+        pandas.DataFrame
+            n rows, 19 columns.
+        
+        Examples
+        --------
+        >>> r = rd.simulate(rd.Particle(1.0), rd.ParticleState(), dt=0.5, steps=2, gravity=True)
+        >>> df = r.to_dataframe()
+        >>> df.shape, df["p_W_z [m]"].round(12).tolist()
+        ((3, 19), [0.0, -1.22625, -4.905])
         """
     @property
     def angular_momentum_norm(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (n,) |H_G| about the centre of mass [kg m^2/s]
+        |H_G|, the norm of the angular momentum about the centre of mass, shape (n,) [kg m^2/s].
         """
     @property
     def diverged(self) -> bool:
         """
-        True if the run stopped on a non-finite state
+        True if the run stopped on a non-finite state (a bool).
         """
     @property
     def elapsed_seconds(self) -> float:
         """
-        wall time of the C++ stepping loop [s]
+        Wall time of the C++ stepping loop [s].
         """
     @property
     def kinetic_energy(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (n,) [J]
+        Kinetic energy, shape (n,) [J].
         """
     @property
     def p_W(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (n, 3) centre of mass position in W [m]
+        Centre of mass position in W, shape (n, 3) [m].
         """
     @property
     def q_WB(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (n, 4) attitude, (x, y, z, w) unless scalar_first
+        Attitude q_WB (B to W), shape (n, 4), (x, y, z, w) unless scalar_first.
         """
     @property
     def quaternion_norm_error(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (n,) |q| - 1
+        |q_WB| - 1 of each record, shape (n,) (dimensionless).
         """
     @property
     def scalar_first(self) -> bool:
         """
-        True if q_WB's rows are (w, x, y, z): the result of simulate(..., scalar_first=True)
+        True if q_WB's rows are (w, x, y, z): the result of simulate(..., scalar_first=True).
         """
     @property
     def t(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (n,) time [s]
+        Time of each record, shape (n,) [s].
         """
     @property
     def total_energy(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (n,) kinetic + gravity potential [J]
+        Kinetic + gravity potential energy (zero at W's origin), shape (n,) [J].
         """
     @property
     def unconverged_steps(self) -> int:
         """
-        number of steps whose implicit solve stopped at its iteration cap (implicit_midpoint; 0 for explicit methods); simulate warns RuntimeWarning when > 0
+        Number of steps whose implicit solve stopped at its iteration cap (implicit_midpoint; 0 for explicit methods); simulate warns RuntimeWarning when > 0.
         """
     @property
     def v_W(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (n, 3) centre of mass velocity in W [m/s]
+        Centre of mass velocity in W, shape (n, 3) [m/s].
         """
     @property
     def w_B(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (n, 3) angular velocity in B [rad/s]
+        Angular velocity of B in W, expressed in B, shape (n, 3) [rad/s].
         """
     @property
     def work(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (n,) work of loads and gravity since t0 [J]
+        Work of the loads and gravity since t0, shape (n,) [J] (integrated by the run's method).
         """
 class BatchResult:
     """
-    The records of simulate_batch over bodies: N samples of n records each (the arrays of SimulationResult with a
-    leading sample axis), read-only, sample-major. t (N, n) [s]; p_W (N, n, 3) centre of mass position in W [m];
-    q_WB (N, n, 4) attitude, (x, y, z, w) unless scalar_first; v_W (N, n, 3) [m/s] in W; w_B (N, n, 3) [rad/s] in
-    B; kinetic_energy, total_energy (N, n) [J]; angular_momentum_norm (N, n) |H_G| [kg m^2/s];
-    quaternion_norm_error (N, n) |q| - 1; work (N, n) [J]. diverged (N,) bool; filled (N,) rows filled per sample
-    (n unless it diverged: its rows after filled[i] are NaN); unconverged_steps (N,); elapsed_seconds: wall time
-    of the whole batch [s]; scalar_first: True if q_WB's rows are (w, x, y, z). len(result) is N; result[i] is sample
-    i as a SimulationResult (its filled rows, copies, the same scalar_first); pickles.
+    The records of simulate_batch over bodies: N samples of n records each.
+    
+    The arrays of SimulationResult with a leading sample axis, read-only, sample-major: t (N, n) [s]; p_W (N, n, 3)
+    [m] in W; q_WB (N, n, 4); v_W (N, n, 3) [m/s] in W; w_B (N, n, 3) [rad/s] in B; kinetic_energy, total_energy
+    (N, n) [J]; angular_momentum_norm (N, n) [kg m^2/s]; quaternion_norm_error (N, n); work (N, n) [J]. A diverged
+    sample's rows after filled[i] are NaN. len(result) is N; result[i] is sample i as a SimulationResult (its filled
+    rows, copies, the same scalar_first); pickles.
+    
+    Parameters
+    ----------
+    None
+        Made by simulate_batch; it has no public constructor.
+    
+    See Also
+    --------
+    simulate_batch, SimulationResult, BatchSceneResult
+    
+    Examples
+    --------
+    >>> body = rd.RigidBody(2.0, [1.0, 2.0, 3.0])
+    >>> res = rd.simulate_batch(body, [rd.RigidBodyState(w_B=[0, 0, w]) for w in (1.0, 2.0)], dt=0.1, steps=10)
+    >>> len(res), res.t.shape, res.filled, res.diverged
+    (2, (2, 11), array([11, 11]), array([False, False]))
+    >>> res.kinetic_energy[:, -1]  # 1/2 I_z w_z^2
+    array([1.5, 6. ])
+    >>> type(res[1]).__name__
+    'SimulationResult'
     """
     def __getitem__(self, i: typing.Any) -> typing.Any:
         """
@@ -2880,89 +5203,112 @@ class BatchResult:
     @property
     def angular_momentum_norm(self) -> numpy.ndarray:
         """
-        (N, n) |H_G| about the centre of mass [kg m^2/s]
+        |H_G|, the norm of the angular momentum about the centre of mass, shape (N, n) [kg m^2/s].
         """
     @property
     def diverged(self) -> numpy.ndarray:
         """
-        (N,) bool: the sample's state became non-finite; its run stopped
+        Per sample, True if its state became non-finite and its run stopped there, shape (N,) (bool).
         """
     @property
     def elapsed_seconds(self) -> float:
         """
-        wall time of the whole batch [s]
+        Wall time of the whole batch [s].
         """
     @property
     def filled(self) -> numpy.ndarray:
         """
-        (N,) int64: rows filled per sample (n unless it diverged)
+        Rows filled per sample, shape (N,) (int64): n unless it diverged (its later rows are NaN).
         """
     @property
     def kinetic_energy(self) -> numpy.ndarray:
         """
-        (N, n) kinetic energy [J]
+        Kinetic energy, shape (N, n) [J].
         """
     @property
     def p_W(self) -> numpy.ndarray:
         """
-        (N, n, 3) centre of mass position in W [m]
+        Centre of mass position in W, shape (N, n, 3) [m].
         """
     @property
     def q_WB(self) -> numpy.ndarray:
         """
-        (N, n, 4) attitude, (x, y, z, w) unless scalar_first
+        Attitude q_WB (B to W), shape (N, n, 4), (x, y, z, w) unless scalar_first.
         """
     @property
     def quaternion_norm_error(self) -> numpy.ndarray:
         """
-        (N, n) |q| - 1
+        |q_WB| - 1 of each record, shape (N, n) (dimensionless).
         """
     @property
     def scalar_first(self) -> bool:
         """
-        True if q_WB's rows are (w, x, y, z): the result of simulate_batch(..., scalar_first=True)
+        True if q_WB's rows are (w, x, y, z): the result of simulate_batch(..., scalar_first=True).
         """
     @property
     def t(self) -> numpy.ndarray:
         """
-        (N, n) time [s]
+        Time of each record, shape (N, n) [s].
         """
     @property
     def total_energy(self) -> numpy.ndarray:
         """
-        (N, n) kinetic + gravity potential [J]
+        Kinetic + gravity potential energy, shape (N, n) [J].
         """
     @property
     def unconverged_steps(self) -> numpy.ndarray:
         """
-        (N,) int64: steps whose implicit solve stopped at its iteration cap (0 for explicit methods)
+        Per sample, steps whose implicit solve stopped at its iteration cap, shape (N,) (int64; 0 for explicit methods).
         """
     @property
     def v_W(self) -> numpy.ndarray:
         """
-        (N, n, 3) centre of mass velocity in W [m/s]
+        Centre of mass velocity in W, shape (N, n, 3) [m/s].
         """
     @property
     def w_B(self) -> numpy.ndarray:
         """
-        (N, n, 3) angular velocity in B [rad/s]
+        Angular velocity of B in W, expressed in B, shape (N, n, 3) [rad/s].
         """
     @property
     def work(self) -> numpy.ndarray:
         """
-        (N, n) work of loads and gravity since t0 [J]
+        Work of the loads and gravity since t0, shape (N, n) [J].
         """
 class BatchSceneResult:
     """
-    The records of simulate_batch over scenes: the arrays of SceneResult with a leading sample axis (N samples, n
-    records, nb bodies, ne work columns), read-only: t (N, n) [s]; p_W, v_W, w_B, pivot_reaction_W,
-    angular_momentum_O_W (N, n, nb, 3); q_WB (N, n, nb, 4); kinetic_energy, potential_energy, total_energy (N, n)
-    [J]; linear_momentum_W, angular_momentum_W (N, n, 3); mass, mass_flow_energy (N, n, nb) [kg], [J]; work, power
-    (N, n, ne) [J], [W];
-    body_names and elements (the first scene's labels of the axes); diverged (N,) bool; filled (N,) rows filled per
-    sample (the rest NaN); unconverged_steps (N,); elapsed_seconds: wall time of the batch [s]; scalar_first: True if
-    q_WB's rows are (w, x, y, z). Frames and units as SceneResult. len(result) is N; result[i] is sample i as a
-    SceneResult (its filled rows, copies, the same scalar_first); pickles.
+    The records of simulate_batch over scenes: N samples of n records each.
+    
+    The arrays of SceneResult with a leading sample axis (nb bodies, ne work columns, nw wheels), read-only: t (N, n)
+    [s]; p_W, v_W, w_B, pivot_reaction_W, angular_momentum_O_W (N, n, nb, 3); q_WB (N, n, nb, 4); kinetic_energy,
+    potential_energy, total_energy (N, n) [J]; linear_momentum_W, angular_momentum_W (N, n, 3); mass,
+    mass_flow_energy (N, n, nb) [kg], [J]; work, power (N, n, ne) [J], [W]; wheel_speed, motor_work (N, n, nw).
+    body_names and elements label the axes (the first scene's). Frames and units as SceneResult. A diverged
+    sample's rows after filled[i] are NaN. len(result) is N; result[i] is sample i as a SceneResult (its filled
+    rows, copies, the same scalar_first); pickles.
+    
+    Parameters
+    ----------
+    None
+        Made by simulate_batch; it has no public constructor.
+    
+    See Also
+    --------
+    simulate_batch, SceneResult, BatchResult
+    
+    Examples
+    --------
+    Three balls thrown up at 0, 1 and 2 m/s, after 1 s: z = v t - g t^2 / 2:
+    
+    >>> scene = rd.Scene()
+    >>> ball = scene.add_body(rd.Particle(1.0), name="ball")
+    >>> gravity = scene.add(rd.UniformGravity())
+    >>> res = rd.simulate_batch(scene, [[rd.ParticleState(v_W=[0, 0, v])] for v in (0.0, 1.0, 2.0)], dt=0.01,
+    ...                         steps=100, record_every=100)
+    >>> res.p_W.shape, res.body_names, res.elements
+    ((3, 2, 1, 3), ('ball',), ('UniformGravity',))
+    >>> res.p_W[:, -1, 0, 2].round(12)
+    array([-4.905, -3.905, -2.905])
     """
     def __getitem__(self, i: typing.Any) -> typing.Any:
         """
@@ -2981,138 +5327,185 @@ class BatchSceneResult:
     @property
     def angular_momentum_O_W(self) -> numpy.ndarray:
         """
-        (N, n, nb, 3) each body's angular momentum about its pivot (its centre of mass unpinned), in W [kg m^2/s]
+        Each body's angular momentum about its pivot (its centre of mass unpinned), in W, shape (N, n, nb, 3) [kg m^2/s].
         """
     @property
     def angular_momentum_W(self) -> numpy.ndarray:
         """
-        (N, n, 3) about W's origin, in W [kg m^2/s]
+        Angular momentum about W's origin, in W, shape (N, n, 3) [kg m^2/s].
         """
     @property
     def body_names(self) -> tuple:
         """
-        (nb,) tuple of the bodies' names
+        The bodies' names, a tuple of nb str.
         """
     @property
     def diverged(self) -> numpy.ndarray:
         """
-        (N,) bool: the sample's state became non-finite; its run stopped
+        Per sample, True if its state became non-finite and its run stopped there, shape (N,) (bool).
         """
     @property
     def elapsed_seconds(self) -> float:
         """
-        wall time of the whole batch [s]
+        Wall time of the whole batch [s].
         """
     @property
     def elements(self) -> tuple:
         """
-        (ne,) tuple of the work columns' class names
+        The work columns' class names, a tuple of ne str.
         """
     @property
     def filled(self) -> numpy.ndarray:
         """
-        (N,) int64: rows filled per sample (n unless it diverged)
+        Rows filled per sample, shape (N,) (int64): n unless it diverged (its later rows are NaN).
         """
     @property
     def kinetic_energy(self) -> numpy.ndarray:
         """
-        (N, n) sum over the bodies [J]
+        Kinetic energy, the sum over the bodies, shape (N, n) [J].
         """
     @property
     def linear_momentum_W(self) -> numpy.ndarray:
         """
-        (N, n, 3) sum of m v_W, in W [kg m/s]
+        Linear momentum, the sum of m v_W, in W, shape (N, n, 3) [kg m/s].
         """
     @property
     def mass(self) -> numpy.ndarray:
         """
-        (N, n, nb) each body's mass [kg]
+        Each body's mass, shape (N, n, nb) [kg].
         """
     @property
     def mass_flow_energy(self) -> numpy.ndarray:
         """
-        (N, n, nb) each body's mass-flow energy since t0 [J] (0 for a constant mass)
+        Each body's mass-flow energy since t0, shape (N, n, nb) [J] (0 for a constant mass).
         """
     @property
     def motor_work(self) -> numpy.ndarray:
         """
-        (N, n, nw) each wheel's motor work since t0 [J]
+        Each wheel's motor work since t0, shape (N, n, nw) [J].
         """
     @property
     def p_W(self) -> numpy.ndarray:
         """
-        (N, n, nb, 3) centre of mass positions in W [m]
+        Each body's centre of mass position in W, shape (N, n, nb, 3) [m].
         """
     @property
     def pivot_reaction_W(self) -> numpy.ndarray:
         """
-        (N, n, nb, 3) the pivot's force on each body, in W [N]
+        The pivot's force on each body, in W, shape (N, n, nb, 3) [N].
         """
     @property
     def potential_energy(self) -> numpy.ndarray:
         """
-        (N, n) sum of the elements' potentials [J]
+        Potential energy, the sum of the elements' potentials, shape (N, n) [J].
         """
     @property
     def power(self) -> numpy.ndarray:
         """
-        (N, n, ne) each element's power at the record [W]
+        Each element's power at the record, shape (N, n, ne) [W].
         """
     @property
     def q_WB(self) -> numpy.ndarray:
         """
-        (N, n, nb, 4) attitudes, (x, y, z, w) unless scalar_first
+        Each body's attitude q_WB (B to W), shape (N, n, nb, 4), (x, y, z, w) unless scalar_first.
         """
     @property
     def scalar_first(self) -> bool:
         """
-        True if q_WB's rows are (w, x, y, z): the result of simulate_batch(..., scalar_first=True)
+        True if q_WB's rows are (w, x, y, z): the result of simulate_batch(..., scalar_first=True).
         """
     @property
     def t(self) -> numpy.ndarray:
         """
-        (N, n) time [s]
+        Time of each record, shape (N, n) [s].
         """
     @property
     def total_energy(self) -> numpy.ndarray:
         """
-        (N, n) kinetic + potential [J]
+        Kinetic + potential energy, shape (N, n) [J].
         """
     @property
     def unconverged_steps(self) -> numpy.ndarray:
         """
-        (N,) int64: steps whose implicit solve stopped at its iteration cap (0 for explicit methods)
+        Per sample, steps whose implicit solve stopped at its iteration cap, shape (N,) (int64; 0 for explicit methods).
         """
     @property
     def v_W(self) -> numpy.ndarray:
         """
-        (N, n, nb, 3) centre of mass velocities in W [m/s]
+        Each body's centre of mass velocity in W, shape (N, n, nb, 3) [m/s].
         """
     @property
     def w_B(self) -> numpy.ndarray:
         """
-        (N, n, nb, 3) angular velocities, each in its body's B [rad/s]
+        Each body's angular velocity, in its body frame B, shape (N, n, nb, 3) [rad/s].
         """
     @property
     def wheel_bodies(self) -> tuple:
         """
-        (nw,) tuple of the body index of each wheel
+        The body index of each wheel, a tuple of nw int.
         """
     @property
     def wheel_speed(self) -> numpy.ndarray:
         """
-        (N, n, nw) each gyrostat wheel's speed relative to its body [rad/s] (nw = 0 without a gyrostat)
+        Each gyrostat wheel's speed relative to its body, shape (N, n, nw) [rad/s] (nw = 0 without a gyrostat).
         """
     @property
     def work(self) -> numpy.ndarray:
         """
-        (N, n, ne) each element's work since t0 [J]
+        Each element's work since t0, shape (N, n, ne) [J].
         """
 class TorqueFreeSolution:
     """
-    Exact motion of a torque-free rigid body (Euler-Poinsot): angular velocity in Jacobi's elliptic
-    functions, attitude by Legendre's third integral (Landau & Lifshitz, Mechanics §37;
-    Celledoni, Fassò, Säfström, Zanna 2008; docs/references.md), at any time t [s].
+    Exact motion of a torque-free rigid body (Euler-Poinsot) at any time t [s].
+    
+    The angular velocity w_B(t) in Jacobi's elliptic functions, the attitude q_WB(t) by Legendre's third
+    integral (Landau & Lifshitz, Mechanics §37; Celledoni, Fassò, Säfström, Zanna 2008; docs/references.md):
+    the solution of I_B dw_B/dt = -w_B x I_B w_B, dq_WB/dt = 1/2 q_WB ⊗ [w_B; 0], which keeps the angular
+    momentum L_W = R_WB I_B w_B and the kinetic energy constant. Any finite magnitudes (the motion is computed
+    in scaled units).
+    
+    Parameters
+    ----------
+    inertia : array_like, shape (3, 3)
+        Rotational inertia I_B about the centre of mass, in B [kg m^2], symmetric positive definite and, under
+        check=InertiaCheck.physical, with principal moments satisfying the triangle inequality I1 + I2 >= I3.
+    q_WB : array_like, shape (4,)
+        Initial attitude, B to W, (x, y, z, w) ((w, x, y, z) if `scalar_first`); normalised.
+    w_B : array_like, shape (3,)
+        Initial angular velocity of B in W, expressed in B [rad/s].
+    scalar_first : bool, default False
+        Read q_WB, and return the quaternions of state_at, scalar first.
+    check : InertiaCheck, default InertiaCheck.physical
+        InertiaCheck.allow_unrealizable opts in to test problems such as diag(2, 1, 2/3).
+    
+    Raises
+    ------
+    ValueError
+        An inertia not symmetric positive definite or, under InertiaCheck.physical, breaking the triangle
+        inequality (naming the moments); w_B when a rate of the motion exceeds the double range; inertia when
+        its principal moments span so many orders (~1e150 and more) that the parameters of the elliptic
+        functions, up to ~(I_max/I_min)^2 in scaled units, exceed it; a non-finite or badly shaped argument.
+    
+    See Also
+    --------
+    jacobi_ellipj, ellippi_am, LagrangeTopSolution, simulate
+    
+    Examples
+    --------
+    w_B returns after one period; L_W = R_WB I_B w_B stays constant:
+    
+    >>> I_B = np.diag([1.0, 2.0, 3.0])
+    >>> s = rd.TorqueFreeSolution(I_B, [0, 0, 0, 1], [0.1, 1.0, 0.1])
+    >>> s.case, round(s.period, 6)
+    ('A', 22.996263)
+    >>> q_WB, w_B = s.state_at(s.period)
+    >>> bool(np.allclose(w_B, [0.1, 1.0, 0.1]))
+    True
+    >>> q_WB, w_B = s.state_at(3.7)
+    >>> bool(np.allclose(rd.quat_rotate(q_WB, I_B @ w_B), s.angular_momentum_W))
+    True
+    
+    Immutable; pickles; == compares the constructor's arguments.
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, arg0: typing.Any) -> typing.Any:
@@ -3123,15 +5516,8 @@ class TorqueFreeSolution:
         ...
     def __init__(self, inertia: typing.Any, q_WB: typing.Any, w_B: typing.Any, scalar_first: typing.Any = False, check: typing.Any = InertiaCheck.physical) -> None:
         """
-        inertia: (3, 3) rotational inertia about the centre of mass, in B [kg m^2], symmetric positive definite
-        and, under check=InertiaCheck.physical (default), with principal moments satisfying the triangle
-        inequality I1 + I2 >= I3 (ValueError naming the moments otherwise; check=
-        InertiaCheck.allow_unrealizable opts in to test problems such as diag(2, 1, 2/3));
-        q_WB: (4,) initial attitude, (x, y, z, w) or (w, x, y, z) if scalar_first; w_B: (3,) initial angular
-        velocity of B in W, expressed in B [rad/s]. Any finite magnitudes (the motion is computed in scaled
-        units); ValueError naming w_B when a rate of the motion exceeds the double range, and naming inertia
-        when its principal moments span so many orders (~1e150 and more) that the parameters of the elliptic
-        functions, up to ~(I_max/I_min)^2 in scaled units, exceed it.
+        The exact motion from I_B (3, 3) [kg m^2] about the centre of mass in B, q_WB (4,) and w_B (3,) [rad/s]
+        in B at t = 0 (see the class).
         """
     def __repr__(self) -> str:
         ...
@@ -3139,9 +5525,30 @@ class TorqueFreeSolution:
         ...
     def state_at(self, t: typing.Any) -> tuple:
         """
-        State at time t [s] (scalar, or (n,) array; negative allowed): (q_WB, w_B) of shapes (4,), (3,) or
-        (n, 4), (n, 3); q in the order chosen at construction. ValueError naming t when a phase (rate times t)
-        exceeds the double range.
+        State at time t.
+        
+        Parameters
+        ----------
+        t : float or array_like, shape (n,)
+            Time [s]; negative allowed.
+        
+        Returns
+        -------
+        q_WB : ndarray, shape (4,) or (n, 4)
+            Attitude, B to W, in the order chosen at construction.
+        w_B : ndarray, shape (3,) or (n, 3)
+            Angular velocity of B in W, expressed in B [rad/s].
+        
+        Raises
+        ------
+        ValueError
+            t when a phase (rate times t) exceeds the double range, or t non-finite.
+        
+        Examples
+        --------
+        >>> s = rd.TorqueFreeSolution(np.diag([1.0, 2.0, 3.0]), [0, 0, 0, 1], [0.1, 1.0, 0.1])
+        >>> [a.shape for a in s.state_at([0.0, 1.0, 2.0])]
+        [(3, 4), (3, 3)]
         """
     @property
     def R_BP(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -3168,7 +5575,7 @@ class TorqueFreeSolution:
     @property
     def parameter_m(self) -> float:
         """
-        Parameter m of the elliptic functions.
+        Parameter m = k^2 of the elliptic functions of w_B(t) (dimensionless, in [0, 1]).
         """
     @property
     def parameter_mc(self) -> float:
@@ -3178,7 +5585,7 @@ class TorqueFreeSolution:
     @property
     def period(self) -> float:
         """
-        Period of w_B(t) [s]; inf if w_B is constant or on the separatrix. A flip takes half.
+        Period of w_B(t) [s] (w_B in B); inf if w_B is constant or on the separatrix. A flip takes half.
         """
     @property
     def principal_moments(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -3192,6 +5599,41 @@ class CompoundPendulumSolution:
     rotation v/2 = am(k w0 t + u0|1/k^2), the separatrix and the equilibria, with v = theta - theta_stable the
     angle from the stable equilibrium (where R_WB p_OC_B points along g) and w0^2 = m g d / I_O. Accurate up
     to v0 -> pi: the complement 1 - k^2 is formed without cancellation.
+    
+    Parameters
+    ----------
+    body : PivotedPlanarBody
+        Mass [kg], inertia_zz [kg m^2] about C, p_OC_B [m] in B, pivot p_WO [m] in W.
+    g_W : array_like, shape (2,) or (3,)
+        Uniform gravity in W [m/s^2] (only its xy part acts); a pint quantity is converted.
+    state : PivotedPlanarBodyState
+        theta [rad] and omega [rad/s] at t = 0.
+    
+    Raises
+    ------
+    ValueError
+        g_W, state.theta or state.omega non-finite (the message names it).
+    TypeError
+        body or state of another type.
+    
+    See Also
+    --------
+    PivotedPlanarBody, jacobi_ellipj, ellipk, LagrangeTopSolution
+    
+    Examples
+    --------
+    A uniform rod 1 m long pinned at its end (I_O = m L^2/3, d = L/2, so w0^2 = 3 g/(2 L)), let go 0.5 rad
+    from the bottom, swings back after one period 4 K(k^2)/w0:
+    
+    >>> rod = rd.PivotedPlanarBody(1.0, 1.0 / 12, [0.5, 0.0])
+    >>> s = rd.CompoundPendulumSolution(rod, [0.0, -9.81], rd.PivotedPlanarBodyState(theta=-np.pi / 2 + 0.5))
+    >>> s.case, f"{s.omega0**2:.6f}", bool(np.isclose(s.period, 4 * rd.ellipk(s.k_squared) / s.omega0))
+    ('libration', '14.715000', True)
+    >>> theta, omega = s.at(s.period)
+    >>> bool(np.isclose(theta, -np.pi / 2 + 0.5) and abs(omega) < 1e-12)
+    True
+    
+    Immutable; pickles; == compares the constructor's arguments; unhashable.
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, arg0: typing.Any) -> typing.Any:
@@ -3204,7 +5646,7 @@ class CompoundPendulumSolution:
         """
         body: a PivotedPlanarBody; g_W: (2,) or (3,) uniform gravity in W [m/s^2] (only its xy part acts);
         state: the PivotedPlanarBodyState (theta [rad], omega [rad/s]) at t = 0. ValueError naming g_W or
-        state.theta / state.omega for non-finite values.
+        state.theta / state.omega for non-finite values. See the class.
         """
     def __repr__(self) -> str:
         ...
@@ -3212,8 +5654,27 @@ class CompoundPendulumSolution:
         ...
     def at(self, t: typing.Any) -> tuple:
         """
-        State at time t [s] (a float, or an (n,) array; negative allowed): (theta [rad], omega [rad/s]), floats
-        or (n,) arrays. theta is continuous from the initial theta (not wrapped; a rotating pendulum's theta grows).
+        State at time t.
+        
+        Parameters
+        ----------
+        t : float or array_like, shape (n,)
+            Time [s]; negative allowed.
+        
+        Returns
+        -------
+        theta : float or ndarray, shape (n,)
+            Angle of B in W about z [rad], continuous from the initial theta (not wrapped; a rotating
+            pendulum's theta grows).
+        omega : float or ndarray, shape (n,)
+            Angular velocity about z [rad/s].
+        
+        Examples
+        --------
+        >>> s = rd.CompoundPendulumSolution(rd.PivotedPlanarBody(1.0, 1.0 / 12, [0.5, 0.0]), [0.0, -9.81],
+        ...                                 rd.PivotedPlanarBodyState(theta=-np.pi / 2, omega=1.0))
+        >>> [x.shape for x in s.at([0.0, 1.0, 2.0])]
+        [(3,), (3,)]
         """
     @property
     def amplitude(self) -> float:
@@ -3233,7 +5694,7 @@ class CompoundPendulumSolution:
     @property
     def k_squared(self) -> float:
         """
-        k^2 = sin^2(v0/2) + (omega0_state/(2 w0))^2 (> 1 for a rotation).
+        k^2 = sin^2(v0/2) + (omega0_state/(2 w0))^2, dimensionless, of the initial state (> 1 for a rotation).
         """
     @property
     def k_squared_complement(self) -> float:
@@ -3254,7 +5715,7 @@ class CompoundPendulumSolution:
     @property
     def theta_stable(self) -> float:
         """
-        theta of the stable equilibrium [rad] in (-pi, pi].
+        theta of the stable equilibrium [rad] in (-pi, pi] (the angle of B in W about z).
         """
 class LagrangeTopSolution:
     """
@@ -3265,6 +5726,40 @@ class LagrangeTopSolution:
     B) in the inertial frame N: z_N = -g_W/|g_W| (up), x_N the line of nodes at t = 0 (phi(0) = 0). Cases:
     'nutation' and 'sleeping' (e3 vertical, w_B along it); a motion whose axis passes through a vertical is refused
     (ValueError naming state).
+    
+    Parameters
+    ----------
+    body : PivotedBody
+        Its inertia about O (inertia_O) symmetric about the axis O->C to 1e-12 relative, with C off O.
+    g_W : array_like, shape (3,)
+        Uniform gravity in W [m/s^2], non-zero; a pint quantity is converted.
+    state : PivotedBodyState
+        q_WB (B to W) and w_B [rad/s] (of B in W, expressed in B) at t = 0.
+    scalar_first : bool, default False
+        The order of the quaternions at() and q_WN return ((x, y, z, w) by default).
+    
+    Raises
+    ------
+    ValueError
+        body not symmetric about O->C or with C at O (naming body); g_W zero or non-finite; a motion whose axis
+        passes through a vertical (naming state).
+    
+    See Also
+    --------
+    PivotedBody, TorqueFreeSolution, CompoundPendulumSolution, ellippi_am
+    
+    Examples
+    --------
+    A fast top (w3 = 50 rad/s) let go 0.3 rad from the vertical nods between 0.3 and 0.303 rad and precesses
+    near the gyroscopic rate m g l / (I3 w3) = 0.0981 rad/s:
+    
+    >>> top = rd.PivotedBody(rd.RigidBody(1.0, [0.5, 0.5, 0.2]), [0.0, 0.0, 0.1])
+    >>> state = rd.PivotedBodyState(rd.rotvec_to_quat([0.3, 0.0, 0.0]), [0.0, 0.0, 50.0])
+    >>> s = rd.LagrangeTopSolution(top, [0.0, 0.0, -9.81], state)
+    >>> s.case, f"{s.theta_min:.4f} {s.theta_max:.4f} {s.mean_precession_rate:.4f}"
+    ('nutation', '0.3000 0.3030 0.0986')
+    
+    Immutable; pickles; == compares the constructor's arguments; unhashable.
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, arg0: typing.Any) -> typing.Any:
@@ -3278,7 +5773,7 @@ class LagrangeTopSolution:
         body: a PivotedBody whose inertia about O (inertia_O) is symmetric about the axis O->C to 1e-12 relative,
         with C off O (ValueError naming body otherwise); g_W: (3,) uniform gravity in W [m/s^2], non-zero;
         state: the PivotedBodyState (q_WB, w_B [rad/s] in B) at t = 0; scalar_first: the order of the quaternions
-        at() returns ((x, y, z, w) by default).
+        at() returns ((x, y, z, w) by default). See the class.
         """
     def __repr__(self) -> str:
         ...
@@ -3286,14 +5781,54 @@ class LagrangeTopSolution:
         ...
     def angles_at(self, t: typing.Any) -> tuple:
         """
-        Euler angles Z-X-Z (phi, theta, psi) [rad] of S in N at time t [s] (floats or (n,) arrays): precession
-        (phi(0) = 0), nutation (the tilt of e3 from the upward vertical), spin; phi and psi continuous.
+        Euler angles Z-X-Z of S in N at time t.
+        
+        Parameters
+        ----------
+        t : float or array_like, shape (n,)
+            Time [s].
+        
+        Returns
+        -------
+        phi, theta, psi : float or ndarray, shape (n,)
+            Precession (phi(0) = 0), nutation (the tilt of e3 from the upward vertical), spin [rad]; phi and psi
+            continuous.
+        
+        Examples
+        --------
+        >>> top = rd.PivotedBody(rd.RigidBody(1.0, [0.5, 0.5, 0.2]), [0.0, 0.0, 0.1])
+        >>> state = rd.PivotedBodyState(rd.rotvec_to_quat([0.3, 0.0, 0.0]), [0.0, 0.0, 50.0])
+        >>> s = rd.LagrangeTopSolution(top, [0.0, 0.0, -9.81], state)
+        >>> phi, theta, psi = s.angles_at(s.nutation_period)
+        >>> bool(np.isclose(theta, s.theta_min))
+        True
         """
     def at(self, t: typing.Any) -> tuple:
         """
-        State at time t [s] (a float, or an (n,) array; negative allowed): (q_WB, w_B) of shapes (4,), (3,) or
-        (n, 4), (n, 3); q_WB B to W in the order chosen at construction, w_B the angular velocity of B in W,
-        expressed in B [rad/s].
+        State at time t.
+        
+        Parameters
+        ----------
+        t : float or array_like, shape (n,)
+            Time [s]; negative allowed.
+        
+        Returns
+        -------
+        q_WB : ndarray, shape (4,) or (n, 4)
+            B to W, in the order chosen at construction.
+        w_B : ndarray, shape (3,) or (n, 3)
+            Angular velocity of B in W, expressed in B [rad/s].
+        
+        Examples
+        --------
+        The energy about O of the state at t = 2 s is the initial one:
+        
+        >>> top = rd.PivotedBody(rd.RigidBody(1.0, [0.5, 0.5, 0.2]), [0.0, 0.0, 0.1])
+        >>> state = rd.PivotedBodyState(rd.rotvec_to_quat([0.3, 0.0, 0.0]), [0.0, 0.0, 50.0])
+        >>> s = rd.LagrangeTopSolution(top, [0.0, 0.0, -9.81], state)
+        >>> later = rd.LagrangeTopSolution(top, [0.0, 0.0, -9.81], rd.PivotedBodyState(*s.at(2.0)))
+        >>> bool(np.isclose(later.energy, s.energy))
+        True
         """
     @property
     def H_3(self) -> float:
@@ -3338,7 +5873,7 @@ class LagrangeTopSolution:
     @property
     def case(self) -> str:
         """
-        'nutation' or 'sleeping'.
+        Kind of motion: 'nutation' or 'sleeping' (e3 vertical, w_B along it).
         """
     @property
     def e3_B(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -3368,12 +5903,12 @@ class LagrangeTopSolution:
     @property
     def parameter_m(self) -> float:
         """
-        m = (u2 - u1)/(u3 - u1), the parameter of sn.
+        m = (u2 - u1)/(u3 - u1), the parameter (m = k^2, dimensionless) of sn.
         """
     @property
     def parameter_mc(self) -> float:
         """
-        1 - m, computed without cancellation.
+        1 - m (dimensionless), computed without cancellation.
         """
     @property
     def q_WN(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -3383,7 +5918,7 @@ class LagrangeTopSolution:
     @property
     def roots(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3,) roots u1 <= u2 <= u3 of the cubic in u = cos(theta).
+        (3,) roots u1 <= u2 <= u3 of the cubic in u = cos(theta) (dimensionless).
         """
     @property
     def theta_max(self) -> float:
@@ -3401,6 +5936,38 @@ class RotatingFrameFreeParticle:
     origin: the straight line of the inertial frame turned into F, p_F(t) = R_FW(t) (p0 + v_W t), v_F = R_FW(t)
     (v_W - w x p_W) ("Rigid body kinematics and dynamics" notes §4.11.1); it solves a_F = -w x (w x p_F) -
     2 w x v_F (centrifugal and Coriolis only) and keeps the Jacobi integral 1/2|v_F|^2 - 1/2|w x p_F|^2.
+    
+    Parameters
+    ----------
+    frame : SceneFrame
+        F, turning at a constant rate (SceneFrame.rotating or SceneFrame.earth).
+    p0_F : array_like, shape (3,)
+        Position relative to F's origin at t = 0, in F [m].
+    v0_F : array_like, shape (3,)
+        Velocity seen from F at t = 0, in F [m/s].
+    
+    Raises
+    ------
+    ValueError
+        A general moving frame (naming frame), or a non-finite vector (naming it).
+    TypeError
+        frame not a SceneFrame.
+    
+    See Also
+    --------
+    SceneFrame, point_acceleration, FrameTree
+    
+    Examples
+    --------
+    A particle at rest in F, 1 m from the axis of a frame turning at 1 rad/s, flies off along the inertial
+    tangent; a quarter turn later F sees it at (pi/2, -1, 0):
+    
+    >>> s = rd.RotatingFrameFreeParticle(rd.SceneFrame.rotating([0, 0, 1.0], 1.0), [1.0, 0, 0], [0, 0, 0])
+    >>> p_F, v_F = s.at(np.pi / 2)
+    >>> p_F.round(12), s.jacobi_integral
+    (array([ 1.57079633, -1.        ,  0.        ]), -0.5)
+    
+    Immutable; pickles; == compares the constructor's arguments; unhashable.
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, arg0: typing.Any) -> typing.Any:
@@ -3413,7 +5980,7 @@ class RotatingFrameFreeParticle:
         """
         frame: a SceneFrame turning at a constant rate (SceneFrame.rotating or SceneFrame.earth; ValueError naming
         frame for a general moving frame); p0_F (3,) [m], v0_F (3,) [m/s]: position and velocity relative to F,
-        in F, at t = 0.
+        in F, at t = 0. See the class.
         """
     def __repr__(self) -> str:
         ...
@@ -3421,8 +5988,29 @@ class RotatingFrameFreeParticle:
         ...
     def at(self, t: typing.Any) -> tuple:
         """
-        State at time t [s] (a float, or an (n,) array): (p_F [m], v_F [m/s]) relative to F, in F, of shapes (3,)
-        or (n, 3).
+        State at time t.
+        
+        Parameters
+        ----------
+        t : float or array_like, shape (n,)
+            Time [s].
+        
+        Returns
+        -------
+        p_F : ndarray, shape (3,) or (n, 3)
+            Position relative to F's origin, in F [m].
+        v_F : ndarray, shape (3,) or (n, 3)
+            Velocity seen from F, in F [m/s].
+        
+        Examples
+        --------
+        The Jacobi integral 1/2|v_F|^2 - 1/2|w x p_F|^2 stays constant:
+        
+        >>> s = rd.RotatingFrameFreeParticle(rd.SceneFrame.rotating([0, 0, 1.0], 1.0), [1.0, 0, 0], [0, 0, 0])
+        >>> p_F, v_F = s.at(np.linspace(0.0, 3.0, 4))
+        >>> J = 0.5 * (v_F**2).sum(axis=1) - 0.5 * (np.cross(s.w_F, p_F) ** 2).sum(axis=1)
+        >>> bool(np.allclose(J, s.jacobi_integral))
+        True
         """
     @property
     def jacobi_integral(self) -> float:
@@ -3437,7 +6025,7 @@ class RotatingFrameFreeParticle:
     @property
     def w_F(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (3,) F's angular velocity [rad/s], in F.
+        (3,) F's angular velocity relative to W [rad/s], expressed in F.
         """
 class ConstantThrustSolution:
     """
@@ -3445,6 +6033,43 @@ class ConstantThrustSolution:
     rate u_rel_W along a fixed direction and uniform gravity ("Rigid body kinematics and dynamics" notes, eq. (4.36):
     m v' = m g + rate u_rel): v(t) = v0 + g t + u_rel ln(m(t)/m0), p(t) = p0 + v0 t + g t^2/2 + u_rel t h(x)/x with
     x = rate t/m0, h(x) = (1 + x) ln(1 + x) - x (series near x = 0). Everything in the inertial frame W.
+    
+    Parameters
+    ----------
+    m0 : float
+        Mass at t = 0 [kg], > 0.
+    rate : float
+        dm/dt [kg/s] (negative: losing mass).
+    u_rel_W : array_like, shape (3,)
+        Velocity of the ejected mass relative to the particle, in W [m/s].
+    g_W : array_like, shape (3,), optional
+        Uniform gravity in W [m/s^2] (None: zero).
+    p0_W : array_like, shape (3,), optional
+        Position at t = 0 in W [m] (None: zero).
+    v0_W : array_like, shape (3,), optional
+        Velocity at t = 0 in W [m/s] (None: zero).
+    
+    Each may be a pint quantity (converted to SI).
+    
+    Raises
+    ------
+    ValueError
+        m0 <= 0 or a non-finite value (naming the argument).
+    
+    See Also
+    --------
+    MassFlow, Thrust
+    
+    Examples
+    --------
+    Burning half of the mass at 2000 m/s exhaust speed gives Tsiolkovsky's 2000 ln 2 m/s:
+    
+    >>> c = rd.ConstantThrustSolution(100.0, -1.0, [0.0, 0.0, -2000.0])
+    >>> p_W, v_W, mass = c.at(50.0)
+    >>> mass, bool(np.isclose(v_W[2], 2000 * np.log(2))), bool(np.isclose(c.delta_v(50.0), v_W[2]))
+    (50.0, True, True)
+    
+    Immutable; pickles; == compares the constructor's arguments; unhashable.
     """
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, arg0: typing.Any) -> typing.Any:
@@ -3457,7 +6082,7 @@ class ConstantThrustSolution:
         """
         m0: mass at t = 0 [kg] > 0; rate: dm/dt [kg/s] (negative: losing mass); u_rel_W (3,): velocity of the
         ejected mass relative to the particle, in W [m/s]; g_W (3,) [m/s^2], p0_W (3,) [m], v0_W (3,) [m/s] (None:
-        zero). ValueError naming the argument for m0 <= 0 or a non-finite value.
+        zero). ValueError naming the argument for m0 <= 0 or a non-finite value. See the class.
         """
     def __repr__(self) -> str:
         ...
@@ -3465,16 +6090,69 @@ class ConstantThrustSolution:
         ...
     def at(self, t: typing.Any) -> tuple:
         """
-        State at time t [s] (a float, or an (n,) array): (p_W [m], v_W [m/s], mass [kg]) of shapes (3,), (3,), float
-        or (n, 3), (n, 3), (n,). ValueError naming t where the mass m0 + rate t is not positive (burn-out).
+        State at time t.
+        
+        Parameters
+        ----------
+        t : float or array_like, shape (n,)
+            Time [s].
+        
+        Returns
+        -------
+        p_W : ndarray, shape (3,) or (n, 3)
+            Position in W [m].
+        v_W : ndarray, shape (3,) or (n, 3)
+            Velocity in W [m/s].
+        mass : float or ndarray, shape (n,)
+            m0 + rate t [kg].
+        
+        Raises
+        ------
+        ValueError
+            t where the mass m0 + rate t is not positive (burn-out), naming t.
+        
+        Examples
+        --------
+        >>> rd.ConstantThrustSolution(100.0, -1.0, [0.0, 0.0, -2000.0]).at([0.0, 50.0])[2]
+        array([100.,  50.])
         """
     def delta_v(self, m1: typing.Any) -> float:
         """
-        Tsiolkovsky: the speed the thrust gives while the mass goes from m0 to m1 [kg], |u_rel| ln(m0/m1) [m/s].
+        Tsiolkovsky: the speed the thrust gives while the mass goes from m0 to m1.
+        
+        Parameters
+        ----------
+        m1 : float
+            The final mass [kg].
+        
+        Returns
+        -------
+        float
+            |u_rel| ln(m0/m1) [m/s].
+        
+        Examples
+        --------
+        >>> f"{rd.ConstantThrustSolution(100.0, -1.0, [0.0, 0.0, -2000.0]).delta_v(50.0):.6f}"
+        '1386.294361'
         """
     def mass_at(self, t: typing.Any) -> float:
         """
-        m0 + rate t [kg] (not checked positive).
+        Mass m0 + rate t [kg] at time t (not checked positive).
+        
+        Parameters
+        ----------
+        t : float
+            Time [s].
+        
+        Returns
+        -------
+        float
+            m0 + rate t [kg].
+        
+        Examples
+        --------
+        >>> rd.ConstantThrustSolution(100.0, -1.0, [0.0, 0.0, -2000.0]).mass_at(10.0)
+        90.0
         """
     @property
     def burnout_time(self) -> float:
@@ -3489,12 +6167,12 @@ class ConstantThrustSolution:
     @property
     def m0(self) -> float:
         """
-        mass at t = 0 [kg]
+        Mass at t = 0 [kg].
         """
     @property
     def rate(self) -> float:
         """
-        dm/dt [kg/s]
+        Rate of change of the mass dm/dt [kg/s].
         """
     @property
     def u_rel_W(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -3507,235 +6185,1550 @@ def _steps_of(steps: typing.Any, duration: typing.Any, dt: typing.Any) -> int:
     """
 def align_vectors(a: typing.Any, b: typing.Any, weights: typing.Any = None, return_sensitivity: typing.Any = False, scalar_first: typing.Any = False) -> tuple:
     """
-    The rotation R that best maps the vectors b onto the vectors a (Wahba's problem), as SciPy's
-    Rotation.align_vectors(a, b, weights): R minimises 1/2 sum_i w_i |a_i - R b_i|^2.
+    The rotation that best maps vectors b onto vectors a (Wahba's problem).
     
-    a, b: (3,) or (N, 3), the same vectors observed in two frames: with a in W and b in B the result
-    is q_WB. Lengths act as weights (normalise for equal weighting). weights: None (all 1) or (N,)
-    of values >= 0; one may be inf: that primary pair is aligned exactly and the others only by the
-    turn about it. One pair (N = 1): the smallest rotation taking the direction of b to that of a.
-    General case by the SVD of B = sum w_i a_i b_i^T (Markley 1988), UserWarning when the optimum
-    is not unique (all pairs parallel).
-    Returns (q, rssd) or, with return_sensitivity=True, (q, rssd, sensitivity): q (4,) canonical
-    (w >= 0), (x, y, z, w) or (w, x, y, z) if scalar_first; rssd = sqrt(sum_i w_i |a_i - R b_i|^2)
-    [units of a] over the finite weights; sensitivity (3, 3), SciPy's covariance of the rotation-vector
-    error [rad^2 per unit of measurement variance] (not for one pair or an infinite weight).
+    R minimises 1/2 sum_i w_i |a_i - R b_i|^2, by the SVD of B = sum_i w_i a_i b_i^T (Markley 1988,
+    "Attitude determination using vector observations and the singular value decomposition"). SciPy:
+    ``Rotation.align_vectors(a, b, weights)``. One pair (N = 1): the smallest rotation taking the
+    direction of b to that of a.
+    
+    Parameters
+    ----------
+    a, b : array_like, shape (3,) or (N, 3)
+        The same vectors observed in two frames: with a in W and b in B the result is q_WB. Lengths act
+        as weights (normalise for equal weighting).
+    weights : array_like, shape (N,), optional
+        Weights >= 0 (default all 1); one may be inf: that primary pair is aligned exactly and the
+        others only by the turn about it.
+    return_sensitivity : bool, default False
+        Also return the sensitivity matrix (not for one pair or an infinite weight).
+    scalar_first : bool, default False
+        Read and write quaternions scalar first, (w, x, y, z), as MuJoCo does.
+    
+    Returns
+    -------
+    q : ndarray, shape (4,)
+        The rotation, canonical (w >= 0), (x, y, z, w) or (w, x, y, z) if `scalar_first`.
+    rssd : float
+        sqrt(sum_i w_i |a_i - R b_i|^2) over the finite weights [unit of a].
+    sensitivity : ndarray, shape (3, 3)
+        Only with `return_sensitivity`: SciPy's covariance of the rotation-vector error [rad^2 per unit
+        of measurement variance].
+    
+    Raises
+    ------
+    ValueError
+        `b` not of the shape of `a`, `weights` not of shape (N,), or `return_sensitivity` with one pair
+        or an infinite weight (each message names the argument).
+    
+    Warns
+    -----
+    UserWarning
+        When the optimal rotation is not unique or poorly defined (all pairs parallel, or zero weights).
+    
+    See Also
+    --------
+    quat_rotate
+    
+    Examples
+    --------
+    Vectors measured in B and known in W give the attitude q_WB:
+    
+    >>> q_WB = rd.rotvec_to_quat([0.3, -0.5, 1.1])
+    >>> b = np.array([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]])
+    >>> q, rssd = rd.align_vectors(rd.quat_rotate(q_WB, b), b)
+    >>> np.allclose(q, rd.quat_canonical(q_WB)), rssd < 1e-12
+    (True, True)
     """
 def angular_distance(q_a: typing.Any, q_b: typing.Any, scalar_first: typing.Any = False, degrees: typing.Any = False) -> typing.Any:
     """
-    Angle [rad, or degrees if degrees=True] in [0, pi] of the rotation taking q_a to q_b: the
-    magnitude of q_a^-1 * q_b (SciPy's (r_a.inv() * r_b).magnitude()), a metric on rotations,
-    independent of the quaternions' signs. 2 atan2(|d_xyz|, |d_w|): accurate near 0 and near pi.
+    Angle of the rotation taking q_a to q_b.
     
-    q_a, q_b: (4,) or (n, 4) unit quaternions, (x, y, z, w) or (w, x, y, z) if scalar_first; a single
-    one is compared with every item of the other. Returns a float or (n,).
+    The magnitude of q_a^-1 ⊗ q_b, 2 atan2(|d_xyz|, |d_w|) for d = q_a^-1 ⊗ q_b: in [0, pi], accurate
+    near 0 and near pi; a metric on rotations, independent of the quaternions' signs. SciPy:
+    ``(r_a.inv() * r_b).magnitude()``.
+    
+    Parameters
+    ----------
+    q_a, q_b : array_like, shape (4,) or (n, 4)
+        Unit quaternions (x, y, z, w), or (w, x, y, z) if `scalar_first`; norm within 1e-6 of 1 (then
+        normalised). A single one is compared with every item of the other.
+    scalar_first : bool, default False
+        Read and write quaternions scalar first, (w, x, y, z), as MuJoCo does.
+    degrees : bool, default False
+        Return degrees instead of radians.
+    
+    Returns
+    -------
+    float or ndarray, shape (n,)
+        Angles [rad] in [0, pi] (degrees if `degrees`).
+    
+    Raises
+    ------
+    ValueError
+        A quaternion with a non-finite entry or a norm farther than 1e-6 from 1 (the message names it
+        and, in a stack, the item), a wrong shape, or stacks of different lengths.
+    
+    See Also
+    --------
+    quat_to_axis_angle, slerp
+    
+    Examples
+    --------
+    q and -q are the same rotation:
+    
+    >>> q = rd.rotvec_to_quat([0.2, 0.0, 0.0])
+    >>> round(rd.angular_distance(q, -q), 12)
+    0.0
+    >>> rd.angular_distance([0.0, 0.0, 0.0, 1.0], [[0.0, 0.0, 1.0, 0.0]], degrees=True).round(9)
+    array([180.])
     """
 def angular_momentum(body: typing.Any, state: typing.Any, point: typing.Any = None) -> typing.Any:
     """
-    Angular momentum about the point P fixed in W at `point` (p_WP [m] in W; None = the world origin O, as the "Rigid body kinematics and dynamics" notes define it, eq. (4.42) and (4.65)), expressed in W. About the centre of mass: point=state.p_W. body: a RigidBody, PlanarBody or Particle; state: its state (RigidBodyState, PlanarBodyState or ParticleState), finite (ValueError naming it otherwise, e.g. for a state a diverged step returned). 
-    RigidBody: (3,) [kg m^2/s], H_P = R_WB I w_B + (p_W - p_WP) x m v_W. PlanarBody: H_z [kg m^2/s] about the z axis through P, I_zz omega + (p_W - p_WP) x m v_W, point (2,). Particle: (3,), (p_W - p_WP) x m v_W.
+    Angular momentum about a point P fixed in W, expressed in W.
+    
+    About P at p_WP ("Rigid body kinematics and dynamics" notes, eq. (4.42) and (4.65); None: the origin O of W):
+    
+    - RigidBody: H_P = R_WB I w_B + (p_W - p_WP) x m v_W, shape (3,);
+    - PlanarBody: H_z = I_zz omega + (p_W - p_WP) x m v_W about the z axis through P, a float;
+    - Particle: (p_W - p_WP) x m v_W, shape (3,).
+    
+    About the centre of mass: point=state.p_W.
+    
+    Parameters
+    ----------
+    body : RigidBody, PlanarBody or Particle
+        The body.
+    state : RigidBodyState, PlanarBodyState or ParticleState
+        Its state, of the body's kind and finite (a state a diverged step returned is refused).
+    point : array_like, shape (3,) or (2,), or pint.Quantity, optional
+        p_WP, the point P in W [m] (None: the origin of W); shape (2,) for a PlanarBody.
+    
+    Returns
+    -------
+    ndarray, shape (3,), or float
+        H_P [kg m^2/s] in W; for a PlanarBody, H_z [kg m^2/s] about z.
+    
+    Raises
+    ------
+    TypeError
+        body not one of the kinds listed, or state not of the body's kind (the message names it).
+    ValueError
+        A state that is not finite or whose quaternion is farther than 1e-6 from unit norm (the message names
+        state.<field>); an argument of another shape, or a quantity of another dimension (the message names it).
+    
+    See Also
+    --------
+    linear_momentum, kinetic_energy
+    
+    Examples
+    --------
+    Spin I w = 6 about the centre of mass plus the orbit p_W x m v_W = 2 about the origin:
+    
+    >>> body = rd.RigidBody(2.0, [1.0, 2.0, 3.0])
+    >>> s = rd.RigidBodyState(p_W=[1, 0, 0], v_W=[0, 1, 0], w_B=[0, 0, 2])
+    >>> rd.angular_momentum(body, s), rd.angular_momentum(body, s, point=s.p_W)
+    (array([0., 0., 8.]), array([0., 0., 6.]))
     """
 def angular_velocity_from_quat_rate(q: typing.Any, dq_dt: typing.Any, frame: typing.Any = 'body', scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
-    Angular velocity [rad/s] of the attitude q = q_WB changing at dq_dt [1/s], the inverse of quat_rate:
-    frame='body': w_B = 2 vec(q* ⊗ dq/dt); frame='world': w_W = 2 vec(dq/dt ⊗ q*).
-    The part of dq_dt along q (which would change |q|, not the rotation) is ignored.
-    q: (4,) or (n, 4) unit quaternions; dq_dt: (4,) or (n, 4), any finite values, in q's order.
-    Returns (3,) or (n, 3).
+    Angular velocity of an attitude changing at a quaternion rate (the inverse of `quat_rate`).
+    
+    frame='body': w_B = 2 vec(q* ⊗ dq/dt); frame='world': w_W = 2 vec(dq/dt ⊗ q*). The part of dq_dt
+    along q (which would change |q|, not the rotation) is ignored. SciPy has no equivalent.
+    
+    Parameters
+    ----------
+    q : array_like, shape (4,) or (n, 4)
+        Attitudes q_WB, unit quaternions (x, y, z, w), or (w, x, y, z) if `scalar_first`; norm within
+        1e-6 of 1 (then normalised).
+    dq_dt : array_like, shape (4,) or (n, 4)
+        Quaternion rates [1/s], any finite values, in the order of q; a single q or dq_dt is used with
+        every item of the other.
+    frame : {'body', 'world'}, default 'body'
+        The frame the result is expressed in.
+    scalar_first : bool, default False
+        Read and write quaternions scalar first, (w, x, y, z), as MuJoCo does.
+    
+    Returns
+    -------
+    ndarray, shape (3,) or (n, 3)
+        Angular velocity [rad/s] of B in W, expressed in B (frame='body') or in W (frame='world').
+    
+    Raises
+    ------
+    ValueError
+        A quaternion with a non-finite entry or a norm farther than 1e-6 from 1 (the message names `q`
+        and, in a stack, the item), or a shape other than (4,) or (n, 4).
+    TypeError
+        `q` not an array of real numbers, or `scalar_first` not a bool.
+    ValueError
+        `dq_dt` of a wrong shape or non-finite, stacks of different lengths, or `frame` not 'body' or
+        'world'.
+    
+    See Also
+    --------
+    quat_rate
+    
+    Examples
+    --------
+    >>> q = rd.rotvec_to_quat([0.4, -1.0, 0.3])
+    >>> dq = rd.quat_rate(q, [1.0, 2.0, 3.0], frame="world")
+    >>> rd.angular_velocity_from_quat_rate(q, dq, frame="world").round(12)
+    array([1., 2., 3.])
     """
 def apply_impulse(body: typing.Any, state: typing.Any, impulse: typing.Any, point: typing.Any = None, frame: typing.Any = 'world', angular_impulse: typing.Any = None) -> typing.Any:
     """
-    The state just after an impulse [N s] at `point` (p_GP [m] from the centre of mass; None = the centre of mass) and an angular impulse [N m s] (None: none), all in `frame` ('world' or 'body'): m dv = impulse, I dw = p_GP x impulse + angular_impulse (impulse-momentum, Craig's "Rigid Body Dynamics" slides). body: a RigidBody, PlanarBody or Particle; state: its state (RigidBodyState, PlanarBodyState or ParticleState), finite (ValueError naming it otherwise, e.g. for a state a diverged step returned). 
-    RigidBody: impulse, point, angular_impulse (3,). PlanarBody: impulse, point (2,), angular_impulse about z. Particle: impulse (3,) in W only.
+    The state just after an impulse at a point and an angular impulse.
+    
+    Impulse-momentum (K. Craig, "Rigid Body Dynamics" slides): m dv = impulse, I dw = p_GP x impulse +
+    angular_impulse, with p_GP the point of application from the centre of mass G; the position and the attitude
+    do not change.
+    
+    Parameters
+    ----------
+    body : RigidBody, PlanarBody or Particle
+        The body.
+    state : RigidBodyState, PlanarBodyState or ParticleState
+        Its state, of the body's kind and finite (a state a diverged step returned is refused).
+    impulse : array_like, shape (3,) or (2,), or pint.Quantity
+        The impulse [N s], in `frame`; shape (2,) for a PlanarBody.
+    point : array_like, shape (3,) or (2,), or pint.Quantity, optional
+        p_GP [m] from the centre of mass, in `frame` (None: the centre of mass). A Particle takes None.
+    frame : {'world', 'body'}, default 'world'
+        Frame of impulse, point and angular_impulse: W or B. A Particle takes 'world'.
+    angular_impulse : array_like, shape (3,), float or pint.Quantity, optional
+        An angular impulse (impulsive torque) [N m s] in `frame` (None: none); a float about z for a PlanarBody.
+        A Particle takes None.
+    
+    Returns
+    -------
+    RigidBodyState, PlanarBodyState or ParticleState
+        The state after the impulse.
+    
+    Raises
+    ------
+    TypeError
+        body not one of the kinds listed, or state not of the body's kind (the message names it).
+    ValueError
+        A state that is not finite or whose quaternion is farther than 1e-6 from unit norm (the message names
+        state.<field>); an argument of another shape, or a quantity of another dimension (the message names it).
+    ValueError
+        point or angular_impulse given for a Particle, or frame 'body' for it.
+    
+    Warns
+    -----
+    RuntimeWarning
+        The new velocities are not finite (an overflow).
+    
+    See Also
+    --------
+    linear_momentum, angular_momentum
+    
+    Examples
+    --------
+    2 N s along y at 1 m along x: dv = J / m, dw_z = (p_GP x J)_z / I_zz = 2 / 3:
+    
+    >>> body = rd.RigidBody(2.0, [1.0, 2.0, 3.0])
+    >>> after = rd.apply_impulse(body, rd.RigidBodyState(), impulse=[0, 2.0, 0], point=[1.0, 0, 0])
+    >>> after.v_W, after.w_B.round(12)
+    (array([0., 1., 0.]), array([0.        , 0.        , 0.66666667]))
     """
 def axis_angle_to_quat(axis: typing.Any, angle: typing.Any, scalar_first: typing.Any = False, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
-    Unit quaternion of the rotation by angle [rad] about axis (right-hand rule).
+    Unit quaternion of the rotation by an angle about an axis (right-hand rule).
     
-    axis: (3,) or (n, 3), any non-zero length (normalised); angle: float or (n,), in degrees if degrees=True.
-    Returns q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first.
+    q = (sin(angle/2) u, cos(angle/2)), u = axis / |axis|. SciPy:
+    ``Rotation.from_rotvec(angle * u).as_quat()``.
+    
+    Parameters
+    ----------
+    axis : array_like, shape (3,) or (n, 3)
+        Rotation axes, any non-zero finite length (normalised, also beyond the range where |axis|^2
+        would overflow or underflow).
+    angle : float or array_like, shape (n,)
+        Rotation angles [rad] (degrees if `degrees`); a single axis or angle is used with every item of
+        the other.
+    scalar_first : bool, default False
+        Read and write quaternions scalar first, (w, x, y, z), as MuJoCo does.
+    degrees : bool, default False, keyword-only
+        Angles in degrees instead of radians (converted as SciPy does: x * (pi/180) in,
+        x * (180/pi) out).
+    
+    Returns
+    -------
+    ndarray, shape (4,) or (n, 4)
+        q, (x, y, z, w) or (w, x, y, z) if `scalar_first`.
+    
+    Raises
+    ------
+    ValueError
+        A zero or non-finite axis, a non-finite angle, a wrong shape, or stacks of different lengths
+        (the message names `axis` or `angle`).
+    
+    See Also
+    --------
+    quat_to_axis_angle, rotvec_to_quat
+    
+    Examples
+    --------
+    >>> rd.axis_angle_to_quat([0.0, 0.0, 2.0], 180.0, degrees=True).round(12)
+    array([0., 0., 1., 0.])
+    >>> rd.axis_angle_to_quat([1.0, 0.0, 0.0], [0.0, np.pi], scalar_first=True).round(12)
+    array([[1., 0., 0., 0.],
+           [0., 1., 0., 0.]])
     """
 def box_shell(size: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
     """
-    Closed thin-walled box (six faces), edges (3,) [m]. Density [kg/m^2]. Give exactly one of mass= [kg] or density=.
+    Mass properties of a closed thin-walled box (its six faces).
+    
+    Edges (a, b, c) along x, y, z, area density s:
+    I_xx = 2 s [b c (b^2 + c^2)/12 + a c (c^2/12 + b^2/4) + a b (b^2/12 + c^2/4)], and cyclically.
+    
+    Parameters
+    ----------
+    size : array_like, shape (3,)
+        Edge lengths (a, b, c) [m] along x, y, z.
+    mass : float, optional
+        Total mass m [kg], finite and > 0. Give exactly one of `mass` and `density`.
+    density : float, optional
+        Area density [kg/m^2], finite and > 0: m = density * area.
+    
+    Returns
+    -------
+    SpatialInertia
+        Mass [kg], centre of mass at the origin [m] and inertia_com [kg m^2] about it, expressed in the
+        shape's frame (edges along x, y, z).
+    
+    Raises
+    ------
+    ValueError
+        A `size` entry not finite and > 0;
+        not exactly one of `mass` and `density`, or that one not finite and > 0 (the message names
+        the argument).
+    TypeError
+        An argument that is not a real number.
+    
+    See Also
+    --------
+    solid_box, thin_plate, mesh_shell, SpatialInertia.transformed
+    
+    Examples
+    --------
+    A thin-walled cube of edge a has I = 5/18 m a^2 about every axis:
+    
+    >>> rd.box_shell([1.0, 1.0, 1.0], mass=18.0).inertia_com.diagonal().round(12)
+    array([5., 5., 5.])
     """
 def compose_kinematics(K_AP: typing.Any, K_PF: typing.Any) -> FrameKinematics:
     """
-    F relative to A from P relative to A and F relative to P (addition theorem for w; alpha with its
-    w_AP x w_PF term; origin by the point formulas of the "Rigid body kinematics and dynamics" notes,
-    (4.38), (4.39)). Result expressed in A.
+    Kinematics of F relative to A from those of P relative to A and of F relative to P.
+    
+    R_AF = R_AP R_PF; the addition theorem w_AF = w_AP + w_PF; alpha_AF = alpha_AP + alpha_PF + w_AP x w_PF;
+    F's origin by the point formulas of the "Rigid body kinematics and dynamics" notes, (4.38), (4.39).
+    
+    Parameters
+    ----------
+    K_AP : FrameKinematics
+        P relative to A, expressed in A.
+    K_PF : FrameKinematics
+        F relative to P, expressed in P.
+    
+    Returns
+    -------
+    FrameKinematics
+        F relative to A, expressed in A.
+    
+    Raises
+    ------
+    TypeError
+        An argument not a FrameKinematics (naming it).
+    
+    See Also
+    --------
+    relative_kinematics, FrameTree.kinematics
+    
+    Examples
+    --------
+    P spins at 1 rad/s about z; F, 2 m along P's x, spins at 1 rad/s about P's x:
+    
+    >>> K_AP = rd.FrameKinematics(w_PF_P=[0.0, 0.0, 1.0])
+    >>> K_PF = rd.FrameKinematics(w_PF_P=[1.0, 0.0, 0.0], p_PF_P=[2.0, 0.0, 0.0])
+    >>> K_AF = rd.compose_kinematics(K_AP, K_PF)
+    >>> K_AF.w_PF_P, K_AF.alpha_PF_P, K_AF.v_PF_P, K_AF.a_PF_P
+    (array([1., 0., 1.]), array([0., 1., 0.]), array([0., 2., 0.]), array([-2.,  0.,  0.]))
     """
 def composite(parts: typing.Any) -> SpatialInertia:
     """
-    Composite body: parts is a list of SpatialInertia (one frame) or of (X_AB, SpatialInertia) pairs,
-    each part expressed in its B and placed in A by the Transform X_AB. Exact.
+    Mass properties of a body made of parts (exact).
+    
+    Masses add, the centre of mass is the mass-weighted mean, and each part's inertia is moved to the
+    common centre of mass by the parallel-axis theorem (Craig):
+    I_C = sum_k R_k I_Ck R_k^T + m_k (|r_k|^2 1 - r_k r_k^T), r_k the part's centre of mass relative to the
+    composite's.
+    
+    Parameters
+    ----------
+    parts : sequence of SpatialInertia, or of (Transform, SpatialInertia) pairs
+        The parts, all expressed in one frame A; or pairs (X_AB, part) with each part expressed in its own
+        frame B and placed in A by the Transform X_AB. The first item sets the form of all. Not empty.
+    
+    Returns
+    -------
+    SpatialInertia
+        Total mass [kg], centre of mass [m] and inertia_com [kg m^2] about it, expressed in A.
+    
+    Raises
+    ------
+    TypeError
+        `parts` not a sequence, or an item not of the form of parts[0] (the message names it).
+    ValueError
+        `parts` empty.
+    
+    Warns
+    -----
+    RuntimeWarning
+        A result that overflowed to a non-finite value.
+    
+    See Also
+    --------
+    SpatialInertia.transformed, SpatialInertia.remove, from_point_masses
+    
+    Examples
+    --------
+    Two half cubes side by side make the whole cube:
+    
+    >>> half = rd.solid_box([0.5, 1.0, 1.0], mass=1.0)
+    >>> X_AL = rd.Transform(translation=[-0.25, 0, 0])
+    >>> X_AR = rd.Transform(translation=[0.25, 0, 0])
+    >>> rd.composite([(X_AL, half), (X_AR, half)]).is_approx(rd.solid_box([1.0, 1.0, 1.0], mass=2.0))
+    True
     """
 def davenport_to_quat(axes: typing.Any, order: typing.Any, angles: typing.Any, scalar_first: typing.Any = False, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Unit quaternion of Davenport angles (rotations about three arbitrary axes).
     
-    axes: (3, 3), the rotation axes n1, n2, n3 as rows (any non-zero length, normalised), n2
-    orthogonal to n1 and to n3 (|cos| <= 1e-7, as SciPy); order: 'e'/'extrinsic' (fixed axes,
-    R = R_n3(a3) R_n2(a2) R_n1(a1)) or 'i'/'intrinsic' (moving axes, R = R_n1(a1) R_n2(a2) R_n3(a3)),
-    as SciPy's Rotation.from_davenport / as_davenport. Coordinate axes give Euler angles.
-    angles: (3,) or (n, 3) [rad] (degrees if degrees=True), in the order of the axes.
-    Returns q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first.
+    SciPy: ``Rotation.from_davenport(axes, order, angles).as_quat()``.
+    
+    Parameters
+    ----------
+    axes : array_like, shape (3, 3)
+        The rotation axes n1, n2, n3 as rows (any non-zero length, normalised), n2 orthogonal to n1 and
+        to n3 (|cos| <= 1e-7, as SciPy). Coordinate axes give Euler angles.
+    order : str
+        'e' or 'extrinsic' (fixed axes, R = R_n3(a3) R_n2(a2) R_n1(a1)) or 'i' or 'intrinsic' (moving
+        axes, R = R_n1(a1) R_n2(a2) R_n3(a3)), as SciPy's `Rotation.from_davenport` / `as_davenport`.
+    angles : array_like, shape (3,) or (n, 3)
+        Angles [rad] (degrees if `degrees`), in the order of the axes.
+    scalar_first : bool, default False
+        Read and write quaternions scalar first, (w, x, y, z), as MuJoCo does.
+    degrees : bool, default False, keyword-only
+        Angles in degrees instead of radians (converted as SciPy does: x * (pi/180) in,
+        x * (180/pi) out).
+    
+    Returns
+    -------
+    ndarray, shape (4,) or (n, 4)
+        q, (x, y, z, w) or (w, x, y, z) if `scalar_first`.
+    
+    Raises
+    ------
+    ValueError
+        `axes` not of shape (3, 3), with a zero row or with n2 not orthogonal to n1 and n3 (the message
+        names `axes`); `order` not one of 'e', 'extrinsic', 'i', 'intrinsic'.
+    ValueError
+        A non-finite angle or a wrong shape (the message names `angles`).
+    
+    See Also
+    --------
+    quat_to_davenport, euler_to_quat
+    
+    Examples
+    --------
+    Coordinate axes give Euler angles:
+    
+    >>> q = rd.davenport_to_quat(np.eye(3), "extrinsic", [0.1, 0.2, 0.3])
+    >>> np.allclose(q, rd.euler_to_quat("xyz", [0.1, 0.2, 0.3]))
+    True
     """
 def default_thread_count() -> int:
     """
-    The number of hardware threads (at least 1): simulate_batch's threads=None.
+    The number of hardware threads, at least 1.
+    
+    simulate_batch runs on this many threads when threads=None.
+    
+    Parameters
+    ----------
+    None
+    
+    Returns
+    -------
+    int
+        The hardware thread count (1 where it is unknown).
+    
+    See Also
+    --------
+    simulate_batch
+    
+    Examples
+    --------
+    >>> rd.default_thread_count() >= 1
+    True
     """
 def ellipk(m: typing.Any, mc: typing.Any = None) -> float:
     """
-    Complete elliptic integral K(m) = R_F(0, mc, 1) for the parameter m in [0, 1] (as scipy.special.ellipk).
-    mc: the complement 1 - m (default 1 - m); pass it near m = 1, where 1 - m loses digits. inf at mc = 0.
+    Complete elliptic integral of the first kind K(m).
+    
+    K(m) = int_0^{pi/2} dt / sqrt(1 - m sin^2 t) = R_F(0, mc, 1), the quarter period of the Jacobi elliptic
+    functions. The argument is the parameter m = k^2 (k the modulus), as scipy.special.ellipk takes it. K is
+    computed from the complement mc, so that K ~ ln(16/mc)/2 keeps full relative precision as m -> 1.
+    
+    Parameters
+    ----------
+    m : float
+        Parameter m = k^2, 0 <= m <= 1.
+    mc : float, optional
+        Its complement 1 - m, in [0, 1] and equal to 1 - m to within 4 eps (default: computed as
+        1 - m). Pass it near m = 1, where 1 - m loses digits.
+    
+    Returns
+    -------
+    float
+        K(m); inf at mc = 0.
+    
+    Raises
+    ------
+    ValueError
+        m or mc outside [0, 1], non-finite, or mc not 1 - m (the message names it).
+    
+    See Also
+    --------
+    elliprf, ellippi, jacobi_ellipj
+    scipy.special.ellipk : The same function of m; scipy.special.ellipkm1 takes mc.
+    
+    Examples
+    --------
+    K(0) = pi/2 and K(1/2) = Gamma(1/4)^2 / (4 sqrt(pi)):
+    
+    >>> rd.ellipk(0.0) == np.pi / 2
+    True
+    >>> from math import gamma
+    >>> bool(np.isclose(rd.ellipk(0.5), gamma(0.25) ** 2 / (4 * np.sqrt(np.pi))))
+    True
+    
+    Near m = 1, given mc, K follows ln(16/mc)/2 (m = 1 - 1e-20 rounds to 1.0):
+    
+    >>> f"{rd.ellipk(1.0, mc=1e-20):.9f} {np.log(16 / 1e-20) / 2:.9f}"
+    '24.412145291 24.412145291'
     """
 def ellippi(n: typing.Any, m: typing.Any, mc: typing.Any = None) -> float:
     """
-    Complete elliptic integral of the third kind Pi(n|m) = int_0^{pi/2} dt / ((1 - n sin^2 t) sqrt(1 - m sin^2 t)),
-    n < 1, m in [0, 1), mc = 1 - m (default 1 - m). A few ulps for n <= 0.9; relative error ~eps/(1 - n) nearer 1.
+    Complete elliptic integral of the third kind Pi(n|m).
+    
+    Pi(n|m) = int_0^{pi/2} dt / ((1 - n sin^2 t) sqrt(1 - m sin^2 t)) for the characteristic n < 1 and the
+    parameter m = k^2 (as scipy.special.ellipk takes it). A few ulps for n <= 0.9; relative error
+    ~eps/(1 - n) nearer 1.
+    
+    Parameters
+    ----------
+    n : float
+        Characteristic, n < 1.
+    m : float
+        Parameter m = k^2, 0 <= m < 1.
+    mc : float, optional
+        Its complement 1 - m, > 0 and equal to 1 - m to within 4 eps (default: computed as 1 - m).
+    
+    Returns
+    -------
+    float
+        Pi(n|m), finite.
+    
+    Raises
+    ------
+    ValueError
+        n >= 1 (naming n); m or mc outside [0, 1] or mc not 1 - m; mc = 0, where Pi(n|1) diverges
+        (naming mc).
+    
+    See Also
+    --------
+    ellippi_am, ellipk, elliprj
+    scipy.special.elliprj : SciPy has no Pi(n|m); it is elliprf(0, 1 - m, 1) + n/3 elliprj(0, 1 - m, 1, 1 - n).
+    
+    Examples
+    --------
+    Pi(0|m) = K(m), and Pi(n|0) = pi / (2 sqrt(1 - n)):
+    
+    >>> bool(np.isclose(rd.ellippi(0.0, 0.5), rd.ellipk(0.5)))
+    True
+    >>> bool(np.isclose(rd.ellippi(0.5, 0.0), np.pi / (2 * np.sqrt(0.5))))
+    True
     """
 def ellippi_am(u: typing.Any, n: typing.Any, m: typing.Any, mc: typing.Any = None) -> typing.Any:
     """
-    Incomplete Pi(am u, n|m) = int_0^u dv / (1 - n sn^2(v|m)) (mpmath.ellippi(n, am(u), m)), for u a scalar
-    or a 1-d array (then an array of the same length), n < 1, mc = 1 - m (default 1 - m); +-inf with a
-    RuntimeWarning where it exceeds the double range (|u| near it).
+    Incomplete elliptic integral of the third kind at the amplitude am u, Pi(am u, n|m).
+    
+    Pi(am u, n|m) = int_0^u dv / (1 - n sn^2(v|m)) for any finite u (mpmath.ellippi(n, am(u), m)), the
+    parameter m = k^2; Pi(am(u + 2K), n|m) = Pi(am u, n|m) + 2 Pi(n|m), K = K(m).
+    
+    Parameters
+    ----------
+    u : float or array_like, shape (n,)
+        Argument of the Jacobi functions, finite.
+    n : float
+        Characteristic, n < 1.
+    m : float
+        Parameter m = k^2, 0 <= m <= 1.
+    mc : float, optional
+        Its complement 1 - m, equal to 1 - m to within 4 eps (default: computed as 1 - m).
+    
+    Returns
+    -------
+    float or ndarray, shape (n,)
+        Pi(am u, n|m), of u's shape; +-inf with a RuntimeWarning where it exceeds the double range
+        (|u| near it).
+    
+    Raises
+    ------
+    ValueError
+        n >= 1, m or mc outside [0, 1] or mc not 1 - m, u non-finite or of another shape (the
+        message names it).
+    
+    See Also
+    --------
+    ellippi, jacobi_ellipj
+    
+    Notes
+    -----
+    SciPy has no incomplete integral of the third kind: for |am u| <= pi/2 it is
+    s R_F(c^2, d^2, 1) + (n/3) s^3 R_J(c^2, d^2, 1, 1 - n s^2) with (s, c, d) = (sn, cn, dn)(u|m)
+    (scipy.special.ellipj, elliprf, elliprj).
+    
+    Examples
+    --------
+    At u = K(m) it is the complete integral; for m = 0 (am u = u), atan(sqrt(1 - n) tan u) / sqrt(1 - n):
+    
+    >>> K = rd.ellipk(0.5)
+    >>> bool(np.isclose(rd.ellippi_am(K, 0.3, 0.5), rd.ellippi(0.3, 0.5)))
+    True
+    >>> bool(np.isclose(rd.ellippi_am(0.7, 0.4, 0.0), np.arctan(np.sqrt(0.6) * np.tan(0.7)) / np.sqrt(0.6)))
+    True
+    >>> rd.ellippi_am([0.0, 2 * K], 0.3, 0.5) / rd.ellippi(0.3, 0.5)
+    array([0., 2.])
     """
 def elliprf(x: typing.Any, y: typing.Any, z: typing.Any) -> float:
     """
-    Carlson's R_F(x, y, z) (DLMF 19.16.1) for finite x, y, z >= 0, at most one zero, of any magnitude;
-    inf with a RuntimeWarning where the result exceeds the double range.
+    Carlson's symmetric elliptic integral of the first kind R_F(x, y, z).
+    
+    R_F(x, y, z) = 1/2 int_0^inf dt / sqrt((t + x)(t + y)(t + z)) (DLMF 19.16.1), symmetric in its arguments,
+    to a few ulps for finite arguments of any magnitude (1e-300 to 1e300 together). K(m) = R_F(0, 1 - m, 1).
+    
+    Parameters
+    ----------
+    x, y, z : float
+        Finite, >= 0, at most one of them zero.
+    
+    Returns
+    -------
+    float
+        R_F(x, y, z) (it never exceeds the double range).
+    
+    Raises
+    ------
+    ValueError
+        An argument negative or non-finite, or two of them zero (the message names it).
+    
+    See Also
+    --------
+    elliprj, ellipk
+    scipy.special.elliprf : The same function (same argument order).
+    
+    Examples
+    --------
+    R_F(0, 1, 1) = K(0) = pi/2, and R_F(x, x, x) = 1/sqrt(x):
+    
+    >>> bool(np.isclose(rd.elliprf(0.0, 1.0, 1.0), np.pi / 2))
+    True
+    >>> bool(np.isclose(rd.elliprf(2.0, 2.0, 2.0), 1 / np.sqrt(2.0)))
+    True
     """
 def elliprj(x: typing.Any, y: typing.Any, z: typing.Any, p: typing.Any) -> float:
     """
-    Carlson's R_J(x, y, z, p) (DLMF 19.16.2) for finite x, y, z >= 0, at most one zero, and p > 0, of any
-    magnitude; inf with a RuntimeWarning where the result exceeds the double range.
+    Carlson's symmetric elliptic integral of the third kind R_J(x, y, z, p).
+    
+    R_J(x, y, z, p) = 3/2 int_0^inf dt / ((t + p) sqrt((t + x)(t + y)(t + z))) (DLMF 19.16.2), symmetric in
+    x, y, z, to a few ulps for finite arguments of any magnitude; Pi(n|m) = R_F(0, 1 - m, 1) +
+    (n/3) R_J(0, 1 - m, 1, 1 - n).
+    
+    Parameters
+    ----------
+    x, y, z : float
+        Finite, >= 0, at most one of them zero.
+    p : float
+        Finite, > 0.
+    
+    Returns
+    -------
+    float
+        R_J(x, y, z, p); inf with a RuntimeWarning where it exceeds the double range (R_J ~
+        1/sqrt(x y z p) for tiny arguments), 0 or a subnormal below it.
+    
+    Raises
+    ------
+    ValueError
+        x, y or z negative, two of them zero, p <= 0, or a non-finite argument (the message names
+        it).
+    
+    See Also
+    --------
+    elliprf, ellippi
+    scipy.special.elliprj : The same function (same argument order).
+    
+    Examples
+    --------
+    R_J(x, x, x, x) = x^(-3/2):
+    
+    >>> rd.elliprj(4.0, 4.0, 4.0, 4.0)
+    0.125
     """
 def euler_to_matrix(seq: typing.Any, angles: typing.Any, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Rotation matrix of Euler angles.
     
-    seq: 3 letters as SciPy, lowercase 'xyz' = extrinsic (fixed axes), uppercase 'XYZ' = intrinsic
-    (moving axes); the 12 sequences xyz xzy yxz yzx zxy zyx xyx xzx yxy yzy zxz zyz in either case.
-    angles: (3,) or (n, 3) [rad] (degrees if degrees=True). Returns R: (3, 3) or (n, 3, 3).
+    Extrinsic 'xyz' is R = R_z(a3) R_y(a2) R_x(a1), intrinsic 'XYZ' is R = R_x(a1) R_y(a2) R_z(a3).
+    SciPy: ``Rotation.from_euler(seq, angles).as_matrix()``.
+    
+    Parameters
+    ----------
+    seq : str
+        The axis sequence, 3 letters as SciPy's: lowercase 'xyz' = extrinsic (rotations about the
+        fixed axes of W), uppercase 'XYZ' = intrinsic (about the moving axes); the 12 sequences xyz xzy
+        yxz yzx zxy zyx xyx xzx yxy yzy zxz zyz in either case.
+    angles : array_like, shape (3,) or (n, 3)
+        Angles [rad] (degrees if `degrees`), in the order of `seq`.
+    degrees : bool, default False, keyword-only
+        Angles in degrees instead of radians (converted as SciPy does: x * (pi/180) in,
+        x * (180/pi) out).
+    
+    Returns
+    -------
+    ndarray, shape (3, 3) or (n, 3, 3)
+        R, orthonormal with det +1.
+    
+    Raises
+    ------
+    ValueError
+        `seq` not one of the 24 sequences.
+    TypeError
+        `seq` not a str.
+    ValueError
+        A non-finite angle or a wrong shape (the message names `angles`).
+    
+    See Also
+    --------
+    matrix_to_euler, euler_to_quat, rot_x
+    
+    Examples
+    --------
+    >>> R = rd.euler_to_matrix("xyz", [0.1, 0.2, 0.3])
+    >>> np.allclose(R, rd.rot_z(0.3) @ rd.rot_y(0.2) @ rd.rot_x(0.1))
+    True
     """
 def euler_to_quat(seq: typing.Any, angles: typing.Any, scalar_first: typing.Any = False, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Unit quaternion of Euler angles.
     
-    seq: 3 letters as SciPy, lowercase 'xyz' = extrinsic (fixed axes), uppercase 'XYZ' = intrinsic
-    (moving axes); the 12 sequences xyz xzy yxz yzx zxy zyx xyx xzx yxy yzy zxz zyz in either case.
-    angles: (3,) or (n, 3) [rad] (degrees if degrees=True), in the order of seq.
-    Returns q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first.
+    SciPy: ``Rotation.from_euler(seq, angles).as_quat()``.
+    
+    Parameters
+    ----------
+    seq : str
+        The axis sequence, 3 letters as SciPy's: lowercase 'xyz' = extrinsic (rotations about the
+        fixed axes of W), uppercase 'XYZ' = intrinsic (about the moving axes); the 12 sequences xyz xzy
+        yxz yzx zxy zyx xyx xzx yxy yzy zxz zyz in either case.
+    angles : array_like, shape (3,) or (n, 3)
+        Angles [rad] (degrees if `degrees`), in the order of `seq`.
+    scalar_first : bool, default False
+        Read and write quaternions scalar first, (w, x, y, z), as MuJoCo does.
+    degrees : bool, default False, keyword-only
+        Angles in degrees instead of radians (converted as SciPy does: x * (pi/180) in,
+        x * (180/pi) out).
+    
+    Returns
+    -------
+    ndarray, shape (4,) or (n, 4)
+        q, (x, y, z, w) or (w, x, y, z) if `scalar_first`.
+    
+    Raises
+    ------
+    ValueError
+        `seq` not one of the 24 sequences.
+    TypeError
+        `seq` not a str.
+    ValueError
+        A non-finite angle or a wrong shape (the message names `angles`).
+    
+    See Also
+    --------
+    quat_to_euler, euler_to_matrix, davenport_to_quat
+    
+    Examples
+    --------
+    Yaw, pitch and roll (intrinsic z-y'-x''); a yaw alone is a turn about z:
+    
+    >>> rd.euler_to_quat("ZYX", [90.0, 0.0, 0.0], degrees=True)
+    array([0.        , 0.        , 0.70710678, 0.70710678])
+    >>> q = rd.euler_to_quat("ZYX", [0.1, 0.2, 0.3])
+    >>> np.allclose(rd.quat_to_matrix(q), rd.rot_z(0.1) @ rd.rot_y(0.2) @ rd.rot_x(0.3))
+    True
     """
 def force_cross_matrix(motion: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
     """
-    crf(V) (6,6) = [[hat(w), hat(v)], [0, hat(w)]] = -crm(V)^T of the motion V = [w; v], so crf(V) F = V x* F.
+    Force cross-product matrix crf(V) (Featherstone, "Rigid Body Dynamics Algorithms").
+    
+    crf(V) = [[hat(w), hat(v)], [0, hat(w)]] = -crm(V)^T for V = [w; v] (angular first), so that
+    crf(V) F = V x* F (Motion.cross_force), as in the Newton-Euler equation I a + V x* I V.
+    
+    Parameters
+    ----------
+    motion : Motion
+        V = [w; v] ([rad/s], [m/s]).
+    
+    Returns
+    -------
+    ndarray, shape (6, 6)
+        crf(V), in V's frame (hat(w) blocks [rad/s], hat(v) block [m/s]).
+    
+    Raises
+    ------
+    TypeError
+        motion not a Motion.
+    
+    See Also
+    --------
+    motion_cross_matrix, Motion.cross_force
+    
+    Examples
+    --------
+    >>> V, F = rd.Motion([0.0, 0.0, 1.0], [1.0, 0.0, 0.0]), rd.Force([0.0, 0.0, 2.0], [0.0, 3.0, 0.0])
+    >>> bool(np.allclose(rd.force_cross_matrix(V), -rd.motion_cross_matrix(V).T))
+    True
+    >>> bool(np.allclose(rd.force_cross_matrix(V) @ F.to_vector(), V.cross_force(F).to_vector()))
+    True
     """
 def forward_dynamics(body: typing.Any, state: typing.Any, force: typing.Any = None, torque: typing.Any = None, point: typing.Any = None, frame: typing.Any = 'world', gravity: typing.Any = None) -> typing.Any:
     """
-    Accelerations of `body` in `state` under a force applied at `point` and a torque `torque`.
-    body: a RigidBody, PlanarBody or Particle; state: its state (RigidBodyState, PlanarBodyState or ParticleState), finite (ValueError naming it otherwise, e.g. for a state a diverged step returned). 
-    gravity: None (the default: no gravity, docs/conventions.md), True = (0, 0, -9.81) m/s^2, or a vector [m/s^2] in W.
-    RigidBody: force (3,) [N] at point (p_GP (3,) [m], from the centre of mass; None = the centre of mass), torque (3,) [N m], all expressed in `frame` ('world' or 'body'), gravity (3,); returns a BodyAcceleration (a_W (3,) [m/s^2] of the centre of mass in W, alpha_B (3,) [rad/s^2] in B; unpacks as a_W, alpha_B). Newton: m a = f + m g; Euler: I alpha + w x I w = tau_G.
-    PlanarBody: in-plane force (2,) [N] at point (2,) [m], torque [N m] about z, gravity (2,) [m/s^2]; returns a PlanarAcceleration (a_W (2,), alpha [rad/s^2]); I_zz alpha = tau_G.
-    Particle: force (3,) [N] in W (torque and point None, frame 'world'); returns a_W (3,) = force/m + g.
-    PivotedBody (state a PivotedBodyState): force (3,) [N] at point (p_CP (3,) [m] from the centre of mass; None = the centre of mass) and torque (3,) [N m], in `frame`, gravity (3,) [m/s^2] in W; returns a PivotedAcceleration (alpha_B (3,) [rad/s^2] in B, reaction_W (3,) [N] the pivot's force in W; unpacks as alpha_B, reaction_W): Euler about O, inertia_O alpha_B + w_B x inertia_O w_B = tau_O, and Newton for C, reaction = m a_C - f.
-    PivotedPlanarBody (state a PivotedPlanarBodyState): in-plane force (2,) [N] at point (2,) [m], torque [N m] about z, gravity (2,) or (3,) in W's plane; returns a PivotedPlanarAcceleration (alpha [rad/s^2], reaction_W).
+    Accelerations of `body` in `state` under an applied force, torque and gravity.
+    
+    The force f acts at `point` P (p_GP from the centre of mass G) and reduces to G as f and tau_G = tau + p_GP x f.
+    Per body kind:
+    
+    - RigidBody: Newton m a_W = f_W + m g_W, Euler I alpha_B + w_B x I w_B = tau_B (I about G, in B).
+    - PlanarBody: m a_W = f_W + m g_W in W's xy plane, I_zz alpha = tau_G about z.
+    - Particle: a_W = f_W / m + g_W.
+    - PivotedBody: Euler about the pivot O, inertia_O alpha_B + w_B x inertia_O w_B = tau_O (in B), and Newton for
+      the centre of mass C, reaction_W = m a_C - f_W - m g_W; `point` is p_CP from C.
+    - PivotedPlanarBody: inertia_O_zz alpha = tau_O about the z axis through O, and the reaction as for a
+      PivotedBody.
+    
+    Parameters
+    ----------
+    body : RigidBody, PlanarBody, Particle, PivotedBody or PivotedPlanarBody
+        The body.
+    state : RigidBodyState, PlanarBodyState, ParticleState, PivotedBodyState or PivotedPlanarBodyState
+        Its state, of the body's kind and finite (a state a diverged step returned is refused).
+    force : array_like, shape (3,) or (2,), or pint.Quantity, optional
+        Applied force f [N], expressed in `frame` (None: zero); shape (2,), in the plane, for the planar bodies.
+    torque : array_like, shape (3,), float or pint.Quantity, optional
+        Applied torque tau [N m], expressed in `frame` (None: zero); a float about z for the planar bodies. A
+        Particle takes None.
+    point : array_like, shape (3,) or (2,), or pint.Quantity, optional
+        Point of application of the force, p_GP [m] from the centre of mass, expressed in `frame` (None: the
+        centre of mass). A Particle takes None.
+    frame : {'world', 'body'}, default 'world'
+        Frame of force, torque and point: W or B. A Particle takes 'world'.
+    gravity : None, bool or array_like, default None
+        Uniform gravity g_W [m/s^2] in W: None (no gravity, docs/conventions.md), True (0, 0, -9.81) (False:
+        none), or a vector, shape (3,). PlanarBody: None or an in-plane vector, shape (2,). PivotedPlanarBody: None
+        or an in-plane vector, shape (2,) or (3,).
+    
+    Returns
+    -------
+    BodyAcceleration, PlanarAcceleration, ndarray, PivotedAcceleration or PivotedPlanarAcceleration
+        RigidBody: BodyAcceleration (a_W, shape (3,) [m/s^2] in W; alpha_B, shape (3,) [rad/s^2] in B).
+        PlanarBody: PlanarAcceleration (a_W, shape (2,); alpha [rad/s^2] about z). Particle: a_W, ndarray of
+        shape (3,) [m/s^2] in W. PivotedBody: PivotedAcceleration. PivotedPlanarBody: PivotedPlanarAcceleration.
+    
+    Raises
+    ------
+    TypeError
+        body not one of the kinds listed, or state not of the body's kind (the message names it).
+    ValueError
+        A state that is not finite or whose quaternion is farther than 1e-6 from unit norm (the message names
+        state.<field>); an argument of another shape, or a quantity of another dimension (the message names it).
+    ValueError
+        torque or point given for a Particle, or frame 'body' for it; gravity True or False for a planar body.
+    
+    Warns
+    -----
+    RuntimeWarning
+        The result is not finite (an overflow; the message names forward_dynamics).
+    
+    See Also
+    --------
+    inverse_dynamics, simulate, step
+    
+    Examples
+    --------
+    >>> body = rd.RigidBody(2.0, [1.0, 2.0, 3.0])
+    >>> rd.forward_dynamics(body, rd.RigidBodyState(), gravity=True)
+    BodyAcceleration(a_W=[0.0, 0.0, -9.81], alpha_B=[0.0, 0.0, 0.0])
+    
+    Torque-free, a spin about two principal axes still accelerates (the gyroscopic term -I^-1 (w_B x I w_B)):
+    
+    >>> rd.forward_dynamics(body, rd.RigidBodyState(w_B=[1.0, 1.0, 0.0])).alpha_B.round(12)
+    array([ 0.        ,  0.        , -0.33333333])
+    
+    A rod of L = 2 m and 3 kg pinned at one end, held horizontal, starts at alpha = -3 g / (2 L):
+    
+    >>> rod = rd.PivotedPlanarBody(3.0, 3.0 * 2.0**2 / 12, p_OC_B=[1.0, 0.0])
+    >>> print(f"{rd.forward_dynamics(rod, rd.PivotedPlanarBodyState(), gravity=[0.0, -9.81]).alpha:.6f}")
+    -7.357500
     """
 def from_point_masses(masses: typing.Any, positions: typing.Any) -> SpatialInertia:
     """
-    Point masses (n,) [kg] >= 0 at positions (n, 3) [m] (Rigid-body notes (4.53)-(4.54)).
+    Mass properties of a set of point masses.
+    
+    m = sum m_i, c = sum m_i p_i / m, I_C = sum m_i (|r_i|^2 1 - r_i r_i^T) with r_i = p_i - c
+    ("Rigid body kinematics and dynamics" notes, eqs. (4.53)-(4.54)).
+    
+    Parameters
+    ----------
+    masses : array_like, shape (n,)
+        Masses m_i [kg], finite and >= 0, summing to > 0.
+    positions : array_like, shape (n, 3)
+        Positions p_i [m], in any frame A; one row per mass.
+    
+    Returns
+    -------
+    SpatialInertia
+        Total mass [kg], centre of mass [m] and inertia_com [kg m^2] about it, expressed in A.
+    
+    Raises
+    ------
+    ValueError
+        Shapes that do not match, a mass that is negative or not finite (masses[i] named), masses summing
+        to 0, or positions not finite.
+    
+    See Also
+    --------
+    point_inertia, symmetry_planes, SpatialInertia.point_mass
+    
+    Examples
+    --------
+    A dumbbell of two 1 kg masses 2 m apart: I = 2 m d^2 = 2 kg m^2 about the axes across it:
+    
+    >>> body = rd.from_point_masses([1.0, 1.0], [[-1.0, 0, 0], [1.0, 0, 0]])
+    >>> body.mass, body.com, body.inertia_com.diagonal()
+    (2.0, array([0., 0., 0.]), array([0., 2., 2.]))
     """
 def hat(v: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
     """
-    Skew-symmetric cross-product matrix S = hat(v), S x = v × x. v: (3,) or (n, 3); returns (3, 3) or (n, 3, 3).
+    Skew-symmetric cross-product matrices.
+    
+    S = hat(v) = [[0, -v3, v2], [v3, 0, -v1], [-v2, v1, 0]], so that S x = v × x. SciPy has no
+    equivalent.
+    
+    Parameters
+    ----------
+    v : array_like, shape (3,) or (n, 3)
+        Vectors (any unit), finite.
+    
+    Returns
+    -------
+    ndarray, shape (3, 3) or (n, 3, 3)
+        hat(v), in the unit of v.
+    
+    Raises
+    ------
+    ValueError
+        A non-finite entry or a wrong shape (the message names `v`).
+    
+    See Also
+    --------
+    vee
+    
+    Examples
+    --------
+    >>> rd.hat([1.0, 2.0, 3.0]) @ [4.0, 5.0, 6.0]
+    array([-3.,  6., -3.])
+    >>> np.cross([1.0, 2.0, 3.0], [4.0, 5.0, 6.0])
+    array([-3.,  6., -3.])
     """
 def hollow_cylinder(outer_radius: typing.Any, inner_radius: typing.Any, height: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
     """
-    Thick tube, axis z: I_zz = m (R^2 + r^2)/2, I_xx = m (3 (R^2 + r^2) + h^2)/12. Density [kg/m^3]. Give
-    exactly one of mass= [kg] or density=.
+    Mass properties of a thick tube (open ends), axis z.
+    
+    I_zz = m (R^2 + r^2)/2, I_xx = I_yy = m (3 (R^2 + r^2) + h^2)/12 about the centre; r = 0 is the solid
+    cylinder.
+    
+    Parameters
+    ----------
+    outer_radius : float
+        Outer radius R [m], > 0.
+    inner_radius : float
+        Inner radius r [m], in [0, R).
+    height : float
+        Height h [m] along z, > 0.
+    mass : float, optional
+        Total mass m [kg], finite and > 0. Give exactly one of `mass` and `density`.
+    density : float, optional
+        Volume density [kg/m^3], finite and > 0: m = density * volume.
+    
+    Returns
+    -------
+    SpatialInertia
+        Mass [kg], centre of mass at the origin [m] and inertia_com [kg m^2] about it, expressed in the
+        shape's frame (axis z).
+    
+    Raises
+    ------
+    ValueError
+        `outer_radius` or `height` not finite and > 0, or `inner_radius` outside [0, outer_radius);
+        not exactly one of `mass` and `density`, or that one not finite and > 0 (the message names
+        the argument).
+    TypeError
+        An argument that is not a real number.
+    
+    See Also
+    --------
+    solid_cylinder, SpatialInertia.transformed
+    
+    Examples
+    --------
+    >>> rd.hollow_cylinder(2.0, 1.0, 3.0, mass=4.0).inertia_com.diagonal().round(12)
+    array([ 8.,  8., 10.])
+    >>> rd.hollow_cylinder(1.0, 0.0, 2.0, mass=1.0).is_approx(rd.solid_cylinder(1.0, 2.0, mass=1.0))
+    True
     """
 def hollow_sphere(outer_radius: typing.Any, inner_radius: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
     """
-    Thick spherical shell [m]: I = 2/5 m (R^5 - r^5)/(R^3 - r^3) 1. Density [kg/m^3]. Give exactly one of mass= [kg] or density=.
+    Mass properties of a thick spherical shell (a solid sphere with a concentric spherical hole).
+    
+    I = 2/5 m (R^5 - r^5) / (R^3 - r^3) 1 about the centre; r = 0 is the solid sphere.
+    
+    Parameters
+    ----------
+    outer_radius : float
+        Outer radius R [m], > 0.
+    inner_radius : float
+        Inner radius r [m], in [0, R).
+    mass : float, optional
+        Total mass m [kg], finite and > 0. Give exactly one of `mass` and `density`.
+    density : float, optional
+        Volume density [kg/m^3], finite and > 0: m = density * volume.
+    
+    Returns
+    -------
+    SpatialInertia
+        Mass [kg], centre of mass at the origin [m] and inertia_com [kg m^2] about it, expressed in the
+        shape's frame.
+    
+    Raises
+    ------
+    ValueError
+        `outer_radius` not finite and > 0, or `inner_radius` outside [0, outer_radius);
+        not exactly one of `mass` and `density`, or that one not finite and > 0 (the message names
+        the argument).
+    TypeError
+        An argument that is not a real number.
+    
+    See Also
+    --------
+    solid_sphere, spherical_shell, SpatialInertia.transformed
+    
+    Examples
+    --------
+    With no hole it is the solid sphere; with R = 2 m, r = 1 m, m = 1 kg, I = 2/5 31/7 kg m^2:
+    
+    >>> rd.hollow_sphere(1.0, 0.0, mass=1.0).is_approx(rd.solid_sphere(1.0, mass=1.0))
+    True
+    >>> rd.hollow_sphere(2.0, 1.0, mass=1.0).inertia_com.diagonal().round(12)
+    array([1.77142857, 1.77142857, 1.77142857])
     """
 def inertia_report(mass: typing.Any, inertia_com: typing.Any, scale: typing.Any = 0.0) -> InertiaReport:
     """
-    Validity report of mass [kg] and inertia_com (3,3) [kg m^2]: principal moments, triangle margins,
-    condition number. Tolerance = inertia_relative_tolerance * max(scale, trace) [kg m^2], where scale is
-    the size of the numbers the inertia was computed from (0: trace only).
+    Validity report of a mass and a rotational inertia about the centre of mass.
+    
+    Checks the mass (finite, > 0), the inertia (finite, symmetric to 1e-12 max |I_ij|, positive
+    semi-definite) and the triangle inequality I0 + I1 >= I2 on its ascending principal moments (from its
+    symmetric part), each within tolerance = inertia_relative_tolerance * max(scale, |trace|) [kg m^2].
+    Raises nothing on a bad inertia: the report says what fails.
+    
+    Parameters
+    ----------
+    mass : float
+        Mass [kg].
+    inertia_com : array_like, shape (3, 3)
+        Rotational inertia about the centre of mass [kg m^2], in any frame (moments on the diagonal,
+        negated products off it).
+    scale : float, default 0.0
+        Size [kg m^2] of the numbers the inertia was computed from, >= 0 (0: the trace only).
+    
+    Returns
+    -------
+    InertiaReport
+        Principal moments, triangle margins, condition number, tolerance and each check.
+    
+    Raises
+    ------
+    ValueError
+        `scale` negative or `inertia_com` not of shape (3, 3) (the message names it).
+    
+    See Also
+    --------
+    nearest_valid_inertia, SpatialInertia.report, InertiaCheck
+    
+    Examples
+    --------
+    Hairer-Lubich-Wanner's test inertia diag(2, 1, 2/3) is symmetric and positive definite, but no real
+    body has it (2/3 + 1 < 2):
+    
+    >>> r = rd.inertia_report(1.0, np.diag([2.0, 1.0, 2 / 3]))
+    >>> r.valid(), r.valid(rd.InertiaCheck.allow_unrealizable)
+    (False, True)
+    >>> r.triangle_margins.round(12)
+    array([ 2.33333333,  1.66666667, -0.33333333])
     """
 def integrate_density_over_box(rho: typing.Any, lower: typing.Any, upper: typing.Any, order: typing.Any = 6, subdivisions: typing.Any = 2) -> DensityIntegral:
     """
-    Mass properties of density rho over the box [lower, upper] (3,) [m] by Gauss-Legendre quadrature
-    (Rigid-body notes (4.55), (4.56), (4.70)) at `order` and 2*order points per cell axis, subdivisions^3 cells.
-    rho is called with points (n, 3) [m] and returns (n,) densities [kg/m^3] >= 0. Returns a
-    DensityIntegral (high-order result, differences to the low order as error estimate).
+    Mass properties of a variable density over a box, by Gauss-Legendre quadrature.
+    
+    m = int rho dV, c = int rho x dV / m, I_C = int rho (|r|^2 1 - r r^T) dV with r = x - c
+    ("Rigid body kinematics and dynamics" notes, eqs. (4.55), (4.56), (4.70)), each by the tensor
+    Gauss-Legendre rule of `order` and of 2 * order points per axis of each of subdivisions^3 cells; the
+    differences between the two are the error estimates.
+    
+    Parameters
+    ----------
+    rho : callable
+        ``rho(points)``: points, ndarray, shape (n, 3) [m] -> densities, shape (n,) [kg/m^3], finite and
+        >= 0. Called once per rule.
+    lower, upper : array_like, shape (3,)
+        Opposite corners [m] of the box, upper > lower componentwise, in any frame A.
+    order : int, default 6
+        Points per cell axis of the lower rule, in [1, 32].
+    subdivisions : int, default 2
+        Cells per box edge, in [1, 64].
+    
+    Returns
+    -------
+    DensityIntegral
+        The higher-order SpatialInertia (in A) and the mass, com and inertia error estimates.
+    
+    Raises
+    ------
+    ValueError
+        A bad box, order or subdivisions; rho returning the wrong number of values, a negative or
+        non-finite one, or a zero total mass (the message names it).
+    TypeError
+        `rho` not callable.
+    
+    See Also
+    --------
+    integrate_density_over_mesh, solid_box
+    
+    Examples
+    --------
+    Density 1 + x [kg/m^3] over the unit cube: m = 3/2 kg, c_x = (1/2 + 1/3) / m = 5/9 m:
+    
+    >>> d = rd.integrate_density_over_box(lambda p: 1.0 + p[:, 0], [0, 0, 0], [1, 1, 1])
+    >>> f"{d.inertia.mass:.12f}", f"{d.inertia.com[0]:.12f}", d.mass_error < 1e-12
+    ('1.500000000000', '0.555555555556', True)
     """
 def integrate_density_over_mesh(rho: typing.Any, vertices: typing.Any, faces: typing.Any, order: typing.Any = 4) -> DensityIntegral:
     """
-    Mass properties of density rho over the solid bounded by a closed mesh (signed tetrahedra, collapsed
-    Gauss-Legendre, order^3 and (2 order)^3 points per face). rho: points (n, 3) -> (n,) [kg/m^3], must
-    be defined on the mesh's convex hull. Returns a DensityIntegral.
+    Mass properties of a variable density over the solid bounded by a closed mesh.
+    
+    The solid is split into signed tetrahedra (one per face), each integrated by a
+    collapsed Gauss-Legendre rule of order^3 and of (2 order)^3 points; the differences between the two
+    rules are the error estimates. Integrals as integrate_density_over_box.
+    
+    Parameters
+    ----------
+    rho : callable
+        ``rho(points)``: points, ndarray, shape (n, 3) [m] -> densities, shape (n,) [kg/m^3], finite and
+        >= 0; must be defined on the mesh's convex hull.
+    vertices : array_like, shape (n, 3)
+        Vertex positions [m], in any frame A.
+    faces : array_like of int, shape (f, 3)
+        Closed, outward-oriented triangles (counter-clockwise seen from outside).
+    order : int, default 4
+        Points per axis of the lower rule, in [1, 32].
+    
+    Returns
+    -------
+    DensityIntegral
+        The higher-order SpatialInertia (in A) and the mass, com and inertia error estimates.
+    
+    Raises
+    ------
+    ValueError
+        An open, misoriented or inward mesh, a bad order, or rho values as in integrate_density_over_box
+        (the message names it).
+    TypeError
+        `rho` not callable, or `faces` not of an integer dtype.
+    
+    See Also
+    --------
+    integrate_density_over_box, solid_mesh
+    
+    Examples
+    --------
+    A uniform density gives the exact solid:
+    
+    >>> v = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]
+    >>> faces = [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]]
+    >>> d = rd.integrate_density_over_mesh(lambda p: np.full(len(p), 6.0), v, faces)
+    >>> d.inertia.is_approx(rd.solid_tetrahedron(v, density=6.0)), d.evaluations
+    (True, 2304)
     """
 def inverse_dynamics(body: typing.Any, state: typing.Any, a_W: typing.Any = None, alpha_B: typing.Any = None, gravity: typing.Any = None) -> typing.Any:
     """
-    The applied loads the motion requires, reduced to the centre of mass (undoes forward_dynamics).
-    body: a RigidBody, PlanarBody or Particle; state: its state (RigidBodyState, PlanarBodyState or ParticleState), finite (ValueError naming it otherwise, e.g. for a state a diverged step returned). 
-    gravity: None (the default: no gravity), True = (0, 0, -9.81) m/s^2, or a vector [m/s^2] in W.
-    RigidBody: a_W (3,) [m/s^2] in W, alpha_B (3,) [rad/s^2] in B; returns a ComWrench: f_W (3,) [N] in W and tau_B (3,) [N m] about the centre of mass in B (unpacks as f_W, tau_B), f_W = m (a_W - g), tau_B = I alpha_B + w_B x I w_B.
-    PlanarBody: a_W (2,), alpha_B [rad/s^2] about z, gravity (2,); returns a PlanarWrench: f_W (2,) [N] in W and tau [N m] about z (unpacks as f_W, tau).
-    Particle: a_W (3,) (alpha_B None); returns f_W (3,) [N] in W = m (a_W - g).
-    PivotedBody: alpha_B (3,) [rad/s^2] in B (a_W None: the pivot fixes it); returns a PivotedTorque: tau_O_B (3,) [N m] the torque about O in B the motion needs besides gravity, and reaction_W (3,) [N] in W (unpacks as tau_O_B, reaction_W). PivotedPlanarBody: alpha_B [rad/s^2] about z; returns a PivotedPlanarTorque (tau_O [N m], reaction_W).
+    The applied loads a motion requires, reduced to the centre of mass (undoes forward_dynamics).
+    
+    Per body kind:
+    
+    - RigidBody: f_W = m (a_W - g_W) in W, tau_B = I alpha_B + w_B x I w_B about the centre of mass in B.
+    - PlanarBody: f_W = m (a_W - g_W) in W's xy plane, tau = I_zz alpha about z.
+    - Particle: f_W = m (a_W - g_W).
+    - PivotedBody: the torque about O in B the motion needs besides gravity, tau_O_B = inertia_O alpha_B +
+      w_B x inertia_O w_B - p_OC_B x m g_B (g_B: gravity in B), and the pivot's reaction_W in W.
+    - PivotedPlanarBody: the torque tau_O about the z axis through O besides gravity, and reaction_W.
+    
+    Parameters
+    ----------
+    body : RigidBody, PlanarBody, Particle, PivotedBody or PivotedPlanarBody
+        The body.
+    state : RigidBodyState, PlanarBodyState, ParticleState, PivotedBodyState or PivotedPlanarBodyState
+        Its state, of the body's kind and finite.
+    a_W : array_like, shape (3,) or (2,), or pint.Quantity
+        Centre of mass acceleration in W [m/s^2]; shape (2,) for a PlanarBody. Required, except for the pivoted
+        bodies, which take None (the pivot fixes it).
+    alpha_B : array_like, shape (3,), float or pint.Quantity
+        Angular acceleration in B [rad/s^2]; a float about z for the planar bodies. A Particle takes None.
+    gravity : None, bool or array_like, default None
+        Uniform gravity g_W [m/s^2] in W, as forward_dynamics takes it.
+    
+    Returns
+    -------
+    ComWrench, PlanarWrench, ndarray, PivotedTorque or PivotedPlanarTorque
+        RigidBody: ComWrench (f_W, shape (3,) [N] in W; tau_B, shape (3,) [N m] in B). PlanarBody: PlanarWrench
+        (f_W, shape (2,); tau [N m] about z). Particle: f_W, ndarray of shape (3,) [N] in W. PivotedBody:
+        PivotedTorque. PivotedPlanarBody: PivotedPlanarTorque.
+    
+    Raises
+    ------
+    TypeError
+        body not one of the kinds listed, or state not of the body's kind (the message names it).
+    ValueError
+        A state that is not finite or whose quaternion is farther than 1e-6 from unit norm (the message names
+        state.<field>); an argument of another shape, or a quantity of another dimension (the message names it).
+    TypeError
+        a_W or alpha_B None where the body needs it (the message names it).
+    ValueError
+        alpha_B given for a Particle; a_W given for a pivoted body.
+    
+    Warns
+    -----
+    RuntimeWarning
+        The result is not finite (an overflow; the message names inverse_dynamics).
+    
+    See Also
+    --------
+    forward_dynamics, ComWrench, PivotedTorque
+    
+    Examples
+    --------
+    It undoes forward_dynamics, gyroscopic term included:
+    
+    >>> body = rd.RigidBody(2.0, [1.0, 2.0, 3.0])
+    >>> s = rd.RigidBodyState(w_B=[1.0, 1.0, 0.0])
+    >>> a = rd.forward_dynamics(body, s, force=[1.0, 0, 0], torque=[0, 0.5, 0], gravity=True)
+    >>> w = rd.inverse_dynamics(body, s, a_W=a.a_W, alpha_B=a.alpha_B, gravity=True)
+    >>> np.allclose(w.f_W, [1, 0, 0]), np.allclose(w.tau_B, [0, 0.5, 0])
+    (True, True)
+    
+    The torque about the pivot that holds a top of 1 kg horizontal, its centre of mass 0.5 m out along x:
+    
+    >>> top = rd.PivotedBody(rd.RigidBody(1.0, [0.1, 0.1, 0.2]), p_OC_B=[0.0, 0.0, 0.5])
+    >>> level = rd.PivotedBodyState(q_WB=rd.rotvec_to_quat([0.0, np.pi / 2, 0.0]))
+    >>> rd.inverse_dynamics(top, level, alpha_B=[0, 0, 0], gravity=True).tau_O_B.round(12)
+    array([ 0.   , -4.905,  0.   ])
     """
 def jacobi_ellipj(u: typing.Any, m: typing.Any, mc: typing.Any = None) -> typing.Any:
     """
-    Jacobi elliptic functions (sn, cn, dn)(u|m) for u a scalar (floats) or a 1-d array (three arrays of
-    shape (n,)), m in [0, 1]. mc: the complement 1 - m (default 1 - m); pass it near m = 1 for full
-    accuracy (unlike scipy.special.ellipj, accurate near m = 1 at any u).
+    Jacobi elliptic functions sn(u|m), cn(u|m), dn(u|m).
+    
+    sn u = sin(am u), cn u = cos(am u), dn u = sqrt(1 - m sn^2 u), where am is the inverse of
+    u = int_0^am dt / sqrt(1 - m sin^2 t), for the parameter m = k^2 (as scipy.special.ellipj takes it).
+    Absolute error a few ulps for |u| up to K(m), growing as eps |u| beyond; m = 1 gives (tanh u, sech u,
+    sech u). Unlike scipy.special.ellipj, accurate near m = 1 at any u when mc is given.
+    
+    Parameters
+    ----------
+    u : float or array_like, shape (n,)
+        Argument, finite.
+    m : float
+        Parameter m = k^2, 0 <= m <= 1.
+    mc : float, optional
+        Its complement 1 - m, equal to 1 - m to within 4 eps (default: computed as 1 - m); pass it
+        near m = 1 for full accuracy.
+    
+    Returns
+    -------
+    sn, cn, dn : float or ndarray, shape (n,)
+        Three floats for a scalar u, three arrays of u's length for an array.
+    
+    Raises
+    ------
+    ValueError
+        u non-finite or not a scalar or 1-d array, m or mc outside [0, 1], or mc not 1 - m (the
+        message names it).
+    
+    See Also
+    --------
+    ellipk, ellippi_am
+    scipy.special.ellipj : The same functions of (u, m), with am u as a fourth result.
+    
+    Examples
+    --------
+    sn K = 1 and cn K = 0 at the quarter period K(m); sn^2 + cn^2 = 1 and dn^2 + m sn^2 = 1:
+    
+    >>> sn, cn, dn = rd.jacobi_ellipj(rd.ellipk(0.5), 0.5)
+    >>> print(f"{sn:.12f} {abs(cn):.12f} {dn:.12f}")
+    1.000000000000 0.000000000000 0.707106781187
+    >>> sn, cn, dn = rd.jacobi_ellipj(np.linspace(0.0, 5.0, 6), 0.7)
+    >>> bool(np.allclose(sn**2 + cn**2, 1.0) and np.allclose(dn**2 + 0.7 * sn**2, 1.0))
+    True
     """
 def kinetic_energy(body: typing.Any, state: typing.Any) -> typing.Any:
     """
-    Kinetic energy as a KineticEnergy [J]: translational = 1/2 m v_W.v_W, rotational = 1/2 w_B.I w_B about the centre of mass (1/2 I_zz omega^2 for a PlanarBody, 0 for a Particle), total = their sum. body: a RigidBody, PlanarBody or Particle; state: its state (RigidBodyState, PlanarBodyState or ParticleState), finite (ValueError naming it otherwise, e.g. for a state a diverged step returned). 
+    Kinetic energy [J], split into its translational and rotational parts.
+    
+    translational = 1/2 m v_W.v_W, rotational = 1/2 w_B.I w_B about the centre of mass (1/2 I_zz omega^2 for a
+    PlanarBody, 0 for a Particle), total = their sum.
+    
+    Parameters
+    ----------
+    body : RigidBody, PlanarBody or Particle
+        The body.
+    state : RigidBodyState, PlanarBodyState or ParticleState
+        Its state, of the body's kind and finite (a state a diverged step returned is refused).
+    
+    Returns
+    -------
+    KineticEnergy
+        translational, rotational and total [J].
+    
+    Raises
+    ------
+    TypeError
+        body not one of the kinds listed, or state not of the body's kind (the message names it).
+    ValueError
+        A state that is not finite or whose quaternion is farther than 1e-6 from unit norm (the message names
+        state.<field>); an argument of another shape, or a quantity of another dimension (the message names it).
+    
+    Warns
+    -----
+    RuntimeWarning
+        A part is not finite (an overflow; the message names kinetic_energy).
+    
+    See Also
+    --------
+    KineticEnergy, potential_energy, simulate
+    
+    Examples
+    --------
+    A torque-free body keeps its kinetic energy:
+    
+    >>> body = rd.RigidBody(2.0, [1.0, 2.0, 3.0])
+    >>> s0 = rd.RigidBodyState(v_W=[1, 0, 0], w_B=[1.0, 0.1, 0.2])
+    >>> s1 = rd.step(body, s0, 0.001, method="rkmk4")
+    >>> rd.kinetic_energy(body, s0).total, f"{rd.kinetic_energy(body, s1).total:.12f}"
+    (1.57, '1.570000000000')
     """
 def linear_momentum(body: typing.Any, state: typing.Any) -> typing.Any:
     """
-    Linear momentum m v_W [kg m/s] in W: (3,), or (2,) for a PlanarBody. body: a RigidBody, PlanarBody or Particle; state: its state (RigidBodyState, PlanarBodyState or ParticleState), finite (ValueError naming it otherwise, e.g. for a state a diverged step returned). 
+    Linear momentum m v_W [kg m/s] of the centre of mass, in W.
+    
+    Parameters
+    ----------
+    body : RigidBody, PlanarBody or Particle
+        The body.
+    state : RigidBodyState, PlanarBodyState or ParticleState
+        Its state, of the body's kind and finite (a state a diverged step returned is refused).
+    
+    Returns
+    -------
+    ndarray, shape (3,) or (2,)
+        m v_W [kg m/s] in W; shape (2,) for a PlanarBody.
+    
+    Raises
+    ------
+    TypeError
+        body not one of the kinds listed, or state not of the body's kind (the message names it).
+    ValueError
+        A state that is not finite or whose quaternion is farther than 1e-6 from unit norm (the message names
+        state.<field>); an argument of another shape, or a quantity of another dimension (the message names it).
+    
+    See Also
+    --------
+    angular_momentum, kinetic_energy, apply_impulse
+    
+    Examples
+    --------
+    >>> rd.linear_momentum(rd.Particle(3.0), rd.ParticleState(v_W=[0.0, 2.0, 0.0]))
+    array([0., 6., 0.])
     """
 def matrix_to_euler(seq: typing.Any, R: typing.Any, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
-    Euler angles [rad] of rotation matrices (ranges as quat_to_euler; degrees if degrees=True).
+    Euler angles of rotation matrices.
     
-    seq: 3 letters as SciPy, lowercase 'xyz' = extrinsic (fixed axes), uppercase 'XYZ' = intrinsic
-    (moving axes); the 12 sequences xyz xzy yxz yzx zxy zyx xyx xzx yxy yzy zxz zyz in either case.
-    R: (3, 3) or (n, 3, 3), a rotation matrix up to rounding (det > 0, singular values within 0.05 of 1;
-    projected onto the nearest rotation as SciPy's Rotation.from_matrix).
-    Returns (3,) or (n, 3).
-    Gimbal lock: a UserWarning 'Gimbal lock detected. ...' (once per call) wherever SciPy warns: the
-    middle angle of some item within 1e-7 rad of its singularity (Euler angles: 0 or pi in proper
-    sequences, -pi/2 or pi/2 in Tait-Bryan ones; Davenport angles: the ends of its range). Within
-    round-off of it (1e-13 rad) only the sum or difference of the first and third angles is defined:
-    the third is set to 0 and the first carries it, with SciPy's message. Between 1e-13 and 1e-7 rad
-    the angles are the exact ones and the message says so (SciPy sets the third to 0 there too, which
-    moves the rotation by up to 2e-7 rad): the angles reproduce the rotation to round-off everywhere.
+    Ranges and method as `quat_to_euler`. SciPy: ``Rotation.from_matrix(R).as_euler(seq)``.
+    
+    Parameters
+    ----------
+    seq : str
+        The axis sequence, 3 letters as SciPy's: lowercase 'xyz' = extrinsic (rotations about the
+        fixed axes of W), uppercase 'XYZ' = intrinsic (about the moving axes); the 12 sequences xyz xzy
+        yxz yzx zxy zyx xyx xzx yxy yzy zxz zyz in either case.
+    R : array_like, shape (3, 3) or (n, 3, 3)
+        Rotation matrices up to rounding: det > 0 and singular values within 0.05 of 1. One not
+        orthonormal to SciPy's test is projected onto the nearest rotation (`nearest_rotation`), as
+        SciPy's `Rotation.from_matrix` does.
+    degrees : bool, default False, keyword-only
+        Angles in degrees instead of radians (converted as SciPy does: x * (pi/180) in,
+        x * (180/pi) out).
+    
+    Returns
+    -------
+    ndarray, shape (3,) or (n, 3)
+        Angles [rad] (degrees if `degrees`) in the order of `seq`: first and third in [-pi, pi], second
+        in [0, pi] (proper Euler sequences) or [-pi/2, pi/2] (Tait-Bryan).
+    
+    Raises
+    ------
+    ValueError
+        `seq` not one of the 24 sequences.
+    TypeError
+        `seq` not a str.
+    ValueError
+        A matrix with det <= 0 (a reflection or a singular matrix), a singular value farther than 0.05
+        from 1 or a non-finite entry (the message names `R` and, in a stack, the item), or a shape other
+        than (3, 3) or (n, 3, 3).
+    
+    Warns
+    -----
+    UserWarning
+        'Gimbal lock detected. ...' (once per call) wherever SciPy warns: the middle angle of some item
+        within 1e-7 rad of its singularity (Euler angles: 0 or pi in proper sequences, -pi/2 or pi/2
+        in Tait-Bryan ones; Davenport angles: the ends of its range). Within round-off of it (1e-13 rad)
+        only the sum or difference of the first and third angles is defined: the third is set to 0 and
+        the first carries it, with SciPy's message. Between 1e-13 and 1e-7 rad the angles are the exact ones
+        and the message says so (SciPy sets the third to 0 there too, which moves the rotation by up to
+        2e-7 rad): the angles reproduce the rotation to round-off everywhere.
+    
+    See Also
+    --------
+    euler_to_matrix, quat_to_euler
+    
+    Examples
+    --------
+    >>> R = rd.euler_to_matrix("ZXZ", [0.4, 1.0, -0.7])
+    >>> rd.matrix_to_euler("ZXZ", R).round(12)
+    array([ 0.4,  1. , -0.7])
     """
 def matrix_to_quat(R: typing.Any, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
-    Unit quaternion of rotation matrices, canonical sign w >= 0 (Shepperd's method, accurate at all angles).
+    Unit quaternion of rotation matrices, canonical sign w >= 0.
     
-    R: (3, 3) or (n, 3, 3), a rotation matrix up to rounding (det > 0, singular values within 0.05 of 1;
-    projected onto the nearest rotation as SciPy's Rotation.from_matrix).
-    Returns q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first.
+    Shepperd's method in Markley's form (Markley 2008, "Unit quaternion from rotation matrix") with
+    SciPy's choice of branch (the largest of R_00, R_11, R_22 and tr R): accurate at every angle,
+    including pi. SciPy: ``Rotation.from_matrix(R).as_quat(canonical=True)``.
+    
+    Parameters
+    ----------
+    R : array_like, shape (3, 3) or (n, 3, 3)
+        Rotation matrices up to rounding: det > 0 and singular values within 0.05 of 1. One not
+        orthonormal to SciPy's test is projected onto the nearest rotation (`nearest_rotation`), as
+        SciPy's `Rotation.from_matrix` does.
+    scalar_first : bool, default False
+        Read and write quaternions scalar first, (w, x, y, z), as MuJoCo does.
+    
+    Returns
+    -------
+    ndarray, shape (4,) or (n, 4)
+        q with R(q) = R and w >= 0, (x, y, z, w) or (w, x, y, z) if `scalar_first`.
+    
+    Raises
+    ------
+    ValueError
+        A matrix with det <= 0 (a reflection or a singular matrix), a singular value farther than 0.05
+        from 1 or a non-finite entry (the message names `R` and, in a stack, the item), or a shape other
+        than (3, 3) or (n, 3, 3).
+    
+    See Also
+    --------
+    quat_to_matrix, nearest_rotation, quat_canonical
+    
+    Examples
+    --------
+    A half turn about x:
+    
+    >>> rd.matrix_to_quat(np.diag([1.0, -1.0, -1.0]))
+    array([1., 0., 0., 0.])
+    >>> rd.matrix_to_quat(np.eye(3), scalar_first=True)
+    array([1., 0., 0., 0.])
     """
 def matrix_to_rotvec(R: typing.Any, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
-    Logarithm map of rotation matrices: rotation vector angle * axis [rad], angle in [0, pi].
+    Logarithm map of rotation matrices: rotation vectors angle * axis.
     
-    R: (3, 3) or (n, 3, 3), a rotation matrix up to rounding (det > 0, singular values within 0.05 of 1;
-    projected onto the nearest rotation as SciPy's Rotation.from_matrix).
-    Returns (3,) or (n, 3), in degrees if degrees=True.
-    Accurate near 0 and pi.
+    The angle is in [0, pi]; accurate near 0 and near pi. SciPy:
+    ``Rotation.from_matrix(R).as_rotvec()``.
+    
+    Parameters
+    ----------
+    R : array_like, shape (3, 3) or (n, 3, 3)
+        Rotation matrices up to rounding: det > 0 and singular values within 0.05 of 1. One not
+        orthonormal to SciPy's test is projected onto the nearest rotation (`nearest_rotation`), as
+        SciPy's `Rotation.from_matrix` does.
+    degrees : bool, default False, keyword-only
+        Angles in degrees instead of radians (converted as SciPy does: x * (pi/180) in,
+        x * (180/pi) out).
+    
+    Returns
+    -------
+    ndarray, shape (3,) or (n, 3)
+        Rotation vectors [rad] (degrees if `degrees`).
+    
+    Raises
+    ------
+    ValueError
+        A matrix with det <= 0 (a reflection or a singular matrix), a singular value farther than 0.05
+        from 1 or a non-finite entry (the message names `R` and, in a stack, the item), or a shape other
+        than (3, 3) or (n, 3, 3).
+    
+    See Also
+    --------
+    rotvec_to_matrix, quat_to_rotvec
+    
+    Examples
+    --------
+    >>> rd.matrix_to_rotvec(rd.rot_y(0.5)).round(12)
+    array([0. , 0.5, 0. ])
+    >>> rd.matrix_to_rotvec(np.diag([-1.0, 1.0, -1.0]), degrees=True).round(9)
+    array([  0., 180.,   0.])
     """
 def mesh_shell(vertices: typing.Any, faces: typing.Any, *, mass: typing.Any = None, density: typing.Any = None, weld_tolerance: typing.Any = None) -> SpatialInertia:
     """
@@ -3744,370 +7737,1937 @@ def mesh_shell(vertices: typing.Any, faces: typing.Any, *, mass: typing.Any = No
     """
 def mesh_symmetry_planes(vertices: typing.Any, faces: typing.Any, tolerance: typing.Any = 1e-09, *, weld_tolerance: typing.Any = None) -> list:
     """
-    Planes of symmetry of the uniform solid bounded by a closed, outward-oriented mesh: vertices (n, 3)
-    [m], faces (f, 3), welded as in solid_mesh (weld_tolerance). The planes of the solid, whatever its
-    triangulation: a plane qualifies when its reflection maps the solid's oriented boundary onto itself
-    (each reflected face covered by faces in the same plane and facing the same way, up to a strip of
-    width tolerance * L along its edges, L = largest distance from the centre of mass to a vertex [m];
-    normals within tolerance). A faceted cylinder or capsule of s sections has the s planes through its
-    axis and the plane normal to it, not the smooth solid's continuum. Returns a list of (normal (3,)
-    unit, largest-magnitude component positive; point (3,) [m] = the solid's centre of mass) in the frame
-    of the vertices; candidates as in symmetry_planes. ValueError naming the argument on a bad mesh.
+    Planes of symmetry of the uniform solid bounded by a closed, outward-oriented mesh.
+    
+    The planes of the solid, whatever its triangulation: a plane qualifies when its reflection maps the
+    solid's oriented boundary onto itself (each reflected face covered by faces in the same plane and facing
+    the same way, up to a strip of width tolerance * L along its edges, L the largest distance from the
+    centre of mass to a vertex [m]; normals within tolerance). A faceted cylinder or capsule of s sections
+    has the s planes through its axis and the plane normal to it, not the smooth solid's continuum.
+    Candidates as in symmetry_planes. The mesh is welded first as in solid_mesh.
+    
+    Parameters
+    ----------
+    vertices : array_like, shape (n, 3)
+        Vertex positions [m], in any frame A.
+    faces : array_like of int, shape (f, 3)
+        Vertex indices of each triangle, counter-clockwise seen from outside.
+    tolerance : float, default 1e-9
+        Relative tolerance, >= 0.
+    weld_tolerance : float or None, default None
+        Weld distance [m] (None: 1e-8 x the bounding-box diagonal; 0: off).
+    
+    Returns
+    -------
+    list of tuple (ndarray, ndarray)
+        One (normal, point) per plane, in A: normal, shape (3,), unit, its largest-magnitude component
+        positive; point, shape (3,) [m], the solid's centre of mass.
+    
+    Raises
+    ------
+    ValueError
+        A bad mesh or tolerance (the message names the argument).
+    
+    See Also
+    --------
+    symmetry_planes, solid_mesh
+    
+    Examples
+    --------
+    The corner tetrahedron is symmetric in the three planes x = y, y = z and x = z:
+    
+    >>> v = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]
+    >>> faces = [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]]
+    >>> len(rd.mesh_symmetry_planes(v, faces))
+    3
     """
 def mesh_volume(vertices: typing.Any, faces: typing.Any) -> float:
     """
-    Signed volume [m^3] of the mesh vertices (n, 3) [m], faces (f, 3).
+    Signed volume enclosed by a triangle mesh.
+    
+    V = 1/6 sum_f v0 . (v1 x v2) over the faces (divergence theorem): positive for outward-oriented faces
+    (counter-clockwise seen from outside), negative for inward ones. Meaningful for a closed mesh.
+    
+    Parameters
+    ----------
+    vertices : array_like, shape (n, 3)
+        Vertex positions [m].
+    faces : array_like of int, shape (f, 3)
+        Vertex indices of each triangle.
+    
+    Returns
+    -------
+    float
+        Signed volume [m^3].
+    
+    Raises
+    ------
+    ValueError
+        A shape that does not match or an index outside [0, n) (the message names it).
+    TypeError
+        `faces` not of an integer dtype.
+    
+    See Also
+    --------
+    solid_mesh, require_closed_oriented_mesh
+    
+    Examples
+    --------
+    The corner tetrahedron has volume 1/6 m^3; turning its faces inside out flips the sign:
+    
+    >>> v = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]
+    >>> faces = [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]]
+    >>> f"{rd.mesh_volume(v, faces):.12f}"
+    '0.166666666667'
+    >>> f"{rd.mesh_volume(v, [f[::-1] for f in faces]):.12f}"
+    '-0.166666666667'
     """
 def methods() -> list:
     """
-    The fixed-step methods: a list of dicts with name, order (global), evaluations (derivative evaluations per step), conserves (what is kept exactly on a free rigid body), notes, stability_limit (largest dt*|w| [rad], |w| the largest body rate on the torque-free orbit, at which the method is documented stable on a free spin: inf if unconditionally, 0 if never), exact_torque_free (True if torque-free motion is reproduced to round-off at any dt: no observed order applies) and scene_features (what of a Scene the method runs: bodies, elements, and its compatibility notes).
+    The fixed-step methods simulate, step and simulate_batch take, with their properties.
+    
+    Parameters
+    ----------
+    None
+    
+    Returns
+    -------
+    list of dict
+        One dict per method, with the keys: name (str, the `method` argument); order (int, global order);
+        evaluations (int, derivative evaluations per step); conserves (str, what is kept exactly on a free rigid
+        body); notes (str); stability_limit (float, the largest dt*|w| [rad], |w| the largest body rate on the
+        torque-free orbit, at which the method is documented stable on a free spin: inf if unconditionally, 0 if
+        never); exact_torque_free (bool, True if torque-free motion is reproduced to round-off at any dt: no
+        observed order applies); scene_features (str, what of a Scene the method runs: bodies, elements, and its
+        compatibility notes).
+    
+    See Also
+    --------
+    simulate, step
+    
+    Examples
+    --------
+    >>> [m["name"] for m in rd.methods()]  # doctest: +NORMALIZE_WHITESPACE
+    ['explicit_euler', 'semi_implicit_euler', 'semi_implicit_euler_implicit_gyroscopic', 'rk4', 'rkmk4',
+     'implicit_midpoint', 'splitting_dlm', 'splitting_dlm_yoshida4', 'exact_flow_kick', 'exact']
+    >>> rk4 = next(m for m in rd.methods() if m["name"] == "rk4")
+    >>> rk4["order"], rk4["evaluations"], f"{rk4['stability_limit']:.6f}"  # 2 sqrt(2)
+    (4, 4, '2.828427')
     """
 def motion_cross_matrix(motion: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
     """
-    crm(V) (6,6) = [[hat(w), 0], [hat(v), hat(w)]] of the motion V = [w; v], so crm(V) V2 = V x V2.
+    Motion cross-product matrix crm(V) (Featherstone, "Rigid Body Dynamics Algorithms").
+    
+    crm(V) = [[hat(w), 0], [hat(v), hat(w)]] for V = [w; v] (angular first), so that crm(V) V2 = V x V2
+    (Motion.cross).
+    
+    Parameters
+    ----------
+    motion : Motion
+        V = [w; v] ([rad/s], [m/s]).
+    
+    Returns
+    -------
+    ndarray, shape (6, 6)
+        crm(V), in V's frame (hat(w) blocks [rad/s], hat(v) block [m/s]).
+    
+    Raises
+    ------
+    TypeError
+        motion not a Motion.
+    
+    See Also
+    --------
+    force_cross_matrix, Motion.cross
+    
+    Examples
+    --------
+    >>> V, V2 = rd.Motion([0.0, 0.0, 1.0], [1.0, 0.0, 0.0]), rd.Motion([1.0, 2.0, 3.0], [4.0, 5.0, 6.0])
+    >>> bool(np.allclose(rd.motion_cross_matrix(V) @ V2.to_vector(), V.cross(V2).to_vector()))
+    True
+    >>> bool(np.allclose(rd.motion_cross_matrix(V) @ V.to_vector(), 0.0))  # V x V = 0
+    True
     """
 def mrp_to_quat(mrp: typing.Any, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
-    Unit quaternion ((2 p, 1 - |p|^2) / (1 + |p|^2)) of modified Rodrigues parameters p (either shadow
-    set: p and -p/|p|^2 are the same rotation; w < 0 when |p| > 1), as SciPy's Rotation.from_mrp.
+    Unit quaternion of modified Rodrigues parameters.
     
-    mrp: (3,) or (n, 3), any finite values. Returns q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if
-    scalar_first.
+    q = (2 p, 1 - |p|^2) / (1 + |p|^2): either shadow set is accepted (p and -p/|p|^2 are the same
+    rotation; w < 0 when |p| > 1). SciPy: ``Rotation.from_mrp(p).as_quat()``.
+    
+    Parameters
+    ----------
+    mrp : array_like, shape (3,) or (n, 3)
+        Modified Rodrigues parameters p, any finite values (dimensionless).
+    scalar_first : bool, default False
+        Read and write quaternions scalar first, (w, x, y, z), as MuJoCo does.
+    
+    Returns
+    -------
+    ndarray, shape (4,) or (n, 4)
+        q, (x, y, z, w) or (w, x, y, z) if `scalar_first`.
+    
+    Raises
+    ------
+    ValueError
+        A non-finite entry or a wrong shape (the message names `mrp`).
+    
+    See Also
+    --------
+    quat_to_mrp
+    
+    Examples
+    --------
+    A shadow set gives the same rotation:
+    
+    >>> p = np.array([0.2, -0.4, 0.1])
+    >>> rd.angular_distance(rd.mrp_to_quat(p), rd.mrp_to_quat(-p / (p @ p))) < 1e-12
+    True
     """
 def nearest_rotation(M: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
     """
-    The rotation matrix nearest to M in the Frobenius norm (orthogonal Procrustes problem).
+    The rotation matrix nearest to a matrix in the Frobenius norm (orthogonal Procrustes problem).
     
-    M: (3, 3) or (n, 3, 3), any finite matrices. With the SVD M = U S V^T, returns
-    R = U diag(1, 1, det(U V^T)) V^T: (3, 3) or (n, 3, 3), orthonormal with det +1 to round-off.
-    For det M > 0 this is the orthogonal polar factor of M (Higham 1986), the matrix SciPy's
-    Rotation.from_matrix stores for a non-orthonormal M; for det M < 0 the smallest singular
-    direction is flipped (Kabsch). Unique when M has rank >= 2 (and, for det M < 0, distinct two
-    smallest singular values). Idempotent: a rotation matrix is returned unchanged to round-off.
+    With the SVD M = U S V^T, R = U diag(1, 1, det(U V^T)) V^T. For det M > 0 this is the orthogonal
+    polar factor of M (Higham 1986, "Computing the polar decomposition"), the matrix SciPy's
+    ``Rotation.from_matrix(M).as_matrix()`` gives for a non-orthonormal M; for det M < 0 the smallest
+    singular direction is flipped (Kabsch). Unique when M has rank >= 2 (and, for det M < 0, distinct
+    two smallest singular values). Idempotent: a rotation matrix is returned unchanged to round-off.
+    
+    Parameters
+    ----------
+    M : array_like, shape (3, 3) or (n, 3, 3)
+        Any finite matrices.
+    
+    Returns
+    -------
+    ndarray, shape (3, 3) or (n, 3, 3)
+        R, orthonormal with det +1 to round-off.
+    
+    Raises
+    ------
+    ValueError
+        A non-finite entry or a wrong shape (the message names `M`).
+    
+    See Also
+    --------
+    matrix_to_quat
+    
+    Examples
+    --------
+    A rotation matrix with rounding noise is cleaned up:
+    
+    >>> M = rd.rot_z(0.3) + 1e-4 * np.array([[1.0, 2.0, 0.0], [0.0, -1.0, 3.0], [2.0, 0.0, 1.0]])
+    >>> R = rd.nearest_rotation(M)
+    >>> np.allclose(R @ R.T, np.eye(3)), f"{np.linalg.det(R):.12f}"
+    (True, '1.000000000000')
+    >>> rd.nearest_rotation(np.diag([2.0, 3.0, 4.0])).round(12) + 0.0
+    array([[1., 0., 0.],
+           [0., 1., 0.],
+           [0., 0., 1.]])
     """
 def nearest_valid_inertia(inertia: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
     """
-    Explicit repair: the nearest (Frobenius) matrix (3,3) satisfying the triangle inequality, same
-    principal axes; a valid inertia is returned unchanged. Never applied implicitly.
+    Nearest rotational inertia that satisfies the triangle inequality (an explicit repair).
+    
+    The symmetric part's principal moments are projected onto the cone I_i + I_j >= I_k (nearest in the
+    Frobenius norm), keeping its principal axes. A valid inertia is returned unchanged (symmetrised). Never
+    applied implicitly.
+    
+    Parameters
+    ----------
+    inertia : array_like, shape (3, 3)
+        Rotational inertia [kg m^2] about a point, in any frame.
+    
+    Returns
+    -------
+    ndarray, shape (3, 3)
+        The repaired inertia [kg m^2], about the same point and in the same frame.
+    
+    Raises
+    ------
+    ValueError
+        `inertia` not of shape (3, 3) or not finite.
+    
+    See Also
+    --------
+    inertia_report, InertiaCheck
+    
+    Examples
+    --------
+    >>> J = rd.nearest_valid_inertia(np.diag([2.0, 1.0, 2 / 3]))
+    >>> J.diagonal().round(12)
+    array([1.88888889, 1.11111111, 0.77777778])
+    >>> rd.inertia_report(1.0, J).valid()
+    True
     """
 def point_acceleration(K_AF: typing.Any, p_FQ_F: typing.Any, v_FQ_F: typing.Any, a_FQ_F: typing.Any) -> PointAcceleration:
     """
-    Acceleration terms of Q seen from A, expressed in A; a_FQ_F (3,) [m/s^2]: Q's acceleration seen
-    from F, expressed in F; the rest as point_velocity.
+    Acceleration of a point Q moving in frame F, seen from frame A, term by term.
+    
+    a_AQ = a_AF + alpha_AF x r_FQ + w_AF x (w_AF x r_FQ) + a_FQ + 2 w_AF x v_FQ ("Rigid body kinematics and
+    dynamics" notes (4.39)), every term expressed in A.
+    
+    Parameters
+    ----------
+    K_AF : FrameKinematics
+        F relative to A, expressed in A.
+    p_FQ_F : array_like, shape (3,)
+        Q's position relative to F's origin [m], expressed in F.
+    v_FQ_F : array_like, shape (3,)
+        Q's velocity seen from F [m/s], expressed in F.
+    a_FQ_F : array_like, shape (3,)
+        Q's acceleration seen from F [m/s^2], expressed in F.
+    
+    Returns
+    -------
+    PointAcceleration
+        origin, tangential, centripetal, relative, coriolis and total [m/s^2], expressed in A.
+    
+    Raises
+    ------
+    TypeError
+        K_AF not a FrameKinematics.
+    ValueError
+        A vector of another shape or non-finite (naming it).
+    
+    See Also
+    --------
+    point_velocity, FrameTree.point_acceleration
+    
+    Examples
+    --------
+    In a frame spinning at 2 rad/s about z: the centripetal term of a point 1 m out, and the Coriolis term of
+    a point at the origin moving at 1 m/s along x:
+    
+    >>> K_AF = rd.FrameKinematics(w_PF_P=[0.0, 0.0, 2.0])
+    >>> rd.point_acceleration(K_AF, [1.0, 0, 0], [0, 0, 0], [0, 0, 0]).centripetal
+    array([-4.,  0.,  0.])
+    >>> rd.point_acceleration(K_AF, [0, 0, 0], [1.0, 0, 0], [0, 0, 0]).coriolis
+    array([0., 4., 0.])
     """
 def point_inertia(mass: typing.Any, r: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
     """
-    m (|r|^2 1 - r r^T) (3,3) [kg m^2]: a point mass [kg] > 0 at r (3,) [m] about the origin.
+    Rotational inertia of a point mass about the origin.
+    
+    I_O = m (|r|^2 1 - r r^T), the parallel-axis term of the theorem (Craig).
+    
+    Parameters
+    ----------
+    mass : float
+        Mass m [kg], finite and > 0.
+    r : array_like, shape (3,)
+        Position [m] of the mass relative to the origin, in any frame A.
+    
+    Returns
+    -------
+    ndarray, shape (3, 3)
+        Inertia about the origin [kg m^2], expressed in A (moments on the diagonal, negated products
+        off it).
+    
+    Raises
+    ------
+    ValueError
+        `mass` not finite and > 0, or `r` not finite (the message names it).
+    
+    See Also
+    --------
+    from_point_masses, SpatialInertia.inertia_about_point
+    
+    Examples
+    --------
+    2 kg at 3 m on the z axis: m d^2 = 18 kg m^2 about x and y, nothing about z:
+    
+    >>> rd.point_inertia(2.0, [0.0, 0.0, 3.0])
+    array([[18.,  0.,  0.],
+           [ 0., 18.,  0.],
+           [ 0.,  0.,  0.]])
     """
 def point_velocity(K_AF: typing.Any, p_FQ_F: typing.Any, v_FQ_F: typing.Any) -> PointVelocity:
     """
-    Velocity terms of Q seen from A, expressed in A. K_AF: F relative to A; p_FQ_F (3,) [m] and v_FQ_F
-    (3,) [m/s]: Q's position relative to F's origin and its velocity seen from F, expressed in F.
+    Velocity of a point Q moving in frame F, seen from frame A, term by term.
+    
+    v_AQ = v_AF + w_AF x r_FQ + v_FQ ("Rigid body kinematics and dynamics" notes (4.38)), every term
+    expressed in A.
+    
+    Parameters
+    ----------
+    K_AF : FrameKinematics
+        F relative to A, expressed in A.
+    p_FQ_F : array_like, shape (3,)
+        Q's position relative to F's origin [m], expressed in F.
+    v_FQ_F : array_like, shape (3,)
+        Q's velocity seen from F [m/s], expressed in F (zero for a point fixed in F).
+    
+    Returns
+    -------
+    PointVelocity
+        origin, rotational, relative and total [m/s], expressed in A.
+    
+    Raises
+    ------
+    TypeError
+        K_AF not a FrameKinematics.
+    ValueError
+        A vector of another shape or non-finite (naming it).
+    
+    See Also
+    --------
+    point_acceleration, FrameTree.point_velocity
+    
+    Examples
+    --------
+    A point 1 m from the axis of a frame spinning at 2 rad/s moves at 2 m/s:
+    
+    >>> K_AF = rd.FrameKinematics(w_PF_P=[0.0, 0.0, 2.0])
+    >>> rd.point_velocity(K_AF, [1.0, 0.0, 0.0], [0.0, 0.0, 0.0]).total
+    array([0., 2., 0.])
     """
 def potential_energy(body: typing.Any, state: typing.Any, gravity: typing.Any = None) -> typing.Any:
     """
-    Potential energy of uniform gravity, V = -m g.p_W [J] (zero at the origin of W). gravity: None (the default, as in simulate: no field, so V = 0 J), True = (0, 0, -9.81) m/s^2, or a vector (3,) [m/s^2] in W; for a PlanarBody None or an in-plane (2,) [m/s^2]. body: a RigidBody, PlanarBody or Particle; state: its state (RigidBodyState, PlanarBodyState or ParticleState), finite (ValueError naming it otherwise, e.g. for a state a diverged step returned). 
+    Potential energy of uniform gravity, V = -m g_W.p_W [J] (zero at the origin of W).
+    
+    Parameters
+    ----------
+    body : RigidBody, PlanarBody or Particle
+        The body.
+    state : RigidBodyState, PlanarBodyState or ParticleState
+        Its state, of the body's kind and finite (a state a diverged step returned is refused).
+    gravity : None, bool or array_like, default None
+        g_W [m/s^2] in W: None (the default, as in simulate: no field, so V = 0 J), True (0, 0, -9.81) or a
+        vector, shape (3,); for a PlanarBody None or an in-plane vector, shape (2,).
+    
+    Returns
+    -------
+    float
+        V [J].
+    
+    Raises
+    ------
+    TypeError
+        body not one of the kinds listed, or state not of the body's kind (the message names it).
+    ValueError
+        A state that is not finite or whose quaternion is farther than 1e-6 from unit norm (the message names
+        state.<field>); an argument of another shape, or a quantity of another dimension (the message names it).
+    
+    See Also
+    --------
+    kinetic_energy, simulate
+    
+    Examples
+    --------
+    >>> V = rd.potential_energy(rd.Particle(2.0), rd.ParticleState(p_W=[0, 0, 10.0]), gravity=True)
+    >>> print(f"{V:.6f}")  # m g h
+    196.200000
     """
 def power(state: typing.Any, f_W: typing.Any, tau_B: typing.Any = None) -> typing.Any:
     """
-    Power [W] of a force f_W [N] in W at the centre of mass and a torque tau_B about it (None: none): f_W.v_W + tau_B.w_B. RigidBodyState: f_W (3,), tau_B (3,) [N m] in B; PlanarBodyState: f_W (2,), tau_B [N m] about z; ParticleState: f_W (3,) only.
+    Power [W] of a force at the centre of mass and a torque about it: f_W.v_W + tau_B.w_B.
+    
+    Parameters
+    ----------
+    state : RigidBodyState, PlanarBodyState or ParticleState
+        The state, finite.
+    f_W : array_like, shape (3,) or (2,), or pint.Quantity
+        Force at the centre of mass, in W [N]; shape (2,) for a PlanarBodyState.
+    tau_B : array_like, shape (3,), float or pint.Quantity, optional
+        Torque about the centre of mass [N m] (None: none): in B, shape (3,), for a RigidBodyState; a float about
+        z for a PlanarBodyState; None for a ParticleState.
+    
+    Returns
+    -------
+    float
+        The power [W].
+    
+    Raises
+    ------
+    TypeError
+        state not one of the kinds listed (the message names it).
+    ValueError
+        A state that is not finite, an argument of another shape or dimension, or tau_B for a ParticleState.
+    
+    See Also
+    --------
+    inverse_dynamics, kinetic_energy
+    
+    Examples
+    --------
+    >>> rd.power(rd.RigidBodyState(v_W=[1, 0, 0], w_B=[0, 0, 2]), f_W=[3, 0, 0], tau_B=[0, 0, 0.5])
+    4.0
     """
 def principal_axes(inertia: typing.Any) -> PrincipalAxes:
     """
-    Principal moments and axes of symmetric inertias (3,3) or (n,3,3) [kg m^2] (lower triangles read),
-    about the point and in the frame the inertia is given for. Returns a PrincipalAxes: moments (3,)
-    or (n,3) ascending [kg m^2], axes (3,3) or (n,3,3) with column k the unit axis of moments[k],
-    right-handed, canonical when moments coincide; it unpacks as `moments, axes = principal_axes(I)`.
-    Releases the GIL.
+    Principal moments and axes of rotational inertias (Craig, "Principal Axes").
+    
+    I = axes @ diag(moments) @ axes.T, about the point and in the frame the inertia is given for. Reads the
+    lower triangles (the matrices are taken as symmetric). Releases the GIL.
+    
+    Parameters
+    ----------
+    inertia : array_like, shape (3, 3) or (n, 3, 3)
+        Symmetric rotational inertias [kg m^2].
+    
+    Returns
+    -------
+    PrincipalAxes
+        moments, shape (3,) or (n, 3), ascending [kg m^2]; axes, shape (3, 3) or (n, 3, 3), column k the
+        unit axis of moments[k], right-handed (det +1), canonical when moments coincide. Unpacks as
+        ``moments, axes = principal_axes(I)``.
+    
+    Raises
+    ------
+    ValueError
+        `inertia` of another shape (the message names it).
+    
+    See Also
+    --------
+    PrincipalAxes, SpatialInertia.principal_axes
+    
+    Examples
+    --------
+    >>> moments, axes = rd.principal_axes(np.diag([3.0, 1.0, 2.0]))
+    >>> moments
+    array([1., 2., 3.])
+    >>> axes
+    array([[0., 0., 1.],
+           [1., 0., 0.],
+           [0., 1., 0.]])
+    >>> rd.principal_axes(np.stack([np.eye(3), np.diag([3.0, 1.0, 2.0])])).moments
+    array([[1., 1., 1.],
+           [1., 2., 3.]])
     """
 def quat_canonical(q: typing.Any, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
-    The canonical quaternion of each rotation (q and -q are the same rotation): w > 0, or where
-    w = 0 the first non-zero of x, y, z positive, exactly as SciPy's as_quat(canonical=True).
+    The canonical quaternion of each rotation (q and -q are the same rotation).
     
-    q: (4,) or (n, 4) unit quaternions, (x, y, z, w) or (w, x, y, z) if scalar_first.
-    Returns (4,) or (n, 4) in the same order.
+    w > 0, or where w = 0 the first non-zero of x, y, z positive, exactly as SciPy's
+    ``Rotation.from_quat(q).as_quat(canonical=True)``.
+    
+    Parameters
+    ----------
+    q : array_like, shape (4,) or (n, 4)
+        Unit quaternions (x, y, z, w), or (w, x, y, z) if `scalar_first`; norm within 1e-6 of 1 (then
+        normalised).
+    scalar_first : bool, default False
+        Read and write quaternions scalar first, (w, x, y, z), as MuJoCo does.
+    
+    Returns
+    -------
+    ndarray, shape (4,) or (n, 4)
+        q or -q, in the order of the input.
+    
+    Raises
+    ------
+    ValueError
+        A quaternion with a non-finite entry or a norm farther than 1e-6 from 1 (the message names `q`
+        and, in a stack, the item), or a wrong shape.
+    
+    See Also
+    --------
+    quat_normalize, matrix_to_quat
+    
+    Examples
+    --------
+    >>> rd.quat_canonical([[0.0, 0.6, 0.0, -0.8], [0.0, -1.0, 0.0, 0.0]]) + 0.0
+    array([[ 0. , -0.6,  0. ,  0.8],
+           [ 0. ,  1. ,  0. ,  0. ]])
     """
 def quat_integrate(q: typing.Any, w: typing.Any, dt: typing.Any, frame: typing.Any = 'body', scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
-    Exact attitude update for an angular velocity w [rad/s] constant over dt [s].
+    Exact attitude update for an angular velocity constant over a step.
     
-    frame='body': q ⊗ exp(w dt/2), w = w_B expressed in the body frame;
-    frame='world': exp(w dt/2) ⊗ q, w = w_W expressed in the world frame;
-    exp of a pure vector u is (sin|u| u/|u|, cos|u|).
-    q: (4,) or (n, 4) unit quaternions q_WB; w: (3,) or (n, 3); dt: float.
-    Returns (4,) or (n, 4), normalised, (x, y, z, w) or (w, x, y, z) if scalar_first.
+    frame='body': q(t + dt) = q ⊗ exp(w_B dt/2), w_B expressed in B; frame='world':
+    q(t + dt) = exp(w_W dt/2) ⊗ q, w_W expressed in W; exp of a pure vector u is (sin|u| u/|u|, cos|u|)
+    (Solà, "Quaternion kinematics for the error-state Kalman filter"). With SciPy, frame='body' is
+    ``r * Rotation.from_rotvec(w * dt)``.
+    
+    Parameters
+    ----------
+    q : array_like, shape (4,) or (n, 4)
+        Attitudes q_WB, unit quaternions (x, y, z, w), or (w, x, y, z) if `scalar_first`; norm within
+        1e-6 of 1 (then normalised).
+    w : array_like, shape (3,) or (n, 3)
+        Angular velocity [rad/s] of B in W, expressed in B (frame='body') or in W (frame='world'); a
+        single q or w is used with every item of the other.
+    dt : float
+        Time step [s], finite.
+    frame : {'body', 'world'}, default 'body'
+        The frame `w` is expressed in.
+    scalar_first : bool, default False
+        Read and write quaternions scalar first, (w, x, y, z), as MuJoCo does.
+    
+    Returns
+    -------
+    ndarray, shape (4,) or (n, 4)
+        q(t + dt), normalised, in the order of the input.
+    
+    Raises
+    ------
+    ValueError
+        A quaternion with a non-finite entry or a norm farther than 1e-6 from 1 (the message names `q`
+        and, in a stack, the item), or a shape other than (4,) or (n, 4).
+    TypeError
+        `q` not an array of real numbers, or `scalar_first` not a bool.
+    ValueError
+        `w` of a wrong shape or non-finite, a non-finite `dt`, stacks of different lengths, or `frame`
+        not 'body' or 'world'.
+    
+    See Also
+    --------
+    quat_rate, rotvec_to_quat
+    
+    Examples
+    --------
+    Turning at pi/2 rad/s about z for 1 s is a quarter turn:
+    
+    >>> q = rd.quat_integrate([0.0, 0.0, 0.0, 1.0], [0.0, 0.0, np.pi / 2], 1.0)
+    >>> rd.quat_to_rotvec(q).round(12)
+    array([0.        , 0.        , 1.57079633])
     """
 def quat_inverse(q: typing.Any, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
-    Inverse (conjugate) of unit quaternions: q_BW from q_WB. q: (4,) or (n, 4); returns the same shape.
+    Inverse (conjugate) of unit quaternions.
+    
+    q^-1 = (-x, -y, -z, w): q_BW from q_WB. SciPy: ``Rotation.from_quat(q).inv()``.
+    
+    Parameters
+    ----------
+    q : array_like, shape (4,) or (n, 4)
+        Unit quaternions (x, y, z, w), or (w, x, y, z) if `scalar_first`; norm within 1e-6 of 1 (then
+        normalised).
+    scalar_first : bool, default False
+        Read and write quaternions scalar first, (w, x, y, z), as MuJoCo does.
+    
+    Returns
+    -------
+    ndarray, shape (4,) or (n, 4)
+        q^-1, in the order of the input.
+    
+    Raises
+    ------
+    ValueError
+        A quaternion with a non-finite entry or a norm farther than 1e-6 from 1 (the message names `q`
+        and, in a stack, the item), or a shape other than (4,) or (n, 4).
+    TypeError
+        `q` not an array of real numbers, or `scalar_first` not a bool.
+    
+    See Also
+    --------
+    quat_multiply
+    
+    Examples
+    --------
+    >>> q = rd.rotvec_to_quat([0.3, -0.2, 0.9])
+    >>> rd.quat_multiply(q, rd.quat_inverse(q)).round(12)
+    array([0., 0., 0., 1.])
     """
 def quat_multiply(q1: typing.Any, q2: typing.Any, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
-    Hamilton product q1 ⊗ q2 of unit quaternions: R(q1 ⊗ q2) = R(q1) R(q2) (q2 applied first).
+    Hamilton product q1 ⊗ q2 of unit quaternions.
     
-    q1, q2: (4,) or (n, 4) each (a single one is used with every item of the other).
-    Returns (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first.
+    R(q1 ⊗ q2) = R(q1) R(q2): q2 is applied first, so q_WC = q_WB ⊗ q_BC. SciPy: ``r1 * r2``.
+    
+    Parameters
+    ----------
+    q1, q2 : array_like, shape (4,) or (n, 4)
+        Unit quaternions (x, y, z, w), or (w, x, y, z) if `scalar_first`; norm within 1e-6 of 1 (then
+        normalised). A single one is used with every item of the other.
+    scalar_first : bool, default False
+        Read and write quaternions scalar first, (w, x, y, z), as MuJoCo does.
+    
+    Returns
+    -------
+    ndarray, shape (4,) or (n, 4)
+        q1 ⊗ q2, in the order of the input.
+    
+    Raises
+    ------
+    ValueError
+        A quaternion with a non-finite entry or a norm farther than 1e-6 from 1 (the message names it
+        and, in a stack, the item), a wrong shape, or stacks of different lengths.
+    
+    See Also
+    --------
+    quat_inverse, quat_rotate
+    
+    Examples
+    --------
+    A quarter turn about z applied twice is a half turn:
+    
+    >>> q = rd.rotvec_to_quat([0.0, 0.0, np.pi / 2])
+    >>> rd.quat_multiply(q, q).round(12)
+    array([0., 0., 1., 0.])
     """
 def quat_normalize(q: typing.Any, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
-    q / |q| for finite non-zero quaternions of any norm (ValueError for q = 0).
-    q: (4,) or (n, 4); returns the same shape, sign unchanged.
+    Quaternions scaled to unit norm, q / |q|.
+    
+    For finite non-zero quaternions of any norm; the sign is unchanged (no canonical sign). SciPy
+    normalises in ``Rotation.from_quat``.
+    
+    Parameters
+    ----------
+    q : array_like, shape (4,) or (n, 4)
+        Finite non-zero quaternions (x, y, z, w), or (w, x, y, z) if `scalar_first`.
+    scalar_first : bool, default False
+        Read and write quaternions scalar first, (w, x, y, z), as MuJoCo does.
+    
+    Returns
+    -------
+    ndarray, shape (4,) or (n, 4)
+        q / |q|, in the order of the input.
+    
+    Raises
+    ------
+    ValueError
+        q = 0, a non-finite entry or a wrong shape (the message names `q` and, in a stack, the item).
+    
+    See Also
+    --------
+    quat_canonical
+    
+    Examples
+    --------
+    >>> rd.quat_normalize([0.0, 0.0, -3.0, 4.0])
+    array([ 0. ,  0. , -0.6,  0.8])
     """
 def quat_rate(q: typing.Any, w: typing.Any, frame: typing.Any = 'body', scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
-    Quaternion rate dq/dt [1/s] of the attitude q = q_WB turning with angular velocity w [rad/s]:
-    frame='body': dq/dt = 1/2 q ⊗ (w, 0), w = w_B expressed in the body frame;
-    frame='world': dq/dt = 1/2 (w, 0) ⊗ q, w = w_W expressed in the world frame.
-    q: (4,) or (n, 4) unit quaternions; w: (3,) or (n, 3) (a single one is used with every item of the
-    other). Returns (4,) or (n, 4) in q's order, orthogonal to q, |dq/dt| = |w|/2.
+    Quaternion rate dq/dt of an attitude turning with an angular velocity.
+    
+    frame='body': dq/dt = 1/2 q ⊗ (w_B, 0), w_B expressed in B; frame='world': dq/dt = 1/2 (w_W, 0) ⊗ q,
+    w_W expressed in W (Solà, "Quaternion kinematics for the error-state Kalman filter"). The result is
+    orthogonal to q, with |dq/dt| = |w|/2. SciPy has no equivalent.
+    
+    Parameters
+    ----------
+    q : array_like, shape (4,) or (n, 4)
+        Attitudes q_WB, unit quaternions (x, y, z, w), or (w, x, y, z) if `scalar_first`; norm within
+        1e-6 of 1 (then normalised).
+    w : array_like, shape (3,) or (n, 3)
+        Angular velocity [rad/s] of B in W, expressed in B (frame='body') or in W (frame='world'); a
+        single q or w is used with every item of the other.
+    frame : {'body', 'world'}, default 'body'
+        The frame `w` is expressed in.
+    scalar_first : bool, default False
+        Read and write quaternions scalar first, (w, x, y, z), as MuJoCo does.
+    
+    Returns
+    -------
+    ndarray, shape (4,) or (n, 4)
+        dq/dt [1/s], in the order of q.
+    
+    Raises
+    ------
+    ValueError
+        A quaternion with a non-finite entry or a norm farther than 1e-6 from 1 (the message names `q`
+        and, in a stack, the item), or a shape other than (4,) or (n, 4).
+    TypeError
+        `q` not an array of real numbers, or `scalar_first` not a bool.
+    ValueError
+        `w` of a wrong shape or non-finite, stacks of different lengths, or `frame` not 'body' or
+        'world'.
+    
+    See Also
+    --------
+    angular_velocity_from_quat_rate, quat_integrate
+    
+    Examples
+    --------
+    >>> q = rd.rotvec_to_quat([0.4, 0.0, 0.0])
+    >>> dq = rd.quat_rate(q, [0.0, 2.0, 0.0])
+    >>> f"{q @ dq:.12f}", f"{np.linalg.norm(dq):.12f}"
+    ('0.000000000000', '1.000000000000')
     """
 def quat_rotate(q: typing.Any, v: typing.Any, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
-    R(q) v: vectors rotated actively by unit quaternions (v_W = R_WB v_B for q = q_WB).
+    Vectors rotated actively by unit quaternions, R(q) v.
     
-    q: (4,) or (n, 4); v: (3,) or (n, 3) (a single one is used with every item of the other).
-    Returns (3,) or (n, 3).
+    With q = q_WB, v_W = R_WB v_B. SciPy: ``Rotation.from_quat(q).apply(v)``.
+    
+    Parameters
+    ----------
+    q : array_like, shape (4,) or (n, 4)
+        Unit quaternions (x, y, z, w), or (w, x, y, z) if `scalar_first`; norm within 1e-6 of 1 (then
+        normalised).
+    v : array_like, shape (3,) or (n, 3)
+        Vectors (any unit); a single q or v is used with every item of the other.
+    scalar_first : bool, default False
+        Read and write quaternions scalar first, (w, x, y, z), as MuJoCo does.
+    
+    Returns
+    -------
+    ndarray, shape (3,) or (n, 3)
+        R(q) v, in the unit of v.
+    
+    Raises
+    ------
+    ValueError
+        A quaternion with a non-finite entry or a norm farther than 1e-6 from 1 (the message names `q`
+        and, in a stack, the item), or a shape other than (4,) or (n, 4).
+    TypeError
+        `q` not an array of real numbers, or `scalar_first` not a bool.
+    ValueError
+        `v` of a wrong shape or non-finite, or stacks of different lengths.
+    
+    See Also
+    --------
+    quat_to_matrix
+    
+    Examples
+    --------
+    >>> q = rd.rotvec_to_quat([0.0, 0.0, np.pi / 2])
+    >>> rd.quat_rotate(q, [[1.0, 0.0, 0.0], [0.0, 0.0, 2.0]]).round(12)
+    array([[0., 1., 0.],
+           [0., 0., 2.]])
     """
 def quat_to_axis_angle(q: typing.Any, scalar_first: typing.Any = False, *, degrees: typing.Any = False) -> tuple[numpy.typing.NDArray[numpy.float64], typing.Any]:
     """
-    Axis (unit) and angle [rad] in [0, pi] (degrees in [0, 180] if degrees=True) of unit quaternions;
-    the identity gives axis (1, 0, 0), angle 0.
+    Unit axis and angle in [0, pi] of unit quaternions.
     
-    q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first.
-    Returns (axis, angle): ((3,), float) or ((n, 3), (n,)).
+    The identity gives axis (1, 0, 0), angle 0. SciPy has no axis-angle pair: ``as_rotvec`` gives their
+    product, and ``magnitude`` the angle.
+    
+    Parameters
+    ----------
+    q : array_like, shape (4,) or (n, 4)
+        Unit quaternions (x, y, z, w), or (w, x, y, z) if `scalar_first`; norm within 1e-6 of 1 (then
+        normalised).
+    scalar_first : bool, default False
+        Read and write quaternions scalar first, (w, x, y, z), as MuJoCo does.
+    degrees : bool, default False, keyword-only
+        Angles in degrees instead of radians (converted as SciPy does: x * (pi/180) in,
+        x * (180/pi) out).
+    
+    Returns
+    -------
+    axis : ndarray, shape (3,) or (n, 3)
+        Unit rotation axes.
+    angle : float or ndarray, shape (n,)
+        Angles [rad] in [0, pi] (degrees in [0, 180] if `degrees`).
+    
+    Raises
+    ------
+    ValueError
+        A quaternion with a non-finite entry or a norm farther than 1e-6 from 1 (the message names `q`
+        and, in a stack, the item), or a shape other than (4,) or (n, 4).
+    TypeError
+        `q` not an array of real numbers, or `scalar_first` not a bool.
+    
+    See Also
+    --------
+    axis_angle_to_quat, quat_to_rotvec, angular_distance
+    
+    Examples
+    --------
+    >>> axis, angle = rd.quat_to_axis_angle([0.0, 0.0, -np.sin(0.25), np.cos(0.25)])
+    >>> axis.round(12), round(angle, 12)
+    (array([ 0.,  0., -1.]), 0.5)
+    >>> rd.quat_to_axis_angle([0.0, 0.0, 0.0, 1.0])
+    (array([1., 0., 0.]), 0.0)
     """
 def quat_to_davenport(axes: typing.Any, order: typing.Any, q: typing.Any, scalar_first: typing.Any = False, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
-    Davenport angles [rad] of unit quaternions (Bernardes & Viollet 2022, arbitrary axes).
+    Davenport angles of unit quaternions (rotations about three arbitrary axes).
     
-    axes: (3, 3), the rotation axes n1, n2, n3 as rows (any non-zero length, normalised), n2
-    orthogonal to n1 and to n3 (|cos| <= 1e-7, as SciPy); order: 'e'/'extrinsic' (fixed axes,
-    R = R_n3(a3) R_n2(a2) R_n1(a1)) or 'i'/'intrinsic' (moving axes, R = R_n1(a1) R_n2(a2) R_n3(a3)),
-    as SciPy's Rotation.from_davenport / as_davenport. Coordinate axes give Euler angles.
-    q: (4,) or (n, 4). Returns (3,) or (n, 3) [rad] (degrees if degrees=True), as SciPy: first and
-    third in [-pi, pi], second in [-l, pi - l] if l >= 0, [-pi - l, -l] if l < 0, where
-    l = atan2(m3 . (m1 x n2), m3 . m1) with (m1, m3) = (n1, n3), or (n3, n1) if intrinsic (proper Euler:
-    l = 0, second in [0, pi]; Tait-Bryan: l = +-pi/2, second in [-pi/2, pi/2]).
-    Gimbal lock: a UserWarning 'Gimbal lock detected. ...' (once per call) wherever SciPy warns: the
-    middle angle of some item within 1e-7 rad of its singularity (Euler angles: 0 or pi in proper
-    sequences, -pi/2 or pi/2 in Tait-Bryan ones; Davenport angles: the ends of its range). Within
-    round-off of it (1e-13 rad) only the sum or difference of the first and third angles is defined:
-    the third is set to 0 and the first carries it, with SciPy's message. Between 1e-13 and 1e-7 rad
-    the angles are the exact ones and the message says so (SciPy sets the third to 0 there too, which
-    moves the rotation by up to 2e-7 rad): the angles reproduce the rotation to round-off everywhere.
+    By the method of Bernardes & Viollet ("Quaternion to Euler angles conversion: a direct, general and
+    computationally efficient method") for arbitrary axes. SciPy:
+    ``Rotation.from_quat(q).as_davenport(axes, order)``.
+    
+    Parameters
+    ----------
+    axes : array_like, shape (3, 3)
+        The rotation axes n1, n2, n3 as rows (any non-zero length, normalised), n2 orthogonal to n1 and
+        to n3 (|cos| <= 1e-7, as SciPy). Coordinate axes give Euler angles.
+    order : str
+        'e' or 'extrinsic' (fixed axes, R = R_n3(a3) R_n2(a2) R_n1(a1)) or 'i' or 'intrinsic' (moving
+        axes, R = R_n1(a1) R_n2(a2) R_n3(a3)), as SciPy's `Rotation.from_davenport` / `as_davenport`.
+    q : array_like, shape (4,) or (n, 4)
+        Unit quaternions (x, y, z, w), or (w, x, y, z) if `scalar_first`; norm within 1e-6 of 1 (then
+        normalised).
+    scalar_first : bool, default False
+        Read and write quaternions scalar first, (w, x, y, z), as MuJoCo does.
+    degrees : bool, default False, keyword-only
+        Angles in degrees instead of radians (converted as SciPy does: x * (pi/180) in,
+        x * (180/pi) out).
+    
+    Returns
+    -------
+    ndarray, shape (3,) or (n, 3)
+        Angles [rad] (degrees if `degrees`) in the order of the axes, as SciPy: first and third in
+        [-pi, pi], second in [-l, pi - l] if l >= 0, [-pi - l, -l] if l < 0, where
+        l = atan2(m3 . (m1 x n2), m3 . m1) with (m1, m3) = (n1, n3), or (n3, n1) if intrinsic (proper
+        Euler: l = 0, second in [0, pi]; Tait-Bryan: l = +-pi/2, second in [-pi/2, pi/2]).
+    
+    Raises
+    ------
+    ValueError
+        `axes` not of shape (3, 3), with a zero row or with n2 not orthogonal to n1 and n3 (the message
+        names `axes`); `order` not one of 'e', 'extrinsic', 'i', 'intrinsic'.
+    ValueError
+        A quaternion with a non-finite entry or a norm farther than 1e-6 from 1 (the message names `q`
+        and, in a stack, the item), or a shape other than (4,) or (n, 4).
+    TypeError
+        `q` not an array of real numbers, or `scalar_first` not a bool.
+    
+    Warns
+    -----
+    UserWarning
+        'Gimbal lock detected. ...' (once per call) wherever SciPy warns: the middle angle of some item
+        within 1e-7 rad of its singularity (Euler angles: 0 or pi in proper sequences, -pi/2 or pi/2
+        in Tait-Bryan ones; Davenport angles: the ends of its range). Within round-off of it (1e-13 rad)
+        only the sum or difference of the first and third angles is defined: the third is set to 0 and
+        the first carries it, with SciPy's message. Between 1e-13 and 1e-7 rad the angles are the exact ones
+        and the message says so (SciPy sets the third to 0 there too, which moves the rotation by up to
+        2e-7 rad): the angles reproduce the rotation to round-off everywhere.
+    
+    See Also
+    --------
+    davenport_to_quat, quat_to_euler
+    
+    Examples
+    --------
+    Angles about tilted axes come back:
+    
+    >>> axes = [[1.0, 0.0, 1.0], [0.0, 1.0, 0.0], [1.0, 0.0, 0.0]]
+    >>> q = rd.davenport_to_quat(axes, "i", [0.5, -0.3, 1.2])
+    >>> rd.quat_to_davenport(axes, "i", q).round(12)
+    array([ 0.5, -0.3,  1.2])
     """
 def quat_to_euler(seq: typing.Any, q: typing.Any, scalar_first: typing.Any = False, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
-    Euler angles [rad] of unit quaternions (Bernardes & Viollet 2022).
+    Euler angles of unit quaternions.
     
-    seq: 3 letters as SciPy, lowercase 'xyz' = extrinsic (fixed axes), uppercase 'XYZ' = intrinsic
-    (moving axes); the 12 sequences xyz xzy yxz yzx zxy zyx xyx xzx yxy yzy zxz zyz in either case.
-    q: (4,) or (n, 4). Returns (3,) or (n, 3) [rad] (degrees if degrees=True): first and third in
-    [-pi, pi], second in [0, pi] (proper) or [-pi/2, pi/2] (Tait-Bryan).
-    Gimbal lock: a UserWarning 'Gimbal lock detected. ...' (once per call) wherever SciPy warns: the
-    middle angle of some item within 1e-7 rad of its singularity (Euler angles: 0 or pi in proper
-    sequences, -pi/2 or pi/2 in Tait-Bryan ones; Davenport angles: the ends of its range). Within
-    round-off of it (1e-13 rad) only the sum or difference of the first and third angles is defined:
-    the third is set to 0 and the first carries it, with SciPy's message. Between 1e-13 and 1e-7 rad
-    the angles are the exact ones and the message says so (SciPy sets the third to 0 there too, which
-    moves the rotation by up to 2e-7 rad): the angles reproduce the rotation to round-off everywhere.
+    By the atan2-only method of Bernardes & Viollet ("Quaternion to Euler angles conversion: a direct,
+    general and computationally efficient method"), accurate at all angles. SciPy:
+    ``Rotation.from_quat(q).as_euler(seq)``.
+    
+    Parameters
+    ----------
+    seq : str
+        The axis sequence, 3 letters as SciPy's: lowercase 'xyz' = extrinsic (rotations about the
+        fixed axes of W), uppercase 'XYZ' = intrinsic (about the moving axes); the 12 sequences xyz xzy
+        yxz yzx zxy zyx xyx xzx yxy yzy zxz zyz in either case.
+    q : array_like, shape (4,) or (n, 4)
+        Unit quaternions (x, y, z, w), or (w, x, y, z) if `scalar_first`; norm within 1e-6 of 1 (then
+        normalised).
+    scalar_first : bool, default False
+        Read and write quaternions scalar first, (w, x, y, z), as MuJoCo does.
+    degrees : bool, default False, keyword-only
+        Angles in degrees instead of radians (converted as SciPy does: x * (pi/180) in,
+        x * (180/pi) out).
+    
+    Returns
+    -------
+    ndarray, shape (3,) or (n, 3)
+        Angles [rad] (degrees if `degrees`) in the order of `seq`: first and third in [-pi, pi], second
+        in [0, pi] (proper Euler sequences) or [-pi/2, pi/2] (Tait-Bryan).
+    
+    Raises
+    ------
+    ValueError
+        `seq` not one of the 24 sequences.
+    TypeError
+        `seq` not a str.
+    ValueError
+        A quaternion with a non-finite entry or a norm farther than 1e-6 from 1 (the message names `q`
+        and, in a stack, the item), or a shape other than (4,) or (n, 4).
+    TypeError
+        `q` not an array of real numbers, or `scalar_first` not a bool.
+    
+    Warns
+    -----
+    UserWarning
+        'Gimbal lock detected. ...' (once per call) wherever SciPy warns: the middle angle of some item
+        within 1e-7 rad of its singularity (Euler angles: 0 or pi in proper sequences, -pi/2 or pi/2
+        in Tait-Bryan ones; Davenport angles: the ends of its range). Within round-off of it (1e-13 rad)
+        only the sum or difference of the first and third angles is defined: the third is set to 0 and
+        the first carries it, with SciPy's message. Between 1e-13 and 1e-7 rad the angles are the exact ones
+        and the message says so (SciPy sets the third to 0 there too, which moves the rotation by up to
+        2e-7 rad): the angles reproduce the rotation to round-off everywhere.
+    
+    See Also
+    --------
+    euler_to_quat, matrix_to_euler, quat_to_davenport
+    
+    Examples
+    --------
+    >>> q = rd.euler_to_quat("ZYX", [0.1, 0.2, 0.3])
+    >>> rd.quat_to_euler("ZYX", q).round(12)
+    array([0.1, 0.2, 0.3])
+    >>> rd.quat_to_euler("zxz", rd.rotvec_to_quat([90.0, 0.0, 0.0], degrees=True), degrees=True)
+    array([ 0., 90.,  0.])
     """
 def quat_to_matrix(q: typing.Any, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
-    Rotation matrix R(q) of unit quaternions.
+    Rotation matrix of unit quaternions.
     
-    q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first; unit norm within 1e-6.
-    Returns R: (3, 3) or (n, 3, 3), active (R v rotates v; q_WB gives R_WB).
+    R(q) is the active rotation: R v rotates v, and the attitude q_WB gives R_WB (B coordinates to W
+    coordinates). SciPy: ``Rotation.from_quat(q).as_matrix()``.
+    
+    Parameters
+    ----------
+    q : array_like, shape (4,) or (n, 4)
+        Unit quaternions (x, y, z, w), or (w, x, y, z) if `scalar_first`; norm within 1e-6 of 1 (then
+        normalised).
+    scalar_first : bool, default False
+        Read and write quaternions scalar first, (w, x, y, z), as MuJoCo does.
+    
+    Returns
+    -------
+    ndarray, shape (3, 3) or (n, 3, 3)
+        R(q), orthonormal with det +1.
+    
+    Raises
+    ------
+    ValueError
+        A quaternion with a non-finite entry or a norm farther than 1e-6 from 1 (the message names `q`
+        and, in a stack, the item), or a shape other than (4,) or (n, 4).
+    TypeError
+        `q` not an array of real numbers, or `scalar_first` not a bool.
+    
+    See Also
+    --------
+    matrix_to_quat, quat_rotate, rot_x
+    
+    Examples
+    --------
+    A quarter turn about z takes x to y:
+    
+    >>> q = rd.rotvec_to_quat([0.0, 0.0, np.pi / 2])
+    >>> rd.quat_to_matrix(q).round(12)
+    array([[ 0., -1.,  0.],
+           [ 1.,  0.,  0.],
+           [ 0.,  0.,  1.]])
     """
 def quat_to_mrp(q: typing.Any, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
-    Modified Rodrigues parameters p = axis tan(angle/4) of unit quaternions, the set with |p| <= 1
-    (angle in [0, pi]; as SciPy's Rotation.as_mrp). Dimensionless.
+    Modified Rodrigues parameters of unit quaternions.
     
-    q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first. Returns (3,) or (n, 3).
+    p = axis tan(angle/4) = (x, y, z) / (1 + w) for the representative with w >= 0, the set with
+    |p| <= 1 (angle in [0, pi]); dimensionless (Shuster, "A survey of attitude representations"). SciPy:
+    ``Rotation.from_quat(q).as_mrp()``.
+    
+    Parameters
+    ----------
+    q : array_like, shape (4,) or (n, 4)
+        Unit quaternions (x, y, z, w), or (w, x, y, z) if `scalar_first`; norm within 1e-6 of 1 (then
+        normalised).
+    scalar_first : bool, default False
+        Read and write quaternions scalar first, (w, x, y, z), as MuJoCo does.
+    
+    Returns
+    -------
+    ndarray, shape (3,) or (n, 3)
+        p, |p| <= 1.
+    
+    Raises
+    ------
+    ValueError
+        A quaternion with a non-finite entry or a norm farther than 1e-6 from 1 (the message names `q`
+        and, in a stack, the item), or a shape other than (4,) or (n, 4).
+    TypeError
+        `q` not an array of real numbers, or `scalar_first` not a bool.
+    
+    See Also
+    --------
+    mrp_to_quat
+    
+    Examples
+    --------
+    A half turn about z has |p| = tan(pi/4) = 1, whatever the quaternion's sign:
+    
+    >>> rd.quat_to_mrp([0.0, 0.0, -1.0, 0.0]).round(12) + 0.0
+    array([0., 0., 1.])
     """
 def quat_to_rotvec(q: typing.Any, scalar_first: typing.Any = False, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
-    Logarithm map: rotation vector angle * axis [rad] of unit quaternions, angle in [0, pi].
+    Logarithm map: rotation vectors of unit quaternions.
     
-    q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first. Returns (3,) or (n, 3),
-    in degrees (angle in [0, 180]) if degrees=True.
-    Accurate near angle 0 and near pi (atan2 form).
+    rotvec = theta u with theta in [0, pi] (q and -q give the same vector), by the atan2 form: accurate
+    near angle 0 and near pi. SciPy: ``Rotation.from_quat(q).as_rotvec()``.
+    
+    Parameters
+    ----------
+    q : array_like, shape (4,) or (n, 4)
+        Unit quaternions (x, y, z, w), or (w, x, y, z) if `scalar_first`; norm within 1e-6 of 1 (then
+        normalised).
+    scalar_first : bool, default False
+        Read and write quaternions scalar first, (w, x, y, z), as MuJoCo does.
+    degrees : bool, default False, keyword-only
+        Angles in degrees instead of radians (converted as SciPy does: x * (pi/180) in,
+        x * (180/pi) out).
+    
+    Returns
+    -------
+    ndarray, shape (3,) or (n, 3)
+        Rotation vectors angle * axis [rad], angle in [0, pi] (degrees, angle in [0, 180], if
+        `degrees`).
+    
+    Raises
+    ------
+    ValueError
+        A quaternion with a non-finite entry or a norm farther than 1e-6 from 1 (the message names `q`
+        and, in a stack, the item), or a shape other than (4,) or (n, 4).
+    TypeError
+        `q` not an array of real numbers, or `scalar_first` not a bool.
+    
+    See Also
+    --------
+    rotvec_to_quat, quat_to_axis_angle, matrix_to_rotvec
+    
+    Examples
+    --------
+    The logarithm undoes the exponential for angles up to pi:
+    
+    >>> rotvec = np.array([0.3, -1.2, 2.0])
+    >>> np.allclose(rd.quat_to_rotvec(rd.rotvec_to_quat(rotvec)), rotvec)
+    True
+    >>> rd.quat_to_rotvec([0.0, 0.0, -1.0, 0.0], degrees=True).round(9) + 0.0
+    array([  0.,   0., 180.])
     """
 def random_rotations(n: typing.Any = None, rng: typing.Any = None, scalar_first: typing.Any = False, canonical: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Rotations drawn uniformly (Haar measure) from SO(3), as unit quaternions.
     
-    n: None (one rotation, shape (4,)) or a count (shape (n, 4)). rng: a numpy.random.Generator,
-    or None / a seed (int >= 0) for numpy.random.default_rng. The draws are SciPy's: for the same
-    generator state the result equals Rotation.random(n, rng=rng).as_quat() (normalised
-    standard normal 4-vectors), and the generator advances by 4 n normal draws. Returns (x, y, z, w), or (w, x, y, z) if scalar_first; canonical=True gives the representative with w >= 0
-    (SciPy's as_quat(canonical=True): at w = 0 the first non-zero of x, y, z is positive).
+    Normalised standard normal 4-vectors are uniform on the unit sphere of R^4 (Shoemake 1992, "Uniform
+    random rotations"). The draws are SciPy's: for the same generator state the result equals
+    ``Rotation.random(n, rng=rng).as_quat()``, and the generator advances by 4 n normal draws.
+    
+    Parameters
+    ----------
+    n : int or None, default None
+        None for one rotation (shape (4,)), or a count >= 0 (shape (n, 4)).
+    rng : numpy.random.Generator, int or None, default None
+        A generator, or None / a seed (int >= 0) given to ``numpy.random.default_rng``.
+    scalar_first : bool, default False
+        Read and write quaternions scalar first, (w, x, y, z), as MuJoCo does.
+    canonical : bool, default False
+        Return the representative with w >= 0 (SciPy's ``as_quat(canonical=True)``: at w = 0 the first
+        non-zero of x, y, z is positive).
+    
+    Returns
+    -------
+    ndarray, shape (4,) or (n, 4)
+        Unit quaternions, (x, y, z, w) or (w, x, y, z) if `scalar_first`.
+    
+    Raises
+    ------
+    ValueError
+        `n` negative or too large to allocate.
+    TypeError
+        `rng` not a Generator, None or an int seed.
+    
+    See Also
+    --------
+    quat_canonical
+    
+    Examples
+    --------
+    >>> q = rd.random_rotations(1000, rng=0, canonical=True)
+    >>> q.shape, np.allclose(np.linalg.norm(q, axis=1), 1.0), bool((q[:, 3] >= 0).all())
+    ((1000, 4), True, True)
     """
 def relative_kinematics(K_WA: typing.Any, K_WF: typing.Any) -> FrameKinematics:
     """
-    F relative to A from A and F relative to a common frame W; expressed in A. Inverse of compose_kinematics.
+    Kinematics of F relative to A from those of A and of F relative to a common frame W.
+    
+    The inverse of compose_kinematics: compose_kinematics(K_WA, relative_kinematics(K_WA, K_WF)) is K_WF.
+    
+    Parameters
+    ----------
+    K_WA : FrameKinematics
+        A relative to W, expressed in W.
+    K_WF : FrameKinematics
+        F relative to W, expressed in W.
+    
+    Returns
+    -------
+    FrameKinematics
+        F relative to A, expressed in A.
+    
+    Raises
+    ------
+    TypeError
+        An argument not a FrameKinematics (naming it).
+    
+    See Also
+    --------
+    compose_kinematics, FrameTree.kinematics
+    
+    Examples
+    --------
+    >>> K_WA = rd.FrameKinematics(w_PF_P=[0.0, 0.0, 1.0])
+    >>> K_AF = rd.FrameKinematics(w_PF_P=[1.0, 0.0, 0.0], p_PF_P=[2.0, 0.0, 0.0])
+    >>> K = rd.relative_kinematics(K_WA, rd.compose_kinematics(K_WA, K_AF))
+    >>> bool(np.allclose(K.w_PF_P, K_AF.w_PF_P) and np.allclose(K.a_PF_P, K_AF.a_PF_P))
+    True
     """
 def require_closed_oriented_mesh(faces: typing.Any, n_vertices: typing.Any) -> None:
     """
-    ValueError unless faces (f, 3) index [0, n_vertices) and form a closed, consistently oriented mesh.
+    Check that triangles form a closed, consistently oriented mesh.
+    
+    Every edge must be shared by exactly two faces, traversed once in each direction.
+    
+    Parameters
+    ----------
+    faces : array_like of int, shape (f, 3)
+        Vertex indices of each triangle.
+    n_vertices : int
+        Number of vertices n, >= 0; indices must lie in [0, n).
+    
+    Returns
+    -------
+    None
+    
+    Raises
+    ------
+    ValueError
+        No faces, an index outside [0, n), a face repeating a vertex, an open edge or a misoriented edge
+        (the message names the face and the edge).
+    
+    See Also
+    --------
+    solid_mesh, weld_vertices
+    
+    Examples
+    --------
+    >>> faces = [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]]
+    >>> rd.require_closed_oriented_mesh(faces, 4)
+    >>> rd.require_closed_oriented_mesh(faces[:3], 4)
+    Traceback (most recent call last):
+        ...
+    ValueError: faces: expected a closed mesh (every edge shared by exactly two faces), got edge (2, 1) ...
     """
 def rot_x(angle: typing.Any, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
-    Elementary rotation about x by angle [rad] (active): [[1, 0, 0], [0, c, -s], [0, s, c]].
-    angle: float or (n,), in degrees if degrees=True. Returns (3, 3) or (n, 3, 3).
+    Elementary rotation matrix about x (active).
+    
+    R_x(a) = [[1, 0, 0], [0, c, -s], [0, s, c]] with c = cos a, s = sin a. SciPy:
+    ``Rotation.from_euler('x', angle).as_matrix()``.
+    
+    Parameters
+    ----------
+    angle : float or array_like, shape (n,)
+        Angles [rad] (degrees if `degrees`).
+    degrees : bool, default False, keyword-only
+        Angles in degrees instead of radians (converted as SciPy does: x * (pi/180) in,
+        x * (180/pi) out).
+    
+    Returns
+    -------
+    ndarray, shape (3, 3) or (n, 3, 3)
+        R_x(angle).
+    
+    Raises
+    ------
+    ValueError
+        A non-finite angle or a shape other than () or (n,) (the message names `angle`).
+    
+    See Also
+    --------
+    rot_y, rot_z, euler_to_matrix
+    
+    Examples
+    --------
+    A quarter turn about x takes y to z:
+    
+    >>> rd.rot_x(90.0, degrees=True).round(12) @ [0.0, 1.0, 0.0]
+    array([0., 0., 1.])
     """
 def rot_y(angle: typing.Any, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
-    Elementary rotation about y by angle [rad] (active): [[c, 0, s], [0, 1, 0], [-s, 0, c]].
-    angle: float or (n,), in degrees if degrees=True. Returns (3, 3) or (n, 3, 3).
+    Elementary rotation matrix about y (active).
+    
+    R_y(a) = [[c, 0, s], [0, 1, 0], [-s, 0, c]] with c = cos a, s = sin a. SciPy:
+    ``Rotation.from_euler('y', angle).as_matrix()``.
+    
+    Parameters
+    ----------
+    angle : float or array_like, shape (n,)
+        Angles [rad] (degrees if `degrees`).
+    degrees : bool, default False, keyword-only
+        Angles in degrees instead of radians (converted as SciPy does: x * (pi/180) in,
+        x * (180/pi) out).
+    
+    Returns
+    -------
+    ndarray, shape (3, 3) or (n, 3, 3)
+        R_y(angle).
+    
+    Raises
+    ------
+    ValueError
+        A non-finite angle or a shape other than () or (n,) (the message names `angle`).
+    
+    See Also
+    --------
+    rot_x, rot_z, euler_to_matrix
+    
+    Examples
+    --------
+    A quarter turn about y takes z to x:
+    
+    >>> rd.rot_y(np.pi / 2).round(12) @ [0.0, 0.0, 1.0]
+    array([1., 0., 0.])
     """
 def rot_z(angle: typing.Any, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
-    Elementary rotation about z by angle [rad] (active): [[c, -s, 0], [s, c, 0], [0, 0, 1]].
-    angle: float or (n,), in degrees if degrees=True. Returns (3, 3) or (n, 3, 3).
+    Elementary rotation matrix about z (active).
+    
+    R_z(a) = [[c, -s, 0], [s, c, 0], [0, 0, 1]] with c = cos a, s = sin a. SciPy:
+    ``Rotation.from_euler('z', angle).as_matrix()``.
+    
+    Parameters
+    ----------
+    angle : float or array_like, shape (n,)
+        Angles [rad] (degrees if `degrees`).
+    degrees : bool, default False, keyword-only
+        Angles in degrees instead of radians (converted as SciPy does: x * (pi/180) in,
+        x * (180/pi) out).
+    
+    Returns
+    -------
+    ndarray, shape (3, 3) or (n, 3, 3)
+        R_z(angle).
+    
+    Raises
+    ------
+    ValueError
+        A non-finite angle or a shape other than () or (n,) (the message names `angle`).
+    
+    See Also
+    --------
+    rot_x, rot_y, euler_to_matrix
+    
+    Examples
+    --------
+    A stack of angles gives a stack of matrices:
+    
+    >>> rd.rot_z([0.0, np.pi / 2]).round(12) @ [1.0, 0.0, 0.0]
+    array([[1., 0., 0.],
+           [0., 1., 0.]])
     """
 def rotvec_to_matrix(rotvec: typing.Any, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
-    Exponential map into rotation matrices (Rodrigues): rotvec = angle * axis [rad], (3,) or (n, 3)
-    (in degrees if degrees=True).
-    Returns R: (3, 3) or (n, 3, 3).
+    Exponential map into rotation matrices (Rodrigues' formula).
+    
+    R = I + sin(theta) hat(u) + (1 - cos(theta)) hat(u)^2 for rotvec = theta u [rad]. SciPy:
+    ``Rotation.from_rotvec(rotvec).as_matrix()``.
+    
+    Parameters
+    ----------
+    rotvec : array_like, shape (3,) or (n, 3)
+        Rotation vectors angle * axis [rad] (degrees if `degrees`), finite.
+    degrees : bool, default False, keyword-only
+        Angles in degrees instead of radians (converted as SciPy does: x * (pi/180) in,
+        x * (180/pi) out).
+    
+    Returns
+    -------
+    ndarray, shape (3, 3) or (n, 3, 3)
+        R, orthonormal with det +1.
+    
+    Raises
+    ------
+    ValueError
+        A non-finite entry, or a shape other than (3,) or (n, 3) (the message names `rotvec`).
+    
+    See Also
+    --------
+    matrix_to_rotvec, rotvec_to_quat, hat
+    
+    Examples
+    --------
+    >>> rd.rotvec_to_matrix([0.0, 0.0, 90.0], degrees=True).round(12)
+    array([[ 0., -1.,  0.],
+           [ 1.,  0.,  0.],
+           [ 0.,  0.,  1.]])
     """
 def rotvec_to_quat(rotvec: typing.Any, scalar_first: typing.Any = False, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
-    Exponential map: unit quaternion of rotation vectors rotvec = angle * axis [rad] (any angle; exact near 0).
+    Exponential map: unit quaternion of rotation vectors.
     
-    rotvec: (3,) or (n, 3), in degrees if degrees=True. Returns q: (4,) or (n, 4), (x, y, z, w) or (w, x, y, z) if scalar_first;
-    w < 0 when the angle exceeds pi (no sign flip).
+    q = (sin(theta/2) u, cos(theta/2)) for rotvec = theta u [rad], u a unit axis; any angle, exact near
+    0. No sign flip: w < 0 when the angle exceeds pi. SciPy: ``Rotation.from_rotvec(rotvec).as_quat()``.
+    
+    Parameters
+    ----------
+    rotvec : array_like, shape (3,) or (n, 3)
+        Rotation vectors angle * axis [rad] (degrees if `degrees`), finite.
+    scalar_first : bool, default False
+        Read and write quaternions scalar first, (w, x, y, z), as MuJoCo does.
+    degrees : bool, default False, keyword-only
+        Angles in degrees instead of radians (converted as SciPy does: x * (pi/180) in,
+        x * (180/pi) out).
+    
+    Returns
+    -------
+    ndarray, shape (4,) or (n, 4)
+        q, (x, y, z, w) or (w, x, y, z) if `scalar_first`.
+    
+    Raises
+    ------
+    ValueError
+        A non-finite entry, or a shape other than (3,) or (n, 3) (the message names `rotvec`).
+    
+    See Also
+    --------
+    quat_to_rotvec, rotvec_to_matrix, axis_angle_to_quat
+    
+    Examples
+    --------
+    >>> rd.rotvec_to_quat([0.0, 0.0, np.pi]).round(12)
+    array([0., 0., 1., 0.])
+    >>> rd.rotvec_to_quat([0.0, 90.0, 0.0], degrees=True)
+    array([0.        , 0.70710678, 0.        , 0.70710678])
     """
 def screw_to_twist(screw: typing.Any) -> Motion:
     """
-    The twist of a screw: w = magnitude direction, v = magnitude (point x direction + pitch direction)
-    (v = magnitude direction for pitch inf).
+    The twist of a screw, inverse of twist_to_screw.
+    
+    w = magnitude direction, v = magnitude (point x direction + pitch direction) (v = magnitude direction for
+    pitch inf), angular part first.
+    
+    Parameters
+    ----------
+    screw : Screw
+        Unit direction, point [m], pitch [m/rad], magnitude.
+    
+    Returns
+    -------
+    Motion
+        [w; v] ([rad/s], [m/s]) in the screw's frame.
+    
+    Raises
+    ------
+    ValueError
+        A direction that is not a unit vector, or a non-finite part (the message names it).
+    TypeError
+        screw not a Screw.
+    
+    See Also
+    --------
+    twist_to_screw, Screw
+    
+    Examples
+    --------
+    >>> V = rd.Motion([0.0, 0.0, 2.0], [0.0, 2.0, 0.5])
+    >>> rd.screw_to_twist(rd.twist_to_screw(V)) == V
+    True
     """
 def simulate(model: typing.Any, initial: typing.Any, dt: typing.Any, steps: typing.Any = None, method: typing.Any = None, record_every: typing.Any = 1, loads: typing.Any = None, gravity: typing.Any = None, t0: typing.Any = 0.0, scalar_first: typing.Any = False, progress: typing.Any = None, *, duration: typing.Any = None) -> SimulationResult | SceneResult:
     """
-    Integrate `model` from `initial` over `steps` fixed steps of `dt` [s] with `method` (see methods()),
-    in C++ with the GIL released, and record every `record_every`-th step (plus the first and the last).
-    The run's length: steps= (an int >= 0) or, by keyword, duration= [s] (a float or a pint quantity), exactly one;
-    a duration must be a whole number of steps of dt (to 1e-9 relative: 10 s at dt = 0.01 s is 1000 steps),
-    else ValueError naming duration and dt with the nearest durations that are.
-    dt, t0 and duration: each a float [s] or a pint quantity (converted to s; ValueError naming it for another
-    dimension).
+    Integrate a body or a scene over fixed steps and record its motion.
     
-    model/initial: Particle/ParticleState, PlanarBody/PlanarBodyState or RigidBody/RigidBodyState; or a Scene
-      or CompiledScene and a list of the states of its bodies (returns a SceneResult: see Scene); or a PivotedBody/
-      PivotedBodyState, PivotedPlanarBody/PivotedPlanarBodyState or Gyrostat/GyrostatState: the one-body scene of
-      the body, UniformGravity (gravity) and ScheduledLoads (loads) (returns a SceneResult; a PivotedPlanarBody takes
-      an in-plane gravity (2,) or (3,)).
-    method: a name of methods(); None (the default): 'rk4', or the method a CompiledScene was compiled for.
-    loads: an AppliedLoad or a sequence of them, a piecewise-constant schedule: a step that crosses a
-      switch time (a t_start or t_end) is split there into sub-steps of the same method, so every method
-      keeps its order; records stay at t0 + i dt. gravity: None/False (the default: none), True
-      ((0, 0, -9.81) m/s^2 in W) or a 3-vector [m/s^2] in W. t0: initial time [s]. scalar_first: quaternions
-      as (w, x, y, z).
-    progress: None or a callable(steps_done), called with the GIL after the first step and then about every
-      0.05 s of a long run, however long a step takes; an exception it raises stops the run and propagates.
+    Runs `steps` fixed steps of `dt` with `method` (see methods()) from `initial` at time t0, in C++ with the GIL
+    released, and records every `record_every`-th step plus the first and the last (records at t0 + i dt). The
+    loads are a piecewise-constant schedule: a step that crosses a switch time (a t_start or t_end) is split there
+    into sub-steps of the same method, so every method keeps its order.
     
-    Returns a SimulationResult, arrays with one row per record (n records): t (n,) [s]; p_W (n, 3) [m];
-    q_WB (n, 4) (x, y, z, w); v_W (n, 3) [m/s]; w_B (n, 3) [rad/s]; kinetic_energy (n,) [J];
-    total_energy (n,) kinetic + gravity potential [J]; angular_momentum_norm (n,) |H_G| [kg m^2/s];
-    quaternion_norm_error (n,) |q| - 1; work (n,) work of loads and gravity since t0 [J], integrated by the
-    same method (kinetic_energy - kinetic_energy[0] ~ work); diverged; unconverged_steps (implicit solves that
-    hit their iteration cap); elapsed_seconds (C++ loop wall time).
-    A particle records q = identity, w = 0; a planar body p = (x, y, 0), q = Rz(theta), w = (0, 0, omega).
-    Warns RuntimeWarning and stops if the state becomes non-finite; warns RuntimeWarning naming the quantities
-    and their first times if a recorded quantity is not finite although the state is (an overflow, e.g. the
-    kinetic energy of |v_W| > 1e154 m/s); warns RuntimeWarning (naming dt and the count) if an implicit solve
-    did not converge. Ctrl-C stops the run within about 0.05 s however long a step takes (a step under way is
-    finished first) with KeyboardInterrupt (no result is kept). ValueError names a bad argument, also a
-    recording larger than the memory available (record_every, with both figures).
+    Parameters
+    ----------
+    model : Particle, PlanarBody, RigidBody, PivotedBody, PivotedPlanarBody, Gyrostat, Scene or CompiledScene
+        What to integrate. A PivotedBody, PivotedPlanarBody or Gyrostat runs as its one-body scene with a
+        UniformGravity (`gravity`) and a ScheduledLoads (`loads`).
+    initial : ParticleState, PlanarBodyState, RigidBodyState, PivotedBodyState, ..., or list
+        The state of `model`'s kind at t0 (also PivotedPlanarBodyState or GyrostatState); for a Scene or
+        CompiledScene, a list of the states of its bodies.
+    dt : float or pint.Quantity
+        Step [s], finite and > 0 (a quantity is converted to s).
+    steps : int, optional
+        Number of steps, >= 0. Exactly one of steps and duration.
+    method : str, optional
+        A name of methods(): 'explicit_euler', 'semi_implicit_euler', 'semi_implicit_euler_implicit_gyroscopic',
+        'rk4', 'rkmk4', 'implicit_midpoint', 'splitting_dlm', 'splitting_dlm_yoshida4', 'exact_flow_kick' or 'exact'.
+        None (the default): 'rk4', or the method a CompiledScene was compiled for.
+    record_every : int, default 1
+        Record every record_every-th step (>= 1), plus the first and the last.
+    loads : AppliedLoad or sequence of AppliedLoad, optional
+        The applied loads (None: none). A Scene or CompiledScene takes None (it declares its loads as elements).
+    gravity : None, bool or array_like, shape (3,), default None
+        Uniform gravity g_W [m/s^2] in W: None or False (none), True ((0, 0, -9.81)) or a vector. A PivotedPlanarBody
+        takes None or an in-plane vector, shape (2,) or (3,); a Scene or CompiledScene takes None (declare a
+        UniformGravity element).
+    t0 : float or pint.Quantity, default 0.0
+        Initial time [s].
+    scalar_first : bool, default False
+        Record quaternions as (w, x, y, z) instead of (x, y, z, w).
+    progress : callable, optional
+        progress(steps_done), called with the GIL after the first step and then about every 0.05 s of a long run,
+        however long a step takes; an exception it raises stops the run and propagates.
+    duration : float or pint.Quantity, keyword-only, optional
+        Length of the run [s] instead of steps: a whole number of steps of dt (to 1e-9 relative: 10 s at
+        dt = 0.01 s is 1000 steps).
+    
+    Returns
+    -------
+    SimulationResult or SceneResult
+        A SimulationResult for a Particle, PlanarBody or RigidBody: one row per record, n records (t, p_W, q_WB, v_W,
+        w_B, kinetic_energy, total_energy, angular_momentum_norm, quaternion_norm_error, work; diverged,
+        unconverged_steps, elapsed_seconds). A SceneResult for a Scene, a CompiledScene, a pivoted body or a Gyrostat.
+    
+    Raises
+    ------
+    ValueError
+        A bad argument, named: dt not > 0, steps < 0, both or neither of steps and duration, a duration that is not a
+        whole number of steps of dt (the message gives the nearest durations that are), an unknown method (with the
+        nearest name), record_every < 1, a recording larger than the memory available (record_every, with both
+        figures), a quantity of another dimension, loads or gravity for a scene.
+    TypeError
+        model not one of the kinds listed, or initial not of its kind (the message names it).
+    KeyboardInterrupt
+        Ctrl-C stops the run within about 0.05 s however long a step takes (a step under way is finished first); no
+        result is kept.
+    
+    Warns
+    -----
+    RuntimeWarning
+        The state became non-finite (the run stops there and diverged is True); a recorded quantity is not finite
+        although the state is (an overflow, e.g. the kinetic energy of |v_W| > 1e154 m/s; the message names the
+        quantities and their first times); an implicit solve did not converge (naming dt and the count).
+    
+    See Also
+    --------
+    step, simulate_batch, methods, SimulationResult, AppliedLoad, Scene
+    
+    Notes
+    -----
+    A Particle records q = identity and w = 0; a PlanarBody records p = (x, y, 0), q = Rz(theta), w = (0, 0, omega).
+    work is integrated by the same method as the motion, so kinetic_energy - kinetic_energy[0] ~ work.
+    
+    Examples
+    --------
+    A dropped particle follows z = -1/2 g t^2; rk4 integrates a quadratic motion exactly (round-off only):
+    
+    >>> r = rd.simulate(rd.Particle(1.0), rd.ParticleState(), dt=0.01, duration=2.0, gravity=True, record_every=50)
+    >>> r.t
+    array([0. , 0.5, 1. , 1.5, 2. ])
+    >>> np.allclose(r.p_W[:, 2], -0.5 * 9.81 * r.t**2, rtol=0, atol=1e-12)
+    True
+    
+    A torque-free body keeps its kinetic energy and |H_G|; implicit_midpoint holds both to its Newton tolerance
+    (1e-14 per step):
+    
+    >>> body = rd.RigidBody(2.0, [1.0, 2.0, 3.0])
+    >>> r = rd.simulate(body, rd.RigidBodyState(w_B=[1.0, 0.1, 0.2]), dt=0.01, steps=1000, method="implicit_midpoint")
+    >>> r.q_WB.shape, bool(np.ptp(r.kinetic_energy) < 1e-10), bool(np.ptp(r.angular_momentum_norm) < 1e-10)
+    ((1001, 4), True, True)
+    
+    A force of 2 N on 1 kg for the first second (the step across t = 1 s is split there):
+    
+    >>> push = rd.AppliedLoad(force=[2.0, 0.0, 0.0], t_end=1.0)
+    >>> rd.simulate(rd.Particle(1.0), rd.ParticleState(), dt=0.3, steps=5, loads=push).v_W[-1].round(12)
+    array([2., 0., 0.])
     """
 def simulate_batch(model: typing.Any, initial: typing.Any, dt: typing.Any, steps: typing.Any = None, method: typing.Any = None, record_every: typing.Any = 1, loads: typing.Any = None, gravity: typing.Any = None, t0: typing.Any = 0.0, threads: typing.Any = None, simd: typing.Any = False, scalar_first: typing.Any = False, progress: typing.Any = None, *, duration: typing.Any = None) -> BatchResult | BatchSceneResult:
     """
-    N independent runs of `model`, one per initial state, with per-sample parameters, integrated in C++ on
-    `threads` threads with the GIL released. Sample i is exactly rigiddyn.simulate(model_i, initial[i], dt_i, steps,
-    method, record_every, loads_i, gravity_i, t0): the records equal N serial simulate calls bitwise, whatever the
-    thread count.
+    N independent runs of a body or a scene, one per initial state, in parallel.
     
-    model: a Particle, PlanarBody or RigidBody shared by every sample, or a list of N of one kind (per-sample
-      mass [kg] and inertia about the centre of mass in B [kg m^2]); or a Scene or CompiledScene, or a list of N of
-      them (of the same structure: bodies and elements). A scene with a PythonForce runs, slowly: each call takes
-      the GIL, so its samples run one at a time.
-    initial: a list of N states of the body's kind (ParticleState, PlanarBodyState, RigidBodyState), or a dict of
-      stacked arrays: RigidBody {'p_W': (N, 3) [m], 'q_WB': (N, 4) (x, y, z, w), or (w, x, y, z) with scalar_first,
-      'v_W': (N, 3) [m/s] in W, 'w_B': (N, 3) [rad/s] in B}; Particle {'p_W', 'v_W'}; PlanarBody {'p_W': (N, 2) [m],
-      'theta': (N,) [rad], 'v_W': (N, 2) [m/s], 'omega': (N,) [rad/s]}. A scene: a list of N lists of the states of
-      its bodies.
-    dt: a float [s] for every sample or an (N,) array [s] (pint quantities converted). steps (or duration= by
-      keyword), record_every, t0, method, scalar_first: as simulate, shared by every sample (so every sample has the
-      same record count n; a duration must give the same number of steps at every sample's dt).
-    loads (bodies): as simulate (one schedule for every sample), or a list of N schedules (lists of AppliedLoad).
-    gravity (bodies): as simulate (None/False, True, a 3-vector [m/s^2] in W), or an (N, 3) array [m/s^2] in W.
-      A scene declares its loads and gravity as elements (loads and gravity must be None).
-    threads: None (the default: every hardware thread) or an int >= 1.
-    simd: True runs the SIMD path across samples (RigidBody, method 'rk4', constant loads: a force in W and a
-      torque in B without time window): equal to the scalar path up to round-off, not bitwise.
-    progress: None or a callable(samples_done), called with the GIL from the calling thread once before the samples
-      start and then about every 0.05 s; an exception it raises stops every sample and propagates. Ctrl-C stops every sample within about 0.05 s however
-      long a step takes (the steps under way are finished first) and raises KeyboardInterrupt (no result is kept).
+    Integrated in C++ on `threads` threads with the GIL released. Sample i is exactly
+    ``rigiddyn.simulate(model_i, initial[i], dt_i, steps, method, record_every, loads_i, gravity_i, t0)``: the
+    records equal N serial simulate calls bitwise, whatever the thread count (the SIMD path: up to round-off).
+    steps (or duration), record_every, t0, method and scalar_first are shared by every sample, so every sample has
+    the same record count n.
     
-    Returns a BatchResult (bodies) or a BatchSceneResult (scenes): the arrays of SimulationResult / SceneResult
-    with a leading sample axis (N, n, ...). A sample whose state becomes non-finite stops alone: diverged[i] is
-    True, filled[i] its rows, the rest of its rows NaN; one RuntimeWarning names how many samples diverged and
-    the first few; another names the samples whose recorded quantities became non-finite although their state
-    stayed finite (an overflow, e.g. a kinetic energy of |v_W| > 1e154 m/s), each quantity with its first time.
-    Input errors (N = 0, mismatched N between model, initial, dt, gravity and loads, a wrong dict key or shape,
-    threads < 1) raise ValueError/TypeError naming the argument before any sample runs; an error of one sample (a
-    bad state, a body running out of mass) raises ValueError "sample <i>: ..." for the lowest such sample, after
-    every sample has run. An exception raised by a PythonForce (or its wrong return value) stops every sample
-    within about 0.05 s and is raised, its message prefixed "sample <i>: " (the first sample that raised; a
-    KeyboardInterrupt as it is).
+    Parameters
+    ----------
+    model : Particle, PlanarBody, RigidBody, Scene or CompiledScene, or a list of N of them
+        One model shared by every sample, or a list of N of one kind (per-sample mass [kg] and inertia about the
+        centre of mass in B [kg m^2]; scenes of the same structure: bodies and elements). A scene with a
+        PythonForce runs, slowly: each call takes the GIL, so its samples run one at a time.
+    initial : list of states, or dict of arrays
+        A list of N states of the body's kind (ParticleState, PlanarBodyState, RigidBodyState), or a dict of
+        stacked arrays: RigidBody {'p_W': (N, 3) [m] in W, 'q_WB': (N, 4) (x, y, z, w), or (w, x, y, z) with
+        scalar_first, 'v_W': (N, 3) [m/s] in W, 'w_B': (N, 3) [rad/s] in B}; Particle {'p_W', 'v_W'}; PlanarBody
+        {'p_W': (N, 2) [m], 'theta': (N,) [rad], 'v_W': (N, 2) [m/s], 'omega': (N,) [rad/s]}. A scene: a list of N
+        lists of the states of its bodies.
+    dt : float, array_like, shape (N,), or pint.Quantity
+        Step [s] of every sample, or of each.
+    steps : int, optional
+        Number of steps (>= 0) of every sample. Exactly one of steps and duration.
+    method : str, optional
+        A name of methods(); None (the default): 'rk4', or the method the CompiledScenes were compiled for (the same
+        for every sample).
+    record_every : int, default 1
+        Record every record_every-th step (>= 1), plus the first and the last.
+    loads : AppliedLoad, sequence of AppliedLoad, or list of N lists of AppliedLoad, optional
+        Bodies: one schedule for every sample, as simulate, or one per sample. A scene takes None (it declares its
+        loads as elements).
+    gravity : None, bool, array_like, shape (3,) or (N, 3), default None
+        Bodies: g_W [m/s^2] in W for every sample (None or False: none; True: (0, 0, -9.81)), or one per sample. A
+        scene takes None.
+    t0 : float or pint.Quantity, default 0.0
+        Initial time [s] of every sample.
+    threads : int, optional
+        Number of threads, >= 1 (None, the default: every hardware thread, default_thread_count()).
+    simd : bool, default False
+        Run the SIMD path across samples (RigidBody, method 'rk4', constant loads: a force in W and a torque in B
+        without time window): equal to the scalar path up to round-off, not bitwise.
+    scalar_first : bool, default False
+        Quaternions, read from a dict and recorded, as (w, x, y, z).
+    progress : callable, optional
+        progress(samples_done), called with the GIL from the calling thread once before the samples start and then
+        about every 0.05 s; an exception it raises stops every sample and propagates.
+    duration : float or pint.Quantity, keyword-only, optional
+        Length of the runs [s] instead of steps: it must give the same whole number of steps at every sample's dt.
+    
+    Returns
+    -------
+    BatchResult or BatchSceneResult
+        For bodies a BatchResult, for scenes a BatchSceneResult: the arrays of SimulationResult / SceneResult with a
+        leading sample axis (N, n, ...). A sample whose state becomes non-finite stops alone: diverged[i] is True,
+        filled[i] its rows, the rest of its rows NaN.
+    
+    Raises
+    ------
+    ValueError
+        Input errors, before any sample runs, naming the argument: N = 0, mismatched N between model, initial, dt,
+        gravity and loads, a wrong dict key or shape, threads < 1, simd for another kind or method, a duration
+        giving different step counts. An error of one sample (a bad state, a body running out of mass), after every
+        sample has run: "sample <i>: ..." for the lowest such sample.
+    TypeError
+        A model or state of the wrong kind (the message names it).
+    Exception
+        An exception raised by a PythonForce (or its wrong return value) stops every sample within about 0.05 s and
+        is raised, its message prefixed "sample <i>: " (the first sample that raised; a KeyboardInterrupt as it is).
+    KeyboardInterrupt
+        Ctrl-C stops every sample within about 0.05 s however long a step takes (the steps under way are finished
+        first); no result is kept.
+    
+    Warns
+    -----
+    RuntimeWarning
+        One names how many samples diverged and the first few; another the samples whose recorded quantities
+        became non-finite although their state stayed finite (an overflow, e.g. a kinetic energy of |v_W| > 1e154
+        m/s), each quantity with its first time; another the implicit solves that did not converge.
+    
+    See Also
+    --------
+    simulate, BatchResult, BatchSceneResult, default_thread_count
+    
+    Examples
+    --------
+    Four spins; each sample equals its serial simulate bitwise:
+    
+    >>> body = rd.RigidBody(2.0, [1.0, 2.0, 3.0])
+    >>> states = [rd.RigidBodyState(w_B=[1.0, 0.0, 0.1 * i]) for i in range(4)]
+    >>> res = rd.simulate_batch(body, states, dt=0.01, steps=100, threads=2)
+    >>> res.w_B.shape, np.array_equal(res.w_B[2], rd.simulate(body, states[2], dt=0.01, steps=100).w_B)
+    ((4, 101, 3), True)
+    
+    Three particles dropped for 1 s under their own gravity fall g t^2 / 2:
+    
+    >>> zeros = np.zeros((3, 3))
+    >>> drop = rd.simulate_batch(rd.Particle(1.0), {"p_W": zeros, "v_W": zeros}, dt=0.01, duration=1.0,
+    ...                          gravity=[[0, 0, -1.0], [0, 0, -2.0], [0, 0, -3.0]], record_every=100)
+    >>> drop.t[0], drop.p_W[:, -1, 2].round(12)
+    (array([0., 1.]), array([-0.5, -1. , -1.5]))
     """
 def slerp(q0: typing.Any, q1: typing.Any, t: typing.Any, scalar_first: typing.Any = False, canonical: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
-    Spherical linear interpolation from q0 (t = 0) to q1 (t = 1), shortest path, constant rate.
+    Spherical linear interpolation from q0 (t = 0) to q1 (t = 1): shortest path, constant rate.
     
-    q(t) = q0 * exp(t log(q0^-1 * q1)), the log at angle in [0, pi]: SciPy's
-    Slerp([0, 1], Rotation.from_quat([q0, q1]))(t). Any finite t extrapolates along the arc.
-    q0, q1: (4,) or (n, 4) unit quaternions; t: float or (n,) (dimensionless fraction);
-    single items are used with every item of the stacks. Returns (4,) or (n, 4),
-    (x, y, z, w), or (w, x, y, z) if scalar_first; canonical=True gives the representative with w >= 0
-    (SciPy's as_quat(canonical=True): at w = 0 the first non-zero of x, y, z is positive).
-    To interpolate between key rotations at key times use slerp_keys.
+    q(t) = q0 ⊗ exp(t log(q0^-1 ⊗ q1)), the log at an angle in [0, pi] (Shoemake, "Animating rotation
+    with quaternion curves"). Any finite t extrapolates along the arc. SciPy:
+    ``Slerp([0, 1], Rotation.from_quat([q0, q1]))(t)``. To interpolate between key rotations at key
+    times use `slerp_keys`.
+    
+    Parameters
+    ----------
+    q0, q1 : array_like, shape (4,) or (n, 4)
+        Unit quaternions (x, y, z, w), or (w, x, y, z) if `scalar_first`; norm within 1e-6 of 1 (then
+        normalised).
+    t : float or array_like, shape (n,)
+        Fraction of the way from q0 to q1 (dimensionless); single items of q0, q1, t are used with every
+        item of the stacks.
+    scalar_first : bool, default False
+        Read and write quaternions scalar first, (w, x, y, z), as MuJoCo does.
+    canonical : bool, default False
+        Return the representative with w >= 0 (SciPy's ``as_quat(canonical=True)``: at w = 0 the first
+        non-zero of x, y, z is positive).
+    
+    Returns
+    -------
+    ndarray, shape (4,) or (n, 4)
+        q(t), (x, y, z, w) or (w, x, y, z) if `scalar_first`.
+    
+    Raises
+    ------
+    ValueError
+        A quaternion with a non-finite entry or a norm farther than 1e-6 from 1 (the message names it
+        and, in a stack, the item), a non-finite t, a wrong shape, or stacks of different lengths.
+    
+    See Also
+    --------
+    slerp_keys, angular_distance
+    
+    Examples
+    --------
+    Halfway between the identity and a quarter turn about z is an eighth turn:
+    
+    >>> q1 = rd.rotvec_to_quat([0.0, 0.0, np.pi / 2])
+    >>> q = rd.slerp([0.0, 0.0, 0.0, 1.0], q1, 0.5)
+    >>> f"{rd.quat_to_rotvec(q)[2]:.12f}", f"{np.pi / 4:.12f}"
+    ('0.785398163397', '0.785398163397')
     """
 def slerp_keys(times: typing.Any, q: typing.Any, t: typing.Any, scalar_first: typing.Any = False, canonical: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
-    Slerp through key rotations q[k] at key times times[k]: SciPy's Slerp(times, rotations)(t).
+    Slerp through key rotations at key times.
     
-    times: (k,) strictly increasing, k >= 2 [any time unit]; q: (k, 4) unit quaternions;
-    t: float or (m,) within [times[0], times[-1]] (ValueError outside). On [times[j], times[j+1]]
-    the result is slerp(q[j], q[j+1], (t - times[j]) / (times[j+1] - times[j])).
-    Returns (4,) or (m, 4), (x, y, z, w), or (w, x, y, z) if scalar_first; canonical=True gives the representative with w >= 0
-    (SciPy's as_quat(canonical=True): at w = 0 the first non-zero of x, y, z is positive).
+    On [times[j], times[j+1]] the result is slerp(q[j], q[j+1], (t - times[j]) / (times[j+1] -
+    times[j])). SciPy: ``Slerp(times, Rotation.from_quat(q))(t)``.
+    
+    Parameters
+    ----------
+    times : array_like, shape (k,)
+        Key times, strictly increasing, k >= 2 (any time unit).
+    q : array_like, shape (k, 4)
+        Key rotations, unit quaternions (x, y, z, w), or (w, x, y, z) if `scalar_first`; norm within
+        1e-6 of 1 (then normalised).
+    t : float or array_like, shape (m,)
+        Times within [times[0], times[-1]], in the unit of `times`.
+    scalar_first : bool, default False
+        Read and write quaternions scalar first, (w, x, y, z), as MuJoCo does.
+    canonical : bool, default False
+        Return the representative with w >= 0 (SciPy's ``as_quat(canonical=True)``: at w = 0 the first
+        non-zero of x, y, z is positive).
+    
+    Returns
+    -------
+    ndarray, shape (4,) or (m, 4)
+        The interpolated rotations, (x, y, z, w) or (w, x, y, z) if `scalar_first`.
+    
+    Raises
+    ------
+    ValueError
+        `times` not strictly increasing, `q` not of shape (k, 4) or not unit quaternions, `t` outside
+        the key times or non-finite (each message names the argument).
+    TypeError
+        `times` not a 1-d array.
+    
+    See Also
+    --------
+    slerp
+    
+    Examples
+    --------
+    Three keys about z; at t = 1.5 the turn is halfway from the second key to the third:
+    
+    >>> q = rd.rotvec_to_quat([[0.0, 0.0, 0.0], [0.0, 0.0, 0.5], [0.0, 0.0, 1.5]])
+    >>> qt = rd.slerp_keys([0.0, 1.0, 2.0], q, [0.5, 1.5])
+    >>> rd.quat_to_rotvec(qt).round(12)
+    array([[0.  , 0.  , 0.25],
+           [0.  , 0.  , 1.  ]])
     """
 def solid_box(size: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
     """
-    Solid box, edges size (3,) [m] along x, y, z. Density [kg/m^3]. Give exactly one of mass= [kg] or density=.
+    Mass properties of a solid rectangular box.
+    
+    Edges (a, b, c) along x, y, z: I = m/12 diag(b^2 + c^2, a^2 + c^2, a^2 + b^2) about the centre.
+    
+    Parameters
+    ----------
+    size : array_like, shape (3,)
+        Edge lengths (a, b, c) [m] along x, y, z.
+    mass : float, optional
+        Total mass m [kg], finite and > 0. Give exactly one of `mass` and `density`.
+    density : float, optional
+        Volume density [kg/m^3], finite and > 0: m = density * volume.
+    
+    Returns
+    -------
+    SpatialInertia
+        Mass [kg], centre of mass at the origin [m] and inertia_com [kg m^2] about it, expressed in the
+        shape's frame (edges along x, y, z).
+    
+    Raises
+    ------
+    ValueError
+        A `size` entry not finite and > 0;
+        not exactly one of `mass` and `density`, or that one not finite and > 0 (the message names
+        the argument).
+    TypeError
+        An argument that is not a real number.
+    
+    See Also
+    --------
+    box_shell, thin_plate, solid_ellipsoid, SpatialInertia.transformed
+    
+    Examples
+    --------
+    >>> rd.solid_box([1.0, 2.0, 3.0], mass=12.0).inertia_com.diagonal()  # m/12 (b^2+c^2, ...)
+    array([13., 10.,  5.])
     """
 def solid_capsule(radius: typing.Any, length: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
     """
-    Solid capsule along z: cylinder of the given length [m] plus two hemispherical caps of radius [m].
-    Density [kg/m^3]. Give exactly one of mass= [kg] or density=.
+    Mass properties of a solid capsule along z: a cylinder capped by two hemispheres.
+    
+    Cylinder of radius r and length h, total length h + 2r. With m_c = rho pi r^2 h and m_h = rho 2/3 pi r^3
+    (each hemisphere): I_zz = m_c r^2/2 + 4/5 m_h r^2,
+    I_xx = I_yy = m_c (h^2/12 + r^2/4) + 2 m_h (2/5 r^2 + h^2/4 + 3/8 h r). A given mass is split in the
+    same proportions.
+    
+    Parameters
+    ----------
+    radius : float
+        Radius r [m] of the cylinder and the caps, > 0.
+    length : float
+        Length h [m] of the cylinder along z, finite and >= 0.
+    mass : float, optional
+        Total mass m [kg], finite and > 0. Give exactly one of `mass` and `density`.
+    density : float, optional
+        Volume density [kg/m^3], finite and > 0: m = density * volume.
+    
+    Returns
+    -------
+    SpatialInertia
+        Mass [kg], centre of mass at the origin [m] and inertia_com [kg m^2] about it, expressed in the
+        shape's frame (axis z).
+    
+    Raises
+    ------
+    ValueError
+        `radius` not finite and > 0, or `length` not finite and >= 0;
+        not exactly one of `mass` and `density`, or that one not finite and > 0 (the message names
+        the argument).
+    TypeError
+        An argument that is not a real number.
+    
+    See Also
+    --------
+    solid_cylinder, solid_sphere, SpatialInertia.transformed
+    
+    Examples
+    --------
+    With a cylinder of length 0 it is a sphere:
+    
+    >>> rd.solid_capsule(1.0, 0.0, mass=1.0).is_approx(rd.solid_sphere(1.0, mass=1.0))
+    True
     """
 def solid_cone(radius: typing.Any, height: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
     """
-    Solid cone, axis z, apex at z = 3h/4, base at z = -h/4 (com at origin): I_zz = 3/10 m r^2,
-    I_xx = m (3/20 r^2 + 3/80 h^2). Density [kg/m^3]. Give exactly one of mass= [kg] or density=.
+    Mass properties of a solid right circular cone, axis z.
+    
+    Apex at z = 3h/4 and base at z = -h/4 (centre of mass at the origin):
+    I_zz = 3/10 m r^2, I_xx = I_yy = m (3/20 r^2 + 3/80 h^2).
+    
+    Parameters
+    ----------
+    radius : float
+        Base radius r [m].
+    height : float
+        Height h [m] along z.
+    mass : float, optional
+        Total mass m [kg], finite and > 0. Give exactly one of `mass` and `density`.
+    density : float, optional
+        Volume density [kg/m^3], finite and > 0: m = density * volume.
+    
+    Returns
+    -------
+    SpatialInertia
+        Mass [kg], centre of mass at the origin [m] and inertia_com [kg m^2] about it, expressed in the
+        shape's frame (axis z, apex at z = 3h/4).
+    
+    Raises
+    ------
+    ValueError
+        `radius` or `height` not finite and > 0;
+        not exactly one of `mass` and `density`, or that one not finite and > 0 (the message names
+        the argument).
+    TypeError
+        An argument that is not a real number.
+    
+    See Also
+    --------
+    solid_cylinder, SpatialInertia.transformed
+    
+    Examples
+    --------
+    >>> rd.solid_cone(1.0, 4.0, mass=10.0).inertia_com.diagonal().round(12)
+    array([7.5, 7.5, 3. ])
     """
 def solid_cylinder(radius: typing.Any, height: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
     """
-    Solid cylinder, axis z: I_zz = m r^2/2, I_xx = m (3 r^2 + h^2)/12. Density [kg/m^3]. Give exactly one of mass= [kg] or density=.
+    Mass properties of a solid circular cylinder, axis z.
+    
+    I_zz = m r^2/2, I_xx = I_yy = m (3 r^2 + h^2)/12 about the centre.
+    
+    Parameters
+    ----------
+    radius : float
+        Radius r [m].
+    height : float
+        Height h [m] along z.
+    mass : float, optional
+        Total mass m [kg], finite and > 0. Give exactly one of `mass` and `density`.
+    density : float, optional
+        Volume density [kg/m^3], finite and > 0: m = density * volume.
+    
+    Returns
+    -------
+    SpatialInertia
+        Mass [kg], centre of mass at the origin [m] and inertia_com [kg m^2] about it, expressed in the
+        shape's frame (axis z).
+    
+    Raises
+    ------
+    ValueError
+        `radius` or `height` not finite and > 0;
+        not exactly one of `mass` and `density`, or that one not finite and > 0 (the message names
+        the argument).
+    TypeError
+        An argument that is not a real number.
+    
+    See Also
+    --------
+    hollow_cylinder, thin_disk, thin_rod, solid_capsule, SpatialInertia.transformed
+    
+    Examples
+    --------
+    >>> rd.solid_cylinder(1.0, 2.0, mass=12.0).inertia_com.diagonal()  # m (3r^2+h^2)/12, m r^2/2
+    array([7., 7., 6.])
     """
 def solid_ellipsoid(semi_axes: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
     """
-    Solid ellipsoid, semi-axes (3,) [m]: I = m/5 diag(b^2+c^2, a^2+c^2, a^2+b^2). Density [kg/m^3]. Give exactly one of mass= [kg] or density=.
+    Mass properties of a solid ellipsoid.
+    
+    Semi-axes (a, b, c) along x, y, z: I = m/5 diag(b^2 + c^2, a^2 + c^2, a^2 + b^2) about the centre.
+    
+    Parameters
+    ----------
+    semi_axes : array_like, shape (3,)
+        Semi-axes (a, b, c) [m] along x, y, z.
+    mass : float, optional
+        Total mass m [kg], finite and > 0. Give exactly one of `mass` and `density`.
+    density : float, optional
+        Volume density [kg/m^3], finite and > 0: m = density * volume.
+    
+    Returns
+    -------
+    SpatialInertia
+        Mass [kg], centre of mass at the origin [m] and inertia_com [kg m^2] about it, expressed in the
+        shape's frame (semi-axes along x, y, z).
+    
+    Raises
+    ------
+    ValueError
+        A `semi_axes` entry not finite and > 0;
+        not exactly one of `mass` and `density`, or that one not finite and > 0 (the message names
+        the argument).
+    TypeError
+        An argument that is not a real number.
+    
+    See Also
+    --------
+    solid_sphere, solid_box, SpatialInertia.transformed
+    
+    Examples
+    --------
+    >>> rd.solid_ellipsoid([1.0, 2.0, 3.0], mass=5.0).inertia_com.diagonal()
+    array([13., 10.,  5.])
+    >>> rd.solid_ellipsoid([1.0, 1.0, 1.0], mass=1.0).is_approx(rd.solid_sphere(1.0, mass=1.0))
+    True
     """
 def solid_mesh(vertices: typing.Any, faces: typing.Any, *, mass: typing.Any = None, density: typing.Any = None, weld_tolerance: typing.Any = None) -> SpatialInertia:
     """
@@ -4120,88 +9680,578 @@ def solid_mesh(vertices: typing.Any, faces: typing.Any, *, mass: typing.Any = No
     """
 def solid_sphere(radius: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
     """
-    Solid sphere, radius [m]: I = 2/5 m r^2 1. Density [kg/m^3]. Give exactly one of mass= [kg] or density=.
+    Mass properties of a solid sphere.
+    
+    I = 2/5 m r^2 1 about the centre.
+    
+    Parameters
+    ----------
+    radius : float
+        Radius r [m].
+    mass : float, optional
+        Total mass m [kg], finite and > 0. Give exactly one of `mass` and `density`.
+    density : float, optional
+        Volume density [kg/m^3], finite and > 0: m = density * volume.
+    
+    Returns
+    -------
+    SpatialInertia
+        Mass [kg], centre of mass at the origin [m] and inertia_com [kg m^2] about it, expressed in the
+        shape's frame.
+    
+    Raises
+    ------
+    ValueError
+        `radius` not finite and > 0;
+        not exactly one of `mass` and `density`, or that one not finite and > 0 (the message names
+        the argument).
+    TypeError
+        An argument that is not a real number.
+    
+    See Also
+    --------
+    hollow_sphere, spherical_shell, solid_ellipsoid, SpatialInertia.transformed
+    
+    Examples
+    --------
+    A solid sphere of 2 kg and radius 0.5 m has I = 2/5 m r^2 = 0.2 kg m^2 about every axis:
+    
+    >>> rd.solid_sphere(0.5, mass=2.0).inertia_com.diagonal()
+    array([0.2, 0.2, 0.2])
+    >>> f"{rd.solid_sphere(0.1, density=1000.0).mass:.6f}"  # 4/3 pi r^3 rho
+    '4.188790'
     """
 def solid_tetrahedron(vertices: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
     """
-    Solid tetrahedron with vertices (4, 3) [m], expressed in their frame. Density [kg/m^3]. Give exactly
-    one of mass= [kg] or density=.
+    Mass properties of a solid tetrahedron given by its vertices.
+    
+    The centre of mass is the mean of the vertices; the inertia comes from the exact second moment
+    integral x x^T dV = V/20 (sum v_i v_i^T + s s^T), s = sum v_i. Expressed in the frame of the vertices.
+    
+    Parameters
+    ----------
+    vertices : array_like, shape (4, 3)
+        The four vertices [m], any order, in any frame A.
+    mass : float, optional
+        Total mass m [kg], finite and > 0. Give exactly one of `mass` and `density`.
+    density : float, optional
+        Volume density [kg/m^3], finite and > 0: m = density * volume.
+    
+    Returns
+    -------
+    SpatialInertia
+        Mass [kg], centre of mass [m] and inertia_com [kg m^2] about it, expressed in A.
+    
+    Raises
+    ------
+    ValueError
+        `vertices` not of shape (4, 3), not finite or of zero volume; not exactly one of `mass` and
+        `density`, or that one not finite and > 0 (the message names the argument).
+    
+    See Also
+    --------
+    solid_mesh, from_point_masses
+    
+    Examples
+    --------
+    The corner tetrahedron has volume 1/6 m^3 and its centre of mass at (1/4, 1/4, 1/4):
+    
+    >>> tet = rd.solid_tetrahedron([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], density=6.0)
+    >>> f"{tet.mass:.12f}", tet.com
+    ('1.000000000000', array([0.25, 0.25, 0.25]))
     """
 def spherical_shell(radius: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
     """
-    Thin spherical surface [m]: I = 2/3 m r^2 1. Density [kg/m^2]. Give exactly one of mass= [kg] or density=.
+    Mass properties of a thin spherical surface.
+    
+    I = 2/3 m r^2 1 about the centre.
+    
+    Parameters
+    ----------
+    radius : float
+        Radius r [m].
+    mass : float, optional
+        Total mass m [kg], finite and > 0. Give exactly one of `mass` and `density`.
+    density : float, optional
+        Area density [kg/m^2], finite and > 0: m = density * area.
+    
+    Returns
+    -------
+    SpatialInertia
+        Mass [kg], centre of mass at the origin [m] and inertia_com [kg m^2] about it, expressed in the
+        shape's frame.
+    
+    Raises
+    ------
+    ValueError
+        `radius` not finite and > 0;
+        not exactly one of `mass` and `density`, or that one not finite and > 0 (the message names
+        the argument).
+    TypeError
+        An argument that is not a real number.
+    
+    See Also
+    --------
+    hollow_sphere, solid_sphere, SpatialInertia.transformed
+    
+    Examples
+    --------
+    >>> rd.spherical_shell(1.0, mass=3.0).inertia_com.diagonal()  # 2/3 m r^2
+    array([2., 2., 2.])
     """
 def step(model: typing.Any, state: typing.Any, dt: typing.Any, method: typing.Any = None, loads: typing.Any = None, gravity: typing.Any = None, t: typing.Any = None) -> typing.Any:
     """
-    One step of `method` (see methods()) of length dt [s] from `state` at time t [s] to t + dt under `loads`
-    (AppliedLoad or sequence) and `gravity` (None/False, the default: none; True for (0, 0, -9.81) m/s^2, or a
-    3-vector [m/s^2] in W). A step across a switch time of the loads is split there, as in simulate.
-    dt and t: each a float [s] or a pint quantity (converted to s; ValueError naming it for another dimension).
+    One step of `method` from `state` at time t to t + dt.
     
-    t=None (default): returns the new state (same type as `state`); ValueError (naming t) if a load acts on a
-      time window (finite t_start or t_end), since the step then depends on the time.
-    t given: returns (new state, t + dt), e.g. `state, t = step(body, state, dt, loads=loads, t=t)` in a loop.
-    Warns RuntimeWarning if the new state is not finite, as simulate does. ValueError names a bad argument.
-    method: a name of methods(); None (the default): 'rk4', or the method a CompiledScene was compiled for.
-    model may also be a Scene or CompiledScene with `state` a list of the states of its bodies: returns the
-    list of new states (or (list, t + dt)); ValueError naming model for a scene with a MassFlow (a state does
-    not carry the mass: use simulate); or a PivotedBody / PivotedPlanarBody / Gyrostat with its state (the step of its
-    one-body scene, as simulate): returns the new state (or (state, t + dt)).
+    The step `simulate` takes, for a loop written in Python. A step across a switch time of the loads (a t_start or
+    t_end) is split there, as in simulate.
+    
+    Parameters
+    ----------
+    model : Particle, PlanarBody, RigidBody, PivotedBody, PivotedPlanarBody, Gyrostat, Scene or CompiledScene
+        What to step. A PivotedBody, PivotedPlanarBody or Gyrostat steps as its one-body scene, as in simulate.
+    state : ParticleState, PlanarBodyState, RigidBodyState, PivotedBodyState, ..., or list
+        The state of `model`'s kind; for a Scene or CompiledScene, a list of the states of its bodies.
+    dt : float or pint.Quantity
+        Step [s], finite and > 0.
+    method : str, optional
+        A name of methods(); None (the default): 'rk4', or the method a CompiledScene was compiled for.
+    loads : AppliedLoad or sequence of AppliedLoad, optional
+        The applied loads (None: none), as simulate takes them.
+    gravity : None, bool or array_like, shape (3,), default None
+        Uniform gravity g_W [m/s^2] in W: None or False (none), True ((0, 0, -9.81)) or a vector; as simulate.
+    t : float or pint.Quantity, optional
+        The time of `state` [s]. Needed when a load acts on a time window (finite t_start or t_end).
+    
+    Returns
+    -------
+    state or (state, float)
+        t None: the new state, of the type of `state` (a list of new states for a scene). t given: (new state,
+        t + dt), e.g. ``state, t = step(body, state, dt, loads=loads, t=t)`` in a loop.
+    
+    Raises
+    ------
+    ValueError
+        A bad argument, named; t None while a load acts on a time window (the step then depends on the time); a
+        scene with a MassFlow (a state does not carry the mass: use simulate).
+    TypeError
+        model not one of the kinds listed, or state not of its kind (the message names it).
+    
+    Warns
+    -----
+    RuntimeWarning
+        The new state is not finite, as simulate warns.
+    
+    See Also
+    --------
+    simulate, methods
+    
+    Examples
+    --------
+    Ten steps of 0.1 s at 1 rad/s about z turn a body 1 rad (rk4):
+    
+    >>> body = rd.RigidBody(2.0, [1.0, 2.0, 3.0])
+    >>> state, t = rd.RigidBodyState(w_B=[0.0, 0.0, 1.0]), 0.0
+    >>> for _ in range(10):
+    ...     state, t = rd.step(body, state, 0.1, t=t)
+    >>> print(f"{t:.12f}", rd.quat_to_rotvec(state.q_WB).round(6))
+    1.000000000000 [0. 0. 1.]
+    
+    One step of a falling particle (rk4 is exact on it):
+    
+    >>> rd.step(rd.Particle(1.0), rd.ParticleState(), 0.5, gravity=True).v_W.round(12)
+    array([ 0.   ,  0.   , -4.905])
     """
 def symmetry_planes(masses: typing.Any, positions: typing.Any, tolerance: typing.Any = 1e-09) -> list:
     """
-    Planes of symmetry (Craig "Plane of Symmetry") of point masses (n,) [kg] > 0 at positions
-    (n, 3) [m]: the planes whose reflection maps every point onto a point of equal mass, within
-    tolerance * (largest distance from the centre of mass to a point) [m] and tolerance * mass.
-    Returns a list of (normal (3,) unit, largest-magnitude component positive; point (3,) [m] = the
-    centre of mass), in the frame of the positions. Candidates: the principal axes, and when principal
-    moments coincide, normals built from the points; for such
-    degenerate bodies (cube, regular tetrahedron) the planes found among them, not a proof of none else.
+    Planes of symmetry of point masses (Craig, "Plane of Symmetry").
+    
+    A plane qualifies when its reflection maps every point onto a point of equal mass, within
+    tolerance * L [m] (L the largest distance from the centre of mass to a point) and tolerance * mass.
+    Candidates: the principal axes, and when principal moments coincide, normals built from the points;
+    for such degenerate bodies (cube, regular tetrahedron) the planes found among them, not a proof of
+    none else.
+    
+    Parameters
+    ----------
+    masses : array_like, shape (n,)
+        Masses [kg], > 0.
+    positions : array_like, shape (n, 3)
+        Positions [m], in any frame A.
+    tolerance : float, default 1e-9
+        Relative tolerance, >= 0.
+    
+    Returns
+    -------
+    list of tuple (ndarray, ndarray)
+        One (normal, point) per plane, in A: normal, shape (3,), unit, its largest-magnitude component
+        positive; point, shape (3,) [m], the centre of mass.
+    
+    Raises
+    ------
+    ValueError
+        Shapes that do not match, bad masses or a negative tolerance (the message names it).
+    
+    See Also
+    --------
+    mesh_symmetry_planes, SpatialInertia.admits_symmetry_plane
+    
+    Examples
+    --------
+    A dumbbell along x is symmetric in the three coordinate planes through its centre:
+    
+    >>> planes = rd.symmetry_planes([1.0, 1.0], [[-1.0, 0, 0], [1.0, 0, 0]])
+    >>> [normal for normal, point in planes]
+    [array([1., 0., 0.]), array([0., 1., 0.]), array([0., 0., 1.])]
     """
 def thin_disk(radius: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
     """
-    Thin disk in the xy plane: I = m r^2 diag(1/4, 1/4, 1/2). Density [kg/m^2]. Give exactly one of mass= [kg] or density=.
+    Mass properties of a thin circular disk in the xy plane.
+    
+    I_xx = I_yy = m r^2/4, I_zz = m r^2/2 about the centre.
+    
+    Parameters
+    ----------
+    radius : float
+        Radius r [m].
+    mass : float, optional
+        Total mass m [kg], finite and > 0. Give exactly one of `mass` and `density`.
+    density : float, optional
+        Area density [kg/m^2], finite and > 0: m = density * area.
+    
+    Returns
+    -------
+    SpatialInertia
+        Mass [kg], centre of mass at the origin [m] and inertia_com [kg m^2] about it, expressed in the
+        shape's frame (disk in the xy plane).
+    
+    Raises
+    ------
+    ValueError
+        `radius` not finite and > 0;
+        not exactly one of `mass` and `density`, or that one not finite and > 0 (the message names
+        the argument).
+    TypeError
+        An argument that is not a real number.
+    
+    See Also
+    --------
+    solid_cylinder, thin_plate, SpatialInertia.transformed
+    
+    Examples
+    --------
+    Perpendicular-axis theorem, I_zz = I_xx + I_yy:
+    
+    >>> rd.thin_disk(2.0, mass=1.0).inertia_com.diagonal()
+    array([1., 1., 2.])
     """
 def thin_plate(size_x: typing.Any, size_y: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
     """
-    Thin plate in the xy plane: I = m/12 diag(b^2, a^2, a^2 + b^2). Density [kg/m^2]. Give exactly one of mass= [kg] or density=.
+    Mass properties of a thin rectangular plate in the xy plane.
+    
+    Edges (a, b) along x, y: I = m/12 diag(b^2, a^2, a^2 + b^2) about the centre.
+    
+    Parameters
+    ----------
+    size_x : float
+        Edge a [m] along x.
+    size_y : float
+        Edge b [m] along y.
+    mass : float, optional
+        Total mass m [kg], finite and > 0. Give exactly one of `mass` and `density`.
+    density : float, optional
+        Area density [kg/m^2], finite and > 0: m = density * area.
+    
+    Returns
+    -------
+    SpatialInertia
+        Mass [kg], centre of mass at the origin [m] and inertia_com [kg m^2] about it, expressed in the
+        shape's frame (plate in the xy plane).
+    
+    Raises
+    ------
+    ValueError
+        `size_x` or `size_y` not finite and > 0;
+        not exactly one of `mass` and `density`, or that one not finite and > 0 (the message names
+        the argument).
+    TypeError
+        An argument that is not a real number.
+    
+    See Also
+    --------
+    solid_box, thin_disk, SpatialInertia.transformed
+    
+    Examples
+    --------
+    Perpendicular-axis theorem, I_zz = I_xx + I_yy:
+    
+    >>> rd.thin_plate(1.0, 2.0, mass=12.0).inertia_com.diagonal()
+    array([4., 1., 5.])
     """
 def thin_rod(length: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
     """
-    Thin rod along z: I_xx = I_yy = m L^2/12. Density [kg/m]. Give exactly one of mass= [kg] or density=.
+    Mass properties of a thin rod along z.
+    
+    I_xx = I_yy = m L^2/12, I_zz = 0 about the centre.
+    
+    Parameters
+    ----------
+    length : float
+        Length L [m] along z.
+    mass : float, optional
+        Total mass m [kg], finite and > 0. Give exactly one of `mass` and `density`.
+    density : float, optional
+        Length density [kg/m], finite and > 0: m = density * length.
+    
+    Returns
+    -------
+    SpatialInertia
+        Mass [kg], centre of mass at the origin [m] and inertia_com [kg m^2] about it, expressed in the
+        shape's frame (rod along z).
+    
+    Raises
+    ------
+    ValueError
+        `length` not finite and > 0;
+        not exactly one of `mass` and `density`, or that one not finite and > 0 (the message names
+        the argument).
+    TypeError
+        An argument that is not a real number.
+    
+    See Also
+    --------
+    solid_cylinder, SpatialInertia.transformed
+    
+    Examples
+    --------
+    >>> rd.thin_rod(2.0, mass=3.0).inertia_com.diagonal()  # m L^2/12
+    array([1., 1., 0.])
     """
 def transform_compose(R_AB: typing.Any, p_AB: typing.Any, R_BC: typing.Any, p_BC: typing.Any) -> tuple:
     """
-    X_AC = X_AB * X_BC item by item: R_AC = R_AB R_BC, p_AC = R_AB p_BC + p_AB. Rotations (3,3) or
-    (n,3,3), translations (3,) or (n,3) [m]; single items broadcast. Returns (R_AC, p_AC).
+    Compose rigid transforms item by item, X_AC = X_AB * X_BC, on arrays.
+    
+    R_AC = R_AB R_BC, p_AC = R_AB p_BC + p_AB, as Transform.__mul__, for stacks of n transforms; a single
+    item broadcasts against the stacked ones.
+    
+    Parameters
+    ----------
+    R_AB : array_like, shape (3, 3) or (n, 3, 3)
+        Rotations B -> A (orthonormal, det +1).
+    p_AB : array_like, shape (3,) or (n, 3)
+        B's origin in A [m].
+    R_BC : array_like, shape (3, 3) or (n, 3, 3)
+        Rotations C -> B.
+    p_BC : array_like, shape (3,) or (n, 3)
+        C's origin in B [m].
+    
+    Returns
+    -------
+    R_AC : ndarray, shape (3, 3) or (n, 3, 3)
+        Rotations C -> A.
+    p_AC : ndarray, shape (3,) or (n, 3)
+        C's origin in A [m] (stacked if any input is).
+    
+    Raises
+    ------
+    ValueError
+        A non-rotation (naming it and the item, e.g. R_AB[2]), a non-finite value, a bad shape, or
+        stacks of different lengths (naming the argument).
+    
+    See Also
+    --------
+    Transform, transform_points
+    
+    Examples
+    --------
+    Two quarter turns about z, each with a step of 1 m along its frame's x:
+    
+    >>> R, p = rd.transform_compose(rd.rot_z(np.pi / 2), [1.0, 0, 0], rd.rot_z(np.pi / 2), [1.0, 0, 0])
+    >>> bool(np.allclose(R, rd.rot_z(np.pi))), p.round(12)
+    (True, array([1., 1., 0.]))
     """
 def transform_points(R_AB: typing.Any, p_AB: typing.Any, p_B: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
     """
-    p_A = R_AB p_B + p_AB item by item: R_AB (3,3)|(n,3,3), p_AB (3,)|(n,3), p_B (3,)|(n,3) [m];
-    single items broadcast.
+    Map points from frame B to frame A item by item: p_A = R_AB p_B + p_AB, on arrays.
+    
+    As Transform.act_point for stacks of n transforms or points; a single item broadcasts against the
+    stacked ones.
+    
+    Parameters
+    ----------
+    R_AB : array_like, shape (3, 3) or (n, 3, 3)
+        Rotations B -> A (orthonormal, det +1).
+    p_AB : array_like, shape (3,) or (n, 3)
+        B's origin in A [m].
+    p_B : array_like, shape (3,) or (n, 3)
+        Points in B [m].
+    
+    Returns
+    -------
+    ndarray, shape (3,) or (n, 3)
+        p_A, the points in A [m] (stacked if any input is).
+    
+    Raises
+    ------
+    ValueError
+        A non-rotation, a non-finite value, a bad shape, or stacks of different lengths (naming the
+        argument).
+    
+    See Also
+    --------
+    Transform.act_point, transform_compose
+    
+    Examples
+    --------
+    >>> rd.transform_points(rd.rot_z(np.pi / 2), [1.0, 0.0, 0.0], [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0]]).round(12)
+    array([[1., 1., 0.],
+           [0., 0., 0.]])
     """
 def transport_derivative(w_AB: typing.Any, u: typing.Any, du_dt_in_B: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
     """
-    Transport theorem (Craig's "Rigid Body Dynamics" slides): d^A u/dt = d^B u/dt + w_AB x u. All (3,),
-    expressed in one frame.
+    Transport theorem: the derivative of a vector seen from A, from its derivative seen from B.
+    
+    d^A u/dt = d^B u/dt + w_AB x u (Craig's "Rigid Body Dynamics" slides).
+    
+    Parameters
+    ----------
+    w_AB : array_like, shape (3,)
+        Angular velocity of B relative to A [rad/s].
+    u : array_like, shape (3,)
+        The vector (any unit).
+    du_dt_in_B : array_like, shape (3,)
+        Its time derivative seen from B [unit of u / s].
+    
+    Returns
+    -------
+    ndarray, shape (3,)
+        d^A u/dt [unit of u / s]. All vectors are expressed in one (any) frame.
+    
+    Raises
+    ------
+    ValueError
+        A vector of another shape or non-finite (naming it).
+    
+    See Also
+    --------
+    FrameTree.transport_derivative, point_velocity
+    
+    Examples
+    --------
+    A vector fixed in B (d^B u/dt = 0) turns with B:
+    
+    >>> rd.transport_derivative([0.0, 0.0, 1.0], [1.0, 0.0, 0.0], [0.0, 0.0, 0.0])
+    array([0., 1., 0.])
     """
 def twist_to_screw(twist: typing.Any) -> Screw:
     """
-    The screw (instantaneous screw axis) of a twist [w; v]: direction w/|w|, point (w x v)/|w|^2,
-    pitch (w . v)/|w|^2, magnitude |w|; for w = 0: pitch inf, direction v/|v|, point 0, magnitude |v|.
-    ValueError for the zero twist (no axis).
+    The screw (instantaneous screw axis) of a twist.
+    
+    For V = [w; v] (angular first): direction w/|w|, point (w x v)/|w|^2, pitch (w . v)/|w|^2, magnitude
+    |w|; for w = 0: pitch inf, direction v/|v|, point 0, magnitude |v|. Chasles' theorem: every rigid
+    motion is a rotation about the axis with a slide along it.
+    
+    Parameters
+    ----------
+    twist : Motion
+        [w; v] ([rad/s], [m/s]) in any frame.
+    
+    Returns
+    -------
+    Screw
+        Its axis, pitch [m/rad] and magnitude, in the twist's frame.
+    
+    Raises
+    ------
+    ValueError
+        The zero twist (no axis), or a non-finite one.
+    TypeError
+        twist not a Motion.
+    
+    See Also
+    --------
+    screw_to_twist, Screw
+    
+    Examples
+    --------
+    >>> s = rd.twist_to_screw(rd.Motion([0.0, 0.0, 2.0], [0.0, 2.0, 0.5]))
+    >>> s.direction, s.point, s.pitch, s.magnitude
+    (array([0., 0., 1.]), array([-1.,  0.,  0.]), 0.25, 2.0)
+    >>> rd.twist_to_screw(rd.Motion(linear=[0.0, 0.0, 3.0])).pitch
+    inf
     """
 def vee(S: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
     """
-    Inverse of hat: v with hat(v) = (S - S^T)/2 (a symmetric part of S is ignored).
-    S: (3, 3) or (n, 3, 3); returns (3,) or (n, 3).
+    Vectors of skew-symmetric matrices, the inverse of `hat`.
+    
+    v with hat(v) = (S - S^T)/2: a symmetric part of S is ignored. SciPy has no equivalent.
+    
+    Parameters
+    ----------
+    S : array_like, shape (3, 3) or (n, 3, 3)
+        Matrices, finite.
+    
+    Returns
+    -------
+    ndarray, shape (3,) or (n, 3)
+        v, in the unit of S.
+    
+    Raises
+    ------
+    ValueError
+        A non-finite entry or a wrong shape (the message names `S`).
+    
+    See Also
+    --------
+    hat
+    
+    Examples
+    --------
+    >>> rd.vee(rd.hat([1.0, 2.0, 3.0]))
+    array([1., 2., 3.])
+    >>> rd.vee(rd.hat([1.0, 2.0, 3.0]) + np.ones((3, 3)))
+    array([1., 2., 3.])
     """
 def weld_vertices(vertices: typing.Any, faces: typing.Any, tolerance: typing.Any = None) -> WeldedMesh:
     """
-    Welds vertices (n, 3) [m] closer than tolerance [m] (None: 1e-8 x the bounding-box diagonal), as
-    solid_mesh does: clusters of vertices within tolerance of one another (grid hashing, O(n log n)) keep
-    their lowest-indexed vertex; faces (f, 3) repeating a vertex afterwards are dropped. Returns a
-    WeldedMesh (vertices, faces, welded_vertices, dropped_faces, ...); warns nothing.
+    Merge vertices closer than a tolerance, as solid_mesh does before integrating.
+    
+    Clusters of vertices within `tolerance` of one another (grid hashing, O(n log n)) keep their
+    lowest-indexed vertex; faces repeating a vertex afterwards are dropped. Warns nothing.
+    
+    Parameters
+    ----------
+    vertices : array_like, shape (n, 3)
+        Vertex positions [m], finite.
+    faces : array_like of int, shape (f, 3)
+        Vertex indices of each triangle, three distinct ones per face.
+    tolerance : float or None, default None
+        Weld distance [m], finite and >= 0 (None: 1e-8 x the bounding-box diagonal).
+    
+    Returns
+    -------
+    WeldedMesh
+        The kept vertices and faces, their input indices and what the weld changed.
+    
+    Raises
+    ------
+    ValueError
+        Vertices not finite, a negative tolerance, an index outside [0, n) or a face repeating an index
+        (the message names it).
+    
+    See Also
+    --------
+    solid_mesh, mesh_shell, WeldedMesh
+    
+    Examples
+    --------
+    Two triangles of a square saved as in an STL file, each with its own copy of the shared vertices:
+    
+    >>> w = rd.weld_vertices([[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]],
+    ...                      [[0, 1, 2], [3, 4, 5]])
+    >>> w.welded_vertices, w.faces
+    (2, array([[0, 1, 2],
+           [1, 3, 2]]))
     """
 FORCE_ELEMENTS: tuple = (UniformGravity, PointMassGravity, MutualGravity, GravityGradient, SpringDamper, Drag, ScheduledLoads, PythonForce, Thrust, MagneticDipole, ReactionWheel)
 __version__: str = '0.1.0'
