@@ -29,7 +29,7 @@ import rigiddyn
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE / "_ext"))  # rigiddyn_docstrings (the docstring hook), gallery_order
 
-from rigiddyn_docstrings import render_docstring  # noqa: E402
+from rigiddyn_docstrings import is_numpydoc, render_docstring, render_numpydoc  # noqa: E402
 from sphinx.util.docstrings import prepare_docstring  # noqa: E402
 
 project = "rigiddyn"
@@ -81,19 +81,21 @@ autodoc_inherit_docstrings = False   # a pybind11 class inherits object's generi
 
 
 def _render(app, what, name, obj, options, lines):  # noqa: ARG001  (Sphinx's event signature)
-    """rigiddyn's docstrings are free-form text (pybind11 and Python alike), whose line layout carries
-    meaning (aligned forms, "argument: ..." lines with indented continuations, code samples); reST would
-    reflow or misread it. Render each one faithfully (rigiddyn_docstrings.render_docstring)."""
+    """rigiddyn's docstrings in numpydoc form (napoleon has made their sections fields) stay reST, the markup
+    characters of their equations escaped (rigiddyn_docstrings.render_numpydoc); any other is free-form text,
+    whose line layout carries meaning, rendered faithfully (rigiddyn_docstrings.render_docstring)."""
     if not (name == "rigiddyn" or name.startswith("rigiddyn.")):
         return
     if what in ("data", "attribute") and lines == prepare_docstring(type(obj).__doc__ or ""):
         lines[:] = []  # a constant's type's docstring (tuple's, float's, an enum's): not the constant's
+    elif is_numpydoc(lines):
+        lines[:] = render_numpydoc(lines)
     else:
         lines[:] = render_docstring(lines)
 
 
 def setup(app):
-    app.connect("autodoc-process-docstring", _render)
+    app.connect("autodoc-process-docstring", _render, priority=400)  # before napoleon's (500) reads the sections
 
 
 # ---- gallery: every docs/examples/plot_*.py runs at build time; a failing example fails the build
