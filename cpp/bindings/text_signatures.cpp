@@ -22,26 +22,35 @@ namespace py = pybind11;
 namespace rigiddyn::bindings {
 namespace {
 
+// True for a value whose repr is a Python literal (what a text signature may hold): None, a bool, an int, a finite
+// float, a str, or a tuple or list of them
+bool is_literal(py::handle v) {
+  PyObject* o = v.ptr();
+  if (v.is_none() || PyBool_Check(o) || PyLong_Check(o) || PyUnicode_Check(o)) return true;
+  if (PyFloat_Check(o)) return std::isfinite(PyFloat_AsDouble(o));
+  if (PyTuple_Check(o) || PyList_Check(o)) {
+    for (const auto item : v) {
+      if (!is_literal(item)) return false;
+    }
+    return true;
+  }
+  return false;
+}
+
 // The default's text in a text signature: its repr when that is a Python literal (inspect evaluates it), math.inf
 // for an infinite float (inspect looks the name up), else "..." (the parameter has a default, which the docstring
 // states).
-std::string default_text(const py::detail::argument_record& arg, const py::module_& ast) {
-  if (arg.value && PyFloat_Check(arg.value.ptr())) {
-    const double x = PyFloat_AsDouble(arg.value.ptr());
-    if (std::isinf(x)) return x > 0 ? "math.inf" : "-math.inf";
+std::string default_text(const py::detail::argument_record& arg) {
+  if (!arg.value) return "...";
+  if (PyFloat_Check(arg.value.ptr()) && std::isinf(PyFloat_AsDouble(arg.value.ptr()))) {
+    return PyFloat_AsDouble(arg.value.ptr()) > 0 ? "math.inf" : "-math.inf";
   }
-  if (!arg.descr) return "...";
-  try {
-    ast.attr("literal_eval")(arg.descr);
-    return arg.descr;
-  } catch (const py::error_already_set&) {
-    return "...";
-  }
+  return is_literal(arg.value) ? py::repr(arg.value).cast<std::string>() : "...";
 }
 
 // "(a, b=False, /, *, c=None)" of one pybind11 function record; "(*args, **kwargs)" for an overload set (no single
 // signature: the docstring lists each).
-std::string text_signature(const py::detail::function_record& rec, const py::module_& ast) {
+std::string text_signature(const py::detail::function_record& rec) {
   if (rec.next) return rec.is_method ? "(self, /, *args, **kwargs)" : "(*args, **kwargs)";
   std::string out = "(";
   const auto parameter = [&](std::size_t i) -> std::string {
@@ -50,7 +59,7 @@ std::string text_signature(const py::detail::function_record& rec, const py::mod
     if (i == 0 && rec.is_method) return name;  // self: unbound through the class, dropped by a bound method
     if (rec.has_kwargs && i + 1 == rec.nargs) return "**" + name;
     if (rec.has_args && i == rec.nargs_pos) return "*" + name;
-    if (named && (rec.args[i].descr || rec.args[i].value)) name += "=" + default_text(rec.args[i], ast);
+    if (named && (rec.args[i].descr || rec.args[i].value)) name += "=" + default_text(rec.args[i]);
     return name;
   };
   for (std::size_t i = 0; i < rec.nargs; ++i) {
@@ -64,14 +73,19 @@ std::string text_signature(const py::detail::function_record& rec, const py::mod
 
 // Puts "name(signature)\n--\n\n" in front of the C-level docstring of the pybind11 function `f` (as pybind11
 // itself replaces it when an overload is added: the old string freed, a malloc'd one set).
-void add_text_signature(PyObject* f, const py::module_& ast) {
-  if (!PyCFunction_Check(f)) return;
+const py::detail::function_record* record_of(PyObject* f) {
+  if (!PyCFunction_Check(f)) return nullptr;
   PyObject* self = PyCFunction_GET_SELF(f);  // pybind11's record of the function
   const py::detail::function_record* rec = self ? py::detail::function_record_ptr_from_PyObject(self) : nullptr;
-  if (!rec || !rec->name) return;
+  return rec && rec->name ? rec : nullptr;
+}
+
+void add_text_signature(PyObject* f) {
+  const py::detail::function_record* rec = record_of(f);
+  if (!rec) return;
   auto* function = reinterpret_cast<PyCFunctionObject*>(f);
   const char* old = PYBIND11_PYCFUNCTION_GET_DOC(function);
-  const std::string doc = std::string(rec->name) + text_signature(*rec, ast) + "\n--\n\n" + (old ? old : "");
+  const std::string doc = std::string(rec->name) + text_signature(*rec) + "\n--\n\n" + (old ? old : "");
   char* text = static_cast<char*>(std::malloc(doc.size() + 1));
   if (!text) throw std::bad_alloc();
   std::memcpy(text, doc.c_str(), doc.size() + 1);
@@ -80,15 +94,35 @@ void add_text_signature(PyObject* f, const py::module_& ast) {
 }
 
 // The text signatures of a class's methods and static methods (its constructor's too: __init__ is one of them)
-void add_method_signatures(const py::dict& members, const py::module_& ast) {
+void add_method_signatures(const py::dict& members, const py::handle& staticmethod) {
   for (const auto item : members) {
     PyObject* f = item.second.ptr();
     if (PyInstanceMethod_Check(f)) {
-      add_text_signature(PyInstanceMethod_GET_FUNCTION(f), ast);
-    } else if (py::isinstance(item.second, py::module_::import("builtins").attr("staticmethod"))) {
-      add_text_signature(item.second.attr("__func__").ptr(), ast);
+      add_text_signature(PyInstanceMethod_GET_FUNCTION(f));
+    } else if (py::isinstance(item.second, staticmethod)) {
+      add_text_signature(item.second.attr("__func__").ptr());
     }
   }
+}
+
+// inspect.Signature of the parameters of one pybind11 function record, self left out, each default the object
+// itself (as the text signature, built directly: parsing the text costs a fraction of a millisecond per class)
+py::object signature_of(const py::detail::function_record& rec, const py::module_& inspect) {
+  const py::object parameter = inspect.attr("Parameter");
+  py::list parameters;
+  for (std::size_t i = rec.is_method ? 1 : 0; i < rec.nargs; ++i) {
+    const bool named = i < rec.args.size() && rec.args[i].name;
+    const std::string name = named ? rec.args[i].name : "arg" + std::to_string(i);
+    const char* kind = (rec.has_kwargs && i + 1 == rec.nargs) ? "VAR_KEYWORD"
+                       : (rec.has_args && i == rec.nargs_pos) ? "VAR_POSITIONAL"
+                       : i < rec.nargs_pos_only                 ? "POSITIONAL_ONLY"
+                       : i >= rec.nargs_pos                     ? "KEYWORD_ONLY"
+                                                                : "POSITIONAL_OR_KEYWORD";
+    const bool has_default = named && rec.args[i].value;
+    parameters.append(has_default ? parameter(name, parameter.attr(kind), py::arg("default") = rec.args[i].value)
+                                  : parameter(name, parameter.attr(kind)));
+  }
+  return inspect.attr("Signature")(parameters);
 }
 
 // A warning's or an exception's (*args), as every exception takes (inspect finds none for a built-in base)
@@ -98,36 +132,46 @@ void exception_signature(const py::handle& cls, const py::module_& inspect) {
       py::make_tuple(parameter("args", parameter.attr("VAR_POSITIONAL"))));
 }
 
-// The class's __signature__: its constructor's without self; none for a class without an __init__
-// of its own (a result or report that the core makes: calling it raises TypeError).
-void add_class_signature(const py::handle& cls, const py::module_& ast, const py::module_& inspect) {
-  if (PyType_IsSubtype(reinterpret_cast<PyTypeObject*>(cls.ptr()), reinterpret_cast<PyTypeObject*>(PyExc_BaseException))) {
+// The class's __signature__: its constructor's without self; none for a class without an __init__ of its own (a
+// result or report that the core makes: calling it raises TypeError).
+void add_class_signature(const py::handle& cls, const py::module_& inspect, const py::handle& staticmethod) {
+  const auto* type = reinterpret_cast<PyTypeObject*>(cls.ptr());
+  if (PyType_IsSubtype(const_cast<PyTypeObject*>(type), reinterpret_cast<PyTypeObject*>(PyExc_BaseException))) {
     exception_signature(cls, inspect);
     return;
   }
   const py::dict members = cls.attr("__dict__");
-  add_method_signatures(members, ast);
+  add_method_signatures(members, staticmethod);
   if (!members.contains("__init__")) return;
   PyObject* init = py::handle(members["__init__"]).ptr();
   if (PyInstanceMethod_Check(init)) init = PyInstanceMethod_GET_FUNCTION(init);
-  if (!PyCFunction_Check(init) || !PyCFunction_GET_SELF(init)) return;
-  if (!py::hasattr(py::handle(init), "__text_signature__") || py::handle(init).attr("__text_signature__").is_none()) return;
-  const py::object signature = inspect.attr("signature")(py::handle(init));  // (self, ...)
-  const py::list parameters(signature.attr("parameters").attr("values")());
-  cls.attr("__signature__") = signature.attr("replace")(py::arg("parameters") = parameters[py::slice(1, {}, {})]);
+  const py::detail::function_record* rec = record_of(init);
+  if (!rec) return;
+  try {
+    if (rec->next) {  // several constructors: (*args, **kwargs), from their text signature (self dropped)
+      const py::object signature = inspect.attr("signature")(py::handle(init));
+      const py::list parameters(signature.attr("parameters").attr("values")());
+      cls.attr("__signature__") = signature.attr("replace")(py::arg("parameters") = parameters[py::slice(1, {}, {})]);
+    } else {
+      cls.attr("__signature__") = signature_of(*rec, inspect);
+    }
+  } catch (const py::error_already_set&) {
+    // parameters that no Python signature can hold (a required one after one with a default): none is set
+  }
 }
 
 }  // namespace
 
 void add_text_signatures(py::module_& m) {
   if (const char* stubgen = std::getenv("RIGIDDYN_STUBGEN"); stubgen && std::string(stubgen) == "1") return;
-  const py::module_ ast = py::module_::import("ast"), inspect = py::module_::import("inspect");
+  const py::module_ inspect = py::module_::import("inspect");
+  const py::object staticmethod = py::module_::import("builtins").attr("staticmethod");
   const py::dict names = m.attr("__dict__");
   for (const auto item : names) {
     if (PyType_Check(item.second.ptr())) {
-      add_class_signature(item.second, ast, inspect);
+      add_class_signature(item.second, inspect, staticmethod);
     } else {
-      add_text_signature(item.second.ptr(), ast);
+      add_text_signature(item.second.ptr());
     }
   }
 }
