@@ -68,7 +68,7 @@ commented)::
     # motor_torque = "0.01 N m"         # motor torque on the wheel (default 0), acting for
     # t_start = "0 s"                   # t_start <= t < t_end (defaults 0 and forever)
     # t_end = "60 s"
-    # [body.mass_flow]                  # optional, any kind: the body's mass changes (after its table)
+    # [body.mass_flow]                  # optional, a particle or rigid body: its mass changes (after its table)
     # rate = "-2 kg/s"                  # dm/dt [kg/s] (negative: losing mass; default 0)
     # inertia_rule = "scaled"           # I_C = I_C0 m / m0 (the only rule a file holds)
 
@@ -149,6 +149,7 @@ __all__ = ["FORCE_TYPES", "RunOptions", "SceneFile", "example_scenes", "is_scene
            "plummer_sphere", "read_scene", "scene_path", "scene_to_toml"]
 
 _SCENES_DIR = Path(__file__).resolve().parent / "scenes"
+_MASS_FLOW_KINDS = ("particle", "rigid")  # the body kinds whose mass may change (rigiddyn.MassFlow)
 _ATTITUDES = ("q_WB", "euler", "rotvec", "axis_angle", "scalar_first")
 _BODY_KEYS = {
     "particle": frozenset({"name", "kind", "mass", "p_W", "v_W", "mass_flow"}),
@@ -439,6 +440,9 @@ def _mass_flow(table: Mapping[str, Any], name: str) -> Any:
     if "mass_flow" not in table:
         return None
     field = f"{name}.mass_flow"
+    if table.get("kind") not in _MASS_FLOW_KINDS:
+        raise _fail(field, f"no [body.mass_flow] table on a {table.get('kind')} body (a mass flow applies to "
+                    "particles and rigid bodies)", table["mass_flow"])
     flow = _check_keys(table["mass_flow"], field, _MASS_FLOW_KEYS, "[body.mass_flow]")
     rate = quantity(flow.get("rate", 0.0), f"{field}.rate", "kg/s")
     rule = flow.get("inertia_rule", "scaled")

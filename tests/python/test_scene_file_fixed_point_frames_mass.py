@@ -133,6 +133,11 @@ BAD = [
     (ROCKET.replace('inertia_rule = "scaled"', 'inertia_rule = "function"'),
      "body[0].mass_flow.inertia_rule: expected 'scaled' (a function of the mass: MassFlow in Python), got 'function'"),
     (ROCKET.replace('frame = "world"', 'frame = "inertial"'), "force[0].frame: expected 'body' or 'world', got 'inertial'"),
+    # a mass flow on a kind without one is refused when the file is read, naming the file's table
+    (TOP + '[body.mass_flow]\nrate = "-1 kg/s"\n', "body[0].mass_flow: expected no [body.mass_flow] table on a "
+     "pivoted body (a mass flow applies to particles and rigid bodies)"),
+    (PENDULUM + '[body.mass_flow]\nrate = "-1 kg/s"\n', "body[0].mass_flow: expected no [body.mass_flow] table on a "
+     "pivoted_planar body"),
     (ROCKET.replace('unit = "km/s"', 'unit = "km"'), "force[0].u_rel.unit"),
     (ROCKET.replace('body = "rocket"', 'body = "rockett"'), "force[0].body: expected the name of a [[body]]"),
     (ROCKET.replace('u_rel = {value = [0, 0, -2], unit = "km/s"}', ''), "force[0].u_rel: expected a value [m/s], "
