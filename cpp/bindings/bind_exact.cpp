@@ -87,7 +87,7 @@ PyTorqueFreeSolution make_solution(py::handle inertia, py::handle q_WB, py::hand
   const Eigen::Quaterniond q = py_io::as_quaternion(q_WB, "q_WB", first);
   const Eigen::Vector3d w = py_io::as_vector3(w_B, "w_B");
   const InertiaCheck c =
-      py_io::as_instance<InertiaCheck>(check, "check", "InertiaCheck.physical or InertiaCheck.allow_unrealizable");
+      py_io::as_enum<InertiaCheck>(check, "check", "InertiaCheck.physical or InertiaCheck.allow_unrealizable");
   return {TorqueFreeSolution(I_B, q, w, c), I_B, q, w, first, c};
 }
 

@@ -126,7 +126,7 @@ py::array_t<std::int64_t> index_array(const Indices& values, std::vector<py::ssi
 }
 
 InertiaCheck check_arg(py::handle check) {
-  return py_io::as_instance<InertiaCheck>(check, "check", "InertiaCheck.physical or InertiaCheck.allow_unrealizable");
+  return py_io::as_enum<InertiaCheck>(check, "check", "InertiaCheck.physical or InertiaCheck.allow_unrealizable");
 }
 const SpatialInertia& as_inertia(py::handle obj, const std::string& name) {
   return py_io::as_instance<SpatialInertia>(obj, name, "a SpatialInertia");

@@ -92,6 +92,13 @@ T& as_instance(py::handle obj, const std::string& name, const std::string& expec
   if (!py::isinstance<T>(obj)) throw_type_error(name, expected, obj);
   return obj.cast<T&>();
 }
+// A value of the bound enum T (a copy: pybind11's enum caster may hold the value itself, so a reference would
+// outlive it); TypeError "<name>: expected <expected>, got ..." otherwise.
+template <class T>
+T as_enum(py::handle obj, const std::string& name, const std::string& expected) {
+  if (!py::isinstance<T>(obj)) throw_type_error(name, expected, obj);
+  return obj.cast<T>();
+}
 // A bound spatial vector (Motion or Force: members angular, linear) whose parts are finite; ValueError
 // "<name>: expected <expected> with finite values" otherwise (one made by an overflowing operation).
 template <class T>
