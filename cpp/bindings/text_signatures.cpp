@@ -41,38 +41,50 @@ bool is_literal(py::handle v) {
 // for an infinite float (inspect looks the name up), else "..." (the parameter has a default, which the docstring
 // states).
 std::string default_text(const py::detail::argument_record& arg) {
-  if (!arg.value) return "...";
   if (PyFloat_Check(arg.value.ptr()) && std::isinf(PyFloat_AsDouble(arg.value.ptr()))) {
     return PyFloat_AsDouble(arg.value.ptr()) > 0 ? "math.inf" : "-math.inf";
   }
   return is_literal(arg.value) ? py::repr(arg.value).cast<std::string>() : "...";
 }
 
+// The name of parameter i of a pybind11 function record ("arg<i>" when the binding names none)
+std::string parameter_name(const py::detail::function_record& rec, std::size_t i) {
+  return i < rec.args.size() && rec.args[i].name ? rec.args[i].name : "arg" + std::to_string(i);
+}
+
+// Its kind, as inspect.Parameter names it
+const char* parameter_kind(const py::detail::function_record& rec, std::size_t i) {
+  if (rec.has_kwargs && i + 1 == rec.nargs) return "VAR_KEYWORD";
+  if (rec.has_args && i == rec.nargs_pos) return "VAR_POSITIONAL";
+  if (i < rec.nargs_pos_only) return "POSITIONAL_ONLY";
+  return i >= rec.nargs_pos ? "KEYWORD_ONLY" : "POSITIONAL_OR_KEYWORD";
+}
+
+// Whether it has a default (its value in rec.args)
+bool has_default(const py::detail::function_record& rec, std::size_t i) {
+  return i < rec.args.size() && rec.args[i].name && rec.args[i].value;
+}
+
 // "(a, b=False, /, *, c=None)" of one pybind11 function record; "(*args, **kwargs)" for an overload set (no single
-// signature: the docstring lists each).
+// signature: the docstring lists each). A method's self is listed: unbound through the class, a bound method drops
+// it.
 std::string text_signature(const py::detail::function_record& rec) {
   if (rec.next) return rec.is_method ? "(self, /, *args, **kwargs)" : "(*args, **kwargs)";
   std::string out = "(";
-  const auto parameter = [&](std::size_t i) -> std::string {
-    const bool named = i < rec.args.size() && rec.args[i].name;
-    std::string name = named ? rec.args[i].name : "arg" + std::to_string(i);
-    if (i == 0 && rec.is_method) return name;  // self: unbound through the class, dropped by a bound method
-    if (rec.has_kwargs && i + 1 == rec.nargs) return "**" + name;
-    if (rec.has_args && i == rec.nargs_pos) return "*" + name;
-    if (named && (rec.args[i].descr || rec.args[i].value)) name += "=" + default_text(rec.args[i]);
-    return name;
-  };
+  bool keyword_only_marked = false;
   for (std::size_t i = 0; i < rec.nargs; ++i) {
+    const std::string kind = parameter_kind(rec, i);
     if (i > 0) out += ", ";
-    if (i == rec.nargs_pos && !rec.has_args && i < rec.nargs && !(rec.has_kwargs && i + 1 == rec.nargs)) out += "*, ";
-    out += parameter(i);
-    if (rec.nargs_pos_only > 0 && i + 1 == rec.nargs_pos_only) out += ", /";
+    if (kind == "KEYWORD_ONLY" && !keyword_only_marked) out += "*, ";
+    keyword_only_marked = keyword_only_marked || kind == "KEYWORD_ONLY" || kind == "VAR_POSITIONAL";
+    out += (kind == "VAR_KEYWORD" ? "**" : kind == "VAR_POSITIONAL" ? "*" : "") + parameter_name(rec, i);
+    if (has_default(rec, i)) out += "=" + default_text(rec.args[i]);
+    if (kind == "POSITIONAL_ONLY" && i + 1 == rec.nargs_pos_only) out += ", /";
   }
   return out + ")";
 }
 
-// Puts "name(signature)\n--\n\n" in front of the C-level docstring of the pybind11 function `f` (as pybind11
-// itself replaces it when an overload is added: the old string freed, a malloc'd one set).
+// pybind11's record of the function f; nullptr for any other object
 const py::detail::function_record* record_of(PyObject* f) {
   if (!PyCFunction_Check(f)) return nullptr;
   PyObject* self = PyCFunction_GET_SELF(f);  // pybind11's record of the function
@@ -80,6 +92,8 @@ const py::detail::function_record* record_of(PyObject* f) {
   return rec && rec->name ? rec : nullptr;
 }
 
+// Puts "name(signature)\n--\n\n" in front of the C-level docstring of the pybind11 function `f` (as pybind11
+// itself replaces it when an overload is added: the old string freed, a malloc'd one set).
 void add_text_signature(PyObject* f) {
   const py::detail::function_record* rec = record_of(f);
   if (!rec) return;
@@ -111,16 +125,10 @@ py::object signature_of(const py::detail::function_record& rec, const py::module
   const py::object parameter = inspect.attr("Parameter");
   py::list parameters;
   for (std::size_t i = rec.is_method ? 1 : 0; i < rec.nargs; ++i) {
-    const bool named = i < rec.args.size() && rec.args[i].name;
-    const std::string name = named ? rec.args[i].name : "arg" + std::to_string(i);
-    const char* kind = (rec.has_kwargs && i + 1 == rec.nargs) ? "VAR_KEYWORD"
-                       : (rec.has_args && i == rec.nargs_pos) ? "VAR_POSITIONAL"
-                       : i < rec.nargs_pos_only                 ? "POSITIONAL_ONLY"
-                       : i >= rec.nargs_pos                     ? "KEYWORD_ONLY"
-                                                                : "POSITIONAL_OR_KEYWORD";
-    const bool has_default = named && rec.args[i].value;
-    parameters.append(has_default ? parameter(name, parameter.attr(kind), py::arg("default") = rec.args[i].value)
-                                  : parameter(name, parameter.attr(kind)));
+    const py::object kind = parameter.attr(parameter_kind(rec, i));
+    parameters.append(has_default(rec, i)
+                          ? parameter(parameter_name(rec, i), kind, py::arg("default") = rec.args[i].value)
+                          : parameter(parameter_name(rec, i), kind));
   }
   return inspect.attr("Signature")(parameters);
 }
