@@ -1,7 +1,11 @@
 """Rotations on n items from arrays: rigiddyn's array API (C++ loops, every quaternion / matrix
 validated per item) against the numpy reference rigiddyn_ref.so3 (vectorised numpy, no
 validation) for quat_rotate, quat_to_matrix and matrix_to_quat; quat_rotate also against the
-formula in plain vectorised numpy (np.cross) and against scipy's Rotation.apply.
+formula in plain vectorised numpy (np.cross); and every array rotation function against SciPy's
+Rotation (where SciPy is installed). A SciPy method that starts from a rotation (as_matrix, as_rotvec,
+as_mrp, as_euler, inv, apply, *) is timed on a Rotation built beforehand, as a SciPy user holds one;
+a constructor (from_matrix, from_rotvec, from_mrp, from_euler) is timed with the as_quat that gives
+rigiddyn's output. rigiddyn validates every item (unit norm, rotation matrix) in its time.
 
     python bench/python/bench_so3.py           # n = 1e6
     python bench/python/bench_so3.py --small   # n = 1e4 (what ctest runs)
@@ -64,8 +68,37 @@ def main():
         from scipy.spatial.transform import Rotation
     except ImportError:
         return
+    compare_with_scipy(Rotation, q, v, R, n, repeats)
+
+
+def compare_with_scipy(Rotation, q, v, R, n, repeats):
+    """rigiddyn's array rotation functions against SciPy's Rotation on the same items (each pair
+    checked equal first: rotations up to the sign of quaternions, angles to 1e-9 rad)."""
     r = Rotation.from_quat(q)
-    report("quat_rotate", n, t_rd, best_time(lambda: r.apply(v), repeats), "scipy_apply")
+    r2 = Rotation.from_quat(q[::-1].copy())
+    q2 = r2.as_quat()
+    rotvec, mrp, angles = r.as_rotvec(), r.as_mrp(), r.as_euler("xyz")
+    cases = [
+        ("quat_to_matrix", lambda: rd.quat_to_matrix(q), r.as_matrix),
+        ("matrix_to_quat", lambda: rd.matrix_to_quat(R), lambda: Rotation.from_matrix(R).as_quat()),
+        ("quat_to_rotvec", lambda: rd.quat_to_rotvec(q), r.as_rotvec),
+        ("rotvec_to_quat", lambda: rd.rotvec_to_quat(rotvec), lambda: Rotation.from_rotvec(rotvec).as_quat()),
+        ("rotvec_to_matrix", lambda: rd.rotvec_to_matrix(rotvec), lambda: Rotation.from_rotvec(rotvec).as_matrix()),
+        ("matrix_to_rotvec", lambda: rd.matrix_to_rotvec(R), lambda: Rotation.from_matrix(R).as_rotvec()),
+        ("quat_to_mrp", lambda: rd.quat_to_mrp(q), r.as_mrp),
+        ("mrp_to_quat", lambda: rd.mrp_to_quat(mrp), lambda: Rotation.from_mrp(mrp).as_quat()),
+        ("quat_to_euler", lambda: rd.quat_to_euler("xyz", q), lambda: r.as_euler("xyz")),
+        ("euler_to_quat", lambda: rd.euler_to_quat("xyz", angles), lambda: Rotation.from_euler("xyz", angles).as_quat()),
+        ("quat_inverse", lambda: rd.quat_inverse(q), lambda: r.inv().as_quat()),
+        ("quat_multiply", lambda: rd.quat_multiply(q, q2), lambda: (r * r2).as_quat()),
+        ("quat_rotate", lambda: rd.quat_rotate(q, v), lambda: r.apply(v)),
+    ]
+    for case, ours, theirs in cases:
+        a, b = ours(), theirs()
+        same = np.minimum(np.abs(a - b), np.abs(a + b)) if a.shape[-1] == 4 else np.abs(a - b)
+        if same.max() > 1e-9:
+            raise SystemExit(f"{case} disagrees with SciPy: max |diff| = {same.max():.3g}")
+        report(case, n, best_time(ours, repeats), best_time(theirs, repeats), "scipy")
 
 
 if __name__ == "__main__":

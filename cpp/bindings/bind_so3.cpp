@@ -11,12 +11,14 @@
 #include <algorithm>
 #include <limits>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "bindings.hpp"
 #include "common_args.hpp"
 #include "for_each_item.hpp"
 #include "numpy_io.hpp"
+#include "rigiddyn/always_inline.hpp"
 #include "rigiddyn/so3/axis_angle.hpp"
 #include "rigiddyn/so3/elementary.hpp"
 #include "rigiddyn/so3/euler.hpp"
@@ -64,9 +66,14 @@ inline void and_finite(bool& finite, const double* item, py::ssize_t size) {
   finite &= zero == 0.0;
 }
 
+// What the loops below check of each item they write: its entries finite (a non-finite one warns naming
+// the quantity), or nothing where the result is finite by construction (a polynomial or bounded map of
+// unit quaternions checked on reading).
+enum class Written { checked_finite, finite_by_construction };
+
 // out[i] = f(in[i]) over a stack: items of shape `in_shape` -> items of shape `out_shape`.
-// f(const double* in_item, double* out_item). A non-finite result warns naming `quantity`.
-template <typename F>
+// f(const double* in_item, double* out_item).
+template <Written written = Written::checked_finite, typename F>
 Array map_unary(py::handle x, const char* name, const Shape& in_shape, const Shape& out_shape, const char* quantity, F f) {
   const Stack in = py_io::as_stack(x, name, in_shape);
   Array out = py_io::new_stack(in.n, in.stacked, out_shape, quantity);
@@ -76,15 +83,15 @@ Array map_unary(py::handle x, const char* name, const Shape& in_shape, const Sha
   bool finite = true;
   for_each_item(in.n, in.stacked, [&](py::ssize_t i) {
     f(a + i * a_size, o + i * o_size);
-    and_finite(finite, o + i * o_size, o_size);
+    if constexpr (written == Written::checked_finite) and_finite(finite, o + i * o_size, o_size);
   });
   if (!finite) py_io::finite_result(out, quantity);
   return out;
 }
 
 // out[i] = f(x[i], y[i]) over two stacks; a single item is used with every item of the other.
-// ValueError naming y when both are stacked with different lengths; a non-finite result warns.
-template <typename F>
+// ValueError naming y when both are stacked with different lengths.
+template <Written written = Written::checked_finite, typename F>
 Array map_binary(py::handle x, const char* x_name, const Shape& x_shape, py::handle y, const char* y_name,
                  const Shape& y_shape, const Shape& out_shape, const char* quantity, F f) {
   const Stack sx = py_io::as_stack(x, x_name, x_shape);
@@ -105,10 +112,62 @@ Array map_binary(py::handle x, const char* x_name, const Shape& x_shape, py::han
   bool finite = true;
   for_each_item(n, stacked, [&](py::ssize_t i) {
     f(a + i * a_step, b + i * b_step, o + i * o_size);
-    and_finite(finite, o + i * o_size, o_size);
+    if constexpr (written == Written::checked_finite) and_finite(finite, o + i * o_size, o_size);
   });
   if (!finite) py_io::finite_result(out, quantity);
   return out;
+}
+
+// f(std::true_type{}) for scalar-first quaternions, f(std::false_type{}) otherwise: the layout a
+// compile-time constant of the loop inside f.
+template <typename F>
+Array with_layout(bool scalar_first, F f) {
+  return scalar_first ? f(std::true_type{}) : f(std::false_type{});
+}
+
+// The |q|² range of checked_unit_quaternion's tolerance (| |q| - 1 | <= 1e-6), narrowed by 1e-15 so that
+// every item inside it passes that check too. An item outside it takes the check itself, which normalises
+// it or throws its message.
+constexpr double unit_norm2_low = (1.0 - unit_quaternion_tolerance) * (1.0 - unit_quaternion_tolerance) + 1e-15;
+constexpr double unit_norm2_high = (1.0 + unit_quaternion_tolerance) * (1.0 + unit_quaternion_tolerance) - 1e-15;
+
+// The unit quaternion q / |q| of the item at p (layout (w, x, y, z) when ScalarFirst, else (x, y, z, w)),
+// checked as checked_unit_quaternion does. With |q|² = 1 - e, |e| < 2.1e-6:
+// (1 - e)^(-1/2) = 1 + e/2 + 3e²/8 + 5e³/16 + 35e⁴/128 + ..., the first omitted term below 6e-24, far under
+// round-off: no square root or division per item.
+template <bool ScalarFirst>
+RIGIDDYN_ALWAYS_INLINE Eigen::Quaterniond unit_quaternion_at(const double* p, const std::string& name) {
+  // component by component: a packet load of what was just read one by one would stall
+  const double x = ScalarFirst ? p[1] : p[0], y = ScalarFirst ? p[2] : p[1], z = ScalarFirst ? p[3] : p[2];
+  const double w = ScalarFirst ? p[0] : p[3];
+  const double norm2 = (x * x + y * y) + (z * z + w * w);
+  if (!(norm2 >= unit_norm2_low && norm2 <= unit_norm2_high)) return checked_unit_quaternion(Eigen::Quaterniond(w, x, y, z), name);
+  const double e = 1.0 - norm2;
+  const double k = 1.0 + e * (0.5 + e * (0.375 + e * 0.3125));
+  return Eigen::Quaterniond(k * w, k * x, k * y, k * z);
+}
+
+// Writes R(q) of a unit quaternion q at out, row-major: the entries of quat_to_matrix (Eigen's
+// toRotationMatrix, the same products in the same order) stored one by one, without a column-major
+// temporary to transpose.
+RIGIDDYN_ALWAYS_INLINE void write_rotation_matrix(const Eigen::Quaterniond& q, double* out) {
+  const double x = q.x(), y = q.y(), z = q.z(), w = q.w();
+  const double tx = 2.0 * x, ty = 2.0 * y, tz = 2.0 * z;
+  const double twx = tx * w, twy = ty * w, twz = tz * w, txx = tx * x, txy = ty * x, txz = tz * x;
+  const double tyy = ty * y, tyz = tz * y, tzz = tz * z;
+  out[0] = 1.0 - (tyy + tzz), out[1] = txy - twz, out[2] = txz + twy;
+  out[3] = txy + twz, out[4] = 1.0 - (txx + tzz), out[5] = tyz - twx;
+  out[6] = txz - twy, out[7] = tyz + twx, out[8] = 1.0 - (txx + tyy);
+}
+
+// Writes q at out in the layout of unit_quaternion_at.
+template <bool ScalarFirst>
+RIGIDDYN_ALWAYS_INLINE void write_quaternion_at(const Eigen::Quaterniond& q, double* out) {
+  if constexpr (ScalarFirst) {
+    out[0] = q.w(), out[1] = q.x(), out[2] = q.y(), out[3] = q.z();
+  } else {
+    out[0] = q.x(), out[1] = q.y(), out[2] = q.z(), out[3] = q.w();
+  }
 }
 
 // The Euler axis sequence argument: TypeError unless a str, ValueError unless a valid sequence.
@@ -236,8 +295,10 @@ void bind_so3(py::module_& m) {
       [](py::handle q, py::handle scalar_first_arg) {
         const bool scalar_first = as_scalar_first(scalar_first_arg);
         const std::string name = "q";
-        return map_unary(q, "q", quaternion, matrix3, "quat_to_matrix", [&](const double* in, double* out) {
-          write_matrix(quat_to_matrix(checked_unit_quaternion(py_io::read_quaternion(in, scalar_first), name)), out);
+        return with_layout(scalar_first, [&](auto first) {
+          return map_unary<Written::finite_by_construction>(q, "q", quaternion, matrix3, "quat_to_matrix", [&](const double* in, double* out) {
+            write_rotation_matrix(unit_quaternion_at<first>(in, name), out);
+          });
         });
       },
       "q"_a, "scalar_first"_a = false,
@@ -373,8 +434,10 @@ void bind_so3(py::module_& m) {
         const bool scalar_first = as_scalar_first(scalar_first_arg);
         const AngleUnit unit = as_angle_unit(degrees);
         const std::string name = "q";
-        return map_unary(q, "q", quaternion, vector3, "quat_to_rotvec", [&](const double* in, double* out) {
-          write_vector(quat_to_rotvec(checked_unit_quaternion(py_io::read_quaternion(in, scalar_first), name)) * unit.from_radians, out);
+        return with_layout(scalar_first, [&](auto first) {
+          return map_unary<Written::finite_by_construction>(q, "q", quaternion, vector3, "quat_to_rotvec", [&](const double* in, double* out) {
+            write_vector(quat_to_rotvec(unit_quaternion_at<first>(in, name)) * unit.from_radians, out);
+          });
         });
       },
       "q"_a, "scalar_first"_a = false, py::kw_only(), "degrees"_a = false,
@@ -419,8 +482,9 @@ void bind_so3(py::module_& m) {
       "rotvec_to_matrix",
       [](py::handle rotvec, py::handle degrees) {
         const AngleUnit unit = as_angle_unit(degrees);
+        // rotvec_to_matrix(rotvec) = quat_to_matrix(rotvec_to_quat(rotvec)), its matrix written in place
         return map_unary(rotvec, "rotvec", vector3, matrix3, "rotvec_to_matrix",
-                         [&](const double* in, double* out) { write_matrix(rotvec_to_matrix(unit.to_radians * read_vector(in)), out); });
+                         [&](const double* in, double* out) { write_rotation_matrix(rotvec_to_quat(unit.to_radians * read_vector(in)), out); });
       },
       "rotvec"_a, py::kw_only(), "degrees"_a = false,
       (std::string() +
@@ -927,8 +991,10 @@ void bind_so3(py::module_& m) {
       [](py::handle q, py::handle scalar_first_arg) {
         const bool scalar_first = as_scalar_first(scalar_first_arg);
         const std::string name = "q";
-        return map_unary(q, "q", quaternion, vector3, "quat_to_mrp", [&](const double* in, double* out) {
-          write_vector(quat_to_mrp(checked_unit_quaternion(py_io::read_quaternion(in, scalar_first), name)), out);
+        return with_layout(scalar_first, [&](auto first) {
+          return map_unary<Written::finite_by_construction>(q, "q", quaternion, vector3, "quat_to_mrp", [&](const double* in, double* out) {
+            write_vector(quat_to_mrp(unit_quaternion_at<first>(in, name)), out);
+          });
         });
       },
       "q"_a, "scalar_first"_a = false,
@@ -1129,13 +1195,12 @@ void bind_so3(py::module_& m) {
       [](py::handle q1, py::handle q2, py::handle scalar_first_arg) {
         const bool scalar_first = as_scalar_first(scalar_first_arg);
         const std::string name1 = "q1", name2 = "q2";
-        return map_binary(q1, "q1", quaternion, q2, "q2", quaternion, quaternion, "quat_multiply",
-                          [&](const double* a, const double* b, double* out) {
-                            py_io::write_quaternion(
-                                quat_multiply(checked_unit_quaternion(py_io::read_quaternion(a, scalar_first), name1),
-                                              checked_unit_quaternion(py_io::read_quaternion(b, scalar_first), name2)),
-                                out, scalar_first);
-                          });
+        return with_layout(scalar_first, [&](auto first) {
+          return map_binary<Written::finite_by_construction>(
+              q1, "q1", quaternion, q2, "q2", quaternion, quaternion, "quat_multiply", [&](const double* a, const double* b, double* out) {
+                write_quaternion_at<first>(quat_multiply(unit_quaternion_at<first>(a, name1), unit_quaternion_at<first>(b, name2)), out);
+              });
+        });
       },
       "q1"_a, "q2"_a, "scalar_first"_a = false,
       (std::string() +
@@ -1179,9 +1244,10 @@ void bind_so3(py::module_& m) {
       [](py::handle q, py::handle scalar_first_arg) {
         const bool scalar_first = as_scalar_first(scalar_first_arg);
         const std::string name = "q";
-        return map_unary(q, "q", quaternion, quaternion, "quat_inverse", [&](const double* in, double* out) {
-          py_io::write_quaternion(quat_inverse(checked_unit_quaternion(py_io::read_quaternion(in, scalar_first), name)),
-                                  out, scalar_first);
+        return with_layout(scalar_first, [&](auto first) {
+          return map_unary<Written::finite_by_construction>(q, "q", quaternion, quaternion, "quat_inverse", [&](const double* in, double* out) {
+            write_quaternion_at<first>(quat_inverse(unit_quaternion_at<first>(in, name)), out);
+          });
         });
       },
       "q"_a, "scalar_first"_a = false,
@@ -1262,8 +1328,10 @@ void bind_so3(py::module_& m) {
       [](py::handle q, py::handle v, py::handle scalar_first_arg) {
         const bool scalar_first = as_scalar_first(scalar_first_arg);
         const std::string name = "q";
-        return map_binary(q, "q", quaternion, v, "v", vector3, vector3, "quat_rotate", [&](const double* a, const double* b, double* out) {
-          write_vector(quat_rotate(checked_unit_quaternion(py_io::read_quaternion(a, scalar_first), name), read_vector(b)), out);
+        return with_layout(scalar_first, [&](auto first) {
+          return map_binary(q, "q", quaternion, v, "v", vector3, vector3, "quat_rotate", [&](const double* a, const double* b, double* out) {
+            write_vector(quat_rotate(unit_quaternion_at<first>(a, name), read_vector(b)), out);
+          });
         });
       },
       "q"_a, "v"_a, "scalar_first"_a = false,
