@@ -520,11 +520,9 @@ def _slice(value: Any, a: int, b: int) -> Any:
 
 
 def _batch_function() -> Callable[..., Any]:
-    import rigiddyn
+    from . import _core
 
-    # by name until the generated stub (_core.pyi) lists it
-    batch: Callable[..., Any] = getattr(rigiddyn, "simulate_batch")  # noqa: B009
-    return batch
+    return _core.simulate_batch
 
 
 def _batch_warnings(result: Any, method: str) -> None:

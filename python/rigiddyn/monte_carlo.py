@@ -769,11 +769,35 @@ def _check_memory(n: int, steps: int, record_every: int, model: Any) -> None:
                          "fewer samples, or a larger record_every)")
 
 
+def _sample_bar(n: int, enabled: bool) -> tuple[Callable[[int], None] | None, Callable[[], None] | None]:
+    """(progress(samples_done) for simulate_batch, close()) of a bar of n samples on stderr: tqdm if installed,
+    else a plain one; (None, None) when not enabled."""
+    if not enabled:
+        return None, None
+    try:
+        from tqdm import tqdm
+    except ImportError:
+        def show(done: int) -> None:
+            print(f"\rmonte_carlo: {done}/{n} samples", end="", file=sys.stderr, flush=True)
+
+        def end() -> None:
+            print(file=sys.stderr)
+
+        return show, end
+    bar = tqdm(total=n, desc="monte_carlo", unit="sample", file=sys.stderr)
+
+    def update(done: int) -> None:
+        bar.update(done - bar.n)
+
+    return update, bar.close
+
+
 def monte_carlo(model: Any, nominal_state: Any, n: int, *, seed: Any,
                 dispersions: Mapping[str, Dispersion] | None = None,
                 dt: Any, steps: int | None = None, duration: Any = None, method: str | None = None,
                 record_every: int = 1, loads: Any = None, gravity: Any = None, t0: Any = 0.0,
-                threads: int | None = None, client: Any = None) -> MonteCarloResult:
+                threads: int | None = None, client: Any = None,
+                progress: bool | Callable[[int], Any] = False) -> MonteCarloResult:
     """N runs of a rigid body, or of a scene, with dispersed initial states, mass properties and loads.
 
     model: a RigidBody (mass [kg], inertia about the centre of mass in B [kg m^2]): the nominal body; or a
@@ -794,6 +818,10 @@ def monte_carlo(model: Any, nominal_state: Any, n: int, *, seed: Any,
     threads: threads of the local run (None: all cores). client: None (run on this machine with
       rigiddyn.simulate_batch), or a dask.distributed Client / scheduler address: the samples run through
       rigiddyn.distributed.simulate_batch (the same draws and, bitwise, the same result).
+    progress: False (nothing), True (a bar of samples on stderr: tqdm if installed, else a plain one), or a
+      callable progress(samples_done), as rigiddyn.simulate_batch's (called from the calling thread once
+      before the samples start and then about every 0.05 s; an exception it raises stops the run and
+      propagates). With client=, True or False (rigiddyn.distributed.simulate_batch's bar of chunks).
 
     Returns a MonteCarloResult (the BatchResult or BatchSceneResult, the drawn inputs, statistics and
     percentiles). Warns DispersionWarning when invalid draws were redrawn. TypeError / ValueError name a bad
@@ -808,6 +836,11 @@ def monte_carlo(model: Any, nominal_state: Any, n: int, *, seed: Any,
         raise TypeError(f"n: expected a sample count (an integer >= 1), got {n!r}")
     if n < 1:
         raise ValueError(f"n: expected a sample count >= 1, got {n!r}")
+    if not isinstance(progress, (bool, np.bool_)) and not callable(progress):
+        raise TypeError(f"progress: expected True, False or a callable progress(samples_done), got {progress!r}")
+    if client is not None and callable(progress):
+        raise TypeError(f"progress: expected True or False with client= (the cluster's bar of chunks), "
+                        f"got {progress!r}")
     if client is not None and threads is not None:
         raise ValueError(f"threads: expected None with client= (the workers' threads are the cluster's), "
                          f"got {threads!r}")
@@ -833,11 +866,17 @@ def monte_carlo(model: Any, nominal_state: Any, n: int, *, seed: Any,
         if method is None and isinstance(model, _core.CompiledScene):
             method = model.method  # also when the samples run rebuilt scenes
     options.update(method=method, t0=t0)
-    import rigiddyn  # the package's simulate_batch and distributed, looked up at call time
-
     if client is None:
-        batch = rigiddyn.simulate_batch(batch_model, initial, dt, steps, threads=threads, **options)
+        update, close = (progress, None) if callable(progress) else _sample_bar(int(n), bool(progress))
+        try:
+            batch = _core.simulate_batch(batch_model, initial, dt, steps, threads=threads, progress=update, **options)
+            if close is not None and update is not None:  # the bar shows the run complete
+                update(int(n))
+        finally:
+            if close is not None:
+                close()
     else:
         distributed = importlib.import_module("rigiddyn.distributed")
-        batch = distributed.simulate_batch(batch_model, initial, dt, steps, client=client, **options)
+        batch = distributed.simulate_batch(batch_model, initial, dt, steps, client=client, progress=bool(progress),
+                                           **options)
     return MonteCarloResult(batch, inputs, redraws, seeds.entropy, dispersions)
