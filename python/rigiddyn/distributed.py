@@ -121,7 +121,12 @@ def _client_for(client: Any, distributed: Any) -> Iterator[Any]:
             yield own
         return
     if isinstance(client, str):
-        with distributed.Client(client) as own:
+        try:
+            own = distributed.Client(client)
+        except ValueError as error:  # dask's own words do not say which argument held the address
+            raise ValueError(f"client: expected a scheduler address such as 'tcp://host:8786', got {client!r} "
+                             f"({error})") from None
+        with own:
             yield own
         return
     raise TypeError(f"client: expected None, a distributed.Client or a scheduler address (str), got {client!r}")

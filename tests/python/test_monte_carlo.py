@@ -17,8 +17,8 @@ import numpy as np
 import pytest
 
 import rigiddyn as rd
-from rigiddyn import monte_carlo as mc
-from rigiddyn.monte_carlo import Normal
+from rigiddyn import dispersion as mc
+from rigiddyn.dispersion import Normal
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 EPS = np.finfo(float).eps

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 import rigiddyn as rd
-from rigiddyn import monte_carlo as mc
+from rigiddyn import dispersion as mc
 
 BODY = rd.RigidBody(1.0, [1.0, 2.0, 3.0])
 STATE = rd.RigidBodyState(w_B=[0.1, 1.0, 0.1])
