@@ -267,7 +267,7 @@ def monte_carlo_run(client=None, threads=None):
     """(MonteCarloResult, Timing) of rigiddyn.monte_carlo on MC_SAMPLES tumbling T-handles: attitude
     uniform on SO(3), w_B with N(0, 5 rad/s) components, MC_STEPS RK4 steps of DT, first and last records;
     on this machine's `threads` (client None) or on the Dask `client`."""
-    from rigiddyn.monte_carlo import Normal, UniformRotation, monte_carlo
+    from rigiddyn.dispersion import Normal, UniformRotation, monte_carlo
 
     body = rigiddyn.RigidBody(MASS, np.array(INERTIA))
     dispersions = {"q_WB": UniformRotation(), "w_B": Normal(mean=np.zeros(3), std=5.0)}

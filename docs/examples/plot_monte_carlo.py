@@ -2,7 +2,7 @@ r"""
 A small Monte Carlo: tumbling boxes from random attitudes
 ==========================================================
 
-:func:`rigiddyn.monte_carlo.monte_carlo` runs N samples of a body with dispersed inputs as one batch
+:func:`rigiddyn.monte_carlo` runs N samples of a body with dispersed inputs as one batch
 in C++ and gives statistics and percentiles of any recorded quantity. Here: 1000 boxes spinning near
 their intermediate axis (the Dzhanibekov flip), each from an attitude drawn uniformly on SO(3)
 (``UniformRotation``) with its spin dispersed by 0.01 rad/s (``Normal``), for 4 s.
@@ -26,7 +26,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 import rigiddyn as rd
-from rigiddyn.monte_carlo import Normal, UniformRotation, monte_carlo
+from rigiddyn.dispersion import Normal, UniformRotation, monte_carlo
 
 EPS = np.finfo(float).eps
 box = rd.solid_box([0.1, 0.2, 0.4], mass=2.0)  # [m], [kg]

@@ -14,10 +14,9 @@ from . import scene_describe as _scene_describe  # noqa: F401  (attaches Scene.d
 from .scene_file import load_scene
 from .stability import StabilityWarning
 from .work_precision import TradeoffResult, tradeoff  # the function; its module is rigiddyn.work_precision
-from . import monte_carlo  # the module: monte_carlo.monte_carlo(...), its dispersions (Normal, UniformRotation, ...)
-from .monte_carlo import DispersionWarning
+from .dispersion import DispersionWarning, monte_carlo  # the function; its module, rigiddyn.dispersion, holds the dispersions
 
 __version__: str = _core.__version__
 __all__ = [name for name in dir(_core) if not name.startswith("_")] + ["to_scipy", "from_scipy"] + [
     "Problem", "load_problem", "StabilityWarning", "TradeoffResult", "tradeoff", "load_scene"]
-__all__ += ["monte_carlo", "DispersionWarning"]  # monte_carlo: the module (its function, dispersions, result)
+__all__ += ["monte_carlo", "DispersionWarning"]  # monte_carlo: the function (rigiddyn.dispersion: Normal, ...)

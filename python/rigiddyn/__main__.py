@@ -42,10 +42,13 @@ def main(argv: list[str] | None = None) -> int:
             warnings.showwarning = _show_warning
             return run_tradeoff(args)
     elif args.command == "simulate":
+        from rigiddyn.scene_simulate import is_scene_file, run_scene_simulate
         from rigiddyn.simulate_command import run_simulate
 
         with warnings.catch_warnings():  # restores the previous warning display afterwards
             warnings.showwarning = _show_warning
+            if is_scene_file(args.problem):  # [[body]] tables: a scene (wide per-body tables)
+                return run_scene_simulate(args)
             return run_simulate(args)
     return 0
 

@@ -121,7 +121,12 @@ def _client_for(client: Any, distributed: Any) -> Iterator[Any]:
             yield own
         return
     if isinstance(client, str):
-        with distributed.Client(client) as own:
+        try:
+            own = distributed.Client(client)
+        except ValueError as error:  # dask's own words do not say which argument held the address
+            raise ValueError(f"client: expected a scheduler address such as 'tcp://host:8786', got {client!r} "
+                             f"({error})") from None
+        with own:
             yield own
         return
     raise TypeError(f"client: expected None, a distributed.Client or a scheduler address (str), got {client!r}")
@@ -520,11 +525,9 @@ def _slice(value: Any, a: int, b: int) -> Any:
 
 
 def _batch_function() -> Callable[..., Any]:
-    import rigiddyn
+    from . import _core
 
-    # by name until the generated stub (_core.pyi) lists it
-    batch: Callable[..., Any] = getattr(rigiddyn, "simulate_batch")  # noqa: B009
-    return batch
+    return _core.simulate_batch
 
 
 def _batch_warnings(result: Any, method: str) -> None:

@@ -81,6 +81,7 @@ import numpy as np
 
 from . import _core
 from ._names import closest as _closest
+from ._measures import MEASURES
 from .stability import warn_if_unstable
 from .units import _shown
 
@@ -703,8 +704,6 @@ def _tradeoff_defaults(value: Any) -> dict[str, Any]:
     if "tolerance" in table:
         table["tolerance"] = _number(table["tolerance"], "tradeoff.tolerance", positive=True)
     if "measure" in table:
-        from .work_precision import MEASURES  # imported here: rigiddyn.work_precision imports this module
-
         if not isinstance(table["measure"], str) or table["measure"] not in MEASURES:
             raise _fail("tradeoff.measure", "one of " + ", ".join(MEASURES), table["measure"])
     return table

@@ -1,7 +1,8 @@
 """``python -m rigiddyn simulate SCENE``: the simulate command for scene files (rigiddyn.scene_file).
 
-simulate_command.run_simulate hands a scene file (a .toml with [[body]] tables, or a shipped scene's
-name, rigiddyn.scene_file.example_scenes()) to run_scene_simulate. The scene's [run] gives the defaults
+The `simulate` command (rigiddyn.__main__) hands a scene file (a .toml with [[body]] tables, or a shipped scene's
+name, rigiddyn.scene_file.example_scenes()) to run_scene_simulate, a problem file to
+simulate_command.run_simulate. The scene's [run] gives the defaults
 of --method, --dt, --duration and --record-every; the command-line options override them.
 
 Writes to --out (default: simulate-<name>, as for a problem): trajectory.csv, trajectory.npz,

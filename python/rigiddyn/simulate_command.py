@@ -306,13 +306,11 @@ def _write(plan: _Plan, result: Any, folder: Path) -> list[Path]:
 
 
 def run_simulate(args: argparse.Namespace) -> int:
-    """The `simulate` command: check everything, run, write; returns the exit code (rigiddyn.out_folder:
-    0 done, 1 the state became non-finite (the records up to there are written), 2 bad input, 3 the
-    files could not be written, 4 earlier files in --out without --force, 130 interrupted)."""
-    from .scene_simulate import is_scene_file, run_scene_simulate
-
-    if is_scene_file(args.problem):  # [[body]] tables: a scene (wide per-body tables)
-        return run_scene_simulate(args)
+    """The `simulate` command on a problem file: check everything, run, write; returns the exit code
+    (rigiddyn.out_folder: 0 done, 1 the state became non-finite (the records up to there are written), 2 bad
+    input, 3 the files could not be written, 4 earlier files in --out without --force, 130 interrupted). A
+    scene file goes to rigiddyn.scene_simulate.run_scene_simulate instead (the command's dispatch, in
+    rigiddyn.__main__)."""
     try:
         plan = _Plan(args)
     except (ValueError, TypeError, OSError, Warning) as e:

@@ -56,7 +56,7 @@ compile reported "not applicable: <reason>".
 
 Before the sweep, a short timed probe of every method estimates the sweep's cost, printed on stderr
 (progress=True), and a progress bar in steps follows the runs while stderr is a terminal (tqdm if
-installed, else a plain one).
+installed, else a plain one); progress=callable is called with the steps done instead, as simulate's.
 """
 
 from __future__ import annotations
@@ -78,6 +78,7 @@ from typing import Any
 import numpy as np
 
 from . import _core
+from ._measures import _UNITS, MEASURES, _check_measure, measure_help, measure_unit
 from .problem import Problem, load_problem
 from .scene_precision import SceneCase, SceneStates, _attitude_angle, scene_case
 from .stability import StabilityWarning, scene_modes, scene_stability_message, stability_message
@@ -85,22 +86,6 @@ from .stability import StabilityWarning, scene_modes, scene_stability_message, s
 __all__ = ["COLUMNS", "MEASURES", "Recommendation", "TradeoffResult", "cheapest", "measure_unit", "pareto_front",
            "reference_states", "timing_noise", "tradeoff"]
 
-_QUANTITIES = ("state_error", "attitude_error", "momentum_error", "position_error", "velocity_error")
-MEASURES = tuple(f"{w}_{q}" for q in _QUANTITIES for w in ("final", "max")) + (
-    "energy_drift", "momentum_drift", "quaternion_norm_error")
-# the unit of each measure's quantity ("-": dimensionless) and what it is, for headers, axes and --help
-_UNITS = {"state_error": "-", "attitude_error": "rad", "momentum_error": "-", "position_error": "m",
-          "velocity_error": "m/s", "energy_drift": "-", "momentum_drift": "-", "quaternion_norm_error": "-"}
-_MEANINGS = {
-    "state_error": "max of attitude, momentum, position / L_p, velocity / L_v (dimensionless)",
-    "attitude_error": "geodesic angle between the attitude and the reference's",
-    "momentum_error": "|I (w_B - w_ref)| / |I w_ref|, body angular momentum (relative)",
-    "position_error": "|p_W - p_ref|, centre of mass",
-    "velocity_error": "|v_W - v_ref|, centre of mass",
-    "energy_drift": "max_t |T - T_ref| / max_t T_ref, kinetic energy (relative)",
-    "momentum_drift": "max_t ||L| - |L_ref|| / max_t |L_ref| (relative)",
-    "quaternion_norm_error": "max_t ||q| - 1|",
-}
 COLUMNS = ("method", "dt", "steps", "order", "evaluations_per_step", "time_per_step", "time_noise", "total_time",
            "total_evaluations") + MEASURES + ("observed_order", "order_note", "reference", "reference_error",
                                               "reference_check", "diverged", "stability")
@@ -529,10 +514,12 @@ def _estimate(problem: Problem | SceneCase, methods: Sequence[str], grid: Sequen
 
 class _Progress:
     """Steps done against the estimated total on stderr: tqdm if installed, else a plain bar; shown only
-    when enabled (progress=True and stderr a terminal)."""
+    when enabled (progress=True and stderr a terminal). `report`: the caller's progress(steps_done)
+    instead (progress a callable), called with the steps done over the whole sweep."""
 
-    def __init__(self, total: int, enabled: bool) -> None:
+    def __init__(self, total: int, enabled: bool, report: Callable[[int], Any] | None = None) -> None:
         self.total, self.done, self.enabled, self.label = max(total, 1), 0, enabled, ""
+        self.report = report
         self.base, self.started, self.shown = 0, time.perf_counter(), 0.0
         self.bar: Any = None
         if enabled:
@@ -558,6 +545,9 @@ class _Progress:
 
     def _show(self, done: int, force: bool = False) -> None:
         delta, self.done = done - self.done, done
+        if self.report is not None:
+            self.report(done)
+            return
         if not self.enabled:
             return
         if self.bar is not None:
@@ -584,6 +574,20 @@ class _Progress:
             print(file=sys.stderr)
 
 
+def _progress_bar(progress: bool | Callable[[int], Any], problem: Problem | SceneCase, methods: Sequence[str],
+                  grid: Sequence[int], ref_method: str | None) -> _Progress:
+    """The sweep's progress: progress=True prints the estimated cost on stderr (_estimate) and shows a bar
+    while stderr is a terminal; a callable is called with the steps done; False shows nothing."""
+    if callable(progress):
+        return _Progress(1, False, progress)
+    total = 1
+    if progress:
+        estimate = _estimate(problem, methods, grid, ref_method)
+        print("\n".join(_wrap(estimate.text, 100)), file=sys.stderr, flush=True)
+        total = estimate.steps
+    return _Progress(total, bool(progress) and sys.stderr.isatty())
+
+
 def _fmt(x: Any) -> str:
     if isinstance(x, float):
         return f"{x:.3g}" if math.isfinite(x) else str(x)
@@ -592,22 +596,6 @@ def _fmt(x: Any) -> str:
 
 # ---------------------------------------------------------------------------------------------
 # ranking: timing noise, the cheapest run, the Pareto front
-
-
-def measure_unit(measure: str) -> str:
-    """The unit of `measure` (a name from MEASURES): "rad", "m", "m/s" or "-" (dimensionless)."""
-    _check_measure(measure)
-    return _UNITS[measure.removeprefix("final_").removeprefix("max_")]
-
-
-def measure_help() -> list[str]:
-    """One line per quantity of MEASURES: its names, unit and meaning (for --help)."""
-    lines = []
-    for quantity, meaning in _MEANINGS.items():
-        names = [m for m in MEASURES if m.removeprefix("final_").removeprefix("max_") == quantity]
-        unit = "" if _UNITS[quantity] == "-" else f" [{_UNITS[quantity]}]"
-        lines.append(f"{', '.join(names)}{unit}: {meaning}")
-    return lines
 
 
 def timing_noise(rows: Iterable[Mapping[str, Any]]) -> float:
@@ -1254,13 +1242,6 @@ def _json_row(row: Any) -> Any:
             for k, v in row.items()}
 
 
-def _check_measure(measure: Any) -> None:
-    if not isinstance(measure, str):
-        raise TypeError(f"measure: expected one of {', '.join(MEASURES)}, got {measure!r}")
-    if measure not in MEASURES:
-        raise ValueError(f"measure: expected one of {', '.join(MEASURES)}, got {measure!r}")
-
-
 def _is_real(x: Any) -> bool:
     return isinstance(x, (int, float, np.integer, np.floating)) and not isinstance(x, (bool, np.bool_))
 
@@ -1408,7 +1389,8 @@ def _as_problem(problem: Any, horizon: Any, initial: Any = None) -> Problem | Sc
 
 def tradeoff(problem: Any, methods: Iterable[str] | None = None,
              dts: Iterable[float] | None = None, horizon: float | None = None,
-             tolerance: float | None = None, measure: str | None = None, progress: bool = True,
+             tolerance: float | None = None, measure: str | None = None,
+             progress: bool | Callable[[int], Any] = True,
              cost: str = "time", samples: int = SAMPLES, max_reference_steps: int = 4_000_000,
              initial: Sequence[Any] | None = None) -> TradeoffResult:
     """Measure the speed–accuracy trade of integrators on a problem: every method at every dt, against a reference.
@@ -1444,9 +1426,12 @@ def tradeoff(problem: Any, methods: Iterable[str] | None = None,
     measure : str, optional
         One of ``rigiddyn.work_precision.MEASURES``. Default: ``final_attitude_error`` [rad] (a scene:
         ``final_state_error``).
-    progress : bool, default True
-        Print the estimated cost on stderr first (a timed probe of each method), then a progress bar while
-        stderr is a terminal.
+    progress : bool or callable, default True
+        True: print the estimated cost on stderr first (a timed probe of each method), then a progress bar
+        in steps while stderr is a terminal (tqdm if installed, else a plain one). False: nothing. A
+        callable: ``progress(steps_done)``, as ``simulate``'s, with the steps done over the whole sweep (runs,
+        repeats and references), called during each run as ``simulate`` calls its own and at each run's end;
+        an exception it raises stops the sweep and propagates. No estimate is printed.
     cost : {"time", "evaluations"}, default "time"
         What the recommendation minimises. By time, times within the measured timing noise count as equal.
     samples : int, optional
@@ -1511,8 +1496,8 @@ def tradeoff(problem: Any, methods: Iterable[str] | None = None,
     tolerance = tolerance if tolerance is not None else defaults.get("tolerance")
     if tolerance is not None:
         tolerance = _check_positive(tolerance, "tolerance")
-    if not isinstance(progress, (bool, np.bool_)):
-        raise TypeError(f"progress: expected True or False, got {progress!r}")
+    if not isinstance(progress, (bool, np.bool_)) and not callable(progress):
+        raise TypeError(f"progress: expected True, False or a callable progress(steps_done), got {progress!r}")
     if not isinstance(cost, str) or cost not in _COSTS:
         raise (TypeError if not isinstance(cost, str) else ValueError)(
             f"cost: expected one of {', '.join(_COSTS)}, got {cost!r}")
@@ -1520,18 +1505,13 @@ def tradeoff(problem: Any, methods: Iterable[str] | None = None,
     max_reference_steps = _check_count(max_reference_steps, "max_reference_steps")
     if isinstance(problem, SceneCase):
         grid = _step_grid(problem.horizon, dts, dts_name)
-        return scene_sweep(problem, methods, grid, measure, tolerance, bool(progress), cost, samples,
+        return scene_sweep(problem, methods, grid, measure, tolerance, progress, cost, samples,
                            max_reference_steps, info)
 
     exact = problem.has_exact_solution
     ref_method = _reference_method(info)
     grid = _step_grid(problem.horizon, dts, dts_name)
-    total = 1
-    if progress:
-        estimate = _estimate(problem, methods, grid, None if exact else ref_method)
-        print("\n".join(_wrap(estimate.text, 100)), file=sys.stderr, flush=True)
-        total = estimate.steps
-    bar = _Progress(total, bool(progress) and sys.stderr.isatty())
+    bar = _progress_bar(progress, problem, methods, grid, None if exact else ref_method)
     sweeps: list[tuple[int, float, list[_Run], _Reference | None]] = []
     try:
         for steps in grid:
@@ -1656,7 +1636,7 @@ def _fixed(states: SceneStates) -> Callable[[np.ndarray], SceneStates]:
 
 
 def scene_sweep(case: SceneCase, methods: list[str], grid: list[int], measure: str, tolerance: float | None,
-                progress: bool, cost: str, samples: int, max_reference_steps: int,
+                progress: bool | Callable[[int], Any], cost: str, samples: int, max_reference_steps: int,
                 info: dict[str, dict[str, Any]]) -> TradeoffResult:
     """The sweep of rigiddyn.tradeoff on a scene (arguments checked by it; `grid`: the step counts):
     against the scene's closed form when it is one's case (case.exact), else against a Richardson
@@ -1675,12 +1655,7 @@ def scene_sweep(case: SceneCase, methods: list[str], grid: list[int], measure: s
     runnable = [m for m in methods if case.compile(m).model is not None]
     free = not list(case.scene.elements) and getattr(case.scene, "frame", None) is None  # every body torque-free
     exact = {m for m in runnable if info[m]["order"] == 0 or (free and info[m]["exact_torque_free"])}
-    total = 1
-    if progress:
-        estimate = _estimate(case, runnable, grid, ref_method)
-        print("\n".join(_wrap(estimate.text, 100)), file=sys.stderr, flush=True)
-        total = estimate.steps
-    bar = _Progress(total, bool(progress) and sys.stderr.isatty())
+    bar = _progress_bar(progress, case, runnable, grid, ref_method)
     sweeps: list[tuple[int, float, dict[str, Any], Any, Any]] = []
     try:
         for steps in grid:

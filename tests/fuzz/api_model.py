@@ -160,8 +160,8 @@ def _target(path, owner, fn, name, drop_self):
 
 def public_targets(module, submodules: tuple[str, ...] = ()) -> tuple[list[Target], dict[str, str]]:
     """Every callable of module.__all__, and the names that have none with the reason. A module among
-    them (rigiddyn.monte_carlo), and each of `submodules` (public modules the package does not list in
-    __all__, such as rigiddyn.units), is walked in turn: its callables get paths "<submodule>.<name>"."""
+    them, and each of `submodules` (public modules the package does not list in
+    __all__, such as rigiddyn.units, rigiddyn.dispersion), is walked in turn: its callables get paths "<submodule>.<name>"."""
     targets, skipped = [], {}
     for name in module.__all__:
         obj = getattr(module, name)

@@ -5,7 +5,7 @@ by this one, so a crash or a hang is reported with the call that caused it.
   python tests/fuzz/fuzz_api.py --only 'quat_.*' --examples 300 --budget 120   # a longer hunt
 
 Targets: every name of `rigiddyn.__all__` (functions; classes: constructor, static and instance methods,
-operators), of the modules it lists (monte_carlo) and of PUBLIC_SUBMODULES (units), read by introspection
+operators), of the modules it lists and of PUBLIC_SUBMODULES (units, dispersion), read by introspection
 (api_model.py); arguments from strategies.py (scene files from scene_files.py). Oracle, for every call
 (the target and each call made to build its arguments):
   - it returns, or raises TypeError, ValueError or MemoryError (OSError from a function that takes a
@@ -93,21 +93,21 @@ DOCUMENTED_NON_FINITE = [
     ("Recommendation.*", {"inf"}, ("rigiddyn.work_precision", "tradeoff")),
     ("TradeoffResult.horizon", {"nan"}, ("rigiddyn.work_precision", "TradeoffResult")),  # "nan if unknown"
     ("TradeoffResult.to_dict()[horizon]", {"nan"}, ("rigiddyn.work_precision", "TradeoffResult")),
-    ("Statistics.std", {"nan"}, ("rigiddyn.monte_carlo", "Statistics")),  # "NaN below 2 samples"
+    ("Statistics.std", {"nan"}, ("rigiddyn.dispersion", "Statistics")),  # "NaN below 2 samples"
 ]
-# public modules of a package that its __all__ does not list (a module it lists, such as rigiddyn.monte_carlo, is
+# public modules of a package that its __all__ does not list (a module it lists is
 # walked anyway): their callables are targets "<submodule>.<name>"
-PUBLIC_SUBMODULES = {"rigiddyn": ("units",)}
+PUBLIC_SUBMODULES = {"rigiddyn": ("units", "dispersion")}
 # the module (beside this file) of a package's properties of results, fuzzed as targets "check.<name>"
 PROPERTIES = {"rigiddyn": "properties", "planted_bugs": "planted_bugs"}
 # targets left out, with the reason (they are listed as skipped)
 _HOOK = ("a hook monte_carlo calls with its own key, nominal value and generator (a custom dispersion overrides it); "
          "what reaches it is fuzzed through monte_carlo")
 EXCLUDED = {
-    "monte_carlo.Dispersion": "the base class of the dispersions (a custom one subclasses it; its subclasses are fuzzed)",
-    "monte_carlo.Statistics": "the record monte_carlo's statistics() returns (a frozen dataclass holding what it is "
+    "dispersion.Dispersion": "the base class of the dispersions (a custom one subclasses it; its subclasses are fuzzed)",
+    "dispersion.Statistics": "the record monte_carlo's statistics() returns (a frozen dataclass holding what it is "
                               "given; its values are checked where statistics() makes them)",
-    **{f"monte_carlo.{cls}.{hook}": _HOOK for cls in ("Dispersion", "Normal", "Uniform", "UniformRotation",
+    **{f"dispersion.{cls}.{hook}": _HOOK for cls in ("Dispersion", "Normal", "Uniform", "UniformRotation",
                                                        "RotationNormal", "InertiaDispersion", "LoadDispersion")
        for hook in ("bind", "draw")},
 }

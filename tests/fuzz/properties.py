@@ -297,7 +297,7 @@ def unit_decimal_comma(x: float, unit: str, pick: int) -> None:
 
 
 def _dispersions(spec: dict, prefix: str = ""):
-    mc = rd.monte_carlo
+    mc = rd.dispersion
     out = {}
     for key, (cls, args) in spec.items():
         if cls == "LoadDispersion":
@@ -311,7 +311,7 @@ def monte_carlo_reproducible(model: str, n: int, more: int, seed: int, dispersio
     """monte_carlo of n samples on 1 thread is the prefix of n + more samples on 3 threads, bitwise (inputs and
     records); drawn masses > 0, Uniform draws in [low, high), rotations of unit norm; statistics over the
     samples are numpy's over the values."""
-    mc = rd.monte_carlo
+    mc = rd.dispersion
     if model == "scene":
         body = rd.Scene(bodies=[rd.Particle(2.0), rd.RigidBody(1.0, [1.0, 2.0, 2.5])], body_names=["dot", "box"],
                         elements=[rd.UniformGravity()])

@@ -158,7 +158,7 @@ RECIPES["PivotedSceneResult"] = st.tuples(st.integers(0, 30), st.sampled_from(["
 RECIPE_CALLS = {
     "simulate": ["SimulationResult", "SceneResult", "PivotedSceneResult"], "simulate_batch": ["BatchResult", "BatchSceneResult"],
     "integrate_density_over_box": ["DensityIntegral"], "forward_dynamics": ["PivotedAcceleration"],
-    "monte_carlo.monte_carlo": ["monte_carlo.MonteCarloResult"],
+    "dispersion.monte_carlo": ["dispersion.MonteCarloResult"],
     **{name: [name] for name in ("Scene", "ScheduledLoads", "PivotedBody", "PivotedPlanarBody", "Thrust", "Wheel",
                                  "Gyrostat", "GyrostatState",
                                  "CompoundPendulumSolution", "LagrangeTopSolution", "RotatingFrameFreeParticle",
@@ -172,16 +172,16 @@ _MC_KEYS = ["p_W", "q_WB", "v_W", "w_B", "mass", "inertia", "gravity", "loads"]
 def _mc_dispersion(key: str):
     """A valid dispersion spec of one monte_carlo key (a body's field name, or a scene's "<body>.<field>")."""
     field = key.rsplit(".", 1)[-1]
-    normal = st.floats(0.0, 0.5).map(lambda s: _call_spec("monte_carlo.Normal", std=("lit", s)))
-    uniform = st.floats(0.0, 0.5).map(lambda h: _call_spec("monte_carlo.Uniform", [("lit", 1.0 - h), ("lit", 1.0 + h)]))
+    normal = st.floats(0.0, 0.5).map(lambda s: _call_spec("dispersion.Normal", std=("lit", s)))
+    uniform = st.floats(0.0, 0.5).map(lambda h: _call_spec("dispersion.Uniform", [("lit", 1.0 - h), ("lit", 1.0 + h)]))
     if field == "q_WB":
-        return st.one_of(st.just(_call_spec("monte_carlo.UniformRotation")),
-                         st.floats(0.0, 1.0).map(lambda s: _call_spec("monte_carlo.RotationNormal", [("lit", s)])))
+        return st.one_of(st.just(_call_spec("dispersion.UniformRotation")),
+                         st.floats(0.0, 1.0).map(lambda s: _call_spec("dispersion.RotationNormal", [("lit", s)])))
     if field == "inertia":
         return st.tuples(st.floats(0.0, 0.5), st.floats(0.0, 0.5)).map(lambda ra: _call_spec(
-            "monte_carlo.InertiaDispersion", [("lit", ra[0]), ("lit", ra[1])]))
+            "dispersion.InertiaDispersion", [("lit", ra[0]), ("lit", ra[1])]))
     if field == "loads":
-        return st.tuples(normal, uniform).map(lambda fu: _call_spec("monte_carlo.LoadDispersion", force=fu[0], torque=fu[1]))
+        return st.tuples(normal, uniform).map(lambda fu: _call_spec("dispersion.LoadDispersion", force=fu[0], torque=fu[1]))
     return st.one_of(normal, uniform)
 
 
@@ -191,16 +191,16 @@ def _mc_dispersions(keys):
 
 
 _SCENE_MC_KEYS = [f"body0.{f}" for f in ("p_W", "v_W", "mass")] + [f"body1.{f}" for f in _MC_KEYS[:6]]
-RECIPES["monte_carlo.MonteCarloResult"] = st.one_of(
+RECIPES["dispersion.MonteCarloResult"] = st.one_of(
     st.tuples(st.integers(1, 4), st.integers(0, 2**64), _mc_dispersions(_MC_KEYS), st.integers(0, 20)).map(
-        lambda a: _call_spec("monte_carlo.monte_carlo", [_call_spec("RigidBody", [("lit", 1.0), ("lit", [1.0, 2.0, 2.5])]),
+        lambda a: _call_spec("dispersion.monte_carlo", [_call_spec("RigidBody", [("lit", 1.0), ("lit", [1.0, 2.0, 2.5])]),
                                                          _call_spec("RigidBodyState", w_B=("lit", [0.1, 1.0, 0.1])),
                                                          ("lit", a[0])],
                              seed=("lit", a[1]), dispersions=a[2], dt=("lit", 0.01), steps=("lit", a[3]))),
     st.tuples(st.integers(1, 3), st.integers(0, 100), _mc_dispersions(_SCENE_MC_KEYS), st.integers(0, 20)).map(
-        lambda a: _call_spec("monte_carlo.monte_carlo", [_SCENE, _SCENE_STATES, ("lit", a[0])], seed=("lit", a[1]),
+        lambda a: _call_spec("dispersion.monte_carlo", [_SCENE, _SCENE_STATES, ("lit", a[0])], seed=("lit", a[1]),
                              dispersions=a[2], dt=("lit", 0.01), steps=("lit", a[3]))))
-RECIPES["monte_carlo.Statistics"] = st.tuples(RECIPES["monte_carlo.MonteCarloResult"], st.sampled_from(
+RECIPES["dispersion.Statistics"] = st.tuples(RECIPES["dispersion.MonteCarloResult"], st.sampled_from(
     ["t", "w_B", "total_energy", "kinetic_energy"])).map(lambda rq: ("method", rq[0], "statistics", [("lit", rq[1])], []))
 
 # the force element classes of a scene (Scene.add, Scene(elements=...))
@@ -395,7 +395,7 @@ class Strategies:
     def __init__(self, module, targets: list[Target], words: list[str], submodules: tuple[str, ...] = ()):
         self.module = module
         self.targets = targets
-        # class paths: "Scene", and a submodule's "monte_carlo.Normal"; found in annotations by the last part
+        # class paths: "Scene", and a submodule's "dispersion.Normal"; found in annotations by the last part
         self.class_objects = public_classes(module, submodules)
         self.classes = list(self.class_objects)
         self._short = {path.split(".")[-1]: path for path in self.classes}

@@ -34,7 +34,8 @@ INTERNAL = {
     "scene_describe": "attaches Scene.describe and CompiledScene.describe",
     "scene_precision": "tradeoff's machinery for scenes (documented through rigiddyn.tradeoff)",
     "_names": "the closest known name for the 'did you mean' of error messages (their messages state it)",
-    "_memory": "the memory estimates of scene_file's [[cluster]] and monte_carlo (their docs state them)",
+    "_measures": "the names, units and meanings of tradeoff's error measures (rigiddyn.work_precision's)",
+    "_memory": "the memory estimates of scene_file's [[cluster]] and dispersion (their docs state them)",
 }
 
 _DIRECTIVE = re.compile(r"^\.\. (currentmodule|automodule|autosummary)::\s*(\S*)\s*$")

@@ -9,7 +9,7 @@ import pint
 import pytest
 
 import rigiddyn as rd
-from rigiddyn import monte_carlo as mc
+from rigiddyn import dispersion as mc
 
 ureg = pint.UnitRegistry()
 BODY = rd.RigidBody(2.0, [1.0, 2.0, 3.0])

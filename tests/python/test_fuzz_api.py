@@ -1,8 +1,8 @@
 """A hypothesis fuzz of the whole public API, run in a subprocess (tests/fuzz/fuzz_api.py).
 
 Every callable of rigiddyn.__all__ (found by introspection, so a new function is fuzzed without a
-change here), of the modules it lists (rigiddyn.monte_carlo) and of its other public modules
-(rigiddyn.units) is called with plausible and wild arguments: random shapes, dtypes (float64/32/16, int,
+change here), of the modules it lists and of its other public modules
+(rigiddyn.units, rigiddyn.dispersion) is called with plausible and wild arguments: random shapes, dtypes (float64/32/16, int,
 bool, complex, object, big-endian) and layouts, magnitudes log-uniform from 1e-323 to 1e308 of both
 signs, NaN, inf, empty and 0-d arrays, read-only broadcast views of up to 1e12 rows, scene files (valid,
 with units, mutated, broken: tests/fuzz/scene_files.py). Each call runs in a

@@ -5,12 +5,11 @@ the test needs no build). Its nodes are the package's modules: ``rigiddyn`` (``_
 ``rigiddyn.x`` for ``x.py``, for ``x.pyi`` (the stub of an extension such as ``_core``) and for a
 subpackage ``x/``. An edge a -> b says that importing a imports b, under these rules:
 
-- Counted: every import statement that runs while the module is imported: at module level, also inside
-  ``if``, ``try``, ``with`` and class bodies, and under ``if TYPE_CHECKING:`` (such an import ties the
-  module's annotations to the other module: type checkers and ``typing.get_type_hints`` follow it, and a
-  guard that only hides it from the interpreter layers nothing).
-- Not counted: imports inside a function (``def``, ``async def``, ``lambda``): they are lazy and run
-  when the function is called, after every module has been imported.
+- Counted: every import statement of the module, wherever it is: at module level, also inside ``if``,
+  ``try``, ``with`` and class bodies, under ``if TYPE_CHECKING:`` (such an import ties the module's
+  annotations to the other module: type checkers and ``typing.get_type_hints`` follow it, and a guard
+  that only hides it from the interpreter layers nothing), and inside a function (``def``, ``async
+  def``, ``lambda``): a lazy import defers the cycle to the call, it does not layer the modules.
 - ``from . import x``, ``from rigiddyn import x``, ``import rigiddyn.x`` with ``x`` a submodule: an
   edge to ``rigiddyn.x`` only. Importing a submodule first imports its parent packages, but the
   packages that contain the importing module have already started importing and need not finish
@@ -69,8 +68,8 @@ def module_names(package: Path) -> dict[str, Path | None]:
     return modules
 
 
-def _runs_at_import(tree: ast.Module) -> list[ast.Import | ast.ImportFrom]:
-    """The import statements of a module that run while it is imported.
+def _imports(tree: ast.Module) -> list[ast.Import | ast.ImportFrom]:
+    """The import statements of a module, wherever they are.
 
     Parameters
     ----------
@@ -80,19 +79,10 @@ def _runs_at_import(tree: ast.Module) -> list[ast.Import | ast.ImportFrom]:
     Returns
     -------
     list of ast.Import or ast.ImportFrom
-        Every import statement outside a function body (``def``, ``async def``, ``lambda``), in source
-        order.
+        Every import statement (at module level and inside functions, classes, ``if`` and ``try``
+        blocks), in source order.
     """
-    found: list[ast.Import | ast.ImportFrom] = []
-    pending: list[ast.AST] = [tree]
-    while pending:
-        node = pending.pop()
-        for child in ast.iter_child_nodes(node):
-            if isinstance(child, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda)):
-                continue
-            if isinstance(child, (ast.Import, ast.ImportFrom)):
-                found.append(child)
-            pending.append(child)
+    found = [node for node in ast.walk(tree) if isinstance(node, (ast.Import, ast.ImportFrom))]
     return sorted(found, key=lambda node: (node.lineno, node.col_offset))
 
 
@@ -168,7 +158,7 @@ def _targets(node: ast.Import | ast.ImportFrom, own_package: str, top: str,
 
 
 def import_graph(package: Path) -> tuple[dict[str, set[str]], Edges]:
-    """The graph of the imports between a package's own modules that run at import (module docstring).
+    """The graph of the imports between a package's own modules (module docstring).
 
     Parameters
     ----------
@@ -191,7 +181,7 @@ def import_graph(package: Path) -> tuple[dict[str, set[str]], Edges]:
             continue
         own_package = name if path.name == "__init__.py" else name.rpartition(".")[0]
         tree = ast.parse(path.read_text(encoding="utf-8"), filename=str(path))
-        for node in _runs_at_import(tree):
+        for node in _imports(tree):
             for target in _targets(node, own_package, package.name, modules):
                 for module in _imported(name, target, modules):
                     graph[name].add(module)
@@ -373,16 +363,17 @@ def test_a_longer_cycle_is_named_whole(tmp_path: Path) -> None:
         "pkg.a -> pkg.b -> pkg.c -> pkg.a (pkg/a.py:1, pkg/b.py:1, pkg/c.py:2)"]
 
 
-def test_imports_inside_functions_are_not_edges(tmp_path: Path) -> None:
-    """A lazy import (in a function, a method or a lambda) runs after every module is imported."""
+def test_imports_inside_functions_are_edges(tmp_path: Path) -> None:
+    """A lazy import (in a function, a method or a lambda) is an edge: it defers a cycle, it does not break it."""
     package = _write_package(tmp_path, {
         "a.py": "from . import b\n",
-        "b.py": ("def f():\n    from . import a\n\n\nclass C:\n    def g(self):\n        import pkg.a\n\n\n"
+        "b.py": ("def f():\n    from . import a\n\n\nclass C:\n    def g(self):\n        import pkg.c\n\n\n"
                  "h = lambda: __import__('pkg.a')\n"),
+        "c.py": "",
     })
     graph, where = import_graph(package)
-    assert graph["pkg.b"] == set()
-    assert import_cycles(graph, where) == []
+    assert graph["pkg.b"] == {"pkg.a", "pkg.c"}
+    assert import_cycles(graph, where) == ["pkg.a -> pkg.b -> pkg.a (pkg/a.py:1, pkg/b.py:2)"]
 
 
 def test_init_importing_submodules_that_import_siblings_is_no_cycle(tmp_path: Path) -> None:

@@ -17,8 +17,8 @@ import numpy as np
 import pytest
 
 import rigiddyn as rd
-from rigiddyn import monte_carlo as mc
-from rigiddyn.monte_carlo import Normal
+from rigiddyn import dispersion as mc
+from rigiddyn.dispersion import Normal
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 EPS = np.finfo(float).eps
@@ -163,15 +163,15 @@ def test_serial_equals_threaded_bitwise():
 def test_client_routes_to_distributed(monkeypatch):
     calls = []
 
-    def fake_simulate_batch(model, initial, dt, steps, *, client, **options):
-        calls.append(client)
+    def fake_simulate_batch(model, initial, dt, steps, *, client, progress, **options):
+        calls.append((client, progress))
         return rd.simulate_batch(model, initial, dt, steps, **options)
 
     monkeypatch.setitem(sys.modules, "rigiddyn.distributed",
                         types.SimpleNamespace(simulate_batch=fake_simulate_batch))
     remote = small_run(n=4, client="tcp://scheduler:8786")
     local = small_run(n=4)
-    assert calls == ["tcp://scheduler:8786"]
+    assert calls == [("tcp://scheduler:8786", False)]  # no bar unless progress=True
     np.testing.assert_array_equal(remote.batch.q_WB, local.batch.q_WB)
 
 

@@ -277,7 +277,7 @@ def test_a_bad_target_unit_is_refused_naming_unit(unit, error):
 
 
 def test_attitude_error_refuses_what_is_no_quaternion_array():
-    from rigiddyn.monte_carlo import attitude_error
+    from rigiddyn.dispersion import attitude_error
 
     for q, ref in ((0.0, 0.0), (np.array(1.0), np.zeros(3)), (np.zeros(3), np.array([0.0, 0.0, 0.0, 1.0]))):
         with pytest.raises(ValueError, match=r"q_WB(_ref)?: expected quaternions of shape \(\.\.\., 4\)"):

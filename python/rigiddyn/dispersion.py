@@ -1,6 +1,8 @@
 """Monte Carlo dispersions of a rigid body's (or a scene's bodies') initial state, mass properties and loads.
 
-`monte_carlo` draws N samples of the dispersed inputs, runs them as one `rigiddyn.simulate_batch`
+The run is the function `rigiddyn.monte_carlo` (this module, rigiddyn.dispersion, holds it, the dispersions
+Normal, Uniform, UniformRotation, RotationNormal, InertiaDispersion, LoadDispersion and the result,
+MonteCarloResult). `monte_carlo` draws N samples of the dispersed inputs, runs them as one `rigiddyn.simulate_batch`
 (on this machine's threads, or on a Dask cluster through `rigiddyn.distributed` when `client=` is
 given), and returns a `MonteCarloResult`: the stacked records, the sampled inputs (to correlate inputs
 with outcomes), and statistics and percentiles of any recorded quantity at every record or at a time.
@@ -569,7 +571,11 @@ def _nominal_gravity(gravity: Any) -> np.ndarray:
 def _nominal_loads(loads: Any) -> list[Any]:
     if loads is None:
         return []
-    return [loads] if isinstance(loads, _core.AppliedLoad) else list(loads)
+    if isinstance(loads, _core.AppliedLoad):
+        return [loads]
+    if not isinstance(loads, Sequence) or not all(isinstance(load, _core.AppliedLoad) for load in loads):
+        raise TypeError(f"loads: expected None, an AppliedLoad or a list of AppliedLoad, got {loads!r}")
+    return list(loads)
 
 
 def _check_dispersions(dispersions: Any, nominal: dict[str, Any]) -> dict[str, Dispersion]:
@@ -769,35 +775,117 @@ def _check_memory(n: int, steps: int, record_every: int, model: Any) -> None:
                          "fewer samples, or a larger record_every)")
 
 
+def _sample_bar(n: int, enabled: bool) -> tuple[Callable[[int], None] | None, Callable[[], None] | None]:
+    """(progress(samples_done) for simulate_batch, close()) of a bar of n samples on stderr: tqdm if installed,
+    else a plain one; (None, None) when not enabled."""
+    if not enabled:
+        return None, None
+    try:
+        from tqdm import tqdm
+    except ImportError:
+        def show(done: int) -> None:
+            print(f"\rmonte_carlo: {done}/{n} samples", end="", file=sys.stderr, flush=True)
+
+        def end() -> None:
+            print(file=sys.stderr)
+
+        return show, end
+    bar = tqdm(total=n, desc="monte_carlo", unit="sample", file=sys.stderr)
+
+    def update(done: int) -> None:
+        bar.update(done - bar.n)
+
+    return update, bar.close
+
+
 def monte_carlo(model: Any, nominal_state: Any, n: int, *, seed: Any,
                 dispersions: Mapping[str, Dispersion] | None = None,
                 dt: Any, steps: int | None = None, duration: Any = None, method: str | None = None,
                 record_every: int = 1, loads: Any = None, gravity: Any = None, t0: Any = 0.0,
-                threads: int | None = None, client: Any = None) -> MonteCarloResult:
+                threads: int | None = None, client: Any = None,
+                progress: bool | Callable[[int], Any] = False) -> MonteCarloResult:
     """N runs of a rigid body, or of a scene, with dispersed initial states, mass properties and loads.
 
-    model: a RigidBody (mass [kg], inertia about the centre of mass in B [kg m^2]): the nominal body; or a
-      Scene / CompiledScene, whose bodies' states and mass properties are dispersed under the keys
-      "<body name>.<field>" (fields p_W, q_WB, v_W, w_B, mass, inertia of a RigidBody; p_W, v_W, mass of a
-      Particle; q_WB, w_B of a PivotedBody; theta [rad], omega [rad/s] of a PivotedPlanarBody; a PlanarBody is
-      not dispersed); its loads and gravity are its elements.
-    nominal_state: a RigidBodyState (p_W [m], q_WB (x, y, z, w), v_W [m/s] in W, w_B [rad/s] in B); for a
-      scene, the list of its bodies' states.
-    n: number of samples N >= 1, whose records fit in the memory available (estimated before any draw:
-      ValueError naming n otherwise). seed: an integer >= 0, a numpy.random.SeedSequence, or None (fresh
-      entropy, kept as result.seed); sample i draws from SeedSequence(seed).spawn(n)[i] (module docstring).
-    dispersions: {key: dispersion} (keys and classes in the module docstring); a key not given keeps its
-      nominal value (the state's field, the body's mass and inertia, `gravity`, `loads`).
-    dt [s], steps or duration [s] (exactly one; a duration in whole steps of dt), method (None: 'rk4', or a
-      CompiledScene's), record_every, loads (the nominal schedule), gravity (None/False: none, True: (0, 0,
-      -9.81) m/s^2, or a 3-vector in W), t0 [s]: as rigiddyn.simulate, common to every sample.
-    threads: threads of the local run (None: all cores). client: None (run on this machine with
-      rigiddyn.simulate_batch), or a dask.distributed Client / scheduler address: the samples run through
-      rigiddyn.distributed.simulate_batch (the same draws and, bitwise, the same result).
+    Draws N samples of the dispersed inputs (sample i from its own generator, a function of (seed, i) only:
+    module docstring of ``rigiddyn.dispersion``), then runs them as one ``simulate_batch`` on this machine's
+    threads, or through ``rigiddyn.distributed.simulate_batch`` on a Dask cluster (the same draws and,
+    bitwise, the same result).
 
-    Returns a MonteCarloResult (the BatchResult or BatchSceneResult, the drawn inputs, statistics and
-    percentiles). Warns DispersionWarning when invalid draws were redrawn. TypeError / ValueError name a bad
-    argument.
+    Parameters
+    ----------
+    model : RigidBody, Scene or CompiledScene
+        The nominal body (mass [kg], inertia about the centre of mass in B [kg m²]); or a scene, whose
+        bodies' states and mass properties are dispersed under the keys ``"<body name>.<field>"`` (fields
+        p_W, q_WB, v_W, w_B, mass, inertia of a RigidBody; p_W, v_W, mass of a Particle; q_WB, w_B of a
+        PivotedBody; theta [rad], omega [rad/s] of a PivotedPlanarBody; a PlanarBody is not dispersed); a
+        scene's loads and gravity are its elements.
+    nominal_state : RigidBodyState or list of body states
+        p_W [m], q_WB (x, y, z, w), v_W [m/s] in W, w_B [rad/s] in B; for a scene, its bodies' states.
+    n : int
+        Number of samples N >= 1, whose records fit in the memory available (estimated before any draw:
+        ValueError naming n otherwise).
+    seed : int, numpy.random.SeedSequence or None, keyword-only
+        An integer >= 0, a SeedSequence, or None (fresh entropy, kept as ``result.seed``); sample i draws
+        from ``SeedSequence(seed).spawn(n)[i]``.
+    dispersions : dict of str to Dispersion, optional
+        {key: dispersion} (keys and classes in the module docstring of ``rigiddyn.dispersion``); a key not
+        given keeps its nominal value (the state's field, the body's mass and inertia, `gravity`, `loads`).
+    dt : float, keyword-only
+        Step [s].
+    steps : int, optional
+        Steps of every run; exactly one of `steps` and `duration`.
+    duration : float, optional
+        Length of the runs [s], a whole number of steps of dt.
+    method : str, optional
+        None: ``"rk4"``, or a CompiledScene's method.
+    record_every, loads, gravity, t0
+        As ``simulate``, common to every sample: record every k-th step; the nominal load schedule; gravity
+        (None/False: none, True: (0, 0, -9.81) m/s², or a 3-vector in W [m/s²]); the initial time [s].
+    threads : int, optional
+        Threads of the local run (None: all cores); None with `client`.
+    client : dask.distributed.Client or str, optional
+        None: run on this machine with ``simulate_batch``; a Client or a scheduler address: run through
+        ``rigiddyn.distributed.simulate_batch``.
+    progress : bool or callable, default False
+        False: nothing. True: a bar of samples on stderr (tqdm if installed, else a plain one). A callable:
+        ``progress(samples_done)``, as ``simulate_batch`` calls its own (from the calling thread once before
+        the samples start, then about every 0.05 s; an exception it raises stops the run and propagates).
+        With `client`: True or False (``rigiddyn.distributed``'s bar of chunks).
+
+    Returns
+    -------
+    MonteCarloResult
+        The BatchResult or BatchSceneResult, the drawn inputs, statistics and percentiles.
+
+    Raises
+    ------
+    TypeError, ValueError
+        An argument that is not valid (the message names it).
+
+    Warns
+    -----
+    DispersionWarning
+        When invalid draws (a mass <= 0, an unphysical inertia) were redrawn.
+
+    See Also
+    --------
+    simulate_batch : the batch it runs.
+
+    Examples
+    --------
+    A torque-free body spun about its major axis with rates dispersed by 0.01 rad/s: every sample keeps
+    the magnitude of its body angular momentum |I w_B| (RK4 at dt·|ω| = 0.01 over 1 s: drift below 1e-6):
+
+    >>> body = rd.RigidBody(2.0, [1.0, 2.0, 3.0])
+    >>> spin = rd.RigidBodyState(w_B=[0.0, 0.0, 1.0])
+    >>> run = rd.monte_carlo(body, spin, 100, seed=1, dispersions={"w_B": rd.dispersion.Normal(std=0.01)},
+    ...                      dt=0.01, steps=100)
+    >>> len(run), run.values("w_B").shape
+    (100, (100, 101, 3))
+    >>> L_0 = np.linalg.norm(run.inputs["w_B"] * [1.0, 2.0, 3.0], axis=1)
+    >>> L_1 = np.linalg.norm(run.values("w_B", at=1.0) * [1.0, 2.0, 3.0], axis=1)
+    >>> bool(np.all(np.abs(L_1 - L_0) <= 1e-6 * L_0))
+    True
     """
     scene = model.scene if isinstance(model, _core.CompiledScene) else model
     if not isinstance(model, (_core.RigidBody, _core.Scene, _core.CompiledScene)):
@@ -808,6 +896,11 @@ def monte_carlo(model: Any, nominal_state: Any, n: int, *, seed: Any,
         raise TypeError(f"n: expected a sample count (an integer >= 1), got {n!r}")
     if n < 1:
         raise ValueError(f"n: expected a sample count >= 1, got {n!r}")
+    if not isinstance(progress, (bool, np.bool_)) and not callable(progress):
+        raise TypeError(f"progress: expected True, False or a callable progress(samples_done), got {progress!r}")
+    if client is not None and callable(progress):
+        raise TypeError(f"progress: expected True or False with client= (the cluster's bar of chunks), "
+                        f"got {progress!r}")
     if client is not None and threads is not None:
         raise ValueError(f"threads: expected None with client= (the workers' threads are the cluster's), "
                          f"got {threads!r}")
@@ -833,11 +926,17 @@ def monte_carlo(model: Any, nominal_state: Any, n: int, *, seed: Any,
         if method is None and isinstance(model, _core.CompiledScene):
             method = model.method  # also when the samples run rebuilt scenes
     options.update(method=method, t0=t0)
-    import rigiddyn  # the package's simulate_batch and distributed, looked up at call time
-
     if client is None:
-        batch = rigiddyn.simulate_batch(batch_model, initial, dt, steps, threads=threads, **options)
+        update, close = (progress, None) if callable(progress) else _sample_bar(int(n), bool(progress))
+        try:
+            batch = _core.simulate_batch(batch_model, initial, dt, steps, threads=threads, progress=update, **options)
+            if close is not None and update is not None:  # the bar shows the run complete
+                update(int(n))
+        finally:
+            if close is not None:
+                close()
     else:
         distributed = importlib.import_module("rigiddyn.distributed")
-        batch = distributed.simulate_batch(batch_model, initial, dt, steps, client=client, **options)
+        batch = distributed.simulate_batch(batch_model, initial, dt, steps, client=client, progress=bool(progress),
+                                           **options)
     return MonteCarloResult(batch, inputs, redraws, seeds.entropy, dispersions)
