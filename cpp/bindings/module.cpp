@@ -5,7 +5,7 @@
 #include "rigiddyn/version.hpp"
 
 PYBIND11_MODULE(_core, m) {
-  m.doc() = "rigiddyn's C++ core (rotations, frames, spatial algebra, inertia, dynamics).";
+  m.doc() = "rigiddyn's C++ core (rotations, frames, spatial algebra, inertia, dynamics, orbits).";
   m.attr("__version__") = rigiddyn::version();
   rigiddyn::bindings::bind_so3(m);
   rigiddyn::bindings::bind_so3_ops(m);
@@ -22,5 +22,6 @@ PYBIND11_MODULE(_core, m) {
   rigiddyn::bindings::bind_batch(m);
   rigiddyn::bindings::bind_exact(m);
   rigiddyn::bindings::bind_exact_dynamics(m);
+  rigiddyn::bindings::bind_orbit(m);
   rigiddyn::bindings::add_text_signatures(m);  // last: every function and class registered
 }

@@ -1,12 +1,12 @@
 """
-rigiddyn's C++ core (rotations, frames, spatial algebra, inertia, dynamics).
+rigiddyn's C++ core (rotations, frames, spatial algebra, inertia, dynamics, orbits).
 """
 from __future__ import annotations
 import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['AppliedLoad', 'BatchResult', 'BatchSceneResult', 'BodyAcceleration', 'ComWrench', 'CompiledScene', 'CompoundPendulumSolution', 'ConstantThrustSolution', 'DensityIntegral', 'Drag', 'ElementField', 'FORCE_ELEMENTS', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'GravityGradient', 'Gyrostat', 'GyrostatState', 'InertiaCheck', 'InertiaReport', 'KineticEnergy', 'LagrangeTopSolution', 'MagneticDipole', 'MassFlow', 'MeshWeldWarning', 'Motion', 'MutualGravity', 'Particle', 'ParticleState', 'PivotedAcceleration', 'PivotedBody', 'PivotedBodyState', 'PivotedPlanarAcceleration', 'PivotedPlanarBody', 'PivotedPlanarBodyState', 'PivotedPlanarTorque', 'PivotedTorque', 'PlanarAcceleration', 'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointMassGravity', 'PointVelocity', 'PrincipalAxes', 'PythonForce', 'ReactionWheel', 'RigidBody', 'RigidBodyState', 'RotatingFrameFreeParticle', 'Scene', 'SceneCompatibilityWarning', 'SceneFrame', 'SceneResult', 'ScheduledLoads', 'Screw', 'SimulationResult', 'SpatialInertia', 'SpringDamper', 'Thrust', 'TorqueFreeSolution', 'Transform', 'UniformGravity', 'WeldedMesh', 'Wheel', 'align_vectors', 'angular_distance', 'angular_momentum', 'angular_velocity_from_quat_rate', 'apply_impulse', 'axis_angle_to_quat', 'box_shell', 'compose_kinematics', 'composite', 'davenport_to_quat', 'default_thread_count', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'from_point_masses', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation', 'nearest_valid_inertia', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix', 'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'simulate', 'simulate_batch', 'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'twist_to_screw', 'vee', 'weld_vertices']
+__all__: list[str] = ['AppliedLoad', 'BatchResult', 'BatchSceneResult', 'BodyAcceleration', 'ComWrench', 'CompiledScene', 'CompoundPendulumSolution', 'ConstantThrustSolution', 'DensityIntegral', 'Drag', 'ElementField', 'FORCE_ELEMENTS', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'GravityGradient', 'Gyrostat', 'GyrostatState', 'InertiaCheck', 'InertiaReport', 'KineticEnergy', 'LagrangeTopSolution', 'MagneticDipole', 'MassFlow', 'MeshWeldWarning', 'Motion', 'MutualGravity', 'Particle', 'ParticleState', 'PivotedAcceleration', 'PivotedBody', 'PivotedBodyState', 'PivotedPlanarAcceleration', 'PivotedPlanarBody', 'PivotedPlanarBodyState', 'PivotedPlanarTorque', 'PivotedTorque', 'PlanarAcceleration', 'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointMassGravity', 'PointVelocity', 'PrincipalAxes', 'PythonForce', 'ReactionWheel', 'RigidBody', 'RigidBodyState', 'RotatingFrameFreeParticle', 'Scene', 'SceneCompatibilityWarning', 'SceneFrame', 'SceneResult', 'ScheduledLoads', 'Screw', 'SimulationResult', 'SpatialInertia', 'SpringDamper', 'Thrust', 'TorqueFreeSolution', 'Transform', 'UniformGravity', 'WeldedMesh', 'Wheel', 'align_vectors', 'angular_distance', 'angular_momentum', 'angular_velocity_from_quat_rate', 'apply_impulse', 'attitude_from_orbit_frame', 'attitude_to_orbit_frame', 'axis_angle_to_quat', 'box_shell', 'compose_kinematics', 'composite', 'davenport_to_quat', 'default_thread_count', 'eccentric_to_mean_anomaly', 'eccentric_to_true_anomaly', 'elements_to_state', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'from_point_masses', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kepler_propagate', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mean_to_eccentric_anomaly', 'mean_to_true_anomaly', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation', 'nearest_valid_inertia', 'orbit_frame_angular_velocity', 'orbit_frame_rotation', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix', 'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'semi_latus_rectum', 'simulate', 'simulate_batch', 'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'state_to_elements', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'true_to_eccentric_anomaly', 'true_to_mean_anomaly', 'twist_to_screw', 'vee', 'weld_vertices']
 class FrameKinematics:
     """
     Frame F relative to frame P at one instant: orientation, angular velocity and acceleration, and the
@@ -6434,6 +6434,119 @@ def apply_impulse(body: typing.Any, state: typing.Any, impulse: typing.Any, poin
     >>> after.v_W, after.w_B.round(12)
     (array([0., 1., 0.]), array([0.        , 0.        , 0.66666667]))
     """
+def attitude_from_orbit_frame(r_W: typing.Any, v_W: typing.Any, q_OB: typing.Any, w_OB_B: typing.Any, frame: typing.Any = 'lvlh', scalar_first: typing.Any = False) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    """
+    Inertial attitude and rate (q_WB, w_B) of an attitude and rate given relative to an orbit frame O.
+    
+    q_WB = q_WO (x) q_OB and w_B = w_OB_B + R_WB^T w_WO_W (angular velocities add): the initial state of a
+    body whose attitude is given relative to LVLH or RSW (q_OB = identity, w_OB_B = 0: a body that holds
+    the orbit frame, as a gravity-gradient-stabilised satellite).
+    
+    Parameters
+    ----------
+    r_W : array_like, shape (3,) or (n, 3)
+        Position of the body relative to the central body's centre, in the inertial frame W [m].
+    v_W : array_like, shape (3,) or (n, 3)
+        Velocity of the body relative to the central body, in W [m/s]; not parallel to `r_W`.
+    q_OB : array_like, shape (4,) or (n, 4)
+        Attitude of the body B relative to O, unit quaternions (x, y, z, w) ((w, x, y, z) if
+        `scalar_first`); norm within 1e-6 of 1 (then normalised).
+    w_OB_B : array_like, shape (3,) or (n, 3)
+        Angular velocity of B relative to O, expressed in B [rad/s].
+    frame : str, default 'lvlh'
+        'lvlh': z_O = -r/|r| (nadir), y_O = -h/|h| (opposite the orbit normal h = r x v), x_O = y_O x z_O
+        (along-track; along v on a circular orbit), the attitude texts' LVLH with roll, pitch and yaw axes
+        x, y, z (Wie, "Space Vehicle Dynamics and Control"). 'rsw': Hill's frame, x_O = r/|r| (R, radial out),
+        z_O = h/|h| (W, the orbit normal), y_O = z_O x x_O (S, along-track) (Vallado, "Fundamentals of
+        Astrodynamics and Applications").
+    scalar_first : bool, default False
+        Read and write quaternions scalar first, (w, x, y, z), as MuJoCo does.
+    
+    Returns
+    -------
+    q_WB : ndarray, shape (4,) or (n, 4)
+        Attitude of B in W, in the order of the input.
+    w_B : ndarray, shape (3,) or (n, 3)
+        Angular velocity of B in W, expressed in B [rad/s] (`RigidBodyState`'s w_B).
+    
+    Raises
+    ------
+    ValueError
+        A non-finite entry or a wrong shape (the message names `r_W` or `v_W` and, in a stack, the item),
+        stacks of different lengths, or r x v = 0 (the message names `r_W, v_W`: a rectilinear orbit has no
+        plane).
+        A quaternion farther than 1e-6 from unit norm (the message names `q_OB`); `frame` not 'lvlh' or
+        'rsw'.
+    
+    See Also
+    --------
+    attitude_to_orbit_frame, orbit_frame_rotation
+    
+    Examples
+    --------
+    Holding LVLH on the circular orbit of the shipped gravity_gradient scene: q_WB = identity there and
+    w_B = (0, -n, 0), n = 1.078007612872506e-3 rad/s:
+    
+    >>> q, w = rd.attitude_from_orbit_frame([0.0, 0.0, -7e6], [7546.053290107541, 0.0, 0.0], [0, 0, 0, 1.0], np.zeros(3))
+    >>> q.round(12), (w / 1.078007612872506e-3).round(12) + 0.0
+    (array([0., 0., 0., 1.]), array([ 0., -1.,  0.]))
+    """
+def attitude_to_orbit_frame(r_W: typing.Any, v_W: typing.Any, q_WB: typing.Any, w_B: typing.Any, frame: typing.Any = 'lvlh', scalar_first: typing.Any = False) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    """
+    Attitude and rate relative to an orbit frame O of an inertial attitude and rate (q_WB, w_B).
+    
+    q_OB = q_WO^-1 (x) q_WB and w_OB_B = w_B - R_WB^T w_WO_W: reads a recorded attitude relative to LVLH or
+    RSW (the inverse of `attitude_from_orbit_frame`).
+    
+    Parameters
+    ----------
+    r_W : array_like, shape (3,) or (n, 3)
+        Position of the body relative to the central body's centre, in the inertial frame W [m].
+    v_W : array_like, shape (3,) or (n, 3)
+        Velocity of the body relative to the central body, in W [m/s]; not parallel to `r_W`.
+    q_WB : array_like, shape (4,) or (n, 4)
+        Attitude of the body B in W, unit quaternions (x, y, z, w) ((w, x, y, z) if `scalar_first`);
+        norm within 1e-6 of 1 (then normalised).
+    w_B : array_like, shape (3,) or (n, 3)
+        Angular velocity of B in W, expressed in B [rad/s].
+    frame : str, default 'lvlh'
+        'lvlh': z_O = -r/|r| (nadir), y_O = -h/|h| (opposite the orbit normal h = r x v), x_O = y_O x z_O
+        (along-track; along v on a circular orbit), the attitude texts' LVLH with roll, pitch and yaw axes
+        x, y, z (Wie, "Space Vehicle Dynamics and Control"). 'rsw': Hill's frame, x_O = r/|r| (R, radial out),
+        z_O = h/|h| (W, the orbit normal), y_O = z_O x x_O (S, along-track) (Vallado, "Fundamentals of
+        Astrodynamics and Applications").
+    scalar_first : bool, default False
+        Read and write quaternions scalar first, (w, x, y, z), as MuJoCo does.
+    
+    Returns
+    -------
+    q_OB : ndarray, shape (4,) or (n, 4)
+        Attitude of B relative to O, in the order of the input.
+    w_OB_B : ndarray, shape (3,) or (n, 3)
+        Angular velocity of B relative to O, expressed in B [rad/s].
+    
+    Raises
+    ------
+    ValueError
+        A non-finite entry or a wrong shape (the message names `r_W` or `v_W` and, in a stack, the item),
+        stacks of different lengths, or r x v = 0 (the message names `r_W, v_W`: a rectilinear orbit has no
+        plane).
+        A quaternion farther than 1e-6 from unit norm (the message names `q_WB`); `frame` not 'lvlh' or
+        'rsw'.
+    
+    See Also
+    --------
+    attitude_from_orbit_frame, orbit_frame_rotation
+    
+    Examples
+    --------
+    A body turning at the orbit rate about -y_W on that orbit holds LVLH: no attitude or rate relative to it:
+    
+    >>> r, v = [0.0, 0.0, -7e6], [7546.053290107541, 0.0, 0.0]
+    >>> q, w = rd.attitude_to_orbit_frame(r, v, [0, 0, 0, 1.0], [0.0, -1.078007612872506e-3, 0.0])
+    >>> q.round(12), bool(np.abs(w).max() < 1e-18)
+    (array([0., 0., 0., 1.]), True)
+    """
 def axis_angle_to_quat(axis: typing.Any, angle: typing.Any, scalar_first: typing.Any = False, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Unit quaternion of the rotation by an angle about an axis (right-hand rule).
@@ -6674,6 +6787,131 @@ def default_thread_count() -> int:
     --------
     >>> rd.default_thread_count() >= 1
     True
+    """
+def eccentric_to_mean_anomaly(E: typing.Any, e: typing.Any) -> typing.Any:
+    """
+    Mean anomaly of the eccentric or hyperbolic anomaly: Kepler's equation.
+    
+    M = E - e sin E for 0 <= e < 1, M = e sinh H - H for e > 1 (Curtis, "Orbital Mechanics for Engineering
+    Students", sec. 3.4 and 3.6), evaluated as (1 - e) E + e (E - sin E) and (e - 1) H + e (sinh H - H)
+    with series for E - sin E and sinh H - H near 0: to a few ulps of M also near periapsis as e -> 1.
+    M = n t grows linearly in the time t since periapsis (n = sqrt(mu/|a|^3)).
+    
+    Parameters
+    ----------
+    E : float or array_like, shape (n,)
+        Eccentric anomaly (e < 1) or hyperbolic anomaly (e > 1) [rad].
+    e : float or array_like, shape (n,)
+        Eccentricity, finite and >= 0: 0 <= e < 1 an ellipse, e > 1 a hyperbola.
+    
+    Returns
+    -------
+    float or ndarray, shape (n,)
+        M [rad].
+    
+    Raises
+    ------
+    ValueError
+        A non-finite value, e < 0 or e = 1 (the message names the argument).
+    
+    Warns
+    -----
+    RuntimeWarning
+        M overflows (|H| > 710 on a hyperbola).
+    
+    See Also
+    --------
+    mean_to_eccentric_anomaly, true_to_mean_anomaly
+    
+    Examples
+    --------
+    Curtis's Example 3.1 (e = 0.37255, E = 1.7281 rad):
+    
+    >>> round(rd.eccentric_to_mean_anomaly(1.7281, 0.37255), 4)
+    1.3601
+    """
+def eccentric_to_true_anomaly(E: typing.Any, e: typing.Any) -> typing.Any:
+    """
+    True anomaly of the eccentric anomaly E (ellipse) or hyperbolic anomaly H (hyperbola).
+    
+    tan(nu/2) = sqrt((1 + e)/(1 - e)) tan(E/2) for 0 <= e < 1, keeping E's revolutions;
+    tan(nu/2) = sqrt((e + 1)/(e - 1)) tanh(H/2) for e > 1, |nu| < acos(-1/e) (Curtis, "Orbital
+    Mechanics for Engineering Students", ch. 3).
+    
+    Parameters
+    ----------
+    E : float or array_like, shape (n,)
+        Eccentric anomaly (e < 1) or hyperbolic anomaly (e > 1) [rad].
+    e : float or array_like, shape (n,)
+        Eccentricity, finite and >= 0: 0 <= e < 1 an ellipse, e > 1 a hyperbola.
+    
+    Returns
+    -------
+    float or ndarray, shape (n,)
+        nu [rad].
+    
+    Raises
+    ------
+    ValueError
+        A non-finite value, e < 0 or e = 1 (the message names the argument).
+    
+    See Also
+    --------
+    true_to_eccentric_anomaly, mean_to_true_anomaly
+    
+    Examples
+    --------
+    The round trip through the eccentric anomaly:
+    
+    >>> E = rd.true_to_eccentric_anomaly(2.0, 0.7)
+    >>> round(rd.eccentric_to_true_anomaly(E, 0.7), 12)
+    2.0
+    """
+def elements_to_state(elements: typing.Any, mu: typing.Any) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    """
+    Position and velocity of classical orbital elements (Vallado's COE2RV).
+    
+    r_W = p/(1 + e cos nu) (cos nu P + sin nu Q), v_W = sqrt(mu/p) (-sin nu P + (e + cos nu) Q), with
+    [P Q W] = R_z(raan) R_x(i) R_z(argp) (Vallado, "Fundamentals of Astrodynamics and Applications", ch. 2,
+    COE2RV; Curtis, "Orbital Mechanics for Engineering Students", algorithm 4.5). Every conic, the
+    parabola e = 1 included (through p). The special cases of `state_to_elements` (Omega = 0 when
+    equatorial, omega = 0 when circular, the next angle carrying theirs) need nothing special here.
+    
+    Parameters
+    ----------
+    elements : array_like, shape (6,) or (n, 6)
+        (p, e, i, raan, argp, nu): semi-latus rectum p > 0 [m] (`semi_latus_rectum` of a semi-major axis),
+        eccentricity e >= 0, inclination i, right ascension of the ascending node raan, argument of
+        periapsis argp and true anomaly nu [rad], each finite; for e >= 1, 1 + e cos(nu) > 0.
+    mu : float
+        Gravitational parameter G M of the central body [m^3/s^2], > 0 (or a pint quantity).
+    
+    Returns
+    -------
+    r_W : ndarray, shape (3,) or (n, 3)
+        Position relative to the central body in the inertial frame W [m] (xy the reference plane).
+    v_W : ndarray, shape (3,) or (n, 3)
+        Velocity in W [m/s].
+    
+    Raises
+    ------
+    ValueError
+        `mu` not > 0; p <= 0, e < 0, a non-finite element, or nu beyond a hyperbola's asymptotes (the
+        message names p, e, i, raan, argp or nu and, in a stack, the item).
+    
+    See Also
+    --------
+    state_to_elements, semi_latus_rectum
+    
+    Examples
+    --------
+    Curtis's Example 4.7 (km and km/s: h = 80000 km^2/s, e = 1.4, i = 30, raan = 40, argp = 60, nu = 30 deg):
+    
+    >>> mu = 398600.0
+    >>> p = 80000.0**2 / mu
+    >>> r, v = rd.elements_to_state([p, 1.4, *np.radians([30.0, 40.0, 60.0, 30.0])], mu)
+    >>> r.round(0), v.round(3)
+    (array([-4040.,  4815.,  3629.]), array([-10.386,  -4.772,   1.744]))
     """
 def ellipk(m: typing.Any, mc: typing.Any = None) -> float:
     """
@@ -7511,6 +7749,56 @@ def jacobi_ellipj(u: typing.Any, m: typing.Any, mc: typing.Any = None) -> typing
     >>> bool(np.allclose(sn**2 + cn**2, 1.0) and np.allclose(dn**2 + 0.7 * sn**2, 1.0))
     True
     """
+def kepler_propagate(r_W: typing.Any, v_W: typing.Any, mu: typing.Any, t: typing.Any) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    """
+    Position and velocity a time t after a given state on its two-body (Keplerian) orbit.
+    
+    Through the elements (`state_to_elements`): the mean anomaly advances at the mean motion, M = M0 + n t,
+    n = sqrt(mu/a^3) (ellipse), sqrt(mu/(-a)^3) (hyperbola), sqrt(mu/p^3) (parabola, Barker's equation), then
+    the true anomaly by Kepler's equation (`mean_to_true_anomaly`); the other elements are constant (Curtis,
+    "Orbital Mechanics for Engineering Students", ch. 3). Exact but for round-off: no step size.
+    
+    Parameters
+    ----------
+    r_W : array_like, shape (3,) or (n, 3)
+        Position of the body relative to the central body's centre, in the inertial frame W [m].
+    v_W : array_like, shape (3,) or (n, 3)
+        Velocity of the body relative to the central body, in W [m/s]; not parallel to `r_W`.
+    mu : float
+        Gravitational parameter G M of the central body [m^3/s^2], > 0 (or a pint quantity).
+    t : float or array_like, shape (n,)
+        Time after the given state [s], any sign (or a pint quantity).
+    
+    Returns
+    -------
+    r_W : ndarray, shape (3,) or (n, 3)
+        Position at t, in W [m].
+    v_W : ndarray, shape (3,) or (n, 3)
+        Velocity at t, in W [m/s].
+    
+    Raises
+    ------
+    ValueError
+        `mu` not > 0, r = 0 (the message names `r_W`), `t` not finite, or as below.
+    ValueError
+        A non-finite entry or a wrong shape (the message names `r_W` or `v_W` and, in a stack, the item),
+        stacks of different lengths, or r x v = 0 (the message names `r_W, v_W`: a rectilinear orbit has no
+        plane).
+    
+    See Also
+    --------
+    state_to_elements, mean_to_true_anomaly
+    
+    Examples
+    --------
+    One period later the body is back (the kepler scene's orbit: a = 7000 km, e = 0.1, T = 5828.5 s):
+    
+    >>> mu = 398600.4418e9
+    >>> r0, v0 = [6300e3, 0.0, 0.0], [0.0, 8342.475803771201, 0.0]
+    >>> r, v = rd.kepler_propagate(r0, v0, mu, 2 * np.pi * np.sqrt(7000e3**3 / mu))
+    >>> np.allclose(r, r0, rtol=0, atol=1e-6), np.allclose(v, v0, rtol=0, atol=1e-9)
+    (True, True)
+    """
 def kinetic_energy(body: typing.Any, state: typing.Any) -> typing.Any:
     """
     Kinetic energy [J], split into its translational and rotational parts.
@@ -7729,6 +8017,82 @@ def matrix_to_rotvec(R: typing.Any, *, degrees: typing.Any = False) -> numpy.typ
     array([0. , 0.5, 0. ])
     >>> rd.matrix_to_rotvec(np.diag([-1.0, 1.0, -1.0]), degrees=True).round(9)
     array([  0., 180.,   0.])
+    """
+def mean_to_eccentric_anomaly(M: typing.Any, e: typing.Any) -> typing.Any:
+    """
+    Eccentric (ellipse) or hyperbolic (hyperbola) anomaly of the mean anomaly: Kepler's equation solved.
+    
+    Solves M = E - e sin E (0 <= e < 1; M reduced to (-pi, pi], its revolutions kept) or M = e sinh H - H
+    (e > 1) to round-off: a starter from the cubic (1 - e) x + e x^3/6 = M near periapsis (exact as e -> 1)
+    or Danby's M + 0.85 e, then Halley's iteration kept inside a bracket of the root, bisecting where a step
+    would leave it, for at most 200 steps (3 to 5 typically): it always returns.
+    
+    Parameters
+    ----------
+    M : float or array_like, shape (n,)
+        Mean anomaly [rad], any finite value.
+    e : float or array_like, shape (n,)
+        Eccentricity, finite and >= 0: 0 <= e < 1 an ellipse, e > 1 a hyperbola.
+    
+    Returns
+    -------
+    float or ndarray, shape (n,)
+        E or H [rad] with Kepler's equation satisfied to round-off.
+    
+    Raises
+    ------
+    ValueError
+        A non-finite value, e < 0 or e = 1 (a parabola: `mean_to_true_anomaly` solves Barker's equation)
+        (the message names the argument and, in a stack, the item).
+    
+    See Also
+    --------
+    eccentric_to_mean_anomaly, mean_to_true_anomaly
+    
+    Examples
+    --------
+    Curtis's Example 3.2 (M = 3.6029 rad, e = 0.37255: E = 3.4794 rad), and the residual:
+    
+    >>> E = rd.mean_to_eccentric_anomaly(3.6029, 0.37255)
+    >>> round(E, 4), bool(abs(E - 0.37255 * np.sin(E) - 3.6029) < 1e-15)
+    (3.4794, True)
+    """
+def mean_to_true_anomaly(M: typing.Any, e: typing.Any) -> typing.Any:
+    """
+    True anomaly of the mean anomaly, for every conic: where the body is a time M/n after periapsis.
+    
+    Kepler's equation solved (`mean_to_eccentric_anomaly`) for e != 1, then `eccentric_to_true_anomaly`;
+    Barker's cubic D^3 + 3 D = 6 M in closed form for the parabola e = 1 (nu = 2 atan D). Keeps the
+    revolutions of an ellipse's M.
+    
+    Parameters
+    ----------
+    M : float or array_like, shape (n,)
+        Mean anomaly [rad].
+    e : float or array_like, shape (n,)
+        Eccentricity, finite and >= 0 (1 included).
+    
+    Returns
+    -------
+    float or ndarray, shape (n,)
+        nu [rad]; for e >= 1 in (-acos(-1/e), acos(-1/e)).
+    
+    Raises
+    ------
+    ValueError
+        A non-finite value or e < 0 (the message names the argument).
+    
+    See Also
+    --------
+    true_to_mean_anomaly, mean_to_eccentric_anomaly
+    
+    Examples
+    --------
+    Curtis's Example 3.2: 3 h after perigee on an orbit of e = 0.37255 and period 18834 s, nu = 193.2 deg:
+    
+    >>> M = 2 * np.pi * 10800 / 18834.0
+    >>> round(float(np.degrees(rd.mean_to_true_anomaly(M, 0.37255))), 1)
+    193.2
     """
 def mesh_shell(vertices: typing.Any, faces: typing.Any, *, mass: typing.Any = None, density: typing.Any = None, weld_tolerance: typing.Any = None) -> SpatialInertia:
     """
@@ -8000,6 +8364,93 @@ def nearest_valid_inertia(inertia: typing.Any) -> numpy.typing.NDArray[numpy.flo
     array([1.88888889, 1.11111111, 0.77777778])
     >>> rd.inertia_report(1.0, J).valid()
     True
+    """
+def orbit_frame_angular_velocity(r_W: typing.Any, v_W: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Angular velocity w_WO_W = (r x v)/|r|^2 of the orbit frames (LVLH and RSW alike) in W, expressed in W.
+    
+    The radius vector turns about the orbit normal at h/r^2 (h = r^2 dtheta/dt): on a circular orbit the
+    orbit rate n = sqrt(mu/r^3), on an elliptic one faster at periapsis than at apoapsis. Exact for an
+    acceleration along r (a Keplerian orbit); an acceleration out of the orbit plane would add a component
+    along r, not included. In LVLH coordinates it is (0, -h/r^2, 0), in RSW (0, 0, h/r^2).
+    
+    Parameters
+    ----------
+    r_W : array_like, shape (3,) or (n, 3)
+        Position of the body relative to the central body's centre, in the inertial frame W [m].
+    v_W : array_like, shape (3,) or (n, 3)
+        Velocity of the body relative to the central body, in W [m/s]; not parallel to `r_W`.
+    
+    Returns
+    -------
+    ndarray, shape (3,) or (n, 3)
+        w_WO_W [rad/s].
+    
+    Raises
+    ------
+    ValueError
+        A non-finite entry or a wrong shape (the message names `r_W` or `v_W` and, in a stack, the item),
+        stacks of different lengths, or r x v = 0 (the message names `r_W, v_W`: a rectilinear orbit has no
+        plane).
+    
+    See Also
+    --------
+    orbit_frame_rotation
+    
+    Examples
+    --------
+    A circular orbit of radius 7000 km about the Earth turns at n = sqrt(mu/r^3):
+    
+    >>> mu, r = 3.986004418e14, 7.0e6
+    >>> w = rd.orbit_frame_angular_velocity([r, 0.0, 0.0], [0.0, np.sqrt(mu / r), 0.0])
+    >>> np.allclose(w, [0.0, 0.0, np.sqrt(mu / r**3)], rtol=1e-15, atol=0.0)
+    True
+    """
+def orbit_frame_rotation(r_W: typing.Any, v_W: typing.Any, frame: typing.Any = 'lvlh') -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Rotation R_WO from an orbit frame O (LVLH or RSW) to the inertial frame W.
+    
+    The columns of R_WO are O's axes expressed in W, from the body's position and velocity. Use
+    `matrix_to_quat` for q_WO.
+    
+    Parameters
+    ----------
+    r_W : array_like, shape (3,) or (n, 3)
+        Position of the body relative to the central body's centre, in the inertial frame W [m].
+    v_W : array_like, shape (3,) or (n, 3)
+        Velocity of the body relative to the central body, in W [m/s]; not parallel to `r_W`.
+    frame : str, default 'lvlh'
+        'lvlh': z_O = -r/|r| (nadir), y_O = -h/|h| (opposite the orbit normal h = r x v), x_O = y_O x z_O
+        (along-track; along v on a circular orbit), the attitude texts' LVLH with roll, pitch and yaw axes
+        x, y, z (Wie, "Space Vehicle Dynamics and Control"). 'rsw': Hill's frame, x_O = r/|r| (R, radial out),
+        z_O = h/|h| (W, the orbit normal), y_O = z_O x x_O (S, along-track) (Vallado, "Fundamentals of
+        Astrodynamics and Applications").
+    
+    Returns
+    -------
+    ndarray, shape (3, 3) or (n, 3, 3)
+        R_WO, orthonormal with det +1.
+    
+    Raises
+    ------
+    ValueError
+        A non-finite entry or a wrong shape (the message names `r_W` or `v_W` and, in a stack, the item),
+        stacks of different lengths, or r x v = 0 (the message names `r_W, v_W`: a rectilinear orbit has no
+        plane).
+        `frame` not 'lvlh' or 'rsw'.
+    
+    See Also
+    --------
+    orbit_frame_angular_velocity, attitude_from_orbit_frame
+    
+    Examples
+    --------
+    Below the centre on -z_W, moving along +x_W: LVLH's z (third column) points up +z_W, to the centre:
+    
+    >>> rd.orbit_frame_rotation([0.0, 0.0, -7e6], [7.5e3, 0.0, 0.0]).round(12) + 0.0
+    array([[1., 0., 0.],
+           [0., 1., 0.],
+           [0., 0., 1.]])
     """
 def point_acceleration(K_AF: typing.Any, p_FQ_F: typing.Any, v_FQ_F: typing.Any, a_FQ_F: typing.Any) -> PointAcceleration:
     """
@@ -9156,6 +9607,38 @@ def screw_to_twist(screw: typing.Any) -> Motion:
     >>> rd.screw_to_twist(rd.twist_to_screw(V)) == V
     True
     """
+def semi_latus_rectum(a: typing.Any, e: typing.Any) -> typing.Any:
+    """
+    Semi-latus rectum p = a (1 - e^2) of the semi-major axis: the first element of `elements_to_state`.
+    
+    Parameters
+    ----------
+    a : float or array_like, shape (n,)
+        Semi-major axis [m]: > 0 for an ellipse, < 0 for a hyperbola (a = -mu/(2 energy)).
+    e : float or array_like, shape (n,)
+        Eccentricity, finite, >= 0 and != 1 (a parabola's a is infinite: give its p).
+    
+    Returns
+    -------
+    float or ndarray, shape (n,)
+        p [m], > 0.
+    
+    Raises
+    ------
+    ValueError
+        `a` not finite, 0 or of the wrong sign for `e`, or `e` not finite, < 0 or 1 (the message names it).
+    
+    See Also
+    --------
+    elements_to_state
+    
+    Examples
+    --------
+    >>> round(rd.semi_latus_rectum(7000e3, 0.1), 6)
+    6930000.0
+    >>> rd.semi_latus_rectum(-7000e3, 2.0)
+    21000000.0
+    """
 def simulate(model: typing.Any, initial: typing.Any, dt: typing.Any, steps: typing.Any = None, method: typing.Any = None, record_every: typing.Any = 1, loads: typing.Any = None, gravity: typing.Any = None, t0: typing.Any = 0.0, scalar_first: typing.Any = False, progress: typing.Any = None, *, duration: typing.Any = None) -> SimulationResult | SceneResult:
     """
     Integrate a body or a scene over fixed steps and record its motion.
@@ -9799,6 +10282,60 @@ def spherical_shell(radius: typing.Any, *, mass: typing.Any = None, density: typ
     >>> rd.spherical_shell(1.0, mass=3.0).inertia_com.diagonal()  # 2/3 m r^2
     array([2., 2., 2.])
     """
+def state_to_elements(r_W: typing.Any, v_W: typing.Any, mu: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Classical orbital elements of a position and velocity (Vallado's RV2COE).
+    
+    h = r x v, p = |h|^2/mu, the eccentricity vector e = (v x h)/mu - r/|r|, i from h, the ascending node
+    n = z_W x h (Vallado, "Fundamentals of Astrodynamics and Applications", ch. 2, RV2COE; Curtis,
+    "Orbital Mechanics for Engineering Students", algorithm 4.2). Angles are measured in the direction
+    of motion. Where an angle is undefined it is 0 and the next carries it, so `elements_to_state` gives
+    the state back:
+    
+    - equatorial (sin i < 1e-12, i = 0 or pi): raan = 0, argp = the longitude of periapsis (from x_W);
+    - circular (e < 1e-12): argp = 0, nu = the argument of latitude u (from the ascending node);
+    - both: raan = argp = 0, nu = the true longitude (from x_W).
+    
+    Below those tolerances (far above the ~1e-15 round-off of e and sin i from a state) the state given
+    back moves by at most 2 e |r| or 2 sin(i) |r|. Semi-major axis: a = p/(1 - e^2).
+    
+    Parameters
+    ----------
+    r_W : array_like, shape (3,) or (n, 3)
+        Position of the body relative to the central body's centre, in the inertial frame W [m].
+    v_W : array_like, shape (3,) or (n, 3)
+        Velocity of the body relative to the central body, in W [m/s]; not parallel to `r_W`.
+    mu : float
+        Gravitational parameter G M of the central body [m^3/s^2], > 0 (or a pint quantity).
+    
+    Returns
+    -------
+    ndarray, shape (6,) or (n, 6)
+        (p, e, i, raan, argp, nu): p [m]; e; i in [0, pi]; raan, argp in [0, 2 pi); nu in [0, 2 pi) for
+        e < 1, in (-pi, pi) for e >= 1 [rad].
+    
+    Raises
+    ------
+    ValueError
+        `mu` not > 0, r = 0 (the message names `r_W`), or as below.
+    ValueError
+        A non-finite entry or a wrong shape (the message names `r_W` or `v_W` and, in a stack, the item),
+        stacks of different lengths, or r x v = 0 (the message names `r_W, v_W`: a rectilinear orbit has no
+        plane).
+    
+    See Also
+    --------
+    elements_to_state, mean_to_true_anomaly
+    
+    Examples
+    --------
+    Vallado's Example 2-5 (km, km/s; mu = 398600.4418 km^3/s^2): e = 0.832853, i = 87.870, raan = 227.898,
+    argp = 53.385, nu = 92.335 deg:
+    
+    >>> el = rd.state_to_elements([6524.834, 6862.875, 6448.296], [4.901327, 5.533756, -1.976341], 398600.4418)
+    >>> float(round(el[1], 6)), np.degrees(el[2:]).round(3)
+    (0.832853, array([ 87.869, 227.898,  53.385,  92.335]))
+    """
 def step(model: typing.Any, state: typing.Any, dt: typing.Any, method: typing.Any = None, loads: typing.Any = None, gravity: typing.Any = None, t: typing.Any = None) -> typing.Any:
     """
     One step of `method` from `state` at time t to t + dt.
@@ -10142,6 +10679,87 @@ def transport_derivative(w_AB: typing.Any, u: typing.Any, du_dt_in_B: typing.Any
     
     >>> rd.transport_derivative([0.0, 0.0, 1.0], [1.0, 0.0, 0.0], [0.0, 0.0, 0.0])
     array([0., 1., 0.])
+    """
+def true_to_eccentric_anomaly(nu: typing.Any, e: typing.Any) -> typing.Any:
+    """
+    Eccentric anomaly E (ellipse) or hyperbolic anomaly H (hyperbola) of the true anomaly.
+    
+    tan(E/2) = sqrt((1 - e)/(1 + e)) tan(nu/2) for 0 <= e < 1, keeping nu's revolutions (E and nu differ
+    by less than pi); tanh(H/2) = sqrt((e - 1)/(e + 1)) tan(nu/2) for e > 1 (Curtis, "Orbital Mechanics
+    for Engineering Students", ch. 3).
+    
+    Parameters
+    ----------
+    nu : float or array_like, shape (n,)
+        True anomaly [rad], the angle from periapsis to the body in the direction of motion; for a
+        hyperbola within the asymptotes, 1 + e cos(nu) > 0.
+    e : float or array_like, shape (n,)
+        Eccentricity, finite and >= 0: 0 <= e < 1 an ellipse, e > 1 a hyperbola.
+    
+    Returns
+    -------
+    float or ndarray, shape (n,)
+        E or H [rad] (an array when either argument is one).
+    
+    Raises
+    ------
+    ValueError
+        A non-finite value, e < 0, e = 1 (a parabola has no eccentric anomaly) or a hyperbola's `nu`
+        beyond its asymptotes (the message names the argument and, in a stack, the item).
+    
+    See Also
+    --------
+    eccentric_to_true_anomaly, eccentric_to_mean_anomaly, true_to_mean_anomaly
+    
+    Examples
+    --------
+    At periapsis and apoapsis the anomalies agree; a circle has E = nu:
+    
+    >>> rd.true_to_eccentric_anomaly([0.0, np.pi], 0.5).round(12)
+    array([0.        , 3.14159265])
+    >>> rd.true_to_eccentric_anomaly(1.0, 0.0)
+    1.0
+    """
+def true_to_mean_anomaly(nu: typing.Any, e: typing.Any) -> typing.Any:
+    """
+    Mean anomaly of the true anomaly, for every conic.
+    
+    Through the eccentric or hyperbolic anomaly for e != 1 (`true_to_eccentric_anomaly`,
+    `eccentric_to_mean_anomaly`); Barker's equation M = D/2 + D^3/6, D = tan(nu/2), for the parabola
+    e = 1 (Curtis, "Orbital Mechanics for Engineering Students", sec. 3.5), where M = sqrt(mu/p^3) t.
+    
+    Parameters
+    ----------
+    nu : float or array_like, shape (n,)
+        True anomaly [rad]; for e >= 1 within the asymptotes, 1 + e cos(nu) > 0.
+    e : float or array_like, shape (n,)
+        Eccentricity, finite and >= 0 (1 included).
+    
+    Returns
+    -------
+    float or ndarray, shape (n,)
+        M [rad].
+    
+    Raises
+    ------
+    ValueError
+        A non-finite value, e < 0 or `nu` beyond the asymptotes (the message names the argument).
+    
+    Warns
+    -----
+    RuntimeWarning
+        M overflows (nu within about 1e-100 rad of a hyperbola's asymptote).
+    
+    See Also
+    --------
+    mean_to_true_anomaly
+    
+    Examples
+    --------
+    A parabola at nu = 90 deg: D = 1, M = 1/2 + 1/6:
+    
+    >>> round(rd.true_to_mean_anomaly(np.pi / 2, 1.0), 15)
+    0.666666666666667
     """
 def twist_to_screw(twist: typing.Any) -> Screw:
     """
