@@ -18,6 +18,8 @@ from . import monte_carlo  # the module: monte_carlo.monte_carlo(...), its dispe
 from .monte_carlo import DispersionWarning
 
 __version__: str = _core.__version__
-__all__ = [name for name in dir(_core) if not name.startswith("_")] + ["to_scipy", "from_scipy"] + [
-    "Problem", "load_problem", "StabilityWarning", "TradeoffResult", "tradeoff", "load_scene"]
+__all__ = [name for name in dir(_core) if not name.startswith("_")]
+# a list of names of its own (mypy reads the exports of a module from `__all__ +=` of a literal list)
+__all__ += ["to_scipy", "from_scipy", "Problem", "load_problem", "StabilityWarning", "TradeoffResult", "tradeoff",
+            "load_scene"]
 __all__ += ["monte_carlo", "DispersionWarning"]  # monte_carlo: the module (its function, dispersions, result)
