@@ -309,12 +309,7 @@ void bind_types(py::module_& m) {
                ">>> rd.InertiaCheck(0)\n"
                "<InertiaCheck.physical: 0>")
       .value("physical", InertiaCheck::physical)
-      .value("allow_unrealizable", InertiaCheck::allow_unrealizable)
-      // reached only when pybind11's int constructor does not match: a TypeError naming `value`
-      .def(py::init([](py::handle value) -> InertiaCheck {
-             py_io::throw_type_error("value", "an int (0: physical, 1: allow_unrealizable)", value);
-           }),
-           "value"_a);
+      .value("allow_unrealizable", InertiaCheck::allow_unrealizable);  // a value not an int: call_errors.hpp
 
   py::class_<InertiaReport>(m, "InertiaReport",
                             "Validity report of a mass and a rotational inertia about the centre of mass.\n"

@@ -8,7 +8,10 @@
 // readers and the stub generator:
 // pybind11-stubgen reads those typed lines only where inspect finds no signature, so under RIGIDDYN_STUBGEN=1
 // (set by the stub's generation, tests/python/test_stubs.py) the signatures are not added.
+// The same pass gives each public function its last overload, the one that explains a call no other overload accepts
+// (call_errors.hpp); it is left out of the text signatures, and under RIGIDDYN_STUBGEN=1 of the stub.
 #include "bindings.hpp"
+#include "call_errors.hpp"
 
 #include <pybind11/pybind11.h>
 
@@ -65,11 +68,14 @@ bool has_default(const py::detail::function_record& rec, std::size_t i) {
   return i < rec.args.size() && rec.args[i].name && rec.args[i].value;
 }
 
+// Whether rec has other overloads than the one that explains a failed call (call_errors.hpp)
+bool overloaded(const py::detail::function_record& rec) { return rec.next && !is_call_errors(*rec.next); }
+
 // "(a, b=False, /, *, c=None)" of one pybind11 function record; "(*args, **kwargs)" for an overload set (no single
 // signature: the docstring lists each). A method's self is listed: unbound through the class, a bound method drops
 // it.
 std::string text_signature(const py::detail::function_record& rec) {
-  if (rec.next) return rec.is_method ? "(self, /, *args, **kwargs)" : "(*args, **kwargs)";
+  if (overloaded(rec)) return rec.is_method ? "(self, /, *args, **kwargs)" : "(*args, **kwargs)";
   std::string out = "(";
   bool keyword_only_marked = false;
   for (std::size_t i = 0; i < rec.nargs; ++i) {
@@ -111,11 +117,11 @@ void add_text_signature(PyObject* f) {
 void add_method_signatures(const py::dict& members, const py::handle& staticmethod) {
   for (const auto item : members) {
     PyObject* f = item.second.ptr();
-    if (PyInstanceMethod_Check(f)) {
-      add_text_signature(PyInstanceMethod_GET_FUNCTION(f));
-    } else if (py::isinstance(item.second, staticmethod)) {
-      add_text_signature(item.second.attr("__func__").ptr());
-    }
+    if (PyInstanceMethod_Check(f)) f = PyInstanceMethod_GET_FUNCTION(f);
+    else if (py::isinstance(item.second, staticmethod)) f = item.second.attr("__func__").ptr();
+    else continue;
+    add_call_errors(f);
+    add_text_signature(f);
   }
 }
 
@@ -156,7 +162,7 @@ void add_class_signature(const py::handle& cls, const py::module_& inspect, cons
   const py::detail::function_record* rec = record_of(init);
   if (!rec) return;
   try {
-    if (rec->next) {  // several constructors: (*args, **kwargs), from their text signature (self dropped)
+    if (overloaded(*rec)) {  // several constructors: (*args, **kwargs), from their text signature (self dropped)
       const py::object signature = inspect.attr("signature")(py::handle(init));
       const py::list parameters(signature.attr("parameters").attr("values")());
       cls.attr("__signature__") = signature.attr("replace")(py::arg("parameters") = parameters[py::slice(1, {}, {})]);
@@ -179,6 +185,7 @@ void add_text_signatures(py::module_& m) {
     if (PyType_Check(item.second.ptr())) {
       add_class_signature(item.second, inspect, staticmethod);
     } else {
+      add_call_errors(item.second.ptr());
       add_text_signature(item.second.ptr());
     }
   }

@@ -17,6 +17,8 @@ from .work_precision import TradeoffResult, tradeoff  # the function; its module
 from .dispersion import DispersionWarning, monte_carlo  # the function; its module, rigiddyn.dispersion, holds the dispersions
 
 __version__: str = _core.__version__
-__all__ = [name for name in dir(_core) if not name.startswith("_")] + ["to_scipy", "from_scipy"] + [
-    "Problem", "load_problem", "StabilityWarning", "TradeoffResult", "tradeoff", "load_scene"]
+__all__ = [name for name in dir(_core) if not name.startswith("_")]
+# a list of names of its own (mypy reads the exports of a module from `__all__ +=` of a literal list)
+__all__ += ["to_scipy", "from_scipy", "Problem", "load_problem", "StabilityWarning", "TradeoffResult", "tradeoff",
+            "load_scene"]
 __all__ += ["monte_carlo", "DispersionWarning"]  # monte_carlo: the function (rigiddyn.dispersion: Normal, ...)

@@ -47,7 +47,7 @@ import numbers
 import sys
 import warnings
 from dataclasses import dataclass
-from typing import Any, Callable, Mapping, Sequence, Union
+from typing import Any, Callable, Mapping, Sequence, Union, cast
 
 import numpy as np
 
@@ -339,7 +339,7 @@ class LoadDispersion(Dispersion):
             if part is not None:
                 part.bind(name, np.zeros(3))
         self.force, self.torque = force, torque
-        _core.AppliedLoad(frame=frame, t_start=t_start, t_end=t_end)  # checks frame and the window
+        _core.AppliedLoad(frame=cast(Any, frame), t_start=t_start, t_end=t_end)  # checks frame and the window
         self.frame, self.t_start, self.t_end = frame, t_start, t_end
 
     def draw(self, rng: np.random.Generator, nominal: Any) -> Any:
@@ -350,7 +350,7 @@ class LoadDispersion(Dispersion):
 
     def load(self, force: np.ndarray, torque: np.ndarray) -> Any:
         """The AppliedLoad of one sample's drawn force and torque."""
-        return _core.AppliedLoad(force=force, torque=torque, frame=self.frame, t_start=self.t_start,
+        return _core.AppliedLoad(force=force, torque=torque, frame=cast(Any, self.frame), t_start=self.t_start,  # checked
                                  t_end=self.t_end)
 
     def __repr__(self) -> str:

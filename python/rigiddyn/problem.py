@@ -75,7 +75,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from types import FrameType
-from typing import Any
+from typing import Any, cast
 
 import numpy as np
 
@@ -269,7 +269,7 @@ class Load:
 
     def applied_load(self) -> _core.AppliedLoad:
         """This load as the core's AppliedLoad (for rigiddyn.simulate)."""
-        return _core.AppliedLoad(self.force, self.torque, self.frame, self.t_start, self.t_end)
+        return _core.AppliedLoad(self.force, self.torque, cast(Any, self.frame), self.t_start, self.t_end)  # checked
 
 
 @dataclass(frozen=True)
@@ -419,7 +419,8 @@ class Problem:
             raise _type_fail("record_every", "an integer >= 1", record_every)
         steps = max(1, round(self.horizon / dt)) if steps is None else steps
         warn_if_unstable(method, dt, steps, self.inertia_com, self.w_B, self.torque_free, stacklevel=2)
-        return _core.simulate(self.body(), self.initial_state(), dt, steps, method, record_every=record_every,
+        # method: a str of methods() (mypy knows their literal names), checked by the core
+        return _core.simulate(self.body(), self.initial_state(), dt, steps, cast(Any, method), record_every=record_every,
                               loads=self.applied_loads(), gravity=self.gravity)
 
     def with_horizon(self, horizon: float) -> Problem:

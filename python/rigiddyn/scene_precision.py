@@ -49,7 +49,7 @@ import warnings
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from pathlib import Path
-from typing import Any
+from typing import Any, cast
 
 import numpy as np
 
@@ -186,7 +186,8 @@ class SceneCase:
         compiled = self.compile(method)
         if compiled.model is None:
             raise ValueError(compiled.reason)
-        return _core.simulate(compiled.model, self.initial, dt, steps, method, record_every=record_every,
+        # method: a str of methods() (mypy knows their literal names), checked by the core
+        return _core.simulate(compiled.model, self.initial, dt, steps, cast(Any, method), record_every=record_every,
                               progress=progress)
 
     def states(self, result: Any) -> SceneStates:

@@ -34,7 +34,7 @@ import math
 import sys
 import warnings
 from pathlib import Path
-from typing import Any
+from typing import Any, cast
 
 import numpy as np
 
@@ -234,7 +234,7 @@ def run_scene_simulate(args: argparse.Namespace) -> int:
         return fail(e, EXIT_EXISTS)
     return run_and_report(plan.steps, plan.progress,
                           lambda update: _core.simulate(plan.file.scene, plan.file.initial, dt=plan.dt,
-                                                        steps=plan.steps, method=plan.method,
+                                                        steps=plan.steps, method=cast(Any, plan.method),  # checked
                                                         record_every=plan.record_every, progress=update),
                           lambda result: _summary(result, plan.file.scene), plan.out,
                           lambda result, folder: _write(plan, result, folder))

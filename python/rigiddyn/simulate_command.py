@@ -21,7 +21,7 @@ import math
 import sys
 from collections.abc import Callable
 from pathlib import Path
-from typing import Any, TextIO
+from typing import Any, TextIO, cast
 
 import numpy as np
 
@@ -160,7 +160,8 @@ def simulate_problem(problem: Problem, method: str, dt: float, steps: int, recor
     is beyond the method's linear stability limit (rigiddyn.stability). `progress(steps_done)` is
     simulate's callback (about every 0.05 s of the run). Returns the SimulationResult."""
     warn_if_unstable(method, dt, steps, problem.inertia_com, problem.w_B, problem.torque_free, stacklevel=2)
-    return _core.simulate(problem.body(), problem.initial_state(), dt, steps, method, record_every=record_every,
+    # method: a str of methods() (mypy knows their literal names), checked by the core
+    return _core.simulate(problem.body(), problem.initial_state(), dt, steps, cast(Any, method), record_every=record_every,
                           loads=problem.applied_loads(), gravity=problem.gravity, progress=progress)
 
 

@@ -73,7 +73,7 @@ import warnings
 from collections.abc import Callable, Iterable, Mapping, Sequence, Sized
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, cast
 
 import numpy as np
 
@@ -230,7 +230,8 @@ def _core_simulate(problem: Problem | SceneCase, method: str, dt: float, steps: 
         warnings.filterwarnings("ignore", message="simulate: the implicit solve", category=RuntimeWarning)
         if isinstance(problem, SceneCase):
             return problem.simulate(method, dt, steps, record_every, progress)
-        return _core.simulate(problem.body(), problem.initial_state(), dt, steps, method, record_every=record_every,
+        # method: a str of methods() (mypy knows their literal names), checked by the core
+        return _core.simulate(problem.body(), problem.initial_state(), dt, steps, cast(Any, method), record_every=record_every,
                               loads=problem.applied_loads(), gravity=problem.gravity, progress=progress)
 
 
