@@ -19,8 +19,9 @@ void bind_exact(pybind11::module_& m);
 void bind_exact_dynamics(pybind11::module_& m);  // after bind_pivoted and bind_scene_frame
 void bind_scene_elements(pybind11::module_& m);
 void bind_scene(pybind11::module_& m);
-void bind_batch(pybind11::module_& m);
-void bind_orbit(pybind11::module_& m);  // after bind_dynamics: result[i] is a SimulationResult
+void bind_batch(pybind11::module_& m);  // after bind_dynamics: result[i] is a SimulationResult
+void bind_orbit(pybind11::module_& m);
+void bind_tree(pybind11::module_& m);  // after bind_spatial and bind_inertia: a link holds a Transform and a SpatialInertia
 // Last: the runtime signatures (__text_signature__, a class's __signature__) of every function and class in m
 void add_text_signatures(pybind11::module_& m);
 }  // namespace rigiddyn::bindings

@@ -23,5 +23,6 @@ PYBIND11_MODULE(_core, m) {
   rigiddyn::bindings::bind_exact(m);
   rigiddyn::bindings::bind_exact_dynamics(m);
   rigiddyn::bindings::bind_orbit(m);
+  rigiddyn::bindings::bind_tree(m);
   rigiddyn::bindings::add_text_signatures(m);  // last: every function and class registered
 }

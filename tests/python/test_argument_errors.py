@@ -53,6 +53,12 @@ def _tree():
     return tree
 
 
+def _arm():
+    tree = rd.Tree(gravity=[0.0, 0.0, -9.81])
+    tree.add_link("arm", -1, rd.RevoluteJoint(), rd.SpatialInertia(1.0, V, I_BOX))
+    return tree
+
+
 def _problem():
     return rd.Problem(name="p", mass=1.0, inertia_com=I_BOX, horizon=0.1, w_B=[0.1, 1.0, 0.0])
 
@@ -311,10 +317,29 @@ EXAMPLES = {
     "RotatingFrameFreeParticle.at": lambda: {"t": 0.5},
     "ConstantThrustSolution": _thrust, "ConstantThrustSolution.at": lambda: {"t": 0.5},
     "ConstantThrustSolution.delta_v": lambda: {"m1": 5.0}, "ConstantThrustSolution.mass_at": lambda: {"t": 0.5},
+    # kinematic trees (_arm: a revolute link, nq = nv = 1)
+    "Tree": lambda: {"gravity": V}, "RevoluteJoint": lambda: {"axis": V}, "PrismaticJoint": lambda: {"axis": V},
+    "SphericalJoint": lambda: {}, "FreeJoint": lambda: {}, "FixedJoint": lambda: {},
+    "Tree.add_link": lambda: {"name": "new", "parent": 0, "joint": rd.RevoluteJoint(), "inertia": rd.SpatialInertia(1.0, V, I_BOX),
+                              "placement": rd.Transform()},
+    "Tree.link_index": lambda: {"name": "arm"}, "Tree.neutral_configuration": lambda: {},
+    "Tree.integrate": lambda: {"q": [0.1], "v": [0.2], "dt": 0.1},
+    "Tree.kinetic_energy": lambda: {"q": [0.1], "v": [0.2]}, "Tree.potential_energy": lambda: {"q": [0.1]},
+    "forward_kinematics": lambda: {"tree": _arm(), "q": [0.1], "v": [0.2]},
+    "rnea": lambda: {"tree": _arm(), "q": [0.1], "v": [0.2], "a": [0.3], "f_ext": np.ones((1, 6))},
+    "bias_forces": lambda: {"tree": _arm(), "q": [0.1], "v": [0.2]}, "crba": lambda: {"tree": _arm(), "q": [0.1]},
+    "aba": lambda: {"tree": _arm(), "q": [0.1], "v": [0.2], "tau": [0.3], "f_ext": np.ones((1, 6))},
+    **{f"{joint}.{method}": lambda: {} for joint in ("RevoluteJoint", "PrismaticJoint", "SphericalJoint", "FreeJoint",
+                                                     "FixedJoint") for method in ("motion_subspace",)},
+    "RevoluteJoint.transform": lambda: {"q": [0.1]}, "PrismaticJoint.transform": lambda: {"q": [0.1]},
+    "SphericalJoint.transform": lambda: {"q": Q}, "FreeJoint.transform": lambda: {"q": np.concatenate([V, Q])},
+    "FixedJoint.transform": lambda: {"q": np.zeros(0)},
 }
 
 # the instance a method is called on, by class
 INSTANCES = {
+    "Tree": _arm, "RevoluteJoint": rd.RevoluteJoint, "PrismaticJoint": rd.PrismaticJoint, "SphericalJoint": rd.SphericalJoint,
+    "FreeJoint": rd.FreeJoint, "FixedJoint": rd.FixedJoint,
     "Force": lambda: rd.Force(V, V), "Motion": lambda: rd.Motion(V, V), "FrameMotion": rd.FrameMotion.fixed,
     "FrameTree": _tree, "InertiaReport": lambda: rd.inertia_report(1.0, I_BOX), "InertiaCheck": lambda: rd.InertiaCheck.physical,
     "RigidBodyState": lambda: rd.RigidBodyState(w_B=V), "SpatialInertia": lambda: rd.SpatialInertia(1.0, V, I_BOX),
@@ -333,6 +358,7 @@ INSTANCES = {
 VALID_AFTER_ALL = {
     ("FrameTree.add_frame", "name"): {"str"},  # any new name
     ("FrameTree.has_frame", "name"): {"str"},  # False
+    ("Tree.add_link", "name"): {"str"},  # any new name
     ("Problem", "name"): {"str"}, ("Problem", "description"): {"str"}, ("Problem", "source"): {"str"},
     ("TradeoffResult", "problem"): {"str"}, ("TradeoffResult.read_csv", "problem"): {"str"},  # a problem's name
     ("TradeoffResult", "notes"): {"list of str"},  # the report's notes

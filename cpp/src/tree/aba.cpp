@@ -1,0 +1,64 @@
+#include "rigiddyn/tree/aba.hpp"
+
+#include <Eigen/Cholesky>
+
+#include "rigiddyn/tree/forward_kinematics.hpp"
+#include "rigiddyn/tree/rnea.hpp"
+
+namespace rigiddyn {
+
+const Eigen::VectorXd& aba(const Tree& tree, const Eigen::Ref<const Eigen::VectorXd>& q,
+                           const Eigen::Ref<const Eigen::VectorXd>& v, const Eigen::Ref<const Eigen::VectorXd>& tau,
+                           const std::vector<Force>& f_ext, TreeWorkspace& ws) {
+  tree.check_velocity(tau, "tau");
+  check_external_forces(tree, f_ext);
+  forward_kinematics(tree, q, v, ws);
+  const int n = tree.num_links();
+  // pass 1: c_i = v_i x S_i qd_i, I^A_i = I_i, p^A_i = v_i x* I_i v_i - f_ext,i
+  for (int i = 0; i < n; ++i) {
+    const Link& link = tree.link(i);
+    ws.c[i] = ws.v[i].cross(Motion::from_vector(link.S * v.segment(link.idx_v, link.nv)));
+    ws.I_C[i] = link.I;
+    ws.f[i] = ws.v[i].cross(Force::from_vector(link.I * ws.v[i].to_vector()));
+    if (!f_ext.empty()) ws.f[i] -= f_ext[i];
+  }
+  // pass 2: the articulated inertias and bias forces, leaves to root
+  for (int i = n - 1; i >= 0; --i) {
+    const Link& link = tree.link(i);
+    ws.U[i].noalias() = ws.I_C[i] * link.S;
+    // D_i = S_i^T U_i: symmetric positive definite for a positive-definite I^A_i (nv_i <= 6)
+    const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor, 6, 6> D = link.S.transpose() * ws.U[i];
+    const Eigen::LLT<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor, 6, 6>> D_llt(D);
+    // D^-1 column by column: a solve with a matrix right-hand side would allocate its blocking workspace
+    for (int k = 0; k < link.nv; ++k) {
+      auto column = ws.D_inv[i].col(k);
+      column.setUnit(k);
+      D_llt.solveInPlace(column);
+    }
+    ws.u[i] = tau.segment(link.idx_v, link.nv);
+    ws.u[i].noalias() -= link.S.transpose() * ws.f[i].to_vector();
+    if (link.parent < 0) continue;
+    // I^a = I^A - U D^-1 U^T,  p^a = p^A + I^a c + U D^-1 u
+    const Matrix6d I_a = ws.I_C[i] - ws.U[i] * ws.D_inv[i] * ws.U[i].transpose();
+    const Vector6d p_a = ws.f[i].to_vector() + I_a * ws.c[i].to_vector() + ws.U[i] * (ws.D_inv[i] * ws.u[i]);
+    // I^A_λ += X_λi* I^a X_λi^-1 (= X* I^a X*^T),  p^A_λ += X_λi* p^a
+    const Matrix6d X_star = ws.X_up[i].force_matrix();
+    ws.I_C[link.parent].noalias() += X_star * I_a * X_star.transpose();
+    ws.f[link.parent] += ws.X_up[i].act(Force::from_vector(p_a));
+  }
+  // pass 3: the accelerations, root to leaves (a_0 = -a_g)
+  const Motion a_0(Eigen::Vector3d::Zero(), -tree.gravity());
+  for (int i = 0; i < n; ++i) {
+    const Link& link = tree.link(i);
+    // a' = X_λi^-1 a_λ + c_i,  qdd_i = D^-1 (u - U^T a'),  a_i = a' + S qdd_i
+    const Motion a_prime = ws.X_up[i].act_inv(link.parent < 0 ? a_0 : ws.a[link.parent]) + ws.c[i];
+    Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, 6, 1> r = ws.u[i];  // u - U^T a', in place
+    r.noalias() -= ws.U[i].transpose() * a_prime.to_vector();
+    auto qdd_i = ws.qdd.segment(link.idx_v, link.nv);
+    qdd_i.noalias() = ws.D_inv[i] * r;
+    ws.a[i] = a_prime + Motion::from_vector(link.S * qdd_i);
+  }
+  return ws.qdd;
+}
+
+}  // namespace rigiddyn

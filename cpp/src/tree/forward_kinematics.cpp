@@ -1,0 +1,27 @@
+#include "rigiddyn/tree/forward_kinematics.hpp"
+
+namespace rigiddyn {
+
+void link_poses(const Tree& tree, const Eigen::Ref<const Eigen::VectorXd>& q, TreeWorkspace& ws) {
+  tree.check_configuration(q);
+  for (int i = 0; i < tree.num_links(); ++i) {
+    const Link& link = tree.link(i);
+    // X_λi = X_T X_J(q_i);  X_Wi = X_Wλ X_λi
+    ws.X_up[i] = link.X_T * joint_transform(link.joint, q.segment(link.idx_q, link.nq));
+    ws.X_W[i] = link.parent < 0 ? ws.X_up[i] : ws.X_W[link.parent] * ws.X_up[i];
+  }
+}
+
+void forward_kinematics(const Tree& tree, const Eigen::Ref<const Eigen::VectorXd>& q,
+                        const Eigen::Ref<const Eigen::VectorXd>& v, TreeWorkspace& ws) {
+  tree.check_velocity(v, "v");
+  link_poses(tree, q, ws);
+  for (int i = 0; i < tree.num_links(); ++i) {
+    const Link& link = tree.link(i);
+    // v_i = X_λi^-1 v_λ + S_i qd_i
+    const Motion v_J = Motion::from_vector(link.S * v.segment(link.idx_v, link.nv));
+    ws.v[i] = link.parent < 0 ? v_J : ws.X_up[i].act_inv(ws.v[link.parent]) + v_J;
+  }
+}
+
+}  // namespace rigiddyn

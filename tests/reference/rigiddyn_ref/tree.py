@@ -1,0 +1,190 @@
+"""Kinematic trees from the definitions, without Featherstone's recursions.
+
+A tree is a list of links (plain dicts, :func:`link`): parent index (-1 for the world W), joint kind
+and axis, placement (R_T, p_T) of the joint frame in the parent's frame, and the link's mass, centre of
+mass and inertia about it (in the link frame). Joint conventions are those of rigiddyn's joint classes:
+revolute/prismatic q (1,), spherical q = (x, y, z, w) with the angular velocity in the link frame, free
+q = (p, x, y, z, w) with the link-frame twist [w; v], fixed (no coordinate).
+
+Each quantity comes from its definition, link by link, in world coordinates:
+
+- poses X_Wi as 4x4 homogeneous matrices, composed along the path from the root;
+- the world Jacobian J_i (6, nv): column k is the spatial twist (at W's origin, expressed in W,
+  angular first) that a unit velocity of coordinate k gives link i, Ad(X_Wj) S_j for the joints j that
+  support i, 0 for the others;
+- the mass matrix H = sum_i J_i^T M_i J_i (T = 1/2 v^T H v, M_i the 6x6 inertia in W);
+- inverse dynamics by the principle of virtual power, tau = sum_i J_i^T (M_i A_i + V_i x* M_i V_i - f_i),
+  with V_i = J_i v, A_i = J_i a + Jdot_i v and Jdot_i v = sum_j (V_j x) (Ad(X_Wj) S_j qd_j) (a column fixed in
+  link j moves with link j's twist), f_i the gravity wrench and the external wrench in W.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+KINDS = {"revolute": (1, 1), "prismatic": (1, 1), "spherical": (4, 3), "free": (7, 6), "fixed": (0, 0)}
+
+
+def hat(v):
+    return np.array([[0.0, -v[2], v[1]], [v[2], 0.0, -v[0]], [-v[1], v[0], 0.0]])
+
+
+def rotation_about(axis, angle):
+    """Rodrigues' formula R = 1 + sin(θ) [a]x + (1 - cos θ) [a]x² for a unit axis a."""
+    K = hat(axis)
+    return np.eye(3) + np.sin(angle) * K + (1.0 - np.cos(angle)) * K @ K
+
+
+def quat_matrix(q):
+    """R(q) of a unit quaternion (x, y, z, w), Hamilton convention, active."""
+    x, y, z, w = np.asarray(q) / np.linalg.norm(q)
+    return np.array([
+        [1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
+        [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
+        [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)],
+    ])
+
+
+def homogeneous(R, p):
+    T = np.eye(4)
+    T[:3, :3], T[:3, 3] = R, p
+    return T
+
+
+def motion_adjoint(T):
+    """Ad(X): twist in B -> twist in A for T = X_AB, angular first: [[R, 0], [p^ R, R]]."""
+    R, p = T[:3, :3], T[:3, 3]
+    Ad = np.zeros((6, 6))
+    Ad[:3, :3] = Ad[3:, 3:] = R
+    Ad[3:, :3] = hat(p) @ R
+    return Ad
+
+
+def crm(V):
+    """V x (motion cross product), angular first."""
+    out = np.zeros((6, 6))
+    out[:3, :3] = out[3:, 3:] = hat(V[:3])
+    out[3:, :3] = hat(V[3:])
+    return out
+
+
+def spatial_inertia(mass, com, inertia_com):
+    """6x6 inertia about the frame's origin, angular first: [[I_C + m c^ c^T, m c^], [m c^T, m 1]]."""
+    C = hat(com)
+    return np.block([[inertia_com + mass * C @ C.T, mass * C], [mass * C.T, mass * np.eye(3)]])
+
+
+def link(parent, kind, mass, com, inertia_com, axis=(0.0, 0.0, 1.0), R_T=np.eye(3), p_T=np.zeros(3)):
+    return {"parent": parent, "kind": kind, "axis": np.asarray(axis, float) / np.linalg.norm(axis),
+            "R_T": np.asarray(R_T, float), "p_T": np.asarray(p_T, float), "mass": float(mass),
+            "com": np.asarray(com, float), "inertia_com": np.asarray(inertia_com, float)}
+
+
+def sizes(links):
+    """(idx_q, idx_v) of each link and (nq, nv)."""
+    idx, nq, nv = [], 0, 0
+    for l in links:
+        idx.append((nq, nv))
+        dq, dv = KINDS[l["kind"]]
+        nq, nv = nq + dq, nv + dv
+    return idx, nq, nv
+
+
+def joint_matrix(l, q):
+    """X_J(q) as a 4x4 matrix and the motion subspace S (6, nv) in the link frame."""
+    kind, a = l["kind"], l["axis"]
+    if kind == "revolute":
+        return homogeneous(rotation_about(a, q[0]), np.zeros(3)), np.concatenate([a, np.zeros(3)])[:, None]
+    if kind == "prismatic":
+        return homogeneous(np.eye(3), a * q[0]), np.concatenate([np.zeros(3), a])[:, None]
+    if kind == "spherical":
+        return homogeneous(quat_matrix(q), np.zeros(3)), np.vstack([np.eye(3), np.zeros((3, 3))])
+    if kind == "free":
+        return homogeneous(quat_matrix(q[3:]), q[:3]), np.eye(6)
+    return np.eye(4), np.zeros((6, 0))
+
+
+def poses(links, q):
+    """X_Wi (n, 4, 4) and the world columns Ad(X_Wi) S_i of each joint."""
+    idx, _, _ = sizes(links)
+    T_W, columns = [], []
+    for i, l in enumerate(links):
+        nq = KINDS[l["kind"]][0]
+        X_J, S = joint_matrix(l, q[idx[i][0]:idx[i][0] + nq])
+        T = homogeneous(l["R_T"], l["p_T"]) @ X_J
+        T_W.append(T if l["parent"] < 0 else T_W[l["parent"]] @ T)
+        columns.append(motion_adjoint(T_W[i]) @ S)
+    return np.array(T_W), columns
+
+
+def supports(links, i):
+    """The links on the path from i to the root, i included."""
+    path = []
+    while i >= 0:
+        path.append(i)
+        i = links[i]["parent"]
+    return path
+
+
+def jacobians(links, q):
+    """World Jacobians J_i (n, 6, nv) and the world columns of each joint."""
+    idx, _, nv = sizes(links)
+    T_W, columns = poses(links, q)
+    J = np.zeros((len(links), 6, nv))
+    for i in range(len(links)):
+        for j in supports(links, i):
+            J[i][:, idx[j][1]:idx[j][1] + columns[j].shape[1]] = columns[j]
+    return J, T_W, columns
+
+
+def inertias_in_world(links, T_W):
+    """M_i in W about W's origin: Ad^-T M_i Ad^-1."""
+    out = []
+    for l, T in zip(links, T_W):
+        Ad_inv = np.linalg.inv(motion_adjoint(T))
+        out.append(Ad_inv.T @ spatial_inertia(l["mass"], l["com"], l["inertia_com"]) @ Ad_inv)
+    return out
+
+
+def mass_matrix(links, q):
+    """H = sum_i J_i^T M_i J_i."""
+    J, T_W, _ = jacobians(links, q)
+    M = inertias_in_world(links, T_W)
+    return sum(J[i].T @ M[i] @ J[i] for i in range(len(links)))
+
+
+def link_twists(links, q, v):
+    """Each link's twist expressed in its own frame, (n, 6): Ad(X_Wi)^-1 J_i v."""
+    J, T_W, _ = jacobians(links, q)
+    return np.array([np.linalg.solve(motion_adjoint(T_W[i]), J[i] @ v) for i in range(len(links))])
+
+
+def inverse_dynamics(links, q, v, a, gravity=np.zeros(3), f_ext=None):
+    """tau = sum_i J_i^T (M_i A_i + V_i x* M_i V_i - f_gravity,i - f_ext,i), all in W (module docstring)."""
+    idx, _, _ = sizes(links)
+    J, T_W, columns = jacobians(links, q)
+    M = inertias_in_world(links, T_W)
+    V = [J[i] @ v for i in range(len(links))]
+    tau = np.zeros(len(v))
+    for i, l in enumerate(links):
+        # Jdot_i v = sum over supports j of V_j x (column_j qd_j)
+        Jdot_v = sum(crm(V[j]) @ columns[j] @ v[idx[j][1]:idx[j][1] + columns[j].shape[1]] for j in supports(links, i))
+        A = J[i] @ a + Jdot_v
+        f = M[i] @ A - crm(V[i]).T @ M[i] @ V[i]  # V x* = -crm(V)^T
+        c_W = T_W[i][:3, :3] @ l["com"] + T_W[i][:3, 3]
+        f -= np.concatenate([np.cross(c_W, l["mass"] * gravity), l["mass"] * gravity])
+        if f_ext is not None:  # the link-frame wrench in W: Ad^-T f
+            f -= np.linalg.inv(motion_adjoint(T_W[i])).T @ f_ext[i]
+        tau += J[i].T @ f
+    return tau
+
+
+def forward_dynamics(links, q, v, tau, gravity=np.zeros(3), f_ext=None):
+    """a = H^-1 (tau - C), C = inverse_dynamics(a = 0)."""
+    C = inverse_dynamics(links, q, v, np.zeros(len(v)), gravity, f_ext)
+    return np.linalg.solve(mass_matrix(links, q), tau - C)
+
+
+def potential_energy(links, q, gravity):
+    T_W, _ = poses(links, q)
+    return -sum(l["mass"] * gravity @ (T[:3, :3] @ l["com"] + T[:3, 3]) for l, T in zip(links, T_W))
