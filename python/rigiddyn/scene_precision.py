@@ -187,7 +187,7 @@ class SceneCase:
         if compiled.model is None:
             raise ValueError(compiled.reason)
         return _core.simulate(compiled.model, self.initial, dt, steps, method, record_every=record_every,
-                              progress=progress)
+                              progress=progress, error=False)
 
     def states(self, result: Any) -> SceneStates:
         """The recorded states and totals of a scene result."""
