@@ -17,6 +17,8 @@
 #include "rigiddyn/simulate/simulate.hpp"
 
 #include <chrono>
+#include <cmath>
+#include <limits>
 #include <optional>
 #include <string>
 #include <utility>
@@ -67,6 +69,7 @@ struct SimulationResult {
   std::int64_t unconverged_steps;
   double elapsed_seconds;
   bool scalar_first = false;  // q_WB rows as (w, x, y, z)
+  py::object error = py::none();  // a GlobalError (simulate(..., error=True)) or None
 };
 
 SimulationResult to_result(Trajectory&& tr, bool scalar_first) {
@@ -90,18 +93,25 @@ SimulationResult to_result(Trajectory&& tr, bool scalar_first) {
 
 template <class Body, class State>
 SimulationResult simulate_one(const Body& body, const State& initial, const SimulationOptions& o,
-                              const std::string& method, py::handle progress, bool scalar_first) {
+                              const std::string& method, py::handle progress, bool scalar_first, bool error) {
   SimulationOptions options = o;
   PythonMonitor monitor(progress);
   if (monitor.needed()) options.monitor = [&monitor](std::int64_t steps_done) { return monitor(steps_done); };
   Trajectory tr;
+  std::optional<GlobalErrorEstimate> estimate;
   {
     py::gil_scoped_release release;
     tr = simulate(body, initial, options);
+    if (error && !tr.interrupted) {  // the loads are split at their switches: the method keeps its order
+      const auto run = [&](const SimulationOptions& coarse) { return simulate(body, initial, coarse); };
+      estimate = global_error(tr, options, method_info(o.method).order, interruptible(run, tr.interrupted));
+    }
   }
   if (tr.interrupted) monitor.raise();  // the records so far are dropped with tr
   warn_after_run(tr, o, method);
-  return to_result(std::move(tr), scalar_first);
+  SimulationResult result = to_result(std::move(tr), scalar_first);
+  if (estimate) result.error = py::cast(to_global_error(std::move(*estimate), false));
+  return result;
 }
 
 // simulate: every argument converted by name before the run (see simulate_doc); a scene's run is
@@ -111,15 +121,15 @@ py::typing::Union<SimulationResult, SceneResult> simulate_py(py::handle model, p
                                                              py::handle record_every, py::handle loads,
                                                              py::handle gravity, py::handle t0,
                                                              py::handle scalar_first, py::handle progress,
-                                                             py::handle duration) {
+                                                             py::handle duration, py::handle error) {
   if (is_scene(model)) {
     return py::cast(simulate_scene_py(model, initial, dt, steps, method, record_every, loads, gravity, t0, scalar_first,
-                                      progress, duration));
+                                      progress, duration, error));
   }
   if (is_pivoted(model) || is_gyrostat(model)) {  // the one-body scene of the body, its gravity and loads
     const py::object scene = is_gyrostat(model) ? gyrostat_scene(model, loads, gravity) : pivoted_scene(model, loads, gravity);
     return py::cast(simulate_scene_py(scene, py::make_tuple(initial), dt, steps, method, record_every, py::none(),
-                                      py::none(), t0, scalar_first, progress, duration));
+                                      py::none(), t0, scalar_first, progress, duration, error));
   }
   return py::cast(with_model(model, initial, "initial", [&](const auto& body, const auto& state) {
     SimulationOptions o = as_options(dt, method, loads, gravity);
@@ -127,7 +137,8 @@ py::typing::Union<SimulationResult, SceneResult> simulate_py(py::handle model, p
     o.record_every = py_io::as_int(record_every, "record_every", 1);
     o.t0 = py_io::as_scalar(py_io::in_si(t0, "s", "t0"), "t0");
     const bool first = py_io::as_bool(scalar_first, "scalar_first");
-    return simulate_one(body, state, o, method_info(o.method).name, progress, first);
+    const bool estimate = py_io::as_bool(error, "error");
+    return simulate_one(body, state, o, method_info(o.method).name, progress, first, estimate);
   }));
 }
 
@@ -138,7 +149,7 @@ constexpr const char* result_arrays[] = {"t", "p_W", "q_WB", "v_W", "w_B", "kine
 py::tuple result_state(const SimulationResult& r) {
   return py::make_tuple(r.t, r.p_W, r.q_WB, r.v_W, r.w_B, r.kinetic_energy, r.total_energy, r.angular_momentum_norm,
                         r.quaternion_norm_error, r.work, r.diverged, r.unconverged_steps, r.elapsed_seconds,
-                        r.scalar_first);
+                        r.scalar_first, r.error);
 }
 
 // A pickled array as a read-only float64 copy of the shape it must have ((n,) or (n, k), n records).
@@ -153,16 +164,22 @@ Array unpickled_array(py::handle obj, const char* name, py::ssize_t n, py::ssize
   return a;
 }
 
-// 13 items: a state without scalar_first (q_WB as (x, y, z, w)), as simulate_batch's samples and earlier pickles
+// 13 items: a state without scalar_first (q_WB as (x, y, z, w)), as simulate_batch's samples and earlier pickles;
+// 14: without the error estimate (None then)
 SimulationResult result_from_state(const py::tuple& t) {
-  if (t.size() != 13 && t.size() != 14) {
-    py_io::throw_value_error("SimulationResult pickle", "a tuple of 13 or 14 items", std::to_string(t.size()) + " items");
+  if (t.size() < 13 || t.size() > 15) {
+    py_io::throw_value_error("SimulationResult pickle", "a tuple of 13, 14 or 15 items", std::to_string(t.size()) + " items");
   }
   const py::ssize_t n = py::len(t[0]);
   auto column = [&](int i, py::ssize_t k) { return unpickled_array(t[i], result_arrays[i], n, k); };
-  return SimulationResult{column(0, 0), column(1, 3), column(2, 4), column(3, 3), column(4, 3), column(5, 0),
-                          column(6, 0), column(7, 0), column(8, 0), column(9, 0), t[10].cast<bool>(),
-                          t[11].cast<std::int64_t>(), t[12].cast<double>(), t.size() == 14 && t[13].cast<bool>()};
+  SimulationResult r{column(0, 0), column(1, 3), column(2, 4), column(3, 3), column(4, 3), column(5, 0),
+                     column(6, 0), column(7, 0), column(8, 0), column(9, 0), t[10].cast<bool>(),
+                     t[11].cast<std::int64_t>(), t[12].cast<double>(), t.size() >= 14 && t[13].cast<bool>()};
+  if (t.size() == 15 && !t[14].is_none()) {
+    if (!py::isinstance<GlobalError>(t[14])) py_io::throw_type_error("SimulationResult pickle error", "a GlobalError or None", t[14]);
+    r.error = py::reinterpret_borrow<py::object>(t[14]);
+  }
+  return r;
 }
 
 // "SimulationResult(records=n, t=[t0, t_end], diverged=..., unconverged_steps=..., elapsed_seconds=...)".
@@ -174,6 +191,102 @@ std::string result_repr(const SimulationResult& r) {
                                         {"diverged", py::bool_(r.diverged)},
                                         {"unconverged_steps", py::int_(r.unconverged_steps)},
                                         {"elapsed_seconds", py::float_(r.elapsed_seconds)}});
+}
+
+// The quantities of a GlobalError with their units, in the order of max() and summary().
+struct ErrorQuantity {
+  const char* name;
+  Array GlobalError::*values;
+  const char* unit;
+};
+constexpr ErrorQuantity error_quantities[] = {
+    {"attitude", &GlobalError::attitude, "rad"},         {"angular_velocity", &GlobalError::angular_velocity, "rad/s"},
+    {"position", &GlobalError::position, "m"},           {"velocity", &GlobalError::velocity, "m/s"},
+    {"energy", &GlobalError::energy, "J"},               {"angular_momentum", &GlobalError::angular_momentum, "kg m^2/s"}};
+
+// The largest finite value of `a` (any shape); NaN when it has none.
+double finite_max(const Array& a) {
+  double largest = std::numeric_limits<double>::quiet_NaN();
+  for (py::ssize_t i = 0; i < a.size(); ++i) {
+    const double v = a.data()[i];
+    if (std::isfinite(v) && !(v <= largest)) largest = v;
+  }
+  return largest;
+}
+
+// {"attitude": largest estimate [rad], ...} over every record (and body).
+py::dict error_max(const GlobalError& e) {
+  py::dict out;
+  for (const ErrorQuantity& q : error_quantities) out[q.name] = finite_max(e.*q.values);
+  return out;
+}
+
+// "order 4: 11 of 11 records reliable; largest estimates: attitude 3.1e-06 rad, ..." (and the first verdict that
+// is not reliable, with its record).
+std::string error_summary(const GlobalError& e) {
+  const auto n = static_cast<std::size_t>(e.verdict.size());
+  std::size_t reliable = 0, first_other = n;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (e.verdict[i].cast<std::string>() == "reliable") {
+      ++reliable;
+    } else if (first_other == n) {
+      first_other = i;
+    }
+  }
+  std::string text = (e.order == 0 ? std::string("exact method (round-off bound)") : "order " + std::to_string(e.order)) +
+                     ": " + std::to_string(reliable) + " of " + std::to_string(n) + " records reliable; largest estimates:";
+  const char* separator = " ";
+  for (const ErrorQuantity& q : error_quantities) {
+    char value[32];
+    std::snprintf(value, sizeof value, "%.2g", finite_max(e.*q.values));
+    text += separator + std::string(q.name) + " " + value + " " + q.unit;
+    separator = ", ";
+  }
+  if (first_other < n) {
+    text += "; record " + std::to_string(first_other) + ": " + e.verdict[first_other].cast<std::string>();
+  }
+  return text;
+}
+
+// A GlobalError's pickle state: order, the seven arrays of error_arrays, verdict, reliable.
+constexpr Array GlobalError::*error_arrays[] = {&GlobalError::attitude, &GlobalError::angular_velocity,
+                                                &GlobalError::position, &GlobalError::velocity,
+                                                &GlobalError::energy,   &GlobalError::angular_momentum,
+                                                &GlobalError::observed_order};
+
+py::tuple global_error_state(const GlobalError& e) {
+  py::tuple out(10);
+  out[0] = py::int_(e.order);
+  for (std::size_t k = 0; k < 7; ++k) out[k + 1] = e.*error_arrays[k];
+  out[8] = e.verdict;
+  out[9] = e.reliable;
+  return out;
+}
+
+GlobalError global_error_from_state(const py::tuple& t) {
+  if (t.size() != 10) py_io::throw_value_error("GlobalError pickle", "a tuple of 10 items", std::to_string(t.size()) + " items");
+  const py::object numpy = py::module_::import("numpy");
+  GlobalError e;
+  e.order = t[0].cast<int>();
+  for (std::size_t k = 0; k < 7; ++k) {
+    Array a = Array::ensure(numpy.attr("array")(t[k + 1], "float64"));  // a copy
+    a.attr("flags").attr("writeable") = false;
+    e.*error_arrays[k] = a;
+  }
+  e.verdict = py::tuple(t[8]);
+  e.reliable = py::array_t<bool>::ensure(numpy.attr("array")(t[9], "bool"));
+  e.reliable.attr("flags").attr("writeable") = false;
+  return e;
+}
+
+// Every field the same (arrays bitwise, NaN equal to NaN).
+bool same_error(const GlobalError& a, const GlobalError& b) {
+  const py::object array_equal = py::module_::import("numpy").attr("array_equal");
+  if (a.order != b.order || !a.verdict.equal(b.verdict) || !array_equal(a.reliable, b.reliable).cast<bool>()) return false;
+  for (const auto member : error_arrays) {
+    if (!array_equal(a.*member, b.*member, py::arg("equal_nan") = true).cast<bool>()) return false;
+  }
+  return true;
 }
 
 bool all_finite(const RigidBodyState& s) {
@@ -256,13 +369,18 @@ progress : callable, optional
 duration : float or pint.Quantity, keyword-only, optional
     Length of the run [s] instead of steps: a whole number of steps of dt (to 1e-9 relative: 10 s at
     dt = 0.01 s is 1000 steps).
+error : bool, keyword-only, default True
+    Estimate the global error of every record (result.error, a GlobalError) by two more runs of the method at 2 dt
+    and 4 dt (+0.75x the cost; global Richardson extrapolation with an observed-order check, see GlobalError).
+    False: no estimate (result.error is None), the cost of the run alone.
 
 Returns
 -------
 SimulationResult or SceneResult
     A SimulationResult for a Particle, PlanarBody or RigidBody: one row per record, n records (t, p_W, q_WB, v_W,
     w_B, kinetic_energy, total_energy, angular_momentum_norm, quaternion_norm_error, work; diverged,
-    unconverged_steps, elapsed_seconds). A SceneResult for a Scene, a CompiledScene, a pivoted body or a Gyrostat.
+    unconverged_steps, elapsed_seconds; error). A SceneResult for a Scene, a CompiledScene, a pivoted body or a
+    Gyrostat. The records are those of the run at dt whether or not error is True; elapsed_seconds is its loop's.
 
 Raises
 ------
@@ -316,6 +434,12 @@ A force of 2 N on 1 kg for the first second (the step across t = 1 s is split th
 >>> push = rd.AppliedLoad(force=[2.0, 0.0, 0.0], t_end=1.0)
 >>> rd.simulate(rd.Particle(1.0), rd.ParticleState(), dt=0.3, steps=5, loads=push).v_W[-1].round(12)
 array([2., 0., 0.])
+
+How accurate a run is: rk4 on a tumbling body, its attitude's error at the last record [rad]:
+
+>>> r = rd.simulate(body, rd.RigidBodyState(w_B=[0.1, 1.0, 0.1]), dt=0.01, steps=1000)
+>>> r.error.verdict[-1], bool(r.error.attitude[-1] < 1e-8)
+('reliable', True)
 )doc";
 
 const char* const step_doc = R"doc(One step of `method` from `state` at time t to t + dt.
@@ -476,6 +600,123 @@ Examples
           py::arg("other"));
   load.attr("__hash__") = py::none();
 
+  py::class_<GlobalError> error_class(m, "GlobalError",
+      "The global error estimate of a run: result.error of simulate(..., error=True).\n"
+      R"doc(
+At every record, the error of the run at dt is estimated by global Richardson extrapolation: the method also runs at
+2 dt and 4 dt, and for a method of order p
+
+    eps ~ d(y_dt, y_2dt) / (2^p - 1),   r = d(y_2dt, y_4dt) / d(y_dt, y_2dt) ~ 2^p.
+
+The distance d is the geodesic angle between attitudes [rad] (angular_distance) and the norm of the difference for
+the other quantities. The estimate is called reliable only where the observed ratio r of every quantity lies in
+[2^p / 1.5, 2^p * 1.5]; elsewhere the verdict names the reason ("not asymptotic: observed order 1.3 where 4 is
+expected (attitude)", "the 4h run diverged") and the number is only indicative. A ratio above the window is
+flagged too: it is what an error hidden from all three runs alike looks like, although it is also what a conserved
+quantity whose error falls faster than dt^p shows (rk4's energy at a coarse step). Where d is below the round-off
+bound of the run (8 eps_machine per step, relative) the estimate is that bound, with the verdict "reliable"; the
+method 'exact' reports the round-off bound alone (order 0).
+
+p is the order the run has, not always the method's: a scene whose velocity-dependent element (drag, a damper, a
+PythonForce) meets a kick-based splitting runs at order 1.
+
+The 2dt and 4dt runs have a state only every m = lcm(record_every, 4) steps: the estimate is computed and checked at
+those records; between them it is interpolated linearly in t, and after the last of them (steps not a multiple of
+m) grown linearly in t from t0. Those records are not checked, so their verdict says "interpolated ..." or
+"extrapolated ..." rather than "reliable": pass a record_every and a steps that are multiples of 4 to have every
+record checked. A run of fewer than m steps has no estimate (NaN, with a verdict saying so).
+
+A scene with a PythonForce is never called reliable (verdict "not verified: ..."): a force that switches inside a
+step (an `if t > t_s`) costs every method its order there, and the runs at dt, 2dt and 4dt can take the switch in
+the same step, so that its error cancels in their differences while the order check passes.
+
+Parameters
+----------
+None
+    Made by simulate; it has no public constructor.
+
+See Also
+--------
+simulate, SimulationResult, SceneResult, angular_distance
+
+Examples
+--------
+rk4 (order 4) on a tumbling body; halving dt divides the estimate by about 2^4 = 16:
+
+>>> body = rd.RigidBody(1.0, [1.0, 2.0, 3.0])
+>>> state = rd.RigidBodyState(w_B=[0.1, 1.0, 0.1])
+>>> coarse = rd.simulate(body, state, dt=0.02, steps=512).error
+>>> fine = rd.simulate(body, state, dt=0.01, steps=1024).error
+>>> coarse.order, coarse.verdict[-1], fine.verdict[-1]
+(4, 'reliable', 'reliable')
+>>> bool(12 < coarse.attitude[-1] / fine.attitude[-1] < 20)
+True
+
+explicit_euler at a coarse step is not in its asymptotic regime, and says so:
+
+>>> rough = rd.simulate(body, rd.RigidBodyState(w_B=[0.1, 3.0, 0.1]), dt=0.1, steps=100, method="explicit_euler")
+>>> bool(rough.error.reliable[-1]), rough.error.verdict[-1].startswith("not asymptotic")
+(False, True)
+)doc");
+  error_class
+      .def_readonly("order", &GlobalError::order,
+                    "The order p the estimate assumed: the run's order (0: the method 'exact', round-off bound only).")
+      .def_readonly("attitude", &GlobalError::attitude,
+                    "Error of q_WB as a rotation angle [rad], shape (n,) ((n, nb) for a scene).")
+      .def_readonly("angular_velocity", &GlobalError::angular_velocity,
+                    "Error of w_B, the norm [rad/s], shape (n,) ((n, nb) for a scene).")
+      .def_readonly("position", &GlobalError::position, "Error of p_W, the norm [m], shape (n,) ((n, nb) for a scene).")
+      .def_readonly("velocity", &GlobalError::velocity,
+                    "Error of v_W, the norm [m/s], shape (n,) ((n, nb) for a scene).")
+      .def_readonly("energy", &GlobalError::energy, "Error of total_energy [J], shape (n,).")
+      .def_readonly("angular_momentum", &GlobalError::angular_momentum,
+                    "Error of |L| (angular_momentum_norm of a body, |angular_momentum_W| of a scene) [kg m^2/s], shape (n,).")
+      .def_readonly("observed_order", &GlobalError::observed_order,
+                    "log2 r of the quantity whose ratio r is furthest from 2^p, shape (n,); NaN where every quantity is "
+                    "at round-off level or no estimate was computed.")
+      .def_readonly("verdict", &GlobalError::verdict,
+                    "'reliable' or the reason the estimate is not, per record (a tuple of n str).")
+      .def_readonly("reliable", &GlobalError::reliable, "verdict == 'reliable', shape (n,) (bool).")
+      .def("max", &error_max,
+           R"doc(The largest estimate of each quantity over the records (and bodies).
+
+Returns
+-------
+dict
+    {'attitude': rad, 'angular_velocity': rad/s, 'position': m, 'velocity': m/s, 'energy': J,
+    'angular_momentum': kg m^2/s}, floats (NaN for a quantity without an estimate).
+
+Examples
+--------
+>>> r = rd.simulate(rd.RigidBody(1.0, [1.0, 2.0, 3.0]), rd.RigidBodyState(w_B=[0.1, 1.0, 0.1]), dt=0.01, steps=400)
+>>> sorted(r.error.max()), bool(r.error.max()["attitude"] < 1e-8)
+(['angular_momentum', 'angular_velocity', 'attitude', 'energy', 'position', 'velocity'], True)
+)doc")
+      .def("summary", &error_summary,
+           R"doc(One line: the order, how many records are reliable, the largest estimates, the first other verdict.
+
+Returns
+-------
+str
+
+Examples
+--------
+>>> r = rd.simulate(rd.RigidBody(1.0, [1.0, 2.0, 3.0]), rd.RigidBodyState(w_B=[0.1, 1.0, 0.1]), dt=0.01, steps=400,
+...                 record_every=4)
+>>> r.error.summary().split(";")[0]
+'order 4: 101 of 101 records reliable'
+)doc")
+      .def("__repr__", [](const GlobalError& e) { return "GlobalError(" + error_summary(e) + ")"; })
+      .def(py::pickle(&global_error_state, &global_error_from_state))
+      .def(
+          "__eq__",
+          [](const GlobalError& a, py::handle b) -> py::object {
+            if (!py::isinstance<GlobalError>(b)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
+            return py::bool_(same_error(a, b.cast<const GlobalError&>()));
+          },
+          py::arg("other"));
+  error_class.attr("__hash__") = py::none();
+
   py::class_<SimulationResult>(m, "SimulationResult",
       "The records of simulate: arrays with one row per record (n records).\n"
       R"doc(
@@ -522,6 +763,9 @@ array([1.5, 1.5, 1.5])
       .def_readonly("elapsed_seconds", &SimulationResult::elapsed_seconds, "Wall time of the C++ stepping loop [s].")
       .def_readonly("scalar_first", &SimulationResult::scalar_first,
                     "True if q_WB's rows are (w, x, y, z): the result of simulate(..., scalar_first=True).")
+      .def_readonly("error", &SimulationResult::error,
+                    "The global error estimate of every record (a GlobalError), or None (simulate(..., error=False), "
+                    "a pickled or batch result).")
       .def("__repr__", &result_repr)
       .def(py::pickle(&result_state, &result_from_state))
       // the table lives in Python (rigiddyn/trajectory.py): one definition of the columns for CSV, npz,
@@ -562,7 +806,8 @@ Examples
   py::arg("model"), py::arg("initial"), py::arg("dt"), py::arg("steps") = py::none(),                        \
       py::arg("method") = py::none(), py::arg("record_every") = 1, py::arg("loads") = py::none(),          \
       py::arg("gravity") = py::none(), py::arg("t0") = 0.0, py::arg("scalar_first") = false,               \
-      py::arg("progress") = py::none(), py::kw_only(), py::arg("duration") = py::none()
+      py::arg("progress") = py::none(), py::kw_only(), py::arg("duration") = py::none(),     \
+      py::arg("error") = true
 #define RIGIDDYN_STEP_ARGS                                                                                  \
   py::arg("model"), py::arg("state"), py::arg("dt"), py::arg("method") = py::none(), py::arg("loads") = py::none(), \
       py::arg("gravity") = py::none(), py::arg("t") = py::none()

@@ -6,6 +6,7 @@
 #include <pybind11/stl.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -17,6 +18,7 @@
 #include "repr.hpp"
 #include "scene_run.hpp"
 #include "rigiddyn/scene/compile.hpp"
+#include "rigiddyn/scene/scene_order.hpp"
 #include "rigiddyn/scene/simulate_scene.hpp"
 
 namespace rigiddyn::bindings {
@@ -317,7 +319,7 @@ const ResultArray result_arrays[] = {
 constexpr std::size_t result_array_count = sizeof(result_arrays) / sizeof(result_arrays[0]);
 
 py::tuple scene_result_state(const SceneResult& r) {
-  py::tuple out(result_array_count + 9);
+  py::tuple out(result_array_count + 10);
   for (std::size_t i = 0; i < result_array_count; ++i) out[i] = r.*(result_arrays[i].member);
   out[result_array_count] = r.body_names;
   out[result_array_count + 1] = r.elements;
@@ -328,16 +330,19 @@ py::tuple scene_result_state(const SceneResult& r) {
   out[result_array_count + 6] = r.wheel_speed;
   out[result_array_count + 7] = r.motor_work;
   out[result_array_count + 8] = r.wheel_bodies;
+  out[result_array_count + 9] = r.error;
   return out;
 }
 
-// result_array_count + 5 or + 6 items: a state without scalar_first (q_WB as (x, y, z, w)) or without the wheels,
-// as earlier pickles
+// result_array_count + 5, + 6 or + 9 items: a state without scalar_first (q_WB as (x, y, z, w)), without the wheels
+// or without the error estimate, as earlier pickles
 SceneResult scene_result_from_state(const py::tuple& t) {
   const std::size_t wheels = result_array_count + 9;  // the size of a state with the wheels
-  if (t.size() != result_array_count + 5 && t.size() != result_array_count + 6 && t.size() != wheels) {
+  if (t.size() != result_array_count + 5 && t.size() != result_array_count + 6 && t.size() != wheels &&
+      t.size() != wheels + 1) {
     py_io::throw_value_error("SceneResult pickle", "a tuple of " + std::to_string(result_array_count + 5) + ", " +
-                             std::to_string(result_array_count + 6) + " or " + std::to_string(wheels) + " items",
+                             std::to_string(result_array_count + 6) + ", " + std::to_string(wheels) + " or " +
+                             std::to_string(wheels + 1) + " items",
                              std::to_string(t.size()) + " items");
   }
   SceneResult r;
@@ -364,11 +369,12 @@ SceneResult scene_result_from_state(const py::tuple& t) {
   r.unconverged_steps = t[result_array_count + 3].cast<std::int64_t>();
   r.elapsed_seconds = t[result_array_count + 4].cast<double>();
   r.scalar_first = t.size() >= result_array_count + 6 && t[result_array_count + 5].cast<bool>();
-  r.wheel_bodies = t.size() == wheels ? py::tuple(t[result_array_count + 8]) : py::tuple();
+  r.wheel_bodies = t.size() >= wheels ? py::tuple(t[result_array_count + 8]) : py::tuple();
+  if (t.size() == wheels + 1) r.error = py::reinterpret_borrow<py::object>(t[wheels]);  // a GlobalError or None
   const auto nw = static_cast<py::ssize_t>(r.wheel_bodies.size());
   // each wheel column, (n, nw) (empty in an earlier pickle)
   const auto wheel_column = [&](std::size_t at, const char* name) {
-    Array a = t.size() == wheels ? Array::ensure(py::module_::import("numpy").attr("array")(t[at], "float64"))
+    Array a = t.size() >= wheels ? Array::ensure(py::module_::import("numpy").attr("array")(t[at], "float64"))
                                  : Array(std::vector<py::ssize_t>{n, 0});
     if (!a || a.ndim() != 2 || a.shape(0) != n || a.shape(1) != nw) {
       py_io::throw_value_error(std::string("SceneResult pickle ") + name,
@@ -594,7 +600,7 @@ bool is_scene(py::handle model) {
 
 SceneResult simulate_scene_py(py::handle model, py::handle initial, py::handle dt, py::handle steps, py::handle method,
                              py::handle record_every, py::handle loads, py::handle gravity, py::handle t0,
-                             py::handle scalar_first, py::handle progress, py::handle duration) {
+                             py::handle scalar_first, py::handle progress, py::handle duration, py::handle error) {
   refuse_body_arguments(loads, gravity);
   SimulationOptions o;
   o.dt = py_io::as_scalar(py_io::in_si(dt, "s", "dt"), "dt");
@@ -602,19 +608,27 @@ SceneResult simulate_scene_py(py::handle model, py::handle initial, py::handle d
   o.record_every = py_io::as_int(record_every, "record_every", 1);
   o.t0 = py_io::as_scalar(py_io::in_si(t0, "s", "t0"), "t0");
   const bool first = py_io::as_bool(scalar_first, "scalar_first");
+  const bool estimate_error = py_io::as_bool(error, "error");
   const CompiledSceneHandle h = compiled_for(model, method);
   o.method = h.method;
   const std::vector<BodyState> initial_states = as_scene_states(initial, h.scene, "initial");
   PythonMonitor monitor(progress);
   if (monitor.needed()) o.monitor = [&monitor](std::int64_t steps_done) { return monitor(steps_done); };
   SceneSimulation r;
+  std::optional<GlobalErrorEstimate> estimate;
   {
     py::gil_scoped_release release;  // a PythonForce takes it back for each of its calls
     r = simulate(*h.compiled, initial_states, o);
+    if (estimate_error && !r.interrupted) {  // at the order the compiled scene has (scene_order.hpp)
+      const auto run = [&](const SimulationOptions& coarse) { return simulate(*h.compiled, initial_states, coarse); };
+      estimate = global_error(r, o, scene_order(*h.compiled), interruptible(run, r.interrupted), opaque_force(*h.compiled));
+    }
   }
   if (r.interrupted) monitor.raise();  // the records so far are dropped with r
   warn_after_run(r, o, method_info(h.method).name);
-  return to_scene_result(std::move(r), h.scene, *h.compiled, first);
+  SceneResult result = to_scene_result(std::move(r), h.scene, *h.compiled, first);
+  if (estimate) result.error = py::cast(to_global_error(std::move(*estimate), true));
+  return result;
 }
 
 py::object step_scene_py(py::handle model, py::handle state, py::handle dt, py::handle method, py::handle loads,
@@ -844,6 +858,10 @@ void bind_scene(py::module_& m) {
       .def_readonly("unconverged_steps", &SceneResult::unconverged_steps,
                     "number of steps whose implicit solve stopped at its iteration cap (0 for explicit methods)")
       .def_readonly("elapsed_seconds", &SceneResult::elapsed_seconds, "wall time of the C++ stepping loop [s]")
+      .def_readonly("error", &SceneResult::error,
+                    "The global error estimate of every record (a GlobalError: per body (n, nb) for the state, per "
+                    "record (n,) for the energy and |L|), or None (simulate(..., error=False), a pickled or batch "
+                    "result).")
       .def_readonly("scalar_first", &SceneResult::scalar_first,
                     "True if q_WB's rows are (w, x, y, z): the result of simulate(..., scalar_first=True)")
       .def("__repr__", &scene_result_repr)

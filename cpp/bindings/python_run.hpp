@@ -19,6 +19,7 @@
 #include "rigiddyn/check.hpp"
 #include "rigiddyn/models/loads.hpp"
 #include "rigiddyn/scene/scene_simulation.hpp"
+#include "rigiddyn/simulate/global_error.hpp"
 #include "rigiddyn/simulate/simulate.hpp"
 
 namespace rigiddyn::bindings {
@@ -57,6 +58,53 @@ inline void to_scalar_first(std::vector<double>& q_xyzw) {
     const double w = q[3];
     q[3] = q[2], q[2] = q[1], q[1] = q[0], q[0] = w;
   }
+}
+
+// simulate's global error estimate (rigiddyn.GlobalError; its docstring in bind_dynamics.cpp): per record (n), and
+// per body (n, nb) for a scene's state quantities.
+struct GlobalError {
+  int order;
+  py_io::Array attitude, angular_velocity, position, velocity, energy, angular_momentum, observed_order;
+  pybind11::tuple verdict;
+  pybind11::array_t<bool> reliable;
+};
+
+// The GlobalError of `e` for n records: the state quantities (n,) for one body (per_body false), else (n, nb).
+inline GlobalError to_global_error(GlobalErrorEstimate&& e, bool per_body) {
+  namespace py = pybind11;
+  const auto n = static_cast<py::ssize_t>(e.verdict.size());
+  const std::vector<py::ssize_t> state_shape =
+      per_body ? std::vector<py::ssize_t>{n, static_cast<py::ssize_t>(e.bodies)} : std::vector<py::ssize_t>{n};
+  py::array_t<bool> reliable(n);
+  py::tuple verdict(n);
+  for (py::ssize_t i = 0; i < n; ++i) {
+    const std::string& v = e.verdict[static_cast<std::size_t>(i)];
+    reliable.mutable_at(i) = v == "reliable";
+    verdict[i] = py::str(v);
+  }
+  reliable.attr("flags").attr("writeable") = false;
+  return GlobalError{e.order,
+                     adopt(std::move(e.attitude), state_shape),
+                     adopt(std::move(e.angular_velocity), state_shape),
+                     adopt(std::move(e.position), state_shape),
+                     adopt(std::move(e.velocity), state_shape),
+                     adopt(std::move(e.energy), {n}),
+                     adopt(std::move(e.angular_momentum), {n}),
+                     adopt(std::move(e.observed_order), {n}),
+                     verdict,
+                     reliable};
+}
+
+// A coarse run of the estimate (global_error) with the monitor of the answer: its records, and `interrupted` set
+// when the monitor stopped it (the binding then raises the monitor's exception).
+template <class Simulate>
+auto interruptible(Simulate&& simulate, bool& interrupted) {
+  return [&simulate, &interrupted](const SimulationOptions& coarse) {
+    if (interrupted) return decltype(simulate(coarse)){};  // the run is being stopped: no more coarse runs
+    auto records = simulate(coarse);
+    interrupted = interrupted || records.interrupted;
+    return records;
+  };
 }
 
 // simulate's monitor from Python (SimulationOptions::monitor): at most every 50 ms of the run it takes

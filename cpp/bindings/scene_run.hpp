@@ -37,6 +37,7 @@ struct SceneResult {
   std::int64_t unconverged_steps;
   double elapsed_seconds;
   bool scalar_first = false;  // q_WB rows as (w, x, y, z)
+  pybind11::object error = pybind11::none();  // a GlobalError (simulate(..., error=True)) or None
 };
 
 // The body index of each gyrostat wheel of the scene, in the order of SceneSimulation::wheel_speed's columns.
@@ -54,7 +55,7 @@ SceneResult simulate_scene_py(pybind11::handle model, pybind11::handle initial, 
                                    pybind11::handle steps, pybind11::handle method, pybind11::handle record_every,
                                    pybind11::handle loads, pybind11::handle gravity, pybind11::handle t0,
                                    pybind11::handle scalar_first, pybind11::handle progress,
-                                   pybind11::handle duration);
+                                   pybind11::handle duration, pybind11::handle error);
 pybind11::object step_scene_py(pybind11::handle model, pybind11::handle state, pybind11::handle dt,
                                pybind11::handle method, pybind11::handle loads, pybind11::handle gravity,
                                pybind11::handle t);

@@ -74,6 +74,7 @@ MADE_BY_THE_CORE = {
     "BatchResult": "simulate_batch",
     "BatchSceneResult": "simulate_batch on a Scene",
     "ElementField": "the field table of each element class (SpringDamper.fields)",
+    "GlobalError": "simulate(..., error=True): result.error",
     "InertiaReport": "inertia_report",
     "SceneFrame": "its static constructors (SceneFrame.rotating, ...)",
     "SceneResult": "simulate on a Scene",

@@ -1,4 +1,5 @@
 #include "rigiddyn/scene/compile.hpp"
+#include "rigiddyn/scene/scene_order.hpp"
 
 #include "rigiddyn/check.hpp"
 
@@ -192,9 +193,7 @@ namespace detail {
 
 void check_compatibility(Method method, const ElementTraits& traits, const std::string& name, const std::string& type,
                          std::vector<std::string>& warnings) {
-  const bool kicks = method == Method::splitting_dlm || method == Method::splitting_dlm_yoshida4 ||
-                     method == Method::exact_flow_kick;
-  if (kicks && traits.velocity_dependent) {
+  if (kick_freezes_velocities(method, traits)) {
     warnings.push_back(name + " (" + type + ") is velocity-dependent, and the kicks of '" + method_info(method).name +
                        "' freeze velocities: order 1 in the damping, energy behaviour not symplectic");
   }

@@ -1,0 +1,306 @@
+#include "rigiddyn/simulate/global_error.hpp"
+
+#include "rigiddyn/check.hpp"
+#include "rigiddyn/so3/angular_distance.hpp"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <limits>
+#include <cstdio>
+#include <numeric>
+#include <utility>
+
+namespace rigiddyn {
+
+namespace {
+
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+// The round-off a run of `steps` steps can accumulate in a quantity of size `size`: a relative
+// 8 ε_machine per step, summed (a bound: rounding errors add up at most linearly).
+double round_off_bound(double size, std::int64_t steps) {
+  return 8.0 * DBL_EPSILON * std::abs(size) * static_cast<double>(std::max<std::int64_t>(steps, 1));
+}
+
+Eigen::Quaterniond attitude(const ErrorRecords& r, std::size_t i, std::int64_t b) {
+  const double* q = r.q_WB + (i * r.bodies + b) * 4;
+  return Eigen::Quaterniond(q[3], q[0], q[1], q[2]).normalized();
+}
+
+Eigen::Map<const Eigen::Vector3d> vector3(const double* rows, const ErrorRecords& r, std::size_t i, std::int64_t b) {
+  return Eigen::Map<const Eigen::Vector3d>(rows + (i * r.bodies + b) * 3);
+}
+
+// |T| + |V| at record i: the size the round-off of the total energy T + V scales with [J].
+double energy_size_of(const ErrorRecords& r, std::size_t i) {
+  return std::abs(r.energy_scale[i]) + std::abs(r.energy[i] - r.energy_scale[i]);
+}
+
+// The differences of one quantity at a common record: d1 = d(y_h, y_2h), d2 = d(y_2h, y_4h) and the round-off
+// bound of y_h.
+struct Differences {
+  double d1, d2, round_off;
+};
+
+// What one common record's quantities say: the estimate of each, and the record's observed order and verdict
+// (those of the quantity whose ratio r is furthest from 2^p, unless a coarse run diverged).
+class CommonRecord {
+ public:
+  CommonRecord(int order, std::string coarse_problem) : order_(order), blocked_(std::move(coarse_problem)) {}
+
+  // ε of a quantity named `name` (of body `body` when the run has several; -1: a quantity of the whole run),
+  // checking its observed order.
+  double estimate(const Differences& d, const char* name, std::int64_t body = -1) {
+    if (d.d1 <= d.round_off) return d.round_off;  // at round-off level: its bound, no order to check
+    if (!std::isfinite(d.d1)) {
+      block("the run at h or 2h diverged");
+      return nan;
+    }
+    const double expected = std::exp2(order_);
+    const double epsilon = d.d1 / (expected - 1.0);  // leading error term of y_h
+    if (!std::isfinite(d.d2)) {
+      block("the 4h run diverged");
+      return epsilon;
+    }
+    const double r = d.d2 / d.d1;
+    const double distance = std::abs(std::log(r / expected));
+    if (distance > worst_distance_) {
+      worst_distance_ = distance, observed_order_ = std::log2(r);
+      problem_.clear();
+      if (!(r >= expected / 1.5 && r <= expected * 1.5)) {
+        char text[192];
+        std::snprintf(text, sizeof text, "not asymptotic: observed order %.2g where %d is expected (%s%s%s)",
+                      observed_order_, order_, name, body < 0 ? "" : " of body ",
+                      body < 0 ? "" : std::to_string(body).c_str());
+        problem_ = text;
+      }
+    }
+    return epsilon;
+  }
+
+  double observed_order() const { return observed_order_; }
+  std::string verdict() const {
+    if (!blocked_.empty()) return blocked_;
+    return problem_.empty() ? "reliable" : problem_;
+  }
+
+ private:
+  void block(const std::string& why) {
+    if (blocked_.empty()) blocked_ = why;
+  }
+
+  int order_;
+  std::string blocked_, problem_;
+  double worst_distance_ = -1.0;
+  double observed_order_ = nan;
+};
+
+// The per-body and per-run quantities of one record, in the layout of GlobalErrorEstimate.
+struct RecordEstimate {
+  std::vector<double> attitude, angular_velocity, position, velocity;  // (nb,)
+  double energy = 0.0, angular_momentum = 0.0, observed_order = nan;
+  std::string verdict;
+};
+
+// The differences at common record j (answer record i, coarse records j): the coarse values are read where the
+// coarse run has them (a diverged coarse run has fewer records: its differences are then +inf).
+template <class Distance>
+Differences differences(const ErrorRecords& h, const ErrorRecords& h2, const ErrorRecords& h4, std::size_t i,
+                        std::size_t j, double size, std::int64_t steps, Distance distance) {
+  const double inf = std::numeric_limits<double>::infinity();
+  const double d1 = j < h2.n ? distance(h, i, h2, j) : inf;
+  const double d2 = j < h2.n && j < h4.n ? distance(h2, j, h4, j) : inf;
+  return {std::isnan(d1) ? inf : d1, std::isnan(d2) ? inf : d2, round_off_bound(size, steps)};
+}
+
+RecordEstimate estimate_common(const ErrorRecords& h, const ErrorRecords& h2, const ErrorRecords& h4, std::size_t i,
+                               std::size_t j, std::int64_t steps, int order, const std::string& coarse_problem) {
+  CommonRecord record(order, coarse_problem);
+  RecordEstimate out;
+  const std::int64_t nb = h.bodies;
+  for (std::int64_t b = 0; b < nb; ++b) {
+    const std::int64_t of = nb == 1 ? -1 : b;
+    const auto angle = [b](const ErrorRecords& x, std::size_t a, const ErrorRecords& y, std::size_t c) {
+      return angular_distance(attitude(y, c, b), attitude(x, a, b));
+    };
+    out.attitude.push_back(record.estimate(differences(h, h2, h4, i, j, 1.0, steps, angle), "attitude", of));
+    const auto vector_quantity = [&](const double* ErrorRecords::*rows, const char* name) {
+      const auto distance = [rows, b](const ErrorRecords& x, std::size_t a, const ErrorRecords& y, std::size_t c) {
+        return (vector3(x.*rows, x, a, b) - vector3(y.*rows, y, c, b)).norm();
+      };
+      const double size = vector3(h.*rows, h, i, b).norm();
+      return record.estimate(differences(h, h2, h4, i, j, size, steps, distance), name, of);
+    };
+    out.angular_velocity.push_back(vector_quantity(&ErrorRecords::w_B, "angular velocity"));
+    out.position.push_back(vector_quantity(&ErrorRecords::p_W, "position"));
+    out.velocity.push_back(vector_quantity(&ErrorRecords::v_W, "velocity"));
+  }
+  const auto scalar = [](const double* ErrorRecords::*column) {
+    return [column](const ErrorRecords& x, std::size_t a, const ErrorRecords& y, std::size_t c) {
+      return std::abs((x.*column)[a] - (y.*column)[c]);
+    };
+  };
+  const double energy_size = energy_size_of(h, i);
+  out.energy = record.estimate(differences(h, h2, h4, i, j, energy_size, steps, scalar(&ErrorRecords::energy)), "energy");
+  const auto momentum = [](const ErrorRecords& x, std::size_t a, const ErrorRecords& y, std::size_t c) {
+    return std::abs(x.momentum[a] - y.momentum[c]);
+  };
+  out.angular_momentum =
+      record.estimate(differences(h, h2, h4, i, j, h.momentum[i], steps, momentum), "angular momentum");
+  out.observed_order = record.observed_order();
+  out.verdict = record.verdict();
+  return out;
+}
+
+// "0.25 s" (3 significant digits).
+std::string seconds(double t) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g s", t);
+  return text;
+}
+
+// a·(1 − w) + b·w for each quantity, not checked: the verdict of the first of a and b that is not reliable, else
+// `how` (observed order NaN).
+RecordEstimate blend(const RecordEstimate& a, const RecordEstimate& b, double w, const std::string& how) {
+  RecordEstimate out = a;
+  const auto mix = [w](double x, double y) { return x * (1.0 - w) + y * w; };
+  for (std::size_t k = 0; k < a.attitude.size(); ++k) {
+    out.attitude[k] = mix(a.attitude[k], b.attitude[k]);
+    out.angular_velocity[k] = mix(a.angular_velocity[k], b.angular_velocity[k]);
+    out.position[k] = mix(a.position[k], b.position[k]);
+    out.velocity[k] = mix(a.velocity[k], b.velocity[k]);
+  }
+  out.energy = mix(a.energy, b.energy);
+  out.angular_momentum = mix(a.angular_momentum, b.angular_momentum);
+  out.observed_order = nan;
+  out.verdict = a.verdict != "reliable" ? a.verdict : (b.verdict != "reliable" ? b.verdict : how);
+  return out;
+}
+
+// a scaled by s (its verdict if not reliable, else `how`).
+RecordEstimate scaled(const RecordEstimate& a, double s, const std::string& how) {
+  RecordEstimate zero = a;
+  for (auto* v : {&zero.attitude, &zero.angular_velocity, &zero.position, &zero.velocity}) std::fill(v->begin(), v->end(), 0.0);
+  zero.energy = zero.angular_momentum = 0.0;
+  zero.verdict = "reliable";
+  return blend(zero, a, s, how);
+}
+
+void append(GlobalErrorEstimate& out, const RecordEstimate& r) {
+  out.attitude.insert(out.attitude.end(), r.attitude.begin(), r.attitude.end());
+  out.angular_velocity.insert(out.angular_velocity.end(), r.angular_velocity.begin(), r.angular_velocity.end());
+  out.position.insert(out.position.end(), r.position.begin(), r.position.end());
+  out.velocity.insert(out.velocity.end(), r.velocity.begin(), r.velocity.end());
+  out.energy.push_back(r.energy);
+  out.angular_momentum.push_back(r.angular_momentum);
+  out.observed_order.push_back(r.observed_order);
+  out.verdict.push_back(r.verdict);
+}
+
+// The step index of the answer's record i (records every k-th step, and the last).
+std::int64_t step_of(std::size_t i, const SimulationOptions& o) {
+  return std::min(static_cast<std::int64_t>(i) * o.record_every, o.steps);
+}
+
+}  // namespace
+
+ErrorRecords error_records(const Trajectory& r) {
+  ErrorRecords out;
+  out.n = r.size();
+  out.t = r.t.data(), out.q_WB = r.q_WB.data(), out.w_B = r.w_B.data(), out.p_W = r.p_W.data(), out.v_W = r.v_W.data();
+  out.energy = r.total_energy.data(), out.energy_scale = r.kinetic_energy.data();
+  out.momentum = r.angular_momentum_norm;
+  return out;
+}
+
+ErrorRecords error_records(const SceneSimulation& r) {
+  ErrorRecords out;
+  out.n = r.size();
+  out.bodies = r.body_count;
+  out.t = r.t.data(), out.q_WB = r.q_WB.data(), out.w_B = r.w_B.data(), out.p_W = r.p_W.data(), out.v_W = r.v_W.data();
+  out.energy = r.total_energy.data(), out.energy_scale = r.kinetic_energy.data();
+  for (std::size_t i = 0; i < out.n; ++i) {
+    out.momentum.push_back(Eigen::Map<const Eigen::Vector3d>(r.angular_momentum_W.data() + 3 * i).norm());
+  }
+  return out;
+}
+
+std::int64_t common_record_steps(std::int64_t record_every) { return std::lcm(record_every, std::int64_t{4}); }
+
+SimulationOptions coarse_options(const SimulationOptions& answer, int factor) {
+  const std::int64_t m = common_record_steps(answer.record_every);
+  SimulationOptions o = answer;
+  o.dt = answer.dt * factor;
+  o.steps = answer.steps / m * m / factor;
+  o.record_every = m / factor;
+  return o;
+}
+
+GlobalErrorEstimate estimate_global_error(const ErrorRecords& h, const ErrorRecords& h2, const ErrorRecords& h4,
+                                          const SimulationOptions& answer, int order, const std::string& opaque) {
+  if (order < 1) throw_invalid("order", "an integer >= 1", order);
+  GlobalErrorEstimate out;
+  out.order = order, out.bodies = h.bodies;
+  const std::int64_t m = common_record_steps(answer.record_every);
+  const auto stride = static_cast<std::size_t>(m / answer.record_every);  // answer records per common record
+  // the common records the answer has: j = 0 .. last (answer record j·stride)
+  const std::size_t last = h.n == 0 ? 0 : std::min((h.n - 1) / stride, static_cast<std::size_t>(answer.steps / m));
+  std::vector<RecordEstimate> common;
+  for (std::size_t j = 0; j <= last && h.n > 0; ++j) {
+    const std::size_t i = j * stride;
+    const std::string problem =
+        j >= h2.n ? "the 2h run diverged" : (j >= h4.n ? "the 4h run diverged" : std::string());
+    common.push_back(estimate_common(h, h2, h4, i, j, step_of(i, answer), order, problem));
+    if (!opaque.empty() && common.back().verdict == "reliable") {
+      common.back().verdict = "not verified: " + opaque +
+                              " may switch inside a step, which the runs at h, 2h and 4h can all miss alike";
+    }
+  }
+  for (std::size_t i = 0; i < h.n; ++i) {
+    const std::size_t j = i / stride;
+    if (i % stride == 0 && j <= last) {
+      append(out, common[j]);
+    } else if (j < last) {  // between common records j and j + 1
+      const double tj = h.t[j * stride], tk = h.t[(j + 1) * stride];
+      append(out, blend(common[j], common[j + 1], (h.t[i] - tj) / (tk - tj),
+                        "interpolated between the reliable records at t = " + seconds(tj) + " and " + seconds(tk)));
+    } else if (last > 0) {  // after the last common record: linear growth from t0
+      const double t0 = h.t[0], tc = h.t[last * stride];
+      append(out, scaled(common[last], (h.t[i] - t0) / (tc - t0),
+                         "extrapolated from the reliable record at t = " + seconds(tc)));
+    } else {
+      RecordEstimate none = common[0];
+      for (auto* v : {&none.attitude, &none.angular_velocity, &none.position, &none.velocity}) std::fill(v->begin(), v->end(), nan);
+      none.energy = none.angular_momentum = none.observed_order = nan;
+      none.verdict = "no estimate: fewer than " + std::to_string(m) +
+                     " steps (the 2h and 4h runs have a state only every lcm(record_every, 4) steps)";
+      append(out, none);
+    }
+  }
+  return out;
+}
+
+GlobalErrorEstimate round_off_estimate(const ErrorRecords& h, const SimulationOptions& answer) {
+  GlobalErrorEstimate out;
+  out.order = 0, out.bodies = h.bodies;
+  for (std::size_t i = 0; i < h.n; ++i) {
+    const std::int64_t steps = step_of(i, answer);
+    RecordEstimate r;
+    for (std::int64_t b = 0; b < h.bodies; ++b) {
+      r.attitude.push_back(round_off_bound(1.0, steps));
+      r.angular_velocity.push_back(round_off_bound(vector3(h.w_B, h, i, b).norm(), steps));
+      r.position.push_back(round_off_bound(vector3(h.p_W, h, i, b).norm(), steps));
+      r.velocity.push_back(round_off_bound(vector3(h.v_W, h, i, b).norm(), steps));
+    }
+    r.energy = round_off_bound(energy_size_of(h, i), steps);
+    r.angular_momentum = round_off_bound(h.momentum[i], steps);
+    r.verdict = "reliable";
+    append(out, r);
+  }
+  return out;
+}
+
+}  // namespace rigiddyn
