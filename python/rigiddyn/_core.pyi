@@ -1,12 +1,19 @@
 """
-rigiddyn's C++ core (rotations, frames, spatial algebra, inertia, dynamics).
+rigiddyn's C++ core (rotations, frames, spatial algebra, inertia, dynamics, orbits).
 """
 from __future__ import annotations
 import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['AppliedLoad', 'BatchResult', 'BatchSceneResult', 'BodyAcceleration', 'ComWrench', 'CompiledScene', 'CompoundPendulumSolution', 'ConstantThrustSolution', 'DensityIntegral', 'Drag', 'ElementField', 'FORCE_ELEMENTS', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'GlobalError', 'GravityGradient', 'Gyrostat', 'GyrostatState', 'InertiaCheck', 'InertiaReport', 'KineticEnergy', 'LagrangeTopSolution', 'MagneticDipole', 'MassFlow', 'MeshWeldWarning', 'Motion', 'MutualGravity', 'Particle', 'ParticleState', 'PivotedAcceleration', 'PivotedBody', 'PivotedBodyState', 'PivotedPlanarAcceleration', 'PivotedPlanarBody', 'PivotedPlanarBodyState', 'PivotedPlanarTorque', 'PivotedTorque', 'PlanarAcceleration', 'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointMassGravity', 'PointVelocity', 'PrincipalAxes', 'PythonForce', 'ReactionWheel', 'RigidBody', 'RigidBodyState', 'RotatingFrameFreeParticle', 'Scene', 'SceneCompatibilityWarning', 'SceneFrame', 'SceneResult', 'ScheduledLoads', 'Screw', 'SimulationResult', 'SpatialInertia', 'SpringDamper', 'Thrust', 'TorqueFreeSolution', 'Transform', 'UniformGravity', 'WeldedMesh', 'Wheel', 'align_vectors', 'angular_distance', 'angular_momentum', 'angular_velocity_from_quat_rate', 'apply_impulse', 'axis_angle_to_quat', 'box_shell', 'compose_kinematics', 'composite', 'davenport_to_quat', 'default_thread_count', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'from_point_masses', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation', 'nearest_valid_inertia', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix', 'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'simulate', 'simulate_batch', 'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'twist_to_screw', 'vee', 'weld_vertices']
+__all__: list[str] = ['AppliedLoad', 'BatchResult', 'BatchSceneResult', 'BodyAcceleration', 'ComWrench', 'CompiledScene', 'CompoundPendulumSolution', 'ConstantThrustSolution', 'DensityIntegral', 'Drag', 'ElementField', 'FORCE_ELEMENTS', 'FixedJoint', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'FreeJoint', 'GlobalError', 'GravityGradient', 'Gyrostat', 'GyrostatState', 'InertiaCheck', 'InertiaReport', 'KineticEnergy', 'LagrangeTopSolution', 'MagneticDipole', 'MassFlow', 'MeshWeldWarning', 'Motion', 'MutualGravity', 'Particle', 'ParticleState', 'PivotedAcceleration', 'PivotedBody', 'PivotedBodyState', 'PivotedPlanarAcceleration', 'PivotedPlanarBody', 'PivotedPlanarBodyState', 'PivotedPlanarTorque', 'PivotedTorque', 'PlanarAcceleration', 'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointMassGravity', 'PointVelocity', 'PrincipalAxes', 'PrismaticJoint', 'PythonForce', 'ReactionWheel', 'RevoluteJoint', 'RigidBody', 'RigidBodyState', 'RotatingFrameFreeParticle', 'Scene', 'SceneCompatibilityWarning', 'SceneFrame', 'SceneResult', 'ScheduledLoads', 'Screw', 'SimulationResult', 'SpatialInertia', 'SphericalJoint', 'SpringDamper', 'Thrust', 'TorqueFreeSolution', 'Transform', 'Tree', 'UniformGravity', 'WeldedMesh', 'Wheel', 'aba', 'align_vectors', 'angular_distance', 'angular_momentum', 'angular_velocity_from_quat_rate', 'apply_impulse', 'attitude_from_orbit_frame', 'attitude_to_orbit_frame', 'axis_angle_to_quat', 'bias_forces', 'box_shell', 'compose_kinematics', 'composite', 'crba', 'davenport_to_quat', 'default_thread_count', 'eccentric_to_mean_anomaly', 'eccentric_to_true_anomaly', 'elements_to_state', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'forward_kinematics', 'from_point_masses', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kepler_propagate', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mean_to_eccentric_anomaly', 'mean_to_true_anomaly', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation', 'nearest_valid_inertia', 'orbit_frame_angular_velocity', 'orbit_frame_rotation', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix', 'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh', 'rnea', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'semi_latus_rectum', 'simulate', 'simulate_batch', 'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'state_to_elements', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'true_to_eccentric_anomaly', 'true_to_mean_anomaly', 'twist_to_screw', 'vee', 'weld_vertices']
+class _Quantity(typing.Protocol):
+    """A pint Quantity of any registry (the core converts it to SI by its magnitude and units)."""
+    @property
+    def magnitude(self) -> typing.Any: ...
+    @property
+    def units(self) -> typing.Any: ...
+_MethodName: typing.TypeAlias = typing.Literal['explicit_euler', 'semi_implicit_euler', 'semi_implicit_euler_implicit_gyroscopic', 'rk4', 'rkmk4', 'implicit_midpoint', 'splitting_dlm', 'splitting_dlm_yoshida4', 'exact_flow_kick', 'exact']
 class FrameKinematics:
     """
     Frame F relative to frame P at one instant: orientation, angular velocity and acceleration, and the
@@ -58,7 +65,7 @@ class FrameKinematics:
         """
     def __getstate__(self) -> tuple:
         ...
-    def __init__(self, R_PF: typing.Any = None, w_PF_P: typing.Any = None, alpha_PF_P: typing.Any = None, p_PF_P: typing.Any = None, v_PF_P: typing.Any = None, a_PF_P: typing.Any = None) -> None:
+    def __init__(self, R_PF: numpy.typing.ArrayLike | None = None, w_PF_P: numpy.typing.ArrayLike | None = None, alpha_PF_P: numpy.typing.ArrayLike | None = None, p_PF_P: numpy.typing.ArrayLike | None = None, v_PF_P: numpy.typing.ArrayLike | None = None, a_PF_P: numpy.typing.ArrayLike | None = None) -> None:
         """
         Arguments as the attributes (None: identity / zero); see the class. ValueError on a non-rotation R_PF or
         NaN/Inf.
@@ -132,7 +139,7 @@ class PointVelocity:
         """
     def __getstate__(self) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
         ...
-    def __init__(self, origin: typing.Any, rotational: typing.Any, relative: typing.Any) -> None:
+    def __init__(self, origin: numpy.typing.ArrayLike, rotational: numpy.typing.ArrayLike, relative: numpy.typing.ArrayLike) -> None:
         """
         From its terms (3,) [m/s], all in one frame; see the class.
         """
@@ -201,7 +208,7 @@ class PointAcceleration:
         """
     def __getstate__(self) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
         ...
-    def __init__(self, origin: typing.Any, tangential: typing.Any, centripetal: typing.Any, relative: typing.Any, coriolis: typing.Any) -> None:
+    def __init__(self, origin: numpy.typing.ArrayLike, tangential: numpy.typing.ArrayLike, centripetal: numpy.typing.ArrayLike, relative: numpy.typing.ArrayLike, coriolis: numpy.typing.ArrayLike) -> None:
         """
         From its terms (3,) [m/s^2], all in one frame; see the class.
         """
@@ -275,7 +282,7 @@ class FrameMotion:
     """
     __hash__: typing.ClassVar[None] = None
     @staticmethod
-    def constant_rotation(axis_P: typing.Any, rate: typing.Any, R_PF0: typing.Any = None, p_PF_P: typing.Any = None) -> FrameMotion:
+    def constant_rotation(axis_P: numpy.typing.ArrayLike, rate: float, R_PF0: numpy.typing.ArrayLike | None = None, p_PF_P: numpy.typing.ArrayLike | None = None) -> FrameMotion:
         """
         Simple angular velocity (Craig's "Rigid Body Dynamics" slides): F turns at `rate` [rad/s] about
         axis_P (3,) (expressed in P, any non-zero length) through F's origin, which stays at p_PF_P [m] in P
@@ -304,7 +311,7 @@ class FrameMotion:
         (True, array([0., 0., 1.]))
         """
     @staticmethod
-    def fixed(R_PF: typing.Any = None, p_PF_P: typing.Any = None) -> FrameMotion:
+    def fixed(R_PF: numpy.typing.ArrayLike | None = None, p_PF_P: numpy.typing.ArrayLike | None = None) -> FrameMotion:
         """
         F fixed in P: orientation R_PF (3,3) (None: identity), origin at p_PF_P (3,) [m] in P (None: 0).
         
@@ -336,7 +343,7 @@ class FrameMotion:
         """
     def __getstate__(self) -> tuple:
         ...
-    def __init__(self, kinematics_at: typing.Any) -> None:
+    def __init__(self, kinematics_at: collections.abc.Callable[..., typing.Any]) -> None:
         """
         General motion: kinematics_at(t) returns a FrameKinematics or a 6-tuple
         (R_PF (3,3), w_PF_P, alpha_PF_P, p_PF_P, v_PF_P, a_PF_P) (each (3,), expressed in P); see the class.
@@ -345,7 +352,7 @@ class FrameMotion:
         ...
     def __setstate__(self, arg0: tuple) -> None:
         ...
-    def at(self, t: typing.Any) -> FrameKinematics:
+    def at(self, t: float) -> FrameKinematics:
         """
         FrameKinematics of F relative to P at time t [s], expressed in P (not checked: the tree checks the values
         it uses).
@@ -435,7 +442,7 @@ class FrameTree:
         ...
     def __setstate__(self, arg0: tuple) -> None:
         ...
-    def add_frame(self, name: typing.Any, parent: typing.Any, motion: typing.Any) -> None:
+    def add_frame(self, name: str, parent: str, motion: FrameMotion) -> None:
         """
         Adds frame `name` under `parent` (which must exist), placed by `motion`.
         
@@ -460,7 +467,7 @@ class FrameTree:
         >>> tree.frame_names(), tree.parent("table")
         (['world', 'table'], 'world')
         """
-    def angular_acceleration(self, frame: typing.Any, relative_to: typing.Any, expressed_in: typing.Any, t: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+    def angular_acceleration(self, frame: str, relative_to: str, expressed_in: str, t: float) -> numpy.typing.NDArray[numpy.float64]:
         """
         alpha_AF_E (3,) [rad/s^2]: d/dt in A of w_AF, expressed in E (includes the w x w terms; no
         addition theorem for angular accelerations, Craig's "Rigid Body Dynamics" slides).
@@ -496,7 +503,7 @@ class FrameTree:
         >>> tree.angular_acceleration("arm", "world", "world", 0.0)
         array([0., 0., 0.])
         """
-    def angular_velocity(self, frame: typing.Any, relative_to: typing.Any, expressed_in: typing.Any, t: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+    def angular_velocity(self, frame: str, relative_to: str, expressed_in: str, t: float) -> numpy.typing.NDArray[numpy.float64]:
         """
         w_AF_E (3,) [rad/s]: angular velocity of F relative to A (addition theorem), expressed in E.
         
@@ -535,7 +542,7 @@ class FrameTree:
         """
         All names: 'world' first, then in the order added.
         """
-    def has_frame(self, name: typing.Any) -> bool:
+    def has_frame(self, name: str) -> bool:
         """
         True if a frame of this name is in the tree.
         
@@ -552,7 +559,7 @@ class FrameTree:
         >>> rd.FrameTree().has_frame("world"), rd.FrameTree().has_frame("arm")
         (True, False)
         """
-    def kinematics(self, frame: typing.Any, relative_to: typing.Any, t: typing.Any) -> FrameKinematics:
+    def kinematics(self, frame: str, relative_to: str, t: float) -> FrameKinematics:
         """
         FrameKinematics of `frame` F relative to `relative_to` A at t, expressed in A.
         
@@ -585,7 +592,7 @@ class FrameTree:
         >>> tree.kinematics("arm", "world", 0.0).v_PF_P
         array([0., 2., 0.])
         """
-    def motion(self, name: typing.Any) -> FrameMotion:
+    def motion(self, name: str) -> FrameMotion:
         """
         The FrameMotion placing frame `name` in its parent ('world': fixed at the identity).
         
@@ -603,7 +610,7 @@ class FrameTree:
         >>> rd.FrameTree().motion("world").at(0.0).p_PF_P
         array([0., 0., 0.])
         """
-    def parent(self, name: typing.Any) -> str:
+    def parent(self, name: str) -> str:
         """
         The parent's name ('' for 'world').
         
@@ -621,7 +628,7 @@ class FrameTree:
         >>> rd.FrameTree().parent("world")
         ''
         """
-    def point_acceleration(self, frame: typing.Any, p_FQ_F: typing.Any, v_FQ_F: typing.Any, a_FQ_F: typing.Any, relative_to: typing.Any, expressed_in: typing.Any, t: typing.Any) -> PointAcceleration:
+    def point_acceleration(self, frame: str, p_FQ_F: numpy.typing.ArrayLike, v_FQ_F: numpy.typing.ArrayLike, a_FQ_F: numpy.typing.ArrayLike, relative_to: str, expressed_in: str, t: float) -> PointAcceleration:
         """
         PointAcceleration of Q seen from A (origin, tangential, centripetal, relative, coriolis, total),
         terms expressed in E [m/s^2]; a_FQ_F (3,): Q's acceleration seen from F, expressed in F.
@@ -663,7 +670,7 @@ class FrameTree:
         >>> tree.point_acceleration("arm", [0, 0, 0], [0, 0, 0], [0, 0, 0], "world", "world", 0.0).origin
         array([-2.,  0.,  0.])
         """
-    def point_position(self, frame: typing.Any, p_FQ_F: typing.Any, relative_to: typing.Any, expressed_in: typing.Any, t: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+    def point_position(self, frame: str, p_FQ_F: numpy.typing.ArrayLike, relative_to: str, expressed_in: str, t: float) -> numpy.typing.NDArray[numpy.float64]:
         """
         p_AQ_E (3,) [m]: position of Q relative to A's origin, expressed in E; p_FQ_F (3,): Q relative
         to F's origin, expressed in F.
@@ -701,7 +708,7 @@ class FrameTree:
         >>> tree.point_position("arm", [1.0, 0, 0], "world", "world", np.pi / 2).round(12)
         array([0., 3., 0.])
         """
-    def point_velocity(self, frame: typing.Any, p_FQ_F: typing.Any, v_FQ_F: typing.Any, relative_to: typing.Any, expressed_in: typing.Any, t: typing.Any) -> PointVelocity:
+    def point_velocity(self, frame: str, p_FQ_F: numpy.typing.ArrayLike, v_FQ_F: numpy.typing.ArrayLike, relative_to: str, expressed_in: str, t: float) -> PointVelocity:
         """
         PointVelocity of Q seen from A, terms expressed in E. Q at p_FQ_F [m] moving with v_FQ_F [m/s] as
         seen from F (both (3,), expressed in F; zeros for a point fixed in F).
@@ -741,7 +748,7 @@ class FrameTree:
         >>> tree.point_velocity("arm", [0, 0, 0], [0, 0, 0], "world", "world", 0.0).total
         array([0., 2., 0.])
         """
-    def rotation(self, frame: typing.Any, relative_to: typing.Any, t: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+    def rotation(self, frame: str, relative_to: str, t: float) -> numpy.typing.NDArray[numpy.float64]:
         """
         R_AF (3,3): maps `frame` F coordinates to `relative_to` A coordinates at t.
         
@@ -774,7 +781,7 @@ class FrameTree:
         >>> bool(np.allclose(tree.rotation("arm", "world", np.pi / 2), rd.rot_z(np.pi / 2)))
         True
         """
-    def set_parent(self, name: typing.Any, parent: typing.Any, motion: typing.Any) -> None:
+    def set_parent(self, name: str, parent: str, motion: FrameMotion) -> None:
         """
         Moves frame `name` and its subtree under `parent`, placed by `motion`. ValueError if that would
         make a cycle (parent is `name` or one of its descendants) or `name` is 'world'.
@@ -795,7 +802,7 @@ class FrameTree:
         >>> tree.parent("b")
         'a'
         """
-    def transport_derivative(self, u_E: typing.Any, du_B_E: typing.Any, from_frame: typing.Any, to_frame: typing.Any, expressed_in: typing.Any, t: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+    def transport_derivative(self, u_E: numpy.typing.ArrayLike, du_B_E: numpy.typing.ArrayLike, from_frame: str, to_frame: str, expressed_in: str, t: float) -> numpy.typing.NDArray[numpy.float64]:
         """
         Transport theorem (Craig's "Rigid Body Dynamics" slides): the derivative of u seen from
         A = `to_frame`, from its derivative du_B_E seen from B = `from_frame`: du_B_E + w_AB x u_E. u_E,
@@ -872,7 +879,7 @@ class Force:
     """
     __hash__: typing.ClassVar[None] = None
     @staticmethod
-    def from_vector(vector: typing.Any) -> Force:
+    def from_vector(vector: numpy.typing.ArrayLike) -> Force:
         """
         Force from a (6,) array [n; f], moment first ([N m], [N]); ValueError on another shape or NaN/Inf.
         
@@ -898,7 +905,7 @@ class Force:
         """
     def __getstate__(self) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
         ...
-    def __init__(self, angular: typing.Any = None, linear: typing.Any = None) -> None:
+    def __init__(self, angular: numpy.typing.ArrayLike | None = None, linear: numpy.typing.ArrayLike | None = None) -> None:
         """
         Force from n (3,) [N m] and f (3,) [N] in one frame (None: zero); see the class.
         """
@@ -914,7 +921,7 @@ class Force:
         ...
     def __sub__(self, arg0: typing.Any) -> typing.Any:
         ...
-    def dot(self, motion: typing.Any) -> float:
+    def dot(self, motion: Motion) -> float:
         """
         Power w . n + v . f [W] of this force on the motion (same frame and reference point).
         
@@ -933,7 +940,7 @@ class Force:
         >>> rd.Force([0.0, 0.0, 2.0], [3.0, 0.0, 0.0]).dot(rd.Motion([0.0, 0.0, 1.0], [1.0, 0.0, 0.0]))
         5.0
         """
-    def is_approx(self, other: typing.Any, prec: typing.Any = 1e-12) -> bool:
+    def is_approx(self, other: Force, prec: float = 1e-12) -> bool:
         """
         True when the 6-vectors agree to `prec` relative to the smaller norm (Eigen's isApprox: |a - b| <=
         prec min(|a|, |b|), so only an exactly zero Force is close to zero). == compares exactly.
@@ -1016,7 +1023,7 @@ class Motion:
     """
     __hash__: typing.ClassVar[None] = None
     @staticmethod
-    def from_vector(vector: typing.Any) -> Motion:
+    def from_vector(vector: numpy.typing.ArrayLike) -> Motion:
         """
         Motion from a (6,) array [w; v], angular first ([rad/s], [m/s]); ValueError on another shape or NaN/Inf.
         
@@ -1042,7 +1049,7 @@ class Motion:
         """
     def __getstate__(self) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
         ...
-    def __init__(self, angular: typing.Any = None, linear: typing.Any = None) -> None:
+    def __init__(self, angular: numpy.typing.ArrayLike | None = None, linear: numpy.typing.ArrayLike | None = None) -> None:
         """
         Motion from w (3,) [rad/s] and v (3,) [m/s] in one frame (None: zero); see the class.
         """
@@ -1058,7 +1065,7 @@ class Motion:
         ...
     def __sub__(self, arg0: typing.Any) -> typing.Any:
         ...
-    def cross(self, other: typing.Any) -> Motion:
+    def cross(self, other: Motion) -> Motion:
         """
         Motion cross product (crm): self x other = [w1 x w2; w1 x v2 + v1 x w2], in the common frame
         ([rad/s^2], [m/s^2] for two twists).
@@ -1077,7 +1084,7 @@ class Motion:
         >>> rd.Motion([0.0, 0.0, 1.0]).cross(rd.Motion(linear=[1.0, 0.0, 0.0])).linear
         array([0., 1., 0.])
         """
-    def cross_force(self, force: typing.Any) -> Force:
+    def cross_force(self, force: Force) -> Force:
         """
         Force cross product (crf): self x* force = [w x n + v x f; w x f] ([N m/s], [N/s]), in the common frame.
         
@@ -1095,7 +1102,7 @@ class Motion:
         >>> rd.Motion([0.0, 0.0, 1.0]).cross_force(rd.Force(linear=[1.0, 0.0, 0.0])).linear
         array([0., 1., 0.])
         """
-    def dot(self, force: typing.Any) -> float:
+    def dot(self, force: Force) -> float:
         """
         Power w . n + v . f [W] of the force on this motion (same frame and reference point).
         
@@ -1114,7 +1121,7 @@ class Motion:
         >>> rd.Motion([0.0, 0.0, 1.0], [1.0, 0.0, 0.0]).dot(rd.Force([0.0, 0.0, 2.0], [3.0, 0.0, 0.0]))
         5.0
         """
-    def is_approx(self, other: typing.Any, prec: typing.Any = 1e-12) -> bool:
+    def is_approx(self, other: Motion, prec: float = 1e-12) -> bool:
         """
         True when the 6-vectors agree to `prec` relative to the smaller norm (Eigen's isApprox: |a - b| <=
         prec min(|a|, |b|), so only an exactly zero Motion is close to zero). == compares exactly.
@@ -1193,7 +1200,7 @@ class Transform:
     """
     __hash__: typing.ClassVar[None] = None
     @staticmethod
-    def from_quat(q_AB: typing.Any, translation: typing.Any = None, scalar_first: typing.Any = False) -> Transform:
+    def from_quat(q_AB: numpy.typing.ArrayLike, translation: numpy.typing.ArrayLike | None = None, scalar_first: bool = False) -> Transform:
         """
         X_AB from a unit quaternion and a translation.
         
@@ -1228,7 +1235,7 @@ class Transform:
         """
     def __getstate__(self) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
         ...
-    def __init__(self, rotation: typing.Any = None, translation: typing.Any = None) -> None:
+    def __init__(self, rotation: numpy.typing.ArrayLike | None = None, translation: numpy.typing.ArrayLike | None = None) -> None:
         """
         X_AB from rotation R_AB (3,3), orthonormal with det +1 (default identity), and translation
         p_AB (3,) [m] (default zero); see the class. ValueError on a non-rotation or non-finite input.
@@ -1241,7 +1248,7 @@ class Transform:
         ...
     def __setstate__(self, arg0: tuple) -> None:
         ...
-    def act(self, spatial_vector: typing.Any) -> typing.Any:
+    def act(self, spatial_vector: Motion | Force) -> typing.Any:
         """
         Express a spatial vector given in B in A (Featherstone's X for a Motion, X* for a Force).
         
@@ -1268,7 +1275,7 @@ class Transform:
         >>> rd.Transform(translation=[1.0, 0.0, 0.0]).act(rd.Force(linear=[0.0, 1.0, 0.0])).angular
         array([0., 0., 1.])
         """
-    def act_inv(self, spatial_vector: typing.Any) -> typing.Any:
+    def act_inv(self, spatial_vector: Motion | Force) -> typing.Any:
         """
         Express a spatial vector given in A in B, the inverse of act.
         
@@ -1296,7 +1303,7 @@ class Transform:
         >>> X.act_inv(X.act(V)).is_approx(V)
         True
         """
-    def act_inv_point(self, p_A: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+    def act_inv_point(self, p_A: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
         """
         Map points from A to B: p_B = R_AB^T (p_A - p_AB), the inverse of act_point.
         
@@ -1317,7 +1324,7 @@ class Transform:
         array([[1., 2., 3.],
                [4., 5., 6.]])
         """
-    def act_point(self, p_B: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+    def act_point(self, p_B: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
         """
         Map points from B to A: p_A = R_AB p_B + p_AB.
         
@@ -1353,7 +1360,7 @@ class Transform:
         """
         Featherstone's X (6,6), angular first: [[R, 0], [hat(p) R, R]].
         """
-    def quat(self, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+    def quat(self, scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
         """
         The rotation R_AB as a unit quaternion q_AB.
         
@@ -1420,7 +1427,7 @@ class Screw:
         """
     def __getstate__(self) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64], float, float]:
         ...
-    def __init__(self, direction: typing.Any, point: typing.Any, pitch: typing.Any, magnitude: typing.Any) -> None:
+    def __init__(self, direction: numpy.typing.ArrayLike, point: numpy.typing.ArrayLike, pitch: float, magnitude: float) -> None:
         """
         Screw from its parts (checked by screw_to_twist): direction (3,) unit, point (3,) [m], pitch [m/rad]
         (inf: pure translation), magnitude [rad/s] (or [m/s]).
@@ -1496,11 +1503,7 @@ class InertiaCheck:
         ...
     def __index__(self) -> int:
         ...
-    @typing.overload
     def __init__(self, value: typing.SupportsInt | typing.SupportsIndex) -> None:
-        ...
-    @typing.overload
-    def __init__(self, value: typing.Any) -> None:
         ...
     def __int__(self) -> int:
         ...
@@ -1559,7 +1562,7 @@ class InertiaReport:
         One line with the principal moments and triangle margins [kg m^2], condition number, tolerance
         [kg m^2] and verdict.
         """
-    def valid(self, check: typing.Any = InertiaCheck.physical) -> bool:
+    def valid(self, check: InertiaCheck = InertiaCheck.physical) -> bool:
         """
         Whether every check required by `check` passes.
         
@@ -1677,7 +1680,7 @@ class PrincipalAxes:
         """
     def __getstate__(self) -> tuple:
         ...
-    def __init__(self, moments: typing.Any, axes: typing.Any) -> None:
+    def __init__(self, moments: numpy.typing.ArrayLike, axes: numpy.typing.ArrayLike) -> None:
         """
         From moments (3,) [kg m^2] and axes (3,3) (or (n,3), (n,3,3)); copied, read-only; see the class.
         """
@@ -1741,7 +1744,7 @@ class SpatialInertia:
     """
     __hash__: typing.ClassVar[None] = None
     @staticmethod
-    def from_inertia_about_origin(mass: typing.Any, com: typing.Any, inertia_about_origin: typing.Any, check: typing.Any = InertiaCheck.physical) -> SpatialInertia:
+    def from_inertia_about_origin(mass: float, com: numpy.typing.ArrayLike, inertia_about_origin: numpy.typing.ArrayLike, check: InertiaCheck = InertiaCheck.physical) -> SpatialInertia:
         """
         From the inertia about the frame's origin (parallel-axis theorem, Craig).
         
@@ -1767,7 +1770,7 @@ class SpatialInertia:
         array([1., 1., 0.])
         """
     @staticmethod
-    def from_inertia_about_point(mass: typing.Any, com: typing.Any, inertia_about_point: typing.Any, point: typing.Any, check: typing.Any = InertiaCheck.physical) -> SpatialInertia:
+    def from_inertia_about_point(mass: float, com: numpy.typing.ArrayLike, inertia_about_point: numpy.typing.ArrayLike, point: numpy.typing.ArrayLike, check: InertiaCheck = InertiaCheck.physical) -> SpatialInertia:
         """
         From the inertia about a point (parallel-axis theorem, Craig).
         
@@ -1800,7 +1803,7 @@ class SpatialInertia:
         array([1., 1., 0.])
         """
     @staticmethod
-    def from_matrix(matrix: typing.Any, check: typing.Any = InertiaCheck.physical) -> SpatialInertia:
+    def from_matrix(matrix: numpy.typing.ArrayLike, check: InertiaCheck = InertiaCheck.physical) -> SpatialInertia:
         """
         From the (6, 6) spatial inertia about the origin.
         
@@ -1824,7 +1827,7 @@ class SpatialInertia:
         True
         """
     @staticmethod
-    def point_mass(mass: typing.Any, position: typing.Any) -> SpatialInertia:
+    def point_mass(mass: float, position: numpy.typing.ArrayLike) -> SpatialInertia:
         """
         A point mass (zero inertia about its centre of mass).
         
@@ -1854,7 +1857,7 @@ class SpatialInertia:
         """
     def __getstate__(self) -> tuple[float, numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
         ...
-    def __init__(self, mass: typing.Any, com: typing.Any, inertia_com: typing.Any, check: typing.Any = InertiaCheck.physical) -> None:
+    def __init__(self, mass: float, com: numpy.typing.ArrayLike, inertia_com: numpy.typing.ArrayLike, check: InertiaCheck = InertiaCheck.physical) -> None:
         """
         From mass [kg] > 0, com (3,) [m] and inertia_com (3,3) [kg m^2] about the centre of mass, checked
         as `check` requires (InertiaCheck.physical by default); see the class.
@@ -1867,7 +1870,7 @@ class SpatialInertia:
         """
         This body with the part removed (a hole); ValueError if the rest is invalid.
         """
-    def admits_symmetry_plane(self, normal: typing.Any, tolerance: typing.Any = 1e-09) -> bool:
+    def admits_symmetry_plane(self, normal: numpy.typing.ArrayLike, tolerance: float = 1e-09) -> bool:
         """
         Whether the plane through the centre of mass with this normal (3,) can be a plane of symmetry
         (Craig: then the products of inertia with the normal vanish). Necessary, not sufficient.
@@ -1889,7 +1892,7 @@ class SpatialInertia:
         >>> box.admits_symmetry_plane([1.0, 0, 0]), box.admits_symmetry_plane([1.0, 1.0, 0])
         (True, False)
         """
-    def angular_momentum_about_com(self, angular_velocity: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+    def angular_momentum_about_com(self, angular_velocity: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
         """
         Angular momentum about the centre of mass, H_C = I_C w.
         
@@ -1908,7 +1911,7 @@ class SpatialInertia:
         >>> rd.solid_sphere(1.0, mass=5.0).angular_momentum_about_com([0, 0, 2.0])
         array([0., 0., 4.])
         """
-    def angular_momentum_about_point(self, angular_velocity: typing.Any, com_velocity: typing.Any, point: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+    def angular_momentum_about_point(self, angular_velocity: numpy.typing.ArrayLike, com_velocity: numpy.typing.ArrayLike, point: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
         """
         Angular momentum about a point, H_P = r_PC x (m v_C) + H_C (Craig).
         
@@ -1935,7 +1938,7 @@ class SpatialInertia:
         """
         Rotational inertia (3,3) [kg m^2] about the frame's origin, in that frame: I_C + m (|c|^2 1 - c c^T).
         """
-    def inertia_about_point(self, point: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+    def inertia_about_point(self, point: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
         """
         Rotational inertia about a point (parallel-axis theorem, Craig).
         
@@ -1958,7 +1961,7 @@ class SpatialInertia:
         >>> rd.solid_sphere(1.0, mass=5.0).inertia_about_point([1.0, 0, 0]).diagonal()
         array([2., 7., 7.])
         """
-    def is_approx(self, other: typing.Any, prec: typing.Any = 1e-12) -> bool:
+    def is_approx(self, other: SpatialInertia, prec: float = 1e-12) -> bool:
         """
         True when mass, centre of mass and inertia_com agree to `prec` relative to their size (the centre of
         mass relative to the radius of gyration plus |com|). == compares exactly.
@@ -1981,7 +1984,7 @@ class SpatialInertia:
         >>> box.is_approx(other), box == other
         (True, False)
         """
-    def kinetic_energy(self, twist: typing.Any) -> float:
+    def kinetic_energy(self, twist: Motion) -> float:
         """
         Kinetic energy T = 1/2 V . I V of a twist.
         
@@ -2007,7 +2010,7 @@ class SpatialInertia:
         Spatial inertia (6,6) about the frame's origin, angular first: [[I_O, m hat(c)], [m hat(c)^T, m 1]]
         (I_O [kg m^2], m [kg]).
         """
-    def momentum(self, twist: typing.Any) -> Force:
+    def momentum(self, twist: Motion) -> Force:
         """
         Spatial momentum h = I V of a twist, about the frame's origin.
         
@@ -2032,7 +2035,7 @@ class SpatialInertia:
         PrincipalAxes of I_C (about the centre of mass, in the frame of expression): moments ascending
         [kg m^2], axes as columns, right-handed.
         """
-    def remove(self, part: typing.Any, check: typing.Any = InertiaCheck.physical) -> SpatialInertia:
+    def remove(self, part: SpatialInertia, check: InertiaCheck = InertiaCheck.physical) -> SpatialInertia:
         """
         This body with `part` removed (a hole), checked as the constructor.
         
@@ -2057,7 +2060,7 @@ class SpatialInertia:
         """
         The validity report (InertiaReport) of the mass [kg] and I_C [kg m^2].
         """
-    def rotated(self, R_AB: typing.Any) -> SpatialInertia:
+    def rotated(self, R_AB: numpy.typing.ArrayLike) -> SpatialInertia:
         """
         The same body re-expressed in frame A: c_A = R_AB c_B, I_C,A = R_AB I_C,B R_AB^T.
         
@@ -2078,7 +2081,7 @@ class SpatialInertia:
         >>> box.rotated(rd.rot_z(np.pi / 2)).inertia_com.diagonal().round(12)
         array([10., 13.,  5.])
         """
-    def transformed(self, X_AB: typing.Any) -> SpatialInertia:
+    def transformed(self, X_AB: Transform) -> SpatialInertia:
         """
         The same body re-expressed in frame A: c_A = R_AB c_B + p_AB, I_C,A = R_AB I_C,B R_AB^T.
         
@@ -2215,7 +2218,7 @@ class DensityIntegral:
         """
     def __getstate__(self) -> tuple[SpatialInertia, float, float, float, int]:
         ...
-    def __init__(self, inertia: typing.Any, mass_error: typing.Any, com_error: typing.Any, inertia_error: typing.Any, evaluations: typing.Any) -> None:
+    def __init__(self, inertia: SpatialInertia, mass_error: float, com_error: float, inertia_error: float, evaluations: int) -> None:
         """
         From its fields (as the attributes).
         """
@@ -2283,7 +2286,7 @@ class Particle:
         ...
     def __getstate__(self) -> tuple[float]:
         ...
-    def __init__(self, mass: typing.Any) -> None:
+    def __init__(self, mass: float | _Quantity) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -2331,7 +2334,7 @@ class PlanarBody:
         ...
     def __getstate__(self) -> tuple[float, float]:
         ...
-    def __init__(self, mass: typing.Any, inertia_zz: typing.Any) -> None:
+    def __init__(self, mass: float | _Quantity, inertia_zz: float | _Quantity) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -2407,7 +2410,7 @@ class RigidBody:
         ...
     def __getstate__(self) -> tuple[float, numpy.typing.NDArray[numpy.float64]]:
         ...
-    def __init__(self, mass: typing.Any, inertia_com: typing.Any = None, check: typing.Any = None) -> None:
+    def __init__(self, mass: float | _Quantity | SpatialInertia, inertia_com: numpy.typing.ArrayLike | _Quantity | None = None, check: InertiaCheck | None = None) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -2464,7 +2467,7 @@ class ParticleState:
         ...
     def __getstate__(self) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
         ...
-    def __init__(self, p_W: typing.Any = None, v_W: typing.Any = None) -> None:
+    def __init__(self, p_W: numpy.typing.ArrayLike | _Quantity | None = None, v_W: numpy.typing.ArrayLike | _Quantity | None = None) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -2524,7 +2527,7 @@ class PlanarBodyState:
         ...
     def __getstate__(self) -> tuple[numpy.typing.NDArray[numpy.float64], float, numpy.typing.NDArray[numpy.float64], float]:
         ...
-    def __init__(self, p_W: typing.Any = None, theta: typing.Any = 0.0, v_W: typing.Any = None, omega: typing.Any = 0.0) -> None:
+    def __init__(self, p_W: numpy.typing.ArrayLike | _Quantity | None = None, theta: float | _Quantity = 0.0, v_W: numpy.typing.ArrayLike | _Quantity | None = None, omega: float | _Quantity = 0.0) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -2606,13 +2609,13 @@ class RigidBodyState:
         ...
     def __getstate__(self) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
         ...
-    def __init__(self, p_W: typing.Any = None, q_WB: typing.Any = None, v_W: typing.Any = None, w_B: typing.Any = None, scalar_first: typing.Any = False) -> None:
+    def __init__(self, p_W: numpy.typing.ArrayLike | _Quantity | None = None, q_WB: numpy.typing.ArrayLike | None = None, v_W: numpy.typing.ArrayLike | _Quantity | None = None, w_B: numpy.typing.ArrayLike | _Quantity | None = None, scalar_first: bool = False) -> None:
         ...
     def __repr__(self) -> str:
         ...
     def __setstate__(self, arg0: tuple) -> None:
         ...
-    def quaternion(self, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+    def quaternion(self, scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
         """
         The attitude q_WB (B to W) in the order asked.
         
@@ -2697,7 +2700,7 @@ class KineticEnergy:
         ...
     def __getstate__(self) -> tuple[float, float]:
         ...
-    def __init__(self, translational: typing.Any = 0.0, rotational: typing.Any = 0.0) -> None:
+    def __init__(self, translational: float | _Quantity = 0.0, rotational: float | _Quantity = 0.0) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -2756,7 +2759,7 @@ class ComWrench:
         ...
     def __getstate__(self) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
         ...
-    def __init__(self, f_W: typing.Any = None, tau_B: typing.Any = None) -> None:
+    def __init__(self, f_W: numpy.typing.ArrayLike | _Quantity | None = None, tau_B: numpy.typing.ArrayLike | _Quantity | None = None) -> None:
         ...
     def __iter__(self) -> collections.abc.Iterator:
         ...
@@ -2812,7 +2815,7 @@ class PlanarWrench:
         ...
     def __getstate__(self) -> tuple[numpy.typing.NDArray[numpy.float64], float]:
         ...
-    def __init__(self, f_W: typing.Any = None, tau: typing.Any = 0.0) -> None:
+    def __init__(self, f_W: numpy.typing.ArrayLike | _Quantity | None = None, tau: float | _Quantity = 0.0) -> None:
         ...
     def __iter__(self) -> collections.abc.Iterator:
         ...
@@ -2871,7 +2874,7 @@ class BodyAcceleration:
         ...
     def __getstate__(self) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
         ...
-    def __init__(self, a_W: typing.Any = None, alpha_B: typing.Any = None) -> None:
+    def __init__(self, a_W: numpy.typing.ArrayLike | _Quantity | None = None, alpha_B: numpy.typing.ArrayLike | _Quantity | None = None) -> None:
         ...
     def __iter__(self) -> collections.abc.Iterator:
         ...
@@ -2927,7 +2930,7 @@ class PlanarAcceleration:
         ...
     def __getstate__(self) -> tuple[numpy.typing.NDArray[numpy.float64], float]:
         ...
-    def __init__(self, a_W: typing.Any = None, alpha: typing.Any = 0.0) -> None:
+    def __init__(self, a_W: numpy.typing.ArrayLike | _Quantity | None = None, alpha: float | _Quantity = 0.0) -> None:
         ...
     def __iter__(self) -> collections.abc.Iterator:
         ...
@@ -2995,7 +2998,7 @@ class PivotedBody:
         ...
     def __getstate__(self) -> tuple[RigidBody, typing.Any, typing.Any]:
         ...
-    def __init__(self, body: typing.Any, p_OC_B: typing.Any, p_WO: typing.Any = None) -> None:
+    def __init__(self, body: RigidBody, p_OC_B: numpy.typing.ArrayLike | _Quantity, p_WO: numpy.typing.ArrayLike | _Quantity | None = None) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -3083,7 +3086,7 @@ class PivotedPlanarBody:
         ...
     def __getstate__(self) -> tuple[float, float, typing.Any, typing.Any]:
         ...
-    def __init__(self, mass: typing.Any, inertia_zz: typing.Any, p_OC_B: typing.Any, p_WO: typing.Any = None) -> None:
+    def __init__(self, mass: float | _Quantity, inertia_zz: float | _Quantity, p_OC_B: numpy.typing.ArrayLike | _Quantity, p_WO: numpy.typing.ArrayLike | _Quantity | None = None) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -3155,13 +3158,13 @@ class PivotedBodyState:
         ...
     def __getstate__(self) -> tuple[numpy.typing.NDArray[numpy.float64], typing.Any]:
         ...
-    def __init__(self, q_WB: typing.Any = None, w_B: typing.Any = None, scalar_first: typing.Any = False) -> None:
+    def __init__(self, q_WB: numpy.typing.ArrayLike | None = None, w_B: numpy.typing.ArrayLike | _Quantity | None = None, scalar_first: bool = False) -> None:
         ...
     def __repr__(self) -> str:
         ...
     def __setstate__(self, arg0: tuple) -> None:
         ...
-    def quaternion(self, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+    def quaternion(self, scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
         """
         The attitude q_WB (B to W) in the order asked.
         
@@ -3232,7 +3235,7 @@ class PivotedPlanarBodyState:
         ...
     def __getstate__(self) -> tuple[float, float]:
         ...
-    def __init__(self, theta: typing.Any = 0.0, omega: typing.Any = 0.0) -> None:
+    def __init__(self, theta: float | _Quantity = 0.0, omega: float | _Quantity = 0.0) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -3289,7 +3292,7 @@ class PivotedAcceleration:
         ...
     def __getstate__(self) -> tuple[typing.Any, typing.Any]:
         ...
-    def __init__(self, alpha_B: typing.Any = None, reaction_W: typing.Any = None) -> None:
+    def __init__(self, alpha_B: numpy.typing.ArrayLike | _Quantity | None = None, reaction_W: numpy.typing.ArrayLike | _Quantity | None = None) -> None:
         ...
     def __iter__(self) -> collections.abc.Iterator:
         ...
@@ -3342,7 +3345,7 @@ class PivotedTorque:
         ...
     def __getstate__(self) -> tuple[typing.Any, typing.Any]:
         ...
-    def __init__(self, tau_O_B: typing.Any = None, reaction_W: typing.Any = None) -> None:
+    def __init__(self, tau_O_B: numpy.typing.ArrayLike | _Quantity | None = None, reaction_W: numpy.typing.ArrayLike | _Quantity | None = None) -> None:
         ...
     def __iter__(self) -> collections.abc.Iterator:
         ...
@@ -3397,7 +3400,7 @@ class PivotedPlanarAcceleration:
         ...
     def __getstate__(self) -> tuple[typing.Any, typing.Any]:
         ...
-    def __init__(self, alpha: typing.Any = 0.0, reaction_W: typing.Any = None) -> None:
+    def __init__(self, alpha: float | _Quantity = 0.0, reaction_W: numpy.typing.ArrayLike | _Quantity | None = None) -> None:
         ...
     def __iter__(self) -> collections.abc.Iterator:
         ...
@@ -3451,7 +3454,7 @@ class PivotedPlanarTorque:
         ...
     def __getstate__(self) -> tuple[typing.Any, typing.Any]:
         ...
-    def __init__(self, tau_O: typing.Any = 0.0, reaction_W: typing.Any = None) -> None:
+    def __init__(self, tau_O: float | _Quantity = 0.0, reaction_W: numpy.typing.ArrayLike | _Quantity | None = None) -> None:
         ...
     def __iter__(self) -> collections.abc.Iterator:
         ...
@@ -3510,7 +3513,7 @@ class Wheel:
         ...
     def __getstate__(self) -> tuple[typing.Any, float, float, float, float]:
         ...
-    def __init__(self, axis_B: typing.Any, inertia: typing.Any, motor_torque: typing.Any = 0.0, t_start: typing.Any = 0.0, t_end: typing.Any = ...) -> None:
+    def __init__(self, axis_B: numpy.typing.ArrayLike, inertia: float | _Quantity, motor_torque: float | _Quantity = 0.0, t_start: float | _Quantity = 0.0, t_end: float | _Quantity = ...) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -3593,7 +3596,7 @@ class Gyrostat:
         ...
     def __getstate__(self) -> tuple[RigidBody, list]:
         ...
-    def __init__(self, body: typing.Any, wheels: typing.Any) -> None:
+    def __init__(self, body: RigidBody, wheels: collections.abc.Sequence[Wheel]) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -3667,7 +3670,7 @@ class GyrostatState:
         ...
     def __getstate__(self) -> tuple[typing.Any, numpy.typing.NDArray[numpy.float64], typing.Any, typing.Any, numpy.typing.NDArray[numpy.float64]]:
         ...
-    def __init__(self, p_W: typing.Any = None, q_WB: typing.Any = None, v_W: typing.Any = None, w_B: typing.Any = None, wheel_speeds: typing.Any = None, scalar_first: typing.Any = False) -> None:
+    def __init__(self, p_W: numpy.typing.ArrayLike | None = None, q_WB: numpy.typing.ArrayLike | None = None, v_W: numpy.typing.ArrayLike | None = None, w_B: numpy.typing.ArrayLike | None = None, wheel_speeds: numpy.typing.ArrayLike | None = None, scalar_first: bool = False) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -3791,7 +3794,7 @@ class UniformGravity:
         ...
     def __getstate__(self) -> tuple:
         ...
-    def __init__(self, *, g_W: typing.Any = (0.0, 0.0, -9.81), bodies: typing.Any = None) -> None:
+    def __init__(self, *, g_W: numpy.typing.ArrayLike = (0.0, 0.0, -9.81), bodies: collections.abc.Sequence[int] | None = None) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -3840,7 +3843,7 @@ class PointMassGravity:
         ...
     def __getstate__(self) -> tuple:
         ...
-    def __init__(self, *, gm: typing.Any, p_W: typing.Any = (0.0, 0.0, 0.0), softening: typing.Any = 0.0, bodies: typing.Any = None) -> None:
+    def __init__(self, *, gm: float, p_W: numpy.typing.ArrayLike = (0.0, 0.0, 0.0), softening: float = 0.0, bodies: collections.abc.Sequence[int] | None = None) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -3900,7 +3903,7 @@ class MutualGravity:
         ...
     def __getstate__(self) -> tuple:
         ...
-    def __init__(self, *, G: typing.Any = 6.6743e-11, softening: typing.Any = 0.0, bodies: typing.Any = None) -> None:
+    def __init__(self, *, G: float = 6.6743e-11, softening: float = 0.0, bodies: collections.abc.Sequence[int] | None = None) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -3953,7 +3956,7 @@ class GravityGradient:
         ...
     def __getstate__(self) -> tuple:
         ...
-    def __init__(self, *, gm: typing.Any, p_W: typing.Any = (0.0, 0.0, 0.0), bodies: typing.Any = None) -> None:
+    def __init__(self, *, gm: float, p_W: numpy.typing.ArrayLike = (0.0, 0.0, 0.0), bodies: collections.abc.Sequence[int] | None = None) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -4015,7 +4018,7 @@ class SpringDamper:
         ...
     def __getstate__(self) -> tuple:
         ...
-    def __init__(self, *, body_a: typing.Any, point_a_B: typing.Any = (0.0, 0.0, 0.0), body_b: typing.Any = None, point_b: typing.Any = (0.0, 0.0, 0.0), stiffness: typing.Any, rest_length: typing.Any = 0.0, damping: typing.Any = 0.0) -> None:
+    def __init__(self, *, body_a: int, point_a_B: numpy.typing.ArrayLike = (0.0, 0.0, 0.0), body_b: int | None = None, point_b: numpy.typing.ArrayLike = (0.0, 0.0, 0.0), stiffness: float, rest_length: float = 0.0, damping: float = 0.0) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -4090,7 +4093,7 @@ class Drag:
         ...
     def __getstate__(self) -> tuple:
         ...
-    def __init__(self, *, linear: typing.Any = 0.0, quadratic: typing.Any = 0.0, angular_linear: typing.Any = 0.0, angular_quadratic: typing.Any = 0.0, bodies: typing.Any = None) -> None:
+    def __init__(self, *, linear: float = 0.0, quadratic: float = 0.0, angular_linear: float = 0.0, angular_quadratic: float = 0.0, bodies: collections.abc.Sequence[int] | None = None) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -4153,7 +4156,7 @@ class ScheduledLoads:
         ...
     def __getstate__(self) -> tuple:
         ...
-    def __init__(self, *, body: typing.Any, loads: typing.Any = (), point_B: typing.Any = (0.0, 0.0, 0.0)) -> None:
+    def __init__(self, *, body: int, loads: AppliedLoad | collections.abc.Sequence[AppliedLoad] = (), point_B: numpy.typing.ArrayLike = (0.0, 0.0, 0.0)) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -4202,7 +4205,7 @@ class PythonForce:
         ...
     def __getstate__(self) -> tuple:
         ...
-    def __init__(self, fn: typing.Any, bodies: typing.Any = None) -> None:
+    def __init__(self, fn: collections.abc.Callable[..., typing.Any], bodies: collections.abc.Sequence[int] | None = None) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -4251,7 +4254,7 @@ class Thrust:
         ...
     def __getstate__(self) -> tuple:
         ...
-    def __init__(self, body: typing.Any, u_rel: typing.Any, frame: typing.Any = 'body', r_B: typing.Any = (0.0, 0.0, 0.0)) -> None:
+    def __init__(self, body: int, u_rel: numpy.typing.ArrayLike, frame: typing.Literal['body', 'world'] = 'body', r_B: numpy.typing.ArrayLike = (0.0, 0.0, 0.0)) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -4312,7 +4315,7 @@ class MagneticDipole:
         ...
     def __getstate__(self) -> tuple:
         ...
-    def __init__(self, *, m_B: typing.Any, B_W: typing.Any = (0.0, 0.0, 0.0), source_moment_W: typing.Any = (0.0, 0.0, 0.0), source_p_W: typing.Any = (0.0, 0.0, 0.0), bodies: typing.Any = None) -> None:
+    def __init__(self, *, m_B: numpy.typing.ArrayLike, B_W: numpy.typing.ArrayLike = (0.0, 0.0, 0.0), source_moment_W: numpy.typing.ArrayLike = (0.0, 0.0, 0.0), source_p_W: numpy.typing.ArrayLike = (0.0, 0.0, 0.0), bodies: collections.abc.Sequence[int] | None = None) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -4384,7 +4387,7 @@ class ReactionWheel:
         ...
     def __getstate__(self) -> tuple:
         ...
-    def __init__(self, *, body: typing.Any, axis_B: typing.Any, inertia: typing.Any, speed: typing.Any = 0.0, acceleration: typing.Any = 0.0, t_start: typing.Any = 0.0, t_end: typing.Any = ...) -> None:
+    def __init__(self, *, body: int, axis_B: numpy.typing.ArrayLike, inertia: float, speed: float = 0.0, acceleration: float = 0.0, t_start: float = 0.0, t_end: float = ...) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -4556,7 +4559,7 @@ class MassFlow:
         ...
     def __getstate__(self) -> tuple:
         ...
-    def __init__(self, rate: typing.Any = 0.0, inertia_rule: typing.Any = 'scaled') -> None:
+    def __init__(self, rate: float | collections.abc.Callable[..., typing.Any] = 0.0, inertia_rule: typing.Literal['scaled'] | collections.abc.Callable[..., typing.Any] = 'scaled') -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -4639,7 +4642,7 @@ class Scene:
         ...
     def __getstate__(self) -> tuple[list, list, list, typing.Any, typing.Any]:
         ...
-    def __init__(self, bodies: typing.Any = None, body_names: typing.Any = None, elements: typing.Any = None, frame: typing.Any = None, mass_flows: typing.Any = None) -> None:
+    def __init__(self, bodies: typing.Any = None, body_names: collections.abc.Sequence[str] | None = None, elements: typing.Any = None, frame: SceneFrame | None = None, mass_flows: collections.abc.Sequence[MassFlow] | None = None) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -4724,7 +4727,7 @@ class CompiledScene:
         ...
     def __getstate__(self) -> tuple[Scene, str]:
         ...
-    def __init__(self, scene: typing.Any, method: typing.Any = 'rk4') -> None:
+    def __init__(self, scene: Scene, method: _MethodName = 'rk4') -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -5002,7 +5005,7 @@ class AppliedLoad:
         ...
     def __getstate__(self) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64], str, float, float]:
         ...
-    def __init__(self, force: typing.Any = None, torque: typing.Any = None, frame: typing.Any = 'world', t_start: typing.Any = ..., t_end: typing.Any = ...) -> None:
+    def __init__(self, force: numpy.typing.ArrayLike | _Quantity | None = None, torque: numpy.typing.ArrayLike | _Quantity | None = None, frame: typing.Literal['world', 'body'] = 'world', t_start: float | _Quantity = ..., t_end: float | _Quantity = ...) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -5213,7 +5216,7 @@ class SimulationResult:
         ...
     def __setstate__(self, arg0: tuple) -> None:
         ...
-    def to_dataframe(self, scalar_first: typing.Any = None) -> typing.Any:
+    def to_dataframe(self, scalar_first: bool | None = None) -> typing.Any:
         """
         The records as a pandas.DataFrame (needs pandas: pip install 'rigiddyn[dataframe]').
         
@@ -5673,7 +5676,7 @@ class TorqueFreeSolution:
         """
     def __getstate__(self) -> tuple:
         ...
-    def __init__(self, inertia: typing.Any, q_WB: typing.Any, w_B: typing.Any, scalar_first: typing.Any = False, check: typing.Any = InertiaCheck.physical) -> None:
+    def __init__(self, inertia: numpy.typing.ArrayLike, q_WB: numpy.typing.ArrayLike, w_B: numpy.typing.ArrayLike, scalar_first: bool = False, check: InertiaCheck = InertiaCheck.physical) -> None:
         """
         The exact motion from I_B (3, 3) [kg m^2] about the centre of mass in B, q_WB (4,) and w_B (3,) [rad/s]
         in B at t = 0 (see the class).
@@ -5682,7 +5685,7 @@ class TorqueFreeSolution:
         ...
     def __setstate__(self, arg0: tuple) -> None:
         ...
-    def state_at(self, t: typing.Any) -> tuple:
+    def state_at(self, t: float | numpy.typing.ArrayLike) -> tuple:
         """
         State at time t.
         
@@ -5801,7 +5804,7 @@ class CompoundPendulumSolution:
         """
     def __getstate__(self) -> tuple:
         ...
-    def __init__(self, body: typing.Any, g_W: typing.Any, state: typing.Any) -> None:
+    def __init__(self, body: PivotedPlanarBody, g_W: numpy.typing.ArrayLike, state: PivotedPlanarBodyState) -> None:
         """
         body: a PivotedPlanarBody; g_W: (2,) or (3,) uniform gravity in W [m/s^2] (only its xy part acts);
         state: the PivotedPlanarBodyState (theta [rad], omega [rad/s]) at t = 0. ValueError naming g_W or
@@ -5811,7 +5814,7 @@ class CompoundPendulumSolution:
         ...
     def __setstate__(self, arg0: tuple) -> None:
         ...
-    def at(self, t: typing.Any) -> tuple:
+    def at(self, t: float | numpy.typing.ArrayLike) -> tuple:
         """
         State at time t.
         
@@ -5927,7 +5930,7 @@ class LagrangeTopSolution:
         """
     def __getstate__(self) -> tuple:
         ...
-    def __init__(self, body: typing.Any, g_W: typing.Any, state: typing.Any, scalar_first: typing.Any = False) -> None:
+    def __init__(self, body: PivotedBody, g_W: numpy.typing.ArrayLike, state: PivotedBodyState, scalar_first: bool = False) -> None:
         """
         body: a PivotedBody whose inertia about O (inertia_O) is symmetric about the axis O->C to 1e-12 relative,
         with C off O (ValueError naming body otherwise); g_W: (3,) uniform gravity in W [m/s^2], non-zero;
@@ -5938,7 +5941,7 @@ class LagrangeTopSolution:
         ...
     def __setstate__(self, arg0: tuple) -> None:
         ...
-    def angles_at(self, t: typing.Any) -> tuple:
+    def angles_at(self, t: float | numpy.typing.ArrayLike) -> tuple:
         """
         Euler angles Z-X-Z of S in N at time t.
         
@@ -5962,7 +5965,7 @@ class LagrangeTopSolution:
         >>> bool(np.isclose(theta, s.theta_min))
         True
         """
-    def at(self, t: typing.Any) -> tuple:
+    def at(self, t: float | numpy.typing.ArrayLike) -> tuple:
         """
         State at time t.
         
@@ -6135,7 +6138,7 @@ class RotatingFrameFreeParticle:
         """
     def __getstate__(self) -> tuple:
         ...
-    def __init__(self, frame: typing.Any, p0_F: typing.Any, v0_F: typing.Any) -> None:
+    def __init__(self, frame: SceneFrame, p0_F: numpy.typing.ArrayLike, v0_F: numpy.typing.ArrayLike) -> None:
         """
         frame: a SceneFrame turning at a constant rate (SceneFrame.rotating or SceneFrame.earth; ValueError naming
         frame for a general moving frame); p0_F (3,) [m], v0_F (3,) [m/s]: position and velocity relative to F,
@@ -6145,7 +6148,7 @@ class RotatingFrameFreeParticle:
         ...
     def __setstate__(self, arg0: tuple) -> None:
         ...
-    def at(self, t: typing.Any) -> tuple:
+    def at(self, t: float | numpy.typing.ArrayLike) -> tuple:
         """
         State at time t.
         
@@ -6237,7 +6240,7 @@ class ConstantThrustSolution:
         """
     def __getstate__(self) -> tuple:
         ...
-    def __init__(self, m0: typing.Any, rate: typing.Any, u_rel_W: typing.Any, g_W: typing.Any = None, p0_W: typing.Any = None, v0_W: typing.Any = None) -> None:
+    def __init__(self, m0: float, rate: float, u_rel_W: numpy.typing.ArrayLike, g_W: numpy.typing.ArrayLike | None = None, p0_W: numpy.typing.ArrayLike | None = None, v0_W: numpy.typing.ArrayLike | None = None) -> None:
         """
         m0: mass at t = 0 [kg] > 0; rate: dm/dt [kg/s] (negative: losing mass); u_rel_W (3,): velocity of the
         ejected mass relative to the particle, in W [m/s]; g_W (3,) [m/s^2], p0_W (3,) [m], v0_W (3,) [m/s] (None:
@@ -6247,7 +6250,7 @@ class ConstantThrustSolution:
         ...
     def __setstate__(self, arg0: tuple) -> None:
         ...
-    def at(self, t: typing.Any) -> tuple:
+    def at(self, t: float | numpy.typing.ArrayLike) -> tuple:
         """
         State at time t.
         
@@ -6275,7 +6278,7 @@ class ConstantThrustSolution:
         >>> rd.ConstantThrustSolution(100.0, -1.0, [0.0, 0.0, -2000.0]).at([0.0, 50.0])[2]
         array([100.,  50.])
         """
-    def delta_v(self, m1: typing.Any) -> float:
+    def delta_v(self, m1: float) -> float:
         """
         Tsiolkovsky: the speed the thrust gives while the mass goes from m0 to m1.
         
@@ -6294,7 +6297,7 @@ class ConstantThrustSolution:
         >>> f"{rd.ConstantThrustSolution(100.0, -1.0, [0.0, 0.0, -2000.0]).delta_v(50.0):.6f}"
         '1386.294361'
         """
-    def mass_at(self, t: typing.Any) -> float:
+    def mass_at(self, t: float) -> float:
         """
         Mass m0 + rate t [kg] at time t (not checked positive).
         
@@ -6338,11 +6341,666 @@ class ConstantThrustSolution:
         """
         (3,) velocity of the ejected mass relative to the particle, in W [m/s]
         """
+class RevoluteJoint:
+    """
+    A revolute joint: rotation by the angle q [rad] about a fixed axis.
+    
+    X_J(q) = (Rot(a, q), 0), S = [a; 0] (Featherstone, Rigid Body Dynamics Algorithms, Table 4.1); nq = nv = 1.
+    
+    Parameters
+    ----------
+    axis : array_like, shape (3,), default (0, 0, 1)
+        The axis a in the joint frame (and the link frame), any non-zero length (normalised).
+    
+    Raises
+    ------
+    ValueError
+        A zero or non-finite axis.
+    
+    See Also
+    --------
+    PrismaticJoint, SphericalJoint, FreeJoint, FixedJoint, Tree
+    
+    Examples
+    --------
+    >>> rd.RevoluteJoint([0.0, 0.0, 2.0]).axis
+    array([0., 0., 1.])
+    """
+    def __init__(self, axis: numpy.typing.ArrayLike = (0.0, 0.0, 1.0)) -> None:
+        ...
+    def motion_subspace(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The motion subspace S, shape (6, nv), angular rows first, in the successor frame L.
+        
+        The joint's velocity qd moves L with the twist S qd relative to J (expressed in L).
+        
+        Returns
+        -------
+        ndarray, shape (6, nv)
+        
+        Examples
+        --------
+        >>> rd.RevoluteJoint().motion_subspace().T
+        array([[0., 0., 1., 0., 0., 0.]])
+        """
+    def transform(self, q: numpy.typing.ArrayLike) -> Transform:
+        """
+        X_J(q): the pose of the successor frame L in the joint frame J.
+        
+        Parameters
+        ----------
+        q : array_like, shape (nq,)
+            The joint's configuration.
+        
+        Returns
+        -------
+        Transform
+            X_JL.
+        
+        Raises
+        ------
+        ValueError
+            q of another size or not finite.
+        
+        Examples
+        --------
+        >>> X = rd.RevoluteJoint().transform([np.pi / 2])
+        >>> X.rotation.round(12)
+        array([[ 0., -1.,  0.],
+               [ 1.,  0.,  0.],
+               [ 0.,  0.,  1.]])
+        """
+    @property
+    def axis(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The unit axis a, in the joint frame and the link frame.
+        """
+    @property
+    def nq(self) -> int:
+        """
+        Number of configuration coordinates q of the joint.
+        """
+    @property
+    def nv(self) -> int:
+        """
+        Number of velocity coordinates qd of the joint.
+        """
+class PrismaticJoint:
+    """
+    A prismatic joint: translation by q [m] along a fixed axis.
+    
+    X_J(q) = (1, a q), S = [0; a] (Featherstone, Rigid Body Dynamics Algorithms, Table 4.1); nq = nv = 1.
+    
+    Parameters
+    ----------
+    axis : array_like, shape (3,), default (0, 0, 1)
+        The axis a in the joint frame (and the link frame), any non-zero length (normalised).
+    
+    Raises
+    ------
+    ValueError
+        A zero or non-finite axis.
+    
+    See Also
+    --------
+    RevoluteJoint, Tree
+    
+    Examples
+    --------
+    >>> rd.PrismaticJoint([3.0, 0.0, 4.0]).axis
+    array([0.6, 0. , 0.8])
+    """
+    def __init__(self, axis: numpy.typing.ArrayLike = (0.0, 0.0, 1.0)) -> None:
+        ...
+    def motion_subspace(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The motion subspace S, shape (6, nv), angular rows first, in the successor frame L.
+        
+        The joint's velocity qd moves L with the twist S qd relative to J (expressed in L).
+        
+        Returns
+        -------
+        ndarray, shape (6, nv)
+        
+        Examples
+        --------
+        >>> rd.PrismaticJoint([1.0, 0.0, 0.0]).motion_subspace().T
+        array([[0., 0., 0., 1., 0., 0.]])
+        """
+    def transform(self, q: numpy.typing.ArrayLike) -> Transform:
+        """
+        X_J(q): the pose of the successor frame L in the joint frame J.
+        
+        Parameters
+        ----------
+        q : array_like, shape (nq,)
+            The joint's configuration.
+        
+        Returns
+        -------
+        Transform
+            X_JL.
+        
+        Raises
+        ------
+        ValueError
+            q of another size or not finite.
+        
+        Examples
+        --------
+        >>> X = rd.PrismaticJoint([1.0, 0.0, 0.0]).transform([0.5])
+        >>> X.translation
+        array([0.5, 0. , 0. ])
+        """
+    @property
+    def axis(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The unit axis a, in the joint frame and the link frame.
+        """
+    @property
+    def nq(self) -> int:
+        """
+        Number of configuration coordinates q of the joint.
+        """
+    @property
+    def nv(self) -> int:
+        """
+        Number of velocity coordinates qd of the joint.
+        """
+class SphericalJoint:
+    """
+    A spherical (ball) joint: any rotation about the common origin of the joint and link frames.
+    
+    Configuration: the unit quaternion q_JL as (x, y, z, w) (nq = 4); velocity: w_L, the angular velocity
+    [rad/s] of the link relative to the joint frame, expressed in the link frame (nv = 3). X_J(q) = (R(q_JL), 0),
+    S = [1; 0]; Tree.integrate moves q_JL on SO(3): q_JL ⊗ exp(w_L dt / 2).
+    
+    See Also
+    --------
+    FreeJoint, RevoluteJoint, Tree
+    
+    Examples
+    --------
+    >>> rd.SphericalJoint().nq, rd.SphericalJoint().nv
+    (4, 3)
+    """
+    def __init__(self) -> None:
+        ...
+    def motion_subspace(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The motion subspace S, shape (6, nv), angular rows first, in the successor frame L.
+        
+        The joint's velocity qd moves L with the twist S qd relative to J (expressed in L).
+        
+        Returns
+        -------
+        ndarray, shape (6, nv)
+        
+        Examples
+        --------
+        >>> rd.SphericalJoint().motion_subspace()[:3]
+        array([[1., 0., 0.],
+               [0., 1., 0.],
+               [0., 0., 1.]])
+        """
+    def transform(self, q: numpy.typing.ArrayLike) -> Transform:
+        """
+        X_J(q): the pose of the successor frame L in the joint frame J.
+        
+        Parameters
+        ----------
+        q : array_like, shape (nq,)
+            The joint's configuration.
+        
+        Returns
+        -------
+        Transform
+            X_JL.
+        
+        Raises
+        ------
+        ValueError
+            q of another size or not finite.
+        
+        Examples
+        --------
+        >>> X = rd.SphericalJoint().transform([0.0, 0.0, np.sin(np.pi / 4), np.cos(np.pi / 4)])
+        >>> bool(np.allclose(X.rotation, rd.rot_z(np.pi / 2)))
+        True
+        """
+    @property
+    def nq(self) -> int:
+        """
+        Number of configuration coordinates q of the joint.
+        """
+    @property
+    def nv(self) -> int:
+        """
+        Number of velocity coordinates qd of the joint.
+        """
+class FreeJoint:
+    """
+    A free joint: six degrees of freedom (a floating base).
+    
+    Configuration (nq = 7): (x, y, z, qx, qy, qz, qw), the link origin's position p_JL [m] in the joint frame
+    and the unit quaternion q_JL. Velocity (nv = 6): the twist [w_L; v_L] of the link relative to the joint
+    frame, expressed in the link frame (angular first; v_L the velocity [m/s] of the link's origin).
+    X_J(q) = (R(q_JL), p_JL), S = 1. Tree.integrate: q_JL ⊗ exp(w_L dt / 2) and p_JL + R(q_JL) v_L dt.
+    
+    See Also
+    --------
+    SphericalJoint, Tree
+    
+    Examples
+    --------
+    >>> rd.FreeJoint().nq, rd.FreeJoint().nv
+    (7, 6)
+    """
+    def __init__(self) -> None:
+        ...
+    def motion_subspace(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The motion subspace S, shape (6, nv), angular rows first, in the successor frame L.
+        
+        The joint's velocity qd moves L with the twist S qd relative to J (expressed in L).
+        
+        Returns
+        -------
+        ndarray, shape (6, nv)
+        
+        Examples
+        --------
+        >>> rd.FreeJoint().motion_subspace().shape
+        (6, 6)
+        """
+    def transform(self, q: numpy.typing.ArrayLike) -> Transform:
+        """
+        X_J(q): the pose of the successor frame L in the joint frame J.
+        
+        Parameters
+        ----------
+        q : array_like, shape (nq,)
+            The joint's configuration.
+        
+        Returns
+        -------
+        Transform
+            X_JL.
+        
+        Raises
+        ------
+        ValueError
+            q of another size or not finite.
+        
+        Examples
+        --------
+        >>> X = rd.FreeJoint().transform([1.0, 2.0, 3.0, 0.0, 0.0, 0.0, 1.0])
+        >>> X.translation
+        array([1., 2., 3.])
+        """
+    @property
+    def nq(self) -> int:
+        """
+        Number of configuration coordinates q of the joint.
+        """
+    @property
+    def nv(self) -> int:
+        """
+        Number of velocity coordinates qd of the joint.
+        """
+class FixedJoint:
+    """
+    A fixed joint (a weld): the link is rigidly attached to its parent at its placement.
+    
+    X_J = 1, S has no columns, nq = nv = 0.
+    
+    See Also
+    --------
+    RevoluteJoint, Tree
+    
+    Examples
+    --------
+    >>> rd.FixedJoint().nq, rd.FixedJoint().nv
+    (0, 0)
+    """
+    def __init__(self) -> None:
+        ...
+    def motion_subspace(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The motion subspace S, shape (6, nv), angular rows first, in the successor frame L.
+        
+        The joint's velocity qd moves L with the twist S qd relative to J (expressed in L).
+        
+        Returns
+        -------
+        ndarray, shape (6, nv)
+        
+        Examples
+        --------
+        >>> rd.FixedJoint().motion_subspace().shape
+        (6, 0)
+        """
+    def transform(self, q: numpy.typing.ArrayLike) -> Transform:
+        """
+        X_J(q): the pose of the successor frame L in the joint frame J.
+        
+        Parameters
+        ----------
+        q : array_like, shape (nq,)
+            The joint's configuration.
+        
+        Returns
+        -------
+        Transform
+            X_JL.
+        
+        Raises
+        ------
+        ValueError
+            q of another size or not finite.
+        
+        Examples
+        --------
+        >>> X = rd.FixedJoint().transform(np.zeros(0))
+        >>> X.is_approx(rd.Transform())
+        True
+        """
+    @property
+    def nq(self) -> int:
+        """
+        Number of configuration coordinates q of the joint.
+        """
+    @property
+    def nv(self) -> int:
+        """
+        Number of velocity coordinates qd of the joint.
+        """
+class Tree:
+    """
+    A kinematic tree of rigid links joined by joints, rooted at the world frame W.
+    
+    Links are numbered 0, 1, ... in the order added, each after its parent. Link i sits at
+    X_λi = X_T X_J(q_i) in its parent λ(i) (W for parent -1): X_T its placement, X_J(q_i) its joint's
+    transform. The configuration q (nq,) stacks the joints' coordinates in link order, the velocity
+    v (nv,) their velocities (Featherstone, Rigid Body Dynamics Algorithms, ch. 4).
+    
+    Parameters
+    ----------
+    gravity : array_like, shape (3,), optional
+        Uniform gravity g [m/s²] in W (None: no gravity).
+    
+    Raises
+    ------
+    ValueError
+        A non-finite gravity.
+    
+    See Also
+    --------
+    rnea, crba, aba, forward_kinematics
+    
+    Examples
+    --------
+    >>> tree = rd.Tree(gravity=[0.0, 0.0, -9.81])
+    >>> bob = rd.SpatialInertia(1.0, [0.0, 0.0, -1.0], 0.1 * np.eye(3))
+    >>> tree.add_link("pendulum", -1, rd.RevoluteJoint([1.0, 0.0, 0.0]), bob)
+    0
+    >>> tree.nq, tree.nv, tree.link_names
+    (1, 1, ['pendulum'])
+    """
+    def __init__(self, gravity: numpy.typing.ArrayLike | None = None) -> None:
+        ...
+    def add_link(self, name: str, parent: int, joint: RevoluteJoint | PrismaticJoint | SphericalJoint | FreeJoint | FixedJoint, inertia: SpatialInertia, placement: Transform | None = None) -> int:
+        """
+        Append a link and return its index.
+        
+        Parameters
+        ----------
+        name : str
+            A name not yet used.
+        parent : int
+            The parent link's index, -1 for the world (parents are added first).
+        joint : RevoluteJoint, PrismaticJoint, SphericalJoint, FreeJoint or FixedJoint
+            The joint from the parent to this link.
+        inertia : SpatialInertia
+            Mass, centre of mass [m] and inertia about it [kg m²], in the link
+            frame; positive definite (every principal moment > 0).
+        placement : Transform, optional
+            X_T: the joint frame in the parent's frame (None: identity).
+        
+        Returns
+        -------
+        int
+            The new link's index.
+        
+        Raises
+        ------
+        ValueError
+            A used or empty name, a parent not in [-1, num_links - 1], or an inertia with a zero
+            principal moment (a point mass); the message names the link.
+        
+        Examples
+        --------
+        >>> tree = rd.Tree(gravity=[0.0, 0.0, -9.81])
+        >>> bob = rd.SpatialInertia(1.0, [0.0, 0.0, -1.0], 0.1 * np.eye(3))
+        >>> tree.add_link("pendulum", -1, rd.RevoluteJoint([1.0, 0.0, 0.0]), bob)
+        0
+        >>> tree.add_link("tip", 0, rd.FixedJoint(), bob, rd.Transform(translation=[0.0, 0.0, -1.0]))
+        1
+        """
+    def integrate(self, q: numpy.typing.ArrayLike, v: numpy.typing.ArrayLike, dt: float) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The configuration q ⊕ v dt reached from q moving with velocity v for a time dt [s].
+        
+        Joint by joint: q + qd dt for revolute and prismatic joints; q_JL ⊗ exp(w_L dt / 2) on SO(3) for a
+        quaternion (spherical and free joints; the result is a unit quaternion); p_JL + R(q_JL) v_L dt for
+        a free joint's position.
+        
+        Parameters
+        ----------
+        q : array_like, shape (nq,)
+            Configuration (unit quaternions within 1e-6).
+        v : array_like, shape (nv,)
+            Velocity.
+        dt : float
+            Time step [s].
+        
+        Returns
+        -------
+        ndarray, shape (nq,)
+        
+        Raises
+        ------
+        ValueError
+            A wrong size, a non-finite value or a non-unit quaternion (naming it).
+        
+        Examples
+        --------
+        A ball joint turning at pi/2 rad/s about z for 1 s:
+        
+        >>> tree = rd.Tree()
+        >>> tree.add_link("ball", -1, rd.SphericalJoint(), rd.SpatialInertia(1.0, [0, 0, 0], np.eye(3)))
+        0
+        >>> q = tree.integrate(tree.neutral_configuration(), [0.0, 0.0, np.pi / 2], 1.0)
+        >>> bool(np.allclose(q, [0.0, 0.0, np.sin(np.pi / 4), np.cos(np.pi / 4)]))
+        True
+        """
+    def kinetic_energy(self, q: numpy.typing.ArrayLike, v: numpy.typing.ArrayLike) -> float:
+        """
+        Kinetic energy T = sum_i 1/2 v_i . I_i v_i [J] (= 1/2 v^T H(q) v).
+        
+        Parameters
+        ----------
+        q : array_like, shape (nq,)
+            Configuration.
+        v : array_like, shape (nv,)
+            Velocity.
+        
+        Returns
+        -------
+        float
+        
+        Raises
+        ------
+        ValueError
+            A wrong size, a non-finite value or a non-unit quaternion.
+        
+        Examples
+        --------
+        >>> tree = rd.Tree(gravity=[0.0, 0.0, -9.81])
+        >>> bob = rd.SpatialInertia(1.0, [0.0, 0.0, -1.0], 0.1 * np.eye(3))
+        >>> tree.add_link("pendulum", -1, rd.RevoluteJoint([1.0, 0.0, 0.0]), bob)
+        0
+        >>> round(tree.kinetic_energy([0.0], [2.0]), 12)  # 1/2 (0.1 + 1.0) 2^2
+        2.2
+        """
+    def link_index(self, name: str) -> int:
+        """
+        The index of the link called `name`.
+        
+        Parameters
+        ----------
+        name : str
+        
+        Returns
+        -------
+        int
+        
+        Raises
+        ------
+        ValueError
+            No link has that name.
+        
+        Examples
+        --------
+        >>> tree = rd.Tree(gravity=[0.0, 0.0, -9.81])
+        >>> bob = rd.SpatialInertia(1.0, [0.0, 0.0, -1.0], 0.1 * np.eye(3))
+        >>> tree.add_link("pendulum", -1, rd.RevoluteJoint([1.0, 0.0, 0.0]), bob)
+        0
+        >>> tree.link_index("pendulum")
+        0
+        """
+    def neutral_configuration(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The neutral configuration (nq,): every angle and offset 0, every quaternion (0, 0, 0, 1).
+        
+        Returns
+        -------
+        ndarray, shape (nq,)
+        
+        Examples
+        --------
+        >>> tree = rd.Tree()
+        >>> tree.add_link("base", -1, rd.FreeJoint(), rd.SpatialInertia(1.0, [0, 0, 0], np.eye(3)))
+        0
+        >>> tree.neutral_configuration()
+        array([0., 0., 0., 0., 0., 0., 1.])
+        """
+    def potential_energy(self, q: numpy.typing.ArrayLike) -> float:
+        """
+        Potential energy V = -sum_i m_i g . p_W,Ci [J] of the uniform gravity (0 at W's origin).
+        
+        Parameters
+        ----------
+        q : array_like, shape (nq,)
+            Configuration.
+        
+        Returns
+        -------
+        float
+        
+        Raises
+        ------
+        ValueError
+            A wrong size, a non-finite value or a non-unit quaternion.
+        
+        Examples
+        --------
+        >>> tree = rd.Tree(gravity=[0.0, 0.0, -9.81])
+        >>> bob = rd.SpatialInertia(1.0, [0.0, 0.0, -1.0], 0.1 * np.eye(3))
+        >>> tree.add_link("pendulum", -1, rd.RevoluteJoint([1.0, 0.0, 0.0]), bob)
+        0
+        >>> round(tree.potential_energy([0.0]), 12)  # the bob 1 m below W's origin
+        -9.81
+        """
+    @property
+    def gravity(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        Uniform gravity g [m/s²] in W.
+        """
+    @property
+    def link_names(self) -> list:
+        """
+        The links' names, in index order.
+        """
+    @property
+    def nq(self) -> int:
+        """
+        Size of the configuration q.
+        """
+    @property
+    def num_links(self) -> int:
+        """
+        Number of links n.
+        """
+    @property
+    def nv(self) -> int:
+        """
+        Size of the velocity v (and of accelerations and joint forces).
+        """
+    @property
+    def parents(self) -> list:
+        """
+        The links' parent indices λ(i) (-1: the world), in index order.
+        """
 def _steps_of(steps: typing.Any, duration: typing.Any, dt: typing.Any) -> int:
     """
     The step count of a run of simulate(..., steps=, duration=) at one dt [s] (the package's Python front ends check it before their own work); ValueError as simulate's.
     """
-def align_vectors(a: typing.Any, b: typing.Any, weights: typing.Any = None, return_sensitivity: typing.Any = False, scalar_first: typing.Any = False) -> tuple:
+def aba(tree: Tree, q: numpy.typing.ArrayLike, v: numpy.typing.ArrayLike, tau: numpy.typing.ArrayLike, f_ext: numpy.typing.ArrayLike | None = None) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Forward dynamics by the articulated-body algorithm: a = H(q)^-1 (tau - C(q, v, f_ext)).
+    
+    Featherstone, Rigid Body Dynamics Algorithms, Table 7.1, in O(n); the inverse of rnea.
+    
+    Parameters
+    ----------
+    tree : Tree
+    q : array_like, shape (nq,)
+        Configuration.
+    v : array_like, shape (nv,)
+        Velocity.
+    tau : array_like, shape (nv,)
+        Joint forces.
+    f_ext : array_like, shape (n, 6), optional
+        External force [n; f] on each link, in its link frame (None: none).
+    
+    Returns
+    -------
+    ndarray, shape (nv,)
+        The acceleration a.
+    
+    Raises
+    ------
+    ValueError
+        A wrong size, a non-finite value or a non-unit quaternion (naming it).
+    
+    See Also
+    --------
+    rnea, crba
+    
+    Examples
+    --------
+    The horizontal pendulum falls with I a = -m g l:
+    
+    >>> tree = rd.Tree(gravity=[0.0, 0.0, -9.81])
+    >>> bob = rd.SpatialInertia(1.0, [0.0, 0.0, -1.0], 0.1 * np.eye(3))
+    >>> tree.add_link("pendulum", -1, rd.RevoluteJoint([1.0, 0.0, 0.0]), bob)
+    0
+    >>> a = rd.aba(tree, [np.pi / 2], [0.0], [0.0])
+    >>> bool(np.isclose(a[0], -9.81 / 1.1))
+    True
+    """
+def align_vectors(a: numpy.typing.ArrayLike, b: numpy.typing.ArrayLike, weights: numpy.typing.ArrayLike | None = None, return_sensitivity: bool = False, scalar_first: bool = False) -> tuple:
     """
     The rotation that best maps vectors b onto vectors a (Wahba's problem).
     
@@ -6399,7 +7057,7 @@ def align_vectors(a: typing.Any, b: typing.Any, weights: typing.Any = None, retu
     >>> np.allclose(q, rd.quat_canonical(q_WB)), rssd < 1e-12
     (True, True)
     """
-def angular_distance(q_a: typing.Any, q_b: typing.Any, scalar_first: typing.Any = False, degrees: typing.Any = False) -> typing.Any:
+def angular_distance(q_a: numpy.typing.ArrayLike, q_b: numpy.typing.ArrayLike, scalar_first: bool = False, degrees: bool = False) -> typing.Any:
     """
     Angle of the rotation taking q_a to q_b.
     
@@ -6442,7 +7100,7 @@ def angular_distance(q_a: typing.Any, q_b: typing.Any, scalar_first: typing.Any 
     >>> rd.angular_distance([0.0, 0.0, 0.0, 1.0], [[0.0, 0.0, 1.0, 0.0]], degrees=True).round(9)
     array([180.])
     """
-def angular_momentum(body: typing.Any, state: typing.Any, point: typing.Any = None) -> typing.Any:
+def angular_momentum(body: RigidBody | PlanarBody | Particle, state: RigidBodyState | PlanarBodyState | ParticleState, point: numpy.typing.ArrayLike | _Quantity | None = None) -> typing.Any:
     """
     Angular momentum about a point P fixed in W, expressed in W.
     
@@ -6489,7 +7147,7 @@ def angular_momentum(body: typing.Any, state: typing.Any, point: typing.Any = No
     >>> rd.angular_momentum(body, s), rd.angular_momentum(body, s, point=s.p_W)
     (array([0., 0., 8.]), array([0., 0., 6.]))
     """
-def angular_velocity_from_quat_rate(q: typing.Any, dq_dt: typing.Any, frame: typing.Any = 'body', scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+def angular_velocity_from_quat_rate(q: numpy.typing.ArrayLike, dq_dt: numpy.typing.ArrayLike, frame: typing.Literal['body', 'world'] = 'body', scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Angular velocity of an attitude changing at a quaternion rate (the inverse of `quat_rate`).
     
@@ -6536,7 +7194,7 @@ def angular_velocity_from_quat_rate(q: typing.Any, dq_dt: typing.Any, frame: typ
     >>> rd.angular_velocity_from_quat_rate(q, dq, frame="world").round(12)
     array([1., 2., 3.])
     """
-def apply_impulse(body: typing.Any, state: typing.Any, impulse: typing.Any, point: typing.Any = None, frame: typing.Any = 'world', angular_impulse: typing.Any = None) -> typing.Any:
+def apply_impulse(body: RigidBody | PlanarBody | Particle, state: RigidBodyState | PlanarBodyState | ParticleState, impulse: numpy.typing.ArrayLike | _Quantity, point: numpy.typing.ArrayLike | _Quantity | None = None, frame: typing.Literal['world', 'body'] = 'world', angular_impulse: numpy.typing.ArrayLike | float | _Quantity | None = None) -> typing.Any:
     """
     The state just after an impulse at a point and an angular impulse.
     
@@ -6593,7 +7251,120 @@ def apply_impulse(body: typing.Any, state: typing.Any, impulse: typing.Any, poin
     >>> after.v_W, after.w_B.round(12)
     (array([0., 1., 0.]), array([0.        , 0.        , 0.66666667]))
     """
-def axis_angle_to_quat(axis: typing.Any, angle: typing.Any, scalar_first: typing.Any = False, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+def attitude_from_orbit_frame(r_W: numpy.typing.ArrayLike, v_W: numpy.typing.ArrayLike, q_OB: numpy.typing.ArrayLike, w_OB_B: numpy.typing.ArrayLike, frame: str = 'lvlh', scalar_first: bool = False) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    """
+    Inertial attitude and rate (q_WB, w_B) of an attitude and rate given relative to an orbit frame O.
+    
+    q_WB = q_WO (x) q_OB and w_B = w_OB_B + R_WB^T w_WO_W (angular velocities add): the initial state of a
+    body whose attitude is given relative to LVLH or RSW (q_OB = identity, w_OB_B = 0: a body that holds
+    the orbit frame, as a gravity-gradient-stabilised satellite).
+    
+    Parameters
+    ----------
+    r_W : array_like, shape (3,) or (n, 3)
+        Position of the body relative to the central body's centre, in the inertial frame W [m].
+    v_W : array_like, shape (3,) or (n, 3)
+        Velocity of the body relative to the central body, in W [m/s]; not parallel to `r_W`.
+    q_OB : array_like, shape (4,) or (n, 4)
+        Attitude of the body B relative to O, unit quaternions (x, y, z, w) ((w, x, y, z) if
+        `scalar_first`); norm within 1e-6 of 1 (then normalised).
+    w_OB_B : array_like, shape (3,) or (n, 3)
+        Angular velocity of B relative to O, expressed in B [rad/s].
+    frame : str, default 'lvlh'
+        'lvlh': z_O = -r/|r| (nadir), y_O = -h/|h| (opposite the orbit normal h = r x v), x_O = y_O x z_O
+        (along-track; along v on a circular orbit), the attitude texts' LVLH with roll, pitch and yaw axes
+        x, y, z (Wie, "Space Vehicle Dynamics and Control"). 'rsw': Hill's frame, x_O = r/|r| (R, radial out),
+        z_O = h/|h| (W, the orbit normal), y_O = z_O x x_O (S, along-track) (Vallado, "Fundamentals of
+        Astrodynamics and Applications").
+    scalar_first : bool, default False
+        Read and write quaternions scalar first, (w, x, y, z), as MuJoCo does.
+    
+    Returns
+    -------
+    q_WB : ndarray, shape (4,) or (n, 4)
+        Attitude of B in W, in the order of the input.
+    w_B : ndarray, shape (3,) or (n, 3)
+        Angular velocity of B in W, expressed in B [rad/s] (`RigidBodyState`'s w_B).
+    
+    Raises
+    ------
+    ValueError
+        A non-finite entry or a wrong shape (the message names `r_W` or `v_W` and, in a stack, the item),
+        stacks of different lengths, or r x v = 0 (the message names `r_W, v_W`: a rectilinear orbit has no
+        plane).
+        A quaternion farther than 1e-6 from unit norm (the message names `q_OB`); `frame` not 'lvlh' or
+        'rsw'.
+    
+    See Also
+    --------
+    attitude_to_orbit_frame, orbit_frame_rotation
+    
+    Examples
+    --------
+    Holding LVLH on the circular orbit of the shipped gravity_gradient scene: q_WB = identity there and
+    w_B = (0, -n, 0), n = 1.078007612872506e-3 rad/s:
+    
+    >>> q, w = rd.attitude_from_orbit_frame([0.0, 0.0, -7e6], [7546.053290107541, 0.0, 0.0], [0, 0, 0, 1.0], np.zeros(3))
+    >>> q.round(12), (w / 1.078007612872506e-3).round(12) + 0.0
+    (array([0., 0., 0., 1.]), array([ 0., -1.,  0.]))
+    """
+def attitude_to_orbit_frame(r_W: numpy.typing.ArrayLike, v_W: numpy.typing.ArrayLike, q_WB: numpy.typing.ArrayLike, w_B: numpy.typing.ArrayLike, frame: str = 'lvlh', scalar_first: bool = False) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    """
+    Attitude and rate relative to an orbit frame O of an inertial attitude and rate (q_WB, w_B).
+    
+    q_OB = q_WO^-1 (x) q_WB and w_OB_B = w_B - R_WB^T w_WO_W: reads a recorded attitude relative to LVLH or
+    RSW (the inverse of `attitude_from_orbit_frame`).
+    
+    Parameters
+    ----------
+    r_W : array_like, shape (3,) or (n, 3)
+        Position of the body relative to the central body's centre, in the inertial frame W [m].
+    v_W : array_like, shape (3,) or (n, 3)
+        Velocity of the body relative to the central body, in W [m/s]; not parallel to `r_W`.
+    q_WB : array_like, shape (4,) or (n, 4)
+        Attitude of the body B in W, unit quaternions (x, y, z, w) ((w, x, y, z) if `scalar_first`);
+        norm within 1e-6 of 1 (then normalised).
+    w_B : array_like, shape (3,) or (n, 3)
+        Angular velocity of B in W, expressed in B [rad/s].
+    frame : str, default 'lvlh'
+        'lvlh': z_O = -r/|r| (nadir), y_O = -h/|h| (opposite the orbit normal h = r x v), x_O = y_O x z_O
+        (along-track; along v on a circular orbit), the attitude texts' LVLH with roll, pitch and yaw axes
+        x, y, z (Wie, "Space Vehicle Dynamics and Control"). 'rsw': Hill's frame, x_O = r/|r| (R, radial out),
+        z_O = h/|h| (W, the orbit normal), y_O = z_O x x_O (S, along-track) (Vallado, "Fundamentals of
+        Astrodynamics and Applications").
+    scalar_first : bool, default False
+        Read and write quaternions scalar first, (w, x, y, z), as MuJoCo does.
+    
+    Returns
+    -------
+    q_OB : ndarray, shape (4,) or (n, 4)
+        Attitude of B relative to O, in the order of the input.
+    w_OB_B : ndarray, shape (3,) or (n, 3)
+        Angular velocity of B relative to O, expressed in B [rad/s].
+    
+    Raises
+    ------
+    ValueError
+        A non-finite entry or a wrong shape (the message names `r_W` or `v_W` and, in a stack, the item),
+        stacks of different lengths, or r x v = 0 (the message names `r_W, v_W`: a rectilinear orbit has no
+        plane).
+        A quaternion farther than 1e-6 from unit norm (the message names `q_WB`); `frame` not 'lvlh' or
+        'rsw'.
+    
+    See Also
+    --------
+    attitude_from_orbit_frame, orbit_frame_rotation
+    
+    Examples
+    --------
+    A body turning at the orbit rate about -y_W on that orbit holds LVLH: no attitude or rate relative to it:
+    
+    >>> r, v = [0.0, 0.0, -7e6], [7546.053290107541, 0.0, 0.0]
+    >>> q, w = rd.attitude_to_orbit_frame(r, v, [0, 0, 0, 1.0], [0.0, -1.078007612872506e-3, 0.0])
+    >>> q.round(12), bool(np.abs(w).max() < 1e-18)
+    (array([0., 0., 0., 1.]), True)
+    """
+def axis_angle_to_quat(axis: numpy.typing.ArrayLike, angle: float | numpy.typing.ArrayLike, scalar_first: bool = False, *, degrees: bool = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Unit quaternion of the rotation by an angle about an axis (right-hand rule).
     
@@ -6637,7 +7408,43 @@ def axis_angle_to_quat(axis: typing.Any, angle: typing.Any, scalar_first: typing
     array([[1., 0., 0., 0.],
            [0., 1., 0., 0.]])
     """
-def box_shell(size: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
+def bias_forces(tree: Tree, q: numpy.typing.ArrayLike, v: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    The bias forces C(q, v) = rnea(tree, q, v, 0): Coriolis, centrifugal and gravity terms.
+    
+    The equation of motion is H(q) a + C(q, v) = tau.
+    
+    Parameters
+    ----------
+    tree : Tree
+    q : array_like, shape (nq,)
+        Configuration.
+    v : array_like, shape (nv,)
+        Velocity.
+    
+    Returns
+    -------
+    ndarray, shape (nv,)
+    
+    Raises
+    ------
+    ValueError
+        A wrong size, a non-finite value or a non-unit quaternion (naming it).
+    
+    See Also
+    --------
+    rnea, crba
+    
+    Examples
+    --------
+    >>> tree = rd.Tree(gravity=[0.0, 0.0, -9.81])
+    >>> bob = rd.SpatialInertia(1.0, [0.0, 0.0, -1.0], 0.1 * np.eye(3))
+    >>> tree.add_link("pendulum", -1, rd.RevoluteJoint([1.0, 0.0, 0.0]), bob)
+    0
+    >>> rd.bias_forces(tree, [np.pi / 2], [3.0]).round(12)  # gravity only: no Coriolis term
+    array([9.81])
+    """
+def box_shell(size: numpy.typing.ArrayLike, *, mass: float | None = None, density: float | None = None) -> SpatialInertia:
     """
     Mass properties of a closed thin-walled box (its six faces).
     
@@ -6679,7 +7486,7 @@ def box_shell(size: typing.Any, *, mass: typing.Any = None, density: typing.Any 
     >>> rd.box_shell([1.0, 1.0, 1.0], mass=18.0).inertia_com.diagonal().round(12)
     array([5., 5., 5.])
     """
-def compose_kinematics(K_AP: typing.Any, K_PF: typing.Any) -> FrameKinematics:
+def compose_kinematics(K_AP: FrameKinematics, K_PF: FrameKinematics) -> FrameKinematics:
     """
     Kinematics of F relative to A from those of P relative to A and of F relative to P.
     
@@ -6763,7 +7570,44 @@ def composite(parts: typing.Any) -> SpatialInertia:
     >>> rd.composite([(X_AL, half), (X_AR, half)]).is_approx(rd.solid_box([1.0, 1.0, 1.0], mass=2.0))
     True
     """
-def davenport_to_quat(axes: typing.Any, order: typing.Any, angles: typing.Any, scalar_first: typing.Any = False, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+def crba(tree: Tree, q: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    The joint-space inertia matrix H(q) by the composite-rigid-body algorithm.
+    
+    Featherstone, Rigid Body Dynamics Algorithms, Table 6.2: symmetric positive definite, with
+    T = 1/2 v^T H v.
+    
+    Parameters
+    ----------
+    tree : Tree
+    q : array_like, shape (nq,)
+        Configuration.
+    
+    Returns
+    -------
+    ndarray, shape (nv, nv)
+    
+    Raises
+    ------
+    ValueError
+        A wrong size, a non-finite value or a non-unit quaternion (naming it).
+    
+    See Also
+    --------
+    rnea, aba
+    
+    Examples
+    --------
+    The pendulum's moment of inertia about its axis, I_C + m l²:
+    
+    >>> tree = rd.Tree(gravity=[0.0, 0.0, -9.81])
+    >>> bob = rd.SpatialInertia(1.0, [0.0, 0.0, -1.0], 0.1 * np.eye(3))
+    >>> tree.add_link("pendulum", -1, rd.RevoluteJoint([1.0, 0.0, 0.0]), bob)
+    0
+    >>> rd.crba(tree, [0.3]).round(12)
+    array([[1.1]])
+    """
+def davenport_to_quat(axes: numpy.typing.ArrayLike, order: str, angles: numpy.typing.ArrayLike, scalar_first: bool = False, *, degrees: bool = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Unit quaternion of Davenport angles (rotations about three arbitrary axes).
     
@@ -6834,7 +7678,132 @@ def default_thread_count() -> int:
     >>> rd.default_thread_count() >= 1
     True
     """
-def ellipk(m: typing.Any, mc: typing.Any = None) -> float:
+def eccentric_to_mean_anomaly(E: float | numpy.typing.ArrayLike, e: float | numpy.typing.ArrayLike) -> typing.Any:
+    """
+    Mean anomaly of the eccentric or hyperbolic anomaly: Kepler's equation.
+    
+    M = E - e sin E for 0 <= e < 1, M = e sinh H - H for e > 1 (Curtis, "Orbital Mechanics for Engineering
+    Students", sec. 3.4 and 3.6), evaluated as (1 - e) E + e (E - sin E) and (e - 1) H + e (sinh H - H)
+    with series for E - sin E and sinh H - H near 0: to a few ulps of M also near periapsis as e -> 1.
+    M = n t grows linearly in the time t since periapsis (n = sqrt(mu/|a|^3)).
+    
+    Parameters
+    ----------
+    E : float or array_like, shape (n,)
+        Eccentric anomaly (e < 1) or hyperbolic anomaly (e > 1) [rad].
+    e : float or array_like, shape (n,)
+        Eccentricity, finite and >= 0: 0 <= e < 1 an ellipse, e > 1 a hyperbola.
+    
+    Returns
+    -------
+    float or ndarray, shape (n,)
+        M [rad].
+    
+    Raises
+    ------
+    ValueError
+        A non-finite value, e < 0 or e = 1 (the message names the argument).
+    
+    Warns
+    -----
+    RuntimeWarning
+        M overflows (|H| > 710 on a hyperbola).
+    
+    See Also
+    --------
+    mean_to_eccentric_anomaly, true_to_mean_anomaly
+    
+    Examples
+    --------
+    Curtis's Example 3.1 (e = 0.37255, E = 1.7281 rad):
+    
+    >>> round(rd.eccentric_to_mean_anomaly(1.7281, 0.37255), 4)
+    1.3601
+    """
+def eccentric_to_true_anomaly(E: float | numpy.typing.ArrayLike, e: float | numpy.typing.ArrayLike) -> typing.Any:
+    """
+    True anomaly of the eccentric anomaly E (ellipse) or hyperbolic anomaly H (hyperbola).
+    
+    tan(nu/2) = sqrt((1 + e)/(1 - e)) tan(E/2) for 0 <= e < 1, keeping E's revolutions;
+    tan(nu/2) = sqrt((e + 1)/(e - 1)) tanh(H/2) for e > 1, |nu| < acos(-1/e) (Curtis, "Orbital
+    Mechanics for Engineering Students", ch. 3).
+    
+    Parameters
+    ----------
+    E : float or array_like, shape (n,)
+        Eccentric anomaly (e < 1) or hyperbolic anomaly (e > 1) [rad].
+    e : float or array_like, shape (n,)
+        Eccentricity, finite and >= 0: 0 <= e < 1 an ellipse, e > 1 a hyperbola.
+    
+    Returns
+    -------
+    float or ndarray, shape (n,)
+        nu [rad].
+    
+    Raises
+    ------
+    ValueError
+        A non-finite value, e < 0 or e = 1 (the message names the argument).
+    
+    See Also
+    --------
+    true_to_eccentric_anomaly, mean_to_true_anomaly
+    
+    Examples
+    --------
+    The round trip through the eccentric anomaly:
+    
+    >>> E = rd.true_to_eccentric_anomaly(2.0, 0.7)
+    >>> round(rd.eccentric_to_true_anomaly(E, 0.7), 12)
+    2.0
+    """
+def elements_to_state(elements: numpy.typing.ArrayLike, mu: float) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    """
+    Position and velocity of classical orbital elements (Vallado's COE2RV).
+    
+    r_W = p/(1 + e cos nu) (cos nu P + sin nu Q), v_W = sqrt(mu/p) (-sin nu P + (e + cos nu) Q), with
+    [P Q W] = R_z(raan) R_x(i) R_z(argp) (Vallado, "Fundamentals of Astrodynamics and Applications", ch. 2,
+    COE2RV; Curtis, "Orbital Mechanics for Engineering Students", algorithm 4.5). Every conic, the
+    parabola e = 1 included (through p). The special cases of `state_to_elements` (Omega = 0 when
+    equatorial, omega = 0 when circular, the next angle carrying theirs) need nothing special here.
+    
+    Parameters
+    ----------
+    elements : array_like, shape (6,) or (n, 6)
+        (p, e, i, raan, argp, nu): semi-latus rectum p > 0 [m] (`semi_latus_rectum` of a semi-major axis),
+        eccentricity e >= 0, inclination i, right ascension of the ascending node raan, argument of
+        periapsis argp and true anomaly nu [rad], each finite; for e >= 1, 1 + e cos(nu) > 0.
+    mu : float
+        Gravitational parameter G M of the central body [m^3/s^2], > 0 (or a pint quantity).
+    
+    Returns
+    -------
+    r_W : ndarray, shape (3,) or (n, 3)
+        Position relative to the central body in the inertial frame W [m] (xy the reference plane).
+    v_W : ndarray, shape (3,) or (n, 3)
+        Velocity in W [m/s].
+    
+    Raises
+    ------
+    ValueError
+        `mu` not > 0; p <= 0, e < 0, a non-finite element, or nu beyond a hyperbola's asymptotes (the
+        message names p, e, i, raan, argp or nu and, in a stack, the item).
+    
+    See Also
+    --------
+    state_to_elements, semi_latus_rectum
+    
+    Examples
+    --------
+    Curtis's Example 4.7 (km and km/s: h = 80000 km^2/s, e = 1.4, i = 30, raan = 40, argp = 60, nu = 30 deg):
+    
+    >>> mu = 398600.0
+    >>> p = 80000.0**2 / mu
+    >>> r, v = rd.elements_to_state([p, 1.4, *np.radians([30.0, 40.0, 60.0, 30.0])], mu)
+    >>> r.round(0), v.round(3)
+    (array([-4040.,  4815.,  3629.]), array([-10.386,  -4.772,   1.744]))
+    """
+def ellipk(m: float, mc: float | None = None) -> float:
     """
     Complete elliptic integral of the first kind K(m).
     
@@ -6880,7 +7849,7 @@ def ellipk(m: typing.Any, mc: typing.Any = None) -> float:
     >>> f"{rd.ellipk(1.0, mc=1e-20):.9f} {np.log(16 / 1e-20) / 2:.9f}"
     '24.412145291 24.412145291'
     """
-def ellippi(n: typing.Any, m: typing.Any, mc: typing.Any = None) -> float:
+def ellippi(n: float, m: float, mc: float | None = None) -> float:
     """
     Complete elliptic integral of the third kind Pi(n|m).
     
@@ -6922,7 +7891,7 @@ def ellippi(n: typing.Any, m: typing.Any, mc: typing.Any = None) -> float:
     >>> bool(np.isclose(rd.ellippi(0.5, 0.0), np.pi / (2 * np.sqrt(0.5))))
     True
     """
-def ellippi_am(u: typing.Any, n: typing.Any, m: typing.Any, mc: typing.Any = None) -> typing.Any:
+def ellippi_am(u: float | numpy.typing.ArrayLike, n: float, m: float, mc: float | None = None) -> typing.Any:
     """
     Incomplete elliptic integral of the third kind at the amplitude am u, Pi(am u, n|m).
     
@@ -6974,7 +7943,7 @@ def ellippi_am(u: typing.Any, n: typing.Any, m: typing.Any, mc: typing.Any = Non
     >>> rd.ellippi_am([0.0, 2 * K], 0.3, 0.5) / rd.ellippi(0.3, 0.5)
     array([0., 2.])
     """
-def elliprf(x: typing.Any, y: typing.Any, z: typing.Any) -> float:
+def elliprf(x: float, y: float, z: float) -> float:
     """
     Carlson's symmetric elliptic integral of the first kind R_F(x, y, z).
     
@@ -7010,7 +7979,7 @@ def elliprf(x: typing.Any, y: typing.Any, z: typing.Any) -> float:
     >>> bool(np.isclose(rd.elliprf(2.0, 2.0, 2.0), 1 / np.sqrt(2.0)))
     True
     """
-def elliprj(x: typing.Any, y: typing.Any, z: typing.Any, p: typing.Any) -> float:
+def elliprj(x: float, y: float, z: float, p: float) -> float:
     """
     Carlson's symmetric elliptic integral of the third kind R_J(x, y, z, p).
     
@@ -7049,7 +8018,7 @@ def elliprj(x: typing.Any, y: typing.Any, z: typing.Any, p: typing.Any) -> float
     >>> rd.elliprj(4.0, 4.0, 4.0, 4.0)
     0.125
     """
-def euler_to_matrix(seq: typing.Any, angles: typing.Any, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+def euler_to_matrix(seq: str, angles: numpy.typing.ArrayLike, *, degrees: bool = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Rotation matrix of Euler angles.
     
@@ -7092,7 +8061,7 @@ def euler_to_matrix(seq: typing.Any, angles: typing.Any, *, degrees: typing.Any 
     >>> np.allclose(R, rd.rot_z(0.3) @ rd.rot_y(0.2) @ rd.rot_x(0.1))
     True
     """
-def euler_to_quat(seq: typing.Any, angles: typing.Any, scalar_first: typing.Any = False, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+def euler_to_quat(seq: str, angles: numpy.typing.ArrayLike, scalar_first: bool = False, *, degrees: bool = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Unit quaternion of Euler angles.
     
@@ -7140,7 +8109,7 @@ def euler_to_quat(seq: typing.Any, angles: typing.Any, scalar_first: typing.Any 
     >>> np.allclose(rd.quat_to_matrix(q), rd.rot_z(0.1) @ rd.rot_y(0.2) @ rd.rot_x(0.3))
     True
     """
-def force_cross_matrix(motion: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+def force_cross_matrix(motion: Motion) -> numpy.typing.NDArray[numpy.float64]:
     """
     Force cross-product matrix crf(V) (Featherstone, "Rigid Body Dynamics Algorithms").
     
@@ -7174,7 +8143,7 @@ def force_cross_matrix(motion: typing.Any) -> numpy.typing.NDArray[numpy.float64
     >>> bool(np.allclose(rd.force_cross_matrix(V) @ F.to_vector(), V.cross_force(F).to_vector()))
     True
     """
-def forward_dynamics(body: typing.Any, state: typing.Any, force: typing.Any = None, torque: typing.Any = None, point: typing.Any = None, frame: typing.Any = 'world', gravity: typing.Any = None) -> typing.Any:
+def forward_dynamics(body: RigidBody | PlanarBody | Particle | PivotedBody | PivotedPlanarBody, state: RigidBodyState | PlanarBodyState | ParticleState | PivotedBodyState | PivotedPlanarBodyState, force: numpy.typing.ArrayLike | _Quantity | None = None, torque: numpy.typing.ArrayLike | float | _Quantity | None = None, point: numpy.typing.ArrayLike | _Quantity | None = None, frame: typing.Literal['world', 'body'] = 'world', gravity: bool | numpy.typing.ArrayLike | None = None) -> typing.Any:
     """
     Accelerations of `body` in `state` under an applied force, torque and gravity.
     
@@ -7253,7 +8222,49 @@ def forward_dynamics(body: typing.Any, state: typing.Any, force: typing.Any = No
     >>> print(f"{rd.forward_dynamics(rod, rd.PivotedPlanarBodyState(), gravity=[0.0, -9.81]).alpha:.6f}")
     -7.357500
     """
-def from_point_masses(masses: typing.Any, positions: typing.Any) -> SpatialInertia:
+def forward_kinematics(tree: Tree, q: numpy.typing.ArrayLike, v: numpy.typing.ArrayLike | None = None) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    """
+    Forward kinematics: every link's pose in W and its twist.
+    
+    X_λi = X_T X_J(q_i), X_Wi = X_Wλ X_λi, v_i = X_λi^-1 v_λ + S_i qd_i (Featherstone, Rigid Body
+    Dynamics Algorithms, Table 5.1).
+    
+    Parameters
+    ----------
+    tree : Tree
+    q : array_like, shape (nq,)
+        Configuration.
+    v : array_like, shape (nv,), optional
+        Velocity (None: zero).
+    
+    Returns
+    -------
+    R_WL : ndarray, shape (n, 3, 3)
+        Each link's orientation (link -> W coordinates).
+    p_WL : ndarray, shape (n, 3)
+        Each link's origin in W [m].
+    V_L : ndarray, shape (n, 6)
+        Each link's twist in W, expressed in the link frame, [w; v] (v: the velocity of the link's
+        origin) [rad/s, m/s].
+    
+    Raises
+    ------
+    ValueError
+        A wrong size, a non-finite value or a non-unit quaternion (naming it).
+    
+    Examples
+    --------
+    >>> tree = rd.Tree(gravity=[0.0, 0.0, -9.81])
+    >>> bob = rd.SpatialInertia(1.0, [0.0, 0.0, -1.0], 0.1 * np.eye(3))
+    >>> tree.add_link("pendulum", -1, rd.RevoluteJoint([1.0, 0.0, 0.0]), bob)
+    0
+    >>> R, p, V = rd.forward_kinematics(tree, [np.pi / 2], [1.0])
+    >>> (R[0] @ bob.com + p[0]).round(12) + 0.0  # the bob swung up to +y
+    array([0., 1., 0.])
+    >>> V[0]
+    array([1., 0., 0., 0., 0., 0.])
+    """
+def from_point_masses(masses: numpy.typing.ArrayLike, positions: numpy.typing.ArrayLike) -> SpatialInertia:
     """
     Mass properties of a set of point masses.
     
@@ -7290,7 +8301,7 @@ def from_point_masses(masses: typing.Any, positions: typing.Any) -> SpatialInert
     >>> body.mass, body.com, body.inertia_com.diagonal()
     (2.0, array([0., 0., 0.]), array([0., 2., 2.]))
     """
-def hat(v: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+def hat(v: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
     """
     Skew-symmetric cross-product matrices.
     
@@ -7323,7 +8334,7 @@ def hat(v: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
     >>> np.cross([1.0, 2.0, 3.0], [4.0, 5.0, 6.0])
     array([-3.,  6., -3.])
     """
-def hollow_cylinder(outer_radius: typing.Any, inner_radius: typing.Any, height: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
+def hollow_cylinder(outer_radius: float, inner_radius: float, height: float, *, mass: float | None = None, density: float | None = None) -> SpatialInertia:
     """
     Mass properties of a thick tube (open ends), axis z.
     
@@ -7369,7 +8380,7 @@ def hollow_cylinder(outer_radius: typing.Any, inner_radius: typing.Any, height: 
     >>> rd.hollow_cylinder(1.0, 0.0, 2.0, mass=1.0).is_approx(rd.solid_cylinder(1.0, 2.0, mass=1.0))
     True
     """
-def hollow_sphere(outer_radius: typing.Any, inner_radius: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
+def hollow_sphere(outer_radius: float, inner_radius: float, *, mass: float | None = None, density: float | None = None) -> SpatialInertia:
     """
     Mass properties of a thick spherical shell (a solid sphere with a concentric spherical hole).
     
@@ -7414,7 +8425,7 @@ def hollow_sphere(outer_radius: typing.Any, inner_radius: typing.Any, *, mass: t
     >>> rd.hollow_sphere(2.0, 1.0, mass=1.0).inertia_com.diagonal().round(12)
     array([1.77142857, 1.77142857, 1.77142857])
     """
-def inertia_report(mass: typing.Any, inertia_com: typing.Any, scale: typing.Any = 0.0) -> InertiaReport:
+def inertia_report(mass: float, inertia_com: numpy.typing.ArrayLike, scale: float = 0.0) -> InertiaReport:
     """
     Validity report of a mass and a rotational inertia about the centre of mass.
     
@@ -7458,7 +8469,7 @@ def inertia_report(mass: typing.Any, inertia_com: typing.Any, scale: typing.Any 
     >>> r.triangle_margins.round(12)
     array([ 2.33333333,  1.66666667, -0.33333333])
     """
-def integrate_density_over_box(rho: typing.Any, lower: typing.Any, upper: typing.Any, order: typing.Any = 6, subdivisions: typing.Any = 2) -> DensityIntegral:
+def integrate_density_over_box(rho: collections.abc.Callable[..., typing.Any], lower: numpy.typing.ArrayLike, upper: numpy.typing.ArrayLike, order: int = 6, subdivisions: int = 2) -> DensityIntegral:
     """
     Mass properties of a variable density over a box, by Gauss-Legendre quadrature.
     
@@ -7504,7 +8515,7 @@ def integrate_density_over_box(rho: typing.Any, lower: typing.Any, upper: typing
     >>> f"{d.inertia.mass:.12f}", f"{d.inertia.com[0]:.12f}", d.mass_error < 1e-12
     ('1.500000000000', '0.555555555556', True)
     """
-def integrate_density_over_mesh(rho: typing.Any, vertices: typing.Any, faces: typing.Any, order: typing.Any = 4) -> DensityIntegral:
+def integrate_density_over_mesh(rho: collections.abc.Callable[..., typing.Any], vertices: numpy.typing.ArrayLike, faces: numpy.typing.ArrayLike, order: int = 4) -> DensityIntegral:
     """
     Mass properties of a variable density over the solid bounded by a closed mesh.
     
@@ -7551,7 +8562,7 @@ def integrate_density_over_mesh(rho: typing.Any, vertices: typing.Any, faces: ty
     >>> d.inertia.is_approx(rd.solid_tetrahedron(v, density=6.0)), d.evaluations
     (True, 2304)
     """
-def inverse_dynamics(body: typing.Any, state: typing.Any, a_W: typing.Any = None, alpha_B: typing.Any = None, gravity: typing.Any = None) -> typing.Any:
+def inverse_dynamics(body: RigidBody | PlanarBody | Particle | PivotedBody | PivotedPlanarBody, state: RigidBodyState | PlanarBodyState | ParticleState | PivotedBodyState | PivotedPlanarBodyState, a_W: numpy.typing.ArrayLike | _Quantity | None = None, alpha_B: numpy.typing.ArrayLike | float | _Quantity | None = None, gravity: bool | numpy.typing.ArrayLike | None = None) -> typing.Any:
     """
     The applied loads a motion requires, reduced to the centre of mass (undoes forward_dynamics).
     
@@ -7624,7 +8635,7 @@ def inverse_dynamics(body: typing.Any, state: typing.Any, a_W: typing.Any = None
     >>> rd.inverse_dynamics(top, level, alpha_B=[0, 0, 0], gravity=True).tau_O_B.round(12)
     array([ 0.   , -4.905,  0.   ])
     """
-def jacobi_ellipj(u: typing.Any, m: typing.Any, mc: typing.Any = None) -> typing.Any:
+def jacobi_ellipj(u: float | numpy.typing.ArrayLike, m: float, mc: float | None = None) -> typing.Any:
     """
     Jacobi elliptic functions sn(u|m), cn(u|m), dn(u|m).
     
@@ -7670,7 +8681,57 @@ def jacobi_ellipj(u: typing.Any, m: typing.Any, mc: typing.Any = None) -> typing
     >>> bool(np.allclose(sn**2 + cn**2, 1.0) and np.allclose(dn**2 + 0.7 * sn**2, 1.0))
     True
     """
-def kinetic_energy(body: typing.Any, state: typing.Any) -> typing.Any:
+def kepler_propagate(r_W: numpy.typing.ArrayLike, v_W: numpy.typing.ArrayLike, mu: float, t: float | numpy.typing.ArrayLike) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    """
+    Position and velocity a time t after a given state on its two-body (Keplerian) orbit.
+    
+    Through the elements (`state_to_elements`): the mean anomaly advances at the mean motion, M = M0 + n t,
+    n = sqrt(mu/a^3) (ellipse), sqrt(mu/(-a)^3) (hyperbola), sqrt(mu/p^3) (parabola, Barker's equation), then
+    the true anomaly by Kepler's equation (`mean_to_true_anomaly`); the other elements are constant (Curtis,
+    "Orbital Mechanics for Engineering Students", ch. 3). Exact but for round-off: no step size.
+    
+    Parameters
+    ----------
+    r_W : array_like, shape (3,) or (n, 3)
+        Position of the body relative to the central body's centre, in the inertial frame W [m].
+    v_W : array_like, shape (3,) or (n, 3)
+        Velocity of the body relative to the central body, in W [m/s]; not parallel to `r_W`.
+    mu : float
+        Gravitational parameter G M of the central body [m^3/s^2], > 0 (or a pint quantity).
+    t : float or array_like, shape (n,)
+        Time after the given state [s], any sign (or a pint quantity).
+    
+    Returns
+    -------
+    r_W : ndarray, shape (3,) or (n, 3)
+        Position at t, in W [m].
+    v_W : ndarray, shape (3,) or (n, 3)
+        Velocity at t, in W [m/s].
+    
+    Raises
+    ------
+    ValueError
+        `mu` not > 0, r = 0 (the message names `r_W`), `t` not finite, or as below.
+    ValueError
+        A non-finite entry or a wrong shape (the message names `r_W` or `v_W` and, in a stack, the item),
+        stacks of different lengths, or r x v = 0 (the message names `r_W, v_W`: a rectilinear orbit has no
+        plane).
+    
+    See Also
+    --------
+    state_to_elements, mean_to_true_anomaly
+    
+    Examples
+    --------
+    One period later the body is back (the kepler scene's orbit: a = 7000 km, e = 0.1, T = 5828.5 s):
+    
+    >>> mu = 398600.4418e9
+    >>> r0, v0 = [6300e3, 0.0, 0.0], [0.0, 8342.475803771201, 0.0]
+    >>> r, v = rd.kepler_propagate(r0, v0, mu, 2 * np.pi * np.sqrt(7000e3**3 / mu))
+    >>> np.allclose(r, r0, rtol=0, atol=1e-6), np.allclose(v, v0, rtol=0, atol=1e-9)
+    (True, True)
+    """
+def kinetic_energy(body: RigidBody | PlanarBody | Particle, state: RigidBodyState | PlanarBodyState | ParticleState) -> typing.Any:
     """
     Kinetic energy [J], split into its translational and rotational parts.
     
@@ -7716,7 +8777,7 @@ def kinetic_energy(body: typing.Any, state: typing.Any) -> typing.Any:
     >>> rd.kinetic_energy(body, s0).total, f"{rd.kinetic_energy(body, s1).total:.12f}"
     (1.57, '1.570000000000')
     """
-def linear_momentum(body: typing.Any, state: typing.Any) -> typing.Any:
+def linear_momentum(body: RigidBody | PlanarBody | Particle, state: RigidBodyState | PlanarBodyState | ParticleState) -> typing.Any:
     """
     Linear momentum m v_W [kg m/s] of the centre of mass, in W.
     
@@ -7749,7 +8810,7 @@ def linear_momentum(body: typing.Any, state: typing.Any) -> typing.Any:
     >>> rd.linear_momentum(rd.Particle(3.0), rd.ParticleState(v_W=[0.0, 2.0, 0.0]))
     array([0., 6., 0.])
     """
-def matrix_to_euler(seq: typing.Any, R: typing.Any, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+def matrix_to_euler(seq: str, R: numpy.typing.ArrayLike, *, degrees: bool = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Euler angles of rotation matrices.
     
@@ -7807,7 +8868,7 @@ def matrix_to_euler(seq: typing.Any, R: typing.Any, *, degrees: typing.Any = Fal
     >>> rd.matrix_to_euler("ZXZ", R).round(12)
     array([ 0.4,  1. , -0.7])
     """
-def matrix_to_quat(R: typing.Any, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+def matrix_to_quat(R: numpy.typing.ArrayLike, scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Unit quaternion of rotation matrices, canonical sign w >= 0.
     
@@ -7849,7 +8910,7 @@ def matrix_to_quat(R: typing.Any, scalar_first: typing.Any = False) -> numpy.typ
     >>> rd.matrix_to_quat(np.eye(3), scalar_first=True)
     array([1., 0., 0., 0.])
     """
-def matrix_to_rotvec(R: typing.Any, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+def matrix_to_rotvec(R: numpy.typing.ArrayLike, *, degrees: bool = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Logarithm map of rotation matrices: rotation vectors angle * axis.
     
@@ -7889,12 +8950,88 @@ def matrix_to_rotvec(R: typing.Any, *, degrees: typing.Any = False) -> numpy.typ
     >>> rd.matrix_to_rotvec(np.diag([-1.0, 1.0, -1.0]), degrees=True).round(9)
     array([  0., 180.,   0.])
     """
+def mean_to_eccentric_anomaly(M: float | numpy.typing.ArrayLike, e: float | numpy.typing.ArrayLike) -> typing.Any:
+    """
+    Eccentric (ellipse) or hyperbolic (hyperbola) anomaly of the mean anomaly: Kepler's equation solved.
+    
+    Solves M = E - e sin E (0 <= e < 1; M reduced to (-pi, pi], its revolutions kept) or M = e sinh H - H
+    (e > 1) to round-off: a starter from the cubic (1 - e) x + e x^3/6 = M near periapsis (exact as e -> 1)
+    or Danby's M + 0.85 e, then Halley's iteration kept inside a bracket of the root, bisecting where a step
+    would leave it, for at most 200 steps (3 to 5 typically): it always returns.
+    
+    Parameters
+    ----------
+    M : float or array_like, shape (n,)
+        Mean anomaly [rad], any finite value.
+    e : float or array_like, shape (n,)
+        Eccentricity, finite and >= 0: 0 <= e < 1 an ellipse, e > 1 a hyperbola.
+    
+    Returns
+    -------
+    float or ndarray, shape (n,)
+        E or H [rad] with Kepler's equation satisfied to round-off.
+    
+    Raises
+    ------
+    ValueError
+        A non-finite value, e < 0 or e = 1 (a parabola: `mean_to_true_anomaly` solves Barker's equation)
+        (the message names the argument and, in a stack, the item).
+    
+    See Also
+    --------
+    eccentric_to_mean_anomaly, mean_to_true_anomaly
+    
+    Examples
+    --------
+    Curtis's Example 3.2 (M = 3.6029 rad, e = 0.37255: E = 3.4794 rad), and the residual:
+    
+    >>> E = rd.mean_to_eccentric_anomaly(3.6029, 0.37255)
+    >>> round(E, 4), bool(abs(E - 0.37255 * np.sin(E) - 3.6029) < 1e-15)
+    (3.4794, True)
+    """
+def mean_to_true_anomaly(M: float | numpy.typing.ArrayLike, e: float | numpy.typing.ArrayLike) -> typing.Any:
+    """
+    True anomaly of the mean anomaly, for every conic: where the body is a time M/n after periapsis.
+    
+    Kepler's equation solved (`mean_to_eccentric_anomaly`) for e != 1, then `eccentric_to_true_anomaly`;
+    Barker's cubic D^3 + 3 D = 6 M in closed form for the parabola e = 1 (nu = 2 atan D). Keeps the
+    revolutions of an ellipse's M.
+    
+    Parameters
+    ----------
+    M : float or array_like, shape (n,)
+        Mean anomaly [rad].
+    e : float or array_like, shape (n,)
+        Eccentricity, finite and >= 0 (1 included).
+    
+    Returns
+    -------
+    float or ndarray, shape (n,)
+        nu [rad]; for e >= 1 in (-acos(-1/e), acos(-1/e)).
+    
+    Raises
+    ------
+    ValueError
+        A non-finite value or e < 0 (the message names the argument).
+    
+    See Also
+    --------
+    true_to_mean_anomaly, mean_to_eccentric_anomaly
+    
+    Examples
+    --------
+    Curtis's Example 3.2: 3 h after perigee on an orbit of e = 0.37255 and period 18834 s, nu = 193.2 deg:
+    
+    >>> M = 2 * np.pi * 10800 / 18834.0
+    >>> round(float(np.degrees(rd.mean_to_true_anomaly(M, 0.37255))), 1)
+    193.2
+    """
 def mesh_shell(vertices: typing.Any, faces: typing.Any, *, mass: typing.Any = None, density: typing.Any = None, weld_tolerance: typing.Any = None) -> SpatialInertia:
     """
     Thin shell made of the faces (any orientation, need not be closed): vertices (n, 3) [m], faces
     (f, 3), welded as in solid_mesh (weld_tolerance). Give exactly one of mass= [kg] or density= [kg/m^2].
     """
-def mesh_symmetry_planes(vertices: typing.Any, faces: typing.Any, tolerance: typing.Any = 1e-09, *, weld_tolerance: typing.Any = None) -> list:
+def mesh_symmetry_planes(vertices: numpy.typing.ArrayLike, faces: numpy.typing.ArrayLike, tolerance: float = 1e-09, *, weld_tolerance: float | None = None) -> list:
     """
     Planes of symmetry of the uniform solid bounded by a closed, outward-oriented mesh.
     
@@ -7940,7 +9077,7 @@ def mesh_symmetry_planes(vertices: typing.Any, faces: typing.Any, tolerance: typ
     >>> len(rd.mesh_symmetry_planes(v, faces))
     3
     """
-def mesh_volume(vertices: typing.Any, faces: typing.Any) -> float:
+def mesh_volume(vertices: numpy.typing.ArrayLike, faces: numpy.typing.ArrayLike) -> float:
     """
     Signed volume enclosed by a triangle mesh.
     
@@ -8013,7 +9150,7 @@ def methods() -> list:
     >>> rk4["order"], rk4["evaluations"], f"{rk4['stability_limit']:.6f}"  # 2 sqrt(2)
     (4, 4, '2.828427')
     """
-def motion_cross_matrix(motion: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+def motion_cross_matrix(motion: Motion) -> numpy.typing.NDArray[numpy.float64]:
     """
     Motion cross-product matrix crm(V) (Featherstone, "Rigid Body Dynamics Algorithms").
     
@@ -8047,7 +9184,7 @@ def motion_cross_matrix(motion: typing.Any) -> numpy.typing.NDArray[numpy.float6
     >>> bool(np.allclose(rd.motion_cross_matrix(V) @ V.to_vector(), 0.0))  # V x V = 0
     True
     """
-def mrp_to_quat(mrp: typing.Any, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+def mrp_to_quat(mrp: numpy.typing.ArrayLike, scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Unit quaternion of modified Rodrigues parameters.
     
@@ -8083,7 +9220,7 @@ def mrp_to_quat(mrp: typing.Any, scalar_first: typing.Any = False) -> numpy.typi
     >>> rd.angular_distance(rd.mrp_to_quat(p), rd.mrp_to_quat(-p / (p @ p))) < 1e-12
     True
     """
-def nearest_rotation(M: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+def nearest_rotation(M: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
     """
     The rotation matrix nearest to a matrix in the Frobenius norm (orthogonal Procrustes problem).
     
@@ -8125,7 +9262,7 @@ def nearest_rotation(M: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
            [0., 1., 0.],
            [0., 0., 1.]])
     """
-def nearest_valid_inertia(inertia: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+def nearest_valid_inertia(inertia: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
     """
     Nearest rotational inertia that satisfies the triangle inequality (an explicit repair).
     
@@ -8160,7 +9297,94 @@ def nearest_valid_inertia(inertia: typing.Any) -> numpy.typing.NDArray[numpy.flo
     >>> rd.inertia_report(1.0, J).valid()
     True
     """
-def point_acceleration(K_AF: typing.Any, p_FQ_F: typing.Any, v_FQ_F: typing.Any, a_FQ_F: typing.Any) -> PointAcceleration:
+def orbit_frame_angular_velocity(r_W: numpy.typing.ArrayLike, v_W: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Angular velocity w_WO_W = (r x v)/|r|^2 of the orbit frames (LVLH and RSW alike) in W, expressed in W.
+    
+    The radius vector turns about the orbit normal at h/r^2 (h = r^2 dtheta/dt): on a circular orbit the
+    orbit rate n = sqrt(mu/r^3), on an elliptic one faster at periapsis than at apoapsis. Exact for an
+    acceleration along r (a Keplerian orbit); an acceleration out of the orbit plane would add a component
+    along r, not included. In LVLH coordinates it is (0, -h/r^2, 0), in RSW (0, 0, h/r^2).
+    
+    Parameters
+    ----------
+    r_W : array_like, shape (3,) or (n, 3)
+        Position of the body relative to the central body's centre, in the inertial frame W [m].
+    v_W : array_like, shape (3,) or (n, 3)
+        Velocity of the body relative to the central body, in W [m/s]; not parallel to `r_W`.
+    
+    Returns
+    -------
+    ndarray, shape (3,) or (n, 3)
+        w_WO_W [rad/s].
+    
+    Raises
+    ------
+    ValueError
+        A non-finite entry or a wrong shape (the message names `r_W` or `v_W` and, in a stack, the item),
+        stacks of different lengths, or r x v = 0 (the message names `r_W, v_W`: a rectilinear orbit has no
+        plane).
+    
+    See Also
+    --------
+    orbit_frame_rotation
+    
+    Examples
+    --------
+    A circular orbit of radius 7000 km about the Earth turns at n = sqrt(mu/r^3):
+    
+    >>> mu, r = 3.986004418e14, 7.0e6
+    >>> w = rd.orbit_frame_angular_velocity([r, 0.0, 0.0], [0.0, np.sqrt(mu / r), 0.0])
+    >>> np.allclose(w, [0.0, 0.0, np.sqrt(mu / r**3)], rtol=1e-15, atol=0.0)
+    True
+    """
+def orbit_frame_rotation(r_W: numpy.typing.ArrayLike, v_W: numpy.typing.ArrayLike, frame: str = 'lvlh') -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Rotation R_WO from an orbit frame O (LVLH or RSW) to the inertial frame W.
+    
+    The columns of R_WO are O's axes expressed in W, from the body's position and velocity. Use
+    `matrix_to_quat` for q_WO.
+    
+    Parameters
+    ----------
+    r_W : array_like, shape (3,) or (n, 3)
+        Position of the body relative to the central body's centre, in the inertial frame W [m].
+    v_W : array_like, shape (3,) or (n, 3)
+        Velocity of the body relative to the central body, in W [m/s]; not parallel to `r_W`.
+    frame : str, default 'lvlh'
+        'lvlh': z_O = -r/|r| (nadir), y_O = -h/|h| (opposite the orbit normal h = r x v), x_O = y_O x z_O
+        (along-track; along v on a circular orbit), the attitude texts' LVLH with roll, pitch and yaw axes
+        x, y, z (Wie, "Space Vehicle Dynamics and Control"). 'rsw': Hill's frame, x_O = r/|r| (R, radial out),
+        z_O = h/|h| (W, the orbit normal), y_O = z_O x x_O (S, along-track) (Vallado, "Fundamentals of
+        Astrodynamics and Applications").
+    
+    Returns
+    -------
+    ndarray, shape (3, 3) or (n, 3, 3)
+        R_WO, orthonormal with det +1.
+    
+    Raises
+    ------
+    ValueError
+        A non-finite entry or a wrong shape (the message names `r_W` or `v_W` and, in a stack, the item),
+        stacks of different lengths, or r x v = 0 (the message names `r_W, v_W`: a rectilinear orbit has no
+        plane).
+        `frame` not 'lvlh' or 'rsw'.
+    
+    See Also
+    --------
+    orbit_frame_angular_velocity, attitude_from_orbit_frame
+    
+    Examples
+    --------
+    Below the centre on -z_W, moving along +x_W: LVLH's z (third column) points up +z_W, to the centre:
+    
+    >>> rd.orbit_frame_rotation([0.0, 0.0, -7e6], [7.5e3, 0.0, 0.0]).round(12) + 0.0
+    array([[1., 0., 0.],
+           [0., 1., 0.],
+           [0., 0., 1.]])
+    """
+def point_acceleration(K_AF: FrameKinematics, p_FQ_F: numpy.typing.ArrayLike, v_FQ_F: numpy.typing.ArrayLike, a_FQ_F: numpy.typing.ArrayLike) -> PointAcceleration:
     """
     Acceleration of a point Q moving in frame F, seen from frame A, term by term.
     
@@ -8205,7 +9429,7 @@ def point_acceleration(K_AF: typing.Any, p_FQ_F: typing.Any, v_FQ_F: typing.Any,
     >>> rd.point_acceleration(K_AF, [0, 0, 0], [1.0, 0, 0], [0, 0, 0]).coriolis
     array([0., 4., 0.])
     """
-def point_inertia(mass: typing.Any, r: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+def point_inertia(mass: float, r: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
     """
     Rotational inertia of a point mass about the origin.
     
@@ -8242,7 +9466,7 @@ def point_inertia(mass: typing.Any, r: typing.Any) -> numpy.typing.NDArray[numpy
            [ 0., 18.,  0.],
            [ 0.,  0.,  0.]])
     """
-def point_velocity(K_AF: typing.Any, p_FQ_F: typing.Any, v_FQ_F: typing.Any) -> PointVelocity:
+def point_velocity(K_AF: FrameKinematics, p_FQ_F: numpy.typing.ArrayLike, v_FQ_F: numpy.typing.ArrayLike) -> PointVelocity:
     """
     Velocity of a point Q moving in frame F, seen from frame A, term by term.
     
@@ -8282,7 +9506,7 @@ def point_velocity(K_AF: typing.Any, p_FQ_F: typing.Any, v_FQ_F: typing.Any) -> 
     >>> rd.point_velocity(K_AF, [1.0, 0.0, 0.0], [0.0, 0.0, 0.0]).total
     array([0., 2., 0.])
     """
-def potential_energy(body: typing.Any, state: typing.Any, gravity: typing.Any = None) -> typing.Any:
+def potential_energy(body: RigidBody | PlanarBody | Particle, state: RigidBodyState | PlanarBodyState | ParticleState, gravity: bool | numpy.typing.ArrayLike | None = None) -> typing.Any:
     """
     Potential energy of uniform gravity, V = -m g_W.p_W [J] (zero at the origin of W).
     
@@ -8319,7 +9543,7 @@ def potential_energy(body: typing.Any, state: typing.Any, gravity: typing.Any = 
     >>> print(f"{V:.6f}")  # m g h
     196.200000
     """
-def power(state: typing.Any, f_W: typing.Any, tau_B: typing.Any = None) -> typing.Any:
+def power(state: RigidBodyState | PlanarBodyState | ParticleState, f_W: numpy.typing.ArrayLike | _Quantity, tau_B: numpy.typing.ArrayLike | float | _Quantity | None = None) -> typing.Any:
     """
     Power [W] of a force at the centre of mass and a torque about it: f_W.v_W + tau_B.w_B.
     
@@ -8354,7 +9578,7 @@ def power(state: typing.Any, f_W: typing.Any, tau_B: typing.Any = None) -> typin
     >>> rd.power(rd.RigidBodyState(v_W=[1, 0, 0], w_B=[0, 0, 2]), f_W=[3, 0, 0], tau_B=[0, 0, 0.5])
     4.0
     """
-def principal_axes(inertia: typing.Any) -> PrincipalAxes:
+def principal_axes(inertia: numpy.typing.ArrayLike) -> PrincipalAxes:
     """
     Principal moments and axes of rotational inertias (Craig, "Principal Axes").
     
@@ -8395,7 +9619,7 @@ def principal_axes(inertia: typing.Any) -> PrincipalAxes:
     array([[1., 1., 1.],
            [1., 2., 3.]])
     """
-def quat_canonical(q: typing.Any, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+def quat_canonical(q: numpy.typing.ArrayLike, scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     The canonical quaternion of each rotation (q and -q are the same rotation).
     
@@ -8431,7 +9655,7 @@ def quat_canonical(q: typing.Any, scalar_first: typing.Any = False) -> numpy.typ
     array([[ 0. , -0.6,  0. ,  0.8],
            [ 0. ,  1. ,  0. ,  0. ]])
     """
-def quat_integrate(q: typing.Any, w: typing.Any, dt: typing.Any, frame: typing.Any = 'body', scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+def quat_integrate(q: numpy.typing.ArrayLike, w: numpy.typing.ArrayLike, dt: float, frame: typing.Literal['body', 'world'] = 'body', scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Exact attitude update for an angular velocity constant over a step.
     
@@ -8483,7 +9707,7 @@ def quat_integrate(q: typing.Any, w: typing.Any, dt: typing.Any, frame: typing.A
     >>> rd.quat_to_rotvec(q).round(12)
     array([0.        , 0.        , 1.57079633])
     """
-def quat_inverse(q: typing.Any, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+def quat_inverse(q: numpy.typing.ArrayLike, scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Inverse (conjugate) of unit quaternions.
     
@@ -8520,7 +9744,7 @@ def quat_inverse(q: typing.Any, scalar_first: typing.Any = False) -> numpy.typin
     >>> rd.quat_multiply(q, rd.quat_inverse(q)).round(12)
     array([0., 0., 0., 1.])
     """
-def quat_multiply(q1: typing.Any, q2: typing.Any, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+def quat_multiply(q1: numpy.typing.ArrayLike, q2: numpy.typing.ArrayLike, scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Hamilton product q1 ⊗ q2 of unit quaternions.
     
@@ -8557,7 +9781,7 @@ def quat_multiply(q1: typing.Any, q2: typing.Any, scalar_first: typing.Any = Fal
     >>> rd.quat_multiply(q, q).round(12)
     array([0., 0., 1., 0.])
     """
-def quat_normalize(q: typing.Any, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+def quat_normalize(q: numpy.typing.ArrayLike, scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Quaternions scaled to unit norm, q / |q|.
     
@@ -8590,7 +9814,7 @@ def quat_normalize(q: typing.Any, scalar_first: typing.Any = False) -> numpy.typ
     >>> rd.quat_normalize([0.0, 0.0, -3.0, 4.0])
     array([ 0. ,  0. , -0.6,  0.8])
     """
-def quat_rate(q: typing.Any, w: typing.Any, frame: typing.Any = 'body', scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+def quat_rate(q: numpy.typing.ArrayLike, w: numpy.typing.ArrayLike, frame: typing.Literal['body', 'world'] = 'body', scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Quaternion rate dq/dt of an attitude turning with an angular velocity.
     
@@ -8638,7 +9862,7 @@ def quat_rate(q: typing.Any, w: typing.Any, frame: typing.Any = 'body', scalar_f
     >>> f"{q @ dq:.12f}", f"{np.linalg.norm(dq):.12f}"
     ('0.000000000000', '1.000000000000')
     """
-def quat_rotate(q: typing.Any, v: typing.Any, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+def quat_rotate(q: numpy.typing.ArrayLike, v: numpy.typing.ArrayLike, scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Vectors rotated actively by unit quaternions, R(q) v.
     
@@ -8680,7 +9904,7 @@ def quat_rotate(q: typing.Any, v: typing.Any, scalar_first: typing.Any = False) 
     array([[0., 1., 0.],
            [0., 0., 2.]])
     """
-def quat_to_axis_angle(q: typing.Any, scalar_first: typing.Any = False, *, degrees: typing.Any = False) -> tuple[numpy.typing.NDArray[numpy.float64], typing.Any]:
+def quat_to_axis_angle(q: numpy.typing.ArrayLike, scalar_first: bool = False, *, degrees: bool = False) -> tuple[numpy.typing.NDArray[numpy.float64], typing.Any]:
     """
     Unit axis and angle in [0, pi] of unit quaternions.
     
@@ -8725,7 +9949,7 @@ def quat_to_axis_angle(q: typing.Any, scalar_first: typing.Any = False, *, degre
     >>> rd.quat_to_axis_angle([0.0, 0.0, 0.0, 1.0])
     (array([1., 0., 0.]), 0.0)
     """
-def quat_to_davenport(axes: typing.Any, order: typing.Any, q: typing.Any, scalar_first: typing.Any = False, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+def quat_to_davenport(axes: numpy.typing.ArrayLike, order: str, q: numpy.typing.ArrayLike, scalar_first: bool = False, *, degrees: bool = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Davenport angles of unit quaternions (rotations about three arbitrary axes).
     
@@ -8793,7 +10017,7 @@ def quat_to_davenport(axes: typing.Any, order: typing.Any, q: typing.Any, scalar
     >>> rd.quat_to_davenport(axes, "i", q).round(12)
     array([ 0.5, -0.3,  1.2])
     """
-def quat_to_euler(seq: typing.Any, q: typing.Any, scalar_first: typing.Any = False, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+def quat_to_euler(seq: str, q: numpy.typing.ArrayLike, scalar_first: bool = False, *, degrees: bool = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Euler angles of unit quaternions.
     
@@ -8857,7 +10081,7 @@ def quat_to_euler(seq: typing.Any, q: typing.Any, scalar_first: typing.Any = Fal
     >>> rd.quat_to_euler("zxz", rd.rotvec_to_quat([90.0, 0.0, 0.0], degrees=True), degrees=True)
     array([ 0., 90.,  0.])
     """
-def quat_to_matrix(q: typing.Any, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+def quat_to_matrix(q: numpy.typing.ArrayLike, scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Rotation matrix of unit quaternions.
     
@@ -8899,7 +10123,7 @@ def quat_to_matrix(q: typing.Any, scalar_first: typing.Any = False) -> numpy.typ
            [ 1.,  0.,  0.],
            [ 0.,  0.,  1.]])
     """
-def quat_to_mrp(q: typing.Any, scalar_first: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+def quat_to_mrp(q: numpy.typing.ArrayLike, scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Modified Rodrigues parameters of unit quaternions.
     
@@ -8939,7 +10163,7 @@ def quat_to_mrp(q: typing.Any, scalar_first: typing.Any = False) -> numpy.typing
     >>> rd.quat_to_mrp([0.0, 0.0, -1.0, 0.0]).round(12) + 0.0
     array([0., 0., 1.])
     """
-def quat_to_rotvec(q: typing.Any, scalar_first: typing.Any = False, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+def quat_to_rotvec(q: numpy.typing.ArrayLike, scalar_first: bool = False, *, degrees: bool = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Logarithm map: rotation vectors of unit quaternions.
     
@@ -8985,7 +10209,7 @@ def quat_to_rotvec(q: typing.Any, scalar_first: typing.Any = False, *, degrees: 
     >>> rd.quat_to_rotvec([0.0, 0.0, -1.0, 0.0], degrees=True).round(9) + 0.0
     array([  0.,   0., 180.])
     """
-def random_rotations(n: typing.Any = None, rng: typing.Any = None, scalar_first: typing.Any = False, canonical: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+def random_rotations(n: int | None = None, rng: numpy.random.Generator | int | None = None, scalar_first: bool = False, canonical: bool = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Rotations drawn uniformly (Haar measure) from SO(3), as unit quaternions.
     
@@ -9027,7 +10251,7 @@ def random_rotations(n: typing.Any = None, rng: typing.Any = None, scalar_first:
     >>> q.shape, np.allclose(np.linalg.norm(q, axis=1), 1.0), bool((q[:, 3] >= 0).all())
     ((1000, 4), True, True)
     """
-def relative_kinematics(K_WA: typing.Any, K_WF: typing.Any) -> FrameKinematics:
+def relative_kinematics(K_WA: FrameKinematics, K_WF: FrameKinematics) -> FrameKinematics:
     """
     Kinematics of F relative to A from those of A and of F relative to a common frame W.
     
@@ -9062,7 +10286,7 @@ def relative_kinematics(K_WA: typing.Any, K_WF: typing.Any) -> FrameKinematics:
     >>> bool(np.allclose(K.w_PF_P, K_AF.w_PF_P) and np.allclose(K.a_PF_P, K_AF.a_PF_P))
     True
     """
-def require_closed_oriented_mesh(faces: typing.Any, n_vertices: typing.Any) -> None:
+def require_closed_oriented_mesh(faces: numpy.typing.ArrayLike, n_vertices: int) -> None:
     """
     Check that triangles form a closed, consistently oriented mesh.
     
@@ -9098,7 +10322,52 @@ def require_closed_oriented_mesh(faces: typing.Any, n_vertices: typing.Any) -> N
         ...
     ValueError: faces: expected a closed mesh (every edge shared by exactly two faces), got edge (2, 1) ...
     """
-def rot_x(angle: typing.Any, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+def rnea(tree: Tree, q: numpy.typing.ArrayLike, v: numpy.typing.ArrayLike, a: numpy.typing.ArrayLike, f_ext: numpy.typing.ArrayLike | None = None) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Inverse dynamics by the recursive Newton-Euler algorithm: tau = H(q) a + C(q, v, f_ext).
+    
+    Featherstone, Rigid Body Dynamics Algorithms, Table 5.1, with the tree's gravity as the base
+    acceleration -g: the joint forces that give the acceleration a.
+    
+    Parameters
+    ----------
+    tree : Tree
+    q : array_like, shape (nq,)
+        Configuration.
+    v : array_like, shape (nv,)
+        Velocity.
+    a : array_like, shape (nv,)
+        Acceleration.
+    f_ext : array_like, shape (n, 6), optional
+        External force [n; f] on each link, in its link frame (moment about the link's origin)
+        [N m, N] (None: none).
+    
+    Returns
+    -------
+    ndarray, shape (nv,)
+        tau [N m for a rotation, N for a translation].
+    
+    Raises
+    ------
+    ValueError
+        A wrong size, a non-finite value or a non-unit quaternion (naming it).
+    
+    See Also
+    --------
+    bias_forces, crba, aba
+    
+    Examples
+    --------
+    The torque that holds the pendulum horizontal is m g l:
+    
+    >>> tree = rd.Tree(gravity=[0.0, 0.0, -9.81])
+    >>> bob = rd.SpatialInertia(1.0, [0.0, 0.0, -1.0], 0.1 * np.eye(3))
+    >>> tree.add_link("pendulum", -1, rd.RevoluteJoint([1.0, 0.0, 0.0]), bob)
+    0
+    >>> rd.rnea(tree, [np.pi / 2], [0.0], [0.0]).round(12)
+    array([9.81])
+    """
+def rot_x(angle: float | numpy.typing.ArrayLike, *, degrees: bool = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Elementary rotation matrix about x (active).
     
@@ -9134,7 +10403,7 @@ def rot_x(angle: typing.Any, *, degrees: typing.Any = False) -> numpy.typing.NDA
     >>> rd.rot_x(90.0, degrees=True).round(12) @ [0.0, 1.0, 0.0]
     array([0., 0., 1.])
     """
-def rot_y(angle: typing.Any, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+def rot_y(angle: float | numpy.typing.ArrayLike, *, degrees: bool = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Elementary rotation matrix about y (active).
     
@@ -9170,7 +10439,7 @@ def rot_y(angle: typing.Any, *, degrees: typing.Any = False) -> numpy.typing.NDA
     >>> rd.rot_y(np.pi / 2).round(12) @ [0.0, 0.0, 1.0]
     array([1., 0., 0.])
     """
-def rot_z(angle: typing.Any, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+def rot_z(angle: float | numpy.typing.ArrayLike, *, degrees: bool = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Elementary rotation matrix about z (active).
     
@@ -9207,7 +10476,7 @@ def rot_z(angle: typing.Any, *, degrees: typing.Any = False) -> numpy.typing.NDA
     array([[1., 0., 0.],
            [0., 1., 0.]])
     """
-def rotvec_to_matrix(rotvec: typing.Any, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+def rotvec_to_matrix(rotvec: numpy.typing.ArrayLike, *, degrees: bool = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Exponential map into rotation matrices (Rodrigues' formula).
     
@@ -9243,7 +10512,7 @@ def rotvec_to_matrix(rotvec: typing.Any, *, degrees: typing.Any = False) -> nump
            [ 1.,  0.,  0.],
            [ 0.,  0.,  1.]])
     """
-def rotvec_to_quat(rotvec: typing.Any, scalar_first: typing.Any = False, *, degrees: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+def rotvec_to_quat(rotvec: numpy.typing.ArrayLike, scalar_first: bool = False, *, degrees: bool = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Exponential map: unit quaternion of rotation vectors.
     
@@ -9281,7 +10550,7 @@ def rotvec_to_quat(rotvec: typing.Any, scalar_first: typing.Any = False, *, degr
     >>> rd.rotvec_to_quat([0.0, 90.0, 0.0], degrees=True)
     array([0.        , 0.70710678, 0.        , 0.70710678])
     """
-def screw_to_twist(screw: typing.Any) -> Motion:
+def screw_to_twist(screw: Screw) -> Motion:
     """
     The twist of a screw, inverse of twist_to_screw.
     
@@ -9315,7 +10584,43 @@ def screw_to_twist(screw: typing.Any) -> Motion:
     >>> rd.screw_to_twist(rd.twist_to_screw(V)) == V
     True
     """
-def simulate(model: typing.Any, initial: typing.Any, dt: typing.Any, steps: typing.Any = None, method: typing.Any = None, record_every: typing.Any = 1, loads: typing.Any = None, gravity: typing.Any = None, t0: typing.Any = 0.0, scalar_first: typing.Any = False, progress: typing.Any = None, *, duration: typing.Any = None, error: typing.Any = True) -> SimulationResult | SceneResult:
+def semi_latus_rectum(a: float | numpy.typing.ArrayLike, e: float | numpy.typing.ArrayLike) -> typing.Any:
+    """
+    Semi-latus rectum p = a (1 - e^2) of the semi-major axis: the first element of `elements_to_state`.
+    
+    Parameters
+    ----------
+    a : float or array_like, shape (n,)
+        Semi-major axis [m]: > 0 for an ellipse, < 0 for a hyperbola (a = -mu/(2 energy)).
+    e : float or array_like, shape (n,)
+        Eccentricity, finite, >= 0 and != 1 (a parabola's a is infinite: give its p).
+    
+    Returns
+    -------
+    float or ndarray, shape (n,)
+        p [m], > 0.
+    
+    Raises
+    ------
+    ValueError
+        `a` not finite, 0 or of the wrong sign for `e`, or `e` not finite, < 0 or 1 (the message names it).
+    
+    See Also
+    --------
+    elements_to_state
+    
+    Examples
+    --------
+    >>> round(rd.semi_latus_rectum(7000e3, 0.1), 6)
+    6930000.0
+    >>> rd.semi_latus_rectum(-7000e3, 2.0)
+    21000000.0
+    """
+@typing.overload
+def simulate(model: Particle | PlanarBody | RigidBody, initial: typing.Any, dt: float | _Quantity, steps: int | None = None, method: _MethodName | None = None, record_every: int = 1, loads: AppliedLoad | collections.abc.Sequence[AppliedLoad] | None = None, gravity: bool | numpy.typing.ArrayLike | None = None, t0: float | _Quantity = 0.0, scalar_first: bool = False, progress: collections.abc.Callable[..., typing.Any] | None = None, *, duration: float | _Quantity | None = None, error: bool = True) -> SimulationResult:
+    ...
+@typing.overload
+def simulate(model: PivotedBody | PivotedPlanarBody | Gyrostat | Scene | CompiledScene, initial: typing.Any, dt: float | _Quantity, steps: int | None = None, method: _MethodName | None = None, record_every: int = 1, loads: AppliedLoad | collections.abc.Sequence[AppliedLoad] | None = None, gravity: bool | numpy.typing.ArrayLike | None = None, t0: float | _Quantity = 0.0, scalar_first: bool = False, progress: collections.abc.Callable[..., typing.Any] | None = None, *, duration: float | _Quantity | None = None, error: bool = True) -> SceneResult:
     """
     Integrate a body or a scene over fixed steps and record its motion.
     
@@ -9430,7 +10735,11 @@ def simulate(model: typing.Any, initial: typing.Any, dt: typing.Any, steps: typi
     >>> r.error.verdict[-1], bool(r.error.attitude[-1] < 1e-8)
     ('reliable', True)
     """
-def simulate_batch(model: typing.Any, initial: typing.Any, dt: typing.Any, steps: typing.Any = None, method: typing.Any = None, record_every: typing.Any = 1, loads: typing.Any = None, gravity: typing.Any = None, t0: typing.Any = 0.0, threads: typing.Any = None, simd: typing.Any = False, scalar_first: typing.Any = False, progress: typing.Any = None, *, duration: typing.Any = None) -> BatchResult | BatchSceneResult:
+@typing.overload
+def simulate_batch(model: Particle | PlanarBody | RigidBody | collections.abc.Sequence[Particle | PlanarBody | RigidBody], initial: typing.Any, dt: float | numpy.typing.ArrayLike | _Quantity, steps: int | None = None, method: _MethodName | None = None, record_every: int = 1, loads: typing.Any = None, gravity: bool | numpy.typing.ArrayLike | None = None, t0: float | _Quantity = 0.0, threads: int | None = None, simd: bool = False, scalar_first: bool = False, progress: collections.abc.Callable[..., typing.Any] | None = None, *, duration: float | _Quantity | None = None) -> BatchResult:
+    ...
+@typing.overload
+def simulate_batch(model: Scene | CompiledScene | collections.abc.Sequence[Scene | CompiledScene], initial: typing.Any, dt: float | numpy.typing.ArrayLike | _Quantity, steps: int | None = None, method: _MethodName | None = None, record_every: int = 1, loads: typing.Any = None, gravity: bool | numpy.typing.ArrayLike | None = None, t0: float | _Quantity = 0.0, threads: int | None = None, simd: bool = False, scalar_first: bool = False, progress: collections.abc.Callable[..., typing.Any] | None = None, *, duration: float | _Quantity | None = None) -> BatchSceneResult:
     """
     N independent runs of a body or a scene, one per initial state, in parallel.
     
@@ -9534,7 +10843,7 @@ def simulate_batch(model: typing.Any, initial: typing.Any, dt: typing.Any, steps
     >>> drop.t[0], drop.p_W[:, -1, 2].round(12)
     (array([0., 1.]), array([-0.5, -1. , -1.5]))
     """
-def slerp(q0: typing.Any, q1: typing.Any, t: typing.Any, scalar_first: typing.Any = False, canonical: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+def slerp(q0: numpy.typing.ArrayLike, q1: numpy.typing.ArrayLike, t: float | numpy.typing.ArrayLike, scalar_first: bool = False, canonical: bool = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Spherical linear interpolation from q0 (t = 0) to q1 (t = 1): shortest path, constant rate.
     
@@ -9581,7 +10890,7 @@ def slerp(q0: typing.Any, q1: typing.Any, t: typing.Any, scalar_first: typing.An
     >>> f"{rd.quat_to_rotvec(q)[2]:.12f}", f"{np.pi / 4:.12f}"
     ('0.785398163397', '0.785398163397')
     """
-def slerp_keys(times: typing.Any, q: typing.Any, t: typing.Any, scalar_first: typing.Any = False, canonical: typing.Any = False) -> numpy.typing.NDArray[numpy.float64]:
+def slerp_keys(times: numpy.typing.ArrayLike, q: numpy.typing.ArrayLike, t: float | numpy.typing.ArrayLike, scalar_first: bool = False, canonical: bool = False) -> numpy.typing.NDArray[numpy.float64]:
     """
     Slerp through key rotations at key times.
     
@@ -9630,7 +10939,7 @@ def slerp_keys(times: typing.Any, q: typing.Any, t: typing.Any, scalar_first: ty
     array([[0.  , 0.  , 0.25],
            [0.  , 0.  , 1.  ]])
     """
-def solid_box(size: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
+def solid_box(size: numpy.typing.ArrayLike, *, mass: float | None = None, density: float | None = None) -> SpatialInertia:
     """
     Mass properties of a solid rectangular box.
     
@@ -9669,7 +10978,7 @@ def solid_box(size: typing.Any, *, mass: typing.Any = None, density: typing.Any 
     >>> rd.solid_box([1.0, 2.0, 3.0], mass=12.0).inertia_com.diagonal()  # m/12 (b^2+c^2, ...)
     array([13., 10.,  5.])
     """
-def solid_capsule(radius: typing.Any, length: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
+def solid_capsule(radius: float, length: float, *, mass: float | None = None, density: float | None = None) -> SpatialInertia:
     """
     Mass properties of a solid capsule along z: a cylinder capped by two hemispheres.
     
@@ -9715,7 +11024,7 @@ def solid_capsule(radius: typing.Any, length: typing.Any, *, mass: typing.Any = 
     >>> rd.solid_capsule(1.0, 0.0, mass=1.0).is_approx(rd.solid_sphere(1.0, mass=1.0))
     True
     """
-def solid_cone(radius: typing.Any, height: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
+def solid_cone(radius: float, height: float, *, mass: float | None = None, density: float | None = None) -> SpatialInertia:
     """
     Mass properties of a solid right circular cone, axis z.
     
@@ -9757,7 +11066,7 @@ def solid_cone(radius: typing.Any, height: typing.Any, *, mass: typing.Any = Non
     >>> rd.solid_cone(1.0, 4.0, mass=10.0).inertia_com.diagonal().round(12)
     array([7.5, 7.5, 3. ])
     """
-def solid_cylinder(radius: typing.Any, height: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
+def solid_cylinder(radius: float, height: float, *, mass: float | None = None, density: float | None = None) -> SpatialInertia:
     """
     Mass properties of a solid circular cylinder, axis z.
     
@@ -9798,7 +11107,7 @@ def solid_cylinder(radius: typing.Any, height: typing.Any, *, mass: typing.Any =
     >>> rd.solid_cylinder(1.0, 2.0, mass=12.0).inertia_com.diagonal()  # m (3r^2+h^2)/12, m r^2/2
     array([7., 7., 6.])
     """
-def solid_ellipsoid(semi_axes: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
+def solid_ellipsoid(semi_axes: numpy.typing.ArrayLike, *, mass: float | None = None, density: float | None = None) -> SpatialInertia:
     """
     Mass properties of a solid ellipsoid.
     
@@ -9848,7 +11157,7 @@ def solid_mesh(vertices: typing.Any, faces: typing.Any, *, mass: typing.Any = No
     indices), or an inward orientation. Give exactly one of mass= [kg] or density= [kg/m^3].
     (rigiddyn.solid_mesh also accepts a trimesh object.)
     """
-def solid_sphere(radius: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
+def solid_sphere(radius: float, *, mass: float | None = None, density: float | None = None) -> SpatialInertia:
     """
     Mass properties of a solid sphere.
     
@@ -9891,7 +11200,7 @@ def solid_sphere(radius: typing.Any, *, mass: typing.Any = None, density: typing
     >>> f"{rd.solid_sphere(0.1, density=1000.0).mass:.6f}"  # 4/3 pi r^3 rho
     '4.188790'
     """
-def solid_tetrahedron(vertices: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
+def solid_tetrahedron(vertices: numpy.typing.ArrayLike, *, mass: float | None = None, density: float | None = None) -> SpatialInertia:
     """
     Mass properties of a solid tetrahedron given by its vertices.
     
@@ -9930,7 +11239,7 @@ def solid_tetrahedron(vertices: typing.Any, *, mass: typing.Any = None, density:
     >>> f"{tet.mass:.12f}", tet.com
     ('1.000000000000', array([0.25, 0.25, 0.25]))
     """
-def spherical_shell(radius: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
+def spherical_shell(radius: float, *, mass: float | None = None, density: float | None = None) -> SpatialInertia:
     """
     Mass properties of a thin spherical surface.
     
@@ -9969,7 +11278,61 @@ def spherical_shell(radius: typing.Any, *, mass: typing.Any = None, density: typ
     >>> rd.spherical_shell(1.0, mass=3.0).inertia_com.diagonal()  # 2/3 m r^2
     array([2., 2., 2.])
     """
-def step(model: typing.Any, state: typing.Any, dt: typing.Any, method: typing.Any = None, loads: typing.Any = None, gravity: typing.Any = None, t: typing.Any = None) -> typing.Any:
+def state_to_elements(r_W: numpy.typing.ArrayLike, v_W: numpy.typing.ArrayLike, mu: float) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    Classical orbital elements of a position and velocity (Vallado's RV2COE).
+    
+    h = r x v, p = |h|^2/mu, the eccentricity vector e = (v x h)/mu - r/|r|, i from h, the ascending node
+    n = z_W x h (Vallado, "Fundamentals of Astrodynamics and Applications", ch. 2, RV2COE; Curtis,
+    "Orbital Mechanics for Engineering Students", algorithm 4.2). Angles are measured in the direction
+    of motion. Where an angle is undefined it is 0 and the next carries it, so `elements_to_state` gives
+    the state back:
+    
+    - equatorial (sin i < 1e-12, i = 0 or pi): raan = 0, argp = the longitude of periapsis (from x_W);
+    - circular (e < 1e-12): argp = 0, nu = the argument of latitude u (from the ascending node);
+    - both: raan = argp = 0, nu = the true longitude (from x_W).
+    
+    Below those tolerances (far above the ~1e-15 round-off of e and sin i from a state) the state given
+    back moves by at most 2 e |r| or 2 sin(i) |r|. Semi-major axis: a = p/(1 - e^2).
+    
+    Parameters
+    ----------
+    r_W : array_like, shape (3,) or (n, 3)
+        Position of the body relative to the central body's centre, in the inertial frame W [m].
+    v_W : array_like, shape (3,) or (n, 3)
+        Velocity of the body relative to the central body, in W [m/s]; not parallel to `r_W`.
+    mu : float
+        Gravitational parameter G M of the central body [m^3/s^2], > 0 (or a pint quantity).
+    
+    Returns
+    -------
+    ndarray, shape (6,) or (n, 6)
+        (p, e, i, raan, argp, nu): p [m]; e; i in [0, pi]; raan, argp in [0, 2 pi); nu in [0, 2 pi) for
+        e < 1, in (-pi, pi) for e >= 1 [rad].
+    
+    Raises
+    ------
+    ValueError
+        `mu` not > 0, r = 0 (the message names `r_W`), or as below.
+    ValueError
+        A non-finite entry or a wrong shape (the message names `r_W` or `v_W` and, in a stack, the item),
+        stacks of different lengths, or r x v = 0 (the message names `r_W, v_W`: a rectilinear orbit has no
+        plane).
+    
+    See Also
+    --------
+    elements_to_state, mean_to_true_anomaly
+    
+    Examples
+    --------
+    Vallado's Example 2-5 (km, km/s; mu = 398600.4418 km^3/s^2): e = 0.832853, i = 87.870, raan = 227.898,
+    argp = 53.385, nu = 92.335 deg:
+    
+    >>> el = rd.state_to_elements([6524.834, 6862.875, 6448.296], [4.901327, 5.533756, -1.976341], 398600.4418)
+    >>> float(round(el[1], 6)), np.degrees(el[2:]).round(3)
+    (0.832853, array([ 87.869, 227.898,  53.385,  92.335]))
+    """
+def step(model: Particle | PlanarBody | RigidBody | PivotedBody | PivotedPlanarBody | Gyrostat | Scene | CompiledScene, state: typing.Any, dt: float | _Quantity, method: _MethodName | None = None, loads: AppliedLoad | collections.abc.Sequence[AppliedLoad] | None = None, gravity: bool | numpy.typing.ArrayLike | None = None, t: float | _Quantity | None = None) -> typing.Any:
     """
     One step of `method` from `state` at time t to t + dt.
     
@@ -10032,7 +11395,7 @@ def step(model: typing.Any, state: typing.Any, dt: typing.Any, method: typing.An
     >>> rd.step(rd.Particle(1.0), rd.ParticleState(), 0.5, gravity=True).v_W.round(12)
     array([ 0.   ,  0.   , -4.905])
     """
-def symmetry_planes(masses: typing.Any, positions: typing.Any, tolerance: typing.Any = 1e-09) -> list:
+def symmetry_planes(masses: numpy.typing.ArrayLike, positions: numpy.typing.ArrayLike, tolerance: float = 1e-09) -> list:
     """
     Planes of symmetry of point masses (Craig, "Plane of Symmetry").
     
@@ -10074,7 +11437,7 @@ def symmetry_planes(masses: typing.Any, positions: typing.Any, tolerance: typing
     >>> [normal for normal, point in planes]
     [array([1., 0., 0.]), array([0., 1., 0.]), array([0., 0., 1.])]
     """
-def thin_disk(radius: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
+def thin_disk(radius: float, *, mass: float | None = None, density: float | None = None) -> SpatialInertia:
     """
     Mass properties of a thin circular disk in the xy plane.
     
@@ -10115,7 +11478,7 @@ def thin_disk(radius: typing.Any, *, mass: typing.Any = None, density: typing.An
     >>> rd.thin_disk(2.0, mass=1.0).inertia_com.diagonal()
     array([1., 1., 2.])
     """
-def thin_plate(size_x: typing.Any, size_y: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
+def thin_plate(size_x: float, size_y: float, *, mass: float | None = None, density: float | None = None) -> SpatialInertia:
     """
     Mass properties of a thin rectangular plate in the xy plane.
     
@@ -10158,7 +11521,7 @@ def thin_plate(size_x: typing.Any, size_y: typing.Any, *, mass: typing.Any = Non
     >>> rd.thin_plate(1.0, 2.0, mass=12.0).inertia_com.diagonal()
     array([4., 1., 5.])
     """
-def thin_rod(length: typing.Any, *, mass: typing.Any = None, density: typing.Any = None) -> SpatialInertia:
+def thin_rod(length: float, *, mass: float | None = None, density: float | None = None) -> SpatialInertia:
     """
     Mass properties of a thin rod along z.
     
@@ -10197,7 +11560,7 @@ def thin_rod(length: typing.Any, *, mass: typing.Any = None, density: typing.Any
     >>> rd.thin_rod(2.0, mass=3.0).inertia_com.diagonal()  # m L^2/12
     array([1., 1., 0.])
     """
-def transform_compose(R_AB: typing.Any, p_AB: typing.Any, R_BC: typing.Any, p_BC: typing.Any) -> tuple:
+def transform_compose(R_AB: numpy.typing.ArrayLike, p_AB: numpy.typing.ArrayLike, R_BC: numpy.typing.ArrayLike, p_BC: numpy.typing.ArrayLike) -> tuple:
     """
     Compose rigid transforms item by item, X_AC = X_AB * X_BC, on arrays.
     
@@ -10240,7 +11603,7 @@ def transform_compose(R_AB: typing.Any, p_AB: typing.Any, R_BC: typing.Any, p_BC
     >>> bool(np.allclose(R, rd.rot_z(np.pi))), p.round(12)
     (True, array([1., 1., 0.]))
     """
-def transform_points(R_AB: typing.Any, p_AB: typing.Any, p_B: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+def transform_points(R_AB: numpy.typing.ArrayLike, p_AB: numpy.typing.ArrayLike, p_B: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
     """
     Map points from frame B to frame A item by item: p_A = R_AB p_B + p_AB, on arrays.
     
@@ -10277,7 +11640,7 @@ def transform_points(R_AB: typing.Any, p_AB: typing.Any, p_B: typing.Any) -> num
     array([[1., 1., 0.],
            [0., 0., 0.]])
     """
-def transport_derivative(w_AB: typing.Any, u: typing.Any, du_dt_in_B: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+def transport_derivative(w_AB: numpy.typing.ArrayLike, u: numpy.typing.ArrayLike, du_dt_in_B: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
     """
     Transport theorem: the derivative of a vector seen from A, from its derivative seen from B.
     
@@ -10313,7 +11676,88 @@ def transport_derivative(w_AB: typing.Any, u: typing.Any, du_dt_in_B: typing.Any
     >>> rd.transport_derivative([0.0, 0.0, 1.0], [1.0, 0.0, 0.0], [0.0, 0.0, 0.0])
     array([0., 1., 0.])
     """
-def twist_to_screw(twist: typing.Any) -> Screw:
+def true_to_eccentric_anomaly(nu: float | numpy.typing.ArrayLike, e: float | numpy.typing.ArrayLike) -> typing.Any:
+    """
+    Eccentric anomaly E (ellipse) or hyperbolic anomaly H (hyperbola) of the true anomaly.
+    
+    tan(E/2) = sqrt((1 - e)/(1 + e)) tan(nu/2) for 0 <= e < 1, keeping nu's revolutions (E and nu differ
+    by less than pi); tanh(H/2) = sqrt((e - 1)/(e + 1)) tan(nu/2) for e > 1 (Curtis, "Orbital Mechanics
+    for Engineering Students", ch. 3).
+    
+    Parameters
+    ----------
+    nu : float or array_like, shape (n,)
+        True anomaly [rad], the angle from periapsis to the body in the direction of motion; for a
+        hyperbola within the asymptotes, 1 + e cos(nu) > 0.
+    e : float or array_like, shape (n,)
+        Eccentricity, finite and >= 0: 0 <= e < 1 an ellipse, e > 1 a hyperbola.
+    
+    Returns
+    -------
+    float or ndarray, shape (n,)
+        E or H [rad] (an array when either argument is one).
+    
+    Raises
+    ------
+    ValueError
+        A non-finite value, e < 0, e = 1 (a parabola has no eccentric anomaly) or a hyperbola's `nu`
+        beyond its asymptotes (the message names the argument and, in a stack, the item).
+    
+    See Also
+    --------
+    eccentric_to_true_anomaly, eccentric_to_mean_anomaly, true_to_mean_anomaly
+    
+    Examples
+    --------
+    At periapsis and apoapsis the anomalies agree; a circle has E = nu:
+    
+    >>> rd.true_to_eccentric_anomaly([0.0, np.pi], 0.5).round(12)
+    array([0.        , 3.14159265])
+    >>> rd.true_to_eccentric_anomaly(1.0, 0.0)
+    1.0
+    """
+def true_to_mean_anomaly(nu: float | numpy.typing.ArrayLike, e: float | numpy.typing.ArrayLike) -> typing.Any:
+    """
+    Mean anomaly of the true anomaly, for every conic.
+    
+    Through the eccentric or hyperbolic anomaly for e != 1 (`true_to_eccentric_anomaly`,
+    `eccentric_to_mean_anomaly`); Barker's equation M = D/2 + D^3/6, D = tan(nu/2), for the parabola
+    e = 1 (Curtis, "Orbital Mechanics for Engineering Students", sec. 3.5), where M = sqrt(mu/p^3) t.
+    
+    Parameters
+    ----------
+    nu : float or array_like, shape (n,)
+        True anomaly [rad]; for e >= 1 within the asymptotes, 1 + e cos(nu) > 0.
+    e : float or array_like, shape (n,)
+        Eccentricity, finite and >= 0 (1 included).
+    
+    Returns
+    -------
+    float or ndarray, shape (n,)
+        M [rad].
+    
+    Raises
+    ------
+    ValueError
+        A non-finite value, e < 0 or `nu` beyond the asymptotes (the message names the argument).
+    
+    Warns
+    -----
+    RuntimeWarning
+        M overflows (nu within about 1e-100 rad of a hyperbola's asymptote).
+    
+    See Also
+    --------
+    mean_to_true_anomaly
+    
+    Examples
+    --------
+    A parabola at nu = 90 deg: D = 1, M = 1/2 + 1/6:
+    
+    >>> round(rd.true_to_mean_anomaly(np.pi / 2, 1.0), 15)
+    0.666666666666667
+    """
+def twist_to_screw(twist: Motion) -> Screw:
     """
     The screw (instantaneous screw axis) of a twist.
     
@@ -10350,7 +11794,7 @@ def twist_to_screw(twist: typing.Any) -> Screw:
     >>> rd.twist_to_screw(rd.Motion(linear=[0.0, 0.0, 3.0])).pitch
     inf
     """
-def vee(S: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+def vee(S: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
     """
     Vectors of skew-symmetric matrices, the inverse of `hat`.
     
@@ -10382,7 +11826,7 @@ def vee(S: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
     >>> rd.vee(rd.hat([1.0, 2.0, 3.0]) + np.ones((3, 3)))
     array([1., 2., 3.])
     """
-def weld_vertices(vertices: typing.Any, faces: typing.Any, tolerance: typing.Any = None) -> WeldedMesh:
+def weld_vertices(vertices: numpy.typing.ArrayLike, faces: numpy.typing.ArrayLike, tolerance: float | None = None) -> WeldedMesh:
     """
     Merge vertices closer than a tolerance, as solid_mesh does before integrating.
     
