@@ -808,7 +808,8 @@ void bind_spatial_inertia(py::module_& m) {
           ">>> box = rd.solid_box([1.0, 2.0, 3.0], mass=12.0)\n"
           ">>> box.admits_symmetry_plane([1.0, 0, 0]), box.admits_symmetry_plane([1.0, 1.0, 0])\n"
           "(True, False)")
-      .def(py::self + py::self, "Composite of two bodies expressed in the same frame.")
+      .def(py::self + py::self, "Composite of two bodies expressed in the same frame (ValueError naming the distance between the centres of mass\n"
+           "where the sum's inertia would overflow: some 1e150 m or more).")
       .def(py::self - py::self, "This body with the part removed (a hole); ValueError if the rest is invalid.")
       .def(
           "remove",

@@ -658,7 +658,7 @@ def tradeoff_grid(problem: Any, methods: Sequence[str] | None = None, dts: Seque
     measured on the workers (each worker thread runs one task at a time; the times reflect the load of
     the worker's machine, as a local sweep's do). Without dask.distributed: rigiddyn.tradeoff here after
     one RuntimeWarning."""
-    from . import work_precision as wp
+    from . import _measures, work_precision as wp
     from .scene_precision import SceneCase
 
     _, retries, progress = _check_common(None, retries, progress)
@@ -686,12 +686,12 @@ def tradeoff_grid(problem: Any, methods: Sequence[str] | None = None, dts: Seque
 def _check_tradeoff_arguments(arguments: dict[str, Any]) -> None:
     """rigiddyn.tradeoff's checks of its arguments, made here before any task (TypeError/ValueError naming one)."""
     from . import _core
-    from . import work_precision as wp
+    from . import _measures, work_precision as wp
 
     if arguments["methods"] is not None:
         arguments["methods"] = wp._check_names(arguments["methods"], [m["name"] for m in _core.methods()])
     if arguments["measure"] is not None:
-        wp._check_measure(arguments["measure"])
+        _measures._check_measure(arguments["measure"])
     if arguments["tolerance"] is not None:
         wp._check_positive(arguments["tolerance"], "tolerance")
     wp._check_cost(arguments["cost"])
@@ -702,7 +702,7 @@ def _check_tradeoff_arguments(arguments: dict[str, Any]) -> None:
 def _joined_tradeoff(parts: list[Any], scene: bool) -> Any:
     """One TradeoffResult from the one-step-size results `parts`: rows joined, observed orders over all
     step sizes (as rigiddyn.tradeoff does), rows in its order, the stability summary warned once."""
-    from . import work_precision as wp
+    from . import _measures, work_precision as wp
     from .stability import StabilityWarning
 
     first = parts[0]

@@ -42,7 +42,7 @@ def _examples() -> list[str]:
 def _epilog() -> str:
     """The methods (from the core's method table) and the error measures, for --help."""
     from rigiddyn import _core
-    from rigiddyn.work_precision import measure_help
+    from rigiddyn._measures import measure_help
 
     def item(text: str) -> str:
         return textwrap.fill(text, 100, initial_indent="  ", subsequent_indent="      ")

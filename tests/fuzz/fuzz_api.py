@@ -94,6 +94,9 @@ DOCUMENTED_NON_FINITE = [
     ("TradeoffResult.horizon", {"nan"}, ("rigiddyn.work_precision", "TradeoffResult")),  # "nan if unknown"
     ("TradeoffResult.to_dict()[horizon]", {"nan"}, ("rigiddyn.work_precision", "TradeoffResult")),
     ("Statistics.std", {"nan"}, ("rigiddyn.dispersion", "Statistics")),  # "NaN below 2 samples"
+    # "A run of fewer than m steps has no estimate (NaN, with a verdict saying so)"
+    ("GlobalError.*", {"nan"}, ("rigiddyn", "GlobalError")),
+    ("GlobalError.observed_order", {"nan"}, ("rigiddyn", "GlobalError.observed_order")),  # "NaN where ..."
 ]
 # public modules of a package that its __all__ does not list (a module it lists is
 # walked anyway): their callables are targets "<submodule>.<name>"

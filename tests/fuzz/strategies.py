@@ -149,6 +149,12 @@ RECIPES = {
         "ConstantThrustSolution", [("lit", mr[0]), ("lit", mr[1]), ("lit", [0.0, 0.0, -100.0])],
         g_W=("lit", [0.0, 0.0, -9.81]))),
 }
+# a run's error estimate (read from a result as its attribute); a Transform from its constructor (the joints'
+# transform(q) also return one, but rarely from drawn q)
+RECIPES["GlobalError"] = st.one_of(RECIPES["SimulationResult"], RECIPES["SceneResult"]).map(
+    lambda run: ("method", run, "__getattribute__", [("lit", "error")], []))
+RECIPES["Transform"] = st.tuples(st.floats(-3.1, 3.1), st.lists(st.floats(-10.0, 10.0), min_size=3, max_size=3)).map(
+    lambda ap: _call_spec("Transform", [_call_spec("rot_z", [("lit", ap[0])]), ("lit", ap[1])]))
 # a pivoted top's run (the one-body scene of the body and gravity)
 RECIPES["PivotedSceneResult"] = st.tuples(st.integers(0, 30), st.sampled_from(["rk4", "implicit_midpoint", "splitting_dlm"])
                                           ).map(lambda nm: _call_spec(

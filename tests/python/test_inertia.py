@@ -216,3 +216,10 @@ def test_bad_inputs_raise_naming_the_value(call, pattern):
 def test_bad_dtype_is_type_error():
     with pytest.raises(TypeError, match="com"):
         rd.SpatialInertia(1.0, ["a", "b", "c"], np.eye(3))
+
+
+def test_a_sum_whose_inertia_would_overflow_is_refused_naming_the_distance():
+    """m |c|² of a part 8e300 m away is beyond the largest double: a ValueError, not an inertia of inf and NaN."""
+    far = rd.SpatialInertia.point_mass(1.0, [0.0, 0.0, 8e300])
+    with pytest.raises(ValueError, match=r"the distance between the centres of mass: .* got 8\.0*\d*e\+300"):
+        far + rd.solid_sphere(1.0, mass=1.0)

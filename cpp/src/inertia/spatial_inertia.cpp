@@ -133,6 +133,11 @@ SpatialInertia SpatialInertia::operator+(const SpatialInertia& part) const {
   const double m = mass_ + part.mass_;
   const Eigen::Vector3d c = (mass_ * com_ + part.mass_ * part.com_) / m;  // Rigid-body notes (4.54)
   const Eigen::Matrix3d I = inertia_about_point(c) + part.inertia_about_point(c);
+  // m |c - c_i|² beyond the largest double: centres of mass some 1e150 m apart or more
+  if (!I.allFinite()) {
+    throw_invalid("the distance between the centres of mass", "at most about 1e150 m (the sum's inertia overflows)",
+                  (part.com_ - com_).stableNorm());
+  }
   return SpatialInertia(m, c, I, Trusted{});
 }
 
