@@ -1849,7 +1849,8 @@ class SpatialInertia:
         """
     def __add__(self, arg0: SpatialInertia) -> SpatialInertia:
         """
-        Composite of two bodies expressed in the same frame.
+        Composite of two bodies expressed in the same frame (ValueError naming the distance between the centres of mass
+        where the sum's inertia would overflow: some 1e150 m or more).
         """
     def __eq__(self, arg0: typing.Any) -> typing.Any:
         """

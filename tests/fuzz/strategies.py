@@ -149,10 +149,13 @@ RECIPES = {
         "ConstantThrustSolution", [("lit", mr[0]), ("lit", mr[1]), ("lit", [0.0, 0.0, -100.0])],
         g_W=("lit", [0.0, 0.0, -9.81]))),
 }
-# a run's error estimate (read from a result as its attribute); a Transform from its constructor (the joints'
-# transform(q) also return one, but rarely from drawn q)
+# a run's error estimate (read from a result as its attribute); a spatial inertia and a Transform from a valid call
+# (the joints' transform(q) also return a Transform, but rarely from drawn q)
 RECIPES["GlobalError"] = st.one_of(RECIPES["SimulationResult"], RECIPES["SceneResult"]).map(
     lambda run: ("method", run, "__getattribute__", [("lit", "error")], []))
+RECIPES["SpatialInertia"] = st.tuples(st.floats(0.01, 10.0), st.floats(0.1, 100.0)).map(
+    lambda rm: _call_spec("solid_sphere", [("lit", rm[0])], mass=("lit", rm[1])))  # the primitives' draws mostly
+# give both or neither of mass= and density=
 RECIPES["Transform"] = st.tuples(st.floats(-3.1, 3.1), st.lists(st.floats(-10.0, 10.0), min_size=3, max_size=3)).map(
     lambda ap: _call_spec("Transform", [_call_spec("rot_z", [("lit", ap[0])]), ("lit", ap[1])]))
 # a pivoted top's run (the one-body scene of the body and gravity)
@@ -443,11 +446,13 @@ class Strategies:
         # a base class (monte_carlo.Dispersion) is also taken by its public subclasses' objects
         made += [self.objects(sub, depth) for sub, klass in self.class_objects.items()
                  if sub != cls and issubclass(klass, self.class_objects[cls])]
-        if cls in RECIPES:  # a valid call that always makes one (random producers rarely match their arguments)
-            made.append(RECIPES[cls])
-        if not made:
+        if not made and cls not in RECIPES:
             return st.nothing()
-        made = st.one_of(*made)
+        if cls in RECIPES:  # half the draws: a valid call that always makes one (random producers rarely match their
+            # arguments: with 20 primitives making a SpatialInertia, a recipe among them was drawn once in 21)
+            made = st.one_of(RECIPES[cls], st.one_of(*made)) if made else RECIPES[cls]
+        else:
+            made = st.one_of(*made)
         mutators = [t for t in self.targets if t.owner == cls and all(r == "None" for r in t.returns)
                     and not t.path.split(".")[-1].startswith("_")]
         if not mutators:
