@@ -84,7 +84,7 @@ void bind_joint_members(py::class_<J>& c, const std::string& name, const std::st
           },
           "q"_a,
           ("X_J(q): the pose of the successor frame L in the joint frame J.\n\n"
-           "Parameters\n----------\nq : array_like, shape (nq,)\n    The joint's configuration.\n\n"
+           "Parameters\n----------\nq : array_like, shape (joint.nq,)\n    The joint's configuration.\n\n"
            "Returns\n-------\nTransform\n    X_JL.\n\n"
            "Raises\n------\nValueError\n    q of another size or not finite.\n\n"
            "Examples\n--------\n>>> X = rd." + name + q_example + "\n" + transform_output)
@@ -249,7 +249,7 @@ void bind_tree_class(py::module_& m) {
       .def(
           "neutral_configuration", [](const Tree& t) { return py_io::to_array(t.neutral_configuration()); },
           "The neutral configuration (nq,): every angle and offset 0, every quaternion (0, 0, 0, 1).\n\n"
-          "Returns\n-------\nndarray, shape (nq,)\n\n"
+          "Returns\n-------\nndarray, shape (tree.nq,)\n\n"
           "Examples\n--------\n>>> tree = rd.Tree()\n"
           ">>> tree.add_link(\"base\", -1, rd.FreeJoint(), rd.SpatialInertia(1.0, [0, 0, 0], np.eye(3)))\n0\n"
           ">>> tree.neutral_configuration()\narray([0., 0., 0., 0., 0., 0., 1.])\n")
@@ -266,9 +266,9 @@ void bind_tree_class(py::module_& m) {
           "Joint by joint: q + qd dt for revolute and prismatic joints; q_JL ⊗ exp(w_L dt / 2) on SO(3) for a\n"
           "quaternion (spherical and free joints; the result is a unit quaternion); p_JL + R(q_JL) v_L dt for\n"
           "a free joint's position.\n\n"
-          "Parameters\n----------\nq : array_like, shape (nq,)\n    Configuration (unit quaternions within 1e-6).\n"
-          "v : array_like, shape (nv,)\n    Velocity.\ndt : float\n    Time step [s].\n\n"
-          "Returns\n-------\nndarray, shape (nq,)\n\n"
+          "Parameters\n----------\nq : array_like, shape (tree.nq,)\n    Configuration (unit quaternions within 1e-6).\n"
+          "v : array_like, shape (tree.nv,)\n    Velocity.\ndt : float\n    Time step [s].\n\n"
+          "Returns\n-------\nndarray, shape (tree.nq,)\n\n"
           "Raises\n------\nValueError\n    A wrong size, a non-finite value or a non-unit quaternion (naming it).\n\n"
           "Examples\n--------\nA ball joint turning at pi/2 rad/s about z for 1 s:\n\n"
           ">>> tree = rd.Tree()\n"
@@ -283,8 +283,8 @@ void bind_tree_class(py::module_& m) {
           },
           "q"_a, "v"_a,
           (std::string("Kinetic energy T = sum_i 1/2 v_i . I_i v_i [J] (= 1/2 v^T H(q) v).\n\n"
-                       "Parameters\n----------\nq : array_like, shape (nq,)\n    Configuration.\n"
-                       "v : array_like, shape (nv,)\n    Velocity.\n\n"
+                       "Parameters\n----------\nq : array_like, shape (tree.nq,)\n    Configuration.\n"
+                       "v : array_like, shape (tree.nv,)\n    Velocity.\n\n"
                        "Returns\n-------\nfloat\n\n"
                        "Raises\n------\nValueError\n    A wrong size, a non-finite value or a non-unit quaternion.\n\n"
                        "Examples\n--------\n") +
@@ -298,7 +298,7 @@ void bind_tree_class(py::module_& m) {
           },
           "q"_a,
           (std::string("Potential energy V = -sum_i m_i g . p_W,Ci [J] of the uniform gravity (0 at W's origin).\n\n"
-                       "Parameters\n----------\nq : array_like, shape (nq,)\n    Configuration.\n\n"
+                       "Parameters\n----------\nq : array_like, shape (tree.nq,)\n    Configuration.\n\n"
                        "Returns\n-------\nfloat\n\n"
                        "Raises\n------\nValueError\n    A wrong size, a non-finite value or a non-unit quaternion.\n\n"
                        "Examples\n--------\n") +
@@ -328,8 +328,8 @@ void bind_algorithms(py::module_& m) {
       (std::string("Forward kinematics: every link's pose in W and its twist.\n\n"
                    "X_λi = X_T X_J(q_i), X_Wi = X_Wλ X_λi, v_i = X_λi^-1 v_λ + S_i qd_i (Featherstone, Rigid Body\n"
                    "Dynamics Algorithms, Table 5.1).\n\n"
-                   "Parameters\n----------\ntree : Tree\nq : array_like, shape (nq,)\n    Configuration.\n"
-                   "v : array_like, shape (nv,), optional\n    Velocity (None: zero).\n\n"
+                   "Parameters\n----------\ntree : Tree\nq : array_like, shape (tree.nq,)\n    Configuration.\n"
+                   "v : array_like, shape (tree.nv,), optional\n    Velocity (None: zero).\n\n"
                    "Returns\n-------\nR_WL : ndarray, shape (n, 3, 3)\n    Each link's orientation (link -> W coordinates).\n"
                    "p_WL : ndarray, shape (n, 3)\n    Each link's origin in W [m].\n"
                    "V_L : ndarray, shape (n, 6)\n"
@@ -355,12 +355,12 @@ void bind_algorithms(py::module_& m) {
       (std::string("Inverse dynamics by the recursive Newton-Euler algorithm: tau = H(q) a + C(q, v, f_ext).\n\n"
                    "Featherstone, Rigid Body Dynamics Algorithms, Table 5.1, with the tree's gravity as the base\n"
                    "acceleration -g: the joint forces that give the acceleration a.\n\n"
-                   "Parameters\n----------\ntree : Tree\nq : array_like, shape (nq,)\n    Configuration.\n"
-                   "v : array_like, shape (nv,)\n    Velocity.\na : array_like, shape (nv,)\n    Acceleration.\n"
+                   "Parameters\n----------\ntree : Tree\nq : array_like, shape (tree.nq,)\n    Configuration.\n"
+                   "v : array_like, shape (tree.nv,)\n    Velocity.\na : array_like, shape (tree.nv,)\n    Acceleration.\n"
                    "f_ext : array_like, shape (n, 6), optional\n"
                    "    External force [n; f] on each link, in its link frame (moment about the link's origin)\n"
                    "    [N m, N] (None: none).\n\n"
-                   "Returns\n-------\nndarray, shape (nv,)\n    tau [N m for a rotation, N for a translation].\n\n"
+                   "Returns\n-------\nndarray, shape (tree.nv,)\n    tau [N m for a rotation, N for a translation].\n\n"
                    "Raises\n------\nValueError\n    A wrong size, a non-finite value or a non-unit quaternion (naming it).\n\n"
                    "See Also\n--------\nbias_forces, crba, aba\n\n"
                    "Examples\n--------\nThe torque that holds the pendulum horizontal is m g l:\n\n") +
@@ -377,9 +377,9 @@ void bind_algorithms(py::module_& m) {
       "tree"_a, "q"_a, "v"_a,
       (std::string("The bias forces C(q, v) = rnea(tree, q, v, 0): Coriolis, centrifugal and gravity terms.\n\n"
                    "The equation of motion is H(q) a + C(q, v) = tau.\n\n"
-                   "Parameters\n----------\ntree : Tree\nq : array_like, shape (nq,)\n    Configuration.\n"
-                   "v : array_like, shape (nv,)\n    Velocity.\n\n"
-                   "Returns\n-------\nndarray, shape (nv,)\n\n"
+                   "Parameters\n----------\ntree : Tree\nq : array_like, shape (tree.nq,)\n    Configuration.\n"
+                   "v : array_like, shape (tree.nv,)\n    Velocity.\n\n"
+                   "Returns\n-------\nndarray, shape (tree.nv,)\n\n"
                    "Raises\n------\nValueError\n    A wrong size, a non-finite value or a non-unit quaternion (naming it).\n\n"
                    "See Also\n--------\nrnea, crba\n\n"
                    "Examples\n--------\n") +
@@ -397,8 +397,8 @@ void bind_algorithms(py::module_& m) {
       (std::string("The joint-space inertia matrix H(q) by the composite-rigid-body algorithm.\n\n"
                    "Featherstone, Rigid Body Dynamics Algorithms, Table 6.2: symmetric positive definite, with\n"
                    "T = 1/2 v^T H v.\n\n"
-                   "Parameters\n----------\ntree : Tree\nq : array_like, shape (nq,)\n    Configuration.\n\n"
-                   "Returns\n-------\nndarray, shape (nv, nv)\n\n"
+                   "Parameters\n----------\ntree : Tree\nq : array_like, shape (tree.nq,)\n    Configuration.\n\n"
+                   "Returns\n-------\nndarray, shape (tree.nv, tree.nv)\n\n"
                    "Raises\n------\nValueError\n    A wrong size, a non-finite value or a non-unit quaternion (naming it).\n\n"
                    "See Also\n--------\nrnea, aba\n\n"
                    "Examples\n--------\nThe pendulum's moment of inertia about its axis, I_C + m l²:\n\n") +
@@ -416,11 +416,11 @@ void bind_algorithms(py::module_& m) {
       "tree"_a, "q"_a, "v"_a, "tau"_a, "f_ext"_a = py::none(),
       (std::string("Forward dynamics by the articulated-body algorithm: a = H(q)^-1 (tau - C(q, v, f_ext)).\n\n"
                    "Featherstone, Rigid Body Dynamics Algorithms, Table 7.1, in O(n); the inverse of rnea.\n\n"
-                   "Parameters\n----------\ntree : Tree\nq : array_like, shape (nq,)\n    Configuration.\n"
-                   "v : array_like, shape (nv,)\n    Velocity.\ntau : array_like, shape (nv,)\n    Joint forces.\n"
+                   "Parameters\n----------\ntree : Tree\nq : array_like, shape (tree.nq,)\n    Configuration.\n"
+                   "v : array_like, shape (tree.nv,)\n    Velocity.\ntau : array_like, shape (tree.nv,)\n    Joint forces.\n"
                    "f_ext : array_like, shape (n, 6), optional\n"
                    "    External force [n; f] on each link, in its link frame (None: none).\n\n"
-                   "Returns\n-------\nndarray, shape (nv,)\n    The acceleration a.\n\n"
+                   "Returns\n-------\nndarray, shape (tree.nv,)\n    The acceleration a.\n\n"
                    "Raises\n------\nValueError\n    A wrong size, a non-finite value or a non-unit quaternion (naming it).\n\n"
                    "See Also\n--------\nrnea, crba\n\n"
                    "Examples\n--------\nThe horizontal pendulum falls with I a = -m g l:\n\n") +

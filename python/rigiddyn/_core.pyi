@@ -6390,7 +6390,7 @@ class RevoluteJoint:
         
         Parameters
         ----------
-        q : array_like, shape (nq,)
+        q : array_like, shape (joint.nq,)
             The joint's configuration.
         
         Returns
@@ -6474,7 +6474,7 @@ class PrismaticJoint:
         
         Parameters
         ----------
-        q : array_like, shape (nq,)
+        q : array_like, shape (joint.nq,)
             The joint's configuration.
         
         Returns
@@ -6550,7 +6550,7 @@ class SphericalJoint:
         
         Parameters
         ----------
-        q : array_like, shape (nq,)
+        q : array_like, shape (joint.nq,)
             The joint's configuration.
         
         Returns
@@ -6620,7 +6620,7 @@ class FreeJoint:
         
         Parameters
         ----------
-        q : array_like, shape (nq,)
+        q : array_like, shape (joint.nq,)
             The joint's configuration.
         
         Returns
@@ -6687,7 +6687,7 @@ class FixedJoint:
         
         Parameters
         ----------
-        q : array_like, shape (nq,)
+        q : array_like, shape (joint.nq,)
             The joint's configuration.
         
         Returns
@@ -6798,16 +6798,16 @@ class Tree:
         
         Parameters
         ----------
-        q : array_like, shape (nq,)
+        q : array_like, shape (tree.nq,)
             Configuration (unit quaternions within 1e-6).
-        v : array_like, shape (nv,)
+        v : array_like, shape (tree.nv,)
             Velocity.
         dt : float
             Time step [s].
         
         Returns
         -------
-        ndarray, shape (nq,)
+        ndarray, shape (tree.nq,)
         
         Raises
         ------
@@ -6831,9 +6831,9 @@ class Tree:
         
         Parameters
         ----------
-        q : array_like, shape (nq,)
+        q : array_like, shape (tree.nq,)
             Configuration.
-        v : array_like, shape (nv,)
+        v : array_like, shape (tree.nv,)
             Velocity.
         
         Returns
@@ -6886,7 +6886,7 @@ class Tree:
         
         Returns
         -------
-        ndarray, shape (nq,)
+        ndarray, shape (tree.nq,)
         
         Examples
         --------
@@ -6902,7 +6902,7 @@ class Tree:
         
         Parameters
         ----------
-        q : array_like, shape (nq,)
+        q : array_like, shape (tree.nq,)
             Configuration.
         
         Returns
@@ -6966,18 +6966,18 @@ def aba(tree: Tree, q: numpy.typing.ArrayLike, v: numpy.typing.ArrayLike, tau: n
     Parameters
     ----------
     tree : Tree
-    q : array_like, shape (nq,)
+    q : array_like, shape (tree.nq,)
         Configuration.
-    v : array_like, shape (nv,)
+    v : array_like, shape (tree.nv,)
         Velocity.
-    tau : array_like, shape (nv,)
+    tau : array_like, shape (tree.nv,)
         Joint forces.
     f_ext : array_like, shape (n, 6), optional
         External force [n; f] on each link, in its link frame (None: none).
     
     Returns
     -------
-    ndarray, shape (nv,)
+    ndarray, shape (tree.nv,)
         The acceleration a.
     
     Raises
@@ -7418,14 +7418,14 @@ def bias_forces(tree: Tree, q: numpy.typing.ArrayLike, v: numpy.typing.ArrayLike
     Parameters
     ----------
     tree : Tree
-    q : array_like, shape (nq,)
+    q : array_like, shape (tree.nq,)
         Configuration.
-    v : array_like, shape (nv,)
+    v : array_like, shape (tree.nv,)
         Velocity.
     
     Returns
     -------
-    ndarray, shape (nv,)
+    ndarray, shape (tree.nv,)
     
     Raises
     ------
@@ -7581,12 +7581,12 @@ def crba(tree: Tree, q: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.fl
     Parameters
     ----------
     tree : Tree
-    q : array_like, shape (nq,)
+    q : array_like, shape (tree.nq,)
         Configuration.
     
     Returns
     -------
-    ndarray, shape (nv, nv)
+    ndarray, shape (tree.nv, tree.nv)
     
     Raises
     ------
@@ -8233,9 +8233,9 @@ def forward_kinematics(tree: Tree, q: numpy.typing.ArrayLike, v: numpy.typing.Ar
     Parameters
     ----------
     tree : Tree
-    q : array_like, shape (nq,)
+    q : array_like, shape (tree.nq,)
         Configuration.
-    v : array_like, shape (nv,), optional
+    v : array_like, shape (tree.nv,), optional
         Velocity (None: zero).
     
     Returns
@@ -10333,11 +10333,11 @@ def rnea(tree: Tree, q: numpy.typing.ArrayLike, v: numpy.typing.ArrayLike, a: nu
     Parameters
     ----------
     tree : Tree
-    q : array_like, shape (nq,)
+    q : array_like, shape (tree.nq,)
         Configuration.
-    v : array_like, shape (nv,)
+    v : array_like, shape (tree.nv,)
         Velocity.
-    a : array_like, shape (nv,)
+    a : array_like, shape (tree.nv,)
         Acceleration.
     f_ext : array_like, shape (n, 6), optional
         External force [n; f] on each link, in its link frame (moment about the link's origin)
@@ -10345,7 +10345,7 @@ def rnea(tree: Tree, q: numpy.typing.ArrayLike, v: numpy.typing.ArrayLike, a: nu
     
     Returns
     -------
-    ndarray, shape (nv,)
+    ndarray, shape (tree.nv,)
         tau [N m for a rotation, N for a translation].
     
     Raises
