@@ -1,7 +1,7 @@
 // Kinematic trees: the algorithms against their dense definitions on a small tree of every joint kind
 // (H = sum J^T I J with link Jacobians from forward kinematics of unit velocities; ABA inverts RNEA;
 // CRBA's columns are RNEA differences), the validation messages, and that no algorithm allocates once
-// the workspace is built (the heap is counted as in test_allocation_free.cpp).
+// the workspace is built (the heap counted by allocation_count.hpp).
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -19,49 +19,7 @@
 #include "rigiddyn/tree/tree.hpp"
 #include "rigiddyn/tree/workspace.hpp"
 
-#if defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__)
-#define RIGIDDYN_COUNTS_ALLOCATIONS 1
-#include <cerrno>
-
-namespace {
-std::atomic<std::int64_t> allocation_count{0};
-}  // namespace
-
-extern "C" {
-void* __libc_malloc(std::size_t size);
-void* __libc_calloc(std::size_t count, std::size_t size);
-void* __libc_realloc(void* pointer, std::size_t size);
-void* __libc_memalign(std::size_t alignment, std::size_t size);
-
-void* malloc(std::size_t size) {
-  allocation_count.fetch_add(1, std::memory_order_relaxed);
-  return __libc_malloc(size);
-}
-void* calloc(std::size_t count, std::size_t size) {
-  allocation_count.fetch_add(1, std::memory_order_relaxed);
-  return __libc_calloc(count, size);
-}
-void* realloc(void* pointer, std::size_t size) {
-  allocation_count.fetch_add(1, std::memory_order_relaxed);
-  return __libc_realloc(pointer, size);
-}
-void* aligned_alloc(std::size_t alignment, std::size_t size) {
-  allocation_count.fetch_add(1, std::memory_order_relaxed);
-  return __libc_memalign(alignment, size);
-}
-void* memalign(std::size_t alignment, std::size_t size) {
-  allocation_count.fetch_add(1, std::memory_order_relaxed);
-  return __libc_memalign(alignment, size);
-}
-int posix_memalign(void** out, std::size_t alignment, std::size_t size) {
-  allocation_count.fetch_add(1, std::memory_order_relaxed);
-  void* pointer = __libc_memalign(alignment, size);
-  if (pointer == nullptr) return ENOMEM;
-  *out = pointer;
-  return 0;
-}
-}
-#endif
+#include "allocation_count.hpp"
 
 namespace rigiddyn {
 namespace {
@@ -155,19 +113,13 @@ TEST(Tree, ValidationNamesTheLink) {
 }
 
 TEST(Tree, NoAlgorithmAllocatesOnceTheWorkspaceIsBuilt) {
-#ifndef RIGIDDYN_COUNTS_ALLOCATIONS
-  GTEST_SKIP() << "allocations are counted only with glibc and without AddressSanitizer";
-#else
+  if (!test::counts_allocations) GTEST_SKIP() << test::why_not_counted;
   const Tree tree = every_joint_kind();
   TreeWorkspace ws(tree);
   const Eigen::VectorXd q = configuration(tree), v = ramp(tree.nv(), -1.0), a = ramp(tree.nv(), 0.5);
   Eigen::VectorXd q_next(tree.nq());
   const std::vector<Force> f_ext(tree.num_links());
-  const auto allocations_during = [](auto&& f) {
-    const std::int64_t before = allocation_count.load();
-    f();
-    return allocation_count.load() - before;
-  };
+  using test::allocations_during;
   EXPECT_EQ(allocations_during([&] { forward_kinematics(tree, q, v, ws); }), 0) << "forward_kinematics";
   EXPECT_EQ(allocations_during([&] { rnea(tree, q, v, a, f_ext, ws); }), 0) << "rnea";
   EXPECT_EQ(allocations_during([&] { bias_forces(tree, q, v, ws); }), 0) << "bias_forces";
@@ -176,7 +128,6 @@ TEST(Tree, NoAlgorithmAllocatesOnceTheWorkspaceIsBuilt) {
   EXPECT_EQ(allocations_during([&] { kinetic_energy(tree, q, v, ws); }), 0) << "kinetic_energy";
   EXPECT_EQ(allocations_during([&] { potential_energy(tree, q, ws); }), 0) << "potential_energy";
   EXPECT_EQ(allocations_during([&] { tree.integrate(q, v, 0.01, q_next); }), 0) << "integrate";
-#endif
 }
 
 }  // namespace
