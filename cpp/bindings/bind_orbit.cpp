@@ -114,6 +114,32 @@ const char* const scalar_first_param =
     "scalar_first : bool, default False\n"
     "    Read and write quaternions scalar first, (w, x, y, z), as MuJoCo does.\n";
 
+// An argument and its name.
+struct Named {
+  py::handle value;
+  const char* name;
+};
+
+// The loop of attitude_from_orbit_frame and attitude_to_orbit_frame: items (r_W, v_W, q, w) -> (q', w') by
+// convert(r_W, v_W, q, w, frame), q checked a unit quaternion; the outputs named q_out and w_out.
+template <class Convert>
+auto map_attitudes(py::handle r_W, py::handle v_W, Named q, Named w, py::handle frame_arg, py::handle scalar_first_arg,
+                   const char* q_out, const char* w_out, Convert convert) {
+  const OrbitFrame frame = as_orbit_frame(frame_arg);
+  const bool scalar_first = py_io::as_bool(scalar_first_arg, "scalar_first");
+  const Stacks in{{r_W, "r_W", {3}}, {v_W, "v_W", {3}}, {q.value, q.name, {4}}, {w.value, w.name, {3}}};
+  Array q_new = in.output({4}, q_out), w_new = in.output({3}, w_out);
+  double *pq = q_new.mutable_data(), *pw = w_new.mutable_data();
+  const std::string q_name = q.name;
+  for_each_item(in.n(), in.stacked(), [&](py::ssize_t i) {
+    const Eigen::Quaterniond q_in = checked_unit_quaternion(py_io::read_quaternion(in.item(2, i), scalar_first), q_name);
+    const Attitude a = convert(read_vector(in.item(0, i)), read_vector(in.item(1, i)), q_in, read_vector(in.item(3, i)), frame);
+    py_io::write_quaternion(a.q, pq + 4 * i, scalar_first);
+    write_vector(a.w, pw + 3 * i);
+  });
+  return py::make_tuple(q_new, py_io::finite_result(w_new, w_out));
+}
+
 }  // namespace
 
 void bind_orbit(py::module_& m) {
@@ -703,22 +729,9 @@ void bind_orbit(py::module_& m) {
 
   m.def(
       "attitude_from_orbit_frame",
-      [](py::handle r_W, py::handle v_W, py::handle q_OB, py::handle w_OB_B, py::handle frame_arg,
-         py::handle scalar_first_arg) {
-        const OrbitFrame frame = as_orbit_frame(frame_arg);
-        const bool scalar_first = py_io::as_bool(scalar_first_arg, "scalar_first");
-        const Stacks in{{r_W, "r_W", {3}}, {v_W, "v_W", {3}}, {q_OB, "q_OB", {4}}, {w_OB_B, "w_OB_B", {3}}};
-        Array q = in.output({4}, "q_WB"), w = in.output({3}, "w_B");
-        double *pq = q.mutable_data(), *pw = w.mutable_data();
-        const std::string q_name = "q_OB";
-        for_each_item(in.n(), in.stacked(), [&](py::ssize_t i) {
-          const Eigen::Quaterniond q_in = checked_unit_quaternion(py_io::read_quaternion(in.item(2, i), scalar_first), q_name);
-          const Attitude a = attitude_from_orbit_frame(read_vector(in.item(0, i)), read_vector(in.item(1, i)), q_in,
-                                                       read_vector(in.item(3, i)), frame);
-          py_io::write_quaternion(a.q, pq + 4 * i, scalar_first);
-          write_vector(a.w, pw + 3 * i);
-        });
-        return py::make_tuple(q, py_io::finite_result(w, "w_B"));
+      [](py::handle r_W, py::handle v_W, py::handle q_OB, py::handle w_OB_B, py::handle frame, py::handle scalar_first) {
+        return map_attitudes(r_W, v_W, {q_OB, "q_OB"}, {w_OB_B, "w_OB_B"}, frame, scalar_first, "q_WB", "w_B",
+                             attitude_from_orbit_frame);
       },
       "r_W"_a, "v_W"_a, "q_OB"_a, "w_OB_B"_a, "frame"_a = "lvlh", "scalar_first"_a = false,
       (std::string() +
@@ -767,22 +780,9 @@ void bind_orbit(py::module_& m) {
 
   m.def(
       "attitude_to_orbit_frame",
-      [](py::handle r_W, py::handle v_W, py::handle q_WB, py::handle w_B, py::handle frame_arg,
-         py::handle scalar_first_arg) {
-        const OrbitFrame frame = as_orbit_frame(frame_arg);
-        const bool scalar_first = py_io::as_bool(scalar_first_arg, "scalar_first");
-        const Stacks in{{r_W, "r_W", {3}}, {v_W, "v_W", {3}}, {q_WB, "q_WB", {4}}, {w_B, "w_B", {3}}};
-        Array q = in.output({4}, "q_OB"), w = in.output({3}, "w_OB_B");
-        double *pq = q.mutable_data(), *pw = w.mutable_data();
-        const std::string q_name = "q_WB";
-        for_each_item(in.n(), in.stacked(), [&](py::ssize_t i) {
-          const Eigen::Quaterniond q_in = checked_unit_quaternion(py_io::read_quaternion(in.item(2, i), scalar_first), q_name);
-          const Attitude a = attitude_to_orbit_frame(read_vector(in.item(0, i)), read_vector(in.item(1, i)), q_in,
-                                                     read_vector(in.item(3, i)), frame);
-          py_io::write_quaternion(a.q, pq + 4 * i, scalar_first);
-          write_vector(a.w, pw + 3 * i);
-        });
-        return py::make_tuple(q, py_io::finite_result(w, "w_OB_B"));
+      [](py::handle r_W, py::handle v_W, py::handle q_WB, py::handle w_B, py::handle frame, py::handle scalar_first) {
+        return map_attitudes(r_W, v_W, {q_WB, "q_WB"}, {w_B, "w_B"}, frame, scalar_first, "q_OB", "w_OB_B",
+                             attitude_to_orbit_frame);
       },
       "r_W"_a, "v_W"_a, "q_WB"_a, "w_B"_a, "frame"_a = "lvlh", "scalar_first"_a = false,
       (std::string() +
