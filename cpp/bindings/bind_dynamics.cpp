@@ -222,19 +222,33 @@ py::dict error_max(const GlobalError& e) {
 }
 
 // "order 4: 11 of 11 records reliable; largest estimates: attitude 3.1e-06 rad, ..." (and the first verdict that
-// is not reliable, with its record).
+// is not reliable, with its record; "sample i, record k" for a batch's, whose verdict holds a tuple per sample).
 std::string error_summary(const GlobalError& e) {
-  const auto n = static_cast<std::size_t>(e.verdict.size());
-  std::size_t reliable = 0, first_other = n;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (e.verdict[i].cast<std::string>() == "reliable") {
+  std::size_t records = 0, reliable = 0;
+  std::string first_other;
+  const auto count = [&](py::handle verdict, const std::string& where) {
+    const std::string v = verdict.cast<std::string>();
+    ++records;
+    if (v == "reliable") {
       ++reliable;
-    } else if (first_other == n) {
-      first_other = i;
+    } else if (first_other.empty()) {
+      first_other = where + ": " + v;
+    }
+  };
+  for (std::size_t i = 0; i < e.verdict.size(); ++i) {
+    const py::handle item = e.verdict[i];
+    if (!py::isinstance<py::tuple>(item)) {
+      count(item, "record " + std::to_string(i));
+      continue;
+    }
+    const py::tuple sample = py::reinterpret_borrow<py::tuple>(item);
+    for (std::size_t k = 0; k < sample.size(); ++k) {
+      count(sample[k], "sample " + std::to_string(i) + ", record " + std::to_string(k));
     }
   }
   std::string text = (e.order == 0 ? std::string("exact method (round-off bound)") : "order " + std::to_string(e.order)) +
-                     ": " + std::to_string(reliable) + " of " + std::to_string(n) + " records reliable; largest estimates:";
+                     ": " + std::to_string(reliable) + " of " + std::to_string(records) +
+                     " records reliable; largest estimates:";
   const char* separator = " ";
   for (const ErrorQuantity& q : error_quantities) {
     char value[32];
@@ -242,9 +256,7 @@ std::string error_summary(const GlobalError& e) {
     text += separator + std::string(q.name) + " " + value + " " + q.unit;
     separator = ", ";
   }
-  if (first_other < n) {
-    text += "; record " + std::to_string(first_other) + ": " + e.verdict[first_other].cast<std::string>();
-  }
+  if (!first_other.empty()) text += "; " + first_other;
   return text;
 }
 
@@ -630,14 +642,17 @@ A scene with a PythonForce is never called reliable (verdict "not verified: ..."
 step (an `if t > t_s`) costs every method its order there, and the runs at dt, 2dt and 4dt can take the switch in
 the same step, so that its error cancels in their differences while the order check passes.
 
+simulate_batch gives one GlobalError for the whole batch (BatchResult.error): every array with a leading sample
+axis, the verdict a tuple per sample; sample i's (result[i].error) is the one simulate gives for that sample alone.
+
 Parameters
 ----------
 None
-    Made by simulate; it has no public constructor.
+    Made by simulate and simulate_batch; it has no public constructor.
 
 See Also
 --------
-simulate, SimulationResult, SceneResult, angular_distance
+simulate, simulate_batch, SimulationResult, SceneResult, angular_distance
 
 Examples
 --------
@@ -662,21 +677,23 @@ explicit_euler at a coarse step is not in its asymptotic regime, and says so:
       .def_readonly("order", &GlobalError::order,
                     "The order p the estimate assumed: the run's order (0: the method 'exact', round-off bound only).")
       .def_readonly("attitude", &GlobalError::attitude,
-                    "Error of q_WB as a rotation angle [rad], shape (n,) ((n, nb) for a scene).")
+                    "Error of q_WB as a rotation angle [rad], shape (n,) ((n, nb) for a scene; a batch's with a leading "
+                    "sample axis, (N, n) or (N, n, nb)).")
       .def_readonly("angular_velocity", &GlobalError::angular_velocity,
-                    "Error of w_B, the norm [rad/s], shape (n,) ((n, nb) for a scene).")
-      .def_readonly("position", &GlobalError::position, "Error of p_W, the norm [m], shape (n,) ((n, nb) for a scene).")
+                    "Error of w_B, the norm [rad/s], shape (n,) ((n, nb) for a scene; a batch's (N, n) or (N, n, nb)).")
+      .def_readonly("position", &GlobalError::position, "Error of p_W, the norm [m], shape (n,) ((n, nb) for a scene; a batch's (N, n) or (N, n, nb)).")
       .def_readonly("velocity", &GlobalError::velocity,
-                    "Error of v_W, the norm [m/s], shape (n,) ((n, nb) for a scene).")
-      .def_readonly("energy", &GlobalError::energy, "Error of total_energy [J], shape (n,).")
+                    "Error of v_W, the norm [m/s], shape (n,) ((n, nb) for a scene; a batch's (N, n) or (N, n, nb)).")
+      .def_readonly("energy", &GlobalError::energy, "Error of total_energy [J], shape (n,) (a batch's (N, n)).")
       .def_readonly("angular_momentum", &GlobalError::angular_momentum,
-                    "Error of |L| (angular_momentum_norm of a body, |angular_momentum_W| of a scene) [kg m^2/s], shape (n,).")
+                    "Error of |L| (angular_momentum_norm of a body, |angular_momentum_W| of a scene) [kg m^2/s], shape (n,) (a batch's (N, n)).")
       .def_readonly("observed_order", &GlobalError::observed_order,
-                    "log2 r of the quantity whose ratio r is furthest from 2^p, shape (n,); NaN where every quantity is "
+                    "log2 r of the quantity whose ratio r is furthest from 2^p, shape (n,) (a batch's (N, n)); NaN where every quantity is "
                     "at round-off level or no estimate was computed.")
       .def_readonly("verdict", &GlobalError::verdict,
-                    "'reliable' or the reason the estimate is not, per record (a tuple of n str).")
-      .def_readonly("reliable", &GlobalError::reliable, "verdict == 'reliable', shape (n,) (bool).")
+                    "'reliable' or the reason the estimate is not, per record (a tuple of n str; a batch's: a tuple of N "
+                    "such tuples, one per sample).")
+      .def_readonly("reliable", &GlobalError::reliable, "verdict == 'reliable', shape (n,) (bool; a batch's (N, n)).")
       .def("max", &error_max,
            R"doc(The largest estimate of each quantity over the records (and bodies).
 

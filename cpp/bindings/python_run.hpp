@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "numpy_io.hpp"
+#include "rigiddyn/batch/batch_global_error.hpp"
 #include "rigiddyn/batch/batch_result.hpp"
 #include "rigiddyn/check.hpp"
 #include "rigiddyn/models/loads.hpp"
@@ -93,6 +94,60 @@ inline GlobalError to_global_error(GlobalErrorEstimate&& e, bool per_body) {
                      adopt(std::move(e.observed_order), {n}),
                      verdict,
                      reliable};
+}
+
+// The GlobalError of a batch's estimates `e`: each array with a leading sample axis, (N, n) for one body per
+// sample (per_body false), else (N, n, nb); verdict a tuple of N tuples of n, reliable (N, n). Equal verdicts
+// share one str.
+inline GlobalError to_batch_global_error(BatchErrorEstimate&& e, bool per_body) {
+  namespace py = pybind11;
+  const auto N = static_cast<py::ssize_t>(e.samples), n = static_cast<py::ssize_t>(e.records);
+  const std::vector<py::ssize_t> state_shape =
+      per_body ? std::vector<py::ssize_t>{N, n, static_cast<py::ssize_t>(e.bodies)} : std::vector<py::ssize_t>{N, n};
+  py::array_t<bool> reliable({N, n});
+  py::dict texts;  // verdict -> its str
+  py::tuple verdict(N);
+  for (py::ssize_t i = 0; i < N; ++i) {
+    py::tuple row(n);
+    for (py::ssize_t k = 0; k < n; ++k) {
+      const std::string& v = e.verdict[static_cast<std::size_t>(i * n + k)];
+      reliable.mutable_at(i, k) = v == "reliable";
+      const py::str text(v);
+      if (!texts.contains(text)) texts[text] = text;
+      row[k] = texts[text];
+    }
+    verdict[i] = row;
+  }
+  reliable.attr("flags").attr("writeable") = false;
+  return GlobalError{e.order,
+                     adopt(std::move(e.attitude), state_shape),
+                     adopt(std::move(e.angular_velocity), state_shape),
+                     adopt(std::move(e.position), state_shape),
+                     adopt(std::move(e.velocity), state_shape),
+                     adopt(std::move(e.energy), {N, n}),
+                     adopt(std::move(e.angular_momentum), {N, n}),
+                     adopt(std::move(e.observed_order), {N, n}),
+                     verdict,
+                     reliable};
+}
+
+// Sample i of a batch's GlobalError (its first `rows` records), as simulate gives it for that sample alone; None
+// for None.
+inline pybind11::object sample_error(pybind11::handle batch_error, pybind11::ssize_t i, pybind11::ssize_t rows) {
+  namespace py = pybind11;
+  if (batch_error.is_none()) return py::none();
+  const GlobalError& e = batch_error.cast<const GlobalError&>();
+  const py::slice first(0, rows, 1);
+  const auto rows_of = [&](const py::array& a) -> py::array {
+    py::array out = py::module_::import("numpy").attr("array")(a[py::make_tuple(i, first)]);  // a copy
+    out.attr("flags").attr("writeable") = false;
+    return out;
+  };
+  const auto values = [&](const py_io::Array& a) { return py_io::Array::ensure(rows_of(a)); };
+  const py::tuple verdict(py::tuple(e.verdict[static_cast<std::size_t>(i)])[first]);
+  return py::cast(GlobalError{e.order, values(e.attitude), values(e.angular_velocity), values(e.position),
+                              values(e.velocity), values(e.energy), values(e.angular_momentum),
+                              values(e.observed_order), verdict, py::array_t<bool>::ensure(rows_of(e.reliable))});
 }
 
 // A coarse run of the estimate (global_error) with the monitor of the answer: its records, and `interrupted` set

@@ -5068,14 +5068,17 @@ class GlobalError:
     step (an `if t > t_s`) costs every method its order there, and the runs at dt, 2dt and 4dt can take the switch in
     the same step, so that its error cancels in their differences while the order check passes.
     
+    simulate_batch gives one GlobalError for the whole batch (BatchResult.error): every array with a leading sample
+    axis, the verdict a tuple per sample; sample i's (result[i].error) is the one simulate gives for that sample alone.
+    
     Parameters
     ----------
     None
-        Made by simulate; it has no public constructor.
+        Made by simulate and simulate_batch; it has no public constructor.
     
     See Also
     --------
-    simulate, SimulationResult, SceneResult, angular_distance
+    simulate, simulate_batch, SimulationResult, SceneResult, angular_distance
     
     Examples
     --------
@@ -5139,27 +5142,27 @@ class GlobalError:
     @property
     def angular_momentum(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        Error of |L| (angular_momentum_norm of a body, |angular_momentum_W| of a scene) [kg m^2/s], shape (n,).
+        Error of |L| (angular_momentum_norm of a body, |angular_momentum_W| of a scene) [kg m^2/s], shape (n,) (a batch's (N, n)).
         """
     @property
     def angular_velocity(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        Error of w_B, the norm [rad/s], shape (n,) ((n, nb) for a scene).
+        Error of w_B, the norm [rad/s], shape (n,) ((n, nb) for a scene; a batch's (N, n) or (N, n, nb)).
         """
     @property
     def attitude(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        Error of q_WB as a rotation angle [rad], shape (n,) ((n, nb) for a scene).
+        Error of q_WB as a rotation angle [rad], shape (n,) ((n, nb) for a scene; a batch's with a leading sample axis, (N, n) or (N, n, nb)).
         """
     @property
     def energy(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        Error of total_energy [J], shape (n,).
+        Error of total_energy [J], shape (n,) (a batch's (N, n)).
         """
     @property
     def observed_order(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        log2 r of the quantity whose ratio r is furthest from 2^p, shape (n,); NaN where every quantity is at round-off level or no estimate was computed.
+        log2 r of the quantity whose ratio r is furthest from 2^p, shape (n,) (a batch's (N, n)); NaN where every quantity is at round-off level or no estimate was computed.
         """
     @property
     def order(self) -> int:
@@ -5169,22 +5172,22 @@ class GlobalError:
     @property
     def position(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        Error of p_W, the norm [m], shape (n,) ((n, nb) for a scene).
+        Error of p_W, the norm [m], shape (n,) ((n, nb) for a scene; a batch's (N, n) or (N, n, nb)).
         """
     @property
     def reliable(self) -> numpy.typing.NDArray[numpy.bool]:
         """
-        verdict == 'reliable', shape (n,) (bool).
+        verdict == 'reliable', shape (n,) (bool; a batch's (N, n)).
         """
     @property
     def velocity(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        Error of v_W, the norm [m/s], shape (n,) ((n, nb) for a scene).
+        Error of v_W, the norm [m/s], shape (n,) ((n, nb) for a scene; a batch's (N, n) or (N, n, nb)).
         """
     @property
     def verdict(self) -> tuple:
         """
-        'reliable' or the reason the estimate is not, per record (a tuple of n str).
+        'reliable' or the reason the estimate is not, per record (a tuple of n str; a batch's: a tuple of N such tuples, one per sample).
         """
 class SimulationResult:
     """
@@ -5379,6 +5382,11 @@ class BatchResult:
         Wall time of the whole batch [s].
         """
     @property
+    def error(self) -> GlobalError | None:
+        """
+        The global error estimate of every record of every sample (GlobalError, arrays (N, n, ...)); None with simulate_batch(..., error=False).
+        """
+    @property
     def filled(self) -> numpy.ndarray:
         """
         Rows filled per sample, shape (N,) (int64): n unless it diverged (its later rows are NaN).
@@ -5516,6 +5524,11 @@ class BatchSceneResult:
     def elements(self) -> tuple:
         """
         The work columns' class names, a tuple of ne str.
+        """
+    @property
+    def error(self) -> GlobalError | None:
+        """
+        The global error estimate of every record of every sample (GlobalError, arrays (N, n, ...)); None with simulate_batch(..., error=False).
         """
     @property
     def filled(self) -> numpy.ndarray:
@@ -10737,10 +10750,10 @@ def simulate(model: PivotedBody | PivotedPlanarBody | Gyrostat | Scene | Compile
     ('reliable', True)
     """
 @typing.overload
-def simulate_batch(model: Particle | PlanarBody | RigidBody | collections.abc.Sequence[Particle | PlanarBody | RigidBody], initial: typing.Any, dt: float | numpy.typing.ArrayLike | _Quantity, steps: int | None = None, method: _MethodName | None = None, record_every: int = 1, loads: typing.Any = None, gravity: bool | numpy.typing.ArrayLike | None = None, t0: float | _Quantity = 0.0, threads: int | None = None, simd: bool = False, scalar_first: bool = False, progress: collections.abc.Callable[..., typing.Any] | None = None, *, duration: float | _Quantity | None = None) -> BatchResult:
+def simulate_batch(model: Particle | PlanarBody | RigidBody | collections.abc.Sequence[Particle | PlanarBody | RigidBody], initial: typing.Any, dt: float | numpy.typing.ArrayLike | _Quantity, steps: int | None = None, method: _MethodName | None = None, record_every: int = 1, loads: typing.Any = None, gravity: bool | numpy.typing.ArrayLike | None = None, t0: float | _Quantity = 0.0, threads: int | None = None, simd: bool = False, scalar_first: bool = False, progress: collections.abc.Callable[..., typing.Any] | None = None, *, duration: float | _Quantity | None = None, error: bool = True) -> BatchResult:
     ...
 @typing.overload
-def simulate_batch(model: Scene | CompiledScene | collections.abc.Sequence[Scene | CompiledScene], initial: typing.Any, dt: float | numpy.typing.ArrayLike | _Quantity, steps: int | None = None, method: _MethodName | None = None, record_every: int = 1, loads: typing.Any = None, gravity: bool | numpy.typing.ArrayLike | None = None, t0: float | _Quantity = 0.0, threads: int | None = None, simd: bool = False, scalar_first: bool = False, progress: collections.abc.Callable[..., typing.Any] | None = None, *, duration: float | _Quantity | None = None) -> BatchSceneResult:
+def simulate_batch(model: Scene | CompiledScene | collections.abc.Sequence[Scene | CompiledScene], initial: typing.Any, dt: float | numpy.typing.ArrayLike | _Quantity, steps: int | None = None, method: _MethodName | None = None, record_every: int = 1, loads: typing.Any = None, gravity: bool | numpy.typing.ArrayLike | None = None, t0: float | _Quantity = 0.0, threads: int | None = None, simd: bool = False, scalar_first: bool = False, progress: collections.abc.Callable[..., typing.Any] | None = None, *, duration: float | _Quantity | None = None, error: bool = True) -> BatchSceneResult:
     """
     N independent runs of a body or a scene, one per initial state, in parallel.
     
@@ -10791,13 +10804,17 @@ def simulate_batch(model: Scene | CompiledScene | collections.abc.Sequence[Scene
         about every 0.05 s; an exception it raises stops every sample and propagates.
     duration : float or pint.Quantity, keyword-only, optional
         Length of the runs [s] instead of steps: it must give the same whole number of steps at every sample's dt.
+    error : bool, keyword-only, default True
+        Estimate the global error of every record of every sample (result.error, a GlobalError with a leading sample
+        axis) from two more batches at 2 dt and 4 dt (+0.75x the cost, on the same threads); sample i's estimate is
+        the one simulate gives for it (result[i].error). False: no estimate (result.error is None).
     
     Returns
     -------
     BatchResult or BatchSceneResult
         For bodies a BatchResult, for scenes a BatchSceneResult: the arrays of SimulationResult / SceneResult with a
-        leading sample axis (N, n, ...). A sample whose state becomes non-finite stops alone: diverged[i] is True,
-        filled[i] its rows, the rest of its rows NaN.
+        leading sample axis (N, n, ...), and error. A sample whose state becomes non-finite stops alone: diverged[i]
+        is True, filled[i] its rows, the rest of its rows NaN (its error rows too, their verdict saying so).
     
     Raises
     ------
@@ -10835,6 +10852,11 @@ def simulate_batch(model: Scene | CompiledScene | collections.abc.Sequence[Scene
     >>> res = rd.simulate_batch(body, states, dt=0.01, steps=100, threads=2)
     >>> res.w_B.shape, np.array_equal(res.w_B[2], rd.simulate(body, states[2], dt=0.01, steps=100).w_B)
     ((4, 101, 3), True)
+    
+    Every record of every sample has its global error estimate (rk4: order 4):
+    
+    >>> res.error.attitude.shape, res.error.order, res[2].error == rd.simulate(body, states[2], dt=0.01, steps=100).error
+    ((4, 101), 4, True)
     
     Three particles dropped for 1 s under their own gravity fall g t^2 / 2:
     

@@ -64,6 +64,8 @@ RECORD_FIELDS = ("t", "p_W", "q_WB", "v_W", "w_B", "kinetic_energy", "total_ener
 SCENE_RECORD_FIELDS = ("t", "p_W", "q_WB", "v_W", "w_B", "mass", "kinetic_energy", "potential_energy",
                        "total_energy", "linear_momentum_W", "angular_momentum_W", "angular_momentum_O_W",
                        "pivot_reaction_W", "power", "work")
+# the per-record arrays of a batch's GlobalError, each (N, n_records, ...), fields "error.<name>" of a MonteCarloResult
+ERROR_FIELDS = ("attitude", "angular_velocity", "position", "velocity", "energy", "angular_momentum")
 STANDARD_GRAVITY_W = (0.0, 0.0, -9.81)  # [m/s^2] in W, what gravity=True means (as simulate)
 _KEYS_SHOWN = 40  # dispersible keys an error about an unknown key lists
 # the memory estimate that refuses a run before any draw (_check_memory): float64 values per record of a
@@ -74,6 +76,9 @@ _KEYS_SHOWN = 40  # dispersible keys an error about an unknown key lists
 _RECORD_DOUBLES = 29
 _SCENE_RECORD_DOUBLES = (10, 20, 2)
 _FRAME_TERMS = 4
+# the error estimate's values per record beyond its coarse runs: 7 float64 (3 more per extra body of a scene), a
+# verdict (a 32-byte std::string, then a reference and a bool in Python): at most 16 float64s' worth
+_ERROR_DOUBLES = 16
 _SAMPLE_BYTES = 2048
 _STATE_BYTES = 512
 
@@ -412,6 +417,7 @@ class MonteCarloResult:
     redraws: {key: (N,) int} invalid draws rejected per sample for "mass" and "inertia" (see the module).
     seed: the SeedSequence entropy the samples were spawned from (rerun with seed=result.seed).
     dispersions: the dispersions used. times: (n_records,) record times [s].
+    error: the batch's global error estimate (a GlobalError, arrays (N, n_records, ...)), or None.
     """
 
     def __init__(self, batch: Any, inputs: dict[str, np.ndarray], redraws: dict[str, np.ndarray], seed: Any,
@@ -494,12 +500,20 @@ class MonteCarloResult:
         return self.statistics(quantity, at, q).percentiles
 
     @property
+    def error(self) -> Any:
+        """The global error estimate of every record of every sample: the batch's GlobalError (arrays
+        (N, n_records, ...), a verdict per sample and record), or None (``monte_carlo(..., error=False)``)."""
+        return getattr(self.batch, "error", None)
+
+    @property
     def fields(self) -> tuple[str, ...]:
         """The recorded fields a quantity may name: the batch's arrays (N, n_records, ...) (RECORD_FIELDS of a
-        body's batch, SCENE_RECORD_FIELDS of a scene's)."""
+        body's batch, SCENE_RECORD_FIELDS of a scene's), and with an error estimate its arrays as
+        ``"error.<name>"`` (ERROR_FIELDS: e.g. ``"error.attitude"`` [rad])."""
         records = np.shape(self.batch.t)
-        return tuple(name for name in dict.fromkeys(RECORD_FIELDS + SCENE_RECORD_FIELDS)
-                     if hasattr(self.batch, name) and np.shape(getattr(self.batch, name))[:2] == records)
+        recorded = tuple(name for name in dict.fromkeys(RECORD_FIELDS + SCENE_RECORD_FIELDS)
+                         if hasattr(self.batch, name) and np.shape(getattr(self.batch, name))[:2] == records)
+        return recorded + (tuple("error." + name for name in ERROR_FIELDS) if self.error is not None else ())
 
     def _quantity(self, quantity: Quantity) -> np.ndarray:
         records = np.asarray(self.batch.t).shape
@@ -507,7 +521,8 @@ class MonteCarloResult:
             if quantity not in self.fields:
                 raise ValueError(f"quantity: expected a recorded field ({', '.join(self.fields)}) or a callable, "
                                  f"got {quantity!r}")
-            return np.asarray(getattr(self.batch, quantity), float)
+            owner, name = (self.error, quantity[6:]) if quantity.startswith("error.") else (self.batch, quantity)
+            return np.asarray(getattr(owner, name), float)
         if not callable(quantity):
             raise TypeError(f"quantity: expected a field name (str) or a callable of the BatchResult, got {quantity!r}")
         array = np.asarray(quantity(self.batch), dtype=float)
@@ -752,11 +767,12 @@ def _count(value: Any, name: str, least: int) -> int:
     return int(value)
 
 
-def _check_memory(n: int, steps: int, record_every: int, model: Any) -> None:
+def _check_memory(n: int, steps: int, record_every: int, model: Any, error: bool) -> None:
     """ValueError naming n, before any draw, when N samples would not fit in the available memory: each
     sample's records (as simulate_batch counts them: step 0, every record_every-th step and the last;
-    _RECORD_DOUBLES of a body, _SCENE_RECORD_DOUBLES of a scene per record) and what drawing it holds
-    (_SAMPLE_BYTES, and a state object per body of a scene, _STATE_BYTES)."""
+    _RECORD_DOUBLES of a body, _SCENE_RECORD_DOUBLES of a scene per record; with the error estimate its two
+    coarse runs, at most as many records each, and _ERROR_DOUBLES per record of the estimate) and what drawing
+    it holds (_SAMPLE_BYTES, and a state object per body of a scene, _STATE_BYTES)."""
     records = 1 + steps // record_every + (1 if steps % record_every else 0)
     if isinstance(model, _core.Scene):
         nb = len(model.bodies)
@@ -765,6 +781,8 @@ def _check_memory(n: int, steps: int, record_every: int, model: Any) -> None:
         per_sample = _SAMPLE_BYTES + _STATE_BYTES * nb
     else:
         per_record, per_sample = _RECORD_DOUBLES, _SAMPLE_BYTES
+    if error:
+        per_record = 3 * per_record + _ERROR_DOUBLES
     per_sample += records * per_record * 8
     available = available_bytes()
     available = sys.maxsize if available is None else available  # unknown: only what no array can hold
@@ -803,7 +821,7 @@ def monte_carlo(model: Any, nominal_state: Any, n: int, *, seed: Any,
                 dt: Any, steps: int | None = None, duration: Any = None, method: str | None = None,
                 record_every: int = 1, loads: Any = None, gravity: Any = None, t0: Any = 0.0,
                 threads: int | None = None, client: Any = None,
-                progress: bool | Callable[[int], Any] = False) -> MonteCarloResult:
+                progress: bool | Callable[[int], Any] = False, error: bool = True) -> MonteCarloResult:
     """N runs of a rigid body, or of a scene, with dispersed initial states, mass properties and loads.
 
     Draws N samples of the dispersed inputs (sample i from its own generator, a function of (seed, i) only:
@@ -851,6 +869,10 @@ def monte_carlo(model: Any, nominal_state: Any, n: int, *, seed: Any,
         ``progress(samples_done)``, as ``simulate_batch`` calls its own (from the calling thread once before
         the samples start, then about every 0.05 s; an exception it raises stops the run and propagates).
         With `client`: True or False (``rigiddyn.distributed``'s bar of chunks).
+    error : bool, default True
+        Estimate the global error of every record of every sample (``result.error``, a GlobalError with a
+        leading sample axis: ``simulate_batch``'s `error`, +0.75x the cost); its quantities are fields too
+        (``result.statistics("error.attitude")``). False: none.
 
     Returns
     -------
@@ -898,6 +920,8 @@ def monte_carlo(model: Any, nominal_state: Any, n: int, *, seed: Any,
         raise ValueError(f"n: expected a sample count >= 1, got {n!r}")
     if not isinstance(progress, (bool, np.bool_)) and not callable(progress):
         raise TypeError(f"progress: expected True, False or a callable progress(samples_done), got {progress!r}")
+    if not isinstance(error, (bool, np.bool_)):
+        raise TypeError(f"error: expected True or False, got {error!r}")
     if client is not None and callable(progress):
         raise TypeError(f"progress: expected True or False with client= (the cluster's bar of chunks), "
                         f"got {progress!r}")
@@ -906,7 +930,7 @@ def monte_carlo(model: Any, nominal_state: Any, n: int, *, seed: Any,
                          f"got {threads!r}")
     # checked before any draw, as the memory below
     steps = _core._steps_of(None if steps is None else _count(steps, "steps", 0), duration, dt)
-    _check_memory(int(n), steps, _count(record_every, "record_every", 1), scene)
+    _check_memory(int(n), steps, _count(record_every, "record_every", 1), scene, bool(error))
     seeds = _seed_sequence(seed)
     if isinstance(model, _core.RigidBody):
         nominal = {"p_W": nominal_state.p_W, "q_WB": nominal_state.q_WB, "v_W": nominal_state.v_W,
@@ -925,7 +949,7 @@ def monte_carlo(model: Any, nominal_state: Any, n: int, *, seed: Any,
         options = dict(record_every=record_every, loads=loads, gravity=gravity)
         if method is None and isinstance(model, _core.CompiledScene):
             method = model.method  # also when the samples run rebuilt scenes
-    options.update(method=method, t0=t0)
+    options.update(method=method, t0=t0, error=bool(error))
     if client is None:
         update, close = (progress, None) if callable(progress) else _sample_bar(int(n), bool(progress))
         try:

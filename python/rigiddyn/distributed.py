@@ -418,12 +418,20 @@ def _with_elapsed(result: Any, seconds: float) -> Any:
 
 
 def _merge_item(items: list[Any], sizes: list[int]) -> Any:
-    """One state item of pieces of `sizes` samples: arrays with a leading sample axis concatenated,
-    the same value kept, a per-piece wall time summed."""
+    """One state item of pieces of `sizes` samples: arrays with a leading sample axis concatenated, tuples
+    of one tuple per sample (a GlobalError's verdicts) joined, a per-sample result held in the state (the
+    batch's GlobalError) merged through its own state, the same value kept, a per-piece wall time summed."""
     if all(isinstance(x, np.ndarray) and x.ndim >= 1 and x.shape[0] == s for x, s in zip(items, sizes)):
         out = np.concatenate(items, axis=0)
         out.flags.writeable = all(x.flags.writeable for x in items)
         return out
+    if all(isinstance(x, tuple) and len(x) == s and all(isinstance(row, tuple) for row in x)
+           for x, s in zip(items, sizes)):
+        return tuple(row for x in items for row in x)
+    from . import _core
+
+    if all(isinstance(x, _core.GlobalError) for x in items):
+        return _rebuilt(items[0], tuple(_merge_item(list(parts), sizes) for parts in zip(*map(_state, items))))
     if all(isinstance(x, float) for x in items):
         return float(sum(items))  # elapsed time: the tasks' total
     if all(np.array_equal(x, items[0]) for x in items):

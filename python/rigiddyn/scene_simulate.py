@@ -96,6 +96,7 @@ class _ScenePlan:
         self.out = OutFolder(args.out if args.out is not None else default_out(args.problem), self.outputs(),
                              args.force, SCENE_OUTPUTS)
         self.progress = not args.no_progress
+        self.error = not args.no_error
 
     def outputs(self) -> list[str]:
         """The files this run writes."""
@@ -119,6 +120,7 @@ def _matplotlib() -> bool:
 def _run_record(plan: _ScenePlan, result: Any, columns: list[str]) -> dict[str, Any]:
     """run.json: what was run and what came out (numbers, null for not-a-number)."""
     from . import __version__
+    from .simulate_command import error_report
 
     def number(x: float) -> float | None:
         return float(x) if math.isfinite(x) else None
@@ -138,6 +140,7 @@ def _run_record(plan: _ScenePlan, result: Any, columns: list[str]) -> dict[str, 
         "diverged": bool(result.diverged),
         "unconverged_steps": int(result.unconverged_steps),
         "elapsed_seconds [s]": result.elapsed_seconds,
+        "global error": error_report(result.error),
         "columns": columns,
         "quaternion order": "x, y, z, w",
     }
@@ -235,6 +238,7 @@ def run_scene_simulate(args: argparse.Namespace) -> int:
     return run_and_report(plan.steps, plan.progress,
                           lambda update: _core.simulate(plan.file.scene, plan.file.initial, dt=plan.dt,
                                                         steps=plan.steps, method=cast(Any, plan.method),  # checked
-                                                        record_every=plan.record_every, progress=update),
+                                                        record_every=plan.record_every, progress=update,
+                                                        error=plan.error),
                           lambda result: _summary(result, plan.file.scene), plan.out,
                           lambda result, folder: _write(plan, result, folder))

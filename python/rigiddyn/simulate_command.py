@@ -37,8 +37,9 @@ from .stability import warn_if_unstable
 OUTPUTS = ("trajectory.csv", "trajectory.npz", "trajectory.parquet", "run.json", "trajectory.png", "axes.mp4",
            "axes.gif")
 
-__all__ = ["MAX_DEFAULT_RECORDS", "MAX_STEPS", "add_simulate_parser", "default_out", "energy_balance", "fail",
-           "progress_bar", "run_and_report", "run_simulate", "simulate_problem", "step_count", "table_outputs"]
+__all__ = ["MAX_DEFAULT_RECORDS", "MAX_STEPS", "add_simulate_parser", "default_out", "energy_balance",
+           "error_report", "fail", "progress_bar", "run_and_report", "run_simulate", "simulate_problem", "step_count",
+           "table_outputs"]
 
 # without --record-every a run records every k-th step, k the least giving at most this many records
 # (+ the last): a table a plot and a spreadsheet still take whole
@@ -102,6 +103,9 @@ def add_simulate_parser(sub: "argparse._SubParsersAction[argparse.ArgumentParser
     p.add_argument("--no-plot", action="store_true", help="write the tables only, no trajectory.png")
     p.add_argument("--no-progress", action="store_true",
                    help="no progress bar on stderr (shown only on a terminal and when tqdm is installed)")
+    p.add_argument("--no-error", action="store_true",
+                   help="no global error estimate (by default two more runs at 2 dt and 4 dt, +0.75x the cost, "
+                        "estimate the error of every record: printed, and in run.json)")
 
 
 def _shown(text: str) -> str:
@@ -154,15 +158,16 @@ def progress_bar(total: int, stream: TextIO | None = None) -> tuple[Callable[[in
 
 
 def simulate_problem(problem: Problem, method: str, dt: float, steps: int, record_every: int = 1,
-                     progress: Callable[[int], None] | None = None) -> Any:
+                     progress: Callable[[int], None] | None = None, error: bool = True) -> Any:
     """rigiddyn.simulate of `problem` from its initial state at t = 0 over `steps` steps of `dt` [s] with
     `method`, recording every `record_every`-th step (and the last), after a StabilityWarning when dt
     is beyond the method's linear stability limit (rigiddyn.stability). `progress(steps_done)` is
-    simulate's callback (about every 0.05 s of the run). Returns the SimulationResult."""
+    simulate's callback (about every 0.05 s of the run); `error`: simulate's global error estimate.
+    Returns the SimulationResult."""
     warn_if_unstable(method, dt, steps, problem.inertia_com, problem.w_B, problem.torque_free, stacklevel=2)
     # method: a str of methods() (mypy knows their literal names), checked by the core
     return _core.simulate(problem.body(), problem.initial_state(), dt, steps, cast(Any, method), record_every=record_every,
-                          loads=problem.applied_loads(), gravity=problem.gravity, progress=progress)
+                          loads=problem.applied_loads(), gravity=problem.gravity, progress=progress, error=error)
 
 
 class _Plan:
@@ -212,6 +217,7 @@ class _Plan:
         self.out = OutFolder(args.out if args.out is not None else default_out(args.problem), self.outputs(),
                              args.force, OUTPUTS)
         self.progress = not args.no_progress
+        self.error = not args.no_error
 
     def outputs(self) -> list[str]:
         """The files this run writes."""
@@ -249,9 +255,30 @@ def _run_record(plan: _Plan, result: Any) -> dict[str, Any]:
         "diverged": bool(result.diverged),
         "unconverged_steps": int(result.unconverged_steps),
         "elapsed_seconds [s]": result.elapsed_seconds,
+        "global error": error_report(result.error),
         "columns": column_names(),
         "quaternion order": "x, y, z, w",
     }
+
+
+# the units of a GlobalError's quantities, in the order of GlobalError.max()
+_ERROR_UNITS = {"attitude": "rad", "angular_velocity": "rad/s", "position": "m", "velocity": "m/s", "energy": "J",
+                "angular_momentum": "kg m^2/s"}
+
+
+def error_report(error: Any) -> dict[str, Any] | None:
+    """run.json's "global error": the estimate's order, how many records it calls reliable, its largest value of
+    each quantity ("attitude [rad]": ..., null where none) and the first verdict that is not "reliable" with its
+    time (null when every record is); None for a run without an estimate (--no-error)."""
+    if error is None:
+        return None
+    verdict = list(error.verdict)
+    other = next((i for i, v in enumerate(verdict) if v != "reliable"), None)
+    largest = {f"{name} [{_ERROR_UNITS[name]}]": (float(value) if math.isfinite(value) else None)
+               for name, value in error.max().items()}
+    return {"order": int(error.order), "records": len(verdict), "reliable records": int(np.sum(error.reliable)),
+            "largest estimates": largest,
+            "first verdict not reliable": None if other is None else {"record": other, "verdict": verdict[other]}}
 
 
 def _drift(x: np.ndarray) -> str:
@@ -320,7 +347,7 @@ def run_simulate(args: argparse.Namespace) -> int:
         return fail(e, EXIT_EXISTS)
     return run_and_report(plan.steps, plan.progress,
                           lambda update: simulate_problem(plan.problem, plan.method, plan.dt, plan.steps,
-                                                          plan.record_every, update),
+                                                          plan.record_every, update, plan.error),
                           lambda result: _summary(plan.problem, result), plan.out,
                           lambda result, folder: _write(plan, result, folder))
 
@@ -353,6 +380,8 @@ def run_and_report(steps: int, progress: bool, run: Callable[[Callable[[int], No
     finally:
         close()
     print(summary(result))
+    if getattr(result, "error", None) is not None:
+        print(f"global error estimate: {result.error.summary()}")
     try:
         written = out.write(lambda folder: write(result, folder))
     except KeyboardInterrupt:

@@ -440,14 +440,16 @@ def test_the_memory_estimate_refuses_a_run_before_any_draw(monkeypatch):
     monkeypatch.setattr(mc, "available_bytes", lambda: 2**34)
     with pytest.raises(ValueError) as e:
         mc.monte_carlo(SATELLITE, TUMBLE, 10**7, seed=1, dt=0.01, steps=10**4, dispersions={"w_B": Normal(std=0.1)})
-    per_sample = mc._SAMPLE_BYTES + 10001 * mc._RECORD_DOUBLES * 8  # 10^4 steps: 10001 records
+    # 10^4 steps: 10001 records, each with the error estimate's two coarse runs and its own values
+    per_sample = mc._SAMPLE_BYTES + 10001 * (3 * mc._RECORD_DOUBLES + mc._ERROR_DOUBLES) * 8
     assert str(e.value) == (
         f"n: expected a sample count whose runs fit in the available memory (16 GiB: at most {2**34 // per_sample} "
         f"samples of 10001 records, {mc.format_bytes(per_sample)} each), got 10000000 (an estimated "
         f"{mc.format_bytes(10**7 * per_sample)}; fewer samples, or a larger record_every)")
     scene, nominal = sat_and_tip()
     # 2 bodies, 1 element; 10 steps recorded every 4th: steps 0, 4, 8 and the last, 10
-    per_sample = mc._SAMPLE_BYTES + 2 * mc._STATE_BYTES + 4 * (10 + 20 * 2 + 2 * 1) * 8
+    # (with the error estimate: its two coarse runs and its own values per record)
+    per_sample = mc._SAMPLE_BYTES + 2 * mc._STATE_BYTES + 4 * (3 * (10 + 20 * 2 + 2 * 1) + mc._ERROR_DOUBLES) * 8
     with pytest.raises(ValueError, match=rf"at most {2**34 // per_sample} samples of 4 records"):
         mc.monte_carlo(scene, nominal, 10**9, seed=1, dt=0.01, steps=10, record_every=4)
 

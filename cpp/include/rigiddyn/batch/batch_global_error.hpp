@@ -1,0 +1,60 @@
+// The global error estimate of every sample of a batch (batch/simulate_batch.hpp): the estimate of
+// simulate/global_error.hpp (global Richardson at h, 2h, 4h with an observed-order check) for each sample,
+// from two more batches of the same samples at 2h and 4h (each sample's dt times 2 and 4), so that the
+// coarse runs share the batch's threads (and its SIMD lanes). Sample i's estimate is exactly the one
+// simulate gives for that sample's run alone.
+#pragma once
+#include "rigiddyn/batch/batch_result.hpp"
+#include "rigiddyn/simulate/global_error.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace rigiddyn {
+
+// The estimates of N samples of n records each (nb bodies), row-major, sample-major: each field of
+// GlobalErrorEstimate with a leading sample axis. The rows a sample did not fill (its run at h stopped early)
+// are NaN, their verdict "no record: the run at h diverged".
+struct BatchErrorEstimate {
+  std::size_t samples = 0;                  // N
+  std::size_t records = 0;                  // n
+  std::int64_t bodies = 1;                  // nb
+  int order = 0;                            // the order p of sample 0 (0: the method 'exact')
+  std::vector<double> attitude;             // (N, n, nb) [rad]
+  std::vector<double> angular_velocity;     // (N, n, nb) [rad/s]
+  std::vector<double> position;             // (N, n, nb) [m]
+  std::vector<double> velocity;             // (N, n, nb) [m/s]
+  std::vector<double> energy;               // (N, n) [J]
+  std::vector<double> angular_momentum;     // (N, n) [kg m²/s]
+  std::vector<double> observed_order;       // (N, n)
+  std::vector<std::string> verdict;         // (N, n)
+};
+
+// The records of sample i (its filled rows) in the layout the estimate reads.
+ErrorRecords error_records(const BatchTrajectory& batch, std::size_t i);
+ErrorRecords error_records(const BatchSceneSimulation& batch, std::size_t i);
+
+// What the estimate of one sample needs besides its records: the order of its model for the method (0: the
+// method 'exact', the round-off bound alone) and the force it cannot see into ("" for none), as
+// estimate_global_error takes them.
+struct SampleModel {
+  int order = 0;
+  std::string opaque;
+};
+
+// The estimates of the batch `h` run with `answer` (the options every sample shares; the samples' own dt does
+// not enter the estimate), from the batches h2 and h4 of the same samples made with coarse_options(answer, 2)
+// and coarse_options(answer, 4) (empty when every model's order is 0). models: one per sample, or one shared.
+// The samples are estimated on `threads` threads (batch/parallel_for.hpp).
+template <class Batch>
+BatchErrorEstimate batch_error_estimate(const Batch& h, const Batch& h2, const Batch& h4,
+                                        const SimulationOptions& answer, const std::vector<SampleModel>& models,
+                                        int threads);
+
+// The per-sample dt of the batch at factor·h: each of `dt` times factor (empty stays empty: the common dt of
+// coarse_options).
+std::vector<double> coarse_dt(const std::vector<double>& dt, int factor);
+
+}  // namespace rigiddyn

@@ -1,0 +1,142 @@
+"""The global error estimate of every sample of a batch (simulate_batch, monte_carlo, rigiddyn.distributed) and of
+the `simulate` command.
+
+The contract tested: sample i's estimate is the one simulate gives for that sample alone (bitwise on the scalar
+path, whatever the thread count); the batch's GlobalError has the shapes of simulate's with a leading sample axis;
+a diverged sample's missing rows say so; the estimate survives pickling, chunked concatenation and monte_carlo.
+"""
+
+import json
+import pickle
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+import rigiddyn as rd
+from rigiddyn import distributed
+
+ARRAYS = ("attitude", "angular_velocity", "position", "velocity", "energy", "angular_momentum", "observed_order")
+
+
+def same(a, b):
+    return np.array_equal(np.asarray(a), np.asarray(b), equal_nan=True)
+
+
+def spins(n):
+    return [rd.RigidBodyState(w_B=[0.1, 1.0 + 0.2 * i, 0.05 * i]) for i in range(n)]
+
+
+@pytest.mark.parametrize("threads", [1, 3])
+def test_each_sample_is_its_own_simulate(threads):
+    body = rd.RigidBody(1.0, [1.0, 2.0, 3.0])
+    states = spins(5)
+    dts = [0.01, 0.02, 0.01, 0.015, 0.02]
+    res = rd.simulate_batch(body, states, dt=dts, steps=40, method="rkmk4", record_every=2, threads=threads)
+    assert res.error.order == 4
+    assert res.error.attitude.shape == (5, 21) and res.error.reliable.shape == (5, 21)
+    assert len(res.error.verdict) == 5 and all(len(row) == 21 for row in res.error.verdict)
+    for i, (state, dt) in enumerate(zip(states, dts)):
+        alone = rd.simulate(body, state, dt=dt, steps=40, method="rkmk4", record_every=2).error
+        assert res[i].error == alone  # every field, bitwise
+        for name in ARRAYS:
+            assert same(getattr(res.error, name)[i], getattr(alone, name)), name
+        assert res.error.verdict[i] == alone.verdict
+
+
+def test_scene_batch_per_body_shapes_and_samples():
+    scene = rd.Scene()
+    for name in ("a", "b"):
+        scene.add_body(rd.Particle(1.0), name=name)
+    scene.add(rd.SpringDamper(body_a=0, body_b=1, stiffness=4.0, rest_length=1.0))
+    initial = [[rd.ParticleState(p_W=[0, 0, 0]), rd.ParticleState(p_W=[1.2 + 0.1 * i, 0, 0], v_W=[0, 0.3, 0])]
+               for i in range(3)]
+    res = rd.simulate_batch(scene, initial, dt=0.01, steps=64, record_every=4)
+    assert res.error.position.shape == (3, 17, 2) and res.error.energy.shape == (3, 17)
+    for i in range(3):
+        alone = rd.simulate(scene, initial[i], dt=0.01, steps=64, record_every=4).error
+        assert res[i].error == alone
+
+
+def test_error_false_and_the_records_unchanged():
+    body = rd.RigidBody(1.0, [1.0, 2.0, 3.0])
+    with_error = rd.simulate_batch(body, spins(2), dt=0.01, steps=20)
+    without = rd.simulate_batch(body, spins(2), dt=0.01, steps=20, error=False)
+    assert without.error is None and without[0].error is None
+    assert np.array_equal(with_error.w_B, without.w_B)  # the coarse runs do not touch the answer
+    with pytest.raises(TypeError, match="error: expected True or False, got str 'yes'"):
+        rd.simulate_batch(body, spins(2), dt=0.01, steps=20, error="yes")
+
+
+def test_simd_path_estimates_agree_with_the_scalar_path():
+    body = rd.RigidBody(1.0, [1.0, 2.0, 3.0])
+    states = spins(4)
+    steps = 200
+    scalar = rd.simulate_batch(body, states, dt=0.01, steps=steps, record_every=4)
+    simd = rd.simulate_batch(body, states, dt=0.01, steps=steps, record_every=4, simd=True)
+    # The SIMD runs equal the scalar ones up to round-off: each of the three runs within the round-off bound of the
+    # estimate (8 eps per step, relative to |w_B| <= 2 rad/s), so each difference within twice that, and the
+    # estimate d1 / (2^4 - 1) within 2 * 2 * bound / 15.
+    bound = 8 * np.finfo(float).eps * steps * 2.0
+    assert np.max(np.abs(simd.error.angular_velocity - scalar.error.angular_velocity)) <= 4 * bound / 15
+    assert simd.error.verdict == scalar.error.verdict
+
+
+def test_a_diverged_sample_says_so_in_its_rows():
+    body = rd.RigidBody(1.0, [1.0, 2.0, 3.0])
+    states = [rd.RigidBodyState(w_B=[0.0, 0.0, 1.0]), rd.RigidBodyState(w_B=[0.0, 0.0, 1e200])]
+    with pytest.warns(RuntimeWarning, match="non-finite|overflow"):
+        res = rd.simulate_batch(body, states, dt=0.01, steps=40, method="explicit_euler")
+    filled = int(res.filled[1])
+    assert res.diverged[1] and filled < 41
+    assert np.all(np.isnan(res.error.attitude[1, filled:]))
+    assert all(v == "no record: the run at h diverged" for v in res.error.verdict[1][filled:])
+    assert not res.error.reliable[1, filled:].any()
+    assert res[0].error == rd.simulate(body, states[0], dt=0.01, steps=40, method="explicit_euler").error
+
+
+def test_pickle_and_sample_of_the_estimate():
+    body = rd.RigidBody(1.0, [1.0, 2.0, 3.0])
+    res = rd.simulate_batch(body, spins(3), dt=0.01, steps=24)
+    back = pickle.loads(pickle.dumps(res))
+    assert back.error == res.error and back[2].error == res[2].error
+    assert "of 75 records reliable" in res.error.summary()  # 3 samples x 25 records
+
+
+def test_chunks_concatenate_to_the_whole_estimate():
+    body = rd.RigidBody(1.0, [1.0, 2.0, 3.0])
+    states = spins(5)
+    whole = rd.simulate_batch(body, states, dt=0.01, steps=24, threads=1)
+    pieces = [rd.simulate_batch(body, states[a:b], dt=0.01, steps=24, threads=1) for a, b in ((0, 2), (2, 5))]
+    joined = distributed.concatenate(pieces)
+    assert joined.error == whole.error
+
+
+def test_monte_carlo_carries_the_estimate_and_its_statistics():
+    body = rd.RigidBody(2.0, [1.0, 2.0, 3.0])
+    run = rd.monte_carlo(body, rd.RigidBodyState(w_B=[0.0, 0.0, 1.0]), 6, seed=3,
+                         dispersions={"w_B": rd.dispersion.Normal(std=0.2)}, dt=0.01, steps=40)
+    assert run.error.attitude.shape == (6, 41)
+    assert "error.attitude" in run.fields
+    stats = run.statistics("error.attitude", at=0.4)
+    assert stats.count == 6 and stats.max == pytest.approx(np.max(run.error.attitude[:, -1]))
+    quiet = rd.monte_carlo(body, rd.RigidBodyState(w_B=[0.0, 0.0, 1.0]), 2, seed=3, dt=0.01, steps=4, error=False)
+    assert quiet.error is None and "error.attitude" not in quiet.fields
+    with pytest.raises(TypeError, match="error"):
+        rd.monte_carlo(body, rd.RigidBodyState(), 2, seed=3, dt=0.01, steps=4, error=1)
+
+
+@pytest.mark.parametrize("extra, reported", [([], True), (["--no-error"], False)])
+def test_simulate_command_reports_the_estimate(tmp_path, extra, reported):
+    out = tmp_path / "run"
+    done = subprocess.run([sys.executable, "-m", "rigiddyn", "simulate", "t_handle", "--method", "rk4", "--dt", "0.01",
+                           "--steps", "400", "--no-plot", "--no-progress", "--out", str(out), *extra],
+                          capture_output=True, text=True, check=True)
+    record = json.loads((out / "run.json").read_text())["global error"]
+    assert ("global error estimate: order 4" in done.stdout) == reported
+    if reported:
+        assert record["order"] == 4 and record["records"] == 401
+        assert record["largest estimates"]["attitude [rad]"] > 0
+    else:
+        assert record is None
