@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['AppliedLoad', 'BatchResult', 'BatchSceneResult', 'BodyAcceleration', 'ComWrench', 'CompiledScene', 'CompoundPendulumSolution', 'ConstantThrustSolution', 'DensityIntegral', 'Drag', 'ElementField', 'FORCE_ELEMENTS', 'FixedJoint', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'FreeJoint', 'GlobalError', 'GravityGradient', 'Gyrostat', 'GyrostatState', 'InertiaCheck', 'InertiaReport', 'KineticEnergy', 'LagrangeTopSolution', 'MagneticDipole', 'MassFlow', 'MeshWeldWarning', 'Motion', 'MutualGravity', 'Particle', 'ParticleState', 'PivotedAcceleration', 'PivotedBody', 'PivotedBodyState', 'PivotedPlanarAcceleration', 'PivotedPlanarBody', 'PivotedPlanarBodyState', 'PivotedPlanarTorque', 'PivotedTorque', 'PlanarAcceleration', 'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointMassGravity', 'PointVelocity', 'PrincipalAxes', 'PrismaticJoint', 'PythonForce', 'ReactionWheel', 'RevoluteJoint', 'RigidBody', 'RigidBodyState', 'RotatingFrameFreeParticle', 'Scene', 'SceneCompatibilityWarning', 'SceneFrame', 'SceneResult', 'ScheduledLoads', 'Screw', 'SimulationResult', 'SpatialInertia', 'SphericalJoint', 'SpringDamper', 'Thrust', 'TorqueFreeSolution', 'Transform', 'Tree', 'UniformGravity', 'WeldedMesh', 'Wheel', 'aba', 'align_vectors', 'angular_distance', 'angular_momentum', 'angular_velocity_from_quat_rate', 'apply_impulse', 'attitude_from_orbit_frame', 'attitude_to_orbit_frame', 'axis_angle_to_quat', 'bias_forces', 'box_shell', 'compose_kinematics', 'composite', 'crba', 'davenport_to_quat', 'default_thread_count', 'eccentric_to_mean_anomaly', 'eccentric_to_true_anomaly', 'elements_to_state', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'forward_kinematics', 'from_point_masses', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kepler_propagate', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mean_to_eccentric_anomaly', 'mean_to_true_anomaly', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation', 'nearest_valid_inertia', 'orbit_frame_angular_velocity', 'orbit_frame_rotation', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix', 'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh', 'rnea', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'semi_latus_rectum', 'simulate', 'simulate_batch', 'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'state_to_elements', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'true_to_eccentric_anomaly', 'true_to_mean_anomaly', 'twist_to_screw', 'vee', 'weld_vertices']
+__all__: list[str] = ['AppliedLoad', 'BatchResult', 'BatchSceneResult', 'BodyAcceleration', 'ComWrench', 'CompiledScene', 'CompoundPendulumSolution', 'ConstantThrustSolution', 'DensityIntegral', 'Drag', 'ElementField', 'FORCE_ELEMENTS', 'FixedJoint', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'FreeJoint', 'GlobalError', 'GravityGradient', 'Gyrostat', 'GyrostatState', 'InertiaCheck', 'InertiaReport', 'KineticEnergy', 'LagrangeTopSolution', 'MagneticDipole', 'MassFlow', 'MeshWeldWarning', 'Motion', 'MutualGravity', 'Particle', 'ParticleState', 'PivotedAcceleration', 'PivotedBody', 'PivotedBodyState', 'PivotedPlanarAcceleration', 'PivotedPlanarBody', 'PivotedPlanarBodyState', 'PivotedPlanarTorque', 'PivotedTorque', 'PlanarAcceleration', 'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointMassGravity', 'PointVelocity', 'PrincipalAxes', 'PrismaticJoint', 'PythonForce', 'ReactionWheel', 'RevoluteJoint', 'RigidBody', 'RigidBodyState', 'RotatingFrameFreeParticle', 'Scene', 'SceneCompatibilityWarning', 'SceneFrame', 'SceneResult', 'ScheduledLoads', 'Screw', 'SimulationResult', 'SpatialInertia', 'SphericalJoint', 'SpringDamper', 'Thrust', 'TorqueFreeSolution', 'Transform', 'Tree', 'UniformGravity', 'WeldedMesh', 'Wheel', 'ZonalGravity', 'aba', 'align_vectors', 'angular_distance', 'angular_momentum', 'angular_velocity_from_quat_rate', 'apply_impulse', 'attitude_from_orbit_frame', 'attitude_to_orbit_frame', 'axis_angle_to_quat', 'bias_forces', 'box_shell', 'compose_kinematics', 'composite', 'crba', 'davenport_to_quat', 'default_thread_count', 'eccentric_to_mean_anomaly', 'eccentric_to_true_anomaly', 'elements_to_state', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'forward_kinematics', 'from_point_masses', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kepler_propagate', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mean_to_eccentric_anomaly', 'mean_to_true_anomaly', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation', 'nearest_valid_inertia', 'orbit_frame_angular_velocity', 'orbit_frame_rotation', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix', 'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh', 'rnea', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'semi_latus_rectum', 'simulate', 'simulate_batch', 'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'state_to_elements', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'true_to_eccentric_anomaly', 'true_to_mean_anomaly', 'twist_to_screw', 'vee', 'weld_vertices']
 class _Quantity(typing.Protocol):
     """A pint Quantity of any registry (the core converts it to SI by its magnitude and units)."""
     @property
@@ -4428,6 +4428,95 @@ class ReactionWheel:
     def t_start(self) -> typing.Any:
         """
         the start of the ramp [s]
+        """
+class ZonalGravity:
+    """
+    An oblate central body (the Earth) fixed at p_W with its pole along pole_W: on each listed body the force f_W = -m grad U of the zonal field U = -gm/r + sum_{n=2..4} gm j_n radius^n P_n(u)/r^(n+1), r = |p_body - p_W|, u the sine of the latitude (P_n the Legendre polynomials), potential V = m U [J]. j2 alone makes a near-circular orbit's node regress at -(3/2) n j2 (radius/p)^2 cos i. No torque about the centre of mass (the zonal terms' gravity-gradient torque is j_n (radius/r)^n of GravityGradient's).
+    
+    Parameters
+    ----------
+    gm : float [m^3/s^2], required
+        gravitational parameter GM of the central body [m^3/s^2]
+    radius : float [m], required
+        reference (equatorial) radius R of the harmonics [m]
+    j2 : float, default 0.0
+        zonal coefficient J2 (the Earth's: 1.08262668e-3)
+    j3 : float, default 0.0
+        zonal coefficient J3 (the Earth's: -2.53265649e-6)
+    j4 : float, default 0.0
+        zonal coefficient J4 (the Earth's: -1.61962159e-6)
+    p_W : array_like, shape (3,) [m], default (0.0, 0.0, 0.0)
+        (3,) position of the central body's centre in W [m]
+    pole_W : array_like, shape (3,), default (0.0, 0.0, 1.0)
+        (3,) direction of its pole (symmetry) axis in W, any length
+    bodies : sequence of int or None, default None
+        None (every body) or a tuple of the indices of the bodies it acts on
+    
+    Each argument with a unit takes a float in that unit or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
+    
+    Examples
+    --------
+    At a point of the equator 7000 km from the Earth's centre, J2 pulls harder than gm/r^2 by (3/2) J2 (R/r)^2:
+    
+    >>> earth = rd.ZonalGravity(gm=3.986004418e14, radius=6378137.0, j2=1.08262668e-3)
+    >>> at_rest = rd.ParticleState(p_W=(7e6, 0.0, 0.0))
+    >>> result = rd.simulate(rd.Scene([rd.Particle(1.0)], elements=[earth]), [at_rest], 1e-3, steps=1, method="rk4")
+    >>> a_x = result.v_W[-1, 0, 0] / 1e-3  # from rest: v = a dt
+    >>> expected = -3.986004418e14 / 7e6**2 * (1 + 1.5 * 1.08262668e-3 * (6378137.0 / 7e6) ** 2)
+    >>> bool(abs(a_x / expected - 1) < 1e-12)
+    True
+    """
+    __hash__: typing.ClassVar[None] = None
+    fields: typing.ClassVar[tuple]
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, *, gm: float, radius: float, j2: float = 0.0, j3: float = 0.0, j4: float = 0.0, p_W: numpy.typing.ArrayLike = (0.0, 0.0, 0.0), pole_W: numpy.typing.ArrayLike = (0.0, 0.0, 1.0), bodies: collections.abc.Sequence[int] | None = None) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def bodies(self) -> typing.Any:
+        """
+        None (every body) or a tuple of the indices of the bodies it acts on
+        """
+    @property
+    def gm(self) -> typing.Any:
+        """
+        gravitational parameter GM of the central body [m^3/s^2]
+        """
+    @property
+    def j2(self) -> typing.Any:
+        """
+        zonal coefficient J2 (the Earth's: 1.08262668e-3)
+        """
+    @property
+    def j3(self) -> typing.Any:
+        """
+        zonal coefficient J3 (the Earth's: -2.53265649e-6)
+        """
+    @property
+    def j4(self) -> typing.Any:
+        """
+        zonal coefficient J4 (the Earth's: -1.61962159e-6)
+        """
+    @property
+    def p_W(self) -> typing.Any:
+        """
+        (3,) position of the central body's centre in W [m]
+        """
+    @property
+    def pole_W(self) -> typing.Any:
+        """
+        (3,) direction of its pole (symmetry) axis in W, any length
+        """
+    @property
+    def radius(self) -> typing.Any:
+        """
+        reference (equatorial) radius R of the harmonics [m]
         """
 class SceneFrame:
     """
@@ -11890,6 +11979,6 @@ def weld_vertices(vertices: numpy.typing.ArrayLike, faces: numpy.typing.ArrayLik
     (2, array([[0, 1, 2],
            [1, 3, 2]]))
     """
-FORCE_ELEMENTS: tuple = (UniformGravity, PointMassGravity, MutualGravity, GravityGradient, SpringDamper, Drag, ScheduledLoads, PythonForce, Thrust, MagneticDipole, ReactionWheel)
+FORCE_ELEMENTS: tuple = (UniformGravity, PointMassGravity, MutualGravity, GravityGradient, SpringDamper, Drag, ScheduledLoads, PythonForce, Thrust, MagneticDipole, ReactionWheel, ZonalGravity)
 __version__: str = '0.1.0'
 inertia_relative_tolerance: float = 1e-10

@@ -425,6 +425,10 @@ def scene_modes(scene: object, initial: list[object]) -> list[tuple[str, float, 
             for i in _listed(element, n):
                 modes += _gravity_modes(f"the attractor {label} on body {i}", float(element.gm),
                                         p[i] - np.asarray(element.p_W, float), float(element.softening))
+        elif kind == "ZonalGravity":  # its central term (the zonal ones are J_n (R/r)^n smaller)
+            for i in _listed(element, n):
+                modes += _gravity_modes(f"the central body {label} on body {i}", float(element.gm),
+                                        p[i] - np.asarray(element.p_W, float), 0.0)
         elif kind == "MutualGravity" and len(_listed(element, n)) > 1:
             # the pair with the largest G (m_i + m_j) / rho^3 (vectorised: O(N^2) pairs in numpy)
             listed = np.array(_listed(element, n))

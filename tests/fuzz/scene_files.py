@@ -129,8 +129,8 @@ def body_table(draw, name):
 
 
 def _force(draw, names, flows, rigid):
-    kinds = ["uniform_gravity", "point_mass_gravity", "mutual_gravity", "gravity_gradient", "spring_damper", "drag",
-             "scheduled_loads", "magnetic_dipole"] + (["thrust"] if flows else [])
+    kinds = ["uniform_gravity", "point_mass_gravity", "zonal_gravity", "mutual_gravity", "gravity_gradient",
+             "spring_damper", "drag", "scheduled_loads", "magnetic_dipole"] + (["thrust"] if flows else [])
     kinds += ["reaction_wheel"] if rigid else []  # on a rigid body, free or pinned
     kind = draw(st.sampled_from(kinds))
     table = {"type": kind}
@@ -142,6 +142,13 @@ def _force(draw, names, flows, rigid):
         table["p_W"] = [Q(0.0, "m"), Q(0.0, "m"), Q(-50.0, "m")]
         if kind == "point_mass_gravity":
             table["softening"] = draw(_q(st.floats(0.0, 1.0), "m"))
+    elif kind == "zonal_gravity":  # a central body of radius 10 m, 50 m away
+        table["gm"] = draw(_q(st.floats(1.0, 100.0), "m^3/s^2"))
+        table["radius"] = Q(10.0, "m")
+        for key in ("j2", "j3", "j4"):
+            table[key] = draw(st.floats(-0.1, 0.1))
+        table["p_W"] = [Q(0.0, "m"), Q(0.0, "m"), Q(-50.0, "m")]
+        table["pole_W"] = [draw(SMALL), draw(SMALL), 1.0]
     elif kind == "mutual_gravity":
         table["G"] = draw(_q(st.floats(1e-3, 1.0), "m^3/(kg*s^2)"))
         table["softening"] = draw(_q(st.floats(0.1, 1.0), "m"))

@@ -97,6 +97,7 @@ ELEMENTS = {
     "ScheduledLoads": lambda: rd.ScheduledLoads(body=0), "PythonForce": lambda: rd.PythonForce(_push),
     "Thrust": lambda: rd.Thrust(body=0, u_rel=V), "MagneticDipole": lambda: rd.MagneticDipole(m_B=V),
     "ReactionWheel": lambda: rd.ReactionWheel(body=0, axis_B=V, inertia=0.1),
+    "ZonalGravity": lambda: rd.ZonalGravity(gm=1.0, radius=0.1, j2=1e-3),
 }
 
 
@@ -292,7 +293,8 @@ EXAMPLES = {
     "CompiledScene": lambda: {"scene": _scene()}, "CompiledScene.describe": lambda: {},
     "SceneResult.to_dataframe": lambda: {},
     "UniformGravity": lambda: {}, "PointMassGravity": lambda: {"gm": 1.0}, "MutualGravity": lambda: {},
-    "GravityGradient": lambda: {"gm": 1.0}, "SpringDamper": lambda: {"body_a": 0, "stiffness": 1.0},
+    "GravityGradient": lambda: {"gm": 1.0}, "ZonalGravity": lambda: {"gm": 1.0, "radius": 0.1},
+    "SpringDamper": lambda: {"body_a": 0, "stiffness": 1.0},
     "Drag": lambda: {}, "ScheduledLoads": lambda: {"body": 0}, "PythonForce": lambda: {"fn": _push},
     "load_scene": lambda: {"path_or_text": "kepler"},
     # bodies about a fixed point, the scene's frame, variable mass

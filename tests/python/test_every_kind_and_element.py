@@ -44,6 +44,8 @@ def _force(t, body, p_W, q_WB, v_W, w_B):
 ELEMENT_EXAMPLES = {
     "UniformGravity": rd.UniformGravity(g_W=[0.0, 0.0, -9.81]),
     "PointMassGravity": rd.PointMassGravity(gm=3.986004418e14, p_W=[0.0, 0.0, -7e6], softening=1.0),
+    "ZonalGravity": rd.ZonalGravity(gm=3.986004418e14, radius=6378137.0, j2=1.08262668e-3, j3=-2.53265649e-6,
+                                    j4=-1.61962159e-6, p_W=[0.0, 0.0, -7e6], pole_W=[0.0, 0.1, 1.0]),
     "MutualGravity": rd.MutualGravity(G=1e-3, softening=0.05, bodies=[0, 1]),
     "GravityGradient": rd.GravityGradient(gm=3.986004418e14, p_W=[0.0, 0.0, -7e6], bodies=[1]),
     "SpringDamper": rd.SpringDamper(body_a=0, point_a_B=[0.0, 0.0, 0.0], body_b=1, point_b=[0.1, 0.0, 0.0],

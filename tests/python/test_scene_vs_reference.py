@@ -81,6 +81,10 @@ def random_elements(rng, kind, bodies):
         return [ref.Element(kind, dict(gm=rng.uniform(5, 50), p_W=far, softening=0.0, bodies=None)),
                 ref.Element(kind, dict(gm=rng.uniform(1, 5), p_W=rng.uniform(-0.2, 0.2, 3), softening=0.7,
                                        bodies=[0, 2]))]
+    if kind == "ZonalGravity":  # radius 2 m, 4 m away (R/r ≤ 0.8), strong zonal terms: ≲ 25 N
+        return [ref.Element(kind, dict(gm=rng.uniform(5, 50), radius=2.0, j2=rng.uniform(-0.1, 0.1),
+                                       j3=rng.uniform(-0.1, 0.1), j4=rng.uniform(-0.1, 0.1), p_W=far,
+                                       pole_W=rng.normal(size=3), bodies=None))]
     if kind == "MutualGravity":
         return [ref.Element(kind, dict(G=rng.uniform(1, 5), softening=rng.choice([0.0, 0.3]), bodies=None))]
     if kind == "GravityGradient":
@@ -121,8 +125,8 @@ def random_elements(rng, kind, bodies):
 
 
 KINDS = list(ref.FORCE_MODELS)
-CONSERVATIVE = ["UniformGravity", "PointMassGravity", "MutualGravity", "GravityGradient", "SpringDamper",
-                "MagneticDipole"]
+CONSERVATIVE = ["UniformGravity", "PointMassGravity", "ZonalGravity", "MutualGravity", "GravityGradient",
+                "SpringDamper", "MagneticDipole"]
 
 
 def random_scene(seed, kinds):

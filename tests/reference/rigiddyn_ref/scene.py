@@ -26,7 +26,7 @@ q = Rz(θ), v = (v_x, v_y, 0), w = (0, 0, ω). A planar body keeps only the in-p
 (f_x, f_y, n_z): the plane's reaction takes the rest.
 
 An element is data, Element(kind, params) with the parameter names of rigiddyn's Python classes
-(UniformGravity, PointMassGravity, MutualGravity, GravityGradient, SpringDamper, Drag, ScheduledLoads,
+(UniformGravity, PointMassGravity, ZonalGravity, MutualGravity, GravityGradient, SpringDamper, Drag, ScheduledLoads,
 MagneticDipole, ReactionWheel); `evaluate` calls the force model of its kind, which returns an Effect: the force
 f_W (nb, 3) [N] in W at each centre of mass, the couple tau_B (nb, 3) [N m] in each body's B, the power
 Σ f·v + τ·ω [W] and the potential [J] (0 where the model has none). rk4_step splits a step at the schedules'
@@ -177,6 +177,42 @@ def point_mass_gravity(bodies, kin, t, gm, p_W, softening=0.0, bodies_acted=None
         f, v = _inverse_square(gm * bodies[i].mass, kin[i].p_W - np.asarray(p_W, float), softening)
         f_W[i] += f
         potential += v
+    return _effect(f_W, tau_B, kin, potential)
+
+
+def _zonal_acceleration(gm, radius, j2, j3, j4, r_W, k_W):
+    """The acceleration of the zonal terms J2, J3, J4 at r_W from the centre, pole k_W (unit), in the Cartesian
+    form of Vallado, "Fundamentals of Astrodynamics and Applications", §8.7 (x, y across the pole axis, z along
+    it): each a_perp (along r − z k) and a_z (along k) of its term."""
+    z = r_W @ k_W
+    r2 = r_W @ r_W
+    r = np.sqrt(r2)
+    s2 = z * z / r2  # sin² of the latitude
+    c2 = -1.5 * j2 * gm * radius**2 / r**5
+    c3 = -2.5 * j3 * gm * radius**3 / r**7
+    c4 = 1.875 * j4 * gm * radius**4 / r**7
+    a_perp = c2 * (1.0 - 5.0 * s2) + c3 * (3.0 * z - 7.0 * z * s2) + c4 * (1.0 - 14.0 * s2 + 21.0 * s2 * s2)
+    a_z = (c2 * z * (3.0 - 5.0 * s2) + c3 * (6.0 * z * z - 7.0 * z * z * s2 - 0.6 * r2)
+           + c4 * z * (5.0 - 70.0 / 3.0 * s2 + 21.0 * s2 * s2))
+    return a_perp * (r_W - z * k_W) + a_z * k_W
+
+
+def zonal_gravity(bodies, kin, t, gm, radius, j2=0.0, j3=0.0, j4=0.0, p_W=(0.0, 0.0, 0.0), pole_W=(0.0, 0.0, 1.0),
+                  bodies_acted=None) -> Effect:
+    """An oblate central body at p_W, pole along pole_W: the point-mass attraction plus the zonal terms;
+    V = −GM m/r [1 − Σ J_n (R/r)^n P_n(sin latitude)] (Vallado §8.7)."""
+    f_W, tau_B = _zeros(bodies)
+    k_W = np.asarray(pole_W, float) / np.linalg.norm(pole_W)
+    potential = 0.0
+    for i in _acting(bodies, bodies_acted):
+        m, r_W = bodies[i].mass, kin[i].p_W - np.asarray(p_W, float)
+        f, v = _inverse_square(gm * m, r_W, 0.0)
+        f_W[i] += f + m * _zonal_acceleration(gm, radius, j2, j3, j4, r_W, k_W)
+        r = np.linalg.norm(r_W)
+        u = r_W @ k_W / r
+        legendre = ((3 * u**2 - 1) / 2, (5 * u**3 - 3 * u) / 2, (35 * u**4 - 30 * u**2 + 3) / 8)
+        zonal = sum(j * (radius / r) ** n * P for n, j, P in zip((2, 3, 4), (j2, j3, j4), legendre))
+        potential += v * (1.0 - zonal)
     return _effect(f_W, tau_B, kin, potential)
 
 
@@ -378,7 +414,7 @@ def reaction_wheel(bodies, kin, t, body, axis_B, inertia, speed=0.0, acceleratio
 FORCE_MODELS = {"UniformGravity": uniform_gravity, "PointMassGravity": point_mass_gravity,
                 "MutualGravity": mutual_gravity, "GravityGradient": gravity_gradient,
                 "SpringDamper": spring_damper, "Drag": drag, "ScheduledLoads": scheduled_loads,
-                "MagneticDipole": magnetic_dipole, "ReactionWheel": reaction_wheel}
+                "MagneticDipole": magnetic_dipole, "ReactionWheel": reaction_wheel, "ZonalGravity": zonal_gravity}
 
 
 class Element(NamedTuple):

@@ -13,6 +13,7 @@
 #include "rigiddyn/scene/elements/spring_damper.hpp"
 #include "rigiddyn/scene/elements/thrust.hpp"
 #include "rigiddyn/scene/elements/uniform_gravity.hpp"
+#include "rigiddyn/scene/elements/zonal_gravity.hpp"
 
 #include <variant>
 
@@ -28,7 +29,8 @@ using Element = std::variant<UniformGravity,    //
                              FunctionForce,     //
                              Thrust,            //
                              MagneticDipole,    //
-                             ReactionWheel>;
+                             ReactionWheel,     //
+                             ZonalGravity>;
 
 // The variant of the elements' compiled terms followed by More...: TermsOf<Element, X>::type =
 // std::variant<UniformGravityTerm, …, ThrustTerm, X>.
