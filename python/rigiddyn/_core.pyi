@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['AppliedLoad', 'BatchResult', 'BatchSceneResult', 'BodyAcceleration', 'ComWrench', 'CompiledScene', 'CompoundPendulumSolution', 'ConstantThrustSolution', 'DensityIntegral', 'Drag', 'ElementField', 'FORCE_ELEMENTS', 'FixedJoint', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'FreeJoint', 'GlobalError', 'GravityGradient', 'Gyrostat', 'GyrostatState', 'InertiaCheck', 'InertiaReport', 'KineticEnergy', 'LagrangeTopSolution', 'MagneticDipole', 'MassFlow', 'MeshWeldWarning', 'Motion', 'MutualGravity', 'Particle', 'ParticleState', 'PivotedAcceleration', 'PivotedBody', 'PivotedBodyState', 'PivotedPlanarAcceleration', 'PivotedPlanarBody', 'PivotedPlanarBodyState', 'PivotedPlanarTorque', 'PivotedTorque', 'PlanarAcceleration', 'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointMassGravity', 'PointVelocity', 'PrincipalAxes', 'PrismaticJoint', 'PythonForce', 'ReactionWheel', 'RevoluteJoint', 'RigidBody', 'RigidBodyState', 'RotatingFrameFreeParticle', 'Scene', 'SceneCompatibilityWarning', 'SceneFrame', 'SceneResult', 'ScheduledLoads', 'Screw', 'SimulationResult', 'SpatialInertia', 'SphericalJoint', 'SpringDamper', 'Thrust', 'TorqueFreeSolution', 'Transform', 'Tree', 'UniformGravity', 'WeldedMesh', 'Wheel', 'ZonalGravity', 'aba', 'align_vectors', 'angular_distance', 'angular_momentum', 'angular_velocity_from_quat_rate', 'apply_impulse', 'attitude_from_orbit_frame', 'attitude_to_orbit_frame', 'axis_angle_to_quat', 'bias_forces', 'box_shell', 'compose_kinematics', 'composite', 'crba', 'davenport_to_quat', 'default_thread_count', 'eccentric_to_mean_anomaly', 'eccentric_to_true_anomaly', 'elements_to_state', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'forward_kinematics', 'from_point_masses', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kepler_propagate', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mean_to_eccentric_anomaly', 'mean_to_true_anomaly', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation', 'nearest_valid_inertia', 'orbit_frame_angular_velocity', 'orbit_frame_rotation', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix', 'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh', 'rnea', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'semi_latus_rectum', 'simulate', 'simulate_batch', 'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'state_to_elements', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'true_to_eccentric_anomaly', 'true_to_mean_anomaly', 'twist_to_screw', 'vee', 'weld_vertices']
+__all__: list[str] = ['AppliedLoad', 'AtmosphericDrag', 'BatchResult', 'BatchSceneResult', 'BodyAcceleration', 'ComWrench', 'CompiledScene', 'CompoundPendulumSolution', 'ConstantThrustSolution', 'DensityIntegral', 'Drag', 'ElementField', 'FORCE_ELEMENTS', 'FixedJoint', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'FreeJoint', 'GlobalError', 'GravityGradient', 'Gyrostat', 'GyrostatState', 'InertiaCheck', 'InertiaReport', 'KineticEnergy', 'LagrangeTopSolution', 'MagneticDipole', 'MassFlow', 'MeshWeldWarning', 'Motion', 'MutualGravity', 'Particle', 'ParticleState', 'PivotedAcceleration', 'PivotedBody', 'PivotedBodyState', 'PivotedPlanarAcceleration', 'PivotedPlanarBody', 'PivotedPlanarBodyState', 'PivotedPlanarTorque', 'PivotedTorque', 'PlanarAcceleration', 'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointMassGravity', 'PointVelocity', 'PrincipalAxes', 'PrismaticJoint', 'PythonForce', 'ReactionWheel', 'RevoluteJoint', 'RigidBody', 'RigidBodyState', 'RotatingFrameFreeParticle', 'Scene', 'SceneCompatibilityWarning', 'SceneFrame', 'SceneResult', 'ScheduledLoads', 'Screw', 'SimulationResult', 'SpatialInertia', 'SphericalJoint', 'SpringDamper', 'Thrust', 'TorqueFreeSolution', 'Transform', 'Tree', 'UniformGravity', 'WeldedMesh', 'Wheel', 'ZonalGravity', 'aba', 'align_vectors', 'angular_distance', 'angular_momentum', 'angular_velocity_from_quat_rate', 'apply_impulse', 'attitude_from_orbit_frame', 'attitude_to_orbit_frame', 'axis_angle_to_quat', 'bias_forces', 'box_shell', 'compose_kinematics', 'composite', 'crba', 'davenport_to_quat', 'default_thread_count', 'eccentric_to_mean_anomaly', 'eccentric_to_true_anomaly', 'elements_to_state', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'forward_kinematics', 'from_point_masses', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kepler_propagate', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mean_to_eccentric_anomaly', 'mean_to_true_anomaly', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation', 'nearest_valid_inertia', 'orbit_frame_angular_velocity', 'orbit_frame_rotation', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix', 'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh', 'rnea', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'semi_latus_rectum', 'simulate', 'simulate_batch', 'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'state_to_elements', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'true_to_eccentric_anomaly', 'true_to_mean_anomaly', 'twist_to_screw', 'vee', 'weld_vertices']
 class _Quantity(typing.Protocol):
     """A pint Quantity of any registry (the core converts it to SI by its magnitude and units)."""
     @property
@@ -4517,6 +4517,102 @@ class ZonalGravity:
     def radius(self) -> typing.Any:
         """
         reference (equatorial) radius R of the harmonics [m]
+        """
+class AtmosphericDrag:
+    """
+    Drag of an exponential atmosphere turning with its planet: on each listed body f_W = -(1/2) rho drag_area |v_rel| v_rel [N] at its centre of pressure cp_B, v_rel = v_W - omega_W x r, rho = density0 exp(-(h - altitude0)/scale_height), r = p_body - p_W, h = |r| - radius; torque tau_B = cp_B x f_B [N m]. drag_area is C_D A [m^2] (the ballistic coefficient is m/(C_D A)). No potential: it dissipates. A circular orbit decays at da/dt = -rho (drag_area/m) sqrt(gm a).
+    
+    Parameters
+    ----------
+    density0 : float [kg/m^3], required
+        air density at altitude0 [kg/m^3]
+    altitude0 : float [m], default 0.0
+        reference altitude of density0 [m]
+    scale_height : float [m], required
+        scale height H of the density [m]
+    radius : float [m], required
+        radius of the central body (altitude 0) [m]
+    p_W : array_like, shape (3,) [m], default (0.0, 0.0, 0.0)
+        (3,) centre of the central body in W [m]
+    omega_W : array_like, shape (3,) [rad/s], default (0.0, 0.0, 0.0)
+        (3,) angular velocity of the atmosphere in W [rad/s] (the planet's rotation; zero: still air)
+    drag_area : float [m^2], required
+        drag coefficient times area C_D A of each body [m^2]
+    cp_B : array_like, shape (3,) [m], default (0.0, 0.0, 0.0)
+        (3,) centre of pressure in each body's B, from its centre of mass [m] (zero on a particle)
+    bodies : sequence of int or None, default None
+        None (every body) or a tuple of the indices of the bodies it acts on
+    
+    Each argument with a unit takes a float in that unit or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
+    
+    Examples
+    --------
+    A body 400 km up at 7670 m/s in still air of 3e-12 kg/m^3 loses energy at (1/2) rho (C_D A) v^3:
+    
+    >>> air = rd.AtmosphericDrag(density0=3e-12, altitude0=400e3, scale_height=60e3, radius=6378137.0,
+    ...                          drag_area=2.2 * 4.0)
+    >>> start = rd.ParticleState(p_W=(6778137.0, 0.0, 0.0), v_W=(0.0, 7670.0, 0.0))
+    >>> result = rd.simulate(rd.Scene([rd.Particle(500.0)], elements=[air]), [start], 0.01, steps=1, method="rk4")
+    >>> expected = -0.5 * 3e-12 * 8.8 * 7670.0**3 * 0.01  # the work of one step of 0.01 s [J]
+    >>> bool(abs(result.work[-1, 0] / expected - 1) < 1e-6)
+    True
+    """
+    __hash__: typing.ClassVar[None] = None
+    fields: typing.ClassVar[tuple]
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, *, density0: float, altitude0: float = 0.0, scale_height: float, radius: float, p_W: numpy.typing.ArrayLike = (0.0, 0.0, 0.0), omega_W: numpy.typing.ArrayLike = (0.0, 0.0, 0.0), drag_area: float, cp_B: numpy.typing.ArrayLike = (0.0, 0.0, 0.0), bodies: collections.abc.Sequence[int] | None = None) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def altitude0(self) -> typing.Any:
+        """
+        reference altitude of density0 [m]
+        """
+    @property
+    def bodies(self) -> typing.Any:
+        """
+        None (every body) or a tuple of the indices of the bodies it acts on
+        """
+    @property
+    def cp_B(self) -> typing.Any:
+        """
+        (3,) centre of pressure in each body's B, from its centre of mass [m] (zero on a particle)
+        """
+    @property
+    def density0(self) -> typing.Any:
+        """
+        air density at altitude0 [kg/m^3]
+        """
+    @property
+    def drag_area(self) -> typing.Any:
+        """
+        drag coefficient times area C_D A of each body [m^2]
+        """
+    @property
+    def omega_W(self) -> typing.Any:
+        """
+        (3,) angular velocity of the atmosphere in W [rad/s] (the planet's rotation; zero: still air)
+        """
+    @property
+    def p_W(self) -> typing.Any:
+        """
+        (3,) centre of the central body in W [m]
+        """
+    @property
+    def radius(self) -> typing.Any:
+        """
+        radius of the central body (altitude 0) [m]
+        """
+    @property
+    def scale_height(self) -> typing.Any:
+        """
+        scale height H of the density [m]
         """
 class SceneFrame:
     """
@@ -11979,6 +12075,6 @@ def weld_vertices(vertices: numpy.typing.ArrayLike, faces: numpy.typing.ArrayLik
     (2, array([[0, 1, 2],
            [1, 3, 2]]))
     """
-FORCE_ELEMENTS: tuple = (UniformGravity, PointMassGravity, MutualGravity, GravityGradient, SpringDamper, Drag, ScheduledLoads, PythonForce, Thrust, MagneticDipole, ReactionWheel, ZonalGravity)
+FORCE_ELEMENTS: tuple = (UniformGravity, PointMassGravity, MutualGravity, GravityGradient, SpringDamper, Drag, ScheduledLoads, PythonForce, Thrust, MagneticDipole, ReactionWheel, ZonalGravity, AtmosphericDrag)
 __version__: str = '0.1.0'
 inertia_relative_tolerance: float = 1e-10

@@ -447,6 +447,15 @@ def scene_modes(scene: object, initial: list[object]) -> list[tuple[str, float, 
                 if moment[i] > 0:
                     modes.append((f"the angular drag {label} on body {i}", 0.0,
                                   (float(element.angular_linear) + 2.0 * float(element.angular_quadratic) * w[i]) / moment[i]))
+        elif kind == "AtmosphericDrag":  # f = -(1/2) rho C_D A |v_rel| v_rel: a damping rate rho C_D A |v_rel| / m
+            for i in _listed(element, n):
+                r = p[i] - np.asarray(element.p_W, float)
+                altitude = float(np.linalg.norm(r)) - float(element.radius)
+                with np.errstate(over="ignore"):  # deep inside the planet: an infinite rate, named as such
+                    rho = float(element.density0) * float(np.exp(-(altitude - float(element.altitude0))
+                                                                 / float(element.scale_height)))
+                v_rel = float(np.linalg.norm(v[i] - np.cross(np.asarray(element.omega_W, float), r)))
+                modes.append((f"the air {label} on body {i}", 0.0, rho * float(element.drag_area) * v_rel / mass[i]))
         elif kind == "UniformGravity":
             modes += pivot_swing_modes(f"the gravity {label}", bodies, _listed(element, n), np.asarray(element.g_W, float))
         elif kind == "GravityGradient":

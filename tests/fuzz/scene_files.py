@@ -130,7 +130,8 @@ def body_table(draw, name):
 
 def _force(draw, names, flows, rigid):
     kinds = ["uniform_gravity", "point_mass_gravity", "zonal_gravity", "mutual_gravity", "gravity_gradient",
-             "spring_damper", "drag", "scheduled_loads", "magnetic_dipole"] + (["thrust"] if flows else [])
+             "spring_damper", "drag", "atmospheric_drag", "scheduled_loads", "magnetic_dipole"]
+    kinds += ["thrust"] if flows else []
     kinds += ["reaction_wheel"] if rigid else []  # on a rigid body, free or pinned
     kind = draw(st.sampled_from(kinds))
     table = {"type": kind}
@@ -167,6 +168,13 @@ def _force(draw, names, flows, rigid):
         for key, unit in (("linear", "N*s/m"), ("quadratic", "N*s^2/m^2"), ("angular_linear", "N*m*s/rad"),
                           ("angular_quadratic", "N*m*s^2/rad^2")):
             table[key] = draw(_q(st.floats(0.0, 0.5), unit))
+    elif kind == "atmospheric_drag":  # a planet of radius 40 m, 50 m away, its air turning (no centre of pressure:
+        table["density0"] = draw(_q(st.floats(0.0, 1.0), "kg/m^3"))  # the bodies may be particles)
+        table["scale_height"] = draw(_q(st.floats(1.0, 100.0), "m"))
+        table["radius"] = Q(40.0, "m")
+        table["p_W"] = [Q(0.0, "m"), Q(0.0, "m"), Q(-50.0, "m")]
+        table["omega_W"] = draw(_vector(3, st.floats(-0.1, 0.1), "rad/s"))
+        table["drag_area"] = draw(_q(st.floats(0.0, 1.0), "m^2"))
     elif kind == "scheduled_loads":
         table["body"] = draw(st.sampled_from(names))
         table["point_B"] = draw(_vector(3, st.floats(-0.5, 0.5), "m"))

@@ -98,6 +98,7 @@ ELEMENTS = {
     "Thrust": lambda: rd.Thrust(body=0, u_rel=V), "MagneticDipole": lambda: rd.MagneticDipole(m_B=V),
     "ReactionWheel": lambda: rd.ReactionWheel(body=0, axis_B=V, inertia=0.1),
     "ZonalGravity": lambda: rd.ZonalGravity(gm=1.0, radius=0.1, j2=1e-3),
+    "AtmosphericDrag": lambda: rd.AtmosphericDrag(density0=1e-11, scale_height=5e4, radius=6.4e6, drag_area=1.0),
 }
 
 
@@ -294,6 +295,7 @@ EXAMPLES = {
     "SceneResult.to_dataframe": lambda: {},
     "UniformGravity": lambda: {}, "PointMassGravity": lambda: {"gm": 1.0}, "MutualGravity": lambda: {},
     "GravityGradient": lambda: {"gm": 1.0}, "ZonalGravity": lambda: {"gm": 1.0, "radius": 0.1},
+    "AtmosphericDrag": lambda: {"density0": 1e-11, "scale_height": 5e4, "radius": 6.4e6, "drag_area": 1.0},
     "SpringDamper": lambda: {"body_a": 0, "stiffness": 1.0},
     "Drag": lambda: {}, "ScheduledLoads": lambda: {"body": 0}, "PythonForce": lambda: {"fn": _push},
     "load_scene": lambda: {"path_or_text": "kepler"},

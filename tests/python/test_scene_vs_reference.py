@@ -85,6 +85,11 @@ def random_elements(rng, kind, bodies):
         return [ref.Element(kind, dict(gm=rng.uniform(5, 50), radius=2.0, j2=rng.uniform(-0.1, 0.1),
                                        j3=rng.uniform(-0.1, 0.1), j4=rng.uniform(-0.1, 0.1), p_W=far,
                                        pole_W=rng.normal(size=3), bodies=None))]
+    if kind == "AtmosphericDrag":  # a planet of radius 2 m 4 m away, air turning with it: ≲ 5 N
+        air = dict(density0=rng.uniform(0.5, 2.0), altitude0=1.0, scale_height=2.0, radius=2.0, p_W=far,
+                   omega_W=rng.uniform(-0.3, 0.3, 3), drag_area=rng.uniform(0.1, 1.0))
+        return [ref.Element(kind, dict(air, cp_B=np.zeros(3), bodies=None)),
+                ref.Element(kind, dict(air, cp_B=rng.uniform(-0.5, 0.5, 3), bodies=[2, 3]))]
     if kind == "MutualGravity":
         return [ref.Element(kind, dict(G=rng.uniform(1, 5), softening=rng.choice([0.0, 0.3]), bodies=None))]
     if kind == "GravityGradient":

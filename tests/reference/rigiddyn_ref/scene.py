@@ -26,8 +26,8 @@ q = Rz(θ), v = (v_x, v_y, 0), w = (0, 0, ω). A planar body keeps only the in-p
 (f_x, f_y, n_z): the plane's reaction takes the rest.
 
 An element is data, Element(kind, params) with the parameter names of rigiddyn's Python classes
-(UniformGravity, PointMassGravity, ZonalGravity, MutualGravity, GravityGradient, SpringDamper, Drag, ScheduledLoads,
-MagneticDipole, ReactionWheel); `evaluate` calls the force model of its kind, which returns an Effect: the force
+(UniformGravity, PointMassGravity, ZonalGravity, MutualGravity, GravityGradient, SpringDamper, Drag,
+AtmosphericDrag, ScheduledLoads, MagneticDipole, ReactionWheel); `evaluate` calls the force model of its kind, which returns an Effect: the force
 f_W (nb, 3) [N] in W at each centre of mass, the couple tau_B (nb, 3) [N m] in each body's B, the power
 Σ f·v + τ·ω [W] and the potential [J] (0 where the model has none). rk4_step splits a step at the schedules'
 switch times, as rigiddyn does, and at a wheel's t_start and t_end, where its rate dΩ/dt jumps.
@@ -214,6 +214,22 @@ def zonal_gravity(bodies, kin, t, gm, radius, j2=0.0, j3=0.0, j4=0.0, p_W=(0.0, 
         zonal = sum(j * (radius / r) ** n * P for n, j, P in zip((2, 3, 4), (j2, j3, j4), legendre))
         potential += v * (1.0 - zonal)
     return _effect(f_W, tau_B, kin, potential)
+
+
+def atmospheric_drag(bodies, kin, t, density0, scale_height, radius, drag_area, altitude0=0.0, p_W=(0.0, 0.0, 0.0),
+                     omega_W=(0.0, 0.0, 0.0), cp_B=(0.0, 0.0, 0.0), bodies_acted=None) -> Effect:
+    """Drag of an exponential atmosphere turning at omega_W (Vallado §8.6.2): at r = p − p_W, altitude |r| − R,
+    ρ = ρ0 exp(−(h − h0)/H), the air's velocity omega_W × r, and f = −½ ρ C_D A |v_rel| v_rel applied at the centre
+    of pressure: its moment cp_B × f about the centre of mass (f in B)."""
+    f_W, tau_B = _zeros(bodies)
+    omega_W, cp_B = np.asarray(omega_W, float), np.asarray(cp_B, float)
+    for i in _acting(bodies, bodies_acted):
+        r_W = kin[i].p_W - np.asarray(p_W, float)
+        rho = density0 * np.exp(-(np.linalg.norm(r_W) - radius - altitude0) / scale_height)
+        v_rel = kin[i].v_W - np.cross(omega_W, r_W)
+        f_W[i] = -0.5 * rho * drag_area * np.linalg.norm(v_rel) * v_rel
+        tau_B[i] = np.cross(cp_B, to_body(kin[i].q_WB, f_W[i]))
+    return _effect(f_W, tau_B, kin)
 
 
 def mutual_gravity(bodies, kin, t, G=6.67430e-11, softening=0.0, bodies_acted=None) -> Effect:
@@ -414,7 +430,8 @@ def reaction_wheel(bodies, kin, t, body, axis_B, inertia, speed=0.0, acceleratio
 FORCE_MODELS = {"UniformGravity": uniform_gravity, "PointMassGravity": point_mass_gravity,
                 "MutualGravity": mutual_gravity, "GravityGradient": gravity_gradient,
                 "SpringDamper": spring_damper, "Drag": drag, "ScheduledLoads": scheduled_loads,
-                "MagneticDipole": magnetic_dipole, "ReactionWheel": reaction_wheel, "ZonalGravity": zonal_gravity}
+                "MagneticDipole": magnetic_dipole, "ReactionWheel": reaction_wheel, "ZonalGravity": zonal_gravity,
+                "AtmosphericDrag": atmospheric_drag}
 
 
 class Element(NamedTuple):

@@ -2,6 +2,7 @@
 // field table, its compiled term) and one row here. The Python classes, the scene file's [[force]] types and
 // describe() follow from this list; a scene model's terms are the specs' terms (`Spec::Term`).
 #pragma once
+#include "rigiddyn/scene/elements/atmospheric_drag.hpp"
 #include "rigiddyn/scene/elements/drag.hpp"
 #include "rigiddyn/scene/elements/function_force.hpp"
 #include "rigiddyn/scene/elements/gravity_gradient.hpp"
@@ -30,7 +31,8 @@ using Element = std::variant<UniformGravity,    //
                              Thrust,            //
                              MagneticDipole,    //
                              ReactionWheel,     //
-                             ZonalGravity>;
+                             ZonalGravity,      //
+                             AtmosphericDrag>;
 
 // The variant of the elements' compiled terms followed by More...: TermsOf<Element, X>::type =
 // std::variant<UniformGravityTerm, …, ThrustTerm, X>.

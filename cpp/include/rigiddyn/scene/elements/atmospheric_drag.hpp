@@ -1,0 +1,147 @@
+// Atmospheric drag on a body orbiting a central body: an exponential atmosphere, co-rotating with the planet,
+// acting at a centre of pressure (Vallado, "Fundamentals of Astrodynamics and Applications", §8.6.2, the drag
+// acceleration and the exponential density model; Curtis, "Orbital Mechanics for Engineering Students", §12.4).
+// With r = p_body − p_W, the altitude h = |r| − radius and the velocity relative to the air
+// v_rel = v_W − ω_atm × r (ω_atm the atmosphere's angular velocity in W, the planet's rotation),
+//   ρ = density0 · exp(−(h − altitude0) / scale_height),
+//   f_W = −½ ρ (C_D A) |v_rel| v_rel                       (drag_area = C_D A [m²], at the centre of pressure),
+//   tau_B = r_cp_B × (R_WBᵀ f_W)                          (its moment about the centre of mass).
+// v_rel is the centre of mass's: the rotation's own contribution ω × r_cp at the centre of pressure is left out
+// (|ω| |r_cp| ≪ |v_rel| for a spacecraft: 1e-3 rad/s × 1 m against 7.5 km/s). No potential: it dissipates
+// (power f·v_rel ≤ 0 relative to the air). A circular orbit decays at da/dt = −ρ (C_D A / m) √(GM a).
+#pragma once
+#include "rigiddyn/check.hpp"
+#include "rigiddyn/scene/body.hpp"
+#include "rigiddyn/scene/body_kinematics.hpp"
+#include "rigiddyn/scene/element_bodies.hpp"
+#include "rigiddyn/scene/element_fields.hpp"
+#include "rigiddyn/scene/element_traits.hpp"
+#include "rigiddyn/scene/elements/element_checks.hpp"
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <cmath>
+#include <string>
+#include <tuple>
+#include <vector>
+
+namespace rigiddyn {
+
+class AtmosphericDragTerm;
+
+// The spec: the exponential atmosphere of a central body of `radius` centred at p_W (density0 at altitude0,
+// scale_height), turning with omega_W, and each listed body's drag area C_D A and centre of pressure cp_B (in its B,
+// from its centre of mass).
+struct AtmosphericDrag {
+  static constexpr const char* element_type = "AtmosphericDrag";  // its name in records and messages
+  static constexpr const char* doc =  // the Python class's docstring
+      "Drag of an exponential atmosphere turning with its planet: on each listed body f_W = -(1/2) rho "
+      "drag_area |v_rel| v_rel [N] at its centre of pressure cp_B, v_rel = v_W - omega_W x r, rho = density0 "
+      "exp(-(h - altitude0)/scale_height), r = p_body - p_W, h = |r| - radius; torque tau_B = cp_B x f_B [N m]. "
+      "drag_area is C_D A [m^2] (the ballistic coefficient is m/(C_D A)). No potential: it dissipates. A circular "
+      "orbit decays at da/dt = -rho (drag_area/m) sqrt(gm a).";
+  static constexpr const char* example = R"py(A body 400 km up at 7670 m/s in still air of 3e-12 kg/m^3 loses energy at (1/2) rho (C_D A) v^3:
+
+>>> air = rd.AtmosphericDrag(density0=3e-12, altitude0=400e3, scale_height=60e3, radius=6378137.0,
+...                          drag_area=2.2 * 4.0)
+>>> start = rd.ParticleState(p_W=(6778137.0, 0.0, 0.0), v_W=(0.0, 7670.0, 0.0))
+>>> result = rd.simulate(rd.Scene([rd.Particle(500.0)], elements=[air]), [start], 0.01, steps=1, method="rk4")
+>>> expected = -0.5 * 3e-12 * 8.8 * 7670.0**3 * 0.01  # the work of one step of 0.01 s [J]
+>>> bool(abs(result.work[-1, 0] / expected - 1) < 1e-6)
+True)py";  // the docstring's Examples (run as doctests)
+  using Term = AtmosphericDragTerm;  // what compile makes of it
+  double density0 = 0.0;
+  double altitude0 = 0.0;
+  double scale_height = 0.0;
+  double radius = 0.0;
+  Eigen::Vector3d p_W = Eigen::Vector3d::Zero();
+  Eigen::Vector3d omega_W = Eigen::Vector3d::Zero();
+  double drag_area = 0.0;
+  Eigen::Vector3d cp_B = Eigen::Vector3d::Zero();
+  BodyList bodies;
+
+  // the field table (scene/element_fields.hpp)
+  static constexpr auto fields() {
+    return std::make_tuple(
+        scalar_field("density0", &AtmosphericDrag::density0, "kg/m^3", "air density at altitude0 [kg/m^3]")
+            .must_be_given().at_least_zero(),
+        scalar_field("altitude0", &AtmosphericDrag::altitude0, "m", "reference altitude of density0 [m]"),
+        scalar_field("scale_height", &AtmosphericDrag::scale_height, "m", "scale height H of the density [m]")
+            .must_be_given().above_zero(),
+        scalar_field("radius", &AtmosphericDrag::radius, "m", "radius of the central body (altitude 0) [m]")
+            .must_be_given().at_least_zero(),
+        vector_field("p_W", &AtmosphericDrag::p_W, "m", "(3,) centre of the central body in W [m]"),
+        vector_field("omega_W", &AtmosphericDrag::omega_W, "rad/s",
+                     "(3,) angular velocity of the atmosphere in W [rad/s] (the planet's rotation; zero: still air)"),
+        scalar_field("drag_area", &AtmosphericDrag::drag_area, "m^2", "drag coefficient times area C_D A of each body [m^2]")
+            .must_be_given().at_least_zero(),
+        vector_field("cp_B", &AtmosphericDrag::cp_B, "m",
+                     "(3,) centre of pressure in each body's B, from its centre of mass [m] (zero on a particle)"),
+        bodies_field(&AtmosphericDrag::bodies));
+  }
+};
+
+// The compiled term: the listed bodies.
+class AtmosphericDragTerm {
+ public:
+  // Throws std::invalid_argument "<name>.<field>: ..." for a density0, radius or drag_area that is not finite and
+  // >= 0, a scale_height not finite and > 0, a non-finite altitude0, p_W or omega_W, a cp_B a listed body cannot
+  // carry (non-zero on a particle, out of a planar body's plane), and "<name>.bodies[k]: ..." for an index out of
+  // range or repeated.
+  AtmosphericDragTerm(const AtmosphericDrag& spec, const std::vector<Body>& bodies, const std::string& name)
+      : density0_(spec.density0), altitude0_(spec.altitude0), scale_height_(spec.scale_height), radius_(spec.radius),
+        p_W_(spec.p_W), omega_W_(spec.omega_W), half_drag_area_(0.5 * spec.drag_area), cp_B_(spec.cp_B),
+        bodies_(detail::resolve_bodies(spec.bodies, bodies.size(), name)) {
+    detail::require_nonnegative(spec.density0, name + ".density0");
+    require_finite(spec.altitude0, name + ".altitude0");
+    require_positive(spec.scale_height, name + ".scale_height");
+    detail::require_nonnegative(spec.radius, name + ".radius");
+    require_finite(spec.p_W, name + ".p_W");
+    require_finite(spec.omega_W, name + ".omega_W");
+    detail::require_nonnegative(spec.drag_area, name + ".drag_area");
+    for (const int b : bodies_) detail::require_body_point(bodies[b], spec.cp_B, name + ".cp_B");
+  }
+
+  ElementTraits traits() const {
+    ElementTraits t{};
+    t.reads_attitude = !cp_B_.isZero(0.0), t.velocity_dependent = true, t.time_dependent = false;
+    t.has_potential = false, t.has_torque = !cp_B_.isZero(0.0);
+    return t;
+  }
+
+  // f_W and tau_B above on each listed body; returns Σ f_W·v_W + tau_B·w_B [W].
+  double add_wrenches(double /*t*/, const std::vector<BodyKinematics>& kinematics, std::vector<BodyWrench>& wrenches) const {
+    double power = 0.0;
+    for (const int b : bodies_) {
+      const BodyKinematics& body = kinematics[b];
+      const Eigen::Vector3d r_W = body.p_W - p_W_;
+      const Eigen::Vector3d v_rel = body.v_W - omega_W_.cross(r_W);
+      const Eigen::Vector3d f_W = (-half_drag_area_ * density(r_W.norm() - radius_) * v_rel.norm()) * v_rel;
+      wrenches[b].f_W += f_W;
+      power += f_W.dot(body.v_W);
+      if (!cp_B_.isZero(0.0)) {
+        const Eigen::Vector3d tau_B = cp_B_.cross(body.q_WB.conjugate() * f_W);
+        wrenches[b].tau_B += tau_B;
+        power += tau_B.dot(body.w_B);
+      }
+    }
+    return power;
+  }
+
+  double potential(const std::vector<BodyKinematics>& /*kinematics*/) const { return 0.0; }
+
+  const std::vector<int>& bodies() const { return bodies_; }
+
+ private:
+  // ρ(h) = density0 exp(−(h − altitude0)/H) [kg/m³]
+  double density(double altitude) const { return density0_ * std::exp(-(altitude - altitude0_) / scale_height_); }
+
+  double density0_, altitude0_, scale_height_, radius_;
+  Eigen::Vector3d p_W_, omega_W_;
+  double half_drag_area_;  // C_D A / 2 [m²]
+  Eigen::Vector3d cp_B_;
+  std::vector<int> bodies_;
+};
+
+}  // namespace rigiddyn
