@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['AppliedLoad', 'AtmosphericDrag', 'BatchResult', 'BatchSceneResult', 'BodyAcceleration', 'ComWrench', 'CompiledScene', 'CompoundPendulumSolution', 'ConstantThrustSolution', 'DensityIntegral', 'Drag', 'ElementField', 'FORCE_ELEMENTS', 'FixedJoint', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'FreeJoint', 'GlobalError', 'GravityGradient', 'Gyrostat', 'GyrostatState', 'InertiaCheck', 'InertiaReport', 'KineticEnergy', 'LagrangeTopSolution', 'MagneticDipole', 'MassFlow', 'MeshWeldWarning', 'Motion', 'MutualGravity', 'Particle', 'ParticleState', 'PivotedAcceleration', 'PivotedBody', 'PivotedBodyState', 'PivotedPlanarAcceleration', 'PivotedPlanarBody', 'PivotedPlanarBodyState', 'PivotedPlanarTorque', 'PivotedTorque', 'PlanarAcceleration', 'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointMassGravity', 'PointVelocity', 'PrincipalAxes', 'PrismaticJoint', 'PythonForce', 'ReactionWheel', 'RevoluteJoint', 'RigidBody', 'RigidBodyState', 'RotatingFrameFreeParticle', 'Scene', 'SceneCompatibilityWarning', 'SceneFrame', 'SceneResult', 'ScheduledLoads', 'Screw', 'SimulationResult', 'SpatialInertia', 'SphericalJoint', 'SpringDamper', 'Thrust', 'TorqueFreeSolution', 'Transform', 'Tree', 'UniformGravity', 'WeldedMesh', 'Wheel', 'ZonalGravity', 'aba', 'align_vectors', 'angular_distance', 'angular_momentum', 'angular_velocity_from_quat_rate', 'apply_impulse', 'attitude_from_orbit_frame', 'attitude_to_orbit_frame', 'axis_angle_to_quat', 'bias_forces', 'box_shell', 'compose_kinematics', 'composite', 'crba', 'davenport_to_quat', 'default_thread_count', 'eccentric_to_mean_anomaly', 'eccentric_to_true_anomaly', 'elements_to_state', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'forward_kinematics', 'from_point_masses', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kepler_propagate', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mean_to_eccentric_anomaly', 'mean_to_true_anomaly', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation', 'nearest_valid_inertia', 'orbit_frame_angular_velocity', 'orbit_frame_rotation', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix', 'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh', 'rnea', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'semi_latus_rectum', 'simulate', 'simulate_batch', 'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'state_to_elements', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'true_to_eccentric_anomaly', 'true_to_mean_anomaly', 'twist_to_screw', 'vee', 'weld_vertices']
+__all__: list[str] = ['AppliedLoad', 'AtmosphericDrag', 'BatchResult', 'BatchSceneResult', 'BodyAcceleration', 'ComWrench', 'CompiledScene', 'CompoundPendulumSolution', 'ConstantThrustSolution', 'DensityIntegral', 'Drag', 'ElementField', 'FORCE_ELEMENTS', 'FixedJoint', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'FreeJoint', 'GlobalError', 'GravityGradient', 'Gyrostat', 'GyrostatState', 'InertiaCheck', 'InertiaReport', 'KineticEnergy', 'LagrangeTopSolution', 'MagneticDipole', 'MassFlow', 'MeshWeldWarning', 'Motion', 'MutualGravity', 'Particle', 'ParticleState', 'PivotedAcceleration', 'PivotedBody', 'PivotedBodyState', 'PivotedPlanarAcceleration', 'PivotedPlanarBody', 'PivotedPlanarBodyState', 'PivotedPlanarTorque', 'PivotedTorque', 'PlanarAcceleration', 'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointMassGravity', 'PointVelocity', 'PrincipalAxes', 'PrismaticJoint', 'PythonForce', 'ReactionWheel', 'RevoluteJoint', 'RigidBody', 'RigidBodyState', 'RotatingFrameFreeParticle', 'Scene', 'SceneCompatibilityWarning', 'SceneFrame', 'SceneResult', 'ScheduledLoads', 'Screw', 'SimulationResult', 'SolarRadiationPressure', 'SpatialInertia', 'SphericalJoint', 'SpringDamper', 'Thrust', 'TorqueFreeSolution', 'Transform', 'Tree', 'UniformGravity', 'WeldedMesh', 'Wheel', 'ZonalGravity', 'aba', 'align_vectors', 'angular_distance', 'angular_momentum', 'angular_velocity_from_quat_rate', 'apply_impulse', 'attitude_from_orbit_frame', 'attitude_to_orbit_frame', 'axis_angle_to_quat', 'bias_forces', 'box_shell', 'compose_kinematics', 'composite', 'crba', 'davenport_to_quat', 'default_thread_count', 'eccentric_to_mean_anomaly', 'eccentric_to_true_anomaly', 'elements_to_state', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'forward_kinematics', 'from_point_masses', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kepler_propagate', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mean_to_eccentric_anomaly', 'mean_to_true_anomaly', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation', 'nearest_valid_inertia', 'orbit_frame_angular_velocity', 'orbit_frame_rotation', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix', 'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh', 'rnea', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'semi_latus_rectum', 'simulate', 'simulate_batch', 'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'state_to_elements', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'true_to_eccentric_anomaly', 'true_to_mean_anomaly', 'twist_to_screw', 'vee', 'weld_vertices']
 class _Quantity(typing.Protocol):
     """A pint Quantity of any registry (the core converts it to SI by its magnitude and units)."""
     @property
@@ -4613,6 +4613,121 @@ class AtmosphericDrag:
     def scale_height(self) -> typing.Any:
         """
         scale height H of the density [m]
+        """
+class SolarRadiationPressure:
+    """
+    Solar radiation pressure on each listed body, at its centre of pressure cp_B: a cannonball (normal_B zero) f_W = -pressure reflectivity area s, or a flat plate of normal n = R_WB normal_B lit on its normal's side, f_W = -pressure area cos(t) [(1 - specular) s + 2 (specular cos(t) + diffuse/3) n], cos(t) = n . s > 0; torque tau_B = cp_B x f_B. s is the unit direction towards the Sun, sun_W at t = 0 turned at sun_rate_W [rad/s]; none inside the cylindrical shadow of a planet of shadow_radius at shadow_p_W. No potential.
+    
+    Parameters
+    ----------
+    sun_W : array_like, shape (3,), required
+        (3,) direction towards the Sun in W at t = 0, any length
+    sun_rate_W : array_like, shape (3,) [rad/s], default (0.0, 0.0, 0.0)
+        (3,) angular velocity at which the Sun's direction turns, in W [rad/s] (zero: fixed)
+    pressure : float [N/m^2], default 4.56e-06
+        radiation pressure P [N/m^2] (4.56e-6: the Sun's at 1 au)
+    area : float [m^2], required
+        lit area A of each body [m^2]
+    reflectivity : float, default 1.0
+        cannonball coefficient C_R (1: absorbed, 2: mirrored back)
+    normal_B : array_like, shape (3,), default (0.0, 0.0, 0.0)
+        (3,) a flat plate's normal in B, any length (zero: a cannonball)
+    specular : float, default 0.0
+        a flat plate's specular reflectivity
+    diffuse : float, default 0.0
+        a flat plate's diffuse reflectivity
+    cp_B : array_like, shape (3,) [m], default (0.0, 0.0, 0.0)
+        (3,) centre of pressure in B, from the centre of mass [m]
+    shadow_radius : float [m], default 0.0
+        radius of the planet casting a cylindrical shadow [m] (0: none)
+    shadow_p_W : array_like, shape (3,) [m], default (0.0, 0.0, 0.0)
+        (3,) centre of that planet in W [m]
+    bodies : sequence of int or None, default None
+        None (every body) or a tuple of the indices of the bodies it acts on
+    
+    Each argument with a unit takes a float in that unit or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
+    
+    Examples
+    --------
+    A 4 m^2 cannonball of reflectivity 1.3 at 1 au is pushed away from the Sun by 4.56e-6 * 1.3 * 4 N:
+    
+    >>> srp = rd.SolarRadiationPressure(sun_W=(1.0, 0.0, 0.0), area=4.0, reflectivity=1.3)
+    >>> result = rd.simulate(rd.Scene([rd.Particle(100.0)], elements=[srp]), [rd.ParticleState()], 1.0, steps=1,
+    ...                      method="rk4")
+    >>> bool(np.allclose(result.v_W[-1, 0] * 100.0, [-4.56e-6 * 1.3 * 4.0, 0.0, 0.0], rtol=1e-12, atol=0))
+    True
+    """
+    __hash__: typing.ClassVar[None] = None
+    fields: typing.ClassVar[tuple]
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, *, sun_W: numpy.typing.ArrayLike, sun_rate_W: numpy.typing.ArrayLike = (0.0, 0.0, 0.0), pressure: float = 4.56e-06, area: float, reflectivity: float = 1.0, normal_B: numpy.typing.ArrayLike = (0.0, 0.0, 0.0), specular: float = 0.0, diffuse: float = 0.0, cp_B: numpy.typing.ArrayLike = (0.0, 0.0, 0.0), shadow_radius: float = 0.0, shadow_p_W: numpy.typing.ArrayLike = (0.0, 0.0, 0.0), bodies: collections.abc.Sequence[int] | None = None) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def area(self) -> typing.Any:
+        """
+        lit area A of each body [m^2]
+        """
+    @property
+    def bodies(self) -> typing.Any:
+        """
+        None (every body) or a tuple of the indices of the bodies it acts on
+        """
+    @property
+    def cp_B(self) -> typing.Any:
+        """
+        (3,) centre of pressure in B, from the centre of mass [m]
+        """
+    @property
+    def diffuse(self) -> typing.Any:
+        """
+        a flat plate's diffuse reflectivity
+        """
+    @property
+    def normal_B(self) -> typing.Any:
+        """
+        (3,) a flat plate's normal in B, any length (zero: a cannonball)
+        """
+    @property
+    def pressure(self) -> typing.Any:
+        """
+        radiation pressure P [N/m^2] (4.56e-6: the Sun's at 1 au)
+        """
+    @property
+    def reflectivity(self) -> typing.Any:
+        """
+        cannonball coefficient C_R (1: absorbed, 2: mirrored back)
+        """
+    @property
+    def shadow_p_W(self) -> typing.Any:
+        """
+        (3,) centre of that planet in W [m]
+        """
+    @property
+    def shadow_radius(self) -> typing.Any:
+        """
+        radius of the planet casting a cylindrical shadow [m] (0: none)
+        """
+    @property
+    def specular(self) -> typing.Any:
+        """
+        a flat plate's specular reflectivity
+        """
+    @property
+    def sun_W(self) -> typing.Any:
+        """
+        (3,) direction towards the Sun in W at t = 0, any length
+        """
+    @property
+    def sun_rate_W(self) -> typing.Any:
+        """
+        (3,) angular velocity at which the Sun's direction turns, in W [rad/s] (zero: fixed)
         """
 class SceneFrame:
     """
@@ -12075,6 +12190,6 @@ def weld_vertices(vertices: numpy.typing.ArrayLike, faces: numpy.typing.ArrayLik
     (2, array([[0, 1, 2],
            [1, 3, 2]]))
     """
-FORCE_ELEMENTS: tuple = (UniformGravity, PointMassGravity, MutualGravity, GravityGradient, SpringDamper, Drag, ScheduledLoads, PythonForce, Thrust, MagneticDipole, ReactionWheel, ZonalGravity, AtmosphericDrag)
+FORCE_ELEMENTS: tuple = (UniformGravity, PointMassGravity, MutualGravity, GravityGradient, SpringDamper, Drag, ScheduledLoads, PythonForce, Thrust, MagneticDipole, ReactionWheel, ZonalGravity, AtmosphericDrag, SolarRadiationPressure)
 __version__: str = '0.1.0'
 inertia_relative_tolerance: float = 1e-10

@@ -130,7 +130,8 @@ def body_table(draw, name):
 
 def _force(draw, names, flows, rigid):
     kinds = ["uniform_gravity", "point_mass_gravity", "zonal_gravity", "mutual_gravity", "gravity_gradient",
-             "spring_damper", "drag", "atmospheric_drag", "scheduled_loads", "magnetic_dipole"]
+             "spring_damper", "drag", "atmospheric_drag", "solar_radiation_pressure", "scheduled_loads",
+             "magnetic_dipole"]
     kinds += ["thrust"] if flows else []
     kinds += ["reaction_wheel"] if rigid else []  # on a rigid body, free or pinned
     kind = draw(st.sampled_from(kinds))
@@ -175,6 +176,12 @@ def _force(draw, names, flows, rigid):
         table["p_W"] = [Q(0.0, "m"), Q(0.0, "m"), Q(-50.0, "m")]
         table["omega_W"] = draw(_vector(3, st.floats(-0.1, 0.1), "rad/s"))
         table["drag_area"] = draw(_q(st.floats(0.0, 1.0), "m^2"))
+    elif kind == "solar_radiation_pressure":  # a cannonball (the bodies may be particles), a turning Sun, a shadow
+        table["sun_W"] = [draw(SMALL), draw(SMALL), 1.0]
+        table["sun_rate_W"] = draw(_vector(3, st.floats(-1.0, 1.0), "rad/s"))
+        table["area"] = draw(_q(st.floats(0.0, 2.0), "m^2"))
+        table["reflectivity"] = draw(st.floats(0.0, 2.0))
+        table["shadow_radius"] = draw(_q(st.floats(0.0, 2.0), "m"))
     elif kind == "scheduled_loads":
         table["body"] = draw(st.sampled_from(names))
         table["point_B"] = draw(_vector(3, st.floats(-0.5, 0.5), "m"))

@@ -215,7 +215,7 @@ RECIPES["dispersion.Statistics"] = st.tuples(RECIPES["dispersion.MonteCarloResul
 # the force element classes of a scene (Scene.add, Scene(elements=...))
 ELEMENT_CLASSES = ("UniformGravity", "PointMassGravity", "MutualGravity", "GravityGradient", "SpringDamper", "Drag",
                    "ScheduledLoads", "PythonForce", "Thrust", "MagneticDipole",
-                   "ReactionWheel", "ZonalGravity", "AtmosphericDrag")
+                   "ReactionWheel", "ZonalGravity", "AtmosphericDrag", "SolarRadiationPressure")
 # a field of an element class's table (each class's `fields`)
 RECIPES["ElementField"] = st.tuples(st.sampled_from(ELEMENT_CLASSES), st.integers(0, 1)).map(
     lambda ci: _call_spec(f"{ci[0]}.fields.__getitem__", [("lit", ci[1])]))

@@ -99,6 +99,7 @@ ELEMENTS = {
     "ReactionWheel": lambda: rd.ReactionWheel(body=0, axis_B=V, inertia=0.1),
     "ZonalGravity": lambda: rd.ZonalGravity(gm=1.0, radius=0.1, j2=1e-3),
     "AtmosphericDrag": lambda: rd.AtmosphericDrag(density0=1e-11, scale_height=5e4, radius=6.4e6, drag_area=1.0),
+    "SolarRadiationPressure": lambda: rd.SolarRadiationPressure(sun_W=V, area=1.0),
 }
 
 
@@ -296,6 +297,7 @@ EXAMPLES = {
     "UniformGravity": lambda: {}, "PointMassGravity": lambda: {"gm": 1.0}, "MutualGravity": lambda: {},
     "GravityGradient": lambda: {"gm": 1.0}, "ZonalGravity": lambda: {"gm": 1.0, "radius": 0.1},
     "AtmosphericDrag": lambda: {"density0": 1e-11, "scale_height": 5e4, "radius": 6.4e6, "drag_area": 1.0},
+    "SolarRadiationPressure": lambda: {"sun_W": V, "area": 1.0},
     "SpringDamper": lambda: {"body_a": 0, "stiffness": 1.0},
     "Drag": lambda: {}, "ScheduledLoads": lambda: {"body": 0}, "PythonForce": lambda: {"fn": _push},
     "load_scene": lambda: {"path_or_text": "kepler"},

@@ -90,6 +90,13 @@ def random_elements(rng, kind, bodies):
                    omega_W=rng.uniform(-0.3, 0.3, 3), drag_area=rng.uniform(0.1, 1.0))
         return [ref.Element(kind, dict(air, cp_B=np.zeros(3), bodies=None)),
                 ref.Element(kind, dict(air, cp_B=rng.uniform(-0.5, 0.5, 3), bodies=[2, 3]))]
+    if kind == "SolarRadiationPressure":  # a turning Sun, P A ≲ 2 N: a cannonball, a plate on the rigid bodies and
+        # a planet of radius 1.5 m at the origin whose shadow may cover some bodies
+        sun = dict(sun_W=rng.normal(size=3), sun_rate_W=rng.uniform(-1, 1, 3), pressure=rng.uniform(0.5, 1.0),
+                   area=rng.uniform(0.5, 2.0), shadow_radius=1.5)
+        return [ref.Element(kind, dict(sun, reflectivity=rng.uniform(1, 2), bodies=None)),
+                ref.Element(kind, dict(sun, normal_B=rng.normal(size=3), specular=0.4, diffuse=0.3,
+                                       cp_B=rng.uniform(-0.5, 0.5, 3), bodies=[2, 3]))]
     if kind == "MutualGravity":
         return [ref.Element(kind, dict(G=rng.uniform(1, 5), softening=rng.choice([0.0, 0.3]), bodies=None))]
     if kind == "GravityGradient":

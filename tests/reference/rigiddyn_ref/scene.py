@@ -27,7 +27,7 @@ q = Rz(θ), v = (v_x, v_y, 0), w = (0, 0, ω). A planar body keeps only the in-p
 
 An element is data, Element(kind, params) with the parameter names of rigiddyn's Python classes
 (UniformGravity, PointMassGravity, ZonalGravity, MutualGravity, GravityGradient, SpringDamper, Drag,
-AtmosphericDrag, ScheduledLoads, MagneticDipole, ReactionWheel); `evaluate` calls the force model of its kind, which returns an Effect: the force
+AtmosphericDrag, SolarRadiationPressure, ScheduledLoads, MagneticDipole, ReactionWheel); `evaluate` calls the force model of its kind, which returns an Effect: the force
 f_W (nb, 3) [N] in W at each centre of mass, the couple tau_B (nb, 3) [N m] in each body's B, the power
 Σ f·v + τ·ω [W] and the potential [J] (0 where the model has none). rk4_step splits a step at the schedules'
 switch times, as rigiddyn does, and at a wheel's t_start and t_end, where its rate dΩ/dt jumps.
@@ -232,6 +232,42 @@ def atmospheric_drag(bodies, kin, t, density0, scale_height, radius, drag_area, 
     return _effect(f_W, tau_B, kin)
 
 
+def solar_radiation_pressure(bodies, kin, t, sun_W, area, sun_rate_W=(0.0, 0.0, 0.0), pressure=4.56e-6,
+                             reflectivity=1.0, normal_B=(0.0, 0.0, 0.0), specular=0.0, diffuse=0.0,
+                             cp_B=(0.0, 0.0, 0.0), shadow_radius=0.0, shadow_p_W=(0.0, 0.0, 0.0),
+                             bodies_acted=None) -> Effect:
+    """Radiation pressure (Montenbruck & Gill, "Satellite Orbits", §3.4): towards-the-Sun direction s = sun_W turned
+    by the rotation vector sun_rate_W t; a cannonball f = −P C_R A s; a flat plate of normal n in W lit on its side
+    (cos θ = n·s > 0), f = −P A cos θ [(1 − ρs) s + 2 (ρs cos θ + ρd/3) n]; nothing in the planet's cylindrical
+    shadow; the moment cp_B × f about the centre of mass."""
+    f_W, tau_B = _zeros(bodies)
+    s = np.asarray(sun_W, float) / np.linalg.norm(sun_W)
+    turn = np.asarray(sun_rate_W, float) * t
+    if np.any(turn):
+        s = quat_to_matrix(_rotvec_quat(turn)) @ s
+    normal_B, cp_B = np.asarray(normal_B, float), np.asarray(cp_B, float)
+    for i in _acting(bodies, bodies_acted):
+        r = kin[i].p_W - np.asarray(shadow_p_W, float)
+        if r @ s < 0.0 and np.linalg.norm(r - (r @ s) * s) < shadow_radius:
+            continue
+        if not np.any(normal_B):
+            f = -pressure * reflectivity * area * s
+        else:
+            n = to_world(kin[i].q_WB, normal_B / np.linalg.norm(normal_B))
+            cos_theta = n @ s
+            f = (-pressure * area * cos_theta * ((1 - specular) * s + 2 * (specular * cos_theta + diffuse / 3) * n)
+                 if cos_theta > 0 else np.zeros(3))
+        f_W[i] = f
+        tau_B[i] = np.cross(cp_B, to_body(kin[i].q_WB, f))
+    return _effect(f_W, tau_B, kin)
+
+
+def _rotvec_quat(phi) -> np.ndarray:
+    """The unit quaternion (x, y, z, w) of the rotation vector phi [rad]."""
+    angle = np.linalg.norm(phi)
+    return np.append(np.sin(angle / 2) * phi / angle, np.cos(angle / 2))
+
+
 def mutual_gravity(bodies, kin, t, G=6.67430e-11, softening=0.0, bodies_acted=None) -> Effect:
     """Direct sum over the pairs i < j: f on i = −G m_i m_j r_ij/(|r_ij|² + ε²)^{3/2}, r_ij = p_i − p_j,
     and f on j = −(f on i) (action and reaction, Rigid-body notes (4.49))."""
@@ -431,7 +467,7 @@ FORCE_MODELS = {"UniformGravity": uniform_gravity, "PointMassGravity": point_mas
                 "MutualGravity": mutual_gravity, "GravityGradient": gravity_gradient,
                 "SpringDamper": spring_damper, "Drag": drag, "ScheduledLoads": scheduled_loads,
                 "MagneticDipole": magnetic_dipole, "ReactionWheel": reaction_wheel, "ZonalGravity": zonal_gravity,
-                "AtmosphericDrag": atmospheric_drag}
+                "AtmosphericDrag": atmospheric_drag, "SolarRadiationPressure": solar_radiation_pressure}
 
 
 class Element(NamedTuple):

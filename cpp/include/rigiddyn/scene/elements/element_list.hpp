@@ -11,6 +11,7 @@
 #include "rigiddyn/scene/elements/point_mass_gravity.hpp"
 #include "rigiddyn/scene/elements/reaction_wheel.hpp"
 #include "rigiddyn/scene/elements/scheduled_loads.hpp"
+#include "rigiddyn/scene/elements/solar_radiation_pressure.hpp"
 #include "rigiddyn/scene/elements/spring_damper.hpp"
 #include "rigiddyn/scene/elements/thrust.hpp"
 #include "rigiddyn/scene/elements/uniform_gravity.hpp"
@@ -32,7 +33,8 @@ using Element = std::variant<UniformGravity,    //
                              MagneticDipole,    //
                              ReactionWheel,     //
                              ZonalGravity,      //
-                             AtmosphericDrag>;
+                             AtmosphericDrag,   //
+                             SolarRadiationPressure>;
 
 // The variant of the elements' compiled terms followed by More...: TermsOf<Element, X>::type =
 // std::variant<UniformGravityTerm, …, ThrustTerm, X>.
