@@ -45,40 +45,45 @@ struct Differences {
   double d1, d2, round_off;
 };
 
+// The differences of the bodies' values of one kind of quantity taken together: d1 and d2 the norms of the bodies'
+// differences, the round-off bound their sum. Checking the order on these rather than body by body keeps a body
+// whose own error crosses zero at the record (where its ratio r says nothing) from failing the check alone.
+Differences combined(const std::vector<Differences>& bodies) {
+  Differences out{0.0, 0.0, 0.0};
+  for (const Differences& d : bodies) out.d1 += d.d1 * d.d1, out.d2 += d.d2 * d.d2, out.round_off += d.round_off;
+  out.d1 = std::sqrt(out.d1), out.d2 = std::sqrt(out.d2);
+  return out;
+}
+
 // What one common record's quantities say: the estimate of each, and the record's observed order and verdict
-// (those of the quantity whose ratio r is furthest from 2^p, unless a coarse run diverged).
+// (those of the quantity whose ratio r is furthest from 2^p, unless a run diverged).
 class CommonRecord {
  public:
   CommonRecord(int order, std::string coarse_problem) : order_(order), blocked_(std::move(coarse_problem)) {}
 
-  // ε of a quantity named `name` (of body `body` when the run has several; -1: a quantity of the whole run),
-  // checking its observed order.
-  double estimate(const Differences& d, const char* name, std::int64_t body = -1) {
-    if (d.d1 <= d.round_off) return d.round_off;  // at round-off level: its bound, no order to check
+  // ε of one body's value of a quantity (its order checked with the other bodies', by check()).
+  double estimate(const Differences& d) {
+    if (d.d1 <= d.round_off) return d.round_off;  // at round-off level: its bound
     if (!std::isfinite(d.d1)) {
-      block("the run at h or 2h diverged");
+      block("step beyond the stability limit: the run at h or 2h diverged");
       return nan;
     }
-    const double expected = std::exp2(order_);
-    const double epsilon = d.d1 / (expected - 1.0);  // leading error term of y_h
-    if (!std::isfinite(d.d2)) {
-      block("the 4h run diverged");
-      return epsilon;
-    }
-    const double r = d.d2 / d.d1;
-    const double distance = std::abs(std::log(r / expected));
-    if (distance > worst_distance_) {
-      worst_distance_ = distance, observed_order_ = std::log2(r);
-      problem_.clear();
-      if (!(r >= expected / 1.5 && r <= expected * 1.5)) {
-        char text[192];
-        std::snprintf(text, sizeof text, "not asymptotic: observed order %.2g where %d is expected (%s%s%s)",
-                      observed_order_, order_, name, body < 0 ? "" : " of body ",
-                      body < 0 ? "" : std::to_string(body).c_str());
-        problem_ = text;
-      }
-    }
-    return epsilon;
+    return d.d1 / (std::exp2(order_) - 1.0);  // leading error term of y_h
+  }
+
+  // The observed order of a kind of quantity named `name` (the differences of its bodies together): r must lie
+  // in [2^p / 1.5, 2^p · 1.5].
+  void check(const Differences& d, const char* name) { ratio(d, name, std::exp2(order_) * 1.5); }
+
+  // ε of a conserved quantity of the run (energy, |L|), whose error may fall faster than h^p: the leading term
+  // of an invariant's error often vanishes (rk4 conserves a quadratic invariant of a linear problem to
+  // O(h^(p+1))). Its r may lie in [2^p / 1.5, 2^(p+1) · 1.5]; above 2^p · 1.5 the estimate takes the observed
+  // order q = log2 r: ε = d1 / (2^q − 1) = d1 / (r − 1), the leading term of an error C h^q.
+  double invariant(const Differences& d, const char* name) {
+    const double epsilon = estimate(d);
+    if (!(d.d1 > d.round_off) || !std::isfinite(d.d1)) return epsilon;
+    const double r = ratio(d, name, std::exp2(order_ + 1) * 1.5);
+    return r > std::exp2(order_) * 1.5 && r <= std::exp2(order_ + 1) * 1.5 ? d.d1 / (r - 1.0) : epsilon;
   }
 
   double observed_order() const { return observed_order_; }
@@ -88,12 +93,43 @@ class CommonRecord {
   }
 
  private:
+  // r = d2 / d1 checked against [2^p / 1.5, highest]; the quantity furthest from 2^p names the record's order
+  // and, outside the window, its verdict. Returns r (NaN where not measured).
+  double ratio(const Differences& d, const char* name, double highest) {
+    if (d.d1 <= d.round_off) return nan;  // at round-off level: no order to check
+    if (!std::isfinite(d.d1)) {
+      block("step beyond the stability limit: the run at h or 2h diverged");
+      return nan;
+    }
+    if (!std::isfinite(d.d2)) {
+      block("step beyond the stability limit: the run at 4h diverged");
+      return nan;
+    }
+    const double expected = std::exp2(order_);
+    const double r = d.d2 / d.d1;
+    const bool inside = r >= expected / 1.5 && r <= highest;
+    const double distance = std::abs(std::log(r / expected));
+    // a quantity outside its window names the record before any inside it, then the furthest from 2^p
+    if (std::make_pair(!inside, distance) > std::make_pair(worst_outside_, worst_distance_)) {
+      worst_outside_ = !inside, worst_distance_ = distance, observed_order_ = std::log2(r);
+      problem_.clear();
+      if (!inside) {
+        char text[192];
+        std::snprintf(text, sizeof text, "not asymptotic: observed order %.2g where %d is expected (%s)",
+                      observed_order_, order_, name);
+        problem_ = text;
+      }
+    }
+    return r;
+  }
+
   void block(const std::string& why) {
     if (blocked_.empty()) blocked_ = why;
   }
 
   int order_;
   std::string blocked_, problem_;
+  bool worst_outside_ = false;
   double worst_distance_ = -1.0;
   double observed_order_ = nan;
 };
@@ -121,35 +157,47 @@ RecordEstimate estimate_common(const ErrorRecords& h, const ErrorRecords& h2, co
   CommonRecord record(order, coarse_problem);
   RecordEstimate out;
   const std::int64_t nb = h.bodies;
-  for (std::int64_t b = 0; b < nb; ++b) {
-    const std::int64_t of = nb == 1 ? -1 : b;
-    const auto angle = [b](const ErrorRecords& x, std::size_t a, const ErrorRecords& y, std::size_t c) {
-      return angular_distance(attitude(y, c, b), attitude(x, a, b));
-    };
-    out.attitude.push_back(record.estimate(differences(h, h2, h4, i, j, 1.0, steps, angle), "attitude", of));
-    const auto vector_quantity = [&](const double* ErrorRecords::*rows, const char* name) {
-      const auto distance = [rows, b](const ErrorRecords& x, std::size_t a, const ErrorRecords& y, std::size_t c) {
-        return (vector3(x.*rows, x, a, b) - vector3(y.*rows, y, c, b)).norm();
-      };
-      const double size = vector3(h.*rows, h, i, b).norm();
-      return record.estimate(differences(h, h2, h4, i, j, size, steps, distance), name, of);
-    };
-    out.angular_velocity.push_back(vector_quantity(&ErrorRecords::w_B, "angular velocity"));
-    out.position.push_back(vector_quantity(&ErrorRecords::p_W, "position"));
-    out.velocity.push_back(vector_quantity(&ErrorRecords::v_W, "velocity"));
-  }
+  // the differences of a kind of quantity, body by body: their estimates, then their order checked together
+  const auto kind = [&](std::vector<double>& estimates, const char* name, auto distance_of_body, auto size_of_body) {
+    std::vector<Differences> bodies;
+    for (std::int64_t b = 0; b < nb; ++b) {
+      bodies.push_back(differences(h, h2, h4, i, j, size_of_body(b), steps, distance_of_body(b)));
+      estimates.push_back(record.estimate(bodies.back()));
+    }
+    record.check(combined(bodies), name);
+  };
+  kind(out.attitude, "attitude",
+       [](std::int64_t b) {
+         return [b](const ErrorRecords& x, std::size_t a, const ErrorRecords& y, std::size_t c) {
+           return angular_distance(attitude(y, c, b), attitude(x, a, b));
+         };
+       },
+       [](std::int64_t) { return 1.0; });
+  const auto vector_kind = [&](std::vector<double>& estimates, const double* ErrorRecords::*rows, const char* name) {
+    kind(estimates, name,
+         [rows](std::int64_t b) {
+           return [rows, b](const ErrorRecords& x, std::size_t a, const ErrorRecords& y, std::size_t c) {
+             return (vector3(x.*rows, x, a, b) - vector3(y.*rows, y, c, b)).norm();
+           };
+         },
+         [&, rows](std::int64_t b) { return vector3(h.*rows, h, i, b).norm(); });
+  };
+  vector_kind(out.angular_velocity, &ErrorRecords::w_B, "angular velocity");
+  vector_kind(out.position, &ErrorRecords::p_W, "position");
+  vector_kind(out.velocity, &ErrorRecords::v_W, "velocity");
   const auto scalar = [](const double* ErrorRecords::*column) {
     return [column](const ErrorRecords& x, std::size_t a, const ErrorRecords& y, std::size_t c) {
       return std::abs((x.*column)[a] - (y.*column)[c]);
     };
   };
   const double energy_size = energy_size_of(h, i);
-  out.energy = record.estimate(differences(h, h2, h4, i, j, energy_size, steps, scalar(&ErrorRecords::energy)), "energy");
+  out.energy =
+      record.invariant(differences(h, h2, h4, i, j, energy_size, steps, scalar(&ErrorRecords::energy)), "energy");
   const auto momentum = [](const ErrorRecords& x, std::size_t a, const ErrorRecords& y, std::size_t c) {
     return std::abs(x.momentum[a] - y.momentum[c]);
   };
   out.angular_momentum =
-      record.estimate(differences(h, h2, h4, i, j, h.momentum[i], steps, momentum), "angular momentum");
+      record.invariant(differences(h, h2, h4, i, j, h.momentum[i], steps, momentum), "angular momentum");
   out.observed_order = record.observed_order();
   out.verdict = record.verdict();
   return out;
@@ -251,8 +299,9 @@ GlobalErrorEstimate estimate_global_error(const ErrorRecords& h, const ErrorReco
   std::vector<RecordEstimate> common;
   for (std::size_t j = 0; j <= last && h.n > 0; ++j) {
     const std::size_t i = j * stride;
-    const std::string problem =
-        j >= h2.n ? "the 2h run diverged" : (j >= h4.n ? "the 4h run diverged" : std::string());
+    const std::string problem = j >= h2.n   ? "step beyond the stability limit: the run at 2h diverged"
+                                : j >= h4.n ? "step beyond the stability limit: the run at 4h diverged"
+                                            : std::string();
     common.push_back(estimate_common(h, h2, h4, i, j, step_of(i, answer), order, problem));
     if (!opaque.empty() && common.back().verdict == "reliable") {
       common.back().verdict = "not verified: " + opaque +
