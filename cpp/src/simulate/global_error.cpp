@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <cfloat>
 #include <cmath>
 #include <limits>
@@ -196,8 +197,9 @@ RecordEstimate estimate_common(const ErrorRecords& h, const ErrorRecords& h2, co
   const auto momentum = [](const ErrorRecords& x, std::size_t a, const ErrorRecords& y, std::size_t c) {
     return std::abs(x.momentum[a] - y.momentum[c]);
   };
+  const double momentum_size = h.momentum_scale.empty() ? h.momentum[i] : h.momentum_scale[i];
   out.angular_momentum =
-      record.invariant(differences(h, h2, h4, i, j, h.momentum[i], steps, momentum), "angular momentum");
+      record.invariant(differences(h, h2, h4, i, j, momentum_size, steps, momentum), "angular momentum");
   out.observed_order = record.observed_order();
   out.verdict = record.verdict();
   return out;
@@ -253,6 +255,52 @@ std::int64_t step_of(std::size_t i, const SimulationOptions& o) {
   return std::min(static_cast<std::int64_t>(i) * o.record_every, o.steps);
 }
 
+// The largest estimate of the state quantities (attitude, angular velocity, position, velocity: each over the
+// bodies) of a record, kind by kind.
+std::array<double, 4> state_sizes(const RecordEstimate& r) {
+  const auto largest = [](const std::vector<double>& v) { return *std::max_element(v.begin(), v.end()); };
+  return {largest(r.attitude), largest(r.angular_velocity), largest(r.position), largest(r.velocity)};
+}
+
+// The growth rate λ [1/s] of a kind of estimate from common record a to b where it grew faster than (t_b / t_a)^4
+// (no global error of a regular motion grows faster than a low power of t: linearly, or as t² with a drifting
+// frequency), else NaN.
+double exponential_rate(const RecordEstimate& a, const RecordEstimate& b, double t_a, double t_b) {
+  const std::array<double, 4> x = state_sizes(a), y = state_sizes(b);
+  double rate = nan;
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    const double growth = y[k] / x[k];
+    if (x[k] > 0.0 && std::isfinite(growth) && growth > std::pow(t_b / t_a, 4.0)) {
+      rate = std::fmax(rate, std::log(growth) / (t_b - t_a));  // fmax: NaN loses
+    }
+  }
+  return rate;
+}
+
+// Past the Lyapunov time: where the estimates grew faster than (t_b / t_a)^4 over two successive intervals between
+// common records (nearby trajectories diverge exponentially, e^{λ t}), the differences soon leave the linear
+// regime that Richardson extrapolation assumes. Every record from there on whose order check failed says so.
+void name_exponential_growth(std::vector<RecordEstimate>& common, const double* t, std::size_t stride) {
+  bool past = false;
+  double rate = nan, since = nan;
+  for (std::size_t j = 3; j < common.size(); ++j) {  // from the intervals [t1, t2] and [t2, t3] on (t0 = 0: no ratio)
+    const double before = exponential_rate(common[j - 2], common[j - 1], t[(j - 2) * stride], t[(j - 1) * stride]);
+    const double now = exponential_rate(common[j - 1], common[j], t[(j - 1) * stride], t[j * stride]);
+    if (!past && std::isfinite(before) && std::isfinite(now)) {
+      past = true, rate = std::min(before, now), since = t[(j - 2) * stride];
+    }
+    RecordEstimate& r = common[j];
+    if (past && r.verdict.rfind("not asymptotic", 0) == 0) {
+      char text[256];
+      std::snprintf(text, sizeof text,
+                    "past the Lyapunov time of this scene: the differences grow as e^(%.2g t) from t = %.3g s (nearby "
+                    "trajectories diverge exponentially); ",
+                    rate, since);
+      r.verdict = text + r.verdict;
+    }
+  }
+}
+
 }  // namespace
 
 ErrorRecords error_records(const Trajectory& r) {
@@ -270,8 +318,18 @@ ErrorRecords error_records(const SceneSimulation& r) {
   out.bodies = r.body_count;
   out.t = r.t.data(), out.q_WB = r.q_WB.data(), out.w_B = r.w_B.data(), out.p_W = r.p_W.data(), out.v_W = r.v_W.data();
   out.energy = r.total_energy.data(), out.energy_scale = r.kinetic_energy.data();
+  const std::size_t rows = out.n * static_cast<std::size_t>(out.bodies);
+  const bool scaled = r.mass.size() == rows && r.angular_momentum_O_W.size() == 3 * rows;  // else |L| itself
   for (std::size_t i = 0; i < out.n; ++i) {
     out.momentum.push_back(Eigen::Map<const Eigen::Vector3d>(r.angular_momentum_W.data() + 3 * i).norm());
+    if (!scaled) continue;
+    double scale = 0.0;  // Σ |p_W × m v_W| bounded by |p_W| m |v_W|, + |H| of each body
+    for (std::int64_t b = 0; b < out.bodies; ++b) {
+      const std::size_t k = i * static_cast<std::size_t>(out.bodies) + static_cast<std::size_t>(b);
+      scale += vector3(r.p_W.data(), out, i, b).norm() * std::abs(r.mass[k]) * vector3(r.v_W.data(), out, i, b).norm() +
+               vector3(r.angular_momentum_O_W.data(), out, i, b).norm();
+    }
+    out.momentum_scale.push_back(scale);
   }
   return out;
 }
@@ -308,6 +366,7 @@ GlobalErrorEstimate estimate_global_error(const ErrorRecords& h, const ErrorReco
                               " may switch inside a step, which the runs at h, 2h and 4h can all miss alike";
     }
   }
+  name_exponential_growth(common, h.t, stride);
   for (std::size_t i = 0; i < h.n; ++i) {
     const std::size_t j = i / stride;
     if (i % stride == 0 && j <= last) {
@@ -345,7 +404,7 @@ GlobalErrorEstimate round_off_estimate(const ErrorRecords& h, const SimulationOp
       r.velocity.push_back(round_off_bound(vector3(h.v_W, h, i, b).norm(), steps));
     }
     r.energy = round_off_bound(energy_size_of(h, i), steps);
-    r.angular_momentum = round_off_bound(h.momentum[i], steps);
+    r.angular_momentum = round_off_bound(h.momentum_scale.empty() ? h.momentum[i] : h.momentum_scale[i], steps);
     r.verdict = "reliable";
     append(out, r);
   }

@@ -47,6 +47,9 @@ struct ErrorRecords {
   const double* energy = nullptr;        // (n,) total energy [J]
   const double* energy_scale = nullptr;  // (n,) the kinetic energy T (the round-off scales with |T| + |V|) [J]
   std::vector<double> momentum;          // (n,) |L| of the run [kg m²/s]
+  // (n,) the size the round-off of |L| scales with [kg m²/s]: Σ over the bodies of |p_W| m |v_W| + |H| (a scene's
+  // L may cancel to 0 while its terms do not); empty: |L| itself
+  std::vector<double> momentum_scale;
 };
 
 // The records of a body's run (|L| = angular_momentum_norm) and of a scene's (|L| = |angular_momentum_W|).
