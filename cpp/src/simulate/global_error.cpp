@@ -262,42 +262,37 @@ std::array<double, 4> state_sizes(const RecordEstimate& r) {
   return {largest(r.attitude), largest(r.angular_velocity), largest(r.position), largest(r.velocity)};
 }
 
-// The growth rate λ [1/s] of a kind of estimate from common record a to b where it grew faster than (t_b / t_a)^4
-// (no global error of a regular motion grows faster than a low power of t: linearly, or as t² with a drifting
-// frequency), else NaN.
-double exponential_rate(const RecordEstimate& a, const RecordEstimate& b, double t_a, double t_b) {
-  const std::array<double, 4> x = state_sizes(a), y = state_sizes(b);
-  double rate = nan;
-  for (std::size_t k = 0; k < x.size(); ++k) {
-    const double growth = y[k] / x[k];
-    if (x[k] > 0.0 && std::isfinite(growth) && growth > std::pow(t_b / t_a, 4.0)) {
-      rate = std::fmax(rate, std::log(growth) / (t_b - t_a));  // fmax: NaN loses
-    }
-  }
-  return rate;
-}
-
-// Past the Lyapunov time: where the estimates grew faster than (t_b / t_a)^4 over two successive intervals between
-// common records (nearby trajectories diverge exponentially, e^{λ t}), the differences soon leave the linear
-// regime that Richardson extrapolation assumes. Every record from there on whose order check failed says so.
+// Past the Lyapunov time: a state estimate that grew more than 1000 (t_j / t_k)^4 from an earlier common record k
+// (t_k > 0) to record j grew faster than any global error of a regular motion does (linearly, or as t² with a
+// drifting frequency): nearby trajectories diverge exponentially, e^{λ t}, and the differences soon leave the
+// linear regime that Richardson extrapolation assumes. Every record from there on whose order check failed says
+// so, with λ = ln(growth) / (t_j − t_k).
 void name_exponential_growth(std::vector<RecordEstimate>& common, const double* t, std::size_t stride) {
-  bool past = false;
-  double rate = nan, since = nan;
-  for (std::size_t j = 3; j < common.size(); ++j) {  // from the intervals [t1, t2] and [t2, t3] on (t0 = 0: no ratio)
-    const double before = exponential_rate(common[j - 2], common[j - 1], t[(j - 2) * stride], t[(j - 1) * stride]);
-    const double now = exponential_rate(common[j - 1], common[j], t[(j - 1) * stride], t[j * stride]);
-    if (!past && std::isfinite(before) && std::isfinite(now)) {
-      past = true, rate = std::min(before, now), since = t[(j - 2) * stride];
+  constexpr double beyond_polynomial = 1000.0;
+  std::array<double, 4> least{};  // per kind: the smallest ε / t^4 of the records before, and its time
+  std::array<double, 4> least_t{};
+  least.fill(std::numeric_limits<double>::infinity());
+  std::string past;
+  for (std::size_t j = 1; j < common.size(); ++j) {
+    const double tj = t[j * stride];
+    const std::array<double, 4> sizes = state_sizes(common[j]);
+    for (std::size_t k = 0; k < sizes.size() && past.empty() && tj > 0.0; ++k) {
+      const double scaled = sizes[k] / std::pow(tj, 4.0);
+      if (std::isfinite(scaled) && scaled > beyond_polynomial * least[k]) {
+        const double rate = std::log(scaled / least[k] * std::pow(tj / least_t[k], 4.0)) / (tj - least_t[k]);
+        char text[256];
+        std::snprintf(text, sizeof text,
+                      "past the Lyapunov time of this scene: the differences grow as e^(%.2g t) from t = %.3g s "
+                      "(nearby trajectories diverge exponentially); ",
+                      rate, least_t[k]);
+        past = text;
+      }
     }
-    RecordEstimate& r = common[j];
-    if (past && r.verdict.rfind("not asymptotic", 0) == 0) {
-      char text[256];
-      std::snprintf(text, sizeof text,
-                    "past the Lyapunov time of this scene: the differences grow as e^(%.2g t) from t = %.3g s (nearby "
-                    "trajectories diverge exponentially); ",
-                    rate, since);
-      r.verdict = text + r.verdict;
+    for (std::size_t k = 0; k < sizes.size() && tj > 0.0; ++k) {
+      const double scaled = sizes[k] / std::pow(tj, 4.0);
+      if (scaled > 0.0 && scaled < least[k]) least[k] = scaled, least_t[k] = tj;
     }
+    if (!past.empty() && common[j].verdict.rfind("not asymptotic", 0) == 0) common[j].verdict = past + common[j].verdict;
   }
 }
 
