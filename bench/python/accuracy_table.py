@@ -312,7 +312,7 @@ def table(all_cells: list[Cell]) -> str:
     lines = ["| problem | method | dt [s] | true error | estimate | effectivity | verdict |", "|---|---|---|---|---|---|---|"]
     for c in all_cells:
         ratio = "(round-off)" if c.at_round_off else f"{c.effectivity:.2f}"
-        verdict = c.verdict.replace("|", "/")
+        verdict = c.verdict.replace("|", "\\|")  # a literal bar inside a table cell
         lines.append(f"| {c.problem} | {c.method} | {c.dt:.4g} | {fmt(c.true)} | {fmt(c.estimate)} | {ratio} "
                      f"| {verdict} |")
     return "\n".join(lines)

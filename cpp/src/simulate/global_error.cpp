@@ -87,6 +87,11 @@ class CommonRecord {
     return r > std::exp2(order_) * 1.5 && r <= std::exp2(order_ + 1) * 1.5 ? d.d1 / (r - 1.0) : epsilon;
   }
 
+  // The record is not reliable, for the reason `why` (the first given is kept).
+  void block(const std::string& why) {
+    if (blocked_.empty()) blocked_ = why;
+  }
+
   double observed_order() const { return observed_order_; }
   std::string verdict() const {
     if (!blocked_.empty()) return blocked_;
@@ -122,10 +127,6 @@ class CommonRecord {
       }
     }
     return r;
-  }
-
-  void block(const std::string& why) {
-    if (blocked_.empty()) blocked_ = why;
   }
 
   int order_;
@@ -192,8 +193,14 @@ RecordEstimate estimate_common(const ErrorRecords& h, const ErrorRecords& h2, co
     };
   };
   const double energy_size = energy_size_of(h, i);
-  out.energy =
-      record.invariant(differences(h, h2, h4, i, j, energy_size, steps, scalar(&ErrorRecords::energy)), "energy");
+  const Differences energy = differences(h, h2, h4, i, j, energy_size, steps, scalar(&ErrorRecords::energy));
+  // a run whose step is beyond the stability limit gains energy exponentially: the run at 4h (the first to go)
+  // then differs from the one at 2h by more than the whole energy |T| + |V| (a chaotic motion keeps its energy)
+  if (std::isfinite(energy.d2) && energy.d2 > energy_size && energy_size > 0.0) {
+    record.block("step beyond the stability limit: the energy of the run at 4h departs from the run at 2h's by "
+                 "more than |T| + |V|");
+  }
+  out.energy = record.invariant(energy, "energy");
   const auto momentum = [](const ErrorRecords& x, std::size_t a, const ErrorRecords& y, std::size_t c) {
     return std::abs(x.momentum[a] - y.momentum[c]);
   };
