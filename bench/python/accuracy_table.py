@@ -22,7 +22,6 @@ The document records how it was made (command, date, machine, rigiddyn revision)
 tests/python/test_generated_docs.py fails once any input differs, naming the command that regenerates it.
 """
 
-from __future__ import annotations
 
 import argparse
 import math
