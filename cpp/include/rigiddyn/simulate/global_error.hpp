@@ -54,6 +54,10 @@ struct ErrorRecords {
   // (n,) the size the round-off of |L| scales with [kg m²/s]: Σ over the bodies of |p_W| m |v_W| + |H| (a scene's
   // L may cancel to 0 while its terms do not); empty: |L| itself
   std::vector<double> momentum_scale;
+  // (n,) the energy balance T − W [J]: the kinetic energy less the work done on the bodies since t0 (of every load
+  // and element, and a scene's mass flows and wheel motors), T(t0) at every t for the exact motion, so that its
+  // error is known; empty: not checked
+  std::vector<double> balance;
 };
 
 // The records of a body's run (|L| = angular_momentum_norm) and of a scene's (|L| = |angular_momentum_W|).
