@@ -44,7 +44,7 @@ def reduced_grid():
 def test_reliable_cells_are_within_a_factor_two_of_the_true_error(reduced_grid):
     summary = table.summarize(reduced_grid)
     # the test measures something: most cells above round-off are reliable (a flag on every cell would pass the
-    # two bounds below vacuously); 40 of ~130 cells is far below what the estimator reaches (docs/accuracy.md)
+    # two bounds below vacuously); 40 of the 180 cells is far below the 100 the estimator reaches (docs/accuracy.md)
     assert summary.measured >= 40, summary
     share = summary.in_window / summary.measured
     outside = [(c.problem, c.method, c.dt, c.effectivity) for c in reduced_grid
