@@ -180,15 +180,15 @@ class SceneCase:
         return self._compiled[method]
 
     def simulate(self, method: str, dt: float, steps: int, record_every: int,
-                 progress: Callable[[int], None] | None = None) -> Any:
+                 progress: Callable[[int], None] | None = None, error: bool = False) -> Any:
         """rigiddyn.simulate of the scene compiled for `method` (ValueError if it is refused); `progress`
-        is called with the steps done."""
+        is called with the steps done; `error`: with the run's error estimate (result.error)."""
         compiled = self.compile(method)
         if compiled.model is None:
             raise ValueError(compiled.reason)
         # method: a str of methods() (mypy knows their literal names), checked by the core
         return _core.simulate(compiled.model, self.initial, dt, steps, cast(Any, method), record_every=record_every,
-                              progress=progress, error=False)
+                              progress=progress, error=error)
 
     def states(self, result: Any) -> SceneStates:
         """The recorded states and totals of a scene result."""

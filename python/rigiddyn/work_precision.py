@@ -40,6 +40,14 @@ observed_order: slope of log(measure) against log(dt) between a run and the next
   order_note; also nan for a method that is exact on the problem (order 0, or exact_torque_free
   on a torque-free problem: its error is round-off at every dt).
 
+estimate, effectivity, estimate_verdict: the run's own estimate of its error in the sweep's measure
+  (`simulate(..., error=True)`'s `result.error`, global Richardson over runs at h, 2h and 4h; see
+  GlobalError), from a separate untimed run of the same method, dt and records (the same states), beside
+  the true error the reference gives: effectivity = estimate / measure (1: exact, below 1: an
+  under-estimate) and the estimate's verdict ("reliable" or why not). The estimate covers the attitude,
+  position and velocity errors (final_ at the horizon, max_ the largest over the records, of the bodies);
+  for the other measures the columns are nan and the verdict says so. A reliable estimate promises an
+  effectivity in [0.5, 2] (measured: docs/accuracy.md).
 time_noise: how well a run's time repeats: (second fastest - fastest) / fastest of its repeated
   timings (nan for a run timed once; the time reported is the fastest). The sweep's timing noise is the
   NOISE_QUANTILE quantile over its runs (a minimum repeats better within a process than across runs).
@@ -88,7 +96,8 @@ __all__ = ["COLUMNS", "MEASURES", "Recommendation", "TradeoffResult", "cheapest"
 
 COLUMNS = ("method", "dt", "steps", "order", "evaluations_per_step", "time_per_step", "time_noise", "total_time",
            "total_evaluations") + MEASURES + ("observed_order", "order_note", "reference", "reference_error",
-                                              "reference_check", "diverged", "stability")
+                                              "reference_check", "diverged", "stability", "estimate",
+                                              "effectivity", "estimate_verdict")
 _COSTS = {"time": "total_time", "evaluations": "total_evaluations"}
 SAMPLES = 200  # states compared per run (every k-th step)
 ROUND_OFF_PER_STEP = np.finfo(float).eps  # errors below this x steps (one ulp per step) may be round-off
@@ -222,18 +231,18 @@ class _Run:
 
 
 def _core_simulate(problem: Problem | SceneCase, method: str, dt: float, steps: int, record_every: int,
-                   progress: Callable[[int], None] | None = None) -> Any:
+                   progress: Callable[[int], None] | None = None, error: bool = False) -> Any:
     """_core.simulate of `problem`, or rigiddyn.simulate of a scene compiled for `method` (their non-finite
-    and convergence warnings are the sweep's rows)."""
+    and convergence warnings are the sweep's rows); `error`: with the run's error estimate (result.error)."""
     with warnings.catch_warnings():
         warnings.filterwarnings("ignore", message="simulate: the state became non-finite", category=RuntimeWarning)
         warnings.filterwarnings("ignore", message="simulate: the implicit solve", category=RuntimeWarning)
         if isinstance(problem, SceneCase):
-            return problem.simulate(method, dt, steps, record_every, progress)
+            return problem.simulate(method, dt, steps, record_every, progress, error=error)
         # method: a str of methods() (mypy knows their literal names), checked by the core
         return _core.simulate(problem.body(), problem.initial_state(), dt, steps, cast(Any, method), record_every=record_every,
                               loads=problem.applied_loads(), gravity=problem.gravity, progress=progress,
-                              error=False)
+                              error=error)
 
 
 def _simulate(problem: Problem | SceneCase, method: str, dt: float, steps: int, record_every: int, timed: bool,
@@ -256,6 +265,36 @@ def _simulate(problem: Problem | SceneCase, method: str, dt: float, steps: int, 
     if isinstance(problem, SceneCase):
         return _Run(problem.states(result), problem.quaternion_norm_error(result), bool(result.diverged), best, noise)
     return _Run(_states(result), np.asarray(result.quaternion_norm_error), bool(result.diverged), best, noise)
+
+
+# the quantity of result.error (GlobalError) that estimates each error measure's quantity
+_ESTIMATED = {"attitude_error": "attitude", "position_error": "position", "velocity_error": "velocity"}
+# the records whose estimate is checked, or lies between two checked ones (GlobalError's verdicts)
+_CHECKED = ("reliable", "interpolated between the reliable records")
+
+
+def _estimate_columns(problem: Problem | SceneCase, method: str, dt: float, steps: int, record_every: int,
+                      measure: str, true: float) -> dict[str, Any]:
+    """The columns estimate, effectivity and estimate_verdict of a run (module docstring): an untimed run of
+    `method` at dt with the same records as the timed one (the same states) and its error estimate, of
+    `measure` (the largest over the bodies; max_: over the records too), against the true error `true`."""
+    when, _, quantity = measure.partition("_")
+    if quantity not in _ESTIMATED:
+        return {"estimate": math.nan, "effectivity": math.nan,
+                "estimate_verdict": f"no estimate of {measure} (estimated: attitude, position, velocity errors)"}
+    error = _core_simulate(problem, method, dt, steps, record_every, error=True).error
+    verdicts = list(error.verdict)
+    values = np.asarray(getattr(error, _ESTIMATED[quantity]), float).reshape(len(verdicts), -1).max(axis=1)
+    if when == "final":
+        estimate, verdict = float(values[-1]), verdicts[-1]
+    else:  # the largest estimate, reliable when every record is checked or between checked ones
+        estimate = float(np.max(values)) if np.all(np.isfinite(values)) else math.nan
+        verdict = next((v for v in verdicts if not v.startswith(_CHECKED)), "reliable")
+    effectivity = estimate / true if true > 0 else (math.inf if estimate > 0 else math.nan)
+    return {"estimate": estimate, "effectivity": effectivity, "estimate_verdict": verdict}
+
+
+_NO_ESTIMATE = {"estimate": math.nan, "effectivity": math.nan}
 
 
 def _reference_method(methods_info: dict[str, dict[str, Any]]) -> str:
@@ -813,8 +852,9 @@ class TradeoffResult:
     def to_table(self, width: int = 100) -> str:
         """The report for a terminal, no line wider than `width` characters (>= 60; or than the fixed
         columns and a 10-character note, where the method names make those wider): the problem and
-        reference, one row per run (method, dt [s], steps, ns/step, the sweep's measure with its unit,
-        observed order, short notes explained below the table; a closed-form method once, without dt),
+        reference, one row per run (method, dt [s], steps, ns/step, the sweep's measure with its unit, the
+        run's own estimate of it where the width allows, observed order, short notes explained below the
+        table; a closed-form method once, without dt),
         then the recommendation or, without a tolerance, the Pareto front. Every column of every run:
         to_csv / to_json."""
         if isinstance(width, (bool, np.bool_)) or not isinstance(width, (int, np.integer)):
@@ -823,11 +863,22 @@ class TradeoffResult:
             raise ValueError(f"width: expected an integer >= 60 (characters), got {width!r}")
         front = self.pareto() if self.tolerance is None else []
         cells, used = self._table_cells(front)
-        headers = ["method", "dt [s]", "steps", "ns/step", f"error [{measure_unit(self.measure)}]", "order", "note"]
-        widths = [max([len(h)] + [len(c[i]) for c in cells if i not in (1, 2) or c[2] != _MERGED])
-                  for i, h in enumerate(headers[:-1])]
-        merged = max((len(c[1]) for c in cells if c[2] == _MERGED), default=0)  # spans dt and steps
-        widths[2] = max(widths[2], merged - widths[1] - 2)
+        headers = ["method", "dt [s]", "steps", "ns/step", f"error [{measure_unit(self.measure)}]", "estimate",
+                   "order", "note"]
+
+        def column_widths() -> list[int]:
+            out = [max([len(h)] + [len(c[i]) for c in cells if i not in (1, 2) or c[2] != _MERGED])
+                   for i, h in enumerate(headers[:-1])]
+            merged = max((len(c[1]) for c in cells if c[2] == _MERGED), default=0)  # spans dt and steps
+            out[2] = max(out[2], merged - out[1] - 2)
+            return out
+
+        widths = column_widths()
+        estimates = sum(widths) + 2 * len(widths) + 10 <= width  # the estimate column where a 10-wide note fits
+        if not estimates:
+            del headers[5]
+            cells = [c[:5] + c[6:] for c in cells]
+            widths = column_widths()
         note_width = max(10, width - sum(widths) - 2 * len(widths))
         out = self._title(width)
         for note in self.notes:
@@ -841,8 +892,12 @@ class TradeoffResult:
             if reason is not None:
                 out += _wrap(f"{method}: {reason}", width)
         legend = [f"{tag} = {_TAGS[tag]}" for tag in _TAGS if tag in used]
-        out += _wrap("order: the observed order of convergence (- where it cannot be measured; the reason in note). "
-                     + ("notes: " + "; ".join(legend) + "." if legend else ""), width)
+        estimate = ("estimate: the run's own estimate of its error (result.error), ? where it is not reliable (why: "
+                    "estimate_verdict in the CSV/JSON). " if estimates else
+                    f"The runs' own error estimates (estimate, effectivity, estimate_verdict) do not fit {width} "
+                    "columns here: see to_csv / to_json or a wider table. ")
+        out += _wrap(estimate + "order: the observed order of convergence (- where it cannot be measured; the reason in "
+                     "note). " + ("notes: " + "; ".join(legend) + "." if legend else ""), width)
         if self.recommendation is not None:
             out += _wrap(str(self.recommendation), width)
         else:
@@ -874,7 +929,7 @@ class TradeoffResult:
             mine = [r for r in self.rows if r["method"] == method]
             refused = [str(r.get("order_note", "")) for r in mine if str(r.get("order_note", "")).startswith(_REFUSED)]
             if refused and len(refused) == len(mine):  # refused by the scene's compile: the reason below the table
-                cells.append([method, "not applicable", _MERGED, "-", "-", "-", "reason below"])
+                cells.append([method, "not applicable", _MERGED, "-", "-", "-", "-", "reason below"])
                 continue
             closed = all(r.get("order") == 0 for r in mine)
             for r in ([max(mine, key=lambda r: r["steps"])] if closed else mine):
@@ -884,7 +939,7 @@ class TradeoffResult:
                 used.update(tags)
                 order = r.get("observed_order", math.nan)
                 cells.append([method, "closed form" if closed else _fmt(r["dt"]), _MERGED if closed else str(r["steps"]),
-                              _fmt(r["time_per_step"] * 1e9), _fmt(r[self.measure]),
+                              _fmt(r["time_per_step"] * 1e9), _fmt(r[self.measure]), _estimate_text(r),
                               f"{order:.2f}" if _is_real(order) and math.isfinite(order) else "-", ", ".join(tags)])
         return cells, used
 
@@ -1001,6 +1056,8 @@ class TradeoffResult:
                             [0.0 if zero[1] else r[measure] for r in at_floor], "v", markersize=9,
                             color=f"C{i % 10}", clip_on=False, transform=transform,
                             label=f"{name}: 0, drawn on the axis")
+        if measure == self.measure:  # the estimate columns are the sweep's measure's
+            self._plot_estimates(ax, cost, measure)
         if self.tolerance is not None:
             ax.axhline(self.tolerance, color="gray", linestyle="--", linewidth=1, label="tolerance")
         rec = self.recommendation
@@ -1010,12 +1067,28 @@ class TradeoffResult:
                     markerfacecolor="none", markeredgecolor="black", clip_on=False,
                     transform=on_floor.get(zero, ax.transData), label="recommended")
 
+    def _plot_estimates(self, ax: Any, cost: str, measure: str) -> None:
+        """Each run's own error estimate (the estimate column) beside its true error: a bar from the true error
+        to the estimate at the run's cost, ending in a dash where the estimate is reliable, a cross where not."""
+        for i, method in enumerate(self.methods()):
+            for r in self.rows:
+                estimate, true = r.get("estimate", math.nan), r[measure]
+                if (r["method"] != method or r["diverged"] or not _is_real(estimate) or not estimate > 0
+                        or not math.isfinite(estimate) or not true > 0 or not math.isfinite(true) or not r[cost] > 0):
+                    continue
+                reliable = r.get("estimate_verdict") == "reliable"
+                ax.plot([r[cost], r[cost]], [true, estimate], "-", color=f"C{i % 10}", linewidth=0.8, alpha=0.7)
+                ax.plot([r[cost]], [estimate], "_" if reliable else "x", markersize=9, color=f"C{i % 10}")
+        ax.plot([], [], "_", markersize=9, color="black", label="estimate (result.error), reliable")
+        ax.plot([], [], "x", markersize=9, color="black", label="estimate, not reliable")
+
     def plot(self, path: str | Path, formats: Sequence[str] = ("png", "svg"),
              measure: str | None = None) -> list[Path]:
         """Work-precision plot (log-log; `measure` [its unit] against wall time [s] and against derivative
         evaluations, one line per method, a closed-form method as markers, a zero error or cost at the
         axis floor (a downward triangle), the tolerance as a dashed line, the recommendation circled,
-        the legend outside the axes); written as path.<format> for each format. Needs matplotlib (pip install
+        each run's own error estimate (of the sweep's measure) as a bar from its true error, the legend
+        outside the axes); written as path.<format> for each format. Needs matplotlib (pip install
         'rigiddyn[plot]'). Returns the files written."""
         try:
             import matplotlib
@@ -1086,6 +1159,14 @@ def _tags(r: Mapping[str, Any], closed: bool, recommended: bool, front: bool) ->
              "front": front, "bad ref.": str(r.get("reference", "")).startswith("unreliable"),
              order_tag: bool(order_tag) and not closed}  # a closed form's dt cell says why it has no order
     return [t for t in _TAGS if flags.get(t)]
+
+
+def _estimate_text(r: Mapping[str, Any]) -> str:
+    """A row's estimate cell: the estimate, with ? where it is not reliable; - where there is none."""
+    estimate = r.get("estimate", math.nan)
+    if not _is_real(estimate) or math.isnan(estimate):
+        return "-"
+    return _fmt(float(estimate)) + ("" if r.get("estimate_verdict") == "reliable" else "?")
 
 
 def _run_key(r: Mapping[str, Any]) -> tuple[Any, ...]:
@@ -1201,8 +1282,9 @@ def _check_formats(formats: Any, supported: Mapping[str, str]) -> list[str]:
 
 
 _INT_COLUMNS = {"steps", "order", "evaluations_per_step", "total_evaluations"}
-_OPTIONAL_COLUMNS = {"time_noise"}  # absent from the CSV files of earlier versions
-_STR_COLUMNS = {"method", "reference", "reference_check", "order_note", "stability"}
+# absent from the CSV files of earlier versions
+_OPTIONAL_COLUMNS = {"time_noise", "estimate", "effectivity", "estimate_verdict"}
+_STR_COLUMNS = {"method", "reference", "reference_check", "order_note", "stability", "estimate_verdict"}
 
 
 def _typed_row(r: dict[str, str]) -> dict[str, Any]:
@@ -1536,10 +1618,11 @@ def tradeoff(problem: Any, methods: Iterable[str] | None = None,
                                    "time_noise": run.time_noise, "total_time": run.time_per_step * steps,
                                    "total_evaluations": m["evaluations"] * steps}
             if run.diverged:
-                row.update({k: math.inf for k in MEASURES})
+                row.update({k: math.inf for k in MEASURES}, **_NO_ESTIMATE, estimate_verdict="the run diverged")
             else:
                 ref_states = reference_states(problem, run.states.t) if ref is None else ref.states
                 row.update(_measures(problem, run.states, ref_states, run.quaternion_norm_error))
+                row.update(_estimate_columns(problem, method, dt, steps, every, measure, row[measure]))
             message = stability_message(method, dt, steps, problem.inertia_com, problem.w_B, problem.torque_free)
             if message:
                 unstable.append((method, dt, message))
@@ -1702,16 +1785,19 @@ def scene_sweep(case: SceneCase, methods: list[str], grid: list[int], measure: s
                             "total_evaluations": 0, **{k: math.nan for k in MEASURES},
                             "observed_order": math.nan, "order_note": f"not applicable: {compiled.reason}",
                             "reference": reference, "reference_error": reference_error,
-                            "reference_check": reference_check, "diverged": False, "stability": ""})
+                            "reference_check": reference_check, "diverged": False, "stability": "",
+                            **_NO_ESTIMATE, "estimate_verdict": ""})
                 rows.append(row)
                 continue
             run = runs[method]
             row.update({"time_per_step": run.time_per_step, "time_noise": run.time_noise,
                         "total_time": run.time_per_step * steps, "total_evaluations": m["evaluations"] * steps})
             if run.diverged:
-                row.update({k: math.inf for k in MEASURES})
+                row.update({k: math.inf for k in MEASURES}, **_NO_ESTIMATE, estimate_verdict="the run diverged")
             else:
                 row.update(case.measures(run.states, states_at(run.states.t), run.quaternion_norm_error))
+                every = max(1, steps // samples)
+                row.update(_estimate_columns(case, method, dt, steps, every, measure, row[measure]))
             message = scene_stability_message(method, dt, steps, case.scene, case.initial, modes)
             if message:
                 unstable.append((method, dt, message))

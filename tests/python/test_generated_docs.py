@@ -31,6 +31,7 @@ def _generator(name: str):
 # document -> (generator script, how to read its stamp)
 GENERATED = {
     "docs/extremes.md": ("bench_extremes", lambda p: provenance.read_markdown_stamp(p.read_text())),
+    "docs/accuracy.md": ("accuracy_table", lambda p: provenance.read_markdown_stamp(p.read_text())),
     "docs/tradeoff_t_handle.png": ("plot_tradeoff_t_handle", provenance.read_png_stamp),
 }
 
@@ -56,8 +57,9 @@ def test_generator_declares_itself_and_existing_sources_as_inputs(document):
         assert provenance.input_digests([pattern]), f"{GENERATED[document][0]}.INPUTS: {pattern!r} matches no file"
 
 
-def test_markdown_states_when_and_how_it_was_measured():
-    text = (ROOT / "docs/extremes.md").read_text()
+@pytest.mark.parametrize("document", ["docs/extremes.md", "docs/accuracy.md"])
+def test_markdown_states_when_and_how_it_was_measured(document):
+    text = (ROOT / document).read_text()
     made = provenance.read_markdown_stamp(text)
     assert made is not None and provenance.measured_sentence(made) in text
 

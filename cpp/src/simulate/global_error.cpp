@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <cfloat>
 #include <cmath>
 #include <limits>
@@ -45,55 +46,93 @@ struct Differences {
   double d1, d2, round_off;
 };
 
+// The differences of the bodies' values of one kind of quantity taken together: d1 and d2 the norms of the bodies'
+// differences, the round-off bound their sum. Checking the order on these rather than body by body keeps a body
+// whose own error crosses zero at the record (where its ratio r says nothing) from failing the check alone.
+Differences combined(const std::vector<Differences>& bodies) {
+  Differences out{0.0, 0.0, 0.0};
+  for (const Differences& d : bodies) out.d1 += d.d1 * d.d1, out.d2 += d.d2 * d.d2, out.round_off += d.round_off;
+  out.d1 = std::sqrt(out.d1), out.d2 = std::sqrt(out.d2);
+  return out;
+}
+
 // What one common record's quantities say: the estimate of each, and the record's observed order and verdict
-// (those of the quantity whose ratio r is furthest from 2^p, unless a coarse run diverged).
+// (those of the quantity whose ratio r is furthest from 2^p, unless a run diverged).
 class CommonRecord {
  public:
   CommonRecord(int order, std::string coarse_problem) : order_(order), blocked_(std::move(coarse_problem)) {}
 
-  // ε of a quantity named `name` (of body `body` when the run has several; -1: a quantity of the whole run),
-  // checking its observed order.
-  double estimate(const Differences& d, const char* name, std::int64_t body = -1) {
-    if (d.d1 <= d.round_off) return d.round_off;  // at round-off level: its bound, no order to check
+  // ε of one body's value of a quantity (its order checked with the other bodies', by check()).
+  double estimate(const Differences& d) {
+    if (d.d1 <= d.round_off) return d.round_off;  // at round-off level: its bound
     if (!std::isfinite(d.d1)) {
-      block("the run at h or 2h diverged");
+      block("step beyond the stability limit: the run at h or 2h diverged");
       return nan;
     }
-    const double expected = std::exp2(order_);
-    const double epsilon = d.d1 / (expected - 1.0);  // leading error term of y_h
-    if (!std::isfinite(d.d2)) {
-      block("the 4h run diverged");
-      return epsilon;
-    }
-    const double r = d.d2 / d.d1;
-    const double distance = std::abs(std::log(r / expected));
-    if (distance > worst_distance_) {
-      worst_distance_ = distance, observed_order_ = std::log2(r);
-      problem_.clear();
-      if (!(r >= expected / 1.5 && r <= expected * 1.5)) {
-        char text[192];
-        std::snprintf(text, sizeof text, "not asymptotic: observed order %.2g where %d is expected (%s%s%s)",
-                      observed_order_, order_, name, body < 0 ? "" : " of body ",
-                      body < 0 ? "" : std::to_string(body).c_str());
-        problem_ = text;
-      }
-    }
-    return epsilon;
+    return d.d1 / (std::exp2(order_) - 1.0);  // leading error term of y_h
+  }
+
+  // The observed order of a kind of quantity named `name` (the differences of its bodies together): r must lie
+  // in [2^p / 1.5, 2^p · 1.5].
+  void check(const Differences& d, const char* name) { ratio(d, name, std::exp2(order_) * 1.5); }
+
+  // ε of a conserved quantity of the run (energy, |L|), whose error may fall faster than h^p: the leading term
+  // of an invariant's error often vanishes (rk4 conserves a quadratic invariant of a linear problem to
+  // O(h^(p+1))). Its r may lie in [2^p / 1.5, 2^(p+1) · 1.5]; above 2^p · 1.5 the estimate takes the observed
+  // order q = log2 r: ε = d1 / (2^q − 1) = d1 / (r − 1), the leading term of an error C h^q.
+  double invariant(const Differences& d, const char* name) {
+    const double epsilon = estimate(d);
+    if (!(d.d1 > d.round_off) || !std::isfinite(d.d1)) return epsilon;
+    const double r = ratio(d, name, std::exp2(order_ + 1) * 1.5);
+    return r > std::exp2(order_) * 1.5 && r <= std::exp2(order_ + 1) * 1.5 ? d.d1 / (r - 1.0) : epsilon;
+  }
+
+  // The record is not reliable, for the reason `why` (the first given is kept).
+  void block(const std::string& why) {
+    if (blocked_.empty()) blocked_ = why;
   }
 
   double observed_order() const { return observed_order_; }
+  int order() const { return order_; }
   std::string verdict() const {
     if (!blocked_.empty()) return blocked_;
     return problem_.empty() ? "reliable" : problem_;
   }
 
  private:
-  void block(const std::string& why) {
-    if (blocked_.empty()) blocked_ = why;
+  // r = d2 / d1 checked against [2^p / 1.5, highest]; the quantity furthest from 2^p names the record's order
+  // and, outside the window, its verdict. Returns r (NaN where not measured).
+  double ratio(const Differences& d, const char* name, double highest) {
+    if (d.d1 <= d.round_off) return nan;  // at round-off level: no order to check
+    if (!std::isfinite(d.d1)) {
+      block("step beyond the stability limit: the run at h or 2h diverged");
+      return nan;
+    }
+    if (!std::isfinite(d.d2)) {
+      block("step beyond the stability limit: the run at 4h diverged");
+      return nan;
+    }
+    const double expected = std::exp2(order_);
+    const double r = d.d2 / d.d1;
+    const bool inside = r >= expected / 1.5 && r <= highest;
+    const double distance = std::abs(std::log(r / expected));
+    // a quantity outside its window names the record before any inside it, then the furthest from 2^p
+    if (std::make_pair(!inside, distance) > std::make_pair(worst_outside_, worst_distance_)) {
+      worst_outside_ = !inside, worst_distance_ = distance, observed_order_ = std::log2(r);
+      problem_.clear();
+      if (!inside) {
+        char text[192];
+        std::snprintf(text, sizeof text, "not asymptotic: observed order %.2g where %d is expected (%s)",
+                      observed_order_, order_, name);
+        problem_ = text;
+      }
+    }
+    return r;
   }
 
   int order_;
   std::string blocked_, problem_;
+  bool worst_outside_ = false;
   double worst_distance_ = -1.0;
   double observed_order_ = nan;
 };
@@ -116,40 +155,82 @@ Differences differences(const ErrorRecords& h, const ErrorRecords& h2, const Err
   return {std::isnan(d1) ? inf : d1, std::isnan(d2) ? inf : d2, round_off_bound(size, steps)};
 }
 
+// The energy balance B = T − W, whose exact value is B(t0) at every t: its true error |B_h(t) − B_h(t0)| is known.
+// A Richardson estimate of it below half that (beyond the round-off) is shown wrong, and with it the estimates of
+// the run: its error is not in the leading term that the three runs see alike (e.g. a method that damps a
+// nutation at every step size tried, so that the runs agree with each other and not with the motion).
+void check_balance(CommonRecord& record, const ErrorRecords& h, const ErrorRecords& h2, const ErrorRecords& h4,
+                   std::size_t i, std::size_t j, double size, std::int64_t steps) {
+  const auto balance = [](const ErrorRecords& x, std::size_t a, const ErrorRecords& y, std::size_t c) {
+    return std::abs(x.balance[a] - y.balance[c]);
+  };
+  if (h2.balance.empty() || h4.balance.empty()) return;
+  const Differences d = differences(h, h2, h4, i, j, size, steps, balance);
+  const double estimate = d.d1 / (std::exp2(record.order()) - 1.0);
+  const double error = std::abs(h.balance[i] - h.balance[0]);
+  if (std::isfinite(d.d1) && error > 2.0 * estimate + 2.0 * d.round_off) {
+    char text[192];
+    std::snprintf(text, sizeof text,
+                  "not asymptotic: the energy balance T - W is off by %.2g J where its estimate is %.2g J", error,
+                  estimate);
+    record.block(text);
+  }
+}
+
 RecordEstimate estimate_common(const ErrorRecords& h, const ErrorRecords& h2, const ErrorRecords& h4, std::size_t i,
                                std::size_t j, std::int64_t steps, int order, const std::string& coarse_problem) {
   CommonRecord record(order, coarse_problem);
   RecordEstimate out;
   const std::int64_t nb = h.bodies;
-  for (std::int64_t b = 0; b < nb; ++b) {
-    const std::int64_t of = nb == 1 ? -1 : b;
-    const auto angle = [b](const ErrorRecords& x, std::size_t a, const ErrorRecords& y, std::size_t c) {
-      return angular_distance(attitude(y, c, b), attitude(x, a, b));
-    };
-    out.attitude.push_back(record.estimate(differences(h, h2, h4, i, j, 1.0, steps, angle), "attitude", of));
-    const auto vector_quantity = [&](const double* ErrorRecords::*rows, const char* name) {
-      const auto distance = [rows, b](const ErrorRecords& x, std::size_t a, const ErrorRecords& y, std::size_t c) {
-        return (vector3(x.*rows, x, a, b) - vector3(y.*rows, y, c, b)).norm();
-      };
-      const double size = vector3(h.*rows, h, i, b).norm();
-      return record.estimate(differences(h, h2, h4, i, j, size, steps, distance), name, of);
-    };
-    out.angular_velocity.push_back(vector_quantity(&ErrorRecords::w_B, "angular velocity"));
-    out.position.push_back(vector_quantity(&ErrorRecords::p_W, "position"));
-    out.velocity.push_back(vector_quantity(&ErrorRecords::v_W, "velocity"));
-  }
+  // the differences of a kind of quantity, body by body: their estimates, then their order checked together
+  const auto kind = [&](std::vector<double>& estimates, const char* name, auto distance_of_body, auto size_of_body) {
+    std::vector<Differences> bodies;
+    for (std::int64_t b = 0; b < nb; ++b) {
+      bodies.push_back(differences(h, h2, h4, i, j, size_of_body(b), steps, distance_of_body(b)));
+      estimates.push_back(record.estimate(bodies.back()));
+    }
+    record.check(combined(bodies), name);
+  };
+  kind(out.attitude, "attitude",
+       [](std::int64_t b) {
+         return [b](const ErrorRecords& x, std::size_t a, const ErrorRecords& y, std::size_t c) {
+           return angular_distance(attitude(y, c, b), attitude(x, a, b));
+         };
+       },
+       [](std::int64_t) { return 1.0; });
+  const auto vector_kind = [&](std::vector<double>& estimates, const double* ErrorRecords::*rows, const char* name) {
+    kind(estimates, name,
+         [rows](std::int64_t b) {
+           return [rows, b](const ErrorRecords& x, std::size_t a, const ErrorRecords& y, std::size_t c) {
+             return (vector3(x.*rows, x, a, b) - vector3(y.*rows, y, c, b)).norm();
+           };
+         },
+         [&, rows](std::int64_t b) { return vector3(h.*rows, h, i, b).norm(); });
+  };
+  vector_kind(out.angular_velocity, &ErrorRecords::w_B, "angular velocity");
+  vector_kind(out.position, &ErrorRecords::p_W, "position");
+  vector_kind(out.velocity, &ErrorRecords::v_W, "velocity");
   const auto scalar = [](const double* ErrorRecords::*column) {
     return [column](const ErrorRecords& x, std::size_t a, const ErrorRecords& y, std::size_t c) {
       return std::abs((x.*column)[a] - (y.*column)[c]);
     };
   };
   const double energy_size = energy_size_of(h, i);
-  out.energy = record.estimate(differences(h, h2, h4, i, j, energy_size, steps, scalar(&ErrorRecords::energy)), "energy");
+  const Differences energy = differences(h, h2, h4, i, j, energy_size, steps, scalar(&ErrorRecords::energy));
+  // a run whose step is beyond the stability limit gains energy exponentially: the run at 4h (the first to go)
+  // then differs from the one at 2h by more than the whole energy |T| + |V| (a chaotic motion keeps its energy)
+  if (std::isfinite(energy.d2) && energy.d2 > energy_size && energy_size > 0.0) {
+    record.block("step beyond the stability limit: the energy of the run at 4h departs from the run at 2h's by "
+                 "more than |T| + |V|");
+  }
+  out.energy = record.invariant(energy, "energy");
+  if (!h.balance.empty()) check_balance(record, h, h2, h4, i, j, energy_size, steps);
   const auto momentum = [](const ErrorRecords& x, std::size_t a, const ErrorRecords& y, std::size_t c) {
     return std::abs(x.momentum[a] - y.momentum[c]);
   };
+  const double momentum_size = h.momentum_scale.empty() ? h.momentum[i] : h.momentum_scale[i];
   out.angular_momentum =
-      record.estimate(differences(h, h2, h4, i, j, h.momentum[i], steps, momentum), "angular momentum");
+      record.invariant(differences(h, h2, h4, i, j, momentum_size, steps, momentum), "angular momentum");
   out.observed_order = record.observed_order();
   out.verdict = record.verdict();
   return out;
@@ -205,6 +286,47 @@ std::int64_t step_of(std::size_t i, const SimulationOptions& o) {
   return std::min(static_cast<std::int64_t>(i) * o.record_every, o.steps);
 }
 
+// The largest estimate of the state quantities (attitude, angular velocity, position, velocity: each over the
+// bodies) of a record, kind by kind.
+std::array<double, 4> state_sizes(const RecordEstimate& r) {
+  const auto largest = [](const std::vector<double>& v) { return *std::max_element(v.begin(), v.end()); };
+  return {largest(r.attitude), largest(r.angular_velocity), largest(r.position), largest(r.velocity)};
+}
+
+// Past the Lyapunov time: a state estimate that grew more than 1000 (t_j / t_k)^4 from an earlier common record k
+// (t_k > 0) to record j grew faster than any global error of a regular motion does (linearly, or as t² with a
+// drifting frequency): nearby trajectories diverge exponentially, e^{λ t}, and the differences soon leave the
+// linear regime that Richardson extrapolation assumes. Every record from there on whose order check failed says
+// so, with λ = ln(growth) / (t_j − t_k).
+void name_exponential_growth(std::vector<RecordEstimate>& common, const double* t, std::size_t stride) {
+  constexpr double beyond_polynomial = 1000.0;
+  std::array<double, 4> least{};  // per kind: the smallest ε / t^4 of the records before, and its time
+  std::array<double, 4> least_t{};
+  least.fill(std::numeric_limits<double>::infinity());
+  std::string past;
+  for (std::size_t j = 1; j < common.size(); ++j) {
+    const double tj = t[j * stride];
+    const std::array<double, 4> sizes = state_sizes(common[j]);
+    for (std::size_t k = 0; k < sizes.size() && past.empty() && tj > 0.0; ++k) {
+      const double scaled = sizes[k] / std::pow(tj, 4.0);
+      if (std::isfinite(scaled) && scaled > beyond_polynomial * least[k]) {
+        const double rate = std::log(scaled / least[k] * std::pow(tj / least_t[k], 4.0)) / (tj - least_t[k]);
+        char text[256];
+        std::snprintf(text, sizeof text,
+                      "past the Lyapunov time of this scene: the differences grow as e^(%.2g t) from t = %.3g s "
+                      "(nearby trajectories diverge exponentially); ",
+                      rate, least_t[k]);
+        past = text;
+      }
+    }
+    for (std::size_t k = 0; k < sizes.size() && tj > 0.0; ++k) {
+      const double scaled = sizes[k] / std::pow(tj, 4.0);
+      if (scaled > 0.0 && scaled < least[k]) least[k] = scaled, least_t[k] = tj;
+    }
+    if (!past.empty() && common[j].verdict.rfind("not asymptotic", 0) == 0) common[j].verdict = past + common[j].verdict;
+  }
+}
+
 }  // namespace
 
 ErrorRecords error_records(const Trajectory& r) {
@@ -213,6 +335,9 @@ ErrorRecords error_records(const Trajectory& r) {
   out.t = r.t.data(), out.q_WB = r.q_WB.data(), out.w_B = r.w_B.data(), out.p_W = r.p_W.data(), out.v_W = r.v_W.data();
   out.energy = r.total_energy.data(), out.energy_scale = r.kinetic_energy.data();
   out.momentum = r.angular_momentum_norm;
+  if (r.work.size() == out.n) {  // T − T(t0) = work (the work of loads and gravity)
+    for (std::size_t i = 0; i < out.n; ++i) out.balance.push_back(r.kinetic_energy[i] - r.work[i]);
+  }
   return out;
 }
 
@@ -222,8 +347,30 @@ ErrorRecords error_records(const SceneSimulation& r) {
   out.bodies = r.body_count;
   out.t = r.t.data(), out.q_WB = r.q_WB.data(), out.w_B = r.w_B.data(), out.p_W = r.p_W.data(), out.v_W = r.v_W.data();
   out.energy = r.total_energy.data(), out.energy_scale = r.kinetic_energy.data();
+  const std::size_t rows = out.n * static_cast<std::size_t>(out.bodies);
+  const bool scaled = r.mass.size() == rows && r.angular_momentum_O_W.size() == 3 * rows;  // else |L| itself
   for (std::size_t i = 0; i < out.n; ++i) {
     out.momentum.push_back(Eigen::Map<const Eigen::Vector3d>(r.angular_momentum_W.data() + 3 * i).norm());
+    if (!scaled) continue;
+    double scale = 0.0;  // Σ |p_W × m v_W| bounded by |p_W| m |v_W|, + |H| of each body
+    for (std::int64_t b = 0; b < out.bodies; ++b) {
+      const std::size_t k = i * static_cast<std::size_t>(out.bodies) + static_cast<std::size_t>(b);
+      scale += vector3(r.p_W.data(), out, i, b).norm() * std::abs(r.mass[k]) * vector3(r.v_W.data(), out, i, b).norm() +
+               vector3(r.angular_momentum_O_W.data(), out, i, b).norm();
+    }
+    out.momentum_scale.push_back(scale);
+  }
+  // T − T(t0) = Σ work + Σ mass-flow energy + Σ motor work (SceneSimulation)
+  const auto row_sum = [&](const std::vector<double>& table, std::size_t i) {
+    if (table.empty() || out.n == 0 || table.size() % out.n != 0) return 0.0;
+    const std::size_t width = table.size() / out.n;
+    return std::accumulate(table.begin() + i * width, table.begin() + (i + 1) * width, 0.0);
+  };
+  if (r.kinetic_energy.size() == out.n) {
+    for (std::size_t i = 0; i < out.n; ++i) {
+      out.balance.push_back(r.kinetic_energy[i] - row_sum(r.work, i) - row_sum(r.mass_flow_energy, i) -
+                            row_sum(r.motor_work, i));
+    }
   }
   return out;
 }
@@ -251,14 +398,16 @@ GlobalErrorEstimate estimate_global_error(const ErrorRecords& h, const ErrorReco
   std::vector<RecordEstimate> common;
   for (std::size_t j = 0; j <= last && h.n > 0; ++j) {
     const std::size_t i = j * stride;
-    const std::string problem =
-        j >= h2.n ? "the 2h run diverged" : (j >= h4.n ? "the 4h run diverged" : std::string());
+    const std::string problem = j >= h2.n   ? "step beyond the stability limit: the run at 2h diverged"
+                                : j >= h4.n ? "step beyond the stability limit: the run at 4h diverged"
+                                            : std::string();
     common.push_back(estimate_common(h, h2, h4, i, j, step_of(i, answer), order, problem));
     if (!opaque.empty() && common.back().verdict == "reliable") {
       common.back().verdict = "not verified: " + opaque +
                               " may switch inside a step, which the runs at h, 2h and 4h can all miss alike";
     }
   }
+  name_exponential_growth(common, h.t, stride);
   for (std::size_t i = 0; i < h.n; ++i) {
     const std::size_t j = i / stride;
     if (i % stride == 0 && j <= last) {
@@ -296,7 +445,7 @@ GlobalErrorEstimate round_off_estimate(const ErrorRecords& h, const SimulationOp
       r.velocity.push_back(round_off_bound(vector3(h.v_W, h, i, b).norm(), steps));
     }
     r.energy = round_off_bound(energy_size_of(h, i), steps);
-    r.angular_momentum = round_off_bound(h.momentum[i], steps);
+    r.angular_momentum = round_off_bound(h.momentum_scale.empty() ? h.momentum[i] : h.momentum_scale[i], steps);
     r.verdict = "reliable";
     append(out, r);
   }

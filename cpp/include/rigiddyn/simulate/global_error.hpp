@@ -6,9 +6,13 @@
 // (cost +½ +¼ of the answer) give, at a record where all three have a state, for a method of order p
 //     ε ≈ d(y_h, y_2h) / (2^p − 1)                   (the leading term of the error of y_h),
 //     r  = d(y_2h, y_4h) / d(y_h, y_2h) ≈ 2^p       (the observed order is log2 r).
-// The estimate is trusted ("reliable") only where r lies in [2^p / 1.5, 2^p · 1.5]: outside it the error is not
-// in its asymptotic regime (a step too coarse, a force that is not smooth inside a step, a diverged run) and the
-// verdict names the reason instead. Where d(y_h, y_2h) is below the round-off bound of the run the estimate is
+// The estimate is trusted ("reliable") only where r lies in [2^p / 1.5, 2^p · 1.5] for every state quantity (the
+// bodies of a kind together), and in [2^p / 1.5, 2^(p+1) · 1.5] for the invariants energy and |L| (whose error may
+// fall an order faster; above 2^p · 1.5 their estimate is d1 / (r − 1), the observed order's). Outside it the error
+// is not in its asymptotic regime (a step too coarse, a force that is not smooth inside a step) and the verdict
+// names the reason instead: "not asymptotic: ...", "step beyond the stability limit: ..." (a coarse run diverged
+// or its energy departed by more than |T| + |V|), "past the Lyapunov time of this scene: ..." (estimates growing
+// exponentially, more than 1000 (t / t_k)^4 from an earlier record). Where d(y_h, y_2h) is below the round-off bound of the run the estimate is
 // that bound (and the verdict "reliable"); the method 'exact' reports the round-off bound alone.
 //
 // Distances: the attitude's is the geodesic angle of q_2h⁻¹ q_h (so3/angular_distance.hpp, valid to leading
@@ -47,6 +51,13 @@ struct ErrorRecords {
   const double* energy = nullptr;        // (n,) total energy [J]
   const double* energy_scale = nullptr;  // (n,) the kinetic energy T (the round-off scales with |T| + |V|) [J]
   std::vector<double> momentum;          // (n,) |L| of the run [kg m²/s]
+  // (n,) the size the round-off of |L| scales with [kg m²/s]: Σ over the bodies of |p_W| m |v_W| + |H| (a scene's
+  // L may cancel to 0 while its terms do not); empty: |L| itself
+  std::vector<double> momentum_scale;
+  // (n,) the energy balance T − W [J]: the kinetic energy less the work done on the bodies since t0 (of every load
+  // and element, and a scene's mass flows and wheel motors), T(t0) at every t for the exact motion, so that its
+  // error is known; empty: not checked
+  std::vector<double> balance;
 };
 
 // The records of a body's run (|L| = angular_momentum_norm) and of a scene's (|L| = |angular_momentum_W|).
