@@ -4842,6 +4842,11 @@ class SceneResult:
         (n, 3) about W's origin, in W: sum of p_W x m v_W + R_WB I w_B [kg m^2/s]
         """
     @property
+    def balance(self) -> typing.Any:
+        """
+        The energy and momentum balance of every record (a Balance), or None (a batch result).
+        """
+    @property
     def body_names(self) -> tuple:
         """
         (nb,) tuple of the bodies' names
@@ -5248,6 +5253,11 @@ class SimulationResult:
     def angular_momentum_norm(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         |H_G|, the norm of the angular momentum about the centre of mass, shape (n,) [kg m^2/s].
+        """
+    @property
+    def balance(self) -> typing.Any:
+        """
+        The energy and momentum balance of every record (a Balance), or None (a batch result).
         """
     @property
     def diverged(self) -> bool:
@@ -10618,10 +10628,10 @@ def semi_latus_rectum(a: float | numpy.typing.ArrayLike, e: float | numpy.typing
     21000000.0
     """
 @typing.overload
-def simulate(model: Particle | PlanarBody | RigidBody, initial: typing.Any, dt: float | _Quantity, steps: int | None = None, method: _MethodName | None = None, record_every: int = 1, loads: AppliedLoad | collections.abc.Sequence[AppliedLoad] | None = None, gravity: bool | numpy.typing.ArrayLike | None = None, t0: float | _Quantity = 0.0, scalar_first: bool = False, progress: collections.abc.Callable[..., typing.Any] | None = None, *, duration: float | _Quantity | None = None, error: bool = True) -> SimulationResult:
+def simulate(model: Particle | PlanarBody | RigidBody, initial: typing.Any, dt: float | _Quantity, steps: int | None = None, method: _MethodName | None = None, record_every: int = 1, loads: AppliedLoad | collections.abc.Sequence[AppliedLoad] | None = None, gravity: bool | numpy.typing.ArrayLike | None = None, t0: float | _Quantity = 0.0, scalar_first: bool = False, progress: collections.abc.Callable[..., typing.Any] | None = None, *, duration: float | _Quantity | None = None, error: bool = True, accuracy_level: float | None = 0.001) -> SimulationResult:
     ...
 @typing.overload
-def simulate(model: PivotedBody | PivotedPlanarBody | Gyrostat | Scene | CompiledScene, initial: typing.Any, dt: float | _Quantity, steps: int | None = None, method: _MethodName | None = None, record_every: int = 1, loads: AppliedLoad | collections.abc.Sequence[AppliedLoad] | None = None, gravity: bool | numpy.typing.ArrayLike | None = None, t0: float | _Quantity = 0.0, scalar_first: bool = False, progress: collections.abc.Callable[..., typing.Any] | None = None, *, duration: float | _Quantity | None = None, error: bool = True) -> SceneResult:
+def simulate(model: PivotedBody | PivotedPlanarBody | Gyrostat | Scene | CompiledScene, initial: typing.Any, dt: float | _Quantity, steps: int | None = None, method: _MethodName | None = None, record_every: int = 1, loads: AppliedLoad | collections.abc.Sequence[AppliedLoad] | None = None, gravity: bool | numpy.typing.ArrayLike | None = None, t0: float | _Quantity = 0.0, scalar_first: bool = False, progress: collections.abc.Callable[..., typing.Any] | None = None, *, duration: float | _Quantity | None = None, error: bool = True, accuracy_level: float | None = 0.001) -> SceneResult:
     """
     Integrate a body or a scene over fixed steps and record its motion.
     
@@ -10668,14 +10678,21 @@ def simulate(model: PivotedBody | PivotedPlanarBody | Gyrostat | Scene | Compile
         Estimate the global error of every record (result.error, a GlobalError) by two more runs of the method at 2 dt
         and 4 dt (+0.75x the cost; global Richardson extrapolation with an observed-order check, see GlobalError).
         False: no estimate (result.error is None), the cost of the run alone.
+    accuracy_level : float or None, keyword-only, default 1e-3
+        The relative residual of an energy or momentum balance (result.balance) beyond which a run without a reliable
+        global error estimate warns with an AccuracyWarning (where the estimate is reliable, a residual beyond 10 times
+        its bound warns instead); finite and > 0. None: no AccuracyWarning (the balance is still made). Runs that are
+        coarse on purpose (work-precision studies) pass None.
     
     Returns
     -------
     SimulationResult or SceneResult
         A SimulationResult for a Particle, PlanarBody or RigidBody: one row per record, n records (t, p_W, q_WB, v_W,
         w_B, kinetic_energy, total_energy, angular_momentum_norm, quaternion_norm_error, work; diverged,
-        unconverged_steps, elapsed_seconds; error). A SceneResult for a Scene, a CompiledScene, a pivoted body or a
-        Gyrostat. The records are those of the run at dt whether or not error is True; elapsed_seconds is its loop's.
+        unconverged_steps, elapsed_seconds; error; balance). A SceneResult for a Scene, a CompiledScene, a pivoted body
+        or a Gyrostat. The records are those of the run at dt whether or not error is True; elapsed_seconds is its
+        loop's. result.balance (a Balance, on every run) holds the residuals of the work-energy and impulse-momentum
+        balances per record, zero for the exact dynamics.
     
     Raises
     ------
@@ -10683,7 +10700,7 @@ def simulate(model: PivotedBody | PivotedPlanarBody | Gyrostat | Scene | Compile
         A bad argument, named: dt not > 0, steps < 0, both or neither of steps and duration, a duration that is not a
         whole number of steps of dt (the message gives the nearest durations that are), an unknown method (with the
         nearest name), record_every < 1, a recording larger than the memory available (record_every, with both
-        figures), a quantity of another dimension, loads or gravity for a scene.
+        figures), a quantity of another dimension, loads or gravity for a scene, accuracy_level not finite and > 0.
     TypeError
         model not one of the kinds listed, or initial not of its kind (the message names it).
     KeyboardInterrupt
@@ -10696,10 +10713,14 @@ def simulate(model: PivotedBody | PivotedPlanarBody | Gyrostat | Scene | Compile
         The state became non-finite (the run stops there and diverged is True); a recorded quantity is not finite
         although the state is (an overflow, e.g. the kinetic energy of |v_W| > 1e154 m/s; the message names the
         quantities and their first times); an implicit solve did not converge (naming dt and the count).
+    AccuracyWarning
+        An energy or momentum balance does not close: its residual exceeds 10 times the reliable global error
+        estimate's bound (plus round-off), or, without a reliable estimate, accuracy_level of its scale (see Balance);
+        the message gives the figure and suggests a smaller dt or another method.
     
     See Also
     --------
-    step, simulate_batch, methods, SimulationResult, AppliedLoad, Scene
+    step, simulate_batch, methods, SimulationResult, AppliedLoad, Scene, Balance, AccuracyWarning
     
     Notes
     -----
@@ -10735,6 +10756,11 @@ def simulate(model: PivotedBody | PivotedPlanarBody | Gyrostat | Scene | Compile
     >>> r = rd.simulate(body, rd.RigidBodyState(w_B=[0.1, 1.0, 0.1]), dt=0.01, steps=1000)
     >>> r.error.verdict[-1], bool(r.error.attitude[-1] < 1e-8)
     ('reliable', True)
+    
+    Its balances close: the energy residual T - T0 - work and |H_G - H_G0| stay far below their scale:
+    
+    >>> r.balance.verdict["energy"], r.balance.verdict["angular_momentum"], bool(abs(r.balance.energy[-1]) < 1e-9)
+    ('closed', 'closed', True)
     """
 @typing.overload
 def simulate_batch(model: Particle | PlanarBody | RigidBody | collections.abc.Sequence[Particle | PlanarBody | RigidBody], initial: typing.Any, dt: float | numpy.typing.ArrayLike | _Quantity, steps: int | None = None, method: _MethodName | None = None, record_every: int = 1, loads: typing.Any = None, gravity: bool | numpy.typing.ArrayLike | None = None, t0: float | _Quantity = 0.0, threads: int | None = None, simd: bool = False, scalar_first: bool = False, progress: collections.abc.Callable[..., typing.Any] | None = None, *, duration: float | _Quantity | None = None) -> BatchResult:
