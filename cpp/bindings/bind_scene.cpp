@@ -600,7 +600,7 @@ bool is_scene(py::handle model) {
   return py::isinstance<Scene>(model) || py::isinstance<CompiledSceneHandle>(model);
 }
 
-// Why a scene's momentum balances do not apply to its run ("" when they do; rigiddyn.balance): a force the impulses
+// Why a scene's momentum balances do not apply to its run ("" when they do; rigiddyn._balance): a force the impulses
 // do not hold acts (a constraint's reaction, the momentum a mass flow carries, the exact Coriolis kick), or the run's
 // path does not integrate the impulses.
 std::string momentum_balance_not_applicable(const CompiledScene& compiled) {

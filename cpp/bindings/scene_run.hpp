@@ -52,7 +52,7 @@ pybind11::object one_body_scene(const Body& body, const Eigen::Vector3d& g_W, py
 // True for a Scene or a CompiledScene.
 bool is_scene(pybind11::handle model);
 // rigiddyn.simulate and rigiddyn.step of a Scene or a CompiledScene (their arguments as documented there).
-// Returns the SceneResult's Python object (its balance set, rigiddyn.balance).
+// Returns the SceneResult's Python object (its balance set, rigiddyn._balance).
 pybind11::object simulate_scene_py(pybind11::handle model, pybind11::handle initial, pybind11::handle dt,
                                    pybind11::handle steps, pybind11::handle method, pybind11::handle record_every,
                                    pybind11::handle loads, pybind11::handle gravity, pybind11::handle t0,

@@ -13,7 +13,7 @@ from .problem import Problem, load_problem
 from . import scene_describe as _scene_describe  # noqa: F401  (attaches Scene.describe, CompiledScene.describe)
 from .scene_file import load_scene
 from .stability import StabilityWarning
-from .balance import AccuracyWarning, Balance
+from ._balance import AccuracyWarning, Balance
 from .work_precision import TradeoffResult, tradeoff  # the function; its module is rigiddyn.work_precision
 from .dispersion import DispersionWarning, monte_carlo  # the function; its module, rigiddyn.dispersion, holds the dispersions
 

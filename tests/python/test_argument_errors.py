@@ -122,6 +122,12 @@ def _thrust():
 
 # path -> a function returning the keyword arguments of a valid call (required arguments at least)
 EXAMPLES = {
+    "Balance": lambda: {"energy": np.zeros(2), "linear_momentum": np.zeros(2), "angular_momentum": np.zeros(2),
+                        "energy_round_off": np.zeros(2), "linear_momentum_round_off": np.zeros(2),
+                        "angular_momentum_round_off": np.zeros(2), "energy_scale": np.ones(2),
+                        "linear_momentum_scale": np.ones(2), "angular_momentum_scale": np.ones(2),
+                        "verdict": {"energy": "closed", "linear_momentum": "closed", "angular_momentum": "closed"},
+                        "about": "W's origin"},
     "AppliedLoad": lambda: {}, "FrameKinematics": lambda: {}, "FrameTree": lambda: {}, "ParticleState": lambda: {},
     "PlanarBodyState": lambda: {}, "RigidBodyState": lambda: {}, "Transform": lambda: {},
     "Motion": lambda: {"angular": V, "linear": V}, "Force": lambda: {"angular": V, "linear": V},
@@ -358,6 +364,7 @@ INSTANCES = {
 
 # (path, argument) -> the wrong kinds that are valid values after all (the call may succeed)
 VALID_AFTER_ALL = {
+    ("Balance", "about"): {"str"},  # any point's name
     ("FrameTree.add_frame", "name"): {"str"},  # any new name
     ("FrameTree.has_frame", "name"): {"str"},  # False
     ("Tree.add_link", "name"): {"str"},  # any new name
