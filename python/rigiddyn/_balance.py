@@ -200,7 +200,7 @@ class Balance:
         >>> print(r.balance.summary())
         energy: max |residual| 0 J (0 of its scale): closed
         linear_momentum: max |residual| 0 kg m/s (0 of its scale): closed
-        angular_momentum: not applicable: a particle has no attitude
+        angular_momentum: not applicable: a Particle has no attitude
         """
         lines = []
         for q, unit in _QUANTITIES:
@@ -318,7 +318,7 @@ def _of_body(result: Any, mass: float, inertia_com: Any, gravity_W: Any, loads: 
         linear_size = _running_max(mass * (_norms(v) + _norms(g) * np.abs(t - t[:1]))) if n else t
     if inertia_com is None:
         angular = angular_scale = angular_size = _not_applicable(n)
-        verdict["angular_momentum"] = "not applicable: a particle has no attitude"
+        verdict["angular_momentum"] = f"not applicable: a {kind} has no attitude"
     elif loads:
         angular = angular_scale = angular_size = _not_applicable(n)
         verdict["angular_momentum"] = "not applicable: the angular impulse of the loads is not integrated on a body's own path"
@@ -432,7 +432,7 @@ def _estimate_bounds(error: Any, result: Any, inertia_bound: Any) -> dict[str, n
     scene |H_C,b| / |w_b|, exact for a sphere; a scene's H is about W's origin, one body's about its centre)."""
     dp, dv = _per_body(error.position), _per_body(error.velocity)
     dth, dw = _per_body(error.attitude), _per_body(error.angular_velocity)
-    m = _per_body(getattr(result, "mass", None) if hasattr(result, "mass") else np.full(dv.shape[0], inertia_bound[0]))
+    m = _per_body(result.mass if hasattr(result, "mass") else np.full(dv.shape[0], inertia_bound[0]))  # one body: its mass
     v = np.asarray(result.v_W).reshape(dv.shape + (3,))
     p = np.asarray(result.p_W).reshape(dv.shape + (3,))
     w = np.asarray(result.w_B).reshape(dv.shape + (3,))
@@ -472,7 +472,7 @@ def accuracy_message(balance: Balance, error: Any, level: float, result: Any, me
     dt : float
         The step [s] (for the message).
     inertia_bound : tuple of float, optional
-        (mass [kg], largest principal moment [kg m^2]) of a one-body run.
+        (mass [kg], a bound of the largest principal moment [kg m^2]) of a one-body run.
 
     Returns
     -------
