@@ -70,6 +70,7 @@ struct SimulationResult {
   double elapsed_seconds;
   bool scalar_first = false;  // q_WB rows as (w, x, y, z)
   py::object error = py::none();  // a GlobalError (simulate(..., error=True)) or None
+  py::object balance = py::none();  // a rigiddyn.Balance (every simulate run) or None (a batch result)
 };
 
 SimulationResult to_result(Trajectory&& tr, bool scalar_first) {
@@ -91,9 +92,23 @@ SimulationResult to_result(Trajectory&& tr, bool scalar_first) {
                           scalar_first};
 }
 
+// The inertia about the centre of mass in B of a body whose angular momentum balance applies (rigiddyn._balance): a
+// rigid body's I_C, a planar body's diag(0, 0, I_zz); None for a particle.
+py::object balance_inertia(const Particle&) { return py::none(); }
+py::object balance_inertia(const PlanarBody& b) {
+  return py_io::to_array(Eigen::Vector3d(0.0, 0.0, b.inertia_zz()).asDiagonal().toDenseMatrix().eval());
+}
+py::object balance_inertia(const RigidBody& b) { return py_io::to_array(b.inertia_com()); }
+double largest_moment(const Particle&) { return 0.0; }
+double largest_moment(const PlanarBody& b) { return b.inertia_zz(); }
+double largest_moment(const RigidBody& b) { return b.inertia_com().norm(); }  // the Frobenius norm >= |I|
+const char* kind_of(const Particle&) { return "Particle"; }
+const char* kind_of(const PlanarBody&) { return "PlanarBody"; }
+const char* kind_of(const RigidBody&) { return "RigidBody"; }
+
 template <class Body, class State>
-SimulationResult simulate_one(const Body& body, const State& initial, const SimulationOptions& o,
-                              const std::string& method, py::handle progress, bool scalar_first, bool error) {
+py::object simulate_one(const Body& body, const State& initial, const SimulationOptions& o, const std::string& method,
+                        py::handle progress, bool scalar_first, bool error, py::handle accuracy_level) {
   SimulationOptions options = o;
   PythonMonitor monitor(progress);
   if (monitor.needed()) options.monitor = [&monitor](std::int64_t steps_done) { return monitor(steps_done); };
@@ -111,34 +126,49 @@ SimulationResult simulate_one(const Body& body, const State& initial, const Simu
   warn_after_run(tr, o, method);
   SimulationResult result = to_result(std::move(tr), scalar_first);
   if (estimate) result.error = py::cast(to_global_error(std::move(*estimate), false));
-  return result;
+  py::object out = py::cast(std::move(result));
+  out.cast<SimulationResult&>().balance = balance_after_run(
+      out, accuracy_level, method, o.dt,
+      [&](const py::module_& balance) {
+        return balance.attr("of_body")(out, body.mass(), balance_inertia(body), py_io::to_array(o.gravity_W),
+                                       !o.loads.empty(), kind_of(body), o.dt);
+      },
+      py::make_tuple(body.mass(), largest_moment(body)));
+  return out;
 }
 
 // simulate: every argument converted by name before the run (see simulate_doc); a scene's run is
 // bind_scene.cpp's.
+using SimulateResult = py::typing::Union<SimulationResult, SceneResult>;
+
 py::typing::Union<SimulationResult, SceneResult> simulate_py(py::handle model, py::handle initial, py::handle dt,
                                                              py::handle steps, py::handle method,
                                                              py::handle record_every, py::handle loads,
                                                              py::handle gravity, py::handle t0,
                                                              py::handle scalar_first, py::handle progress,
-                                                             py::handle duration, py::handle error) {
+                                                             py::handle duration, py::handle error,
+                                                             py::handle accuracy_level) {
   if (is_scene(model)) {
-    return py::cast(simulate_scene_py(model, initial, dt, steps, method, record_every, loads, gravity, t0, scalar_first,
-                                      progress, duration, error));
+    return py::reinterpret_borrow<SimulateResult>(simulate_scene_py(model, initial, dt, steps, method, record_every,
+                                                                    loads, gravity, t0, scalar_first, progress,
+                                                                    duration, error, accuracy_level));
   }
   if (is_pivoted(model) || is_gyrostat(model)) {  // the one-body scene of the body, its gravity and loads
     const py::object scene = is_gyrostat(model) ? gyrostat_scene(model, loads, gravity) : pivoted_scene(model, loads, gravity);
-    return py::cast(simulate_scene_py(scene, py::make_tuple(initial), dt, steps, method, record_every, py::none(),
-                                      py::none(), t0, scalar_first, progress, duration, error));
+    return py::reinterpret_borrow<SimulateResult>(simulate_scene_py(scene, py::make_tuple(initial), dt, steps, method,
+                                                                    record_every, py::none(), py::none(), t0,
+                                                                    scalar_first, progress, duration, error,
+                                                                    accuracy_level));
   }
-  return py::cast(with_model(model, initial, "initial", [&](const auto& body, const auto& state) {
+  return py::reinterpret_borrow<SimulateResult>(with_model(model, initial, "initial", [&](const auto& body, const auto& state) {
     SimulationOptions o = as_options(dt, method, loads, gravity);
     o.steps = as_steps(steps, duration, o.dt);
     o.record_every = py_io::as_int(record_every, "record_every", 1);
     o.t0 = py_io::as_scalar(py_io::in_si(t0, "s", "t0"), "t0");
     const bool first = py_io::as_bool(scalar_first, "scalar_first");
     const bool estimate = py_io::as_bool(error, "error");
-    return simulate_one(body, state, o, method_info(o.method).name, progress, first, estimate);
+    const py::object level = as_accuracy_level(accuracy_level);
+    return simulate_one(body, state, o, method_info(o.method).name, progress, first, estimate, level);
   }));
 }
 
@@ -149,7 +179,7 @@ constexpr const char* result_arrays[] = {"t", "p_W", "q_WB", "v_W", "w_B", "kine
 py::tuple result_state(const SimulationResult& r) {
   return py::make_tuple(r.t, r.p_W, r.q_WB, r.v_W, r.w_B, r.kinetic_energy, r.total_energy, r.angular_momentum_norm,
                         r.quaternion_norm_error, r.work, r.diverged, r.unconverged_steps, r.elapsed_seconds,
-                        r.scalar_first, r.error);
+                        r.scalar_first, r.error, r.balance);
 }
 
 // A pickled array as a read-only float64 copy of the shape it must have ((n,) or (n, k), n records).
@@ -165,10 +195,10 @@ Array unpickled_array(py::handle obj, const char* name, py::ssize_t n, py::ssize
 }
 
 // 13 items: a state without scalar_first (q_WB as (x, y, z, w)), as simulate_batch's samples and earlier pickles;
-// 14: without the error estimate (None then)
+// 14: without the error estimate (None then); 15: without the balance (None then)
 SimulationResult result_from_state(const py::tuple& t) {
-  if (t.size() < 13 || t.size() > 15) {
-    py_io::throw_value_error("SimulationResult pickle", "a tuple of 13, 14 or 15 items", std::to_string(t.size()) + " items");
+  if (t.size() < 13 || t.size() > 16) {
+    py_io::throw_value_error("SimulationResult pickle", "a tuple of 13 to 16 items", std::to_string(t.size()) + " items");
   }
   const py::ssize_t n = py::len(t[0]);
   auto column = [&](int i, py::ssize_t k) { return unpickled_array(t[i], result_arrays[i], n, k); };
@@ -179,6 +209,7 @@ SimulationResult result_from_state(const py::tuple& t) {
     if (!py::isinstance<GlobalError>(t[14])) py_io::throw_type_error("SimulationResult pickle error", "a GlobalError or None", t[14]);
     r.error = py::reinterpret_borrow<py::object>(t[14]);
   }
+  if (t.size() == 16 && !t[15].is_none()) r.balance = checked_balance(t[15], "SimulationResult pickle balance");
   return r;
 }
 
@@ -385,14 +416,21 @@ error : bool, keyword-only, default True
     Estimate the global error of every record (result.error, a GlobalError) by two more runs of the method at 2 dt
     and 4 dt (+0.75x the cost; global Richardson extrapolation with an observed-order check, see GlobalError).
     False: no estimate (result.error is None), the cost of the run alone.
+accuracy_level : float or None, keyword-only, default 1e-3
+    The relative residual of an energy or momentum balance (result.balance) beyond which a run without a reliable
+    global error estimate warns with an AccuracyWarning (where the estimate is reliable, a residual beyond 10 times
+    its bound warns instead); finite and > 0. None: no AccuracyWarning (the balance is still made). Runs that are
+    coarse on purpose (work-precision studies) pass None.
 
 Returns
 -------
 SimulationResult or SceneResult
     A SimulationResult for a Particle, PlanarBody or RigidBody: one row per record, n records (t, p_W, q_WB, v_W,
     w_B, kinetic_energy, total_energy, angular_momentum_norm, quaternion_norm_error, work; diverged,
-    unconverged_steps, elapsed_seconds; error). A SceneResult for a Scene, a CompiledScene, a pivoted body or a
-    Gyrostat. The records are those of the run at dt whether or not error is True; elapsed_seconds is its loop's.
+    unconverged_steps, elapsed_seconds; error; balance). A SceneResult for a Scene, a CompiledScene, a pivoted body
+    or a Gyrostat. The records are those of the run at dt whether or not error is True; elapsed_seconds is its
+    loop's. result.balance (a Balance, on every run) holds the residuals of the work-energy and impulse-momentum
+    balances per record, zero for the exact dynamics.
 
 Raises
 ------
@@ -400,7 +438,7 @@ ValueError
     A bad argument, named: dt not > 0, steps < 0, both or neither of steps and duration, a duration that is not a
     whole number of steps of dt (the message gives the nearest durations that are), an unknown method (with the
     nearest name), record_every < 1, a recording larger than the memory available (record_every, with both
-    figures), a quantity of another dimension, loads or gravity for a scene.
+    figures), a quantity of another dimension, loads or gravity for a scene, accuracy_level not finite and > 0.
 TypeError
     model not one of the kinds listed, or initial not of its kind (the message names it).
 KeyboardInterrupt
@@ -413,10 +451,14 @@ RuntimeWarning
     The state became non-finite (the run stops there and diverged is True); a recorded quantity is not finite
     although the state is (an overflow, e.g. the kinetic energy of |v_W| > 1e154 m/s; the message names the
     quantities and their first times); an implicit solve did not converge (naming dt and the count).
+AccuracyWarning
+    An energy or momentum balance does not close: its residual exceeds 10 times the reliable global error
+    estimate's bound (plus round-off), or, without a reliable estimate, accuracy_level of its scale (see Balance);
+    the message gives the figure and suggests a smaller dt or another method.
 
 See Also
 --------
-step, simulate_batch, methods, SimulationResult, AppliedLoad, Scene
+step, simulate_batch, methods, SimulationResult, AppliedLoad, Scene, Balance, AccuracyWarning
 
 Notes
 -----
@@ -452,6 +494,11 @@ How accurate a run is: rk4 on a tumbling body, its attitude's error at the last 
 >>> r = rd.simulate(body, rd.RigidBodyState(w_B=[0.1, 1.0, 0.1]), dt=0.01, steps=1000)
 >>> r.error.verdict[-1], bool(r.error.attitude[-1] < 1e-8)
 ('reliable', True)
+
+Its balances close: the energy residual T - T0 - work and |H_G - H_G0| stay far below their scale:
+
+>>> r.balance.verdict["energy"], r.balance.verdict["angular_momentum"], bool(abs(r.balance.energy[-1]) < 1e-9)
+('closed', 'closed', True)
 )doc";
 
 const char* const step_doc = R"doc(One step of `method` from `state` at time t to t + dt.
@@ -673,11 +720,16 @@ rk4 (order 4) on a tumbling body; halving dt divides the estimate by about 2^4 =
 >>> bool(12 < coarse.attitude[-1] / fine.attitude[-1] < 20)
 True
 
-explicit_euler at a coarse step gains energy at every step (its step is beyond its stability limit), and says so:
+explicit_euler at a coarse step gains energy at every step (its step is beyond its stability limit), and says so
+(its energy balance is off too, which simulate reports with an AccuracyWarning: switched off here to show the
+estimate's own verdict):
 
->>> rough = rd.simulate(body, rd.RigidBodyState(w_B=[0.1, 3.0, 0.1]), dt=0.1, steps=100, method="explicit_euler")
+>>> rough = rd.simulate(body, rd.RigidBodyState(w_B=[0.1, 3.0, 0.1]), dt=0.1, steps=100, method="explicit_euler",
+...                     accuracy_level=None)
 >>> bool(rough.error.reliable[-1]), rough.error.verdict[-1].startswith("step beyond the stability limit")
 (False, True)
+>>> rough.balance.verdict["energy"].startswith("open")
+True
 )doc");
   error_class
       .def_readonly("order", &GlobalError::order,
@@ -789,6 +841,8 @@ array([1.5, 1.5, 1.5])
       .def_readonly("error", &SimulationResult::error,
                     "The global error estimate of every record (a GlobalError), or None (simulate(..., error=False), "
                     "a pickled or batch result).")
+      .def_readonly("balance", &SimulationResult::balance,
+                    "The energy and momentum balance of every record (a Balance), or None (a batch result).")
       .def("__repr__", &result_repr)
       .def(py::pickle(&result_state, &result_from_state))
       // the table lives in Python (rigiddyn/trajectory.py): one definition of the columns for CSV, npz,
@@ -830,7 +884,7 @@ Examples
       py::arg("method") = py::none(), py::arg("record_every") = 1, py::arg("loads") = py::none(),          \
       py::arg("gravity") = py::none(), py::arg("t0") = 0.0, py::arg("scalar_first") = false,               \
       py::arg("progress") = py::none(), py::kw_only(), py::arg("duration") = py::none(),     \
-      py::arg("error") = true
+      py::arg("error") = true, py::arg("accuracy_level") = 1e-3
 #define RIGIDDYN_STEP_ARGS                                                                                  \
   py::arg("model"), py::arg("state"), py::arg("dt"), py::arg("method") = py::none(), py::arg("loads") = py::none(), \
       py::arg("gravity") = py::none(), py::arg("t") = py::none()

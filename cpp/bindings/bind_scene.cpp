@@ -319,7 +319,7 @@ const ResultArray result_arrays[] = {
 constexpr std::size_t result_array_count = sizeof(result_arrays) / sizeof(result_arrays[0]);
 
 py::tuple scene_result_state(const SceneResult& r) {
-  py::tuple out(result_array_count + 10);
+  py::tuple out(result_array_count + 11);
   for (std::size_t i = 0; i < result_array_count; ++i) out[i] = r.*(result_arrays[i].member);
   out[result_array_count] = r.body_names;
   out[result_array_count + 1] = r.elements;
@@ -331,18 +331,19 @@ py::tuple scene_result_state(const SceneResult& r) {
   out[result_array_count + 7] = r.motor_work;
   out[result_array_count + 8] = r.wheel_bodies;
   out[result_array_count + 9] = r.error;
+  out[result_array_count + 10] = r.balance;
   return out;
 }
 
-// result_array_count + 5, + 6 or + 9 items: a state without scalar_first (q_WB as (x, y, z, w)), without the wheels
-// or without the error estimate, as earlier pickles
+// result_array_count + 5, + 6, + 9 or + 10 items: a state without scalar_first (q_WB as (x, y, z, w)), without the
+// wheels, without the error estimate or without the balance, as earlier pickles
 SceneResult scene_result_from_state(const py::tuple& t) {
   const std::size_t wheels = result_array_count + 9;  // the size of a state with the wheels
   if (t.size() != result_array_count + 5 && t.size() != result_array_count + 6 && t.size() != wheels &&
-      t.size() != wheels + 1) {
+      t.size() != wheels + 1 && t.size() != wheels + 2) {
     py_io::throw_value_error("SceneResult pickle", "a tuple of " + std::to_string(result_array_count + 5) + ", " +
-                             std::to_string(result_array_count + 6) + ", " + std::to_string(wheels) + " or " +
-                             std::to_string(wheels + 1) + " items",
+                             std::to_string(result_array_count + 6) + ", " + std::to_string(wheels) + ", " +
+                             std::to_string(wheels + 1) + " or " + std::to_string(wheels + 2) + " items",
                              std::to_string(t.size()) + " items");
   }
   SceneResult r;
@@ -370,7 +371,8 @@ SceneResult scene_result_from_state(const py::tuple& t) {
   r.elapsed_seconds = t[result_array_count + 4].cast<double>();
   r.scalar_first = t.size() >= result_array_count + 6 && t[result_array_count + 5].cast<bool>();
   r.wheel_bodies = t.size() >= wheels ? py::tuple(t[result_array_count + 8]) : py::tuple();
-  if (t.size() == wheels + 1) r.error = py::reinterpret_borrow<py::object>(t[wheels]);  // a GlobalError or None
+  if (t.size() >= wheels + 1) r.error = py::reinterpret_borrow<py::object>(t[wheels]);  // a GlobalError or None
+  if (t.size() == wheels + 2 && !t[wheels + 1].is_none()) r.balance = checked_balance(t[wheels + 1], "SceneResult pickle balance");
   const auto nw = static_cast<py::ssize_t>(r.wheel_bodies.size());
   // each wheel column, (n, nw) (empty in an earlier pickle)
   const auto wheel_column = [&](std::size_t at, const char* name) {
@@ -598,9 +600,32 @@ bool is_scene(py::handle model) {
   return py::isinstance<Scene>(model) || py::isinstance<CompiledSceneHandle>(model);
 }
 
-SceneResult simulate_scene_py(py::handle model, py::handle initial, py::handle dt, py::handle steps, py::handle method,
+// Why a scene's momentum balances do not apply to its run ("" when they do; rigiddyn._balance): a force the impulses
+// do not hold acts (a constraint's reaction, the momentum a mass flow carries, the exact Coriolis kick), or the run's
+// path does not integrate the impulses.
+std::string momentum_balance_not_applicable(const CompiledScene& compiled) {
+  const Scene& scene = compiled.scene();
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+    const Body& b = scene.bodies[i];
+    if (std::holds_alternative<PivotedBody>(b) || std::holds_alternative<PivotedPlanarBody>(b)) {
+      return "a pinned body's pivot reaction is an external force whose impulse is not integrated";
+    }
+    if (std::holds_alternative<PlanarBody>(b)) return "a planar body's plane takes forces whose impulse is not integrated";
+    if (has_mass_flow(scene, i)) return "a mass flow carries momentum that is not integrated";
+  }
+  for (const std::string& type : compiled.element_types()) {
+    if (type == "CoriolisForce") return "the Coriolis kick of a turning frame is not integrated into the impulses";
+  }
+  if (compiled.one_body_path() || compiled.fast_model().index() != 0) {
+    return "the run's path (one body, or a specialised model) does not integrate the impulses";
+  }
+  return {};
+}
+
+py::object simulate_scene_py(py::handle model, py::handle initial, py::handle dt, py::handle steps, py::handle method,
                              py::handle record_every, py::handle loads, py::handle gravity, py::handle t0,
-                             py::handle scalar_first, py::handle progress, py::handle duration, py::handle error) {
+                             py::handle scalar_first, py::handle progress, py::handle duration, py::handle error,
+                             py::handle accuracy_level) {
   refuse_body_arguments(loads, gravity);
   SimulationOptions o;
   o.dt = py_io::as_scalar(py_io::in_si(dt, "s", "dt"), "dt");
@@ -609,6 +634,7 @@ SceneResult simulate_scene_py(py::handle model, py::handle initial, py::handle d
   o.t0 = py_io::as_scalar(py_io::in_si(t0, "s", "t0"), "t0");
   const bool first = py_io::as_bool(scalar_first, "scalar_first");
   const bool estimate_error = py_io::as_bool(error, "error");
+  const py::object level = as_accuracy_level(accuracy_level);
   const CompiledSceneHandle h = compiled_for(model, method);
   o.method = h.method;
   const std::vector<BodyState> initial_states = as_scene_states(initial, h.scene, "initial");
@@ -626,9 +652,21 @@ SceneResult simulate_scene_py(py::handle model, py::handle initial, py::handle d
   }
   if (r.interrupted) monitor.raise();  // the records so far are dropped with r
   warn_after_run(r, o, method_info(h.method).name);
+  const auto n = static_cast<py::ssize_t>(r.size());
+  const std::string not_applicable = momentum_balance_not_applicable(*h.compiled);
+  py::object impulse = py::none(), angular_impulse = py::none();
+  if (not_applicable.empty() && r.impulse_W.size() == 3 * r.size()) {
+    impulse = adopt(std::move(r.impulse_W), {n, 3});
+    angular_impulse = adopt(std::move(r.angular_impulse_W), {n, 3});
+  }
   SceneResult result = to_scene_result(std::move(r), h.scene, *h.compiled, first);
   if (estimate) result.error = py::cast(to_global_error(std::move(*estimate), true));
-  return result;
+  py::object out = py::cast(std::move(result));
+  out.cast<SceneResult&>().balance =
+      balance_after_run(out, level, method_info(h.method).name, o.dt, [&](const py::module_& balance) {
+        return balance.attr("of_scene")(out, impulse, angular_impulse, not_applicable, o.dt);
+      });
+  return out;
 }
 
 py::object step_scene_py(py::handle model, py::handle state, py::handle dt, py::handle method, py::handle loads,
@@ -858,6 +896,8 @@ void bind_scene(py::module_& m) {
       .def_readonly("unconverged_steps", &SceneResult::unconverged_steps,
                     "number of steps whose implicit solve stopped at its iteration cap (0 for explicit methods)")
       .def_readonly("elapsed_seconds", &SceneResult::elapsed_seconds, "wall time of the C++ stepping loop [s]")
+      .def_readonly("balance", &SceneResult::balance,
+                    "The energy and momentum balance of every record (a Balance), or None (a batch result).")
       .def_readonly("error", &SceneResult::error,
                     "The global error estimate of every record (a GlobalError: per body (n, nb) for the state, per "
                     "record (n,) for the energy and |L|), or None (simulate(..., error=False), a pickled or batch "

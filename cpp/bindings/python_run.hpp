@@ -150,6 +150,31 @@ inline pybind11::object sample_error(pybind11::handle batch_error, pybind11::ssi
                               values(e.observed_order), verdict, py::array_t<bool>::ensure(rows_of(e.reliable))});
 }
 
+// simulate's accuracy_level: None (no AccuracyWarning) or a finite relative level > 0 (rigiddyn._balance).
+inline pybind11::object as_accuracy_level(pybind11::handle level) {
+  if (level.is_none()) return pybind11::none();
+  return pybind11::float_(py_io::as_positive(level, "accuracy_level"));
+}
+
+// The end of a run: result.balance (rigiddyn._balance, made by `make` from the module with the result's Python
+// object) and the AccuracyWarning when it does not close (check_run, with `level` from as_accuracy_level).
+// `result` is the run's result object (its error already set); returns the Balance.
+template <class Make>
+pybind11::object balance_after_run(pybind11::handle result, pybind11::handle level, const std::string& method, double dt,
+                                   Make&& make, pybind11::handle inertia_bound = pybind11::none()) {
+  const pybind11::module_ balance = pybind11::module_::import("rigiddyn._balance");
+  pybind11::object b = make(balance);
+  return balance.attr("check_run")(result, b, level, method, dt, inertia_bound);
+}
+
+// A pickled result's balance: a rigiddyn.Balance (TypeError naming `name` otherwise).
+inline pybind11::object checked_balance(pybind11::handle obj, const std::string& name) {
+  if (!pybind11::isinstance(obj, pybind11::module_::import("rigiddyn._balance").attr("Balance"))) {
+    py_io::throw_type_error(name, "a Balance or None", obj);
+  }
+  return pybind11::reinterpret_borrow<pybind11::object>(obj);
+}
+
 // A coarse run of the estimate (global_error) with the monitor of the answer: its records, and `interrupted` set
 // when the monitor stopped it (the binding then raises the monitor's exception).
 template <class Simulate>

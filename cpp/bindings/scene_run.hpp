@@ -38,6 +38,7 @@ struct SceneResult {
   double elapsed_seconds;
   bool scalar_first = false;  // q_WB rows as (w, x, y, z)
   pybind11::object error = pybind11::none();  // a GlobalError (simulate(..., error=True)) or None
+  pybind11::object balance = pybind11::none();  // a rigiddyn.Balance (every simulate run) or None (a batch result)
 };
 
 // The body index of each gyrostat wheel of the scene, in the order of SceneSimulation::wheel_speed's columns.
@@ -51,11 +52,12 @@ pybind11::object one_body_scene(const Body& body, const Eigen::Vector3d& g_W, py
 // True for a Scene or a CompiledScene.
 bool is_scene(pybind11::handle model);
 // rigiddyn.simulate and rigiddyn.step of a Scene or a CompiledScene (their arguments as documented there).
-SceneResult simulate_scene_py(pybind11::handle model, pybind11::handle initial, pybind11::handle dt,
+// Returns the SceneResult's Python object (its balance set, rigiddyn._balance).
+pybind11::object simulate_scene_py(pybind11::handle model, pybind11::handle initial, pybind11::handle dt,
                                    pybind11::handle steps, pybind11::handle method, pybind11::handle record_every,
                                    pybind11::handle loads, pybind11::handle gravity, pybind11::handle t0,
                                    pybind11::handle scalar_first, pybind11::handle progress,
-                                   pybind11::handle duration, pybind11::handle error);
+                                   pybind11::handle duration, pybind11::handle error, pybind11::handle accuracy_level);
 pybind11::object step_scene_py(pybind11::handle model, pybind11::handle state, pybind11::handle dt,
                                pybind11::handle method, pybind11::handle loads, pybind11::handle gravity,
                                pybind11::handle t);

@@ -188,7 +188,7 @@ class SceneCase:
             raise ValueError(compiled.reason)
         # method: a str of methods() (mypy knows their literal names), checked by the core
         return _core.simulate(compiled.model, self.initial, dt, steps, cast(Any, method), record_every=record_every,
-                              progress=progress, error=error)
+                              progress=progress, error=error, accuracy_level=None)  # coarse on purpose
 
     def states(self, result: Any) -> SceneStates:
         """The recorded states and totals of a scene result."""

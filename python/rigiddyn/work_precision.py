@@ -242,7 +242,7 @@ def _core_simulate(problem: Problem | SceneCase, method: str, dt: float, steps: 
         # method: a str of methods() (mypy knows their literal names), checked by the core
         return _core.simulate(problem.body(), problem.initial_state(), dt, steps, cast(Any, method), record_every=record_every,
                               loads=problem.applied_loads(), gravity=problem.gravity, progress=progress,
-                              error=error)
+                              error=error, accuracy_level=None)  # the sweep's coarse steps are its rows
 
 
 def _simulate(problem: Problem | SceneCase, method: str, dt: float, steps: int, record_every: int, timed: bool,

@@ -110,7 +110,7 @@ TEST(SceneModel, IndependentBodiesMoveAsTheyDoAlone) {
 }
 
 // Particles carry no attitude: y holds (p, v) for a particle, 13 numbers for a rigid body, then t and
-// one work slot per element; the records give a particle q = identity and ω = 0.
+// one work slot per element, then the six impulses; the records give a particle q = identity and ω = 0.
 TEST(SceneModel, AParticleCostsNoAttitude) {
   Scene scene;
   scene.bodies = {Particle(1.0), RigidBody(1.0, Eigen::Vector3d(1.0, 1.0, 1.0)), Particle(2.0), PlanarBody(1.0, 1.0)};
@@ -118,8 +118,8 @@ TEST(SceneModel, AParticleCostsNoAttitude) {
   scene.elements.push_back(MutualGravity{1.0, 0.0, {}});
   const CompiledScene compiled = compile_scene(scene, Method::rk4);
   EXPECT_FALSE(compiled.one_body_path());
-  EXPECT_EQ(compiled.model().coordinate_count(), 6 + 13 + 6 + 6 + 1 + 2);
-  EXPECT_EQ(compiled.model().tangent_count(), 6 + 12 + 6 + 6 + 1 + 2);
+  EXPECT_EQ(compiled.model().coordinate_count(), 6 + 13 + 6 + 6 + 1 + 2 + 6);
+  EXPECT_EQ(compiled.model().tangent_count(), 6 + 12 + 6 + 6 + 1 + 2 + 6);
   ParticleState p;
   p.p_W = Eigen::Vector3d(3.0, 0.0, 0.0);
   RigidBodyState r;

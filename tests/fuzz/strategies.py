@@ -153,6 +153,9 @@ RECIPES = {
 # (the joints' transform(q) also return a Transform, but rarely from drawn q)
 RECIPES["GlobalError"] = st.one_of(RECIPES["SimulationResult"], RECIPES["SceneResult"]).map(
     lambda run: ("method", run, "__getattribute__", [("lit", "error")], []))
+# a run's energy and momentum balance (read from a result as its attribute)
+RECIPES["Balance"] = st.one_of(RECIPES["SimulationResult"], RECIPES["SceneResult"]).map(
+    lambda run: ("method", run, "__getattribute__", [("lit", "balance")], []))
 RECIPES["SpatialInertia"] = st.tuples(st.floats(0.01, 10.0), st.floats(0.1, 100.0)).map(
     lambda rm: _call_spec("solid_sphere", [("lit", rm[0])], mass=("lit", rm[1])))  # the primitives' draws mostly
 # give both or neither of mass= and density=

@@ -125,6 +125,12 @@ def _thrust():
 
 # path -> a function returning the keyword arguments of a valid call (required arguments at least)
 EXAMPLES = {
+    "Balance": lambda: {"energy": np.zeros(2), "linear_momentum": np.zeros(2), "angular_momentum": np.zeros(2),
+                        "energy_round_off": np.zeros(2), "linear_momentum_round_off": np.zeros(2),
+                        "angular_momentum_round_off": np.zeros(2), "energy_scale": np.ones(2),
+                        "linear_momentum_scale": np.ones(2), "angular_momentum_scale": np.ones(2),
+                        "verdict": {"energy": "closed", "linear_momentum": "closed", "angular_momentum": "closed"},
+                        "about": "W's origin"},
     "AppliedLoad": lambda: {}, "FrameKinematics": lambda: {}, "FrameTree": lambda: {}, "ParticleState": lambda: {},
     "PlanarBodyState": lambda: {}, "RigidBodyState": lambda: {}, "Transform": lambda: {},
     "Motion": lambda: {"angular": V, "linear": V}, "Force": lambda: {"angular": V, "linear": V},
@@ -353,6 +359,7 @@ INSTANCES = {
     "Problem": _problem, "TradeoffResult": _result,
     "SimulationResult": lambda: rd.simulate(rd.RigidBody(1.0, I_BOX), rd.RigidBodyState(w_B=V), 0.01, 2),
     "GlobalError": lambda: rd.simulate(rd.RigidBody(1.0, I_BOX), rd.RigidBodyState(w_B=V), 0.01, 8).error,
+    "Balance": lambda: rd.simulate(rd.RigidBody(1.0, I_BOX), rd.RigidBodyState(w_B=V), 0.01, 8).balance,
     "Scene": _scene, "CompiledScene": lambda: _scene().compile("rk4"), "SceneResult": _scene_result,
     "PivotedBodyState": lambda: rd.PivotedBodyState(w_B=V),
     "CompoundPendulumSolution": lambda: rd.CompoundPendulumSolution(**_pendulum()),
@@ -363,6 +370,7 @@ INSTANCES = {
 
 # (path, argument) -> the wrong kinds that are valid values after all (the call may succeed)
 VALID_AFTER_ALL = {
+    ("Balance", "about"): {"str"},  # any point's name
     ("FrameTree.add_frame", "name"): {"str"},  # any new name
     ("FrameTree.has_frame", "name"): {"str"},  # False
     ("Tree.add_link", "name"): {"str"},  # any new name
@@ -454,6 +462,7 @@ INSTANCES_OF_RESULTS = {
     "PointAcceleration": lambda: rd.point_acceleration(rd.FrameKinematics(), V, V, V),
     "SimulationResult": lambda: rd.simulate(rd.RigidBody(1.0, I_BOX), rd.RigidBodyState(w_B=V), 0.01, 2),
     "ElementField": lambda: rd.MagneticDipole.fields[0], "GlobalError": INSTANCES["GlobalError"],
+    "Balance": INSTANCES["Balance"],
     "InertiaReport": INSTANCES["InertiaReport"], "FrameKinematics": rd.FrameKinematics, "AppliedLoad": rd.AppliedLoad,
     "ParticleState": rd.ParticleState, "PlanarBodyState": rd.PlanarBodyState, "Particle": lambda: rd.Particle(1.0),
     "PlanarBody": lambda: rd.PlanarBody(1.0, 0.5), "RigidBody": lambda: rd.RigidBody(1.0, I_BOX),

@@ -36,6 +36,7 @@ INTERNAL = {
     "_names": "the closest known name for the 'did you mean' of error messages (their messages state it)",
     "_measures": "the names, units and meanings of tradeoff's error measures (rigiddyn.work_precision's)",
     "_memory": "the memory estimates of scene_file's [[cluster]] and dispersion (their docs state them)",
+    "_balance": "its names are rigiddyn's (Balance, AccuracyWarning; simulate makes the balance of every run)",
 }
 
 _DIRECTIVE = re.compile(r"^\.\. (currentmodule|automodule|autosummary)::\s*(\S*)\s*$")

@@ -116,6 +116,7 @@ def test_order_planar_body_against_dop853(method):
     assert abs(observed_order(steps, errors, T) - ORDER[method]) < 0.2, errors
 
 
+@pytest.mark.filterwarnings("ignore::rigiddyn.AccuracyWarning")  # first-order or coarse steps on purpose
 @pytest.mark.parametrize("method", METHODS)
 def test_particle_equals_non_rotating_rigid_body(method):
     loads = [rd.AppliedLoad(force=[0.5, -1.0, 2.0], t_end=0.25), rd.AppliedLoad(force=[-1.0, 0.2, 0.3], t_start=0.25)]
@@ -130,6 +131,7 @@ def test_particle_equals_non_rotating_rigid_body(method):
     np.testing.assert_allclose(b.q_WB, np.tile([0, 0, 0, 1.0], (len(b.t), 1)), atol=0)
 
 
+@pytest.mark.filterwarnings("ignore::rigiddyn.AccuracyWarning")  # first-order or coarse steps on purpose
 @pytest.mark.parametrize("method", METHODS)
 def test_planar_body_equals_rigid_body_kept_in_plane(method):
     loads = [rd.AppliedLoad(force=[0.5, -1.0, 0.0], torque=[0, 0, 0.3]),
@@ -153,23 +155,27 @@ def free_spin(method, dt, steps, w_B=(0.2, 3.0, 0.3)):
     return rd.simulate(body, rd.RigidBodyState(w_B=w_B), dt, steps, method=method)
 
 
+@pytest.mark.filterwarnings("ignore::rigiddyn.AccuracyWarning")  # first-order or coarse steps on purpose
 def test_torque_free_explicit_euler_gains_energy_and_momentum():
     r = free_spin("explicit_euler", 0.01, 2000)
     # exact property: |w + h w'|^2 grows by h^2 |w'|^2 ~ 1e-4 per step, far above round-off
     assert np.all(np.diff(r.kinetic_energy) > 0) and np.all(np.diff(r.angular_momentum_norm) > 0)
 
 
+@pytest.mark.filterwarnings("ignore::rigiddyn.AccuracyWarning")  # first-order or coarse steps on purpose
 def test_torque_free_semi_implicit_euler_explicit_gyroscopic_gains_energy():
     r = free_spin("semi_implicit_euler", 0.01, 2000)
     assert r.kinetic_energy[-1] > r.kinetic_energy[0] * (1 + 1e-3)
 
 
+@pytest.mark.filterwarnings("ignore::rigiddyn.AccuracyWarning")  # first-order or coarse steps on purpose
 def test_semi_implicit_euler_explicit_gyroscopic_blows_up_on_fast_spin():
     with pytest.warns(RuntimeWarning, match="non-finite"):
         r = free_spin("semi_implicit_euler", 0.1, 2000, w_B=(0.5, 20.0, 0.5))
     assert r.diverged
 
 
+@pytest.mark.filterwarnings("ignore::rigiddyn.AccuracyWarning")  # first-order or coarse steps on purpose
 def test_implicit_gyroscopic_is_dissipative():
     # h |w| = 0.3: the energy decays monotonically (where the explicit term blows up)
     r = free_spin("semi_implicit_euler_implicit_gyroscopic", 0.1, 2000)
@@ -181,6 +187,7 @@ def test_implicit_gyroscopic_is_dissipative():
         assert free_spin("semi_implicit_euler", 0.1, 2000).diverged
 
 
+@pytest.mark.filterwarnings("ignore::rigiddyn.AccuracyWarning")  # first-order or coarse steps on purpose
 def test_implicit_gyroscopic_stays_finite_on_fast_spin():
     # h |w| = 2 about the intermediate axis: bounded (energy may grow transiently), no blow-up
     r = free_spin("semi_implicit_euler_implicit_gyroscopic", 0.1, 2000, w_B=(0.5, 20.0, 0.5))
@@ -225,6 +232,7 @@ def test_work_energy(method):
     np.testing.assert_allclose(g.total_energy, g.total_energy[0], rtol=0, atol=trunc + roundoff(size, 2 * steps))
 
 
+@pytest.mark.filterwarnings("ignore::rigiddyn.AccuracyWarning")  # first-order or coarse steps on purpose
 @pytest.mark.parametrize("method", ["semi_implicit_euler", "semi_implicit_euler_implicit_gyroscopic"])
 def test_work_energy_first_order_methods(method):
     body = rd.RigidBody(MASS, INERTIA)

@@ -35,6 +35,11 @@ def close(got, want, tol):
     np.testing.assert_allclose(got, want, rtol=0, atol=tol * max(1.0, np.max(np.abs(want))))
 
 
+# the core against an independent reference, step by step on random problems and every method (first-order ones
+# included): the runs are compared, not meant to be accurate; the AccuracyWarning is tested in test_balance.py
+pytestmark = pytest.mark.filterwarnings("ignore::rigiddyn.AccuracyWarning")
+
+
 def test_method_names_exist_in_the_core():
     """The five classical methods (the structure-preserving ones are compared with
     rigiddyn_ref.geometric elsewhere)."""

@@ -170,6 +170,7 @@ def test_a_zero_moment_is_refused(shape):
         parse_problem(tomllib.loads("horizon = 1.0\n" + shape))
 
 
+@pytest.mark.filterwarnings("ignore::rigiddyn.AccuracyWarning")  # runs at the stability limit on purpose
 @pytest.mark.parametrize("method", [m for m in sorted(METHODS) if m not in STABILITY_POLYNOMIALS])
 def test_stability_limit_is_the_documented_one_from_the_method_table(method):
     """Methods without a stability polynomial are checked against methods()['stability_limit'] (the

@@ -23,6 +23,10 @@ ROUND_OFF_FLOOR = 1e-11
 
 FINITE_ORDER = [m["name"] for m in rd.methods() if m["order"] > 0]
 
+# the estimate's contract is tested on every method, coarse and adversarial runs included: their balances do not
+# close, which the AccuracyWarning reports (tests/python/test_balance.py); here only the estimate is read
+pytestmark = pytest.mark.filterwarnings("ignore::rigiddyn.AccuracyWarning")
+
 
 def wrapped(angle):
     return np.abs(np.angle(np.exp(1j * angle)))

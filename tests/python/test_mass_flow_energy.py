@@ -115,6 +115,7 @@ def spinning_run(rate, inertia_rule="scaled"):
     return run
 
 
+@pytest.mark.filterwarnings("ignore::rigiddyn.AccuracyWarning")  # first-order or coarse steps on purpose
 @pytest.mark.parametrize("rate", [-0.8, rate_of_t], ids=["constant", "of_t"])
 @pytest.mark.parametrize("method", METHODS)
 def test_a_spinning_body_losing_mass_closes_the_balance(method, rate):
@@ -183,6 +184,7 @@ def thrust_initial(bystander=False):
     return states + ([rd.ParticleState(v_W=[0.0, 1.0, 2.0])] if bystander else [])
 
 
+@pytest.mark.filterwarnings("ignore::rigiddyn.AccuracyWarning")  # first-order or coarse steps on purpose
 @pytest.mark.parametrize("bystander", [False, True], ids=["fast", "generic"])
 @pytest.mark.parametrize("rate", [-1.5, rate_of_t], ids=["constant", "of_t"])
 @pytest.mark.parametrize("method", METHODS)
@@ -239,6 +241,7 @@ def test_yoshida_keeps_its_order_on_a_burn_against_the_closed_form(bystander):
     assert e2 > 1e-9
 
 
+@pytest.mark.filterwarnings("ignore::rigiddyn.AccuracyWarning")  # first-order or coarse steps on purpose
 @pytest.mark.parametrize("method", METHODS)
 def test_a_body_gaining_mass_fast_is_not_refused(method):
     """324.31 kg gaining 1e4 kg/s, dt = 0.14 s: the mass grows 5-fold in the first step. Every mass of the run is
@@ -252,6 +255,7 @@ def test_a_body_gaining_mass_fast_is_not_refused(method):
     np.testing.assert_allclose(result.mass[:, 0], 324.31 + 1e4 * result.t, rtol=3 * 16 * EPS)
 
 
+@pytest.mark.filterwarnings("ignore::rigiddyn.AccuracyWarning")  # coarse steps at the mass limit on purpose
 @pytest.mark.parametrize("method", METHODS)
 def test_a_run_that_ends_at_a_fifth_of_a_kilogram_is_not_refused(method):
     """10.2 kg at −1 kg/s for 10 steps of 1 s ends at 0.2 kg: the up-front check passes, and no method refuses it
@@ -272,6 +276,7 @@ NEAR_LIMIT = [  # (m0 [kg], ṁ [kg/s], dt [s], the last step count with a mass 
 ]
 
 
+@pytest.mark.filterwarnings("ignore::rigiddyn.AccuracyWarning")  # coarse steps at the mass limit on purpose
 @pytest.mark.parametrize("m0, rate, dt, last", NEAR_LIMIT)
 @pytest.mark.parametrize("method", METHODS)
 def test_the_up_front_check_and_the_run_agree_at_the_documented_limit(method, m0, rate, dt, last):

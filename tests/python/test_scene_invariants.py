@@ -109,6 +109,7 @@ def test_n_body_linear_momentum_to_round_off(method):
 
 @pytest.mark.parametrize("method, n_rigid", [("semi_implicit_euler", 0), ("splitting_dlm", 3),
                                              ("splitting_dlm_yoshida4", 3)])
+@pytest.mark.filterwarnings("ignore::rigiddyn.AccuracyWarning")  # semi_implicit_euler's energy drifts (0.7 %): this test is about momentum
 def test_n_body_angular_momentum_to_round_off_with_the_splittings(method, n_rigid):
     """Mutual gravity alone (central pair forces): a kick changes Σ p × m v by h Σ_pairs (p_i − p_j) × f_ij
     = 0, a drift by h Σ v × m v = 0, and DLM's free rotation keeps each body's R I ω (exact rotations about

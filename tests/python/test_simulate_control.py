@@ -117,6 +117,7 @@ def test_step_takes_and_returns_the_time():
         rd.step(BODY, START, 0.01, "rkmk4", loads=WINDOWED, t="0.1")
 
 
+@pytest.mark.filterwarnings("ignore::rigiddyn.AccuracyWarning")  # first-order methods on purpose: step against simulate
 @pytest.mark.parametrize("method", [m["name"] for m in rd.methods() if m["order"] > 0])
 def test_steps_from_t0_follow_simulate_across_switch_times(method):
     """step after step, each from the time the previous returned, splits its steps at the switch times as

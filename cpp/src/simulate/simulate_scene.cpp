@@ -64,8 +64,8 @@ SceneSimulation reserved_scene_simulation(std::int64_t steps, std::int64_t recor
                                           std::size_t elements, std::size_t wheels) {
   const double records = std::floor(static_cast<double>(steps) / static_cast<double>(record_every)) + 2.0;
   // per record: t, 20 per body (state 13, pivot reaction 3, H_O 3, mass 1), 3 energies, 6 momenta,
-  // 2 per element, 1 per gyrostat wheel
-  const double per_record = 10.0 + 20.0 * static_cast<double>(bodies) + 2.0 * static_cast<double>(elements) +
+  // 2 per element, 1 per gyrostat wheel, 6 impulses
+  const double per_record = 16.0 + 20.0 * static_cast<double>(bodies) + 2.0 * static_cast<double>(elements) +
                             static_cast<double>(wheels);
   check_recording_fits(records * per_record * sizeof(double), steps, record_every);
   SceneSimulation out;
@@ -73,7 +73,7 @@ SceneSimulation reserved_scene_simulation(std::int64_t steps, std::int64_t recor
   out.element_count = static_cast<std::int64_t>(elements);
   const auto n = static_cast<std::size_t>(records);
   for (auto* v : {&out.t, &out.kinetic_energy, &out.potential_energy, &out.total_energy}) v->reserve(n);
-  for (auto* v : {&out.linear_momentum_W, &out.angular_momentum_W}) v->reserve(3 * n);
+  for (auto* v : {&out.linear_momentum_W, &out.angular_momentum_W, &out.impulse_W, &out.angular_impulse_W}) v->reserve(3 * n);
   for (auto* v : {&out.p_W, &out.v_W, &out.w_B, &out.pivot_reaction_W, &out.angular_momentum_O_W}) {
     v->reserve(3 * bodies * n);
   }

@@ -11,10 +11,18 @@
 // and, right after its own, the mass m [kg] of a particle or rigid body with a MassFlow (scene/mass_flow.hpp;
 // tangent ṁ); then t [s] (so that every method evaluates time-dependent forces at its own stage times), then one
 // work slot per element [J] (its work since t0, integrated with the motion: dW_e/dt = P_e), then one mass-flow
-// energy slot per body with a MassFlow, in the scene's order [J] (dE_b/dt = the mass-flow power below).
+// energy slot per body with a MassFlow, in the scene's order [J] (dE_b/dt = the mass-flow power below), then the
+// impulses of all the elements since t0: linear J_W (3) [N s] and angular about W's origin K_W (3) [N m s], with
+//   dJ_W/dt = Σ_b f_b,   dK_W/dt = Σ_b (p_b × f_b + R_WB,b τ_B,b)
+// (the impulse–momentum principle: m v − m v0 = ∫ f dt, H_W − H_W0 = ∫ M_W dt for bodies free of constraints;
+// Rigid-body notes §4.11, f = dp/dt (4.36); Craig, impulse–momentum). They are integrated with the motion
+// exactly as the works are (the same stages, kicks and drifts), so that the momentum balances of the records
+// close to the method's error. Internal elements (mutual gravity, a spring between two bodies) add equal and
+// opposite wrenches: their net impulse is zero.
 // Tangent ξ: per body (particle v_W, a_W; planar the 6 rates; rigid v_W, w_B, a_W, alpha_B; pivoted
 // w_B, alpha_B; pivoted planar ω, α; gyrostat v_W, w_B, a_W, alpha_B, the wheels' accelerations, the motors'
-// powers), then dt/dt = 1, then each element's power [W], then each mass-flow power [W].
+// powers), then dt/dt = 1, then each element's power [W], then each mass-flow power [W], then the resultant force
+// Σ f [N] and moment about W's origin [N m].
 //
 // The work–energy balance with a mass flow. T = ½ m |v|² + ½ ω·I ω changes with the mass as well as with the work:
 // m v̇ = f and I ω̇ + ω × I ω = τ (mass_flow.hpp) give
@@ -164,6 +172,8 @@ class BasicSceneModel {
     for_each_slot([&](const auto& s) { s.rate(y.data(), clock, kinematics_[s.body], wrenches_[s.body], dy.data()); });
     dy[t_y_] = 1.0;
     for (std::size_t e = 0; e < terms_.size(); ++e) dy[t_y_ + 1 + e] = power_[e];
+    dy.segment<6>(t_y_ + impulse_offset()).setZero();
+    add_impulses(dy.data() + t_y_ + impulse_offset(), 1.0);
   }
 
   // every attitude q ← q / |q|
@@ -179,6 +189,8 @@ class BasicSceneModel {
     for_each_slot([&](const auto& s) { s.velocity(y.data(), clock, kinematics_[s.body], wrenches_[s.body], xi.data()); });
     xi[t_xi_] = 1.0;
     for (std::size_t e = 0; e < terms_.size(); ++e) xi[t_xi_ + 1 + e] = power_[e];
+    xi.segment<6>(t_xi_ + impulse_offset()).setZero();
+    add_impulses(xi.data() + t_xi_ + impulse_offset(), 1.0);
   }
 
   // y ⊕ Θ: vector parts added, q ← q ⊗ exp(Θ_rot) for each attitude
@@ -207,11 +219,12 @@ class BasicSceneModel {
     kick_with(y, h, [](const auto& euler, const auto& w, const auto& tau, double k) { return euler.implicit_gyroscopic_kick(w, tau, k); });
   }
 
-  // work_e += h P_e at y; then p += h v, q ← q ⊗ exp(h ω_B) (exact for constant ω), θ += h ω, m += h ṁ (and
+  // work_e += h P_e and the impulses += h (Σ f, Σ M) at y; then p += h v, q ← q ⊗ exp(h ω_B) (exact for constant ω), θ += h ω, m += h ṁ (and
   // E_b with it: advance_masses), t += h
   void drift(Coordinates& y, double h) const {
     evaluate(y);
     for (std::size_t e = 0; e < terms_.size(); ++e) y[t_y_ + 1 + e] += h * power_[e];
+    add_impulses(y.data() + t_y_ + impulse_offset(), h);
     for_each_slot([&](const auto& s) {
       s.translate(y.data(), h);
       s.turn(y.data(), h);
@@ -225,7 +238,7 @@ class BasicSceneModel {
   // The exact flow of the loads part over h [s] (model_interface.hpp): the wrenches at y (positions,
   // attitudes, velocities and t as they are), v += h f/m, ω += h I⁻¹ τ (no gyroscopic term) and each
   // element's work += h Σ_b (f_eb·v̄_b + τ_eb·ω̄_b) with the mean velocities v̄ = v + Δv/2 (exact: the
-  // velocities are linear in time in this flow). In a turning frame (a CoriolisTerm) the Coriolis force and
+  // velocities are linear in time in this flow), the impulses += h (Σ f, Σ M) (exact: the wrenches are fixed). In a turning frame (a CoriolisTerm) the Coriolis force and
   // torque are linear in the velocities, so each velocity follows u̇ = a0 + M (u − u0) (a0 at the start, M u
   // the Coriolis part: M v = −2 Ω × v for a centre of mass, M ω = I⁻¹ (s × ω) for an attitude): its exact
   // flow is taken (so3/coriolis_flow.hpp, kinds/body_slot.hpp VelocityKicks), so the kick stays a flow and the
@@ -306,6 +319,9 @@ class BasicSceneModel {
     out.linear_momentum_W.insert(out.linear_momentum_W.end(), sums.L_W.data(), sums.L_W.data() + 3);
     out.angular_momentum_W.insert(out.angular_momentum_W.end(), sums.H_W.data(), sums.H_W.data() + 3);
     for (std::size_t e = 0; e < terms_.size(); ++e) out.work.push_back(y[t_y_ + 1 + e]);
+    const double* impulses = y.data() + t_y_ + impulse_offset();
+    out.impulse_W.insert(out.impulse_W.end(), impulses, impulses + 3);
+    out.angular_impulse_W.insert(out.angular_impulse_W.end(), impulses + 3, impulses + 6);
     out.power.insert(out.power.end(), power_.begin(), power_.end());
     for_each_slot([&](const auto& s) {
       if constexpr (detail::has_internal_record<std::decay_t<decltype(s)>>::value) s.record_internal(y.data(), out);
@@ -402,6 +418,7 @@ class BasicSceneModel {
     for (const auto& w : element_wrenches_) {
       for (std::size_t b = 0; b < w.size(); ++b) wrenches_[b].f_W += w[b].f_W, wrenches_[b].tau_B += w[b].tau_B;
     }
+    add_impulses(y.data() + t_y_ + impulse_offset(), h);  // at the positions and attitudes the kick keeps
     Eigen::Vector3d w_F = Eigen::Vector3d::Zero();  // the frame's Ω [rad/s] in F
     if constexpr (turning) w_F = coriolis_frame_rate(t);
     const detail::VelocityKicks<turning> kicks(h, w_F, &coriolis_inertia_);
@@ -459,8 +476,21 @@ class BasicSceneModel {
     });
   }
 
-  // How many slots follow t in y (and ξ): the works, then the mass-flow energies
-  Eigen::Index extra_count() const { return static_cast<Eigen::Index>(terms_.size() + energy_body_.size()); }
+  // How many slots follow t in y (and ξ): the works, the mass-flow energies, then the impulses J_W, K_W
+  Eigen::Index extra_count() const { return impulse_offset() - 1 + 6; }
+  // where the impulses J_W (3) then K_W (3) are in y after t (and in ξ after its dt/dt)
+  Eigen::Index impulse_offset() const { return 1 + static_cast<Eigen::Index>(terms_.size() + energy_body_.size()); }
+
+  // out[0..2] += h Σ_b f_b [N], out[3..5] += h Σ_b (p_b × f_b + R_WB,b τ_B,b) [N m] (the moment about W's origin)
+  // of wrenches_ at kinematics_
+  void add_impulses(double* out, double h) const {
+    for (std::size_t b = 0; b < wrenches_.size(); ++b) {
+      const BodyKinematics& k = kinematics_[b];
+      const BodyWrench& w = wrenches_[b];
+      const Eigen::Vector3d M_W = k.p_W.cross(w.f_W) + k.q_WB * w.tau_B;
+      for (int i = 0; i < 3; ++i) out[i] += h * w.f_W[i], out[3 + i] += h * M_W[i];
+    }
+  }
   // where the k-th mass-flow energy is in y
   Eigen::Index energy_y(std::size_t k) const { return t_y_ + 1 + static_cast<Eigen::Index>(terms_.size() + k); }
 

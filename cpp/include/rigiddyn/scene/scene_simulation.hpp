@@ -38,6 +38,10 @@ struct SceneSimulation {
                                           // or brings (0 for a constant mass), so that kinetic_energy − its first
                                           // value = Σ work + Σ mass_flow_energy to the method's error
                                           // (scene_model.hpp); empty when no body has a MassFlow (all 0)
+  std::vector<double> impulse_W;          // (n, 3) the linear impulse Σ ∫ f dt of all the elements since t0 [N s]
+  std::vector<double> angular_impulse_W;  // (n, 3) their angular impulse about W's origin ∫ Σ (p × f + R τ_B) dt
+                                          // [N m s] (scene_model.hpp; empty on the paths that do not integrate
+                                          // them: the one-body path and the specialised models)
   std::vector<double> wheel_speed;        // (n, nw) each gyrostat wheel's speed relative to its body [rad/s], the
                                           // wheels of the gyrostats in the scene's order (empty without one)
   std::vector<double> motor_work;         // (n, nw) each wheel's motor work since t0 [J] (∫ u Ω dt): T − T(0) =

@@ -1,0 +1,267 @@
+"""result.balance, the energy and momentum balance of every run, and the AccuracyWarning when it does not close
+(rigiddyn/_balance.py; the impulses are integrated with the motion in scene/scene_model.hpp).
+
+Residuals (zero for the exact dynamics): r_E = T - T0 - sum W - sum E_mass - sum W_motor, r_P = |P - P0 - J|,
+r_H = |H - H0 - K| (about W's origin for a scene, about the centre of mass for one body).
+"""
+
+import copy
+import pickle
+import warnings
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import rigiddyn as rd
+
+EPS = np.finfo(float).eps
+I_B = np.array([1.0, 2.0, 3.0])
+TUMBLING = [0.1, 1.0, 0.1]  # near the middle axis: |w| ~ 1.01 rad/s
+THREE_BODY = Path(rd.__file__).parent / "scenes" / "three_body.toml"
+
+
+def quiet_simulate(*args, **kwargs):
+    """simulate with the AccuracyWarning recorded instead of raised: (result, the warnings' messages)."""
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", rd.AccuracyWarning)
+        result = rd.simulate(*args, **kwargs)
+    return result, [str(w.message) for w in caught if w.category is rd.AccuracyWarning]
+
+
+# ------------------------------------------------------------------ the residuals against numpy
+
+
+def test_body_energy_residual_is_the_work_energy_balance_of_the_records():
+    """r_E = T - T0 - work exactly (the same floating-point expression: equal to the last bit)."""
+    loads = [rd.AppliedLoad(force=[0.5, 0.0, 0.0], torque=[0.0, 0.0, 0.2], t_start=0.3, t_end=1.1)]
+    r = rd.simulate(rd.RigidBody(2.0, I_B), rd.RigidBodyState(w_B=TUMBLING, v_W=[0.0, 0.0, 3.0]), 0.01, 200,
+                    loads=loads, gravity=True, error=False)
+    T, W = r.kinetic_energy, r.work
+    np.testing.assert_array_equal(r.balance.energy, T - T[0] - W)
+    assert r.balance.verdict["energy"] == "closed"
+    assert r.balance.verdict["linear_momentum"].startswith("not applicable")  # the loads' impulse: not integrated
+
+
+def test_body_momentum_residuals_against_numpy():
+    """Without loads: r_P = |m v - m v0 - m g (t - t0)|, r_H = |R I w - (R I w)(t0)| (about the centre of mass).
+    The reference is computed here from the records with scipy's rotation; the two agree to the round-off of
+    two evaluations of R I w (~1e-15 |H|)."""
+    from scipy.spatial.transform import Rotation
+
+    m, g = 2.0, np.array([0.0, 0.0, -9.81])
+    r = rd.simulate(rd.RigidBody(m, I_B), rd.RigidBodyState(w_B=TUMBLING, v_W=[1.0, 0.0, 3.0]), 0.05, 100,
+                    gravity=True, error=False)
+    P = m * r.v_W
+    expected_P = np.linalg.norm(P - P[0] - m * np.outer(r.t - r.t[0], g), axis=1)
+    np.testing.assert_allclose(r.balance.linear_momentum, expected_P, rtol=0, atol=1e-13 * m * 10.0)
+    H = Rotation.from_quat(r.q_WB).apply(r.w_B * I_B)
+    expected_H = np.linalg.norm(H - H[0], axis=1)
+    np.testing.assert_allclose(r.balance.angular_momentum, expected_H, rtol=0, atol=1e-14 * np.linalg.norm(H[0]) * 4)
+
+
+def test_scene_residuals_against_numpy():
+    """A particle and a rigid body tossed in uniform gravity: J = M g (t - t0) and K = M (integral of the centre of
+    mass path) x g with the path p0 + v0 s + g s^2/2 (rk4 integrates this quadratic motion and the cubic integral
+    exactly: its residuals are the round-off of the sums, bounded by Balance's round-off bounds)."""
+    scene = rd.Scene(bodies=[rd.Particle(1.5), rd.RigidBody(2.0, I_B)], elements=[rd.UniformGravity()])
+    p0 = np.array([[1.0, 0.0, 0.0], [0.0, 2.0, 1.0]])
+    v0 = np.array([[0.0, 1.0, 4.0], [1.0, 0.0, 2.0]])
+    initial = [rd.ParticleState(p_W=p0[0], v_W=v0[0]), rd.RigidBodyState(p_W=p0[1], v_W=v0[1], w_B=TUMBLING)]
+    r = rd.simulate(scene, initial, 0.01, 150, record_every=10, error=False)
+    b = r.balance
+    m = np.array([1.5, 2.0])
+    g = np.array([0.0, 0.0, -9.81])
+    s = (r.t - r.t[0])[:, None]
+    J = m.sum() * s * g
+    first = (m[:, None] * p0).sum(axis=0)  # sum m p0
+    moment = (m[:, None] * v0).sum(axis=0)  # sum m v0
+    K = np.cross(first * s + moment * s**2 / 2 + m.sum() * g * s**3 / 6, g)
+    P, H = r.linear_momentum_W, r.angular_momentum_W
+    expected_P = np.linalg.norm(P - P[0] - J, axis=1)
+    expected_H = np.linalg.norm(H - H[0] - K, axis=1)
+    assert np.all(np.abs(b.linear_momentum - expected_P) <= 2 * b.linear_momentum_round_off + 1e-14)
+    assert np.all(np.abs(b.angular_momentum - expected_H) <= 2 * b.angular_momentum_round_off + 1e-13)
+    np.testing.assert_array_equal(b.energy, r.kinetic_energy - r.kinetic_energy[0] - r.work.sum(axis=1))
+    assert b.about == "W's origin"
+
+
+# ------------------------------------------------------------------ round-off for the structure-preserving methods
+
+
+def test_exact_method_balances_at_round_off():
+    r = rd.simulate(rd.RigidBody(1.0, I_B), rd.RigidBodyState(w_B=TUMBLING), 0.1, 500, method="exact", error=False)
+    b = r.balance
+    assert np.all(np.abs(b.energy) <= b.energy_round_off)
+    assert np.all(b.angular_momentum <= b.angular_momentum_round_off)
+    assert np.all(b.linear_momentum == 0.0)
+
+
+def test_splitting_dlm_keeps_the_angular_momentum_at_round_off():
+    """The DLM free rotation keeps H_W = R I w exactly (up to the round-off of its solve): the balance of H closes
+    to the round-off bound (8 eps |H| per step) at a step where the energy does not."""
+    r = rd.simulate(rd.RigidBody(1.0, I_B), rd.RigidBodyState(w_B=TUMBLING), 0.2, 500, method="splitting_dlm",
+                    error=False)
+    b = r.balance
+    assert np.all(b.angular_momentum <= b.angular_momentum_round_off)
+
+
+# ------------------------------------------------------------------ convergence at the method's order
+
+
+def non_conservative_scene():
+    """A rigid body and a particle under gravity, drag and scheduled loads switching inside the run."""
+    loads = [rd.AppliedLoad(force=[1.0, 0.0, 0.5], torque=[0.0, 0.3, 0.1], frame="body", t_start=0.25, t_end=0.75)]
+    scene = rd.Scene(bodies=[rd.RigidBody(2.0, I_B), rd.Particle(1.0)],
+                     elements=[rd.UniformGravity(), rd.Drag(linear=0.3, quadratic=0.1, angular_linear=0.2),
+                               rd.ScheduledLoads(body=0, loads=loads)])
+    initial = [rd.RigidBodyState(v_W=[1.0, 0.0, 2.0], w_B=[0.3, 2.0, 0.2]), rd.ParticleState(v_W=[0.0, 1.0, 3.0])]
+    return scene, initial
+
+
+# (method, order, the balances it keeps exactly): a Runge-Kutta method keeps the linear invariant P - J of the
+# augmented system (Hairer, Lubich, Wanner, linear invariants); the splittings' kicks add exactly the impulse they
+# integrate and their free flow keeps P and H; implicit midpoint's work is exactly the change of T (its mean
+# velocity is the midpoint's)
+CONVERGENCE = [("rk4", 4, ("linear_momentum",)), ("rkmk4", 4, ("linear_momentum",)),
+               ("splitting_dlm", 2, ("linear_momentum", "angular_momentum")),
+               ("implicit_midpoint", 2, ("linear_momentum", "energy"))]
+
+
+@pytest.mark.filterwarnings("ignore::rigiddyn.SceneCompatibilityWarning")  # drag under a splitting: expected
+@pytest.mark.parametrize("method, order, exact", CONVERGENCE, ids=[c[0] for c in CONVERGENCE])
+def test_residuals_converge_at_the_methods_order(method, order, exact):
+    """Halving dt divides the final residual by 2^p: the ratio lies in [2^p / 1.5, 2^p * 1.5], the window of the
+    global error estimate's order check (GlobalError), with both residuals 100x above their round-off bound; the
+    balances a method keeps exactly stay within their round-off bound."""
+    scene, initial = non_conservative_scene()
+    final = {}
+    for dt in (0.05, 0.025):
+        final[dt] = rd.simulate(scene, initial, dt, duration=1.0, method=method, error=False).balance
+    for q in ("energy", "linear_momentum", "angular_momentum"):
+        coarse, fine = (abs(getattr(final[dt], q)[-1]) for dt in (0.05, 0.025))
+        if q in exact:
+            assert fine <= getattr(final[0.025], q + "_round_off")[-1], (q, fine)
+            continue
+        assert fine > 100 * getattr(final[0.025], q + "_round_off")[-1], (q, fine)
+        assert 2**order / 1.5 <= coarse / fine <= 2**order * 1.5, (q, coarse / fine)
+
+
+def test_thrust_energy_balance_converges():
+    """A particle losing mass with a thrust: r_E holds the mass-flow energy; it converges at rk4's order 4 (window as
+    above); the momentum balances do not apply (the mass flow carries momentum)."""
+    scene = rd.Scene(bodies=[rd.Particle(10.0)], elements=[rd.UniformGravity(), rd.Thrust(0, [0.0, 0.0, 50.0], "world"),
+                                                           rd.Drag(linear=0.5, quadratic=0.05)],
+                     mass_flows=[rd.MassFlow(rate=-1.0)])
+    initial = [rd.ParticleState(v_W=[1.0, 0.0, 0.0])]
+    ends = []
+    for dt in (0.02, 0.01):
+        r = rd.simulate(scene, initial, dt, duration=2.0, error=False)
+        ends.append(abs(r.balance.energy[-1]))
+        assert r.balance.verdict["linear_momentum"].startswith("not applicable: a mass flow")
+    assert 16 / 1.5 <= ends[0] / ends[1] <= 16 * 1.5, ends
+
+
+# ------------------------------------------------------------------ the warning
+
+
+def test_rk4_tumbling_at_a_coarse_step_warns():
+    """rk4 at dt |w| = 2 near the middle axis loses ~1/3 of the energy and ~1/5 of |L| (without an estimate)."""
+    w = np.array(TUMBLING)
+    dt = 2.0 / np.linalg.norm(w)
+    r, messages = quiet_simulate(rd.RigidBody(1.0, I_B), rd.RigidBodyState(w_B=w), dt, 120, error=False)
+    T, L = r.kinetic_energy, r.angular_momentum_norm
+    assert 1 - T[-1] / T[0] > 0.3 and 1 - L[-1] / L[0] > 0.15  # the silent failure: 34 % of T, 19 % of |L| lost
+    assert len(messages) == 1
+    assert "energy balance is off" in messages[0] and "angular momentum balance is off" in messages[0]
+    assert "smaller dt" in messages[0]
+    assert r.balance.verdict["energy"].startswith("open") and r.balance.verdict["angular_momentum"].startswith("open")
+    # with the estimate (error=True) the verdict is not reliable there, so the same level decides: it warns too
+    with pytest.warns(rd.AccuracyWarning, match="balance is off"):
+        rd.simulate(rd.RigidBody(1.0, I_B), rd.RigidBodyState(w_B=w), dt, 120)
+
+
+def close_encounter():
+    """The figure-eight scene with a mistaken initial condition: the velocities a tenth of the orbit's (a unit slip),
+    so the three fall towards each other into close encounters that rk4 at the orbit's dt does not resolve."""
+    scene, initial, run = rd.load_scene(THREE_BODY)
+    slow = [rd.ParticleState(p_W=s.p_W, v_W=0.1 * np.asarray(s.v_W)) for s in initial]
+    return scene, slow, run
+
+
+def test_three_body_close_encounter_warns():
+    scene, initial, run = close_encounter()
+    r, messages = quiet_simulate(scene, initial, run.dt, duration=run.duration, record_every=run.record_every,
+                                 error=False)
+    E = r.total_energy
+    relative = np.max(np.abs(E - E[0])) / abs(E[0])
+    assert relative > 5.0  # the silent failure: the energy is off by several times itself (31x)
+    assert len(messages) == 1 and "energy balance is off" in messages[0]
+
+
+def test_a_well_resolved_run_does_not_warn():
+    scene, initial, run = rd.load_scene(THREE_BODY)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", rd.AccuracyWarning)
+        r = rd.simulate(scene, initial, run.dt, duration=run.duration, record_every=run.record_every)
+        body = rd.simulate(rd.RigidBody(1.0, I_B), rd.RigidBodyState(w_B=TUMBLING), 0.01, 2000)
+    assert all(v == "closed" for v in r.balance.verdict.values())
+    assert body.balance.verdict["energy"] == "closed"
+
+
+def test_accuracy_level_none_silences_and_a_level_decides():
+    w = np.array(TUMBLING)
+    dt = 2.0 / np.linalg.norm(w)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", rd.AccuracyWarning)
+        r = rd.simulate(rd.RigidBody(1.0, I_B), rd.RigidBodyState(w_B=w), dt, 20, error=False, accuracy_level=None)
+        rd.simulate(rd.RigidBody(1.0, I_B), rd.RigidBodyState(w_B=w), dt, 20, error=False, accuracy_level=0.9)
+    assert r.balance.verdict["energy"].startswith("open")  # the verdict is kept
+
+
+@pytest.mark.parametrize("bad", [0.0, -1e-3, float("nan"), float("inf"), "1e-3", True])
+def test_bad_accuracy_level_names_the_value(bad):
+    with pytest.raises((ValueError, TypeError), match="accuracy_level"):
+        rd.simulate(rd.Particle(1.0), rd.ParticleState(), 0.1, 2, accuracy_level=bad)
+
+
+# ------------------------------------------------------------------ the class
+
+
+def test_balance_pickles_with_its_result():
+    r = rd.simulate(rd.RigidBody(1.0, I_B), rd.RigidBodyState(w_B=TUMBLING), 0.1, 20)
+    for obj in (r.balance, r):
+        back = pickle.loads(pickle.dumps(obj))
+        b = back if isinstance(back, rd.Balance) else back.balance
+        assert b == r.balance
+    scene, initial = non_conservative_scene()
+    s = rd.simulate(scene, initial, 0.01, 20, error=False)
+    assert pickle.loads(pickle.dumps(s)).balance == s.balance
+    assert copy.deepcopy(s.balance) == s.balance
+
+
+def test_balance_summary_and_repr():
+    r = rd.simulate(rd.Particle(1.0), rd.ParticleState(v_W=[1.0, 0.0, 0.0]), 0.1, 10, gravity=True, error=False)
+    b = r.balance
+    assert repr(b).startswith("Balance(records=11, energy=")
+    assert b.summary().splitlines()[0].startswith("energy: max |residual|")
+    assert "not applicable" in b.summary().splitlines()[2]
+    assert set(b.max()) == {"energy", "linear_momentum", "angular_momentum"}
+
+
+def test_balance_arrays_are_read_only():
+    b = rd.simulate(rd.Particle(1.0), rd.ParticleState(), 0.1, 3, error=False).balance
+    with pytest.raises(ValueError):
+        b.energy[0] = 1.0
+
+
+@pytest.mark.parametrize("field, value", [("energy", np.zeros((2, 2))), ("verdict", {"energy": "closed"})])
+def test_balance_refuses_bad_fields(field, value):
+    args = dict(energy=np.zeros(2), linear_momentum=np.zeros(2), angular_momentum=np.zeros(2),
+                energy_round_off=np.zeros(2), linear_momentum_round_off=np.zeros(2),
+                angular_momentum_round_off=np.zeros(2), energy_scale=np.ones(2), linear_momentum_scale=np.ones(2),
+                angular_momentum_scale=np.ones(2),
+                verdict={"energy": "closed", "linear_momentum": "closed", "angular_momentum": "closed"}, about="x")
+    args[field] = value
+    with pytest.raises((TypeError, ValueError), match=f"^{field}: expected"):
+        rd.Balance(**args)
