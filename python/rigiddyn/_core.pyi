@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['AppliedLoad', 'BatchResult', 'BatchSceneResult', 'BodyAcceleration', 'ComWrench', 'CompiledScene', 'CompoundPendulumSolution', 'ConstantThrustSolution', 'DensityIntegral', 'Drag', 'ElementField', 'FORCE_ELEMENTS', 'FixedJoint', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'FreeJoint', 'GlobalError', 'GravityGradient', 'Gyrostat', 'GyrostatState', 'InertiaCheck', 'InertiaReport', 'KineticEnergy', 'LagrangeTopSolution', 'MagneticDipole', 'MassFlow', 'MeshWeldWarning', 'Motion', 'MutualGravity', 'Particle', 'ParticleState', 'PivotedAcceleration', 'PivotedBody', 'PivotedBodyState', 'PivotedPlanarAcceleration', 'PivotedPlanarBody', 'PivotedPlanarBodyState', 'PivotedPlanarTorque', 'PivotedTorque', 'PlanarAcceleration', 'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointMassGravity', 'PointVelocity', 'PrincipalAxes', 'PrismaticJoint', 'PythonForce', 'ReactionWheel', 'RevoluteJoint', 'RigidBody', 'RigidBodyState', 'RotatingFrameFreeParticle', 'Scene', 'SceneCompatibilityWarning', 'SceneFrame', 'SceneResult', 'ScheduledLoads', 'Screw', 'SimulationResult', 'SpatialInertia', 'SphericalJoint', 'SpringDamper', 'Thrust', 'TorqueFreeSolution', 'Transform', 'Tree', 'UniformGravity', 'WeldedMesh', 'Wheel', 'aba', 'align_vectors', 'angular_distance', 'angular_momentum', 'angular_velocity_from_quat_rate', 'apply_impulse', 'attitude_from_orbit_frame', 'attitude_to_orbit_frame', 'axis_angle_to_quat', 'bias_forces', 'box_shell', 'compose_kinematics', 'composite', 'crba', 'davenport_to_quat', 'default_thread_count', 'eccentric_to_mean_anomaly', 'eccentric_to_true_anomaly', 'elements_to_state', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'forward_kinematics', 'from_point_masses', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kepler_propagate', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mean_to_eccentric_anomaly', 'mean_to_true_anomaly', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation', 'nearest_valid_inertia', 'orbit_frame_angular_velocity', 'orbit_frame_rotation', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix', 'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh', 'rnea', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'semi_latus_rectum', 'simulate', 'simulate_batch', 'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'state_to_elements', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'true_to_eccentric_anomaly', 'true_to_mean_anomaly', 'twist_to_screw', 'vee', 'weld_vertices']
+__all__: list[str] = ['AppliedLoad', 'AtmosphericDrag', 'BatchResult', 'BatchSceneResult', 'BodyAcceleration', 'ComWrench', 'CompiledScene', 'CompoundPendulumSolution', 'ConstantThrustSolution', 'DensityIntegral', 'Drag', 'ElementField', 'FORCE_ELEMENTS', 'FixedJoint', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'FreeJoint', 'GlobalError', 'GravityGradient', 'Gyrostat', 'GyrostatState', 'InertiaCheck', 'InertiaReport', 'KineticEnergy', 'LagrangeTopSolution', 'MagneticDipole', 'MassFlow', 'MeshWeldWarning', 'Motion', 'MutualGravity', 'Particle', 'ParticleState', 'PivotedAcceleration', 'PivotedBody', 'PivotedBodyState', 'PivotedPlanarAcceleration', 'PivotedPlanarBody', 'PivotedPlanarBodyState', 'PivotedPlanarTorque', 'PivotedTorque', 'PlanarAcceleration', 'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointMassGravity', 'PointVelocity', 'PrincipalAxes', 'PrismaticJoint', 'PythonForce', 'ReactionWheel', 'RevoluteJoint', 'RigidBody', 'RigidBodyState', 'RotatingFrameFreeParticle', 'Scene', 'SceneCompatibilityWarning', 'SceneFrame', 'SceneResult', 'ScheduledLoads', 'Screw', 'SimulationResult', 'SolarRadiationPressure', 'SpatialInertia', 'SphericalJoint', 'SpringDamper', 'Thrust', 'TorqueFreeSolution', 'Transform', 'Tree', 'UniformGravity', 'WeldedMesh', 'Wheel', 'ZonalGravity', 'aba', 'align_vectors', 'angular_distance', 'angular_momentum', 'angular_velocity_from_quat_rate', 'apply_impulse', 'attitude_from_orbit_frame', 'attitude_to_orbit_frame', 'axis_angle_to_quat', 'bias_forces', 'box_shell', 'compose_kinematics', 'composite', 'crba', 'davenport_to_quat', 'default_thread_count', 'eccentric_to_mean_anomaly', 'eccentric_to_true_anomaly', 'elements_to_state', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'forward_kinematics', 'from_point_masses', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kepler_propagate', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mean_to_eccentric_anomaly', 'mean_to_true_anomaly', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation', 'nearest_valid_inertia', 'orbit_frame_angular_velocity', 'orbit_frame_rotation', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix', 'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh', 'rnea', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'semi_latus_rectum', 'simulate', 'simulate_batch', 'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'state_to_elements', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'true_to_eccentric_anomaly', 'true_to_mean_anomaly', 'twist_to_screw', 'vee', 'weld_vertices']
 class _Quantity(typing.Protocol):
     """A pint Quantity of any registry (the core converts it to SI by its magnitude and units)."""
     @property
@@ -4429,6 +4429,306 @@ class ReactionWheel:
         """
         the start of the ramp [s]
         """
+class ZonalGravity:
+    """
+    An oblate central body (the Earth) fixed at p_W with its pole along pole_W: on each listed body the force f_W = -m grad U of the zonal field U = -gm/r + sum_{n=2..4} gm j_n radius^n P_n(u)/r^(n+1), r = |p_body - p_W|, u the sine of the latitude (P_n the Legendre polynomials), potential V = m U [J]. j2 alone makes a near-circular orbit's node regress at -(3/2) n j2 (radius/p)^2 cos i. No torque about the centre of mass (the zonal terms' gravity-gradient torque is j_n (radius/r)^n of GravityGradient's).
+    
+    Parameters
+    ----------
+    gm : float [m^3/s^2], required
+        gravitational parameter GM of the central body [m^3/s^2]
+    radius : float [m], required
+        reference (equatorial) radius R of the harmonics [m]
+    j2 : float, default 0.0
+        zonal coefficient J2 (the Earth's: 1.08262668e-3)
+    j3 : float, default 0.0
+        zonal coefficient J3 (the Earth's: -2.53265649e-6)
+    j4 : float, default 0.0
+        zonal coefficient J4 (the Earth's: -1.61962159e-6)
+    p_W : array_like, shape (3,) [m], default (0.0, 0.0, 0.0)
+        (3,) position of the central body's centre in W [m]
+    pole_W : array_like, shape (3,), default (0.0, 0.0, 1.0)
+        (3,) direction of its pole (symmetry) axis in W, any length
+    bodies : sequence of int or None, default None
+        None (every body) or a tuple of the indices of the bodies it acts on
+    
+    Each argument with a unit takes a float in that unit or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
+    
+    Examples
+    --------
+    At a point of the equator 7000 km from the Earth's centre, J2 pulls harder than gm/r^2 by (3/2) J2 (R/r)^2:
+    
+    >>> earth = rd.ZonalGravity(gm=3.986004418e14, radius=6378137.0, j2=1.08262668e-3)
+    >>> at_rest = rd.ParticleState(p_W=(7e6, 0.0, 0.0))
+    >>> result = rd.simulate(rd.Scene([rd.Particle(1.0)], elements=[earth]), [at_rest], 1e-3, steps=1, method="rk4")
+    >>> a_x = result.v_W[-1, 0, 0] / 1e-3  # from rest: v = a dt
+    >>> expected = -3.986004418e14 / 7e6**2 * (1 + 1.5 * 1.08262668e-3 * (6378137.0 / 7e6) ** 2)
+    >>> bool(abs(a_x / expected - 1) < 1e-12)
+    True
+    """
+    __hash__: typing.ClassVar[None] = None
+    fields: typing.ClassVar[tuple]
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, *, gm: float, radius: float, j2: float = 0.0, j3: float = 0.0, j4: float = 0.0, p_W: numpy.typing.ArrayLike = (0.0, 0.0, 0.0), pole_W: numpy.typing.ArrayLike = (0.0, 0.0, 1.0), bodies: collections.abc.Sequence[int] | None = None) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def bodies(self) -> typing.Any:
+        """
+        None (every body) or a tuple of the indices of the bodies it acts on
+        """
+    @property
+    def gm(self) -> typing.Any:
+        """
+        gravitational parameter GM of the central body [m^3/s^2]
+        """
+    @property
+    def j2(self) -> typing.Any:
+        """
+        zonal coefficient J2 (the Earth's: 1.08262668e-3)
+        """
+    @property
+    def j3(self) -> typing.Any:
+        """
+        zonal coefficient J3 (the Earth's: -2.53265649e-6)
+        """
+    @property
+    def j4(self) -> typing.Any:
+        """
+        zonal coefficient J4 (the Earth's: -1.61962159e-6)
+        """
+    @property
+    def p_W(self) -> typing.Any:
+        """
+        (3,) position of the central body's centre in W [m]
+        """
+    @property
+    def pole_W(self) -> typing.Any:
+        """
+        (3,) direction of its pole (symmetry) axis in W, any length
+        """
+    @property
+    def radius(self) -> typing.Any:
+        """
+        reference (equatorial) radius R of the harmonics [m]
+        """
+class AtmosphericDrag:
+    """
+    Drag of an exponential atmosphere turning with its planet: on each listed body f_W = -(1/2) rho drag_area |v_rel| v_rel [N] at its centre of pressure cp_B, v_rel = v_W - omega_W x r, rho = density0 exp(-(h - altitude0)/scale_height), r = p_body - p_W, h = |r| - radius; torque tau_B = cp_B x f_B [N m]. drag_area is C_D A [m^2] (the ballistic coefficient is m/(C_D A)). No potential: it dissipates. A circular orbit decays at da/dt = -rho (drag_area/m) sqrt(gm a).
+    
+    Parameters
+    ----------
+    density0 : float [kg/m^3], required
+        air density at altitude0 [kg/m^3]
+    altitude0 : float [m], default 0.0
+        reference altitude of density0 [m]
+    scale_height : float [m], required
+        scale height H of the density [m]
+    radius : float [m], required
+        radius of the central body (altitude 0) [m]
+    p_W : array_like, shape (3,) [m], default (0.0, 0.0, 0.0)
+        (3,) centre of the central body in W [m]
+    omega_W : array_like, shape (3,) [rad/s], default (0.0, 0.0, 0.0)
+        (3,) angular velocity of the atmosphere in W [rad/s] (the planet's rotation; zero: still air)
+    drag_area : float [m^2], required
+        drag coefficient times area C_D A of each body [m^2]
+    cp_B : array_like, shape (3,) [m], default (0.0, 0.0, 0.0)
+        (3,) centre of pressure in each body's B, from its centre of mass [m] (zero on a particle)
+    bodies : sequence of int or None, default None
+        None (every body) or a tuple of the indices of the bodies it acts on
+    
+    Each argument with a unit takes a float in that unit or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
+    
+    Examples
+    --------
+    A body 400 km up at 7670 m/s in still air of 3e-12 kg/m^3 loses energy at (1/2) rho (C_D A) v^3:
+    
+    >>> air = rd.AtmosphericDrag(density0=3e-12, altitude0=400e3, scale_height=60e3, radius=6378137.0,
+    ...                          drag_area=2.2 * 4.0)
+    >>> start = rd.ParticleState(p_W=(6778137.0, 0.0, 0.0), v_W=(0.0, 7670.0, 0.0))
+    >>> result = rd.simulate(rd.Scene([rd.Particle(500.0)], elements=[air]), [start], 0.01, steps=1, method="rk4")
+    >>> expected = -0.5 * 3e-12 * 8.8 * 7670.0**3 * 0.01  # the work of one step of 0.01 s [J]
+    >>> bool(abs(result.work[-1, 0] / expected - 1) < 1e-6)
+    True
+    """
+    __hash__: typing.ClassVar[None] = None
+    fields: typing.ClassVar[tuple]
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, *, density0: float, altitude0: float = 0.0, scale_height: float, radius: float, p_W: numpy.typing.ArrayLike = (0.0, 0.0, 0.0), omega_W: numpy.typing.ArrayLike = (0.0, 0.0, 0.0), drag_area: float, cp_B: numpy.typing.ArrayLike = (0.0, 0.0, 0.0), bodies: collections.abc.Sequence[int] | None = None) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def altitude0(self) -> typing.Any:
+        """
+        reference altitude of density0 [m]
+        """
+    @property
+    def bodies(self) -> typing.Any:
+        """
+        None (every body) or a tuple of the indices of the bodies it acts on
+        """
+    @property
+    def cp_B(self) -> typing.Any:
+        """
+        (3,) centre of pressure in each body's B, from its centre of mass [m] (zero on a particle)
+        """
+    @property
+    def density0(self) -> typing.Any:
+        """
+        air density at altitude0 [kg/m^3]
+        """
+    @property
+    def drag_area(self) -> typing.Any:
+        """
+        drag coefficient times area C_D A of each body [m^2]
+        """
+    @property
+    def omega_W(self) -> typing.Any:
+        """
+        (3,) angular velocity of the atmosphere in W [rad/s] (the planet's rotation; zero: still air)
+        """
+    @property
+    def p_W(self) -> typing.Any:
+        """
+        (3,) centre of the central body in W [m]
+        """
+    @property
+    def radius(self) -> typing.Any:
+        """
+        radius of the central body (altitude 0) [m]
+        """
+    @property
+    def scale_height(self) -> typing.Any:
+        """
+        scale height H of the density [m]
+        """
+class SolarRadiationPressure:
+    """
+    Solar radiation pressure on each listed body, at its centre of pressure cp_B: a cannonball (normal_B zero) f_W = -pressure reflectivity area s, or a flat plate of normal n = R_WB normal_B lit on its normal's side, f_W = -pressure area cos(t) [(1 - specular) s + 2 (specular cos(t) + diffuse/3) n], cos(t) = n . s > 0; torque tau_B = cp_B x f_B. s is the unit direction towards the Sun, sun_W at t = 0 turned at sun_rate_W [rad/s]; none inside the cylindrical shadow of a planet of shadow_radius at shadow_p_W. No potential.
+    
+    Parameters
+    ----------
+    sun_W : array_like, shape (3,), required
+        (3,) direction towards the Sun in W at t = 0, any length
+    sun_rate_W : array_like, shape (3,) [rad/s], default (0.0, 0.0, 0.0)
+        (3,) angular velocity at which the Sun's direction turns, in W [rad/s] (zero: fixed)
+    pressure : float [N/m^2], default 4.56e-06
+        radiation pressure P [N/m^2] (4.56e-6: the Sun's at 1 au)
+    area : float [m^2], required
+        lit area A of each body [m^2]
+    reflectivity : float, default 1.0
+        cannonball coefficient C_R (1: absorbed, 2: mirrored back)
+    normal_B : array_like, shape (3,), default (0.0, 0.0, 0.0)
+        (3,) a flat plate's normal in B, any length (zero: a cannonball)
+    specular : float, default 0.0
+        a flat plate's specular reflectivity
+    diffuse : float, default 0.0
+        a flat plate's diffuse reflectivity
+    cp_B : array_like, shape (3,) [m], default (0.0, 0.0, 0.0)
+        (3,) centre of pressure in B, from the centre of mass [m]
+    shadow_radius : float [m], default 0.0
+        radius of the planet casting a cylindrical shadow [m] (0: none)
+    shadow_p_W : array_like, shape (3,) [m], default (0.0, 0.0, 0.0)
+        (3,) centre of that planet in W [m]
+    bodies : sequence of int or None, default None
+        None (every body) or a tuple of the indices of the bodies it acts on
+    
+    Each argument with a unit takes a float in that unit or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
+    
+    Examples
+    --------
+    A 4 m^2 cannonball of reflectivity 1.3 at 1 au is pushed away from the Sun by 4.56e-6 * 1.3 * 4 N:
+    
+    >>> srp = rd.SolarRadiationPressure(sun_W=(1.0, 0.0, 0.0), area=4.0, reflectivity=1.3)
+    >>> result = rd.simulate(rd.Scene([rd.Particle(100.0)], elements=[srp]), [rd.ParticleState()], 1.0, steps=1,
+    ...                      method="rk4")
+    >>> bool(np.allclose(result.v_W[-1, 0] * 100.0, [-4.56e-6 * 1.3 * 4.0, 0.0, 0.0], rtol=1e-12, atol=0))
+    True
+    """
+    __hash__: typing.ClassVar[None] = None
+    fields: typing.ClassVar[tuple]
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, *, sun_W: numpy.typing.ArrayLike, sun_rate_W: numpy.typing.ArrayLike = (0.0, 0.0, 0.0), pressure: float = 4.56e-06, area: float, reflectivity: float = 1.0, normal_B: numpy.typing.ArrayLike = (0.0, 0.0, 0.0), specular: float = 0.0, diffuse: float = 0.0, cp_B: numpy.typing.ArrayLike = (0.0, 0.0, 0.0), shadow_radius: float = 0.0, shadow_p_W: numpy.typing.ArrayLike = (0.0, 0.0, 0.0), bodies: collections.abc.Sequence[int] | None = None) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def area(self) -> typing.Any:
+        """
+        lit area A of each body [m^2]
+        """
+    @property
+    def bodies(self) -> typing.Any:
+        """
+        None (every body) or a tuple of the indices of the bodies it acts on
+        """
+    @property
+    def cp_B(self) -> typing.Any:
+        """
+        (3,) centre of pressure in B, from the centre of mass [m]
+        """
+    @property
+    def diffuse(self) -> typing.Any:
+        """
+        a flat plate's diffuse reflectivity
+        """
+    @property
+    def normal_B(self) -> typing.Any:
+        """
+        (3,) a flat plate's normal in B, any length (zero: a cannonball)
+        """
+    @property
+    def pressure(self) -> typing.Any:
+        """
+        radiation pressure P [N/m^2] (4.56e-6: the Sun's at 1 au)
+        """
+    @property
+    def reflectivity(self) -> typing.Any:
+        """
+        cannonball coefficient C_R (1: absorbed, 2: mirrored back)
+        """
+    @property
+    def shadow_p_W(self) -> typing.Any:
+        """
+        (3,) centre of that planet in W [m]
+        """
+    @property
+    def shadow_radius(self) -> typing.Any:
+        """
+        radius of the planet casting a cylindrical shadow [m] (0: none)
+        """
+    @property
+    def specular(self) -> typing.Any:
+        """
+        a flat plate's specular reflectivity
+        """
+    @property
+    def sun_W(self) -> typing.Any:
+        """
+        (3,) direction towards the Sun in W at t = 0, any length
+        """
+    @property
+    def sun_rate_W(self) -> typing.Any:
+        """
+        (3,) angular velocity at which the Sun's direction turns, in W [rad/s] (zero: fixed)
+        """
 class SceneFrame:
     """
     The frame F a scene's states are relative to, moving relative to the inertial frame W.
@@ -5052,13 +5352,19 @@ class GlobalError:
         eps ~ d(y_dt, y_2dt) / (2^p - 1),   r = d(y_2dt, y_4dt) / d(y_dt, y_2dt) ~ 2^p.
     
     The distance d is the geodesic angle between attitudes [rad] (angular_distance) and the norm of the difference for
-    the other quantities. The estimate is called reliable only where the observed ratio r of every quantity lies in
-    [2^p / 1.5, 2^p * 1.5]; elsewhere the verdict names the reason ("not asymptotic: observed order 1.3 where 4 is
-    expected (attitude)", "the 4h run diverged") and the number is only indicative. A ratio above the window is
-    flagged too: it is what an error hidden from all three runs alike looks like, although it is also what a conserved
-    quantity whose error falls faster than dt^p shows (rk4's energy at a coarse step). Where d is below the round-off
-    bound of the run (8 eps_machine per step, relative) the estimate is that bound, with the verdict "reliable"; the
-    method 'exact' reports the round-off bound alone (order 0).
+    the other quantities. The estimate is called reliable only where the observed ratio r of every state quantity
+    (attitude, angular velocity, position, velocity: each checked over the bodies together) lies in
+    [2^p / 1.5, 2^p * 1.5], and that of the energy and |L| in [2^p / 1.5, 2^(p+1) * 1.5] (the error of an invariant may
+    fall one order faster than dt^p, e.g. rk4's energy on a linear problem: above 2^p * 1.5 its estimate takes the
+    observed order, d / (r - 1)). Elsewhere the verdict names the reason and the number is only indicative:
+    "not asymptotic: observed order 1.3 where 4 is expected (attitude)"; "step beyond the stability limit: ..." (a run
+    at 2 dt or 4 dt diverged, or its energy departed by more than |T| + |V|); "past the Lyapunov time of this scene:
+    ..." (the estimates grew more than 1000 (t / t_k)^4 from an earlier record: nearby trajectories diverge
+    exponentially, and the differences leave the linear regime). A ratio above the window is flagged too: it is what an
+    error hidden from all three runs alike looks like. Where d is below the round-off bound of the run (8 eps_machine
+    per step, relative to the quantity's size; for |L| the size of its terms) the estimate is that bound, with the
+    verdict "reliable"; the method 'exact' reports the round-off bound alone (order 0). Measured against exact
+    references (docs/accuracy.md): the reliable estimates lie within a factor 2 of the true error.
     
     p is the order the run has, not always the method's: a scene whose velocity-dependent element (drag, a damper, a
     PythonForce) meets a kick-based splitting runs at order 1.
@@ -5073,14 +5379,17 @@ class GlobalError:
     step (an `if t > t_s`) costs every method its order there, and the runs at dt, 2dt and 4dt can take the switch in
     the same step, so that its error cancels in their differences while the order check passes.
     
+    simulate_batch gives one GlobalError for the whole batch (BatchResult.error): every array with a leading sample
+    axis, the verdict a tuple per sample; sample i's (result[i].error) is the one simulate gives for that sample alone.
+    
     Parameters
     ----------
     None
-        Made by simulate; it has no public constructor.
+        Made by simulate and simulate_batch; it has no public constructor.
     
     See Also
     --------
-    simulate, SimulationResult, SceneResult, angular_distance
+    simulate, simulate_batch, SimulationResult, SceneResult, angular_distance
     
     Examples
     --------
@@ -5095,12 +5404,13 @@ class GlobalError:
     >>> bool(12 < coarse.attitude[-1] / fine.attitude[-1] < 20)
     True
     
-    explicit_euler at a coarse step is not in its asymptotic regime, and says so (its energy balance is off by two
-    thirds, which simulate reports with an AccuracyWarning: switched off here to show the estimate's own verdict):
+    explicit_euler at a coarse step gains energy at every step (its step is beyond its stability limit), and says so
+    (its energy balance is off too, which simulate reports with an AccuracyWarning: switched off here to show the
+    estimate's own verdict):
     
     >>> rough = rd.simulate(body, rd.RigidBodyState(w_B=[0.1, 3.0, 0.1]), dt=0.1, steps=100, method="explicit_euler",
     ...                     accuracy_level=None)
-    >>> bool(rough.error.reliable[-1]), rough.error.verdict[-1].startswith("not asymptotic")
+    >>> bool(rough.error.reliable[-1]), rough.error.verdict[-1].startswith("step beyond the stability limit")
     (False, True)
     >>> rough.balance.verdict["energy"].startswith("open")
     True
@@ -5148,27 +5458,27 @@ class GlobalError:
     @property
     def angular_momentum(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        Error of |L| (angular_momentum_norm of a body, |angular_momentum_W| of a scene) [kg m^2/s], shape (n,).
+        Error of |L| (angular_momentum_norm of a body, |angular_momentum_W| of a scene) [kg m^2/s], shape (n,) (a batch's (N, n)).
         """
     @property
     def angular_velocity(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        Error of w_B, the norm [rad/s], shape (n,) ((n, nb) for a scene).
+        Error of w_B, the norm [rad/s], shape (n,) ((n, nb) for a scene; a batch's (N, n) or (N, n, nb)).
         """
     @property
     def attitude(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        Error of q_WB as a rotation angle [rad], shape (n,) ((n, nb) for a scene).
+        Error of q_WB as a rotation angle [rad], shape (n,) ((n, nb) for a scene; a batch's with a leading sample axis, (N, n) or (N, n, nb)).
         """
     @property
     def energy(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        Error of total_energy [J], shape (n,).
+        Error of total_energy [J], shape (n,) (a batch's (N, n)).
         """
     @property
     def observed_order(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        log2 r of the quantity whose ratio r is furthest from 2^p, shape (n,); NaN where every quantity is at round-off level or no estimate was computed.
+        log2 r of the quantity whose ratio r is furthest from 2^p, shape (n,) (a batch's (N, n)); NaN where every quantity is at round-off level or no estimate was computed.
         """
     @property
     def order(self) -> int:
@@ -5178,22 +5488,22 @@ class GlobalError:
     @property
     def position(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        Error of p_W, the norm [m], shape (n,) ((n, nb) for a scene).
+        Error of p_W, the norm [m], shape (n,) ((n, nb) for a scene; a batch's (N, n) or (N, n, nb)).
         """
     @property
     def reliable(self) -> numpy.typing.NDArray[numpy.bool]:
         """
-        verdict == 'reliable', shape (n,) (bool).
+        verdict == 'reliable', shape (n,) (bool; a batch's (N, n)).
         """
     @property
     def velocity(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        Error of v_W, the norm [m/s], shape (n,) ((n, nb) for a scene).
+        Error of v_W, the norm [m/s], shape (n,) ((n, nb) for a scene; a batch's (N, n) or (N, n, nb)).
         """
     @property
     def verdict(self) -> tuple:
         """
-        'reliable' or the reason the estimate is not, per record (a tuple of n str).
+        'reliable' or the reason the estimate is not, per record (a tuple of n str; a batch's: a tuple of N such tuples, one per sample).
         """
 class SimulationResult:
     """
@@ -5393,6 +5703,11 @@ class BatchResult:
         Wall time of the whole batch [s].
         """
     @property
+    def error(self) -> GlobalError | None:
+        """
+        The global error estimate of every record of every sample (GlobalError, arrays (N, n, ...)); None with simulate_batch(..., error=False).
+        """
+    @property
     def filled(self) -> numpy.ndarray:
         """
         Rows filled per sample, shape (N,) (int64): n unless it diverged (its later rows are NaN).
@@ -5530,6 +5845,11 @@ class BatchSceneResult:
     def elements(self) -> tuple:
         """
         The work columns' class names, a tuple of ne str.
+        """
+    @property
+    def error(self) -> GlobalError | None:
+        """
+        The global error estimate of every record of every sample (GlobalError, arrays (N, n, ...)); None with simulate_batch(..., error=False).
         """
     @property
     def filled(self) -> numpy.ndarray:
@@ -10767,10 +11087,10 @@ def simulate(model: PivotedBody | PivotedPlanarBody | Gyrostat | Scene | Compile
     ('closed', 'closed', True)
     """
 @typing.overload
-def simulate_batch(model: Particle | PlanarBody | RigidBody | collections.abc.Sequence[Particle | PlanarBody | RigidBody], initial: typing.Any, dt: float | numpy.typing.ArrayLike | _Quantity, steps: int | None = None, method: _MethodName | None = None, record_every: int = 1, loads: typing.Any = None, gravity: bool | numpy.typing.ArrayLike | None = None, t0: float | _Quantity = 0.0, threads: int | None = None, simd: bool = False, scalar_first: bool = False, progress: collections.abc.Callable[..., typing.Any] | None = None, *, duration: float | _Quantity | None = None) -> BatchResult:
+def simulate_batch(model: Particle | PlanarBody | RigidBody | collections.abc.Sequence[Particle | PlanarBody | RigidBody], initial: typing.Any, dt: float | numpy.typing.ArrayLike | _Quantity, steps: int | None = None, method: _MethodName | None = None, record_every: int = 1, loads: typing.Any = None, gravity: bool | numpy.typing.ArrayLike | None = None, t0: float | _Quantity = 0.0, threads: int | None = None, simd: bool = False, scalar_first: bool = False, progress: collections.abc.Callable[..., typing.Any] | None = None, *, duration: float | _Quantity | None = None, error: bool = True) -> BatchResult:
     ...
 @typing.overload
-def simulate_batch(model: Scene | CompiledScene | collections.abc.Sequence[Scene | CompiledScene], initial: typing.Any, dt: float | numpy.typing.ArrayLike | _Quantity, steps: int | None = None, method: _MethodName | None = None, record_every: int = 1, loads: typing.Any = None, gravity: bool | numpy.typing.ArrayLike | None = None, t0: float | _Quantity = 0.0, threads: int | None = None, simd: bool = False, scalar_first: bool = False, progress: collections.abc.Callable[..., typing.Any] | None = None, *, duration: float | _Quantity | None = None) -> BatchSceneResult:
+def simulate_batch(model: Scene | CompiledScene | collections.abc.Sequence[Scene | CompiledScene], initial: typing.Any, dt: float | numpy.typing.ArrayLike | _Quantity, steps: int | None = None, method: _MethodName | None = None, record_every: int = 1, loads: typing.Any = None, gravity: bool | numpy.typing.ArrayLike | None = None, t0: float | _Quantity = 0.0, threads: int | None = None, simd: bool = False, scalar_first: bool = False, progress: collections.abc.Callable[..., typing.Any] | None = None, *, duration: float | _Quantity | None = None, error: bool = True) -> BatchSceneResult:
     """
     N independent runs of a body or a scene, one per initial state, in parallel.
     
@@ -10821,13 +11141,17 @@ def simulate_batch(model: Scene | CompiledScene | collections.abc.Sequence[Scene
         about every 0.05 s; an exception it raises stops every sample and propagates.
     duration : float or pint.Quantity, keyword-only, optional
         Length of the runs [s] instead of steps: it must give the same whole number of steps at every sample's dt.
+    error : bool, keyword-only, default True
+        Estimate the global error of every record of every sample (result.error, a GlobalError with a leading sample
+        axis) from two more batches at 2 dt and 4 dt (+0.75x the cost, on the same threads); sample i's estimate is
+        the one simulate gives for it (result[i].error). False: no estimate (result.error is None).
     
     Returns
     -------
     BatchResult or BatchSceneResult
         For bodies a BatchResult, for scenes a BatchSceneResult: the arrays of SimulationResult / SceneResult with a
-        leading sample axis (N, n, ...). A sample whose state becomes non-finite stops alone: diverged[i] is True,
-        filled[i] its rows, the rest of its rows NaN.
+        leading sample axis (N, n, ...), and error. A sample whose state becomes non-finite stops alone: diverged[i]
+        is True, filled[i] its rows, the rest of its rows NaN (its error rows too, their verdict saying so).
     
     Raises
     ------
@@ -10865,6 +11189,11 @@ def simulate_batch(model: Scene | CompiledScene | collections.abc.Sequence[Scene
     >>> res = rd.simulate_batch(body, states, dt=0.01, steps=100, threads=2)
     >>> res.w_B.shape, np.array_equal(res.w_B[2], rd.simulate(body, states[2], dt=0.01, steps=100).w_B)
     ((4, 101, 3), True)
+    
+    Every record of every sample has its global error estimate (rk4: order 4):
+    
+    >>> res.error.attitude.shape, res.error.order, res[2].error == rd.simulate(body, states[2], dt=0.01, steps=100).error
+    ((4, 101), 4, True)
     
     Three particles dropped for 1 s under their own gravity fall g t^2 / 2:
     
@@ -11898,6 +12227,6 @@ def weld_vertices(vertices: numpy.typing.ArrayLike, faces: numpy.typing.ArrayLik
     (2, array([[0, 1, 2],
            [1, 3, 2]]))
     """
-FORCE_ELEMENTS: tuple = (UniformGravity, PointMassGravity, MutualGravity, GravityGradient, SpringDamper, Drag, ScheduledLoads, PythonForce, Thrust, MagneticDipole, ReactionWheel)
+FORCE_ELEMENTS: tuple = (UniformGravity, PointMassGravity, MutualGravity, GravityGradient, SpringDamper, Drag, ScheduledLoads, PythonForce, Thrust, MagneticDipole, ReactionWheel, ZonalGravity, AtmosphericDrag, SolarRadiationPressure)
 __version__: str = '0.1.0'
 inertia_relative_tolerance: float = 1e-10
