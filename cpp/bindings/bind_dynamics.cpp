@@ -205,7 +205,7 @@ SimulationResult result_from_state(const py::tuple& t) {
   SimulationResult r{column(0, 0), column(1, 3), column(2, 4), column(3, 3), column(4, 3), column(5, 0),
                      column(6, 0), column(7, 0), column(8, 0), column(9, 0), t[10].cast<bool>(),
                      t[11].cast<std::int64_t>(), t[12].cast<double>(), t.size() >= 14 && t[13].cast<bool>()};
-  if (t.size() == 15 && !t[14].is_none()) {
+  if (t.size() >= 15 && !t[14].is_none()) {
     if (!py::isinstance<GlobalError>(t[14])) py_io::throw_type_error("SimulationResult pickle error", "a GlobalError or None", t[14]);
     r.error = py::reinterpret_borrow<py::object>(t[14]);
   }

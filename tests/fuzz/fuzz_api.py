@@ -87,6 +87,9 @@ DOCUMENTED_NON_FINITE = [
     ("Load.t_start", {"-inf"}, ("rigiddyn.problem", "Load")),
     ("Load.t_end", {"inf"}, ("rigiddyn.problem", "Load")),
     ("*[observed_order]", {"nan"}, ("rigiddyn.work_precision", "")),  # the module's docstring: the columns
+    # the module's docstring: "for the other measures the columns are nan and the verdict says so"
+    ("*[estimate]", {"nan"}, ("rigiddyn.work_precision", "")),
+    ("*[effectivity]", {"nan"}, ("rigiddyn.work_precision", "")),
     ("TradeoffResult.rows[]*", {"inf"}, ("rigiddyn.work_precision", "tradeoff")),  # "diverged runs get inf errors"
     ("TradeoffResult.to_dict()[rows][]*", {"inf"}, ("rigiddyn.work_precision", "tradeoff")),
     ("TradeoffResult.to_dict()[recommendation]*", {"inf"}, ("rigiddyn.work_precision", "tradeoff")),

@@ -132,8 +132,9 @@ def test_a_batch_remembers_its_order_and_gives_it_to_its_samples(kind):
     back = pickle.loads(pickle.dumps(wxyz))
     assert back.scalar_first is True and back[0].scalar_first is True
     old = type(wxyz).__new__(type(wxyz))
-    # an earlier pickle, without the order (and a scene batch's wheel columns after it): (x, y, z, w)
-    old.__setstate__(wxyz.__getstate__()[:-1 if kind == "body" else -4])
+    # an earlier pickle, without the order and the error estimate after it (and a scene batch's wheel columns
+    # between them): (x, y, z, w)
+    old.__setstate__(wxyz.__getstate__()[:-2 if kind == "body" else -5])
     assert old.scalar_first is False
 
 
