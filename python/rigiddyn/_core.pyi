@@ -4639,7 +4639,7 @@ class SolarRadiationPressure:
     cp_B : array_like, shape (3,) [m], default (0.0, 0.0, 0.0)
         (3,) centre of pressure in B, from the centre of mass [m]
     shadow_radius : float [m], default 0.0
-        radius of the planet casting a cylindrical shadow [m] (0: none)
+        radius of the planet casting a cylindrical shadow [m], 0 for none
     shadow_p_W : array_like, shape (3,) [m], default (0.0, 0.0, 0.0)
         (3,) centre of that planet in W [m]
     bodies : sequence of int or None, default None
@@ -4712,7 +4712,7 @@ class SolarRadiationPressure:
     @property
     def shadow_radius(self) -> typing.Any:
         """
-        radius of the planet casting a cylindrical shadow [m] (0: none)
+        radius of the planet casting a cylindrical shadow [m], 0 for none
         """
     @property
     def specular(self) -> typing.Any:

@@ -82,7 +82,7 @@ True)py";  // the docstring's Examples (run as doctests)
         scalar_field("diffuse", &SolarRadiationPressure::diffuse, "", "a flat plate's diffuse reflectivity").at_least_zero(),
         vector_field("cp_B", &SolarRadiationPressure::cp_B, "m", "(3,) centre of pressure in B, from the centre of mass [m]"),
         scalar_field("shadow_radius", &SolarRadiationPressure::shadow_radius, "m",
-                     "radius of the planet casting a cylindrical shadow [m] (0: none)").at_least_zero(),
+                     "radius of the planet casting a cylindrical shadow [m], 0 for none").at_least_zero(),
         vector_field("shadow_p_W", &SolarRadiationPressure::shadow_p_W, "m", "(3,) centre of that planet in W [m]"),
         bodies_field(&SolarRadiationPressure::bodies));
   }
