@@ -35,4 +35,15 @@ struct BodyWrench {
   Eigen::Vector3d tau_B = Eigen::Vector3d::Zero();
 };
 
+// Adds the force f_W [N] (in W) acting at the body point point_B [m] (in B, from the centre of mass) to `wrench`:
+// f_W at the centre of mass and its moment tau_B = point_B × (R_WBᵀ f_W) about it; returns its power
+// f_W·v_W + tau_B·w_B [W].
+inline double add_force_at_point(const BodyKinematics& body, const Eigen::Vector3d& f_W, const Eigen::Vector3d& point_B,
+                                 BodyWrench& wrench) {
+  const Eigen::Vector3d tau_B = point_B.cross(body.q_WB.conjugate() * f_W);
+  wrench.f_W += f_W;
+  wrench.tau_B += tau_B;
+  return f_W.dot(body.v_W) + tau_B.dot(body.w_B);
+}
+
 }  // namespace rigiddyn

@@ -118,13 +118,7 @@ class AtmosphericDragTerm {
       const Eigen::Vector3d r_W = body.p_W - p_W_;
       const Eigen::Vector3d v_rel = body.v_W - omega_W_.cross(r_W);
       const Eigen::Vector3d f_W = (-half_drag_area_ * density(r_W.norm() - radius_) * v_rel.norm()) * v_rel;
-      wrenches[b].f_W += f_W;
-      power += f_W.dot(body.v_W);
-      if (!cp_B_.isZero(0.0)) {
-        const Eigen::Vector3d tau_B = cp_B_.cross(body.q_WB.conjugate() * f_W);
-        wrenches[b].tau_B += tau_B;
-        power += tau_B.dot(body.w_B);
-      }
+      power += add_force_at_point(body, f_W, cp_B_, wrenches[b]);
     }
     return power;
   }

@@ -138,14 +138,7 @@ class SolarRadiationPressureTerm {
     for (const int b : bodies_) {
       const BodyKinematics& body = kinematics[b];
       if (in_shadow(body.p_W, s_W)) continue;
-      const Eigen::Vector3d f_W = force_W(body.q_WB, s_W);
-      wrenches[b].f_W += f_W;
-      power += f_W.dot(body.v_W);
-      if (!cp_B_.isZero(0.0)) {
-        const Eigen::Vector3d tau_B = cp_B_.cross(body.q_WB.conjugate() * f_W);
-        wrenches[b].tau_B += tau_B;
-        power += tau_B.dot(body.w_B);
-      }
+      power += add_force_at_point(body, force_W(body.q_WB, s_W), cp_B_, wrenches[b]);
     }
     return power;
   }
