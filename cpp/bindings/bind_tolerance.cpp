@@ -103,9 +103,11 @@ const char* const choice_doc = R"doc(What simulate(..., tolerance=) chose, and w
 The planner pilots each candidate method on a short run (16 steps over a quarter of the horizon, shortened and
 refined until its own global error estimate passes its order check), fits the error model
 eps(t) ~ C dt^p (t - t0) (p the order the model has under the method, linear growth in t), and runs the cheapest
-(method, dt) predicted to meet half the tolerance, cost = steps x the seconds per step its pilot measured. The run's
-global error estimate (GlobalError) is the certificate: when it is not reliable, or above the tolerance, the run is
-refined once, dt' = dt (tolerance / 2 / error)^(1/p) (dt / 2 when not reliable).
+(method, dt) predicted to meet half the tolerance, cost = steps x the seconds per step its pilot measured. When its
+run has 64 steps or more, the chosen method then runs over the whole horizon at a quarter of those steps and its
+largest error, scaled by dt^p, sets the steps (an error that jumps after the short pilot's span is seen). The run's
+global error estimate (GlobalError) is the certificate: when it is not accepted (see met), or above the tolerance,
+the run is refined once, dt' = dt (tolerance / 2 / error)^(1/p) (dt / 2 when not accepted).
 
 Parameters
 ----------
@@ -129,7 +131,10 @@ certified_error : float
     The largest global error estimate of the measure over the records (and bodies) of the final run (NaN where a
     record has none).
 met : bool
-    The certificate is reliable on every record and certified_error <= tolerance.
+    The certificate holds: certified_error <= tolerance, and the measure's own estimate (its observed order
+    checked alone: result.error's record-wide verdict also checks the other quantities) is accepted on every
+    record: reliable, between two reliable records, an observed order above the window (an over-estimate), or an
+    estimate <= tolerance / 16 (a zero crossing of an oscillating error, the round-off of the first records).
 refinements : int
     0 or 1.
 reason : str

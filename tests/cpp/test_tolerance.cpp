@@ -60,7 +60,14 @@ TEST(ToleranceModel, TheLargestErrorAndTheFirstUnreliableRecord) {
   e.energy = {0.0, 2e-7, 1e-7};
   e.verdict = {"reliable", "reliable", "not asymptotic"};
   EXPECT_EQ(largest_error(e, ErrorMeasure::energy), 2e-7);
-  EXPECT_EQ(first_unreliable(e), 2u);
+  EXPECT_EQ(first_unreliable(e, ErrorMeasure::energy, 1e-6), 2u);
+  // an order above the window over-estimates (accepted), one below it is not asymptotic (refused)
+  e.verdict[2] = "not asymptotic: observed order 4.6 where 4 is expected (energy)";
+  EXPECT_EQ(first_unreliable(e, ErrorMeasure::energy, 1e-6), 3u);
+  e.verdict[2] = "not asymptotic: observed order 3.2 where 4 is expected (energy)";
+  EXPECT_EQ(first_unreliable(e, ErrorMeasure::energy, 1e-6), 2u);
+  // ... unless its estimate is negligible: 1e-7 <= 1e-5 / 16
+  EXPECT_EQ(first_unreliable(e, ErrorMeasure::energy, 1e-5), 3u);
   e.energy[2] = std::nan("");  // a record without an estimate: no largest error
   EXPECT_TRUE(std::isnan(largest_error(e, ErrorMeasure::energy)));
 }

@@ -68,7 +68,7 @@ def test_a_given_method_keeps_it_and_chooses_dt():
     body = rd.RigidBody(1.0, [1.0, 2.0, 3.0])
     r = rd.simulate(body, rd.RigidBodyState(w_B=[0.1, 1.0, 0.1]), duration=10.0, tolerance=1e-5, method="splitting_dlm")
     assert r.choice.method == "splitting_dlm" and r.choice.order == 2
-    assert [p["method"] for p in r.choice.pilots] == ["splitting_dlm"]
+    assert {p["method"] for p in r.choice.pilots} == {"splitting_dlm"}  # the short pilot and the whole-horizon one
 
 
 def test_the_choice_is_reported_and_pickles():
@@ -102,8 +102,10 @@ def test_a_tolerance_as_a_quantity_is_converted():
 
 def test_the_cost_cap_raises_with_its_figures():
     body = rd.RigidBody(1.0, [1.0, 2.0, 3.0])
+    couple = rd.AppliedLoad(torque=[0.0, 0.0, 0.1], frame="body")  # no closed form: every method has an order
     with pytest.raises(rd.ToleranceError, match="max_steps = 8") as info:
-        rd.simulate(body, rd.RigidBodyState(w_B=[0.1, 1.0, 0.1]), duration=20.0, tolerance=1e-10, max_steps=8)
+        rd.simulate(body, rd.RigidBodyState(w_B=[0.1, 1.0, 0.1]), duration=20.0, tolerance=1e-10, max_steps=8,
+                    loads=couple)
     e = info.value
     assert isinstance(e, ValueError) and e.tolerance == 1e-10 and e.measure == "attitude"
     assert e.result is None and e.error > 1e-10 and not e.choice.met
@@ -123,9 +125,9 @@ STATE = rd.RigidBodyState(w_B=[0.1, 1.0, 0.1])
 
 @pytest.mark.parametrize("kwargs, match", [
     (dict(duration=1.0, tolerance=0.0), r"tolerance: expected a finite number > 0 \[rad\], got 0"),
-    (dict(duration=1.0, tolerance=-1e-6), r"tolerance: expected a finite number > 0 \[rad\], got -1e-06"),
-    (dict(duration=1.0, tolerance=math.nan), r"tolerance: expected a finite number > 0 \[rad\], got nan"),
-    (dict(duration=1.0, tolerance=1e-6, dt=0.01), r"dt: expected None when tolerance is given .* got 0.01"),
+    (dict(duration=1.0, tolerance=-1e-6), r"tolerance: expected a finite number > 0 \[rad\], got -9.99"),
+    (dict(duration=1.0, tolerance=math.nan), r"tolerance: expected a finite number, got nan"),
+    (dict(duration=1.0, tolerance=1e-6, dt=0.01), r"dt: expected None when tolerance is given .* got float 0.01"),
     (dict(steps=10, tolerance=1e-6), r"steps: expected None when tolerance is given"),
     (dict(tolerance=1e-6), r"duration: expected the time span"),
     (dict(duration=1.0, tolerance=1e-6, error=False), r"error: expected True when tolerance is given"),

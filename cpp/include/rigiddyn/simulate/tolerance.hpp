@@ -54,9 +54,15 @@ ErrorMeasure error_measure_from_name(const std::string& name, const std::string&
 // The largest estimate of `measure` over every record (and body) of `e`; NaN if a record has none.
 double largest_error(const GlobalErrorEstimate& e, ErrorMeasure measure);
 
-// The first record whose verdict is neither "reliable" nor "interpolated between the reliable records ..." (a
-// record between two checked ones, when record_every is not a multiple of 4); e.verdict.size() when none.
-std::size_t first_unreliable(const GlobalErrorEstimate& e);
+// The first record the certificate does not accept: a verdict other than "reliable", "interpolated between the
+// reliable records ..." (a record between two checked ones, when record_every is not a multiple of 4), an
+// observed order above the window (the estimate over-estimates there: see above_the_window), and an order outside
+// it where the estimate of `measure` is at most tolerance / 16 (a zero crossing of an oscillating error, or the
+// round-off of the first records, where the ratio is noise: an estimate 16x too small would still meet the
+// tolerance); e.verdict.size() when none.
+std::size_t first_unreliable(const GlobalErrorEstimate& e, ErrorMeasure measure, double tolerance);
+// A verdict "not asymptotic: observed order q where p is expected" with q above the window (q > p + log2 1.5).
+bool above_the_window(const std::string& verdict);
 
 // The size of `measure` in the records (the largest norm over records and bodies; 1 rad for the attitude): the
 // scale that makes a tolerance relative for pruning candidates by order.
@@ -238,7 +244,7 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
       p.dt = o.dt, p.horizon = span, p.steps = n;
       p.error = e.verdict.empty() ? p.error : largest_error(e, request.measure);
       p.seconds_per_step = seconds / (1.75 * static_cast<double>(n));
-      const std::size_t bad = first_unreliable(e);
+      const std::size_t bad = first_unreliable(e, request.measure, request.tolerance);
       if (bad == e.verdict.size() && !h.diverged) {
         p.constant = error_constant(e, records, o.dt, request.measure);
         if (!std::isfinite(scale)) scale = std::max(measure_scale(records, request.measure), 1e-300);
@@ -349,7 +355,7 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
     if (out.interrupted) return out;
     p.error = largest_error(e, request.measure);
     p.seconds_per_step = seconds / (1.75 * static_cast<double>(o.steps));
-    const std::size_t bad = first_unreliable(e);
+    const std::size_t bad = first_unreliable(e, request.measure, request.tolerance);
     if (bad == e.verdict.size() && !h.diverged && std::isfinite(p.error)) {
       const double dt = p.error > 0.0 ? o.dt * std::pow(target / p.error, 1.0 / chosen.order) : choice.dt;
       choice.steps = steps_for(T, std::min(dt, 4.0 * o.dt), m), choice.dt = T / static_cast<double>(choice.steps);
@@ -385,7 +391,7 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
     if (out.interrupted) break;
     const GlobalErrorEstimate& e = estimates.measure;
     const double error = largest_error(e, request.measure);
-    const std::size_t bad = first_unreliable(e);
+    const std::size_t bad = first_unreliable(e, request.measure, request.tolerance);
     const bool reliable = bad == e.verdict.size();
     const bool met = reliable && error <= request.tolerance;
     const std::string why = reliable ? "the certificate " + format_number(error) + " " +
