@@ -72,6 +72,20 @@ TEST(ToleranceModel, TheLargestErrorAndTheFirstUnreliableRecord) {
   EXPECT_TRUE(std::isnan(largest_error(e, ErrorMeasure::energy)));
 }
 
+TEST(ToleranceModel, TheLargestErrorsOrderOverridesANoisyRecord) {
+  GlobalErrorEstimate e;
+  e.order = 4;
+  e.attitude = {0.0, 1e-7, 2e-7, 1e-9};
+  e.observed_order = {std::nan(""), 4.0, 4.1, 1.0};  // the last record at a zero crossing: its ratio is noise
+  e.verdict = {"reliable", "reliable", "reliable", "not asymptotic: observed order 1 where 4 is expected (attitude)"};
+  // max d2 / max d1 = 2^4.1 (record 2's): log2 = 4.1
+  EXPECT_NEAR(observed_order_of_largest(e, ErrorMeasure::attitude), 4.1, 1e-12);
+  EXPECT_EQ(first_unreliable(e, ErrorMeasure::attitude, 1e-6), 3u);
+  EXPECT_EQ(first_uncertified(e, ErrorMeasure::attitude, 1e-6), 4u);
+  e.observed_order[2] = 2.0;  // the largest error itself is not asymptotic: refused
+  EXPECT_EQ(first_uncertified(e, ErrorMeasure::attitude, 1e-6), 3u);
+}
+
 TEST(ToleranceModel, OrderPruningFigure) {
   // at 1e-8 relative: order 4 needs 100 steps x 4 evaluations, order 2 10^4 x 2
   EXPECT_NEAR(order_cost_figure(4, 4, 1e-8), 400.0, 1e-9);

@@ -17,9 +17,13 @@ import rigiddyn as rd
 
 
 def geodesic(q_a, q_b):
-    """Geodesic angle between (n, 4) quaternion rows [rad]."""
-    dots = np.abs(np.sum(q_a * q_b, axis=1) / (np.linalg.norm(q_a, axis=1) * np.linalg.norm(q_b, axis=1)))
-    return 2.0 * np.arccos(np.clip(dots, 0.0, 1.0))
+    """Geodesic angle between (n, 4) quaternion rows (x, y, z, w) [rad]: 2 atan2(|v|, |w|) of q_a^-1 q_b, accurate
+    near 0 (an arccos of the dot product floors at ~3e-8 rad)."""
+    q_a = q_a / np.linalg.norm(q_a, axis=1, keepdims=True)
+    q_b = q_b / np.linalg.norm(q_b, axis=1, keepdims=True)
+    w = np.sum(q_a * q_b, axis=1)
+    v = q_a[:, 3:4] * q_b[:, :3] - q_b[:, 3:4] * q_a[:, :3] - np.cross(q_a[:, :3], q_b[:, :3])
+    return 2.0 * np.arctan2(np.linalg.norm(v, axis=1), np.abs(w))
 
 
 FREE_BODIES = [

@@ -130,6 +130,31 @@ std::size_t first_unreliable(const GlobalErrorEstimate& e, ErrorMeasure measure,
   return e.verdict.size();
 }
 
+double observed_order_of_largest(const GlobalErrorEstimate& e, ErrorMeasure measure) {
+  const std::vector<double>& values = values_of(e, measure);
+  const std::size_t width = width_of(e, measure);
+  const double factor = std::exp2(e.order) - 1.0;  // d1 = ε (2^p − 1)
+  double d1 = 0.0, d2 = 0.0;
+  for (std::size_t i = 0; i < e.observed_order.size(); ++i) {
+    if (!std::isfinite(e.observed_order[i])) continue;  // at round-off, or not checked (interpolated)
+    double epsilon = 0.0;
+    for (std::size_t b = 0; b < width; ++b) epsilon = std::max(epsilon, values[i * width + b]);
+    d1 = std::max(d1, epsilon * factor);
+    d2 = std::max(d2, epsilon * factor * std::exp2(e.observed_order[i]));
+  }
+  return d1 > 0.0 ? std::log2(d2 / d1) : nan;
+}
+
+std::size_t first_uncertified(const GlobalErrorEstimate& e, ErrorMeasure measure, double tolerance) {
+  const std::size_t bad = first_unreliable(e, measure, tolerance);
+  if (bad == e.verdict.size()) return bad;
+  for (const std::string& v : e.verdict) {  // a run that diverged or has no estimate is never certified
+    if (v.find("diverged") != std::string::npos || v.compare(0, 11, "no estimate") == 0) return bad;
+  }
+  if (std::isnan(largest_error(e, measure))) return bad;
+  return observed_order_of_largest(e, measure) >= e.order - std::log2(1.5) ? e.verdict.size() : bad;
+}
+
 double measure_scale(const ErrorRecords& r, ErrorMeasure measure) {
   if (measure == ErrorMeasure::attitude) return 1.0;
   double largest = 0.0;

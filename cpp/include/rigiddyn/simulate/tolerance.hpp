@@ -61,6 +61,17 @@ double largest_error(const GlobalErrorEstimate& e, ErrorMeasure measure);
 // round-off of the first records, where the ratio is noise: an estimate 16x too small would still meet the
 // tolerance); e.verdict.size() when none.
 std::size_t first_unreliable(const GlobalErrorEstimate& e, ErrorMeasure measure, double tolerance);
+// The observed order of the largest error over the records: log2(max_i d(y_2h, y_4h) / max_i d(y_h, y_2h)) of
+// `measure`, from the checked records (NaN: none). The tolerance bounds that largest error, and its ratio is
+// smooth in h where a record's ratio is noise (a record near a zero crossing of an oscillating error, e.g. a
+// pendulum's angle error at a turning point, where a higher-order term dominates).
+double observed_order_of_largest(const GlobalErrorEstimate& e, ErrorMeasure measure);
+
+// The certificate: first_unreliable, or, where a record fails, e.verdict.size() all the same when no run diverged,
+// every record has an estimate and the largest error's observed order is at or above the window's lower end
+// (2^p / 1.5); else the first record not accepted.
+std::size_t first_uncertified(const GlobalErrorEstimate& e, ErrorMeasure measure, double tolerance);
+
 // A verdict "not asymptotic: observed order q where p is expected" with q above the window (q > p + log2 1.5).
 bool above_the_window(const std::string& verdict);
 
@@ -244,7 +255,7 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
       p.dt = o.dt, p.horizon = span, p.steps = n;
       p.error = e.verdict.empty() ? p.error : largest_error(e, request.measure);
       p.seconds_per_step = seconds / (1.75 * static_cast<double>(n));
-      const std::size_t bad = first_unreliable(e, request.measure, request.tolerance);
+      const std::size_t bad = first_uncertified(e, request.measure, request.tolerance);
       if (bad == e.verdict.size() && !h.diverged) {
         p.constant = error_constant(e, records, o.dt, request.measure);
         if (!std::isfinite(scale)) scale = std::max(measure_scale(records, request.measure), 1e-300);
@@ -262,8 +273,9 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
       }
     }
     if (p.verdict == used) {
-      // at most 4x the pilot's step: beyond it the pilot says nothing of stability
-      const double dt = std::min(step_for_error(p.constant, p.order, T, target), 4.0 * p.dt);
+      // at most the pilot's step: the pilot's own check ran at 2 dt_p and 4 dt_p, which the certificate's coarse
+      // runs then do not exceed (beyond them the pilot says nothing of stability)
+      const double dt = std::min(step_for_error(p.constant, p.order, T, target), p.dt);
       p.planned_steps = steps_for(T, dt, m);
       p.planned_seconds = static_cast<double>(p.planned_steps) * p.seconds_per_step;
     }
@@ -355,10 +367,10 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
     if (out.interrupted) return out;
     p.error = largest_error(e, request.measure);
     p.seconds_per_step = seconds / (1.75 * static_cast<double>(o.steps));
-    const std::size_t bad = first_unreliable(e, request.measure, request.tolerance);
+    const std::size_t bad = first_uncertified(e, request.measure, request.tolerance);
     if (bad == e.verdict.size() && !h.diverged && std::isfinite(p.error)) {
       const double dt = p.error > 0.0 ? o.dt * std::pow(target / p.error, 1.0 / chosen.order) : choice.dt;
-      choice.steps = steps_for(T, std::min(dt, 4.0 * o.dt), m), choice.dt = T / static_cast<double>(choice.steps);
+      choice.steps = steps_for(T, std::min(dt, o.dt), m), choice.dt = T / static_cast<double>(choice.steps);
       choice.predicted_error = p.error * std::pow(choice.dt / o.dt, chosen.order);
       p.constant = error_constant(e, error_records(h), o.dt, request.measure);
       p.planned_steps = choice.steps;
@@ -391,7 +403,7 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
     if (out.interrupted) break;
     const GlobalErrorEstimate& e = estimates.measure;
     const double error = largest_error(e, request.measure);
-    const std::size_t bad = first_unreliable(e, request.measure, request.tolerance);
+    const std::size_t bad = first_uncertified(e, request.measure, request.tolerance);
     const bool reliable = bad == e.verdict.size();
     const bool met = reliable && error <= request.tolerance;
     const std::string why = reliable ? "the certificate " + format_number(error) + " " +
