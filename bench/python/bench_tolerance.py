@@ -37,7 +37,10 @@ def attitude_error(q_a, q_b):
 
 
 def measure_error(result, reference, measure):
-    """Largest error of `measure` over the records (and bodies) of result against reference (same records)."""
+    """Largest error of `measure` over the records (and bodies) of result against reference (same records; inf
+    when the reference run diverged and has fewer)."""
+    if len(np.asarray(reference.get("q_WB", reference.get("p_W")))) != len(result.t):
+        return math.inf
     if measure == "attitude":
         q, qr = np.asarray(result.q_WB).reshape(-1, 4), np.asarray(reference["q_WB"]).reshape(-1, 4)
         return attitude_error(q, qr)
