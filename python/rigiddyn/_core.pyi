@@ -4578,7 +4578,44 @@ class MassFlow:
         """
 class ToleranceError(ValueError):
     """
-    Raised by simulate(..., tolerance=) when the tolerance cannot be met: the cost cap (max_steps) would be exceeded, the certificate of the refined run still fails, no method reached its asymptotic regime, or the model has a force the certificate cannot check (a PythonForce). A ValueError. Its message gives the figures; its attributes: choice (a ToleranceChoice, or None for a refusal before any run), error (the certified error of the best run, else the predicted error at max_steps; NaN when none), tolerance, measure, and result (the best run, a SimulationResult or SceneResult, or None when none ran).
+    simulate(..., tolerance=) could not meet the tolerance: a ValueError with the figures.
+    
+    Raised when the cost cap (max_steps) would be exceeded, when the certificate of the refined run still fails, when no
+    method reached its asymptotic regime in its pilots, or before any run for a model whose forces the certificate
+    cannot check (a PythonForce). The message gives the figures (the steps needed, the measured or predicted error).
+    
+    Parameters
+    ----------
+    message : str
+        The reason, with its figures (raised by simulate; not made by hand).
+    
+    Attributes
+    ----------
+    choice : ToleranceChoice or None
+        What was chosen and what happened (None for a refusal before any run).
+    error : float
+        The certified error of the best run, else the predicted error at max_steps, in the measure's unit (NaN for a
+        refusal before any run).
+    tolerance : float
+        The tolerance asked (NaN for a refusal).
+    measure : str or None
+        The quantity it bounds.
+    result : SimulationResult, SceneResult or None
+        The best run (None when none ran).
+    
+    See Also
+    --------
+    simulate, ToleranceChoice
+    
+    Examples
+    --------
+    >>> couple = rd.AppliedLoad(torque=[0.0, 0.0, 0.1], frame="body")
+    >>> try:
+    ...     rd.simulate(rd.RigidBody(1.0, [1.0, 2.0, 3.0]), rd.RigidBodyState(w_B=[0.1, 1.0, 0.1]), duration=20.0,
+    ...                 loads=couple, tolerance=1e-10, max_steps=8)
+    ... except rd.ToleranceError as e:
+    ...     print(e.measure, e.tolerance, e.result, "max_steps = 8" in str(e))
+    attitude 1e-10 None True
     """
 class ToleranceChoice:
     """
