@@ -212,6 +212,14 @@ std::optional<ToleranceArgs> as_tolerance_args(py::handle tolerance, py::handle 
     }
     return std::nullopt;
   }
+  ToleranceArgs a;  // the tolerance itself first: a bad one is named before the other arguments
+  a.measure = measure.is_none() ? default_measure : error_measure_from_name(py_io::as_string(measure, "measure"));
+  a.tolerance = py_io::as_scalar(py_io::in_si(tolerance, pint_unit(a.measure), "tolerance"), "tolerance");
+  if (!(std::isfinite(a.tolerance) && a.tolerance > 0.0)) {
+    py_io::throw_value_error("tolerance", "a finite number > 0 [" + error_measure_unit(a.measure) + "]",
+                             format_value(a.tolerance));
+  }
+  a.max_steps = max_steps.is_none() ? default_max_steps : py_io::as_int(max_steps, "max_steps", 4);
   if (!dt.is_none()) {
     py_io::throw_value_error("dt", "None when tolerance is given (exactly one of dt and tolerance: the step is chosen)",
                              py_io::describe(dt));
@@ -227,18 +235,10 @@ std::optional<ToleranceArgs> as_tolerance_args(py::handle tolerance, py::handle 
     py_io::throw_value_error("error", "True when tolerance is given (the global error estimate is the certificate)",
                              "False");
   }
-  ToleranceArgs a;
-  a.measure = measure.is_none() ? default_measure : error_measure_from_name(py_io::as_string(measure, "measure"));
-  a.tolerance = py_io::as_scalar(py_io::in_si(tolerance, pint_unit(a.measure), "tolerance"), "tolerance");
-  if (!(std::isfinite(a.tolerance) && a.tolerance > 0.0)) {
-    py_io::throw_value_error("tolerance", "a finite number > 0 [" + error_measure_unit(a.measure) + "]",
-                             format_value(a.tolerance));
-  }
   a.horizon = py_io::as_scalar(py_io::in_si(duration, "s", "duration"), "duration");
   if (!(std::isfinite(a.horizon) && a.horizon > 0.0)) {
     py_io::throw_value_error("duration", "a finite time span > 0 [s]", format_value(a.horizon));
   }
-  a.max_steps = max_steps.is_none() ? default_max_steps : py_io::as_int(max_steps, "max_steps", 4);
   return a;
 }
 
