@@ -12,6 +12,7 @@
 #include "python_run.hpp"
 #include "scene_run.hpp"
 #include "repr.hpp"
+#include "tolerance_run.hpp"
 #include "rigiddyn/check.hpp"
 #include "rigiddyn/scene/compile.hpp"  // scene_features
 #include "rigiddyn/simulate/simulate.hpp"
@@ -30,14 +31,20 @@ using py_io::Array;
 
 namespace {
 
-// The options shared by simulate and step, each argument converted by name (TypeError/ValueError
-// naming it); the core checks the values (dt > 0, finite gravity, ...).
-SimulationOptions as_options(py::handle dt, py::handle method, py::handle loads, py::handle gravity) {
+// The options shared by simulate and step but the step, each argument converted by name (TypeError/ValueError
+// naming it); the core checks the values (finite gravity, ...).
+SimulationOptions as_run_options(py::handle method, py::handle loads, py::handle gravity) {
   SimulationOptions o;
-  o.dt = py_io::as_scalar(py_io::in_si(dt, "s", "dt"), "dt");
   o.method = method.is_none() ? Method::rk4 : method_from_name(py_io::as_string(method, "method"), "method");
   o.loads = as_loads(loads);
   o.gravity_W = as_gravity(gravity);
+  return o;
+}
+
+// as_run_options with the step dt [s] (the core checks dt > 0).
+SimulationOptions as_options(py::handle dt, py::handle method, py::handle loads, py::handle gravity) {
+  SimulationOptions o = as_run_options(method, loads, gravity);
+  o.dt = py_io::as_scalar(py_io::in_si(dt, "s", "dt"), "dt");
   return o;
 }
 
@@ -71,6 +78,7 @@ struct SimulationResult {
   bool scalar_first = false;  // q_WB rows as (w, x, y, z)
   py::object error = py::none();  // a GlobalError (simulate(..., error=True)) or None
   py::object balance = py::none();  // a rigiddyn.Balance (every simulate run) or None (a batch result)
+  py::object choice = py::none();  // a ToleranceChoice (simulate(..., tolerance=...)) or None
 };
 
 SimulationResult to_result(Trajectory&& tr, bool scalar_first) {
@@ -106,6 +114,25 @@ const char* kind_of(const Particle&) { return "Particle"; }
 const char* kind_of(const PlanarBody&) { return "PlanarBody"; }
 const char* kind_of(const RigidBody&) { return "RigidBody"; }
 
+// The SimulationResult of a run of `body` with options o as its Python object: its error estimate and choice as
+// given, its balance made (rigiddyn._balance) with the AccuracyWarning at `accuracy_level` when it does not close.
+template <class Body>
+py::object result_object(const Body& body, Trajectory&& tr, const SimulationOptions& o, bool scalar_first,
+                         py::object error, py::object choice, py::handle accuracy_level) {
+  SimulationResult result = to_result(std::move(tr), scalar_first);
+  result.error = std::move(error);
+  result.choice = std::move(choice);
+  py::object out = py::cast(std::move(result));
+  out.cast<SimulationResult&>().balance = balance_after_run(
+      out, accuracy_level, method_info(o.method).name, o.dt,
+      [&](const py::module_& balance) {
+        return balance.attr("of_body")(out, body.mass(), balance_inertia(body), py_io::to_array(o.gravity_W),
+                                       !o.loads.empty(), kind_of(body), o.dt);
+      },
+      py::make_tuple(body.mass(), largest_moment(body)));
+  return out;
+}
+
 template <class Body, class State>
 py::object simulate_one(const Body& body, const State& initial, const SimulationOptions& o, const std::string& method,
                         py::handle progress, bool scalar_first, bool error, py::handle accuracy_level) {
@@ -124,17 +151,57 @@ py::object simulate_one(const Body& body, const State& initial, const Simulation
   }
   if (tr.interrupted) monitor.raise();  // the records so far are dropped with tr
   warn_after_run(tr, o, method);
-  SimulationResult result = to_result(std::move(tr), scalar_first);
-  if (estimate) result.error = py::cast(to_global_error(std::move(*estimate), false));
-  py::object out = py::cast(std::move(result));
-  out.cast<SimulationResult&>().balance = balance_after_run(
-      out, accuracy_level, method, o.dt,
-      [&](const py::module_& balance) {
-        return balance.attr("of_body")(out, body.mass(), balance_inertia(body), py_io::to_array(o.gravity_W),
-                                       !o.loads.empty(), kind_of(body), o.dt);
-      },
-      py::make_tuple(body.mass(), largest_moment(body)));
-  return out;
+  return result_object(body, std::move(tr), o, scalar_first,
+                       estimate ? py::cast(to_global_error(std::move(*estimate), false)) : py::none(), py::none(),
+                       accuracy_level);
+}
+
+// The quantity a tolerance bounds by default: the position of a particle, the attitude of a body that turns.
+ErrorMeasure default_measure(const Particle&) { return ErrorMeasure::position; }
+ErrorMeasure default_measure(const RigidBody&) { return ErrorMeasure::attitude; }
+ErrorMeasure default_measure(const PlanarBody&) { return ErrorMeasure::attitude; }
+
+// simulate(..., tolerance=) of one body: the candidates the body takes (a one-step run of each; an explicit
+// `method` is the only one), the planner (tolerance.hpp) with the GIL released, ToleranceError when the
+// tolerance is not met.
+template <class Body, class State>
+py::object simulate_to_tolerance(const Body& body, const State& initial, SimulationOptions base, bool method_given,
+                                 const ToleranceArgs& a, py::handle progress, bool scalar_first,
+                                 py::handle accuracy_level) {
+  std::vector<ToleranceCandidate> candidates;
+  for (const Method method : method_given ? std::vector<Method>{base.method} : tolerance_methods()) {
+    SimulationOptions probe = base;
+    probe.method = method, probe.dt = a.horizon, probe.steps = 1;
+    try {
+      simulate(body, initial, probe);  // e.g. 'exact' refuses a couple
+    } catch (const std::invalid_argument&) {
+      if (method_given) throw;
+      continue;
+    }
+    candidates.push_back({method, method_info(method).order});
+  }
+  PythonMonitor monitor(progress);
+  if (monitor.needed()) base.monitor = [&monitor](std::int64_t steps_done) { return monitor(steps_done); };
+  ToleranceRun<Trajectory> run;
+  {
+    py::gil_scoped_release release;
+    run = run_to_tolerance<Trajectory>(candidates, base, {a.tolerance, a.measure, a.horizon, a.max_steps},
+                                       [&](const ToleranceCandidate& c, const SimulationOptions& o) {
+                                         SimulationOptions x = o;
+                                         x.method = c.method;
+                                         return simulate(body, initial, x);
+                                       });
+  }
+  if (run.interrupted) monitor.raise();
+  if (!run.ran) raise_tolerance_error(run.choice, py::none());
+  SimulationOptions final_options = base;
+  final_options.method = run.choice.method, final_options.dt = run.choice.dt, final_options.steps = run.choice.steps;
+  warn_after_run(run.records, final_options, method_info(run.choice.method).name);
+  py::object result = result_object(body, std::move(run.records), final_options, scalar_first,
+                                    py::cast(to_global_error(std::move(run.estimate), false)), py::cast(run.choice),
+                                    run.choice.met ? accuracy_level : py::none());
+  if (!run.choice.met) raise_tolerance_error(run.choice, result);
+  return result;
 }
 
 // simulate: every argument converted by name before the run (see simulate_doc); a scene's run is
@@ -147,20 +214,31 @@ py::typing::Union<SimulationResult, SceneResult> simulate_py(py::handle model, p
                                                              py::handle gravity, py::handle t0,
                                                              py::handle scalar_first, py::handle progress,
                                                              py::handle duration, py::handle error,
-                                                             py::handle accuracy_level) {
+                                                             py::handle accuracy_level, py::handle tolerance,
+                                                             py::handle measure, py::handle max_steps) {
+  const ToleranceHandles to{tolerance, measure, max_steps};
   if (is_scene(model)) {
     return py::reinterpret_borrow<SimulateResult>(simulate_scene_py(model, initial, dt, steps, method, record_every,
                                                                     loads, gravity, t0, scalar_first, progress,
-                                                                    duration, error, accuracy_level));
+                                                                    duration, error, accuracy_level, to));
   }
   if (is_pivoted(model) || is_gyrostat(model)) {  // the one-body scene of the body, its gravity and loads
     const py::object scene = is_gyrostat(model) ? gyrostat_scene(model, loads, gravity) : pivoted_scene(model, loads, gravity);
     return py::reinterpret_borrow<SimulateResult>(simulate_scene_py(scene, py::make_tuple(initial), dt, steps, method,
                                                                     record_every, py::none(), py::none(), t0,
                                                                     scalar_first, progress, duration, error,
-                                                                    accuracy_level));
+                                                                    accuracy_level, to));
   }
   return py::reinterpret_borrow<SimulateResult>(with_model(model, initial, "initial", [&](const auto& body, const auto& state) {
+    const auto target =
+        as_tolerance_args(tolerance, measure, max_steps, dt, steps, duration, error, default_measure(body));
+    if (target) {
+      SimulationOptions o = as_run_options(method, loads, gravity);
+      o.record_every = py_io::as_int(record_every, "record_every", 1);
+      o.t0 = py_io::as_scalar(py_io::in_si(t0, "s", "t0"), "t0");
+      return simulate_to_tolerance(body, state, o, !method.is_none(), *target, progress,
+                                   py_io::as_bool(scalar_first, "scalar_first"), as_accuracy_level(accuracy_level));
+    }
     SimulationOptions o = as_options(dt, method, loads, gravity);
     o.steps = as_steps(steps, duration, o.dt);
     o.record_every = py_io::as_int(record_every, "record_every", 1);
@@ -179,7 +257,7 @@ constexpr const char* result_arrays[] = {"t", "p_W", "q_WB", "v_W", "w_B", "kine
 py::tuple result_state(const SimulationResult& r) {
   return py::make_tuple(r.t, r.p_W, r.q_WB, r.v_W, r.w_B, r.kinetic_energy, r.total_energy, r.angular_momentum_norm,
                         r.quaternion_norm_error, r.work, r.diverged, r.unconverged_steps, r.elapsed_seconds,
-                        r.scalar_first, r.error, r.balance);
+                        r.scalar_first, r.error, r.balance, r.choice);
 }
 
 // A pickled array as a read-only float64 copy of the shape it must have ((n,) or (n, k), n records).
@@ -195,21 +273,28 @@ Array unpickled_array(py::handle obj, const char* name, py::ssize_t n, py::ssize
 }
 
 // 13 items: a state without scalar_first (q_WB as (x, y, z, w)), as simulate_batch's samples and earlier pickles;
-// 14: without the error estimate (None then); 15: without the balance (None then)
+// 14: without the error estimate (None then); 15: without the balance (None then); 16: without the choice of a run
+// to a tolerance (None then)
 SimulationResult result_from_state(const py::tuple& t) {
-  if (t.size() < 13 || t.size() > 16) {
-    py_io::throw_value_error("SimulationResult pickle", "a tuple of 13 to 16 items", std::to_string(t.size()) + " items");
+  if (t.size() < 13 || t.size() > 17) {
+    py_io::throw_value_error("SimulationResult pickle", "a tuple of 13 to 17 items", std::to_string(t.size()) + " items");
   }
   const py::ssize_t n = py::len(t[0]);
   auto column = [&](int i, py::ssize_t k) { return unpickled_array(t[i], result_arrays[i], n, k); };
   SimulationResult r{column(0, 0), column(1, 3), column(2, 4), column(3, 3), column(4, 3), column(5, 0),
                      column(6, 0), column(7, 0), column(8, 0), column(9, 0), t[10].cast<bool>(),
                      t[11].cast<std::int64_t>(), t[12].cast<double>(), t.size() >= 14 && t[13].cast<bool>()};
+  if (t.size() == 17 && !t[16].is_none()) {
+    if (!py::isinstance<ToleranceChoice>(t[16])) {
+      py_io::throw_type_error("SimulationResult pickle choice", "a ToleranceChoice or None", t[16]);
+    }
+    r.choice = py::reinterpret_borrow<py::object>(t[16]);
+  }
   if (t.size() >= 15 && !t[14].is_none()) {
     if (!py::isinstance<GlobalError>(t[14])) py_io::throw_type_error("SimulationResult pickle error", "a GlobalError or None", t[14]);
     r.error = py::reinterpret_borrow<py::object>(t[14]);
   }
-  if (t.size() == 16 && !t[15].is_none()) r.balance = checked_balance(t[15], "SimulationResult pickle balance");
+  if (t.size() >= 16 && !t[15].is_none()) r.balance = checked_balance(t[15], "SimulationResult pickle balance");
   return r;
 }
 
@@ -386,10 +471,10 @@ model : Particle, PlanarBody, RigidBody, PivotedBody, PivotedPlanarBody, Gyrosta
 initial : ParticleState, PlanarBodyState, RigidBodyState, PivotedBodyState, ..., or list
     The state of `model`'s kind at t0 (also PivotedPlanarBodyState or GyrostatState); for a Scene or
     CompiledScene, a list of the states of its bodies.
-dt : float or pint.Quantity
-    Step [s], finite and > 0 (a quantity is converted to s).
+dt : float or pint.Quantity, optional
+    Step [s], finite and > 0 (a quantity is converted to s). Exactly one of dt and tolerance.
 steps : int, optional
-    Number of steps, >= 0. Exactly one of steps and duration.
+    Number of steps, >= 0. Exactly one of steps and duration (with tolerance: duration).
 method : str, optional
     A name of methods(): 'explicit_euler', 'semi_implicit_euler', 'semi_implicit_euler_implicit_gyroscopic',
     'rk4', 'rkmk4', 'implicit_midpoint', 'splitting_dlm', 'splitting_dlm_yoshida4', 'exact_flow_kick' or 'exact'.
@@ -415,22 +500,39 @@ duration : float or pint.Quantity, keyword-only, optional
 error : bool, keyword-only, default True
     Estimate the global error of every record (result.error, a GlobalError) by two more runs of the method at 2 dt
     and 4 dt (+0.75x the cost; global Richardson extrapolation with an observed-order check, see GlobalError).
-    False: no estimate (result.error is None), the cost of the run alone.
+    False: no estimate (result.error is None), the cost of the run alone. True with tolerance.
 accuracy_level : float or None, keyword-only, default 1e-3
     The relative residual of an energy or momentum balance (result.balance) beyond which a run without a reliable
     global error estimate warns with an AccuracyWarning (where the estimate is reliable, a residual beyond 10 times
     its bound warns instead); finite and > 0. None: no AccuracyWarning (the balance is still made). Runs that are
     coarse on purpose (work-precision studies) pass None.
+tolerance : float or pint.Quantity, keyword-only, optional
+    Instead of dt: the largest error of `measure` the run may have, absolute, in the measure's unit (a quantity
+    is converted to it), finite and > 0. The method (unless given) and dt are chosen: each candidate method is
+    piloted on a short run, its error fitted as C dt^p (t - t0), and the cheapest (method, dt) predicted to meet
+    half the tolerance is run with its global error estimate as the certificate, refined once when that fails
+    (see ToleranceChoice). The horizon is `duration` (steps depend on dt: steps is refused); record_every counts
+    steps of the chosen dt; steps is a multiple of lcm(record_every, 4), so every record is checked.
+    result.choice says what was chosen and why. A scene with a PythonForce is refused (ToleranceError): its
+    estimate is never reliable.
+measure : str, keyword-only, optional
+    The quantity the tolerance bounds, its largest estimate over the records (and bodies): 'attitude' [rad],
+    'angular_velocity' [rad/s], 'position' [m], 'velocity' [m/s], 'energy' [J] or 'angular_momentum'
+    [kg m^2/s]. None (the default): 'position' for a Particle and a scene of particles, else 'attitude'.
+max_steps : int, keyword-only, optional
+    The cost cap of a run to a tolerance: no run (the final run and its refinement) of more steps, >= 4.
+    None (the default): 10_000_000.
 
 Returns
 -------
 SimulationResult or SceneResult
     A SimulationResult for a Particle, PlanarBody or RigidBody: one row per record, n records (t, p_W, q_WB, v_W,
     w_B, kinetic_energy, total_energy, angular_momentum_norm, quaternion_norm_error, work; diverged,
-    unconverged_steps, elapsed_seconds; error; balance). A SceneResult for a Scene, a CompiledScene, a pivoted body
-    or a Gyrostat. The records are those of the run at dt whether or not error is True; elapsed_seconds is its
-    loop's. result.balance (a Balance, on every run) holds the residuals of the work-energy and impulse-momentum
-    balances per record, zero for the exact dynamics.
+    unconverged_steps, elapsed_seconds; error; balance; choice). A SceneResult for a Scene, a CompiledScene, a
+    pivoted body or a Gyrostat. The records are those of the run at dt whether or not error is True; elapsed_seconds
+    is its loop's. result.balance (a Balance, on every run) holds the residuals of the work-energy and
+    impulse-momentum balances per record, zero for the exact dynamics. With tolerance, result.choice is a
+    ToleranceChoice (else None).
 
 Raises
 ------
@@ -438,7 +540,12 @@ ValueError
     A bad argument, named: dt not > 0, steps < 0, both or neither of steps and duration, a duration that is not a
     whole number of steps of dt (the message gives the nearest durations that are), an unknown method (with the
     nearest name), record_every < 1, a recording larger than the memory available (record_every, with both
-    figures), a quantity of another dimension, loads or gravity for a scene, accuracy_level not finite and > 0.
+    figures), a quantity of another dimension, loads or gravity for a scene, accuracy_level not finite and > 0;
+    with tolerance: tolerance not finite and > 0, dt or steps given too, no duration, error False, an unknown
+    measure (with the nearest name), max_steps < 4.
+ToleranceError
+    A ValueError: the tolerance cannot be met within max_steps, the refined run's certificate still fails, or the
+    scene has a PythonForce; it carries the measured error, the choice and the best result (see ToleranceError).
 TypeError
     model not one of the kinds listed, or initial not of its kind (the message names it).
 KeyboardInterrupt
@@ -458,7 +565,8 @@ AccuracyWarning
 
 See Also
 --------
-step, simulate_batch, methods, SimulationResult, AppliedLoad, Scene, Balance, AccuracyWarning
+step, simulate_batch, methods, SimulationResult, AppliedLoad, Scene, GlobalError, Balance, AccuracyWarning,
+ToleranceChoice
 
 Notes
 -----
@@ -499,6 +607,12 @@ Its balances close: the energy residual T - T0 - work and |H_G - H_G0| stay far 
 
 >>> r.balance.verdict["energy"], r.balance.verdict["angular_momentum"], bool(abs(r.balance.energy[-1]) < 1e-9)
 ('closed', 'closed', True)
+
+Or ask for the accuracy and let the method and dt be chosen: the attitude within 1e-7 rad over 10 s:
+
+>>> r = rd.simulate(body, rd.RigidBodyState(w_B=[0.1, 1.0, 0.1]), duration=10.0, tolerance=1e-7)
+>>> r.choice.met, bool(r.error.attitude.max() <= 1e-7), float(r.t[-1])
+(True, True, 10.0)
 )doc";
 
 const char* const step_doc = R"doc(One step of `method` from `state` at time t to t + dt.
@@ -843,6 +957,8 @@ array([1.5, 1.5, 1.5])
                     "a pickled or batch result).")
       .def_readonly("balance", &SimulationResult::balance,
                     "The energy and momentum balance of every record (a Balance), or None (a batch result).")
+      .def_readonly("choice", &SimulationResult::choice,
+                    "What simulate(..., tolerance=) chose and why (a ToleranceChoice), or None (a run at a given dt).")
       .def("__repr__", &result_repr)
       .def(py::pickle(&result_state, &result_from_state))
       // the table lives in Python (rigiddyn/trajectory.py): one definition of the columns for CSV, npz,
@@ -880,11 +996,12 @@ Examples
 )doc");
 
 #define RIGIDDYN_SIMULATE_ARGS                                                                              \
-  py::arg("model"), py::arg("initial"), py::arg("dt"), py::arg("steps") = py::none(),                        \
+  py::arg("model"), py::arg("initial"), py::arg("dt") = py::none(), py::arg("steps") = py::none(),      \
       py::arg("method") = py::none(), py::arg("record_every") = 1, py::arg("loads") = py::none(),          \
       py::arg("gravity") = py::none(), py::arg("t0") = 0.0, py::arg("scalar_first") = false,               \
       py::arg("progress") = py::none(), py::kw_only(), py::arg("duration") = py::none(),     \
-      py::arg("error") = true, py::arg("accuracy_level") = 1e-3
+      py::arg("error") = true, py::arg("accuracy_level") = 1e-3, py::arg("tolerance") = py::none(),         \
+      py::arg("measure") = py::none(), py::arg("max_steps") = py::none()
 #define RIGIDDYN_STEP_ARGS                                                                                  \
   py::arg("model"), py::arg("state"), py::arg("dt"), py::arg("method") = py::none(), py::arg("loads") = py::none(), \
       py::arg("gravity") = py::none(), py::arg("t") = py::none()

@@ -5,10 +5,12 @@
 // bind_scene_elements.cpp. Compatibility warnings are rigiddyn.SceneCompatibilityWarning (a UserWarning).
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <memory>
 #include <optional>
 #include <string>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include "bindings.hpp"
@@ -17,6 +19,7 @@
 #include "python_run.hpp"
 #include "repr.hpp"
 #include "scene_run.hpp"
+#include "tolerance_run.hpp"
 #include "rigiddyn/scene/compile.hpp"
 #include "rigiddyn/scene/scene_order.hpp"
 #include "rigiddyn/scene/simulate_scene.hpp"
@@ -319,7 +322,7 @@ const ResultArray result_arrays[] = {
 constexpr std::size_t result_array_count = sizeof(result_arrays) / sizeof(result_arrays[0]);
 
 py::tuple scene_result_state(const SceneResult& r) {
-  py::tuple out(result_array_count + 11);
+  py::tuple out(result_array_count + 12);
   for (std::size_t i = 0; i < result_array_count; ++i) out[i] = r.*(result_arrays[i].member);
   out[result_array_count] = r.body_names;
   out[result_array_count + 1] = r.elements;
@@ -332,18 +335,20 @@ py::tuple scene_result_state(const SceneResult& r) {
   out[result_array_count + 8] = r.wheel_bodies;
   out[result_array_count + 9] = r.error;
   out[result_array_count + 10] = r.balance;
+  out[result_array_count + 11] = r.choice;
   return out;
 }
 
-// result_array_count + 5, + 6, + 9 or + 10 items: a state without scalar_first (q_WB as (x, y, z, w)), without the
-// wheels, without the error estimate or without the balance, as earlier pickles
+// result_array_count + 5, + 6, + 9, + 10 or + 11 items: a state without scalar_first (q_WB as (x, y, z, w)), without
+// the wheels, without the error estimate, without the balance or without the choice of a run to a tolerance, as
+// earlier pickles
 SceneResult scene_result_from_state(const py::tuple& t) {
   const std::size_t wheels = result_array_count + 9;  // the size of a state with the wheels
-  if (t.size() != result_array_count + 5 && t.size() != result_array_count + 6 && t.size() != wheels &&
-      t.size() != wheels + 1 && t.size() != wheels + 2) {
+  if (t.size() != result_array_count + 5 && t.size() != result_array_count + 6 &&
+      (t.size() < wheels || t.size() > wheels + 3)) {
     py_io::throw_value_error("SceneResult pickle", "a tuple of " + std::to_string(result_array_count + 5) + ", " +
-                             std::to_string(result_array_count + 6) + ", " + std::to_string(wheels) + ", " +
-                             std::to_string(wheels + 1) + " or " + std::to_string(wheels + 2) + " items",
+                             std::to_string(result_array_count + 6) + " or " + std::to_string(wheels) + " to " +
+                             std::to_string(wheels + 3) + " items",
                              std::to_string(t.size()) + " items");
   }
   SceneResult r;
@@ -372,7 +377,13 @@ SceneResult scene_result_from_state(const py::tuple& t) {
   r.scalar_first = t.size() >= result_array_count + 6 && t[result_array_count + 5].cast<bool>();
   r.wheel_bodies = t.size() >= wheels ? py::tuple(t[result_array_count + 8]) : py::tuple();
   if (t.size() >= wheels + 1) r.error = py::reinterpret_borrow<py::object>(t[wheels]);  // a GlobalError or None
-  if (t.size() == wheels + 2 && !t[wheels + 1].is_none()) r.balance = checked_balance(t[wheels + 1], "SceneResult pickle balance");
+  if (t.size() >= wheels + 2 && !t[wheels + 1].is_none()) r.balance = checked_balance(t[wheels + 1], "SceneResult pickle balance");
+  if (t.size() == wheels + 3 && !t[wheels + 2].is_none()) {
+    if (!py::isinstance<ToleranceChoice>(t[wheels + 2])) {
+      py_io::throw_type_error("SceneResult pickle choice", "a ToleranceChoice or None", t[wheels + 2]);
+    }
+    r.choice = py::reinterpret_borrow<py::object>(t[wheels + 2]);
+  }
   const auto nw = static_cast<py::ssize_t>(r.wheel_bodies.size());
   // each wheel column, (n, nw) (empty in an earlier pickle)
   const auto wheel_column = [&](std::size_t at, const char* name) {
@@ -622,14 +633,99 @@ std::string momentum_balance_not_applicable(const CompiledScene& compiled) {
   return {};
 }
 
+// The SceneResult of a run of h at step dt as its Python object: its error estimate and choice as given, its balance
+// made (rigiddyn._balance) with the AccuracyWarning at `level` when it does not close.
+py::object scene_result_object(SceneSimulation&& r, const CompiledSceneHandle& h, double dt, bool scalar_first,
+                               py::object error, py::object choice, py::handle level) {
+  const auto n = static_cast<py::ssize_t>(r.size());
+  const std::string not_applicable = momentum_balance_not_applicable(*h.compiled);
+  py::object impulse = py::none(), angular_impulse = py::none();
+  if (not_applicable.empty() && r.impulse_W.size() == 3 * r.size()) {
+    impulse = adopt(std::move(r.impulse_W), {n, 3});
+    angular_impulse = adopt(std::move(r.angular_impulse_W), {n, 3});
+  }
+  SceneResult result = to_scene_result(std::move(r), h.scene, *h.compiled, scalar_first);
+  result.error = std::move(error);
+  result.choice = std::move(choice);
+  py::object out = py::cast(std::move(result));
+  out.cast<SceneResult&>().balance =
+      balance_after_run(out, level, method_info(h.method).name, dt, [&](const py::module_& balance) {
+        return balance.attr("of_scene")(out, impulse, angular_impulse, not_applicable, dt);
+      });
+  return out;
+}
+
+// The quantity a tolerance bounds by default for a scene: the attitude when a body turns, else the position.
+ErrorMeasure default_scene_measure(const Scene& scene) {
+  for (const Body& body : scene.bodies) {
+    if (!std::holds_alternative<Particle>(body)) return ErrorMeasure::attitude;
+  }
+  return ErrorMeasure::position;
+}
+
+// simulate(..., tolerance=) of a scene: a Scene is compiled for each candidate it takes (a CompiledScene is its
+// own only candidate), each at the order it has (scene_order); the planner (tolerance.hpp) with the GIL released;
+// ToleranceError when the tolerance is not met, or before any run for a force the certificate cannot check.
+py::object simulate_scene_to_tolerance(py::handle model, py::handle method, const std::vector<BodyState>& initial,
+                                       const CompiledSceneHandle& given, SimulationOptions base, const ToleranceArgs& a,
+                                       py::handle progress, bool scalar_first, py::handle level) {
+  const std::string opaque = opaque_force(*given.compiled);
+  if (!opaque.empty()) {
+    refuse_tolerance(opaque, "a force the core cannot see into may switch inside a step, which the global error "
+                             "estimate cannot check (it is never called reliable); pass dt= and read result.error");
+  }
+  const bool fixed = py::isinstance<CompiledSceneHandle>(model) || !method.is_none();
+  std::vector<CompiledSceneHandle> compiled;
+  std::vector<ToleranceCandidate> candidates;
+  for (const Method m : fixed ? std::vector<Method>{given.method} : tolerance_methods()) {
+    try {
+      compiled.push_back(m == given.method ? given : compile_handle(given.scene, m, false));
+    } catch (const std::invalid_argument&) {
+      continue;  // a method the scene does not take (e.g. 'exact' with a couple)
+    }
+    candidates.push_back({m, scene_order(*compiled.back().compiled)});
+  }
+  PythonMonitor monitor(progress);
+  if (monitor.needed()) base.monitor = [&monitor](std::int64_t steps_done) { return monitor(steps_done); };
+  ToleranceRun<SceneSimulation> run;
+  {
+    py::gil_scoped_release release;
+    run = run_to_tolerance<SceneSimulation>(
+        candidates, base, {a.tolerance, a.measure, a.horizon, a.max_steps},
+        [&](const ToleranceCandidate& c, const SimulationOptions& o) {
+          const auto at = std::find_if(compiled.begin(), compiled.end(),
+                                       [&](const CompiledSceneHandle& h) { return h.method == c.method; });
+          SimulationOptions x = o;
+          x.method = c.method;
+          return simulate(*at->compiled, initial, x);
+        });
+  }
+  if (run.interrupted) monitor.raise();
+  if (!run.ran) raise_tolerance_error(run.choice, py::none());
+  SimulationOptions final_options = base;
+  final_options.method = run.choice.method, final_options.dt = run.choice.dt, final_options.steps = run.choice.steps;
+  warn_after_run(run.records, final_options, method_info(run.choice.method).name);
+  const auto at = std::find_if(compiled.begin(), compiled.end(),
+                               [&](const CompiledSceneHandle& h) { return h.method == run.choice.method; });
+  py::object result = scene_result_object(std::move(run.records), *at, run.choice.dt, scalar_first,
+                                          py::cast(to_global_error(std::move(run.estimate), true)),
+                                          py::cast(run.choice), run.choice.met ? level : py::none());
+  if (!run.choice.met) raise_tolerance_error(run.choice, result);
+  return result;
+}
+
 py::object simulate_scene_py(py::handle model, py::handle initial, py::handle dt, py::handle steps, py::handle method,
                              py::handle record_every, py::handle loads, py::handle gravity, py::handle t0,
                              py::handle scalar_first, py::handle progress, py::handle duration, py::handle error,
-                             py::handle accuracy_level) {
+                             py::handle accuracy_level, const ToleranceHandles& to) {
   refuse_body_arguments(loads, gravity);
+  const bool tolerance_given = !to.tolerance.is_none();
   SimulationOptions o;
-  o.dt = py_io::as_scalar(py_io::in_si(dt, "s", "dt"), "dt");
-  o.steps = as_steps(steps, duration, o.dt);
+  if (!tolerance_given) {  // its checks of dt, steps and duration (as_tolerance_args otherwise)
+    as_tolerance_args(to.tolerance, to.measure, to.max_steps, dt, steps, duration, error, ErrorMeasure::attitude);
+    o.dt = py_io::as_scalar(py_io::in_si(dt, "s", "dt"), "dt");
+    o.steps = as_steps(steps, duration, o.dt);
+  }
   o.record_every = py_io::as_int(record_every, "record_every", 1);
   o.t0 = py_io::as_scalar(py_io::in_si(t0, "s", "t0"), "t0");
   const bool first = py_io::as_bool(scalar_first, "scalar_first");
@@ -638,6 +734,11 @@ py::object simulate_scene_py(py::handle model, py::handle initial, py::handle dt
   const CompiledSceneHandle h = compiled_for(model, method);
   o.method = h.method;
   const std::vector<BodyState> initial_states = as_scene_states(initial, h.scene, "initial");
+  if (tolerance_given) {
+    const auto a = as_tolerance_args(to.tolerance, to.measure, to.max_steps, dt, steps, duration, error,
+                                     default_scene_measure(h.scene));
+    return simulate_scene_to_tolerance(model, method, initial_states, h, o, *a, progress, first, level);
+  }
   PythonMonitor monitor(progress);
   if (monitor.needed()) o.monitor = [&monitor](std::int64_t steps_done) { return monitor(steps_done); };
   SceneSimulation r;
@@ -652,21 +753,9 @@ py::object simulate_scene_py(py::handle model, py::handle initial, py::handle dt
   }
   if (r.interrupted) monitor.raise();  // the records so far are dropped with r
   warn_after_run(r, o, method_info(h.method).name);
-  const auto n = static_cast<py::ssize_t>(r.size());
-  const std::string not_applicable = momentum_balance_not_applicable(*h.compiled);
-  py::object impulse = py::none(), angular_impulse = py::none();
-  if (not_applicable.empty() && r.impulse_W.size() == 3 * r.size()) {
-    impulse = adopt(std::move(r.impulse_W), {n, 3});
-    angular_impulse = adopt(std::move(r.angular_impulse_W), {n, 3});
-  }
-  SceneResult result = to_scene_result(std::move(r), h.scene, *h.compiled, first);
-  if (estimate) result.error = py::cast(to_global_error(std::move(*estimate), true));
-  py::object out = py::cast(std::move(result));
-  out.cast<SceneResult&>().balance =
-      balance_after_run(out, level, method_info(h.method).name, o.dt, [&](const py::module_& balance) {
-        return balance.attr("of_scene")(out, impulse, angular_impulse, not_applicable, o.dt);
-      });
-  return out;
+  return scene_result_object(std::move(r), h, o.dt, first,
+                             estimate ? py::cast(to_global_error(std::move(*estimate), true)) : py::none(),
+                             py::none(), level);
 }
 
 py::object step_scene_py(py::handle model, py::handle state, py::handle dt, py::handle method, py::handle loads,
@@ -902,6 +991,8 @@ void bind_scene(py::module_& m) {
                     "The global error estimate of every record (a GlobalError: per body (n, nb) for the state, per "
                     "record (n,) for the energy and |L|), or None (simulate(..., error=False), a pickled or batch "
                     "result).")
+      .def_readonly("choice", &SceneResult::choice,
+                    "What simulate(..., tolerance=) chose and why (a ToleranceChoice), or None (a run at a given dt).")
       .def_readonly("scalar_first", &SceneResult::scalar_first,
                     "True if q_WB's rows are (w, x, y, z): the result of simulate(..., scalar_first=True)")
       .def("__repr__", &scene_result_repr)

@@ -14,6 +14,7 @@ void bind_gyrostat(pybind11::module_& m);  // after bind_bodies: a Gyrostat hold
 // not zero and ScheduledLoads(body=0, loads) when loads are given (bind_gyrostat.cpp)
 bool is_gyrostat(pybind11::handle body);
 pybind11::object gyrostat_scene(pybind11::handle model, pybind11::handle loads, pybind11::handle gravity);
+void bind_tolerance(pybind11::module_& m);  // ToleranceChoice, ToleranceError (tolerance_run.hpp)
 void bind_dynamics(pybind11::module_& m);
 void bind_exact(pybind11::module_& m);
 void bind_exact_dynamics(pybind11::module_& m);  // after bind_pivoted and bind_scene_frame

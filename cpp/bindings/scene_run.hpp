@@ -39,6 +39,12 @@ struct SceneResult {
   bool scalar_first = false;  // q_WB rows as (w, x, y, z)
   pybind11::object error = pybind11::none();  // a GlobalError (simulate(..., error=True)) or None
   pybind11::object balance = pybind11::none();  // a rigiddyn.Balance (every simulate run) or None (a batch result)
+  pybind11::object choice = pybind11::none();  // a ToleranceChoice (simulate(..., tolerance=...)) or None
+};
+
+// simulate's arguments of a run to a tolerance (tolerance_run.hpp), as given.
+struct ToleranceHandles {
+  pybind11::handle tolerance, measure, max_steps;
 };
 
 // The body index of each gyrostat wheel of the scene, in the order of SceneSimulation::wheel_speed's columns.
@@ -57,7 +63,8 @@ pybind11::object simulate_scene_py(pybind11::handle model, pybind11::handle init
                                    pybind11::handle steps, pybind11::handle method, pybind11::handle record_every,
                                    pybind11::handle loads, pybind11::handle gravity, pybind11::handle t0,
                                    pybind11::handle scalar_first, pybind11::handle progress,
-                                   pybind11::handle duration, pybind11::handle error, pybind11::handle accuracy_level);
+                                   pybind11::handle duration, pybind11::handle error, pybind11::handle accuracy_level,
+                                   const ToleranceHandles& to);
 pybind11::object step_scene_py(pybind11::handle model, pybind11::handle state, pybind11::handle dt,
                                pybind11::handle method, pybind11::handle loads, pybind11::handle gravity,
                                pybind11::handle t);

@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['AppliedLoad', 'AtmosphericDrag', 'BatchResult', 'BatchSceneResult', 'BodyAcceleration', 'ComWrench', 'CompiledScene', 'CompoundPendulumSolution', 'ConstantThrustSolution', 'DensityIntegral', 'Drag', 'ElementField', 'FORCE_ELEMENTS', 'FixedJoint', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'FreeJoint', 'GlobalError', 'GravityGradient', 'Gyrostat', 'GyrostatState', 'InertiaCheck', 'InertiaReport', 'KineticEnergy', 'LagrangeTopSolution', 'MagneticDipole', 'MassFlow', 'MeshWeldWarning', 'Motion', 'MutualGravity', 'Particle', 'ParticleState', 'PivotedAcceleration', 'PivotedBody', 'PivotedBodyState', 'PivotedPlanarAcceleration', 'PivotedPlanarBody', 'PivotedPlanarBodyState', 'PivotedPlanarTorque', 'PivotedTorque', 'PlanarAcceleration', 'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointMassGravity', 'PointVelocity', 'PrincipalAxes', 'PrismaticJoint', 'PythonForce', 'ReactionWheel', 'RevoluteJoint', 'RigidBody', 'RigidBodyState', 'RotatingFrameFreeParticle', 'Scene', 'SceneCompatibilityWarning', 'SceneFrame', 'SceneResult', 'ScheduledLoads', 'Screw', 'SimulationResult', 'SolarRadiationPressure', 'SpatialInertia', 'SphericalJoint', 'SpringDamper', 'Thrust', 'TorqueFreeSolution', 'Transform', 'Tree', 'UniformGravity', 'WeldedMesh', 'Wheel', 'ZonalGravity', 'aba', 'align_vectors', 'angular_distance', 'angular_momentum', 'angular_velocity_from_quat_rate', 'apply_impulse', 'attitude_from_orbit_frame', 'attitude_to_orbit_frame', 'axis_angle_to_quat', 'bias_forces', 'box_shell', 'compose_kinematics', 'composite', 'crba', 'davenport_to_quat', 'default_thread_count', 'eccentric_to_mean_anomaly', 'eccentric_to_true_anomaly', 'elements_to_state', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'forward_kinematics', 'from_point_masses', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kepler_propagate', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mean_to_eccentric_anomaly', 'mean_to_true_anomaly', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation', 'nearest_valid_inertia', 'orbit_frame_angular_velocity', 'orbit_frame_rotation', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix', 'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh', 'rnea', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'semi_latus_rectum', 'simulate', 'simulate_batch', 'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'state_to_elements', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'true_to_eccentric_anomaly', 'true_to_mean_anomaly', 'twist_to_screw', 'vee', 'weld_vertices']
+__all__: list[str] = ['AppliedLoad', 'AtmosphericDrag', 'BatchResult', 'BatchSceneResult', 'BodyAcceleration', 'ComWrench', 'CompiledScene', 'CompoundPendulumSolution', 'ConstantThrustSolution', 'DensityIntegral', 'Drag', 'ElementField', 'FORCE_ELEMENTS', 'FixedJoint', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'FreeJoint', 'GlobalError', 'GravityGradient', 'Gyrostat', 'GyrostatState', 'InertiaCheck', 'InertiaReport', 'KineticEnergy', 'LagrangeTopSolution', 'MagneticDipole', 'MassFlow', 'MeshWeldWarning', 'Motion', 'MutualGravity', 'Particle', 'ParticleState', 'PivotedAcceleration', 'PivotedBody', 'PivotedBodyState', 'PivotedPlanarAcceleration', 'PivotedPlanarBody', 'PivotedPlanarBodyState', 'PivotedPlanarTorque', 'PivotedTorque', 'PlanarAcceleration', 'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointMassGravity', 'PointVelocity', 'PrincipalAxes', 'PrismaticJoint', 'PythonForce', 'ReactionWheel', 'RevoluteJoint', 'RigidBody', 'RigidBodyState', 'RotatingFrameFreeParticle', 'Scene', 'SceneCompatibilityWarning', 'SceneFrame', 'SceneResult', 'ScheduledLoads', 'Screw', 'SimulationResult', 'SolarRadiationPressure', 'SpatialInertia', 'SphericalJoint', 'SpringDamper', 'Thrust', 'ToleranceChoice', 'ToleranceError', 'TorqueFreeSolution', 'Transform', 'Tree', 'UniformGravity', 'WeldedMesh', 'Wheel', 'ZonalGravity', 'aba', 'align_vectors', 'angular_distance', 'angular_momentum', 'angular_velocity_from_quat_rate', 'apply_impulse', 'attitude_from_orbit_frame', 'attitude_to_orbit_frame', 'axis_angle_to_quat', 'bias_forces', 'box_shell', 'compose_kinematics', 'composite', 'crba', 'davenport_to_quat', 'default_thread_count', 'eccentric_to_mean_anomaly', 'eccentric_to_true_anomaly', 'elements_to_state', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'forward_kinematics', 'from_point_masses', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kepler_propagate', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mean_to_eccentric_anomaly', 'mean_to_true_anomaly', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation', 'nearest_valid_inertia', 'orbit_frame_angular_velocity', 'orbit_frame_rotation', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix', 'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh', 'rnea', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'semi_latus_rectum', 'simulate', 'simulate_batch', 'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'state_to_elements', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'true_to_eccentric_anomaly', 'true_to_mean_anomaly', 'twist_to_screw', 'vee', 'weld_vertices']
 class _Quantity(typing.Protocol):
     """A pint Quantity of any registry (the core converts it to SI by its magnitude and units)."""
     @property
@@ -4876,6 +4876,188 @@ class MassFlow:
         """
         dm/dt [kg/s] (a float) or the callable rate(t)
         """
+class ToleranceError(ValueError):
+    """
+    simulate(..., tolerance=) could not meet the tolerance: a ValueError with the figures.
+    
+    Raised when the cost cap (max_steps) would be exceeded, when the certificate of the refined run still fails, when no
+    method reached its asymptotic regime in its pilots, or before any run for a model whose forces the certificate
+    cannot check (a PythonForce). The message gives the figures (the steps needed, the measured or predicted error).
+    
+    Parameters
+    ----------
+    message : str
+        The reason, with its figures (raised by simulate; not made by hand).
+    
+    Attributes
+    ----------
+    choice : ToleranceChoice or None
+        What was chosen and what happened (None for a refusal before any run).
+    error : float
+        The certified error of the best run, else the predicted error at max_steps, in the measure's unit (NaN for a
+        refusal before any run).
+    tolerance : float
+        The tolerance asked (NaN for a refusal).
+    measure : str or None
+        The quantity it bounds.
+    result : SimulationResult, SceneResult or None
+        The best run (None when none ran).
+    
+    See Also
+    --------
+    simulate, ToleranceChoice
+    
+    Examples
+    --------
+    >>> couple = rd.AppliedLoad(torque=[0.0, 0.0, 0.1], frame="body")
+    >>> try:
+    ...     rd.simulate(rd.RigidBody(1.0, [1.0, 2.0, 3.0]), rd.RigidBodyState(w_B=[0.1, 1.0, 0.1]), duration=20.0,
+    ...                 loads=couple, tolerance=1e-10, max_steps=8)
+    ... except rd.ToleranceError as e:
+    ...     print(e.measure, e.tolerance, e.result, "max_steps = 8" in str(e))
+    attitude 1e-10 None True
+    """
+class ToleranceChoice:
+    """
+    What simulate(..., tolerance=) chose, and why: result.choice.
+    
+    The planner pilots each candidate method on a short run (16 steps over a quarter of the horizon, shortened and
+    refined until its own global error estimate passes its order check), fits the error model
+    eps(t) ~ C dt^p (t - t0) (p the order the model has under the method, linear growth in t), and runs the cheapest
+    (method, dt) predicted to meet half the tolerance, cost = steps x the seconds per step its pilot measured. When its
+    run has 64 steps or more, the chosen method then runs over the whole horizon at a quarter of those steps and its
+    largest error, scaled by dt^p, sets the steps (an error that jumps after the short pilot's span is seen). The run's
+    global error estimate (GlobalError) is the certificate: when it is not accepted (see met), or above the tolerance,
+    the run is refined once, dt' = dt (tolerance / 2 / error)^(1/p) (dt / 2 when not accepted).
+    
+    Parameters
+    ----------
+    None
+        Made by simulate; it has no public constructor. Pickles; == compares every field.
+    
+    Attributes
+    ----------
+    method : str
+        The method of the final run.
+    order : int
+        Its order on this model (0: 'exact', the closed form, whose error is its round-off bound).
+    dt : float
+        Its step [s]; steps : int, its step count (duration / dt, a multiple of lcm(record_every, 4)).
+    measure : str
+        The quantity the tolerance bounds ('attitude', 'angular_velocity', 'position', 'velocity', 'energy' or
+        'angular_momentum'); tolerance : float, the bound, in the measure's unit.
+    predicted_error : float
+        The error the pilot's fit predicted for the first final run, in the measure's unit.
+    certified_error : float
+        The largest global error estimate of the measure over the records (and bodies) of the final run (NaN where a
+        record has none).
+    met : bool
+        The certificate holds: certified_error <= tolerance, and the measure's own estimate (its observed order
+        checked alone: result.error's record-wide verdict also checks the other quantities) is accepted on every
+        record: reliable, between two reliable records, an observed order above the window (an over-estimate), or an
+        estimate <= tolerance / 16 (a zero crossing of an oscillating error, the round-off of the first records).
+    refinements : int
+        0 or 1.
+    reason : str
+        The choice and its outcome, in words.
+    pilots : tuple of dict
+        One per candidate: method, order, dt, horizon, steps, error, constant (C), seconds_per_step, planned_steps,
+        planned_seconds and verdict ('used', or why not: pruned by order, not asymptotic, ...); the figures a pilot
+        did not reach are NaN (a pruned candidate has no error, constant or seconds_per_step).
+    pilot_seconds, run_seconds : float
+        Wall time of the pilots, and of the final run(s) with their estimates [s].
+    
+    See Also
+    --------
+    simulate, GlobalError, ToleranceError
+    
+    Examples
+    --------
+    >>> body = rd.RigidBody(1.0, [1.0, 2.0, 3.0])
+    >>> r = rd.simulate(body, rd.RigidBodyState(w_B=[0.1, 1.0, 0.1]), duration=10.0, tolerance=1e-6)
+    >>> c = r.choice
+    >>> c.met, c.measure, bool(c.certified_error <= 1e-6), c.steps * c.dt
+    (True, 'attitude', True, 10.0)
+    """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def certified_error(self) -> float:
+        """
+        The largest estimate of the measure over the final run's records and bodies (NaN: none).
+        """
+    @property
+    def dt(self) -> float:
+        """
+        The step of the final run [s].
+        """
+    @property
+    def measure(self) -> str:
+        """
+        The quantity the tolerance bounds (a str).
+        """
+    @property
+    def met(self) -> bool:
+        """
+        Every record reliable and certified_error <= tolerance.
+        """
+    @property
+    def method(self) -> str:
+        """
+        The method of the final run (a str).
+        """
+    @property
+    def order(self) -> int:
+        """
+        Its order on this model (0: 'exact').
+        """
+    @property
+    def pilot_seconds(self) -> float:
+        """
+        Wall time of the pilots [s].
+        """
+    @property
+    def pilots(self) -> tuple:
+        """
+        One dict per candidate method (see the class docstring).
+        """
+    @property
+    def predicted_error(self) -> float:
+        """
+        The error the pilot's fit predicted for the first final run, in the measure's unit.
+        """
+    @property
+    def reason(self) -> str:
+        """
+        The choice and its outcome, in words.
+        """
+    @property
+    def refinements(self) -> int:
+        """
+        0 or 1: the runs after the first.
+        """
+    @property
+    def run_seconds(self) -> float:
+        """
+        Wall time of the final run(s) with their estimates [s].
+        """
+    @property
+    def steps(self) -> int:
+        """
+        The steps of the final run.
+        """
+    @property
+    def tolerance(self) -> float:
+        """
+        The tolerance, in the measure's unit.
+        """
 class SceneCompatibilityWarning(UserWarning):
     """
     Warned when a scene is compiled for a method whose properties its elements break (e.g. velocity-dependent forces with a splitting method: order 1 in the damping, energy behaviour not symplectic). A UserWarning.
@@ -5150,6 +5332,11 @@ class SceneResult:
     def body_names(self) -> tuple:
         """
         (nb,) tuple of the bodies' names
+        """
+    @property
+    def choice(self) -> typing.Any:
+        """
+        What simulate(..., tolerance=) chose and why (a ToleranceChoice), or None (a run at a given dt).
         """
     @property
     def diverged(self) -> bool:
@@ -5572,6 +5759,11 @@ class SimulationResult:
     def balance(self) -> typing.Any:
         """
         The energy and momentum balance of every record (a Balance), or None (a batch result).
+        """
+    @property
+    def choice(self) -> typing.Any:
+        """
+        What simulate(..., tolerance=) chose and why (a ToleranceChoice), or None (a run at a given dt).
         """
     @property
     def diverged(self) -> bool:
@@ -10952,10 +11144,10 @@ def semi_latus_rectum(a: float | numpy.typing.ArrayLike, e: float | numpy.typing
     21000000.0
     """
 @typing.overload
-def simulate(model: Particle | PlanarBody | RigidBody, initial: typing.Any, dt: float | _Quantity, steps: int | None = None, method: _MethodName | None = None, record_every: int = 1, loads: AppliedLoad | collections.abc.Sequence[AppliedLoad] | None = None, gravity: bool | numpy.typing.ArrayLike | None = None, t0: float | _Quantity = 0.0, scalar_first: bool = False, progress: collections.abc.Callable[..., typing.Any] | None = None, *, duration: float | _Quantity | None = None, error: bool = True, accuracy_level: float | None = 0.001) -> SimulationResult:
+def simulate(model: Particle | PlanarBody | RigidBody, initial: typing.Any, dt: float | _Quantity | None = None, steps: int | None = None, method: _MethodName | None = None, record_every: int = 1, loads: AppliedLoad | collections.abc.Sequence[AppliedLoad] | None = None, gravity: bool | numpy.typing.ArrayLike | None = None, t0: float | _Quantity = 0.0, scalar_first: bool = False, progress: collections.abc.Callable[..., typing.Any] | None = None, *, duration: float | _Quantity | None = None, error: bool = True, accuracy_level: float | None = 0.001, tolerance: float | _Quantity | None = None, measure: str | None = None, max_steps: int | None = None) -> SimulationResult:
     ...
 @typing.overload
-def simulate(model: PivotedBody | PivotedPlanarBody | Gyrostat | Scene | CompiledScene, initial: typing.Any, dt: float | _Quantity, steps: int | None = None, method: _MethodName | None = None, record_every: int = 1, loads: AppliedLoad | collections.abc.Sequence[AppliedLoad] | None = None, gravity: bool | numpy.typing.ArrayLike | None = None, t0: float | _Quantity = 0.0, scalar_first: bool = False, progress: collections.abc.Callable[..., typing.Any] | None = None, *, duration: float | _Quantity | None = None, error: bool = True, accuracy_level: float | None = 0.001) -> SceneResult:
+def simulate(model: PivotedBody | PivotedPlanarBody | Gyrostat | Scene | CompiledScene, initial: typing.Any, dt: float | _Quantity | None = None, steps: int | None = None, method: _MethodName | None = None, record_every: int = 1, loads: AppliedLoad | collections.abc.Sequence[AppliedLoad] | None = None, gravity: bool | numpy.typing.ArrayLike | None = None, t0: float | _Quantity = 0.0, scalar_first: bool = False, progress: collections.abc.Callable[..., typing.Any] | None = None, *, duration: float | _Quantity | None = None, error: bool = True, accuracy_level: float | None = 0.001, tolerance: float | _Quantity | None = None, measure: str | None = None, max_steps: int | None = None) -> SceneResult:
     """
     Integrate a body or a scene over fixed steps and record its motion.
     
@@ -10972,10 +11164,10 @@ def simulate(model: PivotedBody | PivotedPlanarBody | Gyrostat | Scene | Compile
     initial : ParticleState, PlanarBodyState, RigidBodyState, PivotedBodyState, ..., or list
         The state of `model`'s kind at t0 (also PivotedPlanarBodyState or GyrostatState); for a Scene or
         CompiledScene, a list of the states of its bodies.
-    dt : float or pint.Quantity
-        Step [s], finite and > 0 (a quantity is converted to s).
+    dt : float or pint.Quantity, optional
+        Step [s], finite and > 0 (a quantity is converted to s). Exactly one of dt and tolerance.
     steps : int, optional
-        Number of steps, >= 0. Exactly one of steps and duration.
+        Number of steps, >= 0. Exactly one of steps and duration (with tolerance: duration).
     method : str, optional
         A name of methods(): 'explicit_euler', 'semi_implicit_euler', 'semi_implicit_euler_implicit_gyroscopic',
         'rk4', 'rkmk4', 'implicit_midpoint', 'splitting_dlm', 'splitting_dlm_yoshida4', 'exact_flow_kick' or 'exact'.
@@ -11001,22 +11193,39 @@ def simulate(model: PivotedBody | PivotedPlanarBody | Gyrostat | Scene | Compile
     error : bool, keyword-only, default True
         Estimate the global error of every record (result.error, a GlobalError) by two more runs of the method at 2 dt
         and 4 dt (+0.75x the cost; global Richardson extrapolation with an observed-order check, see GlobalError).
-        False: no estimate (result.error is None), the cost of the run alone.
+        False: no estimate (result.error is None), the cost of the run alone. True with tolerance.
     accuracy_level : float or None, keyword-only, default 1e-3
         The relative residual of an energy or momentum balance (result.balance) beyond which a run without a reliable
         global error estimate warns with an AccuracyWarning (where the estimate is reliable, a residual beyond 10 times
         its bound warns instead); finite and > 0. None: no AccuracyWarning (the balance is still made). Runs that are
         coarse on purpose (work-precision studies) pass None.
+    tolerance : float or pint.Quantity, keyword-only, optional
+        Instead of dt: the largest error of `measure` the run may have, absolute, in the measure's unit (a quantity
+        is converted to it), finite and > 0. The method (unless given) and dt are chosen: each candidate method is
+        piloted on a short run, its error fitted as C dt^p (t - t0), and the cheapest (method, dt) predicted to meet
+        half the tolerance is run with its global error estimate as the certificate, refined once when that fails
+        (see ToleranceChoice). The horizon is `duration` (steps depend on dt: steps is refused); record_every counts
+        steps of the chosen dt; steps is a multiple of lcm(record_every, 4), so every record is checked.
+        result.choice says what was chosen and why. A scene with a PythonForce is refused (ToleranceError): its
+        estimate is never reliable.
+    measure : str, keyword-only, optional
+        The quantity the tolerance bounds, its largest estimate over the records (and bodies): 'attitude' [rad],
+        'angular_velocity' [rad/s], 'position' [m], 'velocity' [m/s], 'energy' [J] or 'angular_momentum'
+        [kg m^2/s]. None (the default): 'position' for a Particle and a scene of particles, else 'attitude'.
+    max_steps : int, keyword-only, optional
+        The cost cap of a run to a tolerance: no run (the final run and its refinement) of more steps, >= 4.
+        None (the default): 10_000_000.
     
     Returns
     -------
     SimulationResult or SceneResult
         A SimulationResult for a Particle, PlanarBody or RigidBody: one row per record, n records (t, p_W, q_WB, v_W,
         w_B, kinetic_energy, total_energy, angular_momentum_norm, quaternion_norm_error, work; diverged,
-        unconverged_steps, elapsed_seconds; error; balance). A SceneResult for a Scene, a CompiledScene, a pivoted body
-        or a Gyrostat. The records are those of the run at dt whether or not error is True; elapsed_seconds is its
-        loop's. result.balance (a Balance, on every run) holds the residuals of the work-energy and impulse-momentum
-        balances per record, zero for the exact dynamics.
+        unconverged_steps, elapsed_seconds; error; balance; choice). A SceneResult for a Scene, a CompiledScene, a
+        pivoted body or a Gyrostat. The records are those of the run at dt whether or not error is True; elapsed_seconds
+        is its loop's. result.balance (a Balance, on every run) holds the residuals of the work-energy and
+        impulse-momentum balances per record, zero for the exact dynamics. With tolerance, result.choice is a
+        ToleranceChoice (else None).
     
     Raises
     ------
@@ -11024,7 +11233,12 @@ def simulate(model: PivotedBody | PivotedPlanarBody | Gyrostat | Scene | Compile
         A bad argument, named: dt not > 0, steps < 0, both or neither of steps and duration, a duration that is not a
         whole number of steps of dt (the message gives the nearest durations that are), an unknown method (with the
         nearest name), record_every < 1, a recording larger than the memory available (record_every, with both
-        figures), a quantity of another dimension, loads or gravity for a scene, accuracy_level not finite and > 0.
+        figures), a quantity of another dimension, loads or gravity for a scene, accuracy_level not finite and > 0;
+        with tolerance: tolerance not finite and > 0, dt or steps given too, no duration, error False, an unknown
+        measure (with the nearest name), max_steps < 4.
+    ToleranceError
+        A ValueError: the tolerance cannot be met within max_steps, the refined run's certificate still fails, or the
+        scene has a PythonForce; it carries the measured error, the choice and the best result (see ToleranceError).
     TypeError
         model not one of the kinds listed, or initial not of its kind (the message names it).
     KeyboardInterrupt
@@ -11044,7 +11258,8 @@ def simulate(model: PivotedBody | PivotedPlanarBody | Gyrostat | Scene | Compile
     
     See Also
     --------
-    step, simulate_batch, methods, SimulationResult, AppliedLoad, Scene, Balance, AccuracyWarning
+    step, simulate_batch, methods, SimulationResult, AppliedLoad, Scene, GlobalError, Balance, AccuracyWarning,
+    ToleranceChoice
     
     Notes
     -----
@@ -11085,6 +11300,12 @@ def simulate(model: PivotedBody | PivotedPlanarBody | Gyrostat | Scene | Compile
     
     >>> r.balance.verdict["energy"], r.balance.verdict["angular_momentum"], bool(abs(r.balance.energy[-1]) < 1e-9)
     ('closed', 'closed', True)
+    
+    Or ask for the accuracy and let the method and dt be chosen: the attitude within 1e-7 rad over 10 s:
+    
+    >>> r = rd.simulate(body, rd.RigidBodyState(w_B=[0.1, 1.0, 0.1]), duration=10.0, tolerance=1e-7)
+    >>> r.choice.met, bool(r.error.attitude.max() <= 1e-7), float(r.t[-1])
+    (True, True, 10.0)
     """
 @typing.overload
 def simulate_batch(model: Particle | PlanarBody | RigidBody | collections.abc.Sequence[Particle | PlanarBody | RigidBody], initial: typing.Any, dt: float | numpy.typing.ArrayLike | _Quantity, steps: int | None = None, method: _MethodName | None = None, record_every: int = 1, loads: typing.Any = None, gravity: bool | numpy.typing.ArrayLike | None = None, t0: float | _Quantity = 0.0, threads: int | None = None, simd: bool = False, scalar_first: bool = False, progress: collections.abc.Callable[..., typing.Any] | None = None, *, duration: float | _Quantity | None = None, error: bool = True) -> BatchResult:

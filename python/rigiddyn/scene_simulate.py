@@ -75,18 +75,44 @@ class _ScenePlan:
             raise ValueError(f"PROBLEM: {e}") from None
         self.source = str(args.problem)
         run = self.file.run
-        self.method: str = require_method(args.method if args.method is not None else run.method, "--method")
-        dt = args.dt if args.dt is not None else run.dt
-        if dt is None:
-            raise ValueError("--dt: expected a time step [s] > 0 (or dt in the scene's [run]), got nothing")
-        self.dt: float = dt
         duration = args.duration if args.duration is not None else run.duration
-        if args.steps is None and duration is None:
-            raise ValueError("--duration: expected a time span [s] (or --steps, or duration in the scene's [run]), "
-                             "got nothing")
-        self.steps = step_count(args.steps, duration, self.dt)
-        self.record_every: int = (args.record_every if args.record_every is not None else
-                                  max(run.record_every, -(-self.steps // MAX_DEFAULT_RECORDS)))
+        self.tolerance: float | None = args.tolerance
+        self.measure: str | None = args.measure
+        self.max_steps: int | None = args.max_steps
+        if self.tolerance is None:
+            for given, name in ((args.measure, "--measure"), (args.max_steps, "--max-steps")):
+                if given is not None:
+                    raise ValueError(f"{name}: expected nothing without --tolerance, got {given!r}")
+        if self.tolerance is not None:  # the method (unless --method) and dt are chosen by simulate
+            if args.dt is not None:
+                raise ValueError(f"--dt: expected nothing with --tolerance (exactly one of them), got {args.dt!r}")
+            if args.steps is not None:
+                raise ValueError(f"--steps: expected nothing with --tolerance (the steps follow from the chosen dt; "
+                                 f"give --duration), got {args.steps!r}")
+            if duration is None:
+                raise ValueError("--duration: expected a time span [s] (or duration in the scene's [run]) with "
+                                 "--tolerance, got nothing")
+            if args.no_error:
+                raise ValueError("--no-error: expected nothing with --tolerance (the global error estimate "
+                                 "certifies the run), got --no-error")
+            self.method_given: str | None = None if args.method is None else require_method(args.method, "--method")
+            self.method: str = self.method_given or "chosen"
+            self.duration: float = duration
+            self.dt: float = math.nan  # the run's choice, set after it
+            self.steps = 0
+            self.record_every: int = args.record_every if args.record_every is not None else 1
+        else:
+            self.method = require_method(args.method if args.method is not None else run.method, "--method")
+            dt = args.dt if args.dt is not None else run.dt
+            if dt is None:
+                raise ValueError("--dt: expected a time step [s] > 0 (or dt in the scene's [run]), got nothing")
+            self.dt = dt
+            if args.steps is None and duration is None:
+                raise ValueError("--duration: expected a time span [s] (or --steps, or duration in the scene's "
+                                 "[run]), got nothing")
+            self.steps = step_count(args.steps, duration, self.dt)
+            self.record_every = (args.record_every if args.record_every is not None else
+                                 max(run.record_every, -(-self.steps // MAX_DEFAULT_RECORDS)))
         if args.animate:
             raise ValueError(f"--animate: expected a problem file (scene files have no animation yet), "
                              f"got the scene {args.problem!r}")
@@ -95,7 +121,7 @@ class _ScenePlan:
         self.kinds = [type(body).__name__ for body in self.file.scene.bodies]
         self.out = OutFolder(args.out if args.out is not None else default_out(args.problem), self.outputs(),
                              args.force, SCENE_OUTPUTS)
-        self.progress = not args.no_progress
+        self.progress = not args.no_progress and self.tolerance is None  # the steps are not known before the run
         self.error = not args.no_error
 
     def outputs(self) -> list[str]:
@@ -143,7 +169,31 @@ def _run_record(plan: _ScenePlan, result: Any, columns: list[str]) -> dict[str, 
         "global error": error_report(result.error),
         "columns": columns,
         "quaternion order": "x, y, z, w",
+        **_choice_record(result),
     }
+
+
+def _choice_record(result: Any) -> dict[str, Any]:
+    """run.json's account of a run to a tolerance (result.choice), {} for a run at a given dt."""
+    c = result.choice
+    if c is None:
+        return {}
+    return {"tolerance": c.tolerance, "measure": c.measure, "certified_error": c.certified_error,
+            "predicted_error": c.predicted_error, "refinements": c.refinements, "choice": c.reason}
+
+
+def _run(plan: _ScenePlan, update: Any) -> Any:
+    """simulate of the scene: at the plan's dt, or to its tolerance (then the plan takes the chosen method, dt
+    and steps)."""
+    if plan.tolerance is None:
+        return _core.simulate(plan.file.scene, plan.file.initial, dt=plan.dt, steps=plan.steps,
+                              method=cast(Any, plan.method), record_every=plan.record_every,  # checked
+                              progress=update, error=plan.error)
+    result = _core.simulate(plan.file.scene, plan.file.initial, duration=plan.duration, tolerance=plan.tolerance,
+                            measure=plan.measure, max_steps=plan.max_steps, method=cast(Any, plan.method_given),
+                            record_every=plan.record_every, progress=update)
+    plan.method, plan.dt, plan.steps = result.choice.method, result.choice.dt, result.choice.steps
+    return result
 
 
 def _write(plan: _ScenePlan, result: Any, folder: Path) -> list[Path]:
@@ -221,6 +271,8 @@ def _summary(result: Any, scene: Any = None) -> str:
         reaction = np.linalg.norm(np.asarray(result.pivot_reaction_W), axis=2)
         parts += [f"{result.body_names[i]}: pivot reaction |R| {reaction[:, i].min():.4g} to "
                   f"{reaction[:, i].max():.4g} N" for i in pinned]
+    if getattr(result, "choice", None) is not None:
+        parts.append(f"tolerance {result.choice.tolerance:g} ({result.choice.measure}): {result.choice.reason}")
     return "; ".join(parts)
 
 
@@ -235,10 +287,6 @@ def run_scene_simulate(args: argparse.Namespace) -> int:
         return fail(e)
     except OutputExists as e:
         return fail(e, EXIT_EXISTS)
-    return run_and_report(plan.steps, plan.progress,
-                          lambda update: _core.simulate(plan.file.scene, plan.file.initial, dt=plan.dt,
-                                                        steps=plan.steps, method=cast(Any, plan.method),  # checked
-                                                        record_every=plan.record_every, progress=update,
-                                                        error=plan.error),
+    return run_and_report(plan.steps, plan.progress, lambda update: _run(plan, update),
                           lambda result: _summary(result, plan.file.scene), plan.out,
                           lambda result, folder: _write(plan, result, folder))

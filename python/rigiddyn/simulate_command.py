@@ -73,7 +73,8 @@ def add_simulate_parser(sub: "argparse._SubParsersAction[argparse.ArgumentParser
         description="Run PROBLEM (a TOML file or a shipped example: " + ", ".join(example_problems()) + ") with "
         "--method at fixed step --dt, and write to --out: trajectory.csv, trajectory.npz, trajectory.parquet "
         "(when pyarrow is installed), run.json and trajectory.png (w_B, attitude, energy, |L| over time); "
-        "--animate adds an animation of the body's axes. Columns carry their units, e.g. 'w_B_x [rad/s]'.",
+        "--animate adds an animation of the body's axes. Columns carry their units, e.g. 'w_B_x [rad/s]'. "
+        "With --tolerance instead of --dt (scene files) the method and dt are chosen to meet it.",
         epilog=EXIT_CODES_HELP,
     )
     p.add_argument("problem", help="problem .toml path or example name, or a scene file ([[body]] tables, "
@@ -86,6 +87,18 @@ def add_simulate_parser(sub: "argparse._SubParsersAction[argparse.ArgumentParser
     span.add_argument("--duration", type=_positive(float, "a time span [s] > 0"),
                       help="time span [s] (default: the problem's horizon); runs round(duration / dt) steps")
     span.add_argument("--steps", type=_positive(int, "an integer number of steps >= 1"), help="number of steps")
+    p.add_argument("--tolerance", type=_positive(float, "a tolerance > 0 in the unit of --measure"),
+                   help="instead of --dt: the largest error the run may have (absolute, in the unit of --measure); the "
+                        "method (unless --method is given) and dt are chosen, the run certified by its global error "
+                        "estimate and refined once if needed (rigiddyn.simulate's tolerance=); the horizon is "
+                        "--duration or the file's; a scene file's [run] dt and method are then not used")
+    p.add_argument("--measure", choices=("attitude", "angular_velocity", "position", "velocity", "energy",
+                                         "angular_momentum"),
+                   help="the quantity --tolerance bounds, in rad, rad/s, m, m/s, J or kg m^2/s (default: position for "
+                        "a scene of particles, else attitude)")
+    p.add_argument("--max-steps", type=_positive(int, "an integer >= 4"),
+                   help="with --tolerance: the most steps the run may take (default 10000000); more fails naming "
+                        "the steps needed")
     p.add_argument("--record-every", type=_positive(int, "an integer >= 1"),
                    help=f"record every k-th step and the last (default: the least k giving at most "
                         f"{MAX_DEFAULT_RECORDS} records)")
@@ -183,6 +196,9 @@ class _Plan:
         except OSError as e:  # a path the system refuses (too long, ...)
             raise ValueError(f"PROBLEM: expected a problem file or example name, got {_shown(args.problem)} "
                              f"({e.strerror or e})") from None
+        if args.tolerance is not None:
+            raise ValueError("--tolerance: expected a scene file (a problem file runs at a given --dt), got the "
+                             f"problem {_shown(args.problem)}")
         if args.dt is None:  # a scene file's [run] may give it; a problem file has none
             raise ValueError("--dt: expected a time step [s] > 0 for a problem file, got nothing")
         self.method: str = require_method(args.method, "--method")

@@ -156,6 +156,11 @@ RECIPES["GlobalError"] = st.one_of(RECIPES["SimulationResult"], RECIPES["SceneRe
 # a run's energy and momentum balance (read from a result as its attribute)
 RECIPES["Balance"] = st.one_of(RECIPES["SimulationResult"], RECIPES["SceneResult"]).map(
     lambda run: ("method", run, "__getattribute__", [("lit", "balance")], []))
+# what a run to a drawn tolerance chose (read from its result)
+RECIPES["ToleranceChoice"] = st.floats(1e-9, 1e-3).map(lambda tol: ("method", _call_spec(
+    "simulate", [_call_spec("RigidBody", [("lit", 1.0), ("lit", [1.0, 2.0, 2.5])]),
+                 _call_spec("RigidBodyState", w_B=("lit", [0.1, 1.0, 0.1]))],
+    duration=("lit", 1.0), tolerance=("lit", tol)), "__getattribute__", [("lit", "choice")], []))
 RECIPES["SpatialInertia"] = st.tuples(st.floats(0.01, 10.0), st.floats(0.1, 100.0)).map(
     lambda rm: _call_spec("solid_sphere", [("lit", rm[0])], mass=("lit", rm[1])))  # the primitives' draws mostly
 # give both or neither of mass= and density=

@@ -463,6 +463,8 @@ INSTANCES_OF_RESULTS = {
     "SimulationResult": lambda: rd.simulate(rd.RigidBody(1.0, I_BOX), rd.RigidBodyState(w_B=V), 0.01, 2),
     "ElementField": lambda: rd.MagneticDipole.fields[0], "GlobalError": INSTANCES["GlobalError"],
     "Balance": INSTANCES["Balance"],
+    "ToleranceChoice": lambda: rd.simulate(rd.RigidBody(1.0, I_BOX), rd.RigidBodyState(w_B=V), duration=1.0,
+                                           tolerance=1e-4).choice,
     "InertiaReport": INSTANCES["InertiaReport"], "FrameKinematics": rd.FrameKinematics, "AppliedLoad": rd.AppliedLoad,
     "ParticleState": rd.ParticleState, "PlanarBodyState": rd.PlanarBodyState, "Particle": lambda: rd.Particle(1.0),
     "PlanarBody": lambda: rd.PlanarBody(1.0, 0.5), "RigidBody": lambda: rd.RigidBody(1.0, I_BOX),

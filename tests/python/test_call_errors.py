@@ -47,7 +47,7 @@ def test_an_unknown_keyword_is_named_with_the_closest_valid_one(call, message):
 
 
 @pytest.mark.parametrize("call, message", [
-    (lambda: rd.simulate(_body(), _state()), "simulate(): missing required argument 'dt'"),
+    (lambda: rd.simulate(_body()), "simulate(): missing required argument 'initial'"),
     (lambda: rd.RigidBody(), "RigidBody(): missing required argument 'mass'"),
     (lambda: rd.quat_multiply(), "quat_multiply(): missing required arguments 'q1' and 'q2'"),
     (lambda: rd.simulate(_body(), _state(), 0.01, 2, model=_body()),
@@ -92,7 +92,7 @@ def test_operators_keep_python_s_own_error():
 
 
 def test_no_signature_or_docstring_shows_the_added_overload():
-    assert str(inspect.signature(rd.simulate)).startswith("(model, initial, dt, steps=None,")
+    assert str(inspect.signature(rd.simulate)).startswith("(model, initial, dt=None, steps=None,")
     assert str(inspect.signature(rd.InertiaCheck)) == "(value)"
     assert str(inspect.signature(rd.Scene.add_body)) == "(self, body, name=None, mass_flow=None)"
     for f in (rd.simulate, rd.Scene.add_body, rd.SceneFrame.rotating, rd.InertiaCheck.__init__):

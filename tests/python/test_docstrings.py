@@ -79,6 +79,7 @@ MADE_BY_THE_CORE = {
     "SceneFrame": "its static constructors (SceneFrame.rotating, ...)",
     "SceneResult": "simulate on a Scene",
     "SimulationResult": "simulate on one body",
+    "ToleranceChoice": "simulate(..., tolerance=...): result.choice",
     "WeldedMesh": "weld_vertices",
 }
 CALLABLES = [(name, getattr(rd, name)) for name in sorted(rd.__all__) if callable(getattr(rd, name))]

@@ -1,0 +1,443 @@
+// Running to a tolerance: the library chooses the method and the step, runs, and certifies the result with the
+// global error estimate (global_error.hpp).
+//
+// The error model of a method of order p over a run from t0 (Hairer, Nørsett & Wanner, "Solving Ordinary
+// Differential Equations I", the global error of a one-step method grows at most like its local error summed):
+//     ε(t) ≈ C dt^p (t − t0)                                   (linear growth in t),
+// C fitted on a short pilot run whose own Richardson estimate passed its order check (so that the pilot is in
+// the asymptotic regime and the extrapolation in dt is sound). For a horizon T and a tolerance τ the largest
+// step is then dt = (s τ / (C T))^(1/p), s the safety factor; the run's cost is its steps times the cost per step
+// the pilot measured. The cheapest candidate is run with its estimate; a certificate that fails (not reliable,
+// or above τ) is followed by one refinement dt' = dt (s τ / ε)^(1/p) (dt / 2 when the estimate was not reliable).
+//
+// Pilots: 16 steps over T/4 first; while the pilot's estimate is not reliable its horizon is halved (down to
+// T/32, the step with it) and then its steps doubled (up to 512). Its cost is that of ~28 steps whatever the
+// horizon, a small part of any run long enough to need a choice. Candidates are pruned by order before their
+// pilot: an order-p method needs ~(τ/scale)^(−1/p) steps per unit of the problem's time scale, times its
+// evaluations per step; one whose figure is above 8x the best candidate's is not piloted (unless it is exact on a
+// torque-free body: its error may be round-off).
+//
+// The short pilots rank the candidates; the chosen one (when its run has 64 steps or more) then runs over the
+// whole horizon at a quarter of its steps, and the largest error of that run, scaled by dt^p, sets the steps
+// without a growth model: the error can jump after the short pilot's span (a flip near a separatrix: measured
+// 10x above the linear growth from the first quarter). Its cost, 0.44x the final run with its estimate, is
+// less than the refinement it spares (1.75x the run and more).
+//
+// The method 'exact' (order 0, a closed form) has no truncation error: its error is the round-off bound of the
+// run, and its cost is per record, not per step. It runs at the step of the cheapest stepping candidate (so
+// that its records are the same) when that is cheaper.
+#pragma once
+#include "rigiddyn/integrators/method.hpp"
+#include "rigiddyn/simulate/global_error.hpp"
+#include "rigiddyn/simulate/simulate.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace rigiddyn {
+
+// The error quantity a tolerance bounds (the fields of GlobalErrorEstimate).
+enum class ErrorMeasure { attitude, angular_velocity, position, velocity, energy, angular_momentum };
+
+// "attitude", ... in ErrorMeasure's order; the unit of each ("rad", "rad/s", "m", "m/s", "J", "kg m^2/s").
+const std::vector<std::string>& error_measure_names();
+std::string error_measure_name(ErrorMeasure measure);
+std::string error_measure_unit(ErrorMeasure measure);
+// The measure named `name`; std::invalid_argument naming `argument` (with the nearest name) for another.
+ErrorMeasure error_measure_from_name(const std::string& name, const std::string& argument = "measure");
+
+// The largest estimate of `measure` over every record (and body) of `e`; NaN if a record has none.
+double largest_error(const GlobalErrorEstimate& e, ErrorMeasure measure);
+
+// The first record the certificate does not accept: a verdict other than "reliable", "interpolated between the
+// reliable records ..." (a record between two checked ones, when record_every is not a multiple of 4), an
+// observed order above the window (the estimate over-estimates there: see above_the_window), and an order outside
+// it where the estimate of `measure` is at most tolerance / 16 (a zero crossing of an oscillating error, or the
+// round-off of the first records, where the ratio is noise: an estimate 16x too small would still meet the
+// tolerance); e.verdict.size() when none.
+std::size_t first_unreliable(const GlobalErrorEstimate& e, ErrorMeasure measure, double tolerance);
+// The observed order of the largest error over the records: log2(max_i d(y_2h, y_4h) / max_i d(y_h, y_2h)) of
+// `measure`, from the checked records (NaN: none). The tolerance bounds that largest error, and its ratio is
+// smooth in h where a record's ratio is noise (a record near a zero crossing of an oscillating error, e.g. a
+// pendulum's angle error at a turning point, where a higher-order term dominates).
+double observed_order_of_largest(const GlobalErrorEstimate& e, ErrorMeasure measure);
+
+// The certificate: first_unreliable, or, where a record fails, e.verdict.size() all the same when no run diverged,
+// every record has an estimate and the largest error's observed order is at or above the window's lower end
+// (2^p / 1.5); else the first record not accepted.
+std::size_t first_uncertified(const GlobalErrorEstimate& e, ErrorMeasure measure, double tolerance);
+
+// A verdict "not asymptotic: observed order q where p is expected" with q above the window (q > p + log2 1.5).
+bool above_the_window(const std::string& verdict);
+
+// The size of `measure` in the records (the largest norm over records and bodies; 1 rad for the attitude): the
+// scale that makes a tolerance relative for pruning candidates by order.
+double measure_scale(const ErrorRecords& r, ErrorMeasure measure);
+
+// C of ε(t) ≈ C dt^p (t − t0) fitted on a pilot of step dt: the largest ε(t_k) / (dt^p (t_k − t0)) over the
+// records after t0 (the pilot's records r, its estimate e of order p >= 1). Conservative where the error grows
+// slower than linearly.
+double error_constant(const GlobalErrorEstimate& e, const ErrorRecords& r, double dt, ErrorMeasure measure);
+
+// C dt^p T: the predicted error of a run of step dt over a horizon T [s].
+double predicted_error(double constant, int order, double dt, double horizon);
+
+// The largest step whose predicted error over `horizon` is `target` (+inf when C is 0).
+double step_for_error(double constant, int order, double horizon, double target);
+
+// The fewest steps, a multiple of `multiple`, whose step horizon / steps is at most dt_max.
+std::int64_t steps_for(double horizon, double dt_max, std::int64_t multiple);
+
+// The step of a refinement: dt (target / measured)^(1/p), at most dt / 2^(1/p) (a refinement refines).
+double refined_step(double dt, int order, double measured, double target);
+
+// What a candidate needs, per unit of the problem's time scale, at relative tolerance `relative`:
+// relative^(−1/p) steps times `evaluations` per step (the order pruning's figure).
+double order_cost_figure(int order, int evaluations, double relative);
+
+// The estimate of one measure alone: the runs at h, 2h and 4h (as estimate_global_error takes them) with every
+// other quantity set equal in all three (zero; the identity attitude), so that its verdicts check the observed
+// order of `measure` only. (A record-wide verdict also checks the other quantities: rk4's energy error on a
+// free body falls faster than dt^4 at a coarse step, which says nothing of the attitude's estimate.)
+GlobalErrorEstimate estimate_of_measure(const ErrorRecords& h, const ErrorRecords& h2, const ErrorRecords& h4,
+                                        const SimulationOptions& answer, int order, ErrorMeasure measure);
+
+// The estimates of a run: every quantity's (result.error) and the measure's alone (its certificate).
+struct MeasuredEstimate {
+  GlobalErrorEstimate all, measure;
+};
+
+// global_error's runs, estimated both ways (order 0, 'exact': the round-off bound alone, both ways).
+template <class Records, class Run>
+MeasuredEstimate measured_global_error(const Records& answer, const SimulationOptions& options, int order, Run&& run,
+                                       ErrorMeasure measure) {
+  if (order == 0) {
+    GlobalErrorEstimate e = round_off_estimate(error_records(answer), options);
+    return {e, e};
+  }
+  const Records twice = run(coarse_options(options, 2));
+  const Records four_times = run(coarse_options(options, 4));
+  const ErrorRecords h = error_records(answer), h2 = error_records(twice), h4 = error_records(four_times);
+  return {estimate_global_error(h, h2, h4, options, order), estimate_of_measure(h, h2, h4, options, order, measure)};
+}
+
+// A method the run may use, with the order the model has under it (scene_order; 0 for 'exact').
+struct ToleranceCandidate {
+  Method method;
+  int order;
+};
+
+// What run_to_tolerance is asked.
+struct ToleranceRequest {
+  double tolerance;      // τ, absolute, in the measure's unit
+  ErrorMeasure measure;  // the quantity τ bounds (largest over records and bodies)
+  double horizon;        // T = the run's duration [s]
+  std::int64_t max_steps;  // the cost cap: no run of more steps (the final run and its refinement)
+  double safety = 0.5;   // s: the run aims at s τ
+};
+
+// One pilot of a candidate (or why it has none).
+struct PilotRun {
+  Method method;
+  int order = 0;
+  double dt = 0.0, horizon = 0.0;         // its step and span [s]
+  std::int64_t steps = 0;
+  double error = std::numeric_limits<double>::quiet_NaN();     // its estimate at its end, in the measure's unit
+  double constant = std::numeric_limits<double>::quiet_NaN();  // C of the fit
+  double seconds_per_step = std::numeric_limits<double>::quiet_NaN();  // measured (per record for 'exact')
+  std::int64_t planned_steps = 0;         // the run it predicts for τ
+  double planned_seconds = std::numeric_limits<double>::quiet_NaN();
+  std::string verdict;                    // "used", or why not (pruned, not asymptotic ...)
+};
+
+// The choice and its outcome.
+struct ToleranceChoice {
+  Method method = Method::rk4;
+  int order = 0;
+  double dt = 0.0;
+  std::int64_t steps = 0;
+  double tolerance = 0.0;
+  ErrorMeasure measure = ErrorMeasure::attitude;
+  double predicted_error = std::numeric_limits<double>::quiet_NaN();
+  double certified_error = std::numeric_limits<double>::quiet_NaN();  // largest estimate of the final run
+  bool met = false;       // certified reliable and <= τ
+  int refinements = 0;
+  std::string reason;     // why this choice, and what happened
+  std::vector<PilotRun> pilots;
+  double pilot_seconds = 0.0, run_seconds = 0.0;  // wall time of the pilots, of the runs with their estimates [s]
+};
+
+template <class Records>
+struct ToleranceRun {
+  Records records;  // the final run (the best one when the tolerance was not met); empty if none ran
+  GlobalErrorEstimate estimate;  // its estimate of every quantity (the certificate is the measure's alone)
+  ToleranceChoice choice;
+  bool ran = false;          // a final run exists
+  bool interrupted = false;  // the monitor stopped a run
+};
+
+namespace tolerance_detail {
+
+// The verdict of a pilot that is usable, and the text of the choice.
+inline const std::string used = "used";
+std::string describe_choice(const ToleranceChoice& c, const PilotRun& chosen, std::size_t piloted);
+std::string format_number(double value);
+double seconds_since(std::chrono::steady_clock::time_point start);
+
+template <class Records>
+double elapsed_of(const Records& r) {
+  return r.elapsed_seconds;
+}
+
+}  // namespace tolerance_detail
+
+// Runs to τ: pilots each candidate (highest order first, pruned by order_cost_figure), chooses the cheapest
+// (method, dt) predicted to meet s τ, runs it with its estimate and refines once when the certificate fails.
+// `base` gives t0, record_every and the monitor (its dt, steps and method are chosen here); run(candidate,
+// options) returns the records of the model from its initial state (a Trajectory or a SceneSimulation).
+// Never throws for an unmet tolerance: choice.met is false and choice.reason says why.
+template <class Records, class Run>
+ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidates, const SimulationOptions& base,
+                                       const ToleranceRequest& request, Run&& run) {
+  using namespace tolerance_detail;
+  const auto start = std::chrono::steady_clock::now();
+  ToleranceRun<Records> out;
+  ToleranceChoice& choice = out.choice;
+  choice.tolerance = request.tolerance, choice.measure = request.measure;
+  const double T = request.horizon, target = request.safety * request.tolerance;
+  const std::int64_t m = common_record_steps(base.record_every);
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [](const ToleranceCandidate& a, const ToleranceCandidate& b) { return a.order > b.order; });
+
+  // the pilots
+  double scale = std::numeric_limits<double>::quiet_NaN(), best_figure = std::numeric_limits<double>::infinity();
+  std::vector<ToleranceCandidate> exact;
+  for (const ToleranceCandidate& c : candidates) {
+    PilotRun p;
+    p.method = c.method, p.order = c.order;
+    const int evaluations = method_info(c.method).evaluations;
+    if (c.order == 0) {
+      exact.push_back(c);
+      continue;
+    }
+    if (std::isfinite(scale) && candidates.size() > 1 && !method_info(c.method).exact_torque_free) {
+      const double figure = order_cost_figure(c.order, evaluations, request.tolerance / scale);
+      if (figure > 8.0 * best_figure) {
+        p.verdict = "pruned: order " + std::to_string(c.order) + " at a relative tolerance of " +
+                    format_number(request.tolerance / scale) + " (needs > 8x the steps x evaluations of order " +
+                    std::to_string(candidates.front().order) + ")";
+        choice.pilots.push_back(p);
+        continue;
+      }
+    }
+    double span = T / 4.0;
+    std::int64_t n = 16;
+    for (int attempt = 0; attempt < 10; ++attempt) {
+      SimulationOptions o = base;
+      o.method = c.method, o.dt = span / static_cast<double>(n), o.steps = n, o.record_every = 4;
+      double seconds = 0.0;
+      const auto timed = [&](const SimulationOptions& x) {
+        Records r = run(c, x);
+        seconds += elapsed_of(r);
+        out.interrupted = out.interrupted || r.interrupted;
+        return r;
+      };
+      const Records h = timed(o);
+      if (out.interrupted) return out;
+      const GlobalErrorEstimate e = measured_global_error(h, o, c.order, timed, request.measure).measure;
+      if (out.interrupted) return out;
+      const ErrorRecords records = error_records(h);
+      p.dt = o.dt, p.horizon = span, p.steps = n;
+      p.error = e.verdict.empty() ? p.error : largest_error(e, request.measure);
+      p.seconds_per_step = seconds / (1.75 * static_cast<double>(n));
+      const std::size_t bad = first_uncertified(e, request.measure, request.tolerance);
+      if (bad == e.verdict.size() && !h.diverged) {
+        p.constant = error_constant(e, records, o.dt, request.measure);
+        if (!std::isfinite(scale)) scale = std::max(measure_scale(records, request.measure), 1e-300);
+        best_figure = std::min(best_figure, order_cost_figure(c.order, evaluations, request.tolerance / scale));
+        p.verdict = used;
+        break;
+      }
+      p.verdict = "not asymptotic at dt = " + format_number(o.dt) + " s: " + (bad < e.verdict.size() ? e.verdict[bad] : "diverged");
+      if (span > T / 32.0) {
+        span /= 2.0;
+      } else if (n < 512) {
+        n *= 2;
+      } else {
+        break;
+      }
+    }
+    if (p.verdict == used) {
+      // at most the pilot's step: the pilot's own check ran at 2 dt_p and 4 dt_p, which the certificate's coarse
+      // runs then do not exceed (beyond them the pilot says nothing of stability)
+      const double dt = std::min(step_for_error(p.constant, p.order, T, target), p.dt);
+      p.planned_steps = steps_for(T, dt, m);
+      p.planned_seconds = static_cast<double>(p.planned_steps) * p.seconds_per_step;
+    }
+    choice.pilots.push_back(p);
+  }
+  // the cheapest stepping plan within the cap
+  const PilotRun* best = nullptr;
+  for (const PilotRun& p : choice.pilots) {
+    if (p.verdict != used || p.planned_steps > request.max_steps) continue;
+    if (best == nullptr || p.planned_seconds < best->planned_seconds) best = &p;
+  }
+  // 'exact' at the records of the best stepping plan (or of 16 steps when there is none)
+  for (const ToleranceCandidate& c : exact) {
+    PilotRun p;
+    p.method = c.method, p.order = 0;
+    const std::int64_t n = best != nullptr ? best->planned_steps : steps_for(T, T / 16.0, m);
+    SimulationOptions o = base;
+    o.method = c.method, o.dt = T / 16.0, o.steps = 16, o.record_every = 1;
+    const Records h = run(c, o);
+    out.interrupted = out.interrupted || h.interrupted;
+    if (out.interrupted) return out;
+    p.dt = o.dt, p.horizon = T, p.steps = 16;
+    p.seconds_per_step = elapsed_of(h) / 17.0;  // per record
+    p.error = largest_error(round_off_estimate(error_records(h), o), request.measure);
+    p.constant = 0.0;
+    p.planned_steps = n;
+    p.planned_seconds = static_cast<double>(n / base.record_every + 2) * p.seconds_per_step;
+    const double round_off = p.error * static_cast<double>(n) / 16.0;
+    p.verdict = round_off <= target ? used : "its round-off bound " + format_number(round_off) + " exceeds the tolerance";
+    choice.pilots.push_back(p);
+  }
+  best = nullptr;
+  for (const PilotRun& p : choice.pilots) {
+    if (p.verdict != used || p.planned_steps > request.max_steps) continue;
+    if (best == nullptr || p.planned_seconds < best->planned_seconds) best = &p;
+  }
+  choice.pilot_seconds = seconds_since(start);
+  if (best == nullptr) {
+    const PilotRun* cheapest = nullptr;  // the cap's figures
+    for (const PilotRun& p : choice.pilots) {
+      if (p.verdict == used && (cheapest == nullptr || p.planned_steps < cheapest->planned_steps)) cheapest = &p;
+    }
+    if (cheapest != nullptr) {
+      choice.method = cheapest->method, choice.order = cheapest->order, choice.steps = cheapest->planned_steps;
+      choice.dt = T / static_cast<double>(choice.steps);
+      choice.predicted_error = predicted_error(cheapest->constant, cheapest->order, T / static_cast<double>(request.max_steps), T);
+      choice.reason = "the cost cap: the cheapest run predicted to meet " + format_number(request.tolerance) + " " +
+                      error_measure_unit(request.measure) + " is " + method_info(cheapest->method).name + " at " +
+                      std::to_string(cheapest->planned_steps) + " steps, above max_steps = " +
+                      std::to_string(request.max_steps) + " (at max_steps its predicted error is " +
+                      format_number(choice.predicted_error) + " " + error_measure_unit(request.measure) + ")";
+    } else {
+      choice.reason = "no method reached its asymptotic regime in its pilot runs (each pilot's verdict is in pilots)";
+    }
+    return out;
+  }
+  const PilotRun chosen = *best;
+  std::size_t piloted = 0;
+  for (const PilotRun& p : choice.pilots) piloted += p.steps > 0 ? 1 : 0;
+  choice.method = chosen.method, choice.order = chosen.order, choice.steps = chosen.planned_steps;
+  choice.dt = T / static_cast<double>(choice.steps);
+  choice.predicted_error = chosen.order == 0 ? chosen.error * static_cast<double>(choice.steps) / 16.0
+                                             : predicted_error(chosen.constant, chosen.order, choice.dt, T);
+  choice.reason = describe_choice(choice, chosen, piloted);
+  const ToleranceCandidate candidate{chosen.method, chosen.order};
+  const auto checked = [&](const SimulationOptions& x) {
+    Records r = run(candidate, x);
+    out.interrupted = out.interrupted || r.interrupted;
+    return r;
+  };
+
+  // the chosen method over the whole horizon at a quarter of its steps: its largest error, scaled by dt^p, gives
+  // the steps without a growth model (an error that jumps after the short pilot's span, e.g. at a flip near a
+  // separatrix, is seen); kept only when its estimate is reliable
+  if (chosen.order > 0 && choice.steps / 4 >= 16) {
+    SimulationOptions o = base;
+    o.method = chosen.method, o.steps = steps_for(T, 4.0 * choice.dt, m), o.dt = T / static_cast<double>(o.steps);
+    PilotRun p;
+    p.method = chosen.method, p.order = chosen.order, p.dt = o.dt, p.horizon = T, p.steps = o.steps;
+    double seconds = 0.0;
+    const auto timed = [&](const SimulationOptions& x) {
+      Records r = checked(x);
+      seconds += elapsed_of(r);
+      return r;
+    };
+    const Records h = timed(o);
+    if (out.interrupted) return out;
+    const GlobalErrorEstimate e = measured_global_error(h, o, chosen.order, timed, request.measure).measure;
+    if (out.interrupted) return out;
+    p.error = largest_error(e, request.measure);
+    p.seconds_per_step = seconds / (1.75 * static_cast<double>(o.steps));
+    const std::size_t bad = first_uncertified(e, request.measure, request.tolerance);
+    if (bad == e.verdict.size() && !h.diverged && std::isfinite(p.error)) {
+      const double dt = p.error > 0.0 ? o.dt * std::pow(target / p.error, 1.0 / chosen.order) : choice.dt;
+      choice.steps = steps_for(T, std::min(dt, o.dt), m), choice.dt = T / static_cast<double>(choice.steps);
+      choice.predicted_error = p.error * std::pow(choice.dt / o.dt, chosen.order);
+      p.constant = error_constant(e, error_records(h), o.dt, request.measure);
+      p.planned_steps = choice.steps;
+      p.planned_seconds = static_cast<double>(choice.steps) * chosen.seconds_per_step;
+      p.verdict = used;
+      choice.reason += "; over the whole horizon at " + std::to_string(o.steps) + " steps its error " +
+                       format_number(p.error) + " " + error_measure_unit(request.measure) + " sets " +
+                       std::to_string(choice.steps) + " steps (predicted " + format_number(choice.predicted_error) +
+                       ")";
+    } else {
+      p.verdict = "not asymptotic at dt = " + format_number(o.dt) + " s over the whole horizon: " +
+                  (bad < e.verdict.size() ? e.verdict[bad] : "diverged") + " (the short pilot's prediction kept)";
+    }
+    choice.pilots.push_back(p);
+    choice.pilot_seconds = seconds_since(start);
+    if (choice.steps > request.max_steps) {
+      choice.reason += ", above max_steps = " + std::to_string(request.max_steps);
+      return out;
+    }
+  }
+
+  // the run and its certificate; one refinement
+  const auto run_start = std::chrono::steady_clock::now();
+  SimulationOptions o = base;
+  o.method = chosen.method, o.dt = choice.dt, o.steps = choice.steps;
+  for (int attempt = 0; attempt < 2; ++attempt) {
+    Records h = checked(o);
+    if (out.interrupted) break;
+    MeasuredEstimate estimates = measured_global_error(h, o, chosen.order, checked, request.measure);
+    if (out.interrupted) break;
+    const GlobalErrorEstimate& e = estimates.measure;
+    const double error = largest_error(e, request.measure);
+    const std::size_t bad = first_uncertified(e, request.measure, request.tolerance);
+    const bool reliable = bad == e.verdict.size();
+    const bool met = reliable && error <= request.tolerance;
+    const std::string why = reliable ? "the certificate " + format_number(error) + " " +
+                                           error_measure_unit(request.measure) + " exceeds the tolerance"
+                                     : "the certificate is not reliable (record " + std::to_string(bad) + ": " +
+                                           e.verdict[bad] + ")";
+    // keep the better run: the certified one, else the smaller finite estimate
+    if (!out.ran || met || (std::isfinite(error) && !(error >= choice.certified_error))) {
+      out.records = std::move(h), out.estimate = std::move(estimates.all), out.ran = true;
+      choice.certified_error = error, choice.dt = o.dt, choice.steps = o.steps;
+    }
+    if (met) {
+      choice.met = true;
+      choice.reason += (attempt == 0 ? "; certified " : "; certified after the refinement ") + format_number(error) +
+                       " " + error_measure_unit(request.measure);
+      break;
+    }
+    if (attempt == 1 || chosen.order == 0) {
+      choice.reason += "; " + why + (attempt == 1 ? " after one refinement" : "");
+      break;
+    }
+    const std::int64_t steps =
+        steps_for(T, reliable ? refined_step(o.dt, chosen.order, error, target) : o.dt / 2.0, m);
+    if (steps > request.max_steps) {
+      choice.reason += "; " + why + ", and its refinement needs " + std::to_string(steps) +
+                       " steps, above max_steps = " + std::to_string(request.max_steps);
+      break;
+    }
+    choice.reason += "; " + why + ": refined to " + std::to_string(steps) + " steps";
+    choice.refinements = 1;
+    o.dt = T / static_cast<double>(steps), o.steps = steps;
+  }
+  choice.run_seconds = seconds_since(run_start);
+  return out;
+}
+
+}  // namespace rigiddyn

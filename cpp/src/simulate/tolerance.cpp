@@ -1,0 +1,247 @@
+#include "rigiddyn/simulate/tolerance.hpp"
+
+#include "rigiddyn/check.hpp"
+#include "rigiddyn/closest_name.hpp"
+
+#include <Eigen/Core>
+
+#include <cstdio>
+#include <stdexcept>
+
+namespace rigiddyn {
+
+namespace {
+
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+// The estimates of `measure` in e, (n,) or (n, nb).
+const std::vector<double>& values_of(const GlobalErrorEstimate& e, ErrorMeasure measure) {
+  switch (measure) {
+    case ErrorMeasure::attitude: return e.attitude;
+    case ErrorMeasure::angular_velocity: return e.angular_velocity;
+    case ErrorMeasure::position: return e.position;
+    case ErrorMeasure::velocity: return e.velocity;
+    case ErrorMeasure::energy: return e.energy;
+    case ErrorMeasure::angular_momentum: return e.angular_momentum;
+  }
+  throw std::invalid_argument("measure: expected a rigiddyn::ErrorMeasure, got " + std::to_string(static_cast<int>(measure)));
+}
+
+// The values per record of `measure` in e: nb for the state quantities, 1 for energy and |L|.
+std::size_t width_of(const GlobalErrorEstimate& e, ErrorMeasure measure) {
+  return measure == ErrorMeasure::energy || measure == ErrorMeasure::angular_momentum ? 1 : static_cast<std::size_t>(e.bodies);
+}
+
+// A run's records with every quantity but `measure` the same in any run: zero, the identity attitude.
+class MeasureRecords {
+ public:
+  MeasureRecords(const ErrorRecords& r, ErrorMeasure measure)
+      : identity_(r.n * static_cast<std::size_t>(r.bodies) * 4, 0.0),
+        zeros_(r.n * static_cast<std::size_t>(r.bodies) * 3, 0.0),
+        records_(r) {
+    for (std::size_t k = 3; k < identity_.size(); k += 4) identity_[k] = 1.0;  // (x, y, z, w) = (0, 0, 0, 1)
+    const auto keep = [measure](ErrorMeasure m, const double* own, const double* same) { return m == measure ? own : same; };
+    records_.q_WB = keep(ErrorMeasure::attitude, r.q_WB, identity_.data());
+    records_.w_B = keep(ErrorMeasure::angular_velocity, r.w_B, zeros_.data());
+    records_.p_W = keep(ErrorMeasure::position, r.p_W, zeros_.data());
+    records_.v_W = keep(ErrorMeasure::velocity, r.v_W, zeros_.data());
+    records_.energy = keep(ErrorMeasure::energy, r.energy, zeros_.data());
+    records_.energy_scale = keep(ErrorMeasure::energy, r.energy_scale, zeros_.data());
+    if (measure != ErrorMeasure::angular_momentum) records_.momentum.assign(r.n, 0.0);
+  }
+  MeasureRecords(const MeasureRecords&) = delete;
+  MeasureRecords& operator=(const MeasureRecords&) = delete;
+
+  const ErrorRecords& records() const { return records_; }
+
+ private:
+  std::vector<double> identity_, zeros_;
+  ErrorRecords records_;
+};
+
+}  // namespace
+
+GlobalErrorEstimate estimate_of_measure(const ErrorRecords& h, const ErrorRecords& h2, const ErrorRecords& h4,
+                                        const SimulationOptions& answer, int order, ErrorMeasure measure) {
+  const MeasureRecords a(h, measure), b(h2, measure), c(h4, measure);
+  return estimate_global_error(a.records(), b.records(), c.records(), answer, order);
+}
+
+const std::vector<std::string>& error_measure_names() {
+  static const std::vector<std::string> names = {"attitude", "angular_velocity", "position",
+                                                 "velocity", "energy",           "angular_momentum"};
+  return names;
+}
+
+std::string error_measure_name(ErrorMeasure measure) { return error_measure_names().at(static_cast<std::size_t>(measure)); }
+
+std::string error_measure_unit(ErrorMeasure measure) {
+  static const std::vector<std::string> units = {"rad", "rad/s", "m", "m/s", "J", "kg m^2/s"};
+  return units.at(static_cast<std::size_t>(measure));
+}
+
+ErrorMeasure error_measure_from_name(const std::string& name, const std::string& argument) {
+  const auto& names = error_measure_names();
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (names[i] == name) return static_cast<ErrorMeasure>(i);
+  }
+  std::string listed;
+  for (const std::string& n : names) listed += (listed.empty() ? "'" : ", '") + n + "'";
+  throw_invalid(argument, "one of " + listed + did_you_mean(name, names), "'" + name + "'");
+}
+
+double largest_error(const GlobalErrorEstimate& e, ErrorMeasure measure) {
+  double largest = 0.0;
+  for (const double v : values_of(e, measure)) {
+    if (std::isnan(v)) return nan;
+    largest = std::max(largest, v);
+  }
+  return largest;
+}
+
+// A ratio r = d(y_2h, y_4h) / d(y_h, y_2h) above 1.5 · 2^p: an error falling faster than h^p (q > p), whose
+// estimate d(y_h, y_2h) / (2^p − 1) = C h^q (2^q − 1) / (2^p − 1) exceeds the error C h^q: conservative. (The other
+// cause, an error all three runs share, is a force switching inside a step: refused before any run.)
+bool above_the_window(const std::string& verdict) {
+  double observed = 0.0;
+  int expected = 0;
+  return std::sscanf(verdict.c_str(), "not asymptotic: observed order %lf where %d is expected", &observed,
+                     &expected) == 2 &&
+         observed > expected + std::log2(1.5);
+}
+
+std::size_t first_unreliable(const GlobalErrorEstimate& e, ErrorMeasure measure, double tolerance) {
+  const std::string between = "interpolated between the reliable records";  // both neighbours checked
+  const std::vector<double>& values = values_of(e, measure);
+  const std::size_t width = width_of(e, measure);
+  const auto negligible = [&](std::size_t i) {  // every estimate of record i <= tolerance / 16
+    for (std::size_t b = 0; b < width; ++b) {
+      if (!(values[i * width + b] <= tolerance / 16.0)) return false;
+    }
+    return true;
+  };
+  for (std::size_t i = 0; i < e.verdict.size(); ++i) {
+    const std::string& v = e.verdict[i];
+    if (v != "reliable" && v.compare(0, between.size(), between) != 0 && !above_the_window(v) &&
+        !(v.compare(0, 15, "not asymptotic:") == 0 && negligible(i))) {
+      return i;
+    }
+  }
+  return e.verdict.size();
+}
+
+double observed_order_of_largest(const GlobalErrorEstimate& e, ErrorMeasure measure) {
+  const std::vector<double>& values = values_of(e, measure);
+  const std::size_t width = width_of(e, measure);
+  const double factor = std::exp2(e.order) - 1.0;  // d1 = ε (2^p − 1)
+  double d1 = 0.0, d2 = 0.0;
+  for (std::size_t i = 0; i < e.observed_order.size(); ++i) {
+    if (!std::isfinite(e.observed_order[i])) continue;  // at round-off, or not checked (interpolated)
+    double epsilon = 0.0;
+    for (std::size_t b = 0; b < width; ++b) epsilon = std::max(epsilon, values[i * width + b]);
+    d1 = std::max(d1, epsilon * factor);
+    d2 = std::max(d2, epsilon * factor * std::exp2(e.observed_order[i]));
+  }
+  return d1 > 0.0 ? std::log2(d2 / d1) : nan;
+}
+
+std::size_t first_uncertified(const GlobalErrorEstimate& e, ErrorMeasure measure, double tolerance) {
+  const std::size_t bad = first_unreliable(e, measure, tolerance);
+  if (bad == e.verdict.size()) return bad;
+  for (const std::string& v : e.verdict) {  // a run that diverged or has no estimate is never certified
+    if (v.find("diverged") != std::string::npos || v.compare(0, 11, "no estimate") == 0) return bad;
+  }
+  if (std::isnan(largest_error(e, measure))) return bad;
+  return observed_order_of_largest(e, measure) >= e.order - std::log2(1.5) ? e.verdict.size() : bad;
+}
+
+double measure_scale(const ErrorRecords& r, ErrorMeasure measure) {
+  if (measure == ErrorMeasure::attitude) return 1.0;
+  double largest = 0.0;
+  for (std::size_t i = 0; i < r.n; ++i) {
+    if (measure == ErrorMeasure::energy) {
+      largest = std::max(largest, std::abs(r.energy_scale[i]) + std::abs(r.energy[i] - r.energy_scale[i]));
+    } else if (measure == ErrorMeasure::angular_momentum) {
+      largest = std::max(largest, r.momentum[i]);
+    } else {
+      const double* rows = measure == ErrorMeasure::angular_velocity ? r.w_B
+                           : measure == ErrorMeasure::position       ? r.p_W
+                                                                     : r.v_W;
+      for (std::int64_t b = 0; b < r.bodies; ++b) {
+        largest = std::max(largest, Eigen::Map<const Eigen::Vector3d>(rows + (i * r.bodies + b) * 3).norm());
+      }
+    }
+  }
+  return largest;
+}
+
+// ε(t_k) / (dt^p (t_k − t0)) at every record after t0 (Hairer, Nørsett & Wanner: ε ≈ C dt^p (t − t0)).
+double error_constant(const GlobalErrorEstimate& e, const ErrorRecords& r, double dt, ErrorMeasure measure) {
+  const std::vector<double>& values = values_of(e, measure);
+  const std::size_t width = width_of(e, measure);
+  double constant = 0.0;
+  for (std::size_t i = 1; i < r.n && i * width < values.size(); ++i) {
+    const double elapsed = r.t[i] - r.t[0];
+    if (!(elapsed > 0.0)) continue;
+    for (std::size_t b = 0; b < width; ++b) {
+      constant = std::max(constant, values[i * width + b] / (std::pow(dt, e.order) * elapsed));
+    }
+  }
+  return constant;
+}
+
+double predicted_error(double constant, int order, double dt, double horizon) {
+  return constant * std::pow(dt, order) * horizon;
+}
+
+double step_for_error(double constant, int order, double horizon, double target) {
+  if (!(constant > 0.0)) return std::numeric_limits<double>::infinity();
+  return std::pow(target / (constant * horizon), 1.0 / order);
+}
+
+std::int64_t steps_for(double horizon, double dt_max, std::int64_t multiple) {
+  const double blocks = std::ceil(horizon / (dt_max * static_cast<double>(multiple)) * (1.0 - 1e-12));
+  return std::max<std::int64_t>(1, static_cast<std::int64_t>(std::min(blocks, 9e15 / static_cast<double>(multiple)))) *
+         multiple;
+}
+
+double refined_step(double dt, int order, double measured, double target) {
+  const double shrink = std::pow(target / measured, 1.0 / order);
+  return dt * std::min(std::isfinite(shrink) ? shrink : 0.5, std::exp2(-1.0 / order));
+}
+
+double order_cost_figure(int order, int evaluations, double relative) {
+  return std::pow(relative, -1.0 / order) * std::max(evaluations, 1);
+}
+
+namespace tolerance_detail {
+
+std::string format_number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", value);
+  return text;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::string describe_choice(const ToleranceChoice& c, const PilotRun& chosen, std::size_t piloted) {
+  const std::string unit = error_measure_unit(c.measure);
+  std::string text = method_info(c.method).name + " at " + std::to_string(c.steps) + " steps of dt = " +
+                     format_number(c.dt) + " s: ";
+  if (c.order == 0) {
+    text += "the closed form, its round-off bound " + format_number(c.predicted_error) + " " + unit;
+  } else {
+    text += "predicted " + format_number(c.predicted_error) + " " + unit + " (C dt^" + std::to_string(c.order) +
+            " t with C = " + format_number(chosen.constant) + " from a pilot of " + std::to_string(chosen.steps) +
+            " steps over " + format_number(chosen.horizon) + " s)";
+  }
+  text += ", the cheapest of " + std::to_string(piloted) + " piloted method" + (piloted == 1 ? "" : "s") +
+          " at an estimated " + format_number(chosen.planned_seconds) + " s";
+  return text;
+}
+
+}  // namespace tolerance_detail
+
+}  // namespace rigiddyn

@@ -1,0 +1,162 @@
+// run_to_tolerance and its error model (simulate/tolerance.hpp): ε(t) ≈ C dt^p (t − t0) fitted, inverted and
+// refined; measures by name; a free body run to a tolerance against the closed form (the method 'exact').
+#include <gtest/gtest.h>
+
+#include "rigiddyn/simulate/tolerance.hpp"
+#include "rigiddyn/so3/angular_distance.hpp"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace rigiddyn {
+namespace {
+
+TEST(ToleranceModel, StepForErrorInvertsPredictedError) {
+  const double C = 3.7, T = 20.0, target = 1e-6;
+  for (const int p : {1, 2, 4}) {
+    const double dt = step_for_error(C, p, T, target);
+    EXPECT_NEAR(predicted_error(C, p, dt, T), target, 1e-12 * target);  // a power and its root: round-off only
+  }
+  EXPECT_EQ(step_for_error(0.0, 4, T, target), std::numeric_limits<double>::infinity());  // no error: any step
+}
+
+TEST(ToleranceModel, StepsAreTheFewestMultipleWithinTheStep) {
+  EXPECT_EQ(steps_for(10.0, 0.1, 4), 100);  // exactly 100 steps of 0.1 s (no extra block for the round-off of 10/0.1)
+  EXPECT_EQ(steps_for(10.0, 0.099, 4), 104);
+  EXPECT_EQ(steps_for(10.0, 0.099, 12), 108);
+  EXPECT_EQ(steps_for(10.0, std::numeric_limits<double>::infinity(), 4), 4);  // at least one block
+}
+
+TEST(ToleranceModel, ARefinementShrinksTheStepByTheMeasuredRatio) {
+  // measured 16x the target at order 4: dt / 2
+  EXPECT_DOUBLE_EQ(refined_step(0.1, 4, 16e-6, 1e-6), 0.05);
+  // measured below the target (not reliable, or the safety margin): still at most dt / 2^(1/p)
+  EXPECT_DOUBLE_EQ(refined_step(0.1, 2, 0.5e-6, 1e-6), 0.1 / std::sqrt(2.0));
+  EXPECT_DOUBLE_EQ(refined_step(0.1, 2, std::nan(""), 1e-6), 0.05);
+}
+
+TEST(ToleranceModel, TheConstantOfAnExactlyLinearErrorIsRecovered) {
+  const double C = 2.5, dt = 0.01, t0 = 1.0;
+  GlobalErrorEstimate e;
+  e.order = 2;
+  std::vector<double> t;
+  for (int i = 0; i < 5; ++i) {
+    t.push_back(t0 + 0.04 * i);
+    e.attitude.push_back(C * dt * dt * (t.back() - t0));
+    e.verdict.push_back("reliable");
+  }
+  ErrorRecords r;
+  r.n = t.size(), r.t = t.data();
+  EXPECT_NEAR(error_constant(e, r, dt, ErrorMeasure::attitude), C, 1e-12 * C);  // round-off of the division
+  e.attitude[2] *= 3.0;  // a record above the line: the largest ratio wins (conservative)
+  EXPECT_NEAR(error_constant(e, r, dt, ErrorMeasure::attitude), 3.0 * C, 1e-12 * C);
+}
+
+TEST(ToleranceModel, TheLargestErrorAndTheFirstUnreliableRecord) {
+  GlobalErrorEstimate e;
+  e.energy = {0.0, 2e-7, 1e-7};
+  e.verdict = {"reliable", "reliable", "not asymptotic"};
+  EXPECT_EQ(largest_error(e, ErrorMeasure::energy), 2e-7);
+  EXPECT_EQ(first_unreliable(e, ErrorMeasure::energy, 1e-6), 2u);
+  // an order above the window over-estimates (accepted), one below it is not asymptotic (refused)
+  e.verdict[2] = "not asymptotic: observed order 4.6 where 4 is expected (energy)";
+  EXPECT_EQ(first_unreliable(e, ErrorMeasure::energy, 1e-6), 3u);
+  e.verdict[2] = "not asymptotic: observed order 3.2 where 4 is expected (energy)";
+  EXPECT_EQ(first_unreliable(e, ErrorMeasure::energy, 1e-6), 2u);
+  // ... unless its estimate is negligible: 1e-7 <= 1e-5 / 16
+  EXPECT_EQ(first_unreliable(e, ErrorMeasure::energy, 1e-5), 3u);
+  e.energy[2] = std::nan("");  // a record without an estimate: no largest error
+  EXPECT_TRUE(std::isnan(largest_error(e, ErrorMeasure::energy)));
+}
+
+TEST(ToleranceModel, TheLargestErrorsOrderOverridesANoisyRecord) {
+  GlobalErrorEstimate e;
+  e.order = 4;
+  e.attitude = {0.0, 1e-7, 2e-7, 1e-9};
+  e.observed_order = {std::nan(""), 4.0, 4.1, 1.0};  // the last record at a zero crossing: its ratio is noise
+  e.verdict = {"reliable", "reliable", "reliable", "not asymptotic: observed order 1 where 4 is expected (attitude)"};
+  // max d2 / max d1 = 2^4.1 (record 2's): log2 = 4.1
+  EXPECT_NEAR(observed_order_of_largest(e, ErrorMeasure::attitude), 4.1, 1e-12);
+  // at a tolerance of 1e-8 the noisy record (1e-9 > 1e-8 / 16) is not negligible: the record is not accepted, the
+  // run is (its largest error's order is 4.1)
+  EXPECT_EQ(first_unreliable(e, ErrorMeasure::attitude, 1e-8), 3u);
+  EXPECT_EQ(first_uncertified(e, ErrorMeasure::attitude, 1e-8), 4u);
+  // at 1e-6 it is (1e-9 <= 1e-6 / 16): an estimate 16x too small would still meet the tolerance
+  EXPECT_EQ(first_unreliable(e, ErrorMeasure::attitude, 1e-6), 4u);
+  e.observed_order[2] = 2.0;  // the largest error itself is not asymptotic (log2(max d2 / max d1) = 3): refused
+  EXPECT_EQ(first_uncertified(e, ErrorMeasure::attitude, 1e-8), 3u);
+}
+
+TEST(ToleranceModel, OrderPruningFigure) {
+  // at 1e-8 relative: order 4 needs 100 steps x 4 evaluations, order 2 10^4 x 2
+  EXPECT_NEAR(order_cost_figure(4, 4, 1e-8), 400.0, 1e-9);
+  EXPECT_NEAR(order_cost_figure(2, 2, 1e-8), 2e4, 1e-7);
+}
+
+TEST(ToleranceMeasure, NamesRoundTripAndAMistypeIsNamed) {
+  for (const std::string& name : error_measure_names()) {
+    EXPECT_EQ(error_measure_name(error_measure_from_name(name)), name);
+  }
+  try {
+    error_measure_from_name("attitud");
+    FAIL() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("did you mean 'attitude'"), std::string::npos) << e.what();
+  }
+}
+
+// A free body I = (1, 2, 3) tumbling near its middle axis for 20 s: the run to 1e-6 rad must be within 1e-6 rad
+// of the closed form ('exact', round-off ~1e-13 rad) at every record.
+TEST(RunToTolerance, AFreeBodyMeetsItsToleranceAgainstTheClosedForm) {
+  const RigidBody body(1.0, Eigen::Vector3d(1.0, 2.0, 3.0));
+  RigidBodyState initial;
+  initial.w_B = Eigen::Vector3d(0.1, 1.0, 0.1);
+  SimulationOptions base;
+  base.record_every = 4;
+  const double tolerance = 1e-6;
+  const auto run = [&](const ToleranceCandidate& c, const SimulationOptions& o) {
+    SimulationOptions x = o;
+    x.method = c.method;
+    return simulate(body, initial, x);
+  };
+  const auto out = run_to_tolerance<Trajectory>({{Method::rk4, 4}, {Method::splitting_dlm, 2}}, base,
+                                                {tolerance, ErrorMeasure::attitude, 20.0, 10'000'000}, run);
+  ASSERT_TRUE(out.ran);
+  EXPECT_TRUE(out.choice.met) << out.choice.reason;
+  EXPECT_LE(out.choice.certified_error, tolerance);
+  EXPECT_EQ(out.choice.steps % 4, 0);
+  EXPECT_NEAR(out.choice.dt * static_cast<double>(out.choice.steps), 20.0, 1e-12);
+  SimulationOptions exact = base;
+  exact.method = Method::exact, exact.dt = out.choice.dt, exact.steps = out.choice.steps;
+  const Trajectory reference = simulate(body, initial, exact);
+  ASSERT_EQ(reference.size(), out.records.size());
+  for (std::size_t i = 0; i < reference.size(); ++i) {
+    const auto q = [](const Trajectory& r, std::size_t k) {
+      return Eigen::Quaterniond(r.q_WB[4 * k + 3], r.q_WB[4 * k], r.q_WB[4 * k + 1], r.q_WB[4 * k + 2]);
+    };
+    EXPECT_LE(angular_distance(q(reference, i), q(out.records, i)), tolerance) << "record " << i;
+  }
+}
+
+TEST(RunToTolerance, TheCostCapIsReportedWithoutARun) {
+  const RigidBody body(1.0, Eigen::Vector3d(1.0, 2.0, 3.0));
+  RigidBodyState initial;
+  initial.w_B = Eigen::Vector3d(0.1, 1.0, 0.1);
+  const auto run = [&](const ToleranceCandidate& c, const SimulationOptions& o) {
+    SimulationOptions x = o;
+    x.method = c.method;
+    return simulate(body, initial, x);
+  };
+  // 1e-12 rad over 20 s needs thousands of rk4 steps: a cap of 8 cannot hold them
+  const auto out = run_to_tolerance<Trajectory>({{Method::rk4, 4}}, SimulationOptions{},
+                                                {1e-12, ErrorMeasure::attitude, 20.0, 8}, run);
+  EXPECT_FALSE(out.ran);
+  EXPECT_FALSE(out.choice.met);
+  EXPECT_NE(out.choice.reason.find("max_steps = 8"), std::string::npos) << out.choice.reason;
+}
+
+}  // namespace
+}  // namespace rigiddyn

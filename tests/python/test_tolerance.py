@@ -1,0 +1,145 @@
+"""simulate(..., tolerance=): the method and dt chosen, the result certified and checked against closed forms.
+
+The bound of every "met" assert: the run aims at tolerance / 2 (the safety factor) and is certified by its global
+Richardson estimate to be <= tolerance on every record; the estimate is the leading error term, measured within
+0.86-1.22 of the true error on reliable records (GlobalError), so the true error is <= tolerance unless the
+estimate under-estimates by more than the certificate's margin. A closed form gives the true error to round-off
+(TorqueFreeSolution ~1e-13 rad, kepler_propagate ~1e-9 relative, the ballistic particle exact).
+"""
+
+import math
+import pickle
+
+import numpy as np
+import pytest
+
+import rigiddyn as rd
+
+
+def geodesic(q_a, q_b):
+    """Geodesic angle between (n, 4) quaternion rows (x, y, z, w) [rad]: 2 atan2(|v|, |w|) of q_a^-1 q_b, accurate
+    near 0 (an arccos of the dot product floors at ~3e-8 rad)."""
+    q_a = q_a / np.linalg.norm(q_a, axis=1, keepdims=True)
+    q_b = q_b / np.linalg.norm(q_b, axis=1, keepdims=True)
+    w = np.sum(q_a * q_b, axis=1)
+    v = q_a[:, 3:4] * q_b[:, :3] - q_b[:, 3:4] * q_a[:, :3] - np.cross(q_a[:, :3], q_b[:, :3])
+    return 2.0 * np.arctan2(np.linalg.norm(v, axis=1), np.abs(w))
+
+
+FREE_BODIES = [
+    ((1.0, 2.0, 3.0), (0.1, 1.0, 0.1), 20.0),  # near the middle-axis separatrix
+    ((1.0, 2.0, 3.0), (3.0, 0.5, 1.0), 10.0),  # a fast tumble
+    ((2.0, 2.0, 3.0), (0.5, 0.2, 2.0), 15.0),  # nearly symmetric
+]
+
+
+@pytest.mark.parametrize("inertia, w_B, duration", FREE_BODIES)
+@pytest.mark.parametrize("tolerance", [1e-4, 1e-7])
+def test_a_free_body_meets_the_tolerance_against_its_closed_form(inertia, w_B, duration, tolerance):
+    body = rd.RigidBody(1.0, list(inertia))
+    r = rd.simulate(body, rd.RigidBodyState(w_B=list(w_B)), duration=duration, tolerance=tolerance)
+    q, _ = rd.TorqueFreeSolution(np.diag(inertia), [0, 0, 0, 1], list(w_B)).state_at(np.asarray(r.t))
+    true = geodesic(np.asarray(r.q_WB), q).max()
+    assert true <= tolerance  # certified <= tolerance, aimed at tolerance / 2 (module docstring)
+    assert r.choice.met and r.choice.certified_error <= tolerance
+    assert r.choice.steps * r.choice.dt == pytest.approx(duration, rel=1e-12)  # duration / steps, round-off
+    assert r.t[-1] == pytest.approx(duration, rel=1e-12)
+
+
+@pytest.mark.parametrize("tolerance", [1e-2, 1.0])
+def test_a_kepler_orbit_meets_a_position_tolerance(tolerance):
+    scene, initial, _ = rd.load_scene("kepler")
+    period = 5828.516637686  # the scene's orbit, 2 pi sqrt(a^3 / GM)
+    r = rd.simulate(scene, initial, duration=2 * period, tolerance=tolerance * 1e3)  # metres over 2 orbits
+    assert r.choice.measure == "position"  # a scene of particles
+    p, _ = rd.kepler_propagate(initial[0].p_W, initial[0].v_W, 398600.4418e9, np.asarray(r.t))
+    true = np.linalg.norm(np.asarray(r.p_W)[:, 0, :] - np.asarray(p), axis=1).max()
+    # certified <= tolerance (module docstring); kepler_propagate's own error ~1e-9 relative of 7e6 m = 7e-3 m
+    assert true <= tolerance * 1e3 + 7e-3
+
+
+def test_a_ballistic_particle_takes_the_fewest_steps():
+    # rk4 integrates a quadratic motion exactly: the error is round-off at any step
+    r = rd.simulate(rd.Particle(1.0), rd.ParticleState(v_W=[1.0, 0.0, 5.0]), duration=2.0, tolerance=1e-9,
+                    gravity=True)
+    assert r.choice.measure == "position" and r.choice.met
+    t = np.asarray(r.t)
+    exact = np.stack([t, 0 * t, 5.0 * t - 0.5 * 9.81 * t**2], axis=1)
+    assert np.abs(np.asarray(r.p_W) - exact).max() <= 1e-9  # certified; round-off of ~|p| 8 eps per step
+
+
+def test_a_given_method_keeps_it_and_chooses_dt():
+    body = rd.RigidBody(1.0, [1.0, 2.0, 3.0])
+    r = rd.simulate(body, rd.RigidBodyState(w_B=[0.1, 1.0, 0.1]), duration=10.0, tolerance=1e-5, method="splitting_dlm")
+    assert r.choice.method == "splitting_dlm" and r.choice.order == 2
+    assert {p["method"] for p in r.choice.pilots} == {"splitting_dlm"}  # the short pilot and the whole-horizon one
+
+
+def test_the_choice_is_reported_and_pickles():
+    body = rd.RigidBody(1.0, [1.0, 2.0, 3.0])
+    r = rd.simulate(body, rd.RigidBodyState(w_B=[0.1, 1.0, 0.1]), duration=10.0, tolerance=1e-6, record_every=4)
+    c = r.choice
+    assert c.tolerance == 1e-6 and c.measure == "attitude" and c.steps % 4 == 0
+    assert c.method in c.reason and "certified" in c.reason
+    assert any(p["verdict"] == "used" and p["method"] == c.method for p in c.pilots)
+    assert repr(c).startswith("ToleranceChoice(method=")
+    assert pickle.loads(pickle.dumps(c)) == c
+    again = pickle.loads(pickle.dumps(r))
+    assert again.choice == c and again.error == r.error
+
+
+def test_a_scene_result_carries_the_choice():
+    scene, initial, _ = rd.load_scene("pendulum")
+    r = rd.simulate(scene, initial, duration=2.0, tolerance=1e-6)
+    assert r.choice.met and r.choice.measure == "attitude"
+    assert pickle.loads(pickle.dumps(r)).choice == r.choice
+
+
+def test_a_tolerance_as_a_quantity_is_converted():
+    pint = pytest.importorskip("pint")
+    u = pint.UnitRegistry()
+    body = rd.RigidBody(1.0, [1.0, 2.0, 3.0])
+    state = rd.RigidBodyState(w_B=[0.1, 1.0, 0.1])
+    r = rd.simulate(body, state, duration=5.0 * u.s, tolerance=1e-3 * u.mrad)
+    assert r.choice.tolerance == pytest.approx(1e-6, rel=1e-15)  # one conversion factor
+
+
+def test_the_cost_cap_raises_with_its_figures():
+    body = rd.RigidBody(1.0, [1.0, 2.0, 3.0])
+    couple = rd.AppliedLoad(torque=[0.0, 0.0, 0.1], frame="body")  # no closed form: every method has an order
+    with pytest.raises(rd.ToleranceError, match="max_steps = 8") as info:
+        rd.simulate(body, rd.RigidBodyState(w_B=[0.1, 1.0, 0.1]), duration=20.0, tolerance=1e-10, max_steps=8,
+                    loads=couple)
+    e = info.value
+    assert isinstance(e, ValueError) and e.tolerance == 1e-10 and e.measure == "attitude"
+    assert e.result is None and e.error > 1e-10 and not e.choice.met
+
+
+def test_a_python_force_is_refused():
+    couple = rd.PythonForce(lambda t, body, p_W, q_WB, v_W, w_B: ((0.0, 0.0, 0.0), (0.0, 0.0, 0.01)))
+    scene = rd.Scene([rd.RigidBody(1.0, [1.0, 2.0, 3.0])], elements=[couple])
+    with pytest.raises(rd.ToleranceError, match="PythonForce") as info:
+        rd.simulate(scene, [rd.RigidBodyState(w_B=[0.1, 1.0, 0.1])], duration=1.0, tolerance=1e-6)
+    assert info.value.result is None and info.value.choice is None
+
+
+BODY = rd.RigidBody(1.0, [1.0, 2.0, 3.0])
+STATE = rd.RigidBodyState(w_B=[0.1, 1.0, 0.1])
+
+
+@pytest.mark.parametrize("kwargs, match", [
+    (dict(duration=1.0, tolerance=0.0), r"tolerance: expected a finite number > 0 \[rad\], got 0"),
+    (dict(duration=1.0, tolerance=-1e-6), r"tolerance: expected a finite number > 0 \[rad\], got -9.99"),
+    (dict(duration=1.0, tolerance=math.nan), r"tolerance: expected a finite number, got nan"),
+    (dict(duration=1.0, tolerance=1e-6, dt=0.01), r"dt: expected None when tolerance is given .* got float 0.01"),
+    (dict(steps=10, tolerance=1e-6), r"steps: expected None when tolerance is given"),
+    (dict(tolerance=1e-6), r"duration: expected the time span"),
+    (dict(duration=1.0, tolerance=1e-6, error=False), r"error: expected True when tolerance is given"),
+    (dict(duration=1.0, tolerance=1e-6, measure="attitud"), r"measure: .*did you mean 'attitude'.* got 'attitud'"),
+    (dict(duration=1.0, tolerance=1e-6, max_steps=2), r"max_steps: expected an integer in \[4, "),
+    (dict(duration=1.0, measure="attitude", dt=0.1), r"measure: expected None without tolerance"),
+    (dict(duration=1.0), r"dt: expected a time step \[s\] > 0, or tolerance="),
+])
+def test_bad_input_is_named(kwargs, match):
+    with pytest.raises(ValueError, match=match):
+        rd.simulate(BODY, STATE, **kwargs)
