@@ -6,6 +6,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <array>
 #include <chrono>
 #include <cstdint>
 #include <optional>
@@ -70,6 +71,29 @@ struct GlobalError {
   pybind11::array_t<bool> reliable;
 };
 
+// The Python str of each verdict of an estimate, equal verdicts sharing one: the last few distinct ones are
+// compared first (a run's records alternate between a few verdicts, e.g. "reliable" and "interpolated ..."), the
+// others looked up in a dict.
+class VerdictStrings {
+ public:
+  pybind11::object operator()(const std::string& verdict) {
+    for (const auto& [text, object] : recent_) {
+      if (text == verdict) return object;
+    }
+    const pybind11::str text(verdict);
+    if (!all_.contains(text)) all_[text] = text;
+    pybind11::object object = all_[text];
+    recent_[next_] = {verdict, object};
+    next_ = (next_ + 1) % recent_.size();
+    return object;
+  }
+
+ private:
+  pybind11::dict all_;
+  std::array<std::pair<std::string, pybind11::object>, 4> recent_;
+  std::size_t next_ = 0;
+};
+
 // The GlobalError of `e` for n records: the state quantities (n,) for one body (per_body false), else (n, nb).
 inline GlobalError to_global_error(GlobalErrorEstimate&& e, bool per_body) {
   namespace py = pybind11;
@@ -77,11 +101,13 @@ inline GlobalError to_global_error(GlobalErrorEstimate&& e, bool per_body) {
   const std::vector<py::ssize_t> state_shape =
       per_body ? std::vector<py::ssize_t>{n, static_cast<py::ssize_t>(e.bodies)} : std::vector<py::ssize_t>{n};
   py::array_t<bool> reliable(n);
+  bool* is_reliable = reliable.mutable_data();
   py::tuple verdict(n);
+  VerdictStrings texts;
   for (py::ssize_t i = 0; i < n; ++i) {
     const std::string& v = e.verdict[static_cast<std::size_t>(i)];
-    reliable.mutable_at(i) = v == "reliable";
-    verdict[i] = py::str(v);
+    is_reliable[i] = v == "reliable";
+    verdict[i] = texts(v);
   }
   reliable.attr("flags").attr("writeable") = false;
   return GlobalError{e.order,
@@ -105,16 +131,15 @@ inline GlobalError to_batch_global_error(BatchErrorEstimate&& e, bool per_body) 
   const std::vector<py::ssize_t> state_shape =
       per_body ? std::vector<py::ssize_t>{N, n, static_cast<py::ssize_t>(e.bodies)} : std::vector<py::ssize_t>{N, n};
   py::array_t<bool> reliable({N, n});
-  py::dict texts;  // verdict -> its str
+  bool* is_reliable = reliable.mutable_data();  // C-contiguous (N, n)
+  VerdictStrings texts;
   py::tuple verdict(N);
   for (py::ssize_t i = 0; i < N; ++i) {
     py::tuple row(n);
     for (py::ssize_t k = 0; k < n; ++k) {
       const std::string& v = e.verdict[static_cast<std::size_t>(i * n + k)];
-      reliable.mutable_at(i, k) = v == "reliable";
-      const py::str text(v);
-      if (!texts.contains(text)) texts[text] = text;
-      row[k] = texts[text];
+      is_reliable[i * n + k] = v == "reliable";
+      row[k] = texts(v);
     }
     verdict[i] = row;
   }

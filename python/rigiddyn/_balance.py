@@ -345,7 +345,7 @@ def _world_momentum(q: np.ndarray, w_B: np.ndarray, inertia: np.ndarray, scalar_
     R = np.stack([np.stack([1 - 2 * (y * y + z * z), 2 * (x * y - s * z), 2 * (x * z + s * y)], -1),
                   np.stack([2 * (x * y + s * z), 1 - 2 * (x * x + z * z), 2 * (y * z - s * x)], -1),
                   np.stack([2 * (x * z - s * y), 2 * (y * z + s * x), 1 - 2 * (x * x + y * y)], -1)], -2)
-    return np.asarray(np.einsum("nij,nj->ni", R, w_B @ inertia.T), dtype=float)
+    return np.asarray(np.einsum("nij,jk,nk->ni", R, inertia, w_B), dtype=float)  # no BLAS threads for (n, 3) rows
 
 
 def of_scene(result: Any, impulse_W: Any, angular_impulse_W: Any, not_applicable: str, dt: float) -> Balance:

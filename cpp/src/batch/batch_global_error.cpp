@@ -28,8 +28,9 @@ ErrorRecords sample_records(const Batch& b, std::size_t i, std::int64_t bodies) 
   return out;
 }
 
-// Copies the estimate `e` of sample i (e.verdict.size() <= n records) into its rows of `out`.
-void put_estimate(BatchErrorEstimate& out, std::size_t i, const GlobalErrorEstimate& e) {
+// Moves the estimate `e` of sample i (e.verdict.size() <= n records) into its rows of `out`; the rows after them
+// say that the run at h stopped there.
+void put_estimate(BatchErrorEstimate& out, std::size_t i, GlobalErrorEstimate&& e) {
   const std::size_t n = out.records, nb = static_cast<std::size_t>(out.bodies);
   std::copy(e.attitude.begin(), e.attitude.end(), out.attitude.begin() + i * n * nb);
   std::copy(e.angular_velocity.begin(), e.angular_velocity.end(), out.angular_velocity.begin() + i * n * nb);
@@ -38,7 +39,9 @@ void put_estimate(BatchErrorEstimate& out, std::size_t i, const GlobalErrorEstim
   std::copy(e.energy.begin(), e.energy.end(), out.energy.begin() + i * n);
   std::copy(e.angular_momentum.begin(), e.angular_momentum.end(), out.angular_momentum.begin() + i * n);
   std::copy(e.observed_order.begin(), e.observed_order.end(), out.observed_order.begin() + i * n);
-  std::copy(e.verdict.begin(), e.verdict.end(), out.verdict.begin() + i * n);
+  std::move(e.verdict.begin(), e.verdict.end(), out.verdict.begin() + i * n);
+  std::fill(out.verdict.begin() + i * n + e.verdict.size(), out.verdict.begin() + (i + 1) * n,
+            "no record: the run at h diverged");
 }
 
 std::int64_t bodies_of(const BatchTrajectory&) { return 1; }
@@ -71,7 +74,7 @@ BatchErrorEstimate batch_error_estimate(const Batch& h, const Batch& h2, const B
   const std::size_t rows = h.samples * h.records, nb = static_cast<std::size_t>(out.bodies);
   for (auto* per_body : {&out.attitude, &out.angular_velocity, &out.position, &out.velocity}) per_body->assign(rows * nb, nan);
   for (auto* per_record : {&out.energy, &out.angular_momentum, &out.observed_order}) per_record->assign(rows, nan);
-  out.verdict.assign(rows, "no record: the run at h diverged");
+  out.verdict.resize(rows);  // each sample's rows filled by put_estimate
   // each sample writes only its own rows
   parallel_for(h.samples, threads, [&](std::size_t i, int) {
     const SampleModel& model = models[models.size() == 1 ? 0 : i];

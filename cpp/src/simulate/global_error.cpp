@@ -49,18 +49,21 @@ struct Differences {
 // The differences of the bodies' values of one kind of quantity taken together: d1 and d2 the norms of the bodies'
 // differences, the round-off bound their sum. Checking the order on these rather than body by body keeps a body
 // whose own error crosses zero at the record (where its ratio r says nothing) from failing the check alone.
-Differences combined(const std::vector<Differences>& bodies) {
-  Differences out{0.0, 0.0, 0.0};
-  for (const Differences& d : bodies) out.d1 += d.d1 * d.d1, out.d2 += d.d2 * d.d2, out.round_off += d.round_off;
-  out.d1 = std::sqrt(out.d1), out.d2 = std::sqrt(out.d2);
-  return out;
-}
+struct CombinedDifferences {
+  double d1_squared = 0.0, d2_squared = 0.0, round_off = 0.0;
+
+  void add(const Differences& d) {
+    d1_squared += d.d1 * d.d1, d2_squared += d.d2 * d.d2, round_off += d.round_off;
+  }
+  Differences total() const { return {std::sqrt(d1_squared), std::sqrt(d2_squared), round_off}; }
+};
 
 // What one common record's quantities say: the estimate of each, and the record's observed order and verdict
 // (those of the quantity whose ratio r is furthest from 2^p, unless a run diverged).
 class CommonRecord {
  public:
-  CommonRecord(int order, std::string coarse_problem) : order_(order), blocked_(std::move(coarse_problem)) {}
+  CommonRecord(int order, std::string coarse_problem)
+      : order_(order), expected_(std::exp2(order)), blocked_(std::move(coarse_problem)) {}
 
   // ε of one body's value of a quantity (its order checked with the other bodies', by check()).
   double estimate(const Differences& d) {
@@ -69,12 +72,12 @@ class CommonRecord {
       block("step beyond the stability limit: the run at h or 2h diverged");
       return nan;
     }
-    return d.d1 / (std::exp2(order_) - 1.0);  // leading error term of y_h
+    return d.d1 / (expected_ - 1.0);  // leading error term of y_h
   }
 
   // The observed order of a kind of quantity named `name` (the differences of its bodies together): r must lie
   // in [2^p / 1.5, 2^p · 1.5].
-  void check(const Differences& d, const char* name) { ratio(d, name, std::exp2(order_) * 1.5); }
+  void check(const Differences& d, const char* name) { ratio(d, name, expected_ * 1.5); }
 
   // ε of a conserved quantity of the run (energy, |L|), whose error may fall faster than h^p: the leading term
   // of an invariant's error often vanishes (rk4 conserves a quadratic invariant of a linear problem to
@@ -83,8 +86,8 @@ class CommonRecord {
   double invariant(const Differences& d, const char* name) {
     const double epsilon = estimate(d);
     if (!(d.d1 > d.round_off) || !std::isfinite(d.d1)) return epsilon;
-    const double r = ratio(d, name, std::exp2(order_ + 1) * 1.5);
-    return r > std::exp2(order_) * 1.5 && r <= std::exp2(order_ + 1) * 1.5 ? d.d1 / (r - 1.0) : epsilon;
+    const double r = ratio(d, name, 2.0 * expected_ * 1.5);
+    return r > expected_ * 1.5 && r <= 2.0 * expected_ * 1.5 ? d.d1 / (r - 1.0) : epsilon;
   }
 
   // The record is not reliable, for the reason `why` (the first given is kept).
@@ -94,6 +97,7 @@ class CommonRecord {
 
   double observed_order() const { return observed_order_; }
   int order() const { return order_; }
+  double expected_ratio() const { return expected_; }
   std::string verdict() const {
     if (!blocked_.empty()) return blocked_;
     return problem_.empty() ? "reliable" : problem_;
@@ -112,7 +116,7 @@ class CommonRecord {
       block("step beyond the stability limit: the run at 4h diverged");
       return nan;
     }
-    const double expected = std::exp2(order_);
+    const double expected = expected_;
     const double r = d.d2 / d.d1;
     const bool inside = r >= expected / 1.5 && r <= highest;
     const double distance = std::abs(std::log(r / expected));
@@ -131,6 +135,7 @@ class CommonRecord {
   }
 
   int order_;
+  double expected_;  // 2^p, the ratio r of the asymptotic regime
   std::string blocked_, problem_;
   bool worst_outside_ = false;
   double worst_distance_ = -1.0;
@@ -166,7 +171,7 @@ void check_balance(CommonRecord& record, const ErrorRecords& h, const ErrorRecor
   };
   if (h2.balance.empty() || h4.balance.empty()) return;
   const Differences d = differences(h, h2, h4, i, j, size, steps, balance);
-  const double estimate = d.d1 / (std::exp2(record.order()) - 1.0);
+  const double estimate = d.d1 / (record.expected_ratio() - 1.0);
   const double error = std::abs(h.balance[i] - h.balance[0]);
   if (std::isfinite(d.d1) && error > 2.0 * estimate + 2.0 * d.round_off) {
     char text[192];
@@ -184,12 +189,14 @@ RecordEstimate estimate_common(const ErrorRecords& h, const ErrorRecords& h2, co
   const std::int64_t nb = h.bodies;
   // the differences of a kind of quantity, body by body: their estimates, then their order checked together
   const auto kind = [&](std::vector<double>& estimates, const char* name, auto distance_of_body, auto size_of_body) {
-    std::vector<Differences> bodies;
+    CombinedDifferences bodies;
+    estimates.reserve(static_cast<std::size_t>(nb));
     for (std::int64_t b = 0; b < nb; ++b) {
-      bodies.push_back(differences(h, h2, h4, i, j, size_of_body(b), steps, distance_of_body(b)));
-      estimates.push_back(record.estimate(bodies.back()));
+      const Differences d = differences(h, h2, h4, i, j, size_of_body(b), steps, distance_of_body(b));
+      bodies.add(d);
+      estimates.push_back(record.estimate(d));
     }
-    record.check(combined(bodies), name);
+    record.check(bodies.total(), name);
   };
   kind(out.attitude, "attitude",
        [](std::int64_t b) {
@@ -243,31 +250,30 @@ std::string seconds(double t) {
   return text;
 }
 
-// a·(1 − w) + b·w for each quantity, not checked: the verdict of the first of a and b that is not reliable, else
-// `how` (observed order NaN).
-RecordEstimate blend(const RecordEstimate& a, const RecordEstimate& b, double w, const std::string& how) {
-  RecordEstimate out = a;
+// Appends a·(1 − w) + b·w for each quantity, not checked: the verdict of the first of a and b that is not
+// reliable, else `how` (observed order NaN).
+void append_blend(GlobalErrorEstimate& out, const RecordEstimate& a, const RecordEstimate& b, double w,
+                  const std::string& how) {
   const auto mix = [w](double x, double y) { return x * (1.0 - w) + y * w; };
   for (std::size_t k = 0; k < a.attitude.size(); ++k) {
-    out.attitude[k] = mix(a.attitude[k], b.attitude[k]);
-    out.angular_velocity[k] = mix(a.angular_velocity[k], b.angular_velocity[k]);
-    out.position[k] = mix(a.position[k], b.position[k]);
-    out.velocity[k] = mix(a.velocity[k], b.velocity[k]);
+    out.attitude.push_back(mix(a.attitude[k], b.attitude[k]));
+    out.angular_velocity.push_back(mix(a.angular_velocity[k], b.angular_velocity[k]));
+    out.position.push_back(mix(a.position[k], b.position[k]));
+    out.velocity.push_back(mix(a.velocity[k], b.velocity[k]));
   }
-  out.energy = mix(a.energy, b.energy);
-  out.angular_momentum = mix(a.angular_momentum, b.angular_momentum);
-  out.observed_order = nan;
-  out.verdict = a.verdict != "reliable" ? a.verdict : (b.verdict != "reliable" ? b.verdict : how);
-  return out;
+  out.energy.push_back(mix(a.energy, b.energy));
+  out.angular_momentum.push_back(mix(a.angular_momentum, b.angular_momentum));
+  out.observed_order.push_back(nan);
+  out.verdict.push_back(a.verdict != "reliable" ? a.verdict : (b.verdict != "reliable" ? b.verdict : how));
 }
 
-// a scaled by s (its verdict if not reliable, else `how`).
-RecordEstimate scaled(const RecordEstimate& a, double s, const std::string& how) {
+// Appends a scaled by s (its verdict if not reliable, else `how`): the blend of a zero estimate and a.
+void append_scaled(GlobalErrorEstimate& out, const RecordEstimate& a, double s, const std::string& how) {
   RecordEstimate zero = a;
   for (auto* v : {&zero.attitude, &zero.angular_velocity, &zero.position, &zero.velocity}) std::fill(v->begin(), v->end(), 0.0);
   zero.energy = zero.angular_momentum = 0.0;
   zero.verdict = "reliable";
-  return blend(zero, a, s, how);
+  append_blend(out, zero, a, s, how);
 }
 
 void append(GlobalErrorEstimate& out, const RecordEstimate& r) {
@@ -279,6 +285,13 @@ void append(GlobalErrorEstimate& out, const RecordEstimate& r) {
   out.angular_momentum.push_back(r.angular_momentum);
   out.observed_order.push_back(r.observed_order);
   out.verdict.push_back(r.verdict);
+}
+
+// Room for n records of nb bodies.
+void reserve(GlobalErrorEstimate& out, std::size_t n, std::int64_t nb) {
+  for (auto* v : {&out.attitude, &out.angular_velocity, &out.position, &out.velocity}) v->reserve(n * nb);
+  for (auto* v : {&out.energy, &out.angular_momentum, &out.observed_order}) v->reserve(n);
+  out.verdict.reserve(n);
 }
 
 // The step index of the answer's record i (records every k-th step, and the last).
@@ -308,7 +321,7 @@ void name_exponential_growth(std::vector<RecordEstimate>& common, const double* 
     const double tj = t[j * stride];
     const std::array<double, 4> sizes = state_sizes(common[j]);
     for (std::size_t k = 0; k < sizes.size() && past.empty() && tj > 0.0; ++k) {
-      const double scaled = sizes[k] / std::pow(tj, 4.0);
+      const double scaled = sizes[k] / (tj * tj * tj * tj);
       if (std::isfinite(scaled) && scaled > beyond_polynomial * least[k]) {
         const double rate = std::log(scaled / least[k] * std::pow(tj / least_t[k], 4.0)) / (tj - least_t[k]);
         char text[256];
@@ -320,7 +333,7 @@ void name_exponential_growth(std::vector<RecordEstimate>& common, const double* 
       }
     }
     for (std::size_t k = 0; k < sizes.size() && tj > 0.0; ++k) {
-      const double scaled = sizes[k] / std::pow(tj, 4.0);
+      const double scaled = sizes[k] / (tj * tj * tj * tj);
       if (scaled > 0.0 && scaled < least[k]) least[k] = scaled, least_t[k] = tj;
     }
     if (!past.empty() && common[j].verdict.rfind("not asymptotic", 0) == 0) common[j].verdict = past + common[j].verdict;
@@ -396,6 +409,7 @@ GlobalErrorEstimate estimate_global_error(const ErrorRecords& h, const ErrorReco
   // the common records the answer has: j = 0 .. last (answer record j·stride)
   const std::size_t last = h.n == 0 ? 0 : std::min((h.n - 1) / stride, static_cast<std::size_t>(answer.steps / m));
   std::vector<RecordEstimate> common;
+  common.reserve(h.n > 0 ? last + 1 : 0);
   for (std::size_t j = 0; j <= last && h.n > 0; ++j) {
     const std::size_t i = j * stride;
     const std::string problem = j >= h2.n   ? "step beyond the stability limit: the run at 2h diverged"
@@ -408,18 +422,19 @@ GlobalErrorEstimate estimate_global_error(const ErrorRecords& h, const ErrorReco
     }
   }
   name_exponential_growth(common, h.t, stride);
+  reserve(out, h.n, h.bodies);
+  const std::string between = "interpolated between the reliable records before and after it";
   for (std::size_t i = 0; i < h.n; ++i) {
     const std::size_t j = i / stride;
     if (i % stride == 0 && j <= last) {
       append(out, common[j]);
     } else if (j < last) {  // between common records j and j + 1
       const double tj = h.t[j * stride], tk = h.t[(j + 1) * stride];
-      append(out, blend(common[j], common[j + 1], (h.t[i] - tj) / (tk - tj),
-                        "interpolated between the reliable records at t = " + seconds(tj) + " and " + seconds(tk)));
+      append_blend(out, common[j], common[j + 1], (h.t[i] - tj) / (tk - tj), between);
     } else if (last > 0) {  // after the last common record: linear growth from t0
       const double t0 = h.t[0], tc = h.t[last * stride];
-      append(out, scaled(common[last], (h.t[i] - t0) / (tc - t0),
-                         "extrapolated from the reliable record at t = " + seconds(tc)));
+      append_scaled(out, common[last], (h.t[i] - t0) / (tc - t0),
+                    "extrapolated from the reliable record at t = " + seconds(tc));
     } else {
       RecordEstimate none = common[0];
       for (auto* v : {&none.attitude, &none.angular_velocity, &none.position, &none.velocity}) std::fill(v->begin(), v->end(), nan);
