@@ -94,7 +94,7 @@ def check_units(units: Mapping[str, str] | None, name: str = "units") -> dict[st
     >>> check_units({"lenght": "km"})
     Traceback (most recent call last):
     ...
-    ValueError: units: expected a dimension among length, angle, time, mass, energy, power, force, got 'lenght' (did you mean 'length'?)
+    ValueError: units: expected a dimension among length, angle, ..., got 'lenght' (did you mean 'length'?)
     >>> check_units({"length": "s"})
     Traceback (most recent call last):
     ...
@@ -171,11 +171,12 @@ def _converted(si_unit: str, chosen: tuple[tuple[str, str], ...]) -> tuple[float
         return 1.0, si_unit
     ureg = registry()
     source, target = ureg.Unit(""), ureg.Unit("")
-    up, down = [], []
+    up: list[str] = []
+    down: list[str] = []
     for symbol, power in powers:
         text = units.get(_DIMENSION_OF[symbol], symbol)
         source = source * ureg.Unit(symbol) ** power
-        target = target * ureg.Unit(text) ** power
+        target = target * unit(text, "units") ** power  # checked: read by rigiddyn.units' grammar
         (up if power > 0 else down).append(_written(text, power))
     written = " ".join(up) + ("/" + " ".join(down) if down else "")
     return float(ureg.Quantity(1.0, source).to(target).magnitude), written

@@ -216,12 +216,14 @@ def write_csv(result: Any, path: str | Path, scalar_first: bool | None = None, *
     Examples
     --------
     >>> import tempfile, pathlib
+    >>> folder = tempfile.TemporaryDirectory()
     >>> from rigiddyn.trajectory import read_columns, write_csv
     >>> r = rd.simulate(rd.Particle(1.0), rd.ParticleState(v_W=[1000.0, 0.0, 0.0]), dt=1800.0, steps=2,
     ...                 error=False)
-    >>> path = write_csv(r, pathlib.Path(tempfile.mkdtemp()) / "t.csv", units={"length": "km", "time": "h"})
+    >>> path = write_csv(r, pathlib.Path(folder.name) / "t.csv", units={"length": "km", "time": "h"})
     >>> read_columns(path)["p_W_x [km]"], read_columns(path)["v_W_x [km/h]"]
     (array([   0., 1800., 3600.]), array([3600., 3600., 3600.]))
+    >>> folder.cleanup()
     """
     table = columns(result, scalar_first, units=units)
     path = Path(path)
@@ -265,12 +267,14 @@ def write_npz(result: Any, path: str | Path, scalar_first: bool | None = None, *
     Examples
     --------
     >>> import tempfile, pathlib
+    >>> folder = tempfile.TemporaryDirectory()
     >>> from rigiddyn.trajectory import write_npz
     >>> r = rd.simulate(rd.Particle(1.0), rd.ParticleState(v_W=[1000.0, 0.0, 0.0]), dt=1800.0, steps=2,
     ...                 error=False)
-    >>> path = write_npz(r, pathlib.Path(tempfile.mkdtemp()) / "t.npz", units={"length": "km", "time": "h"})
+    >>> path = write_npz(r, pathlib.Path(folder.name) / "t.npz", units={"length": "km", "time": "h"})
     >>> np.load(path)["t [h]"]
     array([0. , 0.5, 1. ])
+    >>> folder.cleanup()
     """
     path = Path(path)
     table: dict[str, Any] = columns(result, scalar_first, units=units)  # Any: numpy's stub types savez's keywords
@@ -315,12 +319,14 @@ def write_parquet(result: Any, path: str | Path, scalar_first: bool | None = Non
     Examples
     --------
     >>> import tempfile, pathlib
+    >>> folder = tempfile.TemporaryDirectory()
     >>> from rigiddyn.trajectory import read_columns, write_parquet
     >>> r = rd.simulate(rd.Particle(1.0), rd.ParticleState(v_W=[1000.0, 0.0, 0.0]), dt=1800.0, steps=2,
     ...                 error=False)
-    >>> path = write_parquet(r, pathlib.Path(tempfile.mkdtemp()) / "t.parquet", units={"length": "km"})
+    >>> path = write_parquet(r, pathlib.Path(folder.name) / "t.parquet", units={"length": "km"})
     >>> read_columns(path)["p_W_x [km]"]
     array([   0., 1800., 3600.])
+    >>> folder.cleanup()
     """
     try:
         import pyarrow as pa

@@ -186,11 +186,13 @@ def plot_trajectory(result: Any, path: str | Path, attitude: str = "euler:ZYX", 
     Examples
     --------
     >>> import tempfile, pathlib
+    >>> folder = tempfile.TemporaryDirectory()
     >>> from rigiddyn.trajectory_plot import plot_trajectory
     >>> r = rd.simulate(rd.RigidBody(1.0, [1.0, 2.0, 3.0]), rd.RigidBodyState(w_B=[0.0, 0.0, 0.1]), dt=10.0,
     ...                 steps=36, error=False)
-    >>> plot_trajectory(r, pathlib.Path(tempfile.mkdtemp()) / "w.png", units={"angle": "deg"}).name
+    >>> plot_trajectory(r, pathlib.Path(folder.name) / "w.png", units={"angle": "deg"}).name
     'w.png'
+    >>> folder.cleanup()
     """
     import matplotlib.pyplot as plt
 
@@ -364,13 +366,15 @@ def plot_scene(result: Any, kinds: list[str], path: str | Path, attitude: str = 
     Examples
     --------
     >>> import tempfile, pathlib
+    >>> folder = tempfile.TemporaryDirectory()
     >>> from rigiddyn.trajectory_plot import plot_scene
     >>> scene = rd.Scene()
     >>> scene.add_body(rd.Particle(1.0), name="sat")
     0
     >>> r = rd.simulate(scene, [rd.ParticleState(v_W=[1000.0, 0.0, 0.0])], dt=60.0, steps=10, error=False)
-    >>> plot_scene(r, ["Particle"], pathlib.Path(tempfile.mkdtemp()) / "s.png", units={"length": "km"}).name
+    >>> plot_scene(r, ["Particle"], pathlib.Path(folder.name) / "s.png", units={"length": "km"}).name
     's.png'
+    >>> folder.cleanup()
     """
     import matplotlib.pyplot as plt
 
