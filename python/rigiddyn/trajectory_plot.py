@@ -122,6 +122,8 @@ def trajectory_figure(result: Any, attitude: str = "euler:ZYX", title: str = "",
     >>> fig = trajectory_figure(r, units={"angle": "deg", "time": "h"})
     >>> [ax.get_ylabel() for ax in fig.axes[:2]], fig.axes[-1].get_xlabel()
     (['angular velocity w_B [deg/h]', 'Euler ZYX (intrinsic) [deg]'], 't [h]')
+    >>> import matplotlib.pyplot as plt
+    >>> plt.close(fig)
     """
     import matplotlib.pyplot as plt
 
@@ -275,6 +277,8 @@ def scene_figure(result: Any, kinds: list[str], attitude: str = "euler:ZYX", tit
     >>> fig = scene_figure(r, ["Particle"], units={"length": "km", "time": "min"})
     >>> fig.axes[0].get_ylabel(), fig.axes[-1].get_xlabel()
     ('position p_W [km]', 't [min]')
+    >>> import matplotlib.pyplot as plt
+    >>> plt.close(fig)
     """
     import matplotlib.pyplot as plt
 

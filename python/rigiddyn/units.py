@@ -251,10 +251,43 @@ def _read_unit(text: str, pos: int, rule: str) -> dict[str, float]:
 
 
 def unit(text: Any, name: str) -> Any:
-    """The pint Unit of the unit expression `text` alone, without a number ("km", "deg", "kg*km^2/h"), read by
-    the grammar of the module docstring (each name looked up alone in the registry, which imports pint).
-    TypeError for anything but a string, ValueError "<name>: expected a unit such as "km", got <text>
-    (<why>)" for text outside the grammar or a name the registry does not know."""
+    """The pint Unit of a unit expression alone, without a number, read by the grammar of the module docstring
+    (each name looked up alone in the registry, which imports pint).
+
+    Parameters
+    ----------
+    text : str
+        A unit: "km", "deg", "kg*km^2/h", "kg km^2 / h" (at most MAX_UNIT_TEXT characters).
+    name : str
+        What the text is, for messages (``units['length']``).
+
+    Returns
+    -------
+    pint.Unit
+        Of the registry of `registry()`.
+
+    Raises
+    ------
+    TypeError
+        `text` is no string.
+    ValueError
+        "<name>: expected a unit such as "km", got <text> (<why>)": text outside the grammar (a number, an
+        operator, unbalanced parentheses, nothing) or a name the registry does not know.
+
+    See Also
+    --------
+    quantity, registry
+
+    Examples
+    --------
+    >>> from rigiddyn.units import unit
+    >>> unit("kg km^2 / h", "u")
+    <Unit('kilogram * kilometer ** 2 / hour')>
+    >>> unit("km; import os", "units['length']")
+    Traceback (most recent call last):
+    ...
+    ValueError: units['length']: expected a unit such as "km", got 'km; import os' (';' at character 3: ...)
+    """
     if not isinstance(text, str):
         raise TypeError(f'{name}: expected a unit as a string such as "km", got {_shown(text)}')
     try:

@@ -225,7 +225,7 @@ def test_the_record_names_every_dimension():
     np.testing.assert_allclose(rpm["w [turn/min]"], [30.0], rtol=FACTOR_ROUNDING + 3 * U, atol=0.0)
 
 
-@pytest.mark.parametrize("module", ["output_units", "trajectory", "scene_result", "trajectory_plot"])
+@pytest.mark.parametrize("module", ["output_units", "units", "trajectory", "scene_result", "trajectory_plot"])
 def test_the_examples_of_the_modules_run_and_print_what_they_show(module):
     """The docstrings of these modules' functions are outside rigiddyn.__all__ (test_docstrings runs those);
     their examples run here, as there (np and rd imported)."""
@@ -237,6 +237,10 @@ def test_the_examples_of_the_modules_run_and_print_what_they_show(module):
     failed, attempted = doctest.testmod(found, extraglobs={"np": np, "rd": rd},
                                         optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
     assert attempted > 0 and failed == 0, f"{module}: {failed} of {attempted} examples failed (output above)"
+    if module == "trajectory_plot":
+        import matplotlib.pyplot as plt
+
+        assert not plt.get_fignums(), "an example left a figure open"
 
 
 # ------------------------------------------------------------------ the command line
