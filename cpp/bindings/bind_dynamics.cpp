@@ -965,10 +965,11 @@ array([1.5, 1.5, 1.5])
       // Parquet and pandas
       .def(
           "to_dataframe",
-          [](py::object self, py::handle scalar_first) {
-            return py::module_::import("rigiddyn.trajectory").attr("to_dataframe")(self, scalar_first);
+          [](py::object self, py::handle scalar_first, py::handle units) {
+            return py::module_::import("rigiddyn.trajectory")
+                .attr("to_dataframe")(self, scalar_first, py::arg("units") = units);
           },
-          py::arg("scalar_first") = py::none(),
+          py::arg("scalar_first") = py::none(), py::kw_only(), py::arg("units") = py::none(),
           R"doc(The records as a pandas.DataFrame (needs pandas: pip install 'rigiddyn[dataframe]').
 
 One row per record, one column per scalar with its unit, as the CSV of ``python -m rigiddyn simulate``:
@@ -981,11 +982,29 @@ Parameters
 scalar_first : bool, optional
     None (the default): the order the result records. True or False declares the order of its q_WB rows
     instead.
+units : dict of str to str, optional
+    The units of the columns, {dimension: unit}: keys "length", "angle", "time", "mass", "energy" (and
+    "power", "force"; rigiddyn.output_units), e.g. {"length": "km", "angle": "deg", "time": "h"} gives
+    't [h]', 'p_W_x [km]', 'v_W_x [km/h]', 'w_B_x [deg/h]', 'angular_momentum_norm [kg km^2/h]'. A column is its
+    SI values times one factor (pint's); a dimension not named stays SI; the quaternion's columns are never
+    converted. None (the default): SI.
 
 Returns
 -------
 pandas.DataFrame
     n rows, 19 columns.
+
+Raises
+------
+TypeError
+    units is no dict, or a unit no string.
+ValueError
+    An unknown dimension key (the nearest valid one named), an unknown unit, or a unit of another
+    dimension.
+
+See Also
+--------
+rigiddyn.trajectory.write_csv, rigiddyn.output_units
 
 Examples
 --------
@@ -993,6 +1012,8 @@ Examples
 >>> df = r.to_dataframe()
 >>> df.shape, df["p_W_z [m]"].round(12).tolist()
 ((3, 19), [0.0, -1.22625, -4.905])
+>>> r.to_dataframe(units={"length": "km", "time": "min"})["v_W_z [km/min]"].round(12).tolist()
+[0.0, -0.2943, -0.5886]
 )doc");
 
 #define RIGIDDYN_SIMULATE_ARGS                                                                              \

@@ -999,10 +999,11 @@ void bind_scene(py::module_& m) {
       .def(py::pickle(&scene_result_state, &scene_result_from_state))
       .def(
           "to_dataframe",
-          [](py::object self, py::handle scalar_first) {
-            return py::module_::import("rigiddyn.scene_result").attr("to_dataframe")(self, scalar_first);
+          [](py::object self, py::handle scalar_first, py::handle units) {
+            return py::module_::import("rigiddyn.scene_result")
+                .attr("to_dataframe")(self, scalar_first, py::arg("units") = units);
           },
-          py::arg("scalar_first") = py::none(),
+          py::arg("scalar_first") = py::none(), py::kw_only(), py::arg("units") = py::none(),
           "A pandas.DataFrame of the records (needs pandas): one row per record, one column per scalar with its "
           "unit (wide format; rigiddyn.scene_result documents the columns): 't [s]', then per body "
           "'<name>:p_W_x [m]' .. '<name>:q_WB_x' .. '<name>:v_W_x [m/s]' .. '<name>:w_B_x [rad/s]' .. through "
@@ -1011,7 +1012,10 @@ void bind_scene(py::module_& m) {
           "'angular_momentum_W_x [kg m^2/s]' .., then per element i 'work[i] <Class> [J]' and 'power[i] <Class> "
           "[W]'; q_WB's columns in the result's order ('<name>:q_WB_w' first when its scalar_first is True). "
           "scalar_first: None (the default) for the order the result records; True or False declares the order "
-          "of its q_WB rows instead.");
+          "of its q_WB rows instead. units: the units of the columns, {dimension: unit} (keys length, angle, time, "
+          "mass, energy, power, force; rigiddyn.output_units), e.g. {'length': 'km', 'time': 'h'} gives 't [h]', "
+          "'<name>:p_W_x [km]', '<name>:v_W_x [km/h]'; None (the default): SI. TypeError or ValueError naming a bad "
+          "units (an unknown dimension, an unknown unit, a unit of another dimension).");
 }
 
 }  // namespace rigiddyn::bindings

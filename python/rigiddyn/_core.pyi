@@ -5309,9 +5309,9 @@ class SceneResult:
         ...
     def __setstate__(self, arg0: tuple) -> None:
         ...
-    def to_dataframe(self, scalar_first: typing.Any = None) -> typing.Any:
+    def to_dataframe(self, scalar_first: typing.Any = None, *, units: typing.Any = None) -> typing.Any:
         """
-        A pandas.DataFrame of the records (needs pandas): one row per record, one column per scalar with its unit (wide format; rigiddyn.scene_result documents the columns): 't [s]', then per body '<name>:p_W_x [m]' .. '<name>:q_WB_x' .. '<name>:v_W_x [m/s]' .. '<name>:w_B_x [rad/s]' .. through '<name>:mass [kg]' and '<name>:mass_flow_energy [J]' (and a gyrostat's '<name>:wheel_speed_<k> [rad/s]'), then 'kinetic_energy [J]', 'potential_energy [J]', 'total_energy [J]', 'linear_momentum_W_x [kg m/s]' .., 'angular_momentum_W_x [kg m^2/s]' .., then per element i 'work[i] <Class> [J]' and 'power[i] <Class> [W]'; q_WB's columns in the result's order ('<name>:q_WB_w' first when its scalar_first is True). scalar_first: None (the default) for the order the result records; True or False declares the order of its q_WB rows instead.
+        A pandas.DataFrame of the records (needs pandas): one row per record, one column per scalar with its unit (wide format; rigiddyn.scene_result documents the columns): 't [s]', then per body '<name>:p_W_x [m]' .. '<name>:q_WB_x' .. '<name>:v_W_x [m/s]' .. '<name>:w_B_x [rad/s]' .. through '<name>:mass [kg]' and '<name>:mass_flow_energy [J]' (and a gyrostat's '<name>:wheel_speed_<k> [rad/s]'), then 'kinetic_energy [J]', 'potential_energy [J]', 'total_energy [J]', 'linear_momentum_W_x [kg m/s]' .., 'angular_momentum_W_x [kg m^2/s]' .., then per element i 'work[i] <Class> [J]' and 'power[i] <Class> [W]'; q_WB's columns in the result's order ('<name>:q_WB_w' first when its scalar_first is True). scalar_first: None (the default) for the order the result records; True or False declares the order of its q_WB rows instead. units: the units of the columns, {dimension: unit} (keys length, angle, time, mass, energy, power, force; rigiddyn.output_units), e.g. {'length': 'km', 'time': 'h'} gives 't [h]', '<name>:p_W_x [km]', '<name>:v_W_x [km/h]'; None (the default): SI. TypeError or ValueError naming a bad units (an unknown dimension, an unknown unit, a unit of another dimension).
         """
     @property
     def angular_momentum_O_W(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -5723,7 +5723,7 @@ class SimulationResult:
         ...
     def __setstate__(self, arg0: tuple) -> None:
         ...
-    def to_dataframe(self, scalar_first: bool | None = None) -> typing.Any:
+    def to_dataframe(self, scalar_first: bool | None = None, *, units: typing.Any = None) -> typing.Any:
         """
         The records as a pandas.DataFrame (needs pandas: pip install 'rigiddyn[dataframe]').
         
@@ -5737,11 +5737,29 @@ class SimulationResult:
         scalar_first : bool, optional
             None (the default): the order the result records. True or False declares the order of its q_WB rows
             instead.
+        units : dict of str to str, optional
+            The units of the columns, {dimension: unit}: keys "length", "angle", "time", "mass", "energy" (and
+            "power", "force"; rigiddyn.output_units), e.g. {"length": "km", "angle": "deg", "time": "h"} gives
+            't [h]', 'p_W_x [km]', 'v_W_x [km/h]', 'w_B_x [deg/h]', 'angular_momentum_norm [kg km^2/h]'. A column is its
+            SI values times one factor (pint's); a dimension not named stays SI; the quaternion's columns are never
+            converted. None (the default): SI.
         
         Returns
         -------
         pandas.DataFrame
             n rows, 19 columns.
+        
+        Raises
+        ------
+        TypeError
+            units is no dict, or a unit no string.
+        ValueError
+            An unknown dimension key (the nearest valid one named), an unknown unit, or a unit of another
+            dimension.
+        
+        See Also
+        --------
+        rigiddyn.trajectory.write_csv, rigiddyn.output_units
         
         Examples
         --------
@@ -5749,6 +5767,8 @@ class SimulationResult:
         >>> df = r.to_dataframe()
         >>> df.shape, df["p_W_z [m]"].round(12).tolist()
         ((3, 19), [0.0, -1.22625, -4.905])
+        >>> r.to_dataframe(units={"length": "km", "time": "min"})["v_W_z [km/min]"].round(12).tolist()
+        [0.0, -0.2943, -0.5886]
         """
     @property
     def angular_momentum_norm(self) -> numpy.typing.NDArray[numpy.float64]:

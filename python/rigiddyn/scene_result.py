@@ -13,7 +13,9 @@ dimensionless columns carry no unit)::
 Wide rather than long (one row per record and body): the scene-wide columns (energies, momenta, each
 element's work and power) belong to a record, not to a body, so a long table would repeat them on every
 body's row; the wide one has SimulationResult's shape (one row per record, ``t [s]`` an ordinary column)
-and ``df.filter(like="sat:")`` selects one body.
+and ``df.filter(like="sat:")`` selects one body. ``units=`` gives the columns in the user's units, as for a
+SimulationResult (rigiddyn.output_units): ``units={"length": "km", "time": "h"}`` gives ``t [h]``,
+``sat:p_W_x [km]``, ``sat:v_W_x [km/h]``, ``sat:angular_momentum_O_W_x [kg km^2/h]``, ...
 
 "W" is the scene frame (F when the scene has a moving frame: states relative to it). Per body:
 pivot_reaction_W is the pivot's force on a pinned body (0 for an unpinned one), angular_momentum_O_W
@@ -27,9 +29,12 @@ work–energy balance reads ``kinetic_energy − kinetic_energy[0] ≈ Σ work[i
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from typing import Any
 
 import numpy as np
+
+from .output_units import convert_columns
 
 __all__ = ["BODY_FIELDS", "SCENE_FIELDS", "column_names", "columns", "to_dataframe"]
 
@@ -61,11 +66,45 @@ def _unit(name: str, unit: str | None) -> str:
     return name if unit is None else f"{name} [{unit}]"
 
 
-def columns(result: Any, scalar_first: bool | None = None) -> dict[str, np.ndarray]:
-    """The columns of a SceneResult: name -> contiguous float64 (n,) array, in table order.
+def columns(result: Any, scalar_first: bool | None = None, *,
+            units: Mapping[str, str] | None = None) -> dict[str, np.ndarray]:
+    """The columns of a SceneResult, in table order (the module docstring lists them).
 
-    scalar_first: the order of the result's q_WB rows; None (the default): the order the result records
-    (``result.scalar_first``, set by ``simulate(..., scalar_first=True)``); True or False declares it.
+    Parameters
+    ----------
+    result : SceneResult
+        The records of ``rigiddyn.simulate`` of a Scene (or ``BatchSceneResult[i]``).
+    scalar_first : bool, optional
+        The order of the result's q_WB rows; None (the default): the order the result records
+        (``result.scalar_first``, set by ``simulate(..., scalar_first=True)``); True or False declares it.
+    units : Mapping[str, str], optional
+        The units of the columns, {dimension: unit} such as ``{"length": "km", "angle": "deg", "time":
+        "h"}`` (rigiddyn.output_units.DIMENSIONS names the keys); None: SI.
+
+    Returns
+    -------
+    dict of str to numpy.ndarray
+        Name -> contiguous float64 (n,) array; a converted column is its SI values times one factor.
+
+    Raises
+    ------
+    TypeError, ValueError
+        A bad `scalar_first` or `units` (rigiddyn.output_units.check_units).
+
+    See Also
+    --------
+    to_dataframe, rigiddyn.trajectory.columns
+
+    Examples
+    --------
+    >>> from rigiddyn.scene_result import columns
+    >>> scene = rd.Scene()
+    >>> scene.add_body(rd.Particle(1.0), name="sat")
+    0
+    >>> r = rd.simulate(scene, [rd.ParticleState(v_W=[1000.0, 0.0, 0.0])], dt=1800.0, steps=2, error=False)
+    >>> table = columns(r, units={"length": "km", "time": "h"})
+    >>> table["t [h]"], table["sat:p_W_x [km]"]
+    (array([0. , 0.5, 1. ]), array([   0., 1800., 3600.]))
     """
     from .trajectory import stored_order
 
@@ -96,18 +135,93 @@ def columns(result: Any, scalar_first: bool | None = None) -> dict[str, np.ndarr
         values = np.asarray(getattr(result, field), dtype=np.float64)
         for i, kind in enumerate(result.elements):
             out[_unit(f"{field}[{i}] {kind}", unit)] = np.ascontiguousarray(values[:, i])
-    return out
+    return convert_columns(out, units)
 
 
-def column_names(result: Any, scalar_first: bool | None = None) -> list[str]:
-    """The table's column names in order (they depend on the scene's bodies and elements)."""
-    return list(columns(result, scalar_first))
+def column_names(result: Any, scalar_first: bool | None = None, *, units: Mapping[str, str] | None = None) -> list[str]:
+    """The table's column names in order (they depend on the scene's bodies and elements).
+
+    Parameters
+    ----------
+    result : SceneResult
+        As in `columns`.
+    scalar_first : bool, optional
+        As in `columns`.
+    units : Mapping[str, str], optional
+        As in `columns`.
+
+    Returns
+    -------
+    list of str
+        The names, each with its unit.
+
+    Raises
+    ------
+    TypeError, ValueError
+        As `columns`.
+
+    See Also
+    --------
+    columns
+
+    Examples
+    --------
+    >>> from rigiddyn.scene_result import column_names
+    >>> scene = rd.Scene()
+    >>> scene.add_body(rd.Particle(1.0), name="sat")
+    0
+    >>> r = rd.simulate(scene, [rd.ParticleState()], dt=1.0, steps=1, error=False)
+    >>> [name for name in column_names(r, units={"length": "km", "mass": "t"}) if name.startswith("sat:p_W")]
+    ['sat:p_W_x [km]', 'sat:p_W_y [km]', 'sat:p_W_z [km]']
+    >>> [name for name in column_names(r, units={"length": "km", "mass": "t"}) if "mass" in name]
+    ['sat:mass [t]', 'sat:mass_flow_energy [J]']
+    """
+    return list(columns(result, scalar_first, units=units))
 
 
-def to_dataframe(result: Any, scalar_first: bool | None = None) -> Any:
-    """The table as a pandas.DataFrame (needs pandas: pip install 'rigiddyn[dataframe]')."""
+def to_dataframe(result: Any, scalar_first: bool | None = None, *, units: Mapping[str, str] | None = None) -> Any:
+    """The table as a pandas.DataFrame (needs pandas: pip install 'rigiddyn[dataframe]').
+
+    Parameters
+    ----------
+    result : SceneResult
+        As in `columns`.
+    scalar_first : bool, optional
+        As in `columns`.
+    units : Mapping[str, str], optional
+        The units of the columns, as in `columns`; None: SI.
+
+    Returns
+    -------
+    pandas.DataFrame
+        One row per record, the columns of `columns` in order.
+
+    Raises
+    ------
+    ImportError
+        pandas is not installed.
+    TypeError, ValueError
+        As `columns`.
+
+    See Also
+    --------
+    columns
+
+    Examples
+    --------
+    >>> from rigiddyn.scene_result import to_dataframe
+    >>> scene = rd.Scene()
+    >>> scene.add_body(rd.Particle(1.0), name="sat")
+    0
+    >>> r = rd.simulate(scene, [rd.ParticleState(v_W=[1000.0, 0.0, 0.0])], dt=1800.0, steps=2, error=False)
+    >>> to_dataframe(r, units={"length": "km", "time": "h"})[["t [h]", "sat:v_W_x [km/h]"]]
+       t [h]  sat:v_W_x [km/h]
+    0    0.0            3600.0
+    1    0.5            3600.0
+    2    1.0            3600.0
+    """
     try:
         import pandas as pd
     except ImportError as error:  # pragma: no cover - depends on the environment
         raise ImportError("SceneResult.to_dataframe needs pandas: pip install 'rigiddyn[dataframe]'") from error
-    return pd.DataFrame(columns(result, scalar_first))
+    return pd.DataFrame(columns(result, scalar_first, units=units))

@@ -16,7 +16,8 @@ terms' too: CentrifugalForce, CoriolisForce, ...). One file rather than one per 
 columns (energy, momenta, work) belong to a record, and ``df.filter(like="sat:")`` selects a body. The
 plot overlays the bodies (rigiddyn.trajectory_plot.scene_figure: positions, the angular velocity and
 attitude of the bodies that have one, energies and work, |H|, the masses when they change);
---animate (one body's axes) is refused.
+--animate (one body's axes) is refused. --units gives the tables and the plot in the user's units, as for a
+problem (rigiddyn.output_units; run.json records them under "units").
 
 The summary line says what matters for the scene: the energy drift when every element is conservative
 (the Jacobi integral in a frame turning at a constant rate); the energy balance T(t) - T(0) - W(t) (W
@@ -66,7 +67,7 @@ class _ScenePlan:
     """The checked settings of one `simulate` of a scene file."""
 
     def __init__(self, args: argparse.Namespace) -> None:
-        from .simulate_command import default_out, step_count
+        from .simulate_command import command_units, default_out, step_count
         from .trajectory_plot import check_attitude
 
         try:
@@ -117,6 +118,7 @@ class _ScenePlan:
             raise ValueError(f"--animate: expected a problem file (scene files have no animation yet), "
                              f"got the scene {args.problem!r}")
         self.attitude = check_attitude(args.attitude)
+        self.units = command_units(args.units)
         self.plot = not args.no_plot and _matplotlib()
         self.kinds = [type(body).__name__ for body in self.file.scene.bodies]
         self.out = OutFolder(args.out if args.out is not None else default_out(args.problem), self.outputs(),
@@ -146,6 +148,7 @@ def _matplotlib() -> bool:
 def _run_record(plan: _ScenePlan, result: Any, columns: list[str]) -> dict[str, Any]:
     """run.json: what was run and what came out (numbers, null for not-a-number)."""
     from . import __version__
+    from .output_units import units_record
     from .simulate_command import error_report
 
     def number(x: float) -> float | None:
@@ -167,6 +170,7 @@ def _run_record(plan: _ScenePlan, result: Any, columns: list[str]) -> dict[str, 
         "unconverged_steps": int(result.unconverged_steps),
         "elapsed_seconds [s]": result.elapsed_seconds,
         "global error": error_report(result.error),
+        "units": units_record(plan.units),
         "columns": columns,
         "quaternion order": "x, y, z, w",
         **_choice_record(result),
@@ -200,7 +204,7 @@ def _write(plan: _ScenePlan, result: Any, folder: Path) -> list[Path]:
     """The files of the run, written to `folder`; returns their paths."""
     from .scene_result import columns
 
-    table = columns(result)
+    table = columns(result, units=plan.units)
     record = _run_record(plan, result, list(table))
     csv_path, npz_path = folder / "trajectory.csv", folder / "trajectory.npz"
     with open(csv_path, "w", newline="") as f:  # numbers by repr: read back to the same doubles
@@ -226,7 +230,8 @@ def _write(plan: _ScenePlan, result: Any, folder: Path) -> list[Path]:
         from .trajectory_plot import plot_scene
 
         title = f"{plan.file.name}: {plan.method}, dt = {plan.dt:g} s"
-        written.append(plot_scene(result, plan.kinds, folder / "trajectory.png", plan.attitude, title))
+        written.append(plot_scene(result, plan.kinds, folder / "trajectory.png", plan.attitude, title,
+                                  units=plan.units))
     return written
 
 

@@ -3,7 +3,9 @@
 Writes to --out (default: simulate-<name> in the current folder, <name> the example's or the file's):
 trajectory.csv, trajectory.npz, trajectory.parquet (when pyarrow is installed), run.json (the run's
 settings and outcome), trajectory.png (ω, attitude, energy and |L| over t) and, with --animate,
-axes.mp4 or axes.gif (the body's axes turning). The columns are those of rigiddyn.trajectory. Every
+axes.mp4 or axes.gif (the body's axes turning). The columns are those of rigiddyn.trajectory, in SI or in
+the units of --units (``--units length=km,angle=deg,time=h``: rigiddyn.output_units; the tables and the plot
+use them, run.json records them under "units" while its own settings stay SI). Every
 argument and --out are checked before the run starts; the files are written all at once after it
 (rigiddyn.out_folder: nothing half-written, earlier outputs replaced only with --force). The exit codes
 are rigiddyn.out_folder's.
@@ -37,7 +39,7 @@ from .stability import warn_if_unstable
 OUTPUTS = ("trajectory.csv", "trajectory.npz", "trajectory.parquet", "run.json", "trajectory.png", "axes.mp4",
            "axes.gif")
 
-__all__ = ["MAX_DEFAULT_RECORDS", "MAX_STEPS", "add_simulate_parser", "default_out", "energy_balance",
+__all__ = ["MAX_DEFAULT_RECORDS", "MAX_STEPS", "add_simulate_parser", "command_units", "default_out", "energy_balance",
            "error_report", "fail", "progress_bar", "run_and_report", "run_simulate", "simulate_problem", "step_count",
            "table_outputs"]
 
@@ -73,7 +75,8 @@ def add_simulate_parser(sub: "argparse._SubParsersAction[argparse.ArgumentParser
         description="Run PROBLEM (a TOML file or a shipped example: " + ", ".join(example_problems()) + ") with "
         "--method at fixed step --dt, and write to --out: trajectory.csv, trajectory.npz, trajectory.parquet "
         "(when pyarrow is installed), run.json and trajectory.png (w_B, attitude, energy, |L| over time); "
-        "--animate adds an animation of the body's axes. Columns carry their units, e.g. 'w_B_x [rad/s]'. "
+        "--animate adds an animation of the body's axes. Columns carry their units, e.g. 'w_B_x [rad/s]' "
+        "('w_B_x [deg/s]' with --units angle=deg). "
         "With --tolerance instead of --dt (scene files) the method and dt are chosen to meet it.",
         epilog=EXIT_CODES_HELP,
     )
@@ -113,6 +116,12 @@ def add_simulate_parser(sub: "argparse._SubParsersAction[argparse.ArgumentParser
                         "auto (mp4 if ffmpeg is present, else gif)")
     p.add_argument("--frames", type=_positive(int, "an integer >= 1"), default=100,
                    help="frames of the animation, evenly spaced over the records (default 100, at 25 per second)")
+    p.add_argument("--units", metavar="DIMENSION=UNIT,...",
+                   help="units of the tables and the plot instead of SI: comma-separated dimension=unit pairs, the "
+                        "dimensions among length, angle, time, mass, energy, power, force (e.g. "
+                        "length=km,angle=deg,time=h gives 'p_W_x [km]', 'w_B_x [deg/h]', 't [h]'); a compound unit "
+                        "follows its parts (rad/s: angle and time); the quaternion stays as it is; run.json records "
+                        "the units")
     p.add_argument("--no-plot", action="store_true", help="write the tables only, no trajectory.png")
     p.add_argument("--no-progress", action="store_true",
                    help="no progress bar on stderr (shown only on a terminal and when tqdm is installed)")
@@ -207,6 +216,7 @@ class _Plan:
         self.record_every: int = (args.record_every if args.record_every is not None
                                   else max(1, -(-self.steps // MAX_DEFAULT_RECORDS)))
         self.attitude = check_attitude(args.attitude)
+        self.units = command_units(args.units)
         self.plot = not args.no_plot
         self.animate: str | None = args.animate
         self.frames: int = args.frames
@@ -241,6 +251,13 @@ class _Plan:
                 ([f"axes{self.writer[1]}"] if self.writer is not None else []))
 
 
+def command_units(text: str | None) -> dict[str, str]:
+    """The checked --units of the command ({} without it): rigiddyn.output_units.parse_units_option."""
+    from .output_units import parse_units_option
+
+    return {} if text is None else parse_units_option(text)
+
+
 def table_outputs() -> list[str]:
     """The tables and run.json that `simulate` writes: trajectory.parquet only when pyarrow is installed."""
     try:
@@ -253,6 +270,7 @@ def table_outputs() -> list[str]:
 def _run_record(plan: _Plan, result: Any) -> dict[str, Any]:
     """run.json: what was run and what came out (numbers, null for not-a-number)."""
     from . import __version__
+    from .output_units import units_record
     from .trajectory import column_names
 
     def number(x: float) -> float | None:
@@ -272,7 +290,8 @@ def _run_record(plan: _Plan, result: Any) -> dict[str, Any]:
         "unconverged_steps": int(result.unconverged_steps),
         "elapsed_seconds [s]": result.elapsed_seconds,
         "global error": error_report(result.error),
-        "columns": column_names(),
+        "units": units_record(plan.units),
+        "columns": column_names(units=plan.units),
         "quaternion order": "x, y, z, w",
     }
 
@@ -329,9 +348,10 @@ def _write(plan: _Plan, result: Any, folder: Path) -> list[Path]:
     from .trajectory import write_csv, write_npz, write_parquet
 
     record = _run_record(plan, result)
-    written = [write_csv(result, folder / "trajectory.csv"), write_npz(result, folder / "trajectory.npz")]
+    written = [write_csv(result, folder / "trajectory.csv", units=plan.units),
+               write_npz(result, folder / "trajectory.npz", units=plan.units)]
     if "trajectory.parquet" in plan.out.outputs:
-        written.append(write_parquet(result, folder / "trajectory.parquet", metadata=record))
+        written.append(write_parquet(result, folder / "trajectory.parquet", metadata=record, units=plan.units))
     else:
         print("rigiddyn simulate: no Parquet file: it needs pyarrow (pip install 'rigiddyn[parquet]')", file=sys.stderr)
     (folder / "run.json").write_text(json.dumps(record, indent=2) + "\n")
@@ -340,7 +360,7 @@ def _write(plan: _Plan, result: Any, folder: Path) -> list[Path]:
     if plan.plot:
         from .trajectory_plot import plot_trajectory
 
-        written.append(plot_trajectory(result, folder / "trajectory.png", plan.attitude, title))
+        written.append(plot_trajectory(result, folder / "trajectory.png", plan.attitude, title, units=plan.units))
     if plan.writer is not None:
         from .trajectory_plot import animate_axes
 

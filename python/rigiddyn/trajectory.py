@@ -15,6 +15,11 @@ of them hold the same columns (``df.set_index("t [s]")`` gives a time index). Th
 values exactly: CSV prints each number with Python's ``repr`` (the shortest text that reads back to
 the same double), ``.npz`` and Parquet store the float64 bits. Parquet needs ``pyarrow`` and
 `to_dataframe` needs ``pandas`` (extras ``parquet`` and ``dataframe``).
+
+Every table function takes ``units=`` (rigiddyn.output_units): ``units={"length": "km", "angle": "deg",
+"time": "h"}`` gives ``t [h]``, ``p_W_x [km]``, ``v_W_x [km/h]``, ``w_B_x [deg/h]``, ... (a dimension
+not named stays SI; the quaternion's columns are never converted). `fields_from_columns` reads SI
+columns only.
 """
 
 from __future__ import annotations
@@ -26,6 +31,8 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
+
+from .output_units import convert_columns
 
 __all__ = ["FIELDS", "column_names", "columns", "fields_from_columns", "read_columns", "stored_order", "to_dataframe",
            "write_csv", "write_npz", "write_parquet"]
@@ -55,13 +62,41 @@ def _components(field: str, scalar_first: bool) -> str | None:
     return "wxyz" if field == "q_WB" and scalar_first else components
 
 
-def column_names(scalar_first: bool = False) -> list[str]:
-    """The table's column names in order (q_WB_w first among the quaternion's if scalar_first)."""
+def column_names(scalar_first: bool = False, *, units: Mapping[str, str] | None = None) -> list[str]:
+    """The table's column names in order.
+
+    Parameters
+    ----------
+    scalar_first : bool, optional
+        True: q_WB_w first among the quaternion's columns.
+    units : Mapping[str, str], optional
+        The units of the columns, {dimension: unit} (rigiddyn.output_units); None: SI.
+
+    Returns
+    -------
+    list of str
+        19 names, each with its unit: ``'t [s]'``, ``'p_W_x [m]'``, ...
+
+    Raises
+    ------
+    TypeError, ValueError
+        A bad `units` (rigiddyn.output_units.check_units).
+
+    See Also
+    --------
+    columns
+
+    Examples
+    --------
+    >>> from rigiddyn.trajectory import column_names
+    >>> column_names(units={"length": "km", "angle": "deg", "time": "h"})[:12:3]
+    ['t [h]', 'p_W_z [km]', 'q_WB_z', 'v_W_y [km/h]']
+    """
     names = []
     for field, (_, unit) in FIELDS.items():
         components = _components(field, scalar_first)
         names += [_name(field, None, unit)] if components is None else [_name(field, c, unit) for c in components]
-    return names
+    return list(convert_columns(dict.fromkeys(names, np.zeros(0)), units))
 
 
 def stored_order(result: Any, scalar_first: bool | None) -> bool:
@@ -75,12 +110,46 @@ def stored_order(result: Any, scalar_first: bool | None) -> bool:
     return bool(scalar_first)
 
 
-def columns(result: Any, scalar_first: bool | None = None) -> dict[str, np.ndarray]:
-    """The columns of a SimulationResult: name -> contiguous float64 (n,) array, in table order, the
-    quaternion's columns in the order of its q_WB rows (q_WB_w first when they are (w, x, y, z)).
+def columns(result: Any, scalar_first: bool | None = None, *,
+            units: Mapping[str, str] | None = None) -> dict[str, np.ndarray]:
+    """The columns of a SimulationResult, in table order.
 
-    scalar_first: the order of the result's q_WB rows; None (the default): the order the result records
-    (``result.scalar_first``, set by ``simulate(..., scalar_first=True)``); True or False declares it.
+    Parameters
+    ----------
+    result : SimulationResult
+        The records of ``rigiddyn.simulate`` (or ``BatchResult[i]``).
+    scalar_first : bool, optional
+        The order of the result's q_WB rows; None (the default): the order the result records
+        (``result.scalar_first``, set by ``simulate(..., scalar_first=True)``); True or False declares it.
+    units : Mapping[str, str], optional
+        The units of the columns, {dimension: unit} such as ``{"length": "km", "angle": "deg", "time":
+        "h"}`` (rigiddyn.output_units.DIMENSIONS names the keys); None: SI.
+
+    Returns
+    -------
+    dict of str to numpy.ndarray
+        Name -> contiguous float64 (n,) array, the quaternion's columns in the order of its q_WB rows
+        (q_WB_w first when they are (w, x, y, z)); a converted column is its SI values times one factor.
+
+    Raises
+    ------
+    TypeError
+        `result` is no SimulationResult, `scalar_first` no bool, or `units` no mapping.
+    ValueError
+        A bad `units`: an unknown dimension, an unknown unit, a unit of another dimension.
+
+    See Also
+    --------
+    to_dataframe, write_csv, rigiddyn.output_units
+
+    Examples
+    --------
+    >>> from rigiddyn.trajectory import columns
+    >>> r = rd.simulate(rd.RigidBody(1.0, [1.0, 1.0, 1.0]), rd.RigidBodyState(w_B=[0.0, 0.0, 1.0]), dt=1.0,
+    ...                 steps=2, error=False)
+    >>> table = columns(r, units={"angle": "deg", "time": "min"})
+    >>> table["t [min]"], table["w_B_z [deg/min]"].round(6)
+    (array([0.        , 0.01666667, 0.03333333]), array([3437.746771, 3437.746771, 3437.746771]))
     """
     scalar_first = stored_order(result, scalar_first)
     out: dict[str, np.ndarray] = {}
@@ -96,7 +165,7 @@ def columns(result: Any, scalar_first: bool | None = None) -> dict[str, np.ndarr
         else:
             for i, c in enumerate(components):
                 out[_name(field, c, unit)] = np.ascontiguousarray(values[:, i])
-    return out
+    return convert_columns(out, units)
 
 
 def fields_from_columns(table: Mapping[str, Any]) -> dict[str, np.ndarray]:
@@ -113,11 +182,50 @@ def fields_from_columns(table: Mapping[str, Any]) -> dict[str, np.ndarray]:
     return out
 
 
-def write_csv(result: Any, path: str | Path, scalar_first: bool | None = None) -> Path:
+def write_csv(result: Any, path: str | Path, scalar_first: bool | None = None, *,
+              units: Mapping[str, str] | None = None) -> Path:
     """Write the table to CSV: a header row of column names, then one row per record, each number as
     Python's repr (read back by float() or pandas.read_csv to the same double; nan and inf as
-    'nan', 'inf'). scalar_first: as in `columns`. Returns the path."""
-    table = columns(result, scalar_first)
+    'nan', 'inf').
+
+    Parameters
+    ----------
+    result : SimulationResult
+        As in `columns`.
+    path : str or pathlib.Path
+        The file written (replaced if it exists).
+    scalar_first : bool, optional
+        As in `columns`.
+    units : Mapping[str, str], optional
+        The units of the columns, as in `columns` (the header names them); None: SI.
+
+    Returns
+    -------
+    pathlib.Path
+        `path`.
+
+    Raises
+    ------
+    TypeError, ValueError
+        As `columns` (checked before the file is opened).
+
+    See Also
+    --------
+    read_columns, write_npz, write_parquet
+
+    Examples
+    --------
+    >>> import tempfile, pathlib
+    >>> folder = tempfile.TemporaryDirectory()
+    >>> from rigiddyn.trajectory import read_columns, write_csv
+    >>> r = rd.simulate(rd.Particle(1.0), rd.ParticleState(v_W=[1000.0, 0.0, 0.0]), dt=1800.0, steps=2,
+    ...                 error=False)
+    >>> path = write_csv(r, pathlib.Path(folder.name) / "t.csv", units={"length": "km", "time": "h"})
+    >>> read_columns(path)["p_W_x [km]"], read_columns(path)["v_W_x [km/h]"]
+    (array([   0., 1800., 3600.]), array([3600., 3600., 3600.]))
+    >>> folder.cleanup()
+    """
+    table = columns(result, scalar_first, units=units)
     path = Path(path)
     with open(path, "w", newline="") as f:
         writer = csv.writer(f)
@@ -126,28 +234,106 @@ def write_csv(result: Any, path: str | Path, scalar_first: bool | None = None) -
     return path
 
 
-def write_npz(result: Any, path: str | Path, scalar_first: bool | None = None) -> Path:
+def write_npz(result: Any, path: str | Path, scalar_first: bool | None = None, *,
+              units: Mapping[str, str] | None = None) -> Path:
     """Write the table to an uncompressed ``.npz``, one (n,) float64 array per column name:
-    ``pandas.DataFrame(dict(numpy.load(path)))`` is the table. scalar_first: as in `columns`. Returns the
-    path."""
+    ``pandas.DataFrame(dict(numpy.load(path)))`` is the table.
+
+    Parameters
+    ----------
+    result : SimulationResult
+        As in `columns`.
+    path : str or pathlib.Path
+        The file written (replaced if it exists; no suffix is added).
+    scalar_first : bool, optional
+        As in `columns`.
+    units : Mapping[str, str], optional
+        The units of the columns, as in `columns` (the arrays' names name them); None: SI.
+
+    Returns
+    -------
+    pathlib.Path
+        `path`.
+
+    Raises
+    ------
+    TypeError, ValueError
+        As `columns` (checked before the file is opened).
+
+    See Also
+    --------
+    read_columns, write_csv, write_parquet
+
+    Examples
+    --------
+    >>> import tempfile, pathlib
+    >>> folder = tempfile.TemporaryDirectory()
+    >>> from rigiddyn.trajectory import write_npz
+    >>> r = rd.simulate(rd.Particle(1.0), rd.ParticleState(v_W=[1000.0, 0.0, 0.0]), dt=1800.0, steps=2,
+    ...                 error=False)
+    >>> path = write_npz(r, pathlib.Path(folder.name) / "t.npz", units={"length": "km", "time": "h"})
+    >>> np.load(path)["t [h]"]
+    array([0. , 0.5, 1. ])
+    >>> folder.cleanup()
+    """
     path = Path(path)
-    table: dict[str, Any] = columns(result, scalar_first)  # Any: numpy's stub types savez's keywords as its own
+    table: dict[str, Any] = columns(result, scalar_first, units=units)  # Any: numpy's stub types savez's keywords
     with open(path, "wb") as f:  # a file object: numpy would append '.npz' to a name without it
         np.savez(f, **table)
     return path
 
 
 def write_parquet(result: Any, path: str | Path, scalar_first: bool | None = None,
-                  metadata: Mapping[str, Any] | None = None) -> Path:
-    """Write the table to Parquet (needs pyarrow, extra ``parquet``); `metadata` (JSON-serialisable)
-    is stored in the file's key-value metadata under b"rigiddyn". scalar_first: as in `columns`.
-    Returns the path."""
+                  metadata: Mapping[str, Any] | None = None, *, units: Mapping[str, str] | None = None) -> Path:
+    """Write the table to Parquet (needs pyarrow, extra ``parquet``).
+
+    Parameters
+    ----------
+    result : SimulationResult
+        As in `columns`.
+    path : str or pathlib.Path
+        The file written (replaced if it exists).
+    scalar_first : bool, optional
+        As in `columns`.
+    metadata : Mapping[str, Any], optional
+        JSON-serialisable; stored in the file's key-value metadata under b"rigiddyn".
+    units : Mapping[str, str], optional
+        The units of the columns, as in `columns` (the column names name them); None: SI.
+
+    Returns
+    -------
+    pathlib.Path
+        `path`.
+
+    Raises
+    ------
+    ImportError
+        pyarrow is not installed.
+    TypeError, ValueError
+        As `columns` (checked before the file is opened).
+
+    See Also
+    --------
+    read_columns, write_csv, write_npz
+
+    Examples
+    --------
+    >>> import tempfile, pathlib
+    >>> folder = tempfile.TemporaryDirectory()
+    >>> from rigiddyn.trajectory import read_columns, write_parquet
+    >>> r = rd.simulate(rd.Particle(1.0), rd.ParticleState(v_W=[1000.0, 0.0, 0.0]), dt=1800.0, steps=2,
+    ...                 error=False)
+    >>> path = write_parquet(r, pathlib.Path(folder.name) / "t.parquet", units={"length": "km"})
+    >>> read_columns(path)["p_W_x [km]"]
+    array([   0., 1800., 3600.])
+    >>> folder.cleanup()
+    """
     try:
         import pyarrow as pa
         import pyarrow.parquet as pq
     except ImportError:
         raise ImportError("write_parquet needs pyarrow: pip install 'rigiddyn[parquet]' (or pyarrow)") from None
-    table = pa.table(columns(result, scalar_first))
+    table = pa.table(columns(result, scalar_first, units=units))
     if metadata is not None:
         table = table.replace_schema_metadata({b"rigiddyn": json.dumps(dict(metadata)).encode()})
     path = Path(path)
@@ -180,12 +366,50 @@ def read_columns(path: str | Path) -> dict[str, np.ndarray]:
     raise ValueError(f"path: expected a .csv, .npz or .parquet file, got {str(path)!r}")
 
 
-def to_dataframe(result: Any, scalar_first: bool | None = None) -> Any:
+def to_dataframe(result: Any, scalar_first: bool | None = None, *, units: Mapping[str, str] | None = None) -> Any:
     """The SimulationResult as a pandas.DataFrame (needs pandas, extra ``dataframe``): one row per
     record, the columns of the CSV file in the same order, `t [s]` a column (not the index; use
-    ``.set_index("t [s]")`` for a time index). scalar_first: as in `columns`."""
+    ``.set_index("t [s]")`` for a time index).
+
+    Parameters
+    ----------
+    result : SimulationResult
+        As in `columns`.
+    scalar_first : bool, optional
+        As in `columns`.
+    units : Mapping[str, str], optional
+        The units of the columns, as in `columns` (``{"length": "km", "angle": "deg", "time": "h"}``
+        gives 't [h]', 'p_W_x [km]', 'w_B_x [deg/h]', ...); None: SI.
+
+    Returns
+    -------
+    pandas.DataFrame
+        n rows, 19 columns.
+
+    Raises
+    ------
+    ImportError
+        pandas is not installed.
+    TypeError, ValueError
+        As `columns`.
+
+    See Also
+    --------
+    columns, write_csv
+
+    Examples
+    --------
+    >>> from rigiddyn.trajectory import to_dataframe
+    >>> r = rd.simulate(rd.Particle(1.0), rd.ParticleState(v_W=[1000.0, 0.0, 0.0]), dt=1800.0, steps=2,
+    ...                 error=False)
+    >>> to_dataframe(r, units={"length": "km", "time": "h"})[["t [h]", "p_W_x [km]"]]
+       t [h]  p_W_x [km]
+    0    0.0         0.0
+    1    0.5      1800.0
+    2    1.0      3600.0
+    """
     try:
         import pandas as pd
     except ImportError:
         raise ImportError("to_dataframe needs pandas: pip install 'rigiddyn[dataframe]' (or pandas)") from None
-    return pd.DataFrame(columns(result, scalar_first))
+    return pd.DataFrame(columns(result, scalar_first, units=units))

@@ -6,18 +6,22 @@ Attitude is shown as ``"euler:SEQ"`` (Euler angles of q_WB in the sequence SEQ, 
 ``rigiddyn.quat_to_euler``: uppercase intrinsic, lowercase extrinsic; the values the CSV's q_WB gives
 there, jumps at the ±π cut and near gimbal lock included) or ``"rotvec"`` (the rotation vector of
 q_WB, angle × axis, in W). Energy and |L| are drawn as their change since t = 0, the initial value in
-the legend: a drift of 1e-14 J on 3e-3 J stays readable.
+the legend: a drift of 1e-14 J on 3e-3 J stays readable. ``units=`` draws every quantity in the user's
+units, as the tables (rigiddyn.output_units): ``units={"angle": "deg", "time": "h"}`` draws w_B in deg/h
+and the attitude in deg over t in h, each axis labelled with its unit.
 """
 
 from __future__ import annotations
 
 import warnings
+from collections.abc import Mapping
 from pathlib import Path
 from typing import Any, Literal
 
 import numpy as np
 
 from . import _core
+from .output_units import check_units, convert_unit
 
 __all__ = ["ATTITUDE_HELP", "MAX_SCENE_BODIES", "animate_axes", "animation_writer", "check_attitude", "plot_scene",
            "plot_trajectory", "scene_figure", "trajectory_figure"]
@@ -49,10 +53,14 @@ def check_attitude(attitude: str) -> str:
     raise ValueError(f"attitude: expected {ATTITUDE_HELP}, got {attitude!r}")
 
 
-def _attitude(q_WB: np.ndarray, attitude: str) -> tuple[np.ndarray, list[str], str, str]:
-    """(n, 3) angles [rad], their legend labels, the axis label and a note (gimbal lock) or ""."""
+def _attitude(q_WB: np.ndarray, attitude: str, units: Mapping[str, str] | None = None
+              ) -> tuple[np.ndarray, list[str], str, str]:
+    """(n, 3) angles in the angle unit of `units` (rad by default), their legend labels, the axis label and a
+    note (gimbal lock) or ""."""
+    factor, unit = convert_unit("rad", units)
     if attitude == "rotvec":
-        return _core.quat_to_rotvec(q_WB), ["rotvec x", "rotvec y", "rotvec z"], "rotation vector in W [rad]", ""
+        return (_core.quat_to_rotvec(q_WB) * factor, ["rotvec x", "rotvec y", "rotvec z"],
+                f"rotation vector in W [{unit}]", "")
     seq = attitude.partition(":")[2]
     with warnings.catch_warnings(record=True) as caught:  # a gimbal-lock warning becomes the plot's note
         warnings.simplefilter("always")
@@ -61,32 +69,76 @@ def _attitude(q_WB: np.ndarray, attitude: str) -> tuple[np.ndarray, list[str], s
     primes = ("", "\u2032", "\u2033") if seq.isupper() else ("", "", "")  # intrinsic: about moved axes
     labels = [f"angle {i + 1} about {axis.upper()}{primes[i]}" for i, axis in enumerate(seq)]
     kind = "intrinsic" if seq.isupper() else "extrinsic"
-    return angles, labels, f"Euler {seq} ({kind}) [rad]", note
+    return angles * factor, labels, f"Euler {seq} ({kind}) [{unit}]", note
 
 
-def _change(series: list[Any], names: list[str], quantity: str, unit: str) -> tuple[np.ndarray, list[str], str]:
-    """(values - initial values, labels "name(0) = value unit", axis label) of scalar series."""
-    values = np.stack([np.asarray(x, dtype=np.float64) for x in series], axis=1)
+def _change(series: list[Any], names: list[str], quantity: str, si_unit: str,
+            units: Mapping[str, str] | None = None) -> tuple[np.ndarray, list[str], str]:
+    """(values - initial values, labels "name(0) = value unit", axis label) of scalar series in `si_unit`,
+    drawn in its unit under `units`."""
+    factor, unit = convert_unit(si_unit, units)
+    values = np.stack([np.asarray(x, dtype=np.float64) for x in series], axis=1) * factor
     labels = [f"{name}(0) = {values[0, j] + 0.0:.6g} {unit}" for j, name in enumerate(names)]  # + 0.0: no "-0"
     return values - values[0], labels, f"{quantity} change\nsince t = 0 [{unit}]"
 
 
-def trajectory_figure(result: Any, attitude: str = "euler:ZYX", title: str = "") -> Any:
-    """A matplotlib Figure of four panels over t [s]: w_B [rad/s] (components in B), the attitude
-    (see check_attitude), the change since t = 0 of the kinetic and total energy [J] and of
-    |L| = |H_G| [kg m^2/s] about the centre of mass (initial values in the legends). Legends sit
-    outside the axes, to the right. `result`: a SimulationResult with q_WB as (x, y, z, w)."""
+def trajectory_figure(result: Any, attitude: str = "euler:ZYX", title: str = "", *,
+                      units: Mapping[str, str] | None = None) -> Any:
+    """A matplotlib Figure of four panels over t: w_B (components in B), the attitude (see check_attitude),
+    the change since t = 0 of the kinetic and total energy and of |L| = |H_G| about the centre of mass
+    (initial values in the legends). Legends sit outside the axes, to the right.
+
+    Parameters
+    ----------
+    result : SimulationResult
+        With q_WB as (x, y, z, w).
+    attitude : str, optional
+        "euler:SEQ" or "rotvec" (check_attitude).
+    title : str, optional
+        The figure's title.
+    units : Mapping[str, str], optional
+        The units drawn, {dimension: unit} as for the tables (rigiddyn.output_units); None: SI (t [s],
+        w_B [rad/s], angles [rad], energy [J], |L| [kg m^2/s]).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Four axes, each labelled with its unit.
+
+    Raises
+    ------
+    TypeError, ValueError
+        A bad `attitude` or `units`.
+
+    See Also
+    --------
+    plot_trajectory
+
+    Examples
+    --------
+    >>> from rigiddyn.trajectory_plot import trajectory_figure
+    >>> r = rd.simulate(rd.RigidBody(1.0, [1.0, 2.0, 3.0]), rd.RigidBodyState(w_B=[0.0, 0.0, 0.1]), dt=10.0,
+    ...                 steps=36, error=False)
+    >>> fig = trajectory_figure(r, units={"angle": "deg", "time": "h"})
+    >>> [ax.get_ylabel() for ax in fig.axes[:2]], fig.axes[-1].get_xlabel()
+    (['angular velocity w_B [deg/h]', 'Euler ZYX (intrinsic) [deg]'], 't [h]')
+    >>> import matplotlib.pyplot as plt
+    >>> plt.close(fig)
+    """
     import matplotlib.pyplot as plt
 
     check_attitude(attitude)
-    t = np.asarray(result.t)
-    angles, angle_labels, angle_axis, note = _attitude(np.asarray(result.q_WB), attitude)
+    check_units(units)
+    t_factor, t_unit = convert_unit("s", units)
+    w_factor, w_unit = convert_unit("rad/s", units)
+    t = np.asarray(result.t) * t_factor
+    angles, angle_labels, angle_axis, note = _attitude(np.asarray(result.q_WB), attitude, units)
     fig, axes = plt.subplots(4, 1, sharex=True, figsize=(9.0, 9.0), layout="constrained")
     panels = [
-        (np.asarray(result.w_B), ["w_B x", "w_B y", "w_B z"], "angular velocity w_B [rad/s]"),
+        (np.asarray(result.w_B) * w_factor, ["w_B x", "w_B y", "w_B z"], f"angular velocity w_B [{w_unit}]"),
         (angles, angle_labels, angle_axis),
-        _change([result.kinetic_energy, result.total_energy], ["kinetic T", "total E"], "energy", "J"),
-        _change([result.angular_momentum_norm], ["|L|"], "|L|", "kg m^2/s"),
+        _change([result.kinetic_energy, result.total_energy], ["kinetic T", "total E"], "energy", "J", units),
+        _change([result.angular_momentum_norm], ["|L|"], "|L|", "kg m^2/s", units),
     ]
     for ax, (values, labels, ylabel) in zip(axes, panels):
         for j, label in enumerate(labels):
@@ -96,18 +148,57 @@ def trajectory_figure(result: Any, attitude: str = "euler:ZYX", title: str = "")
         ax.grid(True, alpha=0.3)
     if note:
         axes[1].set_title(note, fontsize="small")
-    axes[-1].set_xlabel("t [s]")
+    axes[-1].set_xlabel(f"t [{t_unit}]")
     if title:
         fig.suptitle(title)
     return fig
 
 
-def plot_trajectory(result: Any, path: str | Path, attitude: str = "euler:ZYX", title: str = "") -> Path:
-    """Save trajectory_figure(result, attitude, title) to `path` (format from its suffix, e.g. .png);
-    returns the path."""
+def plot_trajectory(result: Any, path: str | Path, attitude: str = "euler:ZYX", title: str = "", *,
+                    units: Mapping[str, str] | None = None) -> Path:
+    """Save trajectory_figure(result, attitude, title, units=units) to `path`.
+
+    Parameters
+    ----------
+    result : SimulationResult
+        As in trajectory_figure.
+    path : str or pathlib.Path
+        The file written, its format from its suffix (e.g. .png).
+    attitude : str, optional
+        As in trajectory_figure.
+    title : str, optional
+        As in trajectory_figure.
+    units : Mapping[str, str], optional
+        The units drawn, as in trajectory_figure; None: SI.
+
+    Returns
+    -------
+    pathlib.Path
+        `path`.
+
+    Raises
+    ------
+    TypeError, ValueError
+        As trajectory_figure.
+
+    See Also
+    --------
+    trajectory_figure
+
+    Examples
+    --------
+    >>> import tempfile, pathlib
+    >>> folder = tempfile.TemporaryDirectory()
+    >>> from rigiddyn.trajectory_plot import plot_trajectory
+    >>> r = rd.simulate(rd.RigidBody(1.0, [1.0, 2.0, 3.0]), rd.RigidBodyState(w_B=[0.0, 0.0, 0.1]), dt=10.0,
+    ...                 steps=36, error=False)
+    >>> plot_trajectory(r, pathlib.Path(folder.name) / "w.png", units={"angle": "deg"}).name
+    'w.png'
+    >>> folder.cleanup()
+    """
     import matplotlib.pyplot as plt
 
-    fig = trajectory_figure(result, attitude, title)
+    fig = trajectory_figure(result, attitude, title, units=units)
     try:
         fig.savefig(path, dpi=120)
     finally:
@@ -140,18 +231,64 @@ def _series(ax: Any, t: np.ndarray, panel: tuple[np.ndarray, list[str], str]) ->
     ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0, fontsize="small")
 
 
-def scene_figure(result: Any, kinds: list[str], attitude: str = "euler:ZYX", title: str = "") -> Any:
-    """A matplotlib Figure of a SceneResult over t [s], the bodies overlaid (a colour per body, a line
-    style per component; the first MAX_SCENE_BODIES drawn): p_W [m] of each body in W; for the bodies
-    with an attitude (`kinds`: the type name of each body, e.g. "RigidBody", "Particle"; a particle has
-    none) w_B [rad/s] in B and the attitude (see check_attitude); the change since t = 0 of the
-    scene's kinetic, potential and total energy and of the work of all its elements [J] (initial values
-    in the legend); |H| about W's origin [kg m^2/s]; each body's mass [kg] when one changes.
-    `result`: a SceneResult with q_WB as (x, y, z, w)."""
+def scene_figure(result: Any, kinds: list[str], attitude: str = "euler:ZYX", title: str = "", *,
+                 units: Mapping[str, str] | None = None) -> Any:
+    """A matplotlib Figure of a SceneResult over t, the bodies overlaid (a colour per body, a line style per
+    component; the first MAX_SCENE_BODIES drawn): p_W of each body in W; for the bodies with an attitude
+    w_B in B and the attitude (see check_attitude); the change since t = 0 of the scene's kinetic,
+    potential and total energy and of the work of all its elements (initial values in the legend); |H|
+    about W's origin; each body's mass when one changes.
+
+    Parameters
+    ----------
+    result : SceneResult
+        With q_WB as (x, y, z, w).
+    kinds : list of str
+        The type name of each body, e.g. "RigidBody", "Particle" (a particle has no attitude).
+    attitude : str, optional
+        "euler:SEQ" or "rotvec" (check_attitude).
+    title : str, optional
+        The figure's title.
+    units : Mapping[str, str], optional
+        The units drawn, {dimension: unit} as for the tables (rigiddyn.output_units); None: SI (t [s],
+        p_W [m], w_B [rad/s], angles [rad], energy [J], |H| [kg m^2/s], mass [kg]).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        One axes per panel, each labelled with its unit.
+
+    Raises
+    ------
+    TypeError, ValueError
+        A bad `attitude`, `kinds` or `units`.
+
+    See Also
+    --------
+    plot_scene
+
+    Examples
+    --------
+    >>> from rigiddyn.trajectory_plot import scene_figure
+    >>> scene = rd.Scene()
+    >>> scene.add_body(rd.Particle(1.0), name="sat")
+    0
+    >>> r = rd.simulate(scene, [rd.ParticleState(v_W=[1000.0, 0.0, 0.0])], dt=60.0, steps=10, error=False)
+    >>> fig = scene_figure(r, ["Particle"], units={"length": "km", "time": "min"})
+    >>> fig.axes[0].get_ylabel(), fig.axes[-1].get_xlabel()
+    ('position p_W [km]', 't [min]')
+    >>> import matplotlib.pyplot as plt
+    >>> plt.close(fig)
+    """
     import matplotlib.pyplot as plt
 
     check_attitude(attitude)
-    t = np.asarray(result.t)
+    check_units(units)
+    t_factor, t_unit = convert_unit("s", units)
+    p_factor, p_unit = convert_unit("m", units)
+    w_factor, w_unit = convert_unit("rad/s", units)
+    m_factor, m_unit = convert_unit("kg", units)
+    t = np.asarray(result.t) * t_factor
     names = list(result.body_names)
     if len(kinds) != len(names):
         raise ValueError(f"kinds: expected one body type per body ({len(names)}), got {len(kinds)}")
@@ -162,14 +299,15 @@ def scene_figure(result: Any, kinds: list[str], attitude: str = "euler:ZYX", tit
     rows = 3 + 2 * bool(turning) + mass_changes
     fig, axes = plt.subplots(rows, 1, sharex=True, figsize=(9.0, 2.0 + 1.9 * rows), layout="constrained")
     panels = iter(axes)
-    _overlaid(next(panels), t, np.asarray(result.p_W), drawn, names, "position p_W [m]", ["x", "y", "z"])
+    _overlaid(next(panels), t, np.asarray(result.p_W) * p_factor, drawn, names, f"position p_W [{p_unit}]",
+              ["x", "y", "z"])
     if turning:
-        _overlaid(next(panels), t, np.asarray(result.w_B), turning, names, "angular velocity\nw_B [rad/s]",
-                  ["x", "y", "z"])
+        _overlaid(next(panels), t, np.asarray(result.w_B) * w_factor, turning, names,
+                  f"angular velocity\nw_B [{w_unit}]", ["x", "y", "z"])
         q_WB = np.asarray(result.q_WB)
         angles, notes = [], []
         for b in turning:
-            values, labels, angle_axis, note = _attitude(q_WB[:, b], attitude)
+            values, labels, angle_axis, note = _attitude(q_WB[:, b], attitude, units)
             angles.append(values)
             notes += [f"{names[b]}: {note}"] if note else []
         ax = next(panels)
@@ -181,26 +319,70 @@ def scene_figure(result: Any, kinds: list[str], attitude: str = "euler:ZYX", tit
             ax.set_title("; ".join(notes), fontsize="small")
     work = np.sum(np.asarray(result.work).reshape(len(t), -1), axis=1)
     _series(next(panels), t, _change([result.kinetic_energy, result.potential_energy, result.total_energy, work],
-                                     ["kinetic T", "potential V", "total E", "work of the elements W"], "energy", "J"))
+                                     ["kinetic T", "potential V", "total E", "work of the elements W"], "energy", "J",
+                                     units))
     _series(next(panels), t, _change([np.linalg.norm(np.asarray(result.angular_momentum_W), axis=1)],
-                                     ["|H|"], "|H| about W's origin", "kg m^2/s"))
+                                     ["|H|"], "|H| about W's origin", "kg m^2/s", units))
     if mass_changes:
-        _overlaid(next(panels), t, mass[:, :, None], drawn, names, "mass [kg]", [""])
+        _overlaid(next(panels), t, mass[:, :, None] * m_factor, drawn, names, f"mass [{m_unit}]", [""])
     for ax in axes:
         ax.grid(True, alpha=0.3)
-    axes[-1].set_xlabel("t [s]")
+    axes[-1].set_xlabel(f"t [{t_unit}]")
     shown = "" if len(drawn) == len(names) else f" (the first {len(drawn)} of {len(names)} bodies drawn)"
     if title or shown:
         fig.suptitle(f"{title}{shown}")
     return fig
 
 
-def plot_scene(result: Any, kinds: list[str], path: str | Path, attitude: str = "euler:ZYX", title: str = "") -> Path:
-    """Save scene_figure(result, kinds, attitude, title) to `path` (format from its suffix, e.g. .png);
-    returns the path."""
+def plot_scene(result: Any, kinds: list[str], path: str | Path, attitude: str = "euler:ZYX", title: str = "", *,
+               units: Mapping[str, str] | None = None) -> Path:
+    """Save scene_figure(result, kinds, attitude, title, units=units) to `path`.
+
+    Parameters
+    ----------
+    result : SceneResult
+        As in scene_figure.
+    kinds : list of str
+        As in scene_figure.
+    path : str or pathlib.Path
+        The file written, its format from its suffix (e.g. .png).
+    attitude : str, optional
+        As in scene_figure.
+    title : str, optional
+        As in scene_figure.
+    units : Mapping[str, str], optional
+        The units drawn, as in scene_figure; None: SI.
+
+    Returns
+    -------
+    pathlib.Path
+        `path`.
+
+    Raises
+    ------
+    TypeError, ValueError
+        As scene_figure.
+
+    See Also
+    --------
+    scene_figure
+
+    Examples
+    --------
+    >>> import tempfile, pathlib
+    >>> folder = tempfile.TemporaryDirectory()
+    >>> from rigiddyn.trajectory_plot import plot_scene
+    >>> scene = rd.Scene()
+    >>> scene.add_body(rd.Particle(1.0), name="sat")
+    0
+    >>> r = rd.simulate(scene, [rd.ParticleState(v_W=[1000.0, 0.0, 0.0])], dt=60.0, steps=10, error=False)
+    >>> plot_scene(r, ["Particle"], pathlib.Path(folder.name) / "s.png", units={"length": "km"}).name
+    's.png'
+    >>> folder.cleanup()
+    """
     import matplotlib.pyplot as plt
 
-    fig = scene_figure(result, kinds, attitude, title)
+    fig = scene_figure(result, kinds, attitude, title, units=units)
     try:
         fig.savefig(path, dpi=120)
     finally:

@@ -44,7 +44,7 @@ from typing import Any, NoReturn
 
 import numpy as np
 
-__all__ = ["is_quantity", "quantity", "registry", "to_si", "vector_quantity"]
+__all__ = ["is_quantity", "quantity", "registry", "to_si", "unit", "vector_quantity"]
 
 MAX_UNIT_TEXT = 100  # characters of a unit string
 MAX_UNIT_NESTING = 4  # parentheses within parentheses of a unit
@@ -234,14 +234,70 @@ def _read(text: str) -> tuple[float, dict[str, float]]:
     magnitude = float(number)
     if not math.isfinite(magnitude) and number.lstrip("+-").lower() not in ("inf", "nan"):
         raise _Refused("beyond the float range")
-    reader = _UnitReader(text, match.end())
+    return magnitude, _read_unit(text, match.end(), 'a number then its unit, such as "3 ft"')
+
+
+def _read_unit(text: str, pos: int, rule: str) -> dict[str, float]:
+    """{unit name: total power} of the unit that fills `text` from character `pos` on (module docstring's
+    grammar); `rule` says in messages what the text should be."""
+    reader = _UnitReader(text, pos, rule)
     powers = reader.product(depth=0)
     if reader.pos < len(text):  # a ')' without its '('
         reader.refuse()
     for unit_name, power in powers.items():
         if not abs(power) <= MAX_UNIT_POWER:
             raise _Refused(f"{unit_name} to the power {power:g}: a power of at most {MAX_UNIT_POWER} in size")
-    return magnitude, powers
+    return powers
+
+
+def unit(text: Any, name: str) -> Any:
+    """The pint Unit of a unit expression alone, without a number, read by the grammar of the module docstring
+    (each name looked up alone in the registry, which imports pint).
+
+    Parameters
+    ----------
+    text : str
+        A unit: "km", "deg", "kg*km^2/h", "kg km^2 / h" (at most MAX_UNIT_TEXT characters).
+    name : str
+        What the text is, for messages (``units['length']``).
+
+    Returns
+    -------
+    pint.Unit
+        Of the registry of `registry()`.
+
+    Raises
+    ------
+    TypeError
+        `text` is no string.
+    ValueError
+        "<name>: expected a unit such as "km", got <text> (<why>)": text outside the grammar (a number, an
+        operator, unbalanced parentheses, nothing) or a name the registry does not know.
+
+    See Also
+    --------
+    quantity, registry
+
+    Examples
+    --------
+    >>> from rigiddyn.units import unit
+    >>> unit("kg km^2 / h", "u")
+    <Unit('kilogram * kilometer ** 2 / hour')>
+    >>> unit("km; import os", "units['length']")
+    Traceback (most recent call last):
+    ...
+    ValueError: units['length']: expected a unit such as "km", got 'km; import os' (';' at character 3: ...)
+    """
+    if not isinstance(text, str):
+        raise TypeError(f'{name}: expected a unit as a string such as "km", got {_shown(text)}')
+    try:
+        if not text.strip():
+            raise _Refused("no unit")
+        if len(text) > MAX_UNIT_TEXT:
+            raise _Refused(f"a unit of at most {MAX_UNIT_TEXT} characters")
+        return _unit_of(_read_unit(text, 0, 'a unit such as "km" or "deg/s"'))
+    except _Refused as e:
+        raise ValueError(f'{name}: expected a unit such as "km", got {_shown(text)} ({e})') from None
 
 
 class _UnitReader:
@@ -252,11 +308,11 @@ class _UnitReader:
         exponent := a literal number, optionally signed and in parentheses ("-2", "0.5", "(-1)")
     """
 
-    def __init__(self, text: str, pos: int):
-        self.text, self.pos = text, pos
+    def __init__(self, text: str, pos: int, rule: str):
+        self.text, self.pos, self.rule = text, pos, rule  # rule: what the text should be, for messages
 
     def refuse(self) -> NoReturn:
-        rule = 'a number then its unit, such as "3 ft"'
+        rule = self.rule
         if self.pos == len(self.text):
             raise _Refused(f"a unit or an exponent missing at the end: {rule}")
         char = self.text[self.pos]
