@@ -79,7 +79,7 @@ class Scene:
         steps = len(result.t) - 1
         dt = (result.t[-1] - result.t[0]) / steps
         fine = rd.simulate(self.model, self.initial, dt / 16, steps=16 * steps, record_every=16, method="rk4",
-                           error=False)
+                           error=False, accuracy_level=None)
         return {"q_WB": fine.q_WB, "p_W": fine.p_W, "v_W": fine.v_W, "w_B": fine.w_B}
 
 

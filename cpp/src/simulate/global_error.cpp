@@ -231,7 +231,10 @@ RecordEstimate estimate_common(const ErrorRecords& h, const ErrorRecords& h2, co
                  "more than |T| + |V|");
   }
   out.energy = record.invariant(energy, "energy");
-  if (!h.balance.empty()) check_balance(record, h, h2, h4, i, j, energy_size, steps);
+  // the balance T − W rounds off at the size of its terms: |T| + |V| and the work |W| = |T − B| done so far
+  if (!h.balance.empty()) {
+    check_balance(record, h, h2, h4, i, j, energy_size + std::abs(h.energy_scale[i] - h.balance[i]), steps);
+  }
   const auto momentum = [](const ErrorRecords& x, std::size_t a, const ErrorRecords& y, std::size_t c) {
     return std::abs(x.momentum[a] - y.momentum[c]);
   };
