@@ -8,7 +8,8 @@
 // the asymptotic regime and the extrapolation in dt is sound). For a horizon T and a tolerance τ the largest
 // step is then dt = (s τ / (C T))^(1/p), s the safety factor; the run's cost is its steps times the cost per step
 // the pilot measured. The cheapest candidate is run with its estimate; a certificate that fails (not reliable,
-// or above τ) is followed by one refinement dt' = dt (s τ / ε)^(1/p) (dt / 2 when the estimate was not reliable).
+// or above τ) is followed by one refinement dt' = dt (s τ / ε)^(1/p) (at most dt / 2 when the estimate was not
+// reliable).
 //
 // Pilots: 16 steps over T/4 first; while the pilot's estimate is not reliable its horizon is halved (down to
 // T/32, the step with it) and then its steps doubled (up to 512). Its cost is that of ~28 steps whatever the
@@ -459,8 +460,10 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
       choice.reason += "; " + why + (attempt == 1 ? " after one refinement" : "");
       break;
     }
-    const std::int64_t steps =
-        steps_for(T, reliable ? refined_step(o.dt, chosen.order, error, target) : o.dt / 2.0, m);
+    // an estimate that is not reliable still bounds the step from above where it is finite: at most dt / 2, less
+    // where the estimate asks for less
+    const double refined = std::isfinite(error) ? refined_step(o.dt, chosen.order, error, target) : o.dt / 2.0;
+    const std::int64_t steps = steps_for(T, reliable ? refined : std::min(refined, o.dt / 2.0), m);
     if (steps > request.max_steps) {
       choice.reason += "; " + why + ", and its refinement needs " + std::to_string(steps) +
                        " steps, above max_steps = " + std::to_string(request.max_steps);
