@@ -143,3 +143,44 @@ STATE = rd.RigidBodyState(w_B=[0.1, 1.0, 0.1])
 def test_bad_input_is_named(kwargs, match):
     with pytest.raises(ValueError, match=match):
         rd.simulate(BODY, STATE, **kwargs)
+
+
+# each shipped scene over its file's duration; the cluster (1000 bodies in mutual gravity) over its first 1/32: its
+# reference at a sixteenth of the step costs minutes over the whole
+
+SHIPPED_SCENES = [("box_on_springs", 1), ("cluster", 32), ("foucault", 1), ("gravity_gradient", 1), ("heavy_top", 1),
+                  ("kepler", 1), ("pendulum", 1), ("rocket", 1), ("satellite_boom", 1), ("spring_chain", 1),
+                  ("three_body", 1)]
+
+
+def _largest_difference(result, reference, measure):
+    """The largest difference of `measure` between two SceneResults over the same records and bodies."""
+    if measure == "attitude":
+        q, q_ref = np.asarray(result.q_WB).reshape(-1, 4), np.asarray(reference.q_WB).reshape(-1, 4)
+        return float(geodesic(q, q_ref).max())
+    return float(np.linalg.norm(np.asarray(result.p_W) - np.asarray(reference.p_W), axis=-1).max())
+
+
+@pytest.mark.parametrize("name, part", SHIPPED_SCENES)
+def test_each_shipped_scene_meets_its_tolerance_against_a_finer_run(name, part):
+    # the tolerance: 1e-5 rad of the attitude where a body turns, else 1e-5 of the largest distance from W's origin
+    scene, initial, run = rd.load_scene(name)
+    duration = run.duration / part
+    turning = any(not isinstance(s, rd.ParticleState) for s in initial)
+    measure = "attitude" if turning else "position"
+    if turning:
+        tolerance = 1e-5
+    else:
+        coarse = rd.simulate(scene, initial, duration / 256, steps=256, error=False, accuracy_level=None)
+        tolerance = 1e-5 * float(np.linalg.norm(np.asarray(coarse.p_W), axis=-1).max())
+    r = rd.simulate(scene, initial, duration=duration, tolerance=tolerance, measure=measure)
+    assert r.choice.met and r.choice.certified_error <= tolerance
+    # the reference: rk4 at a sixteenth of the chosen step, over the same records, with its own estimate; the
+    # triangle inequality bounds the run's true error by |run - reference| - |reference's error|, the latter at most
+    # 2x its reliable estimate (effectivity within [0.5, 2], docs/accuracy.md)
+    reference = rd.simulate(scene, initial, r.choice.dt / 16, steps=16 * r.choice.steps, method="rk4",
+                            record_every=16 * r.choice.steps // (len(r.t) - 1), accuracy_level=None)
+    assert len(reference.t) == len(r.t) and np.allclose(reference.t, r.t, rtol=1e-12, atol=1e-9 * duration)
+    reference_error = 2.0 * float(np.nanmax(getattr(reference.error, measure)))
+    assert bool(np.all(reference.error.reliable[::4])) or reference_error <= tolerance / 100
+    assert _largest_difference(r, reference, measure) <= tolerance + reference_error
