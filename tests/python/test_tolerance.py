@@ -147,7 +147,6 @@ def test_bad_input_is_named(kwargs, match):
 
 # each shipped scene over its file's duration; the cluster (1000 bodies in mutual gravity) over its first 1/32: its
 # reference at a sixteenth of the step costs minutes over the whole
-
 SHIPPED_SCENES = [("box_on_springs", 1), ("cluster", 32), ("foucault", 1), ("gravity_gradient", 1), ("heavy_top", 1),
                   ("kepler", 1), ("pendulum", 1), ("rocket", 1), ("satellite_boom", 1), ("spring_chain", 1),
                   ("three_body", 1)]
