@@ -233,6 +233,19 @@ class Balance:
         return (Balance, tuple(getattr(self, name) for name in _array_names()) + (self.verdict, self.about))
 
 
+def _made(arrays: tuple[np.ndarray, ...], verdict: dict[str, str], about: str) -> Balance:
+    """A Balance of the residual arrays a run made (float arrays of one length, in _array_names' order): without the
+    checks of its constructor, which guard what a user or a pickle passes."""
+    balance = Balance.__new__(Balance)
+    for name, value in zip(_array_names(), arrays):
+        a = np.array(value, dtype=float)
+        a.flags.writeable = False
+        setattr(balance, name, a)
+    balance.verdict = dict(verdict)
+    balance.about = about
+    return balance
+
+
 def _real_array(value: Any, name: str, n: int | None) -> np.ndarray:
     """A read-only float copy of `value`, shape (n,) (any n when n is None); TypeError or ValueError naming `name`."""
     shape = f"({'n' if n is None else n},)"
@@ -261,9 +274,12 @@ def _max_abs(a: np.ndarray) -> float:
     return float(np.nanmax(np.abs(a)))
 
 
+_EPS = float(np.finfo(float).eps)
+
+
 def _round_off(scale: np.ndarray, steps: np.ndarray) -> np.ndarray:
     """8 eps per step, summed (as the global error estimate's bound): 8 eps |scale| max(steps, 1)."""
-    return np.asarray(8.0 * np.finfo(float).eps * np.abs(scale) * np.maximum(steps, 1), dtype=float)
+    return np.asarray(8.0 * _EPS * np.abs(scale) * np.maximum(steps, 1), dtype=float)
 
 
 def _steps(t: np.ndarray, dt: float) -> np.ndarray:
@@ -275,7 +291,7 @@ def _running_max(a: np.ndarray) -> np.ndarray:
 
 
 def _norms(a: np.ndarray) -> np.ndarray:
-    return np.asarray(np.linalg.norm(a, axis=-1), dtype=float)
+    return np.asarray(np.sqrt(np.einsum("...i,...i->...", a, a)), dtype=float)
 
 
 def _not_applicable(n: int) -> np.ndarray:
@@ -329,23 +345,25 @@ def _of_body(result: Any, mass: float, inertia_com: Any, gravity_W: Any, loads: 
         angular = _norms(H - H[:1]) if n else t
         angular_scale = np.full(n, _norms(H[:1])[0]) if n else t
         angular_size = _running_max(_norms(H))
-    balance = Balance(energy, linear, angular, _round_off(energy_size, steps), _round_off(linear_size, steps),
-                      _round_off(angular_size, steps), energy_scale, linear_scale, angular_scale,
-                      {q: verdict.get(q, "closed") for q, _ in _QUANTITIES},
-                      "the centre of mass")
-    return balance
+    return _made((energy, linear, angular, _round_off(energy_size, steps), _round_off(linear_size, steps),
+                  _round_off(angular_size, steps), energy_scale, linear_scale, angular_scale),
+                 {q: verdict.get(q, "closed") for q, _ in _QUANTITIES}, "the centre of mass")
 
 
 def _world_momentum(q: np.ndarray, w_B: np.ndarray, inertia: np.ndarray, scalar_first: bool) -> np.ndarray:
-    """R_WB I w_B per record, q (n, 4) as recorded."""
-    q = q / np.linalg.norm(q, axis=1, keepdims=True)
-    if scalar_first:
-        q = q[:, [1, 2, 3, 0]]
-    x, y, z, s = q[:, 0], q[:, 1], q[:, 2], q[:, 3]
-    R = np.stack([np.stack([1 - 2 * (y * y + z * z), 2 * (x * y - s * z), 2 * (x * z + s * y)], -1),
-                  np.stack([2 * (x * y + s * z), 1 - 2 * (x * x + z * z), 2 * (y * z - s * x)], -1),
-                  np.stack([2 * (x * z - s * y), 2 * (y * z + s * x), 1 - 2 * (x * x + y * y)], -1)], -2)
-    return np.asarray(np.einsum("nij,jk,nk->ni", R, inertia, w_B), dtype=float)  # no BLAS threads for (n, 3) rows
+    """R_WB I w_B per record, q (n, 4) as recorded: h + 2 s (u x h) + 2 u x (u x h) for h = I w_B and the unit
+    quaternion (u, s) (Rodrigues' formula in quaternion form)."""
+    q = q / np.sqrt(np.einsum("ni,ni->n", q, q))[:, None]
+    u, s = (q[:, 1:], q[:, :1]) if scalar_first else (q[:, :3], q[:, 3:])
+    h = np.einsum("jk,nk->nj", inertia, w_B)  # no BLAS threads for (n, 3) rows
+    t = 2.0 * _cross(u, h)
+    return np.asarray(h + s * t + _cross(u, t), dtype=float)
+
+
+def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """a x b row by row, (n, 3) (numpy's cross costs ~20 us of checks on short arrays)."""
+    return np.column_stack((a[:, 1] * b[:, 2] - a[:, 2] * b[:, 1], a[:, 2] * b[:, 0] - a[:, 0] * b[:, 2],
+                            a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]))
 
 
 def of_scene(result: Any, impulse_W: Any, angular_impulse_W: Any, not_applicable: str, dt: float) -> Balance:
@@ -395,9 +413,9 @@ def _of_scene(result: Any, impulse_W: Any, angular_impulse_W: Any, not_applicabl
         angular_scale = (moments[0] + _running_max(_norms(K))) if n else t
         linear_size = _running_max(_norms(mv).sum(axis=1) + _norms(J))
         angular_size = _running_max(moments + _norms(K) + turning)
-    return Balance(energy, linear, angular, _round_off(energy_size, steps), _round_off(linear_size, steps),
-                   _round_off(angular_size, steps), energy_scale, linear_scale, angular_scale,
-                   {q: verdict.get(q, "closed") for q, _ in _QUANTITIES}, "W's origin")
+    return _made((energy, linear, angular, _round_off(energy_size, steps), _round_off(linear_size, steps),
+                  _round_off(angular_size, steps), energy_scale, linear_scale, angular_scale),
+                 {q: verdict.get(q, "closed") for q, _ in _QUANTITIES}, "W's origin")
 
 
 # ------------------------------------------------------------------ the warning
