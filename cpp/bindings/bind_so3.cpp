@@ -826,10 +826,12 @@ void bind_so3(py::module_& m) {
         const AngleUnit unit = as_angle_unit(degrees);
         const std::string name = "q";
         GimbalLock worst = GimbalLock::none;
-        Array angles = map_unary(q, "q", quaternion, vector3, "quat_to_euler", [&](const double* in, double* out) {
-          GimbalLock lock;
-          write_vector(quat_to_euler(s, checked_unit_quaternion(py_io::read_quaternion(in, scalar_first), name), &lock) * unit.from_radians, out);
-          worst = std::max(worst, lock);
+        Array angles = with_layout(scalar_first, [&](auto first) {
+          return map_unary<Written::finite_by_construction>(q, "q", quaternion, vector3, "quat_to_euler", [&](const double* in, double* out) {
+            GimbalLock lock;
+            write_vector(quat_to_euler(s, unit_quaternion_at<first>(in, name), &lock) * unit.from_radians, out);
+            worst = std::max(worst, lock);
+          });
         });
         warn_gimbal_lock(worst);
         return angles;
