@@ -2,10 +2,15 @@
 validated per item) against the numpy reference rigiddyn_ref.so3 (vectorised numpy, no
 validation) for quat_rotate, quat_to_matrix and matrix_to_quat; quat_rotate also against the
 formula in plain vectorised numpy (np.cross); and every array rotation function against SciPy's
-Rotation (where SciPy is installed). A SciPy method that starts from a rotation (as_matrix, as_rotvec,
-as_mrp, as_euler, inv, apply, *) is timed on a Rotation built beforehand, as a SciPy user holds one;
-a constructor (from_matrix, from_rotvec, from_mrp, from_euler) is timed with the as_quat that gives
-rigiddyn's output. rigiddyn validates every item (unit norm, rotation matrix) in its time.
+Rotation (where SciPy is installed). A constructor (from_matrix, from_rotvec, from_mrp, from_euler) is
+timed with the as_quat that gives rigiddyn's output. rigiddyn validates every item (finite, unit norm,
+rotation matrix) and normalises every quaternion in its time.
+
+A SciPy method that starts from a rotation (as_matrix, as_rotvec, as_mrp, as_euler, inv, apply, *) is
+timed twice: on a Rotation built beforehand, as a SciPy user holds one ("scipy": SciPy's time then
+excludes the checks and the normalisation that Rotation.from_quat did once, which rigiddyn's includes),
+and like with like, from the quaternion array with Rotation.from_quat (its finiteness check and
+normalisation) included ("scipy_from_quat").
 
     python bench/python/bench_so3.py           # n = 1e6
     python bench/python/bench_so3.py --small   # n = 1e4 (what ctest runs)
@@ -73,7 +78,8 @@ def main():
 
 def compare_with_scipy(Rotation, q, v, R, n, repeats):
     """rigiddyn's array rotation functions against SciPy's Rotation on the same items (each pair
-    checked equal first: rotations up to the sign of quaternions, angles to 1e-9 rad)."""
+    checked equal first: rotations up to the sign of quaternions, angles to 1e-9 rad). A SciPy method
+    of a Rotation also against SciPy from the quaternions (from_quat included: like with like)."""
     r = Rotation.from_quat(q)
     r2 = Rotation.from_quat(q[::-1].copy())
     q2 = r2.as_quat()
@@ -93,12 +99,24 @@ def compare_with_scipy(Rotation, q, v, R, n, repeats):
         ("quat_multiply", lambda: rd.quat_multiply(q, q2), lambda: (r * r2).as_quat()),
         ("quat_rotate", lambda: rd.quat_rotate(q, v), lambda: r.apply(v)),
     ]
+    from_quat = {
+        "quat_to_matrix": lambda: Rotation.from_quat(q).as_matrix(),
+        "quat_to_rotvec": lambda: Rotation.from_quat(q).as_rotvec(),
+        "quat_to_mrp": lambda: Rotation.from_quat(q).as_mrp(),
+        "quat_to_euler": lambda: Rotation.from_quat(q).as_euler("xyz"),
+        "quat_inverse": lambda: Rotation.from_quat(q).inv().as_quat(),
+        "quat_multiply": lambda: (Rotation.from_quat(q) * Rotation.from_quat(q2)).as_quat(),
+        "quat_rotate": lambda: Rotation.from_quat(q).apply(v),
+    }
     for case, ours, theirs in cases:
         a, b = ours(), theirs()
         same = np.minimum(np.abs(a - b), np.abs(a + b)) if a.shape[-1] == 4 else np.abs(a - b)
         if same.max() > 1e-9:
             raise SystemExit(f"{case} disagrees with SciPy: max |diff| = {same.max():.3g}")
-        report(case, n, best_time(ours, repeats), best_time(theirs, repeats), "scipy")
+        t_rd = best_time(ours, repeats)
+        report(case, n, t_rd, best_time(theirs, repeats), "scipy")
+        if case in from_quat:
+            report(case, n, t_rd, best_time(from_quat[case], repeats), "scipy_from_quat")
 
 
 if __name__ == "__main__":

@@ -147,17 +147,107 @@ RIGIDDYN_ALWAYS_INLINE Eigen::Quaterniond unit_quaternion_at(const double* p, co
   return Eigen::Quaterniond(k * w, k * x, k * y, k * z);
 }
 
-// Writes R(q) of a unit quaternion q at out, row-major: the entries of quat_to_matrix (Eigen's
-// toRotationMatrix, the same products in the same order) stored one by one, without a column-major
-// temporary to transpose.
+// Items per block of the quaternion loops (map_unit_quaternions). A block is held one array per component
+// (structure of arrays), whose arithmetic Eigen runs as vector instructions.
+constexpr py::ssize_t block_size = 2;
+using Block = Eigen::Array<double, block_size, 1>;
+
+// The entries of R(q) of unit quaternions (x, y, z, w), row-major: set(k, R_k) for k = 0..8, the products of
+// Eigen's toRotationMatrix in the same order. T is double (one item) or Block (one entry of every item of a
+// block).
+template <typename T, typename Set>
+RIGIDDYN_ALWAYS_INLINE void rotation_matrix_entries(const T& x, const T& y, const T& z, const T& w, Set set) {
+  const T tx = 2.0 * x, ty = 2.0 * y, tz = 2.0 * z;
+  const T twx = tx * w, twy = ty * w, twz = tz * w, txx = tx * x, txy = ty * x, txz = tz * x;
+  const T tyy = ty * y, tyz = tz * y, tzz = tz * z;
+  set(0, 1.0 - (tyy + tzz)), set(1, txy - twz), set(2, txz + twy);
+  set(3, txy + twz), set(4, 1.0 - (txx + tzz)), set(5, tyz - twx);
+  set(6, txz - twy), set(7, tyz + twx), set(8, 1.0 - (txx + tyy));
+}
+
+// Writes R(q) of a unit quaternion q at out, row-major, entry by entry (no column-major temporary to
+// transpose).
 RIGIDDYN_ALWAYS_INLINE void write_rotation_matrix(const Eigen::Quaterniond& q, double* out) {
-  const double x = q.x(), y = q.y(), z = q.z(), w = q.w();
-  const double tx = 2.0 * x, ty = 2.0 * y, tz = 2.0 * z;
-  const double twx = tx * w, twy = ty * w, twz = tz * w, txx = tx * x, txy = ty * x, txz = tz * x;
-  const double tyy = ty * y, tyz = tz * y, tzz = tz * z;
-  out[0] = 1.0 - (tyy + tzz), out[1] = txy - twz, out[2] = txz + twy;
-  out[3] = txy + twz, out[4] = 1.0 - (txx + tzz), out[5] = tyz - twx;
-  out[6] = txz - twy, out[7] = tyz + twx, out[8] = 1.0 - (txx + tyy);
+  rotation_matrix_entries(q.x(), q.y(), q.z(), q.w(), [out](int k, double value) { out[k] = value; });
+}
+
+// Unit quaternions of one block, q_j = (x[j], y[j], z[j], w[j]).
+struct QuaternionBlock {
+  Block x, y, z, w;
+};
+
+// The block_size items at p, entry `entry` of each (items of `size` doubles): a strided view of one column.
+template <int size>
+Eigen::Map<const Block, Eigen::Unaligned, Eigen::InnerStride<size>> column(const double* p, int entry) {
+  return Eigen::Map<const Block, Eigen::Unaligned, Eigen::InnerStride<size>>(p + entry);
+}
+
+// Reads the block_size items at p (layout as unit_quaternion_at) into q, normalised as unit_quaternion_at
+// does; false, q not written, when the |q|² of some item is outside [unit_norm2_low, unit_norm2_high]: the
+// caller then reads that block with unit_quaternion_at, which normalises such an item exactly or throws.
+template <bool ScalarFirst>
+RIGIDDYN_ALWAYS_INLINE bool read_unit_quaternions(const double* p, QuaternionBlock& q) {
+  const Block x = column<4>(p, ScalarFirst ? 1 : 0), y = column<4>(p, ScalarFirst ? 2 : 1);
+  const Block z = column<4>(p, ScalarFirst ? 3 : 2), w = column<4>(p, ScalarFirst ? 0 : 3);
+  const Block norm2 = (x * x + y * y) + (z * z + w * w);
+  if (!(norm2 >= unit_norm2_low && norm2 <= unit_norm2_high).all()) return false;
+  const Block e = 1.0 - norm2;
+  const Block k = 1.0 + e * (0.5 + e * (0.375 + e * 0.3125));
+  q.x = k * x, q.y = k * y, q.z = k * z, q.w = k * w;
+  return true;
+}
+
+// Writes R(q_j) of the block's quaternions at out (block_size row-major matrices), an entry of every item at
+// a time.
+RIGIDDYN_ALWAYS_INLINE void write_rotation_matrices(const QuaternionBlock& q, double* out) {
+  rotation_matrix_entries(q.x, q.y, q.z, q.w, [out](int k, const Block& entry) {
+    Eigen::Map<Block, Eigen::Unaligned, Eigen::InnerStride<9>>(out + k) = entry;
+  });
+}
+
+// A column of the block_size items at out (items of `size` doubles, entry `entry` of each), to write.
+template <int size>
+Eigen::Map<Block, Eigen::Unaligned, Eigen::InnerStride<size>> column_out(double* out, int entry) {
+  return Eigen::Map<Block, Eigen::Unaligned, Eigen::InnerStride<size>>(out + entry);
+}
+
+// Writes the MRP p_j = v_j / (w_j + sign(w_j)) of the block's quaternions at out, as quat_to_mrp (mrp.hpp);
+// false, nothing written, when some w_j = 0 (a half turn, whose sign quat_to_mrp's tie rule picks).
+RIGIDDYN_ALWAYS_INLINE bool write_mrps(const QuaternionBlock& q, double* out) {
+  if ((q.w == 0.0).any()) return false;
+  const Block denominator = q.w + q.w.sign();
+  column_out<3>(out, 0) = q.x / denominator, column_out<3>(out, 1) = q.y / denominator, column_out<3>(out, 2) = q.z / denominator;
+  return true;
+}
+
+// Writes the inverses (conjugates) (-v_j, w_j) of the block's quaternions at out, in the layout of
+// unit_quaternion_at.
+template <bool ScalarFirst>
+RIGIDDYN_ALWAYS_INLINE void write_inverses(const QuaternionBlock& q, double* out) {
+  column_out<4>(out, ScalarFirst ? 1 : 0) = -q.x, column_out<4>(out, ScalarFirst ? 2 : 1) = -q.y;
+  column_out<4>(out, ScalarFirst ? 3 : 2) = -q.z, column_out<4>(out, ScalarFirst ? 0 : 3) = q.w;
+}
+
+// out[i] = f(q[i]) over a stack of unit quaternions q (layout as unit_quaternion_at), block_size items at a
+// time: block(q_block, out_block) writes the results of a block read by read_unit_quaternions and returns
+// true, or returns false for a block it does not take; item(q_i, out_i) writes the result of one item
+// (unit_quaternion_at), for such a block and for the last n % block_size items. The results are finite by
+// construction.
+template <bool ScalarFirst, typename Block, typename Item>
+Array map_unit_quaternions(py::handle q, const std::string& name, const Shape& out_shape, const char* quantity, Block block, Item item) {
+  const Stack in = py_io::as_stack(q, name, quaternion);
+  Array out = py_io::new_stack(in.n, in.stacked, out_shape, quantity);
+  const double* a = in.array.data();
+  double* o = out.mutable_data();
+  const py::ssize_t o_size = item_size(out_shape);
+  for_each_block<block_size>(
+      in.n, in.stacked,
+      [&](py::ssize_t i) RIGIDDYN_INLINE_KERNEL {
+        QuaternionBlock q_block;
+        return read_unit_quaternions<ScalarFirst>(a + 4 * i, q_block) && block(q_block, o + i * o_size);
+      },
+      [&](py::ssize_t i) RIGIDDYN_INLINE_KERNEL { item(unit_quaternion_at<ScalarFirst>(a + 4 * i, name), o + i * o_size); });
+  return out;
 }
 
 // Writes q at out in the layout of unit_quaternion_at.
@@ -296,9 +386,13 @@ void bind_so3(py::module_& m) {
         const bool scalar_first = as_scalar_first(scalar_first_arg);
         const std::string name = "q";
         return with_layout(scalar_first, [&](auto first) {
-          return map_unary<Written::finite_by_construction>(q, "q", quaternion, matrix3, "quat_to_matrix", [&](const double* in, double* out) {
-            write_rotation_matrix(unit_quaternion_at<first>(in, name), out);
-          });
+          return map_unit_quaternions<first>(
+              q, name, matrix3, "quat_to_matrix",
+              [](const QuaternionBlock& q_block, double* out) RIGIDDYN_INLINE_KERNEL {
+                write_rotation_matrices(q_block, out);
+                return true;
+              },
+              write_rotation_matrix);
         });
       },
       "q"_a, "scalar_first"_a = false,
@@ -732,10 +826,12 @@ void bind_so3(py::module_& m) {
         const AngleUnit unit = as_angle_unit(degrees);
         const std::string name = "q";
         GimbalLock worst = GimbalLock::none;
-        Array angles = map_unary(q, "q", quaternion, vector3, "quat_to_euler", [&](const double* in, double* out) {
-          GimbalLock lock;
-          write_vector(quat_to_euler(s, checked_unit_quaternion(py_io::read_quaternion(in, scalar_first), name), &lock) * unit.from_radians, out);
-          worst = std::max(worst, lock);
+        Array angles = with_layout(scalar_first, [&](auto first) {
+          return map_unary<Written::finite_by_construction>(q, "q", quaternion, vector3, "quat_to_euler", [&](const double* in, double* out) {
+            GimbalLock lock;
+            write_vector(quat_to_euler(s, unit_quaternion_at<first>(in, name), &lock) * unit.from_radians, out);
+            worst = std::max(worst, lock);
+          });
         });
         warn_gimbal_lock(worst);
         return angles;
@@ -992,9 +1088,10 @@ void bind_so3(py::module_& m) {
         const bool scalar_first = as_scalar_first(scalar_first_arg);
         const std::string name = "q";
         return with_layout(scalar_first, [&](auto first) {
-          return map_unary<Written::finite_by_construction>(q, "q", quaternion, vector3, "quat_to_mrp", [&](const double* in, double* out) {
-            write_vector(quat_to_mrp(unit_quaternion_at<first>(in, name)), out);
-          });
+          return map_unit_quaternions<first>(
+              q, name, vector3, "quat_to_mrp",
+              [](const QuaternionBlock& q_block, double* out) RIGIDDYN_INLINE_KERNEL { return write_mrps(q_block, out); },
+              [](const Eigen::Quaterniond& q_i, double* out) { write_vector(quat_to_mrp(q_i), out); });
         });
       },
       "q"_a, "scalar_first"_a = false,
@@ -1245,9 +1342,13 @@ void bind_so3(py::module_& m) {
         const bool scalar_first = as_scalar_first(scalar_first_arg);
         const std::string name = "q";
         return with_layout(scalar_first, [&](auto first) {
-          return map_unary<Written::finite_by_construction>(q, "q", quaternion, quaternion, "quat_inverse", [&](const double* in, double* out) {
-            write_quaternion_at<first>(quat_inverse(unit_quaternion_at<first>(in, name)), out);
-          });
+          return map_unit_quaternions<first>(
+              q, name, quaternion, "quat_inverse",
+              [first](const QuaternionBlock& q_block, double* out) RIGIDDYN_INLINE_KERNEL {
+                write_inverses<first>(q_block, out);
+                return true;
+              },
+              [first](const Eigen::Quaterniond& q_i, double* out) { write_quaternion_at<first>(quat_inverse(q_i), out); });
         });
       },
       "q"_a, "scalar_first"_a = false,

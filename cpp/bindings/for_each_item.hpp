@@ -1,14 +1,31 @@
-// The loop of the stacked bindings: one kernel call per item of a stack, without the GIL.
+// The loops of the stacked bindings: one kernel call per item of a stack, without the GIL, or a block
+// of items per call where a kernel exists for a block.
 #pragma once
 #include <pybind11/pybind11.h>
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
+// Written after a lambda's parameter list: the kernel of an array loop inlined into the loop (GCC otherwise
+// outlines it from the large binding functions, with its constants reloaded and its block passed through
+// memory on every call).
+#if defined(__GNUC__) || defined(__clang__)
+#define RIGIDDYN_INLINE_KERNEL __attribute__((always_inline))
+#else
+#define RIGIDDYN_INLINE_KERNEL
+#endif
+
 namespace rigiddyn::bindings {
 
+// The exception of item i of a stack: the message gets " (item i)" appended, so that it names the argument
+// and the offending item.
+[[noreturn]] inline void throw_for_item(const std::invalid_argument& e, pybind11::ssize_t i) {
+  throw std::invalid_argument(std::string(e.what()) + " (item " + std::to_string(i) + ")");
+}
+
 // Runs kernel(i) for i in [0, n) without the GIL. A std::invalid_argument from item i of a stack
-// gets " (item i)" appended, so the message names the argument and the offending item.
+// names the item (throw_for_item).
 template <typename Kernel>
 void for_each_item(pybind11::ssize_t n, bool stacked, Kernel kernel) {
   pybind11::gil_scoped_release release;
@@ -17,7 +34,28 @@ void for_each_item(pybind11::ssize_t n, bool stacked, Kernel kernel) {
     for (; i < n; ++i) kernel(i);
   } catch (const std::invalid_argument& e) {
     if (!stacked) throw;
-    throw std::invalid_argument(std::string(e.what()) + " (item " + std::to_string(i) + ")");
+    throw_for_item(e, i);
+  }
+}
+
+// As for_each_item, block_size items at a time: block(i) does the items [i, i + block_size) and returns
+// true, or returns false for a block it does not take (its writes, if any, are overwritten), and then
+// kernel(i) does that block's items one by one, as it does the last n % block_size items.
+template <pybind11::ssize_t block_size, typename Block, typename Kernel>
+void for_each_block(pybind11::ssize_t n, bool stacked, Block block, Kernel kernel) {
+  pybind11::gil_scoped_release release;
+  pybind11::ssize_t i = 0;
+  try {
+    while (i < n) {
+      if (n - i >= block_size && block(i)) {
+        i += block_size;
+        continue;
+      }
+      for (const pybind11::ssize_t end = std::min(n, i + block_size); i < end; ++i) kernel(i);
+    }
+  } catch (const std::invalid_argument& e) {
+    if (!stacked) throw;
+    throw_for_item(e, i);
   }
 }
 

@@ -24,8 +24,13 @@ const char* const valid_sequences =
 // +1 if (i, j, k) is an even permutation of (0, 1, 2), -1 if odd.
 int permutation_sign(int i, int j, int k) { return (i - j) * (j - k) * (k - i) / 2; }
 
-// x in [-pi, pi]
-double wrap_angle(double x) { return std::remainder(x, 2.0 * pi); }
+// x in [-pi, pi] for x in [-2 pi, 2 pi] (each angle here is a sum, difference or double of atan2 values):
+// std::remainder(x, 2 pi) to the bit, zero's sign included, without its division. x - 2 pi for x > pi is
+// exact (Sterbenz: pi <= x <= 2 (2 pi)), and so is -(-x - 2 pi) for x < -pi (-0 at x = -2 pi, as remainder).
+double wrap_angle(double x) {
+  constexpr double two_pi = 2.0 * pi;
+  return x > pi ? x - two_pi : x < -pi ? -(-x - two_pi) : x;
+}
 
 // The angles of a proper sequence about orthonormal n1, n2: q = q_n1(θ3) ⊗ q_n2(φ) ⊗ q_n1(θ1).
 struct ProperAngles {
