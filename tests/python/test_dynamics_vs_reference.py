@@ -7,9 +7,11 @@ frame, piecewise-constant schedules and gravity. One step agrees to both sides' 
 Jacobians (_error_bounds.propagated_bound: the reference and the core round differently, and the
 dynamics amplifies the difference)."""
 
+import warnings
+
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 from hypothesis.extra.numpy import arrays
 
@@ -249,6 +251,9 @@ def test_one_large_step_of_a_spinning_body(method, data, dt):
 # ------------------------------------------------------------------ 1000 steps
 # two random problems per model and method (each ~3 s: the bound differentiates 1000 core steps);
 # the breadth of random problems is in the one-step tests above
+UNSTABLE_GYROSCOPIC = ("explicit_euler", "semi_implicit_euler")
+
+
 @settings(max_examples=2)
 @given(st.data(), st.floats(1e-3, 1e-2))
 @pytest.mark.parametrize("method", METHODS)
@@ -256,15 +261,23 @@ def test_one_large_step_of_a_spinning_body(method, data, dt):
 def test_thousand_steps(model, method, data, dt):
     steps = 1000
     body, state, ref_model, y0, loads, g = data.draw(problems(model, dt, varying=True))
-    run = rd.simulate(body, state, dt, steps, method=method, record_every=steps,
-                      loads=core_loads(loads), gravity=g)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        run = rd.simulate(body, state, dt, steps, method=method, record_every=steps,  # the balances' warning:
+                          loads=core_loads(loads), gravity=g, accuracy_level=None)  # test_balance.py's subject
+    # the explicit gyroscopic term of these methods is unstable where the loads spin a tumbling body up to
+    # dt |w| ~ 0.2 (measured: |w| 2.3 -> 23 rad/s at dt = 0.01; semi_implicit_euler_implicit_gyroscopic and rk4
+    # run the same draw): a draw beyond that limit is no test of the comparison (simulate says so with a warning)
+    assume(not (run.diverged and method in UNSTABLE_GYROSCOPIC))
+    assert not caught, [str(w.message) for w in caught]
     assert run.t.shape == (2,) and not run.diverged
     np.testing.assert_allclose(run.t, [0.0, steps * dt], rtol=1e-15)  # N dt rounded once on each side
     y = ref.simulate(ref_model, y0, dt, steps, method, ref_loads(loads))
     kinetic, potential, momentum_norm, quat_norm = ref_model.energies(y)
     # round-off of both sides carried to step N by the method's own Jacobians (chaotic or unstable
     # runs amplify it): sum_k ||J(N, k)|| (e_core + e_ref), tests/python/_error_bounds.py
-    tol = propagated_bound(body, rd.simulate(body, state, dt, steps, method=method, loads=core_loads(loads), gravity=g),
+    tol = propagated_bound(body, rd.simulate(body, state, dt, steps, method=method, loads=core_loads(loads), gravity=g,
+                                             accuracy_level=None),
                            dt, method, core_loads(loads), g, body_condition(body))
     derived = derived_tolerances(tol, body, run, g)  # T, T + V and |H| from states within tol
     if model == "particle":
