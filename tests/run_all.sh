@@ -25,8 +25,9 @@ export CMAKE_CXX_COMPILER_LAUNCHER=ccache CCACHE_BASEDIR="$PWD" CXX="${CXX:-g++}
 
 # the package with the test and docs extras, once (tests/docs/run.sh below finds it installed)
 bash tests/pip_install.sh test,docs
-# (-p no:benchmark: pytest-benchmark, where a machine has it, warns under xdist, and warnings are errors)
-python3 -m pytest -n auto -p no:benchmark
+# (-p no:benchmark: pytest-benchmark, where a machine has it, warns under xdist, and warnings are errors;
+# --dist loadgroup: the tests marked with one xdist_group share a worker, so a module's costly fixture runs once)
+python3 -m pytest -n auto --dist loadgroup -p no:benchmark
 
 cmake --preset test
 cmake --build --preset test -j 2

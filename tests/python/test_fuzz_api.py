@@ -78,7 +78,10 @@ def _format(findings) -> str:
                        f"reproducer:\n{f['reproducer']}" for f in findings)
 
 
+# The tests that read the fuzz report share one xdist worker (tests/run_all.sh runs pytest with --dist loadgroup): the
+# module's fixture runs once per worker that takes one of its tests, and the fuzz is a minute or more of CPU.
 @pytest.mark.slow
+@pytest.mark.xdist_group("fuzz_report")
 @pytest.mark.parametrize("target", TARGETS)
 def test_no_crash_hang_or_silent_non_finite(report, target):
     findings = [f for f in report["findings"]
@@ -87,6 +90,7 @@ def test_no_crash_hang_or_silent_non_finite(report, target):
 
 
 @pytest.mark.slow
+@pytest.mark.xdist_group("fuzz_report")
 def test_every_target_was_exercised(report):
     """Each target was called and reached its code (returned or refused its own arguments) at least once,
     and the harness could build every argument it drew."""

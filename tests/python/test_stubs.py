@@ -26,24 +26,26 @@ def test_stub_matches_the_extension(tmp_path: pathlib.Path) -> None:
     )
 
 
-def test_mypy_strict_accepts_the_package() -> None:
-    env = dict(os.environ, MYPYPATH=str(ROOT / "python"))
-    result = subprocess.run(
-        [sys.executable, "-m", "mypy", "--config-file", str(ROOT / "pyproject.toml"),
-         "--cache-dir", os.devnull, "-p", "rigiddyn"],
-        capture_output=True, text=True, cwd=ROOT / "python", env=env,
-    )
-    assert result.returncode == 0, result.stdout + result.stderr
+@pytest.fixture(scope="module")
+def mypy_cache(tmp_path_factory: pytest.TempPathFactory) -> pathlib.Path:
+    """One mypy cache for the module's runs (same options): the second run reuses the first one's analysis of
+    numpy and the package (most of a run's time). Its tests share an xdist worker (tests/run_all.sh: --dist
+    loadgroup), so the cache is filled once."""
+    return tmp_path_factory.mktemp("mypy_cache")
 
 
-def _mypy(*files: pathlib.Path) -> subprocess.CompletedProcess[str]:
-    # --allow-redefinition: the README's example is one script that reuses names (run, start, exact) for values of
-    # other classes, as a reader's script does
+def _mypy(cache: pathlib.Path, *targets: str) -> subprocess.CompletedProcess[str]:
     return subprocess.run(
-        [sys.executable, "-m", "mypy", "--config-file", str(ROOT / "pyproject.toml"), "--cache-dir", os.devnull,
-         "--allow-redefinition", *map(str, files)],
+        [sys.executable, "-m", "mypy", "--config-file", str(ROOT / "pyproject.toml"), "--cache-dir", str(cache),
+         *targets],
         capture_output=True, text=True, cwd=ROOT / "python", env=dict(os.environ, MYPYPATH=str(ROOT / "python")),
     )
+
+
+@pytest.mark.xdist_group("mypy")
+def test_mypy_strict_accepts_the_package(mypy_cache: pathlib.Path) -> None:
+    result = _mypy(mypy_cache, "-p", "rigiddyn")
+    assert result.returncode == 0, result.stdout + result.stderr
 
 
 REJECTED = """\
@@ -58,12 +60,16 @@ rd.quat_rotate([0.0, 0.0, 0.0, 1.0], [1.0, 0.0, 0.0], scalar_first="no")  # line
 """
 
 
-def test_mypy_strict_accepts_the_readme_and_rejects_wrong_types(tmp_path: pathlib.Path) -> None:
+@pytest.mark.xdist_group("mypy")
+def test_mypy_strict_accepts_the_readme_and_rejects_wrong_types(tmp_path: pathlib.Path,
+                                                                mypy_cache: pathlib.Path) -> None:
     (example,) = re.findall(r"```python\n(.*?)```", (ROOT / "README.md").read_text(), flags=re.DOTALL)
     readme, rejected = tmp_path / "readme_example.py", tmp_path / "rejected.py"
-    readme.write_text(example)
+    # allow-redefinition (for this file only): the README's example is one script that reuses names (run, start,
+    # exact) for values of other classes, as a reader's script does
+    readme.write_text("# mypy: allow-redefinition\n" + example)
     rejected.write_text(REJECTED)
-    result = _mypy(readme, rejected)
+    result = _mypy(mypy_cache, str(readme), str(rejected))
     errors = re.findall(r"^(\S+?):(\d+): error", result.stdout, flags=re.MULTILINE)
     assert {(pathlib.Path(f).name, int(line)) for f, line in errors} == {
         ("rejected.py", 5), ("rejected.py", 6), ("rejected.py", 8)}, result.stdout + result.stderr
