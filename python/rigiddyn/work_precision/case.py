@@ -6,7 +6,7 @@ from __future__ import annotations
 import os
 from collections.abc import Callable, Mapping
 from pathlib import Path
-from typing import Any, Protocol
+from typing import Any, ClassVar, Protocol
 
 import numpy as np
 
@@ -20,8 +20,8 @@ from .states import Independent
 class Case(Protocol):
     """What the sweep asks of a case: its runs, states, error measures, references and defaults."""
 
-    default_measure: str
-    stability_subject: str  # "for this spin" / "for this scene", in the StabilityWarning
+    default_measure: ClassVar[str]
+    stability_subject: ClassVar[str]  # "for this spin" / "for this scene", in the StabilityWarning
 
     @property
     def name(self) -> str: ...
