@@ -443,6 +443,21 @@ def test_dop853_reference_agrees_with_closed_forms_within_its_error_estimate():
     assert true["max_state_error"] < 1e-10  # rtol 1e-13 over ~20 rad of tumbling
 
 
+def test_a_body_frame_force_costs_the_torque_free_methods_their_exactness():
+    """A torque-free body pushed by a force fixed in B: the exact free flow keeps the rotation exact, but the
+    kick of the turning force is a second-order step, so exact_flow_kick gets an observed order (not "exact
+    on this problem"), and the closed form 'exact', which the core refuses such a force, is no default."""
+    pushed = replace(short_t_handle(1.0), loads=(Load(np.array([1.0, 0, 0]), np.zeros(3), "body"),))
+    r = tradeoff(pushed, methods=["exact_flow_kick"], dts=[0.01, 0.005, 0.0025], measure="max_position_error",
+                 progress=False)
+    assert all(row["order_note"] != "exact on this problem" for row in r.rows)
+    # a second-order method in its asymptotic range: slope 2 + O(dt) (0.01 here), and the reference's error
+    # (REFERENCE_TARGET = 1 % of the smallest error) moves a slope by at most 2 log2(1.01) = 0.03
+    assert abs(r.rows[-1]["observed_order"] - 2) < 0.1, [row["observed_order"] for row in r.rows]
+    default = tradeoff(pushed, dts=[0.05], horizon=0.1, progress=False)
+    assert "exact" not in default.methods() and "exact_flow_kick" in default.methods()
+
+
 def test_order_notes_say_why_an_order_is_blank():
     r = tradeoff(short_t_handle(1.0), methods=["rk4", "exact"], dts=[4e-3, 2e-3], measure="max_state_error",
                  progress=False)

@@ -39,7 +39,7 @@ observed_order: slope of log(measure) against log(dt) between a run and the next
   with a neighbouring pair's (within ORDER_AGREEMENT, relative), and not both errors 1 or more (in rad
   or relative: nothing left to converge). Otherwise nan, with the reason in
   order_note; also nan for a method that is exact on the problem (order 0, or exact_torque_free
-  on a torque-free problem: its error is round-off at every dt).
+  on a torque-free problem whose forces are fixed in W: its error is round-off at every dt).
 
 estimate, effectivity, estimate_verdict: the run's own estimate of its error in the sweep's measure
   (`simulate(..., error=True)`'s `result.error`, global Richardson over runs at h, 2h and 4h; see

@@ -161,8 +161,9 @@ class ProblemCase:
         return []
 
     def default_methods(self, info: Mapping[str, Mapping[str, Any]]) -> list[str]:
-        """Every method that can run the problem: the exact flow (order 0) for a torque-free body only."""
-        return [name for name, m in info.items() if m["order"] != 0 or self.problem.torque_free]
+        """Every method that can run the problem: the exact flow (order 0) only where the problem has a
+        closed form (torque-free, forces fixed in W: the core refuses it a body-frame force)."""
+        return [name for name, m in info.items() if m["order"] != 0 or self.problem.has_exact_solution]
 
     def default_dts(self) -> list[float]:
         """Eight halvings from dt rho = 1, rho the rate of the spin (or from horizon / 16 if shorter)."""
@@ -171,8 +172,10 @@ class ProblemCase:
         return [dt0 / 2**j for j in range(8)]
 
     def exact_methods(self, info: Mapping[str, Mapping[str, Any]]) -> set[str]:
-        """The methods without truncation error here: order 0, or exact on a torque-free body."""
-        return {m for m, i in info.items() if i["order"] == 0 or (i["exact_torque_free"] and self.problem.torque_free)}
+        """The methods without truncation error here: order 0, or exact on a torque-free body whose forces
+        are fixed in W (a body-frame force turns with the body: its kick has a truncation error)."""
+        exact = self.problem.has_exact_solution
+        return {m for m, i in info.items() if i["order"] == 0 or (i["exact_torque_free"] and exact)}
 
     def simulate(self, method: str, dt: float, steps: int, record_every: int,
                  progress: Callable[[int], None] | None = None, error: bool = False) -> Any:

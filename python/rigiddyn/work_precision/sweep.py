@@ -156,7 +156,7 @@ def tradeoff(problem: Any, methods: Iterable[str] | None = None,
         errors are taken over the bodies.
     methods : iterable of str, optional
         Names from ``methods()``. Default: the file's ``[tradeoff]`` list, else every method that can run the
-        problem (``exact`` only for a torque-free body; every method on a scene).
+        problem (``exact`` only for a torque-free body whose forces are fixed in W; every method on a scene).
     dts : iterable of float, optional
         Steps [s]. Default: the file's, else eight halvings from dt·|ω| = 1 (a scene: from dt·ρ = 1, ρ the
         fastest spin or linear mode of its elements, ``rigiddyn.stability.scene_modes``, or from
