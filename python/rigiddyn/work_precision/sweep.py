@@ -36,6 +36,14 @@ class _Grid:
     runs: dict[str, Run]
     ref: Reference | None
 
+    def reference_at(self, case: Case, t: np.ndarray) -> Any:
+        """The reference states at the record times t: the Richardson reference's (recorded at them), else
+        the closed form's."""
+        if self.ref is not None:
+            return self.ref.states
+        assert case.exact is not None, "a grid without a Richardson reference has a closed form"
+        return case.exact.states(t)
+
 
 def _run_grid(case: Case, methods: Sequence[str], steps: int, samples: int, ref_method: str | None,
               info: Mapping[str, Mapping[str, Any]], exact: set[str], max_reference_steps: int, bar: Progress) -> _Grid:
@@ -80,9 +88,7 @@ def _row(case: Case, g: _Grid, method: str, info: Mapping[str, Any], measure: st
     if r.diverged:
         row.update({k: math.inf for k in MEASURES}, **NO_ESTIMATE, estimate_verdict="the run diverged")
     else:
-        exact = case.exact
-        ref_states = g.ref.states if g.ref is not None else exact.states(r.states.t) if exact is not None else None
-        row.update(case.measures(r.states, ref_states, r.quaternion_norm_error))
+        row.update(case.measures(r.states, g.reference_at(case, r.states.t), r.quaternion_norm_error))
         row.update(estimate_columns(case, method, g.dt, g.steps, g.every, measure, row[measure]))
     row.update({"observed_order": math.nan, "order_note": "", **reference, "diverged": r.diverged,
                 "stability": case.stability(method, g.dt, g.steps) or ""})
@@ -120,9 +126,10 @@ def sweep(case: Case, methods: list[str], grid: list[int], measure: str, toleran
         checks = check_references(case, refs, info, other, max_reference_steps, bar) if refs else {}
     finally:
         bar.close()
-    rows = [_row(case, g, method, info[method], measure, _reference_columns(case, checks.get(g.steps), ref_method,
-                                                                            measure))
-            for g in grids for method in methods]
+    rows = []
+    for g in grids:
+        reference = _reference_columns(case, checks.get(g.steps), ref_method, measure)
+        rows += [_row(case, g, method, info[method], measure, reference) for method in methods]
     unstable = [(r["method"], r["dt"], r["stability"]) for r in rows if r["stability"]]
     observed_orders([r for r in rows if not r["order_note"].startswith(REFUSED)], measure, exact)
     rows.sort(key=lambda r: (methods.index(r["method"]), -r["dt"]))
