@@ -374,7 +374,7 @@ from another run; the C++ benchmarks (`bench/`, each method next to a hand-writt
 
 Every method of `rigiddyn.methods()` on each case, against the exact torque-free solution (and the
 exact ballistic centre of mass where there is gravity), measured with `rigiddyn.tradeoff` (error definitions in
-`python/rigiddyn/work_precision.py`). Outcomes: **ok**; **warned**: dt is beyond the method's linear
+`rigiddyn.work_precision`). Outcomes: **ok**; **warned**: dt is beyond the method's linear
 stability limit for the spin at hand (`rigiddyn.StabilityWarning`, see
 `python/rigiddyn/stability.py`) but the run stayed finite; **diverged (warned)**: the state became
 non-finite, simulate stopped and warned (RuntimeWarning) and a StabilityWarning was also issued.

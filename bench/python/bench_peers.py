@@ -19,7 +19,8 @@ import time
 import numpy as np
 import rigiddyn
 from rigiddyn.problem import load_problem
-from rigiddyn.work_precision import _attitude_angle, reference_states
+from rigiddyn.scene_precision import attitude_angle
+from rigiddyn.work_precision import reference_states
 
 MUJOCO_INTEGRATORS = ("Euler", "RK4", "implicit", "implicitfast")
 
@@ -57,7 +58,7 @@ def errors(problem, t, q, w):
     g = np.linalg.norm(inertia @ problem.w_B)
     energy = 0.5 * np.sum(w * (w @ inertia.T), axis=1)
     e_ref = 0.5 * problem.w_B @ inertia @ problem.w_B
-    angle = _attitude_angle(ref.q_WB, q)
+    angle = attitude_angle(ref.q_WB, q)
     return {"final_attitude_error": angle[-1], "max_attitude_error": np.max(angle),
             "final_momentum_error": np.linalg.norm(inertia @ (w[-1] - ref.w_B[-1])) / g,
             "energy_drift": np.max(np.abs(energy - e_ref)) / e_ref}

@@ -27,7 +27,7 @@ ROOT = Path(__file__).resolve().parents[2]
 # and of bind_{bodies,dynamics,exact}, numpy_io, module, as `ninja -t deps` lists them), by whole layers
 # so that a new file in one of them counts. Only the frames layer and the other bindings stay out.
 SIMULATION_INPUTS = [
-    "python/rigiddyn/__init__.py", "python/rigiddyn/work_precision.py", "python/rigiddyn/stability.py",
+    "python/rigiddyn/__init__.py", "python/rigiddyn/work_precision/*.py", "python/rigiddyn/stability.py",
     "python/rigiddyn/problem.py", "python/rigiddyn/scene_precision.py",
     "cpp/include/rigiddyn/*.hpp",
     *(f"cpp/{kind}/{layer}/*" for kind in ("include/rigiddyn", "src")

@@ -29,7 +29,33 @@ _MEANINGS = {
 
 
 def measure_unit(measure: str) -> str:
-    """The unit of `measure` (a name from MEASURES): "rad", "m", "m/s" or "-" (dimensionless)."""
+    """The unit of one of tradeoff's error measures.
+
+    Parameters
+    ----------
+    measure : str
+        A name from ``MEASURES`` (``final_attitude_error``, ``max_position_error``, ``energy_drift``, ...).
+
+    Returns
+    -------
+    str
+        "rad", "m", "m/s" or "-" (dimensionless: a relative error).
+
+    Raises
+    ------
+    TypeError, ValueError
+        `measure` is not a name from ``MEASURES`` (the message lists them).
+
+    See Also
+    --------
+    tradeoff : reports each run's measures; its package's docstring defines them.
+
+    Examples
+    --------
+    >>> from rigiddyn.work_precision import measure_unit
+    >>> measure_unit("final_attitude_error"), measure_unit("max_velocity_error"), measure_unit("energy_drift")
+    ('rad', 'm/s', '-')
+    """
     _check_measure(measure)
     return _UNITS[measure.removeprefix("final_").removeprefix("max_")]
 

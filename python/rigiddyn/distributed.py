@@ -666,63 +666,65 @@ def tradeoff_grid(problem: Any, methods: Sequence[str] | None = None, dts: Seque
     measured on the workers (each worker thread runs one task at a time; the times reflect the load of
     the worker's machine, as a local sweep's do). Without dask.distributed: rigiddyn.tradeoff here after
     one RuntimeWarning."""
-    from . import _measures, work_precision as wp
-    from .scene_precision import SceneCase
+    from .work_precision import constants, sweep
+    from .work_precision.case import as_case
+    from .work_precision.checks import check_dts, step_grid
 
     _, retries, progress = _check_common(None, retries, progress)
     _check_client(client)
     arguments: dict[str, Any] = {"methods": methods, "tolerance": tolerance, "measure": measure, "cost": cost,
-                                 "samples": wp.SAMPLES if samples is None else samples,
+                                 "samples": constants.SAMPLES if samples is None else samples,
                                  "max_reference_steps": max_reference_steps}
     distributed = _distributed()
     if distributed is None:
         _fallback()
-        return wp.tradeoff(problem, dts=dts, horizon=horizon, initial=initial, progress=progress, **arguments)
-    case = wp._as_problem(problem, horizon, initial)
-    default_dts = case.default_dts() if isinstance(case, SceneCase) else wp._default_dts(case)
-    chosen = dts if dts is not None else case.tradeoff.get("dts", default_dts)
-    steps = wp._step_grid(case.horizon, wp._check_dts(chosen), "dts" if dts is not None else "horizon")
+        return sweep.tradeoff(problem, dts=dts, horizon=horizon, initial=initial, progress=progress, **arguments)
+    case = as_case(problem, horizon, initial)
+    chosen = dts if dts is not None else case.tradeoff.get("dts", case.default_dts())
+    steps = step_grid(case.horizon, check_dts(chosen), "dts" if dts is not None else "horizon")
     _check_tradeoff_arguments(arguments)
     point = _TradeoffPoint(case, steps, arguments)
     _check_picklable(case, "problem")
     with _client_for(client, distributed) as c:
         runner = _run_map(c, point, None, len(steps), 1, retries, progress, "tradeoff", "dt")
     parts = concatenate(runner.pieces())
-    return _joined_tradeoff(parts, isinstance(case, SceneCase))
+    return _joined_tradeoff(parts, case.stability_subject)
 
 
 def _check_tradeoff_arguments(arguments: dict[str, Any]) -> None:
     """rigiddyn.tradeoff's checks of its arguments, made here before any task (TypeError/ValueError naming one)."""
-    from . import _core
-    from . import _measures, work_precision as wp
+    from . import _core, _measures
+    from .work_precision.checks import check_cost, check_count, check_names, check_positive
 
     if arguments["methods"] is not None:
-        arguments["methods"] = wp._check_names(arguments["methods"], [m["name"] for m in _core.methods()])
+        arguments["methods"] = check_names(arguments["methods"], [m["name"] for m in _core.methods()])
     if arguments["measure"] is not None:
         _measures._check_measure(arguments["measure"])
     if arguments["tolerance"] is not None:
-        wp._check_positive(arguments["tolerance"], "tolerance")
-    wp._check_cost(arguments["cost"])
-    wp._check_count(arguments["samples"], "samples")
-    wp._check_count(arguments["max_reference_steps"], "max_reference_steps")
+        check_positive(arguments["tolerance"], "tolerance")
+    check_cost(arguments["cost"])
+    check_count(arguments["samples"], "samples")
+    check_count(arguments["max_reference_steps"], "max_reference_steps")
 
 
-def _joined_tradeoff(parts: list[Any], scene: bool) -> Any:
+def _joined_tradeoff(parts: list[Any], subject: str) -> Any:
     """One TradeoffResult from the one-step-size results `parts`: rows joined, observed orders over all
-    step sizes (as rigiddyn.tradeoff does), rows in its order, the stability summary warned once."""
-    from . import _measures, work_precision as wp
+    step sizes (as rigiddyn.tradeoff does), rows in its order, the stability summary ("dt beyond the
+    method's stability limit <subject>") warned once."""
     from .stability import StabilityWarning
+    from .work_precision.orders import observed_orders
+    from .work_precision.result import TradeoffResult
+    from .work_precision.sweep import stability_summary
 
     first = parts[0]
     rows = [row for part in parts for row in part.rows]
     exact = {r["method"] for r in rows if r["order_note"] == "exact on this problem"}
     applicable = [r for r in rows if not r["order_note"].startswith("not applicable")]
-    wp._observed_orders(applicable, first.measure, exact)
+    observed_orders(applicable, first.measure, exact)
     order = list(dict.fromkeys(r["method"] for r in first.rows))
     rows.sort(key=lambda r: (order.index(r["method"]), -r["dt"]))
     unstable = [(r["method"], r["dt"], r["stability"]) for r in rows if r["stability"]]
     if unstable:
-        subject = "for this scene" if scene else "for this spin"
-        warnings.warn(wp._stability_summary(unstable, subject), StabilityWarning, stacklevel=3)
-    return wp.TradeoffResult(first.problem, first.horizon, first.measure, first.tolerance, rows, first.cost,
+        warnings.warn(stability_summary(unstable, subject), StabilityWarning, stacklevel=3)
+    return TradeoffResult(first.problem, first.horizon, first.measure, first.tolerance, rows, first.cost,
                              notes=first.notes)

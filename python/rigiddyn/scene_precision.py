@@ -4,9 +4,10 @@
 rigiddyn.Scene with its initial states (initial=..., horizon=...), the (scene, initial states, run
 options) that rigiddyn.load_scene returns, or a scene TOML file or shipped scene name (a file whose
 `body` is an array of tables, [[body]], is a scene; [body] is a problem). This module holds the scene
-side of the sweep (SceneCase: compile, run, states, error measures, exact references); the sweep's loop
-(work_precision.scene_sweep), the rows, the report, the reference refinement and its check are
-work_precision's.
+side of the sweep (SceneCase: compile, run, states, error measures, exact references, stability); it is
+one of the two cases the sweep runs (rigiddyn.work_precision.case.Case; the other, a problem's, is
+work_precision.one_body.ProblemCase). The sweep's loop, the rows, the report, the reference refinement
+and its check are rigiddyn.work_precision's.
 
 Each method is compiled once (`scene.compile(method=...)`): a refusal (ValueError, e.g. `exact` on a
 scene with forces) becomes the method's rows with "not applicable: <reason>" in order_note and nan
@@ -18,7 +19,7 @@ one particle with a constant mass rate, one thrust and at most uniform gravity, 
 free particles in a frame turning at a constant rate, RotatingFrameFreeParticle): every row's
 `reference` is then "exact: <class>", the title says "the exact solution (<class>)" and a note names the
 case. Otherwise it is the highest-order method that compiles without a warning, refined by Richardson
-(work_precision._richardson_reference), and checked against the core's other method family at the
+(rigiddyn.work_precision.references), and checked against the core's other method family at the
 reference's finest step with its own Richardson estimate (no independent rate in Python: SciPy's
 DOP853 checks problems only).
 
@@ -49,13 +50,14 @@ import warnings
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from pathlib import Path
-from typing import Any, cast
+from typing import Any, ClassVar, cast
 
 import numpy as np
 
 from . import _core
 
-__all__ = ["BodyData", "SceneCase", "SceneStates", "is_scene_source", "scene_case", "scene_measures"]
+__all__ = ["BodyData", "SceneCase", "SceneStates", "attitude_angle", "is_scene_source", "scene_case",
+           "scene_measures"]
 
 _TINY = np.finfo(float).tiny
 
@@ -139,7 +141,8 @@ class SceneStates:
 @dataclass
 class SceneCase:
     """A scene swept by tradeoff: `scene` (rigiddyn.Scene), its `initial` states (one per body), the
-    `horizon` [s], its `name` and the sweep defaults `tradeoff` (methods, dts, tolerance, measure)."""
+    `horizon` [s], its `name` and the sweep defaults `tradeoff` (methods, dts, tolerance, measure).
+    The scene side of the sweep's case (its interface: rigiddyn.work_precision.case.Case)."""
 
     name: str
     scene: Any
@@ -149,6 +152,10 @@ class SceneCase:
     bodies: list[BodyData] = field(default_factory=list)
     _compiled: dict[str, Compiled] = field(default_factory=dict, repr=False)
     exact: ExactReference | None = field(default=None, repr=False)
+    _modes: list[tuple[str, float, float]] | None = field(default=None, repr=False)
+    # a scene's bodies may have no attitude (particles): its default measure takes every part of the state
+    default_measure: ClassVar[str] = "final_state_error"
+    stability_subject: ClassVar[str] = "for this scene"
 
     def __post_init__(self) -> None:
         if not self.bodies:
@@ -161,8 +168,54 @@ class SceneCase:
         """True when the scene is a case of a closed form (exact_reference)."""
         return self.exact is not None
 
+    @property
+    def exact_label(self) -> str:
+        """The rows' reference when the closed form is: "exact: <its rigiddyn class>"."""
+        return f"exact: {self.exact.name}" if self.exact is not None else "exact"
+
     def with_horizon(self, horizon: float) -> SceneCase:
         return replace(self, horizon=float(horizon))
+
+    def refusal(self, method: str) -> str:
+        """Why the scene's compile refuses `method` ("": it compiles)."""
+        compiled = self.compile(method)
+        return "" if compiled.model is not None else compiled.reason or "refused"
+
+    def compile_warnings(self, method: str) -> tuple[str, ...]:
+        """The compatibility warnings of the scene compiled for `method`, as text."""
+        return self.compile(method).warnings
+
+    def notes(self, methods: list[str]) -> list[str]:
+        """What the report says besides the rows: the closed form it is measured against, and the
+        compatibility warnings of `methods`."""
+        notes = [f"{m}: {text} (SceneCompatibilityWarning)" for m in methods for text in self.compile_warnings(m)]
+        if self.exact is not None:
+            notes.insert(0, f"reference: the exact solution rigiddyn.{self.exact.name} ({self.exact.case})")
+        return notes
+
+    def default_methods(self, info: Mapping[str, Mapping[str, Any]]) -> list[str]:
+        """Every method (one the scene refuses shows why in its rows)."""
+        return list(info)
+
+    def exact_methods(self, info: Mapping[str, Mapping[str, Any]]) -> set[str]:
+        """The methods without truncation error here: order 0, or exact on torque-free bodies when no
+        element acts and the frame is inertial."""
+        free = not list(self.scene.elements) and getattr(self.scene, "frame", None) is None
+        return {m for m, i in info.items() if i["order"] == 0 or (free and i["exact_torque_free"])}
+
+    def stability(self, method: str, dt: float, steps: int) -> str | None:
+        """Why dt is beyond the method's linear stability limit for a body's spin or a mode of the
+        elements (rigiddyn.stability.scene_stability_message; None if it is not)."""
+        from .stability import scene_modes, scene_stability_message
+
+        if self._modes is None:
+            self._modes = scene_modes(self.scene, self.initial)
+        return scene_stability_message(method, dt, steps, self.scene, self.initial, self._modes)
+
+    def independent(self, times: np.ndarray) -> None:
+        """No reference independent of the core (SciPy's DOP853 checks problems only): the sweep checks
+        against the core's other method family."""
+        return None
 
     def compile(self, method: str) -> Compiled:
         """The scene compiled for `method` (cached): a refusal's reason instead of a model, and the
@@ -205,8 +258,10 @@ class SceneCase:
         return np.asarray(np.max(np.abs(np.linalg.norm(q[:, rigid], axis=2) - 1.0), axis=1))
 
     def measures(self, run: SceneStates, ref: SceneStates, quaternion_norm_error: np.ndarray) -> dict[str, float]:
-        """The error measures of `run` against `ref` at the same times (module docstring)."""
-        return scene_measures(self.bodies, self.horizon, run, ref, quaternion_norm_error)
+        """The error measures of `run` against `ref` at the same times (module docstring); a run far beyond
+        its stability limit, of states of 1e154 and more whose squares overflow, gets inf errors."""
+        with np.errstate(over="ignore"):
+            return scene_measures(self.bodies, self.horizon, run, ref, quaternion_norm_error)
 
     def fastest_rate(self) -> float:
         """rho [1/s]: the fastest body spin |w_B| or linear mode of the elements (rigiddyn.stability.scene_modes,
@@ -255,22 +310,28 @@ def pendulum_rates(scene: Any) -> list[float]:
     return rates
 
 
-def _rescaled(q: np.ndarray) -> np.ndarray:
-    """Each quaternion (last axis) divided by its largest absolute component (a zero one left as it is)."""
+def _unit(q: np.ndarray) -> np.ndarray:
+    """Each quaternion (last axis) of any norm made unit: divided by its largest absolute component first
+    (a run blowing up may hold quaternions of 1e200, whose squares would overflow), then by its norm; a
+    zero or non-finite one becomes nan."""
     largest = np.max(np.abs(q), axis=-1, keepdims=True)
-    return q / np.where(largest > 0, largest, 1.0)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        scaled = q / largest
+        return np.asarray(scaled / np.linalg.norm(scaled, axis=-1, keepdims=True))
 
 
-def _attitude_angle(q_ref: np.ndarray, q: np.ndarray) -> np.ndarray:
-    """Geodesic angle 2 atan2(|vec(q_ref^-1 q)|, |scalar|) [rad] between quaternions (x, y, z, w) along the
-    last axis, shape (..., 4) -> (...), of any norm: the angle does not change when a quaternion is scaled,
-    so each is divided by its largest component first (a run blowing up may hold quaternions of 1e200,
-    whose squares would overflow). The attitude_error of a problem (rigiddyn.work_precision) and of a scene."""
-    q_ref, q = _rescaled(q_ref), _rescaled(q)
-    a_v, a_w, b_v, b_w = q_ref[..., :3], q_ref[..., 3:], q[..., :3], q[..., 3:]
-    vec = a_w * b_v - b_w * a_v - np.cross(a_v, b_v)
-    scalar = np.abs(a_w[..., 0] * b_w[..., 0] + np.sum(a_v * b_v, axis=-1))
-    return np.asarray(2.0 * np.arctan2(np.linalg.norm(vec, axis=-1), scalar))
+def attitude_angle(q_ref: np.ndarray, q: np.ndarray) -> np.ndarray:
+    """Geodesic angle [rad] between quaternions (x, y, z, w) along the last axis, shape (..., 4) -> (...),
+    of any norm (rigiddyn.angular_distance of the unit ones: the angle does not change when a quaternion is
+    scaled); nan where one is zero or not finite. The attitude_error of a problem and of a scene."""
+    a, b = np.broadcast_arrays(_unit(np.asarray(q_ref, float)), _unit(np.asarray(q, float)))
+    shape = a.shape[:-1]
+    a, b = a.reshape(-1, 4), b.reshape(-1, 4)
+    angle = np.full(a.shape[0], math.nan)
+    valid = np.all(np.isfinite(a), axis=1) & np.all(np.isfinite(b), axis=1)
+    if np.any(valid):
+        angle[valid] = _core.angular_distance(a[valid], b[valid])
+    return angle.reshape(shape)
 
 
 def scene_measures(bodies: Sequence[BodyData], horizon: float, run: SceneStates, ref: SceneStates,
@@ -286,7 +347,7 @@ def scene_measures(bodies: Sequence[BodyData], horizon: float, run: SceneStates,
     length = max(radius, moved, _TINY)
     speed = max(float(np.max(np.linalg.norm(ref.v_W, axis=2))), length / horizon)
     series = {
-        "attitude_error": np.max(_attitude_angle(ref.q_WB, run.q_WB), axis=1),
+        "attitude_error": np.max(attitude_angle(ref.q_WB, run.q_WB), axis=1),
         "momentum_error": np.max(np.linalg.norm(h - h_ref, axis=2) / h_scale, axis=1),
         "position_error": np.max(np.linalg.norm(run.p_W - ref.p_W, axis=2), axis=1),
         "velocity_error": np.max(np.linalg.norm(run.v_W - ref.v_W, axis=2), axis=1),
@@ -320,7 +381,7 @@ class ExactReference:
 
     name: str
     case: str
-    states: Callable[[np.ndarray], SceneStates]
+    states: Callable[[np.ndarray], Any]  # SceneStates (work_precision.states.States of a problem's)
 
 
 def _rotation_z(theta: np.ndarray) -> np.ndarray:

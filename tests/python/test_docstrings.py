@@ -1,8 +1,8 @@
 """The API reference a SciPy user reads: every public name's signature and docstring in numpydoc form, its
 examples run.
 
-Each public name (``rigiddyn.__all__``) and each public member of a public class is collected with its
-docstring. Three checks:
+Each public name (``rigiddyn.__all__``, and ``rigiddyn.work_precision.__all__`` beyond what rigiddyn
+re-exports) and each public member of a public class is collected with its docstring. Three checks:
 
 - ``inspect.signature`` works on every public callable (the compiled ones carry a runtime signature, and each
   class its constructor's), so ``help()``, IDEs and Sphinx show the parameters;
@@ -23,13 +23,24 @@ import numpy as np
 import pytest
 
 import rigiddyn as rd
+from rigiddyn import work_precision
 
 OPTIONS = doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE
 
+def _public_names() -> Iterator[tuple[str, object]]:
+    """rigiddyn's public names, then those of rigiddyn.work_precision that rigiddyn does not re-export (the
+    sweep's reference states, rankings and recommendation: documented under their package)."""
+    for name in sorted(rd.__all__):
+        yield name, getattr(rd, name)
+    for name in sorted(work_precision.__all__):
+        obj = getattr(work_precision, name)
+        if getattr(rd, name, None) is not obj:
+            yield f"work_precision.{name}", obj
+
+
 def public_objects() -> Iterator[tuple[str, object]]:
     """(qualified name, object) of every public name and every public member of a public class."""
-    for name in sorted(rd.__all__):
-        obj = getattr(rd, name)
+    for name, obj in _public_names():
         yield name, obj
         if inspect.isclass(obj):
             for member, value in sorted(vars(obj).items()):
@@ -82,7 +93,7 @@ MADE_BY_THE_CORE = {
     "ToleranceChoice": "simulate(..., tolerance=...): result.choice",
     "WeldedMesh": "weld_vertices",
 }
-CALLABLES = [(name, getattr(rd, name)) for name in sorted(rd.__all__) if callable(getattr(rd, name))]
+CALLABLES = [(name, obj) for name, obj in _public_names() if callable(obj)]
 
 
 @pytest.mark.parametrize(("name", "obj"), CALLABLES, ids=[name for name, _ in CALLABLES])

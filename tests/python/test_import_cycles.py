@@ -339,8 +339,22 @@ def test_the_graph_of_rigiddyn_is_read() -> None:
     files = {p.stem for p in PACKAGE.glob("*.py") if p.name != "__init__.py"}
     assert {f"rigiddyn.{stem}" for stem in files} | {"rigiddyn", "rigiddyn._core"} <= set(graph)
     assert "rigiddyn._core" in graph["rigiddyn"]  # __init__ re-exports the compiled core
-    assert "rigiddyn.scene_precision" in graph["rigiddyn.work_precision"]  # tradeoff sweeps scenes
+    assert "rigiddyn.scene_precision" in graph["rigiddyn.work_precision.case"]  # tradeoff sweeps scenes
     assert sum(len(targets) for targets in graph.values()) >= len(files)
+
+
+def test_the_work_precision_package_is_layered() -> None:
+    """rigiddyn.work_precision, a package of one concept per module: every module of it is in the graph,
+    none imports the package itself (its __init__ only re-exports them, so a module that read a name from
+    it would make a cycle) and the sweep is built on them, not they on it."""
+    graph, _ = import_graph(PACKAGE)
+    package = "rigiddyn.work_precision"
+    modules = {f"{package}.{p.stem}" for p in (PACKAGE / "work_precision").glob("*.py") if p.name != "__init__.py"}
+    assert modules and modules <= set(graph)
+    assert not [m for m in modules if package in graph[m]], "a module reads rigiddyn.work_precision's __init__"
+    assert f"{package}.sweep" in graph[package]  # __init__ re-exports tradeoff
+    below = {m for m in modules if m != f"{package}.sweep"}
+    assert not [m for m in below if f"{package}.sweep" in graph[m]], "a module imports the sweep it serves"
 
 
 def test_a_cycle_is_named_with_its_lines(tmp_path: Path) -> None:

@@ -1,4 +1,4 @@
-"""rigiddyn.tradeoff (in the module rigiddyn.work_precision): references, error measures, observed orders,
+"""rigiddyn.tradeoff (in the package rigiddyn.work_precision): references, error measures, observed orders,
 the recommendation, outputs, CLI."""
 
 import math
@@ -12,15 +12,10 @@ import pytest
 import rigiddyn
 from rigiddyn.__main__ import main
 from rigiddyn.problem import Load, load_problem
-from rigiddyn.work_precision import (
-    COLUMNS,
-    MEASURES,
-    TradeoffResult,
-    _richardson_reference,
-    _simulate,
-    reference_states,
-    tradeoff,
-)
+from rigiddyn.work_precision import COLUMNS, MEASURES, TradeoffResult, reference_states, tradeoff
+from rigiddyn.work_precision.one_body import ProblemCase
+from rigiddyn.work_precision.references import richardson_reference
+from rigiddyn.work_precision.runs import run
 
 METHODS = {m["name"]: m for m in rigiddyn.methods()}
 
@@ -78,17 +73,18 @@ def test_measures_of_the_reference_itself_are_zero():
 
 def test_richardson_reference_agrees_with_the_exact_solution():
     p = short_t_handle(1.0)
+    case = ProblemCase(p)
     steps, every = 50, 5
-    runs = [_simulate(p, "rk4", p.horizon / steps, steps, every, timed=False)]
-    reference = _richardson_reference(p, "rkmk4", 4, p.horizon / steps, steps, every, runs, 10**6)
+    runs = [run(case, "rk4", p.horizon / steps, steps, every, timed=False)]
+    reference = richardson_reference(case, "rkmk4", 4, p.horizon / steps, steps, every, runs, 10**6)
     ref, estimate = reference.states, reference.estimate
     exact = reference_states(p, ref.t)
-    from rigiddyn.work_precision import REFERENCE_TARGET, _measures
+    from rigiddyn.work_precision import REFERENCE_TARGET
 
-    true_error = _measures(p, ref, exact, np.zeros(1))["max_state_error"]
+    true_error = case.measures(ref, exact, np.zeros(1))["max_state_error"]
     # refined until its estimate is below REFERENCE_TARGET x the rk4 run's error (or round-off, 1e-14);
     # the estimate is right to O(dt) relative (x3 covers it), plus round-off
-    run_error = _measures(p, runs[0].states, exact, np.zeros(1))["max_state_error"]
+    run_error = case.measures(runs[0].states, exact, np.zeros(1))["max_state_error"]
     assert estimate["max_state_error"] <= max(REFERENCE_TARGET * run_error, 1e-14)
     assert true_error < 3 * estimate["max_state_error"] + 1e-14
 
@@ -397,29 +393,29 @@ def test_every_method_keeps_its_order_with_a_torque_switching_inside_steps(switc
 
 
 def late_switching_reference(module):
-    """_richardson_reference with the loads switched on 0.05 s late: consistent with itself (a tiny
-    Richardson estimate), wrong by ~1e-3 rad, as a zero-order hold on a grid that misses t_start is."""
-    real = module._richardson_reference
+    """The sweep's richardson_reference with the loads switched on 0.05 s late: consistent with itself (a
+    tiny Richardson estimate), wrong by ~1e-3 rad, as a zero-order hold on a grid that misses t_start is."""
+    real = module.richardson_reference
 
-    def late(problem, *args, **kwargs):
-        shifted = tuple(replace(load, t_start=load.t_start + 0.05) for load in problem.loads)
-        return real(replace(problem, loads=shifted), *args, **kwargs)
+    def late(case, *args, **kwargs):
+        shifted = tuple(replace(load, t_start=load.t_start + 0.05) for load in case.problem.loads)
+        return real(replace(case, problem=replace(case.problem, loads=shifted)), *args, **kwargs)
 
     return late
 
 
 @pytest.mark.parametrize("checker", ["dop853", "other family"])
 def test_reference_check_catches_a_broken_reference(monkeypatch, checker):
-    module = sys.modules["rigiddyn.work_precision"]
+    module = sys.modules["rigiddyn.work_precision.sweep"]
     problem, dts = load_problem(SWITCHING), switching_dts(range(0, 3))
     if checker == "other family":  # no SciPy (or a horizon too long for DOP853)
-        monkeypatch.setattr(module, "_dop853_reference", lambda *args: None)
+        monkeypatch.setattr(ProblemCase, "independent", lambda self, times: None)
     good = tradeoff(problem, methods=["rkmk4"], dts=dts, measure="max_state_error", tolerance=1e-6, progress=False)
     name = "dop853" if checker == "dop853" else "splitting_dlm_yoshida4"
     assert all(row["reference"] == "richardson(rkmk4)" and row["reference_check"].startswith(name)
                for row in good.rows), [row["reference_check"] for row in good.rows]
     assert good.recommendation.met
-    monkeypatch.setattr(module, "_richardson_reference", late_switching_reference(module))
+    monkeypatch.setattr(module, "richardson_reference", late_switching_reference(module))
     broken = tradeoff(problem, methods=["rkmk4"], dts=dts, measure="max_state_error", tolerance=1e-6, progress=False)
     for g, b in zip(good.rows, broken.rows):
         assert b["reference"] == "unreliable: richardson(rkmk4)" and "differs by" in b["reference_check"]
@@ -437,14 +433,29 @@ def test_dop853_reference_agrees_with_closed_forms_within_its_error_estimate():
     force from 0.3 s to 0.7 s (DOP853 restarted at both switch times). Its error estimate is the
     difference from a run at 10x rtol, whose error is ~10x larger (DOP853's error is proportional to
     its tolerance), so it bounds the error of the run at rtol."""
-    module = sys.modules["rigiddyn.work_precision"]
     p = replace(short_t_handle(2.0), loads=(Load(np.array([0.3, -0.1, 0.2]), np.zeros(3), "world", 0.3, 0.7),))
+    case = ProblemCase(p)
     times = np.linspace(0.0, p.horizon, 401)
-    independent = module._dop853_reference(p, times)(times)
-    true = module._measures(p, independent.states, reference_states(p, times), np.zeros(1))
+    independent = case.independent(times)(times)
+    true = case.measures(independent.states, reference_states(p, times), np.zeros(1))
     for k in ("max_attitude_error", "max_momentum_error", "max_position_error", "max_velocity_error"):
         assert true[k] <= independent.error[k] + 1e-15, (k, true[k], independent.error[k])
     assert true["max_state_error"] < 1e-10  # rtol 1e-13 over ~20 rad of tumbling
+
+
+def test_a_body_frame_force_costs_the_torque_free_methods_their_exactness():
+    """A torque-free body pushed by a force fixed in B: the exact free flow keeps the rotation exact, but the
+    kick of the turning force is a second-order step, so exact_flow_kick gets an observed order (not "exact
+    on this problem"), and the closed form 'exact', which the core refuses such a force, is no default."""
+    pushed = replace(short_t_handle(1.0), loads=(Load(np.array([1.0, 0, 0]), np.zeros(3), "body"),))
+    r = tradeoff(pushed, methods=["exact_flow_kick"], dts=[0.01, 0.005, 0.0025], measure="max_position_error",
+                 progress=False)
+    assert all(row["order_note"] != "exact on this problem" for row in r.rows)
+    # a second-order method in its asymptotic range: slope 2 + O(dt) (0.01 here), and the reference's error
+    # (REFERENCE_TARGET = 1 % of the smallest error) moves a slope by at most 2 log2(1.01) = 0.03
+    assert abs(r.rows[-1]["observed_order"] - 2) < 0.1, [row["observed_order"] for row in r.rows]
+    default = tradeoff(pushed, dts=[0.05], horizon=0.1, progress=False)
+    assert "exact" not in default.methods() and "exact_flow_kick" in default.methods()
 
 
 def test_order_notes_say_why_an_order_is_blank():

@@ -346,7 +346,7 @@ def test_a_bad_out_fails_before_the_sweep(tmp_path, monkeypatch, capsys, make):
 
 def test_every_pair_of_tags_is_explained():
     """Each short note of the table has its explanation (the legend is built from the same table)."""
-    from rigiddyn.work_precision import _TAGS, _tags
+    from rigiddyn.work_precision.table import TAGS as _TAGS, tags as _tags
 
     for diverged, unstable, rec, front in itertools.product((False, True), repeat=4):
         r = row("rk4", 0.1, diverged=diverged, stability="x" if unstable else "", order_note="not asymptotic: 1")
@@ -356,7 +356,7 @@ def test_every_pair_of_tags_is_explained():
 def test_no_observed_order_where_both_errors_are_of_order_one():
     """An attitude error of 1 rad or more (at most pi) says the run has lost all accuracy: the slope
     between two such runs is no order of convergence (the T-handle's explicit Euler showed 'order 0.01')."""
-    from rigiddyn.work_precision import _observed_orders
+    from rigiddyn.work_precision.orders import observed_orders as _observed_orders
 
     errors = [3.12, 3.08, 1.48, 0.724, 0.359, 0.18]
     rows = [row("explicit_euler", 0.04 / 2**k, max_attitude_error=e, reference_error=0.0)
@@ -409,7 +409,7 @@ frame = "body"
 def test_the_independent_reference_covers_a_record_an_ulp_past_the_horizon(tmp_path):
     """10 s in 147 steps: the last record is at 147 x (10 / 147) = 10.000000000000002 s. DOP853 stopped at
     10 s left that row unset (np.empty: garbage, and numpy's divide, overflow and invalid warnings)."""
-    from rigiddyn.work_precision import _dop853_states
+    from rigiddyn.work_precision.dop853 import dop853_states as _dop853_states
 
     (tmp_path / "torque.toml").write_text(TORQUE)
     problem = load_problem(tmp_path / "torque.toml")
@@ -437,13 +437,14 @@ def test_tradeoff_on_a_torque_leaks_no_warning(tmp_path):
 
 def test_a_run_far_beyond_its_limit_measures_inf_without_a_warning():
     """States of 1e200, still finite, from a run blowing up: their squares overflow, the errors are inf."""
-    from rigiddyn.work_precision import States, _measures, reference_states
+    from rigiddyn.work_precision import States, reference_states
+    from rigiddyn.work_precision.one_body import ProblemCase
 
     problem = load_problem("t_handle")
     t = np.array([0.0, 1.0])
     ref = reference_states(problem, t)
     huge = States(t, ref.p_W, ref.q_WB * 1e200, np.full((2, 3), 1e200), np.full((2, 3), 1e200))
-    measures = _measures(problem, huge, ref, np.zeros(2))  # warnings are errors in this suite
+    measures = ProblemCase(problem).measures(huge, ref, np.zeros(2))  # warnings are errors in this suite
     assert measures["energy_drift"] == math.inf and measures["final_momentum_error"] == math.inf
     # q and 1e200 q are the same attitude: angle 0, computed from products rounded at a few eps
     assert measures["final_attitude_error"] < 1e-14
@@ -498,10 +499,11 @@ def test_the_plot_draws_the_estimates():
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+    from rigiddyn.work_precision.plot import _plot_axis
 
     result = rigiddyn.tradeoff("t_handle", methods=["rk4"], dts=[0.01, 0.005], horizon=1.0, progress=False)
     fig, ax = plt.subplots()
-    result._plot_axis(ax, "total_evaluations", result.measure)
+    _plot_axis(result, ax, "total_evaluations", result.measure)
     labels = ax.get_legend_handles_labels()[1]
     assert "estimate (result.error), reliable" in labels and "estimate, not reliable" in labels
     # a bar per run from the true error to the estimate, at the run's cost

@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 import rigiddyn
 from rigiddyn.__main__ import main
-from rigiddyn.scene_precision import BodyData, SceneStates, is_scene_source, scene_measures
+from rigiddyn.scene_precision import BodyData, SceneStates, attitude_angle, is_scene_source, scene_measures
 from rigiddyn.stability import StabilityWarning, oscillator_growth, scene_modes, scene_stability_message
 from rigiddyn.work_precision import MEASURES, REFERENCE_TARGET, TradeoffResult, tradeoff
 
@@ -206,3 +206,19 @@ def test_default_steps_start_at_dt_times_the_fastest_rate_one():
     assert case.default_dts() == pytest.approx([1.0 / OMEGA / 2**j for j in range(8)], rel=1e-15)
     short = scene_case(scene, initial, 1.0)  # horizon / 16 shorter than 1 / omega
     assert short.default_dts()[0] == pytest.approx(1.0 / 16, rel=1e-15)
+
+
+def test_attitude_angle_is_the_geodesic_angle_of_quaternions_of_any_norm():
+    """The attitude error of a run compares quaternions of any norm (an unnormalising method's drift, a
+    blow-up's 1e200) and either sign: the angle of the unit ones, SciPy's (r_a.inv() * r_b).magnitude();
+    a zero quaternion has no attitude (nan)."""
+    from scipy.spatial.transform import Rotation
+
+    rng = np.random.default_rng(3)
+    q_a, q_b = rng.normal(size=(20, 4)), rng.normal(size=(20, 4))
+    scale = np.geomspace(1e-3, 1e200, 20)[:, None]
+    angle = attitude_angle(q_a * scale, -0.5 * q_b)
+    expected = (Rotation.from_quat(q_a).inv() * Rotation.from_quat(q_b)).magnitude()
+    # both 2 atan2(|d_xyz|, |d_w|) of unit quaternions, each rounded a few times: a few ulps of pi
+    np.testing.assert_allclose(angle, expected, rtol=0, atol=1e-14)
+    assert angle.shape == (20,) and np.isnan(attitude_angle(np.zeros(4), q_b[0]))
