@@ -24,6 +24,7 @@
 #include "scene_run.hpp"
 #include "rigiddyn/batch/parallel_for.hpp"
 #include "rigiddyn/batch/simd_rigid_body.hpp"
+#include "rigiddyn/vector_instructions.hpp"
 #include "rigiddyn/batch/simulate_batch.hpp"
 #include "rigiddyn/scene/compile.hpp"
 #include "rigiddyn/scene/scene_order.hpp"
@@ -1214,6 +1215,34 @@ simulate_batch
 Examples
 --------
 >>> rd.default_thread_count() >= 1
+True
+)doc");
+  m.def("vector_instructions", [] { return std::string(vector_instructions_name(vector_instructions())); },
+        R"doc(The vector instructions this process's hot kernels run on: 'avx2_fma' or 'portable'.
+
+The N-body pair sum of MutualGravity runs four pairs per instruction with AVX2 and fused multiply-adds where the
+CPU has them ('avx2_fma'), and two per instruction otherwise ('portable', the x86-64 baseline the library is built
+for). The two agree to round-off (per body and component within (n + 8) 2**-53 times the sum of the pair forces'
+magnitudes, n the body count); only 'portable' gives the same bits on every machine. The choice is made once per
+process: set the environment variable RIGIDDYN_PORTABLE=1 before the first run to force 'portable'. The SIMD
+batch lanes (simulate_batch(..., simd=True)) choose their own instructions when the library is loaded.
+
+Parameters
+----------
+None
+
+Returns
+-------
+str
+    'avx2_fma' or 'portable'.
+
+See Also
+--------
+MutualGravity, simulate_batch
+
+Examples
+--------
+>>> rd.vector_instructions() in ("avx2_fma", "portable")
 True
 )doc");
 }

@@ -13,6 +13,7 @@
 #include "rigiddyn/scene/element_fields.hpp"
 #include "rigiddyn/scene/element_traits.hpp"
 #include "rigiddyn/scene/elements/element_checks.hpp"
+#include "rigiddyn/scene/elements/pair_forces.hpp"
 
 #include <Eigen/Core>
 
@@ -79,30 +80,17 @@ class MutualGravityTerm {
 
   // f_W += the pair forces on every listed body; returns Σ f_W·v_W [W].
   // Layout for speed: the positions are gathered into per-thread columns (x, y, z), so that the inner
-  // loop over j > i is whole-array arithmetic that Eigen vectorises (sqrt and division included); the
-  // element's forces collect in columns (f_x, f_y, f_z) and are added to `wrenches` once per body, with the
-  // power Σ f·v. The scratch grows with the largest body count seen and is never freed: no allocation
-  // per evaluation, and two threads evaluating one model do not share it.
+  // loop over j > i is whole-array arithmetic on vector instructions (pair_forces.hpp: SSE2, or AVX2 with FMA
+  // where the CPU has them); the element's forces collect in columns (f_x, f_y, f_z) and are added to `wrenches`
+  // once per body, with the power Σ f·v. The scratch grows with the largest body count seen and is never freed:
+  // no allocation per evaluation, and two threads evaluating one model do not share it.
   double add_wrenches(double /*t*/, const std::vector<BodyKinematics>& kinematics, std::vector<BodyWrench>& wrenches) const {
     const Eigen::Index n = static_cast<Eigen::Index>(bodies_.size());
-    Eigen::ArrayXXd& columns = scratch(n);  // (n x 8): x, y, z, f_x, f_y, f_z, g, m
-    auto x = columns.col(0), y = columns.col(1), z = columns.col(2);
-    auto f_x = columns.col(3), f_y = columns.col(4), f_z = columns.col(5), g = columns.col(6), mass = columns.col(7);
+    Eigen::ArrayXXd& columns = scratch(n);  // (n x 8): x, y, z, f_x, f_y, f_z, scratch, m
+    auto f_x = columns.col(3), f_y = columns.col(4), f_z = columns.col(5);
     gather(kinematics, columns);
     columns.block(0, 3, n, 3).setZero();  // only this scene's n rows (the scratch may be longer)
-    for (Eigen::Index i = 0; i + 1 < n; ++i) {
-      // the pairs (i, j > i): d = p_j − p_i, g = G m_i m_j/(|d|² + ε²)^{3/2}, f on i = g d = −f on j
-      const Eigen::Index j = i + 1, count = n - j;
-      const auto dx = x.segment(j, count) - x(i);
-      const auto dy = y.segment(j, count) - y(i);
-      const auto dz = z.segment(j, count) - z(i);
-      auto g_j = g.segment(j, count);
-      g_j = dx.square() + dy.square() + dz.square() + softening2_;                  // |d|² + ε²
-      g_j = (G_ * mass(i)) * mass.segment(j, count) / (g_j * g_j.sqrt());
-      f_x(i) += (g_j * dx).sum(), f_x.segment(j, count) -= g_j * dx;
-      f_y(i) += (g_j * dy).sum(), f_y.segment(j, count) -= g_j * dy;
-      f_z(i) += (g_j * dz).sum(), f_z.segment(j, count) -= g_j * dz;
-    }
+    detail::add_pair_forces(columns, n, G_, softening2_);
     double power = 0.0;
     for (Eigen::Index i = 0; i < n; ++i) {
       const Eigen::Vector3d f(f_x(i), f_y(i), f_z(i));

@@ -1,0 +1,123 @@
+// The N-body pair sum (scene/elements/pair_forces.hpp) on both of its paths, against a long-double sum of the same
+// pairs: each within its stated bound (n + 8) u Σ_j |f_ij| per body and component (u = 2⁻⁵³), so the portable and
+// AVX2 + FMA paths agree to twice that; Newton's third law pair by pair on each path; and the dispatch takes the
+// path vector_instructions() names.
+#include <gtest/gtest.h>
+
+#include "rigiddyn/scene/elements/pair_forces.hpp"
+#include "rigiddyn/vector_instructions.hpp"
+
+#include <Eigen/Core>
+
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <random>
+#include <vector>
+
+namespace rigiddyn {
+namespace {
+
+constexpr double kU = 0x1p-53;  // unit round-off of double
+
+// n bodies at normal positions with masses in [0.1, 10] kg (rows 0..n-1 of an array with `extra` rows more,
+// which the sum must not touch)
+Eigen::ArrayXXd cluster(Eigen::Index n, Eigen::Index extra, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> normal;
+  std::uniform_real_distribution<double> mass(0.1, 10.0);
+  Eigen::ArrayXXd columns = Eigen::ArrayXXd::Constant(n + extra, 8, 7.0);  // 7: a value no sum produces
+  for (Eigen::Index i = 0; i < n; ++i) {
+    columns(i, 0) = normal(rng), columns(i, 1) = normal(rng), columns(i, 2) = normal(rng), columns(i, 7) = mass(rng);
+    columns(i, 3) = columns(i, 4) = columns(i, 5) = 0.0;
+  }
+  return columns;
+}
+
+// The pair forces summed in long double (64-bit significand: its own error is 2¹¹ times smaller than the bound),
+// and Σ_j |f_ij| per body and component
+struct Reference {
+  std::vector<long double> f;    // (n x 3)
+  std::vector<double> magnitude;  // (n x 3)
+};
+Reference reference(const Eigen::ArrayXXd& c, Eigen::Index n, double G, double softening2) {
+  Reference r{std::vector<long double>(3 * n, 0.0L), std::vector<double>(3 * n, 0.0)};
+  for (Eigen::Index i = 0; i < n; ++i) {
+    for (Eigen::Index j = 0; j < n; ++j) {
+      if (j == i) continue;
+      const long double d[3] = {static_cast<long double>(c(j, 0)) - c(i, 0), static_cast<long double>(c(j, 1)) - c(i, 1),
+                                static_cast<long double>(c(j, 2)) - c(i, 2)};
+      const long double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2] + softening2;
+      const long double g = static_cast<long double>(G) * c(i, 7) * c(j, 7) / (r2 * std::sqrt(r2));
+      for (int a = 0; a < 3; ++a) {
+        r.f[3 * i + a] += g * d[a];
+        r.magnitude[3 * i + a] += static_cast<double>(std::fabs(g * d[a]));
+      }
+    }
+  }
+  return r;
+}
+
+using Path = void (*)(Eigen::ArrayXXd&, Eigen::Index, double, double);
+
+void expect_within_bound(Path path, Eigen::Index n, double softening2, unsigned seed) {
+  const double G = 0.7;
+  Eigen::ArrayXXd c = cluster(n, 3, seed);
+  const Reference r = reference(c, n, G, softening2);
+  path(c, n, G, softening2);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    for (int a = 0; a < 3; ++a) {
+      const double bound = static_cast<double>(n + 8) * kU * r.magnitude[3 * i + a];  // pair_forces.hpp
+      EXPECT_LE(std::fabs(static_cast<double>(c(i, 3 + a) - r.f[3 * i + a])), bound)
+          << "n = " << n << ", body " << i << ", component " << a;
+    }
+  }
+  for (Eigen::Index i = n; i < n + 3; ++i) {
+    for (int k = 0; k < 8; ++k) EXPECT_EQ(c(i, k), 7.0) << "row " << i << " beyond n was written";
+  }
+}
+
+const Eigen::Index kCounts[] = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 16, 33, 100};
+
+TEST(PairForces, PortablePathWithinItsBound) {
+  for (const Eigen::Index n : kCounts) {
+    for (const double softening2 : {0.0, 1e-2}) expect_within_bound(&detail::add_pair_forces_portable, n, softening2, 11u * n + 1);
+  }
+}
+
+TEST(PairForces, Avx2FmaPathWithinItsBound) {
+  if (!cpu_has_avx2_fma()) GTEST_SKIP() << "this CPU (or build) has no AVX2 + FMA";
+  for (const Eigen::Index n : kCounts) {
+    for (const double softening2 : {0.0, 1e-2}) expect_within_bound(&detail::add_pair_forces_avx2_fma, n, softening2, 11u * n + 1);
+  }
+}
+
+// f_i and f_j of one pair are the same rounded g d, added and subtracted: two bodies' forces are exact negatives
+TEST(PairForces, ThirdLawPairByPairOnEachPath) {
+  std::vector<Path> paths{&detail::add_pair_forces_portable};
+  if (cpu_has_avx2_fma()) paths.push_back(&detail::add_pair_forces_avx2_fma);
+  for (const Path path : paths) {
+    Eigen::ArrayXXd c = cluster(2, 0, 5);
+    path(c, 2, 1.3, 0.0);
+    for (int a = 0; a < 3; ++a) EXPECT_EQ(c(0, 3 + a), -c(1, 3 + a));
+  }
+}
+
+TEST(PairForces, DispatchTakesThePathOfVectorInstructions) {
+  const Path expected = vector_instructions() == VectorInstructions::avx2_fma ? &detail::add_pair_forces_avx2_fma
+                                                                               : &detail::add_pair_forces_portable;
+  Eigen::ArrayXXd a = cluster(37, 0, 3), b = a;
+  detail::add_pair_forces(a, 37, 1.0, 0.0);
+  expected(b, 37, 1.0, 0.0);
+  EXPECT_EQ(std::memcmp(a.data(), b.data(), sizeof(double) * a.size()), 0);
+  const char* portable = std::getenv("RIGIDDYN_PORTABLE");
+  if (portable != nullptr && std::strcmp(portable, "1") == 0) {
+    EXPECT_EQ(vector_instructions(), VectorInstructions::portable);
+  }
+  if (!cpu_has_avx2_fma()) {
+    EXPECT_EQ(vector_instructions(), VectorInstructions::portable);
+  }
+}
+
+}  // namespace
+}  // namespace rigiddyn
