@@ -63,8 +63,9 @@ degrees by ``degrees = true``. Every key the format knows, in one commented file
 Every error in a file is a ValueError "<field>: expected ..., got ..." naming the field by its path
 (``initial.euler.seq``, ``loads[0].frame``), a value of the wrong TOML type included; a key the
 format does not know is one too, with the closest known key ("did you mean ...?") or the table it
-belongs in. Problem and Load built directly check their fields the same way, with TypeError for a
-value of the wrong type.
+belongs in. A Problem built directly checks its fields the same way, with TypeError for a value of
+the wrong type. Its loads are the core's ``rigiddyn.AppliedLoad`` objects: a ``[[loads]]`` table reads
+into one, as a scene file's ``[[force.loads]]`` table does.
 """
 
 from __future__ import annotations
@@ -95,7 +96,7 @@ if sys.version_info >= (3, 11):
 else:  # pragma: no cover - exercised on Python 3.9/3.10 only
     import tomli as tomllib
 
-__all__ = ["PRIMITIVES", "Load", "Problem", "example_path", "example_problems", "load_problem", "parse_problem"]
+__all__ = ["PRIMITIVES", "Problem", "example_path", "example_problems", "load_problem", "parse_problem"]
 
 _ORIENTATIONS = ("q_WB", "euler", "rotvec", "axis_angle")  # the forms of the initial attitude
 # table -> its keys; a key unknown to its table is looked up in the others ("belongs in [initial]")
@@ -226,38 +227,6 @@ def _where(name: str, kind: str) -> str:
 
 
 @dataclass(frozen=True)
-class Load:
-    """A constant load active for t_start <= t < t_end [s]: force (3,) [N] through the centre of
-    mass and couple torque (3,) [N m], both expressed in `frame` ('world' or 'body')."""
-
-    force: np.ndarray
-    torque: np.ndarray
-    frame: str = "world"
-    t_start: float = -math.inf
-    t_end: float = math.inf
-
-    def __post_init__(self) -> None:
-        """Checks every field (TypeError/ValueError naming it); stores the vectors as float64 (3,)."""
-        object.__setattr__(self, "force", _array(self.force, "force", (3,)))
-        object.__setattr__(self, "torque", _array(self.torque, "torque", (3,)))
-        if _string(self.frame, "frame") not in ("world", "body"):
-            raise _fail("frame", "'world' or 'body'", self.frame)
-        for key in ("t_start", "t_end"):
-            value = getattr(self, key)
-            if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)):
-                raise _type_fail(key, "a time [s] (+-inf allowed)", value)
-            if math.isnan(value):
-                raise _fail(key, "a time [s] (+-inf allowed)", value)
-            object.__setattr__(self, key, float(value))
-        if not self.t_start < self.t_end:
-            raise _fail("t_end", f"a time > t_start = {self.t_start}", self.t_end)
-
-    def applied_load(self) -> _core.AppliedLoad:
-        """This load as the core's AppliedLoad (for rigiddyn.simulate)."""
-        return _core.AppliedLoad(self.force, self.torque, cast(Any, self.frame), self.t_start, self.t_end)  # checked
-
-
-@dataclass(frozen=True)
 class Problem:
     """One rigid body with its initial state, loads, gravity and horizon: what a problem file declares.
 
@@ -280,8 +249,8 @@ class Problem:
         Initial attitude, unit quaternion (x, y, z, w).
     w_B : array_like, shape (3,), default zeros
         Initial angular velocity [rad/s] in B.
-    loads : tuple of Load, default ()
-        Applied forces and torques with their time windows.
+    loads : sequence of AppliedLoad, default ()
+        Applied forces [N] and torques [N m] with their frames and time windows (stored as a tuple).
     gravity : array_like, shape (3,), default zeros
         Uniform gravity g [m/s²] in W.
     inertia_check : InertiaCheck, default InertiaCheck.physical
@@ -318,7 +287,7 @@ class Problem:
     q_WB: np.ndarray = field(default_factory=lambda: np.array([0.0, 0.0, 0.0, 1.0]))
     v_W: np.ndarray = field(default_factory=lambda: np.zeros(3))
     w_B: np.ndarray = field(default_factory=lambda: np.zeros(3))
-    loads: tuple[Load, ...] = ()
+    loads: tuple[_core.AppliedLoad, ...] = ()
     gravity: np.ndarray = field(default_factory=lambda: np.zeros(3))
     inertia_check: _core.InertiaCheck = _core.InertiaCheck.physical
     description: str = ""
@@ -327,7 +296,7 @@ class Problem:
 
     def __post_init__(self) -> None:
         """Checks every field as a problem file's are checked (TypeError/ValueError naming it: finite,
-        mass and horizon > 0, a valid inertia, a unit quaternion to 1e-3, loads of type Load);
+        mass and horizon > 0, a valid inertia, a unit quaternion to 1e-3, loads of type AppliedLoad);
         stores the vectors as float64 arrays and q_WB normalised."""
         def setf(key: str, value: Any) -> None:  # a frozen dataclass sets its fields this way
             object.__setattr__(self, key, value)
@@ -347,10 +316,10 @@ class Problem:
             setf(key, _array(getattr(self, key), key, (3,)))
         setf("q_WB", _unit_quaternion(_array(self.q_WB, "q_WB", (4,)), "q_WB"))
         if isinstance(self.loads, (str, bytes)) or not isinstance(self.loads, (tuple, list)):
-            raise _type_fail("loads", "a sequence of Load", self.loads)
+            raise _type_fail("loads", "a sequence of AppliedLoad", self.loads)
         for i, load in enumerate(self.loads):
-            if not isinstance(load, Load):
-                raise _type_fail(f"loads[{i}]", "a Load", load)
+            if not isinstance(load, _core.AppliedLoad):
+                raise _type_fail(f"loads[{i}]", "an AppliedLoad", load)
         setf("loads", tuple(self.loads))
         if not isinstance(self.inertia_check, _core.InertiaCheck):
             raise _type_fail("inertia_check", "InertiaCheck.physical or InertiaCheck.allow_unrealizable",
@@ -370,10 +339,6 @@ class Problem:
     def initial_state(self) -> _core.RigidBodyState:
         """The RigidBodyState at t = 0 (p_W [m], q_WB, v_W [m/s] in W, w_B [rad/s] in B)."""
         return _core.RigidBodyState(self.p_W, self.q_WB, self.v_W, self.w_B)
-
-    def applied_loads(self) -> list[_core.AppliedLoad]:
-        """The loads as the core's AppliedLoad objects (for rigiddyn.simulate)."""
-        return [load.applied_load() for load in self.loads]
 
     @property
     def torque_free(self) -> bool:
@@ -406,7 +371,7 @@ class Problem:
         warn_if_unstable(method, dt, steps, self.inertia_com, self.w_B, self.torque_free, stacklevel=2)
         # method: a str of methods() (mypy knows their literal names), checked by the core
         return _core.simulate(self.body(), self.initial_state(), dt, steps, cast(Any, method), record_every=record_every,
-                              loads=self.applied_loads(), gravity=self.gravity)
+                              loads=list(self.loads), gravity=self.gravity)
 
     def with_horizon(self, horizon: float) -> Problem:
         """This problem with another horizon [s] > 0."""
@@ -597,8 +562,7 @@ def _loads(value: Any) -> tuple[Any, ...]:
     """The [[loads]] tables (rigiddyn._load_table: force [N], torque [N m], frame, t_start, t_end [s])."""
     if not isinstance(value, list):
         raise _fail("loads", "an array of tables [[loads]]", value)
-    loads = [applied_load(_table(item, f"loads[{i}]", "loads"), f"loads[{i}]") for i, item in enumerate(value)]
-    return tuple(Load(load.force, load.torque, load.frame, load.t_start, load.t_end) for load in loads)
+    return tuple(applied_load(_table(item, f"loads[{i}]", "loads"), f"loads[{i}]") for i, item in enumerate(value))
 
 
 def _tradeoff_defaults(value: Any) -> dict[str, Any]:
