@@ -66,8 +66,8 @@ def _known_keys(value: Any, name: str, known: frozenset[str] | set[str]) -> Mapp
     if unknown:
         close = closest(str(unknown[0]), known)
         hint = f"; did you mean {close!r}?" if close else ""
-        raise ValueError(f"{name}.{unknown[0]}: expected a key of [{table}]{hint} (one of: {', '.join(sorted(known))}), "
-                         "got an unknown key")
+        raise ValueError(f"{name}.{unknown[0]}: expected a key of [{table}]{hint} "
+                         f"(one of: {', '.join(sorted(known))}), got an unknown key")
     return value
 
 

@@ -145,11 +145,11 @@ from typing import Any
 import numpy as np
 
 from . import _core
-from ._memory import available_bytes, format_bytes
-from ._names import closest as _closest
 from ._core_call import core_call as _core_call
 from ._load_table import LOAD_KEYS, applied_load
 from ._mass_properties import SOURCES, mass_properties
+from ._memory import available_bytes, format_bytes
+from ._names import closest as _closest
 from .problem import _check_nesting, _orientation, _read_toml, _tradeoff_defaults
 from .units import _shown, quantity, vector_quantity
 
@@ -157,8 +157,10 @@ __all__ = ["FORCE_TYPES", "RunOptions", "SceneFile", "example_scenes", "is_scene
            "plummer_sphere", "read_scene", "scene_path", "scene_to_toml"]
 
 _SCENES_DIR = Path(__file__).resolve().parent / "scenes"
-_MASS_FLOW_KINDS = ("particle", "rigid")
-_SOLID_KINDS = ("rigid", "pivoted", "gyrostat")  # the body kinds whose mass properties a [body] of a problem file gives  # the body kinds whose mass may change (rigiddyn.MassFlow)
+_MASS_FLOW_KINDS = ("particle", "rigid")  # the body kinds whose mass may change (rigiddyn.MassFlow)
+# the body kinds with an attitude: mass properties in the forms of a problem file's [body] (mass and inertia,
+# a primitive or a mesh: rigiddyn._mass_properties)
+_SOLID_KINDS = ("rigid", "pivoted", "gyrostat")
 _ATTITUDES = ("q_WB", "euler", "rotvec", "axis_angle", "scalar_first")
 _BODY_KEYS = {
     "particle": frozenset({"name", "kind", "mass", "p_W", "v_W", "mass_flow"}),
@@ -311,7 +313,7 @@ def _body(table: Any, i: int, base: Path | None) -> tuple[str, Any, Any]:
         raise _fail(f"{name}.kind", _KINDS + (f" (did you mean {close!r}?)" if close else ""), kind)
     _check_keys(table, name, _BODY_KEYS[kind], f"a [[body]] of kind {kind!r}")
     body_name = _string(table.get("name", f"body{i}"), f"{name}.name")
-    # a body with an attitude: its mass properties as a problem file's [body] gives them (rigiddyn._mass_properties)
+    # a body with an attitude: its mass properties as a problem file's [body] gives them
     mass, inertia = (mass_properties(table, name, base) if kind in _SOLID_KINDS else
                      (quantity(_required(table, "mass", name, "a mass [kg] > 0"), f"{name}.mass", "kg", positive=True),
                       None))
