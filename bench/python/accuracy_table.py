@@ -105,7 +105,7 @@ def shipped_problem(name: str, label: str, quantity: str, horizon: float, dts: t
 
     def run(method: str, dt: float, steps: int, every: int) -> Any:
         return rigiddyn.simulate(problem.body(), problem.initial_state(), dt=dt, steps=steps, method=method,
-                                 record_every=every, loads=problem.applied_loads(), gravity=problem.gravity,
+                                 record_every=every, loads=list(problem.loads), gravity=problem.gravity,
                                  accuracy_level=None)  # coarse on purpose
 
     def true_error(r: Any) -> np.ndarray:

@@ -246,7 +246,7 @@ def cpu_ns_per_step(problem, method, dt, steps):
     """CPU time of the simulate loop per step [ns], the fastest of 3 runs (1 above 1e5 steps). The loop
     runs single-threaded on the calling thread (GIL released), so the thread's CPU time is its cost,
     without the time the scheduler gives to other jobs on a shared machine (wall time counts that)."""
-    body, initial, loads = problem.body(), problem.initial_state(), problem.applied_loads()
+    body, initial, loads = problem.body(), problem.initial_state(), list(problem.loads)
     best = math.inf
     for _ in range(3 if steps <= 100_000 else 1):
         with warnings.catch_warnings():

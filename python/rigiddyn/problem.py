@@ -2,18 +2,20 @@
 
 ``load_problem(path)`` reads a file, ``load_problem("t_handle")`` a shipped example (see
 ``example_problems()``); ``python -m rigiddyn simulate PROBLEM`` and ``python -m rigiddyn tradeoff
-PROBLEM`` take either. Numbers are SI (m, kg, s, N, rad) with frames as in docs/conventions.md,
-except where a key states another unit: angles with ``degrees = true`` and an angular rate written
-as ``{value = ..., unit = ...}``. Every key the format knows, in one commented file (lines starting
+PROBLEM`` take either. Every number may carry a unit as a scene file's do, read by the same code
+(rigiddyn.units): a string, a number then its unit (``mass = "200 g"``, ``horizon = "2 min"``,
+``w_B = ["1500 rpm", 0, 0]``), or a vector ``{value = [x, y, z], unit = "km"}``; a plain number is SI (m,
+kg, s, N, rad) in the unit shown below, with frames as in docs/conventions.md. Angles may also be given in
+degrees by ``degrees = true``. Every key the format knows, in one commented file (lines starting
 ``# key =`` are alternatives)::
 
     name = "tumbling T-handle"          # optional (default: the file name)
     description = "free text"           # optional
-    horizon = 10.0                      # [s] > 0
+    horizon = 10.0                      # [s] > 0; or with a unit: horizon = "10 s"
     gravity = false                     # false (default) | true = (0, 0, -9.81) | [gx, gy, gz] [m/s^2] in W
 
     [body]                              # exactly one of: mass + inertia, [body.primitive], [body.mesh]
-    mass = 0.2                          # [kg] > 0
+    mass = 0.2                          # [kg] > 0; or mass = "200 g"
     inertia = [1e-4, 4e-4, 5e-4]        # principal moments [kg m^2], or a 3x3 matrix [[..], [..], [..]],
                                         # about the centre of mass in B
     inertia_check = "physical"          # optional: "physical" (default; the principal moments satisfy
@@ -22,7 +24,7 @@ as ``{value = ..., unit = ...}``. Every key the format knows, in one commented f
     # [body.primitive]                  # instead of mass + inertia: a shape of PRIMITIVES
     # shape = "solid_box"               # solid_sphere, hollow_sphere, solid_cylinder, ...
     # size = [0.1, 0.2, 0.3]            # [m]: the shape's own keys (PRIMITIVES[shape])
-    # mass = 1.0                        # [kg], or density = ... [kg/m^3] (exactly one)
+    # mass = 1.0                        # [kg], or density = ... [kg/m^3] (exactly one): "2.7 g/cm^3"
     # [body.mesh]                       # instead: a closed triangle mesh file (needs trimesh);
     # path = "part.stl"                 # relative to the problem file; B = the mesh frame moved to
     # density = 2700.0                  # the centre of mass; [kg/m^3], or mass = ... [kg]
@@ -30,19 +32,20 @@ as ``{value = ..., unit = ...}``. Every key the format knows, in one commented f
     [initial]                           # all optional: default zero velocities, identity attitude
     p_W = [0, 0, 0]                     # [m]
     v_W = [0, 0, 0]                     # [m/s] in W
-    w_B = [0.01, 20, 0]                 # [rad/s] in B; or with a unit, "rad/s" | "deg/s" | "rpm":
+    w_B = [0.01, 20, 0]                 # [rad/s] in B; or with a unit of angle per time ("deg/s", "rpm"):
     # w_B = {value = [0, 0, 3000], unit = "rpm"}
     q_WB = [0, 0, 0, 1]                 # attitude (B to W), (x, y, z, w); at most one of q_WB, euler,
                                         # rotvec, axis_angle. Within 1e-3 of unit norm it is normalised
                                         # (a UserWarning notes it where | |q| - 1 | > 1e-12); farther
                                         # is an error.
     scalar_first = false                # optional, only beside q_WB: true reads it as (w, x, y, z)
-    # euler = {seq = "ZYX", angles = [30, 10, 0], degrees = true}
+    # euler = {seq = "ZYX", angles = [30, 10, 0], degrees = true}   # or angles = ["30 deg", "10 deg", 0]
     #                                   # seq as SciPy's: uppercase intrinsic (moving axes), lowercase
     #                                   # extrinsic; angles in the order of seq; [rad] unless degrees
     # rotvec = [0, 0, 0.5]              # rotation vector angle * axis [rad], or in degrees:
     # rotvec = {value = [0, 0, 30], degrees = true}
     # axis_angle = {axis = [0, 0, 1], angle = 30, degrees = true}   # axis of any non-zero length
+    # axis_angle = {axis = [0, 0, 1], angle = "30 deg"}
 
     [[loads]]                           # any number; piecewise constant
     force = [0, 0, 0]                   # [N] through the centre of mass
@@ -53,15 +56,16 @@ as ``{value = ..., unit = ...}``. Every key the format knows, in one commented f
 
     [tradeoff]                          # optional defaults for rigiddyn.tradeoff
     methods = ["rk4", "rkmk4"]
-    dts = [0.01, 0.005]                 # [s]
+    dts = [0.01, "5 ms"]                # [s]
     tolerance = 1e-6
     measure = "final_attitude_error"
 
 Every error in a file is a ValueError "<field>: expected ..., got ..." naming the field by its path
 (``initial.euler.seq``, ``loads[0].frame``), a value of the wrong TOML type included; a key the
 format does not know is one too, with the closest known key ("did you mean ...?") or the table it
-belongs in. Problem and Load built directly check their fields the same way, with TypeError for a
-value of the wrong type.
+belongs in. A Problem built directly checks its fields the same way, with TypeError for a value of
+the wrong type. Its loads are the core's ``rigiddyn.AppliedLoad`` objects: a ``[[loads]]`` table reads
+into one, as a scene file's ``[[force.loads]]`` table does.
 """
 
 from __future__ import annotations
@@ -80,48 +84,33 @@ from typing import Any, cast
 import numpy as np
 
 from . import _core
+from ._load_table import LOAD_KEYS, applied_load
+from ._mass_properties import MESH_KEYS, PRIMITIVE_KEYS, PRIMITIVES, mass_properties
 from ._names import closest as _closest
 from ._measures import MEASURES
 from .stability import warn_if_unstable
-from .units import _shown
+from .units import _shown, quantity, vector_quantity
 
 if sys.version_info >= (3, 11):
     import tomllib
 else:  # pragma: no cover - exercised on Python 3.9/3.10 only
     import tomli as tomllib
 
-__all__ = ["PRIMITIVES", "Load", "Problem", "example_path", "example_problems", "load_problem", "parse_problem"]
+__all__ = ["PRIMITIVES", "Problem", "example_path", "example_problems", "load_problem", "parse_problem"]
 
-# primitive shape -> its size arguments (the rigiddyn constructor of the same name)
-PRIMITIVES: dict[str, tuple[str, ...]] = {
-    "solid_sphere": ("radius",),
-    "hollow_sphere": ("outer_radius", "inner_radius"),
-    "spherical_shell": ("radius",),
-    "solid_box": ("size",),
-    "box_shell": ("size",),
-    "solid_cylinder": ("radius", "height"),
-    "hollow_cylinder": ("outer_radius", "inner_radius", "height"),
-    "thin_rod": ("length",),
-    "thin_disk": ("radius",),
-    "thin_plate": ("size_x", "size_y"),
-    "solid_cone": ("radius", "height"),
-    "solid_ellipsoid": ("semi_axes",),
-    "solid_capsule": ("radius", "length"),
-}
-_VECTOR_ARGS = {"size", "semi_axes"}
 _ORIENTATIONS = ("q_WB", "euler", "rotvec", "axis_angle")  # the forms of the initial attitude
 # table -> its keys; a key unknown to its table is looked up in the others ("belongs in [initial]")
 _KEYS: dict[str, frozenset[str]] = {
     "problem": frozenset({"name", "description", "horizon", "gravity", "body", "initial", "loads", "tradeoff"}),
     "body": frozenset({"mass", "inertia", "inertia_check", "primitive", "mesh"}),
-    "body.primitive": frozenset({"shape", "mass", "density"}.union(*PRIMITIVES.values())),
-    "body.mesh": frozenset({"path", "mass", "density"}),
+    "body.primitive": PRIMITIVE_KEYS,
+    "body.mesh": MESH_KEYS,
     "initial": frozenset({"p_W", "v_W", "w_B", "scalar_first", *_ORIENTATIONS}),
     "initial.w_B": frozenset({"value", "unit"}),
     "initial.euler": frozenset({"seq", "angles", "degrees"}),
     "initial.rotvec": frozenset({"value", "degrees"}),
     "initial.axis_angle": frozenset({"axis", "angle", "degrees"}),
-    "loads": frozenset({"force", "torque", "frame", "t_start", "t_end"}),
+    "loads": LOAD_KEYS,
     "tradeoff": frozenset({"methods", "dts", "tolerance", "measure"}),
 }
 # words users write for a key (no misspelling difflib would find)
@@ -132,9 +121,6 @@ _SYNONYMS = {"omega": "w_B", "angular_velocity": "w_B", "position": "p_W", "velo
 _RENAMED = {("body", "require_triangle_inequality"):
             'inertia_check = "physical" | "allow_unrealizable" in its place (the key was renamed: true '
             'is "physical", false is "allow_unrealizable")'}
-# angular rate unit -> its value in rad/s: pi / 180 as np.deg2rad (and SciPy's degrees=True) use it for
-# angles, 1 rpm = 2 pi rad / 60 s
-_RATE_UNITS = {"rad/s": 1.0, "deg/s": math.pi / 180.0, "rpm": 2.0 * math.pi / 60.0}
 _QUATERNION_NORM_TOLERANCE = 1e-3  # | |q| - 1 | up to this: a hand-typed quaternion, normalised
 # beyond this (and within the tolerance) the normalisation is noted: far above the few-ulp norm error
 # of a unit quaternion computed in double precision and printed in full, so only typed values get it
@@ -241,38 +227,6 @@ def _where(name: str, kind: str) -> str:
 
 
 @dataclass(frozen=True)
-class Load:
-    """A constant load active for t_start <= t < t_end [s]: force (3,) [N] through the centre of
-    mass and couple torque (3,) [N m], both expressed in `frame` ('world' or 'body')."""
-
-    force: np.ndarray
-    torque: np.ndarray
-    frame: str = "world"
-    t_start: float = -math.inf
-    t_end: float = math.inf
-
-    def __post_init__(self) -> None:
-        """Checks every field (TypeError/ValueError naming it); stores the vectors as float64 (3,)."""
-        object.__setattr__(self, "force", _array(self.force, "force", (3,)))
-        object.__setattr__(self, "torque", _array(self.torque, "torque", (3,)))
-        if _string(self.frame, "frame") not in ("world", "body"):
-            raise _fail("frame", "'world' or 'body'", self.frame)
-        for key in ("t_start", "t_end"):
-            value = getattr(self, key)
-            if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)):
-                raise _type_fail(key, "a time [s] (+-inf allowed)", value)
-            if math.isnan(value):
-                raise _fail(key, "a time [s] (+-inf allowed)", value)
-            object.__setattr__(self, key, float(value))
-        if not self.t_start < self.t_end:
-            raise _fail("t_end", f"a time > t_start = {self.t_start}", self.t_end)
-
-    def applied_load(self) -> _core.AppliedLoad:
-        """This load as the core's AppliedLoad (for rigiddyn.simulate)."""
-        return _core.AppliedLoad(self.force, self.torque, cast(Any, self.frame), self.t_start, self.t_end)  # checked
-
-
-@dataclass(frozen=True)
 class Problem:
     """One rigid body with its initial state, loads, gravity and horizon: what a problem file declares.
 
@@ -295,8 +249,8 @@ class Problem:
         Initial attitude, unit quaternion (x, y, z, w).
     w_B : array_like, shape (3,), default zeros
         Initial angular velocity [rad/s] in B.
-    loads : tuple of Load, default ()
-        Applied forces and torques with their time windows.
+    loads : sequence of AppliedLoad, default ()
+        Applied forces [N] and torques [N m] with their frames and time windows (stored as a tuple).
     gravity : array_like, shape (3,), default zeros
         Uniform gravity g [m/s²] in W.
     inertia_check : InertiaCheck, default InertiaCheck.physical
@@ -333,7 +287,7 @@ class Problem:
     q_WB: np.ndarray = field(default_factory=lambda: np.array([0.0, 0.0, 0.0, 1.0]))
     v_W: np.ndarray = field(default_factory=lambda: np.zeros(3))
     w_B: np.ndarray = field(default_factory=lambda: np.zeros(3))
-    loads: tuple[Load, ...] = ()
+    loads: tuple[_core.AppliedLoad, ...] = ()
     gravity: np.ndarray = field(default_factory=lambda: np.zeros(3))
     inertia_check: _core.InertiaCheck = _core.InertiaCheck.physical
     description: str = ""
@@ -342,7 +296,7 @@ class Problem:
 
     def __post_init__(self) -> None:
         """Checks every field as a problem file's are checked (TypeError/ValueError naming it: finite,
-        mass and horizon > 0, a valid inertia, a unit quaternion to 1e-3, loads of type Load);
+        mass and horizon > 0, a valid inertia, a unit quaternion to 1e-3, loads of type AppliedLoad);
         stores the vectors as float64 arrays and q_WB normalised."""
         def setf(key: str, value: Any) -> None:  # a frozen dataclass sets its fields this way
             object.__setattr__(self, key, value)
@@ -362,10 +316,10 @@ class Problem:
             setf(key, _array(getattr(self, key), key, (3,)))
         setf("q_WB", _unit_quaternion(_array(self.q_WB, "q_WB", (4,)), "q_WB"))
         if isinstance(self.loads, (str, bytes)) or not isinstance(self.loads, (tuple, list)):
-            raise _type_fail("loads", "a sequence of Load", self.loads)
+            raise _type_fail("loads", "a sequence of AppliedLoad", self.loads)
         for i, load in enumerate(self.loads):
-            if not isinstance(load, Load):
-                raise _type_fail(f"loads[{i}]", "a Load", load)
+            if not isinstance(load, _core.AppliedLoad):
+                raise _type_fail(f"loads[{i}]", "an AppliedLoad", load)
         setf("loads", tuple(self.loads))
         if not isinstance(self.inertia_check, _core.InertiaCheck):
             raise _type_fail("inertia_check", "InertiaCheck.physical or InertiaCheck.allow_unrealizable",
@@ -385,10 +339,6 @@ class Problem:
     def initial_state(self) -> _core.RigidBodyState:
         """The RigidBodyState at t = 0 (p_W [m], q_WB, v_W [m/s] in W, w_B [rad/s] in B)."""
         return _core.RigidBodyState(self.p_W, self.q_WB, self.v_W, self.w_B)
-
-    def applied_loads(self) -> list[_core.AppliedLoad]:
-        """The loads as the core's AppliedLoad objects (for rigiddyn.simulate)."""
-        return [load.applied_load() for load in self.loads]
 
     @property
     def torque_free(self) -> bool:
@@ -421,7 +371,7 @@ class Problem:
         warn_if_unstable(method, dt, steps, self.inertia_com, self.w_B, self.torque_free, stacklevel=2)
         # method: a str of methods() (mypy knows their literal names), checked by the core
         return _core.simulate(self.body(), self.initial_state(), dt, steps, cast(Any, method), record_every=record_every,
-                              loads=self.applied_loads(), gravity=self.gravity)
+                              loads=list(self.loads), gravity=self.gravity)
 
     def with_horizon(self, horizon: float) -> Problem:
         """This problem with another horizon [s] > 0."""
@@ -432,14 +382,6 @@ class Problem:
         return replace(self, horizon=_number(horizon, "horizon", positive=True))
 
 
-def _inertia_matrix(value: Any, name: str) -> np.ndarray:
-    if isinstance(value, (list, tuple)) and len(value) == 3 and all(isinstance(r, (list, tuple)) for r in value):
-        return np.array([_vector(row, f"{name}[{i}]") for i, row in enumerate(value)])
-    if isinstance(value, (list, tuple)) and len(value) == 3:
-        return np.diag(_vector(value, name))
-    raise _fail(name, "3 principal moments [I1, I2, I3] or a 3x3 matrix [kg m^2]", value)
-
-
 def _core_error(error: ValueError, name: str, args: tuple[str, ...] = ()) -> ValueError:
     """The core's "arg: expected ..." message re-addressed to the problem field `name` (or name.arg)."""
     arg, sep, rest = str(error).partition(": ")
@@ -448,81 +390,13 @@ def _core_error(error: ValueError, name: str, args: tuple[str, ...] = ()) -> Val
     return ValueError(f"{name}.{arg}: {rest}" if arg in args else f"{name}: {rest}")
 
 
-def _mass_or_density(table: Mapping[str, Any], name: str) -> dict[str, float]:
-    given = [k for k in ("mass", "density") if k in table]
-    if len(given) != 1:
-        raise _fail(name, "exactly one of mass = [kg] or density =", "both" if len(given) == 2 else "neither")
-    key = given[0]
-    return {key: _number(table[key], f"{name}.{key}", positive=True)}
-
-
-def _primitive(table: Any) -> tuple[Any, ...]:
-    name = "body.primitive"
-    table = _table(table, name)  # the keys of any shape first: `shap` gets its suggestion
-    shape = table.get("shape")
-    if not isinstance(shape, str) or shape not in PRIMITIVES:
-        close = _closest(shape, PRIMITIVES) if isinstance(shape, str) else None
-        hint = f" (did you mean {close!r}?)" if close else ""
-        raise _fail(f"{name}.shape", "one of " + ", ".join(PRIMITIVES) + hint, "nothing" if shape is None else shape)
-    args = PRIMITIVES[shape]
-    _table(table, name, allowed={"shape", "mass", "density", *args})
-    values = []
-    for arg in args:
-        if arg not in table:
-            raise _fail(f"{name}.{arg}", f"a value (shape {shape!r} needs {', '.join(args)})", "nothing")
-        values.append(_vector(table[arg], f"{name}.{arg}") if arg in _VECTOR_ARGS else
-                      _number(table[arg], f"{name}.{arg}", positive=True))
-    mass_or_density = _mass_or_density(table, name)  # its own errors name body.primitive.mass/density
-    try:
-        inertia = getattr(_core, shape)(*values, **mass_or_density)
-    except ValueError as e:
-        raise _core_error(e, name, args) from None
-    return inertia.mass, np.array(inertia.inertia_com)
-
-
-def _mesh(table: Any, base: Path | None) -> tuple[Any, ...]:
-    name = "body.mesh"
-    table = _table(table, name)
-    if not isinstance(table.get("path"), str):
-        raise _fail(f"{name}.path", "a mesh file path (string)", table.get("path"))
-    path = Path(table["path"])
-    if not path.is_absolute() and base is not None:
-        path = base / path
-    if not path.is_file():
-        raise _fail(f"{name}.path", "an existing mesh file", str(path))
-    try:
-        import trimesh
-    except ImportError:
-        raise ImportError("body.mesh: reading mesh files needs trimesh (pip install trimesh)") from None
-    mass_or_density = _mass_or_density(table, name)  # its own errors name body.mesh.mass/density
-    mesh = trimesh.load(str(path), force="mesh")
-    try:
-        inertia = _core.solid_mesh(np.asarray(getattr(mesh, "vertices"), float),  # a trimesh.Trimesh
-                                   np.asarray(getattr(mesh, "faces"), np.int64), **mass_or_density)
-    except ValueError as e:
-        raise _core_error(e, name) from None
-    return inertia.mass, np.array(inertia.inertia_com)
-
-
 def _body(value: Any, base: Path | None) -> tuple[Any, ...]:
     body = _table(value, "body")
-    sources = [k for k in ("inertia", "primitive", "mesh") if k in body]
-    if len(sources) != 1:
-        raise _fail("body", "exactly one of inertia (with mass), primitive or mesh", sources or "none")
     check_name = body.get("inertia_check", "physical")
     if not isinstance(check_name, str) or check_name not in _core.InertiaCheck.__members__:
         raise _fail("body.inertia_check", " or ".join(map(repr, _core.InertiaCheck.__members__)), check_name)
     check = _core.InertiaCheck.__members__[check_name]
-    if sources[0] == "inertia":
-        if "mass" not in body:
-            raise _fail("body.mass", "a mass [kg] > 0 next to body.inertia", "nothing")
-        mass, inertia = _number(body["mass"], "body.mass", positive=True), _inertia_matrix(body["inertia"], "body.inertia")
-    elif "mass" in body:
-        raise _fail("body.mass", f"no mass outside body.{sources[0]} (give it there)", body["mass"])
-    elif sources[0] == "primitive":
-        mass, inertia = _primitive(body["primitive"])
-    else:
-        mass, inertia = _mesh(body["mesh"], base)
+    mass, inertia = mass_properties(body, "body", base)
     try:
         _core.RigidBody(mass, inertia, check=check)
     except ValueError as e:
@@ -531,9 +405,10 @@ def _body(value: Any, base: Path | None) -> tuple[Any, ...]:
 
 
 def _gravity(value: Any) -> np.ndarray:
+    """g [m/s^2] in W: true is (0, 0, -9.81), false none, else a vector (entries may carry units)."""
     if isinstance(value, bool):
         return np.array([0.0, 0.0, -9.81]) if value else np.zeros(3)
-    return _vector(value, "gravity")
+    return vector_quantity(value, "gravity", "m/s^2")
 
 
 def _note(message: str) -> None:
@@ -619,8 +494,32 @@ def _axis_angle(value: Any) -> np.ndarray:
     return _core_quaternion(_core.axis_angle_to_quat, name, ("axis", "angle"), axis, angle)
 
 
+def _angles_in_radians(table: Mapping[str, Any], name: str) -> dict[str, Any]:
+    """The attitude keys of the table `name` ([initial], a scene file's [[body]]) with every angle that carries
+    a unit ("30 deg") converted to radians, for _orientation (which reads numbers and a `degrees` flag)."""
+    out = {k: table[k] for k in (*_ORIENTATIONS, "scalar_first") if k in table}
+
+    def has_unit(value: Any) -> bool:
+        return isinstance(value, str) or (isinstance(value, list) and any(isinstance(v, str) for v in value))
+
+    for key, angle_key in (("euler", "angles"), ("axis_angle", "angle"), ("rotvec", "value")):
+        sub = out.get(key)
+        if isinstance(sub, Mapping) and has_unit(sub.get(angle_key)):
+            value = sub[angle_key]
+            field = f"{name}.{key}.{angle_key}"
+            converted = (quantity(value, field, "rad") if isinstance(value, str)
+                         else list(vector_quantity(value, field, "rad", len(value))))
+            if sub.get("degrees", False) is True:
+                raise _fail(f"{name}.{key}.degrees", "no degrees flag beside angles with units", True)
+            out[key] = {**{k: v for k, v in sub.items() if k != "degrees"}, angle_key: converted}
+    if isinstance(out.get("rotvec"), list) and has_unit(out["rotvec"]):
+        out["rotvec"] = list(vector_quantity(out["rotvec"], f"{name}.rotvec", "rad"))
+    return out
+
+
 def _orientation(table: Mapping[str, Any]) -> np.ndarray | None:
     """q_WB (x, y, z, w) from the one orientation form in [initial], or None if none is given."""
+    table = _angles_in_radians(table, "initial")
     given = [k for k in _ORIENTATIONS if k in table]
     if len(given) > 1:
         raise ValueError("initial: expected at most one orientation of " + ", ".join(_ORIENTATIONS) +
@@ -640,24 +539,17 @@ def _orientation(table: Mapping[str, Any]) -> np.ndarray | None:
 
 
 def _angular_rate(value: Any, name: str) -> np.ndarray:
-    """An angular rate [rad/s] from [x, y, z] in rad/s or {value = [x, y, z], unit = "rad/s" | "deg/s" | "rpm"}."""
-    if not isinstance(value, (Mapping, list, tuple)):
-        raise _fail(name, "an array of 3 numbers [rad/s] or a table {value = [x, y, z], unit = \"rpm\"}", value)
-    if not isinstance(value, Mapping):
-        return _vector(value, name)
-    table = _table(value, name, "initial.w_B")
-    if "value" not in table or "unit" not in table:
-        missing = "value" if "value" not in table else "unit"
-        raise _fail(f"{name}.{missing}", "a value (w_B = {value = [x, y, z], unit = \"rpm\"})", "nothing")
-    unit = table["unit"]
-    if not isinstance(unit, str) or unit not in _RATE_UNITS:
-        raise _fail(f"{name}.unit", "one of " + ", ".join(map(repr, _RATE_UNITS)), unit)
-    return _vector(table["value"], f"{name}.value") * _RATE_UNITS[unit]
+    """An angular rate [rad/s] from [x, y, z] (entries may carry units: "1500 rpm") or {value = [x, y, z],
+    unit = "rpm"} (any unit of angle per time: "rad/s", "deg/s", "rpm", "turn/s")."""
+    if isinstance(value, Mapping):
+        _table(value, name, "initial.w_B")
+    return vector_quantity(value, name, "rad/s")
 
 
 def _initial(value: Any) -> dict[str, np.ndarray]:
     table = _table(value, "initial")
-    out = {k: _vector(table[k], f"initial.{k}") for k in ("p_W", "v_W") if k in table}
+    out = {k: vector_quantity(table[k], f"initial.{k}", unit) for k, unit in (("p_W", "m"), ("v_W", "m/s"))
+           if k in table}
     if "w_B" in table:
         out["w_B"] = _angular_rate(table["w_B"], "initial.w_B")
     q_WB = _orientation(table)
@@ -667,24 +559,10 @@ def _initial(value: Any) -> dict[str, np.ndarray]:
 
 
 def _loads(value: Any) -> tuple[Any, ...]:
+    """The [[loads]] tables (rigiddyn._load_table: force [N], torque [N m], frame, t_start, t_end [s])."""
     if not isinstance(value, list):
         raise _fail("loads", "an array of tables [[loads]]", value)
-    loads = []
-    for i, item in enumerate(value):
-        name = f"loads[{i}]"
-        table = _table(item, name, "loads")
-        frame = table.get("frame", "world")
-        if frame not in ("world", "body"):
-            raise _fail(f"{name}.frame", "'world' or 'body'", frame)
-        t_start = _number(table["t_start"], f"{name}.t_start") if "t_start" in table else -math.inf
-        t_end = _number(table["t_end"], f"{name}.t_end") if "t_end" in table else math.inf
-        if not t_start < t_end:
-            raise _fail(f"{name}.t_end", f"a time > t_start = {t_start}", t_end)
-        zero = np.zeros(3)
-        loads.append(Load(_vector(table["force"], f"{name}.force") if "force" in table else zero,
-                          _vector(table["torque"], f"{name}.torque") if "torque" in table else zero,
-                          frame, t_start, t_end))
-    return tuple(loads)
+    return tuple(applied_load(_table(item, f"loads[{i}]", "loads"), f"loads[{i}]") for i, item in enumerate(value))
 
 
 def _tradeoff_defaults(value: Any) -> dict[str, Any]:
@@ -693,7 +571,7 @@ def _tradeoff_defaults(value: Any) -> dict[str, Any]:
         dts = table["dts"]
         if not isinstance(dts, list) or not dts:
             raise _fail("tradeoff.dts", "a non-empty array of steps [s]", dts)
-        table["dts"] = [_number(d, f"tradeoff.dts[{i}]", positive=True) for i, d in enumerate(dts)]
+        table["dts"] = [quantity(d, f"tradeoff.dts[{i}]", "s", positive=True) for i, d in enumerate(dts)]
     if "methods" in table:
         names = {m["name"] for m in _core.methods()}
         methods = table["methods"]
@@ -727,7 +605,7 @@ def parse_problem(data: Mapping[str, Any], base: str | Path | None = None,
         raise _fail("description", "a string", description)
     mass, inertia, check = _body(data["body"], Path(base) if base is not None else None)
     return Problem(name=name, description=description, mass=mass, inertia_com=inertia,
-                   horizon=_number(data["horizon"], "horizon", positive=True),
+                   horizon=quantity(data["horizon"], "horizon", "s", positive=True),
                    loads=_loads(data.get("loads", [])), gravity=_gravity(data.get("gravity", False)),
                    inertia_check=check, tradeoff=_tradeoff_defaults(data.get("tradeoff", {})),
                    source=source, **_initial(data.get("initial", {})))
@@ -772,6 +650,21 @@ def load_problem(path_or_name: str | Path) -> Problem:
     --------
     load_scene : a scene file (any number of bodies and force elements).
     tradeoff : every method's cost and accuracy on the problem.
+
+    Notes
+    -----
+    A problem file is a scene file of one ``rigid`` body plus the problem's run settings, its tables read by
+    the same code as a scene file's: ``[body]`` is that body's mass properties (``mass`` and ``inertia``, a
+    ``[body.primitive]`` or a ``[body.mesh]``, as a scene file's ``[[body]]`` gives them), ``[initial]`` its
+    initial state (the keys ``p_W``, ``v_W``, ``w_B`` and the attitude of a ``rigid`` ``[[body]]``), ``gravity``
+    a ``uniform_gravity`` element, each ``[[loads]]`` table an ``AppliedLoad`` of a ``scheduled_loads`` element on
+    the body (read as a ``[[force.loads]]`` table), ``horizon`` the ``[run]`` duration, and ``[tradeoff]`` the
+    same table; every number may carry a unit (``mass = "200 g"``). What differs: the result is a `Problem` (one
+    RigidBody, its state, loads, gravity and horizon), not a Scene, for the closed-form references that
+    ``rd.tradeoff`` computes on one body; a problem file has no ``[run]`` method or step
+    (``Problem.simulate(method, dt)`` takes them), no second body, force element, ``[frame]``, gyrostat wheels or
+    mass flow (write a scene file for these); and a ``q_WB`` is always divided by its norm, where a scene file
+    keeps one of unit norm to 4 ulp bit for bit.
 
     Examples
     --------

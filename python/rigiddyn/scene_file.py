@@ -71,6 +71,11 @@ commented)::
     # [body.mass_flow]                  # optional, a particle or rigid body: its mass changes (after its table)
     # rate = "-2 kg/s"                  # dm/dt [kg/s] (negative: losing mass; default 0)
     # inertia_rule = "scaled"           # I_C = I_C0 m / m0 (the only rule a file holds)
+    # [body.primitive]                  # rigid, pivoted, gyrostat: instead of mass + inertia (after its
+    # shape = "solid_box"               # table), a solid of rigiddyn.problem.PRIMITIVES, its size keys [m]
+    # size = ["10 cm", "20 cm", 0.3]    # and mass [kg] or density [kg/m^3]; or [body.mesh]: path (a closed
+    # density = "2.7 g/cm^3"            # triangle mesh file, relative to the scene file) and mass or
+    #                                   # density; read as a problem file's [body] is
 
     [[force]]                           # one table per force element; `type` picks it
     type = "uniform_gravity"            # g_W [m/s^2] (default [0, 0, -9.81]), bodies
@@ -140,6 +145,9 @@ from typing import Any
 import numpy as np
 
 from . import _core
+from ._core_call import core_call as _core_call
+from ._load_table import LOAD_KEYS, applied_load
+from ._mass_properties import SOURCES, mass_properties
 from ._memory import available_bytes, format_bytes
 from ._names import closest as _closest
 from .problem import _check_nesting, _orientation, _read_toml, _tradeoff_defaults
@@ -150,16 +158,19 @@ __all__ = ["FORCE_TYPES", "RunOptions", "SceneFile", "example_scenes", "is_scene
 
 _SCENES_DIR = Path(__file__).resolve().parent / "scenes"
 _MASS_FLOW_KINDS = ("particle", "rigid")  # the body kinds whose mass may change (rigiddyn.MassFlow)
+# the body kinds with an attitude: mass properties in the forms of a problem file's [body] (mass and inertia,
+# a primitive or a mesh: rigiddyn._mass_properties)
+_SOLID_KINDS = ("rigid", "pivoted", "gyrostat")
 _ATTITUDES = ("q_WB", "euler", "rotvec", "axis_angle", "scalar_first")
 _BODY_KEYS = {
     "particle": frozenset({"name", "kind", "mass", "p_W", "v_W", "mass_flow"}),
     "planar": frozenset({"name", "kind", "mass", "inertia", "p_W", "v_W", "theta", "omega", "mass_flow"}),
-    "rigid": frozenset({"name", "kind", "mass", "inertia", "inertia_check", "p_W", "v_W", "w_B", *_ATTITUDES,
+    "rigid": frozenset({"name", "kind", "mass", *SOURCES, "inertia_check", "p_W", "v_W", "w_B", *_ATTITUDES,
                         "mass_flow"}),
-    "pivoted": frozenset({"name", "kind", "mass", "inertia", "inertia_check", "p_OC_B", "p_WO", "w_B", *_ATTITUDES,
+    "pivoted": frozenset({"name", "kind", "mass", *SOURCES, "inertia_check", "p_OC_B", "p_WO", "w_B", *_ATTITUDES,
                           "mass_flow"}),
     "pivoted_planar": frozenset({"name", "kind", "mass", "inertia", "p_OC_B", "p_WO", "theta", "omega", "mass_flow"}),
-    "gyrostat": frozenset({"name", "kind", "mass", "inertia", "inertia_check", "p_W", "v_W", "w_B", *_ATTITUDES,
+    "gyrostat": frozenset({"name", "kind", "mass", *SOURCES, "inertia_check", "p_W", "v_W", "w_B", *_ATTITUDES,
                            "wheels"}),
 }
 _WHEEL_KEYS = frozenset({"axis_B", "inertia", "speed", "motor_torque", "t_start", "t_end"})
@@ -170,7 +181,6 @@ _MASS_FLOW_KEYS = frozenset({"rate", "inertia_rule"})
 _FRAME_KEYS = {"rotating": frozenset({"kind", "axis", "rate"}), "earth": frozenset({"kind", "latitude"})}
 _CLUSTER_KEYS = frozenset({"model", "count", "total_mass", "scale_radius", "G", "softening", "seed", "name_prefix"})
 _RUN_KEYS = frozenset({"method", "dt", "duration", "record_every"})
-_LOAD_KEYS = frozenset({"force", "torque", "frame", "t_start", "t_end"})
 _REQUIRED = object()  # a field default: the field must be given
 _NAMES_SHOWN = 20  # body names an error about a body reference lists
 _NAMES_SEARCHED = 10_000  # up to this many bodies, that error also suggests the closest name
@@ -275,18 +285,6 @@ def _string(value: Any, name: str, expected: str = "a string") -> str:
     return value
 
 
-def _core_call(make: Callable[..., Any], name: str, *args: Any, keys: Mapping[str, str] | None = None,
-               **kwargs: Any) -> Any:
-    """make(*args, **kwargs), its "<arg>: expected ..." errors re-addressed to "<name>.<key>", key the
-    file's key of the argument (keys[arg], default arg itself)."""
-    try:
-        return make(*args, **kwargs)
-    except (ValueError, TypeError) as e:
-        arg, sep, rest = str(e).partition(": ")
-        text = f"{name}.{(keys or {}).get(arg, arg)}: {rest}" if sep and " " not in arg else f"{name}: {e}"
-        raise ValueError(text) from None
-
-
 def _readdressed(function: Callable[[Mapping[str, Any]], Any], table: Mapping[str, Any], name: str) -> Any:
     """function(table) of rigiddyn.problem (its messages name "initial.<key>"), its errors and
     warnings naming "<name>.<key>" instead."""
@@ -304,41 +302,8 @@ def _readdressed(function: Callable[[Mapping[str, Any]], Any], table: Mapping[st
     return result
 
 
-def _angles_in_radians(table: Mapping[str, Any], name: str) -> dict[str, Any]:
-    """The attitude keys of a [[body]] with every angle that carries a unit ("30 deg") converted to
-    radians, for rigiddyn.problem's parser (which takes numbers and a `degrees` flag)."""
-    out = {k: table[k] for k in _ATTITUDES if k in table}
-
-    def has_unit(value: Any) -> bool:
-        return isinstance(value, str) or (isinstance(value, list) and any(isinstance(v, str) for v in value))
-
-    for key, angle_key in (("euler", "angles"), ("axis_angle", "angle"), ("rotvec", "value")):
-        sub = out.get(key)
-        if isinstance(sub, Mapping) and has_unit(sub.get(angle_key)):
-            if sub.get("degrees", False) is True:
-                raise _fail(f"{name}.{key}.degrees", "no degrees flag beside angles with units", True)
-            value = sub[angle_key]
-            field = f"{name}.{key}.{angle_key}"
-            converted = (quantity(value, field, "rad") if isinstance(value, str)
-                         else list(vector_quantity(value, field, "rad", len(value))))
-            out[key] = {**{k: v for k, v in sub.items() if k != "degrees"}, angle_key: converted}
-    if has_unit(out.get("rotvec")):
-        out["rotvec"] = list(vector_quantity(out["rotvec"], f"{name}.rotvec", "rad"))
-    return out
-
-
-def _inertia(value: Any, name: str) -> np.ndarray:
-    """3 principal moments or a 3x3 matrix [kg m^2] (entries may carry units) as a 3x3 array."""
-    unit = "kg*m^2"
-    if isinstance(value, list) and len(value) == 3 and all(isinstance(row, list) for row in value):
-        return np.array([vector_quantity(row, f"{name}[{i}]", unit) for i, row in enumerate(value)])
-    if isinstance(value, list) and len(value) == 3:
-        return np.diag(vector_quantity(value, name, unit))
-    raise _fail(name, "3 principal moments [I1, I2, I3] or a 3x3 matrix [kg m^2]", value)
-
-
-def _body(table: Any, i: int) -> tuple[str, Any, Any]:
-    """(name, body, initial state) of the [[body]] table number i."""
+def _body(table: Any, i: int, base: Path | None) -> tuple[str, Any, Any]:
+    """(name, body, initial state) of the [[body]] table number i (`base`: the folder of relative mesh paths)."""
     name = f"body[{i}]"
     if not isinstance(table, Mapping):
         raise _fail(name, "a table [[body]]", table)
@@ -348,9 +313,12 @@ def _body(table: Any, i: int) -> tuple[str, Any, Any]:
         raise _fail(f"{name}.kind", _KINDS + (f" (did you mean {close!r}?)" if close else ""), kind)
     _check_keys(table, name, _BODY_KEYS[kind], f"a [[body]] of kind {kind!r}")
     body_name = _string(table.get("name", f"body{i}"), f"{name}.name")
-    mass = quantity(_required(table, "mass", name, "a mass [kg] > 0"), f"{name}.mass", "kg", positive=True)
+    # a body with an attitude: its mass properties as a problem file's [body] gives them
+    mass, inertia = (mass_properties(table, name, base) if kind in _SOLID_KINDS else
+                     (quantity(_required(table, "mass", name, "a mass [kg] > 0"), f"{name}.mass", "kg", positive=True),
+                      None))
     if kind.startswith("pivoted"):
-        return (body_name, *_pivoted(table, name, kind, mass))
+        return (body_name, *_pivoted(table, name, kind, mass, inertia))
     n = 2 if kind == "planar" else 3
     p_W = vector_quantity(table.get("p_W", [0.0] * n), f"{name}.p_W", "m", n)
     v_W = vector_quantity(table.get("v_W", [0.0] * n), f"{name}.v_W", "m/s", n)
@@ -360,7 +328,7 @@ def _body(table: Any, i: int) -> tuple[str, Any, Any]:
         inertia_zz, theta, omega = _planar_rotation(table, name)
         return (body_name, _core_call(_core.PlanarBody, name, mass, inertia_zz, keys={"inertia_zz": "inertia"}),
                 _core_call(_core.PlanarBodyState, name, p_W, theta, v_W, omega))
-    body, q_WB, w_B = _rigid_rotation(table, name, mass)
+    body, q_WB, w_B = _rigid_rotation(table, name, mass, inertia)
     if kind == "gyrostat":
         wheels, speeds = _wheels(table, name)
         return (body_name, _core_call(_core.Gyrostat, name, body, wheels),
@@ -398,17 +366,16 @@ def _planar_rotation(table: Mapping[str, Any], name: str) -> tuple[float, float,
     return inertia_zz, theta, omega
 
 
-def _rigid_rotation(table: Mapping[str, Any], name: str, mass: float) -> tuple[Any, Any, np.ndarray]:
-    """(RigidBody, q_WB (x, y, z, w), w_B [rad/s]) of a [[body]] with an attitude (rigid, pivoted)."""
-    inertia = _inertia(_required(table, "inertia", name, "3 principal moments or a 3x3 matrix [kg m^2]"),
-                       f"{name}.inertia")
+def _rigid_rotation(table: Mapping[str, Any], name: str, mass: float, inertia: Any) -> tuple[Any, Any, np.ndarray]:
+    """(RigidBody of mass [kg] and inertia [kg m^2] about C in B, q_WB (x, y, z, w), w_B [rad/s]) of a [[body]]
+    with an attitude (rigid, pivoted, gyrostat)."""
     check = table.get("inertia_check", "physical")
     if not isinstance(check, str) or check not in _core.InertiaCheck.__members__:
         raise _fail(f"{name}.inertia_check", " or ".join(map(repr, _core.InertiaCheck.__members__)), check)
     body = _core_call(_core.RigidBody, name, mass, inertia, check=_core.InertiaCheck.__members__[check],
                       keys={"inertia_com": "inertia"})
     w_B = vector_quantity(table.get("w_B", [0.0, 0.0, 0.0]), f"{name}.w_B", "rad/s")
-    q_WB = _readdressed(_orientation, _angles_in_radians(table, name), name)
+    q_WB = _readdressed(_orientation, table, name)
     if "q_WB" in table and not table.get("scalar_first", False):
         written = np.asarray(table["q_WB"], dtype=np.float64)  # numbers: _orientation checked them
         if abs(np.linalg.norm(written) - 1.0) <= _UNIT_NORM:
@@ -416,10 +383,11 @@ def _rigid_rotation(table: Mapping[str, Any], name: str, mass: float) -> tuple[A
     return body, q_WB if q_WB is not None else np.array([0.0, 0.0, 0.0, 1.0]), w_B
 
 
-def _pivoted(table: Mapping[str, Any], name: str, kind: str, mass: float) -> tuple[Any, Any]:
+def _pivoted(table: Mapping[str, Any], name: str, kind: str, mass: float, inertia: Any) -> tuple[Any, Any]:
     """(body, initial state) of a [[body]] pinned at a point O fixed in the scene frame: kind 'pivoted'
     (a RigidBody, attitude and w_B) or 'pivoted_planar' (I_zz, theta, omega); p_OC_B: the centre of mass
-    relative to O in B [m] (required), p_WO: O in the scene frame [m] (default 0)."""
+    relative to O in B [m] (required), p_WO: O in the scene frame [m] (default 0); inertia: the rigid body's
+    about C in B [kg m^2] (None for pivoted_planar)."""
     n = 2 if kind == "pivoted_planar" else 3
     p_OC_B = vector_quantity(_required(table, "p_OC_B", name, f"the centre of mass relative to the pivot, {n} "
                                        "lengths [m] in B"), f"{name}.p_OC_B", "m", n)
@@ -428,7 +396,7 @@ def _pivoted(table: Mapping[str, Any], name: str, kind: str, mass: float) -> tup
         inertia_zz, theta, omega = _planar_rotation(table, name)
         body = _core_call(_core.PivotedPlanarBody, name, mass, inertia_zz, p_OC_B, p_WO, keys={"inertia_zz": "inertia"})
         return body, _core_call(_core.PivotedPlanarBodyState, name, theta=theta, omega=omega)
-    rigid, q_WB, w_B = _rigid_rotation(table, name, mass)
+    rigid, q_WB, w_B = _rigid_rotation(table, name, mass, inertia)
     body = _core_call(_core.PivotedBody, name, rigid, p_OC_B, p_WO)
     return body, _core_call(_core.PivotedBodyState, name, q_WB=q_WB, w_B=w_B)
 
@@ -481,23 +449,11 @@ def _body_ref(value: Any, name: str, names: Mapping[str, int]) -> int:
 
 
 def _loads(value: Any, name: str) -> list[Any]:
-    """[[force.loads]]: a list of AppliedLoad."""
+    """[[force.loads]]: a list of AppliedLoad (rigiddyn._load_table, as a problem file's [[loads]])."""
     if not isinstance(value, list):
         raise _fail(name, "an array of tables [[force.loads]]", value)
-    loads = []
-    for j, item in enumerate(value):
-        field = f"{name}[{j}]"
-        table = _check_keys(item, field, _LOAD_KEYS, "[[force.loads]]")
-        frame = _string(table.get("frame", "world"), f"{field}.frame", "'world' or 'body'")
-        kwargs: dict[str, Any] = {"force": vector_quantity(table.get("force", [0.0] * 3), f"{field}.force", "N"),
-                  "torque": vector_quantity(table.get("torque", [0.0] * 3), f"{field}.torque", "N*m"),
-                  "frame": frame,
-                  "t_start": quantity(table.get("t_start", -math.inf), f"{field}.t_start", "s") if "t_start" in table
-                  else -math.inf,
-                  "t_end": quantity(table.get("t_end", math.inf), f"{field}.t_end", "s") if "t_end" in table
-                  else math.inf}
-        loads.append(_core_call(_core.AppliedLoad, field, **kwargs))
-    return loads
+    return [applied_load(_check_keys(item, f"{name}[{j}]", LOAD_KEYS, "[[force.loads]]"), f"{name}[{j}]")
+            for j, item in enumerate(value)]
 
 
 def _force(table: Any, i: int, names: Mapping[str, int]) -> Any:
@@ -544,11 +500,7 @@ def _tradeoff(value: Any) -> dict[str, Any]:
     """The [tradeoff] table: rigiddyn.tradeoff's defaults for the scene, as in problem files (methods,
     dts [s], tolerance, measure), plus horizon [s] (default: the [run] duration)."""
     table = _check_keys(value, "tradeoff", _TRADEOFF_KEYS, "[tradeoff]")
-    out = _tradeoff_defaults({k: v for k, v in table.items() if k not in ("dts", "horizon")})
-    if "dts" in table:
-        if not isinstance(table["dts"], list) or not table["dts"]:
-            raise _fail("tradeoff.dts", "a non-empty array of steps [s]", table["dts"])
-        out["dts"] = [quantity(d, f"tradeoff.dts[{i}]", "s", positive=True) for i, d in enumerate(table["dts"])]
+    out = _tradeoff_defaults({k: v for k, v in table.items() if k != "horizon"})
     if "horizon" in table:
         out["horizon"] = quantity(table["horizon"], "tradeoff.horizon", "s", positive=True)
     return out
@@ -691,8 +643,9 @@ def _check_cluster_memory(count: int, name: str) -> None:
                          f"(an estimated {format_bytes(needed)})")
 
 
-def parse_scene(data: Mapping[str, Any], source: str = "scene") -> SceneFile:
-    """A SceneFile from parsed TOML `data` (`source` names it when the file sets no name)."""
+def parse_scene(data: Mapping[str, Any], source: str = "scene", base: str | Path | None = None) -> SceneFile:
+    """A SceneFile from parsed TOML `data` (`source` names it when the file sets no name; `base` is the folder
+    that relative mesh paths refer to, None: the working directory)."""
     _check_nesting(data, source)
     data = _check_keys(data, "scene", _TOP_KEYS, "the top level")
     if "body" not in data and "cluster" not in data:
@@ -706,7 +659,7 @@ def parse_scene(data: Mapping[str, Any], source: str = "scene") -> SceneFile:
     names: dict[str, int] = {}  # each body's name -> its index (a dict: a name is checked in O(1))
     bodies, flows, initial = [], [], []
     for i, table in enumerate(tables):
-        body_name, body, state = _body(table, i)
+        body_name, body, state = _body(table, i, None if base is None else Path(base))
         if body_name in names:
             raise _fail(f"body[{i}].name", "a name no other [[body]] has", body_name)
         names[body_name] = i
@@ -782,15 +735,15 @@ def read_scene(path_or_text: str | Path) -> SceneFile:
         raise TypeError(f"path_or_text: expected a path, TOML text or a shipped scene name, got "
                         f"{type(path_or_text).__name__}")
     if isinstance(path_or_text, str) and ("\n" in path_or_text or ("=" in path_or_text and not _is_file(path_or_text))):
-        text, source = path_or_text, "scene"
+        text, source, base = path_or_text, "scene", None
     else:
         path = Path(path_or_text)
         if not _is_file(str(path)):
             if isinstance(path_or_text, Path) or path.suffix or len(path.parts) > 1:
                 raise _fail("path_or_text", "an existing .toml file", str(path_or_text))
             path = scene_path(str(path_or_text))
-        text, source = path.read_text(encoding="utf-8"), path.stem
-    return parse_scene(_read_toml(text, source), source)
+        text, source, base = path.read_text(encoding="utf-8"), path.stem, path.parent
+    return parse_scene(_read_toml(text, source), source, base)
 
 
 def load_scene(path_or_text: str | Path) -> tuple[Any, list[Any], RunOptions]:

@@ -189,7 +189,7 @@ def simulate_problem(problem: Problem, method: str, dt: float, steps: int, recor
     warn_if_unstable(method, dt, steps, problem.inertia_com, problem.w_B, problem.torque_free, stacklevel=2)
     # method: a str of methods() (mypy knows their literal names), checked by the core
     return _core.simulate(problem.body(), problem.initial_state(), dt, steps, cast(Any, method), record_every=record_every,
-                          loads=problem.applied_loads(), gravity=problem.gravity, progress=progress, error=error)
+                          loads=list(problem.loads), gravity=problem.gravity, progress=progress, error=error)
 
 
 class _Plan:

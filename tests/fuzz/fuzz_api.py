@@ -84,8 +84,6 @@ DOCUMENTED_NON_FINITE = [
     ("AppliedLoad.t_end", {"inf"}, ("rigiddyn", "AppliedLoad.__init__")),
     ("ReactionWheel.t_end", {"inf"}, ("rigiddyn", "ReactionWheel")),  # its Parameters: "(inf: none)"
     ("Wheel.t_end", {"inf"}, ("rigiddyn", "Wheel")),  # its Parameters: "default 0 and inf"
-    ("Load.t_start", {"-inf"}, ("rigiddyn.problem", "Load")),
-    ("Load.t_end", {"inf"}, ("rigiddyn.problem", "Load")),
     ("*[observed_order]", {"nan"}, ("rigiddyn.work_precision", "")),  # the module's docstring: the columns
     # the module's docstring: "for the other measures the columns are nan and the verdict says so"
     ("*[estimate]", {"nan"}, ("rigiddyn.work_precision", "")),

@@ -99,7 +99,7 @@ def test_scalar_first_quaternion_and_loads():
     assert len(p.loads) == 2 and p.loads[0].frame == "body" and p.loads[0].t_end == 0.5
     assert p.loads[1].t_start == -math.inf and p.loads[1].frame == "world"
     assert not p.torque_free and p.translation_closed_form
-    assert len(p.applied_loads()) == 2
+    assert all(isinstance(load, rigiddyn.AppliedLoad) for load in p.loads)
 
 
 @pytest.mark.parametrize(
@@ -113,7 +113,7 @@ def test_scalar_first_quaternion_and_loads():
         ("inertia = [1.0, 2.0, 2.5]", "inertia = [1.0, 2.0]", "body.inertia"),
         ("inertia = [1.0, 2.0, 2.5]", "inertia = [1.0, 2.0, 5.0]", "body.inertia"),  # triangle inequality
         ("inertia = [1.0, 2.0, 2.5]", "inertia = [1.0, 2.0, nan]", r"body.inertia\[2\]"),
-        ("inertia = [1.0, 2.0, 2.5]", "", "body"),
+        ("inertia = [1.0, 2.0, 2.5]", "", "body.inertia"),
         ("w_B = [0.1, 1.0, 0.0]", "w_B = [0.1, 1.0]", "initial.w_B"),
         ("w_B = [0.1, 1.0, 0.0]", "q_WB = [0.0, 0.0, 0.0, 2.0]", "initial.q_WB"),
         ("w_B = [0.1, 1.0, 0.0]", "omega = [1, 2, 3]", "initial.omega"),
@@ -226,7 +226,7 @@ def test_renamed_triangle_inequality_key_points_to_inertia_check(old):
 def test_error_message_names_expected_value():
     with pytest.raises(ValueError) as e:
         parse(BASE.replace("mass = 2.0", "mass = -3"))
-    assert re.search(r"body.mass: expected a finite number > 0, got -3", str(e.value))
+    assert re.search(r"body.mass: expected kg > 0, got -3", str(e.value))
 
 
 def test_primitive_shape_of_the_wrong_type():
@@ -325,3 +325,14 @@ def test_every_toml_field_of_the_wrong_type_is_named(data, path, kind):
              (("initial", "scalar_first"), "bool"),
              *((("initial", form, "degrees"), "bool") for form in ("euler", "rotvec", "axis_angle"))}
     assert (path, kind) in valid, f"{_field_name(path)} = {value!r} was accepted"
+
+
+def test_loads_are_the_cores_applied_loads_read_as_a_scene_files():
+    # one load class: a [[loads]] table reads into the AppliedLoad that a scene's [[force.loads]] table gives
+    table = 'force = ["1 kN", 0, 0]\ntorque = [0, 0, 0.5]\nframe = "body"\nt_start = "1 min"\nt_end = 90.0\n'
+    p = parse(BASE + "[[loads]]\n" + table)
+    scene, _, _ = rigiddyn.load_scene('[[body]]\nkind = "rigid"\nmass = 1\ninertia = [1, 2, 2.5]\n[[force]]\n'
+                                      'type = "scheduled_loads"\nbody = "body0"\n[[force.loads]]\n' + table)
+    assert isinstance(p.loads[0], rigiddyn.AppliedLoad) and p.loads == tuple(scene.elements[0].loads)
+    with pytest.raises(TypeError, match=r"^loads\[0\]: expected an AppliedLoad, got tuple"):
+        Problem(name="p", mass=1.0, inertia_com=np.diag([1.0, 2.0, 2.5]), horizon=1.0, loads=[((1, 0, 0), (0, 0, 0))])

@@ -110,8 +110,8 @@ def held_loads():
     next grid time (the loads at a step's start were held over the whole step)."""
     def up(t, dt):
         return math.ceil(t / dt) * dt if math.isfinite(t) else t
-    return lambda dt: tuple(replace(load, t_start=up(load.t_start, dt), t_end=up(load.t_end, dt))
-                            for load in PROBLEM.loads)
+    return lambda dt: tuple(rd.AppliedLoad(load.force, load.torque, load.frame, up(load.t_start, dt),
+                                           up(load.t_end, dt)) for load in PROBLEM.loads)
 
 
 def max_attitude_error(method: str, k: int, held: bool = False) -> float:
@@ -121,7 +121,7 @@ def max_attitude_error(method: str, k: int, held: bool = False) -> float:
     problem = replace(PROBLEM, loads=held_loads()(dt)) if held else PROBLEM
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", rd.StabilityWarning)
-        run = rd.simulate(problem.body(), problem.initial_state(), dt, steps, method, loads=problem.applied_loads(),
+        run = rd.simulate(problem.body(), problem.initial_state(), dt, steps, method, loads=list(problem.loads),
                           record_every=max(1, steps // RECORDS))
     t = np.asarray(run.t)
     q_ref, _ = reference_at(t)

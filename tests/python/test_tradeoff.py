@@ -10,8 +10,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 import rigiddyn
+from rigiddyn import AppliedLoad
 from rigiddyn.__main__ import main
-from rigiddyn.problem import Load, load_problem
+from rigiddyn.problem import load_problem
 from rigiddyn.work_precision import COLUMNS, MEASURES, TradeoffResult, reference_states, tradeoff
 from rigiddyn.work_precision.one_body import ProblemCase
 from rigiddyn.work_precision.references import richardson_reference
@@ -31,12 +32,12 @@ def test_exact_reference_for_torque_free_problems_and_refined_otherwise():
     r = tradeoff(satellite, methods=["rk4"], dts=[5.0], progress=False)
     assert r.rows[0]["reference"].startswith("richardson(")
     # a body-frame force moves the centre of mass with the attitude: no closed form either
-    pushed = replace(short_t_handle(0.2), loads=(Load(np.array([1.0, 0, 0]), np.zeros(3), "body"),))
+    pushed = replace(short_t_handle(0.2), loads=(AppliedLoad(np.array([1.0, 0, 0]), np.zeros(3), "body"),))
     assert pushed.torque_free and not pushed.has_exact_solution
     with pytest.raises(ValueError, match="^problem: expected torque-free"):
         reference_states(pushed, np.array([0.0]))
     # a world-frame force keeps the closed form
-    thrown = replace(short_t_handle(0.2), loads=(Load(np.array([1.0, 0, 0]), np.zeros(3), "world", 0.0, 0.1),))
+    thrown = replace(short_t_handle(0.2), loads=(AppliedLoad(np.array([1.0, 0, 0]), np.zeros(3), "world", 0.0, 0.1),))
     assert thrown.has_exact_solution
 
 
@@ -51,8 +52,8 @@ def test_exact_reference_matches_closed_forms():
     np.testing.assert_allclose(ref.w_B, np.tile(p.w_B, (9, 1)), rtol=1e-13)  # a sphere spins steadily
     # piecewise-constant world force: against rk4 (exact for piecewise-constant acceleration when the
     # switch falls on a step boundary)
-    pushed = replace(p, loads=(Load(np.array([0.3, -0.2, 0.1]), np.zeros(3), "world", 1.0, 2.5),))
-    r = rigiddyn.simulate(pushed.body(), pushed.initial_state(), 0.01, 400, "rk4", loads=pushed.applied_loads(),
+    pushed = replace(p, loads=(AppliedLoad(np.array([0.3, -0.2, 0.1]), np.zeros(3), "world", 1.0, 2.5),))
+    r = rigiddyn.simulate(pushed.body(), pushed.initial_state(), 0.01, 400, "rk4", loads=list(pushed.loads),
                           gravity=pushed.gravity, record_every=50)
     ref = reference_states(pushed, np.asarray(r.t))
     # rk4 is exact here: round-off only, <= 4 roundings of |p|, |v| per step, 400 steps: 3.6e-13 relative
@@ -398,7 +399,8 @@ def late_switching_reference(module):
     real = module.richardson_reference
 
     def late(case, *args, **kwargs):
-        shifted = tuple(replace(load, t_start=load.t_start + 0.05) for load in case.problem.loads)
+        shifted = tuple(AppliedLoad(load.force, load.torque, load.frame, load.t_start + 0.05, load.t_end)
+                        for load in case.problem.loads)
         return real(replace(case, problem=replace(case.problem, loads=shifted)), *args, **kwargs)
 
     return late
@@ -433,7 +435,7 @@ def test_dop853_reference_agrees_with_closed_forms_within_its_error_estimate():
     force from 0.3 s to 0.7 s (DOP853 restarted at both switch times). Its error estimate is the
     difference from a run at 10x rtol, whose error is ~10x larger (DOP853's error is proportional to
     its tolerance), so it bounds the error of the run at rtol."""
-    p = replace(short_t_handle(2.0), loads=(Load(np.array([0.3, -0.1, 0.2]), np.zeros(3), "world", 0.3, 0.7),))
+    p = replace(short_t_handle(2.0), loads=(AppliedLoad(np.array([0.3, -0.1, 0.2]), np.zeros(3), "world", 0.3, 0.7),))
     case = ProblemCase(p)
     times = np.linspace(0.0, p.horizon, 401)
     independent = case.independent(times)(times)
@@ -447,7 +449,7 @@ def test_a_body_frame_force_costs_the_torque_free_methods_their_exactness():
     """A torque-free body pushed by a force fixed in B: the exact free flow keeps the rotation exact, but the
     kick of the turning force is a second-order step, so exact_flow_kick gets an observed order (not "exact
     on this problem"), and the closed form 'exact', which the core refuses such a force, is no default."""
-    pushed = replace(short_t_handle(1.0), loads=(Load(np.array([1.0, 0, 0]), np.zeros(3), "body"),))
+    pushed = replace(short_t_handle(1.0), loads=(AppliedLoad(np.array([1.0, 0, 0]), np.zeros(3), "body"),))
     r = tradeoff(pushed, methods=["exact_flow_kick"], dts=[0.01, 0.005, 0.0025], measure="max_position_error",
                  progress=False)
     assert all(row["order_note"] != "exact on this problem" for row in r.rows)

@@ -183,7 +183,7 @@ class ProblemCase:
         p = self.problem
         # method: a str of methods() (mypy knows their literal names), checked by the core
         return _core.simulate(p.body(), p.initial_state(), dt, steps, cast(Any, method), record_every=record_every,
-                              loads=p.applied_loads(), gravity=p.gravity, progress=progress, error=error,
+                              loads=list(p.loads), gravity=p.gravity, progress=progress, error=error,
                               accuracy_level=None)  # the sweep's coarse steps are its rows
 
     def states(self, result: Any) -> States:
