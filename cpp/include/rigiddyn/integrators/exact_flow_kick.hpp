@@ -9,7 +9,8 @@
 // rigid bodies, built with the model), the momentum-dependent parts at each step.
 //
 // ExactFlowKick: order 2 under loads (exact, to round-off, without couples); cost per step:
-//   2 derivative evaluations (kicks) + one FreeRotationFlow::advance (~0.5 µs: two Carlson
+//   2 derivative evaluations (kicks; 1 between records where the loads do not read the velocities: a run merges
+//   adjacent kicks, simulate/run_loop.hpp) + one FreeRotationFlow::advance (~0.5 µs: two Carlson
 //   R_F/R_J pairs, one sn/cn/dn, K; a few RK4 steps' worth). Conserves on a free body everything the exact flow conserves: energy,
 //   |L|, spatial L_W, unit |q| (to round-off per step). Under loads: the kinetic-energy change
 //   equals the work of the kicks exactly; the translation is velocity Verlet (exact for a
@@ -58,6 +59,12 @@ struct ExactFlowKick {
   template <class Model>
   static void step(const Model& model, typename Model::Coordinates& y, double h, NoWorkspace& /*w*/) {
     exact_flow_kick_step(model, y, h);
+  }
+  // The step opens and closes with loads_kick(edge_kick h) (simulate/run_loop.hpp, merged_steps)
+  static constexpr double edge_kick = 0.5;
+  template <class Model>
+  static void between_kicks(const Model& model, typename Model::Coordinates& y, double h) {
+    model.template free_flow<ExactRotation>(y, h);
   }
 };
 

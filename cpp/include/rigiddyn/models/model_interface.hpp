@@ -39,7 +39,10 @@
 //                                             ExactRotation)
 //   RecordedState record(y)                   a uniform description for simulate's recorder
 // and, optionally, bool implicit_midpoint_newton(y, h): its own solve of the implicit midpoint rule
-// (integrators/implicit_midpoint.hpp). The structure-preserving methods (splitting_dlm, yoshida4,
+// (integrators/implicit_midpoint.hpp), and bool kicks_merge(): true when two loads_kick at the same positions,
+// attitudes and t are one loads_kick of their summed h (the loads do not depend on the velocities, and no mass
+// moves between them), so the run may merge a step's closing kick with the next step's opening one
+// (simulate/run_loop.hpp; a model without it is never merged). The structure-preserving methods (splitting_dlm, yoshida4,
 // exact_flow_kick) are compositions of loads_kick and free_flow only: the gyroscopic term lives in
 // each model's free rotation, so no method has a branch (or a fallback) per kind of model.
 #pragma once

@@ -64,6 +64,8 @@ class ParticleModel {
     y(6) += h * f_W_.dot(y.segment<3>(3));
     y.segment<3>(0) += h * y.segment<3>(3);
   }
+  // the force does not depend on the velocity: two kicks are one (simulate/run_loop.hpp, merged_steps)
+  static constexpr bool kicks_merge() { return true; }
   // the loads part: the force is constant over a step, so kick is its exact flow (v += h f/m); no
   // attitude, so no angular velocity changes (returns 0)
   RIGIDDYN_ALWAYS_INLINE double loads_kick(Coordinates& y, double h) const {

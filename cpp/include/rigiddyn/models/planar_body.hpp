@@ -83,6 +83,8 @@ class PlanarBodyModel {
     y(6) += h * (force_W(y(2)).dot(y.segment<2>(3)) + tau_ * y(5));
     y.segment<3>(0) += h * y.segment<3>(3);
   }
+  // the loads do not depend on the velocities: two kicks are one (simulate/run_loop.hpp, merged_steps)
+  static constexpr bool kicks_merge() { return true; }
   // the loads part: kick, the exact flow at the frozen angle θ (v += h f/m, ω += h τ/I_zz). Returns 0:
   // plane motion turns about a fixed axis and has no gyroscopic term, so the kick–free–kick step is
   // exact under a constant torque too and the 'exact' method takes it (ExactFreeFlow refuses only

@@ -245,6 +245,8 @@ class RigidBodyModel {
     project(y);
   }
 
+  // the loads do not depend on the velocities: two kicks are one (simulate/run_loop.hpp, merged_steps)
+  static constexpr bool kicks_merge() { return true; }
   // The exact flow of the loads part over h [s] at the current attitude (no gyroscopic term):
   // v += h f_W/m, ω += h I⁻¹ n_B, and the work += h (f_W·v̄ + n_B·ω̄) with v̄, ω̄ the mean velocities
   // (exact: v and ω are linear in t in this flow). One derivative evaluation (ξ at ω = 0 is

@@ -135,6 +135,9 @@ class BasicSceneModel {
     find_coriolis_terms(bodies);
     wheel_count_ = rigiddyn::wheel_count(bodies);
     stage_.resize(coordinate_count());
+    kicks_merge_ = !has_mass_flow() && std::none_of(terms_.begin(), terms_.end(), [](const Term& term) {
+      return std::visit([](const auto& e) { return e.traits().velocity_dependent; }, term);
+    });
   }
 
   Eigen::Index coordinate_count() const { return t_y_ + 1 + extra_count(); }
@@ -248,6 +251,10 @@ class BasicSceneModel {
   double loads_kick(Coordinates& y, double h) const {
     return coriolis_terms_.empty() ? loads_kick_with<false>(y, h) : loads_kick_with<true>(y, h);
   }
+
+  // True when two loads_kick at the same positions, attitudes and t are one (simulate/run_loop.hpp, merged_steps):
+  // no element reads the velocities (its traits) and no mass flows (the splittings then move masses between kicks)
+  bool kicks_merge() const { return kicks_merge_; }
 
   // The free part over h [s]: p += h v for every body, θ += h ω for a planar body, each attitude and its ω_B by
   // the flow Rotation (DlmRotation<normalise>: dlm_free_rotation; ExactRotation: the body's own
@@ -528,6 +535,7 @@ class BasicSceneModel {
   std::vector<Eigen::Index> q_y_;  // offset of each body's q_WB in y, −1 without one (for the recorder only)
   std::vector<int> energy_body_;   // the bodies with a MassFlow, in the scene's order (their mass-flow energies')
   std::size_t wheel_count_ = 0;
+  bool kicks_merge_ = false;       // kicks_merge()
   // scratch, sized here (an evaluation allocates nothing)
   mutable std::vector<BodyKinematics> kinematics_;
   mutable std::vector<BodyWrench> wrenches_;

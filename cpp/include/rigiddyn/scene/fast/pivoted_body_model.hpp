@@ -184,6 +184,8 @@ class PivotedBodyModel {
     y[7] += h;
   }
 
+  // gravity and the loads do not depend on ω: two kicks are one (simulate/run_loop.hpp, merged_steps)
+  static constexpr bool kicks_merge() { return true; }
   // The exact flow of the loads part over h [s] at the frozen attitude: ω += h I_O⁻¹ τ_O (no gyroscopic
   // term), each work += h τ·ω̄ with ω̄ = ω + Δω/2 (exact: ω is linear in t in this flow). Returns |Δω| [rad/s].
   double loads_kick(Coordinates& y, double h) const {

@@ -1,0 +1,33 @@
+"""Kick-drift-kick methods on an N-body cluster: one force evaluation per step against RK4's four.
+
+splitting_dlm, splitting_dlm_yoshida4 and exact_flow_kick open and close each step with a kick; between records a
+run merges a step's closing kick with the next step's opening one where the loads do not read the velocities (first
+same as last, cpp/include/rigiddyn/simulate/run_loop.hpp), so a step costs 1 (splitting_dlm, exact_flow_kick) or 3
+(splitting_dlm_yoshida4) evaluations of the direct sum. The baseline, in the same process, is RK4 on the same scene
+(4 evaluations per step): the ratios approach 1/4 and 3/4 as N grows and the O(N^2) sum dominates.
+
+    PYTHONPATH=build/<dir>/python python3 bench/python/bench_kick_merging.py [--small]
+"""
+
+import numpy as np
+
+import rigiddyn as rd
+from _bench_common import best_time, parse_small, report_ratio
+
+args = parse_small(__doc__, "N = 100 and 20 steps (ctest)")
+n, steps = (100, 20) if args.small else (300, 200)
+rng = np.random.default_rng(3)
+bodies = [rd.Particle(float(m)) for m in rng.uniform(0.5, 1.5, n)]
+scene = rd.Scene(bodies, elements=[rd.MutualGravity(G=1e-3, softening=0.05)])
+start = [rd.ParticleState(p_W=tuple(rng.uniform(size=3))) for _ in range(n)]
+
+
+def run(method):
+    # one record at each end (each an O(N^2) evaluation and potential, the same for every method)
+    return lambda: rd.simulate(scene, start, 1e-3, steps=steps, method=method, record_every=steps, error=False,
+                               accuracy_level=None)
+
+
+t_rk4 = best_time(run("rk4"))
+for method in ("splitting_dlm", "splitting_dlm_yoshida4", "exact_flow_kick"):
+    report_ratio(f"kick_merging_{method}_over_rk4", steps, best_time(run(method)), t_rk4, "rk4")
