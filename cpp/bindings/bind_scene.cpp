@@ -21,6 +21,7 @@
 #include "scene_run.hpp"
 #include "tolerance_run.hpp"
 #include "rigiddyn/scene/compile.hpp"
+#include "rigiddyn/scene/controller.hpp"
 #include "rigiddyn/scene/scene_order.hpp"
 #include "rigiddyn/scene/simulate_scene.hpp"
 
@@ -714,12 +715,52 @@ py::object simulate_scene_to_tolerance(py::handle model, py::handle method, cons
   return result;
 }
 
+// The row-major (n, width) array of `values`.
+py::array_t<double> rows(const std::vector<double>& values, py::ssize_t width) {
+  py::array_t<double> out({static_cast<py::ssize_t>(values.size()) / width, width});
+  std::copy(values.begin(), values.end(), out.mutable_data());
+  return out;
+}
+
+// The C++ Controller of a rigiddyn.Controller (rigiddyn/control.py, which checks the law's commands): its period, and
+// a law that takes the GIL and calls its _sample(t, p_W, q_WB, v_W, w_B, wheel_speed) -> (wheel_torque or None,
+// [(element, value (3,)), ...]). The Python object outlives the run (the caller holds it).
+Controller as_controller(py::handle controller) {
+  if (!py::isinstance(controller, py::module_::import("rigiddyn.control").attr("Controller"))) {
+    py_io::throw_type_error("controller", "a rigiddyn.Controller or None", controller);
+  }
+  Controller out;
+  out.period = py_io::as_scalar(controller.attr("period"), "controller.period");
+  out.law = [sample = py::object(controller.attr("_sample"))](const SampledState& s) {
+    py::gil_scoped_acquire gil;
+    const py::tuple r = sample(s.t, rows(s.p_W, 3), rows(s.q_WB, 4), rows(s.v_W, 3), rows(s.w_B, 3),
+                               rows(s.wheel_speed, 1).attr("ravel")())
+                            .cast<py::tuple>();
+    ActuatorCommands c;
+    if (!r[0].is_none()) {
+      for (const py::handle u : r[0]) c.wheel_torque.push_back(u.cast<double>());
+    }
+    for (const py::handle item : r[1]) {
+      const py::tuple command = item.cast<py::tuple>();
+      c.elements.push_back({command[0].cast<int>(), py_io::as_vector3(command[1], "controller command")});
+    }
+    return c;
+  };
+  return out;
+}
+
 py::object simulate_scene_py(py::handle model, py::handle initial, py::handle dt, py::handle steps, py::handle method,
                              py::handle record_every, py::handle loads, py::handle gravity, py::handle t0,
                              py::handle scalar_first, py::handle progress, py::handle duration, py::handle error,
-                             py::handle accuracy_level, const ToleranceHandles& to) {
+                             py::handle accuracy_level, const ToleranceHandles& to, py::handle controller) {
   refuse_body_arguments(loads, gravity);
   const bool tolerance_given = !to.tolerance.is_none();
+  if (tolerance_given && !controller.is_none()) {
+    py_io::throw_value_error("tolerance", "None with a controller (its samples fix the steps' splits; pass dt=)",
+                             py::str(to.tolerance).cast<std::string>());
+  }
+  const std::optional<Controller> control =
+      controller.is_none() ? std::nullopt : std::optional<Controller>(as_controller(controller));
   SimulationOptions o;
   if (!tolerance_given) {  // its checks of dt, steps and duration (as_tolerance_args otherwise)
     as_tolerance_args(to.tolerance, to.measure, to.max_steps, dt, steps, duration, error, ErrorMeasure::attitude);
@@ -745,8 +786,8 @@ py::object simulate_scene_py(py::handle model, py::handle initial, py::handle dt
   std::optional<GlobalErrorEstimate> estimate;
   {
     py::gil_scoped_release release;  // a PythonForce takes it back for each of its calls
-    r = simulate(*h.compiled, initial_states, o);
-    if (estimate_error && !r.interrupted) {  // at the order the compiled scene has (scene_order.hpp)
+    r = control ? simulate(*h.compiled, initial_states, o, *control) : simulate(*h.compiled, initial_states, o);
+    if (estimate_error && !r.interrupted && !control) {  // a controlled run: none (its law would be sampled again)  // at the order the compiled scene has (scene_order.hpp)
       const auto run = [&](const SimulationOptions& coarse) { return simulate(*h.compiled, initial_states, coarse); };
       estimate = global_error(r, o, scene_order(*h.compiled), interruptible(run, r.interrupted), opaque_force(*h.compiled));
     }
