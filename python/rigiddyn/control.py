@@ -328,15 +328,20 @@ class PDAttitude:
         Derivative gain [N m s/rad], > 0.
     axes_B : array_like, shape (nw, 3)
         The wheels' spin axes in B (the gyrostat's, in the scene's order), spanning 3 dimensions.
-    q_target_WB : array_like, shape (4,), or callable, default (0, 0, 0, 1)
-        The target attitude (x, y, z, w), or q_target_WB(t) of the sample time t [s] (a slewing or LVLH target).
+    q_target_WB : array_like, shape (4,), callable or 'lvlh', default (0, 0, 0, 1)
+        The target attitude (x, y, z, w); q_target_WB(t) of the sample time t [s] (a slew); or 'lvlh': the
+        local-vertical local-horizontal frame of the body's sampled p_W, v_W (about a central body at W's origin,
+        orbit_frame_rotation). The law feeds back the body rate w_B, not its rate relative to the target: a target
+        turning at w_t is followed with the lag e = (k_d/k_p) w_t in steady state (on a circular orbit, LVLH turns
+        at n about -y: sin(theta/2) = k_d n/(2 k_p) about the pitch axis).
     body : int, default 0
         The controlled body.
 
     Raises
     ------
     ValueError
-        k_p or k_d not finite and > 0; axes_B not of shape (nw, 3) or not spanning 3 dimensions.
+        k_p or k_d not finite and > 0; axes_B not of shape (nw, 3) or not spanning 3 dimensions; q_target_WB a
+        string other than 'lvlh'.
 
     Examples
     --------
@@ -362,18 +367,55 @@ class PDAttitude:
             raise ValueError(f"axes_B: expected wheel axes spanning 3 dimensions, got {A.tolist()}")
         A = A / np.linalg.norm(A, axis=1, keepdims=True)
         self._allocation = -np.linalg.pinv(A.T)  # u = -pinv([a_1 ... a_n]) tau_B
+        if isinstance(q_target_WB, str) and q_target_WB != "lvlh":
+            raise ValueError(f"q_target_WB: expected a quaternion (x, y, z, w), a callable of t or 'lvlh', "
+                             f"got {q_target_WB!r}")
         self.q_target_WB = q_target_WB
         self.body = int(body)
 
-    def error(self, q_WB: np.ndarray, t: float) -> np.ndarray:
+    def target(self, state: SampledState) -> np.ndarray:
+        """The target attitude q_target_WB (x, y, z, w) at the sample `state`.
+
+        Parameters
+        ----------
+        state : SampledState
+            The sample (its t, and the body's p_W and v_W for 'lvlh').
+
+        Returns
+        -------
+        numpy.ndarray, shape (4,)
+            The target, as given, of t, or LVLH's q_WO.
+
+        Examples
+        --------
+        Below the centre on -z_W, moving along +x_W: LVLH's z points up +z_W (to the centre), x along the track
+        +x_W, y along +y_W (opposite the orbit normal r x v along -y_W): LVLH is W itself:
+
+        >>> law = rd.control.PDAttitude(1.0, 1.0, np.eye(3), q_target_WB="lvlh")
+        >>> state = rd.SampledState(0.0, np.array([[0.0, 0.0, -7e6]]), np.array([[0.0, 0.0, 0.0, 1.0]]),
+        ...                         np.array([[7.5e3, 0.0, 0.0]]), np.zeros((1, 3)), np.zeros(3))
+        >>> np.abs(law.target(state)).round(12).tolist()
+        [0.0, 0.0, 0.0, 1.0]
+        """
+        if isinstance(self.q_target_WB, str):  # 'lvlh'
+            from . import _core
+
+            b = self.body
+            R_WO = _core.orbit_frame_rotation(state.p_W[b], state.v_W[b], frame="lvlh")
+            return np.asarray(_core.matrix_to_quat(R_WO), dtype=float)
+        target = self.q_target_WB(state.t) if callable(self.q_target_WB) else self.q_target_WB
+        return np.asarray(target, dtype=float)
+
+    @staticmethod
+    def error(q_WB: Any, q_target_WB: Any) -> np.ndarray:
         """The attitude error e = 2 sign(eta) epsilon of q_e = q_target^-1 q_WB = (epsilon, eta), in B.
 
         Parameters
         ----------
-        q_WB : numpy.ndarray, shape (4,)
+        q_WB : array_like, shape (4,)
             The attitude (x, y, z, w).
-        t : float
-            The time [s] (the target's, when it is a callable).
+        q_target_WB : array_like, shape (4,)
+            The target (x, y, z, w).
 
         Returns
         -------
@@ -382,12 +424,10 @@ class PDAttitude:
 
         Examples
         --------
-        >>> law = rd.control.PDAttitude(1.0, 1.0, np.eye(3))
-        >>> law.error(np.array([np.sin(0.05), 0.0, 0.0, np.cos(0.05)]), 0.0).round(6).tolist()
+        >>> rd.control.PDAttitude.error([np.sin(0.05), 0.0, 0.0, np.cos(0.05)], [0.0, 0.0, 0.0, 1.0]).round(6).tolist()
         [0.099958, 0.0, 0.0]
         """
-        target = self.q_target_WB(t) if callable(self.q_target_WB) else self.q_target_WB
-        q_t, q = _unit(target), _unit(q_WB)
+        q_t, q = _unit(q_target_WB), _unit(q_WB)
         u_t, w_t, u, w = -q_t[:3], float(q_t[3]), q[:3], float(q[3])  # q_target^-1 = (-u_t, w_t)
         epsilon = w_t * u + w * u_t + _cross(u_t, u)  # the Hamilton product's vector part
         eta = w_t * w - float(u_t @ u)
@@ -396,5 +436,5 @@ class PDAttitude:
 
     def __call__(self, state: SampledState) -> dict[Any, Any]:
         b = self.body
-        tau_B = -self.k_p * self.error(state.q_WB[b], state.t) - self.k_d * state.w_B[b]
+        tau_B = -self.k_p * self.error(state.q_WB[b], self.target(state)) - self.k_d * state.w_B[b]
         return {"wheel_torque": self._allocation @ tau_B}
