@@ -5,8 +5,10 @@ A controller is passed to ``rigiddyn.simulate(scene, ..., controller=Controller(
 the law at t_k = t0 + k period (k = 0, 1, ... before the end of the run) with the state of every body there (a
 `SampledState`), and holds the actuator commands it returns constant until t_{k+1} (a zero-order hold, as the
 digital-to-analogue converter of a flight computer). The steps are split at the samples, as at the switch times of
-a ScheduledLoads, so no step straddles a sample and every method keeps its order. The law runs in Python with the
-GIL taken at the samples only; the steps between them run in C++ without it.
+a ScheduledLoads, so no step straddles a sample and every method keeps its order. A law in Python runs with the
+GIL taken at the samples only; the steps between them run in C++ without it. The shipped laws BDot and PDAttitude
+run as their C++ twins (rigiddyn/scene/control_laws.hpp) without the GIL (unless the controller adds gyro noise,
+or a PDAttitude's target is a callable); their Python code here is the reference the tests hold the C++ to.
 
 Commands (a dict returned by the law; an actuator not named holds its last command, or its own schedule until it
 is first commanded):
