@@ -344,3 +344,30 @@ def test_shipped_laws_run_in_cpp_as_their_python_reference(monkeypatch, name, sc
         np.testing.assert_allclose(a, b, rtol=0, atol=samples * 16 * EPS * np.abs(b).max(initial=0.0), err_msg=field)
     # the laws act: the rates change by far more than the tolerance
     assert np.abs(python.w_B[-1] - python.w_B[0]).max() > 1e3 * samples * 16 * EPS * np.abs(python.w_B).max()
+
+
+def test_bdot_on_the_shipped_cubesat_follows_the_orbit_averaged_decay():
+    """The shipped cubesat_detumbling (an isotropic body, I w_W' = -k (|B|^2 1 - B B^T) w_W, the field of the
+    Earth's dipole turning along a polar orbit): at whole orbits the rate is the orbit average's
+    exp(-(k/I) <|B|^2 1 - B B^T> t) w(0) within eps |w(0)|, eps = lambda_max T_orb / (2 pi) (first-order
+    averaging over the decay time; docs/examples/plot_cubesat_detumbling.py)."""
+    from rigiddyn.control import dipole_field_W
+
+    scene, initial, options = rd.load_scene("cubesat_detumbling")
+    dipole, I = scene.elements[1], scene.bodies[0].inertia_com[0, 0]
+    r = np.linalg.norm(initial[0].p_W)
+    T_orb = 2 * np.pi * np.sqrt(r**3 / scene.elements[0].gm)
+    u = np.linspace(0.0, 2 * np.pi, 1024, endpoint=False)
+    B = np.array([dipole_field_W(dipole, r * np.array([np.cos(a), 0.0, np.sin(a)])) for a in u])
+    M_bar = np.mean([(b @ b) * np.eye(3) - np.outer(b, b) for b in B], axis=0)
+    k = 0.5 * I / (np.trace(M_bar) / 3 * T_orb)
+    lam, V = np.linalg.eigh(k * M_bar / I)
+    eps = lam.max() * T_orb / (2 * np.pi)
+    result = rd.simulate(scene, initial, options.dt, duration=2 * T_orb - np.fmod(2 * T_orb, options.dt),
+                         record_every=options.record_every, error=False,
+                         controller=rd.Controller(1.0, BDot(k, dipole, element=1)))
+    w_W = np.einsum("nij,nj->ni", rd.quat_to_matrix(result.q_WB[:, 0]), result.w_B[:, 0])
+    for j in (1, 2):
+        i = int(np.argmin(np.abs(result.t - j * T_orb)))
+        w_bar = V @ (np.exp(-lam * result.t[i]) * (V.T @ w_W[0]))
+        assert np.linalg.norm(w_W[i] - w_bar) <= eps * np.linalg.norm(w_W[0])
