@@ -831,7 +831,8 @@ py::object simulate_scene_py(py::handle model, py::handle initial, py::handle dt
   {
     py::gil_scoped_release release;  // a PythonForce takes it back for each of its calls
     r = control ? simulate(*h.compiled, initial_states, o, *control) : simulate(*h.compiled, initial_states, o);
-    if (estimate_error && !r.interrupted && !control) {  // a controlled run: none (its law would be sampled again)  // at the order the compiled scene has (scene_order.hpp)
+    // at the order the compiled scene has (scene_order.hpp); none for a controlled run (its law would be sampled again)
+    if (estimate_error && !r.interrupted && !control) {
       const auto run = [&](const SimulationOptions& coarse) { return simulate(*h.compiled, initial_states, coarse); };
       estimate = global_error(r, o, scene_order(*h.compiled), interruptible(run, r.interrupted), opaque_force(*h.compiled));
     }
