@@ -215,19 +215,25 @@ py::typing::Union<SimulationResult, SceneResult> simulate_py(py::handle model, p
                                                              py::handle scalar_first, py::handle progress,
                                                              py::handle duration, py::handle error,
                                                              py::handle accuracy_level, py::handle tolerance,
-                                                             py::handle measure, py::handle max_steps) {
+                                                             py::handle measure, py::handle max_steps,
+                                                             py::handle controller) {
   const ToleranceHandles to{tolerance, measure, max_steps};
   if (is_scene(model)) {
     return py::reinterpret_borrow<SimulateResult>(simulate_scene_py(model, initial, dt, steps, method, record_every,
                                                                     loads, gravity, t0, scalar_first, progress,
-                                                                    duration, error, accuracy_level, to));
+                                                                    duration, error, accuracy_level, to, controller));
   }
   if (is_pivoted(model) || is_gyrostat(model)) {  // the one-body scene of the body, its gravity and loads
     const py::object scene = is_gyrostat(model) ? gyrostat_scene(model, loads, gravity) : pivoted_scene(model, loads, gravity);
     return py::reinterpret_borrow<SimulateResult>(simulate_scene_py(scene, py::make_tuple(initial), dt, steps, method,
                                                                     record_every, py::none(), py::none(), t0,
                                                                     scalar_first, progress, duration, error,
-                                                                    accuracy_level, to));
+                                                                    accuracy_level, to, controller));
+  }
+  if (!controller.is_none()) {
+    py_io::throw_value_error("controller", "None for a Particle, PlanarBody or RigidBody (a controller drives a Scene, "
+                             "a CompiledScene, a pivoted body or a Gyrostat: put the body in a Scene)",
+                             py::repr(controller).cast<std::string>());
   }
   return py::reinterpret_borrow<SimulateResult>(with_model(model, initial, "initial", [&](const auto& body, const auto& state) {
     const auto target =
@@ -522,6 +528,13 @@ measure : str, keyword-only, optional
 max_steps : int, keyword-only, optional
     The cost cap of a run to a tolerance: no run (the final run and its refinement) of more steps, >= 4.
     None (the default): 10_000_000.
+controller : Controller, keyword-only, optional
+    A digital controller (rigiddyn.Controller) of a Scene, CompiledScene, pivoted body or Gyrostat: its law is
+    called with the GIL at t0 + k controller.period, k = 0, 1, ... before the end of the run, with the state of every
+    body there, and its actuator commands (gyrostat wheel torques, MagneticDipole dipoles, ScheduledLoads thrusts)
+    are held until the next sample; the steps are split at the samples, as at switch times, so every method keeps
+    its order. result.error is None (the estimate would sample the law again); tolerance is refused. None (the
+    default): no controller.
 
 Returns
 -------
@@ -542,7 +555,8 @@ ValueError
     nearest name), record_every < 1, a recording larger than the memory available (record_every, with both
     figures), a quantity of another dimension, loads or gravity for a scene, accuracy_level not finite and > 0;
     with tolerance: tolerance not finite and > 0, dt or steps given too, no duration, error False, an unknown
-    measure (with the nearest name), max_steps < 4.
+    measure (with the nearest name), max_steps < 4; with a controller: tolerance given, a body outside a scene, or
+    a bad command (named by the controller).
 ToleranceError
     A ValueError: the tolerance cannot be met within max_steps, the refined run's certificate still fails, or the
     scene has a PythonForce; it carries the measured error, the choice and the best result (see ToleranceError).
@@ -1022,7 +1036,7 @@ Examples
       py::arg("gravity") = py::none(), py::arg("t0") = 0.0, py::arg("scalar_first") = false,               \
       py::arg("progress") = py::none(), py::kw_only(), py::arg("duration") = py::none(),     \
       py::arg("error") = true, py::arg("accuracy_level") = 1e-3, py::arg("tolerance") = py::none(),         \
-      py::arg("measure") = py::none(), py::arg("max_steps") = py::none()
+      py::arg("measure") = py::none(), py::arg("max_steps") = py::none(), py::arg("controller") = py::none()
 #define RIGIDDYN_STEP_ARGS                                                                                  \
   py::arg("model"), py::arg("state"), py::arg("dt"), py::arg("method") = py::none(), py::arg("loads") = py::none(), \
       py::arg("gravity") = py::none(), py::arg("t") = py::none()

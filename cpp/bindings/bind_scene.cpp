@@ -6,6 +6,7 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -21,6 +22,8 @@
 #include "scene_run.hpp"
 #include "tolerance_run.hpp"
 #include "rigiddyn/scene/compile.hpp"
+#include "rigiddyn/scene/control_laws.hpp"
+#include "rigiddyn/scene/controller.hpp"
 #include "rigiddyn/scene/scene_order.hpp"
 #include "rigiddyn/scene/simulate_scene.hpp"
 
@@ -714,12 +717,92 @@ py::object simulate_scene_to_tolerance(py::handle model, py::handle method, cons
   return result;
 }
 
+// The row-major (n, width) array of `values`.
+py::array_t<double> rows(const std::vector<double>& values, py::ssize_t width) {
+  py::array_t<double> out({static_cast<py::ssize_t>(values.size()) / width, width});
+  std::copy(values.begin(), values.end(), out.mutable_data());
+  return out;
+}
+
+// The shipped law (scene/control_laws.hpp) of a rigiddyn.control.BDot or PDAttitude `law` (checked by its Python
+// constructor) on `scene`, or none for any other law (a PDAttitude with a callable target included): those run in
+// Python. ValueError naming controller.law.body for a body out of range.
+std::optional<ControlLaw> shipped_law(py::handle law, const Scene& scene) {
+  const py::module_ control = py::module_::import("rigiddyn.control");
+  const bool bdot = py::type::of(law).is(control.attr("BDot")), pd = py::type::of(law).is(control.attr("PDAttitude"));
+  if (!bdot && !pd) return std::nullopt;
+  const int body = py_io::as_int(law.attr("body"), "controller.law.body", 0);
+  if (body >= static_cast<int>(scene.bodies.size())) {
+    py_io::throw_value_error("controller.law.body", "a body index in [0, " + std::to_string(scene.bodies.size()) + ")",
+                             std::to_string(body));
+  }
+  if (bdot) {
+    const MagneticDipoleTerm field(law.attr("dipole").cast<MagneticDipole>(), scene.bodies, "controller.law.dipole");
+    const py::object m_max = law.attr("m_max");
+    const double saturation = m_max.is_none() ? std::numeric_limits<double>::infinity() : m_max.cast<double>();
+    const auto rate = law.attr("rate").cast<std::string>() == "gyro" ? BDotLaw::Rate::gyro : BDotLaw::Rate::difference;
+    return ControlLaw(BDotLaw(law.attr("gain").cast<double>(), field, law.attr("element").cast<int>(), body, saturation, rate));
+  }
+  const py::object target = law.attr("q_target_WB");
+  if (PyCallable_Check(target.ptr())) return std::nullopt;
+  using Rows = py::array_t<double, py::array::c_style | py::array::forcecast>;
+  std::optional<Eigen::Quaterniond> q_target_WB;
+  if (!py::isinstance<py::str>(target)) {  // else 'lvlh'
+    const Rows q(target);
+    if (q.size() != 4) py_io::throw_value_error("controller.law.q_target_WB", "4 values (x, y, z, w)", std::to_string(q.size()));
+    q_target_WB = Eigen::Quaterniond(q.data()[3], q.data()[0], q.data()[1], q.data()[2]);
+  }
+  const Rows P(law.attr("_allocation"));  // (nw, 3), checked by PDAttitude
+  const Eigen::MatrixXd allocation =
+      Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(P.data(), P.shape(0), 3);
+  return ControlLaw(PDAttitudeLaw(law.attr("k_p").cast<double>(), law.attr("k_d").cast<double>(), allocation,
+                                  q_target_WB, body));
+}
+
+// The C++ Controller of a rigiddyn.Controller (rigiddyn/control.py, which checks the law's commands) on `scene`: its
+// period, and a shipped law in C++ (shipped_law: without gyro noise) or a law that takes the GIL and calls its
+// _sample(t, p_W, q_WB, v_W, w_B, wheel_speed) -> (wheel_torque or None, [(element, value (3,)), ...]). The Python
+// object outlives the run (the caller holds it).
+Controller as_controller(py::handle controller, const Scene& scene) {
+  if (!py::isinstance(controller, py::module_::import("rigiddyn.control").attr("Controller"))) {
+    py_io::throw_type_error("controller", "a rigiddyn.Controller or None", controller);
+  }
+  Controller out;
+  out.period = py_io::as_scalar(controller.attr("period"), "controller.period");
+  if (controller.attr("w_B_noise").cast<double>() == 0.0) {
+    if (std::optional<ControlLaw> law = shipped_law(controller.attr("law"), scene)) {
+      out.law = std::move(*law);
+      return out;
+    }
+  }
+  out.law = [sample = py::object(controller.attr("_sample"))](const SampledState& s) {
+    py::gil_scoped_acquire gil;
+    const py::tuple r = sample(s.t, rows(s.p_W, 3), rows(s.q_WB, 4), rows(s.v_W, 3), rows(s.w_B, 3),
+                               rows(s.wheel_speed, 1).attr("ravel")())
+                            .cast<py::tuple>();
+    ActuatorCommands c;
+    if (!r[0].is_none()) {
+      for (const py::handle u : r[0]) c.wheel_torque.push_back(u.cast<double>());
+    }
+    for (const py::handle item : r[1]) {
+      const py::tuple command = item.cast<py::tuple>();
+      c.elements.push_back({command[0].cast<int>(), py_io::as_vector3(command[1], "controller command")});
+    }
+    return c;
+  };
+  return out;
+}
+
 py::object simulate_scene_py(py::handle model, py::handle initial, py::handle dt, py::handle steps, py::handle method,
                              py::handle record_every, py::handle loads, py::handle gravity, py::handle t0,
                              py::handle scalar_first, py::handle progress, py::handle duration, py::handle error,
-                             py::handle accuracy_level, const ToleranceHandles& to) {
+                             py::handle accuracy_level, const ToleranceHandles& to, py::handle controller) {
   refuse_body_arguments(loads, gravity);
   const bool tolerance_given = !to.tolerance.is_none();
+  if (tolerance_given && !controller.is_none()) {
+    py_io::throw_value_error("tolerance", "None with a controller (its samples fix the steps' splits; pass dt=)",
+                             py::str(to.tolerance).cast<std::string>());
+  }
   SimulationOptions o;
   if (!tolerance_given) {  // its checks of dt, steps and duration (as_tolerance_args otherwise)
     as_tolerance_args(to.tolerance, to.measure, to.max_steps, dt, steps, duration, error, ErrorMeasure::attitude);
@@ -734,6 +817,8 @@ py::object simulate_scene_py(py::handle model, py::handle initial, py::handle dt
   const CompiledSceneHandle h = compiled_for(model, method);
   o.method = h.method;
   const std::vector<BodyState> initial_states = as_scene_states(initial, h.scene, "initial");
+  const std::optional<Controller> control =
+      controller.is_none() ? std::nullopt : std::optional<Controller>(as_controller(controller, h.scene));
   if (tolerance_given) {
     const auto a = as_tolerance_args(to.tolerance, to.measure, to.max_steps, dt, steps, duration, error,
                                      default_scene_measure(h.scene));
@@ -745,8 +830,9 @@ py::object simulate_scene_py(py::handle model, py::handle initial, py::handle dt
   std::optional<GlobalErrorEstimate> estimate;
   {
     py::gil_scoped_release release;  // a PythonForce takes it back for each of its calls
-    r = simulate(*h.compiled, initial_states, o);
-    if (estimate_error && !r.interrupted) {  // at the order the compiled scene has (scene_order.hpp)
+    r = control ? simulate(*h.compiled, initial_states, o, *control) : simulate(*h.compiled, initial_states, o);
+    // at the order the compiled scene has (scene_order.hpp); none for a controlled run (its law would be sampled again)
+    if (estimate_error && !r.interrupted && !control) {
       const auto run = [&](const SimulationOptions& coarse) { return simulate(*h.compiled, initial_states, coarse); };
       estimate = global_error(r, o, scene_order(*h.compiled), interruptible(run, r.interrupted), opaque_force(*h.compiled));
     }

@@ -64,7 +64,7 @@ pybind11::object simulate_scene_py(pybind11::handle model, pybind11::handle init
                                    pybind11::handle loads, pybind11::handle gravity, pybind11::handle t0,
                                    pybind11::handle scalar_first, pybind11::handle progress,
                                    pybind11::handle duration, pybind11::handle error, pybind11::handle accuracy_level,
-                                   const ToleranceHandles& to);
+                                   const ToleranceHandles& to, pybind11::handle controller);
 pybind11::object step_scene_py(pybind11::handle model, pybind11::handle state, pybind11::handle dt,
                                pybind11::handle method, pybind11::handle loads, pybind11::handle gravity,
                                pybind11::handle t);

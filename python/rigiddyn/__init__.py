@@ -15,6 +15,8 @@ from .scene_file import load_scene
 from .stability import StabilityWarning
 from ._balance import AccuracyWarning, Balance
 from .work_precision import TradeoffResult, tradeoff  # the function; its module is rigiddyn.work_precision
+from . import control
+from .control import Controller, SampledState
 from .dispersion import DispersionWarning, monte_carlo  # the function; its module, rigiddyn.dispersion, holds the dispersions
 
 __version__: str = _core.__version__
@@ -24,3 +26,4 @@ __all__ += ["to_scipy", "from_scipy", "Problem", "load_problem", "StabilityWarni
             "load_scene"]
 __all__ += ["AccuracyWarning", "Balance"]
 __all__ += ["monte_carlo", "DispersionWarning"]  # monte_carlo: the function (rigiddyn.dispersion: Normal, ...)
+__all__ += ["Controller", "SampledState"]  # rigiddyn.control also holds the shipped laws BDot, PDAttitude

@@ -11164,10 +11164,10 @@ def semi_latus_rectum(a: float | numpy.typing.ArrayLike, e: float | numpy.typing
     21000000.0
     """
 @typing.overload
-def simulate(model: Particle | PlanarBody | RigidBody, initial: typing.Any, dt: float | _Quantity | None = None, steps: int | None = None, method: _MethodName | None = None, record_every: int = 1, loads: AppliedLoad | collections.abc.Sequence[AppliedLoad] | None = None, gravity: bool | numpy.typing.ArrayLike | None = None, t0: float | _Quantity = 0.0, scalar_first: bool = False, progress: collections.abc.Callable[..., typing.Any] | None = None, *, duration: float | _Quantity | None = None, error: bool = True, accuracy_level: float | None = 0.001, tolerance: float | _Quantity | None = None, measure: str | None = None, max_steps: int | None = None) -> SimulationResult:
+def simulate(model: Particle | PlanarBody | RigidBody, initial: typing.Any, dt: float | _Quantity | None = None, steps: int | None = None, method: _MethodName | None = None, record_every: int = 1, loads: AppliedLoad | collections.abc.Sequence[AppliedLoad] | None = None, gravity: bool | numpy.typing.ArrayLike | None = None, t0: float | _Quantity = 0.0, scalar_first: bool = False, progress: collections.abc.Callable[..., typing.Any] | None = None, *, duration: float | _Quantity | None = None, error: bool = True, accuracy_level: float | None = 0.001, tolerance: float | _Quantity | None = None, measure: str | None = None, max_steps: int | None = None, controller: typing.Any = None) -> SimulationResult:
     ...
 @typing.overload
-def simulate(model: PivotedBody | PivotedPlanarBody | Gyrostat | Scene | CompiledScene, initial: typing.Any, dt: float | _Quantity | None = None, steps: int | None = None, method: _MethodName | None = None, record_every: int = 1, loads: AppliedLoad | collections.abc.Sequence[AppliedLoad] | None = None, gravity: bool | numpy.typing.ArrayLike | None = None, t0: float | _Quantity = 0.0, scalar_first: bool = False, progress: collections.abc.Callable[..., typing.Any] | None = None, *, duration: float | _Quantity | None = None, error: bool = True, accuracy_level: float | None = 0.001, tolerance: float | _Quantity | None = None, measure: str | None = None, max_steps: int | None = None) -> SceneResult:
+def simulate(model: PivotedBody | PivotedPlanarBody | Gyrostat | Scene | CompiledScene, initial: typing.Any, dt: float | _Quantity | None = None, steps: int | None = None, method: _MethodName | None = None, record_every: int = 1, loads: AppliedLoad | collections.abc.Sequence[AppliedLoad] | None = None, gravity: bool | numpy.typing.ArrayLike | None = None, t0: float | _Quantity = 0.0, scalar_first: bool = False, progress: collections.abc.Callable[..., typing.Any] | None = None, *, duration: float | _Quantity | None = None, error: bool = True, accuracy_level: float | None = 0.001, tolerance: float | _Quantity | None = None, measure: str | None = None, max_steps: int | None = None, controller: typing.Any = None) -> SceneResult:
     """
     Integrate a body or a scene over fixed steps and record its motion.
     
@@ -11235,6 +11235,13 @@ def simulate(model: PivotedBody | PivotedPlanarBody | Gyrostat | Scene | Compile
     max_steps : int, keyword-only, optional
         The cost cap of a run to a tolerance: no run (the final run and its refinement) of more steps, >= 4.
         None (the default): 10_000_000.
+    controller : Controller, keyword-only, optional
+        A digital controller (rigiddyn.Controller) of a Scene, CompiledScene, pivoted body or Gyrostat: its law is
+        called with the GIL at t0 + k controller.period, k = 0, 1, ... before the end of the run, with the state of every
+        body there, and its actuator commands (gyrostat wheel torques, MagneticDipole dipoles, ScheduledLoads thrusts)
+        are held until the next sample; the steps are split at the samples, as at switch times, so every method keeps
+        its order. result.error is None (the estimate would sample the law again); tolerance is refused. None (the
+        default): no controller.
     
     Returns
     -------
@@ -11255,7 +11262,8 @@ def simulate(model: PivotedBody | PivotedPlanarBody | Gyrostat | Scene | Compile
         nearest name), record_every < 1, a recording larger than the memory available (record_every, with both
         figures), a quantity of another dimension, loads or gravity for a scene, accuracy_level not finite and > 0;
         with tolerance: tolerance not finite and > 0, dt or steps given too, no duration, error False, an unknown
-        measure (with the nearest name), max_steps < 4.
+        measure (with the nearest name), max_steps < 4; with a controller: tolerance given, a body outside a scene, or
+        a bad command (named by the controller).
     ToleranceError
         A ValueError: the tolerance cannot be met within max_steps, the refined run's certificate still fails, or the
         scene has a PythonForce; it carries the measured error, the choice and the best result (see ToleranceError).

@@ -114,6 +114,8 @@ EXCLUDED = {
     "dispersion.Dispersion": "the base class of the dispersions (a custom one subclasses it; its subclasses are fuzzed)",
     "dispersion.Statistics": "the record monte_carlo's statistics() returns (a frozen dataclass holding what it is "
                               "given; its values are checked where statistics() makes them)",
+    "SampledState": "the record a Controller's law gets at each sample (a frozen dataclass holding what the run "
+                    "gives it: the state there, non-finite once a run diverges; the law's commands are checked)",
     **{f"dispersion.{cls}.{hook}": _HOOK for cls in ("Dispersion", "Normal", "Uniform", "UniformRotation",
                                                        "RotationNormal", "InertiaDispersion", "LoadDispersion")
        for hook in ("bind", "draw")},

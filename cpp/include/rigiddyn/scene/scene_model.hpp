@@ -78,6 +78,12 @@ struct has_set_time : std::false_type {};
 template <class Term>
 struct has_set_time<Term, std::void_t<decltype(std::declval<Term&>().set_time(0.0))>> : std::true_type {};
 
+// Whether a term takes a controller's command (command(value): MagneticDipole, ScheduledLoads; scene/controller.hpp).
+template <class Term, class = void>
+struct has_command : std::false_type {};
+template <class Term>
+struct has_command<Term, std::void_t<decltype(std::declval<Term&>().command(Eigen::Vector3d()))>> : std::true_type {};
+
 // Whether a body's slot records coordinates of its own (record_internal: the gyrostat's wheel speeds).
 template <class Slot, class = void>
 struct has_internal_record : std::false_type {};
@@ -165,6 +171,26 @@ class BasicSceneModel {
           },
           term);
     }
+  }
+
+  // A controller's commands (scene/controller.hpp), held until the next set_time: the motor torques u [N m] of
+  // every gyrostat wheel, in the scene's order (wheel_count() of them); element e's input (command_element:
+  // MagneticDipole's m_B [A m²], ScheduledLoads' force f_B [N] in B), when it takes one (takes_command).
+  void command_wheel_torques(const std::vector<double>& u) {
+    std::size_t i = 0;
+    for (auto& s : std::get<std::vector<detail::GyrostatSlot>>(slots_)) {
+      for (double& u_k : s.u) u_k = u[i++];
+    }
+  }
+  bool takes_command(std::size_t e) const {
+    return std::visit([](const auto& term) { return detail::has_command<std::decay_t<decltype(term)>>::value; }, terms_[e]);
+  }
+  void command_element(std::size_t e, const Eigen::Vector3d& value) {
+    std::visit(
+        [&](auto& term) {
+          if constexpr (detail::has_command<std::decay_t<decltype(term)>>::value) term.command(value);
+        },
+        terms_[e]);
   }
 
   // ẏ: (v, a) per body, q̇ = ½ q ⊗ (ω_B, 0) for attitudes, dt/dt = 1, dW_e/dt = P_e, dE_b/dt = the mass-flow

@@ -119,6 +119,9 @@ class MagneticDipoleTerm {
     return power;
   }
 
+  // A controller's command (scene/controller.hpp): the dipole m_B [A m²] of every listed body, from now on.
+  void command(const Eigen::Vector3d& m_B) { m_B_ = m_B; }
+
   // V = Σ −m_W·B(p_W) [J]
   double potential(const std::vector<BodyKinematics>& kinematics) const {
     double V = 0.0;

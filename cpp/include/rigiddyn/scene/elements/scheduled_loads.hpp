@@ -94,6 +94,13 @@ class ScheduledLoadsTerm {
   // Sets the loads of the piece that contains t [s] (between switch times the loads are constant).
   void set_time(double t) { loads_ = loads_at(schedule_, t); }
 
+  // A controller's command (scene/controller.hpp): the force f_B [N] in B at point_B alone, until the next one
+  // (a thruster; the schedule's loads are replaced).
+  void command(const Eigen::Vector3d& f_B) {
+    loads_ = ComLoads{};
+    loads_.f_B = f_B;
+  }
+
   // f_W = f_W + R f_B, τ_B = τ_B + Rᵀ τ_W + r_B × Rᵀ f_W on the body (R = R_WB of its unit attitude);
   // returns f_W·v_W + τ_B·ω_B [W].
   double add_wrenches(double /*t*/, const std::vector<BodyKinematics>& kinematics, std::vector<BodyWrench>& wrenches) const {

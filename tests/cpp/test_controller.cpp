@@ -1,0 +1,150 @@
+// A Controller of a scene run (scene/controller.hpp) and its shipped laws (scene/control_laws.hpp): the law sees
+// t0 + k period exactly; a held thrust is integrated as exactly as the piecewise-constant load it is (no step
+// straddles a sample); held wheel torques spin a gyrostat as the closed form says; bad inputs are named.
+#include <gtest/gtest.h>
+
+#include "rigiddyn/scene/control_laws.hpp"
+#include "rigiddyn/scene/controller.hpp"
+#include "rigiddyn/scene/simulate_scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace rigiddyn {
+namespace {
+
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+// A 2 kg rigid body with a thruster (a ScheduledLoads without a schedule: the controller commands it).
+Scene thruster_scene() {
+  Scene scene;
+  scene.bodies = {RigidBody(2.0, Eigen::Vector3d(0.5, 0.7, 0.9))};
+  scene.elements.push_back(ScheduledLoads{0, {}, Eigen::Vector3d::Zero()});
+  return scene;
+}
+
+SimulationOptions rk4(double dt, std::int64_t steps, double t0 = 0.0) {
+  SimulationOptions o;
+  o.method = Method::rk4;
+  o.dt = dt;
+  o.steps = steps;
+  o.t0 = t0;
+  return o;
+}
+
+// The message of the std::invalid_argument that f throws ("" when it throws none).
+template <class F>
+std::string message_of(F&& f) {
+  try {
+    f();
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Controller, LawSeesTheExactSampleTimes) {
+  std::vector<double> seen;
+  const Controller controller{0.3, [&](const SampledState& s) {
+                                seen.push_back(s.t);
+                                return ActuatorCommands{};
+                              }};
+  const double t0 = 0.7;
+  simulate(compile_scene(thruster_scene(), Method::rk4), {RigidBodyState{}}, rk4(0.125, 40, t0), controller);
+  std::vector<double> expected;  // the run ends at t0 + 5 s: samples k = 0 .. 16
+  for (int k = 0; k <= 16; ++k) expected.push_back(t0 + static_cast<double>(k) * 0.3);
+  EXPECT_EQ(seen, expected);
+}
+
+// f_k = (k + 1) N held on [t_k, t_k+1), period 0.3 s, dt 0.2 s: v is piecewise linear and rk4 integrates each
+// piece exactly, so v(t) = (1/m) [T k (k + 1)/2 + (k + 1)(t − k T)] to round-off (4 eps |v| a step).
+TEST(Controller, HeldThrustIsIntegratedExactly) {
+  const double period = 0.3, m = 2.0;
+  const Controller controller{period, [&](const SampledState& s) {
+                                const double k = std::round(s.t / period);
+                                return ActuatorCommands{{}, {{0, Eigen::Vector3d(k + 1.0, 0.0, 0.0)}}};
+                              }};
+  const std::int64_t steps = 30;
+  const SceneSimulation r =
+      simulate(compile_scene(thruster_scene(), Method::rk4), {RigidBodyState{}}, rk4(0.2, steps), controller);
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    const double t = r.t[i], k = std::floor(t / period + 1e-9);
+    const double v = (period * k * (k + 1.0) / 2.0 + (k + 1.0) * (t - k * period)) / m;
+    EXPECT_NEAR(r.v_W[3 * i], v, 4.0 * kEps * static_cast<double>(steps) * std::max(v, 1.0)) << "t = " << t;
+  }
+}
+
+// A motor torque u held on the z wheel of a gyrostat at rest: A_zz ω̇_z = −u, so ω_z = −u t / A_zz, exact for rk4
+// (linear in t); the wheel spins up the other way and the total angular momentum stays zero.
+TEST(Controller, HeldWheelTorquesSpinTheGyrostat) {
+  const RigidBody body(100.0, Eigen::Vector3d(10.0, 12.0, 15.0));
+  Wheel wheel;
+  wheel.inertia = 0.05;
+  const Gyrostat sat(body, {wheel});
+  Scene scene;
+  scene.bodies = {sat};
+  const double u = 0.01;
+  const Controller controller{0.25, [&](const SampledState& s) {
+                                EXPECT_EQ(s.wheel_speed.size(), 1u);
+                                return ActuatorCommands{{u}, {}};
+                              }};
+  GyrostatState x0;
+  x0.wheel_speeds = Eigen::VectorXd::Zero(1);
+  const SceneSimulation r = simulate(compile_scene(scene, Method::rk4), {x0}, rk4(0.1, 20), controller);
+  const double A_zz = sat.transverse_inertia()(2, 2);
+  EXPECT_NEAR(r.w_B.back(), -u * r.t.back() / A_zz, 64 * kEps * u * r.t.back() / A_zz);
+  EXPECT_GT(r.wheel_speed.back(), 0.0);
+  // H = R (A ω + h_w) = 0: the sum of two terms of size u t, to their round-off
+  EXPECT_NEAR(r.angular_momentum_W.back(), 0.0, 16 * kEps * u * r.t.back());
+}
+
+TEST(Controller, BadInputsAreNamed) {
+  const CompiledScene compiled = compile_scene(thruster_scene(), Method::rk4);
+  const auto run = [&](const Controller& c) { simulate(compiled, {RigidBodyState{}}, rk4(0.1, 10), c); };
+  const auto none = [](const SampledState&) { return ActuatorCommands{}; };
+  EXPECT_NE(message_of([&] { run(Controller{0.0, none}); }).find("controller.period: expected a finite number > 0"),
+            std::string::npos);
+  EXPECT_NE(message_of([&] { run(Controller{0.1, {}}); }).find("controller.law: expected a law"), std::string::npos);
+  const auto commands = [&](ActuatorCommands c) { return Controller{0.25, [c](const SampledState&) { return c; }}; };
+  EXPECT_NE(message_of([&] { run(commands({{1.0}, {}})); })
+                .find("controller.law(t=0): expected wheel_torque of 0 values (one per gyrostat wheel), got 1"),
+            std::string::npos);
+  EXPECT_NE(message_of([&] { run(commands({{}, {{2, Eigen::Vector3d::Zero()}}})); })
+                .find("controller.law(t=0)[2]: expected the index of an element in [0, 1)"),
+            std::string::npos);
+  EXPECT_NE(message_of([&] { run(commands({{}, {{0, Eigen::Vector3d(NAN, 0.0, 0.0)}}})); })
+                .find("controller.law(t=0)[0]: expected finite values"),
+            std::string::npos);
+  Scene gravity;
+  gravity.bodies = {RigidBody(1.0, Eigen::Vector3d(1.0, 1.0, 1.0))};
+  gravity.elements.push_back(UniformGravity{Eigen::Vector3d(0.0, 0.0, -9.81), {}});
+  EXPECT_NE(message_of([&] {
+              simulate(compile_scene(gravity, Method::rk4), {RigidBodyState{}}, rk4(0.1, 10),
+                       commands({{}, {{0, Eigen::Vector3d::Zero()}}}));
+            }).find("expected a MagneticDipole or a ScheduledLoads"),
+            std::string::npos);
+}
+
+// The PD law's error is the rotation vector to first order, 2 sin(angle/2) about the axis, and its wheel torques
+// make the body torque −k_p e − k_d ω through the allocation.
+TEST(Controller, PDAttitudeLawCommandsThePDTorque) {
+  const Eigen::Quaterniond q_WB(Eigen::AngleAxisd(0.1, Eigen::Vector3d::UnitX()));
+  const Eigen::Vector3d e = PDAttitudeLaw::error(q_WB, Eigen::Quaterniond::Identity());
+  EXPECT_NEAR(e.x(), 2.0 * std::sin(0.05), 4 * kEps);
+  EXPECT_EQ(e.y(), 0.0);
+  const PDAttitudeLaw law(2.0, 3.0, -Eigen::MatrixXd::Identity(3, 3), Eigen::Quaterniond::Identity(), 0);
+  SampledState s;
+  s.p_W = {0.0, 0.0, 0.0}, s.v_W = {0.0, 0.0, 0.0}, s.w_B = {0.0, 0.5, 0.0};
+  s.q_WB = {q_WB.x(), q_WB.y(), q_WB.z(), q_WB.w()};
+  const ActuatorCommands c = law(s);
+  ASSERT_EQ(c.wheel_torque.size(), 3u);
+  EXPECT_NEAR(c.wheel_torque[0], 2.0 * e.x(), 4 * kEps);  // u = −τ: the body's torque is −u
+  EXPECT_NEAR(c.wheel_torque[1], 3.0 * 0.5, 4 * kEps);
+}
+
+}  // namespace
+}  // namespace rigiddyn

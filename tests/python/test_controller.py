@@ -1,0 +1,373 @@
+"""rigiddyn.Controller: a law sampled every period seconds of a scene run, its commands held (zero-order hold).
+
+The samples are switch times of the run loop: the law sees t = t0 + k period exactly, no step straddles a sample
+(a piecewise-constant thrust is integrated as exactly as a ScheduledLoads schedule), rk4 keeps its order 4 on a
+controlled run, and the hold equals the equivalent ScheduledLoads schedule bit for bit. The shipped laws against
+closed forms: B-dot's rate decay exp(-k |B|^2 t / I) on a sphere in a uniform field; the PD pointing loop's small
+error against the exact sampled-data (zero-order hold) solution of A theta'' = tau_k and the continuous
+A theta'' + k_d theta' + k_p theta = 0. Bad inputs are named.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+import rigiddyn as rd
+from rigiddyn.control import BDot, PDAttitude
+
+EPS = np.finfo(float).eps
+
+
+def thruster_scene(point_B=(0.0, 0.0, 0.0)):
+    """A rigid body (m = 2 kg) with a thruster (a ScheduledLoads with no schedule: the controller commands it)."""
+    body = rd.RigidBody(2.0, [0.5, 0.7, 0.9])
+    return rd.Scene([body], elements=[rd.ScheduledLoads(body=0, loads=[], point_B=point_B)])
+
+
+def test_law_sees_exact_sample_times():
+    """t_k = t0 + k period for every sample before the end of the run, the period not a multiple of dt."""
+    seen = []
+
+    def law(state):
+        seen.append(state.t)
+        return {}
+
+    t0, period, dt, steps = 0.7, 0.3, 0.125, 40  # the run ends at t0 + 5 s: samples k = 0 .. 16
+    rd.simulate(thruster_scene(), [rd.RigidBodyState()], dt, steps, t0=t0, controller=rd.Controller(period, law))
+    assert seen == [t0 + k * period for k in range(17)]
+
+
+def test_state_is_the_state_at_the_sample():
+    """The sampled state is the run's state at t_k: a body spinning at a constant rate about z (no load) has turned
+    by w t_k there (rk4's error at dt = 0.01 on this free rotation: below 1e-12 rad)."""
+    angles = []
+
+    def law(state):
+        q = state.q_WB[0]
+        assert not state.q_WB.flags.writeable
+        angles.append((state.t, 2.0 * math.atan2(q[2], q[3])))
+        return {}
+
+    rd.simulate(thruster_scene(), [rd.RigidBodyState(w_B=(0.0, 0.0, 0.5))], 0.01, duration=2.0,
+                controller=rd.Controller(0.37, law))
+    for t, angle in angles:
+        assert angle == pytest.approx(0.5 * t, abs=1e-12)
+
+
+def test_no_step_straddles_a_sample():
+    """A thrust f_k = (k + 1) N held on [t_k, t_k+1), period 0.3 s, dt 0.2 s (the samples off the step grid): the
+    velocity is piecewise linear in t and rk4 integrates each piece exactly, so v and p equal their closed forms to
+    round-off (a step across a sample would err by O(dt |f|/m) = 0.1 m/s). Round-off: ~ 4 eps |v| per step."""
+    period, dt, steps, m = 0.3, 0.2, 30, 2.0
+
+    def law(state):
+        k = round((state.t - 0.0) / period)
+        return {0: ((k + 1) * 1.0, 0.0, 0.0)}
+
+    result = rd.simulate(thruster_scene(), [rd.RigidBodyState()], dt, steps, controller=rd.Controller(period, law))
+    t = result.t
+    k = np.floor(t / period + 1e-9)  # the pieces before t: f = j + 1 on [j T, (j + 1) T)
+    # v(t) = (1/m) [sum_{j<k} (j + 1) T + (k + 1)(t - k T)], p the integral of v
+    v = (period * k * (k + 1) / 2 + (k + 1) * (t - k * period)) / m
+    p = (period**2 * ((k - 1) * k * (k + 1) / 6 + k * (k + 1) / 4) + period * k * (k + 1) / 2 * (t - k * period)
+         + (k + 1) * (t - k * period) ** 2 / 2) / m
+    np.testing.assert_allclose(result.v_W[:, 0, 0], v, rtol=0, atol=4 * EPS * steps * v.max())
+    np.testing.assert_allclose(result.p_W[:, 0, 0], p, rtol=0, atol=4 * EPS * steps * p.max())
+
+
+def test_hold_equals_the_scheduled_loads_run_bit_for_bit():
+    """A thruster off the centre of mass (a torque too) on a tumbling body, commanded f_k in B at each sample, is
+    the same run as the ScheduledLoads schedule of the same forces on [t_k, t_k+1): same switch times, same loads,
+    same arithmetic. A second body keeps both scenes on the generic model (one body would take the one-body path)."""
+    period, dt, steps = 0.25, 0.1, 50
+    forces = [(math.sin(k), math.cos(2.0 * k), 0.5) for k in range(21)]
+    point_B = (0.1, -0.05, 0.2)
+    bodies = [rd.RigidBody(2.0, [0.5, 0.7, 0.9]), rd.Particle(1.0)]
+    schedule = [rd.AppliedLoad(force=f, frame="body", t_start=k * period, t_end=(k + 1) * period)
+                for k, f in enumerate(forces)]
+    scheduled = rd.Scene(bodies, elements=[rd.ScheduledLoads(body=0, loads=schedule, point_B=point_B)])
+    commanded = rd.Scene(bodies, elements=[rd.ScheduledLoads(body=0, loads=[], point_B=point_B)])
+    initial = [rd.RigidBodyState(w_B=(0.3, -0.2, 0.5)), rd.ParticleState()]
+
+    def law(state):
+        return {0: forces[round(state.t / period)]}
+
+    a = rd.simulate(scheduled, initial, dt, steps, accuracy_level=None)
+    b = rd.simulate(commanded, initial, dt, steps, controller=rd.Controller(period, law), accuracy_level=None)
+    for name in ("p_W", "q_WB", "v_W", "w_B", "work"):
+        np.testing.assert_array_equal(getattr(b, name), getattr(a, name), err_msg=name)
+
+
+def sat_with_wheels():
+    """A satellite (inertia 10, 12, 15 kg m^2 with its wheels locked) with three wheels (J = 0.05 kg m^2) on its
+    principal axes."""
+    body = rd.RigidBody(100.0, [10.0, 12.0, 15.0])
+    return rd.Gyrostat(body, [rd.Wheel(axis, 0.05) for axis in np.eye(3)])
+
+
+def test_rk4_keeps_order_four_under_a_controller():
+    """A PD slew of 0.6 rad about an oblique axis (nonlinear: gyroscopic coupling, wheel momentum), sampled every
+    0.3 s (off the step grid): the rk4 error of the final state against a run at 0.1/64 s (its own error 4096 times
+    below the finest run's) drops by 2^4 = 16 per halving of dt. The commands depend on the sampled states, which
+    differ between the runs by the method's error O(dt^4): the order is kept. The ratio is 16 (1 + c dt), the next
+    term of the error expansion; at dt <= 0.1 s (|w| dt < 1e-2) within 15 % of 16."""
+    sat = sat_with_wheels()
+    law = PDAttitude(2.0, 6.0, np.eye(3))
+    axis = np.array([1.0, 2.0, 2.0]) / 3.0
+    q0 = np.append(math.sin(0.3) * axis, math.cos(0.3))
+    initial = rd.GyrostatState(q_WB=q0, w_B=(0.01, -0.02, 0.015), wheel_speeds=[0.0, 0.0, 0.0])
+
+    def final(dt):
+        r = rd.simulate(sat, initial, dt, duration=8.0, method="rk4", error=False,
+                        controller=rd.Controller(0.3, law))
+        return np.concatenate([r.w_B[-1, 0], r.q_WB[-1, 0], r.wheel_speed[-1]])
+
+    reference = final(0.1 / 64)
+    errors = [np.abs(final(dt) - reference).max() for dt in (0.1, 0.05, 0.025)]
+    for coarse, fine in zip(errors, errors[1:]):
+        assert 16 * 0.85 < coarse / fine < 16 * 1.15, errors
+
+
+def test_bdot_rate_decays_as_its_closed_form():
+    """B-dot (gyro rate form) on a sphere of inertia I in a uniform field B along z, w0 normal to B: the torque
+    m x B_B = -k |B|^2 w_perp gives |w_perp(t)| = |w0| exp(-lambda t), lambda = k |B|^2 / I (w_par = 0 stays 0).
+    Held over a period, the decay is (1 - lambda T) per period instead of exp(-lambda T): |ln| grows by
+    lambda^2 T t / 2 (to first order). The hold keeps m fixed in B while B_B turns by |w| T: the torque's direction
+    errs by O(|w| T), which turns w_perp about B without changing its size to first order, and its size by
+    O((|w| T)^2) per period: lambda t (|w0| T)^2."""
+    I, B, k, T = 0.1, 3e-5, 1e6, 0.5
+    lam = k * B**2 / I
+    field = rd.MagneticDipole(m_B=(0.0, 0.0, 0.0), B_W=(0.0, 0.0, B))
+    scene = rd.Scene([rd.RigidBody(10.0, [I, I, I])], elements=[field])
+    w0 = np.array([0.03, -0.04, 0.0])
+    result = rd.simulate(scene, [rd.RigidBodyState(w_B=w0)], 0.05, duration=300.0, record_every=20,
+                         controller=rd.Controller(T, BDot(k, field, element=0)))
+    w_W = np.einsum("nij,nj->ni", rd.quat_to_matrix(result.q_WB[:, 0]), result.w_B[:, 0])
+    t = result.t
+    w_perp = np.linalg.norm(w_W[:, :2], axis=1)
+    closed = np.linalg.norm(w0) * np.exp(-lam * t)
+    bound = lam**2 * T * t / 2 + lam * t * (np.linalg.norm(w0) * T) ** 2 + 1e-12  # + round-off at t = 0
+    assert np.all(np.abs(np.log(w_perp / closed)) <= bound)
+    assert w_perp[-1] < 0.1 * w_perp[0]  # it detumbles: lambda t = 2.7
+
+
+def test_bdot_difference_form_detumbles():
+    """The finite-difference estimate (B_k - B_k-1)/T needs no gyro: it damps the same rate, its command zero at the
+    first sample (ln errs by lambda T) and its estimate the rate at t_k - T/2, when w_perp was larger by
+    lambda T / 2 (lambda^2 T t / 2 more than the gyro form's bound above)."""
+    I, B, k, T = 0.1, 3e-5, 1e6, 0.5
+    lam = k * B**2 / I
+    field = rd.MagneticDipole(m_B=(0.0, 0.0, 0.0), B_W=(0.0, 0.0, B))
+    scene = rd.Scene([rd.RigidBody(10.0, [I, I, I])], elements=[field])
+    w0 = np.array([0.03, -0.04, 0.0])
+    result = rd.simulate(scene, [rd.RigidBodyState(w_B=w0)], 0.05, duration=300.0, record_every=20,
+                         controller=rd.Controller(T, BDot(k, field, element=0, rate="difference")))
+    w_W = np.einsum("nij,nj->ni", rd.quat_to_matrix(result.q_WB[:, 0]), result.w_B[:, 0])
+    t = result.t
+    w_perp = np.linalg.norm(w_W[:, :2], axis=1)
+    closed = np.linalg.norm(w0) * np.exp(-lam * t)
+    bound = lam * T + lam**2 * T * t + lam * t * (np.linalg.norm(w0) * T) ** 2
+    assert np.all(np.abs(np.log(w_perp / closed)) <= bound)
+
+
+def pd_response(k_p, k_d, T, theta0, duration):
+    """The PD loop about z from theta0 at rest: (t, theta(t)) of the run, and A = the transverse inertia about z."""
+    sat = sat_with_wheels()
+    A = sat.transverse_inertia[2, 2]
+    q0 = (0.0, 0.0, math.sin(theta0 / 2), math.cos(theta0 / 2))
+    r = rd.simulate(sat, rd.GyrostatState(q_WB=q0, wheel_speeds=[0.0, 0.0, 0.0]), T / 10, duration=duration,
+                    error=False, controller=rd.Controller(T, PDAttitude(k_p, k_d, np.eye(3))))
+    q = r.q_WB[:, 0]
+    return r.t, 2.0 * np.arctan2(q[:, 2], q[:, 3]), A
+
+
+def test_pd_small_error_against_the_sampled_data_solution():
+    """A small error (1e-3 rad) about z: one-axis motion (w and the wheel's momentum along z: no gyroscopic torque),
+    A theta'' = tau_k = -k_p e_k - k_d w_k held on [t_k, t_k+1), e = 2 sin(theta/2). Its exact solution at the
+    samples is the linear recurrence theta_k+1 = theta_k + w_k T + tau_k T^2/(2A), w_k+1 = w_k + tau_k T/A, up to
+    the nonlinearity of e: relative theta^2/24 < 1e-7. rk4 (dt = T/10) integrates the held pieces (quadratic in t)
+    exactly; the bound 1e-7 theta0 holds both."""
+    k_p, k_d, T, theta0 = 3.0, 8.0, 0.1, 1e-3
+    t, theta, A = pd_response(k_p, k_d, T, theta0, 20.0)
+    x, w = theta0, 0.0
+    expected = [x]
+    for _ in range(200):
+        tau = -k_p * x - k_d * w
+        x, w = x + w * T + tau * T**2 / (2 * A), w + tau * T / A
+        expected.append(x)
+    np.testing.assert_allclose(theta[::10], expected, rtol=0, atol=1e-7 * theta0)
+
+
+def test_pd_closed_loop_is_the_damped_oscillator():
+    """Sampled fast (omega_n T = 0.045), the loop is A theta'' + k_d theta' + k_p theta = 0: theta0 e^(-zeta w_n t)
+    (cos w_d t + zeta/sqrt(1-zeta^2) sin w_d t), omega_n = sqrt(k_p/A), zeta = k_d/(2 sqrt(k_p A)). The hold delays
+    the torque by T/2 on average: a phase and damping error of O(omega_n T), bounded by omega_n T theta0."""
+    k_p, k_d, T, theta0 = 3.0, 4.0, 0.1, 1e-3
+    t, theta, A = pd_response(k_p, k_d, T, theta0, 20.0)
+    w_n, zeta = math.sqrt(k_p / A), k_d / (2 * math.sqrt(k_p * A))
+    assert 0.1 < zeta < 1  # underdamped: the oscillation is seen
+    w_d = w_n * math.sqrt(1 - zeta**2)
+    closed = theta0 * np.exp(-zeta * w_n * t) * (np.cos(w_d * t) + zeta / math.sqrt(1 - zeta**2) * np.sin(w_d * t))
+    assert np.abs(theta - closed).max() <= w_n * T * theta0
+
+
+def test_bad_period_and_law_are_named():
+    for period in (0.0, -1.0, math.nan, math.inf):
+        with pytest.raises(ValueError, match="period: expected a finite number > 0"):
+            rd.Controller(period, lambda s: {})
+    with pytest.raises(TypeError, match="law: expected a callable"):
+        rd.Controller(0.1, 3.0)  # type: ignore[arg-type]
+    with pytest.raises(ValueError, match="w_B_noise"):
+        rd.Controller(0.1, lambda s: {}, w_B_noise=-1.0)
+
+
+def run(law, scene=None, **kwargs):
+    scene = scene if scene is not None else thruster_scene()
+    return rd.simulate(scene, [rd.RigidBodyState()], 0.1, 10, controller=rd.Controller(0.25, law), **kwargs)
+
+
+def test_bad_commands_are_named():
+    with pytest.raises(ValueError, match=r"controller.law\(t=0\)\[0\]: expected shape \(3,\)"):
+        run(lambda s: {0: (1.0, 2.0)})
+    with pytest.raises(ValueError, match=r"controller.law\(t=0.25\)\[0\]: expected finite values"):
+        run(lambda s: {0: (math.nan if s.t > 0 else 0.0, 0.0, 0.0)})
+    with pytest.raises(ValueError, match=r"controller.law\(t=0\)\[3\]: expected the index of an element in \[0, 1\)"):
+        run(lambda s: {3: (0.0, 0.0, 0.0)})
+    gravity = rd.Scene([rd.RigidBody(1.0, [1.0, 1.0, 1.0])], elements=[rd.UniformGravity()])
+    with pytest.raises(ValueError, match=r"\[0\]: expected a MagneticDipole or a ScheduledLoads"):
+        run(lambda s: {0: (0.0, 0.0, 0.0)}, gravity)
+    with pytest.raises(ValueError, match=r"expected shape \(0,\) \[N m\]"):
+        run(lambda s: {"wheel_torque": [1.0]})
+    with pytest.raises(ValueError, match="expected the key 'wheel_torque' or an element index"):
+        run(lambda s: {"thrust": (0.0, 0.0, 0.0)})
+    with pytest.raises(TypeError, match="expected a dict of commands"):
+        run(lambda s: [0.0, 0.0, 0.0])
+
+
+def test_a_law_that_raises_stops_the_run():
+    def law(state):
+        if state.t >= 0.5:
+            raise ZeroDivisionError("no attitude estimate")
+        return {}
+
+    with pytest.raises(ZeroDivisionError, match="no attitude estimate") as info:
+        run(law)
+    assert "raised by controller.law(t=0.5)" in info.value.__notes__
+
+
+def test_controller_outside_a_scene_or_with_tolerance_is_refused():
+    with pytest.raises(ValueError, match="controller: expected None for a Particle, PlanarBody or RigidBody"):
+        rd.simulate(rd.RigidBody(1.0, [1.0, 1.0, 1.0]), rd.RigidBodyState(), 0.1, 10,
+                    controller=rd.Controller(0.25, lambda s: {}))
+    with pytest.raises(ValueError, match="tolerance: expected None with a controller"):
+        rd.simulate(thruster_scene(), [rd.RigidBodyState()], duration=1.0, tolerance=1e-6,
+                    controller=rd.Controller(0.25, lambda s: {}))
+    with pytest.raises(TypeError, match="controller: expected a rigiddyn.Controller"):
+        rd.simulate(thruster_scene(), [rd.RigidBodyState()], 0.1, 10, controller=lambda s: {})
+
+
+def test_gyro_noise_is_drawn_from_the_seed():
+    """w_B_noise adds N(0, sigma^2) draws of numpy.random.default_rng(seed) to the sampled w_B: the same seed, the
+    same draws; the law sees the noisy rate, the run's records stay exact (the body at rest stays at rest)."""
+    def noisy_rates(seed):
+        seen = []
+        controller = rd.Controller(0.25, lambda s: seen.append(s.w_B[0].copy()) or {}, w_B_noise=1e-3, seed=seed)
+        r = rd.simulate(thruster_scene(), [rd.RigidBodyState()], 0.1, 10, controller=controller)
+        assert np.all(r.w_B == 0.0)
+        return np.array(seen)
+
+    a, b = noisy_rates(7), noisy_rates(7)
+    np.testing.assert_array_equal(a, b)
+    expected = np.random.default_rng(7).normal(0.0, 1e-3, (len(a), 1, 3))[:, 0]
+    np.testing.assert_array_equal(a, expected)
+
+
+def test_pd_law_allocates_the_torque_to_redundant_wheels():
+    """Four wheels (a pyramid) make the body torque tau_B = -A u by the least-norm u = -pinv(A) tau_B."""
+    axes = np.array([[1.0, 0.0, 1.0], [-1.0, 0.0, 1.0], [0.0, 1.0, 1.0], [0.0, -1.0, 1.0]]) / math.sqrt(2)
+    law = PDAttitude(2.0, 1.0, axes)
+    state = rd.SampledState(0.0, np.zeros((1, 3)), np.array([[0.0, 0.0, 0.0, 1.0]]), np.zeros((1, 3)),
+                            np.array([[0.1, -0.2, 0.3]]), np.zeros(4))
+    u = law(state)["wheel_torque"]
+    np.testing.assert_allclose(-axes.T @ u, -1.0 * state.w_B[0], rtol=0, atol=1e-15)
+
+
+def test_control_module_examples_run():
+    """The examples of rigiddyn.control's laws (not in rigiddyn.__all__, so not collected by test_docstrings)."""
+    import doctest
+
+    import rigiddyn.control
+
+    failures, attempted = doctest.testmod(rigiddyn.control, extraglobs={"np": np, "rd": rd},
+                                          optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
+    assert attempted > 0 and failures == 0
+
+
+def shipped_law_runs():
+    """(name, scene, initial, law, period, dt, duration) of each shipped law's C++ path."""
+    field = rd.MagneticDipole(m_B=(0.0, 0.0, 0.0), B_W=(1e-5, -2e-5, 3e-5))
+    tumbling = rd.Scene([rd.RigidBody(10.0, [0.08, 0.1, 0.12])], elements=[field])
+    w0 = [rd.RigidBodyState(w_B=(0.03, -0.04, 0.02))]
+    scene, initial, _ = rd.load_scene("cubesat_pointing")
+    A = scene.bodies[0].transverse_inertia[0, 0]
+    k_p, k_d = A * 0.05**2, 2 * 0.7 * A * 0.05
+    q = (0.1, -0.2, 0.05, 1.0)
+    return [
+        ("bdot gyro", tumbling, w0, BDot(2e5, field, element=0, m_max=0.05), 0.5, 0.1, 60.0),
+        ("bdot difference", tumbling, w0, BDot(2e5, field, element=0, rate="difference"), 0.5, 0.1, 60.0),
+        ("pd fixed", sat_with_wheels(), rd.GyrostatState(w_B=(0.01, 0.0, -0.01), wheel_speeds=[0.0] * 3),
+         PDAttitude(2.0, 6.0, np.eye(3), q_target_WB=q), 0.2, 0.05, 20.0),
+        ("pd lvlh", scene, initial, PDAttitude(k_p, k_d, np.eye(3), q_target_WB="lvlh"), 0.5, 0.1, 120.0),
+    ]
+
+
+@pytest.mark.parametrize("name, scene, initial, law, period, dt, duration", shipped_law_runs(),
+                         ids=[r[0] for r in shipped_law_runs()])
+def test_shipped_laws_run_in_cpp_as_their_python_reference(monkeypatch, name, scene, initial, law, period, dt,
+                                                             duration):
+    """simulate runs BDot and PDAttitude as C++ laws (scene/control_laws.hpp: no GIL at the samples); a lambda
+    around the same law runs its Python reference. The two evaluate the same formulas in another order (the
+    quaternion rotation, the normalisations): a few ulps per sample, which the contracting loops do not grow:
+    the records agree within samples x 16 eps of their scale."""
+    python = rd.simulate(scene, initial, dt, duration=duration, error=False,
+                         controller=rd.Controller(period, lambda s: law(s)))
+    if "difference" in name:
+        law._last = None  # the Python law remembers its last sample; the C++ one starts afresh each run
+    monkeypatch.setattr(type(law), "__call__", lambda self, s: pytest.fail("the shipped law ran in Python"))
+    core = rd.simulate(scene, initial, dt, duration=duration, error=False, controller=rd.Controller(period, law))
+    samples = duration / period
+    for field in ("q_WB", "w_B", "wheel_speed"):
+        a, b = np.asarray(getattr(core, field)), np.asarray(getattr(python, field))
+        np.testing.assert_allclose(a, b, rtol=0, atol=samples * 16 * EPS * np.abs(b).max(initial=0.0), err_msg=field)
+    # the laws act: the rates change by far more than the tolerance
+    assert np.abs(python.w_B[-1] - python.w_B[0]).max() > 1e3 * samples * 16 * EPS * np.abs(python.w_B).max()
+
+
+def test_bdot_on_the_shipped_cubesat_follows_the_orbit_averaged_decay():
+    """The shipped cubesat_detumbling (an isotropic body, I w_W' = -k (|B|^2 1 - B B^T) w_W, the field of the
+    Earth's dipole turning along a polar orbit): at whole orbits the rate is the orbit average's
+    exp(-(k/I) <|B|^2 1 - B B^T> t) w(0) within eps |w(0)|, eps = lambda_max T_orb / (2 pi) (first-order
+    averaging over the decay time; docs/examples/plot_cubesat_detumbling.py)."""
+    from rigiddyn.control import dipole_field_W
+
+    scene, initial, options = rd.load_scene("cubesat_detumbling")
+    dipole, I = scene.elements[1], scene.bodies[0].inertia_com[0, 0]
+    r = np.linalg.norm(initial[0].p_W)
+    T_orb = 2 * np.pi * np.sqrt(r**3 / scene.elements[0].gm)
+    u = np.linspace(0.0, 2 * np.pi, 1024, endpoint=False)
+    B = np.array([dipole_field_W(dipole, r * np.array([np.cos(a), 0.0, np.sin(a)])) for a in u])
+    M_bar = np.mean([(b @ b) * np.eye(3) - np.outer(b, b) for b in B], axis=0)
+    k = 0.5 * I / (np.trace(M_bar) / 3 * T_orb)
+    lam, V = np.linalg.eigh(k * M_bar / I)
+    eps = lam.max() * T_orb / (2 * np.pi)
+    result = rd.simulate(scene, initial, options.dt, duration=2 * T_orb - np.fmod(2 * T_orb, options.dt),
+                         record_every=options.record_every, error=False,
+                         controller=rd.Controller(1.0, BDot(k, dipole, element=1)))
+    w_W = np.einsum("nij,nj->ni", rd.quat_to_matrix(result.q_WB[:, 0]), result.w_B[:, 0])
+    for j in (1, 2):
+        i = int(np.argmin(np.abs(result.t - j * T_orb)))
+        w_bar = V @ (np.exp(-lam * result.t[i]) * (V.T @ w_W[0]))
+        assert np.linalg.norm(w_W[i] - w_bar) <= eps * np.linalg.norm(w_W[0])
