@@ -7,7 +7,7 @@ from __future__ import annotations
 ORDER = (
     "plot_shaft_disk.py", "plot_dzhanibekov.py", "plot_fast_top.py", "plot_mesh_inertia.py",
     "plot_work_energy.py", "plot_planar.py", "plot_heavy_top.py", "plot_foucault.py", "plot_rocket.py",
-    "plot_kepler.py", "plot_gravity_gradient.py", "plot_cubesat_detumbling.py", "plot_cubesat_pointing.py",
+    "plot_kepler.py", "plot_j2_orbit.py", "plot_gravity_gradient.py", "plot_cubesat_detumbling.py", "plot_cubesat_pointing.py",
     "plot_work_precision.py", "plot_monte_carlo.py",
 )
 
