@@ -275,7 +275,7 @@ Array unpickled_array(py::handle obj, const char* name, py::ssize_t n, py::ssize
     py_io::throw_value_error(std::string("SimulationResult pickle ") + name,
                              k == 0 ? "shape (n,)" : "shape (n, " + std::to_string(k) + ")", py_io::describe(obj));
   }
-  a.attr("flags").attr("writeable") = false;
+  py_io::set_read_only(a);
   return a;
 }
 
@@ -405,12 +405,12 @@ GlobalError global_error_from_state(const py::tuple& t) {
   e.order = t[0].cast<int>();
   for (std::size_t k = 0; k < 7; ++k) {
     Array a = Array::ensure(numpy.attr("array")(t[k + 1], "float64"));  // a copy
-    a.attr("flags").attr("writeable") = false;
+    py_io::set_read_only(a);
     e.*error_arrays[k] = a;
   }
   e.verdict = py::tuple(t[8]);
   e.reliable = py::array_t<bool>::ensure(numpy.attr("array")(t[9], "bool"));
-  e.reliable.attr("flags").attr("writeable") = false;
+  py_io::set_read_only(e.reliable);
   return e;
 }
 

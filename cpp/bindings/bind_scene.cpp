@@ -368,7 +368,7 @@ SceneResult scene_result_from_state(const py::tuple& t) {
       py_io::throw_value_error(std::string("SceneResult pickle ") + result_arrays[i].name, expected + ")",
                                py_io::describe(t[i]));
     }
-    a.attr("flags").attr("writeable") = false;
+    py_io::set_read_only(a);
     r.*(result_arrays[i].member) = a;
   }
   r.diverged = t[result_array_count + 2].cast<bool>();
@@ -393,7 +393,7 @@ SceneResult scene_result_from_state(const py::tuple& t) {
       py_io::throw_value_error(std::string("SceneResult pickle ") + name,
                                "shape (" + std::to_string(n) + ", " + std::to_string(nw) + ")", py_io::describe(t[at]));
     }
-    a.attr("flags").attr("writeable") = false;
+    py_io::set_read_only(a);
     return a;
   };
   r.wheel_speed = wheel_column(result_array_count + 6, "wheel_speed");

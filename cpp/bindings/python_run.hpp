@@ -5,6 +5,7 @@
 #pragma once
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
+#include <unistd.h>
 
 #include <array>
 #include <chrono>
@@ -52,7 +53,7 @@ inline py_io::Array adopt(std::vector<double>&& data, std::vector<pybind11::ssiz
   auto* owner = new std::vector<double>(std::move(data));
   py::capsule free_owner(owner, [](void* p) { delete static_cast<std::vector<double>*>(p); });
   py_io::Array out(shape, owner->data(), free_owner);
-  out.attr("flags").attr("writeable") = false;
+  py_io::set_read_only(out);
   return out;
 }
 
@@ -112,7 +113,7 @@ inline GlobalError to_global_error(GlobalErrorEstimate&& e, bool per_body) {
     is_reliable[i] = v == "reliable";
     verdict[i] = texts(v);
   }
-  reliable.attr("flags").attr("writeable") = false;
+  py_io::set_read_only(reliable);
   return GlobalError{e.order,
                      adopt(std::move(e.attitude), state_shape),
                      adopt(std::move(e.angular_velocity), state_shape),
@@ -146,7 +147,7 @@ inline GlobalError to_batch_global_error(BatchErrorEstimate&& e, bool per_body) 
     }
     verdict[i] = row;
   }
-  reliable.attr("flags").attr("writeable") = false;
+  py_io::set_read_only(reliable);
   return GlobalError{e.order,
                      adopt(std::move(e.attitude), state_shape),
                      adopt(std::move(e.angular_velocity), state_shape),
@@ -168,7 +169,7 @@ inline pybind11::object sample_error(pybind11::handle batch_error, pybind11::ssi
   const py::slice first(0, rows, 1);
   const auto rows_of = [&](const py::array& a) -> py::array {
     py::array out = py::module_::import("numpy").attr("array")(a[py::make_tuple(i, first)]);  // a copy
-    out.attr("flags").attr("writeable") = false;
+    py_io::set_read_only(out);
     return out;
   };
   const auto values = [&](const py_io::Array& a) { return py_io::Array::ensure(rows_of(a)); };
@@ -275,10 +276,19 @@ class PythonMonitor {
   explicit PythonMonitor(pybind11::handle progress)
       : progress_(progress.is_none() ? pybind11::object()
                                      : py_io::as_callable(progress, "progress", "a callable(steps_done) or None")),
-        main_thread_(PyThread_get_thread_ident() == pybind11::module_::import("threading")
-                                                        .attr("main_thread")()
-                                                        .attr("ident")
-                                                        .cast<unsigned long>()) {}
+        main_thread_(PyThread_get_thread_ident() == main_thread_ident()) {}
+
+  // threading.main_thread().ident, looked up once per process (a fork makes its calling thread the child's main
+  // thread: the process id tells a child from its parent).
+  static unsigned long main_thread_ident() {
+    static long pid = -1;
+    static unsigned long ident = 0;
+    if (pid != static_cast<long>(getpid())) {
+      ident = pybind11::module_::import("threading").attr("main_thread")().attr("ident").cast<unsigned long>();
+      pid = static_cast<long>(getpid());
+    }
+    return ident;
+  }
 
   // Whether the run needs the monitor at all.
   bool needed() const { return main_thread_ || progress_; }
@@ -392,11 +402,11 @@ std::string overflowed_quantities(const Records& r) {
 // their iteration cap.
 template <class Records>
 void warn_after_run(const Records& r, const SimulationOptions& options, const std::string& method) {
-  const std::string dt = format_value(options.dt);
+  const auto dt = [&] { return format_value(options.dt); };  // formatted only for a warning
   if (r.diverged) {
     const std::string msg = "simulate: the state became non-finite by t = " +
                             format_value(r.t.empty() ? options.t0 : r.t.back()) + " (method '" + method +
-                            "', dt = " + dt + "); the run stopped there";
+                            "', dt = " + dt() + "); the run stopped there";
     if (PyErr_WarnEx(PyExc_RuntimeWarning, msg.c_str(), 1) != 0) throw pybind11::error_already_set();
   }
   const std::string overflowed = overflowed_quantities(r);
@@ -408,7 +418,7 @@ void warn_after_run(const Records& r, const SimulationOptions& options, const st
   if (r.unconverged_steps > 0) {
     const std::string msg = "simulate: the implicit solve of method '" + method + "' did not converge in " +
                             std::to_string(r.unconverged_steps) + " of " + std::to_string(options.steps) +
-                            " steps at dt = " + dt +
+                            " steps at dt = " + dt() +
                             " (its conservation is lost there); reduce dt (see methods() stability_limit)";
     if (PyErr_WarnEx(PyExc_RuntimeWarning, msg.c_str(), 1) != 0) throw pybind11::error_already_set();
   }
