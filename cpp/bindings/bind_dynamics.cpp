@@ -49,6 +49,11 @@ SimulationOptions as_options(py::handle dt, py::handle method, py::handle loads,
   return o;
 }
 
+// Whether `model` is a RigidBody, a PlanarBody or a Particle (the models with_model takes).
+bool is_one_body(py::handle model) {
+  return py::isinstance<RigidBody>(model) || py::isinstance<PlanarBody>(model) || py::isinstance<Particle>(model);
+}
+
 // Calls f(body, state) with the model `model` is and its state `state` (argument `state_name`);
 // TypeError naming model for anything else, naming the state for another model's state.
 template <class F>
@@ -225,12 +230,13 @@ py::typing::Union<SimulationResult, SceneResult> simulate_py(py::handle model, p
                                                              py::handle accuracy_level, py::handle tolerance,
                                                              py::handle measure, py::handle max_steps) {
   const ToleranceHandles to{tolerance, measure, max_steps};
-  if (is_scene(model)) {
+  const bool one_body = is_one_body(model);  // a RigidBody, PlanarBody or Particle: none of the kinds below
+  if (!one_body && is_scene(model)) {
     return py::reinterpret_borrow<SimulateResult>(simulate_scene_py(model, initial, dt, steps, method, record_every,
                                                                     loads, gravity, t0, scalar_first, progress,
                                                                     duration, error, accuracy_level, to));
   }
-  if (is_pivoted(model) || is_gyrostat(model)) {  // the one-body scene of the body, its gravity and loads
+  if (!one_body && (is_pivoted(model) || is_gyrostat(model))) {  // the one-body scene of the body, its gravity and loads
     const py::object scene = is_gyrostat(model) ? gyrostat_scene(model, loads, gravity) : pivoted_scene(model, loads, gravity);
     return py::reinterpret_borrow<SimulateResult>(simulate_scene_py(scene, py::make_tuple(initial), dt, steps, method,
                                                                     record_every, py::none(), py::none(), t0,
@@ -437,8 +443,9 @@ bool all_finite(const PlanarBodyState& s) {
 // t given: (new state, t + dt). Warns when the new state is not finite.
 py::object step_py(py::handle model, py::handle state, py::handle dt, py::handle method, py::handle loads,
                    py::handle gravity, py::handle t) {
-  if (is_scene(model)) return step_scene_py(model, state, dt, method, loads, gravity, t);
-  if (is_pivoted(model) || is_gyrostat(model)) {  // the one-body scene's step, its one state out of the list
+  const bool one_body = is_one_body(model);  // a RigidBody, PlanarBody or Particle: none of the kinds below
+  if (!one_body && is_scene(model)) return step_scene_py(model, state, dt, method, loads, gravity, t);
+  if (!one_body && (is_pivoted(model) || is_gyrostat(model))) {  // the one-body scene's step, its one state out of the list
     const py::object scene = is_gyrostat(model) ? gyrostat_scene(model, loads, gravity) : pivoted_scene(model, loads, gravity);
     const py::object next = step_scene_py(scene, py::make_tuple(state), dt, method, py::none(), py::none(), t);
     if (t.is_none()) return next[py::int_(0)];
