@@ -44,7 +44,7 @@ py::array adopt_vector(std::vector<T>&& data, std::vector<py::ssize_t> shape) {
   auto* owner = new std::vector<T>(std::move(data));
   py::capsule free_owner(owner, [](void* p) { delete static_cast<std::vector<T>*>(p); });
   py::array_t<T> out(shape, owner->data(), free_owner);
-  out.attr("flags").attr("writeable") = false;
+  py_io::set_read_only(out);
   return std::move(out);
 }
 
@@ -53,7 +53,7 @@ py::array bool_array(const std::vector<std::uint8_t>& flags) {
   py::array_t<bool> out(static_cast<py::ssize_t>(flags.size()));
   bool* p = out.mutable_data();
   for (std::size_t i = 0; i < flags.size(); ++i) p[i] = flags[i] != 0;
-  out.attr("flags").attr("writeable") = false;
+  py_io::set_read_only(out);
   return std::move(out);
 }
 
@@ -68,7 +68,7 @@ py::array checked_copy(py::handle obj, const std::string& name, const std::vecto
     for (std::size_t d = 0; d < shape.size(); ++d) expected += (d ? ", " : "") + std::to_string(shape[d]);
     py_io::throw_value_error(name, expected + ")", py_io::describe(obj));
   }
-  a.attr("flags").attr("writeable") = false;
+  py_io::set_read_only(a);
   return a;
 }
 
@@ -77,7 +77,7 @@ Array sample_rows(const py::array& stacked, py::ssize_t i, py::ssize_t rows) {
   const py::object row = stacked[py::int_(i)];
   const py::object cut = row[py::slice(0, rows, 1)];
   Array out = Array::ensure(py::module_::import("numpy").attr("array")(cut, "float64"));  // a copy
-  out.attr("flags").attr("writeable") = false;
+  py_io::set_read_only(out);
   return out;
 }
 

@@ -74,7 +74,7 @@ RigidBody as_rigid_body(py::handle mass, py::handle inertia_com, py::handle chec
 // A read-only numpy copy of q (x, y, z, w), or (w, x, y, z) with scalar_first.
 py_io::Array read_only(const Eigen::Quaterniond& q, bool scalar_first = false) {
   py_io::Array out = py_io::to_array(q, scalar_first);
-  out.attr("flags").attr("writeable") = false;
+  py_io::set_read_only(out);
   return out;
 }
 using py_io::read_only;

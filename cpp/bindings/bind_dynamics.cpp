@@ -7,6 +7,7 @@
 
 #include "bindings.hpp"
 #include "common_args.hpp"
+#include "fast_call.hpp"
 #include "numpy_io.hpp"
 #include "pivoted.hpp"
 #include "python_run.hpp"
@@ -48,6 +49,11 @@ SimulationOptions as_options(py::handle dt, py::handle method, py::handle loads,
   return o;
 }
 
+// Whether `model` is a RigidBody, a PlanarBody or a Particle (the models with_model takes).
+bool is_one_body(py::handle model) {
+  return py::isinstance<RigidBody>(model) || py::isinstance<PlanarBody>(model) || py::isinstance<Particle>(model);
+}
+
 // Calls f(body, state) with the model `model` is and its state `state` (argument `state_name`);
 // TypeError naming model for anything else, naming the state for another model's state.
 template <class F>
@@ -77,7 +83,7 @@ struct SimulationResult {
   double elapsed_seconds;
   bool scalar_first = false;  // q_WB rows as (w, x, y, z)
   py::object error = py::none();  // a GlobalError (simulate(..., error=True)) or None
-  py::object balance = py::none();  // a rigiddyn.Balance (every simulate run) or None (a batch result)
+  LazyBalance balance;  // a rigiddyn.Balance (every simulate run) or None (a batch result)
   py::object choice = py::none();  // a ToleranceChoice (simulate(..., tolerance=...)) or None
 };
 
@@ -100,42 +106,51 @@ SimulationResult to_result(Trajectory&& tr, bool scalar_first) {
                           scalar_first};
 }
 
-// The inertia about the centre of mass in B of a body whose angular momentum balance applies (rigiddyn._balance): a
-// rigid body's I_C, a planar body's diag(0, 0, I_zz); None for a particle.
-py::object balance_inertia(const Particle&) { return py::none(); }
-py::object balance_inertia(const PlanarBody& b) {
-  return py_io::to_array(Eigen::Vector3d(0.0, 0.0, b.inertia_zz()).asDiagonal().toDenseMatrix().eval());
+// What a body's balance needs of it (balance.hpp): a rigid body's I_C, a planar body's diag(0, 0, I_zz), no inertia
+// for a particle.
+BalanceBody balance_body(const Particle& b) { return {b.mass(), std::nullopt, "Particle"}; }
+BalanceBody balance_body(const PlanarBody& b) {
+  return {b.mass(), Eigen::Vector3d(0.0, 0.0, b.inertia_zz()).asDiagonal().toDenseMatrix(), "PlanarBody"};
 }
-py::object balance_inertia(const RigidBody& b) { return py_io::to_array(b.inertia_com()); }
+BalanceBody balance_body(const RigidBody& b) { return {b.mass(), b.inertia_com(), "RigidBody"}; }
 double largest_moment(const Particle&) { return 0.0; }
 double largest_moment(const PlanarBody& b) { return b.inertia_zz(); }
 double largest_moment(const RigidBody& b) { return b.inertia_com().norm(); }  // the Frobenius norm >= |I|
-const char* kind_of(const Particle&) { return "Particle"; }
-const char* kind_of(const PlanarBody&) { return "PlanarBody"; }
-const char* kind_of(const RigidBody&) { return "RigidBody"; }
+
+// The balance of a run of `body` with options o (balance.hpp), checked (accuracy_check.hpp) against its estimate e
+// (null: none) at `level`: the balance with its verdicts and the AccuracyWarning's message ("" when it closes).
+template <class Body>
+std::pair<RunBalance, std::string> checked_body_balance(const Body& body, const Trajectory& tr,
+                                                        const SimulationOptions& o, const GlobalErrorEstimate* e,
+                                                        const std::optional<double>& level) {
+  RunBalance balance = body_balance(tr, balance_body(body), o);
+  BalanceBounds bounds;
+  if (e != nullptr) bounds = body_estimate_bounds(*e, tr, body.mass(), largest_moment(body));
+  std::string message =
+      check_accuracy(balance, accuracy_check_of(level, tr.t, e, &bounds, method_info(o.method).name, o.dt));
+  return {std::move(balance), std::move(message)};
+}
 
 // The SimulationResult of a run of `body` with options o as its Python object: its error estimate and choice as
-// given, its balance made (rigiddyn._balance) with the AccuracyWarning at `accuracy_level` when it does not close.
+// given, its balance made and checked in the core with the AccuracyWarning at `level` when it does not close.
 template <class Body>
 py::object result_object(const Body& body, Trajectory&& tr, const SimulationOptions& o, bool scalar_first,
-                         py::object error, py::object choice, py::handle accuracy_level) {
+                         std::optional<GlobalErrorEstimate>&& estimate, py::object choice,
+                         const std::optional<double>& level) {
+  const GlobalErrorEstimate* e = estimate ? &*estimate : nullptr;
+  std::pair<RunBalance, std::string> checked =
+      with_gil_released_for(tr.size(), [&]() { return checked_body_balance(body, tr, o, e, level); });
+  warn_accuracy(checked.second, level, tr.diverged);
   SimulationResult result = to_result(std::move(tr), scalar_first);
-  result.error = std::move(error);
+  if (estimate) result.error = py::cast(to_global_error(std::move(*estimate), false));
   result.choice = std::move(choice);
-  py::object out = py::cast(std::move(result));
-  out.cast<SimulationResult&>().balance = balance_after_run(
-      out, accuracy_level, method_info(o.method).name, o.dt,
-      [&](const py::module_& balance) {
-        return balance.attr("of_body")(out, body.mass(), balance_inertia(body), py_io::to_array(o.gravity_W),
-                                       !o.loads.empty(), kind_of(body), o.dt);
-      },
-      py::make_tuple(body.mass(), largest_moment(body)));
-  return out;
+  result.balance = LazyBalance(std::move(checked.first));
+  return py::cast(std::move(result));
 }
 
 template <class Body, class State>
 py::object simulate_one(const Body& body, const State& initial, const SimulationOptions& o, const std::string& method,
-                        py::handle progress, bool scalar_first, bool error, py::handle accuracy_level) {
+                        py::handle progress, bool scalar_first, bool error, const std::optional<double>& accuracy_level) {
   SimulationOptions options = o;
   PythonMonitor monitor(progress);
   if (monitor.needed()) options.monitor = [&monitor](std::int64_t steps_done) { return monitor(steps_done); };
@@ -151,9 +166,7 @@ py::object simulate_one(const Body& body, const State& initial, const Simulation
   }
   if (tr.interrupted) monitor.raise();  // the records so far are dropped with tr
   warn_after_run(tr, o, method);
-  return result_object(body, std::move(tr), o, scalar_first,
-                       estimate ? py::cast(to_global_error(std::move(*estimate), false)) : py::none(), py::none(),
-                       accuracy_level);
+  return result_object(body, std::move(tr), o, scalar_first, std::move(estimate), py::none(), accuracy_level);
 }
 
 // The quantity a tolerance bounds by default: the position of a particle, the attitude of a body that turns.
@@ -167,7 +180,7 @@ ErrorMeasure default_measure(const PlanarBody&) { return ErrorMeasure::attitude;
 template <class Body, class State>
 py::object simulate_to_tolerance(const Body& body, const State& initial, SimulationOptions base, bool method_given,
                                  const ToleranceArgs& a, py::handle progress, bool scalar_first,
-                                 py::handle accuracy_level) {
+                                 const std::optional<double>& accuracy_level) {
   std::vector<ToleranceCandidate> candidates;
   for (const Method method : method_given ? std::vector<Method>{base.method} : tolerance_methods()) {
     SimulationOptions probe = base;
@@ -198,8 +211,8 @@ py::object simulate_to_tolerance(const Body& body, const State& initial, Simulat
   final_options.method = run.choice.method, final_options.dt = run.choice.dt, final_options.steps = run.choice.steps;
   warn_after_run(run.records, final_options, method_info(run.choice.method).name);
   py::object result = result_object(body, std::move(run.records), final_options, scalar_first,
-                                    py::cast(to_global_error(std::move(run.estimate), false)), py::cast(run.choice),
-                                    run.choice.met ? accuracy_level : py::none());
+                                    std::optional(std::move(run.estimate)), py::cast(run.choice),
+                                    run.choice.met ? accuracy_level : std::nullopt);
   if (!run.choice.met) raise_tolerance_error(run.choice, result);
   return result;
 }
@@ -218,12 +231,13 @@ py::typing::Union<SimulationResult, SceneResult> simulate_py(py::handle model, p
                                                              py::handle measure, py::handle max_steps,
                                                              py::handle controller) {
   const ToleranceHandles to{tolerance, measure, max_steps};
-  if (is_scene(model)) {
+  const bool one_body = is_one_body(model);  // a RigidBody, PlanarBody or Particle: none of the kinds below
+  if (!one_body && is_scene(model)) {
     return py::reinterpret_borrow<SimulateResult>(simulate_scene_py(model, initial, dt, steps, method, record_every,
                                                                     loads, gravity, t0, scalar_first, progress,
                                                                     duration, error, accuracy_level, to, controller));
   }
-  if (is_pivoted(model) || is_gyrostat(model)) {  // the one-body scene of the body, its gravity and loads
+  if (!one_body && (is_pivoted(model) || is_gyrostat(model))) {  // the one-body scene of the body, its gravity and loads
     const py::object scene = is_gyrostat(model) ? gyrostat_scene(model, loads, gravity) : pivoted_scene(model, loads, gravity);
     return py::reinterpret_borrow<SimulateResult>(simulate_scene_py(scene, py::make_tuple(initial), dt, steps, method,
                                                                     record_every, py::none(), py::none(), t0,
@@ -251,7 +265,7 @@ py::typing::Union<SimulationResult, SceneResult> simulate_py(py::handle model, p
     o.t0 = py_io::as_scalar(py_io::in_si(t0, "s", "t0"), "t0");
     const bool first = py_io::as_bool(scalar_first, "scalar_first");
     const bool estimate = py_io::as_bool(error, "error");
-    const py::object level = as_accuracy_level(accuracy_level);
+    const std::optional<double> level = as_accuracy_level(accuracy_level);
     return simulate_one(body, state, o, method_info(o.method).name, progress, first, estimate, level);
   }));
 }
@@ -263,7 +277,7 @@ constexpr const char* result_arrays[] = {"t", "p_W", "q_WB", "v_W", "w_B", "kine
 py::tuple result_state(const SimulationResult& r) {
   return py::make_tuple(r.t, r.p_W, r.q_WB, r.v_W, r.w_B, r.kinetic_energy, r.total_energy, r.angular_momentum_norm,
                         r.quaternion_norm_error, r.work, r.diverged, r.unconverged_steps, r.elapsed_seconds,
-                        r.scalar_first, r.error, r.balance, r.choice);
+                        r.scalar_first, r.error, r.balance.get(), r.choice);
 }
 
 // A pickled array as a read-only float64 copy of the shape it must have ((n,) or (n, k), n records).
@@ -274,7 +288,7 @@ Array unpickled_array(py::handle obj, const char* name, py::ssize_t n, py::ssize
     py_io::throw_value_error(std::string("SimulationResult pickle ") + name,
                              k == 0 ? "shape (n,)" : "shape (n, " + std::to_string(k) + ")", py_io::describe(obj));
   }
-  a.attr("flags").attr("writeable") = false;
+  py_io::set_read_only(a);
   return a;
 }
 
@@ -404,12 +418,12 @@ GlobalError global_error_from_state(const py::tuple& t) {
   e.order = t[0].cast<int>();
   for (std::size_t k = 0; k < 7; ++k) {
     Array a = Array::ensure(numpy.attr("array")(t[k + 1], "float64"));  // a copy
-    a.attr("flags").attr("writeable") = false;
+    py_io::set_read_only(a);
     e.*error_arrays[k] = a;
   }
   e.verdict = py::tuple(t[8]);
   e.reliable = py::array_t<bool>::ensure(numpy.attr("array")(t[9], "bool"));
-  e.reliable.attr("flags").attr("writeable") = false;
+  py_io::set_read_only(e.reliable);
   return e;
 }
 
@@ -435,8 +449,9 @@ bool all_finite(const PlanarBodyState& s) {
 // t given: (new state, t + dt). Warns when the new state is not finite.
 py::object step_py(py::handle model, py::handle state, py::handle dt, py::handle method, py::handle loads,
                    py::handle gravity, py::handle t) {
-  if (is_scene(model)) return step_scene_py(model, state, dt, method, loads, gravity, t);
-  if (is_pivoted(model) || is_gyrostat(model)) {  // the one-body scene's step, its one state out of the list
+  const bool one_body = is_one_body(model);  // a RigidBody, PlanarBody or Particle: none of the kinds below
+  if (!one_body && is_scene(model)) return step_scene_py(model, state, dt, method, loads, gravity, t);
+  if (!one_body && (is_pivoted(model) || is_gyrostat(model))) {  // the one-body scene's step, its one state out of the list
     const py::object scene = is_gyrostat(model) ? gyrostat_scene(model, loads, gravity) : pivoted_scene(model, loads, gravity);
     const py::object next = step_scene_py(scene, py::make_tuple(state), dt, method, py::none(), py::none(), t);
     if (t.is_none()) return next[py::int_(0)];
@@ -969,7 +984,7 @@ array([1.5, 1.5, 1.5])
       .def_readonly("error", &SimulationResult::error,
                     "The global error estimate of every record (a GlobalError), or None (simulate(..., error=False), "
                     "a pickled or batch result).")
-      .def_readonly("balance", &SimulationResult::balance,
+      .def_property_readonly("balance", [](const SimulationResult& r) { return r.balance.get(); },
                     "The energy and momentum balance of every record (a Balance), or None (a batch result).")
       .def_readonly("choice", &SimulationResult::choice,
                     "What simulate(..., tolerance=) chose and why (a ToleranceChoice), or None (a run at a given dt).")
@@ -1040,8 +1055,13 @@ Examples
 #define RIGIDDYN_STEP_ARGS                                                                                  \
   py::arg("model"), py::arg("state"), py::arg("dt"), py::arg("method") = py::none(), py::arg("loads") = py::none(), \
       py::arg("gravity") = py::none(), py::arg("t") = py::none()
+  // the accuracy check's rule (accuracy_check.hpp), which rigiddyn._balance documents as DEFAULT_LEVEL,
+  // ESTIMATE_FACTOR and ESTIMATE_FLOOR
+  m.attr("_accuracy_rule") = py::make_tuple(default_accuracy_level, estimate_factor, estimate_floor);
   m.def("simulate", &simulate_py, RIGIDDYN_SIMULATE_ARGS, simulate_doc);
   m.def("step", &step_py, RIGIDDYN_STEP_ARGS, step_doc);
+  FastCall<&simulate_py, 17>::add("simulate");  // called in loops: keywords without pybind11's per-call lookups
+  FastCall<&step_py, 7>::add("step");
   m.def(
       "_steps_of",
       [](py::handle steps, py::handle duration, py::handle dt) {

@@ -291,7 +291,7 @@ array([100.])
           "q_WB",
           [](const GyrostatState& s) {
             Array q = py_io::to_array(s.q_WB, false);
-            q.attr("flags").attr("writeable") = false;
+            py_io::set_read_only(q);
             return q;
           },
           [](GyrostatState& s, py::handle v) { s.q_WB = as_unit_quaternion(v, "q_WB"); },

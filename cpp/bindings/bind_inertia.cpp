@@ -121,7 +121,7 @@ py::array_t<std::int64_t> index_array(const Indices& values, std::vector<py::ssi
   py::array_t<std::int64_t> out(shape);
   std::int64_t* data = out.mutable_data();
   for (py::ssize_t k = 0; k < out.size(); ++k) data[k] = static_cast<std::int64_t>(values.data()[k]);
-  out.attr("flags").attr("writeable") = false;
+  py_io::set_read_only(out);
   return out;
 }
 
@@ -170,7 +170,7 @@ struct PyPrincipalAxes {
 
 // `value` itself, made read-only (a PrincipalAxes is a value: its arrays are not written to).
 Array frozen(Array value) {
-  value.attr("flags").attr("writeable") = false;
+  py_io::set_read_only(value);
   return value;
 }
 

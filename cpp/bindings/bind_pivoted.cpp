@@ -39,7 +39,7 @@ py::object list_of(const Eigen::Vector3d& v) { return py_io::to_array(v); }
 
 Array read_only_quaternion(const Eigen::Quaterniond& q, bool scalar_first) {
   Array out = py_io::to_array(q, scalar_first);
-  out.attr("flags").attr("writeable") = false;
+  py_io::set_read_only(out);
   return out;
 }
 

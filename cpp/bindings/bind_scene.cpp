@@ -337,7 +337,7 @@ py::tuple scene_result_state(const SceneResult& r) {
   out[result_array_count + 7] = r.motor_work;
   out[result_array_count + 8] = r.wheel_bodies;
   out[result_array_count + 9] = r.error;
-  out[result_array_count + 10] = r.balance;
+  out[result_array_count + 10] = r.balance.get();
   out[result_array_count + 11] = r.choice;
   return out;
 }
@@ -371,7 +371,7 @@ SceneResult scene_result_from_state(const py::tuple& t) {
       py_io::throw_value_error(std::string("SceneResult pickle ") + result_arrays[i].name, expected + ")",
                                py_io::describe(t[i]));
     }
-    a.attr("flags").attr("writeable") = false;
+    py_io::set_read_only(a);
     r.*(result_arrays[i].member) = a;
   }
   r.diverged = t[result_array_count + 2].cast<bool>();
@@ -396,7 +396,7 @@ SceneResult scene_result_from_state(const py::tuple& t) {
       py_io::throw_value_error(std::string("SceneResult pickle ") + name,
                                "shape (" + std::to_string(n) + ", " + std::to_string(nw) + ")", py_io::describe(t[at]));
     }
-    a.attr("flags").attr("writeable") = false;
+    py_io::set_read_only(a);
     return a;
   };
   r.wheel_speed = wheel_column(result_array_count + 6, "wheel_speed");
@@ -636,26 +636,32 @@ std::string momentum_balance_not_applicable(const CompiledScene& compiled) {
   return {};
 }
 
+// The balance of a scene's run r of h at step dt (balance.hpp), checked (accuracy_check.hpp) against its estimate e
+// (null: none) at `level`: the balance with its verdicts and the AccuracyWarning's message ("" when it closes).
+std::pair<RunBalance, std::string> checked_scene_balance(const SceneSimulation& r, const CompiledSceneHandle& h,
+                                                         double dt, const GlobalErrorEstimate* e,
+                                                         const std::optional<double>& level) {
+  RunBalance balance = scene_balance(r, momentum_balance_not_applicable(*h.compiled), dt);
+  BalanceBounds bounds;
+  if (e != nullptr) bounds = scene_estimate_bounds(*e, r);
+  std::string message = check_accuracy(balance, accuracy_check_of(level, r.t, e, &bounds, method_info(h.method).name, dt));
+  return {std::move(balance), std::move(message)};
+}
+
 // The SceneResult of a run of h at step dt as its Python object: its error estimate and choice as given, its balance
-// made (rigiddyn._balance) with the AccuracyWarning at `level` when it does not close.
+// made and checked in the core with the AccuracyWarning at `level` when it does not close.
 py::object scene_result_object(SceneSimulation&& r, const CompiledSceneHandle& h, double dt, bool scalar_first,
-                               py::object error, py::object choice, py::handle level) {
-  const auto n = static_cast<py::ssize_t>(r.size());
-  const std::string not_applicable = momentum_balance_not_applicable(*h.compiled);
-  py::object impulse = py::none(), angular_impulse = py::none();
-  if (not_applicable.empty() && r.impulse_W.size() == 3 * r.size()) {
-    impulse = adopt(std::move(r.impulse_W), {n, 3});
-    angular_impulse = adopt(std::move(r.angular_impulse_W), {n, 3});
-  }
+                               std::optional<GlobalErrorEstimate>&& estimate, py::object choice,
+                               const std::optional<double>& level) {
+  const GlobalErrorEstimate* e = estimate ? &*estimate : nullptr;
+  std::pair<RunBalance, std::string> checked =
+      with_gil_released_for(r.size(), [&]() { return checked_scene_balance(r, h, dt, e, level); });
+  warn_accuracy(checked.second, level, r.diverged);
   SceneResult result = to_scene_result(std::move(r), h.scene, *h.compiled, scalar_first);
-  result.error = std::move(error);
+  if (estimate) result.error = py::cast(to_global_error(std::move(*estimate), true));
   result.choice = std::move(choice);
-  py::object out = py::cast(std::move(result));
-  out.cast<SceneResult&>().balance =
-      balance_after_run(out, level, method_info(h.method).name, dt, [&](const py::module_& balance) {
-        return balance.attr("of_scene")(out, impulse, angular_impulse, not_applicable, dt);
-      });
-  return out;
+  result.balance = LazyBalance(std::move(checked.first));
+  return py::cast(std::move(result));
 }
 
 // The quantity a tolerance bounds by default for a scene: the attitude when a body turns, else the position.
@@ -671,7 +677,7 @@ ErrorMeasure default_scene_measure(const Scene& scene) {
 // ToleranceError when the tolerance is not met, or before any run for a force the certificate cannot check.
 py::object simulate_scene_to_tolerance(py::handle model, py::handle method, const std::vector<BodyState>& initial,
                                        const CompiledSceneHandle& given, SimulationOptions base, const ToleranceArgs& a,
-                                       py::handle progress, bool scalar_first, py::handle level) {
+                                       py::handle progress, bool scalar_first, const std::optional<double>& level) {
   const std::string opaque = opaque_force(*given.compiled);
   if (!opaque.empty()) {
     refuse_tolerance(opaque, "a force the core cannot see into may switch inside a step, which the global error "
@@ -711,8 +717,8 @@ py::object simulate_scene_to_tolerance(py::handle model, py::handle method, cons
   const auto at = std::find_if(compiled.begin(), compiled.end(),
                                [&](const CompiledSceneHandle& h) { return h.method == run.choice.method; });
   py::object result = scene_result_object(std::move(run.records), *at, run.choice.dt, scalar_first,
-                                          py::cast(to_global_error(std::move(run.estimate), true)),
-                                          py::cast(run.choice), run.choice.met ? level : py::none());
+                                          std::optional(std::move(run.estimate)), py::cast(run.choice),
+                                          run.choice.met ? level : std::nullopt);
   if (!run.choice.met) raise_tolerance_error(run.choice, result);
   return result;
 }
@@ -813,7 +819,7 @@ py::object simulate_scene_py(py::handle model, py::handle initial, py::handle dt
   o.t0 = py_io::as_scalar(py_io::in_si(t0, "s", "t0"), "t0");
   const bool first = py_io::as_bool(scalar_first, "scalar_first");
   const bool estimate_error = py_io::as_bool(error, "error");
-  const py::object level = as_accuracy_level(accuracy_level);
+  const std::optional<double> level = as_accuracy_level(accuracy_level);
   const CompiledSceneHandle h = compiled_for(model, method);
   o.method = h.method;
   const std::vector<BodyState> initial_states = as_scene_states(initial, h.scene, "initial");
@@ -839,9 +845,7 @@ py::object simulate_scene_py(py::handle model, py::handle initial, py::handle dt
   }
   if (r.interrupted) monitor.raise();  // the records so far are dropped with r
   warn_after_run(r, o, method_info(h.method).name);
-  return scene_result_object(std::move(r), h, o.dt, first,
-                             estimate ? py::cast(to_global_error(std::move(*estimate), true)) : py::none(),
-                             py::none(), level);
+  return scene_result_object(std::move(r), h, o.dt, first, std::move(estimate), py::none(), level);
 }
 
 py::object step_scene_py(py::handle model, py::handle state, py::handle dt, py::handle method, py::handle loads,
@@ -1071,7 +1075,7 @@ void bind_scene(py::module_& m) {
       .def_readonly("unconverged_steps", &SceneResult::unconverged_steps,
                     "number of steps whose implicit solve stopped at its iteration cap (0 for explicit methods)")
       .def_readonly("elapsed_seconds", &SceneResult::elapsed_seconds, "wall time of the C++ stepping loop [s]")
-      .def_readonly("balance", &SceneResult::balance,
+      .def_property_readonly("balance", [](const SceneResult& r) { return r.balance.get(); },
                     "The energy and momentum balance of every record (a Balance), or None (a batch result).")
       .def_readonly("error", &SceneResult::error,
                     "The global error estimate of every record (a GlobalError: per body (n, nb) for the state, per "

@@ -1,5 +1,6 @@
 // rigiddyn._core: the compiled core. Users import `rigiddyn`, which re-exports it.
 #include "bindings.hpp"
+#include "fast_call.hpp"
 #include "pivoted.hpp"
 #include "scene_run.hpp"
 #include "rigiddyn/version.hpp"
@@ -25,5 +26,6 @@ PYBIND11_MODULE(_core, m) {
   rigiddyn::bindings::bind_exact_dynamics(m);
   rigiddyn::bindings::bind_orbit(m);
   rigiddyn::bindings::bind_tree(m);
-  rigiddyn::bindings::add_text_signatures(m);  // last: every function and class registered
+  rigiddyn::bindings::add_text_signatures(m);  // every function and class registered
+  rigiddyn::bindings::install_fast_calls(m);  // last: the quick fronts take the docstrings with their signatures
 }

@@ -5,10 +5,12 @@
 #pragma once
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
+#include <unistd.h>
 
 #include <array>
 #include <chrono>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -21,6 +23,8 @@
 #include "rigiddyn/check.hpp"
 #include "rigiddyn/models/loads.hpp"
 #include "rigiddyn/scene/scene_simulation.hpp"
+#include "rigiddyn/simulate/accuracy_check.hpp"
+#include "rigiddyn/simulate/balance.hpp"
 #include "rigiddyn/simulate/global_error.hpp"
 #include "rigiddyn/simulate/simulate.hpp"
 
@@ -49,7 +53,7 @@ inline py_io::Array adopt(std::vector<double>&& data, std::vector<pybind11::ssiz
   auto* owner = new std::vector<double>(std::move(data));
   py::capsule free_owner(owner, [](void* p) { delete static_cast<std::vector<double>*>(p); });
   py_io::Array out(shape, owner->data(), free_owner);
-  out.attr("flags").attr("writeable") = false;
+  py_io::set_read_only(out);
   return out;
 }
 
@@ -109,7 +113,7 @@ inline GlobalError to_global_error(GlobalErrorEstimate&& e, bool per_body) {
     is_reliable[i] = v == "reliable";
     verdict[i] = texts(v);
   }
-  reliable.attr("flags").attr("writeable") = false;
+  py_io::set_read_only(reliable);
   return GlobalError{e.order,
                      adopt(std::move(e.attitude), state_shape),
                      adopt(std::move(e.angular_velocity), state_shape),
@@ -143,7 +147,7 @@ inline GlobalError to_batch_global_error(BatchErrorEstimate&& e, bool per_body) 
     }
     verdict[i] = row;
   }
-  reliable.attr("flags").attr("writeable") = false;
+  py_io::set_read_only(reliable);
   return GlobalError{e.order,
                      adopt(std::move(e.attitude), state_shape),
                      adopt(std::move(e.angular_velocity), state_shape),
@@ -165,7 +169,7 @@ inline pybind11::object sample_error(pybind11::handle batch_error, pybind11::ssi
   const py::slice first(0, rows, 1);
   const auto rows_of = [&](const py::array& a) -> py::array {
     py::array out = py::module_::import("numpy").attr("array")(a[py::make_tuple(i, first)]);  // a copy
-    out.attr("flags").attr("writeable") = false;
+    py_io::set_read_only(out);
     return out;
   };
   const auto values = [&](const py_io::Array& a) { return py_io::Array::ensure(rows_of(a)); };
@@ -175,29 +179,80 @@ inline pybind11::object sample_error(pybind11::handle batch_error, pybind11::ssi
                               values(e.observed_order), verdict, py::array_t<bool>::ensure(rows_of(e.reliable))});
 }
 
-// simulate's accuracy_level: None (no AccuracyWarning) or a finite relative level > 0 (rigiddyn._balance).
-inline pybind11::object as_accuracy_level(pybind11::handle level) {
-  if (level.is_none()) return pybind11::none();
-  return pybind11::float_(py_io::as_positive(level, "accuracy_level"));
+// simulate's accuracy_level: None (no AccuracyWarning: nullopt) or a finite relative level > 0 (accuracy_check.hpp).
+inline std::optional<double> as_accuracy_level(pybind11::handle level) {
+  if (level.is_none()) return std::nullopt;
+  return py_io::as_positive(level, "accuracy_level");
 }
 
-// The end of a run: result.balance (rigiddyn._balance, made by `make` from the module with the result's Python
-// object) and the AccuracyWarning when it does not close (check_run, with `level` from as_accuracy_level).
-// `result` is the run's result object (its error already set); returns the Balance.
-template <class Make>
-pybind11::object balance_after_run(pybind11::handle result, pybind11::handle level, const std::string& method, double dt,
-                                   Make&& make, pybind11::handle inertia_bound = pybind11::none()) {
-  const pybind11::module_ balance = pybind11::module_::import("rigiddyn._balance");
-  pybind11::object b = make(balance);
-  return balance.attr("check_run")(result, b, level, method, dt, inertia_bound);
+// Calls f() with the GIL released when a loop over `records` records runs long enough to be worth it, else with the
+// GIL held: taking the GIL back costs more than a short run's arithmetic and may wait a switch interval (5 ms) for
+// another thread.
+template <class F>
+auto with_gil_released_for(std::size_t records, F&& f) {
+  if (records < 512) return f();
+  pybind11::gil_scoped_release release;
+  return f();
 }
+
+// The end of a run's accuracy check (accuracy_check.hpp): the AccuracyWarning with `message` unless it is "", the
+// level is None (the verdicts are still made at the default level) or the run diverged (warn_after_run has warned).
+inline void warn_accuracy(const std::string& message, const std::optional<double>& level, bool diverged) {
+  if (message.empty() || !level || diverged) return;
+  const pybind11::object category = pybind11::module_::import("rigiddyn._balance").attr("AccuracyWarning");
+  if (PyErr_WarnEx(category.ptr(), message.c_str(), 1) != 0) throw pybind11::error_already_set();
+}
+
+// The AccuracyCheck of a run at `level` (None: the default level) with the records' times t and its estimate.
+inline AccuracyCheck accuracy_check_of(const std::optional<double>& level, const std::vector<double>& t,
+                                       const GlobalErrorEstimate* estimate, const BalanceBounds* bounds,
+                                       const std::string& method, double dt) {
+  return AccuracyCheck{estimate, bounds, level.value_or(default_accuracy_level), &t, method, dt};
+}
+
+// result.balance of a run: the core's RunBalance until Python first reads it, then the rigiddyn.Balance made of its
+// arrays (rigiddyn._balance._made, without a copy); None for a batch result. A run that is never asked for its
+// balance pays nothing for the Python object.
+class LazyBalance {
+ public:
+  LazyBalance() = default;
+  explicit LazyBalance(RunBalance&& core) : core_(std::make_shared<RunBalance>(std::move(core))) {}
+  explicit LazyBalance(pybind11::object balance) : object_(std::move(balance)) {}
+
+  // The rigiddyn.Balance (or None), made on the first call (GIL held).
+  pybind11::object get() const {
+    if (core_) {
+      object_ = balance_object(std::move(*core_));
+      core_.reset();
+    }
+    return object_;
+  }
+
+ private:
+  static pybind11::object balance_object(RunBalance&& b) {
+    namespace py = pybind11;
+    const auto n = static_cast<py::ssize_t>(b.size());
+    py::tuple arrays(3 * balance_quantity_count);
+    for (std::size_t q = 0; q < balance_quantity_count; ++q) {
+      arrays[q] = adopt(std::move(b.residual[q]), {n});
+      arrays[balance_quantity_count + q] = adopt(std::move(b.round_off[q]), {n});
+      arrays[2 * balance_quantity_count + q] = adopt(std::move(b.scale[q]), {n});
+    }
+    py::dict verdict;
+    for (std::size_t q = 0; q < balance_quantity_count; ++q) verdict[balance_quantity_names[q]] = b.verdict[q];
+    return py::module_::import("rigiddyn._balance").attr("_made")(arrays, verdict, b.about);
+  }
+
+  mutable std::shared_ptr<RunBalance> core_;
+  mutable pybind11::object object_ = pybind11::none();
+};
 
 // A pickled result's balance: a rigiddyn.Balance (TypeError naming `name` otherwise).
-inline pybind11::object checked_balance(pybind11::handle obj, const std::string& name) {
+inline LazyBalance checked_balance(pybind11::handle obj, const std::string& name) {
   if (!pybind11::isinstance(obj, pybind11::module_::import("rigiddyn._balance").attr("Balance"))) {
     py_io::throw_type_error(name, "a Balance or None", obj);
   }
-  return pybind11::reinterpret_borrow<pybind11::object>(obj);
+  return LazyBalance(pybind11::reinterpret_borrow<pybind11::object>(obj));
 }
 
 // A coarse run of the estimate (global_error) with the monitor of the answer: its records, and `interrupted` set
@@ -221,10 +276,19 @@ class PythonMonitor {
   explicit PythonMonitor(pybind11::handle progress)
       : progress_(progress.is_none() ? pybind11::object()
                                      : py_io::as_callable(progress, "progress", "a callable(steps_done) or None")),
-        main_thread_(PyThread_get_thread_ident() == pybind11::module_::import("threading")
-                                                        .attr("main_thread")()
-                                                        .attr("ident")
-                                                        .cast<unsigned long>()) {}
+        main_thread_(PyThread_get_thread_ident() == main_thread_ident()) {}
+
+  // threading.main_thread().ident, looked up once per process (a fork makes its calling thread the child's main
+  // thread: the process id tells a child from its parent).
+  static unsigned long main_thread_ident() {
+    static long pid = -1;
+    static unsigned long ident = 0;
+    if (pid != static_cast<long>(getpid())) {
+      ident = pybind11::module_::import("threading").attr("main_thread")().attr("ident").cast<unsigned long>();
+      pid = static_cast<long>(getpid());
+    }
+    return ident;
+  }
 
   // Whether the run needs the monitor at all.
   bool needed() const { return main_thread_ || progress_; }
@@ -338,11 +402,11 @@ std::string overflowed_quantities(const Records& r) {
 // their iteration cap.
 template <class Records>
 void warn_after_run(const Records& r, const SimulationOptions& options, const std::string& method) {
-  const std::string dt = format_value(options.dt);
+  const auto dt = [&] { return format_value(options.dt); };  // formatted only for a warning
   if (r.diverged) {
     const std::string msg = "simulate: the state became non-finite by t = " +
                             format_value(r.t.empty() ? options.t0 : r.t.back()) + " (method '" + method +
-                            "', dt = " + dt + "); the run stopped there";
+                            "', dt = " + dt() + "); the run stopped there";
     if (PyErr_WarnEx(PyExc_RuntimeWarning, msg.c_str(), 1) != 0) throw pybind11::error_already_set();
   }
   const std::string overflowed = overflowed_quantities(r);
@@ -354,7 +418,7 @@ void warn_after_run(const Records& r, const SimulationOptions& options, const st
   if (r.unconverged_steps > 0) {
     const std::string msg = "simulate: the implicit solve of method '" + method + "' did not converge in " +
                             std::to_string(r.unconverged_steps) + " of " + std::to_string(options.steps) +
-                            " steps at dt = " + dt +
+                            " steps at dt = " + dt() +
                             " (its conservation is lost there); reduce dt (see methods() stability_limit)";
     if (PyErr_WarnEx(PyExc_RuntimeWarning, msg.c_str(), 1) != 0) throw pybind11::error_already_set();
   }

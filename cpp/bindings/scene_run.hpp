@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "numpy_io.hpp"
+#include "python_run.hpp"
 #include "rigiddyn/scene/scene.hpp"
 
 namespace rigiddyn::bindings {
@@ -38,7 +39,7 @@ struct SceneResult {
   double elapsed_seconds;
   bool scalar_first = false;  // q_WB rows as (w, x, y, z)
   pybind11::object error = pybind11::none();  // a GlobalError (simulate(..., error=True)) or None
-  pybind11::object balance = pybind11::none();  // a rigiddyn.Balance (every simulate run) or None (a batch result)
+  LazyBalance balance;  // a rigiddyn.Balance (every simulate run) or None (a batch result)
   pybind11::object choice = pybind11::none();  // a ToleranceChoice (simulate(..., tolerance=...)) or None
 };
 
@@ -58,7 +59,7 @@ pybind11::object one_body_scene(const Body& body, const Eigen::Vector3d& g_W, py
 // True for a Scene or a CompiledScene.
 bool is_scene(pybind11::handle model);
 // rigiddyn.simulate and rigiddyn.step of a Scene or a CompiledScene (their arguments as documented there).
-// Returns the SceneResult's Python object (its balance set, rigiddyn._balance).
+// Returns the SceneResult's Python object (its balance made and checked in the core, balance.hpp).
 pybind11::object simulate_scene_py(pybind11::handle model, pybind11::handle initial, pybind11::handle dt,
                                    pybind11::handle steps, pybind11::handle method, pybind11::handle record_every,
                                    pybind11::handle loads, pybind11::handle gravity, pybind11::handle t0,

@@ -12507,4 +12507,5 @@ def weld_vertices(vertices: numpy.typing.ArrayLike, faces: numpy.typing.ArrayLik
     """
 FORCE_ELEMENTS: tuple = (UniformGravity, PointMassGravity, MutualGravity, GravityGradient, SpringDamper, Drag, ScheduledLoads, PythonForce, Thrust, MagneticDipole, ReactionWheel, ZonalGravity, AtmosphericDrag, SolarRadiationPressure)
 __version__: str = '0.1.0'
+_accuracy_rule: tuple = (0.001, 10.0, 0.1)
 inertia_relative_tolerance: float = 1e-10

@@ -1,5 +1,7 @@
 """result.balance, the energy and momentum balance of every run, and the AccuracyWarning when it does not close
-(rigiddyn/_balance.py; the impulses are integrated with the motion in scene/scene_model.hpp).
+(simulate/balance.hpp and simulate/accuracy_check.hpp in the core, the class in rigiddyn/_balance.py; the impulses
+are integrated with the motion in scene/scene_model.hpp). The core is compared with the numpy reference
+(rigiddyn_ref.balance) computed from the same records.
 
 Residuals (zero for the exact dynamics): r_E = T - T0 - sum W - sum E_mass - sum W_motor, r_P = |P - P0 - J|,
 r_H = |H - H0 - K| (about W's origin for a scene, about the centre of mass for one body).
@@ -14,6 +16,7 @@ import numpy as np
 import pytest
 
 import rigiddyn as rd
+from rigiddyn_ref import balance as ref
 
 EPS = np.finfo(float).eps
 I_B = np.array([1.0, 2.0, 3.0])
@@ -84,6 +87,127 @@ def test_scene_residuals_against_numpy():
     assert np.all(np.abs(b.angular_momentum - expected_H) <= 2 * b.angular_momentum_round_off + 1e-13)
     np.testing.assert_array_equal(b.energy, r.kinetic_energy - r.kinetic_energy[0] - r.work.sum(axis=1))
     assert b.about == "W's origin"
+
+
+# ------------------------------------------------------------------ the core against the numpy reference
+
+ARRAYS = ("energy", "linear_momentum", "angular_momentum")
+
+
+def assert_matches_reference(core, expected, message, expected_message, steps=0):
+    """The core's balance equals the reference computed from the same records: r_E to the bit (the same expression,
+    numpy's summation order); the momentum residuals within their round-off bound (two evaluations of the same
+    norms and sums in another order differ by a few eps of the terms' size, the bound is 8 eps of it per step); the
+    scales and round-off bounds within 8 eps relative (sums of at most a few norms, each a few eps); the verdicts and
+    the warning's text equal (the same rule at the same figures). With `steps` > 0 the reference was given impulses
+    in closed form, which differ from the core's integrated ones by up to the residual's round-off bound: a scale
+    holds the largest |J| (or |K|) and may differ by that bound, a round-off bound (8 eps per step of the size it
+    holds) by 8 eps x steps of it."""
+    np.testing.assert_array_equal(core.energy, expected["energy"])
+    for q in ARRAYS:
+        round_off = getattr(core, q + "_round_off")
+        slack = {"": round_off, "_round_off": 8 * EPS * steps * round_off, "_scale": round_off if steps else 0 * round_off}
+        for suffix in ("", "_round_off", "_scale"):
+            got, want = getattr(core, q + suffix), expected[q + suffix]
+            assert np.array_equal(np.isnan(got), np.isnan(want)), q + suffix
+            finite = ~np.isnan(want)
+            bound = (0.0 if suffix == "" else 8 * EPS * np.abs(want[finite])) + slack[suffix][finite]
+            assert np.all(np.abs(got[finite] - want[finite]) <= bound), (q + suffix, np.max(np.abs(got - want)))
+    assert core.verdict == expected["verdict"] and core.about == expected["about"]
+    assert message == expected_message
+
+
+def body_reference(r, body, inertia_com, gravity, loads, dt, method="rk4", level=ref.DEFAULT_LEVEL):
+    """The reference balance of a one-body run and its warning's text at `level`."""
+    g = np.zeros(3) if gravity is None else np.array([0.0, 0.0, -9.81])
+    kind = type(body).__name__
+    expected = ref.of_body(r, body.mass, inertia_com, g, loads, kind, dt)
+    largest = 0.0 if inertia_com is None else float(np.linalg.norm(inertia_com))  # the Frobenius norm >= |I|
+    message = ref.accuracy_message(expected, r.error, level, r, method, dt, (body.mass, largest))
+    return expected, message
+
+
+BODIES = [
+    # (body, state, inertia about the centre of mass in B or None, gravity, loads, dt, steps)
+    (rd.RigidBody(2.0, I_B), rd.RigidBodyState(w_B=TUMBLING, v_W=[1.0, 0.0, 3.0]), np.diag(I_B), True, None, 0.05, 60),
+    (rd.RigidBody(1.0, I_B), rd.RigidBodyState(w_B=TUMBLING), np.diag(I_B), None, None, 2.0 / np.linalg.norm(TUMBLING), 40),
+    (rd.RigidBody(2.0, I_B), rd.RigidBodyState(w_B=TUMBLING), np.diag(I_B), True,
+     [rd.AppliedLoad(force=[0.5, 0.0, 0.0], torque=[0.0, 0.0, 0.2], t_start=0.3, t_end=1.1)], 0.01, 150),
+    (rd.Particle(1.5), rd.ParticleState(v_W=[1.0, 0.0, 2.0]), None, True, None, 0.1, 30),
+    (rd.PlanarBody(2.0, 0.5), rd.PlanarBodyState(v_W=[1.0, 2.0], omega=3.0), np.diag([0.0, 0.0, 0.5]), None, None,
+     0.05, 50),
+]
+
+
+@pytest.mark.parametrize("error", [False, True])
+@pytest.mark.parametrize("case", range(len(BODIES)))
+def test_body_balance_matches_the_numpy_reference(case, error):
+    body, state, inertia_com, gravity, loads, dt, steps = BODIES[case]
+    r, messages = quiet_simulate(body, state, dt, steps, gravity=gravity, loads=loads, error=error)
+    expected, message = body_reference(r, body, inertia_com, gravity, loads is not None, dt)
+    assert_matches_reference(r.balance, expected, messages[0] if messages else "", message)
+
+
+def test_a_level_given_makes_the_reference_verdicts():
+    body, state, inertia_com, gravity, loads, dt, steps = BODIES[1]
+    r, messages = quiet_simulate(body, state, dt, steps, error=False, accuracy_level=0.3)
+    expected, message = body_reference(r, body, inertia_com, gravity, False, dt, level=0.3)
+    assert_matches_reference(r.balance, expected, messages[0] if messages else "", message)
+
+
+def tossed_scene():
+    """A particle and a rigid body in uniform gravity with their impulses in closed form (test_scene_residuals)."""
+    scene = rd.Scene(bodies=[rd.Particle(1.5), rd.RigidBody(2.0, I_B)], elements=[rd.UniformGravity()])
+    p0 = np.array([[1.0, 0.0, 0.0], [0.0, 2.0, 1.0]])
+    v0 = np.array([[0.0, 1.0, 4.0], [1.0, 0.0, 2.0]])
+    initial = [rd.ParticleState(p_W=p0[0], v_W=v0[0]), rd.RigidBodyState(p_W=p0[1], v_W=v0[1], w_B=TUMBLING)]
+    m, g = np.array([1.5, 2.0]), np.array([0.0, 0.0, -9.81])
+
+    def impulses(t):
+        s = (t - t[0])[:, None]
+        first, moment = (m[:, None] * p0).sum(axis=0), (m[:, None] * v0).sum(axis=0)
+        return m.sum() * s * g, np.cross(first * s + moment * s**2 / 2 + m.sum() * g * s**3 / 6, g)
+
+    return scene, initial, impulses
+
+
+@pytest.mark.parametrize("error", [False, True])
+def test_scene_balance_matches_the_numpy_reference(error):
+    """The impulses J, K of the reference are the closed forms (rk4 integrates them exactly: their difference from
+    the core's integrated ones is round-off, within the residuals' round-off bound)."""
+    scene, initial, impulses = tossed_scene()
+    dt = 0.01
+    r, messages = quiet_simulate(scene, initial, dt, 150, record_every=10, error=error)
+    J, K = impulses(r.t)
+    expected = ref.of_scene(r, J, K, "", dt)
+    message = ref.accuracy_message(expected, r.error, ref.DEFAULT_LEVEL, r, "rk4", dt)
+    assert_matches_reference(r.balance, expected, messages[0] if messages else "", message, steps=150)
+
+
+@pytest.mark.filterwarnings("ignore::rigiddyn.SceneCompatibilityWarning")
+@pytest.mark.parametrize("error", [False, True])
+def test_scene_energy_balance_matches_the_numpy_reference(error):
+    """Scenes whose momentum balances do not apply (a mass flow) or whose impulses have no closed form (drag,
+    scheduled loads, a close encounter that warns, a gyrostat's motor): the energy balance, its verdict and the
+    warning against the reference, the momentum balances' verdicts as the core gives them."""
+    rocket = rd.Scene(bodies=[rd.Particle(10.0)], elements=[rd.UniformGravity(), rd.Thrust(0, [0.0, 0.0, 50.0], "world"),
+                                                            rd.Drag(linear=0.5, quadratic=0.05)],
+                      mass_flows=[rd.MassFlow(rate=-1.0)])
+    sat = rd.Gyrostat(rd.RigidBody(100.0, [10.0, 12.0, 15.0]), [rd.Wheel([0, 0, 1], 0.05, motor_torque=0.01)])
+    encounter, slow, run = close_encounter()
+    cases = [(rocket, [rd.ParticleState(v_W=[1.0, 0.0, 0.0])], 0.02, dict(duration=2.0)),
+             (*non_conservative_scene(), 0.05, dict(duration=1.0)),
+             (sat, rd.GyrostatState(w_B=[0.1, 0.0, 0.2], wheel_speeds=[0.0]), 0.1, dict(steps=100)),
+             (encounter, slow, run.dt, dict(duration=run.duration, record_every=run.record_every))]
+    for model, initial, dt, size in cases:
+        r, messages = quiet_simulate(model, initial, dt, error=error, **size)
+        expected = ref.of_scene(r, None, None, "its momentum balances are not compared here", dt)
+        expected["verdict"].update({q: r.balance.verdict[q] for q in ARRAYS[1:]})
+        for q in ARRAYS[1:]:  # the core's own momentum balances, as the reference reads them
+            for suffix in ("", "_round_off", "_scale"):
+                expected[q + suffix] = getattr(r.balance, q + suffix)
+        message = ref.accuracy_message(expected, r.error, ref.DEFAULT_LEVEL, r, "rk4", dt)
+        assert_matches_reference(r.balance, expected, messages[0] if messages else "", message)
 
 
 # ------------------------------------------------------------------ round-off for the structure-preserving methods

@@ -6,7 +6,7 @@ plain numpy. It never imports rigiddyn; it never imports scipy either, except ex
 closed forms of the pendulum, the Lagrange top and the constant-thrust burn), which takes its elliptic
 functions from scipy.special (ellipj, ellipk, Carlson's elliprf/elliprj) rather than from the core's own.
 It is the oracle the core is compared with, and the baseline of the Python benchmarks. The modules
-pivoted, moving_frame, variable_mass, exact_dynamics and tree are imported by name (not re-exported here).
+pivoted, moving_frame, variable_mass, exact_dynamics, tree and balance are imported by name (not re-exported here).
 
 Conventions follow docs/conventions.md: SI units; quaternions (x, y, z, w) unless
 ``scalar_first=True``; Hamilton product; active rotations; spatial vectors angular part first.

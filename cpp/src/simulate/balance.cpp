@@ -1,0 +1,241 @@
+#include "rigiddyn/simulate/balance.hpp"
+
+#include <Eigen/Geometry>
+
+#include <cfloat>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+namespace rigiddyn {
+
+namespace {
+
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+constexpr auto energy = static_cast<std::size_t>(BalanceQuantity::energy);
+constexpr auto linear = static_cast<std::size_t>(BalanceQuantity::linear_momentum);
+constexpr auto angular = static_cast<std::size_t>(BalanceQuantity::angular_momentum);
+
+using Vector3Map = Eigen::Map<const Eigen::Vector3d>;
+
+// The sum of x[0..n) in the order numpy's pairwise summation takes (sum(axis=-1) of a row): sequential below 8 terms,
+// 8 interleaved partial sums up to 128, halves above; so that r_E equals T - T0 - work.sum(axis=1) to the bit.
+double pairwise_sum(const double* x, std::size_t n) {
+  if (n < 8) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < n; ++i) sum += x[i];
+    return sum;
+  }
+  if (n <= 128) {
+    std::array<double, 8> r{};
+    for (std::size_t j = 0; j < 8; ++j) r[j] = x[j];
+    std::size_t i = 8;
+    for (; i < n - n % 8; i += 8) {
+      for (std::size_t j = 0; j < 8; ++j) r[j] += x[i + j];
+    }
+    double sum = ((r[0] + r[1]) + (r[2] + r[3])) + ((r[4] + r[5]) + (r[6] + r[7]));
+    for (; i < n; ++i) sum += x[i];
+    return sum;
+  }
+  std::size_t half = n / 2;
+  half -= half % 8;
+  return pairwise_sum(x, half) + pairwise_sum(x + half, n - half);
+}
+
+// The sum of |x[0..n)|, in pairwise_sum's order.
+double pairwise_abs_sum(const double* x, std::size_t n, std::vector<double>& scratch) {
+  scratch.resize(n);
+  for (std::size_t i = 0; i < n; ++i) scratch[i] = std::abs(x[i]);
+  return pairwise_sum(scratch.data(), n);
+}
+
+// max(a, b) that keeps a NaN (as numpy's maximum): a running maximum stays NaN after a non-finite record.
+double nan_max(double a, double b) { return (std::isnan(a) || std::isnan(b)) ? nan : std::max(a, b); }
+
+// x[i] = max(x[0..i]) in place (numpy's maximum.accumulate).
+void running_max(std::vector<double>& x) {
+  for (std::size_t i = 1; i < x.size(); ++i) x[i] = nan_max(x[i - 1], x[i]);
+}
+
+// |v| of a 3-vector, as sqrt(v·v).
+double norm3(const Eigen::Vector3d& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+
+// The steps from t0 to each record: rint((t − t0) / dt).
+std::vector<double> steps_of(const std::vector<double>& t, double dt) {
+  std::vector<double> steps(t.size());
+  for (std::size_t i = 0; i < t.size(); ++i) steps[i] = std::nearbyint((t[i] - t[0]) / dt);
+  return steps;
+}
+
+// The round-off a residual whose terms have size `size` (n,) can hold after `steps` (n,) steps: 8 ε |size| per
+// step, summed (the global error estimate's bound, global_error.cpp).
+std::vector<double> round_off_of(const std::vector<double>& size, const std::vector<double>& steps) {
+  std::vector<double> out(size.size());
+  for (std::size_t i = 0; i < size.size(); ++i) out[i] = 8.0 * DBL_EPSILON * std::abs(size[i]) * std::max(steps[i], 1.0);
+  return out;
+}
+
+// Sets quantity q of b to NaN residuals with the verdict "not applicable: <why>".
+void set_not_applicable(RunBalance& b, std::size_t q, std::size_t n, const std::string& why) {
+  b.residual[q].assign(n, nan);
+  b.round_off[q].assign(n, nan);
+  b.scale[q].assign(n, nan);
+  b.verdict[q] = "not applicable: " + why;
+}
+
+// R_WB h for the recorded q_WB (x, y, z, w), normalised: h + 2 s (u × h) + 2 u × (u × h) for the unit quaternion
+// (u, s) (Rodrigues' formula in quaternion form).
+Eigen::Vector3d rotated(const double* q_xyzw, const Eigen::Vector3d& h) {
+  const double norm = std::sqrt(q_xyzw[0] * q_xyzw[0] + q_xyzw[1] * q_xyzw[1] + q_xyzw[2] * q_xyzw[2] +
+                                q_xyzw[3] * q_xyzw[3]);
+  const Eigen::Vector3d u = Vector3Map(q_xyzw) / norm;
+  const double s = q_xyzw[3] / norm;
+  const Eigen::Vector3d t = 2.0 * u.cross(h);
+  return h + s * t + u.cross(t);
+}
+
+// The energy balance of records with kinetic energy T, total energy E and inputs (n,) (the works, mass-flow
+// energies and motor works summed; `magnitude` the sum of their absolute values): r_E = T − T0 − inputs, its scale
+// |E0| + T0 + the largest magnitude so far, its round-off from the terms T + |E − T| + magnitude.
+void set_energy(RunBalance& b, const std::vector<double>& T, const std::vector<double>& E,
+                const std::vector<double>& inputs, const std::vector<double>& magnitude, const std::vector<double>& steps) {
+  const std::size_t n = T.size();
+  std::vector<double>& r = b.residual[energy];
+  std::vector<double>& scale = b.scale[energy];
+  std::vector<double> size(n);
+  r.resize(n), scale.resize(n);
+  std::vector<double> largest = magnitude;
+  running_max(largest);
+  for (std::size_t i = 0; i < n; ++i) {
+    r[i] = T[i] - T[0] - inputs[i];
+    scale[i] = std::abs(E[0]) + T[0] + largest[i];
+    size[i] = T[i] + std::abs(E[i] - T[i]) + magnitude[i];
+  }
+  running_max(size);
+  b.round_off[energy] = round_off_of(size, steps);
+}
+
+}  // namespace
+
+bool RunBalance::applies(BalanceQuantity q) const {
+  return verdict[static_cast<std::size_t>(q)].rfind("not applicable", 0) != 0;
+}
+
+RunBalance body_balance(const Trajectory& r, const BalanceBody& body, const SimulationOptions& options) {
+  const std::size_t n = r.size();
+  const std::vector<double> steps = steps_of(r.t, options.dt);
+  RunBalance b;
+  b.about = "the centre of mass";
+  b.verdict.fill("closed");
+  std::vector<double> magnitude(n);
+  for (std::size_t i = 0; i < n; ++i) magnitude[i] = std::abs(r.work[i]);
+  // r_E = T − T0 − W: the work records hold the loads' and gravity's (simulate.hpp)
+  set_energy(b, r.kinetic_energy, r.total_energy, r.work, magnitude, steps);
+  const bool loads = !options.loads.empty();
+  if (loads) {
+    set_not_applicable(b, linear, n, "the impulse of the loads is not integrated on a body's own path");
+  } else {
+    // r_P = m v − m v0 − m g (t − t0): uniform gravity's impulse is exact
+    const double m = body.mass;
+    const Eigen::Vector3d& g = options.gravity_W;
+    const double g_norm = norm3(g);
+    std::vector<double> size(n);
+    b.residual[linear].resize(n), b.scale[linear].resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const Eigen::Vector3d v = Vector3Map(&r.v_W[3 * i]);
+      const Eigen::Vector3d P = m * v, P0 = m * Vector3Map(&r.v_W[0]);
+      b.residual[linear][i] = norm3(P - P0 - m * ((r.t[i] - r.t[0]) * g));
+      b.scale[linear][i] = m * (norm3(Vector3Map(&r.v_W[0])) + g_norm * std::abs(r.t[i] - r.t[0]));
+      size[i] = m * (norm3(v) + g_norm * std::abs(r.t[i] - r.t[0]));
+    }
+    running_max(size);
+    b.round_off[linear] = round_off_of(size, steps);
+  }
+  if (!body.inertia_com) {
+    set_not_applicable(b, angular, n, "a " + body.kind + " has no attitude");
+  } else if (loads) {
+    set_not_applicable(b, angular, n, "the angular impulse of the loads is not integrated on a body's own path");
+  } else {
+    // r_H = R I w − (R I w)(t0) about the centre of mass: gravity has no moment about it
+    const Eigen::Matrix3d& I = *body.inertia_com;
+    const auto H = [&](std::size_t i) { return rotated(&r.q_WB[4 * i], I * Vector3Map(&r.w_B[3 * i])); };
+    const Eigen::Vector3d H0 = n ? H(0) : Eigen::Vector3d::Zero();
+    std::vector<double> size(n);
+    b.residual[angular].resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const Eigen::Vector3d H_i = H(i);
+      b.residual[angular][i] = norm3(H_i - H0);
+      size[i] = norm3(H_i);
+    }
+    b.scale[angular].assign(n, norm3(H0));
+    running_max(size);
+    b.round_off[angular] = round_off_of(size, steps);
+  }
+  return b;
+}
+
+RunBalance scene_balance(const SceneSimulation& r, const std::string& not_applicable, double dt) {
+  const std::size_t n = r.size();
+  const auto nb = static_cast<std::size_t>(r.body_count), ne = static_cast<std::size_t>(r.element_count);
+  const std::size_t nw = n ? r.motor_work.size() / n : 0;
+  const bool mass_flow = !r.mass_flow_energy.empty();  // empty: every body's mass-flow energy is 0
+  const std::vector<double> steps = steps_of(r.t, dt);
+  RunBalance b;
+  b.about = "W's origin";
+  b.verdict.fill("closed");
+  // r_E = T − T0 − Σ W_e − Σ E_b − Σ W_motor (scene_simulation.hpp: the works hold every element's)
+  std::vector<double> inputs(n), magnitude(n), scratch;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double* W = r.work.data() + i * ne;
+    const double* W_motor = r.motor_work.data() + i * nw;
+    const double* E_b = mass_flow ? r.mass_flow_energy.data() + i * nb : nullptr;
+    inputs[i] = pairwise_sum(W, ne) + (mass_flow ? pairwise_sum(E_b, nb) : 0.0) + pairwise_sum(W_motor, nw);
+    magnitude[i] = pairwise_abs_sum(W, ne, scratch) + (mass_flow ? pairwise_abs_sum(E_b, nb, scratch) : 0.0) +
+                   pairwise_abs_sum(W_motor, nw, scratch);
+  }
+  set_energy(b, r.kinetic_energy, r.total_energy, inputs, magnitude, steps);
+  if (!not_applicable.empty() || r.impulse_W.size() != 3 * n || r.angular_impulse_W.size() != 3 * n) {
+    const std::string why = not_applicable.empty() ? "its path does not integrate the impulses" : not_applicable;
+    set_not_applicable(b, linear, n, why);
+    set_not_applicable(b, angular, n, why);
+    return b;
+  }
+  // r_P = P − P0 − J, r_H = H − H0 − K about W's origin (scene_model.hpp)
+  std::vector<double> linear_size(n), angular_size(n), largest_J(n), largest_K(n);
+  double mv_sum0 = 0.0, moments0 = 0.0;
+  for (auto* a : {&b.residual[linear], &b.residual[angular], &b.scale[linear], &b.scale[angular]}) a->resize(n);
+  std::vector<double> mv_norms(nb), moment_norms(nb), H_C_norms(nb);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vector3Map J(&r.impulse_W[3 * i]), K(&r.angular_impulse_W[3 * i]);
+    b.residual[linear][i] = norm3(Vector3Map(&r.linear_momentum_W[3 * i]) - Vector3Map(&r.linear_momentum_W[0]) - J);
+    b.residual[angular][i] =
+        norm3(Vector3Map(&r.angular_momentum_W[3 * i]) - Vector3Map(&r.angular_momentum_W[0]) - K);
+    double w_max = 0.0;
+    for (std::size_t k = 0; k < nb; ++k) {
+      const std::size_t at = (i * nb + k) * 3;
+      const Eigen::Vector3d mv = r.mass[i * nb + k] * Vector3Map(&r.v_W[at]);
+      mv_norms[k] = norm3(mv);
+      moment_norms[k] = norm3(Vector3Map(&r.p_W[at]).cross(mv));
+      H_C_norms[k] = norm3(Vector3Map(&r.angular_momentum_O_W[at]));
+      w_max = k == 0 ? norm3(Vector3Map(&r.w_B[at])) : nan_max(w_max, norm3(Vector3Map(&r.w_B[at])));
+    }
+    const double mv_sum = pairwise_sum(mv_norms.data(), nb);
+    const double moments = pairwise_sum(moment_norms.data(), nb) + pairwise_sum(H_C_norms.data(), nb);
+    if (i == 0) mv_sum0 = mv_sum, moments0 = moments;
+    // the parts' size where they cancel (a gyrostat's body and wheels, H_C ~ 0): 2 T / |w| <= |H| of a turning body
+    const double turning = w_max > 0 ? 2.0 * r.kinetic_energy[i] / w_max : 0.0;
+    largest_J[i] = norm3(J), largest_K[i] = norm3(K);
+    linear_size[i] = mv_sum + norm3(J);
+    angular_size[i] = moments + norm3(K) + turning;
+  }
+  running_max(largest_J), running_max(largest_K), running_max(linear_size), running_max(angular_size);
+  for (std::size_t i = 0; i < n; ++i) {
+    b.scale[linear][i] = mv_sum0 + largest_J[i];
+    b.scale[angular][i] = moments0 + largest_K[i];
+  }
+  b.round_off[linear] = round_off_of(linear_size, steps);
+  b.round_off[angular] = round_off_of(angular_size, steps);
+  return b;
+}
+
+}  // namespace rigiddyn
