@@ -1060,8 +1060,8 @@ Examples
   m.attr("_accuracy_rule") = py::make_tuple(default_accuracy_level, estimate_factor, estimate_floor);
   m.def("simulate", &simulate_py, RIGIDDYN_SIMULATE_ARGS, simulate_doc);
   m.def("step", &step_py, RIGIDDYN_STEP_ARGS, step_doc);
-  FastCall<&simulate_py, 17>::add("simulate");  // called in loops: keywords without pybind11's per-call lookups
-  FastCall<&step_py, 7>::add("step");
+  FastCall<&simulate_py>::add("simulate");  // called in loops: keywords without pybind11's per-call lookups
+  FastCall<&step_py>::add("step");
   m.def(
       "_steps_of",
       [](py::handle steps, py::handle duration, py::handle dt) {

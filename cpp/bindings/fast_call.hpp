@@ -26,7 +26,13 @@ void install_fast_calls(pybind11::module_& m);
 // Registers `install` to run in install_fast_calls.
 void register_fast_call(void (*install)(pybind11::module_&));
 
-template <auto Fn, std::size_t N>
+// The number of parameters of a function
+template <class R, class... A>
+constexpr std::size_t parameter_count(R (*)(A...)) {
+  return sizeof...(A);
+}
+
+template <auto Fn, std::size_t N = parameter_count(Fn)>
 class FastCall {
  public:
   // Registers the module function `name` (bound to Fn, N parameters) for install_fast_calls.
