@@ -28,7 +28,8 @@ ROOT = Path(__file__).resolve().parents[2]
 # so that a new file in one of them counts. Only the frames layer and the other bindings stay out.
 SIMULATION_INPUTS = [
     "python/rigiddyn/__init__.py", "python/rigiddyn/work_precision/*.py", "python/rigiddyn/stability.py",
-    "python/rigiddyn/problem.py", "python/rigiddyn/scene_precision.py",
+    "python/rigiddyn/problem.py", "python/rigiddyn/scene_precision.py", "python/rigiddyn/_mass_properties.py",
+    "python/rigiddyn/_load_table.py", "python/rigiddyn/_core_call.py",
     "cpp/include/rigiddyn/*.hpp",
     *(f"cpp/{kind}/{layer}/*" for kind in ("include/rigiddyn", "src")
       for layer in ("dynamics", "exact", "inertia", "integrators", "models", "simulate", "so3", "spatial")),
