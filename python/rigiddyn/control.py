@@ -54,6 +54,13 @@ class SampledState:
     wheel_speed : numpy.ndarray, shape (nw,)
         Each gyrostat wheel's speed relative to its body [rad/s], in the scene's order.
 
+    Raises
+    ------
+    TypeError
+        t not a real number; an array not of real numbers (each named).
+    ValueError
+        An array of the wrong shape, or rows that are not one per body (each named).
+
     Examples
     --------
     >>> s = rd.SampledState(0.5, np.zeros((1, 3)), np.array([[0.0, 0.0, 0.0, 1.0]]), np.zeros((1, 3)),
@@ -69,18 +76,55 @@ class SampledState:
     w_B: np.ndarray
     wheel_speed: np.ndarray
 
+    def __post_init__(self) -> None:
+        # the types and shapes (the values are the run's: non-finite once a run diverges, so not refused)
+        object.__setattr__(self, "t", _real(self.t, "t", "a number [s]"))
+        p_W = _rows(self.p_W, "p_W", 3)
+        bodies = p_W.shape[0]
+        object.__setattr__(self, "p_W", p_W)
+        for name, width in (("q_WB", 4), ("v_W", 3), ("w_B", 3)):
+            a = _rows(getattr(self, name), name, width)
+            if a.shape[0] != bodies:
+                raise ValueError(f"{name}: expected {bodies} rows (one per body, as p_W), got {a.shape[0]}")
+            object.__setattr__(self, name, a)
+        wheel_speed = _real_array(self.wheel_speed, "wheel_speed", "an array of shape (nw,) [rad/s]")
+        if wheel_speed.ndim != 1:
+            raise ValueError(f"wheel_speed: expected an array of shape (nw,) [rad/s], got shape {wheel_speed.shape}")
+        object.__setattr__(self, "wheel_speed", wheel_speed)
+
+
+def _real(value: Any, name: str, what: str) -> float:
+    """float(value) of a real number (not a bool), else TypeError naming `name`."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.integer, np.floating)):
+        raise TypeError(f"{name}: expected {what}, got {value!r}")
+    return float(value)
+
+
+def _real_array(value: Any, name: str, what: str) -> np.ndarray:
+    """A read-only float64 view of an array of real numbers, else TypeError naming `name`."""
+    a = value if isinstance(value, np.ndarray) else np.asarray(value) if isinstance(value, (list, tuple)) else None
+    if a is None or a.dtype.kind not in "fiu":
+        raise TypeError(f"{name}: expected {what}, got {value!r}")
+    a = a.astype(np.float64, copy=False).view()
+    a.setflags(write=False)
+    return a
+
+
+def _rows(value: Any, name: str, width: int) -> np.ndarray:
+    """An (n, width) array of real numbers, else TypeError/ValueError naming `name`."""
+    what = f"an array of shape (nb, {width})"
+    a = _real_array(value, name, what)
+    if a.ndim != 2 or a.shape[1] != width:
+        raise ValueError(f"{name}: expected {what}, got shape {a.shape}")
+    return a
+
 
 def _positive(value: Any, name: str, unit: str) -> float:
-    """float(value), finite and > 0, else ValueError naming `name`."""
-    x = float(value)
+    """float(value), finite and > 0, else TypeError (not a real number) or ValueError naming `name`."""
+    x = _real(value, name, f"a finite number > 0 {unit}")
     if not (math.isfinite(x) and x > 0.0):
         raise ValueError(f"{name}: expected a finite number > 0 {unit}, got {value!r}")
     return x
-
-
-def _read_only(a: np.ndarray) -> np.ndarray:
-    a.setflags(write=False)
-    return a
 
 
 class Controller:
@@ -145,10 +189,14 @@ class Controller:
         if not callable(law):
             raise TypeError(f"law: expected a callable law(state) -> dict of commands, got {law!r}")
         self.law = law
-        noise = float(w_B_noise)
+        noise = _real(w_B_noise, "w_B_noise", "a finite number >= 0 [rad/s]")
         if not (math.isfinite(noise) and noise >= 0.0):
             raise ValueError(f"w_B_noise: expected a finite number >= 0 [rad/s], got {w_B_noise!r}")
         self.w_B_noise = noise
+        if seed is not None and (isinstance(seed, (bool, np.bool_)) or not isinstance(seed, (int, np.integer))):
+            raise TypeError(f"seed: expected None or an int >= 0, got {seed!r}")
+        if seed is not None and seed < 0:
+            raise ValueError(f"seed: expected None or an int >= 0, got {seed!r}")
         self._rng = np.random.default_rng(seed)
 
     def __repr__(self) -> str:
@@ -160,7 +208,7 @@ class Controller:
         [(element, value), ...])."""
         if self.w_B_noise > 0.0:
             w_B = w_B + self._rng.normal(0.0, self.w_B_noise, w_B.shape)
-        state = SampledState(t, *(_read_only(a) for a in (p_W, q_WB, v_W, w_B, wheel_speed)))
+        state = SampledState(t, p_W, q_WB, v_W, w_B, wheel_speed)  # read-only views
         at = f"controller.law(t={t:.17g})"  # as the core names a sample (17 significant digits)
         try:
             commands = self.law(state)

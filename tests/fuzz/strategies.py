@@ -220,6 +220,12 @@ RECIPES["dispersion.MonteCarloResult"] = st.one_of(
 RECIPES["dispersion.Statistics"] = st.tuples(RECIPES["dispersion.MonteCarloResult"], st.sampled_from(
     ["t", "w_B", "total_energy", "kinetic_energy"])).map(lambda rq: ("method", rq[0], "statistics", [("lit", rq[1])], []))
 
+# what a controller's law sees at a sample: nb bodies and nw wheels
+RECIPES["SampledState"] = st.tuples(st.floats(0.0, 10.0), st.integers(1, 3), st.integers(0, 3)).map(
+    lambda a: _call_spec("SampledState", [("lit", a[0]), ("lit", [[0.0, 0.0, 0.0]] * a[1]),
+                                          ("lit", [[0.0, 0.0, 0.0, 1.0]] * a[1]), ("lit", [[0.0, 0.0, 0.0]] * a[1]),
+                                          ("lit", [[0.0, 0.0, 0.0]] * a[1]), ("lit", [0.0] * a[2])]))
+
 # the force element classes of a scene (Scene.add, Scene(elements=...))
 ELEMENT_CLASSES = ("UniformGravity", "PointMassGravity", "MutualGravity", "GravityGradient", "SpringDamper", "Drag",
                    "ScheduledLoads", "PythonForce", "Thrust", "MagneticDipole",

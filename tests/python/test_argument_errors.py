@@ -321,6 +321,9 @@ EXAMPLES = {
     "Wheel": lambda: {"axis_B": V, "inertia": 0.1},
     "Gyrostat": lambda: {"body": rd.RigidBody(1.0, I_BOX), "wheels": [rd.Wheel(V, 0.01)]},
     "GyrostatState": lambda: {},
+    "Controller": lambda: {"period": 0.5, "law": lambda state: {}},
+    "SampledState": lambda: {"t": 0.5, "p_W": np.zeros((1, 3)), "q_WB": np.array([Q]), "v_W": np.zeros((1, 3)),
+                             "w_B": np.zeros((1, 3)), "wheel_speed": np.zeros(0)},
     # their exact references
     "CompoundPendulumSolution": _pendulum, "CompoundPendulumSolution.at": lambda: {"t": 0.5},
     "LagrangeTopSolution": _top, "LagrangeTopSolution.at": lambda: {"t": 0.5},
