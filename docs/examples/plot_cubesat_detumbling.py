@@ -9,14 +9,14 @@ gyro every second and commands the B-dot law (Stickler & Alfriend, "Elementary m
 system"), m_B = −k dB_B/dt = −k (−ω_B × B_B), held until the next sample
 (:class:`rigiddyn.Controller`, :class:`rigiddyn.control.BDot`).
 
-The torque m_B × B_B = −k (|B|² 1 − B Bᵀ) ω damps the rate normal to the field. For an isotropic body,
-I ω̇_W = −k (|B|² 1 − B Bᵀ) ω_W. The field turns and changes along the orbit (2.25e-5 T at the equator,
+The torque m_B × B_B = −k (\|B\|² 1 − B Bᵀ) ω damps the rate normal to the field. For an isotropic body,
+I ω̇_W = −k (\|B\|² 1 − B Bᵀ) ω_W. The field turns and changes along the orbit (2.25e-5 T at the equator,
 4.5e-5 T over the poles); when the decay is slow against the orbit, ε = λ T_orb/(2π) ≪ 1, the rate follows
 the orbit average (first-order averaging):
 
-    ω̄_W(t) = exp(−(k/I) M̄ t) ω_W(0),   M̄ = ⟨|B|² 1 − B Bᵀ⟩ over the orbit.
+    ω̄_W(t) = exp(−(k/I) M̄ t) ω_W(0),   M̄ = ⟨\|B\|² 1 − B Bᵀ⟩ over the orbit.
 
-**What it checks:** at each whole orbit the simulated rate is the averaged prediction within ε |ω(0)| (the
+**What it checks:** at each whole orbit the simulated rate is the averaged prediction within ε \|ω(0)\| (the
 averaging theorem's O(ε) over the decay time); the rate falls below a sixth of its start in four orbits.
 """
 
@@ -59,7 +59,7 @@ w_bar = (V @ (np.exp(-np.outer(run.t, lam)) * (V.T @ w_W[0])).T).T  # the averag
 # The checks
 # ----------
 # At whole orbits the fluctuation of the field averages out; the averaged solution is then within O(eps) of
-# the true one over the decay time (the averaging theorem), eps |w(0)| here.
+# the true one over the decay time (the averaging theorem), eps \|w(0)\| here.
 orbits = [int(np.argmin(np.abs(run.t - j * T_orb))) for j in range(1, 5)]
 misses = [float(np.linalg.norm(w_W[i] - w_bar[i])) for i in orbits]
 print("rate at whole orbits [rad/s]:", [f"{np.linalg.norm(w_W[i]):.5f}" for i in orbits],

@@ -16,7 +16,7 @@ vanishes where k_p e = −k_d ω_B = k_d n ŷ, a lag in pitch of sin(θ/2) = k_d
 then constant between the samples: the hold changes nothing).
 
 **What it checks:** the error from the steady state stays within the damped oscillator's envelope
-|e(0) − e_ss| e^{−ζ ω_n t}/√(1 − ζ²), widened by the hold and the 10° error's nonlinearity; after 21 time
+\|e(0) − e_ss\| e^{−ζ ω_n t}/√(1 − ζ²), widened by the hold and the 10° error's nonlinearity; after 21 time
 constants the pitch lag is k_d n/k_p to the envelope's remainder.
 """
 
