@@ -83,7 +83,7 @@ struct SimulationResult {
   double elapsed_seconds;
   bool scalar_first = false;  // q_WB rows as (w, x, y, z)
   py::object error = py::none();  // a GlobalError (simulate(..., error=True)) or None
-  LazyBalance balance;  // a rigiddyn.Balance (every simulate run) or None (a batch result)
+  LazyBalance balance{};  // a rigiddyn.Balance (every simulate run) or None (a batch result)
   py::object choice = py::none();  // a ToleranceChoice (simulate(..., tolerance=...)) or None
 };
 

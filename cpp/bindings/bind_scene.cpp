@@ -765,6 +765,17 @@ std::optional<ControlLaw> shipped_law(py::handle law, const Scene& scene) {
                                   q_target_WB, body));
 }
 
+// A rigiddyn.control.BDot commands a magnetorquer: ValueError naming controller.law.element unless that element of
+// `scene` is a MagneticDipole (a ScheduledLoads takes a command too, which would read the dipole as a force). An
+// index out of range is left to the sample, which names it.
+void check_bdot_element(py::handle law, const Scene& scene) {
+  if (!py::type::of(law).is(py::module_::import("rigiddyn.control").attr("BDot"))) return;
+  const int e = py_io::as_int(law.attr("element"), "controller.law.element", 0);
+  if (e >= static_cast<int>(scene.elements.size()) || std::holds_alternative<MagneticDipole>(scene.elements[e])) return;
+  py_io::throw_value_error("controller.law.element", "the index of a MagneticDipole in the scene (the magnetorquer "
+                           "the law commands)", std::to_string(e) + " (a " + element_type_name(scene.elements[e]) + ")");
+}
+
 // The C++ Controller of a rigiddyn.Controller (rigiddyn/control.py, which checks the law's commands) on `scene`: its
 // period, and a shipped law in C++ (shipped_law: without gyro noise) or a law that takes the GIL and calls its
 // _sample(t, p_W, q_WB, v_W, w_B, wheel_speed) -> (wheel_torque or None, [(element, value (3,)), ...]). The Python
@@ -773,6 +784,7 @@ Controller as_controller(py::handle controller, const Scene& scene) {
   if (!py::isinstance(controller, py::module_::import("rigiddyn.control").attr("Controller"))) {
     py_io::throw_type_error("controller", "a rigiddyn.Controller or None", controller);
   }
+  check_bdot_element(controller.attr("law"), scene);
   Controller out;
   out.period = py_io::as_scalar(controller.attr("period"), "controller.period");
   if (controller.attr("w_B_noise").cast<double>() == 0.0) {

@@ -371,3 +371,16 @@ def test_bdot_on_the_shipped_cubesat_follows_the_orbit_averaged_decay():
         i = int(np.argmin(np.abs(result.t - j * T_orb)))
         w_bar = V @ (np.exp(-lam * result.t[i]) * (V.T @ w_W[0]))
         assert np.linalg.norm(w_W[i] - w_bar) <= eps * np.linalg.norm(w_W[0])
+
+
+@pytest.mark.parametrize("noise", [0.0, 1e-6])  # the C++ law, and the Python one (gyro noise)
+def test_a_bdot_law_must_command_a_magnetic_dipole(noise):
+    """A ScheduledLoads takes a command too (a force): a BDot pointed at one is refused before the run, naming
+    controller.law.element and the element's type, on either path of the law."""
+    dipole = rd.MagneticDipole(m_B=(0.0, 0.0, 0.0), B_W=(0.0, 0.0, 2e-5))
+    scene = rd.Scene([rd.RigidBody(1.0, [1e-3, 1e-3, 1e-3])], elements=[dipole, rd.ScheduledLoads(body=0, loads=[])])
+    law = rd.control.BDot(1e4, dipole, element=1)
+    with pytest.raises(ValueError, match=r"^controller\.law\.element: expected the index of a MagneticDipole .*"
+                                         r"got 1 \(a ScheduledLoads\)"):
+        rd.simulate(scene, [rd.RigidBodyState(w_B=(0.1, 0.0, 0.0))], 0.1, steps=2,
+                    controller=rd.Controller(0.5, law, w_B_noise=noise, seed=1))
