@@ -26,7 +26,7 @@ import numpy as np
 
 from . import _core
 from ._core_call import core_call
-from ._names import closest
+from ._names import check_keys, closest
 from .units import _shown, quantity, vector_quantity
 
 # primitive shape -> its size arguments [m] (the rigiddyn constructor of the same name)
@@ -57,18 +57,10 @@ def _fail(name: str, expected: str, got: Any) -> ValueError:
 
 
 def _known_keys(value: Any, name: str, known: frozenset[str] | set[str]) -> Mapping[str, Any]:
-    """`value` checked to be a table of keys in `known`: "<name>.<key>: expected a key of [<table>]; did you
-    mean '<closest>'? (one of: ...), got an unknown key" for the first other one."""
-    table = re.sub(r"\[\d+\]", "", name)  # body[2].primitive is a [body.primitive] table
-    if not isinstance(value, Mapping):
-        raise _fail(name, f"a table [{table}]", value)
-    unknown = sorted(set(value) - known, key=str)
-    if unknown:
-        close = closest(str(unknown[0]), known)
-        hint = f"; did you mean {close!r}?" if close else ""
-        raise ValueError(f"{name}.{unknown[0]}: expected a key of [{table}]{hint} "
-                         f"(one of: {', '.join(sorted(known))}), got an unknown key")
-    return value
+    """`value` checked to be a table of keys in `known` (check_keys), the table named as a file writes it:
+    body[2].primitive is a [body.primitive] table."""
+    table = re.sub(r"\[\d+\]", "", name)
+    return check_keys(value, name, known, f"[{table}]")
 
 
 def inertia_matrix(value: Any, name: str) -> np.ndarray:

@@ -3,7 +3,8 @@
 from __future__ import annotations
 
 import difflib
-from collections.abc import Iterable
+from collections.abc import Iterable, Mapping
+from typing import Any
 
 
 def closest(word: str, choices: Iterable[str]) -> str | None:
@@ -29,3 +30,20 @@ def require_method(method: object, argument: str = "method") -> str:
         raise ValueError(f"{argument}: expected one of {', '.join(names)}{did_you_mean(str(method), names)}, "
                          f"got {method!r}")
     return str(method)
+
+
+def check_keys(table: Any, name: str, known: frozenset[str] | set[str], where: str) -> Mapping[str, Any]:
+    """`table` checked to be a table (a Mapping) whose keys are all in `known`, as a file's reader needs: else
+    ValueError "<name>: expected a table <where>, got ..." or, for the first unknown key, "<name>.<key>: expected a
+    key of <where>; did you mean '<closest>'? (one of: ...), got an unknown key"."""
+    from .units import _shown
+
+    if not isinstance(table, Mapping):
+        raise ValueError(f"{name}: expected a table {where}, got {_shown(table)}")
+    unknown = sorted(set(table) - known, key=str)
+    if unknown:
+        close = closest(str(unknown[0]), known)
+        hint = f"; did you mean {close!r}?" if close else ""
+        raise ValueError(f"{name}.{unknown[0]}: expected a key of {where}{hint} (one of: {', '.join(sorted(known))}), "
+                         "got an unknown key")
+    return table

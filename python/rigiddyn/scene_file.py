@@ -149,6 +149,7 @@ from ._core_call import core_call as _core_call
 from ._load_table import LOAD_KEYS, applied_load
 from ._mass_properties import SOURCES, mass_properties
 from ._memory import available_bytes, format_bytes
+from ._names import check_keys as _check_keys
 from ._names import closest as _closest
 from .problem import _check_nesting, _orientation, _read_toml, _tradeoff_defaults
 from .units import _shown, quantity, vector_quantity
@@ -257,20 +258,6 @@ class SceneFile:
 
 def _fail(name: str, expected: str, got: Any) -> ValueError:
     return ValueError(f"{name}: expected {expected}, got {_shown(got)}")
-
-
-def _check_keys(table: Any, name: str, known: frozenset[str], where: str) -> Mapping[str, Any]:
-    """`table` checked to be a table whose keys are all in `known` (else the first unknown is named,
-    with the closest known key)."""
-    if not isinstance(table, Mapping):
-        raise _fail(name, f"a table {where}", table)
-    unknown = sorted(set(table) - known, key=str)
-    if unknown:
-        close = _closest(str(unknown[0]), known)
-        hint = f"; did you mean {close!r}?" if close else ""
-        raise ValueError(f"{name}.{unknown[0]}: expected a key of {where}{hint} (one of: {', '.join(sorted(known))}), "
-                         "got an unknown key")
-    return table
 
 
 def _required(table: Mapping[str, Any], key: str, name: str, expected: str) -> Any:

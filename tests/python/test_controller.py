@@ -131,46 +131,46 @@ def test_rk4_keeps_order_four_under_a_controller():
         assert 16 * 0.85 < coarse / fine < 16 * 1.15, errors
 
 
-def test_bdot_rate_decays_as_its_closed_form():
-    """B-dot (gyro rate form) on a sphere of inertia I in a uniform field B along z, w0 normal to B: the torque
-    m x B_B = -k |B|^2 w_perp gives |w_perp(t)| = |w0| exp(-lambda t), lambda = k |B|^2 / I (w_par = 0 stays 0).
-    Held over a period, the decay is (1 - lambda T) per period instead of exp(-lambda T): |ln| grows by
-    lambda^2 T t / 2 (to first order). The hold keeps m fixed in B while B_B turns by |w| T: the torque's direction
-    errs by O(|w| T), which turns w_perp about B without changing its size to first order, and its size by
-    O((|w| T)^2) per period: lambda t (|w0| T)^2."""
-    I, B, k, T = 0.1, 3e-5, 1e6, 0.5
-    lam = k * B**2 / I
-    field = rd.MagneticDipole(m_B=(0.0, 0.0, 0.0), B_W=(0.0, 0.0, B))
-    scene = rd.Scene([rd.RigidBody(10.0, [I, I, I])], elements=[field])
-    w0 = np.array([0.03, -0.04, 0.0])
-    result = rd.simulate(scene, [rd.RigidBodyState(w_B=w0)], 0.05, duration=300.0, record_every=20,
-                         controller=rd.Controller(T, BDot(k, field, element=0)))
+# B-dot on a sphere of inertia I in a uniform field B along z, w0 normal to B, held every T seconds
+BDOT_I, BDOT_B, BDOT_K, BDOT_T = 0.1, 3e-5, 1e6, 0.5
+BDOT_W0 = np.array([0.03, -0.04, 0.0])
+BDOT_LAMBDA = BDOT_K * BDOT_B**2 / BDOT_I
+
+
+def bdot_decay(rate):
+    """(t, ln(|w_perp| / closed form)) of 300 s of B-dot with the `rate` estimate, the closed form
+    |w0| exp(-lambda t), lambda = k |B|^2 / I; and |w_perp| at the start and the end."""
+    field = rd.MagneticDipole(m_B=(0.0, 0.0, 0.0), B_W=(0.0, 0.0, BDOT_B))
+    scene = rd.Scene([rd.RigidBody(10.0, [BDOT_I, BDOT_I, BDOT_I])], elements=[field])
+    result = rd.simulate(scene, [rd.RigidBodyState(w_B=BDOT_W0)], 0.05, duration=300.0, record_every=20,
+                         controller=rd.Controller(BDOT_T, BDot(BDOT_K, field, element=0, rate=rate)))
     w_W = np.einsum("nij,nj->ni", rd.quat_to_matrix(result.q_WB[:, 0]), result.w_B[:, 0])
-    t = result.t
     w_perp = np.linalg.norm(w_W[:, :2], axis=1)
-    closed = np.linalg.norm(w0) * np.exp(-lam * t)
-    bound = lam**2 * T * t / 2 + lam * t * (np.linalg.norm(w0) * T) ** 2 + 1e-12  # + round-off at t = 0
-    assert np.all(np.abs(np.log(w_perp / closed)) <= bound)
-    assert w_perp[-1] < 0.1 * w_perp[0]  # it detumbles: lambda t = 2.7
+    closed = np.linalg.norm(BDOT_W0) * np.exp(-BDOT_LAMBDA * result.t)
+    return result.t, np.log(w_perp / closed), w_perp[0], w_perp[-1]
+
+
+def test_bdot_rate_decays_as_its_closed_form():
+    """B-dot (gyro rate form): the torque m x B_B = -k |B|^2 w_perp gives |w_perp(t)| = |w0| exp(-lambda t)
+    (w_par = 0 stays 0). Held over a period, the decay is (1 - lambda T) per period instead of exp(-lambda T): |ln|
+    grows by lambda^2 T t / 2 (to first order). The hold keeps m fixed in B while B_B turns by |w| T: the torque's
+    direction errs by O(|w| T), which turns w_perp about B without changing its size to first order, and its size
+    by O((|w| T)^2) per period: lambda t (|w0| T)^2."""
+    t, log_ratio, first, last = bdot_decay("gyro")
+    lam, T = BDOT_LAMBDA, BDOT_T
+    bound = lam**2 * T * t / 2 + lam * t * (np.linalg.norm(BDOT_W0) * T) ** 2 + 1e-12  # + round-off at t = 0
+    assert np.all(np.abs(log_ratio) <= bound)
+    assert last < 0.1 * first  # it detumbles: lambda t = 2.7
 
 
 def test_bdot_difference_form_detumbles():
     """The finite-difference estimate (B_k - B_k-1)/T needs no gyro: it damps the same rate, its command zero at the
     first sample (ln errs by lambda T) and its estimate the rate at t_k - T/2, when w_perp was larger by
     lambda T / 2 (lambda^2 T t / 2 more than the gyro form's bound above)."""
-    I, B, k, T = 0.1, 3e-5, 1e6, 0.5
-    lam = k * B**2 / I
-    field = rd.MagneticDipole(m_B=(0.0, 0.0, 0.0), B_W=(0.0, 0.0, B))
-    scene = rd.Scene([rd.RigidBody(10.0, [I, I, I])], elements=[field])
-    w0 = np.array([0.03, -0.04, 0.0])
-    result = rd.simulate(scene, [rd.RigidBodyState(w_B=w0)], 0.05, duration=300.0, record_every=20,
-                         controller=rd.Controller(T, BDot(k, field, element=0, rate="difference")))
-    w_W = np.einsum("nij,nj->ni", rd.quat_to_matrix(result.q_WB[:, 0]), result.w_B[:, 0])
-    t = result.t
-    w_perp = np.linalg.norm(w_W[:, :2], axis=1)
-    closed = np.linalg.norm(w0) * np.exp(-lam * t)
-    bound = lam * T + lam**2 * T * t + lam * t * (np.linalg.norm(w0) * T) ** 2
-    assert np.all(np.abs(np.log(w_perp / closed)) <= bound)
+    t, log_ratio, _, _ = bdot_decay("difference")
+    lam, T = BDOT_LAMBDA, BDOT_T
+    bound = lam * T + lam**2 * T * t + lam * t * (np.linalg.norm(BDOT_W0) * T) ** 2
+    assert np.all(np.abs(log_ratio) <= bound)
 
 
 def pd_response(k_p, k_d, T, theta0, duration):
