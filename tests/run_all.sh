@@ -24,8 +24,9 @@ bash tests/install_debian_packages.sh "${packages[@]}"
 # (tests/pip_install.sh). CMake reads CMAKE_CXX_COMPILER_LAUNCHER and CXX.
 export CMAKE_CXX_COMPILER_LAUNCHER=ccache CCACHE_BASEDIR="$PWD" CXX="${CXX:-g++}"
 
-# the package with the test and docs extras, once (tests/docs/run.sh below finds it installed)
-bash tests/pip_install.sh test,docs
+# the package with the test, docs and peers extras, once (tests/docs/run.sh below finds it installed; the peers:
+# the Pinocchio cross-check of the kinematic trees and the benchmarks against MuJoCo and REBOUND)
+bash tests/pip_install.sh test,docs,peers
 
 # The C++ unit tests are compiled once, under the sanitizers (the sanitize preset: its library at -O1,
 # see CMakeLists.txt). That build runs in the background at the lowest priority from here on: it takes
