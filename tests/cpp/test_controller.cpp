@@ -3,6 +3,7 @@
 // straddles a sample); held wheel torques spin a gyrostat as the closed form says; bad inputs are named.
 #include <gtest/gtest.h>
 
+#include "invalid_argument_message.hpp"
 #include "rigiddyn/scene/control_laws.hpp"
 #include "rigiddyn/scene/controller.hpp"
 #include "rigiddyn/scene/simulate_scene.hpp"
@@ -36,16 +37,7 @@ SimulationOptions rk4(double dt, std::int64_t steps, double t0 = 0.0) {
   return o;
 }
 
-// The message of the std::invalid_argument that f throws ("" when it throws none).
-template <class F>
-std::string message_of(F&& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::message_of;
 
 TEST(Controller, LawSeesTheExactSampleTimes) {
   std::vector<double> seen;

@@ -2,6 +2,7 @@
 // an independent integration of its ODE (classical RK4 written here, Richardson-extrapolated), the
 // conserved quantities along at(t), the pendulum's period against a quadrature of its period integral,
 // Tsiolkovsky, and every refusal.
+#include "invalid_argument_message.hpp"
 #include "rigiddyn/exact/compound_pendulum.hpp"
 #include "rigiddyn/exact/constant_thrust.hpp"
 #include "rigiddyn/exact/lagrange_top.hpp"
@@ -559,14 +560,7 @@ TEST(ConstantThrustSolution, RefusesBadInput) {
 // ---------------------------------------------------------------- states across the double range
 // (found by fuzzing: underflow and overflow of intermediates; each test failed before the fix)
 
-std::string message_of(const std::function<void()>& make) {
-  try {
-    make();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "no exception";
-}
+using test::message_of;
 
 TEST(CompoundPendulumSolution, TinyStatesSwingAsTheLinearPendulum) {
   // θ0, ω0/ω0 ~ 1e-170 and below: k² = s² + v² underflows; the motion is the linear one,

@@ -6,6 +6,7 @@
 // tests/python/test_gyrostat.py.
 #include <gtest/gtest.h>
 
+#include "invalid_argument_message.hpp"
 #include "rigiddyn/scene/compile.hpp"
 #include "rigiddyn/scene/simulate_scene.hpp"
 
@@ -21,14 +22,7 @@ using namespace rigiddyn;
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::message_of;
 
 Scene one(const Body& body) {
   Scene s;

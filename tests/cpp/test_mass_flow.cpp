@@ -4,6 +4,7 @@
 // torque and power against the notes' eq. (4.36) written out by hand at random states.
 #include <gtest/gtest.h>
 
+#include "invalid_argument_message.hpp"
 #include "rigiddyn/models/euler_equations.hpp"
 #include "rigiddyn/scene/body.hpp"
 #include "rigiddyn/scene/elements/thrust.hpp"
@@ -27,15 +28,7 @@ constexpr double kEps = std::numeric_limits<double>::epsilon();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// The message of the std::invalid_argument `f` throws ("" if it throws none).
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::message_of;
 
 bool starts_with(const std::string& s, const std::string& prefix) { return s.rfind(prefix, 0) == 0; }
 

@@ -3,6 +3,7 @@
 // (tail lanes, lane count, a diverged lane) bitwise; bad input named.
 #include <gtest/gtest.h>
 
+#include "invalid_argument_message.hpp"
 #include "rigiddyn/batch/simd_rigid_body.hpp"
 #include "rigiddyn/simulate/simulate.hpp"
 
@@ -281,16 +282,7 @@ TEST(SimdRigidBody, ZeroStepsRecordsTheInitialState) {
   for (std::size_t i = 0; i < 3; ++i) expect_matches_scalar(batch, b, i, 1.0);
 }
 
-// the message of the std::invalid_argument that f throws, or "" if it throws none
-template <class F>
-std::string message_of(F&& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::message_of;
 
 TEST(SimdRigidBody, BadInputNamesTheArgument) {
   const Batch good = tumbling(3, 8);

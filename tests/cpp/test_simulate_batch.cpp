@@ -5,6 +5,7 @@
 // lowest); the monitor stops every sample.
 #include <gtest/gtest.h>
 
+#include "invalid_argument_message.hpp"
 #include "rigiddyn/batch/parallel_for.hpp"
 #include "rigiddyn/batch/simulate_batch.hpp"
 #include "rigiddyn/scene/simulate_scene.hpp"
@@ -251,14 +252,7 @@ TEST(SimulateBatch, ADivergedSampleStopsAloneNaNPadded) {
 
 // ---- bad input, failing samples, the monitor -----------------------------------------------------------
 
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "(no std::invalid_argument)";
-}
+using test::message_of;
 
 TEST(SimulateBatch, BadInputIsRefusedUpFrontNamingTheArgumentAndBothSizes) {
   const auto initial = tumbling_states(3);

@@ -5,6 +5,7 @@
 // and its argument checks.
 #include <gtest/gtest.h>
 
+#include "invalid_argument_message.hpp"
 #include "rigiddyn/integrators/method.hpp"
 #include "rigiddyn/scene/elements/thrust.hpp"
 #include "rigiddyn/scene/elements/uniform_gravity.hpp"
@@ -368,14 +369,7 @@ INSTANTIATE_TEST_SUITE_P(EveryMethod, VariableMassRunsOut,
 
 // ---- construction --------------------------------------------------------------------------------------
 
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::message_of;
 
 TEST(VariableMassParticleModel, RefusesWhatItCannotRun) {
   const Particle particle(2.0);
