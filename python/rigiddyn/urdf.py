@@ -59,7 +59,8 @@ def _read(source: Union[str, "os.PathLike[str]"]) -> Any:
         text = source.encode()
     elif isinstance(source, (str, os.PathLike)):
         if not os.path.isfile(source):
-            raise FileNotFoundError(f"source: expected a URDF file or an XML string, got {os.fspath(source)!r} (no such file)")
+            raise ValueError(f"source: expected a URDF file's path or URDF XML (starting with '<'), got "
+                             f"{os.fspath(source)!r} (no such file)")
         with open(source, "rb") as f:
             text = f.read()
     else:
@@ -80,6 +81,11 @@ def _read(source: Union[str, "os.PathLike[str]"]) -> Any:
 def _structure(robot: Any) -> Tuple[str, Dict[str, List[Any]]]:
     """The root link and each link's child joints (in file order); refuses several roots and loops."""
     names = [link.name for link in robot.links]
+    if not names:
+        raise ValueError("source: expected a robot with at least one <link>, got none")
+    twice = sorted({name for name in names if names.count(name) > 1})
+    if twice:
+        raise ValueError(f"links {twice} are declared more than once: expected unique link names")
     children: Dict[str, List[Any]] = {name: [] for name in names}
     parent_joint: Dict[str, str] = {}
     for joint in robot.joints:
@@ -124,7 +130,9 @@ def _mass_properties(link: Any) -> Optional[SpatialInertia]:
     if not (np.isfinite(m) and m > 0.0):
         raise ValueError(f"link {link.name!r}: expected a finite mass >= 0, got {m}")
     X_LC = _transform(inertial.origin, f"link {link.name!r} inertial")  # C: the inertia frame at the centre of mass
-    if not np.all(np.isfinite(I)) or np.linalg.eigvalsh(I).min() < 0.0:
+    if not np.all(np.isfinite(I)):
+        raise ValueError(f"link {link.name!r}: expected a finite inertia [kg m²], got {I.tolist()}")
+    if np.linalg.eigvalsh(I).min() < 0.0:
         raise ValueError(f"link {link.name!r}: expected a positive semi-definite inertia [kg m²], got {I.tolist()} "
                          f"(principal moments {np.linalg.eigvalsh(I).tolist()})")
     # I_C in the link's axes: R_LC I R_LC^T
@@ -187,10 +195,10 @@ def load_urdf(source: Union[str, "os.PathLike[str]"], floating_base: bool = Fals
     ------
     ImportError
         yourdfpy is not installed (``pip install "rigiddyn[urdf]"``).
-    FileNotFoundError
-        No file at the path.
+    TypeError
+        `source` neither a str nor a path; `floating_base` not a bool.
     ValueError
-        Not well-formed XML or not a URDF; a joint type other than revolute, continuous, prismatic,
+        No file at the path; not well-formed XML or not a URDF; a joint type other than revolute, continuous, prismatic,
         floating or fixed (planar is refused), naming the joint; several roots or a kinematic loop, naming
         the links; a negative mass or an inertia tensor that is not positive semi-definite, naming the link
         and the value; a moving link (or the floating root) without a positive-definite inertia, naming it.
@@ -221,6 +229,8 @@ def load_urdf(source: Union[str, "os.PathLike[str]"], floating_base: bool = Fals
     >>> rd.rnea(tree, [0.0], [0.0], [0.0]).round(12)  # holds the 1 kg forearm level, 0.1 m out
     array([-0.981])
     """
+    if not isinstance(floating_base, (bool, np.bool_)):
+        raise TypeError(f"floating_base: expected a bool, got {floating_base!r}")
     robot = _read(source)
     root, children = _structure(robot)
     links = {link.name: link for link in robot.links}

@@ -229,6 +229,11 @@ def test_the_root_with_mass_welded_to_the_world_is_a_fixed_link():
     (ARM.replace("</robot>", '<joint name="back" type="fixed"><parent link="tool"/><child link="upper"/></joint></robot>'),
      r"expected one root link .*got none: a kinematic loop"),
     (ARM.replace("</robot>", '<link name="other"/></robot>'), r"expected one root link .*\['upper', 'other'\]"),
+    (ARM.replace("</robot>", '<link name="fore"/></robot>'), r"links \['fore'\] are declared more than once"),
+    ('<robot name="empty"/>', r"expected a robot with at least one <link>, got none"),
+    (single_link("revolute", inertial='<inertial><mass value="1"/><inertia ixx="nan" iyy="1" izz="1" ixy="0" '
+                 'ixz="0" iyz="0"/></inertial>'), r"link 'body': expected a finite inertia"),
+    (ARM.replace('value="2.0"', 'value="heavy"'), r"expected a valid URDF, got one yourdfpy cannot read"),
     (ARM.replace("</robot>", ""), r"expected well-formed URDF XML"),
     ("<sdf/>", r"expected a <robot> root element, got <sdf>"),
 ])
@@ -243,10 +248,12 @@ def test_a_floating_root_without_mass_is_refused():
 
 
 def test_a_missing_file_and_a_wrong_type():
-    with pytest.raises(FileNotFoundError, match=r"no_such\.urdf"):
+    with pytest.raises(ValueError, match=r"source: expected a URDF file's path .*got 'no_such\.urdf' \(no such file\)"):
         rd.load_urdf("no_such.urdf")
     with pytest.raises(TypeError, match=r"source: expected a path or an XML string, got int"):
         rd.load_urdf(3)
+    with pytest.raises(TypeError, match=r"floating_base: expected a bool, got 'yes'"):
+        rd.load_urdf(ARM, floating_base="yes")
 
 
 def test_without_yourdfpy_the_error_names_the_extra(monkeypatch):
