@@ -152,7 +152,7 @@ def single_link(joint_type="floating", extra="", inertial=None, axis="1 0 0"):
 
 
 def spatial_inertia_matrix(m, c, I_C):
-    """Featherstone's 6x6 spatial inertia about the frame's origin, angular rows first (eq. 2.63)."""
+    """Featherstone's 6x6 spatial inertia about the frame's origin, angular rows first."""
     C = rd.hat(c)
     return np.block([[I_C + m * C @ C.T, m * C], [m * C.T, m * np.eye(3)]])
 
@@ -178,7 +178,7 @@ def test_a_massless_or_point_mass_link_on_a_fixed_joint_is_welded_into_its_body(
     R = rpy_matrix([0.3, -0.2, 0.5])
     I = np.array([[1.0, 0.1, -0.05], [0.1, 1.2, 0.02], [-0.05, 0.02, 1.4]])
     expected = spatial_inertia_matrix(2.0, [0.1, 0.2, 0.3], R @ I @ R.T) + \
-        spatial_inertia_matrix(0.5, [0.0, 0.0, 1.0], np.zeros((3, 3)))  # spatial inertias add (eq. 2.65)
+        spatial_inertia_matrix(0.5, [0.0, 0.0, 1.0], np.zeros((3, 3)))  # the spatial inertias of welded bodies add
     assert close(rd.crba(tree, tree.neutral_configuration()), expected)
 
 
