@@ -15,11 +15,13 @@ when a URDF is read. What is read, and how (ROS, "URDF XML specification", wiki.
   mimic joint is loaded as an independent joint.
 
 Links without mass: every link that a joint moves needs a positive-definite inertia (the Tree's rule). A
-link on a fixed joint whose own inertia is not positive definite (no ``<inertial>``, mass 0, or a point
-mass, as URDF's tool frames and sensor frames) is welded into the body it is fixed to: its mass, if any, is
-added to that body's, and its children are attached to that body through it. It has no link of its own in
-the tree. The root link is fixed to the world (or, with ``floating_base=True``, joined to it by a
-FreeJoint at the world's origin); welded into the world, its mass drops out of the dynamics.
+link on a fixed joint is welded into the body it is fixed to when its own inertia is not positive definite
+(no ``<inertial>``, mass 0, or a point mass, as URDF's tool frames and sensor frames), or when that body's
+own inertia is not (a massless link carrying its mass on fixed links, as a ``world`` link fixed to a
+``base_link``): its mass, if any, is added to that body's, and its children are attached to that body
+through it. It has no link of its own in the tree. The root link is fixed to the world (or, with
+``floating_base=True``, joined to it by a FreeJoint at the world's origin); welded into the world, its
+mass drops out of the dynamics.
 """
 
 from __future__ import annotations
@@ -171,9 +173,9 @@ def load_urdf(source: Union[str, "os.PathLike[str]"], floating_base: bool = Fals
     joint), nor is any geometry. The module rigiddyn.urdf states the mapping in full.
 
     Massless links: a link on a fixed joint whose own inertia is not positive definite (no inertial, mass 0
-    or a point mass: tool and sensor frames) is welded into the body it is fixed to (its mass, if any, added
-    to that body's) and has no link of its own; every other link needs a positive-definite inertia after
-    that. The root is fixed to the world, or joined to it by a FreeJoint with ``floating_base=True``.
+    or a point mass: tool and sensor frames), or that is fixed to a body whose own inertia is not, is welded
+    into that body (its mass, if any, added to the body's) and has no link of its own; every other link
+    needs a positive-definite inertia after that. The root is fixed to the world, or joined to it by a FreeJoint with ``floating_base=True``.
 
     Parameters
     ----------
@@ -240,6 +242,7 @@ def load_urdf(source: Union[str, "os.PathLike[str]"], floating_base: bool = Fals
     bodies: List[Tuple[str, int, Any, Transform]] = []  # (name, parent body, joint, X_T)
     parts: List[List[Part]] = []                        # each body's welded parts (its own first)
     host: Dict[str, Tuple[int, Transform]] = {}
+    own_definite: List[bool] = []                       # each body's own inertia positive definite
     stack: List[Tuple[str, Optional[Any]]] = [(root, None)]
     while stack:
         name, joint = stack.pop()
@@ -249,7 +252,8 @@ def load_urdf(source: Union[str, "os.PathLike[str]"], floating_base: bool = Fals
         else:
             parent, X_HP = host[joint.parent]
             X_HJ, kind = X_HP * _transform(joint.origin, f"joint {joint.name!r}"), joint.type
-        if kind == "fixed" and not _positive_definite(own):  # welded into its host
+        # welded: fixed, and either without a positive-definite inertia or fixed to a body without one
+        if kind == "fixed" and not (_positive_definite(own) and (parent < 0 or own_definite[parent])):
             host[name] = (parent, X_HJ)
             if own is not None and parent >= 0:
                 parts[parent].append((X_HJ, own))
@@ -258,6 +262,7 @@ def load_urdf(source: Union[str, "os.PathLike[str]"], floating_base: bool = Fals
             host[name] = (len(bodies), Transform())
             bodies.append((name, parent, rd_joint, X_HJ))
             parts.append([] if own is None else [(Transform(), own)])
+            own_definite.append(_positive_definite(own))
         stack.extend((child.child, child) for child in reversed(children[name]))
 
     for (name, parent, rd_joint, X_T), body_parts in zip(bodies, parts):

@@ -191,6 +191,24 @@ def test_a_link_with_inertia_on_a_fixed_joint_keeps_its_own_link():
     assert close(p[2], [0.0, 0.0, 0.3 - 0.2])  # the elbow turned the 0.2 m offset along x to -z
 
 
+def test_a_massless_body_takes_the_mass_of_the_links_fixed_to_it():
+    # a massless root `world` fixed to `upper` (with mass), on a floating base: `upper` is welded into it
+    text = ARM.replace("<robot name=\"arm\">", '<robot name="arm"><link name="world"/><joint name="mount" '
+                       'type="fixed"><parent link="world"/><child link="upper"/><origin xyz="0 0 1"/></joint>')
+    floating = rd.load_urdf(text, floating_base=True)
+    assert floating.link_names == ["world", "fore"] and floating.parents == [-1, 0]
+    direct = rd.load_urdf(ARM, floating_base=True)  # the same body, its frame 1 m lower
+    q = direct.neutral_configuration()
+    q_world = q.copy()
+    q_world[2] = -1.0
+    H_world, H = rd.crba(floating, q_world), rd.crba(direct, q)
+    assert close(H_world[3:6, 3:6], 3.0 * np.eye(3)) and close(H_world[6:, 6:], H[6:, 6:])
+    # the centre of mass (H's block m [c]x) of all of it 1 m higher in `world`'s frame than in `upper`'s
+    assert close(rd.vee(H_world[:3, 3:6]) / 3.0, rd.vee(H[:3, 3:6]) / 3.0 + [0.0, 0.0, 1.0])
+    # welded to the world, the massless root keeps `upper` as a link of its own
+    assert rd.load_urdf(text).link_names == ["upper", "fore"]
+
+
 def test_floating_base_and_joint_kinds():
     tree = rd.load_urdf(ARM, floating_base=True)
     assert tree.nq == 7 + 1 and tree.nv == 6 + 1

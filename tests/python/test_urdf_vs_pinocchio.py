@@ -2,7 +2,8 @@
 them): the same URDF loaded by both libraries, then H (crba), inverse dynamics (rnea), forward dynamics
 (aba) and every link's pose compared at random states.
 
-The robots are example-robot-data's UR5 (6 revolute joints), Panda (7 revolute and 2 prismatic fingers,
+The robots are example-robot-data's UR5 (6 revolute joints; also on a floating base, where its massless
+`world` link takes the mass of `base_link`, fixed to it), Panda (7 revolute and 2 prismatic fingers,
 one a mimic joint: an independent joint in both libraries) and Talos (a humanoid on a floating base, 32
 revolute joints and 27 fixed ones, some of them massless or point-mass frames) where that package is
 installed, and always Pinocchio's sample manipulator and random humanoid (free flyer) written out as URDF.
@@ -50,7 +51,9 @@ def example_robot_data() -> Path | None:
 
 ROBOTS = {"ur5": ("ur_description/urdf/ur5_robot.urdf", False),
           "panda": ("panda_description/urdf/panda.urdf", False),
-          "talos": ("talos_data/robots/talos_reduced.urdf", True)}
+          "talos": ("talos_data/robots/talos_reduced.urdf", True),
+          # a massless `world` link fixed to `base_link`, under a floating base: base_link welded into it
+          "ur5_floating": ("ur_description/urdf/ur5_robot.urdf", True)}
 
 
 def sample_urdf(model, joint_type) -> str:
