@@ -45,6 +45,10 @@ I_BOX = np.diag([1.0, 2.0, 2.5])
 # a closed, outward-oriented tetrahedron
 TET_V = np.array([[0.0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]])
 TET_F = np.array([[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]])
+# a one-joint URDF (load_urdf)
+URDF_ARM = ('<robot name="arm"><link name="base"/><link name="arm"><inertial><mass value="1.0"/><inertia ixx="1" '
+            'iyy="2" izz="2.5" ixy="0" ixz="0" iyz="0"/></inertial></link><joint name="hinge" type="revolute">'
+            '<parent link="base"/><child link="arm"/><axis xyz="0 0 1"/></joint></robot>')
 
 
 def _tree():
@@ -307,6 +311,7 @@ EXAMPLES = {
     "SpringDamper": lambda: {"body_a": 0, "stiffness": 1.0},
     "Drag": lambda: {}, "ScheduledLoads": lambda: {"body": 0}, "PythonForce": lambda: {"fn": _push},
     "load_scene": lambda: {"path_or_text": "kepler"},
+    "load_urdf": lambda: {"source": URDF_ARM},
     # bodies about a fixed point, the scene's frame, variable mass
     "PivotedBody": lambda: {"body": rd.RigidBody(1.0, I_BOX), "p_OC_B": V},
     "PivotedPlanarBody": lambda: {"mass": 1.0, "inertia_zz": 0.5, "p_OC_B": [0.1, 0.2]},
