@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Installs rigiddyn from this tree with the extras named (comma-separated), built the same way every
-# time so that installing again compiles only what changed. Used by tests/run_all.sh and
-# tests/docs/run.sh; run from anywhere:
+# time so that installing again compiles only what changed; with --wheel DIR, builds its wheel into DIR
+# instead, from the same build folder (nothing is compiled again after an install). Used by
+# tests/run_all.sh, tests/docs/run.sh and tests/build_wheel.sh; run from anywhere:
 #   bash tests/pip_install.sh test,docs
+#   bash tests/pip_install.sh --wheel build/wheel
 # - Without pip's build isolation (its build requirements, [build-system] requires of pyproject.toml,
 #   installed into this Python first): an isolated build compiles against the pybind11 and Eigen
 #   headers of a new temporary folder each time, so every command line changes and the persistent
@@ -12,7 +14,13 @@
 #   ccache hits for the C++ tests' build (tests/run_all.sh sets the launcher and its base folder).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-extras="${1:?usage: bash tests/pip_install.sh EXTRA[,EXTRA...]}"
+usage="usage: bash tests/pip_install.sh EXTRA[,EXTRA...] | --wheel DIR"
+wheel_dir=""
+if [ "${1:-}" = "--wheel" ]; then
+  wheel_dir="${2:?$usage}"
+else
+  extras="${1:?$usage}"
+fi
 
 requires=$(python3 - <<'EOF'
 try:
@@ -30,4 +38,8 @@ options=(--no-build-isolation)
 if [ -f /usr/share/eigen3/cmake/Eigen3Config.cmake ]; then
   options+=(--config-settings=cmake.define.Eigen3_DIR=/usr/share/eigen3/cmake)
 fi
-CXX="${CXX:-g++}" python3 -m pip install --quiet "${options[@]}" ".[$extras]"
+if [ -n "$wheel_dir" ]; then
+  CXX="${CXX:-g++}" python3 -m pip wheel --quiet --no-deps "${options[@]}" --wheel-dir "$wheel_dir" .
+else
+  CXX="${CXX:-g++}" python3 -m pip install --quiet "${options[@]}" ".[$extras]"
+fi

@@ -27,6 +27,9 @@ export CMAKE_CXX_COMPILER_LAUNCHER=ccache CCACHE_BASEDIR="$PWD" CXX="${CXX:-g++}
 # the package with the test, docs and peers extras, once (tests/docs/run.sh below finds it installed; the peers:
 # the Pinocchio cross-check of the kinematic trees and the benchmarks against MuJoCo and REBOUND)
 bash tests/pip_install.sh test,docs,peers
+# the wheel from the same build (nothing compiled again), repaired to a manylinux tag, installed and run in a fresh
+# virtual environment without a compiler (README: "A wheel to install without a compiler")
+bash tests/build_wheel.sh
 
 # The C++ unit tests are compiled once, under the sanitizers (the sanitize preset: its library at -O1,
 # see CMakeLists.txt). That build runs in the background at the lowest priority from here on: it takes
