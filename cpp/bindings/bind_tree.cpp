@@ -1,6 +1,7 @@
 // Python bindings of the kinematic-tree layer (cpp/include/rigiddyn/tree): the joint kinds, Tree, and
 // Featherstone's algorithms forward_kinematics, rnea, bias_forces, crba and aba on numpy vectors.
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,15 @@ Array matrix_array(const Eigen::MatrixBase<Derived>& m) {
 }
 
 const Tree& as_tree(py::handle obj) { return py_io::as_instance<Tree>(obj, "tree", "a Tree"); }
+
+// The workspace the algorithms run in, kept between calls and made again only for a tree of another shape: a call
+// then allocates nothing but its arguments and its result. Each call holds the GIL, so one call at a time uses it;
+// take it after the arguments are converted (a conversion may call Python, and so another algorithm).
+TreeWorkspace& workspace_for(const Tree& tree) {
+  static std::optional<TreeWorkspace> kept;
+  if (!kept || !kept->fits(tree)) kept.emplace(tree);
+  return *kept;
+}
 
 // One of the joint classes.
 Joint as_joint(py::handle obj) {
@@ -278,8 +288,8 @@ void bind_tree_class(py::module_& m) {
       .def(
           "kinetic_energy",
           [](const Tree& t, py::handle q, py::handle v) {
-            TreeWorkspace ws(t);
-            return py_io::finite_result(kinetic_energy(t, as_vector(q, "q"), as_vector(v, "v"), ws), "kinetic_energy");
+            const Eigen::VectorXd q_in = as_vector(q, "q"), v_in = as_vector(v, "v");
+            return py_io::finite_result(kinetic_energy(t, q_in, v_in, workspace_for(t)), "kinetic_energy");
           },
           "q"_a, "v"_a,
           (std::string("Kinetic energy T = sum_i 1/2 v_i . I_i v_i [J] (= 1/2 v^T H(q) v).\n\n"
@@ -293,8 +303,8 @@ void bind_tree_class(py::module_& m) {
       .def(
           "potential_energy",
           [](const Tree& t, py::handle q) {
-            TreeWorkspace ws(t);
-            return py_io::finite_result(potential_energy(t, as_vector(q, "q"), ws), "potential_energy");
+            const Eigen::VectorXd q_in = as_vector(q, "q");
+            return py_io::finite_result(potential_energy(t, q_in, workspace_for(t)), "potential_energy");
           },
           "q"_a,
           (std::string("Potential energy V = -sum_i m_i g . p_W,Ci [J] of the uniform gravity (0 at W's origin).\n\n"
@@ -311,9 +321,10 @@ void bind_algorithms(py::module_& m) {
       "forward_kinematics",
       [](py::handle tree_obj, py::handle q, py::handle v) {
         const Tree& tree = as_tree(tree_obj);
-        TreeWorkspace ws(tree);
+        const Eigen::VectorXd q_in = as_vector(q, "q");
         const Eigen::VectorXd v_in = v.is_none() ? Eigen::VectorXd::Zero(tree.nv()) : as_vector(v, "v");
-        forward_kinematics(tree, as_vector(q, "q"), v_in, ws);
+        TreeWorkspace& ws = workspace_for(tree);
+        forward_kinematics(tree, q_in, v_in, ws);
         const py::ssize_t n = tree.num_links();
         Array R({n, py::ssize_t{3}, py::ssize_t{3}}), p({n, py::ssize_t{3}}), V({n, py::ssize_t{6}});
         for (py::ssize_t i = 0; i < n; ++i) {
@@ -346,10 +357,9 @@ void bind_algorithms(py::module_& m) {
       "rnea",
       [](py::handle tree_obj, py::handle q, py::handle v, py::handle a, py::handle f_ext) {
         const Tree& tree = as_tree(tree_obj);
-        TreeWorkspace ws(tree);
+        const Eigen::VectorXd q_in = as_vector(q, "q"), v_in = as_vector(v, "v"), a_in = as_vector(a, "a");
         const std::vector<Force> forces = as_external_forces(f_ext, tree);
-        return py_io::finite_result(
-            py_io::to_array(rnea(tree, as_vector(q, "q"), as_vector(v, "v"), as_vector(a, "a"), forces, ws)), "rnea");
+        return py_io::finite_result(py_io::to_array(rnea(tree, q_in, v_in, a_in, forces, workspace_for(tree))), "rnea");
       },
       "tree"_a, "q"_a, "v"_a, "a"_a, "f_ext"_a = py::none(),
       (std::string("Inverse dynamics by the recursive Newton-Euler algorithm: tau = H(q) a + C(q, v, f_ext).\n\n"
@@ -370,9 +380,8 @@ void bind_algorithms(py::module_& m) {
       "bias_forces",
       [](py::handle tree_obj, py::handle q, py::handle v) {
         const Tree& tree = as_tree(tree_obj);
-        TreeWorkspace ws(tree);
-        return py_io::finite_result(py_io::to_array(bias_forces(tree, as_vector(q, "q"), as_vector(v, "v"), ws)),
-                                    "bias_forces");
+        const Eigen::VectorXd q_in = as_vector(q, "q"), v_in = as_vector(v, "v");
+        return py_io::finite_result(py_io::to_array(bias_forces(tree, q_in, v_in, workspace_for(tree))), "bias_forces");
       },
       "tree"_a, "q"_a, "v"_a,
       (std::string("The bias forces C(q, v) = rnea(tree, q, v, 0): Coriolis, centrifugal and gravity terms.\n\n"
@@ -390,8 +399,8 @@ void bind_algorithms(py::module_& m) {
       "crba",
       [](py::handle tree_obj, py::handle q) {
         const Tree& tree = as_tree(tree_obj);
-        TreeWorkspace ws(tree);
-        return py_io::finite_result(matrix_array(crba(tree, as_vector(q, "q"), ws)), "crba");
+        const Eigen::VectorXd q_in = as_vector(q, "q");
+        return py_io::finite_result(matrix_array(crba(tree, q_in, workspace_for(tree))), "crba");
       },
       "tree"_a, "q"_a,
       (std::string("The joint-space inertia matrix H(q) by the composite-rigid-body algorithm.\n\n"
@@ -408,10 +417,9 @@ void bind_algorithms(py::module_& m) {
       "aba",
       [](py::handle tree_obj, py::handle q, py::handle v, py::handle tau, py::handle f_ext) {
         const Tree& tree = as_tree(tree_obj);
-        TreeWorkspace ws(tree);
+        const Eigen::VectorXd q_in = as_vector(q, "q"), v_in = as_vector(v, "v"), tau_in = as_vector(tau, "tau");
         const std::vector<Force> forces = as_external_forces(f_ext, tree);
-        return py_io::finite_result(
-            py_io::to_array(aba(tree, as_vector(q, "q"), as_vector(v, "v"), as_vector(tau, "tau"), forces, ws)), "aba");
+        return py_io::finite_result(py_io::to_array(aba(tree, q_in, v_in, tau_in, forces, workspace_for(tree))), "aba");
       },
       "tree"_a, "q"_a, "v"_a, "tau"_a, "f_ext"_a = py::none(),
       (std::string("Forward dynamics by the articulated-body algorithm: a = H(q)^-1 (tau - C(q, v, f_ext)).\n\n"

@@ -143,3 +143,28 @@ def test_crba_columns_are_rnea_differences(case):
 def test_kinetic_energy_is_half_v_h_v(case):
     _, tree, q, v, _, _ = case
     assert np.isclose(tree.kinetic_energy(q, v), 0.5 * v @ rd.crba(tree, q) @ v, rtol=RTOL, atol=0)
+
+
+def test_trees_of_the_same_size_take_turns_in_the_kept_workspace():
+    """The algorithms keep their workspace between calls and make it again for a tree of another shape: two trees
+    with the same links and nv but their ball and hinge joints swapped (each link's nv differs), called in turn,
+    each agree with the reference every time, and a tree that gains a link is sized again."""
+    rng = np.random.default_rng(7)
+    first = random_links(rng, 2, False)
+    first[0]["kind"], first[1]["kind"], first[1]["parent"] = "spherical", "revolute", 0
+    second = [dict(first[0], kind="revolute"), dict(first[1], kind="spherical")]
+    trees = [(links, build(links, GRAVITY)) for links in (first, second)]
+    for links, tree in trees + trees + trees[:1]:
+        q, v, a = random_state(rng, links)
+        assert close(rd.crba(tree, q), ref.mass_matrix(links, q))
+        assert close(rd.rnea(tree, q, v, a), ref.inverse_dynamics(links, q, v, a, GRAVITY))
+        assert close(rd.aba(tree, q, v, a), ref.forward_dynamics(links, q, v, a, GRAVITY), 1e-10)
+    links, tree = trees[0]
+    grown = links + random_links(rng, 1, False)
+    grown[2]["parent"] = 1
+    tree.add_link("link2", 1, rd.RevoluteJoint(grown[2]["axis"]) if grown[2]["kind"] == "revolute" else rd.FixedJoint(),
+                  rd.SpatialInertia(grown[2]["mass"], grown[2]["com"], grown[2]["inertia_com"]),
+                  rd.Transform(grown[2]["R_T"], grown[2]["p_T"]))
+    grown[2]["kind"] = "revolute" if grown[2]["kind"] == "revolute" else "fixed"
+    q, v, a = random_state(rng, grown)
+    assert close(rd.crba(tree, q), ref.mass_matrix(grown, q))

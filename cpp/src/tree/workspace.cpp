@@ -25,4 +25,12 @@ TreeWorkspace::TreeWorkspace(const Tree& tree)
   }
 }
 
+bool TreeWorkspace::fits(const Tree& tree) const {
+  if (static_cast<int>(X_up.size()) != tree.num_links() || H.rows() != tree.nv()) return false;
+  for (int i = 0; i < tree.num_links(); ++i) {
+    if (U[i].cols() != tree.link(i).nv) return false;
+  }
+  return true;
+}
+
 }  // namespace rigiddyn

@@ -15,6 +15,9 @@ namespace rigiddyn {
 
 struct TreeWorkspace {
   explicit TreeWorkspace(const Tree& tree);
+  // Whether this workspace was made for a tree of the shape of `tree` (its links and each joint's nv), so that the
+  // algorithms can run on `tree` in it.
+  bool fits(const Tree& tree) const;
 
   std::vector<Transform> X_up;  // X_λi: link i in its parent's frame (n)
   std::vector<Transform> X_W;   // X_Wi: link i in W (n)
