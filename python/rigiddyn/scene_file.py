@@ -96,6 +96,10 @@ commented)::
     #                                   # f = (dm/dt) u_rel at the point r_B
     # type = "magnetic_dipole"          # m_B [A m^2] in B, B_W [T] (0), source_moment_W [A m^2] (0) at
     #                                   # source_p_W [m] (0): a dipole in a uniform and a dipole field
+    # type = "atmospheric_drag"         # radius [m], drag_area [m^2], and density0 [kg/m^3] at altitude0 [m]
+    #                                   # with scale_height [m] (exponential), or a table: table_altitude
+    #                                   # = ["200 km", "300 km", ...] (increasing) and table_density =
+    #                                   # [2.5e-10, 1.9e-11, ...] [kg/m^3] (log-linear between rows)
     #                                   # (every class of rigiddyn.FORCE_ELEMENTS but PythonForce, its
     #                                   # type the class name in snake case, its keys its `fields`)
     bodies = ["sat", "boom"]            # names of the bodies it acts on; absent: every body
@@ -192,8 +196,8 @@ _UNIT_NORM = 4 * np.finfo(np.float64).eps
 
 @dataclass(frozen=True)
 class _Field:
-    """A force field: how it is read ("scalar", "vector", "bodies", "body", "optional_body", "loads",
-    "frame": 'body' or 'world'),
+    """A force field: how it is read ("scalar", "vector", "array": a table's column, "bodies", "body",
+    "optional_body", "loads", "frame": 'body' or 'world'),
     its SI unit (a pint expression) and its default (_REQUIRED, or a value in SI)."""
 
     kind: str
@@ -443,6 +447,15 @@ def _loads(value: Any, name: str) -> list[Any]:
             for j, item in enumerate(value)]
 
 
+def _array(value: Any, name: str, unit: str) -> np.ndarray:
+    """An (n,) array [unit] (a table's column): a list of n values or {value = [..], unit = ".."}, each
+    entry as a vector's (units.vector_quantity)."""
+    items = value.get("value") if isinstance(value, Mapping) else value
+    if not isinstance(items, list):
+        raise _fail(name, f"an array of values [{unit}] or {{value = [..], unit = \"..\"}}", value)
+    return vector_quantity(value, name, unit, n=len(items))
+
+
 def _force(table: Any, i: int, names: Mapping[str, int]) -> Any:
     """The force element of the [[force]] table number i (bodies resolved by name in `names`)."""
     name = f"force[{i}]"
@@ -468,6 +481,8 @@ def _force(table: Any, i: int, names: Mapping[str, int]) -> Any:
             kwargs[key] = quantity(value, field, f.unit)
         elif f.kind == "vector":
             kwargs[key] = vector_quantity(value, field, f.unit)
+        elif f.kind == "array":
+            kwargs[key] = _array(value, field, f.unit)
         elif f.kind in ("body", "optional_body"):
             kwargs[key] = _body_ref(value, field, names)
         elif f.kind == "frame":
@@ -892,6 +907,9 @@ def _force_table(element: Any, i: int, names: Sequence[str]) -> dict[str, Any]:
             continue  # an endless time (a ramp's t_end): the default, left out as a load's is
         if f.kind in ("scalar", "vector"):
             table[key] = _floats(value)
+        elif f.kind == "array":
+            if len(value):  # empty: the default, left out
+                table[key] = _floats(value)
         elif f.kind == "frame":
             table[key] = str(value)
         elif f.kind in ("body", "optional_body"):
