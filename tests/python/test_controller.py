@@ -565,3 +565,50 @@ def test_the_cli_runs_a_scene_under_its_controller(tmp_path):
     np.testing.assert_array_equal(got[w[0]], want.w_B[:, 0, 0])
     assert main(["simulate", "cubesat_pointing", "--tolerance", "1e-6", "--duration", "30", "--no-plot",
                  "--no-progress", "--out", str(tmp_path / "o2")]) == 2
+
+
+# ---------------------------------------------------------------- Monte Carlo under a controller
+def noisy_thrust_scene():
+    """A body at rest with a thruster whose law pushes along x by the sampled w_B_x [N per rad/s]: the true rate
+    stays zero, so the thrust is the gyro noise alone and each sample's velocity is its own noise's."""
+    scene = rd.Scene([rd.RigidBody(1.0, [1.0, 1.0, 1.0])], elements=[rd.ScheduledLoads(body=0, loads=[])],
+                     body_names=["sat"])
+    law = lambda state: {0: (float(state.w_B[0, 0]), 0.0, 0.0)}  # noqa: E731
+    return scene, rd.Controller(0.1, law, w_B_noise=0.01)
+
+
+def test_monte_carlo_under_a_controller_draws_each_runs_noise_seed_from_its_seed():
+    """Each sample is simulate of its drawn state under the controller with its own seed
+    (inputs["controller.seed"], bit for bit); the seeds depend on (seed, i) only (a run of 6 samples starts with
+    the 4 of a run of 4) and leave the dispersion draws as they are without a controller; the noise differs
+    between samples (the velocities differ)."""
+    scene, controller = noisy_thrust_scene()
+    nominal = [rd.RigidBodyState()]
+    dispersions = {"sat.p_W": rd.dispersion.Normal(std=1.0)}
+    run = dict(seed=5, dt=0.05, steps=20, dispersions=dispersions, error=False)
+    mc = rd.monte_carlo(scene, nominal, 4, controller=controller, **run)
+    seeds = mc.inputs["controller.seed"]
+    for i in range(4):
+        one = rd.simulate(scene, [rd.RigidBodyState(p_W=mc.inputs["sat.p_W"][i])], 0.05, 20, error=False,
+                          controller=rd.Controller(0.1, controller.law, w_B_noise=0.01, seed=int(seeds[i])))
+        np.testing.assert_array_equal(mc.values("v_W")[i], one.v_W)
+        np.testing.assert_array_equal(mc.values("p_W")[i], one.p_W)
+    longer = rd.monte_carlo(scene, nominal, 6, controller=controller, **run)
+    np.testing.assert_array_equal(longer.inputs["controller.seed"][:4], seeds)
+    plain = rd.monte_carlo(scene, nominal, 4, **run)
+    np.testing.assert_array_equal(plain.inputs["sat.p_W"], mc.inputs["sat.p_W"])
+    v_end = mc.values("v_W")[:, -1, 0, 0]
+    assert len(set(v_end.tolist())) == 4 and np.abs(v_end).min() > 0.0
+
+
+def test_monte_carlo_refuses_a_controller_it_cannot_run():
+    scene, controller = noisy_thrust_scene()
+    run = dict(seed=1, dt=0.1, steps=2, controller=controller)
+    with pytest.raises(ValueError, match=r"error: expected False with a controller"):
+        rd.monte_carlo(scene, [rd.RigidBodyState()], 2, **run)
+    with pytest.raises(ValueError, match=r"threads: expected None with a controller"):
+        rd.monte_carlo(scene, [rd.RigidBodyState()], 2, threads=2, error=False, **run)
+    with pytest.raises(ValueError, match=r"controller: expected None for a RigidBody model"):
+        rd.monte_carlo(rd.RigidBody(1.0, [1.0, 1.0, 1.0]), rd.RigidBodyState(), 2, error=False, **run)
+    with pytest.raises(TypeError, match=r"controller: expected a rigiddyn.Controller or None"):
+        rd.monte_carlo(scene, [rd.RigidBodyState()], 2, seed=1, dt=0.1, steps=2, error=False, controller=len)
