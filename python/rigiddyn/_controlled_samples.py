@@ -24,6 +24,7 @@ class StackedRuns:
     has none)."""
 
     error = None
+    t: np.ndarray  # (N, n_records) record times [s], as every field set by __init__
 
     def __init__(self, runs: Sequence[Any], fields: Sequence[str]) -> None:
         self.fields = tuple(f for f in fields if hasattr(runs[0], f))
