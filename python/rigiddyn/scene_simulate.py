@@ -264,9 +264,10 @@ def conservative(scene: Any) -> bool:
     return all(t["has_potential"] and not t["velocity_dependent"] and not t["time_dependent"] for t in traits)
 
 
-def _summary(result: Any, scene: Any = None) -> str:
-    """One line: records, bodies, time; the energy drift (or, with mass flows, the mass burnt); the range
-    of each pivot's reaction force."""
+def _summary(result: Any, scene: Any = None, controlled: bool = False) -> str:
+    """One line: records, bodies, time; the energy drift (or, with mass flows, the mass burnt; under a
+    controller, whose commands change the elements, the energy balance); the range of each pivot's reaction
+    force."""
     n = len(result.body_names)
     head = (f"{len(result.t)} records of {n} {'body' if n == 1 else 'bodies'} to t = {result.t[-1]:.6g} s in "
             f"{result.elapsed_seconds:.3g} s")
@@ -277,7 +278,7 @@ def _summary(result: Any, scene: Any = None) -> str:
         parts += [f"{result.body_names[i]}: mass {mass[0, i]:.6g} -> {mass[-1, i]:.6g} kg "
                   f"({mass[0, i] - mass[-1, i]:.6g} kg burnt)" for i in flows]
         parts.append("total energy not conserved (the thrust works)")
-    elif not conservative(scene):  # damping, drag, loads: the work of every element, against T's change
+    elif controlled or not conservative(scene):  # damping, drag, loads, commands: every element's work against T's
         from .simulate_command import energy_balance
 
         work = np.sum(np.asarray(result.work).reshape(len(result.t), -1), axis=1)
@@ -309,5 +310,6 @@ def run_scene_simulate(args: argparse.Namespace) -> int:
     except OutputExists as e:
         return fail(e, EXIT_EXISTS)
     return run_and_report(plan.steps, plan.progress, lambda update: _run(plan, update),
-                          lambda result: _summary(result, plan.file.scene), plan.out,
+                          lambda result: _summary(result, plan.file.scene, plan.file.run.controller is not None),
+                          plan.out,
                           lambda result, folder: _write(plan, result, folder))

@@ -546,9 +546,10 @@ def test_a_law_in_python_cannot_be_written_to_a_file():
         scene.to_toml(initial, python)
 
 
-def test_the_cli_runs_a_scene_under_its_controller(tmp_path):
+def test_the_cli_runs_a_scene_under_its_controller(tmp_path, capsys):
     """python -m rigiddyn simulate cubesat_pointing: the run is the one rd.simulate makes under the file's
-    controller (the same records bit for bit), and run.json records the [controller]."""
+    controller (the same records bit for bit), run.json records the [controller], and the summary gives the
+    energy balance (the commands change the elements: no energy is conserved)."""
     import json
 
     from rigiddyn.__main__ import main
@@ -556,6 +557,7 @@ def test_the_cli_runs_a_scene_under_its_controller(tmp_path):
     out = tmp_path / "out"
     assert main(["simulate", "cubesat_pointing", "--duration", "30", "--no-plot", "--no-progress",
                  "--out", str(out)]) == 0
+    assert "energy balance T(t) - T(0) - W(t)" in capsys.readouterr().out
     record = json.loads((out / "run.json").read_text())
     assert record["controller"]["law"] == "pd_attitude" and record["global error"] is None
     scene, initial, run = rd.load_scene("cubesat_pointing")
