@@ -175,3 +175,24 @@ table_density = {value = [2.4e-11, 3.7e-12, 6.9e-13], unit = "kg/m^3"}
     assert again.elements[0] == air
     with pytest.raises(ValueError, match=r"force\[0\]\.table_altitude\[0\]: expected m"):
         rd.load_scene(text.replace('"300 km"', '"300 kg"'))
+
+
+def test_the_step_size_estimate_reads_a_tabulated_density():
+    """rigiddyn.stability's damping rate of the air, rho C_D A |v_rel| / m, reads the table as the element does: a
+    table sampled from an exponential model gives that model's rate, inside the table and above it, within the
+    round-off bound of test_a_table_sampled_from_the_exponential_model_is_that_model, 16 eps (1 + a)(1 + s)."""
+    from rigiddyn.stability import scene_modes
+
+    rho0, h0, H = 3e-12, 400e3, 60e3
+    h_rows = np.array([300e3, 350e3, 500e3])
+    models = [rd.AtmosphericDrag(density0=rho0, altitude0=h0, scale_height=H, radius=R_EARTH, drag_area=8.8),
+              rd.AtmosphericDrag(table_altitude=h_rows, table_density=rho0 * np.exp(-(h_rows - h0) / H),
+                                 radius=R_EARTH, drag_area=8.8)]
+    for h in (420e3, 650e3):
+        start = [rd.ParticleState(p_W=(R_EARTH + h, 0.0, 0.0), v_W=(0.0, 7600.0, 0.0))]
+        (_, _, exponential), (_, _, table) = (scene_modes(rd.Scene([rd.Particle(2.0)], elements=[air]), start)[0]
+                                              for air in models)
+        i = min(int(np.searchsorted(h_rows, h, side="right")) - 1, h_rows.size - 2)
+        s = abs(h - h_rows[i]) / (h_rows[i + 1] - h_rows[i])
+        a = max(abs(h - h0), abs(h_rows[i] - h0), abs(h_rows[i + 1] - h0)) / H
+        assert table == pytest.approx(exponential, rel=16 * EPS * (1 + a) * (1 + s))
