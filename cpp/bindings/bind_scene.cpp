@@ -778,8 +778,8 @@ void check_bdot_element(py::handle law, const Scene& scene) {
 
 // The C++ Controller of a rigiddyn.Controller (rigiddyn/control.py, which checks the law's commands) on `scene`: its
 // period, and a shipped law in C++ (shipped_law: without gyro noise) or a law that takes the GIL and calls its
-// _sample(t, p_W, q_WB, v_W, w_B, wheel_speed) -> (wheel_torque or None, [(element, value (3,)), ...]). The Python
-// object outlives the run (the caller holds it).
+// _sample(t, p_W, q_WB, v_W, w_B, wheel_speed) -> (wheel_torque or None, [(element, value (3,) or a speed
+// [rad/s] as a float), ...]). The Python object outlives the run (the caller holds it).
 Controller as_controller(py::handle controller, const Scene& scene) {
   if (!py::isinstance(controller, py::module_::import("rigiddyn.control").attr("Controller"))) {
     py_io::throw_type_error("controller", "a rigiddyn.Controller or None", controller);
@@ -804,7 +804,11 @@ Controller as_controller(py::handle controller, const Scene& scene) {
     }
     for (const py::handle item : r[1]) {
       const py::tuple command = item.cast<py::tuple>();
-      c.elements.push_back({command[0].cast<int>(), py_io::as_vector3(command[1], "controller command")});
+      if (py::isinstance<py::float_>(command[1])) {  // a ReactionWheel's speed [rad/s]
+        c.speeds.push_back({command[0].cast<int>(), command[1].cast<double>()});
+      } else {
+        c.elements.push_back({command[0].cast<int>(), py_io::as_vector3(command[1], "controller command")});
+      }
     }
     return c;
   };

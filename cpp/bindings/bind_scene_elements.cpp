@@ -118,6 +118,20 @@ Eigen::Vector3d from_python(py::handle v, const ElementField<Spec, Eigen::Vector
   return py_io::as_vector3(*f.unit ? py_io::in_si(v, f.unit, f.key) : py::reinterpret_borrow<py::object>(v), f.key);
 }
 template <class Spec>
+std::vector<double> from_python(py::handle v, const ElementField<Spec, std::vector<double>>& f) {
+  const py::object si = *f.unit ? py_io::in_si(v, f.unit, f.key) : py::reinterpret_borrow<py::object>(v);
+  const py_io::Array a = py_io::as_array(si, f.key);
+  if (a.ndim() != 1) {
+    py_io::throw_value_error(f.key, "an array of shape (n,)", "shape " + py::str(a.attr("shape")).cast<std::string>());
+  }
+  std::vector<double> out(a.data(), a.data() + a.size());
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    const std::string entry = std::string(f.key) + "[" + std::to_string(i) + "]";
+    if (!std::isfinite(out[i])) py_io::throw_value_error(entry, "a finite number", format_value(out[i]));
+  }
+  return out;
+}
+template <class Spec>
 BodyList from_python(py::handle v, const ElementField<Spec, BodyList>& f) {
   return as_body_list(v, f.key);
 }
@@ -145,6 +159,9 @@ ForceFunction from_python(py::handle v, const ElementField<Spec, ForceFunction>&
 // (None for no body), a tuple of AppliedLoad, 'body' or 'world', the Python callable.
 py::object to_python(double x, FieldKind) { return py::float_(x); }
 py::object to_python(const Eigen::Vector3d& v, FieldKind) { return py_io::read_only(v); }
+py::object to_python(const std::vector<double>& values, FieldKind) {
+  return py_io::read_only(Eigen::Map<const Eigen::VectorXd>(values.data(), static_cast<Eigen::Index>(values.size())));
+}
 py::object to_python(const BodyList& bodies, FieldKind) { return body_list_object(bodies); }
 py::object to_python(int body, FieldKind kind) {
   return kind == FieldKind::optional_body && body < 0 ? py::object(py::none()) : py::object(py::int_(body));
@@ -160,11 +177,13 @@ py::object to_python(const ForceFunction& f, FieldKind) {
   return call ? call->fn() : py::object(py::none());
 }
 
-// A default as source text shows it: a vector as a tuple (the signature's "p_W=(0.0, 0.0, 0.0)").
+// A default as source text shows it: a vector or an array as a tuple (the signature's "p_W=(0.0, 0.0, 0.0)").
 template <class T>
 py::object default_object(const T& value, FieldKind kind) {
   if constexpr (std::is_same_v<T, Eigen::Vector3d>) {
     return py::make_tuple(value.x(), value.y(), value.z());
+  } else if constexpr (std::is_same_v<T, std::vector<double>>) {
+    return py::tuple(py::cast(value));
   } else {
     return to_python(value, kind);
   }
@@ -176,6 +195,7 @@ constexpr const char* field_kind_name(FieldKind kind) {
   switch (kind) {
     case FieldKind::scalar: return "scalar";
     case FieldKind::vector: return "vector";
+    case FieldKind::array: return "array";
     case FieldKind::bodies: return "bodies";
     case FieldKind::body: return "body";
     case FieldKind::optional_body: return "optional_body";
@@ -248,6 +268,7 @@ constexpr const char* numpydoc_type(FieldKind kind) {
   switch (kind) {
     case FieldKind::scalar: return "float";
     case FieldKind::vector: return "array_like, shape (3,)";
+    case FieldKind::array: return "array_like, shape (n,)";
     case FieldKind::bodies: return "sequence of int or None";
     case FieldKind::body: return "int";
     case FieldKind::optional_body: return "int or None";

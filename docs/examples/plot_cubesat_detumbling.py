@@ -7,7 +7,9 @@ about every axis) tumbling at 6.4 °/s on a circular polar orbit of radius 7000 
 :class:`rigiddyn.MagneticDipole` m_B) in the Earth's tilted dipole field. A flight computer samples its
 gyro every second and commands the B-dot law (Stickler & Alfriend, "Elementary magnetic attitude control
 system"), m_B = −k dB_B/dt = −k (−ω_B × B_B), held until the next sample
-(:class:`rigiddyn.Controller`, :class:`rigiddyn.control.BDot`).
+(:class:`rigiddyn.Controller`, :class:`rigiddyn.control.BDot`): the scene file's ``[controller]`` table,
+read by :func:`rigiddyn.load_scene` into ``run.controller`` (``python -m rigiddyn simulate cubesat_detumbling``
+runs it too).
 
 The torque m_B × B_B = −k (\|B\|² 1 − B Bᵀ) ω damps the rate normal to the field. For an isotropic body,
 I ω̇_W = −k (\|B\|² 1 − B Bᵀ) ω_W. The field turns and changes along the orbit (2.25e-5 T at the equator,
@@ -30,8 +32,8 @@ import rigiddyn as rd
 from rigiddyn.control import BDot, dipole_field_W
 
 scene, initial, options = rd.load_scene("cubesat_detumbling")
-magnetorquer = 1  # the MagneticDipole's element index (after the point-mass gravity)
-dipole = scene.elements[magnetorquer]
+law = options.controller.law  # the file's [controller]: BDot on element 1, the MagneticDipole
+dipole = scene.elements[law.element]
 I = scene.bodies[0].inertia_com[0, 0]  # [kg m^2], isotropic
 GM = scene.elements[0].gm  # [m^3/s^2]
 r = np.linalg.norm(initial[0].p_W)  # [m]
@@ -41,7 +43,8 @@ T_orb = 2 * np.pi / n
 u = np.linspace(0.0, 2 * np.pi, 4096, endpoint=False)
 B_orbit = np.array([dipole_field_W(dipole, r * np.array([np.cos(a), 0.0, np.sin(a)])) for a in u])
 M_bar = np.mean([(B @ B) * np.eye(3) - np.outer(B, B) for B in B_orbit], axis=0)
-k = 0.5 * I / (np.trace(M_bar) / 3 * T_orb)  # a mean decay time of two orbits [A m^2 s/T]
+k = law.gain  # [A m^2 s/T], chosen for a mean decay time of two orbits, I / (k tr(M_bar)/3):
+print(f"mean decay time {I / (k * np.trace(M_bar) / 3) / T_orb:.4f} orbits")
 lam, V = np.linalg.eigh(k * M_bar / I)  # the averaged decay rates [1/s] and their axes in W
 eps = lam.max() * T_orb / (2 * np.pi)
 print(f"orbit period {T_orb:.1f} s; gain k = {k:.4g} A m^2 s/T; decay rates {lam} 1/s; eps = {eps:.3f}")
@@ -49,9 +52,9 @@ print(f"orbit period {T_orb:.1f} s; gain k = {k:.4g} A m^2 s/T; decay rates {lam
 # %%
 # Four orbits, the law sampled every second
 # -----------------------------------------
-controller = rd.Controller(1.0, BDot(k, dipole, element=magnetorquer))
+assert isinstance(law, BDot) and options.controller.period == 1.0
 run = rd.simulate(scene, initial, dt=options.dt, steps=options.steps, method=options.method,
-                  record_every=options.record_every, controller=controller)
+                  record_every=options.record_every, controller=options.controller)
 w_W = np.einsum("nij,nj->ni", rd.quat_to_matrix(run.q_WB[:, 0]), run.w_B[:, 0])  # rate in W [rad/s]
 w_bar = (V @ (np.exp(-np.outer(run.t, lam)) * (V.T @ w_W[0])).T).T  # the averaged prediction
 

@@ -7,7 +7,8 @@ every axis) with three reaction wheels on its body axes (a :class:`rigiddyn.Gyro
 off the local-vertical local-horizontal attitude (LVLH: x along the track, y opposite the orbit normal, z to
 the Earth) on a circular polar orbit, turning with it. A flight computer samples the state every 0.5 s and
 commands the wheels' motors with a PD law, τ = −k_p e − k_d ω_B, e the rotation vector of the error from
-LVLH, held until the next sample (:class:`rigiddyn.Controller`, :class:`rigiddyn.control.PDAttitude`).
+LVLH, held until the next sample (:class:`rigiddyn.Controller`, :class:`rigiddyn.control.PDAttitude`): the
+scene file's ``[controller]`` table, read by :func:`rigiddyn.load_scene` into ``run.controller``.
 
 For a small error the loop is A ë + k_d ė + k_p e = 0 about each axis (A = I − J the transverse inertia):
 ω_n = √(k_p/A), ζ = k_d/(2√(k_p A)) (Wie, "Space Vehicle Dynamics and Control"). The law feeds back the body
@@ -33,10 +34,10 @@ scene, initial, options = rd.load_scene("cubesat_pointing")
 A = scene.bodies[0].transverse_inertia[0, 0]  # [kg m^2], the same about every axis
 GM = scene.elements[0].gm
 n = np.sqrt(GM / np.linalg.norm(initial[0].p_W) ** 3)  # orbit rate [rad/s]
-w_n, zeta, period = 0.05, 0.7, 0.5  # [rad/s], 1, [s]
-k_p = A * w_n**2  # [N m/rad]
-k_d = 2 * zeta * np.sqrt(k_p * A)  # [N m s/rad]
-law = PDAttitude(k_p, k_d, np.eye(3), q_target_WB="lvlh")
+law = options.controller.law  # the file's [controller], sampled every 0.5 s
+assert isinstance(law, PDAttitude) and law.q_target_WB == "lvlh"
+k_p, k_d = law.k_p, law.k_d  # [N m/rad], [N m s/rad]
+w_n, zeta = np.sqrt(k_p / A), k_d / (2 * np.sqrt(k_p * A))  # 0.05 rad/s, 0.7
 e_ss = np.array([0.0, k_d * n / k_p, 0.0])  # the steady lag [rad], about pitch
 print(f"k_p = {k_p:.4g} N m/rad, k_d = {k_d:.4g} N m s/rad; steady pitch lag {np.degrees(2 * np.arcsin(e_ss[1] / 2)):.3f} deg")
 
@@ -44,7 +45,7 @@ print(f"k_p = {k_p:.4g} N m/rad, k_d = {k_d:.4g} N m s/rad; steady pitch lag {np
 # Ten minutes of pointing
 # -----------------------
 run = rd.simulate(scene, initial, dt=options.dt, steps=options.steps, method=options.method,
-                  record_every=options.record_every, controller=rd.Controller(period, law))
+                  record_every=options.record_every, controller=options.controller)
 
 
 def lvlh_error(i):

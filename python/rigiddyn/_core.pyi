@@ -4349,7 +4349,7 @@ class MagneticDipole:
         """
 class ReactionWheel:
     """
-    A reaction wheel inside a rigid body (a gyrostat): a wheel of moment of inertia J = inertia about the unit axis a = axis_B/|axis_B| (fixed in B) spins relative to the body at the commanded speed Omega(t) = speed + acceleration (clamp(t, t_start, t_end) - t_start), so its relative angular momentum is h_B = J Omega a. The body's inertia is the whole body's, wheel included; the element applies the couple tau_B = -w_B x h_B - dh_B/dt [N m] of Euler's equation of the gyrostat, I dw/dt + w x (I w + h) = tau - dh/dt. A run splits its steps at t_start and t_end. At a constant wheel speed the body's kinetic energy and the total angular momentum R (I w + h) are conserved; spinning the wheel up about a principal axis turns the body by -J/I times the wheel's angle. Rigid bodies, free or pinned.
+    A reaction wheel inside a rigid body (a gyrostat): a wheel of moment of inertia J = inertia about the unit axis a = axis_B/|axis_B| (fixed in B) spins relative to the body at the commanded speed Omega(t) = speed + acceleration (clamp(t, t_start, t_end) - t_start), so its relative angular momentum is h_B = J Omega a. The body's inertia is the whole body's, wheel included; the element applies the couple tau_B = -w_B x h_B - dh_B/dt [N m] of Euler's equation of the gyrostat, I dw/dt + w x (I w + h) = tau - dh/dt. A run splits its steps at t_start and t_end. At a constant wheel speed the body's kinetic energy and the total angular momentum R (I w + h) are conserved; spinning the wheel up about a principal axis turns the body by -J/I times the wheel's angle. A rigiddyn.Controller may command its speed (a rate-limited speed loop: from its speed at a sample to the commanded one at the next, at a constant rate). Rigid bodies, free or pinned.
     
     Parameters
     ----------
@@ -4520,16 +4520,16 @@ class ZonalGravity:
         """
 class AtmosphericDrag:
     """
-    Drag of an exponential atmosphere turning with its planet: on each listed body f_W = -(1/2) rho drag_area |v_rel| v_rel [N] at its centre of pressure cp_B, v_rel = v_W - omega_W x r, rho = density0 exp(-(h - altitude0)/scale_height), r = p_body - p_W, h = |r| - radius; torque tau_B = cp_B x f_B [N m]. drag_area is C_D A [m^2] (the ballistic coefficient is m/(C_D A)). No potential: it dissipates. A circular orbit decays at da/dt = -rho (drag_area/m) sqrt(gm a).
+    Drag of an atmosphere turning with its planet: on each listed body f_W = -(1/2) rho drag_area |v_rel| v_rel [N] at its centre of pressure cp_B, v_rel = v_W - omega_W x r, r = p_body - p_W, h = |r| - radius; torque tau_B = cp_B x f_B [N m]. The density is exponential, rho = density0 exp(-(h - altitude0)/scale_height), or tabulated: given rows (table_altitude[i], table_density[i]) (at least 2, altitudes increasing, densities > 0), rho is log-linear between rows, rho_i exp(-(h - h_i)/H_i) with H_i = (h_{i+1} - h_i)/ln(rho_i/rho_{i+1}) in the band h_i <= h < h_{i+1} (Vallado, Fundamentals of Astrodynamics and Applications, Table 8-4); below the first row the first band's exponential is extended, above the last row the last band's (density0, altitude0 and scale_height are then left at 0). drag_area is C_D A [m^2] (the ballistic coefficient is m/(C_D A)). No potential: it dissipates. A circular orbit decays at da/dt = -rho (drag_area/m) sqrt(gm a).
     
     Parameters
     ----------
-    density0 : float [kg/m^3], required
-        air density at altitude0 [kg/m^3]
+    density0 : float [kg/m^3], default 0.0
+        air density at altitude0 [kg/m^3] (the exponential model; 0 with a table)
     altitude0 : float [m], default 0.0
-        reference altitude of density0 [m]
-    scale_height : float [m], required
-        scale height H of the density [m]
+        reference altitude of density0 [m] (the exponential model; 0 with a table)
+    scale_height : float [m], default 0.0
+        scale height H of the density [m] (the exponential model, > 0; 0 with a table)
     radius : float [m], required
         radius of the central body (altitude 0) [m]
     p_W : array_like, shape (3,) [m], default (0.0, 0.0, 0.0)
@@ -4542,6 +4542,10 @@ class AtmosphericDrag:
         (3,) centre of pressure in each body's B, from its centre of mass [m] (zero on a particle)
     bodies : sequence of int or None, default None
         None (every body) or a tuple of the indices of the bodies it acts on
+    table_altitude : array_like, shape (n,) [m], default ()
+        (n,) the density table's altitudes [m], increasing (empty: the exponential model)
+    table_density : array_like, shape (n,) [kg/m^3], default ()
+        (n,) the density [kg/m^3] > 0 at each altitude of table_altitude
     
     Each argument with a unit takes a float in that unit or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
     
@@ -4556,6 +4560,15 @@ class AtmosphericDrag:
     >>> expected = -0.5 * 3e-12 * 8.8 * 7670.0**3 * 0.01  # the work of one step of 0.01 s [J]
     >>> bool(abs(result.work[-1, 0] / expected - 1) < 1e-6)
     True
+    
+    A table of two rows, 3e-12 kg/m^3 at 400 km and 3e-12/e at 460 km, is the exponential of scale height 60 km in
+    that band:
+    
+    >>> table = rd.AtmosphericDrag(table_altitude=(400e3, 460e3), table_density=(3e-12, 3e-12 / np.e),
+    ...                            radius=6378137.0, drag_area=8.8)
+    >>> result = rd.simulate(rd.Scene([rd.Particle(500.0)], elements=[table]), [start], 0.01, steps=1, method="rk4")
+    >>> bool(abs(result.work[-1, 0] / expected - 1) < 1e-6)
+    True
     """
     __hash__: typing.ClassVar[None] = None
     fields: typing.ClassVar[tuple]
@@ -4563,7 +4576,7 @@ class AtmosphericDrag:
         ...
     def __getstate__(self) -> tuple:
         ...
-    def __init__(self, *, density0: float, altitude0: float = 0.0, scale_height: float, radius: float, p_W: numpy.typing.ArrayLike = (0.0, 0.0, 0.0), omega_W: numpy.typing.ArrayLike = (0.0, 0.0, 0.0), drag_area: float, cp_B: numpy.typing.ArrayLike = (0.0, 0.0, 0.0), bodies: collections.abc.Sequence[int] | None = None) -> None:
+    def __init__(self, *, density0: float = 0.0, altitude0: float = 0.0, scale_height: float = 0.0, radius: float, p_W: numpy.typing.ArrayLike = (0.0, 0.0, 0.0), omega_W: numpy.typing.ArrayLike = (0.0, 0.0, 0.0), drag_area: float, cp_B: numpy.typing.ArrayLike = (0.0, 0.0, 0.0), bodies: collections.abc.Sequence[int] | None = None, table_altitude: numpy.typing.ArrayLike = (), table_density: numpy.typing.ArrayLike = ()) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -4572,7 +4585,7 @@ class AtmosphericDrag:
     @property
     def altitude0(self) -> typing.Any:
         """
-        reference altitude of density0 [m]
+        reference altitude of density0 [m] (the exponential model; 0 with a table)
         """
     @property
     def bodies(self) -> typing.Any:
@@ -4587,7 +4600,7 @@ class AtmosphericDrag:
     @property
     def density0(self) -> typing.Any:
         """
-        air density at altitude0 [kg/m^3]
+        air density at altitude0 [kg/m^3] (the exponential model; 0 with a table)
         """
     @property
     def drag_area(self) -> typing.Any:
@@ -4612,7 +4625,17 @@ class AtmosphericDrag:
     @property
     def scale_height(self) -> typing.Any:
         """
-        scale height H of the density [m]
+        scale height H of the density [m] (the exponential model, > 0; 0 with a table)
+        """
+    @property
+    def table_altitude(self) -> typing.Any:
+        """
+        (n,) the density table's altitudes [m], increasing (empty: the exponential model)
+        """
+    @property
+    def table_density(self) -> typing.Any:
+        """
+        (n,) the density [kg/m^3] > 0 at each altitude of table_altitude
         """
 class SolarRadiationPressure:
     """

@@ -19,6 +19,10 @@ is first commanded):
 element index ``e`` (int): array_like, shape (3,)
     A MagneticDipole's dipole m_B [A m^2] in B (a magnetorquer: the torque m_B x B_B), or a ScheduledLoads' force
     f_B [N] in B at its point_B (a thruster: adds point_B x f_B), replacing its schedule.
+element index ``e`` (int): float
+    A ReactionWheel's speed Omega_c [rad/s] relative to its body (a rate-limited speed loop): the wheel ramps at a
+    constant rate from its speed at the sample t_k to Omega_c at the next sample t_k + period, then holds it
+    (replacing its own ramp); over the ramp the body feels -J dOmega/dt a - w_B x h_B.
 """
 
 from __future__ import annotations
@@ -138,21 +142,28 @@ class Controller:
         the run; the steps are split there (a period need not divide dt).
     law : callable
         law(state) -> dict: `state` a SampledState, the dict the actuator commands (the module's docstring):
-        ``"wheel_torque"`` (nw,) [N m] for the gyrostat wheels, and an element index -> (3,) for a MagneticDipole
-        (m_B [A m^2] in B) or a ScheduledLoads (force f_B [N] in B at its point_B). An actuator not named holds its
-        last command.
+        ``"wheel_torque"`` (nw,) [N m] for the gyrostat wheels, an element index -> (3,) for a MagneticDipole
+        (m_B [A m^2] in B) or a ScheduledLoads (force f_B [N] in B at its point_B), and an element index -> a float
+        for a ReactionWheel (its speed [rad/s] relative to the body, reached at the next sample at a constant
+        rate). An actuator not named holds its last command.
     w_B_noise : float, keyword-only, default 0.0
         Standard deviation [rad/s] of a white gyro noise added to each sampled w_B component (>= 0).
     seed : int, keyword-only, optional
         Seed of the noise's generator (numpy.random.default_rng(seed)); a run draws from where the last one
         stopped, so give a fresh Controller (or the same seed) to repeat a run.
 
+    Attributes
+    ----------
+    period, law, w_B_noise, seed
+        As given (period and w_B_noise as floats).
+
     Raises
     ------
     ValueError
         period not finite and > 0; w_B_noise negative or not finite. At a sample (raised by simulate): a command
-        of the wrong shape or not finite, an unknown key, an element that takes no command (each named with the
-        sample time).
+        of the wrong shape or not finite, an unknown key, an element that takes no such command (a speed to an
+        element that is no ReactionWheel, a (3,) value to one: named with its type), each named with the sample
+        time.
     TypeError
         law not callable; a law that returns no dict.
 
@@ -181,6 +192,16 @@ class Controller:
     ([0.0, 0.25, 0.5, 0.75, 1.0], 8)
     >>> round(float(result.v_W[-1, 0, 0]), 12)
     0.5
+
+    A reaction wheel (J = 0.1 kg m^2 about z) commanded to 2 rad/s at t = 0 reaches it at t = 0.5 s; the body
+    (I = 1 kg m^2 about z, wheel included) turns the other way at J Omega / I:
+
+    >>> wheel = rd.ReactionWheel(body=0, axis_B=(0.0, 0.0, 1.0), inertia=0.1)
+    >>> scene = rd.Scene([rd.RigidBody(10.0, [1.0, 1.0, 1.0])], elements=[wheel])
+    >>> result = rd.simulate(scene, [rd.RigidBodyState()], 0.05, duration=1.0, method="rk4",
+    ...                      controller=rd.Controller(0.5, lambda state: {0: 2.0}))
+    >>> result.w_B[-1, 0].round(12).tolist()
+    [0.0, 0.0, -0.2]
     """
 
     def __init__(self, period: float, law: Callable[[SampledState], Mapping[Any, Any]], *, w_B_noise: float = 0.0,
@@ -197,15 +218,17 @@ class Controller:
             raise TypeError(f"seed: expected None or an int >= 0, got {seed!r}")
         if seed is not None and seed < 0:
             raise ValueError(f"seed: expected None or an int >= 0, got {seed!r}")
+        self.seed = None if seed is None else int(seed)
         self._rng = np.random.default_rng(seed)
 
     def __repr__(self) -> str:
         return f"Controller(period={self.period!r}, law={self.law!r}, w_B_noise={self.w_B_noise!r})"
 
     def _sample(self, t: float, p_W: np.ndarray, q_WB: np.ndarray, v_W: np.ndarray, w_B: np.ndarray,
-                wheel_speed: np.ndarray) -> tuple[list[float] | None, list[tuple[int, tuple[float, float, float]]]]:
+                wheel_speed: np.ndarray) -> tuple[list[float] | None,
+                                                  list[tuple[int, tuple[float, float, float] | float]]]:
         """The core's call at a sample: the law's commands at t [s], checked, as (wheel torques or None,
-        [(element, value), ...])."""
+        [(element, value (3,) or a wheel speed [rad/s]), ...])."""
         if self.w_B_noise > 0.0:
             w_B = w_B + self._rng.normal(0.0, self.w_B_noise, w_B.shape)
         state = SampledState(t, p_W, q_WB, v_W, w_B, wheel_speed)  # read-only views
@@ -219,22 +242,26 @@ class Controller:
             raise TypeError(f"{at}: expected a dict of commands ('wheel_torque' or element index -> value), "
                             f"got {commands!r}")
         wheels: list[float] | None = None
-        elements: list[tuple[int, tuple[float, float, float]]] = []
+        elements: list[tuple[int, tuple[float, float, float] | float]] = []
         for key, value in commands.items():
             if isinstance(key, str) and key == "wheel_torque":
                 wheels = _command(value, (wheel_speed.shape[0],), f"{at}['wheel_torque']", "[N m]").tolist()
             elif isinstance(key, (int, np.integer)) and not isinstance(key, bool):
-                v = _command(value, (3,), f"{at}[{key}]", "")
-                elements.append((int(key), (float(v[0]), float(v[1]), float(v[2]))))
+                v = _command(value, None, f"{at}[{key}]", "")
+                elements.append((int(key), float(v) if v.ndim == 0 else (float(v[0]), float(v[1]), float(v[2]))))
             else:
                 raise ValueError(f"{at}: expected the key 'wheel_torque' or an element index (int), got {key!r}")
         return wheels, elements
 
 
-def _command(value: Any, shape: tuple[int, ...], name: str, unit: str) -> np.ndarray:
-    """value as a float array of `shape`, finite, else ValueError naming `name`."""
+def _command(value: Any, shape: tuple[int, ...] | None, name: str, unit: str) -> np.ndarray:
+    """value as a float array of `shape` (None: an element's, (3,) or a number), finite, else ValueError naming
+    `name`."""
     a = np.asarray(value, dtype=float)
-    if a.shape != shape:
+    if shape is None and a.shape not in ((3,), ()):
+        raise ValueError(f"{name}: expected shape (3,) (a MagneticDipole's m_B, a ScheduledLoads' f_B) or a number "
+                         f"(a ReactionWheel's speed [rad/s]), got shape {a.shape}")
+    if shape is not None and a.shape != shape:
         raise ValueError(f"{name}: expected shape {shape}{' ' + unit if unit else ''}, got shape {a.shape}")
     if not np.isfinite(a).all():
         raise ValueError(f"{name}: expected finite values, got {a.tolist()}")
@@ -387,6 +414,13 @@ class PDAttitude:
     body : int, default 0
         The controlled body.
 
+    Attributes
+    ----------
+    k_p, k_d, q_target_WB, body
+        As given.
+    axes_B : numpy.ndarray, shape (nw, 3)
+        The wheels' unit axes in B (axes_B normalised row by row), read-only.
+
     Raises
     ------
     ValueError
@@ -416,6 +450,8 @@ class PDAttitude:
         if np.linalg.matrix_rank(A) < 3:
             raise ValueError(f"axes_B: expected wheel axes spanning 3 dimensions, got {A.tolist()}")
         A = A / np.linalg.norm(A, axis=1, keepdims=True)
+        A.setflags(write=False)
+        self.axes_B = A  # the unit axes, as the allocation uses them
         self._allocation = -np.linalg.pinv(A.T)  # u = -pinv([a_1 ... a_n]) tau_B
         if isinstance(q_target_WB, str) and q_target_WB != "lvlh":
             raise ValueError(f"q_target_WB: expected a quaternion (x, y, z, w), a callable of t or 'lvlh', "

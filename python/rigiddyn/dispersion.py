@@ -52,6 +52,7 @@ from typing import Any, Callable, Mapping, Sequence, Union, cast
 import numpy as np
 
 from . import _core
+from ._controlled_samples import controller_seeds, run_samples
 from ._memory import available_bytes, format_bytes
 
 STATE_KEYS = ("p_W", "q_WB", "v_W", "w_B")
@@ -407,13 +408,15 @@ def _check_percents(q: Any) -> tuple[float, ...]:
 class MonteCarloResult:
     """The outcome of `monte_carlo`.
 
-    batch: the BatchResult of rigiddyn.simulate_batch (arrays (N, n_records, ...), see it); n = N.
+    batch: the BatchResult of rigiddyn.simulate_batch (arrays (N, n_records, ...), see it), or under a controller
+      the samples' stacked records (the same arrays); n = N.
     inputs: {key: read-only array (N, ...)} of the drawn values, one row per sample, for the dispersed keys:
       "p_W" (N, 3) [m], "q_WB" (N, 4) (x, y, z, w), "v_W" (N, 3) [m/s], "w_B" (N, 3) [rad/s] (in B),
       "mass" (N,) [kg], "inertia" (N, 3, 3) [kg m^2] (about the centre of mass, in B), "inertia_moments"
       (N, 3) [kg m^2] (its principal moments, in the order of the ascending nominal ones),
       "inertia_axis_rotation" (N, 3) [rad] (the rotation vector phi turning the nominal principal axes), "gravity"
       (N, 3) [m/s^2] (in W), "loads.force" (N, 3) [N] and "loads.torque" (N, 3) [N m] (in the load's frame).
+      Under a controller, "controller.seed" (N,) int: each sample's gyro-noise seed.
     redraws: {key: (N,) int} invalid draws rejected per sample for "mass" and "inertia" (see the module).
     seed: the SeedSequence entropy the samples were spawned from (rerun with seed=result.seed).
     dispersions: the dispersions used. times: (n_records,) record times [s].
@@ -793,6 +796,25 @@ def _check_memory(n: int, steps: int, record_every: int, model: Any, error: bool
                          "fewer samples, or a larger record_every)")
 
 
+def _check_controlled(model: Any, controller: Any, client: Any, threads: Any, error: bool) -> None:
+    """What monte_carlo's controller needs: a Controller on a scene, run here (no client, no threads), without
+    the error estimate (a controlled run has none)."""
+    from .control import Controller
+
+    if not isinstance(controller, Controller):
+        raise TypeError(f"controller: expected a rigiddyn.Controller or None, got {controller!r}")
+    if isinstance(model, _core.RigidBody):
+        raise ValueError("controller: expected None for a RigidBody model (a controller drives a Scene's actuators), "
+                         f"got {controller!r}")
+    for name, value in (("client", client), ("threads", threads)):
+        if value is not None:
+            raise ValueError(f"{name}: expected None with a controller (its samples run one after the other through "
+                             f"simulate), got {value!r}")
+    if error:
+        raise ValueError("error: expected False with a controller (a controlled run has no global error estimate), "
+                         "got True")
+
+
 def _sample_bar(n: int, enabled: bool) -> tuple[Callable[[int], None] | None, Callable[[], None] | None]:
     """(progress(samples_done) for simulate_batch, close()) of a bar of n samples on stderr: tqdm if installed,
     else a plain one; (None, None) when not enabled."""
@@ -821,7 +843,8 @@ def monte_carlo(model: Any, nominal_state: Any, n: int, *, seed: Any,
                 dt: Any, steps: int | None = None, duration: Any = None, method: str | None = None,
                 record_every: int = 1, loads: Any = None, gravity: Any = None, t0: Any = 0.0,
                 threads: int | None = None, client: Any = None,
-                progress: bool | Callable[[int], Any] = False, error: bool = True) -> MonteCarloResult:
+                progress: bool | Callable[[int], Any] = False, error: bool = True,
+                controller: Any = None) -> MonteCarloResult:
     """N runs of a rigid body, or of a scene, with dispersed initial states, mass properties and loads.
 
     Draws N samples of the dispersed inputs (sample i from its own generator, a function of (seed, i) only:
@@ -872,7 +895,15 @@ def monte_carlo(model: Any, nominal_state: Any, n: int, *, seed: Any,
     error : bool, default True
         Estimate the global error of every record of every sample (``result.error``, a GlobalError with a
         leading sample axis: ``simulate_batch``'s `error`, +0.75x the cost); its quantities are fields too
-        (``result.statistics("error.attitude")``). False: none.
+        (``result.statistics("error.attitude")``). False: none. Not with a controller (a controlled run has no
+        estimate): give False.
+    controller : Controller, keyword-only, optional
+        A digital controller (rigiddyn.Controller) of a scene's runs: each sample runs under its own copy (its law
+        deep-copied), whose gyro noise draws from the seed ``result.inputs["controller.seed"][i]`` (N,), itself
+        drawn from ``SeedSequence(seed)`` and a function of (seed, i) only (the sample's dispersions are drawn as
+        without it). The samples then run one after the other through ``simulate`` (the law takes the GIL at its
+        samples): ``result.batch`` holds their stacked records, as a BatchSceneResult's. None (the default): no
+        controller. Not with a RigidBody model, `client`, `threads` or `error`.
 
     Returns
     -------
@@ -908,6 +939,17 @@ def monte_carlo(model: Any, nominal_state: Any, n: int, *, seed: Any,
     >>> L_1 = np.linalg.norm(run.values("w_B", at=1.0) * [1.0, 2.0, 3.0], axis=1)
     >>> bool(np.all(np.abs(L_1 - L_0) <= 1e-6 * L_0))
     True
+
+    A scene under a controller (a body driven to rest by a thruster law from dispersed rates), each sample with
+    its own gyro-noise seed:
+
+    >>> scene = rd.Scene([rd.RigidBody(1.0, [1.0, 1.0, 1.0])], elements=[rd.ScheduledLoads(body=0, loads=[])])
+    >>> law = lambda state: {0: tuple(-2.0 * state.v_W[0])}
+    >>> runs = rd.monte_carlo(scene, [rd.RigidBodyState(v_W=[1.0, 0.0, 0.0])], 4, seed=2, dt=0.01, steps=50,
+    ...                       dispersions={"body0.v_W": rd.dispersion.Normal(std=0.1)}, error=False,
+    ...                       controller=rd.Controller(0.1, law, w_B_noise=1e-3))
+    >>> runs.values("v_W").shape, runs.inputs["controller.seed"].shape
+    ((4, 51, 1, 3), (4,))
     """
     scene = model.scene if isinstance(model, _core.CompiledScene) else model
     if not isinstance(model, (_core.RigidBody, _core.Scene, _core.CompiledScene)):
@@ -928,6 +970,8 @@ def monte_carlo(model: Any, nominal_state: Any, n: int, *, seed: Any,
     if client is not None and threads is not None:
         raise ValueError(f"threads: expected None with client= (the workers' threads are the cluster's), "
                          f"got {threads!r}")
+    if controller is not None:
+        _check_controlled(model, controller, client, threads, bool(error))
     # checked before any draw, as the memory below
     steps = _core._steps_of(None if steps is None else _count(steps, "steps", 0), duration, dt)
     _check_memory(int(n), steps, _count(record_every, "record_every", 1), scene, bool(error))
@@ -949,6 +993,13 @@ def monte_carlo(model: Any, nominal_state: Any, n: int, *, seed: Any,
         options = dict(record_every=record_every, loads=loads, gravity=gravity)
         if method is None and isinstance(model, _core.CompiledScene):
             method = model.method  # also when the samples run rebuilt scenes
+    if controller is not None:
+        seeds_of_laws = controller_seeds(seeds, int(n))
+        update = progress if callable(progress) else None
+        batch = run_samples(batch_model, initial, dt, steps, controller, seeds_of_laws,
+                            dict(options, method=method, t0=t0), SCENE_RECORD_FIELDS, update)
+        return MonteCarloResult(batch, {**inputs, "controller.seed": seeds_of_laws}, redraws, seeds.entropy,
+                                dispersions)
     options.update(method=method, t0=t0, error=bool(error))
     if client is None:
         update, close = (progress, None) if callable(progress) else _sample_bar(int(n), bool(progress))

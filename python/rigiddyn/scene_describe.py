@@ -202,6 +202,8 @@ def _parameters(element: Any, names: Sequence[str]) -> str:
         unit = f" {f.unit.replace('*', ' ')}" if f.unit and f.unit != "1" else ""  # as messages write it
         if f.kind in ("scalar", "vector"):
             parts.append(f"{f.key} = {_g(value)}{unit}")
+        elif f.kind == "array" and len(value):  # empty: not used
+            parts.append(f"{f.key} = {_g(value)}{unit}")
         elif f.kind in ("body", "optional_body"):
             parts.append(f"{f.key} = {'none' if value is None else names[value]}")
         elif f.kind == "frame":

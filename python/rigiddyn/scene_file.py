@@ -96,6 +96,10 @@ commented)::
     #                                   # f = (dm/dt) u_rel at the point r_B
     # type = "magnetic_dipole"          # m_B [A m^2] in B, B_W [T] (0), source_moment_W [A m^2] (0) at
     #                                   # source_p_W [m] (0): a dipole in a uniform and a dipole field
+    # type = "atmospheric_drag"         # radius [m], drag_area [m^2], and density0 [kg/m^3] at altitude0 [m]
+    #                                   # with scale_height [m] (exponential), or a table: table_altitude
+    #                                   # = ["200 km", "300 km", ...] (increasing) and table_density =
+    #                                   # [2.5e-10, 1.9e-11, ...] [kg/m^3] (log-linear between rows)
     #                                   # (every class of rigiddyn.FORCE_ELEMENTS but PythonForce, its
     #                                   # type the class name in snake case, its keys its `fields`)
     bodies = ["sat", "boom"]            # names of the bodies it acts on; absent: every body
@@ -110,6 +114,13 @@ commented)::
     softening = 0.01                    # [m] >= 0 (default 0) of the MutualGravity
     seed = 1                            # integer >= 0: numpy.random.default_rng(seed) draws the sample
     name_prefix = "star"                # bodies "star0", "star1", ... (default "cluster<k>_")
+
+    [controller]                        # optional: the run's digital controller, a shipped law of
+    period = "1 s"                      # rigiddyn.control (RunOptions.controller; rigiddyn._controller_table
+    law = "bdot"                        # lists its keys): "bdot" (gain, element: the index of its
+    gain = "2e4 A*m^2*s/T"              # magnetic_dipole [[force]], m_max, rate) or "pd_attitude" (k_p, k_d,
+    element = 1                         # target "lvlh" or [x, y, z, w], axes_B: default the body's wheels);
+    body = "sat"                        # body, w_B_noise [rad/s] and seed optional
 
 A [[cluster]] is a Plummer sphere in virial equilibrium (scene_file.plummer_sphere: Aarseth, Henon
 & Wielen 1974) with its centre of mass at rest at W's origin; its bodies may be named in [[force]] tables.
@@ -138,7 +149,7 @@ import math
 import re
 import warnings
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
@@ -146,6 +157,7 @@ import numpy as np
 
 from . import _core
 from ._core_call import core_call as _core_call
+from ._controller_table import controller_table, read_controller
 from ._load_table import LOAD_KEYS, applied_load
 from ._mass_properties import SOURCES, mass_properties
 from ._memory import available_bytes, format_bytes
@@ -176,7 +188,7 @@ _BODY_KEYS = {
 }
 _WHEEL_KEYS = frozenset({"axis_B", "inertia", "speed", "motor_torque", "t_start", "t_end"})
 _KINDS = "one of " + ", ".join(map(repr, _BODY_KEYS))
-_TOP_KEYS = frozenset({"name", "description", "run", "tradeoff", "frame", "body", "force", "cluster"})
+_TOP_KEYS = frozenset({"name", "description", "run", "tradeoff", "frame", "body", "force", "cluster", "controller"})
 _TRADEOFF_KEYS = frozenset({"methods", "dts", "tolerance", "measure", "horizon"})
 _MASS_FLOW_KEYS = frozenset({"rate", "inertia_rule"})
 _FRAME_KEYS = {"rotating": frozenset({"kind", "axis", "rate"}), "earth": frozenset({"kind", "latitude"})}
@@ -192,8 +204,8 @@ _UNIT_NORM = 4 * np.finfo(np.float64).eps
 
 @dataclass(frozen=True)
 class _Field:
-    """A force field: how it is read ("scalar", "vector", "bodies", "body", "optional_body", "loads",
-    "frame": 'body' or 'world'),
+    """A force field: how it is read ("scalar", "vector", "array": a table's column, "bodies", "body",
+    "optional_body", "loads", "frame": 'body' or 'world'),
     its SI unit (a pint expression) and its default (_REQUIRED, or a value in SI)."""
 
     kind: str
@@ -226,14 +238,16 @@ _TYPE_OF_CLASS = {cls: name for name, (cls, _) in FORCE_TYPES.items()}
 @dataclass(frozen=True)
 class RunOptions:
     """A scene file's [run]: method (a name of rigiddyn.methods()), dt [s] and duration [s] (None when
-    the file gives none), record_every (record every k-th step); and its [tradeoff] table, the defaults
-    of rigiddyn.tradeoff on the scene (methods, dts [s], tolerance, measure, horizon [s]; empty: none)."""
+    the file gives none), record_every (record every k-th step); its [tradeoff] table, the defaults
+    of rigiddyn.tradeoff on the scene (methods, dts [s], tolerance, measure, horizon [s]; empty: none);
+    and its [controller] table, the rigiddyn.Controller the run is made under (None: none)."""
 
     method: str = "rk4"
     dt: float | None = None
     duration: float | None = None
     record_every: int = 1
     tradeoff: Mapping[str, Any] = field(default_factory=dict)
+    controller: Any = None
 
     @property
     def steps(self) -> int | None:
@@ -443,6 +457,15 @@ def _loads(value: Any, name: str) -> list[Any]:
             for j, item in enumerate(value)]
 
 
+def _array(value: Any, name: str, unit: str) -> np.ndarray:
+    """An (n,) array [unit] (a table's column): a list of n values or {value = [..], unit = ".."}, each
+    entry as a vector's (units.vector_quantity)."""
+    items = value.get("value") if isinstance(value, Mapping) else value
+    if not isinstance(items, list):
+        raise _fail(name, f"an array of values [{unit}] or {{value = [..], unit = \"..\"}}", value)
+    return vector_quantity(value, name, unit, n=len(items))
+
+
 def _force(table: Any, i: int, names: Mapping[str, int]) -> Any:
     """The force element of the [[force]] table number i (bodies resolved by name in `names`)."""
     name = f"force[{i}]"
@@ -468,6 +491,8 @@ def _force(table: Any, i: int, names: Mapping[str, int]) -> Any:
             kwargs[key] = quantity(value, field, f.unit)
         elif f.kind == "vector":
             kwargs[key] = vector_quantity(value, field, f.unit)
+        elif f.kind == "array":
+            kwargs[key] = _array(value, field, f.unit)
         elif f.kind in ("body", "optional_body"):
             kwargs[key] = _body_ref(value, field, names)
         elif f.kind == "frame":
@@ -679,6 +704,8 @@ def parse_scene(data: Mapping[str, Any], source: str = "scene", base: str | Path
         scene.add(_core.MutualGravity(G=G, softening=softening, bodies=cluster_bodies))
     description = _string(data.get("description", ""), "description")
     run = _run(data.get("run", {}), data.get("tradeoff", {}))
+    if "controller" in data:
+        run = replace(run, controller=read_controller(data["controller"], scene, names, _body_ref))
     return SceneFile(scene, initial, run, _string(data.get("name", source), "name"), description.strip())
 
 
@@ -892,6 +919,9 @@ def _force_table(element: Any, i: int, names: Sequence[str]) -> dict[str, Any]:
             continue  # an endless time (a ramp's t_end): the default, left out as a load's is
         if f.kind in ("scalar", "vector"):
             table[key] = _floats(value)
+        elif f.kind == "array":
+            if len(value):  # empty: the default, left out
+                table[key] = _floats(value)
         elif f.kind == "frame":
             table[key] = str(value)
         elif f.kind in ("body", "optional_body"):
@@ -958,6 +988,9 @@ def scene_to_toml(scene: Any, initial: Sequence[Any] | None = None, run: RunOpti
         lines += ["", "[[force]]"] + [f"{k} = {_literal(v)}" for k, v in table.items() if k != "loads"]
         for load in table.get("loads", []):
             lines += ["[[force.loads]]"] + [f"{k} = {_literal(v)}" for k, v in load.items()]
+    if run is not None and run.controller is not None:
+        lines += ["", "[controller]"] + [f"{k} = {_literal(v)}"
+                                         for k, v in controller_table(run.controller, scene, names).items()]
     return "\n".join(lines).lstrip("\n") + "\n"
 
 

@@ -3,7 +3,9 @@
 The `simulate` command (rigiddyn.__main__) hands a scene file (a .toml with [[body]] tables, or a shipped scene's
 name, rigiddyn.scene_file.example_scenes()) to run_scene_simulate, a problem file to
 simulate_command.run_simulate. The scene's [run] gives the defaults
-of --method, --dt, --duration and --record-every; the command-line options override them.
+of --method, --dt, --duration and --record-every; the command-line options override them. A scene with a
+[controller] runs under it (rigiddyn.Controller: its law sampled every period, run.json's "controller" records it;
+no global error estimate, and no --tolerance).
 
 Writes to --out (default: simulate-<name>, as for a problem): trajectory.csv, trajectory.npz,
 trajectory.parquet (when pyarrow is installed), run.json and trajectory.png (unless --no-plot). The
@@ -85,6 +87,9 @@ class _ScenePlan:
                 if given is not None:
                     raise ValueError(f"{name}: expected nothing without --tolerance, got {given!r}")
         if self.tolerance is not None:  # the method (unless --method) and dt are chosen by simulate
+            if run.controller is not None:
+                raise ValueError(f"--tolerance: expected nothing for a scene with a [controller] (its samples fix "
+                                 f"the steps' splits; give --dt or the [run] dt), got {args.tolerance!r}")
             if args.dt is not None:
                 raise ValueError(f"--dt: expected nothing with --tolerance (exactly one of them), got {args.dt!r}")
             if args.steps is not None:
@@ -170,11 +175,22 @@ def _run_record(plan: _ScenePlan, result: Any, columns: list[str]) -> dict[str, 
         "unconverged_steps": int(result.unconverged_steps),
         "elapsed_seconds [s]": result.elapsed_seconds,
         "global error": error_report(result.error),
+        "controller": _controller_record(plan.file),
         "units": units_record(plan.units),
         "columns": columns,
         "quaternion order": "x, y, z, w",
         **_choice_record(result),
     }
+
+
+def _controller_record(file: SceneFile) -> dict[str, Any] | None:
+    """run.json's account of the file's [controller] (its table, in SI; None without one): a controlled run has no
+    global error estimate (it would sample the law again)."""
+    from ._controller_table import controller_table
+    from .scene_file import _body_names
+
+    controller = file.run.controller
+    return None if controller is None else controller_table(controller, file.scene, _body_names(file.scene))
 
 
 def _choice_record(result: Any) -> dict[str, Any]:
@@ -187,12 +203,12 @@ def _choice_record(result: Any) -> dict[str, Any]:
 
 
 def _run(plan: _ScenePlan, update: Any) -> Any:
-    """simulate of the scene: at the plan's dt, or to its tolerance (then the plan takes the chosen method, dt
-    and steps)."""
+    """simulate of the scene: at the plan's dt (under the file's [controller], if it has one), or to its tolerance
+    (then the plan takes the chosen method, dt and steps)."""
     if plan.tolerance is None:
         return _core.simulate(plan.file.scene, plan.file.initial, dt=plan.dt, steps=plan.steps,
                               method=cast(Any, plan.method), record_every=plan.record_every,  # checked
-                              progress=update, error=plan.error)
+                              progress=update, error=plan.error, controller=plan.file.run.controller)
     result = _core.simulate(plan.file.scene, plan.file.initial, duration=plan.duration, tolerance=plan.tolerance,
                             measure=plan.measure, max_steps=plan.max_steps, method=cast(Any, plan.method_given),
                             record_every=plan.record_every, progress=update)
@@ -248,9 +264,10 @@ def conservative(scene: Any) -> bool:
     return all(t["has_potential"] and not t["velocity_dependent"] and not t["time_dependent"] for t in traits)
 
 
-def _summary(result: Any, scene: Any = None) -> str:
-    """One line: records, bodies, time; the energy drift (or, with mass flows, the mass burnt); the range
-    of each pivot's reaction force."""
+def _summary(result: Any, scene: Any = None, controlled: bool = False) -> str:
+    """One line: records, bodies, time; the energy drift (or, with mass flows, the mass burnt; under a
+    controller, whose commands change the elements, the energy balance); the range of each pivot's reaction
+    force."""
     n = len(result.body_names)
     head = (f"{len(result.t)} records of {n} {'body' if n == 1 else 'bodies'} to t = {result.t[-1]:.6g} s in "
             f"{result.elapsed_seconds:.3g} s")
@@ -261,7 +278,7 @@ def _summary(result: Any, scene: Any = None) -> str:
         parts += [f"{result.body_names[i]}: mass {mass[0, i]:.6g} -> {mass[-1, i]:.6g} kg "
                   f"({mass[0, i] - mass[-1, i]:.6g} kg burnt)" for i in flows]
         parts.append("total energy not conserved (the thrust works)")
-    elif not conservative(scene):  # damping, drag, loads: the work of every element, against T's change
+    elif controlled or not conservative(scene):  # damping, drag, loads, commands: every element's work against T's
         from .simulate_command import energy_balance
 
         work = np.sum(np.asarray(result.work).reshape(len(result.t), -1), axis=1)
@@ -293,5 +310,6 @@ def run_scene_simulate(args: argparse.Namespace) -> int:
     except OutputExists as e:
         return fail(e, EXIT_EXISTS)
     return run_and_report(plan.steps, plan.progress, lambda update: _run(plan, update),
-                          lambda result: _summary(result, plan.file.scene), plan.out,
+                          lambda result: _summary(result, plan.file.scene, plan.file.run.controller is not None),
+                          plan.out,
                           lambda result, folder: _write(plan, result, folder))

@@ -390,6 +390,19 @@ def frame_modes(scene: object, t: float = 0.0) -> list[tuple[str, float, complex
              -rate**2, 2j * rate)]
 
 
+def _air_density(air: _core.AtmosphericDrag, altitude: float) -> float:
+    """An AtmosphericDrag's density [kg/m^3] at `altitude` [m], as the element computes it: exponential, or
+    log-linear between its table's rows (the outermost bands extended); infinite deep inside the planet."""
+    with np.errstate(over="ignore"):  # deep inside the planet: an infinite rate, named as such
+        h = np.asarray(air.table_altitude, float)
+        if h.size == 0:
+            return float(air.density0) * float(np.exp(-(altitude - float(air.altitude0)) / float(air.scale_height)))
+        log_rho = np.log(np.asarray(air.table_density, float))
+        i = int(np.clip(np.searchsorted(h, altitude, side="right") - 1, 0, h.size - 2))
+        slope = (log_rho[i + 1] - log_rho[i]) / (h[i + 1] - h[i])
+        return float(np.exp(log_rho[i] + slope * (altitude - h[i])))
+
+
 def scene_modes(scene: object, initial: list[object]) -> list[tuple[str, float, float]]:
     """The linear modes (label, k [1/s^2], gamma [1/s]) of the scene's elements at the initial states:
     springs k (1/m_a + 1/m_b) (a pinned end: |c + r|^2 / I_O,min for 1/m, _inverse_mass_at) and, at a
@@ -451,9 +464,7 @@ def scene_modes(scene: object, initial: list[object]) -> list[tuple[str, float, 
             for i in _listed(element, n):
                 r = p[i] - np.asarray(element.p_W, float)
                 altitude = float(np.linalg.norm(r)) - float(element.radius)
-                with np.errstate(over="ignore"):  # deep inside the planet: an infinite rate, named as such
-                    rho = float(element.density0) * float(np.exp(-(altitude - float(element.altitude0))
-                                                                 / float(element.scale_height)))
+                rho = _air_density(element, altitude)
                 v_rel = float(np.linalg.norm(v[i] - np.cross(np.asarray(element.omega_W, float), r)))
                 modes.append((f"the air {label} on body {i}", 0.0, rho * float(element.drag_area) * v_rel / mass[i]))
         elif kind == "UniformGravity":

@@ -78,7 +78,10 @@ SceneCase every_body_kind() {
   s.elements.push_back(PointMassGravity{5.0, Eigen::Vector3d(0.0, 0.0, -10.0), 0.0, {0, 2, 3, 4}});
   s.elements.push_back(GravityGradient{5.0, Eigen::Vector3d(0.0, 0.0, -10.0), {2, 3, 4}});
   s.elements.push_back(AtmosphericDrag{1.0, 0.0, 5.0, 8.0, Eigen::Vector3d(0.0, 0.0, -10.0), Eigen::Vector3d(0.0, 0.0, 0.1), 0.5,
-                                       Eigen::Vector3d(0.0, 0.0, 0.0), {0, 2, 3, 4}});
+                                       Eigen::Vector3d(0.0, 0.0, 0.0), {0, 2, 3, 4}, {}, {}});
+  // the same air tabulated: rows 5 m apart (its density found by a binary search, no allocation)
+  s.elements.push_back(AtmosphericDrag{0.0, 0.0, 0.0, 8.0, Eigen::Vector3d(0.0, 0.0, -10.0), Eigen::Vector3d(0.0, 0.0, 0.1), 0.5,
+                                       Eigen::Vector3d(0.0, 0.0, 0.0), {0, 2, 3, 4}, {0.0, 5.0, 10.0}, {1.0, 0.4, 0.1}});
   s.elements.push_back(ZonalGravity{5.0, 2.0, 1e-2, -1e-3, 2e-3, Eigen::Vector3d(0.0, 0.0, -10.0),
                                     Eigen::Vector3d(0.1, 0.0, 1.0), {0, 2, 3, 4}});
   ReactionWheel wheel;  // spun up inside the first run: its switches fall inside every run

@@ -1,6 +1,7 @@
 // A Controller of a scene run (scene/controller.hpp) and its shipped laws (scene/control_laws.hpp): the law sees
 // t0 + k period exactly; a held thrust is integrated as exactly as the piecewise-constant load it is (no step
-// straddles a sample); held wheel torques spin a gyrostat as the closed form says; bad inputs are named.
+// straddles a sample); held wheel torques spin a gyrostat as the closed form says; a commanded ReactionWheel speed
+// is reached by its ramp; bad inputs are named.
 #include <gtest/gtest.h>
 
 #include "invalid_argument_message.hpp"
@@ -58,7 +59,7 @@ TEST(Controller, HeldThrustIsIntegratedExactly) {
   const double period = 0.3, m = 2.0;
   const Controller controller{period, [&](const SampledState& s) {
                                 const double k = std::round(s.t / period);
-                                return ActuatorCommands{{}, {{0, Eigen::Vector3d(k + 1.0, 0.0, 0.0)}}};
+                                return ActuatorCommands{{}, {{0, Eigen::Vector3d(k + 1.0, 0.0, 0.0)}}, {}};
                               }};
   const std::int64_t steps = 30;
   const SceneSimulation r =
@@ -82,7 +83,7 @@ TEST(Controller, HeldWheelTorquesSpinTheGyrostat) {
   const double u = 0.01;
   const Controller controller{0.25, [&](const SampledState& s) {
                                 EXPECT_EQ(s.wheel_speed.size(), 1u);
-                                return ActuatorCommands{{u}, {}};
+                                return ActuatorCommands{{u}, {}, {}};
                               }};
   GyrostatState x0;
   x0.wheel_speeds = Eigen::VectorXd::Zero(1);
@@ -102,13 +103,13 @@ TEST(Controller, BadInputsAreNamed) {
             std::string::npos);
   EXPECT_NE(message_of([&] { run(Controller{0.1, {}}); }).find("controller.law: expected a law"), std::string::npos);
   const auto commands = [&](ActuatorCommands c) { return Controller{0.25, [c](const SampledState&) { return c; }}; };
-  EXPECT_NE(message_of([&] { run(commands({{1.0}, {}})); })
+  EXPECT_NE(message_of([&] { run(commands({{1.0}, {}, {}})); })
                 .find("controller.law(t=0): expected wheel_torque of 0 values (one per gyrostat wheel), got 1"),
             std::string::npos);
-  EXPECT_NE(message_of([&] { run(commands({{}, {{2, Eigen::Vector3d::Zero()}}})); })
+  EXPECT_NE(message_of([&] { run(commands({{}, {{2, Eigen::Vector3d::Zero()}}, {}})); })
                 .find("controller.law(t=0)[2]: expected the index of an element in [0, 1)"),
             std::string::npos);
-  EXPECT_NE(message_of([&] { run(commands({{}, {{0, Eigen::Vector3d(NAN, 0.0, 0.0)}}})); })
+  EXPECT_NE(message_of([&] { run(commands({{}, {{0, Eigen::Vector3d(NAN, 0.0, 0.0)}}, {}})); })
                 .find("controller.law(t=0)[0]: expected finite values"),
             std::string::npos);
   Scene gravity;
@@ -116,8 +117,40 @@ TEST(Controller, BadInputsAreNamed) {
   gravity.elements.push_back(UniformGravity{Eigen::Vector3d(0.0, 0.0, -9.81), {}});
   EXPECT_NE(message_of([&] {
               simulate(compile_scene(gravity, Method::rk4), {RigidBodyState{}}, rk4(0.1, 10),
-                       commands({{}, {{0, Eigen::Vector3d::Zero()}}}));
+                       commands({{}, {{0, Eigen::Vector3d::Zero()}}, {}}));
             }).find("expected a MagneticDipole or a ScheduledLoads"),
+            std::string::npos);
+}
+
+// A commanded ReactionWheel speed is reached at the next sample by a constant-rate ramp: about the body's principal
+// axis z (at rest) the body turns at w_z = −J (Ω(t) − Ω(0))/I, exactly for rk4 (the rate is constant over each
+// sub-step); a speed to another element names it and its type, a non-finite one the sample time.
+TEST(Controller, CommandedWheelSpeedIsReachedAtTheNextSample) {
+  Scene scene;
+  scene.bodies = {RigidBody(10.0, Eigen::Vector3d(2.0, 3.0, 4.0))};
+  ReactionWheel wheel;
+  wheel.body = 0, wheel.axis_B = Eigen::Vector3d::UnitZ(), wheel.inertia = 0.25, wheel.speed = 1.0;
+  scene.elements.push_back(wheel);
+  const CompiledScene compiled = compile_scene(scene, Method::rk4);
+  const Controller speed_loop{0.4, [](const SampledState& s) {
+                                return ActuatorCommands{{}, {}, {{0, s.t < 0.2 ? 3.0 : -1.0}}};
+                              }};
+  const SceneSimulation r = simulate(compiled, {RigidBodyState{}}, rk4(0.08, 15), speed_loop);
+  const double w_max = 0.25 * 2.0 / 4.0;
+  for (std::size_t i = 0; i < r.t.size(); ++i) {  // Ω: 1 → 3 over [0, 0.4], 3 → −1 over [0.4, 0.8], then −1
+    const double t = r.t[i];
+    const double omega = t <= 0.4 ? 1.0 + 5.0 * t : t <= 0.8 ? 3.0 - 10.0 * (t - 0.4) : -1.0;
+    EXPECT_NEAR(r.w_B[3 * i + 2], -0.25 * (omega - 1.0) / 4.0, 4 * kEps * 16 * w_max) << "t = " << t;
+  }
+  const auto run = [&](const Scene& s, double speed) {
+    simulate(compile_scene(s, Method::rk4), {RigidBodyState{}}, rk4(0.1, 3),
+             Controller{0.1, [speed](const SampledState&) { return ActuatorCommands{{}, {}, {{0, speed}}}; }});
+  };
+  EXPECT_NE(message_of([&] { run(thruster_scene(), 1.0); })
+                .find("controller.law(t=0)[0]: expected a ReactionWheel (the element that takes a speed command "
+                      "[rad/s]), got element 0 (a ScheduledLoads)"),
+            std::string::npos);
+  EXPECT_NE(message_of([&] { run(scene, NAN); }).find("controller.law(t=0)[0]: expected a finite wheel speed [rad/s]"),
             std::string::npos);
 }
 

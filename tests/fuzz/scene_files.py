@@ -176,6 +176,11 @@ def _force(draw, names, flows, rigid):
         table["p_W"] = [Q(0.0, "m"), Q(0.0, "m"), Q(-50.0, "m")]
         table["omega_W"] = draw(_vector(3, st.floats(-0.1, 0.1), "rad/s"))
         table["drag_area"] = draw(_q(st.floats(0.0, 1.0), "m^2"))
+        if draw(st.booleans()):  # or a density table: 2 to 4 rows 5 m apart from 0 m, densities in (0, 1]
+            rows = draw(st.integers(2, 4))
+            del table["density0"], table["scale_height"]
+            table["table_altitude"] = [Q(5.0 * k, "m") for k in range(rows)]
+            table["table_density"] = draw(_vector(rows, st.floats(1e-3, 1.0), "kg/m^3"))
     elif kind == "solar_radiation_pressure":  # a cannonball (the bodies may be particles), a turning Sun, a shadow
         table["sun_W"] = [draw(SMALL), draw(SMALL), 1.0]
         table["sun_rate_W"] = draw(_vector(3, st.floats(-1.0, 1.0), "rad/s"))

@@ -117,6 +117,11 @@ RECIPES = {
     "ReactionWheel": st.tuples(st.floats(-100.0, 100.0), st.floats(-10.0, 10.0)).map(lambda sa: _call_spec(
         "ReactionWheel", body=("lit", 1), axis_B=("lit", [0.0, 0.6, 0.8]), inertia=("lit", 0.01), speed=("lit", sa[0]),
         acceleration=("lit", sa[1]))),
+    # an atmosphere, exponential (a drawn scale height) or tabulated (two rows, drawn densities)
+    "AtmosphericDrag": st.tuples(st.booleans(), st.floats(1e-3, 1.0), st.floats(1e-3, 1.0)).map(
+        lambda tab: _call_spec("AtmosphericDrag", radius=("lit", 2.0), drag_area=("lit", 0.5),
+                               **({"table_altitude": ("lit", [0.0, 5.0]), "table_density": ("lit", [tab[1], tab[2]])}
+                                  if tab[0] else {"density0": ("lit", tab[1]), "scale_height": ("lit", 10.0 * tab[2])}))),
     # a gyrostat with a wheel whose motor torque and initial speed are drawn
     "Wheel": st.floats(-1.0, 1.0).map(lambda u: _call_spec("Wheel", [("lit", [0.0, 0.0, 1.0]), ("lit", 0.05)],
                                                          motor_torque=("lit", u))),

@@ -81,3 +81,118 @@ def test_bad_input_names_the_field(kwargs, message):
     fields = dict(density0=1e-11, scale_height=5e4, radius=R_EARTH, drag_area=1.0)
     with pytest.raises(ValueError, match=message):
         rd.Scene([rd.Particle(1.0)], elements=[rd.AtmosphericDrag(**{**fields, **kwargs})]).compile("rk4")
+
+
+# ---------------------------------------------------------------- the tabulated density (Vallado, Table 8-4)
+def drag_power_at(air, altitude, speed=7600.0):
+    """The drag's power f.v [W] at t0 on a particle `altitude` [m] up moving at `speed` [m/s] through still air:
+    -(1/2) rho(altitude) C_D A speed^3, read from the run's record."""
+    start = rd.ParticleState(p_W=(R_EARTH + altitude, 0.0, 0.0), v_W=(0.0, speed, 0.0))
+    result = rd.simulate(rd.Scene([rd.Particle(1.0)], elements=[air]), [start], 1e-3, steps=1, method="rk4",
+                         error=False)
+    return float(result.power[0, 0])
+
+
+def test_a_table_sampled_from_the_exponential_model_is_that_model():
+    """Rows (h_i, rho0 exp(-(h_i - h0)/H)) at uneven altitudes give the exponential model's density at every
+    altitude, inside the table and beyond its outermost rows (where its outermost bands' exponentials are
+    extended): both are exponentials with the same value at the rows. Round-off: the rows carry eps (1 + a_i)
+    each (a = |h - h0|/H, the exponential's argument), so the band's slope ln(rho_{i+1}/rho_i)/(h_{i+1} - h_i)
+    carries 4 eps (1 + a) of the argument per band width, times s = |h - h_i|/(h_{i+1} - h_i) bands away;
+    the model's own exp carries eps (1 + a): 16 eps (1 + a)(1 + s) with room."""
+    rho0, h0, H = 3e-12, 400e3, 60e3
+    exponential = rd.AtmosphericDrag(density0=rho0, altitude0=h0, scale_height=H, radius=R_EARTH, drag_area=8.8)
+    h_rows = np.array([200e3, 250e3, 400e3, 410e3, 700e3, 1000e3])
+    table = rd.AtmosphericDrag(table_altitude=h_rows, table_density=rho0 * np.exp(-(h_rows - h0) / H),
+                               radius=R_EARTH, drag_area=8.8)
+    for h in [150e3, 200e3, 230e3, 399e3, 405e3, 555.5e3, 1000e3, 1300e3]:
+        i = int(np.clip(np.searchsorted(h_rows, h, side="right") - 1, 0, h_rows.size - 2))
+        s = abs(h - h_rows[i]) / (h_rows[i + 1] - h_rows[i])
+        a = max(abs(h - h0), abs(h_rows[i] - h0), abs(h_rows[i + 1] - h0)) / H
+        want = drag_power_at(exponential, h)
+        assert abs(drag_power_at(table, h) / want - 1) <= 16 * EPS * (1 + a) * (1 + s), h
+
+
+def test_inside_a_band_the_density_is_log_linear():
+    """Between rows (h_i, rho_i) and (h_{i+1}, rho_{i+1}) rho = rho_i (rho_{i+1}/rho_i)^s, s = (h - h_i)/(h_{i+1} -
+    h_i) (an exponential of scale height H_i = (h_{i+1} - h_i)/ln(rho_i/rho_{i+1})), and the outermost bands'
+    exponentials beyond the table: s < 0 below it, s > 1 above. Rows of uneven densities (one band rising).
+    Round-off: the slope's log carries 2 eps (1 + L), L = |ln(rho_{i+1}/rho_i)|, times |s|, and the exp and the
+    products a few eps each: 16 eps (1 + L)(1 + |s|)."""
+    h_rows = np.array([100e3, 150e3, 300e3, 320e3])
+    rho_rows = np.array([5e-7, 2e-9, 3e-9, 1e-11])
+    table = rd.AtmosphericDrag(table_altitude=h_rows, table_density=rho_rows, radius=R_EARTH, drag_area=2.0)
+    for h, i in [(120e3, 0), (100e3, 0), (150e3, 1), (200e3, 1), (319e3, 2), (80e3, 0), (400e3, 2)]:
+        s = (h - h_rows[i]) / (h_rows[i + 1] - h_rows[i])
+        L = abs(np.log(rho_rows[i + 1] / rho_rows[i]))
+        rho = rho_rows[i] * (rho_rows[i + 1] / rho_rows[i]) ** s
+        want = -0.5 * rho * 2.0 * 7600.0**3
+        assert abs(drag_power_at(table, h) / want - 1) <= 16 * EPS * (1 + L) * (1 + abs(s)), h
+
+
+@pytest.mark.parametrize("table, message", [
+    (dict(table_altitude=[1e5], table_density=[1e-9]), r"table_altitude: expected at least 2 rows .*, got 1"),
+    (dict(table_altitude=[1e5, 2e5, 2e5], table_density=[1e-9, 1e-10, 1e-11]),
+     r"table_altitude\[2\]: expected an altitude \[m\] above table_altitude\[1\] = 200000 .*, got 200000"),
+    (dict(table_altitude=[1e5, 2e5, 1.5e5], table_density=[1e-9, 1e-10, 1e-11]),
+     r"table_altitude\[2\]: .*, got 150000"),
+    (dict(table_altitude=[1e5, 2e5], table_density=[1e-9, 0.0]),
+     r"table_density\[1\]: expected a finite density > 0 \[kg/m\^3\], got 0"),
+    (dict(table_altitude=[1e5, 2e5], table_density=[-1.0, 1e-10]), r"table_density\[0\]: .*, got -1$"),
+    (dict(table_altitude=[1e5, 2e5], table_density=[1e-9]),
+     r"table_density: expected one density per altitude of table_altitude \(2\), got 1"),
+    (dict(table_altitude=[1e5, float("nan")], table_density=[1e-9, 1e-10]), r"table_altitude\[1\]: .*, got nan"),
+    (dict(table_altitude=[1e5, 2e5], table_density=[1e-9, 1e-10], scale_height=6e4),
+     r"scale_height: expected 0 with a density table .*, got 60000"),
+])
+def test_a_bad_table_is_refused_naming_the_value(table, message):
+    with pytest.raises(ValueError, match=message):
+        rd.AtmosphericDrag(radius=R_EARTH, drag_area=1.0, **table)
+
+
+def test_a_table_reads_from_a_scene_file_with_units_and_writes_back():
+    """[[force]] type = "atmospheric_drag" with table_altitude and table_density (each entry may carry a unit): the
+    element has the rows in SI, and the canonical file reads back to an equal element."""
+    text = '''
+[[body]]
+name = "sat"
+kind = "particle"
+mass = 500
+p_W = [6778137.0, 0, 0]
+v_W = [0, 7670, 0]
+[[force]]
+type = "atmospheric_drag"
+radius = "6378.137 km"
+drag_area = 8.8
+table_altitude = ["300 km", "400 km", 500000.0]
+table_density = {value = [2.4e-11, 3.7e-12, 6.9e-13], unit = "kg/m^3"}
+'''
+    scene, initial, _ = rd.load_scene(text)
+    air = scene.elements[0]
+    assert air.table_altitude.tolist() == [300e3, 400e3, 500e3]
+    assert air.table_density.tolist() == [2.4e-11, 3.7e-12, 6.9e-13]
+    again, _, _ = rd.load_scene(scene.to_toml(initial))
+    assert again.elements[0] == air
+    with pytest.raises(ValueError, match=r"force\[0\]\.table_altitude\[0\]: expected m"):
+        rd.load_scene(text.replace('"300 km"', '"300 kg"'))
+
+
+def test_the_step_size_estimate_reads_a_tabulated_density():
+    """rigiddyn.stability's damping rate of the air, rho C_D A |v_rel| / m, reads the table as the element does: a
+    table sampled from an exponential model gives that model's rate, inside the table and above it, within the
+    round-off bound of test_a_table_sampled_from_the_exponential_model_is_that_model, 16 eps (1 + a)(1 + s)."""
+    from rigiddyn.stability import scene_modes
+
+    rho0, h0, H = 3e-12, 400e3, 60e3
+    h_rows = np.array([300e3, 350e3, 500e3])
+    models = [rd.AtmosphericDrag(density0=rho0, altitude0=h0, scale_height=H, radius=R_EARTH, drag_area=8.8),
+              rd.AtmosphericDrag(table_altitude=h_rows, table_density=rho0 * np.exp(-(h_rows - h0) / H),
+                                 radius=R_EARTH, drag_area=8.8)]
+    for h in (420e3, 650e3):
+        start = [rd.ParticleState(p_W=(R_EARTH + h, 0.0, 0.0), v_W=(0.0, 7600.0, 0.0))]
+        (_, _, exponential), (_, _, table) = (scene_modes(rd.Scene([rd.Particle(2.0)], elements=[air]), start)[0]
+                                              for air in models)
+        i = min(int(np.searchsorted(h_rows, h, side="right")) - 1, h_rows.size - 2)
+        s = abs(h - h_rows[i]) / (h_rows[i + 1] - h_rows[i])
+        a = max(abs(h - h0), abs(h_rows[i] - h0), abs(h_rows[i + 1] - h0)) / H
+        assert table == pytest.approx(exponential, rel=16 * EPS * (1 + a) * (1 + s))

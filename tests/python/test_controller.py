@@ -10,6 +10,7 @@ A theta'' + k_d theta' + k_p theta = 0. Bad inputs are named.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import numpy as np
@@ -384,3 +385,232 @@ def test_a_bdot_law_must_command_a_magnetic_dipole(noise):
                                          r"got 1 \(a ScheduledLoads\)"):
         rd.simulate(scene, [rd.RigidBodyState(w_B=(0.1, 0.0, 0.0))], 0.1, steps=2,
                     controller=rd.Controller(0.5, law, w_B_noise=noise, seed=1))
+
+
+# ---------------------------------------------------------------- wheel-speed commands to a ReactionWheel
+def wheel_scene(speed=0.0):
+    """A body (I = diag(2, 3, 4) kg m^2, wheel included) at rest with a ReactionWheel (J = 0.25 kg m^2) about its
+    principal axis z, spinning at `speed` [rad/s]."""
+    wheel = rd.ReactionWheel(body=0, axis_B=(0.0, 0.0, 1.0), inertia=0.25, speed=speed)
+    return rd.Scene([rd.RigidBody(10.0, [2.0, 3.0, 4.0])], elements=[wheel])
+
+
+def test_a_commanded_wheel_speed_turns_the_body_by_minus_j_delta_omega_over_i():
+    """About a principal axis of a body at rest the wheel's torque is -J dOmega/dt a (w_B x h = 0, w_B x I w_B = 0),
+    so I dw_z/dt = -J dOmega/dt: w_z = -J (Omega(t) - Omega(0))/I at every t (the total angular momentum I w_z + J
+    Omega conserved). The commanded speeds 3, -1, -1, 0.5 rad/s at the samples 0, 0.4, 0.8, 1.2 s are each reached
+    at the next sample by a constant-rate ramp; the rate is constant over each sub-step, so rk4 is exact here: the
+    bound is the round-off of the steps' sums, 4 eps max |w| per (sub-)step over the 20 steps and 3 sample splits."""
+    J, I, period = 0.25, 4.0, 0.4
+    commands = {0.0: 3.0, 0.4: -1.0, 0.8: -1.0, 1.2: 0.5}
+    law = lambda state: {0: commands[round(state.t, 12)]}  # noqa: E731
+    r = rd.simulate(wheel_scene(1.0), [rd.RigidBodyState()], 0.08, duration=1.6, method="rk4",
+                    controller=rd.Controller(period, law))
+    samples = period * np.arange(5)
+    omega = np.array([1.0, 3.0, -1.0, -1.0, 0.5])  # the wheel's speed at the samples, from its own 1 rad/s
+    w_max = J * np.abs(omega - omega[0]).max() / I
+    want = -J * (np.interp(r.t, samples, omega) - omega[0]) / I  # Omega(t) linear between the samples
+    assert np.abs(r.w_B[:, 0, :2]).max() == 0.0
+    assert np.abs(r.w_B[:, 0, 2] - want).max() <= 4 * EPS * 23 * w_max
+
+
+def test_a_speed_command_is_refused_by_an_element_that_is_no_reaction_wheel():
+    """A number commanded to a ScheduledLoads names the element and its type; a (3,) value to a ReactionWheel
+    names it too; a non-finite speed names the sample time."""
+    with pytest.raises(ValueError, match=r"controller\.law\(t=0\)\[0\]: expected a ReactionWheel .*, got element 0 "
+                                         r"\(a ScheduledLoads\)"):
+        rd.simulate(thruster_scene(), [rd.RigidBodyState()], 0.1, steps=3,
+                    controller=rd.Controller(0.1, lambda state: {0: 1.0}))
+    with pytest.raises(ValueError, match=r"controller\.law\(t=0\)\[0\]: expected a MagneticDipole or a "
+                                         r"ScheduledLoads .*, got element 0 \(a ReactionWheel\)"):
+        rd.simulate(wheel_scene(), [rd.RigidBodyState()], 0.1, steps=3,
+                    controller=rd.Controller(0.1, lambda state: {0: (1.0, 0.0, 0.0)}))
+    with pytest.raises(ValueError, match=r"controller\.law\(t=0\.20000000000000001\)\[0\]: expected finite values, "
+                                         r"got nan"):
+        rd.simulate(wheel_scene(), [rd.RigidBodyState()], 0.1, steps=3,
+                    controller=rd.Controller(0.1, lambda state: {0: 1.0 if state.t < 0.15 else math.nan}))
+    with pytest.raises(ValueError, match=r"controller\.law\(t=0\)\[0\]: expected shape \(3,\) .* or a number"):
+        rd.simulate(wheel_scene(), [rd.RigidBodyState()], 0.1, steps=3,
+                    controller=rd.Controller(0.1, lambda state: {0: (1.0, 2.0)}))
+
+
+# ---------------------------------------------------------------- the [controller] table of scene files
+BDOT_FILE = '''
+[[body]]
+name = "sat"
+kind = "rigid"
+mass = 10.0
+inertia = [0.08, 0.1, 0.12]
+w_B = ["2 deg/s", -0.04, 0.02]
+[[force]]
+type = "uniform_gravity"
+g_W = [0, 0, 0]
+[[force]]
+type = "magnetic_dipole"
+m_B = [0, 0, 0]
+B_W = ["10 uT", "-20 uT", "30 uT"]
+[controller]
+period = "500 ms"
+law = "bdot"
+gain = "2e5 A*m^2*s/T"
+element = 1
+m_max = "0.05 A*m^2"
+body = "sat"
+w_B_noise = "0.01 deg/s"
+seed = 7
+'''
+
+
+def test_a_controller_table_reads_with_units_and_writes_back():
+    """[controller] gives RunOptions.controller: a Controller of the law it names, each quantity in SI; the
+    canonical file (scene_to_toml with the run options) holds it and reads back to the same controller, whose
+    run (the same seed: the same gyro noise) is the same bit for bit."""
+    scene, initial, run = rd.load_scene(BDOT_FILE)
+    c = run.controller
+    assert (c.period, c.w_B_noise, c.seed) == (0.5, math.radians(0.01), 7)
+    assert isinstance(c.law, BDot) and (c.law.gain, c.law.element, c.law.m_max, c.law.body) == (2e5, 1, 0.05, 0)
+    assert c.law.dipole == scene.elements[1]
+    text = scene.to_toml(initial, run)
+    assert "[controller]" in text
+    again = rd.load_scene(text)[2].controller
+    assert (again.period, again.w_B_noise, again.seed) == (c.period, c.w_B_noise, c.seed)
+    assert vars(again.law).keys() == vars(c.law).keys()
+    assert all(getattr(again.law, k) == getattr(c.law, k) for k in ("gain", "element", "m_max", "body", "rate"))
+    runs = [rd.simulate(scene, initial, 0.1, duration=5.0, error=False, controller=controller)
+            for controller in (rd.load_scene(BDOT_FILE)[2].controller, again)]
+    np.testing.assert_array_equal(runs[0].w_B, runs[1].w_B)
+    assert np.abs(runs[0].w_B[-1] - runs[0].w_B[0]).max() > 1e-3  # the law acts
+
+
+def test_the_shipped_cubesat_scenes_carry_their_controllers():
+    """cubesat_detumbling's [controller] is B-dot on its magnetorquer every second, cubesat_pointing's the PD law
+    to LVLH every 0.5 s with k_p = A w_n^2, k_d = 2 zeta A w_n (w_n = 0.05 rad/s, zeta = 0.7: the decimals of the
+    file, to their rounding); each writes back to a file that reads back to the same law."""
+    _, _, run = rd.load_scene("cubesat_detumbling")
+    assert isinstance(run.controller.law, BDot) and run.controller.period == 1.0 and run.controller.law.element == 1
+    scene, initial, run = rd.load_scene("cubesat_pointing")
+    law = run.controller.law
+    assert isinstance(law, PDAttitude) and law.q_target_WB == "lvlh" and run.controller.period == 0.5
+    A = scene.bodies[0].transverse_inertia[0, 0]
+    assert math.sqrt(law.k_p / A) == pytest.approx(0.05, rel=4 * EPS)
+    assert law.k_d / (2 * math.sqrt(law.k_p * A)) == pytest.approx(0.7, rel=4 * EPS)
+    np.testing.assert_array_equal(law.axes_B, np.eye(3))  # the gyrostat's wheels
+    again = rd.load_scene(scene.to_toml(initial, run))[2].controller.law
+    assert (again.k_p, again.k_d, again.q_target_WB) == (law.k_p, law.k_d, law.q_target_WB)
+
+
+def test_a_pd_controller_table_takes_a_quaternion_target_and_axes():
+    """target = [x, y, z, w] and axes_B (any lengths, normalised) on a rigid body with ReactionWheel-free axes:
+    the law as PDAttitude(k_p, k_d, axes_B, q_target_WB=target) builds it; written back with its axes."""
+    text = BDOT_FILE.split("[controller]")[0] + '''[controller]
+period = 0.2
+law = "pd_attitude"
+k_p = "2 N*m/rad"
+k_d = 6.0
+target = [0.1, -0.2, 0.05, 1.0]
+axes_B = [[2, 0, 0], [0, 1, 0], [0, 0, 1], [1, 1, 1]]
+'''
+    scene, initial, run = rd.load_scene(text)
+    law = run.controller.law
+    assert law.q_target_WB.tolist() == [0.1, -0.2, 0.05, 1.0]
+    np.testing.assert_array_equal(law.axes_B[0], [1.0, 0.0, 0.0])
+    assert "axes_B = [[1.0, 0.0, 0.0]" in scene.to_toml(initial, run)
+
+
+@pytest.mark.parametrize("change, message", [
+    (("law = \"bdot\"", "law = \"bdott\""), r"controller\.law: expected 'bdot' or 'pd_attitude', got 'bdott'"),
+    (("gain =", "gian ="), r"controller\.gian: expected a key of a \[controller\] of law 'bdot'; did you mean 'gain'"),
+    (("element = 1", "element = 0"), r"controller\.element: expected the index of a magnetic_dipole .*got 0 "
+                                     r"\(a UniformGravity\)"),
+    (("element = 1", "element = 2"), r"controller\.element: expected .* \(an integer in \[0, 2\)\), got 2"),
+    (("period = \"500 ms\"", "period = \"500 kg\""), r"controller\.period: expected s"),
+    (("body = \"sat\"", "body = \"sta\""), r"controller\.body: expected the name of a \[\[body\]\].*did you mean 'sat'"),
+    (("seed = 7", "seed = -1"), r"controller\.seed: expected an integer >= 0, got -1"),
+    (("gain = \"2e5 A*m^2*s/T\"", "k_p = 1.0"), r"controller\.k_p: expected a key of a \[controller\] of law 'bdot'"),
+])
+def test_a_bad_controller_table_is_named(change, message):
+    with pytest.raises(ValueError, match=message):
+        rd.load_scene(BDOT_FILE.replace(*change))
+
+
+def test_a_pd_controller_on_a_body_without_wheels_needs_axes():
+    text = BDOT_FILE.split("[controller]")[0] + '[controller]\nperiod = 1\nlaw = "pd_attitude"\nk_p = 1\nk_d = 1\n'
+    with pytest.raises(ValueError, match=r"controller\.body: expected a gyrostat .*, got 0 \(a RigidBody\)"):
+        rd.load_scene(text)
+
+
+def test_a_law_in_python_cannot_be_written_to_a_file():
+    scene, initial, run = rd.load_scene(BDOT_FILE)
+    python = dataclasses.replace(run, controller=rd.Controller(1.0, lambda state: {}))
+    with pytest.raises(ValueError, match=r"scene\.controller\.law: expected a law a scene file can hold"):
+        scene.to_toml(initial, python)
+
+
+def test_the_cli_runs_a_scene_under_its_controller(tmp_path, capsys):
+    """python -m rigiddyn simulate cubesat_pointing: the run is the one rd.simulate makes under the file's
+    controller (the same records bit for bit), run.json records the [controller], and the summary gives the
+    energy balance (the commands change the elements: no energy is conserved)."""
+    import json
+
+    from rigiddyn.__main__ import main
+
+    out = tmp_path / "out"
+    assert main(["simulate", "cubesat_pointing", "--duration", "30", "--no-plot", "--no-progress",
+                 "--out", str(out)]) == 0
+    assert "energy balance T(t) - T(0) - W(t)" in capsys.readouterr().out
+    record = json.loads((out / "run.json").read_text())
+    assert record["controller"]["law"] == "pd_attitude" and record["global error"] is None
+    scene, initial, run = rd.load_scene("cubesat_pointing")
+    want = rd.simulate(scene, initial, run.dt, duration=30.0, record_every=run.record_every, controller=run.controller)
+    got = np.load(out / "trajectory.npz")
+    w = [k for k in got.files if "w_B_x" in k]
+    np.testing.assert_array_equal(got[w[0]], want.w_B[:, 0, 0])
+    assert main(["simulate", "cubesat_pointing", "--tolerance", "1e-6", "--duration", "30", "--no-plot",
+                 "--no-progress", "--out", str(tmp_path / "o2")]) == 2
+
+
+# ---------------------------------------------------------------- Monte Carlo under a controller
+def noisy_thrust_scene():
+    """A body at rest with a thruster whose law pushes along x by the sampled w_B_x [N per rad/s]: the true rate
+    stays zero, so the thrust is the gyro noise alone and each sample's velocity is its own noise's."""
+    scene = rd.Scene([rd.RigidBody(1.0, [1.0, 1.0, 1.0])], elements=[rd.ScheduledLoads(body=0, loads=[])],
+                     body_names=["sat"])
+    law = lambda state: {0: (float(state.w_B[0, 0]), 0.0, 0.0)}  # noqa: E731
+    return scene, rd.Controller(0.1, law, w_B_noise=0.01)
+
+
+def test_monte_carlo_under_a_controller_draws_each_runs_noise_seed_from_its_seed():
+    """Each sample is simulate of its drawn state under the controller with its own seed
+    (inputs["controller.seed"], bit for bit); the seeds depend on (seed, i) only (a run of 6 samples starts with
+    the 4 of a run of 4) and leave the dispersion draws as they are without a controller; the noise differs
+    between samples (the velocities differ)."""
+    scene, controller = noisy_thrust_scene()
+    nominal = [rd.RigidBodyState()]
+    dispersions = {"sat.p_W": rd.dispersion.Normal(std=1.0)}
+    run = dict(seed=5, dt=0.05, steps=20, dispersions=dispersions, error=False)
+    mc = rd.monte_carlo(scene, nominal, 4, controller=controller, **run)
+    seeds = mc.inputs["controller.seed"]
+    for i in range(4):
+        one = rd.simulate(scene, [rd.RigidBodyState(p_W=mc.inputs["sat.p_W"][i])], 0.05, 20, error=False,
+                          controller=rd.Controller(0.1, controller.law, w_B_noise=0.01, seed=int(seeds[i])))
+        np.testing.assert_array_equal(mc.values("v_W")[i], one.v_W)
+        np.testing.assert_array_equal(mc.values("p_W")[i], one.p_W)
+    longer = rd.monte_carlo(scene, nominal, 6, controller=controller, **run)
+    np.testing.assert_array_equal(longer.inputs["controller.seed"][:4], seeds)
+    plain = rd.monte_carlo(scene, nominal, 4, **run)
+    np.testing.assert_array_equal(plain.inputs["sat.p_W"], mc.inputs["sat.p_W"])
+    v_end = mc.values("v_W")[:, -1, 0, 0]
+    assert len(set(v_end.tolist())) == 4 and np.abs(v_end).min() > 0.0
+
+
+def test_monte_carlo_refuses_a_controller_it_cannot_run():
+    scene, controller = noisy_thrust_scene()
+    run = dict(seed=1, dt=0.1, steps=2, controller=controller)
+    with pytest.raises(ValueError, match=r"error: expected False with a controller"):
+        rd.monte_carlo(scene, [rd.RigidBodyState()], 2, **run)
+    with pytest.raises(ValueError, match=r"threads: expected None with a controller"):
+        rd.monte_carlo(scene, [rd.RigidBodyState()], 2, threads=2, error=False, **run)
+    with pytest.raises(ValueError, match=r"controller: expected None for a RigidBody model"):
+        rd.monte_carlo(rd.RigidBody(1.0, [1.0, 1.0, 1.0]), rd.RigidBodyState(), 2, error=False, **run)
+    with pytest.raises(TypeError, match=r"controller: expected a rigiddyn.Controller or None"):
+        rd.monte_carlo(scene, [rd.RigidBodyState()], 2, seed=1, dt=0.1, steps=2, error=False, controller=len)

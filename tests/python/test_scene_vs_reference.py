@@ -88,8 +88,14 @@ def random_elements(rng, kind, bodies):
     if kind == "AtmosphericDrag":  # a planet of radius 2 m 4 m away, air turning with it: ≲ 5 N
         air = dict(density0=rng.uniform(0.5, 2.0), altitude0=1.0, scale_height=2.0, radius=2.0, p_W=far,
                    omega_W=rng.uniform(-0.3, 0.3, 3), drag_area=rng.uniform(0.1, 1.0))
+        # a table of 4 rows over the bodies' altitudes (about 1 to 3 m) and below and above them, densities
+        # falling irregularly: bodies in its bands and beyond its outermost rows
+        table = dict(density0=0.0, scale_height=0.0, radius=2.0, p_W=far, omega_W=air["omega_W"],
+                     drag_area=air["drag_area"], table_altitude=np.sort(rng.uniform(0.5, 3.0, 4)),
+                     table_density=np.exp(-np.cumsum(rng.uniform(0.1, 1.0, 4))))
         return [ref.Element(kind, dict(air, cp_B=np.zeros(3), bodies=None)),
-                ref.Element(kind, dict(air, cp_B=rng.uniform(-0.5, 0.5, 3), bodies=[2, 3]))]
+                ref.Element(kind, dict(air, cp_B=rng.uniform(-0.5, 0.5, 3), bodies=[2, 3])),
+                ref.Element(kind, dict(table, cp_B=rng.uniform(-0.5, 0.5, 3), bodies=[2, 3]))]
     if kind == "SolarRadiationPressure":  # a turning Sun, P A ≲ 2 N: a cannonball, a plate on the rigid bodies and
         # a planet of radius 1.5 m at the origin whose shadow may cover some bodies
         sun = dict(sun_W=rng.normal(size=3), sun_rate_W=rng.uniform(-1, 1, 3), pressure=rng.uniform(0.5, 1.0),

@@ -46,7 +46,9 @@ SceneSimulation simulate(const CompiledScene& compiled, const std::vector<BodySt
   const Eigen::VectorXd y0 = model.coordinates(states, o.t0);
   const std::vector<AppliedLoad> schedule =
       detail::with_sample_times(compiled.switch_schedule(), controller.period, o.t0, detail::grid_time(o, o.steps));
-  detail::ControlRun control(controller, o, y0, model.element_count(), model.wheel_count());
+  std::vector<std::string> element_types;
+  for (const Element& element : compiled.scene().elements) element_types.push_back(element_type_name(element));
+  detail::ControlRun control(controller, o, y0, std::move(element_types), model.wheel_count());
   SceneSimulation out = detail::reserved_scene_simulation(o.steps, o.record_every, model.body_count(),
                                                           model.element_count(), model.wheel_count());
   return visit_method(o.method, [&](auto integrator) {

@@ -216,16 +216,26 @@ def zonal_gravity(bodies, kin, t, gm, radius, j2=0.0, j3=0.0, j4=0.0, p_W=(0.0, 
     return _effect(f_W, tau_B, kin, potential)
 
 
-def atmospheric_drag(bodies, kin, t, density0, scale_height, radius, drag_area, altitude0=0.0, p_W=(0.0, 0.0, 0.0),
-                     omega_W=(0.0, 0.0, 0.0), cp_B=(0.0, 0.0, 0.0), bodies_acted=None) -> Effect:
-    """Drag of an exponential atmosphere turning at omega_W (Vallado §8.6.2): at r = p − p_W, altitude |r| − R,
-    ρ = ρ0 exp(−(h − h0)/H), the air's velocity omega_W × r, and f = −½ ρ C_D A |v_rel| v_rel applied at the centre
-    of pressure: its moment cp_B × f about the centre of mass (f in B)."""
+def atmospheric_drag(bodies, kin, t, radius, drag_area, density0=0.0, scale_height=0.0, altitude0=0.0,
+                     p_W=(0.0, 0.0, 0.0), omega_W=(0.0, 0.0, 0.0), cp_B=(0.0, 0.0, 0.0), bodies_acted=None,
+                     table_altitude=(), table_density=()) -> Effect:
+    """Drag of an atmosphere turning at omega_W (Vallado §8.6.2): at r = p − p_W, altitude h = |r| − radius,
+    ρ = ρ0 exp(−(h − h0)/H), or from a table of rows (h_i, ρ_i): the log-density interpolated linearly in h
+    between rows and extended from the outermost bands beyond them (Vallado, Table 8-4); the air's velocity
+    omega_W × r, and f = −½ ρ C_D A |v_rel| v_rel applied at the centre of pressure: its moment cp_B × f about the
+    centre of mass (f in B)."""
     f_W, tau_B = _zeros(bodies)
     omega_W, cp_B = np.asarray(omega_W, float), np.asarray(cp_B, float)
+    h_table, log_rho = np.asarray(table_altitude, float), np.log(np.asarray(table_density, float))
     for i in _acting(bodies, bodies_acted):
         r_W = kin[i].p_W - np.asarray(p_W, float)
-        rho = density0 * np.exp(-(np.linalg.norm(r_W) - radius - altitude0) / scale_height)
+        h = np.linalg.norm(r_W) - radius
+        if h_table.size:
+            band = int(np.clip(np.searchsorted(h_table, h, side="right") - 1, 0, h_table.size - 2))
+            h_a, h_b = h_table[band], h_table[band + 1]
+            rho = np.exp(log_rho[band] + (log_rho[band + 1] - log_rho[band]) * (h - h_a) / (h_b - h_a))
+        else:
+            rho = density0 * np.exp(-(h - altitude0) / scale_height)
         v_rel = kin[i].v_W - np.cross(omega_W, r_W)
         f_W[i] = -0.5 * rho * drag_area * np.linalg.norm(v_rel) * v_rel
         tau_B[i] = np.cross(cp_B, to_body(kin[i].q_WB, f_W[i]))

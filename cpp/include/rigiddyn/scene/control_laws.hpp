@@ -56,7 +56,7 @@ class BDotLaw {
       last_ = std::make_pair(s.t, B_B);
     }
     const Eigen::Vector3d m_B = (-gain_ * B_dot).cwiseMax(-m_max_).cwiseMin(m_max_);
-    return {{}, {{element_, m_B}}};
+    return {{}, {{element_, m_B}}, {}};
   }
 
  private:
@@ -90,7 +90,7 @@ class PDAttitudeLaw {
     const Eigen::Vector3d tau_B =
         -k_p_ * error(detail::sampled_attitude(s.q_WB, body_), q_t) - k_d_ * detail::sampled_row(s.w_B, body_);
     const Eigen::VectorXd u = P_ * tau_B;
-    return {std::vector<double>(u.data(), u.data() + u.size()), {}};
+    return {std::vector<double>(u.data(), u.data() + u.size()), {}, {}};
   }
 
  private:

@@ -3,7 +3,10 @@
 // constant until the next sample (a zero-order hold):
 //   gyrostat wheels    the motor torques u_k [N m] (scene/kinds/gyrostat_slot.hpp);
 //   MagneticDipole     the dipole m_B [A m²] in B (a magnetorquer, scene/elements/magnetic_dipole.hpp);
-//   ScheduledLoads     the force f_B [N] in B at its point_B (a thruster, scene/elements/scheduled_loads.hpp).
+//   ScheduledLoads     the force f_B [N] in B at its point_B (a thruster, scene/elements/scheduled_loads.hpp);
+//   ReactionWheel      the speed Ω_c [rad/s] relative to the body (scene/elements/reaction_wheel.hpp): a
+//                      rate-limited speed loop, the wheel ramping at a constant rate from its speed at t_k to Ω_c
+//                      at t_k + period (ḣ = J (Ω_c − Ω(t_k))/period over the period), then holding Ω_c.
 // The sample times are switch times of the run loop (simulate/run_loop.hpp): a step that contains one is split
 // there, so that no step straddles a sample and every method keeps its order (the inputs are constant over each
 // sub-step, as between the switch times of a ScheduledLoads). A commanded actuator takes its command instead of
@@ -23,6 +26,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rigiddyn {
@@ -42,11 +46,20 @@ struct ElementCommand {
   Eigen::Vector3d value = Eigen::Vector3d::Zero();
 };
 
+// A speed command to the ReactionWheel of index `element`: its speed Ω_c [rad/s] relative to the body, reached at
+// the next sample.
+struct SpeedCommand {
+  int element = 0;
+  double speed = 0.0;
+};
+
 // What a law returns: the motor torques [N m] of every gyrostat wheel in the scene's order (the order of
-// SceneSimulation::wheel_speed; empty: held), and the commanded elements (the others hold their last command).
+// SceneSimulation::wheel_speed; empty: held), the commanded elements (the others hold their last command) and the
+// commanded ReactionWheel speeds (the others keep their last ramp's end speed, or their own ramp).
 struct ActuatorCommands {
   std::vector<double> wheel_torque;
   std::vector<ElementCommand> elements;
+  std::vector<SpeedCommand> speeds;
 };
 
 using ControlLaw = std::function<ActuatorCommands(const SampledState&)>;
@@ -60,7 +73,7 @@ struct Controller {
 // simulate (scene/simulate_scene.hpp) under `controller`, always on the scene's generic model (SceneModel).
 // Throws std::invalid_argument naming "controller.period" (not positive and finite), "controller.law" (empty)
 // and, at a sample, "controller.law(t=...)" for a command of the wrong size, a non-finite value, or an element
-// that takes no command; an exception the law throws stops the run and propagates.
+// that takes no such command (named with its type); an exception the law throws stops the run and propagates.
 SceneSimulation simulate(const CompiledScene& compiled, const std::vector<BodyState>& initial,
                          const SimulationOptions& options, const Controller& controller);
 
@@ -76,15 +89,17 @@ std::vector<AppliedLoad> with_sample_times(std::vector<AppliedLoad> schedule, do
 // The state of a controlled run (mutated between steps, never inside one): the next sample, the commands held.
 class ControlRun {
  public:
-  ControlRun(const Controller& controller, const SimulationOptions& o, const Eigen::VectorXd& y0, std::size_t elements,
-             std::size_t wheels)
-      : controller_(controller), t0_(o.t0), dt_(o.dt), y_(&y0), held_(elements), wheels_(wheels) {}
+  // `element_types`: each element's type name (element_type_name), for the messages.
+  ControlRun(const Controller& controller, const SimulationOptions& o, const Eigen::VectorXd& y0,
+             std::vector<std::string> element_types, std::size_t wheels)
+      : controller_(controller), t0_(o.t0), dt_(o.dt), y_(&y0), held_(element_types.size()),
+        element_types_(std::move(element_types)), wheels_(wheels) {}
 
   // The run's coordinates after a (sub-)step: read at the next sample.
   void follow(const Eigen::VectorXd& y) { y_ = &y; }
 
-  // The piece that starts at t [s]: the model's own pieces (set_time), a sample when t is the next sample time,
-  // then the commands held.
+  // The piece that starts at t [s]: the model's own pieces (set_time), a sample when t is the next sample time
+  // (a wheel's speed command starts its ramp there), then the commands held.
   template <class Model>
   void piece(Model& model, double t) {
     model.set_time(t);
@@ -95,7 +110,12 @@ class ControlRun {
       model.record(*y_, t_k, scratch_);
       SampledState s{t_k, std::move(scratch_.p_W), std::move(scratch_.q_WB), std::move(scratch_.v_W),
                      std::move(scratch_.w_B), std::move(scratch_.wheel_speed)};
-      hold(controller_.law(s), t_k, [&](std::size_t e) { return model.takes_command(e); });
+      const ActuatorCommands c = controller_.law(s);
+      hold(c, t_k, [&](std::size_t e) { return model.takes_command(e); });
+      for (const SpeedCommand& command : checked_speeds(c, t_k, [&](std::size_t e) { return model.takes_speed(e); })) {
+        const double t_next = t0_ + static_cast<double>(k_) * controller_.period;  // the next sample's time
+        model.command_speed(static_cast<std::size_t>(command.element), command.speed, t_k, t_next, t);
+      }
     }
     if (!wheel_torque_.empty()) model.command_wheel_torques(wheel_torque_);
     for (std::size_t e = 0; e < held_.size(); ++e) {
@@ -126,12 +146,33 @@ class ControlRun {
       }
       if (!takes_command(static_cast<std::size_t>(command.element))) {
         throw std::invalid_argument(name + ": expected a MagneticDipole or a ScheduledLoads (the elements that take "
-                                           "a command), got element " + std::to_string(command.element));
+                                           "a (3,) command), got element " + element_named(command.element));
       }
       require_finite(command.value, name);
       held_[command.element] = command.value;
     }
   }
+
+  // The speed commands returned at t_k, checked: each to a ReactionWheel (takes_speed), finite.
+  template <class TakesSpeed>
+  const std::vector<SpeedCommand>& checked_speeds(const ActuatorCommands& c, double t_k, const TakesSpeed& takes_speed) {
+    for (const SpeedCommand& command : c.speeds) {
+      const std::string name = "controller.law(t=" + format_value(t_k) + ")[" + std::to_string(command.element) + "]";
+      if (command.element < 0 || static_cast<std::size_t>(command.element) >= held_.size()) {
+        throw std::invalid_argument(name + ": expected the index of an element in [0, " + std::to_string(held_.size()) +
+                                    "), got " + std::to_string(command.element));
+      }
+      if (!takes_speed(static_cast<std::size_t>(command.element))) {
+        throw std::invalid_argument(name + ": expected a ReactionWheel (the element that takes a speed command "
+                                           "[rad/s]), got element " + element_named(command.element));
+      }
+      if (!std::isfinite(command.speed)) throw_invalid(name, "a finite wheel speed [rad/s]", command.speed);
+    }
+    return c.speeds;
+  }
+
+  // "3 (a MagneticDipole)"
+  std::string element_named(int e) const { return std::to_string(e) + " (a " + element_types_[e] + ")"; }
 
   const Controller& controller_;
   double t0_, dt_;                                     // [s]
@@ -139,6 +180,7 @@ class ControlRun {
   const Eigen::VectorXd* y_;                           // the run's coordinates
   std::vector<double> wheel_torque_;                   // held motor torques [N m] (empty: none commanded)
   std::vector<std::optional<Eigen::Vector3d>> held_;   // each element's held command (none: never commanded)
+  std::vector<std::string> element_types_;             // each element's type name
   std::size_t wheels_;
   SceneSimulation scratch_;                            // the record a sample is read from
 };

@@ -11,13 +11,15 @@
 #include <tuple>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 namespace rigiddyn {
 
 // How a field's value is read, from its member type: scalar (double), vector (Eigen::Vector3d, shape
-// (3,)), bodies (BodyList: none, every body), body (int, a body index), loads (a schedule), frame
-// (Frame), callable (a function); optional_body is a body index or none (stored as −1).
-enum class FieldKind { scalar, vector, bodies, body, optional_body, loads, frame, callable };
+// (3,)), array (std::vector<double>, shape (n,), a table's column), bodies (BodyList: none, every body), body
+// (int, a body index), loads (a schedule), frame (Frame), callable (a function); optional_body is a body index
+// or none (stored as −1).
+enum class FieldKind { scalar, vector, array, bodies, body, optional_body, loads, frame, callable };
 
 // The bound a scalar field's value must satisfy (besides being finite).
 enum class FieldBound { any, nonnegative, positive };
@@ -56,7 +58,8 @@ struct ElementField {
   }
 };
 
-// A scalar [unit], a (3,) vector [unit], the bodies it acts on, one body, a body or none.
+// A scalar [unit], a (3,) vector [unit], an (n,) array [unit] (each entry finite), the bodies it acts on, one
+// body, a body or none.
 template <class Spec>
 constexpr ElementField<Spec, double> scalar_field(const char* key, double Spec::*member, const char* unit, const char* doc) {
   return {key, member, FieldKind::scalar, unit, doc};
@@ -65,6 +68,11 @@ template <class Spec>
 constexpr ElementField<Spec, Eigen::Vector3d> vector_field(const char* key, Eigen::Vector3d Spec::*member, const char* unit,
                                                            const char* doc) {
   return {key, member, FieldKind::vector, unit, doc};
+}
+template <class Spec>
+constexpr ElementField<Spec, std::vector<double>> array_field(const char* key, std::vector<double> Spec::*member,
+                                                              const char* unit, const char* doc) {
+  return {key, member, FieldKind::array, unit, doc};
 }
 template <class Spec>
 constexpr ElementField<Spec, BodyList> bodies_field(BodyList Spec::*member,

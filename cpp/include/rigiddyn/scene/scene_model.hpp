@@ -84,6 +84,13 @@ struct has_command : std::false_type {};
 template <class Term>
 struct has_command<Term, std::void_t<decltype(std::declval<Term&>().command(Eigen::Vector3d()))>> : std::true_type {};
 
+// Whether a term takes a controller's speed command (command_speed: ReactionWheel; scene/controller.hpp).
+template <class Term, class = void>
+struct has_speed_command : std::false_type {};
+template <class Term>
+struct has_speed_command<Term, std::void_t<decltype(std::declval<Term&>().command_speed(0.0, 0.0, 0.0, 0.0))>>
+    : std::true_type {};
+
 // Whether a body's slot records coordinates of its own (record_internal: the gyrostat's wheel speeds).
 template <class Slot, class = void>
 struct has_internal_record : std::false_type {};
@@ -189,6 +196,21 @@ class BasicSceneModel {
     std::visit(
         [&](auto& term) {
           if constexpr (detail::has_command<std::decay_t<decltype(term)>>::value) term.command(value);
+        },
+        terms_[e]);
+  }
+  // A ReactionWheel's speed command (takes_speed): from its speed at t_k [s] to `speed` [rad/s] at t_next [s], at a
+  // constant rate; the piece that starts at t [s] set (command_speed of reaction_wheel.hpp).
+  bool takes_speed(std::size_t e) const {
+    return std::visit([](const auto& term) { return detail::has_speed_command<std::decay_t<decltype(term)>>::value; },
+                      terms_[e]);
+  }
+  void command_speed(std::size_t e, double speed, double t_k, double t_next, double t) {
+    std::visit(
+        [&](auto& term) {
+          if constexpr (detail::has_speed_command<std::decay_t<decltype(term)>>::value) {
+            term.command_speed(speed, t_k, t_next, t);
+          }
         },
         terms_[e]);
   }

@@ -10,6 +10,8 @@
 // at a load's switch times. Its power on the body is tau_B·ω_B = −ḣ_B·ω_B (the term −ω × h does no work):
 // at a constant wheel speed the body's kinetic energy ½ ωᵀ I ω and the total angular momentum R_WB (I ω + h_B)
 // are conserved. No force, no potential. Rigid bodies, free or pinned; particles and planar bodies refused.
+// A controller may command its speed Ω_c at a sample t_k (scene/controller.hpp): the ramp is then replaced by
+// the one from Ω(t_k) to Ω_c over [t_k, t_next), t_next the next sample (a rate-limited speed loop, ḣ finite).
 #pragma once
 #include "rigiddyn/check.hpp"
 #include "rigiddyn/models/loads.hpp"
@@ -41,7 +43,9 @@ struct ReactionWheel {
       "= -w_B x h_B - dh_B/dt [N m] of Euler's equation of the gyrostat, I dw/dt + w x (I w + h) = tau - dh/dt. "
       "A run splits its steps at t_start and t_end. At a constant wheel speed the body's kinetic energy and "
       "the total angular momentum R (I w + h) are conserved; spinning the wheel up about a principal axis turns "
-      "the body by -J/I times the wheel's angle. Rigid bodies, free or pinned.";
+      "the body by -J/I times the wheel's angle. A rigiddyn.Controller may command its speed (a rate-limited "
+      "speed loop: from its speed at a sample to the commanded one at the next, at a constant rate). Rigid bodies, "
+      "free or pinned.";
   static constexpr const char* example = R"py(A wheel (J = 0.1 kg m²) spun up to 1 rad/s about z turns a body (I = 1 kg m², wheel included) the other way at
 J/I × 1 rad/s, so that the total angular momentum stays zero:
 
@@ -127,6 +131,14 @@ class ReactionWheelTerm {
   // The piece of the run that starts at t [s] (the run loop calls it at t0 and at each switch time): the
   // ramp's rate inside [t_start, t_end), 0 outside, held over the piece.
   void set_time(double t) { rate_ = t >= t_start_ && t < t_end_ ? acceleration_ : 0.0; }
+
+  // A controller's speed command at the sample t_k [s]: Ω ramps from Ω(t_k) to `speed` [rad/s] at t_next [s]
+  // (> t_k) at a constant rate, then holds it; the piece that starts at t [s] (≈ t_k) is set.
+  void command_speed(double speed, double t_k, double t_next, double t) {
+    const double from = speed_at(t_k);
+    speed_ = from, acceleration_ = (speed - from) / (t_next - t_k), t_start_ = t_k, t_end_ = t_next;
+    set_time(t);
+  }
 
   // The wheel's speed relative to the body at t [rad/s].
   double speed_at(double t) const { return speed_ + acceleration_ * (std::clamp(t, t_start_, t_end_) - t_start_); }

@@ -1,0 +1,62 @@
+"""The samples of a Monte Carlo run under a digital controller (rigiddyn.monte_carlo's ``controller``): each
+sample is one rigiddyn.simulate of its drawn scene and states under its own copy of the controller, whose gyro
+noise draws from a seed of its own, a function of (seed, i) only; the records stacked as simulate_batch stacks
+them (arrays (N, n_records, ...)).
+"""
+
+from __future__ import annotations
+
+import copy
+from collections.abc import Callable, Sequence
+from typing import Any
+
+import numpy as np
+
+from . import _core
+from .control import Controller
+
+_SEED_BOUND = 2**63  # a sample's controller seed is drawn in [0, 2^63)
+
+
+class StackedRuns:
+    """The records of N scene runs of equal length, each field an array (N, n_records, ...) as a
+    BatchSceneResult's (`fields`: the names stacked); no global error estimate (error is None: a controlled run
+    has none)."""
+
+    error = None
+    t: np.ndarray  # (N, n_records) record times [s], as every field set by __init__
+
+    def __init__(self, runs: Sequence[Any], fields: Sequence[str]) -> None:
+        self.fields = tuple(f for f in fields if hasattr(runs[0], f))
+        for f in self.fields:
+            stacked = np.stack([np.asarray(getattr(r, f)) for r in runs])
+            stacked.flags.writeable = False
+            setattr(self, f, stacked)
+        self.body_names = tuple(runs[0].body_names)
+
+    def __repr__(self) -> str:
+        return f"StackedRuns(n={len(self.t)}, records={self.t.shape[1]})"
+
+
+def controller_seeds(seeds: np.random.SeedSequence, n: int) -> np.ndarray:
+    """(n,) the controllers' noise seeds: sample i's drawn from SeedSequence(entropy, spawn_key + (i, 0)), a
+    grandchild of the sample's own SeedSequence (independent of its dispersion draws, a function of (seed, i))."""
+    return np.array([np.random.default_rng(np.random.SeedSequence(seeds.entropy, spawn_key=(*seeds.spawn_key, i, 0)))
+                     .integers(_SEED_BOUND) for i in range(n)], dtype=np.int64)
+
+
+def run_samples(models: Any, initial: Sequence[Any], dt: Any, steps: int, controller: Controller,
+                seeds: np.ndarray, options: dict[str, Any], fields: Sequence[str],
+                progress: Callable[[int], Any] | None) -> StackedRuns:
+    """Sample i run by rigiddyn.simulate (`models`: one Scene or CompiledScene for all, or a list of one per
+    sample) under a copy of `controller` (its law deep-copied: a law's memory, as BDot's last sample, starts
+    afresh) with seed seeds[i]; progress(samples_done) after each."""
+    runs = []
+    for i, states in enumerate(initial):
+        model = models[i] if isinstance(models, list) else models
+        own = Controller(controller.period, copy.deepcopy(controller.law), w_B_noise=controller.w_B_noise,
+                         seed=int(seeds[i]))
+        runs.append(_core.simulate(model, states, dt, steps, controller=own, error=False, **options))
+        if progress is not None:
+            progress(i + 1)
+    return StackedRuns(runs, fields)
