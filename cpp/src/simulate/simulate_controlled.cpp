@@ -1,6 +1,6 @@
-// simulate under a controller (scene/controller.hpp): the run loop of simulate_scene.cpp on the scene's generic
-// model, its Pieces policy sampling the law at the sample times. Its own translation unit: it instantiates every
-// method's loop once more, built in parallel with the others.
+// simulate under a controller (scene/controller.hpp): the generic model's run of simulate_scene.cpp
+// (detail::run_generic_scene, compiled there once for every method), its pieces set by the controlled run's hooks,
+// which sample the law at the sample times.
 #include "rigiddyn/scene/controller.hpp"
 
 #include "rigiddyn/check.hpp"
@@ -49,12 +49,7 @@ SceneSimulation simulate(const CompiledScene& compiled, const std::vector<BodySt
   std::vector<std::string> element_types;
   for (const Element& element : compiled.scene().elements) element_types.push_back(element_type_name(element));
   detail::ControlRun control(controller, o, y0, std::move(element_types), model.wheel_count());
-  SceneSimulation out = detail::reserved_scene_simulation(o.steps, o.record_every, model.body_count(),
-                                                          model.element_count(), model.wheel_count());
-  return visit_method(o.method, [&](auto integrator) {
-    return detail::run<decltype(integrator)>(model, y0, o, detail::ControlledPieces{schedule, model.time_index(), &control},
-                                             std::move(out));
-  });
+  return detail::run_generic_scene(model, y0, o, schedule, &control);
 }
 
 }  // namespace rigiddyn

@@ -154,6 +154,11 @@ SceneSimulation one_body_simulation(const CompiledScene& compiled, const std::ve
 
 }  // namespace
 
+SceneSimulation detail::run_generic_scene(const SceneModel& model, const Eigen::VectorXd& y, const SimulationOptions& o,
+                                          const std::vector<AppliedLoad>& switch_schedule, RunHooks* hooks) {
+  return run_scene(model, y, o, switch_schedule, hooks);
+}
+
 SceneSimulation simulate(const CompiledScene& compiled, const std::vector<BodyState>& initial, const SimulationOptions& o) {
   const std::vector<BodyState> states =
       detail::checked_scene_input(compiled.scene(), compiled.method(), initial, o, true, "initial");
@@ -163,7 +168,7 @@ SceneSimulation simulate(const CompiledScene& compiled, const std::vector<BodySt
       [&](const auto& fast) {
         if constexpr (std::is_same_v<std::decay_t<decltype(fast)>, std::monostate>) {
           const SceneModel& model = compiled.model();
-          return detail::run_scene(model, model.coordinates(states, o.t0), o, compiled.switch_schedule());
+          return detail::run_generic_scene(model, model.coordinates(states, o.t0), o, compiled.switch_schedule(), nullptr);
         } else {
           return detail::run_scene(fast, fast.coordinates(states, o.t0), o, compiled.switch_schedule());
         }

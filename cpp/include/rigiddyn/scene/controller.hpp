@@ -16,6 +16,7 @@
 #include "rigiddyn/models/loads.hpp"
 #include "rigiddyn/scene/compile.hpp"
 #include "rigiddyn/scene/scene_simulation.hpp"
+#include "rigiddyn/scene/simulate_scene.hpp"
 #include "rigiddyn/simulate/run_loop.hpp"
 
 #include <Eigen/Core>
@@ -86,8 +87,9 @@ void check_controller(const Controller& controller);
 // switch times then include the samples (the loads are never applied, only their times read).
 std::vector<AppliedLoad> with_sample_times(std::vector<AppliedLoad> schedule, double period, double t0, double t_end);
 
-// The state of a controlled run (mutated between steps, never inside one): the next sample, the commands held.
-class ControlRun {
+// The state of a controlled run (mutated between steps, never inside one): the next sample, the commands held; the
+// hooks of the generic model's run (simulate_scene.hpp).
+class ControlRun final : public RunHooks {
  public:
   // `element_types`: each element's type name (element_type_name), for the messages.
   ControlRun(const Controller& controller, const SimulationOptions& o, const Eigen::VectorXd& y0,
@@ -96,12 +98,11 @@ class ControlRun {
         element_types_(std::move(element_types)), wheels_(wheels) {}
 
   // The run's coordinates after a (sub-)step: read at the next sample.
-  void follow(const Eigen::VectorXd& y) { y_ = &y; }
+  void follow(const Eigen::VectorXd& y) override { y_ = &y; }
 
   // The piece that starts at t [s]: the model's own pieces (set_time), a sample when t is the next sample time
   // (a wheel's speed command starts its ramp there), then the commands held.
-  template <class Model>
-  void piece(Model& model, double t) {
+  void piece(SceneModel& model, double t) override {
     model.set_time(t);
     const double t_k = t0_ + static_cast<double>(k_) * controller_.period;
     if (t >= t_k - on_grid_tolerance(t_k, dt_)) {
@@ -183,20 +184,6 @@ class ControlRun {
   std::vector<std::string> element_types_;             // each element's type name
   std::size_t wheels_;
   SceneSimulation scratch_;                            // the record a sample is read from
-};
-
-// The Pieces policy of run_loop.hpp for a controlled scene run: the scene's and the samples' switch times,
-// y's t set after each (sub-)step, which is where the next sample reads the state.
-struct ControlledPieces {
-  const std::vector<AppliedLoad>& schedule;
-  Eigen::Index time_index;
-  ControlRun* control;
-  template <class Model>
-  void set_piece(Model& model, double t) const { control->piece(model, t); }
-  void at_time(Eigen::VectorXd& y, double t) const {
-    y[time_index] = t;
-    control->follow(y);
-  }
 };
 
 }  // namespace detail

@@ -15,6 +15,7 @@
 #include "rigiddyn/simulate/simulate.hpp"
 
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 namespace rigiddyn {
@@ -57,15 +58,38 @@ void append_state(SceneSimulation& out, double t, const Model& model, const type
 
 namespace detail {
 
+// What a controlled run (scene/controller.hpp) adds to a run of the generic model: the pieces it sets itself (a
+// sample and the commands held) and the coordinates it follows. Called at the pieces and after each step, never
+// inside one, so that the controlled run shares the plain run's compiled loop.
+class RunHooks {
+ public:
+  virtual void piece(SceneModel& model, double t) = 0;  // instead of model.set_time(t)
+  virtual void follow(const Eigen::VectorXd& y) = 0;     // the run's coordinates after a (sub-)step
+
+ protected:
+  ~RunHooks() = default;
+};
+
 // The scene's Pieces policy for run_loop.hpp: switch times from every ScheduledLoads element, the
-// pieces set by the model (set_time), y's t set after each step.
+// pieces set by the model (set_time) or by the hooks of a controlled run, y's t set after each step.
 struct ScenePieces {
   const std::vector<AppliedLoad>& schedule;
   Eigen::Index time_index;
+  RunHooks* hooks = nullptr;  // a controlled run's (the generic model only), or none
   template <class Model>
-  void set_piece(Model& model, double t) const { model.set_time(t); }
+  void set_piece(Model& model, double t) const {
+    if constexpr (std::is_same_v<Model, SceneModel>) {
+      if (hooks != nullptr) return hooks->piece(model, t);
+    }
+    model.set_time(t);
+  }
   template <class Coordinates>
-  void at_time(Coordinates& y, double t) const { y[time_index] = t; }
+  void at_time(Coordinates& y, double t) const {
+    y[time_index] = t;
+    if constexpr (std::is_same_v<Coordinates, Eigen::VectorXd>) {
+      if (hooks != nullptr) hooks->follow(y);
+    }
+  }
 };
 
 // The checks of simulate/step on the options and the initial states (see simulate above); returns the
@@ -88,17 +112,23 @@ struct records_wheels<Model, std::void_t<decltype(std::declval<const Model&>().w
 // naming `steps`/`dt`): std::invalid_argument when a body runs out of mass within the run.
 void check_masses_over_run(const Scene& scene, const SimulationOptions& options, std::int64_t steps);
 
-// run_loop.hpp's run of options.method on `model` (SceneModel or a fast model: any Coordinates) from y.
+// run_loop.hpp's run of options.method on `model` (SceneModel or a fast model: any Coordinates) from y, with a
+// controlled run's hooks (the generic model only) or none.
 template <class Model>
 SceneSimulation run_scene(const Model& model, const typename Model::Coordinates& y, const SimulationOptions& o,
-                          const std::vector<AppliedLoad>& switch_schedule) {
+                          const std::vector<AppliedLoad>& switch_schedule, RunHooks* hooks = nullptr) {
   std::size_t wheels = 0;
   if constexpr (records_wheels<Model>::value) wheels = model.wheel_count();
   SceneSimulation out = reserved_scene_simulation(o.steps, o.record_every, model.body_count(), model.element_count(), wheels);
   return visit_method(o.method, [&](auto integrator) {
-    return run<decltype(integrator)>(model, y, o, ScenePieces{switch_schedule, model.time_index()}, std::move(out));
+    return run<decltype(integrator)>(model, y, o, ScenePieces{switch_schedule, model.time_index(), hooks}, std::move(out));
   });
 }
+
+// run_scene on the scene's generic model, compiled once for every method (simulate_scene.cpp): the plain and the
+// controlled runs share it.
+SceneSimulation run_generic_scene(const SceneModel& model, const Eigen::VectorXd& y, const SimulationOptions& o,
+                                  const std::vector<AppliedLoad>& switch_schedule, RunHooks* hooks);
 
 }  // namespace detail
 
