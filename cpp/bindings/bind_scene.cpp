@@ -779,17 +779,21 @@ void check_bdot_element(py::handle law, const Scene& scene) {
 // The C++ Controller of a rigiddyn.Controller (rigiddyn/control.py, which checks the law's commands) on `scene`: its
 // period, and a shipped law in C++ (shipped_law: without gyro noise) or a law that takes the GIL and calls its
 // _sample(t, p_W, q_WB, v_W, w_B, wheel_speed) -> (wheel_torque or None, [(element, value (3,) or a speed
-// [rad/s] as a float), ...]). The Python object outlives the run (the caller holds it).
-Controller as_controller(py::handle controller, const Scene& scene) {
+// [rad/s] as a float), ...]). The Python object outlives the run (the caller holds it). *shipped: whether the law
+// runs in C++ (a copy of the Controller taken before a run then starts another run afresh: the law's state, a
+// B-dot's last field, is in the copy).
+Controller as_controller(py::handle controller, const Scene& scene, bool* shipped) {
   if (!py::isinstance(controller, py::module_::import("rigiddyn.control").attr("Controller"))) {
     py_io::throw_type_error("controller", "a rigiddyn.Controller or None", controller);
   }
   check_bdot_element(controller.attr("law"), scene);
   Controller out;
   out.period = py_io::as_scalar(controller.attr("period"), "controller.period");
+  *shipped = false;
   if (controller.attr("w_B_noise").cast<double>() == 0.0) {
     if (std::optional<ControlLaw> law = shipped_law(controller.attr("law"), scene)) {
       out.law = std::move(*law);
+      *shipped = true;
       return out;
     }
   }
@@ -839,8 +843,9 @@ py::object simulate_scene_py(py::handle model, py::handle initial, py::handle dt
   const CompiledSceneHandle h = compiled_for(model, method);
   o.method = h.method;
   const std::vector<BodyState> initial_states = as_scene_states(initial, h.scene, "initial");
+  bool shipped_law = false;
   const std::optional<Controller> control =
-      controller.is_none() ? std::nullopt : std::optional<Controller>(as_controller(controller, h.scene));
+      controller.is_none() ? std::nullopt : std::optional<Controller>(as_controller(controller, h.scene, &shipped_law));
   if (tolerance_given) {
     const auto a = as_tolerance_args(to.tolerance, to.measure, to.max_steps, dt, steps, duration, error,
                                      default_scene_measure(h.scene));
@@ -852,10 +857,16 @@ py::object simulate_scene_py(py::handle model, py::handle initial, py::handle dt
   std::optional<GlobalErrorEstimate> estimate;
   {
     py::gil_scoped_release release;  // a PythonForce takes it back for each of its calls
+    const std::optional<Controller> pristine = control;  // the law's state before the run (a shipped law's)
     r = control ? simulate(*h.compiled, initial_states, o, *control) : simulate(*h.compiled, initial_states, o);
-    // at the order the compiled scene has (scene_order.hpp); none for a controlled run (its law would be sampled again)
-    if (estimate_error && !r.interrupted && !control) {
-      const auto run = [&](const SimulationOptions& coarse) { return simulate(*h.compiled, initial_states, coarse); };
+    // at the order the compiled scene has (scene_order.hpp); a controlled run only with a law in C++, each coarse run
+    // under a fresh copy of it (a law in Python may keep state or draw noise that another run would not repeat)
+    if (estimate_error && !r.interrupted && (!control || shipped_law)) {
+      const auto run = [&](const SimulationOptions& coarse) {
+        if (!control) return simulate(*h.compiled, initial_states, coarse);
+        const Controller fresh = *pristine;
+        return simulate(*h.compiled, initial_states, coarse, fresh);
+      };
       estimate = global_error(r, o, scene_order(*h.compiled), interruptible(run, r.interrupted), opaque_force(*h.compiled));
     }
   }

@@ -20,8 +20,8 @@ _SEED_BOUND = 2**63  # a sample's controller seed is drawn in [0, 2^63)
 
 class StackedRuns:
     """The records of N scene runs of equal length, each field an array (N, n_records, ...) as a
-    BatchSceneResult's (`fields`: the names stacked); no global error estimate (error is None: a controlled run
-    has none)."""
+    BatchSceneResult's (`fields`: the names stacked); no global error estimate (error is None: the samples
+    run without one)."""
 
     error = None
     t: np.ndarray  # (N, n_records) record times [s], as every field set by __init__

@@ -798,7 +798,7 @@ def _check_memory(n: int, steps: int, record_every: int, model: Any, error: bool
 
 def _check_controlled(model: Any, controller: Any, client: Any, threads: Any, error: bool) -> None:
     """What monte_carlo's controller needs: a Controller on a scene, run here (no client, no threads), without
-    the error estimate (a controlled run has none)."""
+    the error estimate (the samples run one by one through simulate, without one)."""
     from .control import Controller
 
     if not isinstance(controller, Controller):
@@ -811,7 +811,7 @@ def _check_controlled(model: Any, controller: Any, client: Any, threads: Any, er
             raise ValueError(f"{name}: expected None with a controller (its samples run one after the other through "
                              f"simulate), got {value!r}")
     if error:
-        raise ValueError("error: expected False with a controller (a controlled run has no global error estimate), "
+        raise ValueError("error: expected False with a controller (its samples run without a global error estimate), "
                          "got True")
 
 
@@ -895,8 +895,8 @@ def monte_carlo(model: Any, nominal_state: Any, n: int, *, seed: Any,
     error : bool, default True
         Estimate the global error of every record of every sample (``result.error``, a GlobalError with a
         leading sample axis: ``simulate_batch``'s `error`, +0.75x the cost); its quantities are fields too
-        (``result.statistics("error.attitude")``). False: none. Not with a controller (a controlled run has no
-        estimate): give False.
+        (``result.statistics("error.attitude")``). False: none. Not with a controller (its samples run without
+        one): give False.
     controller : Controller, keyword-only, optional
         A digital controller (rigiddyn.Controller) of a scene's runs: each sample runs under its own copy (its law
         deep-copied), whose gyro noise draws from the seed ``result.inputs["controller.seed"][i]`` (N,), itself

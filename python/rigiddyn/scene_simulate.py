@@ -184,8 +184,7 @@ def _run_record(plan: _ScenePlan, result: Any, columns: list[str]) -> dict[str, 
 
 
 def _controller_record(file: SceneFile) -> dict[str, Any] | None:
-    """run.json's account of the file's [controller] (its table, in SI; None without one): a controlled run has no
-    global error estimate (it would sample the law again)."""
+    """run.json's account of the file's [controller] (its table, in SI; None without one)."""
     from ._controller_table import controller_table
     from .scene_file import _body_names
 

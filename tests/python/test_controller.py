@@ -132,6 +132,33 @@ def test_rk4_keeps_order_four_under_a_controller():
         assert 16 * 0.85 < coarse / fine < 16 * 1.15, errors
 
 
+def test_a_run_under_a_law_in_cpp_estimates_its_error_and_one_in_python_does_not():
+    """The PD slew above at dt = 0.025 s carries its global error estimate (Richardson with the runs at 2h and 4h,
+    each under a fresh copy of the law): the step ratio 16 holds within 15 % up to 4h = 0.1 s (the test above), so
+    the estimate is the true error (against the run at 0.1/64 s, whose own error is 16^4 times smaller) to within
+    that, where the truncation error dominates the round-off (1e-14 over these 320 steps): at the record of the
+    largest error, mid-slew (about 8e-13 rad). Asserted within a factor 2, the effectivity the estimator promises on
+    reliable records. A law in Python (which may keep state or draw noise) gets no estimate: result.error is None."""
+    sat = sat_with_wheels()
+    axis = np.array([1.0, 2.0, 2.0]) / 3.0
+    initial = rd.GyrostatState(q_WB=np.append(math.sin(0.3) * axis, math.cos(0.3)), w_B=(0.01, -0.02, 0.015),
+                               wheel_speeds=[0.0, 0.0, 0.0])
+
+    def run(dt, law, error):
+        return rd.simulate(sat, initial, dt, duration=8.0, method="rk4", error=error, record_every=round(0.4 / dt),
+                           controller=rd.Controller(0.3, law))
+
+    law = PDAttitude(2.0, 6.0, np.eye(3))
+    r, reference = run(0.025, law, True), run(0.1 / 64, law, False)
+    attitude = np.array([rd.angular_distance(q, q_ref) for q, q_ref in zip(r.q_WB[:, 0], reference.q_WB[:, 0])])
+    rate = np.linalg.norm(r.w_B[:, 0] - reference.w_B[:, 0], axis=1)
+    for estimate, true in ((r.error.attitude[:, 0], attitude), (r.error.angular_velocity[:, 0], rate)):
+        i = np.argmax(true)
+        assert r.error.reliable[i]
+        assert 0.5 < estimate[i] / true[i] < 2.0, (r.t[i], estimate[i], true[i])
+    assert run(0.1, lambda state: {}, True).error is None
+
+
 # B-dot on a sphere of inertia I in a uniform field B along z, w0 normal to B, held every T seconds
 BDOT_I, BDOT_B, BDOT_K, BDOT_T = 0.1, 3e-5, 1e6, 0.5
 BDOT_W0 = np.array([0.03, -0.04, 0.0])
@@ -548,8 +575,9 @@ def test_a_law_in_python_cannot_be_written_to_a_file():
 
 def test_the_cli_runs_a_scene_under_its_controller(tmp_path, capsys):
     """python -m rigiddyn simulate cubesat_pointing: the run is the one rd.simulate makes under the file's
-    controller (the same records bit for bit), run.json records the [controller], and the summary gives the
-    energy balance (the commands change the elements: no energy is conserved)."""
+    controller (the same records bit for bit), run.json records the [controller] and the run's global error
+    estimate (its law runs in C++), and the summary gives the energy balance (the commands change the elements: no
+    energy is conserved)."""
     import json
 
     from rigiddyn.__main__ import main
@@ -559,7 +587,7 @@ def test_the_cli_runs_a_scene_under_its_controller(tmp_path, capsys):
                  "--out", str(out)]) == 0
     assert "energy balance T(t) - T(0) - W(t)" in capsys.readouterr().out
     record = json.loads((out / "run.json").read_text())
-    assert record["controller"]["law"] == "pd_attitude" and record["global error"] is None
+    assert record["controller"]["law"] == "pd_attitude" and record["global error"]["order"] == 4
     scene, initial, run = rd.load_scene("cubesat_pointing")
     want = rd.simulate(scene, initial, run.dt, duration=30.0, record_every=run.record_every, controller=run.controller)
     got = np.load(out / "trajectory.npz")
