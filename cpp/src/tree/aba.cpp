@@ -2,10 +2,32 @@
 
 #include <Eigen/Cholesky>
 
+#include "rigiddyn/so3/skew.hpp"
 #include "rigiddyn/tree/forward_kinematics.hpp"
 #include "rigiddyn/tree/rnea.hpp"
 
 namespace rigiddyn {
+
+namespace {
+
+// I_λ += X* M X*ᵀ for a symmetric 6x6 M = [[A, B], [Bᵀ, C]] (an articulated inertia, angular first) and the force
+// transform X* = [[R, p̂ R], [0, R]] of X = (R, p): with A' = R A Rᵀ, B' = R B Rᵀ, C' = R C Rᵀ and T = [[1, p̂], [0, 1]],
+// X* M X*ᵀ = T [[A', B'], [B'ᵀ, C']] Tᵀ = [[A' + p̂ B'ᵀ − B' p̂ − p̂ C' p̂, B' + p̂ C'], [(B' + p̂ C')ᵀ, C']]
+// (p̂ᵀ = −p̂), about 300 flops against the 432 of the dense triple product
+void add_transformed(const Transform& X, const Matrix6d& M, Matrix6d& I_parent) {
+  const Eigen::Matrix3d& R = X.rotation();
+  const Eigen::Matrix3d p_hat = hat(X.translation());
+  const Eigen::Matrix3d A = R * M.topLeftCorner<3, 3>() * R.transpose();
+  const Eigen::Matrix3d B = R * M.topRightCorner<3, 3>() * R.transpose();
+  const Eigen::Matrix3d C = R * M.bottomRightCorner<3, 3>() * R.transpose();
+  const Eigen::Matrix3d top_right = B + p_hat * C;
+  I_parent.topLeftCorner<3, 3>().noalias() += A + p_hat * B.transpose() - top_right * p_hat;
+  I_parent.topRightCorner<3, 3>() += top_right;
+  I_parent.bottomLeftCorner<3, 3>() += top_right.transpose();
+  I_parent.bottomRightCorner<3, 3>() += C;
+}
+
+}  // namespace
 
 const Eigen::VectorXd& aba(const Tree& tree, const Eigen::Ref<const Eigen::VectorXd>& q,
                            const Eigen::Ref<const Eigen::VectorXd>& v, const Eigen::Ref<const Eigen::VectorXd>& tau,
@@ -42,8 +64,7 @@ const Eigen::VectorXd& aba(const Tree& tree, const Eigen::Ref<const Eigen::Vecto
     const Matrix6d I_a = ws.I_C[i] - ws.U[i] * ws.D_inv[i] * ws.U[i].transpose();
     const Vector6d p_a = ws.f[i].to_vector() + I_a * ws.c[i].to_vector() + ws.U[i] * (ws.D_inv[i] * ws.u[i]);
     // I^A_λ += X_λi* I^a X_λi^-1 (= X* I^a X*^T),  p^A_λ += X_λi* p^a
-    const Matrix6d X_star = ws.X_up[i].force_matrix();
-    ws.I_C[link.parent].noalias() += X_star * I_a * X_star.transpose();
+    add_transformed(ws.X_up[i], I_a, ws.I_C[link.parent]);
     ws.f[link.parent] += ws.X_up[i].act(Force::from_vector(p_a));
   }
   // pass 3: the accelerations, root to leaves (a_0 = -a_g)
