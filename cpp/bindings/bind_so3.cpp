@@ -9,6 +9,7 @@
 // Angles are radians inside; `degrees=True` converts at this boundary (as SciPy, x * (pi/180) in and
 // x * (180/pi) out).
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <string>
 #include <type_traits>
@@ -69,9 +70,10 @@ inline void and_finite(bool& finite, const double* item, py::ssize_t size) {
 }
 
 // What the loops below check of each item they write: its entries finite (a non-finite one warns naming
-// the quantity), or nothing where the result is finite by construction (a polynomial or bounded map of
+// the quantity), what f returns (true where its item is finite: a test f has at hand, cheaper than reading
+// the entries back), or nothing where the result is finite by construction (a polynomial or bounded map of
 // unit quaternions checked on reading).
-enum class Written { checked_finite, finite_by_construction };
+enum class Written { checked_finite, checked_by_f, finite_by_construction };
 
 // out[i] = f(in[i]) over a stack: items of shape `in_shape` -> items of shape `out_shape`.
 // f(const double* in_item, double* out_item); EntryCheck::by_caller where f checks every entry it reads
@@ -85,8 +87,12 @@ Array map_unary(py::handle x, const char* name, const Shape& in_shape, const Sha
   const py::ssize_t a_size = item_size(in_shape), o_size = item_size(out_shape);
   bool finite = true;
   for_each_item(in.n, in.stacked, [&](py::ssize_t i) {
-    f(a + i * a_size, o + i * o_size);
-    if constexpr (written == Written::checked_finite) and_finite(finite, o + i * o_size, o_size);
+    if constexpr (written == Written::checked_by_f) {
+      finite &= f(a + i * a_size, o + i * o_size);
+    } else {
+      f(a + i * a_size, o + i * o_size);
+      if constexpr (written == Written::checked_finite) and_finite(finite, o + i * o_size, o_size);
+    }
   });
   if (!finite) py_io::finite_result(out, quantity);
   return out;
@@ -119,6 +125,12 @@ Array map_binary(py::handle x, const char* x_name, const Shape& x_shape, py::han
   });
   if (!finite) py_io::finite_result(out, quantity);
   return out;
+}
+
+// True iff the angle |r| of a finite rotation vector r is finite, the sum of squares of rotvec_to_quat (exp_log.hpp)
+// not overflowing (|r| < 1.3e154 rad): then its quaternion is finite (sin, cos and sin(θ/2)/θ bounded).
+inline bool finite_angle(const Eigen::Vector3d& r) {
+  return std::isfinite(r.x() * r.x() + r.y() * r.y() + r.z() * r.z());
 }
 
 // f(std::true_type{}) for scalar-first quaternions, f(std::false_type{}) otherwise: the layout a
@@ -453,8 +465,12 @@ void bind_so3(py::module_& m) {
       [](py::handle rotvec, py::handle scalar_first_arg, py::handle degrees) {
         const bool scalar_first = as_scalar_first(scalar_first_arg);
         const AngleUnit unit = as_angle_unit(degrees);
-        return map_unary(rotvec, "rotvec", vector3, quaternion, "rotvec_to_quat", [&](const double* in, double* out) {
-          py_io::write_quaternion(rotvec_to_quat(unit.to_radians * read_vector(in)), out, scalar_first);
+        return with_layout(scalar_first, [&](auto first) {
+          return map_unary<Written::checked_by_f>(rotvec, "rotvec", vector3, quaternion, "rotvec_to_quat", [&](const double* in, double* out) {
+            const Eigen::Vector3d r = unit.to_radians * read_vector(in);
+            write_quaternion_at<first>(rotvec_to_quat(r), out);
+            return finite_angle(r);
+          });
         });
       },
       "rotvec"_a, "scalar_first"_a = false, py::kw_only(), "degrees"_a = false,
@@ -548,8 +564,11 @@ void bind_so3(py::module_& m) {
       [](py::handle rotvec, py::handle degrees) {
         const AngleUnit unit = as_angle_unit(degrees);
         // rotvec_to_matrix(rotvec) = quat_to_matrix(rotvec_to_quat(rotvec)), its matrix written in place
-        return map_unary(rotvec, "rotvec", vector3, matrix3, "rotvec_to_matrix",
-                         [&](const double* in, double* out) { write_rotation_matrix(rotvec_to_quat(unit.to_radians * read_vector(in)), out); });
+        return map_unary<Written::checked_by_f>(rotvec, "rotvec", vector3, matrix3, "rotvec_to_matrix", [&](const double* in, double* out) {
+          const Eigen::Vector3d r = unit.to_radians * read_vector(in);
+          write_rotation_matrix(rotvec_to_quat(r), out);
+          return finite_angle(r);
+        });
       },
       "rotvec"_a, py::kw_only(), "degrees"_a = false,
       (std::string() +

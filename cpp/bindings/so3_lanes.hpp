@@ -1,9 +1,9 @@
-// Stacks of rotations a block of items at a time, one item per lane of a vector register: the block's entry c
-// of every item in one register (structure of arrays), so that a formula written once for T = double runs once
-// per block. Two paths (rigiddyn/vector_instructions.hpp): the portable one, 2 items per 128-bit register
-// (SSE2 on x86-64), and AVX2, 4 items per 256-bit register. Both evaluate the same expressions in the same
-// order, without fused multiply–add (the AVX2 path is compiled for "avx2" alone): their results are the same
-// bits.
+// Stacks of rotations a block of items at a time, one item per lane of a vector register: entry c of every item
+// of the block in one register (structure of arrays), so that a formula written once, for double or for lanes,
+// runs once per block. Two paths, chosen once per process (rigiddyn/vector_instructions.hpp): the portable one,
+// 2 items per 128-bit register (SSE2, the x86-64 baseline; one item at a time elsewhere), and where the CPU has
+// AVX2 and FMA, 4 items per 256-bit register. Both evaluate the same operations in the same order, the AVX2 one
+// compiled for "avx2" alone (no fused multiply–add): their results are the same bits.
 #pragma once
 #include <pybind11/pybind11.h>
 
@@ -38,7 +38,7 @@ struct Entries {
 };
 
 // A block's items lie one after the other in memory, size doubles each: entry c of item j at p[size * j + c].
-// Two items are 2 size doubles, read and written as size pairs of doubles, pair m at p + 2 m; entry c of item
+// Two items are 2 × size doubles, read and written as size pairs of doubles, pair m at p + 2 m; entry c of item
 // j is lane (size j + c) % 2 of pair (size j + c) / 2. The 256-bit registers hold the pairs of items 0, 1 in
 // their low half and those of items 2, 3 in their high half, which every shuffle below treats alike.
 #if defined(__SSE2__)
