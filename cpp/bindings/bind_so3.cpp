@@ -103,6 +103,7 @@ Array map_unary(py::handle x, const char* name, const Shape& in_shape, const Sha
 template <Written written = Written::checked_finite, typename F>
 Array map_binary(py::handle x, const char* x_name, const Shape& x_shape, py::handle y, const char* y_name,
                  const Shape& y_shape, const Shape& out_shape, const char* quantity, F f) {
+  static_assert(written != Written::checked_by_f, "checked_by_f: map_unary only");
   const Stack sx = py_io::as_stack(x, x_name, x_shape);
   const Stack sy = py_io::as_stack(y, y_name, y_shape);
   if (sx.stacked && sy.stacked && sx.n != sy.n) {
@@ -234,6 +235,7 @@ Array map_unit_quaternions(py::handle q, const std::string& name, const Shape& o
       [&](py::ssize_t i) RIGIDDYN_INLINE_KERNEL { item(unit_quaternion_at<ScalarFirst>(a + 4 * i, name), o + i * out_size); });
   return out;
 }
+
 // Writes q at out in the layout of unit_quaternion_at.
 template <bool ScalarFirst>
 RIGIDDYN_ALWAYS_INLINE void write_quaternion_at(const Eigen::Quaterniond& q, double* out) {
