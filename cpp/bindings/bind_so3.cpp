@@ -9,15 +9,18 @@
 // Angles are radians inside; `degrees=True` converts at this boundary (as SciPy, x * (pi/180) in and
 // x * (180/pi) out).
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "bindings.hpp"
 #include "common_args.hpp"
 #include "for_each_item.hpp"
 #include "numpy_io.hpp"
+#include "so3_lanes.hpp"
 #include "rigiddyn/always_inline.hpp"
 #include "rigiddyn/so3/axis_angle.hpp"
 #include "rigiddyn/so3/elementary.hpp"
@@ -67,23 +70,29 @@ inline void and_finite(bool& finite, const double* item, py::ssize_t size) {
 }
 
 // What the loops below check of each item they write: its entries finite (a non-finite one warns naming
-// the quantity), or nothing where the result is finite by construction (a polynomial or bounded map of
+// the quantity), what f returns (true where its item is finite: a test f has at hand, cheaper than reading
+// the entries back), or nothing where the result is finite by construction (a polynomial or bounded map of
 // unit quaternions checked on reading).
-enum class Written { checked_finite, finite_by_construction };
+enum class Written { checked_finite, checked_by_f, finite_by_construction };
 
 // out[i] = f(in[i]) over a stack: items of shape `in_shape` -> items of shape `out_shape`.
-// f(const double* in_item, double* out_item).
-template <Written written = Written::checked_finite, typename F>
+// f(const double* in_item, double* out_item); EntryCheck::by_caller where f checks every entry it reads
+// (unit_quaternion_at).
+template <Written written = Written::checked_finite, py_io::EntryCheck check = py_io::EntryCheck::all_finite, typename F>
 Array map_unary(py::handle x, const char* name, const Shape& in_shape, const Shape& out_shape, const char* quantity, F f) {
-  const Stack in = py_io::as_stack(x, name, in_shape);
+  const Stack in = py_io::as_stack(x, name, in_shape, check);
   Array out = py_io::new_stack(in.n, in.stacked, out_shape, quantity);
   const double* a = in.array.data();
   double* o = out.mutable_data();
   const py::ssize_t a_size = item_size(in_shape), o_size = item_size(out_shape);
   bool finite = true;
   for_each_item(in.n, in.stacked, [&](py::ssize_t i) {
-    f(a + i * a_size, o + i * o_size);
-    if constexpr (written == Written::checked_finite) and_finite(finite, o + i * o_size, o_size);
+    if constexpr (written == Written::checked_by_f) {
+      finite &= f(a + i * a_size, o + i * o_size);
+    } else {
+      f(a + i * a_size, o + i * o_size);
+      if constexpr (written == Written::checked_finite) and_finite(finite, o + i * o_size, o_size);
+    }
   });
   if (!finite) py_io::finite_result(out, quantity);
   return out;
@@ -94,6 +103,7 @@ Array map_unary(py::handle x, const char* name, const Shape& in_shape, const Sha
 template <Written written = Written::checked_finite, typename F>
 Array map_binary(py::handle x, const char* x_name, const Shape& x_shape, py::handle y, const char* y_name,
                  const Shape& y_shape, const Shape& out_shape, const char* quantity, F f) {
+  static_assert(written != Written::checked_by_f, "checked_by_f: map_unary only");
   const Stack sx = py_io::as_stack(x, x_name, x_shape);
   const Stack sy = py_io::as_stack(y, y_name, y_shape);
   if (sx.stacked && sy.stacked && sx.n != sy.n) {
@@ -116,6 +126,12 @@ Array map_binary(py::handle x, const char* x_name, const Shape& x_shape, py::han
   });
   if (!finite) py_io::finite_result(out, quantity);
   return out;
+}
+
+// True iff the angle |r| of a finite rotation vector r is finite, the sum of squares of rotvec_to_quat (exp_log.hpp)
+// not overflowing (|r| < 1.3e154 rad): then its quaternion is finite (sin, cos and sin(θ/2)/θ bounded).
+inline bool finite_angle(const Eigen::Vector3d& r) {
+  return std::isfinite(r.x() * r.x() + r.y() * r.y() + r.z() * r.z());
 }
 
 // f(std::true_type{}) for scalar-first quaternions, f(std::false_type{}) otherwise: the layout a
@@ -147,14 +163,9 @@ RIGIDDYN_ALWAYS_INLINE Eigen::Quaterniond unit_quaternion_at(const double* p, co
   return Eigen::Quaterniond(k * w, k * x, k * y, k * z);
 }
 
-// Items per block of the quaternion loops (map_unit_quaternions). A block is held one array per component
-// (structure of arrays), whose arithmetic Eigen runs as vector instructions.
-constexpr py::ssize_t block_size = 2;
-using Block = Eigen::Array<double, block_size, 1>;
-
 // The entries of R(q) of unit quaternions (x, y, z, w), row-major: set(k, R_k) for k = 0..8, the products of
-// Eigen's toRotationMatrix in the same order. T is double (one item) or Block (one entry of every item of a
-// block).
+// Eigen's toRotationMatrix in the same order. T is double (one item) or lanes (so3_lanes.hpp: entry k of
+// every item of a block).
 template <typename T, typename Set>
 RIGIDDYN_ALWAYS_INLINE void rotation_matrix_entries(const T& x, const T& y, const T& z, const T& w, Set set) {
   const T tx = 2.0 * x, ty = 2.0 * y, tz = 2.0 * z;
@@ -171,82 +182,57 @@ RIGIDDYN_ALWAYS_INLINE void write_rotation_matrix(const Eigen::Quaterniond& q, d
   rotation_matrix_entries(q.x(), q.y(), q.z(), q.w(), [out](int k, double value) { out[k] = value; });
 }
 
-// Unit quaternions of one block, q_j = (x[j], y[j], z[j], w[j]).
-struct QuaternionBlock {
-  Block x, y, z, w;
+// Unit quaternions of a block, q_j = (x[j], y[j], z[j], w[j]).
+template <typename T>
+struct Quaternions {
+  T x, y, z, w;
 };
 
-// The block_size items at p, entry `entry` of each (items of `size` doubles): a strided view of one column.
-template <int size>
-Eigen::Map<const Block, Eigen::Unaligned, Eigen::InnerStride<size>> column(const double* p, int entry) {
-  return Eigen::Map<const Block, Eigen::Unaligned, Eigen::InnerStride<size>>(p + entry);
-}
+// The lane type of a block's entries.
+template <typename E>
+using LanesOf = std::remove_cv_t<std::remove_reference_t<decltype(std::declval<E>().e[0])>>;
 
-// Reads the block_size items at p (layout as unit_quaternion_at) into q, normalised as unit_quaternion_at
-// does; false, q not written, when the |q|² of some item is outside [unit_norm2_low, unit_norm2_high]: the
-// caller then reads that block with unit_quaternion_at, which normalises such an item exactly or throws.
-template <bool ScalarFirst>
-RIGIDDYN_ALWAYS_INLINE bool read_unit_quaternions(const double* p, QuaternionBlock& q) {
-  const Block x = column<4>(p, ScalarFirst ? 1 : 0), y = column<4>(p, ScalarFirst ? 2 : 1);
-  const Block z = column<4>(p, ScalarFirst ? 3 : 2), w = column<4>(p, ScalarFirst ? 0 : 3);
-  const Block norm2 = (x * x + y * y) + (z * z + w * w);
-  if (!(norm2 >= unit_norm2_low && norm2 <= unit_norm2_high).all()) return false;
-  const Block e = 1.0 - norm2;
-  const Block k = 1.0 + e * (0.5 + e * (0.375 + e * 0.3125));
+// The quaternions of a block read in the layout of unit_quaternion_at, normalised as it does, in q; ok in the
+// lanes whose |q|² is inside [unit_norm2_low, unit_norm2_high] (the block of an item outside takes
+// unit_quaternion_at, which normalises such an item exactly or throws).
+template <bool ScalarFirst, typename T>
+RIGIDDYN_ALWAYS_INLINE void read_unit_quaternions(const Entries<T, 4>& in, Quaternions<T>& q, Mask<T>& ok) {
+  const T& x = in.e[ScalarFirst ? 1 : 0];
+  const T& y = in.e[ScalarFirst ? 2 : 1];
+  const T& z = in.e[ScalarFirst ? 3 : 2];
+  const T& w = in.e[ScalarFirst ? 0 : 3];
+  const T norm2 = (x * x + y * y) + (z * z + w * w);
+  ok = (norm2 >= unit_norm2_low) & (norm2 <= unit_norm2_high);
+  const T e = 1.0 - norm2;
+  const T k = 1.0 + e * (0.5 + e * (0.375 + e * 0.3125));
   q.x = k * x, q.y = k * y, q.z = k * z, q.w = k * w;
-  return true;
 }
 
-// Writes R(q_j) of the block's quaternions at out (block_size row-major matrices), an entry of every item at
-// a time.
-RIGIDDYN_ALWAYS_INLINE void write_rotation_matrices(const QuaternionBlock& q, double* out) {
-  rotation_matrix_entries(q.x, q.y, q.z, q.w, [out](int k, const Block& entry) {
-    Eigen::Map<Block, Eigen::Unaligned, Eigen::InnerStride<9>>(out + k) = entry;
-  });
+// Sets the quaternions (x, y, z, w) of a block in the layout of unit_quaternion_at.
+template <bool ScalarFirst, typename T>
+RIGIDDYN_ALWAYS_INLINE void set_quaternions(const T& x, const T& y, const T& z, const T& w, Entries<T, 4>& out) {
+  out.e[ScalarFirst ? 1 : 0] = x, out.e[ScalarFirst ? 2 : 1] = y, out.e[ScalarFirst ? 3 : 2] = z, out.e[ScalarFirst ? 0 : 3] = w;
 }
 
-// A column of the block_size items at out (items of `size` doubles, entry `entry` of each), to write.
-template <int size>
-Eigen::Map<Block, Eigen::Unaligned, Eigen::InnerStride<size>> column_out(double* out, int entry) {
-  return Eigen::Map<Block, Eigen::Unaligned, Eigen::InnerStride<size>>(out + entry);
-}
-
-// Writes the MRP p_j = v_j / (w_j + sign(w_j)) of the block's quaternions at out, as quat_to_mrp (mrp.hpp);
-// false, nothing written, when some w_j = 0 (a half turn, whose sign quat_to_mrp's tie rule picks).
-RIGIDDYN_ALWAYS_INLINE bool write_mrps(const QuaternionBlock& q, double* out) {
-  if ((q.w == 0.0).any()) return false;
-  const Block denominator = q.w + q.w.sign();
-  column_out<3>(out, 0) = q.x / denominator, column_out<3>(out, 1) = q.y / denominator, column_out<3>(out, 2) = q.z / denominator;
-  return true;
-}
-
-// Writes the inverses (conjugates) (-v_j, w_j) of the block's quaternions at out, in the layout of
-// unit_quaternion_at.
-template <bool ScalarFirst>
-RIGIDDYN_ALWAYS_INLINE void write_inverses(const QuaternionBlock& q, double* out) {
-  column_out<4>(out, ScalarFirst ? 1 : 0) = -q.x, column_out<4>(out, ScalarFirst ? 2 : 1) = -q.y;
-  column_out<4>(out, ScalarFirst ? 3 : 2) = -q.z, column_out<4>(out, ScalarFirst ? 0 : 3) = q.w;
-}
-
-// out[i] = f(q[i]) over a stack of unit quaternions q (layout as unit_quaternion_at), block_size items at a
-// time: block(q_block, out_block) writes the results of a block read by read_unit_quaternions and returns
-// true, or returns false for a block it does not take; item(q_i, out_i) writes the result of one item
-// (unit_quaternion_at), for such a block and for the last n % block_size items. The results are finite by
-// construction.
-template <bool ScalarFirst, typename Block, typename Item>
+// out[i] = f(q[i]) over a stack of unit quaternions q (layout as unit_quaternion_at), in blocks (map_blocks):
+// block(q_block, out_block, ok) writes the entries of the results of a block's quaternions, normalised by
+// read_unit_quaternions, and clears ok in a lane it does not take; item(q_i, out_i) writes the result of one
+// item (unit_quaternion_at), the same numbers. Every item's entries are checked by its norm (a non-finite one
+// fails it), without a pass of their own; the results are finite by construction.
+template <bool ScalarFirst, int out_size, typename Block, typename Item>
 Array map_unit_quaternions(py::handle q, const std::string& name, const Shape& out_shape, const char* quantity, Block block, Item item) {
-  const Stack in = py_io::as_stack(q, name, quaternion);
+  const Stack in = py_io::as_stack(q, name, quaternion, py_io::EntryCheck::by_caller);
   Array out = py_io::new_stack(in.n, in.stacked, out_shape, quantity);
   const double* a = in.array.data();
   double* o = out.mutable_data();
-  const py::ssize_t o_size = item_size(out_shape);
-  for_each_block<block_size>(
-      in.n, in.stacked,
-      [&](py::ssize_t i) RIGIDDYN_INLINE_KERNEL {
-        QuaternionBlock q_block;
-        return read_unit_quaternions<ScalarFirst>(a + 4 * i, q_block) && block(q_block, o + i * o_size);
+  map_blocks<4, out_size>(
+      a, o, in.n, in.stacked,
+      [&block](const auto& q_in, auto& result, auto& ok) RIGIDDYN_INLINE_KERNEL {
+        Quaternions<LanesOf<decltype(q_in)>> q_block;
+        read_unit_quaternions<ScalarFirst>(q_in, q_block, ok);
+        block(q_block, result, ok);
       },
-      [&](py::ssize_t i) RIGIDDYN_INLINE_KERNEL { item(unit_quaternion_at<ScalarFirst>(a + 4 * i, name), o + i * o_size); });
+      [&](py::ssize_t i) RIGIDDYN_INLINE_KERNEL { item(unit_quaternion_at<ScalarFirst>(a + 4 * i, name), o + i * out_size); });
   return out;
 }
 
@@ -386,11 +372,10 @@ void bind_so3(py::module_& m) {
         const bool scalar_first = as_scalar_first(scalar_first_arg);
         const std::string name = "q";
         return with_layout(scalar_first, [&](auto first) {
-          return map_unit_quaternions<first>(
+          return map_unit_quaternions<first, 9>(
               q, name, matrix3, "quat_to_matrix",
-              [](const QuaternionBlock& q_block, double* out) RIGIDDYN_INLINE_KERNEL {
-                write_rotation_matrices(q_block, out);
-                return true;
+              [](const auto& q_block, auto& R, auto&) RIGIDDYN_INLINE_KERNEL {
+                rotation_matrix_entries(q_block.x, q_block.y, q_block.z, q_block.w, [&R](int k, const auto& R_k) { R.e[k] = R_k; });
               },
               write_rotation_matrix);
         });
@@ -482,8 +467,12 @@ void bind_so3(py::module_& m) {
       [](py::handle rotvec, py::handle scalar_first_arg, py::handle degrees) {
         const bool scalar_first = as_scalar_first(scalar_first_arg);
         const AngleUnit unit = as_angle_unit(degrees);
-        return map_unary(rotvec, "rotvec", vector3, quaternion, "rotvec_to_quat", [&](const double* in, double* out) {
-          py_io::write_quaternion(rotvec_to_quat(unit.to_radians * read_vector(in)), out, scalar_first);
+        return with_layout(scalar_first, [&](auto first) {
+          return map_unary<Written::checked_by_f>(rotvec, "rotvec", vector3, quaternion, "rotvec_to_quat", [&](const double* in, double* out) {
+            const Eigen::Vector3d r = unit.to_radians * read_vector(in);
+            write_quaternion_at<first>(rotvec_to_quat(r), out);
+            return finite_angle(r);
+          });
         });
       },
       "rotvec"_a, "scalar_first"_a = false, py::kw_only(), "degrees"_a = false,
@@ -529,7 +518,7 @@ void bind_so3(py::module_& m) {
         const AngleUnit unit = as_angle_unit(degrees);
         const std::string name = "q";
         return with_layout(scalar_first, [&](auto first) {
-          return map_unary<Written::finite_by_construction>(q, "q", quaternion, vector3, "quat_to_rotvec", [&](const double* in, double* out) {
+          return map_unary<Written::finite_by_construction, py_io::EntryCheck::by_caller>(q, "q", quaternion, vector3, "quat_to_rotvec", [&](const double* in, double* out) {
             write_vector(quat_to_rotvec(unit_quaternion_at<first>(in, name)) * unit.from_radians, out);
           });
         });
@@ -577,8 +566,11 @@ void bind_so3(py::module_& m) {
       [](py::handle rotvec, py::handle degrees) {
         const AngleUnit unit = as_angle_unit(degrees);
         // rotvec_to_matrix(rotvec) = quat_to_matrix(rotvec_to_quat(rotvec)), its matrix written in place
-        return map_unary(rotvec, "rotvec", vector3, matrix3, "rotvec_to_matrix",
-                         [&](const double* in, double* out) { write_rotation_matrix(rotvec_to_quat(unit.to_radians * read_vector(in)), out); });
+        return map_unary<Written::checked_by_f>(rotvec, "rotvec", vector3, matrix3, "rotvec_to_matrix", [&](const double* in, double* out) {
+          const Eigen::Vector3d r = unit.to_radians * read_vector(in);
+          write_rotation_matrix(rotvec_to_quat(r), out);
+          return finite_angle(r);
+        });
       },
       "rotvec"_a, py::kw_only(), "degrees"_a = false,
       (std::string() +
@@ -827,7 +819,7 @@ void bind_so3(py::module_& m) {
         const std::string name = "q";
         GimbalLock worst = GimbalLock::none;
         Array angles = with_layout(scalar_first, [&](auto first) {
-          return map_unary<Written::finite_by_construction>(q, "q", quaternion, vector3, "quat_to_euler", [&](const double* in, double* out) {
+          return map_unary<Written::finite_by_construction, py_io::EntryCheck::by_caller>(q, "q", quaternion, vector3, "quat_to_euler", [&](const double* in, double* out) {
             GimbalLock lock;
             write_vector(quat_to_euler(s, unit_quaternion_at<first>(in, name), &lock) * unit.from_radians, out);
             worst = std::max(worst, lock);
@@ -1088,9 +1080,15 @@ void bind_so3(py::module_& m) {
         const bool scalar_first = as_scalar_first(scalar_first_arg);
         const std::string name = "q";
         return with_layout(scalar_first, [&](auto first) {
-          return map_unit_quaternions<first>(
+          return map_unit_quaternions<first, 3>(
               q, name, vector3, "quat_to_mrp",
-              [](const QuaternionBlock& q_block, double* out) RIGIDDYN_INLINE_KERNEL { return write_mrps(q_block, out); },
+              [](const auto& q_block, auto& p, auto& ok) RIGIDDYN_INLINE_KERNEL {
+                // p = v / (w + sign(w)) as quat_to_mrp (mrp.hpp); w = 0 (a half turn, whose sign its tie rule
+                // picks) left to it
+                ok &= q_block.w != 0.0;
+                const auto denominator = q_block.w + (q_block.w > 0.0 ? 1.0 : -1.0);
+                p.e[0] = q_block.x / denominator, p.e[1] = q_block.y / denominator, p.e[2] = q_block.z / denominator;
+              },
               [](const Eigen::Quaterniond& q_i, double* out) { write_vector(quat_to_mrp(q_i), out); });
         });
       },
@@ -1132,8 +1130,24 @@ void bind_so3(py::module_& m) {
       "mrp_to_quat",
       [](py::handle mrp, py::handle scalar_first_arg) {
         const bool scalar_first = as_scalar_first(scalar_first_arg);
-        return map_unary(mrp, "mrp", vector3, quaternion, "mrp_to_quat", [&](const double* in, double* out) {
-          py_io::write_quaternion(mrp_to_quat(read_vector(in)), out, scalar_first);
+        return with_layout(scalar_first, [&](auto first) {
+          const Stack in = py_io::as_stack(mrp, "mrp", vector3, py_io::EntryCheck::by_caller);
+          Array out = py_io::new_stack(in.n, in.stacked, quaternion, "mrp_to_quat");
+          const double* p = in.array.data();
+          double* o = out.mutable_data();
+          map_blocks<3, 4>(
+              p, o, in.n, in.stacked,
+              [first](const auto& p_block, auto& q, auto& ok) RIGIDDYN_INLINE_KERNEL {
+                // q = (2 p, 1 - |p|²) / (1 + |p|²) for |p| <= 1, as mrp_to_quat (mrp.hpp), which takes a block with
+                // some |p| > 1 or a non-finite p (and throws for it): finite by construction
+                const auto &x = p_block.e[0], &y = p_block.e[1], &z = p_block.e[2];
+                const auto n2 = (x * x + y * y) + z * z;
+                ok = n2 <= 1.0;
+                const auto s = 2.0 / (1.0 + n2);
+                set_quaternions<first>(s * x, s * y, s * z, (1.0 - n2) / (1.0 + n2), q);
+              },
+              [&](py::ssize_t i) RIGIDDYN_INLINE_KERNEL { write_quaternion_at<first>(mrp_to_quat(read_vector(p + 3 * i)), o + 4 * i); });
+          return out;
         });
       },
       "mrp"_a, "scalar_first"_a = false,
@@ -1342,11 +1356,10 @@ void bind_so3(py::module_& m) {
         const bool scalar_first = as_scalar_first(scalar_first_arg);
         const std::string name = "q";
         return with_layout(scalar_first, [&](auto first) {
-          return map_unit_quaternions<first>(
+          return map_unit_quaternions<first, 4>(
               q, name, quaternion, "quat_inverse",
-              [first](const QuaternionBlock& q_block, double* out) RIGIDDYN_INLINE_KERNEL {
-                write_inverses<first>(q_block, out);
-                return true;
+              [first](const auto& q_block, auto& q_inverse, auto&) RIGIDDYN_INLINE_KERNEL {
+                set_quaternions<first>(-q_block.x, -q_block.y, -q_block.z, q_block.w, q_inverse);
               },
               [first](const Eigen::Quaterniond& q_i, double* out) { write_quaternion_at<first>(quat_inverse(q_i), out); });
         });

@@ -1,9 +1,8 @@
-// The loops of the stacked bindings: one kernel call per item of a stack, without the GIL, or a block
-// of items per call where a kernel exists for a block.
+// The loops of the stacked bindings: one kernel call per item of a stack, without the GIL (blocks of items:
+// so3_lanes.hpp).
 #pragma once
 #include <pybind11/pybind11.h>
 
-#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -32,27 +31,6 @@ void for_each_item(pybind11::ssize_t n, bool stacked, Kernel kernel) {
   pybind11::ssize_t i = 0;
   try {
     for (; i < n; ++i) kernel(i);
-  } catch (const std::invalid_argument& e) {
-    if (!stacked) throw;
-    throw_for_item(e, i);
-  }
-}
-
-// As for_each_item, block_size items at a time: block(i) does the items [i, i + block_size) and returns
-// true, or returns false for a block it does not take (its writes, if any, are overwritten), and then
-// kernel(i) does that block's items one by one, as it does the last n % block_size items.
-template <pybind11::ssize_t block_size, typename Block, typename Kernel>
-void for_each_block(pybind11::ssize_t n, bool stacked, Block block, Kernel kernel) {
-  pybind11::gil_scoped_release release;
-  pybind11::ssize_t i = 0;
-  try {
-    while (i < n) {
-      if (n - i >= block_size && block(i)) {
-        i += block_size;
-        continue;
-      }
-      for (const pybind11::ssize_t end = std::min(n, i + block_size); i < end; ++i) kernel(i);
-    }
   } catch (const std::invalid_argument& e) {
     if (!stacked) throw;
     throw_for_item(e, i);

@@ -302,14 +302,14 @@ IndexArray as_index_array(py::handle obj, const std::string& name) {
   return contiguous<IndexArray>(raw, name);
 }
 
-Stack as_stack(py::handle obj, const std::string& name, const std::vector<py::ssize_t>& tail) {
+Stack as_stack(py::handle obj, const std::string& name, const std::vector<py::ssize_t>& tail, EntryCheck check) {
   Array a = as_array(obj, name);
   const auto t = static_cast<py::ssize_t>(tail.size());
   bool ok = (a.ndim() == t || a.ndim() == t + 1);
   const py::ssize_t offset = a.ndim() - t;
   for (py::ssize_t i = 0; ok && i < t; ++i) ok = a.shape(offset + i) == tail[static_cast<size_t>(i)];
   if (!ok) throw_value_error(name, "shape " + tail_string(tail, false) + " or " + tail_string(tail, true), shape_string(a));
-  require_all_finite(a, name);
+  if (check == EntryCheck::all_finite) require_all_finite(a, name);
   const bool stacked = offset == 1;
   return Stack{a, stacked ? a.shape(0) : 1, stacked};
 }

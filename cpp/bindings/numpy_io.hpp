@@ -132,14 +132,17 @@ Array as_array(py::handle obj, const std::string& name);
 IndexArray as_index_array(py::handle obj, const std::string& name);
 
 // A stack of items of shape `tail`: the array, n (1 if single) and whether it was stacked.
-// ValueError on a wrong shape or a non-finite entry.
+// ValueError on a wrong shape or, unless the caller checks every item itself (EntryCheck::by_caller:
+// no pass over the data here), a non-finite entry.
 struct Stack {
   Array array;
   py::ssize_t n;
   bool stacked;
   const double* item(py::ssize_t i, py::ssize_t item_size) const { return array.data() + i * item_size; }
 };
-Stack as_stack(py::handle obj, const std::string& name, const std::vector<py::ssize_t>& tail);
+enum class EntryCheck { all_finite, by_caller };
+Stack as_stack(py::handle obj, const std::string& name, const std::vector<py::ssize_t>& tail,
+               EntryCheck check = EntryCheck::all_finite);
 
 // A new array for n outputs of shape `tail`, stacked like the input (shape tail if !stacked).
 // MemoryError naming `name` when it does not fit in memory.

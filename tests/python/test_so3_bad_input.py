@@ -211,3 +211,11 @@ def test_bad_frame_raises():
 def test_from_scipy_rejects_non_rotations():
     with pytest.raises(TypeError, match=r"^rotation: expected a scipy.spatial.transform.Rotation, got ndarray"):
         rd.from_scipy(Q)
+
+
+@pytest.mark.parametrize("f", [rd.rotvec_to_quat, rd.rotvec_to_matrix], ids=lambda f: f.__name__)
+def test_rotation_vector_whose_angle_overflows_warns(f):
+    # |rotvec|^2 overflows beyond 1.3e154 rad: the angle is not finite, nor is the result
+    with pytest.warns(RuntimeWarning, match=rf"^{f.__name__}: expected a finite result"):
+        f(np.array([[0.1, 0.0, 0.0], [1e155, 0.0, 0.0]]))
+    assert np.isfinite(f(np.array([1e150, 0.0, 0.0]))).all()  # |rotvec|^2 = 1e300: no warning

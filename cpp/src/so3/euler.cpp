@@ -41,9 +41,13 @@ struct ProperAngles {
 // From q's coordinates in the frame (n1, n2, n1 × n2): a = w, b = v . n1, c = v . n2,
 // d = v . (n1 × n2), up to a common positive factor. Bernardes & Viollet (2022), Algorithm 2:
 // φ = 2 atan2(|(c, d)|, |(a, b)|), (θ1 + θ3)/2 = atan2(b, a), (θ3 - θ1)/2 = atan2(d, c), only
-// atan2, so accurate everywhere. At gimbal lock θ1 (zero_first) or θ3 is set to 0.
+// atan2, so accurate everywhere. At gimbal lock θ1 (zero_first) or θ3 is set to 0. |(c, d)| and |(a, b)| as
+// square roots, without std::hypot's scaling (which took a third of the time): a, b, c, d are at most 2 (sums of
+// two coordinates of a unit quaternion), so c² + d² cannot overflow, and where it underflows (|(c, d)| < 1e-154,
+// then |(a, b)| >= 1/2) φ moves by less than 1e-153 rad; elsewhere each norm is within a relative 1.5 u of the
+// exact one (u = 2^-53), which moves φ by at most 3 u rad.
 ProperAngles proper_angles(double a, double b, double c, double d, bool zero_first) {
-  const double phi = 2.0 * std::atan2(std::hypot(c, d), std::hypot(a, b));
+  const double phi = 2.0 * std::atan2(std::sqrt(c * c + d * d), std::sqrt(a * a + b * b));
   const double half_sum = std::atan2(b, a);
   const double half_diff = std::atan2(d, c);
   const double distance = std::min(phi, pi - phi);
