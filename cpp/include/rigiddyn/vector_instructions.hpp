@@ -1,6 +1,7 @@
-// The vector instructions the hot kernels run on (today the N-body pair sum of MutualGravity): the portable path,
-// built for the x86-64 baseline (SSE2) like the rest of the library, or AVX2 with FMA where the CPU has them
-// (four doubles per instruction, a fused multiply–add rounding once). The path is chosen once per process, at the
+// The vector instructions the hot kernels run on (the N-body pair sum of MutualGravity, and the rotation array
+// functions of the Python package in blocks of items: AVX2 without FMA there, so the same bits on both paths): the
+// portable path, built for the x86-64 baseline (SSE2) like the rest of the library, or AVX2 with FMA where the CPU
+// has them (four doubles per instruction, a fused multiply–add rounding once). The path is chosen once per process, at the
 // first call of a kernel; the environment variable RIGIDDYN_PORTABLE=1, read then, forces the portable path, whose
 // results are the same bits on every x86-64 machine (the AVX2 path agrees with it to the bound each kernel states).
 #pragma once
