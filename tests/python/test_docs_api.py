@@ -40,6 +40,8 @@ INTERNAL = {
     "_core_call": "the core's messages re-addressed to a file's fields (the file formats' messages state them)",
     "_mass_properties": "the body forms of problem and scene files (rigiddyn.problem and rigiddyn.scene_file list them)",
     "_load_table": "the load tables of problem and scene files (rigiddyn.problem and rigiddyn.scene_file list them)",
+    "_controlled_samples": "monte_carlo's samples under a controller (rigiddyn.dispersion.monte_carlo states them)",
+    "_controller_table": "the [controller] table of scene files (rigiddyn.scene_file and the spacecraft guide list it)",
 }
 
 _DIRECTIVE = re.compile(r"^\.\. (currentmodule|automodule|autosummary)::\s*(\S*)\s*$")
