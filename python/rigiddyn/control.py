@@ -152,10 +152,7 @@ class Controller:
         Seed of the noise's generator (numpy.random.default_rng(seed)); a run draws from where the last one
         stopped, so give a fresh Controller (or the same seed) to repeat a run.
 
-    Attributes
-    ----------
-    period, law, w_B_noise, seed
-        As given (period and w_B_noise as floats).
+    The arguments are kept as the attributes of the same names (``period`` and ``w_B_noise`` as floats).
 
     Raises
     ------
