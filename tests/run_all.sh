@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Installs everything rigiddyn's tests need, then runs every test: pytest (Python API against the
 # numpy reference, SciPy and exact solutions), ctest (the C++ unit tests under AddressSanitizer +
-# UndefinedBehaviorSanitizer; the bitwise golden states, the million-step runs, the find_package
-# packaging test and the benchmarks at a small size, optimised) and the documentation site (built with
+# UndefinedBehaviorSanitizer; the bitwise golden states, the million-step runs, the allocation counts, the
+# find_package packaging test and the benchmarks at a small size, optimised) and the documentation site (built with
 # warnings as errors, its gallery run, then checked in headless chromium: tests/docs/run.sh). Run from
 # the repository root:
 #   bash tests/run_all.sh
@@ -48,7 +48,7 @@ trap 'kill -- -"$sanitize_build" 2>/dev/null || true' EXIT
 # --dist loadgroup: the tests marked with one xdist_group share a worker, so a module's costly fixture runs once)
 python3 -m pytest -n auto --dist loadgroup -p no:benchmark
 
-# optimised: the golden states, the long runs, the packaging test, then the benchmarks at a small size,
+# optimised: the golden states, the long runs, the allocation counts, the packaging test, then the benchmarks at a small size,
 # one at a time (timings), and their rigiddyn/baseline ratios
 cmake --preset test
 cmake --build --preset test -j 2
