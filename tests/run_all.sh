@@ -48,8 +48,8 @@ trap 'kill -- -"$sanitize_build" 2>/dev/null || true' EXIT
 # --dist loadgroup: the tests marked with one xdist_group share a worker, so a module's costly fixture runs once)
 python3 -m pytest -n auto --dist loadgroup -p no:benchmark
 
-# optimised: the golden states, the long runs, the allocation counts, the packaging test, then the benchmarks at a small size,
-# one at a time (timings), and their rigiddyn/baseline ratios
+# optimised: the golden states, the long runs, the allocation counts, the packaging test, then the benchmarks at
+# a small size, one at a time (timings), and their rigiddyn/baseline ratios
 cmake --preset test
 cmake --build --preset test -j 2
 ctest --preset test -j 2 --label-exclude bench
