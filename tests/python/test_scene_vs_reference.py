@@ -88,10 +88,13 @@ def random_elements(rng, kind, bodies):
     if kind == "AtmosphericDrag":  # a planet of radius 2 m 4 m away, air turning with it: ≲ 5 N
         air = dict(density0=rng.uniform(0.5, 2.0), altitude0=1.0, scale_height=2.0, radius=2.0, p_W=far,
                    omega_W=rng.uniform(-0.3, 0.3, 3), drag_area=rng.uniform(0.1, 1.0))
-        # a table of 4 rows over the bodies' altitudes (about 1 to 3 m) and below and above them, densities
-        # falling irregularly: bodies in its bands and beyond its outermost rows
+        # a table of 4 rows 0.5 to 0.6 m apart over the bodies' altitudes (about 1 to 3 m), densities falling
+        # irregularly: bodies in its bands and beyond its outermost rows. Each band's scale height (its width over
+        # its fall of ln rho, at most 1) is then at least 0.5 m, so the bands extended beyond the table stay near
+        # their rows' densities over the bodies' altitudes (rows drawn anywhere could be 1e-3 m apart, and an
+        # extended band then grows like exp(h/1e-3): a random scene whose drag overflows in one step)
         table = dict(density0=0.0, scale_height=0.0, radius=2.0, p_W=far, omega_W=air["omega_W"],
-                     drag_area=air["drag_area"], table_altitude=np.sort(rng.uniform(0.5, 3.0, 4)),
+                     drag_area=air["drag_area"], table_altitude=1.0 + 0.5 * np.arange(4) + rng.uniform(0.0, 0.1, 4),
                      table_density=np.exp(-np.cumsum(rng.uniform(0.1, 1.0, 4))))
         return [ref.Element(kind, dict(air, cp_B=np.zeros(3), bodies=None)),
                 ref.Element(kind, dict(air, cp_B=rng.uniform(-0.5, 0.5, 3), bodies=[2, 3])),
