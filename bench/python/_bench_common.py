@@ -27,6 +27,17 @@ def best_time(fn, repeats=3):
     return best
 
 
+def per_call(fn, calls, rounds):
+    """The least time per call of fn() [s] over `rounds` loops of `calls` calls (the least disturbed)."""
+    best = float("inf")
+    for _ in range(rounds):
+        start = time.perf_counter()
+        for _ in range(calls):
+            fn()
+        best = min(best, (time.perf_counter() - start) / calls)
+    return best
+
+
 def report_ratio(case, n, t_rd, t_other, other):
     """Print 'ratio <case>/<n>: rigiddyn X ns/op, <other> Y ns/op, rigiddyn/<other> = R' for total
     times t_rd, t_other [s] over n operations."""

@@ -15,27 +15,15 @@ Prints one line per case with its time per call [us] and its ratio to the bare c
 "ratio ..." lines of the other benchmarks (bench/python/_bench_common.py).
 """
 
-import time
 
 import rigiddyn as rd
-from _bench_common import parse_small
+from _bench_common import parse_small, per_call
 from _bench_common import report_ratio as report
 
 BODY = rd.RigidBody(1.0, [1.0, 2.0, 3.0])
 STATE = rd.RigidBodyState(w_B=[0.1, 1.0, 0.1])
 DT = 0.01
 EXTRA_STEPS = 1000  # the steps added to measure the cost per step
-
-
-def per_call(fn, calls, rounds):
-    """The least time per call of fn() [s] over `rounds` loops of `calls` calls (the least disturbed)."""
-    best = float("inf")
-    for _ in range(rounds):
-        start = time.perf_counter()
-        for _ in range(calls):
-            fn()
-        best = min(best, (time.perf_counter() - start) / calls)
-    return best
 
 
 def mujoco_step():

@@ -25,29 +25,17 @@ prints rigiddyn's times only.
 """
 
 import importlib.util
-import time
 from pathlib import Path
 
 import numpy as np
 
 import rigiddyn as rd
-from _bench_common import parse_small, report_ratio
+from _bench_common import parse_small, per_call, report_ratio
 
 GRAVITY = [0.0, 0.0, -9.81]
 ROBOTS = {"ur5": ("ur_description/urdf/ur5_robot.urdf", False),
           "panda": ("panda_description/urdf/panda.urdf", False),
           "talos": ("talos_data/robots/talos_reduced.urdf", True)}
-
-
-def per_call(fn, calls, rounds):
-    """The least time per call of fn() [s] over `rounds` loops of `calls` calls (the least disturbed)."""
-    best = float("inf")
-    for _ in range(rounds):
-        start = time.perf_counter()
-        for _ in range(calls):
-            fn()
-        best = min(best, (time.perf_counter() - start) / calls)
-    return best
 
 
 def example_robot_data():

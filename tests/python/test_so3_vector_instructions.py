@@ -6,17 +6,11 @@ paths give the same bits; a bad item is named by its index on both."""
 
 from __future__ import annotations
 
-import json
-import os
 import platform
-import subprocess
-import sys
 
 import pytest
 
-import rigiddyn as rd
-
-PACKAGE_PARENT = os.path.dirname(os.path.dirname(os.path.abspath(rd.__file__)))  # not resolved: symlinks
+from test_vector_instructions import run_on_path
 
 # Each function on stacks of 1 to 13 items (blocks of 2 and 4 and every remainder), both quaternion layouts: the
 # stacked result and the results of its items one by one, as hex bytes; and the message of a stack with a NaN in
@@ -60,12 +54,7 @@ print(json.dumps({"path": rd.vector_instructions(), "results": results, "message
 
 
 def _run(portable: str | None) -> dict:
-    env = dict(os.environ, PYTHONPATH=os.pathsep.join([PACKAGE_PARENT, os.environ.get("PYTHONPATH", "")]))
-    env.pop("RIGIDDYN_PORTABLE", None)
-    if portable is not None:
-        env["RIGIDDYN_PORTABLE"] = portable
-    out = subprocess.run([sys.executable, "-c", RUN], env=env, capture_output=True, text=True, check=True)
-    return json.loads(out.stdout)
+    return run_on_path(RUN, portable)
 
 
 @pytest.fixture(scope="module")

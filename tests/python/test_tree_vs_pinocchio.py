@@ -17,23 +17,9 @@ import pytest
 
 import rigiddyn as rd
 from rigiddyn_ref import tree as ref
-from test_tree_vs_reference import GRAVITY, build, close, random_links, random_state
+from test_tree_vs_reference import GRAVITY, build, close, depth_first, random_links, random_state
 
 pin = pytest.importorskip("pinocchio")
-
-
-def depth_first(links):
-    """The link indices in depth-first order (children in index order)."""
-    order = []
-
-    def visit(i):
-        order.append(i)
-        for j, l in enumerate(links):
-            if l["parent"] == i:
-                visit(j)
-
-    visit(-1)
-    return order[1:]
 
 
 def pinocchio_model(links):

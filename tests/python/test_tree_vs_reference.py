@@ -56,6 +56,21 @@ def build(links, gravity):
     return tree
 
 
+def depth_first(links):
+    """The link indices (each link's "parent" an index, -1 the world) depth first from the root, children in index
+    order: the order of a URDF reader, and the one Pinocchio needs (each subtree's velocities contiguous)."""
+    order = []
+
+    def visit(i):
+        order.append(i)
+        for j, link in enumerate(links):
+            if link["parent"] == i:
+                visit(j)
+
+    visit(-1)
+    return order[1:]
+
+
 def random_state(rng, links):
     """(q, v, a) at random: angles in [-pi, pi], offsets in [-1, 1] m, unit quaternions, normal v and a."""
     q = []

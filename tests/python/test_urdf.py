@@ -17,7 +17,7 @@ import numpy as np
 import pytest
 
 import rigiddyn as rd
-from test_tree_vs_reference import RTOL, close
+from test_tree_vs_reference import RTOL, close, depth_first
 
 pytest.importorskip("yourdfpy")
 
@@ -90,20 +90,6 @@ def hand_built(links, floating_base=False):
 
 def random_state(rng, tree):
     return rng.uniform(-np.pi, np.pi, tree.nq), rng.normal(size=tree.nv), rng.normal(size=tree.nv)
-
-
-def depth_first(links):
-    """Link indices in the reader's order: depth first from the root, children in file order."""
-    order = []
-
-    def visit(i):
-        order.append(i)
-        for j, link in enumerate(links):
-            if link["parent"] == i:
-                visit(j)
-
-    visit(-1)
-    return order[1:]
 
 
 @pytest.mark.parametrize("seed", range(8))

@@ -32,13 +32,19 @@ print(json.dumps({"path": rd.vector_instructions(), "p_W": r.p_W[-1].tolist(), "
 """
 
 
-def _step(portable: str | None) -> dict:
+def run_on_path(script: str, portable: str | None) -> dict:
+    """The JSON `script` prints, run in a fresh process on this rigiddyn with RIGIDDYN_PORTABLE = `portable` (None:
+    unset), since the path is chosen once per process."""
     env = dict(os.environ, PYTHONPATH=os.pathsep.join([PACKAGE_PARENT, os.environ.get("PYTHONPATH", "")]))
     env.pop("RIGIDDYN_PORTABLE", None)
     if portable is not None:
         env["RIGIDDYN_PORTABLE"] = portable
-    out = subprocess.run([sys.executable, "-c", STEP], env=env, capture_output=True, text=True, check=True)
+    out = subprocess.run([sys.executable, "-c", script], env=env, capture_output=True, text=True, check=True)
     return json.loads(out.stdout)
+
+
+def _step(portable: str | None) -> dict:
+    return run_on_path(STEP, portable)
 
 
 def _cpu_has_avx2_fma() -> bool | None:

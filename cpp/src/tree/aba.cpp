@@ -11,7 +11,7 @@ namespace rigiddyn {
 namespace {
 
 // I_λ += X* M X*ᵀ for a symmetric 6x6 M = [[A, B], [Bᵀ, C]] (an articulated inertia, angular first) and the force
-// transform X* = [[R, p̂ R], [0, R]] of X = (R, p): with A' = R A Rᵀ, B' = R B Rᵀ, C' = R C Rᵀ and T = [[1, p̂], [0, 1]],
+// transform X* = [[R, p̂ R], [0, R]] of X = (R, p) (Featherstone, Rigid Body Dynamics Algorithms, §2.8), by blocks: with A' = R A Rᵀ, B' = R B Rᵀ, C' = R C Rᵀ and T = [[1, p̂], [0, 1]],
 // X* M X*ᵀ = T [[A', B'], [B'ᵀ, C']] Tᵀ = [[A' + p̂ B'ᵀ − B' p̂ − p̂ C' p̂, B' + p̂ C'], [(B' + p̂ C')ᵀ, C']]
 // (p̂ᵀ = −p̂), about 300 flops against the 432 of the dense triple product
 void add_transformed(const Transform& X, const Matrix6d& M, Matrix6d& I_parent) {

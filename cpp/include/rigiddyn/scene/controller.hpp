@@ -141,10 +141,7 @@ class ControlRun final : public RunHooks {
     }
     for (const ElementCommand& command : c.elements) {
       const std::string name = at + "[" + std::to_string(command.element) + "]";
-      if (command.element < 0 || static_cast<std::size_t>(command.element) >= held_.size()) {
-        throw std::invalid_argument(name + ": expected the index of an element in [0, " + std::to_string(held_.size()) +
-                                    "), got " + std::to_string(command.element));
-      }
+      check_element_index(command.element, name);
       if (!takes_command(static_cast<std::size_t>(command.element))) {
         throw std::invalid_argument(name + ": expected a MagneticDipole or a ScheduledLoads (the elements that take "
                                            "a (3,) command), got element " + element_named(command.element));
@@ -154,15 +151,20 @@ class ControlRun final : public RunHooks {
     }
   }
 
+  // Throws std::invalid_argument naming `name` unless `element` indexes an element of the scene.
+  void check_element_index(int element, const std::string& name) const {
+    if (element < 0 || static_cast<std::size_t>(element) >= held_.size()) {
+      throw std::invalid_argument(name + ": expected the index of an element in [0, " + std::to_string(held_.size()) +
+                                  "), got " + std::to_string(element));
+    }
+  }
+
   // The speed commands returned at t_k, checked: each to a ReactionWheel (takes_speed), finite.
   template <class TakesSpeed>
   const std::vector<SpeedCommand>& checked_speeds(const ActuatorCommands& c, double t_k, const TakesSpeed& takes_speed) {
     for (const SpeedCommand& command : c.speeds) {
       const std::string name = "controller.law(t=" + format_value(t_k) + ")[" + std::to_string(command.element) + "]";
-      if (command.element < 0 || static_cast<std::size_t>(command.element) >= held_.size()) {
-        throw std::invalid_argument(name + ": expected the index of an element in [0, " + std::to_string(held_.size()) +
-                                    "), got " + std::to_string(command.element));
-      }
+      check_element_index(command.element, name);
       if (!takes_speed(static_cast<std::size_t>(command.element))) {
         throw std::invalid_argument(name + ": expected a ReactionWheel (the element that takes a speed command "
                                            "[rad/s]), got element " + element_named(command.element));
