@@ -257,7 +257,8 @@ TEST(Thrust, ForceTorqueAndPowerOfTheExchangedMass) {
       spec.body = 1, spec.frame = frame, spec.u_rel = random_vector(rng, 300.0), spec.r_B = random_vector(rng, 0.5);
       const ThrustTerm term(spec, bodies, flows_on(2, 1, flow), "elements[0]");
       std::vector<BodyKinematics> k(2);
-      k[1].q_WB = random_rotation(rng), k[1].v_W = random_vector(rng, 10.0), k[1].w_B = random_vector(rng, 2.0), k[1].m = 1.5;
+      set_attitude(k[1], random_rotation(rng));
+      k[1].v_W = random_vector(rng, 10.0), k[1].w_B = random_vector(rng, 2.0), k[1].m = 1.5;
       std::vector<BodyWrench> w(2);
       w[1].f_W = Eigen::Vector3d(1.0, 2.0, 3.0);  // adds to what is there
       const double t = 3.0 * trial / 20.0, rate = -0.5 - 0.1 * t;

@@ -72,12 +72,13 @@ Kinematics random_kinematics(std::mt19937& rng) {
   for (int b = 0; b < 4; ++b) {
     k[b].p_W = base[b] + random_vector(rng, 0.3);
     k[b].v_W = random_vector(rng, 1.0);
-    k[b].q_WB = random_rotation(rng);
+    set_attitude(k[b], random_rotation(rng));
     k[b].w_B = random_vector(rng, 2.0);
   }
-  k[0].q_WB = Eigen::Quaterniond::Identity(), k[0].w_B.setZero();  // particle
+  set_attitude(k[0], Eigen::Quaterniond::Identity());  // particle
+  k[0].w_B.setZero();
   k[1].p_W.z() = 0.0, k[1].v_W.z() = 0.0, k[1].w_B.head<2>().setZero();  // planar
-  k[1].q_WB = Eigen::AngleAxisd(std::uniform_real_distribution<double>(-3, 3)(rng), Eigen::Vector3d::UnitZ());
+  set_attitude(k[1], Eigen::Quaterniond(Eigen::AngleAxisd(std::uniform_real_distribution<double>(-3, 3)(rng), Eigen::Vector3d::UnitZ())));
   const std::vector<Body> bodies = mixed_bodies();
   for (int b = 0; b < 4; ++b) k[b].m = mass_of(bodies[b]);  // the mass now, as the model sets it
   return k;
@@ -111,7 +112,7 @@ void expect_wrench_is_minus_gradient(const Term& term, const Kinematics& k) {
       EXPECT_NEAR(w[b].f_W[i], -(term.potential(plus) - term.potential(minus)) / (2 * h), tol) << "body " << b << " f_W[" << i << "]";
       const Eigen::Quaterniond turn(Eigen::AngleAxisd(h, Eigen::Vector3d::Unit(i)));
       plus = k, minus = k;
-      plus[b].q_WB = k[b].q_WB * turn, minus[b].q_WB = k[b].q_WB * turn.conjugate();
+      set_attitude(plus[b], k[b].q_WB * turn), set_attitude(minus[b], k[b].q_WB * turn.conjugate());
       EXPECT_NEAR(w[b].tau_B[i], -(term.potential(plus) - term.potential(minus)) / (2 * h), tol) << "body " << b << " tau_B[" << i << "]";
     }
   }
@@ -351,7 +352,8 @@ TEST(GravityGradient, ConservativeWithCorrectPower) {
   EXPECT_EQ(term.bodies(), (std::vector<int>{2, 3}));  // particles skipped
   for (int trial = 0; trial < 5; ++trial) {
     Kinematics k = random_kinematics(rng);
-    k[1].q_WB = Eigen::Quaterniond::Identity(), k[1].w_B.setZero();  // body 1 is a particle here
+    set_attitude(k[1], Eigen::Quaterniond::Identity());  // body 1 is a particle here
+    k[1].w_B.setZero();
     expect_wrench_is_minus_gradient(term, k);
     expect_power_matches(term, k);
     const Wrenches w = wrenches_of(term, k);
@@ -374,7 +376,7 @@ TEST(GravityGradient, PitchRestoringTorque) {
   for (const double theta : {1e-3, 0.3, -1.1}) {
     Kinematics k(1);
     k[0].p_W = Eigen::Vector3d(0, 0, radius);
-    k[0].q_WB = Eigen::AngleAxisd(theta, Eigen::Vector3d::UnitY());
+    set_attitude(k[0], Eigen::Quaterniond(Eigen::AngleAxisd(theta, Eigen::Vector3d::UnitY())));
     const Eigen::Vector3d tau = wrenches_of(term, k)[0].tau_B;
     const double expected = -1.5 * n2 * (Ix - Iz) * std::sin(2 * theta);
     // rounding: r_B to a few ulps of |r|, the products and r⁵ to ~16 ulps relative to 3 n² I_max
@@ -394,7 +396,8 @@ TEST(GravityGradient, SphereFeelsNothing) {
   const std::vector<Body> bodies = {RigidBody(2.0, Eigen::Matrix3d(0.8 * Eigen::Matrix3d::Identity()))};
   const GravityGradientTerm term(GravityGradient{3.0, kAttractor, {}}, bodies, kName);
   Kinematics k(1);
-  k[0].p_W = random_vector(rng, 1.0), k[0].q_WB = random_rotation(rng);
+  k[0].p_W = random_vector(rng, 1.0);
+  set_attitude(k[0], random_rotation(rng));
   const Wrenches w = wrenches_of(term, k);
   // tr I − 5 s/|r|² = −2i cancels 2 I_W r = 2i r: zero to rounding of terms of size 3GM·0.8·3/|r|⁴
   const double scale = 3.0 * 3.0 * 0.8 * 3.0 / std::pow((k[0].p_W - kAttractor).norm(), 4);
@@ -425,7 +428,7 @@ TEST(GravityGradient, MatchesExactAttractionOfPointMassCloud) {
   for (int trial = 0; trial < 5; ++trial) {
     Kinematics k(1);
     k[0].p_W = distance * random_vector(rng, 1.0).normalized();
-    k[0].q_WB = random_rotation(rng);
+    set_attitude(k[0], random_rotation(rng));
     k[0].m = mass;
     Eigen::Vector3d f_exact = Eigen::Vector3d::Zero(), tau_exact = Eigen::Vector3d::Zero();
     for (const auto& [m_k, rho_B] : points) {
@@ -492,7 +495,7 @@ TEST(MagneticDipole, CompassNeedleInAUniformField) {
   const MagneticDipoleTerm term(spec, {RigidBody(1.0, Eigen::Vector3d(1.0, 1.0, 1.0))}, kName);
   for (const double theta : {0.0, 0.3, -1.2, 2.9}) {
     Kinematics k(1);
-    k[0].q_WB = Eigen::AngleAxisd(theta, Eigen::Vector3d::UnitZ());
+    set_attitude(k[0], Eigen::Quaterniond(Eigen::AngleAxisd(theta, Eigen::Vector3d::UnitZ())));
     const Wrenches w = wrenches_of(term, k);
     EXPECT_TRUE(w[0].f_W.isZero(0.0));
     EXPECT_NEAR(w[0].tau_B.z(), -mu * B * std::sin(theta), 8 * kEps * mu * B);
@@ -570,7 +573,7 @@ TEST(SceneElementErrors, ReactionWheel) {
 TEST(SpringDamper, ClosedFormWithWorldAnchor) {
   const std::vector<Body> bodies = {RigidBody(1.0, Eigen::Vector3d(1, 1, 1))};
   Kinematics k(1);
-  k[0].q_WB = Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ());
+  set_attitude(k[0], Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ())));
   k[0].v_W = Eigen::Vector3d(0, 0, 1), k[0].w_B = Eigen::Vector3d(0, 0, 2);
   SpringDamper spec{0, Eigen::Vector3d(1, 0, 0), -1, Eigen::Vector3d(0, 1, 2), 3.0, 0.5, 0.7};
   // ℓ0 = 0.5: f = −(k (ℓ − ℓ0) + c ℓ̇) u = −(4.5 − 0.7) (0, 0, −1) = (0, 0, 3.8); τ_B = (1,0,0) × Rᵀ f =

@@ -113,7 +113,8 @@ TEST(SceneFrame, FictitiousWrenchesEqualSumsOverPointMasses) {
     const std::vector<Body> bodies{RigidBody(cloud.mass(), cloud.inertia_com())};
     const double t = 0.37 * trial;
     BodyKinematics k;
-    k.p_W = random_vector(rng, 2.0), k.v_W = random_vector(rng), k.q_WB = random_attitude(rng), k.w_B = random_vector(rng, 3.0);
+    k.p_W = random_vector(rng, 2.0), k.v_W = random_vector(rng), k.w_B = random_vector(rng, 3.0);
+    set_attitude(k, random_attitude(rng));
     k.m = cloud.mass();
     const FrameTerms f = frame_terms(frame, t);
     // the point sums: force Σ m_i a_i, moment about C Σ R ρ_i × m_i a_i (to B), power Σ m_i a_i·v_i
@@ -169,8 +170,9 @@ TEST(SceneFrame, CoriolisPowerIsZeroToRoundOff) {
       k[b].p_W = random_vector(rng, 3.0), k[b].v_W = random_vector(rng, 2.0), k[b].m = mass_of(bodies[b]);
     }
     k[1].p_W.z() = 0.0, k[1].v_W.z() = 0.0, k[1].w_B = Eigen::Vector3d(0.0, 0.0, 1.7);
-    k[1].q_WB = Eigen::Quaterniond(Eigen::AngleAxisd(0.4 * trial, Eigen::Vector3d::UnitZ()));
-    k[2].q_WB = random_attitude(rng), k[2].w_B = random_vector(rng, 5.0);
+    set_attitude(k[1], Eigen::Quaterniond(Eigen::AngleAxisd(0.4 * trial, Eigen::Vector3d::UnitZ())));
+    set_attitude(k[2], random_attitude(rng));
+    k[2].w_B = random_vector(rng, 5.0);
     std::vector<BodyWrench> w(3);
     const double t = 0.1 * trial, power = coriolis.add_wrenches(t, k, w);
     // each product f·v, τ·ω is zero in exact arithmetic; its rounding is a few ε of Σ |f||v| + |τ||ω|

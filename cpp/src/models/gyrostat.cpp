@@ -68,7 +68,8 @@ GyrostatState checked_state(const Gyrostat& body, const GyrostatState& state, co
 
 BodyKinematics kinematics_of(const Gyrostat& body, const GyrostatState& state) {
   BodyKinematics k;
-  k.p_W = state.p_W, k.q_WB = state.q_WB, k.v_W = state.v_W, k.w_B = state.w_B, k.m = body.mass();
+  k.p_W = state.p_W, k.v_W = state.v_W, k.w_B = state.w_B, k.m = body.mass();
+  set_attitude(k, state.q_WB);
   return k;
 }
 

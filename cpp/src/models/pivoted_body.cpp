@@ -73,7 +73,7 @@ PivotedBodyState checked_state(const PivotedBodyState& state, const std::string&
 BodyKinematics kinematics_of(const PivotedBody& body, const PivotedBodyState& state) {
   BodyKinematics k;
   const Eigen::Vector3d& c = body.p_OC_B();
-  k.q_WB = state.q_WB;
+  set_attitude(k, state.q_WB);
   k.w_B = state.w_B;
   k.p_W = body.p_WO() + state.q_WB * c;
   k.v_W = state.q_WB * state.w_B.cross(c);

@@ -30,7 +30,7 @@ BodyKinematics kinematics_of(const PivotedPlanarBody& body, const PivotedPlanarB
   const Eigen::Vector2d c_W = pivoted_planar_c_W(body.p_OC_B(), state.theta);
   BodyKinematics k;
   k.p_W = Eigen::Vector3d(body.p_WO().x() + c_W.x(), body.p_WO().y() + c_W.y(), 0.0);
-  k.q_WB = Eigen::Quaterniond(Eigen::AngleAxisd(state.theta, Eigen::Vector3d::UnitZ()));
+  set_attitude(k, Eigen::Quaterniond(Eigen::AngleAxisd(state.theta, Eigen::Vector3d::UnitZ())));
   k.v_W = Eigen::Vector3d(-state.omega * c_W.y(), state.omega * c_W.x(), 0.0);
   k.w_B = Eigen::Vector3d(0.0, 0.0, state.omega);
   k.m = body.mass();

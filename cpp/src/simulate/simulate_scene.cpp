@@ -124,7 +124,7 @@ SceneSimulation one_body_simulation(const CompiledScene& compiled, const std::ve
   double V0 = 0.0;
   for (std::size_t r = 0; r < n; ++r) {
     k[0].p_W = Eigen::Vector3d(&tr.p_W[3 * r]);
-    k[0].q_WB.coeffs() = Eigen::Vector4d(&tr.q_WB[4 * r]).normalized();
+    set_attitude(k[0], Eigen::Quaterniond(Eigen::Vector4d(&tr.q_WB[4 * r]).normalized()));
     k[0].v_W = Eigen::Vector3d(&tr.v_W[3 * r]);
     k[0].w_B = Eigen::Vector3d(&tr.w_B[3 * r]);
     const double V = gravity ? gravity->potential(k) : 0.0;

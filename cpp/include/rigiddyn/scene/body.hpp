@@ -138,21 +138,23 @@ inline BodyKinematics kinematics_of(const BodyState& state) {
                                [](const PlanarBodyState& s) {
                                  BodyKinematics k;
                                  k.p_W << s.p_W, 0.0;
-                                 k.q_WB = Eigen::Quaterniond(Eigen::AngleAxisd(s.theta, Eigen::Vector3d::UnitZ()));
+                                 set_attitude(k, Eigen::Quaterniond(Eigen::AngleAxisd(s.theta, Eigen::Vector3d::UnitZ())));
                                  k.v_W << s.v_W, 0.0;
                                  k.w_B << 0.0, 0.0, s.omega;
                                  return k;
                                },
                                [](const RigidBodyState& s) {
                                  BodyKinematics k;
-                                 k.p_W = s.p_W, k.q_WB = s.q_WB, k.v_W = s.v_W, k.w_B = s.w_B;
+                                 k.p_W = s.p_W, k.v_W = s.v_W, k.w_B = s.w_B;
+                                 set_attitude(k, s.q_WB);
                                  return k;
                                },
                                [&](const PivotedBodyState& s) { return pinned(s); },
                                [&](const PivotedPlanarBodyState& s) { return pinned(s); },
                                [](const GyrostatState& s) {
                                  BodyKinematics k;
-                                 k.p_W = s.p_W, k.q_WB = s.q_WB, k.v_W = s.v_W, k.w_B = s.w_B;
+                                 k.p_W = s.p_W, k.v_W = s.v_W, k.w_B = s.w_B;
+                                 set_attitude(k, s.q_WB);
                                  return k;
                                }},
                     state);

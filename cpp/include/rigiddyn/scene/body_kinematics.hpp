@@ -12,7 +12,10 @@ namespace rigiddyn {
 //   v_W   velocity of the centre of mass, expressed in W [m/s];
 //   w_B   angular velocity of B relative to W, expressed in B [rad/s];
 //   m     the body's mass now [kg] (set by the model: constant, or the mass coordinate of a body with a
-//         MassFlow); elements whose force scales with the mass read it here, never a copy.
+//         MassFlow); elements whose force scales with the mass read it here, never a copy;
+//   R_WB  the rotation matrix of q_WB (set with it by set_attitude below; the scene model fills it only when a
+//         term turns vectors, scene_model.hpp: an element whose traits declare neither reads_attitude nor
+//         has_torque never reads it).
 // "W" is the scene frame (docs/fixed_point_frames_mass.md §2): W itself when the scene declares no moving
 // frame, else F; the kinematics are relative to it.
 // Each body kind as elements see it: particle q_WB = identity, w_B = 0; planar body p_W = (x, y, 0),
@@ -23,7 +26,16 @@ struct BodyKinematics {
   Eigen::Vector3d v_W = Eigen::Vector3d::Zero();
   Eigen::Vector3d w_B = Eigen::Vector3d::Zero();
   double m = 0.0;
+  Eigen::Matrix3d R_WB = Eigen::Matrix3d::Identity();
 };
+
+// Sets the attitude of `k`: q_WB (a unit quaternion) and R_WB, its rotation matrix, which the elements use to
+// turn vectors between B and W (9 products and 6 sums a vector, against 15 and 15 through the quaternion: a spring
+// turns six vectors per evaluation). kinematics_of and the one-body records set the attitude here.
+inline void set_attitude(BodyKinematics& k, const Eigen::Quaterniond& q_WB) {
+  k.q_WB = q_WB;
+  k.R_WB = q_WB.toRotationMatrix();
+}
 
 // The wrench on one body, reduced to its centre of mass:
 //   f_W    the resultant force, expressed in W [N];
@@ -40,7 +52,7 @@ struct BodyWrench {
 // f_W·v_W + tau_B·w_B [W].
 inline double add_force_at_point(const BodyKinematics& body, const Eigen::Vector3d& f_W, const Eigen::Vector3d& point_B,
                                  BodyWrench& wrench) {
-  const Eigen::Vector3d tau_B = point_B.cross(body.q_WB.conjugate() * f_W);
+  const Eigen::Vector3d tau_B = point_B.cross(body.R_WB.transpose() * f_W);
   wrench.f_W += f_W;
   wrench.tau_B += tau_B;
   return f_W.dot(body.v_W) + tau_B.dot(body.w_B);

@@ -5,7 +5,7 @@
 namespace rigiddyn {
 
 struct ElementTraits {
-  bool reads_attitude;      // its wrench depends on some body's q_WB
+  bool reads_attitude;      // its wrench depends on some body's q_WB (R_WB): without it and has_torque, it never reads R_WB
   bool velocity_dependent;  // its wrench depends on some v_W or w_B (drag, dampers)
   bool time_dependent;      // its wrench depends on t (schedules, user forces)
   bool has_potential;       // potential() is its potential energy V with f = −∇_p V, τ = −∂V/∂(rotation)

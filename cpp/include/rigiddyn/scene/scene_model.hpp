@@ -91,6 +91,14 @@ template <class Term>
 struct has_speed_command<Term, std::void_t<decltype(std::declval<Term&>().command_speed(0.0, 0.0, 0.0, 0.0))>>
     : std::true_type {};
 
+// Whether a term turns vectors between a body's B and W (reads R_WB, or gives a torque that the impulses turn to W):
+// it declares reads_attitude or has_torque, or it takes a controller's command (which may turn it at run time).
+template <class Term>
+bool turns_vectors(const Term& term) {
+  const ElementTraits t = term.traits();
+  return t.reads_attitude || t.has_torque || has_command<Term>::value || has_speed_command<Term>::value;
+}
+
 // Whether a body's slot records coordinates of its own (record_internal: the gyrostat's wheel speeds).
 template <class Slot, class = void>
 struct has_internal_record : std::false_type {};
@@ -150,6 +158,9 @@ class BasicSceneModel {
     stage_.resize(coordinate_count());
     kicks_merge_ = !has_mass_flow() && std::none_of(terms_.begin(), terms_.end(), [](const Term& term) {
       return std::visit([](const auto& e) { return e.traits().velocity_dependent; }, term);
+    });
+    turns_vectors_ = std::any_of(terms_.begin(), terms_.end(), [](const Term& term) {
+      return std::visit([](const auto& e) { return detail::turns_vectors(e); }, term);
     });
   }
 
@@ -537,12 +548,13 @@ class BasicSceneModel {
   Eigen::Index impulse_offset() const { return 1 + static_cast<Eigen::Index>(terms_.size() + energy_body_.size()); }
 
   // out[0..2] += h Σ_b f_b [N], out[3..5] += h Σ_b (p_b × f_b + R_WB,b τ_B,b) [N m] (the moment about W's origin)
-  // of wrenches_ at kinematics_
+  // of wrenches_ at kinematics_ (τ_B = 0 when no term turns vectors: none gives a torque)
   void add_impulses(double* out, double h) const {
     for (std::size_t b = 0; b < wrenches_.size(); ++b) {
       const BodyKinematics& k = kinematics_[b];
       const BodyWrench& w = wrenches_[b];
-      const Eigen::Vector3d M_W = k.p_W.cross(w.f_W) + k.q_WB * w.tau_B;
+      Eigen::Vector3d M_W = k.p_W.cross(w.f_W);
+      if (turns_vectors_) M_W += k.R_WB * w.tau_B;
       for (int i = 0; i < 3; ++i) out[i] += h * w.f_W[i], out[3 + i] += h * M_W[i];
     }
   }
@@ -555,10 +567,15 @@ class BasicSceneModel {
     for_each_slot([&](const auto& s) { s.kick(y.data(), kinematics_[s.body], wrenches_[s.body], h, gyroscopic_kick); });
   }
 
-  // kinematics_ from y as elements see them (body_kinematics.hpp; attitudes normalised)
+  // kinematics_ from y as elements see them (body_kinematics.hpp; attitudes normalised), with each attitude's
+  // R_WB when a term needs it (turns_vectors_)
   void fill_kinematics(const Coordinates& y) const {
     const detail::StepClock clock = clock_at(y);
-    for_each_slot([&](const auto& s) { s.kinematics(y.data(), clock, kinematics_[s.body]); });
+    for_each_slot([&](const auto& s) {
+      BodyKinematics& k = kinematics_[s.body];
+      s.kinematics(y.data(), clock, k);
+      if (turns_vectors_) k.R_WB = k.q_WB.toRotationMatrix();
+    });
   }
 
   // kinematics_ at y, wrenches_ = Σ of every element's wrenches, power_[e] = element e's power
@@ -584,6 +601,7 @@ class BasicSceneModel {
   std::vector<int> energy_body_;   // the bodies with a MassFlow, in the scene's order (their mass-flow energies')
   std::size_t wheel_count_ = 0;
   bool kicks_merge_ = false;       // kicks_merge()
+  bool turns_vectors_ = false;     // some term reads an attitude or gives a torque: kinematics_ carry R_WB
   // scratch, sized here (an evaluation allocates nothing)
   mutable std::vector<BodyKinematics> kinematics_;
   mutable std::vector<BodyWrench> wrenches_;

@@ -135,7 +135,7 @@ class EulerForceTerm : public detail::FictitiousBase {
     }
     for (const detail::TurningBody& s : turning_) {
       const BodyKinematics& k = kinematics[s.body];
-      const Eigen::Vector3d alpha_B = k.q_WB.conjugate() * alpha;
+      const Eigen::Vector3d alpha_B = k.R_WB.transpose() * alpha;
       const Eigen::Vector3d tau = -k.m * (s.inertia_per_mass * alpha_B);
       wrenches[s.body].tau_B += tau;
       power += tau.dot(k.w_B);
@@ -170,7 +170,7 @@ class CentrifugalTerm : public detail::FictitiousBase {
     }
     for (const detail::TurningBody& s : turning_) {
       const BodyKinematics& k = kinematics[s.body];
-      const Eigen::Vector3d w_B = k.q_WB.conjugate() * w;
+      const Eigen::Vector3d w_B = k.R_WB.transpose() * w;
       const Eigen::Vector3d tau = -k.m * w_B.cross(s.inertia_per_mass * w_B);
       wrenches[s.body].tau_B += tau;
       power += tau.dot(k.w_B);
@@ -186,7 +186,7 @@ class CentrifugalTerm : public detail::FictitiousBase {
     for (int b = 0; b < body_count_; ++b) V -= 0.5 * kinematics[b].m * w.cross(kinematics[b].p_W).squaredNorm();
     for (const detail::TurningBody& s : turning_) {
       const BodyKinematics& k = kinematics[s.body];
-      const Eigen::Vector3d w_B = k.q_WB.conjugate() * w;
+      const Eigen::Vector3d w_B = k.R_WB.transpose() * w;
       V -= 0.5 * k.m * w_B.dot(s.inertia_per_mass * w_B);
     }
     return V;
@@ -218,7 +218,7 @@ class CoriolisTerm : public detail::FictitiousBase {
     }
     for (const detail::TurningBody& s : turning_) {
       const BodyKinematics& k = kinematics[s.body];
-      const Eigen::Vector3d w_B = k.q_WB.conjugate() * w;
+      const Eigen::Vector3d w_B = k.R_WB.transpose() * w;
       const Eigen::Matrix3d& J = s.inertia_per_mass;
       const Eigen::Vector3d tau = -k.m * (k.w_B.cross(J * w_B) + w_B.cross(J * k.w_B) - J * k.w_B.cross(w_B));
       wrenches[s.body].tau_B += tau;

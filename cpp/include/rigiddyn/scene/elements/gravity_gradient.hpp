@@ -108,12 +108,12 @@ class GravityGradientTerm {
       const BodyKinematics& body = kinematics[bodies_[k]];
       const Eigen::Matrix3d& I = inertia_com_[k];
       const Eigen::Vector3d r_W = body.p_W - p_W_;
-      const Eigen::Vector3d r_B = body.q_WB.conjugate() * r_W;
+      const Eigen::Vector3d r_B = body.R_WB.transpose() * r_W;
       const Eigen::Vector3d I_r_B = I * r_B;
       const double r2 = r_W.squaredNorm();
       const double c = gm_ / (r2 * r2 * std::sqrt(r2));  // GM/|r|⁵
       const double s = r_B.dot(I_r_B);
-      const Eigen::Vector3d f_W = (-1.5 * c) * ((I.trace() - 5.0 * s / r2) * r_W + 2.0 * (body.q_WB * I_r_B));
+      const Eigen::Vector3d f_W = (-1.5 * c) * ((I.trace() - 5.0 * s / r2) * r_W + 2.0 * (body.R_WB * I_r_B));
       const Eigen::Vector3d tau_B = (3.0 * c) * r_B.cross(I_r_B);
       wrenches[bodies_[k]].f_W += f_W;
       wrenches[bodies_[k]].tau_B += tau_B;
@@ -127,7 +127,7 @@ class GravityGradientTerm {
     double V = 0.0;
     for (std::size_t k = 0; k < bodies_.size(); ++k) {
       const BodyKinematics& body = kinematics[bodies_[k]];
-      const Eigen::Vector3d r_B = body.q_WB.conjugate() * (body.p_W - p_W_);
+      const Eigen::Vector3d r_B = body.R_WB.transpose() * (body.p_W - p_W_);
       const double r2 = r_B.squaredNorm();
       V -= gm_ / (2.0 * r2 * std::sqrt(r2)) * (inertia_com_[k].trace() - 3.0 * r_B.dot(inertia_com_[k] * r_B) / r2);
     }

@@ -110,8 +110,8 @@ class MagneticDipoleTerm {
     double power = 0.0;
     for (const int b : bodies_) {
       const BodyKinematics& body = kinematics[b];
-      const Eigen::Vector3d tau_B = m_B_.cross(body.q_WB.conjugate() * field_W(body.p_W));
-      const Eigen::Vector3d f_W = source_force_W(body.q_WB * m_B_, body.p_W);
+      const Eigen::Vector3d tau_B = m_B_.cross(body.R_WB.transpose() * field_W(body.p_W));
+      const Eigen::Vector3d f_W = source_force_W(body.R_WB * m_B_, body.p_W);
       wrenches[b].f_W += f_W;
       wrenches[b].tau_B += tau_B;
       power += f_W.dot(body.v_W) + tau_B.dot(body.w_B);
@@ -125,7 +125,7 @@ class MagneticDipoleTerm {
   // V = Σ −m_W·B(p_W) [J]
   double potential(const std::vector<BodyKinematics>& kinematics) const {
     double V = 0.0;
-    for (const int b : bodies_) V -= (kinematics[b].q_WB * m_B_).dot(field_W(kinematics[b].p_W));
+    for (const int b : bodies_) V -= (kinematics[b].R_WB * m_B_).dot(field_W(kinematics[b].p_W));
     return V;
   }
 

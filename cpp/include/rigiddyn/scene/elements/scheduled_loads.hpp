@@ -105,9 +105,8 @@ class ScheduledLoadsTerm {
   // returns f_W·v_W + τ_B·ω_B [W].
   double add_wrenches(double /*t*/, const std::vector<BodyKinematics>& kinematics, std::vector<BodyWrench>& wrenches) const {
     const BodyKinematics& k = kinematics[body_];
-    const Eigen::Quaterniond q_BW = k.q_WB.conjugate();
-    const Eigen::Vector3d f_W = loads_.f_W + k.q_WB * loads_.f_B;
-    const Eigen::Vector3d tau_B = loads_.tau_B + q_BW * loads_.tau_W + point_B_.cross(q_BW * f_W);
+    const Eigen::Vector3d f_W = loads_.f_W + k.R_WB * loads_.f_B;
+    const Eigen::Vector3d tau_B = loads_.tau_B + k.R_WB.transpose() * loads_.tau_W + point_B_.cross(k.R_WB.transpose() * f_W);
     wrenches[body_].f_W += f_W;
     wrenches[body_].tau_B += tau_B;
     return f_W.dot(k.v_W) + tau_B.dot(k.w_B);

@@ -138,7 +138,7 @@ class SolarRadiationPressureTerm {
     for (const int b : bodies_) {
       const BodyKinematics& body = kinematics[b];
       if (in_shadow(body.p_W, s_W)) continue;
-      power += add_force_at_point(body, force_W(body.q_WB, s_W), cp_B_, wrenches[b]);
+      power += add_force_at_point(body, force_W(body.R_WB, s_W), cp_B_, wrenches[b]);
     }
     return power;
   }
@@ -163,9 +163,9 @@ class SolarRadiationPressureTerm {
     return along < 0.0 && (r - along * s_W).squaredNorm() < shadow_radius_ * shadow_radius_;
   }
 
-  Eigen::Vector3d force_W(const Eigen::Quaterniond& q_WB, const Eigen::Vector3d& s_W) const {
+  Eigen::Vector3d force_W(const Eigen::Matrix3d& R_WB, const Eigen::Vector3d& s_W) const {
     if (!plate_) return (-pressure_area_ * reflectivity_) * s_W;
-    const Eigen::Vector3d n_W = q_WB * normal_B_;
+    const Eigen::Vector3d n_W = R_WB * normal_B_;
     const double cos_theta = n_W.dot(s_W);
     if (cos_theta <= 0.0) return Eigen::Vector3d::Zero();  // lit from behind: the plate's other side has no area here
     return (-pressure_area_ * cos_theta) *

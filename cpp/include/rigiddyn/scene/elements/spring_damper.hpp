@@ -120,23 +120,23 @@ class SpringDamperTerm {
   // f_a·(ẋ_a − ẋ_b) [W] (= Σ f_W·v_W + tau_B·w_B over both bodies).
   double add_wrenches(double /*t*/, const std::vector<BodyKinematics>& kinematics, std::vector<BodyWrench>& wrenches) const {
     const BodyKinematics& a = kinematics[a_];
-    const Eigen::Vector3d r_a_W = a.q_WB * point_a_B_;  // from a's centre of mass to its point, in W
-    const Eigen::Vector3d xdot_a = a.v_W + a.q_WB * a.w_B.cross(point_a_B_);
+    const Eigen::Vector3d r_a_W = a.R_WB * point_a_B_;  // from a's centre of mass to its point, in W
+    const Eigen::Vector3d xdot_a = a.v_W + a.R_WB * a.w_B.cross(point_a_B_);
     Eigen::Vector3d d = a.p_W + r_a_W, relative_velocity = xdot_a;
     if (b_ >= 0) {
       const BodyKinematics& b = kinematics[b_];
-      d -= b.p_W + b.q_WB * point_b_;
-      relative_velocity -= b.v_W + b.q_WB * b.w_B.cross(point_b_);
+      d -= b.p_W + b.R_WB * point_b_;
+      relative_velocity -= b.v_W + b.R_WB * b.w_B.cross(point_b_);
     } else {
       d -= point_b_;
     }
     const Eigen::Vector3d f_a = force_on_a(d, relative_velocity);
     wrenches[a_].f_W += f_a;
-    wrenches[a_].tau_B += point_a_B_.cross(a.q_WB.conjugate() * f_a);
+    wrenches[a_].tau_B += point_a_B_.cross(a.R_WB.transpose() * f_a);
     if (b_ >= 0) {
       const BodyKinematics& b = kinematics[b_];
       wrenches[b_].f_W -= f_a;
-      wrenches[b_].tau_B -= point_b_.cross(b.q_WB.conjugate() * f_a);
+      wrenches[b_].tau_B -= point_b_.cross(b.R_WB.transpose() * f_a);
     }
     return f_a.dot(relative_velocity);
   }
@@ -144,8 +144,8 @@ class SpringDamperTerm {
   // V = ½ k (ℓ − ℓ0)² [J]
   double potential(const std::vector<BodyKinematics>& kinematics) const {
     const BodyKinematics& a = kinematics[a_];
-    Eigen::Vector3d d = a.p_W + a.q_WB * point_a_B_;
-    d -= b_ >= 0 ? Eigen::Vector3d(kinematics[b_].p_W + kinematics[b_].q_WB * point_b_) : point_b_;
+    Eigen::Vector3d d = a.p_W + a.R_WB * point_a_B_;
+    d -= b_ >= 0 ? Eigen::Vector3d(kinematics[b_].p_W + kinematics[b_].R_WB * point_b_) : point_b_;
     const double stretch = d.norm() - rest_length_;
     return 0.5 * k_ * stretch * stretch;
   }

@@ -135,11 +135,11 @@ class ThrustTerm {
     const BodyKinematics& k = kinematics[body_];
     const double rate = mass_rate(flow_, t, flow_name_);
     const Eigen::Vector3d f = rate * u_rel_;  // in frame_
-    const Eigen::Vector3d f_W = frame_ == Frame::body ? Eigen::Vector3d(k.q_WB * f) : f;
+    const Eigen::Vector3d f_W = frame_ == Frame::body ? Eigen::Vector3d(k.R_WB * f) : f;
     wrenches[body_].f_W += f_W;
     double power = f_W.dot(k.v_W);
     if (torque_) {
-      const Eigen::Vector3d f_B = frame_ == Frame::body ? f : Eigen::Vector3d(k.q_WB.conjugate() * f);
+      const Eigen::Vector3d f_B = frame_ == Frame::body ? f : Eigen::Vector3d(k.R_WB.transpose() * f);
       const Eigen::Vector3d tau_B = r_B_.cross(f_B);
       wrenches[body_].tau_B += tau_B;
       power += tau_B.dot(k.w_B);
