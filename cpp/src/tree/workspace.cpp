@@ -11,6 +11,7 @@ TreeWorkspace::TreeWorkspace(const Tree& tree)
       f(tree.num_links()),
       I_C(tree.num_links(), Matrix6d::Zero()),
       U(tree.num_links()),
+      S_W(tree.num_links()),
       D_inv(tree.num_links()),
       u(tree.num_links()),
       zero_v(Eigen::VectorXd::Zero(tree.nv())),
@@ -20,6 +21,7 @@ TreeWorkspace::TreeWorkspace(const Tree& tree)
   for (int i = 0; i < tree.num_links(); ++i) {
     const int nv = tree.link(i).nv;
     U[i].resize(6, nv);
+    S_W[i].resize(6, nv);
     D_inv[i].resize(nv, nv);
     u[i].resize(nv);
   }

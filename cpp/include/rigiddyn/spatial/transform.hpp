@@ -27,6 +27,12 @@ class Transform {
       : R_(checked_rotation_matrix(rotation, "rotation")), p_(translation) {
     if (!translation.allFinite()) throw_invalid("translation", "finite values", translation);
   }
+  // The same without the checks, for a rotation orthonormal by construction and a finite translation (a joint's
+  // transform from its checked configuration, per link and call of the tree algorithms: the checks cost about as
+  // much as building the rotation).
+  static Transform unchecked(const Eigen::Matrix3d& rotation, const Eigen::Vector3d& translation) {
+    return Transform(rotation, translation, Trusted{});
+  }
   // q_AB: unit quaternion (checked, not normalised); translation p_AB [m].
   static Transform from_quat(const Eigen::Quaterniond& q_AB, const Eigen::Vector3d& translation);
   static Transform Identity() { return Transform(); }

@@ -3,6 +3,8 @@
 //   I^c_i = I_i + sum over children j of X_ij* I^c_j X_ij^-1     (i = n-1..0)
 //   F = I^c_i S_i,  H_ii = S_i^T F;  then up the path j = λ(i), λ(λ(i)), ...:
 //   F = X_λj* F (carried to the parent),  H_ij = F^T S_j,  H_ji = H_ij^T.
+// Computed with F and each S_j in W (F_W = X_Wi* F, S_W,j = X_Wj S_j: H_ij = F_W^T S_W,j, the pairing of a force and
+// a motion being the same in every frame): one transform of F per link instead of one per link and ancestor.
 // The kinetic energy is T = 1/2 qd^T H qd.
 #pragma once
 #include <Eigen/Core>

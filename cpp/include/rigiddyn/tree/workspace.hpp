@@ -27,6 +27,7 @@ struct TreeWorkspace {
   std::vector<Force> f;         // f_i: the force across joint i (RNEA), or p^A_i, the bias force (ABA) (n)
   std::vector<Matrix6d> I_C;    // I^c_i composite (CRBA) or I^A_i articulated (ABA) inertia, about L_i's origin (n)
   std::vector<Eigen::Matrix<double, 6, Eigen::Dynamic, Eigen::ColMajor, 6, 6>> U;  // U_i = I^A_i S_i (6, nv_i)
+  std::vector<Eigen::Matrix<double, 6, Eigen::Dynamic, Eigen::ColMajor, 6, 6>> S_W;  // X_Wi S_i: S_i in W (CRBA) (6, nv_i)
   std::vector<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor, 6, 6>> D_inv;  // (S^T U)^-1
   std::vector<Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, 6, 1>> u;  // τ_i - S_i^T p^A_i (nv_i)
   Eigen::VectorXd zero_v;       // (nv,) zeros: the acceleration of bias_forces

@@ -20,7 +20,7 @@ struct FreeJoint {
   static constexpr int nq = 7, nv = 6;
 
   Transform transform(const JointVector& q) const {
-    return Transform(SphericalJoint::quaternion(q.tail<4>()).normalized().toRotationMatrix(), q.head<3>());
+    return Transform::unchecked(SphericalJoint::quaternion(q.tail<4>()).normalized().toRotationMatrix(), q.head<3>());
   }
   MotionSubspace motion_subspace() const { return MotionSubspace::Identity(6, 6); }
   void integrate(const JointVector& q, const JointVector& V_L, double dt, JointVectorOut q_out) const {

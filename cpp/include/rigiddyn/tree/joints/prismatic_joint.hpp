@@ -18,7 +18,7 @@ struct PrismaticJoint {
 
   Eigen::Vector3d axis;  // a, unit, in J and in L
 
-  Transform transform(const JointVector& q) const { return Transform(Eigen::Matrix3d::Identity(), axis * q[0]); }
+  Transform transform(const JointVector& q) const { return Transform::unchecked(Eigen::Matrix3d::Identity(), axis * q[0]); }
   MotionSubspace motion_subspace() const {
     MotionSubspace S(6, 1);
     S << Eigen::Vector3d::Zero(), axis;

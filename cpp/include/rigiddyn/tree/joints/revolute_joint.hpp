@@ -20,7 +20,7 @@ struct RevoluteJoint {
 
   Eigen::Vector3d axis;  // a, unit, in J and in L
 
-  Transform transform(const JointVector& q) const { return Transform(rotvec_to_matrix(axis * q[0]), Eigen::Vector3d::Zero()); }
+  Transform transform(const JointVector& q) const { return Transform::unchecked(rotvec_to_matrix(axis * q[0]), Eigen::Vector3d::Zero()); }
   MotionSubspace motion_subspace() const {
     MotionSubspace S(6, 1);
     S << axis, Eigen::Vector3d::Zero();

@@ -22,7 +22,7 @@ struct SphericalJoint {
   static void set_quaternion(const Eigen::Quaterniond& q_JL, JointVectorOut q) { q = q_JL.coeffs(); }
 
   Transform transform(const JointVector& q) const {
-    return Transform(quaternion(q).normalized().toRotationMatrix(), Eigen::Vector3d::Zero());
+    return Transform::unchecked(quaternion(q).normalized().toRotationMatrix(), Eigen::Vector3d::Zero());
   }
   MotionSubspace motion_subspace() const {
     MotionSubspace S = MotionSubspace::Zero(6, 3);
