@@ -65,12 +65,12 @@ def mass_of_t(m0, t):
 
 # ---------------------------------------------------------------- the rocket (the shipped scene)
 def test_the_shipped_rocket_closes_the_balance_with_its_mass_flow_energy():
-    """The rocket (rk4, 10 ms, 60 s) at dt and dt/2: the residual of T − T(0) = Σ work + E within RK4's Richardson
+    """The rocket (rk4, 0.1 s, 60 s) at dt and dt/2: the residual of T − T(0) = Σ work + E within RK4's Richardson
     bound, while the work alone misses by −ṁ-weighted kinetic energy, ~4e7 J (the documentation's old claim). And E
     against its closed value: E = ½ ṁ ∫ |v|² dt over the exact velocity (ConstantThrustSolution), by 40-point
     Gauss–Legendre on [0, 60 s] (v is analytic there, its nearest singularity at the burn-out t = 100 s: the rule's
     error ~ 4.4^(−80), none), to RK4's error: |ΔE| ≤ the balance bound plus the velocity's own error
-    |ṁ| t max|v| |Δv| with |Δv| ≤ 1e-8 m/s (the docs' 5.2e-10 m/s at the end)."""
+    |ṁ| t max|v| |Δv| with |Δv| ≤ 1e-8 m/s (the docs' 1.4e-10 m/s at the end)."""
     scene, initial, options = rd.load_scene("rocket")
 
     def run(method, dt, steps):

@@ -71,7 +71,7 @@ def test_the_rocket_burns_to_the_mass_and_speed_its_file_states():
     r = rd.simulate(f.scene, f.initial, dt=f.run.dt, steps=steps, method="rk4", record_every=steps)
     # m(t) = m0 + rate t is linear: every method integrates it exactly, to one rounding per step
     assert np.asarray(r.mass)[-1, 0] == pytest.approx(80.0, rel=steps * 2**-52)
-    # v_z(60 s) = 2500 ln(2.5) - 9.81 * 60 (Tsiolkovsky less the gravity loss); RK4 at 10 ms on
+    # v_z(60 s) = 2500 ln(2.5) - 9.81 * 60 (Tsiolkovsky less the gravity loss); RK4 at 0.1 s on
     # ln(m(t)), whose 5th derivative is at most 24 (2/80)^5 |u| ~ 6e-7 m/s^5: an error C h^4 t well below 1e-6
     assert np.asarray(r.v_W)[-1, 0, 2] == pytest.approx(2500.0 * math.log(2.5) - 9.81 * 60.0, abs=1e-6)
 
@@ -90,7 +90,7 @@ def test_a_longer_rocket_burn_is_refused_naming_the_mass():
 ])
 def test_the_simulate_command_runs_each_and_its_summary_says_what_matters(name, said, tmp_path, capsys):
     out = tmp_path / name
-    steps = {"rocket": "100", "pendulum": "200", "heavy_top": "200", "foucault": "50"}[name]
+    steps = {"rocket": "10", "pendulum": "200", "heavy_top": "200", "foucault": "50"}[name]
     assert main(["simulate", name, "--steps", steps, "--out", str(out), "--no-plot", "--no-progress"]) == 0
     printed = capsys.readouterr().out
     assert said in printed, printed
