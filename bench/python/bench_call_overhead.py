@@ -5,8 +5,9 @@ free body, all in one run, each the best of several rounds of a loop of calls.
 
 simulate's fixed cost is its time less that of its steps: the cost per step is the slope between
 simulate(steps=10) and simulate(steps=10 + k) (k = 1000), so that "fixed cost" is what the call costs
-besides stepping: arguments, the result's arrays, the energy and momentum balance and its check (and,
-with error=True, the default, the global error estimate's two coarse runs and arrays).
+besides stepping: arguments, the result, the energy and momentum balance and its check (and, with
+error=True, the default, the global error estimate's two coarse runs). The result's arrays are made on
+their first read: "... and q_WB[-1]" adds what a control loop reading the last attitude pays for one.
 
     python bench/python/bench_call_overhead.py           # 20 000 calls a round, 7 rounds
     python bench/python/bench_call_overhead.py --small   # 2 000 calls a round, 3 rounds (what ctest runs)
@@ -63,6 +64,8 @@ def main():
         cases[f"simulate(steps=10, error={error})"] = short
         cases[f"simulate(steps=10, error={error}) fixed cost"] = short - 10 * per_step
         cases[f"simulate(error={error}) per step"] = per_step
+        cases[f"simulate(steps=10, error={error}) and q_WB[-1]"] = time_of(
+            lambda: rd.simulate(BODY, STATE, DT, steps=10, error=error).q_WB[-1], calls // 4)
     mj = mujoco_step()
     if mj is not None:
         cases["mujoco.mj_step(model, data)"] = time_of(mj)

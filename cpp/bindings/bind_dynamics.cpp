@@ -20,6 +20,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <optional>
 #include <string>
@@ -75,9 +76,10 @@ auto with_model(py::handle model, py::handle state, const char* state_name, F&& 
                           "Scene or CompiledScene", model);
 }
 
-// simulate's result: numpy arrays, one row per record.
+// simulate's result: read-only numpy arrays, one row per record, each made on its first read (LazyArray).
 struct SimulationResult {
-  Array t, p_W, q_WB, v_W, w_B, kinetic_energy, total_energy, angular_momentum_norm, quaternion_norm_error, work;
+  LazyArray t, p_W, q_WB, v_W, w_B, kinetic_energy, total_energy, angular_momentum_norm, quaternion_norm_error, work;
+  py::ssize_t records;
   bool diverged;
   std::int64_t unconverged_steps;
   double elapsed_seconds;
@@ -87,19 +89,30 @@ struct SimulationResult {
   py::object choice = py::none();  // a ToleranceChoice (simulate(..., tolerance=...)) or None
 };
 
+// The arrays of a SimulationResult in order (its pickle state's, field by field).
+constexpr const char* result_arrays[] = {"t", "p_W", "q_WB", "v_W", "w_B", "kinetic_energy", "total_energy",
+                                         "angular_momentum_norm", "quaternion_norm_error", "work"};
+constexpr LazyArray SimulationResult::*result_members[] = {
+    &SimulationResult::t,           &SimulationResult::p_W,
+    &SimulationResult::q_WB,        &SimulationResult::v_W,
+    &SimulationResult::w_B,         &SimulationResult::kinetic_energy,
+    &SimulationResult::total_energy, &SimulationResult::angular_momentum_norm,
+    &SimulationResult::quaternion_norm_error, &SimulationResult::work};
+
 SimulationResult to_result(Trajectory&& tr, bool scalar_first) {
   const auto n = static_cast<py::ssize_t>(tr.size());
   if (scalar_first) to_scalar_first(tr.q_WB);
-  return SimulationResult{adopt(std::move(tr.t), {n}),
-                          adopt(std::move(tr.p_W), {n, 3}),
-                          adopt(std::move(tr.q_WB), {n, 4}),
-                          adopt(std::move(tr.v_W), {n, 3}),
-                          adopt(std::move(tr.w_B), {n, 3}),
-                          adopt(std::move(tr.kinetic_energy), {n}),
-                          adopt(std::move(tr.total_energy), {n}),
-                          adopt(std::move(tr.angular_momentum_norm), {n}),
-                          adopt(std::move(tr.quaternion_norm_error), {n}),
-                          adopt(std::move(tr.work), {n}),
+  return SimulationResult{LazyArray(std::move(tr.t), {n}),
+                          LazyArray(std::move(tr.p_W), {n, 3}),
+                          LazyArray(std::move(tr.q_WB), {n, 4}),
+                          LazyArray(std::move(tr.v_W), {n, 3}),
+                          LazyArray(std::move(tr.w_B), {n, 3}),
+                          LazyArray(std::move(tr.kinetic_energy), {n}),
+                          LazyArray(std::move(tr.total_energy), {n}),
+                          LazyArray(std::move(tr.angular_momentum_norm), {n}),
+                          LazyArray(std::move(tr.quaternion_norm_error), {n}),
+                          LazyArray(std::move(tr.work), {n}),
+                          n,
                           tr.diverged,
                           tr.unconverged_steps,
                           tr.elapsed_seconds,
@@ -270,14 +283,17 @@ py::typing::Union<SimulationResult, SceneResult> simulate_py(py::handle model, p
   }));
 }
 
-// The arrays of a SimulationResult in order (pickle state, field by field).
-constexpr const char* result_arrays[] = {"t", "p_W", "q_WB", "v_W", "w_B", "kinetic_energy", "total_energy",
-                                         "angular_momentum_norm", "quaternion_norm_error", "work"};
-
+// The pickle state of a SimulationResult: its arrays in result_arrays' order, then its other fields.
 py::tuple result_state(const SimulationResult& r) {
-  return py::make_tuple(r.t, r.p_W, r.q_WB, r.v_W, r.w_B, r.kinetic_energy, r.total_energy, r.angular_momentum_norm,
-                        r.quaternion_norm_error, r.work, r.diverged, r.unconverged_steps, r.elapsed_seconds,
-                        r.scalar_first, r.error, r.balance.get(), r.choice);
+  py::tuple out(std::size(result_members) + 7);
+  std::size_t k = 0;
+  for (const auto member : result_members) out[k++] = (r.*member).get();
+  for (py::object field : {py::object(py::bool_(r.diverged)), py::object(py::int_(r.unconverged_steps)),
+                           py::object(py::float_(r.elapsed_seconds)), py::object(py::bool_(r.scalar_first)), r.error,
+                           r.balance.get(), r.choice}) {
+    out[k++] = field;
+  }
+  return out;
 }
 
 // A pickled array as a read-only float64 copy of the shape it must have ((n,) or (n, k), n records).
@@ -300,9 +316,9 @@ SimulationResult result_from_state(const py::tuple& t) {
     py_io::throw_value_error("SimulationResult pickle", "a tuple of 13 to 17 items", std::to_string(t.size()) + " items");
   }
   const py::ssize_t n = py::len(t[0]);
-  auto column = [&](int i, py::ssize_t k) { return unpickled_array(t[i], result_arrays[i], n, k); };
+  auto column = [&](int i, py::ssize_t k) { return LazyArray(unpickled_array(t[i], result_arrays[i], n, k)); };
   SimulationResult r{column(0, 0), column(1, 3), column(2, 4), column(3, 3), column(4, 3), column(5, 0),
-                     column(6, 0), column(7, 0), column(8, 0), column(9, 0), t[10].cast<bool>(),
+                     column(6, 0), column(7, 0), column(8, 0), column(9, 0), n, t[10].cast<bool>(),
                      t[11].cast<std::int64_t>(), t[12].cast<double>(), t.size() >= 14 && t[13].cast<bool>()};
   if (t.size() == 17 && !t[16].is_none()) {
     if (!py::isinstance<ToleranceChoice>(t[16])) {
@@ -320,8 +336,12 @@ SimulationResult result_from_state(const py::tuple& t) {
 
 // "SimulationResult(records=n, t=[t0, t_end], diverged=..., unconverged_steps=..., elapsed_seconds=...)".
 std::string result_repr(const SimulationResult& r) {
-  const py::ssize_t n = r.t.shape(0);
-  const py::object span = n == 0 ? py::object(py::list()) : py::object(py::make_tuple(r.t.at(0), r.t.at(n - 1)));
+  const py::ssize_t n = r.records;
+  py::object span = py::list();
+  if (n > 0) {
+    const Array t = r.t.get();
+    span = py::make_tuple(t.at(0), t.at(n - 1));
+  }
   return repr_call("SimulationResult", {{"records", py::int_(n)},
                                         {"t", span},
                                         {"diverged", py::bool_(r.diverged)},
@@ -332,7 +352,7 @@ std::string result_repr(const SimulationResult& r) {
 // The quantities of a GlobalError with their units, in the order of max() and summary().
 struct ErrorQuantity {
   const char* name;
-  Array GlobalError::*values;
+  LazyArray GlobalError::*values;
   const char* unit;
 };
 constexpr ErrorQuantity error_quantities[] = {
@@ -353,7 +373,7 @@ double finite_max(const Array& a) {
 // {"attitude": largest estimate [rad], ...} over every record (and body).
 py::dict error_max(const GlobalError& e) {
   py::dict out;
-  for (const ErrorQuantity& q : error_quantities) out[q.name] = finite_max(e.*q.values);
+  for (const ErrorQuantity& q : error_quantities) out[q.name] = finite_max((e.*q.values).get());
   return out;
 }
 
@@ -371,8 +391,9 @@ std::string error_summary(const GlobalError& e) {
       first_other = where + ": " + v;
     }
   };
-  for (std::size_t i = 0; i < e.verdict.size(); ++i) {
-    const py::handle item = e.verdict[i];
+  const py::tuple verdict = e.verdicts.verdict();
+  for (std::size_t i = 0; i < verdict.size(); ++i) {
+    const py::handle item = verdict[i];
     if (!py::isinstance<py::tuple>(item)) {
       count(item, "record " + std::to_string(i));
       continue;
@@ -388,7 +409,7 @@ std::string error_summary(const GlobalError& e) {
   const char* separator = " ";
   for (const ErrorQuantity& q : error_quantities) {
     char value[32];
-    std::snprintf(value, sizeof value, "%.2g", finite_max(e.*q.values));
+    std::snprintf(value, sizeof value, "%.2g", finite_max((e.*q.values).get()));
     text += separator + std::string(q.name) + " " + value + " " + q.unit;
     separator = ", ";
   }
@@ -397,7 +418,7 @@ std::string error_summary(const GlobalError& e) {
 }
 
 // A GlobalError's pickle state: order, the seven arrays of error_arrays, verdict, reliable.
-constexpr Array GlobalError::*error_arrays[] = {&GlobalError::attitude, &GlobalError::angular_velocity,
+constexpr LazyArray GlobalError::*error_arrays[] = {&GlobalError::attitude, &GlobalError::angular_velocity,
                                                 &GlobalError::position, &GlobalError::velocity,
                                                 &GlobalError::energy,   &GlobalError::angular_momentum,
                                                 &GlobalError::observed_order};
@@ -405,9 +426,9 @@ constexpr Array GlobalError::*error_arrays[] = {&GlobalError::attitude, &GlobalE
 py::tuple global_error_state(const GlobalError& e) {
   py::tuple out(10);
   out[0] = py::int_(e.order);
-  for (std::size_t k = 0; k < 7; ++k) out[k + 1] = e.*error_arrays[k];
-  out[8] = e.verdict;
-  out[9] = e.reliable;
+  for (std::size_t k = 0; k < 7; ++k) out[k + 1] = (e.*error_arrays[k]).get();
+  out[8] = e.verdicts.verdict();
+  out[9] = e.verdicts.reliable();
   return out;
 }
 
@@ -419,20 +440,23 @@ GlobalError global_error_from_state(const py::tuple& t) {
   for (std::size_t k = 0; k < 7; ++k) {
     Array a = Array::ensure(numpy.attr("array")(t[k + 1], "float64"));  // a copy
     py_io::set_read_only(a);
-    e.*error_arrays[k] = a;
+    e.*error_arrays[k] = LazyArray(a);
   }
-  e.verdict = py::tuple(t[8]);
-  e.reliable = py::array_t<bool>::ensure(numpy.attr("array")(t[9], "bool"));
-  py_io::set_read_only(e.reliable);
+  py::array_t<bool> reliable = py::array_t<bool>::ensure(numpy.attr("array")(t[9], "bool"));
+  py_io::set_read_only(reliable);
+  e.verdicts = LazyVerdicts(py::tuple(t[8]), reliable);
   return e;
 }
 
 // Every field the same (arrays bitwise, NaN equal to NaN).
 bool same_error(const GlobalError& a, const GlobalError& b) {
   const py::object array_equal = py::module_::import("numpy").attr("array_equal");
-  if (a.order != b.order || !a.verdict.equal(b.verdict) || !array_equal(a.reliable, b.reliable).cast<bool>()) return false;
+  if (a.order != b.order || !a.verdicts.verdict().equal(b.verdicts.verdict()) ||
+      !array_equal(a.verdicts.reliable(), b.verdicts.reliable()).cast<bool>()) {
+    return false;
+  }
   for (const auto member : error_arrays) {
-    if (!array_equal(a.*member, b.*member, py::arg("equal_nan") = true).cast<bool>()) return false;
+    if (!array_equal((a.*member).get(), (b.*member).get(), py::arg("equal_nan") = true).cast<bool>()) return false;
   }
   return true;
 }
@@ -877,24 +901,27 @@ True
   error_class
       .def_readonly("order", &GlobalError::order,
                     "The order p the estimate assumed: the run's order (0: the method 'exact', round-off bound only).")
-      .def_readonly("attitude", &GlobalError::attitude,
+      .def_property_readonly("attitude", array_of(&GlobalError::attitude),
                     "Error of q_WB as a rotation angle [rad], shape (n,) ((n, nb) for a scene; a batch's with a leading "
                     "sample axis, (N, n) or (N, n, nb)).")
-      .def_readonly("angular_velocity", &GlobalError::angular_velocity,
+      .def_property_readonly("angular_velocity", array_of(&GlobalError::angular_velocity),
                     "Error of w_B, the norm [rad/s], shape (n,) ((n, nb) for a scene; a batch's (N, n) or (N, n, nb)).")
-      .def_readonly("position", &GlobalError::position, "Error of p_W, the norm [m], shape (n,) ((n, nb) for a scene; a batch's (N, n) or (N, n, nb)).")
-      .def_readonly("velocity", &GlobalError::velocity,
+      .def_property_readonly("position", array_of(&GlobalError::position),
+                             "Error of p_W, the norm [m], shape (n,) ((n, nb) for a scene; a batch's (N, n) or (N, n, nb)).")
+      .def_property_readonly("velocity", array_of(&GlobalError::velocity),
                     "Error of v_W, the norm [m/s], shape (n,) ((n, nb) for a scene; a batch's (N, n) or (N, n, nb)).")
-      .def_readonly("energy", &GlobalError::energy, "Error of total_energy [J], shape (n,) (a batch's (N, n)).")
-      .def_readonly("angular_momentum", &GlobalError::angular_momentum,
+      .def_property_readonly("energy", array_of(&GlobalError::energy),
+                             "Error of total_energy [J], shape (n,) (a batch's (N, n)).")
+      .def_property_readonly("angular_momentum", array_of(&GlobalError::angular_momentum),
                     "Error of |L| (angular_momentum_norm of a body, |angular_momentum_W| of a scene) [kg m^2/s], shape (n,) (a batch's (N, n)).")
-      .def_readonly("observed_order", &GlobalError::observed_order,
+      .def_property_readonly("observed_order", array_of(&GlobalError::observed_order),
                     "log2 r of the quantity whose ratio r is furthest from 2^p, shape (n,) (a batch's (N, n)); NaN where every quantity is "
                     "at round-off level or no estimate was computed.")
-      .def_readonly("verdict", &GlobalError::verdict,
+      .def_property_readonly("verdict", [](const GlobalError& e) { return e.verdicts.verdict(); },
                     "'reliable' or the reason the estimate is not, per record (a tuple of n str; a batch's: a tuple of N "
                     "such tuples, one per sample).")
-      .def_readonly("reliable", &GlobalError::reliable, "verdict == 'reliable', shape (n,) (bool; a batch's (N, n)).")
+      .def_property_readonly("reliable", [](const GlobalError& e) { return e.verdicts.reliable(); },
+                             "verdict == 'reliable', shape (n,) (bool; a batch's (N, n)).")
       .def("max", &error_max,
            R"doc(The largest estimate of each quantity over the records (and bodies).
 
@@ -959,20 +986,23 @@ Examples
 >>> r.kinetic_energy  # 1/2 I_z w_z^2
 array([1.5, 1.5, 1.5])
 )doc")
-      .def_readonly("t", &SimulationResult::t, "Time of each record, shape (n,) [s].")
-      .def_readonly("p_W", &SimulationResult::p_W, "Centre of mass position in W, shape (n, 3) [m].")
-      .def_readonly("q_WB", &SimulationResult::q_WB,
+      .def_property_readonly("t", array_of(&SimulationResult::t), "Time of each record, shape (n,) [s].")
+      .def_property_readonly("p_W", array_of(&SimulationResult::p_W), "Centre of mass position in W, shape (n, 3) [m].")
+      .def_property_readonly("q_WB", array_of(&SimulationResult::q_WB),
                     "Attitude q_WB (B to W), shape (n, 4), (x, y, z, w) unless scalar_first.")
-      .def_readonly("v_W", &SimulationResult::v_W, "Centre of mass velocity in W, shape (n, 3) [m/s].")
-      .def_readonly("w_B", &SimulationResult::w_B, "Angular velocity of B in W, expressed in B, shape (n, 3) [rad/s].")
-      .def_readonly("kinetic_energy", &SimulationResult::kinetic_energy, "Kinetic energy, shape (n,) [J].")
-      .def_readonly("total_energy", &SimulationResult::total_energy,
+      .def_property_readonly("v_W", array_of(&SimulationResult::v_W),
+                             "Centre of mass velocity in W, shape (n, 3) [m/s].")
+      .def_property_readonly("w_B", array_of(&SimulationResult::w_B),
+                             "Angular velocity of B in W, expressed in B, shape (n, 3) [rad/s].")
+      .def_property_readonly("kinetic_energy", array_of(&SimulationResult::kinetic_energy),
+                             "Kinetic energy, shape (n,) [J].")
+      .def_property_readonly("total_energy", array_of(&SimulationResult::total_energy),
                     "Kinetic + gravity potential energy (zero at W's origin), shape (n,) [J].")
-      .def_readonly("angular_momentum_norm", &SimulationResult::angular_momentum_norm,
+      .def_property_readonly("angular_momentum_norm", array_of(&SimulationResult::angular_momentum_norm),
                     "|H_G|, the norm of the angular momentum about the centre of mass, shape (n,) [kg m^2/s].")
-      .def_readonly("quaternion_norm_error", &SimulationResult::quaternion_norm_error,
+      .def_property_readonly("quaternion_norm_error", array_of(&SimulationResult::quaternion_norm_error),
                     "|q_WB| - 1 of each record, shape (n,) (dimensionless).")
-      .def_readonly("work", &SimulationResult::work,
+      .def_property_readonly("work", array_of(&SimulationResult::work),
                     "Work of the loads and gravity since t0, shape (n,) [J] (integrated by the run's method).")
       .def_readonly("diverged", &SimulationResult::diverged, "True if the run stopped on a non-finite state (a bool).")
       .def_readonly("unconverged_steps", &SimulationResult::unconverged_steps,

@@ -246,18 +246,17 @@ std::optional<double> as_optional_scalar(py::handle obj, const std::string& name
 }
 
 std::int64_t as_int(py::handle obj, const std::string& name, std::int64_t lo, std::int64_t hi) {
-  const std::string expected =
-      "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+  const auto expected = [&] { return "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]"; };
   PyObject* p = obj.ptr();
-  if (PyBool_Check(p) || PyFloat_Check(p) || !PyIndex_Check(p)) throw_type_error(name, expected, obj);
+  if (PyBool_Check(p) || PyFloat_Check(p) || !PyIndex_Check(p)) throw_type_error(name, expected(), obj);
   const py::object index = py::reinterpret_steal<py::object>(PyNumber_Index(p));
   if (!index) {
     clear_error_unless_interrupt();
-    throw_type_error(name, expected, obj);
+    throw_type_error(name, expected(), obj);
   }
   int overflow = 0;
   const long long value = PyLong_AsLongLongAndOverflow(index.ptr(), &overflow);
-  if (overflow != 0 || value < lo || value > hi) throw_value_error(name, expected, std::string(py::str(index)));
+  if (overflow != 0 || value < lo || value > hi) throw_value_error(name, expected(), std::string(py::str(index)));
   return value;
 }
 

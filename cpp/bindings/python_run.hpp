@@ -7,9 +7,13 @@
 #include <pybind11/pybind11.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
+#include <initializer_list>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -57,6 +61,45 @@ inline py_io::Array adopt(std::vector<double>&& data, std::vector<pybind11::ssiz
   return out;
 }
 
+// A read-only numpy array made on its first read: the std::vector of its values (and its shape) until then, then the
+// array that adopts it (adopt: no copy). A result whose arrays are read in part (a control loop reading the last
+// state) pays for the arrays it reads only.
+class LazyArray {
+ public:
+  LazyArray() = default;
+  // values of shape (d0), (d0, d1) or (d0, d1, d2)
+  LazyArray(std::vector<double>&& values, std::initializer_list<pybind11::ssize_t> shape)
+      : LazyArray(std::move(values), shape.begin(), shape.size()) {}
+  LazyArray(std::vector<double>&& values, const std::vector<pybind11::ssize_t>& shape)
+      : LazyArray(std::move(values), shape.data(), shape.size()) {}
+  // an array made already (an unpickled or sliced result)
+  explicit LazyArray(py_io::Array made) : array_(std::move(made)) {}
+
+  // The array (GIL held)
+  py_io::Array get() const {
+    if (!array_) array_ = adopt(std::move(values_), {shape_.begin(), shape_.begin() + ndim_});
+    return pybind11::reinterpret_borrow<py_io::Array>(array_);
+  }
+
+ private:
+  LazyArray(std::vector<double>&& values, const pybind11::ssize_t* shape, std::size_t ndim)
+      : values_(std::move(values)), ndim_(ndim) {
+    if (ndim > shape_.size()) throw std::logic_error("LazyArray: at most 3 dimensions");
+    std::copy(shape, shape + ndim, shape_.begin());
+  }
+
+  mutable std::vector<double> values_;
+  std::array<pybind11::ssize_t, 3> shape_{};  // its first ndim_ entries
+  std::size_t ndim_ = 0;
+  mutable pybind11::object array_;  // null until made
+};
+
+// The getter of a result's LazyArray member, for def_property_readonly.
+template <class Result>
+auto array_of(LazyArray Result::*member) {
+  return [member](const Result& r) { return (r.*member).get(); };
+}
+
 // Reorders n quaternions (x, y, z, w) in place to (w, x, y, z).
 inline void to_scalar_first(std::vector<double>& q_xyzw) {
   for (std::size_t i = 0; i + 4 <= q_xyzw.size(); i += 4) {
@@ -65,15 +108,6 @@ inline void to_scalar_first(std::vector<double>& q_xyzw) {
     q[3] = q[2], q[2] = q[1], q[1] = q[0], q[0] = w;
   }
 }
-
-// simulate's global error estimate (rigiddyn.GlobalError; its docstring in bind_dynamics.cpp): per record (n), and
-// per body (n, nb) for a scene's state quantities.
-struct GlobalError {
-  int order;
-  py_io::Array attitude, angular_velocity, position, velocity, energy, angular_momentum, observed_order;
-  pybind11::tuple verdict;
-  pybind11::array_t<bool> reliable;
-};
 
 // The Python str of each verdict of an estimate, equal verdicts sharing one: the last few distinct ones are
 // compared first (a run's records alternate between a few verdicts, e.g. "reliable" and "interpolated ..."), the
@@ -98,32 +132,71 @@ class VerdictStrings {
   std::size_t next_ = 0;
 };
 
+// A GlobalError's verdicts as Python reads them, verdict (a tuple of str, equal verdicts sharing one; a batch's a
+// tuple of tuples) and reliable (verdict == "reliable", a read-only bool array): one run's made on their first read
+// from the core's strings, a batch's or an unpickled estimate's given made.
+class LazyVerdicts {
+ public:
+  LazyVerdicts() = default;
+  explicit LazyVerdicts(std::vector<std::string>&& verdicts) : texts_(std::move(verdicts)) {}
+  LazyVerdicts(pybind11::tuple verdict, pybind11::array_t<bool> reliable)
+      : verdict_(std::move(verdict)), reliable_(std::move(reliable)) {}
+
+  pybind11::tuple verdict() const {
+    make();
+    return pybind11::reinterpret_borrow<pybind11::tuple>(verdict_);
+  }
+  pybind11::array_t<bool> reliable() const {
+    make();
+    return pybind11::reinterpret_borrow<pybind11::array_t<bool>>(reliable_);
+  }
+
+ private:
+  void make() const {
+    namespace py = pybind11;
+    if (verdict_) return;
+    const auto n = static_cast<py::ssize_t>(texts_.size());
+    py::array_t<bool> reliable(n);
+    bool* is_reliable = reliable.mutable_data();
+    py::tuple verdict(n);
+    VerdictStrings strings;
+    for (py::ssize_t i = 0; i < n; ++i) {
+      const std::string& v = texts_[static_cast<std::size_t>(i)];
+      is_reliable[i] = v == "reliable";
+      verdict[i] = strings(v);
+    }
+    py_io::set_read_only(reliable);
+    verdict_ = std::move(verdict), reliable_ = std::move(reliable);
+    texts_.clear();
+  }
+
+  mutable std::vector<std::string> texts_;
+  mutable pybind11::object verdict_, reliable_;  // null until made
+};
+
+// simulate's global error estimate (rigiddyn.GlobalError; its docstring in bind_dynamics.cpp): per record (n), and
+// per body (n, nb) for a scene's state quantities; each array made on its first read.
+struct GlobalError {
+  int order;
+  LazyArray attitude, angular_velocity, position, velocity, energy, angular_momentum, observed_order;
+  LazyVerdicts verdicts;
+};
+
 // The GlobalError of `e` for n records: the state quantities (n,) for one body (per_body false), else (n, nb).
 inline GlobalError to_global_error(GlobalErrorEstimate&& e, bool per_body) {
   namespace py = pybind11;
   const auto n = static_cast<py::ssize_t>(e.verdict.size());
   const std::vector<py::ssize_t> state_shape =
       per_body ? std::vector<py::ssize_t>{n, static_cast<py::ssize_t>(e.bodies)} : std::vector<py::ssize_t>{n};
-  py::array_t<bool> reliable(n);
-  bool* is_reliable = reliable.mutable_data();
-  py::tuple verdict(n);
-  VerdictStrings texts;
-  for (py::ssize_t i = 0; i < n; ++i) {
-    const std::string& v = e.verdict[static_cast<std::size_t>(i)];
-    is_reliable[i] = v == "reliable";
-    verdict[i] = texts(v);
-  }
-  py_io::set_read_only(reliable);
   return GlobalError{e.order,
-                     adopt(std::move(e.attitude), state_shape),
-                     adopt(std::move(e.angular_velocity), state_shape),
-                     adopt(std::move(e.position), state_shape),
-                     adopt(std::move(e.velocity), state_shape),
-                     adopt(std::move(e.energy), {n}),
-                     adopt(std::move(e.angular_momentum), {n}),
-                     adopt(std::move(e.observed_order), {n}),
-                     verdict,
-                     reliable};
+                     LazyArray(std::move(e.attitude), state_shape),
+                     LazyArray(std::move(e.angular_velocity), state_shape),
+                     LazyArray(std::move(e.position), state_shape),
+                     LazyArray(std::move(e.velocity), state_shape),
+                     LazyArray(std::move(e.energy), {n}),
+                     LazyArray(std::move(e.angular_momentum), {n}),
+                     LazyArray(std::move(e.observed_order), {n}),
+                     LazyVerdicts(std::move(e.verdict))};
 }
 
 // The GlobalError of a batch's estimates `e`: each array with a leading sample axis, (N, n) for one body per
@@ -149,15 +222,14 @@ inline GlobalError to_batch_global_error(BatchErrorEstimate&& e, bool per_body) 
   }
   py_io::set_read_only(reliable);
   return GlobalError{e.order,
-                     adopt(std::move(e.attitude), state_shape),
-                     adopt(std::move(e.angular_velocity), state_shape),
-                     adopt(std::move(e.position), state_shape),
-                     adopt(std::move(e.velocity), state_shape),
-                     adopt(std::move(e.energy), {N, n}),
-                     adopt(std::move(e.angular_momentum), {N, n}),
-                     adopt(std::move(e.observed_order), {N, n}),
-                     verdict,
-                     reliable};
+                     LazyArray(std::move(e.attitude), state_shape),
+                     LazyArray(std::move(e.angular_velocity), state_shape),
+                     LazyArray(std::move(e.position), state_shape),
+                     LazyArray(std::move(e.velocity), state_shape),
+                     LazyArray(std::move(e.energy), {N, n}),
+                     LazyArray(std::move(e.angular_momentum), {N, n}),
+                     LazyArray(std::move(e.observed_order), {N, n}),
+                     LazyVerdicts(verdict, reliable)};
 }
 
 // Sample i of a batch's GlobalError (its first `rows` records), as simulate gives it for that sample alone; None
@@ -172,11 +244,12 @@ inline pybind11::object sample_error(pybind11::handle batch_error, pybind11::ssi
     py_io::set_read_only(out);
     return out;
   };
-  const auto values = [&](const py_io::Array& a) { return py_io::Array::ensure(rows_of(a)); };
-  const py::tuple verdict(py::tuple(e.verdict[static_cast<std::size_t>(i)])[first]);
+  const auto values = [&](const LazyArray& a) { return LazyArray(py_io::Array::ensure(rows_of(a.get()))); };
+  const py::tuple verdict(py::tuple(e.verdicts.verdict()[static_cast<std::size_t>(i)])[first]);
   return py::cast(GlobalError{e.order, values(e.attitude), values(e.angular_velocity), values(e.position),
                               values(e.velocity), values(e.energy), values(e.angular_momentum),
-                              values(e.observed_order), verdict, py::array_t<bool>::ensure(rows_of(e.reliable))});
+                              values(e.observed_order),
+                              LazyVerdicts(verdict, py::array_t<bool>::ensure(rows_of(e.verdicts.reliable())))});
 }
 
 // simulate's accuracy_level: None (no AccuracyWarning: nullopt) or a finite relative level > 0 (accuracy_check.hpp).
@@ -269,14 +342,17 @@ auto interruptible(Simulate&& simulate, bool& interrupted) {
 
 // simulate's monitor from Python (SimulationOptions::monitor): at most every 50 ms of the run it takes
 // the GIL, lets Python handle signals (Ctrl-C raises KeyboardInterrupt; only the main thread gets
-// them, so other threads skip this unless they report progress) and calls progress(steps_done). An
-// exception from either stops the run and is kept for the binding to raise once the GIL is back.
+// them, so other threads skip this unless they report progress) and calls progress(steps_done), first after
+// the first step when there is a progress, else after 50 ms (a run shorter than that leaves the signals to
+// Python, which handles them as the call returns). An exception from either stops the run and is kept for the
+// binding to raise once the GIL is back.
 class PythonMonitor {
  public:
   explicit PythonMonitor(pybind11::handle progress)
       : progress_(progress.is_none() ? pybind11::object()
                                      : py_io::as_callable(progress, "progress", "a callable(steps_done) or None")),
-        main_thread_(PyThread_get_thread_ident() == main_thread_ident()) {}
+        main_thread_(PyThread_get_thread_ident() == main_thread_ident()),
+        next_call_(std::chrono::steady_clock::now() + (progress_ ? std::chrono::milliseconds(0) : period)) {}
 
   // threading.main_thread().ident, looked up once per process (a fork makes its calling thread the child's main
   // thread: the process id tells a child from its parent).
@@ -296,7 +372,7 @@ class PythonMonitor {
   bool operator()(std::int64_t steps_done) {
     const auto now = std::chrono::steady_clock::now();
     if (now < next_call_) return false;
-    next_call_ = now + std::chrono::milliseconds(50);
+    next_call_ = now + period;
     pybind11::gil_scoped_acquire gil;
     try {
       if (main_thread_ && PyErr_CheckSignals() != 0) throw pybind11::error_already_set();
@@ -318,9 +394,10 @@ class PythonMonitor {
   }
 
  private:
+  static constexpr std::chrono::milliseconds period{50};
   pybind11::object progress_;
   bool main_thread_;
-  std::chrono::steady_clock::time_point next_call_ = std::chrono::steady_clock::now();
+  std::chrono::steady_clock::time_point next_call_;
   std::optional<pybind11::error_already_set> error_;
 };
 
@@ -374,15 +451,23 @@ inline std::vector<RecordColumn> record_columns(const BatchSceneSimulation& r) {
 // "kinetic_energy from t = 0, total_energy from t = 0": each quantity of `columns` with a non-finite value in
 // the first `rows` records of run i (of N runs of n records; t (N, n) their times [s]), with the time of the
 // first such record; "" when there is none.
+// Whether the n values at x are all finite: one pass without a branch per value (|x| <= DBL_MAX is false for ±inf
+// and NaN), which the compiler vectorises.
+inline bool all_finite(const double* x, std::size_t n) {
+  bool finite = true;
+  for (std::size_t k = 0; k < n; ++k) finite &= std::abs(x[k]) <= std::numeric_limits<double>::max();
+  return finite;
+}
+
 inline std::string non_finite_quantities(const std::vector<RecordColumn>& columns, const std::vector<double>& t,
                                          std::size_t N, std::size_t n, std::size_t i, std::size_t rows) {
   std::string found;
   for (const RecordColumn& c : columns) {
     const std::size_t width = N * n == 0 ? 0 : c.values->size() / (N * n);
     const double* run = c.values->data() + i * n * width;
-    if (width == 0 || Eigen::Map<const Eigen::ArrayXd>(run, static_cast<Eigen::Index>(rows * width)).allFinite()) continue;
+    if (width == 0 || all_finite(run, rows * width)) continue;
     std::size_t r = 0;
-    while (Eigen::Map<const Eigen::ArrayXd>(run + r * width, static_cast<Eigen::Index>(width)).allFinite()) ++r;
+    while (all_finite(run + r * width, width)) ++r;
     found += (found.empty() ? "" : ", ") + std::string(c.name) + " from t = " + format_value(t[i * n + r]);
   }
   return found;

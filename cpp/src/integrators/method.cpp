@@ -78,10 +78,12 @@ const MethodInfo& method_info(Method method) {
 }
 
 Method method_from_name(const std::string& name, const std::string& argument) {
-  std::vector<std::string> names;
-  std::string listed;
   for (const MethodInfo& info : method_table()) {
     if (info.name == name) return info.method;
+  }
+  std::vector<std::string> names;  // no such method: the message lists them (built here only)
+  std::string listed;
+  for (const MethodInfo& info : method_table()) {
     names.push_back(info.name);
     listed += (listed.empty() ? "" : ", ") + info.name;
   }

@@ -29,23 +29,15 @@ std::vector<bool> reliable_records(const GlobalErrorEstimate* e, std::size_t n) 
   return reliable;
 }
 
-// What residual q may be at each record: max(estimate_factor · bound, estimate_floor · level · scale) + round-off
-// where the estimate is reliable (and that allowance finite), else level · scale + round-off.
-std::vector<double> allowance_of(const RunBalance& b, std::size_t q, const AccuracyCheck& c,
-                                 const std::vector<bool>& reliable) {
-  const std::size_t n = b.size();
-  std::vector<double> out(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const double fallback = c.level * b.scale[q][i] + b.round_off[q][i];
-    if (!reliable[i] || c.bounds == nullptr || i >= (*c.bounds)[q].size()) {
-      out[i] = fallback;
-      continue;
-    }
-    const double estimated = estimate_factor * (*c.bounds)[q][i], floor = estimate_floor * c.level * b.scale[q][i];
-    const double bound = std::max(estimated, floor) + b.round_off[q][i];
-    out[i] = std::isfinite(estimated) && std::isfinite(floor) && std::isfinite(bound) ? bound : fallback;
-  }
-  return out;
+// What residual q may be at record i: max(estimate_factor · bound, estimate_floor · level · scale) + round-off where
+// the estimate is reliable (and that allowance finite), else level · scale + round-off.
+double allowance_at(const RunBalance& b, std::size_t q, const AccuracyCheck& c, const std::vector<bool>& reliable,
+                    std::size_t i) {
+  const double fallback = c.level * b.scale[q][i] + b.round_off[q][i];
+  if (!reliable[i] || c.bounds == nullptr || i >= (*c.bounds)[q].size()) return fallback;
+  const double estimated = estimate_factor * (*c.bounds)[q][i], floor = estimate_floor * c.level * b.scale[q][i];
+  const double bound = std::max(estimated, floor) + b.round_off[q][i];
+  return std::isfinite(estimated) && std::isfinite(floor) && std::isfinite(bound) ? bound : fallback;
 }
 
 // A quantity beyond its allowance: how far (residual / allowance at its worst record) and the message's text.
@@ -98,15 +90,16 @@ std::string check_accuracy(RunBalance& b, const AccuracyCheck& c) {
   std::vector<Finding> findings;
   for (std::size_t q = 0; q < balance_quantity_count; ++q) {
     if (!b.applies(static_cast<BalanceQuantity>(q))) continue;
-    const std::vector<double> allowance = allowance_of(b, q, c, reliable);
     // the record furthest beyond its allowance (a record that overflowed is not: simulate warns of it)
     std::size_t worst = n;
-    double worst_ratio = 0.0;
+    double worst_ratio = 0.0, worst_allowance = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
       const double r = std::abs(b.residual[q][i]);
-      if (!std::isfinite(r) || !(r > allowance[i])) continue;
-      const double ratio = r / std::max(allowance[i], std::numeric_limits<double>::min());
-      if (worst == n || ratio > worst_ratio) worst = i, worst_ratio = ratio;
+      if (!std::isfinite(r)) continue;
+      const double allowance = allowance_at(b, q, c, reliable, i);
+      if (!(r > allowance)) continue;
+      const double ratio = r / std::max(allowance, std::numeric_limits<double>::min());
+      if (worst == n || ratio > worst_ratio) worst = i, worst_ratio = ratio, worst_allowance = allowance;
     }
     if (worst == n) continue;
     const char* unit = balance_quantity_units[q];
@@ -116,7 +109,8 @@ std::string check_accuracy(RunBalance& b, const AccuracyCheck& c) {
                                            : std::string();
     const std::string why =
         reliable[worst] ? "beyond " + formatted("%g", estimate_factor) + " x the reliable global error estimate's bound (" +
-                              formatted("%.3g", allowance[worst]) + " " + unit + " with round-off): the estimate is contradicted"
+                              formatted("%.3g", worst_allowance) + " " + unit +
+                              " with round-off): the estimate is contradicted"
                         : "beyond the level " + formatted("%g", c.level) +
                               " of its scale (no reliable global error estimate there)";
     std::string name = balance_quantity_names[q];
