@@ -209,7 +209,7 @@ std::string batch_result_repr(const BatchResult& r) {
 struct SceneColumn {
   const char* name;
   std::vector<double> BatchSceneSimulation::*data;
-  py_io::Array SceneResult::*member;
+  LazyArray SceneResult::*member;
   std::vector<py::ssize_t> tail;
 };
 const SceneColumn scene_columns[] = {
@@ -339,11 +339,13 @@ SceneResult batch_scene_sample(const BatchSceneResult& r, py::handle key) {
   const py::ssize_t i = sample_index(key, r.samples(), "BatchSceneResult");
   const py::ssize_t rows = r.filled.attr("__getitem__")(i).cast<py::ssize_t>();
   SceneResult out;
-  for (std::size_t k = 0; k < scene_column_count; ++k) out.*(scene_columns[k].member) = sample_rows(r.arrays[k], i, rows);
+  for (std::size_t k = 0; k < scene_column_count; ++k) {
+    out.*(scene_columns[k].member) = LazyArray(sample_rows(r.arrays[k], i, rows));
+  }
   out.body_names = r.body_names;
   out.elements = r.elements;
-  out.wheel_speed = sample_rows(r.wheel_speed, i, rows);
-  out.motor_work = sample_rows(r.motor_work, i, rows);
+  out.wheel_speed = LazyArray(sample_rows(r.wheel_speed, i, rows));
+  out.motor_work = LazyArray(sample_rows(r.motor_work, i, rows));
   out.wheel_bodies = r.wheel_bodies;
   out.diverged = r.diverged.attr("__getitem__")(i).cast<bool>();
   out.unconverged_steps = r.unconverged_steps.attr("__getitem__")(i).cast<std::int64_t>();

@@ -270,26 +270,26 @@ SceneResult to_scene_result(SceneSimulation&& r, const Scene& scene, const Compi
   if (r.mass_flow_energy.empty()) r.mass_flow_energy.assign(r.mass.size(), 0.0);  // no mass flow: all 0
   const py::tuple wheel_bodies = wheel_bodies_of(scene);
   const auto nw = static_cast<py::ssize_t>(wheel_bodies.size());
-  return SceneResult{adopt(std::move(r.t), {n}),
-                     adopt(std::move(r.p_W), {n, nb, 3}),
-                     adopt(std::move(r.q_WB), {n, nb, 4}),
-                     adopt(std::move(r.v_W), {n, nb, 3}),
-                     adopt(std::move(r.w_B), {n, nb, 3}),
-                     adopt(std::move(r.kinetic_energy), {n}),
-                     adopt(std::move(r.potential_energy), {n}),
-                     adopt(std::move(r.total_energy), {n}),
-                     adopt(std::move(r.linear_momentum_W), {n, 3}),
-                     adopt(std::move(r.angular_momentum_W), {n, 3}),
-                     adopt(std::move(r.pivot_reaction_W), {n, nb, 3}),
-                     adopt(std::move(r.angular_momentum_O_W), {n, nb, 3}),
-                     adopt(std::move(r.mass), {n, nb}),
-                     adopt(std::move(r.work), {n, ne}),
-                     adopt(std::move(r.power), {n, ne}),
-                     adopt(std::move(r.mass_flow_energy), {n, nb}),
+  return SceneResult{LazyArray(std::move(r.t), {n}),
+                     LazyArray(std::move(r.p_W), {n, nb, 3}),
+                     LazyArray(std::move(r.q_WB), {n, nb, 4}),
+                     LazyArray(std::move(r.v_W), {n, nb, 3}),
+                     LazyArray(std::move(r.w_B), {n, nb, 3}),
+                     LazyArray(std::move(r.kinetic_energy), {n}),
+                     LazyArray(std::move(r.potential_energy), {n}),
+                     LazyArray(std::move(r.total_energy), {n}),
+                     LazyArray(std::move(r.linear_momentum_W), {n, 3}),
+                     LazyArray(std::move(r.angular_momentum_W), {n, 3}),
+                     LazyArray(std::move(r.pivot_reaction_W), {n, nb, 3}),
+                     LazyArray(std::move(r.angular_momentum_O_W), {n, nb, 3}),
+                     LazyArray(std::move(r.mass), {n, nb}),
+                     LazyArray(std::move(r.work), {n, ne}),
+                     LazyArray(std::move(r.power), {n, ne}),
+                     LazyArray(std::move(r.mass_flow_energy), {n, nb}),
                      names_tuple(scene),
                      element_kinds(compiled),
-                     adopt(std::move(r.wheel_speed), {n, nw}),
-                     adopt(std::move(r.motor_work), {n, nw}),
+                     LazyArray(std::move(r.wheel_speed), {n, nw}),
+                     LazyArray(std::move(r.motor_work), {n, nw}),
                      wheel_bodies,
                      r.diverged,
                      r.unconverged_steps,
@@ -301,7 +301,7 @@ SceneResult to_scene_result(SceneSimulation&& r, const Scene& scene, const Compi
 // -2: elements).
 struct ResultArray {
   const char* name;
-  Array SceneResult::*member;
+  LazyArray SceneResult::*member;
   std::vector<py::ssize_t> tail;
 };
 const ResultArray result_arrays[] = {
@@ -326,15 +326,15 @@ constexpr std::size_t result_array_count = sizeof(result_arrays) / sizeof(result
 
 py::tuple scene_result_state(const SceneResult& r) {
   py::tuple out(result_array_count + 12);
-  for (std::size_t i = 0; i < result_array_count; ++i) out[i] = r.*(result_arrays[i].member);
+  for (std::size_t i = 0; i < result_array_count; ++i) out[i] = (r.*(result_arrays[i].member)).get();
   out[result_array_count] = r.body_names;
   out[result_array_count + 1] = r.elements;
   out[result_array_count + 2] = py::bool_(r.diverged);
   out[result_array_count + 3] = py::int_(r.unconverged_steps);
   out[result_array_count + 4] = py::float_(r.elapsed_seconds);
   out[result_array_count + 5] = py::bool_(r.scalar_first);
-  out[result_array_count + 6] = r.wheel_speed;
-  out[result_array_count + 7] = r.motor_work;
+  out[result_array_count + 6] = r.wheel_speed.get();
+  out[result_array_count + 7] = r.motor_work.get();
   out[result_array_count + 8] = r.wheel_bodies;
   out[result_array_count + 9] = r.error;
   out[result_array_count + 10] = r.balance.get();
@@ -372,7 +372,7 @@ SceneResult scene_result_from_state(const py::tuple& t) {
                                py_io::describe(t[i]));
     }
     py_io::set_read_only(a);
-    r.*(result_arrays[i].member) = a;
+    r.*(result_arrays[i].member) = LazyArray(a);
   }
   r.diverged = t[result_array_count + 2].cast<bool>();
   r.unconverged_steps = t[result_array_count + 3].cast<std::int64_t>();
@@ -399,8 +399,8 @@ SceneResult scene_result_from_state(const py::tuple& t) {
     py_io::set_read_only(a);
     return a;
   };
-  r.wheel_speed = wheel_column(result_array_count + 6, "wheel_speed");
-  r.motor_work = wheel_column(result_array_count + 7, "motor_work");
+  r.wheel_speed = LazyArray(wheel_column(result_array_count + 6, "wheel_speed"));
+  r.motor_work = LazyArray(wheel_column(result_array_count + 7, "motor_work"));
   return r;
 }
 
@@ -429,8 +429,9 @@ py::tuple wheel_bodies_of(const Scene& scene) {
 namespace {
 
 std::string scene_result_repr(const SceneResult& r) {
-  const py::ssize_t n = r.t.shape(0);
-  const py::object span = n == 0 ? py::object(py::list()) : py::object(py::make_tuple(r.t.at(0), r.t.at(n - 1)));
+  const Array t = r.t.get();
+  const py::ssize_t n = t.shape(0);
+  const py::object span = n == 0 ? py::object(py::list()) : py::object(py::make_tuple(t.at(0), t.at(n - 1)));
   return repr_call("SceneResult", {{"records", py::int_(n)},
                                    {"body_names", r.body_names},
                                    {"elements", r.elements},
@@ -1063,33 +1064,38 @@ void bind_scene(py::module_& m) {
   compiled.attr("__hash__") = py::none();
 
   py::class_<SceneResult>(m, "SceneResult", scene_result_doc)
-      .def_readonly("t", &SceneResult::t, "(n,) time [s]")
-      .def_readonly("p_W", &SceneResult::p_W, "(n, nb, 3) centre of mass positions in W [m]")
-      .def_readonly("q_WB", &SceneResult::q_WB, "(n, nb, 4) attitudes, (x, y, z, w) unless scalar_first")
-      .def_readonly("v_W", &SceneResult::v_W, "(n, nb, 3) centre of mass velocities in W [m/s]")
-      .def_readonly("w_B", &SceneResult::w_B, "(n, nb, 3) angular velocities, each in its body's B [rad/s]")
-      .def_readonly("kinetic_energy", &SceneResult::kinetic_energy, "(n,) sum over the bodies [J]")
-      .def_readonly("potential_energy", &SceneResult::potential_energy, "(n,) sum of the elements' potentials [J]")
-      .def_readonly("total_energy", &SceneResult::total_energy, "(n,) kinetic + potential [J]")
-      .def_readonly("linear_momentum_W", &SceneResult::linear_momentum_W, "(n, 3) sum of m v_W, in W [kg m/s]")
-      .def_readonly("angular_momentum_W", &SceneResult::angular_momentum_W,
+      .def_property_readonly("t", array_of(&SceneResult::t), "(n,) time [s]")
+      .def_property_readonly("p_W", array_of(&SceneResult::p_W), "(n, nb, 3) centre of mass positions in W [m]")
+      .def_property_readonly("q_WB", array_of(&SceneResult::q_WB),
+                             "(n, nb, 4) attitudes, (x, y, z, w) unless scalar_first")
+      .def_property_readonly("v_W", array_of(&SceneResult::v_W), "(n, nb, 3) centre of mass velocities in W [m/s]")
+      .def_property_readonly("w_B", array_of(&SceneResult::w_B),
+                             "(n, nb, 3) angular velocities, each in its body's B [rad/s]")
+      .def_property_readonly("kinetic_energy", array_of(&SceneResult::kinetic_energy), "(n,) sum over the bodies [J]")
+      .def_property_readonly("potential_energy", array_of(&SceneResult::potential_energy),
+                             "(n,) sum of the elements' potentials [J]")
+      .def_property_readonly("total_energy", array_of(&SceneResult::total_energy), "(n,) kinetic + potential [J]")
+      .def_property_readonly("linear_momentum_W", array_of(&SceneResult::linear_momentum_W),
+                             "(n, 3) sum of m v_W, in W [kg m/s]")
+      .def_property_readonly("angular_momentum_W", array_of(&SceneResult::angular_momentum_W),
                     "(n, 3) about W's origin, in W: sum of p_W x m v_W + R_WB I w_B [kg m^2/s]")
-      .def_readonly("pivot_reaction_W", &SceneResult::pivot_reaction_W,
+      .def_property_readonly("pivot_reaction_W", array_of(&SceneResult::pivot_reaction_W),
                     "(n, nb, 3) the pivot's force on each body, in W [N] (0 for a body not pinned)")
-      .def_readonly("angular_momentum_O_W", &SceneResult::angular_momentum_O_W,
+      .def_property_readonly("angular_momentum_O_W", array_of(&SceneResult::angular_momentum_O_W),
                     "(n, nb, 3) each body's angular momentum about its pivot O (about its centre of mass when not "
                     "pinned), in W [kg m^2/s]")
-      .def_readonly("mass", &SceneResult::mass, "(n, nb) each body's mass [kg] (changing under a MassFlow)")
-      .def_readonly("work", &SceneResult::work, "(n, ne) each element's work since t0 [J]")
-      .def_readonly("power", &SceneResult::power, "(n, ne) each element's power at the record [W]")
-      .def_readonly("mass_flow_energy", &SceneResult::mass_flow_energy,
+      .def_property_readonly("mass", array_of(&SceneResult::mass),
+                             "(n, nb) each body's mass [kg] (changing under a MassFlow)")
+      .def_property_readonly("work", array_of(&SceneResult::work), "(n, ne) each element's work since t0 [J]")
+      .def_property_readonly("power", array_of(&SceneResult::power), "(n, ne) each element's power at the record [W]")
+      .def_property_readonly("mass_flow_energy", array_of(&SceneResult::mass_flow_energy),
                     "(n, nb) each body's mass-flow energy since t0 [J]: the integral of 1/2 (dm/dt) |v|^2 + 1/2 "
                     "w.(dI/dt) w (0 for a constant mass); kinetic_energy - kinetic_energy[0] ~ work.sum(axis=1) + "
                     "mass_flow_energy.sum(axis=1)")
-      .def_readonly("wheel_speed", &SceneResult::wheel_speed,
+      .def_property_readonly("wheel_speed", array_of(&SceneResult::wheel_speed),
                     "(n, nw) each gyrostat wheel's speed relative to its body [rad/s], the wheels of the gyrostats in "
                     "the scene's order (nw = 0 without a gyrostat)")
-      .def_readonly("motor_work", &SceneResult::motor_work,
+      .def_property_readonly("motor_work", array_of(&SceneResult::motor_work),
                     "(n, nw) each wheel's motor work since t0 [J], the integral of its motor torque times its speed: "
                     "kinetic_energy - kinetic_energy[0] ~ work.sum(axis=1) + mass_flow_energy.sum(axis=1) + "
                     "motor_work.sum(axis=1)")

@@ -28,11 +28,11 @@ void bind_scene_frame(pybind11::module_& m);
 
 // simulate's records of a scene (rigiddyn.SceneResult; its docstring in bind_scene.cpp).
 struct SceneResult {
-  py_io::Array t, p_W, q_WB, v_W, w_B, kinetic_energy, potential_energy, total_energy, linear_momentum_W,
+  LazyArray t, p_W, q_WB, v_W, w_B, kinetic_energy, potential_energy, total_energy, linear_momentum_W,
       angular_momentum_W, pivot_reaction_W, angular_momentum_O_W, mass, work, power, mass_flow_energy;
   pybind11::tuple body_names, elements;
-  py_io::Array wheel_speed;      // (n, nw) each gyrostat wheel's speed relative to its body [rad/s]
-  py_io::Array motor_work;       // (n, nw) each wheel's motor work since t0 [J]
+  LazyArray wheel_speed;         // (n, nw) each gyrostat wheel's speed relative to its body [rad/s]
+  LazyArray motor_work;          // (n, nw) each wheel's motor work since t0 [J]
   pybind11::tuple wheel_bodies;  // (nw,) the body index of each wheel
   bool diverged;
   std::int64_t unconverged_steps;
