@@ -20,7 +20,6 @@
 
 #include <chrono>
 #include <cmath>
-#include <iterator>
 #include <limits>
 #include <optional>
 #include <string>
@@ -79,7 +78,6 @@ auto with_model(py::handle model, py::handle state, const char* state_name, F&& 
 // simulate's result: read-only numpy arrays, one row per record, each made on its first read (LazyArray).
 struct SimulationResult {
   LazyArray t, p_W, q_WB, v_W, w_B, kinetic_energy, total_energy, angular_momentum_norm, quaternion_norm_error, work;
-  py::ssize_t records;
   bool diverged;
   std::int64_t unconverged_steps;
   double elapsed_seconds;
@@ -88,16 +86,6 @@ struct SimulationResult {
   LazyBalance balance{};  // a rigiddyn.Balance (every simulate run) or None (a batch result)
   py::object choice = py::none();  // a ToleranceChoice (simulate(..., tolerance=...)) or None
 };
-
-// The arrays of a SimulationResult in order (its pickle state's, field by field).
-constexpr const char* result_arrays[] = {"t", "p_W", "q_WB", "v_W", "w_B", "kinetic_energy", "total_energy",
-                                         "angular_momentum_norm", "quaternion_norm_error", "work"};
-constexpr LazyArray SimulationResult::*result_members[] = {
-    &SimulationResult::t,           &SimulationResult::p_W,
-    &SimulationResult::q_WB,        &SimulationResult::v_W,
-    &SimulationResult::w_B,         &SimulationResult::kinetic_energy,
-    &SimulationResult::total_energy, &SimulationResult::angular_momentum_norm,
-    &SimulationResult::quaternion_norm_error, &SimulationResult::work};
 
 SimulationResult to_result(Trajectory&& tr, bool scalar_first) {
   const auto n = static_cast<py::ssize_t>(tr.size());
@@ -112,7 +100,6 @@ SimulationResult to_result(Trajectory&& tr, bool scalar_first) {
                           LazyArray(std::move(tr.angular_momentum_norm), {n}),
                           LazyArray(std::move(tr.quaternion_norm_error), {n}),
                           LazyArray(std::move(tr.work), {n}),
-                          n,
                           tr.diverged,
                           tr.unconverged_steps,
                           tr.elapsed_seconds,
@@ -283,17 +270,15 @@ py::typing::Union<SimulationResult, SceneResult> simulate_py(py::handle model, p
   }));
 }
 
-// The pickle state of a SimulationResult: its arrays in result_arrays' order, then its other fields.
+// The arrays of a SimulationResult in order (pickle state, field by field).
+constexpr const char* result_arrays[] = {"t", "p_W", "q_WB", "v_W", "w_B", "kinetic_energy", "total_energy",
+                                         "angular_momentum_norm", "quaternion_norm_error", "work"};
+
 py::tuple result_state(const SimulationResult& r) {
-  py::tuple out(std::size(result_members) + 7);
-  std::size_t k = 0;
-  for (const auto member : result_members) out[k++] = (r.*member).get();
-  for (py::object field : {py::object(py::bool_(r.diverged)), py::object(py::int_(r.unconverged_steps)),
-                           py::object(py::float_(r.elapsed_seconds)), py::object(py::bool_(r.scalar_first)), r.error,
-                           r.balance.get(), r.choice}) {
-    out[k++] = field;
-  }
-  return out;
+  return py::make_tuple(r.t.get(), r.p_W.get(), r.q_WB.get(), r.v_W.get(), r.w_B.get(), r.kinetic_energy.get(),
+                        r.total_energy.get(), r.angular_momentum_norm.get(), r.quaternion_norm_error.get(),
+                        r.work.get(), r.diverged, r.unconverged_steps, r.elapsed_seconds, r.scalar_first, r.error,
+                        r.balance.get(), r.choice);
 }
 
 // A pickled array as a read-only float64 copy of the shape it must have ((n,) or (n, k), n records).
@@ -318,7 +303,7 @@ SimulationResult result_from_state(const py::tuple& t) {
   const py::ssize_t n = py::len(t[0]);
   auto column = [&](int i, py::ssize_t k) { return LazyArray(unpickled_array(t[i], result_arrays[i], n, k)); };
   SimulationResult r{column(0, 0), column(1, 3), column(2, 4), column(3, 3), column(4, 3), column(5, 0),
-                     column(6, 0), column(7, 0), column(8, 0), column(9, 0), n, t[10].cast<bool>(),
+                     column(6, 0), column(7, 0), column(8, 0), column(9, 0), t[10].cast<bool>(),
                      t[11].cast<std::int64_t>(), t[12].cast<double>(), t.size() >= 14 && t[13].cast<bool>()};
   if (t.size() == 17 && !t[16].is_none()) {
     if (!py::isinstance<ToleranceChoice>(t[16])) {
@@ -336,12 +321,9 @@ SimulationResult result_from_state(const py::tuple& t) {
 
 // "SimulationResult(records=n, t=[t0, t_end], diverged=..., unconverged_steps=..., elapsed_seconds=...)".
 std::string result_repr(const SimulationResult& r) {
-  const py::ssize_t n = r.records;
-  py::object span = py::list();
-  if (n > 0) {
-    const Array t = r.t.get();
-    span = py::make_tuple(t.at(0), t.at(n - 1));
-  }
+  const Array t = r.t.get();
+  const py::ssize_t n = t.shape(0);
+  const py::object span = n == 0 ? py::object(py::list()) : py::object(py::make_tuple(t.at(0), t.at(n - 1)));
   return repr_call("SimulationResult", {{"records", py::int_(n)},
                                         {"t", span},
                                         {"diverged", py::bool_(r.diverged)},
@@ -419,9 +401,9 @@ std::string error_summary(const GlobalError& e) {
 
 // A GlobalError's pickle state: order, the seven arrays of error_arrays, verdict, reliable.
 constexpr LazyArray GlobalError::*error_arrays[] = {&GlobalError::attitude, &GlobalError::angular_velocity,
-                                                &GlobalError::position, &GlobalError::velocity,
-                                                &GlobalError::energy,   &GlobalError::angular_momentum,
-                                                &GlobalError::observed_order};
+                                                    &GlobalError::position, &GlobalError::velocity,
+                                                    &GlobalError::energy,   &GlobalError::angular_momentum,
+                                                    &GlobalError::observed_order};
 
 py::tuple global_error_state(const GlobalError& e) {
   py::tuple out(10);

@@ -77,6 +77,7 @@ class LazyArray {
 
   // The array (GIL held)
   py_io::Array get() const {
+    if (!array_ && ndim_ == 0) throw std::logic_error("LazyArray: read before its values were set");
     if (!array_) array_ = adopt(std::move(values_), {shape_.begin(), shape_.begin() + ndim_});
     return pybind11::reinterpret_borrow<py_io::Array>(array_);
   }
