@@ -238,6 +238,8 @@ struct BatchSceneResult {
   py::array wheel_speed;   // (N, n, nw) each gyrostat wheel's speed relative to its body [rad/s]
   py::array motor_work;    // (N, n, nw) each wheel's motor work since t0 [J]
   py::tuple wheel_bodies;  // (nw,) the body index of each wheel
+  py::array joint_q;       // (N, n, nq) the trees' configurations q
+  py::array joint_v;       // (N, n, nv) their velocities v
   py::array diverged, filled, unconverged_steps;  // (N,) bool, int64, int64
   double elapsed_seconds = 0.0;
   bool scalar_first = false;  // q_WB rows as (w, x, y, z)
@@ -268,6 +270,8 @@ BatchSceneResult to_batch_scene_result(BatchSceneSimulation&& b, py::tuple body_
   r.wheel_speed = adopt_vector(std::move(b.wheel_speed), {N, n, static_cast<py::ssize_t>(b.wheel_count)});
   r.motor_work = adopt_vector(std::move(b.motor_work), {N, n, static_cast<py::ssize_t>(b.wheel_count)});
   r.wheel_bodies = std::move(wheel_bodies);
+  r.joint_q = adopt_vector(std::move(b.joint_q), {N, n, static_cast<py::ssize_t>(b.joint_q_count)});
+  r.joint_v = adopt_vector(std::move(b.joint_v), {N, n, static_cast<py::ssize_t>(b.joint_v_count)});
   r.diverged = bool_array(b.diverged);
   r.filled = adopt_vector(std::move(b.filled), {N});
   r.unconverged_steps = adopt_vector(std::move(b.unconverged_steps), {N});
@@ -277,7 +281,7 @@ BatchSceneResult to_batch_scene_result(BatchSceneSimulation&& b, py::tuple body_
 }
 
 py::tuple batch_scene_state(const BatchSceneResult& r) {
-  py::tuple out(scene_column_count + 11);
+  py::tuple out(scene_column_count + 13);
   for (std::size_t k = 0; k < scene_column_count; ++k) out[k] = r.arrays[k];
   out[scene_column_count] = r.body_names;
   out[scene_column_count + 1] = r.elements;
@@ -290,19 +294,22 @@ py::tuple batch_scene_state(const BatchSceneResult& r) {
   out[scene_column_count + 8] = r.motor_work;
   out[scene_column_count + 9] = r.wheel_bodies;
   out[scene_column_count + 10] = r.error;
+  out[scene_column_count + 11] = r.joint_q;
+  out[scene_column_count + 12] = r.joint_v;
   return out;
 }
 
 // scene_column_count + 6 or + 7 items: a state without scalar_first (q_WB as (x, y, z, w)) or without the wheels,
-// + 10 without the error estimate, as earlier pickles
+// + 10 without the error estimate, + 11 without the joint columns, as earlier pickles
 BatchSceneResult batch_scene_from_state(const py::tuple& t) {
   const std::size_t size = t.size();
   const std::size_t wheels = scene_column_count + 10;  // the size of a state with the wheels
-  if (size != scene_column_count + 6 && size != scene_column_count + 7 && size != wheels && size != wheels + 1) {
+  if (size != scene_column_count + 6 && size != scene_column_count + 7 && size != wheels && size != wheels + 1 &&
+      size != wheels + 3) {
     py_io::throw_value_error("BatchSceneResult pickle",
                              "a tuple of " + std::to_string(scene_column_count + 6) + ", " +
-                                 std::to_string(scene_column_count + 7) + ", " + std::to_string(wheels) + " or " +
-                                 std::to_string(wheels + 1) + " items",
+                                 std::to_string(scene_column_count + 7) + ", " + std::to_string(wheels) + ", " +
+                                 std::to_string(wheels + 1) + " or " + std::to_string(wheels + 3) + " items",
                              std::to_string(size) + " items");
   }
   BatchSceneResult r;
@@ -322,7 +329,7 @@ BatchSceneResult batch_scene_from_state(const py::tuple& t) {
   r.elapsed_seconds = t[scene_column_count + 5].cast<double>();
   r.scalar_first = size >= scene_column_count + 7 && t[scene_column_count + 6].cast<bool>();
   r.wheel_bodies = size >= wheels ? py::tuple(t[scene_column_count + 9]) : py::tuple();
-  if (size == wheels + 1) r.error = error_from_state(t[wheels], "BatchSceneResult pickle error");
+  if (size >= wheels + 1) r.error = error_from_state(t[wheels], "BatchSceneResult pickle error");
   const auto nw = static_cast<py::ssize_t>(r.wheel_bodies.size());
   // each wheel column, (N, n, nw) (empty in an earlier pickle)
   const auto wheel_column = [&](std::size_t at, const std::string& name) -> py::array {
@@ -331,6 +338,14 @@ BatchSceneResult batch_scene_from_state(const py::tuple& t) {
   };
   r.wheel_speed = wheel_column(scene_column_count + 7, "wheel_speed");
   r.motor_work = wheel_column(scene_column_count + 8, "motor_work");
+  // each joint column, (N, n, k) (empty in an earlier pickle)
+  const auto joint_column = [&](std::size_t at, const std::string& name) -> py::array {
+    if (size < wheels + 3) return py::array_t<double>(std::vector<py::ssize_t>{N, n, 0});
+    const py::array a = py::module_::import("numpy").attr("asarray")(t[at]);
+    return checked_copy(t[at], "BatchSceneResult pickle " + name, {N, n, a.ndim() == 3 ? a.shape(2) : 0});
+  };
+  r.joint_q = joint_column(wheels + 1, "joint_q");
+  r.joint_v = joint_column(wheels + 2, "joint_v");
   return r;
 }
 
@@ -347,6 +362,8 @@ SceneResult batch_scene_sample(const BatchSceneResult& r, py::handle key) {
   out.wheel_speed = LazyArray(sample_rows(r.wheel_speed, i, rows));
   out.motor_work = LazyArray(sample_rows(r.motor_work, i, rows));
   out.wheel_bodies = r.wheel_bodies;
+  out.joint_q = LazyArray(sample_rows(r.joint_q, i, rows));
+  out.joint_v = LazyArray(sample_rows(r.joint_v, i, rows));
   out.diverged = r.diverged.attr("__getitem__")(i).cast<bool>();
   out.unconverged_steps = r.unconverged_steps.attr("__getitem__")(i).cast<std::int64_t>();
   out.elapsed_seconds = r.elapsed_seconds;
@@ -1187,7 +1204,10 @@ void bind_batch(py::module_& m) {
       .def_readonly("motor_work", &BatchSceneResult::motor_work,
                     "Each wheel's motor work since t0, shape (N, n, nw) [J].")
       .def_readonly("wheel_bodies", &BatchSceneResult::wheel_bodies,
-                    "The body index of each wheel, a tuple of nw int.");
+                    "The body index of each wheel, a tuple of nw int.")
+      .def_readonly("joint_q", &BatchSceneResult::joint_q,
+                    "The trees' configurations q (Scene.add_tree), shape (N, n, nq); nq = 0 without a tree.")
+      .def_readonly("joint_v", &BatchSceneResult::joint_v, "The trees' velocities v, shape (N, n, nv).");
   def_common(scene, &batch_scene_sample_object);
   scene.def("__repr__", &batch_scene_repr).def(py::pickle(&batch_scene_state, &batch_scene_from_state));
 

@@ -44,7 +44,9 @@ template <class... B>
 Body body_from(py::handle obj, const std::string& name, std::variant<B...>*) {
   std::optional<Body> out;
   ((!out && py::isinstance<B>(obj) ? (void)(out = obj.cast<const B&>()) : void()), ...);
-  if (!out) py_io::throw_type_error(name, "a Particle, PlanarBody, RigidBody, PivotedBody, PivotedPlanarBody or Gyrostat", obj);
+  if (!out) {
+    py_io::throw_type_error(name, "a Particle, PlanarBody, RigidBody, PivotedBody, PivotedPlanarBody, Gyrostat or TreeLink", obj);
+  }
   return *out;
 }
 
@@ -109,6 +111,30 @@ int add_body(Scene& scene, py::handle body, py::handle name, py::handle mass_flo
                              name.is_none() ? "None" : "'" + given + "'");
   }
   return static_cast<int>(rigiddyn::add_body(scene, std::move(b), given, std::move(flow)));
+}
+
+// Adds every link of `tree` (a copy, shared by its links) as a body, in link order, named "<name>.<link>" (the link's
+// own name when `name` is None); nothing is added when a name is taken. Returns their indices.
+py::tuple add_tree(Scene& scene, py::handle tree_obj, py::handle name) {
+  const auto tree = std::make_shared<const Tree>(py_io::as_instance<Tree>(tree_obj, "tree", "a Tree"));
+  if (tree->num_links() == 0) py_io::throw_value_error("tree", "a tree with at least one link", "a tree with none");
+  if (!tree->gravity().isZero(0.0)) {
+    py_io::throw_value_error("tree.gravity", "zero in a scene (add a UniformGravity element: it loads every link)",
+                             format_value(tree->gravity().transpose().eval()));
+  }
+  const std::string prefix = name.is_none() ? std::string() : py_io::as_string(name, "name") + ".";
+  for (const Link& link : tree->links()) {
+    if (const auto other = find_body(scene, prefix + link.name)) {
+      py_io::throw_value_error("name", "names for the links that no other body of the scene has ('" + prefix + link.name +
+                                           "' is body " + std::to_string(*other) + "'s)",
+                               name.is_none() ? "None" : "'" + py::cast<std::string>(name) + "'");
+    }
+  }
+  py::tuple out(tree->num_links());
+  for (int i = 0; i < tree->num_links(); ++i) {
+    out[i] = rigiddyn::add_body(scene, TreeLink{tree, i}, prefix + tree->link(i).name);
+  }
+  return out;
 }
 
 // Adds `element` after checking it against the bodies so far (its compiled term's checks, messages
@@ -270,6 +296,7 @@ SceneResult to_scene_result(SceneSimulation&& r, const Scene& scene, const Compi
   if (r.mass_flow_energy.empty()) r.mass_flow_energy.assign(r.mass.size(), 0.0);  // no mass flow: all 0
   const py::tuple wheel_bodies = wheel_bodies_of(scene);
   const auto nw = static_cast<py::ssize_t>(wheel_bodies.size());
+  const JointCounts joints = joint_counts(scene.bodies);
   return SceneResult{LazyArray(std::move(r.t), {n}),
                      LazyArray(std::move(r.p_W), {n, nb, 3}),
                      LazyArray(std::move(r.q_WB), {n, nb, 4}),
@@ -291,6 +318,8 @@ SceneResult to_scene_result(SceneSimulation&& r, const Scene& scene, const Compi
                      LazyArray(std::move(r.wheel_speed), {n, nw}),
                      LazyArray(std::move(r.motor_work), {n, nw}),
                      wheel_bodies,
+                     LazyArray(std::move(r.joint_q), {n, static_cast<py::ssize_t>(joints.q)}),
+                     LazyArray(std::move(r.joint_v), {n, static_cast<py::ssize_t>(joints.v)}),
                      r.diverged,
                      r.unconverged_steps,
                      r.elapsed_seconds,
@@ -325,7 +354,7 @@ const ResultArray result_arrays[] = {
 constexpr std::size_t result_array_count = sizeof(result_arrays) / sizeof(result_arrays[0]);
 
 py::tuple scene_result_state(const SceneResult& r) {
-  py::tuple out(result_array_count + 12);
+  py::tuple out(result_array_count + 14);
   for (std::size_t i = 0; i < result_array_count; ++i) out[i] = (r.*(result_arrays[i].member)).get();
   out[result_array_count] = r.body_names;
   out[result_array_count + 1] = r.elements;
@@ -339,19 +368,21 @@ py::tuple scene_result_state(const SceneResult& r) {
   out[result_array_count + 9] = r.error;
   out[result_array_count + 10] = r.balance.get();
   out[result_array_count + 11] = r.choice;
+  out[result_array_count + 12] = r.joint_q.get();
+  out[result_array_count + 13] = r.joint_v.get();
   return out;
 }
 
-// result_array_count + 5, + 6, + 9, + 10 or + 11 items: a state without scalar_first (q_WB as (x, y, z, w)), without
-// the wheels, without the error estimate, without the balance or without the choice of a run to a tolerance, as
-// earlier pickles
+// result_array_count + 5, + 6, + 9, + 10, + 11 or + 12 items: a state without scalar_first (q_WB as (x, y, z, w)),
+// without the wheels, without the error estimate, without the balance, without the choice of a run to a tolerance or
+// without the joint columns, as earlier pickles
 SceneResult scene_result_from_state(const py::tuple& t) {
   const std::size_t wheels = result_array_count + 9;  // the size of a state with the wheels
   if (t.size() != result_array_count + 5 && t.size() != result_array_count + 6 &&
-      (t.size() < wheels || t.size() > wheels + 3)) {
+      (t.size() < wheels || t.size() > wheels + 5 || t.size() == wheels + 4)) {
     py_io::throw_value_error("SceneResult pickle", "a tuple of " + std::to_string(result_array_count + 5) + ", " +
                              std::to_string(result_array_count + 6) + " or " + std::to_string(wheels) + " to " +
-                             std::to_string(wheels + 3) + " items",
+                             std::to_string(wheels + 3) + " or " + std::to_string(wheels + 5) + " items",
                              std::to_string(t.size()) + " items");
   }
   SceneResult r;
@@ -381,7 +412,7 @@ SceneResult scene_result_from_state(const py::tuple& t) {
   r.wheel_bodies = t.size() >= wheels ? py::tuple(t[result_array_count + 8]) : py::tuple();
   if (t.size() >= wheels + 1) r.error = py::reinterpret_borrow<py::object>(t[wheels]);  // a GlobalError or None
   if (t.size() >= wheels + 2 && !t[wheels + 1].is_none()) r.balance = checked_balance(t[wheels + 1], "SceneResult pickle balance");
-  if (t.size() == wheels + 3 && !t[wheels + 2].is_none()) {
+  if (t.size() >= wheels + 3 && !t[wheels + 2].is_none()) {
     if (!py::isinstance<ToleranceChoice>(t[wheels + 2])) {
       py_io::throw_type_error("SceneResult pickle choice", "a ToleranceChoice or None", t[wheels + 2]);
     }
@@ -401,6 +432,19 @@ SceneResult scene_result_from_state(const py::tuple& t) {
   };
   r.wheel_speed = LazyArray(wheel_column(result_array_count + 6, "wheel_speed"));
   r.motor_work = LazyArray(wheel_column(result_array_count + 7, "motor_work"));
+  // the joint columns, (n, nq) and (n, nv) (empty in an earlier pickle)
+  const auto joint_column = [&](std::size_t at, const char* name) {
+    if (t.size() < wheels + 5) return Array(std::vector<py::ssize_t>{n, 0});
+    Array a = Array::ensure(py::module_::import("numpy").attr("array")(t[at], "float64"));
+    if (!a || a.ndim() != 2 || a.shape(0) != n) {
+      py_io::throw_value_error(std::string("SceneResult pickle ") + name, "shape (" + std::to_string(n) + ", k)",
+                               py_io::describe(t[at]));
+    }
+    py_io::set_read_only(a);
+    return a;
+  };
+  r.joint_q = LazyArray(joint_column(wheels + 3, "joint_q"));
+  r.joint_v = LazyArray(joint_column(wheels + 4, "joint_v"));
   return r;
 }
 
@@ -443,6 +487,10 @@ std::string scene_result_repr(const SceneResult& r) {
 
 bool all_finite(const Scene& scene, const std::vector<BodyState>& states) {
   for (std::size_t i = 0; i < states.size(); ++i) {
+    if (const auto* joint = std::get_if<JointState>(&states[i])) {  // a tree link's kinematics need the whole tree
+      if (!(joint->q.allFinite() && joint->v.allFinite())) return false;
+      continue;
+    }
     const BodyKinematics k = kinematics_of(scene.bodies[i], states[i]);
     if (!(k.p_W.allFinite() && k.q_WB.coeffs().allFinite() && k.v_W.allFinite() && k.w_B.allFinite())) return false;
   }
@@ -609,6 +657,60 @@ Two particles under gravity: the change of kinetic energy is the work of gravity
 True
 )doc";
 
+constexpr const char* add_tree_doc = R"doc(Adds every link of `tree` as a body of the scene, in link order; returns their indices.
+
+Each link is a body (a TreeLink) that force elements act on, by its index or name: gravity at its centre of mass,
+springs and drag at its points (given from its centre of mass, in axes parallel to its link frame), Python forces.
+The tree's joints hold the links together: a run integrates the tree's q and v by the articulated-body algorithm
+with the elements' wrenches as each link's external force. Each link body's state is a JointState (its joint's q
+and v; Tree.joint_states makes them), and its records are the link's motion (centre of mass in W, R_WL, w_L).
+
+Parameters
+----------
+tree : Tree
+    The tree (copied), with no gravity of its own (add a UniformGravity element instead).
+name : str, optional
+    Names the bodies "<name>.<link name>" (None: each link's own name). No other body may have those names.
+
+Returns
+-------
+tuple of int
+    The bodies' indices, one per link.
+
+Raises
+------
+ValueError
+    A tree with no link or with gravity of its own, or a link name another body has (naming it).
+
+See Also
+--------
+Tree, JointState, Tree.joint_states, Tree.coordinates_of
+
+Notes
+-----
+A tree runs with the methods that integrate the whole motion (explicit_euler, semi_implicit_euler, rk4, rkmk4,
+implicit_midpoint); the splittings need each body's free motion in closed form, which joined links do not have.
+
+Examples
+--------
+A double pendulum of two rods released horizontal under gravity keeps its energy to RK4's error:
+
+>>> rod = rd.SpatialInertia(1.0, [0.5, 0, 0], np.diag([1e-3, 1 / 12, 1 / 12]))
+>>> tree = rd.Tree()
+>>> tree.add_link("upper", -1, rd.RevoluteJoint([0, 1, 0]), rod)
+0
+>>> tree.add_link("lower", 0, rd.RevoluteJoint([0, 1, 0]), rod, rd.Transform(translation=[1, 0, 0]))
+1
+>>> scene = rd.Scene(elements=[rd.UniformGravity()])
+>>> scene.add_tree(tree, "pendulum")
+(0, 1)
+>>> result = rd.simulate(scene, tree.joint_states([0.0, 0.0]), 0.001, duration=1.0, method="rk4")
+>>> bool(abs(result.total_energy[-1] - result.total_energy[0]) < 1e-9)
+True
+>>> result.joint_q.shape  # the joint angles at each record
+(1001, 2)
+)doc";
+
 }  // namespace
 
 bool is_scene(py::handle model) {
@@ -626,6 +728,10 @@ std::string momentum_balance_not_applicable(const CompiledScene& compiled) {
       return "a pinned body's pivot reaction is an external force whose impulse is not integrated";
     }
     if (std::holds_alternative<PlanarBody>(b)) return "a planar body's plane takes forces whose impulse is not integrated";
+    if (const auto* link = std::get_if<TreeLink>(&b); link && link->link == 0 &&
+                                                       !std::holds_alternative<FreeJoint>(link->tree->link(0).joint)) {
+      return "a tree held by a joint to W takes its base's reaction, whose impulse is not integrated";
+    }
     if (has_mass_flow(scene, i)) return "a mass flow carries momentum that is not integrated";
   }
   for (const std::string& type : compiled.element_types()) {
@@ -933,9 +1039,12 @@ void bind_scene(py::module_& m) {
             return add_body(s, body, name, mass_flow, "body", "name", "mass_flow");
           },
           py::arg("body"), py::arg("name") = py::none(), py::arg("mass_flow") = py::none(),
-          "Adds `body` (a Particle, PlanarBody, RigidBody, PivotedBody, PivotedPlanarBody or Gyrostat) named `name` (a str no "
+          "Adds `body` (a Particle, PlanarBody, RigidBody, PivotedBody, PivotedPlanarBody, Gyrostat or TreeLink) named `name` (a str no "
           "other body has; None: 'body<index>') with its mass flow `mass_flow` (a MassFlow; None: a constant mass); "
           "returns its index, by which elements refer to it.")
+      .def(
+          "add_tree", [](Scene& s, py::handle tree, py::handle name) { return add_tree(s, tree, name); }, py::arg("tree"),
+          py::arg("name") = py::none(), add_tree_doc)
       .def(
           "add", [](Scene& s, py::handle element) { return add_element(s, element, "element"); }, py::arg("element"),
           "Adds a force element (an instance of a class of rigiddyn.FORCE_ELEMENTS) after checking it against the bodies added so far (indices in range, "
@@ -1100,6 +1209,13 @@ void bind_scene(py::module_& m) {
                     "kinetic_energy - kinetic_energy[0] ~ work.sum(axis=1) + mass_flow_energy.sum(axis=1) + "
                     "motor_work.sum(axis=1)")
       .def_readonly("wheel_bodies", &SceneResult::wheel_bodies, "(nw,) tuple of the body index of each wheel")
+      .def_property_readonly("joint_q", array_of(&SceneResult::joint_q),
+                             "(n, nq) the trees' configurations q (Scene.add_tree; the trees in the scene's order, each "
+                             "its Tree's q: angles [rad], offsets [m], quaternions (x, y, z, w) as integrated); (n, 0) "
+                             "without a tree")
+      .def_property_readonly("joint_v", array_of(&SceneResult::joint_v),
+                             "(n, nv) the trees' velocities v (each its Tree's v: rates [rad/s], [m/s], w_L [rad/s] in "
+                             "the link frame); (n, 0) without a tree")
       .def_readonly("body_names", &SceneResult::body_names, "(nb,) tuple of the bodies' names")
       .def_readonly("elements", &SceneResult::elements,
                     "(ne,) tuple of the elements' class names, then the frame's fictitious terms' ('CentrifugalForce', "

@@ -23,6 +23,7 @@ void bind_scene(pybind11::module_& m);
 void bind_batch(pybind11::module_& m);  // after bind_dynamics: result[i] is a SimulationResult
 void bind_orbit(pybind11::module_& m);
 void bind_tree(pybind11::module_& m);  // after bind_spatial and bind_inertia: a link holds a Transform and a SpatialInertia
+void bind_tree_link(pybind11::module_& m);  // after bind_tree: TreeLink, JointState, Tree.joint_states
 // Last: the runtime signatures (__text_signature__, a class's __signature__) of every function and class in m
 void add_text_signatures(pybind11::module_& m);
 }  // namespace rigiddyn::bindings

@@ -34,6 +34,8 @@ struct SceneResult {
   LazyArray wheel_speed;         // (n, nw) each gyrostat wheel's speed relative to its body [rad/s]
   LazyArray motor_work;          // (n, nw) each wheel's motor work since t0 [J]
   pybind11::tuple wheel_bodies;  // (nw,) the body index of each wheel
+  LazyArray joint_q;             // (n, nq) the trees' configurations q (empty without a tree)
+  LazyArray joint_v;             // (n, nv) their velocities v
   bool diverged;
   std::int64_t unconverged_steps;
   double elapsed_seconds;

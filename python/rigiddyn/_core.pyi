@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['AppliedLoad', 'AtmosphericDrag', 'BatchResult', 'BatchSceneResult', 'BodyAcceleration', 'ComWrench', 'CompiledScene', 'CompoundPendulumSolution', 'ConstantThrustSolution', 'DensityIntegral', 'Drag', 'ElementField', 'FORCE_ELEMENTS', 'FixedJoint', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'FreeJoint', 'GlobalError', 'GravityGradient', 'Gyrostat', 'GyrostatState', 'InertiaCheck', 'InertiaReport', 'KineticEnergy', 'LagrangeTopSolution', 'MagneticDipole', 'MassFlow', 'MeshWeldWarning', 'Motion', 'MutualGravity', 'Particle', 'ParticleState', 'PivotedAcceleration', 'PivotedBody', 'PivotedBodyState', 'PivotedPlanarAcceleration', 'PivotedPlanarBody', 'PivotedPlanarBodyState', 'PivotedPlanarTorque', 'PivotedTorque', 'PlanarAcceleration', 'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointMassGravity', 'PointVelocity', 'PrincipalAxes', 'PrismaticJoint', 'PythonForce', 'ReactionWheel', 'RevoluteJoint', 'RigidBody', 'RigidBodyState', 'RotatingFrameFreeParticle', 'Scene', 'SceneCompatibilityWarning', 'SceneFrame', 'SceneResult', 'ScheduledLoads', 'Screw', 'SimulationResult', 'SolarRadiationPressure', 'SpatialInertia', 'SphericalJoint', 'SpringDamper', 'Thrust', 'ToleranceChoice', 'ToleranceError', 'TorqueFreeSolution', 'Transform', 'Tree', 'UniformGravity', 'WeldedMesh', 'Wheel', 'ZonalGravity', 'aba', 'align_vectors', 'angular_distance', 'angular_momentum', 'angular_velocity_from_quat_rate', 'apply_impulse', 'attitude_from_orbit_frame', 'attitude_to_orbit_frame', 'axis_angle_to_quat', 'bias_forces', 'box_shell', 'compose_kinematics', 'composite', 'crba', 'davenport_to_quat', 'default_thread_count', 'eccentric_to_mean_anomaly', 'eccentric_to_true_anomaly', 'elements_to_state', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'forward_kinematics', 'from_point_masses', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kepler_propagate', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mean_to_eccentric_anomaly', 'mean_to_true_anomaly', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation', 'nearest_valid_inertia', 'orbit_frame_angular_velocity', 'orbit_frame_rotation', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix', 'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh', 'rnea', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'semi_latus_rectum', 'simulate', 'simulate_batch', 'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'state_to_elements', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'true_to_eccentric_anomaly', 'true_to_mean_anomaly', 'twist_to_screw', 'vector_instructions', 'vee', 'weld_vertices']
+__all__: list[str] = ['AppliedLoad', 'AtmosphericDrag', 'BatchResult', 'BatchSceneResult', 'BodyAcceleration', 'ComWrench', 'CompiledScene', 'CompoundPendulumSolution', 'ConstantThrustSolution', 'DensityIntegral', 'Drag', 'ElementField', 'FORCE_ELEMENTS', 'FixedJoint', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'FreeJoint', 'GlobalError', 'GravityGradient', 'Gyrostat', 'GyrostatState', 'InertiaCheck', 'InertiaReport', 'JointState', 'KineticEnergy', 'LagrangeTopSolution', 'MagneticDipole', 'MassFlow', 'MeshWeldWarning', 'Motion', 'MutualGravity', 'Particle', 'ParticleState', 'PivotedAcceleration', 'PivotedBody', 'PivotedBodyState', 'PivotedPlanarAcceleration', 'PivotedPlanarBody', 'PivotedPlanarBodyState', 'PivotedPlanarTorque', 'PivotedTorque', 'PlanarAcceleration', 'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointMassGravity', 'PointVelocity', 'PrincipalAxes', 'PrismaticJoint', 'PythonForce', 'ReactionWheel', 'RevoluteJoint', 'RigidBody', 'RigidBodyState', 'RotatingFrameFreeParticle', 'Scene', 'SceneCompatibilityWarning', 'SceneFrame', 'SceneResult', 'ScheduledLoads', 'Screw', 'SimulationResult', 'SolarRadiationPressure', 'SpatialInertia', 'SphericalJoint', 'SpringDamper', 'Thrust', 'ToleranceChoice', 'ToleranceError', 'TorqueFreeSolution', 'Transform', 'Tree', 'TreeLink', 'UniformGravity', 'WeldedMesh', 'Wheel', 'ZonalGravity', 'aba', 'align_vectors', 'angular_distance', 'angular_momentum', 'angular_velocity_from_quat_rate', 'apply_impulse', 'attitude_from_orbit_frame', 'attitude_to_orbit_frame', 'axis_angle_to_quat', 'bias_forces', 'box_shell', 'compose_kinematics', 'composite', 'crba', 'davenport_to_quat', 'default_thread_count', 'eccentric_to_mean_anomaly', 'eccentric_to_true_anomaly', 'elements_to_state', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'forward_kinematics', 'from_point_masses', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kepler_propagate', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mean_to_eccentric_anomaly', 'mean_to_true_anomaly', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation', 'nearest_valid_inertia', 'orbit_frame_angular_velocity', 'orbit_frame_rotation', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix', 'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh', 'rnea', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'semi_latus_rectum', 'simulate', 'simulate_batch', 'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'state_to_elements', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'true_to_eccentric_anomaly', 'true_to_mean_anomaly', 'twist_to_screw', 'vector_instructions', 'vee', 'weld_vertices']
 class _Quantity(typing.Protocol):
     """A pint Quantity of any registry (the core converts it to SI by its magnitude and units)."""
     @property
@@ -5160,7 +5160,62 @@ class Scene:
         """
     def add_body(self, body: typing.Any, name: typing.Any = None, mass_flow: typing.Any = None) -> int:
         """
-        Adds `body` (a Particle, PlanarBody, RigidBody, PivotedBody, PivotedPlanarBody or Gyrostat) named `name` (a str no other body has; None: 'body<index>') with its mass flow `mass_flow` (a MassFlow; None: a constant mass); returns its index, by which elements refer to it.
+        Adds `body` (a Particle, PlanarBody, RigidBody, PivotedBody, PivotedPlanarBody, Gyrostat or TreeLink) named `name` (a str no other body has; None: 'body<index>') with its mass flow `mass_flow` (a MassFlow; None: a constant mass); returns its index, by which elements refer to it.
+        """
+    def add_tree(self, tree: Tree, name: str | None = None) -> tuple:
+        """
+        Adds every link of `tree` as a body of the scene, in link order; returns their indices.
+        
+        Each link is a body (a TreeLink) that force elements act on, by its index or name: gravity at its centre of mass,
+        springs and drag at its points (given from its centre of mass, in axes parallel to its link frame), Python forces.
+        The tree's joints hold the links together: a run integrates the tree's q and v by the articulated-body algorithm
+        with the elements' wrenches as each link's external force. Each link body's state is a JointState (its joint's q
+        and v; Tree.joint_states makes them), and its records are the link's motion (centre of mass in W, R_WL, w_L).
+        
+        Parameters
+        ----------
+        tree : Tree
+            The tree (copied), with no gravity of its own (add a UniformGravity element instead).
+        name : str, optional
+            Names the bodies "<name>.<link name>" (None: each link's own name). No other body may have those names.
+        
+        Returns
+        -------
+        tuple of int
+            The bodies' indices, one per link.
+        
+        Raises
+        ------
+        ValueError
+            A tree with no link or with gravity of its own, or a link name another body has (naming it).
+        
+        See Also
+        --------
+        Tree, JointState, Tree.joint_states, Tree.coordinates_of
+        
+        Notes
+        -----
+        A tree runs with the methods that integrate the whole motion (explicit_euler, semi_implicit_euler, rk4, rkmk4,
+        implicit_midpoint); the splittings need each body's free motion in closed form, which joined links do not have.
+        
+        Examples
+        --------
+        A double pendulum of two rods released horizontal under gravity keeps its energy to RK4's error:
+        
+        >>> rod = rd.SpatialInertia(1.0, [0.5, 0, 0], np.diag([1e-3, 1 / 12, 1 / 12]))
+        >>> tree = rd.Tree()
+        >>> tree.add_link("upper", -1, rd.RevoluteJoint([0, 1, 0]), rod)
+        0
+        >>> tree.add_link("lower", 0, rd.RevoluteJoint([0, 1, 0]), rod, rd.Transform(translation=[1, 0, 0]))
+        1
+        >>> scene = rd.Scene(elements=[rd.UniformGravity()])
+        >>> scene.add_tree(tree, "pendulum")
+        (0, 1)
+        >>> result = rd.simulate(scene, tree.joint_states([0.0, 0.0]), 0.001, duration=1.0, method="rk4")
+        >>> bool(abs(result.total_energy[-1] - result.total_energy[0]) < 1e-9)
+        True
+        >>> result.joint_q.shape  # the joint angles at each record
+        (1001, 2)
         """
     def compile(self, method: typing.Any = 'rk4') -> CompiledScene:
         """
@@ -5380,6 +5435,16 @@ class SceneResult:
     def error(self) -> typing.Any:
         """
         The global error estimate of every record (a GlobalError: per body (n, nb) for the state, per record (n,) for the energy and |L|), or None (simulate(..., error=False), a pickled or batch result).
+        """
+    @property
+    def joint_q(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (n, nq) the trees' configurations q (Scene.add_tree; the trees in the scene's order, each its Tree's q: angles [rad], offsets [m], quaternions (x, y, z, w) as integrated); (n, 0) without a tree
+        """
+    @property
+    def joint_v(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (n, nv) the trees' velocities v (each its Tree's v: rates [rad/s], [m/s], w_L [rad/s] in the link frame); (n, 0) without a tree
         """
     @property
     def kinetic_energy(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -6090,6 +6155,16 @@ class BatchSceneResult:
     def filled(self) -> numpy.ndarray:
         """
         Rows filled per sample, shape (N,) (int64): n unless it diverged (its later rows are NaN).
+        """
+    @property
+    def joint_q(self) -> numpy.ndarray:
+        """
+        The trees' configurations q (Scene.add_tree), shape (N, n, nq); nq = 0 without a tree.
+        """
+    @property
+    def joint_v(self) -> numpy.ndarray:
+        """
+        The trees' velocities v, shape (N, n, nv).
         """
     @property
     def kinetic_energy(self) -> numpy.ndarray:
@@ -7357,6 +7432,36 @@ class Tree:
         >>> tree.add_link("tip", 0, rd.FixedJoint(), bob, rd.Transform(translation=[0.0, 0.0, -1.0]))
         1
         """
+    def coordinates_of(self, states: collections.abc.Sequence[JointState]) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+        """
+        The tree's configuration q and velocity v stacked from its links' JointStates.
+        
+        The inverse of joint_states: e.g. of the link bodies' states that a scene's step returns.
+        
+        Parameters
+        ----------
+        states : sequence of JointState
+            One per link, in link order.
+        
+        Returns
+        -------
+        q : ndarray, shape (tree.nq,)
+        v : ndarray, shape (tree.nv,)
+        
+        Raises
+        ------
+        ValueError
+            Not one JointState per link, or one that does not fit its joint (naming it).
+        
+        Examples
+        --------
+        >>> tree = rd.Tree()
+        >>> tree.add_link("ball", -1, rd.SphericalJoint(), rd.SpatialInertia(1.0, [0, 0, -1], np.eye(3)))
+        0
+        >>> q, v = tree.coordinates_of([rd.JointState([0, 0, 0, 1], [0.0, 0.0, 2.0])])
+        >>> q, v
+        (array([0., 0., 0., 1.]), array([0., 0., 2.]))
+        """
     def integrate(self, q: numpy.typing.ArrayLike, v: numpy.typing.ArrayLike, dt: float) -> numpy.typing.NDArray[numpy.float64]:
         """
         The configuration q ⊕ v dt reached from q moving with velocity v for a time dt [s].
@@ -7393,6 +7498,38 @@ class Tree:
         >>> q = tree.integrate(tree.neutral_configuration(), [0.0, 0.0, np.pi / 2], 1.0)
         >>> bool(np.allclose(q, [0.0, 0.0, np.sin(np.pi / 4), np.cos(np.pi / 4)]))
         True
+        """
+    def joint_states(self, q: numpy.typing.ArrayLike | None = None, v: numpy.typing.ArrayLike | None = None) -> list:
+        """
+        The links' JointStates of the tree's configuration q and velocity v: one per link, in link order.
+        
+        Parameters
+        ----------
+        q : array_like, shape (tree.nq,), optional
+            Configuration (None: the neutral one).
+        v : array_like, shape (tree.nv,), optional
+            Velocity (None: at rest).
+        
+        Returns
+        -------
+        list of JointState
+            The states of the bodies Scene.add_tree adds for the tree, in their order.
+        
+        Raises
+        ------
+        ValueError
+            A wrong size, a non-finite value or a non-unit quaternion (naming it).
+        
+        Examples
+        --------
+        >>> tree = rd.Tree()
+        >>> rod = rd.SpatialInertia(1.0, [0.5, 0, 0], np.diag([1e-3, 0.1, 0.1]))
+        >>> tree.add_link("upper", -1, rd.RevoluteJoint([0, 1, 0]), rod)
+        0
+        >>> tree.add_link("lower", 0, rd.RevoluteJoint([0, 1, 0]), rod, rd.Transform(translation=[1, 0, 0]))
+        1
+        >>> tree.joint_states([0.1, 0.2], [0.0, -1.0])
+        [JointState(q=[0.1], v=[0.0]), JointState(q=[0.2], v=[-1.0])]
         """
     def kinetic_energy(self, q: numpy.typing.ArrayLike, v: numpy.typing.ArrayLike) -> float:
         """
@@ -7521,6 +7658,121 @@ class Tree:
     def parents(self) -> list:
         """
         The links' parent indices λ(i) (-1: the world), in index order.
+        """
+class JointState:
+    """
+    The state of a tree link's body in a scene: its joint's coordinates and velocities.
+    
+    A scene holds one body per link of a tree (Scene.add_tree), and the state of each is its joint's: q_i and v_i, the
+    link's segments of the tree's q and v. Tree.joint_states splits a tree's (q, v) into them, Tree.coordinates_of stacks
+    them back. A run checks each against its joint (sizes, finite values, a unit quaternion).
+    
+    Parameters
+    ----------
+    q : array_like, shape (nq_i,), optional
+        The joint's coordinates: an angle [rad] (revolute), an offset [m] (prismatic), a unit quaternion (x, y, z, w)
+        (spherical), (p_JL [m], q_JL) (free); nothing for a fixed joint (None: empty).
+    v : array_like, shape (nv_i,), optional
+        Its velocities: a rate [rad/s] or [m/s], w_L [rad/s] in the link frame (spherical), [w_L; v_L] (free).
+    
+    See Also
+    --------
+    Tree.joint_states, Tree.coordinates_of, Scene.add_tree
+    
+    Examples
+    --------
+    >>> s = rd.JointState([0.3], [-1.0])
+    >>> s.q, s.v
+    (array([0.3]), array([-1.]))
+    """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+        ...
+    def __init__(self, q: numpy.typing.ArrayLike | None = None, v: numpy.typing.ArrayLike | None = None) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def q(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The joint's coordinates, shape (nq_i,).
+        """
+    @q.setter
+    def q(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def v(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The joint's velocities, shape (nv_i,).
+        """
+    @v.setter
+    def v(self, arg1: typing.Any) -> None:
+        ...
+class TreeLink:
+    """
+    A link of a kinematic tree as a body of a scene (made by Scene.add_tree).
+    
+    Two are equal when they are the same link of the same tree: the copy Scene.add_tree made, which the scene's copies
+    share (scenes with trees compare equal to their copies; they do not pickle).
+    
+    Force elements act on a link as on any body: at its centre of mass, in axes B parallel to its link frame L
+    (points on it given from the centre of mass, in those axes); the tree's joints couple the links' motions. A run
+    records each link's centre of mass position and velocity in W, its attitude R_WL and its angular velocity in L.
+    
+    See Also
+    --------
+    Scene.add_tree, JointState, Tree
+    
+    Examples
+    --------
+    >>> tree = rd.Tree()
+    >>> tree.add_link("arm", -1, rd.RevoluteJoint([0, 1, 0]), rd.SpatialInertia(2.0, [0.5, 0, 0], np.diag([1e-3, 0.2, 0.2])))
+    0
+    >>> scene = rd.Scene()
+    >>> scene.add_tree(tree)
+    (0,)
+    >>> link = scene.bodies[0]
+    >>> link.name, link.link, link.mass
+    ('arm', 0, 2.0)
+    """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __repr__(self) -> str:
+        ...
+    @property
+    def com(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        Its centre of mass in the link frame L, shape (3,) [m].
+        """
+    @property
+    def inertia_com(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        Its inertia about its centre of mass, in axes parallel to the link frame, shape (3, 3) [kg m^2].
+        """
+    @property
+    def link(self) -> int:
+        """
+        The link's index in its tree.
+        """
+    @property
+    def mass(self) -> float:
+        """
+        Its mass [kg].
+        """
+    @property
+    def name(self) -> str:
+        """
+        The link's name in its tree.
+        """
+    @property
+    def tree(self) -> Tree:
+        """
+        A copy of the tree the link belongs to.
         """
 def _steps_of(steps: typing.Any, duration: typing.Any, dt: typing.Any) -> int:
     """

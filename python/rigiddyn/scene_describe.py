@@ -36,9 +36,10 @@ _UNITS = ("Units: SI (m, kg, s, N, N m, J, rad); p_W [m] and v_W [m/s] in W; q_W
 _FRAME = "Frame: W, inertial (fixed)"
 _STATE = {"particle": "p_W, v_W (6)", "planar": "x, y, theta, vx, vy, omega (6)", "rigid": "p_W, q_WB, v_W, w_B (13)",
           "pivoted": "q_WB, w_B (7)", "pivoted_planar": "theta, omega (2)",
-          "gyrostat": "p_W, q_WB, v_W, w_B, per wheel speed and motor work (13 + 2 nw)"}
+          "gyrostat": "p_W, q_WB, v_W, w_B, per wheel speed and motor work (13 + 2 nw)",
+          "tree_link": "its joint's q, v (a JointState)"}
 _KIND = {"Particle": "particle", "PlanarBody": "planar", "RigidBody": "rigid", "PivotedBody": "pivoted",
-         "PivotedPlanarBody": "pivoted_planar", "Gyrostat": "gyrostat"}
+         "PivotedPlanarBody": "pivoted_planar", "Gyrostat": "gyrostat", "TreeLink": "tree_link"}
 # the fictitious terms compile adds for a moving frame: (name, class in SceneResult.elements, force)
 _FICTITIOUS = (("frame.origin", "FrameOriginForce", "-m a_O"), ("frame.euler", "EulerForce", "-m alpha x r"),
                ("frame.centrifugal", "CentrifugalForce", "-m Omega x (Omega x r)"),
@@ -130,6 +131,19 @@ def _pivot_lines(bodies: Sequence[Any], names: Sequence[str], kinds: Sequence[st
              "for C)"]
             + _table(("#", "name", "O: p_WO [m]", "C - O: p_OC_B [m] (B)", "inertia about O [kg m^2] (B)",
                       "digits of I_C lost"), rows))
+
+
+def _tree_lines(bodies: Sequence[Any], names: Sequence[str], kinds: Sequence[str]) -> list[str]:
+    """The trees' links: each link's index in its tree and the body of its parent link (W for the tree's root)."""
+    rows = []
+    for i, (b, kind) in enumerate(zip(bodies, kinds)):
+        if kind == "tree_link":
+            parent = b.tree.parents[b.link]
+            rows.append((str(i), names[i], str(b.link), "W" if parent < 0 else names[i - b.link + parent]))
+    if not rows:
+        return []
+    return (["", "Tree links (bodies joined by their trees' joints; the state of each is its joint's)"]
+            + _table(("#", "name", "link", "parent"), rows))
 
 
 def _wheel_lines(bodies: Sequence[Any], names: Sequence[str], kinds: Sequence[str]) -> list[str]:
@@ -290,7 +304,8 @@ def describe(scene: Any, method: str | None = None) -> str:
     lines += _table(("#", "name", "kind", "mass [kg]", "inertia [kg m^2] (B)", "state"),
                     [(str(i), names[i], kinds[i], _g(b.mass), _inertia(b, kinds[i]),
                       _STATE[kinds[i]] + ("" if flows[i] is None else " + m (1)")) for i, b in enumerate(bodies)])
-    lines += _pivot_lines(bodies, names, kinds) + _wheel_lines(bodies, names, kinds) + _mass_flow_lines(scene, names)
+    lines += (_pivot_lines(bodies, names, kinds) + _tree_lines(bodies, names, kinds) + _wheel_lines(bodies, names, kinds)
+              + _mass_flow_lines(scene, names))
     lines += ["", "Force elements (terms per body: f force, tau torque, . none)"]
     rows = []
     traits = _element_traits(scene, compiled)

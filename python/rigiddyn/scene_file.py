@@ -952,6 +952,10 @@ def scene_to_toml(scene: Any, initial: Sequence[Any] | None = None, run: RunOpti
     if not isinstance(scene, _core.Scene):
         raise TypeError(f"scene: expected a Scene, got {type(scene).__name__}")
     bodies, names, elements = list(scene.bodies), _body_names(scene), list(scene.elements)
+    for body, body_name in zip(bodies, names):
+        if isinstance(body, _core.TreeLink):
+            raise ValueError(f"scene: expected bodies a scene file can hold, got body '{body_name}', a link of a tree "
+                             "(a scene file does not hold trees: build the scene in code with Scene.add_tree)")
     initial = _checked_states(initial, bodies, names)
     if run is not None and not isinstance(run, RunOptions):
         raise TypeError(f"run: expected None or a RunOptions, got {type(run).__name__}")

@@ -88,8 +88,8 @@ def _option(options: Any, key: str) -> Any:
 
 @dataclass(frozen=True)
 class BodyData:
-    """What the measures need of a body: its kind ('particle', 'planar', 'rigid', 'pivoted', 'pivoted_planar'),
-    mass [kg] (at t = 0) and inertia
+    """What the measures need of a body: its kind ('particle', 'planar', 'rigid', 'pivoted', 'pivoted_planar',
+    'gyrostat', 'tree_link'), mass [kg] (at t = 0) and inertia
     about its centre of mass in B [kg m^2] (0 for a particle, diag(0, 0, I_zz) for a planar body)."""
 
     kind: str
@@ -101,9 +101,9 @@ def _body_data(body: Any) -> BodyData:
     """A pinned body's data are its rigid body's (mass, inertia about its centre of mass), its kind
     'pivoted' or 'pivoted_planar'; the measures compare its centre of mass and attitude as for a free one."""
     kind = type(body).__name__
-    if kind in ("RigidBody", "PivotedBody", "Gyrostat"):
-        return BodyData({"RigidBody": "rigid", "PivotedBody": "pivoted", "Gyrostat": "gyrostat"}[kind],
-                        float(body.mass), np.asarray(body.inertia_com, float))
+    if kind in ("RigidBody", "PivotedBody", "Gyrostat", "TreeLink"):
+        return BodyData({"RigidBody": "rigid", "PivotedBody": "pivoted", "Gyrostat": "gyrostat",
+                         "TreeLink": "tree_link"}[kind], float(body.mass), np.asarray(body.inertia_com, float))
     if kind in ("PlanarBody", "PivotedPlanarBody"):
         return BodyData("planar" if kind == "PlanarBody" else "pivoted_planar", float(body.mass),
                         np.diag([0.0, 0.0, float(body.inertia_zz)]))
@@ -270,6 +270,7 @@ class SceneCase:
 
         rates = [float(np.linalg.norm(s.w_B)) for s in self.initial if hasattr(s, "w_B")]
         rates += [abs(float(s.omega)) for s in self.initial if hasattr(s, "omega")]
+        rates += [float(np.max(np.abs(s.v), initial=0.0)) for s in self.initial if type(s).__name__ == "JointState"]
         rates += pendulum_rates(self.scene)
         rates += [math.sqrt(abs(k)) + gamma for _, k, gamma in scene_modes(self.scene, self.initial)]
         return max(rates, default=0.0)
@@ -294,11 +295,15 @@ def _swing_inertia(inertia_O: np.ndarray, c: np.ndarray) -> float:
 def pendulum_rates(scene: Any) -> list[float]:
     """The small-oscillation rates sqrt(m |g| d / I) [rad/s] of the scene's pinned bodies under its
     uniform gravity (d = |p_OC_B|; I the smallest moment about O about an axis normal to p_OC_B: the
-    fastest swing), each a linear mode the step choices must resolve; [] without pinned bodies."""
+    fastest swing), each a linear mode the step choices must resolve, and sqrt(|g| / d) for each tree link
+    whose centre of mass is d = |c_L| from its joint frame (an upper bound of its swing about its joint, whose
+    moment is at least m d²); [] without pinned bodies or links."""
     g = sum((np.asarray(e.g_W, float) for e in scene.elements if type(e).__name__ == "UniformGravity"), np.zeros(3))
     rates = []
     for body in scene.bodies:
         kind = type(body).__name__
+        if kind == "TreeLink" and np.any(body.com) and np.any(g):
+            rates.append(math.sqrt(float(np.linalg.norm(g)) / float(np.linalg.norm(body.com))))
         c = np.asarray(body.p_OC_B, float) if kind.startswith("Pivoted") else np.zeros(1)
         if not np.any(c):
             continue  # unpinned, or pinned at its centre of mass: gravity has no torque
@@ -586,7 +591,7 @@ def scene_case(source: Any, initial: Any = None, horizon: float | None = None) -
     else:
         return None
     names = ("ParticleState", "PlanarBodyState", "RigidBodyState", "PivotedBodyState", "PivotedPlanarBodyState",
-             "GyrostatState")
+             "GyrostatState", "JointState")
     kinds = tuple(getattr(_core, n) for n in names if hasattr(_core, n))
     expected = f"a list of initial states ({', '.join(names)}), one per body ({len(scene.bodies)})"
     if isinstance(initial, (str, bytes)) or not isinstance(initial, Iterable):

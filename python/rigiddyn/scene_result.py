@@ -8,6 +8,7 @@ dimensionless columns carry no unit)::
     (the same for every body, in the scene's order) |
     kinetic_energy [J] | potential_energy [J] | total_energy [J] |
     linear_momentum_W_x [kg m/s] ... | angular_momentum_W_x [kg m^2/s] ... |
+    (with a tree) joint_q[0] ... | joint_v[0] ... |
     work[0] UniformGravity [J] ... | power[0] UniformGravity [W] ...
 
 Wide rather than long (one row per record and body): the scene-wide columns (energies, momenta, each
@@ -24,7 +25,8 @@ mass at the record (it changes with a MassFlow), mass_flow_energy the kinetic en
 away or brought since t0 (0 for a constant mass); a gyrostat adds wheel_speed_<k>, wheel k's speed relative to
 the body, and motor_work_<k>, the work its motor has done since t0 (k counts the gyrostat's own wheels): the
 work–energy balance reads ``kinetic_energy − kinetic_energy[0] ≈ Σ work[i] + Σ <body>:mass_flow_energy + Σ
-<body>:motor_work_<k>``.
+<body>:motor_work_<k>``. A scene with trees (Scene.add_tree) adds joint_q[k] and joint_v[k], the trees' stacked
+coordinates and velocities (angles [rad], offsets [m], quaternion components, rates: mixed units, so none is named).
 """
 
 from __future__ import annotations
@@ -131,6 +133,10 @@ def columns(result: Any, scalar_first: bool | None = None, *,
         else:
             for i, c in enumerate(parts):
                 out[_unit(f"{field}_{c}", unit)] = np.ascontiguousarray(values[:, i])
+    for field in ("joint_q", "joint_v"):
+        values = np.asarray(getattr(result, field), dtype=np.float64)
+        for k in range(values.shape[1]):
+            out[f"{field}[{k}]"] = np.ascontiguousarray(values[:, k])
     for field, unit in ELEMENT_FIELDS.items():
         values = np.asarray(getattr(result, field), dtype=np.float64)
         for i, kind in enumerate(result.elements):

@@ -30,7 +30,7 @@ ATTITUDE_HELP = "euler:SEQ (SEQ as quat_to_euler, e.g. euler:ZYX) or rotvec"
 MAX_SCENE_BODIES = 10  # bodies drawn in a scene's plot (the first ones; the title says how many of how many)
 # the line styles of the x, y, z components (or angles 1, 2, 3) of a scene's body
 _STYLES: tuple[Literal["-", "--", ":"], ...] = ("-", "--", ":")
-_ATTITUDE_KINDS = ("RigidBody", "PlanarBody", "PivotedBody", "PivotedPlanarBody", "Gyrostat")  # with an attitude
+_ATTITUDE_KINDS = ("RigidBody", "PlanarBody", "PivotedBody", "PivotedPlanarBody", "Gyrostat", "TreeLink")  # with an attitude
 
 
 def check_attitude(attitude: str) -> str:

@@ -46,7 +46,8 @@ struct SceneCase {
   Scene scene;
   std::vector<BodyState> initial;
   bool torque_free = false;  // the only scenes the method 'exact' takes
-  bool rotors = false;       // a gyrostat: no splitting method, no implicit gyroscopic kick
+  bool whole_motion = false;  // a gyrostat or a tree: the methods that integrate the whole motion only (no splitting,
+                              // no implicit gyroscopic kick)
 };
 
 // Every body kind (the rigid bodies in each Euler form) under every element that acts on it, a schedule
@@ -140,8 +141,31 @@ SceneCase gyrostat() {
   return c;
 }
 
-// The methods compile refuses for a gyrostat: the splittings and the implicit gyroscopic kick
-bool refused_for_rotors(Method m) {
+// A free-floating tree (a free joint, a ball joint, a revolute joint) under gravity, its last link on a spring to a
+// rigid body.
+SceneCase tree() {
+  SceneCase c{"tree", {}, {}, false, true};
+  const auto arm = std::make_shared<Tree>();
+  const SpatialInertia link(2.0, Eigen::Vector3d(0.5, 0.0, 0.0), Eigen::Vector3d(0.01, 0.2, 0.2).asDiagonal());
+  arm->add_link("base", -1, FreeJoint(), SpatialInertia(10.0, Eigen::Vector3d::Zero(), Eigen::Vector3d(1.0, 2.0, 2.5).asDiagonal()));
+  arm->add_link("shoulder", 0, SphericalJoint(), link, Transform(Eigen::Matrix3d::Identity(), Eigen::Vector3d(0.5, 0.0, 0.0)));
+  arm->add_link("elbow", 1, RevoluteJoint(Eigen::Vector3d::UnitZ()), link,
+                Transform(Eigen::Matrix3d::Identity(), Eigen::Vector3d(1.0, 0.0, 0.0)));
+  for (int i = 0; i < 3; ++i) c.scene.bodies.push_back(TreeLink{arm, i});
+  c.scene.bodies.push_back(RigidBody(1.5, Eigen::Vector3d(1.0, 2.0, 3.0)));
+  Eigen::VectorXd q_base(7);
+  q_base << 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0;
+  c.initial = {JointState{q_base, (Eigen::VectorXd(6) << 0.1, 0.2, 0.3, 0.0, 0.1, 0.0).finished()},
+               JointState{Eigen::Vector4d(0.0, 0.0, 0.0, 1.0), Eigen::Vector3d(0.5, -0.5, 1.0)},
+               JointState{Eigen::VectorXd::Constant(1, 0.3), Eigen::VectorXd::Constant(1, -1.0)},
+               tumbling(Eigen::Vector3d(3.0, 0.0, 0.0))};
+  c.scene.elements.push_back(UniformGravity{Eigen::Vector3d(0.0, 0.0, -9.81), {}});
+  c.scene.elements.push_back(SpringDamper{2, Eigen::Vector3d(0.5, 0.0, 0.0), 3, Eigen::Vector3d::Zero(), 5.0, 1.0, 0.2});
+  return c;
+}
+
+// The methods compile refuses for a gyrostat or a tree: the splittings and the implicit gyroscopic kick
+bool refused_for_whole_motion(Method m) {
   return m == Method::splitting_dlm || m == Method::splitting_dlm_yoshida4 || m == Method::exact_flow_kick ||
          m == Method::exact || m == Method::semi_implicit_euler_implicit_gyroscopic;
 }
@@ -153,6 +177,7 @@ std::vector<SceneCase> every_case() {
   cases.push_back(mass_flow());
   cases.push_back(torque_free());
   cases.push_back(gyrostat());
+  cases.push_back(tree());
   return cases;
 }
 
@@ -170,7 +195,7 @@ TEST(AllocationFree, NoSceneRunAllocatesPerStep) {
   for (const SceneCase& c : every_case()) {
     for (const MethodInfo& info : method_table()) {
       if (info.method == Method::exact && !c.torque_free) continue;
-      if (c.rotors && refused_for_rotors(info.method)) continue;
+      if (c.whole_motion && refused_for_whole_motion(info.method)) continue;
       SCOPED_TRACE(c.name + ", " + info.name);
       const CompiledScene compiled = compile_scene(c.scene, info.method);
       simulate(compiled, c.initial, options(info.method, 10));  // what a first run initialises once per process
@@ -199,7 +224,7 @@ TEST(AllocationFree, NoSceneEvaluationAllocates) {
       model.dexp_inv(theta, xi);
       model.kick(y, 1e-3);
       model.drift(y, 1e-3);
-      if (!c.rotors) {  // the members of the methods a gyrostat is refused
+      if (!c.whole_motion) {  // the members of the methods a gyrostat or a tree is refused
         model.kick_implicit_gyroscopic(y, 1e-3);
         model.loads_kick(y, 1e-3);
         model.free_flow<DlmRotation<true>>(y, 1e-3);

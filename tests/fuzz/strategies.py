@@ -79,6 +79,13 @@ _GYROSTAT = _call_spec("Gyrostat", [_call_spec("RigidBody", [("lit", 100.0), ("l
                                     ("list", [_WHEEL])])
 _SCENE_STATES = ("list", [_call_spec("ParticleState", v_W=("lit", [0.0, 1.0, 0.0])),
                           _call_spec("RigidBodyState", w_B=("lit", [0.1, 1.0, 0.1]))])
+# a one-link tree (a rod on a revolute joint) in a scene, and its link's body (a TreeLink: Scene.add_tree makes them)
+_TREE = ("chain", _call_spec("Tree"), [("add_link", [("lit", "rod"), ("lit", -1), _call_spec("RevoluteJoint"),
+                                                     _call_spec("SpatialInertia", [("lit", 1.0), ("lit", [0.5, 0.0, 0.0]),
+                                                                                   ("lit", [[1e-3, 0.0, 0.0], [0.0, 0.1, 0.0],
+                                                                                            [0.0, 0.0, 0.1]])])], [])])
+_TREE_LINK = ("method", ("method", ("chain", _call_spec("Scene"), [("add_tree", [_TREE], [])]), "__getattribute__",
+                         [("lit", "bodies")], []), "__getitem__", [("lit", 0)], [])
 
 # Objects that only a run makes (SimulationResult: simulate needs a body and a state of the same kind;
 # SceneResult: a scene and one state per body), or that random arguments rarely make (a scene with
@@ -126,6 +133,7 @@ RECIPES = {
     "Wheel": st.floats(-1.0, 1.0).map(lambda u: _call_spec("Wheel", [("lit", [0.0, 0.0, 1.0]), ("lit", 0.05)],
                                                          motor_torque=("lit", u))),
     "Gyrostat": st.just(_GYROSTAT),
+    "TreeLink": st.just(_TREE_LINK),
     "GyrostatState": st.floats(-100.0, 100.0).map(lambda w: _call_spec(
         "GyrostatState", w_B=("lit", [0.1, 0.0, 0.2]), wheel_speeds=("lit", [w]))),
     "Thrust": st.sampled_from(["body", "world"]).map(lambda frame: _call_spec(

@@ -57,8 +57,8 @@ def _tree():
     return tree
 
 
-def _arm():
-    tree = rd.Tree(gravity=[0.0, 0.0, -9.81])
+def _arm(gravity=(0.0, 0.0, -9.81)):
+    tree = rd.Tree(gravity=gravity)
     tree.add_link("arm", -1, rd.RevoluteJoint(), rd.SpatialInertia(1.0, V, I_BOX))
     return tree
 
@@ -74,6 +74,13 @@ def _result():
 
 def _body_state():
     return {"body": rd.RigidBody(1.0, I_BOX), "state": rd.RigidBodyState(w_B=V)}
+
+
+def _scene_with_tree():
+    """A scene of a one-link tree (a rod on a revolute joint)."""
+    scene = rd.Scene()
+    scene.add_tree(_arm(gravity=None))
+    return scene
 
 
 def _scene():
@@ -345,6 +352,9 @@ EXAMPLES = {
     "Tree.link_index": lambda: {"name": "arm"}, "Tree.neutral_configuration": lambda: {},
     "Tree.integrate": lambda: {"q": [0.1], "v": [0.2], "dt": 0.1},
     "Tree.kinetic_energy": lambda: {"q": [0.1], "v": [0.2]}, "Tree.potential_energy": lambda: {"q": [0.1]},
+    "Tree.joint_states": lambda: {"q": [0.1], "v": [0.2]}, "Tree.coordinates_of": lambda: {"states": [rd.JointState([0.1], [0.2])]},
+    "JointState": lambda: {"q": [0.1], "v": [0.2]},
+    "Scene.add_tree": lambda: {"tree": _arm(gravity=None), "name": "tree"},
     "forward_kinematics": lambda: {"tree": _arm(), "q": [0.1], "v": [0.2]},
     "rnea": lambda: {"tree": _arm(), "q": [0.1], "v": [0.2], "a": [0.3], "f_ext": np.ones((1, 6))},
     "bias_forces": lambda: {"tree": _arm(), "q": [0.1], "v": [0.2]}, "crba": lambda: {"tree": _arm(), "q": [0.1]},
@@ -389,6 +399,7 @@ VALID_AFTER_ALL = {
     ("TradeoffResult.to_csv", "path"): {"str"}, ("TradeoffResult.to_json", "path"): {"str"},
     ("TradeoffResult.plot", "path"): {"str"},
     ("Scene.add_body", "name"): {"str"},  # any new name
+    ("Scene.add_tree", "name"): {"str"},  # any new prefix of the links' names
     ("monte_carlo", "seed"): {"None"},  # fresh entropy, kept as result.seed
     ("Scene.to_toml", "name"): {"str"}, ("Scene.to_toml", "description"): {"str"},  # the file's name and text
 }
@@ -460,6 +471,7 @@ def _properties():
 
 # instances of the classes that only results have (no constructor)
 INSTANCES_OF_RESULTS = {
+    "TreeLink": lambda: _scene_with_tree().bodies[0],
     "BatchResult": lambda: rd.simulate_batch(rd.RigidBody(1.0, I_BOX), [rd.RigidBodyState(w_B=V)], 0.01, 2),
     "BatchSceneResult": lambda: rd.simulate_batch(_scene(), [[rd.ParticleState(), rd.RigidBodyState(w_B=V)]], 0.01, 2),
     "DensityIntegral": lambda: rd.integrate_density_over_box(lambda p: np.ones(len(p)), -V, V, order=2),
@@ -492,7 +504,7 @@ INSTANCES_OF_RESULTS = {
                                                        rd.PivotedPlanarBodyState(), alpha_B=0.3),
     "SceneFrame": lambda: rd.SceneFrame.rotating([0, 0, 1.0], 0.5), "MassFlow": lambda: rd.MassFlow(-0.1),
     "Wheel": lambda: rd.Wheel(V, 0.01), "Gyrostat": lambda: rd.Gyrostat(rd.RigidBody(1.0, I_BOX), [rd.Wheel(V, 0.01)]),
-    "GyrostatState": lambda: rd.GyrostatState(wheel_speeds=[1.0]),
+    "GyrostatState": lambda: rd.GyrostatState(wheel_speeds=[1.0]), "JointState": lambda: rd.JointState([0.1], [0.2]),
 }
 PROPERTIES = _properties()
 # the states' fields: assigned whole, checked as the constructor checks (their arrays are read-only)
@@ -502,7 +514,7 @@ ASSIGNABLE = {("ParticleState", "p_W"), ("ParticleState", "v_W"), ("PlanarBodySt
               ("RigidBodyState", "w_B"), ("PivotedBodyState", "q_WB"), ("PivotedBodyState", "w_B"),
               ("PivotedPlanarBodyState", "theta"), ("PivotedPlanarBodyState", "omega"),
               ("GyrostatState", "p_W"), ("GyrostatState", "q_WB"), ("GyrostatState", "v_W"), ("GyrostatState", "w_B"),
-              ("GyrostatState", "wheel_speeds"),
+              ("GyrostatState", "wheel_speeds"), ("JointState", "q"), ("JointState", "v"),
               ("Scene", "frame")}  # a scene's frame: a SceneFrame or None
 
 

@@ -91,6 +91,7 @@ MADE_BY_THE_CORE = {
     "SceneResult": "simulate on a Scene",
     "SimulationResult": "simulate on one body",
     "ToleranceChoice": "simulate(..., tolerance=...): result.choice",
+    "TreeLink": "Scene.add_tree: one per link, read as scene.bodies[i]",
     "WeldedMesh": "weld_vertices",
 }
 CALLABLES = [(name, obj) for name, obj in _public_names() if callable(obj)]

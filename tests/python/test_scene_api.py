@@ -110,7 +110,7 @@ def test_scene_add_checks_the_element_against_the_bodies_so_far():
         scene.add(rd.Particle(1.0))
     with pytest.raises(ValueError, match=r"^name: expected a name no other body of the scene has"):
         scene.add_body(rd.Particle(1.0), name="dot")
-    with pytest.raises(TypeError, match=r"^body: expected a Particle, PlanarBody, RigidBody, PivotedBody, PivotedPlanarBody or Gyrostat"):
+    with pytest.raises(TypeError, match=r"^body: expected a Particle, PlanarBody, RigidBody, PivotedBody, PivotedPlanarBody, Gyrostat or TreeLink"):
         scene.add_body(rd.ParticleState())
     assert len(scene.elements) == 0 and len(scene.bodies) == 2  # nothing refused was added
 

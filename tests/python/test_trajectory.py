@@ -133,8 +133,8 @@ def test_a_batch_remembers_its_order_and_gives_it_to_its_samples(kind):
     assert back.scalar_first is True and back[0].scalar_first is True
     old = type(wxyz).__new__(type(wxyz))
     # an earlier pickle, without the order and the error estimate after it (and a scene batch's wheel columns
-    # between them): (x, y, z, w)
-    old.__setstate__(wxyz.__getstate__()[:-2 if kind == "body" else -5])
+    # between them and its joint columns after them): (x, y, z, w)
+    old.__setstate__(wxyz.__getstate__()[:-2 if kind == "body" else -7])
     assert old.scalar_first is False
 
 

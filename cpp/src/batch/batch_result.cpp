@@ -61,11 +61,12 @@ void put_sample(BatchTrajectory& batch, std::size_t i, const Trajectory& run) {
 }
 
 BatchSceneSimulation empty_scene_batch(std::size_t samples, std::size_t records, std::int64_t body_count,
-                                       std::int64_t element_count, std::int64_t wheel_count) {
+                                       std::int64_t element_count, std::int64_t wheel_count,
+                                       std::int64_t joint_q_count, std::int64_t joint_v_count) {
   const auto nb = static_cast<std::size_t>(body_count), ne = static_cast<std::size_t>(element_count);
   BatchSceneSimulation b;
   b.samples = samples, b.records = records, b.body_count = body_count, b.element_count = element_count;
-  b.wheel_count = wheel_count;
+  b.wheel_count = wheel_count, b.joint_q_count = joint_q_count, b.joint_v_count = joint_v_count;
   b.t = nans(samples, records, 1);
   b.p_W = nans(samples, records, nb * 3);
   b.q_WB = nans(samples, records, nb * 4);
@@ -77,6 +78,8 @@ BatchSceneSimulation empty_scene_batch(std::size_t samples, std::size_t records,
   b.work = nans(samples, records, ne);
   b.power = b.work;
   b.wheel_speed = b.motor_work = nans(samples, records, static_cast<std::size_t>(wheel_count));
+  b.joint_q = nans(samples, records, static_cast<std::size_t>(joint_q_count));
+  b.joint_v = nans(samples, records, static_cast<std::size_t>(joint_v_count));
   b.filled.assign(samples, 0);
   b.diverged.assign(samples, 0);
   b.unconverged_steps.assign(samples, 0);
@@ -123,6 +126,15 @@ void put_sample(BatchSceneSimulation& batch, std::size_t i, const SceneSimulatio
     copy_rows(batch.wheel_speed, i, n, nw, run.wheel_speed, rows);
     copy_rows(batch.motor_work, i, n, nw, run.motor_work, rows);
   }
+  const auto nq = static_cast<std::size_t>(batch.joint_q_count), nv = static_cast<std::size_t>(batch.joint_v_count);
+  if (run.joint_q.size() != run.size() * nq || run.joint_v.size() != run.size() * nv) {
+    throw std::invalid_argument("run: expected " + std::to_string(nq) + " tree coordinates and " + std::to_string(nv) +
+                                " velocities per record (the batch's), got " + std::to_string(run.joint_q.size()) +
+                                " and " + std::to_string(run.joint_v.size()) + " values in " + std::to_string(run.size()) +
+                                " records");
+  }
+  if (nq > 0) copy_rows(batch.joint_q, i, n, nq, run.joint_q, rows);
+  if (nv > 0) copy_rows(batch.joint_v, i, n, nv, run.joint_v, rows);
   batch.filled[i] = static_cast<std::int64_t>(rows);
   batch.diverged[i] = run.diverged ? 1 : 0;
   batch.unconverged_steps[i] = run.unconverged_steps;

@@ -229,6 +229,7 @@ BatchSceneSimulation simulate_batch(const std::vector<CompiledScene>& scenes,
   check_batch(samples, scenes.size(), "scenes", dt, threads);
   const std::size_t nb = scenes[0].scene().bodies.size(), ne = scenes[0].element_types().size();
   const std::size_t nw = wheel_count(scenes[0].scene().bodies);
+  const JointCounts joints = joint_counts(scenes[0].scene().bodies);  // each sample's run checks its own (put_sample)
   for (std::size_t s = 1; s < scenes.size(); ++s) {
     const std::size_t nb_s = scenes[s].scene().bodies.size(), ne_s = scenes[s].element_types().size();
     const std::size_t nw_s = wheel_count(scenes[s].scene().bodies);
@@ -241,7 +242,8 @@ BatchSceneSimulation simulate_batch(const std::vector<CompiledScene>& scenes,
   }
   BatchSceneSimulation out = empty_scene_batch(samples, batch_record_count(common.steps, common.record_every),
                                                static_cast<std::int64_t>(nb), static_cast<std::int64_t>(ne),
-                                               static_cast<std::int64_t>(nw));
+                                               static_cast<std::int64_t>(nw), static_cast<std::int64_t>(joints.q),
+                                               static_cast<std::int64_t>(joints.v));
   const BatchParameters p{dt, {}, {}};
   out.interrupted = run_samples(samples, threads, common.monitor, [&](std::size_t i, const StepMonitor& monitor) {
     const SceneSimulation run =

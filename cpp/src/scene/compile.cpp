@@ -49,7 +49,8 @@ void check_names(const Scene& scene) {
 // UniformGravity (in the plane for a planar body, as today's planar simulate requires) and at most one
 // ScheduledLoads through the centre of mass. Returns false otherwise.
 bool one_body_plan(const Scene& scene, OneBodyPlan& plan) {
-  if (scene.bodies.size() != 1 || is_pivoted(scene.bodies[0]) || body_traits(scene.bodies[0]).has_rotors || scene.frame ||
+  if (scene.bodies.size() != 1 || is_pivoted(scene.bodies[0]) || body_traits(scene.bodies[0]).has_rotors ||
+      body_traits(scene.bodies[0]).is_linked || scene.frame ||
       has_mass_flow(scene, 0)) {
     return false;
   }
@@ -248,6 +249,47 @@ void check_rotors(const Scene& scene, std::size_t i, Method method) {
   }
 }
 
+// A tree's links are consecutive bodies in link order, all of one tree (tree/tree_link.hpp; kinds/tree_slot.hpp
+// holds the tree with its first link), whose own gravity is zero (a UniformGravity element loads its links); its
+// links have no free motion in closed form: the splittings and the implicit gyroscopic kick are refused
+void check_tree_links(const Scene& scene, Method method) {
+  const std::size_t n = scene.bodies.size();
+  for (std::size_t i = 0; i < n;) {
+    const auto* first = std::get_if<TreeLink>(&scene.bodies[i]);
+    if (!first) {
+      ++i;
+      continue;
+    }
+    const std::string body = "bodies[" + std::to_string(i) + "] '" + body_name(scene, i) + "'";
+    if (!first->tree || first->link != 0) {
+      throw std::invalid_argument(body + ": expected link 0 of a tree first, its other links after it in order (a tree "
+                                         "is added whole), got " + (first->tree ? "link " + std::to_string(first->link) : "no tree"));
+    }
+    const Tree& tree = *first->tree;
+    if (!tree.gravity().isZero(0.0)) {
+      throw_invalid(body + ": the tree's gravity", "zero in a scene (declare a UniformGravity element: it loads every link)",
+                    tree.gravity().transpose().eval());
+    }
+    for (int k = 1; k < tree.num_links(); ++k) {
+      const std::size_t b = i + static_cast<std::size_t>(k);
+      const auto* link = b < n ? std::get_if<TreeLink>(&scene.bodies[b]) : nullptr;
+      if (!link || link->tree != first->tree || link->link != k) {
+        throw std::invalid_argument("bodies[" + std::to_string(b) + "]: expected link " + std::to_string(k) + " ('" +
+                                    tree.link(k).name + "') of the tree whose link 0 is " + body +
+                                    " (a tree's links are consecutive bodies, in order), got " +
+                                    (b < n ? std::string("a ") + kind_name(scene.bodies[b]) : std::string("no body")));
+      }
+    }
+    if (is_splitting(method) || method == Method::semi_implicit_euler_implicit_gyroscopic || method == Method::exact) {
+      throw std::invalid_argument("method: expected a method that integrates the whole motion (explicit_euler, "
+                                  "semi_implicit_euler, rk4, rkmk4, implicit_midpoint) for the tree of " + body +
+                                  ": its links, held by joints, have no free motion in closed form, got '" +
+                                  method_info(method).name + "'");
+    }
+    i += static_cast<std::size_t>(tree.num_links());
+  }
+}
+
 void check_scene(const Scene& scene, Method method) {
   method_info(method);  // throws for a Method out of range
   check_names(scene);
@@ -278,6 +320,7 @@ void check_scene(const Scene& scene, Method method) {
     }
   }
   for (std::size_t i = 0; i < n; ++i) check_rotors(scene, i, method);
+  check_tree_links(scene, method);
   for (std::size_t e = 0; e < scene.elements.size(); ++e) {
     const auto* gradient = std::get_if<GravityGradient>(&scene.elements[e]);
     if (!gradient) continue;

@@ -44,6 +44,10 @@ std::vector<BodyState> checked_scene_input(const Scene& scene, Method compiled_m
                                   std::to_string(i) + " '" + body_name(scene, i) + "' is a " + kind_name(scene.bodies[i]) +
                                   "), got a " + state_type_name(initial[i].index()));
     }
+    if (const auto* link = std::get_if<TreeLink>(&scene.bodies[i])) {
+      out.push_back(checked_state(*link, std::get<JointState>(initial[i]), item));  // its joint's sizes
+      continue;
+    }
     out.push_back(std::visit([&](const auto& s) -> BodyState { return checked_state(s, item); }, initial[i]));
     if (const auto* gyrostat = std::get_if<Gyrostat>(&scene.bodies[i])) {
       out.back() = checked_state(*gyrostat, std::get<GyrostatState>(out.back()), item);  // a speed per wheel

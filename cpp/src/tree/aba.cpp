@@ -91,6 +91,12 @@ const Eigen::VectorXd& aba(const Tree& tree, const Eigen::Ref<const Eigen::Vecto
   tree.check_velocity(tau, "tau");
   check_external_forces(tree, f_ext);
   forward_kinematics(tree, q, v, ws);
+  return aba_after_kinematics(tree, v, tau, f_ext, ws);
+}
+
+const Eigen::VectorXd& aba_after_kinematics(const Tree& tree, const Eigen::Ref<const Eigen::VectorXd>& v,
+                                            const Eigen::Ref<const Eigen::VectorXd>& tau, const std::vector<Force>& f_ext,
+                                            TreeWorkspace& ws) {
   const int n = tree.num_links();
   // pass 1: c_i = v_i x S_i qd_i, I^A_i = I_i, p^A_i = v_i x* I_i v_i - f_ext,i
   for (int i = 0; i < n; ++i) {

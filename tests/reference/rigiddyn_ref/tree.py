@@ -188,3 +188,26 @@ def forward_dynamics(links, q, v, tau, gravity=np.zeros(3), f_ext=None):
 def potential_energy(links, q, gravity):
     T_W, _ = poses(links, q)
     return -sum(l["mass"] * gravity @ (T[:3, :3] @ l["com"] + T[:3, 3]) for l, T in zip(links, T_W))
+
+
+def quat_rate(q, w_L):
+    """q̇ = ½ q ⊗ (w_L, 0) for q = (x, y, z, w) and the angular velocity w_L in the moving frame."""
+    x, y, z, s = q
+    return 0.5 * np.array([s * w_L[0] + y * w_L[2] - z * w_L[1], s * w_L[1] + z * w_L[0] - x * w_L[2],
+                           s * w_L[2] + x * w_L[1] - y * w_L[0], -(x * w_L[0] + y * w_L[1] + z * w_L[2])])
+
+
+def configuration_rate(links, q, v):
+    """q̇ (nq,) of the velocity v, joint by joint: qd for revolute and prismatic joints, ½ q ⊗ (w_L, 0) for a
+    quaternion, ṗ_JL = R(q_JL) v_L for a free joint's position (its twist [w_L; v_L] is in the link frame)."""
+    idx, nq, _ = sizes(links)
+    q_dot = np.zeros(nq)
+    for l, (iq, iv) in zip(links, idx):
+        if l["kind"] in ("revolute", "prismatic"):
+            q_dot[iq] = v[iv]
+        elif l["kind"] == "spherical":
+            q_dot[iq:iq + 4] = quat_rate(q[iq:iq + 4], v[iv:iv + 3])
+        elif l["kind"] == "free":
+            q_dot[iq:iq + 3] = quat_matrix(q[iq + 3:iq + 7]) @ v[iv + 3:iv + 6]
+            q_dot[iq + 3:iq + 7] = quat_rate(q[iq + 3:iq + 7], v[iv:iv + 3])
+    return q_dot

@@ -48,6 +48,8 @@ struct BatchSceneSimulation {
   std::int64_t body_count = 0;                // nb
   std::int64_t element_count = 0;             // ne (the scene's elements, then the frame's fictitious terms)
   std::int64_t wheel_count = 0;               // nw (the wheels of the scene's gyrostats)
+  std::int64_t joint_q_count = 0;             // nq (the coordinates of the scene's trees)
+  std::int64_t joint_v_count = 0;             // nv (their velocities)
   std::vector<double> t;                      // (N, n) time [s]
   std::vector<double> p_W;                    // (N, n, nb, 3) centre of mass positions in W [m]
   std::vector<double> q_WB;                   // (N, n, nb, 4) attitudes (x, y, z, w)
@@ -66,6 +68,8 @@ struct BatchSceneSimulation {
   std::vector<double> mass_flow_energy;       // (N, n, nb) each body's mass-flow energy since t0 [J]
   std::vector<double> wheel_speed;            // (N, n, nw) each gyrostat wheel's speed relative to its body [rad/s]
   std::vector<double> motor_work;             // (N, n, nw) each wheel's motor work since t0 [J]
+  std::vector<double> joint_q;                // (N, n, nq) the trees' configurations q
+  std::vector<double> joint_v;                // (N, n, nv) their velocities v
   std::vector<std::int64_t> filled;           // (N,) rows filled per sample (n unless it stopped early)
   std::vector<std::uint8_t> diverged;         // (N,) 1 where the sample's state became non-finite
   std::vector<std::int64_t> unconverged_steps;  // (N,)
@@ -73,10 +77,11 @@ struct BatchSceneSimulation {
   bool interrupted = false;                   // the monitor stopped the batch: samples not run stay NaN
 };
 
-// A batch of `samples` scene runs of `records` records, nb bodies, ne work columns and nw gyrostat wheels, every
-// value NaN.
+// A batch of `samples` scene runs of `records` records, nb bodies, ne work columns, nw gyrostat wheels and the trees'
+// nq coordinates and nv velocities, every value NaN.
 BatchSceneSimulation empty_scene_batch(std::size_t samples, std::size_t records, std::int64_t body_count,
-                                       std::int64_t element_count, std::int64_t wheel_count = 0);
+                                       std::int64_t element_count, std::int64_t wheel_count = 0,
+                                       std::int64_t joint_q_count = 0, std::int64_t joint_v_count = 0);
 
 // Copies the scene run of sample i into its rows, as put_sample above (std::invalid_argument if the run's
 // body or element count is not the batch's).

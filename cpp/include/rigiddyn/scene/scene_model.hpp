@@ -8,6 +8,7 @@
 //   pivoted   (q_WB xyzw 4, w_B 3)                   pinned at O: the centre of mass follows the attitude
 //   pivoted planar (θ, ω)
 //   gyrostat  (p_W 3, q_WB xyzw 4, v_W 3, w_B 3, its N wheel speeds, its N motor works [J])
+//   tree      (q nq, v nv) of the whole tree, at its first link's place (its links are consecutive bodies)
 // and, right after its own, the mass m [kg] of a particle or rigid body with a MassFlow (scene/mass_flow.hpp;
 // tangent ṁ); then t [s] (so that every method evaluates time-dependent forces at its own stage times), then one
 // work slot per element [J] (its work since t0, integrated with the motion: dW_e/dt = P_e), then one mass-flow
@@ -105,6 +106,14 @@ struct has_internal_record : std::false_type {};
 template <class Slot>
 struct has_internal_record<Slot, std::void_t<decltype(std::declval<const Slot&>().record_internal(
                                       static_cast<const double*>(nullptr), std::declval<SceneSimulation&>()))>>
+    : std::true_type {};
+
+// Whether a body's slot spans several bodies (a tree's links: states(y, first) writes each of their states).
+template <class Slot, class = void>
+struct spans_bodies : std::false_type {};
+template <class Slot>
+struct spans_bodies<Slot, std::void_t<decltype(std::declval<const Slot&>().states(static_cast<const double*>(nullptr),
+                                                                                   static_cast<BodyState*>(nullptr)))>>
     : std::true_type {};
 
 }  // namespace detail
@@ -412,7 +421,13 @@ class BasicSceneModel {
   // The bodies' states in y (attitudes as integrated)
   std::vector<BodyState> states(const Coordinates& y) const {
     std::vector<BodyState> out(body_count());
-    for_each_slot([&](const auto& s) { out[s.body] = s.state(y.data()); });
+    for_each_slot([&](const auto& s) {
+      if constexpr (detail::spans_bodies<std::decay_t<decltype(s)>>::value) {
+        s.states(y.data(), &out[s.body]);
+      } else {
+        out[s.body] = s.state(y.data());
+      }
+    });
     return out;
   }
 

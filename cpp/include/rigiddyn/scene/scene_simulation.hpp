@@ -46,6 +46,9 @@ struct SceneSimulation {
                                           // wheels of the gyrostats in the scene's order (empty without one)
   std::vector<double> motor_work;         // (n, nw) each wheel's motor work since t0 [J] (∫ u Ω dt): T − T(0) =
                                           // Σ work + Σ mass_flow_energy + Σ motor_work to the method's error
+  std::vector<double> joint_q;            // (n, nq) the trees' configurations q as integrated (quaternions' norms
+                                          // not forced), the trees in the scene's order (empty without one)
+  std::vector<double> joint_v;            // (n, nv) their velocities v
   bool diverged = false;                  // the state became non-finite; the run stopped there
   bool interrupted = false;               // options.monitor returned true; the run stopped there
   std::int64_t unconverged_steps = 0;     // steps whose implicit solve stopped at its iteration cap

@@ -24,4 +24,10 @@ const Eigen::VectorXd& aba(const Tree& tree, const Eigen::Ref<const Eigen::Vecto
                            const Eigen::Ref<const Eigen::VectorXd>& v, const Eigen::Ref<const Eigen::VectorXd>& tau,
                            const std::vector<Force>& f_ext, TreeWorkspace& ws);
 
+// aba's passes 1-3 after forward kinematics at (q, v) filled ws.X_up and ws.v, without the checks (the scene's tree
+// slot: its stage coordinates are valid by construction, and a diverging run is caught by its run loop).
+const Eigen::VectorXd& aba_after_kinematics(const Tree& tree, const Eigen::Ref<const Eigen::VectorXd>& v,
+                                            const Eigen::Ref<const Eigen::VectorXd>& tau, const std::vector<Force>& f_ext,
+                                            TreeWorkspace& ws);
+
 }  // namespace rigiddyn

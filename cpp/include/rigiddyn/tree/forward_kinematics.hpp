@@ -14,6 +14,11 @@ namespace rigiddyn {
 void forward_kinematics(const Tree& tree, const Eigen::Ref<const Eigen::VectorXd>& q,
                         const Eigen::Ref<const Eigen::VectorXd>& v, TreeWorkspace& ws);
 
+// forward_kinematics without the checks, for callers that keep q and v valid themselves (each quaternion of q of
+// unit norm: the scene's tree slot normalises them).
+void forward_kinematics_unchecked(const Tree& tree, const Eigen::Ref<const Eigen::VectorXd>& q,
+                                  const Eigen::Ref<const Eigen::VectorXd>& v, TreeWorkspace& ws);
+
 // Fills ws.X_up and ws.X_W from q only (the link poses).
 void link_poses(const Tree& tree, const Eigen::Ref<const Eigen::VectorXd>& q, TreeWorkspace& ws);
 

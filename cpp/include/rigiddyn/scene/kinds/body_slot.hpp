@@ -21,7 +21,10 @@
 // are optional: set_time(t) (a kind with piecewise-constant inputs, set at each piece of a run, as the elements')
 // and record_internal(y, out) (a kind with coordinates of its own beyond the body's motion: the gyrostat's wheel
 // speeds).
-// The pointers y, dy, ξ, θ are the whole vectors; a slot reads its own block at at_y / at_xi.
+// The pointers y, dy, ξ, θ are the whole vectors; a slot reads its own block at at_y / at_xi. A slot may span
+// several consecutive bodies (a tree's links, kinds/tree_slot.hpp): it then reads their kinematics, wrenches and
+// states, and writes their records, as the arrays that start at its first body's, and has states(y, first) in
+// place of state(y).
 #pragma once
 #include "rigiddyn/always_inline.hpp"
 #include "rigiddyn/exact/free_body.hpp"

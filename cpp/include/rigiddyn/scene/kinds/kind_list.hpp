@@ -11,6 +11,7 @@
 #include "rigiddyn/scene/kinds/pivoted_slot.hpp"
 #include "rigiddyn/scene/kinds/planar_slot.hpp"
 #include "rigiddyn/scene/kinds/rigid_slot.hpp"
+#include "rigiddyn/scene/kinds/tree_slot.hpp"
 
 #include <stdexcept>
 #include <tuple>
@@ -27,7 +28,8 @@ using SlotGroups =
                std::vector<PivotedSlot<SphericalEuler>>, std::vector<PivotedSlot<PrincipalEuler>>,
                std::vector<PivotedSlot<FullEuler>>, std::vector<PivotedPlanarSlot>, std::vector<MassParticleSlot>,
                std::vector<MassRigidSlot<SphericalEuler>>, std::vector<MassRigidSlot<PrincipalEuler>>,
-               std::vector<MassRigidSlot<FullEuler>>, std::vector<FunctionRigidSlot>, std::vector<GyrostatSlot>>;
+               std::vector<MassRigidSlot<FullEuler>>, std::vector<FunctionRigidSlot>, std::vector<GyrostatSlot>,
+               std::vector<TreeSlot>>;
 
 // The slot of body b (its kind's add_slot) at the offsets y, ξ, which it advances past its blocks
 inline void add_body_slot(SlotGroups& groups, int b, const Body& body, Eigen::Index& y, Eigen::Index& xi) {

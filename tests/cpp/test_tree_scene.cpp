@@ -1,0 +1,276 @@
+// A kinematic tree as bodies of a scene (tree/tree_link.hpp, scene/kinds/tree_slot.hpp): a one-link tree on a ball
+// joint is the pivoted body (the same trajectory to round-off); a double pendulum loaded by the scene's
+// UniformGravity runs the same RK4 map as a hand loop around the articulated-body algorithm with the tree's own
+// gravity; its energy error falls at the method's order; a free-floating tree keeps its momenta; the links' records
+// are the links' motions; bad layouts and the methods a tree cannot take are refused, naming the value.
+#include <gtest/gtest.h>
+
+#include "invalid_argument_message.hpp"
+#include "rigiddyn/scene/compile.hpp"
+#include "rigiddyn/scene/simulate_scene.hpp"
+#include "rigiddyn/tree/aba.hpp"
+#include "rigiddyn/tree/energy.hpp"
+
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace {
+
+using namespace rigiddyn;
+
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+using test::message_of;
+
+SimulationOptions with(Method method, double dt, std::int64_t steps) {
+  SimulationOptions o;
+  o.method = method, o.dt = dt, o.steps = steps;
+  return o;
+}
+
+// Appends every link of `tree` to `scene` (named by their links) with the joint states (q_i, v_i) of (q, v).
+void add_tree(Scene& scene, const Tree& tree, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+              std::vector<BodyState>& states) {
+  const auto shared = std::make_shared<const Tree>(tree);
+  for (int i = 0; i < tree.num_links(); ++i) {
+    const Link& link = tree.link(i);
+    add_body(scene, TreeLink{shared, i}, link.name);
+    states.push_back(JointState{q.segment(link.idx_q, link.nq), v.segment(link.idx_v, link.nv)});
+  }
+}
+
+SpatialInertia rod(double mass) {  // 1 m along the link's x axis, its centre of mass at the middle
+  return SpatialInertia(mass, Eigen::Vector3d(0.5, 0.0, 0.0), Eigen::Vector3d(1e-3, mass / 12, mass / 12).asDiagonal());
+}
+
+Tree double_pendulum(const Eigen::Vector3d& gravity = Eigen::Vector3d::Zero()) {
+  Tree tree(gravity);
+  tree.add_link("upper", -1, RevoluteJoint(Eigen::Vector3d::UnitY()), rod(2.0));
+  tree.add_link("lower", 0, RevoluteJoint(Eigen::Vector3d::UnitY()), rod(1.0),
+                Transform(Eigen::Matrix3d::Identity(), Eigen::Vector3d(1.0, 0.0, 0.0)));
+  return tree;
+}
+
+Scene gravity_scene() {
+  Scene scene;
+  scene.elements.push_back(UniformGravity{Eigen::Vector3d(0.0, 0.0, -9.81), {}});
+  return scene;
+}
+
+// A heavy top: I_C = diag(1, 1.5, 0.5) kg m², 2 kg, its centre of mass 0.3 m along its axis from the pivot at
+// p_WO = (0.1, 0.2, 0.3) m, under gravity, spinning fast and tilted, in the scene frame `frame` (none: inertial).
+// As a pivoted body, and as a one-link tree on a ball joint placed at O: the same equations (Euler's about O; the
+// articulated-body algorithm on one link; a moving frame's fictitious forces and torques on the link as on the
+// pivoted body, at its centre of mass with its inertia about it), so the same RK4 map, evaluated in another order.
+// Each evaluation rounds by a few ε of the terms (|ω|, |α| ~ 30); the top's flow over 1 s amplifies a perturbation
+// by at most e^{L t} with L ≲ |ω| = 20/s... far less in practice for a stable top: its tangent map stays O(|ω| t) (a
+// quasi-periodic motion), ~20. 200 steps × 10 ε × 30 × 20 ≈ 3e-10 absolute on ω and v, 1e-11 on the attitude and
+// the position: the bounds below.
+void expect_the_pivoted_body(const std::optional<SceneFrame>& frame) {
+  const Eigen::Vector3d inertia(1.0, 1.5, 0.5), c(0.0, 0.0, 0.3), p_WO(0.1, 0.2, 0.3);
+  PivotedBodyState top;
+  top.q_WB = Eigen::Quaterniond(Eigen::AngleAxisd(0.4, Eigen::Vector3d(1.0, 0.2, 0.0).normalized()));
+  top.w_B = Eigen::Vector3d(0.3, -0.2, 20.0);
+
+  Scene pivoted = gravity_scene();
+  pivoted.frame = frame;
+  add_body(pivoted, PivotedBody(RigidBody(2.0, inertia), c, p_WO), "top");
+  const SceneSimulation a = simulate(pivoted, {top}, with(Method::rk4, 0.005, 200));
+
+  Tree tree;
+  tree.add_link("top", -1, SphericalJoint(), SpatialInertia(2.0, c, inertia.asDiagonal()),
+                Transform(Eigen::Matrix3d::Identity(), p_WO));
+  Scene linked = gravity_scene();
+  linked.frame = frame;
+  std::vector<BodyState> states;
+  add_tree(linked, tree, Eigen::Vector4d(top.q_WB.coeffs()), top.w_B, states);
+  const SceneSimulation b = simulate(linked, states, with(Method::rk4, 0.005, 200));
+
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_NEAR(b.w_B[3 * i + k], a.w_B[3 * i + k], 3e-10) << i;
+      EXPECT_NEAR(b.p_W[3 * i + k], a.p_W[3 * i + k], 1e-11) << i;
+      EXPECT_NEAR(b.v_W[3 * i + k], a.v_W[3 * i + k], 3e-10) << i;
+    }
+    // q_WB of the tree is R_WL's quaternion (a sign of its own): compare the rotations
+    const Eigen::Quaterniond qa(a.q_WB[4 * i + 3], a.q_WB[4 * i], a.q_WB[4 * i + 1], a.q_WB[4 * i + 2]);
+    const Eigen::Quaterniond qb(b.q_WB[4 * i + 3], b.q_WB[4 * i], b.q_WB[4 * i + 1], b.q_WB[4 * i + 2]);
+    EXPECT_LT(qa.normalized().angularDistance(qb), 1e-11) << i;
+    EXPECT_NEAR(b.total_energy[i], a.total_energy[i], 1e-9 * std::abs(a.total_energy[0])) << i;
+  }
+}
+
+TEST(TreeScene, OneLinkOnABallJointIsThePivotedBody) { expect_the_pivoted_body(std::nullopt); }
+
+// in a frame F turning at 2 rad/s about an inclined axis (the centrifugal and Coriolis terms compile adds)
+TEST(TreeScene, OneLinkOnABallJointIsThePivotedBodyInATurningFrame) {
+  expect_the_pivoted_body(SceneFrame::rotating(Eigen::Vector3d(0.2, 0.1, 1.0), 2.0));
+}
+
+// The double pendulum loaded by the scene's UniformGravity against a hand RK4 loop of q̈ = ABA(q, q̇) with the tree's
+// own gravity: the same equations and the same map; the two evaluate gravity differently (an external force per
+// link against the base acceleration a_0 = −g), a few ε of m g l ≈ 30 per evaluation, amplified over 1 s of a
+// chaotic double pendulum released horizontal by at most ~e^{λ t} with λ ≲ 5/s: 400 evaluations × 4 ε × 30 ×
+// e^5 ≈ 1.6e-9, so 1e-8 on the angles and rates.
+TEST(TreeScene, DoublePendulumUnderSceneGravityIsTheHandLoopAroundAba) {
+  const Eigen::Vector2d q0(0.0, 0.3), v0(0.0, 0.0);
+  Scene scene = gravity_scene();
+  std::vector<BodyState> states;
+  add_tree(scene, double_pendulum(), q0, v0, states);
+  const double h = 0.01;
+  const CompiledScene compiled = compile_scene(scene, Method::rk4);
+  SceneState end;
+  end.bodies = states;
+  for (int n = 0; n < 100; ++n) end = step(compiled, end.bodies, with(Method::rk4, h, 1));
+
+  const Tree tree = double_pendulum(Eigen::Vector3d(0.0, 0.0, -9.81));
+  TreeWorkspace ws(tree);
+  const Eigen::VectorXd tau = Eigen::VectorXd::Zero(2);
+  const auto accel = [&](const Eigen::VectorXd& q, const Eigen::VectorXd& v) -> Eigen::VectorXd {
+    return aba(tree, q, v, tau, {}, ws);
+  };
+  Eigen::VectorXd q = q0, v = v0;
+  for (int n = 0; n < 100; ++n) {
+    const Eigen::VectorXd k1q = v, k1v = accel(q, v);
+    const Eigen::VectorXd k2q = v + 0.5 * h * k1v, k2v = accel(q + 0.5 * h * k1q, k2q);
+    const Eigen::VectorXd k3q = v + 0.5 * h * k2v, k3v = accel(q + 0.5 * h * k2q, k3q);
+    const Eigen::VectorXd k4q = v + h * k3v, k4v = accel(q + h * k3q, k4q);
+    q += h / 6.0 * (k1q + 2.0 * k2q + 2.0 * k3q + k4q);
+    v += h / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
+  }
+  for (int i = 0; i < 2; ++i) {
+    const auto& s = std::get<JointState>(end.bodies[i]);
+    EXPECT_NEAR(s.q[0], q[i], 1e-8) << i;
+    EXPECT_NEAR(s.v[0], v[i], 1e-8) << i;
+  }
+}
+
+// The links' records are their motions: link 1's centre of mass at p_W = p_WL + R_WL c_L of forward kinematics;
+// joint_q and joint_v the tree's q and v; the records' energy the tree's T + V (tree/energy.hpp)
+TEST(TreeScene, RecordsAreTheLinksMotionsAndTheTreesEnergy) {
+  const Eigen::Vector2d q0(0.4, -0.7), v0(1.5, -2.0);
+  Scene scene = gravity_scene();
+  std::vector<BodyState> states;
+  add_tree(scene, double_pendulum(), q0, v0, states);
+  const SceneSimulation r = simulate(scene, states, with(Method::rk4, 0.01, 1));
+  const Tree tree = double_pendulum(Eigen::Vector3d(0.0, 0.0, -9.81));
+  // upper: R_WL = Ry(q0), c at 0.5 m along its x; lower's origin 1 m along upper's x, its c 0.5 m along its own x
+  const Eigen::Matrix3d R0 = Eigen::AngleAxisd(q0[0], Eigen::Vector3d::UnitY()).toRotationMatrix();
+  const Eigen::Matrix3d R1 = R0 * Eigen::AngleAxisd(q0[1], Eigen::Vector3d::UnitY()).toRotationMatrix();
+  const Eigen::Vector3d p1 = R0 * Eigen::Vector3d(1.0, 0.0, 0.0) + R1 * Eigen::Vector3d(0.5, 0.0, 0.0);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(r.p_W[3 + k], p1[k], 4 * kEps) << k;
+  EXPECT_NEAR(r.w_B[3 + 1], v0[0] + v0[1], 4 * kEps);  // ω of the lower link: the sum of the joint rates about y
+  ASSERT_EQ(r.joint_q.size(), 4u);  // two records of the tree's q and v
+  EXPECT_EQ(r.joint_q[0], q0[0]);
+  EXPECT_EQ(r.joint_q[1], q0[1]);
+  EXPECT_EQ(r.joint_v[1], v0[1]);
+  TreeWorkspace ws(tree);
+  const double E = kinetic_energy(tree, q0, v0, ws) + potential_energy(tree, q0, ws);
+  EXPECT_NEAR(r.total_energy[0], E, 16 * kEps * 30.0);  // |T|, |V| ≲ 30 J
+}
+
+// Each method's global error on the double pendulum released at q = (0.8, -0.4) rad, after 1 s: the joint state at
+// h and h/2 against the run of the same method at h/32 (its own error at least 32 times smaller than at h); the
+// error falls by 2^p, p the method's order (method.hpp), to within the next term's share: the ratio lies within
+// [0.75, 1.25] × 2^p
+TEST(TreeScene, GlobalErrorFallsAtEachMethodsOrder) {
+  const auto end_state = [](Method method, double h) {
+    Scene scene = gravity_scene();
+    std::vector<BodyState> states;
+    add_tree(scene, double_pendulum(), Eigen::Vector2d(0.8, -0.4), Eigen::Vector2d::Zero(), states);
+    const SceneSimulation r = simulate(scene, states, with(method, h, std::lround(1.0 / h)));
+    Eigen::Vector4d x;
+    const std::size_t n = r.size() - 1;
+    x << r.p_W[6 * n + 3], r.p_W[6 * n + 5], r.v_W[6 * n + 3], r.v_W[6 * n + 5];  // the lower link's centre of mass
+    return x;
+  };
+  for (const Method m : {Method::explicit_euler, Method::semi_implicit_euler, Method::rk4, Method::rkmk4,
+                         Method::implicit_midpoint}) {
+    const int p = method_info(m).order;
+    const double h = p == 1 ? 0.002 : 0.01;
+    const Eigen::Vector4d reference = end_state(m, h / 32);
+    const double ratio = (end_state(m, h) - reference).norm() / (end_state(m, h / 2) - reference).norm();
+    EXPECT_GT(ratio, 0.75 * std::pow(2.0, p)) << method_info(m).name;
+    EXPECT_LT(ratio, 1.25 * std::pow(2.0, p)) << method_info(m).name;
+  }
+}
+
+// A free-floating tree (a free joint at the root, a ball joint, a revolute joint) with no element: its linear
+// momentum and its angular momentum about W's origin are conserved by the dynamics; RK4 keeps them to its error,
+// O(h^4): at h = 1 ms over 1 s with rates ~2 rad/s, |ΔL|, |ΔH| ≲ (2 h)^4 × 10 ~ 1e-10 of their scale, bound 1e-8
+TEST(TreeScene, FreeFloatingTreeKeepsItsMomenta) {
+  Tree tree;
+  tree.add_link("base", -1, FreeJoint(), SpatialInertia(10.0, Eigen::Vector3d::Zero(), Eigen::Vector3d(1.0, 2.0, 2.5).asDiagonal()));
+  tree.add_link("arm", 0, SphericalJoint(), rod(2.0), Transform(Eigen::Matrix3d::Identity(), Eigen::Vector3d(0.5, 0.0, 0.0)));
+  tree.add_link("hand", 1, RevoluteJoint(Eigen::Vector3d(0.0, 0.0, 1.0)), rod(0.5),
+                Transform(Eigen::Matrix3d::Identity(), Eigen::Vector3d(1.0, 0.0, 0.0)));
+  Eigen::VectorXd q = tree.neutral_configuration(), v(10);
+  q.segment<4>(7) = Eigen::Quaterniond(Eigen::AngleAxisd(0.5, Eigen::Vector3d(0.0, 1.0, 1.0).normalized())).coeffs();
+  v << 0.3, -0.2, 0.5, 0.1, 0.2, -0.1, 1.0, -2.0, 0.5, 2.0;
+  Scene scene;
+  std::vector<BodyState> states;
+  add_tree(scene, tree, q, v, states);
+  const SceneSimulation r = simulate(scene, states, with(Method::rk4, 0.001, 1000));
+  const std::size_t n = r.size() - 1;
+  const Eigen::Map<const Eigen::Vector3d> L0(r.linear_momentum_W.data()), H0(r.angular_momentum_W.data());
+  const Eigen::Map<const Eigen::Vector3d> L1(r.linear_momentum_W.data() + 3 * n), H1(r.angular_momentum_W.data() + 3 * n);
+  EXPECT_LT((L1 - L0).norm(), 1e-8 * std::max(1.0, L0.norm()));
+  EXPECT_LT((H1 - H0).norm(), 1e-8 * std::max(1.0, H0.norm()));
+  EXPECT_LT(std::abs(r.kinetic_energy[n] - r.kinetic_energy[0]), 1e-8 * r.kinetic_energy[0]);
+  EXPECT_GT((L0).norm(), 1.0);  // the test moves: the tree carries momentum
+}
+
+TEST(TreeScene, RefusesTheMethodsATreeCannotTake) {
+  Scene scene = gravity_scene();
+  std::vector<BodyState> states;
+  add_tree(scene, double_pendulum(), Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(), states);
+  for (const Method m : {Method::splitting_dlm, Method::splitting_dlm_yoshida4, Method::exact_flow_kick, Method::exact,
+                         Method::semi_implicit_euler_implicit_gyroscopic}) {
+    const std::string message = message_of([&] { compile_scene(scene, m); });
+    EXPECT_NE(message.find("method: expected a method that integrates the whole motion"), std::string::npos) << message;
+    EXPECT_NE(message.find("'upper'"), std::string::npos) << message;
+  }
+  for (const Method m : {Method::explicit_euler, Method::semi_implicit_euler, Method::rk4, Method::rkmk4,
+                         Method::implicit_midpoint}) {
+    const SceneSimulation r = simulate(scene, states, with(m, 0.01, 10));
+    EXPECT_EQ(r.size(), 11u) << method_info(m).name;
+    EXPECT_FALSE(r.diverged) << method_info(m).name;
+  }
+}
+
+TEST(TreeScene, RefusesLinksOutOfOrderAndTheTreesOwnGravity) {
+  const auto shared = std::make_shared<const Tree>(double_pendulum());
+  Scene swapped;
+  add_body(swapped, TreeLink{shared, 1}, "lower");
+  add_body(swapped, TreeLink{shared, 0}, "upper");
+  EXPECT_NE(message_of([&] { compile_scene(swapped, Method::rk4); }).find("expected link 0 of a tree first"), std::string::npos);
+
+  Scene apart;
+  add_body(apart, TreeLink{shared, 0}, "upper");
+  add_body(apart, Particle(1.0), "ball");
+  add_body(apart, TreeLink{shared, 1}, "lower");
+  EXPECT_EQ(message_of([&] { compile_scene(apart, Method::rk4); }),
+            "bodies[1]: expected link 1 ('lower') of the tree whose link 0 is bodies[0] 'upper' (a tree's links are "
+            "consecutive bodies, in order), got a particle");
+
+  Scene heavy;
+  std::vector<BodyState> states;
+  add_tree(heavy, double_pendulum(Eigen::Vector3d(0.0, 0.0, -9.81)), Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(), states);
+  EXPECT_NE(message_of([&] { compile_scene(heavy, Method::rk4); }).find("the tree's gravity: expected zero in a scene"),
+            std::string::npos);
+}
+
+TEST(TreeScene, RefusesJointStatesOfTheWrongSize) {
+  Scene scene = gravity_scene();
+  std::vector<BodyState> states;
+  add_tree(scene, double_pendulum(), Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(), states);
+  states[1] = JointState{Eigen::Vector2d(0.0, 0.0), Eigen::VectorXd::Zero(1)};
+  const std::string message = message_of([&] { simulate(scene, states, with(Method::rk4, 0.01, 1)); });
+  EXPECT_NE(message.find("initial[1].q: expected 1 coordinates (the revolute joint of link 'lower'), got 2"), std::string::npos)
+      << message;
+}
+
+}  // namespace
