@@ -1210,12 +1210,12 @@ void bind_scene(py::module_& m) {
                     "motor_work.sum(axis=1)")
       .def_readonly("wheel_bodies", &SceneResult::wheel_bodies, "(nw,) tuple of the body index of each wheel")
       .def_property_readonly("joint_q", array_of(&SceneResult::joint_q),
-                             "(n, nq) the trees' configurations q (Scene.add_tree; the trees in the scene's order, each "
-                             "its Tree's q: angles [rad], offsets [m], quaternions (x, y, z, w) as integrated); (n, 0) "
-                             "without a tree")
+                             "(n, k) the trees' configurations q, k the sum of their sizes (Scene.add_tree; the trees "
+                             "in the scene's order, each its Tree's q: angles [rad], offsets [m], quaternions (x, y, z, "
+                             "w) as integrated); (n, 0) without a tree")
       .def_property_readonly("joint_v", array_of(&SceneResult::joint_v),
-                             "(n, nv) the trees' velocities v (each its Tree's v: rates [rad/s], [m/s], w_L [rad/s] in "
-                             "the link frame); (n, 0) without a tree")
+                             "(n, k) the trees' velocities v, k the sum of their sizes (each its Tree's v: rates "
+                             "[rad/s], [m/s], w_L [rad/s] in the link frame); (n, 0) without a tree")
       .def_readonly("body_names", &SceneResult::body_names, "(nb,) tuple of the bodies' names")
       .def_readonly("elements", &SceneResult::elements,
                     "(ne,) tuple of the elements' class names, then the frame's fictitious terms' ('CentrifugalForce', "

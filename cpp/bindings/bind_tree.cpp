@@ -3,6 +3,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "bindings.hpp"
@@ -246,6 +247,30 @@ void bind_tree_class(py::module_& m) {
             return parents;
           },
           "The links' parent indices λ(i) (-1: the world), in index order.")
+      .def_property_readonly(
+          "joints",
+          [](const Tree& t) {
+            py::list joints;
+            for (const Link& link : t.links()) joints.append(std::visit([](const auto& j) { return py::cast(j); }, link.joint));
+            return joints;
+          },
+          "The links' joints (copies), in index order.")
+      .def_property_readonly(
+          "placements",
+          [](const Tree& t) {
+            py::list placements;
+            for (const Link& link : t.links()) placements.append(py::cast(link.X_T));
+            return placements;
+          },
+          "The links' placements X_T (Transforms: each joint frame in its parent's frame), in index order.")
+      .def_property_readonly(
+          "inertias",
+          [](const Tree& t) {
+            py::list inertias;
+            for (const Link& link : t.links()) inertias.append(py::cast(link.inertia));
+            return inertias;
+          },
+          "The links' SpatialInertias (each in its link frame), in index order.")
       .def(
           "link_index", [](const Tree& t, py::handle name) { return t.link_index(py_io::as_string(name, "name")); },
           "name"_a,

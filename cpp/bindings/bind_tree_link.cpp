@@ -3,6 +3,7 @@
 // split a tree's (q, v) into its links' states and stack them back.
 #include <memory>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "bindings.hpp"
@@ -54,8 +55,9 @@ Examples
 
 constexpr const char* tree_link_doc = R"doc(A link of a kinematic tree as a body of a scene (made by Scene.add_tree).
 
-Two are equal when they are the same link of the same tree: the copy Scene.add_tree made, which the scene's copies
-share (scenes with trees compare equal to their copies; they do not pickle).
+Two are equal when they are the same link of equal trees (link by link: names, parents, joints, placements and
+inertias), so that a scene with a tree equals its copies and the scene its file reads back to. Scenes with trees do
+not pickle.
 
 Force elements act on a link as on any body: at its centre of mass, in axes B parallel to its link frame L
 (points on it given from the centre of mass, in those axes); the tree's joints couple the links' motions. A run
@@ -103,6 +105,30 @@ void bind_joint_state(py::module_& m) {
   });
 }
 
+// The same joint: its kind and, for a revolute or prismatic one, its axis
+bool same_joint(const Joint& a, const Joint& b) {
+  if (a.index() != b.index()) return false;
+  if (const auto* r = std::get_if<RevoluteJoint>(&a)) return r->axis == std::get<RevoluteJoint>(b).axis;
+  if (const auto* p = std::get_if<PrismaticJoint>(&a)) return p->axis == std::get<PrismaticJoint>(b).axis;
+  return true;
+}
+
+// The same tree, link by link: names, parents, joints, placements and inertias equal (exact)
+bool same_tree(const Tree& a, const Tree& b) {
+  if (a.num_links() != b.num_links()) return false;
+  for (int i = 0; i < a.num_links(); ++i) {
+    const Link& x = a.link(i);
+    const Link& y = b.link(i);
+    if (x.name != y.name || x.parent != y.parent || !same_joint(x.joint, y.joint) ||
+        x.X_T.rotation() != y.X_T.rotation() || x.X_T.translation() != y.X_T.translation() ||
+        x.inertia.mass() != y.inertia.mass() || x.inertia.com() != y.inertia.com() ||
+        x.inertia.inertia_com() != y.inertia.inertia_com()) {
+      return false;
+    }
+  }
+  return true;
+}
+
 void bind_tree_link_class(py::module_& m) {
   py::class_<TreeLink> cls(m, "TreeLink", tree_link_doc);
   cls
@@ -119,8 +145,9 @@ void bind_tree_link_class(py::module_& m) {
       .def("__repr__", [](const TreeLink& l) {
         return repr_call("TreeLink", {{"link", py::int_(l.link)}, {"name", py::str(l.name())}, {"mass", py::float_(l.mass())}});
       });
-  // the same link of the same tree: the copy Scene.add_tree made, which the scene's copies share
-  def_equality(cls, [](const TreeLink& a, const TreeLink& b) { return a.tree == b.tree && a.link == b.link; });
+  def_equality(cls, [](const TreeLink& a, const TreeLink& b) {
+    return a.link == b.link && (a.tree == b.tree || same_tree(*a.tree, *b.tree));
+  });
 }
 
 // Tree.joint_states(q, v) and Tree.coordinates_of(states)

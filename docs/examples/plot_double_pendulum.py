@@ -1,6 +1,6 @@
 r"""
 The double pendulum as a tree in a scene: normal modes against the closed form, chaos with a closed balance
-============================================================================================================
+===========================================================================================================
 
 Two uniform rods, 1 m and 1 kg each, hinged end to end about parallel horizontal axes: a kinematic tree of two
 revolute joints (:class:`rigiddyn.Tree`), added link by link to a scene (:meth:`rigiddyn.Scene.add_tree`) whose
@@ -76,7 +76,7 @@ fig.tight_layout()
 
 # %%
 # Released far from rest: chaos, a balance that closes, an estimate that knows when it holds
-# -----------------------------------------------------------------------------------------
+# ------------------------------------------------------------------------------------------
 # Released at rest with the upper rod 0.5 rad below the horizontal and the lower one in line with it, the pendulum
 # tumbles chaotically. The work of gravity is the potential's change, so the kinetic energy's change matches the
 # recorded work to RK4's error. Each run carries its own global error estimate (Richardson extrapolation at h, 2h,

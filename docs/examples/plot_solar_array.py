@@ -1,6 +1,6 @@
 r"""
 A spacecraft deploys its solar array: the bus turns back, the momentum stays zero
-================================================================================
+=================================================================================
 
 A spacecraft bus (a :class:`rigiddyn.FreeJoint` at the root of a tree: six degrees of freedom) carries a solar
 array on a hinge along its x axis (a :class:`rigiddyn.RevoluteJoint`). Stowed, the array lies folded down along

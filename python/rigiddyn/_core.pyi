@@ -5439,12 +5439,12 @@ class SceneResult:
     @property
     def joint_q(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (n, nq) the trees' configurations q (Scene.add_tree; the trees in the scene's order, each its Tree's q: angles [rad], offsets [m], quaternions (x, y, z, w) as integrated); (n, 0) without a tree
+        (n, k) the trees' configurations q, k the sum of their sizes (Scene.add_tree; the trees in the scene's order, each its Tree's q: angles [rad], offsets [m], quaternions (x, y, z, w) as integrated); (n, 0) without a tree
         """
     @property
     def joint_v(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        (n, nv) the trees' velocities v (each its Tree's v: rates [rad/s], [m/s], w_L [rad/s] in the link frame); (n, 0) without a tree
+        (n, k) the trees' velocities v, k the sum of their sizes (each its Tree's v: rates [rad/s], [m/s], w_L [rad/s] in the link frame); (n, 0) without a tree
         """
     @property
     def kinetic_energy(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -7635,6 +7635,16 @@ class Tree:
         Uniform gravity g [m/s²] in W.
         """
     @property
+    def inertias(self) -> list:
+        """
+        The links' SpatialInertias (each in its link frame), in index order.
+        """
+    @property
+    def joints(self) -> list:
+        """
+        The links' joints (copies), in index order.
+        """
+    @property
     def link_names(self) -> list:
         """
         The links' names, in index order.
@@ -7658,6 +7668,11 @@ class Tree:
     def parents(self) -> list:
         """
         The links' parent indices λ(i) (-1: the world), in index order.
+        """
+    @property
+    def placements(self) -> list:
+        """
+        The links' placements X_T (Transforms: each joint frame in its parent's frame), in index order.
         """
 class JointState:
     """
@@ -7716,8 +7731,9 @@ class TreeLink:
     """
     A link of a kinematic tree as a body of a scene (made by Scene.add_tree).
     
-    Two are equal when they are the same link of the same tree: the copy Scene.add_tree made, which the scene's copies
-    share (scenes with trees compare equal to their copies; they do not pickle).
+    Two are equal when they are the same link of equal trees (link by link: names, parents, joints, placements and
+    inertias), so that a scene with a tree equals its copies and the scene its file reads back to. Scenes with trees do
+    not pickle.
     
     Force elements act on a link as on any body: at its centre of mass, in axes B parallel to its link frame L
     (points on it given from the centre of mass, in those axes); the tree's joints couple the links' motions. A run

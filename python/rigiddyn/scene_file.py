@@ -1,8 +1,8 @@
 """TOML scene files: bodies, force elements (bodies named), initial states and run options, with units.
 
 ``load_scene(path_or_text)`` returns ``(scene, initial, run)``: a rigiddyn.Scene, the list of initial
-states (ParticleState, PlanarBodyState, RigidBodyState, PivotedBodyState, PivotedPlanarBodyState or GyrostatState, one
-per body, in file order) and a RunOptions;
+states (ParticleState, PlanarBodyState, RigidBodyState, PivotedBodyState, PivotedPlanarBodyState, GyrostatState or a
+tree link's JointState, one per body, in file order) and a RunOptions;
 ``load_scene("kepler")`` reads a shipped scene (``example_scenes()``). ``scene_to_toml(scene, initial,
 run)`` writes the canonical file (SI, radians, q_WB, every field explicit) that loads back to the same
 scene, states and options.
@@ -115,12 +115,34 @@ commented)::
     seed = 1                            # integer >= 0: numpy.random.default_rng(seed) draws the sample
     name_prefix = "star"                # bodies "star0", "star1", ... (default "cluster<k>_")
 
+    [[tree]]                            # after the [[body]] and [[cluster]] tables; its links are bodies named
+    name = "pendulum"                   # "<name>.<link>" (name absent: each link's own name)
+    [[tree.link]]                       # one table per link, parents first
+    name = "upper"                      # unique in the tree
+    parent = "base"                     # the parent link's name; absent: the world W
+    joint = "revolute"                  # "revolute" | "prismatic" | "spherical" | "free" | "fixed"
+    axis = [0, 1, 0]                    # revolute, prismatic: the joint's axis (any length) in the joint frame
+    translation = [1, 0, 0]             # the placement X_T: the joint frame's origin in the parent's frame [m]
+    rotation = [0, 0, 0, 1]             # and its attitude there: a unit quaternion (x, y, z, w) or a 3x3 rotation
+                                        # matrix (default identity; a written file holds the matrix)
+    mass = "1 kg"                       # [kg] > 0
+    com = [0.5, 0, 0]                   # the centre of mass in the link frame [m] (default 0)
+    inertia = [1e-3, 0.083, 0.083]      # about the centre of mass in the link frame: principal moments or 3x3
+    q = ["30 deg"]                      # its joint's coordinates: an angle [rad] or an offset [m]; a quaternion
+    v = ["10 rpm"]                      # (spherical); (p_JL [m], q_JL) (free); its velocities [rad/s], [m/s];
+                                        # absent: the neutral configuration, at rest
+
     [controller]                        # optional: the run's digital controller, a shipped law of
     period = "1 s"                      # rigiddyn.control (RunOptions.controller; rigiddyn._controller_table
     law = "bdot"                        # lists its keys): "bdot" (gain, element: the index of its
     gain = "2e4 A*m^2*s/T"              # magnetic_dipole [[force]], m_max, rate) or "pd_attitude" (k_p, k_d,
     element = 1                         # target "lvlh" or [x, y, z, w], axes_B: default the body's wheels);
     body = "sat"                        # body, w_B_noise [rad/s] and seed optional
+
+A [[tree]] table (after the [[body]] and [[cluster]] tables) holds a kinematic tree whose links become bodies
+(Scene.add_tree: each link's name, or "<tree name>.<link name>"), one [[tree.link]] table per link with its
+parent, joint, placement, mass properties and its joint's initial q and v; forces refer to the links by those
+names. A file holds a scene's trees after its other bodies.
 
 A [[cluster]] is a Plummer sphere in virial equilibrium (scene_file.plummer_sphere: Aarseth, Henon
 & Wielen 1974) with its centre of mass at rest at W's origin; its bodies may be named in [[force]] tables.
@@ -161,6 +183,7 @@ from ._controller_table import controller_table, read_controller
 from ._load_table import LOAD_KEYS, applied_load
 from ._mass_properties import SOURCES, mass_properties
 from ._memory import available_bytes, format_bytes
+from ._tree_table import read_tree, tree_table
 from ._names import check_keys as _check_keys
 from ._names import closest as _closest
 from .problem import _check_nesting, _orientation, _read_toml, _tradeoff_defaults
@@ -188,7 +211,8 @@ _BODY_KEYS = {
 }
 _WHEEL_KEYS = frozenset({"axis_B", "inertia", "speed", "motor_torque", "t_start", "t_end"})
 _KINDS = "one of " + ", ".join(map(repr, _BODY_KEYS))
-_TOP_KEYS = frozenset({"name", "description", "run", "tradeoff", "frame", "body", "force", "cluster", "controller"})
+_TOP_KEYS = frozenset({"name", "description", "run", "tradeoff", "frame", "body", "force", "cluster", "tree",
+                       "controller"})
 _TRADEOFF_KEYS = frozenset({"methods", "dts", "tolerance", "measure", "horizon"})
 _MASS_FLOW_KEYS = frozenset({"rate", "inertia_rule"})
 _FRAME_KEYS = {"rotating": frozenset({"kind", "axis", "rate"}), "earth": frozenset({"kind", "latitude"})}
@@ -660,8 +684,8 @@ def parse_scene(data: Mapping[str, Any], source: str = "scene", base: str | Path
     that relative mesh paths refer to, None: the working directory)."""
     _check_nesting(data, source)
     data = _check_keys(data, "scene", _TOP_KEYS, "the top level")
-    if "body" not in data and "cluster" not in data:
-        raise _fail("scene.body", "at least one [[body]] table", "nothing")
+    if "body" not in data and "cluster" not in data and "tree" not in data:
+        raise _fail("scene.body", "at least one [[body]], [[cluster]] or [[tree]] table", "nothing")
     tables = data.get("body", [])
     if not isinstance(tables, list) or ("body" in data and not tables):
         raise _fail("body", "an array of [[body]] tables", tables)
@@ -694,6 +718,14 @@ def parse_scene(data: Mapping[str, Any], source: str = "scene", base: str | Path
     # one call: the scene's bodies, named, with their flows (each name checked by the scene's name index)
     scene = _core.Scene(bodies=bodies, body_names=list(names), frame=frame,
                         mass_flows=flows if any(f is not None for f in flows) else None)
+    trees = data.get("tree", [])
+    if not isinstance(trees, list) or ("tree" in data and not trees):
+        raise _fail("tree", "an array of [[tree]] tables", trees)
+    for k, table in enumerate(trees):  # each link a body, after the others (rigiddyn._tree_table)
+        prefix, tree, states = read_tree(table, k)
+        indices = _core_call(scene.add_tree, f"tree[{k}]", tree, prefix)
+        names.update((scene.body_names[i], i) for i in indices)
+        initial += states
     forces = data.get("force", [])
     if not isinstance(forces, list):
         raise _fail("force", "an array of [[force]] tables", forces)
@@ -952,11 +984,12 @@ def scene_to_toml(scene: Any, initial: Sequence[Any] | None = None, run: RunOpti
     if not isinstance(scene, _core.Scene):
         raise TypeError(f"scene: expected a Scene, got {type(scene).__name__}")
     bodies, names, elements = list(scene.bodies), _body_names(scene), list(scene.elements)
-    for body, body_name in zip(bodies, names):
-        if isinstance(body, _core.TreeLink):
-            raise ValueError(f"scene: expected bodies a scene file can hold, got body '{body_name}', a link of a tree "
-                             "(a scene file does not hold trees: build the scene in code with Scene.add_tree)")
     initial = _checked_states(initial, bodies, names)
+    first_link = next((i for i, b in enumerate(bodies) if isinstance(b, _core.TreeLink)), len(bodies))
+    if any(not isinstance(b, _core.TreeLink) for b in bodies[first_link:]):
+        raise ValueError(f"scene: expected the trees' links after every other body (a scene file holds its [[tree]] "
+                         f"tables after its [[body]] tables), got body '{names[first_link]}', a tree's link, before "
+                         "others")
     if run is not None and not isinstance(run, RunOptions):
         raise TypeError(f"run: expected None or a RunOptions, got {type(run).__name__}")
     for key, text in (("name", name), ("description", description)):
@@ -979,7 +1012,7 @@ def scene_to_toml(scene: Any, initial: Sequence[Any] | None = None, run: RunOpti
     if frame is not None:
         lines += ["", "[frame]"] + [f"{k} = {_literal(v)}" for k, v in _frame_table(frame).items()]
     flows = list(getattr(scene, "mass_flows", []) or [None] * len(bodies))
-    for i, (n, b, s) in enumerate(zip(names, bodies, initial)):
+    for i, (n, b, s) in enumerate(zip(names[:first_link], bodies[:first_link], initial[:first_link])):
         table = _body_table(n, b, s)
         lines += ["", "[[body]]"] + [f"{k} = {_literal(v)}" for k, v in table.items() if k != "wheels"]
         for wheel in table.get("wheels", []):
@@ -987,6 +1020,15 @@ def scene_to_toml(scene: Any, initial: Sequence[Any] | None = None, run: RunOpti
         if flows[i] is not None:
             lines += ["[body.mass_flow]"] + [f"{k} = {_literal(v)}"
                                              for k, v in _mass_flow_table(flows[i], f"body[{i}]").items()]
+    for first in (i for i in range(first_link, len(bodies)) if bodies[i].link == 0):
+        tree = bodies[first].tree
+        states = None if initial[first] is None else initial[first:first + tree.num_links]
+        own = tree.link_names[0]
+        prefix = names[first][:-len(own) - 1] if names[first].endswith("." + own) else None
+        table = tree_table(prefix, tree, states)
+        lines += ["", "[[tree]]"] + ([f"name = {_literal(prefix)}"] if prefix is not None else [])
+        for link in table["link"]:
+            lines += ["[[tree.link]]"] + [f"{k} = {_literal(v)}" for k, v in link.items()]
     for i, e in enumerate(elements):
         table = _force_table(e, i, names)
         lines += ["", "[[force]]"] + [f"{k} = {_literal(v)}" for k, v in table.items() if k != "loads"]
@@ -1017,7 +1059,7 @@ def _checked_states(initial: Any, bodies: Sequence[Any], names: Sequence[str]) -
     if len(initial) != len(bodies):
         raise _fail("initial", f"one state per body ({len(bodies)})", f"{len(initial)} states")
     for i, (body, state) in enumerate(zip(bodies, initial)):
-        kind = type(body).__name__ + "State"  # Particle -> ParticleState, ...
+        kind = "JointState" if isinstance(body, _core.TreeLink) else type(body).__name__ + "State"  # ParticleState, ...
         if type(state).__name__ != kind:
             raise TypeError(f"initial[{i}]: expected a {kind} (body {names[i]!r} is a {type(body).__name__}), "
                             f"got {type(state).__name__}")

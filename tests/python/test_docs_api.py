@@ -42,6 +42,7 @@ INTERNAL = {
     "_load_table": "the load tables of problem and scene files (rigiddyn.problem and rigiddyn.scene_file list them)",
     "_controlled_samples": "monte_carlo's samples under a controller (rigiddyn.dispersion.monte_carlo states them)",
     "_controller_table": "the [controller] table of scene files (rigiddyn.scene_file and the spacecraft guide list it)",
+    "_tree_table": "the [[tree]] tables of scene files (rigiddyn.scene_file lists their keys)",
 }
 
 _DIRECTIVE = re.compile(r"^\.\. (currentmodule|automodule|autosummary)::\s*(\S*)\s*$")

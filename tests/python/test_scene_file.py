@@ -15,12 +15,13 @@ from rigiddyn.scene_file import RunOptions, example_scenes, load_scene, read_sce
 # 4 roundings of 2^-53 (1e-15 bounds it).
 RTOL_UNITS = 1e-15
 
-SHIPPED = ["box_on_springs", "gravity_gradient", "kepler", "satellite_boom", "spring_chain", "three_body"]
+SHIPPED = ["box_on_springs", "double_pendulum", "gravity_gradient", "kepler", "satellite_boom", "spring_chain",
+           "three_body"]
 
 
 def _state(state):
     """A state's variables as a dict of float arrays (the same for equal states)."""
-    keys = [k for k in ("p_W", "q_WB", "v_W", "w_B", "theta", "omega") if hasattr(state, k)]
+    keys = [k for k in ("p_W", "q_WB", "v_W", "w_B", "theta", "omega", "q", "v") if hasattr(state, k)]
     return {k: np.asarray(getattr(state, k), dtype=float) for k in keys} | {"type": type(state).__name__}
 
 
@@ -52,7 +53,7 @@ def test_shipped_scene_round_trips_through_canonical_toml(name):
 
 
 _NAMES = {"name", "description", "kind", "type", "frame", "inertia_check", "method", "body", "body_a", "body_b",
-          "bodies"}
+          "bodies", "joint", "parent"}
 
 
 def _strings(value, key):
@@ -310,7 +311,7 @@ P = '[[body]]\nname = "ball"\nkind = "particle"\nmass = 1\n'
     (P + '[[force]]\ntype = "spring_damper"\nbody_a = "ball"', "force[0].stiffness: expected a value [N/m], got 'nothing'"),
     (P + '[[force]]\ngm = 1', "force[0].type: expected one of"),
     (P + '[[force]]\ntype = "scheduled_loads"', "force[0].body: expected a value, got 'nothing'"),
-    ('name = "x"\n', "scene.body: expected at least one [[body]] table, got 'nothing'"),
+    ('name = "x"\n', "scene.body: expected at least one [[body]], [[cluster]] or [[tree]] table, got 'nothing'"),
     # unknown keys, with the closest known one
     (B + "w_b = [1, 2, 3]", "body[0].w_b: expected a key of a [[body]] of kind 'rigid'; did you mean 'w_B'?"),
     (P + "w_B = [1, 2, 3]", "body[0].w_B: expected a key of a [[body]] of kind 'particle'"),

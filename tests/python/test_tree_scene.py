@@ -185,12 +185,86 @@ def test_bad_input_is_refused_naming_the_value():
         rd.simulate(scene, [rd.RigidBodyState(), rd.JointState([0.0], [0.0])], 0.01, steps=1, method="rk4")
 
 
-def test_a_scene_file_refuses_a_tree_naming_the_link():
+def test_a_scene_file_holds_trees_and_reads_back_the_same_scene():
+    """A [[tree]] table with every joint kind, units and placements: read, written canonically, read back equal
+    (the scene, its states, its run); the shipped double pendulum runs as its file says."""
+    text = """
+[[body]]
+name = "anchor"
+kind = "particle"
+mass = 1
+
+[[tree]]
+name = "arm"
+[[tree.link]]
+name = "base"
+joint = "free"
+mass = "10 kg"
+inertia = [1, 2, 2.5]
+q = [0, 0, "1 m", 0, 0, 0, 1]
+v = ["0.1 rad/s", 0, 0, 0, 0, "0.2 m/s"]
+[[tree.link]]
+name = "shoulder"
+parent = "base"
+joint = "spherical"
+translation = [0.5, 0, 0]
+rotation = [0, 0, 0.7071067811865476, 0.7071067811865476]
+mass = 2
+com = ["50 cm", 0, 0]
+inertia = [[0.01, 0, 0], [0, 0.2, 0], [0, 0, 0.2]]
+q = [0, 0, 0, 1]
+v = [0, "10 rpm", 0]
+[[tree.link]]
+name = "slide"
+parent = "shoulder"
+joint = "prismatic"
+axis = [1, 0, 0]
+translation = [1, 0, 0]
+mass = 1
+inertia = [0.01, 0.01, 0.01]
+q = ["20 cm"]
+[[tree.link]]
+name = "flange"
+parent = "slide"
+joint = "fixed"
+mass = 0.1
+inertia = [1e-4, 1e-4, 1e-4]
+
+[[force]]
+type = "spring_damper"
+body_a = "arm.slide"
+body_b = "anchor"
+stiffness = 10
+"""
+    scene, initial, run = rd.load_scene(text)
+    assert scene.body_names == ("anchor", "arm.base", "arm.shoulder", "arm.slide", "arm.flange")
+    tree = scene.bodies[1].tree
+    q, v = tree.coordinates_of(initial[1:])
+    assert np.allclose(q[:7], [0, 0, 1, 0, 0, 0, 1]) and q[11] == 0.2 and v[7] == 2 * np.pi * 10 / 60
+    assert scene.elements[0].body_a == 3
+    again, initial_again, run_again = rd.load_scene(scene.to_toml(initial=initial, run=run))
+    assert again == scene and initial_again == initial and run_again == run
+    result = rd.simulate(scene, initial, 1e-3, steps=10, method="rk4")
+    assert not result.diverged and result.joint_q.shape == (11, 12)
+    shipped, start, options = rd.load_scene("double_pendulum")
+    assert shipped.body_names == ("pendulum.upper", "pendulum.lower") and options.method == "rk4"
+
+
+def test_a_scene_file_refuses_bad_trees_naming_the_field():
+    link = '[[tree.link]]\nname = "rod"\njoint = "revolute"\nmass = 1\ninertia = [1, 1, 1]\n'
+    with pytest.raises(ValueError, match=r"tree\[0\]\.link\[0\]\.axis: expected an axis for a revolute joint"):
+        rd.load_scene("[[tree]]\n" + link)
+    with pytest.raises(ValueError, match=r"tree\[0\]\.link\[0\]\.parent: expected the name of a link above it"):
+        rd.load_scene("[[tree]]\n" + link.replace('joint = "revolute"', 'joint = "fixed"\nparent = "nowhere"'))
+    with pytest.raises(ValueError, match=r"tree\[0\]\.link\[0\]\.q: expected 1 entries"):
+        rd.load_scene("[[tree]]\n" + link + "axis = [0, 1, 0]\nq = [1, 2]\n")
+    with pytest.raises(ValueError, match=r"tree\[0\]\.link\[0\]\.joint: expected one of 'revolute'"):
+        rd.load_scene("[[tree]]\n" + link.replace("revolute", "hinge"))
     scene = rd.Scene()
     scene.add_tree(double_pendulum(), "pendulum")
-    with pytest.raises(ValueError, match=r"got body 'pendulum.upper', a link of a tree \(a scene file does not hold "
-                                         r"trees: build the scene in code with Scene.add_tree\)"):
-        scene.to_toml(initial=double_pendulum().joint_states())
+    scene.add_body(rd.Particle(1.0), name="after")
+    with pytest.raises(ValueError, match=r"expected the trees' links after every other body"):
+        scene.to_toml()
 
 
 def test_joint_columns_record_the_trees_coordinates():
@@ -232,14 +306,19 @@ def test_table_columns_hold_the_joint_coordinates():
     assert "pendulum.lower:p_W_x [m]" in table
 
 
-def test_a_scene_with_a_tree_equals_its_copies():
+def test_a_scene_with_a_tree_equals_its_copies_and_scenes_of_equal_trees():
     scene = rd.Scene(elements=[rd.UniformGravity()])
     scene.add_tree(double_pendulum(), "pendulum")
     copy = rd.Scene(bodies=scene.bodies, body_names=scene.body_names, elements=scene.elements)
     assert copy == scene and scene.bodies[0] == copy.bodies[0] and scene.bodies[0] != scene.bodies[1]
+    again = rd.Scene(elements=[rd.UniformGravity()])
+    again.add_tree(double_pendulum(), "pendulum")  # another copy of an equal tree
+    assert again == scene
+    heavier = double_pendulum()
+    heavier.add_link("tip", 1, rd.FixedJoint(), rd.SpatialInertia(0.1, [0.0, 0.0, 0.0], np.eye(3) * 1e-4))
     other = rd.Scene(elements=[rd.UniformGravity()])
-    other.add_tree(double_pendulum(), "pendulum")  # another copy of the tree
-    assert other != scene
+    other.add_tree(heavier, "pendulum")
+    assert other.bodies[0] != scene.bodies[0]
 
 
 def test_tradeoff_and_tolerance_run_on_a_tree():
