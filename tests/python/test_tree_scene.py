@@ -336,3 +336,33 @@ def test_tradeoff_and_tolerance_run_on_a_tree():
     assert orders and 3.5 <= np.median(orders) <= 4.5
     result = rd.simulate(scene, start, None, duration=1.0, tolerance=1e-6)
     assert result.choice.met and result.choice.certified_error <= 1e-6
+
+
+@pytest.mark.parametrize("method", ["rk4", "rkmk4", "implicit_midpoint", "semi_implicit_euler"])
+def test_a_floating_tree_with_ball_joints_converges_at_each_methods_order(method):
+    """A floating tree (a free joint, a ball joint, a revolute joint) under a spring to an anchor: the state after
+    0.5 s at h and h/2 against the same method at h/32 (its error 32^p times smaller); the ratio is 2^p, p the
+    method's order, within the next term's share: [0.75, 1.25] × 2^p. The quaternions of the free and ball joints
+    move on SO(3) (RKMK4 by its dexp⁻¹ correction)."""
+    tree = rd.Tree()
+    tree.add_link("base", -1, rd.FreeJoint(), rd.SpatialInertia(10.0, [0.0, 0.0, 0.0], np.diag([1.0, 2.0, 2.5])))
+    rod = rd.SpatialInertia(2.0, [0.5, 0.0, 0.0], np.diag([0.01, 0.2, 0.2]))
+    tree.add_link("arm", 0, rd.SphericalJoint(), rod, rd.Transform(translation=[0.5, 0.0, 0.0]))
+    tree.add_link("hand", 1, rd.RevoluteJoint([0.0, 0.0, 1.0]), rod, rd.Transform(translation=[1.0, 0.0, 0.0]))
+    scene = rd.Scene()
+    scene.add_tree(tree)
+    scene.add(rd.SpringDamper(body_a=2, point_a_B=[1.0, 0.0, 0.0], point_b=[2.0, 1.0, 0.0], stiffness=20.0))
+    q = tree.neutral_configuration()
+    q[7:11] = [0.0, 0.0, np.sin(0.25), np.cos(0.25)]
+    start = tree.joint_states(q, [0.3, -0.2, 0.5, 0.1, 0.2, -0.1, 1.0, -2.0, 0.5, 2.0])
+    p = {"rk4": 4, "rkmk4": 4, "implicit_midpoint": 2, "semi_implicit_euler": 1}[method]
+    h = 0.01 if p > 1 else 0.002
+
+    def end(dt):
+        r = rd.simulate(scene, start, dt, duration=0.5, method=method, record_every=round(0.5 / dt), error=False,
+                        accuracy_level=None)  # the coarse runs are inaccurate on purpose
+        return np.concatenate([r.p_W[-1].ravel(), r.v_W[-1].ravel(), r.w_B[-1].ravel()])
+
+    reference = end(h / 32)
+    ratio = np.max(np.abs(end(h) - reference)) / np.max(np.abs(end(h / 2) - reference))
+    assert 0.75 * 2**p <= ratio <= 1.25 * 2**p, ratio
