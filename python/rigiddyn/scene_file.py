@@ -765,13 +765,13 @@ def _is_file(path: str) -> bool:
 
 def is_scene_toml(path: str | Path) -> bool:
     """True for a readable TOML file that is a scene file: [[body]] tables (a problem file has one [body]
-    table) or [[cluster]] tables (a scene of generated particles only). False for anything else, a file
-    that is no valid TOML included (its loader says what is wrong with it)."""
+    table), [[cluster]] tables (a scene of generated particles only) or [[tree]] tables (a scene of trees only).
+    False for anything else, a file that is no valid TOML included (its loader says what is wrong with it)."""
     try:
         data = _read_toml(Path(path).read_text(encoding="utf-8"), str(path))
     except (OSError, ValueError):  # UnicodeDecodeError is a ValueError
         return False
-    return isinstance(data.get("body"), list) or "cluster" in data
+    return isinstance(data.get("body"), list) or "cluster" in data or "tree" in data
 
 
 def read_scene(path_or_text: str | Path) -> SceneFile:

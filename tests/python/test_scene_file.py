@@ -15,8 +15,8 @@ from rigiddyn.scene_file import RunOptions, example_scenes, load_scene, read_sce
 # 4 roundings of 2^-53 (1e-15 bounds it).
 RTOL_UNITS = 1e-15
 
-SHIPPED = ["box_on_springs", "double_pendulum", "gravity_gradient", "kepler", "satellite_boom", "spring_chain",
-           "three_body"]
+SHIPPED = ["box_on_springs", "double_pendulum", "gravity_gradient", "kepler", "satellite_boom", "solar_array",
+           "spring_chain", "three_body"]
 
 
 def _state(state):

@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <limits>
@@ -229,9 +230,11 @@ RunBalance scene_balance(const SceneSimulation& r, const std::string& not_applic
     angular_size[i] = moments + norm3(K) + turning;
   }
   running_max(largest_J), running_max(largest_K), running_max(linear_size), running_max(angular_size);
+  // the scale: the parts' momenta at t0 and the impulses so far, or the parts' largest momenta so far where those
+  // are larger (a scene at rest at t0 set moving by internal forces: its totals stay 0 while its parts move)
   for (std::size_t i = 0; i < n; ++i) {
-    b.scale[linear][i] = mv_sum0 + largest_J[i];
-    b.scale[angular][i] = moments0 + largest_K[i];
+    b.scale[linear][i] = std::max(mv_sum0 + largest_J[i], linear_size[i]);
+    b.scale[angular][i] = std::max(moments0 + largest_K[i], angular_size[i]);
   }
   b.round_off[linear] = round_off_of(linear_size, steps);
   b.round_off[angular] = round_off_of(angular_size, steps);

@@ -186,6 +186,10 @@ def _of_scene(result: Any, impulse_W: Any, angular_impulse_W: Any, not_applicabl
         angular_scale = (moments[0] + _running_max(_norms(K))) if n else t
         linear_size = _running_max(_norms(mv).sum(axis=1) + _norms(J))
         angular_size = _running_max(moments + _norms(K) + turning)
+        # the scale is at least the parts' largest momenta so far (a scene at rest at t0 set moving by internal
+        # forces keeps its totals 0 while its parts move)
+        linear_scale = np.maximum(linear_scale, linear_size) if n else t
+        angular_scale = np.maximum(angular_scale, angular_size) if n else t
     return _made((energy, linear, angular, _round_off(energy_size, steps), _round_off(linear_size, steps),
                   _round_off(angular_size, steps), energy_scale, linear_scale, angular_scale),
                  {q: verdict.get(q, "closed") for q, _ in _QUANTITIES}, "W's origin")
