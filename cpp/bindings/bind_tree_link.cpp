@@ -11,6 +11,7 @@
 #include "repr.hpp"
 #include "state_args.hpp"
 #include "value_type.hpp"
+#include "rigiddyn/check.hpp"
 #include "rigiddyn/tree/tree_link.hpp"
 
 namespace rigiddyn::bindings {
@@ -20,12 +21,14 @@ using namespace pybind11::literals;
 
 namespace {
 
-// A 1-D float vector (None: empty), naming `name` otherwise; its size is checked against a joint by a run.
+// A 1-D vector of finite floats (None: empty), naming `name` otherwise; its size is checked against a joint by a run.
 Eigen::VectorXd as_joint_vector(py::handle obj, const char* name) {
   if (obj.is_none()) return Eigen::VectorXd(0);
   const py_io::Array array = py_io::as_array(obj, name);
   if (array.ndim() != 1) py_io::throw_value_error(name, "a 1-D array", py_io::describe(obj));
-  return Eigen::Map<const Eigen::VectorXd>(array.data(), array.size());
+  Eigen::VectorXd out = Eigen::Map<const Eigen::VectorXd>(array.data(), array.size());
+  require_finite(out.transpose(), name);
+  return out;
 }
 
 constexpr const char* joint_state_doc = R"doc(The state of a tree link's body in a scene: its joint's coordinates and velocities.
@@ -41,6 +44,11 @@ q : array_like, shape (nq_i,), optional
     (spherical), (p_JL [m], q_JL) (free); nothing for a fixed joint (None: empty).
 v : array_like, shape (nv_i,), optional
     Its velocities: a rate [rad/s] or [m/s], w_L [rad/s] in the link frame (spherical), [w_L; v_L] (free).
+
+Raises
+------
+ValueError
+    q or v not 1-D, or not finite (naming it).
 
 See Also
 --------
@@ -113,9 +121,9 @@ bool same_joint(const Joint& a, const Joint& b) {
   return true;
 }
 
-// The same tree, link by link: names, parents, joints, placements and inertias equal (exact)
+// The same tree: its gravity, and link by link the names, parents, joints, placements and inertias (exact)
 bool same_tree(const Tree& a, const Tree& b) {
-  if (a.num_links() != b.num_links()) return false;
+  if (a.num_links() != b.num_links() || a.gravity() != b.gravity()) return false;
   for (int i = 0; i < a.num_links(); ++i) {
     const Link& x = a.link(i);
     const Link& y = b.link(i);
@@ -206,9 +214,10 @@ Examples
                                        py_io::describe(states));
             }
             Eigen::VectorXd q(t.nq()), v(t.nv());
+            const auto shared = std::make_shared<const Tree>(t);  // the links checked_state reads
             for (int i = 0; i < t.num_links(); ++i) {
               const std::string name = "states[" + std::to_string(i) + "]";
-              const JointState s = checked_state(TreeLink{std::make_shared<const Tree>(t), i},
+              const JointState s = checked_state(TreeLink{shared, i},
                                                  py_io::as_instance<JointState>(seq[i], name, "a JointState"), name);
               const Link& link = t.link(i);
               q.segment(link.idx_q, link.nq) = s.q, v.segment(link.idx_v, link.nv) = s.v;

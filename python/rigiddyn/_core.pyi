@@ -7690,6 +7690,11 @@ class JointState:
     v : array_like, shape (nv_i,), optional
         Its velocities: a rate [rad/s] or [m/s], w_L [rad/s] in the link frame (spherical), [w_L; v_L] (free).
     
+    Raises
+    ------
+    ValueError
+        q or v not 1-D, or not finite (naming it).
+    
     See Also
     --------
     Tree.joint_states, Tree.coordinates_of, Scene.add_tree

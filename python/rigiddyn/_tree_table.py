@@ -25,9 +25,9 @@ JOINTS = {"revolute": "RevoluteJoint", "prismatic": "PrismaticJoint", "spherical
 _NEUTRAL = {"revolute": np.zeros(1), "prismatic": np.zeros(1), "spherical": np.array([0.0, 0.0, 0.0, 1.0]),
             "free": np.array([0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0]), "fixed": np.zeros(0)}
 # the units of a joint's q and v entries (None: a quaternion's components, plain numbers)
-_UNITS: dict[str, tuple[Sequence[str | None], Sequence[str | None]]] = {"revolute": (["rad"], ["rad/s"]), "prismatic": (["m"], ["m/s"]),
-          "spherical": ([None] * 4, ["rad/s"] * 3),
-          "free": (["m"] * 3 + [None] * 4, ["rad/s"] * 3 + ["m/s"] * 3), "fixed": ([], [])}
+_UNITS: dict[str, tuple[Sequence[str | None], Sequence[str | None]]] = {
+    "revolute": (["rad"], ["rad/s"]), "prismatic": (["m"], ["m/s"]), "spherical": ([None] * 4, ["rad/s"] * 3),
+    "free": (["m"] * 3 + [None] * 4, ["rad/s"] * 3 + ["m/s"] * 3), "fixed": ([], [])}
 
 
 def _fail(name: str, expected: str, got: Any) -> ValueError:
@@ -111,12 +111,10 @@ def read_tree(table: Any, k: int) -> tuple[str | None, Any, list[Any]]:
     return prefix, tree, states
 
 
-def _floats(v: Any) -> Any:
-    return np.asarray(v, dtype=np.float64).tolist()
-
-
 def tree_table(prefix: str | None, tree: Any, states: Sequence[Any] | None) -> dict[str, Any]:
     """The [[tree]] table of `tree` (its bodies named with `prefix`), with its links' states (None: none written)."""
+    from .scene_file import _floats  # the file's number form (scene_file imports this module first)
+
     names, kinds = tree.link_names, {cls: kind for kind, cls in JOINTS.items()}
     links = []
     for i, (parent, joint, inertia, placement) in enumerate(zip(tree.parents, tree.joints, tree.inertias,

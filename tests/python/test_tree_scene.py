@@ -181,6 +181,8 @@ def test_bad_input_is_refused_naming_the_value():
         rd.simulate(scene, [rd.JointState([0.0], [0.0]), rd.JointState([0.0, 0.0], [0.0])], 0.01, steps=1, method="rk4")
     with pytest.raises(ValueError, match=r"method: expected a method that integrates the whole motion"):
         rd.simulate(scene, tree.joint_states(), 0.01, steps=1, method="splitting_dlm")
+    with pytest.raises(ValueError, match=r"^q: expected finite"):
+        rd.JointState([np.nan], [0.0])
     with pytest.raises(TypeError, match=r"expected a JointState"):
         rd.simulate(scene, [rd.RigidBodyState(), rd.JointState([0.0], [0.0])], 0.01, steps=1, method="rk4")
 

@@ -191,7 +191,8 @@ def potential_energy(links, q, gravity):
 
 
 def quat_rate(q, w_L):
-    """q̇ = ½ q ⊗ (w_L, 0) for q = (x, y, z, w) and the angular velocity w_L in the moving frame."""
+    """q̇ = ½ q ⊗ (w_L, 0) for q = (x, y, z, w) and the angular velocity w_L in the moving frame (the quaternion
+    kinematics of the "Rigid body kinematics and dynamics" notes; Solà (2017), the local form)."""
     x, y, z, s = q
     return 0.5 * np.array([s * w_L[0] + y * w_L[2] - z * w_L[1], s * w_L[1] + z * w_L[0] - x * w_L[2],
                            s * w_L[2] + x * w_L[1] - y * w_L[0], -(x * w_L[0] + y * w_L[1] + z * w_L[2])])
