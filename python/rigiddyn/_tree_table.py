@@ -13,7 +13,7 @@ from . import _core
 from ._core_call import core_call
 from ._mass_properties import inertia_matrix
 from ._names import check_keys
-from .units import quantity, vector_quantity
+from .units import _floats, quantity, vector_quantity
 
 __all__ = ["TREE_KEYS", "LINK_KEYS", "JOINTS", "read_tree", "tree_table"]
 
@@ -113,8 +113,6 @@ def read_tree(table: Any, k: int) -> tuple[str | None, Any, list[Any]]:
 
 def tree_table(prefix: str | None, tree: Any, states: Sequence[Any] | None) -> dict[str, Any]:
     """The [[tree]] table of `tree` (its bodies named with `prefix`), with its links' states (None: none written)."""
-    from .scene_file import _floats  # the file's number form (scene_file imports this module first)
-
     names, kinds = tree.link_names, {cls: kind for kind, cls in JOINTS.items()}
     links = []
     for i, (parent, joint, inertia, placement) in enumerate(zip(tree.parents, tree.joints, tree.inertias,

@@ -187,7 +187,7 @@ from ._tree_table import read_tree, tree_table
 from ._names import check_keys as _check_keys
 from ._names import closest as _closest
 from .problem import _check_nesting, _orientation, _read_toml, _tradeoff_defaults
-from .units import _shown, quantity, vector_quantity
+from .units import _floats, _shown, quantity, vector_quantity
 
 __all__ = ["FORCE_TYPES", "RunOptions", "SceneFile", "example_scenes", "is_scene_toml", "load_scene", "parse_scene",
            "plummer_sphere", "read_scene", "scene_path", "scene_to_toml"]
@@ -863,11 +863,6 @@ def load_scene(path_or_text: str | Path) -> tuple[Any, list[Any], RunOptions]:
 
 
 # ------------------------------------------------------------------------------------------ writing
-
-def _floats(v: Any) -> Any:
-    """Arrays and numbers as (nested lists of) Python floats, for tomli-w."""
-    return np.asarray(v, dtype=np.float64).tolist()
-
 
 def _body_table(name: str, body: Any, state: Any) -> dict[str, Any]:
     """A [[body]] table; its initial state left out for state None (the file's defaults: at rest)."""

@@ -433,3 +433,8 @@ def _with_unit(number: Any, unit: str, name: str) -> Any:
     if isinstance(number, bool) or not isinstance(number, (int, float)):
         raise ValueError(f"{name}: expected a number (its unit is the table's unit), got {number!r}")
     return f"{float(number)!r} {unit}"  # parsed as any unit string (its errors name the field)
+
+
+def _floats(v: Any) -> Any:
+    """Arrays and numbers as (nested lists of) Python floats, as a written file holds them (tomli-w)."""
+    return np.asarray(v, dtype=np.float64).tolist()
