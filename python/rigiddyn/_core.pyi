@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['AppliedLoad', 'AtmosphericDrag', 'BatchResult', 'BatchSceneResult', 'BodyAcceleration', 'ComWrench', 'CompiledScene', 'CompoundPendulumSolution', 'ConstantThrustSolution', 'DensityIntegral', 'Drag', 'ElementField', 'FORCE_ELEMENTS', 'FixedJoint', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'FreeJoint', 'GlobalError', 'GravityGradient', 'Gyrostat', 'GyrostatState', 'InertiaCheck', 'InertiaReport', 'JointState', 'KineticEnergy', 'LagrangeTopSolution', 'MagneticDipole', 'MassFlow', 'MeshWeldWarning', 'Motion', 'MutualGravity', 'Particle', 'ParticleState', 'PivotedAcceleration', 'PivotedBody', 'PivotedBodyState', 'PivotedPlanarAcceleration', 'PivotedPlanarBody', 'PivotedPlanarBodyState', 'PivotedPlanarTorque', 'PivotedTorque', 'PlanarAcceleration', 'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointMassGravity', 'PointVelocity', 'PrincipalAxes', 'PrismaticJoint', 'PythonForce', 'ReactionWheel', 'RevoluteJoint', 'RigidBody', 'RigidBodyState', 'RotatingFrameFreeParticle', 'Scene', 'SceneCompatibilityWarning', 'SceneFrame', 'SceneResult', 'ScheduledLoads', 'Screw', 'SimulationResult', 'SolarRadiationPressure', 'SpatialInertia', 'SphericalJoint', 'SpringDamper', 'Thrust', 'ToleranceChoice', 'ToleranceError', 'TorqueFreeSolution', 'Transform', 'Tree', 'TreeLink', 'UniformGravity', 'WeldedMesh', 'Wheel', 'ZonalGravity', 'aba', 'align_vectors', 'angular_distance', 'angular_momentum', 'angular_velocity_from_quat_rate', 'apply_impulse', 'attitude_from_orbit_frame', 'attitude_to_orbit_frame', 'axis_angle_to_quat', 'bias_forces', 'box_shell', 'compose_kinematics', 'composite', 'crba', 'davenport_to_quat', 'default_thread_count', 'eccentric_to_mean_anomaly', 'eccentric_to_true_anomaly', 'elements_to_state', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'forward_kinematics', 'from_point_masses', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kepler_propagate', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mean_to_eccentric_anomaly', 'mean_to_true_anomaly', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation', 'nearest_valid_inertia', 'orbit_frame_angular_velocity', 'orbit_frame_rotation', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix', 'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh', 'rnea', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'semi_latus_rectum', 'simulate', 'simulate_batch', 'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'state_to_elements', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'true_to_eccentric_anomaly', 'true_to_mean_anomaly', 'twist_to_screw', 'vector_instructions', 'vee', 'weld_vertices']
+__all__: list[str] = ['AppliedLoad', 'AtmosphericDrag', 'BatchResult', 'BatchSceneResult', 'BodyAcceleration', 'ComWrench', 'CompiledScene', 'CompoundPendulumSolution', 'ConstantThrustSolution', 'DensityIntegral', 'Drag', 'ElementField', 'FORCE_ELEMENTS', 'FixedJoint', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'FreeJoint', 'GlobalError', 'GravityGradient', 'Gyrostat', 'GyrostatState', 'InertiaCheck', 'InertiaReport', 'JointState', 'KineticEnergy', 'LagrangeTopSolution', 'MagneticDipole', 'MassFlow', 'MeshWeldWarning', 'Motion', 'MutualGravity', 'Particle', 'ParticleState', 'PivotedAcceleration', 'PivotedBody', 'PivotedBodyState', 'PivotedPlanarAcceleration', 'PivotedPlanarBody', 'PivotedPlanarBodyState', 'PivotedPlanarTorque', 'PivotedTorque', 'PlanarAcceleration', 'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointMassGravity', 'PointVelocity', 'PrincipalAxes', 'PrismaticJoint', 'PrismaticSpringDamper', 'PythonForce', 'ReactionWheel', 'RevoluteJoint', 'RevoluteSpringDamper', 'RigidBody', 'RigidBodyState', 'RotatingFrameFreeParticle', 'Scene', 'SceneCompatibilityWarning', 'SceneFrame', 'SceneResult', 'ScheduledLoads', 'Screw', 'SimulationResult', 'SolarRadiationPressure', 'SpatialInertia', 'SphericalJoint', 'SpringDamper', 'Thrust', 'ToleranceChoice', 'ToleranceError', 'TorqueFreeSolution', 'Transform', 'Tree', 'TreeLink', 'UniformGravity', 'WeldedMesh', 'Wheel', 'ZonalGravity', 'aba', 'align_vectors', 'angular_distance', 'angular_momentum', 'angular_velocity_from_quat_rate', 'apply_impulse', 'attitude_from_orbit_frame', 'attitude_to_orbit_frame', 'axis_angle_to_quat', 'bias_forces', 'box_shell', 'compose_kinematics', 'composite', 'crba', 'davenport_to_quat', 'default_thread_count', 'eccentric_to_mean_anomaly', 'eccentric_to_true_anomaly', 'elements_to_state', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'forward_kinematics', 'from_point_masses', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kepler_propagate', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mean_to_eccentric_anomaly', 'mean_to_true_anomaly', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation', 'nearest_valid_inertia', 'orbit_frame_angular_velocity', 'orbit_frame_rotation', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix', 'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh', 'rnea', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'semi_latus_rectum', 'simulate', 'simulate_batch', 'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'state_to_elements', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'true_to_eccentric_anomaly', 'true_to_mean_anomaly', 'twist_to_screw', 'vector_instructions', 'vee', 'weld_vertices']
 class _Quantity(typing.Protocol):
     """A pint Quantity of any registry (the core converts it to SI by its magnitude and units)."""
     @property
@@ -4751,6 +4751,134 @@ class SolarRadiationPressure:
     def sun_rate_W(self) -> typing.Any:
         """
         (3,) angular velocity at which the Sun's direction turns, in W [rad/s] (zero: fixed)
+        """
+class RevoluteSpringDamper:
+    """
+    A torsion spring and damper in the revolute joint of the tree link `body` (a body of Scene.add_tree): the joint torque -(stiffness (q - rest_angle) + damping dq/dt) [N m] about the joint's axis, q the joint's angle [rad], on the link and the opposite on its parent (W for a root link), so that a tree's momenta are conserved. Potential V = stiffness (q - rest_angle)^2/2 [J].
+    
+    Parameters
+    ----------
+    body : int, required
+        index of the tree link whose revolute joint holds it
+    stiffness : float [N*m/rad], required
+        torsion stiffness k [N m/rad]
+    rest_angle : float [rad], default 0.0
+        the joint angle q0 at which the spring is relaxed [rad]
+    damping : float [N*m*s/rad], default 0.0
+        damping coefficient c [N m s/rad]
+    
+    Each argument with a unit takes a float in that unit or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
+    
+    Examples
+    --------
+    A wheel of I = 0.5 kg m² on a torsion spring of 2 N m/rad turns back and forth at ω = √(k/I) = 2 rad/s:
+    after one period π s it is back at its start:
+    
+    >>> tree = rd.Tree()
+    >>> wheel = tree.add_link("wheel", -1, rd.RevoluteJoint([0.0, 0.0, 1.0]), rd.SpatialInertia(2.0, [0.0, 0.0, 0.0], 0.5 * np.eye(3)))
+    >>> scene = rd.Scene()
+    >>> links = scene.add_tree(tree, "shaft")
+    >>> scene.add(rd.RevoluteSpringDamper(body=links[0], stiffness=2.0))
+    0
+    >>> result = rd.simulate(scene, tree.joint_states([0.1]), np.pi / 1000, steps=1000, method="rk4")
+    >>> result.joint_q[-1].round(9)
+    array([0.1])
+    """
+    __hash__: typing.ClassVar[None] = None
+    fields: typing.ClassVar[tuple]
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, *, body: int, stiffness: float, rest_angle: float = 0.0, damping: float = 0.0) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def body(self) -> typing.Any:
+        """
+        index of the tree link whose revolute joint holds it
+        """
+    @property
+    def damping(self) -> typing.Any:
+        """
+        damping coefficient c [N m s/rad]
+        """
+    @property
+    def rest_angle(self) -> typing.Any:
+        """
+        the joint angle q0 at which the spring is relaxed [rad]
+        """
+    @property
+    def stiffness(self) -> typing.Any:
+        """
+        torsion stiffness k [N m/rad]
+        """
+class PrismaticSpringDamper:
+    """
+    A linear spring and damper in the prismatic joint of the tree link `body` (a body of Scene.add_tree): the joint force -(stiffness (q - rest_position) + damping dq/dt) [N] along the joint's axis, q the joint's offset [m], on the link and the opposite on its parent (W for a root link), both through the joint's origin, so that a tree's momenta are conserved. Potential V = stiffness (q - rest_position)^2/2 [J].
+    
+    Parameters
+    ----------
+    body : int, required
+        index of the tree link whose prismatic joint holds it
+    stiffness : float [N/m], required
+        spring stiffness k [N/m]
+    rest_position : float [m], default 0.0
+        the joint offset q0 at which the spring is relaxed [m]
+    damping : float [N*s/m], default 0.0
+        damping coefficient c [N s/m]
+    
+    Each argument with a unit takes a float in that unit or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
+    
+    Examples
+    --------
+    A 2 kg slider on a spring of 8 N/m oscillates at ω = √(k/m) = 2 rad/s about its rest position: after one
+    period π s it is back at its start:
+    
+    >>> tree = rd.Tree()
+    >>> slider = tree.add_link("slider", -1, rd.PrismaticJoint([1.0, 0.0, 0.0]), rd.SpatialInertia(2.0, [0.0, 0.0, 0.0], 0.1 * np.eye(3)))
+    >>> scene = rd.Scene()
+    >>> links = scene.add_tree(tree, "rail")
+    >>> scene.add(rd.PrismaticSpringDamper(body=links[0], stiffness=8.0, rest_position=0.5))
+    0
+    >>> result = rd.simulate(scene, tree.joint_states([0.6]), np.pi / 1000, steps=1000, method="rk4")
+    >>> result.joint_q[-1].round(9)
+    array([0.6])
+    """
+    __hash__: typing.ClassVar[None] = None
+    fields: typing.ClassVar[tuple]
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, *, body: int, stiffness: float, rest_position: float = 0.0, damping: float = 0.0) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def body(self) -> typing.Any:
+        """
+        index of the tree link whose prismatic joint holds it
+        """
+    @property
+    def damping(self) -> typing.Any:
+        """
+        damping coefficient c [N s/m]
+        """
+    @property
+    def rest_position(self) -> typing.Any:
+        """
+        the joint offset q0 at which the spring is relaxed [m]
+        """
+    @property
+    def stiffness(self) -> typing.Any:
+        """
+        spring stiffness k [N/m]
         """
 class SceneFrame:
     """
@@ -12801,7 +12929,7 @@ def weld_vertices(vertices: numpy.typing.ArrayLike, faces: numpy.typing.ArrayLik
     (2, array([[0, 1, 2],
            [1, 3, 2]]))
     """
-FORCE_ELEMENTS: tuple = (UniformGravity, PointMassGravity, MutualGravity, GravityGradient, SpringDamper, Drag, ScheduledLoads, PythonForce, Thrust, MagneticDipole, ReactionWheel, ZonalGravity, AtmosphericDrag, SolarRadiationPressure)
+FORCE_ELEMENTS: tuple = (UniformGravity, PointMassGravity, MutualGravity, GravityGradient, SpringDamper, Drag, ScheduledLoads, PythonForce, Thrust, MagneticDipole, ReactionWheel, ZonalGravity, AtmosphericDrag, SolarRadiationPressure, RevoluteSpringDamper, PrismaticSpringDamper)
 __version__: str = '0.1.0'
 _accuracy_rule: tuple = (0.001, 10.0, 0.1)
 inertia_relative_tolerance: float = 1e-10

@@ -309,6 +309,18 @@ def _minimum_moment(body: object) -> float:
     return 0.0
 
 
+def _joint_inertia(link: _core.TreeLink) -> float:
+    """The link's own inertia along its joint [kg m^2 or kg]: its moment about a revolute joint's axis through the
+    link frame's origin, a . (I_C + m (|c|^2 1 - c c^T)) a, or its mass for a prismatic joint (the links beyond add
+    to it, the parent's freedom takes from it: a mode's estimate, as the springs' above)."""
+    joint = link.tree.joints[link.link]
+    if isinstance(joint, _core.PrismaticJoint):
+        return float(link.mass)
+    a, c = np.asarray(joint.axis, float), np.asarray(link.com, float)
+    inertia_O = np.asarray(link.inertia_com, float) + float(link.mass) * (float(c @ c) * np.eye(3) - np.outer(c, c))
+    return float(a @ inertia_O @ a)
+
+
 def _inverse_mass_at(body: object, r_B: np.ndarray) -> float:
     """1 / m_eff [1/kg] of the body point r_B (from the centre of mass, in B [m]) moved by a spring: 1/m
     for a free body (its turn is a mode of its own), |c + r|^2 / I_min about O for a pinned body, which
@@ -409,7 +421,8 @@ def scene_modes(scene: object, initial: list[object]) -> list[tuple[str, float, 
     point r off a free body's centre, k |r|^2 / I_min (dampers the same in gamma); point-mass gravity the Hessian of the (softened) potential per body, mutual gravity
     that of its strongest pair (largest G (m_i + m_j) / rho^3); drag gamma = (c1 + 2 c2 |v|) / m and
     (d1 + 2 d2 |w|) / I_min; gravity gradient k = 3 GM / |r|^3 (I_max - I_min) / I_min; uniform gravity
-    the swing of each pinned body (pivot_swing_modes). Scheduled loads and user forces add no mode, nor
+    the swing of each pinned body (pivot_swing_modes); a joint spring k / I_a and c / I_a, I_a the link's own
+    inertia along its joint (_joint_inertia). Scheduled loads and user forces add no mode, nor
     does uniform gravity on a free body; the frame's modes are frame_modes."""
     bodies = list(getattr(scene, "bodies"))
     n = len(bodies)
@@ -434,6 +447,10 @@ def scene_modes(scene: object, initial: list[object]) -> list[tuple[str, float, 
                 if moment[i] > 0 and np.any(r):
                     lever = float(r @ r) / moment[i]
                     modes.append((f"the spring {label} turning body {i}", k * lever, c * lever))
+        elif kind in ("RevoluteSpringDamper", "PrismaticSpringDamper"):
+            inertia = _joint_inertia(bodies[int(element.body)])
+            k, c = float(element.stiffness), float(element.damping)
+            modes.append((f"the joint spring {label}", k / inertia, c / inertia))
         elif kind == "PointMassGravity":
             for i in _listed(element, n):
                 modes += _gravity_modes(f"the attractor {label} on body {i}", float(element.gm),

@@ -142,7 +142,7 @@ SceneCase gyrostat() {
 }
 
 // A free-floating tree (a free joint, a ball joint, a revolute joint) under gravity, its last link on a spring to a
-// rigid body.
+// rigid body, its revolute joint on a torsion spring and damper.
 SceneCase tree() {
   SceneCase c{"tree", {}, {}, false, true};
   const auto arm = std::make_shared<Tree>();
@@ -161,6 +161,7 @@ SceneCase tree() {
                tumbling(Eigen::Vector3d(3.0, 0.0, 0.0))};
   c.scene.elements.push_back(UniformGravity{Eigen::Vector3d(0.0, 0.0, -9.81), {}});
   c.scene.elements.push_back(SpringDamper{2, Eigen::Vector3d(0.5, 0.0, 0.0), 3, Eigen::Vector3d::Zero(), 5.0, 1.0, 0.2});
+  c.scene.elements.push_back(RevoluteSpringDamper{2, 4.0, 0.1, 0.3});  // the elbow's torsion spring
   return c;
 }
 

@@ -2,7 +2,8 @@
 // joint is the pivoted body (the same trajectory to round-off); a double pendulum loaded by the scene's
 // UniformGravity runs the same RK4 map as a hand loop around the articulated-body algorithm with the tree's own
 // gravity; its energy error falls at the method's order; a free-floating tree keeps its momenta; the links' records
-// are the links' motions; bad layouts and the methods a tree cannot take are refused, naming the value.
+// are the links' motions; springs and dampers in its joints are the joint forces of the articulated-body algorithm;
+// bad layouts and the methods a tree cannot take are refused, naming the value.
 #include <gtest/gtest.h>
 
 #include "invalid_argument_message.hpp"
@@ -51,6 +52,19 @@ Tree double_pendulum(const Eigen::Vector3d& gravity = Eigen::Vector3d::Zero()) {
   tree.add_link("lower", 0, RevoluteJoint(Eigen::Vector3d::UnitY()), rod(1.0),
                 Transform(Eigen::Matrix3d::Identity(), Eigen::Vector3d(1.0, 0.0, 0.0)));
   return tree;
+}
+
+// `steps` RK4 steps of h [s] of (q̇, v̇) = (v, accel(q, v)) from (q, v), in place: the hand loop
+template <class Acceleration>
+void hand_rk4(const Acceleration& accel, double h, int steps, Eigen::VectorXd& q, Eigen::VectorXd& v) {
+  for (int n = 0; n < steps; ++n) {
+    const Eigen::VectorXd k1q = v, k1v = accel(q, v);
+    const Eigen::VectorXd k2q = v + 0.5 * h * k1v, k2v = accel(q + 0.5 * h * k1q, k2q);
+    const Eigen::VectorXd k3q = v + 0.5 * h * k2v, k3v = accel(q + 0.5 * h * k2q, k3q);
+    const Eigen::VectorXd k4q = v + h * k3v, k4v = accel(q + h * k3q, k4q);
+    q += h / 6.0 * (k1q + 2.0 * k2q + 2.0 * k3q + k4q);
+    v += h / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
+  }
 }
 
 Scene gravity_scene() {
@@ -133,14 +147,7 @@ TEST(TreeScene, DoublePendulumUnderSceneGravityIsTheHandLoopAroundAba) {
     return aba(tree, q, v, tau, {}, ws);
   };
   Eigen::VectorXd q = q0, v = v0;
-  for (int n = 0; n < 100; ++n) {
-    const Eigen::VectorXd k1q = v, k1v = accel(q, v);
-    const Eigen::VectorXd k2q = v + 0.5 * h * k1v, k2v = accel(q + 0.5 * h * k1q, k2q);
-    const Eigen::VectorXd k3q = v + 0.5 * h * k2v, k3v = accel(q + 0.5 * h * k2q, k3q);
-    const Eigen::VectorXd k4q = v + h * k3v, k4v = accel(q + h * k3q, k4q);
-    q += h / 6.0 * (k1q + 2.0 * k2q + 2.0 * k3q + k4q);
-    v += h / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
-  }
+  hand_rk4(accel, h, 100, q, v);
   for (int i = 0; i < 2; ++i) {
     const auto& s = std::get<JointState>(end.bodies[i]);
     EXPECT_NEAR(s.q[0], q[i], 1e-8) << i;
@@ -271,6 +278,72 @@ TEST(TreeScene, RefusesJointStatesOfTheWrongSize) {
   const std::string message = message_of([&] { simulate(scene, states, with(Method::rk4, 0.01, 1)); });
   EXPECT_NE(message.find("initial[1].q: expected 1 coordinates (the revolute joint of link 'lower'), got 2"), std::string::npos)
       << message;
+}
+
+// A telescoping pendulum: an arm hinged about y at W's origin, a slider along the arm's x, a pole hinged about y
+// on the slider, each joint on a spring and damper (RevoluteSpringDamper, PrismaticSpringDamper), under the
+// scene's gravity, against a hand RK4 loop of q̈ = ABA(q, q̇, τ) with the joint forces τ = −k (q − q0) − c q̇ and the
+// tree's own gravity: the elements' wrench pairs are the joint forces (joint_spring_damper.hpp). The same map,
+// evaluated two ways, to a few ε of the forces' scale per evaluation (m g l and k q ≈ 30), grown over 1 s by at most
+// e^{λ t}, λ ≲ 5/s (the double pendulum's bound above): 1e-8 on the coordinates and rates.
+Tree telescope(const Eigen::Vector3d& gravity = Eigen::Vector3d::Zero()) {
+  Tree tree(gravity);
+  tree.add_link("arm", -1, RevoluteJoint(Eigen::Vector3d::UnitY()), rod(2.0));
+  tree.add_link("slider", 0, PrismaticJoint(Eigen::Vector3d::UnitX()),
+                SpatialInertia(0.5, Eigen::Vector3d(0.1, 0.0, 0.05), Eigen::Vector3d(0.01, 0.02, 0.02).asDiagonal()),
+                Transform(Eigen::Matrix3d::Identity(), Eigen::Vector3d(0.5, 0.0, 0.0)));
+  tree.add_link("pole", 1, RevoluteJoint(Eigen::Vector3d(0.0, 1.0, 0.2)), rod(1.0),
+                Transform(Eigen::Matrix3d::Identity(), Eigen::Vector3d(0.2, 0.0, 0.0)));
+  return tree;
+}
+
+TEST(TreeScene, JointSpringsAndDampersAreTheJointForcesOfAba) {
+  const Eigen::Vector3d q0(0.3, 0.1, -0.5), v0(0.5, -0.2, 1.0);
+  const Eigen::Vector3d k(20.0, 40.0, 5.0), rest(0.1, 0.2, 0.3), c(0.5, 1.0, 0.2);
+  Scene scene = gravity_scene();
+  std::vector<BodyState> states;
+  add_tree(scene, telescope(), q0, v0, states);
+  scene.elements.push_back(RevoluteSpringDamper{0, k[0], rest[0], c[0]});
+  scene.elements.push_back(PrismaticSpringDamper{1, k[1], rest[1], c[1]});
+  scene.elements.push_back(RevoluteSpringDamper{2, k[2], rest[2], c[2]});
+  const double h = 0.01;
+  const SceneSimulation r = simulate(scene, states, with(Method::rk4, h, 100));
+
+  const Tree tree = telescope(Eigen::Vector3d(0.0, 0.0, -9.81));
+  TreeWorkspace ws(tree);
+  const auto accel = [&](const Eigen::VectorXd& q, const Eigen::VectorXd& v) -> Eigen::VectorXd {
+    const Eigen::VectorXd tau = -(k.array() * (q - rest).array() + c.array() * v.array()).matrix();
+    return aba(tree, q, v, tau, {}, ws);
+  };
+  Eigen::VectorXd q = q0, v = v0;
+  hand_rk4(accel, h, 100, q, v);
+  const std::size_t last = r.size() - 1;
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_NEAR(r.joint_q[3 * last + i], q[i], 1e-8) << i;
+    EXPECT_NEAR(r.joint_v[3 * last + i], v[i], 1e-8) << i;
+  }
+  // the springs' potential ½ k (q − q0)² in the records' potential energy, with gravity's
+  TreeWorkspace ws0(tree);
+  const double V_springs = 0.5 * (k.array() * (q0 - rest).array().square()).sum();
+  EXPECT_NEAR(r.potential_energy[0], potential_energy(tree, q0, ws0) + V_springs, 16 * kEps * 30.0);
+}
+
+// A joint element on a body that is no tree link, or on a link whose joint is of another kind, is refused naming
+// the element's body
+TEST(TreeScene, JointSpringsRefuseBodiesWithoutTheirJoint) {
+  Scene scene;
+  std::vector<BodyState> states;
+  add_body(scene, RigidBody(1.0, Eigen::Vector3d(1.0, 1.0, 1.0)), "box");
+  add_tree(scene, telescope(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), states);
+  const auto refused = [&](const Element& element) {
+    Scene with = scene;
+    with.elements.push_back(element);
+    return message_of([&] { compile_scene(with, Method::rk4); });
+  };
+  EXPECT_NE(refused(RevoluteSpringDamper{0, 1.0, 0.0, 0.0}).find("body: expected a link of a tree"), std::string::npos);
+  EXPECT_NE(refused(RevoluteSpringDamper{2, 1.0, 0.0, 0.0}).find("'slider', whose joint is prismatic"), std::string::npos);
+  EXPECT_NE(refused(PrismaticSpringDamper{1, 1.0, 0.0, 0.0}).find("'arm', whose joint is revolute"), std::string::npos);
+  EXPECT_NE(refused(RevoluteSpringDamper{1, -1.0, 0.0, 0.0}).find("stiffness: expected a finite number >= 0"), std::string::npos);
 }
 
 }  // namespace

@@ -134,6 +134,11 @@ RECIPES = {
                                                          motor_torque=("lit", u))),
     "Gyrostat": st.just(_GYROSTAT),
     "TreeLink": st.just(_TREE_LINK),
+    # the joint elements with drawn stiffness and damping (their body a tree link of a scene's: Scene.add checks it)
+    "RevoluteSpringDamper": st.tuples(st.floats(0.0, 100.0), st.floats(0.0, 10.0)).map(lambda kc: _call_spec(
+        "RevoluteSpringDamper", body=("lit", 0), stiffness=("lit", kc[0]), damping=("lit", kc[1]))),
+    "PrismaticSpringDamper": st.tuples(st.floats(0.0, 100.0), st.floats(0.0, 10.0)).map(lambda kc: _call_spec(
+        "PrismaticSpringDamper", body=("lit", 0), stiffness=("lit", kc[0]), damping=("lit", kc[1]))),
     "GyrostatState": st.floats(-100.0, 100.0).map(lambda w: _call_spec(
         "GyrostatState", w_B=("lit", [0.1, 0.0, 0.2]), wheel_speeds=("lit", [w]))),
     "Thrust": st.sampled_from(["body", "world"]).map(lambda frame: _call_spec(
@@ -242,7 +247,8 @@ RECIPES["SampledState"] = st.tuples(st.floats(0.0, 10.0), st.integers(1, 3), st.
 # the force element classes of a scene (Scene.add, Scene(elements=...))
 ELEMENT_CLASSES = ("UniformGravity", "PointMassGravity", "MutualGravity", "GravityGradient", "SpringDamper", "Drag",
                    "ScheduledLoads", "PythonForce", "Thrust", "MagneticDipole",
-                   "ReactionWheel", "ZonalGravity", "AtmosphericDrag", "SolarRadiationPressure")
+                   "ReactionWheel", "ZonalGravity", "AtmosphericDrag", "SolarRadiationPressure",
+                   "RevoluteSpringDamper", "PrismaticSpringDamper")
 # a field of an element class's table (each class's `fields`)
 RECIPES["ElementField"] = st.tuples(st.sampled_from(ELEMENT_CLASSES), st.integers(0, 1)).map(
     lambda ci: _call_spec(f"{ci[0]}.fields.__getitem__", [("lit", ci[1])]))

@@ -111,6 +111,8 @@ ELEMENTS = {
     "ZonalGravity": lambda: rd.ZonalGravity(gm=1.0, radius=0.1, j2=1e-3),
     "AtmosphericDrag": lambda: rd.AtmosphericDrag(density0=1e-11, scale_height=5e4, radius=6.4e6, drag_area=1.0),
     "SolarRadiationPressure": lambda: rd.SolarRadiationPressure(sun_W=V, area=1.0),
+    "RevoluteSpringDamper": lambda: rd.RevoluteSpringDamper(body=0, stiffness=1.0),
+    "PrismaticSpringDamper": lambda: rd.PrismaticSpringDamper(body=0, stiffness=1.0),
 }
 
 
@@ -316,6 +318,8 @@ EXAMPLES = {
     "AtmosphericDrag": lambda: {"density0": 1e-11, "scale_height": 5e4, "radius": 6.4e6, "drag_area": 1.0},
     "SolarRadiationPressure": lambda: {"sun_W": V, "area": 1.0},
     "SpringDamper": lambda: {"body_a": 0, "stiffness": 1.0},
+    "RevoluteSpringDamper": lambda: {"body": 0, "stiffness": 1.0},
+    "PrismaticSpringDamper": lambda: {"body": 0, "stiffness": 1.0},
     "Drag": lambda: {}, "ScheduledLoads": lambda: {"body": 0}, "PythonForce": lambda: {"fn": _push},
     "load_scene": lambda: {"path_or_text": "kepler"},
     "load_urdf": lambda: {"source": URDF_ARM},

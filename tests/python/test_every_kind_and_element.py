@@ -65,14 +65,29 @@ ELEMENT_EXAMPLES = {
     "ReactionWheel": rd.ReactionWheel(body=1, axis_B=[0.0, 0.0, 1.0], inertia=0.01, speed=100.0, acceleration=-20.0,
                                       t_start=0.5, t_end=2.5),
     "PythonForce": rd.PythonForce(_force),
+    "RevoluteSpringDamper": rd.RevoluteSpringDamper(body=2, stiffness=3.0, rest_angle=0.2, damping=0.1),
+    "PrismaticSpringDamper": rd.PrismaticSpringDamper(body=3, stiffness=40.0, rest_position=-0.1, damping=2.0),
 }
+JOINT_ELEMENTS = ("RevoluteSpringDamper", "PrismaticSpringDamper")  # on the links of _ARM, bodies 2 and 3
+
+
+def _arm() -> rd.Tree:
+    """A hinge about z at W's origin and a slider along its x: the joints of the joint elements."""
+    arm = rd.Tree()
+    link = rd.SpatialInertia(1.0, [0.2, 0.0, 0.0], np.diag([0.01, 0.05, 0.05]))
+    arm.add_link("hinge", -1, rd.RevoluteJoint([0.0, 0.0, 1.0]), link)
+    arm.add_link("slider", 0, rd.PrismaticJoint([1.0, 0.0, 0.0]), link, rd.Transform(translation=[0.5, 0.0, 0.0]))
+    return arm
 
 
 def _scene_with(body=None, element=None) -> rd.Scene:
-    """A particle with a mass flow (body 0) and a rigid body (body 1), plus `body` and `element`."""
+    """A particle with a mass flow (body 0) and a rigid body (body 1), then _arm's links (bodies 2, 3) for a joint
+    element, plus `body` and `element`."""
     scene = rd.Scene()
     scene.add_body(rd.Particle(10.0), name="rocket", mass_flow=rd.MassFlow(rate=-0.5))
     scene.add_body(rd.RigidBody(2.0, [1.0, 2.0, 3.0]), name="box")
+    if type(element).__name__ in JOINT_ELEMENTS:
+        scene.add_tree(_arm(), "arm")
     if body is not None:
         scene.add_body(body, name="example")
     if element is not None:
@@ -82,6 +97,8 @@ def _scene_with(body=None, element=None) -> rd.Scene:
 
 def _states(scene: rd.Scene, extra=None) -> list:
     states = [rd.ParticleState(v_W=[0.0, 0.0, 1.0]), rd.RigidBodyState(p_W=[0.0, 0.0, 0.5], w_B=[0.1, 0.2, 0.3])]
+    if len(scene.bodies) > 2 and isinstance(scene.bodies[2], rd.TreeLink):
+        states += _arm().joint_states([0.3, 0.05], [1.0, -0.2])
     return states + ([extra] if extra is not None else [])
 
 

@@ -2,10 +2,12 @@
 coupling them, the tree's q and v integrated by the articulated-body algorithm.
 
 Checked against the numpy reference: one RK4 step of random trees (revolute, prismatic, spherical, fixed joints,
-with and without a free base) under UniformGravity, a SpringDamper from a link point to a world anchor and Drag on
-every link equals an RK4 step written from rigiddyn_ref.tree (forward dynamics from the definitions, the links'
-wrenches as external forces) and rigiddyn_ref.scene (the elements' forces); the work-energy balance closes on
-every run; the links' records and describe(); bad input refused naming the value.
+with and without a free base) under UniformGravity, a SpringDamper from a link point to a world anchor, Drag on
+every link and a spring and damper in every revolute and prismatic joint equals an RK4 step written from
+rigiddyn_ref.tree (forward dynamics from the definitions, the links' wrenches as external forces, the joint springs
+as joint forces) and rigiddyn_ref.scene (the elements' forces); the work-energy balance closes on every run; a
+joint spring's damped oscillation against its closed form; the links' records and describe(); bad input refused
+naming the value.
 
 Error bound of the step comparison: both sides evaluate the same four derivatives, each to ~10 n² eps of its scale
 (test_tree_vs_reference's bound for forward dynamics, n <= 8 links; the element forces add a few eps), and the step
@@ -30,16 +32,34 @@ ANCHOR = np.array([0.5, -0.3, 2.0])
 POINT_B = np.array([0.1, 0.2, -0.1])
 SPRING = {"stiffness": 40.0, "rest_length": 0.5, "damping": 1.5}
 DRAG = {"linear": 0.3, "quadratic": 0.1, "angular_linear": 0.2, "angular_quadratic": 0.05}
+JOINT_SPRING = {"stiffness": 5.0, "rest": 0.2, "damping": 0.3}  # in every revolute and prismatic joint
+JOINT_ELEMENTS = {"revolute": (rd.RevoluteSpringDamper, "rest_angle"),
+                  "prismatic": (rd.PrismaticSpringDamper, "rest_position")}
 
 
 def tree_scene(links, drag=DRAG):
     """The tree of `links` (no gravity of its own) in a scene with gravity, a spring from its last link's point
-    POINT_B to ANCHOR, and `drag` on every link."""
+    POINT_B to ANCHOR, `drag` on every link and JOINT_SPRING in every revolute and prismatic joint."""
     tree = build(links, np.zeros(3))
     scene = rd.Scene(elements=[rd.UniformGravity(g_W=G_W), rd.Drag(**drag)])
     scene.add_tree(tree, "arm")
     scene.add(rd.SpringDamper(body_a=len(links) - 1, point_a_B=POINT_B, point_b=ANCHOR, **SPRING))
+    for i, l in enumerate(links):
+        if l["kind"] in JOINT_ELEMENTS:
+            kind, rest = JOINT_ELEMENTS[l["kind"]]
+            scene.add(kind(body=i, stiffness=JOINT_SPRING["stiffness"], damping=JOINT_SPRING["damping"],
+                           **{rest: JOINT_SPRING["rest"]}))
     return tree, scene
+
+
+def joint_forces(links, q, v):
+    """τ of the joint springs and dampers: −k (q_i − q0) − c v_i in each revolute and prismatic joint, 0 elsewhere."""
+    idx, _, nv = ref.sizes(links)
+    tau = np.zeros(nv)
+    for l, (iq, iv) in zip(links, idx):
+        if l["kind"] in JOINT_ELEMENTS:
+            tau[iv] = -JOINT_SPRING["stiffness"] * (q[iq] - JOINT_SPRING["rest"]) - JOINT_SPRING["damping"] * v[iv]
+    return tau
 
 
 def link_kinematics(links, q, v):
@@ -57,7 +77,8 @@ def link_kinematics(links, q, v):
 
 def reference_rate(links, x):
     """(q̇, v̇) of the tree in the scene, from the definitions: the elements' wrenches on each link (reference
-    force models) as its external force [n; f] at L's origin in L, then forward dynamics."""
+    force models) as its external force [n; f] at L's origin in L, the joint springs' forces as joint forces τ (where
+    rigiddyn applies them as wrench pairs on the links), then forward dynamics."""
     _, nq, _ = ref.sizes(links)
     q, v = x[:nq], x[nq:]
     kin, R_WL = link_kinematics(links, q, v)
@@ -68,7 +89,7 @@ def reference_rate(links, x):
     for i, l in enumerate(links):
         f_L = R_WL[i].T @ sum(e.f_W[i] for e in effects)
         f_ext[i] = np.concatenate([sum(e.tau_B[i] for e in effects) + np.cross(l["com"], f_L), f_L])
-    a = ref.forward_dynamics(links, q, v, np.zeros(len(v)), np.zeros(3), f_ext)
+    a = ref.forward_dynamics(links, q, v, joint_forces(links, q, v), np.zeros(3), f_ext)
     return np.concatenate([ref.configuration_rate(links, q, v), a])
 
 
@@ -185,6 +206,59 @@ def test_bad_input_is_refused_naming_the_value():
         rd.JointState([np.nan], [0.0])
     with pytest.raises(TypeError, match=r"expected a JointState"):
         rd.simulate(scene, [rd.RigidBodyState(), rd.JointState([0.0], [0.0])], 0.01, steps=1, method="rk4")
+
+
+def one_joint_tree(joint, mass, inertia):
+    """One link on `joint` at W's origin, its centre of mass on the joint's axis."""
+    tree = rd.Tree()
+    tree.add_link("link", -1, joint, rd.SpatialInertia(mass, [0.0, 0.0, 0.0], inertia * np.eye(3)))
+    return tree
+
+
+def damped_oscillation(x0, v0, omega, zeta, t):
+    """x(t) of x'' + 2 zeta omega x' + omega^2 x = 0 from x0, v0 (underdamped, zeta < 1)."""
+    omega_d = omega * np.sqrt(1.0 - zeta**2)
+    return np.exp(-zeta * omega * t) * (x0 * np.cos(omega_d * t) + (v0 + zeta * omega * x0) / omega_d * np.sin(omega_d * t))
+
+
+def test_joint_springs_and_dampers_oscillate_as_their_closed_form():
+    """A wheel (I = 0.5 kg m²) on a torsion spring and damper (k = 2 N m/rad, c = 0.2 N m s/rad) and a 2 kg slider on
+    a spring and damper (k = 8 N/m, c = 0.4 N s/m), two trees of one scene: each joint coordinate is the damped
+    oscillator's q0 + e^{−ζωt}(A cos ω_d t + B sin ω_d t), ω = √(k/I) = √(k/m) = 2 rad/s, ζ = c / (2√(k I)).
+    Error bound: RK4's error per step on the oscillator's modes λ (|λ| = ω) is |hλ|⁵/120 of the state's size
+    √(x² + (ẋ/ω)²) (the first term RK4 drops of e^{hλ}); over N steps at most N times that (the modes decay); asserted
+    at twice the bound (the damping makes the modes slightly non-normal in these coordinates, ζ ≤ 0.1)."""
+    wheel = one_joint_tree(rd.RevoluteJoint([0.0, 0.0, 1.0]), 2.0, 0.5)
+    slider = one_joint_tree(rd.PrismaticJoint([1.0, 0.0, 0.0]), 2.0, 0.1)
+    scene = rd.Scene()
+    (hinge,), (rail,) = scene.add_tree(wheel, "wheel"), scene.add_tree(slider, "slider")
+    scene.add(rd.RevoluteSpringDamper(body=hinge, stiffness=2.0, rest_angle=0.3, damping=0.2))
+    scene.add(rd.PrismaticSpringDamper(body=rail, stiffness=8.0, rest_position=-0.5, damping=0.4))
+    start = wheel.joint_states([0.5], [1.0]) + slider.joint_states([-0.4], [-0.3])
+    h, steps, omega = 0.005, 1000, 2.0
+    result = rd.simulate(scene, start, h, steps=steps, method="rk4")
+    t = result.t
+    for column, (rest, x0, v0, zeta) in enumerate([(0.3, 0.2, 1.0, 0.1), (-0.5, 0.1, -0.3, 0.05)]):
+        bound = 2.0 * steps * (h * omega) ** 5 / 120.0 * np.hypot(x0, v0 / omega)
+        error = np.abs(result.joint_q[:, column] - rest - damped_oscillation(x0, v0, omega, zeta, t))
+        assert np.max(error) <= bound, (column, np.max(error), bound)
+    # their potentials ½ k (q − q0)² are the records' potential energy; the dampers' work closes the energy balance
+    expected_V = 0.5 * 2.0 * (result.joint_q[:, 0] - 0.3) ** 2 + 0.5 * 8.0 * (result.joint_q[:, 1] + 0.5) ** 2
+    assert np.allclose(result.potential_energy, expected_V, rtol=1e-14, atol=1e-15)
+    assert result.balance.verdict["energy"] == "closed"
+
+
+def test_joint_springs_refuse_bodies_without_their_joint():
+    scene = rd.Scene([rd.RigidBody(1.0, [1.0, 1.0, 1.0])])
+    scene.add_tree(double_pendulum(), "pendulum")
+    with pytest.raises(ValueError, match=r"body: expected a link of a tree \(Scene.add_tree\) with a revolute joint, "
+                                         r"got 0 \(a rigid body\)"):
+        scene.add(rd.RevoluteSpringDamper(body=0, stiffness=1.0))
+    with pytest.raises(ValueError, match=r"body: expected a link of a tree \(Scene.add_tree\) with a prismatic joint, "
+                                         r"got 2 \('lower', whose joint is revolute\)"):
+        scene.add(rd.PrismaticSpringDamper(body=2, stiffness=1.0))
+    with pytest.raises(ValueError, match=r"damping: expected a finite number >= 0"):
+        scene.add(rd.RevoluteSpringDamper(body=1, stiffness=1.0, damping=-0.1))
 
 
 def test_a_scene_file_holds_trees_and_reads_back_the_same_scene():

@@ -15,7 +15,10 @@ namespace rigiddyn {
 //         MassFlow); elements whose force scales with the mass read it here, never a copy;
 //   R_WB  the rotation matrix of q_WB (set with it by set_attitude below; the scene model fills it only when a
 //         term turns vectors, scene_model.hpp: an element whose traits declare neither reads_attitude nor
-//         has_torque never reads it).
+//         has_torque never reads it);
+//   joint_q, joint_v  a tree link's joint coordinates and velocities (tree/tree_link.hpp: its segments of the
+//         tree's q, with unit quaternions, and v), set by the tree's slot at every evaluation and valid until the
+//         next; null for every other kind (the joint elements, scene/elements/joint_spring_damper.hpp, read them).
 // "W" is the scene frame (docs/fixed_point_frames_mass.md §2): W itself when the scene declares no moving
 // frame, else F; the kinematics are relative to it.
 // Each body kind as elements see it: particle q_WB = identity, w_B = 0; planar body p_W = (x, y, 0),
@@ -27,6 +30,8 @@ struct BodyKinematics {
   Eigen::Vector3d w_B = Eigen::Vector3d::Zero();
   double m = 0.0;
   Eigen::Matrix3d R_WB = Eigen::Matrix3d::Identity();
+  const double* joint_q = nullptr;
+  const double* joint_v = nullptr;
 };
 
 // Sets the attitude of `k`: q_WB (a unit quaternion) and R_WB, its rotation matrix, which the elements use to

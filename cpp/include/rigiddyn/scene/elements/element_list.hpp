@@ -9,7 +9,9 @@
 #include "rigiddyn/scene/elements/magnetic_dipole.hpp"
 #include "rigiddyn/scene/elements/mutual_gravity.hpp"
 #include "rigiddyn/scene/elements/point_mass_gravity.hpp"
+#include "rigiddyn/scene/elements/prismatic_spring_damper.hpp"
 #include "rigiddyn/scene/elements/reaction_wheel.hpp"
+#include "rigiddyn/scene/elements/revolute_spring_damper.hpp"
 #include "rigiddyn/scene/elements/scheduled_loads.hpp"
 #include "rigiddyn/scene/elements/solar_radiation_pressure.hpp"
 #include "rigiddyn/scene/elements/spring_damper.hpp"
@@ -34,7 +36,9 @@ using Element = std::variant<UniformGravity,    //
                              ReactionWheel,     //
                              ZonalGravity,      //
                              AtmosphericDrag,   //
-                             SolarRadiationPressure>;
+                             SolarRadiationPressure,  //
+                             RevoluteSpringDamper,    //
+                             PrismaticSpringDamper>;
 
 // The variant of the elements' compiled terms followed by More...: TermsOf<Element, X>::type =
 // std::variant<UniformGravityTerm, …, ThrustTerm, X>.

@@ -77,7 +77,8 @@ struct TreeSlot : SlotPlace {
   }
 
   // Each link's kinematics at its centre of mass C (tree forward kinematics, Featherstone §4.2): R_WB = R_WL,
-  // p_W = p_WL + R_WL c_L, ω_B = ω_L, v_W = R_WL (v_L + ω_L × c_L) from the link twist [ω_L; v_L] at L's origin
+  // p_W = p_WL + R_WL c_L, ω_B = ω_L, v_W = R_WL (v_L + ω_L × c_L) from the link twist [ω_L; v_L] at L's origin;
+  // its joint's q (normalised) and v for the joint elements
   void kinematics(const double* y, const StepClock&, BodyKinematics& first) const {
     load_configuration(y);
     forward_kinematics_unchecked(*tree, q_unit, velocities(y), ws);
@@ -89,6 +90,8 @@ struct TreeSlot : SlotPlace {
       k[i].w_B = ws.v[i].angular;
       k[i].p_W = ws.X_W[i].translation() + R_WL * c_L[i];
       k[i].v_W = R_WL * (ws.v[i].linear + cross_3(ws.v[i].angular, c_L[i]));
+      k[i].joint_q = q_unit.data() + tree->link(i).idx_q;
+      k[i].joint_v = y + at_y + nq + tree->link(i).idx_v;
     }
   }
   // v̇ (ws.qdd) by the articulated-body algorithm under the links' wrenches, after kinematics at the same y
