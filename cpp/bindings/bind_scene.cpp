@@ -21,6 +21,7 @@
 #include "repr.hpp"
 #include "scene_run.hpp"
 #include "tolerance_run.hpp"
+#include "tree_equality.hpp"
 #include "rigiddyn/scene/compile.hpp"
 #include "rigiddyn/scene/control_laws.hpp"
 #include "rigiddyn/scene/controller.hpp"
@@ -159,6 +160,22 @@ int add_element(Scene& scene, py::handle element, const std::string& name) {
 }
 
 // Scene(bodies, body_names, elements, frame, mass_flows), each item checked as add_body/add check it.
+// The links of one tree that arrive as copies (an unpickled scene, links gathered from several scenes) made to share
+// their link 0's tree where their trees are the same (same_tree): compile needs a tree's links to hold one tree.
+void share_trees(Scene& scene) {
+  std::shared_ptr<const Tree> first;  // the tree of the last link 0
+  for (Body& body : scene.bodies) {
+    auto* link = std::get_if<TreeLink>(&body);
+    if (link == nullptr) {
+      first.reset();
+    } else if (link->link == 0) {
+      first = link->tree;
+    } else if (first && link->tree != first && same_tree(*link->tree, *first)) {
+      link->tree = first;
+    }
+  }
+}
+
 Scene make_scene(py::handle bodies, py::handle body_names, py::handle elements, py::handle frame, py::handle mass_flows) {
   Scene scene;
   auto items = [](py::handle obj, const char* name) {
@@ -182,6 +199,7 @@ Scene make_scene(py::handle bodies, py::handle body_names, py::handle elements, 
     add_body(scene, b[i], body_names.is_none() ? py::none() : py::object(names[i]),
              mass_flows.is_none() ? py::none() : py::object(flows[i]), "bodies" + k, "body_names" + k, "mass_flows" + k);
   }
+  share_trees(scene);
   for (std::size_t i = 0; i < e.size(); ++i) add_element(scene, e[i], "elements[" + std::to_string(i) + "]");
   return scene;
 }

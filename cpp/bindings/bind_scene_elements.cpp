@@ -242,9 +242,12 @@ py::tuple values_of(const Spec& spec) {
   return py::tuple(out);
 }
 
-// A field's value as source text: arrays as lists, a named function by its qualified name (so that the
-// repr of a PythonForce of a module-level function evaluates where that function is in scope).
+// A field's value as source text: arrays as lists, an infinity as float('inf'), a named function by its qualified
+// name (so that the repr of a PythonForce of a module-level function evaluates where that function is in scope).
 std::string value_text(const py::object& v) {
+  if (py::isinstance<py::float_>(v) && std::isinf(v.cast<double>())) {  // "inf" would not evaluate
+    return v.cast<double>() > 0 ? "float('inf')" : "-float('inf')";
+  }
   if (PyCallable_Check(v.ptr()) && py::hasattr(v, "__qualname__") && !py::isinstance<py::type>(v)) {
     const std::string name = py::str(v.attr("__qualname__"));
     if (name.find('<') == std::string::npos) return name;

@@ -3,11 +3,16 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <variant>
 #include <vector>
 
 #include "bindings.hpp"
 #include "numpy_io.hpp"
+#include "repr.hpp"
+#include "state_args.hpp"
+#include "tree_equality.hpp"
+#include "value_type.hpp"
 #include "rigiddyn/tree/aba.hpp"
 #include "rigiddyn/tree/crba.hpp"
 #include "rigiddyn/tree/energy.hpp"
@@ -80,9 +85,40 @@ const char* const tree_example =
     ">>> tree.add_link(\"pendulum\", -1, rd.RevoluteJoint([1.0, 0.0, 0.0]), bob)\n0\n";
 
 // The members every joint class has: nq, nv, transform(q), motion_subspace().
+// == (the kind and axis), a repr that reads as the constructor call, and pickling (the axis, or nothing)
+template <class J>
+void bind_joint_value(py::class_<J>& c, const std::string& name) {
+  constexpr bool has_axis = std::is_same_v<J, RevoluteJoint> || std::is_same_v<J, PrismaticJoint>;
+  def_equality(c, [](const J& a, const J& b) { return same_joint(a, b); });
+  c.def("__repr__", [name](const J& joint) -> std::string {
+    if constexpr (has_axis) {
+      return repr_call(name, {{"axis", py_io::to_array(joint.axis)}});
+    } else {
+      return name + "()";
+    }
+  });
+  c.def(py::pickle(
+      [](const J& joint) -> py::tuple {
+        if constexpr (has_axis) {
+          return py::make_tuple(py_io::to_array(joint.axis));
+        } else {
+          return py::tuple();
+        }
+      },
+      [name](const py::tuple& state) -> J {
+        if constexpr (has_axis) {
+          return J(py_io::as_vector3(pickled_state(state, 1, name)[0], "axis"));
+        } else {
+          pickled_state(state, 0, name);
+          return J();
+        }
+      }));
+}
+
 template <class J>
 void bind_joint_members(py::class_<J>& c, const std::string& name, const std::string& q_example,
                         const std::string& transform_output, const std::string& subspace_output) {
+  bind_joint_value(c, name);
   c.def_property_readonly("nq", [](const J&) { return J::nq; }, "Number of configuration coordinates q of the joint.")
       .def_property_readonly("nv", [](const J&) { return J::nv; }, "Number of velocity coordinates qd of the joint.")
       .def(
@@ -182,6 +218,28 @@ void bind_joints(py::module_& m) {
                      "().motion_subspace().shape\n(6, 0)\n");
 }
 
+// A tree's pickled state: its gravity and, link by link, (name, parent, joint, inertia, placement)
+py::tuple tree_state(const Tree& tree) {
+  py::list links;
+  for (const Link& link : tree.links()) {
+    links.append(py::make_tuple(link.name, link.parent, std::visit([](const auto& j) { return py::cast(j); }, link.joint),
+                                link.inertia, link.X_T));
+  }
+  return py::make_tuple(py_io::to_array(tree.gravity()), links);
+}
+// The tree of a state, its links added in order (add_link's checks name a bad one)
+Tree tree_from_state(const py::tuple& state) {
+  const py::tuple s = pickled_state(state, 2, "Tree");
+  Tree tree(py_io::as_vector3(s[0], "gravity"));
+  for (const py::handle item : py::list(s[1])) {
+    const py::tuple link = pickled_state(item, 5, "Tree link");
+    tree.add_link(py_io::as_string(link[0], "name"), static_cast<int>(py_io::as_int(link[1], "parent", -1, tree.num_links() - 1)),
+                  as_joint(link[2]), py_io::as_instance<SpatialInertia>(link[3], "inertia", "a SpatialInertia"),
+                  py_io::as_instance<Transform>(link[4], "placement", "a Transform"));
+  }
+  return tree;
+}
+
 void bind_tree_class(py::module_& m) {
   py::class_<Tree>(
       m, "Tree",
@@ -199,6 +257,11 @@ void bind_tree_class(py::module_& m) {
           .c_str())
       .def(py::init([](py::handle gravity) { return Tree(py_io::as_vector3_or_zero(gravity, "gravity")); }),
            "gravity"_a = py::none())
+      .def(py::pickle(&tree_state, &tree_from_state))
+      .def(
+          "__eq__", [](const Tree& a, py::handle b) { return equal_or_not_implemented(a, b, &same_tree); }, "other"_a,
+          "Whether `other` is a Tree with the same gravity and, link by link, the same names, parents, joints, "
+          "placements and inertias (exact).")
       .def(
           "add_link",
           [](Tree& tree, py::handle name, py::handle parent, py::handle joint, py::handle inertia, py::handle placement) {

@@ -10,6 +10,7 @@
 #include "numpy_io.hpp"
 #include "repr.hpp"
 #include "state_args.hpp"
+#include "tree_equality.hpp"
 #include "value_type.hpp"
 #include "rigiddyn/check.hpp"
 #include "rigiddyn/tree/tree_link.hpp"
@@ -113,30 +114,6 @@ void bind_joint_state(py::module_& m) {
   });
 }
 
-// The same joint: its kind and, for a revolute or prismatic one, its axis
-bool same_joint(const Joint& a, const Joint& b) {
-  if (a.index() != b.index()) return false;
-  if (const auto* r = std::get_if<RevoluteJoint>(&a)) return r->axis == std::get<RevoluteJoint>(b).axis;
-  if (const auto* p = std::get_if<PrismaticJoint>(&a)) return p->axis == std::get<PrismaticJoint>(b).axis;
-  return true;
-}
-
-// The same tree: its gravity, and link by link the names, parents, joints, placements and inertias (exact)
-bool same_tree(const Tree& a, const Tree& b) {
-  if (a.num_links() != b.num_links() || a.gravity() != b.gravity()) return false;
-  for (int i = 0; i < a.num_links(); ++i) {
-    const Link& x = a.link(i);
-    const Link& y = b.link(i);
-    if (x.name != y.name || x.parent != y.parent || !same_joint(x.joint, y.joint) ||
-        x.X_T.rotation() != y.X_T.rotation() || x.X_T.translation() != y.X_T.translation() ||
-        x.inertia.mass() != y.inertia.mass() || x.inertia.com() != y.inertia.com() ||
-        x.inertia.inertia_com() != y.inertia.inertia_com()) {
-      return false;
-    }
-  }
-  return true;
-}
-
 void bind_tree_link_class(py::module_& m) {
   py::class_<TreeLink> cls(m, "TreeLink", tree_link_doc);
   cls
@@ -150,6 +127,13 @@ void bind_tree_link_class(py::module_& m) {
       .def_property_readonly(
           "com", [](const TreeLink& l) { return py_io::read_only(l.com()); },
           "Its centre of mass in the link frame L, shape (3,) [m].")
+      .def(py::pickle([](const TreeLink& l) { return py::make_tuple(*l.tree, l.link); },
+                      [](const py::tuple& state) {
+                        const py::tuple s = pickled_state(state, 2, "TreeLink");
+                        auto tree = std::make_shared<const Tree>(py_io::as_instance<Tree>(s[0], "tree", "a Tree"));
+                        const auto link = static_cast<int>(py_io::as_int(s[1], "link", 0, tree->num_links() - 1));
+                        return TreeLink{std::move(tree), link};
+                      }))
       .def("__repr__", [](const TreeLink& l) {
         return repr_call("TreeLink", {{"link", py::int_(l.link)}, {"name", py::str(l.name())}, {"mass", py::float_(l.mass())}});
       });

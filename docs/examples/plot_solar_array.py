@@ -5,14 +5,14 @@ A spacecraft deploys its solar array: the bus turns back, the momentum stays zer
 A spacecraft bus (a :class:`rigiddyn.FreeJoint` at the root of a tree: six degrees of freedom) carries a solar
 array on a hinge along its x axis (a :class:`rigiddyn.RevoluteJoint`). Stowed, the array lies folded down along
 the bus's −z side; a motor in the hinge unfolds it by 90° with a torque pulse that first accelerates and then brakes
-it. The motor's torque is internal: it acts on the array with +τ and on the bus with −τ about the hinge axis, two
-:class:`rigiddyn.ScheduledLoads` couples fixed in each body's frame. With no outside force the spacecraft's
+it. The motor's torque is internal: a :class:`rigiddyn.RevoluteMotor` acts on the array with +τ and on the bus with
+−τ about the hinge axis, one element per window of the pulse. With no outside force the spacecraft's
 linear and angular momentum stay zero (it starts at rest), so the bus turns back while the array swings out
 (Newton–Euler for the whole chain: the rate of change of the total momentum is the external wrench, here zero).
 
 **What it checks:** the array reaches (close to) its deployed angle and nearly stops; the bus turns the other way
 about the hinge axis, as zero angular momentum requires: H = 0 to RK4's error over the run (every force is internal:
-the motor's two couples cancel in the momentum balance); the system's centre of mass does not move; the work–energy balance closes (the kinetic energy is the motor couples' work).
+the motor's couple and its reaction cancel in the momentum balance); the system's centre of mass does not move; the work–energy balance closes (the kinetic energy is the motor's work).
 """
 
 # %%
@@ -32,11 +32,9 @@ spacecraft.add_link("array", 0, rd.RevoluteJoint([1.0, 0.0, 0.0]), array,  # hin
 
 T, tau = 20.0, 0.63  # the pulse [s] and its torque [N m]: +tau for T/2, then -tau for T/2
 scene = rd.Scene()
-bus_index, array_index = scene.add_tree(spacecraft, "sc")
-for body, sign in ((array_index, 1.0), (bus_index, -1.0)):  # the motor's couple on each side of the hinge
-    scene.add(rd.ScheduledLoads(body=body, loads=[
-        rd.AppliedLoad(torque=[sign * tau, 0.0, 0.0], frame="body", t_start=0.0, t_end=T / 2),
-        rd.AppliedLoad(torque=[-sign * tau, 0.0, 0.0], frame="body", t_start=T / 2, t_end=T)]))
+array_index = scene.add_tree(spacecraft, "sc")[1]  # bodies 0 (the bus) and 1 (the array)
+for t_start, torque in ((0.0, tau), (T / 2, -tau)):  # the motor in the hinge: +tau, then -tau
+    scene.add(rd.RevoluteMotor(body=array_index, torque=torque, t_start=t_start, t_end=t_start + T / 2))
 
 stowed = -np.pi / 2  # the array folded down along -z
 q0 = np.concatenate([[0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0], [stowed]])

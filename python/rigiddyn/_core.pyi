@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['AppliedLoad', 'AtmosphericDrag', 'BatchResult', 'BatchSceneResult', 'BodyAcceleration', 'ComWrench', 'CompiledScene', 'CompoundPendulumSolution', 'ConstantThrustSolution', 'DensityIntegral', 'Drag', 'ElementField', 'FORCE_ELEMENTS', 'FixedJoint', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'FreeJoint', 'GlobalError', 'GravityGradient', 'Gyrostat', 'GyrostatState', 'InertiaCheck', 'InertiaReport', 'JointState', 'KineticEnergy', 'LagrangeTopSolution', 'MagneticDipole', 'MassFlow', 'MeshWeldWarning', 'Motion', 'MutualGravity', 'Particle', 'ParticleState', 'PivotedAcceleration', 'PivotedBody', 'PivotedBodyState', 'PivotedPlanarAcceleration', 'PivotedPlanarBody', 'PivotedPlanarBodyState', 'PivotedPlanarTorque', 'PivotedTorque', 'PlanarAcceleration', 'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointMassGravity', 'PointVelocity', 'PrincipalAxes', 'PrismaticJoint', 'PrismaticSpringDamper', 'PythonForce', 'ReactionWheel', 'RevoluteJoint', 'RevoluteSpringDamper', 'RigidBody', 'RigidBodyState', 'RotatingFrameFreeParticle', 'Scene', 'SceneCompatibilityWarning', 'SceneFrame', 'SceneResult', 'ScheduledLoads', 'Screw', 'SimulationResult', 'SolarRadiationPressure', 'SpatialInertia', 'SphericalJoint', 'SpringDamper', 'Thrust', 'ToleranceChoice', 'ToleranceError', 'TorqueFreeSolution', 'Transform', 'Tree', 'TreeLink', 'UniformGravity', 'WeldedMesh', 'Wheel', 'ZonalGravity', 'aba', 'align_vectors', 'angular_distance', 'angular_momentum', 'angular_velocity_from_quat_rate', 'apply_impulse', 'attitude_from_orbit_frame', 'attitude_to_orbit_frame', 'axis_angle_to_quat', 'bias_forces', 'box_shell', 'compose_kinematics', 'composite', 'crba', 'davenport_to_quat', 'default_thread_count', 'eccentric_to_mean_anomaly', 'eccentric_to_true_anomaly', 'elements_to_state', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'forward_kinematics', 'from_point_masses', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kepler_propagate', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mean_to_eccentric_anomaly', 'mean_to_true_anomaly', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation', 'nearest_valid_inertia', 'orbit_frame_angular_velocity', 'orbit_frame_rotation', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix', 'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh', 'rnea', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'semi_latus_rectum', 'simulate', 'simulate_batch', 'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'state_to_elements', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'true_to_eccentric_anomaly', 'true_to_mean_anomaly', 'twist_to_screw', 'vector_instructions', 'vee', 'weld_vertices']
+__all__: list[str] = ['AppliedLoad', 'AtmosphericDrag', 'BatchResult', 'BatchSceneResult', 'BodyAcceleration', 'ComWrench', 'CompiledScene', 'CompoundPendulumSolution', 'ConstantThrustSolution', 'DensityIntegral', 'Drag', 'ElementField', 'FORCE_ELEMENTS', 'FixedJoint', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'FreeJoint', 'GlobalError', 'GravityGradient', 'Gyrostat', 'GyrostatState', 'InertiaCheck', 'InertiaReport', 'JointState', 'KineticEnergy', 'LagrangeTopSolution', 'MagneticDipole', 'MassFlow', 'MeshWeldWarning', 'Motion', 'MutualGravity', 'Particle', 'ParticleState', 'PivotedAcceleration', 'PivotedBody', 'PivotedBodyState', 'PivotedPlanarAcceleration', 'PivotedPlanarBody', 'PivotedPlanarBodyState', 'PivotedPlanarTorque', 'PivotedTorque', 'PlanarAcceleration', 'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointMassGravity', 'PointVelocity', 'PrincipalAxes', 'PrismaticJoint', 'PrismaticMotor', 'PrismaticSpringDamper', 'PythonForce', 'ReactionWheel', 'RevoluteJoint', 'RevoluteMotor', 'RevoluteSpringDamper', 'RigidBody', 'RigidBodyState', 'RotatingFrameFreeParticle', 'Scene', 'SceneCompatibilityWarning', 'SceneFrame', 'SceneResult', 'ScheduledLoads', 'Screw', 'SimulationResult', 'SolarRadiationPressure', 'SpatialInertia', 'SphericalJoint', 'SpringDamper', 'Thrust', 'ToleranceChoice', 'ToleranceError', 'TorqueFreeSolution', 'Transform', 'Tree', 'TreeLink', 'UniformGravity', 'WeldedMesh', 'Wheel', 'ZonalGravity', 'aba', 'align_vectors', 'angular_distance', 'angular_momentum', 'angular_velocity_from_quat_rate', 'apply_impulse', 'attitude_from_orbit_frame', 'attitude_to_orbit_frame', 'axis_angle_to_quat', 'bias_forces', 'box_shell', 'compose_kinematics', 'composite', 'crba', 'davenport_to_quat', 'default_thread_count', 'eccentric_to_mean_anomaly', 'eccentric_to_true_anomaly', 'elements_to_state', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'forward_kinematics', 'from_point_masses', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kepler_propagate', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mean_to_eccentric_anomaly', 'mean_to_true_anomaly', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation', 'nearest_valid_inertia', 'orbit_frame_angular_velocity', 'orbit_frame_rotation', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix', 'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh', 'rnea', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'semi_latus_rectum', 'simulate', 'simulate_batch', 'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'state_to_elements', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'true_to_eccentric_anomaly', 'true_to_mean_anomaly', 'twist_to_screw', 'vector_instructions', 'vee', 'weld_vertices']
 class _Quantity(typing.Protocol):
     """A pint Quantity of any registry (the core converts it to SI by its magnitude and units)."""
     @property
@@ -4880,6 +4880,133 @@ class PrismaticSpringDamper:
         """
         spring stiffness k [N/m]
         """
+class RevoluteMotor:
+    """
+    A motor in the revolute joint of the tree link `body` (a body of Scene.add_tree): the joint torque `torque` [N m] about the joint's axis on [t_start, t_end) [s] (by default all of time), none outside, on the link and the opposite on its parent (W for a root link), so that a tree's momenta are conserved; its power is torque dq/dt. A run splits its steps at t_start and t_end. Several windows: one RevoluteMotor each.
+    
+    Parameters
+    ----------
+    body : int, required
+        index of the tree link whose revolute joint it drives
+    torque : float [N*m], required
+        the joint torque [N m] about the joint's axis
+    t_start : float [s], default -inf
+        the time it starts [s] (-inf: on from any time)
+    t_end : float [s], default inf
+        the time it stops [s] (inf: never)
+    
+    Each argument with a unit takes a float in that unit or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
+    
+    Examples
+    --------
+    A torque of 1 N m for the first second on a wheel of I = 0.5 kg m²: 2 rad/s after it, and 1 + 2 × 2 = 5 rad
+    turned at t = 3 s:
+    
+    >>> tree = rd.Tree()
+    >>> wheel = tree.add_link("wheel", -1, rd.RevoluteJoint([0.0, 0.0, 1.0]), rd.SpatialInertia(2.0, [0.0, 0.0, 0.0], 0.5 * np.eye(3)))
+    >>> scene = rd.Scene()
+    >>> links = scene.add_tree(tree, "shaft")
+    >>> scene.add(rd.RevoluteMotor(body=links[0], torque=1.0, t_end=1.0))
+    0
+    >>> result = rd.simulate(scene, tree.joint_states([0.0]), 0.01, duration=3.0, method="rk4")
+    >>> result.joint_q[-1].round(12), result.joint_v[-1].round(12)
+    (array([5.]), array([2.]))
+    """
+    __hash__: typing.ClassVar[None] = None
+    fields: typing.ClassVar[tuple]
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, *, body: int, torque: float, t_start: float = ..., t_end: float = ...) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def body(self) -> typing.Any:
+        """
+        index of the tree link whose revolute joint it drives
+        """
+    @property
+    def t_end(self) -> typing.Any:
+        """
+        the time it stops [s] (inf: never)
+        """
+    @property
+    def t_start(self) -> typing.Any:
+        """
+        the time it starts [s] (-inf: on from any time)
+        """
+    @property
+    def torque(self) -> typing.Any:
+        """
+        the joint torque [N m] about the joint's axis
+        """
+class PrismaticMotor:
+    """
+    A motor in the prismatic joint of the tree link `body` (a body of Scene.add_tree): the joint force `force` [N] along the joint's axis on [t_start, t_end) [s] (by default all of time), none outside, on the link and the opposite on its parent (W for a root link), both through the joint's origin, so that a tree's momenta are conserved; its power is force dq/dt. A run splits its steps at t_start and t_end. Several windows: one PrismaticMotor each.
+    
+    Parameters
+    ----------
+    body : int, required
+        index of the tree link whose prismatic joint it drives
+    force : float [N], required
+        the joint force [N] along the joint's axis
+    t_start : float [s], default -inf
+        the time it starts [s] (-inf: on from any time)
+    t_end : float [s], default inf
+        the time it stops [s] (inf: never)
+    
+    Each argument with a unit takes a float in that unit or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
+    
+    Examples
+    --------
+    A force of 4 N for the first second on a 2 kg slider: 2 m/s after it, and 1 + 2 × 2 = 5 m travelled at t = 3 s:
+    
+    >>> tree = rd.Tree()
+    >>> slider = tree.add_link("slider", -1, rd.PrismaticJoint([1.0, 0.0, 0.0]), rd.SpatialInertia(2.0, [0.0, 0.0, 0.0], 0.1 * np.eye(3)))
+    >>> scene = rd.Scene()
+    >>> links = scene.add_tree(tree, "rail")
+    >>> scene.add(rd.PrismaticMotor(body=links[0], force=4.0, t_end=1.0))
+    0
+    >>> result = rd.simulate(scene, tree.joint_states([0.0]), 0.01, duration=3.0, method="rk4")
+    >>> result.joint_q[-1].round(12), result.joint_v[-1].round(12)
+    (array([5.]), array([2.]))
+    """
+    __hash__: typing.ClassVar[None] = None
+    fields: typing.ClassVar[tuple]
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, *, body: int, force: float, t_start: float = ..., t_end: float = ...) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def body(self) -> typing.Any:
+        """
+        index of the tree link whose prismatic joint it drives
+        """
+    @property
+    def force(self) -> typing.Any:
+        """
+        the joint force [N] along the joint's axis
+        """
+    @property
+    def t_end(self) -> typing.Any:
+        """
+        the time it stops [s] (inf: never)
+        """
+    @property
+    def t_start(self) -> typing.Any:
+        """
+        the time it starts [s] (-inf: on from any time)
+        """
 class SceneFrame:
     """
     The frame F a scene's states are relative to, moving relative to the inertial frame W.
@@ -7139,7 +7266,16 @@ class RevoluteJoint:
     >>> rd.RevoluteJoint([0.0, 0.0, 2.0]).axis
     array([0., 0., 1.])
     """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
     def __init__(self, axis: numpy.typing.ArrayLike = (0.0, 0.0, 1.0)) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
         ...
     def motion_subspace(self) -> numpy.typing.NDArray[numpy.float64]:
         """
@@ -7223,7 +7359,16 @@ class PrismaticJoint:
     >>> rd.PrismaticJoint([3.0, 0.0, 4.0]).axis
     array([0.6, 0. , 0.8])
     """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
     def __init__(self, axis: numpy.typing.ArrayLike = (0.0, 0.0, 1.0)) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
         ...
     def motion_subspace(self) -> numpy.typing.NDArray[numpy.float64]:
         """
@@ -7297,7 +7442,16 @@ class SphericalJoint:
     >>> rd.SphericalJoint().nq, rd.SphericalJoint().nv
     (4, 3)
     """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
     def __init__(self) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
         ...
     def motion_subspace(self) -> numpy.typing.NDArray[numpy.float64]:
         """
@@ -7369,7 +7523,16 @@ class FreeJoint:
     >>> rd.FreeJoint().nq, rd.FreeJoint().nv
     (7, 6)
     """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
     def __init__(self) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
         ...
     def motion_subspace(self) -> numpy.typing.NDArray[numpy.float64]:
         """
@@ -7436,7 +7599,16 @@ class FixedJoint:
     >>> rd.FixedJoint().nq, rd.FixedJoint().nv
     (0, 0)
     """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
     def __init__(self) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
         ...
     def motion_subspace(self) -> numpy.typing.NDArray[numpy.float64]:
         """
@@ -7520,7 +7692,16 @@ class Tree:
     >>> tree.nq, tree.nv, tree.link_names
     (1, 1, ['pendulum'])
     """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        """
+        Whether `other` is a Tree with the same gravity and, link by link, the same names, parents, joints, placements and inertias (exact).
+        """
+    def __getstate__(self) -> tuple:
+        ...
     def __init__(self, gravity: numpy.typing.ArrayLike | None = None) -> None:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
         ...
     def add_link(self, name: str, parent: int, joint: RevoluteJoint | PrismaticJoint | SphericalJoint | FreeJoint | FixedJoint, inertia: SpatialInertia, placement: Transform | None = None) -> int:
         """
@@ -7891,7 +8072,11 @@ class TreeLink:
     __hash__: typing.ClassVar[None] = None
     def __eq__(self, other: typing.Any) -> typing.Any:
         ...
+    def __getstate__(self) -> tuple[Tree, int]:
+        ...
     def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
         ...
     @property
     def com(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -12929,7 +13114,7 @@ def weld_vertices(vertices: numpy.typing.ArrayLike, faces: numpy.typing.ArrayLik
     (2, array([[0, 1, 2],
            [1, 3, 2]]))
     """
-FORCE_ELEMENTS: tuple = (UniformGravity, PointMassGravity, MutualGravity, GravityGradient, SpringDamper, Drag, ScheduledLoads, PythonForce, Thrust, MagneticDipole, ReactionWheel, ZonalGravity, AtmosphericDrag, SolarRadiationPressure, RevoluteSpringDamper, PrismaticSpringDamper)
+FORCE_ELEMENTS: tuple = (UniformGravity, PointMassGravity, MutualGravity, GravityGradient, SpringDamper, Drag, ScheduledLoads, PythonForce, Thrust, MagneticDipole, ReactionWheel, ZonalGravity, AtmosphericDrag, SolarRadiationPressure, RevoluteSpringDamper, PrismaticSpringDamper, RevoluteMotor, PrismaticMotor)
 __version__: str = '0.1.0'
 _accuracy_rule: tuple = (0.001, 10.0, 0.1)
 inertia_relative_tolerance: float = 1e-10

@@ -2,8 +2,8 @@
 // joint is the pivoted body (the same trajectory to round-off); a double pendulum loaded by the scene's
 // UniformGravity runs the same RK4 map as a hand loop around the articulated-body algorithm with the tree's own
 // gravity; its energy error falls at the method's order; a free-floating tree keeps its momenta; the links' records
-// are the links' motions; springs and dampers in its joints are the joint forces of the articulated-body algorithm;
-// bad layouts and the methods a tree cannot take are refused, naming the value.
+// are the links' motions; springs, dampers and motors in its joints are the joint forces of the articulated-body
+// algorithm; bad layouts and the methods a tree cannot take are refused, naming the value.
 #include <gtest/gtest.h>
 
 #include "invalid_argument_message.hpp"
@@ -281,9 +281,10 @@ TEST(TreeScene, RefusesJointStatesOfTheWrongSize) {
 }
 
 // A telescoping pendulum: an arm hinged about y at W's origin, a slider along the arm's x, a pole hinged about y
-// on the slider, each joint on a spring and damper (RevoluteSpringDamper, PrismaticSpringDamper), under the
-// scene's gravity, against a hand RK4 loop of q̈ = ABA(q, q̇, τ) with the joint forces τ = −k (q − q0) − c q̇ and the
-// tree's own gravity: the elements' wrench pairs are the joint forces (joint_spring_damper.hpp). The same map,
+// on the slider, each joint on a spring and damper (RevoluteSpringDamper, PrismaticSpringDamper), the slider and the
+// pole driven by motors (PrismaticMotor, RevoluteMotor, on from the start), under the scene's gravity, against a
+// hand RK4 loop of q̈ = ABA(q, q̇, τ) with the joint forces τ = u − k (q − q0) − c q̇ and the tree's own gravity: the
+// elements' wrench pairs are the joint forces (joint_force.hpp). The same map,
 // evaluated two ways, to a few ε of the forces' scale per evaluation (m g l and k q ≈ 30), grown over 1 s by at most
 // e^{λ t}, λ ≲ 5/s (the double pendulum's bound above): 1e-8 on the coordinates and rates.
 Tree telescope(const Eigen::Vector3d& gravity = Eigen::Vector3d::Zero()) {
@@ -297,22 +298,24 @@ Tree telescope(const Eigen::Vector3d& gravity = Eigen::Vector3d::Zero()) {
   return tree;
 }
 
-TEST(TreeScene, JointSpringsAndDampersAreTheJointForcesOfAba) {
+TEST(TreeScene, JointSpringsDampersAndMotorsAreTheJointForcesOfAba) {
   const Eigen::Vector3d q0(0.3, 0.1, -0.5), v0(0.5, -0.2, 1.0);
-  const Eigen::Vector3d k(20.0, 40.0, 5.0), rest(0.1, 0.2, 0.3), c(0.5, 1.0, 0.2);
+  const Eigen::Vector3d k(20.0, 40.0, 5.0), rest(0.1, 0.2, 0.3), c(0.5, 1.0, 0.2), u(0.0, 3.0, -1.5);
   Scene scene = gravity_scene();
   std::vector<BodyState> states;
   add_tree(scene, telescope(), q0, v0, states);
   scene.elements.push_back(RevoluteSpringDamper{0, k[0], rest[0], c[0]});
   scene.elements.push_back(PrismaticSpringDamper{1, k[1], rest[1], c[1]});
   scene.elements.push_back(RevoluteSpringDamper{2, k[2], rest[2], c[2]});
+  scene.elements.push_back(PrismaticMotor{1, u[1]});
+  scene.elements.push_back(RevoluteMotor{2, u[2]});
   const double h = 0.01;
   const SceneSimulation r = simulate(scene, states, with(Method::rk4, h, 100));
 
   const Tree tree = telescope(Eigen::Vector3d(0.0, 0.0, -9.81));
   TreeWorkspace ws(tree);
   const auto accel = [&](const Eigen::VectorXd& q, const Eigen::VectorXd& v) -> Eigen::VectorXd {
-    const Eigen::VectorXd tau = -(k.array() * (q - rest).array() + c.array() * v.array()).matrix();
+    const Eigen::VectorXd tau = (u.array() - k.array() * (q - rest).array() - c.array() * v.array()).matrix();
     return aba(tree, q, v, tau, {}, ws);
   };
   Eigen::VectorXd q = q0, v = v0;
@@ -329,8 +332,8 @@ TEST(TreeScene, JointSpringsAndDampersAreTheJointForcesOfAba) {
 }
 
 // A joint element on a body that is no tree link, or on a link whose joint is of another kind, is refused naming
-// the element's body
-TEST(TreeScene, JointSpringsRefuseBodiesWithoutTheirJoint) {
+// the element's body; a bad value naming its field
+TEST(TreeScene, JointElementsRefuseBodiesWithoutTheirJoint) {
   Scene scene;
   std::vector<BodyState> states;
   add_body(scene, RigidBody(1.0, Eigen::Vector3d(1.0, 1.0, 1.0)), "box");
@@ -344,6 +347,8 @@ TEST(TreeScene, JointSpringsRefuseBodiesWithoutTheirJoint) {
   EXPECT_NE(refused(RevoluteSpringDamper{2, 1.0, 0.0, 0.0}).find("'slider', whose joint is prismatic"), std::string::npos);
   EXPECT_NE(refused(PrismaticSpringDamper{1, 1.0, 0.0, 0.0}).find("'arm', whose joint is revolute"), std::string::npos);
   EXPECT_NE(refused(RevoluteSpringDamper{1, -1.0, 0.0, 0.0}).find("stiffness: expected a finite number >= 0"), std::string::npos);
+  EXPECT_NE(refused(RevoluteMotor{2, 1.0}).find("'slider', whose joint is prismatic"), std::string::npos);
+  EXPECT_NE(refused(PrismaticMotor{2, std::nan("")}).find("force: expected a finite number"), std::string::npos);
 }
 
 }  // namespace

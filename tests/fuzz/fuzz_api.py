@@ -83,6 +83,10 @@ DOCUMENTED_NON_FINITE = [
     ("AppliedLoad.t_start", {"-inf"}, ("rigiddyn", "AppliedLoad.__init__")),
     ("AppliedLoad.t_end", {"inf"}, ("rigiddyn", "AppliedLoad.__init__")),
     ("ReactionWheel.t_end", {"inf"}, ("rigiddyn", "ReactionWheel")),  # its Parameters: "(inf: none)"
+    ("RevoluteMotor.t_start", {"-inf"}, ("rigiddyn", "RevoluteMotor")),  # its Parameters: "(-inf: on from any time)"
+    ("RevoluteMotor.t_end", {"inf"}, ("rigiddyn", "RevoluteMotor")),  # its Parameters: "(inf: never)"
+    ("PrismaticMotor.t_start", {"-inf"}, ("rigiddyn", "PrismaticMotor")),
+    ("PrismaticMotor.t_end", {"inf"}, ("rigiddyn", "PrismaticMotor")),
     ("Wheel.t_end", {"inf"}, ("rigiddyn", "Wheel")),  # its Parameters: "default 0 and inf"
     ("*[observed_order]", {"nan"}, ("rigiddyn.work_precision", "")),  # the module's docstring: the columns
     # the module's docstring: "for the other measures the columns are nan and the verdict says so"

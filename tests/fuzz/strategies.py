@@ -134,11 +134,16 @@ RECIPES = {
                                                          motor_torque=("lit", u))),
     "Gyrostat": st.just(_GYROSTAT),
     "TreeLink": st.just(_TREE_LINK),
-    # the joint elements with drawn stiffness and damping (their body a tree link of a scene's: Scene.add checks it)
+    # the joint elements with drawn stiffness and damping, torque or force and end (their body a tree link of a
+    # scene's: Scene.add checks it)
     "RevoluteSpringDamper": st.tuples(st.floats(0.0, 100.0), st.floats(0.0, 10.0)).map(lambda kc: _call_spec(
         "RevoluteSpringDamper", body=("lit", 0), stiffness=("lit", kc[0]), damping=("lit", kc[1]))),
     "PrismaticSpringDamper": st.tuples(st.floats(0.0, 100.0), st.floats(0.0, 10.0)).map(lambda kc: _call_spec(
         "PrismaticSpringDamper", body=("lit", 0), stiffness=("lit", kc[0]), damping=("lit", kc[1]))),
+    "RevoluteMotor": st.tuples(st.floats(-100.0, 100.0), st.floats(0.0, 10.0)).map(lambda ut: _call_spec(
+        "RevoluteMotor", body=("lit", 0), torque=("lit", ut[0]), t_end=("lit", ut[1] + 0.1))),
+    "PrismaticMotor": st.tuples(st.floats(-100.0, 100.0), st.floats(0.0, 10.0)).map(lambda ut: _call_spec(
+        "PrismaticMotor", body=("lit", 0), force=("lit", ut[0]), t_end=("lit", ut[1] + 0.1))),
     "GyrostatState": st.floats(-100.0, 100.0).map(lambda w: _call_spec(
         "GyrostatState", w_B=("lit", [0.1, 0.0, 0.2]), wheel_speeds=("lit", [w]))),
     "Thrust": st.sampled_from(["body", "world"]).map(lambda frame: _call_spec(
@@ -248,7 +253,7 @@ RECIPES["SampledState"] = st.tuples(st.floats(0.0, 10.0), st.integers(1, 3), st.
 ELEMENT_CLASSES = ("UniformGravity", "PointMassGravity", "MutualGravity", "GravityGradient", "SpringDamper", "Drag",
                    "ScheduledLoads", "PythonForce", "Thrust", "MagneticDipole",
                    "ReactionWheel", "ZonalGravity", "AtmosphericDrag", "SolarRadiationPressure",
-                   "RevoluteSpringDamper", "PrismaticSpringDamper")
+                   "RevoluteSpringDamper", "PrismaticSpringDamper", "RevoluteMotor", "PrismaticMotor")
 # a field of an element class's table (each class's `fields`)
 RECIPES["ElementField"] = st.tuples(st.sampled_from(ELEMENT_CLASSES), st.integers(0, 1)).map(
     lambda ci: _call_spec(f"{ci[0]}.fields.__getitem__", [("lit", ci[1])]))

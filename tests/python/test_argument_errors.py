@@ -113,6 +113,8 @@ ELEMENTS = {
     "SolarRadiationPressure": lambda: rd.SolarRadiationPressure(sun_W=V, area=1.0),
     "RevoluteSpringDamper": lambda: rd.RevoluteSpringDamper(body=0, stiffness=1.0),
     "PrismaticSpringDamper": lambda: rd.PrismaticSpringDamper(body=0, stiffness=1.0),
+    "RevoluteMotor": lambda: rd.RevoluteMotor(body=0, torque=1.0),
+    "PrismaticMotor": lambda: rd.PrismaticMotor(body=0, force=1.0),
 }
 
 
@@ -320,6 +322,8 @@ EXAMPLES = {
     "SpringDamper": lambda: {"body_a": 0, "stiffness": 1.0},
     "RevoluteSpringDamper": lambda: {"body": 0, "stiffness": 1.0},
     "PrismaticSpringDamper": lambda: {"body": 0, "stiffness": 1.0},
+    "RevoluteMotor": lambda: {"body": 0, "torque": 1.0},
+    "PrismaticMotor": lambda: {"body": 0, "force": 1.0},
     "Drag": lambda: {}, "ScheduledLoads": lambda: {"body": 0}, "PythonForce": lambda: {"fn": _push},
     "load_scene": lambda: {"path_or_text": "kepler"},
     "load_urdf": lambda: {"source": URDF_ARM},

@@ -67,8 +67,10 @@ ELEMENT_EXAMPLES = {
     "PythonForce": rd.PythonForce(_force),
     "RevoluteSpringDamper": rd.RevoluteSpringDamper(body=2, stiffness=3.0, rest_angle=0.2, damping=0.1),
     "PrismaticSpringDamper": rd.PrismaticSpringDamper(body=3, stiffness=40.0, rest_position=-0.1, damping=2.0),
+    "RevoluteMotor": rd.RevoluteMotor(body=2, torque=-1.5, t_start=0.5, t_end=2.0),
+    "PrismaticMotor": rd.PrismaticMotor(body=3, force=3.0, t_start=1.0),
 }
-JOINT_ELEMENTS = ("RevoluteSpringDamper", "PrismaticSpringDamper")  # on the links of _ARM, bodies 2 and 3
+JOINT_ELEMENTS = ("RevoluteSpringDamper", "PrismaticSpringDamper", "RevoluteMotor", "PrismaticMotor")  # on _arm's links
 
 
 def _arm() -> rd.Tree:

@@ -3,11 +3,11 @@ coupling them, the tree's q and v integrated by the articulated-body algorithm.
 
 Checked against the numpy reference: one RK4 step of random trees (revolute, prismatic, spherical, fixed joints,
 with and without a free base) under UniformGravity, a SpringDamper from a link point to a world anchor, Drag on
-every link and a spring and damper in every revolute and prismatic joint equals an RK4 step written from
+every link and a spring, a damper and a motor in every revolute and prismatic joint equals an RK4 step written from
 rigiddyn_ref.tree (forward dynamics from the definitions, the links' wrenches as external forces, the joint springs
 as joint forces) and rigiddyn_ref.scene (the elements' forces); the work-energy balance closes on every run; a
-joint spring's damped oscillation against its closed form; the links' records and describe(); bad input refused
-naming the value.
+joint spring's damped oscillation against its closed form; a motor's window on a floating tree keeps its momenta;
+the links' records and describe(); bad input refused naming the value.
 
 Error bound of the step comparison: both sides evaluate the same four derivatives, each to ~10 n² eps of its scale
 (test_tree_vs_reference's bound for forward dynamics, n <= 8 links; the element forces add a few eps), and the step
@@ -33,32 +33,35 @@ POINT_B = np.array([0.1, 0.2, -0.1])
 SPRING = {"stiffness": 40.0, "rest_length": 0.5, "damping": 1.5}
 DRAG = {"linear": 0.3, "quadratic": 0.1, "angular_linear": 0.2, "angular_quadratic": 0.05}
 JOINT_SPRING = {"stiffness": 5.0, "rest": 0.2, "damping": 0.3}  # in every revolute and prismatic joint
-JOINT_ELEMENTS = {"revolute": (rd.RevoluteSpringDamper, "rest_angle"),
-                  "prismatic": (rd.PrismaticSpringDamper, "rest_position")}
+JOINT_ELEMENTS = {"revolute": (rd.RevoluteSpringDamper, "rest_angle", rd.RevoluteMotor, "torque"),
+                  "prismatic": (rd.PrismaticSpringDamper, "rest_position", rd.PrismaticMotor, "force")}
+MOTOR = 0.7  # the constant force of a motor in every revolute and prismatic joint [N m or N]
 
 
 def tree_scene(links, drag=DRAG):
     """The tree of `links` (no gravity of its own) in a scene with gravity, a spring from its last link's point
-    POINT_B to ANCHOR, `drag` on every link and JOINT_SPRING in every revolute and prismatic joint."""
+    POINT_B to ANCHOR, `drag` on every link, JOINT_SPRING and a motor of MOTOR in every revolute and prismatic joint."""
     tree = build(links, np.zeros(3))
     scene = rd.Scene(elements=[rd.UniformGravity(g_W=G_W), rd.Drag(**drag)])
     scene.add_tree(tree, "arm")
     scene.add(rd.SpringDamper(body_a=len(links) - 1, point_a_B=POINT_B, point_b=ANCHOR, **SPRING))
     for i, l in enumerate(links):
         if l["kind"] in JOINT_ELEMENTS:
-            kind, rest = JOINT_ELEMENTS[l["kind"]]
-            scene.add(kind(body=i, stiffness=JOINT_SPRING["stiffness"], damping=JOINT_SPRING["damping"],
-                           **{rest: JOINT_SPRING["rest"]}))
+            spring, rest, motor, value = JOINT_ELEMENTS[l["kind"]]
+            scene.add(spring(body=i, stiffness=JOINT_SPRING["stiffness"], damping=JOINT_SPRING["damping"],
+                             **{rest: JOINT_SPRING["rest"]}))
+            scene.add(motor(body=i, **{value: MOTOR}))
     return tree, scene
 
 
 def joint_forces(links, q, v):
-    """τ of the joint springs and dampers: −k (q_i − q0) − c v_i in each revolute and prismatic joint, 0 elsewhere."""
+    """τ of the joint springs, dampers and motors: MOTOR − k (q_i − q0) − c v_i in each revolute and prismatic joint,
+    0 elsewhere."""
     idx, _, nv = ref.sizes(links)
     tau = np.zeros(nv)
     for l, (iq, iv) in zip(links, idx):
         if l["kind"] in JOINT_ELEMENTS:
-            tau[iv] = -JOINT_SPRING["stiffness"] * (q[iq] - JOINT_SPRING["rest"]) - JOINT_SPRING["damping"] * v[iv]
+            tau[iv] = MOTOR - JOINT_SPRING["stiffness"] * (q[iq] - JOINT_SPRING["rest"]) - JOINT_SPRING["damping"] * v[iv]
     return tau
 
 
@@ -248,7 +251,29 @@ def test_joint_springs_and_dampers_oscillate_as_their_closed_form():
     assert result.balance.verdict["energy"] == "closed"
 
 
-def test_joint_springs_refuse_bodies_without_their_joint():
+def test_a_motor_window_in_a_floating_trees_hinge_keeps_its_momenta():
+    """A bus (a free base) and a panel on a hinge about z driven by 2 N m on [0.2, 0.5) s: the panel turns one way,
+    the bus the other; the motor's pair is internal, so the tree's linear and angular momenta stay zero, and its work
+    is the kinetic energy gained (no potential): all three balances 'closed' (within the run's error allowance). The
+    motor's power is τ q̇ inside its window and zero outside (the run splits its steps at t_start and t_end). A motor
+    without a window is on at any time (a scene with it needs no time to step: the reference-step test above)."""
+    tree = rd.Tree()
+    tree.add_link("bus", -1, rd.FreeJoint(), rd.SpatialInertia(50.0, [0.0, 0.0, 0.0], np.diag([8.0, 9.0, 10.0])))
+    tree.add_link("panel", 0, rd.RevoluteJoint([0.0, 0.0, 1.0]),
+                  rd.SpatialInertia(5.0, [1.0, 0.0, 0.0], np.diag([0.1, 1.5, 1.6])), rd.Transform(translation=[0.6, 0.0, 0.0]))
+    scene = rd.Scene()
+    bus, panel = scene.add_tree(tree, "craft")
+    motor = scene.add(rd.RevoluteMotor(body=panel, torque=2.0, t_start=0.2, t_end=0.5))
+    result = rd.simulate(scene, tree.joint_states(), 0.01, duration=1.0, method="rk4")
+    assert all(result.balance.verdict[q] == "closed" for q in ("energy", "linear_momentum", "angular_momentum")), \
+        result.balance.verdict
+    assert result.joint_v[-1, 6] > 0.0 and result.w_B[-1, bus, 2] < 0.0  # the panel and the bus turn apart
+    # the records in (0.2, 0.5] hold the motor's piece (a record at a switch time ends the piece before it)
+    window = (result.t > 0.2 + 1e-12) & (result.t < 0.5 + 1e-12)
+    assert np.all(result.power[window, motor] > 0.0) and np.all(result.power[~window, motor] == 0.0)
+
+
+def test_joint_elements_refuse_bodies_without_their_joint():
     scene = rd.Scene([rd.RigidBody(1.0, [1.0, 1.0, 1.0])])
     scene.add_tree(double_pendulum(), "pendulum")
     with pytest.raises(ValueError, match=r"body: expected a link of a tree \(Scene.add_tree\) with a revolute joint, "
@@ -259,6 +284,13 @@ def test_joint_springs_refuse_bodies_without_their_joint():
         scene.add(rd.PrismaticSpringDamper(body=2, stiffness=1.0))
     with pytest.raises(ValueError, match=r"damping: expected a finite number >= 0"):
         scene.add(rd.RevoluteSpringDamper(body=1, stiffness=1.0, damping=-0.1))
+    with pytest.raises(ValueError, match=r"body: expected a link of a tree \(Scene.add_tree\) with a prismatic joint, "
+                                         r"got 1 \('upper', whose joint is revolute\)"):
+        scene.add(rd.PrismaticMotor(body=1, force=1.0))
+    with pytest.raises(ValueError, match=r"t_end: expected a time after t_start = 2"):
+        rd.RevoluteMotor(body=1, torque=1.0, t_start=2.0, t_end=1.0)
+    with pytest.raises(ValueError, match=r"^t_start: expected .*got nan"):
+        rd.PrismaticMotor(body=1, force=1.0, t_start=np.nan)
 
 
 def test_a_scene_file_holds_trees_and_reads_back_the_same_scene():
@@ -395,6 +427,38 @@ def test_a_scene_with_a_tree_equals_its_copies_and_scenes_of_equal_trees():
     other = rd.Scene(elements=[rd.UniformGravity()])
     other.add_tree(heavier, "pendulum")
     assert other.bodies[0] != scene.bodies[0]
+
+
+JOINTS = [rd.RevoluteJoint([0.0, 3.0, 4.0]), rd.PrismaticJoint([1.0, 0.0, 0.0]), rd.SphericalJoint(), rd.FreeJoint(),
+          rd.FixedJoint()]
+
+
+@pytest.mark.parametrize("joint", JOINTS, ids=lambda j: type(j).__name__)
+def test_joints_compare_read_back_from_their_repr_and_pickle(joint):
+    assert eval(repr(joint), vars(rd)) == joint  # noqa: S307 (the package's own repr)
+    assert pickle.loads(pickle.dumps(joint)) == joint
+    assert all((joint == other) == (other is joint) for other in JOINTS)
+
+
+def test_trees_and_scenes_with_trees_pickle_and_run_the_same():
+    """A tree, its links and a scene holding it (with a joint spring) survive a pickle (a Dask worker or a process pool
+    receives them so): equal objects, and the scene runs bit for bit the same trajectory. Links unpickled one by one
+    (each with its own copy of the tree) make a scene again: equal trees are shared by its links."""
+    tree = double_pendulum()
+    tree.add_link("slider", 1, rd.PrismaticJoint([1.0, 0.0, 0.0]), rd.SpatialInertia(0.2, [0.0, 0.0, 0.0], 1e-3 * np.eye(3)),
+                  rd.Transform(translation=[1.0, 0.0, 0.0]))
+    assert pickle.loads(pickle.dumps(tree)) == tree
+    scene = rd.Scene(elements=[rd.UniformGravity()])
+    scene.add_tree(tree, "arm")
+    scene.add(rd.PrismaticSpringDamper(body=2, stiffness=50.0, rest_position=0.1, damping=0.5))
+    again = pickle.loads(pickle.dumps(scene))
+    assert again == scene and [pickle.loads(pickle.dumps(b)) for b in scene.bodies] == list(scene.bodies)
+    start = tree.joint_states([0.4, -0.3, 0.05], [0.0, 1.0, 0.2])
+    ran, ran_again = (rd.simulate(s, start, 1e-3, steps=200, method="rk4") for s in (scene, again))
+    assert np.array_equal(ran.joint_q, ran_again.joint_q) and np.array_equal(ran.joint_v, ran_again.joint_v)
+    links = [pickle.loads(pickle.dumps(b)) for b in scene.bodies]  # three copies of the tree
+    rebuilt = rd.Scene(bodies=links, body_names=scene.body_names, elements=scene.elements)
+    assert np.array_equal(rd.simulate(rebuilt, start, 1e-3, steps=200, method="rk4").joint_q, ran.joint_q)
 
 
 def test_tradeoff_and_tolerance_run_on_a_tree():

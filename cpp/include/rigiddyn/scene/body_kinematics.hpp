@@ -18,7 +18,7 @@ namespace rigiddyn {
 //         has_torque never reads it);
 //   joint_q, joint_v  a tree link's joint coordinates and velocities (tree/tree_link.hpp: its segments of the
 //         tree's q, with unit quaternions, and v), set by the tree's slot at every evaluation and valid until the
-//         next; null for every other kind (the joint elements, scene/elements/joint_spring_damper.hpp, read them).
+//         next; null for every other kind (the joint elements read them, scene/elements/joint_force.hpp).
 // "W" is the scene frame (docs/fixed_point_frames_mass.md §2): W itself when the scene declares no moving
 // frame, else F; the kinematics are relative to it.
 // Each body kind as elements see it: particle q_WB = identity, w_B = 0; planar body p_W = (x, y, 0),

@@ -9,8 +9,10 @@
 #include "rigiddyn/scene/elements/magnetic_dipole.hpp"
 #include "rigiddyn/scene/elements/mutual_gravity.hpp"
 #include "rigiddyn/scene/elements/point_mass_gravity.hpp"
+#include "rigiddyn/scene/elements/prismatic_motor.hpp"
 #include "rigiddyn/scene/elements/prismatic_spring_damper.hpp"
 #include "rigiddyn/scene/elements/reaction_wheel.hpp"
+#include "rigiddyn/scene/elements/revolute_motor.hpp"
 #include "rigiddyn/scene/elements/revolute_spring_damper.hpp"
 #include "rigiddyn/scene/elements/scheduled_loads.hpp"
 #include "rigiddyn/scene/elements/solar_radiation_pressure.hpp"
@@ -38,7 +40,9 @@ using Element = std::variant<UniformGravity,    //
                              AtmosphericDrag,   //
                              SolarRadiationPressure,  //
                              RevoluteSpringDamper,    //
-                             PrismaticSpringDamper>;
+                             PrismaticSpringDamper,   //
+                             RevoluteMotor,           //
+                             PrismaticMotor>;
 
 // The variant of the elements' compiled terms followed by More...: TermsOf<Element, X>::type =
 // std::variant<UniformGravityTerm, …, ThrustTerm, X>.
