@@ -42,9 +42,11 @@ ROOT = Path(__file__).resolve().parents[2]
 # what the figures depend on: this script, what a simulate runs (with its estimate), the scene layer, the exact
 # references of scenes and the shipped scenes
 INPUTS = ["bench/python/accuracy_table.py", *SIMULATION_INPUTS, "cpp/include/rigiddyn/scene/*",
-          "cpp/include/rigiddyn/scene/elements/*", "cpp/include/rigiddyn/scene/fast/*", "cpp/src/scene/*",
+          "cpp/include/rigiddyn/scene/elements/*", "cpp/include/rigiddyn/scene/fast/*",
+          "cpp/include/rigiddyn/scene/kinds/*", "cpp/src/scene/*",
           "cpp/bindings/bind_scene*.cpp", "cpp/bindings/scene_run.hpp", "cpp/bindings/bind_pivoted.cpp",
           "cpp/bindings/bind_exact_dynamics.cpp", "cpp/bindings/bind_orbit.cpp", "python/rigiddyn/scene_file.py",
+          "python/rigiddyn/units.py",  # the scene file's number form and units
           "python/rigiddyn/scenes/*.toml", "python/rigiddyn/problems/*.toml"]
 REGENERATE = ("cmake --build build/<dir> --target _core && "
               "PYTHONPATH=build/<dir>/python python3 bench/python/accuracy_table.py  (seconds)")

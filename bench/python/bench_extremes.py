@@ -48,12 +48,15 @@ ROOT = Path(__file__).resolve().parents[2]
 # what the figures depend on: this script, and the Python and C++ the runs execute (the scene cases: also
 # the scene sweep, the scene layer and its bindings)
 INPUTS = ["bench/python/bench_extremes.py", *SIMULATION_INPUTS, "python/rigiddyn/scene_precision.py",
-          "cpp/include/rigiddyn/scene/*", "cpp/include/rigiddyn/scene/elements/*", "cpp/src/scene/*",
+          "cpp/include/rigiddyn/scene/*", "cpp/include/rigiddyn/scene/elements/*", "cpp/include/rigiddyn/scene/kinds/*",
+          "cpp/src/scene/*",
           "cpp/bindings/bind_scene*.cpp", "cpp/bindings/scene_run.hpp",
           # bodies about a fixed point, moving frames, variable mass: the fast one-body models, the bindings of
           # the new bodies and references, the shipped scenes
           "cpp/include/rigiddyn/scene/fast/*", "cpp/bindings/bind_pivoted.cpp", "cpp/bindings/pivoted.hpp",
-          "cpp/bindings/bind_exact_dynamics.cpp", "python/rigiddyn/scene_file.py", "python/rigiddyn/scenes/*.toml"]
+          "cpp/bindings/bind_exact_dynamics.cpp", "python/rigiddyn/scene_file.py",
+          "python/rigiddyn/units.py",  # the scene file's number form and units
+          "python/rigiddyn/scenes/*.toml"]
 REGENERATE = ("cmake --build build/<dir> --target _core && "
               "PYTHONPATH=build/<dir>/python python3 bench/python/bench_extremes.py  (a few minutes)")
 
