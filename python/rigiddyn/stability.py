@@ -310,15 +310,14 @@ def _minimum_moment(body: object) -> float:
 
 
 def _joint_inertia(link: _core.TreeLink) -> float:
-    """The link's own inertia along its joint [kg m^2 or kg]: its moment about a revolute joint's axis through the
-    link frame's origin, a . (I_C + m (|c|^2 1 - c c^T)) a, or its mass for a prismatic joint (the links beyond add
-    to it, the parent's freedom takes from it: a mode's estimate, as the springs' above)."""
+    """The link's own inertia along its joint [kg m^2 or kg]: a . I_O a, I_O its inertia about the link frame's
+    origin (SpatialInertia.inertia_about_origin), for a revolute joint's axis a; its mass for a prismatic joint (the
+    links beyond add to it, the parent's freedom takes from it: a mode's estimate, as the springs' above)."""
     joint = link.tree.joints[link.link]
     if isinstance(joint, _core.PrismaticJoint):
         return float(link.mass)
-    a, c = np.asarray(joint.axis, float), np.asarray(link.com, float)
-    inertia_O = np.asarray(link.inertia_com, float) + float(link.mass) * (float(c @ c) * np.eye(3) - np.outer(c, c))
-    return float(a @ inertia_O @ a)
+    a = np.asarray(joint.axis, float)
+    return float(a @ np.asarray(link.tree.inertias[link.link].inertia_about_origin(), float) @ a)
 
 
 def _inverse_mass_at(body: object, r_B: np.ndarray) -> float:

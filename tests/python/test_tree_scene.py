@@ -273,6 +273,23 @@ def test_a_motor_window_in_a_floating_trees_hinge_keeps_its_momenta():
     assert np.all(result.power[window, motor] > 0.0) and np.all(result.power[~window, motor] == 0.0)
 
 
+def test_the_step_recommendation_sees_a_joint_springs_mode():
+    """A torsion spring k on a hinged rod (its centre of mass c off the axis) is the mode k / I_a, c_d / I_a of the
+    step recommendation, I_a = I_zz + m |c_perp|² about the hinge (the parallel-axis theorem); a slider's is k / m."""
+    tree = rd.Tree()
+    tree.add_link("rod", -1, rd.RevoluteJoint([0.0, 0.0, 1.0]),
+                  rd.SpatialInertia(2.0, [0.5, 0.1, 0.0], np.diag([0.01, 0.2, 0.2])))
+    tree.add_link("slider", 0, rd.PrismaticJoint([1.0, 0.0, 0.0]), rd.SpatialInertia(0.5, [0.0, 0.0, 0.0], 0.01 * np.eye(3)))
+    scene = rd.Scene()
+    rod, slider = scene.add_tree(tree, "arm")
+    scene.add(rd.RevoluteSpringDamper(body=rod, stiffness=3.0, damping=0.1))
+    scene.add(rd.PrismaticSpringDamper(body=slider, stiffness=8.0, damping=0.4))
+    I_a = 0.2 + 2.0 * (0.5**2 + 0.1**2)
+    modes = rd.stability.scene_modes(scene, tree.joint_states())
+    assert [m[0] for m in modes] == ["the joint spring elements[0]", "the joint spring elements[1]"]
+    assert np.allclose([m[1:] for m in modes], [(3.0 / I_a, 0.1 / I_a), (8.0 / 0.5, 0.4 / 0.5)], rtol=1e-14)  # a few ε
+
+
 def test_joint_elements_refuse_bodies_without_their_joint():
     scene = rd.Scene([rd.RigidBody(1.0, [1.0, 1.0, 1.0])])
     scene.add_tree(double_pendulum(), "pendulum")
