@@ -12,7 +12,7 @@ from .inertia_mesh import mesh_shell, solid_mesh  # type: ignore[assignment]  # 
 from .problem import Problem, load_problem
 from . import scene_describe as _scene_describe  # noqa: F401  (attaches Scene.describe, CompiledScene.describe)
 from .scene_file import load_scene
-from .urdf import load_urdf
+from .urdf import load_urdf, urdf_joint_dampers
 from .stability import StabilityWarning
 from ._balance import AccuracyWarning, Balance
 from .work_precision import TradeoffResult, tradeoff  # the function; its module is rigiddyn.work_precision
@@ -24,7 +24,7 @@ __version__: str = _core.__version__
 __all__ = [name for name in dir(_core) if not name.startswith("_")]
 # a list of names of its own (mypy reads the exports of a module from `__all__ +=` of a literal list)
 __all__ += ["to_scipy", "from_scipy", "Problem", "load_problem", "StabilityWarning", "TradeoffResult", "tradeoff",
-            "load_scene", "load_urdf"]
+            "load_scene", "load_urdf", "urdf_joint_dampers"]
 __all__ += ["AccuracyWarning", "Balance"]
 __all__ += ["monte_carlo", "DispersionWarning"]  # monte_carlo: the function (rigiddyn.dispersion: Normal, ...)
 __all__ += ["Controller", "SampledState"]  # rigiddyn.control also holds the shipped laws BDot, PDAttitude

@@ -25,8 +25,15 @@ Dispersion keys (units SI, frames as docs/conventions.md):
             added to the nominal `loads` schedule
 A scene's bodies are dispersed under "<body name>.<field>" (a RigidBody's p_W, q_WB, v_W, w_B, mass, inertia; a
 Particle's p_W, v_W, mass; a PivotedBody's q_WB, w_B; a PivotedPlanarBody's "theta" [rad] and "omega" [rad/s],
-Normal / Uniform; a Gyrostat's p_W, q_WB, v_W, w_B, its wheel speeds kept), drawn body after body; its loads and
-gravity are its elements.
+Normal / Uniform; a Gyrostat's p_W, q_WB, v_W, w_B, its wheel speeds kept; a tree link's joint state, below), drawn
+body after body; its loads and gravity are its elements.
+
+A link of a kinematic tree (a TreeLink, Scene.add_tree) is dispersed in its joint's coordinates, as its JointState:
+  "<link>.q"  a revolute or prismatic joint's angle [rad] or offset [m] (1,): Normal / Uniform; a spherical joint's
+              unit quaternion q_JL (4,) or a free joint's (p_JL, q_JL) (7,): UniformRotation or RotationNormal of
+              its attitude (the rotation vector in the link frame L; a free joint's position kept)
+  "<link>.v"  the joint's velocities (nv_i,) [rad/s, m/s; a ball's w_L, a free joint's (w_L, v_L)]: Normal / Uniform
+A fixed joint has no key; the tree's mass properties are not dispersed.
 
 Before any draw, the memory the run needs (each sample's records and what drawing it holds) is estimated
 and a run that would not fit in the memory available is refused, naming n.
@@ -64,7 +71,7 @@ RECORD_FIELDS = ("t", "p_W", "q_WB", "v_W", "w_B", "kinetic_energy", "total_ener
 # the per-record arrays of a BatchSceneResult, each (N, n_records, ...) (per body: (N, n_records, bodies, ...))
 SCENE_RECORD_FIELDS = ("t", "p_W", "q_WB", "v_W", "w_B", "mass", "kinetic_energy", "potential_energy",
                        "total_energy", "linear_momentum_W", "angular_momentum_W", "angular_momentum_O_W",
-                       "pivot_reaction_W", "power", "work")
+                       "pivot_reaction_W", "power", "work", "joint_q", "joint_v")
 # the per-record arrays of a batch's GlobalError, each (N, n_records, ...), fields "error.<name>" of a MonteCarloResult
 ERROR_FIELDS = ("attitude", "angular_velocity", "position", "velocity", "energy", "angular_momentum")
 STANDARD_GRAVITY_W = (0.0, 0.0, -9.81)  # [m/s^2] in W, what gravity=True means (as simulate)
@@ -131,6 +138,8 @@ class Dispersion:
         nominal value, before any draw."""
         if _field(key) not in self.keys:
             raise TypeError(f"dispersions[{key!r}]: expected {_classes_for(key)}, got {type(self).__name__}")
+        if _field(key) == "q":
+            _check_joint_q(self, key, np.shape(nominal))
 
     def draw(self, rng: np.random.Generator, nominal: Any) -> Any:
         raise NotImplementedError
@@ -144,7 +153,7 @@ class Normal(Dispersion):
     std: standard deviation >= 0 per component, same unit and broadcasting (0 gives the mean exactly).
     """
 
-    keys = ("p_W", "v_W", "w_B", "theta", "omega", "mass", "gravity", "force", "torque")
+    keys = ("p_W", "v_W", "w_B", "theta", "omega", "q", "v", "mass", "gravity", "force", "torque")
 
     def __init__(self, mean: Any = None, std: Any = None):
         if std is None:
@@ -215,9 +224,10 @@ def _quat_multiply(a: np.ndarray, b: np.ndarray) -> np.ndarray:
 
 class UniformRotation(Dispersion):
     """Attitude q_WB uniform on SO(3) (the Haar measure), independent of the nominal attitude: a 4-D
-    standard normal vector normalised to unit length (Shoemake 1992), returned as (x, y, z, w)."""
+    standard normal vector normalised to unit length (Shoemake 1992), returned as (x, y, z, w). On a tree
+    link's "q": its spherical joint's q_JL, or the attitude of its free joint's (p_JL, q_JL), p_JL kept."""
 
-    keys = ("q_WB",)
+    keys = ("q_WB", "q")
 
     def draw(self, rng: np.random.Generator, nominal: Any) -> Any:
         g = rng.standard_normal(4)
@@ -225,7 +235,7 @@ class UniformRotation(Dispersion):
         while norm < 1e-100:  # probability < 1e-400: the direction of g is uniform on S^3
             g = rng.standard_normal(4)
             norm = math.sqrt(float(g @ g))
-        return g / norm
+        return _with_attitude(nominal, g / norm)
 
     def __repr__(self) -> str:
         return "UniformRotation()"
@@ -234,9 +244,10 @@ class UniformRotation(Dispersion):
 class RotationNormal(Dispersion):
     """Attitude q_WB = q_WB,nominal ⊗ exp(phi): a small rotation about the nominal attitude, its rotation
     vector phi (3,) [rad] expressed in B with independent normal components of standard deviation `std`
-    [rad] (a float or (3,), >= 0)."""
+    [rad] (a float or (3,), >= 0). On a tree link's "q": q_JL ⊗ exp(phi), phi in the link frame L, of its
+    spherical joint's q_JL or of its free joint's (p_JL, q_JL), p_JL kept."""
 
-    keys = ("q_WB",)
+    keys = ("q_WB", "q")
 
     def __init__(self, std: Any):
         self.std = _float_array(std, "std")
@@ -245,10 +256,28 @@ class RotationNormal(Dispersion):
 
     def draw(self, rng: np.random.Generator, nominal: Any) -> Any:
         phi_B = np.broadcast_to(self.std, (3,)) * rng.standard_normal(3)
-        return _quat_multiply(np.asarray(nominal, float), _quat_from_rotvec(phi_B))
+        q_nominal = np.asarray(nominal, float)[-4:]  # a free joint's (p_JL, q_JL): its attitude
+        return _with_attitude(nominal, _quat_multiply(q_nominal, _quat_from_rotvec(phi_B)))
 
     def __repr__(self) -> str:
         return f"RotationNormal(std={self.std.tolist()})"
+
+
+def _with_attitude(nominal: Any, q: np.ndarray) -> np.ndarray:
+    """`nominal` with its attitude replaced by q (x, y, z, w): (p_JL, q) for a free joint's coordinates (7,), q itself
+    for an attitude."""
+    return np.concatenate([np.asarray(nominal, float)[:3], q]) if np.shape(nominal) == (7,) else q
+
+
+def _check_joint_q(dispersion: Dispersion, key: str, shape: tuple[int, ...]) -> None:
+    """A joint's q (shape `shape`) is dispersed by Normal / Uniform when it is one coordinate (a revolute or
+    prismatic joint), by a rotation when it holds a quaternion (a spherical joint's (4,), a free joint's (7,))."""
+    scalar = shape == (1,)
+    if isinstance(dispersion, (UniformRotation, RotationNormal)) == scalar:
+        joint = "revolute or prismatic" if scalar else "spherical" if shape == (4,) else "free"
+        kind = f"a {joint} joint's q {shape}"
+        expected = "Normal or Uniform" if scalar else "UniformRotation or RotationNormal"
+        raise TypeError(f"dispersions[{key!r}]: expected {expected} for {kind}, got {type(dispersion).__name__}")
 
 
 def _rotation_matrix(phi: np.ndarray) -> np.ndarray:
@@ -698,13 +727,15 @@ SCENE_BODY_FIELDS = {"RigidBody": ("p_W", "q_WB", "v_W", "w_B", "mass", "inertia
                      "Particle": ("p_W", "v_W", "mass"),
                      "PivotedBody": ("q_WB", "w_B"),
                      "PivotedPlanarBody": ("theta", "omega"),
-                     "Gyrostat": ("p_W", "q_WB", "v_W", "w_B")}
+                     "Gyrostat": ("p_W", "q_WB", "v_W", "w_B"),
+                     "TreeLink": ("q", "v")}
 STATE_OF_BODY = {"RigidBody": "RigidBodyState", "Particle": "ParticleState", "PivotedBody": "PivotedBodyState",
-                 "PivotedPlanarBody": "PivotedPlanarBodyState", "Gyrostat": "GyrostatState"}
+                 "PivotedPlanarBody": "PivotedPlanarBodyState", "Gyrostat": "GyrostatState", "TreeLink": "JointState"}
 # the state fields of each body kind, in its state class's constructor order (a gyrostat's wheel speeds kept at
 # their nominal values)
 _STATE_FIELDS = {"RigidBody": STATE_KEYS, "Particle": ("p_W", "v_W"), "PivotedBody": ("q_WB", "w_B"),
-                 "PivotedPlanarBody": ("theta", "omega"), "Gyrostat": (*STATE_KEYS, "wheel_speeds")}
+                 "PivotedPlanarBody": ("theta", "omega"), "Gyrostat": (*STATE_KEYS, "wheel_speeds"),
+                 "TreeLink": ("q", "v")}
 
 
 def _scene_nominal(scene: Any, nominal_state: Any) -> dict[str, Any]:
@@ -722,7 +753,8 @@ def _scene_nominal(scene: Any, nominal_state: Any) -> dict[str, Any]:
         for field in SCENE_BODY_FIELDS.get(kind, ()):
             value = {"mass": lambda: body.mass, "inertia": lambda: body.inertia_com}.get(
                 field, lambda: getattr(state, field))()
-            nominal[f"{name}.{field}"] = value
+            if np.size(value) > 0:  # (a fixed joint has no q or v)
+                nominal[f"{name}.{field}"] = value
     return nominal
 
 
@@ -858,8 +890,8 @@ def monte_carlo(model: Any, nominal_state: Any, n: int, *, seed: Any,
         The nominal body (mass [kg], inertia about the centre of mass in B [kg m²]); or a scene, whose
         bodies' states and mass properties are dispersed under the keys ``"<body name>.<field>"`` (fields
         p_W, q_WB, v_W, w_B, mass, inertia of a RigidBody; p_W, v_W, mass of a Particle; q_WB, w_B of a
-        PivotedBody; theta [rad], omega [rad/s] of a PivotedPlanarBody; a PlanarBody is not dispersed); a
-        scene's loads and gravity are its elements.
+        PivotedBody; theta [rad], omega [rad/s] of a PivotedPlanarBody; q and v, the joint's coordinates and
+        velocities, of a tree link; a PlanarBody is not dispersed); a scene's loads and gravity are its elements.
     nominal_state : RigidBodyState or list of body states
         p_W [m], q_WB (x, y, z, w), v_W [m/s] in W, w_B [rad/s] in B; for a scene, its bodies' states.
     n : int

@@ -1,4 +1,5 @@
-"""URDF robot descriptions as kinematic trees: ``load_urdf(path_or_xml)`` returns a rigiddyn.Tree.
+"""URDF robot descriptions as kinematic trees: ``load_urdf(path_or_xml)`` returns a rigiddyn.Tree, and
+``urdf_joint_dampers(path_or_xml, tree, links)`` the viscous dampers of its joints as scene elements.
 
 The file is parsed by yourdfpy (the ``urdf`` extra: ``pip install "rigiddyn[urdf]"``), imported only
 when a URDF is read. What is read, and how (ROS, "URDF XML specification", wiki.ros.org/urdf/XML):
@@ -11,8 +12,10 @@ when a URDF is read. What is read, and how (ROS, "URDF XML specification", wiki.
   roll-pitch-yaw about the fixed axes, R = Rz(yaw) Ry(pitch) Rx(roll)); the child link's frame is the joint
   frame moved by the joint. ``revolute`` and ``continuous`` become a RevoluteJoint, ``prismatic`` a
   PrismaticJoint (``axis`` in the joint frame, default (1, 0, 0)), ``floating`` a FreeJoint and ``fixed`` a
-  FixedJoint. Limits, dynamics (damping, friction), calibration and mimic tags do not enter the dynamics: a
-  mimic joint is loaded as an independent joint.
+  FixedJoint. Limits, calibration and mimic tags do not enter the dynamics: a mimic joint is loaded as an
+  independent joint. ``<dynamics damping>`` (N m s/rad for a revolute joint, N s/m for a prismatic one) is not part
+  of the Tree: ``urdf_joint_dampers`` makes it a RevoluteSpringDamper or PrismaticSpringDamper of stiffness 0 in a
+  scene; ``<dynamics friction>`` (Coulomb friction) is not modelled, refused unless left out explicitly.
 
 Links without mass: every link that a joint moves needs a positive-definite inertia (the Tree's rule). A
 link on a fixed joint is welded into the body it is fixed to when its own inertia is not positive definite
@@ -28,14 +31,15 @@ from __future__ import annotations
 
 import io
 import os
-from typing import Any, Dict, List, Optional, Tuple, Union
+import reprlib
+from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
-from ._core import (FixedJoint, FreeJoint, InertiaCheck, PrismaticJoint, RevoluteJoint, SpatialInertia,
-                    Transform, Tree, composite)
+from ._core import (FixedJoint, FreeJoint, InertiaCheck, PrismaticJoint, PrismaticSpringDamper, RevoluteJoint,
+                    RevoluteSpringDamper, SpatialInertia, Transform, Tree, composite)
 
-__all__ = ["load_urdf", "JOINT_TYPES"]
+__all__ = ["load_urdf", "urdf_joint_dampers", "JOINT_TYPES"]
 
 # URDF joint type -> the rigiddyn joint it becomes
 JOINT_TYPES = {"revolute": "RevoluteJoint", "continuous": "RevoluteJoint", "prismatic": "PrismaticJoint",
@@ -281,3 +285,113 @@ def _body_inertia(name: str, body_parts: List[Part]) -> SpatialInertia:
         raise ValueError(f"link {name!r}: expected a positive-definite inertia (a link that moves needs one), got "
                          f"principal moments {moments.tolist()} [kg m²] about its centre of mass")
     return inertia
+
+
+def _damping(joint: Any) -> Tuple[float, float]:
+    """A URDF joint's (damping, friction) from its <dynamics> tag (0 where absent), refused unless finite and >= 0."""
+    dynamics = joint.dynamics
+    values = []
+    for field in ("damping", "friction"):
+        value = 0.0 if dynamics is None or getattr(dynamics, field) is None else float(getattr(dynamics, field))
+        if not np.isfinite(value) or value < 0.0:
+            raise ValueError(f"joint {joint.name!r}: expected a <dynamics> {field} >= 0, got {value!r}")
+        values.append(value)
+    return values[0], values[1]
+
+
+def urdf_joint_dampers(source: Union[str, "os.PathLike[str]"], tree: Tree, links: Sequence[int],
+                       friction: str = "refuse") -> List[Any]:
+    """The viscous dampers of a URDF's joints, as scene elements on the links of its tree in a scene.
+
+    URDF's ``<dynamics damping="c"/>`` in a revolute or continuous joint is the joint torque τ = −c q̇ [N m]
+    (c in N m s/rad), in a prismatic joint the force τ = −c q̇ [N] (c in N s/m): each joint with c > 0 gives a
+    RevoluteSpringDamper or PrismaticSpringDamper of stiffness 0 on its child link's body, in joint order.
+    ``<dynamics friction>`` is Coulomb friction, which rigiddyn does not model: a joint with friction > 0 is
+    refused unless ``friction="ignore"`` leaves it out.
+
+    Parameters
+    ----------
+    source : str or os.PathLike
+        The URDF the tree was loaded from: a file's path, or the XML itself (a string starting with ``<``).
+    tree : Tree
+        The tree ``load_urdf(source, ...)`` returned (its links are named after the URDF's links).
+    links : sequence of int
+        The scene's bodies of the tree's links, in link order: what ``Scene.add_tree(tree, name)`` returned.
+    friction : {"refuse", "ignore"}, default "refuse"
+        What to do with a joint whose friction is > 0: refuse it (ValueError naming the joint), or leave the
+        friction out of the dynamics.
+
+    Returns
+    -------
+    list of RevoluteSpringDamper and PrismaticSpringDamper
+        One per revolute, continuous or prismatic joint with damping > 0, in the file's joint order; add each to
+        the scene (``scene.add(damper)``).
+
+    Raises
+    ------
+    ImportError
+        yourdfpy is not installed (``pip install "rigiddyn[urdf]"``).
+    TypeError
+        `source` neither a str nor a path; `tree` not a Tree; `links` not a sequence of ints.
+    ValueError
+        No file at the path, or not a URDF (as load_urdf); `links` not one body per link of `tree`; a joint whose
+        child is not a link of `tree` (another URDF); a damping or friction that is negative or not finite, damping
+        on a floating joint (naming the joint); a friction > 0 with ``friction="refuse"``, naming the joint and the
+        value; an unknown `friction`.
+
+    See Also
+    --------
+    load_urdf, RevoluteSpringDamper, PrismaticSpringDamper
+
+    Examples
+    --------
+    A flywheel on a damped axle (I = 0.2 kg m² about it), spun at 1 rad/s, slows as exp(−c t / I):
+
+    >>> wheel = '''<robot name="wheel"><link name="base"/>
+    ...   <link name="rotor"><inertial><mass value="1.0"/>
+    ...     <inertia ixx="0.1" iyy="0.1" izz="0.2" ixy="0" ixz="0" iyz="0"/></inertial></link>
+    ...   <joint name="axle" type="continuous"><parent link="base"/><child link="rotor"/>
+    ...     <axis xyz="0 0 1"/><dynamics damping="0.04" friction="0"/></joint></robot>'''
+    >>> tree = rd.load_urdf(wheel)
+    >>> scene = rd.Scene()
+    >>> links = scene.add_tree(tree, "wheel")
+    >>> [scene.add(damper) for damper in rd.urdf_joint_dampers(wheel, tree, links)]
+    [0]
+    >>> scene.elements[0]
+    RevoluteSpringDamper(body=0, stiffness=0.0, rest_angle=0.0, damping=0.04)
+    >>> run = rd.simulate(scene, tree.joint_states([0.0], [1.0]), 0.01, duration=5.0, error=False)
+    >>> print(f"{run.joint_v[-1, 0]:.6f} rad/s; exp(-0.2 * 5) = {np.exp(-1.0):.6f}")
+    0.367879 rad/s; exp(-0.2 * 5) = 0.367879
+    """
+    if friction not in ("refuse", "ignore"):
+        raise ValueError(f"friction: expected 'refuse' or 'ignore', got {friction!r}")
+    if not isinstance(tree, Tree):
+        raise TypeError(f"tree: expected the Tree load_urdf returned, got {type(tree).__name__}")
+    if not isinstance(links, (Sequence, np.ndarray)) or isinstance(links, str):
+        raise TypeError(f"links: expected the body indices (ints) Scene.add_tree returned, got {links!r}")
+    if len(links) != tree.num_links:  # (before any copy of the sequence)
+        raise ValueError(f"links: expected the {tree.num_links} bodies Scene.add_tree returned for the tree's links, "
+                         f"got {len(links)} ({reprlib.repr(links)})")
+    bodies = list(links)
+    if not all(isinstance(b, (int, np.integer)) and not isinstance(b, bool) for b in bodies):
+        raise TypeError(f"links: expected the body indices (ints) Scene.add_tree returned, got {links!r}")
+    robot = _read(source)
+    dampers = []
+    for joint in robot.joints:
+        damping, joint_friction = _damping(joint)
+        if joint_friction > 0.0 and friction == "refuse":
+            raise ValueError(f"joint {joint.name!r}: friction {joint_friction!r} (Coulomb friction) is not modelled; "
+                             "give friction='ignore' to leave it out of the dynamics")
+        if damping == 0.0 or joint.type == "fixed":
+            continue
+        if joint.type not in ("revolute", "continuous", "prismatic"):
+            raise ValueError(f"joint {joint.name!r}: expected damping only in a revolute, continuous or prismatic "
+                             f"joint, got damping {damping!r} in a {joint.type!r} joint")
+        if joint.child not in tree.link_names:
+            raise ValueError(f"joint {joint.name!r}: its child link {joint.child!r} is not a link of the tree "
+                             f"(links {tree.link_names}): expected the tree load_urdf returned for this URDF")
+        body = bodies[tree.link_names.index(joint.child)]
+        dampers.append(PrismaticSpringDamper(body=body, stiffness=0.0, rest_position=0.0, damping=damping)
+                       if joint.type == "prismatic" else
+                       RevoluteSpringDamper(body=body, stiffness=0.0, rest_angle=0.0, damping=damping))
+    return dampers

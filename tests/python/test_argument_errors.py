@@ -327,6 +327,7 @@ EXAMPLES = {
     "Drag": lambda: {}, "ScheduledLoads": lambda: {"body": 0}, "PythonForce": lambda: {"fn": _push},
     "load_scene": lambda: {"path_or_text": "kepler"},
     "load_urdf": lambda: {"source": URDF_ARM},
+    "urdf_joint_dampers": lambda: {"source": URDF_ARM, "tree": rd.load_urdf(URDF_ARM), "links": (0,)},
     # bodies about a fixed point, the scene's frame, variable mass
     "PivotedBody": lambda: {"body": rd.RigidBody(1.0, I_BOX), "p_OC_B": V},
     "PivotedPlanarBody": lambda: {"mass": 1.0, "inertia_zz": 0.5, "p_OC_B": [0.1, 0.2]},

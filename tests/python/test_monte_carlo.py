@@ -417,6 +417,72 @@ def test_pivoted_bodies_states_are_dispersed():
             np.testing.assert_array_equal(np.asarray(getattr(run.batch, field))[i], getattr(serial, field))
 
 
+def floating_chain():
+    """A free-floating base with a ball-jointed, a hinged and a welded link, and its nominal joint states."""
+    tree = rd.Tree()
+    box = rd.SpatialInertia(2.0, [0.1, 0.0, 0.0], np.diag([0.02, 0.03, 0.04]))
+    along = rd.Transform(translation=[0.3, 0.0, 0.0])
+    tree.add_link("base", -1, rd.FreeJoint(), box)
+    tree.add_link("ball", 0, rd.SphericalJoint(), box, along)
+    tree.add_link("hinge", 1, rd.RevoluteJoint([0.0, 0.0, 1.0]), box, along)
+    tree.add_link("weld", 2, rd.FixedJoint(), box, along)
+    scene = rd.Scene()
+    scene.add_tree(tree, "sc")
+    base_q = [1.0, -2.0, 0.5, *(np.array([0.1, 0.2, -0.3, 0.9]) / np.linalg.norm([0.1, 0.2, -0.3, 0.9]))]
+    q = np.concatenate([base_q, [0.0, 0.0, 0.0, 1.0], [0.4]])
+    return tree, scene, tree.joint_states(q, 0.1 * np.arange(1, tree.nv + 1))
+
+
+def test_tree_links_are_dispersed_in_their_joints():
+    tree, scene, nominal = floating_chain()
+    n, std = 400, 0.05
+    dispersions = {"sc.hinge.v": mc.Uniform(-1.0, 1.0), "sc.hinge.q": Normal(std=0.2), "sc.ball.q": mc.UniformRotation(),
+                   "sc.base.v": Normal(std=0.01), "sc.base.q": mc.RotationNormal(std)}
+    run = mc.monte_carlo(scene, nominal, n, seed=4, dt=0.01, steps=1, dispersions=dispersions, error=False)
+    assert list(run.inputs) == ["sc.base.q", "sc.base.v", "sc.ball.q", "sc.hinge.q", "sc.hinge.v"]
+    assert [run.inputs[k].shape for k in run.inputs] == [(n, 7), (n, 6), (n, 4), (n, 1), (n, 1)]
+    # the records start at the drawn joint states (the ball's rate, not dispersed, at its nominal value)
+    np.testing.assert_array_equal(run.values("joint_q", at=0.0), np.hstack(
+        [run.inputs["sc.base.q"], run.inputs["sc.ball.q"], run.inputs["sc.hinge.q"]]))
+    np.testing.assert_array_equal(run.values("joint_v", at=0.0), np.hstack(
+        [run.inputs["sc.base.v"], np.tile(nominal[1].v, (n, 1)), run.inputs["sc.hinge.v"]]))
+    # a free joint's attitude is rotated about its nominal value, its position kept; the angle is |φ|, φ ~ N(0, std² I₃):
+    # a Maxwell variable of mean 2 std sqrt(2/π), standard error std sqrt((3 - 8/π)/n)
+    np.testing.assert_array_equal(run.inputs["sc.base.q"][:, :3], np.tile(nominal[0].q[:3], (n, 1)))
+    angle = angle_between(nominal[0].q[3:], run.inputs["sc.base.q"][:, 3:])
+    assert abs(angle.mean() - 2.0 * std * math.sqrt(2.0 / math.pi)) < z_bound() * std * math.sqrt((3.0 - 8.0 / math.pi) / n)
+    # unit quaternions to a few roundings (a normalised 4-vector; the product of two unit quaternions)
+    for key in ("sc.ball.q", "sc.base.q"):
+        np.testing.assert_allclose(np.linalg.norm(run.inputs[key][:, -4:], axis=1), 1.0, rtol=0, atol=8 * EPS)
+    # each sample is the serial run of the scene from its drawn joint states
+    for i in (0, n - 1):
+        drawn = {key: run.inputs[key][i] for key in run.inputs}
+        states = [rd.JointState(drawn["sc.base.q"], drawn["sc.base.v"]), rd.JointState(drawn["sc.ball.q"], nominal[1].v),
+                  rd.JointState(drawn["sc.hinge.q"], drawn["sc.hinge.v"]), nominal[3]]
+        serial = rd.simulate(scene, states, 0.01, 1, error=False)
+        for field in ("joint_q", "joint_v", "q_WB", "total_energy"):
+            np.testing.assert_array_equal(np.asarray(getattr(run.batch, field))[i], getattr(serial, field))
+
+
+def test_a_joint_q_is_dispersed_as_its_joint_allows():
+    _, scene, nominal = floating_chain()
+    for key, dispersion, message in (
+            ("sc.ball.q", Normal(std=0.1), "expected UniformRotation or RotationNormal for a spherical joint's q (4,), "
+                                           "got Normal"),
+            ("sc.base.q", mc.Uniform(0.0, 1.0), "expected UniformRotation or RotationNormal for a free joint's q (7,), "
+                                                "got Uniform"),
+            ("sc.hinge.q", mc.UniformRotation(), "expected Normal or Uniform for a revolute or prismatic joint's q (1,), "
+                                                 "got UniformRotation")):
+        with pytest.raises(TypeError, match=re.escape(f"dispersions[{key!r}]: {message}")):
+            mc.monte_carlo(scene, nominal, 2, seed=1, dt=0.1, steps=1, dispersions={key: dispersion})
+    # a fixed joint has no coordinates to disperse: its link has no key
+    with pytest.raises(ValueError, match=r"^dispersions: expected keys among sc\.base\.q, sc\.base\.v, sc\.ball\.q, "
+                                         r"sc\.ball\.v, sc\.hinge\.q, sc\.hinge\.v, got 'sc\.weld\.q'$"):
+        mc.monte_carlo(scene, nominal, 2, seed=1, dt=0.1, steps=1, dispersions={"sc.weld.q": Normal(std=1.0)})
+    with pytest.raises(TypeError, match=r"nominal_state: expected a JointState for body 'sc\.base', got RigidBodyState"):
+        mc.monte_carlo(scene, [rd.RigidBodyState(), *nominal[1:]], 2, seed=1, dt=0.1, steps=1)
+
+
 def test_a_wrong_key_lists_the_valid_ones():
     scene, nominal = pivoted_top_and_pendulum()
     with pytest.raises(ValueError, match=r"^dispersions: expected keys among top\.q_WB, top\.w_B, p\.theta, p\.omega, "

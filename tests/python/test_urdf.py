@@ -264,3 +264,82 @@ def test_without_yourdfpy_the_error_names_the_extra(monkeypatch):
     monkeypatch.setitem(sys.modules, "yourdfpy", None)  # import yourdfpy raises ImportError
     with pytest.raises(ImportError, match=r'pip install "rigiddyn\[urdf\]"'):
         rd.load_urdf(ARM)
+
+
+def damped_chain(axle="", slide="", hinge=""):
+    """A rotor on an axle, a slider on it and a hinged tip, each joint with the <dynamics> tag given."""
+    inertial = '<inertial><mass value="1.0"/><inertia ixx="0.1" iyy="0.1" izz="0.2" ixy="0" ixz="0" iyz="0"/></inertial>'
+    return (f'<robot name="chain"><link name="base"/><link name="rotor">{inertial}</link>'
+            f'<link name="slider">{inertial}</link><link name="tip">{inertial}</link>'
+            f'<joint name="axle" type="continuous"><parent link="base"/><child link="rotor"/><axis xyz="0 0 1"/>{axle}'
+            f'</joint><joint name="slide" type="prismatic"><parent link="rotor"/><child link="slider"/>'
+            f'<axis xyz="1 0 0"/><limit lower="-1" upper="1" effort="1" velocity="1"/>{slide}</joint>'
+            f'<joint name="hinge" type="revolute"><parent link="slider"/><child link="tip"/><axis xyz="0 1 0"/>'
+            f'<limit lower="-1" upper="1" effort="1" velocity="1"/>{hinge}</joint></robot>')
+
+
+def test_joint_dampers_are_read_from_the_dynamics_tags():
+    text = damped_chain(axle='<dynamics damping="0.04"/>', slide='<dynamics damping="2.5" friction="0.0"/>')
+    tree = rd.load_urdf(text)
+    scene = rd.Scene(bodies=[rd.Particle(1.0)])
+    links = scene.add_tree(tree, "chain")
+    assert links == (1, 2, 3)
+    dampers = rd.urdf_joint_dampers(text, tree, links)
+    # one per joint with damping > 0, on its child link's body, in joint order (the hinge has no <dynamics>)
+    assert dampers == [rd.RevoluteSpringDamper(body=1, stiffness=0.0, rest_angle=0.0, damping=0.04),
+                       rd.PrismaticSpringDamper(body=2, stiffness=0.0, rest_position=0.0, damping=2.5)]
+
+
+def test_a_damped_axle_slows_as_its_closed_form():
+    text = damped_chain(axle='<dynamics damping="0.04"/>')
+    tree = rd.load_urdf(text)
+    scene = rd.Scene()
+    for damper in rd.urdf_joint_dampers(text, tree, scene.add_tree(tree, "chain")):
+        scene.add(damper)
+    # the links beyond the axle at rest on it, slider and tip on the axis: I about the axle = 3 × 0.2 kg m²;
+    # ω(t) = ω0 exp(−c t / I). RK4 on the linear ω' = −λω: local error (hλ)⁵/120 |ω| a step, plus a few roundings
+    dt, steps, c, inertia = 0.01, 500, 0.04, 0.6
+    run = rd.simulate(scene, tree.joint_states([0.0, 0.0, 0.0], [1.0, 0.0, 0.0]), dt, steps, method="rk4", error=False)
+    exact = np.exp(-c * run.t / inertia)
+    bound = steps * ((dt * c / inertia) ** 5 / 120.0 + 8 * np.finfo(float).eps)
+    assert np.max(np.abs(run.joint_v[:, 0] - exact)) <= bound
+    assert run.balance.verdict["energy"] == "closed"  # the kinetic energy lost is the damper's work
+
+
+@pytest.mark.parametrize("tags, kwargs, match", [
+    (dict(slide='<dynamics damping="0.1" friction="0.3"/>'), {},
+     r"joint 'slide': friction 0\.3 \(Coulomb friction\) is not modelled; give friction='ignore'"),
+    (dict(axle='<dynamics damping="-0.1"/>'), {}, r"joint 'axle': expected a <dynamics> damping >= 0, got -0\.1"),
+    (dict(hinge='<dynamics damping="nan"/>'), {}, r"joint 'hinge': expected a <dynamics> damping >= 0, got nan"),
+    (dict(hinge='<dynamics friction="-1"/>'), dict(friction="ignore"),
+     r"joint 'hinge': expected a <dynamics> friction >= 0, got -1\.0"),
+    ({}, dict(friction="drop"), r"friction: expected 'refuse' or 'ignore', got 'drop'"),
+])
+def test_joint_damper_refusals_name_the_joint(tags, kwargs, match):
+    text = damped_chain(**tags)
+    tree = rd.load_urdf(text)
+    with pytest.raises(ValueError, match=match):
+        rd.urdf_joint_dampers(text, tree, (0, 1, 2), **kwargs)
+
+
+def test_friction_is_left_out_only_when_asked():
+    text = damped_chain(slide='<dynamics damping="0.1" friction="0.3"/>')
+    dampers = rd.urdf_joint_dampers(text, rd.load_urdf(text), (0, 1, 2), friction="ignore")
+    assert dampers == [rd.PrismaticSpringDamper(body=1, stiffness=0.0, rest_position=0.0, damping=0.1)]
+
+
+def test_joint_dampers_need_the_trees_links():
+    text = damped_chain(axle='<dynamics damping="0.04"/>')
+    tree = rd.load_urdf(text)
+    with pytest.raises(ValueError, match=r"links: expected the 3 bodies Scene.add_tree returned for the tree's links, "
+                                         r"got 2 \(\(0, 1\)\)"):
+        rd.urdf_joint_dampers(text, tree, (0, 1))
+    with pytest.raises(ValueError, match=r"joint 'axle': its child link 'rotor' is not a link of the tree "
+                                         r"\(links \['upper', 'fore'\]\)"):
+        rd.urdf_joint_dampers(text, rd.load_urdf(ARM), (0, 1))
+    with pytest.raises(TypeError, match=r"tree: expected the Tree load_urdf returned, got str"):
+        rd.urdf_joint_dampers(text, text, (0, 1, 2))
+    floating = single_link("floating", inertial=None).replace('<axis xyz="1 0 0"/>', '<dynamics damping="0.2"/>')
+    with pytest.raises(ValueError, match=r"joint 'j': expected damping only in a revolute, continuous or prismatic "
+                                         r"joint, got damping 0\.2 in a 'floating' joint"):
+        rd.urdf_joint_dampers(floating, rd.load_urdf(floating), (0,))
