@@ -65,10 +65,8 @@ TreeScene tree_scene(std::int64_t nv) {
   scene.elements.push_back(UniformGravity{kGravity, {}});
   std::vector<BodyState> initial;
   const Eigen::VectorXd q = start_q(nv);
-  for (int i = 0; i < tree->num_links(); ++i) {
-    add_body(scene, TreeLink{tree, i}, tree->link(i).name);
-    initial.push_back(JointState{q.segment(i, 1), Eigen::VectorXd::Zero(1)});
-  }
+  add_tree(scene, tree);
+  for (int i = 0; i < tree->num_links(); ++i) initial.push_back(JointState{q.segment(i, 1), Eigen::VectorXd::Zero(1)});
   return {compile_scene(scene, Method::rk4), std::move(initial)};
 }
 

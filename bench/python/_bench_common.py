@@ -1,12 +1,16 @@
 """Shared pieces of the Python benchmarks (bench/python/bench_*.py): the `--small` flag, best-of-N
-timing, the uniform "ratio ..." line (the same shape bench/bench_main.cpp prints for the C++
-benchmarks) and the import of the numpy reference from tests/reference."""
+timing, wall and CPU timings of batch runs, the uniform "ratio ..." line (the same shape bench/bench_main.cpp
+prints for the C++ benchmarks), the last states of MuJoCo rollouts and the import of the numpy reference from
+tests/reference."""
 
 import argparse
 import importlib
+import os
 import sys
 import time
 from pathlib import Path
+
+import numpy as np
 
 
 def parse_small(doc, small_help):
@@ -36,6 +40,51 @@ def per_call(fn, calls, rounds):
             fn()
         best = min(best, (time.perf_counter() - start) / calls)
     return best
+
+
+def cores():
+    """The cores this process may run on."""
+    return len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1)
+
+
+class Timing:
+    """Wall time and CPU time of this process (every thread) from construction to stop() [s]. On a machine
+    shared with other work the CPU time is the cost per core; the wall time is what a user waits."""
+
+    def __init__(self):
+        self.wall, self.cpu = time.perf_counter(), time.process_time()
+
+    def stop(self):
+        self.wall, self.cpu = time.perf_counter() - self.wall, time.process_time() - self.cpu
+        return self
+
+
+def fastest(timings):
+    """The fastest wall time and the least CPU time of several Timings (the least disturbed by other load)."""
+    best = Timing()
+    best.wall, best.cpu = min(t.wall for t in timings), min(t.cpu for t in timings)
+    return best
+
+
+def mujoco_last_states(model, initial, steps, nthread, block=250):
+    """(the last states (N, nstate) of `steps` steps of mujoco.rollout from `initial` (N, nstate), Timing of the
+    rollout calls) on nthread threads (a persistent pool), `block` samples a call, so that the states rollout records
+    (block x steps x nstate doubles) stay small."""
+    import mujoco
+    from mujoco import rollout
+
+    datas = [mujoco.MjData(model) for _ in range(nthread)]
+    last = np.empty_like(initial)
+    out = np.empty((min(block, len(initial)), steps, initial.shape[1]))
+    with rollout.Rollout(nthread=nthread) as runner:
+        clock = Timing()
+        for lo in range(0, len(initial), block):
+            chunk = initial[lo:lo + block]
+            state, _ = runner.rollout(model, datas if nthread > 1 else datas[0], chunk, nstep=steps,
+                                      state=out[:len(chunk)])
+            last[lo:lo + len(chunk)] = state[:, -1]
+        clock.stop()
+    return last, clock
 
 
 def report_ratio(case, n, t_rd, t_other, other):

@@ -37,22 +37,16 @@ import contextlib
 import io
 import os
 import sys
-import time
 
 import numpy as np
 import rigiddyn
-from _bench_common import report_ratio
+from _bench_common import Timing, cores, fastest, mujoco_last_states, report_ratio
 
 MASS = 0.1  # [kg]
 INERTIA = (2.0e-5, 6.5e-5, 8.0e-5)  # principal moments about the centre of mass [kg m^2]
 DT = 0.01  # [s]
 SEED = 20261124
 COMMAND = "PYTHONPATH=build/<dir>/python python3 bench/python/bench_batch.py"
-
-
-def cores():
-    """The cores this process may run on."""
-    return len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1)
 
 
 def load():
@@ -80,25 +74,6 @@ def tumbling_states(n, seed=SEED):
 def subset(states, count):
     """The first `count` samples of stacked states."""
     return {key: value[:count] for key, value in states.items()}
-
-
-class Timing:
-    """Wall time and CPU time of this process (every thread) from construction to stop() [s]. On a machine
-    shared with other work the CPU time is the cost per core; the wall time is what a user waits."""
-
-    def __init__(self):
-        self.wall, self.cpu = time.perf_counter(), time.process_time()
-
-    def stop(self):
-        self.wall, self.cpu = time.perf_counter() - self.wall, time.process_time() - self.cpu
-        return self
-
-
-def fastest(timings):
-    """The fastest wall time and the least CPU time of several Timings (the least disturbed by other load)."""
-    best = Timing()
-    best.wall, best.cpu = min(t.wall for t in timings), min(t.cpu for t in timings)
-    return best
 
 
 # ---- rigiddyn ----------------------------------------------------------------------------------------
@@ -145,25 +120,11 @@ class MuJoCoFreeBodies:
             self.mujoco.mj_getState(self.model, data, out[i], self.spec)
         return out
 
-    def final(self, initial, steps, nthread, block=250):
+    def final(self, initial, steps, nthread):
         """(final (w_B (N, 3) [rad/s], q_WB (N, 4) (x, y, z, w)), Timing) of mujoco.rollout from `initial`
-        (N, nstate) on nthread threads (a persistent pool), `block` samples per call so that the recorded
-        states (block x steps x nstate doubles) stay small."""
-        from mujoco import rollout
-
-        datas = [self.mujoco.MjData(self.model) for _ in range(nthread)]
-        w, q = np.empty((len(initial), 3)), np.empty((len(initial), 4))
-        out = np.empty((min(block, len(initial)), steps, self.size))
-        with rollout.Rollout(nthread=nthread) as runner:
-            clock = Timing()
-            for lo in range(0, len(initial), block):
-                chunk = initial[lo:lo + block]
-                state, _ = runner.rollout(self.model, datas if nthread > 1 else datas[0], chunk, nstep=steps,
-                                          state=out[:len(chunk)])
-                w[lo:lo + len(chunk)] = state[:, -1, 11:14]
-                q[lo:lo + len(chunk)] = np.roll(state[:, -1, 4:8], -1, axis=1)  # (w, x, y, z) -> (x, y, z, w)
-            clock.stop()
-        return (w, q), clock
+        (N, nstate) on nthread threads (mujoco_last_states)."""
+        last, clock = mujoco_last_states(self.model, initial, steps, nthread)
+        return (last[:, 11:14], np.roll(last[:, 4:8], -1, axis=1)), clock  # (w, x, y, z) -> (x, y, z, w)
 
 
 def attitude_angle(q1, q2):

@@ -114,28 +114,12 @@ int add_body(Scene& scene, py::handle body, py::handle name, py::handle mass_flo
   return static_cast<int>(rigiddyn::add_body(scene, std::move(b), given, std::move(flow)));
 }
 
-// Adds every link of `tree` (a copy, shared by its links) as a body, in link order, named "<name>.<link>" (the link's
-// own name when `name` is None); nothing is added when a name is taken. Returns their indices.
+// Adds every link of `tree` (a copy, shared by its links) as a body, in link order (rigiddyn::add_tree); returns
+// their indices.
 py::tuple add_tree(Scene& scene, py::handle tree_obj, py::handle name) {
-  const auto tree = std::make_shared<const Tree>(py_io::as_instance<Tree>(tree_obj, "tree", "a Tree"));
-  if (tree->num_links() == 0) py_io::throw_value_error("tree", "a tree with at least one link", "a tree with none");
-  if (!tree->gravity().isZero(0.0)) {
-    py_io::throw_value_error("tree.gravity", "zero in a scene (add a UniformGravity element: it loads every link)",
-                             format_value(tree->gravity().transpose().eval()));
-  }
-  const std::string prefix = name.is_none() ? std::string() : py_io::as_string(name, "name") + ".";
-  for (const Link& link : tree->links()) {
-    if (const auto other = find_body(scene, prefix + link.name)) {
-      py_io::throw_value_error("name", "names for the links that no other body of the scene has ('" + prefix + link.name +
-                                           "' is body " + std::to_string(*other) + "'s)",
-                               name.is_none() ? "None" : "'" + py::cast<std::string>(name) + "'");
-    }
-  }
-  py::tuple out(tree->num_links());
-  for (int i = 0; i < tree->num_links(); ++i) {
-    out[i] = rigiddyn::add_body(scene, TreeLink{tree, i}, prefix + tree->link(i).name);
-  }
-  return out;
+  auto tree = std::make_shared<const Tree>(py_io::as_instance<Tree>(tree_obj, "tree", "a Tree"));
+  const std::string prefix = name.is_none() ? std::string() : py_io::as_string(name, "name");
+  return py::tuple(py::cast(rigiddyn::add_tree(scene, std::move(tree), prefix)));
 }
 
 // Adds `element` after checking it against the bodies so far (its compiled term's checks, messages
@@ -903,8 +887,8 @@ void check_bdot_element(py::handle law, const Scene& scene) {
 
 // The C++ Controller of a rigiddyn.Controller (rigiddyn/control.py, which checks the law's commands) on `scene`: its
 // period, and a shipped law in C++ (shipped_law: without gyro noise) or a law that takes the GIL and calls its
-// _sample(t, p_W, q_WB, v_W, w_B, wheel_speed) -> (wheel_torque or None, [(element, value (3,) or a speed
-// [rad/s] as a float), ...]). The Python object outlives the run (the caller holds it). *shipped: whether the law
+// _sample(t, p_W, q_WB, v_W, w_B, wheel_speed, joint_q, joint_v) -> (wheel_torque or None, [(element, value (3,) or
+// a number as a float: a ReactionWheel's speed [rad/s], a joint motor's torque [N m] or force [N]), ...]). The Python object outlives the run (the caller holds it). *shipped: whether the law
 // runs in C++ (a copy of the Controller taken before a run then starts another run afresh: the law's state, a
 // B-dot's last field, is in the copy).
 Controller as_controller(py::handle controller, const Scene& scene, bool* shipped) {
@@ -925,7 +909,8 @@ Controller as_controller(py::handle controller, const Scene& scene, bool* shippe
   out.law = [sample = py::object(controller.attr("_sample"))](const SampledState& s) {
     py::gil_scoped_acquire gil;
     const py::tuple r = sample(s.t, rows(s.p_W, 3), rows(s.q_WB, 4), rows(s.v_W, 3), rows(s.w_B, 3),
-                               rows(s.wheel_speed, 1).attr("ravel")())
+                               rows(s.wheel_speed, 1).attr("ravel")(), rows(s.joint_q, 1).attr("ravel")(),
+                               rows(s.joint_v, 1).attr("ravel")())
                             .cast<py::tuple>();
     ActuatorCommands c;
     if (!r[0].is_none()) {
@@ -933,8 +918,8 @@ Controller as_controller(py::handle controller, const Scene& scene, bool* shippe
     }
     for (const py::handle item : r[1]) {
       const py::tuple command = item.cast<py::tuple>();
-      if (py::isinstance<py::float_>(command[1])) {  // a ReactionWheel's speed [rad/s]
-        c.speeds.push_back({command[0].cast<int>(), command[1].cast<double>()});
+      if (py::isinstance<py::float_>(command[1])) {  // a ReactionWheel's speed [rad/s], a joint motor's force
+        c.scalars.push_back({command[0].cast<int>(), command[1].cast<double>()});
       } else {
         c.elements.push_back({command[0].cast<int>(), py_io::as_vector3(command[1], "controller command")});
       }

@@ -65,8 +65,8 @@ Examples
 constexpr const char* tree_link_doc = R"doc(A link of a kinematic tree as a body of a scene (made by Scene.add_tree).
 
 Two are equal when they are the same link of equal trees (link by link: names, parents, joints, placements and
-inertias), so that a scene with a tree equals its copies and the scene its file reads back to. Scenes with trees do
-not pickle.
+inertias), so that a scene with a tree equals its copies and the scene its file reads back to. A link pickles as
+(its tree, its index); a scene made of unpickled links shares each tree among its links again.
 
 Force elements act on a link as on any body: at its centre of mass, in axes B parallel to its link frame L
 (points on it given from the centre of mass, in those axes); the tree's joints couple the links' motions. A run

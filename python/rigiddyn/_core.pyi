@@ -4882,7 +4882,7 @@ class PrismaticSpringDamper:
         """
 class RevoluteMotor:
     """
-    A motor in the revolute joint of the tree link `body` (a body of Scene.add_tree): the joint torque `torque` [N m] about the joint's axis on [t_start, t_end) [s] (by default all of time), none outside, on the link and the opposite on its parent (W for a root link), so that a tree's momenta are conserved; its power is torque dq/dt. A run splits its steps at t_start and t_end. Several windows: one RevoluteMotor each.
+    A motor in the revolute joint of the tree link `body` (a body of Scene.add_tree): the joint torque `torque` [N m] about the joint's axis on [t_start, t_end) [s] (by default all of time), none outside, on the link and the opposite on its parent (W for a root link), so that a tree's momenta are conserved; its power is torque dq/dt. A run splits its steps at t_start and t_end. Several windows: one RevoluteMotor each. A rigiddyn.Controller may command its torque (held until its next sample, in place of the window).
     
     Parameters
     ----------
@@ -4946,7 +4946,7 @@ class RevoluteMotor:
         """
 class PrismaticMotor:
     """
-    A motor in the prismatic joint of the tree link `body` (a body of Scene.add_tree): the joint force `force` [N] along the joint's axis on [t_start, t_end) [s] (by default all of time), none outside, on the link and the opposite on its parent (W for a root link), both through the joint's origin, so that a tree's momenta are conserved; its power is force dq/dt. A run splits its steps at t_start and t_end. Several windows: one PrismaticMotor each.
+    A motor in the prismatic joint of the tree link `body` (a body of Scene.add_tree): the joint force `force` [N] along the joint's axis on [t_start, t_end) [s] (by default all of time), none outside, on the link and the opposite on its parent (W for a root link), both through the joint's origin, so that a tree's momenta are conserved; its power is force dq/dt. A run splits its steps at t_start and t_end. Several windows: one PrismaticMotor each. A rigiddyn.Controller may command its force (held until its next sample, in place of the window).
     
     Parameters
     ----------
@@ -8046,8 +8046,8 @@ class TreeLink:
     A link of a kinematic tree as a body of a scene (made by Scene.add_tree).
     
     Two are equal when they are the same link of equal trees (link by link: names, parents, joints, placements and
-    inertias), so that a scene with a tree equals its copies and the scene its file reads back to. Scenes with trees do
-    not pickle.
+    inertias), so that a scene with a tree equals its copies and the scene its file reads back to. A link pickles as
+    (its tree, its index); a scene made of unpickled links shares each tree among its links again.
     
     Force elements act on a link as on any body: at its centre of mass, in axes B parallel to its link frame L
     (points on it given from the centre of mass, in those axes); the tree's joints couple the links' motions. A run

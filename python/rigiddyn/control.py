@@ -23,10 +23,14 @@ element index ``e`` (int): float
     A ReactionWheel's speed Omega_c [rad/s] relative to its body (a rate-limited speed loop): the wheel ramps at a
     constant rate from its speed at the sample t_k to Omega_c at the next sample t_k + period, then holds it
     (replacing its own ramp); over the ramp the body feels -J dOmega/dt a - w_B x h_B.
+    A RevoluteMotor's joint torque [N m] or a PrismaticMotor's joint force [N] in a tree's joint, held until the
+    next command (replacing its own window). The law reads the trees' joints in ``state.joint_q`` and
+    ``state.joint_v``: a joint-space law (a PD loop on a robot arm's joints, a hinge's deployment) is a law on them.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
@@ -57,6 +61,11 @@ class SampledState:
         Angular velocities in B [rad/s] (with the controller's gyro noise when it has some).
     wheel_speed : numpy.ndarray, shape (nw,)
         Each gyrostat wheel's speed relative to its body [rad/s], in the scene's order.
+    joint_q : numpy.ndarray, shape (nq,), optional
+        The trees' joint coordinates, the trees in the scene's order (SceneResult.joint_q's columns; empty without a
+        tree, the default).
+    joint_v : numpy.ndarray, shape (nv,), optional
+        Their joint velocities (SceneResult.joint_v's columns).
 
     Raises
     ------
@@ -79,6 +88,8 @@ class SampledState:
     v_W: np.ndarray
     w_B: np.ndarray
     wheel_speed: np.ndarray
+    joint_q: np.ndarray = dataclasses.field(default_factory=lambda: np.zeros(0))
+    joint_v: np.ndarray = dataclasses.field(default_factory=lambda: np.zeros(0))
 
     def __post_init__(self) -> None:
         # the types and shapes (the values are the run's: non-finite once a run diverges, so not refused)
@@ -91,10 +102,11 @@ class SampledState:
             if a.shape[0] != bodies:
                 raise ValueError(f"{name}: expected {bodies} rows (one per body, as p_W), got {a.shape[0]}")
             object.__setattr__(self, name, a)
-        wheel_speed = _real_array(self.wheel_speed, "wheel_speed", "an array of shape (nw,) [rad/s]")
-        if wheel_speed.ndim != 1:
-            raise ValueError(f"wheel_speed: expected an array of shape (nw,) [rad/s], got shape {wheel_speed.shape}")
-        object.__setattr__(self, "wheel_speed", wheel_speed)
+        for name, what in (("wheel_speed", "(nw,) [rad/s]"), ("joint_q", "(nq,)"), ("joint_v", "(nv,)")):
+            a = _real_array(getattr(self, name), name, f"an array of shape {what}")
+            if a.ndim != 1:
+                raise ValueError(f"{name}: expected an array of shape {what}, got shape {a.shape}")
+            object.__setattr__(self, name, a)
 
 
 def _real(value: Any, name: str, what: str) -> float:
@@ -145,7 +157,8 @@ class Controller:
         ``"wheel_torque"`` (nw,) [N m] for the gyrostat wheels, an element index -> (3,) for a MagneticDipole
         (m_B [A m^2] in B) or a ScheduledLoads (force f_B [N] in B at its point_B), and an element index -> a float
         for a ReactionWheel (its speed [rad/s] relative to the body, reached at the next sample at a constant
-        rate). An actuator not named holds its last command.
+        rate), a RevoluteMotor (its joint torque [N m]) or a PrismaticMotor (its joint force [N]). An actuator not
+        named holds its last command.
     w_B_noise : float, keyword-only, default 0.0
         Standard deviation [rad/s] of a white gyro noise added to each sampled w_B component (>= 0).
     seed : int, keyword-only, optional
@@ -158,9 +171,9 @@ class Controller:
     ------
     ValueError
         period not finite and > 0; w_B_noise negative or not finite. At a sample (raised by simulate): a command
-        of the wrong shape or not finite, an unknown key, an element that takes no such command (a speed to an
-        element that is no ReactionWheel, a (3,) value to one: named with its type), each named with the sample
-        time.
+        of the wrong shape or not finite, an unknown key, an element that takes no such command (a number to an
+        element that is no ReactionWheel or joint motor, a (3,) value to one: named with its type), each named with
+        the sample time.
     TypeError
         law not callable; a law that returns no dict.
 
@@ -199,6 +212,21 @@ class Controller:
     ...                      controller=rd.Controller(0.5, lambda state: {0: 2.0}))
     >>> result.w_B[-1, 0].round(12).tolist()
     [0.0, 0.0, -0.2]
+
+    A PD loop on a hinge's angle (a wheel of I = 0.5 kg m² on a RevoluteMotor, sampled at 100 Hz) takes it from 0
+    to 1 rad; the closed loop, ω_n = sqrt(k_p / I) = 4 rad/s at damping ratio k_d / (2 I ω_n) = 1, has settled by
+    t = 3 s:
+
+    >>> tree = rd.Tree()
+    >>> hub = tree.add_link("hub", -1, rd.RevoluteJoint([0.0, 0.0, 1.0]), rd.SpatialInertia(2.0, [0.0, 0.0, 0.0], 0.5 * np.eye(3)))
+    >>> scene = rd.Scene()
+    >>> links = scene.add_tree(tree, "drive")
+    >>> motor = scene.add(rd.RevoluteMotor(body=links[0], torque=0.0))
+    >>> pd = lambda state: {motor: 8.0 * (1.0 - state.joint_q[0]) - 4.0 * state.joint_v[0]}
+    >>> result = rd.simulate(scene, tree.joint_states([0.0]), 0.01, duration=3.0, method="rk4",
+    ...                      controller=rd.Controller(0.01, pd))
+    >>> round(float(result.joint_q[-1, 0]), 3)
+    1.0
     """
 
     def __init__(self, period: float, law: Callable[[SampledState], Mapping[Any, Any]], *, w_B_noise: float = 0.0,
@@ -222,13 +250,13 @@ class Controller:
         return f"Controller(period={self.period!r}, law={self.law!r}, w_B_noise={self.w_B_noise!r})"
 
     def _sample(self, t: float, p_W: np.ndarray, q_WB: np.ndarray, v_W: np.ndarray, w_B: np.ndarray,
-                wheel_speed: np.ndarray) -> tuple[list[float] | None,
-                                                  list[tuple[int, tuple[float, float, float] | float]]]:
+                wheel_speed: np.ndarray, joint_q: np.ndarray, joint_v: np.ndarray
+                ) -> tuple[list[float] | None, list[tuple[int, tuple[float, float, float] | float]]]:
         """The core's call at a sample: the law's commands at t [s], checked, as (wheel torques or None,
-        [(element, value (3,) or a wheel speed [rad/s]), ...])."""
+        [(element, value (3,) or a number: a wheel speed [rad/s], a joint motor's force), ...])."""
         if self.w_B_noise > 0.0:
             w_B = w_B + self._rng.normal(0.0, self.w_B_noise, w_B.shape)
-        state = SampledState(t, p_W, q_WB, v_W, w_B, wheel_speed)  # read-only views
+        state = SampledState(t, p_W, q_WB, v_W, w_B, wheel_speed, joint_q, joint_v)  # read-only views
         at = f"controller.law(t={t:.17g})"  # as the core names a sample (17 significant digits)
         try:
             commands = self.law(state)
@@ -257,7 +285,8 @@ def _command(value: Any, shape: tuple[int, ...] | None, name: str, unit: str) ->
     a = np.asarray(value, dtype=float)
     if shape is None and a.shape not in ((3,), ()):
         raise ValueError(f"{name}: expected shape (3,) (a MagneticDipole's m_B, a ScheduledLoads' f_B) or a number "
-                         f"(a ReactionWheel's speed [rad/s]), got shape {a.shape}")
+                         f"(a ReactionWheel's speed [rad/s], a joint motor's torque [N m] or force [N]), got shape "
+                         f"{a.shape}")
     if shape is not None and a.shape != shape:
         raise ValueError(f"{name}: expected shape {shape}{' ' + unit if unit else ''}, got shape {a.shape}")
     if not np.isfinite(a).all():

@@ -1,7 +1,7 @@
 // A Controller of a scene run (scene/controller.hpp) and its shipped laws (scene/control_laws.hpp): the law sees
 // t0 + k period exactly; a held thrust is integrated as exactly as the piecewise-constant load it is (no step
 // straddles a sample); held wheel torques spin a gyrostat as the closed form says; a commanded ReactionWheel speed
-// is reached by its ramp; bad inputs are named.
+// is reached by its ramp; commanded joint torques are held as motor windows; bad inputs are named.
 #include <gtest/gtest.h>
 
 #include "invalid_argument_message.hpp"
@@ -147,11 +147,69 @@ TEST(Controller, CommandedWheelSpeedIsReachedAtTheNextSample) {
              Controller{0.1, [speed](const SampledState&) { return ActuatorCommands{{}, {}, {{0, speed}}}; }});
   };
   EXPECT_NE(message_of([&] { run(thruster_scene(), 1.0); })
-                .find("controller.law(t=0)[0]: expected a ReactionWheel (the element that takes a speed command "
-                      "[rad/s]), got element 0 (a ScheduledLoads)"),
+                .find("controller.law(t=0)[0]: expected a ReactionWheel (a speed [rad/s]), a RevoluteMotor (a torque "
+                      "[N m]) or a PrismaticMotor (a force [N]), the elements that take a number, got element 0 (a "
+                      "ScheduledLoads)"),
             std::string::npos);
-  EXPECT_NE(message_of([&] { run(scene, NAN); }).find("controller.law(t=0)[0]: expected a finite wheel speed [rad/s]"),
+  EXPECT_NE(message_of([&] { run(scene, NAN); }).find("controller.law(t=0)[0]: expected a finite number"),
             std::string::npos);
+}
+
+// A double pendulum of rods (1 m, centre of mass at the middle) hinged about y, under gravity (element 0), with the
+// joint motors `motors` after it.
+Scene motored_pendulum(const std::vector<RevoluteMotor>& motors) {
+  const auto rod = [](double mass) {
+    return SpatialInertia(mass, Eigen::Vector3d(0.5, 0.0, 0.0), Eigen::Vector3d(1e-3, mass / 12, mass / 12).asDiagonal());
+  };
+  auto tree = std::make_shared<Tree>();
+  tree->add_link("upper", -1, RevoluteJoint(Eigen::Vector3d::UnitY()), rod(2.0));
+  tree->add_link("lower", 0, RevoluteJoint(Eigen::Vector3d::UnitY()), rod(1.0),
+                 Transform(Eigen::Matrix3d::Identity(), Eigen::Vector3d(1.0, 0.0, 0.0)));
+  Scene scene;
+  add_tree(scene, tree);
+  scene.elements.push_back(UniformGravity{Eigen::Vector3d(0.0, 0.0, -9.81), {}});
+  for (const RevoluteMotor& motor : motors) scene.elements.push_back(motor);
+  return scene;
+}
+
+// A PD law on the joints (τ_k = −k_p q − k_d v at each sample, from the sampled joint_q and joint_v) commanding a
+// RevoluteMotor in each is the run of the same torques as motor windows [t_k, t_k+1): the same switch times, the same
+// wrenches in the same order, so the same arithmetic, bit for bit; the law sees the run's joint state at t_k.
+TEST(Controller, CommandedJointTorquesAreHeldAsMotorWindows) {
+  RevoluteMotor upper, lower;
+  upper.body = 0, lower.body = 1;
+  const double period = 0.05;
+  const std::vector<BodyState> initial{JointState{Eigen::VectorXd::Constant(1, 0.4), Eigen::VectorXd::Zero(1)},
+                                       JointState{Eigen::VectorXd::Constant(1, -0.3), Eigen::VectorXd::Constant(1, 1.0)}};
+  std::vector<RevoluteMotor> windows;
+  const Controller pd{period, [&](const SampledState& s) {
+                        EXPECT_EQ(s.joint_q.size(), 2u);
+                        ActuatorCommands c;
+                        for (int j = 0; j < 2; ++j) {
+                          const double tau = -20.0 * s.joint_q[j] - 3.0 * s.joint_v[j];
+                          c.scalars.push_back({1 + j, tau});
+                          RevoluteMotor window;
+                          const double k = std::round(s.t / period);  // t_k = k period, as the run computes it
+                          window.body = j, window.torque = tau, window.t_start = k * period, window.t_end = (k + 1) * period;
+                          windows.push_back(window);
+                        }
+                        return c;
+                      }};
+  const SimulationOptions o = rk4(0.02, 50);  // samples every 2.5 steps: the steps are split at them
+  const SceneSimulation controlled = simulate(compile_scene(motored_pendulum({upper, lower}), Method::rk4), initial, o, pd);
+  ASSERT_EQ(windows.size(), 2u * 20u);
+  const SceneSimulation windowed = simulate(compile_scene(motored_pendulum(windows), Method::rk4), initial, o);
+  EXPECT_EQ(controlled.joint_q, windowed.joint_q);
+  EXPECT_EQ(controlled.joint_v, windowed.joint_v);
+  SampledState seen;
+  simulate(compile_scene(motored_pendulum({upper}), Method::rk4), initial, rk4(0.02, 10),
+           Controller{0.1, [&](const SampledState& s) {
+                        if (s.t > 0.0) seen = s;
+                        return ActuatorCommands{};
+                      }});
+  const SceneSimulation free = simulate(compile_scene(motored_pendulum({upper}), Method::rk4), initial, rk4(0.02, 10));
+  EXPECT_EQ(seen.joint_q, std::vector<double>(free.joint_q.begin() + 2 * 5, free.joint_q.begin() + 2 * 6));  // t = 0.1 s
+  EXPECT_EQ(seen.joint_v, std::vector<double>(free.joint_v.begin() + 2 * 5, free.joint_v.begin() + 2 * 6));
 }
 
 // The PD law's error is the rotation vector to first order, 2 sin(angle/2) about the axis, and its wheel torques

@@ -31,13 +31,11 @@ SimulationOptions with(Method method, double dt, std::int64_t steps) {
   return o;
 }
 
-// Appends every link of `tree` to `scene` (named by their links) with the joint states (q_i, v_i) of (q, v).
+// Appends every link of `tree` to `scene` (rigiddyn::add_tree) and their joint states (q_i, v_i) of (q, v) to `states`.
 void add_tree(Scene& scene, const Tree& tree, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
               std::vector<BodyState>& states) {
-  const auto shared = std::make_shared<const Tree>(tree);
-  for (int i = 0; i < tree.num_links(); ++i) {
-    const Link& link = tree.link(i);
-    add_body(scene, TreeLink{shared, i}, link.name);
+  rigiddyn::add_tree(scene, std::make_shared<const Tree>(tree));
+  for (const Link& link : tree.links()) {
     states.push_back(JointState{q.segment(link.idx_q, link.nq), v.segment(link.idx_v, link.nv)});
   }
 }
@@ -263,10 +261,32 @@ TEST(TreeScene, RefusesLinksOutOfOrderAndTheTreesOwnGravity) {
             "bodies[1]: expected link 1 ('lower') of the tree whose link 0 is bodies[0] 'upper' (a tree's links are "
             "consecutive bodies, in order), got a particle");
 
+  // a tree with gravity of its own: refused by add_tree, and by compile when its links were added one by one
+  const auto heavy_tree = std::make_shared<const Tree>(double_pendulum(Eigen::Vector3d(0.0, 0.0, -9.81)));
   Scene heavy;
-  std::vector<BodyState> states;
-  add_tree(heavy, double_pendulum(Eigen::Vector3d(0.0, 0.0, -9.81)), Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(), states);
+  EXPECT_NE(message_of([&] { rigiddyn::add_tree(heavy, heavy_tree, "pendulum"); })
+                .find("tree.gravity: expected zero in a scene (add a UniformGravity element: it loads every link)"),
+            std::string::npos);
+  EXPECT_TRUE(heavy.bodies.empty());
+  add_body(heavy, TreeLink{heavy_tree, 0}, "upper");
+  add_body(heavy, TreeLink{heavy_tree, 1}, "lower");
   EXPECT_NE(message_of([&] { compile_scene(heavy, Method::rk4); }).find("the tree's gravity: expected zero in a scene"),
+            std::string::npos);
+}
+
+// add_tree names the links "<name>.<link>" and adds nothing when one of those names is taken.
+TEST(TreeScene, AddTreeNamesItsLinksAndRefusesATakenName) {
+  const auto tree = std::make_shared<const Tree>(double_pendulum());
+  Scene scene;
+  add_body(scene, Particle(1.0), "arm.lower");
+  EXPECT_EQ(message_of([&] { rigiddyn::add_tree(scene, tree, "arm"); }),
+            "name: expected names for the links that no other body of the scene has ('arm.lower' is body 0's), got \"arm\"");
+  EXPECT_EQ(scene.bodies.size(), 1u);
+  EXPECT_EQ(rigiddyn::add_tree(scene, tree, "pendulum"), (std::vector<std::size_t>{1, 2}));
+  EXPECT_EQ(rigiddyn::add_tree(scene, tree), (std::vector<std::size_t>{3, 4}));
+  EXPECT_EQ(scene.body_names, (std::vector<std::string>{"arm.lower", "pendulum.upper", "pendulum.lower", "upper", "lower"}));
+  EXPECT_NE(message_of([&] { rigiddyn::add_tree(scene, std::make_shared<const Tree>()); })
+                .find("tree: expected a tree with at least one link, got a tree with none"),
             std::string::npos);
 }
 

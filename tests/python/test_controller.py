@@ -5,7 +5,9 @@ The samples are switch times of the run loop: the law sees t = t0 + k period exa
 controlled run, and the hold equals the equivalent ScheduledLoads schedule bit for bit. The shipped laws against
 closed forms: B-dot's rate decay exp(-k |B|^2 t / I) on a sphere in a uniform field; the PD pointing loop's small
 error against the exact sampled-data (zero-order hold) solution of A theta'' = tau_k and the continuous
-A theta'' + k_d theta' + k_p theta = 0. Bad inputs are named.
+A theta'' + k_d theta' + k_p theta = 0. Joint motors of trees commanded from the sampled joint states: the held
+forces equal motor windows bit for bit, and a hinge's PD loop is the exact sampled-data recursion. Bad inputs are
+named.
 """
 
 from __future__ import annotations
@@ -441,11 +443,12 @@ def test_a_commanded_wheel_speed_turns_the_body_by_minus_j_delta_omega_over_i():
     assert np.abs(r.w_B[:, 0, 2] - want).max() <= 4 * EPS * 23 * w_max
 
 
-def test_a_speed_command_is_refused_by_an_element_that_is_no_reaction_wheel():
+def test_a_number_is_refused_by_an_element_that_takes_none():
     """A number commanded to a ScheduledLoads names the element and its type; a (3,) value to a ReactionWheel
     names it too; a non-finite speed names the sample time."""
-    with pytest.raises(ValueError, match=r"controller\.law\(t=0\)\[0\]: expected a ReactionWheel .*, got element 0 "
-                                         r"\(a ScheduledLoads\)"):
+    with pytest.raises(ValueError, match=r"controller\.law\(t=0\)\[0\]: expected a ReactionWheel \(a speed \[rad/s\]\), "
+                                         r"a RevoluteMotor \(a torque \[N m\]\) or a PrismaticMotor \(a force \[N\]\), "
+                                         r"the elements that take a number, got element 0 \(a ScheduledLoads\)"):
         rd.simulate(thruster_scene(), [rd.RigidBodyState()], 0.1, steps=3,
                     controller=rd.Controller(0.1, lambda state: {0: 1.0}))
     with pytest.raises(ValueError, match=r"controller\.law\(t=0\)\[0\]: expected a MagneticDipole or a "
@@ -459,6 +462,89 @@ def test_a_speed_command_is_refused_by_an_element_that_is_no_reaction_wheel():
     with pytest.raises(ValueError, match=r"controller\.law\(t=0\)\[0\]: expected shape \(3,\) .* or a number"):
         rd.simulate(wheel_scene(), [rd.RigidBodyState()], 0.1, steps=3,
                     controller=rd.Controller(0.1, lambda state: {0: (1.0, 2.0)}))
+
+
+# ---------------------------------------------------------------- joint motors of trees
+def telescope(motors):
+    """An arm hinged about z at the world's origin with a slider along it (a RevoluteJoint, then a PrismaticJoint
+    along x), no gravity, and the joint motors `motors` ((kind, body, value, t_start, t_end) tuples) in its joints."""
+    tree = rd.Tree()
+    tree.add_link("arm", -1, rd.RevoluteJoint([0.0, 0.0, 1.0]), rd.SpatialInertia(2.0, [0.5, 0.0, 0.0],
+                                                                                   np.diag([0.01, 0.2, 0.2])))
+    tree.add_link("slider", 0, rd.PrismaticJoint([1.0, 0.0, 0.0]), rd.SpatialInertia(1.0, [0.0, 0.0, 0.0],
+                                                                                     np.diag([0.01, 0.01, 0.01])),
+                  rd.Transform(translation=[0.5, 0.0, 0.0]))
+    scene = rd.Scene()
+    scene.add_tree(tree, "arm")
+    for kind, body, value, t_start, t_end in motors:
+        scene.add(rd.RevoluteMotor(body=body, torque=value, t_start=t_start, t_end=t_end) if kind == "revolute" else
+                  rd.PrismaticMotor(body=body, force=value, t_start=t_start, t_end=t_end))
+    return tree, scene
+
+
+def test_commanded_joint_forces_are_held_as_motor_windows_bit_for_bit():
+    """A PD law on the joints (from state.joint_q and state.joint_v) commanding the hinge's RevoluteMotor and the
+    slider's PrismaticMotor is the run of the same forces as motor windows [t_k, t_k+1): same switch times, same
+    wrenches in the same order, the same arithmetic. The period is off the step grid (the steps are split)."""
+    period, dt, steps = 0.05, 0.02, 60
+    tree, commanded = telescope([("revolute", 0, 0.0, -math.inf, math.inf), ("prismatic", 1, 0.0, -math.inf, math.inf)])
+    initial = tree.joint_states([0.5, 0.2], [0.0, -0.3])
+    windows = []
+
+    def law(state):
+        k = round(state.t / period)
+        tau = -8.0 * (state.joint_q - [1.0, 0.0]) - 2.0 * state.joint_v
+        windows.extend([("revolute", 0, tau[0], k * period, (k + 1) * period),
+                        ("prismatic", 1, tau[1], k * period, (k + 1) * period)])
+        return {0: tau[0], 1: tau[1]}
+
+    a = rd.simulate(commanded, initial, dt, steps, method="rk4", controller=rd.Controller(period, law), error=False)
+    _, windowed = telescope(windows)
+    b = rd.simulate(windowed, initial, dt, steps, method="rk4", error=False)
+    for name in ("joint_q", "joint_v", "p_W", "q_WB"):
+        np.testing.assert_array_equal(getattr(a, name), getattr(b, name), err_msg=name)
+    assert abs(a.joint_q[-1, 0] - 1.0) < abs(a.joint_q[0, 0] - 1.0)  # the loop pulls the hinge towards 1 rad
+
+
+def test_a_joint_pd_loop_follows_the_sampled_data_recursion():
+    """A wheel (I = 0.5 kg m² about its hinge) under τ_k = k_p (θ_ref − θ_k) − k_d ω_k held over each period T:
+    between samples θ is a quadratic in t, which rk4 integrates exactly, so the run is the exact sampled-data
+    recursion θ_k+1 = θ_k + T ω_k + T² τ_k / (2 I), ω_k+1 = ω_k + T τ_k / I to round-off (a few eps |θ| per step,
+    over the 300 steps). The law sees the run's joint state at each sample."""
+    tree = rd.Tree()
+    tree.add_link("wheel", -1, rd.RevoluteJoint([0.0, 0.0, 1.0]), rd.SpatialInertia(2.0, [0.0, 0.0, 0.0],
+                                                                                     0.5 * np.eye(3)))
+    scene = rd.Scene()
+    scene.add(rd.RevoluteMotor(body=scene.add_tree(tree)[0], torque=0.0))
+    I, T, k_p, k_d, ref = 0.5, 0.02, 8.0, 4.0, 1.0
+    seen = []
+
+    def law(state):
+        seen.append((state.t, state.joint_q[0], state.joint_v[0]))
+        return {0: k_p * (ref - state.joint_q[0]) - k_d * state.joint_v[0]}
+
+    run = rd.simulate(scene, tree.joint_states([0.0]), 0.01, 300, method="rk4", controller=rd.Controller(T, law),
+                      error=False)
+    theta, omega = 0.0, 0.0
+    for k, (t, theta_seen, omega_seen) in enumerate(seen):
+        assert t == k * T and theta_seen == run.joint_q[2 * k, 0] and omega_seen == run.joint_v[2 * k, 0]
+        assert abs(theta_seen - theta) <= 8 * EPS * (2 * k + 1) and abs(omega_seen - omega) <= 8 * EPS * (2 * k + 1)
+        tau = k_p * (ref - theta) - k_d * omega
+        theta, omega = theta + T * omega + T * T * tau / (2 * I), omega + T * tau / I
+    assert abs(run.joint_q[-1, 0] - ref) < 1e-3  # settled (critically damped at 4 rad/s, 3 s)
+
+
+def test_monte_carlo_of_a_tree_under_a_joint_law():
+    """Dispersed joint states under a joint-space law: each sample is simulate of its drawn joint state, bit for bit."""
+    tree, scene = telescope([("revolute", 0, 0.0, -math.inf, math.inf)])
+    law = lambda state: {0: -5.0 * state.joint_q[0] - 1.0 * state.joint_v[0]}  # noqa: E731
+    nominal = tree.joint_states([0.3, 0.1])
+    run = rd.monte_carlo(scene, nominal, 3, seed=7, dt=0.02, steps=25, error=False,
+                         dispersions={"arm.arm.q": rd.dispersion.Normal(std=0.1)}, controller=rd.Controller(0.05, law))
+    for i in range(3):
+        states = [rd.JointState(run.inputs["arm.arm.q"][i], [0.0]), nominal[1]]
+        one = rd.simulate(scene, states, 0.02, 25, error=False, controller=rd.Controller(0.05, law))
+        np.testing.assert_array_equal(run.values("joint_q")[i], one.joint_q)
 
 
 # ---------------------------------------------------------------- the [controller] table of scene files

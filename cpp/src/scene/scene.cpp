@@ -1,5 +1,7 @@
 #include "rigiddyn/scene/scene.hpp"
 
+#include "rigiddyn/check.hpp"
+
 #include <stdexcept>
 #include <utility>
 
@@ -50,6 +52,24 @@ std::size_t add_body(Scene& scene, Body body, const std::string& name, std::opti
     scene.mass_flows.push_back(std::move(flow));
   }
   return index;
+}
+
+std::vector<std::size_t> add_tree(Scene& scene, std::shared_ptr<const Tree> tree, const std::string& name) {
+  if (tree->num_links() == 0) throw_invalid("tree", "a tree with at least one link", std::string("a tree with none"));
+  if (!tree->gravity().isZero(0.0)) {
+    throw_invalid("tree.gravity", "zero in a scene (add a UniformGravity element: it loads every link)",
+                  tree->gravity().transpose().eval());
+  }
+  const std::string prefix = name.empty() ? std::string() : name + ".";
+  for (const Link& link : tree->links()) {
+    if (const auto other = find_body(scene, prefix + link.name)) {
+      throw std::invalid_argument("name: expected names for the links that no other body of the scene has ('" + prefix +
+                                  link.name + "' is body " + std::to_string(*other) + "'s), got \"" + name + "\"");
+    }
+  }
+  std::vector<std::size_t> indices;
+  for (int i = 0; i < tree->num_links(); ++i) indices.push_back(add_body(scene, TreeLink{tree, i}, prefix + tree->link(i).name));
+  return indices;
 }
 
 }  // namespace rigiddyn

@@ -6,7 +6,9 @@
 //   ScheduledLoads     the force f_B [N] in B at its point_B (a thruster, scene/elements/scheduled_loads.hpp);
 //   ReactionWheel      the speed Ω_c [rad/s] relative to the body (scene/elements/reaction_wheel.hpp): a
 //                      rate-limited speed loop, the wheel ramping at a constant rate from its speed at t_k to Ω_c
-//                      at t_k + period (ḣ = J (Ω_c − Ω(t_k))/period over the period), then holding Ω_c.
+//                      at t_k + period (ḣ = J (Ω_c − Ω(t_k))/period over the period), then holding Ω_c;
+//   RevoluteMotor,     the joint torque τ [N m] or force [N] in a tree's joint (scene/elements/joint_motor.hpp),
+//   PrismaticMotor     held until the next command.
 // The sample times are switch times of the run loop (simulate/run_loop.hpp): a step that contains one is split
 // there, so that no step straddles a sample and every method keeps its order (the inputs are constant over each
 // sub-step, as between the switch times of a ScheduledLoads). A commanded actuator takes its command instead of
@@ -33,11 +35,12 @@
 namespace rigiddyn {
 
 // The state a law sees at a sample: t [s] and, for every body in the layout of SceneSimulation's records,
-// row-major: p_W (nb, 3) [m], q_WB (nb, 4) (x, y, z, w), v_W (nb, 3) [m/s], w_B (nb, 3) [rad/s] in B, and each
-// gyrostat wheel's speed relative to its body (nw,) [rad/s].
+// row-major: p_W (nb, 3) [m], q_WB (nb, 4) (x, y, z, w), v_W (nb, 3) [m/s], w_B (nb, 3) [rad/s] in B, each
+// gyrostat wheel's speed relative to its body (nw,) [rad/s], and the trees' joint coordinates (nq,) and
+// velocities (nv,) (SceneSimulation::joint_q, joint_v).
 struct SampledState {
   double t = 0.0;
-  std::vector<double> p_W, q_WB, v_W, w_B, wheel_speed;
+  std::vector<double> p_W, q_WB, v_W, w_B, wheel_speed, joint_q, joint_v;
 };
 
 // A command to the element of index `element`: a MagneticDipole's m_B [A m²] in B, or a ScheduledLoads' force
@@ -47,20 +50,21 @@ struct ElementCommand {
   Eigen::Vector3d value = Eigen::Vector3d::Zero();
 };
 
-// A speed command to the ReactionWheel of index `element`: its speed Ω_c [rad/s] relative to the body, reached at
-// the next sample.
-struct SpeedCommand {
+// A number commanded to the element of index `element`: a ReactionWheel's speed Ω_c [rad/s] relative to the body,
+// reached at the next sample; a RevoluteMotor's torque [N m] or a PrismaticMotor's force [N], held.
+struct ScalarCommand {
   int element = 0;
-  double speed = 0.0;
+  double value = 0.0;
 };
 
 // What a law returns: the motor torques [N m] of every gyrostat wheel in the scene's order (the order of
 // SceneSimulation::wheel_speed; empty: held), the commanded elements (the others hold their last command) and the
-// commanded ReactionWheel speeds (the others keep their last ramp's end speed, or their own ramp).
+// commanded numbers (ReactionWheel speeds: the others keep their last ramp's end speed, or their own ramp; joint
+// motors' forces: the others keep their last command, or their own window).
 struct ActuatorCommands {
   std::vector<double> wheel_torque;
   std::vector<ElementCommand> elements;
-  std::vector<SpeedCommand> speeds;
+  std::vector<ScalarCommand> scalars;
 };
 
 using ControlLaw = std::function<ActuatorCommands(const SampledState&)>;
@@ -101,7 +105,7 @@ class ControlRun final : public RunHooks {
   void follow(const Eigen::VectorXd& y) override { y_ = &y; }
 
   // The piece that starts at t [s]: the model's own pieces (set_time), a sample when t is the next sample time
-  // (a wheel's speed command starts its ramp there), then the commands held.
+  // (a wheel's speed command starts its ramp there, a joint motor takes its force), then the commands held.
   void piece(SceneModel& model, double t) override {
     model.set_time(t);
     const double t_k = t0_ + static_cast<double>(k_) * controller_.period;
@@ -109,13 +113,19 @@ class ControlRun final : public RunHooks {
       ++k_;
       scratch_ = SceneSimulation{};
       model.record(*y_, t_k, scratch_);
-      SampledState s{t_k, std::move(scratch_.p_W), std::move(scratch_.q_WB), std::move(scratch_.v_W),
-                     std::move(scratch_.w_B), std::move(scratch_.wheel_speed)};
+      SampledState s{t_k,
+                     std::move(scratch_.p_W),
+                     std::move(scratch_.q_WB),
+                     std::move(scratch_.v_W),
+                     std::move(scratch_.w_B),
+                     std::move(scratch_.wheel_speed),
+                     std::move(scratch_.joint_q),
+                     std::move(scratch_.joint_v)};
       const ActuatorCommands c = controller_.law(s);
       hold(c, t_k, [&](std::size_t e) { return model.takes_command(e); });
-      for (const SpeedCommand& command : checked_speeds(c, t_k, [&](std::size_t e) { return model.takes_speed(e); })) {
+      for (const ScalarCommand& command : checked_scalars(c, t_k, [&](std::size_t e) { return model.takes_scalar(e); })) {
         const double t_next = t0_ + static_cast<double>(k_) * controller_.period;  // the next sample's time
-        model.command_speed(static_cast<std::size_t>(command.element), command.speed, t_k, t_next, t);
+        model.command_scalar(static_cast<std::size_t>(command.element), command.value, t_k, t_next, t);
       }
     }
     if (!wheel_torque_.empty()) model.command_wheel_torques(wheel_torque_);
@@ -159,19 +169,20 @@ class ControlRun final : public RunHooks {
     }
   }
 
-  // The speed commands returned at t_k, checked: each to a ReactionWheel (takes_speed), finite.
-  template <class TakesSpeed>
-  const std::vector<SpeedCommand>& checked_speeds(const ActuatorCommands& c, double t_k, const TakesSpeed& takes_speed) {
-    for (const SpeedCommand& command : c.speeds) {
+  // The numbers commanded at t_k, checked: each to a ReactionWheel or a joint motor (takes_scalar), finite.
+  template <class TakesScalar>
+  const std::vector<ScalarCommand>& checked_scalars(const ActuatorCommands& c, double t_k, const TakesScalar& takes_scalar) {
+    for (const ScalarCommand& command : c.scalars) {
       const std::string name = "controller.law(t=" + format_value(t_k) + ")[" + std::to_string(command.element) + "]";
       check_element_index(command.element, name);
-      if (!takes_speed(static_cast<std::size_t>(command.element))) {
-        throw std::invalid_argument(name + ": expected a ReactionWheel (the element that takes a speed command "
-                                           "[rad/s]), got element " + element_named(command.element));
+      if (!takes_scalar(static_cast<std::size_t>(command.element))) {
+        throw std::invalid_argument(name + ": expected a ReactionWheel (a speed [rad/s]), a RevoluteMotor (a torque "
+                                           "[N m]) or a PrismaticMotor (a force [N]), the elements that take a number, "
+                                           "got element " + element_named(command.element));
       }
-      if (!std::isfinite(command.speed)) throw_invalid(name, "a finite wheel speed [rad/s]", command.speed);
+      if (!std::isfinite(command.value)) throw_invalid(name, "a finite number", command.value);
     }
-    return c.speeds;
+    return c.scalars;
   }
 
   // "3 (a MagneticDipole)"

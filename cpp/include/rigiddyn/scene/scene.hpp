@@ -9,6 +9,7 @@
 #include "rigiddyn/scene/scene_frame.hpp"
 
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -66,6 +67,12 @@ struct Scene {
 // other body of the scene has ..." when another body has that name.
 std::size_t add_body(Scene& scene, Body body, const std::string& name = "",
                      std::optional<MassFlow> flow = std::nullopt);
+
+// Appends every link of `tree` as a body (a TreeLink, the links sharing the tree), in link order, named
+// "<name>.<link's name>" (the link's own name when `name` is empty), and returns their indices. Nothing is added
+// when it throws std::invalid_argument naming "tree" (a tree without links), "tree.gravity" (not zero: a scene's
+// gravity is its UniformGravity element, which loads every link) or "name" (a link's name another body has).
+std::vector<std::size_t> add_tree(Scene& scene, std::shared_ptr<const Tree> tree, const std::string& name = "");
 
 // The index of the body named `name` (body_name), or nullopt; O(1) expected (it updates the name index).
 std::optional<std::size_t> find_body(Scene& scene, const std::string& name);

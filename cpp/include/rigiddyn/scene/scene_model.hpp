@@ -85,11 +85,12 @@ struct has_command : std::false_type {};
 template <class Term>
 struct has_command<Term, std::void_t<decltype(std::declval<Term&>().command(Eigen::Vector3d()))>> : std::true_type {};
 
-// Whether a term takes a controller's speed command (command_speed: ReactionWheel; scene/controller.hpp).
+// Whether a term takes a number commanded by a controller (command_scalar: a ReactionWheel's speed, a joint motor's
+// force; scene/controller.hpp).
 template <class Term, class = void>
-struct has_speed_command : std::false_type {};
+struct has_scalar_command : std::false_type {};
 template <class Term>
-struct has_speed_command<Term, std::void_t<decltype(std::declval<Term&>().command_speed(0.0, 0.0, 0.0, 0.0))>>
+struct has_scalar_command<Term, std::void_t<decltype(std::declval<Term&>().command_scalar(0.0, 0.0, 0.0, 0.0))>>
     : std::true_type {};
 
 // Whether a term turns vectors between a body's B and W (reads R_WB, or gives a torque that the impulses turn to W):
@@ -97,7 +98,7 @@ struct has_speed_command<Term, std::void_t<decltype(std::declval<Term&>().comman
 template <class Term>
 bool turns_vectors(const Term& term) {
   const ElementTraits t = term.traits();
-  return t.reads_attitude || t.has_torque || has_command<Term>::value || has_speed_command<Term>::value;
+  return t.reads_attitude || t.has_torque || has_command<Term>::value || has_scalar_command<Term>::value;
 }
 
 // Whether a body's slot records coordinates of its own (record_internal: the gyrostat's wheel speeds).
@@ -219,17 +220,18 @@ class BasicSceneModel {
         },
         terms_[e]);
   }
-  // A ReactionWheel's speed command (takes_speed): from its speed at t_k [s] to `speed` [rad/s] at t_next [s], at a
-  // constant rate; the piece that starts at t [s] set (command_speed of reaction_wheel.hpp).
-  bool takes_speed(std::size_t e) const {
-    return std::visit([](const auto& term) { return detail::has_speed_command<std::decay_t<decltype(term)>>::value; },
+  // A number commanded at the sample t_k [s] to element e (takes_scalar), the next sample at t_next [s]: a
+  // ReactionWheel's speed, reached at t_next at a constant rate (reaction_wheel.hpp); a joint motor's force, held
+  // (joint_motor.hpp); the piece that starts at t [s] set.
+  bool takes_scalar(std::size_t e) const {
+    return std::visit([](const auto& term) { return detail::has_scalar_command<std::decay_t<decltype(term)>>::value; },
                       terms_[e]);
   }
-  void command_speed(std::size_t e, double speed, double t_k, double t_next, double t) {
+  void command_scalar(std::size_t e, double value, double t_k, double t_next, double t) {
     std::visit(
         [&](auto& term) {
-          if constexpr (detail::has_speed_command<std::decay_t<decltype(term)>>::value) {
-            term.command_speed(speed, t_k, t_next, t);
+          if constexpr (detail::has_scalar_command<std::decay_t<decltype(term)>>::value) {
+            term.command_scalar(value, t_k, t_next, t);
           }
         },
         terms_[e]);

@@ -3,27 +3,23 @@
 // time), none outside,
 // applied as the wrench pair of joint_force.hpp (power τ q̇; no potential: the motor may do any work). The schedule
 // is piecewise constant: the run loop splits every step at t_start and t_end (switches()) and sets the piece
-// between the sub-steps (set_time), as for ScheduledLoads; a derivative evaluation never looks at the time.
+// between the sub-steps (set_time), as for ScheduledLoads; a derivative evaluation never looks at the time. A
+// controller (scene/controller.hpp) may command the force at its samples: the command then replaces the window and
+// holds until the next one.
 #pragma once
 #include "rigiddyn/check.hpp"
-#include "rigiddyn/models/loads.hpp"
 #include "rigiddyn/scene/body.hpp"
 #include "rigiddyn/scene/body_kinematics.hpp"
 #include "rigiddyn/scene/element_traits.hpp"
 #include "rigiddyn/scene/elements/joint_force.hpp"
+#include "rigiddyn/scene/elements/time_window.hpp"
 
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
 namespace rigiddyn {
-
-// The times at which a run splits its steps for a motor on [t_start, t_end): its start and end.
-inline std::vector<AppliedLoad> motor_switches(double t_start, double t_end) {
-  AppliedLoad window;
-  window.t_start = t_start, window.t_end = t_end;
-  return {window};
-}
 
 // The compiled term of a motor in a joint of kind JointKind (RevoluteJoint or PrismaticJoint), made from its Spec
 // (body, value(): τ, t_start, t_end).
@@ -38,7 +34,7 @@ class JointMotorTerm {
         t_end_(spec.t_end) {
     require_finite(spec.value(), name + "." + Spec::value_key);
     if (std::isnan(spec.t_start)) throw_invalid(name + ".t_start", "a time (-inf: on from any time)", spec.t_start);
-    if (!(spec.t_end > spec.t_start)) throw_invalid(name + ".t_end", "a time after t_start = " + format_value(spec.t_start), spec.t_end);
+    detail::check_window(spec.t_start, spec.t_end, name + ".");
     set_time(0.0);
   }
 
@@ -51,6 +47,13 @@ class JointMotorTerm {
 
   // Sets the force of the piece that contains t [s]: τ on [t_start, t_end), 0 outside.
   void set_time(double t) { tau_ = t >= t_start_ && t < t_end_ ? value_ : 0.0; }
+
+  // A controller's command at a sample: the force τ [N m or N] from now on, in place of the window (the sample
+  // times are unused: the command is held, not ramped).
+  void command_scalar(double tau, double /*t_k*/, double /*t_next*/, double /*t*/) {
+    value_ = tau, tau_ = tau;
+    t_start_ = -std::numeric_limits<double>::infinity(), t_end_ = std::numeric_limits<double>::infinity();
+  }
 
   // Adds the pair of the piece's τ; returns its power τ q̇ [W].
   double add_wrenches(double /*t*/, const std::vector<BodyKinematics>& kinematics, std::vector<BodyWrench>& wrenches) const {

@@ -4,6 +4,7 @@
 #pragma once
 #include "rigiddyn/scene/element_fields.hpp"
 #include "rigiddyn/scene/elements/joint_motor.hpp"
+#include "rigiddyn/scene/elements/time_window.hpp"
 #include "rigiddyn/tree/joints/prismatic_joint.hpp"
 
 #include <limits>
@@ -19,7 +20,8 @@ struct PrismaticMotor {
       "A motor in the prismatic joint of the tree link `body` (a body of Scene.add_tree): the joint force `force` [N] "
       "along the joint's axis on [t_start, t_end) [s] (by default all of time), none outside, on the link and the opposite on its parent (W "
       "for a root link), both through the joint's origin, so that a tree's momenta are conserved; its power is force "
-      "dq/dt. A run splits its steps at t_start and t_end. Several windows: one PrismaticMotor each.";
+      "dq/dt. A run splits its steps at t_start and t_end. Several windows: one PrismaticMotor each. A "
+      "rigiddyn.Controller may command its force (held until its next sample, in place of the window).";
   static constexpr const char* example = R"py(A force of 4 N for the first second on a 2 kg slider: 2 m/s after it, and 1 + 2 × 2 = 5 m travelled at t = 3 s:
 
 >>> tree = rd.Tree()
@@ -52,11 +54,11 @@ struct PrismaticMotor {
 
   // What the fields must satisfy together: a window that ends after it starts.
   void check_fields() const {
-    if (!(t_end > t_start)) throw_invalid("t_end", "a time after t_start = " + format_value(t_start), t_end);
+    detail::check_window(t_start, t_end);
   }
 
   // The times at which a run splits its steps: t_start and t_end.
-  std::vector<AppliedLoad> switches() const { return motor_switches(t_start, t_end); }
+  std::vector<AppliedLoad> switches() const { return detail::window_switches(t_start, t_end); }
 };
 
 }  // namespace rigiddyn

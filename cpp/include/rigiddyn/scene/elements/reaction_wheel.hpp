@@ -19,6 +19,7 @@
 #include "rigiddyn/scene/body_kinematics.hpp"
 #include "rigiddyn/scene/element_fields.hpp"
 #include "rigiddyn/scene/element_traits.hpp"
+#include "rigiddyn/scene/elements/time_window.hpp"
 
 #include <Eigen/Core>
 
@@ -83,15 +84,11 @@ array([ 0. ,  0. , -0.1]))py";  // the docstring's Examples (run as doctests)
   // What the fields must satisfy together: a non-zero axis, a ramp that ends after it starts.
   void check_fields() const {
     if (!axis_B.allFinite() || axis_B.isZero(0.0)) throw_invalid("axis_B", "a finite non-zero vector", axis_B);
-    if (!(t_end > t_start)) throw_invalid("t_end", "a time after t_start = " + format_value(t_start), t_end);
+    detail::check_window(t_start, t_end);
   }
 
   // The times at which a run splits its steps: the ramp's start and end.
-  std::vector<AppliedLoad> switches() const {
-    AppliedLoad ramp;
-    ramp.t_start = t_start, ramp.t_end = t_end;
-    return {ramp};
-  }
+  std::vector<AppliedLoad> switches() const { return detail::window_switches(t_start, t_end); }
 };
 
 // The compiled term.
@@ -134,7 +131,7 @@ class ReactionWheelTerm {
 
   // A controller's speed command at the sample t_k [s]: Ω ramps from Ω(t_k) to `speed` [rad/s] at t_next [s]
   // (> t_k) at a constant rate, then holds it; the piece that starts at t [s] (≈ t_k) is set.
-  void command_speed(double speed, double t_k, double t_next, double t) {
+  void command_scalar(double speed, double t_k, double t_next, double t) {
     const double from = speed_at(t_k);
     speed_ = from, acceleration_ = (speed - from) / (t_next - t_k), t_start_ = t_k, t_end_ = t_next;
     set_time(t);

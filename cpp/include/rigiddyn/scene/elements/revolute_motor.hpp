@@ -4,6 +4,7 @@
 #pragma once
 #include "rigiddyn/scene/element_fields.hpp"
 #include "rigiddyn/scene/elements/joint_motor.hpp"
+#include "rigiddyn/scene/elements/time_window.hpp"
 #include "rigiddyn/tree/joints/revolute_joint.hpp"
 
 #include <limits>
@@ -19,7 +20,8 @@ struct RevoluteMotor {
       "A motor in the revolute joint of the tree link `body` (a body of Scene.add_tree): the joint torque `torque` "
       "[N m] about the joint's axis on [t_start, t_end) [s] (by default all of time), none outside, on the link and the opposite on its parent "
       "(W for a root link), so that a tree's momenta are conserved; its power is torque dq/dt. A run splits its steps "
-      "at t_start and t_end. Several windows: one RevoluteMotor each.";
+      "at t_start and t_end. Several windows: one RevoluteMotor each. A rigiddyn.Controller may command its torque "
+      "(held until its next sample, in place of the window).";
   static constexpr const char* example = R"py(A torque of 1 N m for the first second on a wheel of I = 0.5 kg m²: 2 rad/s after it, and 1 + 2 × 2 = 5 rad
 turned at t = 3 s:
 
@@ -53,11 +55,11 @@ turned at t = 3 s:
 
   // What the fields must satisfy together: a window that ends after it starts.
   void check_fields() const {
-    if (!(t_end > t_start)) throw_invalid("t_end", "a time after t_start = " + format_value(t_start), t_end);
+    detail::check_window(t_start, t_end);
   }
 
   // The times at which a run splits its steps: t_start and t_end.
-  std::vector<AppliedLoad> switches() const { return motor_switches(t_start, t_end); }
+  std::vector<AppliedLoad> switches() const { return detail::window_switches(t_start, t_end); }
 };
 
 }  // namespace rigiddyn
