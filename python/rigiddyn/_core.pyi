@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['AppliedLoad', 'AtmosphericDrag', 'BatchResult', 'BatchSceneResult', 'BodyAcceleration', 'ComWrench', 'CompiledScene', 'CompoundPendulumSolution', 'ConstantThrustSolution', 'DensityIntegral', 'Drag', 'ElementField', 'FORCE_ELEMENTS', 'FixedJoint', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'FreeJoint', 'GlobalError', 'GravityGradient', 'Gyrostat', 'GyrostatState', 'InertiaCheck', 'InertiaReport', 'JointState', 'KineticEnergy', 'LagrangeTopSolution', 'MagneticDipole', 'MassFlow', 'MeshWeldWarning', 'Motion', 'MutualGravity', 'Particle', 'ParticleState', 'PivotedAcceleration', 'PivotedBody', 'PivotedBodyState', 'PivotedPlanarAcceleration', 'PivotedPlanarBody', 'PivotedPlanarBodyState', 'PivotedPlanarTorque', 'PivotedTorque', 'PlanarAcceleration', 'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointMassGravity', 'PointVelocity', 'PrincipalAxes', 'PrismaticJoint', 'PrismaticMotor', 'PrismaticSpringDamper', 'PythonForce', 'ReactionWheel', 'RevoluteJoint', 'RevoluteMotor', 'RevoluteSpringDamper', 'RigidBody', 'RigidBodyState', 'RotatingFrameFreeParticle', 'Scene', 'SceneCompatibilityWarning', 'SceneFrame', 'SceneResult', 'ScheduledLoads', 'Screw', 'SimulationResult', 'SolarRadiationPressure', 'SpatialInertia', 'SphericalJoint', 'SpringDamper', 'Thrust', 'ToleranceChoice', 'ToleranceError', 'TorqueFreeSolution', 'Transform', 'Tree', 'TreeLink', 'UniformGravity', 'WeldedMesh', 'Wheel', 'ZonalGravity', 'aba', 'align_vectors', 'angular_distance', 'angular_momentum', 'angular_velocity_from_quat_rate', 'apply_impulse', 'attitude_from_orbit_frame', 'attitude_to_orbit_frame', 'axis_angle_to_quat', 'bias_forces', 'box_shell', 'compose_kinematics', 'composite', 'crba', 'davenport_to_quat', 'default_thread_count', 'eccentric_to_mean_anomaly', 'eccentric_to_true_anomaly', 'elements_to_state', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'forward_kinematics', 'from_point_masses', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kepler_propagate', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mean_to_eccentric_anomaly', 'mean_to_true_anomaly', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation', 'nearest_valid_inertia', 'orbit_frame_angular_velocity', 'orbit_frame_rotation', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix', 'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh', 'rnea', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'semi_latus_rectum', 'simulate', 'simulate_batch', 'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'state_to_elements', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'true_to_eccentric_anomaly', 'true_to_mean_anomaly', 'twist_to_screw', 'vector_instructions', 'vee', 'weld_vertices']
+__all__: list[str] = ['AppliedLoad', 'AtmosphericDrag', 'BatchResult', 'BatchSceneResult', 'BodyAcceleration', 'ComWrench', 'CompiledScene', 'CompoundPendulumSolution', 'ConstantThrustSolution', 'DensityIntegral', 'Drag', 'ElementField', 'FORCE_ELEMENTS', 'FixedJoint', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'FreeJoint', 'GlobalError', 'GravityGradient', 'Gyrostat', 'GyrostatState', 'InertiaCheck', 'InertiaReport', 'JointState', 'KineticEnergy', 'LagrangeTopSolution', 'MagneticDipole', 'MassFlow', 'MeshWeldWarning', 'Motion', 'MutualGravity', 'Particle', 'ParticleState', 'PivotedAcceleration', 'PivotedBody', 'PivotedBodyState', 'PivotedPlanarAcceleration', 'PivotedPlanarBody', 'PivotedPlanarBodyState', 'PivotedPlanarTorque', 'PivotedTorque', 'PlanarAcceleration', 'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointMassGravity', 'PointVelocity', 'PrincipalAxes', 'PrismaticJoint', 'PrismaticMotor', 'PrismaticSpringDamper', 'PythonForce', 'ReactionWheel', 'RevoluteJoint', 'RevoluteMotor', 'RevoluteSpringDamper', 'RigidBody', 'RigidBodyState', 'RotatingFrameFreeParticle', 'Scene', 'SceneCompatibilityWarning', 'SceneFrame', 'SceneResult', 'ScheduledLoads', 'Screw', 'SimulationResult', 'SolarRadiationPressure', 'SpatialInertia', 'SphericalJoint', 'SphericalSpringDamper', 'SpringDamper', 'Thrust', 'ToleranceChoice', 'ToleranceError', 'TorqueFreeSolution', 'Transform', 'Tree', 'TreeLink', 'UniformGravity', 'WeldedMesh', 'Wheel', 'ZonalGravity', 'aba', 'align_vectors', 'angular_distance', 'angular_momentum', 'angular_velocity_from_quat_rate', 'apply_impulse', 'attitude_from_orbit_frame', 'attitude_to_orbit_frame', 'axis_angle_to_quat', 'bias_forces', 'box_shell', 'compose_kinematics', 'composite', 'crba', 'davenport_to_quat', 'default_thread_count', 'eccentric_to_mean_anomaly', 'eccentric_to_true_anomaly', 'elements_to_state', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'forward_kinematics', 'from_point_masses', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kepler_propagate', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mean_to_eccentric_anomaly', 'mean_to_true_anomaly', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation', 'nearest_valid_inertia', 'orbit_frame_angular_velocity', 'orbit_frame_rotation', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix', 'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh', 'rnea', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'semi_latus_rectum', 'simulate', 'simulate_batch', 'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'state_to_elements', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'true_to_eccentric_anomaly', 'true_to_mean_anomaly', 'twist_to_screw', 'vector_instructions', 'vee', 'weld_vertices']
 class _Quantity(typing.Protocol):
     """A pint Quantity of any registry (the core converts it to SI by its magnitude and units)."""
     @property
@@ -5006,6 +5006,71 @@ class PrismaticMotor:
     def t_start(self) -> typing.Any:
         """
         the time it starts [s] (-inf: on from any time)
+        """
+class SphericalSpringDamper:
+    """
+    A torsion spring and damper in the spherical (ball) joint of the tree link `body` (a body of Scene.add_tree): with phi = log(q0^-1 q) the rotation [rad] (in the link frame, angle in [0, pi]) from the rest attitude q0 = exp(rest_rotation) to the joint's attitude q, the couple -(stiffness phi + damping w) [N m] in the link frame (w the joint's angular velocity [rad/s]) on the link and the opposite on its parent (W for a root link), so that a tree's momenta are conserved. Potential V = stiffness |phi|^2/2 [J]. The spring pulls along the shorter rotation to rest (its couple flips at half a turn).
+    
+    Parameters
+    ----------
+    body : int, required
+        index of the tree link whose spherical joint holds it
+    stiffness : float [N*m/rad], required
+        torsion stiffness k [N m/rad]
+    rest_rotation : array_like, shape (3,) [rad], default (0.0, 0.0, 0.0)
+        (3,) rotation vector of the rest attitude q0 = exp(rest_rotation), joint frame to link frame [rad]
+    damping : float [N*m*s/rad], default 0.0
+        damping coefficient c [N m s/rad]
+    
+    Each argument with a unit takes a float in that unit or a pint quantity (any registry; converted to that unit, ValueError naming the argument for another dimension).
+    
+    Examples
+    --------
+    A ball of I = 0.5 kg m² on a torsion spring of 2 N m/rad, twisted 0.1 rad about z, turns back and forth at
+    ω = √(k/I) = 2 rad/s: after one period π s it is back at its start:
+    
+    >>> tree = rd.Tree()
+    >>> ball = tree.add_link("ball", -1, rd.SphericalJoint(), rd.SpatialInertia(2.0, [0.0, 0.0, 0.0], 0.5 * np.eye(3)))
+    >>> scene = rd.Scene()
+    >>> links = scene.add_tree(tree, "mount")
+    >>> scene.add(rd.SphericalSpringDamper(body=links[0], stiffness=2.0))
+    0
+    >>> start = [0.0, 0.0, np.sin(0.05), np.cos(0.05)]
+    >>> result = rd.simulate(scene, tree.joint_states(start), np.pi / 1000, steps=1000, method="rk4")
+    >>> bool(np.allclose(result.joint_q[-1], start, rtol=0, atol=1e-9))
+    True
+    """
+    __hash__: typing.ClassVar[None] = None
+    fields: typing.ClassVar[tuple]
+    def __eq__(self, other: typing.Any) -> typing.Any:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, *, body: int, stiffness: float, rest_rotation: numpy.typing.ArrayLike = (0.0, 0.0, 0.0), damping: float = 0.0) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def body(self) -> typing.Any:
+        """
+        index of the tree link whose spherical joint holds it
+        """
+    @property
+    def damping(self) -> typing.Any:
+        """
+        damping coefficient c [N m s/rad]
+        """
+    @property
+    def rest_rotation(self) -> typing.Any:
+        """
+        (3,) rotation vector of the rest attitude q0 = exp(rest_rotation), joint frame to link frame [rad]
+        """
+    @property
+    def stiffness(self) -> typing.Any:
+        """
+        torsion stiffness k [N m/rad]
         """
 class SceneFrame:
     """
@@ -13114,7 +13179,7 @@ def weld_vertices(vertices: numpy.typing.ArrayLike, faces: numpy.typing.ArrayLik
     (2, array([[0, 1, 2],
            [1, 3, 2]]))
     """
-FORCE_ELEMENTS: tuple = (UniformGravity, PointMassGravity, MutualGravity, GravityGradient, SpringDamper, Drag, ScheduledLoads, PythonForce, Thrust, MagneticDipole, ReactionWheel, ZonalGravity, AtmosphericDrag, SolarRadiationPressure, RevoluteSpringDamper, PrismaticSpringDamper, RevoluteMotor, PrismaticMotor)
+FORCE_ELEMENTS: tuple = (UniformGravity, PointMassGravity, MutualGravity, GravityGradient, SpringDamper, Drag, ScheduledLoads, PythonForce, Thrust, MagneticDipole, ReactionWheel, ZonalGravity, AtmosphericDrag, SolarRadiationPressure, RevoluteSpringDamper, PrismaticSpringDamper, RevoluteMotor, PrismaticMotor, SphericalSpringDamper)
 __version__: str = '0.1.0'
 _accuracy_rule: tuple = (0.001, 10.0, 0.1)
 inertia_relative_tolerance: float = 1e-10

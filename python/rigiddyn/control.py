@@ -61,11 +61,11 @@ class SampledState:
         Angular velocities in B [rad/s] (with the controller's gyro noise when it has some).
     wheel_speed : numpy.ndarray, shape (nw,)
         Each gyrostat wheel's speed relative to its body [rad/s], in the scene's order.
-    joint_q : numpy.ndarray, shape (nq,), optional
-        The trees' joint coordinates, the trees in the scene's order (SceneResult.joint_q's columns; empty without a
-        tree, the default).
-    joint_v : numpy.ndarray, shape (nv,), optional
-        Their joint velocities (SceneResult.joint_v's columns).
+    joint_q : numpy.ndarray, shape (n_q,), optional
+        The trees' joint coordinates, n_q of them, the trees in the scene's order (SceneResult.joint_q's columns;
+        empty without a tree, the default).
+    joint_v : numpy.ndarray, shape (n_v,), optional
+        Their joint velocities, n_v of them (SceneResult.joint_v's columns).
 
     Raises
     ------
@@ -102,7 +102,7 @@ class SampledState:
             if a.shape[0] != bodies:
                 raise ValueError(f"{name}: expected {bodies} rows (one per body, as p_W), got {a.shape[0]}")
             object.__setattr__(self, name, a)
-        for name, what in (("wheel_speed", "(nw,) [rad/s]"), ("joint_q", "(nq,)"), ("joint_v", "(nv,)")):
+        for name, what in (("wheel_speed", "(nw,) [rad/s]"), ("joint_q", "(n_q,)"), ("joint_v", "(n_v,)")):
             a = _real_array(getattr(self, name), name, f"an array of shape {what}")
             if a.ndim != 1:
                 raise ValueError(f"{name}: expected an array of shape {what}, got shape {a.shape}")

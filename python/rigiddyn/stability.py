@@ -311,13 +311,17 @@ def _minimum_moment(body: object) -> float:
 
 def _joint_inertia(link: _core.TreeLink) -> float:
     """The link's own inertia along its joint [kg m^2 or kg]: a . I_O a, I_O its inertia about the link frame's
-    origin (SpatialInertia.inertia_about_origin), for a revolute joint's axis a; its mass for a prismatic joint (the
+    origin (SpatialInertia.inertia_about_origin), for a revolute joint's axis a; the least principal moment of I_O for
+    a spherical joint; its mass for a prismatic joint (the
     links beyond add to it, the parent's freedom takes from it: a mode's estimate, as the springs' above)."""
     joint = link.tree.joints[link.link]
     if isinstance(joint, _core.PrismaticJoint):
         return float(link.mass)
+    inertia_O = np.asarray(link.tree.inertias[link.link].inertia_about_origin(), float)
+    if isinstance(joint, _core.SphericalJoint):  # its least principal moment: the fastest of its three modes
+        return float(np.linalg.eigvalsh(inertia_O)[0])
     a = np.asarray(joint.axis, float)
-    return float(a @ np.asarray(link.tree.inertias[link.link].inertia_about_origin(), float) @ a)
+    return float(a @ inertia_O @ a)
 
 
 def _inverse_mass_at(body: object, r_B: np.ndarray) -> float:
@@ -446,7 +450,7 @@ def scene_modes(scene: object, initial: list[object]) -> list[tuple[str, float, 
                 if moment[i] > 0 and np.any(r):
                     lever = float(r @ r) / moment[i]
                     modes.append((f"the spring {label} turning body {i}", k * lever, c * lever))
-        elif kind in ("RevoluteSpringDamper", "PrismaticSpringDamper"):
+        elif kind in ("RevoluteSpringDamper", "PrismaticSpringDamper", "SphericalSpringDamper"):
             inertia = _joint_inertia(bodies[int(element.body)])
             k, c = float(element.stiffness), float(element.damping)
             modes.append((f"the joint spring {label}", k / inertia, c / inertia))

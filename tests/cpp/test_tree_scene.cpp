@@ -9,6 +9,7 @@
 #include "invalid_argument_message.hpp"
 #include "rigiddyn/scene/compile.hpp"
 #include "rigiddyn/scene/simulate_scene.hpp"
+#include "rigiddyn/so3/exp_log.hpp"
 #include "rigiddyn/tree/aba.hpp"
 #include "rigiddyn/tree/energy.hpp"
 
@@ -369,6 +370,37 @@ TEST(TreeScene, JointElementsRefuseBodiesWithoutTheirJoint) {
   EXPECT_NE(refused(RevoluteSpringDamper{1, -1.0, 0.0, 0.0}).find("stiffness: expected a finite number >= 0"), std::string::npos);
   EXPECT_NE(refused(RevoluteMotor{2, 1.0}).find("'slider', whose joint is prismatic"), std::string::npos);
   EXPECT_NE(refused(PrismaticMotor{2, std::nan("")}).find("force: expected a finite number"), std::string::npos);
+  EXPECT_NE(refused(SphericalSpringDamper{2, 1.0}).find("with a spherical joint, got 2 ('slider', whose joint is prismatic)"),
+            std::string::npos);
+}
+
+// A body on a ball joint (principal axes along L's, centre of mass at the joint) twisted by φ0 = 1.5 rad about its
+// principal axis x from the rest attitude q0 = exp(rest_rotation), on a torsion spring k: its rotation from rest
+// stays about x (the couple −k φ has no other component, and ω × I ω = 0 about a principal axis), so
+// φ(t) = φ0 cos(√(k/I_x) t) exactly. RK4 per step: |hω|⁵/120 of the amplitude, plus a few ε; its potential ½ k φ².
+TEST(TreeScene, ABallJointsSpringTwistsItsLinkAsTheClosedForm) {
+  auto tree = std::make_shared<Tree>();
+  tree->add_link("ball", -1, SphericalJoint(), SpatialInertia(3.0, Eigen::Vector3d::Zero(), Eigen::Vector3d(0.6, 0.9, 1.2).asDiagonal()));
+  Scene scene;
+  add_tree(scene, tree);
+  SphericalSpringDamper spring{0, 2.4};
+  spring.rest_rotation = Eigen::Vector3d(0.2, -0.5, 0.3);
+  scene.elements.push_back(spring);
+  const Eigen::Quaterniond q0 = rotvec_to_quat(spring.rest_rotation);
+  const Eigen::Quaterniond start = q0 * rotvec_to_quat(Eigen::Vector3d(1.5, 0.0, 0.0));
+  const SceneSimulation r =
+      simulate(scene, {JointState{Eigen::Vector4d(start.coeffs()), Eigen::Vector3d::Zero()}}, with(Method::rk4, 0.002, 1000));
+  const double omega = std::sqrt(2.4 / 0.6), h_omega = 0.002 * omega;
+  const double bound = 1000 * (std::pow(h_omega, 5) / 120.0 + 8 * kEps) * 1.5;
+  for (std::size_t i = 0; i < r.size(); i += 100) {
+    const Eigen::Quaterniond q(r.joint_q[4 * i + 3], r.joint_q[4 * i], r.joint_q[4 * i + 1], r.joint_q[4 * i + 2]);
+    const Eigen::Vector3d phi = quat_to_rotvec(q0.conjugate() * q.normalized());
+    EXPECT_NEAR(phi.x(), 1.5 * std::cos(omega * r.t[i]), bound) << "t = " << r.t[i];
+    EXPECT_NEAR(r.potential_energy[i], 0.5 * 2.4 * phi.squaredNorm(), 16 * kEps * 2.7) << "t = " << r.t[i];
+  }
+  scene.elements[0] = SphericalSpringDamper{0, 2.4, Eigen::Vector3d(0.0, NAN, 0.0)};
+  EXPECT_NE(message_of([&] { compile_scene(scene, Method::rk4); }).find("rest_rotation: expected finite values"),
+            std::string::npos);
 }
 
 }  // namespace

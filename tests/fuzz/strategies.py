@@ -144,6 +144,9 @@ RECIPES = {
         "RevoluteMotor", body=("lit", 0), torque=("lit", ut[0]), t_end=("lit", ut[1] + 0.1))),
     "PrismaticMotor": st.tuples(st.floats(-100.0, 100.0), st.floats(0.0, 10.0)).map(lambda ut: _call_spec(
         "PrismaticMotor", body=("lit", 0), force=("lit", ut[0]), t_end=("lit", ut[1] + 0.1))),
+    "SphericalSpringDamper": st.tuples(st.floats(0.0, 100.0), st.floats(-3.0, 3.0), st.floats(0.0, 10.0)).map(
+        lambda kac: _call_spec("SphericalSpringDamper", body=("lit", 0), stiffness=("lit", kac[0]),
+                               rest_rotation=("lit", [0.0, kac[1], 0.0]), damping=("lit", kac[2]))),
     "GyrostatState": st.floats(-100.0, 100.0).map(lambda w: _call_spec(
         "GyrostatState", w_B=("lit", [0.1, 0.0, 0.2]), wheel_speeds=("lit", [w]))),
     "Thrust": st.sampled_from(["body", "world"]).map(lambda frame: _call_spec(
@@ -253,7 +256,8 @@ RECIPES["SampledState"] = st.tuples(st.floats(0.0, 10.0), st.integers(1, 3), st.
 ELEMENT_CLASSES = ("UniformGravity", "PointMassGravity", "MutualGravity", "GravityGradient", "SpringDamper", "Drag",
                    "ScheduledLoads", "PythonForce", "Thrust", "MagneticDipole",
                    "ReactionWheel", "ZonalGravity", "AtmosphericDrag", "SolarRadiationPressure",
-                   "RevoluteSpringDamper", "PrismaticSpringDamper", "RevoluteMotor", "PrismaticMotor")
+                   "RevoluteSpringDamper", "PrismaticSpringDamper", "RevoluteMotor", "PrismaticMotor",
+                   "SphericalSpringDamper")
 # a field of an element class's table (each class's `fields`)
 RECIPES["ElementField"] = st.tuples(st.sampled_from(ELEMENT_CLASSES), st.integers(0, 1)).map(
     lambda ci: _call_spec(f"{ci[0]}.fields.__getitem__", [("lit", ci[1])]))

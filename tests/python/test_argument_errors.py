@@ -115,6 +115,7 @@ ELEMENTS = {
     "PrismaticSpringDamper": lambda: rd.PrismaticSpringDamper(body=0, stiffness=1.0),
     "RevoluteMotor": lambda: rd.RevoluteMotor(body=0, torque=1.0),
     "PrismaticMotor": lambda: rd.PrismaticMotor(body=0, force=1.0),
+    "SphericalSpringDamper": lambda: rd.SphericalSpringDamper(body=0, stiffness=1.0),
 }
 
 
@@ -324,6 +325,7 @@ EXAMPLES = {
     "PrismaticSpringDamper": lambda: {"body": 0, "stiffness": 1.0},
     "RevoluteMotor": lambda: {"body": 0, "torque": 1.0},
     "PrismaticMotor": lambda: {"body": 0, "force": 1.0},
+    "SphericalSpringDamper": lambda: {"body": 0, "stiffness": 1.0},
     "Drag": lambda: {}, "ScheduledLoads": lambda: {"body": 0}, "PythonForce": lambda: {"fn": _push},
     "load_scene": lambda: {"path_or_text": "kepler"},
     "load_urdf": lambda: {"source": URDF_ARM},

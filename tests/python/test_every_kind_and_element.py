@@ -69,21 +69,25 @@ ELEMENT_EXAMPLES = {
     "PrismaticSpringDamper": rd.PrismaticSpringDamper(body=3, stiffness=40.0, rest_position=-0.1, damping=2.0),
     "RevoluteMotor": rd.RevoluteMotor(body=2, torque=-1.5, t_start=0.5, t_end=2.0),
     "PrismaticMotor": rd.PrismaticMotor(body=3, force=3.0, t_start=1.0),
+    "SphericalSpringDamper": rd.SphericalSpringDamper(body=4, stiffness=2.0, rest_rotation=[0.1, -0.2, 0.3], damping=0.05),
 }
-JOINT_ELEMENTS = ("RevoluteSpringDamper", "PrismaticSpringDamper", "RevoluteMotor", "PrismaticMotor")  # on _arm's links
+JOINT_ELEMENTS = ("RevoluteSpringDamper", "PrismaticSpringDamper", "RevoluteMotor", "PrismaticMotor",
+                  "SphericalSpringDamper")  # on _arm's links
 
 
 def _arm() -> rd.Tree:
-    """A hinge about z at W's origin and a slider along its x: the joints of the joint elements."""
+    """A hinge about z at W's origin, a slider along its x and a ball joint at the slider's end: the joints of the
+    joint elements."""
     arm = rd.Tree()
     link = rd.SpatialInertia(1.0, [0.2, 0.0, 0.0], np.diag([0.01, 0.05, 0.05]))
     arm.add_link("hinge", -1, rd.RevoluteJoint([0.0, 0.0, 1.0]), link)
     arm.add_link("slider", 0, rd.PrismaticJoint([1.0, 0.0, 0.0]), link, rd.Transform(translation=[0.5, 0.0, 0.0]))
+    arm.add_link("ball", 1, rd.SphericalJoint(), link, rd.Transform(translation=[0.4, 0.0, 0.0]))
     return arm
 
 
 def _scene_with(body=None, element=None) -> rd.Scene:
-    """A particle with a mass flow (body 0) and a rigid body (body 1), then _arm's links (bodies 2, 3) for a joint
+    """A particle with a mass flow (body 0) and a rigid body (body 1), then _arm's links (bodies 2, 3, 4) for a joint
     element, plus `body` and `element`."""
     scene = rd.Scene()
     scene.add_body(rd.Particle(10.0), name="rocket", mass_flow=rd.MassFlow(rate=-0.5))
@@ -100,7 +104,8 @@ def _scene_with(body=None, element=None) -> rd.Scene:
 def _states(scene: rd.Scene, extra=None) -> list:
     states = [rd.ParticleState(v_W=[0.0, 0.0, 1.0]), rd.RigidBodyState(p_W=[0.0, 0.0, 0.5], w_B=[0.1, 0.2, 0.3])]
     if len(scene.bodies) > 2 and isinstance(scene.bodies[2], rd.TreeLink):
-        states += _arm().joint_states([0.3, 0.05], [1.0, -0.2])
+        ball = [0.1, -0.2, 0.3, 0.9] / np.linalg.norm([0.1, -0.2, 0.3, 0.9])
+        states += _arm().joint_states([0.3, 0.05, *ball], [1.0, -0.2, 0.4, -0.1, 0.2])
     return states + ([extra] if extra is not None else [])
 
 

@@ -3,11 +3,12 @@ coupling them, the tree's q and v integrated by the articulated-body algorithm.
 
 Checked against the numpy reference: one RK4 step of random trees (revolute, prismatic, spherical, fixed joints,
 with and without a free base) under UniformGravity, a SpringDamper from a link point to a world anchor, Drag on
-every link and a spring, a damper and a motor in every revolute and prismatic joint equals an RK4 step written from
-rigiddyn_ref.tree (forward dynamics from the definitions, the links' wrenches as external forces, the joint springs
-as joint forces) and rigiddyn_ref.scene (the elements' forces); the work-energy balance closes on every run; a
-joint spring's damped oscillation against its closed form; a motor's window on a floating tree keeps its momenta;
-the links' records and describe(); bad input refused naming the value.
+every link, a spring, a damper and a motor in every revolute and prismatic joint and a torsion spring and damper in
+every spherical joint equals an RK4 step written from rigiddyn_ref.tree (forward dynamics from the definitions, the
+links' wrenches as external forces, the joint springs as joint forces) and rigiddyn_ref.scene (the elements'
+forces); the work-energy balance closes on every run; a joint spring's damped oscillation and a ball joint's
+twist against their closed forms; a motor's window on a floating tree keeps its momenta; the links' records and
+describe(); bad input refused naming the value.
 
 Error bound of the step comparison: both sides evaluate the same four derivatives, each to ~10 n² eps of its scale
 (test_tree_vs_reference's bound for forward dynamics, n <= 8 links; the element forces add a few eps), and the step
@@ -23,6 +24,7 @@ import pytest
 
 import rigiddyn as rd
 from rigiddyn_ref import scene as sref
+from rigiddyn_ref import so3 as so3_ref
 from rigiddyn_ref import tree as ref
 from test_tree_vs_reference import build, random_links, random_state
 
@@ -36,6 +38,7 @@ JOINT_SPRING = {"stiffness": 5.0, "rest": 0.2, "damping": 0.3}  # in every revol
 JOINT_ELEMENTS = {"revolute": (rd.RevoluteSpringDamper, "rest_angle", rd.RevoluteMotor, "torque"),
                   "prismatic": (rd.PrismaticSpringDamper, "rest_position", rd.PrismaticMotor, "force")}
 MOTOR = 0.7  # the constant force of a motor in every revolute and prismatic joint [N m or N]
+BALL_SPRING = {"stiffness": 3.0, "rest_rotation": np.array([0.4, -0.3, 0.2]), "damping": 0.25}  # in every ball joint
 
 
 def tree_scene(links, drag=DRAG):
@@ -51,17 +54,24 @@ def tree_scene(links, drag=DRAG):
             scene.add(spring(body=i, stiffness=JOINT_SPRING["stiffness"], damping=JOINT_SPRING["damping"],
                              **{rest: JOINT_SPRING["rest"]}))
             scene.add(motor(body=i, **{value: MOTOR}))
+        if l["kind"] == "spherical":
+            scene.add(rd.SphericalSpringDamper(body=i, **BALL_SPRING))
     return tree, scene
 
 
 def joint_forces(links, q, v):
     """τ of the joint springs, dampers and motors: MOTOR − k (q_i − q0) − c v_i in each revolute and prismatic joint,
-    0 elsewhere."""
+    −k log(q0⁻¹ q_i) − c w_i (3,) in each spherical one (q0 = exp(rest_rotation)), 0 elsewhere."""
     idx, _, nv = ref.sizes(links)
     tau = np.zeros(nv)
     for l, (iq, iv) in zip(links, idx):
         if l["kind"] in JOINT_ELEMENTS:
             tau[iv] = MOTOR - JOINT_SPRING["stiffness"] * (q[iq] - JOINT_SPRING["rest"]) - JOINT_SPRING["damping"] * v[iv]
+        elif l["kind"] == "spherical":
+            q0 = so3_ref.rotvec_to_quat(BALL_SPRING["rest_rotation"])
+            q_JL = so3_ref.quat_normalize(q[iq:iq + 4])
+            phi = so3_ref.quat_to_rotvec(so3_ref.quat_multiply(so3_ref.quat_inverse(q0), q_JL))
+            tau[iv:iv + 3] = -BALL_SPRING["stiffness"] * phi - BALL_SPRING["damping"] * v[iv:iv + 3]
     return tau
 
 
@@ -251,6 +261,50 @@ def test_joint_springs_and_dampers_oscillate_as_their_closed_form():
     assert result.balance.verdict["energy"] == "closed"
 
 
+def test_a_ball_joints_spring_twists_a_body_as_its_closed_form():
+    """A body on a ball joint (principal moments 0.5, 0.8, 1.1 kg m² about the joint, its centre of mass there) twisted
+    2 rad about its principal axis y from a rest attitude q0 about z, on a torsion spring of k = 2.2 N m/rad: its
+    rotation from rest stays about y (no torque leaves that axis), so φ(t) = 2 cos(ω t) rad, ω = √(k/I_y) exactly,
+    however large the twist (below π). RK4's bound as in the oscillator test above, |hω|⁵/120 a step. The spring's
+    potential ½ k |φ|² is the records' potential energy, and the energy balance closes."""
+    tree = rd.Tree()
+    tree.add_link("ball", -1, rd.SphericalJoint(), rd.SpatialInertia(3.0, [0.0, 0.0, 0.0], np.diag([0.5, 0.8, 1.1])))
+    scene = rd.Scene()
+    (ball,) = scene.add_tree(tree, "mount")
+    rest = np.array([0.0, 0.0, 0.7])  # q0: 0.7 rad about z (J to L)
+    scene.add(rd.SphericalSpringDamper(body=ball, stiffness=2.2, rest_rotation=rest))
+    q0 = so3_ref.rotvec_to_quat(rest)
+    start = so3_ref.quat_multiply(q0, so3_ref.rotvec_to_quat([0.0, 2.0, 0.0]))  # q0 exp(φ0), φ0 in L
+    h, steps, omega = 0.002, 2000, np.sqrt(2.2 / 0.8)
+    result = rd.simulate(scene, tree.joint_states(start), h, steps=steps, method="rk4")
+    phi = np.array([so3_ref.quat_to_rotvec(so3_ref.quat_multiply(so3_ref.quat_inverse(q0), so3_ref.quat_normalize(q)))
+                    for q in result.joint_q])
+    bound = steps * ((h * omega) ** 5 / 120.0 + 8 * np.finfo(float).eps) * 2.0  # RK4's term and a few roundings a step
+    assert np.max(np.abs(phi[:, 1] - 2.0 * np.cos(omega * result.t))) <= bound
+    assert np.max(np.abs(phi[:, [0, 2]])) <= steps * 8 * np.finfo(float).eps * 2.0  # round-off only
+    assert np.allclose(result.potential_energy, 0.5 * 2.2 * np.sum(phi**2, axis=1), rtol=1e-12, atol=1e-14)
+    assert result.balance.verdict["energy"] == "closed"
+
+
+def test_a_ball_joints_damper_keeps_a_floating_trees_momenta():
+    """A bus (a free base) carrying a boom on a ball joint with a torsion spring and damper, the boom set swinging: the
+    pair is internal, so the tree's linear and angular momenta are conserved, and the damper's work is the energy
+    lost: all three balances 'closed'; the swing decays."""
+    tree = rd.Tree()
+    tree.add_link("bus", -1, rd.FreeJoint(), rd.SpatialInertia(40.0, [0.0, 0.0, 0.0], np.diag([6.0, 7.0, 8.0])))
+    tree.add_link("boom", 0, rd.SphericalJoint(), rd.SpatialInertia(2.0, [0.8, 0.0, 0.0], np.diag([0.02, 0.4, 0.4])),
+                  rd.Transform(translation=[0.5, 0.0, 0.0]))
+    scene = rd.Scene()
+    bus, boom = scene.add_tree(tree, "craft")
+    scene.add(rd.SphericalSpringDamper(body=boom, stiffness=5.0, damping=2.0))
+    v = np.array([0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.3, -0.5, 1.0])
+    result = rd.simulate(scene, tree.joint_states(None, v), 0.005, duration=6.0, method="rk4")
+    assert all(result.balance.verdict[q] == "closed" for q in ("energy", "linear_momentum", "angular_momentum")), \
+        result.balance.verdict
+    # the boom's swing relative to the bus decays (ζ ≈ 0.3 at ω ≈ 1.7 rad/s: e^(−ζ ω t) ≈ 0.03 at t = 6 s)
+    assert np.linalg.norm(result.joint_v[-1, 6:]) < 0.2 * np.linalg.norm(v[6:])
+
+
 def test_a_motor_window_in_a_floating_trees_hinge_keeps_its_momenta():
     """A bus (a free base) and a panel on a hinge about z driven by 2 N m on [0.2, 0.5) s: the panel turns one way,
     the bus the other; the motor's pair is internal, so the tree's linear and angular momenta stay zero, and its work
@@ -288,6 +342,15 @@ def test_the_step_recommendation_sees_a_joint_springs_mode():
     modes = rd.stability.scene_modes(scene, tree.joint_states())
     assert [m[0] for m in modes] == ["the joint spring elements[0]", "the joint spring elements[1]"]
     assert np.allclose([m[1:] for m in modes], [(3.0 / I_a, 0.1 / I_a), (8.0 / 0.5, 0.4 / 0.5)], rtol=1e-14)  # a few ε
+    # a ball joint's spring: k / I_min, I_min the least principal moment about the joint, I_C + m (|c|² 1 − c cᵀ) (0.2)
+    ball = rd.Tree()
+    ball.add_link("boom", -1, rd.SphericalJoint(), rd.SpatialInertia(2.0, [0.0, 0.3, 0.1], np.diag([0.1, 0.2, 0.2])))
+    scene = rd.Scene()
+    (boom,) = scene.add_tree(ball, "mount")
+    scene.add(rd.SphericalSpringDamper(body=boom, stiffness=4.0, damping=0.2))
+    I_min = np.linalg.eigvalsh(np.diag([0.1, 0.2, 0.2]) + 2.0 * (0.1 * np.eye(3) - np.outer([0.0, 0.3, 0.1], [0.0, 0.3, 0.1])))[0]
+    modes = rd.stability.scene_modes(scene, ball.joint_states())
+    assert np.allclose([m[1:] for m in modes], [(4.0 / I_min, 0.2 / I_min)], rtol=1e-13)  # an eigenvalue: a few ε
 
 
 def test_joint_elements_refuse_bodies_without_their_joint():

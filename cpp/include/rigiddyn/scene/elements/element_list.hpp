@@ -16,6 +16,7 @@
 #include "rigiddyn/scene/elements/revolute_spring_damper.hpp"
 #include "rigiddyn/scene/elements/scheduled_loads.hpp"
 #include "rigiddyn/scene/elements/solar_radiation_pressure.hpp"
+#include "rigiddyn/scene/elements/spherical_spring_damper.hpp"
 #include "rigiddyn/scene/elements/spring_damper.hpp"
 #include "rigiddyn/scene/elements/thrust.hpp"
 #include "rigiddyn/scene/elements/uniform_gravity.hpp"
@@ -42,7 +43,8 @@ using Element = std::variant<UniformGravity,    //
                              RevoluteSpringDamper,    //
                              PrismaticSpringDamper,   //
                              RevoluteMotor,           //
-                             PrismaticMotor>;
+                             PrismaticMotor,          //
+                             SphericalSpringDamper>;
 
 // The variant of the elements' compiled terms followed by More...: TermsOf<Element, X>::type =
 // std::variant<UniformGravityTerm, …, ThrustTerm, X>.
