@@ -888,9 +888,10 @@ void check_bdot_element(py::handle law, const Scene& scene) {
 // The C++ Controller of a rigiddyn.Controller (rigiddyn/control.py, which checks the law's commands) on `scene`: its
 // period, and a shipped law in C++ (shipped_law: without gyro noise) or a law that takes the GIL and calls its
 // _sample(t, p_W, q_WB, v_W, w_B, wheel_speed, joint_q, joint_v) -> (wheel_torque or None, [(element, value (3,) or
-// a number as a float: a ReactionWheel's speed [rad/s], a joint motor's torque [N m] or force [N]), ...]). The Python object outlives the run (the caller holds it). *shipped: whether the law
-// runs in C++ (a copy of the Controller taken before a run then starts another run afresh: the law's state, a
-// B-dot's last field, is in the copy).
+// a number as a float: a ReactionWheel's speed [rad/s], a joint motor's torque [N m] or force [N]), ...]). The
+// Python object outlives the run (the caller holds it). *shipped: whether the law runs in C++ (a copy of the
+// Controller taken before a run then starts another run afresh: the law's state, a B-dot's last field, is in the
+// copy).
 Controller as_controller(py::handle controller, const Scene& scene, bool* shipped) {
   if (!py::isinstance(controller, py::module_::import("rigiddyn.control").attr("Controller"))) {
     py_io::throw_type_error("controller", "a rigiddyn.Controller or None", controller);

@@ -312,8 +312,8 @@ def _minimum_moment(body: object) -> float:
 def _joint_inertia(link: _core.TreeLink) -> float:
     """The link's own inertia along its joint [kg m^2 or kg]: a . I_O a, I_O its inertia about the link frame's
     origin (SpatialInertia.inertia_about_origin), for a revolute joint's axis a; the least principal moment of I_O for
-    a spherical joint; its mass for a prismatic joint (the
-    links beyond add to it, the parent's freedom takes from it: a mode's estimate, as the springs' above)."""
+    a spherical joint; its mass for a prismatic joint (the links beyond add to it, the parent's freedom takes from it:
+    a mode's estimate, as the springs' above)."""
     joint = link.tree.joints[link.link]
     if isinstance(joint, _core.PrismaticJoint):
         return float(link.mass)

@@ -287,16 +287,13 @@ def _body_inertia(name: str, body_parts: List[Part]) -> SpatialInertia:
     return inertia
 
 
-def _damping(joint: Any) -> Tuple[float, float]:
-    """A URDF joint's (damping, friction) from its <dynamics> tag (0 where absent), refused unless finite and >= 0."""
-    dynamics = joint.dynamics
-    values = []
-    for field in ("damping", "friction"):
-        value = 0.0 if dynamics is None or getattr(dynamics, field) is None else float(getattr(dynamics, field))
-        if not np.isfinite(value) or value < 0.0:
-            raise ValueError(f"joint {joint.name!r}: expected a <dynamics> {field} >= 0, got {value!r}")
-        values.append(value)
-    return values[0], values[1]
+def _dynamics(joint: Any, field: str) -> float:
+    """A URDF joint's <dynamics> `field` ("damping" or "friction"; 0 where absent), refused unless finite and >= 0."""
+    value = getattr(joint.dynamics, field, None) if joint.dynamics is not None else None
+    value = 0.0 if value is None else float(value)
+    if not np.isfinite(value) or value < 0.0:
+        raise ValueError(f"joint {joint.name!r}: expected a <dynamics> {field} >= 0, got {value!r}")
+    return value
 
 
 def urdf_joint_dampers(source: Union[str, "os.PathLike[str]"], tree: Tree, links: Sequence[int],
@@ -376,9 +373,10 @@ def urdf_joint_dampers(source: Union[str, "os.PathLike[str]"], tree: Tree, links
     if not all(isinstance(b, (int, np.integer)) and not isinstance(b, bool) for b in bodies):
         raise TypeError(f"links: expected the body indices (ints) Scene.add_tree returned, got {links!r}")
     robot = _read(source)
+    names = tree.link_names
     dampers = []
     for joint in robot.joints:
-        damping, joint_friction = _damping(joint)
+        damping, joint_friction = _dynamics(joint, "damping"), _dynamics(joint, "friction")
         if joint_friction > 0.0 and friction == "refuse":
             raise ValueError(f"joint {joint.name!r}: friction {joint_friction!r} (Coulomb friction) is not modelled; "
                              "give friction='ignore' to leave it out of the dynamics")
@@ -387,10 +385,10 @@ def urdf_joint_dampers(source: Union[str, "os.PathLike[str]"], tree: Tree, links
         if joint.type not in ("revolute", "continuous", "prismatic"):
             raise ValueError(f"joint {joint.name!r}: expected damping only in a revolute, continuous or prismatic "
                              f"joint, got damping {damping!r} in a {joint.type!r} joint")
-        if joint.child not in tree.link_names:
+        if joint.child not in names:
             raise ValueError(f"joint {joint.name!r}: its child link {joint.child!r} is not a link of the tree "
-                             f"(links {tree.link_names}): expected the tree load_urdf returned for this URDF")
-        body = bodies[tree.link_names.index(joint.child)]
+                             f"(links {names}): expected the tree load_urdf returned for this URDF")
+        body = bodies[names.index(joint.child)]
         dampers.append(PrismaticSpringDamper(body=body, stiffness=0.0, rest_position=0.0, damping=damping)
                        if joint.type == "prismatic" else
                        RevoluteSpringDamper(body=body, stiffness=0.0, rest_angle=0.0, damping=damping))

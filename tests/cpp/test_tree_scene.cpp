@@ -290,6 +290,7 @@ TEST(TreeScene, AddTreeNamesItsLinksAndRefusesATakenName) {
   EXPECT_NE(message_of([&] { rigiddyn::add_tree(scene, std::make_shared<const Tree>()); })
                 .find("tree: expected a tree with at least one link, got a tree with none"),
             std::string::npos);
+  EXPECT_EQ(message_of([&] { rigiddyn::add_tree(scene, nullptr); }), "tree: expected a tree, got none");
 }
 
 TEST(TreeScene, RefusesJointStatesOfTheWrongSize) {

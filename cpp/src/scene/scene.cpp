@@ -55,6 +55,7 @@ std::size_t add_body(Scene& scene, Body body, const std::string& name, std::opti
 }
 
 std::vector<std::size_t> add_tree(Scene& scene, std::shared_ptr<const Tree> tree, const std::string& name) {
+  if (!tree) throw_invalid("tree", "a tree", std::string("none"));
   if (tree->num_links() == 0) throw_invalid("tree", "a tree with at least one link", std::string("a tree with none"));
   if (!tree->gravity().isZero(0.0)) {
     throw_invalid("tree.gravity", "zero in a scene (add a UniformGravity element: it loads every link)",

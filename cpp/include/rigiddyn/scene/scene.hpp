@@ -70,7 +70,7 @@ std::size_t add_body(Scene& scene, Body body, const std::string& name = "",
 
 // Appends every link of `tree` as a body (a TreeLink, the links sharing the tree), in link order, named
 // "<name>.<link's name>" (the link's own name when `name` is empty), and returns their indices. Nothing is added
-// when it throws std::invalid_argument naming "tree" (a tree without links), "tree.gravity" (not zero: a scene's
+// when it throws std::invalid_argument naming "tree" (none, or a tree without links), "tree.gravity" (not zero: a scene's
 // gravity is its UniformGravity element, which loads every link) or "name" (a link's name another body has).
 std::vector<std::size_t> add_tree(Scene& scene, std::shared_ptr<const Tree> tree, const std::string& name = "");
 

@@ -1,12 +1,11 @@
 // A joint force of a one-degree-of-freedom joint of a tree (a revolute or a prismatic joint, tree/joints/) as the
 // bodies' wrenches, for the joint elements (joint_spring_damper.hpp, joint_motor.hpp; a spherical joint's couple:
-// spherical_spring_damper.hpp). A joint force τ [N m about a
-// revolute joint's axis, N along a prismatic joint's] enters the dynamics as τ_i = S_iᵀ f_i (Featherstone Table
-// 5.1): it is the wrench S τ that the parent exerts on the link across the joint, and −S τ that the link exerts on
-// the parent (W takes it for a root link), both at the joint's origin, the link frame's origin L, in L. S = [a; 0]
-// (a couple τ a) for a revolute joint, S = [0; a] (a force τ a through L's origin) for a prismatic one. The pair is
-// internal: it conserves the tree's momenta, and its power over the two bodies is τ q̇ (their relative twist across
-// the joint is S q̇, Featherstone §4.4).
+// spherical_spring_damper.hpp). A joint force τ [N m about a revolute joint's axis, N along a prismatic joint's]
+// enters the dynamics as τ_i = S_iᵀ f_i (Featherstone Table 5.1): it is the wrench S τ that the parent exerts on the
+// link across the joint, and −S τ that the link exerts on the parent (W takes it for a root link), both at the
+// joint's origin, the link frame's origin L, in L. S = [a; 0] (a couple τ a) for a revolute joint, S = [0; a] (a
+// force τ a through L's origin) for a prismatic one. The pair is internal: it conserves the tree's momenta, and its
+// power over the two bodies is τ q̇ (their relative twist across the joint is S q̇, Featherstone §4.4).
 #pragma once
 #include "rigiddyn/check.hpp"
 #include "rigiddyn/scene/body.hpp"

@@ -3,7 +3,8 @@
 // φ = log(q0⁻¹ q_JL) the rotation from rest, in L [rad] (angle in [0, π]), the couple
 //   τ_L = −k φ − c ω_L   [N m] in L (ω_L the joint's angular velocity),
 // on the link and −τ on its parent (joint_force.hpp's couple pair: the tree's momenta are conserved). The spring's
-// potential is V = ½ k |φ|²: along q = q0 exp(φ), ω_L = J_r(φ) φ̇ and J_r(φ)ᵀ⁻¹ φ = φ, so dV/dt = k φ·ω_L, the
+// potential is V = ½ k |φ|²: along q = q0 exp(φ), φ̇ = dexp⁻¹_{−φ} ω_L (Hairer, Lubich & Wanner, GNI §IV.8;
+// so3/dexp_inv.hpp), and dexp⁻¹_{−φ} = 1 + ½ φ̂ + c(|φ|) φ̂² with φᵀ φ̂ = 0, so dV/dt = k φ·φ̇ = k φ·ω_L: the
 // negative of the spring's power (the law is conservative; the damper's power is −c |ω_L|²). The spring acts along
 // the shorter rotation to rest: at half a turn from rest its couple flips (V is continuous there, its gradient not).
 #pragma once
