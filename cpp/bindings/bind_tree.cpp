@@ -18,6 +18,7 @@
 #include "rigiddyn/tree/energy.hpp"
 #include "rigiddyn/tree/forward_kinematics.hpp"
 #include "rigiddyn/tree/joint.hpp"
+#include "rigiddyn/tree/momentum.hpp"
 #include "rigiddyn/tree/rnea.hpp"
 #include "rigiddyn/tree/tree.hpp"
 #include "rigiddyn/tree/workspace.hpp"
@@ -522,6 +523,57 @@ void bind_algorithms(py::module_& m) {
                    "Examples\n--------\nThe horizontal pendulum falls with I a = -m g l:\n\n") +
        tree_example + ">>> a = rd.aba(tree, [np.pi / 2], [0.0], [0.0])\n"
                       ">>> bool(np.isclose(a[0], -9.81 / 1.1))\nTrue\n")
+          .c_str());
+  m.def(
+      "generalized_momentum",
+      [](py::handle tree_obj, py::handle q, py::handle v) {
+        const Tree& tree = as_tree(tree_obj);
+        const Eigen::VectorXd q_in = as_vector(q, "q"), v_in = as_vector(v, "v");
+        return py_io::finite_result(py_io::to_array(generalized_momentum(tree, q_in, v_in, workspace_for(tree))),
+                                    "generalized_momentum");
+      },
+      "tree"_a, "q"_a, "v"_a,
+      (std::string("The generalized momentum p = dT/dv = H(q) v, one entry per joint coordinate.\n\n"
+                   "p_i = S_i^T h_i, with h_i the momentum of the subtree at link i (its links' I_k v_k carried to\n"
+                   "link i's frame; Featherstone, Rigid Body Dynamics Algorithms, sec. 6.2): for a revolute joint the\n"
+                   "angular momentum of everything beyond it about its axis, for a prismatic joint their linear\n"
+                   "momentum along it.\n\n"
+                   "Parameters\n----------\ntree : Tree\nq : array_like, shape (tree.nq,)\n    Configuration.\n"
+                   "v : array_like, shape (tree.nv,)\n    Velocity.\n\n"
+                   "Returns\n-------\nndarray, shape (tree.nv,)\n"
+                   "    p [N m s for a rotation, N s for a translation; for a ball or free joint the link-frame\n"
+                   "    angular momentum about the joint (and linear momentum)].\n\n"
+                   "Raises\n------\nValueError\n    A wrong size, a non-finite value or a non-unit quaternion (naming it).\n\n"
+                   "See Also\n--------\ngeneralized_momentum_rate, crba\n\n"
+                   "Examples\n--------\n") +
+       tree_example + ">>> rd.generalized_momentum(tree, [0.3], [2.0]).round(12)  # (I_C + m l^2) v\narray([2.2])\n")
+          .c_str());
+  m.def(
+      "generalized_momentum_rate",
+      [](py::handle tree_obj, py::handle q, py::handle v, py::handle f_ext) {
+        const Tree& tree = as_tree(tree_obj);
+        const Eigen::VectorXd q_in = as_vector(q, "q"), v_in = as_vector(v, "v");
+        const std::vector<Force> forces = as_external_forces(f_ext, tree);
+        return py_io::finite_result(
+            py_io::to_array(generalized_momentum_rate(tree, q_in, v_in, forces, workspace_for(tree))),
+            "generalized_momentum_rate");
+      },
+      "tree"_a, "q"_a, "v"_a, "f_ext"_a = py::none(),
+      (std::string("The rate of the generalized momentum by Lagrange's equations: dp/dt = dT/dq + Q, joint forces\n"
+                   "excluded (with joint forces tau, dp/dt = tau + this).\n\n"
+                   "The momentum equation f = d(m v)/dt of a chain: dT/dq at fixed v (the momentum a joint gains as\n"
+                   "the links beyond it move against their parents' motion) plus Q, the generalized force of gravity\n"
+                   "and f_ext. For trees of revolute, prismatic and fixed joints (a ball or free joint's momentum rate\n"
+                   "has a further term of its rotation group).\n\n"
+                   "Parameters\n----------\ntree : Tree\nq : array_like, shape (tree.nq,)\n    Configuration.\n"
+                   "v : array_like, shape (tree.nv,)\n    Velocity.\n"
+                   "f_ext : array_like, shape (n, 6), optional\n"
+                   "    External force [n; f] on each link, in its link frame (None: none).\n\n"
+                   "Returns\n-------\nndarray, shape (tree.nv,)\n    dp/dt [N m for a rotation, N for a translation].\n\n"
+                   "Raises\n------\nValueError\n    A wrong size, a non-finite value, or a ball or free joint (naming its link).\n\n"
+                   "See Also\n--------\ngeneralized_momentum, aba\n\n"
+                   "Examples\n--------\nThe horizontal pendulum's gravity torque, whatever its speed (one joint: dT/dq = 0):\n\n") +
+       tree_example + ">>> rd.generalized_momentum_rate(tree, [np.pi / 2], [3.0]).round(12)\narray([-9.81])\n")
           .c_str());
 }
 

@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['AppliedLoad', 'AtmosphericDrag', 'BatchResult', 'BatchSceneResult', 'BodyAcceleration', 'ComWrench', 'CompiledScene', 'CompoundPendulumSolution', 'ConstantThrustSolution', 'DensityIntegral', 'Drag', 'ElementField', 'FORCE_ELEMENTS', 'FixedJoint', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'FreeJoint', 'GlobalError', 'GravityGradient', 'Gyrostat', 'GyrostatState', 'InertiaCheck', 'InertiaReport', 'JointState', 'KineticEnergy', 'LagrangeTopSolution', 'MagneticDipole', 'MassFlow', 'MeshWeldWarning', 'Motion', 'MutualGravity', 'Particle', 'ParticleState', 'PivotedAcceleration', 'PivotedBody', 'PivotedBodyState', 'PivotedPlanarAcceleration', 'PivotedPlanarBody', 'PivotedPlanarBodyState', 'PivotedPlanarTorque', 'PivotedTorque', 'PlanarAcceleration', 'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointMassGravity', 'PointVelocity', 'PrincipalAxes', 'PrismaticJoint', 'PrismaticMotor', 'PrismaticSpringDamper', 'PythonForce', 'ReactionWheel', 'RevoluteJoint', 'RevoluteMotor', 'RevoluteSpringDamper', 'RigidBody', 'RigidBodyState', 'RotatingFrameFreeParticle', 'Scene', 'SceneCompatibilityWarning', 'SceneFrame', 'SceneResult', 'ScheduledLoads', 'Screw', 'SimulationResult', 'SolarRadiationPressure', 'SpatialInertia', 'SphericalJoint', 'SphericalSpringDamper', 'SpringDamper', 'Thrust', 'ToleranceChoice', 'ToleranceError', 'TorqueFreeSolution', 'Transform', 'Tree', 'TreeLink', 'UniformGravity', 'WeldedMesh', 'Wheel', 'ZonalGravity', 'aba', 'align_vectors', 'angular_distance', 'angular_momentum', 'angular_velocity_from_quat_rate', 'apply_impulse', 'attitude_from_orbit_frame', 'attitude_to_orbit_frame', 'axis_angle_to_quat', 'bias_forces', 'box_shell', 'compose_kinematics', 'composite', 'crba', 'davenport_to_quat', 'default_thread_count', 'eccentric_to_mean_anomaly', 'eccentric_to_true_anomaly', 'elements_to_state', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'forward_kinematics', 'from_point_masses', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kepler_propagate', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mean_to_eccentric_anomaly', 'mean_to_true_anomaly', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation', 'nearest_valid_inertia', 'orbit_frame_angular_velocity', 'orbit_frame_rotation', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix', 'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh', 'rnea', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'semi_latus_rectum', 'simulate', 'simulate_batch', 'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'state_to_elements', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'true_to_eccentric_anomaly', 'true_to_mean_anomaly', 'twist_to_screw', 'vector_instructions', 'vee', 'weld_vertices']
+__all__: list[str] = ['AppliedLoad', 'AtmosphericDrag', 'BatchResult', 'BatchSceneResult', 'BodyAcceleration', 'ComWrench', 'CompiledScene', 'CompoundPendulumSolution', 'ConstantThrustSolution', 'DensityIntegral', 'Drag', 'ElementField', 'FORCE_ELEMENTS', 'FixedJoint', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'FreeJoint', 'GlobalError', 'GravityGradient', 'Gyrostat', 'GyrostatState', 'InertiaCheck', 'InertiaReport', 'JointState', 'KineticEnergy', 'LagrangeTopSolution', 'MagneticDipole', 'MassFlow', 'MeshWeldWarning', 'Motion', 'MutualGravity', 'Particle', 'ParticleState', 'PivotedAcceleration', 'PivotedBody', 'PivotedBodyState', 'PivotedPlanarAcceleration', 'PivotedPlanarBody', 'PivotedPlanarBodyState', 'PivotedPlanarTorque', 'PivotedTorque', 'PlanarAcceleration', 'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointMassGravity', 'PointVelocity', 'PrincipalAxes', 'PrismaticJoint', 'PrismaticMotor', 'PrismaticSpringDamper', 'PythonForce', 'ReactionWheel', 'RevoluteJoint', 'RevoluteMotor', 'RevoluteSpringDamper', 'RigidBody', 'RigidBodyState', 'RotatingFrameFreeParticle', 'Scene', 'SceneCompatibilityWarning', 'SceneFrame', 'SceneResult', 'ScheduledLoads', 'Screw', 'SimulationResult', 'SolarRadiationPressure', 'SpatialInertia', 'SphericalJoint', 'SphericalSpringDamper', 'SpringDamper', 'Thrust', 'ToleranceChoice', 'ToleranceError', 'TorqueFreeSolution', 'Transform', 'Tree', 'TreeLink', 'UniformGravity', 'WeldedMesh', 'Wheel', 'ZonalGravity', 'aba', 'align_vectors', 'angular_distance', 'angular_momentum', 'angular_velocity_from_quat_rate', 'apply_impulse', 'attitude_from_orbit_frame', 'attitude_to_orbit_frame', 'axis_angle_to_quat', 'bias_forces', 'box_shell', 'compose_kinematics', 'composite', 'crba', 'davenport_to_quat', 'default_thread_count', 'eccentric_to_mean_anomaly', 'eccentric_to_true_anomaly', 'elements_to_state', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'forward_kinematics', 'from_point_masses', 'generalized_momentum', 'generalized_momentum_rate', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kepler_propagate', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mean_to_eccentric_anomaly', 'mean_to_true_anomaly', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation', 'nearest_valid_inertia', 'orbit_frame_angular_velocity', 'orbit_frame_rotation', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix', 'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh', 'rnea', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'semi_latus_rectum', 'simulate', 'simulate_batch', 'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'state_to_elements', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'true_to_eccentric_anomaly', 'true_to_mean_anomaly', 'twist_to_screw', 'vector_instructions', 'vee', 'weld_vertices']
 class _Quantity(typing.Protocol):
     """A pint Quantity of any registry (the core converts it to SI by its magnitude and units)."""
     @property
@@ -9521,6 +9521,92 @@ def from_point_masses(masses: numpy.typing.ArrayLike, positions: numpy.typing.Ar
     >>> body = rd.from_point_masses([1.0, 1.0], [[-1.0, 0, 0], [1.0, 0, 0]])
     >>> body.mass, body.com, body.inertia_com.diagonal()
     (2.0, array([0., 0., 0.]), array([0., 2., 2.]))
+    """
+def generalized_momentum(tree: Tree, q: numpy.typing.ArrayLike, v: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    The generalized momentum p = dT/dv = H(q) v, one entry per joint coordinate.
+    
+    p_i = S_i^T h_i, with h_i the momentum of the subtree at link i (its links' I_k v_k carried to
+    link i's frame; Featherstone, Rigid Body Dynamics Algorithms, sec. 6.2): for a revolute joint the
+    angular momentum of everything beyond it about its axis, for a prismatic joint their linear
+    momentum along it.
+    
+    Parameters
+    ----------
+    tree : Tree
+    q : array_like, shape (tree.nq,)
+        Configuration.
+    v : array_like, shape (tree.nv,)
+        Velocity.
+    
+    Returns
+    -------
+    ndarray, shape (tree.nv,)
+        p [N m s for a rotation, N s for a translation; for a ball or free joint the link-frame
+        angular momentum about the joint (and linear momentum)].
+    
+    Raises
+    ------
+    ValueError
+        A wrong size, a non-finite value or a non-unit quaternion (naming it).
+    
+    See Also
+    --------
+    generalized_momentum_rate, crba
+    
+    Examples
+    --------
+    >>> tree = rd.Tree(gravity=[0.0, 0.0, -9.81])
+    >>> bob = rd.SpatialInertia(1.0, [0.0, 0.0, -1.0], 0.1 * np.eye(3))
+    >>> tree.add_link("pendulum", -1, rd.RevoluteJoint([1.0, 0.0, 0.0]), bob)
+    0
+    >>> rd.generalized_momentum(tree, [0.3], [2.0]).round(12)  # (I_C + m l^2) v
+    array([2.2])
+    """
+def generalized_momentum_rate(tree: Tree, q: numpy.typing.ArrayLike, v: numpy.typing.ArrayLike, f_ext: numpy.typing.ArrayLike | None = None) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    The rate of the generalized momentum by Lagrange's equations: dp/dt = dT/dq + Q, joint forces
+    excluded (with joint forces tau, dp/dt = tau + this).
+    
+    The momentum equation f = d(m v)/dt of a chain: dT/dq at fixed v (the momentum a joint gains as
+    the links beyond it move against their parents' motion) plus Q, the generalized force of gravity
+    and f_ext. For trees of revolute, prismatic and fixed joints (a ball or free joint's momentum rate
+    has a further term of its rotation group).
+    
+    Parameters
+    ----------
+    tree : Tree
+    q : array_like, shape (tree.nq,)
+        Configuration.
+    v : array_like, shape (tree.nv,)
+        Velocity.
+    f_ext : array_like, shape (n, 6), optional
+        External force [n; f] on each link, in its link frame (None: none).
+    
+    Returns
+    -------
+    ndarray, shape (tree.nv,)
+        dp/dt [N m for a rotation, N for a translation].
+    
+    Raises
+    ------
+    ValueError
+        A wrong size, a non-finite value, or a ball or free joint (naming its link).
+    
+    See Also
+    --------
+    generalized_momentum, aba
+    
+    Examples
+    --------
+    The horizontal pendulum's gravity torque, whatever its speed (one joint: dT/dq = 0):
+    
+    >>> tree = rd.Tree(gravity=[0.0, 0.0, -9.81])
+    >>> bob = rd.SpatialInertia(1.0, [0.0, 0.0, -1.0], 0.1 * np.eye(3))
+    >>> tree.add_link("pendulum", -1, rd.RevoluteJoint([1.0, 0.0, 0.0]), bob)
+    0
+    >>> rd.generalized_momentum_rate(tree, [np.pi / 2], [3.0]).round(12)
+    array([-9.81])
     """
 def hat(v: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
     """

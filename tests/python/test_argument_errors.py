@@ -370,6 +370,8 @@ EXAMPLES = {
     "rnea": lambda: {"tree": _arm(), "q": [0.1], "v": [0.2], "a": [0.3], "f_ext": np.ones((1, 6))},
     "bias_forces": lambda: {"tree": _arm(), "q": [0.1], "v": [0.2]}, "crba": lambda: {"tree": _arm(), "q": [0.1]},
     "aba": lambda: {"tree": _arm(), "q": [0.1], "v": [0.2], "tau": [0.3], "f_ext": np.ones((1, 6))},
+    "generalized_momentum": lambda: {"tree": _arm(), "q": [0.1], "v": [0.2]},
+    "generalized_momentum_rate": lambda: {"tree": _arm(), "q": [0.1], "v": [0.2], "f_ext": np.ones((1, 6))},
     **{f"{joint}.{method}": lambda: {} for joint in ("RevoluteJoint", "PrismaticJoint", "SphericalJoint", "FreeJoint",
                                                      "FixedJoint") for method in ("motion_subspace",)},
     "RevoluteJoint.transform": lambda: {"q": [0.1]}, "PrismaticJoint.transform": lambda: {"q": [0.1]},

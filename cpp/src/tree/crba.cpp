@@ -68,7 +68,12 @@ void one_dof_column(const Tree& tree, TreeWorkspace& ws, int i) {
 }  // namespace
 
 const Eigen::MatrixXd& crba(const Tree& tree, const Eigen::Ref<const Eigen::VectorXd>& q, TreeWorkspace& ws) {
-  link_poses(tree, q, ws);
+  tree.check_configuration(q);
+  return crba_unchecked(tree, q, ws);
+}
+
+const Eigen::MatrixXd& crba_unchecked(const Tree& tree, const Eigen::Ref<const Eigen::VectorXd>& q, TreeWorkspace& ws) {
+  link_poses_unchecked(tree, q, ws);
   const int n = tree.num_links();
   for (int i = 0; i < n; ++i) ws.I_C[i] = tree.link(i).I;
   ws.H.setZero();  // H_ij = 0 where neither of i, j supports the other

@@ -20,6 +20,10 @@ void link_poses(const Tree& tree, const Eigen::Ref<const Eigen::VectorXd>& q, Tr
   poses(tree, q, ws);
 }
 
+void link_poses_unchecked(const Tree& tree, const Eigen::Ref<const Eigen::VectorXd>& q, TreeWorkspace& ws) {
+  poses(tree, q, ws);
+}
+
 void forward_kinematics(const Tree& tree, const Eigen::Ref<const Eigen::VectorXd>& q,
                         const Eigen::Ref<const Eigen::VectorXd>& v, TreeWorkspace& ws) {
   tree.check_configuration(q);

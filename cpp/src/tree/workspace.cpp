@@ -9,6 +9,7 @@ TreeWorkspace::TreeWorkspace(const Tree& tree)
       a(tree.num_links()),
       c(tree.num_links()),
       f(tree.num_links()),
+      h(tree.num_links()),
       I_C(tree.num_links(), Matrix6d::Zero()),
       U(tree.num_links()),
       S_W(tree.num_links()),
@@ -17,6 +18,8 @@ TreeWorkspace::TreeWorkspace(const Tree& tree)
       zero_v(Eigen::VectorXd::Zero(tree.nv())),
       tau(tree.nv()),
       qdd(tree.nv()),
+      p(tree.nv()),
+      p_dot(tree.nv()),
       H(tree.nv(), tree.nv()) {
   for (int i = 0; i < tree.num_links(); ++i) {
     const int nv = tree.link(i).nv;

@@ -58,10 +58,10 @@ class DynamicSize {
     apply(y, [&](auto& f) { model_.template free_flow<Rotation>(f, h); });
   }
   // the hook only where the wrapped model has it (else ImplicitMidpoint's fixed point runs on VectorXd)
-  template <class M = Fixed, std::enable_if_t<has_implicit_midpoint_newton<M>::value, int> = 0>
-  bool implicit_midpoint_newton(Coordinates& y, double h) const {
+  template <class M = Fixed, std::enable_if_t<has_implicit_midpoint_step<M>::value, int> = 0>
+  bool implicit_midpoint_step(Coordinates& y, double h) const {
     bool converged = false;
-    apply(y, [&](auto& f) { converged = model_.implicit_midpoint_newton(f, h); });
+    apply(y, [&](auto& f) { converged = model_.implicit_midpoint_step(f, h); });
     return converged;
   }
 
@@ -87,8 +87,8 @@ class DynamicSize {
   Fixed model_;
 };
 
-static_assert(has_implicit_midpoint_newton<DynamicSize<RigidBodyModel<FullEuler>>>::value);
-static_assert(!has_implicit_midpoint_newton<DynamicSize<ParticleModel>>::value);
+static_assert(has_implicit_midpoint_step<DynamicSize<RigidBodyModel<FullEuler>>>::value);
+static_assert(!has_implicit_midpoint_step<DynamicSize<ParticleModel>>::value);
 
 // n steps of Integrator from y0 on `model`; the message of the first exception (ExactFreeFlow under a torque)
 template <class Integrator, class Model>

@@ -212,3 +212,58 @@ def configuration_rate(links, q, v):
             q_dot[iq:iq + 3] = quat_matrix(q[iq + 3:iq + 7]) @ v[iv + 3:iv + 6]
             q_dot[iq + 3:iq + 7] = quat_rate(q[iq + 3:iq + 7], v[iv:iv + 3])
     return q_dot
+
+
+def kinetic_energy_gradient(links, q, v):
+    """∂T/∂q (nv,) at fixed v for revolute, prismatic and fixed joints, from T = 1/2 sum_i V_i . M_i V_i in W.
+
+    Turning q_j moves the subtree of j by the world twist c_j = Ad(X_Wj) S_j: each of its columns c_k changes by
+    c_j x c_k (so V_i by c_j x (V_i - V_parent(j))) and each of its inertias M_i by -crm(c_j)^T M_i - M_i crm(c_j);
+    the sum is -sum over the subtree of (M_i V_i) . (c_j x V_parent(j)).
+    """
+    idx, _, nv = sizes(links)
+    J, T_W, columns = jacobians(links, q)
+    M = inertias_in_world(links, T_W)
+    V = [J[i] @ v for i in range(len(links))]
+    dT_dq = np.zeros(nv)
+    for j, l in enumerate(links):
+        if l["kind"] not in ("revolute", "prismatic"):
+            continue
+        V_parent = V[l["parent"]] if l["parent"] >= 0 else np.zeros(6)
+        c_j = columns[j][:, 0]
+        dT_dq[idx[j][1]] = -sum(M[i] @ V[i] @ (crm(c_j) @ V_parent) for i in range(len(links)) if j in supports(links, i))
+    return dT_dq
+
+
+def variational_midpoint_step(links, q0, v0, h, generalized_force):
+    """One step of the variational integrator of the midpoint discrete Lagrangian L_d = h T((q0 + q1)/2,
+    (q1 - q0)/h) with the midpoint forces (Marsden & West 2001, the discrete Lagrange-d'Alembert principle) for a
+    tree of revolute, prismatic and fixed joints: the discrete Euler-Lagrange equations p0 = -∂L_d/∂q0 - (h/2) Q,
+    p1 = ∂L_d/∂q1 + (h/2) Q with p = H(q) v, i.e.
+
+        H(q̄) v̄ = p0 + (h/2) F(q̄, v̄),  q̄ = q0 + (h/2) v̄,  q1 = q0 + h v̄,  H(q1) v1 = p0 + h F(q̄, v̄),
+
+    F = ∂T/∂q + Q, Q = generalized_force(q, v) (every applied force, gravity included). Solved by Newton's method
+    with a central-difference Jacobian (it sets only the rate of convergence) until the correction is at round-off.
+    """
+    p0 = mass_matrix(links, q0) @ v0
+
+    def force(q, v):
+        return kinetic_energy_gradient(links, q, v) + generalized_force(q, v)
+
+    def residual(v_bar):
+        q_bar = q0 + 0.5 * h * v_bar
+        return mass_matrix(links, q_bar) @ v_bar - p0 - 0.5 * h * force(q_bar, v_bar)
+
+    v_bar = v0.copy()
+    for _ in range(50):
+        eps = 1e-6 * (1.0 + np.abs(v_bar))
+        jac = np.column_stack([(residual(v_bar + e) - residual(v_bar - e)) / (2.0 * e[k])
+                               for k, e in enumerate(np.diag(eps))])
+        step = np.linalg.solve(jac, residual(v_bar))
+        v_bar -= step
+        if np.linalg.norm(step) <= 1e-14 * (1.0 + np.linalg.norm(v_bar)):  # Newton: the error is now ~ step²
+            break
+    q_bar = q0 + 0.5 * h * v_bar
+    q1 = q0 + h * v_bar
+    return q1, np.linalg.solve(mass_matrix(links, q1), p0 + h * force(q_bar, v_bar))

@@ -23,14 +23,15 @@
 // NOT keep the spatial L_W (the attitude drifts from the invariable plane by O(h²) per unit time).
 //
 // Written once against the model interface, with one optional hook. A model may offer
-//   bool implicit_midpoint_newton(Coordinates& y, double h) const
-// which takes the whole step by a Newton solve of the midpoint equations that uses its structure
-// (RigidBodyModel: the Newton iteration on ω̄ above, the Jacobian of Euler's equations
-// gyroscopic_jacobian, the attitude by the Cayley map midpoint_rotation, the stopping rule of
-// implicit_midpoint_solver) and returns whether it converged. A model without the hook (particle,
-// planar body, any model whose coordinates are a vector space or whose derivative has no stiff
-// gyroscopic part) gets the fixed-point iteration ȳ = y0 + (h/2) rate(ȳ) on its rate() with the same
-// tolerance and cap, then y1 = 2ȳ − y0 and project(y1).
+//   bool implicit_midpoint_step(Coordinates& y, double h) const
+// which takes the whole step by a solve of the midpoint equations that uses its structure and returns whether it
+// converged: RigidBodyModel's Newton iteration on ω̄ above (the Jacobian of Euler's equations gyroscopic_jacobian,
+// the attitude by the Cayley map midpoint_rotation, the stopping rule of implicit_midpoint_solver); the scene
+// model's fixed point below, which takes the rule in the canonical coordinates (q, p) of a tree of revolute,
+// prismatic and fixed joints (scene/scene_model.hpp: the variational midpoint method). A model without the hook
+// (particle, planar body, any model whose coordinates are a vector space or whose derivative has no stiff
+// gyroscopic part) gets the fixed-point iteration ȳ = y0 + (h/2) rate(ȳ) on its rate() with the same tolerance and
+// cap, then y1 = 2ȳ − y0 and project(y1).
 #pragma once
 #include "rigiddyn/integrators/workspace.hpp"
 #include "rigiddyn/models/model_interface.hpp"
@@ -55,11 +56,11 @@ inline Eigen::Quaterniond midpoint_rotation(const Eigen::Vector3d& h_w) {
   return Eigen::Quaterniond((1.0 - a2) * scale, 2.0 * scale * a.x(), 2.0 * scale * a.y(), 2.0 * scale * a.z());
 }
 
-// True for a model with the hook implicit_midpoint_newton(y, h) (see the top of this file).
+// True for a model with the hook implicit_midpoint_step(y, h) (see the top of this file).
 template <class Model, class = void>
-struct has_implicit_midpoint_newton : std::false_type {};
+struct has_implicit_midpoint_step : std::false_type {};
 template <class Model>
-struct has_implicit_midpoint_newton<Model, std::void_t<decltype(std::declval<const Model&>().implicit_midpoint_newton(
+struct has_implicit_midpoint_step<Model, std::void_t<decltype(std::declval<const Model&>().implicit_midpoint_step(
                                                std::declval<typename Model::Coordinates&>(), 0.0))>>
     : std::true_type {};
 
@@ -74,8 +75,8 @@ struct ImplicitMidpoint {
 
   template <class Model>
   static bool step(const Model& model, typename Model::Coordinates& y, double h, Workspace<Model>& w) {
-    if constexpr (has_implicit_midpoint_newton<Model>::value) {
-      return model.implicit_midpoint_newton(y, h);
+    if constexpr (has_implicit_midpoint_step<Model>::value) {
+      return model.implicit_midpoint_step(y, h);
     } else {  // fixed point ȳ = y0 + (h/2) f(ȳ)
       using namespace implicit_midpoint_solver;
       w.mid = y;

@@ -38,7 +38,7 @@
 //                                             integrators/free_flow_tags.hpp: DlmRotation<normalise>,
 //                                             ExactRotation)
 //   RecordedState record(y)                   a uniform description for simulate's recorder
-// and, optionally, bool implicit_midpoint_newton(y, h): its own solve of the implicit midpoint rule
+// and, optionally, bool implicit_midpoint_step(y, h): its own solve of the implicit midpoint rule
 // (integrators/implicit_midpoint.hpp), and bool kicks_merge(): true when two loads_kick at the same positions,
 // attitudes and t are one loads_kick of their summed h (the loads do not depend on the velocities, and no mass
 // moves between them), so the run may merge a step's closing kick with the next step's opening one

@@ -281,7 +281,7 @@ class RigidBodyModel {
   // velocity ω̄ with the Jacobian of Euler's equations (gyroscopic_jacobian, τ = h/2; the residual
   // multiplied by I), v̄ by the fixed point (the force does not depend on v), the attitude by the
   // Cayley map (unit |q| exactly). Returns true if the iteration converged within max_iterations.
-  bool implicit_midpoint_newton(Coordinates& y, double h) const {
+  bool implicit_midpoint_step(Coordinates& y, double h) const {
     using namespace implicit_midpoint_solver;
     const Eigen::Matrix3d I = inertia_matrix(euler_);
     const Eigen::Quaterniond q0(Eigen::Vector4d(y.template segment<4>(3)));

@@ -47,6 +47,7 @@
 // each run copies its own).
 #pragma once
 #include "rigiddyn/integrators/free_flow_tags.hpp"
+#include "rigiddyn/integrators/implicit_midpoint.hpp"
 #include "rigiddyn/scene/elements/fictitious_forces.hpp"
 #include "rigiddyn/scene/kinds/kind_list.hpp"
 #include "rigiddyn/scene/mass_flow.hpp"
@@ -166,6 +167,7 @@ class BasicSceneModel {
     find_coriolis_terms(bodies);
     wheel_count_ = rigiddyn::wheel_count(bodies);
     stage_.resize(coordinate_count());
+    mid_.resize(coordinate_count()), next_.resize(coordinate_count()), rate_.resize(coordinate_count());
     kicks_merge_ = !has_mass_flow() && std::none_of(terms_.begin(), terms_.end(), [](const Term& term) {
       return std::visit([](const auto& e) { return e.traits().velocity_dependent; }, term);
     });
@@ -253,6 +255,38 @@ class BasicSceneModel {
   void project(Coordinates& y) const {
     for_each_slot([&](const auto& s) { s.project(y.data()); });
     step_start_ = y[t_y_];  // the methods that end with project: the next step starts here
+  }
+
+  // The implicit midpoint step (integrators/implicit_midpoint.hpp's hook): the fixed point ȳ = y0 + (h/2) ẏ(ȳ) of
+  // every coordinate, with the tolerance and cap of that file, then y1 = 2ȳ − y0 and project; except the velocities
+  // of a tree of revolute, prismatic and fixed joints, which solve the rule in the tree's canonical coordinates
+  // (q, p = H(q) v) instead (kinds/tree_slot.hpp): the variational midpoint method, symplectic, which keeps the
+  // momentum of every symmetry of the scene (a joint about the axis of gravity: its p) and bounds the energy error
+  // over long runs. Returns whether the fixed point converged.
+  bool implicit_midpoint_step(Coordinates& y, double h) const {
+    using namespace implicit_midpoint_solver;
+    auto& trees = std::get<std::vector<detail::TreeSlot>>(slots_);
+    for (const detail::TreeSlot& tree : trees) {
+      if (tree.canonical) tree.start_canonical_midpoint(y.data());
+    }
+    mid_ = y;
+    bool converged = false;
+    for (int k = 0; k < max_iterations && !converged; ++k) {
+      rate(mid_, rate_);
+      next_ = y + (0.5 * h) * rate_;
+      for (const detail::TreeSlot& tree : trees) {
+        if (tree.canonical) tree.canonical_midpoint_velocity(y.data(), 0.5 * h, next_.data());
+      }
+      const double change = (next_ - mid_).norm();
+      mid_.swap(next_);
+      converged = change <= tolerance * mid_.norm();
+    }
+    y = 2.0 * mid_ - y;
+    for (const detail::TreeSlot& tree : trees) {
+      if (tree.canonical) tree.finish_canonical_midpoint(h, y.data());
+    }
+    project(y);
+    return converged;
   }
 
   // ξ = (velocities, accelerations per body; 1; element powers; mass-flow powers)
@@ -626,6 +660,7 @@ class BasicSceneModel {
   mutable std::vector<std::vector<BodyWrench>> element_wrenches_;  // per element (loads_kick's exact work)
   mutable std::vector<Eigen::Vector3d> reaction_W_, momentum_O_W_;  // per body, for the recorder only
   mutable Coordinates stage_;  // y ⊕ Θ of velocity_at
+  mutable Coordinates mid_, next_, rate_;  // implicit_midpoint_step's iterates and rate
   // the Coriolis terms (loads_kick's exact kick; empty without a turning frame) and the bodies' inertias for it
   struct CoriolisFrame {
     std::size_t element;

@@ -17,5 +17,7 @@ namespace rigiddyn {
 // H(q) [kg m^2, kg m or kg per pair of coordinates]; writes ws.H and returns it (valid until the next
 // call with ws). Throws std::invalid_argument naming q. No allocation.
 const Eigen::MatrixXd& crba(const Tree& tree, const Eigen::Ref<const Eigen::VectorXd>& q, TreeWorkspace& ws);
+// crba without the check of q (the scene's tree slot: a diverging run is caught by its run loop).
+const Eigen::MatrixXd& crba_unchecked(const Tree& tree, const Eigen::Ref<const Eigen::VectorXd>& q, TreeWorkspace& ws);
 
 }  // namespace rigiddyn

@@ -21,5 +21,7 @@ void forward_kinematics_unchecked(const Tree& tree, const Eigen::Ref<const Eigen
 
 // Fills ws.X_up and ws.X_W from q only (the link poses).
 void link_poses(const Tree& tree, const Eigen::Ref<const Eigen::VectorXd>& q, TreeWorkspace& ws);
+// link_poses without the checks (as forward_kinematics_unchecked).
+void link_poses_unchecked(const Tree& tree, const Eigen::Ref<const Eigen::VectorXd>& q, TreeWorkspace& ws);
 
 }  // namespace rigiddyn

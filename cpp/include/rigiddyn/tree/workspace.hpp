@@ -25,6 +25,7 @@ struct TreeWorkspace {
   std::vector<Motion> a;        // a_i: its spatial acceleration (n)
   std::vector<Motion> c;        // c_i = v_i x S_i qd_i: the velocity-product acceleration (ABA) (n)
   std::vector<Force> f;         // f_i: the force across joint i (RNEA), or p^A_i, the bias force (ABA) (n)
+  std::vector<Force> h;         // h^c_i: the momentum of the subtree at i, in L_i (generalized momentum) (n)
   std::vector<Matrix6d> I_C;    // I^c_i composite (CRBA) or I^A_i articulated (ABA) inertia, about L_i's origin (n)
   std::vector<Eigen::Matrix<double, 6, Eigen::Dynamic, Eigen::ColMajor, 6, 6>> U;  // U_i = I^A_i S_i (6, nv_i)
   std::vector<Eigen::Matrix<double, 6, Eigen::Dynamic, Eigen::ColMajor, 6, 6>> S_W;  // X_Wi S_i: S_i in W (CRBA) (6, nv_i)
@@ -33,6 +34,8 @@ struct TreeWorkspace {
   Eigen::VectorXd zero_v;       // (nv,) zeros: the acceleration of bias_forces
   Eigen::VectorXd tau;          // (nv,) the result of rnea and bias_forces
   Eigen::VectorXd qdd;          // (nv,) the result of aba
+  Eigen::VectorXd p;            // (nv,) the result of generalized_momentum
+  Eigen::VectorXd p_dot;        // (nv,) the result of generalized_momentum_rate
   Eigen::MatrixXd H;            // (nv, nv) the result of crba
 };
 

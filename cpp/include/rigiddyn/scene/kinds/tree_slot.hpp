@@ -8,7 +8,8 @@
 // Newton–Euler is the articulated-body algorithm (Featherstone Table 7.1, tree/aba.hpp) with each link's wrench
 // as its external force: f_ext,i = (τ_B + c_L × f_L, f_L), f_L = R_WLᵀ f_W, the moment taken to L's origin. The
 // tree's links have no free motion in closed form: compile refuses the splittings and the implicit gyroscopic
-// kick for it.
+// kick for it. A tree of revolute, prismatic and fixed joints (`canonical`) takes the implicit midpoint rule in its
+// canonical coordinates (q, p = H(q) v): the variational midpoint method (scene_model.hpp implicit_midpoint_step).
 #pragma once
 #include "rigiddyn/scene/body.hpp"
 #include "rigiddyn/scene/kinds/body_slot.hpp"
@@ -16,12 +17,16 @@
 #include "rigiddyn/so3/dexp_inv.hpp"
 #include "rigiddyn/so3/quaternion_kernels.hpp"
 #include "rigiddyn/tree/aba.hpp"
+#include "rigiddyn/tree/crba.hpp"
 #include "rigiddyn/tree/forward_kinematics.hpp"
+#include "rigiddyn/tree/momentum.hpp"
 #include "rigiddyn/tree/tree_link.hpp"
 #include "rigiddyn/tree/workspace.hpp"
 
+#include <Eigen/Cholesky>
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <memory>
 #include <stdexcept>
 #include <vector>
@@ -44,10 +49,13 @@ struct TreeSlot : SlotPlace {
   mutable TreeWorkspace ws;
   mutable std::vector<Force> f_ext;
   mutable Eigen::VectorXd q_unit, tau;  // q with unit quaternions; the joint forces (none: the elements load links)
+  bool canonical = false;  // every joint revolute, prismatic or fixed: q lies in a vector space, p = H(q) v
+  mutable Eigen::VectorXd p_0, p_dot, rhs;  // the midpoint step's p at its start, ṗ at its midpoint, a solve's p
+  mutable Eigen::LLT<Eigen::MatrixXd> H_llt;
 
   TreeSlot(int body, Eigen::Index at_y, Eigen::Index at_xi, std::shared_ptr<const Tree> tree_)
       : SlotPlace{body, at_y, at_xi}, tree(std::move(tree_)), links(tree->num_links()), nq(tree->nq()), nv(tree->nv()),
-        ws(*tree), f_ext(links), q_unit(nq), tau(Eigen::VectorXd::Zero(nv)) {
+        ws(*tree), f_ext(links), q_unit(nq), tau(Eigen::VectorXd::Zero(nv)), p_0(nv), p_dot(nv), rhs(nv), H_llt(nv) {
     for (const Link& link : tree->links()) {
       const TreeJoint::Kind kind = std::holds_alternative<SphericalJoint>(link.joint) ? TreeJoint::ball
                                    : std::holds_alternative<FreeJoint>(link.joint)    ? TreeJoint::free
@@ -56,6 +64,8 @@ struct TreeSlot : SlotPlace {
       joints.push_back({kind, link.idx_q, link.idx_v});
       c_L.push_back(link.inertia.com());
     }
+    canonical = std::none_of(joints.begin(), joints.end(),
+                             [](const TreeJoint& j) { return j.kind == TreeJoint::ball || j.kind == TreeJoint::free; });
   }
   Eigen::Index y_size() const { return nq + nv; }
   Eigen::Index xi_size() const { return 2 * nv; }
@@ -212,6 +222,36 @@ struct TreeSlot : SlotPlace {
       (&reaction_first)[i].setZero();
     }
   }
+  // The implicit midpoint rule in the canonical coordinates of a canonical tree (GNI VI.6: the variational
+  // integrator of the midpoint discrete Lagrangian L_d = h L((q0 + q1)/2, (q1 − q0)/h) with the midpoint forces,
+  // which is the midpoint rule on (q, p)):
+  //   q̄ = q0 + (h/2) v̄,   H(q̄) v̄ = p0 + (h/2) ṗ(q̄, v̄, t̄),   q1 = q0 + h v̄,   H(q1) v1 = p0 + h ṗ(q̄, v̄, t̄),
+  // ṗ = ∂T/∂q + Q by tree/momentum.hpp under the links' wrenches. Steps of the scene's fixed point:
+  // p0 = H(q0) v0 at the step's start y0
+  void start_canonical_midpoint(const double* y0) const {
+    static const std::vector<Force> none;
+    load_configuration(y0);
+    forward_kinematics_unchecked(*tree, q_unit, velocities(y0), ws);
+    generalized_momentum_after_kinematics(*tree, none, ws);
+    p_0 = ws.p;
+  }
+  // v̄ into the velocities of `next` and q̄ = q0 + (h/2) v̄ into its q (so that the next iterate is a consistent pair:
+  // a q̄ one iterate behind v̄ would slow the fixed point to a rate O(√h), H(q̄) depending on q̄ at first order), after
+  // the scene's rate at the iterate (its kinematics and links' wrenches in ws and f_ext, q_unit its q̄)
+  void canonical_midpoint_velocity(const double* y0, double half_h, double* next) const {
+    generalized_momentum_after_kinematics(*tree, f_ext, ws);
+    p_dot = ws.p_dot;
+    rhs = p_0 + half_h * p_dot;
+    solve_velocity(next);
+    for (int i = 0; i < nq; ++i) next[at_y + i] = y0[at_y + i] + half_h * next[at_y + nq + i];  // nq = nv here
+  }
+  // v1 into y1 = 2ȳ − y0, whose q is the step's end q1
+  void finish_canonical_midpoint(double h, double* y1) const {
+    load_configuration(y1);
+    rhs = p_0 + h * p_dot;
+    solve_velocity(y1);
+  }
+
   // from and to the links' JointStates (the states of bodies body … body + links − 1)
   void coordinates(const BodyState& first, double* y) const {
     for (int i = 0; i < links; ++i) {
@@ -236,6 +276,12 @@ struct TreeSlot : SlotPlace {
   Eigen::Index attitude_y() const { return -1; }  // the links' attitudes are not coordinates
 
  private:
+  // v = H(q_unit)⁻¹ rhs (CRBA and a Cholesky solve, no allocation) into the velocities of y
+  void solve_velocity(double* y) const {
+    H_llt.compute(crba_unchecked(*tree, q_unit, ws));
+    H_llt.solveInPlace(rhs);
+    Eigen::Map<Eigen::VectorXd>(y + at_y + nq, nv) = rhs;
+  }
   // q ← q ⊗ exp(h ω) (exact for a constant ω)
   static void turn_quaternion(double* q, const Eigen::Vector3d& w, double h) {
     const double q0[4] = {q[0], q[1], q[2], q[3]};
