@@ -212,6 +212,23 @@ def test_the_variational_midpoint_keeps_a_symmetrys_momentum():
     assert np.max(np.abs(p_z["rk4"] - p_z["rk4"][0])) > 1e-7 * p0
 
 
+def test_a_python_force_sees_each_links_attitude():
+    """A tree fills its links' quaternions for a user's force (the other elements read the rotation matrices): a
+    PythonForce called at the start sees each link's q_WB as the records hold it."""
+    tree, scene, start = turntable_pendulum()
+    seen = {}
+
+    def record_attitude(t, body, p_W, q_WB, v_W, w_B):
+        seen.setdefault(body, np.array(q_WB))
+        return (0.0, 0.0, 0.0), (0.0, 0.0, 0.0)
+
+    scene.add(rd.PythonForce(record_attitude))
+    result = rd.simulate(scene, start, 1e-2, duration=0.02, method="rk4")
+    for body in range(tree.num_links):
+        assert np.allclose(seen[body], result.q_WB[0, body], rtol=0.0, atol=1e-15)
+    assert np.allclose(result.q_WB[0, 1], [0.0, np.sin(0.35), 0.0, np.cos(0.35)], rtol=0.0, atol=1e-15)  # 0.7 about y
+
+
 def test_the_variational_midpoint_bounds_the_energy_error_of_a_chaotic_run():
     """Backward error analysis (Hairer, Lubich & Wanner, GNI IX.8): a symplectic method keeps a modified energy
     H + h² H₂ + ... to O(h^N) over exponentially long times, so its energy error stays within the range of h² H₂ over

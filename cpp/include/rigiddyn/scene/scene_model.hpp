@@ -72,6 +72,9 @@
 
 namespace rigiddyn {
 
+template <class F>
+class CustomForceTerm;  // scene/custom_force.hpp
+
 namespace detail {
 
 // Whether a term or a body's slot is piecewise constant in time (it has set_time(t)).
@@ -93,6 +96,16 @@ struct has_scalar_command : std::false_type {};
 template <class Term>
 struct has_scalar_command<Term, std::void_t<decltype(std::declval<Term&>().command_scalar(0.0, 0.0, 0.0, 0.0))>>
     : std::true_type {};
+
+// Whether a term hands the bodies' kinematics to a user's function (PythonForce, custom_force), which may read any
+// q_WB: the tree slots then fill their links' quaternions at every evaluation (they leave them to the records
+// otherwise: every other element reads R_WB).
+template <class Term>
+struct is_user_force : std::false_type {};
+template <>
+struct is_user_force<FunctionForceTerm> : std::true_type {};
+template <class F>
+struct is_user_force<CustomForceTerm<F>> : std::true_type {};
 
 // Whether a term turns vectors between a body's B and W (reads R_WB, or gives a torque that the impulses turn to W):
 // it declares reads_attitude or has_torque, or it takes a controller's command (which may turn it at run time).
@@ -174,6 +187,10 @@ class BasicSceneModel {
     turns_vectors_ = std::any_of(terms_.begin(), terms_.end(), [](const Term& term) {
       return std::visit([](const auto& e) { return detail::turns_vectors(e); }, term);
     });
+    const bool user_force = std::any_of(terms_.begin(), terms_.end(), [](const Term& term) {
+      return std::visit([](const auto& e) { return detail::is_user_force<std::decay_t<decltype(e)>>::value; }, term);
+    });
+    for (detail::TreeSlot& tree : std::get<std::vector<detail::TreeSlot>>(slots_)) tree.fill_quaternions = user_force;
   }
 
   Eigen::Index coordinate_count() const { return t_y_ + 1 + extra_count(); }
@@ -625,7 +642,9 @@ class BasicSceneModel {
     for_each_slot([&](const auto& s) {
       BodyKinematics& k = kinematics_[s.body];
       s.kinematics(y.data(), clock, k);
-      if (turns_vectors_) k.R_WB = k.q_WB.toRotationMatrix();
+      if constexpr (!std::is_same_v<std::decay_t<decltype(s)>, detail::TreeSlot>) {  // a tree's sets its links' R_WB
+        if (turns_vectors_) k.R_WB = k.q_WB.toRotationMatrix();
+      }
     });
   }
 

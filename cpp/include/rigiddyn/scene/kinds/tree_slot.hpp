@@ -50,6 +50,7 @@ struct TreeSlot : SlotPlace {
   mutable std::vector<Force> f_ext;
   mutable Eigen::VectorXd q_unit, tau;  // q with unit quaternions; the joint forces (none: the elements load links)
   bool canonical = false;  // every joint revolute, prismatic or fixed: q lies in a vector space, p = H(q) v
+  bool fill_quaternions = true;  // each evaluation sets the links' q_WB (a user's force may read them; the records do)
   mutable Eigen::VectorXd p_0, p_dot, rhs;  // the midpoint step's p at its start, ṗ at its midpoint, a solve's p
   mutable Eigen::LLT<Eigen::MatrixXd> H_llt;
 
@@ -96,7 +97,7 @@ struct TreeSlot : SlotPlace {
     for (int i = 0; i < links; ++i) {
       const Eigen::Matrix3d& R_WL = ws.X_W[i].rotation();
       k[i].R_WB = R_WL;
-      k[i].q_WB = Eigen::Quaterniond(R_WL);
+      if (fill_quaternions) k[i].q_WB = Eigen::Quaterniond(R_WL);
       k[i].w_B = ws.v[i].angular;
       k[i].p_W = ws.X_W[i].translation() + R_WL * c_L[i];
       k[i].v_W = R_WL * (ws.v[i].linear + cross_3(ws.v[i].angular, c_L[i]));
@@ -208,12 +209,13 @@ struct TreeSlot : SlotPlace {
   double loads_kick(double*, BodyKinematics&, const BodyWrench&, double, const Kicks&) const {
     throw std::logic_error("loads_kick: the splitting methods are refused for a tree (compile)");
   }
-  // per link: T = ½ m |v|² + ½ ω·I_C ω, H_C = R_WL I_C ω (its momentum_O_W: about its centre of mass); no pivot
-  // reaction is recorded (a fixed base's reaction is the tree's, not a link's)
-  void record(const double*, const BodyKinematics& first, const BodyWrench&, RecordSums& sums,
+  // per link: its q_WB (of R_WB), T = ½ m |v|² + ½ ω·I_C ω, H_C = R_WL I_C ω (its momentum_O_W: about its centre of
+  // mass); no pivot reaction is recorded (a fixed base's reaction is the tree's, not a link's)
+  void record(const double*, BodyKinematics& first, const BodyWrench&, RecordSums& sums,
               Eigen::Vector3d& momentum_first, Eigen::Vector3d& reaction_first) const {
-    const BodyKinematics* k = &first;
+    BodyKinematics* k = &first;
     for (int i = 0; i < links; ++i) {
+      k[i].q_WB = Eigen::Quaterniond(k[i].R_WB);
       const Eigen::Vector3d h_L = tree->link(i).inertia.inertia_com() * k[i].w_B;
       sums.add_translation(k[i]);
       sums.T += 0.5 * k[i].w_B.dot(h_L);
