@@ -40,9 +40,9 @@ const std::vector<MethodInfo>& method_table() {
        "symmetric; evaluations = typical Newton iterations (one evaluation + one 3x3 solve each); the spatial L "
        "direction drifts O(h^2); A-stable, but beyond dt|w| ~ 3 the Newton iteration may stop unconverged "
        "(measured: converged up to dt|w| = 3 on six bodies, failed from 3.5 near the separatrix) and energy "
-       "and |L| are then lost; on a tree of revolute, prismatic and fixed joints it runs in the canonical "
-       "coordinates (q, p = H(q) v): the variational midpoint method, symplectic (a symmetry's momentum kept to "
-       "round-off, no energy drift)",
+       "and |L| are then lost; on a kinematic tree it is the variational midpoint method (the midpoint discrete "
+       "Lagrangian on the curve of constant joint velocity): symplectic, a symmetry's momentum kept to round-off, "
+       "no energy drift",
        3.0, false},
       {Method::splitting_dlm, "splitting_dlm", 2, 2,
        "|L|, spatial L and unit |q| (SO(3)) to round-off (an unbiased walk: <= 10 eps sqrt(N) after N steps); "

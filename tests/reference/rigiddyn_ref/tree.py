@@ -22,6 +22,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from rigiddyn_ref import so3
+
 KINDS = {"revolute": (1, 1), "prismatic": (1, 1), "spherical": (4, 3), "free": (7, 6), "fixed": (0, 0)}
 
 
@@ -267,3 +269,85 @@ def variational_midpoint_step(links, q0, v0, h, generalized_force):
     q_bar = q0 + 0.5 * h * v_bar
     q1 = q0 + h * v_bar
     return q1, np.linalg.solve(mass_matrix(links, q1), p0 + h * force(q_bar, v_bar))
+
+
+def _retract(links, q0, phi):
+    """q0 ⊕ φ joint by joint: angles and offsets added, a quaternion q0 ⊗ exp(φ_ω) (the body frame), a free joint's
+    position p0 + φ_p in the parent's frame."""
+    idx, _, _ = sizes(links)
+    q = q0.copy()
+    for l, (iq, iv) in zip(links, idx):
+        if l["kind"] in ("revolute", "prismatic"):
+            q[iq] = q0[iq] + phi[iv]
+        elif l["kind"] == "spherical":
+            q[iq:iq + 4] = so3.quat_multiply(q0[iq:iq + 4], so3.rotvec_to_quat(phi[iv:iv + 3]))
+        elif l["kind"] == "free":
+            q[iq:iq + 3] = q0[iq:iq + 3] + phi[iv + 3:iv + 6]
+            q[iq + 3:iq + 7] = so3.quat_multiply(q0[iq + 3:iq + 7], so3.rotvec_to_quat(phi[iv:iv + 3]))
+    return q
+
+
+def group_discrete_lagrangian(links, qa, qb, h, gravity):
+    """L_d(qa, qb) = h L(q̄, w) on the curve of constant joint velocity from qa to qb: per rotation (ball joint, a free
+    joint's attitude) ξ = log(R_aᵀ R_b), its midpoint R_a exp(ξ/2) and body rate w = ξ/h; per vector part the
+    straight line, its midpoint and slope; a free joint's v_L = R̄ᵀ (p_b − p_a)/h. L = ½ vᵀ H v − V of gravity."""
+    idx, _, nv = sizes(links)
+    half, w = np.zeros(nv), np.zeros(nv)
+    for l, (iq, iv) in zip(links, idx):
+        if l["kind"] in ("revolute", "prismatic"):
+            half[iv], w[iv] = 0.5 * (qb[iq] - qa[iq]), (qb[iq] - qa[iq]) / h
+        elif l["kind"] in ("spherical", "free"):
+            at = iq if l["kind"] == "spherical" else iq + 3
+            xi = so3.quat_to_rotvec(so3.quat_multiply(so3.quat_inverse(qa[at:at + 4]), qb[at:at + 4]))
+            half[iv:iv + 3], w[iv:iv + 3] = 0.5 * xi, xi / h
+            if l["kind"] == "free":
+                dp = qb[iq:iq + 3] - qa[iq:iq + 3]
+                R_bar = quat_matrix(so3.quat_multiply(qa[at:at + 4], so3.rotvec_to_quat(0.5 * xi)))
+                half[iv + 3:iv + 6], w[iv + 3:iv + 6] = 0.5 * dp, R_bar.T @ dp / h
+    q_bar = _retract(links, qa, half)
+    return h * (0.5 * w @ mass_matrix(links, q_bar) @ w - potential_energy(links, q_bar, gravity))
+
+
+def _chart_momentum(links, q, p):
+    """The momentum conjugate to the chart q ⊕ φ at φ = 0 of the body momentum p: p itself but a free joint's
+    linear part, R p_v (the chart moves its position in the parent's frame)."""
+    idx, _, _ = sizes(links)
+    out = p.copy()
+    for l, (iq, iv) in zip(links, idx):
+        if l["kind"] == "free":
+            out[iv + 3:iv + 6] = quat_matrix(q[iq + 3:iq + 7]) @ p[iv + 3:iv + 6]
+    return out
+
+
+def group_variational_midpoint_step(links, q0, v0, h, gravity, eps=1e-6):
+    """One step of the variational integrator of group_discrete_lagrangian for any joints: the discrete Legendre
+    transforms p0 = −D₁L_d(q0, q1), p1 = D₂L_d(q0, q1) along body perturbations q ⊕ δ, by central differences of
+    step eps (error ~ eps² |L_d'''| + eps_machine |L_d| / eps), the first solved for q1 = q0 ⊕ φ₁ by a simplified
+    Newton iteration (its Jacobian by differences too, at the first guess: it sets only the rate of convergence),
+    p = H(q) v."""
+    nv = len(v0)
+    zero = np.zeros(nv)
+
+    def gradient(f):
+        return np.array([(f(zero + e) - f(zero - e)) / (2.0 * eps) for e in np.eye(nv) * eps])
+
+    p0 = _chart_momentum(links, q0, mass_matrix(links, q0) @ v0)
+
+    def residual(phi1):
+        q1 = _retract(links, q0, phi1)
+        return -gradient(lambda d: group_discrete_lagrangian(links, _retract(links, q0, d), q1, h, gravity)) - p0
+
+    phi1 = h * v0.copy()
+    jac = np.column_stack([(residual(phi1 + e) - residual(phi1 - e)) / (2.0 * eps) for e in np.eye(nv) * eps])
+    for _ in range(30):  # the simplified Newton iteration: its Jacobian at the first guess
+        step = np.linalg.solve(jac, residual(phi1))
+        phi1 -= step
+        if np.linalg.norm(step) <= 1e-13 * (1.0 + np.linalg.norm(phi1)):
+            break
+    q1 = _retract(links, q0, phi1)
+    p1 = gradient(lambda d: group_discrete_lagrangian(links, q0, _retract(links, q1, d), h, gravity))
+    idx, _, _ = sizes(links)
+    for l, (iq, iv) in zip(links, idx):  # back to body momenta
+        if l["kind"] == "free":
+            p1[iv + 3:iv + 6] = quat_matrix(q1[iq + 3:iq + 7]).T @ p1[iv + 3:iv + 6]
+    return q1, np.linalg.solve(mass_matrix(links, q1), p1)

@@ -275,33 +275,26 @@ class BasicSceneModel {
   }
 
   // The implicit midpoint step (integrators/implicit_midpoint.hpp's hook): the fixed point ȳ = y0 + (h/2) ẏ(ȳ) of
-  // every coordinate, with the tolerance and cap of that file, then y1 = 2ȳ − y0 and project; except the velocities
-  // of a tree of revolute, prismatic and fixed joints, which solve the rule in the tree's canonical coordinates
-  // (q, p = H(q) v) instead (kinds/tree_slot.hpp): the variational midpoint method, symplectic, which keeps the
-  // momentum of every symmetry of the scene (a joint about the axis of gravity: its p) and bounds the energy error
-  // over long runs. Returns whether the fixed point converged.
+  // every coordinate, with the tolerance and cap of that file, then y1 = 2ȳ − y0 and project; except a tree's q and
+  // v, which take the variational midpoint method instead (kinds/tree_slot.hpp): symplectic, it keeps the momentum of
+  // every symmetry of the scene (a floating tree's momenta, a hinge about the axis of gravity) and bounds the energy
+  // error over long runs. Returns whether the fixed point converged.
   bool implicit_midpoint_step(Coordinates& y, double h) const {
     using namespace implicit_midpoint_solver;
     auto& trees = std::get<std::vector<detail::TreeSlot>>(slots_);
-    for (const detail::TreeSlot& tree : trees) {
-      if (tree.canonical) tree.start_canonical_midpoint(y.data());
-    }
     mid_ = y;
+    for (const detail::TreeSlot& tree : trees) tree.start_variational_midpoint(y.data(), 0.5 * h, mid_.data());
     bool converged = false;
     for (int k = 0; k < max_iterations && !converged; ++k) {
       rate(mid_, rate_);
       next_ = y + (0.5 * h) * rate_;
-      for (const detail::TreeSlot& tree : trees) {
-        if (tree.canonical) tree.canonical_midpoint_velocity(y.data(), 0.5 * h, next_.data());
-      }
+      for (const detail::TreeSlot& tree : trees) tree.variational_midpoint_iterate(mid_.data(), 0.5 * h, next_.data());
       const double change = (next_ - mid_).norm();
       mid_.swap(next_);
       converged = change <= tolerance * mid_.norm();
     }
     y = 2.0 * mid_ - y;
-    for (const detail::TreeSlot& tree : trees) {
-      if (tree.canonical) tree.finish_canonical_midpoint(h, y.data());
-    }
+    for (const detail::TreeSlot& tree : trees) tree.finish_variational_midpoint(h, y.data());
     project(y);
     return converged;
   }

@@ -8,13 +8,15 @@
 // Newton–Euler is the articulated-body algorithm (Featherstone Table 7.1, tree/aba.hpp) with each link's wrench
 // as its external force: f_ext,i = (τ_B + c_L × f_L, f_L), f_L = R_WLᵀ f_W, the moment taken to L's origin. The
 // tree's links have no free motion in closed form: compile refuses the splittings and the implicit gyroscopic
-// kick for it. A tree of revolute, prismatic and fixed joints (`canonical`) takes the implicit midpoint rule in its
-// canonical coordinates (q, p = H(q) v): the variational midpoint method (scene_model.hpp implicit_midpoint_step).
+// kick for it. The implicit midpoint rule takes a tree as its variational midpoint method (scene_model.hpp
+// implicit_midpoint_step; the steps below).
 #pragma once
 #include "rigiddyn/scene/body.hpp"
 #include "rigiddyn/scene/kinds/body_slot.hpp"
 #include "rigiddyn/scene/scene_simulation.hpp"
 #include "rigiddyn/so3/dexp_inv.hpp"
+#include "rigiddyn/so3/exp_log.hpp"
+#include "rigiddyn/so3/jacobian.hpp"
 #include "rigiddyn/so3/quaternion_kernels.hpp"
 #include "rigiddyn/tree/aba.hpp"
 #include "rigiddyn/tree/crba.hpp"
@@ -49,14 +51,16 @@ struct TreeSlot : SlotPlace {
   mutable TreeWorkspace ws;
   mutable std::vector<Force> f_ext;
   mutable Eigen::VectorXd q_unit, tau;  // q with unit quaternions; the joint forces (none: the elements load links)
-  bool canonical = false;  // every joint revolute, prismatic or fixed: q lies in a vector space, p = H(q) v
   bool fill_quaternions = true;  // each evaluation sets the links' q_WB (a user's force may read them; the records do)
-  mutable Eigen::VectorXd p_0, p_dot, rhs;  // the midpoint step's p at its start, ṗ at its midpoint, a solve's p
+  // the variational midpoint step's q and p at its start, the chart points φ̄ of q̄ and φ₁ of q₁, F and p̄ at q̄, a
+  // solve's right side
+  mutable Eigen::VectorXd q_0, p_0, phi, phi_1, force, p_bar, rhs;
   mutable Eigen::LLT<Eigen::MatrixXd> H_llt;
 
   TreeSlot(int body, Eigen::Index at_y, Eigen::Index at_xi, std::shared_ptr<const Tree> tree_)
       : SlotPlace{body, at_y, at_xi}, tree(std::move(tree_)), links(tree->num_links()), nq(tree->nq()), nv(tree->nv()),
-        ws(*tree), f_ext(links), q_unit(nq), tau(Eigen::VectorXd::Zero(nv)), p_0(nv), p_dot(nv), rhs(nv), H_llt(nv) {
+        ws(*tree), f_ext(links), q_unit(nq), tau(Eigen::VectorXd::Zero(nv)), q_0(nq), p_0(nv), phi(nv), phi_1(nv), force(nv),
+        p_bar(nv), rhs(nv), H_llt(nv) {
     for (const Link& link : tree->links()) {
       const TreeJoint::Kind kind = std::holds_alternative<SphericalJoint>(link.joint) ? TreeJoint::ball
                                    : std::holds_alternative<FreeJoint>(link.joint)    ? TreeJoint::free
@@ -65,8 +69,6 @@ struct TreeSlot : SlotPlace {
       joints.push_back({kind, link.idx_q, link.idx_v});
       c_L.push_back(link.inertia.com());
     }
-    canonical = std::none_of(joints.begin(), joints.end(),
-                             [](const TreeJoint& j) { return j.kind == TreeJoint::ball || j.kind == TreeJoint::free; });
   }
   Eigen::Index y_size() const { return nq + nv; }
   Eigen::Index xi_size() const { return 2 * nv; }
@@ -224,33 +226,80 @@ struct TreeSlot : SlotPlace {
       (&reaction_first)[i].setZero();
     }
   }
-  // The implicit midpoint rule in the canonical coordinates of a canonical tree (GNI VI.6: the variational
-  // integrator of the midpoint discrete Lagrangian L_d = h L((q0 + q1)/2, (q1 − q0)/h) with the midpoint forces,
-  // which is the midpoint rule on (q, p)):
-  //   q̄ = q0 + (h/2) v̄,   H(q̄) v̄ = p0 + (h/2) ṗ(q̄, v̄, t̄),   q1 = q0 + h v̄,   H(q1) v1 = p0 + h ṗ(q̄, v̄, t̄),
-  // ṗ = ∂T/∂q + Q by tree/momentum.hpp under the links' wrenches. Steps of the scene's fixed point:
-  // p0 = H(q0) v0 at the step's start y0
-  void start_canonical_midpoint(const double* y0) const {
+  // The variational midpoint method (Marsden & West 2001; GNI VI.6) on the tree's configuration group, each joint
+  // its own factor: R for a revolute or prismatic joint, SO(3) for a ball joint, SO(3) × R³ for a free joint (its
+  // rotation and its position p in J). A step from q₀ to q₁ follows the curve of constant joint velocity: ξ = log(R₀ᵀ
+  // R₁) for a rotation (its body rate ξ/h), the straight line for a vector part; the discrete Lagrangian is the
+  // midpoint rule on it, L_d(q₀, q₁) = h L(q̄, w), q̄ = q₀ ⊕ ξ/2 (q₀ ⊗ exp(ξ/2), (p₀ + p₁)/2, …), w = ξ/h (a free
+  // joint's v_L = R̄ᵀ (p₁ − p₀)/h), with the forces at q̄ (the discrete Lagrange–d'Alembert principle). Its discrete
+  // Euler–Lagrange equations p₀ = −D₁L_d, p₁ = D₂L_d in the body momenta p = H(q) v (tree/momentum.hpp), with
+  // F = ∂T/∂q + Q at q̄ along body perturbations at fixed v (ws.p_dot of generalized_momentum_after_kinematics), J_l
+  // the left Jacobian (so3/jacobian.hpp; exp(ξ + δ) = exp(ξ) exp(J_l(ξ)ᵀ δ)) and φ̄ = ξ/2, read per joint:
+  //   revolute, prismatic:  p̄ = p₀ + (h/2) F,                               p₁ = p₀ + h F
+  //   ball:                 p̄ = J_l(ξ)ᵀ (p₀ + h exp(φ̄) F) − (h/2) J_l(φ̄) F,  J_l(ξ) p₁ = p̄ + (h/2) J_l(φ̄) F
+  //   free, position:       p̄_v = R̄ᵀ R₀ p₀_v + (h/2) F_v,                  p₁_v = R₁ᵀ R̄ (p̄_v + (h/2) F_v)
+  //   free, rotation:       as a ball joint with F_ω − v̄_L × p̄_v (v_L depends on R̄),
+  // then H(q̄) v̄ = p̄ (v̄ = w). L_d is invariant under the symmetries of L (a rigid motion of a floating tree moves
+  // q₀ and q₁ alike), so the discrete Noether theorem keeps their momenta (a floating tree's linear and angular
+  // momenta, a vertical hinge's under gravity) to round-off; the map is symplectic and symmetric, of order 2; on a
+  // tree of revolute, prismatic and fixed joints it is the midpoint rule on (q, p). Steps of the scene's fixed point:
+  // p₀ = H(q₀) v₀ at the step's start y0, and the first iterate (q₀ ⊕ φ̄, v₀) with φ̄ = (h/2) ψ(v₀) into mid (a
+  // consistent pair: from φ̄ = 0 the first iterate would miss the rotations' terms in ξ, a larger first correction)
+  void start_variational_midpoint(const double* y0, double half_h, double* mid) const {
     static const std::vector<Force> none;
     load_configuration(y0);
+    q_0 = Eigen::Map<const Eigen::VectorXd>(y0 + at_y, nq);
     forward_kinematics_unchecked(*tree, q_unit, velocities(y0), ws);
     generalized_momentum_after_kinematics(*tree, none, ws);
     p_0 = ws.p;
+    chart_point_of(y0 + at_y + nq, half_h);
+    write_chart_point(phi, mid);
   }
-  // v̄ into the velocities of `next` and q̄ = q0 + (h/2) v̄ into its q (so that the next iterate is a consistent pair:
-  // a q̄ one iterate behind v̄ would slow the fixed point to a rate O(√h), H(q̄) depending on q̄ at first order), after
-  // the scene's rate at the iterate (its kinematics and links' wrenches in ws and f_ext, q_unit its q̄)
-  void canonical_midpoint_velocity(const double* y0, double half_h, double* next) const {
+  // One iterate, after the scene's rate at ȳ = mid (its kinematics and links' wrenches in ws and f_ext, q_unit its
+  // q̄ = q_0 ⊕ φ̄): p̄ from F(ȳ) by the equations above, v̄ = H(q̄)⁻¹ p̄ into `next` and, with φ̄ = (h/2) ψ for the
+  // chart rate ψ of v̄ (v̄; a free joint's R̄ v̄_L for its position), its configuration q_0 ⊕ φ̄ (the pair consistent: a
+  // q̄ one iterate behind v̄ would slow the fixed point to a rate O(√h), H(q̄) depending on q̄ at first order)
+  void variational_midpoint_iterate(const double* mid, double half_h, double* next) const {
     generalized_momentum_after_kinematics(*tree, f_ext, ws);
-    p_dot = ws.p_dot;
-    rhs = p_0 + half_h * p_dot;
+    force = ws.p_dot;
+    const double* v_bar = mid + at_y + nq;
+    for (const TreeJoint& j : joints) {
+      if (j.kind == TreeJoint::vector) p_bar[j.v] = p_0[j.v] + half_h * force[j.v];
+      if (j.kind == TreeJoint::free) {
+        const Eigen::Matrix3d R_0 = start_rotation_of(j), R_bar = R_0 * rotvec_to_matrix(phi.segment<3>(j.v));
+        p_bar.segment<3>(j.v + 3) = R_bar.transpose() * (R_0 * p_0.segment<3>(j.v + 3)) + half_h * force.segment<3>(j.v + 3);
+        force.segment<3>(j.v) -= three(v_bar + j.v + 3).cross(p_bar.segment<3>(j.v + 3));  // F_ω − v̄_L × p̄_v
+      }
+      if (j.kind == TreeJoint::ball || j.kind == TreeJoint::free) {  // ξ = 2φ̄
+        const Eigen::Vector3d phi_j = phi.segment<3>(j.v), F = force.segment<3>(j.v);
+        p_bar.segment<3>(j.v) = left_jacobian(2.0 * phi_j).transpose() *
+                                    (p_0.segment<3>(j.v) + (2.0 * half_h) * (rotvec_to_matrix(phi_j) * F)) -
+                                half_h * (left_jacobian(phi_j) * F);
+      }
+    }
+    rhs = p_bar;
     solve_velocity(next);
-    for (int i = 0; i < nq; ++i) next[at_y + i] = y0[at_y + i] + half_h * next[at_y + nq + i];  // nq = nv here
+    chart_point_of(next + at_y + nq, half_h);
+    write_chart_point(phi, next);
   }
-  // v1 into y1 = 2ȳ − y0, whose q is the step's end q1
-  void finish_canonical_midpoint(double h, double* y1) const {
+  // q₁ = q_0 ⊕ 2φ̄ and v₁ = H(q₁)⁻¹ p₁ into y1 (whose other coordinates are 2ȳ − y0)
+  void finish_variational_midpoint(double h, double* y1) const {
+    phi_1 = 2.0 * phi;
+    write_chart_point(phi_1, y1);
+    for (const TreeJoint& j : joints) {
+      if (j.kind == TreeJoint::vector) p_bar[j.v] = p_0[j.v] + h * force[j.v];
+      if (j.kind == TreeJoint::free) {
+        const Eigen::Matrix3d R_0 = start_rotation_of(j);
+        const Eigen::Matrix3d R_bar = R_0 * rotvec_to_matrix(phi.segment<3>(j.v)), R_1 = R_0 * rotvec_to_matrix(phi_1.segment<3>(j.v));
+        p_bar.segment<3>(j.v + 3) = R_1.transpose() * (R_bar * (p_bar.segment<3>(j.v + 3) + 0.5 * h * force.segment<3>(j.v + 3)));
+      }
+      if (j.kind == TreeJoint::ball || j.kind == TreeJoint::free) {
+        const Eigen::Vector3d p_tilde = p_bar.segment<3>(j.v) + 0.5 * h * (left_jacobian(phi.segment<3>(j.v)) * force.segment<3>(j.v));
+        p_bar.segment<3>(j.v) = left_jacobian(phi_1.segment<3>(j.v)).partialPivLu().solve(p_tilde);
+      }
+    }
     load_configuration(y1);
-    rhs = p_0 + h * p_dot;
+    rhs = p_bar;
     solve_velocity(y1);
   }
 
@@ -283,6 +332,34 @@ struct TreeSlot : SlotPlace {
     H_llt.compute(crba_unchecked(*tree, q_unit, ws));
     H_llt.solveInPlace(rhs);
     Eigen::Map<Eigen::VectorXd>(y + at_y + nq, nv) = rhs;
+  }
+  // φ̄ = (h/2) ψ for the joint velocities v: the chart rate ψ = v, a free joint's position rate R̄ v_L (R̄ = R₀ exp(φ̄_ω))
+  void chart_point_of(const double* v, double half_h) const {
+    for (const TreeJoint& j : joints) {
+      if (j.kind == TreeJoint::vector) phi[j.v] = half_h * v[j.v];
+      if (j.kind == TreeJoint::ball || j.kind == TreeJoint::free) phi.segment<3>(j.v) = half_h * three(v + j.v);
+      if (j.kind == TreeJoint::free) {
+        const Eigen::Matrix3d R_bar = start_rotation_of(j) * rotvec_to_matrix(phi.segment<3>(j.v));
+        phi.segment<3>(j.v + 3) = half_h * (R_bar * three(v + j.v + 3));
+      }
+    }
+  }
+  // R_JL of a free joint in q_0
+  Eigen::Matrix3d start_rotation_of(const TreeJoint& j) const {
+    const double* x = q_0.data() + j.q + 3;
+    return Eigen::Quaterniond(x[3], x[0], x[1], x[2]).toRotationMatrix();
+  }
+  // the q of y ← q_0 ⊕ φ, the chart of the step (the retraction of retract: vector parts added, q_0 ⊗ exp(φ_ω))
+  void write_chart_point(const Eigen::VectorXd& chart, double* y) const {
+    double* q = y + at_y;
+    for (const TreeJoint& j : joints) {
+      if (j.kind == TreeJoint::vector) q[j.q] = q_0[j.q] + chart[j.v];
+      if (j.kind == TreeJoint::ball) times_exp(q_0.data() + j.q, chart.segment<3>(j.v), q + j.q);
+      if (j.kind == TreeJoint::free) {
+        for (int i = 0; i < 3; ++i) q[j.q + i] = q_0[j.q + i] + chart[j.v + 3 + i];
+        times_exp(q_0.data() + j.q + 3, chart.segment<3>(j.v), q + j.q + 3);
+      }
+    }
   }
   // q ← q ⊗ exp(h ω) (exact for a constant ω)
   static void turn_quaternion(double* q, const Eigen::Vector3d& w, double h) {
