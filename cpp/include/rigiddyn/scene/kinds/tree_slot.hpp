@@ -60,7 +60,7 @@ struct TreeSlot : SlotPlace {
   TreeSlot(int body, Eigen::Index at_y, Eigen::Index at_xi, std::shared_ptr<const Tree> tree_)
       : SlotPlace{body, at_y, at_xi}, tree(std::move(tree_)), links(tree->num_links()), nq(tree->nq()), nv(tree->nv()),
         ws(*tree), f_ext(links), q_unit(nq), tau(Eigen::VectorXd::Zero(nv)), q_0(nq), p_0(nv), phi(nv), phi_1(nv), force(nv),
-        p_bar(nv), rhs(nv), H_llt(nv) {
+        p_bar(nv), rhs(nv) {
     for (const Link& link : tree->links()) {
       const TreeJoint::Kind kind = std::holds_alternative<SphericalJoint>(link.joint) ? TreeJoint::ball
                                    : std::holds_alternative<FreeJoint>(link.joint)    ? TreeJoint::free
@@ -69,6 +69,7 @@ struct TreeSlot : SlotPlace {
       joints.push_back({kind, link.idx_q, link.idx_v});
       c_L.push_back(link.inertia.com());
     }
+    H_llt.compute(Eigen::MatrixXd::Identity(nv, nv));  // sizes it, and sets its state (copied with the slot)
   }
   Eigen::Index y_size() const { return nq + nv; }
   Eigen::Index xi_size() const { return 2 * nv; }
