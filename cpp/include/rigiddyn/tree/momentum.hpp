@@ -33,7 +33,8 @@ const Eigen::VectorXd& generalized_momentum_rate(const Tree& tree, const Eigen::
                                                  const std::vector<Force>& f_ext, TreeWorkspace& ws);
 
 // ws.p and ws.p_dot after forward kinematics at (q, v) filled ws.X_up, ws.X_W and ws.v, without the checks (the
-// scene's tree slot, for a tree it checked to hold revolute, prismatic and fixed joints only).
+// scene's tree slot). For a ball or free joint ws.p_dot is ∂T/∂q + Q along its body perturbations (q ⊗ exp(δ)), its
+// momentum rate less the rotation group's term: what the variational midpoint method of kinds/tree_slot.hpp takes.
 void generalized_momentum_after_kinematics(const Tree& tree, const std::vector<Force>& f_ext, TreeWorkspace& ws);
 
 }  // namespace rigiddyn

@@ -28,7 +28,6 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 
-#include <algorithm>
 #include <memory>
 #include <stdexcept>
 #include <vector>
