@@ -34,7 +34,7 @@ void generalized_momentum_after_kinematics(const Tree& tree, const std::vector<F
   for (int i = n - 1; i >= 0; --i) {
     const Link& link = tree.link(i);
     const int parent = link.parent;
-    const Motion u = parent < 0 ? Motion(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()) : ws.X_up[i].act_inv(ws.v[parent]);
+    const Motion u = parent < 0 ? Motion::Zero() : ws.X_up[i].act_inv(ws.v[parent]);  // u_i, the parent's twist in L_i
     // p_i = S_iᵀ h^c_i,  ṗ_i = −S_iᵀ (u_i ×* h^c_i) + S_iᵀ f^c_i
     ws.p.segment(link.idx_v, link.nv).noalias() = link.S.transpose() * ws.h[i].to_vector();
     ws.p_dot.segment(link.idx_v, link.nv).noalias() = link.S.transpose() * (ws.f[i].to_vector() - u.cross(ws.h[i]).to_vector());

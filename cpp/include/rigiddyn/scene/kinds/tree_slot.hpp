@@ -42,6 +42,7 @@ struct TreeJoint {
 
 struct TreeSlot : SlotPlace {
   static constexpr bool has_mass_flow = false;
+  static constexpr bool sets_rotation_matrices = true;  // kinematics sets each link's R_WB (scene_model.hpp)
   std::shared_ptr<const Tree> tree;
   int links, nq, nv;
   std::vector<TreeJoint> joints;
@@ -84,10 +85,7 @@ struct TreeSlot : SlotPlace {
     }
   }
   // R_JL of a free joint from q_unit
-  Eigen::Matrix3d free_rotation_of(const TreeJoint& j) const {
-    const double* x = q_unit.data() + j.q + 3;
-    return Eigen::Quaterniond(x[3], x[0], x[1], x[2]).toRotationMatrix();
-  }
+  Eigen::Matrix3d free_rotation_of(const TreeJoint& j) const { return rotation_at(q_unit.data() + j.q + 3); }
 
   // Each link's kinematics at its centre of mass C (tree forward kinematics, Featherstone §4.2): R_WB = R_WL,
   // p_W = p_WL + R_WL c_L, ω_B = ω_L, v_W = R_WL (v_L + ω_L × c_L) from the link twist [ω_L; v_L] at L's origin;
@@ -158,14 +156,7 @@ struct TreeSlot : SlotPlace {
     const double* q = y + at_y;
     const double* t = theta + at_xi;
     double* o = out + at_y;
-    for (const TreeJoint& j : joints) {
-      if (j.kind == TreeJoint::vector) o[j.q] = q[j.q] + t[j.v];
-      if (j.kind == TreeJoint::ball) times_exp(q + j.q, three(t + j.v), o + j.q);
-      if (j.kind == TreeJoint::free) {
-        for (int i = 0; i < 3; ++i) o[j.q + i] = q[j.q + i] + t[j.v + 3 + i];
-        times_exp(q + j.q + 3, three(t + j.v), o + j.q + 3);
-      }
-    }
+    retract_configuration(q, t, o);
     for (int i = 0; i < nv; ++i) o[nq + i] = q[nq + i] + t[nv + i];
   }
   void dexp_inv(const double* theta, double* xi) const {
@@ -345,21 +336,26 @@ struct TreeSlot : SlotPlace {
     }
   }
   // R_JL of a free joint in q_0
-  Eigen::Matrix3d start_rotation_of(const TreeJoint& j) const {
-    const double* x = q_0.data() + j.q + 3;
+  Eigen::Matrix3d start_rotation_of(const TreeJoint& j) const { return rotation_at(q_0.data() + j.q + 3); }
+  // the rotation matrix of the quaternion (x, y, z, w) at x
+  static Eigen::Matrix3d rotation_at(const double* x) {
     return Eigen::Quaterniond(x[3], x[0], x[1], x[2]).toRotationMatrix();
   }
-  // the q of y ← q_0 ⊕ φ, the chart of the step (the retraction of retract: vector parts added, q_0 ⊗ exp(φ_ω))
-  void write_chart_point(const Eigen::VectorXd& chart, double* y) const {
-    double* q = y + at_y;
+  // o ← q ⊕ t for a configuration q and a tangent t of the joints (indexed as v): vector parts added, a quaternion
+  // q ⊗ exp(t_ω), a free joint's position p + t_p
+  void retract_configuration(const double* q, const double* t, double* o) const {
     for (const TreeJoint& j : joints) {
-      if (j.kind == TreeJoint::vector) q[j.q] = q_0[j.q] + chart[j.v];
-      if (j.kind == TreeJoint::ball) times_exp(q_0.data() + j.q, chart.segment<3>(j.v), q + j.q);
+      if (j.kind == TreeJoint::vector) o[j.q] = q[j.q] + t[j.v];
+      if (j.kind == TreeJoint::ball) times_exp(q + j.q, three(t + j.v), o + j.q);
       if (j.kind == TreeJoint::free) {
-        for (int i = 0; i < 3; ++i) q[j.q + i] = q_0[j.q + i] + chart[j.v + 3 + i];
-        times_exp(q_0.data() + j.q + 3, chart.segment<3>(j.v), q + j.q + 3);
+        for (int i = 0; i < 3; ++i) o[j.q + i] = q[j.q + i] + t[j.v + 3 + i];
+        times_exp(q + j.q + 3, three(t + j.v), o + j.q + 3);
       }
     }
+  }
+  // the q of y ← q_0 ⊕ φ, the chart of the step
+  void write_chart_point(const Eigen::VectorXd& chart, double* y) const {
+    retract_configuration(q_0.data(), chart.data(), y + at_y);
   }
   // q ← q ⊗ exp(h ω) (exact for a constant ω)
   static void turn_quaternion(double* q, const Eigen::Vector3d& w, double h) {
