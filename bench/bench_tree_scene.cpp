@@ -1,13 +1,13 @@
 // A kinematic tree in a scene, performance: an RK4 step of the scene model (the tree's links as bodies under a
-// UniformGravity element: forward kinematics for the elements' view of the links, the element, the articulated-body
-// algorithm with the links' wrenches, the works and impulses the records' balance needs) against a hand-written RK4
-// loop around the same algorithm (aba with the tree's own gravity, q̇ = v, scratch sized once: the least a tree's
-// RK4 step can cost here).
+// UniformGravity element: forward kinematics for the elements' view of the links, the element's power, the
+// articulated-body algorithm with the gravity the tree applies as its base's acceleration, the works and impulses the
+// records' balance needs) against a hand-written RK4 loop around the same algorithm (aba with the tree's own gravity,
+// q̇ = v, scratch sized once: the least a tree's RK4 step can cost here).
 //   rk4_step/<nv>   nv = 2: a double pendulum of rods; nv = 7: a chain of seven revolute joints (an arm), random
 //                   axes, placements and inertias (fixed seed).
-// Before timing, the two must reach the same state after 100 steps of 1 ms to 1e-9 of its size (the same map: the
-// two evaluate gravity in another order, a few ε of m g l per evaluation, which 100 steps of a map whose tangent
-// stays O(10) over 0.1 s carry to ~1e-12), or the baseline reports an error. ctest runs it with
+// Before timing, the two must reach the same state after 100 steps of 1 ms to 1e-9 of its size (the same map: they
+// differ by a few ε per evaluation where their arithmetic is ordered differently, which 100 steps of a map whose
+// tangent stays O(10) over 0.1 s carry to ~1e-12), or the baseline reports an error. ctest runs it with
 // RIGIDDYN_BENCH_SMALL=1 (fewer steps).
 #include <benchmark/benchmark.h>
 

@@ -321,6 +321,48 @@ def test_work_energy_and_momentum_balances_close(seed):
     assert result.error.reliable[::4].mean() >= 0.9
 
 
+@pytest.mark.parametrize("seed,free_base,method", [(0, True, "rk4"), (1, False, "rk4"), (2, True, "implicit_midpoint"),
+                                                   (3, False, "semi_implicit_euler")])
+def test_a_tree_applies_gravity_on_all_its_links_as_gravity_on_each_link(seed, free_base, method):
+    """A UniformGravity on every link of a tree is applied by the tree's articulated-body algorithm as its base's
+    acceleration (a₀ = −g, no wrench per link); split in two elements, each on some links, it loads each link with
+    m g instead. Both are the same equations, so the runs agree to round-off: each evaluation differs by a few
+    n² eps of its scale (the module docstring's bound), which 300 steps of this smooth map (|λ| t < 3) keep below
+    1e-11 of the state's scale; asserted at 1e-10, for the motion, the energies, gravity's work and power (summed
+    over the two elements) and the impulses (through a floating tree's momentum balances). A link's load switched on and off (ScheduledLoads) takes the links from
+    unloaded to loaded and back."""
+    rng = np.random.default_rng(seed)
+    links = random_links(rng, 5, free_base)
+    q, v, _ = random_state(rng, links)
+    tree = build(links, np.zeros(3))
+    push = rd.ScheduledLoads(body=2, loads=rd.AppliedLoad(force=(3.0, -1.0, 2.0), t_start=0.1, t_end=0.2),
+                             point_B=POINT_B)
+    whole = [rd.UniformGravity(g_W=G_W), push]
+    split = [rd.UniformGravity(g_W=G_W, bodies=[0, 1]), push, rd.UniformGravity(g_W=G_W, bodies=[2, 3, 4])]
+    runs = []
+    for elements in (whole, split):
+        scene = rd.Scene()
+        scene.add_tree(tree, "arm")
+        for element in elements:
+            scene.add(element)
+        runs.append(rd.simulate(scene, tree.joint_states(q, 0.3 * v), 1e-3, duration=0.3, method=method,
+                                accuracy_level=None))  # two runs compared, whatever their accuracy
+    a, b = runs
+    for name in ("joint_q", "joint_v", "kinetic_energy", "potential_energy"):
+        x, y = getattr(a, name), getattr(b, name)
+        assert np.max(np.abs(x - y)) <= 1e-10 * max(1.0, np.max(np.abs(y))), name
+    if free_base:  # the momentum balances L − L0 − J, H − H0 − K: the impulses agree to 1e-10 of the momenta's scale
+        for name in ("linear_momentum", "angular_momentum"):
+            x, y = getattr(a.balance, name), getattr(b.balance, name)
+            assert np.max(np.abs(x - y)) <= 1e-10 * max(1.0, np.max(getattr(b.balance, name + "_scale"))), name
+    for name in ("work", "power"):  # gravity's, then the push's
+        x, y = getattr(a, name), getattr(b, name)
+        gravity = y[:, 0] + y[:, 2]
+        assert np.max(np.abs(x[:, 0] - gravity)) <= 1e-10 * max(1.0, np.max(np.abs(gravity))), name
+        assert np.max(np.abs(x[:, 1] - y[:, 1])) <= 1e-10 * max(1.0, np.max(np.abs(y[:, 1]))), name
+    assert np.any(a.power[:, 1] != 0.0) and np.any(a.power[:, 1] == 0.0)  # the push was on and off
+
+
 def double_pendulum(gravity=None):
     """Two rods of 1 kg and 1 m hinged about y, the first at W's origin, with the tree's own gravity (None: none)."""
     rod = rd.SpatialInertia(1.0, [0.5, 0.0, 0.0], np.diag([1e-3, 1.0 / 12.0, 1.0 / 12.0]))

@@ -39,7 +39,8 @@
 //
 // One evaluation: every body's kinematics (body_kinematics.hpp) from y, wrenches zeroed, each element
 // adds its wrenches once (one std::visit per element: an element that is not declared does not exist),
-// then Newton–Euler per body by its kind. Each body kind is one file in scene/kinds/ (its layout, kinematics,
+// then Newton–Euler per body by its kind (a tree applies a UniformGravity on all its links itself, as its base's
+// acceleration: leave_gravity_to). Each body kind is one file in scene/kinds/ (its layout, kinematics,
 // Newton–Euler, retraction, kicks, free flow and record; body_slot.hpp lists the members); the model folds over
 // the list of kinds (kinds/kind_list.hpp), the rigid and pivoted bodies grouped by Euler form (a sphere pays
 // nothing for the gyroscopic term); the fold visits only the kinds present (for_each_slot). Scratch buffers are
@@ -197,7 +198,10 @@ class BasicSceneModel {
     const bool user_force = std::any_of(terms_.begin(), terms_.end(), [](const Term& term) {
       return std::visit([](const auto& e) { return detail::is_user_force<std::decay_t<decltype(e)>>::value; }, term);
     });
-    for (detail::TreeSlot& tree : std::get<std::vector<detail::TreeSlot>>(slots_)) tree.fill_quaternions = user_force;
+    for (detail::TreeSlot& tree : std::get<std::vector<detail::TreeSlot>>(slots_)) {
+      tree.fill_quaternions = user_force;
+      leave_gravity_to(tree);
+    }
   }
 
   Eigen::Index coordinate_count() const { return t_y_ + 1 + extra_count(); }
@@ -552,6 +556,7 @@ class BasicSceneModel {
     for (const auto& w : element_wrenches_) {
       for (std::size_t b = 0; b < w.size(); ++b) wrenches_[b].f_W += w[b].f_W, wrenches_[b].tau_B += w[b].tau_B;
     }
+    note_tree_wrenches();
     add_impulses(y.data() + t_y_ + impulse_offset(), h);  // at the positions and attitudes the kick keeps
     Eigen::Vector3d w_F = Eigen::Vector3d::Zero();  // the frame's Ω [rad/s] in F
     if constexpr (turning) w_F = coriolis_frame_rate(t);
@@ -616,9 +621,41 @@ class BasicSceneModel {
   Eigen::Index impulse_offset() const { return 1 + static_cast<Eigen::Index>(terms_.size() + energy_body_.size()); }
 
   // out[0..2] += h Σ_b f_b [N], out[3..5] += h Σ_b (p_b × f_b + R_WB,b τ_B,b) [N m] (the moment about W's origin)
-  // of wrenches_ at kinematics_ (τ_B = 0 when no term turns vectors: none gives a torque)
+  // of wrenches_ at kinematics_ (τ_B = 0 when no term turns vectors: none gives a torque) and of the gravity the trees
+  // apply to their links
   void add_impulses(double* out, double h) const {
-    for (std::size_t b = 0; b < wrenches_.size(); ++b) {
+    std::size_t b = 0;
+    for (const detail::TreeSlot& tree : std::get<std::vector<detail::TreeSlot>>(slots_)) {
+      if (!tree.unloaded) continue;  // its links' wrenches are zero: skipped
+      add_wrench_impulses(out, h, b, static_cast<std::size_t>(tree.body));
+      b = static_cast<std::size_t>(tree.body + tree.links);
+    }
+    add_wrench_impulses(out, h, b, wrenches_.size());
+    for (const TreeGravity& g : tree_gravity_) {  // the gravity a tree applies to its links (leave_gravity_to):
+      Eigen::Vector3d mp = Eigen::Vector3d::Zero();  // Σ f = (Σ m) g, Σ p × m g = (Σ m p) × g
+      for (int b = g.first; b < g.first + g.count; ++b) mp += kinematics_[b].m * kinematics_[b].p_W;
+      const Eigen::Vector3d M_W = mp.cross(g.g_W);
+      for (int i = 0; i < 3; ++i) out[i] += h * g.f_W[i], out[3 + i] += h * M_W[i];
+    }
+  }
+  // A UniformGravity on every link of a tree becomes the tree's own: its base's acceleration in the articulated-body
+  // algorithm (kinds/tree_slot.hpp apply_gravity), the same motion at no cost per link; the term keeps its power and
+  // potential, and add_impulses adds its force on the links (the first such element; another loads them as usual)
+  void leave_gravity_to(detail::TreeSlot& tree) {
+    for (Term& term : terms_) {
+      auto* gravity = std::get_if<UniformGravityTerm>(&term);
+      if (!gravity || !gravity->leave_to_tree(tree.body, tree.links)) continue;
+      tree.apply_gravity(gravity->g_W());
+      double m = 0.0;  // the tree's mass (its links' are constant)
+      for (int b = tree.body; b < tree.body + tree.links; ++b) m += kinematics_[b].m;
+      tree_gravity_.push_back({tree.body, tree.links, gravity->g_W(), m * gravity->g_W()});
+      return;
+    }
+  }
+
+  // add_impulses of bodies first … last − 1
+  void add_wrench_impulses(double* out, double h, std::size_t first, std::size_t last) const {
+    for (std::size_t b = first; b < last; ++b) {
       const BodyKinematics& k = kinematics_[b];
       const BodyWrench& w = wrenches_[b];
       Eigen::Vector3d M_W = k.p_W.cross(w.f_W);
@@ -626,6 +663,7 @@ class BasicSceneModel {
       for (int i = 0; i < 3; ++i) out[i] += h * w.f_W[i], out[3 + i] += h * M_W[i];
     }
   }
+
   // where the k-th mass-flow energy is in y
   Eigen::Index energy_y(std::size_t k) const { return t_y_ + 1 + static_cast<Eigen::Index>(terms_.size() + k); }
 
@@ -656,6 +694,11 @@ class BasicSceneModel {
     for (std::size_t e = 0; e < terms_.size(); ++e) {
       power_[e] = std::visit([&](const auto& term) { return term.add_wrenches(t, kinematics_, wrenches_); }, terms_[e]);
     }
+    note_tree_wrenches();
+  }
+  // each tree notes whether its links have a wrench (kinds/tree_slot.hpp note_wrenches), after wrenches_ are summed
+  void note_tree_wrenches() const {
+    for (const detail::TreeSlot& tree : std::get<std::vector<detail::TreeSlot>>(slots_)) tree.note_wrenches(wrenches_[tree.body]);
   }
 
   static constexpr std::size_t group_count = std::tuple_size_v<detail::SlotGroups>;
@@ -688,6 +731,12 @@ class BasicSceneModel {
   };
   std::vector<CoriolisFrame> coriolis_terms_;
   std::vector<CoriolisInertia> coriolis_inertia_;  // per body (set for rigid and pivoted bodies)
+  // the links first … first + count − 1 of a tree that applies a UniformGravity g_W [m/s²] itself (leave_gravity_to)
+  struct TreeGravity {
+    int first, count;
+    Eigen::Vector3d g_W, f_W;  // f_W = (Σ m) g_W [N], the force on the whole tree
+  };
+  std::vector<TreeGravity> tree_gravity_;
 };
 
 using SceneModel = BasicSceneModel<>;

@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -49,7 +50,7 @@ class UniformGravityTerm {
   // Throws std::invalid_argument "<name>.g_W: ..." for a non-finite g_W and "<name>.bodies[k]: ..." for an
   // index out of range or repeated.
   UniformGravityTerm(const UniformGravity& spec, const std::vector<Body>& bodies, const std::string& name)
-      : g_W_(spec.g_W), bodies_(detail::resolve_bodies(spec.bodies, bodies.size(), name)) {
+      : g_W_(spec.g_W), bodies_(detail::resolve_bodies(spec.bodies, bodies.size(), name)), loaded_(bodies_) {
     require_finite(spec.g_W, name + ".g_W");
   }
 
@@ -60,16 +61,28 @@ class UniformGravityTerm {
     return t;
   }
 
-  // f_W += m g_W on each listed body; returns Σ m g_W·v_W [W].
+  // f_W += m g_W on each listed body but those left to a tree; returns Σ m g_W·v_W [W] over every listed body.
   double add_wrenches(double /*t*/, const std::vector<BodyKinematics>& kinematics, std::vector<BodyWrench>& wrenches) const {
     double power = 0.0;
-    for (std::size_t k = 0; k < bodies_.size(); ++k) {
-      const int b = bodies_[k];
+    for (const int b : loaded_) {
       const Eigen::Vector3d f = kinematics[b].m * g_W_;
       wrenches[b].f_W += f;
       power += f.dot(kinematics[b].v_W);
     }
-    return power;
+    Eigen::Vector3d momentum = Eigen::Vector3d::Zero();  // of the links left to a tree: their power g_W·Σ m v_W
+    for (const int b : left_to_tree_) momentum += kinematics[b].m * kinematics[b].v_W;
+    return power + g_W_.dot(momentum);
+  }
+
+  // Bodies first … first + count − 1, the links of a tree whose articulated-body algorithm applies this gravity as
+  // the base's acceleration (a₀ = −g, Featherstone §5.3; scene_model.hpp): their wrenches are left out of
+  // add_wrenches, their power and potential kept. Returns false, changing nothing, unless every one is listed.
+  bool leave_to_tree(int first, int count) {
+    const auto in_tree = [&](int b) { return b >= first && b < first + count; };
+    if (std::count_if(loaded_.begin(), loaded_.end(), in_tree) != count) return false;
+    loaded_.erase(std::remove_if(loaded_.begin(), loaded_.end(), in_tree), loaded_.end());
+    for (int b = first; b < first + count; ++b) left_to_tree_.push_back(b);
+    return true;
   }
 
   // V = −Σ m g_W·p_W [J]
@@ -84,7 +97,9 @@ class UniformGravityTerm {
 
  private:
   Eigen::Vector3d g_W_;
-  std::vector<int> bodies_;
+  std::vector<int> bodies_;       // every listed body
+  std::vector<int> loaded_;       // those whose wrench add_wrenches adds
+  std::vector<int> left_to_tree_; // those whose tree applies it (leave_to_tree)
 };
 
 }  // namespace rigiddyn

@@ -28,6 +28,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <memory>
 #include <stdexcept>
 #include <vector>
@@ -51,7 +52,11 @@ struct TreeSlot : SlotPlace {
   mutable TreeWorkspace ws;
   mutable std::vector<Force> f_ext;
   mutable Eigen::VectorXd q_unit, tau;  // q with unit quaternions; the joint forces (none: the elements load links)
+  mutable const double* q_at = nullptr;  // the configuration load_configuration read: q_unit, or y's own q
+  bool has_quaternions = false;          // a ball or free joint
   bool fill_quaternions = true;  // each evaluation sets the links' q_WB (a user's force may read them; the records do)
+  mutable bool unloaded = false;   // no link has a wrench (note_wrenches)
+  mutable bool f_ext_zero = false; // every f_ext is zero
   // the variational midpoint step's q and p at its start, the chart points φ̄ of q̄ and φ₁ of q₁, F and p̄ at q̄, a
   // solve's right side
   mutable Eigen::VectorXd q_0, p_0, phi, phi_1, force, p_bar, rhs;
@@ -67,6 +72,7 @@ struct TreeSlot : SlotPlace {
                                    : std::holds_alternative<FixedJoint>(link.joint)   ? TreeJoint::fixed
                                                                                       : TreeJoint::vector;
       joints.push_back({kind, link.idx_q, link.idx_v});
+      has_quaternions = has_quaternions || kind == TreeJoint::ball || kind == TreeJoint::free;
       c_L.push_back(link.inertia.com());
     }
     H_llt.compute(Eigen::MatrixXd::Identity(nv, nv));  // sizes it, and sets its state (copied with the slot)
@@ -74,25 +80,29 @@ struct TreeSlot : SlotPlace {
   Eigen::Index y_size() const { return nq + nv; }
   Eigen::Index xi_size() const { return 2 * nv; }
 
-  // the tree's v in y, and its configuration with each quaternion normalised (q_unit)
+  // the tree's v in y, and its configuration with each quaternion normalised (configuration(): q_unit, or y's own q
+  // when the tree has no quaternion)
   Eigen::Map<const Eigen::VectorXd> velocities(const double* y) const { return {y + at_y + nq, nv}; }
+  Eigen::Map<const Eigen::VectorXd> configuration() const { return {q_at, nq}; }
   void load_configuration(const double* y) const {
     const double* q = y + at_y;
+    q_at = has_quaternions ? q_unit.data() : q;
+    if (!has_quaternions) return;
     for (int i = 0; i < nq; ++i) q_unit[i] = q[i];
     for (const TreeJoint& j : joints) {
       if (j.kind == TreeJoint::ball) normalise_quaternion(q_unit.data() + j.q);
       if (j.kind == TreeJoint::free) normalise_quaternion(q_unit.data() + j.q + 3);
     }
   }
-  // R_JL of a free joint from q_unit
-  Eigen::Matrix3d free_rotation_of(const TreeJoint& j) const { return rotation_at(q_unit.data() + j.q + 3); }
+  // R_JL of a free joint from configuration()
+  Eigen::Matrix3d free_rotation_of(const TreeJoint& j) const { return rotation_at(q_at + j.q + 3); }
 
   // Each link's kinematics at its centre of mass C (tree forward kinematics, Featherstone §4.2): R_WB = R_WL,
   // p_W = p_WL + R_WL c_L, ω_B = ω_L, v_W = R_WL (v_L + ω_L × c_L) from the link twist [ω_L; v_L] at L's origin;
   // its joint's q (normalised) and v for the joint elements
   void kinematics(const double* y, const StepClock&, BodyKinematics& first) const {
     load_configuration(y);
-    forward_kinematics_unchecked(*tree, q_unit, velocities(y), ws);
+    forward_kinematics_unchecked(*tree, configuration(), velocities(y), ws);
     BodyKinematics* k = &first;
     for (int i = 0; i < links; ++i) {
       const Eigen::Matrix3d& R_WL = ws.X_W[i].rotation();
@@ -101,12 +111,36 @@ struct TreeSlot : SlotPlace {
       k[i].w_B = ws.v[i].angular;
       k[i].p_W = ws.X_W[i].translation() + R_WL * c_L[i];
       k[i].v_W = R_WL * (ws.v[i].linear + cross_3(ws.v[i].angular, c_L[i]));
-      k[i].joint_q = q_unit.data() + tree->link(i).idx_q;
-      k[i].joint_v = y + at_y + nq + tree->link(i).idx_v;
+      k[i].joint_q = q_at + joints[i].q;  // joints[i]: link i's
+      k[i].joint_v = y + at_y + nq + joints[i].v;
     }
   }
-  // v̇ (ws.qdd) by the articulated-body algorithm under the links' wrenches, after kinematics at the same y
+  // The tree applies a uniform gravity g_W [m/s²] on all its links itself, as its base's acceleration a₀ = −g
+  // (Featherstone §5.3: the same motion as a force m g at each centre of mass, at no cost per link); the gravity
+  // element then leaves their wrenches out (UniformGravityTerm::leave_to_tree, scene_model.hpp)
+  void apply_gravity(const Eigen::Vector3d& g_W) {
+    auto with_gravity = std::make_shared<Tree>(*tree);
+    with_gravity->set_gravity(g_W);
+    tree = std::move(with_gravity);
+  }
+  // Whether the elements left every link without a wrench (sum of |components| exactly 0: a NaN or any non-zero
+  // component counts as one), from the links' wrenches; the scene model notes it after the elements add theirs, at
+  // each evaluation (the tree's own gravity is not a wrench: apply_gravity)
+  void note_wrenches(const BodyWrench& first) const {
+    const BodyWrench* w = &first;
+    double sum = 0.0;
+    for (int i = 0; i < links; ++i) sum += w[i].f_W.cwiseAbs().sum() + w[i].tau_B.cwiseAbs().sum();
+    unloaded = sum == 0.0;
+  }
+  // v̇ (ws.qdd) by the articulated-body algorithm under the links' wrenches, after kinematics and note_wrenches at the
+  // same y; f_ext holds them in the links' frames (the algorithm takes none when every link is unloaded)
   const Eigen::VectorXd& accelerations(const double* y, const BodyKinematics& first, const BodyWrench& wrench) const {
+    static const std::vector<Force> none;
+    if (unloaded) {
+      if (!f_ext_zero) std::fill(f_ext.begin(), f_ext.end(), Force());
+      f_ext_zero = true;
+      return aba_after_kinematics(*tree, velocities(y), tau, none, ws);
+    }
     const BodyKinematics* k = &first;
     const BodyWrench* w = &wrench;
     for (int i = 0; i < links; ++i) {
@@ -114,6 +148,7 @@ struct TreeSlot : SlotPlace {
       f_ext[i].linear = f_L;
       f_ext[i].angular = w[i].tau_B + cross_3(c_L[i], f_L);
     }
+    f_ext_zero = false;
     return aba_after_kinematics(*tree, velocities(y), tau, f_ext, ws);
   }
   // the tangent of q at y: per joint its rate, ω_L, or (ω_L, R_JL v_L)
@@ -240,13 +275,13 @@ struct TreeSlot : SlotPlace {
     static const std::vector<Force> none;
     load_configuration(y0);
     q_0 = Eigen::Map<const Eigen::VectorXd>(y0 + at_y, nq);
-    forward_kinematics_unchecked(*tree, q_unit, velocities(y0), ws);
+    forward_kinematics_unchecked(*tree, configuration(), velocities(y0), ws);
     generalized_momentum_after_kinematics(*tree, none, ws);
     p_0 = ws.p;
     chart_point_of(y0 + at_y + nq, half_h);
     write_chart_point(phi, mid);
   }
-  // One iterate, after the scene's rate at ȳ = mid (its kinematics and links' wrenches in ws and f_ext, q_unit its
+  // One iterate, after the scene's rate at ȳ = mid (its kinematics and links' wrenches in ws and f_ext, configuration() its
   // q̄ = q_0 ⊕ φ̄): p̄ from F(ȳ) by the equations above, v̄ = H(q̄)⁻¹ p̄ into `next` and, with φ̄ = (h/2) ψ for the
   // chart rate ψ of v̄ (v̄; a free joint's R̄ v̄_L for its position), its configuration q_0 ⊕ φ̄ (the pair consistent: a
   // q̄ one iterate behind v̄ would slow the fixed point to a rate O(√h), H(q̄) depending on q̄ at first order)
@@ -318,9 +353,9 @@ struct TreeSlot : SlotPlace {
   Eigen::Index attitude_y() const { return -1; }  // the links' attitudes are not coordinates
 
  private:
-  // v = H(q_unit)⁻¹ rhs (CRBA and a Cholesky solve, no allocation) into the velocities of y
+  // v = H(configuration())⁻¹ rhs (CRBA and a Cholesky solve, no allocation) into the velocities of y
   void solve_velocity(double* y) const {
-    H_llt.compute(crba_unchecked(*tree, q_unit, ws));
+    H_llt.compute(crba_unchecked(*tree, configuration(), ws));
     H_llt.solveInPlace(rhs);
     Eigen::Map<Eigen::VectorXd>(y + at_y + nq, nv) = rhs;
   }
