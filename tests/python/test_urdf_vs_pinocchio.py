@@ -5,8 +5,8 @@ them): the same URDF loaded by both libraries, then H (crba), inverse dynamics (
 The robots are example-robot-data's UR5 (6 revolute joints; also on a floating base, where its massless
 `world` link takes the mass of `base_link`, fixed to it), Panda (7 revolute and 2 prismatic fingers,
 one a mimic joint: an independent joint in both libraries) and Talos (a humanoid on a floating base, 32
-revolute joints and 27 fixed ones, some of them massless or point-mass frames) where that package is
-installed, and always Pinocchio's sample manipulator and random humanoid (free flyer) written out as URDF.
+revolute joints and 27 fixed ones, some of them massless or point-mass frames) from that package (in the `peers`
+extra, so CI compares them), and always Pinocchio's sample manipulator and random humanoid (free flyer) written out as URDF.
 
 Conventions mapped: Pinocchio's free-flyer velocity is [v; w] (linear first), rigiddyn's [w; v], both in
 the root link's frame; both store the free flyer's quaternion (x, y, z, w); a continuous joint is
