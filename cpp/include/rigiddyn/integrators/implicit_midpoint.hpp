@@ -27,8 +27,8 @@
 // which takes the whole step by a solve of the midpoint equations that uses its structure and returns whether it
 // converged: RigidBodyModel's Newton iteration on ω̄ above (the Jacobian of Euler's equations gyroscopic_jacobian,
 // the attitude by the Cayley map midpoint_rotation, the stopping rule of implicit_midpoint_solver); the scene
-// model's fixed point below, which takes a kinematic tree by the variational midpoint method (scene/scene_model.hpp,
-// scene/kinds/tree_slot.hpp). A model without the hook
+// model's fixed point below, which takes a kinematic tree by the variational midpoint method, its iterates mixed by
+// Anderson's method (scene/scene_model.hpp, scene/kinds/tree_slot.hpp). A model without the hook
 // (particle, planar body, any model whose coordinates are a vector space or whose derivative has no stiff
 // gyroscopic part) gets the fixed-point iteration ȳ = y0 + (h/2) rate(ȳ) on its rate() with the same tolerance and
 // cap, then y1 = 2ȳ − y0 and project(y1).

@@ -55,6 +55,7 @@
 #include "rigiddyn/scene/scene.hpp"
 #include "rigiddyn/scene/scene_simulation.hpp"
 
+#include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
@@ -189,6 +190,10 @@ class BasicSceneModel {
     wheel_count_ = rigiddyn::wheel_count(bodies);
     stage_.resize(coordinate_count());
     mid_.resize(coordinate_count()), next_.resize(coordinate_count()), rate_.resize(coordinate_count());
+    if (!std::get<std::vector<detail::TreeSlot>>(slots_).empty()) {
+      for (Coordinates* v : {&residual_, &last_residual_, &last_g_}) v->resize(coordinate_count());
+      delta_f_.resize(coordinate_count(), anderson_depth), delta_g_.resize(coordinate_count(), anderson_depth);
+    }
     kicks_merge_ = !has_mass_flow() && std::none_of(terms_.begin(), terms_.end(), [](const Term& term) {
       return std::visit([](const auto& e) { return e.traits().velocity_dependent; }, term);
     });
@@ -289,7 +294,9 @@ class BasicSceneModel {
   // every coordinate, with the tolerance and cap of that file, then y1 = 2ȳ − y0 and project; except a tree's q and
   // v, which take the variational midpoint method instead (kinds/tree_slot.hpp): symplectic, it keeps the momentum of
   // every symmetry of the scene (a floating tree's momenta, a hinge about the axis of gravity) and bounds the energy
-  // error over long runs. Returns whether the fixed point converged.
+  // error over long runs. With a tree, the iterates are mixed by Anderson's method (anderson_mix): the variational
+  // fixed point contracts slowly where a light link turns fast (its rate ~ h × joint rate × the inertias' ratio).
+  // Returns whether the fixed point converged.
   bool implicit_midpoint_step(Coordinates& y, double h) const {
     using namespace implicit_midpoint_solver;
     auto& trees = std::get<std::vector<detail::TreeSlot>>(slots_);
@@ -301,8 +308,13 @@ class BasicSceneModel {
       next_ = y + (0.5 * h) * rate_;
       for (const detail::TreeSlot& tree : trees) tree.variational_midpoint_iterate(mid_.data(), 0.5 * h, next_.data());
       const double change = (next_ - mid_).norm();
-      mid_.swap(next_);
-      converged = change <= tolerance * mid_.norm();
+      converged = change <= tolerance * next_.norm();
+      if (converged || trees.empty()) {
+        mid_.swap(next_);
+      } else {
+        anderson_mix(k);
+        for (const detail::TreeSlot& tree : trees) tree.recenter_variational_midpoint(0.5 * h, mid_.data());
+      }
     }
     y = 2.0 * mid_ - y;
     for (const detail::TreeSlot& tree : trees) tree.finish_variational_midpoint(h, y.data());
@@ -638,6 +650,33 @@ class BasicSceneModel {
       for (int i = 0; i < 3; ++i) out[i] += h * g.f_W[i], out[3 + i] += h * M_W[i];
     }
   }
+  // Anderson's mixing of the fixed point x = g(x) (Walker & Ni 2011, "Anderson acceleration for fixed-point
+  // iterations"), after iterate k (x_k in mid_, g(x_k) in next_): with the residuals f = g(x) − x and the differences
+  // ΔF, ΔG of the last m iterates' f and g, x_k+1 = g(x_k) − ΔG γ, γ = argmin |f_k − ΔF γ| (the normal equations of
+  // at most m unknowns); the plain iterate g(x_k) where γ is not finite. The step still ends only on |g(x) − x|. A
+  // tree then takes the configuration of the mixed velocities (recenter_variational_midpoint: the pair consistent).
+  void anderson_mix(int k) const {
+    residual_ = next_ - mid_;
+    const int columns = std::min(k, anderson_depth);
+    if (k > 0) {
+      const int c = (k - 1) % anderson_depth;
+      delta_f_.col(c) = residual_ - last_residual_;
+      delta_g_.col(c) = next_ - last_g_;
+    }
+    last_residual_ = residual_, last_g_ = next_;
+    mid_ = next_;
+    if (columns == 0) return;
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, anderson_depth, anderson_depth> A(columns, columns);
+    Eigen::Matrix<double, Eigen::Dynamic, 1, 0, anderson_depth, 1> b(columns);
+    for (int i = 0; i < columns; ++i) {
+      b[i] = delta_f_.col(i).dot(residual_);
+      for (int j = 0; j <= i; ++j) A(i, j) = A(j, i) = delta_f_.col(i).dot(delta_f_.col(j));
+    }
+    const auto gamma = A.ldlt().solve(b).eval();
+    if (!gamma.allFinite()) return;
+    for (int i = 0; i < columns; ++i) mid_ -= gamma[i] * delta_g_.col(i);
+  }
+
   // A UniformGravity on every link of a tree becomes the tree's own: its base's acceleration in the articulated-body
   // algorithm (kinds/tree_slot.hpp apply_gravity), the same motion at no cost per link; the term keeps its power and
   // potential, and add_impulses adds its force on the links (the first such element; another loads them as usual)
@@ -723,6 +762,10 @@ class BasicSceneModel {
   mutable std::vector<Eigen::Vector3d> reaction_W_, momentum_O_W_;  // per body, for the recorder only
   mutable Coordinates stage_;  // y ⊕ Θ of velocity_at
   mutable Coordinates mid_, next_, rate_;  // implicit_midpoint_step's iterates and rate
+  // anderson_mix's last residual and g, and the differences of the last anderson_depth ones (sized with a tree)
+  static constexpr int anderson_depth = 4;
+  mutable Coordinates residual_, last_residual_, last_g_;
+  mutable Eigen::MatrixXd delta_f_, delta_g_;
   // the Coriolis terms (loads_kick's exact kick; empty without a turning frame) and the bodies' inertias for it
   struct CoriolisFrame {
     std::size_t element;

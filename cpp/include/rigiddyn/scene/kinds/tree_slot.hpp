@@ -308,6 +308,11 @@ struct TreeSlot : SlotPlace {
     chart_point_of(next + at_y + nq, half_h);
     write_chart_point(phi, next);
   }
+  // An iterate whose v̄ was changed (the scene's Anderson mixing) takes its configuration q_0 ⊕ φ̄ from v̄ again
+  void recenter_variational_midpoint(double half_h, double* mid) const {
+    chart_point_of(mid + at_y + nq, half_h);
+    write_chart_point(phi, mid);
+  }
   // q₁ = q_0 ⊕ 2φ̄ and v₁ = H(q₁)⁻¹ p₁ into y1 (whose other coordinates are 2ȳ − y0)
   void finish_variational_midpoint(double h, double* y1) const {
     phi_1 = 2.0 * phi;
