@@ -125,10 +125,10 @@ TEST(TreeScene, OneLinkOnABallJointIsThePivotedBodyInATurningFrame) {
 }
 
 // The double pendulum loaded by the scene's UniformGravity against a hand RK4 loop of q̈ = ABA(q, q̇) with the tree's
-// own gravity: the same equations and the same map; the two evaluate gravity differently (an external force per
-// link against the base acceleration a_0 = −g), a few ε of m g l ≈ 30 per evaluation, amplified over 1 s of a
-// chaotic double pendulum released horizontal by at most ~e^{λ t} with λ ≲ 5/s: 400 evaluations × 4 ε × 30 ×
-// e^5 ≈ 1.6e-9, so 1e-8 on the angles and rates.
+// own gravity: the same equations and the same map (the scene's tree applies the gravity as its base's acceleration
+// a_0 = −g too), their arithmetic ordered differently in places, a few ε of m g l ≈ 30 per evaluation at most,
+// amplified over 1 s of a chaotic double pendulum released horizontal by at most ~e^{λ t} with λ ≲ 5/s: 400
+// evaluations × 4 ε × 30 × e^5 ≈ 1.6e-9, so 1e-8 on the angles and rates.
 TEST(TreeScene, DoublePendulumUnderSceneGravityIsTheHandLoopAroundAba) {
   const Eigen::Vector2d q0(0.0, 0.3), v0(0.0, 0.0);
   Scene scene = gravity_scene();

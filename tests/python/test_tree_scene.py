@@ -9,9 +9,11 @@ links' wrenches as external forces, the joint springs as joint forces) and rigid
 forces); one implicit midpoint step equals the variational midpoint step of rigiddyn_ref.tree (on (q, p) for
 revolute, prismatic and fixed joints under every force; from the discrete Lagrangian by differences with ball and
 free joints); the variational midpoint keeps a symmetry's momentum and a floating tree's momenta to round-off and
-bounds the energy error of a chaotic run; the work-energy balance closes on
-every run; a joint spring's damped oscillation and a ball joint's
-twist against their closed forms; a motor's window on a floating tree keeps its momenta; the links' records and
+bounds the energy error of a chaotic run, and its iterates reach their tolerance at long steps; the work-energy
+balance closes on every run; a gravity on all the links (which the tree applies as its base's acceleration) moves them
+as the same gravity split across two elements; the double pendulum's small oscillations are its normal modes and a
+gimballed gyroscope precesses steadily at m g d / (I₃ ψ̇), both in closed form; a joint spring's damped oscillation
+and a ball joint's twist against their closed forms; a motor's window on a floating tree keeps its momenta; the links' records and
 describe(); bad input refused naming the value.
 
 Error bound of the step comparison: both sides evaluate the same four derivatives, each to ~10 n² eps of its scale
@@ -406,6 +408,68 @@ def test_links_are_named_bodies_and_their_records_their_motion():
     assert abs(result.total_energy[0] - E) <= 64 * np.finfo(float).eps * 9.81 * 2.0
     text = scene.describe("rk4")
     assert "tree_link" in text and "Tree links" in text and "pendulum.lower" in text
+
+
+def test_a_double_pendulums_small_oscillations_are_its_normal_modes():
+    """Released from rest near its hanging equilibrium (q = (π/2, 0): the rods along −z) in one normal mode's shape,
+    the double pendulum of rods (m = 1 kg, l = 1 m, I_C = m l²/12 about the hinges) swings as ε s cos(ω t) in that
+    mode (Goldstein, Classical Mechanics §6.2), ω² and s from det(K − ω² M) = 0 written by hand in the rods' absolute
+    angles φ₁ = q₁, φ₂ = q₁ + q₂: M = [[I_C + m l²/4 + m l², m l²/2], [m l²/2, I_C + m l²/4]], K = diag(3/2, 1/2) m g l.
+    Error bound relative to the amplitude ε = 1e-5: the nonlinear terms shift the motion by O(ε²) per radian of phase
+    (≤ 1e-10 × ω t ≈ 1e-8 over 10 s), RK4 at h = 1 ms by (ω h)⁴ ω t / 120 < 1e-8, round-off by ~1e-9 of ε;
+    asserted at 1e-7 ε. Both modes, each alone."""
+    m, l, g, I_C = 1.0, 1.0, 9.81, 1.0 / 12.0
+    M = np.array([[I_C + m * l**2 / 4 + m * l**2, m * l**2 / 2], [m * l**2 / 2, I_C + m * l**2 / 4]])
+    K = np.diag([1.5, 0.5]) * m * g * l
+    omega2, shapes = np.linalg.eig(np.linalg.solve(M, K))
+    tree = double_pendulum()
+    scene = rd.Scene(elements=[rd.UniformGravity(g_W=(0.0, 0.0, -g))])
+    scene.add_tree(tree, "pendulum")
+    eps, q_eq = 1e-5, np.array([np.pi / 2, 0.0])
+    for w2, phi in zip(omega2, shapes.T):
+        s = eps * np.array([phi[0], phi[1] - phi[0]]) / np.max(np.abs(phi))  # in the joint angles q
+        result = rd.simulate(scene, tree.joint_states(q_eq + s, [0.0, 0.0]), 1e-3, duration=10.0, method="rk4")
+        expected = q_eq + np.outer(np.cos(np.sqrt(w2) * result.t), s)
+        assert np.max(np.abs(result.joint_q - expected)) <= 1e-7 * eps
+
+
+def gyroscope():
+    """A gyroscope on a stand: a gimbal turning about the vertical z at the pivot, a tilt frame on a horizontal hinge
+    (y), and a symmetric rotor (m = 1 kg, I = diag(I₃, I₁, I₁) = diag(0.01, 0.006, 0.006) kg m²) spinning about
+    its axle x, its centre d = 0.1 m out along the axle; the gimbals light (0.01 kg, 1e-4 kg m², centred on the
+    pivot)."""
+    light = rd.SpatialInertia(0.01, [0.0, 0.0, 0.0], 1e-4 * np.eye(3))
+    tree = rd.Tree()
+    tree.add_link("gimbal", -1, rd.RevoluteJoint([0.0, 0.0, 1.0]), light)
+    tree.add_link("tilt", 0, rd.RevoluteJoint([0.0, 1.0, 0.0]), light)
+    tree.add_link("rotor", 1, rd.RevoluteJoint([1.0, 0.0, 0.0]),
+                  rd.SpatialInertia(1.0, [0.0, 0.0, 0.0], np.diag([0.01, 0.006, 0.006])),
+                  rd.Transform(translation=[0.1, 0.0, 0.0]))
+    scene = rd.Scene(elements=[rd.UniformGravity(g_W=(0.0, 0.0, -9.81))])
+    scene.add_tree(tree, "gyroscope")
+    return tree, scene
+
+
+def test_a_gimballed_gyroscope_precesses_steadily_at_m_g_d_over_its_spin_momentum():
+    """With its axle horizontal, the gyroscope's steady precession needs gravity's moment m g d about the tilt
+    hinge to turn the spin momentum I₃ ψ̇ at the precession rate Ω: m g d = I₃ ψ̇ Ω exactly (the Lagrange top's
+    steady-precession condition at θ = 90°, where the Ω² term vanishes; the gimbals, centred and isotropic, need no
+    moment). Then every joint rate is constant, the exact motion is linear in t, and RK4 reproduces it but for
+    round-off: N eps × |rates| ≈ 2000 × 2.2e-16 × 100 ≈ 4e-11 over 2 s, asserted at 1e-9. At 0.9 Ω the axle
+    nutates (by ~3e-3 rad here): the condition is what keeps it."""
+    tree, scene = gyroscope()
+    spin = 100.0
+    precession = 1.0 * 9.81 * 0.1 / (0.01 * spin)
+    for rate, steady in ((precession, True), (0.9 * precession, False)):
+        start = tree.joint_states([0.0, 0.0, 0.0], [rate, 0.0, spin])
+        result = rd.simulate(scene, start, 1e-3, duration=2.0, method="rk4")
+        drift = np.max(np.abs(result.joint_v - [rate, 0.0, spin]))
+        tilt = np.max(np.abs(result.joint_q[:, 1]))
+        if steady:
+            assert drift <= 1e-9 and tilt <= 1e-9
+            assert np.max(np.abs(result.joint_q[:, 0] - rate * result.t)) <= 1e-9
+        else:
+            assert tilt > 1e-4
 
 
 def test_joint_states_round_trip():
