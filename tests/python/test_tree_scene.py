@@ -10,11 +10,12 @@ forces); one implicit midpoint step equals the variational midpoint step of rigi
 revolute, prismatic and fixed joints under every force; from the discrete Lagrangian by differences with ball and
 free joints); the variational midpoint keeps a symmetry's momentum and a floating tree's momenta to round-off and
 bounds the energy error of a chaotic run, and its iterates reach their tolerance at long steps; the work-energy
-balance closes on every run; a gravity on all the links (which the tree applies as its base's acceleration) moves them
-as the same gravity split across two elements; the double pendulum's small oscillations are its normal modes and a
-gimballed gyroscope precesses steadily at m g d / (I₃ ψ̇), both in closed form; a joint spring's damped oscillation
-and a ball joint's twist against their closed forms; a motor's window on a floating tree keeps its momenta; the links' records and
-describe(); bad input refused naming the value.
+balance closes on every run; a gravity on all the links (which the tree applies as its base's acceleration) moves
+them as the same gravity split across two elements; the double pendulum's small oscillations are its normal modes,
+its energy error when chaotic falls at each method's order, and a gimballed gyroscope precesses steadily at m g d /
+(I₃ ψ̇), both in closed form; a joint spring's damped oscillation and a ball joint's twist against their closed
+forms; a motor's window on a floating tree keeps its momenta; the links' records and describe(); bad input refused
+naming the value.
 
 Error bound of the step comparison: both sides evaluate the same four derivatives, each to ~10 n² eps of its scale
 (test_tree_vs_reference's bound for forward dynamics, n <= 8 links; the element forces add a few eps), and the step
@@ -431,6 +432,27 @@ def test_a_double_pendulums_small_oscillations_are_its_normal_modes():
         result = rd.simulate(scene, tree.joint_states(q_eq + s, [0.0, 0.0]), 1e-3, duration=10.0, method="rk4")
         expected = q_eq + np.outer(np.cos(np.sqrt(w2) * result.t), s)
         assert np.max(np.abs(result.joint_q - expected)) <= 1e-7 * eps
+
+
+@pytest.mark.parametrize("method", ["rk4", "rkmk4", "implicit_midpoint", "semi_implicit_euler", "explicit_euler"])
+def test_a_chaotic_double_pendulums_energy_error_falls_at_each_methods_order(method):
+    """The double pendulum released from rest with both rods horizontal (chaotic) under gravity, no other element:
+    its energy is conserved, so each method's largest energy error over 3 s is its own, O(h^p); halving h divides it
+    by 2^p, within the next term's share: [0.75, 1.25] × 2^p (h = 2 ms and 1 ms for the orders above 1, 0.2 ms and
+    0.1 ms for the Euler methods)."""
+    tree = double_pendulum()
+    scene = rd.Scene(elements=[rd.UniformGravity()])
+    scene.add_tree(tree, "pendulum")
+    p = {"rk4": 4, "rkmk4": 4, "implicit_midpoint": 2, "semi_implicit_euler": 1, "explicit_euler": 1}[method]
+    h = 0.002 if p > 1 else 0.0002
+
+    def energy_error(dt):
+        r = rd.simulate(scene, tree.joint_states([0.0, 0.0], [0.0, 0.0]), dt, duration=3.0, method=method,
+                        error=False, accuracy_level=None)  # the coarse Euler runs are inaccurate on purpose
+        return np.max(np.abs(r.total_energy - r.total_energy[0]))
+
+    ratio = energy_error(h) / energy_error(h / 2)
+    assert 0.75 * 2**p <= ratio <= 1.25 * 2**p
 
 
 def gyroscope():
