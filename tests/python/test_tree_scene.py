@@ -12,10 +12,10 @@ free joints); the variational midpoint keeps a symmetry's momentum and a floatin
 bounds the energy error of a chaotic run, and its iterates reach their tolerance at long steps; the work-energy
 balance closes on every run; a gravity on all the links (which the tree applies as its base's acceleration) moves
 them as the same gravity split across two elements; the double pendulum's small oscillations are its normal modes,
-its energy error when chaotic falls at each method's order, and a gimballed gyroscope precesses steadily at m g d /
-(I₃ ψ̇), both in closed form; a joint spring's damped oscillation and a ball joint's twist against their closed
-forms; a motor's window on a floating tree keeps its momenta; the links' records and describe(); bad input refused
-naming the value.
+its energy error when chaotic falls at each method's order, a ball-jointed top is the Lagrange top, and a gimballed
+gyroscope precesses steadily at m g d / (I₃ ψ̇), each against its closed form; a joint spring's damped oscillation and a ball
+joint's twist against their closed forms; a motor's window on a floating tree keeps its momenta; the links' records
+and describe(); bad input refused naming the value.
 
 Error bound of the step comparison: both sides evaluate the same four derivatives, each to ~10 n² eps of its scale
 (test_tree_vs_reference's bound for forward dynamics, n <= 8 links; the element forces add a few eps), and the step
@@ -453,6 +453,34 @@ def test_a_chaotic_double_pendulums_energy_error_falls_at_each_methods_order(met
 
     ratio = energy_error(h) / energy_error(h / 2)
     assert 0.75 * 2**p <= ratio <= 1.25 * 2**p
+
+
+def test_a_ball_jointed_top_is_the_lagrange_top():
+    """A symmetric top as a one-link tree on a ball joint at W's origin, under the scene's gravity, against the
+    Lagrange top's closed form (LagrangeTopSolution of the same PivotedBody) at every record over 2 s. Bound: RK4's error at h is at most twice its Richardson estimate |y(2h) − y(h)| / 15 (C h⁴ asymptotic, the
+    next term's share doubled), plus the closed form's own error 16 eps κ (1 + |ω| t) (κ of I_O ≈ 3)."""
+    m, c, I_C = 2.0, np.array([0.0, 0.0, 0.2]), np.diag([0.3, 0.3, 0.1])
+    q0, w0 = so3_ref.rotvec_to_quat([0.5, 0.2, 0.0]), np.array([0.4, -0.3, 15.0])
+    top = rd.LagrangeTopSolution(rd.PivotedBody(rd.RigidBody(m, I_C), c), [0.0, 0.0, -9.81],
+                                 rd.PivotedBodyState(q_WB=q0, w_B=w0))
+    tree = rd.Tree()
+    tree.add_link("top", -1, rd.SphericalJoint(), rd.SpatialInertia(m, c, I_C))
+    scene = rd.Scene(elements=[rd.UniformGravity(g_W=(0.0, 0.0, -9.81))])
+    scene.add_tree(tree, "top")
+    fine, coarse = (rd.simulate(scene, tree.joint_states(q0, w0), h, duration=2.0, method="rk4",
+                                record_every=round(0.1 / h)) for h in (1e-3, 2e-3))
+    eps, w = np.finfo(float).eps, np.linalg.norm(w0)
+    q_exact, w_exact = top.at(fine.t)
+    slack = 16 * eps * 3 * (1 + w * fine.t)
+
+    def angle(a, b):  # between attitudes (n, 4): 2 atan2(|vec(a⁻¹ b)|, |scalar|)
+        d = np.array([so3_ref.quat_multiply(so3_ref.quat_inverse(x), y) for x, y in zip(a, b)])
+        return 2 * np.arctan2(np.linalg.norm(d[:, :3], axis=1), np.abs(d[:, 3]))
+
+    bound_q = 2 * angle(fine.q_WB[:, 0], coarse.q_WB[:, 0]) / 15 + slack
+    bound_w = 2 * np.linalg.norm(fine.w_B[:, 0] - coarse.w_B[:, 0], axis=1) / 15 + w * slack
+    assert np.all(angle(fine.q_WB[:, 0], q_exact) <= bound_q)
+    assert np.all(np.linalg.norm(fine.w_B[:, 0] - w_exact, axis=1) <= bound_w)
 
 
 def gyroscope():
