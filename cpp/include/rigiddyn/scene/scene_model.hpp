@@ -653,13 +653,16 @@ class BasicSceneModel {
   // Anderson's mixing of the fixed point x = g(x) (Walker & Ni 2011, "Anderson acceleration for fixed-point
   // iterations"), after iterate k (x_k in mid_, g(x_k) in next_): with the residuals f = g(x) − x and the differences
   // ΔF, ΔG of the last m iterates' f and g, x_k+1 = g(x_k) − ΔG γ, γ = argmin |f_k − ΔF γ| (the normal equations of
-  // at most m unknowns); the plain iterate g(x_k) where γ is not finite. The step still ends only on |g(x) − x|. A
-  // tree then takes the configuration of the mixed velocities (recenter_variational_midpoint: the pair consistent).
+  // at most m unknowns); the plain iterate g(x_k) where γ is not finite, and a restart from it (the differences
+  // dropped) where a mixed iterate's residual grew tenfold. The step still ends only on |g(x) − x|. A tree then takes
+  // the configuration of the mixed velocities (recenter_variational_midpoint: the pair consistent).
   void anderson_mix(int k) const {
     residual_ = next_ - mid_;
-    const int columns = std::min(k, anderson_depth);
-    if (k > 0) {
-      const int c = (k - 1) % anderson_depth;
+    if (k == 0 || !(residual_.norm() <= 10.0 * last_residual_.norm())) anderson_start_ = k;  // (re)start: plain
+    const int kept = k - anderson_start_;  // the differences since the (re)start
+    const int columns = std::min(kept, anderson_depth);
+    if (kept > 0) {
+      const int c = (kept - 1) % anderson_depth;
       delta_f_.col(c) = residual_ - last_residual_;
       delta_g_.col(c) = next_ - last_g_;
     }
@@ -765,6 +768,7 @@ class BasicSceneModel {
   // anderson_mix's last residual and g, and the differences of the last anderson_depth ones (sized with a tree)
   static constexpr int anderson_depth = 4;
   mutable Coordinates residual_, last_residual_, last_g_;
+  mutable int anderson_start_ = 0;  // the iterate of the last (re)start
   mutable Eigen::MatrixXd delta_f_, delta_g_;
   // the Coriolis terms (loads_kick's exact kick; empty without a turning frame) and the bodies' inertias for it
   struct CoriolisFrame {
