@@ -47,9 +47,8 @@ void generalized_momentum_after_kinematics(const Tree& tree, const std::vector<F
 
 const Eigen::VectorXd& generalized_momentum(const Tree& tree, const Eigen::Ref<const Eigen::VectorXd>& q,
                                             const Eigen::Ref<const Eigen::VectorXd>& v, TreeWorkspace& ws) {
-  static const std::vector<Force> none;
   forward_kinematics(tree, q, v, ws);
-  generalized_momentum_after_kinematics(tree, none, ws);
+  generalized_momentum_after_kinematics(tree, no_external_forces(), ws);
   return ws.p;
 }
 

@@ -47,8 +47,7 @@ const Eigen::VectorXd& rnea(const Tree& tree, const Eigen::Ref<const Eigen::Vect
 
 const Eigen::VectorXd& bias_forces(const Tree& tree, const Eigen::Ref<const Eigen::VectorXd>& q,
                                    const Eigen::Ref<const Eigen::VectorXd>& v, TreeWorkspace& ws) {
-  static const std::vector<Force> none;
-  return rnea(tree, q, v, ws.zero_v, none, ws);
+  return rnea(tree, q, v, ws.zero_v, no_external_forces(), ws);
 }
 
 }  // namespace rigiddyn

@@ -13,6 +13,12 @@
 
 namespace rigiddyn {
 
+// The f_ext of the tree algorithms for no external force on any link (they take an empty list as none).
+inline const std::vector<Force>& no_external_forces() {
+  static const std::vector<Force> none;
+  return none;
+}
+
 struct TreeWorkspace {
   explicit TreeWorkspace(const Tree& tree);
   // Whether this workspace was made for a tree of the shape of `tree` (its links and each joint's nv), so that the

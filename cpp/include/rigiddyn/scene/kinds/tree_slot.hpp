@@ -28,7 +28,6 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 
-#include <algorithm>
 #include <memory>
 #include <stdexcept>
 #include <vector>
@@ -56,7 +55,6 @@ struct TreeSlot : SlotPlace {
   bool has_quaternions = false;          // a ball or free joint
   bool fill_quaternions = true;  // each evaluation sets the links' q_WB (a user's force may read them; the records do)
   mutable bool unloaded = false;   // no link has a wrench (note_wrenches)
-  mutable bool f_ext_zero = false; // every f_ext is zero
   // the variational midpoint step's q and p at its start, the chart points φ̄ of q̄ and φ₁ of q₁, F and p̄ at q̄, a
   // solve's right side
   mutable Eigen::VectorXd q_0, p_0, phi, phi_1, force, p_bar, rhs;
@@ -133,14 +131,9 @@ struct TreeSlot : SlotPlace {
     unloaded = sum == 0.0;
   }
   // v̇ (ws.qdd) by the articulated-body algorithm under the links' wrenches, after kinematics and note_wrenches at the
-  // same y; f_ext holds them in the links' frames (the algorithm takes none when every link is unloaded)
+  // same y: their forces in the links' frames (external_forces: f_ext, or none when every link is unloaded)
   const Eigen::VectorXd& accelerations(const double* y, const BodyKinematics& first, const BodyWrench& wrench) const {
-    static const std::vector<Force> none;
-    if (unloaded) {
-      if (!f_ext_zero) std::fill(f_ext.begin(), f_ext.end(), Force());
-      f_ext_zero = true;
-      return aba_after_kinematics(*tree, velocities(y), tau, none, ws);
-    }
+    if (unloaded) return aba_after_kinematics(*tree, velocities(y), tau, no_external_forces(), ws);
     const BodyKinematics* k = &first;
     const BodyWrench* w = &wrench;
     for (int i = 0; i < links; ++i) {
@@ -148,9 +141,10 @@ struct TreeSlot : SlotPlace {
       f_ext[i].linear = f_L;
       f_ext[i].angular = w[i].tau_B + cross_3(c_L[i], f_L);
     }
-    f_ext_zero = false;
     return aba_after_kinematics(*tree, velocities(y), tau, f_ext, ws);
   }
+  // the links' forces of the last accelerations
+  const std::vector<Force>& external_forces() const { return unloaded ? no_external_forces() : f_ext; }
   // the tangent of q at y: per joint its rate, ω_L, or (ω_L, R_JL v_L)
   void configuration_tangent(const double* y, double* out) const {
     const double* v = y + at_y + nq;
@@ -272,21 +266,21 @@ struct TreeSlot : SlotPlace {
   // p₀ = H(q₀) v₀ at the step's start y0, and the first iterate (q₀ ⊕ φ̄, v₀) with φ̄ = (h/2) ψ(v₀) into mid (a
   // consistent pair: from φ̄ = 0 the first iterate would miss the rotations' terms in ξ, a larger first correction)
   void start_variational_midpoint(const double* y0, double half_h, double* mid) const {
-    static const std::vector<Force> none;
     load_configuration(y0);
     q_0 = Eigen::Map<const Eigen::VectorXd>(y0 + at_y, nq);
     forward_kinematics_unchecked(*tree, configuration(), velocities(y0), ws);
-    generalized_momentum_after_kinematics(*tree, none, ws);
+    generalized_momentum_after_kinematics(*tree, no_external_forces(), ws);
     p_0 = ws.p;
     chart_point_of(y0 + at_y + nq, half_h);
     write_chart_point(phi, mid);
   }
-  // One iterate, after the scene's rate at ȳ = mid (its kinematics and links' wrenches in ws and f_ext, configuration() its
-  // q̄ = q_0 ⊕ φ̄): p̄ from F(ȳ) by the equations above, v̄ = H(q̄)⁻¹ p̄ into `next` and, with φ̄ = (h/2) ψ for the
-  // chart rate ψ of v̄ (v̄; a free joint's R̄ v̄_L for its position), its configuration q_0 ⊕ φ̄ (the pair consistent: a
-  // q̄ one iterate behind v̄ would slow the fixed point to a rate O(√h), H(q̄) depending on q̄ at first order)
+  // One iterate, after the scene's rate at ȳ = mid (its kinematics in ws, the links' forces external_forces(),
+  // configuration() its q̄ = q_0 ⊕ φ̄): p̄ from F(ȳ) by the equations above, v̄ = H(q̄)⁻¹ p̄ into `next` and, with φ̄
+  // = (h/2) ψ for the chart rate ψ of v̄ (v̄; a free joint's R̄ v̄_L for its position), its configuration q_0 ⊕ φ̄
+  // (the pair consistent: a q̄ one iterate behind v̄ would slow the fixed point to a rate O(√h), H(q̄) depending on q̄
+  // at first order)
   void variational_midpoint_iterate(const double* mid, double half_h, double* next) const {
-    generalized_momentum_after_kinematics(*tree, f_ext, ws);
+    generalized_momentum_after_kinematics(*tree, external_forces(), ws);
     force = ws.p_dot;
     const double* v_bar = mid + at_y + nq;
     for (const TreeJoint& j : joints) {
