@@ -5271,7 +5271,9 @@ class ToleranceChoice:
     run has 64 steps or more, the chosen method then runs over the whole horizon at a quarter of those steps and its
     largest error, scaled by dt^p, sets the steps (an error that jumps after the short pilot's span is seen). The run's
     global error estimate (GlobalError) is the certificate: when it is not accepted (see met), or above the tolerance,
-    the run is refined once, dt' = dt (tolerance / 2 / error)^(1/p) (dt / 2 when not accepted).
+    the run is refined, dt' = dt (tolerance / 2 / error)^(1/p) (dt / 2 when not accepted), and refined a second time
+    the same way where the refined run's certificate is accepted but above the tolerance (after a certificate that was
+    not accepted, dt / 2 is a guess; an accepted estimate is not).
     
     Parameters
     ----------
@@ -5300,7 +5302,7 @@ class ToleranceChoice:
         record: reliable, between two reliable records, an observed order above the window (an over-estimate), or an
         estimate <= tolerance / 16 (a zero crossing of an oscillating error, the round-off of the first records).
     refinements : int
-        0 or 1.
+        0, 1 or 2.
     reason : str
         The choice and its outcome, in words.
     pilots : tuple of dict
@@ -5384,7 +5386,7 @@ class ToleranceChoice:
     @property
     def refinements(self) -> int:
         """
-        0 or 1: the runs after the first.
+        0, 1 or 2: the runs after the first.
         """
     @property
     def run_seconds(self) -> float:
@@ -11983,8 +11985,8 @@ def simulate(model: PivotedBody | PivotedPlanarBody | Gyrostat | Scene | Compile
         Instead of dt: the largest error of `measure` the run may have, absolute, in the measure's unit (a quantity
         is converted to it), finite and > 0. The method (unless given) and dt are chosen: each candidate method is
         piloted on a short run, its error fitted as C dt^p (t - t0), and the cheapest (method, dt) predicted to meet
-        half the tolerance is run with its global error estimate as the certificate, refined once when that fails
-        (see ToleranceChoice). The horizon is `duration` (steps depend on dt: steps is refused); record_every counts
+        half the tolerance is run with its global error estimate as the certificate, refined when that fails (once,
+        twice where the first refinement's estimate is reliable but above the tolerance; see ToleranceChoice). The horizon is `duration` (steps depend on dt: steps is refused); record_every counts
         steps of the chosen dt; steps is a multiple of lcm(record_every, 4), so every record is checked.
         result.choice says what was chosen and why. A scene with a PythonForce is refused (ToleranceError): its
         estimate is never reliable.
@@ -12025,7 +12027,7 @@ def simulate(model: PivotedBody | PivotedPlanarBody | Gyrostat | Scene | Compile
         measure (with the nearest name), max_steps < 4; with a controller: tolerance given, a body outside a scene, or
         a bad command (named by the controller).
     ToleranceError
-        A ValueError: the tolerance cannot be met within max_steps, the refined run's certificate still fails, or the
+        A ValueError: the tolerance cannot be met within max_steps, the refined runs' certificate still fails, or the
         scene has a PythonForce; it carries the measured error, the choice and the best result (see ToleranceError).
     TypeError
         model not one of the kinds listed, or initial not of its kind (the message names it).

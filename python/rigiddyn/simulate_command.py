@@ -93,7 +93,7 @@ def add_simulate_parser(sub: "argparse._SubParsersAction[argparse.ArgumentParser
     p.add_argument("--tolerance", type=_positive(float, "a tolerance > 0 in the unit of --measure"),
                    help="instead of --dt: the largest error the run may have (absolute, in the unit of --measure); the "
                         "method (unless --method is given) and dt are chosen, the run certified by its global error "
-                        "estimate and refined once if needed (rigiddyn.simulate's tolerance=); the horizon is "
+                        "estimate and refined if needed (rigiddyn.simulate's tolerance=); the horizon is "
                         "--duration or the file's; a scene file's [run] dt and method are then not used")
     p.add_argument("--measure", choices=("attitude", "angular_velocity", "position", "velocity", "energy",
                                          "angular_momentum"),

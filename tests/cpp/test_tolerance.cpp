@@ -90,6 +90,20 @@ TEST(ToleranceModel, TheLargestErrorsOrderOverridesANoisyRecord) {
   EXPECT_EQ(first_uncertified(e, ErrorMeasure::attitude, 1e-8), 3u);
 }
 
+TEST(ToleranceModel, ACoarseRunBeyondTheStabilityLimitIsNeverCertified) {
+  GlobalErrorEstimate e;
+  e.order = 4;
+  e.attitude = {0.0, 1e-7, 2e-7, 3e-7};
+  e.observed_order = {std::nan(""), 4.0, 4.1, 4.0};  // the largest error's order looks right ...
+  e.verdict = {"reliable", "reliable", "reliable", "reliable"};
+  EXPECT_EQ(first_uncertified(e, ErrorMeasure::attitude, 1e-8), 4u);
+  // ... but the run at 4h gained energy beyond |T| + |V| at record 3: its error is no power of h (the Foucault
+  // pendulum at 1420 rk4 steps over an hour: estimate 1.8e-6 rad where the error is 0.02 rad)
+  e.verdict[3] = "step beyond the stability limit: the energy of the run at 4h departs from the run at 2h's by more "
+                 "than |T| + |V|";
+  EXPECT_EQ(first_uncertified(e, ErrorMeasure::attitude, 1e-8), 3u);
+}
+
 TEST(ToleranceModel, OrderPruningFigure) {
   // at 1e-8 relative: order 4 needs 100 steps x 4 evaluations, order 2 10^4 x 2
   EXPECT_NEAR(order_cost_figure(4, 4, 1e-8), 400.0, 1e-9);

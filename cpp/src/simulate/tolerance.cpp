@@ -67,6 +67,15 @@ GlobalErrorEstimate estimate_of_measure(const ErrorRecords& h, const ErrorRecord
   return estimate_global_error(a.records(), b.records(), c.records(), answer, order);
 }
 
+void keep_stability_verdicts(const GlobalErrorEstimate& all, GlobalErrorEstimate& measure) {
+  for (std::size_t i = 0; i < all.verdict.size() && i < measure.verdict.size(); ++i) {
+    const std::string& v = all.verdict[i];
+    if (v.find("stability limit") != std::string::npos || v.find("diverged") != std::string::npos) {
+      measure.verdict[i] = v;
+    }
+  }
+}
+
 const std::vector<std::string>& error_measure_names() {
   static const std::vector<std::string> names = {"attitude", "angular_velocity", "position",
                                                  "velocity", "energy",           "angular_momentum"};
@@ -148,8 +157,13 @@ double observed_order_of_largest(const GlobalErrorEstimate& e, ErrorMeasure meas
 std::size_t first_uncertified(const GlobalErrorEstimate& e, ErrorMeasure measure, double tolerance) {
   const std::size_t bad = first_unreliable(e, measure, tolerance);
   if (bad == e.verdict.size()) return bad;
-  for (const std::string& v : e.verdict) {  // a run that diverged or has no estimate is never certified
-    if (v.find("diverged") != std::string::npos || v.compare(0, 11, "no estimate") == 0) return bad;
+  // a run that diverged, whose step is beyond the stability limit (a coarse run's energy ran away: its error is no
+  // power of h, whatever the order its largest error shows) or has no estimate is never certified
+  for (const std::string& v : e.verdict) {
+    if (v.find("diverged") != std::string::npos || v.find("stability limit") != std::string::npos ||
+        v.compare(0, 11, "no estimate") == 0) {
+      return bad;
+    }
   }
   if (std::isnan(largest_error(e, measure))) return bad;
   return observed_order_of_largest(e, measure) >= e.order - std::log2(1.5) ? e.verdict.size() : bad;

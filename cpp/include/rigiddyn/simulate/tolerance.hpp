@@ -9,7 +9,8 @@
 // step is then dt = (s τ / (C T))^(1/p), s the safety factor; the run's cost is its steps times the cost per step
 // the pilot measured. The cheapest candidate is run with its estimate; a certificate that fails (not reliable,
 // or above τ) is followed by one refinement dt' = dt (s τ / ε)^(1/p) (at most dt / 2 when the estimate was not
-// reliable).
+// reliable), and by a second one from the first refinement's estimate when that estimate is reliable but above τ
+// (after an unreliable first certificate, dt / 2 is a guess; the refinement's reliable estimate is not).
 //
 // Pilots: 16 steps over T/4 first; while the pilot's estimate is not reliable its horizon is halved (down to
 // T/32, the step with it) and then its steps doubled (up to 512). Its cost is that of ~28 steps whatever the
@@ -72,8 +73,8 @@ std::size_t first_unreliable(const GlobalErrorEstimate& e, ErrorMeasure measure,
 // pendulum's angle error at a turning point, where a higher-order term dominates).
 double observed_order_of_largest(const GlobalErrorEstimate& e, ErrorMeasure measure);
 
-// The certificate: first_unreliable, or, where a record fails, e.verdict.size() all the same when no run diverged,
-// every record has an estimate and the largest error's observed order is at or above the window's lower end
+// The certificate: first_unreliable, or, where a record fails, e.verdict.size() all the same when no run diverged
+// or went beyond the stability limit (a verdict "step beyond the stability limit: ..."), every record has an estimate and the largest error's observed order is at or above the window's lower end
 // (2^p / 1.5); else the first record not accepted.
 std::size_t first_uncertified(const GlobalErrorEstimate& e, ErrorMeasure measure, double tolerance);
 
@@ -117,6 +118,11 @@ struct MeasuredEstimate {
   GlobalErrorEstimate all, measure;
 };
 
+// Copies to `measure` (the same records) every verdict of `all` that says a run went beyond the stability limit or
+// diverged: those are facts of the runs, which no single measure's order shows (the measure's estimate does not see
+// the energy that a coarse run gains beyond the stability limit, while its attitude error stays bounded).
+void keep_stability_verdicts(const GlobalErrorEstimate& all, GlobalErrorEstimate& measure);
+
 // global_error's runs, estimated both ways (order 0, 'exact': the round-off bound alone, both ways).
 template <class Records, class Run>
 MeasuredEstimate measured_global_error(const Records& answer, const SimulationOptions& options, int order, Run&& run,
@@ -128,7 +134,10 @@ MeasuredEstimate measured_global_error(const Records& answer, const SimulationOp
   const Records twice = run(coarse_options(options, 2));
   const Records four_times = run(coarse_options(options, 4));
   const ErrorRecords h = error_records(answer), h2 = error_records(twice), h4 = error_records(four_times);
-  return {estimate_global_error(h, h2, h4, options, order), estimate_of_measure(h, h2, h4, options, order, measure)};
+  MeasuredEstimate out{estimate_global_error(h, h2, h4, options, order),
+                       estimate_of_measure(h, h2, h4, options, order, measure)};
+  keep_stability_verdicts(out.all, out.measure);
+  return out;
 }
 
 // A method the run may use, with the order the model has under it (scene_order; 0 for 'exact').
@@ -430,7 +439,10 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
     }
     return checked(x);
   };
-  for (int attempt = 0; attempt < 2; ++attempt) {
+  // the first run, one refinement, and a second one only where the first refinement's certificate is reliable but
+  // above τ (its step then follows from a sound error model: the first refinement's may not, after an unreliable
+  // certificate)
+  for (int attempt = 0; attempt < 3; ++attempt) {
     Records h = checked(o);
     if (out.interrupted) break;
     MeasuredEstimate estimates = measured_global_error(h, o, chosen.order, coarse, request.measure);
@@ -452,12 +464,14 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
     }
     if (met) {
       choice.met = true;
-      choice.reason += (attempt == 0 ? "; certified " : "; certified after the refinement ") + format_number(error) +
+      choice.reason += (attempt == 0 ? "; certified " : attempt == 1 ? "; certified after the refinement "
+                                                                      : "; certified after the second refinement ") +
+                       format_number(error) +
                        " " + error_measure_unit(request.measure);
       break;
     }
-    if (attempt == 1 || chosen.order == 0) {
-      choice.reason += "; " + why + (attempt == 1 ? " after one refinement" : "");
+    if (attempt == 2 || (attempt == 1 && !reliable) || chosen.order == 0) {
+      choice.reason += "; " + why + (attempt == 2 ? " after two refinements" : attempt == 1 ? " after one refinement" : "");
       break;
     }
     // an estimate that is not reliable still bounds the step from above where it is finite: at most dt / 2, less
@@ -470,7 +484,7 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
       break;
     }
     choice.reason += "; " + why + ": refined to " + std::to_string(steps) + " steps";
-    choice.refinements = 1;
+    choice.refinements = attempt + 1;
     o.dt = T / static_cast<double>(steps), o.steps = steps;
   }
   choice.run_seconds = seconds_since(run_start);
