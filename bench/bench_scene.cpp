@@ -5,6 +5,9 @@
 //                                   scaling (counter pair_time = time per pair evaluation, 4 N(N−1)/2 of
 //                                   them per step). nbody_gravity_rk4_over_scalar_loop/N: the same scene
 //                                   vs the loop summing one pair at a time.
+//   pair_sum_avx512_over_avx2/N,    the direct sum of MutualGravity alone (scene/elements/pair_forces.hpp) on
+//   pair_sum_avx2_over_portable/N   each path the CPU has, side by side (counter pair_time; a path the CPU
+//                                   lacks is skipped): what each vector width gains.
 //   nbody_spheres_over_particles_rk4/N  the same scene with rigid spheres ("rigiddyn") over the particle
 //                                   scene ("baseline"): what attitude costs when it is irrelevant.
 //   swarm_spheres_over_particles_rk4/N  the same under UniformGravity only (no O(N²) sum to hide it).
@@ -29,8 +32,10 @@
 #include "scene_baselines.hpp"
 #include "rigiddyn/integrators/rk4.hpp"
 #include "rigiddyn/scene/compile.hpp"
+#include "rigiddyn/scene/elements/pair_forces.hpp"
 #include "rigiddyn/scene/simulate_scene.hpp"
 #include "rigiddyn/simulate/simulate.hpp"
+#include "rigiddyn/vector_instructions.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -168,6 +173,35 @@ void nbody_loop(benchmark::State& state, bench::PairSum sum) {
 }
 void nbody_packed_loop(benchmark::State& state) { nbody_loop(state, bench::PairSum::packed); }
 void nbody_scalar_loop(benchmark::State& state) { nbody_loop(state, bench::PairSum::scalar); }
+
+// ---- the pair sum alone, path by path ---------------------------------------------------------------
+// The columns of N cluster particles (positions, forces, masses: pair_forces.hpp), the forces summed `rounds`
+// times per iteration by `path` where the CPU has it.
+using PairPath = void (*)(Eigen::ArrayXXd&, Eigen::Index, double, double);
+void pair_sum(benchmark::State& state, PairPath path, bool available) {
+  if (!available) {
+    state.SkipWithError("this CPU (or build) has no such vector instructions");
+    return;
+  }
+  const std::int64_t n = state.range(0), rounds = std::max<std::int64_t>(1, 1'000'000 / (n * n));
+  const bench::ParticleCluster c = bench::particle_cluster(n);
+  Eigen::ArrayXXd columns = Eigen::ArrayXXd::Zero(n, 8);
+  for (std::int64_t i = 0; i < n; ++i) {
+    for (int k = 0; k < 3; ++k) columns(i, k) = c.p_W[3 * i + k];
+    columns(i, 7) = c.mass[i];
+  }
+  for (auto _ : state) {
+    for (std::int64_t r = 0; r < rounds; ++r) path(columns, n, G_cluster, softening * softening);
+    benchmark::DoNotOptimize(columns.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * rounds);
+  state.counters["pair_time"] = benchmark::Counter(0.5 * n * (n - 1) * rounds * state.iterations(),
+                                                   benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+void pair_sum_portable(benchmark::State& state) { pair_sum(state, &detail::add_pair_forces_portable, true); }
+void pair_sum_avx2(benchmark::State& state) { pair_sum(state, &detail::add_pair_forces_avx2_fma, cpu_has_avx2_fma()); }
+void pair_sum_avx512(benchmark::State& state) { pair_sum(state, &detail::add_pair_forces_avx512, cpu_has_avx512()); }
 
 void nbody_sizes(benchmark::internal::Benchmark* b) {
   const std::int64_t largest = bench::bench_size(4000, 100);
@@ -398,6 +432,10 @@ BENCHMARK(nbody_particles)->Name("nbody_gravity_rk4:rigiddyn")->Apply(nbody_size
 BENCHMARK(nbody_packed_loop)->Name("nbody_gravity_rk4:baseline")->Apply(nbody_sizes);
 BENCHMARK(nbody_particles)->Name("nbody_gravity_rk4_over_scalar_loop:rigiddyn")->Apply(size_10_100_1000);
 BENCHMARK(nbody_scalar_loop)->Name("nbody_gravity_rk4_over_scalar_loop:baseline")->Apply(size_10_100_1000);
+BENCHMARK(pair_sum_avx512)->Name("pair_sum_avx512_over_avx2:rigiddyn")->Apply(size_10_100_1000);
+BENCHMARK(pair_sum_avx2)->Name("pair_sum_avx512_over_avx2:baseline")->Apply(size_10_100_1000);
+BENCHMARK(pair_sum_avx2)->Name("pair_sum_avx2_over_portable:rigiddyn")->Apply(size_10_100_1000);
+BENCHMARK(pair_sum_portable)->Name("pair_sum_avx2_over_portable:baseline")->Apply(size_10_100_1000);
 BENCHMARK(nbody_spheres)->Name("nbody_spheres_over_particles_rk4:rigiddyn")->Apply(size_10_100_1000);
 BENCHMARK(nbody_particles)->Name("nbody_spheres_over_particles_rk4:baseline")->Apply(size_10_100_1000);
 BENCHMARK(swarm_spheres)->Name("swarm_spheres_over_particles_rk4:rigiddyn")->Apply(size_10_100_1000);

@@ -994,7 +994,8 @@ threads : int, optional
     Number of threads, >= 1 (None, the default: every hardware thread, default_thread_count()).
 simd : bool, default False
     Run the SIMD path across samples (RigidBody, method 'rk4', constant loads: a force in W and a torque in B
-    without time window): equal to the scalar path up to round-off, not bitwise.
+    without time window), eight samples per 512-bit instruction where the CPU has AVX-512F, else four (AVX2) or
+    two (SSE2): equal to the scalar path up to round-off, not bitwise.
 scalar_first : bool, default False
     Quaternions, read from a dict and recorded, as (w, x, y, z).
 progress : callable, optional
@@ -1240,14 +1241,16 @@ Examples
 True
 )doc");
   m.def("vector_instructions", [] { return std::string(vector_instructions_name(vector_instructions())); },
-        R"doc(The vector instructions this process's hot kernels run on: 'avx2_fma' or 'portable'.
+        R"doc(The vector instructions this process's hot kernels run on: 'avx512', 'avx2_fma' or 'portable'.
 
-The N-body pair sum of MutualGravity runs four pairs per instruction with AVX2 and fused multiply-adds where the
-CPU has them ('avx2_fma'), and two per instruction otherwise ('portable', the x86-64 baseline the library is built
-for). The two agree to round-off (per body and component within (n + 8) 2**-53 times the sum of the pair forces'
-magnitudes, n the body count); only 'portable' gives the same bits on every machine. The choice is made once per
-process: set the environment variable RIGIDDYN_PORTABLE=1 before the first run to force 'portable'. The SIMD
-batch lanes (simulate_batch(..., simd=True)) choose their own instructions when the library is loaded.
+The N-body pair sum of MutualGravity runs eight pairs per instruction where the CPU and the operating system have
+AVX-512F ('avx512'), four with AVX2 and fused multiply-adds where the CPU has those ('avx2_fma'), and two per
+instruction otherwise ('portable', the x86-64 baseline the library is built for); the rotation array functions run
+their AVX2 blocks on 'avx512' and 'avx2_fma', with the same bits as 'portable'. The paths agree to round-off (the
+pair sum per body and component within (n + 8) 2**-53 times the sum of the pair forces' magnitudes of the exact
+sum, n the body count); only 'portable' gives the same bits on every machine. The choice is made once per process:
+set the environment variable RIGIDDYN_PORTABLE=1 before the first run to force 'portable'. The SIMD batch lanes
+(simulate_batch(..., simd=True)) choose their own instructions when the library is loaded.
 
 Parameters
 ----------
@@ -1256,7 +1259,7 @@ None
 Returns
 -------
 str
-    'avx2_fma' or 'portable'.
+    'avx512', 'avx2_fma' or 'portable'.
 
 See Also
 --------
@@ -1264,7 +1267,7 @@ MutualGravity, simulate_batch
 
 Examples
 --------
->>> rd.vector_instructions() in ("avx2_fma", "portable")
+>>> rd.vector_instructions() in ("avx512", "avx2_fma", "portable")
 True
 )doc");
 }

@@ -131,7 +131,7 @@ __attribute__((target("avx2"))) pybind11::ssize_t run_blocks_avx2(const double* 
 template <int in_size, int out_size, typename Block, typename Item>
 void map_blocks(const double* in, double* out, pybind11::ssize_t n, bool stacked, const Block& block, const Item& item) {
 #ifdef RIGIDDYN_HAS_AVX2_BLOCKS
-  const bool avx2 = vector_instructions() == VectorInstructions::avx2_fma;
+  const bool avx2 = runs_avx2_fma(vector_instructions());
 #else
   const bool avx2 = false;
 #endif

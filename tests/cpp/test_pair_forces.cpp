@@ -1,7 +1,7 @@
-// The N-body pair sum (scene/elements/pair_forces.hpp) on both of its paths, against a long-double sum of the same
-// pairs: each within its stated bound (n + 8) u Σ_j |f_ij| per body and component (u = 2⁻⁵³), so the portable and
-// AVX2 + FMA paths agree to twice that; Newton's third law pair by pair on each path; and the dispatch takes the
-// path vector_instructions() names.
+// The N-body pair sum (scene/elements/pair_forces.hpp) on each of its paths, against a long-double sum of the same
+// pairs: each within its stated bound (n + 8) u Σ_j |f_ij| per body and component (u = 2⁻⁵³), so the portable,
+// AVX2 + FMA and AVX-512 paths agree to twice that; Newton's third law pair by pair on each path; and the dispatch
+// takes the path vector_instructions() names.
 #include <gtest/gtest.h>
 
 #include "rigiddyn/scene/elements/pair_forces.hpp"
@@ -92,10 +92,25 @@ TEST(PairForces, Avx2FmaPathWithinItsBound) {
   }
 }
 
+// every remainder of the eight lanes (n − i − 1 mod 8 for each i: a block of four and single pairs after the blocks
+// of eight), none of which may add or store beyond n (the rows after n hold 7); and a body at the origin without
+// softening
+TEST(PairForces, Avx512PathWithinItsBound) {
+  if (!cpu_has_avx512()) GTEST_SKIP() << "this CPU (or build) has no AVX-512F";
+  for (const Eigen::Index n : kCounts) {
+    for (const double softening2 : {0.0, 1e-2}) expect_within_bound(&detail::add_pair_forces_avx512, n, softening2, 11u * n + 1);
+  }
+  Eigen::ArrayXXd c = cluster(11, 3, 9);
+  c(0, 0) = c(0, 1) = c(0, 2) = 0.0;
+  detail::add_pair_forces_avx512(c, 11, 1.0, 0.0);
+  EXPECT_TRUE(c.topRows(11).allFinite());
+}
+
 // f_i and f_j of one pair are the same rounded g d, added and subtracted: two bodies' forces are exact negatives
 TEST(PairForces, ThirdLawPairByPairOnEachPath) {
   std::vector<Path> paths{&detail::add_pair_forces_portable};
   if (cpu_has_avx2_fma()) paths.push_back(&detail::add_pair_forces_avx2_fma);
+  if (cpu_has_avx512()) paths.push_back(&detail::add_pair_forces_avx512);
   for (const Path path : paths) {
     Eigen::ArrayXXd c = cluster(2, 0, 5);
     path(c, 2, 1.3, 0.0);
@@ -104,8 +119,9 @@ TEST(PairForces, ThirdLawPairByPairOnEachPath) {
 }
 
 TEST(PairForces, DispatchTakesThePathOfVectorInstructions) {
-  const Path expected = vector_instructions() == VectorInstructions::avx2_fma ? &detail::add_pair_forces_avx2_fma
-                                                                               : &detail::add_pair_forces_portable;
+  const Path expected = vector_instructions() == VectorInstructions::avx512     ? &detail::add_pair_forces_avx512
+                        : vector_instructions() == VectorInstructions::avx2_fma ? &detail::add_pair_forces_avx2_fma
+                                                                                : &detail::add_pair_forces_portable;
   Eigen::ArrayXXd a = cluster(37, 0, 3), b = a;
   detail::add_pair_forces(a, 37, 1.0, 0.0);
   expected(b, 37, 1.0, 0.0);
@@ -116,6 +132,9 @@ TEST(PairForces, DispatchTakesThePathOfVectorInstructions) {
   }
   if (!cpu_has_avx2_fma()) {
     EXPECT_EQ(vector_instructions(), VectorInstructions::portable);
+  }
+  if (cpu_has_avx512() && !(portable != nullptr && *portable != '\0' && std::strcmp(portable, "0") != 0)) {
+    EXPECT_EQ(vector_instructions(), VectorInstructions::avx512);  // the widest path the CPU has
   }
 }
 

@@ -76,7 +76,7 @@ SimulationOptions options_of(const Batch& b, std::size_t i) {
   return o;
 }
 
-BatchTrajectory run(const Batch& b, SimdLanes lanes = simd_default_lanes) {
+BatchTrajectory run(const Batch& b, SimdLanes lanes = simd_default_lanes()) {
   return simulate_batch_simd(b.bodies, b.initial, b.common, b.per_sample, 1, lanes);
 }
 
@@ -286,7 +286,7 @@ using test::message_of;
 
 TEST(SimdRigidBody, BadInputNamesTheArgument) {
   const Batch good = tumbling(3, 8);
-  const auto refused = [&](Batch b, int threads = 1, SimdLanes lanes = simd_default_lanes) {
+  const auto refused = [&](Batch b, int threads = 1, SimdLanes lanes = simd_default_lanes()) {
     return message_of([&] { simulate_batch_simd(b.bodies, b.initial, b.common, b.per_sample, threads, lanes); });
   };
   Batch b = good;

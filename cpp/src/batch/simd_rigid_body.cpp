@@ -22,6 +22,7 @@
 #include "rigiddyn/integrators/rk4.hpp"  // rk4_tableau
 #include "rigiddyn/models/euler_equations.hpp"
 #include "rigiddyn/simulate/run_loop.hpp"  // RIGIDDYN_NOINLINE
+#include "rigiddyn/vector_instructions.hpp"
 
 #include <Eigen/Core>
 
@@ -53,13 +54,15 @@ using VectorLanes4 = Lanes<4>;
 using VectorLanes8 = Lanes<8>;
 #endif
 
-// The stepping loop compiled twice, for AVX2 and for the x86-64 baseline, the one to run chosen when the
-// library is loaded (GCC function multiversioning, glibc's ifunc). AVX2 does not include FMA, so both
-// clones round every operation as the scalar path does (the tests hold for both). Measured
-// (bench/bench_simd.cpp, one core): vector4 3.4-3.6x the scalar hand loop in the AVX2 clone, 2.2x in the
-// default one; Eigen's arrays 2.2x in both (their packets are fixed at SSE2 when the library is compiled).
+// The stepping loop compiled three times, for AVX-512F, for AVX2 and for the x86-64 baseline, the one to run chosen
+// when the library is loaded (GCC function multiversioning, glibc's ifunc). AVX2 does not include FMA and this file
+// is compiled without contracting a product and a sum into one (-ffp-contract=off: AVX-512F has FMA), so every clone
+// rounds every operation as the scalar path does (the tests hold for all). Measured (bench/bench_simd.cpp, one core,
+// per sample-step against the scalar hand loop): vector8 5.8x in the AVX-512 clone, vector4 3.4-3.6x in the AVX2
+// clone, 2.2x in the default one; Eigen's arrays 2.2x in all (their packets are fixed at SSE2 when the library is
+// compiled).
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__) && !defined(RIGIDDYN_SANITIZE_BUILD)
-#define RIGIDDYN_SIMD_CLONES __attribute__((target_clones("avx2", "default")))
+#define RIGIDDYN_SIMD_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
 #else
 #define RIGIDDYN_SIMD_CLONES
 #endif
@@ -438,6 +441,8 @@ int lane_count(SimdLanes lanes) {
   }
   throw_invalid("lanes", "a rigiddyn::SimdLanes", static_cast<int>(lanes));
 }
+
+SimdLanes simd_default_lanes() { return cpu_has_avx512() ? SimdLanes::vector8 : SimdLanes::vector4; }
 
 BatchTrajectory simulate_batch_simd(const std::vector<RigidBody>& bodies, const std::vector<RigidBodyState>& initial,
                                     const SimulationOptions& common, const BatchParameters& per_sample, int threads,

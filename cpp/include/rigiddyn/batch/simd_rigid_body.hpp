@@ -30,12 +30,14 @@ enum class SimdLanes {
   eigen2,   // Eigen::Array<double, 2, 1>: one SSE2 packet (the library is compiled for x86-64's SSE2 baseline,
   eigen4,   // Eigen::Array<double, 4, 1>  and Eigen chooses its packets when compiled, so Eigen's arrays stay
   eigen8,   // Eigen::Array<double, 8, 1>  128-bit wide whatever the machine)
-  vector4,  // 4 doubles as a generic vector of the compiler (GCC/Clang vector_size): 256-bit instructions in the
-  vector8,  // 8 doubles    AVX2 clone of the stepping loop (target_clones, chosen at load time), SSE2 otherwise
+  vector4,  // 4 doubles as a generic vector of the compiler (GCC/Clang vector_size): 512- or 256-bit instructions
+  vector8,  // 8 doubles    in the AVX-512 or AVX2 clone of the stepping loop (target_clones, chosen at load time),
+            //              SSE2 otherwise
 };
-// The fastest measured (bench/bench_simd.cpp, one core: vector4 3.4-3.6x the scalar hand loop per
-// sample-step with AVX2, 2.2x on SSE2 alone; eigen4 2.2x either way).
-inline constexpr SimdLanes simd_default_lanes = SimdLanes::vector4;
+// The fastest measured on this machine's instructions (bench/bench_simd.cpp, one core, per sample-step against the
+// scalar hand loop): vector8 where the CPU has AVX-512F (5.8x, one 512-bit instruction per operation of 8 samples;
+// vector4 3.5x there), else vector4 (3.4-3.6x with AVX2, 2.2x on SSE2 alone; eigen4 2.2x either way).
+SimdLanes simd_default_lanes();
 // Every SimdLanes.
 inline constexpr SimdLanes simd_lane_kinds[] = {SimdLanes::eigen2, SimdLanes::eigen4, SimdLanes::eigen8, SimdLanes::vector4,
                                                 SimdLanes::vector8};
@@ -72,10 +74,10 @@ BatchTrajectory simulate_batch_simd(const std::vector<RigidBody>& bodies, const 
                                     const SimulationOptions& common, const BatchParameters& per_sample, int threads,
                                     SimdLanes lanes);
 
-// The same with simd_default_lanes lanes.
+// The same with simd_default_lanes() lanes.
 inline BatchTrajectory simulate_batch_simd(const std::vector<RigidBody>& bodies, const std::vector<RigidBodyState>& initial,
                                            const SimulationOptions& common, const BatchParameters& per_sample, int threads) {
-  return simulate_batch_simd(bodies, initial, common, per_sample, threads, simd_default_lanes);
+  return simulate_batch_simd(bodies, initial, common, per_sample, threads, simd_default_lanes());
 }
 
 }  // namespace rigiddyn

@@ -13,10 +13,10 @@
 namespace rigiddyn::detail {
 
 void add_pair_forces(Eigen::ArrayXXd& columns, Eigen::Index n, double G, double softening2) {
-  if (vector_instructions() == VectorInstructions::avx2_fma) {
-    add_pair_forces_avx2_fma(columns, n, G, softening2);
-  } else {
-    add_pair_forces_portable(columns, n, G, softening2);
+  switch (vector_instructions()) {
+    case VectorInstructions::avx512: return add_pair_forces_avx512(columns, n, G, softening2);
+    case VectorInstructions::avx2_fma: return add_pair_forces_avx2_fma(columns, n, G, softening2);
+    case VectorInstructions::portable: return add_pair_forces_portable(columns, n, G, softening2);
   }
 }
 
@@ -43,51 +43,113 @@ void add_pair_forces_portable(Eigen::ArrayXXd& columns, Eigen::Index n, double G
 
 namespace {
 
+// The columns of the sum (pair_forces.hpp) as pointers.
+struct PairColumns {
+  const double *x, *y, *z, *mass;
+  double *f_x, *f_y, *f_z;
+  explicit PairColumns(Eigen::ArrayXXd& c)
+      : x(c.col(0).data()), y(c.col(1).data()), z(c.col(2).data()), mass(c.col(7).data()), f_x(c.col(3).data()),
+        f_y(c.col(4).data()), f_z(c.col(5).data()) {}
+};
+
+// Body i's sums over its pairs, lane by lane, in registers of four and of eight doubles
+struct Sums4 {
+  __m256d x, y, z;
+};
+struct Sums8 {
+  __m512d x, y, z;
+};
+
 __attribute__((target("avx2,fma"))) inline double lane_sum(__m256d v) {
   const __m128d two = _mm_add_pd(_mm256_castpd256_pd128(v), _mm256_extractf128_pd(v, 1));
   return _mm_cvtsd_f64(_mm_add_sd(two, _mm_unpackhi_pd(two, two)));
 }
 
+// The pairs (i, j … j + 3): g = G m_i m_j / (r² √r²), r² = |d|² + ε² by fused multiply–adds; g d added to the sums
+// and subtracted from f_j.
+__attribute__((target("avx2,fma"))) inline void four_pairs(const PairColumns& c, Eigen::Index i, Eigen::Index j,
+                                                             __m256d Gm_i, __m256d eps2, Sums4& s) {
+  const __m256d dx = _mm256_sub_pd(_mm256_loadu_pd(c.x + j), _mm256_set1_pd(c.x[i]));
+  const __m256d dy = _mm256_sub_pd(_mm256_loadu_pd(c.y + j), _mm256_set1_pd(c.y[i]));
+  const __m256d dz = _mm256_sub_pd(_mm256_loadu_pd(c.z + j), _mm256_set1_pd(c.z[i]));
+  const __m256d r2 = _mm256_fmadd_pd(dz, dz, _mm256_fmadd_pd(dy, dy, _mm256_fmadd_pd(dx, dx, eps2)));  // |d|² + ε²
+  const __m256d g = _mm256_div_pd(_mm256_mul_pd(Gm_i, _mm256_loadu_pd(c.mass + j)), _mm256_mul_pd(r2, _mm256_sqrt_pd(r2)));
+  s.x = _mm256_fmadd_pd(g, dx, s.x), s.y = _mm256_fmadd_pd(g, dy, s.y), s.z = _mm256_fmadd_pd(g, dz, s.z);
+  _mm256_storeu_pd(c.f_x + j, _mm256_fnmadd_pd(g, dx, _mm256_loadu_pd(c.f_x + j)));
+  _mm256_storeu_pd(c.f_y + j, _mm256_fnmadd_pd(g, dy, _mm256_loadu_pd(c.f_y + j)));
+  _mm256_storeu_pd(c.f_z + j, _mm256_fnmadd_pd(g, dz, _mm256_loadu_pd(c.f_z + j)));
+}
+
+// The pairs (i, j) for j from `first` to n − 1 one at a time with the same operations (std::fma: one rounding, as
+// the vector lanes), added to f_i with the lane sums t.
+__attribute__((target("avx2,fma"))) inline void last_pairs(const PairColumns& c, Eigen::Index i, Eigen::Index first,
+                                                             Eigen::Index n, double Gm_i, double softening2, double t_x,
+                                                             double t_y, double t_z) {
+  for (Eigen::Index j = first; j < n; ++j) {
+    const double dx = c.x[j] - c.x[i], dy = c.y[j] - c.y[i], dz = c.z[j] - c.z[i];
+    const double r2 = std::fma(dz, dz, std::fma(dy, dy, std::fma(dx, dx, softening2)));
+    const double g = Gm_i * c.mass[j] / (r2 * std::sqrt(r2));
+    t_x = std::fma(g, dx, t_x), t_y = std::fma(g, dy, t_y), t_z = std::fma(g, dz, t_z);
+    c.f_x[j] = std::fma(-g, dx, c.f_x[j]), c.f_y[j] = std::fma(-g, dy, c.f_y[j]), c.f_z[j] = std::fma(-g, dz, c.f_z[j]);
+  }
+  c.f_x[i] += t_x, c.f_y[i] += t_y, c.f_z[i] += t_z;
+}
+
+// The eight pairs (i, j … j + 7), as four_pairs
+__attribute__((target("avx512f,avx2,fma"))) inline void eight_pairs(const PairColumns& c, Eigen::Index i,
+                                                                      Eigen::Index j, __m512d Gm_i, __m512d eps2,
+                                                                      Sums8& s) {
+  const __m512d dx = _mm512_sub_pd(_mm512_loadu_pd(c.x + j), _mm512_set1_pd(c.x[i]));
+  const __m512d dy = _mm512_sub_pd(_mm512_loadu_pd(c.y + j), _mm512_set1_pd(c.y[i]));
+  const __m512d dz = _mm512_sub_pd(_mm512_loadu_pd(c.z + j), _mm512_set1_pd(c.z[i]));
+  const __m512d r2 = _mm512_fmadd_pd(dz, dz, _mm512_fmadd_pd(dy, dy, _mm512_fmadd_pd(dx, dx, eps2)));  // |d|² + ε²
+  // the masked forms with every lane set: GCC 12's unmasked square root reads an undefined register, which its
+  // -Wmaybe-uninitialized reports
+  const __mmask8 all = 0xFF;
+  const __m512d g = _mm512_div_pd(_mm512_mul_pd(Gm_i, _mm512_loadu_pd(c.mass + j)),
+                                  _mm512_mul_pd(r2, _mm512_maskz_sqrt_pd(all, r2)));
+  s.x = _mm512_fmadd_pd(g, dx, s.x), s.y = _mm512_fmadd_pd(g, dy, s.y), s.z = _mm512_fmadd_pd(g, dz, s.z);
+  _mm512_storeu_pd(c.f_x + j, _mm512_fnmadd_pd(g, dx, _mm512_loadu_pd(c.f_x + j)));
+  _mm512_storeu_pd(c.f_y + j, _mm512_fnmadd_pd(g, dy, _mm512_loadu_pd(c.f_y + j)));
+  _mm512_storeu_pd(c.f_z + j, _mm512_fnmadd_pd(g, dz, _mm512_loadu_pd(c.f_z + j)));
+}
+
+// the upper four lanes added to the lower four (masked extracts, as above)
+__attribute__((target("avx512f,avx2,fma"))) inline __m256d halves_sum(__m512d v) {
+  return _mm256_add_pd(_mm512_maskz_extractf64x4_pd(0xF, v, 0), _mm512_maskz_extractf64x4_pd(0xF, v, 1));
+}
+
 }  // namespace
 
-// The pairs (i, j > i) of each i four j at a time; the last n − i − 1 mod 4 pairs one at a time with the same
-// operations (std::fma: one rounding, as the vector lanes).
+// The pairs (i, j > i) of each i four j at a time; the last n − i − 1 mod 4 pairs one at a time.
 __attribute__((target("avx2,fma"))) void add_pair_forces_avx2_fma(Eigen::ArrayXXd& columns, Eigen::Index n, double G,
                                                                   double softening2) {
-  const double* x = columns.col(0).data();
-  const double* y = columns.col(1).data();
-  const double* z = columns.col(2).data();
-  double* f_x = columns.col(3).data();
-  double* f_y = columns.col(4).data();
-  double* f_z = columns.col(5).data();
-  const double* mass = columns.col(7).data();
+  const PairColumns c(columns);
   const __m256d eps2 = _mm256_set1_pd(softening2);
   for (Eigen::Index i = 0; i + 1 < n; ++i) {
-    const __m256d x_i = _mm256_set1_pd(x[i]), y_i = _mm256_set1_pd(y[i]), z_i = _mm256_set1_pd(z[i]);
-    const double Gm_i = G * mass[i];
-    const __m256d Gm = _mm256_set1_pd(Gm_i);
-    __m256d s_x = _mm256_setzero_pd(), s_y = _mm256_setzero_pd(), s_z = _mm256_setzero_pd();
+    const double Gm_i = G * c.mass[i];
+    Sums4 s{_mm256_setzero_pd(), _mm256_setzero_pd(), _mm256_setzero_pd()};
     Eigen::Index j = i + 1;
-    for (; j + 4 <= n; j += 4) {
-      const __m256d dx = _mm256_sub_pd(_mm256_loadu_pd(x + j), x_i);
-      const __m256d dy = _mm256_sub_pd(_mm256_loadu_pd(y + j), y_i);
-      const __m256d dz = _mm256_sub_pd(_mm256_loadu_pd(z + j), z_i);
-      const __m256d r2 = _mm256_fmadd_pd(dz, dz, _mm256_fmadd_pd(dy, dy, _mm256_fmadd_pd(dx, dx, eps2)));  // |d|² + ε²
-      const __m256d g = _mm256_div_pd(_mm256_mul_pd(Gm, _mm256_loadu_pd(mass + j)), _mm256_mul_pd(r2, _mm256_sqrt_pd(r2)));
-      s_x = _mm256_fmadd_pd(g, dx, s_x), s_y = _mm256_fmadd_pd(g, dy, s_y), s_z = _mm256_fmadd_pd(g, dz, s_z);
-      _mm256_storeu_pd(f_x + j, _mm256_fnmadd_pd(g, dx, _mm256_loadu_pd(f_x + j)));
-      _mm256_storeu_pd(f_y + j, _mm256_fnmadd_pd(g, dy, _mm256_loadu_pd(f_y + j)));
-      _mm256_storeu_pd(f_z + j, _mm256_fnmadd_pd(g, dz, _mm256_loadu_pd(f_z + j)));
-    }
-    double t_x = lane_sum(s_x), t_y = lane_sum(s_y), t_z = lane_sum(s_z);
-    for (; j < n; ++j) {
-      const double dx = x[j] - x[i], dy = y[j] - y[i], dz = z[j] - z[i];
-      const double r2 = std::fma(dz, dz, std::fma(dy, dy, std::fma(dx, dx, softening2)));
-      const double g = Gm_i * mass[j] / (r2 * std::sqrt(r2));
-      t_x = std::fma(g, dx, t_x), t_y = std::fma(g, dy, t_y), t_z = std::fma(g, dz, t_z);
-      f_x[j] = std::fma(-g, dx, f_x[j]), f_y[j] = std::fma(-g, dy, f_y[j]), f_z[j] = std::fma(-g, dz, f_z[j]);
-    }
-    f_x[i] += t_x, f_y[i] += t_y, f_z[i] += t_z;
+    for (; j + 4 <= n; j += 4) four_pairs(c, i, j, _mm256_set1_pd(Gm_i), eps2, s);
+    last_pairs(c, i, j, n, Gm_i, softening2, lane_sum(s.x), lane_sum(s.y), lane_sum(s.z));
+  }
+}
+
+// The pairs (i, j > i) of each i eight j at a time, then four (where four are left), then one at a time: the same
+// operations as the AVX2 path, the sums of f_i over eight lanes (folded onto the four-pair block's).
+__attribute__((target("avx512f,avx2,fma"))) void add_pair_forces_avx512(Eigen::ArrayXXd& columns, Eigen::Index n,
+                                                                        double G, double softening2) {
+  const PairColumns c(columns);
+  const __m512d eps2_8 = _mm512_set1_pd(softening2);
+  const __m256d eps2_4 = _mm256_set1_pd(softening2);
+  for (Eigen::Index i = 0; i + 1 < n; ++i) {
+    const double Gm_i = G * c.mass[i];
+    Sums8 s8{_mm512_setzero_pd(), _mm512_setzero_pd(), _mm512_setzero_pd()};
+    Eigen::Index j = i + 1;
+    for (; j + 8 <= n; j += 8) eight_pairs(c, i, j, _mm512_set1_pd(Gm_i), eps2_8, s8);
+    Sums4 s4{halves_sum(s8.x), halves_sum(s8.y), halves_sum(s8.z)};
+    if (j + 4 <= n) four_pairs(c, i, j, _mm256_set1_pd(Gm_i), eps2_4, s4), j += 4;
+    last_pairs(c, i, j, n, Gm_i, softening2, lane_sum(s4.x), lane_sum(s4.y), lane_sum(s4.z));
   }
 }
 
@@ -95,6 +157,10 @@ __attribute__((target("avx2,fma"))) void add_pair_forces_avx2_fma(Eigen::ArrayXX
 
 void add_pair_forces_avx2_fma(Eigen::ArrayXXd&, Eigen::Index, double, double) {
   throw std::logic_error("add_pair_forces_avx2_fma: this build has no AVX2 kernels (cpu_has_avx2_fma() is false)");
+}
+
+void add_pair_forces_avx512(Eigen::ArrayXXd&, Eigen::Index, double, double) {
+  throw std::logic_error("add_pair_forces_avx512: this build has no AVX-512 kernels (cpu_has_avx512() is false)");
 }
 
 #endif
