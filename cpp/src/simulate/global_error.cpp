@@ -142,11 +142,24 @@ class CommonRecord {
   double observed_order_ = nan;
 };
 
-// The per-body and per-run quantities of one record, in the layout of GlobalErrorEstimate.
-struct RecordEstimate {
-  std::vector<double> attitude, angular_velocity, position, velocity;  // (nb,)
-  double energy = 0.0, angular_momentum = 0.0, observed_order = nan;
-  std::string verdict;
+// The estimates of the common records, a row each in the layout of GlobalErrorEstimate: sized once (a row's
+// per-body quantities are a slice of one array, not a vector of their own: an estimate allocates per run, not per
+// record).
+struct CommonTable {
+  std::size_t nb;
+  std::vector<double> attitude, angular_velocity, position, velocity;  // (rows, nb)
+  std::vector<double> energy, angular_momentum, observed_order;        // (rows,)
+  std::vector<std::string> verdict;                                    // (rows,)
+
+  CommonTable(std::size_t rows, std::size_t bodies)
+      : nb(bodies), attitude(rows * bodies), angular_velocity(rows * bodies), position(rows * bodies),
+        velocity(rows * bodies), energy(rows), angular_momentum(rows), observed_order(rows, nan), verdict(rows) {}
+  std::size_t rows() const { return energy.size(); }
+  // the four per-body arrays, in the order of GlobalErrorEstimate's
+  std::array<std::vector<double>*, 4> states() { return {&attitude, &angular_velocity, &position, &velocity}; }
+  std::array<const std::vector<double>*, 4> states() const {
+    return {&attitude, &angular_velocity, &position, &velocity};
+  }
 };
 
 // The differences at common record j (answer record i, coarse records j): the coarse values are read where the
@@ -182,19 +195,19 @@ void check_balance(CommonRecord& record, const ErrorRecords& h, const ErrorRecor
   }
 }
 
-RecordEstimate estimate_common(const ErrorRecords& h, const ErrorRecords& h2, const ErrorRecords& h4, std::size_t i,
-                               std::size_t j, std::int64_t steps, int order, const std::string& coarse_problem) {
+// Row j of `out`: the estimates of common record j (answer record i).
+void estimate_common(const ErrorRecords& h, const ErrorRecords& h2, const ErrorRecords& h4, std::size_t i,
+                     std::size_t j, std::int64_t steps, int order, const std::string& coarse_problem, CommonTable& out) {
   CommonRecord record(order, coarse_problem);
-  RecordEstimate out;
   const std::int64_t nb = h.bodies;
   // the differences of a kind of quantity, body by body: their estimates, then their order checked together
   const auto kind = [&](std::vector<double>& estimates, const char* name, auto distance_of_body, auto size_of_body) {
     CombinedDifferences bodies;
-    estimates.reserve(static_cast<std::size_t>(nb));
+    double* row = estimates.data() + j * out.nb;
     for (std::int64_t b = 0; b < nb; ++b) {
       const Differences d = differences(h, h2, h4, i, j, size_of_body(b), steps, distance_of_body(b));
       bodies.add(d);
-      estimates.push_back(record.estimate(d));
+      row[b] = record.estimate(d);
     }
     record.check(bodies.total(), name);
   };
@@ -230,7 +243,7 @@ RecordEstimate estimate_common(const ErrorRecords& h, const ErrorRecords& h2, co
     record.block("step beyond the stability limit: the energy of the run at 4h departs from the run at 2h's by "
                  "more than |T| + |V|");
   }
-  out.energy = record.invariant(energy, "energy");
+  out.energy[j] = record.invariant(energy, "energy");
   // the balance T − W rounds off at the size of its terms: |T| + |V| and the work |W| = |T − B| done so far
   if (!h.balance.empty()) {
     check_balance(record, h, h2, h4, i, j, energy_size + std::abs(h.energy_scale[i] - h.balance[i]), steps);
@@ -239,11 +252,10 @@ RecordEstimate estimate_common(const ErrorRecords& h, const ErrorRecords& h2, co
     return std::abs(x.momentum[a] - y.momentum[c]);
   };
   const double momentum_size = h.momentum_scale.empty() ? h.momentum[i] : h.momentum_scale[i];
-  out.angular_momentum =
+  out.angular_momentum[j] =
       record.invariant(differences(h, h2, h4, i, j, momentum_size, steps, momentum), "angular momentum");
-  out.observed_order = record.observed_order();
-  out.verdict = record.verdict();
-  return out;
+  out.observed_order[j] = record.observed_order();
+  out.verdict[j] = record.verdict();
 }
 
 // "0.25 s" (3 significant digits).
@@ -253,41 +265,52 @@ std::string seconds(double t) {
   return text;
 }
 
-// Appends a·(1 − w) + b·w for each quantity, not checked: the verdict of the first of a and b that is not
-// reliable, else `how` (observed order NaN).
-void append_blend(GlobalErrorEstimate& out, const RecordEstimate& a, const RecordEstimate& b, double w,
+// Appends rows a and b of `common` blended, a·(1 − w) + b·w for each quantity, not checked: the verdict of the first
+// of a and b that is not reliable, else `how` (observed order NaN).
+void append_blend(GlobalErrorEstimate& out, const CommonTable& common, std::size_t a, std::size_t b, double w,
                   const std::string& how) {
   const auto mix = [w](double x, double y) { return x * (1.0 - w) + y * w; };
-  for (std::size_t k = 0; k < a.attitude.size(); ++k) {
-    out.attitude.push_back(mix(a.attitude[k], b.attitude[k]));
-    out.angular_velocity.push_back(mix(a.angular_velocity[k], b.angular_velocity[k]));
-    out.position.push_back(mix(a.position[k], b.position[k]));
-    out.velocity.push_back(mix(a.velocity[k], b.velocity[k]));
+  const std::size_t nb = common.nb;
+  const auto states = common.states();
+  const std::array<std::vector<double>*, 4> into = {&out.attitude, &out.angular_velocity, &out.position, &out.velocity};
+  for (std::size_t k = 0; k < nb; ++k) {
+    for (std::size_t q = 0; q < 4; ++q) into[q]->push_back(mix((*states[q])[a * nb + k], (*states[q])[b * nb + k]));
   }
-  out.energy.push_back(mix(a.energy, b.energy));
-  out.angular_momentum.push_back(mix(a.angular_momentum, b.angular_momentum));
+  out.energy.push_back(mix(common.energy[a], common.energy[b]));
+  out.angular_momentum.push_back(mix(common.angular_momentum[a], common.angular_momentum[b]));
   out.observed_order.push_back(nan);
-  out.verdict.push_back(a.verdict != "reliable" ? a.verdict : (b.verdict != "reliable" ? b.verdict : how));
+  const std::string& va = common.verdict[a];
+  const std::string& vb = common.verdict[b];
+  out.verdict.push_back(va != "reliable" ? va : (vb != "reliable" ? vb : how));
 }
 
-// Appends a scaled by s (its verdict if not reliable, else `how`): the blend of a zero estimate and a.
-void append_scaled(GlobalErrorEstimate& out, const RecordEstimate& a, double s, const std::string& how) {
-  RecordEstimate zero = a;
-  for (auto* v : {&zero.attitude, &zero.angular_velocity, &zero.position, &zero.velocity}) std::fill(v->begin(), v->end(), 0.0);
-  zero.energy = zero.angular_momentum = 0.0;
-  zero.verdict = "reliable";
-  append_blend(out, zero, a, s, how);
+// Appends row a of `common` scaled by s (its verdict if not reliable, else `how`): the blend of a zero estimate and a.
+void append_scaled(GlobalErrorEstimate& out, const CommonTable& common, std::size_t a, double s, const std::string& how) {
+  const auto mix = [s](double y) { return 0.0 * (1.0 - s) + y * s; };
+  const std::size_t nb = common.nb;
+  const auto states = common.states();
+  const std::array<std::vector<double>*, 4> into = {&out.attitude, &out.angular_velocity, &out.position, &out.velocity};
+  for (std::size_t k = 0; k < nb; ++k) {
+    for (std::size_t q = 0; q < 4; ++q) into[q]->push_back(mix((*states[q])[a * nb + k]));
+  }
+  out.energy.push_back(mix(common.energy[a]));
+  out.angular_momentum.push_back(mix(common.angular_momentum[a]));
+  out.observed_order.push_back(nan);
+  out.verdict.push_back(common.verdict[a] != "reliable" ? common.verdict[a] : how);
 }
 
-void append(GlobalErrorEstimate& out, const RecordEstimate& r) {
-  out.attitude.insert(out.attitude.end(), r.attitude.begin(), r.attitude.end());
-  out.angular_velocity.insert(out.angular_velocity.end(), r.angular_velocity.begin(), r.angular_velocity.end());
-  out.position.insert(out.position.end(), r.position.begin(), r.position.end());
-  out.velocity.insert(out.velocity.end(), r.velocity.begin(), r.velocity.end());
-  out.energy.push_back(r.energy);
-  out.angular_momentum.push_back(r.angular_momentum);
-  out.observed_order.push_back(r.observed_order);
-  out.verdict.push_back(r.verdict);
+// Appends row a of `common`.
+void append(GlobalErrorEstimate& out, const CommonTable& common, std::size_t a) {
+  const std::size_t nb = common.nb;
+  const auto states = common.states();
+  const std::array<std::vector<double>*, 4> into = {&out.attitude, &out.angular_velocity, &out.position, &out.velocity};
+  for (std::size_t q = 0; q < 4; ++q) {
+    into[q]->insert(into[q]->end(), states[q]->begin() + a * nb, states[q]->begin() + (a + 1) * nb);
+  }
+  out.energy.push_back(common.energy[a]);
+  out.angular_momentum.push_back(common.angular_momentum[a]);
+  out.observed_order.push_back(common.observed_order[a]);
+  out.verdict.push_back(common.verdict[a]);
 }
 
 // Room for n records of nb bodies.
@@ -303,10 +326,15 @@ std::int64_t step_of(std::size_t i, const SimulationOptions& o) {
 }
 
 // The largest estimate of the state quantities (attitude, angular velocity, position, velocity: each over the
-// bodies) of a record, kind by kind.
-std::array<double, 4> state_sizes(const RecordEstimate& r) {
-  const auto largest = [](const std::vector<double>& v) { return *std::max_element(v.begin(), v.end()); };
-  return {largest(r.attitude), largest(r.angular_velocity), largest(r.position), largest(r.velocity)};
+// bodies) of row j, kind by kind.
+std::array<double, 4> state_sizes(const CommonTable& common, std::size_t j) {
+  const auto states = common.states();
+  std::array<double, 4> out{};
+  for (std::size_t q = 0; q < 4; ++q) {
+    const auto row = states[q]->begin() + j * common.nb;
+    out[q] = *std::max_element(row, row + common.nb);
+  }
+  return out;
 }
 
 // Past the Lyapunov time: a state estimate that grew more than 1000 (t_j / t_k)^4 from an earlier common record k
@@ -314,15 +342,15 @@ std::array<double, 4> state_sizes(const RecordEstimate& r) {
 // drifting frequency): nearby trajectories diverge exponentially, e^{λ t}, and the differences soon leave the
 // linear regime that Richardson extrapolation assumes. Every record from there on whose order check failed says
 // so, with λ = ln(growth) / (t_j − t_k).
-void name_exponential_growth(std::vector<RecordEstimate>& common, const double* t, std::size_t stride) {
+void name_exponential_growth(CommonTable& common, const double* t, std::size_t stride) {
   constexpr double beyond_polynomial = 1000.0;
   std::array<double, 4> least{};  // per kind: the smallest ε / t^4 of the records before, and its time
   std::array<double, 4> least_t{};
   least.fill(std::numeric_limits<double>::infinity());
   std::string past;
-  for (std::size_t j = 1; j < common.size(); ++j) {
+  for (std::size_t j = 1; j < common.rows(); ++j) {
     const double tj = t[j * stride];
-    const std::array<double, 4> sizes = state_sizes(common[j]);
+    const std::array<double, 4> sizes = state_sizes(common, j);
     for (std::size_t k = 0; k < sizes.size() && past.empty() && tj > 0.0; ++k) {
       const double scaled = sizes[k] / (tj * tj * tj * tj);
       if (std::isfinite(scaled) && scaled > beyond_polynomial * least[k]) {
@@ -339,7 +367,7 @@ void name_exponential_growth(std::vector<RecordEstimate>& common, const double* 
       const double scaled = sizes[k] / (tj * tj * tj * tj);
       if (scaled > 0.0 && scaled < least[k]) least[k] = scaled, least_t[k] = tj;
     }
-    if (!past.empty() && common[j].verdict.rfind("not asymptotic", 0) == 0) common[j].verdict = past + common[j].verdict;
+    if (!past.empty() && common.verdict[j].rfind("not asymptotic", 0) == 0) common.verdict[j] = past + common.verdict[j];
   }
 }
 
@@ -411,40 +439,40 @@ GlobalErrorEstimate estimate_global_error(const ErrorRecords& h, const ErrorReco
   const auto stride = static_cast<std::size_t>(m / answer.record_every);  // answer records per common record
   // the common records the answer has: j = 0 .. last (answer record j·stride)
   const std::size_t last = h.n == 0 ? 0 : std::min((h.n - 1) / stride, static_cast<std::size_t>(answer.steps / m));
-  std::vector<RecordEstimate> common;
-  common.reserve(h.n > 0 ? last + 1 : 0);
+  const auto nb = static_cast<std::size_t>(std::max<std::int64_t>(h.bodies, 0));
+  CommonTable common(h.n > 0 ? last + 1 : 0, nb);
   for (std::size_t j = 0; j <= last && h.n > 0; ++j) {
     const std::size_t i = j * stride;
     const std::string problem = j >= h2.n   ? "step beyond the stability limit: the run at 2h diverged"
                                 : j >= h4.n ? "step beyond the stability limit: the run at 4h diverged"
                                             : std::string();
-    common.push_back(estimate_common(h, h2, h4, i, j, step_of(i, answer), order, problem));
-    if (!opaque.empty() && common.back().verdict == "reliable") {
-      common.back().verdict = "not verified: " + opaque +
-                              " may switch inside a step, which the runs at h, 2h and 4h can all miss alike";
+    estimate_common(h, h2, h4, i, j, step_of(i, answer), order, problem, common);
+    if (!opaque.empty() && common.verdict[j] == "reliable") {
+      common.verdict[j] = "not verified: " + opaque +
+                          " may switch inside a step, which the runs at h, 2h and 4h can all miss alike";
     }
   }
   name_exponential_growth(common, h.t, stride);
   reserve(out, h.n, h.bodies);
   const std::string between = "interpolated between the reliable records before and after it";
+  const std::string after =
+      h.n > 0 && last > 0 ? "extrapolated from the reliable record at t = " + seconds(h.t[last * stride]) : std::string();
+  const std::string none = "no estimate: fewer than " + std::to_string(m) +
+                           " steps (the 2h and 4h runs have a state only every lcm(record_every, 4) steps)";
   for (std::size_t i = 0; i < h.n; ++i) {
     const std::size_t j = i / stride;
     if (i % stride == 0 && j <= last) {
-      append(out, common[j]);
+      append(out, common, j);
     } else if (j < last) {  // between common records j and j + 1
       const double tj = h.t[j * stride], tk = h.t[(j + 1) * stride];
-      append_blend(out, common[j], common[j + 1], (h.t[i] - tj) / (tk - tj), between);
+      append_blend(out, common, j, j + 1, (h.t[i] - tj) / (tk - tj), between);
     } else if (last > 0) {  // after the last common record: linear growth from t0
       const double t0 = h.t[0], tc = h.t[last * stride];
-      append_scaled(out, common[last], (h.t[i] - t0) / (tc - t0),
-                    "extrapolated from the reliable record at t = " + seconds(tc));
-    } else {
-      RecordEstimate none = common[0];
-      for (auto* v : {&none.attitude, &none.angular_velocity, &none.position, &none.velocity}) std::fill(v->begin(), v->end(), nan);
-      none.energy = none.angular_momentum = none.observed_order = nan;
-      none.verdict = "no estimate: fewer than " + std::to_string(m) +
-                     " steps (the 2h and 4h runs have a state only every lcm(record_every, 4) steps)";
-      append(out, none);
+      append_scaled(out, common, last, (h.t[i] - t0) / (tc - t0), after);
+    } else {  // no common record but the first: no estimate
+      for (auto* v : {&out.attitude, &out.angular_velocity, &out.position, &out.velocity}) v->insert(v->end(), nb, nan);
+      for (auto* v : {&out.energy, &out.angular_momentum, &out.observed_order}) v->push_back(nan);
+      out.verdict.push_back(none);
     }
   }
   return out;
@@ -453,19 +481,19 @@ GlobalErrorEstimate estimate_global_error(const ErrorRecords& h, const ErrorReco
 GlobalErrorEstimate round_off_estimate(const ErrorRecords& h, const SimulationOptions& answer) {
   GlobalErrorEstimate out;
   out.order = 0, out.bodies = h.bodies;
+  reserve(out, h.n, h.bodies);
   for (std::size_t i = 0; i < h.n; ++i) {
     const std::int64_t steps = step_of(i, answer);
-    RecordEstimate r;
     for (std::int64_t b = 0; b < h.bodies; ++b) {
-      r.attitude.push_back(round_off_bound(1.0, steps));
-      r.angular_velocity.push_back(round_off_bound(vector3(h.w_B, h, i, b).norm(), steps));
-      r.position.push_back(round_off_bound(vector3(h.p_W, h, i, b).norm(), steps));
-      r.velocity.push_back(round_off_bound(vector3(h.v_W, h, i, b).norm(), steps));
+      out.attitude.push_back(round_off_bound(1.0, steps));
+      out.angular_velocity.push_back(round_off_bound(vector3(h.w_B, h, i, b).norm(), steps));
+      out.position.push_back(round_off_bound(vector3(h.p_W, h, i, b).norm(), steps));
+      out.velocity.push_back(round_off_bound(vector3(h.v_W, h, i, b).norm(), steps));
     }
-    r.energy = round_off_bound(energy_size_of(h, i), steps);
-    r.angular_momentum = round_off_bound(h.momentum_scale.empty() ? h.momentum[i] : h.momentum_scale[i], steps);
-    r.verdict = "reliable";
-    append(out, r);
+    out.energy.push_back(round_off_bound(energy_size_of(h, i), steps));
+    out.angular_momentum.push_back(round_off_bound(h.momentum_scale.empty() ? h.momentum[i] : h.momentum_scale[i], steps));
+    out.observed_order.push_back(nan);
+    out.verdict.push_back("reliable");
   }
   return out;
 }
