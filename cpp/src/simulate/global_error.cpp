@@ -63,7 +63,7 @@ struct CombinedDifferences {
 class CommonRecord {
  public:
   CommonRecord(int order, std::string coarse_problem)
-      : order_(order), expected_(std::exp2(order)), blocked_(std::move(coarse_problem)) {}
+      : order_(order), expected_(static_cast<double>(std::int64_t{1} << order)), blocked_(std::move(coarse_problem)) {}
 
   // ε of one body's value of a quantity (its order checked with the other bodies', by check()).
   double estimate(const Differences& d) {
@@ -305,7 +305,7 @@ void append(GlobalErrorEstimate& out, const CommonTable& common, std::size_t a) 
   const auto states = common.states();
   const std::array<std::vector<double>*, 4> into = {&out.attitude, &out.angular_velocity, &out.position, &out.velocity};
   for (std::size_t q = 0; q < 4; ++q) {
-    into[q]->insert(into[q]->end(), states[q]->begin() + a * nb, states[q]->begin() + (a + 1) * nb);
+    for (std::size_t k = 0; k < nb; ++k) into[q]->push_back((*states[q])[a * nb + k]);  // reserved: no reallocation
   }
   out.energy.push_back(common.energy[a]);
   out.angular_momentum.push_back(common.angular_momentum[a]);
