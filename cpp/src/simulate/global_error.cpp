@@ -197,7 +197,8 @@ void check_balance(CommonRecord& record, const ErrorRecords& h, const ErrorRecor
 
 // Row j of `out`: the estimates of common record j (answer record i).
 void estimate_common(const ErrorRecords& h, const ErrorRecords& h2, const ErrorRecords& h4, std::size_t i,
-                     std::size_t j, std::int64_t steps, int order, const std::string& coarse_problem, CommonTable& out) {
+                     std::size_t j, std::int64_t steps, int order, const std::string& coarse_problem,
+                     CommonTable& out) {
   CommonRecord record(order, coarse_problem);
   const std::int64_t nb = h.bodies;
   // the differences of a kind of quantity, body by body: their estimates, then their order checked together
@@ -285,7 +286,8 @@ void append_blend(GlobalErrorEstimate& out, const CommonTable& common, std::size
 }
 
 // Appends row a of `common` scaled by s (its verdict if not reliable, else `how`): the blend of a zero estimate and a.
-void append_scaled(GlobalErrorEstimate& out, const CommonTable& common, std::size_t a, double s, const std::string& how) {
+void append_scaled(GlobalErrorEstimate& out, const CommonTable& common, std::size_t a, double s,
+                   const std::string& how) {
   const auto mix = [s](double y) { return 0.0 * (1.0 - s) + y * s; };
   const std::size_t nb = common.nb;
   const auto states = common.states();
@@ -367,7 +369,8 @@ void name_exponential_growth(CommonTable& common, const double* t, std::size_t s
       const double scaled = sizes[k] / (tj * tj * tj * tj);
       if (scaled > 0.0 && scaled < least[k]) least[k] = scaled, least_t[k] = tj;
     }
-    if (!past.empty() && common.verdict[j].rfind("not asymptotic", 0) == 0) common.verdict[j] = past + common.verdict[j];
+    std::string& verdict = common.verdict[j];
+    if (!past.empty() && verdict.rfind("not asymptotic", 0) == 0) verdict = past + verdict;
   }
 }
 
@@ -455,8 +458,9 @@ GlobalErrorEstimate estimate_global_error(const ErrorRecords& h, const ErrorReco
   name_exponential_growth(common, h.t, stride);
   reserve(out, h.n, h.bodies);
   const std::string between = "interpolated between the reliable records before and after it";
-  const std::string after =
-      h.n > 0 && last > 0 ? "extrapolated from the reliable record at t = " + seconds(h.t[last * stride]) : std::string();
+  const std::string after = h.n > 0 && last > 0
+                                ? "extrapolated from the reliable record at t = " + seconds(h.t[last * stride])
+                                : std::string();
   const std::string none = "no estimate: fewer than " + std::to_string(m) +
                            " steps (the 2h and 4h runs have a state only every lcm(record_every, 4) steps)";
   for (std::size_t i = 0; i < h.n; ++i) {
@@ -491,7 +495,8 @@ GlobalErrorEstimate round_off_estimate(const ErrorRecords& h, const SimulationOp
       out.velocity.push_back(round_off_bound(vector3(h.v_W, h, i, b).norm(), steps));
     }
     out.energy.push_back(round_off_bound(energy_size_of(h, i), steps));
-    out.angular_momentum.push_back(round_off_bound(h.momentum_scale.empty() ? h.momentum[i] : h.momentum_scale[i], steps));
+    const double momentum = h.momentum_scale.empty() ? h.momentum[i] : h.momentum_scale[i];
+    out.angular_momentum.push_back(round_off_bound(momentum, steps));
     out.observed_order.push_back(nan);
     out.verdict.push_back("reliable");
   }
