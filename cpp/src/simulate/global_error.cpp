@@ -461,8 +461,7 @@ GlobalErrorEstimate estimate_global_error(const ErrorRecords& h, const ErrorReco
   const std::string after = h.n > 0 && last > 0
                                 ? "extrapolated from the reliable record at t = " + seconds(h.t[last * stride])
                                 : std::string();
-  const std::string none = "no estimate: fewer than " + std::to_string(m) +
-                           " steps (the 2h and 4h runs have a state only every lcm(record_every, 4) steps)";
+  std::string none;  // the verdict of a record without an estimate, made at its first use
   for (std::size_t i = 0; i < h.n; ++i) {
     const std::size_t j = i / stride;
     if (i % stride == 0 && j <= last) {
@@ -476,6 +475,10 @@ GlobalErrorEstimate estimate_global_error(const ErrorRecords& h, const ErrorReco
     } else {  // no common record but the first: no estimate
       for (auto* v : {&out.attitude, &out.angular_velocity, &out.position, &out.velocity}) v->insert(v->end(), nb, nan);
       for (auto* v : {&out.energy, &out.angular_momentum, &out.observed_order}) v->push_back(nan);
+      if (none.empty()) {
+        none = "no estimate: fewer than " + std::to_string(m) +
+               " steps (the 2h and 4h runs have a state only every lcm(record_every, 4) steps)";
+      }
       out.verdict.push_back(none);
     }
   }
