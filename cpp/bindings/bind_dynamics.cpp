@@ -537,9 +537,9 @@ tolerance : float or pint.Quantity, keyword-only, optional
     Instead of dt: the largest error of `measure` the run may have, absolute, in the measure's unit (a quantity
     is converted to it), finite and > 0. The method (unless given) and dt are chosen: each candidate method is
     piloted on a short run, its error fitted as C dt^p (t - t0), and the cheapest (method, dt) predicted to meet
-    half the tolerance is run with its global error estimate as the certificate, refined when that fails (once,
-    twice where the first refinement's estimate is reliable but above the tolerance; see ToleranceChoice). The horizon is `duration` (steps depend on dt: steps is refused); record_every counts
-    steps of the chosen dt; steps is a multiple of lcm(record_every, 4), so every record is checked.
+    half the tolerance is run with its global error estimate as the certificate, refined while that fails (at
+    most three times; see ToleranceChoice). The horizon is `duration` (steps depend on dt: steps is refused);
+    record_every counts steps of the chosen dt; steps is a multiple of lcm(record_every, 4), so every record is checked.
     result.choice says what was chosen and why. A scene with a PythonForce is refused (ToleranceError): its
     estimate is never reliable.
 measure : str, keyword-only, optional

@@ -107,9 +107,9 @@ eps(t) ~ C dt^p (t - t0) (p the order the model has under the method, linear gro
 run has 64 steps or more, the chosen method then runs over the whole horizon at a quarter of those steps and its
 largest error, scaled by dt^p, sets the steps (an error that jumps after the short pilot's span is seen). The run's
 global error estimate (GlobalError) is the certificate: when it is not accepted (see met), or above the tolerance,
-the run is refined, dt' = dt (tolerance / 2 / error)^(1/p) (dt / 2 when not accepted), and refined a second time
-the same way where the refined run's certificate is accepted but above the tolerance (after a certificate that was
-not accepted, dt / 2 is a guess; an accepted estimate is not).
+the run is refined, dt' = dt (tolerance / 2 / error)^(1/p) (at most dt / 2 when not accepted), and refined again the
+same way while the certificate fails, at most three times (a step that the short pilots called asymptotic may not
+be over the whole horizon: a cluster's close encounters come later).
 
 Parameters
 ----------
@@ -138,7 +138,7 @@ met : bool
     record: reliable, between two reliable records, an observed order above the window (an over-estimate), or an
     estimate <= tolerance / 16 (a zero crossing of an oscillating error, the round-off of the first records).
 refinements : int
-    0, 1 or 2.
+    0 to 3: the runs after the first.
 reason : str
     The choice and its outcome, in words.
 pilots : tuple of dict
@@ -293,7 +293,7 @@ void bind_tolerance(py::module_& m) {
       .def_readonly("certified_error", &ToleranceChoice::certified_error,
                     "The largest estimate of the measure over the final run's records and bodies (NaN: none).")
       .def_readonly("met", &ToleranceChoice::met, "Every record reliable and certified_error <= tolerance.")
-      .def_readonly("refinements", &ToleranceChoice::refinements, "0, 1 or 2: the runs after the first.")
+      .def_readonly("refinements", &ToleranceChoice::refinements, "0 to 3: the runs after the first.")
       .def_readonly("reason", &ToleranceChoice::reason, "The choice and its outcome, in words.")
       .def_property_readonly("pilots", &pilots_tuple, "One dict per candidate method (see the class docstring).")
       .def_readonly("pilot_seconds", &ToleranceChoice::pilot_seconds, "Wall time of the pilots [s].")

@@ -5271,9 +5271,9 @@ class ToleranceChoice:
     run has 64 steps or more, the chosen method then runs over the whole horizon at a quarter of those steps and its
     largest error, scaled by dt^p, sets the steps (an error that jumps after the short pilot's span is seen). The run's
     global error estimate (GlobalError) is the certificate: when it is not accepted (see met), or above the tolerance,
-    the run is refined, dt' = dt (tolerance / 2 / error)^(1/p) (dt / 2 when not accepted), and refined a second time
-    the same way where the refined run's certificate is accepted but above the tolerance (after a certificate that was
-    not accepted, dt / 2 is a guess; an accepted estimate is not).
+    the run is refined, dt' = dt (tolerance / 2 / error)^(1/p) (at most dt / 2 when not accepted), and refined again the
+    same way while the certificate fails, at most three times (a step that the short pilots called asymptotic may not
+    be over the whole horizon: a cluster's close encounters come later).
     
     Parameters
     ----------
@@ -5302,7 +5302,7 @@ class ToleranceChoice:
         record: reliable, between two reliable records, an observed order above the window (an over-estimate), or an
         estimate <= tolerance / 16 (a zero crossing of an oscillating error, the round-off of the first records).
     refinements : int
-        0, 1 or 2.
+        0 to 3: the runs after the first.
     reason : str
         The choice and its outcome, in words.
     pilots : tuple of dict
@@ -5386,7 +5386,7 @@ class ToleranceChoice:
     @property
     def refinements(self) -> int:
         """
-        0, 1 or 2: the runs after the first.
+        0 to 3: the runs after the first.
         """
     @property
     def run_seconds(self) -> float:
@@ -11985,9 +11985,9 @@ def simulate(model: PivotedBody | PivotedPlanarBody | Gyrostat | Scene | Compile
         Instead of dt: the largest error of `measure` the run may have, absolute, in the measure's unit (a quantity
         is converted to it), finite and > 0. The method (unless given) and dt are chosen: each candidate method is
         piloted on a short run, its error fitted as C dt^p (t - t0), and the cheapest (method, dt) predicted to meet
-        half the tolerance is run with its global error estimate as the certificate, refined when that fails (once,
-        twice where the first refinement's estimate is reliable but above the tolerance; see ToleranceChoice). The horizon is `duration` (steps depend on dt: steps is refused); record_every counts
-        steps of the chosen dt; steps is a multiple of lcm(record_every, 4), so every record is checked.
+        half the tolerance is run with its global error estimate as the certificate, refined while that fails (at
+        most three times; see ToleranceChoice). The horizon is `duration` (steps depend on dt: steps is refused);
+        record_every counts steps of the chosen dt; steps is a multiple of lcm(record_every, 4), so every record is checked.
         result.choice says what was chosen and why. A scene with a PythonForce is refused (ToleranceError): its
         estimate is never reliable.
     measure : str, keyword-only, optional

@@ -172,6 +172,17 @@ def test_a_loose_tolerance_is_met_where_the_coarse_runs_of_a_certificate_would_b
     _check_shipped_scene("foucault", 1, 1e-3)
 
 
+def test_a_certificate_that_fails_twice_is_refined_again():
+    # the cluster over a quarter of its run to 2.5 mm (1e-4 of its size) with the fourth-order splitting: its close
+    # encounters keep the first certificates out of the asymptotic regime (observed orders 2 and 2.7 where 4 is
+    # expected, on the machine where this was written) until the steps are small enough; the call refines until a
+    # certificate holds (it raised after two unreliable ones). The certificate's truth is the shipped-scene test's.
+    scene, initial, run = rd.load_scene("cluster")
+    r = rd.simulate(scene, initial, duration=run.duration / 4, tolerance=2.5e-3, measure="position",
+                    method="splitting_dlm_yoshida4")
+    assert r.choice.met and r.choice.certified_error <= 2.5e-3 and r.choice.refinements >= 1
+
+
 def _check_shipped_scene(name, part, relative):
     # the tolerance: `relative` rad of the attitude where a body turns, else `relative` of the largest distance from
     # W's origin

@@ -67,6 +67,10 @@ GlobalErrorEstimate estimate_of_measure(const ErrorRecords& h, const ErrorRecord
   return estimate_global_error(a.records(), b.records(), c.records(), answer, order);
 }
 
+std::string refinements_text(int refinements) {
+  return refinements == 1 ? "the refinement" : std::to_string(refinements) + " refinements";
+}
+
 void keep_stability_verdicts(const GlobalErrorEstimate& all, GlobalErrorEstimate& measure) {
   for (std::size_t i = 0; i < all.verdict.size() && i < measure.verdict.size(); ++i) {
     const std::string& v = all.verdict[i];

@@ -8,9 +8,9 @@
 // the asymptotic regime and the extrapolation in dt is sound). For a horizon T and a tolerance τ the largest
 // step is then dt = (s τ / (C T))^(1/p), s the safety factor; the run's cost is its steps times the cost per step
 // the pilot measured. The cheapest candidate is run with its estimate; a certificate that fails (not reliable,
-// or above τ) is followed by one refinement dt' = dt (s τ / ε)^(1/p) (at most dt / 2 when the estimate was not
-// reliable), and by a second one from the first refinement's estimate when that estimate is reliable but above τ
-// (after an unreliable first certificate, dt / 2 is a guess; the refinement's reliable estimate is not).
+// or above τ) is followed by a refinement dt' = dt (s τ / ε)^(1/p) (at most dt / 2 when the estimate was not
+// reliable), at most max_refinements times: a step that the short pilots called asymptotic may not be over the whole
+// horizon (a cluster's close encounters come later), and a halving is then a guess that the next certificate checks.
 //
 // Pilots: 16 steps over T/4 first; while the pilot's estimate is not reliable its horizon is halved (down to
 // T/32, the step with it) and then its steps doubled (up to 512). Its cost is that of ~28 steps whatever the
@@ -101,6 +101,12 @@ std::int64_t steps_for(double horizon, double dt_max, std::int64_t multiple);
 
 // The step of a refinement: dt (target / measured)^(1/p), at most dt / 2^(1/p) (a refinement refines).
 double refined_step(double dt, int order, double measured, double target);
+
+// The refinements of a run to a tolerance after its first run, at most (each within the cost cap max_steps).
+inline constexpr int max_refinements = 3;
+
+// "the refinement" (1), "2 refinements", ...
+std::string refinements_text(int refinements);
 
 // What a candidate needs, per unit of the problem's time scale, at relative tolerance `relative`:
 // relative^(−1/p) steps times `evaluations` per step (the order pruning's figure).
@@ -439,10 +445,8 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
     }
     return checked(x);
   };
-  // the first run, one refinement, and a second one only where the first refinement's certificate is reliable but
-  // above τ (its step then follows from a sound error model: the first refinement's may not, after an unreliable
-  // certificate)
-  for (int attempt = 0; attempt < 3; ++attempt) {
+  // the first run, then a refinement while the certificate fails, at most max_refinements (each within max_steps)
+  for (int attempt = 0; attempt <= max_refinements; ++attempt) {
     Records h = checked(o);
     if (out.interrupted) break;
     MeasuredEstimate estimates = measured_global_error(h, o, chosen.order, coarse, request.measure);
@@ -464,14 +468,13 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
     }
     if (met) {
       choice.met = true;
-      choice.reason += (attempt == 0 ? "; certified " : attempt == 1 ? "; certified after the refinement "
-                                                                      : "; certified after the second refinement ") +
-                       format_number(error) +
-                       " " + error_measure_unit(request.measure);
+      choice.reason += (attempt == 0 ? std::string("; certified ")
+                                     : "; certified after " + refinements_text(attempt) + " ") +
+                       format_number(error) + " " + error_measure_unit(request.measure);
       break;
     }
-    if (attempt == 2 || (attempt == 1 && !reliable) || chosen.order == 0) {
-      choice.reason += "; " + why + (attempt == 2 ? " after two refinements" : attempt == 1 ? " after one refinement" : "");
+    if (attempt == max_refinements || chosen.order == 0) {
+      choice.reason += "; " + why + (attempt > 0 ? " after " + refinements_text(attempt) : std::string());
       break;
     }
     // an estimate that is not reliable still bounds the step from above where it is finite: at most dt / 2, less
