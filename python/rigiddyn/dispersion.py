@@ -181,7 +181,9 @@ class Normal(Dispersion):
 class Uniform(Dispersion):
     """Independent uniform draws per component on [low, high): value = low + (high - low) * u, u ~ U[0, 1).
 
-    low, high: floats or arrays broadcasting to the key's shape, in the key's unit, low <= high.
+    low, high: floats or arrays broadcasting to the key's shape, in the key's unit, low <= high, high - low finite.
+    A value that the rounding of that sum takes to high itself (u = 1 - 2**-53 on [1, 2) gives 2.0) is drawn as the
+    largest double below high; where low == high every draw is low.
     """
 
     keys = Normal.keys
@@ -191,6 +193,10 @@ class Uniform(Dispersion):
         self.high = _float_array(high, "high")
         if not _broadcasts(self.low.shape, self.high.shape) or np.any(self.low > self.high):
             raise ValueError(f"high: expected high >= low (same shape), got low={low!r}, high={high!r}")
+        with np.errstate(over="ignore"):
+            if not np.all(np.isfinite(self.high - self.low)):
+                raise ValueError(f"high: expected high - low finite (a width that overflows draws inf), "
+                                 f"got low={low!r}, high={high!r}")
 
     def bind(self, key: str, nominal: Any) -> None:
         super().bind(key, nominal)
@@ -198,7 +204,9 @@ class Uniform(Dispersion):
         _fits(self.high, np.shape(nominal), "high", key)
 
     def draw(self, rng: np.random.Generator, nominal: Any) -> Any:
-        return self.low + (self.high - self.low) * rng.random(np.shape(nominal))  # shapes checked by bind
+        value = self.low + (self.high - self.low) * rng.random(np.shape(nominal))  # shapes checked by bind
+        below_high = np.where(self.low < self.high, np.nextafter(self.high, self.low), self.low)
+        return np.where(value < self.high, value, below_high)  # [low, high) after the sum's rounding
 
     def __repr__(self) -> str:
         return f"Uniform(low={self.low.tolist()}, high={self.high.tolist()})"

@@ -214,6 +214,12 @@ def units_match_si(scene: dict, picks: list) -> None:
     _close(a, b, "units != SI", ())
 
 
+# A number written in a larger unit (value / size) may fall below the smallest normal double, where the spacing of
+# doubles is 2**-1074 absolute: its rounding then carries up to 2**-1075 x size into SI, for each of the two files
+# (UNITS' largest size is 1e9: km^3/s^2).
+SUBNORMAL_FLOOR = 2.0**-1074 * max(size for options in UNITS.values() for _, size in options)
+
+
 def _close(a, b, what, path):
     if isinstance(a, dict):
         assert set(a) == set(b), f"{what}: keys of {path} {sorted(a)} != {sorted(b)}"
@@ -224,13 +230,14 @@ def _close(a, b, what, path):
         # a sum of up to 4 positions, 16 eps of the largest), a quaternion from angles to 8 eps of 3 rad
         size = max(map(abs, a)) + max(map(abs, b)) + (3.0 if "q_WB" in path else 0.0)
         worst = max(abs(x - y) for x, y in zip(a, b)) if len(a) == len(b) else math.inf
-        assert worst <= 16 * EPS * size, f"{what}: {'.'.join(map(str, path))} {a!r} != {b!r}"
+        assert worst <= 16 * EPS * size + SUBNORMAL_FLOOR, f"{what}: {'.'.join(map(str, path))} {a!r} != {b!r}"
     elif isinstance(a, list):
         assert len(a) == len(b), f"{what}: length of {path}"
         for i, (x, y) in enumerate(zip(a, b)):
             _close(x, y, what, path + (i,))
     elif isinstance(a, float):
-        assert abs(a - b) <= 8 * EPS * (abs(a) + abs(b)), f"{what}: {'.'.join(map(str, path))} {a!r} != {b!r}"
+        bound = 8 * EPS * (abs(a) + abs(b)) + SUBNORMAL_FLOOR
+        assert abs(a - b) <= bound, f"{what}: {'.'.join(map(str, path))} {a!r} != {b!r}"
     else:
         assert a == b, f"{what}: {'.'.join(map(str, path))} {a!r} != {b!r}"
 

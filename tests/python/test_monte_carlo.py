@@ -235,6 +235,23 @@ def test_normal_and_uniform_means_and_spreads():
     assert np.all((v[:, 0] >= -1) & (v[:, 0] < 1) & (v[:, 2] >= 2) & (v[:, 2] < 3))
 
 
+def test_uniform_draws_stay_below_high_where_the_sum_rounds_to_it():
+    # low + (high - low) u rounds to high for u >= 1/2 on [0, 5e-324) (one subnormal step) and for u = 1 - 2**-53 on
+    # [1, 2): such a draw is the largest double below high (here 0.0 and 2 - 2**-52), never high itself
+    run = small_run(n=64, steps=1, dispersions={"v_W": mc.Uniform([0.0, 1.0, 0.0], [5e-324, 2.0, 1.0])})
+    v = run.inputs["v_W"]
+    assert np.all(v[:, 0] == 0.0) and np.all((v[:, 1] >= 1.0) & (v[:, 1] < 2.0))
+
+    class TopOfUnitInterval:  # a generator whose u is the largest double below 1
+        def random(self, shape):
+            return np.full(shape, 1.0 - 2.0**-53)
+
+    assert mc.Uniform(1.0, 2.0).draw(TopOfUnitInterval(), np.zeros(3)).tolist() == [2.0 - 2.0**-52] * 3
+    assert mc.Uniform(3.0, 3.0).draw(TopOfUnitInterval(), np.zeros(1)).tolist() == [3.0]  # low == high: low
+    with pytest.raises(ValueError, match=r"high: expected high - low finite"):
+        mc.Uniform(-1e308, 1e308)
+
+
 def principal_moments_valid(inertia):
     """Principal moments of each (3, 3) inertia by numpy, and whether they are a real body's: positive
     and obeying the triangle inequality, up to eigvalsh's backward error (a few eps |I|; Higham)."""
