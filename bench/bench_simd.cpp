@@ -2,8 +2,8 @@
 // hand-written RK4 loop on one core). 10^4 tumbling rigid bodies x 10^3 RK4 steps, recording only the last
 // state (RIGIDDYN_BENCH_SMALL=1: 256 x 100), on one thread:
 //   tumbling_rk4_<lanes>  simulate_batch_simd with each SimdLanes (eigen2/4/8: Eigen arrays, vector4/8:
-//                    generic vectors; the library's default is simd_default_lanes(): vector8 with AVX-512F, else vector4) on free bodies
-//                    with per-sample full inertias, vs a hand-written RK4
+//                    generic vectors; the library's default is simd_default_lanes(): vector8 with AVX-512F,
+//                    else vector4) on free bodies with per-sample full inertias, vs a hand-written RK4
 //                    on a double[13] per sample (bench_dynamics.cpp's raw_full_rk4, per-sample parameters),
 //                    run sample after sample;
 //   forced_rk4_vector4  the same under gravity, a force through C in W and a torque in B, the work integrated

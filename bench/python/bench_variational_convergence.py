@@ -6,8 +6,9 @@
 its iterates mixed by Anderson's method (scene/scene_model.hpp); a step whose iterates miss the tolerance (1e-14
 relative) within 20 is counted in `result.unconverged_steps`. The trees: 40 random trees of 5 links (a free base
 on every other tree, then ball and revolute joints at random, rod-like links of 0.5–3 kg with transverse moments of
-0.05–0.5 kg m² and axial ones 0.02–1.5 times those, so that thin links turn fast), each under UniformGravity, linear Drag and a spring from its last link to a
-world anchor, started from random joint rates, run for 2 s at each step size. Prints per step size the unconverged
+0.05–0.5 kg m² and axial ones 0.02–1.5 times those, so that thin links turn fast), each under UniformGravity,
+linear Drag and a spring from its last link to a world anchor, started from random joint rates, run for 2 s at each
+step size. Prints per step size the unconverged
 steps of all runs, their total, and the runs that diverged (--small: 8 trees, two step sizes: what ctest runs).
 """
 

@@ -11987,7 +11987,8 @@ def simulate(model: PivotedBody | PivotedPlanarBody | Gyrostat | Scene | Compile
         piloted on a short run, its error fitted as C dt^p (t - t0), and the cheapest (method, dt) predicted to meet
         half the tolerance is run with its global error estimate as the certificate, refined while that fails (at
         most three times; see ToleranceChoice). The horizon is `duration` (steps depend on dt: steps is refused);
-        record_every counts steps of the chosen dt; steps is a multiple of lcm(record_every, 4), so every record is checked.
+        record_every counts steps of the chosen dt; steps is a multiple of lcm(record_every, 4), so every record is
+        checked.
         result.choice says what was chosen and why. A scene with a PythonForce is refused (ToleranceError): its
         estimate is never reliable.
     measure : str, keyword-only, optional
@@ -12027,7 +12028,7 @@ def simulate(model: PivotedBody | PivotedPlanarBody | Gyrostat | Scene | Compile
         measure (with the nearest name), max_steps < 4; with a controller: tolerance given, a body outside a scene, or
         a bad command (named by the controller).
     ToleranceError
-        A ValueError: the tolerance cannot be met within max_steps, the refined runs' certificate still fails, or the
+        A ValueError: the tolerance cannot be met within max_steps, the last refined run's certificate still fails, or the
         scene has a PythonForce; it carries the measured error, the choice and the best result (see ToleranceError).
     TypeError
         model not one of the kinds listed, or initial not of its kind (the message names it).

@@ -98,7 +98,9 @@ TEST(PairForces, Avx2FmaPathWithinItsBound) {
 TEST(PairForces, Avx512PathWithinItsBound) {
   if (!cpu_has_avx512()) GTEST_SKIP() << "this CPU (or build) has no AVX-512F";
   for (const Eigen::Index n : kCounts) {
-    for (const double softening2 : {0.0, 1e-2}) expect_within_bound(&detail::add_pair_forces_avx512, n, softening2, 11u * n + 1);
+    for (const double softening2 : {0.0, 1e-2}) {
+      expect_within_bound(&detail::add_pair_forces_avx512, n, softening2, 11u * n + 1);
+    }
   }
   Eigen::ArrayXXd c = cluster(11, 3, 9);
   c(0, 0) = c(0, 1) = c(0, 2) = 0.0;

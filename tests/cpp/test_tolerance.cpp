@@ -104,6 +104,23 @@ TEST(ToleranceModel, ACoarseRunBeyondTheStabilityLimitIsNeverCertified) {
   EXPECT_EQ(first_uncertified(e, ErrorMeasure::attitude, 1e-8), 3u);
 }
 
+// The measure's own estimate (zeros for the other quantities) cannot see a coarse run's runaway energy: the full
+// estimate's instability verdicts are copied onto it, record by record, and its other verdicts kept
+TEST(ToleranceModel, TheMeasuresEstimateKeepsTheRunsInstabilityVerdicts) {
+  GlobalErrorEstimate all, measure;
+  all.verdict = {"reliable", "step beyond the stability limit: the run at 4h diverged",
+                 "not asymptotic: observed order 2 where 4 is expected (energy)", "reliable"};
+  measure.verdict = {"reliable", "reliable", "reliable",
+                     "not asymptotic: observed order 3 where 4 is expected (attitude)"};
+  keep_stability_verdicts(all, measure);
+  EXPECT_EQ(measure.verdict[0], "reliable");
+  EXPECT_EQ(measure.verdict[1], all.verdict[1]);
+  EXPECT_EQ(measure.verdict[2], "reliable");  // another quantity's order: not the measure's
+  EXPECT_EQ(measure.verdict[3], "not asymptotic: observed order 3 where 4 is expected (attitude)");
+  EXPECT_TRUE(says_runs_unstable("step beyond the stability limit: the energy of the run at 4h departs ..."));
+  EXPECT_FALSE(says_runs_unstable("interpolated between the reliable records before and after it"));
+}
+
 TEST(ToleranceModel, OrderPruningFigure) {
   // at 1e-8 relative: order 4 needs 100 steps x 4 evaluations, order 2 10^4 x 2
   EXPECT_NEAR(order_cost_figure(4, 4, 1e-8), 400.0, 1e-9);

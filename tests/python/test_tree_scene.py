@@ -13,9 +13,9 @@ bounds the energy error of a chaotic run, and its iterates reach their tolerance
 balance closes on every run; a gravity on all the links (which the tree applies as its base's acceleration) moves
 them as the same gravity split across two elements; the double pendulum's small oscillations are its normal modes,
 its energy error when chaotic falls at each method's order, a ball-jointed top is the Lagrange top, and a gimballed
-gyroscope precesses steadily at m g d / (I₃ ψ̇), each against its closed form; a joint spring's damped oscillation and a ball
-joint's twist against their closed forms; a motor's window on a floating tree keeps its momenta; the links' records
-and describe(); bad input refused naming the value.
+gyroscope precesses steadily at m g d / (I₃ ψ̇), each against its closed form; a joint spring's damped oscillation
+and a ball joint's twist against their closed forms; a motor's window on a floating tree keeps its momenta; the
+links' records and describe(); bad input refused naming the value.
 
 Error bound of the step comparison: both sides evaluate the same four derivatives, each to ~10 n² eps of its scale
 (test_tree_vs_reference's bound for forward dynamics, n <= 8 links; the element forces add a few eps), and the step
@@ -457,8 +457,9 @@ def test_a_chaotic_double_pendulums_energy_error_falls_at_each_methods_order(met
 
 def test_a_ball_jointed_top_is_the_lagrange_top():
     """A symmetric top as a one-link tree on a ball joint at W's origin, under the scene's gravity, against the
-    Lagrange top's closed form (LagrangeTopSolution of the same PivotedBody) at every record over 2 s. Bound: RK4's error at h is at most twice its Richardson estimate |y(2h) − y(h)| / 15 (C h⁴ asymptotic, the
-    next term's share doubled), plus the closed form's own error 16 eps κ (1 + |ω| t) (κ of I_O ≈ 3)."""
+    Lagrange top's closed form (LagrangeTopSolution of the same PivotedBody) at every record over 2 s. Bound: RK4's
+    error at h is at most twice its Richardson estimate |y(2h) − y(h)| / 15 (C h⁴ asymptotic, the next term's share
+    doubled), plus the closed form's own error 16 eps κ (1 + |ω| t) (κ of I_O ≈ 3)."""
     m, c, I_C = 2.0, np.array([0.0, 0.0, 0.2]), np.diag([0.3, 0.3, 0.1])
     q0, w0 = so3_ref.rotvec_to_quat([0.5, 0.2, 0.0]), np.array([0.4, -0.3, 15.0])
     top = rd.LagrangeTopSolution(rd.PivotedBody(rd.RigidBody(m, I_C), c), [0.0, 0.0, -9.81],

@@ -63,7 +63,7 @@ struct CombinedDifferences {
 class CommonRecord {
  public:
   CommonRecord(int order, std::string coarse_problem)
-      : order_(order), expected_(static_cast<double>(std::int64_t{1} << order)), blocked_(std::move(coarse_problem)) {}
+      : order_(order), expected_(std::ldexp(1.0, order)), blocked_(std::move(coarse_problem)) {}
 
   // ε of one body's value of a quantity (its order checked with the other bodies', by check()).
   double estimate(const Differences& d) {
@@ -266,6 +266,11 @@ std::string seconds(double t) {
   return text;
 }
 
+// The per-body arrays of an estimate, in the order of CommonTable::states().
+std::array<std::vector<double>*, 4> per_body_arrays(GlobalErrorEstimate& e) {
+  return {&e.attitude, &e.angular_velocity, &e.position, &e.velocity};
+}
+
 // Appends rows a and b of `common` blended, a·(1 − w) + b·w for each quantity, not checked: the verdict of the first
 // of a and b that is not reliable, else `how` (observed order NaN).
 void append_blend(GlobalErrorEstimate& out, const CommonTable& common, std::size_t a, std::size_t b, double w,
@@ -273,7 +278,7 @@ void append_blend(GlobalErrorEstimate& out, const CommonTable& common, std::size
   const auto mix = [w](double x, double y) { return x * (1.0 - w) + y * w; };
   const std::size_t nb = common.nb;
   const auto states = common.states();
-  const std::array<std::vector<double>*, 4> into = {&out.attitude, &out.angular_velocity, &out.position, &out.velocity};
+  const auto into = per_body_arrays(out);
   for (std::size_t k = 0; k < nb; ++k) {
     for (std::size_t q = 0; q < 4; ++q) into[q]->push_back(mix((*states[q])[a * nb + k], (*states[q])[b * nb + k]));
   }
@@ -291,7 +296,7 @@ void append_scaled(GlobalErrorEstimate& out, const CommonTable& common, std::siz
   const auto mix = [s](double y) { return 0.0 * (1.0 - s) + y * s; };
   const std::size_t nb = common.nb;
   const auto states = common.states();
-  const std::array<std::vector<double>*, 4> into = {&out.attitude, &out.angular_velocity, &out.position, &out.velocity};
+  const auto into = per_body_arrays(out);
   for (std::size_t k = 0; k < nb; ++k) {
     for (std::size_t q = 0; q < 4; ++q) into[q]->push_back(mix((*states[q])[a * nb + k]));
   }
@@ -305,7 +310,7 @@ void append_scaled(GlobalErrorEstimate& out, const CommonTable& common, std::siz
 void append(GlobalErrorEstimate& out, const CommonTable& common, std::size_t a) {
   const std::size_t nb = common.nb;
   const auto states = common.states();
-  const std::array<std::vector<double>*, 4> into = {&out.attitude, &out.angular_velocity, &out.position, &out.velocity};
+  const auto into = per_body_arrays(out);
   for (std::size_t q = 0; q < 4; ++q) {
     for (std::size_t k = 0; k < nb; ++k) into[q]->push_back((*states[q])[a * nb + k]);  // reserved: no reallocation
   }
@@ -317,7 +322,7 @@ void append(GlobalErrorEstimate& out, const CommonTable& common, std::size_t a) 
 
 // Room for n records of nb bodies.
 void reserve(GlobalErrorEstimate& out, std::size_t n, std::int64_t nb) {
-  for (auto* v : {&out.attitude, &out.angular_velocity, &out.position, &out.velocity}) v->reserve(n * nb);
+  for (auto* v : per_body_arrays(out)) v->reserve(n * nb);
   for (auto* v : {&out.energy, &out.angular_momentum, &out.observed_order}) v->reserve(n);
   out.verdict.reserve(n);
 }
@@ -473,7 +478,7 @@ GlobalErrorEstimate estimate_global_error(const ErrorRecords& h, const ErrorReco
       const double t0 = h.t[0], tc = h.t[last * stride];
       append_scaled(out, common, last, (h.t[i] - t0) / (tc - t0), after);
     } else {  // no common record but the first: no estimate
-      for (auto* v : {&out.attitude, &out.angular_velocity, &out.position, &out.velocity}) v->insert(v->end(), nb, nan);
+      for (auto* v : per_body_arrays(out)) v->insert(v->end(), nb, nan);
       for (auto* v : {&out.energy, &out.angular_momentum, &out.observed_order}) v->push_back(nan);
       if (none.empty()) {
         none = "no estimate: fewer than " + std::to_string(m) +

@@ -71,12 +71,13 @@ std::string refinements_text(int refinements) {
   return refinements == 1 ? "the refinement" : std::to_string(refinements) + " refinements";
 }
 
+bool says_runs_unstable(const std::string& verdict) {
+  return verdict.find("stability limit") != std::string::npos || verdict.find("diverged") != std::string::npos;
+}
+
 void keep_stability_verdicts(const GlobalErrorEstimate& all, GlobalErrorEstimate& measure) {
   for (std::size_t i = 0; i < all.verdict.size() && i < measure.verdict.size(); ++i) {
-    const std::string& v = all.verdict[i];
-    if (v.find("stability limit") != std::string::npos || v.find("diverged") != std::string::npos) {
-      measure.verdict[i] = v;
-    }
+    if (says_runs_unstable(all.verdict[i])) measure.verdict[i] = all.verdict[i];
   }
 }
 
@@ -164,10 +165,7 @@ std::size_t first_uncertified(const GlobalErrorEstimate& e, ErrorMeasure measure
   // a run that diverged, whose step is beyond the stability limit (a coarse run's energy ran away: its error is no
   // power of h, whatever the order its largest error shows) or has no estimate is never certified
   for (const std::string& v : e.verdict) {
-    if (v.find("diverged") != std::string::npos || v.find("stability limit") != std::string::npos ||
-        v.compare(0, 11, "no estimate") == 0) {
-      return bad;
-    }
+    if (says_runs_unstable(v) || v.compare(0, 11, "no estimate") == 0) return bad;
   }
   if (std::isnan(largest_error(e, measure))) return bad;
   return observed_order_of_largest(e, measure) >= e.order - std::log2(1.5) ? e.verdict.size() : bad;

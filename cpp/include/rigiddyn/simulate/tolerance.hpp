@@ -74,7 +74,8 @@ std::size_t first_unreliable(const GlobalErrorEstimate& e, ErrorMeasure measure,
 double observed_order_of_largest(const GlobalErrorEstimate& e, ErrorMeasure measure);
 
 // The certificate: first_unreliable, or, where a record fails, e.verdict.size() all the same when no run diverged
-// or went beyond the stability limit (a verdict "step beyond the stability limit: ..."), every record has an estimate and the largest error's observed order is at or above the window's lower end
+// or went beyond the stability limit (says_runs_unstable), every record has an estimate and the largest error's
+// observed order is at or above the window's lower end
 // (2^p / 1.5); else the first record not accepted.
 std::size_t first_uncertified(const GlobalErrorEstimate& e, ErrorMeasure measure, double tolerance);
 
@@ -124,9 +125,13 @@ struct MeasuredEstimate {
   GlobalErrorEstimate all, measure;
 };
 
-// Copies to `measure` (the same records) every verdict of `all` that says a run went beyond the stability limit or
-// diverged: those are facts of the runs, which no single measure's order shows (the measure's estimate does not see
-// the energy that a coarse run gains beyond the stability limit, while its attitude error stays bounded).
+// Whether a verdict says that a run of the estimate went beyond the stability limit or diverged ("step beyond the
+// stability limit: ...", "... diverged").
+bool says_runs_unstable(const std::string& verdict);
+
+// Copies to `measure` (the same records) every verdict of `all` that says_runs_unstable: those are facts of the
+// runs, which no single measure's order shows (the measure's estimate does not see the energy that a coarse run
+// gains beyond the stability limit, while its attitude error stays bounded).
 void keep_stability_verdicts(const GlobalErrorEstimate& all, GlobalErrorEstimate& measure);
 
 // global_error's runs, estimated both ways (order 0, 'exact': the round-off bound alone, both ways).

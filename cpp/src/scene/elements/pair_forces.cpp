@@ -73,7 +73,8 @@ __attribute__((target("avx2,fma"))) inline void four_pairs(const PairColumns& c,
   const __m256d dy = _mm256_sub_pd(_mm256_loadu_pd(c.y + j), _mm256_set1_pd(c.y[i]));
   const __m256d dz = _mm256_sub_pd(_mm256_loadu_pd(c.z + j), _mm256_set1_pd(c.z[i]));
   const __m256d r2 = _mm256_fmadd_pd(dz, dz, _mm256_fmadd_pd(dy, dy, _mm256_fmadd_pd(dx, dx, eps2)));  // |d|² + ε²
-  const __m256d g = _mm256_div_pd(_mm256_mul_pd(Gm_i, _mm256_loadu_pd(c.mass + j)), _mm256_mul_pd(r2, _mm256_sqrt_pd(r2)));
+  const __m256d g =
+      _mm256_div_pd(_mm256_mul_pd(Gm_i, _mm256_loadu_pd(c.mass + j)), _mm256_mul_pd(r2, _mm256_sqrt_pd(r2)));
   s.x = _mm256_fmadd_pd(g, dx, s.x), s.y = _mm256_fmadd_pd(g, dy, s.y), s.z = _mm256_fmadd_pd(g, dz, s.z);
   _mm256_storeu_pd(c.f_x + j, _mm256_fnmadd_pd(g, dx, _mm256_loadu_pd(c.f_x + j)));
   _mm256_storeu_pd(c.f_y + j, _mm256_fnmadd_pd(g, dy, _mm256_loadu_pd(c.f_y + j)));
