@@ -739,8 +739,8 @@ std::string momentum_balance_not_applicable(const CompiledScene& compiled) {
   for (const std::string& type : compiled.element_types()) {
     if (type == "CoriolisForce") return "the Coriolis kick of a turning frame is not integrated into the impulses";
   }
-  if (compiled.one_body_path() || compiled.fast_model().index() != 0) {
-    return "the run's path (one body, or a specialised model) does not integrate the impulses";
+  if ((compiled.one_body_path() && compiled.method() == Method::exact) || compiled.fast_model().index() != 0) {
+    return "the run's path (the closed form, or a specialised model) does not integrate the impulses";
   }
   return {};
 }

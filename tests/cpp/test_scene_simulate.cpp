@@ -1,5 +1,5 @@
-// simulate and step of a scene (scene/simulate_scene.hpp): today's one-body problems declared as a
-// scene give today's numbers bitwise; the work–energy equation with gravity and springs; a
+// simulate and step of a scene (scene/simulate_scene.hpp): 'exact' on one body declared as a scene gives the
+// closed form's numbers bitwise; the work–energy equation with gravity and springs; a
 // time-dependent force is evaluated at every stage time (RK4 keeps order 4 on f(t) = sin t); a
 // compiled-in CustomForce equals the type-erased FunctionForce; step equals simulate's first step.
 #include <gtest/gtest.h>
@@ -42,59 +42,42 @@ void expect_same_records(const SceneSimulation& scene, const Trajectory& one) {
   EXPECT_EQ(scene.total_energy, one.total_energy);
 }
 
-// One body with at most uniform gravity and scheduled loads through the centre of mass, declared as a
-// scene, runs on today's one-body model: the same numbers bitwise, for every method and body kind.
-TEST(SimulateScene, OneBodySceneIsTodaysSimulateBitwise) {
+// 'exact' on one body declared as a scene runs the closed form of simulate(body, ...): the same numbers bitwise,
+// torque-free and under uniform gravity with constant loads through the centre of mass (every other method runs the
+// scene model's one-body layout: test_one_body_layout.cpp).
+TEST(SimulateScene, ExactOnOneBodyIsTheClosedFormBitwise) {
   const RigidBody rigid(2.0, Eigen::Vector3d(1.0, 2.0, 3.0));
   const Eigen::Vector3d g_W(0.0, 0.0, -9.81);
-  for (const MethodInfo& info : method_table()) {
-    SCOPED_TRACE(info.name);
+  AppliedLoad push;
+  push.force = Eigen::Vector3d(0.1, -0.3, 0.2);
+  for (const bool loaded : {false, true}) {
+    SCOPED_TRACE(loaded ? "gravity and loads" : "torque-free");
     SimulationOptions o;
-    o.method = info.method;
+    o.method = Method::exact;
     o.dt = 0.01;
     o.steps = 100;
     o.record_every = 3;
     Scene scene;
     scene.bodies = {rigid};
     SimulationOptions today = o;
-    if (info.method != Method::exact) {  // exact: the torque-free body alone
+    if (loaded) {
       scene.elements.push_back(UniformGravity{g_W, {}});
-      scene.elements.push_back(ScheduledLoads{0, {window(0.0125, 0.5037)}, Eigen::Vector3d::Zero()});
+      scene.elements.push_back(ScheduledLoads{0, {push}, Eigen::Vector3d::Zero()});
       today.gravity_W = g_W;
-      today.loads = {window(0.0125, 0.5037)};
+      today.loads = {push};
     }
-    const CompiledScene compiled = compile_scene(scene, info.method);
+    const CompiledScene compiled = compile_scene(scene, Method::exact);
     ASSERT_TRUE(compiled.one_body_path());
     const SceneSimulation run = simulate(compiled, {tumbling_state()}, o);
     const Trajectory expected = simulate(rigid, tumbling_state(), today);
     expect_same_records(run, expected);
-    if (info.method == Method::exact) continue;
-    // the work is split between gravity (−ΔV) and the loads (the rest), which add up to today's work;
+    if (!loaded) continue;
+    // the work is split between gravity (−ΔV) and the loads (the rest), which add up to the body's work;
     // the sum rounds once: ≤ ε |work| per record
     for (std::size_t r = 0; r < run.size(); ++r) {
       EXPECT_NEAR(run.work[2 * r] + run.work[2 * r + 1], expected.work[r], 2.0 * kEps * (std::abs(run.work[2 * r]) + std::abs(run.work[2 * r + 1])));
     }
   }
-  SimulationOptions o;
-  o.method = Method::rk4;
-  o.dt = 0.01;
-  o.steps = 50;
-  Scene particle;
-  particle.bodies = {Particle(0.5)};
-  particle.elements.push_back(UniformGravity{g_W, {0}});
-  const ParticleState p0{Eigen::Vector3d(1.0, 2.0, 3.0), Eigen::Vector3d(0.5, 0.0, 2.0)};
-  SimulationOptions today = o;
-  today.gravity_W = g_W;
-  expect_same_records(simulate(particle, {p0}, o), simulate(Particle(0.5), p0, today));
-  Scene planar;
-  planar.bodies = {PlanarBody(1.0, 0.3)};
-  AppliedLoad turning;
-  turning.force = Eigen::Vector3d(0.2, 0.1, 0.0), turning.torque = Eigen::Vector3d(0.0, 0.0, 0.3), turning.frame = Frame::body;
-  planar.elements.push_back(ScheduledLoads{0, {turning}, Eigen::Vector3d::Zero()});
-  const PlanarBodyState s0{Eigen::Vector2d(0.1, 0.2), 0.3, Eigen::Vector2d(1.0, 0.0), 0.5};
-  today = o;
-  today.loads = {turning};
-  expect_same_records(simulate(planar, {s0}, o), simulate(PlanarBody(1.0, 0.3), s0, today));
 }
 
 // Bodies linked by springs (to each other and to a world anchor, at points off their centres of mass)

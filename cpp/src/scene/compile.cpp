@@ -45,9 +45,9 @@ void check_names(const Scene& scene) {
   }
 }
 
-// The one-body plan when the scene is exactly one of today's problems: one body, at most one
-// UniformGravity (in the plane for a planar body, as today's planar simulate requires) and at most one
-// ScheduledLoads through the centre of mass. Returns false otherwise.
+// The plan of the closed form ('exact') when the scene is one body of simulate(body, ...): at most one
+// UniformGravity (in the plane for a planar body, as the planar simulate requires) and at most one ScheduledLoads
+// through the centre of mass. Returns false otherwise.
 bool one_body_plan(const Scene& scene, OneBodyPlan& plan) {
   if (scene.bodies.size() != 1 || is_pivoted(scene.bodies[0]) || body_traits(scene.bodies[0]).has_rotors ||
       body_traits(scene.bodies[0]).is_linked || scene.frame ||
@@ -404,7 +404,12 @@ CompiledScene compile_scene(const Scene& scene, Method method) {
   out.method_ = method;
   const std::size_t element_count = terms.size();
   out.model_ = std::make_shared<const SceneModel>(scene.bodies, std::move(terms), scene.mass_flows, detail::body_names_of(scene));
-  out.one_body_path_ = one_body_plan(scene, out.plan_);
+  if (method == Method::exact && one_body_plan(scene, out.plan_)) {
+    out.one_body_path_ = true;  // the closed form
+  } else if (auto layout = one_body_layout_of(scene, out.model_->terms()); layout.index() != 0) {
+    out.one_body_path_ = true;
+    out.layout_ = std::make_shared<const OneBodyLayout>(std::move(layout));
+  }
   if (out.one_body_path_) {
     out.path_ = ScenePath::one_body;
   } else {

@@ -216,7 +216,9 @@ RunBalance scene_balance(const SceneSimulation& r, const std::string& not_applic
       const std::size_t at = (i * nb + k) * 3;
       const Eigen::Vector3d mv = r.mass[i * nb + k] * Vector3Map(&r.v_W[at]);
       mv_norms[k] = norm3(mv);
-      moment_norms[k] = norm3(Vector3Map(&r.p_W[at]).cross(mv));
+      // |p| |m v|, not |p × m v|: the size of the moment's rounding (ε |p| |m v|), which stays where p and v are
+      // parallel and the moment cancels (a body moving along a line through W's origin)
+      moment_norms[k] = norm3(Vector3Map(&r.p_W[at])) * mv_norms[k];
       H_C_norms[k] = norm3(Vector3Map(&r.angular_momentum_O_W[at]));
       w_max = k == 0 ? norm3(Vector3Map(&r.w_B[at])) : nan_max(w_max, norm3(Vector3Map(&r.w_B[at])));
     }

@@ -1,5 +1,6 @@
-// simulate for scenes (scene/simulate_scene.hpp): the generic model's runs (one per method) and the
-// one-body path on today's simulate. step is in step_scene.cpp (its own instantiations, built in parallel).
+// simulate for scenes (scene/simulate_scene.hpp): the generic model's runs (one per method), the one-body layouts'
+// (one_body_runs_*.cpp) and the closed form of 'exact' on one body. step is in step_scene.cpp (its own
+// instantiations, built in parallel).
 #include "rigiddyn/scene/simulate_scene.hpp"
 
 #include "append_record.hpp"
@@ -8,6 +9,7 @@
 
 #include <cmath>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <variant>
@@ -92,7 +94,12 @@ SceneSimulation reserved_scene_simulation(std::int64_t steps, std::int64_t recor
 
 namespace {
 
-// Today's simulate of the one body with the plan's gravity and loads.
+template <class T>
+struct is_variant : std::false_type {};
+template <class... T>
+struct is_variant<std::variant<T...>> : std::true_type {};
+
+// simulate(body, ...) of the one body with the plan's gravity and loads ('exact': the closed form)
 Trajectory one_body_trajectory(const Body& body, const BodyState& initial, const OneBodyPlan& plan, const SimulationOptions& o) {
   SimulationOptions one = o;
   one.gravity_W = plan.gravity_W;
@@ -102,10 +109,10 @@ Trajectory one_body_trajectory(const Body& body, const BodyState& initial, const
   return simulate(std::get<RigidBody>(body), std::get<RigidBodyState>(initial), one);
 }
 
-// The one-body path's records as a SceneSimulation: the states and energies as today's simulate
-// recorded them; the potential, the momenta and each element's power from the scene's terms at each
-// record; the work of gravity −ΔV (exact for a uniform field), the loads' the rest of the integrated work.
-SceneSimulation one_body_simulation(const CompiledScene& compiled, const std::vector<BodyState>& initial,
+// The closed form's records as a SceneSimulation: the states and energies as simulate(body, ...) recorded
+// them; the potential, the momenta and each element's power from the scene's terms at each record; the work of
+// gravity −ΔV (exact for a uniform field), the loads' the rest of the integrated work.
+SceneSimulation closed_form_simulation(const CompiledScene& compiled, const std::vector<BodyState>& initial,
                                     const SimulationOptions& o) {
   const Body& body = compiled.scene().bodies[0];
   const OneBodyPlan& plan = compiled.one_body_plan();
@@ -156,6 +163,29 @@ SceneSimulation one_body_simulation(const CompiledScene& compiled, const std::ve
   return out;
 }
 
+// The run of a one-body layout (its loops compiled in one_body_runs_*.cpp)
+SceneSimulation run_one_body_layout(const OneBodyLayout& layout, const std::vector<BodyState>& initial,
+                                    const SimulationOptions& o, const std::vector<AppliedLoad>& switch_schedule) {
+  const auto run = [&](const auto& model) -> SceneSimulation {
+    using Model = std::decay_t<decltype(model)>;
+    if constexpr (std::is_same_v<Model, std::monostate>) {
+      throw std::logic_error("a one-body path without a layout");
+    } else {
+      return detail::run_one_body(model, initial, o, switch_schedule);
+    }
+  };
+  return std::visit(
+      [&](const auto& alternative) -> SceneSimulation {
+        using Alternative = std::decay_t<decltype(alternative)>;
+        if constexpr (is_variant<Alternative>::value) {
+          return std::visit(run, alternative);
+        } else {
+          return run(alternative);
+        }
+      },
+      layout);
+}
+
 }  // namespace
 
 SceneSimulation detail::run_generic_scene(const SceneModel& model, const Eigen::VectorXd& y, const SimulationOptions& o,
@@ -167,7 +197,10 @@ SceneSimulation simulate(const CompiledScene& compiled, const std::vector<BodySt
   const std::vector<BodyState> states =
       detail::checked_scene_input(compiled.scene(), compiled.method(), initial, o, true, "initial");
   detail::check_masses_over_run(compiled.scene(), o, o.steps);
-  if (compiled.one_body_path()) return one_body_simulation(compiled, states, o);
+  if (compiled.one_body_path()) {
+    if (compiled.method() == Method::exact) return closed_form_simulation(compiled, states, o);
+    return run_one_body_layout(compiled.one_body_layout(), states, o, compiled.switch_schedule());
+  }
   return std::visit(
       [&](const auto& fast) {
         if constexpr (std::is_same_v<std::decay_t<decltype(fast)>, std::monostate>) {

@@ -179,7 +179,8 @@ def _of_scene(result: Any, impulse_W: Any, angular_impulse_W: Any, not_applicabl
         angular = _norms(H - H[:1] - K) if n else t
         linear_scale = (_norms(mv[0]).sum() + _running_max(_norms(J))) if n else t
         H_C = np.asarray(result.angular_momentum_O_W)
-        moments = _norms(np.cross(p, mv)).sum(axis=1) + _norms(H_C).sum(axis=1)  # (n,)
+        # |p| |m v| per part, the size of the rounding of p x m v (which stays where p and v are parallel)
+        moments = (_norms(p) * _norms(mv)).sum(axis=1) + _norms(H_C).sum(axis=1)  # (n,)
         # the parts' size where they cancel (a gyrostat's body and wheels, H_C ~ 0): 2 T / |w| <= |H| of a turning body
         w_max = _norms(np.asarray(result.w_B)).max(axis=1)
         turning = np.divide(2.0 * T, w_max, out=np.zeros_like(T), where=w_max > 0)

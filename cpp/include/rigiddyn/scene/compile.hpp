@@ -1,17 +1,18 @@
 // Compiling a scene (docs/scenes.md §3): the scene is checked (bodies, names, mass flows,
 // every element's own checks, the method's compatibility with it) and turned into an immutable
 // CompiledScene that holds the model whose derivative evaluates only the declared elements and the frame's
-// fictitious terms that are not identically zero (SceneModel) — or, for exactly today's problems (one body
-// under at most one UniformGravity and one ScheduledLoads through the centre of mass), the plan to run
-// today's one-body models, bitwise as today's simulate — and, for the one-body cases below (a pivoted
-// body under gravity and loads; a particle in a frame turning at a constant rate; a variable-mass particle
-// with one thrust), a fast model with fixed-size coordinates (scene/fast/) that runs through the same loop
-// and records the same SceneSimulation.
+// fictitious terms that are not identically zero (SceneModel) and, for a scene of one body, the model simulate runs:
+// the scene model's one-body layout (scene/one_body_layouts.hpp: one particle, planar, rigid or pinned planar body
+// under at most one UniformGravity and one ScheduledLoads; 'exact' on one body: the closed form), or, for the
+// one-body cases below (a pivoted body under gravity and loads; a particle in a frame turning at a constant rate; a
+// variable-mass particle with one thrust), a fast model with fixed-size coordinates (scene/fast/) that runs through
+// the same loop and records the same SceneSimulation.
 #pragma once
 #include "rigiddyn/integrators/method.hpp"
 #include "rigiddyn/scene/fast/pivoted_body_model.hpp"
 #include "rigiddyn/scene/fast/rotating_frame_particle_model.hpp"
 #include "rigiddyn/scene/fast/variable_mass_particle_model.hpp"
+#include "rigiddyn/scene/one_body_layouts.hpp"
 #include "rigiddyn/scene/scene.hpp"
 #include "rigiddyn/scene/scene_model.hpp"
 
@@ -29,8 +30,8 @@ std::string scene_features(Method method);
 // The name of an element spec's type in messages and records ("UniformGravity", ...; a FunctionForce's type_name).
 std::string element_type_name(const Element& element);
 
-// The one-body plan: today's simulate(body, state, options) with gravity_W and loads taken from the
-// scene's elements (indices of those elements, -1 when absent).
+// The closed form of method 'exact' on one body: simulate(body, state, options) with gravity_W and loads taken from
+// the scene's elements (indices of those elements, -1 when absent).
 struct OneBodyPlan {
   Eigen::Vector3d gravity_W = Eigen::Vector3d::Zero();
   std::vector<AppliedLoad> loads;
@@ -41,7 +42,7 @@ struct OneBodyPlan {
 // The path simulate runs a compiled scene on.
 enum class ScenePath {
   generic,                  // SceneModel, any scene
-  one_body,                 // today's one-body models (one_body_plan), bitwise today's simulate
+  one_body,                 // the one-body layout (one_body_layout; 'exact': the closed form, one_body_plan)
   pivoted_body,             // PivotedBodyModel<Euler>: one PivotedBody, inertial, gravity and loads at most
   rotating_frame_particle,  // RotatingFrameParticleModel: one particle in a constant rotation, gravity at most
   variable_mass_particle,   // VariableMassParticleModel: one particle, constant mass rate, one world thrust
@@ -61,11 +62,12 @@ class CompiledScene {
   // The compatibility warnings of the scene with the method, each a sentence naming the
   // element: e.g. a velocity-dependent element under a kick-based splitting.
   const std::vector<std::string>& warnings() const { return warnings_; }
-  // The generic model (used by step, and by simulate unless one_body_path()).
+  // The generic model (used by step, and by simulate on the generic path).
   const SceneModel& model() const { return *model_; }
-  // True when simulate runs today's one-body model (bitwise today's results); then one_body_plan() holds
-  // its gravity and loads.
+  // True when simulate runs the one-body layout (one_body_layout(): the generic model's arithmetic, bitwise its
+  // motion) or, for 'exact', the closed form of simulate(body, ...) (one_body_plan() holds its gravity and loads).
   bool one_body_path() const { return one_body_path_; }
+  const OneBodyLayout& one_body_layout() const { return *layout_; }
   const OneBodyPlan& one_body_plan() const { return plan_; }
   // The switch times of the run (their t_start/t_end): every load of every ScheduledLoads element, every element with
   // switches() and every gyrostat wheel's motor-torque window.
@@ -89,6 +91,7 @@ class CompiledScene {
   std::vector<std::string> warnings_;
   std::shared_ptr<const SceneModel> model_;
   bool one_body_path_ = false;
+  std::shared_ptr<const OneBodyLayout> layout_ = std::make_shared<const OneBodyLayout>();
   OneBodyPlan plan_;
   std::vector<AppliedLoad> switch_schedule_;
   ScenePath path_ = ScenePath::generic;

@@ -700,7 +700,7 @@ class BasicSceneModel {
     for (std::size_t b = first; b < last; ++b) {
       const BodyKinematics& k = kinematics_[b];
       const BodyWrench& w = wrenches_[b];
-      Eigen::Vector3d M_W = k.p_W.cross(w.f_W);
+      Eigen::Vector3d M_W = cross_3(k.p_W, w.f_W);
       if (turns_vectors_) M_W += k.R_WB * w.tau_B;
       for (int i = 0; i < 3; ++i) out[i] += h * w.f_W[i], out[3 + i] += h * M_W[i];
     }

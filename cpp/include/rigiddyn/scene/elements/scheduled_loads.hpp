@@ -104,11 +104,14 @@ class ScheduledLoadsTerm {
   // f_W = f_W + R f_B, τ_B = τ_B + Rᵀ τ_W + r_B × Rᵀ f_W on the body (R = R_WB of its unit attitude);
   // returns f_W·v_W + τ_B·ω_B [W].
   double add_wrenches(double /*t*/, const std::vector<BodyKinematics>& kinematics, std::vector<BodyWrench>& wrenches) const {
-    const BodyKinematics& k = kinematics[body_];
+    return add_wrench(kinematics[body_], wrenches[body_]);
+  }
+  // The same on its body of kinematics k (the one-body layout, scene/fixed_scene_model.hpp)
+  RIGIDDYN_ALWAYS_INLINE double add_wrench(const BodyKinematics& k, BodyWrench& wrench) const {
     const Eigen::Vector3d f_W = loads_.f_W + k.R_WB * loads_.f_B;
     const Eigen::Vector3d tau_B = loads_.tau_B + k.R_WB.transpose() * loads_.tau_W + point_B_.cross(k.R_WB.transpose() * f_W);
-    wrenches[body_].f_W += f_W;
-    wrenches[body_].tau_B += tau_B;
+    wrench.f_W += f_W;
+    wrench.tau_B += tau_B;
     return f_W.dot(k.v_W) + tau_B.dot(k.w_B);
   }
 

@@ -2,6 +2,7 @@
 // the potential V = −m g_W·p_W (Craig, "Rigid Body Dynamics" slides, work of a constant force).
 // A planar body keeps the in-plane part of f (the plane takes g_z: the constraint reaction).
 #pragma once
+#include "rigiddyn/always_inline.hpp"
 #include "rigiddyn/scene/body.hpp"
 #include "rigiddyn/scene/body_kinematics.hpp"
 #include "rigiddyn/scene/element_bodies.hpp"
@@ -64,14 +65,18 @@ class UniformGravityTerm {
   // f_W += m g_W on each listed body but those left to a tree; returns Σ m g_W·v_W [W] over every listed body.
   double add_wrenches(double /*t*/, const std::vector<BodyKinematics>& kinematics, std::vector<BodyWrench>& wrenches) const {
     double power = 0.0;
-    for (const int b : loaded_) {
-      const Eigen::Vector3d f = kinematics[b].m * g_W_;
-      wrenches[b].f_W += f;
-      power += f.dot(kinematics[b].v_W);
-    }
+    for (const int b : loaded_) power += add_wrench(kinematics[b], wrenches[b]);
     Eigen::Vector3d momentum = Eigen::Vector3d::Zero();  // of the links left to a tree: their power g_W·Σ m v_W
     for (const int b : left_to_tree_) momentum += kinematics[b].m * kinematics[b].v_W;
     return power + g_W_.dot(momentum);
+  }
+
+  // The term on one body of kinematics k (the one-body layout, scene/fixed_scene_model.hpp): wrench.f_W += m g_W;
+  // returns m g_W·v_W [W].
+  RIGIDDYN_ALWAYS_INLINE double add_wrench(const BodyKinematics& k, BodyWrench& wrench) const {
+    const Eigen::Vector3d f = force(k.m);
+    wrench.f_W += f;
+    return f.dot(k.v_W);
   }
 
   // Bodies first … first + count − 1, the links of a tree whose articulated-body algorithm applies this gravity as
@@ -88,9 +93,15 @@ class UniformGravityTerm {
   // V = −Σ m g_W·p_W [J]
   double potential(const std::vector<BodyKinematics>& kinematics) const {
     double V = 0.0;
-    for (const int b : bodies_) V -= kinematics[b].m * g_W_.dot(kinematics[b].p_W);
+    for (const int b : bodies_) V += potential(kinematics[b]);
     return V;
   }
+
+  // m g_W [N] on a body of mass m [kg]
+  RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d force(double m) const { return m * g_W_; }
+
+  // −m g_W·p_W [J] of one body of kinematics k
+  double potential(const BodyKinematics& k) const { return -(k.m * g_W_.dot(k.p_W)); }
 
   const Eigen::Vector3d& g_W() const { return g_W_; }
   const std::vector<int>& bodies() const { return bodies_; }

@@ -20,7 +20,12 @@
 // and has_mass_flow (a kind whose mass is a coordinate: scene/kinds/mass_*_slot.hpp add the mass part). Two members
 // are optional: set_time(t) (a kind with piecewise-constant inputs, set at each piece of a run, as the elements')
 // and record_internal(y, out) (a kind with coordinates of its own beyond the body's motion: the gyrostat's wheel
-// speeds).
+// speeds). Three more let a model skip what nothing needs (OneBodySceneModel, scene/one_body_scene_model.hpp):
+// constrained = true (a kind held by a pivot or a plane, whose reaction is an external force), reads_kinematics =
+// false (a kind whose rate, velocity and kick read y and the wrench, never the kinematics) and motion_kinematics(y,
+// clock, k) (the kinematics but the attitude q_WB, for an evaluation in which no term reads it).
+// A slot's place (SlotPlace: its body's index and its offsets in y and ξ) is its base class: FirstPlace, known at
+// compile time, for the one body of a OneBodySceneModel (the kinds that template on it: Place).
 // The pointers y, dy, ξ, θ are the whole vectors; a slot reads its own block at at_y / at_xi. A slot may span
 // several consecutive bodies (a tree's links, kinds/tree_slot.hpp): it then reads their kinematics, wrenches and
 // states, and writes their records, as the arrays that start at its first body's, and has states(y, first) in
@@ -38,6 +43,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <tuple>
 #include <type_traits>
 #include <vector>
 
@@ -48,6 +54,18 @@ struct SlotPlace {
   int body;
   Eigen::Index at_y, at_xi;
 };
+
+// The place of the one body of a model at the start of y and ξ, known at compile time (a OneBodySceneModel: the slot's
+// arithmetic on y then resolves to fixed offsets, which keeps the integrator's stages in registers)
+struct FirstPlace {
+  FirstPlace(int, Eigen::Index, Eigen::Index) {}
+  static constexpr int body = 0;
+  static constexpr Eigen::Index at_y = 0, at_xi = 0;
+};
+
+// The place of the slots a group tuple holds (its first kind, a ParticleSlot<Place>, says it)
+template <class Groups>
+using place_of = typename std::tuple_element_t<0, Groups>::value_type::place;
 
 // The instant of an evaluation: t of y [s], and the start of the step being taken [s] (the out-of-mass message)
 struct StepClock {
@@ -66,6 +84,27 @@ struct RecordSums {
     H_W += k.p_W.cross(k.m * k.v_W);
   }
 };
+
+// Whether a kind's rate, velocity or kick read the kinematics (true unless it says reads_kinematics = false)
+template <class Slot, class = void>
+struct reads_kinematics : std::true_type {};
+template <class Slot>
+struct reads_kinematics<Slot, std::enable_if_t<!Slot::reads_kinematics>> : std::false_type {};
+
+// Whether a kind is held by a constraint of W whose reaction is an external force (constrained = true: a pivot, a
+// plane), so that its momentum balance is not applicable
+template <class Slot, class = void>
+struct is_constrained : std::false_type {};
+template <class Slot>
+struct is_constrained<Slot, std::enable_if_t<Slot::constrained>> : std::true_type {};
+
+// Whether a kind fills its kinematics without the attitude (motion_kinematics)
+template <class Slot, class = void>
+struct has_motion_kinematics : std::false_type {};
+template <class Slot>
+struct has_motion_kinematics<Slot, std::void_t<decltype(std::declval<const Slot&>().motion_kinematics(
+                                       static_cast<const double*>(nullptr), std::declval<const StepClock&>(),
+                                       std::declval<BodyKinematics&>()))>> : std::true_type {};
 
 RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d three(const double* x) { return Eigen::Vector3d(x[0], x[1], x[2]); }
 

@@ -23,10 +23,10 @@ namespace rigiddyn::detail {
 // The slots of a scene's bodies, grouped by slot type (the rigid kinds by Euler form: a sphere pays nothing for
 // the gyroscopic term); the model visits only the groups that hold a body.
 using SlotGroups =
-    std::tuple<std::vector<ParticleSlot>, std::vector<PlanarSlot>, std::vector<RigidSlot<SphericalEuler>>,
+    std::tuple<std::vector<ParticleSlot<>>, std::vector<PlanarSlot<>>, std::vector<RigidSlot<SphericalEuler>>,
                std::vector<RigidSlot<PrincipalEuler>>, std::vector<RigidSlot<FullEuler>>,
                std::vector<PivotedSlot<SphericalEuler>>, std::vector<PivotedSlot<PrincipalEuler>>,
-               std::vector<PivotedSlot<FullEuler>>, std::vector<PivotedPlanarSlot>, std::vector<MassParticleSlot>,
+               std::vector<PivotedSlot<FullEuler>>, std::vector<PivotedPlanarSlot<>>, std::vector<MassParticleSlot>,
                std::vector<MassRigidSlot<SphericalEuler>>, std::vector<MassRigidSlot<PrincipalEuler>>,
                std::vector<MassRigidSlot<FullEuler>>, std::vector<FunctionRigidSlot>, std::vector<GyrostatSlot>,
                std::vector<TreeSlot>>;

@@ -7,9 +7,14 @@
 
 namespace rigiddyn::detail {
 
-struct ParticleSlot : SlotPlace {
+template <class Place = SlotPlace>
+struct ParticleSlot : Place {
+  using kind = Particle;  // the body it carries
+  using place = Place;
+  using Place::body, Place::at_y, Place::at_xi;
   static constexpr bool has_mass_flow = false;
   static constexpr Eigen::Index y_size = 6, xi_size = 6;
+  static constexpr bool reads_kinematics = false;
   static constexpr int p = 0, v = 3;  // in y
   double inverse_mass;
 
@@ -72,8 +77,8 @@ struct ParticleSlot : SlotPlace {
 
 template <class Groups>
 void add_slot(Groups& groups, int b, const Particle& particle, Eigen::Index& y, Eigen::Index& xi) {
-  std::get<std::vector<ParticleSlot>>(groups).push_back({{b, y, xi}, 1.0 / particle.mass()});
-  y += ParticleSlot::y_size, xi += ParticleSlot::xi_size;
+  std::get<std::vector<ParticleSlot<place_of<Groups>>>>(groups).push_back({{b, y, xi}, 1.0 / particle.mass()});
+  y += ParticleSlot<>::y_size, xi += ParticleSlot<>::xi_size;
 }
 
 }  // namespace rigiddyn::detail

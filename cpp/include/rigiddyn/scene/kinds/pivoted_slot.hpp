@@ -11,10 +11,14 @@
 
 namespace rigiddyn::detail {
 
-template <class Euler>
-struct PivotedSlot : SlotPlace {
+template <class Euler, class Place = SlotPlace>
+struct PivotedSlot : Place {
+  using kind = PivotedBody;  // the body it carries
+  using place = Place;
+  using Place::body, Place::at_y, Place::at_xi;
   static constexpr bool has_mass_flow = false;
   static constexpr Eigen::Index y_size = 7, xi_size = 6;
+  static constexpr bool constrained = true;  // its pivot's reaction
   static constexpr int q = 0, w = 4;  // in y
   Eigen::Vector3d c_B, p_WO;          // p_OC_B [m] in B, O [m] in W
   Euler euler_O;                      // the Euler form of I_O
@@ -105,7 +109,7 @@ template <class Groups>
 void add_slot(Groups& groups, int b, const PivotedBody& body, Eigen::Index& y, Eigen::Index& xi) {
   with_euler_form(body, [&](const auto& euler_O) {
     using Euler = std::decay_t<decltype(euler_O)>;
-    std::get<std::vector<PivotedSlot<Euler>>>(groups).push_back(
+    std::get<std::vector<PivotedSlot<Euler, place_of<Groups>>>>(groups).push_back(
         {{b, y, xi}, body.p_OC_B(), body.p_WO(), euler_O, FreeRotationFlow(body.inertia_O())});
   });
   y += PivotedSlot<SphericalEuler>::y_size, xi += PivotedSlot<SphericalEuler>::xi_size;

@@ -10,9 +10,15 @@
 
 namespace rigiddyn::detail {
 
-struct PlanarSlot : SlotPlace {
+template <class Place = SlotPlace>
+struct PlanarSlot : Place {
+  using kind = PlanarBody;  // the body it carries
+  using place = Place;
+  using Place::body, Place::at_y, Place::at_xi;
   static constexpr bool has_mass_flow = false;
   static constexpr Eigen::Index y_size = 6, xi_size = 6;
+  static constexpr bool constrained = true;  // its plane's reaction
+  static constexpr bool reads_kinematics = false;
   static constexpr int p = 0, theta = 2, v = 3, w = 5;  // in y
   double inverse_mass, inertia_zz, inverse_inertia_zz;
 
@@ -20,11 +26,14 @@ struct PlanarSlot : SlotPlace {
   RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d acceleration(const BodyWrench& wrench) const {
     return Eigen::Vector3d(inverse_mass * wrench.f_W[0], inverse_mass * wrench.f_W[1], inverse_inertia_zz * wrench.tau_B[2]);
   }
-  void kinematics(const double* y, const StepClock&, BodyKinematics& k) const {
+  void kinematics(const double* y, const StepClock& clock, BodyKinematics& k) const {
+    motion_kinematics(y, clock, k);
+    const double half = 0.5 * y[at_y + theta];
+    k.q_WB = Eigen::Quaterniond(std::cos(half), 0.0, 0.0, std::sin(half));
+  }
+  void motion_kinematics(const double* y, const StepClock&, BodyKinematics& k) const {
     const double* x = y + at_y;
     k.p_W = Eigen::Vector3d(x[p], x[p + 1], 0.0);
-    const double half = 0.5 * x[theta];
-    k.q_WB = Eigen::Quaterniond(std::cos(half), 0.0, 0.0, std::sin(half));
     k.v_W = Eigen::Vector3d(x[v], x[v + 1], 0.0);
     k.w_B = Eigen::Vector3d(0.0, 0.0, x[w]);
   }
@@ -89,9 +98,9 @@ struct PlanarSlot : SlotPlace {
 
 template <class Groups>
 void add_slot(Groups& groups, int b, const PlanarBody& body, Eigen::Index& y, Eigen::Index& xi) {
-  std::get<std::vector<PlanarSlot>>(groups).push_back(
+  std::get<std::vector<PlanarSlot<place_of<Groups>>>>(groups).push_back(
       {{b, y, xi}, 1.0 / body.mass(), body.inertia_zz(), 1.0 / body.inertia_zz()});
-  y += PlanarSlot::y_size, xi += PlanarSlot::xi_size;
+  y += PlanarSlot<>::y_size, xi += PlanarSlot<>::xi_size;
 }
 
 }  // namespace rigiddyn::detail

@@ -18,9 +18,13 @@ struct SpatialLayout {
 
   // p_W, the unit q_WB (the attitude as integrated, normalised), v_W, w_B
   static void kinematics(const double* x, BodyKinematics& k) {
-    k.p_W = three(x + p);
+    motion_kinematics(x, k);
     k.q_WB = Eigen::Quaterniond(x[q + 3], x[q], x[q + 1], x[q + 2]);
     k.q_WB.coeffs() *= 1.0 / k.q_WB.coeffs().norm();
+  }
+  // p_W, v_W, w_B (the attitude left as it was)
+  static void motion_kinematics(const double* x, BodyKinematics& k) {
+    k.p_W = three(x + p);
     k.v_W = three(x + v);
     k.w_B = three(x + w);
   }
@@ -43,10 +47,14 @@ struct SpatialLayout {
   }
 };
 
-template <class Euler>
-struct RigidSlot : SlotPlace, SpatialLayout {
+template <class Euler, class Place = SlotPlace>
+struct RigidSlot : Place, SpatialLayout {
+  using kind = RigidBody;  // the body it carries
+  using place = Place;
+  using Place::body, Place::at_y, Place::at_xi;
   static constexpr bool has_mass_flow = false;
   static constexpr Eigen::Index y_size = 13, xi_size = 12;
+  static constexpr bool reads_kinematics = false;
   double inverse_mass;
   Euler euler;
   FreeRotationFlow flow;  // the exact Euler–Poinsot flow of this body's inertia (free_flow<ExactRotation>)
@@ -57,6 +65,9 @@ struct RigidSlot : SlotPlace, SpatialLayout {
     alpha_B = euler.angular_acceleration(w_B, wrench.tau_B);
   }
   void kinematics(const double* y, const StepClock&, BodyKinematics& k) const { SpatialLayout::kinematics(y + at_y, k); }
+  void motion_kinematics(const double* y, const StepClock&, BodyKinematics& k) const {
+    SpatialLayout::motion_kinematics(y + at_y, k);
+  }
   void rate(const double* y, const StepClock&, const BodyKinematics&, const BodyWrench& wrench, double* dy) const {
     const double* x = y + at_y;
     double* dx = dy + at_y;
@@ -126,7 +137,7 @@ template <class Groups>
 void add_slot(Groups& groups, int b, const RigidBody& body, Eigen::Index& y, Eigen::Index& xi) {
   with_euler_form(body, [&](const auto& euler) {
     using Euler = std::decay_t<decltype(euler)>;
-    std::get<std::vector<RigidSlot<Euler>>>(groups).push_back(
+    std::get<std::vector<RigidSlot<Euler, place_of<Groups>>>>(groups).push_back(
         {{b, y, xi}, {}, 1.0 / body.mass(), euler, FreeRotationFlow(body.inertia_com())});
   });
   y += RigidSlot<SphericalEuler>::y_size, xi += RigidSlot<SphericalEuler>::xi_size;

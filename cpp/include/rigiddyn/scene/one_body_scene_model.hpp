@@ -1,0 +1,362 @@
+// OneBodySceneModel<Slot, elements>: the scene model (scene_model.hpp) compiled for a scene of one body of the kind
+// Slot (scene/kinds/, at FirstPlace) under the elements `elements` says (OneBodyElements: none; one UniformGravity;
+// at most one UniformGravity and one ScheduledLoads), with fixed-size coordinates.
+//
+// Coordinates y: the body's block (its kind's layout), t [s], then, with loads, the work of the gravity and of the
+// loads [J] (a slot each, zero for the element the scene does not declare) and, for a free body, the impulses J_W (3)
+// [N s] and K_W (3) [N m s]; ξ in the same order. A body held by a pivot or a plane integrates no impulse: the
+// constraint's reaction is an external force whose impulse no model integrates, so its momentum balance is not
+// applicable (and its records carry none).
+// Under uniform gravity alone nothing is integrated but the motion: the work and the impulses are exact from the
+// records (Craig, work of a constant force; impulse–momentum): W = V(t0) − V(t) (the pivot or the plane does no
+// work), J_W = m g (t − t0) and, about W's origin, K_W = p × m v − p0 × m v0 (d(p × m v)/dt = p × m g for one body,
+// and gravity has no moment about its centre of mass), so that the records carry the same balances at the cost of
+// the motion alone.
+// Every member runs the generic model's code in the generic model's order: the same kind slot and the same terms
+// (their one-body form, add_wrench, which their add_wrenches applies to each body). A run on this layout moves the
+// body bitwise as the generic model's run of the same scene does (a test holds it to that, but for the implicit
+// midpoint's convergence test, which takes the norm of a shorter vector), while the fold over kinds, the visits over
+// elements and the body's place in y are resolved at compile time and the kinematics and wrench of an evaluation are
+// locals: the integrator's stages stay in registers.
+#pragma once
+#include "rigiddyn/always_inline.hpp"
+#include "rigiddyn/scene/elements/scheduled_loads.hpp"
+#include "rigiddyn/scene/elements/uniform_gravity.hpp"
+#include "rigiddyn/scene/kinds/kind_list.hpp"
+#include "rigiddyn/scene/scene_simulation.hpp"
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <limits>
+#include <optional>
+#include <tuple>
+#include <type_traits>
+#include <vector>
+
+namespace rigiddyn {
+
+namespace detail {
+
+// The kinds a OneBodySceneModel carries, at the first place (body_slot.hpp FirstPlace)
+using FirstSlots =
+    std::tuple<std::vector<ParticleSlot<FirstPlace>>, std::vector<PlanarSlot<FirstPlace>>,
+               std::vector<RigidSlot<SphericalEuler, FirstPlace>>, std::vector<RigidSlot<PrincipalEuler, FirstPlace>>,
+               std::vector<RigidSlot<FullEuler, FirstPlace>>, std::vector<PivotedSlot<SphericalEuler, FirstPlace>>,
+               std::vector<PivotedSlot<PrincipalEuler, FirstPlace>>, std::vector<PivotedSlot<FullEuler, FirstPlace>>,
+               std::vector<PivotedPlanarSlot<FirstPlace>>>;
+
+// f(the slot of `body` at the first place): its kind's add_slot, of the slot type its inertia chooses
+template <class Kind, class F>
+void with_first_slot(const Kind& body, F&& f) {
+  FirstSlots slots;
+  Eigen::Index y = 0, xi = 0;
+  add_slot(slots, 0, body, y, xi);
+  const auto call = [&](const auto& group) {
+    if constexpr (std::is_same_v<typename std::decay_t<decltype(group)>::value_type::kind, Kind>) {
+      if (!group.empty()) f(group.front());
+    }
+  };
+  std::apply([&](const auto&... group) { (call(group), ...); }, slots);
+}
+
+}  // namespace detail
+
+// The elements of a one-body scene its layout carries
+enum class OneBodyElements {
+  none,               // no element
+  gravity,            // one UniformGravity: its work and impulses exact from the records
+  gravity_and_loads,  // at most one UniformGravity and one ScheduledLoads: their works and impulses integrated
+};
+
+template <class Slot, OneBodyElements elements>
+class OneBodySceneModel {
+  static constexpr bool free_body = !detail::is_constrained<Slot>::value;
+  static constexpr bool loaded = elements != OneBodyElements::none;
+  static constexpr bool exact_gravity = elements == OneBodyElements::gravity;
+  static constexpr int t_y = static_cast<int>(Slot::y_size), t_xi = static_cast<int>(Slot::xi_size);
+  static constexpr bool integrated = elements == OneBodyElements::gravity_and_loads;  // works and impulses in y
+  static constexpr int work_size = integrated ? 2 : 0;  // the gravity's, then the loads'
+  static constexpr int impulse_size = integrated && free_body ? 6 : 0;
+  static constexpr int impulse_y = t_y + 1 + work_size, impulse_xi = t_xi + 1 + work_size;
+
+  // One evaluation's kinematics, wrench and powers [W] (the gravity's, the loads')
+  struct Evaluation {
+    BodyKinematics k;
+    BodyWrench wrench;
+    double power[2] = {0.0, 0.0};
+  };
+
+ public:
+  using Coordinates = Eigen::Matrix<double, impulse_y + impulse_size, 1>;
+  using Tangent = Eigen::Matrix<double, impulse_xi + impulse_size, 1>;
+
+  // The body's slot (detail::with_first_slot) and mass m [kg]; the compiled gravity and loads on it (those `elements`
+  // allows) and their indices among the scene's elements (element_count() of them: those present).
+  OneBodySceneModel(const Slot& slot, double mass, std::optional<UniformGravityTerm> gravity, int gravity_element,
+                    std::optional<ScheduledLoadsTerm> loads, int loads_element)
+      : slot_(slot), mass_(mass), gravity_(std::move(gravity)), loads_(std::move(loads)) {
+    static_assert(!Slot::has_mass_flow, "a body with a mass flow runs on the generic model");
+    if (gravity_) column_[gravity_element] = 0;
+    if (loads_) {
+      column_[loads_element] = 1;
+      const ElementTraits t = loads_->traits();
+      turns_vectors_ = t.reads_attitude || t.has_torque;
+    }
+    element_count_ = (gravity_ ? 1 : 0) + (loads_ ? 1 : 0);
+  }
+
+  static constexpr Eigen::Index coordinate_count() { return Coordinates::RowsAtCompileTime; }
+  static constexpr Eigen::Index tangent_count() { return Tangent::RowsAtCompileTime; }
+  static constexpr Eigen::Index time_index() { return t_y; }
+  static constexpr bool has_mass_flow() { return false; }
+  static constexpr std::size_t body_count() { return 1; }
+  std::size_t element_count() const { return element_count_; }
+
+  // As SceneModel::set_time: the loads of the piece at t [s]
+  void set_time(double t) {
+    step_start_ = t;
+    if (loads_) loads_->set_time(t);
+  }
+
+  // ẏ (SceneModel::rate)
+  RIGIDDYN_ALWAYS_INLINE void rate(const Coordinates& y, Coordinates& dy) const {
+    Evaluation e;
+    evaluate(y, e);
+    slot_.rate(y.data(), clock_at(y), e.k, e.wrench, dy.data());
+    dy[t_y] = 1.0;
+    for (int i = 0; i < work_size; ++i) dy[t_y + 1 + i] = e.power[i];
+    if constexpr (impulse_size > 0) {
+      for (int i = 0; i < 6; ++i) dy[impulse_y + i] = 0.0;
+      add_impulses(e, dy.data() + impulse_y, 1.0);
+    }
+  }
+
+  // the attitude q ← q / |q|
+  RIGIDDYN_ALWAYS_INLINE void project(Coordinates& y) const {
+    slot_.project(y.data());
+    step_start_ = y[t_y];
+  }
+
+  // ξ (SceneModel::velocity)
+  RIGIDDYN_ALWAYS_INLINE void velocity(const Coordinates& y, Tangent& xi) const {
+    Evaluation e;
+    evaluate(y, e);
+    slot_.velocity(y.data(), clock_at(y), e.k, e.wrench, xi.data());
+    xi[t_xi] = 1.0;
+    for (int i = 0; i < work_size; ++i) xi[t_xi + 1 + i] = e.power[i];
+    if constexpr (impulse_size > 0) {
+      for (int i = 0; i < 6; ++i) xi[impulse_xi + i] = 0.0;
+      add_impulses(e, xi.data() + impulse_xi, 1.0);
+    }
+  }
+
+  // y ⊕ Θ
+  RIGIDDYN_ALWAYS_INLINE void retract(const Coordinates& y, const Tangent& theta, Coordinates& out) const {
+    slot_.retract(y.data(), theta.data(), out.data());
+    for (int i = 0; i < 1 + work_size + impulse_size; ++i) out[t_y + i] = y[t_y + i] + theta[t_xi + i];
+  }
+
+  // ξ(y ⊕ Θ)
+  RIGIDDYN_ALWAYS_INLINE void velocity_at(const Coordinates& y, const Tangent& theta, Tangent& xi) const {
+    Coordinates stage;
+    retract(y, theta, stage);
+    velocity(stage, xi);
+  }
+
+  // ω ← dexp⁻¹_{−Θ} ω of the attitude part
+  RIGIDDYN_ALWAYS_INLINE void dexp_inv(const Tangent& theta, Tangent& xi) const { slot_.dexp_inv(theta.data(), xi.data()); }
+
+  // velocities += h × accelerations at y, with the explicit or the implicit gyroscopic term (SceneModel::kick)
+  RIGIDDYN_ALWAYS_INLINE void kick(Coordinates& y, double h) const {
+    kick_with(y, h, [](const auto& euler, const auto& w, const auto& tau, double k) {
+      return euler.explicit_gyroscopic_kick(w, tau, k);
+    });
+  }
+  RIGIDDYN_ALWAYS_INLINE void kick_implicit_gyroscopic(Coordinates& y, double h) const {
+    kick_with(y, h, [](const auto& euler, const auto& w, const auto& tau, double k) {
+      return euler.implicit_gyroscopic_kick(w, tau, k);
+    });
+  }
+
+  // works and impulses at y, then the position and attitude over h, t += h (SceneModel::drift)
+  RIGIDDYN_ALWAYS_INLINE void drift(Coordinates& y, double h) const {
+    Evaluation e;
+    evaluate(y, e);
+    for (int i = 0; i < work_size; ++i) y[t_y + 1 + i] += h * e.power[i];
+    if constexpr (impulse_size > 0) add_impulses(e, y.data() + impulse_y, h);
+    slot_.translate(y.data(), h);
+    slot_.turn(y.data(), h);
+    project(y);
+    y[t_y] += h;
+    step_start_ = y[t_y];
+  }
+
+  // the exact flow of the loads part over h [s] (SceneModel::loads_kick); returns |Δω_B| [rad/s]
+  RIGIDDYN_ALWAYS_INLINE double loads_kick(Coordinates& y, double h) const {
+    Evaluation e;
+    fill_kinematics(y, e.k);
+    BodyWrench parts[2];  // the gravity's and the loads'
+    if constexpr (exact_gravity) {
+      e.wrench.f_W += gravity_->force(mass_);
+    } else if constexpr (loaded) {
+      if (gravity_) gravity_->add_wrench(e.k, parts[0]);
+      if (loads_) loads_->add_wrench(e.k, parts[1]);
+      for (const BodyWrench& part : parts) e.wrench.f_W += part.f_W, e.wrench.tau_B += part.tau_B;
+    }
+    if constexpr (impulse_size > 0) add_impulses(e, y.data() + impulse_y, h);
+    const detail::VelocityKicks<false> kicks(h, Eigen::Vector3d::Zero(), nullptr);
+    const double kicked = slot_.loads_kick(y.data(), e.k, e.wrench, h, kicks);  // e.k then holds the mean velocities
+    for (int i = 0; i < work_size; ++i) {
+      const double work = parts[i].f_W.dot(e.k.v_W) + parts[i].tau_B.dot(e.k.w_B);
+      y[t_y + 1 + i] += h * work;
+    }
+    return kicked;
+  }
+
+  // two loads_kick at the same positions, attitude and t are one (neither element reads the velocities)
+  static constexpr bool kicks_merge() { return true; }
+
+  // the free part over h [s] (SceneModel::free_flow)
+  template <class Rotation>
+  RIGIDDYN_ALWAYS_INLINE void free_flow(Coordinates& y, double h) const {
+    slot_.translate(y.data(), h);
+    slot_.template free_rotation<Rotation>(y.data(), h);
+    y[t_y] += h;
+    step_start_ = y[t_y];
+  }
+
+  // Appends the record of y at time t [s] to `out` (SceneModel::record)
+  void record(const Coordinates& y, double t, SceneSimulation& out) const {
+    Evaluation e;
+    evaluate(y, e, true);
+    const BodyKinematics& k = e.k;
+    out.t.push_back(t);
+    detail::RecordSums sums;
+    Eigen::Vector3d momentum_O_W = Eigen::Vector3d::Zero(), reaction_W = Eigen::Vector3d::Zero();
+    slot_.record(y.data(), k, e.wrench, sums, momentum_O_W, reaction_W);
+    out.p_W.insert(out.p_W.end(), k.p_W.data(), k.p_W.data() + 3);
+    const Eigen::Index q_y = slot_.attitude_y();
+    if (q_y >= 0) {
+      out.q_WB.insert(out.q_WB.end(), y.data() + q_y, y.data() + q_y + 4);  // as integrated
+    } else {
+      out.q_WB.insert(out.q_WB.end(), k.q_WB.coeffs().data(), k.q_WB.coeffs().data() + 4);
+    }
+    out.v_W.insert(out.v_W.end(), k.v_W.data(), k.v_W.data() + 3);
+    out.w_B.insert(out.w_B.end(), k.w_B.data(), k.w_B.data() + 3);
+    out.pivot_reaction_W.insert(out.pivot_reaction_W.end(), reaction_W.data(), reaction_W.data() + 3);
+    out.angular_momentum_O_W.insert(out.angular_momentum_O_W.end(), momentum_O_W.data(), momentum_O_W.data() + 3);
+    out.mass.push_back(k.m);
+    double V = 0.0;  // the gravity's (the loads have no potential)
+    if (gravity_) V += gravity_->potential(k);
+    if constexpr (exact_gravity) {
+      if (out.t.size() == 1) start_ = {t, k.p_W, k.m * k.v_W, V};  // the run's first record is its start
+    }
+    out.kinetic_energy.push_back(sums.T);
+    out.potential_energy.push_back(V);
+    out.total_energy.push_back(sums.T + V);
+    out.linear_momentum_W.insert(out.linear_momentum_W.end(), sums.L_W.data(), sums.L_W.data() + 3);
+    out.angular_momentum_W.insert(out.angular_momentum_W.end(), sums.H_W.data(), sums.H_W.data() + 3);
+    if constexpr (exact_gravity) {
+      out.work.push_back(start_.V - V);
+    } else {
+      for (std::size_t i = 0; i < element_count_; ++i) out.work.push_back(y[t_y + 1 + column_[i]]);
+    }
+    for (std::size_t i = 0; i < element_count_; ++i) out.power.push_back(e.power[column_[i]]);
+    if constexpr (free_body) {  // a free body's impulses (zero without an element)
+      std::array<double, 6> impulses{};
+      if constexpr (impulse_size > 0) std::copy(y.data() + impulse_y, y.data() + impulse_y + 6, impulses.begin());
+      if constexpr (exact_gravity) exact_gravity_impulses(t, k, impulses);
+      out.impulse_W.insert(out.impulse_W.end(), impulses.begin(), impulses.begin() + 3);
+      out.angular_impulse_W.insert(out.angular_impulse_W.end(), impulses.begin() + 3, impulses.end());
+    }
+  }
+
+  // y of the body's state (of its kind, checked by the caller) at time t [s], works and impulses 0
+  Coordinates coordinates(const std::vector<BodyState>& states, double t) const {
+    Coordinates y = Coordinates::Zero();
+    slot_.coordinates(states[0], y.data());
+    y[t_y] = t;
+    step_start_ = t;
+    return y;
+  }
+
+  // the body's state in y (its attitude as integrated)
+  std::vector<BodyState> states(const Coordinates& y) const { return {slot_.state(y.data())}; }
+
+ private:
+  detail::StepClock clock_at(const Coordinates& y) const { return {y[t_y], step_start_}; }
+
+  // k from y as the elements see the body (SceneModel::fill_kinematics), with R_WB when the loads turn vectors:
+  // nothing without an element where the kind's rate reads y alone, the attitude only where the loads or the kind
+  // read it; all of it for a record (`all`)
+  RIGIDDYN_ALWAYS_INLINE void fill_kinematics(const Coordinates& y, BodyKinematics& k, bool all = false) const {
+    k.m = mass_;
+    if constexpr ((!loaded || exact_gravity) && !detail::reads_kinematics<Slot>::value) {
+      if (!all) return;
+    }
+    if constexpr (detail::has_motion_kinematics<Slot>::value) {
+      if (!all && !turns_vectors_) return slot_.motion_kinematics(y.data(), clock_at(y), k);
+    }
+    slot_.kinematics(y.data(), clock_at(y), k);
+    if (turns_vectors_) k.R_WB = k.q_WB.toRotationMatrix();
+  }
+
+  // e.k at y, e.wrench the sum of the elements' wrenches, e.power their powers (SceneModel::evaluate); exact gravity
+  // alone needs neither the kinematics nor the power but in a record (`all`)
+  RIGIDDYN_ALWAYS_INLINE void evaluate(const Coordinates& y, Evaluation& e, bool all = false) const {
+    fill_kinematics(y, e.k, all);
+    if constexpr (exact_gravity) {
+      if (!all) {
+        e.wrench.f_W += gravity_->force(mass_);
+        return;
+      }
+    }
+    if constexpr (loaded) {
+      if (gravity_) e.power[0] = 0.0 + gravity_->add_wrench(e.k, e.wrench);  // 0 + P: the sum add_wrenches takes
+      if (loads_) e.power[1] = loads_->add_wrench(e.k, e.wrench);
+    }
+  }
+
+  // J_W = m g (t − t0) [N s] and K_W = p × m v − p0 × m v0 [N m s] of exact gravity alone at the record of time t [s]
+  // and kinematics k (the top of this file)
+  void exact_gravity_impulses(double t, const BodyKinematics& k, std::array<double, 6>& impulses) const {
+    const Eigen::Vector3d J = (t - start_.t) * gravity_->force(mass_);
+    const Eigen::Vector3d K = cross_3(k.p_W, k.m * k.v_W) - cross_3(start_.p_W, start_.L_W);
+    for (int i = 0; i < 3; ++i) impulses[i] = J[i], impulses[3 + i] = K[i];
+  }
+
+  // out[0..2] += h f [N], out[3..5] += h (p × f + R_WB τ_B) [N m] (SceneModel::add_impulses)
+  RIGIDDYN_ALWAYS_INLINE void add_impulses(const Evaluation& e, double* out, double h) const {
+    Eigen::Vector3d M_W = cross_3(e.k.p_W, e.wrench.f_W);
+    if (turns_vectors_) M_W += e.k.R_WB * e.wrench.tau_B;
+    for (int i = 0; i < 3; ++i) out[i] += h * e.wrench.f_W[i], out[3 + i] += h * M_W[i];
+  }
+
+  template <class GyroscopicKick>
+  RIGIDDYN_ALWAYS_INLINE void kick_with(Coordinates& y, double h, GyroscopicKick&& gyroscopic_kick) const {
+    Evaluation e;
+    evaluate(y, e);
+    slot_.kick(y.data(), e.k, e.wrench, h, gyroscopic_kick);
+  }
+
+  Slot slot_;
+  double mass_;
+  std::optional<UniformGravityTerm> gravity_;
+  std::optional<ScheduledLoadsTerm> loads_;
+  std::array<int, 2> column_{};     // column_[e]: where element e's work is among the two (0 gravity, 1 loads)
+  std::size_t element_count_ = 0;
+  bool turns_vectors_ = false;      // the loads read the attitude or give a torque: the kinematics carry R_WB
+  mutable double step_start_ = std::numeric_limits<double>::quiet_NaN();
+  // the run's start (its first record) under exact gravity: t0 [s], p0 [m], m v0 [kg m/s], V(t0) [J]
+  struct Start {
+    double t = 0.0;
+    Eigen::Vector3d p_W = Eigen::Vector3d::Zero(), L_W = Eigen::Vector3d::Zero();
+    double V = 0.0;
+  };
+  mutable Start start_;
+};
+
+}  // namespace rigiddyn

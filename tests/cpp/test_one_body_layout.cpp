@@ -1,0 +1,190 @@
+// The one-body layout of the scene model (scene/one_body_scene_model.hpp): a scene of one particle, planar body, rigid
+// body (each Euler form) or pinned planar body under at most one UniformGravity and one ScheduledLoads runs on it,
+// and moves its body bitwise as the generic scene model does, for every method but 'exact' (the closed form) and
+// every element set in either order. The implicit midpoint is held to its solver's tolerance instead: its
+// convergence test takes the norm of the layout's shorter coordinates. Under gravity alone the work and the impulses
+// are exact from the records: V(t0) − V(t) and, for a free body, m g (t − t0) and Δ(p × m v), which the generic
+// model's integrals of a free or planar body's translation match to their rounding.
+#include <gtest/gtest.h>
+
+#include "rigiddyn/integrators/implicit_midpoint.hpp"
+#include "rigiddyn/scene/simulate_scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace rigiddyn {
+namespace {
+
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+struct Case {
+  std::string name;
+  Body body;
+  BodyState state;
+  AppliedLoad load;      // the ScheduledLoads' load (on for part of the run: its switches split steps)
+  Eigen::Vector3d g_W;   // the UniformGravity's
+};
+
+AppliedLoad load_of(const Eigen::Vector3d& force, const Eigen::Vector3d& torque, Frame frame) {
+  AppliedLoad load{force, torque, frame};
+  load.t_start = 0.0125, load.t_end = 0.5037;
+  return load;
+}
+
+std::vector<Case> cases() {
+  RigidBodyState tumbling;
+  tumbling.p_W = Eigen::Vector3d(0.5, -1.0, 2.0);
+  tumbling.q_WB = Eigen::Quaterniond(Eigen::AngleAxisd(0.4, Eigen::Vector3d(1.0, -1.0, 2.0).normalized()));
+  tumbling.v_W = Eigen::Vector3d(0.2, 0.0, -0.1);
+  tumbling.w_B = Eigen::Vector3d(0.3, 1.0, 0.2);
+  Eigen::Matrix3d full;
+  full << 2.0, 0.1, -0.2, 0.1, 3.0, 0.3, -0.2, 0.3, 4.0;
+  const AppliedLoad turning = load_of(Eigen::Vector3d(0.1, -0.3, 0.2), Eigen::Vector3d(0.3, -0.2, 0.4), Frame::body);
+  const AppliedLoad in_plane = load_of(Eigen::Vector3d(0.2, 0.1, 0.0), Eigen::Vector3d(0.0, 0.0, 0.3), Frame::body);
+  const Eigen::Vector3d down(0.0, 0.0, -9.81), plane_down(0.0, -9.81, -1.0);
+  return {
+      {"particle", Particle(0.5), ParticleState{Eigen::Vector3d(1.0, 2.0, 3.0), Eigen::Vector3d(0.5, 0.0, 2.0)},
+       load_of(Eigen::Vector3d(0.3, -0.1, 0.2), Eigen::Vector3d::Zero(), Frame::world), down},
+      {"planar", PlanarBody(1.0, 0.3), PlanarBodyState{Eigen::Vector2d(0.1, 0.2), 0.3, Eigen::Vector2d(1.0, 0.0), 0.5},
+       in_plane, plane_down},
+      {"spherical", RigidBody(2.0, Eigen::Vector3d(1.0, 1.0, 1.0)), tumbling, turning, down},
+      {"principal", RigidBody(2.0, Eigen::Vector3d(1.0, 2.0, 3.0)), tumbling, turning, down},
+      {"full", RigidBody(2.0, full), tumbling, turning, down},
+      {"pinned planar", PivotedPlanarBody(1.0, 0.1, Eigen::Vector2d(0.1, -0.5)), PivotedPlanarBodyState{0.5, 1.0}, in_plane,
+       Eigen::Vector3d(0.0, -9.81, 0.0)},
+  };
+}
+
+// The elements of the scene: bit 0 a UniformGravity, bit 1 a ScheduledLoads, bit 2 the loads first
+std::vector<Element> elements_of(const Case& c, int set) {
+  std::vector<Element> out;
+  if (set & 1) out.push_back(UniformGravity{c.g_W, {}});
+  if (set & 2) out.push_back(ScheduledLoads{0, {c.load}, Eigen::Vector3d::Zero()});
+  if (set & 4) std::reverse(out.begin(), out.end());
+  return out;
+}
+
+// max |x| over the records of a column (at least the smallest normal number)
+double largest(const std::vector<double>& x) {
+  double m = std::numeric_limits<double>::min();
+  for (const double v : x) m = std::max(m, std::abs(v));
+  return m;
+}
+
+void expect_near_columns(const std::vector<double>& layout, const std::vector<double>& generic, double bound, const char* what) {
+  ASSERT_EQ(layout.size(), generic.size()) << what;
+  for (std::size_t i = 0; i < layout.size(); ++i) EXPECT_NEAR(layout[i], generic[i], bound) << what << "[" << i << "]";
+}
+
+TEST(OneBodyLayout, MovesTheBodyBitwiseAsTheGenericModel) {
+  for (const Case& c : cases()) {
+    for (const int set : {0, 1, 2, 3, 7}) {
+      for (const MethodInfo& info : method_table()) {
+        if (info.method == Method::exact) continue;  // the closed form (test_scene_simulate.cpp)
+        SCOPED_TRACE(c.name + ", elements " + std::to_string(set) + ", " + info.name);
+        Scene scene;
+        scene.bodies = {c.body};
+        scene.elements = elements_of(c, set);
+        SimulationOptions o;
+        o.method = info.method, o.dt = 0.01, o.steps = 100, o.record_every = 3;
+        const CompiledScene compiled = compile_scene(scene, info.method);
+        ASSERT_EQ(compiled.path(), ScenePath::one_body);
+        const SceneSimulation layout = simulate(compiled, {c.state}, o);
+        const SceneModel& model = compiled.model();
+        const SceneSimulation generic =
+            detail::run_generic_scene(model, model.coordinates({c.state}, o.t0), o, compiled.switch_schedule(), nullptr);
+        ASSERT_EQ(layout.size(), generic.size());
+        // the implicit midpoint: two solves of one fixed point, each to the solver's tolerance relative to the
+        // state, differ by at most 2 × tolerance × |y| a step; over 100 steps of this short run (its flow does not
+        // amplify a difference tenfold in 1 s), 100 × 2 × tolerance × |y| × 10
+        const bool midpoint = info.method == Method::implicit_midpoint;
+        const auto expect_column = [&](const std::vector<double>& a, const std::vector<double>& b, const char* what) {
+          if (!midpoint) {
+            EXPECT_EQ(a, b) << what;
+            return;
+          }
+          expect_near_columns(a, b, 2000.0 * implicit_midpoint_solver::tolerance * (1.0 + largest(b)), what);
+        };
+        for (const auto column : {&SceneSimulation::t, &SceneSimulation::p_W, &SceneSimulation::q_WB, &SceneSimulation::v_W,
+                                  &SceneSimulation::w_B, &SceneSimulation::kinetic_energy, &SceneSimulation::potential_energy,
+                                  &SceneSimulation::total_energy, &SceneSimulation::linear_momentum_W,
+                                  &SceneSimulation::angular_momentum_W, &SceneSimulation::pivot_reaction_W,
+                                  &SceneSimulation::angular_momentum_O_W, &SceneSimulation::mass, &SceneSimulation::power}) {
+          expect_column(layout.*column, generic.*column, "a column");
+        }
+        const bool constrained = std::holds_alternative<PlanarBody>(c.body) || std::holds_alternative<PivotedPlanarBody>(c.body);
+        const bool exact_gravity = set == 1;
+        const bool pinned = std::holds_alternative<PivotedPlanarBody>(c.body);
+        if (!exact_gravity) {
+          expect_column(layout.work, generic.work, "work");
+        } else if (pinned) {
+          // gravity's work is V(t0) − V(t) (the pivot does none), where the generic model integrates m g·v_C with
+          // the method's error: W + V = V(t0) to the rounding of one difference, 2 ε max|V|
+          ASSERT_EQ(layout.work.size(), layout.size());
+          for (std::size_t r = 0; r < layout.size(); ++r) {
+            EXPECT_NEAR(layout.work[r] + layout.potential_energy[r], layout.potential_energy[0],
+                        4.0 * kEps * largest(layout.potential_energy));
+          }
+        } else {
+          // the generic model's work telescopes to m g·(p − p0) in every method (each step adds h m g·v̄ where the
+          // position moves by h v̄); the sum of its 100 increments rounds by at most 100 ε Σ|increment| ≤
+          // 100 ε m |g| max|v| t, and V(t0) − V(t) by a few ε |V|
+          const double m = mass_of(c.body), t = o.dt * static_cast<double>(o.steps);
+          const double bound = 100.0 * kEps * m * c.g_W.norm() * (1.0 + largest(generic.v_W)) * t +
+                               8.0 * kEps * largest(generic.potential_energy);
+          expect_near_columns(layout.work, generic.work, midpoint ? 1e-10 * (1.0 + largest(generic.work)) + bound : bound, "work");
+        }
+        if (constrained) {
+          EXPECT_TRUE(layout.impulse_W.empty());  // its momentum balance is not applicable
+          EXPECT_TRUE(layout.angular_impulse_W.empty());
+        } else if (!exact_gravity) {
+          expect_column(layout.impulse_W, generic.impulse_W, "impulse_W");
+          expect_column(layout.angular_impulse_W, generic.angular_impulse_W, "angular_impulse_W");
+        } else {
+          // J = m g (t − t0) against the sum of its 100 h m g: 100 ε |J|; K = Δ(p × m v) against the sum of
+          // h p × m g, which telescopes as the work does: 100 ε m |g| max|p| t plus the rounding of the differences
+          const double m = mass_of(c.body), t = o.dt * static_cast<double>(o.steps);
+          const double J = 100.0 * kEps * largest(generic.impulse_W) * 3.0;
+          const double K = 100.0 * kEps * m * c.g_W.norm() * (1.0 + largest(generic.p_W)) * t * 3.0 +
+                           8.0 * kEps * largest(generic.angular_momentum_W);
+          const double slack = midpoint ? 1e-10 * (1.0 + largest(generic.angular_impulse_W)) : 0.0;
+          // explicit Euler's K adds h p_n × m g a step while Δ(p × m v) adds h p_n × m g + h² v_n × m g (its
+          // positions move by h v_n): they part by at most steps h² m |g| max|v|
+          const double lag = info.method == Method::explicit_euler
+                                 ? static_cast<double>(o.steps) * o.dt * o.dt * m * c.g_W.norm() * largest(generic.v_W) * 2.0
+                                 : 0.0;
+          expect_near_columns(layout.impulse_W, generic.impulse_W, J + slack, "impulse_W");
+          expect_near_columns(layout.angular_impulse_W, generic.angular_impulse_W, K + slack + lag, "angular_impulse_W");
+        }
+        EXPECT_EQ(layout.diverged, generic.diverged);
+        EXPECT_EQ(layout.unconverged_steps, generic.unconverged_steps);
+      }
+    }
+  }
+}
+
+// A scene the layout does not carry takes the generic model (or a fast one): two bodies, a third element, a frame.
+TEST(OneBodyLayout, OnlyItsScenes) {
+  Scene two;
+  two.bodies = {Particle(1.0), Particle(2.0)};
+  EXPECT_EQ(compile_scene(two, Method::rk4).path(), ScenePath::generic);
+  Scene drag;
+  drag.bodies = {RigidBody(1.0, Eigen::Vector3d(1.0, 2.0, 3.0))};
+  drag.elements = {UniformGravity{}, Drag{}};
+  EXPECT_EQ(compile_scene(drag, Method::rk4).path(), ScenePath::generic);
+  Scene gravity_twice;
+  gravity_twice.bodies = {Particle(1.0)};
+  gravity_twice.elements = {UniformGravity{}, UniformGravity{}};
+  EXPECT_EQ(compile_scene(gravity_twice, Method::rk4).path(), ScenePath::generic);
+  Scene pivoted;
+  pivoted.bodies = {PivotedBody(RigidBody(1.0, Eigen::Vector3d(1.0, 1.0, 0.5)), Eigen::Vector3d(0.0, 0.0, 0.3))};
+  pivoted.elements = {UniformGravity{}};
+  EXPECT_EQ(compile_scene(pivoted, Method::rk4).path(), ScenePath::pivoted_body);
+}
+
+}  // namespace
+}  // namespace rigiddyn
