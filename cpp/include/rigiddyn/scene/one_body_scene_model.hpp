@@ -32,6 +32,7 @@
 #include <cstddef>
 #include <limits>
 #include <optional>
+#include <stdexcept>
 #include <tuple>
 #include <type_traits>
 #include <vector>
@@ -99,6 +100,9 @@ class OneBodySceneModel {
                     std::optional<ScheduledLoadsTerm> loads, int loads_element)
       : slot_(slot), mass_(mass), gravity_(std::move(gravity)), loads_(std::move(loads)) {
     static_assert(!Slot::has_mass_flow, "a body with a mass flow runs on the generic model");
+    if ((exact_gravity && (!gravity_ || loads_)) || (!loaded && (gravity_ || loads_))) {
+      throw std::logic_error("a one-body layout given other elements than its own");
+    }
     if (gravity_) column_[gravity_element] = 0;
     if (loads_) {
       column_[loads_element] = 1;
@@ -159,9 +163,17 @@ class OneBodySceneModel {
     for (int i = 0; i < 1 + work_size + impulse_size; ++i) out[t_y + i] = y[t_y + i] + theta[t_xi + i];
   }
 
-  // ξ(y ⊕ Θ)
+  // ξ(y ⊕ Θ); the stage's attitude is skipped where neither the kind's velocity nor a term reads it (as the
+  // one-body models do: ξ is the same)
   RIGIDDYN_ALWAYS_INLINE void velocity_at(const Coordinates& y, const Tangent& theta, Tangent& xi) const {
     Coordinates stage;
+    if constexpr (detail::has_retract_motion<Slot>::value && !detail::reads_kinematics<Slot>::value) {
+      if (!turns_vectors_) {
+        slot_.retract_motion(y.data(), theta.data(), stage.data());
+        for (int i = 0; i < 1 + work_size + impulse_size; ++i) stage[t_y + i] = y[t_y + i] + theta[t_xi + i];
+        return velocity(stage, xi);
+      }
+    }
     retract(y, theta, stage);
     velocity(stage, xi);
   }

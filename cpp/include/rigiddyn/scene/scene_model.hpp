@@ -435,7 +435,7 @@ class BasicSceneModel {
   // Appends the record of y at time t [s] to `out` (scene_simulation.hpp): the bodies, energies,
   // momenta, each element's work and power, and (when a body has a MassFlow) each body's mass-flow energy.
   void record(const Coordinates& y, double t, SceneSimulation& out) const {
-    evaluate(y);
+    evaluate(y, true);
     out.t.push_back(t);
     detail::RecordSums sums;
     for_each_slot([&](const auto& s) {
@@ -716,11 +716,16 @@ class BasicSceneModel {
   }
 
   // kinematics_ from y as elements see them (body_kinematics.hpp; attitudes normalised), with each attitude's
-  // R_WB when a term needs it (turns_vectors_)
-  void fill_kinematics(const Coordinates& y) const {
+  // R_WB when a term needs it (turns_vectors_); without the attitudes (motion_kinematics) where no term and no exact
+  // Coriolis kick reads one, all of them for a record (`all`)
+  void fill_kinematics(const Coordinates& y, bool all = false) const {
     const detail::StepClock clock = clock_at(y);
+    const bool attitudes = all || turns_vectors_ || !coriolis_terms_.empty();
     for_each_slot([&](const auto& s) {
       BodyKinematics& k = kinematics_[s.body];
+      if constexpr (detail::has_motion_kinematics<std::decay_t<decltype(s)>>::value) {
+        if (!attitudes) return s.motion_kinematics(y.data(), clock, k);
+      }
       s.kinematics(y.data(), clock, k);
       if constexpr (!detail::sets_rotation_matrices<std::decay_t<decltype(s)>>::value) {
         if (turns_vectors_) k.R_WB = k.q_WB.toRotationMatrix();
@@ -728,9 +733,10 @@ class BasicSceneModel {
     });
   }
 
-  // kinematics_ at y, wrenches_ = Σ of every element's wrenches, power_[e] = element e's power
-  void evaluate(const Coordinates& y) const {
-    fill_kinematics(y);
+  // kinematics_ at y, wrenches_ = Σ of every element's wrenches, power_[e] = element e's power (`all`: every
+  // attitude in the kinematics, for a record)
+  void evaluate(const Coordinates& y, bool all = false) const {
+    fill_kinematics(y, all);
     for (BodyWrench& w : wrenches_) w.f_W.setZero(), w.tau_B.setZero();
     const double t = y[t_y_];
     for (std::size_t e = 0; e < terms_.size(); ++e) {

@@ -20,10 +20,11 @@
 // and has_mass_flow (a kind whose mass is a coordinate: scene/kinds/mass_*_slot.hpp add the mass part). Two members
 // are optional: set_time(t) (a kind with piecewise-constant inputs, set at each piece of a run, as the elements')
 // and record_internal(y, out) (a kind with coordinates of its own beyond the body's motion: the gyrostat's wheel
-// speeds). Three more let a model skip what nothing needs (OneBodySceneModel, scene/one_body_scene_model.hpp):
+// speeds). Four more let a model skip what nothing needs (OneBodySceneModel, scene/one_body_scene_model.hpp):
 // constrained = true (a kind held by a pivot or a plane, whose reaction is an external force), reads_kinematics =
-// false (a kind whose rate, velocity and kick read y and the wrench, never the kinematics) and motion_kinematics(y,
-// clock, k) (the kinematics but the attitude q_WB, for an evaluation in which no term reads it).
+// false (a kind whose rate, velocity and kick read y and the wrench, never the kinematics), motion_kinematics(y,
+// clock, k) (the kinematics but the attitude q_WB, for an evaluation in which no term reads it) and
+// retract_motion(y, θ, out) (retract but the attitude, for a stage whose velocity reads none).
 // A slot's place (SlotPlace: its body's index and its offsets in y and ξ) is its base class: FirstPlace, known at
 // compile time, for the one body of a OneBodySceneModel (the kinds that template on it: Place).
 // The pointers y, dy, ξ, θ are the whole vectors; a slot reads its own block at at_y / at_xi. A slot may span
@@ -97,6 +98,14 @@ template <class Slot, class = void>
 struct is_constrained : std::false_type {};
 template <class Slot>
 struct is_constrained<Slot, std::enable_if_t<Slot::constrained>> : std::true_type {};
+
+// Whether a kind retracts without its attitude (retract_motion)
+template <class Slot, class = void>
+struct has_retract_motion : std::false_type {};
+template <class Slot>
+struct has_retract_motion<Slot, std::void_t<decltype(std::declval<const Slot&>().retract_motion(
+                                    static_cast<const double*>(nullptr), static_cast<const double*>(nullptr),
+                                    static_cast<double*>(nullptr)))>> : std::true_type {};
 
 // Whether a kind fills its kinematics without the attitude (motion_kinematics)
 template <class Slot, class = void>

@@ -86,8 +86,12 @@ struct RigidSlot : Place, SpatialLayout {
     for (int i = 0; i < 3; ++i) u[xi_v + i] = x[v + i], u[xi_w + i] = w_B[i], u[xi_a + i] = a[i], u[xi_a + 3 + i] = alpha[i];
   }
   void retract(const double* y, const double* theta, double* out) const {
-    for (int i = 0; i < 3; ++i) out[at_y + p + i] = y[at_y + p + i] + theta[at_xi + xi_v + i];
+    retract_motion(y, theta, out);
     times_exp(y + at_y + q, three(theta + at_xi + xi_w), out + at_y + q);
+  }
+  // retract but the attitude, left as it was in out: for a stage whose rate reads no attitude (RKMK4's)
+  void retract_motion(const double* y, const double* theta, double* out) const {
+    for (int i = 0; i < 3; ++i) out[at_y + p + i] = y[at_y + p + i] + theta[at_xi + xi_v + i];
     for (int i = 0; i < 6; ++i) out[at_y + v + i] = y[at_y + v + i] + theta[at_xi + xi_a + i];
   }
   void dexp_inv(const double* theta, double* xi) const { dexp_inv_body(theta + at_xi + xi_w, xi + at_xi + xi_w); }

@@ -1,0 +1,150 @@
+// One body as a scene, performance: the scene model's one-body layout (scene/one_body_scene_model.hpp, through
+// simulate(scene, ...)) against the one-body model of simulate(body, ...) with the same gravity and loads, for each
+// method, a particle and a rigid body (principal inertia), with no element, under gravity alone, and under gravity
+// and a body-frame force and torque switched on for part of the run. Both through the public entries, the run's
+// records every 1000th step.
+//   one_body_<kind>_<elements>_<method>   the layout's run over the one-body model's run
+//   one_body_top_gravity_<method>        a heavy top: the layout it would take over the fast model it takes
+// The layout carries t and, with loads, a work per element and the six impulses (the momentum balance reads them);
+// the one-body model carries one work. ctest runs it with RIGIDDYN_BENCH_SMALL=1 (fewer steps).
+#include <benchmark/benchmark.h>
+
+#include "bench_common.hpp"
+#include "rigiddyn/scene/one_body_scene_model.hpp"
+#include "rigiddyn/scene/simulate_scene.hpp"
+
+#include <optional>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace {
+
+using namespace rigiddyn;
+
+std::int64_t steps() { return bench::bench_size(100000, 2000); }
+
+const Eigen::Vector3d kG(0.0, 0.0, -9.81);
+
+AppliedLoad push() {
+  AppliedLoad load{Eigen::Vector3d(0.1, -0.3, 0.2), Eigen::Vector3d(0.3, -0.2, 0.4), Frame::body};
+  load.t_end = 0.5;
+  return load;
+}
+
+struct BodyCase {
+  const char* name;
+  Body body;
+  BodyState state;
+};
+
+std::vector<BodyCase> bodies() {
+  RigidBodyState tumbling;
+  tumbling.v_W = Eigen::Vector3d(1.0, 0.0, 0.0), tumbling.w_B = Eigen::Vector3d(0.1, 2.0, 0.1);
+  return {{"particle", Particle(2.0), ParticleState{Eigen::Vector3d::Zero(), Eigen::Vector3d(1.0, 2.0, 3.0)}},
+          {"rigid", RigidBody(1.0, Eigen::Vector3d(1.0, 2.0, 3.0)), tumbling}};
+}
+
+enum class Elements { none, gravity, gravity_and_loads };
+const char* name_of(Elements e) {
+  return e == Elements::none ? "none" : e == Elements::gravity ? "gravity" : "gravity_and_loads";
+}
+
+SimulationOptions options(Method method) {
+  SimulationOptions o;
+  o.method = method, o.dt = 1e-3, o.steps = steps(), o.record_every = 1000;
+  return o;
+}
+
+void layout_run(benchmark::State& state, const BodyCase& c, Elements elements, Method method) {
+  Scene scene;
+  scene.bodies = {c.body};
+  if (elements != Elements::none) scene.elements.push_back(UniformGravity{kG, {}});
+  const bool loads = elements == Elements::gravity_and_loads && !std::holds_alternative<Particle>(c.body);
+  if (loads) scene.elements.push_back(ScheduledLoads{0, {push()}, Eigen::Vector3d::Zero()});
+  const CompiledScene compiled = compile_scene(scene, method);
+  const SimulationOptions o = options(method);
+  for (auto _ : state) benchmark::DoNotOptimize(simulate(compiled, {c.state}, o));
+  state.SetItemsProcessed(state.iterations() * o.steps);
+}
+
+void body_run(benchmark::State& state, const BodyCase& c, Elements elements, Method method) {
+  SimulationOptions o = options(method);
+  if (elements != Elements::none) o.gravity_W = kG;
+  if (elements == Elements::gravity_and_loads && !std::holds_alternative<Particle>(c.body)) o.loads = {push()};
+  for (auto _ : state) {
+    if (const auto* p = std::get_if<Particle>(&c.body)) {
+      benchmark::DoNotOptimize(simulate(*p, std::get<ParticleState>(c.state), o));
+    } else {
+      benchmark::DoNotOptimize(simulate(std::get<RigidBody>(c.body), std::get<RigidBodyState>(c.state), o));
+    }
+  }
+  state.SetItemsProcessed(state.iterations() * o.steps);
+}
+
+// The heavy top (a PivotedBody under gravity), which compile gives its fast model: the layout it would take, run
+// directly (run_scene), over the scene's run on the fast model
+PivotedBody top() { return PivotedBody(RigidBody(1.0, Eigen::Vector3d(0.05, 0.05, 0.08)), Eigen::Vector3d(0.0, 0.0, 0.2)); }
+PivotedBodyState top_state() {
+  PivotedBodyState s;
+  s.q_WB = Eigen::Quaterniond(Eigen::AngleAxisd(0.5, Eigen::Vector3d::UnitX()));
+  s.w_B = Eigen::Vector3d(0.5, 0.0, 12.0);
+  return s;
+}
+Scene top_scene() {
+  Scene scene;
+  scene.bodies = {top()};
+  scene.elements = {UniformGravity{kG, {}}};
+  return scene;
+}
+
+void top_layout(benchmark::State& state, Method method) {
+  const Scene scene = top_scene();
+  const CompiledScene compiled = compile_scene(scene, method);
+  const SimulationOptions o = options(method);
+  const auto& gravity = std::get<UniformGravityTerm>(compiled.model().terms()[0]);
+  detail::with_first_slot(top(), [&](const auto& slot) {
+    using Slot = std::decay_t<decltype(slot)>;
+    const OneBodySceneModel<Slot, OneBodyElements::gravity> model(slot, 1.0, gravity, 0, std::nullopt, -1);
+    for (auto _ : state) {
+      benchmark::DoNotOptimize(detail::run_scene(model, model.coordinates({top_state()}, o.t0), o, {}));
+    }
+  });
+  state.SetItemsProcessed(state.iterations() * o.steps);
+}
+
+void top_fast(benchmark::State& state, Method method) {
+  const CompiledScene compiled = compile_scene(top_scene(), method);
+  const SimulationOptions o = options(method);
+  for (auto _ : state) benchmark::DoNotOptimize(simulate(compiled, {top_state()}, o));
+  state.SetItemsProcessed(state.iterations() * o.steps);
+}
+
+const Method methods[] = {Method::rk4, Method::rkmk4, Method::splitting_dlm, Method::splitting_dlm_yoshida4,
+                          Method::semi_implicit_euler, Method::implicit_midpoint};
+
+bool register_cases() {
+  for (const BodyCase& c : bodies()) {
+    for (const Elements e : {Elements::none, Elements::gravity, Elements::gravity_and_loads}) {
+      if (e == Elements::gravity_and_loads && std::holds_alternative<Particle>(c.body)) continue;  // no torque on a point
+      for (const Method m : methods) {
+        const std::string name = std::string("one_body_") + c.name + "_" + name_of(e) + "_" + method_info(m).name;
+        benchmark::RegisterBenchmark((name + ":rigiddyn").c_str(), [c, e, m](benchmark::State& s) { layout_run(s, c, e, m); })
+            ->Unit(benchmark::kMillisecond);
+        benchmark::RegisterBenchmark((name + ":baseline").c_str(), [c, e, m](benchmark::State& s) { body_run(s, c, e, m); })
+            ->Unit(benchmark::kMillisecond);
+      }
+    }
+  }
+  for (const Method m : methods) {
+    const std::string name = std::string("one_body_top_gravity_") + method_info(m).name;
+    benchmark::RegisterBenchmark((name + ":rigiddyn").c_str(), [m](benchmark::State& s) { top_layout(s, m); })
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark((name + ":baseline").c_str(), [m](benchmark::State& s) { top_fast(s, m); })
+        ->Unit(benchmark::kMillisecond);
+  }
+  return true;
+}
+const bool registered = register_cases();
+
+}  // namespace

@@ -1,0 +1,13 @@
+// The runs of the one-body layouts of a rigid body of the principal Euler form (simulate/run_one_body.hpp; one
+// translation unit per form: the compiler inlines each layout's steps whole).
+#include "run_one_body.hpp"
+
+namespace rigiddyn {
+
+using Rigid1 = detail::RigidSlot<PrincipalEuler, detail::FirstPlace>;
+
+RIGIDDYN_RUN_ONE_BODY(Rigid1, none)
+RIGIDDYN_RUN_ONE_BODY(Rigid1, gravity)
+RIGIDDYN_RUN_ONE_BODY(Rigid1, gravity_and_loads)
+
+}  // namespace rigiddyn
