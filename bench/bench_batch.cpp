@@ -128,12 +128,6 @@ RIGIDDYN_ALWAYS_INLINE void hand_rk4_step(const HandBody& b, double* y, double h
   for (int i = 3; i < 7; ++i) y[i] *= inverse_norm;
 }
 
-#if defined(__GNUC__) || defined(__clang__)
-#define BENCH_NOINLINE __attribute__((noinline))
-#else
-#define BENCH_NOINLINE
-#endif
-
 // Samples [begin, end): n steps each on a local y, the final y written once into out (13 per sample).
 BENCH_NOINLINE void hand_rk4_samples(const HandBody& b, const std::vector<RigidBodyState>& initial, std::size_t begin,
                                      std::size_t end, std::int64_t n, double h, double* out) {

@@ -9,6 +9,13 @@
 #include <cstdlib>
 #include <cstdint>
 
+// A function the compiler must not inline: a measured loop, so that callgrind's counts name it
+#if defined(__GNUC__) || defined(__clang__)
+#define BENCH_NOINLINE __attribute__((noinline))
+#else
+#define BENCH_NOINLINE
+#endif
+
 namespace rigiddyn::bench {
 
 // The problem size to use: `full` when run by hand, `small` when ctest runs the benchmark

@@ -50,10 +50,8 @@ T at_run_time(T value) {
 
 #if defined(__GNUC__) || defined(__clang__)
 #define BASELINE_INLINE_LAMBDA __attribute__((always_inline))
-#define BENCH_NOINLINE __attribute__((noinline))
 #else
 #define BASELINE_INLINE_LAMBDA
-#define BENCH_NOINLINE
 #endif
 
 // ---- the hand loops ------------------------------------------------------------------------------------

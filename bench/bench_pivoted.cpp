@@ -23,12 +23,6 @@
 #include <cmath>
 #include <cstdint>
 
-#if defined(__GNUC__) || defined(__clang__)
-#define BENCH_NOINLINE __attribute__((noinline))
-#else
-#define BENCH_NOINLINE
-#endif
-
 namespace {
 
 using namespace rigiddyn;

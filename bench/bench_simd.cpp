@@ -36,12 +36,6 @@ std::int64_t samples() { return bench::bench_size(10000, 256); }
 std::int64_t steps() { return bench::bench_size(1000, 100); }
 constexpr double dt = 1e-3;  // [s]
 
-#if defined(__GNUC__) || defined(__clang__)
-#define BENCH_NOINLINE __attribute__((noinline))
-#else
-#define BENCH_NOINLINE
-#endif
-
 // n tumbling bodies: per-sample full inertias (principal moments about 1.2, 2, 2.8 kg m² about turned axes),
 // attitudes and rates of a few rad/s; forced: gravity, a force in W and a torque in B per sample.
 struct Problem {

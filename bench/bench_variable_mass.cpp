@@ -50,12 +50,6 @@ VariableMassParticleModel model_of(const Rocket& r) {
   return VariableMassParticleModel(Particle(r.m0), flow, thrust, 1, r.g, 0, 2);
 }
 
-#if defined(__GNUC__) || defined(__clang__)
-#define BENCH_NOINLINE __attribute__((noinline))
-#else
-#define BENCH_NOINLINE
-#endif
-
 // n RK4 steps of the model, as the run loop (simulate/run_loop.hpp) takes them, without records: on its
 // own copies of the model and of y (a y reached through a reference may alias the model's parameters, and
 // the compiler then reloads them after every store: 1.3× slower here)

@@ -130,12 +130,7 @@ class OneBodySceneModel {
     Evaluation e;
     evaluate(y, e);
     slot_.rate(y.data(), clock_at(y), e.k, e.wrench, dy.data());
-    dy[t_y] = 1.0;
-    for (int i = 0; i < work_size; ++i) dy[t_y + 1 + i] = e.power[i];
-    if constexpr (impulse_size > 0) {
-      for (int i = 0; i < 6; ++i) dy[impulse_y + i] = 0.0;
-      add_impulses(e, dy.data() + impulse_y, 1.0);
-    }
+    extra_rates(e, dy.data() + t_y);
   }
 
   // the attitude q ← q / |q|
@@ -149,12 +144,7 @@ class OneBodySceneModel {
     Evaluation e;
     evaluate(y, e);
     slot_.velocity(y.data(), clock_at(y), e.k, e.wrench, xi.data());
-    xi[t_xi] = 1.0;
-    for (int i = 0; i < work_size; ++i) xi[t_xi + 1 + i] = e.power[i];
-    if constexpr (impulse_size > 0) {
-      for (int i = 0; i < 6; ++i) xi[impulse_xi + i] = 0.0;
-      add_impulses(e, xi.data() + impulse_xi, 1.0);
-    }
+    extra_rates(e, xi.data() + t_xi);
   }
 
   // y ⊕ Θ
@@ -338,6 +328,17 @@ class OneBodySceneModel {
     const Eigen::Vector3d J = (t - start_.t) * gravity_->force(mass_);
     const Eigen::Vector3d K = cross_3(k.p_W, k.m * k.v_W) - cross_3(start_.p_W, start_.L_W);
     for (int i = 0; i < 3; ++i) impulses[i] = J[i], impulses[3 + i] = K[i];
+  }
+
+  // The rates after the body's block, from out (t's place in ẏ or ξ): dt/dt = 1, the works' powers [W], the
+  // impulses' rates (SceneModel::rate)
+  RIGIDDYN_ALWAYS_INLINE void extra_rates(const Evaluation& e, double* out) const {
+    out[0] = 1.0;
+    for (int i = 0; i < work_size; ++i) out[1 + i] = e.power[i];
+    if constexpr (impulse_size > 0) {
+      for (int i = 0; i < 6; ++i) out[1 + work_size + i] = 0.0;
+      add_impulses(e, out + 1 + work_size, 1.0);
+    }
   }
 
   // out[0..2] += h f [N], out[3..5] += h (p × f + R_WB τ_B) [N m] (SceneModel::add_impulses)
