@@ -280,8 +280,7 @@ class OneBodySceneModel {
   Coordinates coordinates(const std::vector<BodyState>& states, double t) const {
     Coordinates y = Coordinates::Zero();
     slot_.coordinates(states[0], y.data());
-    y[t_y] = t;
-    step_start_ = t;
+    y[t_y] = t;  // (step_start_ is the run's copy's, set with its first piece)
     return y;
   }
 

@@ -483,7 +483,6 @@ class BasicSceneModel {
     Coordinates y = Coordinates::Zero(coordinate_count());
     for_each_slot([&](const auto& s) { s.coordinates(states[s.body], y.data()); });
     y[t_y_] = t;
-    step_start_ = t;
     return y;
   }
 
@@ -755,8 +754,9 @@ class BasicSceneModel {
   std::array<std::uint8_t, group_count> present_{};  // the indices of the groups that hold a body, in order
   std::size_t present_count_ = 0;
   Eigen::Index t_y_ = 0, t_xi_ = 0;  // offsets of t in y and ξ
-  // the start [s] of the step being taken, for the out-of-mass message (set_time, coordinates, project,
-  // drift, free_flow; a run copies its model and steps it on one thread)
+  // the start [s] of the step being taken, for the out-of-mass message (set_time, project, drift, free_flow: a run
+  // copies its model, sets its first piece and steps it on one thread; coordinates leaves it, so that threads that
+  // start runs of one shared model write nothing of it)
   mutable double step_start_ = std::numeric_limits<double>::quiet_NaN();
   std::vector<Eigen::Index> q_y_;  // offset of each body's q_WB in y, −1 without one (for the recorder only)
   std::vector<int> energy_body_;   // the bodies with a MassFlow, in the scene's order (their mass-flow energies')

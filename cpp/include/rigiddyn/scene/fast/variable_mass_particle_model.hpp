@@ -241,8 +241,7 @@ class VariableMassParticleModel {
     y.segment<3>(0) = state.p_W;
     y.segment<3>(3) = state.v_W;
     y[6] = m;
-    y[7] = t;
-    step_start_ = t;
+    y[7] = t;  // (step_start_ is the run's copy's, set with its first piece)
     return y;
   }
   // the same from the scene's body states (one, a ParticleState) at the particle's initial mass
