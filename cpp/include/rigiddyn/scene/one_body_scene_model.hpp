@@ -239,28 +239,14 @@ class OneBodySceneModel {
     detail::RecordSums sums;
     Eigen::Vector3d momentum_O_W = Eigen::Vector3d::Zero(), reaction_W = Eigen::Vector3d::Zero();
     slot_.record(y.data(), k, e.wrench, sums, momentum_O_W, reaction_W);
-    out.p_W.insert(out.p_W.end(), k.p_W.data(), k.p_W.data() + 3);
     const Eigen::Index q_y = slot_.attitude_y();
-    if (q_y >= 0) {
-      out.q_WB.insert(out.q_WB.end(), y.data() + q_y, y.data() + q_y + 4);  // as integrated
-    } else {
-      out.q_WB.insert(out.q_WB.end(), k.q_WB.coeffs().data(), k.q_WB.coeffs().data() + 4);
-    }
-    out.v_W.insert(out.v_W.end(), k.v_W.data(), k.v_W.data() + 3);
-    out.w_B.insert(out.w_B.end(), k.w_B.data(), k.w_B.data() + 3);
-    out.pivot_reaction_W.insert(out.pivot_reaction_W.end(), reaction_W.data(), reaction_W.data() + 3);
-    out.angular_momentum_O_W.insert(out.angular_momentum_O_W.end(), momentum_O_W.data(), momentum_O_W.data() + 3);
-    out.mass.push_back(k.m);
+    detail::append_body_record(k, q_y >= 0 ? y.data() + q_y : nullptr, momentum_O_W, reaction_W, out);  // as integrated
     double V = 0.0;  // the gravity's (the loads have no potential)
     if (gravity_) V += gravity_->potential(k);
     if constexpr (exact_gravity) {
       if (out.t.size() == 1) start_ = {t, k.p_W, k.m * k.v_W, V};  // the run's first record is its start
     }
-    out.kinetic_energy.push_back(sums.T);
-    out.potential_energy.push_back(V);
-    out.total_energy.push_back(sums.T + V);
-    out.linear_momentum_W.insert(out.linear_momentum_W.end(), sums.L_W.data(), sums.L_W.data() + 3);
-    out.angular_momentum_W.insert(out.angular_momentum_W.end(), sums.H_W.data(), sums.H_W.data() + 3);
+    detail::append_record_sums(sums, V, out);
     if constexpr (exact_gravity) {
       out.work.push_back(start_.V - V);
     } else {
@@ -342,9 +328,7 @@ class OneBodySceneModel {
 
   // out[0..2] += h f [N], out[3..5] += h (p × f + R_WB τ_B) [N m] (SceneModel::add_impulses)
   RIGIDDYN_ALWAYS_INLINE void add_impulses(const Evaluation& e, double* out, double h) const {
-    Eigen::Vector3d M_W = cross_3(e.k.p_W, e.wrench.f_W);
-    if (turns_vectors_) M_W += e.k.R_WB * e.wrench.tau_B;
-    for (int i = 0; i < 3; ++i) out[i] += h * e.wrench.f_W[i], out[3 + i] += h * M_W[i];
+    detail::add_wrench_impulses(e.k, e.wrench, turns_vectors_, h, out);
   }
 
   template <class GyroscopicKick>

@@ -442,26 +442,12 @@ class BasicSceneModel {
       s.record(y.data(), kinematics_[s.body], wrenches_[s.body], sums, momentum_O_W_[s.body], reaction_W_[s.body]);
     });
     for (std::size_t b = 0; b < kinematics_.size(); ++b) {
-      const BodyKinematics& k = kinematics_[b];
-      out.p_W.insert(out.p_W.end(), k.p_W.data(), k.p_W.data() + 3);
-      if (q_y_[b] >= 0) {
-        out.q_WB.insert(out.q_WB.end(), y.data() + q_y_[b], y.data() + q_y_[b] + 4);  // as integrated
-      } else {
-        out.q_WB.insert(out.q_WB.end(), k.q_WB.coeffs().data(), k.q_WB.coeffs().data() + 4);
-      }
-      out.v_W.insert(out.v_W.end(), k.v_W.data(), k.v_W.data() + 3);
-      out.w_B.insert(out.w_B.end(), k.w_B.data(), k.w_B.data() + 3);
-      out.pivot_reaction_W.insert(out.pivot_reaction_W.end(), reaction_W_[b].data(), reaction_W_[b].data() + 3);
-      out.angular_momentum_O_W.insert(out.angular_momentum_O_W.end(), momentum_O_W_[b].data(), momentum_O_W_[b].data() + 3);
-      out.mass.push_back(k.m);
+      const double* q_y = q_y_[b] >= 0 ? y.data() + q_y_[b] : nullptr;  // as integrated
+      detail::append_body_record(kinematics_[b], q_y, momentum_O_W_[b], reaction_W_[b], out);
     }
     double V = 0.0;
     for (const Term& term : terms_) V += std::visit([&](const auto& e) { return e.potential(kinematics_); }, term);
-    out.kinetic_energy.push_back(sums.T);
-    out.potential_energy.push_back(V);
-    out.total_energy.push_back(sums.T + V);
-    out.linear_momentum_W.insert(out.linear_momentum_W.end(), sums.L_W.data(), sums.L_W.data() + 3);
-    out.angular_momentum_W.insert(out.angular_momentum_W.end(), sums.H_W.data(), sums.H_W.data() + 3);
+    detail::append_record_sums(sums, V, out);
     for (std::size_t e = 0; e < terms_.size(); ++e) out.work.push_back(y[t_y_ + 1 + e]);
     const double* impulses = y.data() + t_y_ + impulse_offset();
     out.impulse_W.insert(out.impulse_W.end(), impulses, impulses + 3);
@@ -697,11 +683,7 @@ class BasicSceneModel {
   // add_impulses of bodies first … last − 1
   void add_wrench_impulses(double* out, double h, std::size_t first, std::size_t last) const {
     for (std::size_t b = first; b < last; ++b) {
-      const BodyKinematics& k = kinematics_[b];
-      const BodyWrench& w = wrenches_[b];
-      Eigen::Vector3d M_W = cross_3(k.p_W, w.f_W);
-      if (turns_vectors_) M_W += k.R_WB * w.tau_B;
-      for (int i = 0; i < 3; ++i) out[i] += h * w.f_W[i], out[3 + i] += h * M_W[i];
+      detail::add_wrench_impulses(kinematics_[b], wrenches_[b], turns_vectors_, h, out);
     }
   }
 

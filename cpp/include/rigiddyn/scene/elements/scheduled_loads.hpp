@@ -106,7 +106,7 @@ class ScheduledLoadsTerm {
   double add_wrenches(double /*t*/, const std::vector<BodyKinematics>& kinematics, std::vector<BodyWrench>& wrenches) const {
     return add_wrench(kinematics[body_], wrenches[body_]);
   }
-  // The same on its body of kinematics k (the one-body layout, scene/fixed_scene_model.hpp)
+  // The same on its body of kinematics k (the one-body layout, scene/one_body_scene_model.hpp)
   RIGIDDYN_ALWAYS_INLINE double add_wrench(const BodyKinematics& k, BodyWrench& wrench) const {
     const Eigen::Vector3d f_W = loads_.f_W + k.R_WB * loads_.f_B;
     const Eigen::Vector3d tau_B = loads_.tau_B + k.R_WB.transpose() * loads_.tau_W + point_B_.cross(k.R_WB.transpose() * f_W);

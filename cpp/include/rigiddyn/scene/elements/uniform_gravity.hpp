@@ -71,7 +71,7 @@ class UniformGravityTerm {
     return power + g_W_.dot(momentum);
   }
 
-  // The term on one body of kinematics k (the one-body layout, scene/fixed_scene_model.hpp): wrench.f_W += m g_W;
+  // The term on one body of kinematics k (the one-body layout, scene/one_body_scene_model.hpp): wrench.f_W += m g_W;
   // returns m g_W·v_W [W].
   RIGIDDYN_ALWAYS_INLINE double add_wrench(const BodyKinematics& k, BodyWrench& wrench) const {
     const Eigen::Vector3d f = force(k.m);

@@ -39,6 +39,7 @@
 #include "rigiddyn/integrators/splitting_dlm.hpp"
 #include "rigiddyn/models/euler_equations.hpp"  // cross_3
 #include "rigiddyn/scene/body_kinematics.hpp"
+#include "rigiddyn/scene/scene_simulation.hpp"
 #include "rigiddyn/so3/coriolis_flow.hpp"
 
 #include <Eigen/Core>
@@ -85,6 +86,39 @@ struct RecordSums {
     H_W += k.p_W.cross(k.m * k.v_W);
   }
 };
+
+// out[0..2] += h f_W [N], out[3..5] += h (p × f_W + R_WB τ_B) [N m] of one body's wrench w at its kinematics k: its
+// impulses about W's origin (scene_model.hpp), τ_B = 0 taken as such unless `torques` (no term turns vectors)
+RIGIDDYN_ALWAYS_INLINE void add_wrench_impulses(const BodyKinematics& k, const BodyWrench& w, bool torques, double h,
+                                                double* out) {
+  Eigen::Vector3d M_W = cross_3(k.p_W, w.f_W);
+  if (torques) M_W += k.R_WB * w.tau_B;
+  for (int i = 0; i < 3; ++i) out[i] += h * w.f_W[i], out[3 + i] += h * M_W[i];
+}
+
+// Appends one body's record to `out` (scene_simulation.hpp): its kinematics k, its attitude as integrated (q_y, the
+// attitude's 4 numbers in y; null for a kind without one: k's), its momentum about its own point and its pivot's
+// reaction, its mass
+inline void append_body_record(const BodyKinematics& k, const double* q_y, const Eigen::Vector3d& momentum_O_W,
+                               const Eigen::Vector3d& reaction_W, SceneSimulation& out) {
+  out.p_W.insert(out.p_W.end(), k.p_W.data(), k.p_W.data() + 3);
+  const double* q = q_y != nullptr ? q_y : k.q_WB.coeffs().data();
+  out.q_WB.insert(out.q_WB.end(), q, q + 4);
+  out.v_W.insert(out.v_W.end(), k.v_W.data(), k.v_W.data() + 3);
+  out.w_B.insert(out.w_B.end(), k.w_B.data(), k.w_B.data() + 3);
+  out.pivot_reaction_W.insert(out.pivot_reaction_W.end(), reaction_W.data(), reaction_W.data() + 3);
+  out.angular_momentum_O_W.insert(out.angular_momentum_O_W.end(), momentum_O_W.data(), momentum_O_W.data() + 3);
+  out.mass.push_back(k.m);
+}
+
+// Appends the energies (T, V, T + V) and the momenta L_W, H_W of a record to `out`
+inline void append_record_sums(const RecordSums& sums, double V, SceneSimulation& out) {
+  out.kinetic_energy.push_back(sums.T);
+  out.potential_energy.push_back(V);
+  out.total_energy.push_back(sums.T + V);
+  out.linear_momentum_W.insert(out.linear_momentum_W.end(), sums.L_W.data(), sums.L_W.data() + 3);
+  out.angular_momentum_W.insert(out.angular_momentum_W.end(), sums.H_W.data(), sums.H_W.data() + 3);
+}
 
 // Whether a kind's rate, velocity or kick read the kinematics (true unless it says reads_kinematics = false)
 template <class Slot, class = void>
