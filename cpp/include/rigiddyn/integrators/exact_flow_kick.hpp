@@ -23,6 +23,7 @@
 // models without a gyroscopic term (particle, planar body) they are velocity Verlet, exact for
 // constant loads (world-frame forces and couples) there.
 #pragma once
+#include "rigiddyn/always_inline.hpp"
 #include "rigiddyn/exact/free_body.hpp"
 #include "rigiddyn/integrators/free_flow_tags.hpp"
 #include "rigiddyn/integrators/workspace.hpp"
@@ -57,13 +58,13 @@ struct ExactFlowKick {
   using Workspace = NoWorkspace;
 
   template <class Model>
-  static void step(const Model& model, typename Model::Coordinates& y, double h, NoWorkspace& /*w*/) {
+  RIGIDDYN_ALWAYS_INLINE static void step(const Model& model, typename Model::Coordinates& y, double h, NoWorkspace& /*w*/) {
     exact_flow_kick_step(model, y, h);
   }
   // The step opens and closes with loads_kick(edge_kick h) (simulate/run_loop.hpp, merged_steps)
   static constexpr double edge_kick = 0.5;
   template <class Model>
-  static void between_kicks(const Model& model, typename Model::Coordinates& y, double h) {
+  RIGIDDYN_ALWAYS_INLINE static void between_kicks(const Model& model, typename Model::Coordinates& y, double h) {
     model.template free_flow<ExactRotation>(y, h);
   }
 };
@@ -77,7 +78,7 @@ struct ExactFreeFlow {
   };
 
   template <class Model>
-  static void step(const Model& model, typename Model::Coordinates& y, double h, Workspace<Model>& w) {
+  RIGIDDYN_ALWAYS_INLINE static void step(const Model& model, typename Model::Coordinates& y, double h, Workspace<Model>& w) {
     w.y0 = y;
     if (exact_flow_kick_step(model, y, h) != 0.0) {
       y = w.y0;

@@ -26,6 +26,7 @@
 // body's rotation by dlm_free_rotation below; a particle's and a planar body's free parts have no
 // gyroscopic term, and there the step is velocity Verlet, exact for constant loads).
 #pragma once
+#include "rigiddyn/always_inline.hpp"
 #include "rigiddyn/integrators/free_flow_tags.hpp"
 #include "rigiddyn/integrators/splitting_parts.hpp"
 #include "rigiddyn/integrators/workspace.hpp"
@@ -98,7 +99,7 @@ struct SplittingDlm {
   using Workspace = NoWorkspace;
 
   template <class Model>
-  static void step(const Model& model, typename Model::Coordinates& y, double h, NoWorkspace& /*w*/) {
+  RIGIDDYN_ALWAYS_INLINE static void step(const Model& model, typename Model::Coordinates& y, double h, NoWorkspace& /*w*/) {
     model.loads_kick(y, edge_kick * h);
     between_kicks(model, y, h);
     model.loads_kick(y, edge_kick * h);
@@ -107,7 +108,7 @@ struct SplittingDlm {
   // closing kick and the next step's opening kick as one (simulate/run_loop.hpp, merged_steps)
   static constexpr double edge_kick = 0.5;
   template <class Model>
-  static void between_kicks(const Model& model, typename Model::Coordinates& y, double h) {
+  RIGIDDYN_ALWAYS_INLINE static void between_kicks(const Model& model, typename Model::Coordinates& y, double h) {
     model.template free_flow<DlmRotation<true>>(y, h);
   }
 };

@@ -31,6 +31,7 @@
 // changing mass exactly; clamping the free part's times into the step leaves the loads a trapezoidal rule
 // (order 2).
 #pragma once
+#include "rigiddyn/always_inline.hpp"
 #include "rigiddyn/integrators/splitting_dlm.hpp"
 
 #include <type_traits>
@@ -57,7 +58,7 @@ struct Yoshida4 {
   using Workspace = NoWorkspace;
 
   template <class Model>
-  static void step(const Model& model, typename Model::Coordinates& y, double h, NoWorkspace& /*w*/) {
+  RIGIDDYN_ALWAYS_INLINE static void step(const Model& model, typename Model::Coordinates& y, double h, NoWorkspace& /*w*/) {
     using namespace yoshida4_coefficients;
     if constexpr (detail::has_mass_part<Model>::value) {
       if (model.has_mass_flow()) return step_with_masses(model, y, h);
@@ -72,7 +73,7 @@ struct Yoshida4 {
   // (simulate/run_loop.hpp, merged_steps): 3 force evaluations per step instead of 4.
   static constexpr double edge_kick = 0.5 * yoshida4_coefficients::gamma1;
   template <class Model>
-  static void between_kicks(const Model& model, typename Model::Coordinates& y, double h) {
+  RIGIDDYN_ALWAYS_INLINE static void between_kicks(const Model& model, typename Model::Coordinates& y, double h) {
     using namespace yoshida4_coefficients;
     // the attitudes are normalised once, after the last free rotation
     model.template free_flow<DlmRotation<false>>(y, gamma1 * h);

@@ -1,6 +1,8 @@
 // What a force element sees of a body, and what it returns. Both are taken at the
 // body's centre of mass G, the origin of its body frame B (docs/conventions.md "Body state").
 #pragma once
+#include "rigiddyn/always_inline.hpp"
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
@@ -23,7 +25,10 @@ namespace rigiddyn {
 // frame, else F; the kinematics are relative to it.
 // Each body kind as elements see it: particle q_WB = identity, w_B = 0; planar body p_W = (x, y, 0),
 // q_WB = Rz(θ), v_W = (v_x, v_y, 0), w_B = (0, 0, ω).
+// (Their constructors are forced inline, as the members a model calls per evaluation: an evaluation writes only the
+// fields it reads once the whole step inlines.)
 struct BodyKinematics {
+  RIGIDDYN_ALWAYS_INLINE BodyKinematics() {}
   Eigen::Vector3d p_W = Eigen::Vector3d::Zero();
   Eigen::Quaterniond q_WB = Eigen::Quaterniond::Identity();
   Eigen::Vector3d v_W = Eigen::Vector3d::Zero();
@@ -48,6 +53,8 @@ inline void set_attitude(BodyKinematics& k, const Eigen::Quaterniond& q_WB) {
 // Its power on the body is f_W·v_W + tau_B·w_B [W]. A planar body's scene model keeps only f_W's x, y
 // parts and tau_B's z part (the plane takes the rest: the constraint reaction).
 struct BodyWrench {
+  RIGIDDYN_ALWAYS_INLINE BodyWrench() {}
+  RIGIDDYN_ALWAYS_INLINE BodyWrench(const Eigen::Vector3d& f_W_, const Eigen::Vector3d& tau_B_) : f_W(f_W_), tau_B(tau_B_) {}
   Eigen::Vector3d f_W = Eigen::Vector3d::Zero();
   Eigen::Vector3d tau_B = Eigen::Vector3d::Zero();
 };

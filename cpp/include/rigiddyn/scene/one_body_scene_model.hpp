@@ -83,8 +83,10 @@ class OneBodySceneModel {
   static constexpr int impulse_size = integrated && free_body ? 6 : 0;
   static constexpr int impulse_y = t_y + 1 + work_size, impulse_xi = t_xi + 1 + work_size;
 
-  // One evaluation's kinematics, wrench and powers [W] (the gravity's, the loads')
+  // One evaluation's kinematics, wrench and powers [W] (the gravity's, the loads'); its construction inlined, so that
+  // the fields the evaluation never reads are never written (an out-of-line constructor writes all 30 of them)
   struct Evaluation {
+    RIGIDDYN_ALWAYS_INLINE Evaluation() {}
     BodyKinematics k;
     BodyWrench wrench;
     double power[2] = {0.0, 0.0};
@@ -121,7 +123,6 @@ class OneBodySceneModel {
 
   // As SceneModel::set_time: the loads of the piece at t [s]
   void set_time(double t) {
-    step_start_ = t;
     if (loads_) loads_->set_time(t);
   }
 
@@ -134,10 +135,7 @@ class OneBodySceneModel {
   }
 
   // the attitude q ← q / |q|
-  RIGIDDYN_ALWAYS_INLINE void project(Coordinates& y) const {
-    slot_.project(y.data());
-    step_start_ = y[t_y];
-  }
+  RIGIDDYN_ALWAYS_INLINE void project(Coordinates& y) const { slot_.project(y.data()); }
 
   // ξ (SceneModel::velocity)
   RIGIDDYN_ALWAYS_INLINE void velocity(const Coordinates& y, Tangent& xi) const {
@@ -193,7 +191,6 @@ class OneBodySceneModel {
     slot_.turn(y.data(), h);
     project(y);
     y[t_y] += h;
-    step_start_ = y[t_y];
   }
 
   // the exact flow of the loads part over h [s] (SceneModel::loads_kick); returns |Δω_B| [rad/s]
@@ -227,7 +224,6 @@ class OneBodySceneModel {
     slot_.translate(y.data(), h);
     slot_.template free_rotation<Rotation>(y.data(), h);
     y[t_y] += h;
-    step_start_ = y[t_y];
   }
 
   // Appends the record of y at time t [s] to `out` (SceneModel::record)
@@ -266,7 +262,7 @@ class OneBodySceneModel {
   Coordinates coordinates(const std::vector<BodyState>& states, double t) const {
     Coordinates y = Coordinates::Zero();
     slot_.coordinates(states[0], y.data());
-    y[t_y] = t;  // (step_start_ is the run's copy's, set with its first piece)
+    y[t_y] = t;
     return y;
   }
 
@@ -274,7 +270,8 @@ class OneBodySceneModel {
   std::vector<BodyState> states(const Coordinates& y) const { return {slot_.state(y.data())}; }
 
  private:
-  detail::StepClock clock_at(const Coordinates& y) const { return {y[t_y], step_start_}; }
+  // t of y; no step start (it serves a mass flow's out-of-mass message, and none of the layout's kinds has one)
+  detail::StepClock clock_at(const Coordinates& y) const { return {y[t_y], std::numeric_limits<double>::quiet_NaN()}; }
 
   // k from y as the elements see the body (SceneModel::fill_kinematics), with R_WB when the loads turn vectors:
   // nothing without an element where the kind's rate reads y alone, the attitude only where the loads or the kind
@@ -345,7 +342,6 @@ class OneBodySceneModel {
   std::array<int, 2> column_{};     // column_[e]: where element e's work is among the two (0 gravity, 1 loads)
   std::size_t element_count_ = 0;
   bool turns_vectors_ = false;      // the loads read the attitude or give a torque: the kinematics carry R_WB
-  mutable double step_start_ = std::numeric_limits<double>::quiet_NaN();
   // the run's start (its first record) under exact gravity: t0 [s], p0 [m], m v0 [kg m/s], V(t0) [J]
   struct Start {
     double t = 0.0;

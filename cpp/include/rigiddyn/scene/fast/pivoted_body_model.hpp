@@ -90,7 +90,7 @@ class PivotedBodyModel {
 
   Eigen::Index coordinate_count() const { return 10; }
   Eigen::Index tangent_count() const { return 9; }
-  Eigen::Index time_index() const { return 7; }  // where t [s] is in y
+  static constexpr Eigen::Index time_index() { return 7; }  // where t [s] is in y
   // where element e's work is in y (the gravity slot or the loads slot; -1 for any other element, which a
   // scene on this fast path does not have)
   Eigen::Index work_index(std::size_t element) const {

@@ -97,7 +97,7 @@ class RotatingFrameParticleModel {
 
   Eigen::Index coordinate_count() const { return 10; }
   Eigen::Index tangent_count() const { return 10; }
-  Eigen::Index time_index() const { return 6; }  // where t [s] is in y
+  static constexpr Eigen::Index time_index() { return 6; }  // where t [s] is in y
   // where element e's work is in y (the gravity, centrifugal or Coriolis slot; -1 for any other element,
   // which a scene on this fast path does not have)
   Eigen::Index work_index(std::size_t element) const {

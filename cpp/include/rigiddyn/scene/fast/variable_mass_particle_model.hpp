@@ -95,7 +95,7 @@ class VariableMassParticleModel {
   Eigen::Index coordinate_count() const { return 11; }
   Eigen::Index tangent_count() const { return 11; }
   Eigen::Index mass_index() const { return 6; }  // where m [kg] is in y
-  Eigen::Index time_index() const { return 7; }  // where t [s] is in y
+  static constexpr Eigen::Index time_index() { return 7; }  // where t [s] is in y
   Eigen::Index mass_flow_energy_index() const { return 10; }  // where E [J] is in y
   bool has_mass_flow() const { return true; }  // (the model has a mass part: mass_part)
   // where element e's work is in y (gravity's or the thrust's slot; -1 for any other element, which a scene

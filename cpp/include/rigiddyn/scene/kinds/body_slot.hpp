@@ -26,7 +26,10 @@
 // clock, k) (the kinematics but the attitude q_WB, for an evaluation in which no term reads it) and
 // retract_motion(y, θ, out) (retract but the attitude, for a stage whose velocity reads none).
 // A slot's place (SlotPlace: its body's index and its offsets in y and ξ) is its base class: FirstPlace, known at
-// compile time, for the one body of a OneBodySceneModel (the kinds that template on it: Place).
+// compile time, for the one body of a OneBodySceneModel (the kinds that template on it: Place). The members a step
+// calls (kinematics to loads_kick above) are forced inline (RIGIDDYN_ALWAYS_INLINE) in the kinds a one-body layout
+// carries: its stages stay in registers only when the whole step inlines, and GCC's growth limits otherwise outline
+// whichever call crosses them (a heavy top's RK4 step measured 3× when its kinematics was outlined).
 // The pointers y, dy, ξ, θ are the whole vectors; a slot reads its own block at at_y / at_xi. A slot may span
 // several consecutive bodies (a tree's links, kinds/tree_slot.hpp): it then reads their kinematics, wrenches and
 // states, and writes their records, as the arrays that start at its first body's, and has states(y, first) in

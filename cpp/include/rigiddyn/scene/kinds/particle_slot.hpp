@@ -21,39 +21,39 @@ struct ParticleSlot : Place {
   RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d acceleration(const BodyWrench& w) const {
     return Eigen::Vector3d(inverse_mass * w.f_W[0], inverse_mass * w.f_W[1], inverse_mass * w.f_W[2]);
   }
-  void kinematics(const double* y, const StepClock&, BodyKinematics& k) const {
+  RIGIDDYN_ALWAYS_INLINE void kinematics(const double* y, const StepClock&, BodyKinematics& k) const {
     const double* x = y + at_y;
     k.p_W = three(x + p);
     k.v_W = three(x + v);
   }
-  void rate(const double* y, const StepClock&, const BodyKinematics&, const BodyWrench& w, double* dy) const {
+  RIGIDDYN_ALWAYS_INLINE void rate(const double* y, const StepClock&, const BodyKinematics&, const BodyWrench& w, double* dy) const {
     const double* x = y + at_y;
     const Eigen::Vector3d a = acceleration(w);
     for (int i = 0; i < 3; ++i) dy[at_y + p + i] = x[v + i], dy[at_y + v + i] = a[i];
   }
-  void velocity(const double* y, const StepClock&, const BodyKinematics&, const BodyWrench& w, double* xi) const {
+  RIGIDDYN_ALWAYS_INLINE void velocity(const double* y, const StepClock&, const BodyKinematics&, const BodyWrench& w, double* xi) const {
     const double* x = y + at_y;
     const Eigen::Vector3d a = acceleration(w);
     for (int i = 0; i < 3; ++i) xi[at_xi + i] = x[v + i], xi[at_xi + 3 + i] = a[i];
   }
-  void retract(const double* y, const double* theta, double* out) const {
+  RIGIDDYN_ALWAYS_INLINE void retract(const double* y, const double* theta, double* out) const {
     for (int i = 0; i < 6; ++i) out[at_y + i] = y[at_y + i] + theta[at_xi + i];
   }
-  void dexp_inv(const double*, double*) const {}
-  void project(double*) const {}
+  RIGIDDYN_ALWAYS_INLINE void dexp_inv(const double*, double*) const {}
+  RIGIDDYN_ALWAYS_INLINE void project(double*) const {}
   template <class GyroscopicKick>
-  void kick(double* y, const BodyKinematics&, const BodyWrench& w, double h, const GyroscopicKick&) const {
+  RIGIDDYN_ALWAYS_INLINE void kick(double* y, const BodyKinematics&, const BodyWrench& w, double h, const GyroscopicKick&) const {
     const Eigen::Vector3d a = acceleration(w);
     for (int i = 0; i < 3; ++i) y[at_y + v + i] += h * a[i];
   }
-  void translate(double* y, double h) const {
+  RIGIDDYN_ALWAYS_INLINE void translate(double* y, double h) const {
     for (int i = 0; i < 3; ++i) y[at_y + p + i] += h * y[at_y + v + i];
   }
-  void turn(double*, double) const {}
+  RIGIDDYN_ALWAYS_INLINE void turn(double*, double) const {}
   template <class Rotation>
-  void free_rotation(double*, double) const {}
+  RIGIDDYN_ALWAYS_INLINE void free_rotation(double*, double) const {}
   template <class Kicks>
-  double loads_kick(double* y, BodyKinematics& k, const BodyWrench& w, double h, const Kicks& kicks) const {
+  RIGIDDYN_ALWAYS_INLINE double loads_kick(double* y, BodyKinematics& k, const BodyWrench& w, double h, const Kicks& kicks) const {
     Eigen::Vector3d dv, mean_v;
     kicks.translation(h * acceleration(w), dv, mean_v);
     k.v_W += mean_v;

@@ -37,42 +37,42 @@ struct PivotedPlanarSlot : Place {
   double alpha(const double* y, const BodyWrench& wrench) const {
     return pivoted_planar_angular_acceleration(inertia_O_zz, c_W_at(y[at_y + theta]), wrench);
   }
-  void kinematics(const double* y, const StepClock& clock, BodyKinematics& k) const {
+  RIGIDDYN_ALWAYS_INLINE void kinematics(const double* y, const StepClock& clock, BodyKinematics& k) const {
     motion_kinematics(y, clock, k);
     const double angle = y[at_y + theta];
     k.q_WB = Eigen::Quaterniond(std::cos(0.5 * angle), 0.0, 0.0, std::sin(0.5 * angle));
   }
-  void motion_kinematics(const double* y, const StepClock&, BodyKinematics& k) const {
+  RIGIDDYN_ALWAYS_INLINE void motion_kinematics(const double* y, const StepClock&, BodyKinematics& k) const {
     const double angle = y[at_y + theta], omega = y[at_y + w];
     const Eigen::Vector2d c_W = c_W_at(angle);
     k.p_W = Eigen::Vector3d(p_WO.x() + c_W.x(), p_WO.y() + c_W.y(), 0.0);
     k.v_W = Eigen::Vector3d(-omega * c_W.y(), omega * c_W.x(), 0.0);
     k.w_B = Eigen::Vector3d(0.0, 0.0, omega);
   }
-  void rate(const double* y, const StepClock&, const BodyKinematics&, const BodyWrench& wrench, double* dy) const {
+  RIGIDDYN_ALWAYS_INLINE void rate(const double* y, const StepClock&, const BodyKinematics&, const BodyWrench& wrench, double* dy) const {
     dy[at_y + theta] = y[at_y + w], dy[at_y + w] = alpha(y, wrench);
   }
-  void velocity(const double* y, const StepClock&, const BodyKinematics&, const BodyWrench& wrench, double* xi) const {
+  RIGIDDYN_ALWAYS_INLINE void velocity(const double* y, const StepClock&, const BodyKinematics&, const BodyWrench& wrench, double* xi) const {
     xi[at_xi] = y[at_y + w], xi[at_xi + 1] = alpha(y, wrench);
   }
-  void retract(const double* y, const double* theta_, double* out) const {
+  RIGIDDYN_ALWAYS_INLINE void retract(const double* y, const double* theta_, double* out) const {
     for (int i = 0; i < 2; ++i) out[at_y + i] = y[at_y + i] + theta_[at_xi + i];
   }
-  void dexp_inv(const double*, double*) const {}
-  void project(double*) const {}
+  RIGIDDYN_ALWAYS_INLINE void dexp_inv(const double*, double*) const {}
+  RIGIDDYN_ALWAYS_INLINE void project(double*) const {}
   template <class GyroscopicKick>
-  void kick(double* y, const BodyKinematics&, const BodyWrench& wrench, double h, const GyroscopicKick&) const {
+  RIGIDDYN_ALWAYS_INLINE void kick(double* y, const BodyKinematics&, const BodyWrench& wrench, double h, const GyroscopicKick&) const {
     y[at_y + w] += h * alpha(y, wrench);
   }
-  void translate(double*, double) const {}
-  void turn(double* y, double h) const { y[at_y + theta] += h * y[at_y + w]; }
+  RIGIDDYN_ALWAYS_INLINE void translate(double*, double) const {}
+  RIGIDDYN_ALWAYS_INLINE void turn(double* y, double h) const { y[at_y + theta] += h * y[at_y + w]; }
   template <class Rotation>
-  void free_rotation(double* y, double h) const {
+  RIGIDDYN_ALWAYS_INLINE void free_rotation(double* y, double h) const {
     turn(y, h);
   }
   // (no Coriolis torque about O: in the plane f ∥ c_W, and τ_z = 0)
   template <class Kicks>
-  double loads_kick(double* y, BodyKinematics& k, const BodyWrench& wrench, double h, const Kicks&) const {
+  RIGIDDYN_ALWAYS_INLINE double loads_kick(double* y, BodyKinematics& k, const BodyWrench& wrench, double h, const Kicks&) const {
     const Eigen::Vector2d c_W = c_W_at(y[at_y + theta]);
     const double d = h * pivoted_planar_angular_acceleration(inertia_O_zz, c_W, wrench);
     k.w_B[2] += 0.5 * d;

@@ -24,11 +24,11 @@ struct PivotedSlot : Place {
   Euler euler_O;                      // the Euler form of I_O
   FreeRotationFlow flow_O;            // the exact free rotation about O (free_flow<ExactRotation>)
 
-  Eigen::Vector3d angular_acceleration(const BodyKinematics& k, const Eigen::Vector3d& w_B, const BodyWrench& wrench) const {
+  RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d angular_acceleration(const BodyKinematics& k, const Eigen::Vector3d& w_B, const BodyWrench& wrench) const {
     return pivoted_angular_acceleration(euler_O, c_B, k.q_WB, w_B, wrench);
   }
   // at the centre of mass: p = O + R c, v = R (ω × c)
-  void kinematics(const double* y, const StepClock&, BodyKinematics& k) const {
+  RIGIDDYN_ALWAYS_INLINE void kinematics(const double* y, const StepClock&, BodyKinematics& k) const {
     const double* x = y + at_y;
     k.q_WB = Eigen::Quaterniond(x[q + 3], x[q], x[q + 1], x[q + 2]);
     k.q_WB.coeffs() *= 1.0 / k.q_WB.coeffs().norm();
@@ -36,41 +36,41 @@ struct PivotedSlot : Place {
     k.p_W = p_WO + k.q_WB * c_B;
     k.v_W = k.q_WB * cross_3(k.w_B, c_B);
   }
-  void rate(const double* y, const StepClock&, const BodyKinematics& k, const BodyWrench& wrench, double* dy) const {
+  RIGIDDYN_ALWAYS_INLINE void rate(const double* y, const StepClock&, const BodyKinematics& k, const BodyWrench& wrench, double* dy) const {
     const Eigen::Vector3d alpha = angular_acceleration(k, k.w_B, wrench);
     quat_rate_body(y + at_y + q, k.w_B, dy + at_y + q);  // q̇ = ½ q ⊗ (ω_B, 0)
     for (int i = 0; i < 3; ++i) dy[at_y + w + i] = alpha[i];
   }
-  void velocity(const double*, const StepClock&, const BodyKinematics& k, const BodyWrench& wrench, double* xi) const {
+  RIGIDDYN_ALWAYS_INLINE void velocity(const double*, const StepClock&, const BodyKinematics& k, const BodyWrench& wrench, double* xi) const {
     const Eigen::Vector3d alpha = angular_acceleration(k, k.w_B, wrench);
     for (int i = 0; i < 3; ++i) xi[at_xi + i] = k.w_B[i], xi[at_xi + 3 + i] = alpha[i];
   }
-  void retract(const double* y, const double* theta, double* out) const {
+  RIGIDDYN_ALWAYS_INLINE void retract(const double* y, const double* theta, double* out) const {
     times_exp(y + at_y + q, three(theta + at_xi), out + at_y + q);
     for (int i = 0; i < 3; ++i) out[at_y + w + i] = y[at_y + w + i] + theta[at_xi + 3 + i];
   }
-  void dexp_inv(const double* theta, double* xi) const { dexp_inv_body(theta + at_xi, xi + at_xi); }
-  void project(double* y) const { normalise_quaternion(y + at_y + q); }
+  RIGIDDYN_ALWAYS_INLINE void dexp_inv(const double* theta, double* xi) const { dexp_inv_body(theta + at_xi, xi + at_xi); }
+  RIGIDDYN_ALWAYS_INLINE void project(double* y) const { normalise_quaternion(y + at_y + q); }
   // Euler's equations about O with the wrench reduced to O
   template <class GyroscopicKick>
-  void kick(double* y, const BodyKinematics& k, const BodyWrench& wrench, double h, const GyroscopicKick& gyroscopic_kick) const {
+  RIGIDDYN_ALWAYS_INLINE void kick(double* y, const BodyKinematics& k, const BodyWrench& wrench, double h, const GyroscopicKick& gyroscopic_kick) const {
     const Eigen::Vector3d w_B = gyroscopic_kick(euler_O, k.w_B, pivoted_torque_O(c_B, k.q_WB, wrench), h);
     for (int i = 0; i < 3; ++i) y[at_y + w + i] = w_B[i];
   }
-  void translate(double*, double) const {}
-  void turn(double* y, double h) const {
+  RIGIDDYN_ALWAYS_INLINE void translate(double*, double) const {}
+  RIGIDDYN_ALWAYS_INLINE void turn(double* y, double h) const {
     double* x = y + at_y;
     const double q0[4] = {x[q], x[q + 1], x[q + 2], x[q + 3]};
     times_exp(q0, Eigen::Vector3d(h * x[w], h * x[w + 1], h * x[w + 2]), x + q);
   }
   // the free rotation about O: I_O in place of I_C
   template <class Rotation>
-  void free_rotation(double* y, double h) const {
+  RIGIDDYN_ALWAYS_INLINE void free_rotation(double* y, double h) const {
     free_rotation_by(Rotation{}, euler_O, flow_O, y + at_y + q, y + at_y + w, h);
   }
   // ω += h I_O⁻¹ τ_O (ω = 0 in Euler's equations: the torque alone); the mean v̄ = R (ω̄ × c)
   template <class Kicks>
-  double loads_kick(double* y, BodyKinematics& k, const BodyWrench& wrench, double h, const Kicks& kicks) const {
+  RIGIDDYN_ALWAYS_INLINE double loads_kick(double* y, BodyKinematics& k, const BodyWrench& wrench, double h, const Kicks& kicks) const {
     Eigen::Vector3d dw, mean_w;
     kicks.rotation(body, k.q_WB, h * angular_acceleration(k, Eigen::Vector3d::Zero(), wrench), dw, mean_w);
     k.w_B += mean_w;

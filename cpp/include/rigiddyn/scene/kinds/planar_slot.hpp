@@ -26,46 +26,46 @@ struct PlanarSlot : Place {
   RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d acceleration(const BodyWrench& wrench) const {
     return Eigen::Vector3d(inverse_mass * wrench.f_W[0], inverse_mass * wrench.f_W[1], inverse_inertia_zz * wrench.tau_B[2]);
   }
-  void kinematics(const double* y, const StepClock& clock, BodyKinematics& k) const {
+  RIGIDDYN_ALWAYS_INLINE void kinematics(const double* y, const StepClock& clock, BodyKinematics& k) const {
     motion_kinematics(y, clock, k);
     const double half = 0.5 * y[at_y + theta];
     k.q_WB = Eigen::Quaterniond(std::cos(half), 0.0, 0.0, std::sin(half));
   }
-  void motion_kinematics(const double* y, const StepClock&, BodyKinematics& k) const {
+  RIGIDDYN_ALWAYS_INLINE void motion_kinematics(const double* y, const StepClock&, BodyKinematics& k) const {
     const double* x = y + at_y;
     k.p_W = Eigen::Vector3d(x[p], x[p + 1], 0.0);
     k.v_W = Eigen::Vector3d(x[v], x[v + 1], 0.0);
     k.w_B = Eigen::Vector3d(0.0, 0.0, x[w]);
   }
-  void rate(const double* y, const StepClock&, const BodyKinematics&, const BodyWrench& wrench, double* dy) const {
+  RIGIDDYN_ALWAYS_INLINE void rate(const double* y, const StepClock&, const BodyKinematics&, const BodyWrench& wrench, double* dy) const {
     const Eigen::Vector3d a = acceleration(wrench);
     for (int i = 0; i < 3; ++i) dy[at_y + i] = y[at_y + v + i], dy[at_y + v + i] = a[i];
   }
-  void velocity(const double* y, const StepClock&, const BodyKinematics&, const BodyWrench& wrench, double* xi) const {
+  RIGIDDYN_ALWAYS_INLINE void velocity(const double* y, const StepClock&, const BodyKinematics&, const BodyWrench& wrench, double* xi) const {
     const Eigen::Vector3d a = acceleration(wrench);
     for (int i = 0; i < 3; ++i) xi[at_xi + i] = y[at_y + v + i], xi[at_xi + 3 + i] = a[i];
   }
-  void retract(const double* y, const double* theta_, double* out) const {
+  RIGIDDYN_ALWAYS_INLINE void retract(const double* y, const double* theta_, double* out) const {
     for (int i = 0; i < 6; ++i) out[at_y + i] = y[at_y + i] + theta_[at_xi + i];
   }
-  void dexp_inv(const double*, double*) const {}
-  void project(double*) const {}
+  RIGIDDYN_ALWAYS_INLINE void dexp_inv(const double*, double*) const {}
+  RIGIDDYN_ALWAYS_INLINE void project(double*) const {}
   template <class GyroscopicKick>
-  void kick(double* y, const BodyKinematics&, const BodyWrench& wrench, double h, const GyroscopicKick&) const {
+  RIGIDDYN_ALWAYS_INLINE void kick(double* y, const BodyKinematics&, const BodyWrench& wrench, double h, const GyroscopicKick&) const {
     const Eigen::Vector3d a = acceleration(wrench);
     for (int i = 0; i < 3; ++i) y[at_y + v + i] += h * a[i];
   }
-  void translate(double* y, double h) const {
+  RIGIDDYN_ALWAYS_INLINE void translate(double* y, double h) const {
     for (int i = 0; i < 2; ++i) y[at_y + p + i] += h * y[at_y + v + i];
   }
-  void turn(double* y, double h) const { y[at_y + theta] += h * y[at_y + w]; }
+  RIGIDDYN_ALWAYS_INLINE void turn(double* y, double h) const { y[at_y + theta] += h * y[at_y + w]; }
   template <class Rotation>
-  void free_rotation(double* y, double h) const {
+  RIGIDDYN_ALWAYS_INLINE void free_rotation(double* y, double h) const {
     turn(y, h);
   }
   // (no Coriolis torque about z: ω ẑ and Ω_B give τ_z = 0)
   template <class Kicks>
-  double loads_kick(double* y, BodyKinematics& k, const BodyWrench& wrench, double h, const Kicks& kicks) const {
+  RIGIDDYN_ALWAYS_INLINE double loads_kick(double* y, BodyKinematics& k, const BodyWrench& wrench, double h, const Kicks& kicks) const {
     const Eigen::Vector3d d = h * acceleration(wrench);
     Eigen::Vector3d dv, mean_v;
     kicks.translation_in_plane(Eigen::Vector3d(d[0], d[1], 0.0), dv, mean_v);

@@ -17,19 +17,19 @@ struct SpatialLayout {
   static constexpr int xi_v = 0, xi_w = 3, xi_a = 6;    // in ξ (then alpha_B at 9)
 
   // p_W, the unit q_WB (the attitude as integrated, normalised), v_W, w_B
-  static void kinematics(const double* x, BodyKinematics& k) {
+  RIGIDDYN_ALWAYS_INLINE static void kinematics(const double* x, BodyKinematics& k) {
     motion_kinematics(x, k);
     k.q_WB = Eigen::Quaterniond(x[q + 3], x[q], x[q + 1], x[q + 2]);
     k.q_WB.coeffs() *= 1.0 / k.q_WB.coeffs().norm();
   }
   // p_W, v_W, w_B (the attitude left as it was)
-  static void motion_kinematics(const double* x, BodyKinematics& k) {
+  RIGIDDYN_ALWAYS_INLINE static void motion_kinematics(const double* x, BodyKinematics& k) {
     k.p_W = three(x + p);
     k.v_W = three(x + v);
     k.w_B = three(x + w);
   }
   // q ← q ⊗ exp(h ω_B) (exact for constant ω)
-  static void turn(double* x, double h) {
+  RIGIDDYN_ALWAYS_INLINE static void turn(double* x, double h) {
     const double q0[4] = {x[q], x[q + 1], x[q + 2], x[q + 3]};
     times_exp(q0, Eigen::Vector3d(h * x[w], h * x[w + 1], h * x[w + 2]), x + q);
   }
@@ -64,11 +64,11 @@ struct RigidSlot : Place, SpatialLayout {
     a_W = Eigen::Vector3d(inverse_mass * wrench.f_W[0], inverse_mass * wrench.f_W[1], inverse_mass * wrench.f_W[2]);
     alpha_B = euler.angular_acceleration(w_B, wrench.tau_B);
   }
-  void kinematics(const double* y, const StepClock&, BodyKinematics& k) const { SpatialLayout::kinematics(y + at_y, k); }
-  void motion_kinematics(const double* y, const StepClock&, BodyKinematics& k) const {
+  RIGIDDYN_ALWAYS_INLINE void kinematics(const double* y, const StepClock&, BodyKinematics& k) const { SpatialLayout::kinematics(y + at_y, k); }
+  RIGIDDYN_ALWAYS_INLINE void motion_kinematics(const double* y, const StepClock&, BodyKinematics& k) const {
     SpatialLayout::motion_kinematics(y + at_y, k);
   }
-  void rate(const double* y, const StepClock&, const BodyKinematics&, const BodyWrench& wrench, double* dy) const {
+  RIGIDDYN_ALWAYS_INLINE void rate(const double* y, const StepClock&, const BodyKinematics&, const BodyWrench& wrench, double* dy) const {
     const double* x = y + at_y;
     double* dx = dy + at_y;
     const Eigen::Vector3d w_B = three(x + w);
@@ -77,7 +77,7 @@ struct RigidSlot : Place, SpatialLayout {
     for (int i = 0; i < 3; ++i) dx[p + i] = x[v + i], dx[v + i] = a[i], dx[w + i] = alpha[i];
     quat_rate_body(x + q, w_B, dx + q);  // q̇ = ½ q ⊗ (ω_B, 0)
   }
-  void velocity(const double* y, const StepClock&, const BodyKinematics&, const BodyWrench& wrench, double* xi) const {
+  RIGIDDYN_ALWAYS_INLINE void velocity(const double* y, const StepClock&, const BodyKinematics&, const BodyWrench& wrench, double* xi) const {
     const double* x = y + at_y;
     double* u = xi + at_xi;
     const Eigen::Vector3d w_B = three(x + w);
@@ -85,33 +85,33 @@ struct RigidSlot : Place, SpatialLayout {
     newton_euler(w_B, wrench, a, alpha);
     for (int i = 0; i < 3; ++i) u[xi_v + i] = x[v + i], u[xi_w + i] = w_B[i], u[xi_a + i] = a[i], u[xi_a + 3 + i] = alpha[i];
   }
-  void retract(const double* y, const double* theta, double* out) const {
+  RIGIDDYN_ALWAYS_INLINE void retract(const double* y, const double* theta, double* out) const {
     retract_motion(y, theta, out);
     times_exp(y + at_y + q, three(theta + at_xi + xi_w), out + at_y + q);
   }
   // retract but the attitude, left as it was in out: for a stage whose rate reads no attitude (RKMK4's)
-  void retract_motion(const double* y, const double* theta, double* out) const {
+  RIGIDDYN_ALWAYS_INLINE void retract_motion(const double* y, const double* theta, double* out) const {
     for (int i = 0; i < 3; ++i) out[at_y + p + i] = y[at_y + p + i] + theta[at_xi + xi_v + i];
     for (int i = 0; i < 6; ++i) out[at_y + v + i] = y[at_y + v + i] + theta[at_xi + xi_a + i];
   }
-  void dexp_inv(const double* theta, double* xi) const { dexp_inv_body(theta + at_xi + xi_w, xi + at_xi + xi_w); }
-  void project(double* y) const { normalise_quaternion(y + at_y + q); }
+  RIGIDDYN_ALWAYS_INLINE void dexp_inv(const double* theta, double* xi) const { dexp_inv_body(theta + at_xi + xi_w, xi + at_xi + xi_w); }
+  RIGIDDYN_ALWAYS_INLINE void project(double* y) const { normalise_quaternion(y + at_y + q); }
   template <class GyroscopicKick>
-  void kick(double* y, const BodyKinematics&, const BodyWrench& wrench, double h, const GyroscopicKick& gyroscopic_kick) const {
+  RIGIDDYN_ALWAYS_INLINE void kick(double* y, const BodyKinematics&, const BodyWrench& wrench, double h, const GyroscopicKick& gyroscopic_kick) const {
     double* x = y + at_y;
     const Eigen::Vector3d w_B = gyroscopic_kick(euler, three(x + w), wrench.tau_B, h);
     for (int i = 0; i < 3; ++i) x[v + i] += (h * inverse_mass) * wrench.f_W[i], x[w + i] = w_B[i];
   }
-  void translate(double* y, double h) const {
+  RIGIDDYN_ALWAYS_INLINE void translate(double* y, double h) const {
     for (int i = 0; i < 3; ++i) y[at_y + p + i] += h * y[at_y + v + i];
   }
-  void turn(double* y, double h) const { SpatialLayout::turn(y + at_y, h); }
+  RIGIDDYN_ALWAYS_INLINE void turn(double* y, double h) const { SpatialLayout::turn(y + at_y, h); }
   template <class Rotation>
-  void free_rotation(double* y, double h) const {
+  RIGIDDYN_ALWAYS_INLINE void free_rotation(double* y, double h) const {
     free_rotation_by(Rotation{}, euler, flow, y + at_y + q, y + at_y + w, h);
   }
   template <class Kicks>
-  double loads_kick(double* y, BodyKinematics& k, const BodyWrench& wrench, double h, const Kicks& kicks) const {
+  RIGIDDYN_ALWAYS_INLINE double loads_kick(double* y, BodyKinematics& k, const BodyWrench& wrench, double h, const Kicks& kicks) const {
     Eigen::Vector3d a, alpha, dv, mean_v, dw, mean_w;
     newton_euler(Eigen::Vector3d::Zero(), wrench, a, alpha);  // ω = 0: I⁻¹ τ alone
     kicks.translation(h * a, dv, mean_v);
