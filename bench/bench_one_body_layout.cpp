@@ -4,7 +4,7 @@
 // and a body-frame force and torque switched on for part of the run. Both through the public entries, the run's
 // records every 1000th step.
 //   one_body_<kind>_<elements>_<method>   the layout's run over the one-body model's run
-//   one_body_top_gravity_<method>        a heavy top: the layout it would take over the fast model it takes
+//   one_body_top_<elements>_<method>     a heavy top: the layout it would take over the fast model it takes
 // The layout carries t and, with loads, a work per element and the six impulses (the momentum balance reads them);
 // the one-body model carries one work. ctest runs it with RIGIDDYN_BENCH_SMALL=1 (fewer steps).
 #include <benchmark/benchmark.h>
@@ -82,8 +82,8 @@ void body_run(benchmark::State& state, const BodyCase& c, Elements elements, Met
   state.SetItemsProcessed(state.iterations() * o.steps);
 }
 
-// The heavy top (a PivotedBody under gravity), which compile gives its fast model: the layout it would take, run
-// directly (run_scene), over the scene's run on the fast model
+// The heavy top (a PivotedBody), which compile gives its fast model: the layout it would take, run directly
+// (run_scene), over the scene's run on the fast model; with no element, under gravity, and under gravity and loads
 PivotedBody top() { return PivotedBody(RigidBody(1.0, Eigen::Vector3d(0.05, 0.05, 0.08)), Eigen::Vector3d(0.0, 0.0, 0.2)); }
 PivotedBodyState top_state() {
   PivotedBodyState s;
@@ -91,30 +91,41 @@ PivotedBodyState top_state() {
   s.w_B = Eigen::Vector3d(0.5, 0.0, 12.0);
   return s;
 }
-Scene top_scene() {
+Scene top_scene(Elements elements) {
   Scene scene;
   scene.bodies = {top()};
-  scene.elements = {UniformGravity{kG, {}}};
+  if (elements != Elements::none) scene.elements.push_back(UniformGravity{kG, {}});
+  if (elements == Elements::gravity_and_loads) scene.elements.push_back(ScheduledLoads{0, {push()}, Eigen::Vector3d::Zero()});
   return scene;
 }
 
-void top_layout(benchmark::State& state, Method method) {
-  const Scene scene = top_scene();
-  const CompiledScene compiled = compile_scene(scene, method);
+template <OneBodyElements elements>
+void top_layout_of(benchmark::State& state, Elements e, Method method) {
+  const CompiledScene compiled = compile_scene(top_scene(e), method);
   const SimulationOptions o = options(method);
-  const auto& gravity = std::get<UniformGravityTerm>(compiled.model().terms()[0]);
+  const auto& terms = compiled.model().terms();
+  std::optional<UniformGravityTerm> gravity;
+  std::optional<ScheduledLoadsTerm> loads;
+  if (!terms.empty()) gravity = std::get<UniformGravityTerm>(terms[0]);
+  if (terms.size() > 1) loads = std::get<ScheduledLoadsTerm>(terms[1]);
   detail::with_first_slot(top(), [&](const auto& slot) {
     using Slot = std::decay_t<decltype(slot)>;
-    const OneBodySceneModel<Slot, OneBodyElements::gravity> model(slot, 1.0, gravity, 0, std::nullopt, -1);
+    const OneBodySceneModel<Slot, elements> model(slot, 1.0, gravity, 0, loads, 1);
     for (auto _ : state) {
-      benchmark::DoNotOptimize(detail::run_scene(model, model.coordinates({top_state()}, o.t0), o, {}));
+      benchmark::DoNotOptimize(detail::run_scene(model, model.coordinates({top_state()}, o.t0), o, compiled.switch_schedule()));
     }
   });
   state.SetItemsProcessed(state.iterations() * o.steps);
 }
 
-void top_fast(benchmark::State& state, Method method) {
-  const CompiledScene compiled = compile_scene(top_scene(), method);
+void top_layout(benchmark::State& state, Elements e, Method method) {
+  if (e == Elements::none) return top_layout_of<OneBodyElements::none>(state, e, method);
+  if (e == Elements::gravity) return top_layout_of<OneBodyElements::gravity>(state, e, method);
+  top_layout_of<OneBodyElements::gravity_and_loads>(state, e, method);
+}
+
+void top_fast(benchmark::State& state, Elements e, Method method) {
+  const CompiledScene compiled = compile_scene(top_scene(e), method);
   const SimulationOptions o = options(method);
   for (auto _ : state) benchmark::DoNotOptimize(simulate(compiled, {top_state()}, o));
   state.SetItemsProcessed(state.iterations() * o.steps);
@@ -136,12 +147,14 @@ bool register_cases() {
       }
     }
   }
-  for (const Method m : methods) {
-    const std::string name = std::string("one_body_top_gravity_") + method_info(m).name;
-    benchmark::RegisterBenchmark((name + ":rigiddyn").c_str(), [m](benchmark::State& s) { top_layout(s, m); })
-        ->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark((name + ":baseline").c_str(), [m](benchmark::State& s) { top_fast(s, m); })
-        ->Unit(benchmark::kMillisecond);
+  for (const Elements e : {Elements::none, Elements::gravity, Elements::gravity_and_loads}) {
+    for (const Method m : methods) {
+      const std::string name = std::string("one_body_top_") + name_of(e) + "_" + method_info(m).name;
+      benchmark::RegisterBenchmark((name + ":rigiddyn").c_str(), [e, m](benchmark::State& s) { top_layout(s, e, m); })
+          ->Unit(benchmark::kMillisecond);
+      benchmark::RegisterBenchmark((name + ":baseline").c_str(), [e, m](benchmark::State& s) { top_fast(s, e, m); })
+          ->Unit(benchmark::kMillisecond);
+    }
   }
   return true;
 }

@@ -95,7 +95,7 @@ struct ScenePieces {
 
 // ScenePieces of a fixed-size model (a one-body layout, a fast model), whose t sits at time_index in y, known at
 // compile time: at_time's store at a constant index leaves y in registers across the steps, where a store at an
-// index read at run time puts y in memory at every step (2–4× the step of a particle's splittings).
+// index read at run time puts y in memory at every step (fixed_place_of_t says for which methods).
 template <Eigen::Index time_index>
 struct FixedScenePieces {
   const std::vector<AppliedLoad>& schedule;
@@ -104,6 +104,13 @@ struct FixedScenePieces {
   template <class Coordinates>
   static void at_time(Coordinates& y, double t) { y[time_index] = t; }
 };
+
+// Whether a run of Integrator on a fixed-size model writes t at its constant place (FixedScenePieces), chosen per
+// method by measurement (docs/perf/scenes.md §4.1): every method but classical RK4. A kick–drift step updates y in
+// place sub-step by sub-step, and y in memory cost a particle's splittings 2–3×; RK4 keeps its four rates live to
+// the end of the step, and y in registers besides cost a heavy top's step 123 ns against 76 ns with y in memory.
+template <class Integrator>
+inline constexpr bool fixed_place_of_t = !std::is_same_v<Integrator, Rk4>;
 
 // The checks of simulate/step on the options and the initial states (see simulate above); returns the
 // states with their quaternions normalised.
@@ -134,7 +141,7 @@ SceneSimulation run_scene(const Model& model, const typename Model::Coordinates&
   if constexpr (records_wheels<Model>::value) wheels = model.wheel_count();
   SceneSimulation out = reserved_scene_simulation(o.steps, o.record_every, model.body_count(), model.element_count(), wheels);
   return visit_method(o.method, [&](auto integrator) {
-    if constexpr (has_fixed_size<Model>) {
+    if constexpr (has_fixed_size<Model> && fixed_place_of_t<decltype(integrator)>) {
       return run<decltype(integrator)>(model, y, o, FixedScenePieces<Model::time_index()>{switch_schedule}, std::move(out));
     } else {
       return run<decltype(integrator)>(model, y, o, ScenePieces{switch_schedule, model.time_index(), hooks}, std::move(out));
