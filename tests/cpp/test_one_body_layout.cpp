@@ -27,6 +27,7 @@ struct Case {
   BodyState state;
   AppliedLoad load;      // the ScheduledLoads' load (on for part of the run: its switches split steps)
   Eigen::Vector3d g_W;   // the UniformGravity's
+  Eigen::Vector3d point_B = Eigen::Vector3d::Zero();  // the ScheduledLoads' point of application
 };
 
 AppliedLoad load_of(const Eigen::Vector3d& force, const Eigen::Vector3d& torque, Frame frame) {
@@ -54,6 +55,13 @@ std::vector<Case> cases() {
       {"spherical", RigidBody(2.0, Eigen::Vector3d(1.0, 1.0, 1.0)), tumbling, turning, down},
       {"principal", RigidBody(2.0, Eigen::Vector3d(1.0, 2.0, 3.0)), tumbling, turning, down},
       {"full", RigidBody(2.0, full), tumbling, turning, down},
+      // loads that need no attitude, that need R_WB for their torque's impulse alone, and a force off the centre
+      {"principal, world force", RigidBody(2.0, Eigen::Vector3d(1.0, 2.0, 3.0)), tumbling,
+       load_of(Eigen::Vector3d(0.3, -0.1, 0.2), Eigen::Vector3d::Zero(), Frame::world), down},
+      {"principal, body torque", RigidBody(2.0, Eigen::Vector3d(1.0, 2.0, 3.0)), tumbling,
+       load_of(Eigen::Vector3d::Zero(), Eigen::Vector3d(0.3, -0.2, 0.4), Frame::body), down},
+      {"full, world force off the centre", RigidBody(2.0, full), tumbling,
+       load_of(Eigen::Vector3d(0.3, -0.1, 0.2), Eigen::Vector3d::Zero(), Frame::world), down, Eigen::Vector3d(0.1, 0.2, -0.3)},
       {"pinned planar", PivotedPlanarBody(1.0, 0.1, Eigen::Vector2d(0.1, -0.5)), PivotedPlanarBodyState{0.5, 1.0}, in_plane,
        Eigen::Vector3d(0.0, -9.81, 0.0)},
   };
@@ -63,7 +71,7 @@ std::vector<Case> cases() {
 std::vector<Element> elements_of(const Case& c, int set) {
   std::vector<Element> out;
   if (set & 1) out.push_back(UniformGravity{c.g_W, {}});
-  if (set & 2) out.push_back(ScheduledLoads{0, {c.load}, Eigen::Vector3d::Zero()});
+  if (set & 2) out.push_back(ScheduledLoads{0, {c.load}, c.point_B});
   if (set & 4) std::reverse(out.begin(), out.end());
   return out;
 }

@@ -108,8 +108,7 @@ class OneBodySceneModel {
     if (gravity_) column_[gravity_element] = 0;
     if (loads_) {
       column_[loads_element] = 1;
-      const ElementTraits t = loads_->traits();
-      turns_vectors_ = t.reads_attitude || t.has_torque;
+      turns_vectors_ = loads_->piece_turns_vectors();
     }
     element_count_ = (gravity_ ? 1 : 0) + (loads_ ? 1 : 0);
   }
@@ -121,9 +120,12 @@ class OneBodySceneModel {
   static constexpr std::size_t body_count() { return 1; }
   std::size_t element_count() const { return element_count_; }
 
-  // As SceneModel::set_time: the loads of the piece at t [s]
+  // As SceneModel::set_time: the loads of the piece at t [s], and whether its evaluations need R_WB
   void set_time(double t) {
-    if (loads_) loads_->set_time(t);
+    if (loads_) {
+      loads_->set_time(t);
+      turns_vectors_ = loads_->piece_turns_vectors();
+    }
   }
 
   // ẏ (SceneModel::rate)
@@ -341,7 +343,8 @@ class OneBodySceneModel {
   std::optional<ScheduledLoadsTerm> loads_;
   std::array<int, 2> column_{};     // column_[e]: where element e's work is among the two (0 gravity, 1 loads)
   std::size_t element_count_ = 0;
-  bool turns_vectors_ = false;      // the loads read the attitude or give a torque: the kinematics carry R_WB
+  bool turns_vectors_ = false;      // the loads' current piece reads the attitude or gives a torque: the kinematics
+                                    // carry R_WB (the generic model decides it once per run)
   // the run's start (its first record) under exact gravity: t0 [s], p0 [m], m v0 [kg m/s], V(t0) [J]
   struct Start {
     double t = 0.0;

@@ -92,24 +92,33 @@ class ScheduledLoadsTerm {
   }
 
   // Sets the loads of the piece that contains t [s] (between switch times the loads are constant).
-  void set_time(double t) { loads_ = loads_at(schedule_, t); }
+  void set_time(double t) { set_piece(loads_at(schedule_, t)); }
 
   // A controller's command (scene/controller.hpp): the force f_B [N] in B at point_B alone, until the next one
   // (a thruster; the schedule's loads are replaced).
   void command(const Eigen::Vector3d& f_B) {
-    loads_ = ComLoads{};
-    loads_.f_B = f_B;
+    ComLoads loads;
+    loads.f_B = f_B;
+    set_piece(loads);
   }
 
-  // f_W = f_W + R f_B, τ_B = τ_B + Rᵀ τ_W + r_B × Rᵀ f_W on the body (R = R_WB of its unit attitude);
-  // returns f_W·v_W + τ_B·ω_B [W].
+  // Whether the current piece needs the body's R_WB: to turn its loads (a force in B, a torque in W, a force off
+  // the centre of mass) or for the moment R_WB τ_B of its torque about W's origin (the impulses)
+  bool piece_turns_vectors() const { return turns_ || torque_; }
+
+  // f_W = f_W + R f_B, τ_B = τ_B + Rᵀ τ_W + r_B × Rᵀ f_W on the body (R = R_WB of its unit attitude, read only where
+  // the current piece turns a load); returns f_W·v_W + τ_B·ω_B [W] (zero in a piece without a load).
   double add_wrenches(double /*t*/, const std::vector<BodyKinematics>& kinematics, std::vector<BodyWrench>& wrenches) const {
     return add_wrench(kinematics[body_], wrenches[body_]);
   }
   // The same on its body of kinematics k (the one-body layout, scene/one_body_scene_model.hpp)
   RIGIDDYN_ALWAYS_INLINE double add_wrench(const BodyKinematics& k, BodyWrench& wrench) const {
-    const Eigen::Vector3d f_W = loads_.f_W + k.R_WB * loads_.f_B;
-    const Eigen::Vector3d tau_B = loads_.tau_B + k.R_WB.transpose() * loads_.tau_W + point_B_.cross(k.R_WB.transpose() * f_W);
+    if (!acts_) return 0.0;
+    Eigen::Vector3d f_W = loads_.f_W, tau_B = loads_.tau_B;
+    if (turns_) {
+      f_W = loads_.f_W + k.R_WB * loads_.f_B;
+      tau_B = loads_.tau_B + k.R_WB.transpose() * loads_.tau_W + point_B_.cross(k.R_WB.transpose() * f_W);
+    }
     wrench.f_W += f_W;
     wrench.tau_B += tau_B;
     return f_W.dot(k.v_W) + tau_B.dot(k.w_B);
@@ -152,10 +161,22 @@ class ScheduledLoadsTerm {
     }
   }
 
+  // loads_ ← `loads`, with what the piece needs (the parts that are zero cost nothing in an evaluation)
+  void set_piece(const ComLoads& loads) {
+    loads_ = loads;
+    const bool force = !(loads.f_W.isZero(0.0) && loads.f_B.isZero(0.0));
+    turns_ = !(loads.f_B.isZero(0.0) && loads.tau_W.isZero(0.0)) || (force && !point_B_.isZero(0.0));
+    torque_ = !(loads.tau_B.isZero(0.0) && loads.tau_W.isZero(0.0));
+    acts_ = force || torque_;
+  }
+
   int body_;
   std::vector<AppliedLoad> schedule_;
   Eigen::Vector3d point_B_;
-  ComLoads loads_;  // the sum of the loads active in the current piece
+  ComLoads loads_;      // the sum of the loads active in the current piece
+  bool acts_ = false;   // the piece has a load
+  bool turns_ = false;  // it has a force in B, a torque in W or a force off the centre of mass: it reads R_WB
+  bool torque_ = false; // it has a torque (in B or W)
 };
 
 }  // namespace rigiddyn
