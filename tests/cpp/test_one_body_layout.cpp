@@ -4,7 +4,8 @@
 // every element set in either order. The implicit midpoint is held to its solver's tolerance instead: its
 // convergence test takes the norm of the layout's shorter coordinates. Under gravity alone the work and the impulses
 // are exact from the records: V(t0) − V(t) and, for a free body, m g (t − t0) and Δ(p × m v), which the generic
-// model's integrals of a free or planar body's translation match to their rounding.
+// model's integrals of a free or planar body's translation match to their rounding. A pivoted body's layout, which
+// compile does not choose yet, is held to the same.
 #include <gtest/gtest.h>
 
 #include "rigiddyn/integrators/implicit_midpoint.hpp"
@@ -13,7 +14,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace rigiddyn {
@@ -171,6 +174,89 @@ TEST(OneBodyLayout, MovesTheBodyBitwiseAsTheGenericModel) {
         EXPECT_EQ(layout.diverged, generic.diverged);
         EXPECT_EQ(layout.unconverged_steps, generic.unconverged_steps);
       }
+    }
+  }
+}
+
+// A pivoted body's layout (which compile does not choose yet: its fast model is faster under loads), run directly as
+// docs/perf/scenes.md measures it, moves the body bitwise as the generic model does: with no element (its stages
+// then leave the attitude unformed, read only through a force), under gravity (the work V(t0) − V(t) to the
+// rounding of one difference: the pivot does none) and under gravity and loads, each Euler form about the pivot.
+template <OneBodyElements elements>
+void expect_pivoted_layout_bitwise(const PivotedBody& body, const PivotedBodyState& state, Method method) {
+  Scene scene;
+  scene.bodies = {body};
+  if (elements != OneBodyElements::none) scene.elements.push_back(UniformGravity{Eigen::Vector3d(0.0, 0.0, -9.81), {}});
+  if (elements == OneBodyElements::gravity_and_loads) {
+    scene.elements.push_back(ScheduledLoads{
+        0, {load_of(Eigen::Vector3d(0.1, -0.3, 0.2), Eigen::Vector3d(0.3, -0.2, 0.4), Frame::body)}, Eigen::Vector3d::Zero()});
+  }
+  const CompiledScene compiled = compile_scene(scene, method);
+  SimulationOptions o;
+  o.method = method, o.dt = 0.01, o.steps = 100, o.record_every = 3;
+  const auto& terms = compiled.model().terms();
+  std::optional<UniformGravityTerm> gravity;
+  std::optional<ScheduledLoadsTerm> loads;
+  if (!terms.empty()) gravity = std::get<UniformGravityTerm>(terms[0]);
+  if (terms.size() > 1) loads = std::get<ScheduledLoadsTerm>(terms[1]);
+  int slots = 0;
+  detail::with_first_slot(body, [&](const auto& slot) {
+    ++slots;
+    using Slot = std::decay_t<decltype(slot)>;
+    const OneBodySceneModel<Slot, elements> layout_model(slot, body.mass(), gravity, 0, loads, 1);
+    const SceneSimulation layout =
+        detail::run_scene(layout_model, layout_model.coordinates({state}, o.t0), o, compiled.switch_schedule());
+    const SceneModel& model = compiled.model();
+    const SceneSimulation generic =
+        detail::run_generic_scene(model, model.coordinates({state}, o.t0), o, compiled.switch_schedule(), nullptr);
+    ASSERT_EQ(layout.size(), generic.size());
+    // the implicit midpoint to its solver's tolerance (the bound of the test above)
+    const bool midpoint = method == Method::implicit_midpoint;
+    const auto expect_column = [&](const std::vector<double>& a, const std::vector<double>& b, const char* what) {
+      if (!midpoint) {
+        EXPECT_EQ(a, b) << what;
+        return;
+      }
+      expect_near_columns(a, b, 2000.0 * implicit_midpoint_solver::tolerance * (1.0 + largest(b)), what);
+    };
+    for (const auto column : {&SceneSimulation::t, &SceneSimulation::p_W, &SceneSimulation::q_WB, &SceneSimulation::v_W,
+                              &SceneSimulation::w_B, &SceneSimulation::kinetic_energy, &SceneSimulation::potential_energy,
+                              &SceneSimulation::total_energy, &SceneSimulation::pivot_reaction_W,
+                              &SceneSimulation::angular_momentum_O_W, &SceneSimulation::power}) {
+      expect_column(layout.*column, generic.*column, "a column");
+    }
+    if (elements != OneBodyElements::gravity) {
+      expect_column(layout.work, generic.work, "work");
+    } else {
+      for (std::size_t r = 0; r < layout.size(); ++r) {  // W + V = V(t0) to the rounding of one difference
+        EXPECT_NEAR(layout.work[r] + layout.potential_energy[r], layout.potential_energy[0],
+                    4.0 * kEps * largest(layout.potential_energy));
+      }
+    }
+    EXPECT_EQ(layout.diverged, generic.diverged);
+  });
+  EXPECT_EQ(slots, 1);
+}
+
+TEST(OneBodyLayout, MovesAPivotedBodyBitwiseAsTheGenericModel) {
+  Eigen::Matrix3d full;
+  full << 0.05, 0.004, -0.002, 0.004, 0.06, 0.003, -0.002, 0.003, 0.08;
+  const Eigen::Vector3d p_OC_B(0.02, -0.01, 0.2);
+  PivotedBodyState state;
+  state.q_WB = Eigen::Quaterniond(Eigen::AngleAxisd(0.5, Eigen::Vector3d(1.0, 0.3, 0.0).normalized()));
+  state.w_B = Eigen::Vector3d(0.5, -0.3, 12.0);
+  // about O: a sphere's inertia stays spherical only with c at O; principal with c on a principal axis; full otherwise
+  const std::vector<PivotedBody> bodies = {
+      PivotedBody(RigidBody(1.0, Eigen::Vector3d(0.05, 0.05, 0.05)), Eigen::Vector3d::Zero()),
+      PivotedBody(RigidBody(1.0, Eigen::Vector3d(0.05, 0.05, 0.08)), Eigen::Vector3d(0.0, 0.0, 0.2)),
+      PivotedBody(RigidBody(1.0, full), p_OC_B)};
+  for (const PivotedBody& body : bodies) {
+    for (const MethodInfo& info : method_table()) {
+      if (info.method == Method::exact) continue;
+      SCOPED_TRACE(std::string(info.name) + ", inertia about O " + std::to_string(body.inertia_O()(0, 0)));
+      expect_pivoted_layout_bitwise<OneBodyElements::none>(body, state, info.method);
+      expect_pivoted_layout_bitwise<OneBodyElements::gravity>(body, state, info.method);
+      expect_pivoted_layout_bitwise<OneBodyElements::gravity_and_loads>(body, state, info.method);
     }
   }
 }

@@ -114,8 +114,10 @@ RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d rotate_to_body(const Eigen::Quaterniond& 
 // The wrench (f_W at C in the scene frame [N], tau_B about C in B [N m]) reduced to the pivot O, in B:
 //   τ_O = tau_B + c × (R_BW f_W)  [N m]  (moment transfer, Craig, "Rigid Body Dynamics" slides),
 // c = c_B = p_OC_B [m]. For a force applied at the body point P = C + r_B, pass c_B + r_B and tau_B the couple.
+// Without a force the attitude is not read (the one-body layout without an element leaves it unformed at its stages).
 RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d pivoted_torque_O(const Eigen::Vector3d& c_B, const Eigen::Quaterniond& q_WB,
                                                         const BodyWrench& wrench) {
+  if (wrench.f_W[0] == 0.0 && wrench.f_W[1] == 0.0 && wrench.f_W[2] == 0.0) return wrench.tau_B;
   const Eigen::Vector3d c_x_f = cross_3(c_B, rotate_to_body(q_WB, wrench.f_W));
   return Eigen::Vector3d(wrench.tau_B[0] + c_x_f[0], wrench.tau_B[1] + c_x_f[1], wrench.tau_B[2] + c_x_f[2]);
 }

@@ -2,7 +2,7 @@
 // rigid body or pinned planar body, in W, without a mass flow, under at most one UniformGravity and one
 // ScheduledLoads. Under gravity alone a body takes the layout that integrates its motion alone
 // (OneBodyElements::gravity). A pivoted body keeps its fast model (scene/fast/pivoted_body_model.hpp), measured
-// faster than its layout.
+// faster than its layout under loads.
 #pragma once
 #include "rigiddyn/scene/one_body_scene_model.hpp"
 #include "rigiddyn/scene/scene.hpp"

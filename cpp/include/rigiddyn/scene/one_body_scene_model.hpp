@@ -154,10 +154,11 @@ class OneBodySceneModel {
   }
 
   // ξ(y ⊕ Θ); the stage's attitude is skipped where neither the kind's velocity nor a term reads it (as the
-  // one-body models do: ξ is the same)
+  // one-body models do: ξ is the same): a kind that reads its kinematics reads the attitude only through a force,
+  // and there is none without an element
   RIGIDDYN_ALWAYS_INLINE void velocity_at(const Coordinates& y, const Tangent& theta, Tangent& xi) const {
     Coordinates stage;
-    if constexpr (detail::has_retract_motion<Slot>::value && !detail::reads_kinematics<Slot>::value) {
+    if constexpr (detail::has_retract_motion<Slot>::value && (!detail::reads_kinematics<Slot>::value || !loaded)) {
       if (!turns_vectors_) {
         slot_.retract_motion(y.data(), theta.data(), stage.data());
         for (int i = 0; i < 1 + work_size + impulse_size; ++i) stage[t_y + i] = y[t_y + i] + theta[t_xi + i];

@@ -49,6 +49,12 @@ struct PivotedSlot : Place {
     times_exp(y + at_y + q, three(theta + at_xi), out + at_y + q);
     for (int i = 0; i < 3; ++i) out[at_y + w + i] = y[at_y + w + i] + theta[at_xi + 3 + i];
   }
+  // retract but the attitude, y's kept: for a stage whose velocity reads the attitude only through a force (the
+  // one-body layout without an element)
+  RIGIDDYN_ALWAYS_INLINE void retract_motion(const double* y, const double* theta, double* out) const {
+    for (int i = 0; i < 4; ++i) out[at_y + q + i] = y[at_y + q + i];
+    for (int i = 0; i < 3; ++i) out[at_y + w + i] = y[at_y + w + i] + theta[at_xi + 3 + i];
+  }
   RIGIDDYN_ALWAYS_INLINE void dexp_inv(const double* theta, double* xi) const { dexp_inv_body(theta + at_xi, xi + at_xi); }
   RIGIDDYN_ALWAYS_INLINE void project(double* y) const { normalise_quaternion(y + at_y + q); }
   // Euler's equations about O with the wrench reduced to O
