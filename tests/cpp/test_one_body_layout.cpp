@@ -91,6 +91,18 @@ void expect_near_columns(const std::vector<double>& layout, const std::vector<do
   for (std::size_t i = 0; i < layout.size(); ++i) EXPECT_NEAR(layout[i], generic[i], bound) << what << "[" << i << "]";
 }
 
+// The same column of the layout's run and of the generic model's: bitwise, but for the implicit midpoint: two solves
+// of one fixed point, each to the solver's tolerance relative to the state, differ by at most 2 × tolerance × |y| a
+// step; over the 100 steps of these short runs (their flows do not amplify a difference tenfold in 1 s),
+// 100 × 2 × tolerance × |y| × 10
+void expect_column(const std::vector<double>& layout, const std::vector<double>& generic, Method method, const char* what) {
+  if (method != Method::implicit_midpoint) {
+    EXPECT_EQ(layout, generic) << what;
+    return;
+  }
+  expect_near_columns(layout, generic, 2000.0 * implicit_midpoint_solver::tolerance * (1.0 + largest(generic)), what);
+}
+
 TEST(OneBodyLayout, MovesTheBodyBitwiseAsTheGenericModel) {
   for (const Case& c : cases()) {
     for (const int set : {0, 1, 2, 3, 7}) {
@@ -109,29 +121,19 @@ TEST(OneBodyLayout, MovesTheBodyBitwiseAsTheGenericModel) {
         const SceneSimulation generic =
             detail::run_generic_scene(model, model.coordinates({c.state}, o.t0), o, compiled.switch_schedule(), nullptr);
         ASSERT_EQ(layout.size(), generic.size());
-        // the implicit midpoint: two solves of one fixed point, each to the solver's tolerance relative to the
-        // state, differ by at most 2 × tolerance × |y| a step; over 100 steps of this short run (its flow does not
-        // amplify a difference tenfold in 1 s), 100 × 2 × tolerance × |y| × 10
         const bool midpoint = info.method == Method::implicit_midpoint;
-        const auto expect_column = [&](const std::vector<double>& a, const std::vector<double>& b, const char* what) {
-          if (!midpoint) {
-            EXPECT_EQ(a, b) << what;
-            return;
-          }
-          expect_near_columns(a, b, 2000.0 * implicit_midpoint_solver::tolerance * (1.0 + largest(b)), what);
-        };
         for (const auto column : {&SceneSimulation::t, &SceneSimulation::p_W, &SceneSimulation::q_WB, &SceneSimulation::v_W,
                                   &SceneSimulation::w_B, &SceneSimulation::kinetic_energy, &SceneSimulation::potential_energy,
                                   &SceneSimulation::total_energy, &SceneSimulation::linear_momentum_W,
                                   &SceneSimulation::angular_momentum_W, &SceneSimulation::pivot_reaction_W,
                                   &SceneSimulation::angular_momentum_O_W, &SceneSimulation::mass, &SceneSimulation::power}) {
-          expect_column(layout.*column, generic.*column, "a column");
+          expect_column(layout.*column, generic.*column, info.method, "a column");
         }
         const bool constrained = std::holds_alternative<PlanarBody>(c.body) || std::holds_alternative<PivotedPlanarBody>(c.body);
         const bool exact_gravity = set == 1;
         const bool pinned = std::holds_alternative<PivotedPlanarBody>(c.body);
         if (!exact_gravity) {
-          expect_column(layout.work, generic.work, "work");
+          expect_column(layout.work, generic.work, info.method, "work");
         } else if (pinned) {
           // gravity's work is V(t0) − V(t) (the pivot does none), where the generic model integrates m g·v_C with
           // the method's error: W + V = V(t0) to the rounding of one difference, 2 ε max|V|
@@ -153,8 +155,8 @@ TEST(OneBodyLayout, MovesTheBodyBitwiseAsTheGenericModel) {
           EXPECT_TRUE(layout.impulse_W.empty());  // its momentum balance is not applicable
           EXPECT_TRUE(layout.angular_impulse_W.empty());
         } else if (!exact_gravity) {
-          expect_column(layout.impulse_W, generic.impulse_W, "impulse_W");
-          expect_column(layout.angular_impulse_W, generic.angular_impulse_W, "angular_impulse_W");
+          expect_column(layout.impulse_W, generic.impulse_W, info.method, "impulse_W");
+          expect_column(layout.angular_impulse_W, generic.angular_impulse_W, info.method, "angular_impulse_W");
         } else {
           // J = m g (t − t0) against the sum of its 100 h m g: 100 ε |J|; K = Δ(p × m v) against the sum of
           // h p × m g, which telescopes as the work does: 100 ε m |g| max|p| t plus the rounding of the differences
@@ -210,23 +212,14 @@ void expect_pivoted_layout_bitwise(const PivotedBody& body, const PivotedBodySta
     const SceneSimulation generic =
         detail::run_generic_scene(model, model.coordinates({state}, o.t0), o, compiled.switch_schedule(), nullptr);
     ASSERT_EQ(layout.size(), generic.size());
-    // the implicit midpoint to its solver's tolerance (the bound of the test above)
-    const bool midpoint = method == Method::implicit_midpoint;
-    const auto expect_column = [&](const std::vector<double>& a, const std::vector<double>& b, const char* what) {
-      if (!midpoint) {
-        EXPECT_EQ(a, b) << what;
-        return;
-      }
-      expect_near_columns(a, b, 2000.0 * implicit_midpoint_solver::tolerance * (1.0 + largest(b)), what);
-    };
     for (const auto column : {&SceneSimulation::t, &SceneSimulation::p_W, &SceneSimulation::q_WB, &SceneSimulation::v_W,
                               &SceneSimulation::w_B, &SceneSimulation::kinetic_energy, &SceneSimulation::potential_energy,
                               &SceneSimulation::total_energy, &SceneSimulation::pivot_reaction_W,
                               &SceneSimulation::angular_momentum_O_W, &SceneSimulation::power}) {
-      expect_column(layout.*column, generic.*column, "a column");
+      expect_column(layout.*column, generic.*column, method, "a column");
     }
     if (elements != OneBodyElements::gravity) {
-      expect_column(layout.work, generic.work, "work");
+      expect_column(layout.work, generic.work, method, "work");
     } else {
       for (std::size_t r = 0; r < layout.size(); ++r) {  // W + V = V(t0) to the rounding of one difference
         EXPECT_NEAR(layout.work[r] + layout.potential_energy[r], layout.potential_energy[0],
