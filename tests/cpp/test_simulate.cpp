@@ -202,6 +202,34 @@ TEST(Simulate, MonitorSeesTheStepsAndStopsTheRun) {
   EXPECT_EQ(whole.size(), 101u);
 }
 
+// A monitor that never stops changes no bit of a run, in any method, wherever the wall clock puts its calls: a
+// kick-drift-kick method's merged kicks (run_loop.hpp, merged_steps) run on across a call (its first calls come
+// after steps 1, 3, 7, ..., inside the first record interval), so that the run does not depend on the machine's speed.
+TEST(Simulate, AMonitorThatNeverStopsChangesNoBit) {
+  SimulationOptions o;
+  o.dt = 1e-3;
+  o.steps = 20000;
+  o.record_every = 5000;
+  o.gravity_W = standard_gravity();
+  AppliedLoad load{Eigen::Vector3d(0.3, -0.1, 0.2), Eigen::Vector3d(0.02, 0.01, -0.03), Frame::world};
+  load.t_end = 7.3004;  // a switch inside a step of the second record interval: the merged steps close before it
+  o.loads = {load};
+  for (const MethodInfo& info : method_table()) {
+    if (info.method == Method::exact) continue;  // it has no kick (the loads above are not its case either)
+    SCOPED_TRACE(info.name);
+    o.method = info.method;
+    o.monitor = [](std::int64_t) { return false; };
+    const Trajectory monitored = simulate(kBody, initial_state(), o);
+    o.monitor = nullptr;
+    const Trajectory plain = simulate(kBody, initial_state(), o);
+    EXPECT_EQ(monitored.p_W, plain.p_W);
+    EXPECT_EQ(monitored.q_WB, plain.q_WB);
+    EXPECT_EQ(monitored.v_W, plain.v_W);
+    EXPECT_EQ(monitored.w_B, plain.w_B);
+    EXPECT_EQ(monitored.work, plain.work);
+  }
+}
+
 TEST(Simulate, ExactMethodRecordsTheSameSteps) {
   SimulationOptions o;
   o.method = Method::exact;

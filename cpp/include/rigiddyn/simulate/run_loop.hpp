@@ -107,7 +107,8 @@ RIGIDDYN_ALWAYS_INLINE int advance(const Model& model, typename Model::Coordinat
 // step's opening kick act at the same positions, attitudes and t, so where the model's kicks merge (kicks_merge:
 // the loads do not depend on the velocities) they are one kick of 2 edge_kick h, the same flow to round-off: one
 // force evaluation saved per step. The run merges them over the plain steps between two records (and switch
-// times, and monitor calls), where the state is closed again.
+// times), where the state is closed again; a monitor call leaves it open (the monitor sees only the steps done), so
+// that where the wall clock puts the calls changes no bit of the run.
 template <class Integrator, class = void>
 struct has_edge_kick : std::false_type {};
 template <class Integrator>
@@ -127,19 +128,21 @@ bool merges_kicks(const Model& model) {
   }
 }
 
-// n >= 1 steps of h [s] from a closed state to a closed state with the adjacent kicks merged; after_step(k) after
-// the k-th step's drift (the pieces' at_time)
+// n >= 1 steps of h [s] with the adjacent kicks merged, from a closed state or from one left `open` (its last
+// step's closing kick still to give: merged with this first step's opening kick), to a closed state where `close`,
+// else to an open one; after_step(k) after the k-th step's drift (the pieces' at_time)
 template <class Integrator, class Model, class AfterStep>
-void merged_steps(const Model& model, typename Model::Coordinates& y, double h, std::int64_t n, AfterStep after_step) {
+void merged_steps(const Model& model, typename Model::Coordinates& y, double h, std::int64_t n, bool open, bool close,
+                  AfterStep after_step) {
   const double edge = Integrator::edge_kick * h;
-  model.loads_kick(y, edge);
+  model.loads_kick(y, open ? 2.0 * edge : edge);
   for (std::int64_t k = 1;; ++k) {
     Integrator::between_kicks(model, y, h);
     after_step(k);
     if (k == n) break;
     model.loads_kick(y, 2.0 * edge);
   }
-  model.loads_kick(y, edge);
+  if (close) model.loads_kick(y, edge);
 }
 
 // One step of Integrator from t_begin to t_end = t_begin + dt across the switch times [first, last)
@@ -181,6 +184,7 @@ Result run(Model model, typename Model::Coordinates y, const SimulationOptions& 
   const std::int64_t steps = o.steps, record_every = o.record_every;
   MonitorPace pace;
   [[maybe_unused]] const bool merge = merges_kicks<Integrator>(model);
+  [[maybe_unused]] bool open = false;  // merged steps left their closing kick to the next ones (at a monitor call)
   std::int64_t i = 0, until_record = record_every;
   std::int64_t next_monitor = o.monitor ? pace.interval() : std::numeric_limits<std::int64_t>::max();
   std::size_t k = 0;  // the next switch
@@ -192,7 +196,11 @@ Result run(Model model, typename Model::Coordinates y, const SimulationOptions& 
     if constexpr (has_edge_kick<Integrator>::value) {
       while (merge && i < plain_end) {  // up to the next record, merged (merged_steps)
         const std::int64_t n = std::min(plain_end - i, until_record), first = i;
-        merged_steps<Integrator>(model, y, dt, n, [&](std::int64_t k) { pieces.at_time(y, grid_time(o, first + k)); });
+        // closed for a record, the last step and a step across switch times; left open at a monitor call alone
+        const bool close = n == until_record || i + n == steps || i + n == split - 1;
+        merged_steps<Integrator>(model, y, dt, n, open, close,
+                                 [&](std::int64_t k) { pieces.at_time(y, grid_time(o, first + k)); });
+        open = !close;
         i += n;
         until_record -= n;
         if (until_record == 0 || i == steps) {
