@@ -5267,7 +5267,9 @@ class ToleranceChoice:
     The planner pilots each candidate method on a short run (16 steps over a quarter of the horizon, shortened and
     refined until its own global error estimate passes its order check), fits the error model
     eps(t) ~ C dt^p (t - t0) (p the order the model has under the method, linear growth in t), and runs the cheapest
-    (method, dt) predicted to meet half the tolerance, cost = steps x the seconds per step its pilot measured. When its
+    (method, dt) predicted to meet half the tolerance, cost = steps x the seconds per step its pilot measured (so that
+    two calls on machines of different speeds, or on one machine under different loads, may choose differently; a run of
+    a given method and dt is the same to the bit whatever the machine's pace). When its
     run has 64 steps or more, the chosen method then runs over the whole horizon at a quarter of those steps and its
     largest error, scaled by dt^p, sets the steps (an error that jumps after the short pilot's span is seen). The run's
     global error estimate (GlobalError) is the certificate: when it is not accepted (see met), or above the tolerance,
