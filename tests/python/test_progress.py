@@ -3,6 +3,8 @@ progress(done), as simulate (steps done) and simulate_batch (samples done) call 
 
 from __future__ import annotations
 
+import time
+
 import numpy as np
 import pytest
 
@@ -55,3 +57,24 @@ def test_monte_carlo_with_a_bar_gives_the_same_result(capsys):
 def test_monte_carlo_refuses_a_progress_that_is_neither_bool_nor_callable(bad):
     with pytest.raises(TypeError, match="progress: expected True, False or a callable"):
         mc.monte_carlo(BODY, STATE, 2, seed=1, dt=0.01, steps=2, progress=bad)
+
+
+@pytest.mark.parametrize("method", ["splitting_dlm", "splitting_dlm_yoshida4", "exact_flow_kick", "rk4"])
+def test_a_progress_callback_changes_no_bit_of_a_run(method):
+    # a slow callback moves the calls to other steps (their pace follows the wall clock); the kick-drift-kick
+    # methods merge a step's closing kick with the next one's opening kick across a call, so the run is the same
+    pairs = rd.Scene()
+    for mass in (1.0, 2.0, 0.5):
+        pairs.add_body(rd.Particle(mass))
+    pairs.add(rd.SpringDamper(body_a=0, body_b=1, stiffness=40.0, rest_length=0.8))
+    pairs.add(rd.SpringDamper(body_a=1, body_b=2, stiffness=25.0, rest_length=1.2))
+    states = [rd.ParticleState(p_W=(0.0, 0.1, 0.0)), rd.ParticleState(p_W=(1.0, 0.0, 0.0), v_W=(0.0, 0.3, 0.0)),
+              rd.ParticleState(p_W=(2.5, 0.0, 0.0))]
+
+    def slow(steps_done: int) -> None:
+        time.sleep(0.002)
+
+    plain = rd.simulate(pairs, states, 1e-3, 20000, method, record_every=5000, error=False)
+    watched = rd.simulate(pairs, states, 1e-3, 20000, method, record_every=5000, error=False, progress=slow)
+    for column in ("p_W", "v_W", "linear_momentum_W", "angular_momentum_W", "total_energy"):
+        np.testing.assert_array_equal(getattr(watched, column), getattr(plain, column), err_msg=column)
