@@ -40,7 +40,7 @@ CompiledScene pendulum_scene() {
 
 using Layout = OneBodySceneModel<detail::PivotedPlanarSlot<detail::FirstPlace>, OneBodyElements::gravity>;
 
-const Layout& layout(const CompiledScene& compiled) { return std::get<Layout>(compiled.one_body_layout()); }
+const Layout& layout(const CompiledScene& compiled) { return std::get<Layout>(compiled.one_body_model()); }
 
 // ---- the hand-written loop ---------------------------------------------------------------------------
 struct LoopPendulum {

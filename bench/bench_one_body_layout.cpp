@@ -1,6 +1,6 @@
 // One body as a scene, performance: the scene model's one-body layout (scene/one_body_scene_model.hpp, through
 // simulate(scene, ...)) against the one-body model of simulate(body, ...) with the same gravity and loads, for each
-// method, a particle and a rigid body (principal inertia), with no element, under gravity alone, and under gravity
+// method, a particle, a planar body and a rigid body (principal inertia), with no element, under gravity alone, and under gravity
 // and a body-frame force and torque switched on for part of the run. Both through the public entries, the run's
 // records every 1000th step.
 //   one_body_<kind>_<elements>_<method>   the layout's run over the one-body model's run
@@ -24,24 +24,33 @@ using namespace rigiddyn;
 
 std::int64_t steps() { return bench::bench_size(100000, 2000); }
 
-const Eigen::Vector3d kG(0.0, 0.0, -9.81);
-
-AppliedLoad push() {
-  AppliedLoad load{Eigen::Vector3d(0.1, -0.3, 0.2), Eigen::Vector3d(0.3, -0.2, 0.4), Frame::body};
-  load.t_end = 0.5;
-  return load;
-}
-
 struct BodyCase {
   const char* name;
   Body body;
   BodyState state;
 };
 
+// g [m/s²]: in the plane of a planar body
+Eigen::Vector3d gravity_of(const Body& body) {
+  return std::holds_alternative<PlanarBody>(body) ? Eigen::Vector3d(0.0, -9.81, 0.0) : Eigen::Vector3d(0.0, 0.0, -9.81);
+}
+
+// A body-frame force and torque on for the first half second (in the plane and about z for a planar body)
+AppliedLoad push(const Body& body) {
+  const bool planar = std::holds_alternative<PlanarBody>(body);
+  AppliedLoad load{Eigen::Vector3d(0.1, -0.3, planar ? 0.0 : 0.2),
+                   planar ? Eigen::Vector3d(0.0, 0.0, 0.4) : Eigen::Vector3d(0.3, -0.2, 0.4), Frame::body};
+  load.t_end = 0.5;
+  return load;
+}
+
 std::vector<BodyCase> bodies() {
   RigidBodyState tumbling;
   tumbling.v_W = Eigen::Vector3d(1.0, 0.0, 0.0), tumbling.w_B = Eigen::Vector3d(0.1, 2.0, 0.1);
+  PlanarBodyState spinning;
+  spinning.v_W = Eigen::Vector2d(1.0, 2.0), spinning.omega = 2.0;
   return {{"particle", Particle(2.0), ParticleState{Eigen::Vector3d::Zero(), Eigen::Vector3d(1.0, 2.0, 3.0)}},
+          {"planar", PlanarBody(1.0, 0.5), spinning},
           {"rigid", RigidBody(1.0, Eigen::Vector3d(1.0, 2.0, 3.0)), tumbling}};
 }
 
@@ -59,9 +68,9 @@ SimulationOptions options(Method method) {
 void layout_run(benchmark::State& state, const BodyCase& c, Elements elements, Method method) {
   Scene scene;
   scene.bodies = {c.body};
-  if (elements != Elements::none) scene.elements.push_back(UniformGravity{kG, {}});
+  if (elements != Elements::none) scene.elements.push_back(UniformGravity{gravity_of(c.body), {}});
   const bool loads = elements == Elements::gravity_and_loads && !std::holds_alternative<Particle>(c.body);
-  if (loads) scene.elements.push_back(ScheduledLoads{0, {push()}, Eigen::Vector3d::Zero()});
+  if (loads) scene.elements.push_back(ScheduledLoads{0, {push(c.body)}, Eigen::Vector3d::Zero()});
   const CompiledScene compiled = compile_scene(scene, method);
   const SimulationOptions o = options(method);
   for (auto _ : state) benchmark::DoNotOptimize(simulate(compiled, {c.state}, o));
@@ -70,11 +79,13 @@ void layout_run(benchmark::State& state, const BodyCase& c, Elements elements, M
 
 void body_run(benchmark::State& state, const BodyCase& c, Elements elements, Method method) {
   SimulationOptions o = options(method);
-  if (elements != Elements::none) o.gravity_W = kG;
-  if (elements == Elements::gravity_and_loads && !std::holds_alternative<Particle>(c.body)) o.loads = {push()};
+  if (elements != Elements::none) o.gravity_W = gravity_of(c.body);
+  if (elements == Elements::gravity_and_loads && !std::holds_alternative<Particle>(c.body)) o.loads = {push(c.body)};
   for (auto _ : state) {
     if (const auto* p = std::get_if<Particle>(&c.body)) {
       benchmark::DoNotOptimize(simulate(*p, std::get<ParticleState>(c.state), o));
+    } else if (const auto* planar = std::get_if<PlanarBody>(&c.body)) {
+      benchmark::DoNotOptimize(simulate(*planar, std::get<PlanarBodyState>(c.state), o));
     } else {
       benchmark::DoNotOptimize(simulate(std::get<RigidBody>(c.body), std::get<RigidBodyState>(c.state), o));
     }
@@ -94,8 +105,8 @@ PivotedBodyState top_state() {
 Scene top_scene(Elements elements) {
   Scene scene;
   scene.bodies = {top()};
-  if (elements != Elements::none) scene.elements.push_back(UniformGravity{kG, {}});
-  if (elements == Elements::gravity_and_loads) scene.elements.push_back(ScheduledLoads{0, {push()}, Eigen::Vector3d::Zero()});
+  if (elements != Elements::none) scene.elements.push_back(UniformGravity{gravity_of(scene.bodies[0]), {}});
+  if (elements == Elements::gravity_and_loads) scene.elements.push_back(ScheduledLoads{0, {push(scene.bodies[0])}, Eigen::Vector3d::Zero()});
   return scene;
 }
 

@@ -4,6 +4,8 @@
 //                                equations and outputs: p, v, m, t, the work of gravity and of the thrust
 //                                (m v̇ = m g + ṁ u_rel, notes eq. (4.36)). The hand loop does not check the
 //                                mass (the model does, once per evaluation and per step).
+//   variable_mass_particle_scene_rk4  the same scene on the generic SceneModel (what would run it without the
+//                                fast model), vs the same hand-written loop (it also integrates the impulses).
 // Both loops are out-of-line functions (rk4_model_steps, rk4_hand_steps), so that
 //   valgrind --tool=callgrind --toggle-collect='*rk4_model_steps*' (or *rk4_hand_steps*)
 // counts the instructions of each alone (Ir / steps: instructions per step).
@@ -12,6 +14,7 @@
 
 #include "bench_common.hpp"
 #include "rigiddyn/integrators/rk4.hpp"
+#include "rigiddyn/scene/compile.hpp"
 #include "rigiddyn/scene/fast/variable_mass_particle_model.hpp"
 
 #include <algorithm>
@@ -60,6 +63,25 @@ BENCH_NOINLINE void rk4_model_steps(const VariableMassParticleModel& model, Vari
   auto work = workspace<Rk4>(local, z);
   for (std::int64_t i = 0; i < n; ++i) Rk4::step(local, z, h, work);
   y = z;
+}
+
+// The same rocket as a scene, compiled (its generic model: compiled.model())
+CompiledScene scene_of(const Rocket& r) {
+  Scene scene;
+  scene.bodies = {Particle(r.m0)};
+  MassFlow flow;
+  flow.rate = r.rate;
+  scene.mass_flows = {flow};
+  Thrust thrust;
+  thrust.frame = Frame::world, thrust.u_rel = r.u_rel;
+  scene.elements = {UniformGravity{r.g, {}}, thrust};
+  return compile_scene(scene, Method::rk4);
+}
+
+// n RK4 steps of the generic model (as rk4_model_steps)
+BENCH_NOINLINE void rk4_scene_steps(const SceneModel& model, Eigen::VectorXd& y, std::int64_t n) {
+  auto work = workspace<Rk4>(model, y);
+  for (std::int64_t i = 0; i < n; ++i) Rk4::step(model, y, h, work);
 }
 
 // ---- the hand-written loop: y = (p 3, v 3, m, t, W_gravity, W_thrust) -------------------------------------
@@ -129,6 +151,20 @@ void model_rk4(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * n);
 }
 
+void scene_rk4(benchmark::State& state) {
+  const Rocket r;
+  const CompiledScene compiled = scene_of(r);
+  const SceneModel& model = compiled.model();
+  const std::int64_t n = steps();
+  for (auto _ : state) {
+    Eigen::VectorXd y = model.coordinates({BodyState(ParticleState{r.p0, r.v0})}, 0.0);
+    rk4_scene_steps(model, y, n);
+    benchmark::DoNotOptimize(y.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * n);
+}
+
 void hand_rk4(benchmark::State& state) {
   const Rocket r;
   const double difference = mismatch(r);
@@ -152,3 +188,5 @@ void hand_rk4(benchmark::State& state) {
 
 BENCHMARK(model_rk4)->Name("variable_mass_particle_rk4:rigiddyn");
 BENCHMARK(hand_rk4)->Name("variable_mass_particle_rk4:baseline");
+BENCHMARK(scene_rk4)->Name("variable_mass_particle_scene_rk4:rigiddyn");
+BENCHMARK(hand_rk4)->Name("variable_mass_particle_scene_rk4:baseline");

@@ -720,8 +720,8 @@ bool is_scene(py::handle model) {
 }
 
 // Why a scene's momentum balances do not apply to its run ("" when they do; rigiddyn._balance): a force the impulses
-// do not hold acts (a constraint's reaction, the momentum a mass flow carries, the exact Coriolis kick), or the run's
-// path does not integrate the impulses.
+// do not hold acts (a constraint's reaction, the momentum a mass flow carries, the exact Coriolis kick: the scenes of
+// the fast models among them, which integrate no impulses), or the run is the closed form.
 std::string momentum_balance_not_applicable(const CompiledScene& compiled) {
   const Scene& scene = compiled.scene();
   for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
@@ -739,8 +739,8 @@ std::string momentum_balance_not_applicable(const CompiledScene& compiled) {
   for (const std::string& type : compiled.element_types()) {
     if (type == "CoriolisForce") return "the Coriolis kick of a turning frame is not integrated into the impulses";
   }
-  if ((compiled.one_body_path() && compiled.method() == Method::exact) || compiled.fast_model().index() != 0) {
-    return "the run's path (the closed form, or a specialised model) does not integrate the impulses";
+  if (compiled.closed_form()) {
+    return "the closed form of the run does not integrate the impulses";
   }
   return {};
 }

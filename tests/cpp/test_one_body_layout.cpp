@@ -116,6 +116,7 @@ TEST(OneBodyLayout, MovesTheBodyBitwiseAsTheGenericModel) {
         o.method = info.method, o.dt = 0.01, o.steps = 100, o.record_every = 3;
         const CompiledScene compiled = compile_scene(scene, info.method);
         ASSERT_EQ(compiled.path(), ScenePath::one_body);
+        ASSERT_EQ(one_body_model_if<detail::FastOneBodyModels>(compiled.one_body_model()), nullptr);  // a layout
         const SceneSimulation layout = simulate(compiled, {c.state}, o);
         const SceneModel& model = compiled.model();
         const SceneSimulation generic =
@@ -270,7 +271,9 @@ TEST(OneBodyLayout, OnlyItsScenes) {
   Scene pivoted;
   pivoted.bodies = {PivotedBody(RigidBody(1.0, Eigen::Vector3d(1.0, 1.0, 0.5)), Eigen::Vector3d(0.0, 0.0, 0.3))};
   pivoted.elements = {UniformGravity{}};
-  EXPECT_EQ(compile_scene(pivoted, Method::rk4).path(), ScenePath::pivoted_body);
+  const CompiledScene top = compile_scene(pivoted, Method::rk4);  // its fast model
+  EXPECT_EQ(top.path(), ScenePath::one_body);
+  EXPECT_NE(one_body_model_if<detail::FastOneBodyModels>(top.one_body_model()), nullptr);
 }
 
 }  // namespace

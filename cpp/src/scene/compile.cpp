@@ -98,10 +98,9 @@ Eigen::Vector3d gravity_of(const Scene& scene) {
   return Eigen::Vector3d::Zero();
 }
 
-// The fast one-body model for a scene that is exactly its case (scene/fast/), or monostate. The
+// The fast model (scene/fast/, one_body_layouts.hpp) of a scene that is exactly its case, or monostate. The
 // compiled element count `element_count` includes the frame's terms (after the user's elements).
-FastSceneModel fast_model_of(const Scene& scene, const detail::FrameTermSet& frame, std::size_t element_count,
-                             ScenePath& path) {
+OneBodyModel fast_model_of(const Scene& scene, const detail::FrameTermSet& frame, std::size_t element_count) {
   if (scene.bodies.size() != 1) return std::monostate{};
   int gravity = -1, loads = -1, thrust = -1;
   const Body& body = scene.bodies[0];
@@ -109,8 +108,7 @@ FastSceneModel fast_model_of(const Scene& scene, const detail::FrameTermSet& fra
   if (const auto* pivoted = std::get_if<PivotedBody>(&body)) {
     if (has_frame(scene) || !only_gravity_loads_thrust(scene, gravity, loads, thrust, true, false)) return std::monostate{};
     const ScheduledLoads* l = loads >= 0 ? &std::get<ScheduledLoads>(scene.elements[loads]) : nullptr;
-    path = ScenePath::pivoted_body;
-    return with_euler_form(*pivoted, [&](const auto& euler_O) -> FastSceneModel {
+    return with_euler_form(*pivoted, [&](const auto& euler_O) -> detail::FastOneBodyModels {
       using Euler = std::decay_t<decltype(euler_O)>;
       return PivotedBodyModel<Euler>(*pivoted, g, gravity, l ? l->loads : std::vector<AppliedLoad>{}, loads, element_count,
                                      l ? l->point_B : Eigen::Vector3d::Zero());
@@ -121,16 +119,15 @@ FastSceneModel fast_model_of(const Scene& scene, const detail::FrameTermSet& fra
   if (has_frame(scene) && scene.frame->constant_rotation && !has_mass_flow(scene, 0) &&
       only_gravity_loads_thrust(scene, gravity, loads, thrust, false, false)) {
     const int n = static_cast<int>(scene.elements.size());
-    path = ScenePath::rotating_frame_particle;
-    return RotatingFrameParticleModel(*particle, *scene.frame, g, gravity, frame.centrifugal ? n : -1,
-                                      frame.coriolis ? n + (frame.centrifugal ? 1 : 0) : -1, element_count);
+    return detail::FastOneBodyModels(RotatingFrameParticleModel(*particle, *scene.frame, g, gravity, frame.centrifugal ? n : -1,
+                                      frame.coriolis ? n + (frame.centrifugal ? 1 : 0) : -1, element_count));
   }
   if (!has_frame(scene) && has_mass_flow(scene, 0) && has_constant_rate(*scene.mass_flows[0]) &&
       only_gravity_loads_thrust(scene, gravity, loads, thrust, false, true) && thrust >= 0) {
     const Thrust& t = std::get<Thrust>(scene.elements[thrust]);
     if (t.frame != Frame::world || !t.r_B.isZero(0.0)) return std::monostate{};
-    path = ScenePath::variable_mass_particle;
-    return VariableMassParticleModel(*particle, *scene.mass_flows[0], t, thrust, g, gravity, element_count, body_name(scene, 0));
+    return detail::FastOneBodyModels(
+        VariableMassParticleModel(*particle, *scene.mass_flows[0], t, thrust, g, gravity, element_count, body_name(scene, 0)));
   }
   return std::monostate{};
 }
@@ -157,9 +154,7 @@ bool is_splitting(Method method) {
 }  // namespace
 
 const char* scene_path_name(ScenePath path) {
-  static const char* const names[] = {"generic", "one_body", "pivoted_body", "rotating_frame_particle",
-                                      "variable_mass_particle"};
-  return names[static_cast<int>(path)];
+  return path == ScenePath::one_body ? "one_body" : "generic";
 }
 
 std::string element_type_name(const Element& element) {
@@ -405,15 +400,13 @@ CompiledScene compile_scene(const Scene& scene, Method method) {
   const std::size_t element_count = terms.size();
   out.model_ = std::make_shared<const SceneModel>(scene.bodies, std::move(terms), scene.mass_flows, detail::body_names_of(scene));
   if (method == Method::exact && one_body_plan(scene, out.plan_)) {
-    out.one_body_path_ = true;  // the closed form
+    out.path_ = ScenePath::one_body;  // the closed form
   } else if (auto layout = one_body_layout_of(scene, out.model_->terms()); layout.index() != 0) {
-    out.one_body_path_ = true;
-    out.layout_ = std::make_shared<const OneBodyLayout>(std::move(layout));
-  }
-  if (out.one_body_path_) {
     out.path_ = ScenePath::one_body;
-  } else {
-    out.fast_ = std::make_shared<const FastSceneModel>(fast_model_of(scene, frame, element_count, out.path_));
+    out.one_body_ = std::make_shared<const OneBodyModel>(std::move(layout));
+  } else if (auto fast = fast_model_of(scene, frame, element_count); fast.index() != 0) {
+    out.path_ = ScenePath::one_body;
+    out.one_body_ = std::make_shared<const OneBodyModel>(std::move(fast));
   }
   return out;
 }

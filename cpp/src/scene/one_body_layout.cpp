@@ -19,7 +19,7 @@ OneBodySceneModel<Slot, elements> layout(const Slot& slot, double m, const std::
 
 }  // namespace
 
-OneBodyLayout one_body_layout_of(const Scene& scene, const std::vector<SceneModel::Term>& terms) {
+OneBodyModel one_body_layout_of(const Scene& scene, const std::vector<SceneModel::Term>& terms) {
   if (scene.bodies.size() != 1 || scene.frame || has_mass_flow(scene, 0)) return std::monostate{};
   std::optional<UniformGravityTerm> gravity;
   std::optional<ScheduledLoadsTerm> loads;
@@ -36,7 +36,7 @@ OneBodyLayout one_body_layout_of(const Scene& scene, const std::vector<SceneMode
     }
   }
   const double m = mass_of(scene.bodies[0]);
-  OneBodyLayout out;
+  OneBodyModel out;
   std::visit(
       [&](const auto& kind) {
         using Kind = std::decay_t<decltype(kind)>;

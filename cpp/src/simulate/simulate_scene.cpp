@@ -94,10 +94,15 @@ SceneSimulation reserved_scene_simulation(std::int64_t steps, std::int64_t recor
 
 namespace {
 
-template <class T>
-struct is_variant : std::false_type {};
-template <class... T>
-struct is_variant<std::variant<T...>> : std::true_type {};
+// Whether a one-body model is one of the fast models (scene/fast/), which run here, not through run_one_body
+template <class Model>
+struct is_fast_model : std::false_type {};
+template <class Euler>
+struct is_fast_model<PivotedBodyModel<Euler>> : std::true_type {};
+template <>
+struct is_fast_model<RotatingFrameParticleModel> : std::true_type {};
+template <>
+struct is_fast_model<VariableMassParticleModel> : std::true_type {};
 
 // simulate(body, ...) of the one body with the plan's gravity and loads ('exact': the closed form)
 Trajectory one_body_trajectory(const Body& body, const BodyState& initial, const OneBodyPlan& plan, const SimulationOptions& o) {
@@ -163,13 +168,15 @@ SceneSimulation closed_form_simulation(const CompiledScene& compiled, const std:
   return out;
 }
 
-// The run of a one-body layout (its loops compiled in one_body_runs_*.cpp)
-SceneSimulation run_one_body_layout(const OneBodyLayout& layout, const std::vector<BodyState>& initial,
-                                    const SimulationOptions& o, const std::vector<AppliedLoad>& switch_schedule) {
+// The run of a one-body scene's fixed-size model: a layout (its loops compiled in one_body_runs_*.cpp) or a fast model
+SceneSimulation run_one_body_model(const OneBodyModel& one_body, const std::vector<BodyState>& initial,
+                                   const SimulationOptions& o, const std::vector<AppliedLoad>& switch_schedule) {
   const auto run = [&](const auto& model) -> SceneSimulation {
     using Model = std::decay_t<decltype(model)>;
     if constexpr (std::is_same_v<Model, std::monostate>) {
-      throw std::logic_error("a one-body path without a layout");
+      throw std::logic_error("a one-body path without a model");
+    } else if constexpr (is_fast_model<Model>::value) {
+      return detail::run_scene(model, model.coordinates(initial, o.t0), o, switch_schedule);
     } else {
       return detail::run_one_body(model, initial, o, switch_schedule);
     }
@@ -177,13 +184,13 @@ SceneSimulation run_one_body_layout(const OneBodyLayout& layout, const std::vect
   return std::visit(
       [&](const auto& alternative) -> SceneSimulation {
         using Alternative = std::decay_t<decltype(alternative)>;
-        if constexpr (is_variant<Alternative>::value) {
+        if constexpr (detail::is_variant<Alternative>::value) {
           return std::visit(run, alternative);
         } else {
           return run(alternative);
         }
       },
-      layout);
+      one_body);
 }
 
 }  // namespace
@@ -198,19 +205,11 @@ SceneSimulation simulate(const CompiledScene& compiled, const std::vector<BodySt
       detail::checked_scene_input(compiled.scene(), compiled.method(), initial, o, true, "initial");
   detail::check_masses_over_run(compiled.scene(), o, o.steps);
   if (compiled.one_body_path()) {
-    if (compiled.method() == Method::exact) return closed_form_simulation(compiled, states, o);
-    return run_one_body_layout(compiled.one_body_layout(), states, o, compiled.switch_schedule());
+    if (compiled.closed_form()) return closed_form_simulation(compiled, states, o);
+    return run_one_body_model(compiled.one_body_model(), states, o, compiled.switch_schedule());
   }
-  return std::visit(
-      [&](const auto& fast) {
-        if constexpr (std::is_same_v<std::decay_t<decltype(fast)>, std::monostate>) {
-          const SceneModel& model = compiled.model();
-          return detail::run_generic_scene(model, model.coordinates(states, o.t0), o, compiled.switch_schedule(), nullptr);
-        } else {
-          return detail::run_scene(fast, fast.coordinates(states, o.t0), o, compiled.switch_schedule());
-        }
-      },
-      compiled.fast_model());
+  const SceneModel& model = compiled.model();
+  return detail::run_generic_scene(model, model.coordinates(states, o.t0), o, compiled.switch_schedule(), nullptr);
 }
 
 SceneSimulation simulate(const Scene& scene, const std::vector<BodyState>& initial, const SimulationOptions& options) {

@@ -33,6 +33,10 @@ using ParticleCoordinates = Eigen::Matrix<double, 7, 1>;
 ParticleCoordinates to_coordinates(const ParticleState& state, double work = 0.0);
 ParticleState to_particle_state(const ParticleCoordinates& y);
 
+// The model simulate(particle, ...) runs. Why it stays beside the one engine: the scene model's one-body layout of a
+// particle (what simulate(scene, ...) runs) takes 1.24–1.26× its time in the implicit midpoint rule and 1.30× in
+// splitting_dlm under gravity, and is within 1.1× or faster in the other methods (bench/bench_one_body_layout.cpp,
+// docs/perf/scenes.md §4.1).
 class ParticleModel {
  public:
   using Coordinates = ParticleCoordinates;

@@ -1,17 +1,14 @@
 // Compiling a scene (docs/scenes.md §3): the scene is checked (bodies, names, mass flows,
 // every element's own checks, the method's compatibility with it) and turned into an immutable
 // CompiledScene that holds the model whose derivative evaluates only the declared elements and the frame's
-// fictitious terms that are not identically zero (SceneModel) and, for a scene of one body, the model simulate runs:
-// the scene model's one-body layout (scene/one_body_layouts.hpp: one particle, planar, rigid or pinned planar body
-// under at most one UniformGravity and one ScheduledLoads; 'exact' on one body: the closed form), or, for the
-// one-body cases below (a pivoted body under gravity and loads; a particle in a frame turning at a constant rate; a
-// variable-mass particle with one thrust), a fast model with fixed-size coordinates (scene/fast/) that runs through
-// the same loop and records the same SceneSimulation.
+// fictitious terms that are not identically zero (SceneModel) and, for a scene of one body, the fixed-size model
+// simulate runs (scene/one_body_layouts.hpp): the scene model's one-body layout (one particle, planar, rigid or
+// pinned planar body under at most one UniformGravity and one ScheduledLoads), or a fast model (scene/fast/: a
+// pivoted body under gravity and loads; a particle in a frame turning at a constant rate; a variable-mass particle
+// with one thrust) that runs through the same loop and records the same SceneSimulation; 'exact' on one body: the
+// closed form.
 #pragma once
 #include "rigiddyn/integrators/method.hpp"
-#include "rigiddyn/scene/fast/pivoted_body_model.hpp"
-#include "rigiddyn/scene/fast/rotating_frame_particle_model.hpp"
-#include "rigiddyn/scene/fast/variable_mass_particle_model.hpp"
 #include "rigiddyn/scene/one_body_layouts.hpp"
 #include "rigiddyn/scene/scene.hpp"
 #include "rigiddyn/scene/scene_model.hpp"
@@ -41,18 +38,12 @@ struct OneBodyPlan {
 
 // The path simulate runs a compiled scene on.
 enum class ScenePath {
-  generic,                  // SceneModel, any scene
-  one_body,                 // the one-body layout (one_body_layout; 'exact': the closed form, one_body_plan)
-  pivoted_body,             // PivotedBodyModel<Euler>: one PivotedBody, inertial, gravity and loads at most
-  rotating_frame_particle,  // RotatingFrameParticleModel: one particle in a constant rotation, gravity at most
-  variable_mass_particle,   // VariableMassParticleModel: one particle, constant mass rate, one world thrust
+  generic,   // SceneModel, any scene
+  one_body,  // a fixed-size model of one body (one_body_model: a layout or a fast model; 'exact': the closed form,
+             // one_body_plan)
 };
-// "generic", "one_body", "pivoted_body", "rotating_frame_particle", "variable_mass_particle"
+// "generic", "one_body"
 const char* scene_path_name(ScenePath path);
-
-// The fast one-body models (std::monostate: none).
-using FastSceneModel = std::variant<std::monostate, PivotedBodyModel<SphericalEuler>, PivotedBodyModel<PrincipalEuler>,
-                                    PivotedBodyModel<FullEuler>, RotatingFrameParticleModel, VariableMassParticleModel>;
 
 // A scene compiled for one method: immutable; cheap to copy (shares its parts).
 class CompiledScene {
@@ -64,17 +55,19 @@ class CompiledScene {
   const std::vector<std::string>& warnings() const { return warnings_; }
   // The generic model (used by step, and by simulate on the generic path).
   const SceneModel& model() const { return *model_; }
-  // True when simulate runs the one-body layout (one_body_layout(): the generic model's arithmetic, bitwise its
-  // motion) or, for 'exact', the closed form of simulate(body, ...) (one_body_plan() holds its gravity and loads).
-  bool one_body_path() const { return one_body_path_; }
-  const OneBodyLayout& one_body_layout() const { return *layout_; }
+  // True when simulate runs a fixed-size model of one body (one_body_model(): a layout, the generic model's
+  // arithmetic and bitwise its motion, or a fast model) or, for 'exact', the closed form of simulate(body, ...)
+  // (one_body_plan() holds its gravity and loads; one_body_model() is then monostate).
+  bool one_body_path() const { return path_ == ScenePath::one_body; }
+  const OneBodyModel& one_body_model() const { return *one_body_; }
+  // True when simulate runs the closed form ('exact' on a body of simulate(body, ...): one_body_plan)
+  bool closed_form() const { return one_body_path() && one_body_->index() == 0; }
   const OneBodyPlan& one_body_plan() const { return plan_; }
   // The switch times of the run (their t_start/t_end): every load of every ScheduledLoads element, every element with
   // switches() and every gyrostat wheel's motor-torque window.
   const std::vector<AppliedLoad>& switch_schedule() const { return switch_schedule_; }
-  // The path simulate runs (describe: which model runs the scene), and the fast model of the fast paths.
+  // The path simulate runs.
   ScenePath path() const { return path_; }
-  const FastSceneModel& fast_model() const { return *fast_; }
   // The compiled terms in the order of the work/power columns: the scene's elements ("elements[i]", their
   // type "UniformGravity", ...), then the frame's fictitious terms that act ("frame.origin", "frame.euler",
   // "frame.centrifugal", "frame.coriolis"; types "FrameOriginForce", "EulerForce", "CentrifugalForce",
@@ -90,12 +83,10 @@ class CompiledScene {
   Method method_ = Method::rk4;
   std::vector<std::string> warnings_;
   std::shared_ptr<const SceneModel> model_;
-  bool one_body_path_ = false;
-  std::shared_ptr<const OneBodyLayout> layout_ = std::make_shared<const OneBodyLayout>();
+  std::shared_ptr<const OneBodyModel> one_body_ = std::make_shared<const OneBodyModel>();
   OneBodyPlan plan_;
   std::vector<AppliedLoad> switch_schedule_;
   ScenePath path_ = ScenePath::generic;
-  std::shared_ptr<const FastSceneModel> fast_ = std::make_shared<const FastSceneModel>();
   std::vector<std::string> element_names_, element_types_;
   std::vector<ElementTraits> element_traits_;
 };

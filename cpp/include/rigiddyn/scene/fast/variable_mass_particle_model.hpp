@@ -31,6 +31,9 @@
 // them); the methods that end with project have theirs from the previous project (or set_time/coordinates
 // at the start of a run), kept in the model (a run copies its model). Yoshida4's mass parts keep the masses
 // between those of the step's ends (their t is that of the sub-step, which may lie outside the step).
+// Why it stays beside the one engine: a body with a mass flow has no one-body layout, and the generic model takes
+// 7.8× its time per RK4 step (110 against 14 ns; `bench/bench_variable_mass.cpp`, variable_mass_particle_rk4 and
+// variable_mass_particle_scene_rk4, each over the same hand-written loop; docs/perf/scenes.md §4.1).
 #pragma once
 #include "rigiddyn/always_inline.hpp"
 #include "rigiddyn/check.hpp"
