@@ -42,4 +42,13 @@ RIGIDDYN_ALWAYS_INLINE void normalise_quaternion(double* q) {
   for (int i = 0; i < 4; ++i) q[i] *= inverse_norm;
 }
 
+// q / |q| of q stored (x, y, z, w), formed in registers (a quaternion written coefficient by coefficient and then
+// normalised through Eigen reloads them as packets: a store-forwarding stall per attitude); |q|² summed as Eigen's
+// norm of the coefficients sums it on SSE2, (x² + z²) + (y² + w²), so the result is bitwise Eigen's.
+RIGIDDYN_ALWAYS_INLINE Eigen::Quaterniond unit_quaternion(const double* q) {
+  const double x = q[0], y = q[1], z = q[2], w = q[3];
+  const double inverse_norm = 1.0 / std::sqrt((x * x + z * z) + (y * y + w * w));
+  return Eigen::Quaterniond(w * inverse_norm, x * inverse_norm, y * inverse_norm, z * inverse_norm);
+}
+
 }  // namespace rigiddyn

@@ -19,8 +19,7 @@ struct SpatialLayout {
   // p_W, the unit q_WB (the attitude as integrated, normalised), v_W, w_B
   RIGIDDYN_ALWAYS_INLINE static void kinematics(const double* x, BodyKinematics& k) {
     motion_kinematics(x, k);
-    k.q_WB = Eigen::Quaterniond(x[q + 3], x[q], x[q + 1], x[q + 2]);
-    k.q_WB.coeffs() *= 1.0 / k.q_WB.coeffs().norm();
+    k.q_WB = unit_quaternion(x + q);
   }
   // p_W, v_W, w_B (the attitude left as it was)
   RIGIDDYN_ALWAYS_INLINE static void motion_kinematics(const double* x, BodyKinematics& k) {
