@@ -43,9 +43,9 @@ PlanarBodyCoordinates to_coordinates(const PlanarBodyState& state, double work =
 PlanarBodyState to_planar_state(const PlanarBodyCoordinates& y);
 
 // The model simulate(planar body, ...) runs. Why it stays beside the one engine: under body-frame loads the scene
-// model's one-body layout of a planar body (what simulate(scene, ...) runs) takes 1.2–3.5× its time (semi-implicit
-// Euler: 352 against 126 instructions per step, not yet analysed), while without loads the layout takes 0.35–1.05×
-// its time (bench/bench_one_body_layout.cpp, docs/perf/scenes.md §4.1).
+// model's one-body layout of a planar body (what simulate(scene, ...) runs) takes 1.04–2.24× its time (its
+// semi-implicit steps evaluate the loads twice, for the works' powers), while without loads the layout takes
+// 0.35–1.05× its time (bench/bench_one_body_layout.cpp, docs/perf/scenes.md §4.1).
 class PlanarBodyModel {
  public:
   using Coordinates = PlanarBodyCoordinates;

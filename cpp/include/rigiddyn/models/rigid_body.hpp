@@ -136,7 +136,7 @@ decltype(auto) with_load_kind(const std::vector<AppliedLoad>& schedule, const Ei
 // The model of one rigid body (model_interface.hpp) with the Euler-equation form Euler and the
 // applied loads of `kind` (LoadKind::turning, the default, takes any loads): the model simulate(body, ...) runs.
 // Why it stays beside the one engine: the scene model's one-body layout of a rigid body (what simulate(scene, ...)
-// runs) takes 1.10–1.11× its time in RKMK4 and 1.06–1.60× under loads (a work per element and the six impulses the
+// runs) takes 1.10–1.11× its time in RKMK4 and 1.01–1.73× under loads (a work per element and the six impulses the
 // momentum balance reads: 23 coordinates against 14), and is within 1.1× in the other cases
 // (bench/bench_one_body_layout.cpp, docs/perf/scenes.md §4.1).
 template <class Euler, LoadKind kind = LoadKind::turning>

@@ -14,7 +14,7 @@
 // The free part of the splitting methods is the torque-free rotation about O: Euler–Poinsot with I_O
 // (free_flow<DlmRotation/ExactRotation> on the Euler form of I_O).
 // Why it stays beside the one engine: the heavy top's one-body layout (OneBodySceneModel of its PivotedSlot) matches
-// it within 1.1× under gravity in every method, but takes 1.15–1.45× its time under loads and 1.24× in RKMK4 without
+// it within 1.1× under gravity in every method, but takes 1.03–1.44× its time under loads and 1.24× in RKMK4 without
 // an element (bench/bench_one_body_layout.cpp, docs/perf/scenes.md §4.1).
 #pragma once
 #include "rigiddyn/check.hpp"
