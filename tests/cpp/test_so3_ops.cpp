@@ -9,6 +9,7 @@
 #include "rigiddyn/so3/matrix.hpp"
 #include "rigiddyn/so3/nearest_rotation.hpp"
 #include "rigiddyn/so3/quaternion.hpp"
+#include "rigiddyn/so3/quaternion_kernels.hpp"
 #include "rigiddyn/so3/slerp.hpp"
 
 #include <cmath>
@@ -48,6 +49,22 @@ Eigen::Matrix3d rounded(const Eigen::Matrix3d& R, int digits) {
 }
 
 // ---------------------------------------------------------------- nearest rotation
+
+// The scene model's kinematics normalise attitudes with unit_quaternion instead of Eigen's normalisation; a run's bits
+// must not depend on which: every quaternion (of any norm, as RK4's stages leave them) gives Eigen's bits.
+TEST(UnitQuaternion, GivesTheBitsOfEigensNormalisation) {
+  std::mt19937_64 generator(7);
+  std::normal_distribution<double> normal;
+  std::uniform_real_distribution<double> exponent(-3.0, 3.0);
+  for (int i = 0; i < 200000; ++i) {
+    const double scale = std::pow(10.0, exponent(generator));
+    const double q[4] = {scale * normal(generator), scale * normal(generator), scale * normal(generator), scale * normal(generator)};
+    Eigen::Quaterniond eigen(q[3], q[0], q[1], q[2]);
+    eigen.coeffs() *= 1.0 / eigen.coeffs().norm();
+    const Eigen::Quaterniond unit = unit_quaternion(q);
+    for (int k = 0; k < 4; ++k) ASSERT_EQ(unit.coeffs()[k], eigen.coeffs()[k]) << "q = " << q[0] << ", " << q[1] << ", " << q[2] << ", " << q[3];
+  }
+}
 
 TEST(NearestRotation, IsAnOrthonormalProperMatrixAndIdempotent) {
   Random rnd;

@@ -60,7 +60,8 @@ RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d cross_3(const Eigen::Vector3d& a, const E
   return Eigen::Vector3d(a(1) * b(2) - a(2) * b(1), a(2) * b(0) - a(0) * b(2), a(0) * b(1) - a(1) * b(0));
 }
 
-// R v and Rᵀ v for a 3×3 R, written out (each row's sum from left to right, as Eigen sums it)
+// R v and Rᵀ v for a 3×3 R, written out, each row's sum from left to right (Eigen's products may sum in another
+// order: the two can differ by round-off)
 RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d times_3(const Eigen::Matrix3d& R, const Eigen::Vector3d& v) {
   return Eigen::Vector3d(R(0, 0) * v(0) + R(0, 1) * v(1) + R(0, 2) * v(2), R(1, 0) * v(0) + R(1, 1) * v(1) + R(1, 2) * v(2),
                          R(2, 0) * v(0) + R(2, 1) * v(1) + R(2, 2) * v(2));
