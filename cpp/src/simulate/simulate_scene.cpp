@@ -94,16 +94,6 @@ SceneSimulation reserved_scene_simulation(std::int64_t steps, std::int64_t recor
 
 namespace {
 
-// Whether a one-body model is one of the fast models (scene/fast/), which run here, not through run_one_body
-template <class Model>
-struct is_fast_model : std::false_type {};
-template <class Euler>
-struct is_fast_model<PivotedBodyModel<Euler>> : std::true_type {};
-template <>
-struct is_fast_model<RotatingFrameParticleModel> : std::true_type {};
-template <>
-struct is_fast_model<VariableMassParticleModel> : std::true_type {};
-
 // simulate(body, ...) of the one body with the plan's gravity and loads ('exact': the closed form)
 Trajectory one_body_trajectory(const Body& body, const BodyState& initial, const OneBodyPlan& plan, const SimulationOptions& o) {
   SimulationOptions one = o;
@@ -168,26 +158,25 @@ SceneSimulation closed_form_simulation(const CompiledScene& compiled, const std:
   return out;
 }
 
-// The run of a one-body scene's fixed-size model: a layout (its loops compiled in one_body_runs_*.cpp) or a fast model
+// The run of a one-body scene's fixed-size model: a layout (its loops compiled in one_body_runs_*.cpp) or one of the
+// fast models (detail::FastOneBodyModels, run here)
 SceneSimulation run_one_body_model(const OneBodyModel& one_body, const std::vector<BodyState>& initial,
                                    const SimulationOptions& o, const std::vector<AppliedLoad>& switch_schedule) {
-  const auto run = [&](const auto& model) -> SceneSimulation {
-    using Model = std::decay_t<decltype(model)>;
-    if constexpr (std::is_same_v<Model, std::monostate>) {
-      throw std::logic_error("a one-body path without a model");
-    } else if constexpr (is_fast_model<Model>::value) {
-      return detail::run_scene(model, model.coordinates(initial, o.t0), o, switch_schedule);
-    } else {
-      return detail::run_one_body(model, initial, o, switch_schedule);
-    }
+  const auto run_layout = [&](const auto& layout) { return detail::run_one_body(layout, initial, o, switch_schedule); };
+  const auto run_fast = [&](const auto& fast) {
+    return detail::run_scene(fast, fast.coordinates(initial, o.t0), o, switch_schedule);
   };
   return std::visit(
       [&](const auto& alternative) -> SceneSimulation {
         using Alternative = std::decay_t<decltype(alternative)>;
-        if constexpr (detail::is_variant<Alternative>::value) {
-          return std::visit(run, alternative);
+        if constexpr (std::is_same_v<Alternative, std::monostate>) {
+          throw std::logic_error("a one-body path without a model");
+        } else if constexpr (std::is_same_v<Alternative, detail::FastOneBodyModels>) {
+          return std::visit(run_fast, alternative);
+        } else if constexpr (detail::is_variant<Alternative>::value) {
+          return std::visit(run_layout, alternative);
         } else {
-          return run(alternative);
+          return run_layout(alternative);
         }
       },
       one_body);

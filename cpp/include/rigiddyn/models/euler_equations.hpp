@@ -54,21 +54,16 @@ RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d times_3x3(const Eigen::Matrix3d& A, const
   return Eigen::Vector3d(A(0, 0) * x(0) + A(0, 1) * x(1) + A(0, 2) * x(2), A(1, 0) * x(0) + A(1, 1) * x(1) + A(1, 2) * x(2),
                          A(2, 0) * x(0) + A(2, 1) * x(1) + A(2, 2) * x(2));
 }
+// Aᵀ x, the same way. Both sum each row from left to right; Eigen's product may sum in another order, so replacing one
+// by the other can move a result by round-off.
+RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d transpose_times_3x3(const Eigen::Matrix3d& A, const Eigen::Vector3d& x) {
+  return Eigen::Vector3d(A(0, 0) * x(0) + A(1, 0) * x(1) + A(2, 0) * x(2), A(0, 1) * x(0) + A(1, 1) * x(1) + A(2, 1) * x(2),
+                         A(0, 2) * x(0) + A(1, 2) * x(1) + A(2, 2) * x(2));
+}
 
 // a × b, written out (see the note at the top)
 RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d cross_3(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
   return Eigen::Vector3d(a(1) * b(2) - a(2) * b(1), a(2) * b(0) - a(0) * b(2), a(0) * b(1) - a(1) * b(0));
-}
-
-// R v and Rᵀ v for a 3×3 R, written out, each row's sum from left to right (Eigen's products may sum in another
-// order: the two can differ by round-off)
-RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d times_3(const Eigen::Matrix3d& R, const Eigen::Vector3d& v) {
-  return Eigen::Vector3d(R(0, 0) * v(0) + R(0, 1) * v(1) + R(0, 2) * v(2), R(1, 0) * v(0) + R(1, 1) * v(1) + R(1, 2) * v(2),
-                         R(2, 0) * v(0) + R(2, 1) * v(1) + R(2, 2) * v(2));
-}
-RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d transpose_times_3(const Eigen::Matrix3d& R, const Eigen::Vector3d& v) {
-  return Eigen::Vector3d(R(0, 0) * v(0) + R(1, 0) * v(1) + R(2, 0) * v(2), R(0, 1) * v(0) + R(1, 1) * v(1) + R(2, 1) * v(2),
-                         R(0, 2) * v(0) + R(1, 2) * v(1) + R(2, 2) * v(2));
 }
 
 // x = J⁻¹ b for an invertible 3×3 J given by its rows r0, r1, r2, in closed form (adjugate,

@@ -7,7 +7,7 @@
 // times, as simulate does for one body, and sets the loads of the next piece (set_time) between the
 // sub-steps; a derivative evaluation never looks at the time.
 #pragma once
-#include "rigiddyn/models/euler_equations.hpp"  // cross_3, times_3, transpose_times_3
+#include "rigiddyn/models/euler_equations.hpp"  // cross_3, times_3x3, transpose_times_3x3
 #include "rigiddyn/models/loads.hpp"
 #include "rigiddyn/scene/body.hpp"
 #include "rigiddyn/scene/body_kinematics.hpp"
@@ -117,8 +117,8 @@ class ScheduledLoadsTerm {
     if (!acts_) return 0.0;
     Eigen::Vector3d f_W = loads_.f_W, tau_B = loads_.tau_B;
     if (turns_) {  // written out: Eigen's products were calls out of the layouts' inlined steps
-      f_W = loads_.f_W + times_3(k.R_WB, loads_.f_B);
-      tau_B = loads_.tau_B + transpose_times_3(k.R_WB, loads_.tau_W) + cross_3(point_B_, transpose_times_3(k.R_WB, f_W));
+      f_W = loads_.f_W + times_3x3(k.R_WB, loads_.f_B);
+      tau_B = loads_.tau_B + transpose_times_3x3(k.R_WB, loads_.tau_W) + cross_3(point_B_, transpose_times_3x3(k.R_WB, f_W));
     }
     wrench.f_W += f_W;
     wrench.tau_B += tau_B;

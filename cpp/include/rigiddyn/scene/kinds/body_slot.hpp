@@ -95,7 +95,7 @@ struct RecordSums {
 RIGIDDYN_ALWAYS_INLINE void add_wrench_impulses(const BodyKinematics& k, const BodyWrench& w, bool torques, double h,
                                                 double* out) {
   Eigen::Vector3d M_W = cross_3(k.p_W, w.f_W);
-  if (torques) M_W += times_3(k.R_WB, w.tau_B);  // written out: Eigen's product was a call out of the inlined steps
+  if (torques) M_W += times_3x3(k.R_WB, w.tau_B);  // written out: Eigen's product was a call out of the inlined steps
   for (int i = 0; i < 3; ++i) out[i] += h * w.f_W[i], out[3 + i] += h * M_W[i];
 }
 
