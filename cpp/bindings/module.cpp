@@ -20,6 +20,7 @@ PYBIND11_MODULE(_core, m) {
   rigiddyn::bindings::bind_scene_frame(m);
   rigiddyn::bindings::bind_tolerance(m);  // before bind_scene and bind_dynamics: results hold a ToleranceChoice
   rigiddyn::bindings::bind_scene(m);  // before bind_dynamics: simulate's signature names SceneResult
+  rigiddyn::bindings::bind_body_records(m);  // after bind_scene: it adds SceneResult.body
   rigiddyn::bindings::bind_dynamics(m);
   rigiddyn::bindings::bind_batch(m);
   rigiddyn::bindings::bind_exact(m);

@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['AppliedLoad', 'AtmosphericDrag', 'BatchResult', 'BatchSceneResult', 'BodyAcceleration', 'ComWrench', 'CompiledScene', 'CompoundPendulumSolution', 'ConstantThrustSolution', 'DensityIntegral', 'Drag', 'ElementField', 'FORCE_ELEMENTS', 'FixedJoint', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'FreeJoint', 'GlobalError', 'GravityGradient', 'Gyrostat', 'GyrostatState', 'InertiaCheck', 'InertiaReport', 'JointState', 'KineticEnergy', 'LagrangeTopSolution', 'MagneticDipole', 'MassFlow', 'MeshWeldWarning', 'Motion', 'MutualGravity', 'Particle', 'ParticleState', 'PivotedAcceleration', 'PivotedBody', 'PivotedBodyState', 'PivotedPlanarAcceleration', 'PivotedPlanarBody', 'PivotedPlanarBodyState', 'PivotedPlanarTorque', 'PivotedTorque', 'PlanarAcceleration', 'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointMassGravity', 'PointVelocity', 'PrincipalAxes', 'PrismaticJoint', 'PrismaticMotor', 'PrismaticSpringDamper', 'PythonForce', 'ReactionWheel', 'RevoluteJoint', 'RevoluteMotor', 'RevoluteSpringDamper', 'RigidBody', 'RigidBodyState', 'RotatingFrameFreeParticle', 'Scene', 'SceneCompatibilityWarning', 'SceneFrame', 'SceneResult', 'ScheduledLoads', 'Screw', 'SimulationResult', 'SolarRadiationPressure', 'SpatialInertia', 'SphericalJoint', 'SphericalSpringDamper', 'SpringDamper', 'Thrust', 'ToleranceChoice', 'ToleranceError', 'TorqueFreeSolution', 'Transform', 'Tree', 'TreeLink', 'UniformGravity', 'WeldedMesh', 'Wheel', 'ZonalGravity', 'aba', 'align_vectors', 'angular_distance', 'angular_momentum', 'angular_velocity_from_quat_rate', 'apply_impulse', 'attitude_from_orbit_frame', 'attitude_to_orbit_frame', 'axis_angle_to_quat', 'bias_forces', 'box_shell', 'compose_kinematics', 'composite', 'crba', 'davenport_to_quat', 'default_thread_count', 'eccentric_to_mean_anomaly', 'eccentric_to_true_anomaly', 'elements_to_state', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'forward_kinematics', 'from_point_masses', 'generalized_momentum', 'generalized_momentum_rate', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kepler_propagate', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mean_to_eccentric_anomaly', 'mean_to_true_anomaly', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation', 'nearest_valid_inertia', 'orbit_frame_angular_velocity', 'orbit_frame_rotation', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix', 'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh', 'rnea', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'semi_latus_rectum', 'simulate', 'simulate_batch', 'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'state_to_elements', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'true_to_eccentric_anomaly', 'true_to_mean_anomaly', 'twist_to_screw', 'vector_instructions', 'vee', 'weld_vertices']
+__all__: list[str] = ['AppliedLoad', 'AtmosphericDrag', 'BatchResult', 'BatchSceneResult', 'BodyAcceleration', 'BodyRecords', 'ComWrench', 'CompiledScene', 'CompoundPendulumSolution', 'ConstantThrustSolution', 'DensityIntegral', 'Drag', 'ElementField', 'FORCE_ELEMENTS', 'FixedJoint', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'FreeJoint', 'GlobalError', 'GravityGradient', 'Gyrostat', 'GyrostatState', 'InertiaCheck', 'InertiaReport', 'JointState', 'KineticEnergy', 'LagrangeTopSolution', 'MagneticDipole', 'MassFlow', 'MeshWeldWarning', 'Motion', 'MutualGravity', 'Particle', 'ParticleState', 'PivotedAcceleration', 'PivotedBody', 'PivotedBodyState', 'PivotedPlanarAcceleration', 'PivotedPlanarBody', 'PivotedPlanarBodyState', 'PivotedPlanarTorque', 'PivotedTorque', 'PlanarAcceleration', 'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointMassGravity', 'PointVelocity', 'PrincipalAxes', 'PrismaticJoint', 'PrismaticMotor', 'PrismaticSpringDamper', 'PythonForce', 'ReactionWheel', 'RevoluteJoint', 'RevoluteMotor', 'RevoluteSpringDamper', 'RigidBody', 'RigidBodyState', 'RotatingFrameFreeParticle', 'Scene', 'SceneCompatibilityWarning', 'SceneFrame', 'SceneResult', 'ScheduledLoads', 'Screw', 'SimulationResult', 'SolarRadiationPressure', 'SpatialInertia', 'SphericalJoint', 'SphericalSpringDamper', 'SpringDamper', 'Thrust', 'ToleranceChoice', 'ToleranceError', 'TorqueFreeSolution', 'Transform', 'Tree', 'TreeLink', 'UniformGravity', 'WeldedMesh', 'Wheel', 'ZonalGravity', 'aba', 'align_vectors', 'angular_distance', 'angular_momentum', 'angular_velocity_from_quat_rate', 'apply_impulse', 'attitude_from_orbit_frame', 'attitude_to_orbit_frame', 'axis_angle_to_quat', 'bias_forces', 'box_shell', 'compose_kinematics', 'composite', 'crba', 'davenport_to_quat', 'default_thread_count', 'eccentric_to_mean_anomaly', 'eccentric_to_true_anomaly', 'elements_to_state', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'forward_kinematics', 'from_point_masses', 'generalized_momentum', 'generalized_momentum_rate', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kepler_propagate', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mean_to_eccentric_anomaly', 'mean_to_true_anomaly', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation', 'nearest_valid_inertia', 'orbit_frame_angular_velocity', 'orbit_frame_rotation', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix', 'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh', 'rnea', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'semi_latus_rectum', 'simulate', 'simulate_batch', 'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'state_to_elements', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'true_to_eccentric_anomaly', 'true_to_mean_anomaly', 'twist_to_screw', 'vector_instructions', 'vee', 'weld_vertices']
 class _Quantity(typing.Protocol):
     """A pint Quantity of any registry (the core converts it to SI by its magnitude and units)."""
     @property
@@ -5711,6 +5711,37 @@ class SceneResult:
         ...
     def __setstate__(self, arg0: tuple) -> None:
         ...
+    def body(self, key: int | str) -> BodyRecords:
+        """
+        The records of one body of the run.
+        
+        Parameters
+        ----------
+        key : int or str
+            The body's index among the result's bodies, in [-nb, nb) (from the end when negative), or its name (an entry of
+            body_names).
+        
+        Returns
+        -------
+        BodyRecords
+            The body's columns of this result's arrays: t (n,), p_W, v_W, w_B (n, 3), q_WB (n, 4), mass (n,), ...
+        
+        Raises
+        ------
+        TypeError
+            `key` neither an int nor a str.
+        ValueError
+            An index out of range or a name not in body_names (the message lists the names).
+        
+        Examples
+        --------
+        >>> scene = rd.Scene([rd.Particle(2.0), rd.Particle(1.0)], body_names=["a", "b"])
+        >>> result = rd.simulate(scene, [rd.ParticleState(), rd.ParticleState(v_W=(1.0, 0.0, 0.0))], 0.1, steps=10)
+        >>> result.body("b").p_W[-1]
+        array([1., 0., 0.])
+        >>> result.body(-1).name
+        'b'
+        """
     def to_dataframe(self, scalar_first: typing.Any = None, *, units: typing.Any = None) -> typing.Any:
         """
         A pandas.DataFrame of the records (needs pandas): one row per record, one column per scalar with its unit (wide format; rigiddyn.scene_result documents the columns): 't [s]', then per body '<name>:p_W_x [m]' .. '<name>:q_WB_x' .. '<name>:v_W_x [m/s]' .. '<name>:w_B_x [rad/s]' .. through '<name>:mass [kg]' and '<name>:mass_flow_energy [J]' (and a gyrostat's '<name>:wheel_speed_<k> [rad/s]'), then 'kinetic_energy [J]', 'potential_energy [J]', 'total_energy [J]', 'linear_momentum_W_x [kg m/s]' .., 'angular_momentum_W_x [kg m^2/s]' .., then per element i 'work[i] <Class> [J]' and 'power[i] <Class> [W]'; q_WB's columns in the result's order ('<name>:q_WB_w' first when its scalar_first is True). scalar_first: None (the default) for the order the result records; True or False declares the order of its q_WB rows instead. units: the units of the columns, {dimension: unit} (keys length, angle, time, mass, energy, power, force; rigiddyn.output_units), e.g. {'length': 'km', 'time': 'h'} gives 't [h]', '<name>:p_W_x [km]', '<name>:v_W_x [km/h]'; None (the default): SI. TypeError or ValueError naming a bad units (an unknown dimension, an unknown unit, a unit of another dimension).
@@ -5864,6 +5895,133 @@ class SceneResult:
     def work(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         (n, ne) each element's work since t0 [J]
+        """
+class BodyRecords:
+    """
+    One body's records of a run: its columns of a SceneResult as (n, ...) arrays.
+    
+    SceneResult.body(key) gives them (a run of one body: result.body(0)); every array is read-only and shares the
+    result's memory (the wheels' columns are copies). "W" is the result's scene frame.
+    
+    Attributes
+    ----------
+    name : str
+        The body's name (an entry of SceneResult.body_names).
+    index : int
+        Its index among the result's bodies, in [0, nb).
+    t : ndarray, shape (n,)
+        Record times [s].
+    p_W, v_W : ndarray, shape (n, 3)
+        Centre of mass position [m] and velocity [m/s] in W.
+    q_WB : ndarray, shape (n, 4)
+        Attitude, (x, y, z, w) unless scalar_first (a particle: the identity; a planar body: Rz(theta)).
+    w_B : ndarray, shape (n, 3)
+        Angular velocity in B [rad/s] (a planar body: (0, 0, omega)).
+    mass : ndarray, shape (n,)
+        Mass [kg].
+    pivot_reaction_W : ndarray, shape (n, 3)
+        The pivot's force on the body in W [N] (0 unpinned).
+    angular_momentum_O_W : ndarray, shape (n, 3)
+        Angular momentum about the pivot (about the centre of mass unpinned), in W [kg m^2/s].
+    mass_flow_energy : ndarray, shape (n,)
+        The body's mass-flow energy since t0 [J] (0 for a constant mass).
+    wheel_speed, motor_work : ndarray, shape (n, nw)
+        Each of the body's gyrostat wheels' speed relative to it [rad/s] and motor work since t0 [J] (nw = 0 for a
+        body without wheels).
+    scalar_first : bool
+        True if q_WB's rows are (w, x, y, z).
+    
+    See Also
+    --------
+    SceneResult.body, simulate
+    
+    Examples
+    --------
+    A free rigid body turning about its first axis:
+    
+    >>> body = rd.RigidBody(mass=2.0, inertia_com=np.diag([1.0, 2.0, 3.0]))
+    >>> result = rd.simulate(rd.Scene([body]), [rd.RigidBodyState(w_B=(0.5, 0.0, 0.0))], 0.01, steps=100)
+    >>> records = result.body(0)
+    >>> records.name, records.q_WB.shape, records.w_B.shape
+    ('body0', (101, 4), (101, 3))
+    >>> bool(np.allclose(records.q_WB[-1], rd.rotvec_to_quat([0.5, 0.0, 0.0])))
+    True
+    """
+    def __getstate__(self) -> tuple:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def angular_momentum_O_W(self) -> typing.Any:
+        """
+        (n, 3) angular momentum about the pivot (about the centre of mass unpinned), in W [kg m^2/s]
+        """
+    @property
+    def index(self) -> int:
+        """
+        Its index among the result's bodies
+        """
+    @property
+    def mass(self) -> typing.Any:
+        """
+        (n,) mass [kg]
+        """
+    @property
+    def mass_flow_energy(self) -> typing.Any:
+        """
+        (n,) mass-flow energy since t0 [J]
+        """
+    @property
+    def motor_work(self) -> typing.Any:
+        """
+        (n, nw) each of its wheels' motor work since t0 [J]
+        """
+    @property
+    def name(self) -> str:
+        """
+        The body's name (an entry of SceneResult.body_names)
+        """
+    @property
+    def p_W(self) -> typing.Any:
+        """
+        (n, 3) centre of mass position in W [m]
+        """
+    @property
+    def pivot_reaction_W(self) -> typing.Any:
+        """
+        (n, 3) the pivot's force on the body, in W [N] (0 unpinned)
+        """
+    @property
+    def q_WB(self) -> typing.Any:
+        """
+        (n, 4) attitude, (x, y, z, w) unless scalar_first
+        """
+    @property
+    def scalar_first(self) -> bool:
+        """
+        True if q_WB's rows are (w, x, y, z)
+        """
+    @property
+    def t(self) -> typing.Any:
+        """
+        (n,) time [s]
+        """
+    @property
+    def v_W(self) -> typing.Any:
+        """
+        (n, 3) centre of mass velocity in W [m/s]
+        """
+    @property
+    def w_B(self) -> typing.Any:
+        """
+        (n, 3) angular velocity in B [rad/s]
+        """
+    @property
+    def wheel_speed(self) -> typing.Any:
+        """
+        (n, nw) the speed of each of the body's wheels relative to it [rad/s]
         """
 class AppliedLoad:
     """

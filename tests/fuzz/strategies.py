@@ -179,6 +179,9 @@ RECIPES = {
 # (the joints' transform(q) also return a Transform, but rarely from drawn q)
 RECIPES["GlobalError"] = st.one_of(RECIPES["SimulationResult"], RECIPES["SceneResult"]).map(
     lambda run: ("method", run, "__getattribute__", [("lit", "error")], []))
+# one body's records of a scene's run (SceneResult.body, its index drawn, negative ones too)
+RECIPES["BodyRecords"] = st.tuples(RECIPES["SceneResult"], st.integers(-2, 1)).map(
+    lambda rk: ("method", rk[0], "body", [("lit", rk[1])], []))
 # a run's energy and momentum balance (read from a result as its attribute)
 RECIPES["Balance"] = st.one_of(RECIPES["SimulationResult"], RECIPES["SceneResult"]).map(
     lambda run: ("method", run, "__getattribute__", [("lit", "balance")], []))

@@ -315,7 +315,7 @@ EXAMPLES = {
     "Scene.add": lambda: {"element": rd.Drag(linear=0.1)}, "Scene.compile": lambda: {"method": "rk4"},
     "Scene.describe": lambda: {}, "Scene.to_toml": lambda: {},
     "CompiledScene": lambda: {"scene": _scene()}, "CompiledScene.describe": lambda: {},
-    "SceneResult.to_dataframe": lambda: {},
+    "SceneResult.to_dataframe": lambda: {}, "SceneResult.body": lambda: {"key": 0},
     "UniformGravity": lambda: {}, "PointMassGravity": lambda: {"gm": 1.0}, "MutualGravity": lambda: {},
     "GravityGradient": lambda: {"gm": 1.0}, "ZonalGravity": lambda: {"gm": 1.0, "radius": 0.1},
     "AtmosphericDrag": lambda: {"density0": 1e-11, "scale_height": 5e4, "radius": 6.4e6, "drag_area": 1.0},
@@ -485,6 +485,7 @@ def _properties():
 # instances of the classes that only results have (no constructor)
 INSTANCES_OF_RESULTS = {
     "TreeLink": lambda: _scene_with_tree().bodies[0],
+    "BodyRecords": lambda: _scene_result().body(0),
     "BatchResult": lambda: rd.simulate_batch(rd.RigidBody(1.0, I_BOX), [rd.RigidBodyState(w_B=V)], 0.01, 2),
     "BatchSceneResult": lambda: rd.simulate_batch(_scene(), [[rd.ParticleState(), rd.RigidBodyState(w_B=V)]], 0.01, 2),
     "DensityIntegral": lambda: rd.integrate_density_over_box(lambda p: np.ones(len(p)), -V, V, order=2),

@@ -84,6 +84,7 @@ def test_examples_run_and_print_what_they_show(name: str, obj: object) -> None:
 MADE_BY_THE_CORE = {
     "BatchResult": "simulate_batch",
     "BatchSceneResult": "simulate_batch on a Scene",
+    "BodyRecords": "SceneResult.body",
     "ElementField": "the field table of each element class (SpringDamper.fields)",
     "GlobalError": "simulate(..., error=True): result.error",
     "InertiaReport": "inertia_report",

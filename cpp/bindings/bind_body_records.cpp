@@ -1,0 +1,255 @@
+// Python bindings of one body's records in a run (rigiddyn.BodyRecords) and SceneResult.body(key), which gives them:
+// the body's columns of the result's (n, nb, ...) arrays as (n, ...) arrays.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <string>
+
+#include "bindings.hpp"
+#include "numpy_io.hpp"
+#include "repr.hpp"
+#include "scene_run.hpp"
+
+namespace rigiddyn::bindings {
+
+namespace py = pybind11;
+using namespace pybind11::literals;
+
+namespace {
+
+// One body's records: views of a SceneResult's arrays (read-only, sharing its memory), or copies once unpickled.
+struct BodyRecords {
+  std::string name;
+  py::ssize_t index = 0;
+  py::object t, p_W, q_WB, v_W, w_B, mass, pivot_reaction_W, angular_momentum_O_W, mass_flow_energy, wheel_speed,
+      motor_work;
+  bool scalar_first = false;
+};
+
+// The members in pickle order after (name, index), with their number of dimensions
+struct RecordsColumn {
+  const char* name;
+  py::object BodyRecords::*member;
+  int ndim;
+};
+constexpr RecordsColumn records_columns[] = {
+    {"t", &BodyRecords::t, 1},
+    {"p_W", &BodyRecords::p_W, 2},
+    {"q_WB", &BodyRecords::q_WB, 2},
+    {"v_W", &BodyRecords::v_W, 2},
+    {"w_B", &BodyRecords::w_B, 2},
+    {"mass", &BodyRecords::mass, 1},
+    {"pivot_reaction_W", &BodyRecords::pivot_reaction_W, 2},
+    {"angular_momentum_O_W", &BodyRecords::angular_momentum_O_W, 2},
+    {"mass_flow_energy", &BodyRecords::mass_flow_energy, 1},
+    {"wheel_speed", &BodyRecords::wheel_speed, 2},
+    {"motor_work", &BodyRecords::motor_work, 2},
+};
+constexpr std::size_t records_column_count = sizeof(records_columns) / sizeof(records_columns[0]);
+
+// The index in [0, nb) of `key`: an int in [-nb, nb) (from the end when negative) or one of the names
+py::ssize_t body_index(const py::tuple& names, py::handle key) {
+  const auto nb = static_cast<py::ssize_t>(names.size());
+  std::string choices;
+  for (py::ssize_t b = 0; b < nb; ++b) choices += (b == 0 ? "" : ", ") + py::repr(names[b]).cast<std::string>();
+  const std::string expected = "an index in [" + std::to_string(-nb) + ", " + std::to_string(nb) + ") or a name of " +
+                               "the result's body_names (" + choices + ")";
+  if (py::isinstance<py::str>(key)) {
+    for (py::ssize_t b = 0; b < nb; ++b) {
+      if (py::object(names[b]).equal(key)) return b;
+    }
+    py_io::throw_value_error("key", expected, py::repr(key).cast<std::string>());
+  }
+  if (!py::isinstance<py::int_>(key) || py::isinstance<py::bool_>(key)) py_io::throw_type_error("key", expected, key);
+  const auto i = key.cast<long long>();
+  if (i < -nb || i >= nb) py_io::throw_value_error("key", expected, std::to_string(i));
+  return static_cast<py::ssize_t>(i < 0 ? i + nb : i);
+}
+
+// a[:, b]: the body's columns of an (n, nb, ...) array, as a view
+py::object body_column(const py_io::Array& a, py::ssize_t b) {
+  return a[py::make_tuple(py::slice(py::none(), py::none(), py::none()), b)];
+}
+
+// The columns of body b's wheels (wheel_bodies[k] == b) of an (n, nw) array, as a new array (n, nw_b)
+py::object wheel_columns(const py_io::Array& a, const py::tuple& wheel_bodies, py::ssize_t b) {
+  py::list columns;
+  for (py::ssize_t k = 0; k < static_cast<py::ssize_t>(wheel_bodies.size()); ++k) {
+    if (wheel_bodies[k].cast<py::ssize_t>() == b) columns.append(k);
+  }
+  py::object out = a[py::make_tuple(py::slice(py::none(), py::none(), py::none()), columns)];
+  out.attr("flags").attr("writeable") = false;
+  return out;
+}
+
+BodyRecords records_of(const SceneResult& r, py::handle key) {
+  BodyRecords out;
+  out.index = body_index(r.body_names, key);
+  const py::ssize_t b = out.index;
+  out.name = r.body_names[b].cast<std::string>();
+  out.t = r.t.get();
+  out.p_W = body_column(r.p_W.get(), b);
+  out.q_WB = body_column(r.q_WB.get(), b);
+  out.v_W = body_column(r.v_W.get(), b);
+  out.w_B = body_column(r.w_B.get(), b);
+  out.mass = body_column(r.mass.get(), b);
+  out.pivot_reaction_W = body_column(r.pivot_reaction_W.get(), b);
+  out.angular_momentum_O_W = body_column(r.angular_momentum_O_W.get(), b);
+  out.mass_flow_energy = body_column(r.mass_flow_energy.get(), b);
+  out.wheel_speed = wheel_columns(r.wheel_speed.get(), r.wheel_bodies, b);
+  out.motor_work = wheel_columns(r.motor_work.get(), r.wheel_bodies, b);
+  out.scalar_first = r.scalar_first;
+  return out;
+}
+
+py::tuple records_state(const BodyRecords& r) {
+  py::list state;
+  state.append(r.name);
+  state.append(r.index);
+  for (const RecordsColumn& c : records_columns) state.append(r.*c.member);
+  state.append(r.scalar_first);
+  return py::tuple(state);
+}
+
+BodyRecords records_from_state(const py::tuple& t) {
+  if (t.size() != records_column_count + 3) {
+    py_io::throw_value_error("BodyRecords pickle", "a tuple of " + std::to_string(records_column_count + 3) + " items",
+                             std::to_string(t.size()) + " items");
+  }
+  BodyRecords r;
+  r.name = t[0].cast<std::string>();
+  r.index = t[1].cast<py::ssize_t>();
+  const py_io::Array time = py_io::as_array(t[2], "BodyRecords pickle t");
+  for (std::size_t k = 0; k < records_column_count; ++k) {
+    const RecordsColumn& c = records_columns[k];
+    py_io::Array a = py_io::as_array(t[2 + k], (std::string("BodyRecords pickle ") + c.name).c_str());
+    if (a.ndim() != c.ndim || a.shape(0) != time.shape(0)) {
+      py_io::throw_value_error(std::string("BodyRecords pickle ") + c.name,
+                               std::to_string(c.ndim) + "-D with " + std::to_string(time.shape(0)) + " rows",
+                               py_io::describe(t[2 + k]));
+    }
+    a.attr("flags").attr("writeable") = false;
+    r.*c.member = a;
+  }
+  r.scalar_first = t[records_column_count + 2].cast<bool>();
+  return r;
+}
+
+std::string records_repr(const BodyRecords& r) {
+  const py::ssize_t n = r.t.attr("shape")[py::int_(0)].cast<py::ssize_t>();
+  const py::object span = n == 0 ? py::object(py::list()) : py::object(py::make_tuple(py::float_(r.t[py::int_(0)].cast<double>()), py::float_(r.t[py::int_(-1)].cast<double>())));
+  return repr_call("BodyRecords", {{"name", py::str(r.name)}, {"index", py::int_(r.index)}, {"records", py::int_(n)},
+                                   {"t", span}});
+}
+
+const char* const body_records_doc = R"doc(One body's records of a run: its columns of a SceneResult as (n, ...) arrays.
+
+SceneResult.body(key) gives them (a run of one body: result.body(0)); every array is read-only and shares the
+result's memory (the wheels' columns are copies). "W" is the result's scene frame.
+
+Attributes
+----------
+name : str
+    The body's name (an entry of SceneResult.body_names).
+index : int
+    Its index among the result's bodies, in [0, nb).
+t : ndarray, shape (n,)
+    Record times [s].
+p_W, v_W : ndarray, shape (n, 3)
+    Centre of mass position [m] and velocity [m/s] in W.
+q_WB : ndarray, shape (n, 4)
+    Attitude, (x, y, z, w) unless scalar_first (a particle: the identity; a planar body: Rz(theta)).
+w_B : ndarray, shape (n, 3)
+    Angular velocity in B [rad/s] (a planar body: (0, 0, omega)).
+mass : ndarray, shape (n,)
+    Mass [kg].
+pivot_reaction_W : ndarray, shape (n, 3)
+    The pivot's force on the body in W [N] (0 unpinned).
+angular_momentum_O_W : ndarray, shape (n, 3)
+    Angular momentum about the pivot (about the centre of mass unpinned), in W [kg m^2/s].
+mass_flow_energy : ndarray, shape (n,)
+    The body's mass-flow energy since t0 [J] (0 for a constant mass).
+wheel_speed, motor_work : ndarray, shape (n, nw)
+    Each of the body's gyrostat wheels' speed relative to it [rad/s] and motor work since t0 [J] (nw = 0 for a
+    body without wheels).
+scalar_first : bool
+    True if q_WB's rows are (w, x, y, z).
+
+See Also
+--------
+SceneResult.body, simulate
+
+Examples
+--------
+A free rigid body turning about its first axis:
+
+)doc"
+                                       R"doc(>>> body = rd.RigidBody(mass=2.0, inertia_com=np.diag([1.0, 2.0, 3.0]))
+>>> result = rd.simulate(rd.Scene([body]), [rd.RigidBodyState(w_B=(0.5, 0.0, 0.0))], 0.01, steps=100)
+>>> records = result.body(0)
+>>> records.name, records.q_WB.shape, records.w_B.shape
+('body0', (101, 4), (101, 3))
+>>> bool(np.allclose(records.q_WB[-1], rd.rotvec_to_quat([0.5, 0.0, 0.0])))
+True
+)doc";
+
+const char* const body_doc = R"doc(The records of one body of the run.
+
+Parameters
+----------
+key : int or str
+    The body's index among the result's bodies, in [-nb, nb) (from the end when negative), or its name (an entry of
+    body_names).
+
+Returns
+-------
+BodyRecords
+    The body's columns of this result's arrays: t (n,), p_W, v_W, w_B (n, 3), q_WB (n, 4), mass (n,), ...
+
+Raises
+------
+TypeError
+    `key` neither an int nor a str.
+ValueError
+    An index out of range or a name not in body_names (the message lists the names).
+
+Examples
+--------
+)doc"
+                               R"doc(>>> scene = rd.Scene([rd.Particle(2.0), rd.Particle(1.0)], body_names=["a", "b"])
+>>> result = rd.simulate(scene, [rd.ParticleState(), rd.ParticleState(v_W=(1.0, 0.0, 0.0))], 0.1, steps=10)
+>>> result.body("b").p_W[-1]
+array([1., 0., 0.])
+>>> result.body(-1).name
+'b'
+)doc";
+
+}  // namespace
+
+void bind_body_records(py::module_& m) {
+  py::class_<BodyRecords>(m, "BodyRecords", body_records_doc)
+      .def_readonly("name", &BodyRecords::name, "The body's name (an entry of SceneResult.body_names)")
+      .def_readonly("index", &BodyRecords::index, "Its index among the result's bodies")
+      .def_readonly("t", &BodyRecords::t, "(n,) time [s]")
+      .def_readonly("p_W", &BodyRecords::p_W, "(n, 3) centre of mass position in W [m]")
+      .def_readonly("q_WB", &BodyRecords::q_WB, "(n, 4) attitude, (x, y, z, w) unless scalar_first")
+      .def_readonly("v_W", &BodyRecords::v_W, "(n, 3) centre of mass velocity in W [m/s]")
+      .def_readonly("w_B", &BodyRecords::w_B, "(n, 3) angular velocity in B [rad/s]")
+      .def_readonly("mass", &BodyRecords::mass, "(n,) mass [kg]")
+      .def_readonly("pivot_reaction_W", &BodyRecords::pivot_reaction_W,
+                    "(n, 3) the pivot's force on the body, in W [N] (0 unpinned)")
+      .def_readonly("angular_momentum_O_W", &BodyRecords::angular_momentum_O_W,
+                    "(n, 3) angular momentum about the pivot (about the centre of mass unpinned), in W [kg m^2/s]")
+      .def_readonly("mass_flow_energy", &BodyRecords::mass_flow_energy, "(n,) mass-flow energy since t0 [J]")
+      .def_readonly("wheel_speed", &BodyRecords::wheel_speed,
+                    "(n, nw) the speed of each of the body's wheels relative to it [rad/s]")
+      .def_readonly("motor_work", &BodyRecords::motor_work, "(n, nw) each of its wheels' motor work since t0 [J]")
+      .def_readonly("scalar_first", &BodyRecords::scalar_first, "True if q_WB's rows are (w, x, y, z)")
+      .def("__repr__", &records_repr)
+      .def(py::pickle(&records_state, &records_from_state));
+
+  py::class_<SceneResult> result = py::reinterpret_borrow<py::class_<SceneResult>>(m.attr("SceneResult"));
+  result.def("body", &records_of, "key"_a, body_doc);
+}
+
+}  // namespace rigiddyn::bindings
