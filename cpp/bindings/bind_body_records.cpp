@@ -60,10 +60,17 @@ py::ssize_t body_index(const py::tuple& names, py::handle key) {
     }
     py_io::throw_value_error("key", expected, py::repr(key).cast<std::string>());
   }
-  if (!py::isinstance<py::int_>(key) || py::isinstance<py::bool_>(key)) py_io::throw_type_error("key", expected, key);
-  const auto i = key.cast<long long>();
-  if (i < -nb || i >= nb) py_io::throw_value_error("key", expected, std::to_string(i));
-  return static_cast<py::ssize_t>(i < 0 ? i + nb : i);
+  // an integer: a Python int or a numpy integer (what operator.index takes), not a bool
+  PyObject* index = py::isinstance<py::bool_>(key) || !PyIndex_Check(key.ptr()) ? nullptr : PyNumber_Index(key.ptr());
+  if (index == nullptr) {
+    PyErr_Clear();
+    py_io::throw_type_error("key", expected, key);
+  }
+  const py::int_ i = py::reinterpret_steal<py::int_>(index);
+  int overflow = 0;
+  const long long b = PyLong_AsLongLongAndOverflow(i.ptr(), &overflow);
+  if (overflow != 0 || b < -nb || b >= nb) py_io::throw_value_error("key", expected, py::repr(i).cast<std::string>());
+  return static_cast<py::ssize_t>(b < 0 ? b + nb : b);
 }
 
 // a[:, b]: the body's columns of an (n, nb, ...) array, as a view

@@ -61,6 +61,10 @@ def test_a_name_and_a_negative_index_find_the_same_body(result):
             assert np.array_equal(getattr(by_name, column), getattr(from_end, column))
 
 
+def test_a_numpy_integer_is_an_index(result):
+    assert result.body(np.int64(2)).name == result.body(np.uint8(2)).name == "sat"
+
+
 def test_a_one_body_run_reads_its_arrays_without_the_body_axis():
     body = rd.RigidBody(2.0, [1.0, 2.0, 3.0])
     result = rd.simulate(rd.Scene([body]), [rd.RigidBodyState(w_B=(0.5, 0.1, 0.0))], 0.01, steps=20,
@@ -75,7 +79,10 @@ def test_a_one_body_run_reads_its_arrays_without_the_body_axis():
     (4, ValueError, "an index in [-4, 4)"),
     (-5, ValueError, "an index in [-4, 4)"),
     ("moon", ValueError, "'dot', 'plate', 'sat', 'top'"),
+    (10**30, ValueError, "got 1000000000000000000000000000000"),
+    (np.int64(4), ValueError, "an index in [-4, 4)"),
     (1.0, TypeError, "an index in [-4, 4)"),
+    (np.bool_(True), TypeError, "or a name of"),
     (True, TypeError, "or a name of"),
     (None, TypeError, "or a name of"),
 ])
