@@ -123,6 +123,15 @@ BodyRecords records_from_state(const py::tuple& t) {
     py_io::throw_value_error("BodyRecords pickle", "a tuple of " + std::to_string(records_column_count + 3) + " items",
                              std::to_string(t.size()) + " items");
   }
+  if (!py::isinstance<py::str>(t[0])) py_io::throw_type_error("BodyRecords pickle name", "a str", t[0]);
+  int overflow = 0;
+  const bool an_index = py::isinstance<py::int_>(t[1]) && !py::isinstance<py::bool_>(t[1]) &&
+                        PyLong_AsLongLongAndOverflow(t[1].ptr(), &overflow) >= 0 && overflow == 0;
+  if (!an_index) {
+    py_io::throw_value_error("BodyRecords pickle index", "an int >= 0", py::repr(t[1]).cast<std::string>());
+  }
+  const py::handle first = t[records_column_count + 2];
+  if (!py::isinstance<py::bool_>(first)) py_io::throw_type_error("BodyRecords pickle scalar_first", "a bool", first);
   BodyRecords r;
   r.name = t[0].cast<std::string>();
   r.index = t[1].cast<py::ssize_t>();
@@ -138,7 +147,7 @@ BodyRecords records_from_state(const py::tuple& t) {
     a.attr("flags").attr("writeable") = false;
     r.*c.member = a;
   }
-  r.scalar_first = t[records_column_count + 2].cast<bool>();
+  r.scalar_first = first.cast<bool>();
   return r;
 }
 

@@ -107,3 +107,17 @@ def test_a_pickle_of_another_shape_is_refused(result):
     state[3] = np.zeros((2, 3))  # p_W with 2 rows against t's
     with pytest.raises(ValueError, match="BodyRecords pickle p_W"):
         rd.BodyRecords.__new__(rd.BodyRecords).__setstate__(tuple(state))
+
+
+@pytest.mark.parametrize("at, value, error, words", [
+    (0, 3, TypeError, "BodyRecords pickle name"),
+    (1, -1, ValueError, "BodyRecords pickle index"),
+    (1, "0", ValueError, "BodyRecords pickle index"),
+    (1, 10**30, ValueError, "BodyRecords pickle index"),
+    (-1, 1, TypeError, "BodyRecords pickle scalar_first"),
+])
+def test_a_pickle_of_bad_fields_is_refused_naming_the_field(result, at, value, error, words):
+    state = list(result.body(0).__getstate__())
+    state[at] = value
+    with pytest.raises(error, match=words):
+        rd.BodyRecords.__new__(rd.BodyRecords).__setstate__(tuple(state))
