@@ -60,17 +60,9 @@ py::ssize_t body_index(const py::tuple& names, py::handle key) {
     }
     py_io::throw_value_error("key", expected, py::repr(key).cast<std::string>());
   }
-  // an integer: a Python int or a numpy integer (what operator.index takes), not a bool
-  PyObject* index = py::isinstance<py::bool_>(key) || !PyIndex_Check(key.ptr()) ? nullptr : PyNumber_Index(key.ptr());
-  if (index == nullptr) {
-    PyErr_Clear();
-    py_io::throw_type_error("key", expected, key);
-  }
-  const py::int_ i = py::reinterpret_steal<py::int_>(index);
-  int overflow = 0;
-  const long long b = PyLong_AsLongLongAndOverflow(i.ptr(), &overflow);
-  if (overflow != 0 || b < -nb || b >= nb) py_io::throw_value_error("key", expected, py::repr(i).cast<std::string>());
-  return static_cast<py::ssize_t>(b < 0 ? b + nb : b);
+  if (PyBool_Check(key.ptr()) || !PyIndex_Check(key.ptr())) py_io::throw_type_error("key", expected, key);
+  const std::int64_t i = py_io::as_int(key, "key", -nb, nb - 1);  // a Python or numpy integer
+  return static_cast<py::ssize_t>(i < 0 ? i + nb : i);
 }
 
 // a[:, b]: the body's columns of an (n, nb, ...) array, as a view
@@ -84,8 +76,9 @@ py::object wheel_columns(const py_io::Array& a, const py::tuple& wheel_bodies, p
   for (py::ssize_t k = 0; k < static_cast<py::ssize_t>(wheel_bodies.size()); ++k) {
     if (wheel_bodies[k].cast<py::ssize_t>() == b) columns.append(k);
   }
-  py::object out = a[py::make_tuple(py::slice(py::none(), py::none(), py::none()), columns)];
-  out.attr("flags").attr("writeable") = false;
+  const py::array out = py::reinterpret_borrow<py::array>(
+      py::object(a[py::make_tuple(py::slice(py::none(), py::none(), py::none()), columns)]));
+  py_io::set_read_only(out);
   return out;
 }
 
@@ -123,18 +116,9 @@ BodyRecords records_from_state(const py::tuple& t) {
     py_io::throw_value_error("BodyRecords pickle", "a tuple of " + std::to_string(records_column_count + 3) + " items",
                              std::to_string(t.size()) + " items");
   }
-  if (!py::isinstance<py::str>(t[0])) py_io::throw_type_error("BodyRecords pickle name", "a str", t[0]);
-  int overflow = 0;
-  const bool an_index = py::isinstance<py::int_>(t[1]) && !py::isinstance<py::bool_>(t[1]) &&
-                        PyLong_AsLongLongAndOverflow(t[1].ptr(), &overflow) >= 0 && overflow == 0;
-  if (!an_index) {
-    py_io::throw_value_error("BodyRecords pickle index", "an int >= 0", py::repr(t[1]).cast<std::string>());
-  }
-  const py::handle first = t[records_column_count + 2];
-  if (!py::isinstance<py::bool_>(first)) py_io::throw_type_error("BodyRecords pickle scalar_first", "a bool", first);
   BodyRecords r;
-  r.name = t[0].cast<std::string>();
-  r.index = t[1].cast<py::ssize_t>();
+  r.name = py_io::as_string(t[0], "BodyRecords pickle name");
+  r.index = static_cast<py::ssize_t>(py_io::as_int(t[1], "BodyRecords pickle index", 0));
   const py_io::Array time = py_io::as_array(t[2], "BodyRecords pickle t");
   for (std::size_t k = 0; k < records_column_count; ++k) {
     const RecordsColumn& c = records_columns[k];
@@ -144,10 +128,10 @@ BodyRecords records_from_state(const py::tuple& t) {
                                std::to_string(c.ndim) + "-D with " + std::to_string(time.shape(0)) + " rows",
                                py_io::describe(t[2 + k]));
     }
-    a.attr("flags").attr("writeable") = false;
+    py_io::set_read_only(a);
     r.*c.member = a;
   }
-  r.scalar_first = first.cast<bool>();
+  r.scalar_first = py_io::as_bool(t[records_column_count + 2], "BodyRecords pickle scalar_first");
   return r;
 }
 
