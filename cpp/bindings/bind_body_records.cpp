@@ -135,6 +135,20 @@ BodyRecords records_from_state(const py::tuple& t) {
   return r;
 }
 
+// |x| of each row of an (n, k) array, as a read-only (n,) array minus `offset`
+py::object row_norms(py::handle a, double offset) {
+  const py::module_ np = py::module_::import("numpy");
+  py::array out = np.attr("subtract")(np.attr("linalg").attr("norm")(a, "axis"_a = 1), offset);
+  py_io::set_read_only(out);
+  return out;
+}
+
+// |H_O| = |angular_momentum_O_W| of each record [kg m^2/s]
+py::object angular_momentum_norm(const BodyRecords& r) { return row_norms(r.angular_momentum_O_W, 0.0); }
+
+// |q_WB| - 1 of each record: the drift of the integrated quaternion from the unit sphere
+py::object quaternion_norm_error(const BodyRecords& r) { return row_norms(r.q_WB, 1.0); }
+
 std::string records_repr(const BodyRecords& r) {
   const py::ssize_t n = r.t.attr("shape")[py::int_(0)].cast<py::ssize_t>();
   const py::object span = n == 0 ? py::object(py::list()) : py::object(py::make_tuple(py::float_(r.t[py::int_(0)].cast<double>()), py::float_(r.t[py::int_(-1)].cast<double>())));
@@ -167,6 +181,10 @@ pivot_reaction_W : ndarray, shape (n, 3)
     The pivot's force on the body in W [N] (0 unpinned).
 angular_momentum_O_W : ndarray, shape (n, 3)
     Angular momentum about the pivot (about the centre of mass unpinned), in W [kg m^2/s].
+angular_momentum_norm : ndarray, shape (n,)
+    |angular_momentum_O_W| [kg m^2/s] (conserved by a free body, a torque-free body about its pivot).
+quaternion_norm_error : ndarray, shape (n,)
+    |q_WB| - 1: how far the integrated attitude has drifted off the unit sphere (0 for a method that keeps it).
 mass_flow_energy : ndarray, shape (n,)
     The body's mass-flow energy since t0 [J] (0 for a constant mass).
 wheel_speed, motor_work : ndarray, shape (n, nw)
@@ -240,6 +258,10 @@ void bind_body_records(py::module_& m) {
                     "(n, 3) the pivot's force on the body, in W [N] (0 unpinned)")
       .def_readonly("angular_momentum_O_W", &BodyRecords::angular_momentum_O_W,
                     "(n, 3) angular momentum about the pivot (about the centre of mass unpinned), in W [kg m^2/s]")
+      .def_property_readonly("angular_momentum_norm", &angular_momentum_norm,
+                             "(n,) |angular_momentum_O_W| [kg m^2/s] (a new read-only array)")
+      .def_property_readonly("quaternion_norm_error", &quaternion_norm_error,
+                             "(n,) |q_WB| - 1, the integrated attitude's drift off the unit sphere (a new read-only array)")
       .def_readonly("mass_flow_energy", &BodyRecords::mass_flow_energy, "(n,) mass-flow energy since t0 [J]")
       .def_readonly("wheel_speed", &BodyRecords::wheel_speed,
                     "(n, nw) the speed of each of the body's wheels relative to it [rad/s]")

@@ -797,9 +797,14 @@ py::object simulate_scene_to_tolerance(py::handle model, py::handle method, cons
   std::vector<ToleranceCandidate> candidates;
   for (const Method m : fixed ? std::vector<Method>{given.method} : tolerance_methods()) {
     try {
-      compiled.push_back(m == given.method ? given : compile_handle(given.scene, m, false));
+      CompiledSceneHandle handle = m == given.method ? given : compile_handle(given.scene, m, false);
+      SimulationOptions probe = base;  // a one-step run: what the run refuses (e.g. 'exact' with a couple in a load)
+      probe.method = m, probe.dt = a.horizon, probe.steps = 1;
+      simulate(*handle.compiled, initial, probe);
+      compiled.push_back(std::move(handle));
     } catch (const std::invalid_argument&) {
-      continue;  // a method the scene does not take (e.g. 'exact' with a couple)
+      if (fixed) throw;  // the method asked for: its refusal is the answer
+      continue;          // a method the scene does not take
     }
     candidates.push_back({m, scene_order(*compiled.back().compiled)});
   }

@@ -5923,6 +5923,10 @@ class BodyRecords:
         The pivot's force on the body in W [N] (0 unpinned).
     angular_momentum_O_W : ndarray, shape (n, 3)
         Angular momentum about the pivot (about the centre of mass unpinned), in W [kg m^2/s].
+    angular_momentum_norm : ndarray, shape (n,)
+        |angular_momentum_O_W| [kg m^2/s] (conserved by a free body, a torque-free body about its pivot).
+    quaternion_norm_error : ndarray, shape (n,)
+        |q_WB| - 1: how far the integrated attitude has drifted off the unit sphere (0 for a method that keeps it).
     mass_flow_energy : ndarray, shape (n,)
         The body's mass-flow energy since t0 [J] (0 for a constant mass).
     wheel_speed, motor_work : ndarray, shape (n, nw)
@@ -5957,6 +5961,11 @@ class BodyRecords:
     def angular_momentum_O_W(self) -> typing.Any:
         """
         (n, 3) angular momentum about the pivot (about the centre of mass unpinned), in W [kg m^2/s]
+        """
+    @property
+    def angular_momentum_norm(self) -> typing.Any:
+        """
+        (n,) |angular_momentum_O_W| [kg m^2/s] (a new read-only array)
         """
     @property
     def index(self) -> int:
@@ -5997,6 +6006,11 @@ class BodyRecords:
     def q_WB(self) -> typing.Any:
         """
         (n, 4) attitude, (x, y, z, w) unless scalar_first
+        """
+    @property
+    def quaternion_norm_error(self) -> typing.Any:
+        """
+        (n,) |q_WB| - 1, the integrated attitude's drift off the unit sphere (a new read-only array)
         """
     @property
     def scalar_first(self) -> bool:

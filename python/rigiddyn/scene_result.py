@@ -13,7 +13,7 @@ dimensionless columns carry no unit)::
 
 Wide rather than long (one row per record and body): the scene-wide columns (energies, momenta, each
 element's work and power) belong to a record, not to a body, so a long table would repeat them on every
-body's row; the wide one has SimulationResult's shape (one row per record, ``t [s]`` an ordinary column)
+body's row; the wide one has one row per record, ``t [s]`` an ordinary column,
 and ``df.filter(like="sat:")`` selects one body. ``units=`` gives the columns in the user's units, as for a
 SimulationResult (rigiddyn.output_units): ``units={"length": "km", "time": "h"}`` gives ``t [h]``,
 ``sat:p_W_x [km]``, ``sat:v_W_x [km/h]``, ``sat:angular_momentum_O_W_x [kg km^2/h]``, ...
@@ -68,6 +68,17 @@ def _unit(name: str, unit: str | None) -> str:
     return name if unit is None else f"{name} [{unit}]"
 
 
+def stored_order(result: Any, scalar_first: bool | None) -> bool:
+    """The order of `result`'s q_WB rows: scalar_first if given (True: (w, x, y, z)), else the order the
+    result records (its `scalar_first`, True for a run of ``simulate(..., scalar_first=True)``; a result
+    that records none holds (x, y, z, w)). TypeError for anything but None, True or False."""
+    if scalar_first is None:
+        scalar_first = getattr(result, "scalar_first", False)
+    if not isinstance(scalar_first, (bool, np.bool_)):
+        raise TypeError(f"scalar_first: expected None, True or False, got {scalar_first!r}")
+    return bool(scalar_first)
+
+
 def columns(result: Any, scalar_first: bool | None = None, *,
             units: Mapping[str, str] | None = None) -> dict[str, np.ndarray]:
     """The columns of a SceneResult, in table order (the module docstring lists them).
@@ -75,7 +86,7 @@ def columns(result: Any, scalar_first: bool | None = None, *,
     Parameters
     ----------
     result : SceneResult
-        The records of ``rigiddyn.simulate`` of a Scene (or ``BatchSceneResult[i]``).
+        The records of ``rigiddyn.simulate`` of a scene (a pivoted body, a gyrostat) or ``BatchSceneResult[i]``.
     scalar_first : bool, optional
         The order of the result's q_WB rows; None (the default): the order the result records
         (``result.scalar_first``, set by ``simulate(..., scalar_first=True)``); True or False declares it.
@@ -108,8 +119,6 @@ def columns(result: Any, scalar_first: bool | None = None, *,
     >>> table["t [h]"], table["sat:p_W_x [km]"]
     (array([0. , 0.5, 1. ]), array([   0., 1800., 3600.]))
     """
-    from .trajectory import stored_order
-
     scalar_first = stored_order(result, scalar_first)
     out: dict[str, np.ndarray] = {"t [s]": np.ascontiguousarray(result.t, dtype=np.float64)}
     for b, body in enumerate(result.body_names):

@@ -31,7 +31,6 @@ of each pivot's reaction. The files are written all at once after the run, as si
 from __future__ import annotations
 
 import argparse
-import csv
 import json
 import math
 import sys
@@ -217,26 +216,14 @@ def _run(plan: _ScenePlan, update: Any) -> Any:
 
 def _write(plan: _ScenePlan, result: Any, folder: Path) -> list[Path]:
     """The files of the run, written to `folder`; returns their paths."""
-    from .scene_result import columns
+    from .scene_result import column_names
+    from .trajectory import write_csv, write_npz, write_parquet
 
-    table = columns(result, units=plan.units)
-    record = _run_record(plan, result, list(table))
-    csv_path, npz_path = folder / "trajectory.csv", folder / "trajectory.npz"
-    with open(csv_path, "w", newline="") as f:  # numbers by repr: read back to the same doubles
-        writer = csv.writer(f)
-        writer.writerow(table)
-        writer.writerows(zip(*(values.tolist() for values in table.values())))
-    with open(npz_path, "wb") as f:
-        arrays: dict[str, Any] = dict(table)
-        np.savez(f, **arrays)
-    written = [csv_path, npz_path]
+    record = _run_record(plan, result, column_names(result, units=plan.units))
+    written = [write_csv(result, folder / "trajectory.csv", units=plan.units),
+               write_npz(result, folder / "trajectory.npz", units=plan.units)]
     if "trajectory.parquet" in plan.out.outputs:
-        import pyarrow as pa
-        import pyarrow.parquet as pq
-
-        parquet = pa.table(table).replace_schema_metadata({b"rigiddyn": json.dumps(record).encode()})
-        pq.write_table(parquet, folder / "trajectory.parquet")
-        written.append(folder / "trajectory.parquet")
+        written.append(write_parquet(result, folder / "trajectory.parquet", metadata=record, units=plan.units))
     else:
         print("rigiddyn simulate: no Parquet file: it needs pyarrow (pip install 'rigiddyn[parquet]')", file=sys.stderr)
     (folder / "run.json").write_text(json.dumps(record, indent=2) + "\n")

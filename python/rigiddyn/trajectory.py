@@ -1,8 +1,11 @@
 """Recorded trajectories as tables: named columns with units, CSV, ``.npz``, Parquet and pandas.
 
-A SimulationResult (see ``rigiddyn.simulate``) becomes one table, one row per record and one float64
-column per scalar, named ``<field>[_<component>] [<unit>]`` after the result's attributes (frames as
-in docs/conventions.md; dimensionless columns carry no unit)::
+A SceneResult (``rigiddyn.simulate`` of a scene, a pivoted body or a gyrostat) becomes the wide table of
+rigiddyn.scene_result: one row per record, ``t [s]``, then each body's columns ``<body>:p_W_x [m]`` ..., then
+the scene-wide ones (energies, momenta, each element's work and power). A SimulationResult (``rigiddyn.simulate``
+of a particle, a planar or a rigid body, or ``BatchResult[i]``) becomes one table, one row per record and one
+float64 column per scalar, named ``<field>[_<component>] [<unit>]`` after its attributes (frames as in
+docs/conventions.md; dimensionless columns carry no unit)::
 
     t [s] | p_W_x [m] ... | q_WB_x ... q_WB_w | v_W_x [m/s] ... | w_B_x [rad/s] ... |
     kinetic_energy [J] | total_energy [J] | angular_momentum_norm [kg m^2/s] |
@@ -33,6 +36,8 @@ from typing import Any
 import numpy as np
 
 from .output_units import convert_columns
+from .scene_result import columns as scene_columns
+from .scene_result import stored_order
 
 __all__ = ["FIELDS", "column_names", "columns", "fields_from_columns", "read_columns", "stored_order", "to_dataframe",
            "write_csv", "write_npz", "write_parquet"]
@@ -63,7 +68,7 @@ def _components(field: str, scalar_first: bool) -> str | None:
 
 
 def column_names(scalar_first: bool = False, *, units: Mapping[str, str] | None = None) -> list[str]:
-    """The table's column names in order.
+    """The column names of a SimulationResult's table in order.
 
     Parameters
     ----------
@@ -99,25 +104,15 @@ def column_names(scalar_first: bool = False, *, units: Mapping[str, str] | None 
     return list(convert_columns(dict.fromkeys(names, np.zeros(0)), units))
 
 
-def stored_order(result: Any, scalar_first: bool | None) -> bool:
-    """The order of `result`'s q_WB rows: scalar_first if given (True: (w, x, y, z)), else the order the
-    result records (its `scalar_first`, True for a run of ``simulate(..., scalar_first=True)``; a result
-    that records none holds (x, y, z, w)). TypeError for anything but None, True or False."""
-    if scalar_first is None:
-        scalar_first = getattr(result, "scalar_first", False)
-    if not isinstance(scalar_first, (bool, np.bool_)):
-        raise TypeError(f"scalar_first: expected None, True or False, got {scalar_first!r}")
-    return bool(scalar_first)
-
-
 def columns(result: Any, scalar_first: bool | None = None, *,
             units: Mapping[str, str] | None = None) -> dict[str, np.ndarray]:
-    """The columns of a SimulationResult, in table order.
+    """The columns of a result, in table order.
 
     Parameters
     ----------
-    result : SimulationResult
-        The records of ``rigiddyn.simulate`` (or ``BatchResult[i]``).
+    result : SceneResult or SimulationResult
+        The records of ``rigiddyn.simulate`` or ``BatchResult[i]``: a SceneResult gives the columns of
+        rigiddyn.scene_result.columns, a SimulationResult the module docstring's 19 columns.
     scalar_first : bool, optional
         The order of the result's q_WB rows; None (the default): the order the result records
         (``result.scalar_first``, set by ``simulate(..., scalar_first=True)``); True or False declares it.
@@ -134,7 +129,7 @@ def columns(result: Any, scalar_first: bool | None = None, *,
     Raises
     ------
     TypeError
-        `result` is no SimulationResult, `scalar_first` no bool, or `units` no mapping.
+        `result` is no SceneResult or SimulationResult, `scalar_first` no bool, or `units` no mapping.
     ValueError
         A bad `units`: an unknown dimension, an unknown unit, a unit of another dimension.
 
@@ -151,6 +146,8 @@ def columns(result: Any, scalar_first: bool | None = None, *,
     >>> table["t [min]"], table["w_B_z [deg/min]"].round(6)
     (array([0.        , 0.01666667, 0.03333333]), array([3437.746771, 3437.746771, 3437.746771]))
     """
+    if hasattr(result, "body_names"):  # a SceneResult
+        return scene_columns(result, scalar_first, units=units)
     scalar_first = stored_order(result, scalar_first)
     out: dict[str, np.ndarray] = {}
     for field, (_, unit) in FIELDS.items():
@@ -158,7 +155,7 @@ def columns(result: Any, scalar_first: bool | None = None, *,
             values = np.asarray(getattr(result, field), dtype=np.float64)
         except AttributeError:
             got = type(result).__name__
-            raise TypeError(f"result: expected a SimulationResult (with .{field}), got {got}") from None
+            raise TypeError(f"result: expected a SceneResult or SimulationResult (with .{field}), got {got}") from None
         components = _components(field, scalar_first)
         if components is None:
             out[_name(field, None, unit)] = np.ascontiguousarray(values)
@@ -169,7 +166,7 @@ def columns(result: Any, scalar_first: bool | None = None, *,
 
 
 def fields_from_columns(table: Mapping[str, Any]) -> dict[str, np.ndarray]:
-    """The SimulationResult arrays back from a table's columns (any order of q_WB's columns):
+    """A SimulationResult's arrays back from its table's columns (any order of q_WB's columns):
     t (n,), p_W (n, 3), q_WB (n, 4) as (x, y, z, w), ..., as float64 arrays."""
     out: dict[str, np.ndarray] = {}
     for field, (components, unit) in FIELDS.items():
@@ -190,7 +187,7 @@ def write_csv(result: Any, path: str | Path, scalar_first: bool | None = None, *
 
     Parameters
     ----------
-    result : SimulationResult
+    result : SceneResult or SimulationResult
         As in `columns`.
     path : str or pathlib.Path
         The file written (replaced if it exists).
@@ -241,7 +238,7 @@ def write_npz(result: Any, path: str | Path, scalar_first: bool | None = None, *
 
     Parameters
     ----------
-    result : SimulationResult
+    result : SceneResult or SimulationResult
         As in `columns`.
     path : str or pathlib.Path
         The file written (replaced if it exists; no suffix is added).
@@ -289,7 +286,7 @@ def write_parquet(result: Any, path: str | Path, scalar_first: bool | None = Non
 
     Parameters
     ----------
-    result : SimulationResult
+    result : SceneResult or SimulationResult
         As in `columns`.
     path : str or pathlib.Path
         The file written (replaced if it exists).
@@ -367,13 +364,13 @@ def read_columns(path: str | Path) -> dict[str, np.ndarray]:
 
 
 def to_dataframe(result: Any, scalar_first: bool | None = None, *, units: Mapping[str, str] | None = None) -> Any:
-    """The SimulationResult as a pandas.DataFrame (needs pandas, extra ``dataframe``): one row per
+    """The result as a pandas.DataFrame (needs pandas, extra ``dataframe``): one row per
     record, the columns of the CSV file in the same order, `t [s]` a column (not the index; use
     ``.set_index("t [s]")`` for a time index).
 
     Parameters
     ----------
-    result : SimulationResult
+    result : SceneResult or SimulationResult
         As in `columns`.
     scalar_first : bool, optional
         As in `columns`.
@@ -384,7 +381,7 @@ def to_dataframe(result: Any, scalar_first: bool | None = None, *, units: Mappin
     Returns
     -------
     pandas.DataFrame
-        n rows, 19 columns.
+        n rows, the columns of `columns`.
 
     Raises
     ------

@@ -1,5 +1,6 @@
-"""rigiddyn.trajectory: a SimulationResult as a table (columns with units), written to CSV, .npz and
-Parquet and read back exactly, and as a pandas DataFrame."""
+"""rigiddyn.trajectory: a result as a table (columns with units), written to CSV, .npz and Parquet and read
+back exactly, and as a pandas DataFrame: a SimulationResult's 19 columns, a SceneResult's wide table of
+rigiddyn.scene_result."""
 
 import sys
 
@@ -85,6 +86,42 @@ def test_the_order_survives_pickling():
     old = type(wxyz).__new__(type(wxyz))
     old.__setstate__(state[:13])  # a state without the order (an earlier pickle): (x, y, z, w)
     assert old.scalar_first is False
+
+
+def _one_body_scene_run():
+    """_run's body, loads and gravity as a one-body Scene: a SceneResult."""
+    body = rd.RigidBody(1.5, np.diag([0.02, 0.03, 0.04]))
+    start = rd.RigidBodyState(p_W=[0.1, -0.2, 3.0], q_WB=[0.1, 0.2, 0.3, np.sqrt(1 - 0.14)], v_W=[1.0, 0.5, 4.0],
+                              w_B=[0.3, 7.0, -0.2])
+    loads = [rd.AppliedLoad(torque=[0.0, 0.0, 0.01], frame="body", t_end=0.25), rd.AppliedLoad(force=[0.2, 0.0, 0.0])]
+    scene = rd.Scene([body], elements=[rd.UniformGravity(), rd.ScheduledLoads(body=0, loads=loads)])
+    return rd.simulate(scene, [start], 1e-3, 500, "rk4", record_every=7)
+
+
+@pytest.mark.parametrize("suffix", ["csv", "npz", "parquet"])
+def test_a_scene_result_is_written_as_its_wide_table(tmp_path, suffix):
+    """A SceneResult's table is rigiddyn.scene_result's (the body's columns named body0:..., then the
+    scene-wide ones, each element's work), written by the same functions and read back bitwise (CSV by repr,
+    the others as float64 bits); its body's columns hold the records of the same run of the body alone."""
+    if suffix == "parquet":
+        pytest.importorskip("pyarrow", reason="the parquet extra (in the test extra: runs in CI)")
+    from rigiddyn import scene_result
+
+    result, alone = _one_body_scene_run(), _run()
+    table = tj.columns(result)
+    assert list(table) == scene_result.column_names(result)
+    assert list(table)[:5] == ["t [s]", "body0:p_W_x [m]", "body0:p_W_y [m]", "body0:p_W_z [m]", "body0:q_WB_x"]
+    assert [n for n in table if n.startswith("work")] == ["work[0] UniformGravity [J]", "work[1] ScheduledLoads [J]"]
+    read = tj.read_columns(getattr(tj, f"write_{suffix}")(result, tmp_path / f"run.{suffix}"))
+    assert list(read) == list(table)
+    for name, values in table.items():
+        np.testing.assert_array_equal(read[name], values, strict=True, err_msg=name)
+    # the same equations, method and dt: the scene and the body alone agree to round-off, rk4's 4 stages of
+    # <= 10 roundings of |x| each over 500 steps: 2e4 eps relative to max |x|
+    for field in ("p_W", "q_WB", "v_W", "w_B"):
+        want = np.asarray(getattr(alone, field))
+        np.testing.assert_allclose(getattr(result.body(0), field), want, rtol=0,
+                                   atol=2e4 * 2.2e-16 * np.max(np.abs(want)), err_msg=field)
 
 
 def test_a_scene_result_remembers_its_order():
@@ -213,7 +250,7 @@ def test_parquet_names_the_extra_without_pyarrow(monkeypatch, tmp_path):
 
 
 def test_bad_input_names_the_argument(tmp_path):
-    with pytest.raises(TypeError, match=r"result: expected a SimulationResult \(with \.t\), got dict"):
+    with pytest.raises(TypeError, match=r"result: expected a SceneResult or SimulationResult \(with \.t\), got dict"):
         tj.columns({"t": [0.0]})
     with pytest.raises(TypeError, match="scalar_first: expected None, True or False, got 'yes'"):
         tj.columns(_run(), scalar_first="yes")
