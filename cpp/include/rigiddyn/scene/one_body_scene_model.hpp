@@ -139,6 +139,13 @@ class OneBodySceneModel {
   // the attitude q ← q / |q|
   RIGIDDYN_ALWAYS_INLINE void project(Coordinates& y) const { slot_.project(y.data()); }
 
+  // As SceneModel::midpoint_newton: the body's ω̄ by a Newton step and its q̄ exactly in the implicit midpoint's fixed
+  // point (a kind without an attitude and Euler's gyroscopic term: nothing)
+  RIGIDDYN_ALWAYS_INLINE void midpoint_newton(const Coordinates& y0, const Coordinates& mid, Coordinates& next,
+                                              double h) const {
+    if constexpr (detail::has_midpoint_newton<Slot>::value) slot_.midpoint_newton(y0.data(), mid.data(), next.data(), h);
+  }
+
   // ξ (SceneModel::velocity)
   RIGIDDYN_ALWAYS_INLINE void velocity(const Coordinates& y, Tangent& xi) const {
     Evaluation e;

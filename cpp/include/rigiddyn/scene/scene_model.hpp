@@ -290,9 +290,10 @@ class BasicSceneModel {
     step_start_ = y[t_y_];  // the methods that end with project: the next step starts here
   }
 
-  // The implicit midpoint step (integrators/implicit_midpoint.hpp's hook): the fixed point ȳ = y0 + (h/2) ẏ(ȳ) of
-  // every coordinate, with the tolerance and cap of that file, then y1 = 2ȳ − y0 and project; except a tree's q and
-  // v, which take the variational midpoint method instead (kinds/tree_slot.hpp): symplectic, it keeps the momentum of
+  // The implicit midpoint step (integrators/implicit_midpoint.hpp's hook): the fixed point ȳ = y0 + (h/2) ẏ(ȳ) of every
+  // coordinate, with the tolerance and cap of that file (a body with an attitude and Euler's gyroscopic term takes its
+  // ω̄ by a Newton step and its q̄ exactly: midpoint_newton), then y1 = 2ȳ − y0 and project; except a tree's q and v,
+  // which take the variational midpoint method instead (kinds/tree_slot.hpp): symplectic, it keeps the momentum of
   // every symmetry of the scene (a floating tree's momenta, a hinge about the axis of gravity) and bounds the energy
   // error over long runs. With a tree, the iterates are mixed by Anderson's method (anderson_mix): the variational
   // fixed point contracts slowly where a light link turns fast (its rate ~ h × joint rate × the inertias' ratio).
@@ -307,6 +308,7 @@ class BasicSceneModel {
       rate(mid_, rate_);
       next_ = y + (0.5 * h) * rate_;
       for (const detail::TreeSlot& tree : trees) tree.variational_midpoint_iterate(mid_.data(), 0.5 * h, next_.data());
+      midpoint_newton(y, mid_, next_, h);
       const double change = (next_ - mid_).norm();
       converged = change <= tolerance * next_.norm();
       if (converged || trees.empty()) {
@@ -320,6 +322,17 @@ class BasicSceneModel {
     for (const detail::TreeSlot& tree : trees) tree.finish_variational_midpoint(h, y.data());
     project(y);
     return converged;
+  }
+
+  // In the implicit midpoint's fixed point, next = y0 + (h/2) ẏ(mid) of the map corrected for every body with an
+  // attitude and Euler's gyroscopic term: its ω̄ by a Newton step, its q̄ exactly for that ω̄
+  // (midpoint_newton_correction, midpoint_attitude)
+  void midpoint_newton(const Coordinates& y0, const Coordinates& mid, Coordinates& next, double h) const {
+    for_each_slot([&](const auto& s) {
+      if constexpr (detail::has_midpoint_newton<std::decay_t<decltype(s)>>::value) {
+        s.midpoint_newton(y0.data(), mid.data(), next.data(), h);
+      }
+    });
   }
 
   // ξ = (velocities, accelerations per body; 1; element powers; mass-flow powers)

@@ -21,6 +21,7 @@
 #include "rigiddyn/exact/free_body.hpp"
 #include "rigiddyn/integrators/exact_flow_kick.hpp"
 #include "rigiddyn/integrators/free_flow_tags.hpp"
+#include "rigiddyn/integrators/implicit_midpoint.hpp"
 #include "rigiddyn/integrators/splitting_dlm.hpp"
 #include "rigiddyn/models/euler_equations.hpp"
 #include "rigiddyn/models/loads.hpp"
@@ -128,6 +129,14 @@ class PivotedBodyModel {
 
   // q ← q / |q| (so3/quaternion_kernels.hpp)
   RIGIDDYN_ALWAYS_INLINE static void project(Coordinates& y) { normalise_quaternion(y.data()); }
+
+  // In the implicit midpoint's fixed point (integrators/implicit_midpoint.hpp): ω̄ by the Newton step of the
+  // gyroscopic term of I_O, q̄ exactly for that ω̄
+  RIGIDDYN_ALWAYS_INLINE void midpoint_newton(const Coordinates& y0, const Coordinates& mid, Coordinates& next,
+                                              double h) const {
+    midpoint_newton_correction(euler_, mid.data() + 4, next.data() + 4, h);
+    midpoint_attitude(y0.data(), next.data() + 4, h, next.data());
+  }
 
   // ξ = (ω, α, 1, powers)
   RIGIDDYN_ALWAYS_INLINE void velocity(const Coordinates& y, Tangent& xi) const {

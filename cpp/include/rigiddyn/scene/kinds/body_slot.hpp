@@ -17,14 +17,17 @@
 //   record(y, k, w, sums, H_O, R)    its energy and momenta into sums, its own momentum and pivot reaction
 //   coordinates(state, y), state(y)  from and to its BodyState
 //   attitude_y()                     where q_WB is in y (−1 without one)
-// and has_mass_flow (a kind whose mass is a coordinate: scene/kinds/mass_*_slot.hpp add the mass part). Two members
-// are optional: set_time(t) (a kind with piecewise-constant inputs, set at each piece of a run, as the elements')
-// and record_internal(y, out) (a kind with coordinates of its own beyond the body's motion: the gyrostat's wheel
-// speeds). Four more let a model skip what nothing needs (OneBodySceneModel, scene/one_body_scene_model.hpp):
-// constrained = true (a kind held by a pivot or a plane, whose reaction is an external force), reads_kinematics =
-// false (a kind whose rate, velocity and kick read y and the wrench, never the kinematics), motion_kinematics(y,
-// clock, k) (the kinematics but the attitude q_WB, for an evaluation in which no term reads it) and
-// retract_motion(y, θ, out) (retract but the attitude, for a stage whose velocity reads none).
+// and has_mass_flow (a kind whose mass is a coordinate: scene/kinds/mass_*_slot.hpp add the mass part). Two members are
+// optional: set_time(t) (a kind with piecewise-constant inputs, set at each piece of a run, as the elements') and
+// record_internal(y, out) (a kind with coordinates of its own beyond the body's motion: the gyrostat's wheel speeds),
+// and midpoint_newton(y0, mid, next, h) (a kind with an attitude and Euler's gyroscopic term: its ω̄ by a Newton step
+// and its q̄ by the exact midpoint of q̇ = ½ q ⊗ ω̄ in the implicit midpoint's fixed point, midpoint_newton_correction
+// and midpoint_attitude of integrators/implicit_midpoint.hpp). Four more let a model skip what nothing needs
+// (OneBodySceneModel, scene/one_body_scene_model.hpp): constrained = true (a kind held by a pivot or a plane, whose
+// reaction is an external force), reads_kinematics = false (a kind whose rate, velocity and kick read y and the wrench,
+// never the kinematics), motion_kinematics(y, clock, k) (the kinematics but the attitude q_WB, for an evaluation in
+// which no term reads it) and retract_motion(y, θ, out) (retract but the attitude, for a stage whose velocity reads
+// none).
 // A slot's place (SlotPlace: its body's index and its offsets in y and ξ) is its base class: FirstPlace, known at
 // compile time, for the one body of a OneBodySceneModel (the kinds that template on it: Place). The members a step
 // calls (kinematics to loads_kick above) are forced inline (RIGIDDYN_ALWAYS_INLINE) in the kinds a one-body layout
@@ -39,6 +42,7 @@
 #include "rigiddyn/exact/free_body.hpp"
 #include "rigiddyn/integrators/exact_flow_kick.hpp"
 #include "rigiddyn/integrators/free_flow_tags.hpp"
+#include "rigiddyn/integrators/implicit_midpoint.hpp"  // midpoint_newton_correction, midpoint_attitude
 #include "rigiddyn/integrators/splitting_dlm.hpp"
 #include "rigiddyn/models/euler_equations.hpp"  // cross_3
 #include "rigiddyn/scene/body_kinematics.hpp"
@@ -153,6 +157,14 @@ struct has_motion_kinematics<Slot, std::void_t<decltype(std::declval<const Slot&
                                        std::declval<BodyKinematics&>()))>> : std::true_type {};
 
 RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d three(const double* x) { return Eigen::Vector3d(x[0], x[1], x[2]); }
+
+// Whether a slot has midpoint_newton(y0, mid, next, h) (the kinds with an attitude and Euler's gyroscopic term)
+template <class Slot, class = void>
+struct has_midpoint_newton : std::false_type {};
+template <class Slot>
+struct has_midpoint_newton<Slot, std::void_t<decltype(std::declval<const Slot&>().midpoint_newton(
+                                     std::declval<const double*>(), std::declval<const double*>(),
+                                     std::declval<double*>(), 0.0))>> : std::true_type {};
 
 template <bool normalise, class Euler>
 void free_dlm(DlmRotation<normalise>, const Euler& euler, double* q, double* w, double h) {

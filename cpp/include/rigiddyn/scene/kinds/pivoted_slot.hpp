@@ -57,6 +57,11 @@ struct PivotedSlot : Place {
   }
   RIGIDDYN_ALWAYS_INLINE void dexp_inv(const double* theta, double* xi) const { dexp_inv_body(theta + at_xi, xi + at_xi); }
   RIGIDDYN_ALWAYS_INLINE void project(double* y) const { normalise_quaternion(y + at_y + q); }
+  // about O: Euler's gyroscopic term of I_O
+  RIGIDDYN_ALWAYS_INLINE void midpoint_newton(const double* y0, const double* mid, double* next, double h) const {
+    midpoint_newton_correction(euler_O, mid + at_y + w, next + at_y + w, h);
+    midpoint_attitude(y0 + at_y + q, next + at_y + w, h, next + at_y + q);
+  }
   // Euler's equations about O with the wrench reduced to O
   template <class GyroscopicKick>
   RIGIDDYN_ALWAYS_INLINE void kick(double* y, const BodyKinematics& k, const BodyWrench& wrench, double h, const GyroscopicKick& gyroscopic_kick) const {

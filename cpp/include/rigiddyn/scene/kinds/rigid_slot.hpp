@@ -95,6 +95,10 @@ struct RigidSlot : Place, SpatialLayout {
   }
   RIGIDDYN_ALWAYS_INLINE void dexp_inv(const double* theta, double* xi) const { dexp_inv_body(theta + at_xi + xi_w, xi + at_xi + xi_w); }
   RIGIDDYN_ALWAYS_INLINE void project(double* y) const { normalise_quaternion(y + at_y + q); }
+  RIGIDDYN_ALWAYS_INLINE void midpoint_newton(const double* y0, const double* mid, double* next, double h) const {
+    midpoint_newton_correction(euler, mid + at_y + w, next + at_y + w, h);
+    midpoint_attitude(y0 + at_y + q, next + at_y + w, h, next + at_y + q);
+  }
   template <class GyroscopicKick>
   RIGIDDYN_ALWAYS_INLINE void kick(double* y, const BodyKinematics&, const BodyWrench& wrench, double h, const GyroscopicKick& gyroscopic_kick) const {
     double* x = y + at_y;
