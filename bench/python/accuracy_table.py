@@ -95,7 +95,7 @@ def free_body(name: str, inertia: tuple[float, float, float], w_B: tuple[float, 
 
     def true_error(r: Any) -> np.ndarray:
         q, _ = exact.state_at(r.t)
-        return np.asarray(rigiddyn.angular_distance(r.q_WB, q))
+        return np.asarray(rigiddyn.angular_distance(r.body(0).q_WB, q))
 
     return Case(name, "attitude", run, true_error, horizon, dts)
 
@@ -112,9 +112,10 @@ def shipped_problem(name: str, label: str, quantity: str, horizon: float, dts: t
 
     def true_error(r: Any) -> np.ndarray:
         exact = reference_states(problem, np.asarray(r.t))
+        records = r.body(0)
         if quantity == "attitude":
-            return np.asarray(rigiddyn.angular_distance(r.q_WB, exact.q_WB))
-        return np.linalg.norm(np.asarray(r.p_W) - exact.p_W, axis=1)
+            return np.asarray(rigiddyn.angular_distance(records.q_WB, exact.q_WB))
+        return np.linalg.norm(np.asarray(records.p_W) - exact.p_W, axis=1)
 
     return Case(f"{label} (shipped {name})", quantity, run, true_error, horizon, dts, size)
 

@@ -37,12 +37,13 @@ def run(method, w0, dt):
                         record_every=record_every, error=False)
     evaluations = len(r.t) if method == "exact" else steps
     ns = 1e9 * r.elapsed_seconds / evaluations
-    if r.diverged or not np.all(np.isfinite(r.q_WB[-1])):
+    body = r.body(0)
+    if r.diverged or not np.all(np.isfinite(body.q_WB[-1])):
         return steps, ns, math.inf, math.inf, math.inf
     q_ref, _ = rd.TorqueFreeSolution(INERTIA, [0, 0, 0, 1.0], w0).state_at(r.t[-1])
-    attitude = (Rotation.from_quat(q_ref).inv() * Rotation.from_quat(r.q_WB[-1])).magnitude()
+    attitude = (Rotation.from_quat(q_ref).inv() * Rotation.from_quat(body.q_WB[-1])).magnitude()
     dE = np.abs(r.kinetic_energy / r.kinetic_energy[0] - 1.0).max()
-    dL = np.abs(r.angular_momentum_norm / r.angular_momentum_norm[0] - 1.0).max()
+    dL = np.abs(body.angular_momentum_norm / body.angular_momentum_norm[0] - 1.0).max()
     return steps, ns, attitude, dE, dL
 
 

@@ -135,10 +135,20 @@ BodyRecords records_from_state(const py::tuple& t) {
   return r;
 }
 
-// |x| of each row of an (n, k) array, as a read-only (n,) array minus `offset`
+// |x| of each row of an (n, k) array, as a read-only (n,) array minus `offset`; a row beyond 1e154 (a diverged
+// run's) gives inf quietly, as the run's own records do
 py::object row_norms(py::handle a, double offset) {
   const py::module_ np = py::module_::import("numpy");
-  py::array out = np.attr("subtract")(np.attr("linalg").attr("norm")(a, "axis"_a = 1), offset);
+  const py::object quiet = np.attr("errstate")("over"_a = "ignore", "invalid"_a = "ignore");
+  quiet.attr("__enter__")();
+  py::array out;
+  try {
+    out = np.attr("subtract")(np.attr("linalg").attr("norm")(a, "axis"_a = 1), offset);
+  } catch (...) {
+    quiet.attr("__exit__")(py::none(), py::none(), py::none());
+    throw;
+  }
+  quiet.attr("__exit__")(py::none(), py::none(), py::none());
   py_io::set_read_only(out);
   return out;
 }

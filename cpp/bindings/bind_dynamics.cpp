@@ -23,6 +23,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 namespace rigiddyn::bindings {
@@ -87,187 +88,42 @@ struct SimulationResult {
   py::object choice = py::none();  // a ToleranceChoice (simulate(..., tolerance=...)) or None
 };
 
-SimulationResult to_result(Trajectory&& tr, bool scalar_first) {
-  const auto n = static_cast<py::ssize_t>(tr.size());
-  if (scalar_first) to_scalar_first(tr.q_WB);
-  return SimulationResult{LazyArray(std::move(tr.t), {n}),
-                          LazyArray(std::move(tr.p_W), {n, 3}),
-                          LazyArray(std::move(tr.q_WB), {n, 4}),
-                          LazyArray(std::move(tr.v_W), {n, 3}),
-                          LazyArray(std::move(tr.w_B), {n, 3}),
-                          LazyArray(std::move(tr.kinetic_energy), {n}),
-                          LazyArray(std::move(tr.total_energy), {n}),
-                          LazyArray(std::move(tr.angular_momentum_norm), {n}),
-                          LazyArray(std::move(tr.quaternion_norm_error), {n}),
-                          LazyArray(std::move(tr.work), {n}),
-                          tr.diverged,
-                          tr.unconverged_steps,
-                          tr.elapsed_seconds,
-                          scalar_first};
-}
-
-// What a body's balance needs of it (balance.hpp): a rigid body's I_C, a planar body's diag(0, 0, I_zz), no inertia
-// for a particle.
-BalanceBody balance_body(const Particle& b) { return {b.mass(), std::nullopt, "Particle"}; }
-BalanceBody balance_body(const PlanarBody& b) {
-  return {b.mass(), Eigen::Vector3d(0.0, 0.0, b.inertia_zz()).asDiagonal().toDenseMatrix(), "PlanarBody"};
-}
-BalanceBody balance_body(const RigidBody& b) { return {b.mass(), b.inertia_com(), "RigidBody"}; }
-double largest_moment(const Particle&) { return 0.0; }
-double largest_moment(const PlanarBody& b) { return b.inertia_zz(); }
-double largest_moment(const RigidBody& b) { return b.inertia_com().norm(); }  // the Frobenius norm >= |I|
-
-// The balance of a run of `body` with options o (balance.hpp), checked (accuracy_check.hpp) against its estimate e
-// (null: none) at `level`: the balance with its verdicts and the AccuracyWarning's message ("" when it closes).
-template <class Body>
-std::pair<RunBalance, std::string> checked_body_balance(const Body& body, const Trajectory& tr,
-                                                        const SimulationOptions& o, const GlobalErrorEstimate* e,
-                                                        const std::optional<double>& level) {
-  RunBalance balance = body_balance(tr, balance_body(body), o);
-  BalanceBounds bounds;
-  if (e != nullptr) bounds = body_estimate_bounds(*e, tr, body.mass(), largest_moment(body));
-  std::string message =
-      check_accuracy(balance, accuracy_check_of(level, tr.t, e, &bounds, method_info(o.method).name, o.dt));
-  return {std::move(balance), std::move(message)};
-}
-
-// The SimulationResult of a run of `body` with options o as its Python object: its error estimate and choice as
-// given, its balance made and checked in the core with the AccuracyWarning at `level` when it does not close.
-template <class Body>
-py::object result_object(const Body& body, Trajectory&& tr, const SimulationOptions& o, bool scalar_first,
-                         std::optional<GlobalErrorEstimate>&& estimate, py::object choice,
-                         const std::optional<double>& level) {
-  const GlobalErrorEstimate* e = estimate ? &*estimate : nullptr;
-  std::pair<RunBalance, std::string> checked =
-      with_gil_released_for(tr.size(), [&]() { return checked_body_balance(body, tr, o, e, level); });
-  warn_accuracy(checked.second, level, tr.diverged);
-  SimulationResult result = to_result(std::move(tr), scalar_first);
-  if (estimate) result.error = py::cast(to_global_error(std::move(*estimate), false));
-  result.choice = std::move(choice);
-  result.balance = LazyBalance(std::move(checked.first));
-  return py::cast(std::move(result));
-}
-
-template <class Body, class State>
-py::object simulate_one(const Body& body, const State& initial, const SimulationOptions& o, const std::string& method,
-                        py::handle progress, bool scalar_first, bool error, const std::optional<double>& accuracy_level) {
-  SimulationOptions options = o;
-  PythonMonitor monitor(progress);
-  if (monitor.needed()) options.monitor = [&monitor](std::int64_t steps_done) { return monitor(steps_done); };
-  Trajectory tr;
-  std::optional<GlobalErrorEstimate> estimate;
-  {
-    py::gil_scoped_release release;
-    tr = simulate(body, initial, options);
-    if (error && !tr.interrupted) {  // the loads are split at their switches: the method keeps its order
-      const auto run = [&](const SimulationOptions& coarse) { return simulate(body, initial, coarse); };
-      estimate = global_error(tr, options, method_info(o.method).order, interruptible(run, tr.interrupted));
+// The one-body scene of a body with its uniform gravity and loads: a Particle, PlanarBody or RigidBody (`initial`
+// checked to be its state: TypeError naming it, or naming model for anything else), a pivoted body or a Gyrostat.
+py::object body_scene(py::handle model, py::handle initial, py::handle loads, py::handle gravity) {
+  if (is_gyrostat(model)) return gyrostat_scene(model, loads, gravity);
+  if (is_pivoted(model)) return pivoted_scene(model, loads, gravity);
+  return with_model(model, initial, "initial", [&](const auto& body, const auto&) {
+    const Eigen::Vector3d g_W = as_gravity(gravity);
+    // a PlanarBody's plane would take an out-of-plane g silently (the scene keeps g's in-plane part)
+    if (std::is_same_v<std::decay_t<decltype(body)>, PlanarBody> && g_W.z() != 0.0) {
+      throw_invalid("gravity", "gravity in the xy plane (z = 0) for a PlanarBody", g_W);
     }
-  }
-  if (tr.interrupted) monitor.raise();  // the records so far are dropped with tr
-  warn_after_run(tr, o, method);
-  return result_object(body, std::move(tr), o, scalar_first, std::move(estimate), py::none(), accuracy_level);
+    return one_body_scene(body, g_W, loads);
+  });
 }
 
-// The quantity a tolerance bounds by default: the position of a particle, the attitude of a body that turns.
-ErrorMeasure default_measure(const Particle&) { return ErrorMeasure::position; }
-ErrorMeasure default_measure(const RigidBody&) { return ErrorMeasure::attitude; }
-ErrorMeasure default_measure(const PlanarBody&) { return ErrorMeasure::attitude; }
+// A SceneResult's Python object, named so in the signature
+using SceneResultObject = py::typing::Union<SceneResult>;
 
-// simulate(..., tolerance=) of one body: the candidates the body takes (a one-step run of each; an explicit
-// `method` is the only one), the planner (tolerance.hpp) with the GIL released, ToleranceError when the
-// tolerance is not met.
-template <class Body, class State>
-py::object simulate_to_tolerance(const Body& body, const State& initial, SimulationOptions base, bool method_given,
-                                 const ToleranceArgs& a, py::handle progress, bool scalar_first,
-                                 const std::optional<double>& accuracy_level) {
-  std::vector<ToleranceCandidate> candidates;
-  for (const Method method : method_given ? std::vector<Method>{base.method} : tolerance_methods()) {
-    SimulationOptions probe = base;
-    probe.method = method, probe.dt = a.horizon, probe.steps = 1;
-    try {
-      simulate(body, initial, probe);  // e.g. 'exact' refuses a couple
-    } catch (const std::invalid_argument&) {
-      if (method_given) throw;
-      continue;
-    }
-    candidates.push_back({method, method_info(method).order});
-  }
-  PythonMonitor monitor(progress);
-  if (monitor.needed()) base.monitor = [&monitor](std::int64_t steps_done) { return monitor(steps_done); };
-  ToleranceRun<Trajectory> run;
-  {
-    py::gil_scoped_release release;
-    run = run_to_tolerance<Trajectory>(candidates, base, {a.tolerance, a.measure, a.horizon, a.max_steps},
-                                       [&](const ToleranceCandidate& c, const SimulationOptions& o) {
-                                         SimulationOptions x = o;
-                                         x.method = c.method;
-                                         return simulate(body, initial, x);
-                                       });
-  }
-  if (run.interrupted) monitor.raise();
-  if (!run.ran) raise_tolerance_error(run.choice, py::none());
-  SimulationOptions final_options = base;
-  final_options.method = run.choice.method, final_options.dt = run.choice.dt, final_options.steps = run.choice.steps;
-  warn_after_run(run.records, final_options, method_info(run.choice.method).name);
-  py::object result = result_object(body, std::move(run.records), final_options, scalar_first,
-                                    std::optional(std::move(run.estimate)), py::cast(run.choice),
-                                    run.choice.met ? accuracy_level : std::nullopt);
-  if (!run.choice.met) raise_tolerance_error(run.choice, result);
-  return result;
-}
-
-// simulate: every argument converted by name before the run (see simulate_doc); a scene's run is
-// bind_scene.cpp's.
-using SimulateResult = py::typing::Union<SimulationResult, SceneResult>;
-
-py::typing::Union<SimulationResult, SceneResult> simulate_py(py::handle model, py::handle initial, py::handle dt,
-                                                             py::handle steps, py::handle method,
-                                                             py::handle record_every, py::handle loads,
-                                                             py::handle gravity, py::handle t0,
-                                                             py::handle scalar_first, py::handle progress,
-                                                             py::handle duration, py::handle error,
-                                                             py::handle accuracy_level, py::handle tolerance,
-                                                             py::handle measure, py::handle max_steps,
-                                                             py::handle controller) {
+// simulate: a scene's run (bind_scene.cpp's), a body's as its one-body scene; every argument converted by name
+// before the run (see simulate_doc).
+SceneResultObject simulate_py(py::handle model, py::handle initial, py::handle dt, py::handle steps,
+                              py::handle method, py::handle record_every, py::handle loads, py::handle gravity,
+                              py::handle t0, py::handle scalar_first, py::handle progress, py::handle duration,
+                              py::handle error, py::handle accuracy_level, py::handle tolerance, py::handle measure,
+                              py::handle max_steps, py::handle controller) {
   const ToleranceHandles to{tolerance, measure, max_steps};
-  const bool one_body = is_one_body(model);  // a RigidBody, PlanarBody or Particle: none of the kinds below
-  if (!one_body && is_scene(model)) {
-    return py::reinterpret_borrow<SimulateResult>(simulate_scene_py(model, initial, dt, steps, method, record_every,
-                                                                    loads, gravity, t0, scalar_first, progress,
-                                                                    duration, error, accuracy_level, to, controller));
+  if (is_scene(model)) {
+    return py::reinterpret_borrow<SceneResultObject>(simulate_scene_py(model, initial, dt, steps, method, record_every,
+                                                                       loads, gravity, t0, scalar_first, progress,
+                                                                       duration, error, accuracy_level, to, controller));
   }
-  if (!one_body && (is_pivoted(model) || is_gyrostat(model))) {  // the one-body scene of the body, its gravity and loads
-    const py::object scene = is_gyrostat(model) ? gyrostat_scene(model, loads, gravity) : pivoted_scene(model, loads, gravity);
-    return py::reinterpret_borrow<SimulateResult>(simulate_scene_py(scene, py::make_tuple(initial), dt, steps, method,
-                                                                    record_every, py::none(), py::none(), t0,
-                                                                    scalar_first, progress, duration, error,
-                                                                    accuracy_level, to, controller));
-  }
-  if (!controller.is_none()) {
-    py_io::throw_value_error("controller", "None for a Particle, PlanarBody or RigidBody (a controller drives a Scene, "
-                             "a CompiledScene, a pivoted body or a Gyrostat: put the body in a Scene)",
-                             py::repr(controller).cast<std::string>());
-  }
-  return py::reinterpret_borrow<SimulateResult>(with_model(model, initial, "initial", [&](const auto& body, const auto& state) {
-    const auto target =
-        as_tolerance_args(tolerance, measure, max_steps, dt, steps, duration, error, default_measure(body));
-    if (target) {
-      SimulationOptions o = as_run_options(method, loads, gravity);
-      o.record_every = py_io::as_int(record_every, "record_every", 1);
-      o.t0 = py_io::as_scalar(py_io::in_si(t0, "s", "t0"), "t0");
-      return simulate_to_tolerance(body, state, o, !method.is_none(), *target, progress,
-                                   py_io::as_bool(scalar_first, "scalar_first"), as_accuracy_level(accuracy_level));
-    }
-    SimulationOptions o = as_options(dt, method, loads, gravity);
-    o.steps = as_steps(steps, duration, o.dt);
-    o.record_every = py_io::as_int(record_every, "record_every", 1);
-    o.t0 = py_io::as_scalar(py_io::in_si(t0, "s", "t0"), "t0");
-    const bool first = py_io::as_bool(scalar_first, "scalar_first");
-    const bool estimate = py_io::as_bool(error, "error");
-    const std::optional<double> level = as_accuracy_level(accuracy_level);
-    return simulate_one(body, state, o, method_info(o.method).name, progress, first, estimate, level);
-  }));
+  const py::object scene = body_scene(model, initial, loads, gravity);
+  return py::reinterpret_borrow<SceneResultObject>(simulate_scene_py(scene, py::make_tuple(initial), dt, steps, method,
+                                                                     record_every, py::none(), py::none(), t0,
+                                                                     scalar_first, progress, duration, error,
+                                                                     accuracy_level, to, controller));
 }
 
 // The arrays of a SimulationResult in order (pickle state, field by field).
@@ -493,8 +349,8 @@ into sub-steps of the same method, so every method keeps its order.
 Parameters
 ----------
 model : Particle, PlanarBody, RigidBody, PivotedBody, PivotedPlanarBody, Gyrostat, Scene or CompiledScene
-    What to integrate. A PivotedBody, PivotedPlanarBody or Gyrostat runs as its one-body scene with a
-    UniformGravity (`gravity`) and a ScheduledLoads (`loads`).
+    What to integrate. A body runs as its one-body scene with a UniformGravity (`gravity`) and a
+    ScheduledLoads (`loads`).
 initial : ParticleState, PlanarBodyState, RigidBodyState, PivotedBodyState, ..., or list
     The state of `model`'s kind at t0 (also PivotedPlanarBodyState or GyrostatState); for a Scene or
     CompiledScene, a list of the states of its bodies.
@@ -551,7 +407,7 @@ max_steps : int, keyword-only, optional
     The cost cap of a run to a tolerance: no run (the final run and its refinement) of more steps, >= 4.
     None (the default): 10_000_000.
 controller : Controller, keyword-only, optional
-    A digital controller (rigiddyn.Controller) of a Scene, CompiledScene, pivoted body or Gyrostat: its law is
+    A digital controller (rigiddyn.Controller) of a body or a scene: its law is
     called with the GIL at t0 + k controller.period, k = 0, 1, ... before the end of the run, with the state of every
     body there, and its actuator commands (gyrostat wheel torques, MagneticDipole dipoles, ScheduledLoads thrusts)
     are held until the next sample; the steps are split at the samples, as at switch times, so every method keeps
@@ -560,11 +416,12 @@ controller : Controller, keyword-only, optional
 
 Returns
 -------
-SimulationResult or SceneResult
-    A SimulationResult for a Particle, PlanarBody or RigidBody: one row per record, n records (t, p_W, q_WB, v_W,
-    w_B, kinetic_energy, total_energy, angular_momentum_norm, quaternion_norm_error, work; diverged,
-    unconverged_steps, elapsed_seconds; error; balance; choice). A SceneResult for a Scene, a CompiledScene, a
-    pivoted body or a Gyrostat. The records are those of the run at dt whether or not error is True; elapsed_seconds
+SceneResult
+    One row per record, n records, of every kind of model: per body (n, nb, ...) arrays (p_W, q_WB, v_W, w_B,
+    mass, ...), the scene's (n,) energies and (n, ne) work of each element (a body's one-body scene: its
+    UniformGravity first, then its ScheduledLoads); diverged, unconverged_steps, elapsed_seconds; error; balance;
+    choice. result.body(0) (a BodyRecords) reads one body's records as (n, ...) arrays: q_WB (n, 4), ... The
+    records are those of the run at dt whether or not error is True; elapsed_seconds
     is its loop's. result.balance (a Balance, on every run) holds the residuals of the work-energy and
     impulse-momentum balances per record, zero for the exact dynamics. With tolerance, result.choice is a
     ToleranceChoice (else None).
@@ -601,13 +458,13 @@ AccuracyWarning
 
 See Also
 --------
-step, simulate_batch, methods, SimulationResult, AppliedLoad, Scene, GlobalError, Balance, AccuracyWarning,
-ToleranceChoice
+step, simulate_batch, methods, SceneResult, BodyRecords, AppliedLoad, Scene, GlobalError, Balance,
+AccuracyWarning, ToleranceChoice
 
 Notes
 -----
 A Particle records q = identity and w = 0; a PlanarBody records p = (x, y, 0), q = Rz(theta), w = (0, 0, omega).
-work is integrated by the same method as the motion, so kinetic_energy - kinetic_energy[0] ~ work.
+work is integrated by the same method as the motion, so kinetic_energy - kinetic_energy[0] ~ work.sum(axis=1).
 
 Examples
 --------
@@ -616,7 +473,7 @@ A dropped particle follows z = -1/2 g t^2; rk4 integrates a quadratic motion exa
 >>> r = rd.simulate(rd.Particle(1.0), rd.ParticleState(), dt=0.01, duration=2.0, gravity=True, record_every=50)
 >>> r.t
 array([0. , 0.5, 1. , 1.5, 2. ])
->>> np.allclose(r.p_W[:, 2], -0.5 * 9.81 * r.t**2, rtol=0, atol=1e-12)
+>>> np.allclose(r.body(0).p_W[:, 2], -0.5 * 9.81 * r.t**2, rtol=0, atol=1e-12)
 True
 
 A torque-free body keeps its kinetic energy and |H_G|; implicit_midpoint holds both to its Newton tolerance
@@ -624,13 +481,14 @@ A torque-free body keeps its kinetic energy and |H_G|; implicit_midpoint holds b
 
 >>> body = rd.RigidBody(2.0, [1.0, 2.0, 3.0])
 >>> r = rd.simulate(body, rd.RigidBodyState(w_B=[1.0, 0.1, 0.2]), dt=0.01, steps=1000, method="implicit_midpoint")
->>> r.q_WB.shape, bool(np.ptp(r.kinetic_energy) < 1e-10), bool(np.ptp(r.angular_momentum_norm) < 1e-10)
+>>> body_records = r.body(0)
+>>> body_records.q_WB.shape, bool(np.ptp(r.kinetic_energy) < 1e-10), bool(np.ptp(body_records.angular_momentum_norm) < 1e-10)
 ((1001, 4), True, True)
 
 A force of 2 N on 1 kg for the first second (the step across t = 1 s is split there):
 
 >>> push = rd.AppliedLoad(force=[2.0, 0.0, 0.0], t_end=1.0)
->>> rd.simulate(rd.Particle(1.0), rd.ParticleState(), dt=0.3, steps=5, loads=push).v_W[-1].round(12)
+>>> rd.simulate(rd.Particle(1.0), rd.ParticleState(), dt=0.3, steps=5, loads=push).body(0).v_W[-1].round(12)
 array([2., 0., 0.])
 
 How accurate a run is: rk4 on a tumbling body, its attitude's error at the last record [rad]:
@@ -751,7 +609,7 @@ Examples
 2 N on 1 kg for one second, then coasting: v = 2 m/s, and 1 m + 2 m/s x 1 s = 3 m after 2 s:
 
 >>> push = rd.AppliedLoad(force=[2.0, 0.0, 0.0], t_end=1.0)
->>> r = rd.simulate(rd.Particle(1.0), rd.ParticleState(), dt=0.1, steps=20, loads=push)
+>>> r = rd.simulate(rd.Particle(1.0), rd.ParticleState(), dt=0.1, steps=20, loads=push).body(0)
 >>> r.v_W[-1].round(12), r.p_W[-1].round(12)
 (array([2., 0., 0.]), array([3., 0., 0.]))
 )doc");
@@ -946,7 +804,7 @@ Examples
   error_class.attr("__hash__") = py::none();
 
   py::class_<SimulationResult>(m, "SimulationResult",
-      "The records of simulate: arrays with one row per record (n records).\n"
+      "One sample of a batch of bodies (BatchResult[i]): arrays with one row per record (n records).\n"
       R"doc(
 Read-only arrays; q_WB's rows (x, y, z, w) unless scalar_first. A Particle records q = identity and w = 0; a
 PlanarBody p = (x, y, 0), q = Rz(theta), w = (0, 0, omega). Pickles; to_dataframe gives a table.
@@ -954,16 +812,16 @@ PlanarBody p = (x, y, 0), q = Rz(theta), w = (0, 0, omega). Pickles; to_datafram
 Parameters
 ----------
 None
-    Made by simulate (and by BatchResult[i]); it has no public constructor.
+    Made by BatchResult[i]; it has no public constructor.
 
 See Also
 --------
-simulate, BatchResult, SceneResult
+simulate_batch, BatchResult, SceneResult
 
 Examples
 --------
 >>> body = rd.RigidBody(2.0, [1.0, 2.0, 3.0])
->>> r = rd.simulate(body, rd.RigidBodyState(w_B=[0.0, 0.0, 1.0]), dt=0.1, steps=10, record_every=5)
+>>> r = rd.simulate_batch(body, [rd.RigidBodyState(w_B=[0.0, 0.0, 1.0])], dt=0.1, steps=10, record_every=5)[0]
 >>> r.t, r.p_W.shape, r.q_WB.shape, r.diverged, r.unconverged_steps
 (array([0. , 0.5, 1. ]), (3, 3), (3, 4), False, 0)
 >>> r.kinetic_energy  # 1/2 I_z w_z^2
@@ -1050,7 +908,7 @@ rigiddyn.trajectory.write_csv, rigiddyn.output_units
 
 Examples
 --------
->>> r = rd.simulate(rd.Particle(1.0), rd.ParticleState(), dt=0.5, steps=2, gravity=True)
+>>> r = rd.simulate_batch(rd.Particle(1.0), [rd.ParticleState()], dt=0.5, steps=2, gravity=True)[0]
 >>> df = r.to_dataframe()
 >>> df.shape, df["p_W_z [m]"].round(12).tolist()
 ((3, 19), [0.0, -1.22625, -4.905])

@@ -459,6 +459,7 @@ py::object one_body_scene(const Body& body, const Eigen::Vector3d& g_W, py::hand
   std::vector<AppliedLoad> schedule = as_loads(loads);
   if (!schedule.empty()) {
     check_loads(schedule);
+    ScheduledLoadsTerm::check_loads_for_kind(body, schedule, "loads");
     scene.elements.push_back(ScheduledLoads{0, std::move(schedule), Eigen::Vector3d::Zero()});
   }
   return py::cast(std::move(scene));
@@ -739,8 +740,8 @@ std::string momentum_balance_not_applicable(const CompiledScene& compiled) {
   for (const std::string& type : compiled.element_types()) {
     if (type == "CoriolisForce") return "the Coriolis kick of a turning frame is not integrated into the impulses";
   }
-  if (compiled.closed_form()) {
-    return "the closed form of the run does not integrate the impulses";
+  if (compiled.closed_form() && compiled.one_body_plan().loads_element >= 0) {
+    return "the closed form of the run does not integrate the loads' impulses";
   }
   return {};
 }

@@ -53,9 +53,8 @@ struct ToleranceHandles {
 // The body index of each gyrostat wheel of the scene, in the order of SceneSimulation::wheel_speed's columns.
 pybind11::tuple wheel_bodies_of(const Scene& scene);
 
-// The one-body Scene of simulate/step for a body that runs as a scene (a pivoted body, a gyrostat): the body,
-// UniformGravity(g_W) when g_W is not zero and ScheduledLoads(body=0, loads) when loads are given (argument
-// `loads` in the messages).
+// The one-body Scene of simulate/step of a body: the body, UniformGravity(g_W) when g_W is not zero and
+// ScheduledLoads(body=0, loads) when loads are given, checked for the body's kind (ValueError naming loads[i]).
 pybind11::object one_body_scene(const Body& body, const Eigen::Vector3d& g_W, pybind11::handle loads);
 
 // True for a Scene or a CompiledScene.

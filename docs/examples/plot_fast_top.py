@@ -72,6 +72,7 @@ assert np.max(np.abs(nutation(w_exact) - theta0)) <= 100 * eps
 dt, steps = 2.5e-4, 1000  # 0.25 s: about 11 turns of w_perp in the body
 catalogue = {d["name"]: d for d in rd.methods()}
 body, initial = problem.body(), problem.initial_state()
+# each run is the top's one-body scene: kinetic_energy on the run, the top's w_B (n, 3) and |L| in .body(0)
 runs = {name: rd.simulate(body, initial, dt, steps, name) for name in catalogue}
 E0 = exact.kinetic_energy.total
 L0 = np.linalg.norm(exact.angular_momentum_W)
@@ -82,13 +83,13 @@ def energy_error(result):
 
 
 def momentum_error(result):
-    return np.abs(result.angular_momentum_norm - L0) / L0
+    return np.abs(result.body(0).angular_momentum_norm - L0) / L0
 
 
 print(f"{'method':<42}{'order':>6}{'max |dE|/E':>12}{'max |d|L||/|L|':>16}{'final theta [deg]':>19}")
 for name, result in runs.items():
     print(f"{name:<42}{catalogue[name]['order']:>6}{energy_error(result).max():>12.2e}"
-          f"{momentum_error(result).max():>16.2e}{np.degrees(nutation(result.w_B)[-1]):>19.5f}")
+          f"{momentum_error(result).max():>16.2e}{np.degrees(nutation(result.body(0).w_B)[-1]):>19.5f}")
 print("\nwhat each method promises to conserve (rigiddyn.methods()):")
 for name, entry in catalogue.items():
     print(f"  {name}: {entry['conserves']}")
@@ -125,7 +126,7 @@ n = np.arange(steps + 1)
 closed_form_tan = {name: np.tan(theta0) * np.abs(R) ** n for name, R in stability_function.items()}
 w_perp0 = np.hypot(w0[0], w0[1])
 for name, tan_closed in closed_form_tan.items():
-    tan_theta = np.tan(nutation(runs[name].w_B))
+    tan_theta = np.tan(nutation(runs[name].body(0).w_B))
     # one step is at most ~50 roundings on w_perp (4 stages of a few operations each): <= 50 eps
     # relative, accumulating at most linearly; the implicit midpoint adds its Newton tolerance,
     # 1e-14 relative to |w| per step, i.e. 1e-14 |w| / |w_perp| relative on w_perp.
@@ -169,7 +170,7 @@ for name in ("splitting_dlm", "splitting_dlm_yoshida4"):
 fig, axes = plt.subplots(3, 1, figsize=(10, 10), sharex=True, layout="constrained")
 for k, (name, result) in enumerate(runs.items()):
     style = dict(color="black", linestyle="--", linewidth=2) if name == "exact" else dict(color=f"C{k}")
-    axes[0].semilogy(result.t, np.degrees(nutation(result.w_B)), label=name, **style)
+    axes[0].semilogy(result.t, np.degrees(nutation(result.body(0).w_B)), label=name, **style)
     if name != "exact":  # the closed form at each record: round-off, as exact_flow_kick
         axes[1].semilogy(result.t[1:], np.maximum(energy_error(result)[1:], 1e-17), **style)
         axes[2].semilogy(result.t[1:], np.maximum(momentum_error(result)[1:], 1e-17), **style)

@@ -59,9 +59,11 @@ assert abs(alpha - alpha_hand) <= 8 * EPS * (np.max(np.abs(np.outer(r, F))) + ab
 THRUST = 10.0  # [N]
 thruster = rd.AppliedLoad(force=[THRUST, 0.0, 0.0], frame="body")
 DT, STEPS = 1e-3, 1600
-run = rd.simulate(disk, state, dt=DT, steps=STEPS, method="rk4", loads=thruster, gravity=[*G, 0.0], record_every=10)
+# .body(0): the disk's records (t, p_W, v_W, w_B (n, 3)) in the run of its one-body scene
+run = rd.simulate(disk, state, dt=DT, steps=STEPS, method="rk4", loads=thruster, gravity=[*G, 0.0],
+                  record_every=10).body(0)
 fine = rd.simulate(disk, state, dt=DT / 2, steps=2 * STEPS, method="rk4", loads=thruster, gravity=[*G, 0.0],
-                   record_every=20)
+                   record_every=20).body(0)
 
 
 def closed_form(t):

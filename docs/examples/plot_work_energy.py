@@ -8,7 +8,8 @@ kinetics principles of K. Craig's "Rigid Body Dynamics: Kinematics and Kinetics"
 any interval [t1, t2]:
 
 - **work–energy**: T1 + U12 = T2, U12 the work of every load and of gravity (:func:`rigiddyn.simulate`
-  records it, ``work``, integrated with the motion by the same method);
+  records each element's, ``work`` (n, ne): gravity's, then the loads', integrated with the motion by the
+  same method; U12 is their sum);
 - **impulse–momentum**: the linear impulse of the forces equals the change of linear momentum,
   ∫ F dt = m v(t2) − m v(t1), and the angular impulse of the moments about the centre of mass G
   equals the change of angular momentum about G, ∫ M_G dt = H_G(t2) − H_G(t1).
@@ -41,6 +42,7 @@ DT, STEPS = 2e-3, 1500  # 3 s
 run = rd.simulate(body, start, dt=DT, steps=STEPS, method="rk4", loads=loads, gravity=G_W, record_every=10)
 fine = rd.simulate(body, start, dt=DT / 2, steps=2 * STEPS, method="rk4", loads=loads, gravity=G_W, record_every=20)
 t = run.t
+U12, U12_fine = run.work.sum(axis=1), fine.work.sum(axis=1)  # [J]: gravity's work plus the loads'
 
 
 def error_bound(coarse, finer, scale, order=4):
@@ -55,8 +57,8 @@ def error_bound(coarse, finer, scale, order=4):
 # Work–energy: T1 + U12 = T2
 # ---------------------------
 # The residual T2 − T1 − U12 is zero for the exact motion; for RK4's, it is RK4's error.
-residual = run.kinetic_energy - run.kinetic_energy[0] - run.work
-residual_fine = fine.kinetic_energy - fine.kinetic_energy[0] - fine.work
+residual = run.kinetic_energy - run.kinetic_energy[0] - U12
+residual_fine = fine.kinetic_energy - fine.kinetic_energy[0] - U12_fine
 energy_bound = error_bound(residual, residual_fine, scale=np.max(np.abs(run.kinetic_energy)))
 print(f"T2 - T1 - U12: max {np.max(np.abs(residual)):.2e} J (bound {energy_bound:.2e} J) "
       f"over T up to {run.kinetic_energy.max():.1f} J")
@@ -81,14 +83,15 @@ linear_impulse = impulse(lambda load: load.force, t) + box.mass * G_W[None, :] *
 angular_impulse = impulse(lambda load: load.torque, t)  # [N m s], about G (the forces pass through it)
 
 
-def momenta(result):
-    """Linear momentum m v_W [kg m/s] and angular momentum about G in W, H_G = R_WB I w_B [kg m^2/s]."""
-    R_WB = rd.quat_to_matrix(result.q_WB)
-    return box.mass * result.v_W, np.einsum("nij,jk,nk->ni", R_WB, box.inertia_com, result.w_B)
+def momenta(records):
+    """Linear momentum m v_W [kg m/s] and angular momentum about G in W, H_G = R_WB I w_B [kg m^2/s], from the
+    box's records (``result.body(0)``: q_WB (n, 4), v_W and w_B (n, 3))."""
+    R_WB = rd.quat_to_matrix(records.q_WB)
+    return box.mass * records.v_W, np.einsum("nij,jk,nk->ni", R_WB, box.inertia_com, records.w_B)
 
 
-P, H = momenta(run)
-P_fine, H_fine = momenta(fine)
+P, H = momenta(run.body(0))
+P_fine, H_fine = momenta(fine.body(0))
 linear_error = np.max(np.abs(P - P[0] - linear_impulse))
 # round-off only: about ten roundings a step on the momentum, accumulated over the run
 linear_bound = 10 * STEPS * EPS * np.max(np.abs(P))
@@ -104,7 +107,7 @@ assert angular_error <= angular_bound
 # ----------------------
 fig, (ax_e, ax_p, ax_h) = plt.subplots(3, 1, figsize=(8, 8), sharex=True, constrained_layout=True)
 ax_e.plot(t, run.kinetic_energy - run.kinetic_energy[0], label="$T_2 - T_1$")
-ax_e.plot(t[::8], run.work[::8], "o", markerfacecolor="none", label="$U_{12}$ (recorded work)")
+ax_e.plot(t[::8], U12[::8], "o", markerfacecolor="none", label="$U_{12}$ (recorded work)")
 ax_e.set_ylabel("energy [J]")
 ax_e.legend()
 for i, axis in enumerate("xyz"):

@@ -14,9 +14,8 @@ linear_momentum
     (integrated with the motion in C++ as the works are; internal forces add equal and opposite forces and no
     impulse).
 angular_momentum
-    r_H = |H - H0 - K|  [kg m^2/s], about W's origin for a scene (H = sum p x m v + R I w, K the angular impulse of
-    the elements about W's origin) and about the centre of mass for one body (H = R I w, K = 0: gravity and a
-    force through the centre of mass have no moment about it).
+    r_H = |H - H0 - K|  [kg m^2/s] about W's origin (H = sum p x m v + R I w, K the angular impulse of the
+    elements about W's origin; a body alone runs as its one-body scene).
 
 The motion's error is the balance's only source besides round-off: a residual beyond the global error estimate
 (``result.error``) or, without a reliable estimate, beyond a relative level of its scale means that the run is not
@@ -114,7 +113,7 @@ class Balance:
         Per quantity: "closed" (within its allowance at every record), "open: ..." (the figure, as in the warning)
         or "not applicable: ...".
     about : str
-        The point of the angular momentum: "W's origin" (a scene) or "the centre of mass" (one body).
+        The point of the angular momentum: "W's origin".
 
     Attributes
     ----------
@@ -139,7 +138,7 @@ class Balance:
     >>> r = rd.simulate(rd.RigidBody(1.0, [1.0, 2.0, 3.0]), rd.RigidBodyState(w_B=[0.1, 1.0, 0.1]), dt=0.1,
     ...                 steps=100, method="exact", error=False)
     >>> b = r.balance
-    >>> bool(np.all(np.abs(b.energy) <= b.energy_round_off)), b.verdict["angular_momentum"]
+    >>> bool(np.all(np.abs(b.energy) <= b.energy_round_off)), b.verdict["energy"]
     (True, 'closed')
     """
 
@@ -187,7 +186,7 @@ class Balance:
         --------
         >>> r = rd.simulate(rd.Particle(1.0), rd.ParticleState(v_W=[1.0, 0.0, 0.0]), 0.1, 10, error=False)
         >>> r.balance.max()
-        {'energy': 0.0, 'linear_momentum': 0.0, 'angular_momentum': nan}
+        {'energy': 0.0, 'linear_momentum': 0.0, 'angular_momentum': 0.0}
         """
         return {q: _max_abs(getattr(self, q)) for q, _ in _QUANTITIES}
 
@@ -205,7 +204,7 @@ class Balance:
         >>> print(r.balance.summary())
         energy: max |residual| 0 J (0 of its scale): closed
         linear_momentum: max |residual| 0 kg m/s (0 of its scale): closed
-        angular_momentum: not applicable: a Particle has no attitude
+        angular_momentum: max |residual| 0 kg m^2/s (0 of its scale): closed
         """
         lines = []
         for q, unit in _QUANTITIES:

@@ -6073,7 +6073,7 @@ class AppliedLoad:
     2 N on 1 kg for one second, then coasting: v = 2 m/s, and 1 m + 2 m/s x 1 s = 3 m after 2 s:
     
     >>> push = rd.AppliedLoad(force=[2.0, 0.0, 0.0], t_end=1.0)
-    >>> r = rd.simulate(rd.Particle(1.0), rd.ParticleState(), dt=0.1, steps=20, loads=push)
+    >>> r = rd.simulate(rd.Particle(1.0), rd.ParticleState(), dt=0.1, steps=20, loads=push).body(0)
     >>> r.v_W[-1].round(12), r.p_W[-1].round(12)
     (array([2., 0., 0.]), array([3., 0., 0.]))
     """
@@ -6278,7 +6278,7 @@ class GlobalError:
         """
 class SimulationResult:
     """
-    The records of simulate: arrays with one row per record (n records).
+    One sample of a batch of bodies (BatchResult[i]): arrays with one row per record (n records).
     
     Read-only arrays; q_WB's rows (x, y, z, w) unless scalar_first. A Particle records q = identity and w = 0; a
     PlanarBody p = (x, y, 0), q = Rz(theta), w = (0, 0, omega). Pickles; to_dataframe gives a table.
@@ -6286,16 +6286,16 @@ class SimulationResult:
     Parameters
     ----------
     None
-        Made by simulate (and by BatchResult[i]); it has no public constructor.
+        Made by BatchResult[i]; it has no public constructor.
     
     See Also
     --------
-    simulate, BatchResult, SceneResult
+    simulate_batch, BatchResult, SceneResult
     
     Examples
     --------
     >>> body = rd.RigidBody(2.0, [1.0, 2.0, 3.0])
-    >>> r = rd.simulate(body, rd.RigidBodyState(w_B=[0.0, 0.0, 1.0]), dt=0.1, steps=10, record_every=5)
+    >>> r = rd.simulate_batch(body, [rd.RigidBodyState(w_B=[0.0, 0.0, 1.0])], dt=0.1, steps=10, record_every=5)[0]
     >>> r.t, r.p_W.shape, r.q_WB.shape, r.diverged, r.unconverged_steps
     (array([0. , 0.5, 1. ]), (3, 3), (3, 4), False, 0)
     >>> r.kinetic_energy  # 1/2 I_z w_z^2
@@ -6347,7 +6347,7 @@ class SimulationResult:
         
         Examples
         --------
-        >>> r = rd.simulate(rd.Particle(1.0), rd.ParticleState(), dt=0.5, steps=2, gravity=True)
+        >>> r = rd.simulate_batch(rd.Particle(1.0), [rd.ParticleState()], dt=0.5, steps=2, gravity=True)[0]
         >>> df = r.to_dataframe()
         >>> df.shape, df["p_W_z [m]"].round(12).tolist()
         ((3, 19), [0.0, -1.22625, -4.905])
@@ -12099,11 +12099,7 @@ def semi_latus_rectum(a: float | numpy.typing.ArrayLike, e: float | numpy.typing
     >>> rd.semi_latus_rectum(-7000e3, 2.0)
     21000000.0
     """
-@typing.overload
-def simulate(model: Particle | PlanarBody | RigidBody, initial: typing.Any, dt: float | _Quantity | None = None, steps: int | None = None, method: _MethodName | None = None, record_every: int = 1, loads: AppliedLoad | collections.abc.Sequence[AppliedLoad] | None = None, gravity: bool | numpy.typing.ArrayLike | None = None, t0: float | _Quantity = 0.0, scalar_first: bool = False, progress: collections.abc.Callable[..., typing.Any] | None = None, *, duration: float | _Quantity | None = None, error: bool = True, accuracy_level: float | None = 0.001, tolerance: float | _Quantity | None = None, measure: str | None = None, max_steps: int | None = None, controller: typing.Any = None) -> SimulationResult:
-    ...
-@typing.overload
-def simulate(model: PivotedBody | PivotedPlanarBody | Gyrostat | Scene | CompiledScene, initial: typing.Any, dt: float | _Quantity | None = None, steps: int | None = None, method: _MethodName | None = None, record_every: int = 1, loads: AppliedLoad | collections.abc.Sequence[AppliedLoad] | None = None, gravity: bool | numpy.typing.ArrayLike | None = None, t0: float | _Quantity = 0.0, scalar_first: bool = False, progress: collections.abc.Callable[..., typing.Any] | None = None, *, duration: float | _Quantity | None = None, error: bool = True, accuracy_level: float | None = 0.001, tolerance: float | _Quantity | None = None, measure: str | None = None, max_steps: int | None = None, controller: typing.Any = None) -> SceneResult:
+def simulate(model: Particle | PlanarBody | RigidBody | PivotedBody | PivotedPlanarBody | Gyrostat | Scene | CompiledScene, initial: typing.Any, dt: float | _Quantity | None = None, steps: int | None = None, method: _MethodName | None = None, record_every: int = 1, loads: AppliedLoad | collections.abc.Sequence[AppliedLoad] | None = None, gravity: bool | numpy.typing.ArrayLike | None = None, t0: float | _Quantity = 0.0, scalar_first: bool = False, progress: collections.abc.Callable[..., typing.Any] | None = None, *, duration: float | _Quantity | None = None, error: bool = True, accuracy_level: float | None = 0.001, tolerance: float | _Quantity | None = None, measure: str | None = None, max_steps: int | None = None, controller: typing.Any = None) -> SceneResult:
     """
     Integrate a body or a scene over fixed steps and record its motion.
     
@@ -12115,8 +12111,8 @@ def simulate(model: PivotedBody | PivotedPlanarBody | Gyrostat | Scene | Compile
     Parameters
     ----------
     model : Particle, PlanarBody, RigidBody, PivotedBody, PivotedPlanarBody, Gyrostat, Scene or CompiledScene
-        What to integrate. A PivotedBody, PivotedPlanarBody or Gyrostat runs as its one-body scene with a
-        UniformGravity (`gravity`) and a ScheduledLoads (`loads`).
+        What to integrate. A body runs as its one-body scene with a UniformGravity (`gravity`) and a
+        ScheduledLoads (`loads`).
     initial : ParticleState, PlanarBodyState, RigidBodyState, PivotedBodyState, ..., or list
         The state of `model`'s kind at t0 (also PivotedPlanarBodyState or GyrostatState); for a Scene or
         CompiledScene, a list of the states of its bodies.
@@ -12173,7 +12169,7 @@ def simulate(model: PivotedBody | PivotedPlanarBody | Gyrostat | Scene | Compile
         The cost cap of a run to a tolerance: no run (the final run and its refinement) of more steps, >= 4.
         None (the default): 10_000_000.
     controller : Controller, keyword-only, optional
-        A digital controller (rigiddyn.Controller) of a Scene, CompiledScene, pivoted body or Gyrostat: its law is
+        A digital controller (rigiddyn.Controller) of a body or a scene: its law is
         called with the GIL at t0 + k controller.period, k = 0, 1, ... before the end of the run, with the state of every
         body there, and its actuator commands (gyrostat wheel torques, MagneticDipole dipoles, ScheduledLoads thrusts)
         are held until the next sample; the steps are split at the samples, as at switch times, so every method keeps
@@ -12182,11 +12178,12 @@ def simulate(model: PivotedBody | PivotedPlanarBody | Gyrostat | Scene | Compile
     
     Returns
     -------
-    SimulationResult or SceneResult
-        A SimulationResult for a Particle, PlanarBody or RigidBody: one row per record, n records (t, p_W, q_WB, v_W,
-        w_B, kinetic_energy, total_energy, angular_momentum_norm, quaternion_norm_error, work; diverged,
-        unconverged_steps, elapsed_seconds; error; balance; choice). A SceneResult for a Scene, a CompiledScene, a
-        pivoted body or a Gyrostat. The records are those of the run at dt whether or not error is True; elapsed_seconds
+    SceneResult
+        One row per record, n records, of every kind of model: per body (n, nb, ...) arrays (p_W, q_WB, v_W, w_B,
+        mass, ...), the scene's (n,) energies and (n, ne) work of each element (a body's one-body scene: its
+        UniformGravity first, then its ScheduledLoads); diverged, unconverged_steps, elapsed_seconds; error; balance;
+        choice. result.body(0) (a BodyRecords) reads one body's records as (n, ...) arrays: q_WB (n, 4), ... The
+        records are those of the run at dt whether or not error is True; elapsed_seconds
         is its loop's. result.balance (a Balance, on every run) holds the residuals of the work-energy and
         impulse-momentum balances per record, zero for the exact dynamics. With tolerance, result.choice is a
         ToleranceChoice (else None).
@@ -12223,13 +12220,13 @@ def simulate(model: PivotedBody | PivotedPlanarBody | Gyrostat | Scene | Compile
     
     See Also
     --------
-    step, simulate_batch, methods, SimulationResult, AppliedLoad, Scene, GlobalError, Balance, AccuracyWarning,
-    ToleranceChoice
+    step, simulate_batch, methods, SceneResult, BodyRecords, AppliedLoad, Scene, GlobalError, Balance,
+    AccuracyWarning, ToleranceChoice
     
     Notes
     -----
     A Particle records q = identity and w = 0; a PlanarBody records p = (x, y, 0), q = Rz(theta), w = (0, 0, omega).
-    work is integrated by the same method as the motion, so kinetic_energy - kinetic_energy[0] ~ work.
+    work is integrated by the same method as the motion, so kinetic_energy - kinetic_energy[0] ~ work.sum(axis=1).
     
     Examples
     --------
@@ -12238,7 +12235,7 @@ def simulate(model: PivotedBody | PivotedPlanarBody | Gyrostat | Scene | Compile
     >>> r = rd.simulate(rd.Particle(1.0), rd.ParticleState(), dt=0.01, duration=2.0, gravity=True, record_every=50)
     >>> r.t
     array([0. , 0.5, 1. , 1.5, 2. ])
-    >>> np.allclose(r.p_W[:, 2], -0.5 * 9.81 * r.t**2, rtol=0, atol=1e-12)
+    >>> np.allclose(r.body(0).p_W[:, 2], -0.5 * 9.81 * r.t**2, rtol=0, atol=1e-12)
     True
     
     A torque-free body keeps its kinetic energy and |H_G|; implicit_midpoint holds both to its Newton tolerance
@@ -12246,13 +12243,14 @@ def simulate(model: PivotedBody | PivotedPlanarBody | Gyrostat | Scene | Compile
     
     >>> body = rd.RigidBody(2.0, [1.0, 2.0, 3.0])
     >>> r = rd.simulate(body, rd.RigidBodyState(w_B=[1.0, 0.1, 0.2]), dt=0.01, steps=1000, method="implicit_midpoint")
-    >>> r.q_WB.shape, bool(np.ptp(r.kinetic_energy) < 1e-10), bool(np.ptp(r.angular_momentum_norm) < 1e-10)
+    >>> body_records = r.body(0)
+    >>> body_records.q_WB.shape, bool(np.ptp(r.kinetic_energy) < 1e-10), bool(np.ptp(body_records.angular_momentum_norm) < 1e-10)
     ((1001, 4), True, True)
     
     A force of 2 N on 1 kg for the first second (the step across t = 1 s is split there):
     
     >>> push = rd.AppliedLoad(force=[2.0, 0.0, 0.0], t_end=1.0)
-    >>> rd.simulate(rd.Particle(1.0), rd.ParticleState(), dt=0.3, steps=5, loads=push).v_W[-1].round(12)
+    >>> rd.simulate(rd.Particle(1.0), rd.ParticleState(), dt=0.3, steps=5, loads=push).body(0).v_W[-1].round(12)
     array([2., 0., 0.])
     
     How accurate a run is: rk4 on a tumbling body, its attitude's error at the last record [rad]:
@@ -12374,12 +12372,13 @@ def simulate_batch(model: Scene | CompiledScene | collections.abc.Sequence[Scene
     >>> body = rd.RigidBody(2.0, [1.0, 2.0, 3.0])
     >>> states = [rd.RigidBodyState(w_B=[1.0, 0.0, 0.1 * i]) for i in range(4)]
     >>> res = rd.simulate_batch(body, states, dt=0.01, steps=100, threads=2)
-    >>> res.w_B.shape, np.array_equal(res.w_B[2], rd.simulate(body, states[2], dt=0.01, steps=100).w_B)
+    >>> serial = rd.simulate(body, states[2], dt=0.01, steps=100)
+    >>> res.w_B.shape, np.array_equal(res.w_B[2], serial.body(0).w_B)
     ((4, 101, 3), True)
     
     Every record of every sample has its global error estimate (rk4: order 4):
     
-    >>> res.error.attitude.shape, res.error.order, res[2].error == rd.simulate(body, states[2], dt=0.01, steps=100).error
+    >>> res.error.attitude.shape, res.error.order, np.array_equal(res.error.attitude[2], serial.error.attitude[:, 0])
     ((4, 101), 4, True)
     
     Three particles dropped for 1 s under their own gravity fall g t^2 / 2:

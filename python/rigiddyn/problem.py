@@ -275,7 +275,7 @@ class Problem:
     >>> problem = rd.Problem(name="spinner", mass=2.0, inertia_com=np.diag([1.0, 2.0, 3.0]), horizon=10.0,
     ...                      w_B=np.array([0.0, 2.0, 0.0]))
     >>> result = problem.simulate("rk4", 0.01)
-    >>> float(result.t[-1]), result.w_B[-1].round(12)
+    >>> float(result.t[-1]), result.body(0).w_B[-1].round(12)
     (10.0, array([0., 2., 0.]))
     """
 
@@ -358,7 +358,7 @@ class Problem:
     def simulate(self, method: str, dt: float, steps: int | None = None, record_every: int = 1) -> Any:
         """rigiddyn.simulate of this problem (steps default: round(horizon / dt)), after a
         StabilityWarning if dt is beyond the method's linear stability limit for the initial spin
-        (rigiddyn.stability). Returns the SimulationResult."""
+        (rigiddyn.stability). Returns the SceneResult of its one-body scene (``result.body(0)``: the body's records)."""
         _string(method, "method")
         if isinstance(dt, bool) or not isinstance(dt, (int, float, np.integer, np.floating)):
             raise _type_fail("dt", "a time step [s] > 0", dt)
@@ -675,7 +675,7 @@ def load_problem(path_or_name: str | Path) -> Problem:
     >>> problem.mass, problem.horizon
     (0.1, 4.0)
     >>> result = problem.simulate("rk4", 1e-3)
-    >>> result.q_WB.shape
+    >>> result.body(0).q_WB.shape
     (4001, 4)
     >>> T = result.kinetic_energy
     >>> bool(abs(T[-1] - T[0]) < 1e-8 * T[0])

@@ -15,7 +15,7 @@ Wide rather than long (one row per record and body): the scene-wide columns (ene
 element's work and power) belong to a record, not to a body, so a long table would repeat them on every
 body's row; the wide one has one row per record, ``t [s]`` an ordinary column,
 and ``df.filter(like="sat:")`` selects one body. ``units=`` gives the columns in the user's units, as for a
-SimulationResult (rigiddyn.output_units): ``units={"length": "km", "time": "h"}`` gives ``t [h]``,
+batch sample's table (rigiddyn.output_units): ``units={"length": "km", "time": "h"}`` gives ``t [h]``,
 ``sat:p_W_x [km]``, ``sat:v_W_x [km/h]``, ``sat:angular_momentum_O_W_x [kg km^2/h]``, ...
 
 "W" is the scene frame (F when the scene has a moving frame: states relative to it). Per body:
@@ -86,7 +86,7 @@ def columns(result: Any, scalar_first: bool | None = None, *,
     Parameters
     ----------
     result : SceneResult
-        The records of ``rigiddyn.simulate`` of a scene (a pivoted body, a gyrostat) or ``BatchSceneResult[i]``.
+        The records of ``rigiddyn.simulate`` (of a body or a scene) or ``BatchSceneResult[i]``.
     scalar_first : bool, optional
         The order of the result's q_WB rows; None (the default): the order the result records
         (``result.scalar_first``, set by ``simulate(..., scalar_first=True)``); True or False declares it.

@@ -185,7 +185,7 @@ def simulate_problem(problem: Problem, method: str, dt: float, steps: int, recor
     `method`, recording every `record_every`-th step (and the last), after a StabilityWarning when dt
     is beyond the method's linear stability limit (rigiddyn.stability). `progress(steps_done)` is
     simulate's callback (about every 0.05 s of the run); `error`: simulate's global error estimate.
-    Returns the SimulationResult."""
+    Returns the SceneResult (one body: ``result.body(0)``)."""
     warn_if_unstable(method, dt, steps, problem.inertia_com, problem.w_B, problem.torque_free, stacklevel=2)
     # method: a str of methods() (mypy knows their literal names), checked by the core
     return _core.simulate(problem.body(), problem.initial_state(), dt, steps, cast(Any, method), record_every=record_every,
@@ -271,7 +271,7 @@ def _run_record(plan: _Plan, result: Any) -> dict[str, Any]:
     """run.json: what was run and what came out (numbers, null for not-a-number)."""
     from . import __version__
     from .output_units import units_record
-    from .trajectory import column_names
+    from .scene_result import column_names
 
     def number(x: float) -> float | None:
         return float(x) if math.isfinite(x) else None
@@ -291,7 +291,7 @@ def _run_record(plan: _Plan, result: Any) -> dict[str, Any]:
         "elapsed_seconds [s]": result.elapsed_seconds,
         "global error": error_report(result.error),
         "units": units_record(plan.units),
-        "columns": column_names(units=plan.units),
+        "columns": column_names(result, units=plan.units),
         "quaternion order": "x, y, z, w",
     }
 
@@ -336,9 +336,9 @@ def _summary(problem: Problem, result: Any) -> str:
     """One line: records, time; without loads the relative drift of the total energy and |L|, with loads
     (they do work) the energy balance and the change of |L|."""
     head = f"{len(result.t)} records to t = {result.t[-1]:.6g} s in {result.elapsed_seconds:.3g} s"
-    L = np.asarray(result.angular_momentum_norm)
+    L = np.asarray(result.body(0).angular_momentum_norm)
     if any(np.any(load.force) or np.any(load.torque) for load in problem.loads):
-        balance = energy_balance(result.kinetic_energy, result.work, "the loads and gravity")
+        balance = energy_balance(result.kinetic_energy, np.sum(result.work, axis=1), "the loads and gravity")
         return f"{head}; {balance}; relative change of |L| {_drift(L)} (the loads' couples change it)"
     return f"{head}; relative drift: total energy {_drift(np.asarray(result.total_energy))}, |L| {_drift(L)}"
 

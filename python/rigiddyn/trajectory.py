@@ -1,11 +1,11 @@
 """Recorded trajectories as tables: named columns with units, CSV, ``.npz``, Parquet and pandas.
 
-A SceneResult (``rigiddyn.simulate`` of a scene, a pivoted body or a gyrostat) becomes the wide table of
-rigiddyn.scene_result: one row per record, ``t [s]``, then each body's columns ``<body>:p_W_x [m]`` ..., then
-the scene-wide ones (energies, momenta, each element's work and power). A SimulationResult (``rigiddyn.simulate``
-of a particle, a planar or a rigid body, or ``BatchResult[i]``) becomes one table, one row per record and one
-float64 column per scalar, named ``<field>[_<component>] [<unit>]`` after its attributes (frames as in
-docs/conventions.md; dimensionless columns carry no unit)::
+A SceneResult (``rigiddyn.simulate`` of a body or a scene) becomes the wide table of rigiddyn.scene_result:
+one row per record, ``t [s]``, then each body's columns ``<body>:p_W_x [m]`` ..., then the scene-wide ones
+(energies, momenta, each element's work and power). One sample of a batch of bodies (``BatchResult[i]``, a
+SimulationResult) becomes one table, one row per record and one float64 column per scalar, named
+``<field>[_<component>] [<unit>]`` after its attributes (frames as in docs/conventions.md; dimensionless
+columns carry no unit)::
 
     t [s] | p_W_x [m] ... | q_WB_x ... q_WB_w | v_W_x [m/s] ... | w_B_x [rad/s] ... |
     kinetic_energy [J] | total_energy [J] | angular_momentum_norm [kg m^2/s] |
@@ -68,7 +68,7 @@ def _components(field: str, scalar_first: bool) -> str | None:
 
 
 def column_names(scalar_first: bool = False, *, units: Mapping[str, str] | None = None) -> list[str]:
-    """The column names of a SimulationResult's table in order.
+    """The column names of a batch sample's table (``BatchResult[i]``) in order.
 
     Parameters
     ----------
@@ -111,8 +111,8 @@ def columns(result: Any, scalar_first: bool | None = None, *,
     Parameters
     ----------
     result : SceneResult or SimulationResult
-        The records of ``rigiddyn.simulate`` or ``BatchResult[i]``: a SceneResult gives the columns of
-        rigiddyn.scene_result.columns, a SimulationResult the module docstring's 19 columns.
+        The records of ``rigiddyn.simulate`` (the columns of rigiddyn.scene_result.columns) or a batch sample
+        ``BatchResult[i]`` (the module docstring's 19 columns).
     scalar_first : bool, optional
         The order of the result's q_WB rows; None (the default): the order the result records
         (``result.scalar_first``, set by ``simulate(..., scalar_first=True)``); True or False declares it.
@@ -143,7 +143,7 @@ def columns(result: Any, scalar_first: bool | None = None, *,
     >>> r = rd.simulate(rd.RigidBody(1.0, [1.0, 1.0, 1.0]), rd.RigidBodyState(w_B=[0.0, 0.0, 1.0]), dt=1.0,
     ...                 steps=2, error=False)
     >>> table = columns(r, units={"angle": "deg", "time": "min"})
-    >>> table["t [min]"], table["w_B_z [deg/min]"].round(6)
+    >>> table["t [min]"], table["body0:w_B_z [deg/min]"].round(6)
     (array([0.        , 0.01666667, 0.03333333]), array([3437.746771, 3437.746771, 3437.746771]))
     """
     if hasattr(result, "body_names"):  # a SceneResult
@@ -166,7 +166,7 @@ def columns(result: Any, scalar_first: bool | None = None, *,
 
 
 def fields_from_columns(table: Mapping[str, Any]) -> dict[str, np.ndarray]:
-    """A SimulationResult's arrays back from its table's columns (any order of q_WB's columns):
+    """A batch sample's (SimulationResult) arrays back from its table's columns (any order of q_WB's columns):
     t (n,), p_W (n, 3), q_WB (n, 4) as (x, y, z, w), ..., as float64 arrays."""
     out: dict[str, np.ndarray] = {}
     for field, (components, unit) in FIELDS.items():
@@ -218,7 +218,7 @@ def write_csv(result: Any, path: str | Path, scalar_first: bool | None = None, *
     >>> r = rd.simulate(rd.Particle(1.0), rd.ParticleState(v_W=[1000.0, 0.0, 0.0]), dt=1800.0, steps=2,
     ...                 error=False)
     >>> path = write_csv(r, pathlib.Path(folder.name) / "t.csv", units={"length": "km", "time": "h"})
-    >>> read_columns(path)["p_W_x [km]"], read_columns(path)["v_W_x [km/h]"]
+    >>> read_columns(path)["body0:p_W_x [km]"], read_columns(path)["body0:v_W_x [km/h]"]
     (array([   0., 1800., 3600.]), array([3600., 3600., 3600.]))
     >>> folder.cleanup()
     """
@@ -321,7 +321,7 @@ def write_parquet(result: Any, path: str | Path, scalar_first: bool | None = Non
     >>> r = rd.simulate(rd.Particle(1.0), rd.ParticleState(v_W=[1000.0, 0.0, 0.0]), dt=1800.0, steps=2,
     ...                 error=False)
     >>> path = write_parquet(r, pathlib.Path(folder.name) / "t.parquet", units={"length": "km"})
-    >>> read_columns(path)["p_W_x [km]"]
+    >>> read_columns(path)["body0:p_W_x [km]"]
     array([   0., 1800., 3600.])
     >>> folder.cleanup()
     """
@@ -399,11 +399,11 @@ def to_dataframe(result: Any, scalar_first: bool | None = None, *, units: Mappin
     >>> from rigiddyn.trajectory import to_dataframe
     >>> r = rd.simulate(rd.Particle(1.0), rd.ParticleState(v_W=[1000.0, 0.0, 0.0]), dt=1800.0, steps=2,
     ...                 error=False)
-    >>> to_dataframe(r, units={"length": "km", "time": "h"})[["t [h]", "p_W_x [km]"]]
-       t [h]  p_W_x [km]
-    0    0.0         0.0
-    1    0.5      1800.0
-    2    1.0      3600.0
+    >>> to_dataframe(r, units={"length": "km", "time": "h"})[["t [h]", "body0:p_W_x [km]"]]
+       t [h]  body0:p_W_x [km]
+    0    0.0               0.0
+    1    0.5            1800.0
+    2    1.0            3600.0
     """
     try:
         import pandas as pd

@@ -82,6 +82,14 @@ def _change(series: list[Any], names: list[str], quantity: str, si_unit: str,
     return values - values[0], labels, f"{quantity} change\nsince t = 0 [{unit}]"
 
 
+def _one_body(result: Any) -> Any:
+    """The records of the one body of a SceneResult (result.body(0)); ValueError for a result of several."""
+    names = tuple(result.body_names)
+    if len(names) != 1:
+        raise ValueError(f"result: expected a run of one body (plot_scene draws a scene), got the bodies {names}")
+    return result.body(0)
+
+
 def trajectory_figure(result: Any, attitude: str = "euler:ZYX", title: str = "", *,
                       units: Mapping[str, str] | None = None) -> Any:
     """A matplotlib Figure of four panels over t: w_B (components in B), the attitude (see check_attitude),
@@ -90,8 +98,8 @@ def trajectory_figure(result: Any, attitude: str = "euler:ZYX", title: str = "",
 
     Parameters
     ----------
-    result : SimulationResult
-        With q_WB as (x, y, z, w).
+    result : SceneResult
+        A run of one body (``rigiddyn.simulate`` of a body), with q_WB as (x, y, z, w).
     attitude : str, optional
         "euler:SEQ" or "rotvec" (check_attitude).
     title : str, optional
@@ -108,11 +116,11 @@ def trajectory_figure(result: Any, attitude: str = "euler:ZYX", title: str = "",
     Raises
     ------
     TypeError, ValueError
-        A bad `attitude` or `units`.
+        A bad `attitude` or `units`; a result of more than one body (plot_scene draws a scene).
 
     See Also
     --------
-    plot_trajectory
+    plot_trajectory, plot_scene
 
     Examples
     --------
@@ -131,14 +139,15 @@ def trajectory_figure(result: Any, attitude: str = "euler:ZYX", title: str = "",
     check_units(units)
     t_factor, t_unit = convert_unit("s", units)
     w_factor, w_unit = convert_unit("rad/s", units)
-    t = np.asarray(result.t) * t_factor
-    angles, angle_labels, angle_axis, note = _attitude(np.asarray(result.q_WB), attitude, units)
+    body = _one_body(result)
+    t = np.asarray(body.t) * t_factor
+    angles, angle_labels, angle_axis, note = _attitude(np.asarray(body.q_WB), attitude, units)
     fig, axes = plt.subplots(4, 1, sharex=True, figsize=(9.0, 9.0), layout="constrained")
     panels = [
-        (np.asarray(result.w_B) * w_factor, ["w_B x", "w_B y", "w_B z"], f"angular velocity w_B [{w_unit}]"),
+        (np.asarray(body.w_B) * w_factor, ["w_B x", "w_B y", "w_B z"], f"angular velocity w_B [{w_unit}]"),
         (angles, angle_labels, angle_axis),
         _change([result.kinetic_energy, result.total_energy], ["kinetic T", "total E"], "energy", "J", units),
-        _change([result.angular_momentum_norm], ["|L|"], "|L|", "kg m^2/s", units),
+        _change([body.angular_momentum_norm], ["|L|"], "|L|", "kg m^2/s", units),
     ]
     for ax, (values, labels, ylabel) in zip(axes, panels):
         for j, label in enumerate(labels):
@@ -160,7 +169,7 @@ def plot_trajectory(result: Any, path: str | Path, attitude: str = "euler:ZYX", 
 
     Parameters
     ----------
-    result : SimulationResult
+    result : SceneResult
         As in trajectory_figure.
     path : str or pathlib.Path
         The file written, its format from its suffix (e.g. .png).
@@ -414,9 +423,9 @@ def animation_writer(fmt: str = "auto") -> tuple[str, str]:
 def animate_axes(result: Any, path: str | Path, fmt: str = "auto", frames: int = 100, fps: int = 25,
                  title: str = "") -> Path:
     """Animate the body axes (the columns of R_WB: x red, y green, z blue, unit length, drawn from
-    the origin of W) over the records, at most `frames` frames evenly spaced in record index, `fps`
-    frames per second. Written with animation_writer(fmt) to `path` with the writer's suffix;
-    returns that path."""
+    the origin of W) of a run of one body (a SceneResult) over the records, at most `frames` frames evenly
+    spaced in record index, `fps` frames per second. Written with animation_writer(fmt) to `path` with the
+    writer's suffix; returns that path."""
     import matplotlib.pyplot as plt
     from matplotlib import animation
 
@@ -425,8 +434,9 @@ def animate_axes(result: Any, path: str | Path, fmt: str = "auto", frames: int =
             raise ValueError(f"{name}: expected an integer >= 1, got {value!r}")
     writer, suffix = animation_writer(fmt)
     path = Path(path).with_suffix(suffix)
-    t = np.asarray(result.t)
-    R_WB = _core.quat_to_matrix(np.asarray(result.q_WB)).reshape(-1, 3, 3)
+    body = _one_body(result)
+    t = np.asarray(body.t)
+    R_WB = _core.quat_to_matrix(np.asarray(body.q_WB)).reshape(-1, 3, 3)
     shown = np.unique(np.linspace(0, len(t) - 1, min(int(frames), len(t))).round().astype(int))
     fig = plt.figure(figsize=(4.5, 4.5), dpi=100)
     ax: Any = fig.add_axes((0.02, 0.12, 0.86, 0.8), projection="3d")  # Axes3D; room for the z label and legend

@@ -87,12 +87,12 @@ _TREE = ("chain", _call_spec("Tree"), [("add_link", [("lit", "rod"), ("lit", -1)
 _TREE_LINK = ("method", ("method", ("chain", _call_spec("Scene"), [("add_tree", [_TREE], [])]), "__getattribute__",
                          [("lit", "bodies")], []), "__getitem__", [("lit", 0)], [])
 
-# Objects that only a run makes (SimulationResult: simulate needs a body and a state of the same kind;
-# SceneResult: a scene and one state per body), or that random arguments rarely make (a scene with
-# bodies, compilable; loads on body 0), built by a valid call with drawn sizes, so that every such
-# class's methods are fuzzed on every machine.
+# Objects that only a run makes (a body's SceneResult: simulate needs a body and a state of the same kind;
+# SceneResult: a scene and one state per body; SimulationResult: a sample of a body's batch), or that random
+# arguments rarely make (a scene with bodies, compilable; loads on body 0), built by a valid call with drawn
+# sizes, so that every such class's methods are fuzzed on every machine.
 RECIPES = {
-    "SimulationResult": st.tuples(st.integers(0, 30), st.integers(1, 5)).map(lambda nr: _call_spec(
+    "BodySceneResult": st.tuples(st.integers(0, 30), st.integers(1, 5)).map(lambda nr: _call_spec(
         "simulate",
         [_call_spec("RigidBody", [("lit", 1.0), ("lit", [1.0, 2.0, 2.5])]),
          _call_spec("RigidBodyState", w_B=("lit", [0.1, 1.0, 0.1]))],
@@ -175,15 +175,18 @@ RECIPES = {
         "ConstantThrustSolution", [("lit", mr[0]), ("lit", mr[1]), ("lit", [0.0, 0.0, -100.0])],
         g_W=("lit", [0.0, 0.0, -9.81]))),
 }
+# one sample of a body's batch (BatchResult[i], its index drawn, negative ones too)
+RECIPES["SimulationResult"] = st.tuples(RECIPES["BatchResult"], st.integers(-1, 0)).map(
+    lambda bk: ("method", bk[0], "__getitem__", [("lit", bk[1])], []))
 # a run's error estimate (read from a result as its attribute); a spatial inertia and a Transform from a valid call
 # (the joints' transform(q) also return a Transform, but rarely from drawn q)
-RECIPES["GlobalError"] = st.one_of(RECIPES["SimulationResult"], RECIPES["SceneResult"]).map(
+RECIPES["GlobalError"] = st.one_of(RECIPES["BodySceneResult"], RECIPES["SceneResult"]).map(
     lambda run: ("method", run, "__getattribute__", [("lit", "error")], []))
 # one body's records of a scene's run (SceneResult.body, its index drawn, negative ones too)
 RECIPES["BodyRecords"] = st.tuples(RECIPES["SceneResult"], st.integers(-2, 1)).map(
     lambda rk: ("method", rk[0], "body", [("lit", rk[1])], []))
 # a run's energy and momentum balance (read from a result as its attribute)
-RECIPES["Balance"] = st.one_of(RECIPES["SimulationResult"], RECIPES["SceneResult"]).map(
+RECIPES["Balance"] = st.one_of(RECIPES["BodySceneResult"], RECIPES["SceneResult"]).map(
     lambda run: ("method", run, "__getattribute__", [("lit", "balance")], []))
 # what a run to a drawn tolerance chose (read from its result)
 RECIPES["ToleranceChoice"] = st.floats(1e-9, 1e-3).map(lambda tol: ("method", _call_spec(
@@ -202,7 +205,7 @@ RECIPES["PivotedSceneResult"] = st.tuples(st.integers(0, 30), st.sampled_from(["
     steps=("lit", nm[0]), method=("lit", nm[1]), gravity=("lit", True)))
 # the recipes that are valid calls of a target: that target's calls also draw them, whole or with one argument wild
 RECIPE_CALLS = {
-    "simulate": ["SimulationResult", "SceneResult", "PivotedSceneResult"], "simulate_batch": ["BatchResult", "BatchSceneResult"],
+    "simulate": ["BodySceneResult", "SceneResult", "PivotedSceneResult"], "simulate_batch": ["BatchResult", "BatchSceneResult"],
     "integrate_density_over_box": ["DensityIntegral"], "forward_dynamics": ["PivotedAcceleration"],
     "dispersion.monte_carlo": ["dispersion.MonteCarloResult"],
     **{name: [name] for name in ("Scene", "ScheduledLoads", "PivotedBody", "PivotedPlanarBody", "Thrust", "Wheel",

@@ -121,7 +121,7 @@ def test_no_gravity_unless_asked(index):
 
 def test_no_gravity_keeps_a_free_particle_at_constant_velocity():
     run = rd.simulate(rd.Particle(1.0), rd.ParticleState(v_W=[1.0, 0.0, 0.0]), 0.1, 10)
-    np.testing.assert_array_equal(run.v_W, np.tile([1.0, 0.0, 0.0], (11, 1)))  # no force: v exactly constant
+    np.testing.assert_array_equal(run.body(0).v_W, np.tile([1.0, 0.0, 0.0], (11, 1)))  # no force: v exactly constant
 
 
 # --- angular momentum: about the world origin by default ------------------------------------------
@@ -236,10 +236,12 @@ def test_state_scalars_and_quaternion_checks():
 def test_results_arrays_are_read_only():
     body, state = bodies_and_states()[0]
     run = rd.simulate(body, state, 0.01, 3)
-    for name in ("t", "p_W", "q_WB", "v_W", "w_B", "kinetic_energy", "total_energy", "angular_momentum_norm",
-                 "quaternion_norm_error", "work"):
+    for name in ("t", "p_W", "q_WB", "v_W", "w_B", "kinetic_energy", "total_energy", "work"):
         with pytest.raises(ValueError, match="read-only"):
             getattr(run, name)[0] = 1.0
+    for name in ("t", "p_W", "q_WB", "v_W", "w_B", "angular_momentum_norm", "quaternion_norm_error"):
+        with pytest.raises(ValueError, match="read-only"):
+            getattr(run.body(0), name)[0] = 1.0
     wrench = rd.inverse_dynamics(body, state, [0, 0, 0.0], [0, 0, 0.0])
     with pytest.raises(ValueError, match="read-only"):
         wrench.tau_B[0] = 1.0
@@ -305,7 +307,8 @@ def test_simulation_result_pickles_and_reprs():
     back = pickle.loads(pickle.dumps(run))
     _same_bits(back, run)
     assert back.t.flags.writeable is False
-    assert repr(run).startswith("SimulationResult(records=5, t=(0.0, 0.04")
+    assert repr(run).startswith("SceneResult(records=5, body_names=('body0',), elements=('ScheduledLoads',), "
+                                "t=(0.0, 0.04")
 
 
 def test_objects_cross_process_boundaries():

@@ -288,10 +288,25 @@ def test_a_law_that_raises_stops_the_run():
     assert "raised by controller.law(t=0.5)" in info.value.__notes__
 
 
-def test_controller_outside_a_scene_or_with_tolerance_is_refused():
-    with pytest.raises(ValueError, match="controller: expected None for a Particle, PlanarBody or RigidBody"):
-        rd.simulate(rd.RigidBody(1.0, [1.0, 1.0, 1.0]), rd.RigidBodyState(), 0.1, 10,
-                    controller=rd.Controller(0.25, lambda s: {}))
+def test_a_body_takes_a_controller_as_its_one_body_scene():
+    """simulate(body, ..., controller=) is the run of the body's one-body scene with it: the same records."""
+    body, start = rd.RigidBody(1.0, [1.0, 2.0, 3.0]), rd.RigidBodyState(w_B=[0.1, 0.2, 0.3])
+    seen = {"body": 0, "scene": 0}
+
+    def law(key):
+        def command(sampled):
+            seen[key] += 1
+            return {}
+        return command
+
+    alone = rd.simulate(body, start, 0.1, 10, controller=rd.Controller(0.25, law("body")))
+    scene = rd.simulate(rd.Scene([body]), [start], 0.1, 10, controller=rd.Controller(0.25, law("scene")))
+    assert seen["body"] == seen["scene"] > 0
+    for field in ("t", "q_WB", "w_B"):
+        np.testing.assert_array_equal(getattr(alone, field), getattr(scene, field), strict=True, err_msg=field)
+
+
+def test_controller_with_tolerance_or_not_a_controller_is_refused():
     with pytest.raises(ValueError, match="tolerance: expected None with a controller"):
         rd.simulate(thruster_scene(), [rd.RigidBodyState()], duration=1.0, tolerance=1e-6,
                     controller=rd.Controller(0.25, lambda s: {}))

@@ -74,7 +74,8 @@ def check_run_against_reference(method, loads, inertia, dt, steps):
     # the reference's: the same, plus its closed free flow's own stated bound at step k's ω
     # (free_flow.step_error_bound; the kicks move ω by < 1 % per step, inside its factor 16)
     flows = method in ("exact_flow_kick", "exact")
-    ref_bounds = [step_bound + (free_flow.step_error_bound(inertia, dt, w) if flows else 0.0) for w in core.w_B]
+    ref_bounds = [step_bound + (free_flow.step_error_bound(inertia, dt, w) if flows else 0.0)
+                  for w in core.body(0).w_B]
     for k in range(steps):
         y = ref.simulate(model, state_of(core, k), dt, 1, method, schedule, t0=k * dt)
         # reference step + core step (or the core's closed form at both ends)
@@ -138,8 +139,8 @@ def test_exact_method_equals_torque_free_solution_at_record_times():
     q, w = rd.TorqueFreeSolution(np.diag([1.0, 2.0, 3.0]), Q0, [0.01, 2.0, 0.01]).state_at(r.t)
     # bitwise: the same C++ code (TorqueFreeSolution::state_at, called by simulate_exact.cpp at the
     # record times) computes both from the same doubles r.t, in the one compiled extension
-    np.testing.assert_array_equal(r.w_B, w)
-    np.testing.assert_array_equal(r.q_WB, q)
+    np.testing.assert_array_equal(r.body(0).w_B, w)
+    np.testing.assert_array_equal(r.body(0).q_WB, q)
 
 
 @pytest.mark.parametrize("method", ["splitting_dlm", "implicit_midpoint"])
@@ -148,7 +149,8 @@ def test_invariants_over_1e5_steps(method, w0):
     inertia, dt, steps = np.diag([1.0, 2.0, 3.0]), 0.01, 100000
     r = rd.simulate(rd.RigidBody(1.0, inertia), rd.RigidBodyState(q_WB=Q0, w_B=w0), dt, steps, method=method)
     dE = np.abs(r.kinetic_energy / r.kinetic_energy[0] - 1)
-    dL = np.abs(r.angular_momentum_norm / r.angular_momentum_norm[0] - 1)
+    L = r.body(0).angular_momentum_norm
+    dL = np.abs(L / L[0] - 1)
     # both keep |L| exactly in exact arithmetic: round-off only, a random walk of <= 2 eps per step
     # stays within 5 sigma = 10 eps sqrt(N) (the bound for the Lie-Poisson methods)
     roundoff_walk = 10 * EPS * np.sqrt(steps)
@@ -174,13 +176,14 @@ def test_particle_under_constant_force_is_exact(method):
     r = rd.simulate(rd.Particle(2.0), rd.ParticleState(p0, v0), 0.1, steps, method=method,
                     loads=rd.AppliedLoad(force=f), gravity=True)
     a = f / 2.0 + GRAVITY
+    rec, work = r.body(0), r.work.sum(axis=1)
     # exact in exact arithmetic; round-off: <= 4 roundings per step of numbers <= max(|p|, |v|)
-    size = max(np.abs(r.p_W).max(), np.abs(r.v_W).max())
-    np.testing.assert_allclose(r.p_W[-1], p0 + 2.0 * v0 + 2.0 * a, rtol=0, atol=4 * steps * EPS * size)
-    np.testing.assert_allclose(r.v_W[-1], v0 + 2.0 * a, rtol=0, atol=4 * steps * EPS * size)
+    size = max(np.abs(rec.p_W).max(), np.abs(rec.v_W).max())
+    np.testing.assert_allclose(rec.p_W[-1], p0 + 2.0 * v0 + 2.0 * a, rtol=0, atol=4 * steps * EPS * size)
+    np.testing.assert_allclose(rec.v_W[-1], v0 + 2.0 * a, rtol=0, atol=4 * steps * EPS * size)
     # work-energy is exact for these steps; each step rounds the work sum and its term, T rounds 4x
-    np.testing.assert_allclose(r.work[-1], r.kinetic_energy[-1] - r.kinetic_energy[0], rtol=0,
-                               atol=(2 * steps + 4) * EPS * max(r.kinetic_energy.max(), np.abs(r.work).max()))
+    np.testing.assert_allclose(work[-1], r.kinetic_energy[-1] - r.kinetic_energy[0], rtol=0,
+                               atol=(2 * steps + 4) * EPS * max(r.kinetic_energy.max(), np.abs(work).max()))
 
 
 # sum of the squared sub-step fractions of one step (Yoshida: 2 g1^2 + g0^2), for O(h^2) terms
@@ -197,21 +200,22 @@ def test_planar_body_equals_rigid_body_kept_in_plane(method):
     # one motion, two code paths: both round each step (local_roundoff each), and a difference
     # grows by at most 1 + t + |f_B| t^2/m <= 3 over t = 1 s (theta turns the body force, omega
     # turns theta; p, v, omega enter linearly)
+    planar_work, spatial_work = planar.work.sum(axis=1), spatial.work.sum(axis=1)
     for name in ["p_W", "q_WB", "v_W", "w_B", "kinetic_energy"]:
-        got, want = getattr(planar, name), getattr(spatial, name)
+        got, want = (getattr(run if name == "kinetic_energy" else run.body(0), name) for run in (planar, spatial))
         tol = steps * 2 * local_roundoff(method) * 3 * max(1.0, np.abs(want).max())
         np.testing.assert_allclose(got, want, rtol=0, atol=tol, err_msg=name)
     # the rigid body's kicks book exactly the kinetic-energy change they make: round-off of the
     # work sum (2 roundings per step) and of T (4)
-    size = max(spatial.kinetic_energy.max(), np.abs(spatial.work).max())
-    np.testing.assert_allclose(spatial.kinetic_energy - spatial.kinetic_energy[0], spatial.work, rtol=0,
+    size = max(spatial.kinetic_energy.max(), np.abs(spatial_work).max())
+    np.testing.assert_allclose(spatial.kinetic_energy - spatial.kinetic_energy[0], spatial_work, rtol=0,
                                atol=(2 * steps + 4) * EPS * size)
     # the planar drift books h f(theta0).v_half instead: per (sub)step of tau the two differ by
     # (tau^2/2) (w x f_B).v (the body force turns; not telescoping) plus (tau^2/8) (f.a + n alpha) at
     # both ends of the step (telescoping): summed over the run, with Yoshida's fractions
-    speed, turn = np.abs(spatial.v_W).max(), np.abs(spatial.w_B).max()
+    speed, turn = np.abs(spatial.body(0).v_W).max(), np.abs(spatial.body(0).w_B).max()
     force = np.linalg.norm(f_W) + np.linalg.norm(f_B) + 2.0 * 9.81  # m = 2 kg
     accel = force / 2.0 + 0.4 / 0.7  # |f|/m + |n|/I_zz
     bound = SQUARED_FRACTIONS[method] * (0.5 * h * h * steps * turn * np.linalg.norm(f_B) * speed
                                          + 0.25 * h * h * force * accel)
-    np.testing.assert_allclose(planar.work, spatial.work, rtol=0, atol=bound)
+    np.testing.assert_allclose(planar_work, spatial_work, rtol=0, atol=bound)

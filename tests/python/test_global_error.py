@@ -66,10 +66,11 @@ def test_free_body_effectivity(method, case):
         steps = int(round(20.0 / dt))
         r = rd.simulate(body, rd.RigidBodyState(w_B=w0), dt=dt, steps=steps, method=method, record_every=steps // 4)
         q, w = exact.state_at(r.t)
+        rec = r.body(0)
         e = r.error
         assert e.order == next(m["order"] for m in rd.methods() if m["name"] == method)
-        measured += check_effectivity(e.attitude, rd.angular_distance(r.q_WB, q), e.reliable, (dt, "attitude"))
-        measured += check_effectivity(e.angular_velocity, np.linalg.norm(r.w_B - w, axis=1), e.reliable,
+        measured += check_effectivity(e.attitude[:, 0], rd.angular_distance(rec.q_WB, q), e.reliable, (dt, "attitude"))
+        measured += check_effectivity(e.angular_velocity[:, 0], np.linalg.norm(rec.w_B - w, axis=1), e.reliable,
                                       (dt, "angular velocity"))
     if method != "exact_flow_kick":  # exact on a torque-free body: every estimate is the round-off bound
         assert measured > 0, "no reliable record above round-off: the test measured nothing"
@@ -81,7 +82,7 @@ def test_exact_method_reports_round_off():
     assert r.error.order == 0 and all(v == "reliable" for v in r.error.verdict)
     q, _ = rd.TorqueFreeSolution(np.diag([1.0, 2.0, 3.0]), [0, 0, 0, 1], [0.1, 1.0, 0.1]).state_at(r.t)
     # the bound: 8 eps_machine per step (2000 steps: 3.6e-12 rad); both closed forms agree to ~1e-14
-    assert np.all(rd.angular_distance(r.q_WB, q) <= r.error.attitude + 1e-13)
+    assert np.all(rd.angular_distance(r.body(0).q_WB, q) <= r.error.attitude[:, 0] + 1e-13)
 
 
 @pytest.mark.parametrize("method", FINITE_ORDER)
@@ -147,7 +148,7 @@ def test_torque_switching_inside_steps_is_not_reported_reliable(method):
                             record_every=steps // 4)
         fine = rd.simulate(body, rd.RigidBodyState(w_B=w0), dt=1e-4, steps=20000, loads=reference_load,
                            record_every=int(round(dt / 1e-4)) * (steps // 4), error=False)
-        true = rd.angular_distance(r.q_WB[:, 0], fine.q_WB)
+        true = rd.angular_distance(r.q_WB[:, 0], fine.body(0).q_WB)
         never_overconfident(r.error.attitude[:, 0], true, r.error.reliable, (method, dt))
         # the nested grids can take the switch in the same step of all three runs (dt = 0.04: the step from
         # 0.32 s in each), where no order check sees it: a PythonForce is never called reliable
@@ -166,10 +167,11 @@ def test_beyond_stability_limit_and_coarse_euler_are_flagged():
             warnings.simplefilter("ignore", RuntimeWarning)  # a diverging run warns
             r = rd.simulate(body, rd.RigidBodyState(w_B=w0), dt=dt, steps=80, method=method, record_every=4)
         q, _ = exact.state_at(r.t)
-        finite = np.all(np.isfinite(r.q_WB), axis=1)  # a diverged run ends on a non-finite record
+        q_WB = r.body(0).q_WB
+        finite = np.all(np.isfinite(q_WB), axis=1)  # a diverged run ends on a non-finite record
         true = np.full(len(r.t), np.inf)
-        true[finite] = rd.angular_distance(r.q_WB[finite] / np.linalg.norm(r.q_WB[finite], axis=1)[:, None], q[finite])
-        never_overconfident(r.error.attitude, true, r.error.reliable, (method, dt))
+        true[finite] = rd.angular_distance(q_WB[finite] / np.linalg.norm(q_WB[finite], axis=1)[:, None], q[finite])
+        never_overconfident(r.error.attitude[:, 0], true, r.error.reliable, (method, dt))
         assert not r.error.reliable[-1], (method, dt, r.error.verdict[-1])
 
 
@@ -190,18 +192,19 @@ def test_records_between_common_records_and_the_tail():
     # record_every 3: common records every lcm(3, 4) = 12 steps; 50 steps: the last common record at step 48
     r = rd.simulate(body, rd.RigidBodyState(w_B=[0.1, 1.0, 0.1]), dt=0.02, steps=50, record_every=3)
     e = r.error
-    assert e.attitude.shape == r.t.shape and len(e.verdict) == len(r.t)
-    assert np.all(np.isfinite(e.attitude))
+    assert e.attitude.shape == (len(r.t), 1) and len(e.verdict) == len(r.t)
+    attitude = e.attitude[:, 0]
+    assert np.all(np.isfinite(attitude))
     # interpolated in t between the common records at steps 12 and 24 (records 4 and 8)
     w = (r.t[5] - r.t[4]) / (r.t[8] - r.t[4])
-    assert e.attitude[5] == pytest.approx((1 - w) * e.attitude[4] + w * e.attitude[8], rel=1e-12)
+    assert attitude[5] == pytest.approx((1 - w) * attitude[4] + w * attitude[8], rel=1e-12)
     assert e.verdict[4] == "reliable" and e.verdict[5].startswith("interpolated between the reliable records")
     assert not e.reliable[5] and np.isnan(e.observed_order[5])
     # the last record (step 50) grows linearly in t from the common record at step 48 (record 16)
-    assert e.attitude[-1] == pytest.approx(e.attitude[16] * r.t[-1] / r.t[16], rel=1e-12)
+    assert attitude[-1] == pytest.approx(attitude[16] * r.t[-1] / r.t[16], rel=1e-12)
     assert e.verdict[-1].startswith("extrapolated from the reliable record at t = 0.96 s")
     short = rd.simulate(body, rd.RigidBodyState(w_B=[0.1, 1.0, 0.1]), dt=0.02, steps=3)
-    assert np.isnan(short.error.attitude[-1]) and short.error.verdict[-1].startswith("no estimate")
+    assert np.isnan(short.error.attitude[-1, 0]) and short.error.verdict[-1].startswith("no estimate")
 
 
 def test_error_false_and_the_answer_run_unchanged():

@@ -47,12 +47,17 @@ FACTOR_ROUNDING = 1e-15
 U = 2.0**-53  # the rounding of the one multiply of each value by its factor
 
 
-def body_result(scalar_first=False):
-    """A run that moves every column: a tumbling, translating body under gravity with a torque."""
+def body_result(scalar_first=False, sample=True):
+    """A run that moves every column: a tumbling, translating body under gravity with a torque; a batch
+    sample (SimulationResult, the 19 columns of rigiddyn.trajectory), or with sample=False simulate's
+    SceneResult of the one body."""
     body = rd.RigidBody(1.5, np.diag([0.02, 0.03, 0.04]))
     start = rd.RigidBodyState(p_W=[0.1, -0.2, 3.0], v_W=[1.0, 0.5, 4.0], w_B=[0.3, 7.0, -0.2])
-    return rd.simulate(body, start, 1e-3, 200, "rk4", record_every=7, gravity=True, scalar_first=scalar_first,
-                       loads=[rd.AppliedLoad(torque=[0.0, 0.0, 0.01], frame="body")], error=False)
+    options = dict(record_every=7, gravity=True, scalar_first=scalar_first, error=False,
+                   loads=[rd.AppliedLoad(torque=[0.0, 0.0, 0.01], frame="body")])
+    if sample:
+        return rd.simulate_batch(body, [start], 1e-3, 200, "rk4", **options)[0]
+    return rd.simulate(body, start, 1e-3, 200, "rk4", **options)
 
 
 def scene_result_of_pendulum():
@@ -93,6 +98,8 @@ def test_every_body_column_is_its_si_column_times_the_exact_factor():
     result = body_result()
     assert_exact_conversion(trajectory.columns(result), trajectory.columns(result, units=UNITS))
     assert trajectory.column_names(units=UNITS) == list(trajectory.columns(result, units=UNITS))
+    run = body_result(sample=False)  # simulate's SceneResult: the same conversion of its wide table
+    assert_exact_conversion(trajectory.columns(run), trajectory.columns(run, units=UNITS))
 
 
 def test_the_units_of_the_task_name_their_columns():
@@ -293,13 +300,13 @@ def test_the_plots_label_every_axis_with_its_unit():
 
     from rigiddyn.trajectory_plot import scene_figure, trajectory_figure
 
-    fig = trajectory_figure(body_result(), attitude="rotvec", units=UNITS)
+    fig = trajectory_figure(body_result(sample=False), attitude="rotvec", units=UNITS)
     try:
         assert [ax.get_ylabel() for ax in fig.axes] == ["angular velocity w_B [deg/h]", "rotation vector in W [deg]",
                                                         "energy change\nsince t = 0 [kJ]",
                                                         "|L| change\nsince t = 0 [g km^2/h]"]
         assert fig.axes[-1].get_xlabel() == "t [h]"
-        result = body_result()
+        result = body_result(sample=False).body(0)
         factor = convert_unit("rad/s", UNITS)[0]
         np.testing.assert_array_equal(fig.axes[0].lines[1].get_ydata(), result.w_B[:, 1] * factor)
     finally:

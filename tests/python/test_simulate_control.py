@@ -94,10 +94,10 @@ def test_progress_is_reported_and_its_exception_stops_the_run():
 
 # ------------------------------------------------------------------ memory
 def test_a_recording_larger_than_the_memory_is_refused_with_the_figures():
-    steps = 10**15  # (1e15 + 2) records of 19 doubles: 152 PB, more than any machine has
+    steps = 10**15  # (1e15 + 2) records of a one-body scene's 36 doubles: 288 PB, more than any machine has
     with pytest.raises(ValueError, match=r"^record_every: expected a recording that fits in the memory available "
                                          r"\([0-9.e+]+ [kMGT]?B\), got record_every=1 for steps=1000000000000000, "
-                                         r"which would need 152 PB"):
+                                         r"which would need 288 PB"):
         rd.simulate(BODY, START, 1e-3, steps)
 
 
@@ -129,7 +129,8 @@ def test_steps_from_t0_follow_simulate_across_switch_times(method):
         state, t = rd.step(BODY, state, 0.01, method, loads=WINDOWED, gravity=True, t=t)
     assert t == pytest.approx(0.6, abs=1e-14)
     for name in ("p_W", "q_WB", "v_W", "w_B"):
-        np.testing.assert_allclose(getattr(state, name), getattr(run, name)[-1], rtol=0, atol=1e-13, err_msg=name)
+        np.testing.assert_allclose(getattr(state, name), getattr(run.body(0), name)[-1], rtol=0, atol=1e-13,
+                                   err_msg=name)
 
 
 def test_step_warns_on_a_non_finite_state_as_simulate_does():

@@ -125,7 +125,7 @@ def max_attitude_error(method: str, k: int, held: bool = False) -> float:
                           record_every=max(1, steps // RECORDS))
     t = np.asarray(run.t)
     q_ref, _ = reference_at(t)
-    return float(np.max(attitude_angle(q_ref, np.asarray(run.q_WB))))
+    return float(np.max(attitude_angle(q_ref, np.asarray(run.body(0).q_WB))))
 
 
 @lru_cache(maxsize=None)

@@ -39,7 +39,7 @@ def test_a_free_body_meets_the_tolerance_against_its_closed_form(inertia, w_B, d
     body = rd.RigidBody(1.0, list(inertia))
     r = rd.simulate(body, rd.RigidBodyState(w_B=list(w_B)), duration=duration, tolerance=tolerance)
     q, _ = rd.TorqueFreeSolution(np.diag(inertia), [0, 0, 0, 1], list(w_B)).state_at(np.asarray(r.t))
-    true = geodesic(np.asarray(r.q_WB), q).max()
+    true = geodesic(np.asarray(r.body(0).q_WB), q).max()
     assert true <= tolerance  # certified <= tolerance, aimed at tolerance / 2 (module docstring)
     assert r.choice.met and r.choice.certified_error <= tolerance
     assert r.choice.steps * r.choice.dt == pytest.approx(duration, rel=1e-12)  # duration / steps, round-off
@@ -65,7 +65,7 @@ def test_a_ballistic_particle_takes_the_fewest_steps():
     assert r.choice.measure == "position" and r.choice.met
     t = np.asarray(r.t)
     exact = np.stack([t, 0 * t, 5.0 * t - 0.5 * 9.81 * t**2], axis=1)
-    assert np.abs(np.asarray(r.p_W) - exact).max() <= 1e-9  # certified; round-off of ~|p| 8 eps per step
+    assert np.abs(np.asarray(r.body(0).p_W) - exact).max() <= 1e-9  # certified; round-off of ~|p| 8 eps per step
 
 
 def test_a_given_method_keeps_it_and_chooses_dt():

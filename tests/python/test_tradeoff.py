@@ -54,7 +54,7 @@ def test_exact_reference_matches_closed_forms():
     # switch falls on a step boundary)
     pushed = replace(p, loads=(AppliedLoad(np.array([0.3, -0.2, 0.1]), np.zeros(3), "world", 1.0, 2.5),))
     r = rigiddyn.simulate(pushed.body(), pushed.initial_state(), 0.01, 400, "rk4", loads=list(pushed.loads),
-                          gravity=pushed.gravity, record_every=50)
+                          gravity=pushed.gravity, record_every=50).body(0)
     ref = reference_states(pushed, np.asarray(r.t))
     # rk4 is exact here: round-off only, <= 4 roundings of |p|, |v| per step, 400 steps: 3.6e-13 relative
     np.testing.assert_allclose(ref.p_W, r.p_W, rtol=1e-12, atol=1e-11)

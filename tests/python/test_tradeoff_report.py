@@ -187,7 +187,7 @@ def test_a_sphere_keeps_perturbations_of_the_attitude_at_any_step():
     for method in ("rk4", "explicit_euler"):
         a = rigiddyn.simulate(body, rigiddyn.RigidBodyState(w_B=w_B), 8.0 / 13.0, 200, method)
         b = rigiddyn.simulate(body, rigiddyn.RigidBodyState(q_WB=q_b, w_B=w_B), 8.0 / 13.0, 200, method)
-        qa, qb = np.asarray(a.q_WB), np.asarray(b.q_WB)
+        qa, qb = np.asarray(a.body(0).q_WB), np.asarray(b.body(0).q_WB)
         # the angle of qa^-1 qb (rows x, y, z, w) from its vector part: well conditioned at small angles
         vec = qa[:, 3:] * qb[:, :3] - qb[:, 3:] * qa[:, :3] - np.cross(qa[:, :3], qb[:, :3])
         scalar = qa[:, 3] * qb[:, 3] + np.sum(qa[:, :3] * qb[:, :3], axis=1)

@@ -1,6 +1,6 @@
 """rigiddyn.trajectory: a result as a table (columns with units), written to CSV, .npz and Parquet and read
-back exactly, and as a pandas DataFrame: a SimulationResult's 19 columns, a SceneResult's wide table of
-rigiddyn.scene_result."""
+back exactly, and as a pandas DataFrame: a batch sample's (SimulationResult) 19 columns, and a run's
+(SceneResult) wide table of rigiddyn.scene_result."""
 
 import sys
 
@@ -11,14 +11,24 @@ from rigiddyn import trajectory as tj
 
 
 def _run(scalar_first=False):
-    """A run that moves every recorded field: a spinning, translating body under gravity, a body-frame
-    torque switched off half-way and a world force (the records hold non-trivial p_W, v_W, work)."""
+    """A batch sample (SimulationResult) that moves every recorded field: a spinning, translating body under
+    gravity, a body-frame torque switched off half-way and a world force (the records hold non-trivial p_W,
+    v_W, work)."""
     body = rd.RigidBody(1.5, np.diag([0.02, 0.03, 0.04]))
     start = rd.RigidBodyState(p_W=[0.1, -0.2, 3.0], q_WB=[0.1, 0.2, 0.3, np.sqrt(1 - 0.14)], v_W=[1.0, 0.5, 4.0],
                               w_B=[0.3, 7.0, -0.2])
     loads = [rd.AppliedLoad(torque=[0.0, 0.0, 0.01], frame="body", t_end=0.25), rd.AppliedLoad(force=[0.2, 0.0, 0.0])]
-    return rd.simulate(body, start, 1e-3, 500, "rk4", record_every=7, loads=loads, gravity=True,
-                       scalar_first=scalar_first)
+    return rd.simulate_batch(body, [start], 1e-3, 500, "rk4", record_every=7, loads=loads, gravity=True,
+                             scalar_first=scalar_first)[0]
+
+
+def _one_body_run():
+    """rigiddyn.simulate of the same body: a SceneResult of one body."""
+    sample = _run()
+    body = rd.RigidBody(1.5, np.diag([0.02, 0.03, 0.04]))
+    start = rd.RigidBodyState(p_W=sample.p_W[0], q_WB=sample.q_WB[0], v_W=sample.v_W[0], w_B=sample.w_B[0])
+    loads = [rd.AppliedLoad(torque=[0.0, 0.0, 0.01], frame="body", t_end=0.25), rd.AppliedLoad(force=[0.2, 0.0, 0.0])]
+    return rd.simulate(body, start, 1e-3, 500, "rk4", record_every=7, loads=loads, gravity=True)
 
 
 def _assert_same_fields(fields, result):
@@ -88,26 +98,16 @@ def test_the_order_survives_pickling():
     assert old.scalar_first is False
 
 
-def _one_body_scene_run():
-    """_run's body, loads and gravity as a one-body Scene: a SceneResult."""
-    body = rd.RigidBody(1.5, np.diag([0.02, 0.03, 0.04]))
-    start = rd.RigidBodyState(p_W=[0.1, -0.2, 3.0], q_WB=[0.1, 0.2, 0.3, np.sqrt(1 - 0.14)], v_W=[1.0, 0.5, 4.0],
-                              w_B=[0.3, 7.0, -0.2])
-    loads = [rd.AppliedLoad(torque=[0.0, 0.0, 0.01], frame="body", t_end=0.25), rd.AppliedLoad(force=[0.2, 0.0, 0.0])]
-    scene = rd.Scene([body], elements=[rd.UniformGravity(), rd.ScheduledLoads(body=0, loads=loads)])
-    return rd.simulate(scene, [start], 1e-3, 500, "rk4", record_every=7)
-
-
 @pytest.mark.parametrize("suffix", ["csv", "npz", "parquet"])
-def test_a_scene_result_is_written_as_its_wide_table(tmp_path, suffix):
-    """A SceneResult's table is rigiddyn.scene_result's (the body's columns named body0:..., then the
-    scene-wide ones, each element's work), written by the same functions and read back bitwise (CSV by repr,
-    the others as float64 bits); its body's columns hold the records of the same run of the body alone."""
+def test_a_run_of_one_body_is_written_as_its_scene_table(tmp_path, suffix):
+    """simulate of a body gives a SceneResult: its table is rigiddyn.scene_result's (the body's columns named
+    body0:..., then the scene-wide ones, each element's work), read back bitwise (CSV by repr, the others as
+    float64 bits), and its one body's columns hold the batch sample's records of the same run."""
     if suffix == "parquet":
         pytest.importorskip("pyarrow", reason="the parquet extra (in the test extra: runs in CI)")
     from rigiddyn import scene_result
 
-    result, alone = _one_body_scene_run(), _run()
+    result, sample = _one_body_run(), _run()
     table = tj.columns(result)
     assert list(table) == scene_result.column_names(result)
     assert list(table)[:5] == ["t [s]", "body0:p_W_x [m]", "body0:p_W_y [m]", "body0:p_W_z [m]", "body0:q_WB_x"]
@@ -116,12 +116,17 @@ def test_a_scene_result_is_written_as_its_wide_table(tmp_path, suffix):
     assert list(read) == list(table)
     for name, values in table.items():
         np.testing.assert_array_equal(read[name], values, strict=True, err_msg=name)
-    # the same equations, method and dt: the scene and the body alone agree to round-off, rk4's 4 stages of
-    # <= 10 roundings of |x| each over 500 steps: 2e4 eps relative to max |x|
+    body = result.body(0)
     for field in ("p_W", "q_WB", "v_W", "w_B"):
-        want = np.asarray(getattr(alone, field))
-        np.testing.assert_allclose(getattr(result.body(0), field), want, rtol=0,
-                                   atol=2e4 * 2.2e-16 * np.max(np.abs(want)), err_msg=field)
+        for i, c in enumerate("xyzw" if field == "q_WB" else "xyz"):
+            unit = {"p_W": " [m]", "v_W": " [m/s]", "w_B": " [rad/s]", "q_WB": ""}[field]
+            np.testing.assert_array_equal(table[f"body0:{field}_{c}{unit}"], np.asarray(getattr(body, field))[:, i])
+    # the same equations, the same method and dt: the batch sample and the scene run agree to round-off,
+    # rk4's 4 stages of <= 10 roundings of |x| each over 500 steps: 2e4 eps relative to max |x|
+    for field in ("p_W", "q_WB", "v_W", "w_B"):
+        want = np.asarray(getattr(sample, field))
+        np.testing.assert_allclose(getattr(body, field), want, rtol=0, atol=2e4 * 2.2e-16 * np.max(np.abs(want)),
+                                   err_msg=field)
 
 
 def test_a_scene_result_remembers_its_order():
@@ -190,7 +195,7 @@ def test_csv_keeps_non_finite_values_and_reads_with_pandas(tmp_path):
     pd = pytest.importorskip("pandas", reason="the dataframe extra (in the test extra: runs in CI)")
     body = rd.RigidBody(1.0, np.diag([1.0, 2.0, 2.5]))
     with pytest.warns(RuntimeWarning, match="non-finite"):  # explicit Euler blows up at this step
-        result = rd.simulate(body, rd.RigidBodyState(w_B=[1e3, 1e3, 1e3]), 1.0, 2000, "explicit_euler")
+        result = rd.simulate_batch(body, [rd.RigidBodyState(w_B=[1e3, 1e3, 1e3])], 1.0, 2000, "explicit_euler")[0]
     assert result.diverged and not np.all(np.isfinite(result.w_B[-1]))
     path = tj.write_csv(result, tmp_path / "run.csv")
     _assert_same_fields(tj.fields_from_columns(tj.read_columns(path)), result)

@@ -33,6 +33,7 @@ def _legend_outside(ax):
 ])
 def test_figure_panels_units_and_legends(result, attitude, ylabel, labels):
     fig = tp.trajectory_figure(result, attitude, title="T-handle")
+    body = result.body(0)  # the run's one body
     try:
         axes = fig.axes
         assert [ax.get_ylabel() for ax in axes] == ["angular velocity w_B [rad/s]", ylabel,
@@ -43,14 +44,14 @@ def test_figure_panels_units_and_legends(result, attitude, ylabel, labels):
         assert all(_legend_outside(ax) for ax in axes)
         assert "T-handle" in [text.get_text() for text in fig.texts + [fig._suptitle]]
         # the plotted data are the result's: w_B as is, the attitude as quat_to_euler/rotvec gives it
-        np.testing.assert_array_equal(axes[0].get_lines()[1].get_ydata(), result.w_B[:, 1])
-        expected = (rd.quat_to_rotvec(result.q_WB) if attitude == "rotvec"
-                    else rd.quat_to_euler(attitude.split(":")[1], result.q_WB))
+        np.testing.assert_array_equal(axes[0].get_lines()[1].get_ydata(), body.w_B[:, 1])
+        expected = (rd.quat_to_rotvec(body.q_WB) if attitude == "rotvec"
+                    else rd.quat_to_euler(attitude.split(":")[1], body.q_WB))
         for j, line in enumerate(axes[1].get_lines()):
             np.testing.assert_array_equal(line.get_ydata(), expected[:, j])
         # energy and |L| as their change since t = 0, the initial value in the legend
         np.testing.assert_array_equal(axes[3].get_lines()[0].get_ydata(),
-                                      result.angular_momentum_norm - result.angular_momentum_norm[0])
+                                      body.angular_momentum_norm - body.angular_momentum_norm[0])
         assert axes[2].get_legend().get_texts()[0].get_text() == f"kinetic T(0) = {result.kinetic_energy[0]:.6g} J"
     finally:
         plt.close(fig)

@@ -12,8 +12,8 @@ state each type in words; this reads them into annotations, so that mypy checks 
 - ``shape``, units in brackets, ``default``, ``optional``, ``required``, ``keyword-only`` qualify, and a
   default of None adds ``None``. A type in other words stays ``typing.Any``.
 
-``simulate`` and ``simulate_batch`` get one overload per result class (their docstrings: a SimulationResult for
-one body, a SceneResult for a scene or a pivoted body).
+``simulate_batch`` gets one overload per result class (its docstring: a BatchResult for bodies, a BatchSceneResult
+for scenes).
 
 Regenerate the stub (from the worktree root, the extension built)::
 
@@ -46,8 +46,6 @@ _MethodName: typing.TypeAlias = typing.Literal[{methods}]
 
 # The functions whose result's class follows the model's kind: (result, the model classes giving it) per overload
 BY_MODEL = {
-    "simulate": [("SimulationResult", "Particle | PlanarBody | RigidBody"),
-                 ("SceneResult", "PivotedBody | PivotedPlanarBody | Gyrostat | Scene | CompiledScene")],
     "simulate_batch": [
         ("BatchResult", "Particle | PlanarBody | RigidBody | collections.abc.Sequence[Particle | PlanarBody | RigidBody]"),
         ("BatchSceneResult", "Scene | CompiledScene | collections.abc.Sequence[Scene | CompiledScene]")],
@@ -184,7 +182,7 @@ def typed(stub: str, method_names: list[str]) -> str:
 
 
 def by_model_overloads(stub: str) -> str:
-    """simulate and simulate_batch as one overload per result class (BY_MODEL), the docstring on the last."""
+    """simulate_batch as one overload per result class (BY_MODEL), the docstring on the last."""
     for name, overloads in BY_MODEL.items():
         found = re.search(rf"^def {name}\(model: [^,]*(, [^\n]*)\) -> [^\n]*:\n(    \"\"\".*?\"\"\"\n)", stub,
                           re.S | re.M)

@@ -10,8 +10,6 @@ namespace rigiddyn {
 
 namespace {
 
-using Vector3Map = Eigen::Map<const Eigen::Vector3d>;
-
 double norm3(const double* v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
 
 // A number as Python's format(x, spec) for the specs the message uses ("%.3g", "%.6g", "%g").
@@ -47,21 +45,6 @@ struct Finding {
 };
 
 }  // namespace
-
-BalanceBounds body_estimate_bounds(const GlobalErrorEstimate& e, const Trajectory& r, double mass,
-                                   double largest_moment) {
-  const std::size_t n = e.energy.size();
-  BalanceBounds out;
-  out[static_cast<std::size_t>(BalanceQuantity::energy)] = e.energy;
-  auto& linear = out[static_cast<std::size_t>(BalanceQuantity::linear_momentum)];
-  auto& angular = out[static_cast<std::size_t>(BalanceQuantity::angular_momentum)];
-  linear.resize(n), angular.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    linear[i] = mass * e.velocity[i];  // one body, about its centre of mass: |H_C| δθ + λ δω
-    angular[i] = r.angular_momentum_norm[i] * e.attitude[i] + largest_moment * e.angular_velocity[i];
-  }
-  return out;
-}
 
 BalanceBounds scene_estimate_bounds(const GlobalErrorEstimate& e, const SceneSimulation& r) {
   const std::size_t n = e.energy.size();

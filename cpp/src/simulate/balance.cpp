@@ -1,7 +1,5 @@
 #include "rigiddyn/simulate/balance.hpp"
 
-#include <Eigen/Geometry>
-
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
@@ -84,17 +82,6 @@ void set_not_applicable(RunBalance& b, std::size_t q, std::size_t n, const std::
   b.verdict[q] = "not applicable: " + why;
 }
 
-// R_WB h for the recorded q_WB (x, y, z, w), normalised: h + 2 s (u × h) + 2 u × (u × h) for the unit quaternion
-// (u, s) (Rodrigues' formula in quaternion form).
-Eigen::Vector3d rotated(const double* q_xyzw, const Eigen::Vector3d& h) {
-  const double norm = std::sqrt(q_xyzw[0] * q_xyzw[0] + q_xyzw[1] * q_xyzw[1] + q_xyzw[2] * q_xyzw[2] +
-                                q_xyzw[3] * q_xyzw[3]);
-  const Eigen::Vector3d u = Vector3Map(q_xyzw) / norm;
-  const double s = q_xyzw[3] / norm;
-  const Eigen::Vector3d t = 2.0 * u.cross(h);
-  return h + s * t + u.cross(t);
-}
-
 // The energy balance of records with kinetic energy T, total energy E and inputs (n,) (the works, mass-flow
 // energies and motor works summed; `magnitude` the sum of their absolute values): r_E = T − T0 − inputs, its scale
 // |E0| + T0 + the largest magnitude so far, its round-off from the terms T + |E − T| + magnitude.
@@ -120,59 +107,6 @@ void set_energy(RunBalance& b, const std::vector<double>& T, const std::vector<d
 
 bool RunBalance::applies(BalanceQuantity q) const {
   return verdict[static_cast<std::size_t>(q)].rfind("not applicable", 0) != 0;
-}
-
-RunBalance body_balance(const Trajectory& r, const BalanceBody& body, const SimulationOptions& options) {
-  const std::size_t n = r.size();
-  const std::vector<double> steps = steps_of(r.t, options.dt);
-  RunBalance b;
-  b.about = "the centre of mass";
-  b.verdict.fill("closed");
-  std::vector<double> magnitude(n);
-  for (std::size_t i = 0; i < n; ++i) magnitude[i] = std::abs(r.work[i]);
-  // r_E = T − T0 − W: the work records hold the loads' and gravity's (simulate.hpp)
-  set_energy(b, r.kinetic_energy, r.total_energy, r.work, magnitude, steps);
-  const bool loads = !options.loads.empty();
-  if (loads) {
-    set_not_applicable(b, linear, n, "the impulse of the loads is not integrated on a body's own path");
-  } else {
-    // r_P = m v − m v0 − m g (t − t0): uniform gravity's impulse is exact
-    const double m = body.mass;
-    const Eigen::Vector3d& g = options.gravity_W;
-    const double g_norm = norm3(g);
-    std::vector<double> size(n);
-    b.residual[linear].resize(n), b.scale[linear].resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      const Eigen::Vector3d v = Vector3Map(&r.v_W[3 * i]);
-      const Eigen::Vector3d P = m * v, P0 = m * Vector3Map(&r.v_W[0]);
-      b.residual[linear][i] = norm3(P - P0 - m * ((r.t[i] - r.t[0]) * g));
-      b.scale[linear][i] = m * (norm3(Vector3Map(&r.v_W[0])) + g_norm * std::abs(r.t[i] - r.t[0]));
-      size[i] = m * (norm3(v) + g_norm * std::abs(r.t[i] - r.t[0]));
-    }
-    running_max(size);
-    b.round_off[linear] = round_off_of(size, steps);
-  }
-  if (!body.inertia_com) {
-    set_not_applicable(b, angular, n, "a " + body.kind + " has no attitude");
-  } else if (loads) {
-    set_not_applicable(b, angular, n, "the angular impulse of the loads is not integrated on a body's own path");
-  } else {
-    // r_H = R I w − (R I w)(t0) about the centre of mass: gravity has no moment about it
-    const Eigen::Matrix3d& I = *body.inertia_com;
-    const auto H = [&](std::size_t i) { return rotated(&r.q_WB[4 * i], I * Vector3Map(&r.w_B[3 * i])); };
-    const Eigen::Vector3d H0 = n ? H(0) : Eigen::Vector3d::Zero();
-    std::vector<double> size(n);
-    b.residual[angular].resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      const Eigen::Vector3d H_i = H(i);
-      b.residual[angular][i] = norm3(H_i - H0);
-      size[i] = norm3(H_i);
-    }
-    b.scale[angular].assign(n, norm3(H0));
-    running_max(size);
-    b.round_off[angular] = round_off_of(size, steps);
-  }
-  return b;
 }
 
 RunBalance scene_balance(const SceneSimulation& r, const std::string& not_applicable, double dt) {

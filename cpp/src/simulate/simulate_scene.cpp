@@ -106,7 +106,9 @@ Trajectory one_body_trajectory(const Body& body, const BodyState& initial, const
 
 // The closed form's records as a SceneSimulation: the states and energies as simulate(body, ...) recorded
 // them; the potential, the momenta and each element's power from the scene's terms at each record; the work of
-// gravity −ΔV (exact for a uniform field), the loads' the rest of the integrated work.
+// gravity −ΔV (exact for a uniform field), the loads' the rest of the integrated work; without loads the impulses
+// of gravity in closed form, J = m g s and K = m (p0 s + v0 s²/2 + g s³/6) × g with s = t − t0 (the centre of mass
+// moves on p0 + v0 s + g s²/2; Newton's second law and its moment about W's origin, H' = p × m g).
 SceneSimulation closed_form_simulation(const CompiledScene& compiled, const std::vector<BodyState>& initial,
                                     const SimulationOptions& o) {
   const Body& body = compiled.scene().bodies[0];
@@ -142,6 +144,13 @@ SceneSimulation closed_form_simulation(const CompiledScene& compiled, const std:
     out.pivot_reaction_W.insert(out.pivot_reaction_W.end(), 3, 0.0);  // no pivot
     out.angular_momentum_O_W.insert(out.angular_momentum_O_W.end(), H_C.data(), H_C.data() + 3);
     out.mass.push_back(m);
+    if (!loads) {
+      const double s = tr.t[r] - tr.t[0];
+      const Eigen::Vector3d p0(&tr.p_W[0]), v0(&tr.v_W[0]), g = plan.gravity_W;
+      const Eigen::Vector3d J = m * s * g, K = m * (p0 * s + v0 * (s * s / 2.0) + g * (s * s * s / 6.0)).cross(g);
+      out.impulse_W.insert(out.impulse_W.end(), J.data(), J.data() + 3);
+      out.angular_impulse_W.insert(out.angular_impulse_W.end(), K.data(), K.data() + 3);
+    }
     double gravity_power = 0.0, loads_power = 0.0;
     if (gravity) gravity_power = gravity->add_wrenches(tr.t[r], k, w);
     if (loads) {

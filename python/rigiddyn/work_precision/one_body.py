@@ -190,7 +190,7 @@ class ProblemCase:
         return states_of(result)
 
     def quaternion_norm_error(self, result: Any) -> np.ndarray:
-        return np.asarray(result.quaternion_norm_error)
+        return np.asarray(result.body(0).quaternion_norm_error)
 
     def measures(self, run: States, ref: States, quaternion_norm_error: np.ndarray) -> dict[str, float]:
         """The error measures of `run` against `ref` at the same times (body_measures); a run far beyond

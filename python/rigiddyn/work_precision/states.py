@@ -21,9 +21,10 @@ class States:
 
 
 def states_of(result: Any) -> States:
-    """The recorded states of a SimulationResult."""
-    return States(np.asarray(result.t), np.asarray(result.p_W), np.asarray(result.q_WB),
-                  np.asarray(result.v_W), np.asarray(result.w_B))
+    """The recorded states of the one body of a SceneResult (``result.body(0)``)."""
+    body = result.body(0)
+    return States(np.asarray(body.t), np.asarray(body.p_W), np.asarray(body.q_WB),
+                  np.asarray(body.v_W), np.asarray(body.w_B))
 
 
 def rows_at(states: States, times: np.ndarray) -> States:

@@ -8,8 +8,7 @@ principle; Rigid-body notes, section 4.11, f = dp/dt (4.36)):
     r_P = |P - P0 - J|  [kg m/s]
     r_H = |H - H0 - K|  [kg m^2/s]
 
-about W's origin for a scene (H = sum p x m v + R I w) and about the centre of mass for one body (H = R I w, K = 0;
-J = m g (t - t0), uniform gravity's impulse, exact). Each residual comes with its round-off bound (8 eps times the
+about W's origin (H = sum p x m v + R I w; a body alone runs as its one-body scene). Each residual comes with its round-off bound (8 eps times the
 size of its terms per step, summed) and its scale. A residual is within its allowance when it does not exceed
 max(ESTIMATE_FACTOR x the estimate's bound, ESTIMATE_FLOOR x level x scale) + round-off where the global error
 estimate is reliable, else level x scale + round-off.
@@ -25,7 +24,7 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["DEFAULT_LEVEL", "ESTIMATE_FACTOR", "ESTIMATE_FLOOR", "accuracy_message", "of_body", "of_scene"]
+__all__ = ["DEFAULT_LEVEL", "ESTIMATE_FACTOR", "ESTIMATE_FLOOR", "accuracy_message", "of_scene"]
 
 #: The relative level of a run without a reliable estimate; the factor on a reliable estimate's bound; the least
 #: allowance where the estimate is reliable, as a fraction of the level.
@@ -72,71 +71,6 @@ def _not_applicable(n: int) -> np.ndarray:
 
 
 # ------------------------------------------------------------------ the residuals of a run
-
-
-def of_body(result: Any, mass: float, inertia_com: Any, gravity_W: Any, loads: bool, kind: str, dt: float) -> Balance:
-    """The balance of a one-body run (SimulationResult) of a body of `mass` [kg], inertia_com (3, 3) [kg m^2] (None
-    for a particle), under uniform gravity_W [m/s^2] and, when `loads`, applied loads; `kind` the body's class.
-    Records that overflowed give non-finite residuals quietly (simulate warns of them)."""
-    with np.errstate(all="ignore"):
-        return _of_body(result, mass, inertia_com, gravity_W, loads, kind, dt)
-
-
-def _of_body(result: Any, mass: float, inertia_com: Any, gravity_W: Any, loads: bool, kind: str, dt: float) -> Balance:
-    t = np.asarray(result.t)
-    n = t.shape[0]
-    steps = _steps(t, dt)
-    T = np.asarray(result.kinetic_energy)
-    W = np.asarray(result.work)
-    E = np.asarray(result.total_energy)
-    # r_E = T - T0 - W: the work records hold the loads' and gravity's (simulate.hpp)
-    energy = T - T[:1] - W if n else T
-    energy_scale = (abs(E[0]) + T[0] + _running_max(np.abs(W))) if n else T
-    energy_size = _running_max(T + np.abs(E - T) + np.abs(W))  # the terms the records' round-off scales with
-    verdict: dict[str, str] = {}
-    v = np.asarray(result.v_W)
-    g = np.asarray(gravity_W, dtype=float)
-    if loads:
-        linear = linear_scale = linear_size = _not_applicable(n)
-        verdict["linear_momentum"] = "not applicable: the impulse of the loads is not integrated on a body's own path"
-    else:
-        # r_P = m v - m v0 - m g (t - t0): uniform gravity's impulse is exact
-        P = mass * v
-        linear = _norms(P - P[:1] - mass * np.outer(t - t[:1], g)) if n else t
-        linear_scale = mass * (_norms(v[:1]) + _norms(g) * np.abs(t - t[:1])) if n else t
-        linear_size = _running_max(mass * (_norms(v) + _norms(g) * np.abs(t - t[:1]))) if n else t
-    if inertia_com is None:
-        angular = angular_scale = angular_size = _not_applicable(n)
-        verdict["angular_momentum"] = f"not applicable: a {kind} has no attitude"
-    elif loads:
-        angular = angular_scale = angular_size = _not_applicable(n)
-        verdict["angular_momentum"] = "not applicable: the angular impulse of the loads is not integrated on a body's own path"
-    else:
-        # r_H = R I w - (R I w)(t0) about the centre of mass: gravity has no moment about it
-        H = _world_momentum(np.asarray(result.q_WB), np.asarray(result.w_B), np.asarray(inertia_com, dtype=float),
-                            bool(getattr(result, "scalar_first", False)))
-        angular = _norms(H - H[:1]) if n else t
-        angular_scale = np.full(n, _norms(H[:1])[0]) if n else t
-        angular_size = _running_max(_norms(H))
-    return _made((energy, linear, angular, _round_off(energy_size, steps), _round_off(linear_size, steps),
-                  _round_off(angular_size, steps), energy_scale, linear_scale, angular_scale),
-                 {q: verdict.get(q, "closed") for q, _ in _QUANTITIES}, "the centre of mass")
-
-
-def _world_momentum(q: np.ndarray, w_B: np.ndarray, inertia: np.ndarray, scalar_first: bool) -> np.ndarray:
-    """R_WB I w_B per record, q (n, 4) as recorded: h + 2 s (u x h) + 2 u x (u x h) for h = I w_B and the unit
-    quaternion (u, s) (Rodrigues' formula in quaternion form)."""
-    q = q / np.sqrt(np.einsum("ni,ni->n", q, q))[:, None]
-    u, s = (q[:, 1:], q[:, :1]) if scalar_first else (q[:, :3], q[:, 3:])
-    h = np.einsum("jk,nk->nj", inertia, w_B)  # no BLAS threads for (n, 3) rows
-    t = 2.0 * _cross(u, h)
-    return np.asarray(h + s * t + _cross(u, t), dtype=float)
-
-
-def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """a x b row by row, (n, 3) (numpy's cross costs ~20 us of checks on short arrays)."""
-    return np.column_stack((a[:, 1] * b[:, 2] - a[:, 2] * b[:, 1], a[:, 2] * b[:, 0] - a[:, 0] * b[:, 2],
-                            a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]))
 
 
 def of_scene(result: Any, impulse_W: Any, angular_impulse_W: Any, not_applicable: str, dt: float) -> Balance:
@@ -199,7 +133,7 @@ def _of_scene(result: Any, impulse_W: Any, angular_impulse_W: Any, not_applicabl
 # ------------------------------------------------------------------ the warning
 
 
-def _allowances(balance: Balance, error: Any, level: float, result: Any, inertia_bound: Any) -> dict[str, np.ndarray]:
+def _allowances(balance: Balance, error: Any, level: float, result: Any) -> dict[str, np.ndarray]:
     """What each residual may be at each record: max(ESTIMATE_FACTOR x the estimate's bound of it, ESTIMATE_FLOOR x
     level x its scale) + round-off where the estimate is reliable, else level x its scale + round-off."""
     n = balance["energy"].shape[0]
@@ -207,7 +141,7 @@ def _allowances(balance: Balance, error: Any, level: float, result: Any, inertia
     if error is None:
         return fallback
     reliable = np.asarray(error.reliable, dtype=bool)
-    estimated = _estimate_bounds(error, result, inertia_bound)
+    estimated = _estimate_bounds(error, result)
     out = {}
     for q, _ in _QUANTITIES:
         bound = (np.maximum(ESTIMATE_FACTOR * estimated[q], ESTIMATE_FLOOR * level * balance[q + "_scale"])
@@ -221,31 +155,26 @@ def _per_body(a: Any) -> np.ndarray:
     return np.asarray(a[:, None] if a.ndim == 1 else a, dtype=float)
 
 
-def _estimate_bounds(error: Any, result: Any, inertia_bound: Any) -> dict[str, np.ndarray]:
+def _estimate_bounds(error: Any, result: Any) -> dict[str, np.ndarray]:
     """The global error estimate's bound of each residual (first order in the state errors):
-    energy: the estimate of total_energy's error; linear momentum: sum_b m_b dv_b; angular momentum:
-    sum_b (m_b (|v_b| dp_b + |p_b| dv_b) + |H_C,b| dtheta_b + lambda_b dw_b), lambda_b I's largest moment (for a
-    scene |H_C,b| / |w_b|, exact for a sphere; a scene's H is about W's origin, one body's about its centre)."""
+    energy: the estimate of total_energy's error; linear momentum: sum_b m_b dv_b; angular momentum (about W's
+    origin): sum_b (m_b (|v_b| dp_b + |p_b| dv_b) + |H_C,b| dtheta_b + lambda_b dw_b), lambda_b = |H_C,b| / |w_b|
+    (I's largest moment for a sphere)."""
     dp, dv = _per_body(error.position), _per_body(error.velocity)
     dth, dw = _per_body(error.attitude), _per_body(error.angular_velocity)
-    m = _per_body(result.mass if hasattr(result, "mass") else np.full(dv.shape[0], inertia_bound[0]))  # one body: its mass
+    m = _per_body(result.mass)
     v = np.asarray(result.v_W).reshape(dv.shape + (3,))
     p = np.asarray(result.p_W).reshape(dv.shape + (3,))
     w = np.asarray(result.w_B).reshape(dv.shape + (3,))
-    if hasattr(result, "angular_momentum_O_W"):  # a scene: about W's origin
-        H_C = _norms(np.asarray(result.angular_momentum_O_W))
-        norms_w = _norms(w)
-        lam = np.divide(H_C, norms_w, out=np.zeros_like(H_C), where=norms_w > 0)
-        angular = (m * (_norms(v) * dp + _norms(p) * dv) + H_C * dth + lam * dw).sum(axis=1)
-    else:  # one body, about its centre of mass
-        H_C = np.asarray(result.angular_momentum_norm)[:, None]
-        angular = (H_C * dth + inertia_bound[1] * dw).sum(axis=1)
+    H_C = _norms(np.asarray(result.angular_momentum_O_W))
+    norms_w = _norms(w)
+    lam = np.divide(H_C, norms_w, out=np.zeros_like(H_C), where=norms_w > 0)
+    angular = (m * (_norms(v) * dp + _norms(p) * dv) + H_C * dth + lam * dw).sum(axis=1)
     return {"energy": np.asarray(error.energy, dtype=float), "linear_momentum": (m * dv).sum(axis=1),
             "angular_momentum": angular}
 
 
-def accuracy_message(balance: Balance, error: Any, level: float, result: Any, method: str, dt: float,
-                     inertia_bound: Any = None) -> str:
+def accuracy_message(balance: Balance, error: Any, level: float, result: Any, method: str, dt: float) -> str:
     """The AccuracyWarning's message for a run, or "" when every balance closes.
 
     The rule, per quantity q and record i where q applies: the residual |r_q,i| must not exceed
@@ -256,19 +185,17 @@ def accuracy_message(balance: Balance, error: Any, level: float, result: Any, me
     Parameters
     ----------
     balance : dict
-        The run's residuals (of_body, of_scene).
+        The run's residuals (of_scene).
     error : GlobalError or None
         The run's estimate (None: error=False).
     level : float
         The relative level where no reliable estimate exists.
-    result : SimulationResult or SceneResult
+    result : SceneResult
         The run's records.
     method : str
         The method's name (for the message).
     dt : float
         The step [s] (for the message).
-    inertia_bound : tuple of float, optional
-        (mass [kg], a bound of the largest principal moment [kg m^2]) of a one-body run.
 
     Returns
     -------
@@ -276,12 +203,11 @@ def accuracy_message(balance: Balance, error: Any, level: float, result: Any, me
         The message, "" when no residual exceeds its allowance.
     """
     with np.errstate(all="ignore"):
-        return _accuracy_message(balance, error, level, result, method, dt, inertia_bound)
+        return _accuracy_message(balance, error, level, result, method, dt)
 
 
-def _accuracy_message(balance: Balance, error: Any, level: float, result: Any, method: str, dt: float,
-                      inertia_bound: Any) -> str:
-    allowance = _allowances(balance, error, level, result, inertia_bound)
+def _accuracy_message(balance: Balance, error: Any, level: float, result: Any, method: str, dt: float) -> str:
+    allowance = _allowances(balance, error, level, result)
     reliable = np.zeros(balance["energy"].shape[0], bool) if error is None else np.asarray(error.reliable, dtype=bool)
     findings = []
     for q, unit in _QUANTITIES:

@@ -42,11 +42,6 @@ inline constexpr double estimate_floor = 0.1;
 // The estimate's bound of each residual per record, (n,) each, indexed by BalanceQuantity.
 using BalanceBounds = std::array<std::vector<double>, balance_quantity_count>;
 
-// The bounds for a one-body run `r` of a body of `mass` [kg] whose largest principal moment is at most
-// `largest_moment` [kg m²] (0 for a particle), from its estimate `e` (one body: (n,) state quantities).
-BalanceBounds body_estimate_bounds(const GlobalErrorEstimate& e, const Trajectory& r, double mass,
-                                   double largest_moment);
-
 // The bounds for a scene's run `r` from its estimate `e` ((n, nb) state quantities).
 BalanceBounds scene_estimate_bounds(const GlobalErrorEstimate& e, const SceneSimulation& r);
 

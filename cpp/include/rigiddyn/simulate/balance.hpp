@@ -8,25 +8,22 @@
 //
 // W_e the work of every force element (the conservative ones' too), E_b the mass-flow energies, W_motor the wheels'
 // motor works, J and K the linear and angular impulses of the external forces (integrated with the motion by the
-// same method as the works). H is about W's origin for a scene (H = Σ p × m v + R I ω, K about W's origin) and about
-// the centre of mass for one body (H = R I ω, K = 0: uniform gravity and a force through the centre of mass have no
-// moment about it; one body's linear impulse under uniform gravity is exact, J = m g (t − t0)).
+// same method as the works). H and K are about W's origin (H = Σ p × m v + R I ω; a body alone runs as its one-body
+// scene).
 //
 // Each residual comes with its round-off bound (8 ε per step times the size of the terms it is made of, summed over
 // the steps: the global error estimate's bound) and its scale (what it is relative to): the motion's error is the
 // balance's only other source, and accuracy_check.hpp compares the residuals with the global error estimate.
 // A quantity whose balance does not apply (a pinned or planar body, whose constraint reaction's impulse is not
-// integrated; a mass flow; a turning frame; loads on one body, whose impulse is not integrated on that path) has
+// integrated; a mass flow; a turning frame; loads in a closed form, which does not integrate their impulses) has
 // NaN residuals and a verdict "not applicable: <why>". Records that overflowed give non-finite residuals.
 #pragma once
 #include "rigiddyn/scene/scene_simulation.hpp"
-#include "rigiddyn/simulate/simulate.hpp"
 
 #include <Eigen/Core>
 
 #include <array>
 #include <cstddef>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -54,20 +51,6 @@ struct RunBalance {
   std::size_t size() const { return residual[0].size(); }
   bool applies(BalanceQuantity q) const;  // its verdict is not "not applicable: ..."
 };
-
-// What one body's balance needs of the body: its mass [kg], its inertia about the centre of mass in B [kg m²]
-// (diag(0, 0, I_zz) for a planar body; none for a particle, which has no attitude) and its kind ("Particle", ...).
-struct BalanceBody {
-  double mass = 0.0;
-  std::optional<Eigen::Matrix3d> inertia_com;
-  std::string kind;
-};
-
-// The balance of a one-body run `r` (q_WB as (x, y, z, w)) of `body` under options.gravity_W; with options.loads
-// the momentum balances do not apply (their impulses are not integrated on a body's own path).
-// Residuals: r_E = T − T0 − work (the work records hold the loads' and gravity's, simulate.hpp),
-// r_P = |m v − m v0 − m g (t − t0)|, r_H = |R I ω − (R I ω)(t0)| about the centre of mass.
-RunBalance body_balance(const Trajectory& r, const BalanceBody& body, const SimulationOptions& options);
 
 // The balance of a scene's run `r` at step dt [s]: `not_applicable` the reason its momentum balances do not apply
 // ("" when they do: then r.impulse_W and r.angular_impulse_W, (n, 3), hold the impulses, else they do not apply

@@ -127,6 +127,23 @@ class ScheduledLoadsTerm {
 
   double potential(const std::vector<BodyKinematics>& /*kinematics*/) const { return 0.0; }
 
+  // The loads a body of this kind can take, each named list_name[i]: no torque on a particle; in the plane (a force
+  // with z = 0, a torque about z) on a planar body. std::invalid_argument naming the first that is not.
+  static void check_loads_for_kind(const Body& body, const std::vector<AppliedLoad>& loads, const std::string& list_name) {
+    for (std::size_t i = 0; i < loads.size(); ++i) {
+      const std::string load = list_name + "[" + std::to_string(i) + "]";
+      if (!has_attitude(body) && !loads[i].torque.isZero(0.0)) {
+        throw_invalid(load + ".torque", "zero (a particle takes no torque)", loads[i].torque);
+      }
+      if (has_attitude(body) && is_planar(body)) {
+        if (loads[i].force.z() != 0.0) throw_invalid(load + ".force", "a force in the xy plane (z = 0)", loads[i].force);
+        if (!loads[i].torque.head<2>().isZero(0.0)) {
+          throw_invalid(load + ".torque", "a torque about z only (x = y = 0)", loads[i].torque);
+        }
+      }
+    }
+  }
+
   int body() const { return body_; }
   const std::vector<AppliedLoad>& loads() const { return schedule_; }
   const Eigen::Vector3d& point_B() const { return point_B_; }
@@ -142,23 +159,10 @@ class ScheduledLoadsTerm {
   }
 
   void check_kind(const Body& body, const std::string& name) const {
-    if (!has_attitude(body)) {
-      for (std::size_t i = 0; i < schedule_.size(); ++i) {
-        if (!schedule_[i].torque.isZero(0.0)) {
-          throw_invalid(name + ".loads[" + std::to_string(i) + "].torque", "zero (a particle takes no torque)",
-                        schedule_[i].torque);
-        }
-      }
-      if (!point_B_.isZero(0.0)) throw_invalid(name + ".point_B", "zero (a particle is a point)", point_B_);
-    } else if (is_planar(body)) {
-      for (std::size_t i = 0; i < schedule_.size(); ++i) {
-        const std::string load = name + ".loads[" + std::to_string(i) + "]";
-        if (schedule_[i].force.z() != 0.0) throw_invalid(load + ".force", "a force in the xy plane (z = 0)", schedule_[i].force);
-        if (!schedule_[i].torque.head<2>().isZero(0.0)) {
-          throw_invalid(load + ".torque", "a torque about z only (x = y = 0)", schedule_[i].torque);
-        }
-      }
-      if (point_B_.z() != 0.0) throw_invalid(name + ".point_B", "a point in the body's xy plane (z = 0)", point_B_);
+    check_loads_for_kind(body, schedule_, name + ".loads");
+    if (!has_attitude(body) && !point_B_.isZero(0.0)) throw_invalid(name + ".point_B", "zero (a particle is a point)", point_B_);
+    if (has_attitude(body) && is_planar(body) && point_B_.z() != 0.0) {
+      throw_invalid(name + ".point_B", "a point in the body's xy plane (z = 0)", point_B_);
     }
   }
 
