@@ -276,8 +276,7 @@ BATCH_DERIVED = ("angular_momentum_norm", "quaternion_norm_error", "work")
 def batch_sample_bound(serial, name, dt):
     """The largest difference of a derived column `name` between a body's batch sample (a SimulationResult of
     rigiddyn.simulate_batch) and its serial run `serial` (rigiddyn.simulate's one-body SceneResult) at step dt, per
-    record:
-    |H_G| is |I w| in B there and |R I w| in W here (R of the normalised q: <= 16 eps |H| for the products and the
+    record, (n,). |H_G| is |I w| in B there and |R I w| in W here (R of the normalised q: <= 16 eps |H| for the products and the
     norm, plus 2 ||q| - 1| |H| where the sample's q is not normalised); |q| - 1 is a norm summed in another order
     (<= 4 eps); the work is one integral of the total power there, the sum of each element's integral here (each
     step's update rounds <= 4 eps of the works' size, for (t - t0)/dt + 1 steps)."""
