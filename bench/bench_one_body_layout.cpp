@@ -2,8 +2,12 @@
 // simulate(scene, ...)) against the one-body model of simulate(body, ...) with the same gravity and loads, for each
 // method, a particle, a planar body and a rigid body (principal inertia), with no element, under gravity alone, and under gravity
 // and a body-frame force and torque switched on for part of the run. Both through the public entries, the run's
-// records every 1000th step.
+// records every 1000th step (the stepping), and for the rigid body under gravity in RK4 every step (the stepping and
+// the recording).
 //   one_body_<kind>_<elements>_<method>   the layout's run over the one-body model's run
+//   one_body_rigid_gravity_rk4_record_every_step   the same, recording every step: a scene's record holds 16 + 20 per
+//                                         body + 2 per element doubles (the momenta, impulses, each element's work and
+//                                         power), the one-body model's 19
 //   one_body_top_<elements>_<method>     a heavy top: the layout it would take over the fast model it takes
 // The layout carries t and, with loads, a work per element and the six impulses (the momentum balance reads them);
 // the one-body model carries one work. ctest runs it with RIGIDDYN_BENCH_SMALL=1 (fewer steps).
@@ -59,26 +63,28 @@ const char* name_of(Elements e) {
   return e == Elements::none ? "none" : e == Elements::gravity ? "gravity" : "gravity_and_loads";
 }
 
-SimulationOptions options(Method method) {
+SimulationOptions options(Method method, std::int64_t record_every = 1000) {
   SimulationOptions o;
-  o.method = method, o.dt = 1e-3, o.steps = steps(), o.record_every = 1000;
+  o.method = method, o.dt = 1e-3, o.steps = steps(), o.record_every = record_every;
   return o;
 }
 
-void layout_run(benchmark::State& state, const BodyCase& c, Elements elements, Method method) {
+void layout_run(benchmark::State& state, const BodyCase& c, Elements elements, Method method,
+                std::int64_t record_every = 1000) {
   Scene scene;
   scene.bodies = {c.body};
   if (elements != Elements::none) scene.elements.push_back(UniformGravity{gravity_of(c.body), {}});
   const bool loads = elements == Elements::gravity_and_loads && !std::holds_alternative<Particle>(c.body);
   if (loads) scene.elements.push_back(ScheduledLoads{0, {push(c.body)}, Eigen::Vector3d::Zero()});
   const CompiledScene compiled = compile_scene(scene, method);
-  const SimulationOptions o = options(method);
+  const SimulationOptions o = options(method, record_every);
   for (auto _ : state) benchmark::DoNotOptimize(simulate(compiled, {c.state}, o));
   state.SetItemsProcessed(state.iterations() * o.steps);
 }
 
-void body_run(benchmark::State& state, const BodyCase& c, Elements elements, Method method) {
-  SimulationOptions o = options(method);
+void body_run(benchmark::State& state, const BodyCase& c, Elements elements, Method method,
+              std::int64_t record_every = 1000) {
+  SimulationOptions o = options(method, record_every);
   if (elements != Elements::none) o.gravity_W = gravity_of(c.body);
   if (elements == Elements::gravity_and_loads && !std::holds_alternative<Particle>(c.body)) o.loads = {push(c.body)};
   for (auto _ : state) {
@@ -154,6 +160,15 @@ bool register_cases() {
         benchmark::RegisterBenchmark((name + ":rigiddyn").c_str(), [c, e, m](benchmark::State& s) { layout_run(s, c, e, m); })
             ->Unit(benchmark::kMillisecond);
         benchmark::RegisterBenchmark((name + ":baseline").c_str(), [c, e, m](benchmark::State& s) { body_run(s, c, e, m); })
+            ->Unit(benchmark::kMillisecond);
+      }
+      if (std::string(c.name) == "rigid" && e == Elements::gravity) {
+        const std::string name = "one_body_rigid_gravity_rk4_record_every_step";
+        benchmark::RegisterBenchmark((name + ":rigiddyn").c_str(),
+                                     [c, e](benchmark::State& s) { layout_run(s, c, e, Method::rk4, 1); })
+            ->Unit(benchmark::kMillisecond);
+        benchmark::RegisterBenchmark((name + ":baseline").c_str(),
+                                     [c, e](benchmark::State& s) { body_run(s, c, e, Method::rk4, 1); })
             ->Unit(benchmark::kMillisecond);
       }
     }

@@ -85,7 +85,9 @@ def rigiddyn_final(states, steps, dt, threads, simd=False):
     # error=False: the runs alone, the same work as the baselines' (no global error estimate)
     result = rigiddyn.simulate_batch(body, states, dt, steps, method="rk4", record_every=steps, threads=threads,
                                      simd=simd, error=False)
-    return (np.array(result.w_B[:, -1, :]), np.array(result.q_WB[:, -1, :])), clock.stop()
+    elapsed = clock.stop()
+    final = result.body(0)  # the body's columns, (N, n_records, ...)
+    return (np.array(final.w_B[:, -1, :]), np.array(final.q_WB[:, -1, :])), elapsed
 
 
 # ---- MuJoCo ------------------------------------------------------------------------------------------

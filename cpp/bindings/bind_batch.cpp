@@ -1,6 +1,6 @@
 // Python bindings of batch runs (batch/simulate_batch.hpp, batch/simd_rigid_body.hpp): rigiddyn.simulate_batch
-// and its results BatchResult (bodies) and BatchSceneResult (scenes), read-only numpy arrays with a leading
-// sample axis adopting the C++ records. Every argument is converted by name (numpy_io.hpp) before the run;
+// and its result BatchSceneResult (of scenes; a batch of bodies runs their one-body scenes), read-only numpy arrays
+// with a leading sample axis adopting the C++ records. Every argument is converted by name (numpy_io.hpp) before the run;
 // the run itself holds no GIL (python_run.hpp's PythonMonitor gives progress and Ctrl-C from the calling
 // thread only).
 #include <pybind11/stl.h>
@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "body_records.hpp"
 #include "common_args.hpp"
 #include "numpy_io.hpp"
 #include "python_run.hpp"
@@ -92,115 +93,13 @@ py::ssize_t sample_index(py::handle key, py::ssize_t n, const char* cls) {
   return static_cast<py::ssize_t>(j);
 }
 
-// ------------------------------------------------------------ BatchResult (bodies)
-
-constexpr const char* batch_arrays[] = {"t", "p_W", "q_WB", "v_W", "w_B", "kinetic_energy", "total_energy",
-                                        "angular_momentum_norm", "quaternion_norm_error", "work"};
-constexpr py::ssize_t batch_widths[] = {0, 3, 4, 3, 3, 0, 0, 0, 0, 0};  // values per record (0: a scalar)
-constexpr std::size_t batch_array_count = 10;
-
-struct BatchResult {
-  py::array arrays[batch_array_count];  // batch_arrays, each (N, n) or (N, n, width)
-  py::array diverged, filled, unconverged_steps;  // (N,) bool, int64, int64
-  double elapsed_seconds = 0.0;
-  bool scalar_first = false;  // q_WB rows as (w, x, y, z)
-  py::object error = py::none();  // a GlobalError with a leading sample axis (simulate_batch(..., error=True)) or None
-
-  py::ssize_t samples() const { return filled.shape(0); }
-  py::ssize_t records() const { return arrays[0].shape(1); }
-};
-
-std::vector<py::ssize_t> batch_shape(py::ssize_t n_samples, py::ssize_t n, py::ssize_t width) {
-  return width == 0 ? std::vector<py::ssize_t>{n_samples, n} : std::vector<py::ssize_t>{n_samples, n, width};
-}
-
-BatchResult to_batch_result(BatchTrajectory&& b, bool scalar_first) {
-  const auto N = static_cast<py::ssize_t>(b.samples), n = static_cast<py::ssize_t>(b.records);
-  if (scalar_first) to_scalar_first(b.q_WB);
-  std::vector<double>* data[batch_array_count] = {&b.t, &b.p_W, &b.q_WB, &b.v_W, &b.w_B, &b.kinetic_energy,
-                                                  &b.total_energy, &b.angular_momentum_norm,
-                                                  &b.quaternion_norm_error, &b.work};
-  BatchResult r;
-  for (std::size_t k = 0; k < batch_array_count; ++k) {
-    r.arrays[k] = adopt_vector(std::move(*data[k]), batch_shape(N, n, batch_widths[k]));
-  }
-  r.diverged = bool_array(b.diverged);
-  r.filled = adopt_vector(std::move(b.filled), {N});
-  r.unconverged_steps = adopt_vector(std::move(b.unconverged_steps), {N});
-  r.elapsed_seconds = b.elapsed_seconds;
-  r.scalar_first = scalar_first;
-  return r;
-}
-
-py::tuple batch_result_state(const BatchResult& r) {
-  py::tuple out(batch_array_count + 6);
-  for (std::size_t k = 0; k < batch_array_count; ++k) out[k] = r.arrays[k];
-  out[batch_array_count] = r.diverged;
-  out[batch_array_count + 1] = r.filled;
-  out[batch_array_count + 2] = r.unconverged_steps;
-  out[batch_array_count + 3] = py::float_(r.elapsed_seconds);
-  out[batch_array_count + 4] = py::bool_(r.scalar_first);
-  out[batch_array_count + 5] = r.error;
-  return out;
-}
-
 // The error item of a pickle state: a GlobalError or None (`what` names it in the message).
 py::object error_from_state(py::handle item, const std::string& what) {
   if (!item.is_none() && !py::isinstance<GlobalError>(item)) py_io::throw_type_error(what, "a GlobalError or None", item);
   return py::reinterpret_borrow<py::object>(item);
 }
 
-// batch_array_count + 4 items: a state without scalar_first (q_WB as (x, y, z, w)), + 5 without the error
-// estimate, as earlier pickles
-BatchResult batch_result_from_state(const py::tuple& t) {
-  if (t.size() < batch_array_count + 4 || t.size() > batch_array_count + 6) {
-    py_io::throw_value_error("BatchResult pickle",
-                             "a tuple of " + std::to_string(batch_array_count + 4) + " to " +
-                                 std::to_string(batch_array_count + 6) + " items",
-                             std::to_string(t.size()) + " items");
-  }
-  const py::array t0 = py::module_::import("numpy").attr("asarray")(t[0]);
-  if (t0.ndim() != 2) py_io::throw_value_error("BatchResult pickle t", "shape (N, n)", py_io::describe(t[0]));
-  const py::ssize_t N = t0.shape(0), n = t0.shape(1);
-  BatchResult r;
-  for (std::size_t k = 0; k < batch_array_count; ++k) {
-    r.arrays[k] = checked_copy(t[k], std::string("BatchResult pickle ") + batch_arrays[k], batch_shape(N, n, batch_widths[k]));
-  }
-  r.diverged = checked_copy(t[batch_array_count], "BatchResult pickle diverged", {N}, "bool");
-  r.filled = checked_copy(t[batch_array_count + 1], "BatchResult pickle filled", {N}, "int64");
-  r.unconverged_steps = checked_copy(t[batch_array_count + 2], "BatchResult pickle unconverged_steps", {N}, "int64");
-  r.elapsed_seconds = t[batch_array_count + 3].cast<double>();
-  r.scalar_first = t.size() >= batch_array_count + 5 && t[batch_array_count + 4].cast<bool>();
-  if (t.size() == batch_array_count + 6) r.error = error_from_state(t[batch_array_count + 5], "BatchResult pickle error");
-  return r;
-}
-
-// result[i]: sample i's records (its filled rows) as a rigiddyn.SimulationResult (built through its pickle
-// state, the one public way to make one); elapsed_seconds is the batch's.
-py::object batch_sample(const BatchResult& r, py::handle key) {
-  const py::ssize_t i = sample_index(key, r.samples(), "BatchResult");
-  const py::ssize_t rows = r.filled.attr("__getitem__")(i).cast<py::ssize_t>();
-  py::tuple state(batch_array_count + 5);
-  for (std::size_t k = 0; k < batch_array_count; ++k) state[k] = sample_rows(r.arrays[k], i, rows);
-  state[batch_array_count] = py::bool_(r.diverged.attr("__getitem__")(i).cast<bool>());
-  state[batch_array_count + 1] = py::int_(r.unconverged_steps.attr("__getitem__")(i).cast<std::int64_t>());
-  state[batch_array_count + 2] = py::float_(r.elapsed_seconds);
-  state[batch_array_count + 3] = py::bool_(r.scalar_first);
-  state[batch_array_count + 4] = sample_error(r.error, i, rows);
-  const py::object cls = py::module_::import("rigiddyn._core").attr("SimulationResult");
-  py::object out = cls.attr("__new__")(cls);
-  out.attr("__setstate__")(state);
-  return out;
-}
-
 std::int64_t count_true(const py::array& flags) { return py::int_(flags.attr("sum")()).cast<std::int64_t>(); }
-
-std::string batch_result_repr(const BatchResult& r) {
-  return repr_call("BatchResult", {{"samples", py::int_(r.samples())},
-                                   {"records", py::int_(r.records())},
-                                   {"diverged", py::int_(count_true(r.diverged))},
-                                   {"elapsed_seconds", py::float_(r.elapsed_seconds)}});
-}
 
 // ------------------------------------------------------------ BatchSceneResult
 
@@ -371,6 +270,46 @@ SceneResult batch_scene_sample(const BatchSceneResult& r, py::handle key) {
   out.error = sample_error(r.error, i, rows);
   return out;
 }
+
+// result.body(key): one body's columns, (N, n, ...) arrays (BodyRecords)
+py::object batch_body(const BatchSceneResult& r, py::handle key) {
+  BodyColumnsSource source;
+  source.body_names = r.body_names;
+  source.wheel_bodies = r.wheel_bodies;
+  const auto column = [&](const char* name) -> py::object {
+    for (std::size_t k = 0; k < scene_column_count; ++k) {
+      if (std::strcmp(scene_columns[k].name, name) == 0) return r.arrays[k];
+    }
+    throw std::logic_error(std::string("no batch column ") + name);
+  };
+  source.t = column("t");
+  source.p_W = column("p_W");
+  source.q_WB = column("q_WB");
+  source.v_W = column("v_W");
+  source.w_B = column("w_B");
+  source.mass = column("mass");
+  source.pivot_reaction_W = column("pivot_reaction_W");
+  source.angular_momentum_O_W = column("angular_momentum_O_W");
+  source.mass_flow_energy = column("mass_flow_energy");
+  source.wheel_speed = r.wheel_speed;
+  source.motor_work = r.motor_work;
+  source.scalar_first = r.scalar_first;
+  return body_records(source, key);
+}
+
+const std::string batch_body_doc = body_method_doc(
+    "The records of one body of every sample.",
+    "The body's columns of this result's arrays with their sample axis: t (N, n), p_W, v_W, w_B (N, n, 3), q_WB\n"
+    "    (N, n, 4), mass (N, n), ...",
+    R"doc(Two spheres spun up by 1 and 2 N m for 1 s (I = 0.5 kg m^2) turn at 2 and 4 rad/s:
+
+>>> sphere = rd.RigidBody(1.0, [0.5, 0.5, 0.5])
+>>> torques = [[rd.AppliedLoad(torque=(0.0, 0.0, tau))] for tau in (1.0, 2.0)]
+>>> res = rd.simulate_batch(sphere, [rd.RigidBodyState()] * 2, dt=0.01, duration=1.0, loads=torques)
+>>> spin = res.body(0)
+>>> spin.w_B.shape, spin.w_B[:, -1, 2].round(12)
+((2, 101, 3), array([2., 4.]))
+)doc");
 
 std::string batch_scene_repr(const BatchSceneResult& r) {
   return repr_call("BatchSceneResult", {{"samples", py::int_(r.samples())},
@@ -760,10 +699,148 @@ BatchErrorEstimate batch_error(const Batch& answer, const SimulationOptions& o, 
   return batch_error_estimate(answer, twice, four_times, o, models, threads);
 }
 
+// The elements every sample's one-body scene declares, the same for every sample so that their records have the same
+// columns: gravity and loads given per sample declare a UniformGravity (g = 0 included) and a ScheduledLoads (an empty
+// schedule included) in every sample's scene; given for all, each only when it acts (as one_body_scene declares them).
+// The columns so depend on the arguments' form alone, never on their values, and so do not change when a batch is
+// split into chunks (rigiddyn.distributed).
+struct OneBodyElementSet {
+  bool gravity = false, loads = false;
+
+  std::int64_t count() const { return static_cast<std::int64_t>(gravity) + static_cast<std::int64_t>(loads); }
+};
+
+OneBodyElementSet batch_elements(const SimulationOptions& o, const BatchParameters& p) {
+  OneBodyElementSet e;
+  e.gravity = !p.gravity_W.empty() || !o.gravity_W.isZero(0.0);
+  e.loads = !p.loads.empty() || !o.loads.empty();
+  return e;
+}
+
+// The one-body scene of a body under uniform gravity g_W [m/s²] and the schedule `loads`, declaring `elements`
+// (one_body_scene's, checked as simulate checks a body's gravity and loads).
+template <class Model>
+Scene sample_scene(const Model& body, const Eigen::Vector3d& g_W, const std::vector<AppliedLoad>& loads,
+                   OneBodyElementSet elements) {
+  if constexpr (std::is_same_v<Model, PlanarBody>) {
+    if (g_W.z() != 0.0) throw_invalid("gravity", "gravity in the xy plane (z = 0) for a PlanarBody", g_W);
+  }
+  Scene scene;
+  scene.bodies.push_back(body);
+  if (elements.gravity) scene.elements.push_back(UniformGravity{g_W, {}});
+  if (elements.loads) {
+    check_loads(loads);
+    ScheduledLoadsTerm::check_loads_for_kind(scene.bodies[0], loads, "loads");
+    scene.elements.push_back(ScheduledLoads{0, loads, Eigen::Vector3d::Zero()});
+  }
+  return scene;
+}
+
+// The one-body scenes of a batch of bodies, compiled for o.method: one shared when the body, gravity and loads are
+// (sample i is then simulate(body, initial[i], ..., loads, gravity) bitwise), else sample i's own (its errors named
+// "sample <i>: ..."); the first sample's alone for the SIMD path (`first_only`: it runs the bodies, and the scene gives
+// the records' columns and the method's order).
+template <class Model>
+std::vector<CompiledScene> one_body_scenes(const std::vector<Model>& bodies, const SimulationOptions& o,
+                                           const BatchParameters& p, std::size_t N, OneBodyElementSet elements,
+                                           bool first_only) {
+  const bool shared = bodies.size() == 1 && p.gravity_W.empty() && p.loads.empty();
+  const std::size_t count = shared || first_only ? 1 : N;
+  std::vector<CompiledScene> scenes;
+  scenes.reserve(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    try {
+      scenes.push_back(compile_scene(sample_scene(bodies[bodies.size() == 1 ? 0 : i],
+                                                  p.gravity_W.empty() ? o.gravity_W : p.gravity_W[i],
+                                                  p.loads.empty() ? o.loads : p.loads[i], elements),
+                                     o.method));
+    } catch (const std::invalid_argument& e) {
+      if (shared) throw;
+      throw std::invalid_argument("sample " + std::to_string(i) + ": " + e.what());
+    }
+  }
+  return scenes;
+}
+
+// The SceneCompatibilityWarnings of the scenes' compiles, each text once (as simulate gives a body's).
+void warn_compatibility(const std::vector<CompiledScene>& scenes) {
+  const py::object warning = py::module_::import("rigiddyn._core").attr("SceneCompatibilityWarning");
+  std::vector<std::string> given;
+  for (const CompiledScene& scene : scenes) {
+    for (const std::string& w : scene.warnings()) {
+      if (std::find(given.begin(), given.end(), w) != given.end()) continue;
+      given.push_back(w);
+      if (PyErr_WarnEx(warning.ptr(), w.c_str(), 2) != 0) throw py::error_already_set();
+    }
+  }
+}
+
+// The records of one-body rigid scenes (sample_scene's, declaring `elements`) from the SIMD path's records `b` of RK4
+// on the bodies themselves (batch/simd_rigid_body.hpp), equal to the scene path's up to round-off: the state columns
+// and T as recorded; the rest from each record as a one-body scene records them (scene/one_body_scene_model.hpp):
+// V = −m g_W·p_W, the momenta m v_W, p_W × m v_W + R_WB I ω_B and R_WB I ω_B, gravity's work V(t0) − V(t) (RK4
+// integrates ṗ = v and gravity's power m g·v with the same weights, so its integrated work is this to round-off), the
+// loads' work the rest of the recorded work (Ẇ = (f_W + m g_W)·v_W + τ_B·ω_B), the powers m g_W·v_W and
+// f_W·v_W + τ_B·ω_B (the loads constant: the SIMD path refuses time windows).
+BatchSceneSimulation simd_scene_records(BatchTrajectory&& b, const std::vector<RigidBody>& bodies,
+                                        const SimulationOptions& o, const BatchParameters& p,
+                                        OneBodyElementSet elements) {
+  const std::int64_t ne = elements.count();
+  BatchSceneSimulation out = empty_scene_batch(b.samples, b.records, 1, ne);
+  for (std::size_t i = 0; i < b.samples; ++i) {
+    const RigidBody& body = bodies[bodies.size() == 1 ? 0 : i];
+    const double m = body.mass();
+    const Eigen::Vector3d g_W = p.gravity_W.empty() ? o.gravity_W : p.gravity_W[i];
+    const ComLoads loads = loads_at(p.loads.empty() ? o.loads : p.loads[i], o.t0);
+    double V0 = 0.0;
+    for (std::size_t row = 0; row < static_cast<std::size_t>(b.filled[i]); ++row) {
+      const std::size_t r = i * b.records + row;
+      const Eigen::Vector3d p_W(&b.p_W[3 * r]), v_W(&b.v_W[3 * r]), w_B(&b.w_B[3 * r]);
+      Eigen::Quaterniond q_WB;
+      q_WB.coeffs() = Eigen::Vector4d(&b.q_WB[4 * r]);
+      const double V = -m * g_W.dot(p_W);
+      if (row == 0) V0 = V;
+      const Eigen::Vector3d L_W = m * v_W, H_C_W = q_WB.normalized() * (body.inertia_com() * w_B);
+      const Eigen::Vector3d H_W = p_W.cross(L_W) + H_C_W;
+      out.potential_energy[r] = V;
+      out.total_energy[r] = b.total_energy[r];
+      for (int k = 0; k < 3; ++k) {
+        out.linear_momentum_W[3 * r + k] = L_W[k], out.angular_momentum_W[3 * r + k] = H_W[k];
+        out.angular_momentum_O_W[3 * r + k] = H_C_W[k], out.pivot_reaction_W[3 * r + k] = 0.0;
+      }
+      out.mass[r] = m;
+      out.mass_flow_energy[r] = 0.0;
+      std::size_t column = 0;
+      if (elements.gravity) {
+        out.work[ne * r + column] = V0 - V;
+        out.power[ne * r + column++] = m * g_W.dot(v_W);
+      }
+      if (elements.loads) {
+        out.work[ne * r + column] = b.work[r] - (elements.gravity ? V0 - V : 0.0);
+        out.power[ne * r + column] = loads.f_W.dot(v_W) + loads.tau_B.dot(w_B);
+      }
+    }
+  }
+  out.t = std::move(b.t);
+  out.p_W = std::move(b.p_W);
+  out.q_WB = std::move(b.q_WB);
+  out.v_W = std::move(b.v_W);
+  out.w_B = std::move(b.w_B);
+  out.kinetic_energy = std::move(b.kinetic_energy);
+  out.filled = std::move(b.filled);
+  out.diverged = std::move(b.diverged);
+  out.unconverged_steps = std::move(b.unconverged_steps);
+  out.elapsed_seconds = b.elapsed_seconds;
+  out.interrupted = b.interrupted;
+  return out;
+}
+
+// simulate_batch of bodies: sample i runs its one-body scene (one_body_scenes), or with simd=True the SIMD path on
+// rigid bodies under RK4, its records made a scene's (simd_scene_records).
 template <class Body, class State, class FromDict>
-BatchResult body_batch(py::handle model, py::handle initial, py::handle dt, py::handle method, py::handle loads,
-                       py::handle gravity, CommonArgs c, py::handle progress, bool error, const char* kind,
-                       const char* state_kind, FromDict from_dict) {
+BatchSceneResult body_batch(py::handle model, py::handle initial, py::handle dt, py::handle method, py::handle loads,
+                            py::handle gravity, CommonArgs c, py::handle progress, bool error, const char* kind,
+                            const char* state_kind, FromDict from_dict) {
   const std::vector<State> states = as_states<State>(initial, state_kind, from_dict, c.scalar_first);
   const py::ssize_t N = require_samples(states.size());
   const std::vector<Body> bodies = as_models<Body>(model, kind, N);
@@ -773,7 +850,6 @@ BatchResult body_batch(py::handle model, py::handle initial, py::handle dt, py::
   p.dt = as_dt(dt, o.dt, N);
   p.gravity_W = as_batch_gravity(gravity, o.gravity_W, N);
   p.loads = as_batch_loads(loads, o.loads, N);
-  require_batch_memory(N, o, with_error_doubles(29.0, error));
   const bool simd_path = c.simd;
   if (simd_path && !std::is_same_v<Body, RigidBody>) {
     py_io::throw_value_error("simd", std::string("False for a ") + kind + " (the SIMD path runs RigidBody batches)", "True");
@@ -782,23 +858,44 @@ BatchResult body_batch(py::handle model, py::handle initial, py::handle dt, py::
     py_io::throw_value_error("simd", "False for method '" + method_info(o.method).name + "' (the SIMD path runs rk4)",
                              "True");
   }
+  const OneBodyElementSet elements = batch_elements(o, p);
+  // a one-body scene's record: 10 + 20 per body + 2 per element doubles (scene_batch's count)
+  require_batch_memory(N, o, with_error_doubles(30.0 + 2.0 * static_cast<double>(elements.count()), error));
+  const std::vector<CompiledScene> scenes =
+      one_body_scenes(bodies, o, p, static_cast<std::size_t>(N), elements, simd_path);
+  warn_compatibility(scenes);
+  std::vector<std::vector<BodyState>> scene_states;
+  scene_states.reserve(states.size());
+  for (const State& state : states) scene_states.push_back({BodyState(state)});
   const auto run_batch = [&](const SimulationOptions& opt, const std::vector<double>& sample_dt) {
-    BatchParameters params = p;
-    params.dt = sample_dt;
     if constexpr (std::is_same_v<Body, RigidBody>) {
-      // the SIMD path (batch/simd_rigid_body.hpp); its own checks name loads (a time window, a
-      // torque in W or a force in B)
-      if (simd_path) return simulate_batch_simd(bodies, states, opt, params, c.threads);
+      // the SIMD path (batch/simd_rigid_body.hpp); its own checks name loads (a time window, a torque in W or a
+      // force in B)
+      if (simd_path) {
+        BatchParameters params = p;
+        params.dt = sample_dt;
+        return simd_scene_records(simulate_batch_simd(bodies, states, opt, params, c.threads), bodies, opt, params,
+                                  elements);
+      }
     }
-    return simulate_batch(bodies, states, opt, params, c.threads);
+    SimulationOptions scene_options = opt;  // the scenes declare the gravity and the loads
+    scene_options.gravity_W.setZero();
+    scene_options.loads.clear();
+    return simulate_batch(scenes, scene_states, scene_options, sample_dt, c.threads);
   };
-  BatchTrajectory b = run_without_gil(o, progress, [&](const SimulationOptions& opt) { return run_batch(opt, p.dt); });
+  BatchSceneSimulation b = run_without_gil(o, progress, [&](const SimulationOptions& opt) { return run_batch(opt, p.dt); });
   std::optional<BatchErrorEstimate> estimate;
-  // the loads are split at their switches: the method keeps its order
-  if (error) estimate = batch_error(b, o, p.dt, {SampleModel{method_info(o.method).order, {}}}, c.threads, run_batch);
+  if (error) {  // each scene at the order it has (scene_order.hpp; the loads are split at their switches)
+    std::vector<SampleModel> models;
+    for (const CompiledScene& scene : scenes) models.push_back({scene_order(scene), opaque_force(scene)});
+    estimate = batch_error(b, o, p.dt, models, c.threads, run_batch);
+  }
   const std::string overflowed = overflowed_samples(b);
-  BatchResult r = to_batch_result(std::move(b), c.scalar_first);
-  if (estimate) r.error = py::cast(to_batch_global_error(std::move(*estimate), false));
+  const Scene& first = scenes[0].scene();
+  BatchSceneResult r = to_batch_scene_result(std::move(b), py::tuple(py::cast(detail::body_names_of(first))),
+                                             py::tuple(py::cast(scenes[0].element_types())), wheel_bodies_of(first),
+                                             c.scalar_first);
+  if (estimate) r.error = py::cast(to_batch_global_error(std::move(*estimate)));
   warn_after_batch(r.diverged, r.unconverged_steps, method_info(o.method).name, overflowed);
   return r;
 }
@@ -911,7 +1008,7 @@ BatchSceneResult scene_batch(py::handle model, py::handle initial, py::handle dt
   const std::string overflowed = overflowed_samples(b);
   BatchSceneResult r =
       to_batch_scene_result(std::move(b), std::move(body_names), std::move(elements), wheel_bodies_of(first), c.scalar_first);
-  if (estimate) r.error = py::cast(to_batch_global_error(std::move(*estimate), true));
+  if (estimate) r.error = py::cast(to_batch_global_error(std::move(*estimate)));
   warn_after_batch(r.diverged, r.unconverged_steps, method_info(o.method).name, overflowed);
   return r;
 }
@@ -930,27 +1027,24 @@ py::object model_kind(py::handle model) {
                           "a RigidBody, PlanarBody, Particle, Scene or CompiledScene, or a list of N of one kind", first);
 }
 
-py::typing::Union<BatchResult, BatchSceneResult> simulate_batch_py(py::handle model, py::handle initial, py::handle dt,
-                                                                   py::handle steps, py::handle method,
-                                                                   py::handle record_every, py::handle loads,
-                                                                   py::handle gravity, py::handle t0, py::handle threads,
-                                                                   py::handle simd, py::handle scalar_first,
-                                                                   py::handle progress, py::handle duration,
-                                                                   py::handle error) {
+BatchSceneResult simulate_batch_py(py::handle model, py::handle initial, py::handle dt, py::handle steps,
+                                   py::handle method, py::handle record_every, py::handle loads, py::handle gravity,
+                                   py::handle t0, py::handle threads, py::handle simd, py::handle scalar_first,
+                                   py::handle progress, py::handle duration, py::handle error) {
   const CommonArgs c = as_common(batch_steps(steps, duration, dt), record_every, t0, threads, simd, scalar_first);
   const bool estimate = py_io::as_bool(error, "error");
-  if (is_scene_model(model)) return py::cast(scene_batch(model, initial, dt, method, loads, gravity, c, progress, estimate));
+  if (is_scene_model(model)) return scene_batch(model, initial, dt, method, loads, gravity, c, progress, estimate);
   const std::string kind = model_kind(model).cast<std::string>();
   if (kind == "RigidBody") {
-    return py::cast(body_batch<RigidBody, RigidBodyState>(model, initial, dt, method, loads, gravity, c, progress,
-                                                          estimate, "RigidBody", "RigidBodyState", &states_from_dict));
+    return body_batch<RigidBody, RigidBodyState>(model, initial, dt, method, loads, gravity, c, progress, estimate,
+                                                 "RigidBody", "RigidBodyState", &states_from_dict);
   }
   if (kind == "PlanarBody") {
-    return py::cast(body_batch<PlanarBody, PlanarBodyState>(model, initial, dt, method, loads, gravity, c, progress,
-                                                            estimate, "PlanarBody", "PlanarBodyState", &planar_states_from_dict));
+    return body_batch<PlanarBody, PlanarBodyState>(model, initial, dt, method, loads, gravity, c, progress, estimate,
+                                                   "PlanarBody", "PlanarBodyState", &planar_states_from_dict);
   }
-  return py::cast(body_batch<Particle, ParticleState>(model, initial, dt, method, loads, gravity, c, progress, estimate, "Particle",
-                                                      "ParticleState", &particle_states_from_dict));
+  return body_batch<Particle, ParticleState>(model, initial, dt, method, loads, gravity, c, progress, estimate, "Particle",
+                                             "ParticleState", &particle_states_from_dict);
 }
 
 const char* const simulate_batch_doc = "N independent runs of a body or a scene, one per initial state, in parallel.\n"
@@ -959,11 +1053,13 @@ Integrated in C++ on `threads` threads with the GIL released. Sample i is exactl
 ``rigiddyn.simulate(model_i, initial[i], dt_i, steps, method, record_every, loads_i, gravity_i, t0)``: the
 records equal N serial simulate calls bitwise, whatever the thread count (the SIMD path: up to round-off).
 steps (or duration), record_every, t0, method and scalar_first are shared by every sample, so every sample has
-the same record count n.
+the same record count n. A body runs as its one-body scene, as simulate runs it; gravity or loads given per
+sample are declared in every sample's scene (a UniformGravity of g = 0, a ScheduledLoads without a load
+included), so that the samples' records have the same columns.
 
 Parameters
 ----------
-model : Particle, PlanarBody, RigidBody, Scene or CompiledScene, or a list of N of them
+model : Particle, PlanarBody, RigidBody, Scene, CompiledScene, sequence of Particle, sequence of PlanarBody, sequence of RigidBody, sequence of Scene or sequence of CompiledScene
     One model shared by every sample, or a list of N of one kind (per-sample mass [kg] and inertia about the
     centre of mass in B [kg m^2]; scenes of the same structure: bodies and elements). A scene with a
     PythonForce runs, slowly: each call takes the GIL, so its samples run one at a time.
@@ -1010,9 +1106,9 @@ error : bool, keyword-only, default True
 
 Returns
 -------
-BatchResult or BatchSceneResult
-    For bodies a BatchResult, for scenes a BatchSceneResult: the arrays of SimulationResult / SceneResult with a
-    leading sample axis (N, n, ...), and error. A sample whose state becomes non-finite stops alone: diverged[i]
+BatchSceneResult
+    The arrays of SceneResult with a leading sample axis (N, n, ...), and error; result.body(0) reads one body's
+    columns as (N, n, ...) arrays (p_W (N, n, 3), q_WB (N, n, 4), ...). A sample whose state becomes non-finite stops alone: diverged[i]
     is True, filled[i] its rows, the rest of its rows NaN (its error rows too, their verdict saying so).
 
 Raises
@@ -1040,7 +1136,7 @@ RuntimeWarning
 
 See Also
 --------
-simulate, BatchResult, BatchSceneResult, default_thread_count
+simulate, BatchSceneResult, default_thread_count
 
 Examples
 --------
@@ -1050,53 +1146,26 @@ Four spins; each sample equals its serial simulate bitwise:
 >>> states = [rd.RigidBodyState(w_B=[1.0, 0.0, 0.1 * i]) for i in range(4)]
 >>> res = rd.simulate_batch(body, states, dt=0.01, steps=100, threads=2)
 >>> serial = rd.simulate(body, states[2], dt=0.01, steps=100)
->>> res.w_B.shape, np.array_equal(res.w_B[2], serial.body(0).w_B)
-((4, 101, 3), True)
+>>> res.w_B.shape, np.array_equal(res.w_B[2], serial.w_B)
+((4, 101, 1, 3), True)
+>>> res.body(0).w_B.shape
+(4, 101, 3)
 
 Every record of every sample has its global error estimate (rk4: order 4):
 
->>> res.error.attitude.shape, res.error.order, np.array_equal(res.error.attitude[2], serial.error.attitude[:, 0])
-((4, 101), 4, True)
+>>> res.error.attitude.shape, res.error.order, np.array_equal(res.error.attitude[2], serial.error.attitude)
+((4, 101, 1), 4, True)
 
 Three particles dropped for 1 s under their own gravity fall g t^2 / 2:
 
 >>> zeros = np.zeros((3, 3))
 >>> drop = rd.simulate_batch(rd.Particle(1.0), {"p_W": zeros, "v_W": zeros}, dt=0.01, duration=1.0,
 ...                          gravity=[[0, 0, -1.0], [0, 0, -2.0], [0, 0, -3.0]], record_every=100)
->>> drop.t[0], drop.p_W[:, -1, 2].round(12)
+>>> drop.t[0], drop.body(0).p_W[:, -1, 2].round(12)
 (array([0., 1.]), array([-0.5, -1. , -1.5]))
 )doc";
 
-const char* const batch_result_doc = R"doc(The records of simulate_batch over bodies: N samples of n records each.
-
-The arrays of SimulationResult with a leading sample axis, read-only, sample-major: t (N, n) [s]; p_W (N, n, 3)
-[m] in W; q_WB (N, n, 4); v_W (N, n, 3) [m/s] in W; w_B (N, n, 3) [rad/s] in B; kinetic_energy, total_energy
-(N, n) [J]; angular_momentum_norm (N, n) [kg m^2/s]; quaternion_norm_error (N, n); work (N, n) [J]. A diverged
-sample's rows after filled[i] are NaN. len(result) is N; result[i] is sample i as a SimulationResult (its filled
-rows, copies, the same scalar_first); pickles.
-
-Parameters
-----------
-None
-    Made by simulate_batch; it has no public constructor.
-
-See Also
---------
-simulate_batch, SimulationResult, BatchSceneResult
-
-Examples
---------
->>> body = rd.RigidBody(2.0, [1.0, 2.0, 3.0])
->>> res = rd.simulate_batch(body, [rd.RigidBodyState(w_B=[0, 0, w]) for w in (1.0, 2.0)], dt=0.1, steps=10)
->>> len(res), res.t.shape, res.filled, res.diverged
-(2, (2, 11), array([11, 11]), array([False, False]))
->>> res.kinetic_energy[:, -1]  # 1/2 I_z w_z^2
-array([1.5, 6. ])
->>> type(res[1]).__name__
-'SimulationResult'
-)doc";
-
-const char* const batch_scene_result_doc = R"doc(The records of simulate_batch over scenes: N samples of n records each.
+const char* const batch_scene_result_doc = R"doc(The records of simulate_batch: N samples of n records each.
 
 The arrays of SceneResult with a leading sample axis (nb bodies, ne work columns, nw wheels), read-only: t (N, n)
 [s]; p_W, v_W, w_B, pivot_reaction_W, angular_momentum_O_W (N, n, nb, 3); q_WB (N, n, nb, 4); kinetic_energy,
@@ -1104,7 +1173,8 @@ potential_energy, total_energy (N, n) [J]; linear_momentum_W, angular_momentum_W
 mass_flow_energy (N, n, nb) [kg], [J]; work, power (N, n, ne) [J], [W]; wheel_speed, motor_work (N, n, nw).
 body_names and elements label the axes (the first scene's). Frames and units as SceneResult. A diverged
 sample's rows after filled[i] are NaN. len(result) is N; result[i] is sample i as a SceneResult (its filled
-rows, copies, the same scalar_first); pickles.
+rows, copies, the same scalar_first); result.body(key) is one body's columns (BodyRecords, arrays (N, n, ...));
+pickles.
 
 Parameters
 ----------
@@ -1113,7 +1183,7 @@ None
 
 See Also
 --------
-simulate_batch, SceneResult, BatchResult
+simulate_batch, SceneResult, BodyRecords
 
 Examples
 --------
@@ -1150,7 +1220,6 @@ void def_common(py::class_<Result>& cls, py::object (*sample)(const Result&, py:
       .def("__getitem__", sample, py::arg("i"), "sample i's records (negative i counts from the end)");
 }
 
-py::object batch_sample_object(const BatchResult& r, py::handle key) { return batch_sample(r, key); }
 py::object batch_scene_sample_object(const BatchSceneResult& r, py::handle key) {
   return py::cast(batch_scene_sample(r, key));
 }
@@ -1158,24 +1227,6 @@ py::object batch_scene_sample_object(const BatchSceneResult& r, py::handle key) 
 }  // namespace
 
 void bind_batch(py::module_& m) {
-  py::class_<BatchResult> batch(m, "BatchResult", batch_result_doc);
-  for (std::size_t k = 0; k < batch_array_count; ++k) {
-    static const char* const docs[batch_array_count] = {
-"Time of each record, shape (N, n) [s].",
-        "Centre of mass position in W, shape (N, n, 3) [m].",
-        "Attitude q_WB (B to W), shape (N, n, 4), (x, y, z, w) unless scalar_first.",
-        "Centre of mass velocity in W, shape (N, n, 3) [m/s].",
-        "Angular velocity of B in W, expressed in B, shape (N, n, 3) [rad/s].",
-        "Kinetic energy, shape (N, n) [J].",
-        "Kinetic + gravity potential energy, shape (N, n) [J].",
-        "|H_G|, the norm of the angular momentum about the centre of mass, shape (N, n) [kg m^2/s].",
-        "|q_WB| - 1 of each record, shape (N, n) (dimensionless).",
-        "Work of the loads and gravity since t0, shape (N, n) [J]."};
-    batch.def_property_readonly(batch_arrays[k], [k](const BatchResult& r) { return r.arrays[k]; }, docs[k]);
-  }
-  def_common(batch, &batch_sample_object);
-  batch.def("__repr__", &batch_result_repr).def(py::pickle(&batch_result_state, &batch_result_from_state));
-
   py::class_<BatchSceneResult> scene(m, "BatchSceneResult", batch_scene_result_doc);
   for (std::size_t k = 0; k < scene_column_count; ++k) {
     static const char* const docs[scene_column_count] = {
@@ -1211,6 +1262,7 @@ void bind_batch(py::module_& m) {
                     "The trees' configurations q (Scene.add_tree), shape (N, n, nq); nq = 0 without a tree.")
       .def_readonly("joint_v", &BatchSceneResult::joint_v, "The trees' velocities v, shape (N, n, nv).");
   def_common(scene, &batch_scene_sample_object);
+  scene.def("body", &batch_body, py::arg("key"), batch_body_doc.c_str());
   scene.def("__repr__", &batch_scene_repr).def(py::pickle(&batch_scene_state, &batch_scene_from_state));
 
   m.def("simulate_batch", &simulate_batch_py, py::arg("model"), py::arg("initial"), py::arg("dt"),

@@ -1,11 +1,13 @@
 // Python bindings of one body's records in a run (rigiddyn.BodyRecords) and SceneResult.body(key), which gives them:
-// the body's columns of the result's (n, nb, ...) arrays as (n, ...) arrays.
+// the body's columns of the result's (n, nb, ...) arrays as (n, ...) arrays (of a batch's (N, n, nb, ...) arrays as
+// (N, n, ...): BatchSceneResult.body, bind_batch.cpp).
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
 #include <string>
 
 #include "bindings.hpp"
+#include "body_records.hpp"
 #include "numpy_io.hpp"
 #include "repr.hpp"
 #include "scene_run.hpp"
@@ -17,7 +19,8 @@ using namespace pybind11::literals;
 
 namespace {
 
-// One body's records: views of a SceneResult's arrays (read-only, sharing its memory), or copies once unpickled.
+// One body's records: views of a SceneResult's or BatchSceneResult's arrays (read-only, sharing its memory), or
+// copies once unpickled.
 struct BodyRecords {
   std::string name;
   py::ssize_t index = 0;
@@ -65,41 +68,40 @@ py::ssize_t body_index(const py::tuple& names, py::handle key) {
   return static_cast<py::ssize_t>(i < 0 ? i + nb : i);
 }
 
-// a[:, b]: the body's columns of an (n, nb, ...) array, as a view
-py::object body_column(const py_io::Array& a, py::ssize_t b) {
-  return a[py::make_tuple(py::slice(py::none(), py::none(), py::none()), b)];
+// a[:, b] (a[:, :, b] for a batch's, `time_axes` 2): the body's columns of an (n, nb, ...) array, as a view
+py::object body_column(py::handle a, py::ssize_t b, int time_axes) {
+  const py::object all = py::slice(py::none(), py::none(), py::none());
+  return a[time_axes == 1 ? py::tuple(py::make_tuple(all, b)) : py::tuple(py::make_tuple(all, all, b))];
 }
 
-// The columns of body b's wheels (wheel_bodies[k] == b) of an (n, nw) array, as a new array (n, nw_b)
-py::object wheel_columns(const py_io::Array& a, const py::tuple& wheel_bodies, py::ssize_t b) {
+// The columns of body b's wheels (wheel_bodies[k] == b) of an (n, nw) or (N, n, nw) array, as a new array (..., nw_b)
+py::object wheel_columns(py::handle a, const py::tuple& wheel_bodies, py::ssize_t b) {
   py::list columns;
   for (py::ssize_t k = 0; k < static_cast<py::ssize_t>(wheel_bodies.size()); ++k) {
     if (wheel_bodies[k].cast<py::ssize_t>() == b) columns.append(k);
   }
-  const py::array out = py::reinterpret_borrow<py::array>(
-      py::object(a[py::make_tuple(py::slice(py::none(), py::none(), py::none()), columns)]));
+  const py::array out = py::reinterpret_borrow<py::array>(py::object(a[py::make_tuple(py::ellipsis(), columns)]));
   py_io::set_read_only(out);
   return out;
 }
 
 BodyRecords records_of(const SceneResult& r, py::handle key) {
-  BodyRecords out;
-  out.index = body_index(r.body_names, key);
-  const py::ssize_t b = out.index;
-  out.name = r.body_names[b].cast<std::string>();
-  out.t = r.t.get();
-  out.p_W = body_column(r.p_W.get(), b);
-  out.q_WB = body_column(r.q_WB.get(), b);
-  out.v_W = body_column(r.v_W.get(), b);
-  out.w_B = body_column(r.w_B.get(), b);
-  out.mass = body_column(r.mass.get(), b);
-  out.pivot_reaction_W = body_column(r.pivot_reaction_W.get(), b);
-  out.angular_momentum_O_W = body_column(r.angular_momentum_O_W.get(), b);
-  out.mass_flow_energy = body_column(r.mass_flow_energy.get(), b);
-  out.wheel_speed = wheel_columns(r.wheel_speed.get(), r.wheel_bodies, b);
-  out.motor_work = wheel_columns(r.motor_work.get(), r.wheel_bodies, b);
-  out.scalar_first = r.scalar_first;
-  return out;
+  BodyColumnsSource source;
+  source.body_names = r.body_names;
+  source.wheel_bodies = r.wheel_bodies;
+  source.t = r.t.get();
+  source.p_W = r.p_W.get();
+  source.q_WB = r.q_WB.get();
+  source.v_W = r.v_W.get();
+  source.w_B = r.w_B.get();
+  source.mass = r.mass.get();
+  source.pivot_reaction_W = r.pivot_reaction_W.get();
+  source.angular_momentum_O_W = r.angular_momentum_O_W.get();
+  source.mass_flow_energy = r.mass_flow_energy.get();
+  source.wheel_speed = r.wheel_speed.get();
+  source.motor_work = r.motor_work.get();
+  source.scalar_first = r.scalar_first;
+  return body_records(source, key).cast<BodyRecords>();
 }
 
 py::tuple records_state(const BodyRecords& r) {
@@ -120,12 +122,14 @@ BodyRecords records_from_state(const py::tuple& t) {
   r.name = py_io::as_string(t[0], "BodyRecords pickle name");
   r.index = static_cast<py::ssize_t>(py_io::as_int(t[1], "BodyRecords pickle index", 0));
   const py_io::Array time = py_io::as_array(t[2], "BodyRecords pickle t");
+  const int time_axes = time.ndim() == 2 ? 2 : 1;  // a batch's records: (N, n)
   for (std::size_t k = 0; k < records_column_count; ++k) {
     const RecordsColumn& c = records_columns[k];
     py_io::Array a = py_io::as_array(t[2 + k], (std::string("BodyRecords pickle ") + c.name).c_str());
-    if (a.ndim() != c.ndim || a.shape(0) != time.shape(0)) {
+    const int ndim = c.ndim + time_axes - 1;
+    if (a.ndim() != ndim || a.shape(0) != time.shape(0) || (time_axes == 2 && a.shape(1) != time.shape(1))) {
       py_io::throw_value_error(std::string("BodyRecords pickle ") + c.name,
-                               std::to_string(c.ndim) + "-D with " + std::to_string(time.shape(0)) + " rows",
+                               std::to_string(ndim) + "-D with the shape " + py_io::describe(t[2]) + " of t first",
                                py_io::describe(t[2 + k]));
     }
     py_io::set_read_only(a);
@@ -135,15 +139,15 @@ BodyRecords records_from_state(const py::tuple& t) {
   return r;
 }
 
-// |x| of each row of an (n, k) array, as a read-only (n,) array minus `offset`; a row beyond 1e154 (a diverged
-// run's) gives inf quietly, as the run's own records do
+// |x| of each row of an (n, k) or (N, n, k) array, as a read-only (n,) or (N, n) array minus `offset`; a row beyond
+// 1e154 (a diverged run's) gives inf quietly, as the run's own records do
 py::object row_norms(py::handle a, double offset) {
   const py::module_ np = py::module_::import("numpy");
   const py::object quiet = np.attr("errstate")("over"_a = "ignore", "invalid"_a = "ignore");
   quiet.attr("__enter__")();
   py::array out;
   try {
-    out = np.attr("subtract")(np.attr("linalg").attr("norm")(a, "axis"_a = 1), offset);
+    out = np.attr("subtract")(np.attr("linalg").attr("norm")(a, "axis"_a = -1), offset);
   } catch (...) {
     quiet.attr("__exit__")(py::none(), py::none(), py::none());
     throw;
@@ -160,7 +164,12 @@ py::object angular_momentum_norm(const BodyRecords& r) { return row_norms(r.angu
 py::object quaternion_norm_error(const BodyRecords& r) { return row_norms(r.q_WB, 1.0); }
 
 std::string records_repr(const BodyRecords& r) {
-  const py::ssize_t n = r.t.attr("shape")[py::int_(0)].cast<py::ssize_t>();
+  const py::tuple shape = r.t.attr("shape");
+  if (shape.size() == 2) {  // a batch's: the samples' times differ with their dt
+    return repr_call("BodyRecords", {{"name", py::str(r.name)}, {"index", py::int_(r.index)}, {"samples", shape[0]},
+                                     {"records", shape[1]}});
+  }
+  const py::ssize_t n = shape[0].cast<py::ssize_t>();
   const py::object span = n == 0 ? py::object(py::list()) : py::object(py::make_tuple(py::float_(r.t[py::int_(0)].cast<double>()), py::float_(r.t[py::int_(-1)].cast<double>())));
   return repr_call("BodyRecords", {{"name", py::str(r.name)}, {"index", py::int_(r.index)}, {"records", py::int_(n)},
                                    {"t", span}});
@@ -169,7 +178,8 @@ std::string records_repr(const BodyRecords& r) {
 const char* const body_records_doc = R"doc(One body's records of a run: its columns of a SceneResult as (n, ...) arrays.
 
 SceneResult.body(key) gives them (a run of one body: result.body(0)); every array is read-only and shares the
-result's memory (the wheels' columns are copies). "W" is the result's scene frame.
+result's memory (the wheels' columns are copies). "W" is the result's scene frame. BatchSceneResult.body(key) gives
+a batch's: every array with the batch's leading sample axis, t (N, n), p_W (N, n, 3), mass (N, n), ...
 
 Attributes
 ----------
@@ -205,7 +215,7 @@ scalar_first : bool
 
 See Also
 --------
-SceneResult.body, simulate
+SceneResult.body, BatchSceneResult.body, simulate
 
 Examples
 --------
@@ -221,7 +231,21 @@ A free rigid body turning about its first axis:
 True
 )doc";
 
-const char* const body_doc = R"doc(The records of one body of the run.
+const std::string body_doc = body_method_doc(
+    "The records of one body of the run.",
+    "The body's columns of this result's arrays: t (n,), p_W, v_W, w_B (n, 3), q_WB (n, 4), mass (n,), ...",
+    R"doc(>>> scene = rd.Scene([rd.Particle(2.0), rd.Particle(1.0)], body_names=["a", "b"])
+>>> result = rd.simulate(scene, [rd.ParticleState(), rd.ParticleState(v_W=(1.0, 0.0, 0.0))], 0.1, steps=10)
+>>> result.body("b").p_W[-1]
+array([1., 0., 0.])
+>>> result.body(-1).name
+'b'
+)doc");
+
+}  // namespace
+
+std::string body_method_doc(const std::string& summary, const std::string& returns, const std::string& examples) {
+  return summary + R"doc(
 
 Parameters
 ----------
@@ -232,7 +256,7 @@ key : int or str
 Returns
 -------
 BodyRecords
-    The body's columns of this result's arrays: t (n,), p_W, v_W, w_B (n, 3), q_WB (n, 4), mass (n,), ...
+    )doc" + returns + R"doc(
 
 Raises
 ------
@@ -243,16 +267,29 @@ ValueError
 
 Examples
 --------
-)doc"
-                               R"doc(>>> scene = rd.Scene([rd.Particle(2.0), rd.Particle(1.0)], body_names=["a", "b"])
->>> result = rd.simulate(scene, [rd.ParticleState(), rd.ParticleState(v_W=(1.0, 0.0, 0.0))], 0.1, steps=10)
->>> result.body("b").p_W[-1]
-array([1., 0., 0.])
->>> result.body(-1).name
-'b'
-)doc";
+)doc" + examples;
+}
 
-}  // namespace
+py::object body_records(const BodyColumnsSource& source, py::handle key) {
+  BodyRecords out;
+  out.index = body_index(source.body_names, key);
+  const py::ssize_t b = out.index;
+  const int time_axes = py::len(source.t.attr("shape")) == 2 ? 2 : 1;
+  out.name = source.body_names[b].cast<std::string>();
+  out.t = source.t;
+  out.p_W = body_column(source.p_W, b, time_axes);
+  out.q_WB = body_column(source.q_WB, b, time_axes);
+  out.v_W = body_column(source.v_W, b, time_axes);
+  out.w_B = body_column(source.w_B, b, time_axes);
+  out.mass = body_column(source.mass, b, time_axes);
+  out.pivot_reaction_W = body_column(source.pivot_reaction_W, b, time_axes);
+  out.angular_momentum_O_W = body_column(source.angular_momentum_O_W, b, time_axes);
+  out.mass_flow_energy = body_column(source.mass_flow_energy, b, time_axes);
+  out.wheel_speed = wheel_columns(source.wheel_speed, source.wheel_bodies, b);
+  out.motor_work = wheel_columns(source.motor_work, source.wheel_bodies, b);
+  out.scalar_first = source.scalar_first;
+  return py::cast(std::move(out));
+}
 
 void bind_body_records(py::module_& m) {
   py::class_<BodyRecords>(m, "BodyRecords", body_records_doc)
@@ -281,7 +318,7 @@ void bind_body_records(py::module_& m) {
       .def(py::pickle(&records_state, &records_from_state));
 
   py::class_<SceneResult> result = py::reinterpret_borrow<py::class_<SceneResult>>(m.attr("SceneResult"));
-  result.def("body", &records_of, "key"_a, body_doc);
+  result.def("body", &records_of, "key"_a, body_doc.c_str());
 }
 
 }  // namespace rigiddyn::bindings

@@ -76,18 +76,6 @@ auto with_model(py::handle model, py::handle state, const char* state_name, F&& 
                           "Scene or CompiledScene", model);
 }
 
-// simulate's result: read-only numpy arrays, one row per record, each made on its first read (LazyArray).
-struct SimulationResult {
-  LazyArray t, p_W, q_WB, v_W, w_B, kinetic_energy, total_energy, angular_momentum_norm, quaternion_norm_error, work;
-  bool diverged;
-  std::int64_t unconverged_steps;
-  double elapsed_seconds;
-  bool scalar_first = false;  // q_WB rows as (w, x, y, z)
-  py::object error = py::none();  // a GlobalError (simulate(..., error=True)) or None
-  LazyBalance balance{};  // a rigiddyn.Balance (every simulate run) or None (a batch result)
-  py::object choice = py::none();  // a ToleranceChoice (simulate(..., tolerance=...)) or None
-};
-
 // The one-body scene of a body with its uniform gravity and loads: a Particle, PlanarBody or RigidBody (`initial`
 // checked to be its state: TypeError naming it, or naming model for anything else), a pivoted body or a Gyrostat.
 py::object body_scene(py::handle model, py::handle initial, py::handle loads, py::handle gravity) {
@@ -124,67 +112,6 @@ SceneResultObject simulate_py(py::handle model, py::handle initial, py::handle d
                                                                      record_every, py::none(), py::none(), t0,
                                                                      scalar_first, progress, duration, error,
                                                                      accuracy_level, to, controller));
-}
-
-// The arrays of a SimulationResult in order (pickle state, field by field).
-constexpr const char* result_arrays[] = {"t", "p_W", "q_WB", "v_W", "w_B", "kinetic_energy", "total_energy",
-                                         "angular_momentum_norm", "quaternion_norm_error", "work"};
-
-py::tuple result_state(const SimulationResult& r) {
-  return py::make_tuple(r.t.get(), r.p_W.get(), r.q_WB.get(), r.v_W.get(), r.w_B.get(), r.kinetic_energy.get(),
-                        r.total_energy.get(), r.angular_momentum_norm.get(), r.quaternion_norm_error.get(),
-                        r.work.get(), r.diverged, r.unconverged_steps, r.elapsed_seconds, r.scalar_first, r.error,
-                        r.balance.get(), r.choice);
-}
-
-// A pickled array as a read-only float64 copy of the shape it must have ((n,) or (n, k), n records).
-Array unpickled_array(py::handle obj, const char* name, py::ssize_t n, py::ssize_t k) {
-  Array a = Array::ensure(py::module_::import("numpy").attr("array")(obj, "float64"));  // a copy
-  const bool ok = a && (k == 0 ? a.ndim() == 1 && a.shape(0) == n : a.ndim() == 2 && a.shape(0) == n && a.shape(1) == k);
-  if (!ok) {
-    py_io::throw_value_error(std::string("SimulationResult pickle ") + name,
-                             k == 0 ? "shape (n,)" : "shape (n, " + std::to_string(k) + ")", py_io::describe(obj));
-  }
-  py_io::set_read_only(a);
-  return a;
-}
-
-// 13 items: a state without scalar_first (q_WB as (x, y, z, w)), as simulate_batch's samples and earlier pickles;
-// 14: without the error estimate (None then); 15: without the balance (None then); 16: without the choice of a run
-// to a tolerance (None then)
-SimulationResult result_from_state(const py::tuple& t) {
-  if (t.size() < 13 || t.size() > 17) {
-    py_io::throw_value_error("SimulationResult pickle", "a tuple of 13 to 17 items", std::to_string(t.size()) + " items");
-  }
-  const py::ssize_t n = py::len(t[0]);
-  auto column = [&](int i, py::ssize_t k) { return LazyArray(unpickled_array(t[i], result_arrays[i], n, k)); };
-  SimulationResult r{column(0, 0), column(1, 3), column(2, 4), column(3, 3), column(4, 3), column(5, 0),
-                     column(6, 0), column(7, 0), column(8, 0), column(9, 0), t[10].cast<bool>(),
-                     t[11].cast<std::int64_t>(), t[12].cast<double>(), t.size() >= 14 && t[13].cast<bool>()};
-  if (t.size() == 17 && !t[16].is_none()) {
-    if (!py::isinstance<ToleranceChoice>(t[16])) {
-      py_io::throw_type_error("SimulationResult pickle choice", "a ToleranceChoice or None", t[16]);
-    }
-    r.choice = py::reinterpret_borrow<py::object>(t[16]);
-  }
-  if (t.size() >= 15 && !t[14].is_none()) {
-    if (!py::isinstance<GlobalError>(t[14])) py_io::throw_type_error("SimulationResult pickle error", "a GlobalError or None", t[14]);
-    r.error = py::reinterpret_borrow<py::object>(t[14]);
-  }
-  if (t.size() >= 16 && !t[15].is_none()) r.balance = checked_balance(t[15], "SimulationResult pickle balance");
-  return r;
-}
-
-// "SimulationResult(records=n, t=[t0, t_end], diverged=..., unconverged_steps=..., elapsed_seconds=...)".
-std::string result_repr(const SimulationResult& r) {
-  const Array t = r.t.get();
-  const py::ssize_t n = t.shape(0);
-  const py::object span = n == 0 ? py::object(py::list()) : py::object(py::make_tuple(t.at(0), t.at(n - 1)));
-  return repr_call("SimulationResult", {{"records", py::int_(n)},
-                                        {"t", span},
-                                        {"diverged", py::bool_(r.diverged)},
-                                        {"unconverged_steps", py::int_(r.unconverged_steps)},
-                                        {"elapsed_seconds", py::float_(r.elapsed_seconds)}});
 }
 
 // The quantities of a GlobalError with their units, in the order of max() and summary().
@@ -713,7 +640,7 @@ None
 
 See Also
 --------
-simulate, simulate_batch, SimulationResult, SceneResult, angular_distance
+simulate, simulate_batch, SceneResult, angular_distance
 
 Examples
 --------
@@ -802,119 +729,6 @@ Examples
           },
           py::arg("other"));
   error_class.attr("__hash__") = py::none();
-
-  py::class_<SimulationResult>(m, "SimulationResult",
-      "One sample of a batch of bodies (BatchResult[i]): arrays with one row per record (n records).\n"
-      R"doc(
-Read-only arrays; q_WB's rows (x, y, z, w) unless scalar_first. A Particle records q = identity and w = 0; a
-PlanarBody p = (x, y, 0), q = Rz(theta), w = (0, 0, omega). Pickles; to_dataframe gives a table.
-
-Parameters
-----------
-None
-    Made by BatchResult[i]; it has no public constructor.
-
-See Also
---------
-simulate_batch, BatchResult, SceneResult
-
-Examples
---------
->>> body = rd.RigidBody(2.0, [1.0, 2.0, 3.0])
->>> r = rd.simulate_batch(body, [rd.RigidBodyState(w_B=[0.0, 0.0, 1.0])], dt=0.1, steps=10, record_every=5)[0]
->>> r.t, r.p_W.shape, r.q_WB.shape, r.diverged, r.unconverged_steps
-(array([0. , 0.5, 1. ]), (3, 3), (3, 4), False, 0)
->>> r.kinetic_energy  # 1/2 I_z w_z^2
-array([1.5, 1.5, 1.5])
-)doc")
-      .def_property_readonly("t", array_of(&SimulationResult::t), "Time of each record, shape (n,) [s].")
-      .def_property_readonly("p_W", array_of(&SimulationResult::p_W), "Centre of mass position in W, shape (n, 3) [m].")
-      .def_property_readonly("q_WB", array_of(&SimulationResult::q_WB),
-                    "Attitude q_WB (B to W), shape (n, 4), (x, y, z, w) unless scalar_first.")
-      .def_property_readonly("v_W", array_of(&SimulationResult::v_W),
-                             "Centre of mass velocity in W, shape (n, 3) [m/s].")
-      .def_property_readonly("w_B", array_of(&SimulationResult::w_B),
-                             "Angular velocity of B in W, expressed in B, shape (n, 3) [rad/s].")
-      .def_property_readonly("kinetic_energy", array_of(&SimulationResult::kinetic_energy),
-                             "Kinetic energy, shape (n,) [J].")
-      .def_property_readonly("total_energy", array_of(&SimulationResult::total_energy),
-                    "Kinetic + gravity potential energy (zero at W's origin), shape (n,) [J].")
-      .def_property_readonly("angular_momentum_norm", array_of(&SimulationResult::angular_momentum_norm),
-                    "|H_G|, the norm of the angular momentum about the centre of mass, shape (n,) [kg m^2/s].")
-      .def_property_readonly("quaternion_norm_error", array_of(&SimulationResult::quaternion_norm_error),
-                    "|q_WB| - 1 of each record, shape (n,) (dimensionless).")
-      .def_property_readonly("work", array_of(&SimulationResult::work),
-                    "Work of the loads and gravity since t0, shape (n,) [J] (integrated by the run's method).")
-      .def_readonly("diverged", &SimulationResult::diverged, "True if the run stopped on a non-finite state (a bool).")
-      .def_readonly("unconverged_steps", &SimulationResult::unconverged_steps,
-                    "Number of steps whose implicit solve stopped at its iteration cap (implicit_midpoint; "
-                    "0 for explicit methods); simulate warns RuntimeWarning when > 0.")
-      .def_readonly("elapsed_seconds", &SimulationResult::elapsed_seconds, "Wall time of the C++ stepping loop [s].")
-      .def_readonly("scalar_first", &SimulationResult::scalar_first,
-                    "True if q_WB's rows are (w, x, y, z): the result of simulate(..., scalar_first=True).")
-      .def_readonly("error", &SimulationResult::error,
-                    "The global error estimate of every record (a GlobalError), or None (simulate(..., error=False), "
-                    "a pickled or batch result).")
-      .def_property_readonly("balance", [](const SimulationResult& r) { return r.balance.get(); },
-                    "The energy and momentum balance of every record (a Balance), or None (a batch result).")
-      .def_readonly("choice", &SimulationResult::choice,
-                    "What simulate(..., tolerance=) chose and why (a ToleranceChoice), or None (a run at a given dt).")
-      .def("__repr__", &result_repr)
-      .def(py::pickle(&result_state, &result_from_state))
-      // the table lives in Python (rigiddyn/trajectory.py): one definition of the columns for CSV, npz,
-      // Parquet and pandas
-      .def(
-          "to_dataframe",
-          [](py::object self, py::handle scalar_first, py::handle units) {
-            return py::module_::import("rigiddyn.trajectory")
-                .attr("to_dataframe")(self, scalar_first, py::arg("units") = units);
-          },
-          py::arg("scalar_first") = py::none(), py::kw_only(), py::arg("units") = py::none(),
-          R"doc(The records as a pandas.DataFrame (needs pandas: pip install 'rigiddyn[dataframe]').
-
-One row per record, one column per scalar with its unit, as the CSV of ``python -m rigiddyn simulate``:
-'t [s]' (a column, not the index), 'p_W_x [m]' .. 'q_WB_x' .. 'q_WB_w', 'v_W_x [m/s]' .., 'w_B_x [rad/s]' ..,
-'kinetic_energy [J]', 'total_energy [J]', 'angular_momentum_norm [kg m^2/s]', 'quaternion_norm_error',
-'work [J]'; q_WB's columns in the result's order ('q_WB_w' first when its scalar_first is True).
-
-Parameters
-----------
-scalar_first : bool, optional
-    None (the default): the order the result records. True or False declares the order of its q_WB rows
-    instead.
-units : dict of str to str, optional
-    The units of the columns, {dimension: unit}: keys "length", "angle", "time", "mass", "energy" (and
-    "power", "force"; rigiddyn.output_units), e.g. {"length": "km", "angle": "deg", "time": "h"} gives
-    't [h]', 'p_W_x [km]', 'v_W_x [km/h]', 'w_B_x [deg/h]', 'angular_momentum_norm [kg km^2/h]'. A column is its
-    SI values times one factor (pint's); a dimension not named stays SI; the quaternion's columns are never
-    converted. None (the default): SI.
-
-Returns
--------
-pandas.DataFrame
-    n rows, 19 columns.
-
-Raises
-------
-TypeError
-    units is no dict, or a unit no string.
-ValueError
-    An unknown dimension key (the nearest valid one named), an unknown unit, or a unit of another
-    dimension.
-
-See Also
---------
-rigiddyn.trajectory.write_csv, rigiddyn.output_units
-
-Examples
---------
->>> r = rd.simulate_batch(rd.Particle(1.0), [rd.ParticleState()], dt=0.5, steps=2, gravity=True)[0]
->>> df = r.to_dataframe()
->>> df.shape, df["p_W_z [m]"].round(12).tolist()
-((3, 19), [0.0, -1.22625, -4.905])
->>> r.to_dataframe(units={"length": "km", "time": "min"})["v_W_z [km/min]"].round(12).tolist()
-[0.0, -0.2943, -0.5886]
-)doc");
 
 #define RIGIDDYN_SIMULATE_ARGS                                                                              \
   py::arg("model"), py::arg("initial"), py::arg("dt") = py::none(), py::arg("steps") = py::none(),      \

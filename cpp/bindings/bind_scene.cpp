@@ -637,8 +637,12 @@ body_names : tuple of str, shape (nb,)
     Label the body axis.
 elements : tuple of str, shape (ne,)
     Each work and power column's class name.
-diverged, unconverged_steps, elapsed_seconds
-    As in SimulationResult.
+diverged : bool
+    True if the run stopped on a non-finite state.
+unconverged_steps : int
+    Steps whose implicit solve stopped at its iteration cap (0 for explicit methods).
+elapsed_seconds : float
+    Wall time of the C++ stepping loop [s].
 
 Notes
 -----
@@ -768,7 +772,7 @@ py::object scene_result_object(SceneSimulation&& r, const CompiledSceneHandle& h
       with_gil_released_for(r.size(), [&]() { return checked_scene_balance(r, h, dt, e, level); });
   warn_accuracy(checked.second, level, r.diverged);
   SceneResult result = to_scene_result(std::move(r), h.scene, *h.compiled, scalar_first);
-  if (estimate) result.error = py::cast(to_global_error(std::move(*estimate), true));
+  if (estimate) result.error = py::cast(to_global_error(std::move(*estimate)));
   result.choice = std::move(choice);
   result.balance = LazyBalance(std::move(checked.first));
   return py::cast(std::move(result));

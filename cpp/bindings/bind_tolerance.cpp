@@ -185,7 +185,7 @@ tolerance : float
     The tolerance asked (NaN for a refusal).
 measure : str or None
     The quantity it bounds.
-result : SimulationResult, SceneResult or None
+result : SceneResult or None
     The best run (None when none ran).
 
 See Also

@@ -21,7 +21,7 @@ void bind_exact_dynamics(pybind11::module_& m);  // after bind_pivoted and bind_
 void bind_scene_elements(pybind11::module_& m);
 void bind_scene(pybind11::module_& m);
 void bind_body_records(pybind11::module_& m);  // after bind_scene: it adds SceneResult.body
-void bind_batch(pybind11::module_& m);  // after bind_dynamics: result[i] is a SimulationResult
+void bind_batch(pybind11::module_& m);  // after bind_body_records: result.body gives BodyRecords
 void bind_orbit(pybind11::module_& m);
 void bind_tree(pybind11::module_& m);  // after bind_spatial and bind_inertia: a link holds a Transform and a SpatialInertia
 void bind_tree_link(pybind11::module_& m);  // after bind_tree: TreeLink, JointState, Tree.joint_states

@@ -183,12 +183,11 @@ struct GlobalError {
   LazyVerdicts verdicts;
 };
 
-// The GlobalError of `e` for n records: the state quantities (n,) for one body (per_body false), else (n, nb).
-inline GlobalError to_global_error(GlobalErrorEstimate&& e, bool per_body) {
+// The GlobalError of `e` for n records: the state quantities (n, nb).
+inline GlobalError to_global_error(GlobalErrorEstimate&& e) {
   namespace py = pybind11;
   const auto n = static_cast<py::ssize_t>(e.verdict.size());
-  const std::vector<py::ssize_t> state_shape =
-      per_body ? std::vector<py::ssize_t>{n, static_cast<py::ssize_t>(e.bodies)} : std::vector<py::ssize_t>{n};
+  const std::vector<py::ssize_t> state_shape{n, static_cast<py::ssize_t>(e.bodies)};
   return GlobalError{e.order,
                      LazyArray(std::move(e.attitude), state_shape),
                      LazyArray(std::move(e.angular_velocity), state_shape),
@@ -200,14 +199,12 @@ inline GlobalError to_global_error(GlobalErrorEstimate&& e, bool per_body) {
                      LazyVerdicts(std::move(e.verdict))};
 }
 
-// The GlobalError of a batch's estimates `e`: each array with a leading sample axis, (N, n) for one body per
-// sample (per_body false), else (N, n, nb); verdict a tuple of N tuples of n, reliable (N, n). Equal verdicts
-// share one str.
-inline GlobalError to_batch_global_error(BatchErrorEstimate&& e, bool per_body) {
+// The GlobalError of a batch's estimates `e`: each array with a leading sample axis, the state quantities
+// (N, n, nb); verdict a tuple of N tuples of n, reliable (N, n). Equal verdicts share one str.
+inline GlobalError to_batch_global_error(BatchErrorEstimate&& e) {
   namespace py = pybind11;
   const auto N = static_cast<py::ssize_t>(e.samples), n = static_cast<py::ssize_t>(e.records);
-  const std::vector<py::ssize_t> state_shape =
-      per_body ? std::vector<py::ssize_t>{N, n, static_cast<py::ssize_t>(e.bodies)} : std::vector<py::ssize_t>{N, n};
+  const std::vector<py::ssize_t> state_shape{N, n, static_cast<py::ssize_t>(e.bodies)};
   py::array_t<bool> reliable({N, n});
   bool* is_reliable = reliable.mutable_data();  // C-contiguous (N, n)
   VerdictStrings texts;

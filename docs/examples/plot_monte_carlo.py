@@ -44,7 +44,7 @@ t = mc.times
 
 def long_axis_up(batch):
     """(N, n_records): the world z-component of the body's long axis z_B (dimensionless)."""
-    q = np.asarray(batch.q_WB)
+    q = np.asarray(batch.body(0).q_WB)  # the body's attitudes, (N, n_records, 4)
     return rd.quat_rotate(q.reshape(-1, 4), [0.0, 0.0, 1.0]).reshape(q.shape[:2] + (3,))[..., 2]
 
 
@@ -84,7 +84,7 @@ assert np.max(np.abs(energy - energy[:, :1])) <= bound
 fig, (ax_z, ax_w) = plt.subplots(1, 2, figsize=(12, 4.5), constrained_layout=True)
 bands = (5, 25, 50, 75, 95)
 up = mc.percentiles(long_axis_up, q=bands)
-w_y = mc.percentiles(lambda batch: np.asarray(batch.w_B)[..., 1], q=bands)
+w_y = mc.percentiles(lambda batch: np.asarray(batch.body(0).w_B)[..., 1], q=bands)
 for ax, values, label in ((ax_z, up, "long axis z_B, world z-component (dimensionless)"),
                           (ax_w, w_y, "spin ω_y in B [rad/s]")):
     ax.fill_between(t, values[0], values[-1], alpha=0.25, color="C0", label="5–95 %")

@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['AppliedLoad', 'AtmosphericDrag', 'BatchResult', 'BatchSceneResult', 'BodyAcceleration', 'BodyRecords', 'ComWrench', 'CompiledScene', 'CompoundPendulumSolution', 'ConstantThrustSolution', 'DensityIntegral', 'Drag', 'ElementField', 'FORCE_ELEMENTS', 'FixedJoint', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'FreeJoint', 'GlobalError', 'GravityGradient', 'Gyrostat', 'GyrostatState', 'InertiaCheck', 'InertiaReport', 'JointState', 'KineticEnergy', 'LagrangeTopSolution', 'MagneticDipole', 'MassFlow', 'MeshWeldWarning', 'Motion', 'MutualGravity', 'Particle', 'ParticleState', 'PivotedAcceleration', 'PivotedBody', 'PivotedBodyState', 'PivotedPlanarAcceleration', 'PivotedPlanarBody', 'PivotedPlanarBodyState', 'PivotedPlanarTorque', 'PivotedTorque', 'PlanarAcceleration', 'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointMassGravity', 'PointVelocity', 'PrincipalAxes', 'PrismaticJoint', 'PrismaticMotor', 'PrismaticSpringDamper', 'PythonForce', 'ReactionWheel', 'RevoluteJoint', 'RevoluteMotor', 'RevoluteSpringDamper', 'RigidBody', 'RigidBodyState', 'RotatingFrameFreeParticle', 'Scene', 'SceneCompatibilityWarning', 'SceneFrame', 'SceneResult', 'ScheduledLoads', 'Screw', 'SimulationResult', 'SolarRadiationPressure', 'SpatialInertia', 'SphericalJoint', 'SphericalSpringDamper', 'SpringDamper', 'Thrust', 'ToleranceChoice', 'ToleranceError', 'TorqueFreeSolution', 'Transform', 'Tree', 'TreeLink', 'UniformGravity', 'WeldedMesh', 'Wheel', 'ZonalGravity', 'aba', 'align_vectors', 'angular_distance', 'angular_momentum', 'angular_velocity_from_quat_rate', 'apply_impulse', 'attitude_from_orbit_frame', 'attitude_to_orbit_frame', 'axis_angle_to_quat', 'bias_forces', 'box_shell', 'compose_kinematics', 'composite', 'crba', 'davenport_to_quat', 'default_thread_count', 'eccentric_to_mean_anomaly', 'eccentric_to_true_anomaly', 'elements_to_state', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'forward_kinematics', 'from_point_masses', 'generalized_momentum', 'generalized_momentum_rate', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kepler_propagate', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mean_to_eccentric_anomaly', 'mean_to_true_anomaly', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation', 'nearest_valid_inertia', 'orbit_frame_angular_velocity', 'orbit_frame_rotation', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix', 'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh', 'rnea', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'semi_latus_rectum', 'simulate', 'simulate_batch', 'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'state_to_elements', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'true_to_eccentric_anomaly', 'true_to_mean_anomaly', 'twist_to_screw', 'vector_instructions', 'vee', 'weld_vertices']
+__all__: list[str] = ['AppliedLoad', 'AtmosphericDrag', 'BatchSceneResult', 'BodyAcceleration', 'BodyRecords', 'ComWrench', 'CompiledScene', 'CompoundPendulumSolution', 'ConstantThrustSolution', 'DensityIntegral', 'Drag', 'ElementField', 'FORCE_ELEMENTS', 'FixedJoint', 'Force', 'FrameKinematics', 'FrameMotion', 'FrameTree', 'FreeJoint', 'GlobalError', 'GravityGradient', 'Gyrostat', 'GyrostatState', 'InertiaCheck', 'InertiaReport', 'JointState', 'KineticEnergy', 'LagrangeTopSolution', 'MagneticDipole', 'MassFlow', 'MeshWeldWarning', 'Motion', 'MutualGravity', 'Particle', 'ParticleState', 'PivotedAcceleration', 'PivotedBody', 'PivotedBodyState', 'PivotedPlanarAcceleration', 'PivotedPlanarBody', 'PivotedPlanarBodyState', 'PivotedPlanarTorque', 'PivotedTorque', 'PlanarAcceleration', 'PlanarBody', 'PlanarBodyState', 'PlanarWrench', 'PointAcceleration', 'PointMassGravity', 'PointVelocity', 'PrincipalAxes', 'PrismaticJoint', 'PrismaticMotor', 'PrismaticSpringDamper', 'PythonForce', 'ReactionWheel', 'RevoluteJoint', 'RevoluteMotor', 'RevoluteSpringDamper', 'RigidBody', 'RigidBodyState', 'RotatingFrameFreeParticle', 'Scene', 'SceneCompatibilityWarning', 'SceneFrame', 'SceneResult', 'ScheduledLoads', 'Screw', 'SolarRadiationPressure', 'SpatialInertia', 'SphericalJoint', 'SphericalSpringDamper', 'SpringDamper', 'Thrust', 'ToleranceChoice', 'ToleranceError', 'TorqueFreeSolution', 'Transform', 'Tree', 'TreeLink', 'UniformGravity', 'WeldedMesh', 'Wheel', 'ZonalGravity', 'aba', 'align_vectors', 'angular_distance', 'angular_momentum', 'angular_velocity_from_quat_rate', 'apply_impulse', 'attitude_from_orbit_frame', 'attitude_to_orbit_frame', 'axis_angle_to_quat', 'bias_forces', 'box_shell', 'compose_kinematics', 'composite', 'crba', 'davenport_to_quat', 'default_thread_count', 'eccentric_to_mean_anomaly', 'eccentric_to_true_anomaly', 'elements_to_state', 'ellipk', 'ellippi', 'ellippi_am', 'elliprf', 'elliprj', 'euler_to_matrix', 'euler_to_quat', 'force_cross_matrix', 'forward_dynamics', 'forward_kinematics', 'from_point_masses', 'generalized_momentum', 'generalized_momentum_rate', 'hat', 'hollow_cylinder', 'hollow_sphere', 'inertia_relative_tolerance', 'inertia_report', 'integrate_density_over_box', 'integrate_density_over_mesh', 'inverse_dynamics', 'jacobi_ellipj', 'kepler_propagate', 'kinetic_energy', 'linear_momentum', 'matrix_to_euler', 'matrix_to_quat', 'matrix_to_rotvec', 'mean_to_eccentric_anomaly', 'mean_to_true_anomaly', 'mesh_shell', 'mesh_symmetry_planes', 'mesh_volume', 'methods', 'motion_cross_matrix', 'mrp_to_quat', 'nearest_rotation', 'nearest_valid_inertia', 'orbit_frame_angular_velocity', 'orbit_frame_rotation', 'point_acceleration', 'point_inertia', 'point_velocity', 'potential_energy', 'power', 'principal_axes', 'quat_canonical', 'quat_integrate', 'quat_inverse', 'quat_multiply', 'quat_normalize', 'quat_rate', 'quat_rotate', 'quat_to_axis_angle', 'quat_to_davenport', 'quat_to_euler', 'quat_to_matrix', 'quat_to_mrp', 'quat_to_rotvec', 'random_rotations', 'relative_kinematics', 'require_closed_oriented_mesh', 'rnea', 'rot_x', 'rot_y', 'rot_z', 'rotvec_to_matrix', 'rotvec_to_quat', 'screw_to_twist', 'semi_latus_rectum', 'simulate', 'simulate_batch', 'slerp', 'slerp_keys', 'solid_box', 'solid_capsule', 'solid_cone', 'solid_cylinder', 'solid_ellipsoid', 'solid_mesh', 'solid_sphere', 'solid_tetrahedron', 'spherical_shell', 'state_to_elements', 'step', 'symmetry_planes', 'thin_disk', 'thin_plate', 'thin_rod', 'transform_compose', 'transform_points', 'transport_derivative', 'true_to_eccentric_anomaly', 'true_to_mean_anomaly', 'twist_to_screw', 'vector_instructions', 'vee', 'weld_vertices']
 class _Quantity(typing.Protocol):
     """A pint Quantity of any registry (the core converts it to SI by its magnitude and units)."""
     @property
@@ -5243,7 +5243,7 @@ class ToleranceError(ValueError):
         The tolerance asked (NaN for a refusal).
     measure : str or None
         The quantity it bounds.
-    result : SimulationResult, SceneResult or None
+    result : SceneResult or None
         The best run (None when none ran).
     
     See Also
@@ -5684,8 +5684,12 @@ class SceneResult:
         Label the body axis.
     elements : tuple of str, shape (ne,)
         Each work and power column's class name.
-    diverged, unconverged_steps, elapsed_seconds
-        As in SimulationResult.
+    diverged : bool
+        True if the run stopped on a non-finite state.
+    unconverged_steps : int
+        Steps whose implicit solve stopped at its iteration cap (0 for explicit methods).
+    elapsed_seconds : float
+        Wall time of the C++ stepping loop [s].
     
     Notes
     -----
@@ -5901,7 +5905,8 @@ class BodyRecords:
     One body's records of a run: its columns of a SceneResult as (n, ...) arrays.
     
     SceneResult.body(key) gives them (a run of one body: result.body(0)); every array is read-only and shares the
-    result's memory (the wheels' columns are copies). "W" is the result's scene frame.
+    result's memory (the wheels' columns are copies). "W" is the result's scene frame. BatchSceneResult.body(key) gives
+    a batch's: every array with the batch's leading sample axis, t (N, n), p_W (N, n, 3), mass (N, n), ...
     
     Attributes
     ----------
@@ -5937,7 +5942,7 @@ class BodyRecords:
     
     See Also
     --------
-    SceneResult.body, simulate
+    SceneResult.body, BatchSceneResult.body, simulate
     
     Examples
     --------
@@ -6160,7 +6165,7 @@ class GlobalError:
     
     See Also
     --------
-    simulate, simulate_batch, SimulationResult, SceneResult, angular_distance
+    simulate, simulate_batch, SceneResult, angular_distance
     
     Examples
     --------
@@ -6276,296 +6281,9 @@ class GlobalError:
         """
         'reliable' or the reason the estimate is not, per record (a tuple of n str; a batch's: a tuple of N such tuples, one per sample).
         """
-class SimulationResult:
-    """
-    One sample of a batch of bodies (BatchResult[i]): arrays with one row per record (n records).
-    
-    Read-only arrays; q_WB's rows (x, y, z, w) unless scalar_first. A Particle records q = identity and w = 0; a
-    PlanarBody p = (x, y, 0), q = Rz(theta), w = (0, 0, omega). Pickles; to_dataframe gives a table.
-    
-    Parameters
-    ----------
-    None
-        Made by BatchResult[i]; it has no public constructor.
-    
-    See Also
-    --------
-    simulate_batch, BatchResult, SceneResult
-    
-    Examples
-    --------
-    >>> body = rd.RigidBody(2.0, [1.0, 2.0, 3.0])
-    >>> r = rd.simulate_batch(body, [rd.RigidBodyState(w_B=[0.0, 0.0, 1.0])], dt=0.1, steps=10, record_every=5)[0]
-    >>> r.t, r.p_W.shape, r.q_WB.shape, r.diverged, r.unconverged_steps
-    (array([0. , 0.5, 1. ]), (3, 3), (3, 4), False, 0)
-    >>> r.kinetic_energy  # 1/2 I_z w_z^2
-    array([1.5, 1.5, 1.5])
-    """
-    def __getstate__(self) -> tuple:
-        ...
-    def __repr__(self) -> str:
-        ...
-    def __setstate__(self, arg0: tuple) -> None:
-        ...
-    def to_dataframe(self, scalar_first: bool | None = None, *, units: typing.Any = None) -> typing.Any:
-        """
-        The records as a pandas.DataFrame (needs pandas: pip install 'rigiddyn[dataframe]').
-        
-        One row per record, one column per scalar with its unit, as the CSV of ``python -m rigiddyn simulate``:
-        't [s]' (a column, not the index), 'p_W_x [m]' .. 'q_WB_x' .. 'q_WB_w', 'v_W_x [m/s]' .., 'w_B_x [rad/s]' ..,
-        'kinetic_energy [J]', 'total_energy [J]', 'angular_momentum_norm [kg m^2/s]', 'quaternion_norm_error',
-        'work [J]'; q_WB's columns in the result's order ('q_WB_w' first when its scalar_first is True).
-        
-        Parameters
-        ----------
-        scalar_first : bool, optional
-            None (the default): the order the result records. True or False declares the order of its q_WB rows
-            instead.
-        units : dict of str to str, optional
-            The units of the columns, {dimension: unit}: keys "length", "angle", "time", "mass", "energy" (and
-            "power", "force"; rigiddyn.output_units), e.g. {"length": "km", "angle": "deg", "time": "h"} gives
-            't [h]', 'p_W_x [km]', 'v_W_x [km/h]', 'w_B_x [deg/h]', 'angular_momentum_norm [kg km^2/h]'. A column is its
-            SI values times one factor (pint's); a dimension not named stays SI; the quaternion's columns are never
-            converted. None (the default): SI.
-        
-        Returns
-        -------
-        pandas.DataFrame
-            n rows, 19 columns.
-        
-        Raises
-        ------
-        TypeError
-            units is no dict, or a unit no string.
-        ValueError
-            An unknown dimension key (the nearest valid one named), an unknown unit, or a unit of another
-            dimension.
-        
-        See Also
-        --------
-        rigiddyn.trajectory.write_csv, rigiddyn.output_units
-        
-        Examples
-        --------
-        >>> r = rd.simulate_batch(rd.Particle(1.0), [rd.ParticleState()], dt=0.5, steps=2, gravity=True)[0]
-        >>> df = r.to_dataframe()
-        >>> df.shape, df["p_W_z [m]"].round(12).tolist()
-        ((3, 19), [0.0, -1.22625, -4.905])
-        >>> r.to_dataframe(units={"length": "km", "time": "min"})["v_W_z [km/min]"].round(12).tolist()
-        [0.0, -0.2943, -0.5886]
-        """
-    @property
-    def angular_momentum_norm(self) -> numpy.typing.NDArray[numpy.float64]:
-        """
-        |H_G|, the norm of the angular momentum about the centre of mass, shape (n,) [kg m^2/s].
-        """
-    @property
-    def balance(self) -> typing.Any:
-        """
-        The energy and momentum balance of every record (a Balance), or None (a batch result).
-        """
-    @property
-    def choice(self) -> typing.Any:
-        """
-        What simulate(..., tolerance=) chose and why (a ToleranceChoice), or None (a run at a given dt).
-        """
-    @property
-    def diverged(self) -> bool:
-        """
-        True if the run stopped on a non-finite state (a bool).
-        """
-    @property
-    def elapsed_seconds(self) -> float:
-        """
-        Wall time of the C++ stepping loop [s].
-        """
-    @property
-    def error(self) -> typing.Any:
-        """
-        The global error estimate of every record (a GlobalError), or None (simulate(..., error=False), a pickled or batch result).
-        """
-    @property
-    def kinetic_energy(self) -> numpy.typing.NDArray[numpy.float64]:
-        """
-        Kinetic energy, shape (n,) [J].
-        """
-    @property
-    def p_W(self) -> numpy.typing.NDArray[numpy.float64]:
-        """
-        Centre of mass position in W, shape (n, 3) [m].
-        """
-    @property
-    def q_WB(self) -> numpy.typing.NDArray[numpy.float64]:
-        """
-        Attitude q_WB (B to W), shape (n, 4), (x, y, z, w) unless scalar_first.
-        """
-    @property
-    def quaternion_norm_error(self) -> numpy.typing.NDArray[numpy.float64]:
-        """
-        |q_WB| - 1 of each record, shape (n,) (dimensionless).
-        """
-    @property
-    def scalar_first(self) -> bool:
-        """
-        True if q_WB's rows are (w, x, y, z): the result of simulate(..., scalar_first=True).
-        """
-    @property
-    def t(self) -> numpy.typing.NDArray[numpy.float64]:
-        """
-        Time of each record, shape (n,) [s].
-        """
-    @property
-    def total_energy(self) -> numpy.typing.NDArray[numpy.float64]:
-        """
-        Kinetic + gravity potential energy (zero at W's origin), shape (n,) [J].
-        """
-    @property
-    def unconverged_steps(self) -> int:
-        """
-        Number of steps whose implicit solve stopped at its iteration cap (implicit_midpoint; 0 for explicit methods); simulate warns RuntimeWarning when > 0.
-        """
-    @property
-    def v_W(self) -> numpy.typing.NDArray[numpy.float64]:
-        """
-        Centre of mass velocity in W, shape (n, 3) [m/s].
-        """
-    @property
-    def w_B(self) -> numpy.typing.NDArray[numpy.float64]:
-        """
-        Angular velocity of B in W, expressed in B, shape (n, 3) [rad/s].
-        """
-    @property
-    def work(self) -> numpy.typing.NDArray[numpy.float64]:
-        """
-        Work of the loads and gravity since t0, shape (n,) [J] (integrated by the run's method).
-        """
-class BatchResult:
-    """
-    The records of simulate_batch over bodies: N samples of n records each.
-    
-    The arrays of SimulationResult with a leading sample axis, read-only, sample-major: t (N, n) [s]; p_W (N, n, 3)
-    [m] in W; q_WB (N, n, 4); v_W (N, n, 3) [m/s] in W; w_B (N, n, 3) [rad/s] in B; kinetic_energy, total_energy
-    (N, n) [J]; angular_momentum_norm (N, n) [kg m^2/s]; quaternion_norm_error (N, n); work (N, n) [J]. A diverged
-    sample's rows after filled[i] are NaN. len(result) is N; result[i] is sample i as a SimulationResult (its filled
-    rows, copies, the same scalar_first); pickles.
-    
-    Parameters
-    ----------
-    None
-        Made by simulate_batch; it has no public constructor.
-    
-    See Also
-    --------
-    simulate_batch, SimulationResult, BatchSceneResult
-    
-    Examples
-    --------
-    >>> body = rd.RigidBody(2.0, [1.0, 2.0, 3.0])
-    >>> res = rd.simulate_batch(body, [rd.RigidBodyState(w_B=[0, 0, w]) for w in (1.0, 2.0)], dt=0.1, steps=10)
-    >>> len(res), res.t.shape, res.filled, res.diverged
-    (2, (2, 11), array([11, 11]), array([False, False]))
-    >>> res.kinetic_energy[:, -1]  # 1/2 I_z w_z^2
-    array([1.5, 6. ])
-    >>> type(res[1]).__name__
-    'SimulationResult'
-    """
-    def __getitem__(self, i: typing.Any) -> typing.Any:
-        """
-        sample i's records (negative i counts from the end)
-        """
-    def __getstate__(self) -> tuple:
-        ...
-    def __len__(self) -> int:
-        """
-        N, the number of samples
-        """
-    def __repr__(self) -> str:
-        ...
-    def __setstate__(self, arg0: tuple) -> None:
-        ...
-    @property
-    def angular_momentum_norm(self) -> numpy.ndarray:
-        """
-        |H_G|, the norm of the angular momentum about the centre of mass, shape (N, n) [kg m^2/s].
-        """
-    @property
-    def diverged(self) -> numpy.ndarray:
-        """
-        Per sample, True if its state became non-finite and its run stopped there, shape (N,) (bool).
-        """
-    @property
-    def elapsed_seconds(self) -> float:
-        """
-        Wall time of the whole batch [s].
-        """
-    @property
-    def error(self) -> GlobalError | None:
-        """
-        The global error estimate of every record of every sample (GlobalError, arrays (N, n, ...)); None with simulate_batch(..., error=False).
-        """
-    @property
-    def filled(self) -> numpy.ndarray:
-        """
-        Rows filled per sample, shape (N,) (int64): n unless it diverged (its later rows are NaN).
-        """
-    @property
-    def kinetic_energy(self) -> numpy.ndarray:
-        """
-        Kinetic energy, shape (N, n) [J].
-        """
-    @property
-    def p_W(self) -> numpy.ndarray:
-        """
-        Centre of mass position in W, shape (N, n, 3) [m].
-        """
-    @property
-    def q_WB(self) -> numpy.ndarray:
-        """
-        Attitude q_WB (B to W), shape (N, n, 4), (x, y, z, w) unless scalar_first.
-        """
-    @property
-    def quaternion_norm_error(self) -> numpy.ndarray:
-        """
-        |q_WB| - 1 of each record, shape (N, n) (dimensionless).
-        """
-    @property
-    def scalar_first(self) -> bool:
-        """
-        True if q_WB's rows are (w, x, y, z): the result of simulate_batch(..., scalar_first=True).
-        """
-    @property
-    def t(self) -> numpy.ndarray:
-        """
-        Time of each record, shape (N, n) [s].
-        """
-    @property
-    def total_energy(self) -> numpy.ndarray:
-        """
-        Kinetic + gravity potential energy, shape (N, n) [J].
-        """
-    @property
-    def unconverged_steps(self) -> numpy.ndarray:
-        """
-        Per sample, steps whose implicit solve stopped at its iteration cap, shape (N,) (int64; 0 for explicit methods).
-        """
-    @property
-    def v_W(self) -> numpy.ndarray:
-        """
-        Centre of mass velocity in W, shape (N, n, 3) [m/s].
-        """
-    @property
-    def w_B(self) -> numpy.ndarray:
-        """
-        Angular velocity of B in W, expressed in B, shape (N, n, 3) [rad/s].
-        """
-    @property
-    def work(self) -> numpy.ndarray:
-        """
-        Work of the loads and gravity since t0, shape (N, n) [J].
-        """
 class BatchSceneResult:
     """
-    The records of simulate_batch over scenes: N samples of n records each.
+    The records of simulate_batch: N samples of n records each.
     
     The arrays of SceneResult with a leading sample axis (nb bodies, ne work columns, nw wheels), read-only: t (N, n)
     [s]; p_W, v_W, w_B, pivot_reaction_W, angular_momentum_O_W (N, n, nb, 3); q_WB (N, n, nb, 4); kinetic_energy,
@@ -6573,7 +6291,8 @@ class BatchSceneResult:
     mass_flow_energy (N, n, nb) [kg], [J]; work, power (N, n, ne) [J], [W]; wheel_speed, motor_work (N, n, nw).
     body_names and elements label the axes (the first scene's). Frames and units as SceneResult. A diverged
     sample's rows after filled[i] are NaN. len(result) is N; result[i] is sample i as a SceneResult (its filled
-    rows, copies, the same scalar_first); pickles.
+    rows, copies, the same scalar_first); result.body(key) is one body's columns (BodyRecords, arrays (N, n, ...));
+    pickles.
     
     Parameters
     ----------
@@ -6582,7 +6301,7 @@ class BatchSceneResult:
     
     See Also
     --------
-    simulate_batch, SceneResult, BatchResult
+    simulate_batch, SceneResult, BodyRecords
     
     Examples
     --------
@@ -6612,6 +6331,40 @@ class BatchSceneResult:
         ...
     def __setstate__(self, arg0: tuple) -> None:
         ...
+    def body(self, key: int | str) -> typing.Any:
+        """
+        The records of one body of every sample.
+        
+        Parameters
+        ----------
+        key : int or str
+            The body's index among the result's bodies, in [-nb, nb) (from the end when negative), or its name (an entry of
+            body_names).
+        
+        Returns
+        -------
+        BodyRecords
+            The body's columns of this result's arrays with their sample axis: t (N, n), p_W, v_W, w_B (N, n, 3), q_WB
+            (N, n, 4), mass (N, n), ...
+        
+        Raises
+        ------
+        TypeError
+            `key` neither an int nor a str.
+        ValueError
+            An index out of range or a name not in body_names (the message lists the names).
+        
+        Examples
+        --------
+        Two spheres spun up by 1 and 2 N m for 1 s (I = 0.5 kg m^2) turn at 2 and 4 rad/s:
+        
+        >>> sphere = rd.RigidBody(1.0, [0.5, 0.5, 0.5])
+        >>> torques = [[rd.AppliedLoad(torque=(0.0, 0.0, tau))] for tau in (1.0, 2.0)]
+        >>> res = rd.simulate_batch(sphere, [rd.RigidBodyState()] * 2, dt=0.01, duration=1.0, loads=torques)
+        >>> spin = res.body(0)
+        >>> spin.w_B.shape, spin.w_B[:, -1, 2].round(12)
+        ((2, 101, 3), array([2., 4.]))
+        """
     @property
     def angular_momentum_O_W(self) -> numpy.ndarray:
         """
@@ -12270,11 +12023,7 @@ def simulate(model: Particle | PlanarBody | RigidBody | PivotedBody | PivotedPla
     >>> r.choice.met, bool(r.error.attitude.max() <= 1e-7), float(r.t[-1])
     (True, True, 10.0)
     """
-@typing.overload
-def simulate_batch(model: Particle | PlanarBody | RigidBody | collections.abc.Sequence[Particle | PlanarBody | RigidBody], initial: typing.Any, dt: float | numpy.typing.ArrayLike | _Quantity, steps: int | None = None, method: _MethodName | None = None, record_every: int = 1, loads: typing.Any = None, gravity: bool | numpy.typing.ArrayLike | None = None, t0: float | _Quantity = 0.0, threads: int | None = None, simd: bool = False, scalar_first: bool = False, progress: collections.abc.Callable[..., typing.Any] | None = None, *, duration: float | _Quantity | None = None, error: bool = True) -> BatchResult:
-    ...
-@typing.overload
-def simulate_batch(model: Scene | CompiledScene | collections.abc.Sequence[Scene | CompiledScene], initial: typing.Any, dt: float | numpy.typing.ArrayLike | _Quantity, steps: int | None = None, method: _MethodName | None = None, record_every: int = 1, loads: typing.Any = None, gravity: bool | numpy.typing.ArrayLike | None = None, t0: float | _Quantity = 0.0, threads: int | None = None, simd: bool = False, scalar_first: bool = False, progress: collections.abc.Callable[..., typing.Any] | None = None, *, duration: float | _Quantity | None = None, error: bool = True) -> BatchSceneResult:
+def simulate_batch(model: Particle | PlanarBody | RigidBody | Scene | CompiledScene | collections.abc.Sequence[Particle] | collections.abc.Sequence[PlanarBody] | collections.abc.Sequence[RigidBody] | collections.abc.Sequence[Scene] | collections.abc.Sequence[CompiledScene], initial: typing.Any, dt: float | numpy.typing.ArrayLike | _Quantity, steps: int | None = None, method: _MethodName | None = None, record_every: int = 1, loads: typing.Any = None, gravity: bool | numpy.typing.ArrayLike | None = None, t0: float | _Quantity = 0.0, threads: int | None = None, simd: bool = False, scalar_first: bool = False, progress: collections.abc.Callable[..., typing.Any] | None = None, *, duration: float | _Quantity | None = None, error: bool = True) -> BatchSceneResult:
     """
     N independent runs of a body or a scene, one per initial state, in parallel.
     
@@ -12282,11 +12031,13 @@ def simulate_batch(model: Scene | CompiledScene | collections.abc.Sequence[Scene
     ``rigiddyn.simulate(model_i, initial[i], dt_i, steps, method, record_every, loads_i, gravity_i, t0)``: the
     records equal N serial simulate calls bitwise, whatever the thread count (the SIMD path: up to round-off).
     steps (or duration), record_every, t0, method and scalar_first are shared by every sample, so every sample has
-    the same record count n.
+    the same record count n. A body runs as its one-body scene, as simulate runs it; gravity or loads given per
+    sample are declared in every sample's scene (a UniformGravity of g = 0, a ScheduledLoads without a load
+    included), so that the samples' records have the same columns.
     
     Parameters
     ----------
-    model : Particle, PlanarBody, RigidBody, Scene or CompiledScene, or a list of N of them
+    model : Particle, PlanarBody, RigidBody, Scene, CompiledScene, sequence of Particle, sequence of PlanarBody, sequence of RigidBody, sequence of Scene or sequence of CompiledScene
         One model shared by every sample, or a list of N of one kind (per-sample mass [kg] and inertia about the
         centre of mass in B [kg m^2]; scenes of the same structure: bodies and elements). A scene with a
         PythonForce runs, slowly: each call takes the GIL, so its samples run one at a time.
@@ -12333,9 +12084,9 @@ def simulate_batch(model: Scene | CompiledScene | collections.abc.Sequence[Scene
     
     Returns
     -------
-    BatchResult or BatchSceneResult
-        For bodies a BatchResult, for scenes a BatchSceneResult: the arrays of SimulationResult / SceneResult with a
-        leading sample axis (N, n, ...), and error. A sample whose state becomes non-finite stops alone: diverged[i]
+    BatchSceneResult
+        The arrays of SceneResult with a leading sample axis (N, n, ...), and error; result.body(0) reads one body's
+        columns as (N, n, ...) arrays (p_W (N, n, 3), q_WB (N, n, 4), ...). A sample whose state becomes non-finite stops alone: diverged[i]
         is True, filled[i] its rows, the rest of its rows NaN (its error rows too, their verdict saying so).
     
     Raises
@@ -12363,7 +12114,7 @@ def simulate_batch(model: Scene | CompiledScene | collections.abc.Sequence[Scene
     
     See Also
     --------
-    simulate, BatchResult, BatchSceneResult, default_thread_count
+    simulate, BatchSceneResult, default_thread_count
     
     Examples
     --------
@@ -12373,20 +12124,22 @@ def simulate_batch(model: Scene | CompiledScene | collections.abc.Sequence[Scene
     >>> states = [rd.RigidBodyState(w_B=[1.0, 0.0, 0.1 * i]) for i in range(4)]
     >>> res = rd.simulate_batch(body, states, dt=0.01, steps=100, threads=2)
     >>> serial = rd.simulate(body, states[2], dt=0.01, steps=100)
-    >>> res.w_B.shape, np.array_equal(res.w_B[2], serial.body(0).w_B)
-    ((4, 101, 3), True)
+    >>> res.w_B.shape, np.array_equal(res.w_B[2], serial.w_B)
+    ((4, 101, 1, 3), True)
+    >>> res.body(0).w_B.shape
+    (4, 101, 3)
     
     Every record of every sample has its global error estimate (rk4: order 4):
     
-    >>> res.error.attitude.shape, res.error.order, np.array_equal(res.error.attitude[2], serial.error.attitude[:, 0])
-    ((4, 101), 4, True)
+    >>> res.error.attitude.shape, res.error.order, np.array_equal(res.error.attitude[2], serial.error.attitude)
+    ((4, 101, 1), 4, True)
     
     Three particles dropped for 1 s under their own gravity fall g t^2 / 2:
     
     >>> zeros = np.zeros((3, 3))
     >>> drop = rd.simulate_batch(rd.Particle(1.0), {"p_W": zeros, "v_W": zeros}, dt=0.01, duration=1.0,
     ...                          gravity=[[0, 0, -1.0], [0, 0, -2.0], [0, 0, -3.0]], record_every=100)
-    >>> drop.t[0], drop.p_W[:, -1, 2].round(12)
+    >>> drop.t[0], drop.body(0).p_W[:, -1, 2].round(12)
     (array([0., 1.]), array([-0.5, -1. , -1.5]))
     """
 def slerp(q0: numpy.typing.ArrayLike, q1: numpy.typing.ArrayLike, t: float | numpy.typing.ArrayLike, scalar_first: bool = False, canonical: bool = False) -> numpy.typing.NDArray[numpy.float64]:

@@ -65,13 +65,14 @@ from ._memory import available_bytes, format_bytes
 STATE_KEYS = ("p_W", "q_WB", "v_W", "w_B")
 # the order in which one sample's generator serves the dispersed inputs
 DRAW_ORDER = ("p_W", "q_WB", "v_W", "w_B", "mass", "inertia", "gravity", "loads")
-# the per-record arrays of a BatchResult, each (N, n_records, ...)
-RECORD_FIELDS = ("t", "p_W", "q_WB", "v_W", "w_B", "kinetic_energy", "total_energy", "angular_momentum_norm",
-                 "quaternion_norm_error", "work")
 # the per-record arrays of a BatchSceneResult, each (N, n_records, ...) (per body: (N, n_records, bodies, ...))
 SCENE_RECORD_FIELDS = ("t", "p_W", "q_WB", "v_W", "w_B", "mass", "kinetic_energy", "potential_energy",
                        "total_energy", "linear_momentum_W", "angular_momentum_W", "angular_momentum_O_W",
                        "pivot_reaction_W", "power", "work", "joint_q", "joint_v")
+# the per-record arrays of one body's records (BodyRecords), each (N, n_records, ...): a body's Monte Carlo reads its
+# per-body fields there
+BODY_RECORD_FIELDS = ("p_W", "q_WB", "v_W", "w_B", "mass", "angular_momentum_O_W", "pivot_reaction_W",
+                      "angular_momentum_norm", "quaternion_norm_error")
 # the per-record arrays of a batch's GlobalError, each (N, n_records, ...), fields "error.<name>" of a MonteCarloResult
 ERROR_FIELDS = ("attitude", "angular_velocity", "position", "velocity", "energy", "angular_momentum")
 STANDARD_GRAVITY_W = (0.0, 0.0, -9.81)  # [m/s^2] in W, what gravity=True means (as simulate)
@@ -81,7 +82,6 @@ _KEYS_SHOWN = 40  # dispersible keys an error about an unknown key lists
 # the frame terms a scene's frame adds at most; memory per sample while drawing (its SeedSequence,
 # generator, drawn values and bodies) and per body state of a scene's sample [bytes]: measured at 1.2 kB a
 # sample with four keys dispersed (an inertia among them) and 0.3 kB a particle's state, rounded up
-_RECORD_DOUBLES = 29
 _SCENE_RECORD_DOUBLES = (10, 20, 2)
 _FRAME_TERMS = 4
 # the error estimate's values per record beyond its coarse runs: 7 float64 (3 more per extra body of a scene), a
@@ -91,7 +91,7 @@ _SAMPLE_BYTES = 2048
 _STATE_BYTES = 512
 
 
-# a recorded field's name, or a function of the BatchResult returning (N, n_records, ...)
+# a recorded field's name, or a function of the BatchSceneResult returning (N, n_records, ...)
 Quantity = Union[str, Callable[[Any], Any]]
 
 
@@ -445,8 +445,11 @@ def _check_percents(q: Any) -> tuple[float, ...]:
 class MonteCarloResult:
     """The outcome of `monte_carlo`.
 
-    batch: the BatchResult of rigiddyn.simulate_batch (arrays (N, n_records, ...), see it), or under a controller
-      the samples' stacked records (the same arrays); n = N.
+    batch: the BatchSceneResult of rigiddyn.simulate_batch (arrays (N, n_records, ...), see it; a body's run is its
+      one-body scene's, ``batch.body(0)`` its columns as (N, n_records, ...) arrays), or under a controller the
+      samples' stacked records (the same arrays); n = N.
+    one_body: the model was one body (monte_carlo of a RigidBody): its per-body fields are that body's records,
+      ``batch.body(0)``'s (N, n_records, ...) arrays (p_W (N, n_records, 3), angular_momentum_norm, ...).
     inputs: {key: read-only array (N, ...)} of the drawn values, one row per sample, for the dispersed keys:
       "p_W" (N, 3) [m], "q_WB" (N, 4) (x, y, z, w), "v_W" (N, 3) [m/s], "w_B" (N, 3) [rad/s] (in B),
       "mass" (N,) [kg], "inertia" (N, 3, 3) [kg m^2] (about the centre of mass, in B), "inertia_moments"
@@ -460,10 +463,12 @@ class MonteCarloResult:
     error: the batch's global error estimate (a GlobalError, arrays (N, n_records, ...)), or None.
     """
 
+    one_body = False  # a result pickled before the field existed: a scene's
+
     def __init__(self, batch: Any, inputs: dict[str, np.ndarray], redraws: dict[str, np.ndarray], seed: Any,
-                 dispersions: dict[str, Dispersion]):
+                 dispersions: dict[str, Dispersion], one_body: bool = False):
         if not hasattr(batch, "t") or np.ndim(batch.t) != 2:
-            raise TypeError(f"batch: expected a BatchResult (records t of shape (N, n_records)), got {batch!r}")
+            raise TypeError(f"batch: expected a BatchSceneResult (records t of shape (N, n_records)), got {batch!r}")
         for name, value in (("inputs", inputs), ("redraws", redraws), ("dispersions", dispersions)):
             if not isinstance(value, Mapping):
                 raise TypeError(f"{name}: expected a dict, got {value!r}")
@@ -472,6 +477,7 @@ class MonteCarloResult:
         self.redraws = redraws
         self.seed = seed
         self.dispersions = dispersions
+        self.one_body = bool(one_body)
         self.n = len(np.asarray(batch.t))
         self._freeze()
 
@@ -503,10 +509,11 @@ class MonteCarloResult:
 
     def values(self, quantity: Quantity, at: float | None = None) -> np.ndarray:
         """The quantity per sample: (N, n_records, ...) at every record, or (N, ...) at the record of time
-        `at` [s]. quantity: a recorded field of the batch (`fields`; a body's: 't', 'p_W', 'q_WB', 'v_W', 'w_B',
-        'kinetic_energy', 'total_energy', 'angular_momentum_norm', 'quaternion_norm_error', 'work'; a scene's
-        per-body arrays have a bodies axis after the records) or a callable taking the BatchResult (or
-        BatchSceneResult) and returning an array (N, n_records, ...)."""
+        `at` [s]. quantity: a recorded field of the batch (`fields`: 't', 'p_W', 'q_WB', 'kinetic_energy',
+        'work', ...; a body's run reads its per-body fields in its records, p_W (N, n_records, 3),
+        'angular_momentum_norm' (N, n_records), ...; a scene's per-body arrays have a bodies axis after the records)
+        or a callable taking the BatchSceneResult and returning an array (N, n_records, ...), e.g.
+        ``lambda batch: batch.body("hub").angular_momentum_norm``."""
         array = self._quantity(quantity)
         return array if at is None else array[:, self._record_index(at)]
 
@@ -547,12 +554,15 @@ class MonteCarloResult:
 
     @property
     def fields(self) -> tuple[str, ...]:
-        """The recorded fields a quantity may name: the batch's arrays (N, n_records, ...) (RECORD_FIELDS of a
-        body's batch, SCENE_RECORD_FIELDS of a scene's), and with an error estimate its arrays as
+        """The recorded fields a quantity may name: the batch's arrays (N, n_records, ...) (SCENE_RECORD_FIELDS;
+        a body's run adds its records' BODY_RECORD_FIELDS, which its per-body fields are read from), and with an
+        error estimate its arrays as
         ``"error.<name>"`` (ERROR_FIELDS: e.g. ``"error.attitude"`` [rad])."""
         records = np.shape(self.batch.t)
-        recorded = tuple(name for name in dict.fromkeys(RECORD_FIELDS + SCENE_RECORD_FIELDS)
+        recorded = tuple(name for name in SCENE_RECORD_FIELDS
                          if hasattr(self.batch, name) and np.shape(getattr(self.batch, name))[:2] == records)
+        if self.one_body:
+            recorded = tuple(dict.fromkeys(recorded + BODY_RECORD_FIELDS))
         return recorded + (tuple("error." + name for name in ERROR_FIELDS) if self.error is not None else ())
 
     def _quantity(self, quantity: Quantity) -> np.ndarray:
@@ -562,9 +572,12 @@ class MonteCarloResult:
                 raise ValueError(f"quantity: expected a recorded field ({', '.join(self.fields)}) or a callable, "
                                  f"got {quantity!r}")
             owner, name = (self.error, quantity[6:]) if quantity.startswith("error.") else (self.batch, quantity)
+            if self.one_body and quantity in BODY_RECORD_FIELDS:
+                owner = self.batch.body(0)
             return np.asarray(getattr(owner, name), float)
         if not callable(quantity):
-            raise TypeError(f"quantity: expected a field name (str) or a callable of the BatchResult, got {quantity!r}")
+            raise TypeError(f"quantity: expected a field name (str) or a callable of the BatchSceneResult, got "
+                            f"{quantity!r}")
         array = np.asarray(quantity(self.batch), dtype=float)
         if array.shape[:2] != records:
             raise ValueError(f"quantity: expected the callable to return an array (N, n_records, ...) = "
@@ -813,7 +826,7 @@ def _count(value: Any, name: str, least: int) -> int:
 def _check_memory(n: int, steps: int, record_every: int, model: Any, error: bool) -> None:
     """ValueError naming n, before any draw, when N samples would not fit in the available memory: each
     sample's records (as simulate_batch counts them: step 0, every record_every-th step and the last;
-    _RECORD_DOUBLES of a body, _SCENE_RECORD_DOUBLES of a scene per record; with the error estimate its two
+    _SCENE_RECORD_DOUBLES of a scene per record, a body's as its one-body scene's with gravity and loads; with the error estimate its two
     coarse runs, at most as many records each, and _ERROR_DOUBLES per record of the estimate) and what drawing
     it holds (_SAMPLE_BYTES, and a state object per body of a scene, _STATE_BYTES)."""
     records = 1 + steps // record_every + (1 if steps % record_every else 0)
@@ -823,7 +836,8 @@ def _check_memory(n: int, steps: int, record_every: int, model: Any, error: bool
         per_record = _SCENE_RECORD_DOUBLES[0] + _SCENE_RECORD_DOUBLES[1] * nb + _SCENE_RECORD_DOUBLES[2] * terms
         per_sample = _SAMPLE_BYTES + _STATE_BYTES * nb
     else:
-        per_record, per_sample = _RECORD_DOUBLES, _SAMPLE_BYTES
+        per_record = _SCENE_RECORD_DOUBLES[0] + _SCENE_RECORD_DOUBLES[1] + 2 * _SCENE_RECORD_DOUBLES[2]
+        per_sample = _SAMPLE_BYTES
     if error:
         per_record = 3 * per_record + _ERROR_DOUBLES
     per_sample += records * per_record * 8
@@ -948,7 +962,7 @@ def monte_carlo(model: Any, nominal_state: Any, n: int, *, seed: Any,
     Returns
     -------
     MonteCarloResult
-        The BatchResult or BatchSceneResult, the drawn inputs, statistics and percentiles.
+        The BatchSceneResult, the drawn inputs, statistics and percentiles.
 
     Raises
     ------
@@ -1054,4 +1068,5 @@ def monte_carlo(model: Any, nominal_state: Any, n: int, *, seed: Any,
         distributed = importlib.import_module("rigiddyn.distributed")
         batch = distributed.simulate_batch(batch_model, initial, dt, steps, client=client, progress=bool(progress),
                                            **options)
-    return MonteCarloResult(batch, inputs, redraws, seeds.entropy, dispersions)
+    return MonteCarloResult(batch, inputs, redraws, seeds.entropy, dispersions,
+                            one_body=isinstance(model, _core.RigidBody))

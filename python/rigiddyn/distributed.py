@@ -10,7 +10,7 @@ Four functions (and the helpers chunk_size_for, concatenate, ChunksFailedError):
   runs simulate_batch). Contract of `function`: ``function(chunk_start, chunk_stop)`` computes samples
   ``chunk_start <= i < chunk_stop`` and returns a piece: a numpy array (samples along axis 0), a list
   (one item per sample), a tuple or dict of pieces, or a result with a len and a tuple or dict pickle
-  state (a BatchResult, a BatchSceneResult; see `concatenate`); the pieces are concatenated in sample
+  state (a BatchSceneResult; see `concatenate`); the pieces are concatenated in sample
   order, so the result depends only on n_samples, never on the chunking, provided sample i depends only
   on i (e.g. ``numpy.random.SeedSequence(entropy).spawn(n)[i]``). The function is sent once per worker
   (pickled with cloudpickle, as Dask does); each task carries only (start, stop).
@@ -365,7 +365,7 @@ def _run_map(client: Any, function: Callable[..., Any], payload: Callable[[int, 
 
 def concatenate(pieces: Sequence[Any]) -> Any:
     """The pieces of consecutive chunks as one: numpy arrays along axis 0, lists joined, tuples and
-    dicts item by item; another object (a BatchResult, a BatchSceneResult) by its class's
+    dicts item by item; another object (a BatchSceneResult) by its class's
     ``concatenate(pieces)`` if it has one, else through its pickle state (a tuple or a dict): arrays with
     a leading sample axis (len(piece) rows) concatenated, equal items (labels) kept, float items (the
     elapsed time [s]) summed."""
@@ -585,8 +585,8 @@ def simulate_batch(model: Any, initial: Any, dt: Any, steps: Any = None, *, clie
                    **simulate_batch_kwargs: Any) -> Any:
     """rigiddyn.simulate_batch on a Dask cluster: N runs of `model` in chunks of consecutive samples, one
     task each, concatenated in sample order; BITWISE the local rigiddyn.simulate_batch's result (a
-    BatchResult / BatchSceneResult: arrays with a leading sample axis, e.g. p_W (N, n_records, 3) [m],
-    q_WB (N, n_records, 4), w_B (N, n_records, 3) [rad/s] in B; elapsed_seconds the call's wall time [s]).
+    BatchSceneResult: arrays with a leading sample axis, e.g. p_W (N, n_records, nb, 3) [m],
+    q_WB (N, n_records, nb, 4), w_B (N, n_records, nb, 3) [rad/s] in B; elapsed_seconds the call's wall time [s]).
 
     model, initial, dt [s], steps and simulate_batch_kwargs (duration, method, record_every, loads, gravity,
     t0, simd, scalar_first) as rigiddyn.simulate_batch (a duration is turned into steps here, at dt or at

@@ -1,15 +1,9 @@
 """Recorded trajectories as tables: named columns with units, CSV, ``.npz``, Parquet and pandas.
 
-A SceneResult (``rigiddyn.simulate`` of a body or a scene) becomes the wide table of rigiddyn.scene_result:
-one row per record, ``t [s]``, then each body's columns ``<body>:p_W_x [m]`` ..., then the scene-wide ones
-(energies, momenta, each element's work and power). One sample of a batch of bodies (``BatchResult[i]``, a
-SimulationResult) becomes one table, one row per record and one float64 column per scalar, named
-``<field>[_<component>] [<unit>]`` after its attributes (frames as in docs/conventions.md; dimensionless
-columns carry no unit)::
-
-    t [s] | p_W_x [m] ... | q_WB_x ... q_WB_w | v_W_x [m/s] ... | w_B_x [rad/s] ... |
-    kinetic_energy [J] | total_energy [J] | angular_momentum_norm [kg m^2/s] |
-    quaternion_norm_error | work [J]
+A SceneResult (``rigiddyn.simulate`` of a body or a scene, or a batch's sample ``result[i]``) becomes the wide table
+of rigiddyn.scene_result: one row per record, ``t [s]``, then each body's columns ``<body>:p_W_x [m]`` ..., then
+the scene-wide ones (energies, momenta, each element's work and power); frames as in docs/conventions.md,
+dimensionless columns carry no unit.
 
 The quaternion's columns follow the order of the result's q_WB rows, which the result records: a run
 of ``simulate(..., scalar_first=True)`` has ``result.scalar_first`` True and gives q_WB_w first.
@@ -20,9 +14,8 @@ the same double), ``.npz`` and Parquet store the float64 bits. Parquet needs ``p
 `to_dataframe` needs ``pandas`` (extras ``parquet`` and ``dataframe``).
 
 Every table function takes ``units=`` (rigiddyn.output_units): ``units={"length": "km", "angle": "deg",
-"time": "h"}`` gives ``t [h]``, ``p_W_x [km]``, ``v_W_x [km/h]``, ``w_B_x [deg/h]``, ... (a dimension
-not named stays SI; the quaternion's columns are never converted). `fields_from_columns` reads SI
-columns only.
+"time": "h"}`` gives ``t [h]``, ``<body>:p_W_x [km]``, ``<body>:v_W_x [km/h]``, ``<body>:w_B_x [deg/h]``, ...
+(a dimension not named stays SI; the quaternion's columns are never converted).
 """
 
 from __future__ import annotations
@@ -35,73 +28,11 @@ from typing import Any
 
 import numpy as np
 
-from .output_units import convert_columns
+from ._core import SceneResult
 from .scene_result import columns as scene_columns
 from .scene_result import stored_order
 
-__all__ = ["FIELDS", "column_names", "columns", "fields_from_columns", "read_columns", "stored_order", "to_dataframe",
-           "write_csv", "write_npz", "write_parquet"]
-
-# SimulationResult attribute -> (component suffixes or None for a scalar, unit or None)
-FIELDS: dict[str, tuple[str | None, str | None]] = {
-    "t": (None, "s"),
-    "p_W": ("xyz", "m"),
-    "q_WB": ("xyzw", None),
-    "v_W": ("xyz", "m/s"),
-    "w_B": ("xyz", "rad/s"),
-    "kinetic_energy": (None, "J"),
-    "total_energy": (None, "J"),
-    "angular_momentum_norm": (None, "kg m^2/s"),
-    "quaternion_norm_error": (None, None),
-    "work": (None, "J"),
-}
-
-
-def _name(field: str, component: str | None, unit: str | None) -> str:
-    base = field if component is None else f"{field}_{component}"
-    return base if unit is None else f"{base} [{unit}]"
-
-
-def _components(field: str, scalar_first: bool) -> str | None:
-    components, _ = FIELDS[field]
-    return "wxyz" if field == "q_WB" and scalar_first else components
-
-
-def column_names(scalar_first: bool = False, *, units: Mapping[str, str] | None = None) -> list[str]:
-    """The column names of a batch sample's table (``BatchResult[i]``) in order.
-
-    Parameters
-    ----------
-    scalar_first : bool, optional
-        True: q_WB_w first among the quaternion's columns.
-    units : Mapping[str, str], optional
-        The units of the columns, {dimension: unit} (rigiddyn.output_units); None: SI.
-
-    Returns
-    -------
-    list of str
-        19 names, each with its unit: ``'t [s]'``, ``'p_W_x [m]'``, ...
-
-    Raises
-    ------
-    TypeError, ValueError
-        A bad `units` (rigiddyn.output_units.check_units).
-
-    See Also
-    --------
-    columns
-
-    Examples
-    --------
-    >>> from rigiddyn.trajectory import column_names
-    >>> column_names(units={"length": "km", "angle": "deg", "time": "h"})[:12:3]
-    ['t [h]', 'p_W_z [km]', 'q_WB_z', 'v_W_y [km/h]']
-    """
-    names = []
-    for field, (_, unit) in FIELDS.items():
-        components = _components(field, scalar_first)
-        names += [_name(field, None, unit)] if components is None else [_name(field, c, unit) for c in components]
-    return list(convert_columns(dict.fromkeys(names, np.zeros(0)), units))
+__all__ = ["columns", "read_columns", "stored_order", "to_dataframe", "write_csv", "write_npz", "write_parquet"]
 
 
 def columns(result: Any, scalar_first: bool | None = None, *,
@@ -110,9 +41,9 @@ def columns(result: Any, scalar_first: bool | None = None, *,
 
     Parameters
     ----------
-    result : SceneResult or SimulationResult
-        The records of ``rigiddyn.simulate`` (the columns of rigiddyn.scene_result.columns) or a batch sample
-        ``BatchResult[i]`` (the module docstring's 19 columns).
+    result : SceneResult
+        The records of ``rigiddyn.simulate`` or a batch's sample ``result[i]`` (the columns of
+        rigiddyn.scene_result.columns).
     scalar_first : bool, optional
         The order of the result's q_WB rows; None (the default): the order the result records
         (``result.scalar_first``, set by ``simulate(..., scalar_first=True)``); True or False declares it.
@@ -129,7 +60,7 @@ def columns(result: Any, scalar_first: bool | None = None, *,
     Raises
     ------
     TypeError
-        `result` is no SceneResult or SimulationResult, `scalar_first` no bool, or `units` no mapping.
+        `result` is no SceneResult, `scalar_first` no bool, or `units` no mapping.
     ValueError
         A bad `units`: an unknown dimension, an unknown unit, a unit of another dimension.
 
@@ -146,37 +77,10 @@ def columns(result: Any, scalar_first: bool | None = None, *,
     >>> table["t [min]"], table["body0:w_B_z [deg/min]"].round(6)
     (array([0.        , 0.01666667, 0.03333333]), array([3437.746771, 3437.746771, 3437.746771]))
     """
-    if hasattr(result, "body_names"):  # a SceneResult
-        return scene_columns(result, scalar_first, units=units)
-    scalar_first = stored_order(result, scalar_first)
-    out: dict[str, np.ndarray] = {}
-    for field, (_, unit) in FIELDS.items():
-        try:
-            values = np.asarray(getattr(result, field), dtype=np.float64)
-        except AttributeError:
-            got = type(result).__name__
-            raise TypeError(f"result: expected a SceneResult or SimulationResult (with .{field}), got {got}") from None
-        components = _components(field, scalar_first)
-        if components is None:
-            out[_name(field, None, unit)] = np.ascontiguousarray(values)
-        else:
-            for i, c in enumerate(components):
-                out[_name(field, c, unit)] = np.ascontiguousarray(values[:, i])
-    return convert_columns(out, units)
-
-
-def fields_from_columns(table: Mapping[str, Any]) -> dict[str, np.ndarray]:
-    """A batch sample's (SimulationResult) arrays back from its table's columns (any order of q_WB's columns):
-    t (n,), p_W (n, 3), q_WB (n, 4) as (x, y, z, w), ..., as float64 arrays."""
-    out: dict[str, np.ndarray] = {}
-    for field, (components, unit) in FIELDS.items():
-        names = [_name(field, None, unit)] if components is None else [_name(field, c, unit) for c in components]
-        missing = [n for n in names if n not in table]
-        if missing:
-            raise ValueError(f"table: expected the column {missing[0]!r}, got columns {list(table)}")
-        arrays = [np.asarray(table[n], dtype=np.float64) for n in names]
-        out[field] = arrays[0] if components is None else np.stack(arrays, axis=1)
-    return out
+    if not isinstance(result, SceneResult):
+        raise TypeError(f"result: expected a SceneResult (of rigiddyn.simulate, or a batch's result[i]), got "
+                        f"{type(result).__name__}")
+    return scene_columns(result, scalar_first, units=units)
 
 
 def write_csv(result: Any, path: str | Path, scalar_first: bool | None = None, *,
@@ -187,7 +91,7 @@ def write_csv(result: Any, path: str | Path, scalar_first: bool | None = None, *
 
     Parameters
     ----------
-    result : SceneResult or SimulationResult
+    result : SceneResult
         As in `columns`.
     path : str or pathlib.Path
         The file written (replaced if it exists).
@@ -238,7 +142,7 @@ def write_npz(result: Any, path: str | Path, scalar_first: bool | None = None, *
 
     Parameters
     ----------
-    result : SceneResult or SimulationResult
+    result : SceneResult
         As in `columns`.
     path : str or pathlib.Path
         The file written (replaced if it exists; no suffix is added).
@@ -286,7 +190,7 @@ def write_parquet(result: Any, path: str | Path, scalar_first: bool | None = Non
 
     Parameters
     ----------
-    result : SceneResult or SimulationResult
+    result : SceneResult
         As in `columns`.
     path : str or pathlib.Path
         The file written (replaced if it exists).
@@ -370,7 +274,7 @@ def to_dataframe(result: Any, scalar_first: bool | None = None, *, units: Mappin
 
     Parameters
     ----------
-    result : SceneResult or SimulationResult
+    result : SceneResult
         As in `columns`.
     scalar_first : bool, optional
         As in `columns`.

@@ -88,7 +88,7 @@ _TREE_LINK = ("method", ("method", ("chain", _call_spec("Scene"), [("add_tree", 
                          [("lit", "bodies")], []), "__getitem__", [("lit", 0)], [])
 
 # Objects that only a run makes (a body's SceneResult: simulate needs a body and a state of the same kind;
-# SceneResult: a scene and one state per body; SimulationResult: a sample of a body's batch), or that random
+# SceneResult: a scene and one state per body), or that random
 # arguments rarely make (a scene with bodies, compilable; loads on body 0), built by a valid call with drawn
 # sizes, so that every such class's methods are fuzzed on every machine.
 RECIPES = {
@@ -102,16 +102,18 @@ RECIPES = {
         lambda method: ("method", _SCENE, "compile", [("lit", method)], [])),
     "SceneResult": st.tuples(st.integers(0, 30), st.integers(1, 5)).map(lambda nr: _call_spec(
         "simulate", [_SCENE, _SCENE_STATES], dt=("lit", 0.01), steps=("lit", nr[0]), record_every=("lit", nr[1]))),
-    # batches of drawn sizes (samples, steps, record_every)
-    "BatchResult": st.tuples(st.integers(1, 9), st.integers(0, 30), st.integers(1, 5), st.booleans()).map(
-        lambda snrs: _call_spec(
-            "simulate_batch",
-            [_call_spec("RigidBody", [("lit", 1.0), ("lit", [1.0, 2.0, 2.5])]),
-             ("list", [_call_spec("RigidBodyState", w_B=("lit", [0.1 * k, 1.0, 0.1])) for k in range(snrs[0])])],
-            dt=("lit", 0.01), steps=("lit", snrs[1]), record_every=("lit", snrs[2]), threads=("lit", 2),
-            simd=("lit", snrs[3]))),  # the SIMD path across up to 9 samples (lanes and remainders)
-    "BatchSceneResult": st.tuples(st.integers(1, 3), st.integers(0, 30)).map(lambda sn: _call_spec(
-        "simulate_batch", [_SCENE, ("list", [_SCENE_STATES] * sn[0])], dt=("lit", 0.01), steps=("lit", sn[1]))),
+    # batches of drawn sizes: of a scene (samples, steps), of a body (samples, steps, record_every, the SIMD path
+    # across up to 9 samples: lanes and remainders)
+    "BatchSceneResult": st.one_of(
+        st.tuples(st.integers(1, 3), st.integers(0, 30)).map(lambda sn: _call_spec(
+            "simulate_batch", [_SCENE, ("list", [_SCENE_STATES] * sn[0])], dt=("lit", 0.01), steps=("lit", sn[1]))),
+        st.tuples(st.integers(1, 9), st.integers(0, 30), st.integers(1, 5), st.booleans()).map(
+            lambda snrs: _call_spec(
+                "simulate_batch",
+                [_call_spec("RigidBody", [("lit", 1.0), ("lit", [1.0, 2.0, 2.5])]),
+                 ("list", [_call_spec("RigidBodyState", w_B=("lit", [0.1 * k, 1.0, 0.1])) for k in range(snrs[0])])],
+                dt=("lit", 0.01), steps=("lit", snrs[1]), record_every=("lit", snrs[2]), threads=("lit", 2),
+                simd=("lit", snrs[3])))),
     # a density integral needs a callable rho: a constant density per point, over a drawn box
     "DensityIntegral": st.floats(0.1, 10.0).map(lambda rho: _call_spec(
         "integrate_density_over_box", [("per_row", ("lit", rho)), ("lit", [0.0, 0.0, 0.0]), ("lit", [1.0, 2.0, 0.5])])),
@@ -175,9 +177,6 @@ RECIPES = {
         "ConstantThrustSolution", [("lit", mr[0]), ("lit", mr[1]), ("lit", [0.0, 0.0, -100.0])],
         g_W=("lit", [0.0, 0.0, -9.81]))),
 }
-# one sample of a body's batch (BatchResult[i], its index drawn, negative ones too)
-RECIPES["SimulationResult"] = st.tuples(RECIPES["BatchResult"], st.integers(-1, 0)).map(
-    lambda bk: ("method", bk[0], "__getitem__", [("lit", bk[1])], []))
 # a run's error estimate (read from a result as its attribute); a spatial inertia and a Transform from a valid call
 # (the joints' transform(q) also return a Transform, but rarely from drawn q)
 RECIPES["GlobalError"] = st.one_of(RECIPES["BodySceneResult"], RECIPES["SceneResult"]).map(
@@ -205,7 +204,7 @@ RECIPES["PivotedSceneResult"] = st.tuples(st.integers(0, 30), st.sampled_from(["
     steps=("lit", nm[0]), method=("lit", nm[1]), gravity=("lit", True)))
 # the recipes that are valid calls of a target: that target's calls also draw them, whole or with one argument wild
 RECIPE_CALLS = {
-    "simulate": ["BodySceneResult", "SceneResult", "PivotedSceneResult"], "simulate_batch": ["BatchResult", "BatchSceneResult"],
+    "simulate": ["BodySceneResult", "SceneResult", "PivotedSceneResult"], "simulate_batch": ["BatchSceneResult"],
     "integrate_density_over_box": ["DensityIntegral"], "forward_dynamics": ["PivotedAcceleration"],
     "dispersion.monte_carlo": ["dispersion.MonteCarloResult"],
     **{name: [name] for name in ("Scene", "ScheduledLoads", "PivotedBody", "PivotedPlanarBody", "Thrust", "Wheel",
@@ -767,7 +766,7 @@ class Strategies:
                 array_spec(quaternions()), lit(POSITIVE_FLOAT))),
             (r"rng", lambda s, p, doc, depth: st.integers(0, 2**32).map(lambda seed: ("rng", seed))),
             (r"max_redraws", lambda s, p, doc, depth: lit(st.integers(-1, 5))),
-            (r"batch", obj("BatchResult", "BatchSceneResult")),
+            (r"batch", obj("BatchSceneResult")),
             (r"inputs|redraws", lambda s, p, doc, depth: lit(st.just({}))),
             # rigiddyn.units: values with units, the SI unit expected
             (r"value", lambda s, p, doc, depth: UNIT_VALUES),

@@ -71,19 +71,11 @@ def evaluation_tolerance(terms, value, kappa=1.0, roundings=8):
     return absolute / max(1.0, np.max(np.abs(value)))
 
 
-def _one_body(run):
-    """(the body's records, (n,) total work) of a core run: a one-body SceneResult (its body(0), the
-    sum of its elements' work) or a SimulationResult."""
-    if hasattr(run, "body"):
-        return run.body(0), np.asarray(run.work).sum(axis=1)
-    return run, run.work
-
-
 def state_of(run, i):
-    """(p_W, q_WB, v_W, w_B, work) of record i of a core run (a one-body SceneResult or a
-    SimulationResult), as one (14,) array (a particle records q = identity and w = 0, a planar body
-    p = (x, y, 0), q = Rz(θ), w = (0, 0, ω))."""
-    body, work = _one_body(run)
+    """(p_W, q_WB, v_W, w_B, work) of record i of a core run (a one-body SceneResult: its body(0), the sum of its
+    elements' work), as one (14,) array (a particle records q = identity and w = 0, a planar body p = (x, y, 0),
+    q = Rz(θ), w = (0, 0, ω))."""
+    body, work = run.body(0), np.asarray(run.work).sum(axis=1)
     return np.concatenate([body.p_W[i], body.q_WB[i], body.v_W[i], body.w_B[i], [work[i]]])
 
 
@@ -231,7 +223,7 @@ def derived_tolerances(bound, body, run, gravity=None, i=-1):
     potential V = -m g.p: |ΔV| <= m |g|.s(p) bound; |H| = |I w|: |Δ|H|| <= ||I|| |s(w)| bound
     (s(x) = max(1, |x_i|) componentwise, |.| componentwise, "." a dot product)."""
     s = lambda x: np.maximum(1.0, np.abs(x))  # noqa: E731
-    records = _one_body(run)[0]
+    records = run.body(0)
     v, w, p = records.v_W[i], records.w_B[i], records.p_W[i]
     mass = body.mass
     inertia = (body.inertia_com if isinstance(body, rd.RigidBody)
@@ -266,24 +258,3 @@ def roundoff(size, roundings=8):
     `roundings` times on numbers no larger than `size` (for a sum: the sum of the terms' magnitudes,
     Higham's gamma_n bound with n = roundings)."""
     return 2.0 * roundings * EPS * float(size)
-
-
-# The columns a body's batch sample derives otherwise than its serial run (a one-body scene): equal up to the
-# round-off of the two derivations
-BATCH_DERIVED = ("angular_momentum_norm", "quaternion_norm_error", "work")
-
-
-def batch_sample_bound(serial, name, dt):
-    """The largest difference of a derived column `name` between a body's batch sample (a SimulationResult of
-    rigiddyn.simulate_batch) and its serial run `serial` (rigiddyn.simulate's one-body SceneResult) at step dt, per
-    record, (n,). |H_G| is |I w| in B there and |R I w| in W here (R of the normalised q: <= 16 eps |H| for the products and the
-    norm, plus 2 ||q| - 1| |H| where the sample's q is not normalised); |q| - 1 is a norm summed in another order
-    (<= 4 eps); the work is one integral of the total power there, the sum of each element's integral here (each
-    step's update rounds <= 4 eps of the works' size, for (t - t0)/dt + 1 steps)."""
-    body = serial.body(0)
-    if name == "angular_momentum_norm":
-        return (16 * EPS + 2 * np.abs(body.quaternion_norm_error)) * body.angular_momentum_norm
-    if name == "quaternion_norm_error":
-        return np.full(len(serial.t), 4 * EPS)
-    size = np.maximum.accumulate(np.abs(serial.work).sum(axis=1) + serial.kinetic_energy)
-    return 4 * EPS * ((serial.t - serial.t[0]) / dt + 1) * size

@@ -82,15 +82,13 @@ def test_examples_run_and_print_what_they_show(name: str, obj: object) -> None:
 
 # The public classes without a constructor: results and reports that the core makes (calling one raises TypeError).
 MADE_BY_THE_CORE = {
-    "BatchResult": "simulate_batch",
-    "BatchSceneResult": "simulate_batch on a Scene",
+    "BatchSceneResult": "simulate_batch",
     "BodyRecords": "SceneResult.body",
     "ElementField": "the field table of each element class (SpringDamper.fields)",
     "GlobalError": "simulate(..., error=True): result.error",
     "InertiaReport": "inertia_report",
     "SceneFrame": "its static constructors (SceneFrame.rotating, ...)",
     "SceneResult": "simulate on a Scene",
-    "SimulationResult": "simulate on one body",
     "ToleranceChoice": "simulate(..., tolerance=...): result.choice",
     "TreeLink": "Scene.add_tree: one per link, read as scene.bodies[i]",
     "WeldedMesh": "weld_vertices",

@@ -44,14 +44,6 @@ class _Quantity(typing.Protocol):
 _MethodName: typing.TypeAlias = typing.Literal[{methods}]
 '''
 
-# The functions whose result's class follows the model's kind: (result, the model classes giving it) per overload
-BY_MODEL = {
-    "simulate_batch": [
-        ("BatchResult", "Particle | PlanarBody | RigidBody | collections.abc.Sequence[Particle | PlanarBody | RigidBody]"),
-        ("BatchSceneResult", "Scene | CompiledScene | collections.abc.Sequence[Scene | CompiledScene]")],
-}
-
-
 def generate_untyped(out: pathlib.Path) -> str:
     """pybind11-stubgen's stub of rigiddyn._core (the extension importable from sys.path / PYTHONPATH)."""
     # RIGIDDYN_STUBGEN=1: the core leaves out the runtime signatures (__text_signature__), so that the generator
@@ -176,23 +168,8 @@ def typed(stub: str, method_names: list[str]) -> str:
     for index, start, end, text in sorted(edits, reverse=True):
         lines[index] = lines[index][:start] + text.encode() + lines[index][end:]
     out = b"".join(lines).decode()
-    out = by_model_overloads(out)
     declarations = DECLARATIONS.format(methods=", ".join(repr(name) for name in method_names))
     return re.sub(r"^(__all__: .*\n)", lambda m: m.group(1) + declarations.lstrip("\n"), out, count=1, flags=re.M)
-
-
-def by_model_overloads(stub: str) -> str:
-    """simulate_batch as one overload per result class (BY_MODEL), the docstring on the last."""
-    for name, overloads in BY_MODEL.items():
-        found = re.search(rf"^def {name}\(model: [^,]*(, [^\n]*)\) -> [^\n]*:\n(    \"\"\".*?\"\"\"\n)", stub,
-                          re.S | re.M)
-        assert found, f"{name}: no 'def {name}(model: ...' in the stub"
-        rest, docstring = found.group(1), found.group(2)
-        text = "".join(f"@typing.overload\ndef {name}(model: {models}{rest}) -> {result}:\n"
-                       + (docstring if k + 1 == len(overloads) else "    ...\n")
-                       for k, (result, models) in enumerate(overloads))
-        stub = stub[:found.start()] + text + stub[found.end():]
-    return stub
 
 
 def generate(out: pathlib.Path) -> str:
