@@ -737,28 +737,39 @@ Scene sample_scene(const Model& body, const Eigen::Vector3d& g_W, const std::vec
 }
 
 // The one-body scenes of a batch of bodies, compiled for o.method: one shared when the body, gravity and loads are
-// (sample i is then simulate(body, initial[i], ..., loads, gravity) bitwise), else sample i's own (its errors named
-// "sample <i>: ..."); the first sample's alone for the SIMD path (`first_only`: it runs the bodies, and the scene gives
-// the records' columns and the method's order).
+// (sample i is then simulate(body, initial[i], ..., loads, gravity) bitwise), else sample i's own, compiled on
+// `threads` threads without the GIL (a scene of bodies and these elements holds no Python object; the error of the
+// lowest failing sample is raised, named "sample <i>: ..."); the first sample's alone for the SIMD path (`first_only`:
+// it runs the bodies, and the scene gives the records' columns and the method's order).
 template <class Model>
 std::vector<CompiledScene> one_body_scenes(const std::vector<Model>& bodies, const SimulationOptions& o,
                                            const BatchParameters& p, std::size_t N, OneBodyElementSet elements,
-                                           bool first_only) {
+                                           bool first_only, int threads) {
   const bool shared = bodies.size() == 1 && p.gravity_W.empty() && p.loads.empty();
   const std::size_t count = shared || first_only ? 1 : N;
-  std::vector<CompiledScene> scenes;
-  scenes.reserve(count);
-  for (std::size_t i = 0; i < count; ++i) {
+  const auto compile_sample = [&](std::size_t i) {
     try {
-      scenes.push_back(compile_scene(sample_scene(bodies[bodies.size() == 1 ? 0 : i],
-                                                  p.gravity_W.empty() ? o.gravity_W : p.gravity_W[i],
-                                                  p.loads.empty() ? o.loads : p.loads[i], elements),
-                                     o.method));
+      return compile_scene(sample_scene(bodies[bodies.size() == 1 ? 0 : i],
+                                        p.gravity_W.empty() ? o.gravity_W : p.gravity_W[i],
+                                        p.loads.empty() ? o.loads : p.loads[i], elements),
+                           o.method);
     } catch (const std::invalid_argument& e) {
       if (shared) throw;
       throw std::invalid_argument("sample " + std::to_string(i) + ": " + e.what());
     }
+  };
+  if (count == 1) return {compile_sample(0)};
+  std::vector<std::optional<CompiledScene>> compiled(count);
+  const std::size_t chunk = 64;  // samples per task: a compile is microseconds
+  {
+    py::gil_scoped_release release;
+    parallel_for((count + chunk - 1) / chunk, threads, [&](std::size_t k, int) {
+      for (std::size_t i = k * chunk; i < std::min(count, (k + 1) * chunk); ++i) compiled[i] = compile_sample(i);
+    });
   }
+  std::vector<CompiledScene> scenes;
+  scenes.reserve(count);
+  for (std::optional<CompiledScene>& scene : compiled) scenes.push_back(std::move(*scene));
   return scenes;
 }
 
@@ -862,7 +873,7 @@ BatchSceneResult body_batch(py::handle model, py::handle initial, py::handle dt,
   // a one-body scene's record: 10 + 20 per body + 2 per element doubles (scene_batch's count)
   require_batch_memory(N, o, with_error_doubles(30.0 + 2.0 * static_cast<double>(elements.count()), error));
   const std::vector<CompiledScene> scenes =
-      one_body_scenes(bodies, o, p, static_cast<std::size_t>(N), elements, simd_path);
+      one_body_scenes(bodies, o, p, static_cast<std::size_t>(N), elements, simd_path, c.threads);
   warn_compatibility(scenes);
   std::vector<std::vector<BodyState>> scene_states;
   scene_states.reserve(states.size());

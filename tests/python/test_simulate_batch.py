@@ -236,6 +236,17 @@ def test_a_bad_state_raises_naming_its_sample():
         rd.simulate_batch(BODY, d, 0.01, 5, threads=2)
 
 
+def test_a_sample_s_bad_parameter_raises_naming_the_lowest_such_sample():
+    """Per-sample scenes are compiled on every thread; the lowest sample whose gravity a planar body cannot take is
+    named, whatever the thread count."""
+    gravity = [[0.0, -9.81, 1.0 if i in (150, 170) else 0.0] for i in range(200)]
+    for threads in (1, 3):
+        with pytest.raises(ValueError, match=re.escape("sample 150: gravity: expected gravity in the xy plane "
+                                                       "(z = 0) for a PlanarBody")):
+            rd.simulate_batch(rd.PlanarBody(1.0, 0.5), [rd.PlanarBodyState()] * 200, 0.01, 2, gravity=gravity,
+                              threads=threads)
+
+
 # ---- bad input --------------------------------------------------------------------------------------------
 
 @pytest.mark.parametrize("kwargs, error, message", [
