@@ -48,7 +48,7 @@ def sweep(name):
     dt_ref = min(STEPS[name]) / 4
     reference = run(name, "rk4", dt_ref)
     attitude, rate = errors(run(name, "rk4", 2 * dt_ref), reference)
-    options = rd.load_scene(name)[2]
+    options = rd.load_scene(name).run
     print(f"{name} ({options.duration:g} s under its controller, records {RECORD_SPACING:g} s apart): against rk4 "
           f"at dt = {dt_ref:g} s (rk4 at {2 * dt_ref:g} s differs by {attitude:.1e} rad, {rate:.1e} rad/s)")
     print(f"  {'method':39} {'dt [s]':>7} {'steps':>7} {'evaluations':>11} {'attitude [rad]':>14} "

@@ -826,9 +826,9 @@ def _count(value: Any, name: str, least: int) -> int:
 def _check_memory(n: int, steps: int, record_every: int, model: Any, error: bool) -> None:
     """ValueError naming n, before any draw, when N samples would not fit in the available memory: each
     sample's records (as simulate_batch counts them: step 0, every record_every-th step and the last;
-    _SCENE_RECORD_DOUBLES of a scene per record, a body's as its one-body scene's with gravity and loads; with the error estimate its two
-    coarse runs, at most as many records each, and _ERROR_DOUBLES per record of the estimate) and what drawing
-    it holds (_SAMPLE_BYTES, and a state object per body of a scene, _STATE_BYTES)."""
+    _SCENE_RECORD_DOUBLES of a scene per record, a body's as its one-body scene's with gravity and loads; with
+    the error estimate its two coarse runs, at most as many records each, and _ERROR_DOUBLES per record of the
+    estimate) and what drawing it holds (_SAMPLE_BYTES, and a state object per body of a scene, _STATE_BYTES)."""
     records = 1 + steps // record_every + (1 if steps % record_every else 0)
     if isinstance(model, _core.Scene):
         nb = len(model.bodies)

@@ -85,6 +85,7 @@ import numpy as np
 
 from . import _core
 from ._load_table import LOAD_KEYS, applied_load
+from ._loaded_file import RunOptions, SceneFile
 from ._mass_properties import MESH_KEYS, PRIMITIVE_KEYS, PRIMITIVES, mass_properties
 from ._names import closest as _closest
 from ._measures import MEASURES
@@ -227,8 +228,11 @@ def _where(name: str, kind: str) -> str:
 
 
 @dataclass(frozen=True)
-class Problem:
+class Problem(SceneFile):
     """One rigid body with its initial state, loads, gravity and horizon: what a problem file declares.
+
+    A Problem is the SceneFile of its body's one-body scene (``scene``, ``initial``, ``run``; it unpacks as
+    ``scene, initial, run``), with the body's closed-form references that `rigiddyn.tradeoff` computes.
 
     Every field is checked as a problem file's are (TypeError or ValueError naming it). q_WB within 1e-3 of
     unit norm is normalised (a UserWarning notes it beyond 1e-12), as in a problem file.
@@ -331,6 +335,28 @@ class Problem:
             self.body()
         except ValueError as e:
             raise _core_error(e, "inertia_com") from None
+
+    @property
+    def scene(self) -> Any:
+        """The one-body Scene of the body: UniformGravity(gravity) when gravity is not zero and ScheduledLoads of the
+        loads when there are any (the scene simulate(body, ...) runs)."""
+        elements: list[Any] = []
+        if np.any(self.gravity):
+            elements.append(_core.UniformGravity(g_W=self.gravity))
+        if self.loads:
+            elements.append(_core.ScheduledLoads(body=0, loads=list(self.loads)))
+        return _core.Scene([self.body()], elements=elements)
+
+    @property
+    def initial(self) -> list[Any]:
+        """[initial_state()]: the body's state at t = 0."""
+        return [self.initial_state()]
+
+    @property
+    def run(self) -> RunOptions:
+        """RunOptions of the problem: duration = horizon [s] and its tradeoff defaults (no method or dt: a problem
+        file gives none; Problem.simulate takes them)."""
+        return RunOptions(duration=self.horizon, tradeoff=self.tradeoff)
 
     def body(self) -> _core.RigidBody:
         """The RigidBody of mass [kg] and inertia_com [kg m^2] (B at the centre of mass)."""
@@ -638,7 +664,8 @@ def load_problem(path_or_name: str | Path) -> Problem:
     -------
     Problem
         The body (``Problem.body()``), initial state (``Problem.initial_state()``), loads, gravity [m/s²] in W
-        and horizon [s]; ``Problem.simulate(method, dt)`` runs it.
+        and horizon [s]; ``Problem.simulate(method, dt)`` runs it. A Problem is a ``SceneFile``, as
+        ``load_scene`` returns: it unpacks as ``scene, initial, run`` (its one-body scene).
 
     Raises
     ------
@@ -660,8 +687,8 @@ def load_problem(path_or_name: str | Path) -> Problem:
     a ``uniform_gravity`` element, each ``[[loads]]`` table an ``AppliedLoad`` of a ``scheduled_loads`` element on
     the body (read as a ``[[force.loads]]`` table), ``horizon`` the ``[run]`` duration, and ``[tradeoff]`` the
     same table; every number may carry a unit (``mass = "200 g"``). What differs: the result is a `Problem` (one
-    RigidBody, its state, loads, gravity and horizon), not a Scene, for the closed-form references that
-    ``rd.tradeoff`` computes on one body; a problem file has no ``[run]`` method or step
+    RigidBody, its state, loads, gravity and horizon: the SceneFile of its one-body scene), for the closed-form
+    references that ``rd.tradeoff`` computes on one body; a problem file has no ``[run]`` method or step
     (``Problem.simulate(method, dt)`` takes them), no second body, force element, ``[frame]``, gyrostat wheels or
     mass flow (write a scene file for these); and a ``q_WB`` is always divided by its norm, where a scene file
     keeps one of unit norm to 4 ulp bit for bit.

@@ -1,8 +1,8 @@
 """TOML scene files: bodies, force elements (bodies named), initial states and run options, with units.
 
-``load_scene(path_or_text)`` returns ``(scene, initial, run)``: a rigiddyn.Scene, the list of initial
-states (ParticleState, PlanarBodyState, RigidBodyState, PivotedBodyState, PivotedPlanarBodyState, GyrostatState or a
-tree link's JointState, one per body, in file order) and a RunOptions;
+``load_scene(path_or_text)`` returns a SceneFile, which unpacks as ``scene, initial, run``: a rigiddyn.Scene, the
+list of initial states (ParticleState, PlanarBodyState, RigidBodyState, PivotedBodyState, PivotedPlanarBodyState,
+GyrostatState or a tree link's JointState, one per body, in file order) and a RunOptions;
 ``load_scene("kepler")`` reads a shipped scene (``example_scenes()``). ``scene_to_toml(scene, initial,
 run)`` writes the canonical file (SI, radians, q_WB, every field explicit) that loads back to the same
 scene, states and options.
@@ -171,7 +171,7 @@ import math
 import re
 import warnings
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
 
@@ -179,6 +179,7 @@ import numpy as np
 
 from . import _core
 from ._core_call import core_call as _core_call
+from ._loaded_file import RunOptions, SceneFile
 from ._controller_table import controller_table, read_controller
 from ._load_table import LOAD_KEYS, applied_load
 from ._mass_properties import SOURCES, mass_properties
@@ -257,39 +258,6 @@ def _force_types() -> dict[str, tuple[str, dict[str, _Field]]]:
 # force type -> (its class in rigiddyn, its fields in the order of the class's constructor)
 FORCE_TYPES: dict[str, tuple[str, dict[str, _Field]]] = _force_types()
 _TYPE_OF_CLASS = {cls: name for name, (cls, _) in FORCE_TYPES.items()}
-
-
-@dataclass(frozen=True)
-class RunOptions:
-    """A scene file's [run]: method (a name of rigiddyn.methods()), dt [s] and duration [s] (None when
-    the file gives none), record_every (record every k-th step); its [tradeoff] table, the defaults
-    of rigiddyn.tradeoff on the scene (methods, dts [s], tolerance, measure, horizon [s]; empty: none);
-    and its [controller] table, the rigiddyn.Controller the run is made under (None: none)."""
-
-    method: str = "rk4"
-    dt: float | None = None
-    duration: float | None = None
-    record_every: int = 1
-    tradeoff: Mapping[str, Any] = field(default_factory=dict)
-    controller: Any = None
-
-    @property
-    def steps(self) -> int | None:
-        """round(duration / dt) (at least 1), or None without both."""
-        if self.dt is None or self.duration is None:
-            return None
-        return max(1, round(self.duration / self.dt))
-
-
-@dataclass(frozen=True)
-class SceneFile:
-    """A read scene file: the scene, its initial states (one per body), run options, name, description."""
-
-    scene: Any
-    initial: list[Any]
-    run: RunOptions
-    name: str
-    description: str = ""
 
 
 # ------------------------------------------------------------------------------------------ reading
@@ -792,7 +760,7 @@ def read_scene(path_or_text: str | Path) -> SceneFile:
     return parse_scene(_read_toml(text, source), source, base)
 
 
-def load_scene(path_or_text: str | Path) -> tuple[Any, list[Any], RunOptions]:
+def load_scene(path_or_text: str | Path) -> SceneFile:
     """Read a scene: its bodies, force elements and run options from a TOML file, TOML text or a shipped scene.
 
     A scene file declares ``[[body]]`` tables (kind, mass properties, initial state), ``[[force]]`` tables (one
@@ -807,12 +775,11 @@ def load_scene(path_or_text: str | Path) -> tuple[Any, list[Any], RunOptions]:
 
     Returns
     -------
-    scene : Scene
-        The bodies and force elements.
-    initial : list of body states
-        Each body's initial state, in the scene's order (``RigidBodyState``, ``ParticleState``, ...).
-    run : RunOptions
-        ``method``, ``dt`` [s], ``duration`` [s], ``record_every`` and the ``tradeoff`` defaults of ``[run]``.
+    SceneFile
+        The file read, which unpacks as ``scene, initial, run``: the bodies and force elements (a Scene), each
+        body's initial state in the scene's order (``RigidBodyState``, ``ParticleState``, ...), and the
+        ``RunOptions`` of ``[run]`` (``method``, ``dt`` [s], ``duration`` [s], ``record_every``, the ``tradeoff``
+        defaults); besides ``name`` and ``description``. ``load_problem`` returns one too.
 
     Raises
     ------
@@ -858,8 +825,7 @@ def load_scene(path_or_text: str | Path) -> tuple[Any, list[Any], RunOptions]:
     >>> bool(abs(E[-1] - E[0]) < 1e-9 * abs(E[0]))
     True
     """
-    f = read_scene(path_or_text)
-    return f.scene, f.initial, f.run
+    return read_scene(path_or_text)
 
 
 # ------------------------------------------------------------------------------------------ writing

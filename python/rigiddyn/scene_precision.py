@@ -1,7 +1,7 @@
 """rigiddyn.tradeoff on a scene: many bodies, force elements, a reference without a closed form.
 
 `tradeoff` (rigiddyn.work_precision) takes a scene the way it takes a one-body problem: a
-rigiddyn.Scene with its initial states (initial=..., horizon=...), the (scene, initial states, run
+rigiddyn.Scene with its initial states (initial=..., horizon=...), the SceneFile (scene, initial states, run
 options) that rigiddyn.load_scene returns, or a scene TOML file or shipped scene name (a file whose
 `body` is an array of tables, [[body]], is a scene; [body] is a problem). This module holds the scene
 side of the sweep (SceneCase: compile, run, states, error measures, exact references, stability); it is
@@ -55,6 +55,7 @@ from typing import Any, ClassVar, cast
 import numpy as np
 
 from . import _core
+from ._loaded_file import SceneFile
 
 __all__ = ["BodyData", "SceneCase", "SceneStates", "attitude_angle", "is_scene_source", "scene_case",
            "scene_measures"]
@@ -570,8 +571,9 @@ def _is_scene(x: Any) -> bool:
 
 def scene_case(source: Any, initial: Any = None, horizon: float | None = None) -> SceneCase | None:
     """The SceneCase of `source`: a SceneCase, a rigiddyn.Scene (with `initial`, one state per body),
-    the tuple rigiddyn.load_scene returns, or a scene file path / shipped scene name; None if `source`
-    is none of these (a problem). The horizon [s]: `horizon`, else the [run] duration of the file."""
+    the SceneFile rigiddyn.load_scene returns (or its unpacked tuple (scene, initial, run)), or a scene file path /
+    shipped scene name; None if `source` is none of these (a problem: a Problem, whose tradeoff has its closed-form
+    references). The horizon [s]: `horizon`, else the [run] duration of the file."""
     if isinstance(source, SceneCase):
         return source
     options: Any = None
@@ -579,6 +581,9 @@ def scene_case(source: Any, initial: Any = None, horizon: float | None = None) -
         scene, name = source, "scene"
         if initial is None:
             raise ValueError("initial: expected the initial states of the scene's bodies (one per body), got None")
+    elif type(source) is SceneFile:
+        scene, options, name = source.scene, source.run, source.name
+        initial = source.initial if initial is None else initial
     elif isinstance(source, tuple) and len(source) == 3 and _is_scene(source[0]):
         scene, initial, options = (source[0], source[1] if initial is None else initial, source[2])
         name = "scene"

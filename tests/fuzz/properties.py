@@ -177,9 +177,9 @@ def scene_file_round_trip(scene: str) -> None:
     model, initial, run = rd.load_scene(scene)
     canonical = model.to_toml(initial, run)
     again = rd.load_scene(canonical)
-    twice = again[0].to_toml(again[1], again[2])
+    twice = again.scene.to_toml(again.initial, again.run)
     assert twice == canonical, f"round trip: the canonical file changed on reading it back:\n{_diff(canonical, twice)}"
-    assert again[2] == run, f"round trip: run options {again[2]} != {run}"
+    assert again.run == run, f"round trip: run options {again.run} != {run}"
     written, read = tomllib.loads(scene), tomllib.loads(canonical)
     for i, table in enumerate(written.get("body", [])):
         for key in ("mass", "p_W", "v_W", "w_B", "p_OC_B", "p_WO", "theta", "omega"):
@@ -206,7 +206,7 @@ def units_match_si(scene: dict, picks: list) -> None:
     it = iter(picks)
     si = rd.load_scene(render(data))
     other = rd.load_scene(render(data, lambda options: options[next(it) % len(options)]))
-    a, b = tomllib.loads(si[0].to_toml(si[1], si[2])), tomllib.loads(other[0].to_toml(other[1], other[2]))
+    a, b = tomllib.loads(si.scene.to_toml(si.initial, si.run)), tomllib.loads(other.scene.to_toml(other.initial, other.run))
     _close(a, b, "units != SI", ())
 
 

@@ -600,12 +600,12 @@ def test_a_controller_table_reads_with_units_and_writes_back():
     assert c.law.dipole == scene.elements[1]
     text = scene.to_toml(initial, run)
     assert "[controller]" in text
-    again = rd.load_scene(text)[2].controller
+    again = rd.load_scene(text).run.controller
     assert (again.period, again.w_B_noise, again.seed) == (c.period, c.w_B_noise, c.seed)
     assert vars(again.law).keys() == vars(c.law).keys()
     assert all(getattr(again.law, k) == getattr(c.law, k) for k in ("gain", "element", "m_max", "body", "rate"))
     runs = [rd.simulate(scene, initial, 0.1, duration=5.0, error=False, controller=controller)
-            for controller in (rd.load_scene(BDOT_FILE)[2].controller, again)]
+            for controller in (rd.load_scene(BDOT_FILE).run.controller, again)]
     np.testing.assert_array_equal(runs[0].w_B, runs[1].w_B)
     assert np.abs(runs[0].w_B[-1] - runs[0].w_B[0]).max() > 1e-3  # the law acts
 
@@ -623,7 +623,7 @@ def test_the_shipped_cubesat_scenes_carry_their_controllers():
     assert math.sqrt(law.k_p / A) == pytest.approx(0.05, rel=4 * EPS)
     assert law.k_d / (2 * math.sqrt(law.k_p * A)) == pytest.approx(0.7, rel=4 * EPS)
     np.testing.assert_array_equal(law.axes_B, np.eye(3))  # the gyrostat's wheels
-    again = rd.load_scene(scene.to_toml(initial, run))[2].controller.law
+    again = rd.load_scene(scene.to_toml(initial, run)).run.controller.law
     assert (again.k_p, again.k_d, again.q_target_WB) == (law.k_p, law.k_d, law.q_target_WB)
 
 

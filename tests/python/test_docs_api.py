@@ -36,6 +36,7 @@ INTERNAL = {
     "_names": "the closest known name for the 'did you mean' of error messages (their messages state it)",
     "_measures": "the names, units and meanings of tradeoff's error measures (rigiddyn.work_precision's)",
     "_memory": "the memory estimates of scene_file's [[cluster]] and dispersion (their docs state them)",
+    "_loaded_file": "SceneFile and RunOptions, documented as rigiddyn.scene_file's (which re-exports them)",
     "_balance": "its names are rigiddyn's (Balance, AccuracyWarning; simulate makes the balance of every run)",
     "_core_call": "the core's messages re-addressed to a file's fields (the file formats' messages state them)",
     "_mass_properties": "the body forms of problem and scene files (rigiddyn.problem and rigiddyn.scene_file list them)",

@@ -4,6 +4,7 @@ the same body, initial state, gravity and loads, read by the same code, written 
 import textwrap
 
 import numpy as np
+import pytest
 import rigiddyn
 from rigiddyn.problem import parse_problem
 
@@ -72,3 +73,23 @@ def test_a_problem_file_is_its_one_body_scene_file():
         np.testing.assert_array_equal(getattr(problem, key), getattr(state, key), err_msg=key)
     np.testing.assert_array_equal(problem.gravity, gravity.g_W)
     assert problem.loads == tuple(loads.loads)
+
+
+def test_both_loaders_return_a_scene_file():
+    """One loader return type: load_scene gives a SceneFile and load_problem's Problem is one, each unpacking as
+    scene, initial, run; the problem's scene is the scene file's, so the same run gives the same records."""
+    from rigiddyn.scene_file import SceneFile
+
+    problem = parse_problem(tomllib.loads(textwrap.dedent(PROBLEM)))
+    file = rigiddyn.load_scene(textwrap.dedent(SCENE))
+    assert isinstance(problem, SceneFile) and type(file) is SceneFile
+    scene, initial, run = problem
+    # the same body, elements, state and duration (the scene file names its body, the problem's is body0)
+    assert (scene.bodies, scene.elements) == (file.scene.bodies, file.scene.elements)
+    assert (initial, run.duration, run.tradeoff) == (file.initial, file.run.duration, problem.tradeoff)
+    from_file = rigiddyn.simulate(file.scene, file.initial, 1e-3, duration=file.run.duration, method="rk4")
+    from_problem = problem.simulate("rk4", 1e-3)
+    for field in ("t", "p_W", "q_WB", "v_W", "w_B", "work", "total_energy"):
+        np.testing.assert_array_equal(getattr(from_problem, field), getattr(from_file, field), err_msg=field)
+    with pytest.raises(AttributeError, match="SceneFile is read-only: cannot set 'name'"):
+        file.name = "other"  # type: ignore[misc]

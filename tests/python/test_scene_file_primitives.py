@@ -21,9 +21,9 @@ def scene_body(text, kind="rigid", base=None):
     if kind == "gyrostat":
         toml += "[[body.wheels]]\naxis_B = [0, 0, 1]\ninertia = 1e-5\n"
     if base is None:
-        return rigiddyn.load_scene(toml)[0].bodies[0]
+        return rigiddyn.load_scene(toml).scene.bodies[0]
     (base / "scene.toml").write_text(toml)
-    return rigiddyn.load_scene(base / "scene.toml")[0].bodies[0]
+    return rigiddyn.load_scene(base / "scene.toml").scene.bodies[0]
 
 
 def problem_body(text):

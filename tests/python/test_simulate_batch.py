@@ -131,7 +131,8 @@ def test_per_sample_gravity_and_loads_are_declared_in_every_sample():
     batch = rd.simulate_batch(BODY, states, 0.01, 20, record_every=5, gravity=gravity, loads=loads, threads=2)
     assert batch.elements == ("UniformGravity", "ScheduledLoads") and batch.work.shape == (3, 5, 2)
     for i in range(3):
-        scene = rd.Scene([BODY], elements=[rd.UniformGravity(g_W=gravity[i]), rd.ScheduledLoads(body=0, loads=loads[i])])
+        elements = [rd.UniformGravity(g_W=gravity[i]), rd.ScheduledLoads(body=0, loads=loads[i])]
+        scene = rd.Scene([BODY], elements=elements)
         assert_sample_is(batch, i, rd.simulate(scene, [states[i]], 0.01, 20, record_every=5))
     # given for all: declared only where it acts, as simulate declares a body's
     assert rd.simulate_batch(BODY, states, 0.01, 20, gravity=[0.0, 0.0, 0.0], loads=[]).elements == ()

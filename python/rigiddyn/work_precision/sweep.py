@@ -154,9 +154,9 @@ def tradeoff(problem: Any, methods: Iterable[str] | None = None,
 
     Parameters
     ----------
-    problem : Problem, str, pathlib.Path, Scene or tuple
+    problem : Problem, str, pathlib.Path, Scene or SceneFile
         A ``Problem``, a problem file's path or a shipped example's name (``"t_handle"``); or a scene: a
-        ``Scene`` with `initial` and `horizon`, the tuple returned by ``load_scene``, a scene file or a shipped
+        ``Scene`` with `initial` and `horizon`, the ``SceneFile`` ``load_scene`` returns, a scene file or a shipped
         scene's name. On a scene the reference is Richardson-refined (the best method that compiles without
         a warning) and checked against another method family; a method the scene refuses at compile gets rows
         "not applicable: <reason>" (``order_note``), compile warnings become the result's notes, and the
