@@ -717,25 +717,6 @@ OneBodyElementSet batch_elements(const SimulationOptions& o, const BatchParamete
   return e;
 }
 
-// The one-body scene of a body under uniform gravity g_W [m/s²] and the schedule `loads`, declaring `elements`
-// (one_body_scene's, checked as simulate checks a body's gravity and loads).
-template <class Model>
-Scene sample_scene(const Model& body, const Eigen::Vector3d& g_W, const std::vector<AppliedLoad>& loads,
-                   OneBodyElementSet elements) {
-  if constexpr (std::is_same_v<Model, PlanarBody>) {
-    if (g_W.z() != 0.0) throw_invalid("gravity", "gravity in the xy plane (z = 0) for a PlanarBody", g_W);
-  }
-  Scene scene;
-  scene.bodies.push_back(body);
-  if (elements.gravity) scene.elements.push_back(UniformGravity{g_W, {}});
-  if (elements.loads) {
-    check_loads(loads);
-    ScheduledLoadsTerm::check_loads_for_kind(scene.bodies[0], loads, "loads");
-    scene.elements.push_back(ScheduledLoads{0, loads, Eigen::Vector3d::Zero()});
-  }
-  return scene;
-}
-
 // The one-body scenes of a batch of bodies, compiled for o.method: one shared when the body, gravity and loads are
 // (sample i is then simulate(body, initial[i], ..., loads, gravity) bitwise), else sample i's own, compiled on
 // `threads` threads without the GIL (a scene of bodies and these elements holds no Python object; the error of the
@@ -749,9 +730,9 @@ std::vector<CompiledScene> one_body_scenes(const std::vector<Model>& bodies, con
   const std::size_t count = shared || first_only ? 1 : N;
   const auto compile_sample = [&](std::size_t i) {
     try {
-      return compile_scene(sample_scene(bodies[bodies.size() == 1 ? 0 : i],
-                                        p.gravity_W.empty() ? o.gravity_W : p.gravity_W[i],
-                                        p.loads.empty() ? o.loads : p.loads[i], elements),
+      return compile_scene(one_body_scene_of(bodies[bodies.size() == 1 ? 0 : i],
+                                             p.gravity_W.empty() ? o.gravity_W : p.gravity_W[i],
+                                             p.loads.empty() ? o.loads : p.loads[i], elements.gravity, elements.loads),
                            o.method);
     } catch (const std::invalid_argument& e) {
       if (shared) throw;
@@ -786,10 +767,11 @@ void warn_compatibility(const std::vector<CompiledScene>& scenes) {
   }
 }
 
-// The records of one-body rigid scenes (sample_scene's, declaring `elements`) from the SIMD path's records `b` of RK4
+// The records of one-body rigid scenes (one_body_scene_of's, declaring `elements`) from the SIMD path's records `b` of RK4
 // on the bodies themselves (batch/simd_rigid_body.hpp), equal to the scene path's up to round-off: the state columns
 // and T as recorded; the rest from each record as a one-body scene records them (scene/one_body_scene_model.hpp):
-// V = −m g_W·p_W, the momenta m v_W, p_W × m v_W + R_WB I ω_B and R_WB I ω_B, gravity's work V(t0) − V(t) (RK4
+// V = −m g_W·p_W (Craig, "Rigid Body Dynamics" slides: work of a constant force), the momenta m v_W,
+// p_W × m v_W + R_WB I ω_B and R_WB I ω_B (Newton–Euler about the centre of mass), gravity's work V(t0) − V(t) (RK4
 // integrates ṗ = v and gravity's power m g·v with the same weights, so its integrated work is this to round-off), the
 // loads' work the rest of the recorded work (Ẇ = (f_W + m g_W)·v_W + τ_B·ω_B), the powers m g_W·v_W and
 // f_W·v_W + τ_B·ω_B (the loads constant: the SIMD path refuses time windows).

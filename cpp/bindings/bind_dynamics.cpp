@@ -82,12 +82,7 @@ py::object body_scene(py::handle model, py::handle initial, py::handle loads, py
   if (is_gyrostat(model)) return gyrostat_scene(model, loads, gravity);
   if (is_pivoted(model)) return pivoted_scene(model, loads, gravity);
   return with_model(model, initial, "initial", [&](const auto& body, const auto&) {
-    const Eigen::Vector3d g_W = as_gravity(gravity);
-    // a PlanarBody's plane would take an out-of-plane g silently (the scene keeps g's in-plane part)
-    if (std::is_same_v<std::decay_t<decltype(body)>, PlanarBody> && g_W.z() != 0.0) {
-      throw_invalid("gravity", "gravity in the xy plane (z = 0) for a PlanarBody", g_W);
-    }
-    return one_body_scene(body, g_W, loads);
+    return one_body_scene(body, as_gravity(gravity), loads);
   });
 }
 

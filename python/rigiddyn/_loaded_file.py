@@ -3,9 +3,11 @@ initial states and the run options (RunOptions). A problem file's Problem is the
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Mapping
+from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
+
+from . import _core
 
 
 @dataclass(frozen=True)
@@ -34,7 +36,7 @@ class SceneFile:
     """A read scene or problem file: what rigiddyn.load_scene and rigiddyn.load_problem return.
 
     It unpacks as ``scene, initial, run``; a problem file's `Problem` is one (the scene of its one rigid body).
-    Read-only.
+    Read-only; the constructor checks each argument (TypeError or ValueError naming it).
 
     Parameters
     ----------
@@ -72,6 +74,16 @@ class SceneFile:
     _run: RunOptions
 
     def __init__(self, scene: Any, initial: list[Any], run: RunOptions, name: str, description: str = ""):
+        if not isinstance(scene, _core.Scene):
+            raise TypeError(f"scene: expected a Scene, got {scene!r}")
+        if isinstance(initial, (str, bytes)) or not isinstance(initial, Sequence) or len(initial) != len(scene.bodies):
+            raise ValueError(f"initial: expected a list of {len(scene.bodies)} body states (one per body of the "
+                             f"scene), got {initial!r}")
+        if not isinstance(run, RunOptions):
+            raise TypeError(f"run: expected a RunOptions, got {run!r}")
+        for label, text in (("name", name), ("description", description)):
+            if not isinstance(text, str):
+                raise TypeError(f"{label}: expected a str, got {text!r}")
         for key, value in (("_scene", scene), ("_initial", initial), ("_run", run), ("name", name),
                            ("description", description)):
             object.__setattr__(self, key, value)

@@ -93,3 +93,7 @@ def test_both_loaders_return_a_scene_file():
         np.testing.assert_array_equal(getattr(from_problem, field), getattr(from_file, field), err_msg=field)
     with pytest.raises(AttributeError, match="SceneFile is read-only: cannot set 'name'"):
         file.name = "other"  # type: ignore[misc]
+    with pytest.raises(ValueError, match=r"^initial: expected a list of 1 body states"):
+        SceneFile(file.scene, [], file.run, "short")
+    with pytest.raises(TypeError, match=r"^run: expected a RunOptions"):
+        SceneFile(file.scene, file.initial, {"dt": 0.1}, "dict")

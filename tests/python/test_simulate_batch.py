@@ -146,7 +146,7 @@ def test_body_reads_one_body_of_every_sample():
     for i in range(3):  # the derived columns of each sample are its run's
         assert np.array_equal(records.angular_momentum_norm[i], batch[i].body(0).angular_momentum_norm)
         assert np.array_equal(records.quaternion_norm_error[i], batch[i].body(0).quaternion_norm_error)
-    assert records is not batch.body("body0") and np.array_equal(batch.body("body0").p_W, records.p_W)
+    assert np.array_equal(batch.body("body0").p_W, records.p_W)  # by its name
     assert pickle.loads(pickle.dumps(records)).p_W.shape == (3, 5, 3)
     with pytest.raises(ValueError, match=re.escape("key: expected an integer in [-1, 0], got 1")):
         batch.body(1)
