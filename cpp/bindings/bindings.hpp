@@ -25,6 +25,8 @@ void bind_batch(pybind11::module_& m);  // after bind_body_records: result.body 
 void bind_orbit(pybind11::module_& m);
 void bind_tree(pybind11::module_& m);  // after bind_spatial and bind_inertia: a link holds a Transform and a SpatialInertia
 void bind_tree_link(pybind11::module_& m);  // after bind_tree: TreeLink, JointState, Tree.joint_states
+// The classes only the core makes: calling one raises TypeError naming what makes it (made_by_the_core.cpp)
+void mark_made_by_the_core(pybind11::module_& m);
 // Last: the runtime signatures (__text_signature__, a class's __signature__) of every function and class in m
 void add_text_signatures(pybind11::module_& m);
 }  // namespace rigiddyn::bindings

@@ -28,6 +28,7 @@ PYBIND11_MODULE(_core, m) {
   rigiddyn::bindings::bind_orbit(m);
   rigiddyn::bindings::bind_tree(m);
   rigiddyn::bindings::bind_tree_link(m);  // after bind_tree: it adds Tree.joint_states
+  rigiddyn::bindings::mark_made_by_the_core(m);  // after every class it names
   rigiddyn::bindings::add_text_signatures(m);  // every function and class registered
   rigiddyn::bindings::install_fast_calls(m);  // last: the quick fronts take the docstrings with their signatures
 }

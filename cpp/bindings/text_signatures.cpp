@@ -50,17 +50,23 @@ std::string default_text(const py::detail::argument_record& arg) {
   return is_literal(arg.value) ? py::repr(arg.value).cast<std::string>() : "...";
 }
 
-// The name of parameter i of a pybind11 function record ("arg<i>" when the binding names none)
-std::string parameter_name(const py::detail::function_record& rec, std::size_t i) {
-  return i < rec.args.size() && rec.args[i].name ? rec.args[i].name : "arg" + std::to_string(i);
-}
-
-// Its kind, as inspect.Parameter names it
+// The kind of parameter i of a pybind11 function record, as inspect.Parameter names it
 const char* parameter_kind(const py::detail::function_record& rec, std::size_t i) {
   if (rec.has_kwargs && i + 1 == rec.nargs) return "VAR_KEYWORD";
   if (rec.has_args && i == rec.nargs_pos) return "VAR_POSITIONAL";
   if (i < rec.nargs_pos_only) return "POSITIONAL_ONLY";
   return i >= rec.nargs_pos ? "KEYWORD_ONLY" : "POSITIONAL_OR_KEYWORD";
+}
+
+// Its name: the binding's; where the binding names none, "args" and "kwargs" for py::args and py::kwargs (as
+// pybind11's own docstring line writes them), "self" for a method's first, "arg<i>" otherwise
+std::string parameter_name(const py::detail::function_record& rec, std::size_t i) {
+  if (i < rec.args.size() && rec.args[i].name) return rec.args[i].name;
+  if (rec.is_method && i == 0) return "self";
+  const std::string kind = parameter_kind(rec, i);
+  if (kind == "VAR_POSITIONAL") return "args";
+  if (kind == "VAR_KEYWORD") return "kwargs";
+  return "arg" + std::to_string(i);
 }
 
 // Whether it has a default (its value in rec.args)
@@ -146,8 +152,8 @@ void exception_signature(const py::handle& cls, const py::module_& inspect) {
       py::make_tuple(parameter("args", parameter.attr("VAR_POSITIONAL"))));
 }
 
-// The class's __signature__: its constructor's without self; none for a class without an __init__ of its own (a
-// result or report that the core makes: calling it raises TypeError).
+// The class's __signature__: its constructor's without self (a class only the core makes has one that refuses every
+// call, made_by_the_core.cpp); none for a class without an __init__ of its own.
 void add_class_signature(const py::handle& cls, const py::module_& inspect, const py::handle& staticmethod) {
   const auto* type = reinterpret_cast<PyTypeObject*>(cls.ptr());
   if (PyType_IsSubtype(const_cast<PyTypeObject*>(type), reinterpret_cast<PyTypeObject*>(PyExc_BaseException))) {

@@ -1553,6 +1553,10 @@ class InertiaReport:
         """
     def __getstate__(self) -> tuple:
         ...
+    def __init__(self, *args: typing.Never, **kwargs: typing.Never) -> None:
+        """
+        Raises TypeError: InertiaReport has no public constructor: inertia_report and SpatialInertia.report return one.
+        """
     def __repr__(self) -> str:
         ...
     def __setstate__(self, arg0: tuple) -> None:
@@ -2143,6 +2147,10 @@ class WeldedMesh:
     """
     def __getstate__(self) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.int64], numpy.typing.NDArray[numpy.int64], numpy.typing.NDArray[numpy.int64], int, int, float]:
         ...
+    def __init__(self, *args: typing.Never, **kwargs: typing.Never) -> None:
+        """
+        Raises TypeError: WeldedMesh has no public constructor: weld_vertices returns one.
+        """
     def __repr__(self) -> str:
         ...
     def __setstate__(self, arg0: tuple) -> None:
@@ -3747,6 +3755,10 @@ class ElementField:
     >>> [f.key for f in rd.SpringDamper.fields]
     ['body_a', 'point_a_B', 'body_b', 'point_b', 'stiffness', 'rest_length', 'damping']
     """
+    def __init__(self, *args: typing.Never, **kwargs: typing.Never) -> None:
+        """
+        Raises TypeError: ElementField has no public constructor: each element class lists its fields (e.g. SpringDamper.fields).
+        """
     def __repr__(self) -> str:
         ...
     @property
@@ -5137,6 +5149,10 @@ class SceneFrame:
         ...
     def __getstate__(self) -> tuple:
         ...
+    def __init__(self, *args: typing.Never, **kwargs: typing.Never) -> None:
+        """
+        Raises TypeError: SceneFrame has no public constructor: its static constructors make one (SceneFrame.rotating, ...).
+        """
     def __repr__(self) -> str:
         ...
     def __setstate__(self, arg0: tuple) -> None:
@@ -5331,6 +5347,10 @@ class ToleranceChoice:
         ...
     def __getstate__(self) -> tuple:
         ...
+    def __init__(self, *args: typing.Never, **kwargs: typing.Never) -> None:
+        """
+        Raises TypeError: ToleranceChoice has no public constructor: simulate(..., tolerance=...) returns one as result.choice.
+        """
     def __repr__(self) -> str:
         ...
     def __setstate__(self, arg0: tuple) -> None:
@@ -5711,6 +5731,10 @@ class SceneResult:
     """
     def __getstate__(self) -> tuple:
         ...
+    def __init__(self, *args: typing.Never, **kwargs: typing.Never) -> None:
+        """
+        Raises TypeError: SceneResult has no public constructor: simulate(scene, ...) returns one.
+        """
     def __repr__(self) -> str:
         ...
     def __setstate__(self, arg0: tuple) -> None:
@@ -5958,6 +5982,10 @@ class BodyRecords:
     """
     def __getstate__(self) -> tuple:
         ...
+    def __init__(self, *args: typing.Never, **kwargs: typing.Never) -> None:
+        """
+        Raises TypeError: BodyRecords has no public constructor: SceneResult.body and BatchSceneResult.body return one.
+        """
     def __repr__(self) -> str:
         ...
     def __setstate__(self, arg0: tuple) -> None:
@@ -6196,6 +6224,10 @@ class GlobalError:
         ...
     def __getstate__(self) -> tuple:
         ...
+    def __init__(self, *args: typing.Never, **kwargs: typing.Never) -> None:
+        """
+        Raises TypeError: GlobalError has no public constructor: simulate(..., error=True) returns one as result.error.
+        """
     def __repr__(self) -> str:
         ...
     def __setstate__(self, arg0: tuple) -> None:
@@ -6323,6 +6355,10 @@ class BatchSceneResult:
         """
     def __getstate__(self) -> tuple:
         ...
+    def __init__(self, *args: typing.Never, **kwargs: typing.Never) -> None:
+        """
+        Raises TypeError: BatchSceneResult has no public constructor: simulate_batch returns one.
+        """
     def __len__(self) -> int:
         """
         N, the number of samples
@@ -8068,6 +8104,10 @@ class TreeLink:
         ...
     def __getstate__(self) -> tuple[Tree, int]:
         ...
+    def __init__(self, *args: typing.Never, **kwargs: typing.Never) -> None:
+        """
+        Raises TypeError: TreeLink has no public constructor: Scene.add_tree makes one per link (read as scene.bodies[i]).
+        """
     def __repr__(self) -> str:
         ...
     def __setstate__(self, arg0: tuple) -> None:

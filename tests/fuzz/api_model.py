@@ -222,8 +222,10 @@ def _class_targets(name: str, cls: type) -> list[Target]:
     out = []
     init = vars(cls).get("__init__")
     python_class = not _is_pybind(cls)
-    # pybind11 gives a class without a constructor an __init__ that only raises "No constructor defined"
-    if init is not None and not (init.__doc__ or "").startswith("Initialize self."):
+    # a class only the core makes has an __init__ that refuses every call ("... has no public constructor: ..."),
+    # and pybind11 gives a class without a constructor one that only raises "No constructor defined"
+    doc = (init.__doc__ or "") if init is not None else ""
+    if init is not None and not doc.startswith("Initialize self.") and "has no public constructor" not in doc:
         fn = cls if inspect.isfunction(init) else init  # a Python class: its signature without self
         out.append(_target(name, None, fn, "__init__", True))
     elif init is None and python_class:  # a Python class constructed by its base's __init__ (or object's)

@@ -12,8 +12,8 @@ state each type in words; this reads them into annotations, so that mypy checks 
 - ``shape``, units in brackets, ``default``, ``optional``, ``required``, ``keyword-only`` qualify, and a
   default of None adds ``None``. A type in other words stays ``typing.Any``.
 
-``simulate_batch`` gets one overload per result class (its docstring: a BatchResult for bodies, a BatchSceneResult
-for scenes).
+A class that only the core makes (no public constructor: its ``__init__(self, *args, **kwargs)`` raises TypeError)
+gets ``typing.Never`` for both, so that a type checker refuses a call with arguments.
 
 Regenerate the stub (from the worktree root, the extension built)::
 
@@ -140,6 +140,11 @@ def typed(stub: str, method_names: list[str]) -> str:
         if any(ast.unparse(d) == "typing.overload" for d in function.decorator_list):
             return
         text = ast.get_docstring(function) or ""
+        if function.name == "__init__" and "has no public constructor" in text:
+            for variadic in (function.args.vararg, function.args.kwarg):
+                if variadic is not None and variadic.annotation is None:
+                    edits.append((variadic.lineno - 1, variadic.end_col_offset or 0, variadic.end_col_offset or 0, ": typing.Never"))
+            return
         types = parameter_types(text)
         if not types and function.name == "__init__" and owner is not None:
             types = parameter_types(ast.get_docstring(owner) or "")
