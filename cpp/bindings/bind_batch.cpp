@@ -28,6 +28,7 @@
 #include "rigiddyn/vector_instructions.hpp"
 #include "rigiddyn/batch/simulate_batch.hpp"
 #include "rigiddyn/scene/compile.hpp"
+#include "rigiddyn/scene/one_body_scene.hpp"
 #include "rigiddyn/scene/scene_order.hpp"
 
 namespace rigiddyn::bindings {
@@ -730,9 +731,10 @@ std::vector<CompiledScene> one_body_scenes(const std::vector<Model>& bodies, con
   const std::size_t count = shared || first_only ? 1 : N;
   const auto compile_sample = [&](std::size_t i) {
     try {
-      return compile_scene(one_body_scene_of(bodies[bodies.size() == 1 ? 0 : i],
-                                             p.gravity_W.empty() ? o.gravity_W : p.gravity_W[i],
-                                             p.loads.empty() ? o.loads : p.loads[i], elements.gravity, elements.loads),
+      return compile_scene(rigiddyn::one_body_scene(bodies[bodies.size() == 1 ? 0 : i],
+                                                    p.gravity_W.empty() ? o.gravity_W : p.gravity_W[i],
+                                                    p.loads.empty() ? o.loads : p.loads[i], elements.gravity,
+                                                    elements.loads),
                            o.method);
     } catch (const std::invalid_argument& e) {
       if (shared) throw;
@@ -767,7 +769,7 @@ void warn_compatibility(const std::vector<CompiledScene>& scenes) {
   }
 }
 
-// The records of one-body rigid scenes (one_body_scene_of's, declaring `elements`) from the SIMD path's records `b` of RK4
+// The records of one-body rigid scenes (one_body_scene's, declaring `elements`) from the SIMD path's records `b` of RK4
 // on the bodies themselves (batch/simd_rigid_body.hpp), equal to the scene path's up to round-off: the state columns
 // and T as recorded; the rest from each record as a one-body scene records them (scene/one_body_scene_model.hpp):
 // V = −m g_W·p_W (Craig, "Rigid Body Dynamics" slides: work of a constant force), the momenta m v_W,

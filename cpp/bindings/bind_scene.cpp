@@ -25,6 +25,7 @@
 #include "rigiddyn/scene/compile.hpp"
 #include "rigiddyn/scene/control_laws.hpp"
 #include "rigiddyn/scene/controller.hpp"
+#include "rigiddyn/scene/one_body_scene.hpp"
 #include "rigiddyn/scene/scene_order.hpp"
 #include "rigiddyn/scene/simulate_scene.hpp"
 
@@ -452,26 +453,9 @@ SceneResult scene_result_from_state(const py::tuple& t) {
 
 }  // namespace
 
-Scene one_body_scene_of(const Body& body, const Eigen::Vector3d& g_W, const std::vector<AppliedLoad>& loads,
-                        bool with_gravity, bool with_loads) {
-  // a PlanarBody's plane would take an out-of-plane g silently (the scene keeps g's in-plane part)
-  if (std::holds_alternative<PlanarBody>(body) && g_W.z() != 0.0) {
-    throw_invalid("gravity", "gravity in the xy plane (z = 0) for a PlanarBody", g_W);
-  }
-  Scene scene;
-  scene.bodies.push_back(body);
-  if (with_gravity) scene.elements.push_back(UniformGravity{g_W, {}});
-  if (with_loads) {
-    check_loads(loads);
-    ScheduledLoadsTerm::check_loads_for_kind(body, loads, "loads");
-    scene.elements.push_back(ScheduledLoads{0, loads, Eigen::Vector3d::Zero()});
-  }
-  return scene;
-}
-
 py::object one_body_scene(const Body& body, const Eigen::Vector3d& g_W, py::handle loads) {
   const std::vector<AppliedLoad> schedule = as_loads(loads);
-  return py::cast(one_body_scene_of(body, g_W, schedule, !g_W.isZero(0.0), !schedule.empty()));
+  return py::cast(rigiddyn::one_body_scene(body, g_W, schedule));
 }
 
 py::tuple wheel_bodies_of(const Scene& scene) {

@@ -53,13 +53,8 @@ struct ToleranceHandles {
 // The body index of each gyrostat wheel of the scene, in the order of SceneSimulation::wheel_speed's columns.
 pybind11::tuple wheel_bodies_of(const Scene& scene);
 
-// The one-body Scene of a body: UniformGravity(g_W) [m/s², in W] when `with_gravity`, ScheduledLoads(body=0, loads)
-// when `with_loads`, the loads checked (check_loads) and checked for the body's kind, a PlanarBody's gravity checked to
-// lie in its plane (std::invalid_argument naming loads[i] or gravity).
-Scene one_body_scene_of(const Body& body, const Eigen::Vector3d& g_W, const std::vector<AppliedLoad>& loads,
-                        bool with_gravity, bool with_loads);
-// The one-body Scene of simulate/step of a body: one_body_scene_of with UniformGravity(g_W) when g_W is not zero and
-// ScheduledLoads(body=0, loads) when loads are given.
+// The one-body Scene of simulate/step of a body (rigiddyn::one_body_scene: UniformGravity(g_W) when g_W is not zero and
+// ScheduledLoads(body=0, loads) when loads are given), as a Python Scene.
 pybind11::object one_body_scene(const Body& body, const Eigen::Vector3d& g_W, pybind11::handle loads);
 
 // True for a Scene or a CompiledScene.

@@ -273,13 +273,114 @@ def test_scalar_first_quaternions():
     np.testing.assert_array_equal(a.q_WB, b.q_WB[:, [3, 0, 1, 2]])  # one run, two layouts of the same doubles
 
 
-@pytest.mark.parametrize("method", METHODS)
-def test_step_matches_one_step_of_simulate(method):
-    body = rd.RigidBody(MASS, INERTIA)
-    s1 = rd.step(body, initial_state(), 0.01, method=method, loads=LOADS, gravity=GRAVITY)
-    r = rd.simulate(body, initial_state(), 0.01, 1, method=method, loads=LOADS, gravity=GRAVITY).body(0)
-    for name in ["p_W", "q_WB", "v_W", "w_B"]:
-        np.testing.assert_array_equal(getattr(s1, name), getattr(r, name)[-1])
+# step of a body is one step of the layout simulate runs for its one-body scene: every kind (a rigid body of each
+# Euler form), every element set the scene declares, a load switching on inside the step, every method
+STEP_BODIES = {
+    "particle": (rd.Particle(MASS), rd.ParticleState(p_W=[0.1, -0.2, 0.3], v_W=[0.5, 0.2, -0.1])),
+    "planar": (rd.PlanarBody(MASS, 0.7), rd.PlanarBodyState(p_W=[0.1, -0.2], theta=0.4, v_W=[0.5, 0.2], omega=1.3)),
+    "rigid spherical": (rd.RigidBody(MASS, np.eye(3)), initial_state()),
+    "rigid principal": (rd.RigidBody(MASS, np.diag([0.9, 1.4, 1.9])), initial_state()),
+    "rigid full": (rd.RigidBody(MASS, INERTIA), initial_state()),
+}
+STEP_LOADS = {  # the loads each kind takes (a particle no torque, a planar body in its plane)
+    "particle": [rd.AppliedLoad(force=[0.4, -0.2, 1.0]), rd.AppliedLoad(force=[0.3, 0.1, -0.2], t_start=0.0123)],
+    "planar": [rd.AppliedLoad(force=[0.4, -0.2, 0.0], torque=[0.0, 0.0, 0.2]),
+               rd.AppliedLoad(force=[0.3, 0.1, 0.0], torque=[0.0, 0.0, -0.1], frame="body", t_start=0.0123)],
+    "rigid": [LOADS[0], rd.AppliedLoad(force=[0.3, 0.1, -0.2], torque=[-0.1, 0.2, 0.15], frame="body", t_start=0.0123)],
+}
+STEP_CASES = [(kind, elements) for kind in STEP_BODIES for elements in ("none", "gravity", "gravity and loads")]
+
+
+@pytest.mark.parametrize("method", [m["name"] for m in rd.methods()])
+@pytest.mark.parametrize(("kind", "elements"), STEP_CASES, ids=[f"{k}-{e}" for k, e in STEP_CASES])
+def test_step_is_bitwise_the_first_step_of_simulate(kind, elements, method):
+    body, state = STEP_BODIES[kind]
+    gravity = {"none": None, "gravity": [0.0, -9.81, 0.0]}.get(elements, [0.3, -9.81, 0.0])
+    loads = STEP_LOADS[kind.split()[0]] if elements == "gravity and loads" else None
+    if method == "exact" and loads is not None and kind.startswith("rigid"):  # the free rotation takes no torque
+        with pytest.raises(ValueError, match="torque-free"):
+            rd.step(body, state, 0.01, method=method, loads=loads, gravity=gravity, t=0.01)
+        return
+    # from t = 0.01 the second load switches on at 0.0123, inside the step to 0.02: both split the step there
+    s1, t1 = rd.step(body, state, 0.01, method=method, loads=loads, gravity=gravity, t=0.01)
+    r = rd.simulate(body, state, 0.01, 1, method=method, loads=loads, gravity=gravity, t0=0.01, error=False, accuracy_level=None)
+    assert t1 == r.t[-1]
+    record = r.body(0)
+    names = {"particle": ["p_W", "v_W"], "planar": ["p_W", "v_W"]}.get(kind, ["p_W", "q_WB", "v_W", "w_B"])
+    for name in names:
+        # the state's own columns of the record (a planar body's in W: its x, y and their rates)
+        expected = getattr(record, name)[-1][: len(getattr(s1, name))]
+        if method == "exact":
+            # simulate evaluates the closed form, step composes the exact free flow with exact kicks (exact for a
+            # constant force and torque about a fixed axis): equal but for the rounding of a few operations on
+            # values of size |x| + |v| dt + |g| dt² ≤ 1: 8 eps
+            np.testing.assert_allclose(getattr(s1, name), expected, rtol=0, atol=8 * EPS, err_msg=name)
+        else:
+            np.testing.assert_array_equal(getattr(s1, name), expected, err_msg=name)
+
+
+# step of a scene runs the model simulate runs: a one-body scene's layout, a pivoted body's fast model, the scene
+# model for two bodies; its step is bitwise simulate's first step (implicit midpoint included)
+STEP_SCENES = {
+    "layout": (rd.Scene([rd.RigidBody(MASS, INERTIA)], elements=[rd.UniformGravity(), rd.ScheduledLoads(body=0, loads=LOADS)]),
+               [initial_state()]),
+    "fast model": (rd.Scene([rd.PivotedBody(rd.RigidBody(MASS, INERTIA), [0.0, 0.0, -0.3])], elements=[rd.UniformGravity()]),
+                   [rd.PivotedBodyState(q_WB=Q0, w_B=[1.2, -0.7, 2.0])]),
+    "scene model": (rd.Scene([rd.RigidBody(MASS, INERTIA), rd.Particle(1.0)], elements=[rd.UniformGravity()]),
+                    [initial_state(), rd.ParticleState(v_W=[0.1, 0.0, 0.0])]),
+}
+
+
+@pytest.mark.parametrize("method", [m["name"] for m in rd.methods() if m["name"] != "exact"])
+@pytest.mark.parametrize("model", STEP_SCENES)
+def test_step_of_a_scene_is_bitwise_the_first_step_of_simulate(model, method):
+    scene, state = STEP_SCENES[model]
+    compiled = rd.CompiledScene(scene, method)
+    after = rd.step(compiled, state, 0.01)
+    r = rd.simulate(compiled, state, 0.01, 1, error=False, accuracy_level=None)
+    for i, body_state in enumerate(after):
+        for name in ("q_WB", "v_W", "w_B"):  # those of the body's state (a particle has v_W alone)
+            if hasattr(body_state, name):
+                np.testing.assert_array_equal(getattr(body_state, name), getattr(r, name)[-1, i], err_msg=name)
+
+
+def _load(**fields):
+    return rd.AppliedLoad(**{"force": [0.4, -0.2, 1.0], "torque": [0.05, 0.1, -0.2], "t_end": 0.005, **fields})
+
+
+# step keeps the last layout it built on this thread; a call whose body, gravity or loads differ in any number the
+# layout is made of must step its own (each case differs from BASE in one of them)
+STEP_BASE = {"model": rd.RigidBody(MASS, INERTIA), "gravity": [0.0, 0.0, -9.81], "loads": [_load()]}
+STEP_CHANGED = {
+    "mass": {"model": rd.RigidBody(2 * MASS, INERTIA)},
+    "inertia": {"model": rd.RigidBody(MASS, INERTIA + 0.1 * np.eye(3))},
+    "gravity": {"gravity": [0.0, 0.0, -1.62]},
+    "no gravity": {"gravity": None},
+    "force": {"loads": [_load(force=[0.4, -0.2, 2.0])]},
+    "torque": {"loads": [_load(torque=[0.05, 0.1, -0.4])]},
+    "frame": {"loads": [_load(frame="body")]},
+    "t_start": {"loads": [_load(t_start=0.002)]},
+    "t_end": {"loads": [_load(t_end=0.008)]},
+    "a second load": {"loads": [_load(), _load(t_end=math.inf)]},
+    "no loads": {"loads": None},
+}
+
+
+@pytest.mark.parametrize("change", STEP_CHANGED)
+def test_step_after_a_step_of_other_inputs_steps_its_own(change):
+    case = {**STEP_BASE, **STEP_CHANGED[change]}
+    rd.step(state=initial_state(), dt=0.01, t=0.0, **STEP_BASE)  # the layout of BASE kept
+    s1, _ = rd.step(state=initial_state(), dt=0.01, t=0.0, **case)
+    r = rd.simulate(case["model"], initial_state(), 0.01, 1, loads=case["loads"], gravity=case["gravity"], error=False,
+                    accuracy_level=None).body(0)
+    for name in ["p_W", "q_WB", "v_W", "w_B"]:  # bitwise: step is simulate's first step (above)
+        np.testing.assert_array_equal(getattr(s1, name), getattr(r, name)[-1], err_msg=name)
+    # and BASE again after it: its own step, not the case's
+    again, _ = rd.step(state=initial_state(), dt=0.01, t=0.0, **STEP_BASE)
+    fresh = rd.simulate(STEP_BASE["model"], initial_state(), 0.01, 1, loads=STEP_BASE["loads"],
+                        gravity=STEP_BASE["gravity"], error=False, accuracy_level=None).body(0)
+    np.testing.assert_array_equal(again.w_B, fresh.w_B[-1])
+    np.testing.assert_array_equal(again.v_W, fresh.v_W[-1])
 
 
 # --- dynamics functions ---------------------------------------------------------------------

@@ -1,8 +1,10 @@
 // The one-body layout of a scene (scene/one_body_layouts.hpp).
 #include "rigiddyn/scene/one_body_layouts.hpp"
+#include "rigiddyn/scene/one_body_scene.hpp"
 
 #include <optional>
 #include <type_traits>
+#include <utility>
 #include <variant>
 
 namespace rigiddyn {
@@ -35,7 +37,12 @@ OneBodyModel one_body_layout_of(const Scene& scene, const std::vector<SceneModel
       return std::monostate{};
     }
   }
-  const double m = mass_of(scene.bodies[0]);
+  return one_body_layout_of(scene.bodies[0], std::move(gravity), g, std::move(loads), l);
+}
+
+OneBodyModel one_body_layout_of(const Body& body, std::optional<UniformGravityTerm> gravity, int g,
+                                std::optional<ScheduledLoadsTerm> loads, int l) {
+  const double m = mass_of(body);
   OneBodyModel out;
   std::visit(
       [&](const auto& kind) {
@@ -63,7 +70,7 @@ OneBodyModel one_body_layout_of(const Scene& scene, const std::vector<SceneModel
           });
         }
       },
-      scene.bodies[0]);
+      body);
   return out;
 }
 

@@ -1,5 +1,5 @@
-// simulate and step of a particle and a planar body, and step of a rigid body (simulate/simulate.hpp):
-// their own translation unit, so that it builds beside simulate.cpp (the rigid body's runs).
+// simulate of a particle and a planar body (simulate/simulate.hpp): their own translation unit, so that it builds
+// beside simulate.cpp (the rigid body's runs).
 #include "rigiddyn/simulate/simulate.hpp"
 
 #include "append_record.hpp"
@@ -48,27 +48,6 @@ Trajectory simulate(const PlanarBody& body, const PlanarBodyState& initial, cons
   const PlanarBodyModel model(body, o.gravity_W);
   const PlanarBodyCoordinates y = to_coordinates(checked_state(initial, "initial"));
   return visit_method(o.method, [&](auto integrator) { return run_one_body<decltype(integrator)>(model, y, o); });
-}
-
-RigidBodyState step(const RigidBody& body, const RigidBodyState& state, const SimulationOptions& o) {
-  check_options(o, false);
-  const RigidBodyCoordinates y = to_coordinates(checked_state(state, "state"));
-  return with_euler_form(body, [&](const auto& euler) {
-    using Euler = std::decay_t<decltype(euler)>;
-    return to_rigid_body_state(one_body_step(RigidBodyModel<Euler>(body.mass(), euler, o.gravity_W), y, o));
-  });
-}
-
-ParticleState step(const Particle& particle, const ParticleState& state, const SimulationOptions& o) {
-  check_options(o, false);
-  check_particle_loads(o);
-  return to_particle_state(one_body_step(ParticleModel(particle, o.gravity_W), to_coordinates(checked_state(state)), o));
-}
-
-PlanarBodyState step(const PlanarBody& body, const PlanarBodyState& state, const SimulationOptions& o) {
-  check_options(o, false);
-  check_planar_loads(o);
-  return to_planar_state(one_body_step(PlanarBodyModel(body, o.gravity_W), to_coordinates(checked_state(state)), o));
 }
 
 }  // namespace rigiddyn

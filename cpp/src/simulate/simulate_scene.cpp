@@ -175,20 +175,7 @@ SceneSimulation run_one_body_model(const OneBodyModel& one_body, const std::vect
   const auto run_fast = [&](const auto& fast) {
     return detail::run_scene(fast, fast.coordinates(initial, o.t0), o, switch_schedule);
   };
-  return std::visit(
-      [&](const auto& alternative) -> SceneSimulation {
-        using Alternative = std::decay_t<decltype(alternative)>;
-        if constexpr (std::is_same_v<Alternative, std::monostate>) {
-          throw std::logic_error("a one-body path without a model");
-        } else if constexpr (std::is_same_v<Alternative, detail::FastOneBodyModels>) {
-          return std::visit(run_fast, alternative);
-        } else if constexpr (detail::is_variant<Alternative>::value) {
-          return std::visit(run_layout, alternative);
-        } else {
-          return run_layout(alternative);
-        }
-      },
-      one_body);
+  return visit_one_body(one_body, run_layout, run_fast);
 }
 
 }  // namespace

@@ -14,7 +14,10 @@
 // iterative eigensolver, computed once per inertia (only the splitting_dlm and splitting_dlm_yoshida4
 // lines of the full-inertia body changed); a step's closing kick merged with the next step's opening kick between
 // records (first same as last, simulate/run_loop.hpp: only the simulate lines of splitting_dlm,
-// splitting_dlm_yoshida4 and exact_flow_kick under loads changed, by at most 6.4e-14 of their largest value).
+// splitting_dlm_yoshida4 and exact_flow_kick under loads changed, by at most 6.4e-14 of their largest value); step of a
+// body on its one-body scene's layout, the model simulate runs (scene/one_body_scene.hpp: only the step lines of
+// implicit_midpoint on the rigid bodies changed, by at most 8.7e-17 of their largest value: the layout solves the
+// midpoint as the scene model does).
 // A case that throws (the 'exact' method refuses a torque) stores its message; the test checks it
 // still throws the same.
 #include "rigiddyn/integrators/method.hpp"

@@ -53,7 +53,7 @@ class CompiledScene {
   // The compatibility warnings of the scene with the method, each a sentence naming the
   // element: e.g. a velocity-dependent element under a kick-based splitting.
   const std::vector<std::string>& warnings() const { return warnings_; }
-  // The generic model (used by step, and by simulate on the generic path).
+  // The generic model (simulate and step on the generic path).
   const SceneModel& model() const { return *model_; }
   // True when simulate runs a fixed-size model of one body (one_body_model(): a layout, the generic model's
   // arithmetic and bitwise its motion, or a fast model) or, for 'exact', the closed form of simulate(body, ...)

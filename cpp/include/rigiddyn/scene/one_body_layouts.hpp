@@ -16,7 +16,9 @@
 #include "rigiddyn/scene/scene_simulation.hpp"
 #include "rigiddyn/simulate/simulate.hpp"
 
+#include <stdexcept>
 #include <type_traits>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -78,6 +80,27 @@ const Model* one_body_model_if(const OneBodyModel& one_body) {
 // (SceneModel::terms), or monostate when the scene is not such a scene.
 OneBodyModel one_body_layout_of(const Scene& scene, const std::vector<SceneModel::Term>& terms);
 
+// layout(model) for a layout held by `one_body`, fast(model) for a fast model (both of one return type);
+// std::logic_error for monostate (no fixed-size model)
+template <class Layout, class Fast>
+decltype(auto) visit_one_body(const OneBodyModel& one_body, Layout&& layout, Fast&& fast) {
+  using Result = decltype(std::visit(layout, std::declval<const detail::OneBodyLayoutsOf<OneBodyElements::none>&>()));
+  return std::visit(
+      [&](const auto& alternative) -> Result {
+        using Alternative = std::decay_t<decltype(alternative)>;
+        if constexpr (std::is_same_v<Alternative, std::monostate>) {
+          throw std::logic_error("a one-body path without a model");
+        } else if constexpr (std::is_same_v<Alternative, detail::FastOneBodyModels>) {
+          return std::visit(fast, alternative);
+        } else if constexpr (detail::is_variant<Alternative>::value) {
+          return std::visit(layout, alternative);
+        } else {
+          return layout(alternative);
+        }
+      },
+      one_body);
+}
+
 namespace detail {
 
 // run_scene (scene/simulate_scene.hpp) of a layout from the body's state, compiled in its own translation units
@@ -85,6 +108,16 @@ namespace detail {
 template <class Model>
 SceneSimulation run_one_body(const Model& model, const std::vector<BodyState>& initial, const SimulationOptions& options,
                              const std::vector<AppliedLoad>& switch_schedule);
+
+// step (scene/simulate_scene.hpp) of a layout or a fast model from the body's state, compiled beside the layout's run
+// (the fast models' in one_body_runs_fast.cpp)
+template <class Model>
+SceneState step_one_body(const Model& model, const std::vector<BodyState>& state, const SimulationOptions& options,
+                         const std::vector<AppliedLoad>& switch_schedule);
+
+// step of the fixed-size model `one_body` (not monostate) from the body's state (simulate/step_scene.cpp)
+SceneState step_one_body_model(const OneBodyModel& one_body, const std::vector<BodyState>& state,
+                               const SimulationOptions& options, const std::vector<AppliedLoad>& switch_schedule);
 
 }  // namespace detail
 

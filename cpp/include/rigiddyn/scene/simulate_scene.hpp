@@ -36,9 +36,10 @@ SceneSimulation simulate(const CompiledScene& compiled, const std::vector<BodySt
 SceneSimulation simulate(const Scene& scene, const std::vector<BodyState>& initial, const SimulationOptions& options);
 
 // One step of options.method from `state` at t = options.t0 [s] to t + options.dt (split at the switch
-// times inside it, as simulate), always on the scene's model (SceneModel); returns the states at t + dt
-// and each element's work over the step [J]. Same checks as simulate (options.steps, record_every and
-// monitor are ignored).
+// times inside it, as simulate), on the model simulate runs (a one-body scene's layout or fast model, so that the
+// step is bitwise simulate's first; the scene's model, SceneModel, for the others and for 'exact' on one body);
+// returns the states at t + dt, the bodies' masses and each element's work over the step [J]. Same checks as
+// simulate (options.steps, record_every and monitor are ignored).
 SceneState step(const CompiledScene& compiled, const std::vector<BodyState>& state, const SimulationOptions& options);
 SceneState step(const Scene& scene, const std::vector<BodyState>& state, const SimulationOptions& options);
 

@@ -75,10 +75,10 @@ Trajectory simulate(const Particle& particle, const ParticleState& initial, cons
 Trajectory simulate(const PlanarBody& body, const PlanarBodyState& initial, const SimulationOptions& options);
 
 // One step of `options.method` from `state` at time t = options.t0 [s] to t + options.dt: the state
-// at t + dt. Split at the switch times of options.loads inside (t, t + dt) as in simulate, so that
-// step after step from t0 follows simulate's records (up to the normalisation of q and the rounding of
-// t + dt against t0 + i dt); options.steps, record_every and monitor are ignored. Same checks as
-// simulate.
+// at t + dt. The step of the body's one-body scene (scene/one_body_scene.hpp: the body under UniformGravity and
+// ScheduledLoads where they act), on the layout simulate of that scene runs, so that its first step is bitwise
+// simulate's; split at the switch times of options.loads inside (t, t + dt) as in simulate. options.steps,
+// record_every and monitor are ignored. Same checks as simulate.
 RigidBodyState step(const RigidBody& body, const RigidBodyState& state, const SimulationOptions& options);
 ParticleState step(const Particle& particle, const ParticleState& state, const SimulationOptions& options);
 PlanarBodyState step(const PlanarBody& body, const PlanarBodyState& state, const SimulationOptions& options);

@@ -1,0 +1,36 @@
+// The scene of one body in W that simulate and step of a body run (the one engine's view of a body): the body,
+// a UniformGravity and a ScheduledLoads on it; and its layout (scene/one_body_layouts.hpp) built without the scene,
+// for step, whose every call would otherwise pay a compile.
+#pragma once
+#include "rigiddyn/models/loads.hpp"
+#include "rigiddyn/scene/one_body_layouts.hpp"
+#include "rigiddyn/scene/scene.hpp"
+
+#include <Eigen/Core>
+
+#include <optional>
+#include <vector>
+
+namespace rigiddyn {
+
+// The scene of `body` alone in W, with UniformGravity(g_W) when with_gravity and ScheduledLoads(body 0, loads)
+// when with_loads. Throws std::invalid_argument naming "gravity" for a PlanarBody under gravity out of its plane
+// (the plane would take it silently), "loads[i]..." for a load that is not finite or that the body's kind cannot
+// take (a torque on a particle; out of the plane on a planar body).
+Scene one_body_scene(const Body& body, const Eigen::Vector3d& g_W, const std::vector<AppliedLoad>& loads,
+                     bool with_gravity, bool with_loads);
+
+// The same, each element declared where it acts: the gravity when g_W is not zero, the loads when there are any
+Scene one_body_scene(const Body& body, const Eigen::Vector3d& g_W, const std::vector<AppliedLoad>& loads);
+
+// The layout compile_scene chooses for one_body_scene(body, g_W, loads) (a particle, a planar or a rigid body),
+// built from the two terms alone: no Scene, no checks of a whole scene, no SceneModel (step of a body builds one per
+// call). Throws as one_body_scene.
+OneBodyModel one_body_layout(const Body& body, const Eigen::Vector3d& g_W, const std::vector<AppliedLoad>& loads);
+
+// The layout of `body` (of a kind that has one: std::monostate otherwise) under the compiled gravity and loads (those
+// present, with their indices among the scene's elements) (one_body_layout.cpp)
+OneBodyModel one_body_layout_of(const Body& body, std::optional<UniformGravityTerm> gravity, int gravity_element,
+                                std::optional<ScheduledLoadsTerm> loads, int loads_element);
+
+}  // namespace rigiddyn
