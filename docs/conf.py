@@ -94,8 +94,25 @@ def _render(app, what, name, obj, options, lines):  # noqa: ARG001  (Sphinx's ev
         lines[:] = render_docstring(lines)
 
 
+# pybind11's placeholder type of a parameter the binding converts itself (the Parameters section states its type)
+_UNTYPED = re.compile(r": object(?=[,)\s])")
+
+
+def _signature(app, what, name, obj, options, signature, return_annotation):  # noqa: ARG001  (Sphinx's event)
+    """A compiled function's signature without pybind11's ": object" on the parameters it converts itself, and the
+    core's classes named as the package exports them (rigiddyn.SceneResult, not rigiddyn._core.SceneResult)."""
+    if not (name == "rigiddyn" or name.startswith("rigiddyn.")):
+        return None
+    if signature is not None:
+        signature = _UNTYPED.sub("", signature).replace("rigiddyn._core.", "rigiddyn.")
+    if return_annotation is not None:
+        return_annotation = return_annotation.replace("rigiddyn._core.", "rigiddyn.")
+    return signature, return_annotation
+
+
 def setup(app):
     app.connect("autodoc-process-docstring", _render, priority=400)  # before napoleon's (500) reads the sections
+    app.connect("autodoc-process-signature", _signature)
 
 
 # ---- gallery: every docs/examples/plot_*.py runs at build time; a failing example fails the build
