@@ -58,10 +58,4 @@ Trajectory run_one_body(const Model& model, const typename Model::Coordinates& y
   return detail::run<Integrator>(model, y, o, detail::OneBodySchedule{o.loads}, std::move(out));
 }
 
-// One step of options.method (run_loop.hpp one_step) with the loads of options.loads.
-template <class Model>
-typename Model::Coordinates one_body_step(const Model& model, const typename Model::Coordinates& y, const SimulationOptions& o) {
-  return detail::one_step(model, y, o, detail::OneBodySchedule{o.loads});
-}
-
 }  // namespace rigiddyn

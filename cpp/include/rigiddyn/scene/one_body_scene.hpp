@@ -24,8 +24,8 @@ Scene one_body_scene(const Body& body, const Eigen::Vector3d& g_W, const std::ve
 Scene one_body_scene(const Body& body, const Eigen::Vector3d& g_W, const std::vector<AppliedLoad>& loads);
 
 // The layout compile_scene chooses for one_body_scene(body, g_W, loads) (a particle, a planar or a rigid body),
-// built from the two terms alone: no Scene, no checks of a whole scene, no SceneModel (step of a body builds one per
-// call). Throws as one_body_scene.
+// built from the two terms alone: no Scene, no checks of a whole scene, no SceneModel (step of a body builds one
+// whenever its body, gravity or loads change). Throws as one_body_scene.
 OneBodyModel one_body_layout(const Body& body, const Eigen::Vector3d& g_W, const std::vector<AppliedLoad>& loads);
 
 // The layout of `body` (of a kind that has one: std::monostate otherwise) under the compiled gravity and loads (those
