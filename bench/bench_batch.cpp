@@ -93,7 +93,7 @@ BatchTrajectory run_library(const Problem& problem, int threads) {
 }
 
 // ---- the hand-written loop: y = (p 3, q xyzw 4, v 3, w 3), I diagonal, no loads ---------------------------
-// The same equations as RigidBodyModel<PrincipalEuler, LoadKind::none> (models/rigid_body.hpp): ṗ = v,
+// The same equations as the free rigid body's layout in principal axes (scene/one_body_scene_model.hpp): ṗ = v,
 // q̇ = ½ q ⊗ (ω, 0), v̇ = 0, I1 ω̇1 = (I2 − I3) ω2 ω3 and cyclic (Euler's equations in principal axes, Craig,
 // "Rigid Body Dynamics" slides), classic RK4 then q ← q / |q| (as bench_dynamics.cpp's raw_rk4).
 struct HandBody {

@@ -4,6 +4,7 @@
 #include <benchmark/benchmark.h>
 
 #include "bench_common.hpp"
+#include "rigiddyn/scene/one_body_scene.hpp"
 #include "rigiddyn/simulate/simulate.hpp"
 
 #include <cmath>
@@ -187,32 +188,37 @@ void baseline(benchmark::State& state) {
 }
 
 // ---- rigiddyn: the library's model and integrator templates ------------------------------------
-// The model simulate() runs for this scene: a free body (no loads, no gravity: LoadKind::none, what
-// with_load_kind picks), as the baselines, whose run-time zero force stands for "no loads" too.
-template <class Integrator, class Euler>
-void library(benchmark::State& state, const Euler& euler) {
-  const RigidBodyModel<Euler, LoadKind::none> model(1.0, euler);
-  RigidBodyState s0;
-  s0.w_B = w0;
+// n steps of Integrator on the layout from the body state s0, per benchmark iteration
+template <class Integrator, class Layout>
+void steps_of(benchmark::State& state, const Layout& layout, const BodyState& s0) {
   const std::int64_t n = steps();
   for (auto _ : state) {
-    RigidBodyCoordinates y = to_coordinates(s0);
-    auto work = workspace<Integrator>(model, y);
-    for (std::int64_t i = 0; i < n; ++i) Integrator::step(model, y, h, work);
+    typename Layout::Coordinates y = layout.coordinates({s0}, 0.0);
+    auto work = workspace<Integrator>(layout, y);
+    for (std::int64_t i = 0; i < n; ++i) Integrator::step(layout, y, h, work);
     benchmark::DoNotOptimize(y);
   }
   state.SetItemsProcessed(state.iterations() * n);
 }
 
+// The model simulate() runs for a free body (no loads, no gravity), the layout of its one-body scene, as the baselines, whose run-time zero force stands for "no loads" too.
+template <class Integrator, class Euler>
+void library(benchmark::State& state, const RigidBody& body) {
+  RigidBodyState s0;
+  s0.w_B = w0;
+  using Layout = OneBodySceneModel<detail::RigidSlot<Euler, detail::FirstPlace>, OneBodyElements::none>;
+  steps_of<Integrator>(state, one_body_layout_as<Layout>(body, Eigen::Vector3d::Zero(), {}), s0);
+}
+
 template <class Integrator>
 void principal(benchmark::State& state) {
-  library<Integrator>(state, PrincipalEuler(Eigen::Vector3d(1.0, 2.0, 3.0)));
+  library<Integrator, PrincipalEuler>(state, RigidBody(1.0, Eigen::Vector3d(1.0, 2.0, 3.0)));
 }
 
 void full_rk4(benchmark::State& state) {
   Eigen::Matrix3d I;
   I << 1.0, 0.1, 0.0, 0.1, 2.0, 0.05, 0.0, 0.05, 3.0;
-  library<Rk4>(state, FullEuler(I));
+  library<Rk4, FullEuler>(state, RigidBody(1.0, I, InertiaCheck::allow_unrealizable));  // the baseline's test inertia
 }
 
 // baseline for the full inertia: the same hand-written RK4 with a 3x3 inverse-inertia product
@@ -255,7 +261,7 @@ void raw_full_rk4(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * n);
 }
 
-void sphere_rk4(benchmark::State& state) { library<Rk4>(state, SphericalEuler(2.0)); }
+void sphere_rk4(benchmark::State& state) { library<Rk4, SphericalEuler>(state, RigidBody(1.0, Eigen::Vector3d(2.0, 2.0, 2.0))); }
 void raw_sphere_rk4(benchmark::State& state) {
   const RawBody b = at_run_time(RawBody{{2.0, 2.0, 2.0}, {0.0, 0.0, 0.0}});  // the gyroscopic products multiply zero
   const std::int64_t n = steps();
@@ -269,15 +275,10 @@ void raw_sphere_rk4(benchmark::State& state) {
 
 // ---- particle and planar body under a force (RK4) ----------------------------------------------
 void particle_rk4(benchmark::State& state) {
-  ParticleModel model(Particle(2.0), standard_gravity());
-  const std::int64_t n = steps();
-  for (auto _ : state) {
-    ParticleCoordinates y = to_coordinates(ParticleState{Eigen::Vector3d::Zero(), Eigen::Vector3d(1, 2, 3)});
-    auto work = workspace<Rk4>(model, y);
-    for (std::int64_t i = 0; i < n; ++i) Rk4::step(model, y, h, work);
-    benchmark::DoNotOptimize(y);
-  }
-  state.SetItemsProcessed(state.iterations() * n);
+  using Layout = OneBodySceneModel<detail::ParticleSlot<detail::FirstPlace>, OneBodyElements::gravity>;
+  const Particle particle(2.0);
+  steps_of<Rk4>(state, one_body_layout_as<Layout>(particle, standard_gravity(), {}),
+                ParticleState{Eigen::Vector3d::Zero(), Eigen::Vector3d(1, 2, 3)});
 }
 void raw_particle_rk4(benchmark::State& state) {
   const double g[3] = {at_run_time(0.0), at_run_time(0.0), at_run_time(-9.81)}, m = at_run_time(2.0);
@@ -305,19 +306,10 @@ void raw_particle_rk4(benchmark::State& state) {
 }
 
 void planar_rk4(benchmark::State& state) {
-  PlanarBodyModel model(PlanarBody(2.0, 0.5));
-  ComLoads loads;
-  loads.f_B = Eigen::Vector3d(1.0, 0.5, 0.0);
-  loads.tau_B = Eigen::Vector3d(0, 0, 0.2);
-  model.set_loads(loads);
-  const std::int64_t n = steps();
-  for (auto _ : state) {
-    PlanarBodyCoordinates y = to_coordinates(PlanarBodyState{Eigen::Vector2d::Zero(), 0.0, Eigen::Vector2d(1, 0), 1.0});
-    auto work = workspace<Rk4>(model, y);
-    for (std::int64_t i = 0; i < n; ++i) Rk4::step(model, y, h, work);
-    benchmark::DoNotOptimize(y);
-  }
-  state.SetItemsProcessed(state.iterations() * n);
+  using Layout = OneBodySceneModel<detail::PlanarSlot<detail::FirstPlace>, OneBodyElements::gravity_and_loads>;
+  const AppliedLoad push{Eigen::Vector3d(1.0, 0.5, 0.0), Eigen::Vector3d(0.0, 0.0, 0.2), Frame::body};
+  steps_of<Rk4>(state, one_body_layout_as<Layout>(PlanarBody(2.0, 0.5), Eigen::Vector3d::Zero(), {push}),
+                PlanarBodyState{Eigen::Vector2d::Zero(), 0.0, Eigen::Vector2d(1, 0), 1.0});
 }
 void raw_planar_rk4(benchmark::State& state) {
   const double m = at_run_time(2.0), I = at_run_time(0.5), fb[2] = {at_run_time(1.0), at_run_time(0.5)},

@@ -17,7 +17,7 @@
 #include "bench_common.hpp"
 #include "rigiddyn/exact/free_body.hpp"
 #include "rigiddyn/integrators/method.hpp"
-#include "rigiddyn/models/rigid_body.hpp"
+#include "rigiddyn/scene/one_body_scene.hpp"
 
 namespace {
 
@@ -27,18 +27,20 @@ constexpr double kH = 0.01;
 
 std::int64_t steps() { return rigiddyn::bench::bench_size(100000, 1000); }
 
-// rigiddyn: n steps of Integrator on the rigid-body model simulate() runs for this scene (principal
-// form, no loads: LoadKind::none, what with_load_kind picks)
+// rigiddyn: n steps of Integrator on the model simulate() runs for this body, the layout of its one-body scene
+// (principal form, no element)
 template <class Integrator>
 void step_rigiddyn(benchmark::State& state) {
+  using Layout = rigiddyn::OneBodySceneModel<rigiddyn::detail::RigidSlot<rigiddyn::PrincipalEuler, rigiddyn::detail::FirstPlace>,
+                                             rigiddyn::OneBodyElements::none>;
   const std::int64_t n = steps();
-  const rigiddyn::RigidBodyModel<rigiddyn::PrincipalEuler, rigiddyn::LoadKind::none> model(1.0, rigiddyn::PrincipalEuler(kInertia));
+  const auto layout = rigiddyn::one_body_layout_as<Layout>(rigiddyn::RigidBody(1.0, kInertia), Eigen::Vector3d::Zero(), {});
   for (auto _ : state) {
     rigiddyn::RigidBodyState s0;
     s0.w_B = kW0;
-    rigiddyn::RigidBodyCoordinates y = rigiddyn::to_coordinates(s0);
-    auto work = rigiddyn::workspace<Integrator>(model, y);
-    for (std::int64_t i = 0; i < n; ++i) Integrator::step(model, y, kH, work);
+    Layout::Coordinates y = layout.coordinates({s0}, 0.0);
+    auto work = rigiddyn::workspace<Integrator>(layout, y);
+    for (std::int64_t i = 0; i < n; ++i) Integrator::step(layout, y, kH, work);
     benchmark::DoNotOptimize(y);
   }
   state.SetItemsProcessed(state.iterations() * n);

@@ -5,8 +5,9 @@
 //                                Coriolis terms inline and the same outputs: p, v, t and the three works.
 //   rotating_particle_scene_rk4  the generic SceneModel on the same scene (the terms through its visit),
 //                                vs the same hand loop: what the fast path saves.
-//   inertial_particle_rk4        today's ParticleModel (no frame: a term not declared costs nothing) vs the
-//                                same hand loop without frame terms (p, v and the work of gravity).
+//   inertial_particle_rk4        the particle's layout without a frame (a term not declared costs nothing; under
+//                                gravity alone the layout carries p, v and t, gravity's work exact from the
+//                                records) vs the same hand loop without frame terms (p, v and the work of gravity).
 // callgrind (instructions per step): every n-step loop is one out-of-line function (model_rk4<Model>,
 // hand_rotating_rk4, hand_inertial_rk4); per step = its inclusive Ir / (calls × n), n = 2000 under
 // RIGIDDYN_BENCH_SMALL=1:
@@ -17,7 +18,7 @@
 
 #include "bench_common.hpp"
 #include "rigiddyn/integrators/rk4.hpp"
-#include "rigiddyn/models/particle.hpp"
+#include "rigiddyn/scene/one_body_scene.hpp"
 #include "rigiddyn/scene/elements/fictitious_forces.hpp"
 #include "rigiddyn/scene/fast/rotating_frame_particle_model.hpp"
 #include "rigiddyn/scene/scene_model.hpp"
@@ -87,7 +88,7 @@ BENCH_NOINLINE void hand_rotating_rk4(double* y, std::int64_t n) {
   }
 }
 
-// RK4 on y = (p 3, v 3, W_g): v̇ = g, the power m g·v (ParticleModel's outputs)
+// RK4 on y = (p 3, v 3, W_g): v̇ = g, the power m g·v
 BENCH_NOINLINE void hand_inertial_rk4(double* y, std::int64_t n) {
   const double g[3] = {at_run_time(g_F[0]), at_run_time(g_F[1]), at_run_time(g_F[2])}, m = at_run_time(mass);
   auto rate_of = [&](const double* s, double* d) BASELINE_INLINE_LAMBDA {
@@ -194,11 +195,12 @@ void hand_rotating(benchmark::State& state) {
 }
 
 void inertial_particle_rk4(benchmark::State& state) {
-  const ParticleModel model(Particle(mass), g_F);
+  using Layout = OneBodySceneModel<detail::ParticleSlot<detail::FirstPlace>, OneBodyElements::gravity>;
+  const Layout layout = one_body_layout_as<Layout>(Particle(mass), g_F, {});
   const std::int64_t n = steps();
   for (auto _ : state) {
-    ParticleCoordinates y = to_coordinates(ParticleState{p0, v0});
-    model_rk4(model, y, n);
+    Layout::Coordinates y = layout.coordinates({ParticleState{p0, v0}}, 0.0);
+    model_rk4(layout, y, n);
     benchmark::DoNotOptimize(y);
   }
   state.SetItemsProcessed(state.iterations() * n);

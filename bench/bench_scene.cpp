@@ -11,10 +11,12 @@
 //   nbody_spheres_over_particles_rk4/N  the same scene with rigid spheres ("rigiddyn") over the particle
 //                                   scene ("baseline"): what attitude costs when it is irrelevant.
 //   swarm_spheres_over_particles_rk4/N  the same under UniformGravity only (no O(N²) sum to hide it).
-//   scene_free_rigid_body_rk4,      one body declared as a scene with no force model vs today's
-//   scene_free_particle_rk4         simulate(RigidBody / Particle, ...) (the public entries, both).
+//   scene_free_rigid_body_rk4,      one body declared as a scene with no force model vs
+//   scene_free_particle_rk4         simulate(RigidBody / Particle, ...) (the public entries, both; the body runs as
+//                                   its one-body scene, on the same layout: the two differ by the Trajectory the
+//                                   body's simulate reads from the scene's records).
 //   scene_generic_free_rigid_body_rk4  the same body with a declared zero Drag, which runs the generic
-//                                   SceneModel, vs today's simulate.
+//                                   SceneModel, vs the body's simulate (its layout).
 //   term_<element>/10               10 rigid bodies with one element ("rigiddyn") vs none ("baseline");
 //                                   ns/op is per body and evaluation (4 per RK4 step), so the difference
 //                                   of the two is the marginal cost of the term ("marginal" lines at exit).
@@ -257,7 +259,7 @@ void swarm_page_faults(benchmark::State& state) {
   state.counters["faults_per_step"] = static_cast<double>(after_first) / static_cast<double>(steps);
 }
 
-// ---- 4: one free body as a scene vs today's simulate ----------------------------------------------
+// ---- 4: one free body as a scene vs simulate of the body ----------------------------------------------
 std::int64_t one_body_steps() { return bench::bench_size(200000, 2000); }
 
 RigidBody principal_body() { return RigidBody(1.0, Eigen::Vector3d(1.0, 2.0, 3.0)); }
@@ -267,7 +269,7 @@ RigidBodyState spinning() {
   return s;
 }
 
-void today_rigid_body(benchmark::State& state) {
+void body_rigid_body(benchmark::State& state) {
   const RigidBody body = principal_body();
   const SimulationOptions o = run_options(one_body_steps());
   for (auto _ : state) benchmark::DoNotOptimize(simulate(body, spinning(), o));
@@ -290,7 +292,7 @@ void scene_rigid_body_generic(benchmark::State& state) { scene_rigid_body(state,
 
 const ParticleState moving_particle{Eigen::Vector3d::Zero(), Eigen::Vector3d(1.0, 2.0, 3.0)};
 
-void today_particle(benchmark::State& state) {
+void body_particle(benchmark::State& state) {
   const Particle particle(2.0);
   const SimulationOptions o = run_options(one_body_steps());
   for (auto _ : state) benchmark::DoNotOptimize(simulate(particle, moving_particle, o));
@@ -442,11 +444,11 @@ BENCHMARK(swarm_spheres)->Name("swarm_spheres_over_particles_rk4:rigiddyn")->App
 BENCHMARK(swarm_particles)->Name("swarm_spheres_over_particles_rk4:baseline")->Apply(size_10_100_1000);
 BENCHMARK(swarm_page_faults)->Name("swarm_spheres_page_faults_rk4/1000")->Iterations(3)->Unit(benchmark::kMillisecond);
 BENCHMARK(scene_rigid_body_fast)->Name("scene_free_rigid_body_rk4:rigiddyn");
-BENCHMARK(today_rigid_body)->Name("scene_free_rigid_body_rk4:baseline");
+BENCHMARK(body_rigid_body)->Name("scene_free_rigid_body_rk4:baseline");
 BENCHMARK(scene_rigid_body_generic)->Name("scene_generic_free_rigid_body_rk4:rigiddyn");
-BENCHMARK(today_rigid_body)->Name("scene_generic_free_rigid_body_rk4:baseline");
+BENCHMARK(body_rigid_body)->Name("scene_generic_free_rigid_body_rk4:baseline");
 BENCHMARK(scene_particle)->Name("scene_free_particle_rk4:rigiddyn");
-BENCHMARK(today_particle)->Name("scene_free_particle_rk4:baseline");
+BENCHMARK(body_particle)->Name("scene_free_particle_rk4:baseline");
 BENCHMARK(term_uniform_gravity)->Name("term_uniform_gravity:rigiddyn")->Arg(term_bodies);
 BENCHMARK(term_none)->Name("term_uniform_gravity:baseline")->Arg(term_bodies);
 BENCHMARK(term_point_mass_gravity)->Name("term_point_mass_gravity:rigiddyn")->Arg(term_bodies);

@@ -408,9 +408,8 @@ struct RecordColumn {
   const std::vector<double>* values;
 };
 
-// The recorded quantities of a body's run (Trajectory) or batch (BatchTrajectory), every one but t.
-template <class Records>
-std::vector<RecordColumn> body_record_columns(const Records& r) {
+// The recorded quantities of a batch of bodies on the SIMD path (BatchTrajectory), every one but t.
+inline std::vector<RecordColumn> record_columns(const BatchTrajectory& r) {
   return {{"p_W", &r.p_W},
           {"q_WB", &r.q_WB},
           {"v_W", &r.v_W},
@@ -441,8 +440,6 @@ std::vector<RecordColumn> scene_record_columns(const Records& r) {
           {"power", &r.power}};
 }
 
-inline std::vector<RecordColumn> record_columns(const Trajectory& r) { return body_record_columns(r); }
-inline std::vector<RecordColumn> record_columns(const BatchTrajectory& r) { return body_record_columns(r); }
 inline std::vector<RecordColumn> record_columns(const SceneSimulation& r) { return scene_record_columns(r); }
 inline std::vector<RecordColumn> record_columns(const BatchSceneSimulation& r) { return scene_record_columns(r); }
 

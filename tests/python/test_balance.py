@@ -236,15 +236,20 @@ def test_scene_energy_balance_matches_the_numpy_reference(error):
 
 def test_exact_method_balances_at_round_off():
     """The closed form of a free body keeps T, P and H up to the round-off of its records; with loads it does not
-    integrate their impulses and says so."""
+    integrate their impulses and says so. A particle under 'exact' runs its layout, whose kicks and drifts are exact
+    under a constant force and which integrates the impulses: its linear momentum balances at round-off."""
     r = rd.simulate(rd.RigidBody(1.0, I_B), rd.RigidBodyState(w_B=TUMBLING), 0.1, 500, method="exact", error=False)
     b = r.balance
     assert np.all(np.abs(b.energy) <= b.energy_round_off)
     assert np.all(b.angular_momentum <= b.angular_momentum_round_off)
     assert np.all(b.linear_momentum == 0.0)  # v stays (0, 0, 0) exactly
-    pushed = rd.simulate(rd.Particle(1.0), rd.ParticleState(), 0.1, 10, method="exact", error=False,
-                         loads=rd.AppliedLoad(force=[1.0, 0.0, 0.0]))
+    push = rd.AppliedLoad(force=[1.0, 0.0, 0.0])
+    pushed = rd.simulate(rd.RigidBody(1.0, I_B), rd.RigidBodyState(w_B=TUMBLING), 0.1, 10, method="exact", error=False,
+                         loads=push)
     assert pushed.balance.verdict["linear_momentum"].startswith("not applicable: the closed form")
+    particle = rd.simulate(rd.Particle(1.0), rd.ParticleState(), 0.1, 10, method="exact", error=False, loads=push)
+    assert particle.balance.verdict["linear_momentum"] == "closed"
+    assert np.all(particle.balance.linear_momentum <= particle.balance.linear_momentum_round_off)
 
 
 def test_splitting_dlm_keeps_the_angular_momentum_at_round_off():

@@ -83,13 +83,13 @@ RIGIDDYN_ALWAYS_INLINE void inverse_sqrt_in_place(V& x) {
 
 struct Sample {
   double mass;                // [kg]
-  double inverse_mass;        // 1/m [1/kg], as RigidBodyModel's
+  double inverse_mass;        // 1/m [1/kg]
   double dt;                  // [s]
   FullEuler euler;            // I about the centre of mass in B and I⁻¹ (FullEuler's, so the same inverse)
   EulerForm form;             // the form simulate uses (its records' I ω come from it)
   SphericalEuler spherical;   // I = s 1 with s = trace(I)/3, as with_euler_form builds it
   PrincipalEuler principal;   // diag(I)
-  Eigen::Vector3d f_W;        // f_W + m g_W [N] in W (RigidBodyModel's f_fixed_W_)
+  Eigen::Vector3d f_W;        // f_W + m g_W [N] in W
   Eigen::Vector3d tau_B;      // [N m] in B
   Eigen::Vector3d g_W;        // [m/s²] in W
   bool loaded;                // f_W + m g_W or tau_B non-zero: the work and v̇ need computing
@@ -119,7 +119,7 @@ struct LaneBodies {
 template <class V>
 using LaneCoordinates = std::array<V, 14>;
 
-// ẏ of RigidBodyModel<FullEuler, fixed>::rate in its operation order. Reads y[3..12]; without loads
+// ẏ of the equations above (simd_rigid_body.hpp), full inertia. Reads y[3..12]; without loads
 // (`loaded` false) leaves dy[7..9] and dy[13] unset (v̇ = 0 and Ẇ = 0 exactly: the RK4 update skips them).
 template <bool loaded, class V>
 RIGIDDYN_ALWAYS_INLINE void lane_rate(const LaneBodies<V>& b, const LaneCoordinates<V>& y, LaneCoordinates<V>& dy) {
@@ -159,7 +159,7 @@ RIGIDDYN_ALWAYS_INLINE void lane_stage(const LaneCoordinates<V>& y, const V& a, 
   for (int i = 10; i < 13; ++i) t[i] = y[i] + a * k[i];
 }
 
-// One step of classical RK4 (rk4_tableau, Rk4::step) then q ← q/|q| (RigidBodyModel::project).
+// One step of classical RK4 (rk4_tableau, Rk4::step) then q ← q/|q|.
 template <bool loaded, class V>
 RIGIDDYN_ALWAYS_INLINE void lane_rk4_step(const LaneBodies<V>& b, LaneCoordinates<V>& y) {
   LaneCoordinates<V> k1, k2, k3, k4, t;
@@ -188,7 +188,7 @@ RIGIDDYN_SIMD_CLONES RIGIDDYN_NOINLINE void lane_rk4_steps(const LaneBodies<V>& 
   y = z;
 }
 
-// ---- the records: the scalar path's expressions per sample (RigidBodyModel::record, append_record) -----------
+// ---- the records: the scalar path's expressions per sample ----------------------------------------------------
 
 // Writes row `row` of sample i: time t [s] and the record of the coordinates y.
 void put_record(BatchTrajectory& out, std::size_t i, std::size_t row, double t, const Sample& s, const RigidBodyCoordinates& y) {

@@ -25,17 +25,6 @@ EulerForm classify(const Eigen::Matrix3d& I) {
 
 }  // namespace
 
-LoadKind load_kind_of(const std::vector<AppliedLoad>& schedule, const Eigen::Vector3d& g_W) {
-  LoadKind kind = g_W.isZero(0.0) ? LoadKind::none : LoadKind::fixed;
-  for (const AppliedLoad& load : schedule) {
-    // a body-frame force or a world-frame torque turns with the body
-    const bool turning = load.frame == Frame::body ? !load.force.isZero(0.0) : !load.torque.isZero(0.0);
-    if (turning) return LoadKind::turning;
-    if (!(load.force.isZero(0.0) && load.torque.isZero(0.0))) kind = LoadKind::fixed;
-  }
-  return kind;
-}
-
 RigidBody::RigidBody(double mass, const Eigen::Matrix3d& inertia_com, InertiaCheck check)
     : mass_(mass), inertia_com_(0.5 * (inertia_com + inertia_com.transpose())) {
   // Validated by the inertia layer (same errors everywhere), but stored as given (its symmetric part),
@@ -66,15 +55,6 @@ RigidBodyCoordinates to_coordinates(const RigidBodyState& state, double work) {
   RigidBodyCoordinates y;
   y << state.p_W, state.q_WB.coeffs(), state.v_W, state.w_B, work;
   return y;
-}
-
-RigidBodyState to_rigid_body_state(const RigidBodyCoordinates& y) {
-  RigidBodyState state;
-  state.p_W = y.segment<3>(0);
-  state.q_WB = Eigen::Quaterniond(Eigen::Vector4d(y.segment<4>(3)));
-  state.v_W = y.segment<3>(7);
-  state.w_B = y.segment<3>(10);
-  return state;
 }
 
 }  // namespace rigiddyn

@@ -45,13 +45,13 @@ void check_names(const Scene& scene) {
   }
 }
 
-// The plan of the closed form ('exact') when the scene is one body of simulate(body, ...): at most one
-// UniformGravity (in the plane for a planar body, as the planar simulate requires) and at most one ScheduledLoads
-// through the centre of mass. Returns false otherwise.
+// The plan of method 'exact' on a scene of one free body (a particle, a planar or a rigid body) in W without a mass
+// flow under at most one UniformGravity (in the plane for a planar body) and at most one ScheduledLoads through the
+// centre of mass: the closed form for a rigid body, the layout's exact free flow and exact kicks for the others.
+// Returns false otherwise.
 bool one_body_plan(const Scene& scene, OneBodyPlan& plan) {
   if (scene.bodies.size() != 1 || is_pivoted(scene.bodies[0]) || body_traits(scene.bodies[0]).has_rotors ||
-      body_traits(scene.bodies[0]).is_linked || scene.frame ||
-      has_mass_flow(scene, 0)) {
+      body_traits(scene.bodies[0]).is_linked || scene.frame || has_mass_flow(scene, 0)) {
     return false;
   }
   for (std::size_t i = 0; i < scene.elements.size(); ++i) {
@@ -219,8 +219,8 @@ void check_exact(const Scene& scene, Method method, std::size_t extra_elements) 
            "and loads through it)");
   }
   OneBodyPlan plan;
-  // today's problems of one body (the closed form; constant forces through the centre of mass are exact
-  // in its kicks; a torque is refused when the run meets it, as by simulate(body, ...))
+  // one free body: the closed form of a rigid body, or the exact free flow of a particle or a planar body (constant
+  // forces through the centre of mass are exact in the kicks; a torque is refused when the run meets it)
   if (extra_elements > 0 || !one_body_plan(scene, plan)) {
     refuse("one torque-free body under at most uniform gravity and loads through its centre of mass (the closed form "
            "and constant forces)");
@@ -399,7 +399,7 @@ CompiledScene compile_scene(const Scene& scene, Method method) {
   out.method_ = method;
   const std::size_t element_count = terms.size();
   out.model_ = std::make_shared<const SceneModel>(scene.bodies, std::move(terms), scene.mass_flows, detail::body_names_of(scene));
-  if (method == Method::exact && one_body_plan(scene, out.plan_)) {
+  if (method == Method::exact && std::holds_alternative<RigidBody>(scene.bodies[0]) && one_body_plan(scene, out.plan_)) {
     out.path_ = ScenePath::one_body;  // the closed form
   } else if (auto layout = one_body_layout_of(scene, out.model_->terms()); layout.index() != 0) {
     out.path_ = ScenePath::one_body;

@@ -1,29 +1,24 @@
+// simulate of a particle, a planar body and a rigid body (simulate/simulate.hpp): the run of the body's one-body
+// scene (scene/one_body_scene.hpp) read as a Trajectory; the checks of the options and of a recording's size that
+// the runs of scenes share.
 #include "rigiddyn/simulate/simulate.hpp"
 
-#include "append_record.hpp"
-#include "run_rigid_body.hpp"
-
+#include "check_options.hpp"
 
 #include "rigiddyn/check.hpp"
-#include "rigiddyn/simulate/simulate_exact.hpp"
+#include "rigiddyn/scene/one_body_scene.hpp"
+#include "rigiddyn/scene/simulate_scene.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <limits>
 #include <string>
-#include <type_traits>
 #include <vector>
 
 namespace rigiddyn {
 
 namespace {
-
-// Doubles per record: t, p_W (3), q_WB (4), v_W (3), w_B (3), kinetic and total energy, |H_G|,
-// |q| - 1, work (append_record).
-constexpr double doubles_per_record = 19.0;
 
 // A recording smaller than this is reserved without asking how much memory is available (reading
 // it costs more than such a run); a failed reservation still throws std::bad_alloc.
@@ -81,11 +76,6 @@ void check_options(const SimulationOptions& o, bool stepping) {
   check_loads(o.loads);
 }
 
-double recording_bytes(std::int64_t steps, std::int64_t record_every) {
-  return (std::floor(static_cast<double>(steps) / static_cast<double>(record_every)) + 2.0) * doubles_per_record *
-         sizeof(double);
-}
-
 void check_recording_fits(double bytes, std::int64_t steps, std::int64_t record_every) {
   if (bytes > unchecked_recording_bytes) {
     const double available = available_memory_bytes();
@@ -98,26 +88,58 @@ void check_recording_fits(double bytes, std::int64_t steps, std::int64_t record_
   }
 }
 
-void reserve_records(Trajectory& out, std::int64_t steps, std::int64_t record_every) {
-  const double bytes = recording_bytes(steps, record_every);
-  check_recording_fits(bytes, steps, record_every);
-  const auto n = static_cast<std::size_t>(bytes / (doubles_per_record * sizeof(double)));
-  for (auto* v : {&out.t, &out.kinetic_energy, &out.total_energy, &out.angular_momentum_norm,
-                  &out.quaternion_norm_error, &out.work}) v->reserve(n);
-  for (auto* v : {&out.p_W, &out.v_W, &out.w_B}) v->reserve(3 * n);
-  out.q_WB.reserve(4 * n);
+namespace {
+
+// |H_G| = |I ω_B| [kg m²/s] about the centre of mass, I ω by the form of Euler's equations the body takes (0 for a
+// particle)
+double angular_momentum_norm(const Body& body, const Eigen::Vector3d& w_B) {
+  if (const auto* rigid = std::get_if<RigidBody>(&body)) {
+    return with_euler_form(*rigid, [&](const auto& euler) { return euler.momentum(w_B).norm(); });
+  }
+  if (const auto* planar = std::get_if<PlanarBody>(&body)) return std::abs(planar->inertia_zz() * w_B.z());
+  return 0.0;
 }
+
+// A body's records in the one-body layout of Trajectory: the scene run's, each element's work summed
+Trajectory trajectory_of(const Body& body, SceneSimulation&& run) {
+  Trajectory out;
+  const std::size_t n = run.size(), ne = static_cast<std::size_t>(run.element_count);
+  out.t = std::move(run.t), out.p_W = std::move(run.p_W), out.q_WB = std::move(run.q_WB);
+  out.v_W = std::move(run.v_W), out.w_B = std::move(run.w_B);
+  out.kinetic_energy = std::move(run.kinetic_energy), out.total_energy = std::move(run.total_energy);
+  out.angular_momentum_norm.resize(n), out.quaternion_norm_error.resize(n), out.work.assign(n, 0.0);
+  for (std::size_t r = 0; r < n; ++r) {
+    out.angular_momentum_norm[r] = angular_momentum_norm(body, Eigen::Vector3d(&out.w_B[3 * r]));
+    out.quaternion_norm_error[r] = Eigen::Vector4d(&out.q_WB[4 * r]).norm() - 1.0;
+    for (std::size_t e = 0; e < ne; ++e) out.work[r] += run.work[ne * r + e];
+  }
+  out.diverged = run.diverged, out.interrupted = run.interrupted, out.unconverged_steps = run.unconverged_steps;
+  out.elapsed_seconds = run.elapsed_seconds;
+  return out;
+}
+
+// simulate of the body's one-body scene (its gravity and loads declared as elements where they act)
+Trajectory simulate_one_body(const Body& body, const BodyState& initial, const SimulationOptions& o) {
+  check_options(o, true);
+  const Scene scene = one_body_scene(body, o.gravity_W, o.loads);
+  SimulationOptions scene_options = o;
+  scene_options.gravity_W.setZero();
+  scene_options.loads.clear();
+  return trajectory_of(body, simulate(compile_scene(scene, o.method), {initial}, scene_options));
+}
+
+}  // namespace
 
 Trajectory simulate(const RigidBody& body, const RigidBodyState& initial, const SimulationOptions& o) {
-  check_options(o, true);
-  if (o.method == Method::exact) return simulate_exact(body, initial, o);  // closed form, no stepping
-  const RigidBodyCoordinates y = to_coordinates(checked_state(initial, "initial"));
-  return with_euler_form(body, [&](const auto& euler) { return run_rigid_body(body.mass(), euler, y, o); });
+  return simulate_one_body(body, checked_state(initial, "initial"), o);
 }
 
-// the runs of the spherical and principal forms here, the full form's in simulate_rigid_full.cpp (built
-// in parallel: the three forms' 90 runs in one translation unit were its longest build)
-template Trajectory run_rigid_body(double, const SphericalEuler&, const RigidBodyCoordinates&, const SimulationOptions&);
-template Trajectory run_rigid_body(double, const PrincipalEuler&, const RigidBodyCoordinates&, const SimulationOptions&);
+Trajectory simulate(const Particle& particle, const ParticleState& initial, const SimulationOptions& o) {
+  return simulate_one_body(particle, checked_state(initial, "initial"), o);
+}
+
+Trajectory simulate(const PlanarBody& body, const PlanarBodyState& initial, const SimulationOptions& o) {
+  return simulate_one_body(body, checked_state(initial, "initial"), o);
+}
 
 }  // namespace rigiddyn

@@ -2,7 +2,7 @@
 // one-body scene (scene/one_body_scene.hpp), the model simulate of the body runs, built without compiling the scene.
 #include "rigiddyn/simulate/simulate.hpp"
 
-#include "append_record.hpp"
+#include "check_options.hpp"
 #include "step_one_body_model.hpp"
 
 #include "rigiddyn/scene/one_body_scene.hpp"

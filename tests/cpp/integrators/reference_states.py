@@ -67,10 +67,12 @@ def loads_of(model, kind, torque_free):
 
 # ---------------------------------------------------------------- models without attitude
 def velocity_verlet(model, y, h):
+    """Kick–drift–kick: the loads' exact flow over h/2 (their work the kinetic energy it gives), the free flow over
+    h, the loads' over h/2 (the splittings and the exact free flow on a body without a gyroscopic term)."""
     y = np.array(y, dtype=float)
-    model.kick(y, h / 2)
-    model.drift(y, h)
-    model.kick(y, h / 2)
+    model.loads_kick(y, h / 2)
+    model.free_flow(y, h)
+    model.loads_kick(y, h / 2)
     return y
 
 

@@ -1,13 +1,12 @@
 // Every integrator runs on a model whose Coordinates and Tangent are Eigen::VectorXd (a scene:
-// the integrators are written once for the one-body models and SceneModel). The test model
-// wraps a fixed-size one-body model: each member converts y to the fixed size, calls the wrapped
+// the integrators are written once for the fixed-size one-body layouts and SceneModel). The test model
+// wraps a one-body layout (scene/one_body_layouts.hpp): each member converts y to the fixed size, calls the wrapped
 // member and converts back, so the model arithmetic is the wrapped model's and only the integrators'
 // own work (stage sums, copies, the fixed-point iteration, the loads_kick/free_flow compositions)
 // runs on dynamic-size vectors. A run must then equal the fixed-size run bitwise, for every method.
+#include "rigiddyn/integrators/implicit_midpoint.hpp"
 #include "rigiddyn/integrators/method.hpp"
-#include "rigiddyn/models/particle.hpp"
-#include "rigiddyn/models/planar_body.hpp"
-#include "rigiddyn/models/rigid_body.hpp"
+#include "rigiddyn/scene/one_body_scene.hpp"
 
 #include <gtest/gtest.h>
 
@@ -32,18 +31,18 @@ class DynamicSize {
   void rate(const Coordinates& y, Coordinates& dy) const {
     apply_as<typename Fixed::Coordinates>(dy, [&](auto& f) { model_.rate(fixed(y), f); });
   }
-  static void project(Coordinates& y) { apply(y, [](auto& f) { Fixed::project(f); }); }
+  void project(Coordinates& y) const { apply(y, [&](auto& f) { model_.project(f); }); }
   void velocity(const Coordinates& y, Tangent& xi) const {
     apply_as<typename Fixed::Tangent>(xi, [&](auto& f) { model_.velocity(fixed(y), f); });
   }
-  static void retract(const Coordinates& y, const Tangent& theta, Coordinates& out) {
-    apply_as<typename Fixed::Coordinates>(out, [&](auto& f) { Fixed::retract(fixed(y), fixed_tangent(theta), f); });
+  void retract(const Coordinates& y, const Tangent& theta, Coordinates& out) const {
+    apply_as<typename Fixed::Coordinates>(out, [&](auto& f) { model_.retract(fixed(y), fixed_tangent(theta), f); });
   }
   void velocity_at(const Coordinates& y, const Tangent& theta, Tangent& xi) const {
     apply_as<typename Fixed::Tangent>(xi, [&](auto& f) { model_.velocity_at(fixed(y), fixed_tangent(theta), f); });
   }
-  static void dexp_inv(const Tangent& theta, Tangent& xi) {
-    apply_as<typename Fixed::Tangent>(xi, [&](auto& f) { Fixed::dexp_inv(fixed_tangent(theta), f); });
+  void dexp_inv(const Tangent& theta, Tangent& xi) const {
+    apply_as<typename Fixed::Tangent>(xi, [&](auto& f) { model_.dexp_inv(fixed_tangent(theta), f); });
   }
   void kick(Coordinates& y, double h) const { apply(y, [&](auto& f) { model_.kick(f, h); }); }
   void kick_implicit_gyroscopic(Coordinates& y, double h) const { apply(y, [&](auto& f) { model_.kick_implicit_gyroscopic(f, h); }); }
@@ -57,12 +56,9 @@ class DynamicSize {
   void free_flow(Coordinates& y, double h) const {
     apply(y, [&](auto& f) { model_.template free_flow<Rotation>(f, h); });
   }
-  // the hook only where the wrapped model has it (else ImplicitMidpoint's fixed point runs on VectorXd)
-  template <class M = Fixed, std::enable_if_t<has_implicit_midpoint_step<M>::value, int> = 0>
-  bool implicit_midpoint_step(Coordinates& y, double h) const {
-    bool converged = false;
-    apply(y, [&](auto& f) { converged = model_.implicit_midpoint_step(f, h); });
-    return converged;
+  // the implicit midpoint's correction of each iterate (a layout has it; its slot may leave the iterate as it is)
+  void midpoint_newton(const Coordinates& y0, const Coordinates& mid, Coordinates& next, double h) const {
+    apply(next, [&](auto& f) { model_.midpoint_newton(fixed(y0), fixed(mid), f, h); });
   }
 
  private:
@@ -86,9 +82,6 @@ class DynamicSize {
   static void apply(Coordinates& y, F&& f) { apply_as<typename Fixed::Coordinates>(y, f); }
   Fixed model_;
 };
-
-static_assert(has_implicit_midpoint_step<DynamicSize<RigidBodyModel<FullEuler>>>::value);
-static_assert(!has_implicit_midpoint_step<DynamicSize<ParticleModel>>::value);
 
 // n steps of Integrator from y0 on `model`; the message of the first exception (ExactFreeFlow under a torque)
 template <class Integrator, class Model>
@@ -124,54 +117,68 @@ void expect_dynamic_equals_fixed(const Fixed& model, const typename Fixed::Coord
   }
 }
 
-ComLoads some_loads(bool torque) {
-  ComLoads loads;
-  loads.f_W = Eigen::Vector3d(0.7, -1.3, 2.1);
-  loads.f_B = Eigen::Vector3d(-0.4, 0.9, 0.5);
-  if (torque) loads.tau_W = Eigen::Vector3d(-0.1, 0.45, -0.25), loads.tau_B = Eigen::Vector3d(0.3, -0.2, 0.35);
-  return loads;
+// Loads in both frames, forces and (with torque) torques, the second switching on inside the run (t = 0.37 s)
+std::vector<AppliedLoad> some_loads(bool torque) {
+  AppliedLoad world, body;
+  world.force = Eigen::Vector3d(0.7, -1.3, 2.1);
+  body.frame = Frame::body, body.force = Eigen::Vector3d(-0.4, 0.9, 0.5), body.t_start = 0.37;
+  if (torque) world.torque = Eigen::Vector3d(-0.1, 0.45, -0.25), body.torque = Eigen::Vector3d(0.3, -0.2, 0.35);
+  return {world, body};
 }
 
-RigidBodyCoordinates rigid_y0() {
+template <class Layout>
+void expect_layout(const Body& body, const BodyState& state, const Eigen::Vector3d& g_W, bool torque,
+                   const std::string& name) {
+  const Layout layout = one_body_layout_as<Layout>(body, g_W, some_loads(torque), 0.5);
+  expect_dynamic_equals_fixed(layout, layout.coordinates({state}, 0.5), name);
+}
+
+template <class Slot>
+using LoadedLayout = OneBodySceneModel<Slot, OneBodyElements::gravity_and_loads>;
+static_assert(has_midpoint_newton<DynamicSize<LoadedLayout<detail::RigidSlot<FullEuler, detail::FirstPlace>>>>::value);
+
+RigidBodyState rigid_state() {
   RigidBodyState s;
   s.p_W = Eigen::Vector3d(0.1, -0.2, 0.3);
   s.q_WB = Eigen::Quaterniond(0.9, 0.1, 0.2, 0.3).normalized();
   s.v_W = Eigen::Vector3d(1.0, -0.5, 2.0);
   s.w_B = Eigen::Vector3d(0.3, 2.0, -0.7);
-  return to_coordinates(s);
+  return s;
 }
 
 template <class Euler>
-void expect_rigid(const Euler& euler, const std::string& name) {
+void expect_rigid(const RigidBody& body, const std::string& name) {
+  using Layout = LoadedLayout<detail::RigidSlot<Euler, detail::FirstPlace>>;
   for (const bool torque : {false, true}) {
-    RigidBodyModel<Euler> model(1.5, euler, Eigen::Vector3d(0.0, 0.0, -9.81));
-    model.set_loads(some_loads(torque));
-    expect_dynamic_equals_fixed(model, rigid_y0(), name + (torque ? " with torques" : " forces only"));
+    expect_layout<Layout>(body, rigid_state(), Eigen::Vector3d(0.0, 0.0, -9.81), torque,
+                          name + (torque ? " with torques" : " forces only"));
   }
 }
 
-TEST(DynamicSize, ParticleStepsAsTheFixedSizeModel) {
-  ParticleModel model(Particle(2.0), Eigen::Vector3d(0.0, 0.0, -9.81));
-  model.set_loads(some_loads(false));
-  ParticleCoordinates y0;
-  y0 << 0.1, -0.2, 0.3, 1.0, -0.5, 2.0, 0.0;
-  expect_dynamic_equals_fixed(model, y0, "particle");
+TEST(DynamicSize, ParticleStepsAsItsLayout) {
+  ParticleState s{Eigen::Vector3d(0.1, -0.2, 0.3), Eigen::Vector3d(1.0, -0.5, 2.0)};
+  expect_layout<LoadedLayout<detail::ParticleSlot<detail::FirstPlace>>>(Particle(2.0), s, Eigen::Vector3d(0.0, 0.0, -9.81),
+                                                                       false, "particle");
 }
 
-TEST(DynamicSize, PlanarBodyStepsAsTheFixedSizeModel) {
-  PlanarBodyModel model(PlanarBody(2.0, 0.6), Eigen::Vector3d(0.0, -9.81, 0.0));
-  model.set_loads(some_loads(true));
-  PlanarBodyCoordinates y0;
-  y0 << 0.1, -0.2, 0.4, 1.0, -0.5, 1.7, 0.0;
-  expect_dynamic_equals_fixed(model, y0, "planar body");
+TEST(DynamicSize, PlanarBodyStepsAsItsLayout) {
+  // in-plane forces and torques about z only (what a planar body takes)
+  AppliedLoad world, body;
+  world.force = Eigen::Vector3d(0.7, -1.3, 0.0), world.torque = Eigen::Vector3d(0.0, 0.0, 0.45);
+  body.frame = Frame::body, body.force = Eigen::Vector3d(-0.4, 0.9, 0.0), body.torque = Eigen::Vector3d(0.0, 0.0, -0.2);
+  body.t_start = 0.37;
+  using Layout = LoadedLayout<detail::PlanarSlot<detail::FirstPlace>>;
+  const Layout layout = one_body_layout_as<Layout>(PlanarBody(2.0, 0.6), Eigen::Vector3d(0.0, -9.81, 0.0), {world, body}, 0.5);
+  PlanarBodyState s{Eigen::Vector2d(0.1, -0.2), 0.4, Eigen::Vector2d(1.0, -0.5), 1.7};
+  expect_dynamic_equals_fixed(layout, layout.coordinates({s}, 0.5), "planar body");
 }
 
-TEST(DynamicSize, RigidBodyStepsAsTheFixedSizeModelInEveryEulerForm) {
+TEST(DynamicSize, RigidBodyStepsAsItsLayoutInEveryEulerForm) {
   Eigen::Matrix3d full;
   full << 1.1, 0.12, -0.05, 0.12, 2.3, 0.08, -0.05, 0.08, 2.9;
-  expect_rigid(SphericalEuler(0.8), "sphere");
-  expect_rigid(PrincipalEuler(Eigen::Vector3d(1.1, 2.3, 2.9)), "principal");
-  expect_rigid(FullEuler(full), "full");
+  expect_rigid<SphericalEuler>(RigidBody(1.5, Eigen::Vector3d(0.8, 0.8, 0.8)), "sphere");
+  expect_rigid<PrincipalEuler>(RigidBody(1.5, Eigen::Vector3d(1.1, 2.3, 2.9)), "principal");
+  expect_rigid<FullEuler>(RigidBody(1.5, full), "full");
 }
 
 }  // namespace

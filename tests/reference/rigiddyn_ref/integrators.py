@@ -68,6 +68,18 @@ class ParticleModel:
         y[6] += h * (self.f @ y[3:6])
         y[0:3] += h * y[3:6]
 
+    def loads_kick(self, y, h):
+        """The exact flow of the loads part over h (the force constant): v kicked, the work by the kinetic energy
+        it gives, h f·v̄ with v̄ the mean velocity of the kick (work–energy principle, Craig)."""
+        dv = h * dyn.particle_acceleration(self.mass, self.f)
+        y[6] += h * (self.f @ (y[3:6] + dv / 2))
+        y[3:6] += dv
+
+    @staticmethod
+    def free_flow(y, h):
+        """The free part over h: p moved by v, no work."""
+        y[0:3] += h * y[3:6]
+
     def energies(self, y):
         """(kinetic, potential, |H_C|, |q|)."""
         return (0.5 * self.mass * y[3:6] @ y[3:6], dyn.potential_energy(self.mass, y[0:3], self.g_W),
@@ -107,6 +119,22 @@ class PlanarBodyModel:
     def drift(self, y, h):
         f, n = self._force_couple(y[2])
         y[6] += h * (f @ y[3:5] + n * y[5])
+        y[0:3] += h * y[3:6]
+
+    def loads_kick(self, y, h):
+        """The exact flow of the loads part over h (x, y and θ frozen, so the wrench is constant): the velocities
+        kicked, the work by the kinetic energy it gives, h (f·v̄ + n ω̄) with v̄, ω̄ the kick's mean velocities
+        (work–energy principle, Craig)."""
+        f, n = self._force_couple(y[2])
+        a, alpha = dyn.planar_accelerations(self.mass, self.inertia_zz, y[2], self.loads, self.g_W)
+        dv, dw = h * a, h * alpha
+        y[6] += h * (f @ (y[3:5] + dv / 2) + n * (y[5] + dw / 2))
+        y[3:5] += dv
+        y[5] += dw
+
+    @staticmethod
+    def free_flow(y, h):
+        """The free part over h: x, y and θ moved by the velocities, no work."""
         y[0:3] += h * y[3:6]
 
     def energies(self, y):

@@ -1,19 +1,19 @@
 // SIMD across samples: RK4 on many rigid bodies at once, in structure-of-arrays
 // form with one lane per sample, so that one vector instruction advances L samples by the same
-// operation. The per-sample arithmetic is that of the scalar path (RigidBodyModel<FullEuler, fixed>
-// stepped by Rk4, models/rigid_body.hpp and integrators/rk4.hpp), written once on a lane type (an
-// Eigen::Array<double, L, 1> or a generic vector of L doubles, SimdLanes), in the same operation order:
+// operation. The per-sample arithmetic is classical RK4 (integrators/rk4.hpp) on the Newton–Euler equations of a
+// rigid body under a constant force and torque, written once on a lane type (an Eigen::Array<double, L, 1> or a
+// generic vector of L doubles, SimdLanes):
 //   ṗ_W = v_W,  q̇_WB = ½ q_WB ⊗ (ω_B, 0),  v̇_W = (f_W + m g_W)/m,  ω̇_B = I⁻¹ (τ_B − ω_B × I ω_B),
 //   Ẇ = (f_W + m g_W)·v_W + τ_B·ω_B   (Newton–Euler about the centre of mass and the power of the loads,
 //                                     Craig, "Rigid Body Dynamics" slides)
-// then q renormalised after each step as Rk4 + RigidBodyModel::project do. The records (t, p_W, q_WB,
-// v_W, w_B, energies, |H_G|, |q| − 1, work) are computed per sample by the same expressions as the scalar
-// path's (simulate/simulate.hpp). The only differences from N scalar simulate(RigidBody, ...) calls are
-// round-offs: the scalar path uses the principal or spherical form of Euler's equations for a diagonal or
-// isotropic inertia, this path always the full form (a few ulps per derivative evaluation; for a full
-// inertia the operations are the same, and the results measured bitwise equal). In the row where a sample
-// is found non-finite, its non-finite entries may differ (e.g. the work of a sample without loads sharing
-// a block with loaded ones is NaN there, 0 in simulate's row).
+// then q renormalised after each step. The records (t, p_W, q_WB, v_W, w_B, energies, |H_G|, |q| − 1, work) are
+// computed per sample by the expressions of the scalar path's records (simulate/simulate.hpp). The only differences
+// from N scalar simulate(RigidBody, ...) calls (each the layout of the body's one-body scene) are round-offs: a few
+// ulps per derivative evaluation (the scalar path uses the principal or spherical form of Euler's equations for a
+// diagonal or isotropic inertia, this path always the full form; its operations are in their own order), carried
+// by the flow (tests/cpp/test_simd_rigid_body.cpp states the bound). In the row where a sample is found non-finite,
+// its non-finite entries may differ (e.g. the work of a sample without loads sharing a block with loaded ones is
+// NaN there, 0 in simulate's row).
 #pragma once
 #include "rigiddyn/batch/batch_result.hpp"
 #include "rigiddyn/batch/simulate_batch.hpp"  // BatchParameters

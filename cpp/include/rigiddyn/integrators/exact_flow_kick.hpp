@@ -17,8 +17,8 @@
 //   constant world-frame force and gravity).
 // ExactFreeFlow ("exact" in the registry, for `step` and models without attitude): the same step,
 //   for torque-free bodies only: throws std::invalid_argument if a couple acts. simulate() with
-//   Method::exact does not step at all: it evaluates the closed form at each record time
-//   (simulate/simulate_exact.hpp).
+//   Method::exact on one rigid body does not step at all: it evaluates the closed form at each record
+//   time (scene/compile.hpp, CompiledScene::closed_form).
 // Both are written once against the model interface (loads_kick, free_flow<ExactRotation>): for
 // models without a gyroscopic term (particle, planar body) they are velocity Verlet, exact for
 // constant loads (world-frame forces and couples) there.

@@ -25,10 +25,8 @@
 // Written once against the model interface, with one optional hook. A model may offer
 //   bool implicit_midpoint_step(Coordinates& y, double h) const
 // which takes the whole step by a solve of the midpoint equations that uses its structure and returns whether it
-// converged: RigidBodyModel's Newton iteration on ω̄ above (the Jacobian of Euler's equations gyroscopic_jacobian,
-// the attitude by the Cayley map midpoint_rotation, the stopping rule of implicit_midpoint_solver); the scene
-// model's fixed point below, which takes a kinematic tree by the variational midpoint method, its iterates mixed by
-// Anderson's method (scene/scene_model.hpp, scene/kinds/tree_slot.hpp). A model without the hook
+// converged: the scene model's fixed point below, which takes a kinematic tree by the variational midpoint method,
+// its iterates mixed by Anderson's method (scene/scene_model.hpp, scene/kinds/tree_slot.hpp). A model without the hook
 // (particle, planar body, any model whose coordinates are a vector space or whose derivative has no stiff
 // gyroscopic part) gets the fixed-point iteration ȳ = y0 + (h/2) rate(ȳ) on its rate() with the same tolerance and
 // cap, then y1 = 2ȳ − y0 and project(y1); a model that offers
@@ -54,17 +52,10 @@ inline constexpr double tolerance = 1e-14;  // last correction / size of the unk
 inline constexpr int max_iterations = 20;
 }  // namespace implicit_midpoint_solver
 
-// The Cayley map of the midpoint rule on q̇ = ½ q ⊗ (ω, 0): c = (1 + a)(1 − a)⁻¹, a = (h ω̄/4, 0).
-inline Eigen::Quaterniond midpoint_rotation(const Eigen::Vector3d& h_w) {
-  const Eigen::Vector3d a = 0.25 * h_w;
-  const double a2 = a.squaredNorm(), scale = 1.0 / (1.0 + a2);
-  return Eigen::Quaterniond((1.0 - a2) * scale, 2.0 * scale * a.x(), 2.0 * scale * a.y(), 2.0 * scale * a.z());
-}
-
 // The Newton step of a body's mean angular velocity ω̄ in the implicit midpoint's fixed point ȳ = y0 + (h/2) ẏ(ȳ)
 // (a model's midpoint_newton, above): next_w holds the map's ω0 + (h/2) ω̇(ȳ) at ω̄ = mid_w, and becomes
 //   ω̄ − J⁻¹ I (ω̄ − next_w),  J = I + (h/2)(ω̄^ I − (I ω̄)^)
-// the Jacobian of Euler's gyroscopic term (gyroscopic_jacobian): RigidBodyModel's Newton step, quadratic for a
+// the Jacobian of Euler's gyroscopic term (gyroscopic_jacobian): Newton's method, quadratic for a
 // torque-free body (the torque's dependence on the state left to the iteration), where the plain map contracts only
 // while (h/2)|∂ω̇/∂ω| < 1 (measured on I = (1, 2, 3): unconverged steps from h|ω| = 0.5, a wrong motion at 2). A
 // sphere has no gyroscopic term: its map is left as it is.
@@ -82,7 +73,7 @@ RIGIDDYN_ALWAYS_INLINE void midpoint_newton_correction(const Euler& euler, const
 
 // The implicit midpoint's mean attitude for the mean angular velocity ω̄ (xyzw quaternions): the midpoint rule on
 // q̇ = ½ q ⊗ (ω̄, 0), linear in q, solved exactly, q̄ = q0 ⊗ (1 − a)⁻¹ = q0 ⊗ (1, a)/(1 + |a|²), a = h ω̄/4, so that
-// 2q̄ − q0 = q0 ⊗ (1 + a)(1 − a)⁻¹ is the Cayley step of RigidBodyModel (midpoint_rotation); the plain map
+// 2q̄ − q0 = q0 ⊗ (1 + a)(1 − a)⁻¹ is the Cayley step of the midpoint rule; the plain map
 // contracts by h|ω|/4 an iterate only (20 iterates short of 1e-14 from h|ω| = 1).
 RIGIDDYN_ALWAYS_INLINE void midpoint_attitude(const double* q0, const double* w_bar, double h, double* q_bar) {
   const Eigen::Vector3d a = (0.25 * h) * Eigen::Vector3d(w_bar[0], w_bar[1], w_bar[2]);

@@ -81,7 +81,7 @@ RIGIDDYN_ALWAYS_INLINE Eigen::Vector3d solve_3x3(const Eigen::Vector3d& r0, cons
 //   J = I + τ (ω̂ I − (I ω)^),  column j: I e_j + τ (ω × I e_j − (I ω) × e_j)
 // (d(ω × I ω) = ω × I dω − (I ω) × dω). The one copy of the derivative of Euler's gyroscopic term:
 // the implicit kick (gyroscopic_newton_kick, τ = h) and the implicit midpoint rule's Newton step
-// (RigidBodyModel::implicit_midpoint_step, τ = h/2) both solve with it.
+// (midpoint_newton_correction, integrators/implicit_midpoint.hpp, τ = h/2) both solve with it.
 RIGIDDYN_ALWAYS_INLINE Eigen::Matrix3d gyroscopic_jacobian(const Eigen::Matrix3d& I, const Eigen::Vector3d& w,
                                                            const Eigen::Vector3d& Iw, double tau) {
   Eigen::Matrix3d J;

@@ -2,13 +2,13 @@
 // method is written once and compiles, per model, to what a hand-written loop would be (no virtual
 // call). A model is one or more bodies plus the loads held constant during the current step. Its state
 // lives on (vector space) × SO(3)^k and is stored as flat coordinates y (an Eigen vector, fixed-size
-// for the one-body models, Eigen::VectorXd for a scene: an integrator sizes its workspace from y once per
+// for the models of one body (scene/one_body_layouts.hpp), Eigen::VectorXd for any scene: an integrator sizes its workspace from y once per
 // run, integrators/workspace.hpp, and never default-constructs a vector to index it; unit quaternions
 // stored (x, y, z, w) inside y). Every member writes into vectors its caller sized, so that no evaluation
 // allocates (out never overlaps y or Θ); the
-// last coordinate of the one-body models is the work [J] done by the applied loads (gravity included)
-// since the start, integrated alongside the motion (dW/dt = power), so the work-energy equation
-// T2 − T1 = U12 (Craig, "Rigid Body Dynamics" slides) can be checked on any run.
+// coordinates carry the work [J] each element has done since the start where it has no closed form, integrated
+// alongside the motion (dW/dt = power), so the work-energy equation T2 − T1 = U12 (Craig, "Rigid Body Dynamics"
+// slides) can be checked on any run.
 //
 //   using Coordinates, Tangent;               e.g. Eigen::Matrix<double, nq, 1>, Eigen::Matrix<double, nv, 1>
 //   Eigen::Index tangent_count()              the size of ξ (a dynamic-size model only)
@@ -37,7 +37,7 @@
 //                                             attitude by the rotation flow Rotation (a tag of
 //                                             integrators/free_flow_tags.hpp: DlmRotation<normalise>,
 //                                             ExactRotation)
-//   RecordedState record(y)                   a uniform description for simulate's recorder
+//   void record(y, t, out)                    append the record of y at time t [s] to a SceneSimulation
 // and, optionally, bool implicit_midpoint_step(y, h): its own solve of the implicit midpoint rule
 // (integrators/implicit_midpoint.hpp), and bool kicks_merge(): true when two loads_kick at the same positions,
 // attitudes and t are one loads_kick of their summed h (the loads do not depend on the velocities, and no mass
@@ -49,21 +49,7 @@
 #include "rigiddyn/always_inline.hpp"  // RIGIDDYN_ALWAYS_INLINE, for every model and integrator function
 
 #include <Eigen/Core>
-#include <Eigen/Geometry>
 
 namespace rigiddyn {
-
-// What simulate records of any model, in the rigid-body layout (a particle has q = identity and
-// ω = 0; a planar body lives in the xy plane of W and turns about z).
-struct RecordedState {
-  Eigen::Vector3d p_W;            // centre of mass position in W [m]
-  Eigen::Quaterniond q_WB;        // attitude, as stored (norm not forced to 1)
-  Eigen::Vector3d v_W;            // centre of mass velocity in W [m/s]
-  Eigen::Vector3d w_B;            // angular velocity in B [rad/s]
-  double kinetic_energy;          // T = ½ m v·v + ½ ω·I ω [J]
-  double potential_energy;        // V = −m g·p_W of uniform gravity (0 without gravity) [J]
-  double angular_momentum_norm;   // |H_G| = |I ω| about the centre of mass [kg m²/s]
-  double work;                    // work of all applied loads and gravity since t0 [J]
-};
 
 }  // namespace rigiddyn

@@ -5,8 +5,8 @@
 // simulate runs (scene/one_body_layouts.hpp): the scene model's one-body layout (one particle, planar, rigid or
 // pinned planar body under at most one UniformGravity and one ScheduledLoads), or a fast model (scene/fast/: a
 // pivoted body under gravity and loads; a particle in a frame turning at a constant rate; a variable-mass particle
-// with one thrust) that runs through the same loop and records the same SceneSimulation; 'exact' on one body: the
-// closed form.
+// with one thrust) that runs through the same loop and records the same SceneSimulation; 'exact' on one rigid
+// body: the closed form of its torque-free motion.
 #pragma once
 #include "rigiddyn/integrators/method.hpp"
 #include "rigiddyn/scene/one_body_layouts.hpp"
@@ -27,8 +27,8 @@ std::string scene_features(Method method);
 // The name of an element spec's type in messages and records ("UniformGravity", ...; a FunctionForce's type_name).
 std::string element_type_name(const Element& element);
 
-// The closed form of method 'exact' on one body: simulate(body, state, options) with gravity_W and loads taken from
-// the scene's elements (indices of those elements, -1 when absent).
+// The closed form of method 'exact' on one rigid body: the torque-free motion with the constant gravity_W and loads
+// taken from the scene's elements (indices of those elements, -1 when absent).
 struct OneBodyPlan {
   Eigen::Vector3d gravity_W = Eigen::Vector3d::Zero();
   std::vector<AppliedLoad> loads;
@@ -56,11 +56,11 @@ class CompiledScene {
   // The generic model (simulate and step on the generic path).
   const SceneModel& model() const { return *model_; }
   // True when simulate runs a fixed-size model of one body (one_body_model(): a layout, the generic model's
-  // arithmetic and bitwise its motion, or a fast model) or, for 'exact', the closed form of simulate(body, ...)
-  // (one_body_plan() holds its gravity and loads; one_body_model() is then monostate).
+  // arithmetic and bitwise its motion, or a fast model) or, for 'exact' on one rigid body, the closed form of the
+  // torque-free motion (one_body_plan() holds its gravity and loads; one_body_model() is then monostate).
   bool one_body_path() const { return path_ == ScenePath::one_body; }
   const OneBodyModel& one_body_model() const { return *one_body_; }
-  // True when simulate runs the closed form ('exact' on a body of simulate(body, ...): one_body_plan)
+  // True when simulate runs the closed form ('exact' on one rigid body: one_body_plan)
   bool closed_form() const { return one_body_path() && one_body_->index() == 0; }
   const OneBodyPlan& one_body_plan() const { return plan_; }
   // The switch times of the run (their t_start/t_end): every load of every ScheduledLoads element, every element with

@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 
 #include <optional>
+#include <stdexcept>
 #include <vector>
 
 namespace rigiddyn {
@@ -27,6 +28,24 @@ Scene one_body_scene(const Body& body, const Eigen::Vector3d& g_W, const std::ve
 // built from the two terms alone: no Scene, no checks of a whole scene, no SceneModel (step of a body builds one
 // whenever its body, gravity or loads change). Throws as one_body_scene.
 OneBodyModel one_body_layout(const Body& body, const Eigen::Vector3d& g_W, const std::vector<AppliedLoad>& loads);
+
+// one_body_layout(body, g_W, loads) as its type Layout (an alternative of OneBodyModel's layouts, e.g.
+// OneBodySceneModel<detail::RigidSlot<PrincipalEuler, detail::FirstPlace>, OneBodyElements::none>) with the loads' piece
+// at t0 [s] set: a model to step directly with an integrator (Integrator::step(layout, y, h, work) from
+// layout.coordinates({state}, t0)). Throws std::invalid_argument when the body's layout is of another type, and as
+// one_body_scene.
+template <class Layout>
+Layout one_body_layout_as(const Body& body, const Eigen::Vector3d& g_W, const std::vector<AppliedLoad>& loads,
+                          double t0 = 0.0) {
+  const OneBodyModel one_body = one_body_layout(body, g_W, loads);
+  const Layout* layout = one_body_model_if<Layout>(one_body);
+  if (layout == nullptr) {
+    throw std::invalid_argument("Layout: expected the type of the body's layout (one_body_layout), got another");
+  }
+  Layout out = *layout;
+  out.set_time(t0);
+  return out;
+}
 
 // The layout of `body` (of a kind that has one: std::monostate otherwise) under the compiled gravity and loads (those
 // present, with their indices among the scene's elements) (one_body_layout.cpp)

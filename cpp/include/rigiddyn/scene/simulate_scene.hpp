@@ -24,9 +24,8 @@ namespace rigiddyn {
 // options.t0 for options.steps steps of options.method (which must be the method it was compiled for),
 // recording every options.record_every-th step (and the first and the last). A scene of one body
 // (CompiledScene::one_body_path) runs on the scene model's one-body layout (scene/one_body_layouts.hpp), which moves
-// the body bitwise as SceneModel does; 'exact' on one body runs the closed form of simulate(body, state, options)
-// with the scene's gravity and loads, the same states and energies bitwise (its work split between gravity,
-// m g·(p − p0), and the loads, the rest).
+// the body bitwise as SceneModel does; 'exact' on one rigid body runs the closed form of the torque-free motion under
+// the scene's constant gravity and loads (its records evaluated at the record times; no stepping).
 // Throws std::invalid_argument naming the argument for the checks of the one-body simulate (dt, steps,
 // record_every, t0, a recording too large) and: options.loads or options.gravity_W given (a scene
 // declares them as elements), another method, a wrong number of states or a state of another kind than

@@ -1,7 +1,7 @@
 // When a run calls SimulationOptions::monitor (simulate/simulate.hpp): about every monitor_period_seconds
 // of wall time, whatever a step costs (a one-body step of ~0.1 µs, a scene of many bodies of ~1 ms, a
 // Python force of any time), so that Ctrl-C and a stop request are answered as fast for an expensive step
-// as for a cheap one. The stepping loops (run_loop.hpp, simulate_exact.cpp, batch/simd_rigid_body.cpp) count
+// as for a cheap one. The stepping loops (run_loop.hpp, simulate/closed_form.cpp, batch/simd_rigid_body.cpp) count
 // steps between two calls; MonitorPace adapts that count to the wall time the steps took, one clock read
 // before and one after each call, never per step.
 #pragma once

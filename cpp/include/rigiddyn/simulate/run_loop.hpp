@@ -1,16 +1,15 @@
-// The stepping loop shared by every simulate and step (one body: simulate/simulate.hpp; a scene:
-// scene/simulate_scene.hpp), in rigiddyn::detail: compiled per (integrator, model), the runs of plain
-// steps as tight as a hand-written loop, steps that contain a switch time of a piecewise-constant
-// schedule split there (models/loads.hpp "Time discretisation").
+// The stepping loop shared by every simulate and step of a scene (scene/simulate_scene.hpp; a body runs as its
+// one-body scene), in rigiddyn::detail: compiled per (integrator, model), the runs of plain steps as tight as a
+// hand-written loop, steps that contain a switch time of a piecewise-constant schedule split there
+// (models/loads.hpp "Time discretisation").
 //
-// What differs between a one-body model and a scene is a `Pieces` policy:
+// What differs between the models is a `Pieces` policy (scene/simulate_scene.hpp: ScenePieces, FixedScenePieces):
 //   const std::vector<AppliedLoad>& schedule   every load whose t_start/t_end are switch times
 //   void set_piece(Model&, double t) const     sets the model's loads of the piece that contains t
 //   void at_time(Coordinates& y, double t) const
-//                                              after a (sub-)step that ends at t [s]: a model that
-//                                              carries t in y sets it to t (no accumulated rounding);
-//                                              a no-op otherwise (compiled away)
-// and the result type, filled by the overloads reserve/append_state found for it (by ADL).
+//                                              after a (sub-)step that ends at t [s]: sets y's t to t (no
+//                                              accumulated rounding)
+// and the result type, filled by the overload append_state found for it (by ADL).
 #pragma once
 #include "rigiddyn/always_inline.hpp"
 #include "rigiddyn/integrators/method.hpp"
@@ -32,15 +31,6 @@
 #endif
 
 namespace rigiddyn::detail {
-
-// The one-body policy (Pieces above): the loads of options.loads, no time in y.
-struct OneBodySchedule {
-  const std::vector<AppliedLoad>& schedule;
-  template <class Model>
-  void set_piece(Model& model, double t) const { model.set_loads(loads_at(schedule, t)); }
-  template <class Coordinates>
-  static void at_time(Coordinates& /*y*/, double /*t*/) {}
-};
 
 // The switch times of the run's schedule on its step grid t_i = t0 + i dt (grid_time): switch k at
 // time[k] falls in step step[k], the step from t_{j-1} to t_j with t_{j-1} <= time[k] < t_j; a switch

@@ -1,11 +1,11 @@
-// simulate: many fixed steps of one method on one body, recording every k-th state and
-// diagnostics. Usable from C++ directly; the Python binding releases the GIL around it.
-//
-// The method is chosen once (visit_method) and the Euler-equation form once (with_euler_form);
-// the loop below them is compiled per (model, method). Loads: see models/loads.hpp (piecewise
-// constant; a step that crosses a switch time is split there). The work of all loads and gravity is
-// integrated with the motion by the same method, so T(t) − T(t0) = work(t) up to the method's
-// error (work–energy principle T2 − T1 = U12, Craig, "Rigid Body Dynamics" slides).
+// simulate: many fixed steps of one method on one body, recording every k-th state and diagnostics; step: one
+// step. Usable from C++ directly; the Python binding releases the GIL around them. A body runs as the scene of that
+// body alone (scene/one_body_scene.hpp: the body, UniformGravity(gravity_W) and ScheduledLoads(loads) where they
+// act) on the model compile_scene chooses for it (a one-body layout; 'exact' on a rigid body: the closed form of the
+// torque-free motion). Loads: see models/loads.hpp (piecewise constant; a step that crosses a switch time is split
+// there). The work of all loads and gravity is integrated with the motion by the same method, so
+// T(t) − T(t0) = work(t) up to the method's error (work–energy principle T2 − T1 = U12, Craig, "Rigid Body
+// Dynamics" slides).
 #pragma once
 #include "rigiddyn/integrators/method.hpp"
 #include "rigiddyn/models/loads.hpp"
@@ -40,11 +40,6 @@ struct SimulationOptions {
   std::function<bool(std::int64_t steps_done)> monitor;
 };
 
-// The bytes a Trajectory of `steps` steps recorded every `record_every`-th holds (an upper bound:
-// steps / record_every + 2 records of 19 doubles each). simulate refuses a recording larger than
-// the memory available (std::invalid_argument naming record_every, with both figures).
-double recording_bytes(std::int64_t steps, std::int64_t record_every);
-
 // Records, one row per recorded step, row-major (n = size()):
 struct Trajectory {
   std::vector<double> t;                      // (n,) time [s]
@@ -68,8 +63,9 @@ struct Trajectory {
 
 // Throws std::invalid_argument naming the argument for dt <= 0, steps < 0, record_every < 1,
 // non-finite t0 or gravity, a bad state or load, a recording larger than the available memory
-// (record_every), and (particle, planar body) loads the model cannot take (torques on a particle;
-// out-of-plane forces, gravity or torques, for a planar body).
+// (record_every), loads the body cannot take (torques on a particle; out-of-plane forces, gravity or
+// torques, for a planar body) and, for 'exact' on a rigid body, loads other than constant world-frame
+// forces ("loads[i].torque", "loads[i].force", "loads").
 Trajectory simulate(const RigidBody& body, const RigidBodyState& initial, const SimulationOptions& options);
 Trajectory simulate(const Particle& particle, const ParticleState& initial, const SimulationOptions& options);
 Trajectory simulate(const PlanarBody& body, const PlanarBodyState& initial, const SimulationOptions& options);

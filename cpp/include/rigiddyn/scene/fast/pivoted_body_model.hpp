@@ -399,8 +399,8 @@ class PivotedBodyModel {
   ComLoads loads_;                // the loads of the current piece
   bool has_gravity_ = false;      // gravity exerts a torque about O (g ≠ 0 and c ≠ 0)
   bool has_loads_ = false, force_B_ = false, torque_W_ = false;  // the current piece: any load, f_B ≠ 0, τ_W ≠ 0
-  // The closed-form free rotation of I_O, built on the first exact free flow (as RigidBodyModel's: a model
-  // is stepped by one thread at a time).
+  // The closed-form free rotation of I_O, built on the first exact free flow (a model is stepped by one thread at a
+  // time).
   mutable std::optional<FreeRotationFlow> free_rotation_;
 };
 
