@@ -171,8 +171,8 @@ TEST(PivotedBodyModel, TorqueFreeAboutThePivotIsEulerPoinsotWithTheInertiaAboutO
 
 TEST(PivotedBodyModel, PivotAtTheCentreIsTheFreeRigidBody) {
   // c = 0: RK4 on the pivoted model takes the same steps as simulate of the free rigid body (its layout, principal
-  // form), with or without gravity (no moment about O = C). The two evaluate the same expressions; their round-off
-  // may differ by the compiler's contraction of each into FMAs: 16 ε per step (scaled), amplified by the flow.
+  // form), with or without gravity (no moment about O = C). The two evaluate the same equations, each written its own
+  // way, so their round-off differs (the order of the sums, the compiler's contraction into FMAs): 16 ε per step (scaled), amplified by the flow.
   const Eigen::Vector3d moments(1.0, 2.0, 3.0);
   const PivotedBody body(RigidBody(2.0, moments), Eigen::Vector3d::Zero());
   const PivotedBodyModel<PrincipalEuler> free_pivot(body, Eigen::Vector3d::Zero(), -1, {}, -1, 0);

@@ -220,7 +220,9 @@ def derived_tolerances(bound, body, run, gravity=None, i=-1):
     takes them, for quantities computed from record i of `run` when every scaled coordinate
     is within `bound` (|Δx_i| <= bound max(1, |x_i|)), plus their own evaluation (<= 8 eps each side):
     kinetic T = (m v.v + w.I w)/2: |ΔT| <= m |v|.s(v) bound + |I w|.s(w) bound;
-    potential V = -m g.p: |ΔV| <= m |g|.s(p) bound; |H| = |I w|: |Δ|H|| <= ||I|| |s(w)| bound
+    potential V = -m g.p: |ΔV| <= m |g|.s(p) bound; |H| = |I w|: |Δ|H|| <= ||I|| |s(w)| bound;
+    the work W: as integrated (within bound) or, under gravity alone, W = V(t0) - V(t) from the records
+    (|ΔW| <= ΔV(t0) + ΔV(t) + 2 eps |W|: the potentials' round-off, not the work's, sets it)
     (s(x) = max(1, |x_i|) componentwise, |.| componentwise, "." a dot product)."""
     s = lambda x: np.maximum(1.0, np.abs(x))  # noqa: E731
     records = run.body(0)
@@ -230,11 +232,14 @@ def derived_tolerances(bound, body, run, gravity=None, i=-1):
                else np.diag([0.0, 0.0, body.inertia_zz]) if isinstance(body, rd.PlanarBody) else np.zeros((3, 3)))
     g = np.zeros(3) if gravity is None else np.asarray(gravity, float)
     dT = bound * (mass * np.abs(v) @ s(v) + np.abs(inertia @ w) @ s(w)) + 16 * EPS * run.kinetic_energy[i]
-    dV = bound * mass * np.abs(g) @ s(p) + 16 * EPS * abs(mass * g @ p)
+    potential_error = lambda p: bound * mass * np.abs(g) @ s(p) + 16 * EPS * abs(mass * g @ p)  # noqa: E731
+    dV = potential_error(p)
+    work = float(np.sum(run.work[i]))
+    dW = bound * max(1.0, abs(work)) + dV + potential_error(records.p_W[0]) + 2 * EPS * abs(work)
     dH = bound * np.linalg.norm(inertia, 2) * np.linalg.norm(s(w)) + 16 * EPS * records.angular_momentum_norm[i]
     rel = lambda d, value: d / max(1.0, abs(value))  # noqa: E731
     return {"kinetic": rel(dT, run.kinetic_energy[i]), "total": rel(dT + dV, run.total_energy[i]),
-            "momentum": rel(dH, records.angular_momentum_norm[i])}
+            "momentum": rel(dH, records.angular_momentum_norm[i]), "work": rel(dW, work)}
 
 
 def body_condition(body):

@@ -7,8 +7,6 @@
 // J = m g s and K = m (p0 s + v0 s²/2 + g s³/6) × g about W's origin (H' = p × m g).
 #include "closed_form.hpp"
 
-#include "check_options.hpp"
-
 #include "rigiddyn/check.hpp"
 #include "rigiddyn/exact/free_body.hpp"
 #include "rigiddyn/scene/simulate_scene.hpp"

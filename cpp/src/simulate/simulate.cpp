@@ -63,33 +63,6 @@ std::string format_bytes(double bytes) {
   return text;
 }
 
-}  // namespace
-
-void check_options(const SimulationOptions& o, bool stepping) {
-  require_positive(o.dt, "dt");
-  require_finite(o.t0, "t0");
-  require_finite(o.gravity_W, "gravity");
-  if (stepping) {
-    if (o.steps < 0) throw_invalid("steps", "an integer >= 0", o.steps);
-    if (o.record_every < 1) throw_invalid("record_every", "an integer >= 1", o.record_every);
-  }
-  check_loads(o.loads);
-}
-
-void check_recording_fits(double bytes, std::int64_t steps, std::int64_t record_every) {
-  if (bytes > unchecked_recording_bytes) {
-    const double available = available_memory_bytes();
-    if (available >= 0.0 && bytes > available) {
-      throw std::invalid_argument("record_every: expected a recording that fits in the memory available (" +
-                                  format_bytes(available) + "), got record_every=" + std::to_string(record_every) +
-                                  " for steps=" + std::to_string(steps) + ", which would need " + format_bytes(bytes) +
-                                  "; record less often (a larger record_every)");
-    }
-  }
-}
-
-namespace {
-
 // |H_G| = |I ω_B| [kg m²/s] about the centre of mass, I ω by the form of Euler's equations the body takes (0 for a
 // particle)
 double angular_momentum_norm(const Body& body, const Eigen::Vector3d& w_B) {
@@ -129,6 +102,29 @@ Trajectory simulate_one_body(const Body& body, const BodyState& initial, const S
 }
 
 }  // namespace
+
+void check_options(const SimulationOptions& o, bool stepping) {
+  require_positive(o.dt, "dt");
+  require_finite(o.t0, "t0");
+  require_finite(o.gravity_W, "gravity");
+  if (stepping) {
+    if (o.steps < 0) throw_invalid("steps", "an integer >= 0", o.steps);
+    if (o.record_every < 1) throw_invalid("record_every", "an integer >= 1", o.record_every);
+  }
+  check_loads(o.loads);
+}
+
+void check_recording_fits(double bytes, std::int64_t steps, std::int64_t record_every) {
+  if (bytes > unchecked_recording_bytes) {
+    const double available = available_memory_bytes();
+    if (available >= 0.0 && bytes > available) {
+      throw std::invalid_argument("record_every: expected a recording that fits in the memory available (" +
+                                  format_bytes(available) + "), got record_every=" + std::to_string(record_every) +
+                                  " for steps=" + std::to_string(steps) + ", which would need " + format_bytes(bytes) +
+                                  "; record less often (a larger record_every)");
+    }
+  }
+}
 
 Trajectory simulate(const RigidBody& body, const RigidBodyState& initial, const SimulationOptions& o) {
   return simulate_one_body(body, checked_state(initial, "initial"), o);

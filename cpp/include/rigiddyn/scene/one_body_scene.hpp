@@ -10,6 +10,7 @@
 
 #include <optional>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace rigiddyn {
@@ -40,7 +41,8 @@ Layout one_body_layout_as(const Body& body, const Eigen::Vector3d& g_W, const st
   const OneBodyModel one_body = one_body_layout(body, g_W, loads);
   const Layout* layout = one_body_model_if<Layout>(one_body);
   if (layout == nullptr) {
-    throw std::invalid_argument("Layout: expected the type of the body's layout (one_body_layout), got another");
+    throw std::invalid_argument(std::string("one_body_layout_as: the layout of this ") + kind_name(body) +
+                                " under these elements is of another type than the one asked for");
   }
   Layout out = *layout;
   out.set_time(t0);

@@ -117,8 +117,9 @@ class ScheduledLoadsTerm {
     if (!acts_) return 0.0;
     Eigen::Vector3d f_W = loads_.f_W, tau_B = loads_.tau_B;
     if (turns_) {  // written out: Eigen's products were calls out of the layouts' inlined steps
-      f_W = loads_.f_W + times_3x3(k.R_WB, loads_.f_B);
-      tau_B = loads_.tau_B + transpose_times_3x3(k.R_WB, loads_.tau_W) + cross_3(point_B_, transpose_times_3x3(k.R_WB, f_W));
+      if (body_force_) f_W += times_3x3(k.R_WB, loads_.f_B);
+      if (world_torque_) tau_B += transpose_times_3x3(k.R_WB, loads_.tau_W);
+      if (off_centre_) tau_B += cross_3(point_B_, transpose_times_3x3(k.R_WB, f_W));
     }
     wrench.f_W += f_W;
     wrench.tau_B += tau_B;
@@ -170,7 +171,10 @@ class ScheduledLoadsTerm {
   void set_piece(const ComLoads& loads) {
     loads_ = loads;
     const bool force = !(loads.f_W.isZero(0.0) && loads.f_B.isZero(0.0));
-    turns_ = !(loads.f_B.isZero(0.0) && loads.tau_W.isZero(0.0)) || (force && !point_B_.isZero(0.0));
+    body_force_ = !loads.f_B.isZero(0.0);
+    world_torque_ = !loads.tau_W.isZero(0.0);
+    off_centre_ = force && !point_B_.isZero(0.0);
+    turns_ = body_force_ || world_torque_ || off_centre_;
     torque_ = !(loads.tau_B.isZero(0.0) && loads.tau_W.isZero(0.0));
     acts_ = force || torque_;
   }
@@ -182,6 +186,9 @@ class ScheduledLoadsTerm {
   bool acts_ = false;   // the piece has a load
   bool turns_ = false;  // it has a force in B, a torque in W or a force off the centre of mass: it reads R_WB
   bool torque_ = false; // it has a torque (in B or W)
+  // which of R f_B, Rᵀ τ_W and r_B × Rᵀ f_W the piece needs: a part that is zero is not evaluated (adding
+  // it would leave the sums as they are)
+  bool body_force_ = false, world_torque_ = false, off_centre_ = false;
 };
 
 }  // namespace rigiddyn
