@@ -86,6 +86,61 @@ py::object body_scene(py::handle model, py::handle initial, py::handle loads, py
   });
 }
 
+// A Scene's Python object, named so in the signature
+using SceneObject = py::typing::Union<Scene>;
+
+// Scene.of_body: the one-body scene of `body` (any kind simulate takes alone), without a state
+py::object one_body_scene_of(py::handle body, py::handle gravity, py::handle loads) {
+  if (is_gyrostat(body)) return gyrostat_scene(body, loads, gravity);
+  if (is_pivoted(body)) return pivoted_scene(body, loads, gravity);
+  if (py::isinstance<RigidBody>(body)) return one_body_scene(body.cast<const RigidBody&>(), as_gravity(gravity), loads);
+  if (py::isinstance<PlanarBody>(body)) return one_body_scene(body.cast<const PlanarBody&>(), as_gravity(gravity), loads);
+  if (py::isinstance<Particle>(body)) return one_body_scene(body.cast<const Particle&>(), as_gravity(gravity), loads);
+  py_io::throw_type_error("body", "a Particle, PlanarBody, RigidBody, PivotedBody, PivotedPlanarBody or Gyrostat", body);
+}
+SceneObject scene_of_body(py::handle body, py::handle gravity, py::handle loads) {
+  return py::reinterpret_borrow<SceneObject>(one_body_scene_of(body, gravity, loads));
+}
+
+constexpr const char* scene_of_body_doc = R"doc(The Scene that simulate(body, ..., gravity=, loads=) and step run for one body.
+
+The body alone in W (index 0), with UniformGravity(gravity) when gravity is not zero and ScheduledLoads(body=0,
+loads) when there are loads: each element declared only where it acts. A run of this scene gives the records of
+simulate(body, ...) bitwise. Use it to add elements to a body's run, or to compile it once for many runs.
+
+Parameters
+----------
+body : Particle, PlanarBody, RigidBody, PivotedBody, PivotedPlanarBody or Gyrostat
+    The body.
+gravity : None, bool, array_like, shape (3,), or pint.Quantity, optional
+    Uniform gravity g_W [m/s^2] in W: None or False none, True standard gravity (0, 0, -9.81); on a planar body
+    it must lie in the xy plane.
+loads : None, AppliedLoad or sequence of AppliedLoad, optional
+    The piecewise-constant schedule of applied loads (simulate's `loads`).
+
+Returns
+-------
+Scene
+    One body; its elements: UniformGravity, then ScheduledLoads, those that act.
+
+Raises
+------
+TypeError
+    `body` of another type, `loads` not AppliedLoads.
+ValueError
+    Naming `gravity` (not finite; out of a planar body's plane) or `loads[i]` (not finite; a load the body's kind
+    cannot take, e.g. a torque on a particle).
+
+Examples
+--------
+>>> scene = rd.Scene.of_body(rd.RigidBody(2.0, [1.0, 2.0, 3.0]), gravity=True)
+>>> [type(e).__name__ for e in scene.elements]
+['UniformGravity']
+>>> result = rd.simulate(scene, [rd.RigidBodyState(v_W=(1.0, 0.0, 0.0))], 0.01, steps=100, method="rk4")
+>>> result.p_W[-1, 0].round(6)  # x = v t, z = -g t² / 2
+array([ 1.   ,  0.   , -4.905])
+)doc";
+
 // A SceneResult's Python object, named so in the signature
 using SceneResultObject = py::typing::Union<SceneResult>;
 
@@ -802,6 +857,9 @@ Examples
 >>> rk4["order"], rk4["evaluations"], f"{rk4['stability_limit']:.6f}"  # 2 sqrt(2)
 (4, 4, '2.828427')
 )doc");
+  py::reinterpret_borrow<py::class_<Scene>>(m.attr("Scene"))
+      .def_static("of_body", &scene_of_body, py::arg("body"), py::arg("gravity") = py::none(),
+                  py::arg("loads") = py::none(), scene_of_body_doc);
 }
 
 }  // namespace rigiddyn::bindings

@@ -5488,6 +5488,47 @@ class Scene:
     Scene(bodies=[Particle(mass=1.0)], body_names=[None], elements=[UniformGravity(g_W=[0.0, 0.0, -9.81], bodies=None)])
     """
     __hash__: typing.ClassVar[None] = None
+    @staticmethod
+    def of_body(body: Particle | PlanarBody | RigidBody | PivotedBody | PivotedPlanarBody | Gyrostat, gravity: bool | numpy.typing.ArrayLike | _Quantity | None = None, loads: AppliedLoad | collections.abc.Sequence[AppliedLoad] | None = None) -> Scene:
+        """
+        The Scene that simulate(body, ..., gravity=, loads=) and step run for one body.
+        
+        The body alone in W (index 0), with UniformGravity(gravity) when gravity is not zero and ScheduledLoads(body=0,
+        loads) when there are loads: each element declared only where it acts. A run of this scene gives the records of
+        simulate(body, ...) bitwise. Use it to add elements to a body's run, or to compile it once for many runs.
+        
+        Parameters
+        ----------
+        body : Particle, PlanarBody, RigidBody, PivotedBody, PivotedPlanarBody or Gyrostat
+            The body.
+        gravity : None, bool, array_like, shape (3,), or pint.Quantity, optional
+            Uniform gravity g_W [m/s^2] in W: None or False none, True standard gravity (0, 0, -9.81); on a planar body
+            it must lie in the xy plane.
+        loads : None, AppliedLoad or sequence of AppliedLoad, optional
+            The piecewise-constant schedule of applied loads (simulate's `loads`).
+        
+        Returns
+        -------
+        Scene
+            One body; its elements: UniformGravity, then ScheduledLoads, those that act.
+        
+        Raises
+        ------
+        TypeError
+            `body` of another type, `loads` not AppliedLoads.
+        ValueError
+            Naming `gravity` (not finite; out of a planar body's plane) or `loads[i]` (not finite; a load the body's kind
+            cannot take, e.g. a torque on a particle).
+        
+        Examples
+        --------
+        >>> scene = rd.Scene.of_body(rd.RigidBody(2.0, [1.0, 2.0, 3.0]), gravity=True)
+        >>> [type(e).__name__ for e in scene.elements]
+        ['UniformGravity']
+        >>> result = rd.simulate(scene, [rd.RigidBodyState(v_W=(1.0, 0.0, 0.0))], 0.01, steps=100, method="rk4")
+        >>> result.p_W[-1, 0].round(6)  # x = v t, z = -g t² / 2
+        array([ 1.   ,  0.   , -4.905])
+        """
     def __eq__(self, other: typing.Any) -> typing.Any:
         ...
     def __getstate__(self) -> tuple[list, list, list, typing.Any, typing.Any]:

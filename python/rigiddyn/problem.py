@@ -338,14 +338,9 @@ class Problem(SceneFile):
 
     @property
     def scene(self) -> Any:
-        """The one-body Scene of the body: UniformGravity(gravity) when gravity is not zero and ScheduledLoads of the
-        loads when there are any (the scene simulate(body, ...) runs)."""
-        elements: list[Any] = []
-        if np.any(self.gravity):
-            elements.append(_core.UniformGravity(g_W=self.gravity))
-        if self.loads:
-            elements.append(_core.ScheduledLoads(body=0, loads=list(self.loads)))
-        return _core.Scene([self.body()], elements=elements)
+        """The one-body Scene of the body under the gravity and loads (Scene.of_body: the scene simulate(body, ...)
+        runs)."""
+        return _core.Scene.of_body(self.body(), gravity=self.gravity, loads=list(self.loads))
 
     @property
     def initial(self) -> list[Any]:

@@ -193,6 +193,49 @@ TEST(SceneBody, KinematicsOfEachKind) {
   EXPECT_TRUE(kp.w_B.isZero(0.0));
 }
 
+// A body's point in the spatial layer (body_kinematics.hpp): pose().act_point(r_B) moves at point_velocity_W(r_B) (the
+// central difference of the point along the body's motion p + v t, R exp(t [w_B]×)), which is the velocity at r_W of
+// the body's twist about its centre of mass in W's axes (R ω_B, v_W); a force f at the point, added as
+// Force::at_point(r_W, f), gives the body the moment r_B × Rᵀ f in B and the power f·ẋ.
+TEST(SceneBody, PointKinematicsAndWrenchInTheSpatialLayer) {
+  std::mt19937 rng(40);
+  for (int sample = 0; sample < 50; ++sample) {
+    BodyKinematics k;
+    k.p_W = random_vector(rng, 2.0), k.v_W = random_vector(rng, 1.0), k.w_B = random_vector(rng, 2.0);
+    set_attitude(k, random_rotation(rng));
+    const Eigen::Vector3d r_B = random_vector(rng, 1.0), f_W = random_vector(rng, 1.0);
+    const auto point_at = [&](double t) {
+      BodyKinematics moved = k;
+      moved.p_W = k.p_W + t * k.v_W;
+      set_attitude(moved, k.q_WB * Eigen::Quaterniond(Eigen::AngleAxisd(t * k.w_B.norm(), k.w_B.normalized())));
+      return moved.pose().act_point(r_B);
+    };
+    const Motion twist_W(k.R_WB * k.w_B, k.v_W);
+    const Eigen::Vector3d r_W = k.R_WB * r_B, xdot = k.point_velocity_W(r_B);
+    // the two forms of the point's velocity differ by the roundings of R (ω × r) and (R ω) × (R r) (a few eps of |ω| |r|
+    // <= 6.3 each) and R's departure from orthogonality: <= 16 eps (1 + |ω| |r|)
+    EXPECT_LT((twist_W.velocity_at(r_W) - xdot).norm(), 16 * kEps * (1.0 + k.w_B.norm() * r_B.norm()));
+    EXPECT_LT((point_at(0.0) - (k.p_W + r_W)).norm(), 8 * kEps * (k.p_W.norm() + r_B.norm()));
+    // truncation h²/6 |x⃛| <= h²/6 |ω|³ |r| <= 1e-10/6 · 3.5³ · 1.8 < 1.3e-9 (|ω| <= 2√3, |r| <= √3); rounding
+    // 2 · 16 eps |x| / (2h) with |x| <= 3√3 + √3 < 7: < 2.5e-9
+    constexpr double h = 1e-5;
+    EXPECT_LT((point_at(h) - point_at(-h) - 2.0 * h * xdot).norm() / (2.0 * h), 7e-9);
+    BodyWrench wrench;
+    wrench.add(k.R_WB, Force::at_point(r_W, f_W));
+    EXPECT_EQ(wrench.f_W, f_W);
+    const Eigen::Vector3d tau_B = r_B.cross(k.R_WB.transpose() * f_W);
+    // the two forms differ by the roundings of R r, the cross product and Rᵀ n (each a row sum of three products: <= 3
+    // eps of |r| |f|) and by R's departure from orthogonality (<= 4 eps): <= 16 eps |r| |f|
+    EXPECT_LT((wrench.tau_B - tau_B).norm(), 16 * kEps * r_B.norm() * f_W.norm());
+    // the power three ways: the pairing of the twist with the wrench, f·ẋ, f·v + τ·ω; each a sum of products of
+    // |f| |v| and |f| |r| |ω| (|ω| <= 4) rounded a few times each: <= 32 eps of their scale
+    const double power = f_W.dot(k.v_W) + wrench.tau_B.dot(k.w_B);
+    const double scale = 1.0 + f_W.norm() * (k.v_W.norm() + 4.0 * r_B.norm());
+    EXPECT_NEAR(twist_W.dot(Force::at_point(r_W, f_W)), power, 32 * kEps * scale);
+    EXPECT_NEAR(f_W.dot(xdot), power, 32 * kEps * scale);
+  }
+}
+
 TEST(SceneBody, CheckBodyIndex) {
   EXPECT_NO_THROW(check_body_index(3, 4, "x"));
   expect_error([] { check_body_index(4, 4, "elements[0].body_a"); }, "elements[0].body_a: expected a body index in [0, 4), got 4");

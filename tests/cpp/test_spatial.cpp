@@ -167,6 +167,36 @@ TEST(Transform, MotionActIsVelocityOfTheBodyPointAtTheNewOrigin) {
   }
 }
 
+TEST(Motion, VelocityAtIsTheMotionAboutTheShiftedPoint) {
+  // v + w × r is the linear part of the same motion expressed at the point r (a frame of the same axes, origin at r):
+  // X_OP = (1, r), m_P = X_OP⁻¹ m_O, by the dense matrix
+  Sampler s;
+  for (int i = 0; i < kSamples; ++i) {
+    const Motion m = s.motion();
+    const Eigen::Vector3d r = s.vector3(3.0);
+    const Transform X_OP(Eigen::Matrix3d::Identity(), r);
+    const Vector6d m_P = X_OP.motion_matrix().inverse() * m.to_vector();
+    EXPECT_TRUE(Near(m.velocity_at(r), Eigen::Vector3d(m_P.tail<3>())));
+  }
+  // hand-computed: 1 rad/s about z, the point 2 m along x moves at 2 m/s along y
+  EXPECT_TRUE(Near(Motion(Eigen::Vector3d(0, 0, 1), Eigen::Vector3d::Zero()).velocity_at(Eigen::Vector3d(2, 0, 0)),
+                   Eigen::Vector3d(0, 2, 0)));
+}
+
+TEST(Force, AtPointIsTheForceMovedFromItsPoint) {
+  // (r × f, f) is the pure force f at the point r, expressed at the reference point: X_OP* (0, f), X_OP = (1, r)
+  Sampler s;
+  for (int i = 0; i < kSamples; ++i) {
+    const Eigen::Vector3d r = s.vector3(3.0), f = s.vector3();
+    const Transform X_OP(Eigen::Matrix3d::Identity(), r);
+    EXPECT_TRUE(Near(Force::at_point(r, f).to_vector(), X_OP.force_matrix() * Force(Eigen::Vector3d::Zero(), f).to_vector()));
+    // its power on a motion is that of f on the velocity of its point (terms <= 16 (|w| |r| |f| <= √3 · 3√3 · √3):
+    // ~20 roundings of them, <= 7e-14 < kTol)
+    const Motion m = s.motion();
+    EXPECT_NEAR(m.dot(Force::at_point(r, f)), f.dot(m.velocity_at(r)), kTol);
+  }
+}
+
 TEST(Transform, StructuredActMatchesDenseMatrices) {
   Sampler s;
   for (int i = 0; i < kSamples; ++i) {

@@ -313,6 +313,7 @@ EXAMPLES = {
     "Scene": lambda: {}, "Scene.add_body": lambda: {"body": rd.Particle(1.0)},
     "Scene.add": lambda: {"element": rd.Drag(linear=0.1)}, "Scene.compile": lambda: {"method": "rk4"},
     "Scene.describe": lambda: {}, "Scene.to_toml": lambda: {},
+    "Scene.of_body": lambda: {"body": rd.RigidBody(1.0, I_BOX), "gravity": True, "loads": [rd.AppliedLoad(force=V)]},
     "CompiledScene": lambda: {"scene": _scene()}, "CompiledScene.describe": lambda: {},
     "SceneResult.to_dataframe": lambda: {}, "SceneResult.body": lambda: {"key": 0},
     "BatchSceneResult.body": lambda: {"key": 0},

@@ -1,8 +1,10 @@
 """One result type: the same free body under uniform gravity written four ways (a call of simulate with the body,
 a one-body Scene, a problem file, a scene file) runs the same one-body scene and gives a SceneResult with equal
-arrays, bitwise (the same numbers parsed, the same model, method and steps)."""
+arrays, bitwise (the same numbers parsed, the same model, method and steps); Scene.of_body gives the scene a body's
+simulate runs, for every kind."""
 
 import numpy as np
+import pytest
 
 import rigiddyn as rd
 
@@ -71,3 +73,44 @@ def test_a_body_four_ways_gives_one_result_type_with_equal_arrays(tmp_path):
             np.testing.assert_array_equal(getattr(other.body(0), name), getattr(call.body(0), name), strict=True,
                                           err_msg=name)
         assert other.balance == call.balance
+
+
+# every kind simulate takes alone, with a state; the gravity each can take (a planar body's in its plane); loads on
+# the free kinds
+KINDS = {
+    "particle": (rd.Particle(MASS), rd.ParticleState(p_W=P_W, v_W=V_W), True,
+                 [rd.AppliedLoad(force=(1.0, 0.0, 0.5), t_end=0.5)]),
+    "planar": (rd.PlanarBody(MASS, 0.3), rd.PlanarBodyState(v_W=(1.0, 0.5), omega=2.0), [0.0, -9.81, 0.0],
+               [rd.AppliedLoad(force=(1.0, 0.5, 0.0), torque=(0.0, 0.0, 0.2), frame="body")]),
+    "rigid": (rd.RigidBody(MASS, MOMENTS), rd.RigidBodyState(p_W=P_W, v_W=V_W, w_B=W_B), True,
+              [rd.AppliedLoad(torque=(0.1, 0.0, -0.2), frame="world", t_start=0.3)]),
+    "pivoted": (rd.PivotedBody(rd.RigidBody(1.0, [1.0, 1.0, 0.5]), p_OC_B=[0.0, 0.0, 0.2]),
+                rd.PivotedBodyState(q_WB=rd.axis_angle_to_quat([1.0, 0.0, 0.0], 0.3), w_B=[0.1, 0.0, 5.0]), True, None),
+    "pivoted_planar": (rd.PivotedPlanarBody(1.0, 0.5, [0.1, 0.2]), rd.PivotedPlanarBodyState(theta=0.3, omega=0.1),
+                       [0.0, -9.81, 0.0], None),
+    "gyrostat": (rd.Gyrostat(rd.RigidBody(100.0, [10.0, 12.0, 15.0]), [rd.Wheel([0, 0, 1], 0.05, motor_torque=0.01)]),
+                 rd.GyrostatState(w_B=W_B, wheel_speeds=[3.0]), None, None),
+}
+
+
+def test_scene_of_body_is_the_scene_simulate_runs_for_every_kind():
+    for kind, (body, state, gravity, loads) in KINDS.items():
+        scene = rd.Scene.of_body(body, gravity=gravity, loads=loads)
+        expected = [name for name, given in (("UniformGravity", gravity), ("ScheduledLoads", loads)) if given]
+        assert [type(e).__name__ for e in scene.elements] == expected, kind
+        call = rd.simulate(body, state, DT, 60, METHOD, gravity=gravity, loads=loads)
+        ran = rd.simulate(scene, [state], DT, 60, METHOD)
+        for name in ARRAYS + ("work", "power"):
+            np.testing.assert_array_equal(getattr(ran, name), getattr(call, name), strict=True, err_msg=f"{kind} {name}")
+        for name in BODY_ARRAYS:
+            np.testing.assert_array_equal(getattr(ran.body(0), name), getattr(call.body(0), name), strict=True,
+                                          err_msg=f"{kind} {name}")
+
+
+def test_scene_of_body_names_what_it_refuses():
+    with pytest.raises(TypeError, match="body"):
+        rd.Scene.of_body("a box")
+    with pytest.raises(ValueError, match="gravity"):
+        rd.Scene.of_body(rd.PlanarBody(1.0, 0.5), gravity=True)  # out of its plane
+    with pytest.raises(ValueError, match=r"loads\[0\]"):
+        rd.Scene.of_body(rd.Particle(1.0), loads=[rd.AppliedLoad(torque=(0.0, 0.0, 1.0))])

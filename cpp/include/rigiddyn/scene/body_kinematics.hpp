@@ -2,6 +2,8 @@
 // body's centre of mass G, the origin of its body frame B (docs/conventions.md "Body state").
 #pragma once
 #include "rigiddyn/always_inline.hpp"
+#include "rigiddyn/spatial/force.hpp"
+#include "rigiddyn/spatial/transform.hpp"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -37,6 +39,14 @@ struct BodyKinematics {
   Eigen::Matrix3d R_WB = Eigen::Matrix3d::Identity();
   const double* joint_q = nullptr;
   const double* joint_v = nullptr;
+
+  // X_WB, the body's pose (R_WB, p_W; the spatial layer's Transform): its point r_B [m] (from the centre of mass, in B)
+  // is at pose().act_point(r_B) in W. Valid where R_WB is (set_attitude).
+  Transform pose() const { return Transform::unchecked(R_WB, p_W); }
+  // The velocity [m/s] in W of the body's point r_B [m] (from the centre of mass, in B): its twist (w_B, v) at that
+  // point, v_W + R_WB (w_B × r_B) (Motion::velocity_at of the twist about the centre of mass, turned to W; written out,
+  // the form a spring's evaluation measured cheapest: a Motion built per call is kept in memory).
+  Eigen::Vector3d point_velocity_W(const Eigen::Vector3d& r_B) const { return v_W + R_WB * w_B.cross(r_B); }
 };
 
 // Sets the attitude of `k`: q_WB (a unit quaternion) and R_WB, its rotation matrix, which the elements use to
@@ -57,14 +67,21 @@ struct BodyWrench {
   RIGIDDYN_ALWAYS_INLINE BodyWrench(const Eigen::Vector3d& f_W_, const Eigen::Vector3d& tau_B_) : f_W(f_W_), tau_B(tau_B_) {}
   Eigen::Vector3d f_W = Eigen::Vector3d::Zero();
   Eigen::Vector3d tau_B = Eigen::Vector3d::Zero();
+
+  // Adds the spatial force F_W = (n, f) [N m, N] about the centre of mass in W's axes (Force::at_point of a force at a
+  // point r_W from it) to the body of attitude R_WB: f_W += f, tau_B += R_WBᵀ n.
+  void add(const Eigen::Matrix3d& R_WB, const Force& F_W) {
+    f_W += F_W.linear;
+    tau_B += R_WB.transpose() * F_W.angular;
+  }
 };
 
 // Adds the force f_W [N] (in W) acting at the body point point_B [m] (in B, from the centre of mass) to `wrench`:
-// f_W at the centre of mass and its moment tau_B = point_B × (R_WBᵀ f_W) about it; returns its power
-// f_W·v_W + tau_B·w_B [W].
+// f_W at the centre of mass and its moment tau_B = point_B × (R_WBᵀ f_W) about it (the force at the point, in B);
+// returns its power f_W·v_W + tau_B·w_B [W].
 inline double add_force_at_point(const BodyKinematics& body, const Eigen::Vector3d& f_W, const Eigen::Vector3d& point_B,
                                  BodyWrench& wrench) {
-  const Eigen::Vector3d tau_B = point_B.cross(body.R_WB.transpose() * f_W);
+  const Eigen::Vector3d tau_B = Force::at_point(point_B, body.R_WB.transpose() * f_W).angular;
   wrench.f_W += f_W;
   wrench.tau_B += tau_B;
   return f_W.dot(body.v_W) + tau_B.dot(body.w_B);

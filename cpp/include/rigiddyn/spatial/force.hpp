@@ -21,6 +21,9 @@ struct Force {
   Force(const Eigen::Vector3d& angular_, const Eigen::Vector3d& linear_) : angular(angular_), linear(linear_) {}
 
   static Force Zero() { return Force(); }
+  // The force f [N] acting at the point r [m] from the reference point, both in the frame of expression: (r × f, f),
+  // its moment about the reference point (Featherstone, ch. 2: a line force and its moment).
+  static Force at_point(const Eigen::Vector3d& r, const Eigen::Vector3d& f) { return Force(r.cross(f), f); }
   // [n; f] (6,) <-> Force.
   Vector6d to_vector() const {
     Vector6d out;

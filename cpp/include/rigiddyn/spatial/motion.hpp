@@ -53,6 +53,10 @@ struct Motion {
   }
   // Power pairing m . f = w . n + v . f [W]: invariant under change of frame.
   double dot(const Force& f) const { return angular.dot(f.angular) + linear.dot(f.linear); }
+
+  // The velocity [m/s] of the body-fixed point at r [m] from the reference point, both in the frame of expression:
+  // v + w × r (Featherstone, ch. 2: the same motion's linear part about a shifted point).
+  Eigen::Vector3d velocity_at(const Eigen::Vector3d& r) const { return linear + angular.cross(r); }
 };
 
 inline Motion operator*(double s, const Motion& m) { return m * s; }

@@ -21,6 +21,7 @@
 #include "rigiddyn/scene/element_fields.hpp"
 #include "rigiddyn/scene/element_traits.hpp"
 #include "rigiddyn/scene/elements/element_checks.hpp"
+#include "rigiddyn/spatial/motion.hpp"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -154,7 +155,7 @@ class AtmosphericDragTerm {
   // "<name>.bodies[k]: ..." for an index out of range or repeated.
   AtmosphericDragTerm(const AtmosphericDrag& spec, const std::vector<Body>& bodies, const std::string& name)
       : density0_(spec.density0), altitude0_(spec.altitude0), scale_height_(spec.scale_height), radius_(spec.radius),
-        p_W_(spec.p_W), omega_W_(spec.omega_W), half_drag_area_(0.5 * spec.drag_area), cp_B_(spec.cp_B),
+        p_W_(spec.p_W), air_W_(spec.omega_W, Eigen::Vector3d::Zero()), half_drag_area_(0.5 * spec.drag_area), cp_B_(spec.cp_B),
         bodies_(detail::resolve_bodies(spec.bodies, bodies.size(), name)), h_(spec.table_altitude),
         rho_(spec.table_density) {
     detail::require_nonnegative(spec.density0, name + ".density0");
@@ -187,7 +188,7 @@ class AtmosphericDragTerm {
     for (const int b : bodies_) {
       const BodyKinematics& body = kinematics[b];
       const Eigen::Vector3d r_W = body.p_W - p_W_;
-      const Eigen::Vector3d v_rel = body.v_W - omega_W_.cross(r_W);
+      const Eigen::Vector3d v_rel = body.v_W - air_W_.velocity_at(r_W);
       const Eigen::Vector3d f_W = (-half_drag_area_ * density(r_W.norm() - radius_) * v_rel.norm()) * v_rel;
       power += add_force_at_point(body, f_W, cp_B_, wrenches[b]);
     }
@@ -209,7 +210,8 @@ class AtmosphericDragTerm {
   }
 
   double density0_, altitude0_, scale_height_, radius_;
-  Eigen::Vector3d p_W_, omega_W_;
+  Eigen::Vector3d p_W_;
+  Motion air_W_;  // the atmosphere's twist about the central body's centre, in W: (omega_W, 0), turning with it
   double half_drag_area_;  // C_D A / 2 [m²]
   Eigen::Vector3d cp_B_;
   std::vector<int> bodies_;

@@ -81,12 +81,11 @@ class JointForce {
       const BodyKinematics& link = kinematics[link_];
       const Eigen::Vector3d along_W = link.R_WB * (tau * axis_L_);
       wrenches[link_].f_W += along_W;
-      wrenches[link_].tau_B -= c_L_.cross(tau * axis_L_);
+      wrenches[link_].tau_B += Force::at_point(-c_L_, tau * axis_L_).angular;
       if (parent_ >= 0) {
         const BodyKinematics& parent = kinematics[parent_];
-        const Eigen::Vector3d joint_W = link.p_W - link.R_WB * c_L_;  // L's origin in W
-        wrenches[parent_].f_W -= along_W;
-        wrenches[parent_].tau_B += parent.R_WB.transpose() * (joint_W - parent.p_W).cross(-along_W);
+        const Eigen::Vector3d joint_W = link.pose().act_point(-c_L_);  // L's origin in W
+        wrenches[parent_].add(parent.R_WB, Force::at_point(joint_W - parent.p_W, -along_W));
       }
     } else {
       add_couple_pair(link_, parent_, tau * axis_L_, kinematics, wrenches);

@@ -119,33 +119,33 @@ class SpringDamperTerm {
   // Adds f_a, its moment on a, and −f_a with its moment on b (none for a world anchor); returns the power
   // f_a·(ẋ_a − ẋ_b) [W] (= Σ f_W·v_W + tau_B·w_B over both bodies).
   double add_wrenches(double /*t*/, const std::vector<BodyKinematics>& kinematics, std::vector<BodyWrench>& wrenches) const {
+    // each end: its point x = p_W + R_WB r_B, its velocity ẋ (the body's twist at the point, point_velocity_W), and the
+    // force there moved to the body's centre of mass, in B (Force::at_point(r_B, R_WBᵀ f))
     const BodyKinematics& a = kinematics[a_];
     const Eigen::Vector3d r_a_W = a.R_WB * point_a_B_;  // from a's centre of mass to its point, in W
-    const Eigen::Vector3d xdot_a = a.v_W + a.R_WB * a.w_B.cross(point_a_B_);
-    Eigen::Vector3d d = a.p_W + r_a_W, relative_velocity = xdot_a;
+    Eigen::Vector3d d = a.p_W + r_a_W, relative_velocity = a.point_velocity_W(point_a_B_);
     if (b_ >= 0) {
       const BodyKinematics& b = kinematics[b_];
       d -= b.p_W + b.R_WB * point_b_;
-      relative_velocity -= b.v_W + b.R_WB * b.w_B.cross(point_b_);
+      relative_velocity -= b.point_velocity_W(point_b_);
     } else {
       d -= point_b_;
     }
     const Eigen::Vector3d f_a = force_on_a(d, relative_velocity);
     wrenches[a_].f_W += f_a;
-    wrenches[a_].tau_B += point_a_B_.cross(a.R_WB.transpose() * f_a);
+    wrenches[a_].tau_B += Force::at_point(point_a_B_, a.R_WB.transpose() * f_a).angular;
     if (b_ >= 0) {
       const BodyKinematics& b = kinematics[b_];
       wrenches[b_].f_W -= f_a;
-      wrenches[b_].tau_B -= point_b_.cross(b.R_WB.transpose() * f_a);
+      wrenches[b_].tau_B -= Force::at_point(point_b_, b.R_WB.transpose() * f_a).angular;
     }
     return f_a.dot(relative_velocity);
   }
 
   // V = ½ k (ℓ − ℓ0)² [J]
   double potential(const std::vector<BodyKinematics>& kinematics) const {
-    const BodyKinematics& a = kinematics[a_];
-    Eigen::Vector3d d = a.p_W + a.R_WB * point_a_B_;
-    d -= b_ >= 0 ? Eigen::Vector3d(kinematics[b_].p_W + kinematics[b_].R_WB * point_b_) : point_b_;
+    Eigen::Vector3d d = kinematics[a_].pose().act_point(point_a_B_);
+    d -= b_ >= 0 ? kinematics[b_].pose().act_point(point_b_) : point_b_;
     const double stretch = d.norm() - rest_length_;
     return 0.5 * k_ * stretch * stretch;
   }

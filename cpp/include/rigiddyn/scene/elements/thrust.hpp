@@ -140,7 +140,7 @@ class ThrustTerm {
     double power = f_W.dot(k.v_W);
     if (torque_) {
       const Eigen::Vector3d f_B = frame_ == Frame::body ? f : Eigen::Vector3d(k.R_WB.transpose() * f);
-      const Eigen::Vector3d tau_B = r_B_.cross(f_B);
+      const Eigen::Vector3d tau_B = Force::at_point(r_B_, f_B).angular;
       wrenches[body_].tau_B += tau_B;
       power += tau_B.dot(k.w_B);
     }
