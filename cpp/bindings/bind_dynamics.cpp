@@ -76,16 +76,6 @@ auto with_model(py::handle model, py::handle state, const char* state_name, F&& 
                           "Scene or CompiledScene", model);
 }
 
-// The one-body scene of a body with its uniform gravity and loads: a Particle, PlanarBody or RigidBody (`initial`
-// checked to be its state: TypeError naming it, or naming model for anything else), a pivoted body or a Gyrostat.
-py::object body_scene(py::handle model, py::handle initial, py::handle loads, py::handle gravity) {
-  if (is_gyrostat(model)) return gyrostat_scene(model, loads, gravity);
-  if (is_pivoted(model)) return pivoted_scene(model, loads, gravity);
-  return with_model(model, initial, "initial", [&](const auto& body, const auto&) {
-    return one_body_scene(body, as_gravity(gravity), loads);
-  });
-}
-
 // A Scene's Python object, named so in the signature
 using SceneObject = py::typing::Union<Scene>;
 
@@ -98,6 +88,14 @@ py::object one_body_scene_of(py::handle body, py::handle gravity, py::handle loa
   if (py::isinstance<Particle>(body)) return one_body_scene(body.cast<const Particle&>(), as_gravity(gravity), loads);
   py_io::throw_type_error("body", "a Particle, PlanarBody, RigidBody, PivotedBody, PivotedPlanarBody or Gyrostat", body);
 }
+
+// The one-body scene of a body with its uniform gravity and loads (one_body_scene_of), `initial` checked first to be
+// the state of a Particle, PlanarBody or RigidBody (TypeError naming it, or naming model for anything else).
+py::object body_scene(py::handle model, py::handle initial, py::handle loads, py::handle gravity) {
+  if (!is_gyrostat(model) && !is_pivoted(model)) with_model(model, initial, "initial", [](const auto&, const auto&) {});
+  return one_body_scene_of(model, gravity, loads);
+}
+
 SceneObject scene_of_body(py::handle body, py::handle gravity, py::handle loads) {
   return py::reinterpret_borrow<SceneObject>(one_body_scene_of(body, gravity, loads));
 }
