@@ -96,7 +96,7 @@ py::ssize_t sample_index(py::handle key, py::ssize_t n, const char* cls) {
 
 // The error item of a pickle state: a GlobalError or None (`what` names it in the message).
 py::object error_from_state(py::handle item, const std::string& what) {
-  if (!item.is_none() && !py::isinstance<GlobalError>(item)) py_io::throw_type_error(what, "a GlobalError or None", item);
+  if (!item.is_none() && !is_instance<GlobalError>(item)) py_io::throw_type_error(what, "a GlobalError or None", item);
   return py::reinterpret_borrow<py::object>(item);
 }
 
@@ -898,7 +898,7 @@ BatchSceneResult body_batch(py::handle model, py::handle initial, py::handle dt,
 // A scene given from Python (Scene or CompiledScene) compiled for `method` (None: a CompiledScene's own, a
 // Scene's rk4), as rigiddyn.simulate compiles it (a Scene's SceneCompatibilityWarnings raised here).
 CompiledScene compiled_scene(py::handle obj, py::handle method, const std::string& name) {
-  if (py::isinstance<Scene>(obj)) {
+  if (is_instance<Scene>(obj)) {
     const Method m = method.is_none() ? Method::rk4 : method_from_name(py_io::as_string(method, "method"), "method");
     CompiledScene compiled = compile_scene(obj.cast<const Scene&>(), m);
     const py::object warning = py::module_::import("rigiddyn._core").attr("SceneCompatibilityWarning");
@@ -922,7 +922,7 @@ CompiledScene compiled_scene(py::handle obj, py::handle method, const std::strin
 template <std::size_t... K>
 BodyState state_of_kind(py::handle obj, std::size_t kind, const std::string& name, std::index_sequence<K...>) {
   std::optional<BodyState> out;
-  ((kind == K && py::isinstance<std::variant_alternative_t<K, BodyState>>(obj)
+  ((kind == K && is_instance<std::variant_alternative_t<K, BodyState>>(obj)
         ? (void)(out = obj.cast<const std::variant_alternative_t<K, BodyState>&>())
         : void()),
    ...);

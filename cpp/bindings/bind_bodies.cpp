@@ -52,7 +52,7 @@ InertiaCheck as_inertia_check(py::handle check) {
 // RigidBody from (mass, principal moments (3,) or inertia_com (3, 3)) or from a SpatialInertia alone.
 RigidBody as_rigid_body(py::handle mass, py::handle inertia_com, py::handle check_arg) {
   const InertiaCheck check = as_inertia_check(check_arg);
-  if (py::isinstance<SpatialInertia>(mass)) {
+  if (is_instance<SpatialInertia>(mass)) {
     if (!inertia_com.is_none()) {
       py_io::throw_value_error("inertia_com", "None next to a SpatialInertia (it carries the inertia)",
                                py_io::describe(inertia_com));
@@ -128,13 +128,13 @@ py::object to_object(T&& value) {
 // with its checked state. TypeError naming body for anything else.
 template <class Rigid, class Planar, class ParticleF>
 py::object dispatch(py::handle body, py::handle state, Rigid rigid, Planar planar, ParticleF particle) {
-  if (py::isinstance<RigidBody>(body)) {
+  if (is_instance<RigidBody>(body)) {
     return to_object(rigid(body.cast<const RigidBody&>(), checked_state_of<RigidBodyState>(state, "RigidBody")));
   }
-  if (py::isinstance<PlanarBody>(body)) {
+  if (is_instance<PlanarBody>(body)) {
     return to_object(planar(body.cast<const PlanarBody&>(), checked_state_of<PlanarBodyState>(state, "PlanarBody")));
   }
-  if (py::isinstance<Particle>(body)) {
+  if (is_instance<Particle>(body)) {
     return to_object(particle(body.cast<const Particle&>(), checked_state_of<ParticleState>(state, "Particle")));
   }
   py_io::throw_type_error("body", "a RigidBody, PlanarBody or Particle", body);
@@ -1379,18 +1379,18 @@ void bind_dynamics_functions(py::module_& m) {
   m.def(
       "power",
       [](py::handle state, py::handle f_W, py::handle tau_B) -> py::object {
-        if (py::isinstance<RigidBodyState>(state)) {
+        if (is_instance<RigidBodyState>(state)) {
           const RigidBodyState& s = checked_state_of<RigidBodyState>(state, "RigidBody");
           return py::cast(finite_result(
               power(s, ComWrench{py_io::as_vector3(py_io::in_si(f_W, "N", "f_W"), "f_W"),
                                  py_io::as_vector3_or_zero(py_io::in_si(tau_B, "N*m", "tau_B"), "tau_B")}), "power"));
         }
-        if (py::isinstance<PlanarBodyState>(state)) {
+        if (is_instance<PlanarBodyState>(state)) {
           const PlanarBodyState& s = checked_state_of<PlanarBodyState>(state, "PlanarBody");
           const double tau = tau_B.is_none() ? 0.0 : py_io::as_scalar(py_io::in_si(tau_B, "N*m", "tau_B"), "tau_B");
           return py::cast(finite_result(power(s, PlanarWrench{py_io::as_vector2(py_io::in_si(f_W, "N", "f_W"), "f_W"), tau}), "power"));
         }
-        if (py::isinstance<ParticleState>(state)) {
+        if (is_instance<ParticleState>(state)) {
           const ParticleState& s = checked_state_of<ParticleState>(state, "Particle");
           require_none_for_particle(tau_B, "tau_B", "a point mass takes no torque");
           return py::cast(finite_result(power(s, py_io::as_vector3(py_io::in_si(f_W, "N", "f_W"), "f_W")), "power"));

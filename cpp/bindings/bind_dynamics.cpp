@@ -52,7 +52,7 @@ SimulationOptions as_options(py::handle dt, py::handle method, py::handle loads,
 
 // Whether `model` is a RigidBody, a PlanarBody or a Particle (the models with_model takes).
 bool is_one_body(py::handle model) {
-  return py::isinstance<RigidBody>(model) || py::isinstance<PlanarBody>(model) || py::isinstance<Particle>(model);
+  return is_instance<RigidBody>(model) || is_instance<PlanarBody>(model) || is_instance<Particle>(model);
 }
 
 // Calls f(body, state) with the model `model` is and its state `state` (argument `state_name`);
@@ -60,15 +60,15 @@ bool is_one_body(py::handle model) {
 template <class F>
 auto with_model(py::handle model, py::handle state, const char* state_name, F&& f)
     -> decltype(f(std::declval<const RigidBody&>(), std::declval<RigidBodyState&>())) {
-  if (py::isinstance<RigidBody>(model)) {
+  if (is_instance<RigidBody>(model)) {
     return f(model.cast<const RigidBody&>(),
              py_io::as_instance<RigidBodyState>(state, state_name, "a RigidBodyState (the state of a RigidBody)"));
   }
-  if (py::isinstance<PlanarBody>(model)) {
+  if (is_instance<PlanarBody>(model)) {
     return f(model.cast<const PlanarBody&>(),
              py_io::as_instance<PlanarBodyState>(state, state_name, "a PlanarBodyState (the state of a PlanarBody)"));
   }
-  if (py::isinstance<Particle>(model)) {
+  if (is_instance<Particle>(model)) {
     return f(model.cast<const Particle&>(),
              py_io::as_instance<ParticleState>(state, state_name, "a ParticleState (the state of a Particle)"));
   }
@@ -83,9 +83,9 @@ using SceneObject = py::typing::Union<Scene>;
 py::object one_body_scene_of(py::handle body, py::handle gravity, py::handle loads) {
   if (is_gyrostat(body)) return gyrostat_scene(body, loads, gravity);
   if (is_pivoted(body)) return pivoted_scene(body, loads, gravity);
-  if (py::isinstance<RigidBody>(body)) return one_body_scene(body.cast<const RigidBody&>(), as_gravity(gravity), loads);
-  if (py::isinstance<PlanarBody>(body)) return one_body_scene(body.cast<const PlanarBody&>(), as_gravity(gravity), loads);
-  if (py::isinstance<Particle>(body)) return one_body_scene(body.cast<const Particle&>(), as_gravity(gravity), loads);
+  if (is_instance<RigidBody>(body)) return one_body_scene(body.cast<const RigidBody&>(), as_gravity(gravity), loads);
+  if (is_instance<PlanarBody>(body)) return one_body_scene(body.cast<const PlanarBody&>(), as_gravity(gravity), loads);
+  if (is_instance<Particle>(body)) return one_body_scene(body.cast<const Particle&>(), as_gravity(gravity), loads);
   py_io::throw_type_error("body", "a Particle, PlanarBody, RigidBody, PivotedBody, PivotedPlanarBody or Gyrostat", body);
 }
 
@@ -634,7 +634,7 @@ Examples
       .def(
           "__eq__",
           [](const AppliedLoad& a, py::handle other) -> py::object {
-            if (!py::isinstance<AppliedLoad>(other)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
+            if (!is_instance<AppliedLoad>(other)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
             const AppliedLoad& b = other.cast<const AppliedLoad&>();
             return py::bool_(a.force == b.force && a.torque == b.torque && a.frame == b.frame &&
                              a.t_start == b.t_start && a.t_end == b.t_end);
@@ -772,7 +772,7 @@ Examples
       .def(
           "__eq__",
           [](const GlobalError& a, py::handle b) -> py::object {
-            if (!py::isinstance<GlobalError>(b)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
+            if (!is_instance<GlobalError>(b)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
             return py::bool_(same_error(a, b.cast<const GlobalError&>()));
           },
           py::arg("other"));

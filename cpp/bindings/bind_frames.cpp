@@ -44,7 +44,7 @@ std::shared_ptr<py::object> hold(py::object f) {
 // The value returned by a user motion: a FrameKinematics or a 6-sequence
 // (R_PF, w_PF_P, alpha_PF_P, p_PF_P, v_PF_P, a_PF_P).
 FrameKinematics kinematics_from_python(py::handle value) {
-  if (py::isinstance<FrameKinematics>(value)) return value.cast<FrameKinematics>();
+  if (is_instance<FrameKinematics>(value)) return value.cast<FrameKinematics>();
   if (!py::isinstance<py::sequence>(value) || py::isinstance<py::str>(value) || py::len(value) != 6) {
     py_io::throw_type_error("kinematics_at(t)",
                             "a FrameKinematics or a 6-tuple (R_PF, w_PF_P, alpha_PF_P, p_PF_P, v_PF_P, a_PF_P)", value);

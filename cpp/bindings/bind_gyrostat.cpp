@@ -115,11 +115,11 @@ array([0., 0., 1.])
 
 std::vector<Wheel> as_wheels(py::handle obj) {
   constexpr const char* expected = "a sequence of Wheel";
-  if (py::isinstance<Wheel>(obj)) return {obj.cast<Wheel>()};
+  if (is_instance<Wheel>(obj)) return {obj.cast<Wheel>()};
   if (py::isinstance<py::str>(obj) || !py::isinstance<py::iterable>(obj)) py_io::throw_type_error("wheels", expected, obj);
   std::vector<Wheel> out;
   for (py::handle item : obj) {
-    if (!py::isinstance<Wheel>(item)) {
+    if (!is_instance<Wheel>(item)) {
       py_io::throw_type_error("wheels[" + std::to_string(out.size()) + "]", "a Wheel", item);
     }
     out.push_back(item.cast<Wheel>());
@@ -339,7 +339,7 @@ array([100.])
 
 // ------------------------------------------------------------ the seams (bindings.hpp)
 
-bool is_gyrostat(py::handle body) { return py::isinstance<Gyrostat>(body); }
+bool is_gyrostat(py::handle body) { return is_instance<Gyrostat>(body); }
 
 py::object gyrostat_scene(py::handle model, py::handle loads, py::handle gravity) {
   return one_body_scene(model.cast<const Gyrostat&>(), as_gravity(gravity), loads);

@@ -398,7 +398,7 @@ SpatialInertia composite_py(py::handle parts) {
   const py::sequence items = py::reinterpret_borrow<py::sequence>(parts);
   if (py::len(items) == 0) throw py::value_error(std::string("parts: expected ") + expected + ", got an empty sequence");
   const bool pairs = py::isinstance<py::tuple>(items[0]);  // the first part sets the form of all
-  if (!pairs && !py::isinstance<SpatialInertia>(items[0])) {
+  if (!pairs && !is_instance<SpatialInertia>(items[0])) {
     py_io::throw_type_error("parts[0]", "a SpatialInertia or a (Transform X_AB, SpatialInertia) pair", items[0]);
   }
   std::vector<std::pair<Transform, SpatialInertia>> placed;

@@ -580,7 +580,7 @@ Holding the rod horizontal takes the torque m g L / 2 about the pin:
 // ------------------------------------------------------------ the seams (pivoted.hpp)
 
 bool is_pivoted(py::handle body) {
-  return py::isinstance<PivotedBody>(body) || py::isinstance<PivotedPlanarBody>(body);
+  return is_instance<PivotedBody>(body) || is_instance<PivotedPlanarBody>(body);
 }
 
 // The lines of forward_dynamics' and inverse_dynamics' docstrings on the pivoted bodies (bind_bodies.cpp).
@@ -596,7 +596,7 @@ const char* const pivoted_inverse_dynamics_doc =
 py::object pivoted_forward_dynamics_py(py::handle body, py::handle state, py::handle force, py::handle torque,
                                        py::handle point, py::handle frame_arg, py::handle gravity) {
   const Frame frame = as_frame(frame_arg);
-  if (py::isinstance<PivotedBody>(body)) {
+  if (is_instance<PivotedBody>(body)) {
     const auto& b = body.cast<const PivotedBody&>();
     const PivotedBodyState s = checked_state_of<PivotedBodyState>(state, "PivotedBody");
     const ComWrench w = wrench_at_com(s.q_WB, py_io::as_vector3_or_zero(py_io::in_si(force, "N", "force"), "force"),
@@ -621,7 +621,7 @@ py::object pivoted_inverse_dynamics_py(py::handle body, py::handle state, py::ha
     py_io::throw_value_error("a_W", "None for a pivoted body (the pivot fixes the centre of mass's acceleration)",
                              py_io::describe(a_W));
   }
-  if (py::isinstance<PivotedBody>(body)) {
+  if (is_instance<PivotedBody>(body)) {
     const auto& b = body.cast<const PivotedBody&>();
     const PivotedBodyState s = checked_state_of<PivotedBodyState>(state, "PivotedBody");
     const PivotedTorque r = inverse_dynamics(
@@ -636,7 +636,7 @@ py::object pivoted_inverse_dynamics_py(py::handle body, py::handle state, py::ha
 }
 
 py::object pivoted_scene(py::handle model, py::handle loads, py::handle gravity) {
-  if (py::isinstance<PivotedBody>(model)) return one_body_scene(model.cast<const PivotedBody&>(), as_gravity(gravity), loads);
+  if (is_instance<PivotedBody>(model)) return one_body_scene(model.cast<const PivotedBody&>(), as_gravity(gravity), loads);
   return one_body_scene(model.cast<const PivotedPlanarBody&>(), as_in_plane_gravity(gravity), loads);
 }
 

@@ -45,7 +45,7 @@ PyObject* scene_compatibility_warning = nullptr;
 template <class... B>
 Body body_from(py::handle obj, const std::string& name, std::variant<B...>*) {
   std::optional<Body> out;
-  ((!out && py::isinstance<B>(obj) ? (void)(out = obj.cast<const B&>()) : void()), ...);
+  ((!out && is_instance<B>(obj) ? (void)(out = obj.cast<const B&>()) : void()), ...);
   if (!out) {
     py_io::throw_type_error(name, "a Particle, PlanarBody, RigidBody, PivotedBody, PivotedPlanarBody, Gyrostat or TreeLink", obj);
   }
@@ -64,7 +64,7 @@ template <std::size_t... K>
 BodyState state_of_kind(py::handle obj, std::size_t kind, const std::string& name, const std::string& expected,
                         std::index_sequence<K...>) {
   std::optional<BodyState> out;
-  ((kind == K && py::isinstance<std::variant_alternative_t<K, BodyState>>(obj)
+  ((kind == K && is_instance<std::variant_alternative_t<K, BodyState>>(obj)
         ? (void)(out = obj.cast<const std::variant_alternative_t<K, BodyState>&>())
         : void()),
    ...);
@@ -264,7 +264,7 @@ Method as_method_name(py::handle method) { return method_from_name(py_io::as_str
 // The compiled model a run of `model` uses: a CompiledScene itself (method None or its own), or a Scene
 // compiled for `method` (None: rk4), with its warnings.
 CompiledSceneHandle compiled_for(py::handle model, py::handle method) {
-  if (py::isinstance<CompiledSceneHandle>(model)) {
+  if (is_instance<CompiledSceneHandle>(model)) {
     const auto& h = model.cast<const CompiledSceneHandle&>();
     if (!method.is_none() && as_method_name(method) != h.method) {
       py_io::throw_value_error("method", "None or '" + method_info(h.method).name + "' (the method `model` was compiled for)",
@@ -416,7 +416,7 @@ SceneResult scene_result_from_state(const py::tuple& t) {
   if (t.size() >= wheels + 1) r.error = py::reinterpret_borrow<py::object>(t[wheels]);  // a GlobalError or None
   if (t.size() >= wheels + 2 && !t[wheels + 1].is_none()) r.balance = checked_balance(t[wheels + 1], "SceneResult pickle balance");
   if (t.size() >= wheels + 3 && !t[wheels + 2].is_none()) {
-    if (!py::isinstance<ToleranceChoice>(t[wheels + 2])) {
+    if (!is_instance<ToleranceChoice>(t[wheels + 2])) {
       py_io::throw_type_error("SceneResult pickle choice", "a ToleranceChoice or None", t[wheels + 2]);
     }
     r.choice = py::reinterpret_borrow<py::object>(t[wheels + 2]);
@@ -714,7 +714,7 @@ True
 }  // namespace
 
 bool is_scene(py::handle model) {
-  return py::isinstance<Scene>(model) || py::isinstance<CompiledSceneHandle>(model);
+  return is_instance<Scene>(model) || is_instance<CompiledSceneHandle>(model);
 }
 
 // Why a scene's momentum balances do not apply to its run ("" when they do; rigiddyn._balance): a force the impulses
@@ -790,7 +790,7 @@ py::object simulate_scene_to_tolerance(py::handle model, py::handle method, cons
     refuse_tolerance(opaque, "a force the core cannot see into may switch inside a step, which the global error "
                              "estimate cannot check (it is never called reliable); pass dt= and read result.error");
   }
-  const bool fixed = py::isinstance<CompiledSceneHandle>(model) || !method.is_none();
+  const bool fixed = is_instance<CompiledSceneHandle>(model) || !method.is_none();
   std::vector<CompiledSceneHandle> compiled;
   std::vector<ToleranceCandidate> candidates;
   for (const Method m : fixed ? std::vector<Method>{given.method} : tolerance_methods()) {
@@ -1119,7 +1119,7 @@ void bind_scene(py::module_& m) {
       .def(
           "__eq__",
           [](const Scene& a, py::handle b) -> py::object {
-            if (!py::isinstance<Scene>(b)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
+            if (!is_instance<Scene>(b)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
             return py::bool_(same_scene(a, b.cast<const Scene&>()));
           },
           py::arg("other"));
@@ -1172,7 +1172,7 @@ void bind_scene(py::module_& m) {
       .def(
           "__eq__",
           [](const CompiledSceneHandle& a, py::handle b) -> py::object {
-            if (!py::isinstance<CompiledSceneHandle>(b)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
+            if (!is_instance<CompiledSceneHandle>(b)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
             const auto& other = b.cast<const CompiledSceneHandle&>();
             return py::bool_(a.method == other.method && same_scene(a.scene, other.scene));
           },

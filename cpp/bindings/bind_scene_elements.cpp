@@ -368,7 +368,7 @@ void bind_element(py::module_& m, const char* name, const char* text, const char
   cls.def(
       "__eq__",
       [](const Spec& a, py::handle b) -> py::object {
-        if (!py::isinstance<Spec>(b)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
+        if (!is_instance<Spec>(b)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
         return py::bool_(same_values(values_of(a), values_of(b.cast<const Spec&>())));
       },
       py::arg("other"));
@@ -440,7 +440,7 @@ std::string element_class_names(std::variant<Spec...>*) {
 template <class... T>
 Element element_from(py::handle obj, const std::string& name, std::variant<T...>*) {
   std::optional<Element> out;
-  ((py::isinstance<T>(obj) ? (void)(out = obj.cast<const T&>()) : void()), ...);
+  ((is_instance<T>(obj) ? (void)(out = obj.cast<const T&>()) : void()), ...);
   if (!out) {
     py_io::throw_type_error(name, "a force element (" + element_class_names(static_cast<Element*>(nullptr)) + ")", obj);
   }

@@ -59,7 +59,7 @@ Transform checked(const Transform& X, const char* quantity) {
 // other b (so Python raises its TypeError, or tries b's reflected operator).
 template <class T, class Op>
 py::object binary_operator(const T& a, py::handle b, const char* quantity, Op op) {
-  if (!py::isinstance<T>(b)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
+  if (!is_instance<T>(b)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
   return py::cast(checked(op(a, b.cast<const T&>()), quantity));
 }
 
@@ -363,8 +363,8 @@ void bind_force(py::module_& m) {
 // A Transform's action on a Motion or a Force (TypeError naming spatial_vector otherwise), checked.
 template <class Act>
 py::object act_on(py::handle spatial_vector, const char* quantity, Act act) {
-  if (py::isinstance<Motion>(spatial_vector)) return py::cast(checked(act(as_motion(spatial_vector, "spatial_vector")), quantity));
-  if (py::isinstance<Force>(spatial_vector)) return py::cast(checked(act(as_force(spatial_vector, "spatial_vector")), quantity));
+  if (is_instance<Motion>(spatial_vector)) return py::cast(checked(act(as_motion(spatial_vector, "spatial_vector")), quantity));
+  if (is_instance<Force>(spatial_vector)) return py::cast(checked(act(as_force(spatial_vector, "spatial_vector")), quantity));
   py_io::throw_type_error("spatial_vector", "a Motion or a Force", spatial_vector);
 }
 

@@ -306,7 +306,7 @@ void bind_tolerance(py::module_& m) {
       .def(
           "__eq__",
           [](const ToleranceChoice& a, py::handle b) -> py::object {
-            if (!py::isinstance<ToleranceChoice>(b)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
+            if (!is_instance<ToleranceChoice>(b)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
             // the states' reprs: NaN equal to NaN, floats to the last bit
             return py::bool_(py::repr(choice_state(a)).cast<std::string>() ==
                              py::repr(choice_state(b.cast<const ToleranceChoice&>())).cast<std::string>());

@@ -59,11 +59,11 @@ TreeWorkspace& workspace_for(const Tree& tree) {
 
 // One of the joint classes.
 Joint as_joint(py::handle obj) {
-  if (py::isinstance<RevoluteJoint>(obj)) return obj.cast<RevoluteJoint>();
-  if (py::isinstance<PrismaticJoint>(obj)) return obj.cast<PrismaticJoint>();
-  if (py::isinstance<SphericalJoint>(obj)) return obj.cast<SphericalJoint>();
-  if (py::isinstance<FreeJoint>(obj)) return obj.cast<FreeJoint>();
-  if (py::isinstance<FixedJoint>(obj)) return obj.cast<FixedJoint>();
+  if (is_instance<RevoluteJoint>(obj)) return obj.cast<RevoluteJoint>();
+  if (is_instance<PrismaticJoint>(obj)) return obj.cast<PrismaticJoint>();
+  if (is_instance<SphericalJoint>(obj)) return obj.cast<SphericalJoint>();
+  if (is_instance<FreeJoint>(obj)) return obj.cast<FreeJoint>();
+  if (is_instance<FixedJoint>(obj)) return obj.cast<FixedJoint>();
   py_io::throw_type_error("joint", "a RevoluteJoint, PrismaticJoint, SphericalJoint, FreeJoint or FixedJoint", obj);
 }
 

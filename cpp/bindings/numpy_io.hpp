@@ -27,6 +27,7 @@
 #include <utility>
 #include <vector>
 
+#include "is_instance.hpp"
 #include "rigiddyn/check.hpp"
 
 namespace rigiddyn::py_io {
@@ -89,7 +90,7 @@ E as_choice(py::handle obj, const std::string& name, std::initializer_list<std::
 // TypeError "<name>: expected <expected>, got ..." otherwise.
 template <class T>
 T& as_instance(py::handle obj, const std::string& name, const std::string& expected) {
-  if (!py::isinstance<T>(obj)) throw_type_error(name, expected, obj);
+  if (!is_instance<T>(obj)) throw_type_error(name, expected, obj);
   return obj.cast<T&>();
 }
 // A value of the bound enum T (a copy: pybind11's enum caster may hold the value itself, so a reference would

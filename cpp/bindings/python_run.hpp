@@ -5,7 +5,7 @@
 #pragma once
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
-#include <unistd.h>
+#include <pthread.h>
 
 #include <algorithm>
 #include <array>
@@ -40,12 +40,12 @@ inline std::vector<AppliedLoad> as_loads(pybind11::handle obj, const std::string
   constexpr const char* expected = "None, an AppliedLoad or a sequence of AppliedLoad";
   std::vector<AppliedLoad> loads;
   if (obj.is_none()) return loads;
-  if (py::isinstance<AppliedLoad>(obj)) return {obj.cast<AppliedLoad>()};
+  if (is_instance<AppliedLoad>(obj)) return {obj.cast<AppliedLoad>()};
   if (py::isinstance<py::str>(obj) || py::isinstance<py::bytes>(obj) || !py::isinstance<py::iterable>(obj)) {
     py_io::throw_type_error(name, expected, obj);
   }
   for (py::handle item : obj) {
-    if (!py::isinstance<AppliedLoad>(item)) py_io::throw_type_error(name, std::string(expected) + " (items)", item);
+    if (!is_instance<AppliedLoad>(item)) py_io::throw_type_error(name, std::string(expected) + " (items)", item);
     loads.push_back(item.cast<AppliedLoad>());
   }
   return loads;
@@ -352,14 +352,14 @@ class PythonMonitor {
         main_thread_(PyThread_get_thread_ident() == main_thread_ident()),
         next_call_(std::chrono::steady_clock::now() + (progress_ ? std::chrono::milliseconds(0) : period)) {}
 
-  // threading.main_thread().ident, looked up once per process (a fork makes its calling thread the child's main
-  // thread: the process id tells a child from its parent).
+  // threading.main_thread().ident, looked up once per process: a fork makes its calling thread the child's main
+  // thread, so the child forgets the parent's (a handler the fork runs in the child; no thread's ident is 0).
+  // Asking the process id at every call instead would cost a system call per run.
   static unsigned long main_thread_ident() {
-    static long pid = -1;
     static unsigned long ident = 0;
-    if (pid != static_cast<long>(getpid())) {
+    [[maybe_unused]] static const int forget_in_child = pthread_atfork(nullptr, nullptr, [] { ident = 0; });
+    if (ident == 0) {
       ident = pybind11::module_::import("threading").attr("main_thread")().attr("ident").cast<unsigned long>();
-      pid = static_cast<long>(getpid());
     }
     return ident;
   }

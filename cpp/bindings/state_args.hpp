@@ -32,7 +32,7 @@ void def_equality(pybind11::class_<T>& cls, Equal equal) {
   cls.def(
       "__eq__",
       [equal](const T& a, pybind11::handle b) -> pybind11::object {
-        if (!pybind11::isinstance<T>(b)) return pybind11::reinterpret_borrow<pybind11::object>(Py_NotImplemented);
+        if (!is_instance<T>(b)) return pybind11::reinterpret_borrow<pybind11::object>(Py_NotImplemented);
         return pybind11::bool_(equal(a, b.cast<const T&>()));
       },
       pybind11::arg("other"));

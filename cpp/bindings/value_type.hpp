@@ -8,13 +8,15 @@
 
 #include <string>
 
+#include "is_instance.hpp"
+
 namespace rigiddyn::bindings {
 
 // a == b for a bound class T, with equal(a, b) deciding; NotImplemented when b is not a T, so that
 // Python falls back to identity (False) as for any other pair of types.
 template <class T, class Equal>
 pybind11::object equal_or_not_implemented(const T& a, pybind11::handle b, Equal equal) {
-  if (!pybind11::isinstance<T>(b)) return pybind11::reinterpret_borrow<pybind11::object>(Py_NotImplemented);
+  if (!is_instance<T>(b)) return pybind11::reinterpret_borrow<pybind11::object>(Py_NotImplemented);
   return pybind11::bool_(equal(a, b.cast<const T&>()));
 }
 

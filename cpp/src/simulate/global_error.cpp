@@ -401,6 +401,7 @@ ErrorRecords error_records(const SceneSimulation& r) {
   out.energy = r.total_energy.data(), out.energy_scale = r.kinetic_energy.data();
   const std::size_t rows = out.n * static_cast<std::size_t>(out.bodies);
   const bool scaled = r.mass.size() == rows && r.angular_momentum_O_W.size() == 3 * rows;  // else |L| itself
+  out.momentum.reserve(out.n), out.momentum_scale.reserve(scaled ? out.n : 0), out.balance.reserve(out.n);
   for (std::size_t i = 0; i < out.n; ++i) {
     out.momentum.push_back(Eigen::Map<const Eigen::Vector3d>(r.angular_momentum_W.data() + 3 * i).norm());
     if (!scaled) continue;

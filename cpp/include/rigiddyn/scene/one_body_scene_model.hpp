@@ -263,8 +263,8 @@ class OneBodySceneModel {
       std::array<double, 6> impulses{};
       if constexpr (impulse_size > 0) std::copy(y.data() + impulse_y, y.data() + impulse_y + 6, impulses.begin());
       if constexpr (exact_gravity) exact_gravity_impulses(t, k, impulses);
-      out.impulse_W.insert(out.impulse_W.end(), impulses.begin(), impulses.begin() + 3);
-      out.angular_impulse_W.insert(out.angular_impulse_W.end(), impulses.begin() + 3, impulses.end());
+      append_values<3>(out.impulse_W, impulses.data());
+      append_values<3>(out.angular_impulse_W, impulses.data() + 3);
     }
   }
 

@@ -66,4 +66,11 @@ struct SceneState {
   std::vector<double> work;
 };
 
+// Appends the N values at x to the record column `column`, value by value: push_back's inlined path where the run
+// reserved its records (a range insert is a call and a size computation per column and record)
+template <int N>
+inline void append_values(std::vector<double>& column, const double* x) {
+  for (int i = 0; i < N; ++i) column.push_back(x[i]);
+}
+
 }  // namespace rigiddyn

@@ -108,13 +108,13 @@ RIGIDDYN_ALWAYS_INLINE void add_wrench_impulses(const BodyKinematics& k, const B
 // reaction, its mass
 inline void append_body_record(const BodyKinematics& k, const double* q_y, const Eigen::Vector3d& momentum_O_W,
                                const Eigen::Vector3d& reaction_W, SceneSimulation& out) {
-  out.p_W.insert(out.p_W.end(), k.p_W.data(), k.p_W.data() + 3);
+  append_values<3>(out.p_W, k.p_W.data());
   const double* q = q_y != nullptr ? q_y : k.q_WB.coeffs().data();
-  out.q_WB.insert(out.q_WB.end(), q, q + 4);
-  out.v_W.insert(out.v_W.end(), k.v_W.data(), k.v_W.data() + 3);
-  out.w_B.insert(out.w_B.end(), k.w_B.data(), k.w_B.data() + 3);
-  out.pivot_reaction_W.insert(out.pivot_reaction_W.end(), reaction_W.data(), reaction_W.data() + 3);
-  out.angular_momentum_O_W.insert(out.angular_momentum_O_W.end(), momentum_O_W.data(), momentum_O_W.data() + 3);
+  append_values<4>(out.q_WB, q);
+  append_values<3>(out.v_W, k.v_W.data());
+  append_values<3>(out.w_B, k.w_B.data());
+  append_values<3>(out.pivot_reaction_W, reaction_W.data());
+  append_values<3>(out.angular_momentum_O_W, momentum_O_W.data());
   out.mass.push_back(k.m);
 }
 
@@ -123,8 +123,8 @@ inline void append_record_sums(const RecordSums& sums, double V, SceneSimulation
   out.kinetic_energy.push_back(sums.T);
   out.potential_energy.push_back(V);
   out.total_energy.push_back(sums.T + V);
-  out.linear_momentum_W.insert(out.linear_momentum_W.end(), sums.L_W.data(), sums.L_W.data() + 3);
-  out.angular_momentum_W.insert(out.angular_momentum_W.end(), sums.H_W.data(), sums.H_W.data() + 3);
+  append_values<3>(out.linear_momentum_W, sums.L_W.data());
+  append_values<3>(out.angular_momentum_W, sums.H_W.data());
 }
 
 // Whether a kind's rate, velocity or kick read the kinematics (true unless it says reads_kinematics = false)
