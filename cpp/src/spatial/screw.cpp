@@ -7,6 +7,19 @@
 
 namespace rigiddyn {
 
+namespace {
+
+// u / |u| for a nonzero u of any size: u scaled by the power of two of its largest entry (exact) before its norm is
+// taken, so that a subnormal u keeps a unit direction (its own norm rounds to a few bits: u / |u| would be off by up to
+// 15 %, e.g. 0.5 for each entry of (1, 1, 1) 5e-324)
+Eigen::Vector3d unit(const Eigen::Vector3d& u) {
+  const int e = std::ilogb(u.cwiseAbs().maxCoeff());
+  const Eigen::Vector3d scaled = u.unaryExpr([e](double x) { return std::ldexp(x, -e); });
+  return scaled / scaled.norm();
+}
+
+}  // namespace
+
 // Rigid-body notes §4.10 (ISA): direction w/|w|, point (w x v)/|w|^2, pitch (w . v)/|w|^2, magnitude |w|.
 Screw twist_to_screw(const Motion& twist) {
   const Vector6d wv = twist.to_vector();
@@ -18,10 +31,10 @@ Screw twist_to_screw(const Motion& twist) {
     const double v_norm = v.stableNorm();
     if (v_norm == 0.0) throw_invalid("twist", "a nonzero twist (a zero twist has no screw axis)", wv.transpose());
     // pure translation: a screw of infinite pitch along v
-    return Screw{v / v_norm, Eigen::Vector3d::Zero(), std::numeric_limits<double>::infinity(), v_norm};
+    return Screw{unit(v), Eigen::Vector3d::Zero(), std::numeric_limits<double>::infinity(), v_norm};
   }
   // divide by |w| twice rather than by |w|^2, which underflows first
-  const Eigen::Vector3d direction = w / w_norm;
+  const Eigen::Vector3d direction = unit(w);
   Screw screw{direction, direction.cross(v) / w_norm, direction.dot(v) / w_norm, w_norm};
   if (!screw.point.allFinite() || !std::isfinite(screw.pitch)) {
     throw_invalid("twist", "an angular part large enough for a finite screw axis", wv.transpose());
