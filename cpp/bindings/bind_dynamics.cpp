@@ -89,13 +89,6 @@ py::object one_body_scene_of(py::handle body, py::handle gravity, py::handle loa
   py_io::throw_type_error("body", "a Particle, PlanarBody, RigidBody, PivotedBody, PivotedPlanarBody or Gyrostat", body);
 }
 
-// The one-body scene of a body with its uniform gravity and loads (one_body_scene_of), `initial` checked first to be
-// the state of a Particle, PlanarBody or RigidBody (TypeError naming it, or naming model for anything else).
-py::object body_scene(py::handle model, py::handle initial, py::handle loads, py::handle gravity) {
-  if (!is_gyrostat(model) && !is_pivoted(model)) with_model(model, initial, "initial", [](const auto&, const auto&) {});
-  return one_body_scene_of(model, gravity, loads);
-}
-
 SceneObject scene_of_body(py::handle body, py::handle gravity, py::handle loads) {
   return py::reinterpret_borrow<SceneObject>(one_body_scene_of(body, gravity, loads));
 }
@@ -155,11 +148,21 @@ SceneResultObject simulate_py(py::handle model, py::handle initial, py::handle d
                                                                        loads, gravity, t0, scalar_first, progress,
                                                                        duration, error, accuracy_level, to, controller));
   }
-  const py::object scene = body_scene(model, initial, loads, gravity);
-  return py::reinterpret_borrow<SceneResultObject>(simulate_scene_py(scene, py::make_tuple(initial), dt, steps, method,
+  if (is_gyrostat(model) || is_pivoted(model)) {
+    return py::reinterpret_borrow<SceneResultObject>(simulate_scene_py(one_body_scene_of(model, gravity, loads),
+                                                                       py::make_tuple(initial), dt, steps, method,
+                                                                       record_every, py::none(), py::none(), t0,
+                                                                       scalar_first, progress, duration, error,
+                                                                       accuracy_level, to, controller));
+  }
+  // a particle, a planar or a rigid body: its scene compiled once for a loop of runs (simulate_scene_py)
+  const OneBodyInputs body = with_model(model, initial, "initial", [&](const auto& b, const auto&) {
+    return OneBodyInputs{Body(b), as_gravity(gravity), as_loads(loads)};
+  });
+  return py::reinterpret_borrow<SceneResultObject>(simulate_scene_py(model, py::make_tuple(initial), dt, steps, method,
                                                                      record_every, py::none(), py::none(), t0,
                                                                      scalar_first, progress, duration, error,
-                                                                     accuracy_level, to, controller));
+                                                                     accuracy_level, to, controller, &body));
 }
 
 // The quantities of a GlobalError with their units, in the order of max() and summary().

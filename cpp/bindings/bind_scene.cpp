@@ -239,40 +239,55 @@ bool same_scene(const Scene& a, const Scene& b) {
 
 // ------------------------------------------------------------ compiling
 
-// A compiled scene as Python holds it: the scene it came from (attributes, pickle), the method and the
-// immutable C++ model, shared (never copied) by the runs.
-struct CompiledSceneHandle {
-  Scene scene;
-  Method method;
-  std::shared_ptr<const CompiledScene> compiled;
-};
+// Each warning of a compiled scene as a SceneCompatibilityWarning.
+void warn_compatibility(const CompiledSceneHandle& h) {
+  for (const std::string& w : h.compiled->warnings()) {
+    if (PyErr_WarnEx(scene_compatibility_warning, w.c_str(), 2) != 0) throw py::error_already_set();
+  }
+}
 
 // compile_scene(scene, method) (std::invalid_argument -> ValueError with the reason); with `warn`, each
 // of its warnings as a SceneCompatibilityWarning.
 CompiledSceneHandle compile_handle(const Scene& scene, Method method, bool warn) {
   CompiledSceneHandle h{scene, method, std::make_shared<const CompiledScene>(compile_scene(scene, method))};
-  if (warn) {
-    for (const std::string& w : h.compiled->warnings()) {
-      if (PyErr_WarnEx(scene_compatibility_warning, w.c_str(), 2) != 0) throw py::error_already_set();
-    }
-  }
+  if (warn) warn_compatibility(h);
   return h;
 }
 
 Method as_method_name(py::handle method) { return method_from_name(py_io::as_string(method, "method"), "method"); }
 
-// The compiled model a run of `model` uses: a CompiledScene itself (method None or its own), or a Scene
-// compiled for `method` (None: rk4), with its warnings.
-CompiledSceneHandle compiled_for(py::handle model, py::handle method) {
+// The compiled model a run of `model` uses: a CompiledScene itself (method None or its own; held by the caller's
+// object, not owned here), or a Scene compiled for `method` (None: rk4), with its warnings.
+std::shared_ptr<const CompiledSceneHandle> compiled_for(py::handle model, py::handle method) {
   if (is_instance<CompiledSceneHandle>(model)) {
     const auto& h = model.cast<const CompiledSceneHandle&>();
     if (!method.is_none() && as_method_name(method) != h.method) {
       py_io::throw_value_error("method", "None or '" + method_info(h.method).name + "' (the method `model` was compiled for)",
                                "'" + py::str(method).cast<std::string>() + "'");
     }
-    return h;
+    return std::shared_ptr<const CompiledSceneHandle>(std::shared_ptr<void>(), &h);
   }
-  return compile_handle(model.cast<const Scene&>(), method.is_none() ? Method::rk4 : as_method_name(method), true);
+  return std::make_shared<const CompiledSceneHandle>(
+      compile_handle(model.cast<const Scene&>(), method.is_none() ? Method::rk4 : as_method_name(method), true));
+}
+
+// The one-body scene of a body (rigiddyn::one_body_scene) compiled for `method` (None: rk4), with its warnings; kept
+// from the previous call on this thread while the body, its gravity, loads and method are the same (one_body_key), so
+// that a loop of short runs of one body compiles its scene once. Shared, so that a run in progress keeps its own when a
+// call made during it (a progress callback's) replaces the kept one.
+std::shared_ptr<const CompiledSceneHandle> compiled_for(const OneBodyInputs& body, py::handle method) {
+  thread_local std::vector<double> last_key, key;
+  thread_local std::shared_ptr<const CompiledSceneHandle> last;
+  const Method m = method.is_none() ? Method::rk4 : as_method_name(method);
+  one_body_key(body.body, body.g_W, body.loads, key);
+  key.push_back(static_cast<double>(m));
+  if (last == nullptr || !same_one_body_key(key, last_key)) {
+    last = std::make_shared<const CompiledSceneHandle>(
+        compile_handle(rigiddyn::one_body_scene(body.body, body.g_W, body.loads), m, false));  // throws before the cache changes
+    last_key.swap(key);
+  }
+  warn_compatibility(*last);
+  return last;
 }
 
 // A scene's forces are its elements: simulate's loads and gravity must be left out.
@@ -936,7 +951,8 @@ Controller as_controller(py::handle controller, const Scene& scene, bool* shippe
 py::object simulate_scene_py(py::handle model, py::handle initial, py::handle dt, py::handle steps, py::handle method,
                              py::handle record_every, py::handle loads, py::handle gravity, py::handle t0,
                              py::handle scalar_first, py::handle progress, py::handle duration, py::handle error,
-                             py::handle accuracy_level, const ToleranceHandles& to, py::handle controller) {
+                             py::handle accuracy_level, const ToleranceHandles& to, py::handle controller,
+                             const OneBodyInputs* body) {
   refuse_body_arguments(loads, gravity);
   const bool tolerance_given = !to.tolerance.is_none();
   if (tolerance_given && !controller.is_none()) {
@@ -954,7 +970,8 @@ py::object simulate_scene_py(py::handle model, py::handle initial, py::handle dt
   const bool first = py_io::as_bool(scalar_first, "scalar_first");
   const bool estimate_error = py_io::as_bool(error, "error");
   const std::optional<double> level = as_accuracy_level(accuracy_level);
-  const CompiledSceneHandle h = compiled_for(model, method);
+  const std::shared_ptr<const CompiledSceneHandle> held = body ? compiled_for(*body, method) : compiled_for(model, method);
+  const CompiledSceneHandle& h = *held;
   o.method = h.method;
   const std::vector<BodyState> initial_states = as_scene_states(initial, h.scene, "initial");
   bool shipped_law = false;
@@ -994,7 +1011,8 @@ py::object step_scene_py(py::handle model, py::handle state, py::handle dt, py::
   refuse_body_arguments(loads, gravity);
   SimulationOptions o;
   o.dt = py_io::as_scalar(py_io::in_si(dt, "s", "dt"), "dt");
-  const CompiledSceneHandle h = compiled_for(model, method);
+  const std::shared_ptr<const CompiledSceneHandle> held = compiled_for(model, method);
+  const CompiledSceneHandle& h = *held;
   o.method = h.method;
   for (std::size_t i = 0; i < h.scene.bodies.size(); ++i) {  // a body state does not carry its mass
     if (has_mass_flow(h.scene, i)) {

@@ -443,9 +443,6 @@ std::vector<RecordColumn> scene_record_columns(const Records& r) {
 inline std::vector<RecordColumn> record_columns(const SceneSimulation& r) { return scene_record_columns(r); }
 inline std::vector<RecordColumn> record_columns(const BatchSceneSimulation& r) { return scene_record_columns(r); }
 
-// "kinetic_energy from t = 0, total_energy from t = 0": each quantity of `columns` with a non-finite value in
-// the first `rows` records of run i (of N runs of n records; t (N, n) their times [s]), with the time of the
-// first such record; "" when there is none.
 // Whether the n values at x are all finite: one pass without a branch per value (|x| <= DBL_MAX is false for ±inf
 // and NaN), which the compiler vectorises.
 inline bool all_finite(const double* x, std::size_t n) {
@@ -454,6 +451,9 @@ inline bool all_finite(const double* x, std::size_t n) {
   return finite;
 }
 
+// "kinetic_energy from t = 0, total_energy from t = 0": each quantity of `columns` with a non-finite value in
+// the first `rows` records of run i (of N runs of n records; t (N, n) their times [s]), with the time of the
+// first such record; "" when there is none.
 inline std::string non_finite_quantities(const std::vector<RecordColumn>& columns, const std::vector<double>& t,
                                          std::size_t N, std::size_t n, std::size_t i, std::size_t rows) {
   std::string found;

@@ -4,13 +4,20 @@
 #include <pybind11/pybind11.h>
 
 #include <cstdint>
-#include <string>
-
+#include <memory>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "numpy_io.hpp"
 #include "python_run.hpp"
+#include "rigiddyn/integrators/method.hpp"
+#include "rigiddyn/models/loads.hpp"
 #include "rigiddyn/scene/scene.hpp"
+
+namespace rigiddyn {
+class CompiledScene;  // rigiddyn/scene/compile.hpp
+}  // namespace rigiddyn
 
 namespace rigiddyn::bindings {
 
@@ -57,16 +64,35 @@ pybind11::tuple wheel_bodies_of(const Scene& scene);
 // ScheduledLoads(body=0, loads) when loads are given), as a Python Scene.
 pybind11::object one_body_scene(const Body& body, const Eigen::Vector3d& g_W, pybind11::handle loads);
 
+// A compiled scene as Python holds it (rigiddyn.CompiledScene): the scene it came from (attributes, pickle), the method
+// and the immutable C++ model, shared (never copied) by the runs.
+struct CompiledSceneHandle {
+  Scene scene;
+  Method method;
+  std::shared_ptr<const CompiledScene> compiled;
+};
+
+// What simulate of a particle, a planar body or a rigid body runs as its one-body scene: the body, uniform gravity
+// g_W [m/s²] and the applied loads (converted from Python; the core checks them when it builds the scene).
+struct OneBodyInputs {
+  Body body;
+  Eigen::Vector3d g_W;
+  std::vector<AppliedLoad> loads;
+};
+
 // True for a Scene or a CompiledScene.
 bool is_scene(pybind11::handle model);
-// rigiddyn.simulate and rigiddyn.step of a Scene or a CompiledScene (their arguments as documented there).
-// Returns the SceneResult's Python object (its balance made and checked in the core, balance.hpp).
+// rigiddyn.simulate and rigiddyn.step of a Scene or a CompiledScene (their arguments as documented there); simulate
+// of a body's one-body scene with `body` given (`model` the body, `initial` a tuple of its state, loads and gravity
+// None: those are in `body`). Returns the SceneResult's Python object (its balance made and checked in the core,
+// balance.hpp).
 pybind11::object simulate_scene_py(pybind11::handle model, pybind11::handle initial, pybind11::handle dt,
                                    pybind11::handle steps, pybind11::handle method, pybind11::handle record_every,
                                    pybind11::handle loads, pybind11::handle gravity, pybind11::handle t0,
                                    pybind11::handle scalar_first, pybind11::handle progress,
                                    pybind11::handle duration, pybind11::handle error, pybind11::handle accuracy_level,
-                                   const ToleranceHandles& to, pybind11::handle controller);
+                                   const ToleranceHandles& to, pybind11::handle controller,
+                                   const OneBodyInputs* body = nullptr);
 pybind11::object step_scene_py(pybind11::handle model, pybind11::handle state, pybind11::handle dt,
                                pybind11::handle method, pybind11::handle loads, pybind11::handle gravity,
                                pybind11::handle t);

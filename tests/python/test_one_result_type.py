@@ -114,3 +114,48 @@ def test_scene_of_body_names_what_it_refuses():
         rd.Scene.of_body(rd.PlanarBody(1.0, 0.5), gravity=True)  # out of its plane
     with pytest.raises(ValueError, match=r"loads\[0\]"):
         rd.Scene.of_body(rd.Particle(1.0), loads=[rd.AppliedLoad(torque=(0.0, 0.0, 1.0))])
+
+
+def assert_same_run(result, expected, what):
+    for name in ARRAYS + ("work", "power"):
+        np.testing.assert_array_equal(getattr(result, name), getattr(expected, name), strict=True, err_msg=f"{what} {name}")
+    for name in BODY_ARRAYS:
+        np.testing.assert_array_equal(getattr(result.body(0), name), getattr(expected.body(0), name), strict=True,
+                                      err_msg=f"{what} {name}")
+    assert result.elements == expected.elements, what
+
+
+def test_a_body_simulated_again_and_again_runs_the_scene_of_its_own_inputs_every_time():
+    # simulate of a particle, a planar or a rigid body keeps its compiled scene for the next call of the same body,
+    # gravity, loads and method: each call of a sequence that changes one of them at a time runs what a fresh
+    # compile of its own scene runs, bitwise (a principal inertia turned full changes the Euler form; a load's window,
+    # the schedule)
+    rigid, state = rd.RigidBody(MASS, MOMENTS), rd.RigidBodyState(p_W=P_W, v_W=V_W, w_B=W_B)
+    full = rd.RigidBody(MASS, [[0.5, 0.01, 0.0], [0.01, 0.75, 0.0], [0.0, 0.0, 1.25]])
+    push = [rd.AppliedLoad(force=(1.0, 0.0, 0.5), t_end=0.5)]
+    calls = [(rigid, state, None, None, "rk4"), (rigid, state, None, None, "rk4"),
+             (rd.RigidBody(MASS * 2.0, MOMENTS), state, None, None, "rk4"), (full, state, None, None, "rk4"),
+             (rigid, state, True, None, "rk4"), (rigid, state, True, push, "rk4"),
+             (rigid, state, True, [rd.AppliedLoad(force=(1.0, 0.0, 0.5), t_end=0.25)], "rk4"),
+             (rigid, state, True, push, "rkmk4"), (rigid, state, None, None, "rk4")]
+    calls += [(body, state, gravity, loads, METHOD) for body, state, gravity, loads in KINDS.values()]
+    for i, (body, state, gravity, loads, method) in enumerate(calls):
+        result = rd.simulate(body, state, DT, 30, method, gravity=gravity, loads=loads)
+        expected = rd.simulate(rd.Scene.of_body(body, gravity=gravity, loads=loads).compile(method), [state], DT, 30)
+        assert_same_run(result, expected, f"call {i}")
+
+
+def test_a_run_keeps_its_compiled_scene_when_a_call_during_it_simulates_another_body():
+    # a progress callback that simulates another body replaces the kept scene while the first run still uses its own
+    rigid, state = rd.RigidBody(MASS, MOMENTS), rd.RigidBodyState(p_W=P_W, v_W=V_W, w_B=W_B)
+    other, other_state = rd.Particle(3.0), rd.ParticleState(v_W=(1.0, 0.0, 0.0))
+    calls = []
+
+    def progress(steps_done):
+        calls.append(rd.simulate(other, other_state, DT, 5, METHOD, gravity=True))
+
+    result = rd.simulate(rigid, state, DT, 30, METHOD, gravity=True, progress=progress)
+    assert calls, "progress was called"
+    expected = rd.simulate(rd.Scene.of_body(rigid, gravity=True), [state], DT, 30, METHOD)
+    assert_same_run(result, expected, "the run under the callback")
+    assert_same_run(rd.simulate(rigid, state, DT, 30, METHOD, gravity=True), expected, "the next run")

@@ -5,6 +5,7 @@
 #include "rigiddyn/check.hpp"
 #include "rigiddyn/scene/compile.hpp"
 
+#include <cstring>
 #include <string>
 #include <utility>
 #include <variant>
@@ -54,6 +55,25 @@ OneBodyModel one_body_layout(const Body& body, const Eigen::Vector3d& g_W, const
                      "elements[" + std::to_string(loads_element) + "]");
   }
   return one_body_layout_of(body, std::move(gravity), gravity_element, std::move(schedule), loads_element);
+}
+
+void one_body_key(const Body& body, const Eigen::Vector3d& g_W, const std::vector<AppliedLoad>& loads,
+                  std::vector<double>& key) {
+  key.assign({static_cast<double>(body.index()), mass_of(body), g_W.x(), g_W.y(), g_W.z()});
+  if (const auto* rigid = std::get_if<RigidBody>(&body)) {
+    key.insert(key.end(), rigid->inertia_com().data(), rigid->inertia_com().data() + 9);
+  } else if (const auto* planar = std::get_if<PlanarBody>(&body)) {
+    key.push_back(planar->inertia_zz());
+  }
+  for (const AppliedLoad& load : loads) {
+    key.insert(key.end(), load.force.data(), load.force.data() + 3);
+    key.insert(key.end(), load.torque.data(), load.torque.data() + 3);
+    key.insert(key.end(), {static_cast<double>(load.frame), load.t_start, load.t_end});
+  }
+}
+
+bool same_one_body_key(const std::vector<double>& a, const std::vector<double>& b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
 }
 
 }  // namespace rigiddyn

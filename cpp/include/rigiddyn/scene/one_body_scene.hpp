@@ -30,6 +30,16 @@ Scene one_body_scene(const Body& body, const Eigen::Vector3d& g_W, const std::ve
 // whenever its body, gravity or loads change). Throws as one_body_scene.
 OneBodyModel one_body_layout(const Body& body, const Eigen::Vector3d& g_W, const std::vector<AppliedLoad>& loads);
 
+// The numbers one_body_scene(body, g_W, loads) of a particle, a planar or a rigid body is made of, written to `key`
+// (its contents replaced): the body's kind, mass and inertia, g_W [m/s²], and each load's force, torque, frame and
+// window. Keys with the same bits (same_one_body_key) give the same scene, its layout and its compiled model: what a
+// caller that runs one body again and again keeps instead of building them anew.
+void one_body_key(const Body& body, const Eigen::Vector3d& g_W, const std::vector<AppliedLoad>& loads,
+                  std::vector<double>& key);
+
+// Whether two keys of one_body_key hold the same numbers bit for bit (a zero's sign included, which a result may keep).
+bool same_one_body_key(const std::vector<double>& a, const std::vector<double>& b);
+
 // one_body_layout(body, g_W, loads) as its type Layout (an alternative of OneBodyModel's layouts, e.g.
 // OneBodySceneModel<detail::RigidSlot<PrincipalEuler, detail::FirstPlace>, OneBodyElements::none>) with the loads' piece
 // at t0 [s] set: a model to step directly with an integrator (Integrator::step(layout, y, h, work) from
