@@ -383,6 +383,18 @@ TEST(Screw, PureRotationHasZeroPitch) {
   EXPECT_DOUBLE_EQ(screw.magnitude, 3.0);
 }
 
+TEST(Screw, SubnormalPartsKeepAUnitAxis) {
+  // |(1, 1, 1) 5e-324| rounds to 2e-323 / 2, so w / |w| would be 0.5 each; the axis is scaled first
+  const Eigen::Vector3d tiny = Eigen::Vector3d::Constant(5e-324);
+  const Screw rotating = twist_to_screw(Motion(tiny, Eigen::Vector3d::Zero()));
+  EXPECT_TRUE(Near(rotating.direction, Eigen::Vector3d::Constant(1.0 / std::sqrt(3.0))));
+  EXPECT_GT(rotating.magnitude, 0.0);
+  EXPECT_NO_THROW(screw_to_twist(rotating));  // which asks for a unit direction
+  const Screw moving = twist_to_screw(Motion(Eigen::Vector3d::Zero(), tiny));
+  EXPECT_TRUE(Near(moving.direction, Eigen::Vector3d::Constant(1.0 / std::sqrt(3.0))));
+  EXPECT_TRUE(std::isinf(moving.pitch));
+}
+
 TEST(Screw, RejectsBadInput) {
   ExpectInvalid([] { twist_to_screw(Motion::Zero()); }, "twist");
   ExpectInvalid([] { twist_to_screw(Motion(Eigen::Vector3d(NAN, 0, 0), Eigen::Vector3d::Zero())); }, "twist");
