@@ -9,12 +9,14 @@
 #include <gtest/gtest.h>
 
 #include "rigiddyn/integrators/implicit_midpoint.hpp"
+#include "rigiddyn/scene/one_body_scene.hpp"
 #include "rigiddyn/scene/simulate_scene.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -274,6 +276,19 @@ TEST(OneBodyLayout, OnlyItsScenes) {
   const CompiledScene top = compile_scene(pivoted, Method::rk4);  // its fast model
   EXPECT_EQ(top.path(), ScenePath::one_body);
   EXPECT_NE(one_body_model_if<detail::FastOneBodyModels>(top.one_body_model()), nullptr);
+}
+
+TEST(OneBodyKey, RefusesAKindItDoesNotDescribe) {
+  // a pinned body's pivot is not in the key: two pinned bodies of one mass would share it
+  std::vector<double> key;
+  EXPECT_THROW(one_body_key(PivotedPlanarBody(1.0, 0.1, Eigen::Vector2d(0.1, -0.5)), Eigen::Vector3d::Zero(), {}, key),
+               std::invalid_argument);
+  one_body_key(PlanarBody(1.0, 0.1), Eigen::Vector3d::Zero(), {}, key);
+  std::vector<double> same;
+  one_body_key(PlanarBody(1.0, 0.1), Eigen::Vector3d::Zero(), {}, same);
+  EXPECT_TRUE(same_one_body_key(key, same));
+  one_body_key(PlanarBody(1.0, 0.1), Eigen::Vector3d(0.0, -0.0, 0.0), {}, same);  // a zero's sign differs
+  EXPECT_FALSE(same_one_body_key(key, same));
 }
 
 }  // namespace

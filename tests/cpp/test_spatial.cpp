@@ -384,7 +384,7 @@ TEST(Screw, PureRotationHasZeroPitch) {
 }
 
 TEST(Screw, SubnormalPartsKeepAUnitAxis) {
-  // |(1, 1, 1) 5e-324| rounds to 2e-323 / 2, so w / |w| would be 0.5 each; the axis is scaled first
+  // |(1, 1, 1) 5e-324| rounds to 1e-323, so w / |w| would be 0.5 each; the axis is scaled first
   const Eigen::Vector3d tiny = Eigen::Vector3d::Constant(5e-324);
   const Screw rotating = twist_to_screw(Motion(tiny, Eigen::Vector3d::Zero()));
   EXPECT_TRUE(Near(rotating.direction, Eigen::Vector3d::Constant(1.0 / std::sqrt(3.0))));

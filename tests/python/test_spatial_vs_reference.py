@@ -132,7 +132,7 @@ def test_transform_compose_and_inverse(r1, p1, r2, p2):
 
 # ------------------------------------------------------------------ screws
 @given(vec6)
-@example(np.full(6, 5e-324))  # a subnormal w, whose own norm rounds to 2 of its entries (w / |w| = 0.5 each)
+@example(np.full(6, 5e-324))  # a subnormal w, whose norm rounds to 1e-323 (w / |w| = 0.5 each)
 def test_twist_to_screw(m):
     if np.all(m == 0.0):
         return  # no axis: the core raises (tested with the bad-input tests)

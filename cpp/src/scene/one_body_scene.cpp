@@ -6,6 +6,7 @@
 #include "rigiddyn/scene/compile.hpp"
 
 #include <cstring>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <variant>
@@ -59,6 +60,12 @@ OneBodyModel one_body_layout(const Body& body, const Eigen::Vector3d& g_W, const
 
 void one_body_key(const Body& body, const Eigen::Vector3d& g_W, const std::vector<AppliedLoad>& loads,
                   std::vector<double>& key) {
+  // a pinned body's pivot, a gyrostat's wheels are not in the key: two such bodies of one mass would share it
+  if (!std::holds_alternative<Particle>(body) && !std::holds_alternative<PlanarBody>(body) &&
+      !std::holds_alternative<RigidBody>(body)) {
+    throw std::invalid_argument(std::string("one_body_key: expected a Particle, PlanarBody or RigidBody, got a ") +
+                                kind_name(body));
+  }
   key.assign({static_cast<double>(body.index()), mass_of(body), g_W.x(), g_W.y(), g_W.z()});
   if (const auto* rigid = std::get_if<RigidBody>(&body)) {
     key.insert(key.end(), rigid->inertia_com().data(), rigid->inertia_com().data() + 9);

@@ -10,8 +10,8 @@ namespace rigiddyn {
 namespace {
 
 // u / |u| for a nonzero u of any size: u scaled by the power of two of its largest entry (exact) before its norm is
-// taken, so that a subnormal u keeps a unit direction (its own norm rounds to a few bits: u / |u| would be off by up to
-// 15 %, e.g. 0.5 for each entry of (1, 1, 1) 5e-324)
+// taken, so that a subnormal u keeps a unit direction (its own norm rounds to a multiple of 5e-324: u / |u| is then off
+// by tens of per cent, e.g. 0.5 for each entry of (1, 1, 1) 5e-324, whose norm rounds to 1e-323)
 Eigen::Vector3d unit(const Eigen::Vector3d& u) {
   const int e = std::ilogb(u.cwiseAbs().maxCoeff());
   const Eigen::Vector3d scaled = u.unaryExpr([e](double x) { return std::ldexp(x, -e); });

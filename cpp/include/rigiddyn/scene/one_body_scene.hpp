@@ -33,7 +33,8 @@ OneBodyModel one_body_layout(const Body& body, const Eigen::Vector3d& g_W, const
 // The numbers one_body_scene(body, g_W, loads) of a particle, a planar or a rigid body is made of, written to `key`
 // (its contents replaced): the body's kind, mass and inertia, g_W [m/s²], and each load's force, torque, frame and
 // window. Keys with the same bits (same_one_body_key) give the same scene, its layout and its compiled model: what a
-// caller that runs one body again and again keeps instead of building them anew.
+// caller that runs one body again and again keeps instead of building them anew. Throws std::invalid_argument for
+// another kind (a pinned body's pivot and a gyrostat's wheels are not in the key).
 void one_body_key(const Body& body, const Eigen::Vector3d& g_W, const std::vector<AppliedLoad>& loads,
                   std::vector<double>& key);
 
