@@ -24,6 +24,7 @@
 #include "rigiddyn/simulate/simulate.hpp"  // standard_gravity
 #include "rigiddyn/so3/quaternion.hpp"
 #include "state_args.hpp"
+#include "value_type.hpp"
 
 namespace rigiddyn::bindings {
 
@@ -78,8 +79,6 @@ py_io::Array read_only(const Eigen::Quaterniond& q, bool scalar_first = false) {
   return out;
 }
 using py_io::read_only;
-
-bool same(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b) { return a.coeffs() == b.coeffs(); }
 
 // The pickled state tuple of `cls` with `n` items (ValueError otherwise).
 py::tuple pickled(const py::tuple& t, std::size_t n, const char* cls) {

@@ -41,7 +41,7 @@ void def_value_semantics(py::class_<T>& cls, Args args, Make make, size_t size, 
   cls.attr("__hash__") = py::none();
 }
 
-py::list list_of(const Eigen::Vector3d& v) { return py::cast<py::list>(py_io::to_array(v).attr("tolist")()); }
+py::list python_list(const Eigen::Vector3d& v) { return py::cast<py::list>(py_io::to_array(v).attr("tolist")()); }
 
 // A gravity (2,) (in W's xy plane) or (3,) [m/s^2] in W (a pint quantity is converted).
 Eigen::Vector3d as_gravity_2_or_3(py::handle obj) {
@@ -91,7 +91,7 @@ py::tuple pendulum_at(const PyPendulum& self, py::handle t) {
                         py_io::finite_result(omega, "CompoundPendulumSolution.at omega"));
 }
 
-py::tuple pendulum_args(const PyPendulum& s) { return py::make_tuple(s.body, list_of(s.g_W), s.state); }
+py::tuple pendulum_args(const PyPendulum& s) { return py::make_tuple(s.body, python_list(s.g_W), s.state); }
 
 void bind_pendulum(py::module_& m) {
   py::class_<PyPendulum> cls(
@@ -219,7 +219,7 @@ py::tuple top_angles_at(const PyTop& self, py::handle t) {
                         py_io::finite_result(psi, "LagrangeTopSolution.angles_at psi"));
 }
 
-py::tuple top_args(const PyTop& s) { return py::make_tuple(s.body, list_of(s.g_W), s.state, s.scalar_first); }
+py::tuple top_args(const PyTop& s) { return py::make_tuple(s.body, python_list(s.g_W), s.state, s.scalar_first); }
 
 void bind_top(py::module_& m) {
   py::class_<PyTop> cls(
@@ -361,7 +361,7 @@ py::tuple rotating_particle_at(const PyRotatingParticle& self, py::handle t) {
 }
 
 py::tuple rotating_particle_args(const PyRotatingParticle& s) {
-  return py::make_tuple(s.frame, list_of(s.p0_F), list_of(s.v0_F));
+  return py::make_tuple(s.frame, python_list(s.p0_F), python_list(s.v0_F));
 }
 
 void bind_rotating_particle(py::module_& m) {
@@ -461,7 +461,7 @@ std::string thrust_repr(const ConstantThrustSolution& s) {
 }
 
 py::tuple thrust_args(const ConstantThrustSolution& s) {
-  return py::make_tuple(s.m0(), s.rate(), list_of(s.u_rel_W()), list_of(s.g_W()), list_of(s.p0_W()), list_of(s.v0_W()));
+  return py::make_tuple(s.m0(), s.rate(), python_list(s.u_rel_W()), python_list(s.g_W()), python_list(s.p0_W()), python_list(s.v0_W()));
 }
 
 void bind_thrust(py::module_& m) {

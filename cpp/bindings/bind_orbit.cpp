@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "common_args.hpp"
 #include "for_each_item.hpp"
 #include "numpy_io.hpp"
 #include "rigiddyn/orbit/anomaly.hpp"
@@ -26,11 +27,7 @@ using Shape = std::vector<py::ssize_t>;
 
 namespace {
 
-py::ssize_t item_size(const Shape& shape) {
-  py::ssize_t size = 1;
-  for (py::ssize_t extent : shape) size *= extent;
-  return size;
-}
+using py_io::item_size;
 
 // Several stacks read together: n items (the common length of the stacked ones), item(k, i) the i-th item
 // of argument k (its only item when it is single). ValueError naming the argument whose length differs.
@@ -67,8 +64,8 @@ class Stacks {
   bool stacked_ = false;
 };
 
-Eigen::Vector3d read_vector(const double* p) { return Eigen::Vector3d(p[0], p[1], p[2]); }
-void write_vector(const Eigen::Vector3d& v, double* out) { Eigen::Map<Eigen::Vector3d>{out} = v; }
+using py_io::read_vector;
+using py_io::write_vector;
 
 // y = f(x, e) over two stacks of scalars: a float for two single values, else an array (n,).
 template <typename F>
@@ -110,9 +107,6 @@ const char* const state_raises =
     "    A non-finite entry or a wrong shape (the message names `r_W` or `v_W` and, in a stack, the item),\n"
     "    stacks of different lengths, or r x v = 0 (the message names `r_W, v_W`: a rectilinear orbit has no\n"
     "    plane).\n";
-const char* const scalar_first_param =
-    "scalar_first : bool, default False\n"
-    "    Read and write quaternions scalar first, (w, x, y, z), as MuJoCo does.\n";
 
 // An argument and its name.
 struct Named {

@@ -50,16 +50,12 @@ const Shape vector3{3};
 const Shape quaternion{4};
 const Shape matrix3{3, 3};
 
-py::ssize_t item_size(const Shape& shape) {
-  py::ssize_t size = 1;
-  for (py::ssize_t extent : shape) size *= extent;
-  return size;
-}
+using py_io::item_size;
 
 // item readers and writers (numpy items are C-contiguous: matrices row-major)
-Eigen::Vector3d read_vector(const double* p) { return Eigen::Vector3d(p[0], p[1], p[2]); }
+using py_io::read_vector;
+using py_io::write_vector;
 Eigen::Matrix3d read_matrix(const double* p) { return Eigen::Map<const RowMajor3>(p); }
-void write_vector(const Eigen::Vector3d& v, double* out) { Eigen::Map<Eigen::Vector3d>{out} = v; }
 void write_matrix(const Eigen::Matrix3d& R, double* out) { Eigen::Map<RowMajor3>{out} = R; }
 
 // finite &= every entry of the item is finite (branch-free, on the item just written: no second pass)
@@ -252,7 +248,6 @@ EulerSequence as_sequence(py::handle seq) {
   return EulerSequence(seq.cast<std::string>(), "seq");
 }
 
-bool as_scalar_first(py::handle scalar_first) { return py_io::as_bool(scalar_first, "scalar_first"); }
 
 // The user's angle unit: degrees (degrees=True) or radians. The factors are SciPy's (x * (pi/180) in,
 // x * (180/pi) out), so that angles in degrees round exactly as SciPy's do.
@@ -306,9 +301,6 @@ const char* const q_param =
     "q : array_like, shape (4,) or (n, 4)\n"
     "    Unit quaternions (x, y, z, w), or (w, x, y, z) if `scalar_first`; norm within 1e-6 of 1 (then\n"
     "    normalised).\n";
-const char* const scalar_first_param =
-    "scalar_first : bool, default False\n"
-    "    Read and write quaternions scalar first, (w, x, y, z), as MuJoCo does.\n";
 const char* const q_raises =
     "ValueError\n"
     "    A quaternion with a non-finite entry or a norm farther than 1e-6 from 1 (the message names `q`\n"

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "common_args.hpp"
 #include "for_each_item.hpp"
 #include "numpy_io.hpp"
 #include "rigiddyn/so3/align_vectors.hpp"
@@ -51,8 +52,7 @@ Broadcast broadcast(std::initializer_list<std::pair<const Stack*, const char*>> 
   return b;
 }
 
-// item i of a stack that may be a single broadcast item
-const double* item(const Stack& s, py::ssize_t i, py::ssize_t size) { return s.array.data() + (s.stacked ? i * size : 0); }
+using py_io::item;  // item i of a stack that may be a single broadcast item
 
 Eigen::Quaterniond unit_quaternion(const double* p, bool scalar_first, const std::string& name) {
   return checked_unit_quaternion(py_io::read_quaternion(p, scalar_first), name);
@@ -78,9 +78,6 @@ py::object as_generator(py::handle rng) {
 }
 
 // numpydoc pieces shared by the docstrings below (Parameters entries)
-const char* const scalar_first_param =
-    "scalar_first : bool, default False\n"
-    "    Read and write quaternions scalar first, (w, x, y, z), as MuJoCo does.\n";
 const char* const canonical_param =
     "canonical : bool, default False\n"
     "    Return the representative with w >= 0 (SciPy's ``as_quat(canonical=True)``: at w = 0 the first\n"

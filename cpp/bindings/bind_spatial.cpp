@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "common_args.hpp"
 #include "numpy_io.hpp"
 #include "repr.hpp"
 #include "rigiddyn/so3/matrix.hpp"
@@ -40,7 +41,6 @@ const Motion& as_motion(py::handle obj, const std::string& name) {
 const Force& as_force(py::handle obj, const std::string& name) {
   return py_io::as_finite_spatial<Force>(obj, name, "a Force");
 }
-bool as_scalar_first(py::handle obj) { return py_io::as_bool(obj, "scalar_first"); }
 
 // Results: a RuntimeWarning naming the quantity when a part overflowed.
 template <class Spatial>  // Motion or Force
@@ -112,8 +112,7 @@ bool any_stacked(const std::vector<std::pair<const Stack*, const char*>>& stacks
   return false;
 }
 
-// Item i of a stack (item 0 of a single item, which broadcasts).
-const double* item(const Stack& s, py::ssize_t i, py::ssize_t size) { return s.item(s.stacked ? i : 0, size); }
+using py_io::item;  // item i of a stack (item 0 of a single item, which broadcasts)
 
 using RowMatrix3d = Eigen::Matrix<double, 3, 3, Eigen::RowMajor>;
 

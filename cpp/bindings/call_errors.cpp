@@ -60,13 +60,6 @@ py::handle no_argument() {
   return sentinel;
 }
 
-// pybind11's record of the function f; nullptr for any other object
-function_record* record_of(PyObject* f) {
-  if (!PyCFunction_Check(f) || !PyCFunction_GET_SELF(f)) return nullptr;
-  function_record* rec = py::detail::function_record_ptr_from_PyObject(PyCFunction_GET_SELF(f));
-  return rec && rec->name ? rec : nullptr;
-}
-
 // What a message calls the function: "simulate()", "Scene.add_body()", "InertiaCheck()" for a constructor
 std::string call_name(const function_record& rec) {
   const bool in_class = PyType_Check(rec.scope.ptr());
@@ -243,6 +236,12 @@ void set_doc(PyObject* f, const std::string& doc) {
 }
 
 }  // namespace
+
+const function_record* record_of(PyObject* f) {
+  if (!PyCFunction_Check(f) || !PyCFunction_GET_SELF(f)) return nullptr;
+  const function_record* rec = py::detail::function_record_ptr_from_PyObject(PyCFunction_GET_SELF(f));
+  return rec && rec->name ? rec : nullptr;
+}
 
 bool is_call_errors(const function_record& rec) {
   const std::size_t i = rec.is_method ? 1 : 0;

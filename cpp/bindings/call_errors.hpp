@@ -11,6 +11,9 @@ namespace rigiddyn::bindings {
 // wrong type. f's docstring is kept as it was.
 void add_call_errors(PyObject* f);
 
+// pybind11's record of the compiled function f; nullptr for any other object
+const pybind11::detail::function_record* record_of(PyObject* f);
+
 // True for the overload add_call_errors appends (the text signatures and the stubs leave it out).
 bool is_call_errors(const pybind11::detail::function_record& rec);
 

@@ -16,6 +16,14 @@
 
 namespace rigiddyn::bindings {
 
+// A quaternion's order as the rotation functions take it: scalar_first=True for (w, x, y, z), else (x, y, z, w);
+// TypeError unless a bool.
+inline bool as_scalar_first(pybind11::handle scalar_first) { return py_io::as_bool(scalar_first, "scalar_first"); }
+// That parameter's entry in a docstring's Parameters
+inline const char* const scalar_first_param =
+    "scalar_first : bool, default False\n"
+    "    Read and write quaternions scalar first, (w, x, y, z), as MuJoCo does.\n";
+
 // 'world' or 'body' (the frame a vector is expressed in), else TypeError / ValueError naming `name`.
 inline Frame as_frame(pybind11::handle frame, const std::string& name = "frame") {
   return py_io::as_choice<Frame>(frame, name, {{"world", Frame::world}, {"body", Frame::body}});

@@ -141,6 +141,17 @@ struct Stack {
   bool stacked;
   const double* item(py::ssize_t i, py::ssize_t item_size) const { return array.data() + i * item_size; }
 };
+// Item i of a stack of items of `size` entries, or its one item when it is not stacked (broadcast)
+inline const double* item(const Stack& s, py::ssize_t i, py::ssize_t size) { return s.item(s.stacked ? i : 0, size); }
+// The number of entries of an item of shape `shape` (the product of its extents)
+inline py::ssize_t item_size(const std::vector<py::ssize_t>& shape) {
+  py::ssize_t size = 1;
+  for (py::ssize_t extent : shape) size *= extent;
+  return size;
+}
+// A 3-vector item read from, and written to, its 3 entries
+inline Eigen::Vector3d read_vector(const double* p) { return Eigen::Vector3d(p[0], p[1], p[2]); }
+inline void write_vector(const Eigen::Vector3d& v, double* out) { Eigen::Map<Eigen::Vector3d>{out} = v; }
 enum class EntryCheck { all_finite, by_caller };
 Stack as_stack(py::handle obj, const std::string& name, const std::vector<py::ssize_t>& tail,
                EntryCheck check = EntryCheck::all_finite);

@@ -96,13 +96,6 @@ std::string text_signature(const py::detail::function_record& rec) {
   return out + ")";
 }
 
-// pybind11's record of the function f; nullptr for any other object
-const py::detail::function_record* record_of(PyObject* f) {
-  if (!PyCFunction_Check(f)) return nullptr;
-  PyObject* self = PyCFunction_GET_SELF(f);  // pybind11's record of the function
-  const py::detail::function_record* rec = self ? py::detail::function_record_ptr_from_PyObject(self) : nullptr;
-  return rec && rec->name ? rec : nullptr;
-}
 
 // Puts "name(signature)\n--\n\n" in front of the C-level docstring of the pybind11 function `f` (as pybind11
 // itself replaces it when an overload is added: the old string freed, a malloc'd one set).

@@ -5,6 +5,7 @@
 #include <pybind11/pybind11.h>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <string>
 
@@ -25,6 +26,8 @@ template <class A, class B>
 bool same(const Eigen::MatrixBase<A>& a, const Eigen::MatrixBase<B>& b) {
   return (a.array() == b.array()).all();
 }
+// Every coefficient equal (q and -q, the same rotation, differ)
+inline bool same(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b) { return same(a.coeffs(), b.coeffs()); }
 
 // The state of a pickled `type`: a tuple of `size` items, else ValueError naming the type.
 inline pybind11::tuple pickled_state(const pybind11::handle state, size_t size, const std::string& type) {

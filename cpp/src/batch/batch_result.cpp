@@ -1,5 +1,7 @@
 #include "rigiddyn/batch/batch_result.hpp"
 
+#include "numbers.hpp"
+
 #include <algorithm>
 #include <limits>
 #include <stdexcept>
@@ -9,7 +11,7 @@ namespace rigiddyn {
 
 namespace {
 
-constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+using detail::nan;
 
 // The first `rows` rows of `width` values of `run` into the block of sample i (N blocks of `records` rows).
 void copy_rows(std::vector<double>& batch, std::size_t i, std::size_t records, std::size_t width,

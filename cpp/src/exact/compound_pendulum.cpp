@@ -1,6 +1,7 @@
 // The compound pendulum in Jacobi's elliptic functions (exact/compound_pendulum.hpp).
 #include "rigiddyn/exact/compound_pendulum.hpp"
 
+#include "numbers.hpp"
 #include "rigiddyn/check.hpp"
 
 #include <algorithm>
@@ -12,8 +13,9 @@ namespace rigiddyn {
 
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kLn4 = 1.3862943611198906;  // ln 4
+using detail::infinity;
+using detail::ln_4;
+
 
 // am(u|m) continued through every half period: am(u + 2K) = am(u) + π (DLMF 22.16.2), with |w| ≤ K
 // where am(w) = atan2(sn w, cn w) ∈ [−π/2, π/2]; for m = 1 (K = ∞) the Gudermannian atan2(tanh, sech).
@@ -34,7 +36,7 @@ double amplitude_am(double u, const EllipticParameter& p, JacobiSnCnDn& f) {
 // 2^−79 · ln-factor ≪ eps; else elliprf, where a square that underflows beside the other's ≥ 2^−80
 // changes R_F by O(a/b) < 1e-130 relative.
 double elliprf_of_squares(double a, double b) {
-  if (std::max(a, b) < 0x1p-40) return kLn4 - std::log(a + b);  // ln 4 − ln: 4/(a + b) may overflow
+  if (std::max(a, b) < 0x1p-40) return ln_4 - std::log(a + b);  // ln 4 − ln: 4/(a + b) may overflow
   return elliprf(a * a, b * b, 1.0);
 }
 
@@ -69,7 +71,7 @@ CompoundPendulumSolution::CompoundPendulumSolution(const PivotedPlanarBody& body
   if (!(omega0_ > 0.0)) {  // no torque: a uniform turn
     case_ = PendulumCase::uniform;
     amplitude_ = M_PI;
-    period_ = omega_init_ == 0.0 ? kInf : 2.0 * M_PI / std::abs(omega_init_);
+    period_ = omega_init_ == 0.0 ? infinity : 2.0 * M_PI / std::abs(omega_init_);
     return;
   }
   // s = sin(ϑ0/2), c = cos(ϑ0/2) (from π − |ϑ0| near π: Sterbenz makes it exact), v = ϑ̇0/(2ω0).
@@ -86,7 +88,7 @@ CompoundPendulumSolution::CompoundPendulumSolution(const PivotedPlanarBody& body
   if (v == 0.0 && (s == 0.0 || cs == 0.0)) {  // an equilibrium (at ϑ0 = π: the unstable one)
     case_ = PendulumCase::rest;
     amplitude_ = std::abs(vartheta0_);
-    period_ = kInf;
+    period_ = infinity;
     return;
   }
   if (cs > abs_v) {
@@ -112,7 +114,7 @@ CompoundPendulumSolution::CompoundPendulumSolution(const PivotedPlanarBody& body
     lambda_ = omega0_;  // k = 1
     p_ = elliptic_parameter(1.0, 0.0);
     u0_ = sigma_ * s * elliprf_of_squares(cs, cs);
-    period_ = kInf;
+    period_ = infinity;
     amplitude_ = M_PI;
     return;
   }

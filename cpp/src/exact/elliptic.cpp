@@ -3,6 +3,7 @@
 // quarter periods (DLMF Table 22.4.3); the third-kind integral on the same reduction.
 #include "carlson_core.hpp"
 #include "power_of_two.hpp"
+#include "numbers.hpp"
 #include "rigiddyn/check.hpp"
 #include "rigiddyn/exact/elliptic.hpp"
 
@@ -16,9 +17,10 @@ namespace rigiddyn {
 
 namespace {
 
-constexpr double kEps = std::numeric_limits<double>::epsilon();
-constexpr double kInf = std::numeric_limits<double>::infinity();
-const double kLn4 = std::log(4.0);
+using detail::epsilon;
+using detail::infinity;
+using detail::ln_4;
+
 
 // below this argument the series for 1 − cn truncated after u^10 is exact to < 1e-17 relative
 // (the u^12 term, 2702765 u^12/12! at m = 1, is 0.011 u^10 relative to u²/2)
@@ -73,9 +75,9 @@ JacobiSnCnDn sncndn_first_eighth(double w, double m, double mc) {
 // arithmetic-geometric mean converges quadratically; stopping at |a − b| < 2.7 √eps a leaves a
 // relative error below eps in (a + b)/2 (at most 6 steps for kc >= 2^−27).
 double complete_k(double kc, double log_kc) {
-  if (!(log_kc > -kInf)) return kInf;
+  if (!(log_kc > -infinity)) return infinity;
   if (kc < 0x1p-27) {
-    const double L = kLn4 - log_kc;
+    const double L = ln_4 - log_kc;
     return L + 0.25 * kc * kc * (L - 1.0);
   }
   double a = 1.0, b = kc;
@@ -91,7 +93,7 @@ double complete_k(double kc, double log_kc) {
 void check_parameter(double m, double mc) {
   if (!(m >= 0.0 && m <= 1.0)) throw_invalid("m", "a parameter in [0, 1]", m);
   if (!(mc >= 0.0 && mc <= 1.0)) throw_invalid("mc", "a complement 1 - m in [0, 1]", mc);
-  if (!(std::abs((m - 1.0) + mc) <= 4.0 * kEps)) {
+  if (!(std::abs((m - 1.0) + mc) <= 4.0 * epsilon)) {
     throw_invalid("mc", "1 - m to within 4 eps (m = " + format_value(m) + ")", mc);
   }
 }

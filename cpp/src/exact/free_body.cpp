@@ -3,6 +3,7 @@
 #include "rigiddyn/exact/free_body.hpp"
 
 #include "power_of_two.hpp"
+#include "numbers.hpp"
 #include "rigiddyn/check.hpp"
 
 #include <algorithm>
@@ -14,8 +15,9 @@ namespace rigiddyn {
 
 namespace {
 
-constexpr double kEps = std::numeric_limits<double>::epsilon();
-constexpr double kInf = std::numeric_limits<double>::infinity();
+using detail::epsilon;
+using detail::infinity;
+
 
 // double-double arithmetic (value hi + lo, |lo| ≤ ulp(hi)/2) for the cancelling invariant Δ2
 struct DoubleDouble {
@@ -204,7 +206,7 @@ TorqueFreeSolution::TorqueFreeSolution(const PrincipalAxes& axes, const Eigen::Q
   L_W_ = times_pow2(q_WB0_ * (R_BP_ * L_tilde), e_I + e_w);                 // ±inf beyond the double range
   kinetic_energy_ = rigiddyn::times_pow2(0.5 * w_tilde.dot(L_tilde), e_I + 2 * e_w);  // +inf beyond it
 
-  const double tol = 64.0 * kEps * I(2);
+  const double tol = 64.0 * epsilon * I(2);
   if (I(2) - I(0) <= tol) {
     case_ = TorqueFreeCase::sphere;
     init_rotation_about_axis(Eigen::Vector3d::Ones(), R_BP_.col(2), 1.0);
@@ -227,7 +229,7 @@ TorqueFreeSolution::TorqueFreeSolution(const PrincipalAxes& axes, const Eigen::Q
     about_axis_ = true;
     nu_W_ = q_WB0_ * w_B;
     beta_ = 0.0;
-    period_ = kInf;
+    period_ = infinity;
     return;
   }
   init_elliptic(I_hat, L_tilde, e_w);
@@ -244,7 +246,7 @@ void TorqueFreeSolution::init_rotation_about_axis(const Eigen::Vector3d& I_Q, co
   e_B_ = axis_B;
   beta_ = (I_t - I_axial) / I_t * e_B_.dot(w_B0_);
   nu_W_ = q_WB0_ * m_over_I_t_B;
-  period_ = beta_ == 0.0 ? kInf : 2.0 * M_PI / std::abs(beta_);
+  period_ = beta_ == 0.0 ? infinity : 2.0 * M_PI / std::abs(beta_);
 }
 
 // The invariants Δ_j = G² − 2T I_j = Σ_{i≠j} m_i² (I_i − I_j)/I_i (Δ1 ≥ 0, Δ3 ≤ 0 sums of like-signed
@@ -336,7 +338,7 @@ void TorqueFreeSolution::init_elliptic(const Eigen::Vector3d& I, const Eigen::Ve
   const Eigen::Vector3d mh_Q = R_PQ.transpose() * mh;
   init_phase(mh_Q, M_hat(2) * kc_hat, t[1]);
   if (pi_complete_known_) pi_complete_ = complete_pi();
-  period_ = elliptic_.kc == 0.0 ? kInf : 4.0 * elliptic_.K / lambda_;
+  period_ = elliptic_.kc == 0.0 ? infinity : 4.0 * elliptic_.K / lambda_;
 
   q_BQ_ = Eigen::Quaterniond(R_BP_ * R_PQ);
   q_BQ_.normalize();

@@ -2,6 +2,7 @@
 // (exact/lagrange_top.hpp).
 #include "rigiddyn/exact/lagrange_top.hpp"
 
+#include "numbers.hpp"
 #include "rigiddyn/check.hpp"
 #include "power_of_two.hpp"
 
@@ -14,8 +15,9 @@ namespace rigiddyn {
 
 namespace {
 
-constexpr double kEps = std::numeric_limits<double>::epsilon();
-constexpr double kInf = std::numeric_limits<double>::infinity();
+using detail::epsilon;
+using detail::infinity;
+
 
 // Columns (e1, e2, e3) of a right-handed orthonormal frame in B with e3 = axis (unit).
 Eigen::Matrix3d frame_about_axis(const Eigen::Vector3d& e3) {
@@ -96,7 +98,7 @@ LagrangeTopSolution::LagrangeTopSolution(const PivotedBody& body, const Eigen::V
   b_ = rho0_ + a_ * u0_;
   alpha_ = kappa + beta_ * u0_;
   // sleeping: e3 vertical and ω along it, to the rounding of the state (|z⊥| ≤ 4 eps, |ω⊥| ≤ 4 eps |ω3|)
-  const double tiny = 16.0 * kEps * kEps;
+  const double tiny = 16.0 * epsilon * epsilon;
   if (s0_squared <= tiny) {
     if (kappa > tiny * omega3_ * omega3_) {
       throw_invalid("state", "a motion whose symmetry axis does not pass through the vertical (here e3 is vertical "
@@ -106,7 +108,7 @@ LagrangeTopSolution::LagrangeTopSolution(const PivotedBody& body, const Eigen::V
     case_ = LagrangeTopCase::sleeping;
     x_.setZero();
     theta_min_ = theta_max_ = angle_of(one_minus_u0_, one_plus_u0_);
-    nutation_period_ = kInf;
+    nutation_period_ = infinity;
     mean_precession_rate_ = 0.0;
     q_WN_ = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), z_N);
     return;
@@ -132,7 +134,7 @@ LagrangeTopSolution::LagrangeTopSolution(const PivotedBody& body, const Eigen::V
   one_minus_u1_ = one_minus_u0_ - x_[0];
   one_plus_u1_ = one_plus_u0_ + x_[0];
   one_minus_u2_ = one_minus_u0_ - x_[1];
-  if (!(one_minus_u2_ > 16.0 * kEps && one_plus_u1_ > 16.0 * kEps)) {
+  if (!(one_minus_u2_ > 16.0 * epsilon && one_plus_u1_ > 16.0 * epsilon)) {
     throw_invalid("state", "a motion whose symmetry axis does not pass through the vertical (1 - u2 and 1 + u1 above 16 eps)",
                   Eigen::Vector2d(one_minus_u2_, one_plus_u1_).transpose().eval());
   }

@@ -1,5 +1,7 @@
 #include "rigiddyn/inertia/principal_axes.hpp"
 
+#include "canonical_sign.hpp"
+
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
@@ -7,12 +9,7 @@ namespace rigiddyn {
 
 namespace {
 
-// v with its largest-magnitude component made positive.
-Eigen::Vector3d canonical_sign(const Eigen::Vector3d& v) {
-  Eigen::Index k;
-  v.cwiseAbs().maxCoeff(&k);
-  return v(k) < 0.0 ? Eigen::Vector3d(-v) : v;
-}
+using detail::canonical_sign;
 
 // A unit vector orthogonal to the unit vector d: the frame basis vector least aligned with d,
 // projected onto the plane orthogonal to d.

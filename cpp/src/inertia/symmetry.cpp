@@ -1,5 +1,7 @@
 #include "rigiddyn/inertia/symmetry.hpp"
 
+#include "canonical_sign.hpp"
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -134,12 +136,7 @@ std::vector<Vector3d> candidate_normals(const PointSet& s, const Matrix3d& inert
   return out;
 }
 
-// n with its largest-magnitude component positive.
-Vector3d canonical_sign(const Vector3d& n) {
-  Index k;
-  n.cwiseAbs().maxCoeff(&k);
-  return n(k) < 0.0 ? Vector3d(-n) : n;
-}
+using detail::canonical_sign;
 
 bool parallel(const Vector3d& a, const Vector3d& b, double angle) { return a.cross(b).norm() <= angle; }
 

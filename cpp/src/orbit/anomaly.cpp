@@ -2,13 +2,15 @@
 
 #include <cmath>
 
+#include "numbers.hpp"
 #include "rigiddyn/check.hpp"
 #include "rigiddyn/orbit/kepler_equation.hpp"
 
 namespace rigiddyn {
 
 namespace {
-constexpr double two_pi = 6.283185307179586;
+
+using detail::two_pi;
 
 // e = 1 refused where an eccentric or hyperbolic anomaly is asked.
 void check_not_parabolic(double e) {

@@ -3,13 +3,15 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
+#include "numbers.hpp"
 #include "rigiddyn/check.hpp"
 #include "rigiddyn/orbit/anomaly.hpp"
 
 namespace rigiddyn {
 
 namespace {
-constexpr double two_pi = 6.283185307179586;
+
+using detail::two_pi;
 
 double wrap_positive(double angle) { return angle < 0.0 ? angle + two_pi : angle; }  // (−π, π] → [0, 2π)
 

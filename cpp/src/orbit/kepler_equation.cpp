@@ -4,15 +4,17 @@
 #include <cmath>
 #include <limits>
 
+#include "numbers.hpp"
 #include "rigiddyn/check.hpp"
 #include "rigiddyn/orbit/anomaly.hpp"
 
 namespace rigiddyn {
 
 namespace {
-constexpr double pi = 3.141592653589793;
-constexpr double two_pi = 6.283185307179586;
-constexpr double eps = std::numeric_limits<double>::epsilon();
+
+using detail::epsilon;
+using detail::pi;
+using detail::two_pi;
 
 // The residual of Kepler's equation at x and its first two derivatives (anomaly.hpp's cancellation-free
 // forms; f' = (1 − e) + 2 e sin²(x/2) = 1 − e cos x, and (e − 1) + 2 e sinh²(x/2) = e cosh x − 1).
@@ -51,7 +53,7 @@ double solve_bracketed(double x, double lo, double hi, double e, double m) {
     const double halley_denominator = 1.0 - newton * r.d2f / (2.0 * r.df);
     double next = x - (halley_denominator > 0.5 ? newton / halley_denominator : newton);
     if (!(next > lo && next < hi)) next = hi > 4.0 * lo ? std::sqrt(lo) * std::sqrt(hi) : lo + (hi - lo) / 2.0;
-    const double tolerance = 2.0 * eps * std::abs(next) + std::numeric_limits<double>::denorm_min();
+    const double tolerance = 2.0 * epsilon * std::abs(next) + std::numeric_limits<double>::denorm_min();
     if (std::abs(next - x) <= tolerance || hi - lo <= tolerance) return next;
     x = next;
   }

@@ -1,5 +1,7 @@
 #include "rigiddyn/simulate/balance.hpp"
 
+#include "numbers.hpp"
+
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
@@ -10,7 +12,7 @@ namespace rigiddyn {
 
 namespace {
 
-constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+using detail::nan;
 constexpr auto energy = static_cast<std::size_t>(BalanceQuantity::energy);
 constexpr auto linear = static_cast<std::size_t>(BalanceQuantity::linear_momentum);
 constexpr auto angular = static_cast<std::size_t>(BalanceQuantity::angular_momentum);

@@ -1,5 +1,6 @@
 #include "rigiddyn/simulate/global_error.hpp"
 
+#include "numbers.hpp"
 #include "rigiddyn/check.hpp"
 #include "rigiddyn/so3/angular_distance.hpp"
 
@@ -18,7 +19,8 @@ namespace rigiddyn {
 
 namespace {
 
-constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+using detail::nan;
+
 
 // The round-off a run of `steps` steps can accumulate in a quantity of size `size`: a relative
 // 8 ε_machine per step, summed (a bound: rounding errors add up at most linearly).

@@ -4,10 +4,10 @@
 
 namespace rigiddyn {
 
-using Rigid1 = detail::RigidSlot<FullEuler, detail::FirstPlace>;
+using RigidFull1 = detail::RigidSlot<FullEuler, detail::FirstPlace>;
 
-RIGIDDYN_RUN_ONE_BODY(Rigid1, none)
-RIGIDDYN_RUN_ONE_BODY(Rigid1, gravity)
-RIGIDDYN_RUN_ONE_BODY(Rigid1, gravity_and_loads)
+RIGIDDYN_RUN_ONE_BODY(RigidFull1, none)
+RIGIDDYN_RUN_ONE_BODY(RigidFull1, gravity)
+RIGIDDYN_RUN_ONE_BODY(RigidFull1, gravity_and_loads)
 
 }  // namespace rigiddyn

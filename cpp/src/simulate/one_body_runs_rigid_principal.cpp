@@ -4,10 +4,10 @@
 
 namespace rigiddyn {
 
-using Rigid1 = detail::RigidSlot<PrincipalEuler, detail::FirstPlace>;
+using RigidPrincipal1 = detail::RigidSlot<PrincipalEuler, detail::FirstPlace>;
 
-RIGIDDYN_RUN_ONE_BODY(Rigid1, none)
-RIGIDDYN_RUN_ONE_BODY(Rigid1, gravity)
-RIGIDDYN_RUN_ONE_BODY(Rigid1, gravity_and_loads)
+RIGIDDYN_RUN_ONE_BODY(RigidPrincipal1, none)
+RIGIDDYN_RUN_ONE_BODY(RigidPrincipal1, gravity)
+RIGIDDYN_RUN_ONE_BODY(RigidPrincipal1, gravity_and_loads)
 
 }  // namespace rigiddyn

@@ -4,10 +4,10 @@
 
 namespace rigiddyn {
 
-using Rigid1 = detail::RigidSlot<SphericalEuler, detail::FirstPlace>;
+using RigidSpherical1 = detail::RigidSlot<SphericalEuler, detail::FirstPlace>;
 
-RIGIDDYN_RUN_ONE_BODY(Rigid1, none)
-RIGIDDYN_RUN_ONE_BODY(Rigid1, gravity)
-RIGIDDYN_RUN_ONE_BODY(Rigid1, gravity_and_loads)
+RIGIDDYN_RUN_ONE_BODY(RigidSpherical1, none)
+RIGIDDYN_RUN_ONE_BODY(RigidSpherical1, gravity)
+RIGIDDYN_RUN_ONE_BODY(RigidSpherical1, gravity_and_loads)
 
 }  // namespace rigiddyn

@@ -1,5 +1,6 @@
 #include "rigiddyn/simulate/tolerance.hpp"
 
+#include "numbers.hpp"
 #include "rigiddyn/check.hpp"
 #include "rigiddyn/closest_name.hpp"
 
@@ -12,7 +13,8 @@ namespace rigiddyn {
 
 namespace {
 
-constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+using detail::nan;
+
 
 // The estimates of `measure` in e, (n,) or (n, nb).
 const std::vector<double>& values_of(const GlobalErrorEstimate& e, ErrorMeasure measure) {

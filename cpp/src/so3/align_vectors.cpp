@@ -1,5 +1,7 @@
 #include "rigiddyn/so3/align_vectors.hpp"
 
+#include "numbers.hpp"
+
 #include "rigiddyn/check.hpp"
 #include "rigiddyn/so3/matrix.hpp"
 #include "rigiddyn/so3/quaternion.hpp"
@@ -16,7 +18,7 @@ namespace rigiddyn {
 
 namespace {
 
-constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+using detail::nan;
 
 // sqrt(sum_i w_i |a_i - R b_i|^2), with w_skip's term left out (skip = -1: none). Scaled by the
 // largest residual entry and the largest weight, so that it overflows only when the result does.

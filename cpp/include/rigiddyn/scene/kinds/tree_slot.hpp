@@ -14,14 +14,6 @@
 #include "rigiddyn/scene/body.hpp"
 #include "rigiddyn/scene/kinds/body_slot.hpp"
 #include "rigiddyn/scene/scene_simulation.hpp"
-#include "rigiddyn/so3/dexp_inv.hpp"
-#include "rigiddyn/so3/exp_log.hpp"
-#include "rigiddyn/so3/jacobian.hpp"
-#include "rigiddyn/so3/quaternion_kernels.hpp"
-#include "rigiddyn/tree/aba.hpp"
-#include "rigiddyn/tree/crba.hpp"
-#include "rigiddyn/tree/forward_kinematics.hpp"
-#include "rigiddyn/tree/momentum.hpp"
 #include "rigiddyn/tree/tree_link.hpp"
 #include "rigiddyn/tree/workspace.hpp"
 
@@ -60,21 +52,7 @@ struct TreeSlot : SlotPlace {
   mutable Eigen::VectorXd q_0, p_0, phi, phi_1, force, p_bar, rhs;
   mutable Eigen::LLT<Eigen::MatrixXd> H_llt;
 
-  TreeSlot(int body, Eigen::Index at_y, Eigen::Index at_xi, std::shared_ptr<const Tree> tree_)
-      : SlotPlace{body, at_y, at_xi}, tree(std::move(tree_)), links(tree->num_links()), nq(tree->nq()), nv(tree->nv()),
-        ws(*tree), f_ext(links), q_unit(nq), tau(Eigen::VectorXd::Zero(nv)), q_0(nq), p_0(nv), phi(nv), phi_1(nv), force(nv),
-        p_bar(nv), rhs(nv) {
-    for (const Link& link : tree->links()) {
-      const TreeJoint::Kind kind = std::holds_alternative<SphericalJoint>(link.joint) ? TreeJoint::ball
-                                   : std::holds_alternative<FreeJoint>(link.joint)    ? TreeJoint::free
-                                   : std::holds_alternative<FixedJoint>(link.joint)   ? TreeJoint::fixed
-                                                                                      : TreeJoint::vector;
-      joints.push_back({kind, link.idx_q, link.idx_v});
-      has_quaternions = has_quaternions || kind == TreeJoint::ball || kind == TreeJoint::free;
-      c_L.push_back(link.inertia.com());
-    }
-    H_llt.compute(Eigen::MatrixXd::Identity(nv, nv));  // sizes it, and sets its state (copied with the slot)
-  }
+  TreeSlot(int body, Eigen::Index at_y, Eigen::Index at_xi, std::shared_ptr<const Tree> tree_);
   Eigen::Index y_size() const { return nq + nv; }
   Eigen::Index xi_size() const { return 2 * nv; }
 
@@ -82,123 +60,36 @@ struct TreeSlot : SlotPlace {
   // when the tree has no quaternion)
   Eigen::Map<const Eigen::VectorXd> velocities(const double* y) const { return {y + at_y + nq, nv}; }
   Eigen::Map<const Eigen::VectorXd> configuration() const { return {q_at, nq}; }
-  void load_configuration(const double* y) const {
-    const double* q = y + at_y;
-    q_at = has_quaternions ? q_unit.data() : q;
-    if (!has_quaternions) return;
-    for (int i = 0; i < nq; ++i) q_unit[i] = q[i];
-    for (const TreeJoint& j : joints) {
-      if (j.kind == TreeJoint::ball) normalise_quaternion(q_unit.data() + j.q);
-      if (j.kind == TreeJoint::free) normalise_quaternion(q_unit.data() + j.q + 3);
-    }
-  }
+  void load_configuration(const double* y) const;
   // R_JL of a free joint from configuration()
-  Eigen::Matrix3d free_rotation_of(const TreeJoint& j) const { return rotation_at(q_at + j.q + 3); }
+  Eigen::Matrix3d free_rotation_of(const TreeJoint& j) const;
 
   // Each link's kinematics at its centre of mass C (tree forward kinematics, Featherstone §4.2): R_WB = R_WL,
   // p_W = p_WL + R_WL c_L, ω_B = ω_L, v_W = R_WL (v_L + ω_L × c_L) from the link twist [ω_L; v_L] at L's origin;
   // its joint's q (normalised) and v for the joint elements
-  void kinematics(const double* y, const StepClock&, BodyKinematics& first) const {
-    load_configuration(y);
-    forward_kinematics_unchecked(*tree, configuration(), velocities(y), ws);
-    BodyKinematics* k = &first;
-    for (int i = 0; i < links; ++i) {
-      const Eigen::Matrix3d& R_WL = ws.X_W[i].rotation();
-      k[i].R_WB = R_WL;
-      if (fill_quaternions) k[i].q_WB = Eigen::Quaterniond(R_WL);
-      k[i].w_B = ws.v[i].angular;
-      k[i].p_W = ws.X_W[i].translation() + R_WL * c_L[i];
-      k[i].v_W = R_WL * (ws.v[i].linear + cross_3(ws.v[i].angular, c_L[i]));
-      k[i].joint_q = q_at + joints[i].q;  // joints[i]: link i's
-      k[i].joint_v = y + at_y + nq + joints[i].v;
-    }
-  }
+  void kinematics(const double* y, const StepClock&, BodyKinematics& first) const;
   // The tree applies a uniform gravity g_W [m/s²] on all its links itself, as its base's acceleration a₀ = −g
   // (Featherstone §5.3: the same motion as a force m g at each centre of mass, at no cost per link); the gravity
   // element then leaves their wrenches out (UniformGravityTerm::leave_to_tree, scene_model.hpp)
-  void apply_gravity(const Eigen::Vector3d& g_W) {
-    auto with_gravity = std::make_shared<Tree>(*tree);
-    with_gravity->set_gravity(g_W);
-    tree = std::move(with_gravity);
-  }
+  void apply_gravity(const Eigen::Vector3d& g_W);
   // Whether the elements left every link without a wrench (sum of |components| exactly 0: a NaN or any non-zero
   // component counts as one), from the links' wrenches; the scene model notes it after the elements add theirs, at
   // each evaluation (the tree's own gravity is not a wrench: apply_gravity)
-  void note_wrenches(const BodyWrench& first) const {
-    const BodyWrench* w = &first;
-    double sum = 0.0;
-    for (int i = 0; i < links; ++i) sum += w[i].f_W.cwiseAbs().sum() + w[i].tau_B.cwiseAbs().sum();
-    unloaded = sum == 0.0;
-  }
+  void note_wrenches(const BodyWrench& first) const;
   // v̇ (ws.qdd) by the articulated-body algorithm under the links' wrenches, after kinematics and note_wrenches at the
   // same y: their forces in the links' frames (external_forces: f_ext, or none when every link is unloaded)
-  const Eigen::VectorXd& accelerations(const double* y, const BodyKinematics& first, const BodyWrench& wrench) const {
-    if (unloaded) return aba_after_kinematics(*tree, velocities(y), tau, no_external_forces(), ws);
-    const BodyKinematics* k = &first;
-    const BodyWrench* w = &wrench;
-    for (int i = 0; i < links; ++i) {
-      const Eigen::Vector3d f_L = k[i].R_WB.transpose() * w[i].f_W;
-      f_ext[i].linear = f_L;
-      f_ext[i].angular = w[i].tau_B + cross_3(c_L[i], f_L);
-    }
-    return aba_after_kinematics(*tree, velocities(y), tau, f_ext, ws);
-  }
+  const Eigen::VectorXd& accelerations(const double* y, const BodyKinematics& first, const BodyWrench& wrench) const;
   // the links' forces of the last accelerations
   const std::vector<Force>& external_forces() const { return unloaded ? no_external_forces() : f_ext; }
   // the tangent of q at y: per joint its rate, ω_L, or (ω_L, R_JL v_L)
-  void configuration_tangent(const double* y, double* out) const {
-    const double* v = y + at_y + nq;
-    for (const TreeJoint& j : joints) {
-      if (j.kind == TreeJoint::vector) out[j.v] = v[j.v];
-      if (j.kind == TreeJoint::ball || j.kind == TreeJoint::free) {
-        for (int i = 0; i < 3; ++i) out[j.v + i] = v[j.v + i];
-      }
-      if (j.kind == TreeJoint::free) {
-        const Eigen::Vector3d p_dot = free_rotation_of(j) * three(v + j.v + 3);
-        for (int i = 0; i < 3; ++i) out[j.v + 3 + i] = p_dot[i];
-      }
-    }
-  }
+  void configuration_tangent(const double* y, double* out) const;
 
-  void rate(const double* y, const StepClock&, const BodyKinematics& k, const BodyWrench& wrench, double* dy) const {
-    const Eigen::VectorXd& qdd = accelerations(y, k, wrench);
-    const double* x = y + at_y;
-    double* dq = dy + at_y;
-    for (const TreeJoint& j : joints) {
-      if (j.kind == TreeJoint::vector) dq[j.q] = x[nq + j.v];
-      if (j.kind == TreeJoint::ball) quat_rate_body(x + j.q, three(x + nq + j.v), dq + j.q);  // q̇ = ½ q ⊗ (ω_L, 0)
-      if (j.kind == TreeJoint::free) {
-        const Eigen::Vector3d p_dot = free_rotation_of(j) * three(x + nq + j.v + 3);  // ṗ_JL = R_JL v_L
-        for (int i = 0; i < 3; ++i) dq[j.q + i] = p_dot[i];
-        quat_rate_body(x + j.q + 3, three(x + nq + j.v), dq + j.q + 3);
-      }
-    }
-    for (int i = 0; i < nv; ++i) dq[nq + i] = qdd[i];
-  }
-  void velocity(const double* y, const StepClock&, const BodyKinematics& k, const BodyWrench& wrench, double* xi) const {
-    const Eigen::VectorXd& qdd = accelerations(y, k, wrench);
-    configuration_tangent(y, xi + at_xi);
-    for (int i = 0; i < nv; ++i) xi[at_xi + nv + i] = qdd[i];
-  }
+  void rate(const double* y, const StepClock&, const BodyKinematics& k, const BodyWrench& wrench, double* dy) const;
+  void velocity(const double* y, const StepClock&, const BodyKinematics& k, const BodyWrench& wrench, double* xi) const;
   // q ⊕ Θ joint by joint (vector parts added, q ⊗ exp(Θ_ω) for a quaternion), v + Θ_v
-  void retract(const double* y, const double* theta, double* out) const {
-    const double* q = y + at_y;
-    const double* t = theta + at_xi;
-    double* o = out + at_y;
-    retract_configuration(q, t, o);
-    for (int i = 0; i < nv; ++i) o[nq + i] = q[nq + i] + t[nv + i];
-  }
-  void dexp_inv(const double* theta, double* xi) const {
-    for (const TreeJoint& j : joints) {
-      if (j.kind == TreeJoint::ball || j.kind == TreeJoint::free) dexp_inv_body(theta + at_xi + j.v, xi + at_xi + j.v);
-    }
-  }
-  void project(double* y) const {
-    for (const TreeJoint& j : joints) {
-      if (j.kind == TreeJoint::ball) normalise_quaternion(y + at_y + j.q);
-      if (j.kind == TreeJoint::free) normalise_quaternion(y + at_y + j.q + 3);
-    }
-  }
+  void retract(const double* y, const double* theta, double* out) const;
+  void dexp_inv(const double* theta, double* xi) const;
+  void project(double* y) const;
   // v += h v̇ at y
   template <class GyroscopicKick>
   void kick(double* y, const BodyKinematics& k, const BodyWrench& wrench, double h, const GyroscopicKick&) const {
@@ -207,20 +98,7 @@ struct TreeSlot : SlotPlace {
   }
   // q ← q ⊕ h (the tangent of q at fixed v): exact for constant joint rates, a free joint's position by R_JL at the
   // start
-  void translate(double* y, double h) const {
-    load_configuration(y);
-    const double* v = y + at_y + nq;
-    for (const TreeJoint& j : joints) {
-      double* q = y + at_y + j.q;
-      if (j.kind == TreeJoint::vector) q[0] += h * v[j.v];
-      if (j.kind == TreeJoint::ball) turn_quaternion(q, three(v + j.v), h);
-      if (j.kind == TreeJoint::free) {
-        const Eigen::Vector3d dp = h * (free_rotation_of(j) * three(v + j.v + 3));
-        for (int i = 0; i < 3; ++i) q[i] += dp[i];
-        turn_quaternion(q + 3, three(v + j.v), h);
-      }
-    }
-  }
+  void translate(double* y, double h) const;
   void turn(double*, double) const {}  // translate moves the whole configuration
   template <class Rotation>
   void free_rotation(double*, double) const {
@@ -234,18 +112,7 @@ struct TreeSlot : SlotPlace {
   // per link: its q_WB (of R_WB), T = ½ m |v|² + ½ ω·I_C ω, H_C = R_WL I_C ω (its momentum_O_W: about its centre of
   // mass); no pivot reaction is recorded (a fixed base's reaction is the tree's, not a link's)
   void record(const double*, BodyKinematics& first, const BodyWrench&, RecordSums& sums,
-              Eigen::Vector3d& momentum_first, Eigen::Vector3d& reaction_first) const {
-    BodyKinematics* k = &first;
-    for (int i = 0; i < links; ++i) {
-      k[i].q_WB = Eigen::Quaterniond(k[i].R_WB);
-      const Eigen::Vector3d h_L = tree->link(i).inertia.inertia_com() * k[i].w_B;
-      sums.add_translation(k[i]);
-      sums.T += 0.5 * k[i].w_B.dot(h_L);
-      (&momentum_first)[i] = k[i].R_WB * h_L;
-      sums.H_W += (&momentum_first)[i];
-      (&reaction_first)[i].setZero();
-    }
-  }
+              Eigen::Vector3d& momentum_first, Eigen::Vector3d& reaction_first) const;
   // The variational midpoint method (Marsden & West 2001; GNI VI.6) on the tree's configuration group, each joint
   // its own factor: R for a revolute or prismatic joint, SO(3) for a ball joint, SO(3) × R³ for a free joint (its
   // rotation and its position p in J). A step from q₀ to q₁ follows the curve of constant joint velocity: ξ = log(R₀ᵀ
@@ -265,137 +132,41 @@ struct TreeSlot : SlotPlace {
   // tree of revolute, prismatic and fixed joints it is the midpoint rule on (q, p). Steps of the scene's fixed point:
   // p₀ = H(q₀) v₀ at the step's start y0, and the first iterate (q₀ ⊕ φ̄, v₀) with φ̄ = (h/2) ψ(v₀) into mid (a
   // consistent pair: from φ̄ = 0 the first iterate would miss the rotations' terms in ξ, a larger first correction)
-  void start_variational_midpoint(const double* y0, double half_h, double* mid) const {
-    load_configuration(y0);
-    q_0 = Eigen::Map<const Eigen::VectorXd>(y0 + at_y, nq);
-    forward_kinematics_unchecked(*tree, configuration(), velocities(y0), ws);
-    generalized_momentum_after_kinematics(*tree, no_external_forces(), ws);
-    p_0 = ws.p;
-    chart_point_of(y0 + at_y + nq, half_h);
-    write_chart_point(phi, mid);
-  }
+  void start_variational_midpoint(const double* y0, double half_h, double* mid) const;
   // One iterate, after the scene's rate at ȳ = mid (its kinematics in ws, the links' forces external_forces(),
   // configuration() its q̄ = q_0 ⊕ φ̄): p̄ from F(ȳ) by the equations above, v̄ = H(q̄)⁻¹ p̄ into `next` and, with φ̄
   // = (h/2) ψ for the chart rate ψ of v̄ (v̄; a free joint's R̄ v̄_L for its position), its configuration q_0 ⊕ φ̄
   // (the pair consistent: a q̄ one iterate behind v̄ would slow the fixed point to a rate O(√h), H(q̄) depending on q̄
   // at first order)
-  void variational_midpoint_iterate(const double* mid, double half_h, double* next) const {
-    generalized_momentum_after_kinematics(*tree, external_forces(), ws);
-    force = ws.p_dot;
-    const double* v_bar = mid + at_y + nq;
-    for (const TreeJoint& j : joints) {
-      if (j.kind == TreeJoint::vector) p_bar[j.v] = p_0[j.v] + half_h * force[j.v];
-      if (j.kind == TreeJoint::free) {
-        const Eigen::Matrix3d R_0 = start_rotation_of(j), R_bar = R_0 * rotvec_to_matrix(phi.segment<3>(j.v));
-        p_bar.segment<3>(j.v + 3) = R_bar.transpose() * (R_0 * p_0.segment<3>(j.v + 3)) + half_h * force.segment<3>(j.v + 3);
-        force.segment<3>(j.v) -= three(v_bar + j.v + 3).cross(p_bar.segment<3>(j.v + 3));  // F_ω − v̄_L × p̄_v
-      }
-      if (j.kind == TreeJoint::ball || j.kind == TreeJoint::free) {  // ξ = 2φ̄
-        const Eigen::Vector3d phi_j = phi.segment<3>(j.v), F = force.segment<3>(j.v);
-        p_bar.segment<3>(j.v) = left_jacobian(2.0 * phi_j).transpose() *
-                                    (p_0.segment<3>(j.v) + (2.0 * half_h) * (rotvec_to_matrix(phi_j) * F)) -
-                                half_h * (left_jacobian(phi_j) * F);
-      }
-    }
-    rhs = p_bar;
-    solve_velocity(next);
-    chart_point_of(next + at_y + nq, half_h);
-    write_chart_point(phi, next);
-  }
+  void variational_midpoint_iterate(const double* mid, double half_h, double* next) const;
   // An iterate whose v̄ was changed (the scene's Anderson mixing) takes its configuration q_0 ⊕ φ̄ from v̄ again
-  void recenter_variational_midpoint(double half_h, double* mid) const {
-    chart_point_of(mid + at_y + nq, half_h);
-    write_chart_point(phi, mid);
-  }
+  void recenter_variational_midpoint(double half_h, double* mid) const;
   // q₁ = q_0 ⊕ 2φ̄ and v₁ = H(q₁)⁻¹ p₁ into y1 (whose other coordinates are 2ȳ − y0)
-  void finish_variational_midpoint(double h, double* y1) const {
-    phi_1 = 2.0 * phi;
-    write_chart_point(phi_1, y1);
-    for (const TreeJoint& j : joints) {
-      if (j.kind == TreeJoint::vector) p_bar[j.v] = p_0[j.v] + h * force[j.v];
-      if (j.kind == TreeJoint::free) {
-        const Eigen::Matrix3d R_0 = start_rotation_of(j);
-        const Eigen::Matrix3d R_bar = R_0 * rotvec_to_matrix(phi.segment<3>(j.v)), R_1 = R_0 * rotvec_to_matrix(phi_1.segment<3>(j.v));
-        p_bar.segment<3>(j.v + 3) = R_1.transpose() * (R_bar * (p_bar.segment<3>(j.v + 3) + 0.5 * h * force.segment<3>(j.v + 3)));
-      }
-      if (j.kind == TreeJoint::ball || j.kind == TreeJoint::free) {
-        const Eigen::Vector3d p_tilde = p_bar.segment<3>(j.v) + 0.5 * h * (left_jacobian(phi.segment<3>(j.v)) * force.segment<3>(j.v));
-        p_bar.segment<3>(j.v) = left_jacobian(phi_1.segment<3>(j.v)).partialPivLu().solve(p_tilde);
-      }
-    }
-    load_configuration(y1);
-    rhs = p_bar;
-    solve_velocity(y1);
-  }
+  void finish_variational_midpoint(double h, double* y1) const;
 
   // from and to the links' JointStates (the states of bodies body … body + links − 1)
-  void coordinates(const BodyState& first, double* y) const {
-    for (int i = 0; i < links; ++i) {
-      const Link& link = tree->link(i);
-      const auto& s = std::get<JointState>((&first)[i]);
-      for (int k = 0; k < link.nq; ++k) y[at_y + link.idx_q + k] = s.q[k];
-      for (int k = 0; k < link.nv; ++k) y[at_y + nq + link.idx_v + k] = s.v[k];
-    }
-  }
-  void states(const double* y, BodyState* first) const {
-    for (int i = 0; i < links; ++i) {
-      const Link& link = tree->link(i);
-      first[i] = JointState{Eigen::Map<const Eigen::VectorXd>(y + at_y + link.idx_q, link.nq),
-                            Eigen::Map<const Eigen::VectorXd>(y + at_y + nq + link.idx_v, link.nv)};
-    }
-  }
+  void coordinates(const BodyState& first, double* y) const;
+  void states(const double* y, BodyState* first) const;
   // the tree's q and v into the records' joint columns
-  void record_internal(const double* y, SceneSimulation& out) const {
-    out.joint_q.insert(out.joint_q.end(), y + at_y, y + at_y + nq);
-    out.joint_v.insert(out.joint_v.end(), y + at_y + nq, y + at_y + nq + nv);
-  }
+  void record_internal(const double* y, SceneSimulation& out) const;
   Eigen::Index attitude_y() const { return -1; }  // the links' attitudes are not coordinates
 
  private:
   // v = H(configuration())⁻¹ rhs (CRBA and a Cholesky solve, no allocation) into the velocities of y
-  void solve_velocity(double* y) const {
-    H_llt.compute(crba_unchecked(*tree, configuration(), ws));
-    H_llt.solveInPlace(rhs);
-    Eigen::Map<Eigen::VectorXd>(y + at_y + nq, nv) = rhs;
-  }
+  void solve_velocity(double* y) const;
   // φ̄ = (h/2) ψ for the joint velocities v: the chart rate ψ = v, a free joint's position rate R̄ v_L (R̄ = R₀ exp(φ̄_ω))
-  void chart_point_of(const double* v, double half_h) const {
-    for (const TreeJoint& j : joints) {
-      if (j.kind == TreeJoint::vector) phi[j.v] = half_h * v[j.v];
-      if (j.kind == TreeJoint::ball || j.kind == TreeJoint::free) phi.segment<3>(j.v) = half_h * three(v + j.v);
-      if (j.kind == TreeJoint::free) {
-        const Eigen::Matrix3d R_bar = start_rotation_of(j) * rotvec_to_matrix(phi.segment<3>(j.v));
-        phi.segment<3>(j.v + 3) = half_h * (R_bar * three(v + j.v + 3));
-      }
-    }
-  }
+  void chart_point_of(const double* v, double half_h) const;
   // R_JL of a free joint in q_0
-  Eigen::Matrix3d start_rotation_of(const TreeJoint& j) const { return rotation_at(q_0.data() + j.q + 3); }
+  Eigen::Matrix3d start_rotation_of(const TreeJoint& j) const;
   // the rotation matrix of the quaternion (x, y, z, w) at x
-  static Eigen::Matrix3d rotation_at(const double* x) {
-    return Eigen::Quaterniond(x[3], x[0], x[1], x[2]).toRotationMatrix();
-  }
+  static Eigen::Matrix3d rotation_at(const double* x);
   // o ← q ⊕ t for a configuration q and a tangent t of the joints (indexed as v): vector parts added, a quaternion
   // q ⊗ exp(t_ω), a free joint's position p + t_p
-  void retract_configuration(const double* q, const double* t, double* o) const {
-    for (const TreeJoint& j : joints) {
-      if (j.kind == TreeJoint::vector) o[j.q] = q[j.q] + t[j.v];
-      if (j.kind == TreeJoint::ball) times_exp(q + j.q, three(t + j.v), o + j.q);
-      if (j.kind == TreeJoint::free) {
-        for (int i = 0; i < 3; ++i) o[j.q + i] = q[j.q + i] + t[j.v + 3 + i];
-        times_exp(q + j.q + 3, three(t + j.v), o + j.q + 3);
-      }
-    }
-  }
+  void retract_configuration(const double* q, const double* t, double* o) const;
   // the q of y ← q_0 ⊕ φ, the chart of the step
-  void write_chart_point(const Eigen::VectorXd& chart, double* y) const {
-    retract_configuration(q_0.data(), chart.data(), y + at_y);
-  }
+  void write_chart_point(const Eigen::VectorXd& chart, double* y) const;
   // q ← q ⊗ exp(h ω) (exact for a constant ω)
-  static void turn_quaternion(double* q, const Eigen::Vector3d& w, double h) {
-    const double q0[4] = {q[0], q[1], q[2], q[3]};
-    times_exp(q0, h * w, q);
-  }
+  static void turn_quaternion(double* q, const Eigen::Vector3d& w, double h);
 };
 
 // The slot of a whole tree, added with its link 0 (the bodies of its other links add nothing: compile checks that
