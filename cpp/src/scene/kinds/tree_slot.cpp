@@ -3,13 +3,9 @@
 // (tree/aba.hpp, tree/crba.hpp), not by the call.
 #include "rigiddyn/scene/kinds/tree_slot.hpp"
 
-#include "rigiddyn/so3/dexp_inv.hpp"
 #include "rigiddyn/so3/exp_log.hpp"
 #include "rigiddyn/so3/jacobian.hpp"
-#include "rigiddyn/so3/quaternion_kernels.hpp"
-#include "rigiddyn/tree/aba.hpp"
 #include "rigiddyn/tree/crba.hpp"
-#include "rigiddyn/tree/forward_kinematics.hpp"
 #include "rigiddyn/tree/momentum.hpp"
 
 namespace rigiddyn::detail {
@@ -30,115 +26,10 @@ TreeSlot::TreeSlot(int body, Eigen::Index at_y, Eigen::Index at_xi, std::shared_
   H_llt.compute(Eigen::MatrixXd::Identity(nv, nv));  // sizes it, and sets its state (copied with the slot)
 }
 
-void TreeSlot::load_configuration(const double* y) const {
-  const double* q = y + at_y;
-  q_at = has_quaternions ? q_unit.data() : q;
-  if (!has_quaternions) return;
-  for (int i = 0; i < nq; ++i) q_unit[i] = q[i];
-  for (const TreeJoint& j : joints) {
-    if (j.kind == TreeJoint::ball) normalise_quaternion(q_unit.data() + j.q);
-    if (j.kind == TreeJoint::free) normalise_quaternion(q_unit.data() + j.q + 3);
-  }
-}
-
-Eigen::Matrix3d TreeSlot::free_rotation_of(const TreeJoint& j) const { return rotation_at(q_at + j.q + 3); }
-
-void TreeSlot::kinematics(const double* y, const StepClock&, BodyKinematics& first) const {
-  load_configuration(y);
-  forward_kinematics_unchecked(*tree, configuration(), velocities(y), ws);
-  BodyKinematics* k = &first;
-  for (int i = 0; i < links; ++i) {
-    const Eigen::Matrix3d& R_WL = ws.X_W[i].rotation();
-    k[i].R_WB = R_WL;
-    if (fill_quaternions) k[i].q_WB = Eigen::Quaterniond(R_WL);
-    k[i].w_B = ws.v[i].angular;
-    k[i].p_W = ws.X_W[i].translation() + R_WL * c_L[i];
-    k[i].v_W = R_WL * (ws.v[i].linear + cross_3(ws.v[i].angular, c_L[i]));
-    k[i].joint_q = q_at + joints[i].q;  // joints[i]: link i's
-    k[i].joint_v = y + at_y + nq + joints[i].v;
-  }
-}
-
 void TreeSlot::apply_gravity(const Eigen::Vector3d& g_W) {
   auto with_gravity = std::make_shared<Tree>(*tree);
   with_gravity->set_gravity(g_W);
   tree = std::move(with_gravity);
-}
-
-void TreeSlot::note_wrenches(const BodyWrench& first) const {
-  const BodyWrench* w = &first;
-  double sum = 0.0;
-  for (int i = 0; i < links; ++i) sum += w[i].f_W.cwiseAbs().sum() + w[i].tau_B.cwiseAbs().sum();
-  unloaded = sum == 0.0;
-}
-
-const Eigen::VectorXd& TreeSlot::accelerations(const double* y, const BodyKinematics& first, const BodyWrench& wrench) const {
-  if (unloaded) return aba_after_kinematics(*tree, velocities(y), tau, no_external_forces(), ws);
-  const BodyKinematics* k = &first;
-  const BodyWrench* w = &wrench;
-  for (int i = 0; i < links; ++i) {
-    const Eigen::Vector3d f_L = k[i].R_WB.transpose() * w[i].f_W;
-    f_ext[i].linear = f_L;
-    f_ext[i].angular = w[i].tau_B + cross_3(c_L[i], f_L);
-  }
-  return aba_after_kinematics(*tree, velocities(y), tau, f_ext, ws);
-}
-
-void TreeSlot::configuration_tangent(const double* y, double* out) const {
-  const double* v = y + at_y + nq;
-  for (const TreeJoint& j : joints) {
-    if (j.kind == TreeJoint::vector) out[j.v] = v[j.v];
-    if (j.kind == TreeJoint::ball || j.kind == TreeJoint::free) {
-      for (int i = 0; i < 3; ++i) out[j.v + i] = v[j.v + i];
-    }
-    if (j.kind == TreeJoint::free) {
-      const Eigen::Vector3d p_dot = free_rotation_of(j) * three(v + j.v + 3);
-      for (int i = 0; i < 3; ++i) out[j.v + 3 + i] = p_dot[i];
-    }
-  }
-}
-
-void TreeSlot::rate(const double* y, const StepClock&, const BodyKinematics& k, const BodyWrench& wrench, double* dy) const {
-  const Eigen::VectorXd& qdd = accelerations(y, k, wrench);
-  const double* x = y + at_y;
-  double* dq = dy + at_y;
-  for (const TreeJoint& j : joints) {
-    if (j.kind == TreeJoint::vector) dq[j.q] = x[nq + j.v];
-    if (j.kind == TreeJoint::ball) quat_rate_body(x + j.q, three(x + nq + j.v), dq + j.q);  // q̇ = ½ q ⊗ (ω_L, 0)
-    if (j.kind == TreeJoint::free) {
-      const Eigen::Vector3d p_dot = free_rotation_of(j) * three(x + nq + j.v + 3);  // ṗ_JL = R_JL v_L
-      for (int i = 0; i < 3; ++i) dq[j.q + i] = p_dot[i];
-      quat_rate_body(x + j.q + 3, three(x + nq + j.v), dq + j.q + 3);
-    }
-  }
-  for (int i = 0; i < nv; ++i) dq[nq + i] = qdd[i];
-}
-
-void TreeSlot::velocity(const double* y, const StepClock&, const BodyKinematics& k, const BodyWrench& wrench, double* xi) const {
-  const Eigen::VectorXd& qdd = accelerations(y, k, wrench);
-  configuration_tangent(y, xi + at_xi);
-  for (int i = 0; i < nv; ++i) xi[at_xi + nv + i] = qdd[i];
-}
-
-void TreeSlot::retract(const double* y, const double* theta, double* out) const {
-  const double* q = y + at_y;
-  const double* t = theta + at_xi;
-  double* o = out + at_y;
-  retract_configuration(q, t, o);
-  for (int i = 0; i < nv; ++i) o[nq + i] = q[nq + i] + t[nv + i];
-}
-
-void TreeSlot::dexp_inv(const double* theta, double* xi) const {
-  for (const TreeJoint& j : joints) {
-    if (j.kind == TreeJoint::ball || j.kind == TreeJoint::free) dexp_inv_body(theta + at_xi + j.v, xi + at_xi + j.v);
-  }
-}
-
-void TreeSlot::project(double* y) const {
-  for (const TreeJoint& j : joints) {
-    if (j.kind == TreeJoint::ball) normalise_quaternion(y + at_y + j.q);
-    if (j.kind == TreeJoint::free) normalise_quaternion(y + at_y + j.q + 3);
-  }
 }
 
 void TreeSlot::translate(double* y, double h) const {
@@ -269,21 +160,6 @@ void TreeSlot::chart_point_of(const double* v, double half_h) const {
 }
 
 Eigen::Matrix3d TreeSlot::start_rotation_of(const TreeJoint& j) const { return rotation_at(q_0.data() + j.q + 3); }
-
-Eigen::Matrix3d TreeSlot::rotation_at(const double* x) {
-  return Eigen::Quaterniond(x[3], x[0], x[1], x[2]).toRotationMatrix();
-}
-
-void TreeSlot::retract_configuration(const double* q, const double* t, double* o) const {
-  for (const TreeJoint& j : joints) {
-    if (j.kind == TreeJoint::vector) o[j.q] = q[j.q] + t[j.v];
-    if (j.kind == TreeJoint::ball) times_exp(q + j.q, three(t + j.v), o + j.q);
-    if (j.kind == TreeJoint::free) {
-      for (int i = 0; i < 3; ++i) o[j.q + i] = q[j.q + i] + t[j.v + 3 + i];
-      times_exp(q + j.q + 3, three(t + j.v), o + j.q + 3);
-    }
-  }
-}
 
 void TreeSlot::write_chart_point(const Eigen::VectorXd& chart, double* y) const {
   retract_configuration(q_0.data(), chart.data(), y + at_y);

@@ -14,6 +14,10 @@
 #include "rigiddyn/scene/body.hpp"
 #include "rigiddyn/scene/kinds/body_slot.hpp"
 #include "rigiddyn/scene/scene_simulation.hpp"
+#include "rigiddyn/so3/dexp_inv.hpp"
+#include "rigiddyn/so3/quaternion_kernels.hpp"
+#include "rigiddyn/tree/aba.hpp"
+#include "rigiddyn/tree/forward_kinematics.hpp"
 #include "rigiddyn/tree/tree_link.hpp"
 #include "rigiddyn/tree/workspace.hpp"
 
@@ -60,14 +64,37 @@ struct TreeSlot : SlotPlace {
   // when the tree has no quaternion)
   Eigen::Map<const Eigen::VectorXd> velocities(const double* y) const { return {y + at_y + nq, nv}; }
   Eigen::Map<const Eigen::VectorXd> configuration() const { return {q_at, nq}; }
-  void load_configuration(const double* y) const;
+  void load_configuration(const double* y) const {
+    const double* q = y + at_y;
+    q_at = has_quaternions ? q_unit.data() : q;
+    if (!has_quaternions) return;
+    for (int i = 0; i < nq; ++i) q_unit[i] = q[i];
+    for (const TreeJoint& j : joints) {
+      if (j.kind == TreeJoint::ball) normalise_quaternion(q_unit.data() + j.q);
+      if (j.kind == TreeJoint::free) normalise_quaternion(q_unit.data() + j.q + 3);
+    }
+  }
   // R_JL of a free joint from configuration()
-  Eigen::Matrix3d free_rotation_of(const TreeJoint& j) const;
+  Eigen::Matrix3d free_rotation_of(const TreeJoint& j) const { return rotation_at(q_at + j.q + 3); }
 
   // Each link's kinematics at its centre of mass C (tree forward kinematics, Featherstone §4.2): R_WB = R_WL,
   // p_W = p_WL + R_WL c_L, ω_B = ω_L, v_W = R_WL (v_L + ω_L × c_L) from the link twist [ω_L; v_L] at L's origin;
   // its joint's q (normalised) and v for the joint elements
-  void kinematics(const double* y, const StepClock&, BodyKinematics& first) const;
+  void kinematics(const double* y, const StepClock&, BodyKinematics& first) const {
+    load_configuration(y);
+    forward_kinematics_unchecked(*tree, configuration(), velocities(y), ws);
+    BodyKinematics* k = &first;
+    for (int i = 0; i < links; ++i) {
+      const Eigen::Matrix3d& R_WL = ws.X_W[i].rotation();
+      k[i].R_WB = R_WL;
+      if (fill_quaternions) k[i].q_WB = Eigen::Quaterniond(R_WL);
+      k[i].w_B = ws.v[i].angular;
+      k[i].p_W = ws.X_W[i].translation() + R_WL * c_L[i];
+      k[i].v_W = R_WL * (ws.v[i].linear + cross_3(ws.v[i].angular, c_L[i]));
+      k[i].joint_q = q_at + joints[i].q;  // joints[i]: link i's
+      k[i].joint_v = y + at_y + nq + joints[i].v;
+    }
+  }
   // The tree applies a uniform gravity g_W [m/s²] on all its links itself, as its base's acceleration a₀ = −g
   // (Featherstone §5.3: the same motion as a force m g at each centre of mass, at no cost per link); the gravity
   // element then leaves their wrenches out (UniformGravityTerm::leave_to_tree, scene_model.hpp)
@@ -75,21 +102,81 @@ struct TreeSlot : SlotPlace {
   // Whether the elements left every link without a wrench (sum of |components| exactly 0: a NaN or any non-zero
   // component counts as one), from the links' wrenches; the scene model notes it after the elements add theirs, at
   // each evaluation (the tree's own gravity is not a wrench: apply_gravity)
-  void note_wrenches(const BodyWrench& first) const;
+  void note_wrenches(const BodyWrench& first) const {
+    const BodyWrench* w = &first;
+    double sum = 0.0;
+    for (int i = 0; i < links; ++i) sum += w[i].f_W.cwiseAbs().sum() + w[i].tau_B.cwiseAbs().sum();
+    unloaded = sum == 0.0;
+  }
   // v̇ (ws.qdd) by the articulated-body algorithm under the links' wrenches, after kinematics and note_wrenches at the
   // same y: their forces in the links' frames (external_forces: f_ext, or none when every link is unloaded)
-  const Eigen::VectorXd& accelerations(const double* y, const BodyKinematics& first, const BodyWrench& wrench) const;
+  const Eigen::VectorXd& accelerations(const double* y, const BodyKinematics& first, const BodyWrench& wrench) const {
+    if (unloaded) return aba_after_kinematics(*tree, velocities(y), tau, no_external_forces(), ws);
+    const BodyKinematics* k = &first;
+    const BodyWrench* w = &wrench;
+    for (int i = 0; i < links; ++i) {
+      const Eigen::Vector3d f_L = k[i].R_WB.transpose() * w[i].f_W;
+      f_ext[i].linear = f_L;
+      f_ext[i].angular = w[i].tau_B + cross_3(c_L[i], f_L);
+    }
+    return aba_after_kinematics(*tree, velocities(y), tau, f_ext, ws);
+  }
   // the links' forces of the last accelerations
   const std::vector<Force>& external_forces() const { return unloaded ? no_external_forces() : f_ext; }
   // the tangent of q at y: per joint its rate, ω_L, or (ω_L, R_JL v_L)
-  void configuration_tangent(const double* y, double* out) const;
+  void configuration_tangent(const double* y, double* out) const {
+    const double* v = y + at_y + nq;
+    for (const TreeJoint& j : joints) {
+      if (j.kind == TreeJoint::vector) out[j.v] = v[j.v];
+      if (j.kind == TreeJoint::ball || j.kind == TreeJoint::free) {
+        for (int i = 0; i < 3; ++i) out[j.v + i] = v[j.v + i];
+      }
+      if (j.kind == TreeJoint::free) {
+        const Eigen::Vector3d p_dot = free_rotation_of(j) * three(v + j.v + 3);
+        for (int i = 0; i < 3; ++i) out[j.v + 3 + i] = p_dot[i];
+      }
+    }
+  }
 
-  void rate(const double* y, const StepClock&, const BodyKinematics& k, const BodyWrench& wrench, double* dy) const;
-  void velocity(const double* y, const StepClock&, const BodyKinematics& k, const BodyWrench& wrench, double* xi) const;
+  void rate(const double* y, const StepClock&, const BodyKinematics& k, const BodyWrench& wrench, double* dy) const {
+    const Eigen::VectorXd& qdd = accelerations(y, k, wrench);
+    const double* x = y + at_y;
+    double* dq = dy + at_y;
+    for (const TreeJoint& j : joints) {
+      if (j.kind == TreeJoint::vector) dq[j.q] = x[nq + j.v];
+      if (j.kind == TreeJoint::ball) quat_rate_body(x + j.q, three(x + nq + j.v), dq + j.q);  // q̇ = ½ q ⊗ (ω_L, 0)
+      if (j.kind == TreeJoint::free) {
+        const Eigen::Vector3d p_dot = free_rotation_of(j) * three(x + nq + j.v + 3);  // ṗ_JL = R_JL v_L
+        for (int i = 0; i < 3; ++i) dq[j.q + i] = p_dot[i];
+        quat_rate_body(x + j.q + 3, three(x + nq + j.v), dq + j.q + 3);
+      }
+    }
+    for (int i = 0; i < nv; ++i) dq[nq + i] = qdd[i];
+  }
+  void velocity(const double* y, const StepClock&, const BodyKinematics& k, const BodyWrench& wrench, double* xi) const {
+    const Eigen::VectorXd& qdd = accelerations(y, k, wrench);
+    configuration_tangent(y, xi + at_xi);
+    for (int i = 0; i < nv; ++i) xi[at_xi + nv + i] = qdd[i];
+  }
   // q ⊕ Θ joint by joint (vector parts added, q ⊗ exp(Θ_ω) for a quaternion), v + Θ_v
-  void retract(const double* y, const double* theta, double* out) const;
-  void dexp_inv(const double* theta, double* xi) const;
-  void project(double* y) const;
+  void retract(const double* y, const double* theta, double* out) const {
+    const double* q = y + at_y;
+    const double* t = theta + at_xi;
+    double* o = out + at_y;
+    retract_configuration(q, t, o);
+    for (int i = 0; i < nv; ++i) o[nq + i] = q[nq + i] + t[nv + i];
+  }
+  void dexp_inv(const double* theta, double* xi) const {
+    for (const TreeJoint& j : joints) {
+      if (j.kind == TreeJoint::ball || j.kind == TreeJoint::free) dexp_inv_body(theta + at_xi + j.v, xi + at_xi + j.v);
+    }
+  }
+  void project(double* y) const {
+    for (const TreeJoint& j : joints) {
+      if (j.kind == TreeJoint::ball) normalise_quaternion(y + at_y + j.q);
+      if (j.kind == TreeJoint::free) normalise_quaternion(y + at_y + j.q + 3);
+    }
+  }
   // v += h v̇ at y
   template <class GyroscopicKick>
   void kick(double* y, const BodyKinematics& k, const BodyWrench& wrench, double h, const GyroscopicKick&) const {
@@ -159,10 +246,21 @@ struct TreeSlot : SlotPlace {
   // R_JL of a free joint in q_0
   Eigen::Matrix3d start_rotation_of(const TreeJoint& j) const;
   // the rotation matrix of the quaternion (x, y, z, w) at x
-  static Eigen::Matrix3d rotation_at(const double* x);
+  static Eigen::Matrix3d rotation_at(const double* x) {
+    return Eigen::Quaterniond(x[3], x[0], x[1], x[2]).toRotationMatrix();
+  }
   // o ← q ⊕ t for a configuration q and a tangent t of the joints (indexed as v): vector parts added, a quaternion
   // q ⊗ exp(t_ω), a free joint's position p + t_p
-  void retract_configuration(const double* q, const double* t, double* o) const;
+  void retract_configuration(const double* q, const double* t, double* o) const {
+    for (const TreeJoint& j : joints) {
+      if (j.kind == TreeJoint::vector) o[j.q] = q[j.q] + t[j.v];
+      if (j.kind == TreeJoint::ball) times_exp(q + j.q, three(t + j.v), o + j.q);
+      if (j.kind == TreeJoint::free) {
+        for (int i = 0; i < 3; ++i) o[j.q + i] = q[j.q + i] + t[j.v + 3 + i];
+        times_exp(q + j.q + 3, three(t + j.v), o + j.q + 3);
+      }
+    }
+  }
   // the q of y ← q_0 ⊕ φ, the chart of the step
   void write_chart_point(const Eigen::VectorXd& chart, double* y) const;
   // q ← q ⊗ exp(h ω) (exact for a constant ω)
