@@ -1,6 +1,6 @@
-// The tree slot's evaluations and steps (scene/kinds/tree_slot.hpp states each one's equations), compiled once here:
-// every scene model that holds a tree calls them, and a tree's step is dominated by its recursive algorithms
-// (tree/aba.hpp, tree/crba.hpp), not by the call.
+// The tree slot's members that its evaluations do not inline (scene/kinds/tree_slot.hpp states each one's equations):
+// its constructor, records, coordinates and variational midpoint steps, compiled once here instead of in every file
+// that includes the kind list (their Cholesky and LU solves were instantiated in each).
 #include "rigiddyn/scene/kinds/tree_slot.hpp"
 
 #include "rigiddyn/so3/exp_log.hpp"
