@@ -16,6 +16,11 @@ namespace rigiddyn::test {
 
 inline constexpr double kRoundoff = std::numeric_limits<double>::epsilon();
 
+// The distance between two unit quaternions as rotations (q and −q the same rotation): min |q1 ∓ q2|.
+inline double rotation_distance(const Eigen::Quaterniond& q1, const Eigen::Quaterniond& q2) {
+  return std::min((q1.coeffs() - q2.coeffs()).norm(), (q1.coeffs() + q2.coeffs()).norm());
+}
+
 // κ = I_max / I_min of a rotational inertia.
 inline double inertia_condition(const Eigen::Matrix3d& I) {
   const Eigen::Vector3d moments = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(I, Eigen::EigenvaluesOnly).eigenvalues();

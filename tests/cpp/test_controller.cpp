@@ -4,6 +4,7 @@
 // is reached by its ramp; commanded joint torques are held as motor windows; bad inputs are named.
 #include <gtest/gtest.h>
 
+#include "test_numbers.hpp"
 #include "invalid_argument_message.hpp"
 #include "rigiddyn/scene/control_laws.hpp"
 #include "rigiddyn/scene/controller.hpp"
@@ -19,7 +20,7 @@
 namespace rigiddyn {
 namespace {
 
-constexpr double kEps = std::numeric_limits<double>::epsilon();
+using rigiddyn::test::kEps;
 
 // A 2 kg rigid body with a thruster (a ScheduledLoads without a schedule: the controller commands it).
 Scene thruster_scene() {

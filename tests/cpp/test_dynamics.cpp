@@ -16,7 +16,7 @@
 namespace rigiddyn {
 namespace {
 
-Eigen::Matrix3d full_inertia() {
+Eigen::Matrix3d inertia_with_products() {
   Eigen::Matrix3d I;
   I << 0.9, 0.05, -0.1, 0.05, 1.4, 0.08, -0.1, 0.08, 1.9;
   return I;
@@ -61,7 +61,7 @@ class OrderTest : public ::testing::TestWithParam<Method> {};
 
 TEST_P(OrderTest, StepHalvingSlopeMatchesTheory) {
   const Method method = GetParam();
-  const RigidBody body(2.5, full_inertia());
+  const RigidBody body(2.5, inertia_with_products());
   const int order = method_info(method).order;
   const std::int64_t n0 = order == 4 ? 16 : 200;
   std::vector<double> e;
@@ -85,7 +85,7 @@ INSTANTIATE_TEST_SUITE_P(Methods, OrderTest,
 TEST(Dynamics, InverseUndoesForward) {
   std::mt19937 rng(7);
   std::normal_distribution<double> N;
-  const RigidBody body(1.7, full_inertia());
+  const RigidBody body(1.7, inertia_with_products());
   for (int trial = 0; trial < 50; ++trial) {
     RigidBodyState s;
     s.q_WB = Eigen::Quaterniond(N(rng), N(rng), N(rng), N(rng)).normalized();
@@ -102,7 +102,7 @@ TEST(Dynamics, InverseUndoesForward) {
 }
 
 TEST(Dynamics, ImpulseChangesMomentumByTheImpulse) {
-  const RigidBody body(1.3, full_inertia());
+  const RigidBody body(1.3, inertia_with_products());
   const RigidBodyState s = generic_state();
   const Eigen::Vector3d J(0.3, -1.2, 0.7), p_GP_B(0.2, 0.1, -0.4), O(1.0, 2.0, -1.0);
   const RigidBodyState after = apply_impulse(body, s, J, p_GP_B, Frame::body);
@@ -114,7 +114,7 @@ TEST(Dynamics, ImpulseChangesMomentumByTheImpulse) {
 }
 
 TEST(Simulate, WorkEnergyRk4) {
-  const RigidBody body(2.5, full_inertia());
+  const RigidBody body(2.5, inertia_with_products());
   SimulationOptions o = loaded(Method::rk4, 1e-3, 1000);
   o.record_every = 100;
   const Trajectory tr = simulate(body, generic_state(), o);
@@ -133,16 +133,16 @@ TEST(Simulate, WorkEnergyRk4) {
 TEST(Models, EulerFormIsChosenFromTheInertia) {
   EXPECT_EQ(RigidBody(1.0, 0.4 * Eigen::Matrix3d::Identity()).euler_form(), EulerForm::spherical);
   EXPECT_EQ(RigidBody(1.0, Eigen::Vector3d(1, 2, 2.5).asDiagonal().toDenseMatrix()).euler_form(), EulerForm::principal);
-  EXPECT_EQ(RigidBody(1.0, full_inertia()).euler_form(), EulerForm::full);
+  EXPECT_EQ(RigidBody(1.0, inertia_with_products()).euler_form(), EulerForm::full);
 }
 
 TEST(Models, ImplicitGyroscopicKickReducesTheResidual) {
   // one Newton step: the residual of I(w' - w) + h w' x I w' = h n is O(h^2) smaller than at w' = w
-  const FullEuler euler(full_inertia());
+  const FullEuler euler(inertia_with_products());
   const Eigen::Vector3d w(1.0, 3.0, -0.5), n(0.1, 0.2, 0.3);
   const double h = 0.01;
   auto residual = [&](const Eigen::Vector3d& x) {
-    return (full_inertia() * (x - w) + h * x.cross(full_inertia() * x) - h * n).norm();
+    return (inertia_with_products() * (x - w) + h * x.cross(inertia_with_products() * x) - h * n).norm();
   };
   // one Newton step on a quadratic residual leaves h |D x I D| <= h |I| |D|^2, D = w' - w = O(h |w|^2)
   // ~ 0.1 here: O(h) smaller than the initial h |w x I w - n|, i.e. < 1e-3 of it at h = 0.01
@@ -215,7 +215,7 @@ TEST(Dynamics, ParticleInverseUndoesForwardAndImpulseIsMomentum) {
 
 TEST(Dynamics, DefaultsAreTheWorldOriginAndNoGravity) {
   // one default for all three models: angular momentum about the world origin O, no gravity
-  const RigidBody body(2.0, full_inertia());
+  const RigidBody body(2.0, inertia_with_products());
   const RigidBodyState s = generic_state();
   const Particle particle(2.0);
   const ParticleState ps{s.p_W, s.v_W};

@@ -2,6 +2,7 @@
 // an independent integration of its ODE (classical RK4 written here, Richardson-extrapolated), the
 // conserved quantities along at(t), the pendulum's period against a quadrature of its period integral,
 // Tsiolkovsky, and every refusal.
+#include "test_numbers.hpp"
 #include "invalid_argument_message.hpp"
 #include "rigiddyn/exact/compound_pendulum.hpp"
 #include "rigiddyn/exact/constant_thrust.hpp"
@@ -24,7 +25,7 @@
 namespace rigiddyn {
 namespace {
 
-constexpr double kEps = std::numeric_limits<double>::epsilon();
+using rigiddyn::test::kEps;
 
 using State = Eigen::VectorXd;
 using Rate = std::function<State(const State&)>;

@@ -1,5 +1,6 @@
 // Jacobi elliptic functions and elliptic integrals against mpmath values (40 digits), including
 // 1 − m down to 1e-15 and large arguments, plus identities.
+#include "test_numbers.hpp"
 #include "rigiddyn/exact/elliptic.hpp"
 
 #include <boost/math/special_functions/ellint_rf.hpp>
@@ -15,9 +16,9 @@
 namespace rigiddyn {
 namespace {
 
-constexpr double kEps = std::numeric_limits<double>::epsilon();
+using rigiddyn::test::kEps;
 
-struct Reference {
+struct EllipticReference {
   double u, mc, sn, cn, dn;
 };
 
@@ -27,7 +28,7 @@ struct Reference {
 //                 (-60.5, 1e-15), (1234.5, 1e-15), (0.01, 0.999)]:
 //       m = 1 - mp.mpf(mc); print([mp.nstr(mp.ellipfun(f, u, m), 20) for f in ("sn", "cn", "dn")])'
 // (m = 1 − mc exactly, with mc the double shown)
-constexpr Reference kReferences[] = {
+constexpr EllipticReference kReferences[] = {
     {0.3, 0.5, 0.29341273316845537748, 0.95598586182778707744, 0.97824050417436120533},
     {2.7, 0.9, 0.49913859496999627268, -0.86652216533183847437, 0.98746446331052228236},
     {-5.1, 0.1, -0.056128131454534513377, -0.99842357387003963578, 0.99858132847228835218},
@@ -40,7 +41,7 @@ constexpr Reference kReferences[] = {
 };
 
 TEST(JacobiEllipj, MatchesMpmath) {
-  for (const Reference& r : kReferences) {
+  for (const EllipticReference& r : kReferences) {
     const JacobiSnCnDn f = jacobi_ellipj(r.u, 1.0 - r.mc, r.mc);
     // the argument is known to eps·|u|; the functions' slopes are at most 1
     const double tol = 8.0 * kEps * std::max(1.0, std::abs(r.u));

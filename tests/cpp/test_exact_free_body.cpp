@@ -1,6 +1,8 @@
 // TorqueFreeSolution: Euler's equations and the quaternion kinematics hold along the solution
 // (central differences), the invariants are conserved, the branches and published periods; the
 // one-step FreeRotationFlow against it.
+#include "test_inputs.hpp"
+#include "test_numbers.hpp"
 #include "rigiddyn/exact/free_body.hpp"
 
 #include "error_bounds.hpp"
@@ -14,9 +16,9 @@
 namespace rigiddyn {
 namespace {
 
-constexpr double kEps = std::numeric_limits<double>::epsilon();
+using rigiddyn::test::kEps;
 
-Eigen::Quaterniond initial_attitude() { return Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized())); }
+using test::initial_attitude;
 
 Eigen::Matrix3d tilted(const Eigen::Vector3d& moments) {
   const Eigen::Matrix3d R = Eigen::AngleAxisd(0.4, Eigen::Vector3d(0.3, -1, 0.2).normalized()).toRotationMatrix();

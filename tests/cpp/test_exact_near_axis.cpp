@@ -14,6 +14,8 @@
 //   C (μ_max/G)² (1 + angle turned),  C = 8 I_max/I_min   (angle turned = G |t|/I_k).
 // Below |m⊥|/G ~ 1e-9 that is under an ulp per radian; above it the tolerance grows with it, and
 // tests/python/test_exact_near_axis.py checks the whole sweep against the closed form in mpmath.
+#include "test_inputs.hpp"
+#include "test_numbers.hpp"
 #include "rigiddyn/exact/free_body.hpp"
 
 #include <gtest/gtest.h>
@@ -28,10 +30,10 @@
 namespace rigiddyn {
 namespace {
 
-constexpr double kEps = std::numeric_limits<double>::epsilon();
+using rigiddyn::test::kEps;
 constexpr double kSmallestSubnormal = std::numeric_limits<double>::denorm_min();
 
-Eigen::Quaterniond initial_attitude() { return Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized())); }
+using test::initial_attitude;
 
 // exp(v^) as a unit quaternion (v a rotation vector [rad])
 Eigen::Quaterniond exp_rotation(const Eigen::Vector3d& v) {
@@ -40,13 +42,13 @@ Eigen::Quaterniond exp_rotation(const Eigen::Vector3d& v) {
   return Eigen::Quaterniond(Eigen::AngleAxisd(angle, v / angle));
 }
 
-struct Reference {
+struct NearAxisReference {
   Eigen::Quaterniond q_WB;
   double bound;  // its own error [rad]
 };
 
 // The steady-spin limit about body axis k with the first-order correction (file comment); I diagonal.
-Reference steady_spin_reference(const Eigen::Vector3d& I, int k, const Eigen::Vector3d& m0, double t) {
+NearAxisReference steady_spin_reference(const Eigen::Vector3d& I, int k, const Eigen::Vector3d& m0, double t) {
   const int i = (k + 1) % 3, j = (k + 2) % 3;
   const double G = m0.norm();
   const Eigen::Vector3d a = I.cwiseInverse().array() - 1.0 / I(k);
@@ -72,7 +74,7 @@ Reference steady_spin_reference(const Eigen::Vector3d& I, int k, const Eigen::Ve
   return {q, C * (mu_max / G) * (mu_max / G) * (1.0 + angle)};
 }
 
-struct Body {
+struct PrincipalBody {
   std::string name;
   Eigen::Vector3d I;  // diagonal inertia [kg m²]
 };
@@ -89,15 +91,15 @@ std::vector<double> transverse_magnitudes() {
 // every branch and axis: the attitude against the reference to 16 ulps of the angle turned (with
 // an ulp of 1 rad below 1 rad: the phases φ, ψ are O(1) there) plus the reference's own bound
 TEST(TorqueFreeSolution, NearEachPrincipalAxisKeepsTheAttitudeToUlps) {
-  const std::vector<Body> bodies = {{"triaxial", {2.0, 3.0, 5.0}},
-                                    {"permuted", {3.0, 5.0, 2.0}},
-                                    {"oblate symmetric", {2.0, 2.0, 5.0}},
-                                    {"nearly oblate", {2.0, 2.0 * (1.0 + 1e-9), 5.0}},
-                                    {"prolate symmetric", {2.0, 5.0, 5.0}},
-                                    {"nearly prolate", {2.0, 5.0 * (1.0 - 1e-8), 5.0}}};
+  const std::vector<PrincipalBody> bodies = {{"triaxial", {2.0, 3.0, 5.0}},
+                                             {"permuted", {3.0, 5.0, 2.0}},
+                                             {"oblate symmetric", {2.0, 2.0, 5.0}},
+                                             {"nearly oblate", {2.0, 2.0 * (1.0 + 1e-9), 5.0}},
+                                             {"prolate symmetric", {2.0, 5.0, 5.0}},
+                                             {"nearly prolate", {2.0, 5.0 * (1.0 - 1e-8), 5.0}}};
   const double times[] = {0.1, 1.0, 7.3, 20.0, -5.0};
   double worst_ulps[3] = {0.0, 0.0, 0.0};  // per axis, where the reference's bound is below an ulp
-  for (const Body& body : bodies) {
+  for (const PrincipalBody& body : bodies) {
     for (int k = 0; k < 3; ++k) {
       for (double sign : {1.0, -1.0}) {
         for (double beta : {0.0, 0.9, 2.6}) {  // direction of the transverse part
@@ -120,7 +122,7 @@ TEST(TorqueFreeSolution, NearEachPrincipalAxisKeepsTheAttitudeToUlps) {
             EXPECT_LE((s0.w_B - w0).norm(), 8 * kEps * w0.norm()) << what;
             const FreeRotationFlow flow(I);
             for (double t : times) {
-              const Reference ref = steady_spin_reference(body.I, k, m0, t);
+              const NearAxisReference ref = steady_spin_reference(body.I, k, m0, t);
               const double angle = std::abs(1.3 * t / body.I(k));
               const double ulp = kEps * std::max(1.0, angle);
               const TorqueFreeState st = s.state_at(t);
@@ -152,7 +154,7 @@ TEST(TorqueFreeSolution, ReportedCaseNearTheMajorAxis) {
   EXPECT_EQ(s.solution_case(), TorqueFreeCase::A);
   EXPECT_LE(s.state_at(0.0).q_WB.angularDistance(initial_attitude()), 8 * kEps);
   for (double t : {0.5, 20.0}) {
-    const Reference ref = steady_spin_reference(I, 2, I.cwiseProduct(w0), t);
+    const NearAxisReference ref = steady_spin_reference(I, 2, I.cwiseProduct(w0), t);
     // the reference errs by ~1e-321 rad here; 16 ulps of the angle turned (t/5 rad)
     EXPECT_LE(s.state_at(t).q_WB.angularDistance(ref.q_WB), 16 * kEps * std::max(1.0, t / 5.0) + ref.bound) << t;
   }

@@ -10,6 +10,7 @@
 #include <string>
 #include <utility>
 
+#include "test_numbers.hpp"
 #include "rigiddyn/frames/frame_tree.hpp"
 #include "rigiddyn/so3/exp_log.hpp"
 #include "rigiddyn/so3/skew.hpp"
@@ -20,7 +21,7 @@ namespace {
 using Eigen::Matrix3d;
 using Eigen::Vector3d;
 
-constexpr double kPi = 3.14159265358979323846;
+using rigiddyn::test::kPi;
 
 void expect_near(const Vector3d& got, const Vector3d& want, double tol, const std::string& what) {
   EXPECT_LE((got - want).norm(), tol) << what << "\n got  " << got.transpose() << "\n want " << want.transpose();
@@ -300,7 +301,7 @@ TEST(FrameMotion, KeepsItsParameters) {
 
 // ---------------------------------------------------------------------------------------------
 // Bad input: std::invalid_argument whose message names the argument (and the frame).
-void expect_invalid(const std::function<void()>& f, const std::string& part1, const std::string& part2 = "") {
+void expect_invalid_mentioning(const std::function<void()>& f, const std::string& part1, const std::string& part2 = "") {
   try {
     f();
     ADD_FAILURE() << "no exception; expected one mentioning " << part1;
@@ -322,7 +323,7 @@ TEST(ConstantRotation, AnyFiniteAngleGivesARotation) {
     EXPECT_LE((R - expected).cwiseAbs().maxCoeff(), 4 * kEpsilon) << "rate " << rate << ", t " << t;
   }
   // rate t beyond double: refused, naming t
-  expect_invalid([] { FrameMotion::constant_rotation(Vector3d::UnitZ(), 1e300).at(1e300); }, "t: expected a time",
+  expect_invalid_mentioning([] { FrameMotion::constant_rotation(Vector3d::UnitZ(), 1e300).at(1e300); }, "t: expected a time",
                  "rate * t finite");
 }
 
@@ -346,19 +347,19 @@ TEST(DeepChain, EveryWalkIsIterative) {
   // the sum of depth rates of 1e-4: each addition rounds by <= eps of the total
   EXPECT_NEAR(tree.angular_velocity(parent, "f0", "world", t).z(), (depth - 1) * rate, kEpsilon * angle * depth);
   // the cycle check walks from the new parent up to world
-  expect_invalid([&] { tree.set_parent("f0", parent, FrameMotion::fixed()); }, "parent:", "cycle");
+  expect_invalid_mentioning([&] { tree.set_parent("f0", parent, FrameMotion::fixed()); }, "parent:", "cycle");
 }
 
 TEST(BadInput, UnknownAndDuplicateNames) {
   FrameTree tree = shaft_and_disk(0.0);
-  expect_invalid([&] { tree.add_frame("x", "nowhere", FrameMotion::fixed()); }, "parent:", "'nowhere'");
-  expect_invalid([&] { tree.add_frame("disk", "world", FrameMotion::fixed()); }, "name:", "'disk'");
-  expect_invalid([&] { tree.add_frame("world", "world", FrameMotion::fixed()); }, "name:", "'world'");
-  expect_invalid([&] { tree.add_frame("", "world", FrameMotion::fixed()); }, "name:", "non-empty");
-  expect_invalid([&] { tree.rotation("nope", "world", 0); }, "frame:", "'nope'");
-  expect_invalid([&] { tree.angular_velocity("disk", "nope", "world", 0); }, "relative_to:", "'nope'");
-  expect_invalid([&] { tree.angular_acceleration("disk", "world", "nope", 0); }, "expressed_in:", "'nope'");
-  expect_invalid([&] { tree.parent("nope"); }, "name:", "world, shaft, disk");
+  expect_invalid_mentioning([&] { tree.add_frame("x", "nowhere", FrameMotion::fixed()); }, "parent:", "'nowhere'");
+  expect_invalid_mentioning([&] { tree.add_frame("disk", "world", FrameMotion::fixed()); }, "name:", "'disk'");
+  expect_invalid_mentioning([&] { tree.add_frame("world", "world", FrameMotion::fixed()); }, "name:", "'world'");
+  expect_invalid_mentioning([&] { tree.add_frame("", "world", FrameMotion::fixed()); }, "name:", "non-empty");
+  expect_invalid_mentioning([&] { tree.rotation("nope", "world", 0); }, "frame:", "'nope'");
+  expect_invalid_mentioning([&] { tree.angular_velocity("disk", "nope", "world", 0); }, "relative_to:", "'nope'");
+  expect_invalid_mentioning([&] { tree.angular_acceleration("disk", "world", "nope", 0); }, "expressed_in:", "'nope'");
+  expect_invalid_mentioning([&] { tree.parent("nope"); }, "name:", "world, shaft, disk");
   EXPECT_EQ(tree.parent("disk"), "shaft");
   EXPECT_EQ(tree.frame_names(), (std::vector<std::string>{"world", "shaft", "disk"}));
 }
@@ -367,10 +368,10 @@ TEST(BadInput, CyclesAreRefused) {
   FrameTree tree = shaft_and_disk(0.0);
   tree.add_frame("pin", "disk", FrameMotion::fixed());
   // a frame cannot be its own parent, nor move under its descendants, nor can world get a parent
-  expect_invalid([&] { tree.add_frame("loop", "loop", FrameMotion::fixed()); }, "parent:", "'loop'");
-  expect_invalid([&] { tree.set_parent("shaft", "shaft", FrameMotion::fixed()); }, "parent:", "cycle");
-  expect_invalid([&] { tree.set_parent("shaft", "pin", FrameMotion::fixed()); }, "parent:", "cycle");
-  expect_invalid([&] { tree.set_parent("world", "disk", FrameMotion::fixed()); }, "name:", "'world'");
+  expect_invalid_mentioning([&] { tree.add_frame("loop", "loop", FrameMotion::fixed()); }, "parent:", "'loop'");
+  expect_invalid_mentioning([&] { tree.set_parent("shaft", "shaft", FrameMotion::fixed()); }, "parent:", "cycle");
+  expect_invalid_mentioning([&] { tree.set_parent("shaft", "pin", FrameMotion::fixed()); }, "parent:", "cycle");
+  expect_invalid_mentioning([&] { tree.set_parent("world", "disk", FrameMotion::fixed()); }, "name:", "'world'");
   EXPECT_EQ(tree.parent("shaft"), "world");  // unchanged after the refused attempts
   // a legal move: the pin now hangs from the shaft
   tree.set_parent("pin", "shaft", FrameMotion::fixed(Matrix3d::Identity(), Vector3d(0, 1, 0)));
@@ -382,20 +383,20 @@ TEST(BadInput, NonFiniteAndNonRotationValues) {
   const double nan = std::nan("");
   Matrix3d skewed = Matrix3d::Identity();
   skewed(0, 1) = 0.1;
-  expect_invalid([&] { FrameMotion::fixed(skewed); }, "R_PF");
-  expect_invalid([&] { FrameMotion::fixed(-Matrix3d::Identity()); }, "R_PF");  // reflection
-  expect_invalid([&] { FrameMotion::fixed(Matrix3d::Identity(), Vector3d(0, nan, 0)); }, "p_PF_P");
-  expect_invalid([&] { FrameMotion::constant_rotation(Vector3d::Zero(), 1.0); }, "axis_P", "non-zero");
-  expect_invalid([&] { FrameMotion::constant_rotation(Vector3d::UnitX(), INFINITY); }, "rate");
-  expect_invalid([&] { FrameMotion::constant_rotation(Vector3d::UnitX(), 1.0, skewed); }, "R_PF0");
-  expect_invalid([] { FrameMotion(FrameMotion::Function()); }, "kinematics_at");
+  expect_invalid_mentioning([&] { FrameMotion::fixed(skewed); }, "R_PF");
+  expect_invalid_mentioning([&] { FrameMotion::fixed(-Matrix3d::Identity()); }, "R_PF");  // reflection
+  expect_invalid_mentioning([&] { FrameMotion::fixed(Matrix3d::Identity(), Vector3d(0, nan, 0)); }, "p_PF_P");
+  expect_invalid_mentioning([&] { FrameMotion::constant_rotation(Vector3d::Zero(), 1.0); }, "axis_P", "non-zero");
+  expect_invalid_mentioning([&] { FrameMotion::constant_rotation(Vector3d::UnitX(), INFINITY); }, "rate");
+  expect_invalid_mentioning([&] { FrameMotion::constant_rotation(Vector3d::UnitX(), 1.0, skewed); }, "R_PF0");
+  expect_invalid_mentioning([] { FrameMotion(FrameMotion::Function()); }, "kinematics_at");
 
   FrameTree tree = shaft_and_disk(0.0);
-  expect_invalid([&] { tree.rotation("disk", "world", nan); }, "t:");
-  expect_invalid([&] { tree.point_velocity("disk", Vector3d(nan, 0, 0), Vector3d::Zero(), "world", "world", 0); }, "p_FQ_F");
-  expect_invalid([&] { tree.point_acceleration("disk", Vector3d::Zero(), Vector3d::Zero(), Vector3d(0, 0, INFINITY), "world", "world", 0); },
+  expect_invalid_mentioning([&] { tree.rotation("disk", "world", nan); }, "t:");
+  expect_invalid_mentioning([&] { tree.point_velocity("disk", Vector3d(nan, 0, 0), Vector3d::Zero(), "world", "world", 0); }, "p_FQ_F");
+  expect_invalid_mentioning([&] { tree.point_acceleration("disk", Vector3d::Zero(), Vector3d::Zero(), Vector3d(0, 0, INFINITY), "world", "world", 0); },
                  "a_FQ_F");
-  expect_invalid([&] { tree.transport_derivative(Vector3d(nan, 0, 0), Vector3d::Zero(), "disk", "world", "world", 0); }, "u_E");
+  expect_invalid_mentioning([&] { tree.transport_derivative(Vector3d(nan, 0, 0), Vector3d::Zero(), "disk", "world", "world", 0); }, "u_E");
   // a general motion whose value turns bad at some t: named by frame and field when queried
   tree.add_frame("bad", "disk", FrameMotion([skewed](double t) {
                    FrameKinematics K;
@@ -406,11 +407,11 @@ TEST(BadInput, NonFiniteAndNonRotationValues) {
   tree.add_frame("throws", "world", FrameMotion([](double) -> FrameKinematics {
                    throw std::invalid_argument("speed: expected a number, got a fish");
                  }));
-  expect_invalid([&] { tree.rotation("throws", "world", 0.0); }, "motion of frame 'throws' at t=0: speed");
+  expect_invalid_mentioning([&] { tree.rotation("throws", "world", 0.0); }, "motion of frame 'throws' at t=0: speed");
   tree.rotation("bad", "world", 0.5);
-  expect_invalid([&] { tree.rotation("bad", "world", 1.5); }, "frame 'bad'", "R_PF");
-  expect_invalid([&] { tree.point_position("pin", Vector3d::Zero(), "bad", "world", 1.5); }, "frame:", "'pin'");
-  expect_invalid([&] { tree.angular_velocity("shaft", "bad", "world", 2.5); }, "frame 'bad'", "v_PF_P");
+  expect_invalid_mentioning([&] { tree.rotation("bad", "world", 1.5); }, "frame 'bad'", "R_PF");
+  expect_invalid_mentioning([&] { tree.point_position("pin", Vector3d::Zero(), "bad", "world", 1.5); }, "frame:", "'pin'");
+  expect_invalid_mentioning([&] { tree.angular_velocity("shaft", "bad", "world", 2.5); }, "frame 'bad'", "v_PF_P");
 }
 
 }  // namespace

@@ -60,7 +60,7 @@ double slope(const std::vector<int>& steps, const std::vector<double>& errors) {
 
 int order_of(Method m) { return method_info(m).order; }
 
-std::vector<int> steps_for(Method m) {
+std::vector<int> step_counts(Method m) {
   return order_of(m) == 4 ? std::vector<int>{100, 200, 400, 800} : std::vector<int>{400, 800, 1600, 3200};
 }
 
@@ -78,10 +78,10 @@ TEST(Geometric, ObservedOrderAgainstExactSolution) {
   for (const OrderCase& c : cases) {
     for (Method m : {Method::implicit_midpoint, Method::splitting_dlm, Method::splitting_dlm_yoshida4}) {
       std::vector<double> errors;
-      for (int n : steps_for(m)) errors.push_back(free_body_error(m, c.inertia, c.w0, 8.0, n));
+      for (int n : step_counts(m)) errors.push_back(free_body_error(m, c.inertia, c.w0, 8.0, n));
       // the next term of the error expansion is O(h |ω|) <= 0.04 relative at these steps: the slope
       // moves by far less than 0.2; the errors (>= 1e-9) are far above round-off
-      EXPECT_NEAR(slope(steps_for(m), errors), order_of(m), 0.2) << method_info(m).name << ", " << c.name;
+      EXPECT_NEAR(slope(step_counts(m), errors), order_of(m), 0.2) << method_info(m).name << ", " << c.name;
     }
     // without couples the exact flow + kick splitting is exact: round-off only, each of the 400 steps
     // rounding by exact_step_roundoff, carried to T by the flow's Jacobian (near the separatrix it
@@ -113,7 +113,7 @@ TEST(Geometric, ObservedOrderUnderLoads) {
   const Trajectory ref = final_state(Method::rk4, 64 * 3200);
   for (Method m : kNewMethods) {
     std::vector<double> errors;
-    for (int n : steps_for(m)) {
+    for (int n : step_counts(m)) {
       const Trajectory tr = final_state(m, n);
       double e = 0.0;
       for (std::size_t k = 0; k < 3; ++k) {
@@ -126,7 +126,7 @@ TEST(Geometric, ObservedOrderUnderLoads) {
     }
     // the RK4 reference at h/64 errs by (1/64)^4 of an RK4 run at h: far below these errors; the
     // next term of the expansion moves the slope by O(h |ω|) <= 0.02
-    EXPECT_NEAR(slope(steps_for(m), errors), order_of(m), 0.2) << method_info(m).name;
+    EXPECT_NEAR(slope(step_counts(m), errors), order_of(m), 0.2) << method_info(m).name;
   }
 }
 

@@ -6,6 +6,7 @@
 // tests/python/test_gyrostat.py.
 #include <gtest/gtest.h>
 
+#include "test_numbers.hpp"
 #include "invalid_argument_message.hpp"
 #include "rigiddyn/scene/compile.hpp"
 #include "rigiddyn/scene/simulate_scene.hpp"
@@ -20,7 +21,7 @@ namespace {
 
 using namespace rigiddyn;
 
-constexpr double kEps = std::numeric_limits<double>::epsilon();
+using rigiddyn::test::kEps;
 
 using test::message_of;
 

@@ -4,6 +4,8 @@
 // torque and power against the notes' eq. (4.36) written out by hand at random states.
 #include <gtest/gtest.h>
 
+#include "test_inputs.hpp"
+#include "test_numbers.hpp"
 #include "invalid_argument_message.hpp"
 #include "rigiddyn/models/euler_equations.hpp"
 #include "rigiddyn/scene/body.hpp"
@@ -24,29 +26,20 @@
 namespace rigiddyn {
 namespace {
 
-constexpr double kEps = std::numeric_limits<double>::epsilon();
-constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+using rigiddyn::test::kEps;
+using rigiddyn::test::kInf;
+using rigiddyn::test::kNaN;
 
 using test::message_of;
 
 bool starts_with(const std::string& s, const std::string& prefix) { return s.rfind(prefix, 0) == 0; }
 
 // A realizable full inertia [kg m²]: principal moments (1.0, 1.4, 2.1) turned by a fixed rotation.
-Eigen::Matrix3d full_inertia() {
-  const Eigen::Matrix3d R = Eigen::AngleAxisd(0.8, Eigen::Vector3d(1.0, -2.0, 0.5).normalized()).toRotationMatrix();
-  return R * Eigen::Vector3d(1.0, 1.4, 2.1).asDiagonal() * R.transpose();
-}
+using test::full_inertia;
 
-Eigen::Vector3d random_vector(std::mt19937& rng, double scale) {
-  std::uniform_real_distribution<double> uniform(-scale, scale);
-  return {uniform(rng), uniform(rng), uniform(rng)};
-}
+using test::random_vector;
 
-Eigen::Quaterniond random_rotation(std::mt19937& rng) {
-  std::normal_distribution<double> normal;
-  return Eigen::Quaterniond(normal(rng), normal(rng), normal(rng), normal(rng)).normalized();
-}
+using test::random_rotation;
 
 // ---- MassFlow checks -------------------------------------------------------------------------------
 

@@ -8,6 +8,7 @@
 // compile does not choose yet, is held to the same.
 #include <gtest/gtest.h>
 
+#include "test_numbers.hpp"
 #include "rigiddyn/integrators/implicit_midpoint.hpp"
 #include "rigiddyn/scene/one_body_scene.hpp"
 #include "rigiddyn/scene/simulate_scene.hpp"
@@ -24,7 +25,7 @@
 namespace rigiddyn {
 namespace {
 
-constexpr double kEps = std::numeric_limits<double>::epsilon();
+using rigiddyn::test::kEps;
 
 struct Case {
   std::string name;

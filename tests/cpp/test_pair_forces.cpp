@@ -36,12 +36,12 @@ Eigen::ArrayXXd cluster(Eigen::Index n, Eigen::Index extra, unsigned seed) {
 
 // The pair forces summed in long double (64-bit significand: its own error is 2¹¹ times smaller than the bound),
 // and Σ_j |f_ij| per body and component
-struct Reference {
+struct PairReference {
   std::vector<long double> f;    // (n x 3)
   std::vector<double> magnitude;  // (n x 3)
 };
-Reference reference(const Eigen::ArrayXXd& c, Eigen::Index n, double G, double softening2) {
-  Reference r{std::vector<long double>(3 * n, 0.0L), std::vector<double>(3 * n, 0.0)};
+PairReference reference(const Eigen::ArrayXXd& c, Eigen::Index n, double G, double softening2) {
+  PairReference r{std::vector<long double>(3 * n, 0.0L), std::vector<double>(3 * n, 0.0)};
   for (Eigen::Index i = 0; i < n; ++i) {
     for (Eigen::Index j = 0; j < n; ++j) {
       if (j == i) continue;
@@ -63,7 +63,7 @@ using Path = void (*)(Eigen::ArrayXXd&, Eigen::Index, double, double);
 void expect_within_bound(Path path, Eigen::Index n, double softening2, unsigned seed) {
   const double G = 0.7;
   Eigen::ArrayXXd c = cluster(n, 3, seed);
-  const Reference r = reference(c, n, G, softening2);
+  const PairReference r = reference(c, n, G, softening2);
   path(c, n, G, softening2);
   for (Eigen::Index i = 0; i < n; ++i) {
     for (int a = 0; a < 3; ++a) {

@@ -1,5 +1,8 @@
 // Bodies about a fixed point: PivotedBody / PivotedPlanarBody, the per-body kernels of
 // models/pivoted_body.hpp and the dynamics of dynamics/pivoted_body_dynamics.hpp.
+#include "invalid_argument_message.hpp"
+#include "test_inputs.hpp"
+#include "test_numbers.hpp"
 #include "rigiddyn/dynamics/pivoted_body_dynamics.hpp"
 #include "rigiddyn/dynamics/rigid_body_dynamics.hpp"
 #include "rigiddyn/models/pivoted_body.hpp"
@@ -19,18 +22,9 @@ namespace {
 
 using namespace rigiddyn;
 
-constexpr double kEps = std::numeric_limits<double>::epsilon();
+using rigiddyn::test::kEps;
 
-// expects `call` to throw std::invalid_argument whose message starts with "<name>: expected"
-template <class F>
-void expect_invalid(F&& call, const std::string& name) {
-  try {
-    call();
-    ADD_FAILURE() << "no exception for " << name;
-  } catch (const std::invalid_argument& e) {
-    EXPECT_EQ(std::string(e.what()).rfind(name + ": expected", 0), 0u) << e.what();
-  }
-}
+using rigiddyn::test::expect_invalid;
 
 // A rigid body with products of inertia: principal moments (1, 1.7, 2.2) turned by a fixed rotation.
 RigidBody full_body() {
@@ -45,7 +39,7 @@ PivotedBodyState some_state() {
   return s;
 }
 
-const Eigen::Vector3d kG(0.0, 0.0, -9.81);
+using rigiddyn::test::kG;
 
 // ---- the body ------------------------------------------------------------------------------------
 

@@ -3,6 +3,8 @@
 // method, the pivot's reaction against Newton's law for the centre of mass along the trajectory, the free
 // rotation when the pivot is the centre of mass, the loads reduced to O; and the compound pendulum's
 // small-amplitude period (the planar kernels).
+#include "test_inputs.hpp"
+#include "test_numbers.hpp"
 #include "error_bounds.hpp"
 #include "rigiddyn/dynamics/pivoted_body_dynamics.hpp"
 #include "rigiddyn/exact/free_body.hpp"
@@ -22,8 +24,8 @@ namespace {
 
 using namespace rigiddyn;
 
-constexpr double kEps = std::numeric_limits<double>::epsilon();
-const Eigen::Vector3d kG(0.0, 0.0, -9.81);
+using rigiddyn::test::kEps;
+using rigiddyn::test::kG;
 
 // The heavy top: a symmetric body (A, A, C) about its axis, the centre of mass d = 0.2 m up the axis from
 // the tip O. The body frame B is turned by R0 against the principal axes, so I_C and I_O carry products of

@@ -3,6 +3,7 @@
 // the inertia to round-off for equal, nearly equal and distinct moments in random orientations; principal_axes
 // keeps its canonical axes and agrees bit for bit where the moments are distinct. The exact free flow of a body
 // whose moments span beyond the double range gives NaN instead of an internal error.
+#include "test_numbers.hpp"
 #include "rigiddyn/exact/free_body.hpp"
 #include "rigiddyn/inertia/principal_axes.hpp"
 #include "rigiddyn/integrators/splitting_parts.hpp"
@@ -18,7 +19,7 @@
 namespace rigiddyn {
 namespace {
 
-constexpr double kEps = std::numeric_limits<double>::epsilon();
+using rigiddyn::test::kEps;
 
 // moments repeated, nearly repeated (inside principal_axes' 1e-9 coincidence tolerance and outside it) and distinct
 std::vector<Eigen::Vector3d> test_moments() {

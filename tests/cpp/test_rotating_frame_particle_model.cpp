@@ -3,6 +3,8 @@
 // the exact flow of its loads part against a fine integration of that part, Jacobi's integral and the work
 // bookkeeping, the Coriolis power, its agreement with the generic SceneModel running the same terms, and its
 // bad input.
+#include "invalid_argument_message.hpp"
+#include "test_numbers.hpp"
 #include "rigiddyn/integrators/method.hpp"
 #include "rigiddyn/scene/elements/fictitious_forces.hpp"
 #include "rigiddyn/scene/fast/rotating_frame_particle_model.hpp"
@@ -23,7 +25,7 @@ namespace {
 using namespace rigiddyn;
 using Model = RotatingFrameParticleModel;
 
-constexpr double eps = std::numeric_limits<double>::epsilon();
+using rigiddyn::test::kEps;
 
 const Eigen::Vector3d axis(0.3, -0.2, 1.0);
 constexpr double rate = 1.0;  // [rad/s]
@@ -125,7 +127,7 @@ TEST(RotatingFrameParticleModel, LoadsKickIsTheExactFlowOfTheLoadsPart) {
         z += (k / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
         v_max = std::max(v_max, z.head<3>().norm());
       }
-      const double roundoff = 8.0 * n * eps;
+      const double roundoff = 8.0 * n * kEps;
       Model::Coordinates kicked = y;
       EXPECT_EQ(model.loads_kick(kicked, h), 0.0);
       EXPECT_LT((kicked.segment<3>(3) - z.head<3>()).norm(), roundoff * v_max) << "w = " << w << ", h = " << h;
@@ -170,7 +172,7 @@ TEST(RotatingFrameParticleModel, JacobiIntegralAndWorkBalance) {
   }
   // gravity's work m g·∫v and the displacement ∫v take the same RK4 weights of the same stage velocities:
   // W_g = −ΔV_g to round-off (100 steps, each a few ε of m |g| |Δp| ~ 100 J)
-  EXPECT_LT(fine.gravity, 100 * 8.0 * eps * 100.0);
+  EXPECT_LT(fine.gravity, 100 * 8.0 * kEps * 100.0);
 }
 
 TEST(RotatingFrameParticleModel, CoriolisPowerAndWorkAreZero) {
@@ -186,9 +188,9 @@ TEST(RotatingFrameParticleModel, CoriolisPowerAndWorkAreZero) {
   for (std::size_t i = 0; i < r.size(); ++i) {
     const Eigen::Vector3d v(&r.v_W[3 * i]);
     // m (−2 Ω × v)·v: three products of size m |Ω| |v|², each rounded: a few ε of it
-    EXPECT_LE(std::abs(r.power[3 * i + 2]), 8.0 * eps * mass * 2.0 * model.w_F().norm() * v.squaredNorm());
+    EXPECT_LE(std::abs(r.power[3 * i + 2]), 8.0 * kEps * mass * 2.0 * model.w_F().norm() * v.squaredNorm());
     // its work: the sum of RK4's weighted powers, each round-off: N steps of the same size
-    EXPECT_LE(std::abs(r.work[3 * i + 2]), 8.0 * eps * mass * 2.0 * model.w_F().norm() * 1e3 * 0.01 * static_cast<double>(i + 1));
+    EXPECT_LE(std::abs(r.work[3 * i + 2]), 8.0 * kEps * mass * 2.0 * model.w_F().norm() * 1e3 * 0.01 * static_cast<double>(i + 1));
   }
   // the splitting methods do no Coriolis work at all
   Model::Coordinates z = Model::coordinates(ParticleState{Eigen::Vector3d(1, 2, 3), Eigen::Vector3d(4, -5, 6)}, 0.0);
@@ -218,7 +220,7 @@ TEST(RotatingFrameParticleModel, AgreesWithTheSceneModel) {
   for (int i = 0; i < 500; ++i) Rk4::step(generic, y_generic, 0.002, work_generic), Rk4::step(fast, y_fast, 0.002, work_fast);
   generic.record(y_generic, 1.1, r_generic);
   fast.record(y_fast, 1.1, r_fast);
-  const double tolerance = 500 * 16.0 * eps * 20.0;  // 500 steps × 16 ε × the state's size (~20) × e^{1.5}/e
+  const double tolerance = 500 * 16.0 * kEps * 20.0;  // 500 steps × 16 ε × the state's size (~20) × e^{1.5}/e
   const auto near = [&](const std::vector<double>& a, const std::vector<double>& b, const char* field) {
     ASSERT_EQ(a.size(), b.size()) << field;
     for (std::size_t i = 0; i < a.size(); ++i) EXPECT_NEAR(a[i], b[i], tolerance * (1.0 + std::abs(b[i]))) << field << "[" << i << "]";
@@ -285,16 +287,7 @@ TEST(RotatingFrameParticleModel, EveryMethodRunsThroughTheSceneRunLoop) {
   }
 }
 
-// The message of the std::invalid_argument that f throws ("" if none).
-template <class F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "";
-}
+using rigiddyn::test::message_of;
 
 TEST(RotatingFrameParticleModel, BadInputRaisesNamingTheArgument) {
   const SceneFrame frame = SceneFrame::rotating(axis, rate);
@@ -306,15 +299,15 @@ TEST(RotatingFrameParticleModel, BadInputRaisesNamingTheArgument) {
     return K;
   }));
   const auto starts = [](const std::string& message, const char* prefix) { return message.rfind(prefix, 0) == 0; };
-  EXPECT_TRUE(starts(error_of([&] { Model(p, general, none, -1, 0, 1, 2); }), "frame: "));
-  EXPECT_TRUE(starts(error_of([&] { Model(p, frame, Eigen::Vector3d(0, 0, NAN), 0, 1, 2, 3); }), "g_F: "));
-  EXPECT_TRUE(starts(error_of([&] { Model(p, frame, g, -1, 0, 1, 2); }), "g_F: "));
-  EXPECT_TRUE(starts(error_of([&] { Model(p, frame, g, 3, 1, 2, 3); }), "gravity_element: "));
-  EXPECT_TRUE(starts(error_of([&] { Model(p, frame, g, 0, 0, 2, 3); }), "centrifugal_element: "));
-  EXPECT_TRUE(starts(error_of([&] { Model(p, frame, g, 0, 1, -2, 3); }), "coriolis_element: "));
-  EXPECT_TRUE(starts(error_of([&] { Model(p, frame, none, -1, -1, 0, 1); }), "centrifugal_element: "));
+  EXPECT_TRUE(starts(message_of([&] { Model(p, general, none, -1, 0, 1, 2); }), "frame: "));
+  EXPECT_TRUE(starts(message_of([&] { Model(p, frame, Eigen::Vector3d(0, 0, NAN), 0, 1, 2, 3); }), "g_F: "));
+  EXPECT_TRUE(starts(message_of([&] { Model(p, frame, g, -1, 0, 1, 2); }), "g_F: "));
+  EXPECT_TRUE(starts(message_of([&] { Model(p, frame, g, 3, 1, 2, 3); }), "gravity_element: "));
+  EXPECT_TRUE(starts(message_of([&] { Model(p, frame, g, 0, 0, 2, 3); }), "centrifugal_element: "));
+  EXPECT_TRUE(starts(message_of([&] { Model(p, frame, g, 0, 1, -2, 3); }), "coriolis_element: "));
+  EXPECT_TRUE(starts(message_of([&] { Model(p, frame, none, -1, -1, 0, 1); }), "centrifugal_element: "));
   // a frame at rest needs no frame terms
-  EXPECT_EQ(error_of([&] { Model(p, SceneFrame::rotating(axis, 0.0), none, -1, -1, -1, 0); }), "");
+  EXPECT_EQ(message_of([&] { Model(p, SceneFrame::rotating(axis, 0.0), none, -1, -1, -1, 0); }), "");
 }
 
 }  // namespace

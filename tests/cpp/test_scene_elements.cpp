@@ -6,6 +6,8 @@
 // gravity gradient against the exact attraction of a cloud of point masses; every validation message.
 #include <gtest/gtest.h>
 
+#include "test_inputs.hpp"
+#include "test_numbers.hpp"
 #include "rigiddyn/scene/body.hpp"
 #include "rigiddyn/scene/elements/drag.hpp"
 #include "rigiddyn/scene/elements/function_force.hpp"
@@ -30,19 +32,16 @@
 namespace rigiddyn {
 namespace {
 
-constexpr double kEps = std::numeric_limits<double>::epsilon();
-constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+using rigiddyn::test::kEps;
+using rigiddyn::test::kInf;
+using rigiddyn::test::kNaN;
 const std::string kName = "elements[2]";
 
 using Kinematics = std::vector<BodyKinematics>;
 using Wrenches = std::vector<BodyWrench>;
 
 // A realizable full inertia: principal moments (1.0, 1.4, 2.1) [kg m²] turned by a fixed rotation.
-Eigen::Matrix3d full_inertia() {
-  const Eigen::Matrix3d R = Eigen::AngleAxisd(0.8, Eigen::Vector3d(1.0, -2.0, 0.5).normalized()).toRotationMatrix();
-  return R * Eigen::Vector3d(1.0, 1.4, 2.1).asDiagonal() * R.transpose();
-}
+using test::full_inertia;
 
 // One body of each kind and a second rigid body: 0 particle, 1 planar body, 2 rigid (full inertia),
 // 3 rigid (principal axes).
@@ -52,16 +51,9 @@ std::vector<Body> mixed_bodies() {
 }
 
 // A uniformly random rotation (Shoemake 1992: a normalised 4-D Gaussian).
-Eigen::Quaterniond random_rotation(std::mt19937& rng) {
-  std::normal_distribution<double> normal;
-  Eigen::Quaterniond q(normal(rng), normal(rng), normal(rng), normal(rng));
-  return q.normalized();
-}
+using test::random_rotation;
 
-Eigen::Vector3d random_vector(std::mt19937& rng, double scale) {
-  std::uniform_real_distribution<double> uniform(-scale, scale);
-  return {uniform(rng), uniform(rng), uniform(rng)};
-}
+using test::random_vector;
 
 // Random kinematics of mixed_bodies(), each kind as elements see it (body_kinematics.hpp). The centres of
 // mass lie within 0.3 (per axis) of (0,0,0), (2,0,0), (0,2,0), (0,0,2): any two are >= 2 − 2·0.3·√3 > 0.9

@@ -4,6 +4,8 @@
 // the refusals and warnings of compile and simulate.
 #include <gtest/gtest.h>
 
+#include "test_inputs.hpp"
+#include "test_numbers.hpp"
 #include "rigiddyn/scene/simulate_scene.hpp"
 
 #include <algorithm>
@@ -16,13 +18,10 @@
 namespace rigiddyn {
 namespace {
 
-constexpr double kEps = std::numeric_limits<double>::epsilon();
+using rigiddyn::test::kEps;
 
 // A full inertia about the centre of mass: principal moments (1.0, 1.4, 2.1) [kg m²] turned by a fixed rotation.
-Eigen::Matrix3d full_inertia() {
-  const Eigen::Matrix3d R = Eigen::AngleAxisd(0.8, Eigen::Vector3d(1.0, -2.0, 0.5).normalized()).toRotationMatrix();
-  return R * Eigen::Vector3d(1.0, 1.4, 2.1).asDiagonal() * R.transpose();
-}
+using test::full_inertia;
 
 PivotedBody heavy_top() { return PivotedBody(RigidBody(2.0, full_inertia()), Eigen::Vector3d(0.1, -0.2, 0.5), Eigen::Vector3d(0.3, 0.0, 1.0)); }
 

@@ -3,6 +3,8 @@
 // "Rigid body kinematics and dynamics" notes' eq. (4.39) for each point, Σ m_i ρ_i × a_fict,i for the moment),
 // the Coriolis power, Jacobi's integral of a turning frame, runs in F against runs in W transformed, and the
 // frame's bad values.
+#include "invalid_argument_message.hpp"
+#include "test_numbers.hpp"
 #include "rigiddyn/integrators/rk4.hpp"
 #include "rigiddyn/scene/elements/fictitious_forces.hpp"
 #include "rigiddyn/scene/scene_frame.hpp"
@@ -23,7 +25,7 @@ namespace {
 
 using namespace rigiddyn;
 
-constexpr double eps = std::numeric_limits<double>::epsilon();
+using rigiddyn::test::kEps;
 
 // The scene model runs the frame terms (alternatives of its Term variant).
 using FrameModel = SceneModel;
@@ -147,7 +149,7 @@ TEST(SceneFrame, FictitiousWrenchesEqualSumsOverPointMasses) {
     // Both sides are sums of a few dozen products (|r| ≤ 4.5, |ρ| ≤ 2, |v| ≤ 12, |Ω|, |α| ≤ 2.6, m ≤ 14): the
     // largest partial products are ≤ 14·2·(2.6·2.6·4.5 + 2·2.6·12 + 4.5) ≈ 2.8e3; each side rounds to a few
     // dozen ε of that (the point sums also cancel Σ m ρ = 0, itself true only to round-off): 64 ε × 2.8e3.
-    const double tolerance = 64.0 * eps * 2.8e3;
+    const double tolerance = 64.0 * kEps * 2.8e3;
     for (int j = 0; j < 4; ++j) {
       EXPECT_LT((w[j].f_W - *forces[j]).norm(), tolerance) << "term " << j << " trial " << trial;
       EXPECT_LT((w[j].tau_B - *moments[j]).norm(), tolerance) << "term " << j << " trial " << trial;
@@ -179,7 +181,7 @@ TEST(SceneFrame, CoriolisPowerIsZeroToRoundOff) {
     double scale = 0.0;
     for (std::size_t b = 0; b < 3; ++b) scale += w[b].f_W.norm() * k[b].v_W.norm() + w[b].tau_B.norm() * k[b].w_B.norm();
     ASSERT_GT(scale, 1.0);
-    EXPECT_LE(std::abs(power), 16.0 * eps * scale) << "trial " << trial;
+    EXPECT_LE(std::abs(power), 16.0 * kEps * scale) << "trial " << trial;
   }
 }
 
@@ -206,20 +208,11 @@ TEST(SceneFrame, EarthFrameTurnsAboutTheLocalNorthAxis) {
   const FrameTerms f = frame_terms(SceneFrame::earth(latitude), 3600.0);
   // cos, sin and one product each: 2 ulps of Ω
   EXPECT_NEAR(f.w_F.x(), 0.0, 0.0);
-  EXPECT_NEAR(f.w_F.y(), 7.2921159e-5 * std::cos(latitude), 2.0 * eps * 7.3e-5);
-  EXPECT_NEAR(f.w_F.z(), 7.2921159e-5 * std::sin(latitude), 2.0 * eps * 7.3e-5);
+  EXPECT_NEAR(f.w_F.y(), 7.2921159e-5 * std::cos(latitude), 2.0 * kEps * 7.3e-5);
+  EXPECT_NEAR(f.w_F.z(), 7.2921159e-5 * std::sin(latitude), 2.0 * kEps * 7.3e-5);
 }
 
-// The message of the std::invalid_argument that f throws ("" if none).
-template <class F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "";
-}
+using rigiddyn::test::message_of;
 
 TEST(SceneFrame, BadFrameValuesRaiseNamingTheirArgument) {
   const SceneFrame nan_after_1s = SceneFrame::moving(FrameMotion([](double t) {
@@ -228,31 +221,31 @@ TEST(SceneFrame, BadFrameValuesRaiseNamingTheirArgument) {
     return K;
   }));
   EXPECT_NO_THROW(frame_terms(nan_after_1s, 0.5));
-  const std::string message = error_of([&] { frame_terms(nan_after_1s, 2.0); });
+  const std::string message = message_of([&] { frame_terms(nan_after_1s, 2.0); });
   EXPECT_EQ(message.rfind("frame: expected finite values from the motion function at t = 2 s, got ", 0), 0u) << message;
   // through a term, as a run meets it
   const std::vector<Body> bodies{Particle(1.0)};
   std::vector<BodyKinematics> k(1);
   k[0].m = 1.0;
   std::vector<BodyWrench> w(1);
-  EXPECT_EQ(error_of([&] { EulerForceTerm(nan_after_1s, bodies, "e").add_wrenches(2.0, k, w); }).rfind("frame: ", 0), 0u);
+  EXPECT_EQ(message_of([&] { EulerForceTerm(nan_after_1s, bodies, "e").add_wrenches(2.0, k, w); }).rfind("frame: ", 0), 0u);
   const SceneFrame infinite_origin = SceneFrame::moving(FrameMotion([](double t) {
     FrameKinematics K = general_motion(t);
     K.a_PF_P.z() = std::numeric_limits<double>::infinity();
     return K;
   }));
-  EXPECT_EQ(error_of([&] { FrameOriginTerm(infinite_origin, bodies, "o").add_wrenches(0.0, k, w); }).rfind("frame: ", 0), 0u);
+  EXPECT_EQ(message_of([&] { FrameOriginTerm(infinite_origin, bodies, "o").add_wrenches(0.0, k, w); }).rfind("frame: ", 0), 0u);
   const SceneFrame not_a_rotation = SceneFrame::moving(FrameMotion([](double) {
     FrameKinematics K;
     K.R_PF(0, 0) = 2.0;
     return K;
   }));
-  EXPECT_EQ(error_of([&] { frame_terms(not_a_rotation, 0.0); }).rfind("frame: expected a rotation matrix", 0), 0u);
-  EXPECT_EQ(error_of([] { SceneFrame::rotating(Eigen::Vector3d::Zero(), 1.0); }).rfind("axis_F: ", 0), 0u);
-  EXPECT_EQ(error_of([] { SceneFrame::rotating(Eigen::Vector3d(0, 0, std::nan("")), 1.0); }).rfind("axis_F: ", 0), 0u);
-  EXPECT_EQ(error_of([] { SceneFrame::rotating(Eigen::Vector3d::UnitZ(), INFINITY); }).rfind("rate: ", 0), 0u);
-  EXPECT_EQ(error_of([] { SceneFrame::earth(2.0); }).rfind("latitude: ", 0), 0u);
-  EXPECT_EQ(error_of([] { SceneFrame::earth(std::nan("")); }).rfind("latitude: ", 0), 0u);
+  EXPECT_EQ(message_of([&] { frame_terms(not_a_rotation, 0.0); }).rfind("frame: expected a rotation matrix", 0), 0u);
+  EXPECT_EQ(message_of([] { SceneFrame::rotating(Eigen::Vector3d::Zero(), 1.0); }).rfind("axis_F: ", 0), 0u);
+  EXPECT_EQ(message_of([] { SceneFrame::rotating(Eigen::Vector3d(0, 0, std::nan("")), 1.0); }).rfind("axis_F: ", 0), 0u);
+  EXPECT_EQ(message_of([] { SceneFrame::rotating(Eigen::Vector3d::UnitZ(), INFINITY); }).rfind("rate: ", 0), 0u);
+  EXPECT_EQ(message_of([] { SceneFrame::earth(2.0); }).rfind("latitude: ", 0), 0u);
+  EXPECT_EQ(message_of([] { SceneFrame::earth(std::nan("")); }).rfind("latitude: ", 0), 0u);
 }
 
 // ---- runs ------------------------------------------------------------------------------------------------

@@ -3,6 +3,8 @@
 // conserved to round-off; every refusal and warning of compile and of the scene's simulate/step.
 #include <gtest/gtest.h>
 
+#include "test_inputs.hpp"
+#include "test_numbers.hpp"
 #include "rigiddyn/scene/simulate_scene.hpp"
 
 #include <cmath>
@@ -17,7 +19,7 @@ namespace {
 // EXPECT_THAT(text, HasSubstr(part)) without gmock
 #define EXPECT_CONTAINS(text, part) EXPECT_NE(std::string(text).find(part), std::string::npos) << (text)
 
-constexpr double kEps = std::numeric_limits<double>::epsilon();
+using rigiddyn::test::kEps;
 
 // Every method that steps (Method::exact is refused for more than one body).
 std::vector<Method> stepping_methods() {
@@ -28,22 +30,10 @@ std::vector<Method> stepping_methods() {
   return out;
 }
 
-RigidBodyState tumbling_state() {
-  RigidBodyState s;
-  s.p_W = Eigen::Vector3d(0.5, -1.0, 2.0);
-  s.q_WB = Eigen::Quaterniond(Eigen::AngleAxisd(0.4, Eigen::Vector3d(1.0, -1.0, 2.0).normalized()));
-  s.v_W = Eigen::Vector3d(0.2, 0.0, -0.1);
-  s.w_B = Eigen::Vector3d(0.3, 1.0, 0.2);
-  return s;
-}
+using test::tumbling_state;
 
 // A body-fixed force and couple on for t in [t_start, t_end) [s].
-AppliedLoad window(double t_start, double t_end) {
-  AppliedLoad load{Eigen::Vector3d(0.1, -0.3, 0.2), Eigen::Vector3d(0.3, -0.2, 0.4), Frame::body};
-  load.t_start = t_start;
-  load.t_end = t_end;
-  return load;
-}
+using test::window;
 
 // Largest difference between body b's columns of a scene run and a one-body trajectory, over all records.
 double largest_difference(const SceneSimulation& scene, std::size_t b, const Trajectory& one) {

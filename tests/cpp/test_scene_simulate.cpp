@@ -4,6 +4,8 @@
 // compiled-in CustomForce equals the type-erased FunctionForce; step equals simulate's first step.
 #include <gtest/gtest.h>
 
+#include "test_inputs.hpp"
+#include "test_numbers.hpp"
 #include "rigiddyn/scene/simulate_scene.hpp"
 
 #include <cmath>
@@ -13,23 +15,11 @@
 namespace rigiddyn {
 namespace {
 
-constexpr double kEps = std::numeric_limits<double>::epsilon();
+using rigiddyn::test::kEps;
 
-RigidBodyState tumbling_state() {
-  RigidBodyState s;
-  s.p_W = Eigen::Vector3d(0.5, -1.0, 2.0);
-  s.q_WB = Eigen::Quaterniond(Eigen::AngleAxisd(0.4, Eigen::Vector3d(1.0, -1.0, 2.0).normalized()));
-  s.v_W = Eigen::Vector3d(0.2, 0.0, -0.1);
-  s.w_B = Eigen::Vector3d(0.3, 1.0, 0.2);
-  return s;
-}
+using test::tumbling_state;
 
-AppliedLoad window(double t_start, double t_end) {
-  AppliedLoad load{Eigen::Vector3d(0.1, -0.3, 0.2), Eigen::Vector3d(0.3, -0.2, 0.4), Frame::body};
-  load.t_start = t_start;
-  load.t_end = t_end;
-  return load;
-}
+using test::window;
 
 // The scene's columns equal the trajectory's bitwise.
 void expect_same_records(const SceneSimulation& scene, const Trajectory& one) {

@@ -3,6 +3,7 @@
 // (tail lanes, lane count, a diverged lane) bitwise; bad input named.
 #include <gtest/gtest.h>
 
+#include "test_numbers.hpp"
 #include "invalid_argument_message.hpp"
 #include "rigiddyn/batch/simd_rigid_body.hpp"
 #include "rigiddyn/simulate/simulate.hpp"
@@ -20,7 +21,7 @@
 namespace rigiddyn {
 namespace {
 
-constexpr double eps = std::numeric_limits<double>::epsilon();
+using rigiddyn::test::kEps;
 
 struct Batch {
   std::vector<RigidBody> bodies;
@@ -110,7 +111,7 @@ void expect_matches_scalar(const BatchTrajectory& batch, const Batch& b, std::si
                                         scale_of(s.work, rows, 1)});
   const auto expect_near = [&](const std::vector<double>& simd, const std::vector<double>& scalar, std::size_t width,
                                double scale, const char* name) {
-    const double bound = 32.0 * steps * eps * scale * amplification;
+    const double bound = 32.0 * steps * kEps * scale * amplification;
     for (std::size_t k = 0; k < rows * width; ++k) {
       ASSERT_NEAR(simd[base * width + k], scalar[k], bound) << name << " entry " << k;
     }
@@ -126,7 +127,7 @@ void expect_matches_scalar(const BatchTrajectory& batch, const Batch& b, std::si
   expect_near(batch.angular_momentum_norm, s.angular_momentum_norm, 1, scale_of(s.angular_momentum_norm, rows, 1),
               "angular_momentum_norm");
   for (std::size_t r = 0; r < rows; ++r) {
-    ASSERT_NEAR(batch.quaternion_norm_error[base + r], s.quaternion_norm_error[r], 8.0 * eps) << "|q| - 1 row " << r;
+    ASSERT_NEAR(batch.quaternion_norm_error[base + r], s.quaternion_norm_error[r], 8.0 * kEps) << "|q| - 1 row " << r;
   }
   for (std::size_t r = rows; r < batch.records; ++r) ASSERT_TRUE(std::isnan(batch.t[base + r])) << "row " << r;
 }

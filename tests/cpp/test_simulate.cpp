@@ -3,6 +3,7 @@
 // no sub-step; the monitor stops a run; a recording larger than the memory is refused.
 #include <gtest/gtest.h>
 
+#include "test_inputs.hpp"
 #include "rigiddyn/simulate/simulate.hpp"
 
 #include <cmath>
@@ -14,7 +15,7 @@
 namespace rigiddyn {
 namespace {
 
-const RigidBody kBody(2.0, Eigen::Vector3d(1.0, 2.0, 3.0).asDiagonal().toDenseMatrix());
+const RigidBody kFullBody(2.0, Eigen::Vector3d(1.0, 2.0, 3.0).asDiagonal().toDenseMatrix());
 
 RigidBodyState initial_state() {
   RigidBodyState s;
@@ -25,15 +26,10 @@ RigidBodyState initial_state() {
 }
 
 // A body-fixed couple and force on for t in [t_start, t_end) [s].
-AppliedLoad window(double t_start, double t_end) {
-  AppliedLoad load{Eigen::Vector3d(0.1, -0.3, 0.2), Eigen::Vector3d(0.3, -0.2, 0.4), Frame::body};
-  load.t_start = t_start;
-  load.t_end = t_end;
-  return load;
-}
+using test::window;
 
 // Every method that steps (Method::exact evaluates a closed form for torque-free bodies only).
-std::vector<Method> stepping_methods() {
+std::vector<Method> finite_order_methods() {
   std::vector<Method> out;
   for (const MethodInfo& info : method_table()) {
     if (info.order > 0) out.push_back(info.method);
@@ -61,20 +57,20 @@ TEST(Simulate, AStepAcrossASwitchIsTwoStepsMeetingThere) {
   // the couple starts at s = 0.1234 inside step 13 (0.12 -> 0.13): simulate's step 13 must be one
   // step from t_12 to s without it and one from s to t_13 with it
   const double s = 0.1234;
-  for (const Method method : stepping_methods()) {
+  for (const Method method : finite_order_methods()) {
     SimulationOptions o;
     o.method = method;
     o.dt = 0.01;
     o.steps = 20;
     o.loads = {window(s, 1.0)};
-    const Trajectory run = simulate(kBody, initial_state(), o);
+    const Trajectory run = simulate(kFullBody, initial_state(), o);
     SimulationOptions piece = o;
     piece.t0 = 12.0 * o.dt;  // the grid time t_12 as simulate computes it
     piece.dt = s - piece.t0;
-    const RigidBodyState at_switch = step(kBody, record(run, 12), piece);
+    const RigidBodyState at_switch = step(kFullBody, record(run, 12), piece);
     piece.t0 = s;
     piece.dt = 13.0 * o.dt - s;
-    const RigidBodyState after = step(kBody, at_switch, piece);
+    const RigidBodyState after = step(kFullBody, at_switch, piece);
     // the same sub-steps from the same state, but for step()'s normalisation of q (one rounding,
     // carried through two steps of size <= 0.01 at |w| ~ 1: a few eps)
     EXPECT_LE(difference(after, record(run, 13)), 1e-14) << method_info(method).name;
@@ -82,7 +78,7 @@ TEST(Simulate, AStepAcrossASwitchIsTwoStepsMeetingThere) {
     piece.t0 = 12.0 * o.dt;
     piece.dt = o.dt;
     piece.loads = {window(0.13, 1.0)};
-    EXPECT_GT(difference(step(kBody, record(run, 12), piece), record(run, 13)), 1e-5) << method_info(method).name;
+    EXPECT_GT(difference(step(kFullBody, record(run, 12), piece), record(run, 13)), 1e-5) << method_info(method).name;
   }
 }
 
@@ -94,9 +90,9 @@ TEST(Simulate, ASwitchOnTheStepGridMakesNoSubStep) {
   o.dt = 0.1;
   o.steps = 8;
   o.loads = {window(0.3, 0.7)};
-  const Trajectory a = simulate(kBody, initial_state(), o);
+  const Trajectory a = simulate(kFullBody, initial_state(), o);
   o.loads = {window(3.0 * 0.1, 7.0 * 0.1)};
-  const Trajectory b = simulate(kBody, initial_state(), o);
+  const Trajectory b = simulate(kFullBody, initial_state(), o);
   EXPECT_EQ(a.q_WB, b.q_WB);
   EXPECT_EQ(a.w_B, b.w_B);
   EXPECT_EQ(a.p_W, b.p_W);
@@ -112,17 +108,17 @@ double error_at_horizon(Method method, int n) {
   o.dt = 5e-4;
   o.steps = 6000;
   o.record_every = o.steps;
-  const RigidBodyState reference = record(simulate(kBody, initial_state(), o), 1);
+  const RigidBodyState reference = record(simulate(kFullBody, initial_state(), o), 1);
   o.method = method;
   o.dt = 3.0 / n;
   o.steps = n;
   o.record_every = n;
-  return difference(record(simulate(kBody, initial_state(), o), 1), reference);
+  return difference(record(simulate(kFullBody, initial_state(), o), 1), reference);
 }
 
 TEST(Simulate, EveryMethodKeepsItsOrderWithLoadsSwitchingInsideSteps) {
   // n = 77 2^k steps over 3 s: 0.5 / dt = 77 2^k / 6 and 2 / dt = 77 2^k / 1.5 are never integers
-  for (const Method method : stepping_methods()) {
+  for (const Method method : finite_order_methods()) {
     const int order = method_info(method).order;
     const int k0 = order == 1 ? 3 : 0;  // first-order methods reach their asymptotic range later
     std::vector<double> slopes;
@@ -152,11 +148,11 @@ TEST(Simulate, StepOverAWindowedLoadSplitsItsStep) {
   o.steps = 13;
   o.record_every = 1;
   o.loads = {window(0.1234, 1.0)};
-  const Trajectory run = simulate(kBody, initial_state(), o);
+  const Trajectory run = simulate(kFullBody, initial_state(), o);
   SimulationOptions one = o;
   one.t0 = 12.0 * o.dt;
   // the same sub-steps, but for step()'s normalisation of q (one rounding): a few eps
-  EXPECT_LE(difference(step(kBody, record(run, 12), one), record(run, 13)), 1e-14);
+  EXPECT_LE(difference(step(kFullBody, record(run, 12), one), record(run, 13)), 1e-14);
 }
 
 TEST(Simulate, MonitorSeesTheStepsAndStopsTheRun) {
@@ -170,7 +166,7 @@ TEST(Simulate, MonitorSeesTheStepsAndStopsTheRun) {
     seen.push_back(steps_done);
     return steps_done >= 20000;
   };
-  const Trajectory run = simulate(kBody, initial_state(), o);
+  const Trajectory run = simulate(kFullBody, initial_state(), o);
   EXPECT_TRUE(run.interrupted);
   // the first call after the first step, then at the pace of the wall clock (monitor_pace.hpp): steps that
   // only grow, the last at the stop
@@ -184,7 +180,7 @@ TEST(Simulate, MonitorSeesTheStepsAndStopsTheRun) {
   // the exact method evaluates only the records: the monitor at records, after the first one
   o.method = Method::exact;
   seen.clear();
-  const Trajectory exact = simulate(kBody, RigidBodyState{}, o);
+  const Trajectory exact = simulate(kFullBody, RigidBodyState{}, o);
   EXPECT_TRUE(exact.interrupted);
   ASSERT_FALSE(seen.empty());
   EXPECT_EQ(seen.front(), 1000);
@@ -194,9 +190,9 @@ TEST(Simulate, MonitorSeesTheStepsAndStopsTheRun) {
   // a monitor that never stops changes nothing
   o.method = Method::rk4;
   o.monitor = [](std::int64_t) { return false; };
-  const Trajectory whole = simulate(kBody, initial_state(), o);
+  const Trajectory whole = simulate(kFullBody, initial_state(), o);
   o.monitor = nullptr;
-  const Trajectory plain = simulate(kBody, initial_state(), o);
+  const Trajectory plain = simulate(kFullBody, initial_state(), o);
   EXPECT_FALSE(whole.interrupted);
   EXPECT_EQ(whole.q_WB, plain.q_WB);
   EXPECT_EQ(whole.size(), 101u);
@@ -219,9 +215,9 @@ TEST(Simulate, AMonitorThatNeverStopsChangesNoBit) {
     SCOPED_TRACE(info.name);
     o.method = info.method;
     o.monitor = [](std::int64_t) { return false; };
-    const Trajectory monitored = simulate(kBody, initial_state(), o);
+    const Trajectory monitored = simulate(kFullBody, initial_state(), o);
     o.monitor = nullptr;
-    const Trajectory plain = simulate(kBody, initial_state(), o);
+    const Trajectory plain = simulate(kFullBody, initial_state(), o);
     EXPECT_EQ(monitored.p_W, plain.p_W);
     EXPECT_EQ(monitored.q_WB, plain.q_WB);
     EXPECT_EQ(monitored.v_W, plain.v_W);
@@ -237,7 +233,7 @@ TEST(Simulate, ExactMethodRecordsTheSameSteps) {
   o.steps = 10;
   o.record_every = 3;
   o.t0 = 1.0;
-  const Trajectory run = simulate(kBody, initial_state(), o);
+  const Trajectory run = simulate(kFullBody, initial_state(), o);
   // steps 0, 3, 6, 9 and the last, 10
   const std::vector<double> expected{1.0, 1.0 + 3 * 0.1, 1.0 + 6 * 0.1, 1.0 + 9 * 0.1, 1.0 + 10 * 0.1};
   ASSERT_EQ(run.t.size(), expected.size());
@@ -251,7 +247,7 @@ TEST(Simulate, RecordingLargerThanTheMemoryIsRefused) {
   o.steps = std::int64_t{1} << 50;
   o.record_every = 1;
   try {
-    simulate(kBody, initial_state(), o);
+    simulate(kFullBody, initial_state(), o);
     FAIL() << "expected std::invalid_argument";
   } catch (const std::invalid_argument& e) {
     const std::string what = e.what();

@@ -2,6 +2,9 @@
 // trips, the delicate angles (near 0, near pi, gimbal lock) and bad input.
 #include <gtest/gtest.h>
 
+#include "error_bounds.hpp"
+#include "invalid_argument_message.hpp"
+#include "test_numbers.hpp"
 #include "rigiddyn/so3/axis_angle.hpp"
 #include "rigiddyn/so3/elementary.hpp"
 #include "rigiddyn/so3/euler.hpp"
@@ -20,7 +23,7 @@
 namespace rigiddyn {
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
+using rigiddyn::test::kPi;
 // Tolerances in this file: one conversion is a fixed sequence of <= ~20 correctly rounded
 // operations on unit numbers (rotation entries, unit quaternions, angles <= pi), so it errs by
 // <= ~20 eps per entry (4e-15), <= 1e-14 in the Frobenius norm of a 3x3 difference; 1e-15 where
@@ -49,10 +52,7 @@ struct Random {
   }
 };
 
-// the same rotation: q1 = ±q2
-double rotation_distance(const Eigen::Quaterniond& q1, const Eigen::Quaterniond& q2) {
-  return std::min((q1.coeffs() - q2.coeffs()).norm(), (q1.coeffs() + q2.coeffs()).norm());
-}
+using rigiddyn::test::rotation_distance;
 
 // Rodrigues' formula written out, the closed form of exp: R = I + sinθ/θ S + (1 - cosθ)/θ² S²
 Eigen::Matrix3d rodrigues(const Eigen::Vector3d& rotvec) {
@@ -62,16 +62,7 @@ Eigen::Matrix3d rodrigues(const Eigen::Vector3d& rotvec) {
   return Eigen::Matrix3d::Identity() + std::sin(theta) / theta * S + (1 - std::cos(theta)) / (theta * theta) * S * S;
 }
 
-// expects `f` to throw std::invalid_argument whose message starts with "<name>: expected"
-template <typename F>
-void expect_invalid(F f, const std::string& name) {
-  try {
-    f();
-    ADD_FAILURE() << "no exception for " << name;
-  } catch (const std::invalid_argument& e) {
-    EXPECT_EQ(std::string(e.what()).rfind(name + ": expected", 0), 0u) << e.what();
-  }
-}
+using rigiddyn::test::expect_invalid;
 
 // ---------------------------------------------------------------- skew
 
@@ -111,7 +102,7 @@ TEST(Quaternion, RotateEqualsMatrixTimesVector) {
     EXPECT_LT((quat_rotate(q, v) - quat_to_matrix(q) * v).norm(), 1e-14);
   }
   // 90 degrees about z takes x to y (active rotation)
-  const Eigen::Quaterniond qz(std::cos(pi / 4), 0, 0, std::sin(pi / 4));
+  const Eigen::Quaterniond qz(std::cos(kPi / 4), 0, 0, std::sin(kPi / 4));
   EXPECT_LT((quat_rotate(qz, Eigen::Vector3d::UnitX()) - Eigen::Vector3d::UnitY()).norm(), 1e-15);
 }
 
@@ -183,7 +174,7 @@ TEST(ExpLog, ExpMatchesAngleAxisAndRodrigues) {
   Random rnd;
   for (int n = 0; n < 200; ++n) {
     const Eigen::Vector3d axis = rnd.unit_vector();
-    const double angle = rnd.uniform(1e-3, 3 * pi);  // also beyond pi: exp is defined for every angle
+    const double angle = rnd.uniform(1e-3, 3 * kPi);  // also beyond pi: exp is defined for every angle
     const Eigen::Vector3d rotvec = angle * axis;
     EXPECT_LT((rotvec_to_quat(rotvec).coeffs() - Eigen::Quaterniond(Eigen::AngleAxisd(angle, axis)).coeffs()).norm(), 1e-14);
     EXPECT_LT((rotvec_to_matrix(rotvec) - rodrigues(rotvec)).norm(), 1e-13);
@@ -193,7 +184,7 @@ TEST(ExpLog, ExpMatchesAngleAxisAndRodrigues) {
 TEST(ExpLog, LogInvertsExpForAnglesUpToPi) {
   Random rnd;
   for (int n = 0; n < 200; ++n) {
-    const Eigen::Vector3d rotvec = rnd.uniform(0.0, pi) * rnd.unit_vector();
+    const Eigen::Vector3d rotvec = rnd.uniform(0.0, kPi) * rnd.unit_vector();
     EXPECT_LT((quat_to_rotvec(rotvec_to_quat(rotvec)) - rotvec).norm(), 1e-14);
     EXPECT_LT((matrix_to_rotvec(rotvec_to_matrix(rotvec)) - rotvec).norm(), 1e-14);
   }
@@ -222,7 +213,7 @@ TEST(ExpLog, AnglesNearPi) {
   for (double gap : {0.0, 1e-12, 1e-9, 1e-6, 1e-3}) {
     for (int n = 0; n < 20; ++n) {
       const Eigen::Vector3d axis = rnd.unit_vector();
-      const Eigen::Vector3d r = (pi - gap) * axis;
+      const Eigen::Vector3d r = (kPi - gap) * axis;
       const Eigen::Matrix3d R = rodrigues(r);
       // the log is ±r (at exactly pi both are right), accurate to round-off
       const Eigen::Vector3d from_matrix = matrix_to_rotvec(R);
@@ -233,7 +224,7 @@ TEST(ExpLog, AnglesNearPi) {
       // (well conditioned at pi) and the angle by atan2: <= ~50 eps of pi through R, ~10 eps direct
       EXPECT_LT((from_matrix - sign * r).norm(), 1e-13) << "gap " << gap;
       EXPECT_LT((from_quat - sign_quat * r).norm(), 1e-14) << "gap " << gap;
-      EXPECT_LE(from_matrix.norm(), pi + 1e-15);
+      EXPECT_LE(from_matrix.norm(), kPi + 1e-15);
       if (gap > 0) {
         EXPECT_EQ(sign, 1.0) << "gap " << gap;
         EXPECT_EQ(sign_quat, 1.0) << "gap " << gap;
@@ -241,8 +232,8 @@ TEST(ExpLog, AnglesNearPi) {
     }
   }
   // just over pi the log wraps to the short way round
-  const Eigen::Vector3d over = (pi + 1e-6) * Eigen::Vector3d::UnitZ();
-  EXPECT_LT((quat_to_rotvec(rotvec_to_quat(over)) - (1e-6 - pi) * Eigen::Vector3d::UnitZ()).norm(), 1e-14);
+  const Eigen::Vector3d over = (kPi + 1e-6) * Eigen::Vector3d::UnitZ();
+  EXPECT_LT((quat_to_rotvec(rotvec_to_quat(over)) - (1e-6 - kPi) * Eigen::Vector3d::UnitZ()).norm(), 1e-14);
 }
 
 // ---------------------------------------------------------------- axis-angle
@@ -251,7 +242,7 @@ TEST(AxisAngle, RoundTripAndClosedForm) {
   Random rnd;
   for (int n = 0; n < 100; ++n) {
     const Eigen::Vector3d axis = rnd.unit_vector();
-    const double angle = rnd.uniform(1e-6, pi);
+    const double angle = rnd.uniform(1e-6, kPi);
     const Eigen::Quaterniond q = axis_angle_to_quat(3.5 * axis, angle);  // any length: normalised
     EXPECT_LT((q.coeffs() - Eigen::Quaterniond(Eigen::AngleAxisd(angle, axis)).coeffs()).norm(), 1e-15);
     const AxisAngle back = quat_to_axis_angle(q);
@@ -288,9 +279,9 @@ TEST(Elementary, MatchAngleAxisAndQuaternion) {
     }
   }
   // active: a quarter turn about z takes x to y, about x takes y to z, about y takes z to x
-  EXPECT_LT((rot_z(pi / 2) * Eigen::Vector3d::UnitX() - Eigen::Vector3d::UnitY()).norm(), 1e-15);
-  EXPECT_LT((rot_x(pi / 2) * Eigen::Vector3d::UnitY() - Eigen::Vector3d::UnitZ()).norm(), 1e-15);
-  EXPECT_LT((rot_y(pi / 2) * Eigen::Vector3d::UnitZ() - Eigen::Vector3d::UnitX()).norm(), 1e-15);
+  EXPECT_LT((rot_z(kPi / 2) * Eigen::Vector3d::UnitX() - Eigen::Vector3d::UnitY()).norm(), 1e-15);
+  EXPECT_LT((rot_x(kPi / 2) * Eigen::Vector3d::UnitY() - Eigen::Vector3d::UnitZ()).norm(), 1e-15);
+  EXPECT_LT((rot_y(kPi / 2) * Eigen::Vector3d::UnitZ() - Eigen::Vector3d::UnitX()).norm(), 1e-15);
 }
 
 // ---------------------------------------------------------------- Euler angles
@@ -329,8 +320,8 @@ TEST(Euler, InverseRecoversAnglesInTheirRanges) {
   for (const std::string& seq : all_sequences) {
     const bool proper = is_proper(seq);
     for (int n = 0; n < 100; ++n) {
-      const Eigen::Vector3d angles(rnd.uniform(-pi, pi), proper ? rnd.uniform(1e-3, pi - 1e-3) : rnd.uniform(-pi / 2 + 1e-3, pi / 2 - 1e-3),
-                                   rnd.uniform(-pi, pi));
+      const Eigen::Vector3d angles(rnd.uniform(-kPi, kPi), proper ? rnd.uniform(1e-3, kPi - 1e-3) : rnd.uniform(-kPi / 2 + 1e-3, kPi / 2 - 1e-3),
+                                   rnd.uniform(-kPi, kPi));
       EXPECT_LT((quat_to_euler(seq, euler_to_quat(seq, angles)) - angles).norm(), 1e-12) << seq;
       EXPECT_LT((matrix_to_euler(seq, euler_definition(seq, angles)) - angles).norm(), 1e-12) << seq;
     }
@@ -338,13 +329,13 @@ TEST(Euler, InverseRecoversAnglesInTheirRanges) {
     for (int n = 0; n < 100; ++n) {
       const Eigen::Quaterniond q = rnd.quaternion();
       const Eigen::Vector3d e = quat_to_euler(seq, q);
-      EXPECT_LE(std::abs(e[0]), pi) << seq;
-      EXPECT_LE(std::abs(e[2]), pi) << seq;
+      EXPECT_LE(std::abs(e[0]), kPi) << seq;
+      EXPECT_LE(std::abs(e[2]), kPi) << seq;
       if (proper) {
         EXPECT_GE(e[1], 0.0) << seq;
-        EXPECT_LE(e[1], pi) << seq;
+        EXPECT_LE(e[1], kPi) << seq;
       } else {
-        EXPECT_LE(std::abs(e[1]), pi / 2) << seq;
+        EXPECT_LE(std::abs(e[1]), kPi / 2) << seq;
       }
       EXPECT_LT((euler_definition(seq, e) - quat_to_matrix(q)).norm(), 1e-13) << seq;
     }
@@ -355,7 +346,7 @@ TEST(Euler, GimbalLockSetsTheThirdAngleToZero) {
   Random rnd;
   for (const std::string& seq : all_sequences) {
     const bool proper = is_proper(seq);
-    for (double middle : proper ? std::vector<double>{0.0, pi} : std::vector<double>{-pi / 2, pi / 2}) {
+    for (double middle : proper ? std::vector<double>{0.0, kPi} : std::vector<double>{-kPi / 2, kPi / 2}) {
       for (double offset : {0.0, 1e-15}) {  // exactly at the lock, and within its round-off tolerance
         for (int n = 0; n < 20; ++n) {
           const Eigen::Vector3d angles(rnd.uniform(-3, 3), middle + (middle > 0 ? -offset : offset), rnd.uniform(-3, 3));
@@ -374,7 +365,7 @@ TEST(Euler, GimbalLockSetsTheThirdAngleToZero) {
 TEST(Euler, NearGimbalLockStillReproducesTheRotation) {
   Random rnd;
   for (const std::string& seq : all_sequences) {
-    const double lock = is_proper(seq) ? 0.0 : pi / 2;
+    const double lock = is_proper(seq) ? 0.0 : kPi / 2;
     for (double gap : {1e-14, 1e-13, 1e-12, 1e-10, 1e-8, 1e-6, 1e-3}) {
       const Eigen::Vector3d angles(rnd.uniform(-3, 3), lock - gap, rnd.uniform(-3, 3));
       const Eigen::Quaterniond q = euler_to_quat(seq, angles);

@@ -4,6 +4,7 @@
 // properties; the comparisons with SciPy are in tests/python/test_so3_ops.py).
 #include <gtest/gtest.h>
 
+#include "test_numbers.hpp"
 #include "rigiddyn/so3/align_vectors.hpp"
 #include "rigiddyn/so3/angular_distance.hpp"
 #include "rigiddyn/so3/matrix.hpp"
@@ -21,11 +22,11 @@
 namespace rigiddyn {
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
-constexpr double eps = std::numeric_limits<double>::epsilon();
+using rigiddyn::test::kPi;
+using rigiddyn::test::kEps;
 
 // deterministic random inputs
-struct Random {
+struct GaussianRandom {
   std::mt19937_64 engine{20261124};
   double normal() { return std::normal_distribution<double>()(engine); }
   Eigen::Quaterniond quaternion() { return Eigen::Quaterniond(Eigen::Vector4d(normal(), normal(), normal(), normal()).normalized()); }
@@ -33,7 +34,7 @@ struct Random {
 };
 
 template <typename F>
-void expect_invalid(F f, const std::string& prefix) {
+void expect_invalid_prefix(F f, const std::string& prefix) {
   try {
     f();
     ADD_FAILURE() << "no exception, expected one starting with " << prefix;
@@ -67,17 +68,17 @@ TEST(UnitQuaternion, GivesTheBitsOfEigensNormalisation) {
 }
 
 TEST(NearestRotation, IsAnOrthonormalProperMatrixAndIdempotent) {
-  Random rnd;
+  GaussianRandom rnd;
   for (int n = 0; n < 200; ++n) {
     const Eigen::Matrix3d M = quat_to_matrix(rnd.quaternion()) + 0.1 * Eigen::Matrix3d::NullaryExpr([&] { return rnd.normal(); });
     const Eigen::Matrix3d R = nearest_rotation(M);
     // Jacobi SVD is backward stable (U, V orthonormal to a few eps); U V^T then errs by a few eps
     // per entry: 16 eps covers |R^T R - I| and |det R - 1|
-    EXPECT_LT((R.transpose() * R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff(), 16 * eps);
-    EXPECT_NEAR(R.determinant(), 1.0, 16 * eps);
+    EXPECT_LT((R.transpose() * R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff(), 16 * kEps);
+    EXPECT_NEAR(R.determinant(), 1.0, 16 * kEps);
     // a second projection moves R only by round-off (the polar factor of R + E, |E| ~ 16 eps,
     // is R + O(|E|) since all singular values are 1)
-    EXPECT_LT((nearest_rotation(R) - R).cwiseAbs().maxCoeff(), 32 * eps);
+    EXPECT_LT((nearest_rotation(R) - R).cwiseAbs().maxCoeff(), 32 * kEps);
     // optimality: no random rotation near R is closer to M in the Frobenius norm
     for (int k = 0; k < 5; ++k) {
       const Eigen::Matrix3d other = R * Eigen::AngleAxisd(0.01, rnd.vector().normalized()).toRotationMatrix();
@@ -91,12 +92,12 @@ TEST(NearestRotation, ReflectionFlipsTheSmallestSingularDirection) {
   // of the smallest singular value (1) gives I, |M - I|_F^2 = 4 + 1 + 4 = 9, while flipping another
   // (e.g. diag(1, -1, -1)) costs 4 + 9 + 0 = 13
   const Eigen::Matrix3d M = Eigen::Vector3d(3.0, 2.0, -1.0).asDiagonal();
-  EXPECT_LT((nearest_rotation(M) - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff(), 4 * eps);
-  expect_invalid([] { nearest_rotation(Eigen::Matrix3d::Constant(NAN)); }, "M: expected finite values");
+  EXPECT_LT((nearest_rotation(M) - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff(), 4 * kEps);
+  expect_invalid_prefix([] { nearest_rotation(Eigen::Matrix3d::Constant(NAN)); }, "M: expected finite values");
 }
 
 TEST(ProjectedRotationMatrix, KeepsScipyOrthonormalMatricesAndProjectsRoundedOnes) {
-  Random rnd;
+  GaussianRandom rnd;
   for (int n = 0; n < 100; ++n) {
     const Eigen::Matrix3d R = quat_to_matrix(rnd.quaternion());
     // within numpy.isclose(M M^T, I, atol=1e-12) (rtol 1e-5 on the diagonal): kept bit for bit
@@ -115,33 +116,33 @@ TEST(ProjectedRotationMatrix, KeepsScipyOrthonormalMatricesAndProjectsRoundedOne
 }
 
 TEST(ProjectedRotationMatrix, RefusesReflectionsSingularAndFarMatrices) {
-  expect_invalid([] { projected_rotation_matrix(Eigen::Vector3d(1, 1, -1).asDiagonal(), "R_WB"); },
+  expect_invalid_prefix([] { projected_rotation_matrix(Eigen::Vector3d(1, 1, -1).asDiagonal(), "R_WB"); },
                  "R_WB: expected a rotation matrix (det > 0");
-  expect_invalid([] { projected_rotation_matrix(Eigen::Matrix3d::Zero(), "R"); }, "R: expected a rotation matrix (det > 0");
-  expect_invalid([] { projected_rotation_matrix(1.1 * Eigen::Matrix3d::Identity(), "R"); },
+  expect_invalid_prefix([] { projected_rotation_matrix(Eigen::Matrix3d::Zero(), "R"); }, "R: expected a rotation matrix (det > 0");
+  expect_invalid_prefix([] { projected_rotation_matrix(1.1 * Eigen::Matrix3d::Identity(), "R"); },
                  "R: expected a rotation matrix (orthonormal up to rounding");
-  expect_invalid([] { projected_rotation_matrix(Eigen::Matrix3d::Constant(INFINITY), "R"); }, "R: expected a rotation matrix of finite");
+  expect_invalid_prefix([] { projected_rotation_matrix(Eigen::Matrix3d::Constant(INFINITY), "R"); }, "R: expected a rotation matrix of finite");
   // the limit itself: singular values 1.049 accepted, 1.051 refused
   EXPECT_NO_THROW(projected_rotation_matrix(1.049 * Eigen::Matrix3d::Identity(), "R"));
-  expect_invalid([] { projected_rotation_matrix(1.051 * Eigen::Matrix3d::Identity(), "R"); }, "R: expected");
+  expect_invalid_prefix([] { projected_rotation_matrix(1.051 * Eigen::Matrix3d::Identity(), "R"); }, "R: expected");
 }
 
 // ---------------------------------------------------------------- matrix -> quaternion
 
 TEST(MatrixToQuat, EveryMarkleyBranchRoundTrips) {
   // rotations by large angles about each axis pick the branch of that axis, small ones the trace
-  Random rnd;
+  GaussianRandom rnd;
   for (int n = 0; n < 400; ++n) {
     const Eigen::Quaterniond q = rnd.quaternion();
     const Eigen::Quaterniond back = matrix_to_quat(quat_to_matrix(q));
     EXPECT_GE(back.w(), 0.0);
     // <= ~20 roundings on unit numbers per side, divided by the largest |component| >= 1/2
-    EXPECT_LT(angular_distance(back, q), 64 * eps);
+    EXPECT_LT(angular_distance(back, q), 64 * kEps);
   }
   for (int i = 0; i < 3; ++i) {
-    for (double angle : {pi, pi - 1e-9, 2.5, 1e-9}) {
+    for (double angle : {kPi, kPi - 1e-9, 2.5, 1e-9}) {
       const Eigen::Quaterniond q(Eigen::AngleAxisd(angle, Eigen::Vector3d::Unit(i)));
-      EXPECT_LT(angular_distance(matrix_to_quat(q.toRotationMatrix()), q), 64 * eps) << i << " " << angle;
+      EXPECT_LT(angular_distance(matrix_to_quat(q.toRotationMatrix()), q), 64 * kEps) << i << " " << angle;
     }
   }
 }
@@ -163,47 +164,47 @@ TEST(QuatCanonical, TiesAsScipy) {
 // ---------------------------------------------------------------- slerp
 
 TEST(Slerp, EndpointsAndConstantRate) {
-  Random rnd;
+  GaussianRandom rnd;
   for (int n = 0; n < 200; ++n) {
     const Eigen::Quaterniond q0 = rnd.quaternion(), q1 = rnd.quaternion();
     EXPECT_EQ(slerp(q0, q1, 0.0).coeffs(), q0.coeffs());  // exp(0) = 1 exactly, q0 * 1 = q0
-    EXPECT_LT(angular_distance(slerp(q0, q1, 1.0), q1), 64 * eps);
+    EXPECT_LT(angular_distance(slerp(q0, q1, 1.0), q1), 64 * kEps);
     const double total = angular_distance(q0, q1);
     for (double t : {0.1, 0.25, 0.5, 0.9}) {
       // log, scale, exp and product: a few tens of roundings on unit numbers, 64 eps
-      EXPECT_NEAR(angular_distance(q0, slerp(q0, q1, t)), t * total, 64 * eps);
-      EXPECT_NEAR(angular_distance(slerp(q0, q1, t), q1), (1 - t) * total, 64 * eps);
+      EXPECT_NEAR(angular_distance(q0, slerp(q0, q1, t)), t * total, 64 * kEps);
+      EXPECT_NEAR(angular_distance(slerp(q0, q1, t), q1), (1 - t) * total, 64 * kEps);
     }
   }
 }
 
 TEST(KeyedSlerp, InterpolatesSegmentsAndRefusesBadTimes) {
-  Random rnd;
+  GaussianRandom rnd;
   const std::vector<Eigen::Quaterniond> q{rnd.quaternion(), rnd.quaternion(), rnd.quaternion()};
   const KeyedSlerp interpolate({0.0, 1.0, 3.0}, q);
-  EXPECT_LT(angular_distance(interpolate(2.0), slerp(q[1], q[2], 0.5)), 64 * eps);
-  EXPECT_LT(angular_distance(interpolate(1.0), q[1]), 64 * eps);
+  EXPECT_LT(angular_distance(interpolate(2.0), slerp(q[1], q[2], 0.5)), 64 * kEps);
+  EXPECT_LT(angular_distance(interpolate(1.0), q[1]), 64 * kEps);
   EXPECT_EQ(interpolate(0.0).coeffs(), q[0].coeffs());
-  expect_invalid([&] { interpolate(3.5); }, "t: expected times within the key times [0, 3]");
-  expect_invalid([&] { KeyedSlerp({0.0, 0.0, 1.0}, q); }, "times: expected strictly increasing");
-  expect_invalid([&] { KeyedSlerp({0.0, 1.0}, q); }, "q: expected 2 key rotations");
-  expect_invalid([&] { KeyedSlerp({0.0}, {q[0]}); }, "times: expected at least 2");
+  expect_invalid_prefix([&] { interpolate(3.5); }, "t: expected times within the key times [0, 3]");
+  expect_invalid_prefix([&] { KeyedSlerp({0.0, 0.0, 1.0}, q); }, "times: expected strictly increasing");
+  expect_invalid_prefix([&] { KeyedSlerp({0.0, 1.0}, q); }, "q: expected 2 key rotations");
+  expect_invalid_prefix([&] { KeyedSlerp({0.0}, {q[0]}); }, "times: expected at least 2");
 }
 
 // ---------------------------------------------------------------- angular distance
 
 TEST(AngularDistance, AccurateAtTinyAnglesAndNearPi) {
-  Random rnd;
-  for (double angle : {1e-12, 1e-9, 1e-5, 1.0, pi - 1e-9, pi}) {
+  GaussianRandom rnd;
+  for (double angle : {1e-12, 1e-9, 1e-5, 1.0, kPi - 1e-9, kPi}) {
     for (int n = 0; n < 50; ++n) {
       const Eigen::Quaterniond q_a = rnd.quaternion();
       const Eigen::Quaterniond q_b = q_a * Eigen::Quaterniond(Eigen::AngleAxisd(angle, rnd.vector().normalized()));
       // absolute error: q_b's rounding and the product err by a few eps per component, and
       // angle = 2 atan2(|d_xyz|, |d_w|) doubles it: 32 eps. An acos(|d_w|) form would err by
       // sqrt(eps) ~ 1e-8 at tiny angles.
-      EXPECT_NEAR(angular_distance(q_a, q_b), angle, 32 * eps) << angle;
-      EXPECT_NEAR(angular_distance(q_b, q_a), angle, 32 * eps) << angle;
-      EXPECT_LT(angular_distance(q_a, Eigen::Quaterniond(-q_a.coeffs())), 8 * eps);
+      EXPECT_NEAR(angular_distance(q_a, q_b), angle, 32 * kEps) << angle;
+      EXPECT_NEAR(angular_distance(q_b, q_a), angle, 32 * kEps) << angle;
+      EXPECT_LT(angular_distance(q_a, Eigen::Quaterniond(-q_a.coeffs())), 8 * kEps);
     }
   }
 }
@@ -211,7 +212,7 @@ TEST(AngularDistance, AccurateAtTinyAnglesAndNearPi) {
 // ---------------------------------------------------------------- Wahba's problem
 
 TEST(AlignVectors, RecoversAnExactRotation) {
-  Random rnd;
+  GaussianRandom rnd;
   for (int n = 0; n < 100; ++n) {
     const Eigen::Quaterniond q = rnd.quaternion();
     Vectors3 b(5, 3), a(5, 3);
@@ -236,11 +237,11 @@ TEST(AlignVectors, SpecialCasesAsScipy) {
   VectorAlignment r = align_vectors(a, b, Eigen::VectorXd::Ones(1));
   // e_y x e_x = -e_z: q = (0, 0, -1, cos(pi / 2)), w = 6e-17 > 0 so already canonical (SciPy
   // gives the same (0, 0, -1, 6.1e-17)); sin and cos of pi / 2 err by <= 1 ulp
-  EXPECT_LT((r.q.coeffs() - Eigen::Vector4d(0.0, 0.0, -1.0, 0.0)).norm(), 4 * eps);
-  EXPECT_NEAR(r.rssd, 1.0, 4 * eps);  // | |a| - |b| | with weight 1
+  EXPECT_LT((r.q.coeffs() - Eigen::Vector4d(0.0, 0.0, -1.0, 0.0)).norm(), 4 * kEps);
+  EXPECT_NEAR(r.rssd, 1.0, 4 * kEps);  // | |a| - |b| | with weight 1
   EXPECT_TRUE(std::isnan(r.sensitivity(0, 0)));
   // one infinite weight: the primary pair exactly, the others by a turn about a_0
-  Random rnd;
+  GaussianRandom rnd;
   for (int n = 0; n < 100; ++n) {
     Vectors3 a3(3, 3), b3(3, 3);
     for (int i = 0; i < 3; ++i) {
@@ -251,7 +252,7 @@ TEST(AlignVectors, SpecialCasesAsScipy) {
     const Eigen::Vector3d c = s.q * Eigen::Vector3d(b3.row(0).transpose()).normalized();
     // the shortest arc's axis b x a / |b x a| errs by eps / |b x a| relative: bound it per case
     const double sin_angle = Eigen::Vector3d(b3.row(0).normalized()).cross(Eigen::Vector3d(a3.row(0).normalized())).norm();
-    EXPECT_LT((c - a3.row(0).normalized().transpose()).norm(), 16 * eps / sin_angle);
+    EXPECT_LT((c - a3.row(0).normalized().transpose()).norm(), 16 * kEps / sin_angle);
     // the turn about a_0 is optimal: small extra turns about a_0 do not lower the loss
     const auto loss = [&](const Eigen::Quaterniond& q) {
       return 1.0 * (a3.row(1).transpose() - q * Eigen::Vector3d(b3.row(1).transpose())).squaredNorm() +
@@ -266,13 +267,13 @@ TEST(AlignVectors, SpecialCasesAsScipy) {
 TEST(AlignVectors, BadInputThrows) {
   Vectors3 a = Vectors3::Ones(2, 3), b = Vectors3::Ones(2, 3);
   const double inf = std::numeric_limits<double>::infinity();
-  expect_invalid([&] { align_vectors(a, b, Eigen::Vector2d(-1.0, 1.0)); }, "weights: expected weights >= 0");
-  expect_invalid([&] { align_vectors(a, b, Eigen::Vector2d(NAN, 1.0)); }, "weights: expected weights >= 0");
-  expect_invalid([&] { align_vectors(a, b, Eigen::Vector2d(inf, inf)); }, "weights: expected at most one infinite");
-  expect_invalid([&] { align_vectors(a, b, Eigen::Vector3d(1.0, 1.0, 1.0)); }, "weights: expected 2 weights");
-  expect_invalid([&] { align_vectors(a, Vectors3::Ones(3, 3), Eigen::Vector2d(1.0, 1.0)); }, "b: expected 2 vectors");
-  expect_invalid([&] { align_vectors(Vectors3(0, 3), Vectors3(0, 3), Eigen::VectorXd(0)); }, "a: expected at least one");
-  expect_invalid([&] { align_vectors(Vectors3::Zero(1, 3), Vectors3::Ones(1, 3), Eigen::VectorXd::Ones(1)); },
+  expect_invalid_prefix([&] { align_vectors(a, b, Eigen::Vector2d(-1.0, 1.0)); }, "weights: expected weights >= 0");
+  expect_invalid_prefix([&] { align_vectors(a, b, Eigen::Vector2d(NAN, 1.0)); }, "weights: expected weights >= 0");
+  expect_invalid_prefix([&] { align_vectors(a, b, Eigen::Vector2d(inf, inf)); }, "weights: expected at most one infinite");
+  expect_invalid_prefix([&] { align_vectors(a, b, Eigen::Vector3d(1.0, 1.0, 1.0)); }, "weights: expected 2 weights");
+  expect_invalid_prefix([&] { align_vectors(a, Vectors3::Ones(3, 3), Eigen::Vector2d(1.0, 1.0)); }, "b: expected 2 vectors");
+  expect_invalid_prefix([&] { align_vectors(Vectors3(0, 3), Vectors3(0, 3), Eigen::VectorXd(0)); }, "a: expected at least one");
+  expect_invalid_prefix([&] { align_vectors(Vectors3::Zero(1, 3), Vectors3::Ones(1, 3), Eigen::VectorXd::Ones(1)); },
                  "a: expected a non-zero primary vector");
 }
 

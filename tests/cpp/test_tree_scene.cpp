@@ -6,6 +6,7 @@
 // algorithm; bad layouts and the methods a tree cannot take are refused, naming the value.
 #include <gtest/gtest.h>
 
+#include "test_numbers.hpp"
 #include "invalid_argument_message.hpp"
 #include "rigiddyn/scene/compile.hpp"
 #include "rigiddyn/scene/simulate_scene.hpp"
@@ -24,7 +25,7 @@ namespace {
 
 using namespace rigiddyn;
 
-constexpr double kEps = std::numeric_limits<double>::epsilon();
+using rigiddyn::test::kEps;
 using test::message_of;
 
 SimulationOptions with(Method method, double dt, std::int64_t steps) {

@@ -5,6 +5,7 @@
 // and its argument checks.
 #include <gtest/gtest.h>
 
+#include "test_numbers.hpp"
 #include "invalid_argument_message.hpp"
 #include "rigiddyn/integrators/method.hpp"
 #include "rigiddyn/scene/elements/thrust.hpp"
@@ -24,7 +25,7 @@
 namespace rigiddyn {
 namespace {
 
-constexpr double kEps = std::numeric_limits<double>::epsilon();
+using rigiddyn::test::kEps;
 using Model = VariableMassParticleModel;
 using Y = Model::Coordinates;
 
