@@ -18,6 +18,9 @@ if [ "${1:-}" = "--list-packages" ]; then
 fi
 bash tests/install_debian_packages.sh "${packages[@]}"
 
+# the wall time at the end of each stage (CI's budget is 20 minutes on two cores)
+stage_done() { echo "run_all.sh: $1 done at ${SECONDS} s"; }
+
 # ccache: the library compiled once for the extension (pip) serves the C++ tests' build below, and a
 # second run reuses every compilation. CCACHE_BASEDIR makes the paths relative, so the two build folders
 # (build/<wheel tag>, build/test) share entries; both compile with g++ against Debian's Eigen
@@ -30,6 +33,7 @@ bash tests/pip_install.sh test,docs,peers
 # the wheel from the same build (nothing compiled again), repaired to a manylinux tag, installed and run in a fresh
 # virtual environment without a compiler (README: "A wheel to install without a compiler")
 bash tests/build_wheel.sh
+stage_done "the package and its wheel"
 
 # The C++ unit tests are compiled once, under the sanitizers (the sanitize preset: its library at -O1,
 # see CMakeLists.txt). That build runs in the background at the lowest priority from here on: it takes
@@ -47,6 +51,7 @@ trap 'kill -- -"$sanitize_build" 2>/dev/null || true' EXIT
 # (-p no:benchmark: pytest-benchmark, where a machine has it, warns under xdist, and warnings are errors;
 # --dist loadgroup: the tests marked with one xdist_group share a worker, so a module's costly fixture runs once)
 python3 -m pytest -n auto --dist loadgroup -p no:benchmark
+stage_done pytest
 
 # optimised: the golden states, the long runs, the allocation counts, the packaging test, then the benchmarks at
 # a small size, one at a time (timings), and their rigiddyn/baseline ratios
@@ -59,11 +64,15 @@ if ! ctest --preset test --label-regex bench --verbose > "$log" 2>&1; then
   exit 1
 fi
 grep -E ": ratio |Test +#" "$log" || true
+stage_done "the optimised C++ tests and the benchmarks"
 
 # the documentation site: the gallery's examples run and assert in the build; pages, images and links checked
 bash tests/docs/run.sh
+stage_done "the documentation site"
 
 # the unit tests under the sanitizers (this foreground build finishes the background one and reports its errors)
 wait "$sanitize_build" || true
 cmake --build --preset sanitize -j 2
+stage_done "the sanitizer build"
 ctest --preset sanitize -j 2
+stage_done "the sanitized C++ unit tests"
