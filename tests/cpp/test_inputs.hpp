@@ -11,7 +11,7 @@
 
 namespace rigiddyn::test {
 
-// Standard gravity along −z of the world frame [m/s²].
+// Gravity along −z of the world frame, 9.81 m/s² (the value the tests and the docs use).
 inline const Eigen::Vector3d kG(0.0, 0.0, -9.81);
 
 // A rotational inertia with products of inertia: principal moments 1, 1.4, 2.1 [kg m²] about axes turned
