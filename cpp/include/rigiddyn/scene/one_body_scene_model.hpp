@@ -117,6 +117,8 @@ class OneBodySceneModel {
   static constexpr Eigen::Index tangent_count() { return Tangent::RowsAtCompileTime; }
   static constexpr Eigen::Index time_index() { return t_y; }
   static constexpr bool has_mass_flow() { return false; }
+  // without scheduled loads nothing switches: the runs compile no split step (run_loop.hpp switches_never)
+  static constexpr bool switches_never() { return !integrated; }
   static constexpr std::size_t body_count() { return 1; }
   std::size_t element_count() const { return element_count_; }
 

@@ -98,6 +98,7 @@ struct ScenePieces {
 // index read at run time puts y in memory at every step (fixed_place_of_t says for which methods).
 template <Eigen::Index time_index>
 struct FixedScenePieces {
+  static constexpr bool t_place_fixed = true;
   const std::vector<AppliedLoad>& schedule;
   template <class Model>
   static void set_piece(Model& model, double t) { model.set_time(t); }

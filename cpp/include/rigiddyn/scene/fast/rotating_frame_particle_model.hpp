@@ -111,8 +111,9 @@ class RotatingFrameParticleModel {
   std::size_t element_count() const { return element_count_; }
   const Eigen::Vector3d& w_F() const { return w_; }  // Ω in F [rad/s]
 
-  // nothing is piecewise constant here
+  // nothing is piecewise constant here: no switch times (simulate/run_loop.hpp switches_never)
   static void set_time(double /*t*/) {}
+  static constexpr bool switches_never() { return true; }
 
   // ẏ = (v, g + a_cf + a_co, 1, m g·v, m a_cf·v, m a_co·v)
   RIGIDDYN_ALWAYS_INLINE void rate(const Coordinates& y, Coordinates& dy) const {
