@@ -121,8 +121,8 @@ bool merges_kicks(const Model& model) {
   }
 }
 
-// Whether Integrator's kicks merge on every model of its type (a static constexpr kicks_merge() that is true): its runs
-// then compile the merged loop alone.
+// Whether the kicks merge on every model of type Model (a static constexpr kicks_merge() that is true): the runs of a
+// kick–drift–kick method on it (always_merges) then compile the merged loop alone.
 template <class Model, class = void>
 struct kicks_always_merge : std::false_type {};
 template <class Model>
