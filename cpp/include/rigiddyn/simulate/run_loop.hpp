@@ -226,6 +226,15 @@ Result run(Model model, typename Model::Coordinates y, const SimulationOptions& 
   std::int64_t next_monitor = o.monitor ? pace.interval() : std::numeric_limits<std::int64_t>::max();
   std::size_t k = 0;  // the next switch
   bool stop = false;  // the monitor asked to stop
+  // after the steps up to i, `taken` of them since the last record: the record when one is due (every record_every-th
+  // step, and the last); whether the run ends there (its state not finite)
+  const auto recorded_divergence = [&](std::int64_t taken) RIGIDDYN_ALWAYS_INLINE_LAMBDA {
+    until_record -= taken;
+    if (until_record != 0 && i != steps) return false;
+    until_record = record_every;
+    append_state(out, grid_time(o, i), model, y);
+    return out.diverged = !y.allFinite();
+  };
   while (!stop && i < steps) {
     // plain steps up to the next step that contains a switch time, or the next monitor call
     const std::int64_t split = k < switches.step.size() ? switches.step[k] : steps + 1;
@@ -239,12 +248,7 @@ Result run(Model model, typename Model::Coordinates y, const SimulationOptions& 
                                  [&](std::int64_t k) { pieces.at_time(y, grid_time(o, first + k)); });
         open = !close;
         i += n;
-        until_record -= n;
-        if (until_record == 0 || i == steps) {
-          until_record = record_every;
-          append_state(out, grid_time(o, i), model, y);
-          if ((out.diverged = !y.allFinite())) break;
-        }
+        if (recorded_divergence(n)) break;
       }
       if (out.diverged) break;
     }
@@ -253,11 +257,7 @@ Result run(Model model, typename Model::Coordinates y, const SimulationOptions& 
         out.unconverged_steps += advance<Integrator>(model, y, dt, workspace);
         ++i;
         pieces.at_time(y, grid_time(o, i));
-        if (--until_record == 0 || i == steps) {
-          until_record = record_every;
-          append_state(out, grid_time(o, i), model, y);
-          if ((out.diverged = !y.allFinite())) break;
-        }
+        if (recorded_divergence(1)) break;
       }
     }
     if (out.diverged) break;
@@ -269,11 +269,7 @@ Result run(Model model, typename Model::Coordinates y, const SimulationOptions& 
                                                         switches.time.data() + k, grid_time(o, i), grid_time(o, i + 1), dt);
         ++i;
         pieces.at_time(y, grid_time(o, i));
-        if (--until_record == 0 || i == steps) {
-          until_record = record_every;
-          append_state(out, grid_time(o, i), model, y);
-          if ((out.diverged = !y.allFinite())) break;
-        }
+        if (recorded_divergence(1)) break;
       }
     }
     if (i >= next_monitor) {
