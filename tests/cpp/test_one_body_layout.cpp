@@ -5,7 +5,7 @@
 // convergence test takes the norm of the layout's shorter coordinates. Under gravity alone the work and the impulses
 // are exact from the records: V(t0) − V(t) and, for a free body, m g (t − t0) and Δ(p × m v), which the generic
 // model's integrals of a free or planar body's translation match to their rounding. A pivoted body's layout, which
-// compile does not choose yet, is held to the same.
+// compile does not choose yet, is held to the same. A layout that never switches refuses a switch schedule.
 #include <gtest/gtest.h>
 
 #include "test_numbers.hpp"
@@ -290,6 +290,25 @@ TEST(OneBodyKey, RefusesAKindItDoesNotDescribe) {
   EXPECT_TRUE(same_one_body_key(key, same));
   one_body_key(PlanarBody(1.0, 0.1), Eigen::Vector3d(0.0, -0.0, 0.0), {}, same);  // a zero's sign differs
   EXPECT_FALSE(same_one_body_key(key, same));
+}
+
+TEST(OneBodyLayout, ASwitchScheduleGivenToALayoutThatNeverSwitchesIsALogicError) {
+  // a layout without ScheduledLoads compiles no split step (run_loop.hpp switches_never): a schedule given to its run
+  // or its step anyway (no public call can: compile gives it an empty one) is refused, never skipped in silence
+  using Layout = OneBodySceneModel<detail::ParticleSlot<detail::FirstPlace>, OneBodyElements::gravity>;
+  const Layout layout = one_body_layout_as<Layout>(Particle(2.0), Eigen::Vector3d(0.0, 0.0, -9.81), {});
+  AppliedLoad push{Eigen::Vector3d(1.0, 0.0, 0.0), Eigen::Vector3d::Zero(), Frame::world};
+  push.t_start = 0.005, push.t_end = 0.5;  // switches on inside the first step
+  const std::vector<AppliedLoad> schedule = {push};
+  const Layout::Coordinates y = layout.coordinates({ParticleState{}}, 0.0);
+  for (const Method method : {Method::rk4, Method::splitting_dlm}) {  // t at a run-time index, and at its fixed place
+    SimulationOptions o;
+    o.method = method, o.dt = 0.01, o.steps = 10;
+    EXPECT_THROW(detail::run_scene(layout, y, o, schedule), std::logic_error) << method_info(method).name;
+    EXPECT_THROW(detail::one_step(layout, y, o, detail::ScenePieces{schedule, layout.time_index()}), std::logic_error)
+        << method_info(method).name;
+    EXPECT_NO_THROW(detail::run_scene(layout, y, o, {})) << method_info(method).name;
+  }
 }
 
 }  // namespace
