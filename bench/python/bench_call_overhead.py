@@ -4,10 +4,13 @@ RigidBody.mass: the binding layer's own floor) and, where mujoco is importable, 
 free body, all in one run, each the best of several rounds of a loop of calls.
 
 simulate's fixed cost is its time less that of its steps: the cost per step is the slope between
-simulate(steps=10) and simulate(steps=10 + k) (k = 1000), so that "fixed cost" is what the call costs
-besides stepping: arguments, the result, the energy and momentum balance and its check (and, with
-error=True, the default, the global error estimate's two coarse runs). The result's arrays are made on
-their first read: "... and q_WB[-1]" adds what a control loop reading the last attitude pays for one.
+simulate(steps=10, error=False) and simulate(steps=10 + k, error=False) (k = 1000), so that "fixed cost" is what
+the call costs besides stepping: arguments, the result, the energy and momentum balance and its check. With
+error=True, the default, a run of at most 64 steps whose balances close whatever the estimate says makes its global
+error estimate (the run repeated and its two coarse runs) on the first read of result.error, so its steps are those
+of error=False; "per step" with error=True is the slope of the longer runs, which make theirs at once. The result's
+arrays are made on their first read: "... and q_WB[-1]" adds what a control loop reading the last attitude pays for
+one, "... and error.attitude[-1]" what reading the estimate costs.
 
     python bench/python/bench_call_overhead.py           # 20 000 calls a round, 7 rounds
     python bench/python/bench_call_overhead.py --small   # 2 000 calls a round, 3 rounds (what ctest runs)
@@ -57,15 +60,19 @@ def main():
         positional: time_of(lambda: rd.step(BODY, STATE, DT, "rk4", None, None, 0.0)),
         keywords: time_of(lambda: rd.step(BODY, STATE, dt=DT, method="rk4", t=0.0)),
     }
+    plain_step = None  # the cost per step of a run without its estimate
     for error in (False, True):
         short = time_of(lambda: rd.simulate(BODY, STATE, DT, steps=10, error=error), calls // 4)
         long = time_of(lambda: rd.simulate(BODY, STATE, DT, steps=10 + EXTRA_STEPS, error=error), long_calls)
         per_step = (long - short) / EXTRA_STEPS
+        plain_step = per_step if plain_step is None else plain_step
         cases[f"simulate(steps=10, error={error})"] = short
-        cases[f"simulate(steps=10, error={error}) fixed cost"] = short - 10 * per_step
+        cases[f"simulate(steps=10, error={error}) fixed cost"] = short - 10 * plain_step
         cases[f"simulate(error={error}) per step"] = per_step
         cases[f"simulate(steps=10, error={error}) and q_WB[-1]"] = time_of(
             lambda: rd.simulate(BODY, STATE, DT, steps=10, error=error).q_WB[-1], calls // 4)
+    cases["simulate(steps=10) and error.attitude[-1]"] = time_of(
+        lambda: rd.simulate(BODY, STATE, DT, steps=10).error.attitude[-1], calls // 4)
     mj = mujoco_step()
     if mj is not None:
         cases["mujoco.mj_step(model, data)"] = time_of(mj)

@@ -383,7 +383,7 @@ py::tuple scene_result_state(const SceneResult& r) {
   out[result_array_count + 6] = r.wheel_speed.get();
   out[result_array_count + 7] = r.motor_work.get();
   out[result_array_count + 8] = r.wheel_bodies;
-  out[result_array_count + 9] = r.error;
+  out[result_array_count + 9] = r.error.get();
   out[result_array_count + 10] = r.balance.get();
   out[result_array_count + 11] = r.choice;
   out[result_array_count + 12] = r.joint_q.get();
@@ -758,29 +758,38 @@ std::string momentum_balance_not_applicable(const CompiledScene& compiled) {
   return {};
 }
 
-// The balance of a scene's run r of h at step dt (balance.hpp), checked (accuracy_check.hpp) against its estimate e
-// (null: none) at `level`: the balance with its verdicts and the AccuracyWarning's message ("" when it closes).
+// The balance of a scene's run r of h at step dt (balance.hpp)
+RunBalance scene_run_balance(const SceneSimulation& r, const CompiledSceneHandle& h, double dt) {
+  return scene_balance(r, momentum_balance_not_applicable(*h.compiled), dt);
+}
+
+// The balance of a scene's run r of h at step dt (`made`, or made here), checked (accuracy_check.hpp) against its
+// estimate e (null: none) at `level`: the balance with its verdicts and the AccuracyWarning's message ("" when it
+// closes).
 std::pair<RunBalance, std::string> checked_scene_balance(const SceneSimulation& r, const CompiledSceneHandle& h,
                                                          double dt, const GlobalErrorEstimate* e,
-                                                         const std::optional<double>& level) {
-  RunBalance balance = scene_balance(r, momentum_balance_not_applicable(*h.compiled), dt);
+                                                         const std::optional<double>& level,
+                                                         std::optional<RunBalance>&& made = std::nullopt) {
+  RunBalance balance = made ? std::move(*made) : scene_run_balance(r, h, dt);
   BalanceBounds bounds;
   if (e != nullptr) bounds = scene_estimate_bounds(*e, r);
   std::string message = check_accuracy(balance, accuracy_check_of(level, r.t, e, &bounds, method_info(h.method).name, dt));
   return {std::move(balance), std::move(message)};
 }
 
-// The SceneResult of a run of h at step dt as its Python object: its error estimate and choice as given, its balance
-// made and checked in the core with the AccuracyWarning at `level` when it does not close.
+// The SceneResult of a run of h at step dt as its Python object: its error estimate (made, or `deferred`: made on
+// its first read) and choice as given, its balance (`balance`, or made here) checked in the core with the
+// AccuracyWarning at `level` when it does not close.
 py::object scene_result_object(SceneSimulation&& r, const CompiledSceneHandle& h, double dt, bool scalar_first,
                                std::optional<GlobalErrorEstimate>&& estimate, py::object choice,
-                               const std::optional<double>& level) {
+                               const std::optional<double>& level, std::optional<RunBalance>&& balance = std::nullopt,
+                               LazyError deferred = LazyError()) {
   const GlobalErrorEstimate* e = estimate ? &*estimate : nullptr;
-  std::pair<RunBalance, std::string> checked =
-      with_gil_released_for(r.size(), [&]() { return checked_scene_balance(r, h, dt, e, level); });
+  std::pair<RunBalance, std::string> checked = with_gil_released_for(
+      r.size(), [&]() { return checked_scene_balance(r, h, dt, e, level, std::move(balance)); });
   warn_accuracy(checked.second, level, r.diverged);
   SceneResult result = to_scene_result(std::move(r), h.scene, *h.compiled, scalar_first);
-  if (estimate) result.error = py::cast(to_global_error(std::move(*estimate)));
+  result.error = estimate ? LazyError(py::cast(to_global_error(std::move(*estimate)))) : std::move(deferred);
   result.choice = std::move(choice);
   result.balance = LazyBalance(std::move(checked.first));
   return py::cast(std::move(result));
@@ -948,6 +957,28 @@ Controller as_controller(py::handle controller, const Scene& scene, bool* shippe
   return out;
 }
 
+// The most steps of a run whose estimate simulate_scene_py defers to the first read of result.error: made then, it
+// repeats the run (the same records, bitwise: a scene without an opaque force or a controller is deterministic) before
+// its two coarse runs, at most (1 + 0.75)/0.75 = 2.3x the estimate made at once, which costs a few microseconds of
+// fixed cost at this size (and is what a control loop that never reads it saves).
+constexpr std::int64_t deferred_estimate_steps = 64;
+
+// result.error of the run of `compiled` from `initial` under options o, made on its first read (GIL held; the runs
+// with it released): the run repeated, then its coarse runs (global_error).
+std::function<py::object()> deferred_estimate(std::shared_ptr<const CompiledScene> compiled,
+                                              std::vector<BodyState> initial, SimulationOptions o) {
+  o.monitor = nullptr;  // the run's monitor is gone by then (and a run this short needs none for Ctrl-C)
+  return [compiled = std::move(compiled), initial = std::move(initial), o = std::move(o)]() {
+    std::optional<GlobalErrorEstimate> e;
+    {
+      py::gil_scoped_release release;
+      const auto run = [&](const SimulationOptions& options) { return simulate(*compiled, initial, options); };
+      e = global_error(run(o), o, scene_order(*compiled), run);
+    }
+    return py::object(py::cast(to_global_error(std::move(*e))));
+  };
+}
+
 py::object simulate_scene_py(py::handle model, py::handle initial, py::handle dt, py::handle steps, py::handle method,
                              py::handle record_every, py::handle loads, py::handle gravity, py::handle t0,
                              py::handle scalar_first, py::handle progress, py::handle duration, py::handle error,
@@ -986,6 +1017,8 @@ py::object simulate_scene_py(py::handle model, py::handle initial, py::handle dt
   if (monitor.needed()) o.monitor = [&monitor](std::int64_t steps_done) { return monitor(steps_done); };
   SceneSimulation r;
   std::optional<GlobalErrorEstimate> estimate;
+  std::optional<RunBalance> balance;
+  LazyError deferred;
   {
     py::gil_scoped_release release;  // a PythonForce takes it back for each of its calls
     const std::optional<Controller> pristine = control;  // the law's state before the run (a shipped law's)
@@ -993,17 +1026,27 @@ py::object simulate_scene_py(py::handle model, py::handle initial, py::handle dt
     // at the order the compiled scene has (scene_order.hpp); a controlled run only with a law in C++, each coarse run
     // under a fresh copy of it (a law in Python may keep state or draw noise that another run would not repeat)
     if (estimate_error && !r.interrupted && (!control || shipped_law)) {
-      const auto run = [&](const SimulationOptions& coarse) {
-        if (!control) return simulate(*h.compiled, initial_states, coarse);
-        const Controller fresh = *pristine;
-        return simulate(*h.compiled, initial_states, coarse, fresh);
-      };
-      estimate = global_error(r, o, scene_order(*h.compiled), interruptible(run, r.interrupted), opaque_force(*h.compiled));
+      const std::string opaque = opaque_force(*h.compiled);
+      if (!control && opaque.empty() && progress.is_none() && o.steps <= deferred_estimate_steps) {
+        balance = scene_run_balance(r, h, o.dt);
+        if (closes_under_any_estimate(*balance, level.value_or(default_accuracy_level))) {
+          deferred = LazyError(deferred_estimate(h.compiled, initial_states, o));
+        }
+      }
+      if (!deferred.pending()) {
+        const auto run = [&](const SimulationOptions& coarse) {
+          if (!control) return simulate(*h.compiled, initial_states, coarse);
+          const Controller fresh = *pristine;
+          return simulate(*h.compiled, initial_states, coarse, fresh);
+        };
+        estimate = global_error(r, o, scene_order(*h.compiled), interruptible(run, r.interrupted), opaque);
+      }
     }
   }
   if (r.interrupted) monitor.raise();  // the records so far are dropped with r
   warn_after_run(r, o, method_info(h.method).name);
-  return scene_result_object(std::move(r), h, o.dt, first, std::move(estimate), py::none(), level);
+  return scene_result_object(std::move(r), h, o.dt, first, std::move(estimate), py::none(), level, std::move(balance),
+                             std::move(deferred));
 }
 
 py::object step_scene_py(py::handle model, py::handle state, py::handle dt, py::handle method, py::handle loads,
@@ -1251,10 +1294,10 @@ void bind_scene(py::module_& m) {
       .def_readonly("elapsed_seconds", &SceneResult::elapsed_seconds, "wall time of the C++ stepping loop [s]")
       .def_property_readonly("balance", [](const SceneResult& r) { return r.balance.get(); },
                     "The energy and momentum balance of every record (a Balance), or None (a batch result).")
-      .def_readonly("error", &SceneResult::error,
+      .def_property_readonly("error", [](const SceneResult& r) { return r.error.get(); },
                     "The global error estimate of every record (a GlobalError: per body (n, nb) for the state, per "
                     "record (n,) for the energy and |L|), or None (simulate(..., error=False), a pickled or batch "
-                    "result).")
+                    "result). A short run may make it on this first read (simulate's error): the same values.")
       .def_readonly("choice", &SceneResult::choice,
                     "What simulate(..., tolerance=) chose and why (a ToleranceChoice), or None (a run at a given dt).")
       .def_readonly("scalar_first", &SceneResult::scalar_first,

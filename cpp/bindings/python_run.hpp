@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <initializer_list>
 #include <limits>
 #include <memory>
@@ -316,6 +317,32 @@ class LazyBalance {
 
   mutable std::shared_ptr<RunBalance> core_;
   mutable pybind11::object object_ = pybind11::none();
+};
+
+// result.error of a run: its GlobalError (or None) as made, or the computation that makes it on the first read (a
+// short deterministic run whose balances close under any estimate defers it: simulate_scene_py). A control loop that
+// reads the state alone then pays for the run alone; a reader gets the values the run would have made at once.
+class LazyError {
+ public:
+  LazyError() = default;
+  LazyError(pybind11::object made) : made_(std::move(made)) {}  // NOLINT: a GlobalError or None converts
+  explicit LazyError(std::function<pybind11::object()> make) : make_(std::move(make)) {}
+
+  // Whether it is still to be made
+  bool pending() const { return static_cast<bool>(make_); }
+
+  // The GlobalError (or None), made on the first call (GIL held; an exception leaves it to be made again).
+  pybind11::object get() const {
+    if (make_) {
+      made_ = make_();
+      make_ = nullptr;
+    }
+    return made_;
+  }
+
+ private:
+  mutable std::function<pybind11::object()> make_;
+  mutable pybind11::object made_ = pybind11::none();
 };
 
 // A pickled result's balance: a rigiddyn.Balance (TypeError naming `name` otherwise).

@@ -47,7 +47,7 @@ struct SceneResult {
   std::int64_t unconverged_steps;
   double elapsed_seconds;
   bool scalar_first = false;  // q_WB rows as (w, x, y, z)
-  pybind11::object error = pybind11::none();  // a GlobalError (simulate(..., error=True)) or None
+  LazyError error{};  // a GlobalError (simulate(..., error=True)) or None
   LazyBalance balance{};  // a rigiddyn.Balance (every simulate run) or None (a batch result)
   pybind11::object choice = pybind11::none();  // a ToleranceChoice (simulate(..., tolerance=...)) or None
 };

@@ -7,6 +7,7 @@ The contract tested: on every record marked reliable whose true error is above r
 limit, explicit Euler at a coarse step) are never reported reliable with an under-estimate worse than 2x.
 """
 
+import pickle
 import warnings
 
 import numpy as np
@@ -205,6 +206,38 @@ def test_records_between_common_records_and_the_tail():
     assert e.verdict[-1].startswith("extrapolated from the reliable record at t = 0.96 s")
     short = rd.simulate(body, rd.RigidBodyState(w_B=[0.1, 1.0, 0.1]), dt=0.02, steps=3)
     assert np.isnan(short.error.attitude[-1, 0]) and short.error.verdict[-1].startswith("no estimate")
+
+
+def _same_estimate(a, b):
+    """Whether two GlobalErrors are the same to the bit (NaN where the other has NaN)."""
+    names = ("attitude", "angular_velocity", "position", "velocity", "energy", "angular_momentum", "observed_order")
+    return (a.order == b.order and a.verdict == b.verdict
+            and all(np.array_equal(getattr(a, n), getattr(b, n), equal_nan=True) for n in names))
+
+
+@pytest.mark.parametrize("method", ["rk4", "splitting_dlm", "rkmk4"])
+@pytest.mark.parametrize("steps", [3, 10, 64, 65])
+def test_an_estimate_made_on_first_read_is_the_one_made_at_once(method, steps):
+    # a short run of a scene without a Python force or a controller makes its estimate when result.error is first
+    # read (its balances closing whatever the estimate says); a progress callback makes it at once: the same bits
+    body = rd.RigidBody(1.0, [1.0, 2.0, 3.0])
+    state = rd.RigidBodyState(w_B=[0.1, 1.0, 0.1])
+    later = rd.simulate(body, state, dt=0.01, steps=steps, method=method)
+    at_once = rd.simulate(body, state, dt=0.01, steps=steps, method=method, progress=lambda done: None)
+    assert _same_estimate(later.error, at_once.error)
+    assert _same_estimate(pickle.loads(pickle.dumps(later)).error, at_once.error)
+    assert later.error is later.error  # made once
+
+
+def test_a_scenes_estimate_made_on_first_read_is_the_one_made_at_once():
+    shipped = rd.load_scene("box_on_springs")
+    later = rd.simulate(shipped.scene, shipped.initial, 0.001, steps=40)
+    at_once = rd.simulate(shipped.scene, shipped.initial, 0.001, steps=40, progress=lambda done: None)
+    assert _same_estimate(later.error, at_once.error)
+    compiled = shipped.scene.compile("rk4")
+    later = rd.simulate(compiled, shipped.initial, 0.001, steps=40)
+    del compiled  # the estimate keeps the compiled model it needs
+    assert _same_estimate(later.error, at_once.error)
 
 
 def test_error_false_and_the_answer_run_unchanged():

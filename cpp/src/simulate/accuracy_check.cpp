@@ -112,4 +112,15 @@ std::string check_accuracy(RunBalance& b, const AccuracyCheck& c) {
          "silence this check";
 }
 
+bool closes_under_any_estimate(const RunBalance& b, double level) {
+  for (std::size_t q = 0; q < balance_quantity_count; ++q) {
+    if (!b.applies(static_cast<BalanceQuantity>(q))) continue;
+    for (std::size_t i = 0; i < b.size(); ++i) {
+      const double r = std::abs(b.residual[q][i]);  // (one that overflowed is skipped, as check_accuracy does)
+      if (std::isfinite(r) && r > estimate_floor * level * b.scale[q][i] + b.round_off[q][i]) return false;
+    }
+  }
+  return true;
+}
+
 }  // namespace rigiddyn

@@ -64,4 +64,10 @@ struct AccuracyCheck {
 // or another method (see methods()), or pass accuracy_level=None to silence this check".
 std::string check_accuracy(RunBalance& balance, const AccuracyCheck& check);
 
+// Whether `balance` closes at relative `level` whatever the run's global error estimate says: every residual that
+// applies within estimate_floor · level · scale + round-off, the least allowance the rule above gives a record (with
+// a reliable estimate at least that, without one level · scale + round-off). check_accuracy then sets the same
+// verdicts with or without an estimate, so a run may make its estimate later (or never).
+bool closes_under_any_estimate(const RunBalance& balance, double level);
+
 }  // namespace rigiddyn
