@@ -963,19 +963,15 @@ Controller as_controller(py::handle controller, const Scene& scene, bool* shippe
 // fixed cost at this size (and is what a control loop that never reads it saves).
 constexpr std::int64_t deferred_estimate_steps = 64;
 
-// result.error of the run of `compiled` from `initial` under options o, made on its first read (GIL held; the runs
-// with it released): the run repeated, then its coarse runs (global_error).
+// result.error of the run of `compiled` from `initial` under options o, made on its first read: the run repeated,
+// then its coarse runs (global_error). The GIL stays held (runs of at most deferred_estimate_steps steps), so that
+// a second thread reading result.error meanwhile waits for this one's instead of finding none made.
 std::function<py::object()> deferred_estimate(std::shared_ptr<const CompiledScene> compiled,
                                               std::vector<BodyState> initial, SimulationOptions o) {
   o.monitor = nullptr;  // the run's monitor is gone by then (and a run this short needs none for Ctrl-C)
   return [compiled = std::move(compiled), initial = std::move(initial), o = std::move(o)]() {
-    std::optional<GlobalErrorEstimate> e;
-    {
-      py::gil_scoped_release release;
-      const auto run = [&](const SimulationOptions& options) { return simulate(*compiled, initial, options); };
-      e = global_error(run(o), o, scene_order(*compiled), run);
-    }
-    return py::object(py::cast(to_global_error(std::move(*e))));
+    const auto run = [&](const SimulationOptions& options) { return simulate(*compiled, initial, options); };
+    return py::object(py::cast(to_global_error(global_error(run(o), o, scene_order(*compiled), run))));
   };
 }
 

@@ -331,7 +331,8 @@ class LazyError {
   // Whether it is still to be made
   bool pending() const { return static_cast<bool>(make_); }
 
-  // The GlobalError (or None), made on the first call (GIL held; an exception leaves it to be made again).
+  // The GlobalError (or None), made on the first call (GIL held throughout: one thread makes it; an exception leaves
+  // it to be made again).
   pybind11::object get() const {
     if (make_) {
       made_ = make_();

@@ -7,6 +7,7 @@ The contract tested: on every record marked reliable whose true error is above r
 limit, explicit Euler at a coarse step) are never reported reliable with an under-estimate worse than 2x.
 """
 
+import concurrent.futures
 import pickle
 import warnings
 
@@ -227,6 +228,14 @@ def test_an_estimate_made_on_first_read_is_the_one_made_at_once(method, steps):
     assert _same_estimate(later.error, at_once.error)
     assert _same_estimate(pickle.loads(pickle.dumps(later)).error, at_once.error)
     assert later.error is later.error  # made once
+
+
+def test_threads_reading_a_deferred_estimate_get_the_one_made():
+    body = rd.RigidBody(1.0, [1.0, 2.0, 3.0])
+    results = [rd.simulate(body, rd.RigidBodyState(w_B=[0.1, 1.0, 0.1]), dt=0.01, steps=40) for _ in range(20)]
+    with concurrent.futures.ThreadPoolExecutor(4) as pool:
+        read = [list(pool.map(lambda r: r.error, results)) for _ in range(2)]
+    assert all(a is b and a is not None for a, b in zip(*read))
 
 
 def test_a_scenes_estimate_made_on_first_read_is_the_one_made_at_once():

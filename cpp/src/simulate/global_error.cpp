@@ -97,12 +97,16 @@ class CommonRecord {
     if (blocked_.empty()) blocked_ = why;
   }
 
-  double observed_order() const { return observed_order_; }
+  double observed_order() const { return std::log2(worst_r_); }
   int order() const { return order_; }
   double expected_ratio() const { return expected_; }
   std::string verdict() const {
     if (!blocked_.empty()) return blocked_;
-    return problem_.empty() ? "reliable" : problem_;
+    if (!worst_outside_) return "reliable";
+    char text[192];  // formatted once, here: a record compares several quantities before it knows its worst
+    std::snprintf(text, sizeof text, "not asymptotic: observed order %.2g where %d is expected (%s)", observed_order(),
+                  order_, worst_name_);
+    return text;
   }
 
  private:
@@ -124,24 +128,18 @@ class CommonRecord {
     const double distance = std::abs(std::log(r / expected));
     // a quantity outside its window names the record before any inside it, then the furthest from 2^p
     if (std::make_pair(!inside, distance) > std::make_pair(worst_outside_, worst_distance_)) {
-      worst_outside_ = !inside, worst_distance_ = distance, observed_order_ = std::log2(r);
-      problem_.clear();
-      if (!inside) {
-        char text[192];
-        std::snprintf(text, sizeof text, "not asymptotic: observed order %.2g where %d is expected (%s)",
-                      observed_order_, order_, name);
-        problem_ = text;
-      }
+      worst_outside_ = !inside, worst_distance_ = distance, worst_r_ = r, worst_name_ = name;
     }
     return r;
   }
 
   int order_;
   double expected_;  // 2^p, the ratio r of the asymptotic regime
-  std::string blocked_, problem_;
+  std::string blocked_;
   bool worst_outside_ = false;
   double worst_distance_ = -1.0;
-  double observed_order_ = nan;
+  double worst_r_ = nan;           // r of the quantity furthest from 2^p (its observed order log2 r)
+  const char* worst_name_ = "";    // and its name
 };
 
 // The estimates of the common records, a row each in the layout of GlobalErrorEstimate: sized once (a row's
