@@ -463,10 +463,8 @@ GlobalErrorEstimate estimate_global_error(const ErrorRecords& h, const ErrorReco
   }
   name_exponential_growth(common, h.t, stride);
   reserve(out, h.n, h.bodies);
-  const std::string between = "interpolated between the reliable records before and after it";
-  const std::string after = h.n > 0 && last > 0
-                                ? "extrapolated from the reliable record at t = " + seconds(h.t[last * stride])
-                                : std::string();
+  static const std::string between = "interpolated between the reliable records before and after it";
+  std::string after;  // the verdict of a record after the last common record, made at its first use
   std::string none;  // the verdict of a record without an estimate, made at its first use
   for (std::size_t i = 0; i < h.n; ++i) {
     const std::size_t j = i / stride;
@@ -476,6 +474,7 @@ GlobalErrorEstimate estimate_global_error(const ErrorRecords& h, const ErrorReco
       const double tj = h.t[j * stride], tk = h.t[(j + 1) * stride];
       append_blend(out, common, j, j + 1, (h.t[i] - tj) / (tk - tj), between);
     } else if (last > 0) {  // after the last common record: linear growth from t0
+      if (after.empty()) after = "extrapolated from the reliable record at t = " + seconds(h.t[last * stride]);
       const double t0 = h.t[0], tc = h.t[last * stride];
       append_scaled(out, common, last, (h.t[i] - t0) / (tc - t0), after);
     } else {  // no common record but the first: no estimate
