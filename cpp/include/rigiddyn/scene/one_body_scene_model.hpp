@@ -297,7 +297,9 @@ class OneBodySceneModel {
       if (!all && !turns_vectors_) return slot_.motion_kinematics(y.data(), clock_at(y), k);
     }
     slot_.kinematics(y.data(), clock_at(y), k);
-    if (turns_vectors_) k.R_WB = k.q_WB.toRotationMatrix();
+    if constexpr (!detail::sets_rotation_matrices<Slot>::value) {
+      if (turns_vectors_) k.R_WB = k.q_WB.toRotationMatrix();
+    }
   }
 
   // e.k at y, e.wrench the sum of the elements' wrenches, e.power their powers (SceneModel::evaluate); exact gravity

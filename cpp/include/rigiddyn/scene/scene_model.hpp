@@ -125,13 +125,6 @@ struct has_internal_record<Slot, std::void_t<decltype(std::declval<const Slot&>(
                                       static_cast<const double*>(nullptr), std::declval<SceneSimulation&>()))>>
     : std::true_type {};
 
-// Whether a body's slot sets its bodies' R_WB in kinematics itself (sets_rotation_matrices: a tree's links, from
-// forward kinematics), so that the model does not rebuild it from q_WB.
-template <class Slot, class = void>
-struct sets_rotation_matrices : std::false_type {};
-template <class Slot>
-struct sets_rotation_matrices<Slot, std::enable_if_t<Slot::sets_rotation_matrices>> : std::true_type {};
-
 // Whether a body's slot spans several bodies (a tree's links: states(y, first) writes each of their states).
 template <class Slot, class = void>
 struct spans_bodies : std::false_type {};

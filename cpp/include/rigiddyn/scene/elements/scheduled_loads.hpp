@@ -74,6 +74,7 @@ class ScheduledLoadsTerm {
     require_finite(spec.point_B, name + ".point_B");
     check_loads_named(spec.loads, name);
     check_kind(bodies[spec.body], name);
+    in_plane_ = has_attitude(bodies[spec.body]) && is_planar(bodies[spec.body]);
     set_time(0.0);
   }
 
@@ -117,7 +118,7 @@ class ScheduledLoadsTerm {
     if (!acts_) return 0.0;
     Eigen::Vector3d f_W = loads_.f_W, tau_B = loads_.tau_B;
     if (turns_) {  // written out: Eigen's products were calls out of the layouts' inlined steps
-      if (body_force_) f_W += times_3x3(k.R_WB, loads_.f_B);
+      if (body_force_) f_W += in_plane_ ? turned_about_z(k.R_WB, loads_.f_B) : times_3x3(k.R_WB, loads_.f_B);
       if (world_torque_) tau_B += transpose_times_3x3(k.R_WB, loads_.tau_W);
       if (off_centre_) tau_B += cross_3(point_B_, transpose_times_3x3(k.R_WB, f_W));
     }
@@ -159,6 +160,11 @@ class ScheduledLoadsTerm {
     }
   }
 
+  // R f for R = Rz(θ) (a planar body's): R's zeros left out of the products (the same sums but for zeros' signs)
+  RIGIDDYN_ALWAYS_INLINE static Eigen::Vector3d turned_about_z(const Eigen::Matrix3d& R, const Eigen::Vector3d& f) {
+    return Eigen::Vector3d(R(0, 0) * f(0) + R(0, 1) * f(1), R(1, 0) * f(0) + R(1, 1) * f(1), f(2));
+  }
+
   void check_kind(const Body& body, const std::string& name) const {
     check_loads_for_kind(body, schedule_, name + ".loads");
     if (!has_attitude(body) && !point_B_.isZero(0.0)) throw_invalid(name + ".point_B", "zero (a particle is a point)", point_B_);
@@ -189,6 +195,7 @@ class ScheduledLoadsTerm {
   // which of R f_B, Rᵀ τ_W and r_B × Rᵀ f_W the piece needs: a part that is zero is not evaluated (adding
   // it would leave the sums as they are)
   bool body_force_ = false, world_torque_ = false, off_centre_ = false;
+  bool in_plane_ = false;  // the body turns about z alone (a planar body): R_WB = Rz(θ)
 };
 
 }  // namespace rigiddyn

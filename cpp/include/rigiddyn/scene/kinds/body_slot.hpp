@@ -140,6 +140,13 @@ struct is_constrained : std::false_type {};
 template <class Slot>
 struct is_constrained<Slot, std::enable_if_t<Slot::constrained>> : std::true_type {};
 
+// Whether a kind sets its bodies' R_WB in kinematics itself (sets_rotation_matrices: a tree's links, from forward
+// kinematics; a planar body, a turn about z), so that the model does not rebuild it from q_WB.
+template <class Slot, class = void>
+struct sets_rotation_matrices : std::false_type {};
+template <class Slot>
+struct sets_rotation_matrices<Slot, std::enable_if_t<Slot::sets_rotation_matrices>> : std::true_type {};
+
 // Whether a kind retracts without its attitude (retract_motion)
 template <class Slot, class = void>
 struct has_retract_motion : std::false_type {};

@@ -19,6 +19,7 @@ struct PlanarSlot : Place {
   static constexpr Eigen::Index y_size = 6, xi_size = 6;
   static constexpr bool constrained = true;  // its plane's reaction
   static constexpr bool reads_kinematics = false;
+  static constexpr bool sets_rotation_matrices = true;  // kinematics sets R_WB = Rz(θ)
   static constexpr int p = 0, theta = 2, v = 3, w = 5;  // in y
   double inverse_mass, inertia_zz, inverse_inertia_zz;
 
@@ -28,8 +29,12 @@ struct PlanarSlot : Place {
   }
   RIGIDDYN_ALWAYS_INLINE void kinematics(const double* y, const StepClock& clock, BodyKinematics& k) const {
     motion_kinematics(y, clock, k);
-    const double half = 0.5 * y[at_y + theta];
-    k.q_WB = Eigen::Quaterniond(std::cos(half), 0.0, 0.0, std::sin(half));
+    const double half = 0.5 * y[at_y + theta], c = std::cos(half), s = std::sin(half);
+    k.q_WB = Eigen::Quaterniond(c, 0.0, 0.0, s);
+    // R_WB = Rz(θ) as Eigen's toRotationMatrix forms it from (c, 0, 0, s) (the same bits but for zeros' signs),
+    // without the products of the zero components
+    const double tzz = (2.0 * s) * s, twz = (2.0 * s) * c;
+    k.R_WB << 1.0 - tzz, -twz, 0.0, twz, 1.0 - tzz, 0.0, 0.0, 0.0, 1.0;
   }
   RIGIDDYN_ALWAYS_INLINE void motion_kinematics(const double* y, const StepClock&, BodyKinematics& k) const {
     const double* x = y + at_y;
