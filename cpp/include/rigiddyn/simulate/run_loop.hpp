@@ -24,6 +24,7 @@
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
+#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -194,14 +195,20 @@ struct t_place_fixed<Pieces, std::void_t<decltype(Pieces::t_place_fixed)>> : std
 template <class Model, class Pieces>
 inline constexpr bool compiles_split_step = !switches_never<Model>::value || !t_place_fixed<Pieces>::value;
 
-// The switch grid of a run of `model` (switch_grid); std::logic_error where the model never switches but a schedule
-// has switch times within the run.
+// std::logic_error where `Model` never switches (it compiles no split step) but `what` ("a run", "a step") has switch
+// times inside it.
+template <class Model>
+void refuse_switches(bool switches, const char* what) {
+  if (switches_never<Model>::value && switches) {
+    throw std::logic_error(std::string(what) + " of a model without scheduled loads given a switch schedule");
+  }
+}
+
+// The switch grid of a run of `model` (switch_grid); refuse_switches.
 template <class Model>
 SwitchGrid model_switch_grid(const SimulationOptions& o, const std::vector<AppliedLoad>& schedule) {
   SwitchGrid grid = switch_grid(o, schedule);
-  if (switches_never<Model>::value && !grid.time.empty()) {
-    throw std::logic_error("a run of a model without scheduled loads given a switch schedule");
-  }
+  refuse_switches<Model>(!grid.time.empty(), "a run");
   return grid;
 }
 
@@ -291,9 +298,7 @@ typename Model::Coordinates one_step(Model model, typename Model::Coordinates y,
   std::vector<double> switches = switch_times(pieces.schedule, o.t0, t_end);
   // a switch within the on-grid tolerance of t + dt acts from the next step on (as in run)
   while (!switches.empty() && t_end - switches.back() <= on_grid_tolerance(t_end, o.dt)) switches.pop_back();
-  if (switches_never<Model>::value && !switches.empty()) {
-    throw std::logic_error("a step of a model without scheduled loads given a switch schedule");
-  }
+  refuse_switches<Model>(!switches.empty(), "a step");
   visit_method(o.method, [&](auto integrator) {
     using Integrator = decltype(integrator);
     Workspace<Integrator, Model> w(model, y);
