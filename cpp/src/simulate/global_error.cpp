@@ -139,7 +139,7 @@ class CommonRecord {
   bool worst_outside_ = false;
   double worst_distance_ = -1.0;
   double worst_r_ = nan;           // r of the quantity furthest from 2^p (its observed order log2 r)
-  const char* worst_name_ = "";    // and its name
+  const char* worst_name_ = "";    // and its name (a string literal: check's and invariant's names are)
 };
 
 // The estimates of the common records, a row each in the layout of GlobalErrorEstimate: sized once (a row's
