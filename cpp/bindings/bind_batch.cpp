@@ -525,7 +525,7 @@ py::ssize_t require_samples(std::size_t n) {
 // recorded quantities became non-finite while their state stayed finite (overflowed_quantities); "" for none.
 template <class Batch>
 std::string overflowed_samples(const Batch& b) {
-  const std::vector<RecordColumn> columns = record_columns(b);
+  const auto columns = record_columns(b);
   std::string found;
   std::size_t count = 0;
   for (std::size_t i = 0; i < b.samples; ++i) {

@@ -58,36 +58,43 @@ py::object body_object(const Body& body) {
   return std::visit([](const auto& b) { return py::cast(b); }, body);
 }
 
-// The state of `body` (its kind's state class: the alternative of BodyState at the body's index), else
-// TypeError naming `name`.
+// obj as the state of kind `kind` (its state class: the alternative of BodyState at that index), or none
 template <std::size_t... K>
-BodyState state_of_kind(py::handle obj, std::size_t kind, const std::string& name, const std::string& expected,
-                        std::index_sequence<K...>) {
+std::optional<BodyState> state_of_kind(py::handle obj, std::size_t kind, std::index_sequence<K...>) {
   std::optional<BodyState> out;
   ((kind == K && is_instance<std::variant_alternative_t<K, BodyState>>(obj)
         ? (void)(out = obj.cast<const std::variant_alternative_t<K, BodyState>&>())
         : void()),
    ...);
-  if (!out) py_io::throw_type_error(name, expected, obj);
-  return *out;
+  return out;
 }
 
-BodyState as_body_state(py::handle obj, const Body& body, const std::string& name, const std::string& body_label) {
-  const std::string expected = std::string("a ") + state_type_name(body.index()) + " (the state of " + body_label + ")";
-  return state_of_kind(obj, body.index(), name, expected, std::make_index_sequence<std::variant_size_v<BodyState>>());
+// The state of body i of `scene`, else TypeError naming `name`[i] (the message made only then).
+BodyState as_body_state(py::handle obj, const Scene& scene, std::size_t i, const std::string& name) {
+  const Body& body = scene.bodies[i];
+  std::optional<BodyState> out =
+      state_of_kind(obj, body.index(), std::make_index_sequence<std::variant_size_v<BodyState>>());
+  if (!out) {
+    py_io::throw_type_error(name + "[" + std::to_string(i) + "]",
+                            std::string("a ") + state_type_name(body.index()) + " (the state of body " +
+                                std::to_string(i) + " '" + body_name(scene, i) + "')",
+                            obj);
+  }
+  return std::move(*out);
 }
 
 // One state per body of `scene`, in its order: a list or tuple of the bodies' state classes.
 std::vector<BodyState> as_scene_states(py::handle obj, const Scene& scene, const std::string& name) {
   const std::size_t nb = scene.bodies.size();
-  const std::string expected = "a list of " + std::to_string(nb) + " body states (one per body of the scene, in order)";
-  if (!py::isinstance<py::list>(obj) && !py::isinstance<py::tuple>(obj)) py_io::throw_type_error(name, expected, obj);
-  if (py::len(obj) != nb) py_io::throw_value_error(name, expected, std::to_string(py::len(obj)) + " states");
+  const auto expected = [nb] {
+    return "a list of " + std::to_string(nb) + " body states (one per body of the scene, in order)";
+  };
+  if (!py::isinstance<py::list>(obj) && !py::isinstance<py::tuple>(obj)) py_io::throw_type_error(name, expected(), obj);
+  const std::size_t given = py::len(obj);
+  if (given != nb) py_io::throw_value_error(name, expected(), std::to_string(given) + " states");
   std::vector<BodyState> out;
-  for (std::size_t i = 0; i < nb; ++i) {
-    const std::string label = "body " + std::to_string(i) + " '" + body_name(scene, i) + "'";
-    out.push_back(as_body_state(obj[py::int_(i)], scene.bodies[i], name + "[" + std::to_string(i) + "]", label));
-  }
+  out.reserve(nb);
+  for (std::size_t i = 0; i < nb; ++i) out.push_back(as_body_state(obj[py::int_(i)], scene, i, name));
   return out;
 }
 

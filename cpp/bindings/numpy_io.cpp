@@ -11,6 +11,24 @@
 
 namespace rigiddyn::py_io {
 
+// A double is not finite iff its 11 exponent bits are all ones, that is iff adding one to its exponent field carries into the sign bit: integer operations without a branch per
+// entry, which the compiler vectorises (a test with an exit per entry runs one entry at a time).
+bool all_finite(const double* p, py::ssize_t size) {
+  constexpr std::uint64_t exponent = 0x7ff0000000000000, exponent_one = 0x0010000000000000, sign = 0x8000000000000000;
+  const auto carry = [p](py::ssize_t i) {
+    std::uint64_t bits;
+    std::memcpy(&bits, p + i, sizeof bits);
+    return (bits & exponent) + exponent_one;
+  };
+  std::uint64_t carries[4] = {};  // four chains of |= : one would wait on the previous |= every entry
+  py::ssize_t i = 0;
+  for (; i + 4 <= size; i += 4) {
+    for (int k = 0; k < 4; ++k) carries[k] |= carry(i + k);
+  }
+  for (; i < size; ++i) carries[0] |= carry(i);
+  return ((carries[0] | carries[1] | carries[2] | carries[3]) & sign) == 0;
+}
+
 namespace {
 
 // Allocations up to this size are never refused in advance (checking costs a read of /proc/meminfo).
@@ -43,25 +61,6 @@ std::string bytes_string(std::uint64_t bytes) {
   out.precision(3);
   out << value << " " << units[unit];
   return out.str();
-}
-
-// True iff every p[0, size) is finite. A double is not finite iff its 11 exponent bits are all ones, that is
-// iff adding one to its exponent field carries into the sign bit: integer operations without a branch per
-// entry, which the compiler vectorises (a test with an exit per entry runs one entry at a time).
-bool all_finite(const double* p, py::ssize_t size) {
-  constexpr std::uint64_t exponent = 0x7ff0000000000000, exponent_one = 0x0010000000000000, sign = 0x8000000000000000;
-  const auto carry = [p](py::ssize_t i) {
-    std::uint64_t bits;
-    std::memcpy(&bits, p + i, sizeof bits);
-    return (bits & exponent) + exponent_one;
-  };
-  std::uint64_t carries[4] = {};  // four chains of |= : one would wait on the previous |= every entry
-  py::ssize_t i = 0;
-  for (; i + 4 <= size; i += 4) {
-    for (int k = 0; k < 4; ++k) carries[k] |= carry(i + k);
-  }
-  for (; i < size; ++i) carries[0] |= carry(i);
-  return ((carries[0] | carries[1] | carries[2] | carries[3]) & sign) == 0;
 }
 
 void require_all_finite(const Array& a, const std::string& name) {

@@ -125,6 +125,8 @@ py::function as_callable(py::handle obj, const std::string& name, const std::str
 py::object in_si(py::handle obj, const char* unit, const char* name);
 
 // ------------------------------------------------------------ arrays
+// True iff every p[0, size) is finite (no branch per entry).
+bool all_finite(const double* p, py::ssize_t size);
 // obj as a C-contiguous float64 array (no copy when it is one already). TypeError unless its dtype
 // is bool, integer or real float (or it is not array-like), ValueError for a ragged sequence,
 // MemoryError naming `name` when the float64 copy does not fit in memory.

@@ -304,12 +304,9 @@ class LazyBalance {
   static pybind11::object balance_object(RunBalance&& b) {
     namespace py = pybind11;
     const auto n = static_cast<py::ssize_t>(b.size());
-    py::tuple arrays(3 * balance_quantity_count);
-    for (std::size_t q = 0; q < balance_quantity_count; ++q) {
-      arrays[q] = adopt(std::move(b.residual[q]), {n});
-      arrays[balance_quantity_count + q] = adopt(std::move(b.round_off[q]), {n});
-      arrays[2 * balance_quantity_count + q] = adopt(std::move(b.scale[q]), {n});
-    }
+    const py::object values = adopt(b.take_values(), {3 * static_cast<py::ssize_t>(balance_quantity_count), n});
+    py::tuple arrays(3 * balance_quantity_count);  // its rows: views of the one buffer
+    for (std::size_t k = 0; k < 3 * balance_quantity_count; ++k) arrays[k] = values[py::int_(k)];
     py::dict verdict;
     for (std::size_t q = 0; q < balance_quantity_count; ++q) verdict[balance_quantity_names[q]] = b.verdict[q];
     return py::module_::import("rigiddyn._balance").attr("_made")(arrays, verdict, b.about);
@@ -437,8 +434,8 @@ struct RecordColumn {
 };
 
 // The recorded quantities of a batch of bodies on the SIMD path (BatchTrajectory), every one but t.
-inline std::vector<RecordColumn> record_columns(const BatchTrajectory& r) {
-  return {{"p_W", &r.p_W},
+inline std::array<RecordColumn, 9> record_columns(const BatchTrajectory& r) {
+  return {{{"p_W", &r.p_W},
           {"q_WB", &r.q_WB},
           {"v_W", &r.v_W},
           {"w_B", &r.w_B},
@@ -446,13 +443,13 @@ inline std::vector<RecordColumn> record_columns(const BatchTrajectory& r) {
           {"total_energy", &r.total_energy},
           {"angular_momentum_norm", &r.angular_momentum_norm},
           {"quaternion_norm_error", &r.quaternion_norm_error},
-          {"work", &r.work}};
+          {"work", &r.work}}};
 }
 
 // The recorded quantities of a scene's run (SceneSimulation) or batch (BatchSceneSimulation), every one but t.
 template <class Records>
-std::vector<RecordColumn> scene_record_columns(const Records& r) {
-  return {{"p_W", &r.p_W},
+std::array<RecordColumn, 14> scene_record_columns(const Records& r) {
+  return {{{"p_W", &r.p_W},
           {"q_WB", &r.q_WB},
           {"v_W", &r.v_W},
           {"w_B", &r.w_B},
@@ -465,32 +462,25 @@ std::vector<RecordColumn> scene_record_columns(const Records& r) {
           {"angular_momentum_O_W", &r.angular_momentum_O_W},
           {"mass", &r.mass},
           {"work", &r.work},
-          {"power", &r.power}};
+          {"power", &r.power}}};
 }
 
-inline std::vector<RecordColumn> record_columns(const SceneSimulation& r) { return scene_record_columns(r); }
-inline std::vector<RecordColumn> record_columns(const BatchSceneSimulation& r) { return scene_record_columns(r); }
-
-// Whether the n values at x are all finite: one pass without a branch per value (|x| <= DBL_MAX is false for ±inf
-// and NaN), which the compiler vectorises.
-inline bool all_finite(const double* x, std::size_t n) {
-  bool finite = true;
-  for (std::size_t k = 0; k < n; ++k) finite &= std::abs(x[k]) <= std::numeric_limits<double>::max();
-  return finite;
-}
+inline std::array<RecordColumn, 14> record_columns(const SceneSimulation& r) { return scene_record_columns(r); }
+inline std::array<RecordColumn, 14> record_columns(const BatchSceneSimulation& r) { return scene_record_columns(r); }
 
 // "kinetic_energy from t = 0, total_energy from t = 0": each quantity of `columns` with a non-finite value in
 // the first `rows` records of run i (of N runs of n records; t (N, n) their times [s]), with the time of the
 // first such record; "" when there is none.
-inline std::string non_finite_quantities(const std::vector<RecordColumn>& columns, const std::vector<double>& t,
-                                         std::size_t N, std::size_t n, std::size_t i, std::size_t rows) {
+template <std::size_t count>
+std::string non_finite_quantities(const std::array<RecordColumn, count>& columns, const std::vector<double>& t,
+                                  std::size_t N, std::size_t n, std::size_t i, std::size_t rows) {
   std::string found;
   for (const RecordColumn& c : columns) {
     const std::size_t width = N * n == 0 ? 0 : c.values->size() / (N * n);
     const double* run = c.values->data() + i * n * width;
-    if (width == 0 || all_finite(run, rows * width)) continue;
+    if (width == 0 || py_io::all_finite(run, static_cast<pybind11::ssize_t>(rows * width))) continue;
     std::size_t r = 0;
-    while (all_finite(run + r * width, width)) ++r;
+    while (py_io::all_finite(run + r * width, static_cast<pybind11::ssize_t>(width))) ++r;
     found += (found.empty() ? "" : ", ") + std::string(c.name) + " from t = " + format_value(t[i * n + r]);
   }
   return found;

@@ -21,13 +21,13 @@ constexpr double level = default_accuracy_level;
 // + round-off (scales and round-offs drawn from `random`), with the momentum balances applicable or not.
 RunBalance balance_at(double fraction, std::size_t n, bool momentum_applies, std::mt19937& random) {
   std::uniform_real_distribution<double> scale(0.1, 10.0), round_off(0.0, 1e-12);
-  RunBalance b;
+  RunBalance b(n);
   for (std::size_t q = 0; q < balance_quantity_count; ++q) {
     for (std::size_t i = 0; i < n; ++i) {
-      b.scale[q].push_back(scale(random));
-      b.round_off[q].push_back(round_off(random));
-      const double least = estimate_floor * level * b.scale[q][i] + b.round_off[q][i];
-      b.residual[q].push_back((i % 2 == 0 ? 1.0 : -1.0) * fraction * least);
+      b.scale(q)[i] = scale(random);
+      b.round_off(q)[i] = round_off(random);
+      const double least = estimate_floor * level * b.scale(q)[i] + b.round_off(q)[i];
+      b.residual(q)[i] = (i % 2 == 0 ? 1.0 : -1.0) * fraction * least;
     }
     b.verdict[q] = q == 0 || momentum_applies ? "closed" : "not applicable: a planar body's plane takes forces";
   }
@@ -77,7 +77,7 @@ TEST(AccuracyCheck, ABalanceThatClosesUnderAnyEstimateClosesWithEveryOne) {
 TEST(AccuracyCheck, ABalanceBeyondTheLeastAllowanceIsNotSaidToClose) {
   std::mt19937 random(11);
   RunBalance b = balance_at(0.5, 8, true, random);
-  b.residual[2][5] = 1.01 * (estimate_floor * level * b.scale[2][5] + b.round_off[2][5]);
+  b.residual(2)[5] = 1.01 * (estimate_floor * level * b.scale(2)[5] + b.round_off(2)[5]);
   EXPECT_FALSE(closes_under_any_estimate(b, level));
   // it closes without an estimate (within level · scale) and with a reliable one that allows more; a reliable
   // estimate of zero error leaves the least allowance, which the residual exceeds
@@ -89,8 +89,8 @@ TEST(AccuracyCheck, ABalanceBeyondTheLeastAllowanceIsNotSaidToClose) {
 TEST(AccuracyCheck, NonFiniteResidualsAreSkippedAsTheCheckSkipsThem) {
   std::mt19937 random(3);
   RunBalance b = balance_at(0.5, 4, true, random);
-  b.residual[0][1] = std::numeric_limits<double>::infinity();
-  b.residual[1][2] = std::numeric_limits<double>::quiet_NaN();
+  b.residual(0)[1] = std::numeric_limits<double>::infinity();
+  b.residual(1)[2] = std::numeric_limits<double>::quiet_NaN();
   EXPECT_TRUE(closes_under_any_estimate(b, level));
   EXPECT_EQ(checked(b, nullptr, 0.0).first, "");
 }

@@ -31,10 +31,10 @@ std::vector<bool> reliable_records(const GlobalErrorEstimate* e, std::size_t n) 
 // the estimate is reliable (and that allowance finite), else level · scale + round-off.
 double allowance_at(const RunBalance& b, std::size_t q, const AccuracyCheck& c, const std::vector<bool>& reliable,
                     std::size_t i) {
-  const double fallback = c.level * b.scale[q][i] + b.round_off[q][i];
+  const double fallback = c.level * b.scale(q)[i] + b.round_off(q)[i];
   if (!reliable[i] || c.bounds == nullptr || i >= (*c.bounds)[q].size()) return fallback;
-  const double estimated = estimate_factor * (*c.bounds)[q][i], floor = estimate_floor * c.level * b.scale[q][i];
-  const double bound = std::max(estimated, floor) + b.round_off[q][i];
+  const double estimated = estimate_factor * (*c.bounds)[q][i], floor = estimate_floor * c.level * b.scale(q)[i];
+  const double bound = std::max(estimated, floor) + b.round_off(q)[i];
   return std::isfinite(estimated) && std::isfinite(floor) && std::isfinite(bound) ? bound : fallback;
 }
 
@@ -77,7 +77,7 @@ std::string check_accuracy(RunBalance& b, const AccuracyCheck& c) {
     std::size_t worst = n;
     double worst_ratio = 0.0, worst_allowance = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
-      const double r = std::abs(b.residual[q][i]);
+      const double r = std::abs(b.residual(q)[i]);
       if (!std::isfinite(r)) continue;
       const double allowance = allowance_at(b, q, c, reliable, i);
       if (!(r > allowance)) continue;
@@ -86,7 +86,7 @@ std::string check_accuracy(RunBalance& b, const AccuracyCheck& c) {
     }
     if (worst == n) continue;
     const char* unit = balance_quantity_units[q];
-    const double r = std::abs(b.residual[q][worst]), scale = b.scale[q][worst];
+    const double r = std::abs(b.residual(q)[worst]), scale = b.scale(q)[worst];
     const std::string relative = scale > 0 ? " (" + formatted("%.3g", r / scale) + " of its scale " +
                                                  formatted("%.3g", scale) + " " + unit + ")"
                                            : std::string();
@@ -116,8 +116,8 @@ bool closes_under_any_estimate(const RunBalance& b, double level) {
   for (std::size_t q = 0; q < balance_quantity_count; ++q) {
     if (!b.applies(static_cast<BalanceQuantity>(q))) continue;
     for (std::size_t i = 0; i < b.size(); ++i) {
-      const double r = std::abs(b.residual[q][i]);  // (one that overflowed is skipped, as check_accuracy does)
-      if (std::isfinite(r) && r > estimate_floor * level * b.scale[q][i] + b.round_off[q][i]) return false;
+      const double r = std::abs(b.residual(q)[i]);  // (one that overflowed is skipped, as check_accuracy does)
+      if (std::isfinite(r) && r > estimate_floor * level * b.scale(q)[i] + b.round_off(q)[i]) return false;
     }
   }
   return true;

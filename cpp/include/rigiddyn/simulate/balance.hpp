@@ -39,17 +39,38 @@ inline constexpr std::array<const char*, balance_quantity_count> balance_quantit
 inline constexpr std::array<const char*, balance_quantity_count> balance_quantity_units = {"J", "kg m/s",
                                                                                           "kg m^2/s"};
 
-// The balance of a run of n records, per quantity q (indexed by BalanceQuantity):
-struct RunBalance {
-  std::array<std::vector<double>, balance_quantity_count> residual;   // (n,) r_E signed, |r_P|, |r_H|
-  std::array<std::vector<double>, balance_quantity_count> round_off;  // (n,) the round-off each residual can hold
-  std::array<std::vector<double>, balance_quantity_count> scale;      // (n,) the size each residual is relative to
+// The balance of a run of n records, per quantity q (indexed by BalanceQuantity): its residuals (n,) (r_E signed,
+// |r_P|, |r_H|), the round-off each can hold and the size each is relative to, in one buffer of (9, n) values (the
+// residuals of the three quantities, then their round-offs, then their scales), and its verdict.
+class RunBalance {
+ public:
+  explicit RunBalance(std::size_t n = 0) : values_(3 * balance_quantity_count * n), n_(n) {}
+
+  double* residual(std::size_t q) { return row(q); }
+  double* round_off(std::size_t q) { return row(balance_quantity_count + q); }
+  double* scale(std::size_t q) { return row(2 * balance_quantity_count + q); }
+  const double* residual(std::size_t q) const { return row(q); }
+  const double* round_off(std::size_t q) const { return row(balance_quantity_count + q); }
+  const double* scale(std::size_t q) const { return row(2 * balance_quantity_count + q); }
+
+  std::size_t size() const { return n_; }
+  bool applies(BalanceQuantity q) const;  // its verdict is not "not applicable: ..."
+  // The (9, n) values, row-major, taken (the balance is left without records)
+  std::vector<double> take_values() {
+    n_ = 0;
+    return std::move(values_);
+  }
+
   std::array<std::string, balance_quantity_count> verdict;  // "closed", "open: ..." (accuracy_check.hpp) or
                                                             // "not applicable: <why>"
   std::string about;  // the point of the angular momentum: "W's origin" or "the centre of mass"
 
-  std::size_t size() const { return residual[0].size(); }
-  bool applies(BalanceQuantity q) const;  // its verdict is not "not applicable: ..."
+ private:
+  double* row(std::size_t k) { return values_.data() + k * n_; }
+  const double* row(std::size_t k) const { return values_.data() + k * n_; }
+
+  std::vector<double> values_;
+  std::size_t n_ = 0;
 };
 
 // The balance of a scene's run `r` at step dt [s]: `not_applicable` the reason its momentum balances do not apply
