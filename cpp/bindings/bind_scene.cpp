@@ -313,16 +313,17 @@ void refuse_body_arguments(py::handle loads, py::handle gravity) {
 // frame's fictitious terms ("CentrifugalForce", ...).
 py::tuple element_kinds(const CompiledScene& compiled) { return py::tuple(py::cast(compiled.element_types())); }
 
-SceneResult to_scene_result(SceneSimulation&& r, const Scene& scene, const CompiledScene& compiled, bool scalar_first) {
+// The SceneResult of run r of `compiled` (of `scene`), made in place (its Python object takes it without a move).
+std::unique_ptr<SceneResult> to_scene_result(SceneSimulation&& r, const Scene& scene, const CompiledScene& compiled,
+                                             bool scalar_first) {
   const auto n = static_cast<py::ssize_t>(r.size());
   const auto nb = static_cast<py::ssize_t>(scene.bodies.size());
   const auto ne = static_cast<py::ssize_t>(compiled.element_types().size());
   if (scalar_first) to_scalar_first(r.q_WB);
-  if (r.mass_flow_energy.empty()) r.mass_flow_energy.assign(r.mass.size(), 0.0);  // no mass flow: all 0
   const py::tuple wheel_bodies = wheel_bodies_of(scene);
   const auto nw = static_cast<py::ssize_t>(wheel_bodies.size());
   const JointCounts joints = joint_counts(scene.bodies);
-  return SceneResult{LazyArray(std::move(r.t), {n}),
+  return std::unique_ptr<SceneResult>(new SceneResult{LazyArray(std::move(r.t), {n}),
                      LazyArray(std::move(r.p_W), {n, nb, 3}),
                      LazyArray(std::move(r.q_WB), {n, nb, 4}),
                      LazyArray(std::move(r.v_W), {n, nb, 3}),
@@ -337,7 +338,8 @@ SceneResult to_scene_result(SceneSimulation&& r, const Scene& scene, const Compi
                      LazyArray(std::move(r.mass), {n, nb}),
                      LazyArray(std::move(r.work), {n, ne}),
                      LazyArray(std::move(r.power), {n, ne}),
-                     LazyArray(std::move(r.mass_flow_energy), {n, nb}),
+                     r.mass_flow_energy.empty() ? LazyArray::zeros({n, nb})  // no mass flow: all 0
+                                                : LazyArray(std::move(r.mass_flow_energy), {n, nb}),
                      names_tuple(scene),
                      element_kinds(compiled),
                      LazyArray(std::move(r.wheel_speed), {n, nw}),
@@ -348,7 +350,7 @@ SceneResult to_scene_result(SceneSimulation&& r, const Scene& scene, const Compi
                      r.diverged,
                      r.unconverged_steps,
                      r.elapsed_seconds,
-                     scalar_first};
+                     scalar_first});
 }
 
 // The arrays of a SceneResult in pickle order, with their shapes after the record axis (-1: bodies,
@@ -786,19 +788,23 @@ std::pair<RunBalance, std::string> checked_scene_balance(const SceneSimulation& 
 
 // The SceneResult of a run of h at step dt as its Python object: its error estimate (made, or `deferred`: made on
 // its first read) and choice as given, its balance (`balance`, or made here) checked in the core with the
-// AccuracyWarning at `level` when it does not close.
+// AccuracyWarning at `level` when it does not close. A deferred estimate's balance closes under any estimate
+// (simulate_scene_py: closes_under_any_estimate), so that its check, which would find nothing, is not made.
 py::object scene_result_object(SceneSimulation&& r, const CompiledSceneHandle& h, double dt, bool scalar_first,
                                std::optional<GlobalErrorEstimate>&& estimate, py::object choice,
                                const std::optional<double>& level, std::optional<RunBalance>&& balance = std::nullopt,
                                LazyError deferred = LazyError()) {
   const GlobalErrorEstimate* e = estimate ? &*estimate : nullptr;
-  std::pair<RunBalance, std::string> checked = with_gil_released_for(
-      r.size(), [&]() { return checked_scene_balance(r, h, dt, e, level, std::move(balance)); });
+  std::pair<RunBalance, std::string> checked =
+      deferred.pending() && balance
+          ? std::pair<RunBalance, std::string>(std::move(*balance), std::string())
+          : with_gil_released_for(r.size(),
+                                  [&]() { return checked_scene_balance(r, h, dt, e, level, std::move(balance)); });
   warn_accuracy(checked.second, level, r.diverged);
-  SceneResult result = to_scene_result(std::move(r), h.scene, *h.compiled, scalar_first);
-  result.error = estimate ? LazyError(py::cast(to_global_error(std::move(*estimate)))) : std::move(deferred);
-  result.choice = std::move(choice);
-  result.balance = LazyBalance(std::move(checked.first));
+  std::unique_ptr<SceneResult> result = to_scene_result(std::move(r), h.scene, *h.compiled, scalar_first);
+  result->error = estimate ? LazyError(py::cast(to_global_error(std::move(*estimate)))) : std::move(deferred);
+  result->choice = std::move(choice);
+  result->balance = LazyBalance(std::move(checked.first));
   return py::cast(std::move(result));
 }
 
@@ -1007,7 +1013,7 @@ py::object simulate_scene_py(py::handle model, py::handle initial, py::handle dt
   const std::shared_ptr<const CompiledSceneHandle> held = body ? compiled_for(*body, method) : compiled_for(model, method);
   const CompiledSceneHandle& h = *held;
   o.method = h.method;
-  const std::vector<BodyState> initial_states = as_scene_states(initial, h.scene, "initial");
+  std::vector<BodyState> initial_states = as_scene_states(initial, h.scene, "initial");
   bool shipped_law = false;
   const std::optional<Controller> control =
       controller.is_none() ? std::nullopt : std::optional<Controller>(as_controller(controller, h.scene, &shipped_law));
@@ -1023,7 +1029,7 @@ py::object simulate_scene_py(py::handle model, py::handle initial, py::handle dt
   std::optional<RunBalance> balance;
   LazyError deferred;
   {
-    py::gil_scoped_release release;  // a PythonForce takes it back for each of its calls
+    const GilReleasedForRun release(o.steps, h.scene.bodies.size());
     const std::optional<Controller> pristine = control;  // the law's state before the run (a shipped law's)
     r = control ? simulate(*h.compiled, initial_states, o, *control) : simulate(*h.compiled, initial_states, o);
     // at the order the compiled scene has (scene_order.hpp); a controlled run only with a law in C++, each coarse run
@@ -1033,7 +1039,7 @@ py::object simulate_scene_py(py::handle model, py::handle initial, py::handle dt
       if (!control && opaque.empty() && progress.is_none() && o.steps <= deferred_estimate_steps) {
         balance = scene_run_balance(r, h, o.dt);
         if (closes_under_any_estimate(*balance, level.value_or(default_accuracy_level))) {
-          deferred = LazyError(deferred_estimate(h.compiled, initial_states, o));
+          deferred = LazyError(deferred_estimate(h.compiled, std::move(initial_states), o));  // their last use
         }
       }
       if (!deferred.pending()) {
@@ -1076,7 +1082,7 @@ py::object step_scene_py(py::handle model, py::handle state, py::handle dt, py::
   const std::vector<BodyState> current = as_scene_states(state, h.scene, "state");
   SceneState next;
   {
-    py::gil_scoped_release release;
+    const GilReleasedForRun release(1, h.scene.bodies.size());
     next = step(*h.compiled, current, o);
   }
   if (!all_finite(h.scene, next.bodies)) {

@@ -75,11 +75,20 @@ class LazyArray {
       : LazyArray(std::move(values), shape.data(), shape.size()) {}
   // an array made already (an unpickled or sliced result)
   explicit LazyArray(py_io::Array made) : array_(std::move(made)) {}
+  // zeros of shape (d0), (d0, d1) or (d0, d1, d2), made on the first read (a column a run does not fill)
+  static LazyArray zeros(std::initializer_list<pybind11::ssize_t> shape) {
+    LazyArray out(std::vector<double>(), shape.begin(), shape.size());
+    out.zeros_ = true;
+    return out;
+  }
 
   // The array (GIL held)
   py_io::Array get() const {
     if (!array_ && ndim_ == 0) throw std::logic_error("LazyArray: read before its values were set");
-    if (!array_) array_ = adopt(std::move(values_), {shape_.begin(), shape_.begin() + ndim_});
+    if (!array_) {
+      if (zeros_) values_.assign(size(), 0.0);
+      array_ = adopt(std::move(values_), {shape_.begin(), shape_.begin() + ndim_});
+    }
     return pybind11::reinterpret_borrow<py_io::Array>(array_);
   }
 
@@ -90,9 +99,17 @@ class LazyArray {
     std::copy(shape, shape + ndim, shape_.begin());
   }
 
+  // the number of values its shape holds
+  std::size_t size() const {
+    pybind11::ssize_t size = 1;
+    for (std::size_t k = 0; k < ndim_; ++k) size *= shape_[k];
+    return static_cast<std::size_t>(size);
+  }
+
   mutable std::vector<double> values_;
   std::array<pybind11::ssize_t, 3> shape_{};  // its first ndim_ entries
   std::size_t ndim_ = 0;
+  bool zeros_ = false;              // values_ stands for zeros until made
   mutable pybind11::object array_;  // null until made
 };
 
@@ -257,15 +274,33 @@ inline std::optional<double> as_accuracy_level(pybind11::handle level) {
   return py_io::as_positive(level, "accuracy_level");
 }
 
+// The loops shorter than this many items (records, or steps times bodies) run with the GIL held: taking the GIL back
+// costs more than a short loop's arithmetic and may wait a switch interval (5 ms) for another thread.
+inline constexpr std::size_t gil_release_items = 512;
+
 // Calls f() with the GIL released when a loop over `records` records runs long enough to be worth it, else with the
-// GIL held: taking the GIL back costs more than a short run's arithmetic and may wait a switch interval (5 ms) for
-// another thread.
+// GIL held (gil_release_items).
 template <class F>
 auto with_gil_released_for(std::size_t records, F&& f) {
-  if (records < 512) return f();
+  if (records < gil_release_items) return f();
   pybind11::gil_scoped_release release;
   return f();
 }
+
+// The GIL released for the scope of a run of `steps` steps of `bodies` bodies when the run is long enough to be
+// worth it, else held (gil_release_items). A PythonForce, controller or progress callback of the run takes it back
+// for each of its calls either way.
+class GilReleasedForRun {
+ public:
+  GilReleasedForRun(std::int64_t steps, std::size_t bodies) {
+    if (static_cast<double>(steps) * static_cast<double>(bodies) >= static_cast<double>(gil_release_items)) {
+      release_.emplace();
+    }
+  }
+
+ private:
+  std::optional<pybind11::gil_scoped_release> release_;
+};
 
 // The end of a run's accuracy check (accuracy_check.hpp): the AccuracyWarning with `message` unless it is "", the
 // level is None (the verdicts are still made at the default level) or the run diverged (warn_after_run has warned).

@@ -3,6 +3,8 @@ a one-body Scene, a problem file, a scene file) runs the same one-body scene and
 arrays, bitwise (the same numbers parsed, the same model, method and steps); Scene.of_body gives the scene a body's
 simulate runs, for every kind."""
 
+import pickle
+
 import numpy as np
 import pytest
 
@@ -159,3 +161,20 @@ def test_a_run_keeps_its_compiled_scene_when_a_call_during_it_simulates_another_
     expected = rd.simulate(rd.Scene.of_body(rigid, gravity=True), [state], DT, 30, METHOD)
     assert_same_run(result, expected, "the run under the callback")
     assert_same_run(rd.simulate(rigid, state, DT, 30, METHOD, gravity=True), expected, "the next run")
+
+
+@pytest.mark.parametrize("steps", [3, 600])  # a run that holds the GIL and one that releases it (512 body-steps)
+def test_a_run_without_mass_flow_reads_zeros_of_its_shape_as_its_mass_flow_energy(steps):
+    """Without a mass flow, mass_flow_energy is an (n, bodies) array of zeros, made on its first read: read-only,
+    pickled as any other array, and the same zeros every read."""
+    scene = rd.Scene()
+    scene.add_body(rd.RigidBody(1.0, [1.0, 2.0, 3.0]))
+    scene.add_body(rd.Particle(2.0))
+    initial = [rd.RigidBodyState(w_B=[0.1, 1.0, 0.1]), rd.ParticleState(v_W=[1.0, 0.0, 0.0])]
+    result = rd.simulate(scene, initial, 0.01, steps=steps, method="rk4")
+    energy = result.mass_flow_energy
+    assert energy.shape == (steps + 1, 2)
+    assert energy.dtype == np.float64 and not energy.flags.writeable
+    assert np.array_equal(energy, np.zeros((steps + 1, 2)))
+    assert result.mass_flow_energy is energy
+    assert np.array_equal(pickle.loads(pickle.dumps(result)).mass_flow_energy, energy)

@@ -19,10 +19,10 @@ std::string formatted(const char* spec, double x) {
   return text;
 }
 
-// Whether the estimate is reliable at each record (n,), all false without one.
+// Whether the estimate is reliable at each record (n,); empty (none is) without one.
 std::vector<bool> reliable_records(const GlobalErrorEstimate* e, std::size_t n) {
+  if (e == nullptr) return {};
   std::vector<bool> reliable(n, false);
-  if (e == nullptr) return reliable;
   for (std::size_t i = 0; i < n && i < e->verdict.size(); ++i) reliable[i] = e->verdict[i] == "reliable";
   return reliable;
 }
@@ -32,7 +32,7 @@ std::vector<bool> reliable_records(const GlobalErrorEstimate* e, std::size_t n) 
 double allowance_at(const RunBalance& b, std::size_t q, const AccuracyCheck& c, const std::vector<bool>& reliable,
                     std::size_t i) {
   const double fallback = c.level * b.scale(q)[i] + b.round_off(q)[i];
-  if (!reliable[i] || c.bounds == nullptr || i >= (*c.bounds)[q].size()) return fallback;
+  if (reliable.empty() || !reliable[i] || c.bounds == nullptr || i >= (*c.bounds)[q].size()) return fallback;
   const double estimated = estimate_factor * (*c.bounds)[q][i], floor = estimate_floor * c.level * b.scale(q)[i];
   const double bound = std::max(estimated, floor) + b.round_off(q)[i];
   return std::isfinite(estimated) && std::isfinite(floor) && std::isfinite(bound) ? bound : fallback;
@@ -90,12 +90,13 @@ std::string check_accuracy(RunBalance& b, const AccuracyCheck& c) {
     const std::string relative = scale > 0 ? " (" + formatted("%.3g", r / scale) + " of its scale " +
                                                  formatted("%.3g", scale) + " " + unit + ")"
                                            : std::string();
+    const bool reliable_there = !reliable.empty() && reliable[worst];
     const std::string why =
-        reliable[worst] ? "beyond " + formatted("%g", estimate_factor) + " x the reliable global error estimate's bound (" +
-                              formatted("%.3g", worst_allowance) + " " + unit +
-                              " with round-off): the estimate is contradicted"
-                        : "beyond the level " + formatted("%g", c.level) +
-                              " of its scale (no reliable global error estimate there)";
+        reliable_there ? "beyond " + formatted("%g", estimate_factor) + " x the reliable global error estimate's bound (" +
+                             formatted("%.3g", worst_allowance) + " " + unit +
+                             " with round-off): the estimate is contradicted"
+                       : "beyond the level " + formatted("%g", c.level) +
+                             " of its scale (no reliable global error estimate there)";
     std::string name = balance_quantity_names[q];
     std::replace(name.begin(), name.end(), '_', ' ');
     std::string text = "the " + name + " balance is off by " + formatted("%.3g", r) + " " + unit + relative +
