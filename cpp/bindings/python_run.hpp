@@ -176,12 +176,12 @@ class LazyVerdicts {
     if (verdict_) return;
     const auto n = static_cast<py::ssize_t>(texts_.size());
     py::array_t<bool> reliable(n);
-    bool* is_reliable = reliable.mutable_data();
+    bool* reliable_at = reliable.mutable_data();
     py::tuple verdict(n);
     VerdictStrings strings;
     for (py::ssize_t i = 0; i < n; ++i) {
       const std::string& v = texts_[static_cast<std::size_t>(i)];
-      is_reliable[i] = v == "reliable";
+      reliable_at[i] = is_reliable(v);
       verdict[i] = strings(v);
     }
     py_io::set_read_only(reliable);
@@ -224,14 +224,14 @@ inline GlobalError to_batch_global_error(BatchErrorEstimate&& e) {
   const auto N = static_cast<py::ssize_t>(e.samples), n = static_cast<py::ssize_t>(e.records);
   const std::vector<py::ssize_t> state_shape{N, n, static_cast<py::ssize_t>(e.bodies)};
   py::array_t<bool> reliable({N, n});
-  bool* is_reliable = reliable.mutable_data();  // C-contiguous (N, n)
+  bool* reliable_at = reliable.mutable_data();  // C-contiguous (N, n)
   VerdictStrings texts;
   py::tuple verdict(N);
   for (py::ssize_t i = 0; i < N; ++i) {
     py::tuple row(n);
     for (py::ssize_t k = 0; k < n; ++k) {
       const std::string& v = e.verdict[static_cast<std::size_t>(i * n + k)];
-      is_reliable[i * n + k] = v == "reliable";
+      reliable_at[i * n + k] = is_reliable(v);
       row[k] = texts(v);
     }
     verdict[i] = row;

@@ -23,7 +23,7 @@ std::string formatted(const char* spec, double x) {
 std::vector<bool> reliable_records(const GlobalErrorEstimate* e, std::size_t n) {
   if (e == nullptr) return {};
   std::vector<bool> reliable(n, false);
-  for (std::size_t i = 0; i < n && i < e->verdict.size(); ++i) reliable[i] = e->verdict[i] == "reliable";
+  for (std::size_t i = 0; i < n && i < e->verdict.size(); ++i) reliable[i] = is_reliable(e->verdict[i]);
   return reliable;
 }
 

@@ -287,7 +287,7 @@ void append_blend(GlobalErrorEstimate& out, const CommonTable& common, std::size
   out.observed_order.push_back(nan);
   const std::string& va = common.verdict[a];
   const std::string& vb = common.verdict[b];
-  out.verdict.push_back(va != "reliable" ? va : (vb != "reliable" ? vb : how));
+  out.verdict.push_back(!is_reliable(va) ? va : (!is_reliable(vb) ? vb : how));
 }
 
 // Appends row a of `common` scaled by s (its verdict if not reliable, else `how`): the blend of a zero estimate and a.
@@ -303,7 +303,7 @@ void append_scaled(GlobalErrorEstimate& out, const CommonTable& common, std::siz
   out.energy.push_back(mix(common.energy[a]));
   out.angular_momentum.push_back(mix(common.angular_momentum[a]));
   out.observed_order.push_back(nan);
-  out.verdict.push_back(common.verdict[a] != "reliable" ? common.verdict[a] : how);
+  out.verdict.push_back(!is_reliable(common.verdict[a]) ? common.verdict[a] : how);
 }
 
 // Appends row a of `common`.
@@ -401,9 +401,9 @@ ErrorRecords error_records(const SceneSimulation& r) {
   out.energy = r.total_energy.data(), out.energy_scale = r.kinetic_energy.data();
   const std::size_t rows = out.n * static_cast<std::size_t>(out.bodies);
   const bool scaled = r.mass.size() == rows && r.angular_momentum_O_W.size() == 3 * rows;  // else |L| itself
-  out.momentum.reserve(out.n), out.momentum_scale.reserve(scaled ? out.n : 0), out.balance.reserve(out.n);
+  out.momentum.resize(out.n), out.momentum_scale.resize(scaled ? out.n : 0);
   for (std::size_t i = 0; i < out.n; ++i) {
-    out.momentum.push_back(Eigen::Map<const Eigen::Vector3d>(r.angular_momentum_W.data() + 3 * i).norm());
+    out.momentum[i] = Eigen::Map<const Eigen::Vector3d>(r.angular_momentum_W.data() + 3 * i).norm();
     if (!scaled) continue;
     double scale = 0.0;  // Σ |p_W × m v_W| bounded by |p_W| m |v_W|, + |H| of each body
     for (std::int64_t b = 0; b < out.bodies; ++b) {
@@ -411,7 +411,7 @@ ErrorRecords error_records(const SceneSimulation& r) {
       scale += vector3(r.p_W.data(), out, i, b).norm() * std::abs(r.mass[k]) * vector3(r.v_W.data(), out, i, b).norm() +
                vector3(r.angular_momentum_O_W.data(), out, i, b).norm();
     }
-    out.momentum_scale.push_back(scale);
+    out.momentum_scale[i] = scale;
   }
   // T − T(t0) = Σ work + Σ mass-flow energy + Σ motor work (SceneSimulation)
   const auto row_sum = [&](const std::vector<double>& table, std::size_t i) {
@@ -420,9 +420,10 @@ ErrorRecords error_records(const SceneSimulation& r) {
     return std::accumulate(table.begin() + i * width, table.begin() + (i + 1) * width, 0.0);
   };
   if (r.kinetic_energy.size() == out.n) {
+    out.balance.resize(out.n);
     for (std::size_t i = 0; i < out.n; ++i) {
-      out.balance.push_back(r.kinetic_energy[i] - row_sum(r.work, i) - row_sum(r.mass_flow_energy, i) -
-                            row_sum(r.motor_work, i));
+      out.balance[i] =
+          r.kinetic_energy[i] - row_sum(r.work, i) - row_sum(r.mass_flow_energy, i) - row_sum(r.motor_work, i);
     }
   }
   return out;
@@ -456,7 +457,7 @@ GlobalErrorEstimate estimate_global_error(const ErrorRecords& h, const ErrorReco
                                 : j >= h4.n ? "step beyond the stability limit: the run at 4h diverged"
                                             : std::string();
     estimate_common(h, h2, h4, i, j, step_of(i, answer), order, problem, common);
-    if (!opaque.empty() && common.verdict[j] == "reliable") {
+    if (!opaque.empty() && is_reliable(common.verdict[j])) {
       common.verdict[j] = "not verified: " + opaque +
                           " may switch inside a step, which the runs at h, 2h and 4h can all miss alike";
     }

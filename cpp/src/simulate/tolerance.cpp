@@ -138,7 +138,7 @@ std::size_t first_unreliable(const GlobalErrorEstimate& e, ErrorMeasure measure,
   };
   for (std::size_t i = 0; i < e.verdict.size(); ++i) {
     const std::string& v = e.verdict[i];
-    if (v != "reliable" && v.compare(0, between.size(), between) != 0 && !above_the_window(v) &&
+    if (!is_reliable(v) && v.compare(0, between.size(), between) != 0 && !above_the_window(v) &&
         !(v.compare(0, 15, "not asymptotic:") == 0 && negligible(i))) {
       return i;
     }
