@@ -2,8 +2,8 @@
 (bench_call_overhead.py times the same calls, which a busy machine makes noisy).
 
 Each case runs in a fresh interpreter under valgrind --tool=callgrind twice, with N and N + 1000 calls of it
-in a loop; the difference of the two totals / 1000 is what one call costs (the import, the set-up and the
-interpreter's start cancel). PYTHONHASHSEED=0 and one BLAS thread make the counts repeat to the instruction.
+in a loop (20 and 60 for a run of 1000 steps, its estimate's per-record work included); the difference of the two
+totals / the extra calls is what one call costs (the import, the set-up and the interpreter's start cancel). PYTHONHASHSEED=0 and one BLAS thread make the counts repeat to the instruction.
 The bare call (RigidBody.mass, a property getter of a bound class) is the binding layer's floor.
 
     python bench/python/call_instructions.py           # every case
@@ -29,9 +29,12 @@ CASES = [
     "rd.step(BODY, STATE, dt=0.01, method='rk4', t=0.0)",
     "rd.simulate(BODY, STATE, 0.01, steps=10, error=False)",
     "rd.simulate(BODY, STATE, 0.01, steps=10)",
+    "rd.simulate(BODY, STATE, 0.01, steps=1000, error=False)",
+    "rd.simulate(BODY, STATE, 0.01, steps=1000)",
 ]
 BASE_CALLS = 200
 EXTRA_CALLS = 1000
+LONG_CALLS = (20, 40)  # the base and extra calls of a case of 1000 steps (a call costs ~100 short ones)
 
 
 def total_instructions(expression, calls, folder):
@@ -50,10 +53,12 @@ def total_instructions(expression, calls, folder):
 
 
 def per_call(expression, folder):
-    """Instructions of one call of `expression`: the difference of two runs of the loop, / EXTRA_CALLS."""
-    few = total_instructions(expression, BASE_CALLS, folder)
-    many = total_instructions(expression, BASE_CALLS + EXTRA_CALLS, folder)
-    return (many - few) / EXTRA_CALLS
+    """Instructions of one call of `expression`: the difference of two runs of the loop, / the extra calls
+    (EXTRA_CALLS over BASE_CALLS; LONG_CALLS for a run of 1000 steps)."""
+    base, extra = LONG_CALLS if "steps=1000" in expression else (BASE_CALLS, EXTRA_CALLS)
+    few = total_instructions(expression, base, folder)
+    many = total_instructions(expression, base + extra, folder)
+    return (many - few) / extra
 
 
 def main():
