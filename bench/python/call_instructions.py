@@ -3,7 +3,8 @@
 
 Each case runs in a fresh interpreter under valgrind --tool=callgrind twice, with N and N + 1000 calls of it
 in a loop (20 and 60 for a run of 1000 steps, its estimate's per-record work included); the difference of the two
-totals / the extra calls is what one call costs (the import, the set-up and the interpreter's start cancel). PYTHONHASHSEED=0 and one BLAS thread make the counts repeat to the instruction.
+totals / the extra calls is what one call costs (the import, the set-up and the interpreter's start cancel).
+PYTHONHASHSEED=0 and one BLAS thread make the counts repeat to the instruction.
 The bare call (RigidBody.mass, a property getter of a bound class) is the binding layer's floor.
 
     python bench/python/call_instructions.py           # every case

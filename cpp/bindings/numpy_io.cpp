@@ -11,8 +11,9 @@
 
 namespace rigiddyn::py_io {
 
-// A double is not finite iff its 11 exponent bits are all ones, that is iff adding one to its exponent field carries into the sign bit: integer operations without a branch per
-// entry, which the compiler vectorises (a test with an exit per entry runs one entry at a time).
+// A double is not finite iff its 11 exponent bits are all ones, that is iff adding one to its exponent field carries
+// into the sign bit: integer operations without a branch per entry, which the compiler vectorises (a test with an
+// exit per entry runs one entry at a time).
 bool all_finite(const double* p, py::ssize_t size) {
   constexpr std::uint64_t exponent = 0x7ff0000000000000, exponent_one = 0x0010000000000000, sign = 0x8000000000000000;
   const auto carry = [p](py::ssize_t i) {
