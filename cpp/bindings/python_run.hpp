@@ -128,36 +128,43 @@ inline void to_scalar_first(std::vector<double>& q_xyzw) {
   }
 }
 
-// The Python str of each verdict of an estimate, equal verdicts sharing one: the last few distinct ones are
-// compared first (a run's records alternate between a few verdicts, e.g. "reliable" and "interpolated ..."), the
-// others looked up in a dict.
+// One Python str per distinct verdict text (a dict from text to str), shared by every record that reads it.
 class VerdictStrings {
  public:
   pybind11::object operator()(const std::string& verdict) {
-    for (const auto& [text, object] : recent_) {
-      if (text == verdict) return object;
-    }
     const pybind11::str text(verdict);
     if (!all_.contains(text)) all_[text] = text;
-    pybind11::object object = all_[text];
-    recent_[next_] = {verdict, object};
-    next_ = (next_ + 1) % recent_.size();
-    return object;
+    return all_[text];
   }
 
  private:
   pybind11::dict all_;
-  std::array<std::pair<std::string, pybind11::object>, 4> recent_;
-  std::size_t next_ = 0;
 };
+
+// Fills verdict[first + k] and reliable_at[first + k] for the n records of `verdicts`: each distinct text made a
+// str once.
+inline void put_verdicts(const Verdicts& verdicts, VerdictStrings& strings, pybind11::tuple& verdict,
+                         bool* reliable_at, std::size_t first = 0) {
+  std::vector<pybind11::object> text_objects;
+  std::vector<char> text_reliable;
+  for (const std::string& text : verdicts.texts()) {
+    text_objects.push_back(strings(text));
+    text_reliable.push_back(is_reliable(text));
+  }
+  for (std::size_t i = 0; i < verdicts.size(); ++i) {
+    const std::uint32_t k = verdicts.text_index(i);
+    verdict[first + i] = text_objects[k];
+    reliable_at[first + i] = text_reliable[k] != 0;
+  }
+}
 
 // A GlobalError's verdicts as Python reads them, verdict (a tuple of str, equal verdicts sharing one; a batch's a
 // tuple of tuples) and reliable (verdict == "reliable", a read-only bool array): one run's made on their first read
-// from the core's strings, a batch's or an unpickled estimate's given made.
+// from the core's verdicts, a batch's or an unpickled estimate's given made.
 class LazyVerdicts {
  public:
   LazyVerdicts() = default;
-  explicit LazyVerdicts(std::vector<std::string>&& verdicts) : texts_(std::move(verdicts)) {}
+  explicit LazyVerdicts(Verdicts&& verdicts) : verdicts_(std::move(verdicts)) {}
   LazyVerdicts(pybind11::tuple verdict, pybind11::array_t<bool> reliable)
       : verdict_(std::move(verdict)), reliable_(std::move(reliable)) {}
 
@@ -174,22 +181,17 @@ class LazyVerdicts {
   void make() const {
     namespace py = pybind11;
     if (verdict_) return;
-    const auto n = static_cast<py::ssize_t>(texts_.size());
+    const auto n = static_cast<py::ssize_t>(verdicts_.size());
     py::array_t<bool> reliable(n);
-    bool* reliable_at = reliable.mutable_data();
     py::tuple verdict(n);
     VerdictStrings strings;
-    for (py::ssize_t i = 0; i < n; ++i) {
-      const std::string& v = texts_[static_cast<std::size_t>(i)];
-      reliable_at[i] = is_reliable(v);
-      verdict[i] = strings(v);
-    }
+    put_verdicts(verdicts_, strings, verdict, reliable.mutable_data());
     py_io::set_read_only(reliable);
     verdict_ = std::move(verdict), reliable_ = std::move(reliable);
-    texts_.clear();
+    verdicts_ = Verdicts();
   }
 
-  mutable std::vector<std::string> texts_;
+  mutable Verdicts verdicts_;
   mutable pybind11::object verdict_, reliable_;  // null until made
 };
 
@@ -229,11 +231,7 @@ inline GlobalError to_batch_global_error(BatchErrorEstimate&& e) {
   py::tuple verdict(N);
   for (py::ssize_t i = 0; i < N; ++i) {
     py::tuple row(n);
-    for (py::ssize_t k = 0; k < n; ++k) {
-      const std::string& v = e.verdict[static_cast<std::size_t>(i * n + k)];
-      reliable_at[i * n + k] = is_reliable(v);
-      row[k] = texts(v);
-    }
+    put_verdicts(e.verdict[static_cast<std::size_t>(i)], texts, row, reliable_at + i * n);
     verdict[i] = row;
   }
   py_io::set_read_only(reliable);

@@ -62,9 +62,9 @@ TEST(ToleranceModel, TheLargestErrorAndTheFirstUnreliableRecord) {
   EXPECT_EQ(largest_error(e, ErrorMeasure::energy), 2e-7);
   EXPECT_EQ(first_unreliable(e, ErrorMeasure::energy, 1e-6), 2u);
   // an order above the window over-estimates (accepted), one below it is not asymptotic (refused)
-  e.verdict[2] = "not asymptotic: observed order 4.6 where 4 is expected (energy)";
+  e.verdict.set(2, "not asymptotic: observed order 4.6 where 4 is expected (energy)");
   EXPECT_EQ(first_unreliable(e, ErrorMeasure::energy, 1e-6), 3u);
-  e.verdict[2] = "not asymptotic: observed order 3.2 where 4 is expected (energy)";
+  e.verdict.set(2, "not asymptotic: observed order 3.2 where 4 is expected (energy)");
   EXPECT_EQ(first_unreliable(e, ErrorMeasure::energy, 1e-6), 2u);
   // ... unless its estimate is negligible: 1e-7 <= 1e-5 / 16
   EXPECT_EQ(first_unreliable(e, ErrorMeasure::energy, 1e-5), 3u);
@@ -99,8 +99,8 @@ TEST(ToleranceModel, ACoarseRunBeyondTheStabilityLimitIsNeverCertified) {
   EXPECT_EQ(first_uncertified(e, ErrorMeasure::attitude, 1e-8), 4u);
   // ... but the run at 4h gained energy beyond |T| + |V| at record 3: its error is no power of h (the Foucault
   // pendulum at 1420 rk4 steps over an hour: estimate 1.8e-6 rad where the error is 0.02 rad)
-  e.verdict[3] = "step beyond the stability limit: the energy of the run at 4h departs from the run at 2h's by more "
-                 "than |T| + |V|";
+  e.verdict.set(3, "step beyond the stability limit: the energy of the run at 4h departs from the run at 2h's by "
+                   "more than |T| + |V|");
   EXPECT_EQ(first_uncertified(e, ErrorMeasure::attitude, 1e-8), 3u);
 }
 

@@ -39,9 +39,8 @@ void put_estimate(BatchErrorEstimate& out, std::size_t i, GlobalErrorEstimate&& 
   std::copy(e.energy.begin(), e.energy.end(), out.energy.begin() + i * n);
   std::copy(e.angular_momentum.begin(), e.angular_momentum.end(), out.angular_momentum.begin() + i * n);
   std::copy(e.observed_order.begin(), e.observed_order.end(), out.observed_order.begin() + i * n);
-  std::move(e.verdict.begin(), e.verdict.end(), out.verdict.begin() + i * n);
-  std::fill(out.verdict.begin() + i * n + e.verdict.size(), out.verdict.begin() + (i + 1) * n,
-            "no record: the run at h diverged");
+  Verdicts& verdict = out.verdict[i] = std::move(e.verdict);
+  while (verdict.size() < n) verdict.push_back("no record: the run at h diverged");
 }
 
 std::int64_t bodies_of(const BatchTrajectory&) { return 1; }
@@ -74,7 +73,7 @@ BatchErrorEstimate batch_error_estimate(const Batch& h, const Batch& h2, const B
   const std::size_t rows = h.samples * h.records, nb = static_cast<std::size_t>(out.bodies);
   for (auto* per_body : {&out.attitude, &out.angular_velocity, &out.position, &out.velocity}) per_body->assign(rows * nb, nan);
   for (auto* per_record : {&out.energy, &out.angular_momentum, &out.observed_order}) per_record->assign(rows, nan);
-  out.verdict.resize(rows);  // each sample's rows filled by put_estimate
+  out.verdict.resize(h.samples);  // each sample's filled by put_estimate
   // each sample writes only its own rows
   parallel_for(h.samples, threads, [&](std::size_t i, int) {
     const SampleModel& model = models[models.size() == 1 ? 0 : i];

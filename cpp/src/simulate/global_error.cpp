@@ -125,7 +125,7 @@ class CommonRecord {
     const double expected = expected_;
     const double r = d.d2 / d.d1;
     const bool inside = r >= expected / 1.5 && r <= highest;
-    const double distance = std::abs(std::log(r / expected));
+    const double distance = std::max(r / expected, expected / r);  // orders as |log(r / 2^p)| does
     // a quantity outside its window names the record before any inside it, then the furthest from 2^p
     if (std::make_pair(!inside, distance) > std::make_pair(worst_outside_, worst_distance_)) {
       worst_outside_ = !inside, worst_distance_ = distance, worst_r_ = r, worst_name_ = name;
@@ -271,59 +271,69 @@ std::array<std::vector<double>*, 4> per_body_arrays(GlobalErrorEstimate& e) {
   return {&e.attitude, &e.angular_velocity, &e.position, &e.velocity};
 }
 
-// Appends rows a and b of `common` blended, a·(1 − w) + b·w for each quantity, not checked: the verdict of the first
-// of a and b that is not reliable, else `how` (observed order NaN).
-void append_blend(GlobalErrorEstimate& out, const CommonTable& common, std::size_t a, std::size_t b, double w,
-                  const std::string& how) {
+// The verdicts of the common records as indices into out.verdict's texts, and whether each is reliable: a
+// record's verdict is then an index copied, not a text compared.
+struct CommonVerdicts {
+  std::vector<std::uint32_t> text;
+  std::vector<char> reliable;
+
+  CommonVerdicts(const CommonTable& common, Verdicts& out) {
+    for (const std::string& v : common.verdict) text.push_back(out.add_text(v)), reliable.push_back(is_reliable(v));
+  }
+  // The verdict of a record made from common records a and b (a == b: from a alone): the first of theirs that is
+  // not reliable, else `how`.
+  std::uint32_t first_unreliable_or(std::size_t a, std::size_t b, std::uint32_t how) const {
+    return !reliable[a] ? text[a] : (!reliable[b] ? text[b] : how);
+  }
+};
+
+// Row i of `out`: rows a and b of `common` blended, a·(1 − w) + b·w for each quantity, not checked (observed order
+// NaN).
+void put_blend(GlobalErrorEstimate& out, std::size_t i, const CommonTable& common, std::size_t a, std::size_t b,
+               double w) {
   const auto mix = [w](double x, double y) { return x * (1.0 - w) + y * w; };
   const std::size_t nb = common.nb;
   const auto states = common.states();
   const auto into = per_body_arrays(out);
-  for (std::size_t k = 0; k < nb; ++k) {
-    for (std::size_t q = 0; q < 4; ++q) into[q]->push_back(mix((*states[q])[a * nb + k], (*states[q])[b * nb + k]));
+  for (std::size_t q = 0; q < 4; ++q) {
+    for (std::size_t k = 0; k < nb; ++k) (*into[q])[i * nb + k] = mix((*states[q])[a * nb + k], (*states[q])[b * nb + k]);
   }
-  out.energy.push_back(mix(common.energy[a], common.energy[b]));
-  out.angular_momentum.push_back(mix(common.angular_momentum[a], common.angular_momentum[b]));
-  out.observed_order.push_back(nan);
-  const std::string& va = common.verdict[a];
-  const std::string& vb = common.verdict[b];
-  out.verdict.push_back(!is_reliable(va) ? va : (!is_reliable(vb) ? vb : how));
+  out.energy[i] = mix(common.energy[a], common.energy[b]);
+  out.angular_momentum[i] = mix(common.angular_momentum[a], common.angular_momentum[b]);
+  out.observed_order[i] = nan;
 }
 
-// Appends row a of `common` scaled by s (its verdict if not reliable, else `how`): the blend of a zero estimate and a.
-void append_scaled(GlobalErrorEstimate& out, const CommonTable& common, std::size_t a, double s,
-                   const std::string& how) {
+// Row i of `out`: row a of `common` scaled by s, the blend of a zero estimate and a (observed order NaN).
+void put_scaled(GlobalErrorEstimate& out, std::size_t i, const CommonTable& common, std::size_t a, double s) {
   const auto mix = [s](double y) { return 0.0 * (1.0 - s) + y * s; };
   const std::size_t nb = common.nb;
   const auto states = common.states();
   const auto into = per_body_arrays(out);
-  for (std::size_t k = 0; k < nb; ++k) {
-    for (std::size_t q = 0; q < 4; ++q) into[q]->push_back(mix((*states[q])[a * nb + k]));
+  for (std::size_t q = 0; q < 4; ++q) {
+    for (std::size_t k = 0; k < nb; ++k) (*into[q])[i * nb + k] = mix((*states[q])[a * nb + k]);
   }
-  out.energy.push_back(mix(common.energy[a]));
-  out.angular_momentum.push_back(mix(common.angular_momentum[a]));
-  out.observed_order.push_back(nan);
-  out.verdict.push_back(!is_reliable(common.verdict[a]) ? common.verdict[a] : how);
+  out.energy[i] = mix(common.energy[a]);
+  out.angular_momentum[i] = mix(common.angular_momentum[a]);
+  out.observed_order[i] = nan;
 }
 
-// Appends row a of `common`.
-void append(GlobalErrorEstimate& out, const CommonTable& common, std::size_t a) {
+// Row i of `out`: row a of `common`.
+void put(GlobalErrorEstimate& out, std::size_t i, const CommonTable& common, std::size_t a) {
   const std::size_t nb = common.nb;
   const auto states = common.states();
   const auto into = per_body_arrays(out);
   for (std::size_t q = 0; q < 4; ++q) {
-    for (std::size_t k = 0; k < nb; ++k) into[q]->push_back((*states[q])[a * nb + k]);  // reserved: no reallocation
+    for (std::size_t k = 0; k < nb; ++k) (*into[q])[i * nb + k] = (*states[q])[a * nb + k];
   }
-  out.energy.push_back(common.energy[a]);
-  out.angular_momentum.push_back(common.angular_momentum[a]);
-  out.observed_order.push_back(common.observed_order[a]);
-  out.verdict.push_back(common.verdict[a]);
+  out.energy[i] = common.energy[a];
+  out.angular_momentum[i] = common.angular_momentum[a];
+  out.observed_order[i] = common.observed_order[a];
 }
 
-// Room for n records of nb bodies.
-void reserve(GlobalErrorEstimate& out, std::size_t n, std::int64_t nb) {
-  for (auto* v : per_body_arrays(out)) v->reserve(n * nb);
-  for (auto* v : {&out.energy, &out.angular_momentum, &out.observed_order}) v->reserve(n);
+// Room for n records of nb bodies, their values NaN (a record without an estimate keeps them).
+void size(GlobalErrorEstimate& out, std::size_t n, std::int64_t nb) {
+  for (auto* v : per_body_arrays(out)) v->assign(n * nb, nan);
+  for (auto* v : {&out.energy, &out.angular_momentum, &out.observed_order}) v->assign(n, nan);
   out.verdict.reserve(n);
 }
 
@@ -463,29 +473,31 @@ GlobalErrorEstimate estimate_global_error(const ErrorRecords& h, const ErrorReco
     }
   }
   name_exponential_growth(common, h.t, stride);
-  reserve(out, h.n, h.bodies);
-  static const std::string between = "interpolated between the reliable records before and after it";
-  std::string after;  // the verdict of a record after the last common record, made at its first use
-  std::string none;  // the verdict of a record without an estimate, made at its first use
+  size(out, h.n, h.bodies);
+  const CommonVerdicts verdicts(common, out.verdict);
+  const std::uint32_t between = out.verdict.add_text("interpolated between the reliable records before and after it");
+  std::uint32_t after = 0, none = 0;  // the verdicts after the last common record and without an estimate
+  if (last > 0 && h.n - 1 > last * stride) {
+    after = out.verdict.add_text("extrapolated from the reliable record at t = " + seconds(h.t[last * stride]));
+  } else if (h.n > 1 && last == 0) {
+    none = out.verdict.add_text("no estimate: fewer than " + std::to_string(m) +
+                                " steps (the 2h and 4h runs have a state only every lcm(record_every, 4) steps)");
+  }
   for (std::size_t i = 0; i < h.n; ++i) {
     const std::size_t j = i / stride;
     if (i % stride == 0 && j <= last) {
-      append(out, common, j);
+      put(out, i, common, j);
+      out.verdict.push_back_text(verdicts.text[j]);
     } else if (j < last) {  // between common records j and j + 1
       const double tj = h.t[j * stride], tk = h.t[(j + 1) * stride];
-      append_blend(out, common, j, j + 1, (h.t[i] - tj) / (tk - tj), between);
+      put_blend(out, i, common, j, j + 1, (h.t[i] - tj) / (tk - tj));
+      out.verdict.push_back_text(verdicts.first_unreliable_or(j, j + 1, between));
     } else if (last > 0) {  // after the last common record: linear growth from t0
-      if (after.empty()) after = "extrapolated from the reliable record at t = " + seconds(h.t[last * stride]);
       const double t0 = h.t[0], tc = h.t[last * stride];
-      append_scaled(out, common, last, (h.t[i] - t0) / (tc - t0), after);
-    } else {  // no common record but the first: no estimate
-      for (auto* v : per_body_arrays(out)) v->insert(v->end(), nb, nan);
-      for (auto* v : {&out.energy, &out.angular_momentum, &out.observed_order}) v->push_back(nan);
-      if (none.empty()) {
-        none = "no estimate: fewer than " + std::to_string(m) +
-               " steps (the 2h and 4h runs have a state only every lcm(record_every, 4) steps)";
-      }
-      out.verdict.push_back(none);
+      put_scaled(out, i, common, last, (h.t[i] - t0) / (tc - t0));
+      out.verdict.push_back_text(verdicts.first_unreliable_or(last, last, after));
+    } else {  // no common record but the first: no estimate (NaN)
+      out.verdict.push_back_text(none);
     }
   }
   return out;
@@ -494,21 +506,22 @@ GlobalErrorEstimate estimate_global_error(const ErrorRecords& h, const ErrorReco
 GlobalErrorEstimate round_off_estimate(const ErrorRecords& h, const SimulationOptions& answer) {
   GlobalErrorEstimate out;
   out.order = 0, out.bodies = h.bodies;
-  reserve(out, h.n, h.bodies);
+  size(out, h.n, h.bodies);
+  const auto nb = static_cast<std::size_t>(std::max<std::int64_t>(h.bodies, 0));
   for (std::size_t i = 0; i < h.n; ++i) {
     const std::int64_t steps = step_of(i, answer);
-    for (std::int64_t b = 0; b < h.bodies; ++b) {
-      out.attitude.push_back(round_off_bound(1.0, steps));
-      out.angular_velocity.push_back(round_off_bound(vector3(h.w_B, h, i, b).norm(), steps));
-      out.position.push_back(round_off_bound(vector3(h.p_W, h, i, b).norm(), steps));
-      out.velocity.push_back(round_off_bound(vector3(h.v_W, h, i, b).norm(), steps));
+    for (std::size_t b = 0; b < nb; ++b) {
+      const auto body = static_cast<std::int64_t>(b);
+      out.attitude[i * nb + b] = round_off_bound(1.0, steps);
+      out.angular_velocity[i * nb + b] = round_off_bound(vector3(h.w_B, h, i, body).norm(), steps);
+      out.position[i * nb + b] = round_off_bound(vector3(h.p_W, h, i, body).norm(), steps);
+      out.velocity[i * nb + b] = round_off_bound(vector3(h.v_W, h, i, body).norm(), steps);
     }
-    out.energy.push_back(round_off_bound(energy_size_of(h, i), steps));
+    out.energy[i] = round_off_bound(energy_size_of(h, i), steps);
     const double momentum = h.momentum_scale.empty() ? h.momentum[i] : h.momentum_scale[i];
-    out.angular_momentum.push_back(round_off_bound(momentum, steps));
-    out.observed_order.push_back(nan);
-    out.verdict.push_back("reliable");
+    out.angular_momentum[i] = round_off_bound(momentum, steps);
   }
+  out.verdict.assign(h.n, reliable_verdict);
   return out;
 }
 

@@ -79,7 +79,7 @@ bool says_runs_unstable(const std::string& verdict) {
 
 void keep_stability_verdicts(const GlobalErrorEstimate& all, GlobalErrorEstimate& measure) {
   for (std::size_t i = 0; i < all.verdict.size() && i < measure.verdict.size(); ++i) {
-    if (says_runs_unstable(all.verdict[i])) measure.verdict[i] = all.verdict[i];
+    if (says_runs_unstable(all.verdict[i])) measure.verdict.set(i, all.verdict[i]);
   }
 }
 
@@ -166,7 +166,8 @@ std::size_t first_uncertified(const GlobalErrorEstimate& e, ErrorMeasure measure
   if (bad == e.verdict.size()) return bad;
   // a run that diverged, whose step is beyond the stability limit (a coarse run's energy ran away: its error is no
   // power of h, whatever the order its largest error shows) or has no estimate is never certified
-  for (const std::string& v : e.verdict) {
+  for (std::size_t i = 0; i < e.verdict.size(); ++i) {
+    const std::string& v = e.verdict[i];
     if (says_runs_unstable(v) || v.compare(0, 11, "no estimate") == 0) return bad;
   }
   if (std::isnan(largest_error(e, measure))) return bad;

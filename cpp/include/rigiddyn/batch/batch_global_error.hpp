@@ -29,7 +29,7 @@ struct BatchErrorEstimate {
   std::vector<double> energy;               // (N, n) [J]
   std::vector<double> angular_momentum;     // (N, n) [kg m²/s]
   std::vector<double> observed_order;       // (N, n)
-  std::vector<std::string> verdict;         // (N, n)
+  std::vector<Verdicts> verdict;            // (N,) sample i's n verdicts
 };
 
 // The records of sample i (its filled rows) in the layout the estimate reads.

@@ -31,6 +31,7 @@
 #pragma once
 #include "rigiddyn/scene/scene_simulation.hpp"
 #include "rigiddyn/simulate/simulate.hpp"
+#include "rigiddyn/simulate/verdicts.hpp"
 
 #include <cstdint>
 #include <string>
@@ -76,14 +77,8 @@ struct GlobalErrorEstimate {
   std::vector<double> energy;               // (n,) total energy [J]
   std::vector<double> angular_momentum;     // (n,) |L| [kg m²/s]
   std::vector<double> observed_order;       // (n,) log2 r of the quantity furthest from p (NaN: none measured)
-  std::vector<std::string> verdict;         // (n,) "reliable" or the reason the estimate is not
+  Verdicts verdict;                         // (n,) "reliable" or the reason the estimate is not
 };
-
-// The verdict of a record whose estimate is trusted.
-inline constexpr std::string_view reliable_verdict = "reliable";
-
-// Whether a record's verdict is reliable_verdict (its size compared first: a test per record, inline).
-inline bool is_reliable(const std::string& verdict) { return std::string_view(verdict) == reliable_verdict; }
 
 // The number of steps between two records where the answer, 2h and 4h runs all have a state:
 // m = lcm(record_every, 4).
