@@ -173,6 +173,7 @@ class BasicSceneModel {
     kinematics_.resize(bodies.size());
     wrenches_.resize(bodies.size());
     power_.resize(terms_.size());
+    find_term_runs();
     element_wrenches_.assign(terms_.size(), std::vector<BodyWrench>(bodies.size()));
     q_y_.assign(bodies.size(), -1);
     for_each_slot([&](const auto& s) { q_y_[s.body] = s.attitude_y(); });
@@ -726,10 +727,27 @@ class BasicSceneModel {
     fill_kinematics(y, all);
     for (BodyWrench& w : wrenches_) w.f_W.setZero(), w.tau_B.setZero();
     const double t = y[t_y_];
-    for (std::size_t e = 0; e < terms_.size(); ++e) {
-      power_[e] = std::visit([&](const auto& term) { return term.add_wrenches(t, kinematics_, wrenches_); }, terms_[e]);
+    for (const TermRun& run : term_runs_) {  // one dispatch per run, its terms' add_wrenches inlined in its loop
+      std::visit(
+          [&](const auto& first) {
+            using T = std::decay_t<decltype(first)>;
+            for (std::size_t e = run.first; e < run.last; ++e) {
+              power_[e] = std::get_if<T>(&terms_[e])->add_wrenches(t, kinematics_, wrenches_);
+            }
+          },
+          terms_[run.first]);
     }
     note_tree_wrenches();
+  }
+  // term_runs_ of terms_
+  void find_term_runs() {
+    for (std::size_t e = 0; e < terms_.size(); ++e) {
+      if (term_runs_.empty() || terms_[e].index() != terms_[term_runs_.back().first].index()) {
+        term_runs_.push_back({e, e + 1});
+      } else {
+        term_runs_.back().last = e + 1;
+      }
+    }
   }
   // each tree notes whether its links have a wrench (kinds/tree_slot.hpp note_wrenches), after wrenches_ are summed
   void note_tree_wrenches() const {
@@ -738,6 +756,11 @@ class BasicSceneModel {
 
   static constexpr std::size_t group_count = std::tuple_size_v<detail::SlotGroups>;
   std::vector<Term> terms_;
+  // the terms in runs of one kind, first … last − 1 (a scene's many springs one run: evaluate dispatches per run)
+  struct TermRun {
+    std::size_t first, last;
+  };
+  std::vector<TermRun> term_runs_;
   detail::SlotGroups slots_;       // the bodies, kind by kind
   std::array<std::uint8_t, group_count> present_{};  // the indices of the groups that hold a body, in order
   std::size_t present_count_ = 0;

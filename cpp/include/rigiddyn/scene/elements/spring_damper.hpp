@@ -10,6 +10,7 @@
 // zero only by coincidence) and V = ½ k ℓ0² stays continuous. Damping makes it velocity dependent: power
 // −c ℓ̇² beyond −dV/dt.
 #pragma once
+#include "rigiddyn/always_inline.hpp"
 #include "rigiddyn/check.hpp"
 #include "rigiddyn/scene/body.hpp"
 #include "rigiddyn/scene/body_kinematics.hpp"
@@ -118,7 +119,8 @@ class SpringDamperTerm {
 
   // Adds f_a, its moment on a, and −f_a with its moment on b (none for a world anchor); returns the power
   // f_a·(ẋ_a − ẋ_b) [W] (= Σ f_W·v_W + tau_B·w_B over both bodies).
-  double add_wrenches(double /*t*/, const std::vector<BodyKinematics>& kinematics, std::vector<BodyWrench>& wrenches) const {
+  RIGIDDYN_ALWAYS_INLINE double add_wrenches(double /*t*/, const std::vector<BodyKinematics>& kinematics,
+                                             std::vector<BodyWrench>& wrenches) const {
     // each end: its point x = p_W + R_WB r_B, its velocity ẋ (the body's twist at the point, point_velocity_W), and the
     // force there moved to the body's centre of mass, in B (Force::at_point(r_B, R_WBᵀ f))
     const BodyKinematics& a = kinematics[a_];
