@@ -64,8 +64,10 @@ struct CombinedDifferences {
 // (those of the quantity whose ratio r is furthest from 2^p, unless a run diverged).
 class CommonRecord {
  public:
-  CommonRecord(int order, std::string coarse_problem)
-      : order_(order), expected_(std::ldexp(1.0, order)), blocked_(std::move(coarse_problem)) {}
+  // expected = 2^order; coarse_problem: why the record is not reliable whatever its differences say (null: none)
+  CommonRecord(int order, double expected, const char* coarse_problem) : order_(order), expected_(expected) {
+    if (coarse_problem != nullptr) blocked_ = coarse_problem;
+  }
 
   // ε of one body's value of a quantity (its order checked with the other bodies', by check()).
   double estimate(const Differences& d) {
@@ -100,13 +102,14 @@ class CommonRecord {
   double observed_order() const { return std::log2(worst_r_); }
   int order() const { return order_; }
   double expected_ratio() const { return expected_; }
-  std::string verdict() const {
-    if (!blocked_.empty()) return blocked_;
-    if (!worst_outside_) return "reliable";
+  // Record j of `verdicts` becomes this record's verdict.
+  void put_verdict(Verdicts& verdicts, std::size_t j) const {
+    if (!blocked_.empty()) return verdicts.set(j, blocked_);
+    if (!worst_outside_) return verdicts.set(j, reliable_verdict);
     char text[192];  // formatted once, here: a record compares several quantities before it knows its worst
     std::snprintf(text, sizeof text, "not asymptotic: observed order %.2g where %d is expected (%s)", observed_order(),
                   order_, worst_name_);
-    return text;
+    verdicts.set(j, text);
   }
 
  private:
@@ -149,11 +152,13 @@ struct CommonTable {
   std::size_t nb;
   std::vector<double> attitude, angular_velocity, position, velocity;  // (rows, nb)
   std::vector<double> energy, angular_momentum, observed_order;        // (rows,)
-  std::vector<std::string> verdict;                                    // (rows,)
+  Verdicts verdict;                                                    // (rows,)
 
   CommonTable(std::size_t rows, std::size_t bodies)
       : nb(bodies), attitude(rows * bodies), angular_velocity(rows * bodies), position(rows * bodies),
-        velocity(rows * bodies), energy(rows), angular_momentum(rows), observed_order(rows, nan), verdict(rows) {}
+        velocity(rows * bodies), energy(rows), angular_momentum(rows), observed_order(rows, nan) {
+    verdict.assign(rows, reliable_verdict);
+  }
   std::size_t rows() const { return energy.size(); }
   // the four per-body arrays, in the order of GlobalErrorEstimate's
   std::array<std::vector<double>*, 4> states() { return {&attitude, &angular_velocity, &position, &velocity}; }
@@ -195,11 +200,12 @@ void check_balance(CommonRecord& record, const ErrorRecords& h, const ErrorRecor
   }
 }
 
-// Row j of `out`: the estimates of common record j (answer record i).
+// Row j of `out`: the estimates of common record j (answer record i), for a method of order `order`
+// (expected_ratio = 2^order).
 void estimate_common(const ErrorRecords& h, const ErrorRecords& h2, const ErrorRecords& h4, std::size_t i,
-                     std::size_t j, std::int64_t steps, int order, const std::string& coarse_problem,
+                     std::size_t j, std::int64_t steps, int order, double expected_ratio, const char* coarse_problem,
                      CommonTable& out) {
-  CommonRecord record(order, coarse_problem);
+  CommonRecord record(order, expected_ratio, coarse_problem);
   const std::int64_t nb = h.bodies;
   // the differences of a kind of quantity, body by body: their estimates, then their order checked together
   const auto kind = [&](std::vector<double>& estimates, const char* name, auto distance_of_body, auto size_of_body) {
@@ -256,7 +262,7 @@ void estimate_common(const ErrorRecords& h, const ErrorRecords& h2, const ErrorR
   out.angular_momentum[j] =
       record.invariant(differences(h, h2, h4, i, j, momentum_size, steps, momentum), "angular momentum");
   out.observed_order[j] = record.observed_order();
-  out.verdict[j] = record.verdict();
+  record.put_verdict(out.verdict, j);
 }
 
 // "0.25 s" (3 significant digits).
@@ -278,7 +284,11 @@ struct CommonVerdicts {
   std::vector<char> reliable;
 
   CommonVerdicts(const CommonTable& common, Verdicts& out) {
-    for (const std::string& v : common.verdict) text.push_back(out.add_text(v)), reliable.push_back(is_reliable(v));
+    std::vector<std::uint32_t> out_text;  // each distinct text of the common records' in out's texts
+    for (const std::string& v : common.verdict.texts()) out_text.push_back(out.add_text(v));
+    for (std::size_t j = 0; j < common.verdict.size(); ++j) {
+      text.push_back(out_text[common.verdict.text_index(j)]), reliable.push_back(is_reliable(common.verdict[j]));
+    }
   }
   // The verdict of a record made from common records a and b (a == b: from a alone): the first of theirs that is
   // not reliable, else `how`.
@@ -384,8 +394,8 @@ void name_exponential_growth(CommonTable& common, const double* t, std::size_t s
       const double scaled = sizes[k] / (tj * tj * tj * tj);
       if (scaled > 0.0 && scaled < least[k]) least[k] = scaled, least_t[k] = tj;
     }
-    std::string& verdict = common.verdict[j];
-    if (!past.empty() && verdict.rfind("not asymptotic", 0) == 0) verdict = past + verdict;
+    const std::string& verdict = common.verdict[j];
+    if (!past.empty() && verdict.rfind("not asymptotic", 0) == 0) common.verdict.set(j, past + verdict);
   }
 }
 
@@ -461,15 +471,16 @@ GlobalErrorEstimate estimate_global_error(const ErrorRecords& h, const ErrorReco
   const std::size_t last = h.n == 0 ? 0 : std::min((h.n - 1) / stride, static_cast<std::size_t>(answer.steps / m));
   const auto nb = static_cast<std::size_t>(std::max<std::int64_t>(h.bodies, 0));
   CommonTable common(h.n > 0 ? last + 1 : 0, nb);
+  const double expected_ratio = std::ldexp(1.0, order);
   for (std::size_t j = 0; j <= last && h.n > 0; ++j) {
     const std::size_t i = j * stride;
-    const std::string problem = j >= h2.n   ? "step beyond the stability limit: the run at 2h diverged"
-                                : j >= h4.n ? "step beyond the stability limit: the run at 4h diverged"
-                                            : std::string();
-    estimate_common(h, h2, h4, i, j, step_of(i, answer), order, problem, common);
+    const char* problem = j >= h2.n   ? "step beyond the stability limit: the run at 2h diverged"
+                          : j >= h4.n ? "step beyond the stability limit: the run at 4h diverged"
+                                      : nullptr;
+    estimate_common(h, h2, h4, i, j, step_of(i, answer), order, expected_ratio, problem, common);
     if (!opaque.empty() && is_reliable(common.verdict[j])) {
-      common.verdict[j] = "not verified: " + opaque +
-                          " may switch inside a step, which the runs at h, 2h and 4h can all miss alike";
+      common.verdict.set(j, "not verified: " + opaque +
+                                " may switch inside a step, which the runs at h, 2h and 4h can all miss alike");
     }
   }
   name_exponential_growth(common, h.t, stride);
