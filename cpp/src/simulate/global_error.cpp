@@ -306,7 +306,8 @@ void put_blend(GlobalErrorEstimate& out, std::size_t i, const CommonTable& commo
   const auto states = common.states();
   const auto into = per_body_arrays(out);
   for (std::size_t q = 0; q < 4; ++q) {
-    for (std::size_t k = 0; k < nb; ++k) (*into[q])[i * nb + k] = mix((*states[q])[a * nb + k], (*states[q])[b * nb + k]);
+    const std::vector<double>& from = *states[q];
+    for (std::size_t k = 0; k < nb; ++k) (*into[q])[i * nb + k] = mix(from[a * nb + k], from[b * nb + k]);
   }
   out.energy[i] = mix(common.energy[a], common.energy[b]);
   out.angular_momentum[i] = mix(common.angular_momentum[a], common.angular_momentum[b]);
