@@ -141,10 +141,9 @@ class VerdictStrings {
   pybind11::dict all_;
 };
 
-// Fills verdict[first + k] and reliable_at[first + k] for the n records of `verdicts`: each distinct text made a
-// str once.
+// Fills verdict[i] and reliable_at[i] for the n records of `verdicts`: each distinct text made a str once.
 inline void put_verdicts(const Verdicts& verdicts, VerdictStrings& strings, pybind11::tuple& verdict,
-                         bool* reliable_at, std::size_t first = 0) {
+                         bool* reliable_at) {
   std::vector<pybind11::object> text_objects;
   std::vector<char> text_reliable;
   for (const std::string& text : verdicts.texts()) {
@@ -153,8 +152,8 @@ inline void put_verdicts(const Verdicts& verdicts, VerdictStrings& strings, pybi
   }
   for (std::size_t i = 0; i < verdicts.size(); ++i) {
     const std::uint32_t k = verdicts.text_index(i);
-    verdict[first + i] = text_objects[k];
-    reliable_at[first + i] = text_reliable[k] != 0;
+    verdict[i] = text_objects[k];
+    reliable_at[i] = text_reliable[k] != 0;
   }
 }
 

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <stdexcept>
 #include <string>
 
 namespace rigiddyn {
@@ -54,6 +55,8 @@ TEST(Verdicts, SetAndAssignReplaceRecordsTexts) {
   EXPECT_TRUE(is_reliable(v[0]));
   EXPECT_FALSE(is_reliable(v[4]));
   EXPECT_FALSE(is_reliable("reliable "));
+  EXPECT_THROW(v.push_back_text(static_cast<std::uint32_t>(v.texts().size())), std::out_of_range);
+  EXPECT_EQ(v.size(), 5u);  // the bad index appended nothing
 }
 
 }  // namespace

@@ -100,7 +100,6 @@ class CommonRecord {
   }
 
   double observed_order() const { return std::log2(worst_r_); }
-  int order() const { return order_; }
   double expected_ratio() const { return expected_; }
   // Record j of `verdicts` becomes this record's verdict.
   void put_verdict(Verdicts& verdicts, std::size_t j) const {
@@ -342,7 +341,7 @@ void put(GlobalErrorEstimate& out, std::size_t i, const CommonTable& common, std
 }
 
 // Room for n records of nb bodies, their values NaN (a record without an estimate keeps them).
-void size(GlobalErrorEstimate& out, std::size_t n, std::int64_t nb) {
+void size_for_records(GlobalErrorEstimate& out, std::size_t n, std::int64_t nb) {
   for (auto* v : per_body_arrays(out)) v->assign(n * nb, nan);
   for (auto* v : {&out.energy, &out.angular_momentum, &out.observed_order}) v->assign(n, nan);
   out.verdict.reserve(n);
@@ -485,7 +484,7 @@ GlobalErrorEstimate estimate_global_error(const ErrorRecords& h, const ErrorReco
     }
   }
   name_exponential_growth(common, h.t, stride);
-  size(out, h.n, h.bodies);
+  size_for_records(out, h.n, h.bodies);
   const CommonVerdicts verdicts(common, out.verdict);
   const std::uint32_t between = out.verdict.add_text("interpolated between the reliable records before and after it");
   std::uint32_t after = 0, none = 0;  // the verdicts after the last common record and without an estimate
@@ -518,7 +517,7 @@ GlobalErrorEstimate estimate_global_error(const ErrorRecords& h, const ErrorReco
 GlobalErrorEstimate round_off_estimate(const ErrorRecords& h, const SimulationOptions& answer) {
   GlobalErrorEstimate out;
   out.order = 0, out.bodies = h.bodies;
-  size(out, h.n, h.bodies);
+  size_for_records(out, h.n, h.bodies);
   const auto nb = static_cast<std::size_t>(std::max<std::int64_t>(h.bodies, 0));
   for (std::size_t i = 0; i < h.n; ++i) {
     const std::int64_t steps = step_of(i, answer);

@@ -732,7 +732,7 @@ class BasicSceneModel {
           [&](const auto& first) {
             using T = std::decay_t<decltype(first)>;
             for (std::size_t e = run.first; e < run.last; ++e) {
-              power_[e] = std::get_if<T>(&terms_[e])->add_wrenches(t, kinematics_, wrenches_);
+              power_[e] = std::get_if<T>(&terms_[e])->add_wrenches(t, kinematics_, wrenches_);  // a run is one kind
             }
           },
           terms_[run.first]);

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <initializer_list>
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -47,8 +48,11 @@ class Verdicts {
   // The index of `verdict` in texts(), added if new: the text of the previous call is compared first (records
   // come in runs of one verdict), then an ordered index of the texts.
   std::uint32_t add_text(std::string_view verdict);
-  // Appends a record whose verdict is texts()[k] (k from add_text).
-  void push_back_text(std::uint32_t k) { text_of_record_.push_back(k); }
+  // Appends a record whose verdict is texts()[k] (k from add_text); std::out_of_range for a k that is no text's.
+  void push_back_text(std::uint32_t k) {
+    if (k >= texts_.size()) throw std::out_of_range("Verdicts::push_back_text: no text " + std::to_string(k));
+    text_of_record_.push_back(k);
+  }
 
  private:
   std::vector<std::string> texts_;
