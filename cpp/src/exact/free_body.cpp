@@ -68,11 +68,28 @@ Eigen::Quaterniond rotation_vector_to_quaternion(const Eigen::Vector3d& v) {
   return Eigen::Quaterniond(Eigen::AngleAxisd(angle, v / angle));
 }
 
-Eigen::Quaterniond about_z(double angle) {
-  return Eigen::Quaterniond(std::cos(0.5 * angle), 0.0, 0.0, std::sin(0.5 * angle));
+using HalfAngle = TorqueFreeSolution::HalfAngle;
+
+HalfAngle half_angle(double angle) { return {std::cos(0.5 * angle), std::sin(0.5 * angle)}; }
+
+// e^(i(a + b)/2) = e^(ia/2) e^(ib/2)
+HalfAngle operator*(const HalfAngle& a, const HalfAngle& b) { return {a.c * b.c - a.s * b.s, a.s * b.c + a.c * b.s}; }
+
+// e^(iθ/2), θ = atan2(im, re) ∈ (−π, π): the cosine (> 0) or the sine (with the sign of im) from the root of a
+// sum of like-signed terms, the other from sin θ = 2 sin(θ/2) cos(θ/2) (accurate at every θ)
+HalfAngle half_angle_of(double re, double im) {
+  const double r = std::sqrt(re * re + im * im);
+  if (re >= 0.0) {
+    const double c = std::sqrt((r + re) / (2.0 * r));
+    return {c, im / (2.0 * r * c)};
+  }
+  const double s = std::copysign(std::sqrt((r - re) / (2.0 * r)), im);
+  return {im / (2.0 * r * s), s};
 }
 
-// q_NQ of Z-X-Z angles (φ, θ, ψ) with θ and ψ read off m_Q = R_NQᵀ (0, 0, G):
+Eigen::Quaterniond about_z(const HalfAngle& half) { return Eigen::Quaterniond(half.c, 0.0, 0.0, half.s); }
+
+// q_NQ of Z-X-Z angles (φ, θ, ψ), φ given by its half-angle rotor, with θ and ψ read off m_Q = R_NQᵀ (0, 0, G):
 // m_Q = G (sin θ sin ψ, sin θ cos ψ, cos θ), θ ∈ [0, π], ψ = atan2(m_a, m_b) ∈ (−π, π]. The transverse
 // part comes as its magnitude rho = |(m_a, m_b)| (which may underflow: θ is then 0 or π to within it)
 // and its direction (x, y), any positive multiple of (m_a, m_b) not both 0 (so that a tiny transverse
@@ -80,7 +97,7 @@ Eigen::Quaterniond about_z(double angle) {
 // half-angle cosines and sines come algebraically (the larger of each pair by a square root of a sum of
 // like-signed terms, the other from sin x = 2 sin(x/2) cos(x/2)), accurate at both poles; then
 // Rz(φ) Rx(θ) Rz(ψ) = Rz(φ) (cθ cψ, sθ cψ, −sθ sψ, cθ sψ) with c·, s· of the half angles.
-Eigen::Quaterniond zxz_from_momentum(double phi, double x, double y, double r, double rho, double m_s) {
+Eigen::Quaterniond zxz_from_momentum(const HalfAngle& half_phi, double x, double y, double r, double rho, double m_s) {
   const double G = std::sqrt(rho * rho + m_s * m_s);
   double c_theta, s_theta;  // cos θ/2, sin θ/2 (both >= 0)
   if (m_s >= 0.0) {
@@ -99,7 +116,7 @@ Eigen::Quaterniond zxz_from_momentum(double phi, double x, double y, double r, d
     c_psi = x / (2.0 * r * s_psi);
   }
   const Eigen::Quaterniond tilt(c_theta * c_psi, s_theta * c_psi, -s_theta * s_psi, c_theta * s_psi);
-  return about_z(phi) * tilt;
+  return about_z(half_phi) * tilt;
 }
 
 double sign_of(double x) { return x < 0.0 ? -1.0 : 1.0; }
@@ -191,8 +208,8 @@ TorqueFreeSolution::TorqueFreeSolution(const Eigen::Matrix3d& I_B, const Eigen::
 }
 
 TorqueFreeSolution::TorqueFreeSolution(const PrincipalAxes& axes, const Eigen::Quaterniond& q_WB,
-                                       const Eigen::Vector3d& w_B, bool eager_complete_pi)
-    : I_principal_(axes.moments), R_BP_(axes.axes), pi_complete_known_(eager_complete_pi) {
+                                       const Eigen::Vector3d& w_B, bool for_many_times)
+    : I_principal_(axes.moments), R_BP_(axes.axes), pi_complete_known_(for_many_times) {
   q_WB0_ = q_WB.normalized();
   w_B0_ = w_B;
   const Eigen::Vector3d& I = I_principal_;
@@ -337,13 +354,23 @@ void TorqueFreeSolution::init_elliptic(const Eigen::Vector3d& I, const Eigen::Ve
 
   const Eigen::Vector3d mh_Q = R_PQ.transpose() * mh;
   init_phase(mh_Q, M_hat(2) * kc_hat, t[1]);
-  if (pi_complete_known_) pi_complete_ = complete_pi();
+  if (pi_complete_known_) {
+    pi_complete_ = complete_pi();
+    if (ThirdKindTheta::applies(n_, elliptic_)) {
+      third_kind_.emplace(n_, elliptic_, pi_complete_);
+      sigma_ = phi_sign;  // phi_pi_ S = 1 in magnitude (both are algebraic in the moments and the momentum)
+      const ThirdKindTheta::Phase at_w0 = third_kind_->phase(w0_, l0_ == 1.0 || l0_ == -1.0);
+      linear0_ = at_w0.linear;
+      const HalfAngle half = half_angle_of(at_w0.re, at_w0.im);
+      theta0_ = {half.c, -sigma_ * half.s};
+    }
+  }
   period_ = elliptic_.kc == 0.0 ? infinity : 4.0 * elliptic_.K / lambda_;
 
   q_BQ_ = Eigen::Quaterniond(R_BP_ * R_PQ);
   q_BQ_.normalize();
   const double x = times_pow2(mh_Q(0), -t_trans_), y = times_pow2(mh_Q(1), -t_trans_), r = std::sqrt(x * x + y * y);
-  q_WN_ = q_WB0_ * q_BQ_ * zxz_from_momentum(0.0, x, y, r, times_pow2(r, t_trans_), mh_Q(2)).conjugate();
+  q_WN_ = q_WB0_ * q_BQ_ * zxz_from_momentum({1.0, 0.0}, x, y, r, times_pow2(r, t_trans_), mh_Q(2)).conjugate();
 }
 
 // The phase u0 = l0 K + w0 (|w0| ≤ K/2) and the reduced Π at it, from the initial (sn, cn, dn) =
@@ -437,10 +464,24 @@ TorqueFreeState TorqueFreeSolution::state_elliptic(double t) const {
   l += l0_;
   const JacobiSnCnDn f_w = jacobi_ellipj_reduced(w, p);
   const double quarter = quarter_of(l);
+  const bool odd_quarter = quarter == 1.0 || quarter == 3.0;
+  if (third_kind_) return state_from_functions(half_phi_from_theta(t, l, w, odd_quarter), f_w, quarter);
   // Π(am u) − Π(am u0) = (l − l0) Π(n|m) + reduced Π(w) − reduced Π(w0)
-  double delta_pi = elliptic_f_pi_reduced(f_w, quarter == 1.0 || quarter == 3.0, n_, p).pi - pi0_;
+  double delta_pi = elliptic_f_pi_reduced(f_w, odd_quarter, n_, p).pi - pi0_;
   if (l != l0_) delta_pi += (l - l0_) * (pi_complete_known_ ? pi_complete_ : complete_pi());
-  return state_from_functions(phi_rate_ * t + phi_pi_ * delta_pi, f_w, quarter);
+  return state_from_functions(half_angle(phi_rate_ * t + phi_pi_ * delta_pi), f_w, quarter);
+}
+
+// e^(iφ/2) from the theta series: with reduced Π = (Π/K) w + S (linear + θ), θ = arg(re + i im), and
+// phi_pi_ S = σ = ±1 (Jacobi: e^(iφ) is e^(i·linear in t) times a quotient of theta functions),
+//   φ = phi_rate t + phi_pi [(l − l0) Π(n|m) + (Π/K)(w − w0)] + σ (linear − linear0) + σ (θ − θ0),
+// whose last term's half angle follows from (re, im) without an atan2
+TorqueFreeSolution::HalfAngle TorqueFreeSolution::half_phi_from_theta(double t, double l, double w, bool odd_quarter) const {
+  const ThirdKindTheta::Phase at_w = third_kind_->phase(w, odd_quarter);
+  const double linear = phi_rate_ * t + phi_pi_ * ((l - l0_) * pi_complete_ + third_kind_->slope() * (w - w0_)) +
+                        sigma_ * (at_w.linear - linear0_);
+  const HalfAngle half_theta = half_angle_of(at_w.re, at_w.im);
+  return half_angle(linear) * HalfAngle{half_theta.c, sigma_ * half_theta.s} * theta0_;
 }
 
 // On the separatrix (kc = 0): (sn, cn, dn) = (tanh u, sech u, sech u) and Π(am u, n|1) in elementary
@@ -451,14 +492,14 @@ TorqueFreeState TorqueFreeSolution::state_separatrix(double t) const {
   const double u = (lambda_t.hi + w0_) + lambda_t.lo;
   const double a = std::sqrt(-n_), sech = 1.0 / std::cosh(u), tanh = std::tanh(u);
   const double delta_pi = ((lambda_t.hi + lambda_t.lo) + (a * std::atan(a * tanh) - pi0_)) / (1.0 - n_);
-  return state_from_functions(phi_rate_ * t + phi_pi_ * delta_pi, {tanh, sech, sech}, 0.0);
+  return state_from_functions(half_angle(phi_rate_ * t + phi_pi_ * delta_pi), {tanh, sech, sech}, 0.0);
 }
 
-// ω and the attitude at the phase φ from the functions of the reduced argument w in the quarter
+// ω and the attitude at the phase φ (its half-angle rotor) from the functions of the reduced argument w in the quarter
 // (0..3) of u = l K + w: (sn, cn, dn)(u) = ±(sn, cn, dn)(w) for even quarters and
 // (±cd w, ∓kc sd w, kc nd w) for odd ones (DLMF Table 22.4.3), with the momentum's direction in the
 // (a, b) plane kept in the mantissas of the transverse amplitudes (M_ and kc_M_).
-TorqueFreeState TorqueFreeSolution::state_from_functions(double phi, const JacobiSnCnDn& f, double quarter) const {
+TorqueFreeState TorqueFreeSolution::state_from_functions(const HalfAngle& half_phi, const JacobiSnCnDn& f, double quarter) const {
   Eigen::Vector3d w_Q;
   double m_cn, m_sn, r, rho, m_s;  // (cn, sn) momentum direction and its norm, |transverse| and axial momentum (units of |m|)
   if (quarter == 0.0 || quarter == 2.0) {
@@ -482,8 +523,8 @@ TorqueFreeState TorqueFreeSolution::state_from_functions(double phi, const Jacob
     rho = times_pow2(r, t_trans_) * nd;
     m_s = kc_M_(1) * nd;
   }
-  const Eigen::Quaterniond q_NQ = cn_axis_ == 0 ? zxz_from_momentum(phi, m_cn, m_sn, r, rho, m_s)
-                                                : zxz_from_momentum(phi, m_sn, m_cn, r, rho, m_s);
+  const Eigen::Quaterniond q_NQ = cn_axis_ == 0 ? zxz_from_momentum(half_phi, m_cn, m_sn, r, rho, m_s)
+                                                : zxz_from_momentum(half_phi, m_sn, m_cn, r, rho, m_s);
   const Eigen::Quaterniond q_WB = q_WN_ * q_NQ * q_BQ_.conjugate();
   return {q_WB.normalized(), q_BQ_ * w_Q};
 }

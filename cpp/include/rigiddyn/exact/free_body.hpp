@@ -22,12 +22,14 @@
 // separatrix. Accuracy: a few ulps in ω and attitude at t = 0, growing as eps·|phase| with t.
 #pragma once
 #include "rigiddyn/exact/elliptic.hpp"
+#include "rigiddyn/exact/third_kind_theta.hpp"
 #include "rigiddyn/inertia/principal_axes.hpp"
 #include "rigiddyn/inertia/validity.hpp"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <optional>
 #include <string>
 
 namespace rigiddyn {
@@ -47,6 +49,13 @@ struct TorqueFreeState {
 
 class TorqueFreeSolution {
  public:
+  // e^(iφ/2) of an angle φ about z as (cos φ/2, sin φ/2): the precession angle, kept as this rotor where it
+  // comes from a theta function (ThirdKindTheta::phase)
+  struct HalfAngle {
+    double c;
+    double s;
+  };
+
   // I_B: rotational inertia about the centre of mass, expressed in B [kg m²], symmetric positive
   // definite and, under InertiaCheck::physical (the default, as every inertia in rigiddyn), satisfying
   // the triangle inequality I1 + I2 >= I3 on its principal moments (validity.hpp: a body exists with
@@ -85,9 +94,10 @@ class TorqueFreeSolution {
 
  private:
   friend class FreeRotationFlow;
-  // axes: the principal frame of the inertia (checked); q_WB, w_B unchecked; eager_complete_pi: compute Π(n|m) now (else only when an evaluation needs it)
+  // axes: the principal frame of the inertia (checked); q_WB, w_B unchecked; for_many_times: compute Π(n|m) and
+  // the theta series of the reduced Π now (else Π(n|m) only when an evaluation needs it, and Carlson's forms)
   TorqueFreeSolution(const PrincipalAxes& axes, const Eigen::Quaterniond& q_WB, const Eigen::Vector3d& w_B,
-                     bool eager_complete_pi);
+                     bool for_many_times);
   double complete_pi() const;
   TorqueFreeState evaluate(double t) const;  // state_at without its checks (NaN where a phase overflows)
   void init_rotation_about_axis(const Eigen::Vector3d& I_Q, const Eigen::Vector3d& axis_B, double I_axial);
@@ -99,7 +109,8 @@ class TorqueFreeSolution {
   TorqueFreeState state_about_axis(double t) const;
   TorqueFreeState state_elliptic(double t) const;
   TorqueFreeState state_separatrix(double t) const;
-  TorqueFreeState state_from_functions(double phi, const JacobiSnCnDn& f_w, double quarter) const;
+  TorqueFreeState state_from_functions(const HalfAngle& half_phi, const JacobiSnCnDn& f_w, double quarter) const;
+  HalfAngle half_phi_from_theta(double t, double l, double w, bool odd_quarter) const;
 
   TorqueFreeCase case_;
   Eigen::Vector3d I_principal_;
@@ -139,6 +150,12 @@ class TorqueFreeSolution {
   bool pi_complete_known_ = false;
   double pi_complete_ = 0.0;                        // Π(n|m) (if known)
   double pi0_ = 0.0;                                // reduced Π at w0 (the separatrix: a atan(a tanh u0))
+  // the reduced Π by its theta series, where they apply, in a solution made for many times (the public
+  // constructor): a few terms per time instead of a Carlson sequence; else elliptic_f_pi_reduced
+  std::optional<ThirdKindTheta> third_kind_;
+  double sigma_ = 1.0;                              // φ's coefficient of arg Θ, phi_pi_ S = ±1
+  double linear0_ = 0.0;                            // the linear part of arg Θ at w0
+  HalfAngle theta0_{1.0, 0.0};                      // e^(−iσ θ0/2), θ0 the rest of arg Θ at w0
   double phi_rate_ = 0.0;                           // G/I_s [rad/s]
   double phi_pi_ = 0.0;                             // coefficient of Π in φ [rad]
   bool parameters_in_range_ = true;                 // false: the elliptic parameters overflowed (evaluate gives NaN)
