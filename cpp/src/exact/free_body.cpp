@@ -356,10 +356,10 @@ void TorqueFreeSolution::init_elliptic(const Eigen::Vector3d& I, const Eigen::Ve
   init_phase(mh_Q, M_hat(2) * kc_hat, t[1]);
   if (pi_complete_known_) {
     pi_complete_ = complete_pi();
-    if (ThirdKindTheta::applies(n_, elliptic_)) {
-      third_kind_.emplace(n_, elliptic_, pi_complete_);
+    if (EllipticTheta::applies(n_, elliptic_)) {
+      theta_.emplace(n_, elliptic_, pi_complete_);
       sigma_ = phi_sign;  // phi_pi_ S = 1 in magnitude (both are algebraic in the moments and the momentum)
-      const ThirdKindTheta::Phase at_w0 = third_kind_->phase(w0_, l0_ == 1.0 || l0_ == -1.0);
+      const EllipticTheta::Phase at_w0 = theta_->evaluate(w0_, l0_ == 1.0 || l0_ == -1.0).phase;
       linear0_ = at_w0.linear;
       const HalfAngle half = half_angle_of(at_w0.re, at_w0.im);
       theta0_ = {half.c, -sigma_ * half.s};
@@ -462,10 +462,13 @@ TorqueFreeState TorqueFreeSolution::state_elliptic(double t) const {
     l += l_more;
   }
   l += l0_;
-  const JacobiSnCnDn f_w = jacobi_ellipj_reduced(w, p);
   const double quarter = quarter_of(l);
   const bool odd_quarter = quarter == 1.0 || quarter == 3.0;
-  if (third_kind_) return state_from_functions(half_phi_from_theta(t, l, w, odd_quarter), f_w, quarter);
+  if (theta_) {
+    const EllipticTheta::Evaluation at_w = theta_->evaluate(w, odd_quarter);
+    return state_from_functions(half_phi_from_theta(t, l, w, at_w.phase), at_w.f, quarter);
+  }
+  const JacobiSnCnDn f_w = jacobi_ellipj_reduced(w, p);
   // Π(am u) − Π(am u0) = (l − l0) Π(n|m) + reduced Π(w) − reduced Π(w0)
   double delta_pi = elliptic_f_pi_reduced(f_w, odd_quarter, n_, p).pi - pi0_;
   if (l != l0_) delta_pi += (l - l0_) * (pi_complete_known_ ? pi_complete_ : complete_pi());
@@ -476,9 +479,9 @@ TorqueFreeState TorqueFreeSolution::state_elliptic(double t) const {
 // phi_pi_ S = σ = ±1 (Jacobi: e^(iφ) is e^(i·linear in t) times a quotient of theta functions),
 //   φ = phi_rate t + phi_pi [(l − l0) Π(n|m) + (Π/K)(w − w0)] + σ (linear − linear0) + σ (θ − θ0),
 // whose last term's half angle follows from (re, im) without an atan2
-TorqueFreeSolution::HalfAngle TorqueFreeSolution::half_phi_from_theta(double t, double l, double w, bool odd_quarter) const {
-  const ThirdKindTheta::Phase at_w = third_kind_->phase(w, odd_quarter);
-  const double linear = phi_rate_ * t + phi_pi_ * ((l - l0_) * pi_complete_ + third_kind_->slope() * (w - w0_)) +
+TorqueFreeSolution::HalfAngle TorqueFreeSolution::half_phi_from_theta(double t, double l, double w,
+                                                                      const EllipticTheta::Phase& at_w) const {
+  const double linear = phi_rate_ * t + phi_pi_ * ((l - l0_) * pi_complete_ + theta_->slope() * (w - w0_)) +
                         sigma_ * (at_w.linear - linear0_);
   const HalfAngle half_theta = half_angle_of(at_w.re, at_w.im);
   return half_angle(linear) * HalfAngle{half_theta.c, sigma_ * half_theta.s} * theta0_;

@@ -22,10 +22,10 @@
 // the energies 9.4e-14, |H_G| 2.9e-15, |q| − 1 by 3.3e-16, the work 4.0e-15, but for a planar body under body-frame
 // loads in the kick–drift–kick methods, whose work moved by up to 3.3e-2 of its largest value: the layout counts
 // a kick's work as the kinetic energy it gives, T − T0 = work exactly, where the planar model integrated the power
-// along the drift, the two equal to the method's order); the torque-free closed form's third-kind integral from its
-// theta series and its precession angle's half-angle rotor without an atan2 (exact/third_kind_theta.hpp, for a
-// solution evaluated at many times: only the simulate lines of the 'exact' method on the principal- and
-// full-inertia bodies changed, by at most 4.2e-17 of their largest value).
+// along the drift, the two equal to the method's order); the torque-free closed form's Jacobi functions and
+// third-kind integral from theta series, and its precession angle's half-angle rotor without an atan2
+// (exact/elliptic_theta.hpp, for a solution evaluated at many times: only the simulate lines of the 'exact' method
+// on the principal- and full-inertia bodies changed, by at most 3.9e-16 of their largest value).
 // A case that throws (the 'exact' method refuses a torque) stores its message; the test checks it
 // still throws the same.
 #include "rigiddyn/integrators/method.hpp"

@@ -22,7 +22,7 @@
 // separatrix. Accuracy: a few ulps in ω and attitude at t = 0, growing as eps·|phase| with t.
 #pragma once
 #include "rigiddyn/exact/elliptic.hpp"
-#include "rigiddyn/exact/third_kind_theta.hpp"
+#include "rigiddyn/exact/elliptic_theta.hpp"
 #include "rigiddyn/inertia/principal_axes.hpp"
 #include "rigiddyn/inertia/validity.hpp"
 
@@ -50,7 +50,7 @@ struct TorqueFreeState {
 class TorqueFreeSolution {
  public:
   // e^(iφ/2) of an angle φ about z as (cos φ/2, sin φ/2): the precession angle, kept as this rotor where it
-  // comes from a theta function (ThirdKindTheta::phase)
+  // comes from a theta function (EllipticTheta::Phase)
   struct HalfAngle {
     double c;
     double s;
@@ -110,7 +110,7 @@ class TorqueFreeSolution {
   TorqueFreeState state_elliptic(double t) const;
   TorqueFreeState state_separatrix(double t) const;
   TorqueFreeState state_from_functions(const HalfAngle& half_phi, const JacobiSnCnDn& f_w, double quarter) const;
-  HalfAngle half_phi_from_theta(double t, double l, double w, bool odd_quarter) const;
+  HalfAngle half_phi_from_theta(double t, double l, double w, const EllipticTheta::Phase& at_w) const;
 
   TorqueFreeCase case_;
   Eigen::Vector3d I_principal_;
@@ -150,9 +150,10 @@ class TorqueFreeSolution {
   bool pi_complete_known_ = false;
   double pi_complete_ = 0.0;                        // Π(n|m) (if known)
   double pi0_ = 0.0;                                // reduced Π at w0 (the separatrix: a atan(a tanh u0))
-  // the reduced Π by its theta series, where they apply, in a solution made for many times (the public
-  // constructor): a few terms per time instead of a Carlson sequence; else elliptic_f_pi_reduced
-  std::optional<ThirdKindTheta> third_kind_;
+  // sn, cn, dn and the phase of Π by theta series, where they apply, in a solution made for many times (the public
+  // constructor): a few terms per time instead of the argument halving and a Carlson sequence; else
+  // jacobi_ellipj_reduced and elliptic_f_pi_reduced
+  std::optional<EllipticTheta> theta_;
   double sigma_ = 1.0;                              // φ's coefficient of arg Θ, phi_pi_ S = ±1
   double linear0_ = 0.0;                            // the linear part of arg Θ at w0
   HalfAngle theta0_{1.0, 0.0};                      // e^(−iσ θ0/2), θ0 the rest of arg Θ at w0
