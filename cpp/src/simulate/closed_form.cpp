@@ -34,9 +34,11 @@ void check_closed_form_loads(const std::vector<AppliedLoad>& loads, double t0) {
   }
 }
 
+// v's few coefficients at the end of out, one push_back each: the records are reserved
+// (reserved_scene_simulation), and a range insert of three or four doubles would call memmove per record
 template <class V>
 void append(std::vector<double>& out, const V& v) {
-  out.insert(out.end(), v.data(), v.data() + v.size());
+  for (Eigen::Index i = 0; i < v.size(); ++i) out.push_back(v[i]);
 }
 
 // The body's record at s = t − t0 of the closed form, with each element's work and power (gravity's and the
@@ -65,7 +67,7 @@ struct ClosedFormRecorder {
     const Eigen::Vector3d L = m * v_W, H_C = rotation.q_WB * h_B, H = p_W.cross(L) + H_C;
     append(out.linear_momentum_W, L);
     append(out.angular_momentum_W, H);
-    out.pivot_reaction_W.insert(out.pivot_reaction_W.end(), 3, 0.0);  // no pivot
+    append(out.pivot_reaction_W, Eigen::Vector3d::Zero());  // no pivot
     append(out.angular_momentum_O_W, H_C);
     out.mass.push_back(m);
     if (loads_element < 0) {
