@@ -214,6 +214,21 @@ TEST(AngularDistance, AccurateAtTinyAnglesAndNearPi) {
   }
 }
 
+TEST(AngularDistance, SmallAngleSeriesMatchesAtan2) {
+  // below |d_xyz| = 2^-9 |d_w| the series: within 2 ulps of 2 atan2(|d_xyz|, |d_w|) (the series' remainder is below
+  // 2^-57 relative; its three roundings and atan2's own make up the rest), on both sides of the switch
+  GaussianRandom rnd;
+  for (double angle : {1e-300, 1e-12, 1e-6, 1e-3, 0.9 * 0x1p-8, 1.1 * 0x1p-8}) {
+    for (int n = 0; n < 50; ++n) {
+      const Eigen::Quaterniond q_a = rnd.quaternion();
+      const Eigen::Quaterniond q_b = q_a * Eigen::Quaterniond(Eigen::AngleAxisd(angle, rnd.vector().normalized()));
+      const Eigen::Quaterniond d = q_a.conjugate() * q_b;
+      const double by_atan2 = 2.0 * std::atan2(d.vec().norm(), std::abs(d.w()));
+      EXPECT_NEAR(angular_distance(q_a, q_b), by_atan2, 4.0 * kEps * by_atan2) << angle;
+    }
+  }
+}
+
 // ---------------------------------------------------------------- Wahba's problem
 
 TEST(AlignVectors, RecoversAnExactRotation) {
