@@ -7,7 +7,9 @@
 // Measured (best of 3, shared 2-core machine, `build/<dir>/bench/bench_geometric --benchmark_min_time=0.2`):
 // implicit_midpoint 301, splitting_dlm 148, splitting_dlm_yoshida4 430, exact_flow_kick 572 (was 5670
 // before FreeRotationFlow and the duplication R_J), rk4 57 ns/step; exact_state 286 ns/evaluation
-// (was 1580); hand-written RK4 baseline ~90 ns/step.
+// (was 1580); hand-written RK4 baseline ~90 ns/step. Since (2026-12-05, `taskset -c 1`, three runs): exact_flow_kick
+// 203 ns/step by the addition theorems over a short step (was 538–550), exact_state 85 ns by the theta series (was
+// 258); docs/perf/exact.md.
 // The splittings' rotations by increments (|L| a round-off walk, not a drift), measured on 2026-11-23 as
 // rigiddyn/baseline, median of 3 runs each, before → after: splitting_dlm 1.47 → 1.52,
 // splitting_dlm_yoshida4 4.17 → 4.16 (`--benchmark_filter=splitting --benchmark_min_time=0.2`).

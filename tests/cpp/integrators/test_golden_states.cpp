@@ -25,7 +25,10 @@
 // along the drift, the two equal to the method's order); the torque-free closed form's Jacobi functions and
 // third-kind integral from theta series, and its precession angle's half-angle rotor without an atan2
 // (exact/elliptic_theta.hpp, for a solution evaluated at many times: only the simulate lines of the 'exact' method
-// on the principal- and full-inertia bodies changed, by at most 3.9e-16 of their largest value).
+// on the principal- and full-inertia bodies changed, by at most 3.9e-16 of their largest value); the exact free
+// flow's short steps by the addition theorems of the Jacobi functions and of Π (exact/free_body.hpp,
+// FreeRotationFlow: only the lines of exact_flow_kick and the step lines of 'exact' on the principal- and
+// full-inertia bodies changed, by at most 6.1e-14 of their largest value over a run).
 // A case that throws (the 'exact' method refuses a torque) stores its message; the test checks it
 // still throws the same.
 #include "rigiddyn/integrators/method.hpp"

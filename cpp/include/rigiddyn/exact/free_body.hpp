@@ -163,10 +163,16 @@ class TorqueFreeSolution {
 };
 
 // The exact torque-free rotation over one step, for a fixed inertia: the principal frame is computed
-// once here, and each advance() builds only what depends on the momentum (invariants, m, K, the
-// phase and Π at it) and evaluates the closed form at h: TorqueFreeSolution(I_B, q_WB, w_B).state_at(h)
-// to round-off, at a fraction of its cost (no eigen-decomposition, no complete Π(n|m) unless the step
-// crosses a half period of ω).
+// once here. A short step of an ordinary motion (distinct moments, ω neither near a principal axis nor near the
+// separatrix, |λ h| ≤ π/4, moderate magnitudes) advances by the addition theorems: the Jacobi functions at the
+// start are the momentum's own components over their amplitudes, those of the step λh come from its Maclaurin
+// series, their sum's from the addition theorem (DLMF 22.8.1–3), and the third-kind integral over the step from
+// Jacobi's addition of Π (Whittaker & Watson §22.74, at the imaginary point of n < 0):
+//   Π(am(u + v)) − Π(am u) = Π(am v) − S atan2(√(−n(m − n)(1 − n)) sn u sn v sn w, 1 − n sn² w + n sn u sn v cn w dn w),
+// w = u + v, S as in elliptic_theta.hpp: one Carlson evaluation at near-unit arguments and no inverse F of the
+// initial phase. Every other step builds the closed form from the momentum (TorqueFreeSolution without its
+// eigen-decomposition, no complete Π(n|m) unless the step crosses a half period of ω) and evaluates it at h. Both
+// give TorqueFreeSolution(I_B, q_WB, w_B).state_at(h) to round-off.
 class FreeRotationFlow {
  public:
   // I_B as for TorqueFreeSolution under InertiaCheck::allow_unrealizable (throws std::invalid_argument
@@ -180,8 +186,14 @@ class FreeRotationFlow {
   void advance(Eigen::Quaterniond& q_WB, Eigen::Vector3d& w_B, double h) const;
 
  private:
+  // The short step by the addition theorems (class comment); false, leaving q_WB and w_B alone, where it does not
+  // apply.
+  bool advance_short_step(Eigen::Quaterniond& q_WB, Eigen::Vector3d& w_B, double h) const;
+
   Eigen::Matrix3d I_B_;
   PrincipalAxes axes_;
+  bool distinct_moments_;        // the three principal moments farther apart than TorqueFreeSolution's 64 eps I3
+  Eigen::Quaterniond q_BQ_[2];   // the frame Q of the closed form in B: Q = P (L about axis 3), Q = (P2, P3, P1)
 };
 
 }  // namespace rigiddyn

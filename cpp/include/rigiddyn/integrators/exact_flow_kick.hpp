@@ -10,8 +10,9 @@
 //
 // ExactFlowKick: order 2 under loads (exact, to round-off, without couples); cost per step:
 //   2 derivative evaluations (kicks; 1 between records where the loads do not read the velocities: a run merges
-//   adjacent kicks, simulate/run_loop.hpp) + one FreeRotationFlow::advance (~0.5 µs: two Carlson
-//   R_F/R_J pairs, one sn/cn/dn, K; a few RK4 steps' worth). Conserves on a free body everything the exact flow conserves: energy,
+//   adjacent kicks, simulate/run_loop.hpp) + one FreeRotationFlow::advance (~0.2 µs, about two RK4 steps' worth: the
+//   addition theorems over a short step, one Carlson R_F/R_J pair at near-unit arguments; ~0.5 µs on the full path of
+//   long steps and extreme motions). Conserves on a free body everything the exact flow conserves: energy,
 //   |L|, spatial L_W, unit |q| (to round-off per step). Under loads: the kinetic-energy change
 //   equals the work of the kicks exactly; the translation is velocity Verlet (exact for a
 //   constant world-frame force and gravity).
