@@ -121,6 +121,74 @@ Eigen::Quaterniond zxz_from_momentum(const HalfAngle& half_phi, double x, double
 
 double sign_of(double x) { return x < 0.0 ? -1.0 : 1.0; }
 
+// The parameters of the elliptic motion (Landau & Lifshitz §37) from the ascending principal moments I, in a
+// common scale, and the invariants Δ_j = 4^t_j D_j (D1 > 0, D3 < 0, D2's sign the case, 0 in case A's form; 2^t_j a scale of the
+// momentum's two components transverse to axis j). Case A (D2 > 0, the momentum about axis 3): in Q = P,
+// ω_Q = (a_cn cn, a_sn sn, a_dn dn) up to the signs of the momentum's components; case B (D2 < 0): in the cyclic
+// relabelling Q = (P2, P3, P1), ω_Q = (a_sn sn, a_cn cn, a_dn dn). The cn and sn amplitudes come over 2^t_trans,
+// the dn amplitude and λ over 2^t_axis, kc² over 4^t_kc; m is exact.
+// R_PQ of case B's frame Q = (P2, P3, P1) (a cyclic relabelling, det +1)
+Eigen::Matrix3d cyclic_relabelling() {
+  Eigen::Matrix3d R_PQ;
+  R_PQ << 0, 0, 1,  //
+      1, 0, 0,      //
+      0, 1, 0;
+  return R_PQ;
+}
+
+struct EllipticMotion {
+  bool case_A;
+  double lambda, m, mc_hat, n;  // λ 2^−t_axis; m; kc² 4^−t_kc; the characteristic of Π
+  Eigen::Vector3d amplitude;    // (a_cn, a_sn, a_dn) > 0
+  Eigen::Vector3d I_cn_sn_dn;   // the moments about the cn, sn and dn axes
+  int cn_axis, sn_axis;         // the axes of Q whose rates go as cn and sn (the dn axis is 2)
+  double I_s, phi_sign;         // φ̇ = G/I_s + phi_sign (...) Π̇ (the axis the momentum circles)
+  int t_trans, t_axis, t_kc;
+
+  Eigen::Matrix3d R_PQ() const { return case_A ? Eigen::Matrix3d::Identity() : cyclic_relabelling(); }
+  // v_Q = R_PQᵀ v_P and v_P = R_PQ v_Q, as the permutations they are
+  Eigen::Vector3d to_Q(const Eigen::Vector3d& v_P) const {
+    return case_A ? v_P : Eigen::Vector3d(v_P(1), v_P(2), v_P(0));
+  }
+  Eigen::Vector3d to_P(const Eigen::Vector3d& v_Q) const {
+    return case_A ? v_Q : Eigen::Vector3d(v_Q(2), v_Q(0), v_Q(1));
+  }
+};
+
+inline EllipticMotion elliptic_motion(const Eigen::Vector3d& I, double D1, double D2, double D3, const int t[3]) {
+  const double I1 = I(0), I2 = I(1), I3 = I(2);
+  EllipticMotion e;
+  e.case_A = !(D2 < 0.0);  // the separatrix (D2 = 0) in case A's form
+  if (e.case_A) {
+    e.t_trans = t[2], e.t_axis = t[0], e.t_kc = t[1] - t[0];
+    e.amplitude << std::sqrt(-D3 / (I1 * (I3 - I1))), std::sqrt(-D3 / (I2 * (I3 - I2))), std::sqrt(D1 / (I3 * (I3 - I1)));
+    e.I_cn_sn_dn = I;
+    e.lambda = std::sqrt((I3 - I2) * D1 / (I1 * I2 * I3));
+    e.m = times_pow2((I2 - I1) * -D3 / ((I3 - I2) * D1), 2 * (t[2] - t[0]));
+    e.mc_hat = (I3 - I1) * D2 / ((I3 - I2) * D1);
+    e.n = -I3 * (I2 - I1) / (I1 * (I3 - I2));
+    e.cn_axis = 0, e.sn_axis = 1;
+    e.I_s = I3, e.phi_sign = 1.0;
+  } else {
+    e.t_trans = t[0], e.t_axis = t[2], e.t_kc = t[1] - t[2];
+    e.amplitude << std::sqrt(D1 / (I3 * (I3 - I1))), std::sqrt(D1 / (I2 * (I2 - I1))), std::sqrt(-D3 / (I1 * (I3 - I1)));
+    e.I_cn_sn_dn << I3, I2, I1;
+    e.lambda = std::sqrt((I2 - I1) * -D3 / (I1 * I2 * I3));
+    e.m = times_pow2((I3 - I2) * D1 / ((I2 - I1) * -D3), 2 * (t[0] - t[2]));
+    e.mc_hat = (I3 - I1) * -D2 / ((I2 - I1) * -D3);
+    e.n = -I1 * (I3 - I2) / (I3 * (I2 - I1));
+    e.sn_axis = 0, e.cn_axis = 1;
+    e.I_s = I1, e.phi_sign = -1.0;
+  }
+  return e;
+}
+
+// The factor of the reduced Π in the precession angle, φ(t) = (G/I_s) t + phi_pi [Π]_{u0}^{u}: the closed form's
+// −G Δ_s/(I_s (G² − B²) λ) simplified (G² − B² = I1(−Δ3)/(I3 − I1) in case A, I3 Δ1/(I3 − I1) in case B)
+double phi_pi_factor(const Eigen::Vector3d& I, const EllipticMotion& e, double G, double lambda) {
+  return e.phi_sign * (G * (I(2) - I(0)) / (I(0) * I(2) * lambda));
+}
+
 // |(a, b)|: the root of the sum of squares where the larger is above 2^-500 (then no square that matters
 // underflows), std::hypot below. The transverse mantissas are O(1) except a hair from the separatrix (kc below
 // ~1e-150), where past K/2 both are of the order of kc^{3/4} and their squares underflowed to a zero norm.
@@ -286,39 +354,15 @@ void TorqueFreeSolution::init_elliptic(const Eigen::Vector3d& I, const Eigen::Ve
   const double D2 = delta2_times_I1_I3(scaled(0, 1), scaled(2, 1), I).hi / (I1 * I3);
   case_ = D2 > 0.0 ? TorqueFreeCase::A : D2 < 0.0 ? TorqueFreeCase::B : TorqueFreeCase::separatrix;
 
-  int t_axis, t_kc;                 // exponents of the dn amplitude and of kc (t_trans_: cn, sn)
-  double lambda, m, kc, I_s, phi_sign;
-  Eigen::Vector3d A, I_cn_sn_dn;    // signed (cn, sn, dn) amplitudes of ω (× 2^(e + t)) and their moments
-  Eigen::Matrix3d R_PQ;
-  if (case_ != TorqueFreeCase::B) {
-    const double s = sign_of(mh(2));
-    const double sigma1 = case_ == TorqueFreeCase::separatrix ? sign_of(mh(0)) : 1.0;
-    t_trans_ = t[2], t_axis = t[0], t_kc = t[1] - t[0];
-    A << sigma1 * std::sqrt(-D3 / (I1 * (I3 - I1))), sigma1 * s * std::sqrt(-D3 / (I2 * (I3 - I2))),
-        s * std::sqrt(D1 / (I3 * (I3 - I1)));
-    I_cn_sn_dn = I;
-    lambda = std::sqrt((I3 - I2) * D1 / (I1 * I2 * I3));
-    m = times_pow2((I2 - I1) * -D3 / ((I3 - I2) * D1), 2 * (t[2] - t[0]));
-    kc = std::sqrt((I3 - I1) * D2 / ((I3 - I2) * D1));
-    n_ = -I3 * (I2 - I1) / (I1 * (I3 - I2));
-    R_PQ.setIdentity();
-    cn_axis_ = 0, sn_axis_ = 1;
-    I_s = I3, phi_sign = 1.0;
-  } else {
-    const double s = sign_of(mh(0));
-    t_trans_ = t[0], t_axis = t[2], t_kc = t[1] - t[2];
-    A << std::sqrt(D1 / (I3 * (I3 - I1))), s * std::sqrt(D1 / (I2 * (I2 - I1))), s * std::sqrt(-D3 / (I1 * (I3 - I1)));
-    I_cn_sn_dn << I3, I2, I1;
-    lambda = std::sqrt((I2 - I1) * -D3 / (I1 * I2 * I3));
-    m = times_pow2((I3 - I2) * D1 / ((I2 - I1) * -D3), 2 * (t[0] - t[2]));
-    kc = std::sqrt((I3 - I1) * -D2 / ((I2 - I1) * -D3));
-    n_ = -I1 * (I3 - I2) / (I3 * (I2 - I1));
-    R_PQ << 0, 0, 1,  // Q = (P2, P3, P1)
-        1, 0, 0,      //
-        0, 1, 0;
-    sn_axis_ = 0, cn_axis_ = 1;
-    I_s = I1, phi_sign = -1.0;
-  }
+  const EllipticMotion motion = elliptic_motion(I, D1, D2, D3, t);
+  const double s = sign_of(mh(motion.case_A ? 2 : 0));  // the sign of the rate about the axis the momentum circles
+  const double sigma1 = case_ == TorqueFreeCase::separatrix ? sign_of(mh(0)) : 1.0;  // there cn ≥ 0
+  t_trans_ = motion.t_trans, cn_axis_ = motion.cn_axis, sn_axis_ = motion.sn_axis, n_ = motion.n;
+  const int t_axis = motion.t_axis, t_kc = motion.t_kc;
+  const Eigen::Vector3d A = motion.case_A ? Eigen::Vector3d(sigma1 * motion.amplitude(0), sigma1 * s * motion.amplitude(1), s * motion.amplitude(2))
+                                     : Eigen::Vector3d(motion.amplitude(0), s * motion.amplitude(1), s * motion.amplitude(2));
+  const double lambda = motion.lambda;
+  double m = motion.m, kc = std::sqrt(motion.mc_hat);
   // In these units the amplitudes, λ and n are of the order of I3/I1 and their squares (I3/I1)²: beyond the
   // double range when the moments span more than ~1e150 and the momentum has a part along the smallest. Such a
   // motion is not formed (the elliptic integrals would receive infinities): evaluate() gives NaN and the public
@@ -342,23 +386,21 @@ void TorqueFreeSolution::init_elliptic(const Eigen::Vector3d& I, const Eigen::Ve
 
   const double G_hat = mh.norm();
   lambda_ = times_pow2(lambda, t_axis + e_w);
-  // φ(t) = (G/I_s) t − [G Δ_s/(I_s (G² − B²) λ)] [Π]_{u0}^{u}, the bracket's factor simplified
-  // (G² − B² = I1(−Δ3)/(I3 − I1) in case A, I3 Δ1/(I3 − I1) in case B) to ±G(I3 − I1)/(I1 I3 λ)
-  phi_rate_ = times_pow2(G_hat / I_s, e_w);
-  phi_pi_ = phi_sign * times_pow2(G_hat * (I3 - I1) / (I1 * I3 * lambda), -t_axis);
+  phi_rate_ = times_pow2(G_hat / motion.I_s, e_w);
+  phi_pi_ = times_pow2(phi_pi_factor(I, motion, G_hat, lambda), -t_axis);
   w_amplitude_ << times_pow2(A(0), t_trans_ + e_w), times_pow2(A(1), t_trans_ + e_w), times_pow2(A(2), t_axis + e_w);
   kc_w_amplitude_ << times_pow2(A(0) * kc_hat, t_trans_ + t_kc + e_w), times_pow2(A(2) * kc_hat, t_axis + t_kc + e_w);
-  const Eigen::Vector3d M_hat = I_cn_sn_dn.cwiseProduct(A);
+  const Eigen::Vector3d M_hat = motion.I_cn_sn_dn.cwiseProduct(A);
   M_ << M_hat(0), M_hat(1), times_pow2(M_hat(2), t_axis);
   kc_M_ << times_pow2(M_hat(0) * kc_hat, t_kc), times_pow2(M_hat(2) * kc_hat, t_axis + t_kc);
 
-  const Eigen::Vector3d mh_Q = R_PQ.transpose() * mh;
+  const Eigen::Vector3d mh_Q = motion.to_Q(mh);
   init_phase(mh_Q, M_hat(2) * kc_hat, t[1]);
   if (pi_complete_known_) {
     pi_complete_ = complete_pi();
     if (EllipticTheta::applies(n_, elliptic_)) {
       theta_.emplace(n_, elliptic_, pi_complete_);
-      sigma_ = phi_sign;  // phi_pi_ S = 1 in magnitude (both are algebraic in the moments and the momentum)
+      sigma_ = motion.phi_sign;  // phi_pi_ S = 1 in magnitude (both are algebraic in the moments and the momentum)
       const EllipticTheta::Phase at_w0 = theta_->evaluate(w0_, l0_ == 1.0 || l0_ == -1.0).phase;
       linear0_ = at_w0.linear;
       const HalfAngle half = half_angle_of(at_w0.re, at_w0.im);
@@ -367,7 +409,7 @@ void TorqueFreeSolution::init_elliptic(const Eigen::Vector3d& I, const Eigen::Ve
   }
   period_ = elliptic_.kc == 0.0 ? infinity : 4.0 * elliptic_.K / lambda_;
 
-  q_BQ_ = Eigen::Quaterniond(R_BP_ * R_PQ);
+  q_BQ_ = Eigen::Quaterniond(R_BP_ * motion.R_PQ());
   q_BQ_.normalize();
   const double x = times_pow2(mh_Q(0), -t_trans_), y = times_pow2(mh_Q(1), -t_trans_), r = std::sqrt(x * x + y * y);
   q_WN_ = q_WB0_ * q_BQ_ * zxz_from_momentum({1.0, 0.0}, x, y, r, times_pow2(r, t_trans_), mh_Q(2)).conjugate();
@@ -541,12 +583,8 @@ FreeRotationFlow::FreeRotationFlow(const Eigen::Matrix3d& I_B)
   const Eigen::Vector3d& I = axes_.moments;
   const double tol = 64.0 * epsilon * I(2);  // TorqueFreeSolution's: moments closer are one (symmetric body)
   distinct_moments_ = I(1) - I(0) > tol && I(2) - I(1) > tol;
-  Eigen::Matrix3d R_PQ;
-  R_PQ << 0, 0, 1,  // Q = (P2, P3, P1)
-      1, 0, 0,      //
-      0, 1, 0;
   q_BQ_[0] = Eigen::Quaterniond(axes_.axes).normalized();
-  q_BQ_[1] = Eigen::Quaterniond(axes_.axes * R_PQ).normalized();
+  q_BQ_[1] = Eigen::Quaterniond(axes_.axes * cyclic_relabelling()).normalized();
 }
 
 void FreeRotationFlow::advance(Eigen::Quaterniond& q_WB, Eigen::Vector3d& w_B, double h) const {
@@ -583,21 +621,10 @@ bool FreeRotationFlow::advance_short_step(Eigen::Quaterniond& q_WB, Eigen::Vecto
   const double D2 = L(0) * L(0) * (I1 - I2) / I1 + L(2) * L(2) * (I3 - I2) / I3;
   // near a principal axis (a transverse part below 2^-15 G) the full path keeps the transverse direction to the last bit
   if (!(D1 >= 0x1p-30 * G2 && -D3 >= 0x1p-30 * G2)) return false;
-  const bool case_A = D2 > 0.0;
-  double lambda, m, mc, n, a_cn, a_sn, a_dn, I_s, phi_sign;
-  if (case_A) {
-    lambda = std::sqrt((I3 - I2) * D1 / (I1 * I2 * I3));
-    m = (I2 - I1) * -D3 / ((I3 - I2) * D1), mc = (I3 - I1) * D2 / ((I3 - I2) * D1);
-    n = -I3 * (I2 - I1) / (I1 * (I3 - I2));
-    a_cn = std::sqrt(-D3 / (I1 * (I3 - I1))), a_sn = std::sqrt(-D3 / (I2 * (I3 - I2))), a_dn = std::sqrt(D1 / (I3 * (I3 - I1)));
-    I_s = I3, phi_sign = 1.0;
-  } else {
-    lambda = std::sqrt((I2 - I1) * -D3 / (I1 * I2 * I3));
-    m = (I3 - I2) * D1 / ((I2 - I1) * -D3), mc = (I3 - I1) * -D2 / ((I2 - I1) * -D3);
-    n = -I1 * (I3 - I2) / (I3 * (I2 - I1));
-    a_cn = std::sqrt(D1 / (I3 * (I3 - I1))), a_sn = std::sqrt(D1 / (I2 * (I2 - I1))), a_dn = std::sqrt(-D3 / (I1 * (I3 - I1)));
-    I_s = I1, phi_sign = -1.0;
-  }
+  const int t[3] = {0, 0, 0};  // the momentum's components are at most ~2: no scaling of the invariants
+  const EllipticMotion e = elliptic_motion(I, D1, D2, D3, t);
+  const double lambda = e.lambda, n = e.n;
+  double m = e.m, mc = e.mc_hat;
   // near the separatrix (kc below 2^-10) the full path keeps cn and dn to their relative precision past u = K
   if (!(mc >= 0x1p-20 && mc <= 1.0 && m >= 0.0)) return false;
   const double v = rigiddyn::times_pow2(lambda, e_w) * h;
@@ -607,10 +634,10 @@ bool FreeRotationFlow::advance_short_step(Eigen::Quaterniond& q_WB, Eigen::Vecto
   const EllipticParameter p{m, mc, kc, std::numeric_limits<double>::quiet_NaN()};  // K is not read below
 
   // the functions at u (the rates over their amplitudes) and at v, and the addition theorem (DLMF 22.8.1–3)
-  const Eigen::Vector3d w_Q = case_A ? w : Eigen::Vector3d(w(1), w(2), w(0));
+  const Eigen::Vector3d w_Q = e.to_Q(w);
   const double s = w_Q(2) < 0.0 ? -1.0 : 1.0;
-  const int cn_axis = case_A ? 0 : 1, sn_axis = 1 - cn_axis;
-  const double cn_u = w_Q(cn_axis) / a_cn, sn_u = std::min(std::max(s * w_Q(sn_axis) / a_sn, -1.0), 1.0);
+  const double a_cn = e.amplitude(0), a_sn = e.amplitude(1), a_dn = e.amplitude(2);
+  const double cn_u = w_Q(e.cn_axis) / a_cn, sn_u = std::min(std::max(s * w_Q(e.sn_axis) / a_sn, -1.0), 1.0);
   const double dn_u = s * w_Q(2) / a_dn;
   const JacobiSnCnDn f_v = jacobi_ellipj_reduced(v, p);
   const double den = 1.0 - m * sn_u * sn_u * f_v.sn * f_v.sn;
@@ -634,23 +661,21 @@ bool FreeRotationFlow::advance_short_step(Eigen::Quaterniond& q_WB, Eigen::Vecto
   const double delta_pi = pi_v - S * std::atan2(std::sqrt(-n * (m - n) * (1.0 - n)) * sn_u * f_v.sn * sn_w,
                                                 1.0 - n * sn_w * sn_w + n * sn_u * f_v.sn * cn_w * dn_w);
   const double G = std::sqrt(G2);
-  const double phi = rigiddyn::times_pow2(G / I_s, e_w) * h +
-                     phi_sign * (G * (I3 - I1) / (I1 * I3 * lambda)) * delta_pi;
+  const double phi = rigiddyn::times_pow2(G / e.I_s, e_w) * h + phi_pi_factor(I, e, G, lambda) * delta_pi;
 
   // the attitude: q_WB(h) = q_WB q_BQ R_NQ(0, m_Q(0))⁻¹ R_NQ(φ, m_Q(h)) q_BQ⁻¹ (the frame N about L fixed in W)
   Eigen::Vector3d w_Q_h;
-  w_Q_h(cn_axis) = a_cn * cn_w, w_Q_h(sn_axis) = s * a_sn * sn_w, w_Q_h(2) = s * a_dn * dn_w;
-  const Eigen::Vector3d I_Q = case_A ? I : Eigen::Vector3d(I2, I3, I1);
+  w_Q_h(e.cn_axis) = a_cn * cn_w, w_Q_h(e.sn_axis) = s * a_sn * sn_w, w_Q_h(2) = s * a_dn * dn_w;
+  const Eigen::Vector3d I_Q = e.to_Q(I);
   const auto momentum_attitude = [&](const HalfAngle& half_phi, const Eigen::Vector3d& rates_Q) {
     const Eigen::Vector3d m_Q = I_Q.cwiseProduct(rates_Q) / G;  // |m_Q| = 1 (to round-off)
     const double r = std::sqrt(m_Q(0) * m_Q(0) + m_Q(1) * m_Q(1));
     return zxz_from_momentum(half_phi, m_Q(0), m_Q(1), r, r, m_Q(2));
   };
-  const Eigen::Quaterniond& q_BQ = q_BQ_[case_A ? 0 : 1];
+  const Eigen::Quaterniond& q_BQ = q_BQ_[e.case_A ? 0 : 1];
   const Eigen::Quaterniond q_start = momentum_attitude({1.0, 0.0}, w_Q), q_end = momentum_attitude(half_angle(phi), w_Q_h);
   q_WB = (q_WB * q_BQ * q_start.conjugate() * q_end * q_BQ.conjugate()).normalized();
-  const Eigen::Vector3d w_P_h = case_A ? w_Q_h : Eigen::Vector3d(w_Q_h(2), w_Q_h(0), w_Q_h(1));
-  w_B = axes_.axes * times_pow2(w_P_h, e_w);
+  w_B = axes_.axes * times_pow2(e.to_P(w_Q_h), e_w);
   return true;
 }
 
