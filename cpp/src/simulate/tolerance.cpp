@@ -8,6 +8,7 @@
 
 #include <cstdio>
 #include <stdexcept>
+#include <string_view>
 
 namespace rigiddyn {
 
@@ -60,6 +61,17 @@ class MeasureRecords {
   std::vector<double> identity_, zeros_;
   ErrorRecords records_;
 };
+
+// Whether the verdict of some record of `verdicts` satisfies `says` (each distinct text read once).
+template <class Predicate>
+bool any_record_says(const Verdicts& verdicts, Predicate says) {
+  std::vector<char> said;
+  for (const std::string& text : verdicts.texts()) said.push_back(says(text));
+  for (std::size_t i = 0; i < verdicts.size(); ++i) {
+    if (said[verdicts.text_index(i)]) return true;
+  }
+  return false;
+}
 
 }  // namespace
 
@@ -129,7 +141,6 @@ bool above_the_window(const std::string& verdict) {
 }
 
 std::size_t first_unreliable(const GlobalErrorEstimate& e, ErrorMeasure measure, double tolerance) {
-  const std::string between = "interpolated between the reliable records";  // both neighbours checked
   const std::vector<double>& values = values_of(e, measure);
   const std::size_t width = width_of(e, measure);
   const auto negligible = [&](std::size_t i) {  // every estimate of record i <= tolerance / 16
@@ -138,12 +149,19 @@ std::size_t first_unreliable(const GlobalErrorEstimate& e, ErrorMeasure measure,
     }
     return true;
   };
+  // each distinct text read once: accepted, accepted where negligible (an order outside the window), or not
+  enum class Text : char { accepted, accepted_if_negligible, refused };
+  const std::string_view between = "interpolated between the reliable records";  // both neighbours checked
+  std::vector<Text> kind;
+  for (const std::string& v : e.verdict.texts()) {
+    const bool accepted = is_reliable(v) || v.compare(0, between.size(), between) == 0 || above_the_window(v);
+    kind.push_back(accepted ? Text::accepted
+                   : v.compare(0, 15, "not asymptotic:") == 0 ? Text::accepted_if_negligible
+                                                              : Text::refused);
+  }
   for (std::size_t i = 0; i < e.verdict.size(); ++i) {
-    const std::string& v = e.verdict[i];
-    if (!is_reliable(v) && v.compare(0, between.size(), between) != 0 && !above_the_window(v) &&
-        !(v.compare(0, 15, "not asymptotic:") == 0 && negligible(i))) {
-      return i;
-    }
+    const Text k = kind[e.verdict.text_index(i)];
+    if (k == Text::refused || (k == Text::accepted_if_negligible && !negligible(i))) return i;
   }
   return e.verdict.size();
 }
@@ -168,10 +186,10 @@ std::size_t first_uncertified(const GlobalErrorEstimate& e, ErrorMeasure measure
   if (bad == e.verdict.size()) return bad;
   // a run that diverged, whose step is beyond the stability limit (a coarse run's energy ran away: its error is no
   // power of h, whatever the order its largest error shows) or has no estimate is never certified
-  for (std::size_t i = 0; i < e.verdict.size(); ++i) {
-    const std::string& v = e.verdict[i];
-    if (says_runs_unstable(v) || v.compare(0, 11, "no estimate") == 0) return bad;
-  }
+  const bool never = any_record_says(e.verdict, [](const std::string& v) {
+    return says_runs_unstable(v) || v.compare(0, 11, "no estimate") == 0;
+  });
+  if (never) return bad;
   if (std::isnan(largest_error(e, measure))) return bad;
   return observed_order_of_largest(e, measure) >= e.order - std::log2(1.5) ? e.verdict.size() : bad;
 }
