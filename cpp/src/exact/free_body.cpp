@@ -121,12 +121,6 @@ Eigen::Quaterniond zxz_from_momentum(const HalfAngle& half_phi, double x, double
 
 double sign_of(double x) { return x < 0.0 ? -1.0 : 1.0; }
 
-// The parameters of the elliptic motion (Landau & Lifshitz §37) from the ascending principal moments I, in a
-// common scale, and the invariants Δ_j = 4^t_j D_j (D1 > 0, D3 < 0, D2's sign the case, 0 in case A's form; 2^t_j a scale of the
-// momentum's two components transverse to axis j). Case A (D2 > 0, the momentum about axis 3): in Q = P,
-// ω_Q = (a_cn cn, a_sn sn, a_dn dn) up to the signs of the momentum's components; case B (D2 < 0): in the cyclic
-// relabelling Q = (P2, P3, P1), ω_Q = (a_sn sn, a_cn cn, a_dn dn). The cn and sn amplitudes come over 2^t_trans,
-// the dn amplitude and λ over 2^t_axis, kc² over 4^t_kc; m is exact.
 // R_PQ of case B's frame Q = (P2, P3, P1) (a cyclic relabelling, det +1)
 Eigen::Matrix3d cyclic_relabelling() {
   Eigen::Matrix3d R_PQ;
@@ -136,6 +130,12 @@ Eigen::Matrix3d cyclic_relabelling() {
   return R_PQ;
 }
 
+// The parameters of the elliptic motion (Landau & Lifshitz §37) from the ascending principal moments I, in a
+// common scale, and the invariants Δ_j = 4^t_j D_j (D1 > 0, D3 < 0, D2's sign the case, 0 in case A's form; 2^t_j a scale of the
+// momentum's two components transverse to axis j). Case A (D2 > 0, the momentum about axis 3): in Q = P,
+// ω_Q = (a_cn cn, a_sn sn, a_dn dn) up to the signs of the momentum's components; case B (D2 < 0): in the cyclic
+// relabelling Q = (P2, P3, P1), ω_Q = (a_sn sn, a_cn cn, a_dn dn). The cn and sn amplitudes come over 2^t_trans,
+// the dn amplitude and λ over 2^t_axis, kc² over 4^t_kc; m is exact.
 struct EllipticMotion {
   bool case_A;
   double lambda, m, mc_hat, n;  // λ 2^−t_axis; m; kc² 4^−t_kc; the characteristic of Π
