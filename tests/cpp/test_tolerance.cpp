@@ -72,6 +72,29 @@ TEST(ToleranceModel, TheLargestErrorAndTheFirstUnreliableRecord) {
   EXPECT_TRUE(std::isnan(largest_error(e, ErrorMeasure::energy)));
 }
 
+TEST(ToleranceModel, AnEstimateIsAtRoundOffWhereNoRecordMeasuredAnOrder) {
+  GlobalErrorEstimate e;
+  const double nan = std::nan("");
+  e.observed_order = {nan, nan, nan};  // every difference at or below the round-off of the run at h
+  EXPECT_TRUE(at_round_off(e));
+  e.observed_order[1] = 4.0;  // one record measured its order: a truncation error
+  EXPECT_FALSE(at_round_off(e));
+}
+
+TEST(ToleranceModel, AnErrorFallingFasterThanItsOrderIsExtrapolatedAtItsObservedOrderUpToOneMore) {
+  GlobalErrorEstimate e;
+  e.order = 4;
+  e.attitude = {0.0, 1e-7};
+  const auto at_order = [&](double q) {
+    e.observed_order = {std::nan(""), q};  // the largest error's d2 / d1 = 2^q
+    return extrapolation_order(e, ErrorMeasure::attitude);
+  };
+  EXPECT_NEAR(at_order(4.6), 4.6, 1e-12);  // between p and p + 1: q
+  EXPECT_EQ(at_order(6.0), 5.0);           // above: p + 1
+  EXPECT_EQ(at_order(3.5), 4.0);           // below p: p (no step is made smaller than the order asks)
+  EXPECT_EQ(at_order(std::nan("")), 4.0);  // none measured (round-off): p
+}
+
 TEST(ToleranceModel, TheLargestErrorsOrderOverridesANoisyRecord) {
   GlobalErrorEstimate e;
   e.order = 4;

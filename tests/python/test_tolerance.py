@@ -46,6 +46,27 @@ def test_a_free_body_meets_the_tolerance_against_its_closed_form(inertia, w_B, d
     assert r.t[-1] == pytest.approx(duration, rel=1e-12)
 
 
+@pytest.mark.parametrize("inertia, w_B, duration", FREE_BODIES)
+def test_a_method_exact_on_a_torque_free_body_runs_at_the_fewest_steps(inertia, w_B, duration):
+    # exact_flow_kick and the closed form have no truncation error and no stability limit on a torque-free body:
+    # the planner's step is then not bounded by its pilot's (duration / 64), only by its fewest steps (16)
+    body = rd.RigidBody(1.0, list(inertia))
+    r = rd.simulate(body, rd.RigidBodyState(w_B=list(w_B)), duration=duration, tolerance=1e-6)
+    assert r.choice.method in ("exact", "exact_flow_kick") and r.choice.steps == 16
+    q, _ = rd.TorqueFreeSolution(np.diag(inertia), [0, 0, 0, 1], list(w_B)).state_at(np.asarray(r.t))
+    assert geodesic(np.asarray(r.body(0).q_WB), q).max() <= 1e-6  # certified <= tolerance (module docstring)
+
+
+def test_a_torque_keeps_the_step_of_the_pilot():
+    # under a body torque exact_flow_kick has a truncation error: no method is exact on the scene, and every step
+    # stays at most its pilot's
+    body = rd.RigidBody(1.0, [1.0, 2.0, 3.0])
+    push = rd.AppliedLoad(torque=[0.0, 0.0, 0.05], frame="body")
+    r = rd.simulate(body, rd.RigidBodyState(w_B=[0.1, 1.0, 0.1]), duration=20.0, tolerance=1e-6, loads=[push])
+    assert r.choice.met and r.choice.steps > 16
+    assert "exact on this scene" not in r.choice.reason
+
+
 @pytest.mark.parametrize("tolerance", [1e-2, 1.0])
 def test_a_kepler_orbit_meets_a_position_tolerance(tolerance):
     scene, initial, _ = rd.load_scene("kepler")

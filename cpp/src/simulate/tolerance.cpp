@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <cstdio>
 #include <stdexcept>
 #include <string_view>
@@ -194,6 +195,15 @@ std::size_t first_uncertified(const GlobalErrorEstimate& e, ErrorMeasure measure
   return observed_order_of_largest(e, measure) >= e.order - std::log2(1.5) ? e.verdict.size() : bad;
 }
 
+double extrapolation_order(const GlobalErrorEstimate& e, ErrorMeasure measure) {
+  const double p = e.order, q = observed_order_of_largest(e, measure);
+  return std::isfinite(q) ? std::clamp(q, p, p + 1.0) : p;
+}
+
+bool at_round_off(const GlobalErrorEstimate& e) {
+  return std::none_of(e.observed_order.begin(), e.observed_order.end(), [](double q) { return std::isfinite(q); });
+}
+
 double measure_scale(const ErrorRecords& r, ErrorMeasure measure) {
   if (measure == ErrorMeasure::attitude) return 1.0;
   double largest = 0.0;
@@ -271,6 +281,9 @@ std::string describe_choice(const ToleranceChoice& c, const PilotRun& chosen, st
                      format_number(c.dt) + " s: ";
   if (c.order == 0) {
     text += "the closed form, its round-off bound " + format_number(c.predicted_error) + " " + unit;
+  } else if (chosen.exact_on_scene) {
+    text += "exact on this scene (its pilot's estimate is the round-off bound at every record), predicted " +
+            format_number(c.predicted_error) + " " + unit;
   } else {
     text += "predicted " + format_number(c.predicted_error) + " " + unit + " (C dt^" + std::to_string(c.order) +
             " t with C = " + format_number(chosen.constant) + " from a pilot of " + std::to_string(chosen.steps) +

@@ -12,21 +12,25 @@
 // reliable), at most max_refinements times: a step that the short pilots called asymptotic may not be over the whole
 // horizon (a cluster's close encounters come later), and a halving is then a guess that the next certificate checks.
 //
-// Pilots: 16 steps over T/4 first; while the pilot's estimate is not reliable its horizon is halved (down to
-// T/32, the step with it) and then its steps doubled (up to 512). Its cost is that of ~28 steps whatever the
-// horizon, a small part of any run long enough to need a choice. Candidates are pruned by order before their
-// pilot: an order-p method needs ~(τ/scale)^(−1/p) steps per unit of the problem's time scale, times its
-// evaluations per step; one whose figure is above 8x the best candidate's is not piloted (unless it is exact on a
-// torque-free body: its error may be round-off).
+// Pilots: 16 steps over T/4 first; while the pilot's estimate is not reliable its horizon is halved (down to T/32, the
+// step with it) and then its steps doubled (up to 512). Its cost is that of ~28 steps whatever the horizon, a small
+// part of any run long enough to need a choice. A run's step is at most its pilot's (see below), except for a method
+// exact on the scene: one whose flow is exact without torques (exact_torque_free) and whose pilot's estimate is its
+// round-off bound at every record (a torque-free body) has no truncation error and no stability limit, and runs at the
+// fewest steps the planner gives a run (fewest_run_steps). Candidates are pruned by order before their pilot: an
+// order-p method needs ~(τ/scale)^(−1/p) steps per unit of the problem's time scale, times its evaluations per step;
+// one whose figure is above 8x the best candidate's is not piloted (unless it is exact on a torque-free body: its error
+// may be round-off).
 //
-// The short pilots rank the candidates; the chosen one (when its run has 64 steps or more) then runs over the
-// whole horizon at a quarter of its steps, and the largest error of that run, scaled by dt^p, sets the steps
-// without a growth model: the error can jump after the short pilot's span (a flip near a separatrix: measured
-// 10x above the linear growth from the first quarter). It records at the final run's common records, so that when
-// the final run takes exactly 4x its steps it is that run's 4h run: the final run and its estimate then cost 1.5x
-// the run instead of 1.75x, and the whole-horizon pilot (0.44x the final run with its 8h and 16h runs) costs a net
-// 0.19x, less than the refinement it spares (1.75x the run and more). The final run takes 4x its steps where the
-// steps it needs are between 6/7 of that and that (a cheaper run then with its own estimate would cost more).
+// The short pilots rank the candidates; the chosen one (when its run has 64 steps or more) then runs over the whole
+// horizon at a quarter of its steps, and the largest error of that run, scaled by dt^q (extrapolation_order: the order
+// q that error showed, in [p, p + 1]), sets the steps without a growth model: the error can jump after the short
+// pilot's span (a flip near a separatrix: measured 10x above the linear growth from the first quarter). It records at
+// the final run's common records, so that when the final run takes exactly 4x its steps it is that run's 4h run: the
+// final run and its estimate then cost 1.5x the run instead of 1.75x, and the whole-horizon pilot (0.44x the final run
+// with its 8h and 16h runs) costs a net 0.19x, less than the refinement it spares (1.75x the run and more). The final
+// run takes 4x its steps where the steps it needs are between 6/7 of that and that (a cheaper run then with its own
+// estimate would cost more).
 //
 // The method 'exact' (order 0, a closed form) has no truncation error: its error is the round-off bound of the
 // run, and its cost is per record, not per step. It runs at the step of the cheapest stepping candidate (so
@@ -106,6 +110,20 @@ double refined_step(double dt, int order, double measured, double target);
 // The refinements of a run to a tolerance after its first run, at most (each within the cost cap max_steps).
 inline constexpr int max_refinements = 3;
 
+// The order at which the error of a run of estimate e (order p) is extrapolated to a smaller step: its largest
+// error's observed order q (observed_order_of_largest) where that lies in [p, p + 1] (an error that fell faster
+// than dt^p from the estimate's run at 4h to the one at h, its leading term small at these steps), p + 1 above
+// it, and p below p or where none was measured. The certificate then checks the run the extrapolation chose.
+double extrapolation_order(const GlobalErrorEstimate& e, ErrorMeasure measure);
+
+// The fewest steps the planner gives a run over the whole horizon: the records of a method exact on the scene, and
+// of the closed form when no stepping plan sets them.
+inline constexpr std::int64_t fewest_run_steps = 16;
+
+// Whether an estimate is its round-off bound at every record: no record's order was measured (each difference of
+// the runs at h, 2h and 4h at or below the round-off of the run at h).
+bool at_round_off(const GlobalErrorEstimate& e);
+
 // "the refinement" (1), "2 refinements", ...
 std::string refinements_text(int refinements);
 
@@ -178,6 +196,7 @@ struct PilotRun {
   std::int64_t planned_steps = 0;         // the run it predicts for τ
   double planned_seconds = std::numeric_limits<double>::quiet_NaN();
   std::string verdict;                    // "used", or why not (pruned, not asymptotic ...)
+  bool exact_on_scene = false;            // its estimate the round-off bound at every record (fewest_run_steps)
 };
 
 // The choice and its outcome.
@@ -285,6 +304,7 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
         p.constant = error_constant(e, records, o.dt, request.measure);
         if (!std::isfinite(scale)) scale = std::max(measure_scale(records, request.measure), 1e-300);
         best_figure = std::min(best_figure, order_cost_figure(c.order, evaluations, request.tolerance / scale));
+        p.exact_on_scene = method_info(c.method).exact_torque_free && at_round_off(e);
         p.verdict = used;
         break;
       }
@@ -299,8 +319,10 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
     }
     if (p.verdict == used) {
       // at most the pilot's step: the pilot's own check ran at 2 dt_p and 4 dt_p, which the certificate's coarse
-      // runs then do not exceed (beyond them the pilot says nothing of stability)
-      const double dt = std::min(step_for_error(p.constant, p.order, T, target), p.dt);
+      // runs then do not exceed (beyond them the pilot says nothing of stability); a method exact on the scene has
+      // no stability limit
+      const double longest = p.exact_on_scene ? std::max(p.dt, T / static_cast<double>(fewest_run_steps)) : p.dt;
+      const double dt = std::min(step_for_error(p.constant, p.order, T, target), longest);
       p.planned_steps = steps_for(T, dt, m);
       p.planned_seconds = static_cast<double>(p.planned_steps) * p.seconds_per_step;
     }
@@ -316,7 +338,8 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
   for (const ToleranceCandidate& c : exact) {
     PilotRun p;
     p.method = c.method, p.order = 0;
-    const std::int64_t n = best != nullptr ? best->planned_steps : steps_for(T, T / 16.0, m);
+    const std::int64_t n =
+        best != nullptr ? best->planned_steps : steps_for(T, T / static_cast<double>(fewest_run_steps), m);
     SimulationOptions o = base;
     o.method = c.method, o.dt = T / 16.0, o.steps = 16, o.record_every = 1;
     const Records h = run(c, o);
@@ -403,14 +426,15 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
     // whatever its observed order (a step beyond the stability limit of a linear oscillation grows it as a power)
     const bool sized = p.error <= scale;
     if (bad == e.verdict.size() && !h.diverged && std::isfinite(p.error) && sized) {
-      const double dt = p.error > 0.0 ? o.dt * std::pow(target / p.error, 1.0 / chosen.order) : choice.dt;
+      const double order = extrapolation_order(e, request.measure);
+      const double dt = p.error > 0.0 ? o.dt * std::pow(target / p.error, 1.0 / order) : choice.dt;
       const std::int64_t needed = steps_for(T, std::min(dt, o.dt), m), reusing = 4 * o.steps;
       // 4x its steps reuses it (that run and its 2h run: 1.5x) where that costs less than a run of the steps
       // needed with its own estimate (1.75x)
       const bool reuse = needed <= reusing && 1.5 * static_cast<double>(reusing) <= 1.75 * static_cast<double>(needed);
       choice.steps = reuse ? reusing : needed, choice.dt = T / static_cast<double>(choice.steps);
       if (reuse) quarter = std::move(h);
-      choice.predicted_error = p.error * std::pow(choice.dt / o.dt, chosen.order);
+      choice.predicted_error = p.error * std::pow(choice.dt / o.dt, order);
       p.constant = error_constant(e, error_records(reuse ? *quarter : h), o.dt, request.measure);
       p.planned_steps = choice.steps;
       p.planned_seconds = static_cast<double>(choice.steps) * chosen.seconds_per_step;
