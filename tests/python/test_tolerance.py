@@ -53,6 +53,9 @@ def test_a_method_exact_on_a_torque_free_body_runs_at_the_fewest_steps(inertia, 
     body = rd.RigidBody(1.0, list(inertia))
     r = rd.simulate(body, rd.RigidBodyState(w_B=list(w_B)), duration=duration, tolerance=1e-6)
     assert r.choice.method in ("exact", "exact_flow_kick") and r.choice.steps == 16
+    # no other stepping method can take fewer steps: none is piloted
+    others = [p for p in r.choice.pilots if p["method"] in ("rk4", "rkmk4", "splitting_dlm_yoshida4")]
+    assert others and all(p["verdict"] == "not piloted: exact_flow_kick is exact on this scene" for p in others)
     q, _ = rd.TorqueFreeSolution(np.diag(inertia), [0, 0, 0, 1], list(w_B)).state_at(np.asarray(r.t))
     assert geodesic(np.asarray(r.body(0).q_WB), q).max() <= 1e-6  # certified <= tolerance (module docstring)
 
@@ -65,6 +68,7 @@ def test_a_torque_keeps_the_step_of_the_pilot():
     r = rd.simulate(body, rd.RigidBodyState(w_B=[0.1, 1.0, 0.1]), duration=20.0, tolerance=1e-6, loads=[push])
     assert r.choice.met and r.choice.steps > 16
     assert "exact on this scene" not in r.choice.reason
+    assert not any(p["verdict"].startswith("not piloted") for p in r.choice.pilots)
 
 
 @pytest.mark.parametrize("tolerance", [1e-2, 1.0])

@@ -17,7 +17,8 @@
 // part of any run long enough to need a choice. A run's step is at most its pilot's (see below), except for a method
 // exact on the scene: one whose flow is exact without torques (exact_torque_free) and whose pilot's estimate is its
 // round-off bound at every record (a torque-free body) has no truncation error and no stability limit, and runs at the
-// fewest steps the planner gives a run (fewest_run_steps). Candidates are pruned by order before their pilot: an
+// fewest steps the planner gives a run (fewest_run_steps); such a method is piloted first, and where it is exact
+// no other is piloted (none takes fewer steps). Candidates are pruned by order before their pilot: an
 // order-p method needs ~(τ/scale)^(−1/p) steps per unit of the problem's time scale, times its evaluations per step;
 // one whose figure is above 8x the best candidate's is not piloted (unless it is exact on a torque-free body: its error
 // may be round-off).
@@ -258,27 +259,15 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
   std::stable_sort(candidates.begin(), candidates.end(),
                    [](const ToleranceCandidate& a, const ToleranceCandidate& b) { return a.order > b.order; });
 
-  // the pilots
-  double scale = std::numeric_limits<double>::quiet_NaN(), best_figure = std::numeric_limits<double>::infinity();
-  std::vector<ToleranceCandidate> exact;
-  for (const ToleranceCandidate& c : candidates) {
-    PilotRun p;
+  // one candidate's pilot (see above), and the size of its measure (its records' measure_scale) where it is used
+  struct Piloted {
+    PilotRun run;
+    double scale = std::numeric_limits<double>::quiet_NaN();
+  };
+  const auto pilot_of = [&](const ToleranceCandidate& c) {
+    Piloted out_c;
+    PilotRun& p = out_c.run;
     p.method = c.method, p.order = c.order;
-    const int evaluations = method_info(c.method).evaluations;
-    if (c.order == 0) {
-      exact.push_back(c);
-      continue;
-    }
-    if (std::isfinite(scale) && candidates.size() > 1 && !method_info(c.method).exact_torque_free) {
-      const double figure = order_cost_figure(c.order, evaluations, request.tolerance / scale);
-      if (figure > 8.0 * best_figure) {
-        p.verdict = "pruned: order " + std::to_string(c.order) + " at a relative tolerance of " +
-                    format_number(request.tolerance / scale) + " (needs > 8x the steps x evaluations of order " +
-                    std::to_string(candidates.front().order) + ")";
-        choice.pilots.push_back(p);
-        continue;
-      }
-    }
     double span = T / 4.0;
     std::int64_t n = 16;
     for (int attempt = 0; attempt < 10; ++attempt) {
@@ -292,9 +281,9 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
         return r;
       };
       const Records h = timed(o);
-      if (out.interrupted) return out;
+      if (out.interrupted) return out_c;
       const GlobalErrorEstimate e = measured_global_error(h, o, c.order, timed, request.measure).measure;
-      if (out.interrupted) return out;
+      if (out.interrupted) return out_c;
       const ErrorRecords records = error_records(h);
       p.dt = o.dt, p.horizon = span, p.steps = n;
       p.error = e.verdict.empty() ? p.error : largest_error(e, request.measure);
@@ -302,11 +291,10 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
       const std::size_t bad = first_uncertified(e, request.measure, request.tolerance);
       if (bad == e.verdict.size() && !h.diverged) {
         p.constant = error_constant(e, records, o.dt, request.measure);
-        if (!std::isfinite(scale)) scale = std::max(measure_scale(records, request.measure), 1e-300);
-        best_figure = std::min(best_figure, order_cost_figure(c.order, evaluations, request.tolerance / scale));
+        out_c.scale = std::max(measure_scale(records, request.measure), 1e-300);
         p.exact_on_scene = method_info(c.method).exact_torque_free && at_round_off(e);
         p.verdict = used;
-        break;
+        return out_c;
       }
       p.verdict = "not asymptotic at dt = " + format_number(o.dt) + " s: " + (bad < e.verdict.size() ? e.verdict[bad] : "diverged");
       if (span > T / 32.0) {
@@ -317,7 +305,53 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
         break;
       }
     }
+    return out_c;
+  };
+
+  // the pilots: a method that may be exact on the scene first, since where one is no other method can take fewer
+  // steps than it (the fewest the planner gives a run), and none is piloted; then the others, highest order first
+  std::vector<std::optional<Piloted>> early(candidates.size());
+  std::string exact_on_scene;  // the name of the method exact on the scene, if one is
+  for (std::size_t i = 0; i < candidates.size() && exact_on_scene.empty(); ++i) {
+    if (candidates[i].order == 0 || !method_info(candidates[i].method).exact_torque_free) continue;
+    early[i] = pilot_of(candidates[i]);
+    if (out.interrupted) return out;
+    if (early[i]->run.exact_on_scene) exact_on_scene = method_info(candidates[i].method).name;
+  }
+  double scale = std::numeric_limits<double>::quiet_NaN(), best_figure = std::numeric_limits<double>::infinity();
+  std::vector<ToleranceCandidate> exact;
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    const ToleranceCandidate& c = candidates[i];
+    const int evaluations = method_info(c.method).evaluations;
+    if (c.order == 0) {
+      exact.push_back(c);
+      continue;
+    }
+    if (!early[i] && !exact_on_scene.empty()) {
+      PilotRun p;
+      p.method = c.method, p.order = c.order;
+      p.verdict = "not piloted: " + exact_on_scene + " is exact on this scene";
+      choice.pilots.push_back(p);
+      continue;
+    }
+    if (!early[i] && std::isfinite(scale) && candidates.size() > 1 && !method_info(c.method).exact_torque_free) {
+      const double figure = order_cost_figure(c.order, evaluations, request.tolerance / scale);
+      if (figure > 8.0 * best_figure) {
+        PilotRun p;
+        p.method = c.method, p.order = c.order;
+        p.verdict = "pruned: order " + std::to_string(c.order) + " at a relative tolerance of " +
+                    format_number(request.tolerance / scale) + " (needs > 8x the steps x evaluations of order " +
+                    std::to_string(candidates.front().order) + ")";
+        choice.pilots.push_back(p);
+        continue;
+      }
+    }
+    const Piloted piloted = early[i] ? *early[i] : pilot_of(c);
+    if (out.interrupted) return out;
+    PilotRun p = piloted.run;
     if (p.verdict == used) {
+      if (!std::isfinite(scale)) scale = piloted.scale;
+      best_figure = std::min(best_figure, order_cost_figure(c.order, evaluations, request.tolerance / scale));
       // at most the pilot's step: the pilot's own check ran at 2 dt_p and 4 dt_p, which the certificate's coarse
       // runs then do not exceed (beyond them the pilot says nothing of stability); a method exact on the scene has
       // no stability limit
