@@ -60,6 +60,13 @@ def test_a_method_exact_on_a_torque_free_body_runs_at_the_fewest_steps(inertia, 
     assert geodesic(np.asarray(r.body(0).q_WB), q).max() <= 1e-6  # certified <= tolerance (module docstring)
 
 
+def test_a_tolerance_near_the_round_off_of_an_exact_method_is_met_at_its_fewest_steps():
+    # exact_flow_kick on a torque-free body: its error is round-off, bounded by 8 eps per step (2.8e-14 rad after 16
+    # steps), which more steps would only grow
+    r = rd.simulate(BODY, STATE, duration=20.0, tolerance=1e-13, method="exact_flow_kick")
+    assert r.choice.met and r.choice.steps == 16 and r.choice.certified_error <= 16 * 8 * np.finfo(float).eps
+
+
 def test_a_torque_keeps_the_step_of_the_pilot():
     # under a body torque exact_flow_kick has a truncation error: no method is exact on the scene, and every step
     # stays at most its pilot's

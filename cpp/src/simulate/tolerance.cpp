@@ -282,7 +282,7 @@ std::string describe_choice(const ToleranceChoice& c, const PilotRun& chosen, st
   if (c.order == 0) {
     text += "the closed form, its round-off bound " + format_number(c.predicted_error) + " " + unit;
   } else if (chosen.exact_on_scene) {
-    text += "exact on this scene (its pilot's estimate is the round-off bound at every record), predicted " +
+    text += "exact on this scene (its pilot's estimate is the round-off bound at every record), its round-off bound " +
             format_number(c.predicted_error) + " " + unit;
   } else {
     text += "predicted " + format_number(c.predicted_error) + " " + unit + " (C dt^" + std::to_string(c.order) +

@@ -354,9 +354,9 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
       best_figure = std::min(best_figure, order_cost_figure(c.order, evaluations, request.tolerance / scale));
       // at most the pilot's step: the pilot's own check ran at 2 dt_p and 4 dt_p, which the certificate's coarse
       // runs then do not exceed (beyond them the pilot says nothing of stability); a method exact on the scene has
-      // no stability limit
-      const double longest = p.exact_on_scene ? std::max(p.dt, T / static_cast<double>(fewest_run_steps)) : p.dt;
-      const double dt = std::min(step_for_error(p.constant, p.order, T, target), longest);
+      // no stability limit, and its error is round-off, which fewer steps make smaller: the fewest steps
+      const double dt = p.exact_on_scene ? std::max(p.dt, T / static_cast<double>(fewest_run_steps))
+                                         : std::min(step_for_error(p.constant, p.order, T, target), p.dt);
       p.planned_steps = steps_for(T, dt, m);
       p.planned_seconds = static_cast<double>(p.planned_steps) * p.seconds_per_step;
     }
@@ -419,8 +419,11 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
   for (const PilotRun& p : choice.pilots) piloted += p.steps > 0 ? 1 : 0;
   choice.method = chosen.method, choice.order = chosen.order, choice.steps = chosen.planned_steps;
   choice.dt = T / static_cast<double>(choice.steps);
+  // a closed form's and an exact method's error: the round-off bound, which grows with the steps (records)
   choice.predicted_error = chosen.order == 0 ? chosen.error * static_cast<double>(choice.steps) / 16.0
-                                             : predicted_error(chosen.constant, chosen.order, choice.dt, T);
+                           : chosen.exact_on_scene
+                               ? chosen.error * static_cast<double>(choice.steps) / static_cast<double>(chosen.steps)
+                               : predicted_error(chosen.constant, chosen.order, choice.dt, T);
   choice.reason = describe_choice(choice, chosen, piloted);
   const ToleranceCandidate candidate{chosen.method, chosen.order};
   const auto checked = [&](const SimulationOptions& x) {
