@@ -114,7 +114,8 @@ inline constexpr int max_refinements = 3;
 // The order at which the error of a run of estimate e (order p) is extrapolated to a smaller step: its largest
 // error's observed order q (observed_order_of_largest) where that lies in [p, p + 1] (an error that fell faster
 // than dt^p from the estimate's run at 4h to the one at h, its leading term small at these steps), p + 1 above
-// it, and p below p or where none was measured. The certificate then checks the run the extrapolation chose.
+// it, and p below p or where none was measured (the error model C dt^q of Hairer, Nørsett & Wanner above, q measured
+// as global_error.hpp's observed order). The certificate then checks the run the extrapolation chose.
 double extrapolation_order(const GlobalErrorEstimate& e, ErrorMeasure measure);
 
 // The fewest steps the planner gives a run over the whole horizon: the records of a method exact on the scene, and
@@ -259,15 +260,20 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
   std::stable_sort(candidates.begin(), candidates.end(),
                    [](const ToleranceCandidate& a, const ToleranceCandidate& b) { return a.order > b.order; });
 
+  // a candidate's entry in choice.pilots, its verdict `verdict` (its figures NaN until a pilot sets them)
+  const auto pilot_entry = [](const ToleranceCandidate& c, std::string verdict) {
+    PilotRun p;
+    p.method = c.method, p.order = c.order, p.verdict = std::move(verdict);
+    return p;
+  };
   // one candidate's pilot (see above), and the size of its measure (its records' measure_scale) where it is used
   struct Piloted {
     PilotRun run;
     double scale = std::numeric_limits<double>::quiet_NaN();
   };
   const auto pilot_of = [&](const ToleranceCandidate& c) {
-    Piloted out_c;
+    Piloted out_c{pilot_entry(c, "")};
     PilotRun& p = out_c.run;
-    p.method = c.method, p.order = c.order;
     double span = T / 4.0;
     std::int64_t n = 16;
     for (int attempt = 0; attempt < 10; ++attempt) {
@@ -328,21 +334,16 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
       continue;
     }
     if (!early[i] && !exact_on_scene.empty()) {
-      PilotRun p;
-      p.method = c.method, p.order = c.order;
-      p.verdict = "not piloted: " + exact_on_scene + " is exact on this scene";
-      choice.pilots.push_back(p);
+      choice.pilots.push_back(pilot_entry(c, "not piloted: " + exact_on_scene + " is exact on this scene"));
       continue;
     }
     if (!early[i] && std::isfinite(scale) && candidates.size() > 1 && !method_info(c.method).exact_torque_free) {
       const double figure = order_cost_figure(c.order, evaluations, request.tolerance / scale);
       if (figure > 8.0 * best_figure) {
-        PilotRun p;
-        p.method = c.method, p.order = c.order;
-        p.verdict = "pruned: order " + std::to_string(c.order) + " at a relative tolerance of " +
-                    format_number(request.tolerance / scale) + " (needs > 8x the steps x evaluations of order " +
-                    std::to_string(candidates.front().order) + ")";
-        choice.pilots.push_back(p);
+        choice.pilots.push_back(pilot_entry(
+            c, "pruned: order " + std::to_string(c.order) + " at a relative tolerance of " +
+                   format_number(request.tolerance / scale) + " (needs > 8x the steps x evaluations of order " +
+                   std::to_string(candidates.front().order) + ")"));
         continue;
       }
     }
@@ -355,7 +356,7 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
       // at most the pilot's step: the pilot's own check ran at 2 dt_p and 4 dt_p, which the certificate's coarse
       // runs then do not exceed (beyond them the pilot says nothing of stability); a method exact on the scene has
       // no stability limit, and its error is round-off, which fewer steps make smaller: the fewest steps
-      const double dt = p.exact_on_scene ? std::max(p.dt, T / static_cast<double>(fewest_run_steps))
+      const double dt = p.exact_on_scene ? T / static_cast<double>(fewest_run_steps)
                                          : std::min(step_for_error(p.constant, p.order, T, target), p.dt);
       p.planned_steps = steps_for(T, dt, m);
       p.planned_seconds = static_cast<double>(p.planned_steps) * p.seconds_per_step;
