@@ -144,6 +144,102 @@ TEST(ToleranceModel, TheMeasuresEstimateKeepsTheRunsInstabilityVerdicts) {
   EXPECT_FALSE(says_runs_unstable("interpolated between the reliable records before and after it"));
 }
 
+// Three runs at h, 2h and 4h of two bodies, recorded every 4 steps of h (every record common): each quantity its
+// exact value plus an error C (f h)^q g(t) of its own order q (f = 1, 2, 4), so that the quantities' verdicts differ
+// (the angular velocity's order 2 where the method's is 4), and its energy balance T − W off by a 4th-order error
+class SyntheticRuns {
+ public:
+  static constexpr std::size_t n = 33;
+  static constexpr std::int64_t bodies = 2;
+  static constexpr double h = 0.05;
+
+  explicit SyntheticRuns(int factor) {
+    const double dt = factor * h;
+    const auto error = [dt](int q, double c, double t) { return c * std::pow(dt, q) * t * (1.0 + 0.3 * std::sin(t)); };
+    for (std::size_t i = 0; i < n; ++i) {
+      const double t = 4.0 * h * static_cast<double>(i);
+      t_.push_back(t);
+      for (std::int64_t b = 0; b < bodies; ++b) {
+        const double angle = (1.0 + b) * t + error(4, 0.7 + b, t);
+        for (const double x : {0.0, 0.0, std::sin(0.5 * angle), std::cos(0.5 * angle)}) q_.push_back(x);
+        for (int a = 0; a < 3; ++a) {
+          w_.push_back(std::cos(t + a) + error(2, 0.4, t));
+          p_.push_back(std::sin(t + a + b) + error(4, 1.1, t));
+          v_.push_back(std::cos(t + a + b) + error(4, 0.9 + a, t));
+        }
+      }
+      energy_.push_back(3.0 + error(5, 2.0, t)), kinetic_.push_back(1.0 + 0.5 * std::sin(t));
+      records_.momentum.push_back(2.0 + error(4, 0.6, t));
+      records_.balance.push_back(1.0 + error(4, 0.2, t));
+    }
+    records_.n = n, records_.bodies = bodies, records_.t = t_.data(), records_.q_WB = q_.data();
+    records_.w_B = w_.data(), records_.p_W = p_.data(), records_.v_W = v_.data();
+    records_.energy = energy_.data(), records_.energy_scale = kinetic_.data();
+  }
+  const ErrorRecords& records() const { return records_; }
+
+  // these records with every quantity but `measure` the same in any run (zero; the identity attitude), the balance
+  // kept: an estimate of all of them then checks `measure` alone
+  ErrorRecords with_only(ErrorMeasure measure) {
+    zeros_.assign(n * bodies * 4, 0.0), identity_ = zeros_;
+    for (std::size_t k = 3; k < identity_.size(); k += 4) identity_[k] = 1.0;
+    ErrorRecords r = records_;
+    const auto keep = [measure](ErrorMeasure m, const double* own, const double* same) {
+      return m == measure ? own : same;
+    };
+    r.q_WB = keep(ErrorMeasure::attitude, r.q_WB, identity_.data());
+    r.w_B = keep(ErrorMeasure::angular_velocity, r.w_B, zeros_.data());
+    r.p_W = keep(ErrorMeasure::position, r.p_W, zeros_.data());
+    r.v_W = keep(ErrorMeasure::velocity, r.v_W, zeros_.data());
+    r.energy = keep(ErrorMeasure::energy, r.energy, zeros_.data());
+    r.energy_scale = keep(ErrorMeasure::energy, r.energy_scale, zeros_.data());
+    if (measure != ErrorMeasure::angular_momentum) r.momentum.assign(n, 0.0);
+    return r;
+  }
+
+ private:
+  std::vector<double> t_, q_, w_, p_, v_, energy_, kinetic_, zeros_, identity_;
+  ErrorRecords records_;
+};
+
+const std::vector<double>& values_of_measure(const GlobalErrorEstimate& e, ErrorMeasure measure) {
+  const std::vector<double>* values[] = {&e.attitude, &e.angular_velocity, &e.position,
+                                         &e.velocity, &e.energy,           &e.angular_momentum};
+  return *values[static_cast<int>(measure)];
+}
+
+// The measure's estimate checks the measure alone: the same bits as the full estimate of runs that agree on every
+// other quantity, which it no longer computes (NaN)
+TEST(ToleranceModel, TheMeasuresEstimateIsTheEstimateOfRunsAgreeingOnTheOtherQuantities) {
+  SyntheticRuns h(1), h2(2), h4(4);
+  SimulationOptions o;
+  o.dt = SyntheticRuns::h, o.record_every = 4, o.steps = 4 * static_cast<std::int64_t>(SyntheticRuns::n - 1);
+  const GlobalErrorEstimate all = estimate_global_error(h.records(), h2.records(), h4.records(), o, 4);
+  EXPECT_EQ(all.verdict[5], "not asymptotic: observed order 2 where 4 is expected (angular velocity)");
+  for (const ErrorMeasure measure : {ErrorMeasure::attitude, ErrorMeasure::angular_velocity, ErrorMeasure::position,
+                                     ErrorMeasure::velocity, ErrorMeasure::energy, ErrorMeasure::angular_momentum}) {
+    const GlobalErrorEstimate alone = estimate_of_measure(h.records(), h2.records(), h4.records(), o, 4, measure);
+    const GlobalErrorEstimate agreeing =
+        estimate_global_error(h.with_only(measure), h2.with_only(measure), h4.with_only(measure), o, 4);
+    const std::string name = error_measure_name(measure);
+    ASSERT_EQ(alone.verdict.size(), SyntheticRuns::n) << name;
+    for (std::size_t i = 0; i < SyntheticRuns::n; ++i) {
+      EXPECT_EQ(alone.verdict[i], agreeing.verdict[i]) << name << ", record " << i;
+      EXPECT_EQ(std::isnan(alone.observed_order[i]), std::isnan(agreeing.observed_order[i]))
+          << name << ", record " << i;
+      if (!std::isnan(alone.observed_order[i])) {
+        EXPECT_EQ(alone.observed_order[i], agreeing.observed_order[i]) << name;
+      }
+    }
+    EXPECT_EQ(values_of_measure(alone, measure), values_of_measure(agreeing, measure)) << name;
+    const ErrorMeasure other = measure == ErrorMeasure::energy ? ErrorMeasure::position : ErrorMeasure::energy;
+    EXPECT_TRUE(std::isnan(values_of_measure(alone, other)[5])) << name << ": another quantity is not estimated";
+    if (measure != ErrorMeasure::angular_velocity) {
+      EXPECT_EQ(alone.verdict[5], "reliable") << name;
+    }
+  }
+}
+
 TEST(ToleranceModel, OrderPruningFigure) {
   // at 1e-8 relative: order 4 needs 100 steps x 4 evaluations, order 2 10^4 x 2
   EXPECT_NEAR(order_cost_figure(4, 4, 1e-8), 400.0, 1e-9);

@@ -209,6 +209,21 @@ def test_records_between_common_records_and_the_tail():
     assert np.isnan(short.error.attitude[-1, 0]) and short.error.verdict[-1].startswith("no estimate")
 
 
+def test_a_verdict_names_the_observed_order_its_record_has():
+    # the compound pendulum under rk4 at 800 steps over 20 s: its error falls faster than dt^4 between the coarse
+    # runs (observed orders near 5), so its common records (every 4th) say "not asymptotic" with their order, printed
+    # as "%.2g" prints it; the records between repeat a common record's verdict
+    scene, initial, _ = rd.load_scene("pendulum")
+    e = rd.simulate(scene, initial, duration=20.0, dt=20.0 / 800, method="rk4").error
+    named = 0
+    for i in range(0, len(e.verdict), 4):
+        if e.verdict[i].startswith("not asymptotic: observed order"):
+            order = format(e.observed_order[i], ".2g")
+            assert e.verdict[i].startswith(f"not asymptotic: observed order {order} where 4 is expected ("), i
+            named += 1
+    assert named > 100
+
+
 def _same_estimate(a, b):
     """Whether two GlobalErrors are the same to the bit (NaN where the other has NaN)."""
     names = ("attitude", "angular_velocity", "position", "velocity", "energy", "angular_momentum", "observed_order")

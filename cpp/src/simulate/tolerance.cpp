@@ -36,33 +36,6 @@ std::size_t width_of(const GlobalErrorEstimate& e, ErrorMeasure measure) {
   return measure == ErrorMeasure::energy || measure == ErrorMeasure::angular_momentum ? 1 : static_cast<std::size_t>(e.bodies);
 }
 
-// A run's records with every quantity but `measure` the same in any run: zero, the identity attitude.
-class MeasureRecords {
- public:
-  MeasureRecords(const ErrorRecords& r, ErrorMeasure measure)
-      : identity_(r.n * static_cast<std::size_t>(r.bodies) * 4, 0.0),
-        zeros_(r.n * static_cast<std::size_t>(r.bodies) * 3, 0.0),
-        records_(r) {
-    for (std::size_t k = 3; k < identity_.size(); k += 4) identity_[k] = 1.0;  // (x, y, z, w) = (0, 0, 0, 1)
-    const auto keep = [measure](ErrorMeasure m, const double* own, const double* same) { return m == measure ? own : same; };
-    records_.q_WB = keep(ErrorMeasure::attitude, r.q_WB, identity_.data());
-    records_.w_B = keep(ErrorMeasure::angular_velocity, r.w_B, zeros_.data());
-    records_.p_W = keep(ErrorMeasure::position, r.p_W, zeros_.data());
-    records_.v_W = keep(ErrorMeasure::velocity, r.v_W, zeros_.data());
-    records_.energy = keep(ErrorMeasure::energy, r.energy, zeros_.data());
-    records_.energy_scale = keep(ErrorMeasure::energy, r.energy_scale, zeros_.data());
-    if (measure != ErrorMeasure::angular_momentum) records_.momentum.assign(r.n, 0.0);
-  }
-  MeasureRecords(const MeasureRecords&) = delete;
-  MeasureRecords& operator=(const MeasureRecords&) = delete;
-
-  const ErrorRecords& records() const { return records_; }
-
- private:
-  std::vector<double> identity_, zeros_;
-  ErrorRecords records_;
-};
-
 // Whether the verdict of some record of `verdicts` satisfies `says` (each distinct text read once).
 template <class Predicate>
 bool any_record_says(const Verdicts& verdicts, Predicate says) {
@@ -78,8 +51,7 @@ bool any_record_says(const Verdicts& verdicts, Predicate says) {
 
 GlobalErrorEstimate estimate_of_measure(const ErrorRecords& h, const ErrorRecords& h2, const ErrorRecords& h4,
                                         const SimulationOptions& answer, int order, ErrorMeasure measure) {
-  const MeasureRecords a(h, measure), b(h2, measure), c(h4, measure);
-  return estimate_global_error(a.records(), b.records(), c.records(), answer, order);
+  return estimate_global_error(h, h2, h4, answer, order, {}, measure);
 }
 
 std::string refinements_text(int refinements) {

@@ -34,6 +34,7 @@
 #include "rigiddyn/simulate/verdicts.hpp"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -65,6 +66,10 @@ struct ErrorRecords {
 ErrorRecords error_records(const Trajectory& r);
 ErrorRecords error_records(const SceneSimulation& r);
 
+// The quantities an estimate gives (the fields of GlobalErrorEstimate, in their order); a tolerance bounds one of
+// them (simulate/tolerance.hpp).
+enum class ErrorMeasure { attitude, angular_velocity, position, velocity, energy, angular_momentum };
+
 // The estimate at every record of the answer run (n records, nb bodies), row-major.
 struct GlobalErrorEstimate {
   int order = 0;                            // the order p the estimate assumed (0: the method 'exact')
@@ -90,8 +95,12 @@ SimulationOptions coarse_options(const SimulationOptions& answer, int factor);
 // The estimate from the three runs (coarse[0] at 2h, coarse[1] at 4h, made with coarse_options) of a method of
 // order `order` >= 1, `answer` the options of the run at h.
 // `opaque` names a force the core cannot see into ("" for none): then no record is called reliable.
+// `only`, where given, restricts the estimate to that quantity: the others are neither estimated (NaN) nor checked,
+// as if the three runs agreed on them, and the energy balance's check then takes |T − W| alone as the size of its
+// round-off (the energy's own |T| + |V| where `only` is the energy).
 GlobalErrorEstimate estimate_global_error(const ErrorRecords& h, const ErrorRecords& h2, const ErrorRecords& h4,
-                                          const SimulationOptions& answer, int order, const std::string& opaque = {});
+                                          const SimulationOptions& answer, int order, const std::string& opaque = {},
+                                          std::optional<ErrorMeasure> only = std::nullopt);
 
 // The round-off bound alone, for the method 'exact' (order 0).
 GlobalErrorEstimate round_off_estimate(const ErrorRecords& h, const SimulationOptions& answer);

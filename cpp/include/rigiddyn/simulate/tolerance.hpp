@@ -52,9 +52,6 @@
 
 namespace rigiddyn {
 
-// The error quantity a tolerance bounds (the fields of GlobalErrorEstimate).
-enum class ErrorMeasure { attitude, angular_velocity, position, velocity, energy, angular_momentum };
-
 // "attitude", ... in ErrorMeasure's order; the unit of each ("rad", "rad/s", "m", "m/s", "J", "kg m^2/s").
 const std::vector<std::string>& error_measure_names();
 std::string error_measure_name(ErrorMeasure measure);
@@ -133,10 +130,10 @@ std::string refinements_text(int refinements);
 // relative^(−1/p) steps times `evaluations` per step (the order pruning's figure).
 double order_cost_figure(int order, int evaluations, double relative);
 
-// The estimate of one measure alone: the runs at h, 2h and 4h (as estimate_global_error takes them) with every
-// other quantity set equal in all three (zero; the identity attitude), so that its verdicts check the observed
-// order of `measure` only. (A record-wide verdict also checks the other quantities: rk4's energy error on a
-// free body falls faster than dt^4 at a coarse step, which says nothing of the attitude's estimate.)
+// The estimate of one measure alone (estimate_global_error's `only`: the other quantities neither estimated nor
+// checked), so that its verdicts check the observed order of `measure` only. (A record-wide verdict also checks the
+// other quantities: rk4's energy error on a free body falls faster than dt^4 at a coarse step, which says nothing
+// of the attitude's estimate.)
 GlobalErrorEstimate estimate_of_measure(const ErrorRecords& h, const ErrorRecords& h2, const ErrorRecords& h4,
                                         const SimulationOptions& answer, int order, ErrorMeasure measure);
 
