@@ -202,12 +202,6 @@ class SyntheticRuns {
   ErrorRecords records_;
 };
 
-const std::vector<double>& values_of_measure(const GlobalErrorEstimate& e, ErrorMeasure measure) {
-  const std::vector<double>* values[] = {&e.attitude, &e.angular_velocity, &e.position,
-                                         &e.velocity, &e.energy,           &e.angular_momentum};
-  return *values[static_cast<int>(measure)];
-}
-
 // The measure's estimate checks the measure alone: the same bits as the full estimate of runs that agree on every
 // other quantity, which it no longer computes (NaN)
 TEST(ToleranceModel, TheMeasuresEstimateIsTheEstimateOfRunsAgreeingOnTheOtherQuantities) {
@@ -231,9 +225,9 @@ TEST(ToleranceModel, TheMeasuresEstimateIsTheEstimateOfRunsAgreeingOnTheOtherQua
         EXPECT_EQ(alone.observed_order[i], agreeing.observed_order[i]) << name;
       }
     }
-    EXPECT_EQ(values_of_measure(alone, measure), values_of_measure(agreeing, measure)) << name;
+    EXPECT_EQ(values_of(alone, measure), values_of(agreeing, measure)) << name;
     const ErrorMeasure other = measure == ErrorMeasure::energy ? ErrorMeasure::position : ErrorMeasure::energy;
-    EXPECT_TRUE(std::isnan(values_of_measure(alone, other)[5])) << name << ": another quantity is not estimated";
+    EXPECT_TRUE(std::isnan(values_of(alone, other)[5])) << name << ": another quantity is not estimated";
     if (measure != ErrorMeasure::angular_velocity) {
       EXPECT_EQ(alone.verdict[5], "reliable") << name;
     }

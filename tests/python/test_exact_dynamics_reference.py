@@ -74,8 +74,9 @@ def heavy_top(seed=None):
 
 def mean_precession_rate_by_quadrature(top, digits=40):
     """φ's mean rate over a nutation period [rad/s] of the reference top's motion, by mpmath quadrature at `digits`
-    digits (independent of Legendre's Π): with f(u) = (1 − u²)(α − β u) − (b − a u)² and its roots u1 ≤ u2, the half
-    period ∫ du / √f and the precession over it ∫ φ̇ du / √f, φ̇ = (b − a u) / (1 − u²), over [u1, u2], where
+    digits (independent of Legendre's Π): with u̇² = f(u) = (1 − u²)(α − β u) − (b − a u)² and its roots u1 ≤ u2,
+    φ̇ = (b − a u) / (1 − u²) (Goldstein §5.7, in the reference's a, b, α, β), the half period ∫ du / √f and the
+    precession over it ∫ φ̇ du / √f, over [u1, u2], where
     u = u1 + (u2 − u1) sin² s removes the square-root singularities at both ends. Near a vertical (u2 → 1) the
     double-precision reference loses digits in 1 − u2 (~eps / (1 − u2) relative, 4e-10 for the axis passing 4e-4
     rad from it), while these integrals do not. 40 digits give the same double as 50 and 70 for that top (30 digits

@@ -450,6 +450,18 @@ void name_exponential_growth(CommonTable& common, const double* t, std::size_t s
 
 }  // namespace
 
+const std::vector<double>& values_of(const GlobalErrorEstimate& e, ErrorMeasure measure) {
+  switch (measure) {
+    case ErrorMeasure::attitude: return e.attitude;
+    case ErrorMeasure::angular_velocity: return e.angular_velocity;
+    case ErrorMeasure::position: return e.position;
+    case ErrorMeasure::velocity: return e.velocity;
+    case ErrorMeasure::energy: return e.energy;
+    case ErrorMeasure::angular_momentum: return e.angular_momentum;
+  }
+  throw_invalid("measure", "a rigiddyn::ErrorMeasure", static_cast<int>(measure));
+}
+
 ErrorRecords error_records(const Trajectory& r) {
   ErrorRecords out;
   out.n = r.size();

@@ -18,19 +18,6 @@ namespace {
 using detail::nan;
 
 
-// The estimates of `measure` in e, (n,) or (n, nb).
-const std::vector<double>& values_of(const GlobalErrorEstimate& e, ErrorMeasure measure) {
-  switch (measure) {
-    case ErrorMeasure::attitude: return e.attitude;
-    case ErrorMeasure::angular_velocity: return e.angular_velocity;
-    case ErrorMeasure::position: return e.position;
-    case ErrorMeasure::velocity: return e.velocity;
-    case ErrorMeasure::energy: return e.energy;
-    case ErrorMeasure::angular_momentum: return e.angular_momentum;
-  }
-  throw std::invalid_argument("measure: expected a rigiddyn::ErrorMeasure, got " + std::to_string(static_cast<int>(measure)));
-}
-
 // The values per record of `measure` in e: nb for the state quantities, 1 for energy and |L|.
 std::size_t width_of(const GlobalErrorEstimate& e, ErrorMeasure measure) {
   return measure == ErrorMeasure::energy || measure == ErrorMeasure::angular_momentum ? 1 : static_cast<std::size_t>(e.bodies);

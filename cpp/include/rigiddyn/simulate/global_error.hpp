@@ -102,6 +102,9 @@ GlobalErrorEstimate estimate_global_error(const ErrorRecords& h, const ErrorReco
                                           const SimulationOptions& answer, int order, const std::string& opaque = {},
                                           std::optional<ErrorMeasure> only = std::nullopt);
 
+// The estimates of `measure` in e: (n, nb) for the state quantities, (n,) for the energy and |L|.
+const std::vector<double>& values_of(const GlobalErrorEstimate& e, ErrorMeasure measure);
+
 // The round-off bound alone, for the method 'exact' (order 0).
 GlobalErrorEstimate round_off_estimate(const ErrorRecords& h, const SimulationOptions& answer);
 
