@@ -13187,7 +13187,7 @@ def vector_instructions() -> str:
     AVX-512F ('avx512'), four with AVX2 and fused multiply-adds where the CPU has those ('avx2_fma'), and two per
     instruction otherwise ('portable', the x86-64 baseline the library is built for); the rotation array functions run
     their AVX2 blocks on 'avx512' and 'avx2_fma', with the same bits as 'portable'. The paths agree to round-off (the
-    pair sum per body and component within (n + 8) 2**-53 times the sum of the pair forces' magnitudes of the exact
+    pair sum per body and component within (n + 24) 2**-53 times the sum of the pair forces' magnitudes of the exact
     sum, n the body count); only 'portable' gives the same bits on every machine. The choice is made once per process:
     set the environment variable RIGIDDYN_PORTABLE=1 before the first run to force 'portable'. The SIMD batch lanes
     (simulate_batch(..., simd=True)) choose their own instructions when the library is loaded.

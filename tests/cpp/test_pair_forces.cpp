@@ -1,5 +1,5 @@
 // The N-body pair sum (scene/elements/pair_forces.hpp) on each of its paths, against a long-double sum of the same
-// pairs: each within its stated bound (n + 8) u Σ_j |f_ij| per body and component (u = 2⁻⁵³), so the portable,
+// pairs: each within its stated bound (n + 24) u Σ_j |f_ij| per body and component (u = 2⁻⁵³), so the portable,
 // AVX2 + FMA and AVX-512 paths agree to twice that; Newton's third law pair by pair on each path; and the dispatch
 // takes the path vector_instructions() names.
 #include <gtest/gtest.h>
@@ -20,15 +20,16 @@ namespace {
 
 constexpr double kU = 0x1p-53;  // unit round-off of double
 
-// n bodies at normal positions with masses in [0.1, 10] kg (rows 0..n-1 of an array with `extra` rows more,
-// which the sum must not touch)
-Eigen::ArrayXXd cluster(Eigen::Index n, Eigen::Index extra, unsigned seed) {
+// n bodies at normal positions (times `scale`) with masses in [0.1, 10] kg (rows 0..n-1 of an array with `extra` rows
+// more, which the sum must not touch)
+Eigen::ArrayXXd cluster(Eigen::Index n, Eigen::Index extra, unsigned seed, double scale = 1.0) {
   std::mt19937_64 rng(seed);
   std::normal_distribution<double> normal;
   std::uniform_real_distribution<double> mass(0.1, 10.0);
   Eigen::ArrayXXd columns = Eigen::ArrayXXd::Constant(n + extra, 8, 7.0);  // 7: a value no sum produces
   for (Eigen::Index i = 0; i < n; ++i) {
-    columns(i, 0) = normal(rng), columns(i, 1) = normal(rng), columns(i, 2) = normal(rng), columns(i, 7) = mass(rng);
+    columns(i, 0) = scale * normal(rng), columns(i, 1) = scale * normal(rng), columns(i, 2) = scale * normal(rng);
+    columns(i, 7) = mass(rng);
     columns(i, 3) = columns(i, 4) = columns(i, 5) = 0.0;
   }
   return columns;
@@ -60,14 +61,14 @@ PairReference reference(const Eigen::ArrayXXd& c, Eigen::Index n, double G, doub
 
 using Path = void (*)(Eigen::ArrayXXd&, Eigen::Index, double, double);
 
-void expect_within_bound(Path path, Eigen::Index n, double softening2, unsigned seed) {
+void expect_within_bound(Path path, Eigen::Index n, double softening2, unsigned seed, double scale = 1.0) {
   const double G = 0.7;
-  Eigen::ArrayXXd c = cluster(n, 3, seed);
+  Eigen::ArrayXXd c = cluster(n, 3, seed, scale);
   const PairReference r = reference(c, n, G, softening2);
   path(c, n, G, softening2);
   for (Eigen::Index i = 0; i < n; ++i) {
     for (int a = 0; a < 3; ++a) {
-      const double bound = static_cast<double>(n + 8) * kU * r.magnitude[3 * i + a];  // pair_forces.hpp
+      const double bound = static_cast<double>(n + 24) * kU * r.magnitude[3 * i + a];  // pair_forces.hpp
       EXPECT_LE(std::fabs(static_cast<double>(c(i, 3 + a) - r.f[3 * i + a])), bound)
           << "n = " << n << ", body " << i << ", component " << a;
     }
@@ -106,6 +107,20 @@ TEST(PairForces, Avx512PathWithinItsBound) {
   c(0, 0) = c(0, 1) = c(0, 2) = 0.0;
   detail::add_pair_forces_avx512(c, 11, 1.0, 0.0);
   EXPECT_TRUE(c.topRows(11).allFinite());
+}
+
+// clusters whose squared distances r² lie beyond the range of floats (above 2¹²⁰ and below 2⁻¹²⁰, where the AVX2
+// path's reciprocal square root gives way to the division) or straddle it (a cluster of 10¹⁸ m: r² from ~10³⁴ to
+// ~10³⁷ m²), on every path
+TEST(PairForces, PathsWithinTheirBoundAtDistancesBeyondTheRangeOfFloats) {
+  std::vector<Path> paths{&detail::add_pair_forces_portable};
+  if (cpu_has_avx2_fma()) paths.push_back(&detail::add_pair_forces_avx2_fma);
+  if (cpu_has_avx512()) paths.push_back(&detail::add_pair_forces_avx512);
+  for (const Path path : paths) {
+    for (const double scale : {1e-20, 1e18, 1e20}) {
+      for (const Eigen::Index n : {9, 33}) expect_within_bound(path, n, 0.0, 5u * n + 3, scale);
+    }
+  }
 }
 
 // f_i and f_j of one pair are the same rounded g d, added and subtracted: two bodies' forces are exact negatives

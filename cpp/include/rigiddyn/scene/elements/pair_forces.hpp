@@ -2,14 +2,18 @@
 //   d = p_j − p_i,   g = G m_i m_j / (|d|² + ε²)^{3/2},   f_i += g d,   f_j −= g d,
 // each pair's force computed once and added to one body and subtracted from the other (Newton's third law, pair by
 // pair). Three paths (vector_instructions.hpp): the portable one (two pairs per SSE2 instruction, the library's
-// baseline), AVX2 + FMA (four pairs per instruction; |d|² + ε² and the sums by fused multiply–adds) and AVX-512
-// (eight pairs per instruction, the same operations as AVX2's; a body's last pairs four and one at a time).
+// baseline: r² √r² and a division); AVX2 + FMA (four pairs per instruction, |d|² + ε² and the sums by fused
+// multiply–adds, of each eight pairs four by the division and four by a reciprocal square root refined by Newton's
+// steps, so that the divider and the multiply–add units work together); and AVX-512 (eight pairs per instruction,
+// all by the reciprocal square root; a body's last pairs four by the division and one at a time).
 //
-// The paths agree to round-off: each pair's force differs in its last bits (a fused multiply–add rounds once
-// where a product and a sum round twice, and the sums of f_i add the pairs in another order), so for every body and
-// component each path is within (n + 8) u Σ_j |f_ij| of the exact sum (u = 2⁻⁵³; the n terms of a sum in any order:
-// n u of their absolute sum, Higham, "Accuracy and Stability of Numerical Algorithms", §4.2; 8 u for the pair's own
-// rounding), and any two within twice that.
+// The paths agree to round-off, each pair's force to a relative 24 u (u = 2⁻⁵³, each operation's rounding): d's
+// components round once (u each, 2 u in |d|²) and |d|² + ε² four times more (three with fused multiply–adds): r² is
+// within 6 u, r^−3 within 9 u. The division's g = G m_i m_j / (r² √r²) adds 5 roundings (15 u with g d's), the
+// reciprocal square root's y (within 3 u of 1/√r², pair_forces.cpp) cubed 11 u and the masses 3 u (24 u with g d's,
+// 22.5 u with the fused r²). The sums of f_i add the n pairs in another order on each path (n u of their absolute
+// sum, Higham, "Accuracy and Stability of Numerical Algorithms", §4.2), so for every body and component each path is
+// within (n + 24) u Σ_j |f_ij| of the exact sum, and any two within twice that.
 #pragma once
 #include <Eigen/Core>
 
