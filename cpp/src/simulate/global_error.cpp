@@ -327,17 +327,20 @@ std::array<std::vector<double>*, 4> per_body_arrays(GlobalErrorEstimate& e) {
 }
 
 // The verdicts of the common records as indices into out.verdict's texts, and whether each is reliable: a
-// record's verdict is then an index copied, not a text compared.
+// record's verdict is then an index copied, not a text compared. out.verdict takes the common records' texts with
+// their indices (no text copied or looked up again) and none of their records.
 struct CommonVerdicts {
   std::vector<std::uint32_t> text;
   std::vector<char> reliable;
 
-  CommonVerdicts(const CommonTable& common, Verdicts& out) {
-    std::vector<std::uint32_t> out_text;  // each distinct text of the common records' in out's texts
-    for (const std::string& v : common.verdict.texts()) out_text.push_back(out.add_text(v));
-    for (std::size_t j = 0; j < common.verdict.size(); ++j) {
-      text.push_back(out_text[common.verdict.text_index(j)]), reliable.push_back(is_reliable(common.verdict[j]));
+  CommonVerdicts(Verdicts&& common, Verdicts& out) {
+    std::vector<char> reliable_text;  // per distinct text
+    for (const std::string& v : common.texts()) reliable_text.push_back(is_reliable(v));
+    for (std::size_t j = 0; j < common.size(); ++j) {
+      text.push_back(common.text_index(j)), reliable.push_back(reliable_text[common.text_index(j)]);
     }
+    out = std::move(common);
+    out.clear_records();
   }
   // The verdict of a record made from common records a and b (a == b: from a alone): the first of theirs that is
   // not reliable, else `how`.
@@ -546,8 +549,8 @@ GlobalErrorEstimate estimate_global_error(const ErrorRecords& h, const ErrorReco
     }
   }
   name_exponential_growth(common, h.t, stride);
+  const CommonVerdicts verdicts(std::move(common.verdict), out.verdict);
   size_for_records(out, h.n, h.bodies);
-  const CommonVerdicts verdicts(common, out.verdict);
   const std::uint32_t between = out.verdict.add_text("interpolated between the reliable records before and after it");
   std::uint32_t after = 0, none = 0;  // the verdicts after the last common record and without an estimate
   if (last > 0 && h.n - 1 > last * stride) {

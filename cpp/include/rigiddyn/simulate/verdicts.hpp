@@ -39,6 +39,8 @@ class Verdicts {
   void set(std::size_t i, std::string_view verdict) { text_of_record_[i] = add_text(verdict); }
   // n records, each with the verdict `verdict`.
   void assign(std::size_t n, std::string_view verdict);
+  // Drops every record and keeps the texts with their indices (for records that index another table's texts).
+  void clear_records() { text_of_record_.clear(); }
 
   // The distinct texts (in the order of their first use; a text replaced by set may no longer be used), and
   // record i's index into them.
