@@ -326,26 +326,23 @@ std::array<std::vector<double>*, 4> per_body_arrays(GlobalErrorEstimate& e) {
   return {&e.attitude, &e.angular_velocity, &e.position, &e.velocity};
 }
 
-// The verdicts of the common records as indices into out.verdict's texts, and whether each is reliable: a
+// The verdicts of the common records as indices into out.verdict's texts, and whether each text is reliable: a
 // record's verdict is then an index copied, not a text compared. out.verdict takes the common records' texts with
 // their indices (no text copied or looked up again) and none of their records.
 struct CommonVerdicts {
-  std::vector<std::uint32_t> text;
-  std::vector<char> reliable;
+  std::vector<std::uint32_t> text;  // per common record
+  std::vector<char> reliable;       // per text
 
   CommonVerdicts(Verdicts&& common, Verdicts& out) {
-    std::vector<char> reliable_text;  // per distinct text
-    for (const std::string& v : common.texts()) reliable_text.push_back(is_reliable(v));
-    for (std::size_t j = 0; j < common.size(); ++j) {
-      text.push_back(common.text_index(j)), reliable.push_back(reliable_text[common.text_index(j)]);
-    }
+    for (const std::string& v : common.texts()) reliable.push_back(is_reliable(v));
+    for (std::size_t j = 0; j < common.size(); ++j) text.push_back(common.text_index(j));
     out = std::move(common);
     out.clear_records();
   }
   // The verdict of a record made from common records a and b (a == b: from a alone): the first of theirs that is
   // not reliable, else `how`.
   std::uint32_t first_unreliable_or(std::size_t a, std::size_t b, std::uint32_t how) const {
-    return !reliable[a] ? text[a] : (!reliable[b] ? text[b] : how);
+    return !reliable[text[a]] ? text[a] : (!reliable[text[b]] ? text[b] : how);
   }
 };
 

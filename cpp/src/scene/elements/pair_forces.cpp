@@ -120,11 +120,11 @@ __attribute__((target("avx2,fma"))) inline void last_pairs(const PairColumns& c,
 }
 
 // The eight pairs (i, j … j + 7), as four_pairs with g = G m_i m_j y³, y = 1/√r² from the reciprocal square root
-// of r² in double (relative error below 2⁻¹⁴ over the whole range of doubles) refined by two Newton steps (2⁻¹⁴,
-// 2⁻²⁷·1.5, below u: y within the last step's rounding, 3 u, of 1/√r², as the AVX2 path's). Twice as fast as
-// the division at N = 1000 (docs/perf/scenes.md), whose divider takes as long for eight lanes as for four. An r² of zero or infinity
-// (coincident bodies without softening, a position at infinity) gives a NaN force, as the division's g d does
-// (∞ · 0, 0 · ∞).
+// of r² in double (relative error below 2⁻¹⁴ over the whole range of doubles) refined by two Newton steps (the error
+// 1.5 · 2⁻²⁸, then 3.4 · 2⁻⁵⁶ < u: y within the last step's rounding, 3 u, of 1/√r², as on the AVX2 path). Twice as
+// fast as the division at N = 1000 (docs/perf/scenes.md): the divider takes as long for eight lanes as for four. An
+// r² of zero or infinity (coincident bodies without softening, a position at infinity) gives a NaN force, as the
+// division's g d does (∞ · 0, 0 · ∞).
 __attribute__((target("avx512f,avx2,fma"))) inline void eight_pairs(const PairColumns& c, Eigen::Index i,
                                                                       Eigen::Index j, __m512d Gm_i, __m512d eps2,
                                                                       Sums8& s) {
