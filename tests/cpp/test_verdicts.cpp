@@ -57,6 +57,10 @@ TEST(Verdicts, SetAndAssignReplaceRecordsTexts) {
   EXPECT_FALSE(is_reliable("reliable "));
   EXPECT_THROW(v.push_back_text(static_cast<std::uint32_t>(v.texts().size())), std::out_of_range);
   EXPECT_EQ(v.size(), 5u);  // the bad index appended nothing
+  v.set_text(1, k);
+  EXPECT_EQ(v[1], "interpolated");
+  EXPECT_THROW(v.set_text(1, static_cast<std::uint32_t>(v.texts().size())), std::out_of_range);
+  EXPECT_EQ(v[1], "interpolated");  // the bad index changed nothing
 }
 
 }  // namespace

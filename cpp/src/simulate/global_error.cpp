@@ -15,6 +15,7 @@
 #include <limits>
 #include <numeric>
 #include <string_view>
+#include <unordered_map>
 #include <utility>
 
 namespace rigiddyn {
@@ -77,6 +78,61 @@ class Text {
   char* tail_ = text_;
 };
 
+// A code that two numbers share only if printf's "%.2g" prints them alike, found without printing them: the sign,
+// the decade of |x| ([0.1, 1), [1, 10) or [10, 100)) and k = round(|x| 10^s) in it (s = 2, 1, 0), |x| rounded to two
+// significant digits, from which "%.2g" prints. −1 outside those decades, for NaN, and where |x| 10^s lies within
+// 10⁻⁶ of a tie between two k (its product's rounding, ≤ 2⁻⁴⁶, could then have moved it across the tie that printf
+// rounds exactly).
+int two_digit_code(double x) {
+  const double size = std::abs(x);
+  const int decade = size < 0.1 ? -1 : size < 1.0 ? 0 : size < 10.0 ? 1 : size < 100.0 ? 2 : -1;  // NaN: -1
+  if (decade < 0) return -1;
+  const double scaled = size * (decade == 0 ? 100.0 : decade == 1 ? 10.0 : 1.0);
+  const double k = std::round(scaled);
+  if (std::abs(scaled - k) > 0.5 - 1e-6) return -1;
+  return (static_cast<int>(k) * 3 + decade) * 2 + (std::signbit(x) ? 1 : 0);
+}
+
+// The verdicts "not asymptotic: observed order <%.2g> where <p> is expected (<quantity>)" of one estimate's common
+// records, each text made once: where the order check fails at most common records (a run recording every step
+// whose error falls faster than dt^p), printing the order (std::to_chars, ~670 instructions) and finding its
+// text (~580) at each cost more than the record's comparisons. Two orders with the same two_digit_code print alike,
+// so that their records share a text found by the code.
+class NotAsymptoticTexts {
+ public:
+  explicit NotAsymptoticTexts(int order) : order_(order) {}
+
+  // The index in `verdicts`' texts of the verdict for the observed order `observed` of `quantity` (a string literal,
+  // told apart by its address).
+  std::uint32_t index(double observed, const char* quantity, Verdicts& verdicts) {
+    const int code = two_digit_code(observed);
+    const std::uint64_t key = (static_cast<std::uint64_t>(slot(quantity)) << 32) | static_cast<std::uint32_t>(code);
+    if (code >= 0) {
+      const auto found = known_.find(key);
+      if (found != known_.end()) return found->second;
+    }
+    Text text;
+    text << "not asymptotic: observed order " << Text::general(observed, 2) << " where " << order_ << " is expected ("
+         << quantity << ")";
+    const std::uint32_t k = verdicts.add_text(text.view());
+    if (code >= 0) known_.emplace(key, k);
+    return k;
+  }
+
+ private:
+  // the position of `quantity` among those seen (six at most: the kinds of quantity an estimate checks)
+  std::uint32_t slot(const char* quantity) {
+    const auto found = std::find(quantities_.begin(), quantities_.end(), quantity);
+    if (found != quantities_.end()) return static_cast<std::uint32_t>(found - quantities_.begin());
+    quantities_.push_back(quantity);
+    return static_cast<std::uint32_t>(quantities_.size() - 1);
+  }
+
+  int order_;
+  std::vector<const char*> quantities_;
+  std::unordered_map<std::uint64_t, std::uint32_t> known_;  // (quantity's slot, code) → text index
+};
+
 // The differences of one quantity at a common record: d1 = d(y_h, y_2h), d2 = d(y_2h, y_4h) and the round-off
 // bound of y_h.
 struct Differences {
@@ -99,8 +155,8 @@ struct CombinedDifferences {
 // (those of the quantity whose ratio r is furthest from 2^p, unless a run diverged).
 class CommonRecord {
  public:
-  // expected = 2^order; coarse_problem: why the record is not reliable whatever its differences say (null: none)
-  CommonRecord(int order, double expected, const char* coarse_problem) : order_(order), expected_(expected) {
+  // expected = 2^p; coarse_problem: why the record is not reliable whatever its differences say (null: none)
+  CommonRecord(double expected, const char* coarse_problem) : expected_(expected) {
     if (coarse_problem != nullptr) blocked_ = coarse_problem;
   }
 
@@ -136,15 +192,12 @@ class CommonRecord {
 
   double observed_order() const { return std::log2(worst_r_); }
   double expected_ratio() const { return expected_; }
-  // Record j of `verdicts` becomes this record's verdict.
-  void put_verdict(Verdicts& verdicts, std::size_t j) const {
+  // Record j of `verdicts` becomes this record's verdict, its observed order `observed` (observed_order()) where the
+  // check failed (a record compares several quantities before it knows its worst).
+  void put_verdict(Verdicts& verdicts, NotAsymptoticTexts& texts, std::size_t j, double observed) const {
     if (!blocked_.empty()) return verdicts.set(j, blocked_);
     if (!worst_outside_) return verdicts.set(j, reliable_verdict);
-    // formatted once, here: a record compares several quantities before it knows its worst
-    Text text;
-    text << "not asymptotic: observed order " << Text::general(observed_order(), 2) << " where " << order_
-         << " is expected (" << worst_name_ << ")";
-    verdicts.set(j, text.view());
+    verdicts.set_text(j, texts.index(observed, worst_name_, verdicts));
   }
 
  private:
@@ -171,7 +224,6 @@ class CommonRecord {
     return r;
   }
 
-  int order_;
   double expected_;  // 2^p, the ratio r of the asymptotic regime
   std::string blocked_;
   bool worst_outside_ = false;
@@ -188,10 +240,13 @@ struct CommonTable {
   std::vector<double> attitude, angular_velocity, position, velocity;  // (rows, nb)
   std::vector<double> energy, angular_momentum, observed_order;        // (rows,)
   Verdicts verdict;                                                    // (rows,)
+  NotAsymptoticTexts not_asymptotic;                                   // verdict's texts of failed order checks
 
-  CommonTable(std::size_t rows, std::size_t bodies)
+  // for an estimate of a method of order `order`
+  CommonTable(std::size_t rows, std::size_t bodies, int order)
       : nb(bodies), attitude(rows * bodies, nan), angular_velocity(rows * bodies, nan), position(rows * bodies, nan),
-        velocity(rows * bodies, nan), energy(rows, nan), angular_momentum(rows, nan), observed_order(rows, nan) {
+        velocity(rows * bodies, nan), energy(rows, nan), angular_momentum(rows, nan), observed_order(rows, nan),
+        not_asymptotic(order) {
     verdict.assign(rows, reliable_verdict);
   }
   std::size_t rows() const { return energy.size(); }
@@ -237,14 +292,14 @@ void check_balance(CommonRecord& record, const ErrorRecords& h, const ErrorRecor
 // Whether an estimate restricted to `only` (none: every quantity) estimates `quantity`.
 bool estimates(std::optional<ErrorMeasure> only, ErrorMeasure quantity) { return !only || *only == quantity; }
 
-// Row j of `out`: the estimates of common record j (answer record i), for a method of order `order`
-// (expected_ratio = 2^order), of the quantities `only` allows (estimate_global_error).
+// Row j of `out`: the estimates of common record j (answer record i), for a method of order p (expected_ratio = 2^p),
+// of the quantities `only` allows (estimate_global_error).
 // (inlined into its one caller: out of line, its arguments passed at every record cost 6 % of a free body's estimate)
 RIGIDDYN_ALWAYS_INLINE void estimate_common(const ErrorRecords& h, const ErrorRecords& h2, const ErrorRecords& h4,
-                                            std::size_t i, std::size_t j, std::int64_t steps, int order,
-                                            double expected_ratio, const char* coarse_problem,
-                                            std::optional<ErrorMeasure> only, CommonTable& out) {
-  CommonRecord record(order, expected_ratio, coarse_problem);
+                                            std::size_t i, std::size_t j, std::int64_t steps, double expected_ratio,
+                                            const char* coarse_problem, std::optional<ErrorMeasure> only,
+                                            CommonTable& out) {
+  CommonRecord record(expected_ratio, coarse_problem);
   const std::int64_t nb = h.bodies;
   // the differences of a kind of quantity, body by body: their estimates, then their order checked together
   const auto kind = [&](std::vector<double>& values, const char* name, auto distance_of_body, auto size_of_body) {
@@ -311,7 +366,7 @@ RIGIDDYN_ALWAYS_INLINE void estimate_common(const ErrorRecords& h, const ErrorRe
         record.invariant(differences(h, h2, h4, i, j, momentum_size, steps, momentum), "angular momentum");
   }
   out.observed_order[j] = record.observed_order();
-  record.put_verdict(out.verdict, j);
+  record.put_verdict(out.verdict, out.not_asymptotic, j, out.observed_order[j]);
 }
 
 // "0.25 s" (3 significant digits).
@@ -532,14 +587,14 @@ GlobalErrorEstimate estimate_global_error(const ErrorRecords& h, const ErrorReco
   // the common records the answer has: j = 0 .. last (answer record j·stride)
   const std::size_t last = h.n == 0 ? 0 : std::min((h.n - 1) / stride, static_cast<std::size_t>(answer.steps / m));
   const auto nb = static_cast<std::size_t>(std::max<std::int64_t>(h.bodies, 0));
-  CommonTable common(h.n > 0 ? last + 1 : 0, nb);
+  CommonTable common(h.n > 0 ? last + 1 : 0, nb, order);
   const double expected_ratio = std::ldexp(1.0, order);
   for (std::size_t j = 0; j <= last && h.n > 0; ++j) {
     const std::size_t i = j * stride;
     const char* problem = j >= h2.n   ? "step beyond the stability limit: the run at 2h diverged"
                           : j >= h4.n ? "step beyond the stability limit: the run at 4h diverged"
                                       : nullptr;
-    estimate_common(h, h2, h4, i, j, step_of(i, answer), order, expected_ratio, problem, only, common);
+    estimate_common(h, h2, h4, i, j, step_of(i, answer), expected_ratio, problem, only, common);
     if (!opaque.empty() && is_reliable(common.verdict[j])) {
       common.verdict.set(j, "not verified: " + opaque +
                                 " may switch inside a step, which the runs at h, 2h and 4h can all miss alike");

@@ -51,12 +51,16 @@ class Verdicts {
   // come in runs of one verdict), then an ordered index of the texts.
   std::uint32_t add_text(std::string_view verdict);
   // Appends a record whose verdict is texts()[k] (k from add_text); std::out_of_range for a k that is no text's.
-  void push_back_text(std::uint32_t k) {
-    if (k >= texts_.size()) throw std::out_of_range("Verdicts::push_back_text: no text " + std::to_string(k));
-    text_of_record_.push_back(k);
-  }
+  void push_back_text(std::uint32_t k) { text_of_record_.push_back(checked_text(k)); }
+  // Record i's verdict becomes texts()[k] (k from add_text); std::out_of_range for a k that is no text's.
+  void set_text(std::size_t i, std::uint32_t k) { text_of_record_[i] = checked_text(k); }
 
  private:
+  std::uint32_t checked_text(std::uint32_t k) const {
+    if (k >= texts_.size()) throw std::out_of_range("Verdicts: no text " + std::to_string(k));
+    return k;
+  }
+
   std::vector<std::string> texts_;
   std::map<std::string, std::uint32_t, std::less<>> index_of_text_;
   std::vector<std::uint32_t> text_of_record_;
