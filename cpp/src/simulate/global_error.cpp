@@ -194,9 +194,11 @@ class CommonRecord {
   double expected_ratio() const { return expected_; }
   // Record j of `verdicts` becomes this record's verdict, its observed order `observed` (observed_order()) where the
   // check failed (a record compares several quantities before it knows its worst).
-  void put_verdict(Verdicts& verdicts, NotAsymptoticTexts& texts, std::size_t j, double observed) const {
+  // `reliable`: the index of reliable_verdict in `verdicts`' texts.
+  void put_verdict(Verdicts& verdicts, NotAsymptoticTexts& texts, std::uint32_t reliable, std::size_t j,
+                   double observed) const {
     if (!blocked_.empty()) return verdicts.set(j, blocked_);
-    if (!worst_outside_) return verdicts.set(j, reliable_verdict);
+    if (!worst_outside_) return verdicts.set_text(j, reliable);
     verdicts.set_text(j, texts.index(observed, worst_name_, verdicts));
   }
 
@@ -241,6 +243,7 @@ struct CommonTable {
   std::vector<double> energy, angular_momentum, observed_order;        // (rows,)
   Verdicts verdict;                                                    // (rows,)
   NotAsymptoticTexts not_asymptotic;                                   // verdict's texts of failed order checks
+  std::uint32_t reliable_text;                                         // reliable_verdict's index in verdict
 
   // for an estimate of a method of order `order`
   CommonTable(std::size_t rows, std::size_t bodies, int order)
@@ -248,6 +251,7 @@ struct CommonTable {
         velocity(rows * bodies, nan), energy(rows, nan), angular_momentum(rows, nan), observed_order(rows, nan),
         not_asymptotic(order) {
     verdict.assign(rows, reliable_verdict);
+    reliable_text = verdict.add_text(reliable_verdict);
   }
   std::size_t rows() const { return energy.size(); }
   // the four per-body arrays, in the order of GlobalErrorEstimate's
@@ -366,7 +370,7 @@ RIGIDDYN_ALWAYS_INLINE void estimate_common(const ErrorRecords& h, const ErrorRe
         record.invariant(differences(h, h2, h4, i, j, momentum_size, steps, momentum), "angular momentum");
   }
   out.observed_order[j] = record.observed_order();
-  record.put_verdict(out.verdict, out.not_asymptotic, j, out.observed_order[j]);
+  record.put_verdict(out.verdict, out.not_asymptotic, out.reliable_text, j, out.observed_order[j]);
 }
 
 // "0.25 s" (3 significant digits).
@@ -410,8 +414,9 @@ void put_blend(GlobalErrorEstimate& out, std::size_t i, const CommonTable& commo
   const auto states = common.states();
   const auto into = per_body_arrays(out);
   for (std::size_t q = 0; q < 4; ++q) {
-    const std::vector<double>& from = *states[q];
-    for (std::size_t k = 0; k < nb; ++k) (*into[q])[i * nb + k] = mix(from[a * nb + k], from[b * nb + k]);
+    const double *from_a = states[q]->data() + a * nb, *from_b = states[q]->data() + b * nb;
+    double* row = into[q]->data() + i * nb;
+    for (std::size_t k = 0; k < nb; ++k) row[k] = mix(from_a[k], from_b[k]);
   }
   out.energy[i] = mix(common.energy[a], common.energy[b]);
   out.angular_momentum[i] = mix(common.angular_momentum[a], common.angular_momentum[b]);
@@ -425,7 +430,9 @@ void put_scaled(GlobalErrorEstimate& out, std::size_t i, const CommonTable& comm
   const auto states = common.states();
   const auto into = per_body_arrays(out);
   for (std::size_t q = 0; q < 4; ++q) {
-    for (std::size_t k = 0; k < nb; ++k) (*into[q])[i * nb + k] = mix((*states[q])[a * nb + k]);
+    const double* from = states[q]->data() + a * nb;
+    double* row = into[q]->data() + i * nb;
+    for (std::size_t k = 0; k < nb; ++k) row[k] = mix(from[k]);
   }
   out.energy[i] = mix(common.energy[a]);
   out.angular_momentum[i] = mix(common.angular_momentum[a]);
@@ -437,9 +444,7 @@ void put(GlobalErrorEstimate& out, std::size_t i, const CommonTable& common, std
   const std::size_t nb = common.nb;
   const auto states = common.states();
   const auto into = per_body_arrays(out);
-  for (std::size_t q = 0; q < 4; ++q) {
-    for (std::size_t k = 0; k < nb; ++k) (*into[q])[i * nb + k] = (*states[q])[a * nb + k];
-  }
+  for (std::size_t q = 0; q < 4; ++q) std::copy_n(states[q]->data() + a * nb, nb, into[q]->data() + i * nb);
   out.energy[i] = common.energy[a];
   out.angular_momentum[i] = common.angular_momentum[a];
   out.observed_order[i] = common.observed_order[a];
@@ -481,25 +486,27 @@ void name_exponential_growth(CommonTable& common, const double* t, std::size_t s
   least.fill(std::numeric_limits<double>::infinity());
   std::string past;
   for (std::size_t j = 1; j < common.rows(); ++j) {
-    const double tj = t[j * stride];
-    const std::array<double, 4> sizes = state_sizes(common, j);
-    for (std::size_t k = 0; k < sizes.size() && past.empty() && tj > 0.0; ++k) {
-      const double scaled = sizes[k] / (tj * tj * tj * tj);
-      if (std::isfinite(scaled) && scaled > beyond_polynomial * least[k]) {
-        const double rate = std::log(scaled / least[k] * std::pow(tj / least_t[k], 4.0)) / (tj - least_t[k]);
-        Text text;
-        text << "past the Lyapunov time of this scene: the differences grow as e^(" << Text::general(rate, 2)
-             << " t) from t = " << Text::general(least_t[k], 3)
-             << " s (nearby trajectories diverge exponentially); ";
-        past = text.view();
+    if (past.empty()) {  // once named, the growth is not measured again
+      const double tj = t[j * stride];
+      if (!(tj > 0.0)) continue;
+      const double t4 = tj * tj * tj * tj;
+      const std::array<double, 4> sizes = state_sizes(common, j);
+      for (std::size_t k = 0; k < sizes.size(); ++k) {
+        const double scaled = sizes[k] / t4;
+        if (past.empty() && std::isfinite(scaled) && scaled > beyond_polynomial * least[k]) {
+          const double rate = std::log(scaled / least[k] * std::pow(tj / least_t[k], 4.0)) / (tj - least_t[k]);
+          Text text;
+          text << "past the Lyapunov time of this scene: the differences grow as e^(" << Text::general(rate, 2)
+               << " t) from t = " << Text::general(least_t[k], 3)
+               << " s (nearby trajectories diverge exponentially); ";
+          past = text.view();
+        }
+        if (scaled > 0.0 && scaled < least[k]) least[k] = scaled, least_t[k] = tj;
       }
     }
-    for (std::size_t k = 0; k < sizes.size() && tj > 0.0; ++k) {
-      const double scaled = sizes[k] / (tj * tj * tj * tj);
-      if (scaled > 0.0 && scaled < least[k]) least[k] = scaled, least_t[k] = tj;
-    }
+    if (past.empty()) continue;
     const std::string& verdict = common.verdict[j];
-    if (!past.empty() && verdict.rfind("not asymptotic", 0) == 0) common.verdict.set(j, past + verdict);
+    if (verdict.rfind("not asymptotic", 0) == 0) common.verdict.set(j, past + verdict);
   }
 }
 
