@@ -536,14 +536,14 @@ ErrorRecords error_records(const Trajectory& r) {
   return out;
 }
 
-ErrorRecords error_records(const SceneSimulation& r) {
+ErrorRecords error_records(const SceneSimulation& r, bool scaled) {
   ErrorRecords out;
   out.n = r.size();
   out.bodies = r.body_count;
   out.t = r.t.data(), out.q_WB = r.q_WB.data(), out.w_B = r.w_B.data(), out.p_W = r.p_W.data(), out.v_W = r.v_W.data();
   out.energy = r.total_energy.data(), out.energy_scale = r.kinetic_energy.data();
   const std::size_t rows = out.n * static_cast<std::size_t>(out.bodies);
-  const bool scaled = r.mass.size() == rows && r.angular_momentum_O_W.size() == 3 * rows;  // else |L| itself
+  scaled = scaled && r.mass.size() == rows && r.angular_momentum_O_W.size() == 3 * rows;  // else |L| itself
   out.momentum.resize(out.n), out.momentum_scale.resize(scaled ? out.n : 0);
   for (std::size_t i = 0; i < out.n; ++i) {
     out.momentum[i] = Eigen::Map<const Eigen::Vector3d>(r.angular_momentum_W.data() + 3 * i).norm();
@@ -556,17 +556,20 @@ ErrorRecords error_records(const SceneSimulation& r) {
     }
     out.momentum_scale[i] = scale;
   }
-  // T − T(t0) = Σ work + Σ mass-flow energy + Σ motor work (SceneSimulation)
-  const auto row_sum = [&](const std::vector<double>& table, std::size_t i) {
-    if (table.empty() || out.n == 0 || table.size() % out.n != 0) return 0.0;
-    const std::size_t width = table.size() / out.n;
-    return std::accumulate(table.begin() + i * width, table.begin() + (i + 1) * width, 0.0);
+  // T − T(t0) = Σ work + Σ mass-flow energy + Σ motor work (SceneSimulation): each table's row width found once (0: a
+  // table without a row per record, not summed)
+  const auto width_of = [&](const std::vector<double>& table) {
+    return table.empty() || out.n == 0 || table.size() % out.n != 0 ? std::size_t{0} : table.size() / out.n;
+  };
+  const std::size_t works = width_of(r.work), flows = width_of(r.mass_flow_energy), motors = width_of(r.motor_work);
+  const auto row_sum = [](const std::vector<double>& table, std::size_t width, std::size_t i) {
+    return width == 0 ? 0.0 : std::accumulate(table.begin() + i * width, table.begin() + (i + 1) * width, 0.0);
   };
   if (r.kinetic_energy.size() == out.n) {
     out.balance.resize(out.n);
     for (std::size_t i = 0; i < out.n; ++i) {
-      out.balance[i] =
-          r.kinetic_energy[i] - row_sum(r.work, i) - row_sum(r.mass_flow_energy, i) - row_sum(r.motor_work, i);
+      out.balance[i] = r.kinetic_energy[i] - row_sum(r.work, works, i) - row_sum(r.mass_flow_energy, flows, i) -
+                       row_sum(r.motor_work, motors, i);
     }
   }
   return out;

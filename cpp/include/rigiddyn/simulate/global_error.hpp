@@ -12,8 +12,9 @@
 // is not in its asymptotic regime (a step too coarse, a force that is not smooth inside a step) and the verdict
 // names the reason instead: "not asymptotic: ...", "step beyond the stability limit: ..." (a coarse run diverged
 // or its energy departed by more than |T| + |V|), "past the Lyapunov time of this scene: ..." (estimates growing
-// exponentially, more than 1000 (t / t_k)^4 from an earlier record). Where d(y_h, y_2h) is below the round-off bound of the run the estimate is
-// that bound (and the verdict "reliable"); the method 'exact' reports the round-off bound alone.
+// exponentially, more than 1000 (t / t_k)^4 from an earlier record). Where d(y_h, y_2h) is below the round-off bound
+// of the run the estimate is that bound (and the verdict "reliable"); the method 'exact' reports the round-off bound
+// alone.
 //
 // Distances: the attitude's is the geodesic angle of q_2h⁻¹ q_h (so3/angular_distance.hpp, valid to leading
 // order), the other quantities' the norm of their difference.
@@ -62,9 +63,11 @@ struct ErrorRecords {
   std::vector<double> balance;
 };
 
-// The records of a body's run (|L| = angular_momentum_norm) and of a scene's (|L| = |angular_momentum_W|).
+// The records of a body's run (|L| = angular_momentum_norm) and of a scene's (|L| = |angular_momentum_W|); a scene's
+// with the size of |L|'s round-off (momentum_scale) unless `scaled` is false (the runs at 2h and 4h, whose own
+// round-off the estimate does not read).
 ErrorRecords error_records(const Trajectory& r);
-ErrorRecords error_records(const SceneSimulation& r);
+ErrorRecords error_records(const SceneSimulation& r, bool scaled = true);
 
 // The quantities an estimate gives (the fields of GlobalErrorEstimate, in their order); a tolerance bounds one of
 // them (simulate/tolerance.hpp).
@@ -108,6 +111,11 @@ const std::vector<double>& values_of(const GlobalErrorEstimate& e, ErrorMeasure 
 // The round-off bound alone, for the method 'exact' (order 0).
 GlobalErrorEstimate round_off_estimate(const ErrorRecords& h, const SimulationOptions& answer);
 
+// The records of a run at 2h or 4h as the estimate reads them (error_records without what it reads of the answer
+// alone).
+inline ErrorRecords coarse_records(const Trajectory& r) { return error_records(r); }
+inline ErrorRecords coarse_records(const SceneSimulation& r) { return error_records(r, false); }
+
 // The estimate of the run `answer` made with `options`, for a method of order `order` (0: the round-off bound
 // alone): runs run(coarse_options(options, 2)) and run(coarse_options(options, 4)), each returning the records
 // of the same model from the same initial state (a Trajectory or a SceneSimulation); `opaque` as in
@@ -118,8 +126,8 @@ GlobalErrorEstimate global_error(const Records& answer, const SimulationOptions&
   if (order == 0) return round_off_estimate(error_records(answer), options);
   const Records twice = run(coarse_options(options, 2));
   const Records four_times = run(coarse_options(options, 4));
-  return estimate_global_error(error_records(answer), error_records(twice), error_records(four_times), options, order,
-                               opaque);
+  return estimate_global_error(error_records(answer), coarse_records(twice), coarse_records(four_times), options,
+                               order, opaque);
 }
 
 }  // namespace rigiddyn
