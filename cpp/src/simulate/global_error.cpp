@@ -80,9 +80,10 @@ class Text {
 
 // A code that two numbers share only if printf's "%.2g" prints them alike, found without printing them: the sign,
 // the decade of |x| ([0.1, 1), [1, 10) or [10, 100)) and k = round(|x| 10^s) in it (s = 2, 1, 0), |x| rounded to two
-// significant digits, from which "%.2g" prints. −1 outside those decades, for NaN, and where |x| 10^s lies within
-// 10⁻⁶ of a tie between two k (its product's rounding, ≤ 2⁻⁴⁶, could then have moved it across the tie that printf
-// rounds exactly).
+// significant digits, from which "%.2g" prints (ISO C 7.21.6.1: %g rounds to the precision's significant digits,
+// then chooses its style from that rounded value's exponent). −1 outside those decades, for NaN, and where |x| 10^s
+// lies within 10⁻⁶ of a tie between two k (its product's rounding, ≤ 2⁻⁴⁷, could then have moved it across the tie
+// that printf rounds exactly).
 int two_digit_code(double x) {
   const double size = std::abs(x);
   const int decade = size < 0.1 ? -1 : size < 1.0 ? 0 : size < 10.0 ? 1 : size < 100.0 ? 2 : -1;  // NaN: -1
