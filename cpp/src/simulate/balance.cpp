@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <utility>
+#include <vector>
 
 namespace rigiddyn {
 
@@ -80,9 +81,17 @@ class RunningMax {
 // |v| of a 3-vector, as sqrt(v·v).
 double norm3(const Eigen::Vector3d& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
 
-// The round-off a residual whose terms have size `size` can hold after `steps` steps: 8 ε |size| per step, summed
-// (the global error estimate's bound, global_error.cpp).
-double round_off_of(double size, double steps) { return 8.0 * DBL_EPSILON * std::abs(size) * std::max(steps, 1.0); }
+// The round-off a residual whose terms have size `size` can hold after `steps` steps (at least 1: steps_at): 8 ε
+// |size| per step, summed (the global error estimate's bound, global_error.cpp).
+double round_off_of(double size, double steps) { return 8.0 * DBL_EPSILON * std::abs(size) * steps; }
+
+// The steps of each record of run r from its first, at least 1: max(rint((t − t0) / dt), 1), found once for the
+// three quantities' round-offs.
+std::vector<double> steps_at(const SceneSimulation& r, double dt) {
+  std::vector<double> steps(r.size());
+  for (std::size_t i = 0; i < steps.size(); ++i) steps[i] = std::max(std::nearbyint((r.t[i] - r.t[0]) / dt), 1.0);
+  return steps;
+}
 
 // Sets quantity q of b to NaN residuals with the verdict "not applicable: <why>".
 void set_not_applicable(RunBalance& b, std::size_t q, std::size_t n, const std::string& why) {
@@ -92,11 +101,10 @@ void set_not_applicable(RunBalance& b, std::size_t q, std::size_t n, const std::
   b.verdict[q] = "not applicable: " + why;
 }
 
-// The energy balance of run r's records at `steps` (record i: steps(i) steps from t0), with the works, mass-flow
-// energies and motor works summed as inputs (`magnitude` the sum of their absolute values): r_E = T − T0 − inputs,
-// its scale |E0| + T0 + the largest magnitude so far, its round-off from the terms T + |E − T| + magnitude.
-template <class Steps>
-void set_energy(RunBalance& b, const SceneSimulation& r, const Steps& steps) {
+// The energy balance of run r's records at `steps` (record i: steps[i] steps from t0, steps_at), with the works,
+// mass-flow energies and motor works summed as inputs (`magnitude` the sum of their absolute values): r_E = T − T0 −
+// inputs, its scale |E0| + T0 + the largest magnitude so far, its round-off from the terms T + |E − T| + magnitude.
+void set_energy(RunBalance& b, const SceneSimulation& r, const std::vector<double>& steps) {
   const std::size_t n = r.size();
   const auto nb = static_cast<std::size_t>(r.body_count), ne = static_cast<std::size_t>(r.element_count);
   const std::size_t nw = n ? r.motor_work.size() / n : 0;
@@ -114,14 +122,13 @@ void set_energy(RunBalance& b, const SceneSimulation& r, const Steps& steps) {
                              pairwise_abs_sum(W_motor, nw);
     b.residual(energy)[i] = T[i] - T[0] - inputs;
     b.scale(energy)[i] = std::abs(E[0]) + T[0] + largest(magnitude);
-    b.round_off(energy)[i] = round_off_of(size(T[i] + std::abs(E[i] - T[i]) + magnitude), steps(i));
+    b.round_off(energy)[i] = round_off_of(size(T[i] + std::abs(E[i] - T[i]) + magnitude), steps[i]);
   }
 }
 
 // The momentum balances of run r's records at `steps`: r_P = |P − P0 − J|, r_H = |H − H0 − K| about W's origin
 // (scene_model.hpp), their scales and round-offs from the sizes of the bodies' momenta and of the impulses.
-template <class Steps>
-void set_momenta(RunBalance& b, const SceneSimulation& r, const Steps& steps) {
+void set_momenta(RunBalance& b, const SceneSimulation& r, const std::vector<double>& steps) {
   const std::size_t n = r.size();
   const auto nb = static_cast<std::size_t>(r.body_count);
   std::vector<double> parts(3 * nb);  // each body's |m v|, |p| |m v| and |H_C| at a record
@@ -157,8 +164,8 @@ void set_momenta(RunBalance& b, const SceneSimulation& r, const Steps& steps) {
     // are larger (a scene at rest at t0 set moving by internal forces: its totals stay 0 while its parts move)
     b.scale(linear)[i] = std::max(mv_sum0 + largest_J(norm3(J)), linear_size_i);
     b.scale(angular)[i] = std::max(moments0 + largest_K(norm3(K)), angular_size_i);
-    b.round_off(linear)[i] = round_off_of(linear_size_i, steps(i));
-    b.round_off(angular)[i] = round_off_of(angular_size_i, steps(i));
+    b.round_off(linear)[i] = round_off_of(linear_size_i, steps[i]);
+    b.round_off(angular)[i] = round_off_of(angular_size_i, steps[i]);
   }
 }
 
@@ -170,7 +177,7 @@ bool RunBalance::applies(BalanceQuantity q) const {
 
 RunBalance scene_balance(const SceneSimulation& r, const std::string& not_applicable, double dt) {
   const std::size_t n = r.size();
-  const auto steps = [&](std::size_t i) { return std::nearbyint((r.t[i] - r.t[0]) / dt); };  // rint((t − t0) / dt)
+  const std::vector<double> steps = steps_at(r, dt);
   RunBalance b(n);
   b.about = "W's origin";
   b.verdict.fill("closed");
