@@ -6,7 +6,7 @@ RotatingFrameFreeParticle and ConstantThrustSolution against it."""
 import mpmath as mp
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 from scipy import integrate
 
@@ -167,11 +167,12 @@ def test_core_compound_pendulum_solution_matches_the_reference(seed):
 
 @settings(settings.get_profile("exact_dynamics_reference"))
 @given(seed=seeds)
+@example(seed=847414)  # its axis 1.4e-3 rad from the vertical: the reference's precession drifts (below)
 def test_core_lagrange_top_solution_matches_the_reference(seed):
     """LagrangeTopSolution: θ_min, θ_max (acos of the cubic's roots: |Δu| ≤ 64 eps × the coefficients' scale
     divided by |f'(u)| at the root, 1e-12 absolute here), the nutation period and the mean precession rate (K and Π of
     the same parameter), and (q_WB, w_B) at(t) over 3 nutation periods (phase λ t ≤ ~20: 2 × 64 eps per unit of
-    phase on |ω|)."""
+    phase on |ω|; the attitude besides within the reference's own drift of the precession angle)."""
     mass, inertia, c, g, q, w = heavy_top(seed)
     top = ref.LagrangeTop(mass, pivoted.inertia_about_pivot(mass, inertia, c), c, g, q, w)
     core = rd.LagrangeTopSolution(rd.PivotedBody(rd.RigidBody(mass, inertia), c), g, rd.PivotedBodyState(q_WB=q, w_B=w))
@@ -183,13 +184,18 @@ def test_core_lagrange_top_solution_matches_the_reference(seed):
     # (eps / (1 − |u|)): the core is held to its own bound against a 40-digit quadrature of the same motion.
     nearest_vertical = min(1 - abs(np.cos(top.theta_min)), 1 - abs(np.cos(top.theta_max)))
     near_vertical_loss = 2 * 64 * EPS / np.sqrt(max(nearest_vertical, EPS))
-    assert core.mean_precession_rate == pytest.approx(mean_precession_rate_by_quadrature(top),
-                                                      rel=1e-12 + near_vertical_loss)
+    rate = mean_precession_rate_by_quadrature(top)
+    assert core.mean_precession_rate == pytest.approx(rate, rel=1e-12 + near_vertical_loss)
+    # The precession angle ψ(t) carries its Π's relative error: e |ψ|, |ψ| ≤ |rate| (t + one nutation period) (the
+    # secular part and at most a period's worth besides); e the reference's (its mean rate's against the quadrature,
+    # doubled for the second order) and the core's near a vertical (its bound above; the phase term holds the rest).
+    reference_error = abs(top.mean_precession_rate - rate) / abs(rate)
     for t in np.linspace(0, 3 * top.nutation_period, 5):
         q_core, w_core = core.at(t)
         q_ref, w_ref = top.at(t)
         phase = 1 + np.linalg.norm(w) * t
-        assert attitude_difference(q_core, q_ref) <= 2 * 64 * EPS * phase * 10
+        precession_drift = (2 * reference_error + near_vertical_loss) * abs(rate) * (t + top.nutation_period)
+        assert attitude_difference(q_core, q_ref) <= 2 * 64 * EPS * phase * 10 + precession_drift
         np.testing.assert_allclose(w_core, w_ref, rtol=0, atol=2 * 64 * EPS * phase * 10 * np.linalg.norm(w))
 
 
