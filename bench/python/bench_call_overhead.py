@@ -6,11 +6,10 @@ free body, all in one run, each the best of several rounds of a loop of calls.
 simulate's fixed cost is its time less that of its steps: the cost per step is the slope between
 simulate(steps=10, error=False) and simulate(steps=10 + k, error=False) (k = 1000), so that "fixed cost" is what
 the call costs besides stepping: arguments, the result, the energy and momentum balance and its check. With
-error=True, the default, a run of at most 64 steps whose balances close whatever the estimate says makes its global
-error estimate (the run repeated and its two coarse runs) on the first read of result.error, so its steps are those
-of error=False; "per step" with error=True is the slope of the longer runs, which make theirs at once. The result's
-arrays are made on their first read: "... and q_WB[-1]" adds what a control loop reading the last attitude pays for
-one, "... and error.attitude[-1]" what reading the estimate costs.
+error=True, the default, a run whose balances close whatever the estimate says makes its global error estimate (its
+two coarse runs compared with its records) on the first read of result.error, so its steps are those of
+error=False, short or long. The result's arrays are made on their first read: "... and q_WB[-1]" adds what a control
+loop reading the last attitude pays for one, "... and error.attitude[-1]" what reading the estimate costs.
 
     python bench/python/bench_call_overhead.py           # 20 000 calls a round, 7 rounds
     python bench/python/bench_call_overhead.py --small   # 2 000 calls a round, 3 rounds (what ctest runs)

@@ -10,6 +10,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <variant>
 #include <vector>
@@ -380,6 +381,27 @@ const ResultArray result_arrays[] = {
 };
 constexpr std::size_t result_array_count = sizeof(result_arrays) / sizeof(result_arrays[0]);
 
+// result.error of r (LazyError): a deferred estimate reads the answer's columns from r's own arrays (GIL held)
+py::object result_error(const SceneResult& r) {
+  return r.error.get([&r] {
+    const auto data = [](const LazyArray& column) { return column.values().first; };
+    SceneColumns c;
+    std::size_t q_size = 0;
+    std::tie(c.t, c.n) = r.t.values();
+    std::tie(c.q_WB, q_size) = r.q_WB.values();
+    c.bodies = c.n == 0 ? 0 : static_cast<std::int64_t>(q_size / (4 * c.n));
+    c.w_B = data(r.w_B), c.p_W = data(r.p_W), c.v_W = data(r.v_W);
+    c.total_energy = data(r.total_energy), c.angular_momentum_W = data(r.angular_momentum_W);
+    std::tie(c.kinetic_energy, c.kinetic_energy_size) = r.kinetic_energy.values();
+    std::tie(c.mass, c.mass_size) = r.mass.values();
+    std::tie(c.angular_momentum_O_W, c.angular_momentum_O_W_size) = r.angular_momentum_O_W.values();
+    std::tie(c.work, c.work_size) = r.work.values();
+    std::tie(c.mass_flow_energy, c.mass_flow_energy_size) = r.mass_flow_energy.values();
+    std::tie(c.motor_work, c.motor_work_size) = r.motor_work.values();
+    return c;
+  });
+}
+
 py::tuple scene_result_state(const SceneResult& r) {
   py::tuple out(result_array_count + 14);
   for (std::size_t i = 0; i < result_array_count; ++i) out[i] = (r.*(result_arrays[i].member)).get();
@@ -392,7 +414,7 @@ py::tuple scene_result_state(const SceneResult& r) {
   out[result_array_count + 6] = r.wheel_speed.get();
   out[result_array_count + 7] = r.motor_work.get();
   out[result_array_count + 8] = r.wheel_bodies;
-  out[result_array_count + 9] = r.error.get();
+  out[result_array_count + 9] = result_error(r);
   out[result_array_count + 10] = r.balance.get();
   out[result_array_count + 11] = r.choice;
   out[result_array_count + 12] = r.joint_q.get();
@@ -970,22 +992,21 @@ Controller as_controller(py::handle controller, const Scene& scene, bool* shippe
   return out;
 }
 
-// The most steps of a run whose estimate simulate_scene_py defers to the first read of result.error: made then, it
-// repeats the run (the same records, bitwise: a scene without an opaque force or a controller is deterministic) before
-// its two coarse runs, at most (1 + 0.75)/0.75 = 2.3x the estimate made at once, which costs a few microseconds of
-// fixed cost at this size (and is what a control loop that never reads it saves).
-constexpr std::int64_t deferred_estimate_steps = 64;
-
-// result.error of the run of `compiled` from `initial` under options o, made on its first read: the run repeated,
-// then its coarse runs (global_error). The GIL stays held (runs of at most deferred_estimate_steps steps), so that
-// a second thread reading result.error meanwhile waits for this one's instead of finding none made.
-std::function<py::object()> deferred_estimate(std::shared_ptr<const CompiledScene> compiled,
-                                              std::vector<BodyState> initial, SimulationOptions o) {
-  o.monitor = nullptr;  // the run's monitor is gone by then (and a run this short needs none for Ctrl-C)
-  return [compiled = std::move(compiled), initial = std::move(initial), o = std::move(o)]() {
-    const auto run = [&](const SimulationOptions& options) { return simulate(*compiled, initial, options); };
-    return py::object(py::cast(to_global_error(global_error(run(o), o, scene_order(*compiled), run))));
+// result.error of a run of `compiled` from `initial` under options o, made on its first read (LazyError): the
+// estimate's two coarse runs (global_error.hpp) compared with the run's records, which its result keeps; the same
+// values as the estimate made at once, bit for bit (a scene without an opaque force or a controller is deterministic).
+std::shared_ptr<DeferredEstimate> deferred_estimate(std::shared_ptr<const CompiledScene> compiled,
+                                                    std::vector<BodyState> initial, SimulationOptions o) {
+  o.monitor = nullptr;  // the run's monitor is gone by then
+  auto d = std::make_shared<DeferredEstimate>();
+  const int order = scene_order(*compiled);
+  d->make = [compiled = std::move(compiled), initial = std::move(initial), o, order](const ErrorRecords& answer) {
+    if (order == 0) return round_off_estimate(answer, o);
+    const SceneSimulation twice = simulate(*compiled, initial, coarse_options(o, 2));
+    const SceneSimulation four_times = simulate(*compiled, initial, coarse_options(o, 4));
+    return estimate_global_error(answer, coarse_records(twice), coarse_records(four_times), o, order);
   };
+  return d;
 }
 
 py::object simulate_scene_py(py::handle model, py::handle initial, py::handle dt, py::handle steps, py::handle method,
@@ -1036,7 +1057,8 @@ py::object simulate_scene_py(py::handle model, py::handle initial, py::handle dt
     // under a fresh copy of it (a law in Python may keep state or draw noise that another run would not repeat)
     if (estimate_error && !r.interrupted && (!control || shipped_law)) {
       const std::string opaque = opaque_force(*h.compiled);
-      if (!control && opaque.empty() && progress.is_none() && o.steps <= deferred_estimate_steps) {
+      // (not with q_WB as (w, x, y, z): the estimate reads the result's attitudes as (x, y, z, w))
+      if (!control && opaque.empty() && progress.is_none() && !first) {
         balance = scene_run_balance(r, h, o.dt);
         if (closes_under_any_estimate(*balance, level.value_or(default_accuracy_level))) {
           deferred = LazyError(deferred_estimate(h.compiled, std::move(initial_states), o));  // their last use
@@ -1303,10 +1325,10 @@ void bind_scene(py::module_& m) {
       .def_readonly("elapsed_seconds", &SceneResult::elapsed_seconds, "wall time of the C++ stepping loop [s]")
       .def_property_readonly("balance", [](const SceneResult& r) { return r.balance.get(); },
                     "The energy and momentum balance of every record (a Balance), or None (a batch result).")
-      .def_property_readonly("error", [](const SceneResult& r) { return r.error.get(); },
+      .def_property_readonly("error", &result_error,
                     "The global error estimate of every record (a GlobalError: per body (n, nb) for the state, per "
                     "record (n,) for the energy and |L|), or None (simulate(..., error=False), a pickled or batch "
-                    "result). A short run may make it on this first read (simulate's error): the same values.")
+                    "result). A run whose balances close may make it on this first read (simulate's error): the same values.")
       .def_readonly("choice", &SceneResult::choice,
                     "What simulate(..., tolerance=) chose and why (a ToleranceChoice), or None (a run at a given dt).")
       .def_readonly("scalar_first", &SceneResult::scalar_first,

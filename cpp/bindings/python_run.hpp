@@ -16,6 +16,7 @@
 #include <initializer_list>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -80,6 +81,13 @@ class LazyArray {
     LazyArray out(std::vector<double>(), shape.begin(), shape.size());
     out.zeros_ = true;
     return out;
+  }
+
+  // The values it holds now and their number (GIL held): the array's, or those it will adopt (the same buffer: adopt
+  // does not copy); none for zeros not yet made
+  std::pair<const double*, std::size_t> values() const {
+    if (array_) return {pybind11::reinterpret_borrow<py_io::Array>(array_).data(), size()};
+    return {values_.data(), values_.size()};
   }
 
   // The array (GIL held)
@@ -348,30 +356,49 @@ class LazyBalance {
   mutable pybind11::object object_ = pybind11::none();
 };
 
-// result.error of a run: its GlobalError (or None) as made, or the computation that makes it on the first read (a
-// short deterministic run whose balances close under any estimate defers it: simulate_scene_py). A control loop that
-// reads the state alone then pays for the run alone; a reader gets the values the run would have made at once.
+// A run's estimate made on the first read of result.error: `make`, the two coarse runs and their comparison with the
+// answer's records (global_error.hpp), pure C++, run without the GIL; the answer's records are the result's own
+// columns (no copy), read when it is made.
+struct DeferredEstimate {
+  std::function<GlobalErrorEstimate(const ErrorRecords& answer)> make;
+  std::mutex mutex;  // one thread makes it, the others wait for it
+  std::optional<GlobalErrorEstimate> made;
+};
+
+// result.error of a run: its GlobalError (or None) as made, or a DeferredEstimate that makes it on the first read (a
+// deterministic run whose balances close under any estimate defers it: simulate_scene_py). A loop of runs that reads
+// the state alone then pays for the runs alone; a reader gets the values the run would have made at once.
 class LazyError {
  public:
   LazyError() = default;
   LazyError(pybind11::object made) : made_(std::move(made)) {}  // NOLINT: a GlobalError or None converts
-  explicit LazyError(std::function<pybind11::object()> make) : make_(std::move(make)) {}
+  explicit LazyError(std::shared_ptr<DeferredEstimate> deferred) : deferred_(std::move(deferred)) {}
 
   // Whether it is still to be made
-  bool pending() const { return static_cast<bool>(make_); }
+  bool pending() const { return static_cast<bool>(deferred_); }
 
-  // The GlobalError (or None), made on the first call (GIL held throughout: one thread makes it; an exception leaves
-  // it to be made again).
-  pybind11::object get() const {
-    if (make_) {
-      made_ = make_();
-      make_ = nullptr;
+  // The GlobalError (or None); a deferred one made on the first call from `columns` (the answer's, read with the GIL
+  // held: the result's arrays) with the GIL released, so that other threads run meanwhile; a second reader waits for
+  // the first's and gets the same object. An exception leaves it to be made again.
+  pybind11::object get(const std::function<SceneColumns()>& columns) const {
+    if (deferred_) {
+      const std::shared_ptr<DeferredEstimate> d = deferred_;
+      const SceneColumns c = columns();
+      {
+        const pybind11::gil_scoped_release release;
+        const std::lock_guard<std::mutex> lock(d->mutex);
+        if (!d->made) d->made = d->make(error_records(c));
+      }
+      if (deferred_ == d) {  // the first reader back with the GIL converts it
+        made_ = pybind11::cast(to_global_error(std::move(*d->made)));
+        deferred_.reset();
+      }
     }
     return made_;
   }
 
  private:
-  mutable std::function<pybind11::object()> make_;
+  mutable std::shared_ptr<DeferredEstimate> deferred_;
   mutable pybind11::object made_ = pybind11::none();
 };
 

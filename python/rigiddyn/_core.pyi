@@ -5859,7 +5859,7 @@ class SceneResult:
     @property
     def error(self) -> typing.Any:
         """
-        The global error estimate of every record (a GlobalError: per body (n, nb) for the state, per record (n,) for the energy and |L|), or None (simulate(..., error=False), a pickled or batch result). A short run may make it on this first read (simulate's error): the same values.
+        The global error estimate of every record (a GlobalError: per body (n, nb) for the state, per record (n,) for the energy and |L|), or None (simulate(..., error=False), a pickled or batch result). A run whose balances close may make it on this first read (simulate's error): the same values.
         """
     @property
     def joint_q(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -11981,9 +11981,10 @@ def simulate(model: Particle | PlanarBody | RigidBody | PivotedBody | PivotedPla
     error : bool, keyword-only, default True
         Estimate the global error of every record (result.error, a GlobalError) by two more runs of the method at 2 dt
         and 4 dt (+0.75x the cost; global Richardson extrapolation with an observed-order check, see GlobalError).
-        A run of at most 64 steps without a PythonForce, a controller or a progress callback, whose balances close
-        whatever the estimate says, makes it on the first read of result.error (the run repeated, then the two: the
-        same values), so that a loop of short runs that reads the state alone pays for the runs alone.
+        A run without a PythonForce, a controller or a progress callback (and without scalar_first), whose balances
+        close whatever the estimate says, makes it on the first read of result.error, from the records the result
+        keeps (the same values, the GIL released meanwhile), so that a run whose state alone is read pays for the run
+        alone.
         False: no estimate (result.error is None), the cost of the run alone. True with tolerance.
     accuracy_level : float or None, keyword-only, default 1e-3
         The relative residual of an energy or momentum balance (result.balance) beyond which a run without a reliable

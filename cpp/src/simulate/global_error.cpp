@@ -537,36 +537,52 @@ ErrorRecords error_records(const Trajectory& r) {
   return out;
 }
 
-ErrorRecords error_records(const SceneSimulation& r, bool scaled) {
+SceneColumns scene_columns(const SceneSimulation& r) {
+  SceneColumns c;
+  c.n = r.size();
+  c.bodies = r.body_count;
+  c.t = r.t.data(), c.q_WB = r.q_WB.data(), c.w_B = r.w_B.data(), c.p_W = r.p_W.data(), c.v_W = r.v_W.data();
+  c.total_energy = r.total_energy.data(), c.angular_momentum_W = r.angular_momentum_W.data();
+  c.kinetic_energy = r.kinetic_energy.data(), c.kinetic_energy_size = r.kinetic_energy.size();
+  c.mass = r.mass.data(), c.mass_size = r.mass.size();
+  c.angular_momentum_O_W = r.angular_momentum_O_W.data(), c.angular_momentum_O_W_size = r.angular_momentum_O_W.size();
+  c.work = r.work.data(), c.work_size = r.work.size();
+  c.mass_flow_energy = r.mass_flow_energy.data(), c.mass_flow_energy_size = r.mass_flow_energy.size();
+  c.motor_work = r.motor_work.data(), c.motor_work_size = r.motor_work.size();
+  return c;
+}
+
+ErrorRecords error_records(const SceneColumns& r, bool scaled) {
   ErrorRecords out;
-  out.n = r.size();
-  out.bodies = r.body_count;
-  out.t = r.t.data(), out.q_WB = r.q_WB.data(), out.w_B = r.w_B.data(), out.p_W = r.p_W.data(), out.v_W = r.v_W.data();
-  out.energy = r.total_energy.data(), out.energy_scale = r.kinetic_energy.data();
+  out.n = r.n;
+  out.bodies = r.bodies;
+  out.t = r.t, out.q_WB = r.q_WB, out.w_B = r.w_B, out.p_W = r.p_W, out.v_W = r.v_W;
+  out.energy = r.total_energy, out.energy_scale = r.kinetic_energy;
   const std::size_t rows = out.n * static_cast<std::size_t>(out.bodies);
-  scaled = scaled && r.mass.size() == rows && r.angular_momentum_O_W.size() == 3 * rows;  // else |L| itself
+  scaled = scaled && r.mass_size == rows && r.angular_momentum_O_W_size == 3 * rows;  // else |L| itself
   out.momentum.resize(out.n), out.momentum_scale.resize(scaled ? out.n : 0);
   for (std::size_t i = 0; i < out.n; ++i) {
-    out.momentum[i] = Eigen::Map<const Eigen::Vector3d>(r.angular_momentum_W.data() + 3 * i).norm();
+    out.momentum[i] = Eigen::Map<const Eigen::Vector3d>(r.angular_momentum_W + 3 * i).norm();
     if (!scaled) continue;
     double scale = 0.0;  // Σ |p_W × m v_W| bounded by |p_W| m |v_W|, + |H| of each body
     for (std::int64_t b = 0; b < out.bodies; ++b) {
       const std::size_t k = i * static_cast<std::size_t>(out.bodies) + static_cast<std::size_t>(b);
-      scale += vector3(r.p_W.data(), out, i, b).norm() * std::abs(r.mass[k]) * vector3(r.v_W.data(), out, i, b).norm() +
-               vector3(r.angular_momentum_O_W.data(), out, i, b).norm();
+      scale += vector3(r.p_W, out, i, b).norm() * std::abs(r.mass[k]) * vector3(r.v_W, out, i, b).norm() +
+               vector3(r.angular_momentum_O_W, out, i, b).norm();
     }
     out.momentum_scale[i] = scale;
   }
   // T − T(t0) = Σ work + Σ mass-flow energy + Σ motor work (SceneSimulation): each table's row width found once (0: a
   // table without a row per record, not summed)
-  const auto width_of = [&](const std::vector<double>& table) {
-    return table.empty() || out.n == 0 || table.size() % out.n != 0 ? std::size_t{0} : table.size() / out.n;
+  const auto width_of = [&](std::size_t size) {
+    return size == 0 || out.n == 0 || size % out.n != 0 ? std::size_t{0} : size / out.n;
   };
-  const std::size_t works = width_of(r.work), flows = width_of(r.mass_flow_energy), motors = width_of(r.motor_work);
-  const auto row_sum = [](const std::vector<double>& table, std::size_t width, std::size_t i) {
-    return width == 0 ? 0.0 : std::accumulate(table.begin() + i * width, table.begin() + (i + 1) * width, 0.0);
+  const std::size_t works = width_of(r.work_size), flows = width_of(r.mass_flow_energy_size),
+                    motors = width_of(r.motor_work_size);
+  const auto row_sum = [](const double* table, std::size_t width, std::size_t i) {
+    return width == 0 ? 0.0 : std::accumulate(table + i * width, table + (i + 1) * width, 0.0);
   };
-  if (r.kinetic_energy.size() == out.n) {
+  if (r.kinetic_energy_size == out.n) {
     out.balance.resize(out.n);
     for (std::size_t i = 0; i < out.n; ++i) {
       out.balance[i] = r.kinetic_energy[i] - row_sum(r.work, works, i) - row_sum(r.mass_flow_energy, flows, i) -

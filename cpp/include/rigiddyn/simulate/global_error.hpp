@@ -63,11 +63,31 @@ struct ErrorRecords {
   std::vector<double> balance;
 };
 
+// The columns of a scene's run that its ErrorRecords are made of (SceneSimulation's, or those of a result that keeps
+// them): n records of nb bodies, row-major, as SceneSimulation holds them; a null column with its size 0 where the run
+// has none.
+struct SceneColumns {
+  std::size_t n = 0;
+  std::int64_t bodies = 1;
+  const double *t = nullptr, *q_WB = nullptr, *w_B = nullptr, *p_W = nullptr, *v_W = nullptr;
+  const double *total_energy = nullptr, *angular_momentum_W = nullptr;
+  const double* kinetic_energy = nullptr;
+  std::size_t kinetic_energy_size = 0;
+  const double *mass = nullptr, *angular_momentum_O_W = nullptr;  // (n, nb), (n, nb, 3)
+  std::size_t mass_size = 0, angular_momentum_O_W_size = 0;
+  const double *work = nullptr, *mass_flow_energy = nullptr, *motor_work = nullptr;  // (n, ne), (n, nb), (n, nw)
+  std::size_t work_size = 0, mass_flow_energy_size = 0, motor_work_size = 0;
+};
+SceneColumns scene_columns(const SceneSimulation& r);
+
 // The records of a body's run (|L| = angular_momentum_norm) and of a scene's (|L| = |angular_momentum_W|); a scene's
 // with the size of |L|'s round-off (momentum_scale) unless `scaled` is false (the runs at 2h and 4h, whose own
 // round-off the estimate does not read).
 ErrorRecords error_records(const Trajectory& r);
-ErrorRecords error_records(const SceneSimulation& r, bool scaled = true);
+ErrorRecords error_records(const SceneColumns& r, bool scaled = true);
+inline ErrorRecords error_records(const SceneSimulation& r, bool scaled = true) {
+  return error_records(scene_columns(r), scaled);
+}
 
 // The quantities an estimate gives (the fields of GlobalErrorEstimate, in their order); a tolerance bounds one of
 // them (simulate/tolerance.hpp).
