@@ -389,6 +389,7 @@ py::object result_error(const SceneResult& r) {
     std::size_t q_size = 0;
     std::tie(c.t, c.n) = r.t.values();
     std::tie(c.q_WB, q_size) = r.q_WB.values();
+    c.scalar_first = r.scalar_first;
     c.bodies = c.n == 0 ? 0 : static_cast<std::int64_t>(q_size / (4 * c.n));
     c.w_B = data(r.w_B), c.p_W = data(r.p_W), c.v_W = data(r.v_W);
     c.total_energy = data(r.total_energy), c.angular_momentum_W = data(r.angular_momentum_W);
@@ -1002,8 +1003,12 @@ std::shared_ptr<DeferredEstimate> deferred_estimate(std::shared_ptr<const Compil
   const int order = scene_order(*compiled);
   d->make = [compiled = std::move(compiled), initial = std::move(initial), o, order](const ErrorRecords& answer) {
     if (order == 0) return round_off_estimate(answer, o);
-    const SceneSimulation twice = simulate(*compiled, initial, coarse_options(o, 2));
-    const SceneSimulation four_times = simulate(*compiled, initial, coarse_options(o, 4));
+    const auto run = [&](int factor) {
+      SimulationOptions coarse = coarse_options(o, factor);
+      coarse.estimate_records = true;
+      return simulate(*compiled, initial, coarse);
+    };
+    const SceneSimulation twice = run(2), four_times = run(4);
     return estimate_global_error(answer, coarse_records(twice), coarse_records(four_times), o, order);
   };
   return d;
@@ -1057,15 +1062,15 @@ py::object simulate_scene_py(py::handle model, py::handle initial, py::handle dt
     // under a fresh copy of it (a law in Python may keep state or draw noise that another run would not repeat)
     if (estimate_error && !r.interrupted && (!control || shipped_law)) {
       const std::string opaque = opaque_force(*h.compiled);
-      // (not with q_WB as (w, x, y, z): the estimate reads the result's attitudes as (x, y, z, w))
-      if (!control && opaque.empty() && progress.is_none() && !first) {
+      if (!control && opaque.empty() && progress.is_none()) {
         balance = scene_run_balance(r, h, o.dt);
         if (closes_under_any_estimate(*balance, level.value_or(default_accuracy_level))) {
           deferred = LazyError(deferred_estimate(h.compiled, std::move(initial_states), o));  // their last use
         }
       }
       if (!deferred.pending()) {
-        const auto run = [&](const SimulationOptions& coarse) {
+        const auto run = [&](SimulationOptions coarse) {
+          coarse.estimate_records = true;  // what the estimate reads of it
           if (!control) return simulate(*h.compiled, initial_states, coarse);
           const Controller fresh = *pristine;
           return simulate(*h.compiled, initial_states, coarse, fresh);
@@ -1328,7 +1333,8 @@ void bind_scene(py::module_& m) {
       .def_property_readonly("error", &result_error,
                     "The global error estimate of every record (a GlobalError: per body (n, nb) for the state, per "
                     "record (n,) for the energy and |L|), or None (simulate(..., error=False), a pickled or batch "
-                    "result). A run whose balances close may make it on this first read (simulate's error): the same values.")
+                    "result). A run whose balances close may make it on this first read (simulate's error): the same "
+                    "values.")
       .def_readonly("choice", &SceneResult::choice,
                     "What simulate(..., tolerance=) chose and why (a ToleranceChoice), or None (a run at a given dt).")
       .def_readonly("scalar_first", &SceneResult::scalar_first,

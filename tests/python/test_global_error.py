@@ -248,7 +248,7 @@ def test_an_estimate_made_on_first_read_is_the_one_made_at_once(method, steps, r
     read_first = rd.simulate(body, state, **run)
     assert np.array_equal(read_first.q_WB, at_once.q_WB) and np.array_equal(read_first.p_W, at_once.p_W)
     assert _same_estimate(read_first.error, at_once.error)  # its columns read from the arrays made meanwhile
-    scalar_first = rd.simulate(body, state, **run, scalar_first=True)  # made at once: its q_WB rows are (w, x, y, z)
+    scalar_first = rd.simulate(body, state, **run, scalar_first=True)  # its q_WB rows read as (w, x, y, z)
     assert _same_estimate(scalar_first.error, at_once.error)
 
 

@@ -33,6 +33,7 @@ double round_off_bound(double size, std::int64_t steps) {
 
 Eigen::Quaterniond attitude(const ErrorRecords& r, std::size_t i, std::int64_t b) {
   const double* q = r.q_WB + (i * r.bodies + b) * 4;
+  if (r.scalar_first) return Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized();
   return Eigen::Quaterniond(q[3], q[0], q[1], q[2]).normalized();
 }
 
@@ -557,6 +558,7 @@ ErrorRecords error_records(const SceneColumns& r, bool scaled) {
   out.n = r.n;
   out.bodies = r.bodies;
   out.t = r.t, out.q_WB = r.q_WB, out.w_B = r.w_B, out.p_W = r.p_W, out.v_W = r.v_W;
+  out.scalar_first = r.scalar_first;
   out.energy = r.total_energy, out.energy_scale = r.kinetic_energy;
   const std::size_t rows = out.n * static_cast<std::size_t>(out.bodies);
   scaled = scaled && r.mass_size == rows && r.angular_momentum_O_W_size == 3 * rows;  // else |L| itself

@@ -260,6 +260,7 @@ class OneBodySceneModel {
     } else {
       for (std::size_t i = 0; i < element_count_; ++i) out.work.push_back(y[t_y + 1 + column_[i]]);
     }
+    if (out.estimate_records) return;
     for (std::size_t i = 0; i < element_count_; ++i) out.power.push_back(e.power[column_[i]]);
     if constexpr (free_body) {  // a free body's impulses (zero without an element)
       std::array<double, 6> impulses{};

@@ -456,10 +456,12 @@ class BasicSceneModel {
     for (const Term& term : terms_) V += std::visit([&](const auto& e) { return e.potential(kinematics_); }, term);
     detail::append_record_sums(sums, V, out);
     for (std::size_t e = 0; e < terms_.size(); ++e) out.work.push_back(y[t_y_ + 1 + e]);
-    const double* impulses = y.data() + t_y_ + impulse_offset();
-    append_values<3>(out.impulse_W, impulses);
-    append_values<3>(out.angular_impulse_W, impulses + 3);
-    out.power.insert(out.power.end(), power_.begin(), power_.end());
+    if (!out.estimate_records) {
+      const double* impulses = y.data() + t_y_ + impulse_offset();
+      append_values<3>(out.impulse_W, impulses);
+      append_values<3>(out.angular_impulse_W, impulses + 3);
+      out.power.insert(out.power.end(), power_.begin(), power_.end());
+    }
     for_each_slot([&](const auto& s) {
       if constexpr (detail::has_internal_record<std::decay_t<decltype(s)>>::value) s.record_internal(y.data(), out);
     });

@@ -49,6 +49,10 @@ struct SceneSimulation {
   std::vector<double> joint_q;            // (n, nq) the trees' configurations q as integrated (quaternions' norms
                                           // not forced), the trees in the scene's order (empty without one)
   std::vector<double> joint_v;            // (n, nv) their velocities v
+  // The run recorded what the global error estimate reads of a coarse run alone (SimulationOptions'
+  // estimate_records): potential_energy, linear_momentum_W, pivot_reaction_W, angular_momentum_O_W, mass, power and
+  // the impulses stay empty (but on the one-body fast models' runs, which record every column).
+  bool estimate_records = false;
   bool diverged = false;                  // the state became non-finite; the run stopped there
   bool interrupted = false;               // options.monitor returned true; the run stopped there
   std::int64_t unconverged_steps = 0;     // steps whose implicit solve stopped at its iteration cap

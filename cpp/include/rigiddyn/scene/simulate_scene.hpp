@@ -141,6 +141,7 @@ SceneSimulation run_scene(const Model& model, const typename Model::Coordinates&
   std::size_t wheels = 0;
   if constexpr (records_wheels<Model>::value) wheels = model.wheel_count();
   SceneSimulation out = reserved_scene_simulation(o.steps, o.record_every, model.body_count(), model.element_count(), wheels);
+  out.estimate_records = o.estimate_records;
   return visit_method(o.method, [&](auto integrator) {
     if constexpr (has_fixed_size<Model> && fixed_place_of_t<decltype(integrator)>) {
       return run<decltype(integrator)>(model, y, o, FixedScenePieces<Model::time_index()>{switch_schedule}, std::move(out));

@@ -48,6 +48,7 @@ struct ErrorRecords {
   std::int64_t bodies = 1;
   const double* t = nullptr;             // (n,) [s]
   const double* q_WB = nullptr;          // (n, nb, 4) attitudes (x, y, z, w), any norm
+  bool scalar_first = false;             // q_WB as (w, x, y, z) (the records of a result that gives them so)
   const double* w_B = nullptr;           // (n, nb, 3) [rad/s]
   const double* p_W = nullptr;           // (n, nb, 3) [m]
   const double* v_W = nullptr;           // (n, nb, 3) [m/s]
@@ -70,6 +71,7 @@ struct SceneColumns {
   std::size_t n = 0;
   std::int64_t bodies = 1;
   const double *t = nullptr, *q_WB = nullptr, *w_B = nullptr, *p_W = nullptr, *v_W = nullptr;
+  bool scalar_first = false;  // q_WB as (w, x, y, z)
   const double *total_energy = nullptr, *angular_momentum_W = nullptr;
   const double* kinetic_energy = nullptr;
   std::size_t kinetic_energy_size = 0;

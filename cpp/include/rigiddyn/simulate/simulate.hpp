@@ -38,6 +38,9 @@ struct SimulationOptions {
   // of steps done (a progress report, an interrupt check); returning true stops the run, which then
   // returns its records so far with Trajectory::interrupted set. Empty: never called.
   std::function<bool(std::int64_t steps_done)> monitor;
+  // A scene's run records only what the global error estimate reads of its runs at 2h and 4h (SceneSimulation's
+  // estimate_records): a coarse run of the estimate, whose other columns nothing reads.
+  bool estimate_records = false;
 };
 
 // Records, one row per recorded step, row-major (n = size()):

@@ -105,7 +105,7 @@ RIGIDDYN_ALWAYS_INLINE void add_wrench_impulses(const BodyKinematics& k, const B
 
 // Appends one body's record to `out` (scene_simulation.hpp): its kinematics k, its attitude as integrated (q_y, the
 // attitude's 4 numbers in y; null for a kind without one: k's), its momentum about its own point and its pivot's
-// reaction, its mass
+// reaction, its mass (the last three not in a coarse run of the estimate: estimate_records)
 inline void append_body_record(const BodyKinematics& k, const double* q_y, const Eigen::Vector3d& momentum_O_W,
                                const Eigen::Vector3d& reaction_W, SceneSimulation& out) {
   append_values<3>(out.p_W, k.p_W.data());
@@ -113,18 +113,21 @@ inline void append_body_record(const BodyKinematics& k, const double* q_y, const
   append_values<4>(out.q_WB, q);
   append_values<3>(out.v_W, k.v_W.data());
   append_values<3>(out.w_B, k.w_B.data());
+  if (out.estimate_records) return;
   append_values<3>(out.pivot_reaction_W, reaction_W.data());
   append_values<3>(out.angular_momentum_O_W, momentum_O_W.data());
   out.mass.push_back(k.m);
 }
 
-// Appends the energies (T, V, T + V) and the momenta L_W, H_W of a record to `out`
+// Appends the energies (T, V, T + V) and the momenta L_W, H_W of a record to `out` (T, T + V and H_W alone in a
+// coarse run of the estimate: estimate_records)
 inline void append_record_sums(const RecordSums& sums, double V, SceneSimulation& out) {
   out.kinetic_energy.push_back(sums.T);
-  out.potential_energy.push_back(V);
   out.total_energy.push_back(sums.T + V);
-  append_values<3>(out.linear_momentum_W, sums.L_W.data());
   append_values<3>(out.angular_momentum_W, sums.H_W.data());
+  if (out.estimate_records) return;
+  out.potential_energy.push_back(V);
+  append_values<3>(out.linear_momentum_W, sums.L_W.data());
 }
 
 // Whether a kind's rate, velocity or kick read the kinematics (true unless it says reads_kinematics = false)

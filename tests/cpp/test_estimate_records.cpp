@@ -1,0 +1,105 @@
+// The records of a coarse run of the global error estimate (SimulationOptions::estimate_records): the columns the
+// estimate reads are those of the same run recording every column, bit for bit, and so are the records the estimate
+// makes of them (error_records without the answer's round-off size); the columns nothing reads of it stay empty.
+#include "rigiddyn/scene/compile.hpp"
+#include "rigiddyn/scene/one_body_scene.hpp"
+#include "rigiddyn/scene/simulate_scene.hpp"
+#include "rigiddyn/simulate/global_error.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace rigiddyn {
+namespace {
+
+// Three rigid bodies under gravity and drag, linked to each other and to a world anchor by springs attached off their
+// centres of mass (the generic model: works and impulses integrated), and their states.
+std::pair<Scene, std::vector<BodyState>> linked_bodies() {
+  Scene scene;
+  std::vector<BodyState> states;
+  for (int i = 0; i < 3; ++i) {
+    scene.bodies.emplace_back(RigidBody(1.0 + 0.5 * i, Eigen::Vector3d(1.0, 2.0, 3.0)));
+    RigidBodyState s;
+    s.p_W = Eigen::Vector3d(1.0 * i, 0.1 * i, 0.0);
+    s.v_W = Eigen::Vector3d(0.0, 0.2, 0.1 * i);
+    s.w_B = Eigen::Vector3d(0.1, 1.0 - 0.2 * i, 0.1);
+    states.emplace_back(s);
+  }
+  scene.elements.emplace_back(UniformGravity{Eigen::Vector3d(0.0, 0.0, -9.81), {}});
+  Drag drag;
+  drag.linear = 0.1, drag.angular_linear = 0.05;
+  scene.elements.emplace_back(drag);
+  for (int i = 0; i < 3; ++i) {
+    SpringDamper spring;
+    spring.body_a = i, spring.point_a_B = Eigen::Vector3d(0.1, 0.0, 0.05);
+    spring.body_b = i == 0 ? -1 : i - 1, spring.point_b = Eigen::Vector3d(0.0, 0.1, 0.0);
+    spring.stiffness = 20.0, spring.rest_length = 0.8, spring.damping = 0.3;
+    scene.elements.emplace_back(spring);
+  }
+  return {scene, states};
+}
+
+// The run of `scene` from `states` by `method`, recording every column and what the estimate reads alone: the kept
+// columns and the estimate's records equal, the others empty in the second (where the first has them).
+void expect_estimate_records(const Scene& scene, const std::vector<BodyState>& states, Method method,
+                             std::int64_t record_every, const std::string& what) {
+  SCOPED_TRACE(what + ", " + method_info(method).name + ", record_every " + std::to_string(record_every));
+  const CompiledScene compiled = compile_scene(scene, method);
+  SimulationOptions o;
+  o.method = method, o.dt = 0.01, o.steps = 101, o.record_every = record_every;
+  const SceneSimulation all = simulate(compiled, states, o);
+  o.estimate_records = true;
+  const SceneSimulation read = simulate(compiled, states, o);
+  EXPECT_TRUE(read.estimate_records);
+  ASSERT_EQ(all.size(), read.size());
+  for (const auto column : {&SceneSimulation::t, &SceneSimulation::p_W, &SceneSimulation::q_WB, &SceneSimulation::v_W,
+                            &SceneSimulation::w_B, &SceneSimulation::kinetic_energy, &SceneSimulation::total_energy,
+                            &SceneSimulation::angular_momentum_W, &SceneSimulation::work,
+                            &SceneSimulation::mass_flow_energy, &SceneSimulation::motor_work}) {
+    EXPECT_EQ(all.*column, read.*column);  // bit for bit: the same run
+  }
+  for (const auto column : {&SceneSimulation::potential_energy, &SceneSimulation::linear_momentum_W,
+                            &SceneSimulation::pivot_reaction_W, &SceneSimulation::angular_momentum_O_W,
+                            &SceneSimulation::mass, &SceneSimulation::power, &SceneSimulation::impulse_W,
+                            &SceneSimulation::angular_impulse_W}) {
+    EXPECT_TRUE((read.*column).empty());
+  }
+  EXPECT_FALSE(all.mass.empty());
+  const ErrorRecords a = coarse_records(all), r = coarse_records(read);
+  EXPECT_EQ(a.momentum, r.momentum);
+  EXPECT_EQ(a.balance, r.balance);
+  EXPECT_TRUE(r.momentum_scale.empty());
+}
+
+TEST(EstimateRecords, GenericModelKeepsWhatTheEstimateReads) {
+  const auto [scene, states] = linked_bodies();
+  ASSERT_EQ(compile_scene(scene, Method::rk4).path(), ScenePath::generic);
+  for (const Method method : {Method::rk4, Method::splitting_dlm, Method::rkmk4}) {
+    for (const std::int64_t every : {1, 3}) expect_estimate_records(scene, states, method, every, "linked bodies");
+  }
+}
+
+TEST(EstimateRecords, OneBodyLayoutsKeepWhatTheEstimateReads) {
+  RigidBodyState s;
+  s.v_W = Eigen::Vector3d(1.0, 0.0, 2.0), s.w_B = Eigen::Vector3d(0.1, 1.0, 0.1);
+  const RigidBody body(2.0, Eigen::Vector3d(1.0, 2.0, 3.0));
+  AppliedLoad push;
+  push.force = Eigen::Vector3d(0.5, 0.0, 0.0), push.torque = Eigen::Vector3d(0.0, 0.1, 0.0), push.frame = Frame::body;
+  push.t_end = 0.5;  // a switch inside the run
+  const Eigen::Vector3d g(0.0, 0.0, -9.81);
+  const std::pair<Scene, std::string> cases[] = {{one_body_scene(body, Eigen::Vector3d::Zero(), {}), "a free body"},
+                                                 {one_body_scene(body, g, {}), "a body under gravity"},
+                                                 {one_body_scene(body, g, {push}), "a body under gravity and a load"}};
+  for (const auto& [scene, what] : cases) {
+    ASSERT_EQ(compile_scene(scene, Method::rk4).path(), ScenePath::one_body);
+    for (const Method method : {Method::rk4, Method::splitting_dlm}) {
+      for (const std::int64_t every : {1, 3}) expect_estimate_records(scene, {BodyState(s)}, method, every, what);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace rigiddyn
