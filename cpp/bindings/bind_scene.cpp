@@ -1002,14 +1002,10 @@ std::shared_ptr<DeferredEstimate> deferred_estimate(std::shared_ptr<const Compil
   auto d = std::make_shared<DeferredEstimate>();
   const int order = scene_order(*compiled);
   d->make = [compiled = std::move(compiled), initial = std::move(initial), o, order](const ErrorRecords& answer) {
-    if (order == 0) return round_off_estimate(answer, o);
-    const auto run = [&](int factor) {
-      SimulationOptions coarse = coarse_options(o, factor);
-      coarse.estimate_records = true;
+    return global_error_of(answer, o, order, [&](SimulationOptions coarse) {
+      coarse.estimate_records = true;  // what the estimate reads of it
       return simulate(*compiled, initial, coarse);
-    };
-    const SceneSimulation twice = run(2), four_times = run(4);
-    return estimate_global_error(answer, coarse_records(twice), coarse_records(four_times), o, order);
+    });
   };
   return d;
 }

@@ -37,6 +37,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rigiddyn {
@@ -138,18 +139,24 @@ GlobalErrorEstimate round_off_estimate(const ErrorRecords& h, const SimulationOp
 inline ErrorRecords coarse_records(const Trajectory& r) { return error_records(r); }
 inline ErrorRecords coarse_records(const SceneSimulation& r) { return error_records(r, false); }
 
-// The estimate of the run `answer` made with `options`, for a method of order `order` (0: the round-off bound
-// alone): runs run(coarse_options(options, 2)) and run(coarse_options(options, 4)), each returning the records
-// of the same model from the same initial state (a Trajectory or a SceneSimulation); `opaque` as in
-// estimate_global_error.
+// The estimate of a run whose records as the estimate reads them are `answer` (error_records), made with `options`,
+// for a method of order `order` (0: the round-off bound alone): runs run(coarse_options(options, 2)) and
+// run(coarse_options(options, 4)), each returning the records of the same model from the same initial state (a
+// Trajectory or a SceneSimulation); `opaque` as in estimate_global_error.
+template <class Run>
+GlobalErrorEstimate global_error_of(const ErrorRecords& answer, const SimulationOptions& options, int order, Run&& run,
+                                    const std::string& opaque = {}) {
+  if (order == 0) return round_off_estimate(answer, options);
+  const auto twice = run(coarse_options(options, 2));
+  const auto four_times = run(coarse_options(options, 4));
+  return estimate_global_error(answer, coarse_records(twice), coarse_records(four_times), options, order, opaque);
+}
+
+// global_error_of the records of the run `answer` (a Trajectory or a SceneSimulation).
 template <class Records, class Run>
 GlobalErrorEstimate global_error(const Records& answer, const SimulationOptions& options, int order, Run&& run,
                                  const std::string& opaque = {}) {
-  if (order == 0) return round_off_estimate(error_records(answer), options);
-  const Records twice = run(coarse_options(options, 2));
-  const Records four_times = run(coarse_options(options, 4));
-  return estimate_global_error(error_records(answer), coarse_records(twice), coarse_records(four_times), options,
-                               order, opaque);
+  return global_error_of(error_records(answer), options, order, std::forward<Run>(run), opaque);
 }
 
 }  // namespace rigiddyn
