@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <cmath>
 #include <cstring>
 #include <optional>
 #include <type_traits>
@@ -143,7 +144,7 @@ struct BatchSceneResult {
   py::array diverged, filled, unconverged_steps;  // (N,) bool, int64, int64
   double elapsed_seconds = 0.0;
   bool scalar_first = false;  // q_WB rows as (w, x, y, z)
-  py::object error = py::none();  // a GlobalError with a leading sample axis (simulate_batch(..., error=True)) or None
+  LazyBatchError error;  // a GlobalError with a leading sample axis (simulate_batch(..., error=True)) or None
 
   py::ssize_t samples() const { return filled.shape(0); }
   py::ssize_t records() const { return arrays[0].shape(1); }
@@ -180,6 +181,42 @@ BatchSceneResult to_batch_scene_result(BatchSceneSimulation&& b, py::tuple body_
   return r;
 }
 
+// The array of the column `name` of r (scene_columns).
+const py::array& batch_column(const BatchSceneResult& r, const char* name) {
+  for (std::size_t k = 0; k < scene_column_count; ++k) {
+    if (std::strcmp(scene_columns[k].name, name) == 0) return r.arrays[k];
+  }
+  throw std::logic_error(std::string("no batch column ") + name);
+}
+
+[[noreturn]] void raise_sample_failure(const SampleFailure& failure);
+
+// result.error of r (LazyBatchError): a deferred estimate reads the answer's columns from r's own arrays (GIL held);
+// a sample's exception in its coarse runs is raised as the batch raises it ("sample <i>: ...").
+py::object batch_result_error(const BatchSceneResult& r) {
+  try {
+    return r.error.get([&r] {
+      const auto data = [&r](const char* name) { return static_cast<const double*>(batch_column(r, name).data()); };
+      BatchColumns c;
+      c.samples = static_cast<std::size_t>(r.samples()), c.records = static_cast<std::size_t>(r.records());
+      c.bodies = static_cast<std::int64_t>(batch_column(r, "q_WB").shape(2));
+      c.filled = static_cast<const std::int64_t*>(r.filled.data());
+      c.t = data("t"), c.q_WB = data("q_WB"), c.w_B = data("w_B"), c.p_W = data("p_W"), c.v_W = data("v_W");
+      c.scalar_first = r.scalar_first;
+      c.total_energy = data("total_energy"), c.kinetic_energy = data("kinetic_energy");
+      c.angular_momentum_W = data("angular_momentum_W");
+      c.mass = data("mass"), c.angular_momentum_O_W = data("angular_momentum_O_W"), c.work = data("work");
+      c.elements = static_cast<std::int64_t>(batch_column(r, "work").shape(2));
+      c.mass_flow_energy = data("mass_flow_energy");
+      c.motor_work = static_cast<const double*>(r.motor_work.data());
+      c.wheels = static_cast<std::int64_t>(r.motor_work.shape(2));
+      return c;
+    });
+  } catch (const SampleFailure& failure) {
+    raise_sample_failure(failure);
+  }
+}
+
 py::tuple batch_scene_state(const BatchSceneResult& r) {
   py::tuple out(scene_column_count + 13);
   for (std::size_t k = 0; k < scene_column_count; ++k) out[k] = r.arrays[k];
@@ -193,7 +230,7 @@ py::tuple batch_scene_state(const BatchSceneResult& r) {
   out[scene_column_count + 7] = r.wheel_speed;
   out[scene_column_count + 8] = r.motor_work;
   out[scene_column_count + 9] = r.wheel_bodies;
-  out[scene_column_count + 10] = r.error;
+  out[scene_column_count + 10] = batch_result_error(r);
   out[scene_column_count + 11] = r.joint_q;
   out[scene_column_count + 12] = r.joint_v;
   return out;
@@ -268,7 +305,7 @@ SceneResult batch_scene_sample(const BatchSceneResult& r, py::handle key) {
   out.unconverged_steps = r.unconverged_steps.attr("__getitem__")(i).cast<std::int64_t>();
   out.elapsed_seconds = r.elapsed_seconds;
   out.scalar_first = r.scalar_first;
-  out.error = sample_error(r.error, i, rows);
+  out.error = sample_error(batch_result_error(r), i, rows);
   return out;
 }
 
@@ -277,12 +314,7 @@ py::object batch_body(const BatchSceneResult& r, py::handle key) {
   BodyColumnsSource source;
   source.body_names = r.body_names;
   source.wheel_bodies = r.wheel_bodies;
-  const auto column = [&](const char* name) -> py::object {
-    for (std::size_t k = 0; k < scene_column_count; ++k) {
-      if (std::strcmp(scene_columns[k].name, name) == 0) return r.arrays[k];
-    }
-    throw std::logic_error(std::string("no batch column ") + name);
-  };
+  const auto column = [&r](const char* name) -> py::object { return batch_column(r, name); };
   source.t = column("t");
   source.p_W = column("p_W");
   source.q_WB = column("q_WB");
@@ -679,25 +711,40 @@ auto run_without_gil(SimulationOptions& o, py::handle progress, Run&& batch) {
 
 // ------------------------------------------------------------ the runs
 
-// The error estimate of the batch `answer`, run by run_batch(options, per-sample dt) with options `o` and the
-// samples' dt `dt`: two more batches at 2h and 4h (none for models of order 0), Ctrl-C stopping them (no progress
-// report: progress counted the answer's samples), then each sample's estimate on `threads` threads without the GIL.
-template <class Batch, class RunBatch>
-BatchErrorEstimate batch_error(const Batch& answer, const SimulationOptions& o, const std::vector<double>& dt,
-                               const std::vector<SampleModel>& models, int threads, RunBatch&& run_batch) {
-  const bool coarse_runs =
-      std::any_of(models.begin(), models.end(), [](const SampleModel& model) { return model.order > 0; });
-  const auto coarse = [&](int factor) {
-    if (!coarse_runs) return Batch{};
-    SimulationOptions options = coarse_options(o, factor);
-    options.monitor = nullptr;  // the answer's monitor ended with its run
-    const std::vector<double> coarse_steps = coarse_dt(dt, factor);
-    return run_without_gil(options, py::none(),
-                           [&](const SimulationOptions& opt) { return run_batch(opt, coarse_steps); });
+// The runs of a batch's samples under options o with the samples' dt: the answer's, and its estimate's at 2h and 4h.
+using BatchRun = std::function<BatchSceneSimulation(const SimulationOptions& o, const std::vector<double>& dt)>;
+
+// result.error of the batch `r` that `run` made under o with the samples' dt, of models `models` on `threads` threads:
+// made on its first read (LazyBatchError), when the two batches at 2h and 4h (none for models of order 0) run, Ctrl-C
+// stopping them (no progress report: progress counted the answer's samples), then each sample's estimate. A batch
+// result has no balance check, so its estimate decides no warning; it is made at once only where a sample's scene has
+// a force the library cannot see into (a PythonForce, whose calls a later run may not repeat), or where a run at 4h
+// refuses its step (4 dt beyond the largest double: the call raises, as the run's own check of dt would). `run` holds
+// what it runs, so the estimate made later is the one made at once, bit for bit.
+void put_batch_error(BatchSceneResult& r, BatchRun run, SimulationOptions o, std::vector<double> dt,
+                     std::vector<SampleModel> models, int threads) {
+  o.monitor = nullptr;  // the answer's monitor ended with its run
+  const bool opaque =
+      std::any_of(models.begin(), models.end(), [](const SampleModel& model) { return !model.opaque.empty(); });
+  const auto beyond = [](double sample_dt) { return !std::isfinite(4.0 * sample_dt); };
+  const bool at_once = opaque || beyond(o.dt) || std::any_of(dt.begin(), dt.end(), beyond);
+  auto d = std::make_shared<DeferredBatchEstimate>();
+  d->make = [run = std::move(run), o, dt = std::move(dt), models = std::move(models), threads](
+                const BatchColumns& answer, PythonMonitor& monitor) -> std::optional<BatchErrorEstimate> {
+    const bool coarse_runs =
+        std::any_of(models.begin(), models.end(), [](const SampleModel& model) { return model.order > 0; });
+    BatchSceneSimulation coarse[2];  // at 2h and 4h
+    for (int k = 0; k < 2 && coarse_runs; ++k) {
+      const int factor = 2 << k;
+      SimulationOptions options = coarse_options(o, factor);
+      options.monitor = coarse_monitor(monitor);
+      coarse[k] = run(options, coarse_dt(dt, factor));
+      if (coarse[k].interrupted) return std::nullopt;
+    }
+    return batch_error_estimate(answer, batch_columns(coarse[0]), batch_columns(coarse[1]), o, models, threads);
   };
-  const Batch twice = coarse(2), four_times = coarse(4);
-  py::gil_scoped_release release;
-  return batch_error_estimate(answer, twice, four_times, o, models, threads);
+  r.error = LazyBatchError(std::move(d));
+  if (at_once) batch_result_error(r);
 }
 
 // The elements every sample's one-body scene declares, the same for every sample so that their records have the same
@@ -830,15 +877,47 @@ BatchSceneSimulation simd_scene_records(BatchTrajectory&& b, const std::vector<R
   return out;
 }
 
-// simulate_batch of bodies: sample i runs its one-body scene (one_body_scenes), or with simd=True the SIMD path on
-// rigid bodies under RK4, its records made a scene's (simd_scene_records).
+// The samples of a batch of bodies as its runs read them (the answer's, and later its estimate's): sample i's one-body
+// scene (one_body_scenes) from its state, or with `simd` the SIMD path on the rigid bodies under RK4, its records made
+// a scene's (simd_scene_records).
+template <class Body, class State>
+struct BodySamples {
+  std::vector<Body> bodies;
+  std::vector<State> states;
+  BatchParameters parameters;  // the samples' gravity and loads (their dt: run's)
+  OneBodyElementSet elements;
+  std::vector<CompiledScene> scenes;
+  std::vector<std::vector<BodyState>> scene_states;
+  bool simd = false;
+  int threads = 1;
+
+  // The samples run under o with the samples' dt.
+  BatchSceneSimulation run(const SimulationOptions& o, const std::vector<double>& dt) const {
+    if constexpr (std::is_same_v<Body, RigidBody>) {
+      // the SIMD path (batch/simd_rigid_body.hpp); its own checks name loads (a time window, a torque in W or a
+      // force in B)
+      if (simd) {
+        BatchParameters params = parameters;
+        params.dt = dt;
+        return simd_scene_records(simulate_batch_simd(bodies, states, o, params, threads), bodies, o, params,
+                                  elements);
+      }
+    }
+    SimulationOptions scene_options = o;  // the scenes declare the gravity and the loads
+    scene_options.gravity_W.setZero();
+    scene_options.loads.clear();
+    return simulate_batch(scenes, scene_states, scene_options, dt, threads);
+  }
+};
+
+// simulate_batch of bodies (BodySamples).
 template <class Body, class State, class FromDict>
 BatchSceneResult body_batch(py::handle model, py::handle initial, py::handle dt, py::handle method, py::handle loads,
                             py::handle gravity, CommonArgs c, py::handle progress, bool error, const char* kind,
                             const char* state_kind, FromDict from_dict) {
-  const std::vector<State> states = as_states<State>(initial, state_kind, from_dict, c.scalar_first);
+  std::vector<State> states = as_states<State>(initial, state_kind, from_dict, c.scalar_first);
   const py::ssize_t N = require_samples(states.size());
-  const std::vector<Body> bodies = as_models<Body>(model, kind, N);
+  std::vector<Body> bodies = as_models<Body>(model, kind, N);
   SimulationOptions& o = c.options;
   o.method = method.is_none() ? Method::rk4 : method_from_name(py_io::as_string(method, "method"), "method");
   BatchParameters p;
@@ -856,41 +935,29 @@ BatchSceneResult body_batch(py::handle model, py::handle initial, py::handle dt,
   const OneBodyElementSet elements = batch_elements(o, p);
   // a one-body scene's record: 10 + 20 per body + 2 per element doubles (scene_batch's count)
   require_batch_memory(N, o, with_error_doubles(30.0 + 2.0 * static_cast<double>(elements.count()), error));
-  const std::vector<CompiledScene> scenes =
+  std::vector<CompiledScene> scenes =
       one_body_scenes(bodies, o, p, static_cast<std::size_t>(N), elements, simd_path, c.threads);
   warn_compatibility(scenes);
   std::vector<std::vector<BodyState>> scene_states;
   scene_states.reserve(states.size());
   for (const State& state : states) scene_states.push_back({BodyState(state)});
-  const auto run_batch = [&](const SimulationOptions& opt, const std::vector<double>& sample_dt) {
-    if constexpr (std::is_same_v<Body, RigidBody>) {
-      // the SIMD path (batch/simd_rigid_body.hpp); its own checks name loads (a time window, a torque in W or a
-      // force in B)
-      if (simd_path) {
-        BatchParameters params = p;
-        params.dt = sample_dt;
-        return simd_scene_records(simulate_batch_simd(bodies, states, opt, params, c.threads), bodies, opt, params,
-                                  elements);
-      }
-    }
-    SimulationOptions scene_options = opt;  // the scenes declare the gravity and the loads
-    scene_options.gravity_W.setZero();
-    scene_options.loads.clear();
-    return simulate_batch(scenes, scene_states, scene_options, sample_dt, c.threads);
+  const auto samples = std::make_shared<const BodySamples<Body, State>>(
+      BodySamples<Body, State>{std::move(bodies), std::move(states), p, elements, std::move(scenes),
+                               std::move(scene_states), simd_path, c.threads});
+  const BatchRun run = [samples](const SimulationOptions& opt, const std::vector<double>& sample_dt) {
+    return samples->run(opt, sample_dt);
   };
-  BatchSceneSimulation b = run_without_gil(o, progress, [&](const SimulationOptions& opt) { return run_batch(opt, p.dt); });
-  std::optional<BatchErrorEstimate> estimate;
+  BatchSceneSimulation b = run_without_gil(o, progress, [&](const SimulationOptions& opt) { return run(opt, p.dt); });
+  const std::string overflowed = overflowed_samples(b);
+  const Scene& first = samples->scenes[0].scene();
+  BatchSceneResult r = to_batch_scene_result(std::move(b), py::tuple(py::cast(detail::body_names_of(first))),
+                                             py::tuple(py::cast(samples->scenes[0].element_types())),
+                                             wheel_bodies_of(first), c.scalar_first);
   if (error) {  // each scene at the order it has (scene_order.hpp; the loads are split at their switches)
     std::vector<SampleModel> models;
-    for (const CompiledScene& scene : scenes) models.push_back({scene_order(scene), opaque_force(scene)});
-    estimate = batch_error(b, o, p.dt, models, c.threads, run_batch);
+    for (const CompiledScene& scene : samples->scenes) models.push_back({scene_order(scene), opaque_force(scene)});
+    put_batch_error(r, run, o, p.dt, std::move(models), c.threads);
   }
-  const std::string overflowed = overflowed_samples(b);
-  const Scene& first = scenes[0].scene();
-  BatchSceneResult r = to_batch_scene_result(std::move(b), py::tuple(py::cast(detail::body_names_of(first))),
-                                             py::tuple(py::cast(scenes[0].element_types())), wheel_bodies_of(first),
-                                             c.scalar_first);
-  if (estimate) r.error = py::cast(to_batch_global_error(std::move(*estimate)));
   warn_after_batch(r.diverged, r.unconverged_steps, method_info(o.method).name, overflowed);
   return r;
 }
@@ -954,6 +1021,13 @@ std::vector<std::vector<BodyState>> as_scene_batch_states(py::handle initial, co
   return out;
 }
 
+// The samples of a batch of scenes as its runs read them (the answer's, and later its estimate's): sample i's scene
+// (or the one shared) from its states.
+struct SceneSamples {
+  std::vector<CompiledScene> scenes;
+  std::vector<std::vector<BodyState>> states;
+};
+
 BatchSceneResult scene_batch(py::handle model, py::handle initial, py::handle dt, py::handle method, py::handle loads,
                              py::handle gravity, CommonArgs c, py::handle progress, bool error) {
   if (!loads.is_none()) {
@@ -981,7 +1055,7 @@ BatchSceneResult scene_batch(py::handle model, py::handle initial, py::handle dt
   } else {
     scenes.push_back(compiled_scene(model, method, "model"));
   }
-  const std::vector<std::vector<BodyState>> states = as_scene_batch_states(initial, scenes);
+  std::vector<std::vector<BodyState>> states = as_scene_batch_states(initial, scenes);
   SimulationOptions& o = c.options;
   o.method = scenes[0].method();
   const std::vector<double> dts = as_dt(dt, o.dt, N);
@@ -990,20 +1064,20 @@ BatchSceneResult scene_batch(py::handle model, py::handle initial, py::handle dt
   require_batch_memory(N, o, with_error_doubles(10.0 + 20.0 * nb + 2.0 * ne, error));
   py::tuple body_names = py::tuple(py::cast(detail::body_names_of(first)));
   py::tuple elements = py::tuple(py::cast(scenes[0].element_types()));
-  const auto run_batch = [&](const SimulationOptions& opt, const std::vector<double>& sample_dt) {
-    return simulate_batch(scenes, states, opt, sample_dt, c.threads);  // a PythonForce takes the GIL back per call
-  };
-  BatchSceneSimulation b = run_without_gil(o, progress, [&](const SimulationOptions& opt) { return run_batch(opt, dts); });
-  std::optional<BatchErrorEstimate> estimate;
-  if (error) {  // each scene at the order it has (scene_order.hpp)
-    std::vector<SampleModel> models;
-    for (const CompiledScene& scene : scenes) models.push_back({scene_order(scene), opaque_force(scene)});
-    estimate = batch_error(b, o, dts, models, c.threads, run_batch);
+  py::tuple wheel_bodies = wheel_bodies_of(first);
+  std::vector<SampleModel> models;  // each scene at the order it has (scene_order.hpp)
+  for (const CompiledScene& scene : scenes) {
+    if (error) models.push_back({scene_order(scene), opaque_force(scene)});
   }
+  const auto samples = std::make_shared<const SceneSamples>(SceneSamples{std::move(scenes), std::move(states)});
+  const BatchRun run = [samples, threads = c.threads](const SimulationOptions& opt, const std::vector<double>& dt) {
+    return simulate_batch(samples->scenes, samples->states, opt, dt, threads);
+  };
+  BatchSceneSimulation b = run_without_gil(o, progress, [&](const SimulationOptions& opt) { return run(opt, dts); });
   const std::string overflowed = overflowed_samples(b);
-  BatchSceneResult r =
-      to_batch_scene_result(std::move(b), std::move(body_names), std::move(elements), wheel_bodies_of(first), c.scalar_first);
-  if (estimate) r.error = py::cast(to_batch_global_error(std::move(*estimate)));
+  BatchSceneResult r = to_batch_scene_result(std::move(b), std::move(body_names), std::move(elements),
+                                             std::move(wheel_bodies), c.scalar_first);
+  if (error) put_batch_error(r, run, o, dts, std::move(models), c.threads);
   warn_after_batch(r.diverged, r.unconverged_steps, method_info(o.method).name, overflowed);
   return r;
 }
@@ -1096,8 +1170,10 @@ duration : float or pint.Quantity, keyword-only, optional
     Length of the runs [s] instead of steps: it must give the same whole number of steps at every sample's dt.
 error : bool, keyword-only, default True
     Estimate the global error of every record of every sample (result.error, a GlobalError with a leading sample
-    axis) from two more batches at 2 dt and 4 dt (+0.75x the cost, on the same threads); sample i's estimate is
-    the one simulate gives for it (result[i].error). False: no estimate (result.error is None).
+    axis) from two more batches at 2 dt and 4 dt (+0.75x the cost, on the same threads, with the GIL released),
+    made on the first read of result.error, result[i] or a pickle (at once where a scene has a PythonForce); a
+    batch that is never asked for it costs what error=False costs. Sample i's estimate is the one simulate gives
+    for it (result[i].error). False: no estimate (result.error is None).
 
 Returns
 -------
@@ -1206,7 +1282,7 @@ void def_common(py::class_<Result>& cls, py::object (*sample)(const Result&, py:
                     "explicit methods).")
       .def_readonly("elapsed_seconds", &Result::elapsed_seconds, "Wall time of the whole batch [s].")
       .def_property_readonly(
-          "error", [](const Result& r) -> py::typing::Optional<GlobalError> { return r.error; },
+          "error", [](const Result& r) -> py::typing::Optional<GlobalError> { return batch_result_error(r); },
           "The global error estimate of every record of every sample (GlobalError, arrays (N, n, ...)); None with "
           "simulate_batch(..., error=False).")
       .def_readonly("scalar_first", &Result::scalar_first,

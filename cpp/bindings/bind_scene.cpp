@@ -1001,11 +1001,17 @@ std::shared_ptr<DeferredEstimate> deferred_estimate(std::shared_ptr<const Compil
   o.monitor = nullptr;  // the run's monitor is gone by then
   auto d = std::make_shared<DeferredEstimate>();
   const int order = scene_order(*compiled);
-  d->make = [compiled = std::move(compiled), initial = std::move(initial), o, order](const ErrorRecords& answer) {
-    return global_error_of(answer, o, order, [&](SimulationOptions coarse) {
+  d->make = [compiled = std::move(compiled), initial = std::move(initial), o, order](
+                const SceneColumns& answer, PythonMonitor& monitor) -> std::optional<GlobalErrorEstimate> {
+    bool interrupted = false;
+    const auto run = [&](SimulationOptions coarse) {
       coarse.estimate_records = true;  // what the estimate reads of it
+      coarse.monitor = coarse_monitor(monitor);
       return simulate(*compiled, initial, coarse);
-    });
+    };
+    GlobalErrorEstimate e = global_error_of(error_records(answer), o, order, interruptible(run, interrupted));
+    if (interrupted) return std::nullopt;
+    return e;
   };
   return d;
 }

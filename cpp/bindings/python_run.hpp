@@ -228,7 +228,7 @@ inline GlobalError to_global_error(GlobalErrorEstimate&& e) {
 
 // The GlobalError of a batch's estimates `e`: each array with a leading sample axis, the state quantities
 // (N, n, nb); verdict a tuple of N tuples of n, reliable (N, n). Equal verdicts share one str.
-inline GlobalError to_batch_global_error(BatchErrorEstimate&& e) {
+inline GlobalError to_global_error(BatchErrorEstimate&& e) {
   namespace py = pybind11;
   const auto N = static_cast<py::ssize_t>(e.samples), n = static_cast<py::ssize_t>(e.records);
   const std::vector<py::ssize_t> state_shape{N, n, static_cast<py::ssize_t>(e.bodies)};
@@ -356,52 +356,6 @@ class LazyBalance {
   mutable pybind11::object object_ = pybind11::none();
 };
 
-// A run's estimate made on the first read of result.error: `make`, the two coarse runs and their comparison with the
-// answer's records (global_error.hpp), pure C++, run without the GIL; the answer's records are the result's own
-// columns (no copy), read when it is made.
-struct DeferredEstimate {
-  std::function<GlobalErrorEstimate(const ErrorRecords& answer)> make;
-  std::mutex mutex;  // one thread makes it, the others wait for it
-  std::optional<GlobalErrorEstimate> made;
-};
-
-// result.error of a run: its GlobalError (or None) as made, or a DeferredEstimate that makes it on the first read (a
-// deterministic run whose balances close under any estimate defers it: simulate_scene_py). A loop of runs that reads
-// the state alone then pays for the runs alone; a reader gets the values the run would have made at once.
-class LazyError {
- public:
-  LazyError() = default;
-  LazyError(pybind11::object made) : made_(std::move(made)) {}  // NOLINT: a GlobalError or None converts
-  explicit LazyError(std::shared_ptr<DeferredEstimate> deferred) : deferred_(std::move(deferred)) {}
-
-  // Whether it is still to be made
-  bool pending() const { return static_cast<bool>(deferred_); }
-
-  // The GlobalError (or None); a deferred one made on the first call from `columns` (the answer's, read with the GIL
-  // held: the result's arrays) with the GIL released, so that other threads run meanwhile; a second reader waits for
-  // the first's and gets the same object. An exception leaves it to be made again.
-  pybind11::object get(const std::function<SceneColumns()>& columns) const {
-    if (deferred_) {
-      const std::shared_ptr<DeferredEstimate> d = deferred_;
-      const SceneColumns c = columns();
-      {
-        const pybind11::gil_scoped_release release;
-        const std::lock_guard<std::mutex> lock(d->mutex);
-        if (!d->made) d->made = d->make(error_records(c));
-      }
-      if (deferred_ == d) {  // the first reader back with the GIL converts it
-        made_ = pybind11::cast(to_global_error(std::move(*d->made)));
-        deferred_.reset();
-      }
-    }
-    return made_;
-  }
-
- private:
-  mutable std::shared_ptr<DeferredEstimate> deferred_;
-  mutable pybind11::object made_ = pybind11::none();
-};
-
 // A pickled result's balance: a rigiddyn.Balance (TypeError naming `name` otherwise).
 inline LazyBalance checked_balance(pybind11::handle obj, const std::string& name) {
   if (!pybind11::isinstance(obj, pybind11::module_::import("rigiddyn._balance").attr("Balance"))) {
@@ -482,6 +436,74 @@ class PythonMonitor {
   std::chrono::steady_clock::time_point next_call_;
   std::optional<pybind11::error_already_set> error_;
 };
+
+// ------------------------------------------------------------ estimates made on the first read
+
+// An estimate made on the first read of result.error: `make`, the coarse runs and their comparison with the answer's
+// records (global_error.hpp, batch_global_error.hpp), pure C++, run without the GIL; the answer's records are the
+// result's own columns (Columns: SceneColumns of a run, BatchColumns of a batch; no copy), read when it is made.
+// make gives nullopt when the reading thread's monitor (Ctrl-C) stopped a coarse run.
+template <class Estimate, class Columns>
+struct Deferred {
+  std::function<std::optional<Estimate>(const Columns& answer, PythonMonitor& monitor)> make;
+  std::mutex mutex;  // one thread makes it, the others wait for it
+  std::optional<Estimate> made;
+};
+using DeferredEstimate = Deferred<GlobalErrorEstimate, SceneColumns>;
+using DeferredBatchEstimate = Deferred<BatchErrorEstimate, BatchColumns>;
+
+// result.error of a run or a batch: its GlobalError (or None) as made, or a Deferred that makes it on the first read
+// (a deterministic run whose balances close under any estimate defers it, simulate_scene_py; a batch without a
+// PythonForce, whose estimate decides no warning, simulate_batch_py). A loop of runs that reads the state alone then
+// pays for the runs alone; a reader gets the values the run would have made at once.
+template <class Estimate, class Columns>
+class Lazy {
+ public:
+  Lazy() = default;
+  Lazy(pybind11::object made) : made_(std::move(made)) {}  // NOLINT: a GlobalError or None converts
+  explicit Lazy(std::shared_ptr<Deferred<Estimate, Columns>> deferred) : deferred_(std::move(deferred)) {}
+
+  // Whether it is still to be made
+  bool pending() const { return static_cast<bool>(deferred_); }
+
+  // The GlobalError (or None); a deferred one made on the first call from `columns` (the answer's, read with the GIL
+  // held: the result's arrays) with the GIL released, so that other threads run meanwhile; a second reader waits for
+  // the first's and gets the same object. Ctrl-C stops the coarse runs (KeyboardInterrupt); an exception leaves it to
+  // be made again.
+  pybind11::object get(const std::function<Columns()>& columns) const {
+    if (deferred_) {
+      const std::shared_ptr<Deferred<Estimate, Columns>> d = deferred_;
+      const Columns c = columns();
+      PythonMonitor monitor{pybind11::none()};
+      try {
+        const pybind11::gil_scoped_release release;
+        const std::lock_guard<std::mutex> lock(d->mutex);
+        if (!d->made) d->made = d->make(c, monitor);
+      } catch (...) {
+        if (monitor.failed()) monitor.raise();  // a Ctrl-C is never lost to a coarse run's error
+        throw;
+      }
+      if (!d->made) monitor.raise();
+      if (deferred_ == d) {  // the first reader back with the GIL converts it
+        made_ = pybind11::cast(to_global_error(std::move(*d->made)));
+        deferred_.reset();
+      }
+    }
+    return made_;
+  }
+
+ private:
+  mutable std::shared_ptr<Deferred<Estimate, Columns>> deferred_;
+  mutable pybind11::object made_ = pybind11::none();
+};
+using LazyError = Lazy<GlobalErrorEstimate, SceneColumns>;
+using LazyBatchError = Lazy<BatchErrorEstimate, BatchColumns>;
+
+// A coarse run's SimulationOptions::monitor: `monitor` where it is needed (Ctrl-C on the main thread), else none.
+inline std::function<bool(std::int64_t)> coarse_monitor(PythonMonitor& monitor) {
+  if (!monitor.needed()) return nullptr;
+  return [&monitor](std::int64_t done) { return monitor(done); };
+}
 
 // ------------------------------------------------------------ non-finite records
 

@@ -558,17 +558,21 @@ class MonteCarloResult:
         a body's run adds its records' BODY_RECORD_FIELDS, which its per-body fields are read from), and with an
         error estimate its arrays as
         ``"error.<name>"`` (ERROR_FIELDS: e.g. ``"error.attitude"`` [rad])."""
+        return self._recorded() + (tuple("error." + name for name in ERROR_FIELDS) if self.error is not None else ())
+
+    def _recorded(self) -> tuple[str, ...]:
+        """The recorded fields without the error estimate's (which the batch makes on their first read)."""
         records = np.shape(self.batch.t)
         recorded = tuple(name for name in SCENE_RECORD_FIELDS
                          if hasattr(self.batch, name) and np.shape(getattr(self.batch, name))[:2] == records)
         if self.one_body:
             recorded = tuple(dict.fromkeys(recorded + BODY_RECORD_FIELDS))
-        return recorded + (tuple("error." + name for name in ERROR_FIELDS) if self.error is not None else ())
+        return recorded
 
     def _quantity(self, quantity: Quantity) -> np.ndarray:
         records = np.asarray(self.batch.t).shape
         if isinstance(quantity, str):
-            if quantity not in self.fields:
+            if quantity not in (self.fields if quantity.startswith("error.") else self._recorded()):
                 raise ValueError(f"quantity: expected a recorded field ({', '.join(self.fields)}) or a callable, "
                                  f"got {quantity!r}")
             owner, name = (self.error, quantity[6:]) if quantity.startswith("error.") else (self.batch, quantity)
@@ -948,9 +952,9 @@ def monte_carlo(model: Any, nominal_state: Any, n: int, *, seed: Any,
         With `client`: True or False (``rigiddyn.distributed``'s bar of chunks).
     error : bool, default True
         Estimate the global error of every record of every sample (``result.error``, a GlobalError with a
-        leading sample axis: ``simulate_batch``'s `error`, +0.75x the cost); its quantities are fields too
-        (``result.statistics("error.attitude")``). False: none. Not with a controller (its samples run without
-        one): give False.
+        leading sample axis: ``simulate_batch``'s `error`, +0.75x the cost when it is first read); its quantities
+        are fields too (``result.statistics("error.attitude")``). False: none. Not with a controller (its samples
+        run without one): give False.
     controller : Controller, keyword-only, optional
         A digital controller (rigiddyn.Controller) of a scene's runs: each sample runs under its own copy (its law
         deep-copied), whose gyro noise draws from the seed ``result.inputs["controller.seed"][i]`` (N,), itself

@@ -6,6 +6,8 @@ path, whatever the thread count); the batch's GlobalError has the shapes of simu
 a diverged sample's missing rows say so; the estimate survives pickling, chunked concatenation and monte_carlo.
 """
 
+import concurrent.futures
+import gc
 import json
 import pickle
 import subprocess
@@ -99,6 +101,89 @@ def test_a_diverged_sample_says_so_in_its_rows():
     assert not res.error.reliable[1, filled:].any()
     alone = rd.simulate(body, states[0], dt=0.01, steps=40, method="explicit_euler").error
     assert not estimate_differences(res[0].error, alone)
+
+
+@pytest.mark.parametrize("method", ["rk4", "rkmk4"])
+@pytest.mark.parametrize("record_every", [1, 4, 7])
+def test_an_estimate_made_on_first_read_is_each_samples_own(method, record_every):
+    # simulate_batch makes its estimate when result.error, result[i] or a pickle first needs it, from the arrays the
+    # result keeps; each sample's is then the one simulate makes at once for it (a progress callback makes it at
+    # once), to the bit, however the result is read first
+    body = rd.RigidBody(1.0, [1.0, 2.0, 3.0])
+    states = spins(3)
+    run = dict(dt=0.01, steps=203, method=method, record_every=record_every)
+    alone = [rd.simulate(body, state, **run, progress=lambda done: None).error for state in states]
+
+    def batch(**extra):
+        return rd.simulate_batch(rd.RigidBody(1.0, [1.0, 2.0, 3.0]), states, **run, threads=2, **extra)
+
+    def expect_each_samples_own(result):
+        for i in range(len(states)):
+            assert not estimate_differences(result[i].error, alone[i]), i
+
+    later = batch()
+    assert later.error is later.error  # made once
+    expect_each_samples_own(later)
+    expect_each_samples_own(batch())  # result[i] first
+    expect_each_samples_own(pickle.loads(pickle.dumps(batch())))
+    read_first = batch()
+    for name in ("t", "p_W", "q_WB", "v_W", "w_B", "kinetic_energy", "total_energy", "angular_momentum_W", "filled"):
+        getattr(read_first, name)  # the estimate then reads these arrays
+    expect_each_samples_own(read_first)
+    expect_each_samples_own(batch(scalar_first=True))  # its q_WB rows read as (w, x, y, z)
+
+
+def test_a_scene_batchs_estimate_keeps_what_its_runs_need():
+    shipped = rd.load_scene("box_on_springs")
+    alone = rd.simulate(shipped.scene, shipped.initial, 0.001, steps=300, progress=lambda done: None).error
+    compiled = shipped.scene.compile("rk4")
+    initial = [list(shipped.initial), list(shipped.initial)]
+    later = rd.simulate_batch(compiled, initial, dt=0.001, steps=300)
+    del compiled, initial[:]  # the estimate keeps its own model and states
+    gc.collect()
+    assert not estimate_differences(later[0].error, alone) and not estimate_differences(later[1].error, alone)
+
+
+SHIPPED = ("box_on_springs", "cluster", "double_pendulum", "foucault", "gravity_gradient", "heavy_top", "j2_orbit",
+           "kepler", "pendulum", "rocket", "satellite_boom", "solar_array", "spring_chain", "three_body")
+
+
+@pytest.mark.parametrize("name", SHIPPED)
+def test_each_sample_of_a_shipped_scene_is_its_own_simulate(name):
+    # the batch reads each sample's records as simulate reads its run's: the energy balance T - W checked against the
+    # estimate, |L|'s round-off sized by its bodies' terms (springs, gravity, a mass flow, pivots, a tree)
+    shipped = rd.load_scene(name)
+    compiled = shipped.scene.compile(shipped.run.method)
+    run = dict(dt=shipped.run.dt, steps=200, record_every=4)
+    alone = rd.simulate(compiled, shipped.initial, **run, progress=lambda done: None).error
+    batch = rd.simulate_batch(compiled, [shipped.initial, shipped.initial], **run, threads=2)
+    assert not estimate_differences(batch[0].error, alone) and not estimate_differences(batch[1].error, alone)
+
+
+def test_threads_reading_a_batchs_deferred_estimate_get_the_one_made():
+    body = rd.RigidBody(1.0, [1.0, 2.0, 3.0])
+    results = [rd.simulate_batch(body, spins(4), dt=0.01, steps=400, threads=1) for _ in range(4)]
+    with concurrent.futures.ThreadPoolExecutor(4) as pool:
+        read = list(pool.map(lambda r: r.error, [r for r in results for _ in range(4)]))
+    assert all(read[4 * i] is read[4 * i + k] and read[4 * i] is not None for i in range(4) for k in range(4))
+    assert all(read[4 * i] == read[0] for i in range(4))
+
+
+def test_a_batch_with_a_python_force_makes_its_estimate_at_once():
+    # a PythonForce's calls may not repeat in a later run (here: its torque changed after the run), so such a batch
+    # estimates at once, from the force the run met
+    torque = {"z": 0.5}
+
+    def push(t, body, p_W, q_WB, v_W, w_B):
+        return (0.0, 0.0, 0.0), (0.0, 0.0, torque["z"])
+
+    scene = rd.Scene([rd.RigidBody(1.0, [1.0, 2.0, 3.0])], elements=[rd.PythonForce(push)])
+    initial = [[state] for state in spins(2)]
+    first = rd.simulate_batch(scene, initial, dt=0.01, steps=40, threads=1)
+    torque["z"] = 5.0
+    assert first.error != rd.simulate_batch(scene, initial, dt=0.01, steps=40, threads=1).error
+    torque["z"] = 0.5
+    assert first.error == rd.simulate_batch(scene, initial, dt=0.01, steps=40, threads=1).error
 
 
 def test_pickle_and_sample_of_the_estimate():

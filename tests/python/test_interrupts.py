@@ -1,6 +1,7 @@
 """Ctrl-C and errors that stop a run: a SIGINT stops simulate and simulate_batch within about 0.05 s however
-long a step takes (monitor_pace.hpp), is never swallowed by the conversion of an argument, and an exception
-from a PythonForce stops every sample of a batch, raised with its sample's index.
+long a step takes (monitor_pace.hpp), also the runs of an estimate made on the first read of result.error, is
+never swallowed by the conversion of an argument, and an exception from a PythonForce stops every sample of a
+batch, raised with its sample's index.
 
 The signal tests install Python's default SIGINT handler for their duration (a process started as a
 background job inherits SIGINT ignored, and then a Ctrl-C, real or simulated, does nothing) and send the
@@ -149,6 +150,39 @@ def test_ctrl_c_stops_a_batch_whose_python_force_is_slow():
         rd.simulate_batch(scene, [[rd.ParticleState()]] * 4, 1e-3, 2000, threads=2)
 
     assert seconds_to_stop(run) < PROMPT_SECONDS
+
+
+# ------------------------------------------------------------------ Ctrl-C while an estimate is made on its read
+
+# Records every 2^20 steps (a multiple of 4: every record a common record of the estimate's runs at h, 2h and 4h).
+RECORD_EVERY = 2**20
+
+
+def steps_taking(seconds, run):
+    """The steps, a multiple of RECORD_EVERY, that run(steps) (a call without an estimate) takes `seconds` for on
+    this machine."""
+    per_step = run(4 * RECORD_EVERY).elapsed_seconds / (4 * RECORD_EVERY)
+    return RECORD_EVERY * max(4, int(seconds / per_step / RECORD_EVERY))
+
+
+# The estimate's runs at 2h and 4h take 0.75x its run's time: after a run of 3.4 s, at least 2.5 s. The signal comes
+# 0.3 s into the read; were the runs not checking for it, they would go on for at least 2.2 s more, beyond
+# PROMPT_SECONDS.
+@pytest.mark.parametrize("batch", [False, True])
+def test_ctrl_c_stops_an_estimate_made_on_its_read(batch):
+    def run(steps, error=True):
+        if batch:
+            return rd.simulate_batch(BODY, [START] * 2, 1e-4, steps, record_every=RECORD_EVERY, threads=2,
+                                     error=error)
+        return rd.simulate(BODY, START, 1e-4, steps, record_every=RECORD_EVERY, error=error)
+
+    result = run(steps_taking(3.4, lambda steps: run(steps, error=False)))
+
+    def read(started):
+        threading.Timer(0.3, started.set).start()
+        result.error
+
+    assert seconds_to_stop(read) < PROMPT_SECONDS
 
 
 # ------------------------------------------------------------------ a Python force's exception in a batch

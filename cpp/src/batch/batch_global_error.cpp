@@ -2,31 +2,12 @@
 
 #include "rigiddyn/batch/parallel_for.hpp"
 
-#include <Eigen/Core>
-
 #include <algorithm>
 #include <limits>
 
 namespace rigiddyn {
 
 namespace {
-
-// The records of sample i of a batch of `bodies` bodies per record: its filled rows, pointers into the batch.
-template <class Batch>
-ErrorRecords sample_records(const Batch& b, std::size_t i, std::int64_t bodies) {
-  const std::size_t row = i * b.records, nb = static_cast<std::size_t>(bodies);
-  ErrorRecords out;
-  out.n = static_cast<std::size_t>(b.filled[i]);
-  out.bodies = bodies;
-  out.t = b.t.data() + row;
-  out.q_WB = b.q_WB.data() + row * nb * 4;
-  out.w_B = b.w_B.data() + row * nb * 3;
-  out.p_W = b.p_W.data() + row * nb * 3;
-  out.v_W = b.v_W.data() + row * nb * 3;
-  out.energy = b.total_energy.data() + row;
-  out.energy_scale = b.kinetic_energy.data() + row;
-  return out;
-}
 
 // Moves the estimate `e` of sample i (e.verdict.size() <= n records) into its rows of `out`; the rows after them
 // say that the run at h stopped there.
@@ -43,32 +24,48 @@ void put_estimate(BatchErrorEstimate& out, std::size_t i, GlobalErrorEstimate&& 
   while (verdict.size() < n) verdict.push_back("no record: the run at h diverged");
 }
 
-std::int64_t bodies_of(const BatchTrajectory&) { return 1; }
-std::int64_t bodies_of(const BatchSceneSimulation& b) { return b.body_count; }
-
 }  // namespace
 
-ErrorRecords error_records(const BatchTrajectory& batch, std::size_t i) {
-  ErrorRecords out = sample_records(batch, i, 1);
-  const auto first = batch.angular_momentum_norm.begin() + static_cast<std::ptrdiff_t>(i * batch.records);
-  out.momentum.assign(first, first + static_cast<std::ptrdiff_t>(out.n));
-  return out;
+BatchColumns batch_columns(const BatchSceneSimulation& batch) {
+  BatchColumns c;
+  c.samples = batch.samples, c.records = batch.records;
+  c.bodies = batch.body_count, c.elements = batch.element_count, c.wheels = batch.wheel_count;
+  c.filled = batch.filled.data();
+  c.t = batch.t.data(), c.q_WB = batch.q_WB.data(), c.w_B = batch.w_B.data(), c.p_W = batch.p_W.data();
+  c.v_W = batch.v_W.data();
+  c.total_energy = batch.total_energy.data(), c.kinetic_energy = batch.kinetic_energy.data();
+  c.angular_momentum_W = batch.angular_momentum_W.data();
+  c.mass = batch.mass.data(), c.angular_momentum_O_W = batch.angular_momentum_O_W.data();
+  c.work = batch.work.data(), c.mass_flow_energy = batch.mass_flow_energy.data();
+  c.motor_work = batch.motor_work.data();
+  return c;
 }
 
-ErrorRecords error_records(const BatchSceneSimulation& batch, std::size_t i) {
-  ErrorRecords out = sample_records(batch, i, batch.body_count);
-  const double* L_W = batch.angular_momentum_W.data() + i * batch.records * 3;
-  for (std::size_t k = 0; k < out.n; ++k) out.momentum.push_back(Eigen::Map<const Eigen::Vector3d>(L_W + 3 * k).norm());
-  return out;
+SceneColumns sample_columns(const BatchColumns& batch, std::size_t i) {
+  const std::size_t row = i * batch.records, nb = static_cast<std::size_t>(batch.bodies);
+  const std::size_t ne = static_cast<std::size_t>(batch.elements), nw = static_cast<std::size_t>(batch.wheels);
+  SceneColumns c;
+  c.n = static_cast<std::size_t>(batch.filled[i]);
+  c.bodies = batch.bodies;
+  c.t = batch.t + row;
+  c.q_WB = batch.q_WB + row * nb * 4, c.scalar_first = batch.scalar_first;
+  c.w_B = batch.w_B + row * nb * 3, c.p_W = batch.p_W + row * nb * 3, c.v_W = batch.v_W + row * nb * 3;
+  c.total_energy = batch.total_energy + row, c.angular_momentum_W = batch.angular_momentum_W + row * 3;
+  c.kinetic_energy = batch.kinetic_energy + row, c.kinetic_energy_size = c.n;
+  c.mass = batch.mass + row * nb, c.mass_size = c.n * nb;
+  c.angular_momentum_O_W = batch.angular_momentum_O_W + row * nb * 3, c.angular_momentum_O_W_size = c.n * nb * 3;
+  c.work = batch.work + row * ne, c.work_size = c.n * ne;
+  c.mass_flow_energy = batch.mass_flow_energy + row * nb, c.mass_flow_energy_size = c.n * nb;
+  c.motor_work = batch.motor_work + row * nw, c.motor_work_size = c.n * nw;
+  return c;
 }
 
-template <class Batch>
-BatchErrorEstimate batch_error_estimate(const Batch& h, const Batch& h2, const Batch& h4,
+BatchErrorEstimate batch_error_estimate(const BatchColumns& h, const BatchColumns& h2, const BatchColumns& h4,
                                         const SimulationOptions& answer, const std::vector<SampleModel>& models,
                                         int threads) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   BatchErrorEstimate out;
-  out.samples = h.samples, out.records = h.records, out.bodies = bodies_of(h);
+  out.samples = h.samples, out.records = h.records, out.bodies = h.bodies;
   out.order = models.empty() ? 0 : models[0].order;
   const std::size_t rows = h.samples * h.records, nb = static_cast<std::size_t>(out.bodies);
   for (auto* per_body : {&out.attitude, &out.angular_velocity, &out.position, &out.velocity}) per_body->assign(rows * nb, nan);
@@ -77,20 +74,16 @@ BatchErrorEstimate batch_error_estimate(const Batch& h, const Batch& h2, const B
   // each sample writes only its own rows
   parallel_for(h.samples, threads, [&](std::size_t i, int) {
     const SampleModel& model = models[models.size() == 1 ? 0 : i];
-    const ErrorRecords records = error_records(h, i);
+    // as simulate reads its run's records (global_error.hpp: the coarse runs' without the answer's round-off size)
+    const ErrorRecords records = error_records(sample_columns(h, i));
     put_estimate(out, i,
                  model.order == 0 ? round_off_estimate(records, answer)
-                                  : estimate_global_error(records, error_records(h2, i), error_records(h4, i), answer,
+                                  : estimate_global_error(records, error_records(sample_columns(h2, i), false),
+                                                          error_records(sample_columns(h4, i), false), answer,
                                                           model.order, model.opaque));
   });
   return out;
 }
-
-template BatchErrorEstimate batch_error_estimate(const BatchTrajectory&, const BatchTrajectory&, const BatchTrajectory&,
-                                                 const SimulationOptions&, const std::vector<SampleModel>&, int);
-template BatchErrorEstimate batch_error_estimate(const BatchSceneSimulation&, const BatchSceneSimulation&,
-                                                 const BatchSceneSimulation&, const SimulationOptions&,
-                                                 const std::vector<SampleModel>&, int);
 
 std::vector<double> coarse_dt(const std::vector<double>& dt, int factor) {
   std::vector<double> out = dt;

@@ -32,9 +32,23 @@ struct BatchErrorEstimate {
   std::vector<Verdicts> verdict;            // (N,) sample i's n verdicts
 };
 
-// The records of sample i (its filled rows) in the layout the estimate reads.
-ErrorRecords error_records(const BatchTrajectory& batch, std::size_t i);
-ErrorRecords error_records(const BatchSceneSimulation& batch, std::size_t i);
+// The columns of a batch the estimate reads, as views (a BatchSceneSimulation's, or the same arrays after they became
+// a Python result's): row-major, sample-major, N samples of n records of nb bodies, ne work columns, nw wheels.
+struct BatchColumns {
+  std::size_t samples = 0, records = 0;                // N, n
+  std::int64_t bodies = 1, elements = 0, wheels = 0;   // nb, ne, nw
+  const std::int64_t* filled = nullptr;                // (N,) the rows each sample filled
+  const double *t = nullptr, *q_WB = nullptr, *w_B = nullptr, *p_W = nullptr, *v_W = nullptr;  // (N, n[, nb, 4|3])
+  bool scalar_first = false;                           // q_WB as (w, x, y, z)
+  const double *total_energy = nullptr, *kinetic_energy = nullptr;  // (N, n) [J]
+  const double* angular_momentum_W = nullptr;                        // (N, n, 3) [kg m²/s]
+  const double *mass = nullptr, *angular_momentum_O_W = nullptr;     // (N, n, nb) [kg], (N, n, nb, 3) [kg m²/s]
+  const double *work = nullptr, *mass_flow_energy = nullptr, *motor_work = nullptr;  // (N, n, ne|nb|nw) [J]
+};
+BatchColumns batch_columns(const BatchSceneSimulation& batch);
+
+// The columns of sample i (its filled rows) as those of its run alone.
+SceneColumns sample_columns(const BatchColumns& batch, std::size_t i);
 
 // What the estimate of one sample needs besides its records: the order of its model for the method (0: the
 // method 'exact', the round-off bound alone) and the force it cannot see into ("" for none), as
@@ -48,8 +62,7 @@ struct SampleModel {
 // not enter the estimate), from the batches h2 and h4 of the same samples made with coarse_options(answer, 2)
 // and coarse_options(answer, 4) (empty when every model's order is 0). models: one per sample, or one shared.
 // The samples are estimated on `threads` threads (batch/parallel_for.hpp).
-template <class Batch>
-BatchErrorEstimate batch_error_estimate(const Batch& h, const Batch& h2, const Batch& h4,
+BatchErrorEstimate batch_error_estimate(const BatchColumns& h, const BatchColumns& h2, const BatchColumns& h4,
                                         const SimulationOptions& answer, const std::vector<SampleModel>& models,
                                         int threads);
 
