@@ -15,6 +15,7 @@
 #include <limits>
 #include <numeric>
 #include <string_view>
+#include <type_traits>
 #include <unordered_map>
 #include <utility>
 
@@ -407,49 +408,57 @@ struct CommonVerdicts {
   }
 };
 
-// Row i of `out`: rows a and b of `common` blended, a·(1 − w) + b·w for each quantity, not checked (observed order
-// NaN).
-void put_blend(GlobalErrorEstimate& out, std::size_t i, const CommonTable& common, std::size_t a, std::size_t b,
-               double w) {
-  const auto mix = [w](double x, double y) { return x * (1.0 - w) + y * w; };
-  const std::size_t nb = common.nb;
-  const auto states = common.states();
-  const auto into = per_body_arrays(out);
-  for (std::size_t q = 0; q < 4; ++q) {
-    const double *from_a = states[q]->data() + a * nb, *from_b = states[q]->data() + b * nb;
-    double* row = into[q]->data() + i * nb;
-    for (std::size_t k = 0; k < nb; ++k) row[k] = mix(from_a[k], from_b[k]);
+// Where an answer record's estimate comes from (estimate_global_error): common row a itself; rows a and b blended,
+// a·u + b·w with u = 1 − w; row a scaled by w, the blend of a zero estimate and a (0·u + a·w); or none (NaN). Only a
+// common row has an observed order.
+struct RowSource {
+  enum Kind : std::uint8_t { common, blend, scaled, none };
+  Kind kind = none;
+  std::size_t a = 0, b = 0;
+  double u = 1.0, w = 0.0;
+};
+
+// The rows of one quantity at every answer record (`width` values a row: a std::size_t, or std::integral_constant 1
+// for a quantity of the run, whose loops the compiler then drops) from its common rows `from`.
+template <class Width>
+void fill_rows(const std::vector<double>& from, std::vector<double>& into, Width width,
+               const std::vector<RowSource>& sources) {
+  for (std::size_t i = 0; i < sources.size(); ++i) {
+    const RowSource& s = sources[i];
+    const double *row_a = from.data() + s.a * width, *row_b = from.data() + s.b * width;
+    double* row = into.data() + i * width;
+    switch (s.kind) {
+      case RowSource::common:
+        for (std::size_t k = 0; k < width; ++k) row[k] = row_a[k];
+        break;
+      case RowSource::blend:
+        for (std::size_t k = 0; k < width; ++k) row[k] = row_a[k] * s.u + row_b[k] * s.w;
+        break;
+      case RowSource::scaled:
+        for (std::size_t k = 0; k < width; ++k) row[k] = 0.0 * s.u + row_a[k] * s.w;
+        break;
+      case RowSource::none: break;
+    }
   }
-  out.energy[i] = mix(common.energy[a], common.energy[b]);
-  out.angular_momentum[i] = mix(common.angular_momentum[a], common.angular_momentum[b]);
-  out.observed_order[i] = nan;
 }
 
-// Row i of `out`: row a of `common` scaled by s, the blend of a zero estimate and a (observed order NaN).
-void put_scaled(GlobalErrorEstimate& out, std::size_t i, const CommonTable& common, std::size_t a, double s) {
-  const auto mix = [s](double y) { return 0.0 * (1.0 - s) + y * s; };
-  const std::size_t nb = common.nb;
+// Every row of `out` from the common rows `common` (their sources, `sources`).
+void put_rows(GlobalErrorEstimate& out, const CommonTable& common, const std::vector<RowSource>& sources) {
   const auto states = common.states();
   const auto into = per_body_arrays(out);
-  for (std::size_t q = 0; q < 4; ++q) {
-    const double* from = states[q]->data() + a * nb;
-    double* row = into[q]->data() + i * nb;
-    for (std::size_t k = 0; k < nb; ++k) row[k] = mix(from[k]);
+  const std::integral_constant<std::size_t, 1> one;
+  for (std::size_t q = 0; q < states.size(); ++q) {
+    if (common.nb == 1) {
+      fill_rows(*states[q], *into[q], one, sources);
+    } else {
+      fill_rows(*states[q], *into[q], common.nb, sources);
+    }
   }
-  out.energy[i] = mix(common.energy[a]);
-  out.angular_momentum[i] = mix(common.angular_momentum[a]);
-  out.observed_order[i] = nan;
-}
-
-// Row i of `out`: row a of `common`.
-void put(GlobalErrorEstimate& out, std::size_t i, const CommonTable& common, std::size_t a) {
-  const std::size_t nb = common.nb;
-  const auto states = common.states();
-  const auto into = per_body_arrays(out);
-  for (std::size_t q = 0; q < 4; ++q) std::copy_n(states[q]->data() + a * nb, nb, into[q]->data() + i * nb);
-  out.energy[i] = common.energy[a];
-  out.angular_momentum[i] = common.angular_momentum[a];
-  out.observed_order[i] = common.observed_order[a];
+  fill_rows(common.energy, out.energy, one, sources);
+  fill_rows(common.angular_momentum, out.angular_momentum, one, sources);
+  for (std::size_t i = 0; i < sources.size(); ++i) {
+    if (sources[i].kind == RowSource::common) out.observed_order[i] = common.observed_order[sources[i].a];
+  }
 }
 
 // Room for n records of nb bodies, their values NaN (a record without an estimate keeps them).
@@ -495,13 +504,14 @@ void name_exponential_growth(CommonTable& common, const double* t, std::size_t s
       const std::array<double, 4> sizes = state_sizes(common, j);
       for (std::size_t k = 0; k < sizes.size(); ++k) {
         const double scaled = sizes[k] / t4;
-        if (past.empty() && std::isfinite(scaled) && scaled > beyond_polynomial * least[k]) {
+        if (std::isfinite(scaled) && scaled > beyond_polynomial * least[k]) {
           const double rate = std::log(scaled / least[k] * std::pow(tj / least_t[k], 4.0)) / (tj - least_t[k]);
           Text text;
           text << "past the Lyapunov time of this scene: the differences grow as e^(" << Text::general(rate, 2)
                << " t) from t = " << Text::general(least_t[k], 3)
                << " s (nearby trajectories diverge exponentially); ";
           past = text.view();
+          break;  // named: the smallest estimates are not needed again
         }
         if (scaled > 0.0 && scaled < least[k]) least[k] = scaled, least_t[k] = tj;
       }
@@ -640,23 +650,28 @@ GlobalErrorEstimate estimate_global_error(const ErrorRecords& h, const ErrorReco
     none = out.verdict.add_text("no estimate: fewer than " + std::to_string(m) +
                                 " steps (the 2h and 4h runs have a state only every lcm(record_every, 4) steps)");
   }
+  std::vector<RowSource> sources(h.n);
   for (std::size_t i = 0; i < h.n; ++i) {
     const std::size_t j = i / stride;
+    RowSource& s = sources[i];
     if (i % stride == 0 && j <= last) {
-      put(out, i, common, j);
+      s = {RowSource::common, j, j, 1.0, 0.0};
       out.verdict.push_back_text(verdicts.text[j]);
     } else if (j < last) {  // between common records j and j + 1
       const double tj = h.t[j * stride], tk = h.t[(j + 1) * stride];
-      put_blend(out, i, common, j, j + 1, (h.t[i] - tj) / (tk - tj));
+      const double w = (h.t[i] - tj) / (tk - tj);
+      s = {RowSource::blend, j, j + 1, 1.0 - w, w};
       out.verdict.push_back_text(verdicts.first_unreliable_or(j, j + 1, between));
     } else if (last > 0) {  // after the last common record: linear growth from t0
       const double t0 = h.t[0], tc = h.t[last * stride];
-      put_scaled(out, i, common, last, (h.t[i] - t0) / (tc - t0));
+      const double w = (h.t[i] - t0) / (tc - t0);
+      s = {RowSource::scaled, last, last, 1.0 - w, w};
       out.verdict.push_back_text(verdicts.first_unreliable_or(last, last, after));
     } else {  // no common record but the first: no estimate (NaN)
       out.verdict.push_back_text(none);
     }
   }
+  put_rows(out, common, sources);
   return out;
 }
 
