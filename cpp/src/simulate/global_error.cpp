@@ -442,7 +442,7 @@ void fill_rows(const std::vector<double>& from, std::vector<double>& into, Width
   }
 }
 
-// Every row of `out` from the common rows `common` (their sources, `sources`).
+// Every row of `out`, sized by size_for_records, from the common rows `common` (their sources, `sources`).
 void put_rows(GlobalErrorEstimate& out, const CommonTable& common, const std::vector<RowSource>& sources) {
   const auto states = common.states();
   const auto into = per_body_arrays(out);
@@ -459,6 +459,15 @@ void put_rows(GlobalErrorEstimate& out, const CommonTable& common, const std::ve
   for (std::size_t i = 0; i < sources.size(); ++i) {
     if (sources[i].kind == RowSource::common) out.observed_order[i] = common.observed_order[sources[i].a];
   }
+}
+
+// The rows of `out` where every record is a common record (record_every a multiple of 4): the common rows themselves.
+void take_rows(GlobalErrorEstimate& out, CommonTable&& common) {
+  const auto states = common.states();
+  const auto into = per_body_arrays(out);
+  for (std::size_t q = 0; q < states.size(); ++q) *into[q] = std::move(*states[q]);
+  out.energy = std::move(common.energy), out.angular_momentum = std::move(common.angular_momentum);
+  out.observed_order = std::move(common.observed_order);
 }
 
 // Room for n records of nb bodies, their values NaN (a record without an estimate keeps them).
@@ -641,7 +650,7 @@ GlobalErrorEstimate estimate_global_error(const ErrorRecords& h, const ErrorReco
   }
   name_exponential_growth(common, h.t, stride);
   const CommonVerdicts verdicts(std::move(common.verdict), out.verdict);
-  size_for_records(out, h.n, h.bodies);
+  out.verdict.reserve(h.n);
   const std::uint32_t between = out.verdict.add_text("interpolated between the reliable records before and after it");
   std::uint32_t after = 0, none = 0;  // the verdicts after the last common record and without an estimate
   if (last > 0 && h.n - 1 > last * stride) {
@@ -671,7 +680,12 @@ GlobalErrorEstimate estimate_global_error(const ErrorRecords& h, const ErrorReco
       out.verdict.push_back_text(none);
     }
   }
-  put_rows(out, common, sources);
+  if (stride == 1 && h.n == last + 1) {
+    take_rows(out, std::move(common));
+  } else {
+    size_for_records(out, h.n, h.bodies);
+    put_rows(out, common, sources);
+  }
   return out;
 }
 
