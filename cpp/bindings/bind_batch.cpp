@@ -737,6 +737,7 @@ void put_batch_error(BatchSceneResult& r, BatchRun run, SimulationOptions o, std
     for (int k = 0; k < 2 && coarse_runs; ++k) {
       const int factor = 2 << k;
       SimulationOptions options = coarse_options(o, factor);
+      options.estimate_records = true;  // what the estimate reads of it
       options.monitor = coarse_monitor(monitor);
       coarse[k] = run(options, coarse_dt(dt, factor));
       if (coarse[k].interrupted) return std::nullopt;

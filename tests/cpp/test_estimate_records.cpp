@@ -1,6 +1,9 @@
 // The records of a coarse run of the global error estimate (SimulationOptions::estimate_records): the columns the
 // estimate reads are those of the same run recording every column, bit for bit, and so are the records the estimate
-// makes of them (error_records without the answer's round-off size); the columns nothing reads of it stay empty.
+// makes of them (error_records without the answer's round-off size); the columns nothing reads of it stay empty, in a
+// run and in a batch.
+#include "rigiddyn/batch/batch_global_error.hpp"
+#include "rigiddyn/batch/simulate_batch.hpp"
 #include "rigiddyn/scene/compile.hpp"
 #include "rigiddyn/scene/one_body_scene.hpp"
 #include "rigiddyn/scene/simulate_scene.hpp"
@@ -97,6 +100,48 @@ TEST(EstimateRecords, OneBodyLayoutsKeepWhatTheEstimateReads) {
     ASSERT_EQ(compile_scene(scene, Method::rk4).path(), ScenePath::one_body);
     for (const Method method : {Method::rk4, Method::splitting_dlm}) {
       for (const std::int64_t every : {1, 3}) expect_estimate_records(scene, {BodyState(s)}, method, every, what);
+    }
+  }
+}
+
+TEST(EstimateRecords, ABatchHoldsWhatTheEstimateReads) {
+  // a batch of the linked bodies (two samples, the second moved) and of a free body: the columns it holds are the full
+  // batch's, bit for bit, and so are each sample's records as the estimate reads them; the others are not held
+  const auto [linked, linked_states] = linked_bodies();
+  std::vector<BodyState> moved = linked_states;
+  std::get<RigidBodyState>(moved[1]).v_W.x() += 0.3;
+  RigidBodyState spin;
+  spin.w_B = Eigen::Vector3d(0.1, 1.0, 0.1);
+  const RigidBody body(2.0, Eigen::Vector3d(1.0, 2.0, 3.0));
+  const std::pair<Scene, std::vector<std::vector<BodyState>>> cases[] = {
+      {linked, {linked_states, moved}},
+      {one_body_scene(body, Eigen::Vector3d::Zero(), {}), {{BodyState(spin)}, {BodyState(spin)}}}};
+  for (const auto& [scene, states] : cases) {
+    const std::vector<CompiledScene> compiled{compile_scene(scene, Method::rk4)};
+    SimulationOptions o;
+    o.method = Method::rk4, o.dt = 0.01, o.steps = 101, o.record_every = 2;
+    const BatchSceneSimulation all = simulate_batch(compiled, states, o, {}, 2);
+    o.estimate_records = true;
+    const BatchSceneSimulation read = simulate_batch(compiled, states, o, {}, 2);
+    EXPECT_TRUE(read.estimate_records);
+    for (const auto column : {&BatchSceneSimulation::t, &BatchSceneSimulation::p_W, &BatchSceneSimulation::q_WB,
+                              &BatchSceneSimulation::v_W, &BatchSceneSimulation::w_B,
+                              &BatchSceneSimulation::kinetic_energy, &BatchSceneSimulation::total_energy,
+                              &BatchSceneSimulation::angular_momentum_W, &BatchSceneSimulation::work,
+                              &BatchSceneSimulation::mass_flow_energy, &BatchSceneSimulation::motor_work}) {
+      EXPECT_EQ(all.*column, read.*column);
+    }
+    for (const auto column : {&BatchSceneSimulation::potential_energy, &BatchSceneSimulation::linear_momentum_W,
+                              &BatchSceneSimulation::pivot_reaction_W, &BatchSceneSimulation::angular_momentum_O_W,
+                              &BatchSceneSimulation::mass, &BatchSceneSimulation::power}) {
+      EXPECT_TRUE((read.*column).empty());
+      EXPECT_TRUE(!(all.*column).empty() || (column == &BatchSceneSimulation::power && all.element_count == 0));
+    }
+    for (std::size_t i = 0; i < states.size(); ++i) {
+      const ErrorRecords a = error_records(sample_columns(batch_columns(all), i), false);
+      const ErrorRecords r = error_records(sample_columns(batch_columns(read), i), false);
+      EXPECT_EQ(a.momentum, r.momentum);
+      EXPECT_EQ(a.balance, r.balance);
     }
   }
 }

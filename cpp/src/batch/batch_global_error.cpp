@@ -35,9 +35,11 @@ BatchColumns batch_columns(const BatchSceneSimulation& batch) {
   c.v_W = batch.v_W.data();
   c.total_energy = batch.total_energy.data(), c.kinetic_energy = batch.kinetic_energy.data();
   c.angular_momentum_W = batch.angular_momentum_W.data();
-  c.mass = batch.mass.data(), c.angular_momentum_O_W = batch.angular_momentum_O_W.data();
-  c.work = batch.work.data(), c.mass_flow_energy = batch.mass_flow_energy.data();
-  c.motor_work = batch.motor_work.data();
+  // the columns an estimate_records batch has not, and those of no value (no element, no wheel): none
+  const auto column = [](const std::vector<double>& values) { return values.empty() ? nullptr : values.data(); };
+  c.mass = column(batch.mass), c.angular_momentum_O_W = column(batch.angular_momentum_O_W);
+  c.work = column(batch.work), c.mass_flow_energy = column(batch.mass_flow_energy);
+  c.motor_work = column(batch.motor_work);
   return c;
 }
 
@@ -52,11 +54,16 @@ SceneColumns sample_columns(const BatchColumns& batch, std::size_t i) {
   c.w_B = batch.w_B + row * nb * 3, c.p_W = batch.p_W + row * nb * 3, c.v_W = batch.v_W + row * nb * 3;
   c.total_energy = batch.total_energy + row, c.angular_momentum_W = batch.angular_momentum_W + row * 3;
   c.kinetic_energy = batch.kinetic_energy + row, c.kinetic_energy_size = c.n;
-  c.mass = batch.mass + row * nb, c.mass_size = c.n * nb;
-  c.angular_momentum_O_W = batch.angular_momentum_O_W + row * nb * 3, c.angular_momentum_O_W_size = c.n * nb * 3;
-  c.work = batch.work + row * ne, c.work_size = c.n * ne;
-  c.mass_flow_energy = batch.mass_flow_energy + row * nb, c.mass_flow_energy_size = c.n * nb;
-  c.motor_work = batch.motor_work + row * nw, c.motor_work_size = c.n * nw;
+  // the sample's rows of a column of `width` values a record, and their count (none where the batch has no column)
+  const auto rows_of = [&](const double* column, std::size_t width, const double*& rows, std::size_t& size) {
+    rows = column == nullptr ? nullptr : column + row * width;
+    size = column == nullptr ? 0 : c.n * width;
+  };
+  rows_of(batch.mass, nb, c.mass, c.mass_size);
+  rows_of(batch.angular_momentum_O_W, nb * 3, c.angular_momentum_O_W, c.angular_momentum_O_W_size);
+  rows_of(batch.work, ne, c.work, c.work_size);
+  rows_of(batch.mass_flow_energy, nb, c.mass_flow_energy, c.mass_flow_energy_size);
+  rows_of(batch.motor_work, nw, c.motor_work, c.motor_work_size);
   return c;
 }
 

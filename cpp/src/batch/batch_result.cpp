@@ -16,6 +16,7 @@ using detail::nan;
 // The first `rows` rows of `width` values of `run` into the block of sample i (N blocks of `records` rows).
 void copy_rows(std::vector<double>& batch, std::size_t i, std::size_t records, std::size_t width,
                const std::vector<double>& run, std::size_t rows) {
+  if (batch.empty()) return;  // a column the batch does not hold (estimate_records)
   std::copy_n(run.begin(), rows * width, batch.begin() + static_cast<std::ptrdiff_t>(i * records * width));
 }
 
@@ -64,7 +65,7 @@ void put_sample(BatchTrajectory& batch, std::size_t i, const Trajectory& run) {
 
 BatchSceneSimulation empty_scene_batch(std::size_t samples, std::size_t records, std::int64_t body_count,
                                        std::int64_t element_count, std::int64_t wheel_count,
-                                       std::int64_t joint_q_count, std::int64_t joint_v_count) {
+                                       std::int64_t joint_q_count, std::int64_t joint_v_count, bool estimate_records) {
   const auto nb = static_cast<std::size_t>(body_count), ne = static_cast<std::size_t>(element_count);
   BatchSceneSimulation b;
   b.samples = samples, b.records = records, b.body_count = body_count, b.element_count = element_count;
@@ -72,13 +73,19 @@ BatchSceneSimulation empty_scene_batch(std::size_t samples, std::size_t records,
   b.t = nans(samples, records, 1);
   b.p_W = nans(samples, records, nb * 3);
   b.q_WB = nans(samples, records, nb * 4);
-  b.v_W = b.w_B = b.pivot_reaction_W = b.angular_momentum_O_W = b.p_W;
-  b.kinetic_energy = b.potential_energy = b.total_energy = b.t;
-  b.linear_momentum_W = nans(samples, records, 3);
-  b.angular_momentum_W = b.linear_momentum_W;
-  b.mass = b.mass_flow_energy = nans(samples, records, nb);
+  b.v_W = b.w_B = b.p_W;
+  b.kinetic_energy = b.total_energy = b.t;
+  b.angular_momentum_W = nans(samples, records, 3);
+  b.mass_flow_energy = nans(samples, records, nb);
   b.work = nans(samples, records, ne);
-  b.power = b.work;
+  b.estimate_records = estimate_records;
+  if (!estimate_records) {
+    b.pivot_reaction_W = b.angular_momentum_O_W = b.p_W;
+    b.potential_energy = b.t;
+    b.linear_momentum_W = b.angular_momentum_W;
+    b.mass = b.mass_flow_energy;
+    b.power = b.work;
+  }
   b.wheel_speed = b.motor_work = nans(samples, records, static_cast<std::size_t>(wheel_count));
   b.joint_q = nans(samples, records, static_cast<std::size_t>(joint_q_count));
   b.joint_v = nans(samples, records, static_cast<std::size_t>(joint_v_count));

@@ -243,7 +243,7 @@ BatchSceneSimulation simulate_batch(const std::vector<CompiledScene>& scenes,
   BatchSceneSimulation out = empty_scene_batch(samples, batch_record_count(common.steps, common.record_every),
                                                static_cast<std::int64_t>(nb), static_cast<std::int64_t>(ne),
                                                static_cast<std::int64_t>(nw), static_cast<std::int64_t>(joints.q),
-                                               static_cast<std::int64_t>(joints.v));
+                                               static_cast<std::int64_t>(joints.v), common.estimate_records);
   const BatchParameters p{dt, {}, {}};
   out.interrupted = run_samples(samples, threads, common.monitor, [&](std::size_t i, const StepMonitor& monitor) {
     const SceneSimulation run =

@@ -75,16 +75,20 @@ struct BatchSceneSimulation {
   std::vector<std::int64_t> unconverged_steps;  // (N,)
   double elapsed_seconds = 0.0;               // wall time of the whole batch [s]
   bool interrupted = false;                   // the monitor stopped the batch: samples not run stay NaN
+  // The batch holds what the global error estimate reads of a coarse batch (SimulationOptions' estimate_records):
+  // potential_energy, linear_momentum_W, pivot_reaction_W, angular_momentum_O_W, mass and power are empty.
+  bool estimate_records = false;
 };
 
 // A batch of `samples` scene runs of `records` records, nb bodies, ne work columns, nw gyrostat wheels and the trees'
-// nq coordinates and nv velocities, every value NaN.
+// nq coordinates and nv velocities, every value NaN; with `estimate_records`, without the columns it names.
 BatchSceneSimulation empty_scene_batch(std::size_t samples, std::size_t records, std::int64_t body_count,
                                        std::int64_t element_count, std::int64_t wheel_count = 0,
-                                       std::int64_t joint_q_count = 0, std::int64_t joint_v_count = 0);
+                                       std::int64_t joint_q_count = 0, std::int64_t joint_v_count = 0,
+                                       bool estimate_records = false);
 
-// Copies the scene run of sample i into its rows, as put_sample above (std::invalid_argument if the run's
-// body or element count is not the batch's).
+// Copies the scene run of sample i into its rows, as put_sample above, each column the batch has (std::invalid_argument
+// if the run's body or element count is not the batch's).
 void put_sample(BatchSceneSimulation& batch, std::size_t i, const SceneSimulation& run);
 
 }  // namespace rigiddyn
