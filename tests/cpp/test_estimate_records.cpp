@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -42,6 +43,35 @@ std::pair<Scene, std::vector<BodyState>> linked_bodies() {
     spring.stiffness = 20.0, spring.rest_length = 0.8, spring.damping = 0.3;
     scene.elements.emplace_back(spring);
   }
+  return {scene, states};
+}
+
+// A pivoted body, a pivoted planar body, a gyrostat with a wheel and a two-link tree on a free base under gravity, the
+// gyrostat on a spring to the tree's second link (the kinds whose records read more than the body's motion: a pivot's
+// reaction, a wheel's speed and motor work, the links' joints), and their states.
+std::pair<Scene, std::vector<BodyState>> pivots_wheels_and_links() {
+  Scene scene;
+  const auto arm = std::make_shared<Tree>();
+  const SpatialInertia link(2.0, Eigen::Vector3d(0.5, 0.0, 0.0), Eigen::Vector3d(0.01, 0.2, 0.2).asDiagonal());
+  arm->add_link("base", -1, FreeJoint(), SpatialInertia(5.0, Eigen::Vector3d::Zero(), Eigen::Vector3d(1.0, 1.5, 2.0).asDiagonal()));
+  arm->add_link("elbow", 0, RevoluteJoint(Eigen::Vector3d::UnitZ()), link,
+                Transform(Eigen::Matrix3d::Identity(), Eigen::Vector3d(0.5, 0.0, 0.0)));
+  scene.bodies = {PivotedBody(RigidBody(2.0, Eigen::Vector3d(1.0, 1.0, 0.5)), Eigen::Vector3d(0.0, 0.0, 0.5)),
+                  PivotedPlanarBody(2.0, 0.05, Eigen::Vector2d(0.0, -0.4)),
+                  Gyrostat(RigidBody(10.0, Eigen::Vector3d(1.0, 1.2, 1.5)), {Wheel{Eigen::Vector3d::UnitZ(), 0.05, 0.01}}),
+                  TreeLink{arm, 0}, TreeLink{arm, 1}};
+  GyrostatState wheel;
+  wheel.p_W = Eigen::Vector3d(2.0, 0.0, 0.0), wheel.w_B = Eigen::Vector3d(0.1, -0.2, 0.3);
+  wheel.wheel_speeds = Eigen::VectorXd::Constant(1, 50.0);
+  Eigen::VectorXd q_base(7);
+  q_base << 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0;
+  std::vector<BodyState> states{
+      PivotedBodyState{Eigen::Quaterniond(Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitX())), Eigen::Vector3d(0.0, 0.0, 5.0)},
+      PivotedPlanarBodyState{0.4, 0.0}, wheel,
+      JointState{q_base, (Eigen::VectorXd(6) << 0.1, 0.2, 0.3, 0.0, 0.1, 0.0).finished()},
+      JointState{Eigen::VectorXd::Constant(1, 0.3), Eigen::VectorXd::Constant(1, -1.0)}};
+  scene.elements.emplace_back(UniformGravity{Eigen::Vector3d(0.0, 0.0, -9.81), {}});
+  scene.elements.emplace_back(SpringDamper{2, Eigen::Vector3d(0.2, 0.0, 0.0), 4, Eigen::Vector3d::Zero(), 5.0, 1.0, 0.2});
   return {scene, states};
 }
 
@@ -83,6 +113,12 @@ TEST(EstimateRecords, GenericModelKeepsWhatTheEstimateReads) {
   for (const Method method : {Method::rk4, Method::splitting_dlm, Method::rkmk4}) {
     for (const std::int64_t every : {1, 3}) expect_estimate_records(scene, states, method, every, "linked bodies");
   }
+}
+
+TEST(EstimateRecords, PivotsWheelsAndLinksKeepWhatTheEstimateReads) {
+  // their records without the elements' wrenches: the kinematics alone (no pivot reaction, no power)
+  const auto [scene, states] = pivots_wheels_and_links();
+  for (const std::int64_t every : {1, 3}) expect_estimate_records(scene, states, Method::rk4, every, "pivots and wheels");
 }
 
 TEST(EstimateRecords, OneBodyLayoutsKeepWhatTheEstimateReads) {

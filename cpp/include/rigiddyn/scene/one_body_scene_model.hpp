@@ -241,7 +241,12 @@ class OneBodySceneModel {
   // Appends the record of y at time t [s] to `out` (SceneModel::record)
   void record(const Coordinates& y, double t, SceneSimulation& out) const {
     Evaluation e;
-    evaluate(y, e, true);
+    // a coarse run of the estimate records no power and no pivot reaction: the kinematics alone, no element's wrench
+    if (out.estimate_records) {
+      fill_kinematics(y, e.k, true);
+    } else {
+      evaluate(y, e, true);
+    }
     const BodyKinematics& k = e.k;
     out.t.push_back(t);
     detail::RecordSums sums;

@@ -442,7 +442,12 @@ class BasicSceneModel {
   // Appends the record of y at time t [s] to `out` (scene_simulation.hpp): the bodies, energies,
   // momenta, each element's work and power, and (when a body has a MassFlow) each body's mass-flow energy.
   void record(const Coordinates& y, double t, SceneSimulation& out) const {
-    evaluate(y, true);
+    // a coarse run of the estimate records no power and no pivot reaction: the kinematics alone, no element's wrench
+    if (out.estimate_records) {
+      fill_kinematics(y, true);
+    } else {
+      evaluate(y, true);
+    }
     out.t.push_back(t);
     detail::RecordSums sums;
     for_each_slot([&](const auto& s) {
