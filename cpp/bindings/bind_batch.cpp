@@ -305,7 +305,14 @@ SceneResult batch_scene_sample(const BatchSceneResult& r, py::handle key) {
   out.unconverged_steps = r.unconverged_steps.attr("__getitem__")(i).cast<std::int64_t>();
   out.elapsed_seconds = r.elapsed_seconds;
   out.scalar_first = r.scalar_first;
-  out.error = sample_error(batch_result_error(r), i, rows);
+  if (r.error.pending()) {  // made with its batch's, on the first read of either (r's Python object kept alive)
+    const py::object batch = py::cast(&r, py::return_value_policy::reference);
+    out.error = LazyError(std::function<py::object()>([batch, i, rows] {
+      return sample_error(batch_result_error(batch.cast<const BatchSceneResult&>()), i, rows);
+    }));
+  } else {
+    out.error = sample_error(batch_result_error(r), i, rows);
+  }
   return out;
 }
 
@@ -1172,7 +1179,7 @@ duration : float or pint.Quantity, keyword-only, optional
 error : bool, keyword-only, default True
     Estimate the global error of every record of every sample (result.error, a GlobalError with a leading sample
     axis) from two more batches at 2 dt and 4 dt (+0.75x the cost, on the same threads, with the GIL released),
-    made on the first read of result.error, result[i] or a pickle (at once where a scene has a PythonForce); a
+    made on the first read of result.error, result[i].error or a pickle (at once where a scene has a PythonForce); a
     batch that is never asked for it costs what error=False costs. Sample i's estimate is the one simulate gives
     for it (result[i].error). False: no estimate (result.error is None).
 

@@ -462,15 +462,21 @@ class Lazy {
   Lazy() = default;
   Lazy(pybind11::object made) : made_(std::move(made)) {}  // NOLINT: a GlobalError or None converts
   explicit Lazy(std::shared_ptr<Deferred<Estimate, Columns>> deferred) : deferred_(std::move(deferred)) {}
+  // made on the first read by `later`, with the GIL held (a batch sample's: its rows of its batch's estimate)
+  explicit Lazy(std::function<pybind11::object()> later) : later_(std::move(later)) {}
 
   // Whether it is still to be made
-  bool pending() const { return static_cast<bool>(deferred_); }
+  bool pending() const { return deferred_ || later_; }
 
   // The GlobalError (or None); a deferred one made on the first call from `columns` (the answer's, read with the GIL
   // held: the result's arrays) with the GIL released, so that other threads run meanwhile; a second reader waits for
   // the first's and gets the same object. Ctrl-C stops the coarse runs (KeyboardInterrupt); an exception leaves it to
   // be made again.
   pybind11::object get(const std::function<Columns()>& columns) const {
+    if (later_) {
+      made_ = later_();
+      later_ = nullptr;
+    }
     if (deferred_) {
       const std::shared_ptr<Deferred<Estimate, Columns>> d = deferred_;
       const Columns c = columns();
@@ -494,6 +500,7 @@ class Lazy {
 
  private:
   mutable std::shared_ptr<Deferred<Estimate, Columns>> deferred_;
+  mutable std::function<pybind11::object()> later_;
   mutable pybind11::object made_ = pybind11::none();
 };
 using LazyError = Lazy<GlobalErrorEstimate, SceneColumns>;

@@ -12166,7 +12166,7 @@ def simulate_batch(model: Particle | PlanarBody | RigidBody | Scene | CompiledSc
     error : bool, keyword-only, default True
         Estimate the global error of every record of every sample (result.error, a GlobalError with a leading sample
         axis) from two more batches at 2 dt and 4 dt (+0.75x the cost, on the same threads, with the GIL released),
-        made on the first read of result.error, result[i] or a pickle (at once where a scene has a PythonForce); a
+        made on the first read of result.error, result[i].error or a pickle (at once where a scene has a PythonForce); a
         batch that is never asked for it costs what error=False costs. Sample i's estimate is the one simulate gives
         for it (result[i].error). False: no estimate (result.error is None).
     

@@ -124,7 +124,12 @@ def test_an_estimate_made_on_first_read_is_each_samples_own(method, record_every
     later = batch()
     assert later.error is later.error  # made once
     expect_each_samples_own(later)
-    expect_each_samples_own(batch())  # result[i] first
+    expect_each_samples_own(batch())  # result[i].error first
+    samples_first = batch()
+    samples = [samples_first[i] for i in range(len(states))]  # no estimate made yet: each sample's waits for it
+    del samples_first  # each sample keeps its batch
+    for i, sample in enumerate(samples):
+        assert not estimate_differences(sample.error, alone[i]) and sample.error is sample.error
     expect_each_samples_own(pickle.loads(pickle.dumps(batch())))
     read_first = batch()
     for name in ("t", "p_W", "q_WB", "v_W", "w_B", "kinetic_energy", "total_energy", "angular_momentum_W", "filled"):
