@@ -1334,9 +1334,9 @@ void bind_scene(py::module_& m) {
                     "The energy and momentum balance of every record (a Balance), or None (a batch result).")
       .def_property_readonly("error", &result_error,
                     "The global error estimate of every record (a GlobalError: per body (n, nb) for the state, per "
-                    "record (n,) for the energy and |L|), or None (simulate(..., error=False), a pickled or batch "
-                    "result). A run whose balances close may make it on this first read (simulate's error): the same "
-                    "values.")
+                    "record (n,) for the energy and |L|), or None (simulate(..., error=False)). A run whose balances "
+                    "close makes it on this first read (simulate's error), a batch's sample with its batch's: the "
+                    "same values.")
       .def_readonly("choice", &SceneResult::choice,
                     "What simulate(..., tolerance=) chose and why (a ToleranceChoice), or None (a run at a given dt).")
       .def_readonly("scalar_first", &SceneResult::scalar_first,

@@ -5859,7 +5859,7 @@ class SceneResult:
     @property
     def error(self) -> typing.Any:
         """
-        The global error estimate of every record (a GlobalError: per body (n, nb) for the state, per record (n,) for the energy and |L|), or None (simulate(..., error=False), a pickled or batch result). A run whose balances close may make it on this first read (simulate's error): the same values.
+        The global error estimate of every record (a GlobalError: per body (n, nb) for the state, per record (n,) for the energy and |L|), or None (simulate(..., error=False)). A run whose balances close makes it on this first read (simulate's error), a batch's sample with its batch's: the same values.
         """
     @property
     def joint_q(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -6476,7 +6476,7 @@ class BatchSceneResult:
     @property
     def error(self) -> GlobalError | None:
         """
-        The global error estimate of every record of every sample (GlobalError, arrays (N, n, ...)); None with simulate_batch(..., error=False).
+        The global error estimate of every record of every sample (GlobalError, arrays (N, n, ...)); None with simulate_batch(..., error=False). Made on this first read (or a sample's, or a pickle's): two more batches at 2 dt and 4 dt, +0.75x the batch's cost.
         """
     @property
     def filled(self) -> numpy.ndarray:
