@@ -993,21 +993,26 @@ Controller as_controller(py::handle controller, const Scene& scene, bool* shippe
   return out;
 }
 
-// result.error of a run of `compiled` from `initial` under options o, made on its first read (LazyError): the
-// estimate's two coarse runs (global_error.hpp) compared with the run's records, which its result keeps; the same
-// values as the estimate made at once, bit for bit (a scene without an opaque force or a controller is deterministic).
+// result.error of a run of `compiled` from `initial` under options o (and the control law `pristine` as it was before
+// the run: a law in C++, each coarse run under a fresh copy of it), made on its first read (LazyError): the estimate's
+// two coarse runs (global_error.hpp) compared with the run's records, which its result keeps; the same values as the
+// estimate made at once, bit for bit (a scene without an opaque force, under no law or a law in C++, is
+// deterministic).
 std::shared_ptr<DeferredEstimate> deferred_estimate(std::shared_ptr<const CompiledScene> compiled,
-                                                    std::vector<BodyState> initial, SimulationOptions o) {
+                                                    std::vector<BodyState> initial, SimulationOptions o,
+                                                    std::optional<Controller> pristine) {
   o.monitor = nullptr;  // the run's monitor is gone by then
   auto d = std::make_shared<DeferredEstimate>();
   const int order = scene_order(*compiled);
-  d->make = [compiled = std::move(compiled), initial = std::move(initial), o, order](
+  d->make = [compiled = std::move(compiled), initial = std::move(initial), o, order, pristine = std::move(pristine)](
                 const SceneColumns& answer, PythonMonitor& monitor) -> std::optional<GlobalErrorEstimate> {
     bool interrupted = false;
     const auto run = [&](SimulationOptions coarse) {
       coarse.estimate_records = true;  // what the estimate reads of it
       coarse.monitor = coarse_monitor(monitor);
-      return simulate(*compiled, initial, coarse);
+      if (!pristine) return simulate(*compiled, initial, coarse);
+      const Controller fresh = *pristine;
+      return simulate(*compiled, initial, coarse, fresh);
     };
     GlobalErrorEstimate e = global_error_of(error_records(answer), o, order, interruptible(run, interrupted));
     if (interrupted) return std::nullopt;
@@ -1064,10 +1069,10 @@ py::object simulate_scene_py(py::handle model, py::handle initial, py::handle dt
     // under a fresh copy of it (a law in Python may keep state or draw noise that another run would not repeat)
     if (estimate_error && !r.interrupted && (!control || shipped_law)) {
       const std::string opaque = opaque_force(*h.compiled);
-      if (!control && opaque.empty() && progress.is_none()) {
+      if (opaque.empty() && progress.is_none()) {
         balance = scene_run_balance(r, h, o.dt);
         if (closes_under_any_estimate(*balance, level.value_or(default_accuracy_level))) {
-          deferred = LazyError(deferred_estimate(h.compiled, std::move(initial_states), o));  // their last use
+          deferred = LazyError(deferred_estimate(h.compiled, std::move(initial_states), o, pristine));  // their last use
         }
       }
       if (!deferred.pending()) {

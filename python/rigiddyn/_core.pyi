@@ -11981,8 +11981,8 @@ def simulate(model: Particle | PlanarBody | RigidBody | PivotedBody | PivotedPla
     error : bool, keyword-only, default True
         Estimate the global error of every record (result.error, a GlobalError) by two more runs of the method at 2 dt
         and 4 dt (+0.75x the cost; global Richardson extrapolation with an observed-order check, see GlobalError).
-        A run without a PythonForce, a controller or a progress callback, whose balances close whatever the estimate
-        says, makes it on the first read of result.error, from the records the result keeps (the same values, the GIL
+        A run without a PythonForce, a control law in Python or a progress callback, whose balances close whatever the
+        estimate says, makes it on the first read of result.error, from the records the result keeps (the same values, the GIL
         released meanwhile), so that a run whose state alone is read pays for the run alone.
         False: no estimate (result.error is None), the cost of the run alone. True with tolerance.
     accuracy_level : float or None, keyword-only, default 1e-3
