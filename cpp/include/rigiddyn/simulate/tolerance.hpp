@@ -11,6 +11,8 @@
 // or above τ) is followed by a refinement dt' = dt (s τ / ε)^(1/p) (at most dt / 2 when the estimate was not
 // reliable), at most max_refinements times: a step that the short pilots called asymptotic may not be over the whole
 // horizon (a cluster's close encounters come later), and a halving is then a guess that the next certificate checks.
+// A certificate that is the round-off bound at every record (at_round_off) is not refined: that bound grows with the
+// steps, so the tolerance is below what the run can certify in double precision.
 //
 // Pilots: 16 steps over T/4 first; while the pilot's estimate is not reliable its horizon is halved (down to T/32, the
 // step with it) and then its steps doubled (up to 512). Its cost is that of ~28 steps whatever the horizon, a small
@@ -539,6 +541,14 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
     }
     if (attempt == max_refinements || chosen.order == 0) {
       choice.reason += "; " + why + (attempt > 0 ? " after " + refinements_text(attempt) : std::string());
+      break;
+    }
+    // every record's difference within its round-off bound (8 eps |y| per step, global_error.hpp): the certificate is
+    // that bound, which a smaller step only raises; the tolerance is below what double precision certifies here
+    if (reliable && at_round_off(e)) {
+      choice.reason += "; " + why + (attempt > 0 ? " after " + refinements_text(attempt) : std::string()) +
+                       ", and it is the round-off bound of " + std::to_string(o.steps) +
+                       " steps (every record's error at the round-off level), which a smaller step only raises";
       break;
     }
     // an estimate that is not reliable still bounds the step from above where it is finite: at most dt / 2, less
