@@ -718,6 +718,14 @@ auto run_without_gil(SimulationOptions& o, py::handle progress, Run&& batch) {
 
 // ------------------------------------------------------------ the runs
 
+// Each sample's model as its estimate needs it: its scene's order for the method (scene_order.hpp; the loads are split at
+// their switches) and the force the estimate cannot see into.
+std::vector<SampleModel> sample_models(const std::vector<CompiledScene>& scenes) {
+  std::vector<SampleModel> models;
+  for (const CompiledScene& scene : scenes) models.push_back({scene_order(scene), opaque_force(scene)});
+  return models;
+}
+
 // The runs of a batch's samples under options o with the samples' dt: the answer's, and its estimate's at 2h and 4h.
 using BatchRun = std::function<BatchSceneSimulation(const SimulationOptions& o, const std::vector<double>& dt)>;
 
@@ -961,11 +969,7 @@ BatchSceneResult body_batch(py::handle model, py::handle initial, py::handle dt,
   BatchSceneResult r = to_batch_scene_result(std::move(b), py::tuple(py::cast(detail::body_names_of(first))),
                                              py::tuple(py::cast(samples->scenes[0].element_types())),
                                              wheel_bodies_of(first), c.scalar_first);
-  if (error) {  // each scene at the order it has (scene_order.hpp; the loads are split at their switches)
-    std::vector<SampleModel> models;
-    for (const CompiledScene& scene : samples->scenes) models.push_back({scene_order(scene), opaque_force(scene)});
-    put_batch_error(r, run, o, p.dt, std::move(models), c.threads);
-  }
+  if (error) put_batch_error(r, run, o, p.dt, sample_models(samples->scenes), c.threads);
   warn_after_batch(r.diverged, r.unconverged_steps, method_info(o.method).name, overflowed);
   return r;
 }
@@ -1073,10 +1077,6 @@ BatchSceneResult scene_batch(py::handle model, py::handle initial, py::handle dt
   py::tuple body_names = py::tuple(py::cast(detail::body_names_of(first)));
   py::tuple elements = py::tuple(py::cast(scenes[0].element_types()));
   py::tuple wheel_bodies = wheel_bodies_of(first);
-  std::vector<SampleModel> models;  // each scene at the order it has (scene_order.hpp)
-  for (const CompiledScene& scene : scenes) {
-    if (error) models.push_back({scene_order(scene), opaque_force(scene)});
-  }
   const auto samples = std::make_shared<const SceneSamples>(SceneSamples{std::move(scenes), std::move(states)});
   const BatchRun run = [samples, threads = c.threads](const SimulationOptions& opt, const std::vector<double>& dt) {
     return simulate_batch(samples->scenes, samples->states, opt, dt, threads);
@@ -1085,7 +1085,7 @@ BatchSceneResult scene_batch(py::handle model, py::handle initial, py::handle dt
   const std::string overflowed = overflowed_samples(b);
   BatchSceneResult r = to_batch_scene_result(std::move(b), std::move(body_names), std::move(elements),
                                              std::move(wheel_bodies), c.scalar_first);
-  if (error) put_batch_error(r, run, o, dts, std::move(models), c.threads);
+  if (error) put_batch_error(r, run, o, dts, sample_models(samples->scenes), c.threads);
   warn_after_batch(r.diverged, r.unconverged_steps, method_info(o.method).name, overflowed);
   return r;
 }
