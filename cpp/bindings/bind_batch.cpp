@@ -632,12 +632,17 @@ CommonArgs as_common(std::int64_t steps, py::handle record_every, py::handle t0,
   return c;
 }
 
-// The values per record of a batch with its error estimate (`error`): its two coarse batches (at most as many
-// records each) and the estimate's own, at most 16 float64s' worth per record (7 values and
-// a verdict: a 32-byte std::string, then a reference and a bool in Python; a scene's 4 values per body are within
-// the 3x of its records).
-double with_error_doubles(double doubles_per_record, bool error) {
-  return error ? 3.0 * doubles_per_record + 16.0 : doubles_per_record;
+// The values per record of a batch run with options `o` and its error estimate (`error`), for `doubles_per_record`
+// values of its own: its two coarse batches, at most as many values a record (they hold the kinematics alone) and
+// floor(steps / m) + 1 records each (m = lcm(record_every, 4): coarse_options), and the estimate's own, at most 16
+// float64s' worth per record (7 values and a verdict: a 32-byte std::string, then a reference and a bool in Python; a
+// scene's 4 more per extra body are within what its coarse batches are counted for: 20 values per body, in at least a
+// quarter of the records each).
+double with_error_doubles(double doubles_per_record, bool error, const SimulationOptions& o) {
+  if (!error) return doubles_per_record;
+  const double coarse_records = static_cast<double>(o.steps / common_record_steps(o.record_every) + 1);
+  const double records = static_cast<double>(batch_record_count(o.steps, o.record_every));
+  return doubles_per_record * (1.0 + 2.0 * coarse_records / records) + 16.0;
 }
 
 // ValueError naming record_every when the stacked records of N samples (`doubles_per_record` values each) do not
@@ -950,7 +955,7 @@ BatchSceneResult body_batch(py::handle model, py::handle initial, py::handle dt,
   }
   const OneBodyElementSet elements = batch_elements(o, p);
   // a one-body scene's record: 10 + 20 per body + 2 per element doubles (scene_batch's count)
-  require_batch_memory(N, o, with_error_doubles(30.0 + 2.0 * static_cast<double>(elements.count()), error));
+  require_batch_memory(N, o, with_error_doubles(30.0 + 2.0 * static_cast<double>(elements.count()), error, o));
   std::vector<CompiledScene> scenes =
       one_body_scenes(bodies, o, p, static_cast<std::size_t>(N), elements, simd_path, c.threads);
   warn_compatibility(scenes);
@@ -1073,7 +1078,7 @@ BatchSceneResult scene_batch(py::handle model, py::handle initial, py::handle dt
   const std::vector<double> dts = as_dt(dt, o.dt, N);
   const Scene& first = scenes[0].scene();
   const double nb = static_cast<double>(first.bodies.size()), ne = static_cast<double>(scenes[0].element_types().size());
-  require_batch_memory(N, o, with_error_doubles(10.0 + 20.0 * nb + 2.0 * ne, error));
+  require_batch_memory(N, o, with_error_doubles(10.0 + 20.0 * nb + 2.0 * ne, error, o));
   py::tuple body_names = py::tuple(py::cast(detail::body_names_of(first)));
   py::tuple elements = py::tuple(py::cast(scenes[0].element_types()));
   py::tuple wheel_bodies = wheel_bodies_of(first);

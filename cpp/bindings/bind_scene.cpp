@@ -993,6 +993,52 @@ Controller as_controller(py::handle controller, const Scene& scene, bool* shippe
   return out;
 }
 
+// Whether the global error estimate may sample the law of `controller` (a rigiddyn.Controller on `scene`) again, from
+// copies: a shipped law (in C++, or a Python object of a shipped class where gyro noise takes it through Python), or a
+// controller declared repeatable.
+bool repeatable_law(py::handle controller, const Scene& scene) {
+  return controller.attr("repeatable").cast<bool>() || shipped_law(controller.attr("law"), scene).has_value();
+}
+
+// An estimate that names why a run has none: every value NaN, every record's verdict `why`.
+GlobalErrorEstimate no_estimate(const SceneSimulation& r, int order, const std::string& why) {
+  GlobalErrorEstimate e;
+  e.order = order, e.bodies = r.body_count;
+  const std::size_t n = r.size(), nb = static_cast<std::size_t>(r.body_count);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (auto* v : {&e.attitude, &e.angular_velocity, &e.position, &e.velocity}) v->assign(n * nb, nan);
+  for (auto* v : {&e.energy, &e.angular_momentum, &e.observed_order}) v->assign(n, nan);
+  e.verdict.assign(n, why);
+  return e;
+}
+
+// The controllers of the estimate's two coarse runs (global_error.hpp) of a run under `controller`, a
+// rigiddyn.Controller whose law is in Python or whose gyro noise is drawn in Python (repeatable_law): each a
+// copy.deepcopy of it as it is before the run (the law's attributes and the noise generator's state), so that each
+// coarse run samples the law and draws the noise as the run does. Made with the GIL before the run; TypeError naming
+// controller.law where it cannot be copied.
+std::vector<Controller> coarse_controllers(py::handle controller, const Scene& scene) {
+  const py::object deepcopy = py::module_::import("copy").attr("deepcopy");
+  std::vector<Controller> out;
+  bool shipped = false;
+  for (int k = 0; k < 2; ++k) {
+    py::object copy;
+    try {
+      copy = deepcopy(controller);
+    } catch (py::error_already_set& e) {
+      if (!e.matches(PyExc_Exception)) throw;
+      const std::string message = "controller.law: expected a law that copy.deepcopy copies (the global error "
+                                  "estimate runs it again at 2 dt and 4 dt, each from a copy), got " +
+                                  py::repr(controller.attr("law")).cast<std::string>() + " (" +
+                                  py::str(e.value()).cast<std::string>() + "); or pass error=False";
+      py::raise_from(e, PyExc_TypeError, message.c_str());
+      throw py::error_already_set();
+    }
+    out.push_back(as_controller(copy, scene, &shipped));
+  }
+  return out;
+}
+
 // result.error of a run of `compiled` from `initial` under options o (and the control law `pristine` as it was before
 // the run: a law in C++, each coarse run under a fresh copy of it), made on its first read (LazyError): the estimate's
 // two coarse runs (global_error.hpp) compared with the run's records, which its result keeps; the same values as the
@@ -1057,28 +1103,40 @@ py::object simulate_scene_py(py::handle model, py::handle initial, py::handle dt
   }
   PythonMonitor monitor(progress);
   if (monitor.needed()) o.monitor = [&monitor](std::int64_t steps_done) { return monitor(steps_done); };
+  // a law in Python (or gyro noise): the coarse runs' copies of it, made before the run (released with the GIL held),
+  // where it is repeatable; else no estimate (unrepeated)
+  std::vector<Controller> python_coarse;
+  const bool unrepeated = estimate_error && control && !shipped_law && !repeatable_law(controller, h.scene);
+  if (estimate_error && control && !shipped_law && !unrepeated) python_coarse = coarse_controllers(controller, h.scene);
   SceneSimulation r;
   std::optional<GlobalErrorEstimate> estimate;
   std::optional<RunBalance> balance;
   LazyError deferred;
   {
     const GilReleasedForRun release(o.steps, h.scene.bodies.size());
-    const std::optional<Controller> pristine = control;  // the law's state before the run (a shipped law's)
+    // a law in C++: its state before the run (a B-dot's last field), copied for each coarse run
+    const std::optional<Controller> pristine = shipped_law ? control : std::nullopt;
     r = control ? simulate(*h.compiled, initial_states, o, *control) : simulate(*h.compiled, initial_states, o);
-    // at the order the compiled scene has (scene_order.hpp); a controlled run only with a law in C++, each coarse run
-    // under a fresh copy of it (a law in Python may keep state or draw noise that another run would not repeat)
-    if (estimate_error && !r.interrupted && (!control || shipped_law)) {
+    // at the order the compiled scene has (scene_order.hpp); a controlled run's coarse runs each under a fresh copy
+    // of its law, a law in Python's made now (it takes the GIL at its samples: not deferred)
+    if (unrepeated && !r.interrupted) {
+      estimate = no_estimate(r, scene_order(*h.compiled),
+                             "no estimate: the controller's law in Python is sampled by the run alone (declare it "
+                             "Controller(..., repeatable=True) to have the runs at 2 dt and 4 dt sample copies of it)");
+    } else if (estimate_error && !r.interrupted) {
       const std::string opaque = opaque_force(*h.compiled);
-      if (opaque.empty() && progress.is_none()) {
+      if (opaque.empty() && progress.is_none() && python_coarse.empty()) {
         balance = scene_run_balance(r, h, o.dt);
         if (closes_under_any_estimate(*balance, level.value_or(default_accuracy_level))) {
           deferred = LazyError(deferred_estimate(h.compiled, std::move(initial_states), o, pristine));  // their last use
         }
       }
       if (!deferred.pending()) {
+        std::size_t coarse_runs = 0;  // the 2h run's law, then the 4h run's
         const auto run = [&](SimulationOptions coarse) {
           coarse.estimate_records = true;  // what the estimate reads of it
           if (!control) return simulate(*h.compiled, initial_states, coarse);
+          if (!python_coarse.empty()) return simulate(*h.compiled, initial_states, coarse, python_coarse[coarse_runs++]);
           const Controller fresh = *pristine;
           return simulate(*h.compiled, initial_states, coarse, fresh);
         };

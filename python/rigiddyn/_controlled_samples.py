@@ -1,7 +1,7 @@
 """The samples of a Monte Carlo run under a digital controller (rigiddyn.monte_carlo's ``controller``): each
 sample is one rigiddyn.simulate of its drawn scene and states under its own copy of the controller, whose gyro
 noise draws from a seed of its own, a function of (seed, i) only; the records stacked as simulate_batch stacks
-them (arrays (N, n_records, ...)).
+them (arrays (N, n_records, ...)), and the samples' global error estimates as simulate_batch's GlobalError.
 """
 
 from __future__ import annotations
@@ -18,21 +18,32 @@ from .control import Controller
 _SEED_BOUND = 2**63  # a sample's controller seed is drawn in [0, 2^63)
 
 
+def stacked_error(errors: Sequence[Any]) -> Any:
+    """One GlobalError of N runs' estimates of equal length, as simulate_batch's: each array with a leading sample
+    axis (N, n_records, ...), the verdict a tuple per sample; sample i's values are errors[i]'s. It is built from
+    their pickle states (order, the seven arrays, verdict, reliable), the one way to make a GlobalError."""
+    states = [e.__getstate__() for e in errors]
+    arrays = [np.stack([s[k] for s in states]) for k in range(1, 8)]
+    stacked = _core.GlobalError.__new__(_core.GlobalError)
+    stacked.__setstate__((states[0][0], *arrays, tuple(s[8] for s in states), np.stack([s[9] for s in states])))
+    return stacked
+
+
 class StackedRuns:
     """The records of N scene runs of equal length, each field an array (N, n_records, ...) as a
-    BatchSceneResult's (`fields`: the names stacked); no global error estimate (error is None: the samples
-    run without one)."""
+    BatchSceneResult's (`fields`: the names stacked); error: their global error estimates `errors` (each run's
+    GlobalError) as one (stacked_error), or None where the runs have none (``simulate(..., error=False)``)."""
 
-    error = None
     t: np.ndarray  # (N, n_records) record times [s], as every field set by __init__
 
-    def __init__(self, runs: Sequence[Any], fields: Sequence[str]) -> None:
+    def __init__(self, runs: Sequence[Any], fields: Sequence[str], errors: Sequence[Any]) -> None:
         self.fields = tuple(f for f in fields if hasattr(runs[0], f))
         for f in self.fields:
             stacked = np.stack([np.asarray(getattr(r, f)) for r in runs])
             stacked.flags.writeable = False
             setattr(self, f, stacked)
         self.body_names = tuple(runs[0].body_names)
+        self.error = None if errors[0] is None else stacked_error(errors)
 
     def __repr__(self) -> str:
         return f"StackedRuns(n={len(self.t)}, records={self.t.shape[1]})"
@@ -50,13 +61,15 @@ def run_samples(models: Any, initial: Sequence[Any], dt: Any, steps: int, contro
                 progress: Callable[[int], Any] | None) -> StackedRuns:
     """Sample i run by rigiddyn.simulate (`models`: one Scene or CompiledScene for all, or a list of one per
     sample) under a copy of `controller` (its law deep-copied: a law's memory, as BDot's last sample, starts
-    afresh) with seed seeds[i]; progress(samples_done) after each."""
-    runs = []
+    afresh) with seed seeds[i], with simulate's `options` (`error` too: each sample's estimate is simulate's for
+    it, made right after its run); progress(samples_done) after each."""
+    runs, errors = [], []
     for i, states in enumerate(initial):
         model = models[i] if isinstance(models, list) else models
         own = Controller(controller.period, copy.deepcopy(controller.law), w_B_noise=controller.w_B_noise,
-                         seed=int(seeds[i]))
-        runs.append(_core.simulate(model, states, dt, steps, controller=own, error=False, **options))
+                         seed=int(seeds[i]), repeatable=controller.repeatable)
+        runs.append(_core.simulate(model, states, dt, steps, controller=own, **options))
+        errors.append(runs[-1].error)  # a run under a law in C++ makes its estimate on this first read
         if progress is not None:
             progress(i + 1)
-    return StackedRuns(runs, fields)
+    return StackedRuns(runs, fields, errors)

@@ -12012,8 +12012,10 @@ def simulate(model: Particle | PlanarBody | RigidBody | PivotedBody | PivotedPla
         called with the GIL at t0 + k controller.period, k = 0, 1, ... before the end of the run, with the state of every
         body there, and its actuator commands (gyrostat wheel torques, MagneticDipole dipoles, ScheduledLoads thrusts)
         are held until the next sample; the steps are split at the samples, as at switch times, so every method keeps
-        its order. result.error is None (the estimate would sample the law again); tolerance is refused. None (the
-        default): no controller.
+        its order. The estimate's runs at 2 dt and 4 dt each go under a copy of the controller as it was before the
+        run: a shipped law's, or a law in Python declared Controller(..., repeatable=True) (copy.deepcopy); an
+        undeclared law in Python is sampled by the run alone, and result.error has no values, its verdict saying
+        why. tolerance is refused. None (the default): no controller.
     
     Returns
     -------

@@ -164,6 +164,12 @@ class Controller:
     seed : int, keyword-only, optional
         Seed of the noise's generator (numpy.random.default_rng(seed)); a run draws from where the last one
         stopped, so give a fresh Controller (or the same seed) to repeat a run.
+    repeatable : bool, keyword-only, default False
+        Whether simulate's global error estimate may sample the law again: True, its two runs at 2 dt and 4 dt each go
+        under a ``copy.deepcopy`` of this controller made before the run (the law's own attributes and the noise
+        generator's state copied), so the law must keep its state in itself and have no effect outside it (no list
+        it appends to, no device it drives). False: a law in Python is sampled by the run alone, and result.error
+        gives no values, its verdict saying so. The shipped laws (BDot, PDAttitude) are always repeatable.
 
     The arguments are kept as the attributes of the same names (``period`` and ``w_B_noise`` as floats).
 
@@ -230,7 +236,7 @@ class Controller:
     """
 
     def __init__(self, period: float, law: Callable[[SampledState], Mapping[Any, Any]], *, w_B_noise: float = 0.0,
-                 seed: int | None = None) -> None:
+                 seed: int | None = None, repeatable: bool = False) -> None:
         self.period = _positive(period, "period", "[s]")
         if not callable(law):
             raise TypeError(f"law: expected a callable law(state) -> dict of commands, got {law!r}")
@@ -245,9 +251,13 @@ class Controller:
             raise ValueError(f"seed: expected None or an int >= 0, got {seed!r}")
         self.seed = None if seed is None else int(seed)
         self._rng = np.random.default_rng(seed)
+        if not isinstance(repeatable, (bool, np.bool_)):
+            raise TypeError(f"repeatable: expected True or False, got {repeatable!r}")
+        self.repeatable = bool(repeatable)
 
     def __repr__(self) -> str:
-        return f"Controller(period={self.period!r}, law={self.law!r}, w_B_noise={self.w_B_noise!r})"
+        return (f"Controller(period={self.period!r}, law={self.law!r}, w_B_noise={self.w_B_noise!r}, "
+                f"repeatable={self.repeatable!r})")
 
     def _sample(self, t: float, p_W: np.ndarray, q_WB: np.ndarray, v_W: np.ndarray, w_B: np.ndarray,
                 wheel_speed: np.ndarray, joint_q: np.ndarray, joint_v: np.ndarray

@@ -84,8 +84,9 @@ _KEYS_SHOWN = 40  # dispersible keys an error about an unknown key lists
 # sample with four keys dispersed (an inertia among them) and 0.3 kB a particle's state, rounded up
 _SCENE_RECORD_DOUBLES = (10, 20, 2)
 _FRAME_TERMS = 4
-# the error estimate's values per record beyond its coarse runs: 7 float64 (3 more per extra body of a scene), a
-# verdict (a 32-byte std::string, then a reference and a bool in Python): at most 16 float64s' worth
+# the error estimate's values per record beyond its coarse runs: 7 float64 and a verdict (a 32-byte std::string, then
+# a reference and a bool in Python), at most 16 float64s' worth (a scene's 4 more per extra body are within what its
+# coarse runs are counted for: 20 values per body, in at least a quarter of the records each)
 _ERROR_DOUBLES = 16
 _SAMPLE_BYTES = 2048
 _STATE_BYTES = 512
@@ -831,8 +832,8 @@ def _check_memory(n: int, steps: int, record_every: int, model: Any, error: bool
     """ValueError naming n, before any draw, when N samples would not fit in the available memory: each
     sample's records (as simulate_batch counts them: step 0, every record_every-th step and the last;
     _SCENE_RECORD_DOUBLES of a scene per record, a body's as its one-body scene's with gravity and loads; with
-    the error estimate its two coarse runs, at most as many records each, and _ERROR_DOUBLES per record of the
-    estimate) and what drawing it holds (_SAMPLE_BYTES, and a state object per body of a scene, _STATE_BYTES)."""
+    the error estimate its two coarse runs, at most as many values a record and floor(steps / m) + 1 records each
+    (m = lcm(record_every, 4)), and _ERROR_DOUBLES per record of the estimate) and what drawing it holds (_SAMPLE_BYTES, and a state object per body of a scene, _STATE_BYTES)."""
     records = 1 + steps // record_every + (1 if steps % record_every else 0)
     if isinstance(model, _core.Scene):
         nb = len(model.bodies)
@@ -842,9 +843,10 @@ def _check_memory(n: int, steps: int, record_every: int, model: Any, error: bool
     else:
         per_record = _SCENE_RECORD_DOUBLES[0] + _SCENE_RECORD_DOUBLES[1] + 2 * _SCENE_RECORD_DOUBLES[2]
         per_sample = _SAMPLE_BYTES
+    doubles = records * per_record
     if error:
-        per_record = 3 * per_record + _ERROR_DOUBLES
-    per_sample += records * per_record * 8
+        doubles += 2 * (steps // math.lcm(record_every, 4) + 1) * per_record + records * _ERROR_DOUBLES
+    per_sample += doubles * 8
     available = available_bytes()
     available = sys.maxsize if available is None else available  # unknown: only what no array can hold
     if n * per_sample > available:
@@ -854,9 +856,9 @@ def _check_memory(n: int, steps: int, record_every: int, model: Any, error: bool
                          "fewer samples, or a larger record_every)")
 
 
-def _check_controlled(model: Any, controller: Any, client: Any, threads: Any, error: bool) -> None:
-    """What monte_carlo's controller needs: a Controller on a scene, run here (no client, no threads), without
-    the error estimate (the samples run one by one through simulate, without one)."""
+def _check_controlled(model: Any, controller: Any, client: Any, threads: Any) -> None:
+    """What monte_carlo's controller needs: a Controller on a scene, run here (no client, no threads: the samples
+    run one by one through simulate)."""
     from .control import Controller
 
     if not isinstance(controller, Controller):
@@ -868,9 +870,6 @@ def _check_controlled(model: Any, controller: Any, client: Any, threads: Any, er
         if value is not None:
             raise ValueError(f"{name}: expected None with a controller (its samples run one after the other through "
                              f"simulate), got {value!r}")
-    if error:
-        raise ValueError("error: expected False with a controller (its samples run without a global error estimate), "
-                         "got True")
 
 
 def _sample_bar(n: int, enabled: bool) -> tuple[Callable[[int], None] | None, Callable[[], None] | None]:
@@ -953,15 +952,15 @@ def monte_carlo(model: Any, nominal_state: Any, n: int, *, seed: Any,
     error : bool, default True
         Estimate the global error of every record of every sample (``result.error``, a GlobalError with a
         leading sample axis: ``simulate_batch``'s `error`, +0.75x the cost when it is first read); its quantities
-        are fields too (``result.statistics("error.attitude")``). False: none. Not with a controller (its samples
-        run without one): give False.
+        are fields too (``result.statistics("error.attitude")``). False: none. Under a controller, each sample's
+        estimate is the one ``simulate`` gives for it, made right after its run (+0.75x its cost then).
     controller : Controller, keyword-only, optional
         A digital controller (rigiddyn.Controller) of a scene's runs: each sample runs under its own copy (its law
         deep-copied), whose gyro noise draws from the seed ``result.inputs["controller.seed"][i]`` (N,), itself
         drawn from ``SeedSequence(seed)`` and a function of (seed, i) only (the sample's dispersions are drawn as
         without it). The samples then run one after the other through ``simulate`` (the law takes the GIL at its
-        samples): ``result.batch`` holds their stacked records, as a BatchSceneResult's. None (the default): no
-        controller. Not with a RigidBody model, `client`, `threads` or `error`.
+        samples): ``result.batch`` holds their stacked records and estimates, as a BatchSceneResult's. None (the
+        default): no controller. Not with a RigidBody model, `client` or `threads`.
 
     Returns
     -------
@@ -999,15 +998,15 @@ def monte_carlo(model: Any, nominal_state: Any, n: int, *, seed: Any,
     True
 
     A scene under a controller (a body driven to rest by a thruster law from dispersed rates), each sample with
-    its own gyro-noise seed:
+    its own gyro-noise seed; the law keeps no state, so the error estimate may sample copies of it (repeatable):
 
     >>> scene = rd.Scene([rd.RigidBody(1.0, [1.0, 1.0, 1.0])], elements=[rd.ScheduledLoads(body=0, loads=[])])
     >>> law = lambda state: {0: tuple(-2.0 * state.v_W[0])}
     >>> runs = rd.monte_carlo(scene, [rd.RigidBodyState(v_W=[1.0, 0.0, 0.0])], 4, seed=2, dt=0.01, steps=50,
-    ...                       dispersions={"body0.v_W": rd.dispersion.Normal(std=0.1)}, error=False,
-    ...                       controller=rd.Controller(0.1, law, w_B_noise=1e-3))
-    >>> runs.values("v_W").shape, runs.inputs["controller.seed"].shape
-    ((4, 51, 1, 3), (4,))
+    ...                       dispersions={"body0.v_W": rd.dispersion.Normal(std=0.1)},
+    ...                       controller=rd.Controller(0.1, law, w_B_noise=1e-3, repeatable=True))
+    >>> runs.values("v_W").shape, runs.inputs["controller.seed"].shape, runs.error.position.shape
+    ((4, 51, 1, 3), (4,), (4, 51, 1))
     """
     scene = model.scene if isinstance(model, _core.CompiledScene) else model
     if not isinstance(model, (_core.RigidBody, _core.Scene, _core.CompiledScene)):
@@ -1029,7 +1028,7 @@ def monte_carlo(model: Any, nominal_state: Any, n: int, *, seed: Any,
         raise ValueError(f"threads: expected None with client= (the workers' threads are the cluster's), "
                          f"got {threads!r}")
     if controller is not None:
-        _check_controlled(model, controller, client, threads, bool(error))
+        _check_controlled(model, controller, client, threads)
     # checked before any draw, as the memory below
     steps = _core._steps_of(None if steps is None else _count(steps, "steps", 0), duration, dt)
     _check_memory(int(n), steps, _count(record_every, "record_every", 1), scene, bool(error))
@@ -1055,7 +1054,7 @@ def monte_carlo(model: Any, nominal_state: Any, n: int, *, seed: Any,
         seeds_of_laws = controller_seeds(seeds, int(n))
         update = progress if callable(progress) else None
         batch = run_samples(batch_model, initial, dt, steps, controller, seeds_of_laws,
-                            dict(options, method=method, t0=t0), SCENE_RECORD_FIELDS, update)
+                            dict(options, method=method, t0=t0, error=bool(error)), SCENE_RECORD_FIELDS, update)
         return MonteCarloResult(batch, {**inputs, "controller.seed": seeds_of_laws}, redraws, seeds.entropy,
                                 dispersions)
     options.update(method=method, t0=t0, error=bool(error))

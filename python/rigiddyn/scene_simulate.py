@@ -5,7 +5,7 @@ name, rigiddyn.scene_file.example_scenes()) to run_scene_simulate, a problem fil
 simulate_command.run_simulate. The scene's [run] gives the defaults
 of --method, --dt, --duration and --record-every; the command-line options override them. A scene with a
 [controller] runs under it (rigiddyn.Controller: its law sampled every period, run.json's "controller" records it;
-no global error estimate, and no --tolerance).
+no --tolerance).
 
 Writes to --out (default: simulate-<name>, as for a problem): trajectory.csv, trajectory.npz,
 trajectory.parquet (when pyarrow is installed), run.json and trajectory.png (unless --no-plot). The

@@ -523,17 +523,19 @@ def test_the_memory_estimate_refuses_a_run_before_any_draw(monkeypatch):
     monkeypatch.setattr(mc, "available_bytes", lambda: 2**34)
     with pytest.raises(ValueError) as e:
         mc.monte_carlo(SATELLITE, TUMBLE, 10**7, seed=1, dt=0.01, steps=10**4, dispersions={"w_B": Normal(std=0.1)})
-    # 10^4 steps: 10001 records, each with the error estimate's two coarse runs and its own values
+    # 10^4 steps: 10001 records, the error estimate's own values at each; its two coarse runs record every 4th step
     body_record = mc._SCENE_RECORD_DOUBLES[0] + mc._SCENE_RECORD_DOUBLES[1] + 2 * mc._SCENE_RECORD_DOUBLES[2]
-    per_sample = mc._SAMPLE_BYTES + 10001 * (3 * body_record + mc._ERROR_DOUBLES) * 8
+    per_sample = mc._SAMPLE_BYTES + (10001 * (body_record + mc._ERROR_DOUBLES) + 2 * 2501 * body_record) * 8
     assert str(e.value) == (
         f"n: expected a sample count whose runs fit in the available memory (16 GiB: at most {2**34 // per_sample} "
         f"samples of 10001 records, {mc.format_bytes(per_sample)} each), got 10000000 (an estimated "
         f"{mc.format_bytes(10**7 * per_sample)}; fewer samples, or a larger record_every)")
     scene, nominal = sat_and_tip()
-    # 2 bodies, 1 element; 10 steps recorded every 4th: steps 0, 4, 8 and the last, 10
-    # (with the error estimate: its two coarse runs and its own values per record)
-    per_sample = mc._SAMPLE_BYTES + 2 * mc._STATE_BYTES + 4 * (3 * (10 + 20 * 2 + 2 * 1) + mc._ERROR_DOUBLES) * 8
+    # 2 bodies, 1 element; 10 steps recorded every 4th: steps 0, 4, 8 and the last, 10 (with the error estimate its
+    # own values per record, and its two coarse runs recording steps 0, 4 and 8)
+    scene_record = 10 + 20 * 2 + 2 * 1
+    per_sample = (mc._SAMPLE_BYTES + 2 * mc._STATE_BYTES
+                  + (4 * (scene_record + mc._ERROR_DOUBLES) + 2 * 3 * scene_record) * 8)
     with pytest.raises(ValueError, match=rf"at most {2**34 // per_sample} samples of 4 records"):
         mc.monte_carlo(scene, nominal, 10**9, seed=1, dt=0.01, steps=10, record_every=4)
 

@@ -191,6 +191,20 @@ def test_a_tolerance_below_the_round_off_raises_without_refining():
     assert e.error <= 8 * np.finfo(float).eps * size * e.choice.steps  # the round-off bound (8 eps |p_W| per step)
 
 
+def test_a_certificate_is_not_refused_for_the_round_off_of_a_balance_near_zero():
+    # the shipped pendulum, released at rest: its energy balance B = T - W is 0 for the exact motion while T and W
+    # swing by ~5 J, so B rounds off at the size of T and W (8 eps (|T| + |V| + |W|) per step), not of B; to 1e-12 rad
+    # every record's attitude error is at the round-off level (8 eps rad per step): the call raises at once with the
+    # bound, where the balance's round-off at record 36 (1.3e-15 J) refused its certificate and it refined twice
+    pendulum = rd.load_scene("pendulum")
+    with pytest.raises(rd.ToleranceError, match=r"is the round-off bound of \d+ steps") as info:
+        rd.simulate(pendulum.scene, pendulum.initial, duration=pendulum.run.duration, tolerance=1e-12,
+                    measure="attitude")
+    e = info.value
+    assert e.choice.refinements == 0 and "energy balance" not in str(e)
+    assert e.error <= 8 * np.finfo(float).eps * e.choice.steps  # the round-off bound of an angle (8 eps per step)
+
+
 def test_a_python_force_is_refused():
     couple = rd.PythonForce(lambda t, body, p_W, q_WB, v_W, w_B: ((0.0, 0.0, 0.0), (0.0, 0.0, 0.01)))
     scene = rd.Scene([rd.RigidBody(1.0, [1.0, 2.0, 3.0])], elements=[couple])

@@ -348,7 +348,8 @@ RIGIDDYN_ALWAYS_INLINE void estimate_common(const ErrorRecords& h, const ErrorRe
     };
   };
   const bool with_energy = estimates(only, ErrorMeasure::energy);
-  const double energy_size = with_energy ? energy_size_of(h, i) : 0.0;
+  const bool with_balance = !h.balance.empty();
+  const double energy_size = with_energy || with_balance ? energy_size_of(h, i) : 0.0;
   if (with_energy) {
     const Differences energy = differences(h, h2, h4, i, j, energy_size, steps, scalar(&ErrorRecords::energy));
     // a run whose step is beyond the stability limit gains energy exponentially: the run at 4h (the first to go)
@@ -359,10 +360,10 @@ RIGIDDYN_ALWAYS_INLINE void estimate_common(const ErrorRecords& h, const ErrorRe
     }
     out.energy[j] = record.invariant(energy, "energy");
   }
-  // the balance T − W rounds off at the size of its terms: |T| + |V| and the work |W| = |T − B| done so far
-  if (!h.balance.empty()) {
-    const double T = with_energy ? h.energy_scale[i] : 0.0;
-    check_balance(record, h, h2, h4, i, j, energy_size + std::abs(T - h.balance[i]), steps);
+  // the balance B = T − W rounds off at the size of its terms, not of B (released at rest, B = T(t0) = 0): |T| + |V|
+  // and the work |W| = |T − B| done so far
+  if (with_balance) {
+    check_balance(record, h, h2, h4, i, j, energy_size + std::abs(h.energy_scale[i] - h.balance[i]), steps);
   }
   if (estimates(only, ErrorMeasure::angular_momentum)) {
     const auto momentum = [](const ErrorRecords& x, std::size_t a, const ErrorRecords& y, std::size_t c) {

@@ -122,8 +122,7 @@ SimulationOptions coarse_options(const SimulationOptions& answer, int factor);
 // order `order` >= 1, `answer` the options of the run at h.
 // `opaque` names a force the core cannot see into ("" for none): then no record is called reliable.
 // `only`, where given, restricts the estimate to that quantity: the others are neither estimated (NaN) nor checked,
-// as if the three runs agreed on them, and the energy balance's check then takes |T − W| alone as the size of its
-// round-off (the energy's own |T| + |V| where `only` is the energy).
+// as if the three runs agreed on them (the energy balance's check stays: it tests the run, not a quantity).
 GlobalErrorEstimate estimate_global_error(const ErrorRecords& h, const ErrorRecords& h2, const ErrorRecords& h4,
                                           const SimulationOptions& answer, int order, const std::string& opaque = {},
                                           std::optional<ErrorMeasure> only = std::nullopt);
