@@ -7,7 +7,9 @@ them (arrays (N, n_records, ...)), and the samples' global error estimates as si
 from __future__ import annotations
 
 import copy
+import threading
 from collections.abc import Callable, Sequence
+from concurrent.futures import ThreadPoolExecutor, as_completed
 from typing import Any
 
 import numpy as np
@@ -56,20 +58,54 @@ def controller_seeds(seeds: np.random.SeedSequence, n: int) -> np.ndarray:
                      .integers(_SEED_BOUND) for i in range(n)], dtype=np.int64)
 
 
+class _Stopped(Exception):
+    """A sample stopped because another failed (or the call was interrupted)."""
+
+
 def run_samples(models: Any, initial: Sequence[Any], dt: Any, steps: int, controller: Controller,
                 seeds: np.ndarray, options: dict[str, Any], fields: Sequence[str],
-                progress: Callable[[int], Any] | None) -> StackedRuns:
+                progress: Callable[[int], Any] | None, threads: int = 1) -> StackedRuns:
     """Sample i run by rigiddyn.simulate (`models`: one Scene or CompiledScene for all, or a list of one per
     sample) under a copy of `controller` (its law deep-copied: a law's memory, as BDot's last sample, starts
     afresh) with seed seeds[i], with simulate's `options` (`error` too: each sample's estimate is simulate's for
-    it, made right after its run); progress(samples_done) after each."""
-    runs, errors = [], []
-    for i, states in enumerate(initial):
+    it, made right after its run); progress(samples_done) from the calling thread after each.
+
+    `threads` samples run at once (each simulate releases the GIL while it steps: a law in C++ runs in parallel, a
+    law in Python takes the GIL at its samples, from that many threads). The samples are independent, so the result
+    is the same, bit for bit, whatever `threads`. An exception a sample raises (or Ctrl-C) stops the others at their
+    next progress check (about every 0.05 s) and propagates."""
+
+    def sample(i: int, check: Callable[[int], Any] | None) -> tuple[Any, Any]:
         model = models[i] if isinstance(models, list) else models
         own = Controller(controller.period, copy.deepcopy(controller.law), w_B_noise=controller.w_B_noise,
                          seed=int(seeds[i]), repeatable=controller.repeatable)
-        runs.append(_core.simulate(model, states, dt, steps, controller=own, **options))
-        errors.append(runs[-1].error)  # a run under a law in C++ makes its estimate on this first read
-        if progress is not None:
-            progress(i + 1)
-    return StackedRuns(runs, fields, errors)
+        run = _core.simulate(model, initial[i], dt, steps, controller=own, progress=check, **options)
+        return run, run.error  # a run under a law in C++ makes its estimate on this first read
+
+    n = len(initial)
+    done: list[Any] = [None] * n  # (run, its estimate) of each sample
+    if threads == 1:
+        for i in range(n):
+            done[i] = sample(i, None)
+            if progress is not None:
+                progress(i + 1)
+    else:
+        stop = threading.Event()
+
+        def check(steps_done: int) -> None:
+            if stop.is_set():
+                raise _Stopped
+
+        pool = ThreadPoolExecutor(min(threads, n))
+        futures = {pool.submit(sample, i, check): i for i in range(n)}
+        try:
+            for count, future in enumerate(as_completed(futures), 1):
+                done[futures[future]] = future.result()
+                if progress is not None:
+                    progress(count)
+        except BaseException:
+            stop.set()
+            pool.shutdown(wait=True, cancel_futures=True)
+            raise
+        pool.shutdown()
+    return StackedRuns([run for run, _ in done], fields, [error for _, error in done])

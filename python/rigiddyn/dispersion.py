@@ -856,9 +856,9 @@ def _check_memory(n: int, steps: int, record_every: int, model: Any, error: bool
                          "fewer samples, or a larger record_every)")
 
 
-def _check_controlled(model: Any, controller: Any, client: Any, threads: Any) -> None:
-    """What monte_carlo's controller needs: a Controller on a scene, run here (no client, no threads: the samples
-    run one by one through simulate)."""
+def _check_controlled(model: Any, controller: Any, client: Any) -> None:
+    """What monte_carlo's controller needs: a Controller on a scene, run here (no client: the samples run through
+    simulate)."""
     from .control import Controller
 
     if not isinstance(controller, Controller):
@@ -866,10 +866,9 @@ def _check_controlled(model: Any, controller: Any, client: Any, threads: Any) ->
     if isinstance(model, _core.RigidBody):
         raise ValueError("controller: expected None for a RigidBody model (a controller drives a Scene's actuators), "
                          f"got {controller!r}")
-    for name, value in (("client", client), ("threads", threads)):
-        if value is not None:
-            raise ValueError(f"{name}: expected None with a controller (its samples run one after the other through "
-                             f"simulate), got {value!r}")
+    if client is not None:
+        raise ValueError(f"client: expected None with a controller (its samples run on this machine through "
+                         f"simulate), got {client!r}")
 
 
 def _sample_bar(n: int, enabled: bool) -> tuple[Callable[[int], None] | None, Callable[[], None] | None]:
@@ -940,7 +939,9 @@ def monte_carlo(model: Any, nominal_state: Any, n: int, *, seed: Any,
         As ``simulate``, common to every sample: record every k-th step; the nominal load schedule; gravity
         (None/False: none, True: (0, 0, -9.81) m/s², or a 3-vector in W [m/s²]); the initial time [s].
     threads : int, optional
-        Threads of the local run (None: all cores); None with `client`.
+        Threads of the local run (None: all cores); None with `client`. Under a controller, how many samples run
+        at once (None: one, the samples one after the other): the same result, bit for bit; a law in C++ then runs
+        in parallel, a law in Python is called from that many threads (each sample under its own copy).
     client : dask.distributed.Client or str, optional
         None: run on this machine with ``simulate_batch``; a Client or a scheduler address: run through
         ``rigiddyn.distributed.simulate_batch``.
@@ -960,7 +961,7 @@ def monte_carlo(model: Any, nominal_state: Any, n: int, *, seed: Any,
         drawn from ``SeedSequence(seed)`` and a function of (seed, i) only (the sample's dispersions are drawn as
         without it). The samples then run one after the other through ``simulate`` (the law takes the GIL at its
         samples): ``result.batch`` holds their stacked records and estimates, as a BatchSceneResult's. None (the
-        default): no controller. Not with a RigidBody model, `client` or `threads`.
+        default): no controller. Not with a RigidBody model or `client`.
 
     Returns
     -------
@@ -1028,7 +1029,8 @@ def monte_carlo(model: Any, nominal_state: Any, n: int, *, seed: Any,
         raise ValueError(f"threads: expected None with client= (the workers' threads are the cluster's), "
                          f"got {threads!r}")
     if controller is not None:
-        _check_controlled(model, controller, client, threads)
+        _check_controlled(model, controller, client)
+        samples_at_once = 1 if threads is None else _count(threads, "threads", 1)
     # checked before any draw, as the memory below
     steps = _core._steps_of(None if steps is None else _count(steps, "steps", 0), duration, dt)
     _check_memory(int(n), steps, _count(record_every, "record_every", 1), scene, bool(error))
@@ -1052,9 +1054,14 @@ def monte_carlo(model: Any, nominal_state: Any, n: int, *, seed: Any,
             method = model.method  # also when the samples run rebuilt scenes
     if controller is not None:
         seeds_of_laws = controller_seeds(seeds, int(n))
-        update = progress if callable(progress) else None
-        batch = run_samples(batch_model, initial, dt, steps, controller, seeds_of_laws,
-                            dict(options, method=method, t0=t0, error=bool(error)), SCENE_RECORD_FIELDS, update)
+        update, close = (progress, None) if callable(progress) else _sample_bar(int(n), bool(progress))
+        try:
+            batch = run_samples(batch_model, initial, dt, steps, controller, seeds_of_laws,
+                                dict(options, method=method, t0=t0, error=bool(error)), SCENE_RECORD_FIELDS, update,
+                                samples_at_once)
+        finally:
+            if close is not None:
+                close()
         return MonteCarloResult(batch, {**inputs, "controller.seed": seeds_of_laws}, redraws, seeds.entropy,
                                 dispersions)
     options.update(method=method, t0=t0, error=bool(error))

@@ -855,11 +855,57 @@ def test_monte_carlo_under_a_shipped_law_estimates_each_sample_as_simulate_does(
         assert _same_estimate(_sample_error(mc.error, i), one.error)
 
 
+@pytest.mark.parametrize("shipped", [True, False])
+def test_monte_carlo_under_a_controller_on_threads_is_the_same_to_the_bit(shipped):
+    """Samples under a controller run `threads` at once (a law in C++ in parallel, one in Python taking the GIL at its
+    samples): the records and the estimates are those of the samples one after the other, bit for bit; progress counts
+    every sample from the calling thread."""
+    if shipped:
+        scene_file = rd.load_scene("cubesat_detumbling")
+        scene, nominal, controller = scene_file.scene, scene_file.initial, scene_file.run.controller
+        run = dict(seed=4, dt=scene_file.run.dt, steps=80, record_every=4,
+                   dispersions={"cubesat.w_B": rd.dispersion.Normal(std=1e-2)})
+    else:
+        scene, noisy = noisy_thrust_scene()
+        nominal = [rd.RigidBodyState()]
+        controller = rd.Controller(noisy.period, noisy.law, w_B_noise=noisy.w_B_noise, repeatable=True)
+        run = dict(seed=4, dt=0.05, steps=40, record_every=4, dispersions={"sat.v_W": rd.dispersion.Normal(std=1.0)})
+    one_by_one = rd.monte_carlo(scene, nominal, 5, controller=controller, **run)
+    counts = []
+    at_once = rd.monte_carlo(scene, nominal, 5, controller=controller, threads=3, progress=counts.append, **run)
+    assert counts == [1, 2, 3, 4, 5]
+    for name in ("t", "p_W", "q_WB", "v_W", "w_B", "total_energy", "work"):
+        np.testing.assert_array_equal(at_once.values(name), one_by_one.values(name))
+    assert _same_estimate(at_once.error, one_by_one.error)
+
+
+def test_a_sample_that_fails_on_threads_stops_the_others():
+    """A law that raises in one sample propagates its exception, with the sample time, and the call returns."""
+
+    class FailsLate:
+        def __init__(self):
+            self.calls = 0
+
+        def __call__(self, state):
+            self.calls += 1
+            if state.v_W[0, 0] > 0.0 and self.calls > 3:
+                raise RuntimeError("thruster fault")
+            return {0: (0.0, 0.0, 0.0)}
+
+    scene, _ = noisy_thrust_scene()
+    dispersions = {"sat.v_W": rd.dispersion.Normal(std=1.0)}
+    with pytest.raises(RuntimeError, match="thruster fault"):
+        rd.monte_carlo(scene, [rd.RigidBodyState()], 6, seed=1, dt=0.01, steps=2000, dispersions=dispersions,
+                       controller=rd.Controller(0.1, FailsLate()), threads=2, error=False)
+
+
 def test_monte_carlo_refuses_a_controller_it_cannot_run():
     scene, controller = noisy_thrust_scene()
     run = dict(seed=1, dt=0.1, steps=2, controller=controller)
-    with pytest.raises(ValueError, match=r"threads: expected None with a controller"):
-        rd.monte_carlo(scene, [rd.RigidBodyState()], 2, threads=2, error=False, **run)
+    with pytest.raises(ValueError, match=r"client: expected None with a controller"):
+        rd.monte_carlo(scene, [rd.RigidBodyState()], 2, client="tcp://localhost:1", error=False, **run)
+    with pytest.raises(ValueError, match=r"^threads: expected an integer >= 1, got 0$"):
+        rd.monte_carlo(scene, [rd.RigidBodyState()], 2, threads=0, **run)
     with pytest.raises(ValueError, match=r"controller: expected None for a RigidBody model"):
         rd.monte_carlo(rd.RigidBody(1.0, [1.0, 1.0, 1.0]), rd.RigidBodyState(), 2, error=False, **run)
     with pytest.raises(TypeError, match=r"controller: expected a rigiddyn.Controller or None"):
