@@ -794,6 +794,30 @@ def test_a_run_under_a_python_law_estimates_its_error(noise):
     assert rd.simulate(scene, start, dt, 8, controller=locked, error=False).error is None
 
 
+def test_a_period_off_the_grid_of_4_dt_is_named_where_the_order_check_fails():
+    """Samples off the 4 dt grid split the steps of the runs at 2 dt and 4 dt unlike those at dt: the verdicts that
+    fail the order check say so (a law in Python made now, a shipped law's estimate made on the first read); on the
+    grid, most records are reliable and none says so."""
+    scene = rd.Scene([rd.RigidBody(1.0, [1.0, 2.0, 3.0])], elements=[rd.ScheduledLoads(body=0, loads=[])])
+    start = [rd.RigidBodyState(v_W=[1.0, 0.0, 0.0], w_B=[0.1, 2.0, 0.1])]
+    cause = ("(the controller's samples every 0.1 s split the steps of the runs at 2 dt and 4 dt unlike those at dt: "
+             "a period that is a multiple of 4 dt keeps them alike)")
+
+    def run(period):
+        controller = rd.Controller(period, lambda state: {0: (1.0, 0.0, 0.0)}, repeatable=True)
+        return rd.simulate(scene, start, 0.02, 400, record_every=4, method="rk4", controller=controller).error
+
+    off, on = run(0.1), run(0.16)
+    failed = [v for v in off.verdict if v.startswith("not asymptotic")]
+    assert failed and all(v.endswith(cause) for v in failed)
+    assert on.reliable.mean() > 0.5 and not any("controller's samples" in v for v in on.verdict)
+    shipped = rd.load_scene("cubesat_detumbling")  # B-dot every 1 s, the runs at 2 dt and 4 dt step 1 s and 2 s
+    later = rd.simulate(shipped.scene, shipped.initial, 0.5, 80, record_every=4, controller=shipped.run.controller)
+    failed = [v for v in later.error.verdict if v.startswith("not asymptotic")]
+    # (the 4 dt run's 2 s steps split at every sample: it steps as the 2 dt run does, and the two agree exactly)
+    assert failed and all(v.endswith(cause.replace("0.1 s", "1 s")) for v in failed)
+
+
 def test_a_law_in_python_not_declared_repeatable_is_sampled_by_the_run_alone():
     """Without repeatable=True a law in Python is called at the run's samples only (one call per sample, in order) and
     result.error says why it has no values; with it, the runs at 2 dt and 4 dt sample copies of the law (their calls
