@@ -8,6 +8,12 @@ rigiddyn.control.PDAttitude in C++ (what simulate runs for it, without the GIL) 
 lambda), each at 100 and 10 samples per simulated second; and a PythonForce (a zero force, called at every stage
 of every step: four calls per RK4 step) for comparison. The fastest of three runs each.
 
+Then rigiddyn.monte_carlo of the shipped cubesat_detumbling under its B-dot law (in C++), 16 samples of 8 000
+steps (2 000 with --small) with their global error estimates: the samples one after the other, and threads=k at
+once on every core (k = default_thread_count()); its ratio line is the speed-up (the same result, bit for bit: a
+test holds it). Each sample's Python work (its law's copy, the call, its result) takes the GIL, so samples of a few
+milliseconds gain little or lose.
+
     python bench/python/bench_controller.py           # 100 000 steps
     python bench/python/bench_controller.py --small   # 5 000 steps (what ctest runs)
 """
@@ -47,6 +53,19 @@ def main():
     scene = rd.Scene([rd.RigidBody(100.0, [10.0, 12.0, 15.0])], elements=[force])
     t = run(scene, [rd.RigidBodyState()])
     print(f"PythonForce (four calls per step): {t / steps * 1e6:.2f} us/step")
+    monte_carlo_on_threads(2000 if args.small else 8000)
+
+
+def monte_carlo_on_threads(steps):
+    """monte_carlo under a shipped law, its samples one after the other and on every core."""
+    detumbling = rd.load_scene("cubesat_detumbling")
+    run = dict(seed=1, dt=detumbling.run.dt, steps=steps, record_every=20, controller=detumbling.run.controller,
+               dispersions={"cubesat.w_B": rd.dispersion.Normal(std=1e-2)})
+    threads = rd.default_thread_count()
+    one = best_time(lambda: rd.monte_carlo(detumbling.scene, detumbling.initial, 16, **run))
+    at_once = best_time(lambda: rd.monte_carlo(detumbling.scene, detumbling.initial, 16, threads=threads, **run))
+    print(f"monte_carlo, 16 samples under B-dot: one after the other {one * 1e3:.1f} ms, threads={threads} "
+          f"{at_once * 1e3:.1f} ms: ratio {one / at_once:.2f}")
 
 
 if __name__ == "__main__":
