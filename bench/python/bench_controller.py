@@ -12,7 +12,7 @@ Then rigiddyn.monte_carlo of the shipped cubesat_detumbling under its B-dot law 
 steps (2 000 with --small) with their global error estimates: the samples one after the other, and threads=k at
 once on every core (k = default_thread_count()); its ratio line is the speed-up (the same result, bit for bit: a
 test holds it). Each sample's Python work (its law's copy, the call, its result) takes the GIL, so samples of a few
-milliseconds gain little or lose.
+milliseconds gain less.
 
     python bench/python/bench_controller.py           # 100 000 steps
     python bench/python/bench_controller.py --small   # 5 000 steps (what ctest runs)

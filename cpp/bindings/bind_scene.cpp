@@ -1144,7 +1144,9 @@ py::object simulate_scene_py(py::handle model, py::handle initial, py::handle dt
   std::optional<RunBalance> balance;
   LazyError deferred;
   {
-    const GilReleasedForRun release(o.steps, h.scene.bodies.size());
+    // a controlled run releases the GIL however short: monte_carlo runs such samples from several threads at once
+    const GilReleasedForRun release(control ? std::numeric_limits<std::int64_t>::max() : o.steps,
+                                    h.scene.bodies.size());
     // a law in C++: its state before the run (a B-dot's last field), copied for each coarse run
     const std::optional<Controller> pristine = shipped_law ? control : std::nullopt;
     r = control ? simulate(*h.compiled, initial_states, o, *control) : simulate(*h.compiled, initial_states, o);

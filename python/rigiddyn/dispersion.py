@@ -942,8 +942,8 @@ def monte_carlo(model: Any, nominal_state: Any, n: int, *, seed: Any,
         Threads of the local run (None: all cores); None with `client`. Under a controller, how many samples run
         at once (None: one, the samples one after the other): the same result, bit for bit; a law in C++ then runs
         in parallel, a law in Python is called from that many threads (each sample under its own copy). Each
-        sample's Python work takes the GIL, so short samples gain little (16 samples of cubesat_detumbling on 2
-        cores: 1.9x faster with 8 000 steps each, 0.85x with 400).
+        sample's Python work takes the GIL, so short samples gain less (16 samples of cubesat_detumbling on 2
+        cores: 1.9x faster with 8 000 steps each, 1.1-1.2x with 400).
     client : dask.distributed.Client or str, optional
         None: run on this machine with ``simulate_batch``; a Client or a scheduler address: run through
         ``rigiddyn.distributed.simulate_batch``.
