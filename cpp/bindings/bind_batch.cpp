@@ -723,8 +723,8 @@ auto run_without_gil(SimulationOptions& o, py::handle progress, Run&& batch) {
 
 // ------------------------------------------------------------ the runs
 
-// Each sample's model as its estimate needs it: its scene's order for the method (scene_order.hpp; the loads are split at
-// their switches) and the force the estimate cannot see into.
+// Each sample's model as its estimate needs it: its scene's order for the method (scene_order.hpp; the loads are
+// split at their switches) and the force the estimate cannot see into.
 std::vector<SampleModel> sample_models(const std::vector<CompiledScene>& scenes) {
   std::vector<SampleModel> models;
   for (const CompiledScene& scene : scenes) models.push_back({scene_order(scene), opaque_force(scene)});

@@ -1004,18 +1004,6 @@ bool repeatable_law(py::handle controller, const Scene& scene) {
   return controller.attr("repeatable").cast<bool>() || shipped_law(controller.attr("law"), scene).has_value();
 }
 
-// An estimate that names why a run has none: every value NaN, every record's verdict `why`.
-GlobalErrorEstimate no_estimate(const SceneSimulation& r, int order, const std::string& why) {
-  GlobalErrorEstimate e;
-  e.order = order, e.bodies = r.body_count;
-  const std::size_t n = r.size(), nb = static_cast<std::size_t>(r.body_count);
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  for (auto* v : {&e.attitude, &e.angular_velocity, &e.position, &e.velocity}) v->assign(n * nb, nan);
-  for (auto* v : {&e.energy, &e.angular_momentum, &e.observed_order}) v->assign(n, nan);
-  e.verdict.assign(n, why);
-  return e;
-}
-
 // The controllers of the estimate's two coarse runs (global_error.hpp) of a run under `controller`, a
 // rigiddyn.Controller whose law is in Python or whose gyro noise is drawn in Python (repeatable_law): each a
 // copy.deepcopy of it as it is before the run (the law's attributes and the noise generator's state), so that each
@@ -1043,10 +1031,12 @@ std::vector<Controller> coarse_controllers(py::handle controller, const Scene& s
   return out;
 }
 
-// Appends the likely cause to every "not asymptotic" verdict of `e`, the estimate of a run of step dt under a controller
-// sampled every `period` [s] that is not a whole number of 4 dt: the samples split the steps of the runs at 2 dt and
-// 4 dt unlike those at dt, so that their errors are not the same multiple of dt^p (measured: a tumbling body under a
-// constant thrust sampled every 0.1 s by rk4 is reliable at 1 % of its records with dt = 0.02 s, 99.5 % with 0.005 s).
+// Appends the likely cause to every "not asymptotic" verdict of `e`, the estimate of a run of step dt under a
+// controller sampled every `period` [s] that is not a whole number of 4 dt: the samples split the steps of the runs at
+// 2 dt and 4 dt unlike those at dt, so that their errors are not the same multiple of dt^p, the premise of Richardson
+// extrapolation (global_error.hpp; measured: a tumbling body under a constant thrust sampled every 0.1 s by rk4 is
+// reliable at 1 % of its records with dt = 0.02 s, 99.5 % with 0.005 s). A whole number within 1e-9 relative: the
+// rounding of a period and a dt given in decimals.
 void name_off_grid_samples(GlobalErrorEstimate& e, double period, double dt) {
   const double steps_of_4dt = period / (4.0 * dt);
   if (std::abs(steps_of_4dt - std::round(steps_of_4dt)) <= 1e-9 * steps_of_4dt) return;
@@ -1136,9 +1126,10 @@ py::object simulate_scene_py(py::handle model, py::handle initial, py::handle dt
   if (monitor.needed()) o.monitor = [&monitor](std::int64_t steps_done) { return monitor(steps_done); };
   // a law in Python (or gyro noise): the coarse runs' copies of it, made before the run (released with the GIL held),
   // where it is repeatable; else no estimate (unrepeated)
+  const bool python_law = estimate_error && control && !shipped_law;
+  const bool unrepeated = python_law && !repeatable_law(controller, h.scene);
   std::vector<Controller> python_coarse;
-  const bool unrepeated = estimate_error && control && !shipped_law && !repeatable_law(controller, h.scene);
-  if (estimate_error && control && !shipped_law && !unrepeated) python_coarse = coarse_controllers(controller, h.scene);
+  if (python_law && !unrepeated) python_coarse = coarse_controllers(controller, h.scene);
   SceneSimulation r;
   std::optional<GlobalErrorEstimate> estimate;
   std::optional<RunBalance> balance;
@@ -1153,7 +1144,7 @@ py::object simulate_scene_py(py::handle model, py::handle initial, py::handle dt
     // at the order the compiled scene has (scene_order.hpp); a controlled run's coarse runs each under a fresh copy
     // of its law, a law in Python's made now (it takes the GIL at its samples: not deferred)
     if (unrepeated && !r.interrupted) {
-      estimate = no_estimate(r, scene_order(*h.compiled),
+      estimate = no_estimate(r.size(), r.body_count, scene_order(*h.compiled),
                              "no estimate: the controller's law in Python is sampled by the run alone (declare it "
                              "Controller(..., repeatable=True) to have the runs at 2 dt and 4 dt sample copies of it)");
     } else if (estimate_error && !r.interrupted) {
@@ -1161,7 +1152,8 @@ py::object simulate_scene_py(py::handle model, py::handle initial, py::handle dt
       if (opaque.empty() && progress.is_none() && python_coarse.empty()) {
         balance = scene_run_balance(r, h, o.dt);
         if (closes_under_any_estimate(*balance, level.value_or(default_accuracy_level))) {
-          deferred = LazyError(deferred_estimate(h.compiled, std::move(initial_states), o, pristine));  // their last use
+          // (the states' last use)
+          deferred = LazyError(deferred_estimate(h.compiled, std::move(initial_states), o, pristine));
         }
       }
       if (!deferred.pending()) {
@@ -1169,7 +1161,9 @@ py::object simulate_scene_py(py::handle model, py::handle initial, py::handle dt
         const auto run = [&](SimulationOptions coarse) {
           coarse.estimate_records = true;  // what the estimate reads of it
           if (!control) return simulate(*h.compiled, initial_states, coarse);
-          if (!python_coarse.empty()) return simulate(*h.compiled, initial_states, coarse, python_coarse[coarse_runs++]);
+          if (!python_coarse.empty()) {
+            return simulate(*h.compiled, initial_states, coarse, python_coarse[coarse_runs++]);
+          }
           const Controller fresh = *pristine;
           return simulate(*h.compiled, initial_states, coarse, fresh);
         };

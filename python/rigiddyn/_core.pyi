@@ -11940,8 +11940,8 @@ def simulate(model: Particle | PlanarBody | RigidBody | PivotedBody | PivotedPla
     
     Runs `steps` fixed steps of `dt` with `method` (see methods()) from `initial` at time t0, in C++ with the GIL
     released (a run of fewer than 512 steps times bodies keeps it, unless a controller drives it: taking it back would
-    cost more than such a run, and could wait for another thread), and records every `record_every`-th step plus the first and the last (records at
-    t0 + i dt). The loads are a piecewise-constant schedule: a step that crosses a switch time (a t_start or t_end) is
+    cost more than such a run, and could wait for another thread), and records every `record_every`-th step plus the
+    first and the last (records at t0 + i dt). The loads are a piecewise-constant schedule: a step that crosses a switch time (a t_start or t_end) is
     split there into sub-steps of the same method, so every method keeps its order.
     
     Parameters
@@ -11982,8 +11982,8 @@ def simulate(model: Particle | PlanarBody | RigidBody | PivotedBody | PivotedPla
         Estimate the global error of every record (result.error, a GlobalError) by two more runs of the method at 2 dt
         and 4 dt (+0.75x the cost; global Richardson extrapolation with an observed-order check, see GlobalError).
         A run without a PythonForce, a control law in Python or a progress callback, whose balances close whatever the
-        estimate says, makes it on the first read of result.error, from the records the result keeps (the same values, the GIL
-        released meanwhile), so that a run whose state alone is read pays for the run alone.
+        estimate says, makes it on the first read of result.error, from the records the result keeps (the same values,
+        the GIL released meanwhile), so that a run whose state alone is read pays for the run alone.
         False: no estimate (result.error is None), the cost of the run alone. True with tolerance.
     accuracy_level : float or None, keyword-only, default 1e-3
         The relative residual of an energy or momentum balance (result.balance) beyond which a run without a reliable

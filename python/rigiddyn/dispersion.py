@@ -833,7 +833,8 @@ def _check_memory(n: int, steps: int, record_every: int, model: Any, error: bool
     sample's records (as simulate_batch counts them: step 0, every record_every-th step and the last;
     _SCENE_RECORD_DOUBLES of a scene per record, a body's as its one-body scene's with gravity and loads; with
     the error estimate its two coarse runs, at most as many values a record and floor(steps / m) + 1 records each
-    (m = lcm(record_every, 4)), and _ERROR_DOUBLES per record of the estimate) and what drawing it holds (_SAMPLE_BYTES, and a state object per body of a scene, _STATE_BYTES)."""
+    (m = lcm(record_every, 4)), and _ERROR_DOUBLES per record of the estimate) and what drawing it holds
+    (_SAMPLE_BYTES, and a state object per body of a scene, _STATE_BYTES)."""
     records = 1 + steps // record_every + (1 if steps % record_every else 0)
     if isinstance(model, _core.Scene):
         nb = len(model.bodies)
@@ -961,9 +962,9 @@ def monte_carlo(model: Any, nominal_state: Any, n: int, *, seed: Any,
         A digital controller (rigiddyn.Controller) of a scene's runs: each sample runs under its own copy (its law
         deep-copied), whose gyro noise draws from the seed ``result.inputs["controller.seed"][i]`` (N,), itself
         drawn from ``SeedSequence(seed)`` and a function of (seed, i) only (the sample's dispersions are drawn as
-        without it). The samples then run one after the other through ``simulate`` (the law takes the GIL at its
-        samples): ``result.batch`` holds their stacked records and estimates, as a BatchSceneResult's. None (the
-        default): no controller. Not with a RigidBody model or `client`.
+        without it). The samples then run through ``simulate`` (a law in Python takes the GIL at its samples), one
+        after the other or `threads` at once: ``result.batch`` holds their stacked records and estimates, as a
+        BatchSceneResult's. None (the default): no controller. Not with a RigidBody model or `client`.
 
     Returns
     -------

@@ -22,3 +22,12 @@ def planar_and_rigid_runs(method, loads):
                                             v_W=[1.0, -0.5, 0], w_B=[0, 0, 2.0]),
                           0.005, 200, method=method, loads=loads, gravity=[0, -9.81, 0])
     return planar, spatial
+
+
+def same_estimate(a, b):
+    """Whether two GlobalErrors (or objects with their fields) are the same to the bit (NaN where the other has
+    NaN): order, verdicts, reliable flags and every array."""
+    names = ("attitude", "angular_velocity", "position", "velocity", "energy", "angular_momentum", "observed_order",
+             "reliable")
+    return (a.order == b.order and a.verdict == b.verdict
+            and all(np.array_equal(getattr(a, n), getattr(b, n), equal_nan=n != "reliable") for n in names))

@@ -21,6 +21,7 @@ import numpy as np
 import pytest
 
 import rigiddyn as rd
+from _helpers import same_estimate
 from rigiddyn.control import BDot, PDAttitude
 
 EPS = np.finfo(float).eps
@@ -734,15 +735,8 @@ def test_monte_carlo_under_a_controller_draws_each_runs_noise_seed_from_its_seed
     assert len(set(v_end.tolist())) == 4 and np.abs(v_end).min() > 0.0
 
 
-def _same_estimate(a, b):
-    """Whether two GlobalErrors are the same to the bit (NaN where the other has NaN)."""
-    names = ("attitude", "angular_velocity", "position", "velocity", "energy", "angular_momentum", "observed_order")
-    return (a.order == b.order and a.verdict == b.verdict and np.array_equal(a.reliable, b.reliable)
-            and all(np.array_equal(getattr(a, n), getattr(b, n), equal_nan=True) for n in names))
-
-
 def _sample_error(error, i):
-    """Sample i of a Monte Carlo's GlobalError (arrays (N, n, ...)): a SimpleNamespace of _same_estimate's fields."""
+    """Sample i of a Monte Carlo's GlobalError (arrays (N, n, ...)): a SimpleNamespace of same_estimate's fields."""
     names = ("attitude", "angular_velocity", "position", "velocity", "energy", "angular_momentum", "observed_order",
              "reliable")
     return SimpleNamespace(order=error.order, verdict=error.verdict[i], **{n: getattr(error, n)[i] for n in names})
@@ -855,11 +849,11 @@ def test_monte_carlo_under_a_python_law_estimates_each_sample_as_simulate_does()
         one = rd.simulate(scene, [rd.RigidBodyState(v_W=mc.inputs["sat.v_W"][i])], 0.05, 20,
                           controller=rd.Controller(0.1, controller.law, w_B_noise=0.01, seed=int(seeds[i]),
                                                    repeatable=True))
-        assert _same_estimate(_sample_error(mc.error, i), one.error)
+        assert same_estimate(_sample_error(mc.error, i), one.error)
     assert mc.error.reliable.any()
     assert "error.position" in mc.fields
     np.testing.assert_array_equal(mc.values("error.position"), mc.error.position)
-    assert _same_estimate(pickle.loads(pickle.dumps(mc)).error, mc.error)
+    assert same_estimate(pickle.loads(pickle.dumps(mc)).error, mc.error)
     assert rd.monte_carlo(scene, [rd.RigidBodyState()], 3, controller=controller, error=False, **run).error is None
 
 
@@ -876,7 +870,7 @@ def test_monte_carlo_under_a_shipped_law_estimates_each_sample_as_simulate_does(
         own = rd.Controller(controller.period, controller.law, w_B_noise=controller.w_B_noise,
                             seed=int(mc.inputs["controller.seed"][i]))
         one = rd.simulate(shipped.scene, states, shipped.run.dt, 200, record_every=4, controller=own)
-        assert _same_estimate(_sample_error(mc.error, i), one.error)
+        assert same_estimate(_sample_error(mc.error, i), one.error)
 
 
 @pytest.mark.parametrize("shipped", [True, False])
@@ -900,11 +894,12 @@ def test_monte_carlo_under_a_controller_on_threads_is_the_same_to_the_bit(shippe
     assert counts == [1, 2, 3, 4, 5]
     for name in ("t", "p_W", "q_WB", "v_W", "w_B", "total_energy", "work"):
         np.testing.assert_array_equal(at_once.values(name), one_by_one.values(name))
-    assert _same_estimate(at_once.error, one_by_one.error)
+    assert same_estimate(at_once.error, one_by_one.error)
 
 
-def test_a_sample_that_fails_on_threads_stops_the_others():
-    """A law that raises in one sample propagates its exception, with the sample time, and the call returns."""
+def test_a_sample_that_fails_on_threads_propagates_its_exception():
+    """A law that raises in one sample of a run on threads: the call raises that exception (the others are stopped
+    at their next progress check and those not started are cancelled) and returns."""
 
     class FailsLate:
         def __init__(self):

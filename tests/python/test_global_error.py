@@ -15,6 +15,7 @@ import numpy as np
 import pytest
 
 import rigiddyn as rd
+from _helpers import same_estimate
 
 # Effectivity window of a reliable estimate (the contract of GlobalError): the order check admits r within 1.5x of
 # 2^p, and the leading-term estimate d1 / (2^p - 1) is then within a factor 2 of the true error.
@@ -224,13 +225,6 @@ def test_a_verdict_names_the_observed_order_its_record_has():
     assert named > 100
 
 
-def _same_estimate(a, b):
-    """Whether two GlobalErrors are the same to the bit (NaN where the other has NaN)."""
-    names = ("attitude", "angular_velocity", "position", "velocity", "energy", "angular_momentum", "observed_order")
-    return (a.order == b.order and a.verdict == b.verdict
-            and all(np.array_equal(getattr(a, n), getattr(b, n), equal_nan=True) for n in names))
-
-
 @pytest.mark.parametrize("method", ["rk4", "splitting_dlm", "rkmk4"])
 @pytest.mark.parametrize("steps, record_every", [(3, 1), (10, 1), (64, 1), (65, 1), (2000, 1), (2000, 4), (2001, 7)])
 def test_an_estimate_made_on_first_read_is_the_one_made_at_once(method, steps, record_every):
@@ -242,14 +236,14 @@ def test_an_estimate_made_on_first_read_is_the_one_made_at_once(method, steps, r
     run = dict(dt=0.01, steps=steps, method=method, record_every=record_every)
     later = rd.simulate(body, state, **run)
     at_once = rd.simulate(body, state, **run, progress=lambda done: None)
-    assert _same_estimate(later.error, at_once.error)
-    assert _same_estimate(pickle.loads(pickle.dumps(later)).error, at_once.error)
+    assert same_estimate(later.error, at_once.error)
+    assert same_estimate(pickle.loads(pickle.dumps(later)).error, at_once.error)
     assert later.error is later.error  # made once
     read_first = rd.simulate(body, state, **run)
     assert np.array_equal(read_first.q_WB, at_once.q_WB) and np.array_equal(read_first.p_W, at_once.p_W)
-    assert _same_estimate(read_first.error, at_once.error)  # its columns read from the arrays made meanwhile
+    assert same_estimate(read_first.error, at_once.error)  # its columns read from the arrays made meanwhile
     scalar_first = rd.simulate(body, state, **run, scalar_first=True)  # its q_WB rows read as (w, x, y, z)
-    assert _same_estimate(scalar_first.error, at_once.error)
+    assert same_estimate(scalar_first.error, at_once.error)
 
 
 @pytest.mark.parametrize("steps", [40, 3000])
@@ -268,16 +262,16 @@ def test_a_scenes_estimate_made_on_first_read_is_the_one_made_at_once(steps):
     shipped = rd.load_scene("box_on_springs")
     later = rd.simulate(shipped.scene, shipped.initial, 0.001, steps=steps)
     at_once = rd.simulate(shipped.scene, shipped.initial, 0.001, steps=steps, progress=lambda done: None)
-    assert _same_estimate(later.error, at_once.error)
+    assert same_estimate(later.error, at_once.error)
     compiled = shipped.scene.compile("rk4")
     later = rd.simulate(compiled, shipped.initial, 0.001, steps=steps)
     del compiled  # the estimate keeps the compiled model it needs
-    assert _same_estimate(later.error, at_once.error)
+    assert same_estimate(later.error, at_once.error)
     read_first = rd.simulate(shipped.scene, shipped.initial, 0.001, steps=steps)
     for name in ("t", "p_W", "q_WB", "v_W", "w_B", "kinetic_energy", "total_energy", "angular_momentum_W",
                  "angular_momentum_O_W", "mass", "work", "mass_flow_energy", "motor_work"):
         getattr(read_first, name)  # the estimate then reads these arrays (the zeros of mass_flow_energy made)
-    assert _same_estimate(read_first.error, at_once.error)
+    assert same_estimate(read_first.error, at_once.error)
 
 
 @pytest.mark.parametrize("name", ["cubesat_pointing", "cubesat_detumbling"])
@@ -289,7 +283,7 @@ def test_a_controlled_runs_estimate_made_on_first_read_is_the_one_made_at_once(n
     later = rd.simulate(shipped.scene, shipped.initial, **run)
     at_once = rd.simulate(shipped.scene, shipped.initial, **run, progress=lambda done: None)
     rd.simulate(shipped.scene, shipped.initial, **run, error=False)  # the law run again meanwhile
-    assert _same_estimate(later.error, at_once.error)
+    assert same_estimate(later.error, at_once.error)
     assert later.error.reliable.any()
 
 

@@ -690,6 +690,14 @@ GlobalErrorEstimate estimate_global_error(const ErrorRecords& h, const ErrorReco
   return out;
 }
 
+GlobalErrorEstimate no_estimate(std::size_t n, std::int64_t bodies, int order, std::string_view why) {
+  GlobalErrorEstimate out;
+  out.order = order, out.bodies = bodies;
+  size_for_records(out, n, bodies);
+  out.verdict.assign(n, why);
+  return out;
+}
+
 GlobalErrorEstimate round_off_estimate(const ErrorRecords& h, const SimulationOptions& answer) {
   GlobalErrorEstimate out;
   out.order = 0, out.bodies = h.bodies;

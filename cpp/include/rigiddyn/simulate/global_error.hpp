@@ -37,6 +37,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -132,6 +133,10 @@ const std::vector<double>& values_of(const GlobalErrorEstimate& e, ErrorMeasure 
 
 // The round-off bound alone, for the method 'exact' (order 0).
 GlobalErrorEstimate round_off_estimate(const ErrorRecords& h, const SimulationOptions& answer);
+
+// No estimate, for the reason `why`: n records of nb bodies, every value NaN, every verdict `why` (a run whose
+// coarse runs cannot be made, e.g. under a control law that may not be sampled again).
+GlobalErrorEstimate no_estimate(std::size_t n, std::int64_t bodies, int order, std::string_view why);
 
 // The records of a run at 2h or 4h as the estimate reads them (error_records without what it reads of the answer
 // alone).
