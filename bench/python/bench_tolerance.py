@@ -10,7 +10,8 @@ on the problem (best of 3 runs of 4096 steps). Printed per row:
             that of the sweep's cheapest
   call/min  the wall time of the whole simulate(tolerance=) call (pilots, run, certificate, refinement) / the
             same plain run at the sweep's cheapest (method, steps)
-The shipped scenes (python/rigiddyn/scenes/*.toml, read with load_scene) were not used to tune the planner.
+The shipped scenes (python/rigiddyn/scenes/*.toml, read with load_scene) were not used to tune the planner; a scene
+with a [controller] runs under it everywhere (the run to the tolerance, the sweep and the references).
 `--small` runs two problems at one tolerance (ctest). The full table takes a few minutes up to the `cluster`, the
 last problem, whose sweep (1 000 bodies, each candidate against rk4 at 1/16 of its step) takes more than 40 minutes.
 """
@@ -55,7 +56,7 @@ class FreeBody:
     """A torque-free body against its closed form (TorqueFreeSolution)."""
 
     def __init__(self, name, inertia, w_B, duration):
-        self.name, self.duration, self.measure = name, duration, "attitude"
+        self.name, self.duration, self.measure, self.controller = name, duration, "attitude", None
         self.model = rd.RigidBody(1.0, inertia)
         self.initial = rd.RigidBodyState(w_B=w_B)
         self.solution = rd.TorqueFreeSolution(np.diag(inertia), [0, 0, 0, 1], w_B)
@@ -70,7 +71,7 @@ class Scene:
 
     def __init__(self, name, exact=None, measure=None, duration=None):
         self.scene, self.initial, run = rd.load_scene(name)
-        self.name, self.model, self.exact = name, self.scene, exact
+        self.name, self.model, self.exact, self.controller = name, self.scene, exact, run.controller
         self.duration = duration or run.duration
         bodies_turn = any(not isinstance(s, rd.ParticleState) for s in self.initial)
         self.measure = measure or ("attitude" if bodies_turn else "position")
@@ -83,7 +84,7 @@ class Scene:
         with warnings.catch_warnings():  # a reference of a sweep's step beyond the stability limit diverges
             warnings.simplefilter("ignore")
             fine = rd.simulate(self.model, self.initial, dt / 16, steps=16 * steps, record_every=16, method="rk4",
-                               error=False, accuracy_level=None)
+                               error=False, accuracy_level=None, controller=self.controller)
         return {"q_WB": fine.q_WB, "p_W": fine.p_W, "v_W": fine.v_W, "w_B": fine.w_B}
 
 
@@ -100,7 +101,8 @@ def methods_of(problem):
         try:
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore")
-                rd.simulate(problem.model, problem.initial, problem.duration / 4, steps=1, method=m, error=False)
+                rd.simulate(problem.model, problem.initial, problem.duration / 4, steps=1, method=m, error=False,
+                            controller=problem.controller)
         except ValueError:
             continue
         out.append(m)
@@ -114,7 +116,8 @@ def seconds_per_step(problem, method):
     for _ in range(3):
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
-            r = rd.simulate(problem.model, problem.initial, dt, steps=4096, method=method, record_every=16, error=False)
+            r = rd.simulate(problem.model, problem.initial, dt, steps=4096, method=method, record_every=16, error=False,
+                            controller=problem.controller)
         best = min(best, r.elapsed_seconds / 4096)
     return best
 
@@ -131,7 +134,8 @@ def sweep(problem, tolerance, methods, costs):
                 break
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore")
-                r = rd.simulate(problem.model, problem.initial, problem.duration / n, steps=n, method=m, error=False)
+                r = rd.simulate(problem.model, problem.initial, problem.duration / n, steps=n, method=m, error=False,
+                                controller=problem.controller)
             if r.diverged:
                 continue
             if measure_error(r, problem.reference(r), problem.measure) <= tolerance:
@@ -147,19 +151,20 @@ def plain_run_seconds(problem, method, steps):
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
             rd.simulate(problem.model, problem.initial, problem.duration / steps, steps=steps, method=method,
-                        error=False)
+                        error=False, controller=problem.controller)
     return best_time(run)
 
 
 def row(problem, tolerance, costs, methods):
     try:
         r = rd.simulate(problem.model, problem.initial, duration=problem.duration, tolerance=tolerance,
-                        measure=problem.measure)
+                        measure=problem.measure, controller=problem.controller)
     except rd.ToleranceError as e:
         print(f"{problem.name:28s} {tolerance:8.0e} raised: {e}")
         return None
     call = best_time(lambda: rd.simulate(problem.model, problem.initial, duration=problem.duration,
-                                         tolerance=tolerance, measure=problem.measure), repeats=2)
+                                         tolerance=tolerance, measure=problem.measure,
+                                         controller=problem.controller), repeats=2)
     c = r.choice
     true = measure_error(r, problem.reference(r), problem.measure)
     best_m, best_n, _ = sweep(problem, tolerance, methods, costs)
@@ -180,7 +185,8 @@ def main():
             FreeBody("free body near-symmetric", [2.0, 2.0, 3.0], [0.5, 0.2, 2.0], 30.0)]
     scenes = [Scene("kepler", exact=kepler_exact)] + [
         Scene(n) for n in ("pendulum", "heavy_top", "spring_chain", "box_on_springs", "gravity_gradient",
-                           "satellite_boom", "three_body", "foucault", "rocket", "cluster")]
+                           "satellite_boom", "three_body", "foucault", "rocket", "cubesat_detumbling",
+                           "cubesat_pointing", "double_pendulum", "j2_orbit", "solar_array", "cluster")]
     problems = free + scenes
     tolerances = {"attitude": (1e-3, 1e-5, 1e-7)}
     if args.small:
@@ -196,7 +202,8 @@ def main():
         else:  # positions: relative to the largest distance the run covers
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore")
-                r = rd.simulate(p.model, p.initial, p.duration / 1024, steps=1024, error=False)
+                r = rd.simulate(p.model, p.initial, p.duration / 1024, steps=1024, error=False,
+                                controller=p.controller)
             scale = float(np.max(np.linalg.norm(np.asarray(r.p_W), axis=-1)))
             tols = tuple(scale * t for t in (1e-3, 1e-5, 1e-7)[:len(tolerances["attitude"])])
         for tol in tols:

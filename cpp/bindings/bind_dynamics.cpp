@@ -396,7 +396,10 @@ controller : Controller, keyword-only, optional
     its order. The estimate's runs at 2 dt and 4 dt each go under a copy of the controller as it was before the
     run: a shipped law's, or a law in Python declared Controller(..., repeatable=True) (copy.deepcopy); an
     undeclared law in Python is sampled by the run alone, and result.error has no values, its verdict saying
-    why. tolerance is refused. None (the default): no controller.
+    why. With tolerance, every run of the choice (pilots, the run, its estimate's runs) goes under a copy of the
+    controller as it was before the call, which the law given never sees, and steps on a divisor of period / 4
+    (so that no sample splits a step of the runs at 2 dt and 4 dt alone); the duration must then be a whole
+    number of period / 4, and a law in Python must be declared repeatable. None (the default): no controller.
 
 Returns
 -------
@@ -418,8 +421,9 @@ ValueError
     nearest name), record_every < 1, a recording larger than the memory available (record_every, with both
     figures), a quantity of another dimension, loads or gravity for a scene, accuracy_level not finite and > 0;
     with tolerance: tolerance not finite and > 0, dt or steps given too, no duration, error False, an unknown
-    measure (with the nearest name), max_steps < 4; with a controller: tolerance given, a body outside a scene, or
-    a bad command (named by the controller).
+    measure (with the nearest name), max_steps < 4; with a controller: a body outside a scene, a bad command
+    (named by the controller), and with tolerance a law in Python not declared repeatable or a duration that is not
+    a whole number of period / 4.
 ToleranceError
     A ValueError: the tolerance cannot be met within max_steps, the last refined run's certificate still fails, or the
     scene has a PythonForce; it carries the measured error, the choice and the best result (see ToleranceError).

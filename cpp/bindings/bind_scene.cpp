@@ -9,6 +9,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <deque>
 #include <limits>
 #include <map>
 #include <memory>
@@ -843,62 +844,6 @@ ErrorMeasure default_scene_measure(const Scene& scene) {
   return ErrorMeasure::position;
 }
 
-// simulate(..., tolerance=) of a scene: a Scene is compiled for each candidate it takes (a CompiledScene is its
-// own only candidate), each at the order it has (scene_order); the planner (tolerance.hpp) with the GIL released;
-// ToleranceError when the tolerance is not met, or before any run for a force the certificate cannot check.
-py::object simulate_scene_to_tolerance(py::handle model, py::handle method, const std::vector<BodyState>& initial,
-                                       const CompiledSceneHandle& given, SimulationOptions base, const ToleranceArgs& a,
-                                       py::handle progress, bool scalar_first, const std::optional<double>& level) {
-  const std::string opaque = opaque_force(*given.compiled);
-  if (!opaque.empty()) {
-    refuse_tolerance(opaque, "a force the core cannot see into may switch inside a step, which the global error "
-                             "estimate cannot check (it is never called reliable); pass dt= and read result.error");
-  }
-  const bool fixed = is_instance<CompiledSceneHandle>(model) || !method.is_none();
-  std::vector<CompiledSceneHandle> compiled;
-  std::vector<ToleranceCandidate> candidates;
-  for (const Method m : fixed ? std::vector<Method>{given.method} : tolerance_methods()) {
-    try {
-      CompiledSceneHandle handle = m == given.method ? given : compile_handle(given.scene, m, false);
-      SimulationOptions probe = base;  // a one-step run: what the run refuses (e.g. 'exact' with a couple in a load)
-      probe.method = m, probe.dt = a.horizon, probe.steps = 1;
-      simulate(*handle.compiled, initial, probe);
-      compiled.push_back(std::move(handle));
-    } catch (const std::invalid_argument&) {
-      if (fixed) throw;  // the method asked for: its refusal is the answer
-      continue;          // a method the scene does not take
-    }
-    candidates.push_back({m, scene_order(*compiled.back().compiled)});
-  }
-  PythonMonitor monitor(progress);
-  if (monitor.needed()) base.monitor = [&monitor](std::int64_t steps_done) { return monitor(steps_done); };
-  ToleranceRun<SceneSimulation> run;
-  {
-    py::gil_scoped_release release;
-    run = run_to_tolerance<SceneSimulation>(
-        candidates, base, {a.tolerance, a.measure, a.horizon, a.max_steps},
-        [&](const ToleranceCandidate& c, const SimulationOptions& o) {
-          const auto at = std::find_if(compiled.begin(), compiled.end(),
-                                       [&](const CompiledSceneHandle& h) { return h.method == c.method; });
-          SimulationOptions x = o;
-          x.method = c.method;
-          return simulate(*at->compiled, initial, x);
-        });
-  }
-  if (run.interrupted) monitor.raise();
-  if (!run.ran) raise_tolerance_error(run.choice, py::none());
-  SimulationOptions final_options = base;
-  final_options.method = run.choice.method, final_options.dt = run.choice.dt, final_options.steps = run.choice.steps;
-  warn_after_run(run.records, final_options, method_info(run.choice.method).name);
-  const auto at = std::find_if(compiled.begin(), compiled.end(),
-                               [&](const CompiledSceneHandle& h) { return h.method == run.choice.method; });
-  py::object result = scene_result_object(std::move(run.records), *at, run.choice.dt, scalar_first,
-                                          std::optional(std::move(run.estimate)), py::cast(run.choice),
-                                          run.choice.met ? level : std::nullopt);
-  if (!run.choice.met) raise_tolerance_error(run.choice, result);
-  return result;
-}
-
 // The row-major (n, width) array of `values`.
 py::array_t<double> rows(const std::vector<double>& values, py::ssize_t width) {
   py::array_t<double> out({static_cast<py::ssize_t>(values.size()) / width, width});
@@ -1004,31 +949,89 @@ bool repeatable_law(py::handle controller, const Scene& scene) {
   return controller.attr("repeatable").cast<bool>() || shipped_law(controller.attr("law"), scene).has_value();
 }
 
-// The controllers of the estimate's two coarse runs (global_error.hpp) of a run under `controller`, a
-// rigiddyn.Controller whose law is in Python or whose gyro noise is drawn in Python (repeatable_law): each a
-// copy.deepcopy of it as it is before the run (the law's attributes and the noise generator's state), so that each
-// coarse run samples the law and draws the noise as the run does. Made with the GIL before the run; TypeError naming
-// controller.law where it cannot be copied.
-std::vector<Controller> coarse_controllers(py::handle controller, const Scene& scene) {
+// A controller as `controller` (a rigiddyn.Controller on `scene`, its law in Python or its gyro noise drawn in
+// Python: repeatable_law) is now, for another run: a copy.deepcopy of it (the law's attributes and the noise
+// generator's state), so that the run samples the law and draws the noise as a run from now does. Made with the
+// GIL; TypeError naming controller.law where it cannot be copied.
+Controller controller_copy(py::handle controller, const Scene& scene) {
   const py::object deepcopy = py::module_::import("copy").attr("deepcopy");
-  std::vector<Controller> out;
-  bool shipped = false;
-  for (int k = 0; k < 2; ++k) {
-    py::object copy;
-    try {
-      copy = deepcopy(controller);
-    } catch (py::error_already_set& e) {
-      if (!e.matches(PyExc_Exception)) throw;
-      const std::string message = "controller.law: expected a law that copy.deepcopy copies (the global error "
-                                  "estimate runs it again at 2 dt and 4 dt, each from a copy), got " +
-                                  py::repr(controller.attr("law")).cast<std::string>() + " (" +
-                                  py::str(e.value()).cast<std::string>() + "); or pass error=False";
-      py::raise_from(e, PyExc_TypeError, message.c_str());
-      throw py::error_already_set();
-    }
-    out.push_back(as_controller(copy, scene, &shipped));
+  py::object copy;
+  try {
+    copy = deepcopy(controller);
+  } catch (py::error_already_set& e) {
+    if (!e.matches(PyExc_Exception)) throw;
+    const std::string message = "controller.law: expected a law that copy.deepcopy copies (the global error "
+                                "estimate runs it again at 2 dt and 4 dt, each from a copy), got " +
+                                py::repr(controller.attr("law")).cast<std::string>() + " (" +
+                                py::str(e.value()).cast<std::string>() + "); or pass error=False";
+    py::raise_from(e, PyExc_TypeError, message.c_str());
+    throw py::error_already_set();
   }
+  bool shipped = false;
+  return as_controller(copy, scene, &shipped);
+}
+
+// The controllers of the estimate's two coarse runs (global_error.hpp) of a run under `controller`, each a
+// controller_copy made before the run, so that each coarse run samples the law as the run does.
+std::vector<Controller> coarse_controllers(py::handle controller, const Scene& scene) {
+  std::vector<Controller> out;
+  for (int k = 0; k < 2; ++k) out.push_back(controller_copy(controller, scene));
   return out;
+}
+
+// The controllers of a run to a tolerance under `controller` (a rigiddyn.Controller on `scene`): a fresh one for each
+// run the planner makes (its pilots, the run and its estimate's runs), each the controller as it is before any run (a
+// law in C++ copied; a law in Python, declared repeatable, a copy.deepcopy made with the GIL), so that every run
+// samples the law as the first would. The copies are kept until the object goes, with the GIL held (a law in Python
+// holds Python objects). ValueError naming tolerance for a law in Python that is not declared repeatable.
+class RunControllers {
+ public:
+  RunControllers(py::handle controller, const Scene& scene)
+      : controller_(py::reinterpret_borrow<py::object>(controller)), scene_(scene) {
+    bool shipped = false;
+    pristine_ = as_controller(controller, scene, &shipped);
+    require_positive(pristine_.period, "controller.period");
+    if (shipped) return;
+    if (!repeatable_law(controller, scene)) {
+      py_io::throw_value_error("tolerance", "None under a controller whose law in Python is sampled by the run alone "
+                               "(the planner's runs and the certificate's sample it again: declare it Controller(..., "
+                               "repeatable=True), or pass dt=)", py::str(controller.attr("law")).cast<std::string>());
+    }
+    python_ = true;
+  }
+  RunControllers(const RunControllers&) = delete;
+  RunControllers& operator=(const RunControllers&) = delete;
+
+  double period() const { return pristine_.period; }
+  // A fresh controller for the next run (callable without the GIL; the planner's runs come one after the other).
+  const Controller& next() {
+    if (!python_) return copies_.emplace_back(pristine_);
+    py::gil_scoped_acquire gil;
+    return copies_.emplace_back(controller_copy(controller_, scene_));
+  }
+
+ private:
+  py::object controller_;
+  const Scene& scene_;
+  Controller pristine_;
+  bool python_ = false;
+  std::deque<Controller> copies_;  // (a deque: a copy stays where it is while its run uses it)
+};
+
+// The steps of a grid over the horizon T [s] on which every run's step divides controller.period / 4 (4 T / period of
+// them: ToleranceRequest::grid_steps); ValueError naming duration where T is not a whole number of period / 4 (within
+// 1e-9 relative: the rounding of a duration and a period given in decimals).
+std::int64_t controller_grid_steps(double horizon, double period) {
+  const double blocks = 4.0 * horizon / period;
+  const double whole = std::round(blocks);
+  if (!(whole >= 1.0) || std::abs(blocks - whole) > 1e-9 * blocks || whole > 9e15) {
+    py_io::throw_value_error("duration",
+                             "a whole number of controller.period / 4 = " + format_value(period / 4.0) +
+                                 " s under tolerance= (every run's step then divides the period four times over, so "
+                                 "that the certificate's runs at 2 dt and 4 dt step onto every sample)",
+                             format_value(horizon) + " s");
+  }
+  return static_cast<std::int64_t>(whole);
 }
 
 // Appends the likely cause to every "not asymptotic" verdict of `e`, the estimate of a run of step dt under a
@@ -1088,6 +1091,70 @@ std::shared_ptr<DeferredEstimate> deferred_estimate(std::shared_ptr<const Compil
   return d;
 }
 
+// simulate(..., tolerance=) of a scene: a Scene is compiled for each candidate it takes (a CompiledScene is its
+// own only candidate), each at the order it has (scene_order); the planner (tolerance.hpp) with the GIL released;
+// ToleranceError when the tolerance is not met, or before any run for a force the certificate cannot check. Under a
+// controller (None or a rigiddyn.Controller) each run samples a fresh copy of it (RunControllers) at steps that divide
+// its period four times over (controller_grid_steps), and the closed form 'exact', which takes no law, is no candidate.
+py::object simulate_scene_to_tolerance(py::handle model, py::handle method, const std::vector<BodyState>& initial,
+                                       const CompiledSceneHandle& given, SimulationOptions base, const ToleranceArgs& a,
+                                       py::handle progress, bool scalar_first, const std::optional<double>& level,
+                                       py::handle controller) {
+  const std::string opaque = opaque_force(*given.compiled);
+  if (!opaque.empty()) {
+    refuse_tolerance(opaque, "a force the core cannot see into may switch inside a step, which the global error "
+                             "estimate cannot check (it is never called reliable); pass dt= and read result.error");
+  }
+  std::optional<RunControllers> controllers;
+  if (!controller.is_none()) controllers.emplace(controller, given.scene);
+  const std::int64_t grid_steps = controllers ? controller_grid_steps(a.horizon, controllers->period()) : 0;
+  const bool fixed = is_instance<CompiledSceneHandle>(model) || !method.is_none();
+  std::vector<CompiledSceneHandle> compiled;
+  std::vector<ToleranceCandidate> candidates;
+  for (const Method m : fixed ? std::vector<Method>{given.method} : tolerance_methods()) {
+    if (controllers && m == Method::exact && !fixed) continue;
+    try {
+      CompiledSceneHandle handle = m == given.method ? given : compile_handle(given.scene, m, false);
+      SimulationOptions probe = base;  // a one-step run: what the run refuses (e.g. 'exact' with a couple in a load)
+      probe.method = m, probe.dt = a.horizon, probe.steps = 1;
+      simulate(*handle.compiled, initial, probe);
+      compiled.push_back(std::move(handle));
+    } catch (const std::invalid_argument&) {
+      if (fixed) throw;  // the method asked for: its refusal is the answer
+      continue;          // a method the scene does not take
+    }
+    candidates.push_back({m, scene_order(*compiled.back().compiled)});
+  }
+  PythonMonitor monitor(progress);
+  if (monitor.needed()) base.monitor = [&monitor](std::int64_t steps_done) { return monitor(steps_done); };
+  ToleranceRun<SceneSimulation> run;
+  {
+    py::gil_scoped_release release;
+    run = run_to_tolerance<SceneSimulation>(
+        candidates, base, {a.tolerance, a.measure, a.horizon, a.max_steps, 0.5, grid_steps},
+        [&](const ToleranceCandidate& c, const SimulationOptions& o) {
+          const auto at = std::find_if(compiled.begin(), compiled.end(),
+                                       [&](const CompiledSceneHandle& h) { return h.method == c.method; });
+          SimulationOptions x = o;
+          x.method = c.method;
+          if (controllers) return simulate(*at->compiled, initial, x, controllers->next());
+          return simulate(*at->compiled, initial, x);
+        });
+  }
+  if (run.interrupted) monitor.raise();
+  if (!run.ran) raise_tolerance_error(run.choice, py::none());
+  SimulationOptions final_options = base;
+  final_options.method = run.choice.method, final_options.dt = run.choice.dt, final_options.steps = run.choice.steps;
+  warn_after_run(run.records, final_options, method_info(run.choice.method).name);
+  const auto at = std::find_if(compiled.begin(), compiled.end(),
+                               [&](const CompiledSceneHandle& h) { return h.method == run.choice.method; });
+  py::object result = scene_result_object(std::move(run.records), *at, run.choice.dt, scalar_first,
+                                          std::optional(std::move(run.estimate)), py::cast(run.choice),
+                                          run.choice.met ? level : std::nullopt);
+  if (!run.choice.met) raise_tolerance_error(run.choice, result);
+  return result;
+}
+
 py::object simulate_scene_py(py::handle model, py::handle initial, py::handle dt, py::handle steps, py::handle method,
                              py::handle record_every, py::handle loads, py::handle gravity, py::handle t0,
                              py::handle scalar_first, py::handle progress, py::handle duration, py::handle error,
@@ -1095,10 +1162,6 @@ py::object simulate_scene_py(py::handle model, py::handle initial, py::handle dt
                              const OneBodyInputs* body) {
   refuse_body_arguments(loads, gravity);
   const bool tolerance_given = !to.tolerance.is_none();
-  if (tolerance_given && !controller.is_none()) {
-    py_io::throw_value_error("tolerance", "None with a controller (its samples fix the steps' splits; pass dt=)",
-                             py::str(to.tolerance).cast<std::string>());
-  }
   SimulationOptions o;
   if (!tolerance_given) {  // its checks of dt, steps and duration (as_tolerance_args otherwise)
     as_tolerance_args(to.tolerance, to.measure, to.max_steps, dt, steps, duration, error, ErrorMeasure::attitude);
@@ -1114,14 +1177,14 @@ py::object simulate_scene_py(py::handle model, py::handle initial, py::handle dt
   const CompiledSceneHandle& h = *held;
   o.method = h.method;
   std::vector<BodyState> initial_states = as_scene_states(initial, h.scene, "initial");
-  bool shipped_law = false;
-  const std::optional<Controller> control =
-      controller.is_none() ? std::nullopt : std::optional<Controller>(as_controller(controller, h.scene, &shipped_law));
   if (tolerance_given) {
     const auto a = as_tolerance_args(to.tolerance, to.measure, to.max_steps, dt, steps, duration, error,
                                      default_scene_measure(h.scene));
-    return simulate_scene_to_tolerance(model, method, initial_states, h, o, *a, progress, first, level);
+    return simulate_scene_to_tolerance(model, method, initial_states, h, o, *a, progress, first, level, controller);
   }
+  bool shipped_law = false;
+  const std::optional<Controller> control =
+      controller.is_none() ? std::nullopt : std::optional<Controller>(as_controller(controller, h.scene, &shipped_law));
   PythonMonitor monitor(progress);
   if (monitor.needed()) o.monitor = [&monitor](std::int64_t steps_done) { return monitor(steps_done); };
   // a law in Python (or gyro noise): the coarse runs' copies of it, made before the run (released with the GIL held),

@@ -169,7 +169,8 @@ class Controller:
         under a ``copy.deepcopy`` of this controller made before the run (the law's own attributes and the noise
         generator's state copied), so the law must keep its state in itself and have no effect outside it (no list
         it appends to, no device it drives). False: a law in Python is sampled by the run alone, and result.error
-        gives no values, its verdict saying so. The shipped laws (BDot, PDAttitude) are always repeatable.
+        gives no values, its verdict saying so, and simulate(..., tolerance=) refuses it (its planner and
+        certificate run the law again). The shipped laws (BDot, PDAttitude) are always repeatable.
 
     The arguments are kept as the attributes of the same names (``period`` and ``w_B_noise`` as floats).
 

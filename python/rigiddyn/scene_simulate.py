@@ -86,9 +86,6 @@ class _ScenePlan:
                 if given is not None:
                     raise ValueError(f"{name}: expected nothing without --tolerance, got {given!r}")
         if self.tolerance is not None:  # the method (unless --method) and dt are chosen by simulate
-            if run.controller is not None:
-                raise ValueError(f"--tolerance: expected nothing for a scene with a [controller] (its samples fix "
-                                 f"the steps' splits; give --dt or the [run] dt), got {args.tolerance!r}")
             if args.dt is not None:
                 raise ValueError(f"--dt: expected nothing with --tolerance (exactly one of them), got {args.dt!r}")
             if args.steps is not None:
@@ -201,7 +198,7 @@ def _choice_record(result: Any) -> dict[str, Any]:
 
 
 def _run(plan: _ScenePlan, update: Any) -> Any:
-    """simulate of the scene: at the plan's dt (under the file's [controller], if it has one), or to its tolerance
+    """simulate of the scene under the file's [controller], if it has one: at the plan's dt, or to its tolerance
     (then the plan takes the chosen method, dt and steps)."""
     if plan.tolerance is None:
         return _core.simulate(plan.file.scene, plan.file.initial, dt=plan.dt, steps=plan.steps,
@@ -209,7 +206,7 @@ def _run(plan: _ScenePlan, update: Any) -> Any:
                               progress=update, error=plan.error, controller=plan.file.run.controller)
     result = _core.simulate(plan.file.scene, plan.file.initial, duration=plan.duration, tolerance=plan.tolerance,
                             measure=plan.measure, max_steps=plan.max_steps, method=cast(Any, plan.method_given),
-                            record_every=plan.record_every, progress=update)
+                            record_every=plan.record_every, progress=update, controller=plan.file.run.controller)
     plan.method, plan.dt, plan.steps = result.choice.method, result.choice.dt, result.choice.steps
     return result
 

@@ -30,6 +30,42 @@ TEST(ToleranceModel, StepsAreTheFewestMultipleWithinTheStep) {
   EXPECT_EQ(steps_for(10.0, std::numeric_limits<double>::infinity(), 4), 4);  // at least one block
 }
 
+TEST(ToleranceModel, AGridMakesEveryStepADivisorOfItsBlock) {
+  EXPECT_EQ(on_grid(4, 0), 4);  // no grid
+  EXPECT_EQ(on_grid(4, 6), 12);
+  EXPECT_EQ(on_grid(8, 40), 40);
+  // 30 s in blocks of 0.25 s (120 of them): at most 0.1 s is 0.25 / 3; at most 0.3 s is the block itself
+  EXPECT_DOUBLE_EQ(step_on_grid(0.1, 30.0, 120), 0.25 / 3.0);
+  EXPECT_DOUBLE_EQ(step_on_grid(0.3, 30.0, 120), 0.25);
+  EXPECT_DOUBLE_EQ(step_on_grid(0.125, 30.0, 120), 0.125);  // a divisor itself (no extra division for round-off)
+  EXPECT_DOUBLE_EQ(step_on_grid(0.1, 30.0, 0), 0.1);
+  EXPECT_EQ(steps_for(30.0, 0.1, on_grid(4, 120)), 360);  // the fewest multiple of 120 within 0.1 s: dt = 0.25 / 3
+}
+
+// A certificate 100x its prediction over 100 s at τ = 1e-3 (target 5e-4): scaled alike (C f = 1e-4), an order-2
+// candidate needs dt = 0.05^(1/2) = 0.224 s, 448 steps at 2e-6 s a step (9.0e-4 s); an order-4 one dt = 0.05^(1/4) =
+// 0.473 s (within its pilot's 0.5 s), 212 steps at 3e-6 s (6.4e-4 s): the cheapest, where the chosen one's own
+// refinement would take 2 000 steps at 1e-6 s (2e-3 s).
+TEST(ToleranceModel, AMispredictionScaledAlikeReplansOnTheCheapestCandidate) {
+  const auto pilot = [](Method method, int order, double constant, double dt, double seconds) {
+    PilotRun p;
+    p.method = method, p.order = order, p.constant = constant, p.dt = dt, p.seconds_per_step = seconds;
+    p.verdict = tolerance_detail::used;
+    return p;
+  };
+  const std::vector<PilotRun> pilots = {pilot(Method::splitting_dlm, 1, 1e-6, 0.5, 1e-6),
+                                        pilot(Method::exact_flow_kick, 2, 1e-6, 0.5, 2e-6),
+                                        pilot(Method::rk4, 4, 1e-6, 0.5, 3e-6)};
+  const ToleranceRequest request{1e-3, ErrorMeasure::attitude, 100.0, 10'000'000};
+  const PilotRun* other = tolerance_detail::cheaper_with_growth(pilots, pilots[0], 2000, 100.0, request, 4);
+  ASSERT_NE(other, nullptr);
+  EXPECT_EQ(other->method, Method::rk4);
+  // a refinement cheaper than any re-plan, or no misprediction (f <= 1): the chosen method stays
+  EXPECT_EQ(tolerance_detail::cheaper_with_growth(pilots, pilots[0], 100, 100.0, request, 4), nullptr);
+  EXPECT_EQ(tolerance_detail::cheaper_with_growth(pilots, pilots[0], 2000, 0.5, request, 4), nullptr);
+  EXPECT_EQ(tolerance_detail::cheaper_with_growth(pilots, pilots[0], 2000, std::nan(""), request, 4), nullptr);
+}
+
 TEST(ToleranceModel, ARefinementShrinksTheStepByTheMeasuredRatio) {
   // measured 16x the target at order 4: dt / 2
   EXPECT_DOUBLE_EQ(refined_step(0.1, 4, 16e-6, 1e-6), 0.05);
@@ -282,6 +318,35 @@ TEST(RunToTolerance, AFreeBodyMeetsItsToleranceAgainstTheClosedForm) {
       return Eigen::Quaterniond(r.q_WB[4 * k + 3], r.q_WB[4 * k], r.q_WB[4 * k + 1], r.q_WB[4 * k + 2]);
     };
     EXPECT_LE(angular_distance(q(reference, i), q(out.records, i)), tolerance) << "record " << i;
+  }
+}
+
+// On a grid of 0.3 s blocks (a controller sampled every 1.2 s), every run the planner makes, the pilots', the run's and
+// their estimates' runs at 2 dt and 4 dt, steps on a divisor of 1.2 s, and the tolerance is met all the same.
+TEST(RunToTolerance, EveryRunOnAGridStepsOnADivisorOfItsPeriod) {
+  const RigidBody body(1.0, Eigen::Vector3d(1.0, 2.0, 3.0));
+  RigidBodyState initial;
+  initial.w_B = Eigen::Vector3d(0.1, 1.0, 0.1);
+  const double period = 1.2, horizon = 24.0;
+  std::vector<double> steps_taken;
+  const auto run = [&](const ToleranceCandidate& c, const SimulationOptions& o) {
+    steps_taken.push_back(o.dt);
+    SimulationOptions x = o;
+    x.method = c.method;
+    return simulate(body, initial, x);
+  };
+  ToleranceRequest request{1e-6, ErrorMeasure::attitude, horizon, 10'000'000};
+  request.grid_steps = static_cast<std::int64_t>(std::lround(4.0 * horizon / period));
+  SimulationOptions base;
+  base.record_every = 4;
+  const auto out = run_to_tolerance<Trajectory>({{Method::rk4, 4}, {Method::splitting_dlm, 2}}, base, request, run);
+  ASSERT_TRUE(out.ran);
+  EXPECT_TRUE(out.choice.met) << out.choice.reason;
+  EXPECT_EQ(out.choice.steps % request.grid_steps, 0);
+  ASSERT_FALSE(steps_taken.empty());
+  for (const double dt : steps_taken) {
+    const double per_period = period / dt;  // a whole number, to the round-off of the divisions that made dt
+    EXPECT_NEAR(per_period, std::round(per_period), 1e-9 * per_period) << "dt = " << dt;
   }
 }
 

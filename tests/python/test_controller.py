@@ -309,10 +309,17 @@ def test_a_body_takes_a_controller_as_its_one_body_scene():
         np.testing.assert_array_equal(getattr(alone, field), getattr(scene, field), strict=True, err_msg=field)
 
 
-def test_controller_with_tolerance_or_not_a_controller_is_refused():
-    with pytest.raises(ValueError, match="tolerance: expected None with a controller"):
+def test_a_law_tolerance_cannot_rerun_or_not_a_controller_is_refused():
+    """tolerance= reruns the law (pilots, the run, its certificate): a law in Python not declared repeatable is refused,
+    and so is a duration off the grid of period / 4 that every run's step must divide."""
+    with pytest.raises(ValueError, match="tolerance: expected None under a controller whose law in Python is sampled "
+                                         "by the run alone"):
         rd.simulate(thruster_scene(), [rd.RigidBodyState()], duration=1.0, tolerance=1e-6,
                     controller=rd.Controller(0.25, lambda s: {}))
+    with pytest.raises(ValueError, match=r"duration: expected a whole number of controller.period / 4 = 0.0625 s .*"
+                                         r"got 1.01 s"):
+        rd.simulate(thruster_scene(), [rd.RigidBodyState()], duration=1.01, tolerance=1e-6,
+                    controller=rd.Controller(0.25, lambda s: {}, repeatable=True))
     with pytest.raises(TypeError, match="controller: expected a rigiddyn.Controller"):
         rd.simulate(thruster_scene(), [rd.RigidBodyState()], 0.1, 10, controller=lambda s: {})
 
@@ -697,8 +704,12 @@ def test_the_cli_runs_a_scene_under_its_controller(tmp_path, capsys):
     got = np.load(out / "trajectory.npz")
     w = [k for k in got.files if "w_B_x" in k]
     np.testing.assert_array_equal(got[w[0]], want.w_B[:, 0, 0])
+    # to a tolerance under its controller: the chosen step divides the period (0.5 s) four times over
     assert main(["simulate", "cubesat_pointing", "--tolerance", "1e-6", "--duration", "30", "--no-plot",
-                 "--no-progress", "--out", str(tmp_path / "o2")]) == 2
+                 "--no-progress", "--out", str(tmp_path / "o2")]) == 0
+    record = json.loads((tmp_path / "o2" / "run.json").read_text())
+    blocks = run.controller.period / (4.0 * record["dt [s]"])
+    assert blocks == round(blocks) and record["controller"]["law"] == "pd_attitude"
 
 
 # ---------------------------------------------------------------- Monte Carlo under a controller
@@ -929,3 +940,70 @@ def test_monte_carlo_refuses_a_controller_it_cannot_run():
         rd.monte_carlo(rd.RigidBody(1.0, [1.0, 1.0, 1.0]), rd.RigidBodyState(), 2, error=False, **run)
     with pytest.raises(TypeError, match=r"controller: expected a rigiddyn.Controller or None"):
         rd.monte_carlo(scene, [rd.RigidBodyState()], 2, seed=1, dt=0.1, steps=2, error=False, controller=len)
+
+
+# ---------------------------------------------------------------- tolerance= under a controller
+def attitude_difference(q_a, q_b):
+    """Largest geodesic angle between two (n, 1, 4) attitude records [rad] (2 atan2(|v|, |w|) of q_a^-1 q_b, accurate
+    near 0)."""
+    q_a, q_b = np.asarray(q_a).reshape(-1, 4), np.asarray(q_b).reshape(-1, 4)
+    w = np.sum(q_a * q_b, axis=1)
+    v = q_a[:, 3:4] * q_b[:, :3] - q_b[:, 3:4] * q_a[:, :3] - np.cross(q_a[:, :3], q_b[:, :3])
+    return float(np.max(2.0 * np.arctan2(np.linalg.norm(v, axis=1), np.abs(w))))
+
+
+def on_the_grid(dt, period):
+    """Whether period / (4 dt) is a whole number (within the rounding of a division)."""
+    blocks = period / (4.0 * dt)
+    return abs(blocks - round(blocks)) <= 1e-9 * blocks
+
+
+@pytest.mark.parametrize("tolerance", [1e-6, 1e-9])
+def test_tolerance_under_the_shipped_bdot_meets_it(tolerance):
+    """The shipped CubeSat under B-dot (sampled every second) over 10 minutes, to an attitude tolerance: every run the
+    planner makes (pilots and the run) steps on a divisor of period / 4, so that the certificate's runs at 2 dt and
+    4 dt sample the law where the run does; the true error meets the tolerance: its difference from rk4 at an eighth of
+    the chosen step under the same law, plus that reference's own estimated error, is at most the tolerance."""
+    scene, initial, run = rd.load_scene("cubesat_detumbling")
+    r = rd.simulate(scene, initial, duration=600.0, tolerance=tolerance, record_every=20, controller=run.controller)
+    c = r.choice
+    assert c.refinements <= 3 and c.certified_error <= tolerance
+    assert on_the_grid(c.dt, run.controller.period) and c.steps * c.dt == pytest.approx(600.0, rel=1e-12)
+    assert all(on_the_grid(p["dt"], run.controller.period) for p in c.pilots if p["steps"] > 0)
+    assert all(p["method"] != "exact" for p in c.pilots)  # a closed form takes no law
+    fine = rd.simulate(scene, initial, c.dt / 8, 8 * c.steps, method="rk4", record_every=160,
+                       controller=run.controller)
+    assert fine.error.reliable[1:].all()
+    assert attitude_difference(r.q_WB, fine.q_WB) + np.nanmax(fine.error.attitude) <= tolerance
+
+
+def test_tolerance_under_a_repeatable_python_law_meets_it_and_leaves_the_law_alone():
+    """A law in Python with a state of its own (IntegralThrust), declared repeatable: each of the planner's runs
+    samples its own copy of the controller as it was before the call, so the law given keeps its state; the position
+    meets the tolerance: its difference from the same law's run at an eighth of the chosen step, plus that reference's
+    own estimated error, is at most the tolerance."""
+    scene = rd.Scene([rd.RigidBody(1.0, [1.0, 2.0, 3.0])], elements=[rd.ScheduledLoads(body=0, loads=[])])
+    start = [rd.RigidBodyState(v_W=[1.0, 0.0, 0.0], w_B=[0.1, 2.0, 0.1])]
+    period, tolerance = 0.16, 1e-7
+    law = IntegralThrust(period)
+    r = rd.simulate(scene, start, duration=8.0, tolerance=tolerance, measure="position", record_every=4,
+                    controller=rd.Controller(period, law, repeatable=True))
+    assert law.integral == 0.0
+    c = r.choice
+    assert on_the_grid(c.dt, period) and c.certified_error <= tolerance
+    fine = rd.simulate(scene, start, c.dt / 8, 8 * c.steps, method="rk4", record_every=32,
+                       controller=rd.Controller(period, IntegralThrust(period), repeatable=True))
+    assert fine.error.reliable[1:].mean() > 0.9
+    assert np.max(np.linalg.norm(r.p_W - fine.p_W, axis=-1)) + np.nanmax(fine.error.position) <= tolerance
+
+
+def test_tolerance_replans_a_low_order_whose_error_outgrew_its_short_pilot():
+    """Over the whole 4 orbits of the shipped detumbling, every candidate's step is capped at the grid's 0.25 s, so the
+    cheapest per step may be a second-order splitting whose 16-step pilot over 4 s predicted 4e-5 rad where the run
+    shows ~0.02 rad: scaling every candidate's prediction by that factor alike, a fourth-order method at the same 93 600
+    steps is far cheaper than the splitting refined to ~7x its steps. Whatever the pilots' timings choose first, the
+    certified run takes the grid's 93 600 steps."""
+    scene, initial, run = rd.load_scene("cubesat_detumbling")
+    r = rd.simulate(scene, initial, duration=run.duration, tolerance=1e-3, record_every=run.record_every,
+                    controller=run.controller)
+    assert r.choice.met and r.choice.steps == 93600 and r.choice.order == 4, r.choice.reason

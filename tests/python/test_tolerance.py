@@ -235,11 +235,16 @@ def test_bad_input_is_named(kwargs, match):
         rd.simulate(BODY, STATE, **kwargs)
 
 
-# each shipped scene over its file's duration; the cluster (1000 bodies in mutual gravity) over its first 1/32: its
-# reference at a sixteenth of the step costs minutes over the whole
-SHIPPED_SCENES = [("box_on_springs", 1), ("cluster", 32), ("foucault", 1), ("gravity_gradient", 1), ("heavy_top", 1),
-                  ("kepler", 1), ("pendulum", 1), ("rocket", 1), ("satellite_boom", 1), ("spring_chain", 1),
-                  ("three_body", 1)]
+# each shipped scene over its file's duration (under its [controller], where it has one); the cluster (1000 bodies in
+# mutual gravity) over its first 1/32: its reference at a sixteenth of the step costs minutes over the whole
+SHIPPED_SCENES = [("box_on_springs", 1), ("cluster", 32), ("cubesat_detumbling", 1), ("cubesat_pointing", 1),
+                  ("double_pendulum", 1), ("foucault", 1), ("gravity_gradient", 1), ("heavy_top", 1), ("j2_orbit", 1),
+                  ("kepler", 1), ("pendulum", 1), ("rocket", 1), ("satellite_boom", 1), ("solar_array", 1),
+                  ("spring_chain", 1), ("three_body", 1)]
+
+
+def test_the_shipped_scenes_checked_are_every_shipped_scene():
+    assert sorted(name for name, _ in SHIPPED_SCENES) == sorted(rd.scene_file.example_scenes())
 
 
 def _largest_difference(result, reference, measure):
@@ -283,15 +288,17 @@ def _check_shipped_scene(name, part, relative):
     if turning:
         tolerance = relative
     else:
-        coarse = rd.simulate(scene, initial, duration / 256, steps=256, error=False, accuracy_level=None)
+        coarse = rd.simulate(scene, initial, duration / 256, steps=256, error=False, accuracy_level=None,
+                             controller=run.controller)
         tolerance = relative * float(np.linalg.norm(np.asarray(coarse.p_W), axis=-1).max())
-    r = rd.simulate(scene, initial, duration=duration, tolerance=tolerance, measure=measure)
+    r = rd.simulate(scene, initial, duration=duration, tolerance=tolerance, measure=measure, controller=run.controller)
     assert r.choice.met and r.choice.certified_error <= tolerance
     # the reference: rk4 at a sixteenth of the chosen step, over the same records, with its own estimate; the
     # triangle inequality bounds the run's true error by |run - reference| - |reference's error|, the latter at most
     # 2x its reliable estimate (effectivity within [0.5, 2], docs/accuracy.md)
     reference = rd.simulate(scene, initial, r.choice.dt / 16, steps=16 * r.choice.steps, method="rk4",
-                            record_every=16 * r.choice.steps // (len(r.t) - 1), accuracy_level=None)
+                            record_every=16 * r.choice.steps // (len(r.t) - 1), accuracy_level=None,
+                            controller=run.controller)
     assert len(reference.t) == len(r.t) and np.allclose(reference.t, r.t, rtol=1e-12, atol=1e-9 * duration)
     reference_error = 2.0 * float(np.nanmax(getattr(reference.error, measure)))
     assert bool(np.all(reference.error.reliable[::4])) or reference_error <= tolerance / 100

@@ -7,7 +7,9 @@
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <numeric>
 #include <stdexcept>
 #include <string_view>
 
@@ -213,6 +215,16 @@ std::int64_t steps_for(double horizon, double dt_max, std::int64_t multiple) {
          multiple;
 }
 
+std::int64_t on_grid(std::int64_t multiple, std::int64_t grid_steps) {
+  return grid_steps > 0 ? std::lcm(multiple, grid_steps) : multiple;
+}
+
+double step_on_grid(double dt_max, double horizon, std::int64_t grid_steps) {
+  if (grid_steps <= 0) return dt_max;
+  const double grid = horizon / static_cast<double>(grid_steps);
+  return grid / std::max(1.0, std::ceil(grid / dt_max * (1.0 - 1e-12)));
+}
+
 double refined_step(double dt, int order, double measured, double target) {
   const double shrink = std::pow(target / measured, 1.0 / order);
   return dt * std::min(std::isfinite(shrink) ? shrink : 0.5, std::exp2(-1.0 / order));
@@ -223,6 +235,24 @@ double order_cost_figure(int order, int evaluations, double relative) {
 }
 
 namespace tolerance_detail {
+
+const PilotRun* cheaper_with_growth(const std::vector<PilotRun>& pilots, const PilotRun& chosen, std::int64_t steps,
+                                    double f, const ToleranceRequest& request, std::int64_t multiple) {
+  if (!(f > 1.0) || !std::isfinite(f)) return nullptr;
+  const double T = request.horizon, target = request.safety * request.tolerance;
+  double cheapest = static_cast<double>(steps) * chosen.seconds_per_step;
+  const PilotRun* out = nullptr;
+  for (const PilotRun& p : pilots) {
+    if (p.verdict != used || p.order == 0 || p.exact_on_scene || p.method == chosen.method ||
+        !std::isfinite(p.constant) || !std::isfinite(p.seconds_per_step)) {
+      continue;
+    }
+    const std::int64_t n = steps_for(T, std::min(step_for_error(p.constant * f, p.order, T, target), p.dt), multiple);
+    const double cost = static_cast<double>(n) * p.seconds_per_step;
+    if (n <= request.max_steps && cost < cheapest) cheapest = cost, out = &p;
+  }
+  return out;
+}
 
 std::string format_number(double value) {
   char text[32];

@@ -11,6 +11,11 @@
 // or above τ) is followed by a refinement dt' = dt (s τ / ε)^(1/p) (at most dt / 2 when the estimate was not
 // reliable), at most max_refinements times: a step that the short pilots called asymptotic may not be over the whole
 // horizon (a cluster's close encounters come later), and a halving is then a guess that the next certificate checks.
+// A reliable certificate f times its prediction shows a growth g(t) of the error model C dt^p g(t) that the short
+// pilots did not see, which every method shares: each used candidate is then planned again with its prediction scaled
+// by f, and the refinement takes the cheapest plan (measured on a controller's grid, where every candidate's step was
+// capped alike: a second-order splitting 493x its prediction over 4 orbits would have needed 7x its steps, where rk4
+// met the tolerance at the same steps).
 // A certificate that is the round-off bound at every record (at_round_off) is not refined: that bound grows with the
 // steps, so the tolerance is below what the run can certify in double precision.
 //
@@ -34,6 +39,13 @@
 // with its 8h and 16h runs) costs a net 0.19x, less than the refinement it spares (1.75x the run and more). The final
 // run takes 4x its steps where the steps it needs are between 6/7 of that and that (a cheaper run then with its own
 // estimate would cost more).
+//
+// On a grid (ToleranceRequest::grid_steps: a run under a controller sampled every P, 4T/P blocks of P/4) every step
+// the planner takes divides P/4: a pilot's step is the largest divisor of P/4 within its span / n, and every run over
+// the horizon takes a multiple of the grid's steps. Each run of an estimate, at dt, 2 dt and 4 dt, then steps onto
+// every sample, as the premise of Richardson extrapolation needs (a sample inside a step of the coarse runs alone
+// changes their error by more than a power of dt). The whole-horizon pilot runs only where the grid leaves it at most
+// half the final run's steps.
 //
 // The method 'exact' (order 0, a closed form) has no truncation error: its error is the round-off bound of the
 // run, and its cost is per record, not per step. It runs at the step of the cheapest stepping candidate (so
@@ -103,6 +115,14 @@ double step_for_error(double constant, int order, double horizon, double target)
 
 // The fewest steps, a multiple of `multiple`, whose step horizon / steps is at most dt_max.
 std::int64_t steps_for(double horizon, double dt_max, std::int64_t multiple);
+
+// The multiple of a run's steps on a grid of grid_steps steps over the horizon: lcm(multiple, grid_steps), so that the
+// run's step divides horizon / grid_steps (ToleranceRequest::grid_steps; `multiple` where grid_steps is 0).
+std::int64_t on_grid(std::int64_t multiple, std::int64_t grid_steps);
+
+// The largest step at most dt_max that divides horizon / grid_steps: (horizon / grid_steps) / k for the least whole k
+// (dt_max itself where grid_steps is 0).
+double step_on_grid(double dt_max, double horizon, std::int64_t grid_steps);
 
 // The step of a refinement: dt (target / measured)^(1/p), at most dt / 2^(1/p) (a refinement refines).
 double refined_step(double dt, int order, double measured, double target);
@@ -183,6 +203,10 @@ struct ToleranceRequest {
   double horizon;        // T = the run's duration [s]
   std::int64_t max_steps;  // the cost cap: no run of more steps (the final run and its refinement)
   double safety = 0.5;   // s: the run aims at s τ
+  // every run's steps a multiple of this, so that every step divides T / grid_steps (0: any steps): a run under a
+  // controller sampled every P takes 4T/P, so that each run of an estimate, at dt, 2 dt and 4 dt, steps onto every
+  // sample (a sample inside a step of the coarse runs alone breaks the premise of Richardson extrapolation)
+  std::int64_t grid_steps = 0;
 };
 
 // One pilot of a candidate (or why it has none).
@@ -230,6 +254,14 @@ namespace tolerance_detail {
 
 // The verdict of a pilot that is usable, and the text of the choice.
 inline const std::string used = "used";
+
+// After a reliable certificate f times the prediction of a run of `chosen` (f > 1: a growth g(t) of the error model
+// C dt^p g(t) that the short pilots did not see, which the methods share), the used stepping candidate other than
+// `chosen` whose plan with its prediction scaled by f costs least, where that is less than `chosen`'s refinement of
+// `steps` steps; null where none is (or f is not > 1). (A low order whose step was capped with the others', e.g. at
+// a controller's grid, may need many times their steps once its error is seen.)
+const PilotRun* cheaper_with_growth(const std::vector<PilotRun>& pilots, const PilotRun& chosen, std::int64_t steps,
+                                    double f, const ToleranceRequest& request, std::int64_t multiple);
 std::string describe_choice(const ToleranceChoice& c, const PilotRun& chosen, std::size_t piloted);
 std::string format_number(double value);
 double seconds_since(std::chrono::steady_clock::time_point start);
@@ -256,6 +288,7 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
   choice.tolerance = request.tolerance, choice.measure = request.measure;
   const double T = request.horizon, target = request.safety * request.tolerance;
   const std::int64_t m = common_record_steps(base.record_every);
+  const std::int64_t multiple = on_grid(m, request.grid_steps);  // of a whole-horizon run's steps
   std::stable_sort(candidates.begin(), candidates.end(),
                    [](const ToleranceCandidate& a, const ToleranceCandidate& b) { return a.order > b.order; });
 
@@ -277,7 +310,8 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
     std::int64_t n = 16;
     for (int attempt = 0; attempt < 10; ++attempt) {
       SimulationOptions o = base;
-      o.method = c.method, o.dt = span / static_cast<double>(n), o.steps = n, o.record_every = 4;
+      o.method = c.method, o.dt = step_on_grid(span / static_cast<double>(n), T, request.grid_steps), o.steps = n;
+      o.record_every = 4;
       double seconds = 0.0;
       const auto timed = [&](const SimulationOptions& x) {
         Records r = run(c, x);
@@ -290,7 +324,7 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
       const GlobalErrorEstimate e = measured_global_error(h, o, c.order, timed, request.measure).measure;
       if (out.interrupted) return out_c;
       const ErrorRecords records = error_records(h);
-      p.dt = o.dt, p.horizon = span, p.steps = n;
+      p.dt = o.dt, p.horizon = o.dt * static_cast<double>(n), p.steps = n;
       p.error = e.verdict.empty() ? p.error : largest_error(e, request.measure);
       p.seconds_per_step = seconds / (1.75 * static_cast<double>(n));
       const std::size_t bad = first_uncertified(e, request.measure, request.tolerance);
@@ -357,7 +391,7 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
       // no stability limit, and its error is round-off, which fewer steps make smaller: the fewest steps
       const double dt = p.exact_on_scene ? T / static_cast<double>(fewest_run_steps)
                                          : std::min(step_for_error(p.constant, p.order, T, target), p.dt);
-      p.planned_steps = steps_for(T, dt, m);
+      p.planned_steps = steps_for(T, dt, multiple);
       p.planned_seconds = static_cast<double>(p.planned_steps) * p.seconds_per_step;
     }
     choice.pilots.push_back(p);
@@ -373,7 +407,7 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
     PilotRun p;
     p.method = c.method, p.order = 0;
     const std::int64_t n =
-        best != nullptr ? best->planned_steps : steps_for(T, T / static_cast<double>(fewest_run_steps), m);
+        best != nullptr ? best->planned_steps : steps_for(T, T / static_cast<double>(fewest_run_steps), multiple);
     SimulationOptions o = base;
     o.method = c.method, o.dt = T / 16.0, o.steps = 16, o.record_every = 1;
     const Records h = run(c, o);
@@ -414,7 +448,7 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
     }
     return out;
   }
-  const PilotRun chosen = *best;
+  PilotRun chosen = *best;  // (a refinement may take another candidate)
   std::size_t piloted = 0;
   for (const PilotRun& p : choice.pilots) piloted += p.steps > 0 ? 1 : 0;
   choice.method = chosen.method, choice.order = chosen.order, choice.steps = chosen.planned_steps;
@@ -425,7 +459,7 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
                                ? chosen.error * static_cast<double>(choice.steps) / static_cast<double>(chosen.steps)
                                : predicted_error(chosen.constant, chosen.order, choice.dt, T);
   choice.reason = describe_choice(choice, chosen, piloted);
-  const ToleranceCandidate candidate{chosen.method, chosen.order};
+  ToleranceCandidate candidate{chosen.method, chosen.order};
   const auto checked = [&](const SimulationOptions& x) {
     Records r = run(candidate, x);
     out.interrupted = out.interrupted || r.interrupted;
@@ -438,11 +472,12 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
   // so that it is the 4h run of the final run's estimate when that run takes exactly 4x its steps.
   std::optional<Records> quarter;  // that run, while it may serve as the final run's 4h run
   SimulationOptions quarter_options = base;
-  if (chosen.order > 0 && choice.steps / 4 >= 16) {
+  const std::int64_t every = m / 4;  // the final run's common records, every m of its steps
+  quarter_options.method = chosen.method, quarter_options.record_every = every;
+  quarter_options.steps = steps_for(T, 4.0 * choice.dt, on_grid(common_record_steps(every), request.grid_steps));
+  // (a grid's steps may round it up to the final run's: then it is no cheaper pilot, and none runs)
+  if (chosen.order > 0 && choice.steps / 4 >= 16 && 2 * quarter_options.steps <= choice.steps) {
     SimulationOptions& o = quarter_options;
-    const std::int64_t every = m / 4;  // the final run's common records, every m of its steps
-    o.method = chosen.method, o.record_every = every;
-    o.steps = steps_for(T, 4.0 * choice.dt, common_record_steps(every));
     o.dt = T / static_cast<double>(4 * o.steps) * 4.0;  // as coarse_options(final, 4) makes it, bit for bit
     PilotRun p;
     p.method = chosen.method, p.order = chosen.order, p.dt = o.dt, p.horizon = T, p.steps = o.steps;
@@ -465,7 +500,7 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
     if (bad == e.verdict.size() && !h.diverged && std::isfinite(p.error) && sized) {
       const double order = extrapolation_order(e, request.measure);
       const double dt = p.error > 0.0 ? o.dt * std::pow(target / p.error, 1.0 / order) : choice.dt;
-      const std::int64_t needed = steps_for(T, std::min(dt, o.dt), m), reusing = 4 * o.steps;
+      const std::int64_t needed = steps_for(T, std::min(dt, o.dt), multiple), reusing = 4 * o.steps;
       // 4x its steps reuses it (that run and its 2h run: 1.5x) where that costs less than a run of the steps
       // needed with its own estimate (1.75x)
       const bool reuse = needed <= reusing && 1.5 * static_cast<double>(reusing) <= 1.75 * static_cast<double>(needed);
@@ -511,6 +546,7 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
     }
     return checked(x);
   };
+  double predicted = choice.predicted_error;  // of the run about to be made
   // the first run, then a refinement while the certificate fails, at most max_refinements (each within max_steps)
   for (int attempt = 0; attempt <= max_refinements; ++attempt) {
     Records h = checked(o);
@@ -531,6 +567,7 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
     if (!out.ran || met || (std::isfinite(error) && !(error >= choice.certified_error))) {
       out.records = std::move(h), out.estimate = std::move(estimates.all), out.ran = true;
       choice.certified_error = error, choice.dt = o.dt, choice.steps = o.steps;
+      choice.method = chosen.method, choice.order = chosen.order;
     }
     if (met) {
       choice.met = true;
@@ -554,14 +591,26 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
     // an estimate that is not reliable still bounds the step from above where it is finite: at most dt / 2, less
     // where the estimate asks for less
     const double refined = std::isfinite(error) ? refined_step(o.dt, chosen.order, error, target) : o.dt / 2.0;
-    const std::int64_t steps = steps_for(T, reliable ? refined : std::min(refined, o.dt / 2.0), m);
+    std::int64_t steps = steps_for(T, reliable ? refined : std::min(refined, o.dt / 2.0), multiple);
+    const double f = error / predicted;
+    const PilotRun* other = reliable ? cheaper_with_growth(choice.pilots, chosen, steps, f, request, multiple) : nullptr;
+    if (other != nullptr) {
+      chosen = *other, candidate = {chosen.method, chosen.order}, o.method = chosen.method;
+      steps = steps_for(T, std::min(step_for_error(chosen.constant * f, chosen.order, T, target), chosen.dt), multiple);
+    }
     if (steps > request.max_steps) {
       choice.reason += "; " + why + ", and its refinement needs " + std::to_string(steps) +
                        " steps, above max_steps = " + std::to_string(request.max_steps);
       break;
     }
-    choice.reason += "; " + why + ": refined to " + std::to_string(steps) + " steps";
+    choice.reason += "; " + why +
+                     (other == nullptr ? std::string()
+                                       : ", " + format_number(f) + "x its prediction (every method's prediction " +
+                                             "scaled alike, " + method_info(chosen.method).name + " is the cheapest)") +
+                     ": refined to " + std::to_string(steps) + " steps";
     choice.refinements = attempt + 1;
+    predicted = other != nullptr ? predicted_error(chosen.constant * f, chosen.order, T / static_cast<double>(steps), T)
+                                 : error * std::pow(T / static_cast<double>(steps) / o.dt, chosen.order);
     o.dt = T / static_cast<double>(steps), o.steps = steps;
   }
   choice.run_seconds = seconds_since(run_start);
