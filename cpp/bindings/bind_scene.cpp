@@ -13,6 +13,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <numeric>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -1093,9 +1094,10 @@ std::shared_ptr<DeferredEstimate> deferred_estimate(std::shared_ptr<const Compil
 
 // simulate(..., tolerance=) of a scene: a Scene is compiled for each candidate it takes (a CompiledScene is its
 // own only candidate), each at the order it has (scene_order); the planner (tolerance.hpp) with the GIL released;
-// ToleranceError when the tolerance is not met, or before any run for a force the certificate cannot check. Under a
-// controller (None or a rigiddyn.Controller) each run samples a fresh copy of it (RunControllers) at steps that divide
-// its period four times over (controller_grid_steps), and the closed form 'exact', which takes no law, is no candidate.
+// ToleranceError when the tolerance is not met, or before any run for a force the certificate cannot check. Every run
+// steps onto the loads' switch times at dt, 2 dt and 4 dt (grid_steps_through). Under a controller (None or a
+// rigiddyn.Controller) each run samples a fresh copy of it (RunControllers) at steps that divide its period four times
+// over (controller_grid_steps), and the closed form 'exact', which takes no law, is no candidate.
 py::object simulate_scene_to_tolerance(py::handle model, py::handle method, const std::vector<BodyState>& initial,
                                        const CompiledSceneHandle& given, SimulationOptions base, const ToleranceArgs& a,
                                        py::handle progress, bool scalar_first, const std::optional<double>& level,
@@ -1107,7 +1109,12 @@ py::object simulate_scene_to_tolerance(py::handle model, py::handle method, cons
   }
   std::optional<RunControllers> controllers;
   if (!controller.is_none()) controllers.emplace(controller, given.scene);
-  const std::int64_t grid_steps = controllers ? controller_grid_steps(a.horizon, controllers->period()) : 0;
+  // every run's 4 dt ends at each of the loads' switch times (where they are fractions of the horizon that a grid
+  // within max_steps holds), and divides a controller's period
+  std::int64_t grid_steps = controllers ? controller_grid_steps(a.horizon, controllers->period()) : 0;
+  const std::int64_t switch_grid = grid_steps_through(
+      switch_times(given.compiled->switch_schedule(), base.t0, base.t0 + a.horizon), base.t0, a.horizon, a.max_steps);
+  if (switch_grid > 1) grid_steps = grid_steps > 0 ? std::lcm(grid_steps, switch_grid) : switch_grid;
   const bool fixed = is_instance<CompiledSceneHandle>(model) || !method.is_none();
   std::vector<CompiledSceneHandle> compiled;
   std::vector<ToleranceCandidate> candidates;

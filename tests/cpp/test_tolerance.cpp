@@ -66,6 +66,19 @@ TEST(ToleranceModel, AMispredictionScaledAlikeReplansOnTheCheapestCandidate) {
   EXPECT_EQ(tolerance_detail::cheaper_with_growth(pilots, pilots[0], 2000, std::nan(""), request, 4), nullptr);
 }
 
+TEST(ToleranceModel, AGridThroughSwitchTimesEndsABlockOfFourStepsAtEach) {
+  // 10 s and 20 s of 30 s: 1/3 and 2/3, steps a multiple of 12 (4 dt = 10 s / k)
+  EXPECT_EQ(grid_steps_through({10.0, 20.0}, 0.0, 30.0, 1'000'000), 12);
+  EXPECT_EQ(grid_steps_through({2.5}, 0.0, 10.0, 1'000'000), 16);  // 1/4: 4 dt = 2.5 s / k
+  EXPECT_EQ(grid_steps_through({5.0}, 0.0, 10.0, 1'000'000), 8);
+  EXPECT_EQ(grid_steps_through({7.5}, 0.0, 10.0, 1'000'000), 16);  // 3/4: 16 steps of 0.625 s, 4 dt = 2.5 s
+  EXPECT_EQ(grid_steps_through({3.1}, 1.0, 7.0, 1'000'000), 40);   // t − t0 = 2.1 s of 7 s: 3/10
+  EXPECT_EQ(grid_steps_through({}, 0.0, 30.0, 1'000'000), 1);      // no switch: any steps
+  EXPECT_EQ(grid_steps_through({3.14159265358979}, 0.0, 10.0, 1'000'000), 0);  // no fraction with b <= 1e4
+  EXPECT_EQ(grid_steps_through({1234.5}, 0.0, 86400.0, 1'000'000), 0);  // 2469 / 172800: b > 1e4, no grid
+  EXPECT_EQ(grid_steps_through({10.0, 20.0}, 0.0, 30.0, 8), 0);   // beyond the limit
+}
+
 TEST(ToleranceModel, ARefinementShrinksTheStepByTheMeasuredRatio) {
   // measured 16x the target at order 4: dt / 2
   EXPECT_DOUBLE_EQ(refined_step(0.1, 4, 16e-6, 1e-6), 0.05);

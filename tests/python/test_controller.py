@@ -322,6 +322,10 @@ def test_a_law_tolerance_cannot_rerun_or_not_a_controller_is_refused():
                     controller=rd.Controller(0.25, lambda s: {}, repeatable=True))
     with pytest.raises(TypeError, match="controller: expected a rigiddyn.Controller"):
         rd.simulate(thruster_scene(), [rd.RigidBodyState()], 0.1, 10, controller=lambda s: {})
+    # a grid finer than the cost cap allows: the cap's message names the grid
+    with pytest.raises(rd.ToleranceError, match=r"above max_steps = 1000 .* every run takes a multiple of 4000 steps"):
+        rd.simulate(thruster_scene(), [rd.RigidBodyState()], duration=1.0, tolerance=1e-6, max_steps=1000,
+                    controller=rd.Controller(0.001, lambda s: {}, repeatable=True))
 
 
 def test_gyro_noise_is_drawn_from_the_seed():

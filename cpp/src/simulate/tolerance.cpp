@@ -10,8 +10,10 @@
 #include <cmath>
 #include <cstdio>
 #include <numeric>
+#include <optional>
 #include <stdexcept>
 #include <string_view>
+#include <utility>
 
 namespace rigiddyn {
 
@@ -217,6 +219,43 @@ std::int64_t steps_for(double horizon, double dt_max, std::int64_t multiple) {
 
 std::int64_t on_grid(std::int64_t multiple, std::int64_t grid_steps) {
   return grid_steps > 0 ? std::lcm(multiple, grid_steps) : multiple;
+}
+
+namespace {
+
+// x in (0, 1] as a / b in lowest terms with b <= max_denominator and |x − a / b| <= 1e-12 x (the convergents of its
+// continued fraction, the best approximations with bounded denominators); none where no convergent is that close. (A
+// looser match would find a fraction for any x: every real is within 1 / b² of a convergent a / b.)
+std::optional<std::pair<std::int64_t, std::int64_t>> fraction_of(double x, std::int64_t max_denominator) {
+  std::int64_t a0 = 0, b0 = 1, a1 = 1, b1 = 0;  // the convergents before the current one
+  double rest = x;
+  for (int k = 0; k < 64; ++k) {
+    const double whole = std::floor(rest);
+    if (whole > 1e12) break;
+    const auto q = static_cast<std::int64_t>(whole);
+    const std::int64_t a = q * a1 + a0, b = q * b1 + b0;
+    if (b > max_denominator) break;
+    if (std::abs(x - static_cast<double>(a) / static_cast<double>(b)) <= 1e-12 * x) return std::pair(a, b);
+    a0 = a1, b0 = b1, a1 = a, b1 = b;
+    if (rest == whole) break;
+    rest = 1.0 / (rest - whole);
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::int64_t grid_steps_through(const std::vector<double>& times, double t0, double horizon, std::int64_t limit) {
+  std::int64_t steps = 1;
+  for (const double t : times) {
+    const auto fraction = fraction_of((t - t0) / horizon, 10'000);
+    if (!fraction) return 0;
+    const auto [a, b] = *fraction;
+    const std::int64_t needed = 4 * b / std::gcd(a, 4 * b);  // steps · a / (4 b) whole
+    if (needed > limit / steps * std::gcd(steps, needed)) return 0;  // the lcm would exceed limit
+    steps = std::lcm(steps, needed);
+  }
+  return steps;
 }
 
 double step_on_grid(double dt_max, double horizon, std::int64_t grid_steps) {

@@ -40,9 +40,10 @@
 // run takes 4x its steps where the steps it needs are between 6/7 of that and that (a cheaper run then with its own
 // estimate would cost more).
 //
-// On a grid (ToleranceRequest::grid_steps: a run under a controller sampled every P, 4T/P blocks of P/4) every step
-// the planner takes divides P/4: a pilot's step is the largest divisor of P/4 within its span / n, and every run over
-// the horizon takes a multiple of the grid's steps. Each run of an estimate, at dt, 2 dt and 4 dt, then steps onto
+// On a grid (ToleranceRequest::grid_steps: a run under a controller sampled every P, 4T/P blocks of P/4; a scene whose
+// loads switch at fractions a/b of the horizon, grid_steps_through) every step the planner takes divides a block: a
+// pilot's step is the largest divisor of T / grid_steps within its span / n, and every run over the horizon takes a
+// multiple of the grid's steps. Each run of an estimate, at dt, 2 dt and 4 dt, then steps onto
 // every sample, as the premise of Richardson extrapolation needs (a sample inside a step of the coarse runs alone
 // changes their error by more than a power of dt). The whole-horizon pilot runs only where the grid leaves it at most
 // half the final run's steps.
@@ -119,6 +120,13 @@ std::int64_t steps_for(double horizon, double dt_max, std::int64_t multiple);
 // The multiple of a run's steps on a grid of grid_steps steps over the horizon: lcm(multiple, grid_steps), so that the
 // run's step divides horizon / grid_steps (ToleranceRequest::grid_steps; `multiple` where grid_steps is 0).
 std::int64_t on_grid(std::int64_t multiple, std::int64_t grid_steps);
+
+// The fewest steps over [t0, t0 + horizon] whose blocks of four steps end at every time of `times` (each inside the
+// horizon): for each time, (t − t0) / horizon as a fraction a / b in lowest terms (b at most 1e4, within 1e-12
+// relative: times given in decimals), and the steps a multiple of 4b / gcd(a, 4b); their lcm over the times. 0 (no
+// grid) where a time is no such fraction or the lcm exceeds `limit`. A load that switches at such a time then switches
+// on a step's end in every run of an estimate, at dt, 2 dt and 4 dt alike (ToleranceRequest::grid_steps).
+std::int64_t grid_steps_through(const std::vector<double>& times, double t0, double horizon, std::int64_t limit);
 
 // The largest step at most dt_max that divides horizon / grid_steps: (horizon / grid_steps) / k for the least whole k
 // (dt_max itself where grid_steps is 0).
@@ -443,6 +451,10 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
                       std::to_string(cheapest->planned_steps) + " steps, above max_steps = " +
                       std::to_string(request.max_steps) + " (at max_steps its predicted error is " +
                       format_number(choice.predicted_error) + " " + error_measure_unit(request.measure) + ")";
+      if (request.grid_steps > request.max_steps) {
+        choice.reason += "; on the grid of its samples every run takes a multiple of " +
+                         std::to_string(request.grid_steps) + " steps (each step divides a quarter of the period)";
+      }
     } else {
       choice.reason = "no method reached its asymptotic regime in its pilot runs (each pilot's verdict is in pilots)";
     }
