@@ -45,7 +45,8 @@ TEST(ToleranceModel, AGridMakesEveryStepADivisorOfItsBlock) {
 // A certificate 100x its prediction over 100 s at τ = 1e-3 (target 5e-4): scaled alike (C f = 1e-4), an order-2
 // candidate needs dt = 0.05^(1/2) = 0.224 s, 448 steps at 2e-6 s a step (9.0e-4 s); an order-4 one dt = 0.05^(1/4) =
 // 0.473 s (within its pilot's 0.5 s), 212 steps at 3e-6 s (6.4e-4 s): the cheapest, where the chosen one's own
-// refinement would take 2 000 steps at 1e-6 s (2e-3 s).
+// refinement would take 2 000 steps at 1e-6 s (2e-3 s). At most the step of the run refined, 0.2 s (500 steps): the
+// order-2 one (500 steps at 2e-6 s, 1e-3 s) is then the cheapest.
 TEST(ToleranceModel, AMispredictionScaledAlikeReplansOnTheCheapestCandidate) {
   const auto pilot = [](Method method, int order, double constant, double dt, double seconds) {
     PilotRun p;
@@ -57,13 +58,17 @@ TEST(ToleranceModel, AMispredictionScaledAlikeReplansOnTheCheapestCandidate) {
                                         pilot(Method::exact_flow_kick, 2, 1e-6, 0.5, 2e-6),
                                         pilot(Method::rk4, 4, 1e-6, 0.5, 3e-6)};
   const ToleranceRequest request{1e-3, ErrorMeasure::attitude, 100.0, 10'000'000};
-  const PilotRun* other = tolerance_detail::cheaper_with_growth(pilots, pilots[0], 2000, 100.0, request, 4);
+  using tolerance_detail::cheaper_with_growth;
+  const PilotRun* other = cheaper_with_growth(pilots, pilots[0], 2000, 100.0, 0.5, request, 4);
   ASSERT_NE(other, nullptr);
   EXPECT_EQ(other->method, Method::rk4);
+  const PilotRun* finer = cheaper_with_growth(pilots, pilots[0], 2000, 100.0, 0.2, request, 4);
+  ASSERT_NE(finer, nullptr);
+  EXPECT_EQ(finer->method, Method::exact_flow_kick);
   // a refinement cheaper than any re-plan, or no misprediction (f <= 1): the chosen method stays
-  EXPECT_EQ(tolerance_detail::cheaper_with_growth(pilots, pilots[0], 100, 100.0, request, 4), nullptr);
-  EXPECT_EQ(tolerance_detail::cheaper_with_growth(pilots, pilots[0], 2000, 0.5, request, 4), nullptr);
-  EXPECT_EQ(tolerance_detail::cheaper_with_growth(pilots, pilots[0], 2000, std::nan(""), request, 4), nullptr);
+  EXPECT_EQ(cheaper_with_growth(pilots, pilots[0], 100, 100.0, 0.5, request, 4), nullptr);
+  EXPECT_EQ(cheaper_with_growth(pilots, pilots[0], 2000, 0.5, 0.5, request, 4), nullptr);
+  EXPECT_EQ(cheaper_with_growth(pilots, pilots[0], 2000, std::nan(""), 0.5, request, 4), nullptr);
 }
 
 TEST(ToleranceModel, AGridThroughSwitchTimesEndsABlockOfFourStepsAtEach) {

@@ -276,17 +276,18 @@ double order_cost_figure(int order, int evaluations, double relative) {
 namespace tolerance_detail {
 
 const PilotRun* cheaper_with_growth(const std::vector<PilotRun>& pilots, const PilotRun& chosen, std::int64_t steps,
-                                    double f, const ToleranceRequest& request, std::int64_t multiple) {
+                                    double f, double dt_run, const ToleranceRequest& request, std::int64_t multiple) {
   if (!(f > 1.0) || !std::isfinite(f)) return nullptr;
   const double T = request.horizon, target = request.safety * request.tolerance;
   double cheapest = static_cast<double>(steps) * chosen.seconds_per_step;
   const PilotRun* out = nullptr;
   for (const PilotRun& p : pilots) {
-    if (p.verdict != used || p.order == 0 || p.exact_on_scene || p.method == chosen.method ||
+    if (p.verdict != used || p.order <= chosen.order || p.exact_on_scene ||
         !std::isfinite(p.constant) || !std::isfinite(p.seconds_per_step)) {
       continue;
     }
-    const std::int64_t n = steps_for(T, std::min(step_for_error(p.constant * f, p.order, T, target), p.dt), multiple);
+    const double dt = std::min({step_for_error(p.constant * f, p.order, T, target), p.dt, dt_run});
+    const std::int64_t n = steps_for(T, dt, multiple);
     const double cost = static_cast<double>(n) * p.seconds_per_step;
     if (n <= request.max_steps && cost < cheapest) cheapest = cost, out = &p;
   }

@@ -12,10 +12,14 @@
 // reliable), at most max_refinements times: a step that the short pilots called asymptotic may not be over the whole
 // horizon (a cluster's close encounters come later), and a halving is then a guess that the next certificate checks.
 // A reliable certificate f times its prediction shows a growth g(t) of the error model C dt^p g(t) that the short
-// pilots did not see, which every method shares: each used candidate is then planned again with its prediction scaled
-// by f, and the refinement takes the cheapest plan (measured on a controller's grid, where every candidate's step was
-// capped alike: a second-order splitting 493x its prediction over 4 orbits would have needed 7x its steps, where rk4
-// met the tolerance at the same steps).
+// pilots did not see, which every method shares: each used candidate of a higher order is then planned again with its
+// prediction scaled by f, at most at the step of the run refined (whose estimate's runs showed the whole horizon at
+// that step and coarser; a coarser step of another method is unseen there: the cluster's close encounters), and the
+// refinement takes the cheapest plan (one of the same order gains nothing from the growth; two alike, a splitting and
+// exact_flow_kick on the cluster, took turns at the same steps) (measured on a controller's grid, where every
+// candidate's step was capped alike: a
+// second-order splitting 493x its prediction over 4 orbits would have needed 7x its steps, where rk4 met the tolerance
+// at the same steps).
 // A certificate that is the round-off bound at every record (at_round_off) is not refined: that bound grows with the
 // steps, so the tolerance is below what the run can certify in double precision.
 //
@@ -43,10 +47,10 @@
 // On a grid (ToleranceRequest::grid_steps: a run under a controller sampled every P, 4T/P blocks of P/4; a scene whose
 // loads switch at fractions a/b of the horizon, grid_steps_through) every step the planner takes divides a block: a
 // pilot's step is the largest divisor of T / grid_steps within its span / n, and every run over the horizon takes a
-// multiple of the grid's steps. Each run of an estimate, at dt, 2 dt and 4 dt, then steps onto
-// every sample, as the premise of Richardson extrapolation needs (a sample inside a step of the coarse runs alone
-// changes their error by more than a power of dt). The whole-horizon pilot runs only where the grid leaves it at most
-// half the final run's steps.
+// multiple of the grid's steps. Each run of an estimate, at dt, 2 dt and 4 dt, then steps onto every sample and
+// switch, as the premise of Richardson extrapolation needs (one inside a step of the coarse runs alone changes their
+// error by more than a power of dt: the shipped solar array's certificate was 4.2x below its true error). The
+// whole-horizon pilot runs only where the grid leaves it at most half the final run's steps.
 //
 // The method 'exact' (order 0, a closed form) has no truncation error: its error is the round-off bound of the
 // run, and its cost is per record, not per step. It runs at the step of the cheapest stepping candidate (so
@@ -211,9 +215,10 @@ struct ToleranceRequest {
   double horizon;        // T = the run's duration [s]
   std::int64_t max_steps;  // the cost cap: no run of more steps (the final run and its refinement)
   double safety = 0.5;   // s: the run aims at s τ
-  // every run's steps a multiple of this, so that every step divides T / grid_steps (0: any steps): a run under a
-  // controller sampled every P takes 4T/P, so that each run of an estimate, at dt, 2 dt and 4 dt, steps onto every
-  // sample (a sample inside a step of the coarse runs alone breaks the premise of Richardson extrapolation)
+  // every run's steps a multiple of this, so that every step divides T / grid_steps (0: any steps): 4T/P under a
+  // controller sampled every P, and grid_steps_through the loads' switch times, so that each run of an estimate, at
+  // dt, 2 dt and 4 dt, steps onto every sample and switch (one inside a step of the coarse runs alone breaks the
+  // premise of Richardson extrapolation)
   std::int64_t grid_steps = 0;
 };
 
@@ -263,13 +268,14 @@ namespace tolerance_detail {
 // The verdict of a pilot that is usable, and the text of the choice.
 inline const std::string used = "used";
 
-// After a reliable certificate f times the prediction of a run of `chosen` (f > 1: a growth g(t) of the error model
-// C dt^p g(t) that the short pilots did not see, which the methods share), the used stepping candidate other than
-// `chosen` whose plan with its prediction scaled by f costs least, where that is less than `chosen`'s refinement of
-// `steps` steps; null where none is (or f is not > 1). (A low order whose step was capped with the others', e.g. at
-// a controller's grid, may need many times their steps once its error is seen.)
+// After a reliable certificate f times the prediction of a run of `chosen` at step dt_run (f > 1: a growth g(t) of the
+// error model C dt^p g(t) that the short pilots did not see, which the methods share), the used stepping candidate of
+// a higher order than `chosen`'s whose plan with its prediction scaled by f, at a step of at most dt_run, costs least,
+// where that is less than `chosen`'s refinement of `steps` steps; null where none is (or f is not > 1). (A low order
+// whose step was capped with the others', e.g. at a controller's grid, may need many times their steps once its error
+// is seen.)
 const PilotRun* cheaper_with_growth(const std::vector<PilotRun>& pilots, const PilotRun& chosen, std::int64_t steps,
-                                    double f, const ToleranceRequest& request, std::int64_t multiple);
+                                    double f, double dt_run, const ToleranceRequest& request, std::int64_t multiple);
 std::string describe_choice(const ToleranceChoice& c, const PilotRun& chosen, std::size_t piloted);
 std::string format_number(double value);
 double seconds_since(std::chrono::steady_clock::time_point start);
@@ -452,8 +458,9 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
                       std::to_string(request.max_steps) + " (at max_steps its predicted error is " +
                       format_number(choice.predicted_error) + " " + error_measure_unit(request.measure) + ")";
       if (request.grid_steps > request.max_steps) {
-        choice.reason += "; on the grid of its samples every run takes a multiple of " +
-                         std::to_string(request.grid_steps) + " steps (each step divides a quarter of the period)";
+        choice.reason += "; every run takes a multiple of " + std::to_string(request.grid_steps) +
+                         " steps (a controller's samples and the loads' switch times on a step's end at dt, 2 dt and "
+                         "4 dt alike)";
       }
     } else {
       choice.reason = "no method reached its asymptotic regime in its pilot runs (each pilot's verdict is in pilots)";
@@ -605,10 +612,12 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
     const double refined = std::isfinite(error) ? refined_step(o.dt, chosen.order, error, target) : o.dt / 2.0;
     std::int64_t steps = steps_for(T, reliable ? refined : std::min(refined, o.dt / 2.0), multiple);
     const double f = error / predicted;
-    const PilotRun* other = reliable ? cheaper_with_growth(choice.pilots, chosen, steps, f, request, multiple) : nullptr;
+    const PilotRun* other =
+        reliable ? cheaper_with_growth(choice.pilots, chosen, steps, f, o.dt, request, multiple) : nullptr;
     if (other != nullptr) {
       chosen = *other, candidate = {chosen.method, chosen.order}, o.method = chosen.method;
-      steps = steps_for(T, std::min(step_for_error(chosen.constant * f, chosen.order, T, target), chosen.dt), multiple);
+      const double dt = std::min({step_for_error(chosen.constant * f, chosen.order, T, target), chosen.dt, o.dt});
+      steps = steps_for(T, dt, multiple);
     }
     if (steps > request.max_steps) {
       choice.reason += "; " + why + ", and its refinement needs " + std::to_string(steps) +
