@@ -322,8 +322,8 @@ const char* const simulate_doc = R"doc(Integrate a body or a scene over fixed st
 Runs `steps` fixed steps of `dt` with `method` (see methods()) from `initial` at time t0, in C++ with the GIL
 released (a run of fewer than 512 steps times bodies keeps it, unless a controller drives it: taking it back would
 cost more than such a run, and could wait for another thread), and records every `record_every`-th step plus the
-first and the last (records at t0 + i dt). The loads are a piecewise-constant schedule: a step that crosses a switch time (a t_start or t_end) is
-split there into sub-steps of the same method, so every method keeps its order.
+first and the last (records at t0 + i dt). The loads are a piecewise-constant schedule: a step that crosses a
+switch time (a t_start or t_end) is split there into sub-steps of the same method, so every method keeps its order.
 
 Parameters
 ----------

@@ -13,7 +13,6 @@
 #include <limits>
 #include <map>
 #include <memory>
-#include <numeric>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -1114,7 +1113,7 @@ py::object simulate_scene_to_tolerance(py::handle model, py::handle method, cons
   std::int64_t grid_steps = controllers ? controller_grid_steps(a.horizon, controllers->period()) : 0;
   const std::int64_t switch_grid = grid_steps_through(
       switch_times(given.compiled->switch_schedule(), base.t0, base.t0 + a.horizon), base.t0, a.horizon, a.max_steps);
-  if (switch_grid > 1) grid_steps = grid_steps > 0 ? std::lcm(grid_steps, switch_grid) : switch_grid;
+  if (switch_grid > 1) grid_steps = on_grid(switch_grid, grid_steps);
   const bool fixed = is_instance<CompiledSceneHandle>(model) || !method.is_none();
   std::vector<CompiledSceneHandle> compiled;
   std::vector<ToleranceCandidate> candidates;

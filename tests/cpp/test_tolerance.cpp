@@ -59,16 +59,18 @@ TEST(ToleranceModel, AMispredictionScaledAlikeReplansOnTheCheapestCandidate) {
                                         pilot(Method::rk4, 4, 1e-6, 0.5, 3e-6)};
   const ToleranceRequest request{1e-3, ErrorMeasure::attitude, 100.0, 10'000'000};
   using tolerance_detail::cheaper_with_growth;
-  const PilotRun* other = cheaper_with_growth(pilots, pilots[0], 2000, 100.0, 0.5, request, 4);
-  ASSERT_NE(other, nullptr);
-  EXPECT_EQ(other->method, Method::rk4);
-  const PilotRun* finer = cheaper_with_growth(pilots, pilots[0], 2000, 100.0, 0.2, request, 4);
-  ASSERT_NE(finer, nullptr);
-  EXPECT_EQ(finer->method, Method::exact_flow_kick);
+  const tolerance_detail::Replan other = cheaper_with_growth(pilots, pilots[0], 2000, 100.0, 0.5, request, 4);
+  ASSERT_NE(other.pilot, nullptr);
+  EXPECT_EQ(other.pilot->method, Method::rk4);
+  EXPECT_EQ(other.steps, 212);
+  const tolerance_detail::Replan finer = cheaper_with_growth(pilots, pilots[0], 2000, 100.0, 0.2, request, 4);
+  ASSERT_NE(finer.pilot, nullptr);
+  EXPECT_EQ(finer.pilot->method, Method::exact_flow_kick);
+  EXPECT_EQ(finer.steps, 500);
   // a refinement cheaper than any re-plan, or no misprediction (f <= 1): the chosen method stays
-  EXPECT_EQ(cheaper_with_growth(pilots, pilots[0], 100, 100.0, 0.5, request, 4), nullptr);
-  EXPECT_EQ(cheaper_with_growth(pilots, pilots[0], 2000, 0.5, 0.5, request, 4), nullptr);
-  EXPECT_EQ(cheaper_with_growth(pilots, pilots[0], 2000, std::nan(""), 0.5, request, 4), nullptr);
+  EXPECT_EQ(cheaper_with_growth(pilots, pilots[0], 100, 100.0, 0.5, request, 4).pilot, nullptr);
+  EXPECT_EQ(cheaper_with_growth(pilots, pilots[0], 2000, 0.5, 0.5, request, 4).pilot, nullptr);
+  EXPECT_EQ(cheaper_with_growth(pilots, pilots[0], 2000, std::nan(""), 0.5, request, 4).pilot, nullptr);
 }
 
 TEST(ToleranceModel, AGridThroughSwitchTimesEndsABlockOfFourStepsAtEach) {

@@ -260,8 +260,8 @@ std::int64_t grid_steps_through(const std::vector<double>& times, double t0, dou
 
 double step_on_grid(double dt_max, double horizon, std::int64_t grid_steps) {
   if (grid_steps <= 0) return dt_max;
-  const double grid = horizon / static_cast<double>(grid_steps);
-  return grid / std::max(1.0, std::ceil(grid / dt_max * (1.0 - 1e-12)));
+  const double block = horizon / static_cast<double>(grid_steps);
+  return block / static_cast<double>(steps_for(block, dt_max, 1));  // the fewest steps of a block within dt_max
 }
 
 double refined_step(double dt, int order, double measured, double target) {
@@ -275,12 +275,12 @@ double order_cost_figure(int order, int evaluations, double relative) {
 
 namespace tolerance_detail {
 
-const PilotRun* cheaper_with_growth(const std::vector<PilotRun>& pilots, const PilotRun& chosen, std::int64_t steps,
-                                    double f, double dt_run, const ToleranceRequest& request, std::int64_t multiple) {
-  if (!(f > 1.0) || !std::isfinite(f)) return nullptr;
+Replan cheaper_with_growth(const std::vector<PilotRun>& pilots, const PilotRun& chosen, std::int64_t steps, double f,
+                           double dt_run, const ToleranceRequest& request, std::int64_t multiple) {
+  Replan out;
+  if (!(f > 1.0) || !std::isfinite(f)) return out;
   const double T = request.horizon, target = request.safety * request.tolerance;
   double cheapest = static_cast<double>(steps) * chosen.seconds_per_step;
-  const PilotRun* out = nullptr;
   for (const PilotRun& p : pilots) {
     if (p.verdict != used || p.order <= chosen.order || p.exact_on_scene ||
         !std::isfinite(p.constant) || !std::isfinite(p.seconds_per_step)) {
@@ -289,7 +289,7 @@ const PilotRun* cheaper_with_growth(const std::vector<PilotRun>& pilots, const P
     const double dt = std::min({step_for_error(p.constant * f, p.order, T, target), p.dt, dt_run});
     const std::int64_t n = steps_for(T, dt, multiple);
     const double cost = static_cast<double>(n) * p.seconds_per_step;
-    if (n <= request.max_steps && cost < cheapest) cheapest = cost, out = &p;
+    if (n <= request.max_steps && cost < cheapest) cheapest = cost, out = {&p, n};
   }
   return out;
 }

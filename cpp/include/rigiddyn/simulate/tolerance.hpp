@@ -12,14 +12,13 @@
 // reliable), at most max_refinements times: a step that the short pilots called asymptotic may not be over the whole
 // horizon (a cluster's close encounters come later), and a halving is then a guess that the next certificate checks.
 // A reliable certificate f times its prediction shows a growth g(t) of the error model C dt^p g(t) that the short
-// pilots did not see, which every method shares: each used candidate of a higher order is then planned again with its
-// prediction scaled by f, at most at the step of the run refined (whose estimate's runs showed the whole horizon at
-// that step and coarser; a coarser step of another method is unseen there: the cluster's close encounters), and the
-// refinement takes the cheapest plan (one of the same order gains nothing from the growth; two alike, a splitting and
-// exact_flow_kick on the cluster, took turns at the same steps) (measured on a controller's grid, where every
-// candidate's step was capped alike: a
-// second-order splitting 493x its prediction over 4 orbits would have needed 7x its steps, where rk4 met the tolerance
-// at the same steps).
+// pilots did not see, which every method shares. Each used candidate of a higher order is then planned again with its
+// prediction scaled by f, and the refinement takes the cheapest of those plans and its own. Measured on a controller's
+// grid, where every candidate's step was capped alike: a second-order splitting 493x its prediction over 4 orbits
+// would have needed 7x its steps, where rk4 met the tolerance at the same steps. Two limits keep it from guessing: a
+// plan's step is at most the refined run's (whose estimate saw the whole horizon at that step and coarser, and no
+// other: on the cluster, rk4 at a coarser step met close encounters unseen), and a method of the same order gains
+// nothing from the growth (on the cluster, a splitting and exact_flow_kick, alike there, took turns at the same steps).
 // A certificate that is the round-off bound at every record (at_round_off) is not refined: that bound grows with the
 // steps, so the tolerance is below what the run can certify in double precision.
 //
@@ -268,14 +267,20 @@ namespace tolerance_detail {
 // The verdict of a pilot that is usable, and the text of the choice.
 inline const std::string used = "used";
 
+// A plan of another candidate: its pilot and its steps over the horizon.
+struct Replan {
+  const PilotRun* pilot = nullptr;
+  std::int64_t steps = 0;
+};
+
 // After a reliable certificate f times the prediction of a run of `chosen` at step dt_run (f > 1: a growth g(t) of the
 // error model C dt^p g(t) that the short pilots did not see, which the methods share), the used stepping candidate of
-// a higher order than `chosen`'s whose plan with its prediction scaled by f, at a step of at most dt_run, costs least,
-// where that is less than `chosen`'s refinement of `steps` steps; null where none is (or f is not > 1). (A low order
-// whose step was capped with the others', e.g. at a controller's grid, may need many times their steps once its error
-// is seen.)
-const PilotRun* cheaper_with_growth(const std::vector<PilotRun>& pilots, const PilotRun& chosen, std::int64_t steps,
-                                    double f, double dt_run, const ToleranceRequest& request, std::int64_t multiple);
+// a higher order than `chosen`'s whose plan with its prediction scaled by f, at a step of at most dt_run (and its
+// pilot's), costs least, where that is less than `chosen`'s refinement of `steps` steps; no pilot where none is (or f
+// is not > 1). (A low order whose step was capped with the others', e.g. at a controller's grid, may need many times
+// their steps once its error is seen.)
+Replan cheaper_with_growth(const std::vector<PilotRun>& pilots, const PilotRun& chosen, std::int64_t steps, double f,
+                           double dt_run, const ToleranceRequest& request, std::int64_t multiple);
 std::string describe_choice(const ToleranceChoice& c, const PilotRun& chosen, std::size_t piloted);
 std::string format_number(double value);
 double seconds_since(std::chrono::steady_clock::time_point start);
@@ -612,13 +617,12 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
     const double refined = std::isfinite(error) ? refined_step(o.dt, chosen.order, error, target) : o.dt / 2.0;
     std::int64_t steps = steps_for(T, reliable ? refined : std::min(refined, o.dt / 2.0), multiple);
     const double f = error / predicted;
-    const PilotRun* other =
-        reliable ? cheaper_with_growth(choice.pilots, chosen, steps, f, o.dt, request, multiple) : nullptr;
-    if (other != nullptr) {
-      chosen = *other, candidate = {chosen.method, chosen.order}, o.method = chosen.method;
-      const double dt = std::min({step_for_error(chosen.constant * f, chosen.order, T, target), chosen.dt, o.dt});
-      steps = steps_for(T, dt, multiple);
+    const PilotRun* other = nullptr;
+    if (reliable) {
+      const Replan replan = cheaper_with_growth(choice.pilots, chosen, steps, f, o.dt, request, multiple);
+      if (replan.pilot != nullptr) other = replan.pilot, steps = replan.steps;
     }
+    if (other != nullptr) chosen = *other, candidate = {chosen.method, chosen.order}, o.method = chosen.method;
     if (steps > request.max_steps) {
       choice.reason += "; " + why + ", and its refinement needs " + std::to_string(steps) +
                        " steps, above max_steps = " + std::to_string(request.max_steps);
