@@ -1108,11 +1108,13 @@ py::object simulate_scene_to_tolerance(py::handle model, py::handle method, cons
   }
   std::optional<RunControllers> controllers;
   if (!controller.is_none()) controllers.emplace(controller, given.scene);
-  // every run's 4 dt ends at each of the loads' switch times (where they are fractions of the horizon that a grid
-  // within max_steps holds), and divides a controller's period
+  // every run's 4 dt ends at each of the loads' switch times (where they are fractions of the horizon that a grid of
+  // at most switch_grid_limit steps holds; elsewhere the certificate takes no failing record), and divides a
+  // controller's period
   std::int64_t grid_steps = controllers ? controller_grid_steps(a.horizon, controllers->period()) : 0;
-  const std::int64_t switch_grid = grid_steps_through(
-      switch_times(given.compiled->switch_schedule(), base.t0, base.t0 + a.horizon), base.t0, a.horizon, a.max_steps);
+  std::vector<double> switches = switch_times(given.compiled->switch_schedule(), base.t0, base.t0 + a.horizon);
+  const std::int64_t switch_grid = grid_steps_through(switches, base.t0, a.horizon,
+                                                      std::min(a.max_steps, switch_grid_limit));
   if (switch_grid > 1) grid_steps = on_grid(switch_grid, grid_steps);
   const bool fixed = is_instance<CompiledSceneHandle>(model) || !method.is_none();
   std::vector<CompiledSceneHandle> compiled;
@@ -1137,7 +1139,7 @@ py::object simulate_scene_to_tolerance(py::handle model, py::handle method, cons
   {
     py::gil_scoped_release release;
     run = run_to_tolerance<SceneSimulation>(
-        candidates, base, {a.tolerance, a.measure, a.horizon, a.max_steps, 0.5, grid_steps},
+        candidates, base, {a.tolerance, a.measure, a.horizon, a.max_steps, 0.5, grid_steps, std::move(switches)},
         [&](const ToleranceCandidate& c, const SimulationOptions& o) {
           const auto at = std::find_if(compiled.begin(), compiled.end(),
                                        [&](const CompiledSceneHandle& h) { return h.method == c.method; });

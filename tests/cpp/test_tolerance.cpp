@@ -169,6 +169,51 @@ TEST(ToleranceModel, TheLargestErrorsOrderOverridesANoisyRecord) {
   EXPECT_EQ(first_uncertified(e, ErrorMeasure::attitude, 1e-8), 3u);
 }
 
+// A load that switches inside a step of the coarsest run: the runs at h, 2h and 4h split their steps at different
+// places, and the largest error's order no longer vouches for the records that fail
+TEST(ToleranceModel, ASwitchInsideACoarseStepLeavesNoFailingRecordCertified) {
+  GlobalErrorEstimate e;
+  e.order = 4;
+  e.attitude = {0.0, 1e-7, 2e-7, 1e-9};
+  e.observed_order = {std::nan(""), 4.0, 4.1, 1.0};
+  e.verdict = {"reliable", "reliable", "reliable", "not asymptotic: observed order 1 where 4 is expected (attitude)"};
+  EXPECT_EQ(first_uncertified(e, ErrorMeasure::attitude, 1e-8, false), 4u);
+  EXPECT_EQ(first_uncertified(e, ErrorMeasure::attitude, 1e-8, true), 3u);
+  // every record accepted on its own: certified either way
+  EXPECT_EQ(first_uncertified(e, ErrorMeasure::attitude, 1e-6, true), 4u);
+}
+
+// above the window: q > p + log2 1.5 (p = 4: 4.585), read from the verdict's text as global_error.cpp writes it
+TEST(ToleranceModel, AnOrderAboveTheWindowIsReadFromItsVerdict) {
+  EXPECT_TRUE(above_the_window("not asymptotic: observed order 4.7 where 4 is expected (attitude)"));
+  EXPECT_TRUE(above_the_window("not asymptotic: observed order 1e+02 where 4 is expected (energy)"));
+  EXPECT_TRUE(above_the_window("not asymptotic: observed order inf where 2 is expected (energy)"));
+  EXPECT_FALSE(above_the_window("not asymptotic: observed order 4.5 where 4 is expected (attitude)"));
+  EXPECT_FALSE(above_the_window("not asymptotic: observed order 1 where 4 is expected (attitude)"));
+  EXPECT_FALSE(above_the_window("not asymptotic: observed order nan where 4 is expected (attitude)"));
+  EXPECT_FALSE(above_the_window("not asymptotic: observed order 9 where 4 was expected"));
+  EXPECT_FALSE(above_the_window("past the Lyapunov time of this scene: the differences grow as e^(3 t) from t = 1 s "
+                                "(nearby trajectories diverge exponentially); not asymptotic: observed order 9 where "
+                                "4 is expected (position)"));
+  EXPECT_FALSE(above_the_window("reliable"));
+  EXPECT_FALSE(above_the_window("not asymptotic: observed order "));
+}
+
+TEST(ToleranceModel, ASwitchIsInsideACoarseStepWhereNoMultipleOf4dtReachesIt) {
+  SimulationOptions o;
+  o.t0 = 0.0, o.dt = 1.875, o.steps = 16;  // 4 dt = 7.5 s over 30 s
+  EXPECT_TRUE(switch_inside_coarse_step({10.0}, o));
+  EXPECT_FALSE(switch_inside_coarse_step({7.5, 15.0, 22.5}, o));
+  EXPECT_FALSE(switch_inside_coarse_step({0.0, 30.0, 31.0, -1.0}, o));  // at or outside the run's ends: no step
+  EXPECT_TRUE(switch_inside_coarse_step({7.5, 20.0}, o));
+  o.dt = 2.5, o.steps = 12;  // 4 dt = 10 s
+  EXPECT_FALSE(switch_inside_coarse_step({10.0, 20.0}, o));
+  o.t0 = 0.1, o.dt = 0.1, o.steps = 300;  // grid times t0 + k 0.4 s, rounded: on the grid within a few ulps
+  EXPECT_FALSE(switch_inside_coarse_step({0.1 + 0.4 * 7, 12.1}, o));
+  EXPECT_TRUE(switch_inside_coarse_step({12.1 + 1e-9}, o));
+  EXPECT_FALSE(switch_inside_coarse_step({}, o));
+}
+
 TEST(ToleranceModel, ACoarseRunBeyondTheStabilityLimitIsNeverCertified) {
   GlobalErrorEstimate e;
   e.order = 4;
