@@ -5,10 +5,12 @@
 #include "rigiddyn/simulate/tolerance.hpp"
 #include "rigiddyn/so3/angular_distance.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rigiddyn {
@@ -413,6 +415,46 @@ TEST(RunToTolerance, EveryRunOnAGridStepsOnADivisorOfItsPeriod) {
     const double per_period = period / dt;  // a whole number, to the round-off of the divisions that made dt
     EXPECT_NEAR(per_period, std::round(per_period), 1e-9 * per_period) << "dt = " << dt;
   }
+}
+
+TEST(ToleranceModel, APilotsAttemptsHalveItsStep) {
+  for (int attempt = 0; attempt < pilot_attempts; ++attempt) {
+    const PilotSpan at = pilot_span(64.0, attempt);
+    EXPECT_EQ(at.span / static_cast<double>(at.steps), std::ldexp(1.0, -attempt)) << attempt;  // T / 64 / 2^attempt
+    EXPECT_GE(at.span, 64.0 / 32.0);
+  }
+  EXPECT_EQ(pilot_span(64.0, 0).span, 16.0);
+  EXPECT_EQ(pilot_span(64.0, pilot_attempts - 1).steps, 512);
+}
+
+// A later candidate's pilot starts one attempt before the coarsest an earlier pilot was used at: at twice its step
+// (a free body spinning at 10 rad/s, whose rk4 pilot is not asymptotic at 16 steps over T/4 or T/8)
+TEST(RunToTolerance, ALaterPilotStartsAtTwiceTheStepAnEarlierOneWasUsedAt) {
+  const RigidBody body(1.0, Eigen::Vector3d(1.0, 2.0, 3.0));
+  RigidBodyState initial;
+  initial.w_B = Eigen::Vector3d(1.0, 10.0, 1.0);
+  std::vector<std::pair<Method, double>> runs;  // each run's method and step, in order
+  const auto run = [&](const ToleranceCandidate& c, const SimulationOptions& o) {
+    runs.emplace_back(c.method, o.dt);
+    SimulationOptions x = o;
+    x.method = c.method;
+    return simulate(body, initial, x);
+  };
+  SimulationOptions base;
+  base.record_every = 4;
+  const double horizon = 20.0;
+  const auto out = run_to_tolerance<Trajectory>({{Method::rk4, 4}, {Method::splitting_dlm, 2}}, base,
+                                                {1e-3, ErrorMeasure::attitude, horizon, 10'000'000}, run);
+  ASSERT_TRUE(out.ran);
+  ASSERT_EQ(out.choice.pilots[0].method, Method::rk4);
+  ASSERT_EQ(out.choice.pilots[0].verdict, "used");
+  const double used = out.choice.pilots[0].dt;
+  EXPECT_LT(used, horizon / 64.0);  // rk4's first attempts were not used (else this checks nothing)
+  const auto first_splitting = std::find_if(runs.begin(), runs.end(), [](const auto& r) {
+    return r.first == Method::splitting_dlm;
+  });
+  ASSERT_NE(first_splitting, runs.end());
+  EXPECT_EQ(first_splitting->second, 2.0 * used);
 }
 
 TEST(RunToTolerance, TheCostCapIsReportedWithoutARun) {

@@ -24,7 +24,11 @@
 //
 // Pilots: 16 steps over T/4 first; while the pilot's estimate is not reliable its horizon is halved (down to T/32, the
 // step with it) and then its steps doubled (up to 512). Its cost is that of ~28 steps whatever the horizon, a small
-// part of any run long enough to need a choice. A run's step is at most its pilot's (see below), except for a method
+// part of any run long enough to need a choice. A later candidate's pilot starts one attempt before the coarsest an
+// earlier pilot was used at, not at T/4: the attempts coarser than that found the scene's motion unresolved for the
+// earlier methods, and one of them is still tried for a method that resolves it at a coarser step (the shipped
+// pendulum at 1e-3 rad made 17 attempts for its five pilots, each 3 runs and an estimate; now 13, with the same
+// pilots used). A run's step is at most its pilot's (see below), except for a method
 // exact on the scene: one whose flow is exact without torques (exact_torque_free) and whose pilot's estimate is its
 // round-off bound at every record (a torque-free body) has no truncation error and no stability limit, and runs at the
 // fewest steps the planner gives a run (fewest_run_steps); such a method is piloted first, and where it is exact
@@ -165,6 +169,18 @@ inline constexpr int max_refinements = 3;
 // it, and p below p or where none was measured (the error model C dt^q of Hairer, Nørsett & Wanner above, q measured
 // as global_error.hpp's observed order). The certificate then checks the run the extrapolation chose.
 double extrapolation_order(const GlobalErrorEstimate& e, ErrorMeasure measure);
+
+// A pilot's attempts, coarsest first: 16 steps over T/4, T/8, T/16 and T/32, then 32, 64, ... 512 steps over T/32
+// (each attempt's step half the one before)
+inline constexpr int pilot_attempts = 9;
+struct PilotSpan {
+  double span;         // [s]
+  std::int64_t steps;
+};
+inline PilotSpan pilot_span(double horizon, int attempt) {
+  return attempt < 4 ? PilotSpan{horizon / 4.0 / std::ldexp(1.0, attempt), 16}
+                     : PilotSpan{horizon / 32.0, std::int64_t{16} << (attempt - 3)};
+}
 
 // The fewest steps the planner gives a run over the whole horizon: the records of a method exact on the scene, and
 // of the closed form when no stepping plan sets them.
@@ -338,20 +354,21 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
     p.method = c.method, p.order = c.order, p.verdict = std::move(verdict);
     return p;
   };
-  // one candidate's pilot (see above), and the size of its measure (its records' measure_scale) where it is used
+  // one candidate's pilot (see above), the size of its measure (its records' measure_scale) where it is used, and the
+  // attempt that was (pilot_attempt; -1: none)
   struct Piloted {
     PilotRun run;
     double scale = std::numeric_limits<double>::quiet_NaN();
+    int attempt = -1;
   };
-  const auto pilot_of = [&](const ToleranceCandidate& c) {
+  const auto pilot_of = [&](const ToleranceCandidate& c, int first_attempt) {
     Piloted out_c{pilot_entry(c, "")};
     PilotRun& p = out_c.run;
-    double span = T / 4.0;
-    std::int64_t n = 16;
-    for (int attempt = 0; attempt < 10; ++attempt) {
+    for (int attempt = first_attempt; attempt < pilot_attempts; ++attempt) {
+      const PilotSpan at = pilot_span(T, attempt);
       SimulationOptions o = base;
-      o.method = c.method, o.dt = step_on_grid(span / static_cast<double>(n), T, request.grid_steps), o.steps = n;
-      o.record_every = 4;
+      o.method = c.method, o.dt = step_on_grid(at.span / static_cast<double>(at.steps), T, request.grid_steps);
+      o.steps = at.steps, o.record_every = 4;
       double seconds = 0.0;
       const auto timed = [&](const SimulationOptions& x) {
         Records r = run(c, x);
@@ -364,9 +381,9 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
       const GlobalErrorEstimate e = measured_global_error(h, o, c.order, timed, request.measure).measure;
       if (out.interrupted) return out_c;
       const ErrorRecords records = error_records(h);
-      p.dt = o.dt, p.horizon = o.dt * static_cast<double>(n), p.steps = n;
+      p.dt = o.dt, p.horizon = o.dt * static_cast<double>(at.steps), p.steps = at.steps;
       p.error = e.verdict.empty() ? p.error : largest_error(e, request.measure);
-      p.seconds_per_step = seconds / (1.75 * static_cast<double>(n));
+      p.seconds_per_step = seconds / (1.75 * static_cast<double>(at.steps));
       const std::size_t bad =
           first_uncertified(e, request.measure, request.tolerance, switch_inside_coarse_step(request.switch_times, o));
       if (bad == e.verdict.size() && !h.diverged) {
@@ -374,18 +391,19 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
         out_c.scale = std::max(measure_scale(records, request.measure), 1e-300);
         p.exact_on_scene = method_info(c.method).exact_torque_free && at_round_off(e);
         p.verdict = used;
+        out_c.attempt = attempt;
         return out_c;
       }
       p.verdict = "not asymptotic at dt = " + format_number(o.dt) + " s: " + (bad < e.verdict.size() ? e.verdict[bad] : "diverged");
-      if (span > T / 32.0) {
-        span /= 2.0;
-      } else if (n < 512) {
-        n *= 2;
-      } else {
-        break;
-      }
     }
     return out_c;
+  };
+  // the coarsest attempt an earlier pilot was used at (-1: none yet); each later pilot starts one attempt before it,
+  // since the attempts before that showed the scene's motion unresolved at their steps (pilot_attempts)
+  int coarsest_used = -1;
+  const auto first_attempt = [&] { return std::max(coarsest_used - 1, 0); };
+  const auto learn = [&](const Piloted& piloted) {
+    if (piloted.attempt >= 0 && (coarsest_used < 0 || piloted.attempt < coarsest_used)) coarsest_used = piloted.attempt;
   };
 
   // the pilots: a method that may be exact on the scene first, since where one is no other method can take fewer
@@ -394,8 +412,9 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
   std::string exact_on_scene;  // the name of the method exact on the scene, if one is
   for (std::size_t i = 0; i < candidates.size() && exact_on_scene.empty(); ++i) {
     if (candidates[i].order == 0 || !method_info(candidates[i].method).exact_torque_free) continue;
-    early[i] = pilot_of(candidates[i]);
+    early[i] = pilot_of(candidates[i], first_attempt());
     if (out.interrupted) return out;
+    learn(*early[i]);
     if (early[i]->run.exact_on_scene) exact_on_scene = method_info(candidates[i].method).name;
   }
   double scale = std::numeric_limits<double>::quiet_NaN(), best_figure = std::numeric_limits<double>::infinity();
@@ -421,8 +440,9 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
         continue;
       }
     }
-    const Piloted piloted = early[i] ? *early[i] : pilot_of(c);
+    const Piloted piloted = early[i] ? *early[i] : pilot_of(c, first_attempt());
     if (out.interrupted) return out;
+    if (!early[i]) learn(piloted);
     PilotRun p = piloted.run;
     if (p.verdict == used) {
       if (!std::isfinite(scale)) scale = piloted.scale;
