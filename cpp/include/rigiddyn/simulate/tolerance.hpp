@@ -355,7 +355,7 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
     return p;
   };
   // one candidate's pilot (see above), the size of its measure (its records' measure_scale) where it is used, and the
-  // attempt that was (pilot_attempt; -1: none)
+  // attempt it was used at (pilot_span's; -1: none)
   struct Piloted {
     PilotRun run;
     double scale = std::numeric_limits<double>::quiet_NaN();
@@ -398,8 +398,8 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
     }
     return out_c;
   };
-  // the coarsest attempt an earlier pilot was used at (-1: none yet); each later pilot starts one attempt before it,
-  // since the attempts before that showed the scene's motion unresolved at their steps (pilot_attempts)
+  // the coarsest attempt an earlier pilot was used at (-1: none yet): each later pilot starts one attempt before it (the
+  // attempts coarser than that found the motion unresolved for the earlier methods; one of them is still tried)
   int coarsest_used = -1;
   const auto first_attempt = [&] { return std::max(coarsest_used - 1, 0); };
   const auto learn = [&](const Piloted& piloted) {
