@@ -952,18 +952,18 @@ bool repeatable_law(py::handle controller, const Scene& scene) {
 // A controller as `controller` (a rigiddyn.Controller on `scene`, its law in Python or its gyro noise drawn in
 // Python: repeatable_law) is now, for another run: a copy.deepcopy of it (the law's attributes and the noise
 // generator's state), so that the run samples the law and draws the noise as a run from now does. Made with the
-// GIL; TypeError naming controller.law where it cannot be copied.
-Controller controller_copy(py::handle controller, const Scene& scene) {
+// GIL; TypeError naming controller.law where it cannot be copied, with `why` (what runs the law again, and what to
+// pass instead).
+Controller controller_copy(py::handle controller, const Scene& scene, const char* why) {
   const py::object deepcopy = py::module_::import("copy").attr("deepcopy");
   py::object copy;
   try {
     copy = deepcopy(controller);
   } catch (py::error_already_set& e) {
     if (!e.matches(PyExc_Exception)) throw;
-    const std::string message = "controller.law: expected a law that copy.deepcopy copies (the global error "
-                                "estimate runs it again at 2 dt and 4 dt, each from a copy), got " +
-                                py::repr(controller.attr("law")).cast<std::string>() + " (" +
-                                py::str(e.value()).cast<std::string>() + "); or pass error=False";
+    const std::string message = "controller.law: expected a law that copy.deepcopy copies (" + std::string(why) +
+                                "), got " + py::repr(controller.attr("law")).cast<std::string>() + " (" +
+                                py::str(e.value()).cast<std::string>() + ")";
     py::raise_from(e, PyExc_TypeError, message.c_str());
     throw py::error_already_set();
   }
@@ -975,7 +975,11 @@ Controller controller_copy(py::handle controller, const Scene& scene) {
 // controller_copy made before the run, so that each coarse run samples the law as the run does.
 std::vector<Controller> coarse_controllers(py::handle controller, const Scene& scene) {
   std::vector<Controller> out;
-  for (int k = 0; k < 2; ++k) out.push_back(controller_copy(controller, scene));
+  for (int k = 0; k < 2; ++k) {
+    out.push_back(controller_copy(controller, scene,
+                                  "the global error estimate runs it again at 2 dt and 4 dt, each from a copy; or pass "
+                                  "error=False"));
+  }
   return out;
 }
 
@@ -1007,7 +1011,8 @@ class RunControllers {
   const Controller& next() {
     if (!python_) return copies_.emplace_back(pristine_);
     py::gil_scoped_acquire gil;
-    return copies_.emplace_back(controller_copy(controller_, scene_));
+    return copies_.emplace_back(controller_copy(
+        controller_, scene_, "tolerance= runs it again in each of its runs, each from a copy; or pass dt="));
   }
 
  private:

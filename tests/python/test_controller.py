@@ -798,8 +798,14 @@ def test_a_run_under_a_python_law_estimates_its_error(noise):
             raise TypeError("a lock")
 
     locked = rd.Controller(period, Locked(period), repeatable=True)
-    with pytest.raises(TypeError, match=r"^controller.law: expected a law that copy.deepcopy copies .*\(a lock\)"):
+    with pytest.raises(TypeError, match=r"^controller.law: expected a law that copy.deepcopy copies .*\(a lock\)"
+                                        r"$"):
         rd.simulate(scene, start, dt, 8, controller=locked)
+    # to a tolerance, every run of the planner takes a copy: the same error, which names tolerance's runs
+    with pytest.raises(TypeError, match=r"^controller.law: expected a law that copy.deepcopy copies \(tolerance= runs "
+                                        r"it again in each of its runs, each from a copy; or pass dt=\), got "
+                                        r".*\(a lock\)$"):
+        rd.simulate(scene, start, duration=8 * period, tolerance=1e-6, controller=locked)
     assert rd.simulate(scene, start, dt, 8, controller=locked, error=False).error is None
 
 
@@ -947,15 +953,6 @@ def test_monte_carlo_refuses_a_controller_it_cannot_run():
 
 
 # ---------------------------------------------------------------- tolerance= under a controller
-def attitude_difference(q_a, q_b):
-    """Largest geodesic angle between two (n, 1, 4) attitude records [rad] (2 atan2(|v|, |w|) of q_a^-1 q_b, accurate
-    near 0)."""
-    q_a, q_b = np.asarray(q_a).reshape(-1, 4), np.asarray(q_b).reshape(-1, 4)
-    w = np.sum(q_a * q_b, axis=1)
-    v = q_a[:, 3:4] * q_b[:, :3] - q_b[:, 3:4] * q_a[:, :3] - np.cross(q_a[:, :3], q_b[:, :3])
-    return float(np.max(2.0 * np.arctan2(np.linalg.norm(v, axis=1), np.abs(w))))
-
-
 def on_the_grid(dt, period):
     """Whether period / (4 dt) is a whole number (within the rounding of a division)."""
     blocks = period / (4.0 * dt)
@@ -978,7 +975,8 @@ def test_tolerance_under_the_shipped_bdot_meets_it(tolerance):
     fine = rd.simulate(scene, initial, c.dt / 8, 8 * c.steps, method="rk4", record_every=160,
                        controller=run.controller)
     assert fine.error.reliable[1:].all()
-    assert attitude_difference(r.q_WB, fine.q_WB) + np.nanmax(fine.error.attitude) <= tolerance
+    largest = float(np.max(rd.angular_distance(r.q_WB.reshape(-1, 4), fine.q_WB.reshape(-1, 4))))
+    assert largest + np.nanmax(fine.error.attitude) <= tolerance
 
 
 def test_tolerance_under_a_repeatable_python_law_meets_it_and_leaves_the_law_alone():

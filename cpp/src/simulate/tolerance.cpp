@@ -246,8 +246,9 @@ std::int64_t on_grid(std::int64_t multiple, std::int64_t grid_steps) {
 namespace {
 
 // x in (0, 1] as a / b in lowest terms with b <= max_denominator and |x − a / b| <= 1e-12 x (the convergents of its
-// continued fraction, the best approximations with bounded denominators); none where no convergent is that close. (A
-// looser match would find a fraction for any x: every real is within 1 / b² of a convergent a / b.)
+// continued fraction, the best approximations with bounded denominators: Hardy & Wright, "An Introduction to the
+// Theory of Numbers", ch. 10); none where no convergent is that close. (A looser match would find a fraction for any
+// x: every real is within 1 / b² of a convergent a / b, ibid.)
 std::optional<std::pair<std::int64_t, std::int64_t>> fraction_of(double x, std::int64_t max_denominator) {
   std::int64_t a0 = 0, b0 = 1, a1 = 1, b1 = 0;  // the convergents before the current one
   double rest = x;

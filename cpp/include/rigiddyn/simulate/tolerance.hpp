@@ -398,8 +398,8 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
     }
     return out_c;
   };
-  // the coarsest attempt an earlier pilot was used at (-1: none yet): each later pilot starts one attempt before it (the
-  // attempts coarser than that found the motion unresolved for the earlier methods; one of them is still tried)
+  // the coarsest attempt an earlier pilot was used at (-1: none yet): each later pilot starts one attempt before it
+  // (the attempts coarser than that found the motion unresolved for the earlier methods; one of them is still tried)
   int coarsest_used = -1;
   const auto first_attempt = [&] { return std::max(coarsest_used - 1, 0); };
   const auto learn = [&](const Piloted& piloted) {
