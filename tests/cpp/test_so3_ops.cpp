@@ -70,7 +70,12 @@ TEST(UnitQuaternion, GivesTheBitsOfEigensNormalisation) {
 TEST(NearestRotation, IsAnOrthonormalProperMatrixAndIdempotent) {
   GaussianRandom rnd;
   for (int n = 0; n < 200; ++n) {
-    const Eigen::Matrix3d M = quat_to_matrix(rnd.quaternion()) + 0.1 * Eigen::Matrix3d::NullaryExpr([&] { return rnd.normal(); });
+    // the noise drawn entry by entry: a NullaryExpr of the drawing lambda hung in GCC 12's -O3 build of this test in
+    // some unity batches (the engine's draws rejected forever in normal_distribution's polar loop)
+    const Eigen::Matrix3d rotation = quat_to_matrix(rnd.quaternion());
+    Eigen::Matrix3d noise;
+    for (Eigen::Index k = 0; k < noise.size(); ++k) noise(k) = rnd.normal();
+    const Eigen::Matrix3d M = rotation + 0.1 * noise;
     const Eigen::Matrix3d R = nearest_rotation(M);
     // Jacobi SVD is backward stable: U and V are products of plane rotations, each of which moves their
     // orthonormality by at most 3 eps per entry (c x + s y: two products and a sum); two-sided Jacobi converges
