@@ -1088,7 +1088,8 @@ std::shared_ptr<DeferredEstimate> deferred_estimate(std::shared_ptr<const Compil
       const Controller fresh = *pristine;
       return simulate(*compiled, initial, coarse, fresh);
     };
-    GlobalErrorEstimate e = global_error_of(error_records(answer), o, order, interruptible(run, interrupted));
+    GlobalErrorEstimate e =
+        global_error_of(answer_records(answer, o, order), o, order, interruptible(run, interrupted));
     if (interrupted) return std::nullopt;
     if (pristine) name_off_grid_samples(e, pristine->period, o.dt);
     return e;

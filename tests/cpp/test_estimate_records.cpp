@@ -6,11 +6,14 @@
 #include "rigiddyn/batch/simulate_batch.hpp"
 #include "rigiddyn/scene/compile.hpp"
 #include "rigiddyn/scene/one_body_scene.hpp"
+#include "rigiddyn/scene/scene_order.hpp"
 #include "rigiddyn/scene/simulate_scene.hpp"
 #include "rigiddyn/simulate/global_error.hpp"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstring>
 #include <memory>
 #include <string>
 #include <utility>
@@ -179,6 +182,46 @@ TEST(EstimateRecords, ABatchHoldsWhatTheEstimateReads) {
       EXPECT_EQ(a.momentum, r.momentum);
       EXPECT_EQ(a.balance, r.balance);
     }
+  }
+}
+
+// Whether a and b hold the same bits (NaN where the other has the same NaN).
+bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
+}
+
+TEST(EstimateRecords, TheAnswersSumsAtItsCommonRecordsGiveTheSameEstimate) {
+  const auto [scene, states] = linked_bodies();
+  const CompiledScene compiled = compile_scene(scene, Method::rk4);
+  for (const std::int64_t record_every : {1, 3, 4}) {
+    SCOPED_TRACE("record_every " + std::to_string(record_every));
+    SimulationOptions o;
+    o.method = Method::rk4, o.dt = 0.01, o.steps = 101, o.record_every = record_every;
+    const SceneSimulation answer = simulate(compiled, states, o);
+    const auto coarse = [&](int factor) {
+      SimulationOptions c = coarse_options(o, factor);
+      c.estimate_records = true;
+      return simulate(compiled, states, c);
+    };
+    const SceneSimulation twice = coarse(2), four_times = coarse(4);  // the records point into their columns
+    const ErrorRecords h2 = coarse_records(twice), h4 = coarse_records(four_times);
+    const int order = scene_order(compiled);
+    const ErrorRecords every = error_records(answer), common = answer_records(answer, o, order);
+    const std::size_t stride = common_record_stride(o);
+    for (std::size_t i = 0; i < every.n; ++i) {  // the sums at the common records alone
+      EXPECT_EQ(std::isnan(common.momentum[i]), i % stride != 0) << "record " << i;
+      EXPECT_EQ(std::isnan(common.balance[i]), i % stride != 0) << "record " << i;
+    }
+    const GlobalErrorEstimate a = estimate_global_error(every, h2, h4, o, order),
+                              b = estimate_global_error(common, h2, h4, o, order);
+    for (const auto field : {&GlobalErrorEstimate::attitude, &GlobalErrorEstimate::angular_velocity,
+                             &GlobalErrorEstimate::position, &GlobalErrorEstimate::velocity,
+                             &GlobalErrorEstimate::energy, &GlobalErrorEstimate::angular_momentum,
+                             &GlobalErrorEstimate::observed_order}) {
+      EXPECT_TRUE(same_bits(a.*field, b.*field));
+    }
+    ASSERT_EQ(a.verdict.size(), b.verdict.size());
+    for (std::size_t i = 0; i < a.verdict.size(); ++i) EXPECT_EQ(a.verdict[i], b.verdict[i]) << "record " << i;
   }
 }
 

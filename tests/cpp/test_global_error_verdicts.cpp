@@ -2,6 +2,7 @@
 // says "not asymptotic: observed order <o> where <p> is expected (<quantity>)" with its own observed order printed as
 // printf's "%.2g" prints it, however many records share a text (orders that print alike) and at orders that lie a
 // rounding error from the tie between two printed values.
+#include "one_body_error_records.hpp"
 #include "rigiddyn/simulate/global_error.hpp"
 
 #include <gtest/gtest.h>
@@ -21,27 +22,17 @@ class RunsWithOrders {
  public:
   static constexpr double h = 0.01, delta = 0x1p-10;  // delta: 1 + delta exact
 
-  RunsWithOrders(const std::vector<double>& orders, int factor) {
-    const std::size_t n = orders.size();
-    for (std::size_t i = 0; i < n; ++i) {
-      const double ratio = std::exp2(orders[i]);
-      t_.push_back(4.0 * h * static_cast<double>(i));
-      for (const double x : {0.0, 0.0, 0.0, 1.0}) q_.push_back(x);
+  RunsWithOrders(const std::vector<double>& orders, int factor) : run_(h) {
+    for (const double order : orders) {
+      const double ratio = std::exp2(order);
       const double p = factor == 1 ? 1.0 : factor == 2 ? 1.0 + delta : 1.0 + delta + ratio * delta;
-      for (const double x : {p, 0.0, 0.0}) p_.push_back(x);
-      for (const double x : {0.0, 0.0, 0.0}) w_.push_back(x), v_.push_back(x);
-      energy_.push_back(1.0), kinetic_.push_back(1.0);
-      records_.momentum.push_back(0.0);
+      run_.push_back({0.0, 0.0, 0.0, 1.0}, {p, 0.0, 0.0});
     }
-    records_.n = n, records_.bodies = 1, records_.t = t_.data(), records_.q_WB = q_.data();
-    records_.w_B = w_.data(), records_.p_W = p_.data(), records_.v_W = v_.data();
-    records_.energy = energy_.data(), records_.energy_scale = kinetic_.data();
   }
-  const ErrorRecords& records() const { return records_; }
+  ErrorRecords records() const { return run_.records(); }
 
  private:
-  std::vector<double> t_, q_, w_, p_, v_, energy_, kinetic_;
-  ErrorRecords records_;
+  test::OneBodyErrorRecords run_;
 };
 
 std::string printed(double x) {

@@ -32,10 +32,12 @@ double round_off_bound(double size, std::int64_t steps) {
   return 8.0 * DBL_EPSILON * std::abs(size) * static_cast<double>(std::max<std::int64_t>(steps, 1));
 }
 
+// Body b's attitude at record i as recorded (its norm not forced: angular_distance's angle 2 atan2(|d_xyz|, |d_w|) of
+// d = q_a^* ⊗ q_b is that of the unit quaternions, d scaling with |q_a| |q_b|, so that no record is normalised)
 Eigen::Quaterniond attitude(const ErrorRecords& r, std::size_t i, std::int64_t b) {
   const double* q = r.q_WB + (i * r.bodies + b) * 4;
-  if (r.scalar_first) return Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized();
-  return Eigen::Quaterniond(q[3], q[0], q[1], q[2]).normalized();
+  if (r.scalar_first) return Eigen::Quaterniond(q[0], q[1], q[2], q[3]);
+  return Eigen::Quaterniond(q[3], q[0], q[1], q[2]);
 }
 
 Eigen::Map<const Eigen::Vector3d> vector3(const double* rows, const ErrorRecords& r, std::size_t i, std::int64_t b) {
@@ -145,13 +147,20 @@ struct Differences {
 // The differences of the bodies' values of one kind of quantity taken together: d1 and d2 the norms of the bodies'
 // differences, the round-off bound their sum. Checking the order on these rather than body by body keeps a body
 // whose own error crosses zero at the record (where its ratio r says nothing) from failing the check alone.
+// One body's differences are their own total (no square root of their squares, which the single body of most runs
+// would pay for at every record).
 struct CombinedDifferences {
   double d1_squared = 0.0, d2_squared = 0.0, round_off = 0.0;
+  Differences first{};
+  int count = 0;
 
   void add(const Differences& d) {
+    if (count++ == 0) first = d;
     d1_squared += d.d1 * d.d1, d2_squared += d.d2 * d.d2, round_off += d.round_off;
   }
-  Differences total() const { return {std::sqrt(d1_squared), std::sqrt(d2_squared), round_off}; }
+  Differences total() const {
+    return count == 1 ? first : Differences{std::sqrt(d1_squared), std::sqrt(d2_squared), round_off};
+  }
 };
 
 // What one common record's quantities say: the estimate of each, and the record's observed order and verdict
@@ -419,15 +428,18 @@ struct RowSource {
   double u = 1.0, w = 0.0;
 };
 
-// The rows of one quantity at every answer record (`width` values a row: a std::size_t, or std::integral_constant 1
-// for a quantity of the run, whose loops the compiler then drops) from its common rows `from`.
+// One quantity's rows: `width` values a row (a std::size_t, or std::integral_constant 1 for a quantity of the run,
+// whose loops the compiler then drops), from the common rows at `from` into the answer rows at `into`.
 template <class Width>
-void fill_rows(const std::vector<double>& from, std::vector<double>& into, Width width,
-               const std::vector<RowSource>& sources) {
-  for (std::size_t i = 0; i < sources.size(); ++i) {
-    const RowSource& s = sources[i];
-    const double *row_a = from.data() + s.a * width, *row_b = from.data() + s.b * width;
-    double* row = into.data() + i * width;
+struct RowColumn {
+  const double* from;
+  double* into;
+  Width width;
+
+  // answer row i from the common rows as `s` says
+  RIGIDDYN_ALWAYS_INLINE void put(const RowSource& s, std::size_t i) const {
+    const double *row_a = from + s.a * width, *row_b = from + s.b * width;
+    double* row = into + i * width;
     switch (s.kind) {
       case RowSource::common:
         for (std::size_t k = 0; k < width; ++k) row[k] = row_a[k];
@@ -441,25 +453,30 @@ void fill_rows(const std::vector<double>& from, std::vector<double>& into, Width
       case RowSource::none: break;
     }
   }
-}
+};
 
-// Every row of `out`, sized by size_for_records, from the common rows `common` (their sources, `sources`).
-void put_rows(GlobalErrorEstimate& out, const CommonTable& common, const std::vector<RowSource>& sources) {
+// Every row of `out`, sized by size_for_records, from the common rows `common` (their sources, `sources`), record by
+// record: each source read once for the six quantities (the per-body ones `width` values a row).
+template <class Width>
+void put_rows(GlobalErrorEstimate& out, const CommonTable& common, const std::vector<RowSource>& sources, Width width) {
   const auto states = common.states();
   const auto into = per_body_arrays(out);
+  std::array<RowColumn<Width>, 4> per_body;
+  for (std::size_t q = 0; q < states.size(); ++q) per_body[q] = {states[q]->data(), into[q]->data(), width};
   const std::integral_constant<std::size_t, 1> one;
-  for (std::size_t q = 0; q < states.size(); ++q) {
-    if (common.nb == 1) {
-      fill_rows(*states[q], *into[q], one, sources);
-    } else {
-      fill_rows(*states[q], *into[q], common.nb, sources);
-    }
-  }
-  fill_rows(common.energy, out.energy, one, sources);
-  fill_rows(common.angular_momentum, out.angular_momentum, one, sources);
+  const RowColumn<decltype(one)> energy{common.energy.data(), out.energy.data(), one},
+      momentum{common.angular_momentum.data(), out.angular_momentum.data(), one};
   for (std::size_t i = 0; i < sources.size(); ++i) {
-    if (sources[i].kind == RowSource::common) out.observed_order[i] = common.observed_order[sources[i].a];
+    const RowSource& s = sources[i];
+    for (const auto& column : per_body) column.put(s, i);
+    energy.put(s, i), momentum.put(s, i);
+    if (s.kind == RowSource::common) out.observed_order[i] = common.observed_order[s.a];
   }
+}
+
+void put_rows(GlobalErrorEstimate& out, const CommonTable& common, const std::vector<RowSource>& sources) {
+  if (common.nb == 1) return put_rows(out, common, sources, std::integral_constant<std::size_t, 1>());
+  put_rows(out, common, sources, common.nb);
 }
 
 // The rows of `out` where every record is a common record (record_every a multiple of 4): the common rows themselves.
@@ -501,6 +518,9 @@ std::array<double, 4> state_sizes(const CommonTable& common, std::size_t j) {
 // linear regime that Richardson extrapolation assumes. Every record from there on whose order check failed says
 // so, with λ = ln(growth) / (t_j − t_k).
 void name_exponential_growth(CommonTable& common, const double* t, std::size_t stride) {
+  const auto not_asymptotic = [](const std::string& v) { return v.rfind("not asymptotic", 0) == 0; };
+  const auto& texts = common.verdict.texts();
+  if (std::none_of(texts.begin(), texts.end(), not_asymptotic)) return;  // no record a growth would rename
   constexpr double beyond_polynomial = 1000.0;
   std::array<double, 4> least{};  // per kind: the smallest ε / t^4 of the records before, and its time
   std::array<double, 4> least_t{};
@@ -528,7 +548,7 @@ void name_exponential_growth(CommonTable& common, const double* t, std::size_t s
     }
     if (past.empty()) continue;
     const std::string& verdict = common.verdict[j];
-    if (verdict.rfind("not asymptotic", 0) == 0) common.verdict.set(j, past + verdict);
+    if (not_asymptotic(verdict)) common.verdict.set(j, past + verdict);
   }
 }
 
@@ -573,7 +593,7 @@ SceneColumns scene_columns(const SceneSimulation& r) {
   return c;
 }
 
-ErrorRecords error_records(const SceneColumns& r, bool scaled) {
+ErrorRecords error_records(const SceneColumns& r, bool scaled, std::size_t every) {
   ErrorRecords out;
   out.n = r.n;
   out.bodies = r.bodies;
@@ -582,8 +602,9 @@ ErrorRecords error_records(const SceneColumns& r, bool scaled) {
   out.energy = r.total_energy, out.energy_scale = r.kinetic_energy;
   const std::size_t rows = out.n * static_cast<std::size_t>(out.bodies);
   scaled = scaled && r.mass_size == rows && r.angular_momentum_O_W_size == 3 * rows;  // else |L| itself
-  out.momentum.resize(out.n), out.momentum_scale.resize(scaled ? out.n : 0);
-  for (std::size_t i = 0; i < out.n; ++i) {
+  every = std::max<std::size_t>(every, 1);
+  out.momentum.assign(out.n, nan), out.momentum_scale.assign(scaled ? out.n : 0, nan);
+  for (std::size_t i = 0; i < out.n; i += every) {
     out.momentum[i] = Eigen::Map<const Eigen::Vector3d>(r.angular_momentum_W + 3 * i).norm();
     if (!scaled) continue;
     double scale = 0.0;  // Σ |p_W × m v_W| bounded by |p_W| m |v_W|, + |H| of each body
@@ -605,8 +626,8 @@ ErrorRecords error_records(const SceneColumns& r, bool scaled) {
     return width == 0 ? 0.0 : std::accumulate(table + i * width, table + (i + 1) * width, 0.0);
   };
   if (r.kinetic_energy_size == out.n) {
-    out.balance.resize(out.n);
-    for (std::size_t i = 0; i < out.n; ++i) {
+    out.balance.assign(out.n, nan);
+    for (std::size_t i = 0; i < out.n; i += every) {
       out.balance[i] = r.kinetic_energy[i] - row_sum(r.work, works, i) - row_sum(r.mass_flow_energy, flows, i) -
                        row_sum(r.motor_work, motors, i);
     }
@@ -615,6 +636,10 @@ ErrorRecords error_records(const SceneColumns& r, bool scaled) {
 }
 
 std::int64_t common_record_steps(std::int64_t record_every) { return std::lcm(record_every, std::int64_t{4}); }
+
+std::size_t common_record_stride(const SimulationOptions& answer) {
+  return static_cast<std::size_t>(common_record_steps(answer.record_every) / answer.record_every);
+}
 
 SimulationOptions coarse_options(const SimulationOptions& answer, int factor) {
   const std::int64_t m = common_record_steps(answer.record_every);
@@ -632,7 +657,7 @@ GlobalErrorEstimate estimate_global_error(const ErrorRecords& h, const ErrorReco
   GlobalErrorEstimate out;
   out.order = order, out.bodies = h.bodies;
   const std::int64_t m = common_record_steps(answer.record_every);
-  const auto stride = static_cast<std::size_t>(m / answer.record_every);  // answer records per common record
+  const std::size_t stride = common_record_stride(answer);  // answer records per common record
   // the common records the answer has: j = 0 .. last (answer record j·stride)
   const std::size_t last = h.n == 0 ? 0 : std::min((h.n - 1) / stride, static_cast<std::size_t>(answer.steps / m));
   const auto nb = static_cast<std::size_t>(std::max<std::int64_t>(h.bodies, 0));

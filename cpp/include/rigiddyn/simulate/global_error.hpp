@@ -86,11 +86,12 @@ SceneColumns scene_columns(const SceneSimulation& r);
 
 // The records of a body's run (|L| = angular_momentum_norm) and of a scene's (|L| = |angular_momentum_W|); a scene's
 // with the size of |L|'s round-off (momentum_scale) unless `scaled` is false (the runs at 2h and 4h, whose own
-// round-off the estimate does not read).
+// round-off the estimate does not read), and its columns made of several (momentum, momentum_scale, balance) at every
+// `every`-th record alone (NaN between; the records an estimate compares: answer_records).
 ErrorRecords error_records(const Trajectory& r);
-ErrorRecords error_records(const SceneColumns& r, bool scaled = true);
-inline ErrorRecords error_records(const SceneSimulation& r, bool scaled = true) {
-  return error_records(scene_columns(r), scaled);
+ErrorRecords error_records(const SceneColumns& r, bool scaled = true, std::size_t every = 1);
+inline ErrorRecords error_records(const SceneSimulation& r, bool scaled = true, std::size_t every = 1) {
+  return error_records(scene_columns(r), scaled, every);
 }
 
 // The quantities an estimate gives (the fields of GlobalErrorEstimate, in their order); a tolerance bounds one of
@@ -114,6 +115,18 @@ struct GlobalErrorEstimate {
 // The number of steps between two records where the answer, 2h and 4h runs all have a state:
 // m = lcm(record_every, 4).
 std::int64_t common_record_steps(std::int64_t record_every);
+
+// The answer's records between two common records: m / record_every.
+std::size_t common_record_stride(const SimulationOptions& answer);
+
+// The records of the answer run as an estimate of order `order` reads them: a scene's made of several columns at its
+// common records alone (error_records' `every`), where the estimate compares the runs; every record for the round-off
+// bound of order 0, which reads them all.
+inline ErrorRecords answer_records(const Trajectory& r, const SimulationOptions&, int) { return error_records(r); }
+template <class Columns>  // SceneSimulation or SceneColumns
+ErrorRecords answer_records(const Columns& r, const SimulationOptions& answer, int order) {
+  return error_records(r, true, order == 0 ? 1 : common_record_stride(answer));
+}
 
 // The options of the run at factor·h (factor 2 or 4) that records at the common records of `answer`:
 // dt·factor, steps floor(steps / m)·m / factor, record_every m / factor (m = common_record_steps).
@@ -160,7 +173,7 @@ GlobalErrorEstimate global_error_of(const ErrorRecords& answer, const Simulation
 template <class Records, class Run>
 GlobalErrorEstimate global_error(const Records& answer, const SimulationOptions& options, int order, Run&& run,
                                  const std::string& opaque = {}) {
-  return global_error_of(error_records(answer), options, order, std::forward<Run>(run), opaque);
+  return global_error_of(answer_records(answer, options, order), options, order, std::forward<Run>(run), opaque);
 }
 
 }  // namespace rigiddyn

@@ -228,7 +228,8 @@ MeasuredEstimate measured_global_error(const Records& answer, const SimulationOp
   }
   const Records twice = run(coarse_options(options, 2));
   const Records four_times = run(coarse_options(options, 4));
-  const ErrorRecords h = error_records(answer), h2 = coarse_records(twice), h4 = coarse_records(four_times);
+  const ErrorRecords h = answer_records(answer, options, order), h2 = coarse_records(twice),
+                     h4 = coarse_records(four_times);
   MeasuredEstimate out{estimate_global_error(h, h2, h4, options, order),
                        estimate_of_measure(h, h2, h4, options, order, measure)};
   keep_stability_verdicts(out.all, out.measure);
