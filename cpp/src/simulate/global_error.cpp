@@ -155,7 +155,11 @@ struct CombinedDifferences {
   int count = 0;
 
   void add(const Differences& d) {
-    if (count++ == 0) first = d;
+    if (count++ == 0) {
+      first = d;
+      return;
+    }
+    if (count == 2) d1_squared = first.d1 * first.d1, d2_squared = first.d2 * first.d2, round_off = first.round_off;
     d1_squared += d.d1 * d.d1, d2_squared += d.d2 * d.d2, round_off += d.round_off;
   }
   Differences total() const {

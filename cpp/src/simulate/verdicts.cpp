@@ -12,6 +12,8 @@ void Verdicts::assign(std::size_t n, std::string_view verdict) {
   text_of_record_.assign(n, k);
 }
 
+void Verdicts::throw_no_text(std::uint32_t k) { throw std::out_of_range("Verdicts: no text " + std::to_string(k)); }
+
 std::uint32_t Verdicts::add_text(std::string_view verdict) {
   if (!texts_.empty() && texts_[last_added_] == verdict) return last_added_;
   const auto found = index_of_text_.find(verdict);

@@ -56,10 +56,12 @@ class Verdicts {
   void set_text(std::size_t i, std::uint32_t k) { text_of_record_[i] = checked_text(k); }
 
  private:
+  // (inlined at every record: the throw is out of line)
   std::uint32_t checked_text(std::uint32_t k) const {
-    if (k >= texts_.size()) throw std::out_of_range("Verdicts: no text " + std::to_string(k));
+    if (k >= texts_.size()) throw_no_text(k);
     return k;
   }
+  [[noreturn]] static void throw_no_text(std::uint32_t k);
 
   std::vector<std::string> texts_;
   std::map<std::string, std::uint32_t, std::less<>> index_of_text_;
