@@ -147,8 +147,8 @@ struct Differences {
 // The differences of the bodies' values of one kind of quantity taken together: d1 and d2 the norms of the bodies'
 // differences, the round-off bound their sum. Checking the order on these rather than body by body keeps a body
 // whose own error crosses zero at the record (where its ratio r says nothing) from failing the check alone.
-// One body's differences are their own total (no square root of their squares, which the single body of most runs
-// would pay for at every record).
+// One body's differences are their own total: no squares summed and no square root of them, which the single body of
+// most runs would pay for at every record.
 struct CombinedDifferences {
   double d1_squared = 0.0, d2_squared = 0.0, round_off = 0.0;
   Differences first{};
@@ -157,14 +157,17 @@ struct CombinedDifferences {
   void add(const Differences& d) {
     if (count++ == 0) {
       first = d;
-      return;
+    } else {
+      if (count == 2) sum(first);  // a second body: the first's squares join the sums
+      sum(d);
     }
-    if (count == 2) d1_squared = first.d1 * first.d1, d2_squared = first.d2 * first.d2, round_off = first.round_off;
-    d1_squared += d.d1 * d.d1, d2_squared += d.d2 * d.d2, round_off += d.round_off;
   }
   Differences total() const {
     return count == 1 ? first : Differences{std::sqrt(d1_squared), std::sqrt(d2_squared), round_off};
   }
+
+ private:
+  void sum(const Differences& d) { d1_squared += d.d1 * d.d1, d2_squared += d.d2 * d.d2, round_off += d.round_off; }
 };
 
 // What one common record's quantities say: the estimate of each, and the record's observed order and verdict

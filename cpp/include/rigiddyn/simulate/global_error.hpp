@@ -56,6 +56,7 @@ struct ErrorRecords {
   const double* v_W = nullptr;           // (n, nb, 3) [m/s]
   const double* energy = nullptr;        // (n,) total energy [J]
   const double* energy_scale = nullptr;  // (n,) the kinetic energy T (the round-off scales with |T| + |V|) [J]
+  // momentum, momentum_scale and balance: NaN between the records error_records made them at (its `every`)
   std::vector<double> momentum;          // (n,) |L| of the run [kg m²/s]
   // (n,) the size the round-off of |L| scales with [kg m²/s]: Σ over the bodies of |p_W| m |v_W| + |H| (a scene's
   // L may cancel to 0 while its terms do not); empty: |L| itself
