@@ -8,6 +8,8 @@
 //   pair_sum_avx512_over_avx2/N,    the direct sum of MutualGravity alone (scene/elements/pair_forces.hpp) on
 //   pair_sum_avx2_over_portable/N   each path the CPU has, side by side (counter pair_time; a path the CPU
 //                                   lacks is skipped): what each vector width gains.
+//   pair_potential_over_pair_sum/N  the potential V of a record (the same pairs, pair_potential) over the forces'
+//   pair_potential_over_portable/N  sum, both on the path of the process; and over the portable potential.
 //   nbody_spheres_over_particles_rk4/N  the same scene with rigid spheres ("rigiddyn") over the particle
 //                                   scene ("baseline"): what attitude costs when it is irrelevant.
 //   swarm_spheres_over_particles_rk4/N  the same under UniformGravity only (no O(N²) sum to hide it).
@@ -44,6 +46,7 @@
 #include <cstdio>
 #include <map>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <malloc.h>        // malloc_trim (glibc)
@@ -179,7 +182,7 @@ void nbody_scalar_loop(benchmark::State& state) { nbody_loop(state, bench::PairS
 // ---- the pair sum alone, path by path ---------------------------------------------------------------
 // The columns of N cluster particles (positions, forces, masses: pair_forces.hpp), the forces summed `rounds`
 // times per iteration by `path` where the CPU has it.
-using PairPath = void (*)(Eigen::ArrayXXd&, Eigen::Index, double, double);
+template <class PairPath>
 void pair_sum(benchmark::State& state, PairPath path, bool available) {
   if (!available) {
     state.SkipWithError("this CPU (or build) has no such vector instructions");
@@ -193,7 +196,13 @@ void pair_sum(benchmark::State& state, PairPath path, bool available) {
     columns(i, 7) = c.mass[i];
   }
   for (auto _ : state) {
-    for (std::int64_t r = 0; r < rounds; ++r) path(columns, n, G_cluster, softening * softening);
+    for (std::int64_t r = 0; r < rounds; ++r) {
+      if constexpr (std::is_void_v<decltype(path(columns, n, 1.0, 0.0))>) {
+        path(columns, n, G_cluster, softening * softening);
+      } else {
+        benchmark::DoNotOptimize(path(columns, n, G_cluster, softening * softening));  // a potential's V
+      }
+    }
     benchmark::DoNotOptimize(columns.data());
     benchmark::ClobberMemory();
   }
@@ -204,6 +213,10 @@ void pair_sum(benchmark::State& state, PairPath path, bool available) {
 void pair_sum_portable(benchmark::State& state) { pair_sum(state, &detail::add_pair_forces_portable, true); }
 void pair_sum_avx2(benchmark::State& state) { pair_sum(state, &detail::add_pair_forces_avx2_fma, cpu_has_avx2_fma()); }
 void pair_sum_avx512(benchmark::State& state) { pair_sum(state, &detail::add_pair_forces_avx512, cpu_has_avx512()); }
+// the pair sum as a record's potential (the path of the process), over the forces' and over the portable potential
+void pair_sum_dispatched(benchmark::State& state) { pair_sum(state, &detail::add_pair_forces, true); }
+void pair_potential(benchmark::State& state) { pair_sum(state, &detail::pair_potential, true); }
+void pair_potential_portable(benchmark::State& state) { pair_sum(state, &detail::pair_potential_portable, true); }
 
 void nbody_sizes(benchmark::internal::Benchmark* b) {
   const std::int64_t largest = bench::bench_size(4000, 100);
@@ -438,6 +451,10 @@ BENCHMARK(pair_sum_avx512)->Name("pair_sum_avx512_over_avx2:rigiddyn")->Apply(si
 BENCHMARK(pair_sum_avx2)->Name("pair_sum_avx512_over_avx2:baseline")->Apply(size_10_100_1000);
 BENCHMARK(pair_sum_avx2)->Name("pair_sum_avx2_over_portable:rigiddyn")->Apply(size_10_100_1000);
 BENCHMARK(pair_sum_portable)->Name("pair_sum_avx2_over_portable:baseline")->Apply(size_10_100_1000);
+BENCHMARK(pair_potential)->Name("pair_potential_over_pair_sum:rigiddyn")->Apply(size_10_100_1000);
+BENCHMARK(pair_sum_dispatched)->Name("pair_potential_over_pair_sum:baseline")->Apply(size_10_100_1000);
+BENCHMARK(pair_potential)->Name("pair_potential_over_portable:rigiddyn")->Apply(size_10_100_1000);
+BENCHMARK(pair_potential_portable)->Name("pair_potential_over_portable:baseline")->Apply(size_10_100_1000);
 BENCHMARK(nbody_spheres)->Name("nbody_spheres_over_particles_rk4:rigiddyn")->Apply(size_10_100_1000);
 BENCHMARK(nbody_particles)->Name("nbody_spheres_over_particles_rk4:baseline")->Apply(size_10_100_1000);
 BENCHMARK(swarm_spheres)->Name("swarm_spheres_over_particles_rk4:rigiddyn")->Apply(size_10_100_1000);

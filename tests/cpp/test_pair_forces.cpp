@@ -1,7 +1,7 @@
-// The N-body pair sum (scene/elements/pair_forces.hpp) on each of its paths, against a long-double sum of the same
-// pairs: each within its stated bound (n + 24) u Σ_j |f_ij| per body and component (u = 2⁻⁵³), so the portable,
-// AVX2 + FMA and AVX-512 paths agree to twice that; Newton's third law pair by pair on each path; and the dispatch
-// takes the path vector_instructions() names.
+// The N-body pair sums (scene/elements/pair_forces.hpp) on each of their paths, against long-double sums of the same
+// pairs: the forces each within their stated bound (n + 24) u Σ_j |f_ij| per body and component (u = 2⁻⁵³), the
+// potential within (2 n + 8) u Σ_{i<j} |V_ij|, so the portable, AVX2 + FMA and AVX-512 paths agree to twice that;
+// Newton's third law pair by pair on each path; and the dispatch takes the path vector_instructions() names.
 #include <gtest/gtest.h>
 
 #include "rigiddyn/scene/elements/pair_forces.hpp"
@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -153,6 +154,82 @@ TEST(PairForces, DispatchTakesThePathOfVectorInstructions) {
   if (cpu_has_avx512() && !(portable != nullptr && *portable != '\0' && std::strcmp(portable, "0") != 0)) {
     EXPECT_EQ(vector_instructions(), VectorInstructions::avx512);  // the widest path the CPU has
   }
+}
+
+using PotentialPath = double (*)(Eigen::ArrayXXd&, Eigen::Index, double, double);
+
+std::vector<PotentialPath> potential_paths() {
+  std::vector<PotentialPath> paths{&detail::pair_potential_portable};
+  if (cpu_has_avx2_fma()) paths.push_back(&detail::pair_potential_avx2_fma);
+  if (cpu_has_avx512()) paths.push_back(&detail::pair_potential_avx512);
+  return paths;
+}
+
+// V = −Σ_{i<j} G m_i m_j / √(|d|² + ε²) summed in long double, and Σ_{i<j} |V_ij|
+struct PotentialReference {
+  long double V = 0.0L;
+  double magnitude = 0.0;
+};
+PotentialReference reference_potential(const Eigen::ArrayXXd& c, Eigen::Index n, double G, double softening2) {
+  PotentialReference r;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    for (Eigen::Index j = i + 1; j < n; ++j) {
+      long double r2 = softening2;
+      for (int a = 0; a < 3; ++a) {
+        const long double d = static_cast<long double>(c(j, a)) - c(i, a);
+        r2 += d * d;
+      }
+      const long double V_ij = -static_cast<long double>(G) * c(i, 7) * c(j, 7) / std::sqrt(r2);
+      r.V += V_ij;
+      r.magnitude += static_cast<double>(-V_ij);
+    }
+  }
+  return r;
+}
+
+// every count of pairs per body (the blocks of eight and four and the single pairs after them), with and without
+// softening, at distances within and beyond the range of floats (where the AVX2 path's reciprocal square root gives
+// way to the division); the rows after n (which hold 7) untouched
+TEST(PairPotential, EveryPathWithinItsBound) {
+  const double G = 0.7;
+  for (const PotentialPath path : potential_paths()) {
+    for (const double scale : {1.0, 1e-20, 1e18, 1e20}) {
+      for (const Eigen::Index n : kCounts) {
+        for (const double softening2 : {0.0, 1e-2}) {
+          Eigen::ArrayXXd c = cluster(n, 3, 7u * n + 2, scale);
+          const PotentialReference r = reference_potential(c, n, G, softening2);
+          const double V = path(c, n, G, softening2);
+          const double bound = static_cast<double>(2 * n + 8) * kU * r.magnitude;  // pair_forces.hpp
+          EXPECT_LE(std::fabs(static_cast<double>(V - r.V)), bound) << "n = " << n << ", scale " << scale;
+          for (Eigen::Index i = n; i < n + 3; ++i) {
+            for (int k = 0; k < 8; ++k) EXPECT_EQ(c(i, k), 7.0) << "row " << i << " beyond n was written";
+          }
+        }
+      }
+    }
+  }
+}
+
+// two coincident bodies without softening: V = −∞ on every path (the division's m_j / 0, where the reciprocal
+// square root's Newton steps would give a NaN), whichever block of lanes the pair falls in
+TEST(PairPotential, CoincidentBodiesWithoutSofteningGiveMinusInfinityOnEveryPath) {
+  for (const PotentialPath path : potential_paths()) {
+    for (const Eigen::Index coincident : {1, 5, 9, 14, 16}) {
+      Eigen::ArrayXXd c = cluster(17, 0, 4);
+      for (int a = 0; a < 3; ++a) c(coincident, a) = c(0, a);
+      EXPECT_EQ(path(c, 17, 1.0, 0.0), -std::numeric_limits<double>::infinity()) << "body " << coincident;
+    }
+  }
+}
+
+TEST(PairPotential, DispatchTakesThePathOfVectorInstructions) {
+  const PotentialPath expected = vector_instructions() == VectorInstructions::avx512 ? &detail::pair_potential_avx512
+                                 : vector_instructions() == VectorInstructions::avx2_fma
+                                     ? &detail::pair_potential_avx2_fma
+                                     : &detail::pair_potential_portable;
+  Eigen::ArrayXXd a = cluster(37, 0, 3), b = a;
+  const double V = detail::pair_potential(a, 37, 1.0, 0.0);
+  EXPECT_EQ(V, expected(b, 37, 1.0, 0.0));
 }
 
 }  // namespace

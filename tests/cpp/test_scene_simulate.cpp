@@ -212,5 +212,76 @@ TEST(SimulateScene, StepIsSimulatesFirstStep) {
   }
 }
 
+// A kick–drift–kick run recorded at every step closes each step for its record, and the next step's opening kick
+// repeats the closing kick's wrenches (simulate/run_loop.hpp, merged_steps): the records are the bits of the
+// method's steps taken one at a time by step(), from a state to the next. (step() normalises the attitude it is given,
+// the run keeps it as integrated: the attitudes are compared at the first record alone; no load here turns a body, so
+// that the motion of the centres of mass and ω_B do not depend on them.)
+TEST(SimulateScene, RecordedKickDriftKickStepsAreTheMethodsStepsBitwise) {
+  Scene scene;
+  scene.bodies = {RigidBody(2.0, Eigen::Vector3d(1.0, 2.0, 3.0)), Particle(1.0), RigidBody(1.5, Eigen::Vector3d(0.5, 0.6, 0.7))};
+  scene.elements.push_back(MutualGravity{1.0, 0.05, {}});
+  scene.elements.push_back(UniformGravity{Eigen::Vector3d(0.0, 0.0, -1.0), {}});
+  RigidBodyState third = tumbling_state();
+  third.p_W = Eigen::Vector3d(-1.0, 0.5, 0.2);
+  const std::vector<BodyState> initial{tumbling_state(), ParticleState{Eigen::Vector3d(1.0, 0.0, 0.0), Eigen::Vector3d(0.0, 0.3, 0.0)},
+                                       third};
+  for (const Method method : {Method::splitting_dlm, Method::splitting_dlm_yoshida4, Method::exact_flow_kick}) {
+    SCOPED_TRACE(method_info(method).name);
+    SimulationOptions o;
+    o.method = method;
+    o.dt = 0.01;
+    o.steps = 20;
+    const SceneSimulation run = simulate(scene, initial, o);
+    ASSERT_EQ(run.t.size(), 21u);
+    std::vector<BodyState> state = initial;
+    for (std::size_t k = 1; k <= 20; ++k) {
+      SimulationOptions one = o;
+      one.t0 = run.t[k - 1];
+      state = step(scene, state, one).bodies;
+      const auto& a = std::get<RigidBodyState>(state[0]);
+      const auto& b = std::get<ParticleState>(state[1]);
+      for (int i = 0; i < 3; ++i) {
+        EXPECT_EQ(a.p_W[i], run.p_W[9 * k + i]) << "record " << k;
+        EXPECT_EQ(a.v_W[i], run.v_W[9 * k + i]) << "record " << k;
+        EXPECT_EQ(a.w_B[i], run.w_B[9 * k + i]) << "record " << k;
+        EXPECT_EQ(b.p_W[i], run.p_W[9 * k + 3 + i]) << "record " << k;
+        EXPECT_EQ(b.v_W[i], run.v_W[9 * k + 3 + i]) << "record " << k;
+      }
+      if (k == 1) {
+        for (int i = 0; i < 4; ++i) EXPECT_EQ(a.q_WB.coeffs()[i], run.q_WB[12 * k + i]);
+      }
+    }
+  }
+}
+
+// The same run evaluates its forces once per kick it gives and once per record: a user force (not reading the
+// velocities) counts them. Recorded at every step, the first step's opening kick, each step's inner kicks and its
+// closing kick; the next step's opening kick repeats the closing one's wrenches.
+TEST(SimulateScene, RecordedKickDriftKickStepsEvaluateTheForcesOncePerKick) {
+  int calls = 0;
+  const auto spring = [&calls](double, const BodyKinematics& k, int, Eigen::Vector3d& f_W, Eigen::Vector3d& tau_B) {
+    ++calls;
+    f_W = -4.0 * k.p_W;
+    tau_B = Eigen::Vector3d(0.0, 0.1 * k.p_W.x(), 0.0);
+  };
+  const ElementTraits position_only{true, false, false, false, true};  // reads the attitude, not the velocities
+  Scene scene;
+  scene.bodies = {RigidBody(1.0, Eigen::Vector3d(1.0, 2.0, 3.0)), Particle(1.0)};  // two bodies: the generic model
+  const std::vector<BodyState> initial{tumbling_state(), ParticleState{Eigen::Vector3d(1.0, 0.0, 0.0), Eigen::Vector3d::Zero()}};
+  const std::pair<Method, int> kicks_per_step[] = {
+      {Method::splitting_dlm, 1}, {Method::splitting_dlm_yoshida4, 3}, {Method::exact_flow_kick, 1}};
+  for (const auto& [method, kicks] : kicks_per_step) {
+    SCOPED_TRACE(method_info(method).name);
+    SimulationOptions o;
+    o.method = method;
+    o.dt = 0.01;
+    o.steps = 20;
+    calls = 0;
+    simulate(scene, initial, o, custom_force(BodyList{0}, spring, position_only));
+    EXPECT_EQ(calls, 1 + kicks * 20 + 21);  // the first opening kick, each step's kicks, the 21 records
+  }
+}
+
 }  // namespace
 }  // namespace rigiddyn

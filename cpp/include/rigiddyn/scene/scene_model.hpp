@@ -396,6 +396,14 @@ class BasicSceneModel {
     return coriolis_terms_.empty() ? loads_kick_with<false>(y, h) : loads_kick_with<true>(y, h);
   }
 
+  // loads_kick at the positions, attitudes, t and loads of the last loads_kick, from which a record alone separates
+  // it (simulate/run_loop.hpp, merged_steps: a step's closing kick before a record, then the next step's opening
+  // kick), where kicks_merge(): the elements' wrenches of that kick, which do not depend on the velocities, kept and
+  // not evaluated again (a record evaluates into other buffers). The same bits as loads_kick.
+  double loads_kick_repeated(Coordinates& y, double h) const {
+    return coriolis_terms_.empty() ? loads_kick_with<false, false>(y, h) : loads_kick_with<true, false>(y, h);
+  }
+
   // True when two loads_kick at the same positions, attitudes and t are one (simulate/run_loop.hpp, merged_steps):
   // no element reads the velocities (its traits) and no mass flows (the splittings then move masses between kicks)
   bool kicks_merge() const { return kicks_merge_; }
@@ -553,15 +561,18 @@ class BasicSceneModel {
   // t of y and the start of the step being taken (the out-of-mass message)
   detail::StepClock clock_at(const Coordinates& y) const { return {y[t_y_], step_start_}; }
 
-  // loads_kick without (turning = false) or with the exact Coriolis kick
-  template <bool turning>
+  // loads_kick without (turning = false) or with the exact Coriolis kick; the elements' wrenches evaluated, or kept
+  // from the last kick (loads_kick_repeated)
+  template <bool turning, bool evaluated = true>
   double loads_kick_with(Coordinates& y, double h) const {
     fill_kinematics(y);
     const double t = y[t_y_];
-    for (std::size_t e = 0; e < terms_.size(); ++e) {
-      std::vector<BodyWrench>& w = element_wrenches_[e];
-      for (BodyWrench& b : w) b.f_W.setZero(), b.tau_B.setZero();
-      std::visit([&](const auto& term) { term.add_wrenches(t, kinematics_, w); }, terms_[e]);
+    if constexpr (evaluated) {
+      for (std::size_t e = 0; e < terms_.size(); ++e) {
+        std::vector<BodyWrench>& w = element_wrenches_[e];
+        for (BodyWrench& b : w) b.f_W.setZero(), b.tau_B.setZero();
+        std::visit([&](const auto& term) { term.add_wrenches(t, kinematics_, w); }, terms_[e]);
+      }
     }
     for (BodyWrench& b : wrenches_) b.f_W.setZero(), b.tau_B.setZero();
     for (const auto& w : element_wrenches_) {

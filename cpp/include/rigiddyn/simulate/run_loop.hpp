@@ -132,14 +132,33 @@ struct kicks_always_merge<Model, std::void_t<decltype(std::bool_constant<Model::
 template <class Integrator, class Model>
 inline constexpr bool always_merges = has_edge_kick<Integrator>::value && kicks_always_merge<Model>::value;
 
-// n >= 1 steps of h [s] with the adjacent kicks merged, from a closed state or from one left `open` (its last
-// step's closing kick still to give: merged with this first step's opening kick), to a closed state where `close`,
-// else to an open one; after_step(k) after the k-th step's drift (the pieces' at_time)
+// Whether a model repeats a kick without evaluating its elements again (loads_kick_repeated: a kick at the positions,
+// attitudes, t and loads of its last loads_kick, whose wrenches it kept)
+template <class Model, class = void>
+struct has_repeated_kick : std::false_type {};
+template <class Model>
+struct has_repeated_kick<Model, std::void_t<decltype(std::declval<const Model&>().loads_kick_repeated(
+                                    std::declval<typename Model::Coordinates&>(), 0.0))>> : std::true_type {};
+
+// How merged steps start: from a closed state, from one left open (the last step's closing kick still to give:
+// merged with this first step's opening kick), or from one that the merged steps just before closed for a record
+// alone (the opening kick at the closing kick's positions, attitudes, t and loads: where the model keeps that kick's
+// wrenches, loads_kick_repeated gives it without a force evaluation, the same bits)
+enum class MergedStart { closed, open, closed_for_record };
+
+// n >= 1 steps of h [s] with the adjacent kicks merged, from `start`, to a closed state where `close`, else to an open
+// one; after_step(k) after the k-th step's drift (the pieces' at_time)
 template <class Integrator, class Model, class AfterStep>
-void merged_steps(const Model& model, typename Model::Coordinates& y, double h, std::int64_t n, bool open, bool close,
-                  AfterStep after_step) {
+void merged_steps(const Model& model, typename Model::Coordinates& y, double h, std::int64_t n, MergedStart start,
+                  bool close, AfterStep after_step) {
   const double edge = Integrator::edge_kick * h;
-  model.loads_kick(y, open ? 2.0 * edge : edge);
+  if (start == MergedStart::open) {
+    model.loads_kick(y, 2.0 * edge);
+  } else if constexpr (has_repeated_kick<Model>::value) {
+    start == MergedStart::closed_for_record ? model.loads_kick_repeated(y, edge) : model.loads_kick(y, edge);
+  } else {
+    model.loads_kick(y, edge);
+  }
   for (std::int64_t k = 1;; ++k) {
     Integrator::between_kicks(model, y, h);
     after_step(k);
@@ -228,7 +247,9 @@ Result run(Model model, typename Model::Coordinates y, const SimulationOptions& 
   const std::int64_t steps = o.steps, record_every = o.record_every;
   MonitorPace pace;
   [[maybe_unused]] const bool merge = merges_kicks<Integrator>(model);
-  [[maybe_unused]] bool open = false;  // merged steps left their closing kick to the next ones (at a monitor call)
+  // how the next merged steps start: open where merged steps left their closing kick to them (at a monitor call),
+  // closed_for_record where merged steps closed for a record and nothing stepped since
+  [[maybe_unused]] MergedStart start_of_merged = MergedStart::closed;
   std::int64_t i = 0, until_record = record_every;
   std::int64_t next_monitor = o.monitor ? pace.interval() : std::numeric_limits<std::int64_t>::max();
   std::size_t k = 0;  // the next switch
@@ -251,9 +272,9 @@ Result run(Model model, typename Model::Coordinates y, const SimulationOptions& 
         const std::int64_t n = std::min(plain_end - i, until_record), first = i;
         // closed for a record, the last step and a step across switch times; left open at a monitor call alone
         const bool close = n == until_record || i + n == steps || i + n == split - 1;
-        merged_steps<Integrator>(model, y, dt, n, open, close,
+        merged_steps<Integrator>(model, y, dt, n, start_of_merged, close,
                                  [&](std::int64_t k) { pieces.at_time(y, grid_time(o, first + k)); });
-        open = !close;
+        start_of_merged = close ? MergedStart::closed_for_record : MergedStart::open;
         i += n;
         if (recorded_divergence(n)) break;
       }
@@ -262,6 +283,7 @@ Result run(Model model, typename Model::Coordinates y, const SimulationOptions& 
     if constexpr (!always_merges<Integrator, Model>) {
       while (i < plain_end) {
         out.unconverged_steps += advance<Integrator>(model, y, dt, workspace);
+        if constexpr (has_edge_kick<Integrator>::value) start_of_merged = MergedStart::closed;
         ++i;
         pieces.at_time(y, grid_time(o, i));
         if (recorded_divergence(1)) break;
@@ -274,6 +296,7 @@ Result run(Model model, typename Model::Coordinates y, const SimulationOptions& 
         while (k < switches.step.size() && switches.step[k] == split) ++k;
         out.unconverged_steps += split_step<Integrator>(model, y, workspace, pieces, switches.time.data() + first,
                                                         switches.time.data() + k, grid_time(o, i), grid_time(o, i + 1), dt);
+        if constexpr (has_edge_kick<Integrator>::value) start_of_merged = MergedStart::closed;
         ++i;
         pieces.at_time(y, grid_time(o, i));
         if (recorded_divergence(1)) break;

@@ -39,6 +39,29 @@ void add_pair_forces_portable(Eigen::ArrayXXd& columns, Eigen::Index n, double G
   }
 }
 
+double pair_potential(Eigen::ArrayXXd& columns, Eigen::Index n, double G, double softening2) {
+  switch (vector_instructions()) {
+    case VectorInstructions::avx512: return pair_potential_avx512(columns, n, G, softening2);
+    case VectorInstructions::avx2_fma: return pair_potential_avx2_fma(columns, n, G, softening2);
+    case VectorInstructions::portable: return pair_potential_portable(columns, n, G, softening2);
+  }
+  return pair_potential_portable(columns, n, G, softening2);
+}
+
+// The pairs (i, j > i) of each i as column segments (their distances in the scratch column), as the forces'
+double pair_potential_portable(Eigen::ArrayXXd& columns, Eigen::Index n, double G, double softening2) {
+  auto x = columns.col(0), y = columns.col(1), z = columns.col(2), r = columns.col(6), mass = columns.col(7);
+  double V = 0.0;
+  for (Eigen::Index i = 0; i + 1 < n; ++i) {
+    const Eigen::Index j = i + 1, count = n - j;
+    auto r_j = r.segment(j, count);
+    r_j = ((x.segment(j, count) - x(i)).square() + (y.segment(j, count) - y(i)).square() +
+           (z.segment(j, count) - z(i)).square() + softening2).sqrt();  // √(|d|² + ε²)
+    V -= G * mass(i) * (mass.segment(j, count) / r_j).sum();
+  }
+  return V;
+}
+
 #ifdef RIGIDDYN_HAS_AVX2_FMA_KERNELS
 
 namespace {
@@ -70,21 +93,32 @@ __attribute__((target("avx2,fma"))) inline __m256d strength_by_division(__m256d 
   return _mm256_div_pd(Gm_im_j, _mm256_mul_pd(r2, _mm256_sqrt_pd(r2)));
 }
 
-// The same g as G m_i m_j y³, y = 1/√r² by the reciprocal square root of r² as a float (relative error at most
-// 1.5 · 2⁻¹² by the instruction's specification, 2⁻¹¹ with the conversion) refined by three Newton steps
-// y ← y (3/2 − (r²/2) y²), each of which squares the error (e ← −e² (3 + e) / 2: 2⁻¹¹, 2⁻²¹, 2⁻⁴¹, 2⁻⁸¹), so that y is
-// within the last step's own rounding, 3 u, of 1/√r². The floats' range is checked lane by lane: four pairs with an r²
-// outside [2⁻¹²⁰, 2¹²⁰] take the division. Multiplications and additions run beside the divider, which the division's
-// pairs keep busy: four pairs of each kind per block of eight run in the time of the division's four alone.
-__attribute__((target("avx2,fma"))) inline __m256d strength_by_reciprocal_root(__m256d Gm_im_j, __m256d r2) {
+// Whether the four r² lie in [2⁻¹²⁰, 2¹²⁰], where a float's reciprocal square root holds them (reciprocal_root)
+__attribute__((target("avx2,fma"))) inline bool in_float_range(__m256d r2) {
   const __m256d in_range = _mm256_and_pd(_mm256_cmp_pd(r2, _mm256_set1_pd(0x1p-120), _CMP_GE_OQ),
                                          _mm256_cmp_pd(r2, _mm256_set1_pd(0x1p120), _CMP_LE_OQ));
-  if (_mm256_movemask_pd(in_range) != 0xF) return strength_by_division(Gm_im_j, r2);
+  return _mm256_movemask_pd(in_range) == 0xF;
+}
+
+// y = 1/√r² of four pairs (their r² in_float_range) by the reciprocal square root of r² as a float (relative error at
+// most 1.5 · 2⁻¹² by the instruction's specification, 2⁻¹¹ with the conversion) refined by three Newton steps
+// y ← y (3/2 − (r²/2) y²), each of which squares the error (e ← −e² (3 + e) / 2: 2⁻¹¹, 2⁻²¹, 2⁻⁴¹, 2⁻⁸¹), so that y is
+// within the last step's own rounding, 3 u, of 1/√r².
+__attribute__((target("avx2,fma"))) inline __m256d reciprocal_root(__m256d r2) {
   const __m256d half_r2 = _mm256_mul_pd(_mm256_set1_pd(0.5), r2), three_halves = _mm256_set1_pd(1.5);
   __m256d y = _mm256_cvtps_pd(_mm_rsqrt_ps(_mm256_cvtpd_ps(r2)));
   for (int step = 0; step < 3; ++step) {
     y = _mm256_mul_pd(y, _mm256_fnmadd_pd(half_r2, _mm256_mul_pd(y, y), three_halves));
   }
+  return y;
+}
+
+// The same g as G m_i m_j y³, y = reciprocal_root(r²); four pairs with an r² outside the floats' range take the
+// division. Multiplications and additions run beside the divider, which the division's pairs keep busy: four pairs of
+// each kind per block of eight run in the time of the division's four alone.
+__attribute__((target("avx2,fma"))) inline __m256d strength_by_reciprocal_root(__m256d Gm_im_j, __m256d r2) {
+  if (!in_float_range(r2)) return strength_by_division(Gm_im_j, r2);
+  const __m256d y = reciprocal_root(r2);
   return _mm256_mul_pd(Gm_im_j, _mm256_mul_pd(y, _mm256_mul_pd(y, y)));
 }
 
@@ -119,12 +153,24 @@ __attribute__((target("avx2,fma"))) inline void last_pairs(const PairColumns& c,
   c.f_x[i] += t_x, c.f_y[i] += t_y, c.f_z[i] += t_z;
 }
 
-// The eight pairs (i, j … j + 7), as four_pairs with g = G m_i m_j y³, y = 1/√r² from the reciprocal square root
-// of r² in double (relative error below 2⁻¹⁴ over the whole range of doubles) refined by two Newton steps (the error
-// 1.5 · 2⁻²⁸, then 3.4 · 2⁻⁵⁶ < u: y within the last step's rounding, 3 u, of 1/√r², as on the AVX2 path). Twice as
-// fast as the division at N = 1000 (docs/perf/scenes.md): the divider takes as long for eight lanes as for four. An
-// r² of zero or infinity (coincident bodies without softening, a position at infinity) gives a NaN force, as the
-// division's g d does (∞ · 0, 0 · ∞).
+// y = 1/√r² of eight pairs: the reciprocal square root in double (relative error below 2⁻¹⁴ over the whole range of
+// doubles) refined by two Newton steps (the error 1.5 · 2⁻²⁸, then 3.4 · 2⁻⁵⁶ < u: y within the last step's rounding,
+// 3 u, of 1/√r²). The masked form with every lane set: GCC 12's unmasked form reads an undefined register, which its
+// -Wmaybe-uninitialized reports.
+__attribute__((target("avx512f,avx2,fma"))) inline __m512d reciprocal_root(__m512d r2) {
+  const __mmask8 all = 0xFF;
+  const __m512d half_r2 = _mm512_mul_pd(_mm512_set1_pd(0.5), r2), three_halves = _mm512_set1_pd(1.5);
+  __m512d y = _mm512_maskz_rsqrt14_pd(all, r2);
+  for (int step = 0; step < 2; ++step) {
+    y = _mm512_mul_pd(y, _mm512_fnmadd_pd(half_r2, _mm512_mul_pd(y, y), three_halves));
+  }
+  return y;
+}
+
+// The eight pairs (i, j … j + 7), as four_pairs with g = G m_i m_j y³, y = reciprocal_root(r²) (within 3 u of 1/√r²,
+// as on the AVX2 path). Twice as fast as the division at N = 1000 (docs/perf/scenes.md): the divider takes as long
+// for eight lanes as for four. An r² of zero or infinity (coincident bodies without softening, a position at
+// infinity) gives a NaN force, as the division's g d does (∞ · 0, 0 · ∞).
 __attribute__((target("avx512f,avx2,fma"))) inline void eight_pairs(const PairColumns& c, Eigen::Index i,
                                                                       Eigen::Index j, __m512d Gm_i, __m512d eps2,
                                                                       Sums8& s) {
@@ -132,14 +178,7 @@ __attribute__((target("avx512f,avx2,fma"))) inline void eight_pairs(const PairCo
   const __m512d dy = _mm512_sub_pd(_mm512_loadu_pd(c.y + j), _mm512_set1_pd(c.y[i]));
   const __m512d dz = _mm512_sub_pd(_mm512_loadu_pd(c.z + j), _mm512_set1_pd(c.z[i]));
   const __m512d r2 = _mm512_fmadd_pd(dz, dz, _mm512_fmadd_pd(dy, dy, _mm512_fmadd_pd(dx, dx, eps2)));  // |d|² + ε²
-  // the masked form with every lane set: GCC 12's unmasked forms read an undefined register, which its
-  // -Wmaybe-uninitialized reports
-  const __mmask8 all = 0xFF;
-  const __m512d half_r2 = _mm512_mul_pd(_mm512_set1_pd(0.5), r2), three_halves = _mm512_set1_pd(1.5);
-  __m512d y = _mm512_maskz_rsqrt14_pd(all, r2);
-  for (int step = 0; step < 2; ++step) {
-    y = _mm512_mul_pd(y, _mm512_fnmadd_pd(half_r2, _mm512_mul_pd(y, y), three_halves));
-  }
+  const __m512d y = reciprocal_root(r2);
   const __m512d Gm_im_j = _mm512_mul_pd(Gm_i, _mm512_loadu_pd(c.mass + j));
   const __m512d g = _mm512_mul_pd(Gm_im_j, _mm512_mul_pd(y, _mm512_mul_pd(y, y)));
   s.x = _mm512_fmadd_pd(g, dx, s.x), s.y = _mm512_fmadd_pd(g, dy, s.y), s.z = _mm512_fmadd_pd(g, dz, s.z);
@@ -148,9 +187,67 @@ __attribute__((target("avx512f,avx2,fma"))) inline void eight_pairs(const PairCo
   _mm512_storeu_pd(c.f_z + j, _mm512_fnmadd_pd(g, dz, _mm512_loadu_pd(c.f_z + j)));
 }
 
-// the upper four lanes added to the lower four (masked extracts, as above)
+// the upper four lanes added to the lower four (masked extracts, as in reciprocal_root)
 __attribute__((target("avx512f,avx2,fma"))) inline __m256d halves_sum(__m512d v) {
   return _mm256_add_pd(_mm512_maskz_extractf64x4_pd(0xF, v, 0), _mm512_maskz_extractf64x4_pd(0xF, v, 1));
+}
+
+// r² = |d|² + ε² of the four pairs (i, j … j + 3), by fused multiply–adds as in four_pairs
+__attribute__((target("avx2,fma"))) inline __m256d squared_distances(const PairColumns& c, Eigen::Index i,
+                                                                     Eigen::Index j, __m256d eps2) {
+  const __m256d dx = _mm256_sub_pd(_mm256_loadu_pd(c.x + j), _mm256_set1_pd(c.x[i]));
+  const __m256d dy = _mm256_sub_pd(_mm256_loadu_pd(c.y + j), _mm256_set1_pd(c.y[i]));
+  const __m256d dz = _mm256_sub_pd(_mm256_loadu_pd(c.z + j), _mm256_set1_pd(c.z[i]));
+  return _mm256_fmadd_pd(dz, dz, _mm256_fmadd_pd(dy, dy, _mm256_fmadd_pd(dx, dx, eps2)));
+}
+
+// m_j / √r² of four pairs by the divider's square root and division
+__attribute__((target("avx2,fma"))) inline __m256d mass_over_distance_by_division(__m256d m_j, __m256d r2) {
+  return _mm256_div_pd(m_j, _mm256_sqrt_pd(r2));
+}
+
+// the same as m_j y, y = reciprocal_root(r²), beside the divider (four pairs outside the floats' range by the division)
+__attribute__((target("avx2,fma"))) inline __m256d mass_over_distance_by_reciprocal_root(__m256d m_j, __m256d r2) {
+  if (!in_float_range(r2)) return mass_over_distance_by_division(m_j, r2);
+  return _mm256_mul_pd(m_j, reciprocal_root(r2));
+}
+
+// the potential's terms m_j / r of the pairs (i, j … j + 3), by `mass_over_distance` (one of the two above), added
+// to the lanes of `sum`
+template <__m256d (*mass_over_distance)(__m256d, __m256d)>
+__attribute__((target("avx2,fma"))) inline void four_terms(const PairColumns& c, Eigen::Index i, Eigen::Index j,
+                                                             __m256d eps2, __m256d& sum) {
+  sum = _mm256_add_pd(sum, mass_over_distance(_mm256_loadu_pd(c.mass + j), squared_distances(c, i, j, eps2)));
+}
+
+// the same terms of the pairs (i, j) for j from `first` to n − 1 one at a time (r² by std::fma, as the lanes), added to
+// the lanes' sum t
+__attribute__((target("avx2,fma"))) inline double last_terms(const PairColumns& c, Eigen::Index i, Eigen::Index first,
+                                                             Eigen::Index n, double softening2, double t) {
+  for (Eigen::Index j = first; j < n; ++j) {
+    const double dx = c.x[j] - c.x[i], dy = c.y[j] - c.y[i], dz = c.z[j] - c.z[i];
+    t += c.mass[j] / std::sqrt(std::fma(dz, dz, std::fma(dy, dy, std::fma(dx, dx, softening2))));
+  }
+  return t;
+}
+
+// the terms of the eight pairs (i, j … j + 7) as m_j y, y = reciprocal_root(r²), added to the lanes of `sum` by a fused
+// multiply–add; eight pairs with an r² outside [2⁻¹⁰⁰⁰, 2¹⁰⁰⁰] by the division (r² = 0 or ∞ make the Newton steps'
+// 0 · ∞ a NaN, where the division gives the portable path's ∞ or 0)
+__attribute__((target("avx512f,avx2,fma"))) inline void eight_terms(const PairColumns& c, Eigen::Index i,
+                                                                      Eigen::Index j, __m512d eps2, __m512d& sum) {
+  const __m512d dx = _mm512_sub_pd(_mm512_loadu_pd(c.x + j), _mm512_set1_pd(c.x[i]));
+  const __m512d dy = _mm512_sub_pd(_mm512_loadu_pd(c.y + j), _mm512_set1_pd(c.y[i]));
+  const __m512d dz = _mm512_sub_pd(_mm512_loadu_pd(c.z + j), _mm512_set1_pd(c.z[i]));
+  const __m512d r2 = _mm512_fmadd_pd(dz, dz, _mm512_fmadd_pd(dy, dy, _mm512_fmadd_pd(dx, dx, eps2)));  // |d|² + ε²
+  const __m512d m_j = _mm512_loadu_pd(c.mass + j);
+  const __mmask8 in_range = _mm512_cmp_pd_mask(r2, _mm512_set1_pd(0x1p-1000), _CMP_GE_OQ) &
+                            _mm512_cmp_pd_mask(r2, _mm512_set1_pd(0x1p1000), _CMP_LE_OQ);
+  if (in_range != 0xFF) {
+    sum = _mm512_add_pd(sum, _mm512_div_pd(m_j, _mm512_maskz_sqrt_pd(0xFF, r2)));  // masked: as reciprocal_root
+  } else {
+    sum = _mm512_fmadd_pd(m_j, reciprocal_root(r2), sum);
+  }
 }
 
 }  // namespace
@@ -195,6 +292,45 @@ __attribute__((target("avx512f,avx2,fma"))) void add_pair_forces_avx512(Eigen::A
   }
 }
 
+// The terms of each i eight pairs at a time, four by the division and four by the reciprocal square root (as the
+// forces'), then four by the division, then one at a time
+__attribute__((target("avx2,fma"))) double pair_potential_avx2_fma(Eigen::ArrayXXd& columns, Eigen::Index n, double G,
+                                                                   double softening2) {
+  const PairColumns c(columns);
+  const __m256d eps2 = _mm256_set1_pd(softening2);
+  double V = 0.0;
+  for (Eigen::Index i = 0; i + 1 < n; ++i) {
+    __m256d sum = _mm256_setzero_pd();
+    Eigen::Index j = i + 1;
+    for (; j + 8 <= n; j += 8) {
+      four_terms<mass_over_distance_by_division>(c, i, j, eps2, sum);
+      four_terms<mass_over_distance_by_reciprocal_root>(c, i, j + 4, eps2, sum);
+    }
+    if (j + 4 <= n) four_terms<mass_over_distance_by_division>(c, i, j, eps2, sum), j += 4;
+    V -= G * c.mass[i] * last_terms(c, i, j, n, softening2, lane_sum(sum));
+  }
+  return V;
+}
+
+// The terms of each i eight pairs at a time by the reciprocal square root (eight_terms), then four by the division,
+// then one at a time
+__attribute__((target("avx512f,avx2,fma"))) double pair_potential_avx512(Eigen::ArrayXXd& columns, Eigen::Index n,
+                                                                         double G, double softening2) {
+  const PairColumns c(columns);
+  const __m512d eps2_8 = _mm512_set1_pd(softening2);
+  const __m256d eps2_4 = _mm256_set1_pd(softening2);
+  double V = 0.0;
+  for (Eigen::Index i = 0; i + 1 < n; ++i) {
+    __m512d sum8 = _mm512_setzero_pd();
+    Eigen::Index j = i + 1;
+    for (; j + 8 <= n; j += 8) eight_terms(c, i, j, eps2_8, sum8);
+    __m256d sum4 = halves_sum(sum8);
+    if (j + 4 <= n) four_terms<mass_over_distance_by_division>(c, i, j, eps2_4, sum4), j += 4;
+    V -= G * c.mass[i] * last_terms(c, i, j, n, softening2, lane_sum(sum4));
+  }
+  return V;
+}
+
 #else
 
 void add_pair_forces_avx2_fma(Eigen::ArrayXXd&, Eigen::Index, double, double) {
@@ -203,6 +339,14 @@ void add_pair_forces_avx2_fma(Eigen::ArrayXXd&, Eigen::Index, double, double) {
 
 void add_pair_forces_avx512(Eigen::ArrayXXd&, Eigen::Index, double, double) {
   throw std::logic_error("add_pair_forces_avx512: this build has no AVX-512 kernels (cpu_has_avx512() is false)");
+}
+
+double pair_potential_avx2_fma(Eigen::ArrayXXd&, Eigen::Index, double, double) {
+  throw std::logic_error("pair_potential_avx2_fma: this build has no AVX2 kernels (cpu_has_avx2_fma() is false)");
+}
+
+double pair_potential_avx512(Eigen::ArrayXXd&, Eigen::Index, double, double) {
+  throw std::logic_error("pair_potential_avx512: this build has no AVX-512 kernels (cpu_has_avx512() is false)");
 }
 
 #endif

@@ -100,21 +100,13 @@ class MutualGravityTerm {
     return power;
   }
 
-  // V = Σ_{i<j} −G m_i m_j / √(|p_j − p_i|² + ε²) [J] (the same per-thread columns as add_wrenches)
+  // V = Σ_{i<j} −G m_i m_j / √(|p_j − p_i|² + ε²) [J] (the same per-thread columns as add_wrenches, on the same
+  // vector instructions: pair_forces.hpp)
   double potential(const std::vector<BodyKinematics>& kinematics) const {
     const Eigen::Index n = static_cast<Eigen::Index>(bodies_.size());
     Eigen::ArrayXXd& columns = scratch(n);
-    auto x = columns.col(0), y = columns.col(1), z = columns.col(2), r = columns.col(6), mass = columns.col(7);
     gather(kinematics, columns);
-    double V = 0.0;
-    for (Eigen::Index i = 0; i + 1 < n; ++i) {
-      const Eigen::Index j = i + 1, count = n - j;
-      auto r_j = r.segment(j, count);
-      r_j = ((x.segment(j, count) - x(i)).square() + (y.segment(j, count) - y(i)).square() +
-             (z.segment(j, count) - z(i)).square() + softening2_).sqrt();  // √(|d|² + ε²)
-      V -= G_ * mass(i) * (mass.segment(j, count) / r_j).sum();
-    }
-    return V;
+    return detail::pair_potential(columns, n, G_, softening2_);
   }
 
   const std::vector<int>& bodies() const { return bodies_; }

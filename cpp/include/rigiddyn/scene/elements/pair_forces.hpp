@@ -1,4 +1,4 @@
-// The direct sum of MutualGravity (mutual_gravity.hpp) over the pairs i < j of n bodies packed as columns:
+// The direct sums of MutualGravity (mutual_gravity.hpp) over the pairs i < j of n bodies packed as columns:
 //   d = p_j − p_i,   g = G m_i m_j / (|d|² + ε²)^{3/2},   f_i += g d,   f_j −= g d,
 // each pair's force computed once and added to one body and subtracted from the other (Newton's third law, pair by
 // pair). Three paths (vector_instructions.hpp): the portable one (two pairs per SSE2 instruction, the library's
@@ -14,6 +14,13 @@
 // 22.5 u with the fused r²). The sums of f_i add the n pairs in another order on each path (n u of their absolute
 // sum, Higham, "Accuracy and Stability of Numerical Algorithms", §4.2), so for every body and component each path is
 // within (n + 24) u Σ_j |f_ij| of the exact sum, and any two within twice that.
+//
+// The potential V = −Σ_{i<j} G m_i m_j / √(|d|² + ε²) of the records runs on the same paths: each i's terms m_j / r
+// summed (by the division, or as m_j y, y the reciprocal square root of r² above), times G m_i, subtracted from V. A
+// term is within 7 u of m_j / r (r² within 6 u, so 1/r within 3 u, and y within 3 u of that; the division's √ and
+// quotient round once each; the mass's product once), each i's sum adds at most (n − 1) u of its terms' absolute sum,
+// G m_i two roundings and V's sum of the i at most (n − 1) u more: each path within (2 n + 8) u Σ_{i<j} |V_ij| of
+// the exact V, and any two within twice that.
 #pragma once
 #include <Eigen/Core>
 
@@ -28,5 +35,12 @@ void add_pair_forces(Eigen::ArrayXXd& columns, Eigen::Index n, double G, double 
 void add_pair_forces_portable(Eigen::ArrayXXd& columns, Eigen::Index n, double G, double softening2);
 void add_pair_forces_avx2_fma(Eigen::ArrayXXd& columns, Eigen::Index n, double G, double softening2);
 void add_pair_forces_avx512(Eigen::ArrayXXd& columns, Eigen::Index n, double G, double softening2);
+
+// V [J] of the same columns (0–2 the positions, 6 scratch, 7 the masses; n rows used), the path of
+// vector_instructions(); and the three paths, callable directly (on the CPUs the forces' paths need).
+double pair_potential(Eigen::ArrayXXd& columns, Eigen::Index n, double G, double softening2);
+double pair_potential_portable(Eigen::ArrayXXd& columns, Eigen::Index n, double G, double softening2);
+double pair_potential_avx2_fma(Eigen::ArrayXXd& columns, Eigen::Index n, double G, double softening2);
+double pair_potential_avx512(Eigen::ArrayXXd& columns, Eigen::Index n, double G, double softening2);
 
 }  // namespace rigiddyn::detail
