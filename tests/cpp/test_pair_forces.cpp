@@ -136,14 +136,20 @@ TEST(PairForces, ThirdLawPairByPairOnEachPath) {
   }
 }
 
+// the path of vector_instructions(), AVX2's in place of AVX-512's below 24 bodies (pair_forces.hpp)
 TEST(PairForces, DispatchTakesThePathOfVectorInstructions) {
-  const Path expected = vector_instructions() == VectorInstructions::avx512     ? &detail::add_pair_forces_avx512
-                        : vector_instructions() == VectorInstructions::avx2_fma ? &detail::add_pair_forces_avx2_fma
-                                                                                : &detail::add_pair_forces_portable;
-  Eigen::ArrayXXd a = cluster(37, 0, 3), b = a;
-  detail::add_pair_forces(a, 37, 1.0, 0.0);
-  expected(b, 37, 1.0, 0.0);
-  EXPECT_EQ(std::memcmp(a.data(), b.data(), sizeof(double) * a.size()), 0);
+  for (const Eigen::Index n : {5, 23, 24, 37}) {
+    const VectorInstructions path = vector_instructions() == VectorInstructions::avx512 && n < 24
+                                        ? VectorInstructions::avx2_fma
+                                        : vector_instructions();
+    const Path expected = path == VectorInstructions::avx512     ? &detail::add_pair_forces_avx512
+                          : path == VectorInstructions::avx2_fma ? &detail::add_pair_forces_avx2_fma
+                                                                 : &detail::add_pair_forces_portable;
+    Eigen::ArrayXXd a = cluster(n, 0, 3), b = a;
+    detail::add_pair_forces(a, n, 1.0, 0.0);
+    expected(b, n, 1.0, 0.0);
+    EXPECT_EQ(std::memcmp(a.data(), b.data(), sizeof(double) * a.size()), 0) << "n = " << n;
+  }
   const char* portable = std::getenv("RIGIDDYN_PORTABLE");
   if (portable != nullptr && std::strcmp(portable, "1") == 0) {
     EXPECT_EQ(vector_instructions(), VectorInstructions::portable);
@@ -222,14 +228,19 @@ TEST(PairPotential, CoincidentBodiesWithoutSofteningGiveMinusInfinityOnEveryPath
   }
 }
 
+// the path of vector_instructions() from 12 bodies on (AVX-512) or 20 (AVX2), the portable one below (pair_forces.hpp)
 TEST(PairPotential, DispatchTakesThePathOfVectorInstructions) {
-  const PotentialPath expected = vector_instructions() == VectorInstructions::avx512 ? &detail::pair_potential_avx512
-                                 : vector_instructions() == VectorInstructions::avx2_fma
-                                     ? &detail::pair_potential_avx2_fma
-                                     : &detail::pair_potential_portable;
-  Eigen::ArrayXXd a = cluster(37, 0, 3), b = a;
-  const double V = detail::pair_potential(a, 37, 1.0, 0.0);
-  EXPECT_EQ(V, expected(b, 37, 1.0, 0.0));
+  for (const Eigen::Index n : {5, 11, 12, 19, 20, 37}) {
+    const VectorInstructions vectors = vector_instructions();
+    const bool wide =
+        (vectors == VectorInstructions::avx512 && n >= 12) || (vectors == VectorInstructions::avx2_fma && n >= 20);
+    const PotentialPath expected = !wide                                    ? &detail::pair_potential_portable
+                                   : vectors == VectorInstructions::avx512 ? &detail::pair_potential_avx512
+                                                                           : &detail::pair_potential_avx2_fma;
+    Eigen::ArrayXXd a = cluster(n, 0, 3), b = a;
+    const double V = detail::pair_potential(a, n, 1.0, 0.0);
+    EXPECT_EQ(V, expected(b, n, 1.0, 0.0)) << "n = " << n;
+  }
 }
 
 }  // namespace

@@ -219,13 +219,14 @@ TEST(SimulateScene, StepIsSimulatesFirstStep) {
 // that the motion of the centres of mass and ω_B do not depend on them.)
 TEST(SimulateScene, RecordedKickDriftKickStepsAreTheMethodsStepsBitwise) {
   Scene scene;
-  scene.bodies = {RigidBody(2.0, Eigen::Vector3d(1.0, 2.0, 3.0)), Particle(1.0), RigidBody(1.5, Eigen::Vector3d(0.5, 0.6, 0.7))};
+  scene.bodies = {RigidBody(2.0, Eigen::Vector3d(1.0, 2.0, 3.0)), Particle(1.0),
+                  RigidBody(1.5, Eigen::Vector3d(0.5, 0.6, 0.7))};
   scene.elements.push_back(MutualGravity{1.0, 0.05, {}});
   scene.elements.push_back(UniformGravity{Eigen::Vector3d(0.0, 0.0, -1.0), {}});
   RigidBodyState third = tumbling_state();
   third.p_W = Eigen::Vector3d(-1.0, 0.5, 0.2);
-  const std::vector<BodyState> initial{tumbling_state(), ParticleState{Eigen::Vector3d(1.0, 0.0, 0.0), Eigen::Vector3d(0.0, 0.3, 0.0)},
-                                       third};
+  const ParticleState particle{Eigen::Vector3d(1.0, 0.0, 0.0), Eigen::Vector3d(0.0, 0.3, 0.0)};
+  const std::vector<BodyState> initial{tumbling_state(), particle, third};
   for (const Method method : {Method::splitting_dlm, Method::splitting_dlm_yoshida4, Method::exact_flow_kick}) {
     SCOPED_TRACE(method_info(method).name);
     SimulationOptions o;
@@ -268,7 +269,8 @@ TEST(SimulateScene, RecordedKickDriftKickStepsEvaluateTheForcesOncePerKick) {
   const ElementTraits position_only{true, false, false, false, true};  // reads the attitude, not the velocities
   Scene scene;
   scene.bodies = {RigidBody(1.0, Eigen::Vector3d(1.0, 2.0, 3.0)), Particle(1.0)};  // two bodies: the generic model
-  const std::vector<BodyState> initial{tumbling_state(), ParticleState{Eigen::Vector3d(1.0, 0.0, 0.0), Eigen::Vector3d::Zero()}};
+  const ParticleState particle{Eigen::Vector3d(1.0, 0.0, 0.0), Eigen::Vector3d::Zero()};
+  const std::vector<BodyState> initial{tumbling_state(), particle};
   const std::pair<Method, int> kicks_per_step[] = {
       {Method::splitting_dlm, 1}, {Method::splitting_dlm_yoshida4, 3}, {Method::exact_flow_kick, 1}};
   for (const auto& [method, kicks] : kicks_per_step) {

@@ -12,9 +12,18 @@
 
 namespace rigiddyn::detail {
 
+// The fewest bodies for which a wider path pays (pair_forces.hpp): below them a body's pairs fill few blocks of lanes,
+// and the wider path's set-up per body (its sums zeroed and folded) costs more than its lanes save. Measured on a Xeon
+// with AVX-512, one core (ns per sum): the forces by AVX2 and AVX-512 24 and 42 at n = 4, 318 and 321 at 20, 441 and
+// 431 at 24; the potential by the portable path, AVX2 and AVX-512 83, 106 and 95 at 10, 126, 145 and 104 at 12, 208,
+// 220 and 173 at 16, 313, 305 and 196 at 20.
+constexpr Eigen::Index avx512_forces_from = 24, avx512_potential_from = 12, avx2_potential_from = 20;
+
 void add_pair_forces(Eigen::ArrayXXd& columns, Eigen::Index n, double G, double softening2) {
   switch (vector_instructions()) {
-    case VectorInstructions::avx512: return add_pair_forces_avx512(columns, n, G, softening2);
+    case VectorInstructions::avx512:
+      if (n >= avx512_forces_from) return add_pair_forces_avx512(columns, n, G, softening2);
+      return add_pair_forces_avx2_fma(columns, n, G, softening2);
     case VectorInstructions::avx2_fma: return add_pair_forces_avx2_fma(columns, n, G, softening2);
     case VectorInstructions::portable: return add_pair_forces_portable(columns, n, G, softening2);
   }
@@ -41,9 +50,13 @@ void add_pair_forces_portable(Eigen::ArrayXXd& columns, Eigen::Index n, double G
 
 double pair_potential(Eigen::ArrayXXd& columns, Eigen::Index n, double G, double softening2) {
   switch (vector_instructions()) {
-    case VectorInstructions::avx512: return pair_potential_avx512(columns, n, G, softening2);
-    case VectorInstructions::avx2_fma: return pair_potential_avx2_fma(columns, n, G, softening2);
-    case VectorInstructions::portable: return pair_potential_portable(columns, n, G, softening2);
+    case VectorInstructions::avx512:
+      if (n >= avx512_potential_from) return pair_potential_avx512(columns, n, G, softening2);
+      break;
+    case VectorInstructions::avx2_fma:
+      if (n >= avx2_potential_from) return pair_potential_avx2_fma(columns, n, G, softening2);
+      break;
+    case VectorInstructions::portable: break;
   }
   return pair_potential_portable(columns, n, G, softening2);
 }

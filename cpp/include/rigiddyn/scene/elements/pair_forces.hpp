@@ -27,7 +27,9 @@
 namespace rigiddyn::detail {
 
 // Columns of the pair sum, n rows used (the array may be longer): 0–2 the positions x, y, z [m], 3–5 the forces
-// f_x, f_y, f_z [N] (added to), 6 scratch, 7 the masses [kg]. G [m³/(kg s²)], ε² [m²].
+// f_x, f_y, f_z [N] (added to), 6 scratch, 7 the masses [kg]. G [m³/(kg s²)], ε² [m²]. The path of
+// vector_instructions(), but for fewer than 24 bodies AVX2's in place of AVX-512's (a body's few pairs fill few blocks
+// of eight: pair_forces.cpp has the figures).
 void add_pair_forces(Eigen::ArrayXXd& columns, Eigen::Index n, double G, double softening2);
 
 // The three paths, callable directly (tests compare them; add_pair_forces takes the one of vector_instructions()).
@@ -37,7 +39,8 @@ void add_pair_forces_avx2_fma(Eigen::ArrayXXd& columns, Eigen::Index n, double G
 void add_pair_forces_avx512(Eigen::ArrayXXd& columns, Eigen::Index n, double G, double softening2);
 
 // V [J] of the same columns (0–2 the positions, 6 scratch, 7 the masses; n rows used), the path of
-// vector_instructions(); and the three paths, callable directly (on the CPUs the forces' paths need).
+// vector_instructions() from 12 bodies on (AVX-512) or 20 (AVX2), the portable one below; and the three paths,
+// callable directly (on the CPUs the forces' paths need).
 double pair_potential(Eigen::ArrayXXd& columns, Eigen::Index n, double G, double softening2);
 double pair_potential_portable(Eigen::ArrayXXd& columns, Eigen::Index n, double G, double softening2);
 double pair_potential_avx2_fma(Eigen::ArrayXXd& columns, Eigen::Index n, double G, double softening2);
