@@ -212,6 +212,15 @@ TEST(SimulateScene, StepIsSimulatesFirstStep) {
   }
 }
 
+// 20 steps of 0.01 s of `method`, recorded at every step (the kick–drift–kick tests below)
+SimulationOptions twenty_steps_of(Method method) {
+  SimulationOptions o;
+  o.method = method;
+  o.dt = 0.01;
+  o.steps = 20;
+  return o;
+}
+
 // A kick–drift–kick run recorded at every step closes each step for its record, and the next step's opening kick
 // repeats the closing kick's wrenches (simulate/run_loop.hpp, merged_steps): the records are the bits of the
 // method's steps taken one at a time by step(), from a state to the next. (step() normalises the attitude it is given,
@@ -229,10 +238,7 @@ TEST(SimulateScene, RecordedKickDriftKickStepsAreTheMethodsStepsBitwise) {
   const std::vector<BodyState> initial{tumbling_state(), particle, third};
   for (const Method method : {Method::splitting_dlm, Method::splitting_dlm_yoshida4, Method::exact_flow_kick}) {
     SCOPED_TRACE(method_info(method).name);
-    SimulationOptions o;
-    o.method = method;
-    o.dt = 0.01;
-    o.steps = 20;
+    const SimulationOptions o = twenty_steps_of(method);
     const SceneSimulation run = simulate(scene, initial, o);
     ASSERT_EQ(run.t.size(), 21u);
     std::vector<BodyState> state = initial;
@@ -273,10 +279,7 @@ TEST(SimulateScene, RecordedKickDriftKickStepsAcrossSwitchesAreTheUnmergedStepsB
   const std::vector<BodyState> initial{tumbling_state(), particle};
   for (const Method method : {Method::splitting_dlm, Method::splitting_dlm_yoshida4, Method::exact_flow_kick}) {
     SCOPED_TRACE(method_info(method).name);
-    SimulationOptions o;
-    o.method = method;
-    o.dt = 0.01;
-    o.steps = 20;
+    const SimulationOptions o = twenty_steps_of(method);
     const SceneSimulation a = simulate(merged, initial, o), b = simulate(unmerged, initial, o);
     EXPECT_EQ(a.p_W, b.p_W);
     EXPECT_EQ(a.q_WB, b.q_WB);
@@ -304,10 +307,7 @@ TEST(SimulateScene, RecordedKickDriftKickStepsEvaluateTheForcesOncePerKick) {
       {Method::splitting_dlm, 1}, {Method::splitting_dlm_yoshida4, 3}, {Method::exact_flow_kick, 1}};
   for (const auto& [method, kicks] : kicks_per_step) {
     SCOPED_TRACE(method_info(method).name);
-    SimulationOptions o;
-    o.method = method;
-    o.dt = 0.01;
-    o.steps = 20;
+    const SimulationOptions o = twenty_steps_of(method);
     calls = 0;
     simulate(scene, initial, o, custom_force(BodyList{0}, spring, position_only));
     EXPECT_EQ(calls, 1 + kicks * 20 + 21);  // the first opening kick, each step's kicks, the 21 records

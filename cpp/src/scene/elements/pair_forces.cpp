@@ -96,6 +96,29 @@ struct Sums8 {
   __m512d x, y, z;
 };
 
+// d = p_j − p_i of the pairs (i, j …) and r² = |d|² + ε², by fused multiply–adds, four or eight lanes
+struct Separation4 {
+  __m256d dx, dy, dz, r2;
+};
+struct Separation8 {
+  __m512d dx, dy, dz, r2;
+};
+
+__attribute__((target("avx2,fma"))) inline Separation4 separation(const PairColumns& c, Eigen::Index i, Eigen::Index j,
+                                                                  __m256d eps2) {
+  const __m256d dx = _mm256_sub_pd(_mm256_loadu_pd(c.x + j), _mm256_set1_pd(c.x[i]));
+  const __m256d dy = _mm256_sub_pd(_mm256_loadu_pd(c.y + j), _mm256_set1_pd(c.y[i]));
+  const __m256d dz = _mm256_sub_pd(_mm256_loadu_pd(c.z + j), _mm256_set1_pd(c.z[i]));
+  return {dx, dy, dz, _mm256_fmadd_pd(dz, dz, _mm256_fmadd_pd(dy, dy, _mm256_fmadd_pd(dx, dx, eps2)))};
+}
+__attribute__((target("avx512f,avx2,fma"))) inline Separation8 separation(const PairColumns& c, Eigen::Index i,
+                                                                          Eigen::Index j, __m512d eps2) {
+  const __m512d dx = _mm512_sub_pd(_mm512_loadu_pd(c.x + j), _mm512_set1_pd(c.x[i]));
+  const __m512d dy = _mm512_sub_pd(_mm512_loadu_pd(c.y + j), _mm512_set1_pd(c.y[i]));
+  const __m512d dz = _mm512_sub_pd(_mm512_loadu_pd(c.z + j), _mm512_set1_pd(c.z[i]));
+  return {dx, dy, dz, _mm512_fmadd_pd(dz, dz, _mm512_fmadd_pd(dy, dy, _mm512_fmadd_pd(dx, dx, eps2)))};
+}
+
 __attribute__((target("avx2,fma"))) inline double lane_sum(__m256d v) {
   const __m128d two = _mm_add_pd(_mm256_castpd256_pd128(v), _mm256_extractf128_pd(v, 1));
   return _mm_cvtsd_f64(_mm_add_sd(two, _mm_unpackhi_pd(two, two)));
@@ -140,10 +163,7 @@ __attribute__((target("avx2,fma"))) inline __m256d strength_by_reciprocal_root(_
 template <__m256d (*strength)(__m256d, __m256d)>
 __attribute__((target("avx2,fma"))) inline void four_pairs(const PairColumns& c, Eigen::Index i, Eigen::Index j,
                                                              __m256d Gm_i, __m256d eps2, Sums4& s) {
-  const __m256d dx = _mm256_sub_pd(_mm256_loadu_pd(c.x + j), _mm256_set1_pd(c.x[i]));
-  const __m256d dy = _mm256_sub_pd(_mm256_loadu_pd(c.y + j), _mm256_set1_pd(c.y[i]));
-  const __m256d dz = _mm256_sub_pd(_mm256_loadu_pd(c.z + j), _mm256_set1_pd(c.z[i]));
-  const __m256d r2 = _mm256_fmadd_pd(dz, dz, _mm256_fmadd_pd(dy, dy, _mm256_fmadd_pd(dx, dx, eps2)));  // |d|² + ε²
+  const auto [dx, dy, dz, r2] = separation(c, i, j, eps2);
   const __m256d g = strength(_mm256_mul_pd(Gm_i, _mm256_loadu_pd(c.mass + j)), r2);
   s.x = _mm256_fmadd_pd(g, dx, s.x), s.y = _mm256_fmadd_pd(g, dy, s.y), s.z = _mm256_fmadd_pd(g, dz, s.z);
   _mm256_storeu_pd(c.f_x + j, _mm256_fnmadd_pd(g, dx, _mm256_loadu_pd(c.f_x + j)));
@@ -187,10 +207,7 @@ __attribute__((target("avx512f,avx2,fma"))) inline __m512d reciprocal_root(__m51
 __attribute__((target("avx512f,avx2,fma"))) inline void eight_pairs(const PairColumns& c, Eigen::Index i,
                                                                       Eigen::Index j, __m512d Gm_i, __m512d eps2,
                                                                       Sums8& s) {
-  const __m512d dx = _mm512_sub_pd(_mm512_loadu_pd(c.x + j), _mm512_set1_pd(c.x[i]));
-  const __m512d dy = _mm512_sub_pd(_mm512_loadu_pd(c.y + j), _mm512_set1_pd(c.y[i]));
-  const __m512d dz = _mm512_sub_pd(_mm512_loadu_pd(c.z + j), _mm512_set1_pd(c.z[i]));
-  const __m512d r2 = _mm512_fmadd_pd(dz, dz, _mm512_fmadd_pd(dy, dy, _mm512_fmadd_pd(dx, dx, eps2)));  // |d|² + ε²
+  const auto [dx, dy, dz, r2] = separation(c, i, j, eps2);
   const __m512d y = reciprocal_root(r2);
   const __m512d Gm_im_j = _mm512_mul_pd(Gm_i, _mm512_loadu_pd(c.mass + j));
   const __m512d g = _mm512_mul_pd(Gm_im_j, _mm512_mul_pd(y, _mm512_mul_pd(y, y)));
@@ -203,15 +220,6 @@ __attribute__((target("avx512f,avx2,fma"))) inline void eight_pairs(const PairCo
 // the upper four lanes added to the lower four (masked extracts, as in reciprocal_root)
 __attribute__((target("avx512f,avx2,fma"))) inline __m256d halves_sum(__m512d v) {
   return _mm256_add_pd(_mm512_maskz_extractf64x4_pd(0xF, v, 0), _mm512_maskz_extractf64x4_pd(0xF, v, 1));
-}
-
-// r² = |d|² + ε² of the four pairs (i, j … j + 3), by fused multiply–adds as in four_pairs
-__attribute__((target("avx2,fma"))) inline __m256d squared_distances(const PairColumns& c, Eigen::Index i,
-                                                                     Eigen::Index j, __m256d eps2) {
-  const __m256d dx = _mm256_sub_pd(_mm256_loadu_pd(c.x + j), _mm256_set1_pd(c.x[i]));
-  const __m256d dy = _mm256_sub_pd(_mm256_loadu_pd(c.y + j), _mm256_set1_pd(c.y[i]));
-  const __m256d dz = _mm256_sub_pd(_mm256_loadu_pd(c.z + j), _mm256_set1_pd(c.z[i]));
-  return _mm256_fmadd_pd(dz, dz, _mm256_fmadd_pd(dy, dy, _mm256_fmadd_pd(dx, dx, eps2)));
 }
 
 // m_j / √r² of four pairs by the divider's square root and division
@@ -230,7 +238,7 @@ __attribute__((target("avx2,fma"))) inline __m256d mass_over_distance_by_recipro
 template <__m256d (*mass_over_distance)(__m256d, __m256d)>
 __attribute__((target("avx2,fma"))) inline void four_terms(const PairColumns& c, Eigen::Index i, Eigen::Index j,
                                                              __m256d eps2, __m256d& sum) {
-  sum = _mm256_add_pd(sum, mass_over_distance(_mm256_loadu_pd(c.mass + j), squared_distances(c, i, j, eps2)));
+  sum = _mm256_add_pd(sum, mass_over_distance(_mm256_loadu_pd(c.mass + j), separation(c, i, j, eps2).r2));
 }
 
 // the same terms of the pairs (i, j) for j from `first` to n − 1 one at a time (r² by std::fma, as the lanes), added to
@@ -249,10 +257,7 @@ __attribute__((target("avx2,fma"))) inline double last_terms(const PairColumns& 
 // 0 · ∞ a NaN, where the division gives the portable path's ∞ or 0)
 __attribute__((target("avx512f,avx2,fma"))) inline void eight_terms(const PairColumns& c, Eigen::Index i,
                                                                       Eigen::Index j, __m512d eps2, __m512d& sum) {
-  const __m512d dx = _mm512_sub_pd(_mm512_loadu_pd(c.x + j), _mm512_set1_pd(c.x[i]));
-  const __m512d dy = _mm512_sub_pd(_mm512_loadu_pd(c.y + j), _mm512_set1_pd(c.y[i]));
-  const __m512d dz = _mm512_sub_pd(_mm512_loadu_pd(c.z + j), _mm512_set1_pd(c.z[i]));
-  const __m512d r2 = _mm512_fmadd_pd(dz, dz, _mm512_fmadd_pd(dy, dy, _mm512_fmadd_pd(dx, dx, eps2)));  // |d|² + ε²
+  const __m512d r2 = separation(c, i, j, eps2).r2;
   const __m512d m_j = _mm512_loadu_pd(c.mass + j);
   const __mmask8 in_range = _mm512_cmp_pd_mask(r2, _mm512_set1_pd(0x1p-1000), _CMP_GE_OQ) &
                             _mm512_cmp_pd_mask(r2, _mm512_set1_pd(0x1p1000), _CMP_LE_OQ);
