@@ -10,19 +10,15 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-#include <cmath>
-#include <limits>
 #include <string>
 
 namespace rigiddyn::bindings {
 
-// A unit quaternion from `obj` (checked_unit_quaternion: ValueError naming `name` farther than 1e-6 from unit norm),
-// kept bit for bit when it is already unit to round-off (4 eps) so that a state rebuilt from its repr equals the
-// original, normalised otherwise.
+// A unit quaternion from `obj` (checked_attitude: ValueError naming `name` farther than 1e-6 from unit norm), kept bit
+// for bit when it is already unit to round-off so that a state rebuilt from its repr equals the original, normalised
+// otherwise.
 inline Eigen::Quaterniond as_unit_quaternion(pybind11::handle obj, const std::string& name, bool scalar_first = false) {
-  const Eigen::Quaterniond q = py_io::as_quaternion(obj, name, scalar_first);
-  const Eigen::Quaterniond unit = checked_unit_quaternion(q, name);
-  return std::abs(q.norm() - 1.0) <= 4 * std::numeric_limits<double>::epsilon() ? q : unit;
+  return checked_attitude(py_io::as_quaternion(obj, name, scalar_first), name);
 }
 
 // __eq__ (the values compared by `equal`, an unrelated type gives NotImplemented) and no hash: the states are

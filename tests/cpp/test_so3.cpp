@@ -12,9 +12,11 @@
 #include "rigiddyn/so3/integrate.hpp"
 #include "rigiddyn/so3/matrix.hpp"
 #include "rigiddyn/so3/quaternion.hpp"
+#include "rigiddyn/so3/quaternion_kernels.hpp"
 #include "rigiddyn/so3/skew.hpp"
 
 #include <cmath>
+#include <limits>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -115,6 +117,33 @@ TEST(Quaternion, CanonicalAndNormalize) {
 TEST(Quaternion, CheckedUnitQuaternionNormalisesWithinTolerance) {
   const Eigen::Quaterniond q(Eigen::Vector4d(0, 0, 0, 1 + 0.5e-6));  // (x, y, z, w)
   EXPECT_EQ(checked_unit_quaternion(q, "q").w(), 1.0);
+}
+
+// Every q / |q| that the library forms (normalise_quaternion, as the integrators' projection; checked_unit_quaternion;
+// Eigen's normalized) is kept bit for bit by checked_attitude, so that a run restarted from a recorded state starts
+// from the same bits; a quaternion farther from unit norm is normalised. Random directions at norms 1 ± 1e-7 and at
+// scales from 2^-20 to 1 of each coefficient (small components: the sum's rounding differs).
+TEST(Quaternion, CheckedAttitudeKeepsEveryNormalisedQuaternion) {
+  std::mt19937_64 rng(7);
+  std::normal_distribution<double> normal;
+  std::uniform_int_distribution<int> exponent(-20, 0);
+  for (int trial = 0; trial < 200000; ++trial) {
+    Eigen::Vector4d c;
+    for (int i = 0; i < 4; ++i) c[i] = std::ldexp(normal(rng), exponent(rng));
+    c *= (1.0 + 1e-7 * normal(rng)) / c.norm();
+    Eigen::Vector4d projected = c;
+    normalise_quaternion(projected.data());
+    const Eigen::Quaterniond unit[3] = {Eigen::Quaterniond(projected), checked_unit_quaternion(Eigen::Quaterniond(c), "q"),
+                                        Eigen::Quaterniond(c).normalized()};
+    for (const Eigen::Quaterniond& q : unit) {
+      ASSERT_EQ(checked_attitude(q, "q").coeffs(), q.coeffs()) << q.coeffs().transpose();
+    }
+    // |c| - 1 of order 1e-7: normalised, to unit norm within the 4 eps that keeps it
+    const Eigen::Quaterniond normalised = checked_attitude(Eigen::Quaterniond(c), "q");
+    ASSERT_LE(std::abs(normalised.norm() - 1.0), 4 * std::numeric_limits<double>::epsilon());
+    ASSERT_EQ(normalised.coeffs(), unit[1].coeffs());
+  }
+  expect_invalid([] { checked_attitude(Eigen::Quaterniond(1 + 2e-6, 0, 0, 0), "q_WB"); }, "q_WB");
 }
 
 TEST(Quaternion, BadInputThrows) {

@@ -53,7 +53,7 @@ GyrostatState checked_state(const GyrostatState& state, const std::string& name)
   require_finite(state.w_B, name + ".w_B");
   require_finite(state.wheel_speeds, name + ".wheel_speeds");
   GyrostatState out = state;
-  out.q_WB = checked_unit_quaternion(state.q_WB, name + ".q_WB");
+  out.q_WB = checked_attitude(state.q_WB, name + ".q_WB");
   return out;
 }
 

@@ -66,7 +66,7 @@ PivotedBody::PivotedBody(const RigidBody& body, const Eigen::Vector3d& p_OC_B, c
 PivotedBodyState checked_state(const PivotedBodyState& state, const std::string& name) {
   require_finite(state.w_B, name + ".w_B");
   PivotedBodyState out = state;
-  out.q_WB = checked_unit_quaternion(state.q_WB, name + ".q_WB");
+  out.q_WB = checked_attitude(state.q_WB, name + ".q_WB");
   return out;
 }
 

@@ -47,7 +47,7 @@ RigidBodyState checked_state(const RigidBodyState& state, const std::string& nam
   require_finite(state.v_W, name + ".v_W");
   require_finite(state.w_B, name + ".w_B");
   RigidBodyState out = state;
-  out.q_WB = checked_unit_quaternion(state.q_WB, name + ".q_WB");
+  out.q_WB = checked_attitude(state.q_WB, name + ".q_WB");
   return out;
 }
 

@@ -294,8 +294,10 @@ Result run(Model model, typename Model::Coordinates y, const SimulationOptions& 
       if (split <= steps && i == split - 1) {  // step `split` crosses switch times: sub-steps between them
         const std::size_t first = k;
         while (k < switches.step.size() && switches.step[k] == split) ++k;
+        // to t_i + dt, as a step from t_i ends (one_step), not to t_(i+1) (the two may differ by an ulp)
+        const double t_i = grid_time(o, i);
         out.unconverged_steps += split_step<Integrator>(model, y, workspace, pieces, switches.time.data() + first,
-                                                        switches.time.data() + k, grid_time(o, i), grid_time(o, i + 1), dt);
+                                                        switches.time.data() + k, t_i, t_i + dt, dt);
         if constexpr (has_edge_kick<Integrator>::value) start_of_merged = MergedStart::closed;
         ++i;
         pieces.at_time(y, grid_time(o, i));
