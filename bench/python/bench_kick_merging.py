@@ -10,8 +10,8 @@ same as last, cpp/include/rigiddyn/simulate/run_loop.hpp), so a step costs 1 (sp
 
 A run recorded at every step closes each step for its record (kick_merging_<method>_every_step_over_ends: the same
 run recorded at every step over recorded at its ends, in the same process): a record costs the potential's O(N^2)
-sum and an evaluation of the forces for the elements' powers, and the next step's opening kick repeats the closing
-kick's wrenches (no evaluation).
+sum, and takes the elements' powers from the closing kick's wrenches, which the next step's opening kick repeats (no
+evaluation).
 
 Without --small it also measures the shipped cluster's default method and step against the two it was weighed
 against (the figures of the file's comment).

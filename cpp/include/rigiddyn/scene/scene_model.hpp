@@ -456,6 +456,25 @@ class BasicSceneModel {
     } else {
       evaluate(y, true);
     }
+    append_record(y, t, out);
+  }
+
+  // record() right after a loads_kick at y's positions, attitudes, t and loads (simulate/run_loop.hpp: the closing kick
+  // of merged steps, where kicks_merge(), before a record): the elements' wrenches that kick kept, not evaluated
+  // again, and each element's power Σ_b f_W·v_W + τ_B·ω_B [W] of its wrenches at the record's velocities (the
+  // products its own add_wrenches sums, in body order: the same power to round-off, bit for bit where the element
+  // sums them so, as MutualGravity, UniformGravity and ScheduledLoads do)
+  void record_after_kick(const Coordinates& y, double t, SceneSimulation& out) const {
+    if (out.estimate_records) return record(y, t, out);
+    fill_kinematics(y, true);
+    sum_element_wrenches();
+    for (std::size_t e = 0; e < terms_.size(); ++e) power_[e] = element_power(e);
+    append_record(y, t, out);
+  }
+
+  // The rest of a record (record): the bodies, energies, momenta, works, powers and mass-flow energies of y at t [s],
+  // from kinematics_, wrenches_ and power_ at y
+  void append_record(const Coordinates& y, double t, SceneSimulation& out) const {
     out.t.push_back(t);
     detail::RecordSums sums;
     for_each_slot([&](const auto& s) {
@@ -574,11 +593,7 @@ class BasicSceneModel {
         std::visit([&](const auto& term) { term.add_wrenches(t, kinematics_, w); }, terms_[e]);
       }
     }
-    for (BodyWrench& b : wrenches_) b.f_W.setZero(), b.tau_B.setZero();
-    for (const auto& w : element_wrenches_) {
-      for (std::size_t b = 0; b < w.size(); ++b) wrenches_[b].f_W += w[b].f_W, wrenches_[b].tau_B += w[b].tau_B;
-    }
-    note_tree_wrenches();
+    sum_element_wrenches();
     add_impulses(y.data() + t_y_ + impulse_offset(), h);  // at the positions and attitudes the kick keeps
     Eigen::Vector3d w_F = Eigen::Vector3d::Zero();  // the frame's Ω [rad/s] in F
     if constexpr (turning) w_F = coriolis_frame_rate(t);
@@ -590,12 +605,28 @@ class BasicSceneModel {
       if constexpr (turning) {
         if (std::holds_alternative<CoriolisTerm>(terms_[e])) continue;  // its work over the exact kick: 0
       }
-      double work = 0.0;
-      const std::vector<BodyWrench>& w = element_wrenches_[e];
-      for (std::size_t b = 0; b < w.size(); ++b) work += w[b].f_W.dot(kinematics_[b].v_W) + w[b].tau_B.dot(kinematics_[b].w_B);
-      y[t_y_ + 1 + e] += h * work;
+      y[t_y_ + 1 + e] += h * element_power(e);
     }
     return kicked;
+  }
+
+  // wrenches_ = Σ of the elements' wrenches element_wrenches_ (loads_kick)
+  void sum_element_wrenches() const {
+    for (BodyWrench& b : wrenches_) b.f_W.setZero(), b.tau_B.setZero();
+    for (const auto& w : element_wrenches_) {
+      for (std::size_t b = 0; b < w.size(); ++b) wrenches_[b].f_W += w[b].f_W, wrenches_[b].tau_B += w[b].tau_B;
+    }
+    note_tree_wrenches();
+  }
+
+  // Σ_b f_W·v_W + τ_B·ω_B [W] of element e's wrenches in element_wrenches_ at the velocities of kinematics_
+  double element_power(std::size_t e) const {
+    double power = 0.0;
+    const std::vector<BodyWrench>& w = element_wrenches_[e];
+    for (std::size_t b = 0; b < w.size(); ++b) {
+      power += w[b].f_W.dot(kinematics_[b].v_W) + w[b].tau_B.dot(kinematics_[b].w_B);
+    }
+    return power;
   }
 
   // The Coriolis terms among terms_ (their frames' Ω when constant) and, when there is one, the inertia each body

@@ -140,6 +140,15 @@ template <class Model>
 struct has_repeated_kick<Model, std::void_t<decltype(std::declval<const Model&>().loads_kick_repeated(
                                     std::declval<typename Model::Coordinates&>(), 0.0))>> : std::true_type {};
 
+// Whether a model records a state right after a loads_kick from that kick's wrenches (record_after_kick: the record
+// of merged steps closed for it evaluates no force again)
+template <class Model, class Result, class = void>
+struct has_record_after_kick : std::false_type {};
+template <class Model, class Result>
+struct has_record_after_kick<Model, Result, std::void_t<decltype(std::declval<const Model&>().record_after_kick(
+                                                std::declval<const typename Model::Coordinates&>(), 0.0,
+                                                std::declval<Result&>()))>> : std::true_type {};
+
 // How merged steps start: from a closed state, from one left open (the last step's closing kick still to give:
 // merged with this first step's opening kick), or from one that the merged steps just before closed for a record
 // alone (the opening kick at the closing kick's positions, attitudes, t and loads: where the model keeps that kick's
@@ -255,11 +264,18 @@ Result run(Model model, typename Model::Coordinates y, const SimulationOptions& 
   std::size_t k = 0;  // the next switch
   bool stop = false;  // the monitor asked to stop
   // after the steps up to i, `taken` of them since the last record: the record when one is due (every record_every-th
-  // step, and the last); whether the run ends there (its state not finite)
-  const auto recorded_divergence = [&](std::int64_t taken) RIGIDDYN_ALWAYS_INLINE_LAMBDA {
+  // step, and the last), from the wrenches of the kick that closed them where `after_kick`; whether the run ends there
+  // (its state not finite)
+  const auto recorded_divergence = [&](std::int64_t taken, bool after_kick = false) RIGIDDYN_ALWAYS_INLINE_LAMBDA {
     until_record -= taken;
     if (until_record != 0 && i != steps) return false;
     until_record = record_every;
+    if constexpr (has_record_after_kick<Model, Result>::value) {
+      if (after_kick) {
+        model.record_after_kick(y, grid_time(o, i), out);
+        return out.diverged = !y.allFinite();
+      }
+    }
     append_state(out, grid_time(o, i), model, y);
     return out.diverged = !y.allFinite();
   };
@@ -276,7 +292,7 @@ Result run(Model model, typename Model::Coordinates y, const SimulationOptions& 
                                  [&](std::int64_t k) { pieces.at_time(y, grid_time(o, first + k)); });
         start_of_merged = close ? MergedStart::closed_for_record : MergedStart::open;
         i += n;
-        if (recorded_divergence(n)) break;
+        if (recorded_divergence(n, close)) break;
       }
       if (out.diverged) break;
     }
