@@ -18,6 +18,13 @@ velocities (REBOUND's own `energy()` leaves the softening out of the potential, 
 softened run). Times are process CPU time (either library may use threads: all count), the fastest of a
 few runs.
 
+Two figures per pair. The run's: rigiddyn's whole `simulate` call (the scene's compile, the states' conversion, its
+two records) against REBOUND's `steps` call (its particles added before the clock starts). A step's: the time of a
+run of 2s steps less that of s steps in each library, over s steps, so that neither library's cost per run enters it.
+
+    nbody_leapfrog_pair            the runs' CPU times per pair
+    nbody_leapfrog_step_pair       a step's CPU time per pair (2s steps less s)
+
     python bench/python/bench_nbody_rebound.py           # N = 100 and 1000
     python bench/python/bench_nbody_rebound.py --small   # N = 100 and 300 (what ctest runs)
 
@@ -71,6 +78,11 @@ def rigiddyn_run(m, p, v, steps):
     return seconds, abs((E - E0) / E0)
 
 
+def step_seconds(run, steps):
+    """CPU seconds of `steps` steps less a run's own cost: run(2 steps) − run(steps), each the fastest of 3."""
+    return run(2 * steps)[0] - run(steps)[0]
+
+
 def rebound_run(rebound, m, p, v, steps):
     """(CPU seconds, |ΔE/E0|) of `steps` leapfrog steps of the cluster in REBOUND (a fresh simulation per run)."""
     def run():
@@ -108,6 +120,12 @@ def main():
             t_rb, dE_rb = rebound_run(rebound, m, p, v, steps)
             print(f"N = {n}, {steps} steps of {DT:g} s: REBOUND {t_rb / pairs * 1e9:.2f} ns per pair, |dE/E| {dE_rb:.2e}")
             report_ratio("nbody_leapfrog_pair", pairs, t_rd, t_rb, "rebound")
+        s_rd = step_seconds(lambda k: rigiddyn_run(m, p, v, k), steps)
+        print(f"N = {n}, a step: rigiddyn {s_rd / pairs * 1e9:.2f} ns per pair")
+        if rebound is not None:
+            s_rb = step_seconds(lambda k: rebound_run(rebound, m, p, v, k), steps)
+            print(f"N = {n}, a step: REBOUND {s_rb / pairs * 1e9:.2f} ns per pair")
+            report_ratio("nbody_leapfrog_step_pair", pairs, s_rd, s_rb, "rebound")
 
 
 if __name__ == "__main__":
