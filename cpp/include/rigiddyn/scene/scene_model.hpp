@@ -303,8 +303,7 @@ class BasicSceneModel {
       next_ = y + (0.5 * h) * rate_;
       for (const detail::TreeSlot& tree : trees) tree.variational_midpoint_iterate(mid_.data(), 0.5 * h, next_.data());
       midpoint_newton(y, mid_, next_, h);
-      const double change = (next_ - mid_).norm();
-      converged = change <= tolerance * next_.norm();
+      converged = midpoint_converged(*this, mid_, next_);
       if (converged || trees.empty()) {
         mid_.swap(next_);
       } else {
