@@ -12733,8 +12733,8 @@ def step(model: Particle | PlanarBody | RigidBody | PivotedBody | PivotedPlanarB
     
     The step `simulate` takes, for a loop written in Python. A step across a switch time of the loads (a t_start or
     t_end) is split there, as in simulate. Steps from the states they return, at the times t0 + i dt, give the records of
-    ``simulate(model, state, dt, steps, t0=t0)`` bit for bit (by the explicit methods; implicit_midpoint's to its solver's
-    tolerance).
+    ``simulate(model, state, dt, steps, t0=t0)`` bit for bit (by every method but 'exact', whose records are its closed
+    form from the run's start).
     
     Parameters
     ----------
