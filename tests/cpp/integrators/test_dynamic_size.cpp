@@ -28,6 +28,7 @@ class DynamicSize {
   explicit DynamicSize(const Fixed& model) : model_(model) {}
 
   Eigen::Index tangent_count() const { return typename Fixed::Tangent().size(); }
+  Eigen::Index time_index() const { return model_.time_index(); }  // the implicit midpoint's stopping test reads it
   void rate(const Coordinates& y, Coordinates& dy) const {
     apply_as<typename Fixed::Coordinates>(dy, [&](auto& f) { model_.rate(fixed(y), f); });
   }
