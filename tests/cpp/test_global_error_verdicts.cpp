@@ -1,7 +1,7 @@
 // The verdict texts of the global error estimate (simulate/global_error.hpp) where the order check fails: each record
 // says "not asymptotic: observed order <o> where <p> is expected (<quantity>)" with its own observed order printed as
-// printf's "%.2g" prints it, however many records share a text (orders that print alike) and at orders that lie a
-// rounding error from the tie between two printed values.
+// printf's "%.2g" prints it, however many records share a text (orders that print alike), at orders that lie a
+// rounding error from the tie between two printed values, and in every decade.
 #include "one_body_error_records.hpp"
 #include "rigiddyn/simulate/global_error.hpp"
 
@@ -51,6 +51,11 @@ TEST(GlobalErrorVerdicts, EachRecordPrintsItsOwnObservedOrder) {
     }
   }
   for (const double x : {0.0995, 0.996, 9.96, 99.4, 99.6, 150.0, 0.05, -0.05, 5.12, 5.13, 5.12, 1.0, 10.0, 0.1}) {
+    orders.push_back(x);
+  }
+  // every other decade printf's "%.2g" reaches here (its exponent form below 1e-4), ties and ends among them
+  for (const double x : {0.0125, 0.01249, 0.001, 0.00995, 0.00155, -0.0455, 0.000125, 1.25e-5, 9.96e-5, 1e-4,
+                         3.5e-7, -3.5e-7, 0.0, 0.0}) {
     orders.push_back(x);
   }
   const RunsWithOrders h(orders, 1), h2(orders, 2), h4(orders, 4);

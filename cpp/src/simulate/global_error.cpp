@@ -83,19 +83,30 @@ class Text {
 };
 
 // A code that two numbers share only if printf's "%.2g" prints them alike, found without printing them: the sign,
-// the decade of |x| ([0.1, 1), [1, 10) or [10, 100)) and k = round(|x| 10^s) in it (s = 2, 1, 0), |x| rounded to two
-// significant digits, from which "%.2g" prints (ISO C 7.21.6.1: %g rounds to the precision's significant digits,
-// then chooses its style from that rounded value's exponent). −1 outside those decades, for NaN, and where |x| 10^s
-// lies within 10⁻⁶ of a tie between two k (its product's rounding, ≤ 2⁻⁴⁷, could then have moved it across the tie
-// that printf rounds exactly).
+// the decade e of |x| (10^e <= |x| < 10^(e+1), |e| <= 20) and k = round(|x| 10^(1 − e)) in [10, 100], |x| rounded
+// to two significant digits, from which "%.2g" prints (ISO C 7.21.6.1: %g rounds to the precision's significant
+// digits, then chooses its style from that rounded value's exponent); ±0 a code of its own. −1 for NaN, outside those
+// decades, and where |x| 10^(1 − e) lies within 10⁻⁶ of a tie between two k (its one rounding, ≤ 2⁻⁴⁶ there, could
+// then have moved it across the tie that printf rounds exactly). The decade from log10, moved by one where its
+// rounding put |x| 10^(1 − e) outside [10, 100) (10^n is exact in double for 0 <= n <= 22: |x| 10^n or |x| / 10^(−n)
+// is one rounding).
 int two_digit_code(double x) {
+  const int sign = std::signbit(x) ? 1 : 0;
   const double size = std::abs(x);
-  const int decade = size < 0.1 ? -1 : size < 1.0 ? 0 : size < 10.0 ? 1 : size < 100.0 ? 2 : -1;  // NaN: -1
-  if (decade < 0) return -1;
-  const double scaled = size * (decade == 0 ? 100.0 : decade == 1 ? 10.0 : 1.0);
+  if (size == 0.0) return sign;
+  if (!(size >= 1e-20 && size < 1e20)) return -1;  // NaN too
+  int e = static_cast<int>(std::floor(std::log10(size)));
+  double scaled = 0.0;
+  for (int tries = 0; tries < 3; ++tries) {
+    const int n = 1 - e;
+    scaled = n >= 0 ? size * std::pow(10.0, n) : size / std::pow(10.0, -n);
+    if (scaled >= 10.0 && scaled < 100.0) break;
+    e += scaled < 10.0 ? -1 : 1;
+  }
+  if (!(scaled >= 10.0 && scaled < 100.0)) return -1;
   const double k = std::round(scaled);
   if (std::abs(scaled - k) > 0.5 - 1e-6) return -1;
-  return (static_cast<int>(k) * 3 + decade) * 2 + (std::signbit(x) ? 1 : 0);
+  return ((e + 32) * 128 + static_cast<int>(k)) * 2 + sign;  // >= 2 · 12 · 128: apart from ±0's
 }
 
 // The verdicts "not asymptotic: observed order <%.2g> where <p> is expected (<quantity>)" of one estimate's common
@@ -519,28 +530,37 @@ std::array<double, 4> state_sizes(const CommonTable& common, std::size_t j) {
   return out;
 }
 
-// Past the Lyapunov time: a state estimate that grew more than 1000 (t_j / t_k)^4 from an earlier common record k
-// (t_k > 0) to record j grew faster than any global error of a regular motion does (linearly, or as t² with a
-// drifting frequency): nearby trajectories diverge exponentially, e^{λ t}, and the differences soon leave the
-// linear regime that Richardson extrapolation assumes. Every record from there on whose order check failed says
-// so, with λ = ln(growth) / (t_j − t_k).
+// Past the Lyapunov time: a state estimate whose envelope (its largest value so far) grew more than 1000 (t_j / t_k)^4
+// from an earlier common record k (t_k > 0) to record j grew faster than any global error of a regular motion does
+// (linearly, or as t² with a drifting frequency): nearby trajectories diverge exponentially, e^{λ t}, and the
+// differences soon leave the linear regime that Richardson extrapolation assumes. Every record from there on whose
+// order check failed says so, with λ = ln(growth) / (t_j − t_k). The envelope, not each record's estimate: a regular
+// motion's error crosses zero again and again (a pendulum's angle error at every swing), and a growth from such a
+// record measured 1000 (t_j / t_k)^4 and more on the shipped pendulum. A record's new verdict is made once per text
+// (its records share it).
 void name_exponential_growth(CommonTable& common, const double* t, std::size_t stride) {
   const auto not_asymptotic = [](const std::string& v) { return v.rfind("not asymptotic", 0) == 0; };
-  const auto& texts = common.verdict.texts();
+  const std::vector<std::string>& texts = common.verdict.texts();
   if (std::none_of(texts.begin(), texts.end(), not_asymptotic)) return;  // no record a growth would rename
   constexpr double beyond_polynomial = 1000.0;
-  std::array<double, 4> least{};  // per kind: the smallest ε / t^4 of the records before, and its time
+  std::array<double, 4> envelope{};  // per kind: the largest estimate so far
+  std::array<double, 4> least{};     // and the smallest envelope / t^4 of the records before, and its time
   std::array<double, 4> least_t{};
   least.fill(std::numeric_limits<double>::infinity());
   std::string past;
+  constexpr std::uint32_t unmade = std::numeric_limits<std::uint32_t>::max();
+  std::vector<std::uint32_t> renamed(texts.size(), unmade);  // per text of the common records: its renamed text
   for (std::size_t j = 1; j < common.rows(); ++j) {
     if (past.empty()) {  // once named, the growth is not measured again
       const double tj = t[j * stride];
-      if (!(tj > 0.0)) continue;
-      const double t4 = tj * tj * tj * tj;
       const std::array<double, 4> sizes = state_sizes(common, j);
       for (std::size_t k = 0; k < sizes.size(); ++k) {
-        const double scaled = sizes[k] / t4;
+        if (sizes[k] > envelope[k]) envelope[k] = sizes[k];  // (NaN: not estimated, not taken)
+      }
+      if (!(tj > 0.0)) continue;
+      const double t4 = tj * tj * tj * tj;
+      for (std::size_t k = 0; k < sizes.size(); ++k) {
+        const double scaled = envelope[k] / t4;
         if (std::isfinite(scaled) && scaled > beyond_polynomial * least[k]) {
           const double rate = std::log(scaled / least[k] * std::pow(tj / least_t[k], 4.0)) / (tj - least_t[k]);
           Text text;
@@ -554,8 +574,9 @@ void name_exponential_growth(CommonTable& common, const double* t, std::size_t s
       }
     }
     if (past.empty()) continue;
-    const std::string& verdict = common.verdict[j];
-    if (not_asymptotic(verdict)) common.verdict.set(j, past + verdict);
+    const std::uint32_t k = common.verdict.text_index(j);  // a text of the common records (renamed ones come after)
+    if (renamed[k] == unmade) renamed[k] = not_asymptotic(texts[k]) ? common.verdict.add_text(past + texts[k]) : k;
+    common.verdict.set_text(j, renamed[k]);
   }
 }
 
