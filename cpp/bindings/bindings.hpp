@@ -27,6 +27,8 @@ void bind_tree(pybind11::module_& m);  // after bind_spatial and bind_inertia: a
 void bind_tree_link(pybind11::module_& m);  // after bind_tree: TreeLink, JointState, Tree.joint_states
 // The classes only the core makes: calling one raises TypeError naming what makes it (made_by_the_core.cpp)
 void mark_made_by_the_core(pybind11::module_& m);
+// glibc's malloc settings keeping the freed heap for the next runs (heap_reuse.cpp), unless the user chose them
+void keep_freed_heap_for_reuse();
 // Last: the runtime signatures (__text_signature__, a class's __signature__) of every function and class in m
 void add_text_signatures(pybind11::module_& m);
 }  // namespace rigiddyn::bindings

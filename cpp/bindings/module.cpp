@@ -8,6 +8,7 @@
 PYBIND11_MODULE(_core, m) {
   m.doc() = "rigiddyn's C++ core (rotations, frames, spatial algebra, inertia, dynamics, orbits).";
   m.attr("__version__") = rigiddyn::version();
+  rigiddyn::bindings::keep_freed_heap_for_reuse();
   rigiddyn::bindings::bind_so3(m);
   rigiddyn::bindings::bind_so3_ops(m);
   rigiddyn::bindings::bind_frames(m);
