@@ -42,8 +42,11 @@ print(json.dumps(out))
 
 
 def measure(calls, **env):
-    """{case: {faults, seconds}} of a fresh interpreter whose environment adds `env`."""
-    run = subprocess.run([sys.executable, "-c", CHILD, str(calls)], env={**os.environ, **env}, capture_output=True,
+    """{case: {faults, seconds}} of a fresh interpreter whose environment is this one's without malloc's settings,
+    and with `env`."""
+    inherited = {k: v for k, v in os.environ.items()
+                 if not k.startswith("MALLOC_") and k not in ("GLIBC_TUNABLES", "RIGIDDYN_KEEP_MALLOC")}
+    run = subprocess.run([sys.executable, "-c", CHILD, str(calls)], env={**inherited, **env}, capture_output=True,
                          text=True, check=True)
     return json.loads(run.stdout)
 

@@ -31,8 +31,11 @@ print(json.dumps(resource.getrusage(resource.RUSAGE_SELF).ru_minflt - before))
 
 
 def faults_of_three_calls(**env):
-    """The minor page faults of three calls in a fresh interpreter whose environment adds `env`."""
-    run = subprocess.run([sys.executable, "-c", SCRIPT], env={**os.environ, **env}, capture_output=True, text=True,
+    """The minor page faults of three calls in a fresh interpreter whose environment is this one's without malloc's
+    settings (a Dask cluster started in this process sets MALLOC_TRIM_THRESHOLD_ in its environment) and with `env`."""
+    inherited = {k: v for k, v in os.environ.items()
+                 if not k.startswith("MALLOC_") and k not in ("GLIBC_TUNABLES", "RIGIDDYN_KEEP_MALLOC")}
+    run = subprocess.run([sys.executable, "-c", SCRIPT], env={**inherited, **env}, capture_output=True, text=True,
                          check=True)
     return json.loads(run.stdout)
 
