@@ -8,14 +8,15 @@
 // a unit quaternion: |q| is exact. The unknowns (ω̄, v̄) solve ω̄ = ω0 + (h/2) ω̇(ȳ),
 // v̄ = v0 + (h/2) v̇(ȳ); then ω1 = 2ω̄ − ω0, v1 = 2v̄ − v0, p1 = p0 + h v̄, work1 = work0 + h P(ȳ).
 //
-// Solver: Newton on ω̄ with the exact Jacobian of the gyroscopic term,
+// Solver: the fixed point ȳ = y0 + (h/2) ẏ(ȳ), each iterate's ω̄ corrected by Newton's step with the exact
+// Jacobian of the gyroscopic term (midpoint_newton_correction below),
 //   J = I + (h/2)(ω̄^ I − (I ω̄)^)   (the residual multiplied by I),
 // the attitude dependence of couples given in W and of forces given in B left to the iteration
 // (it converges linearly at a rate O(h²|n|/|I|) there, quadratically for torque-free bodies).
-// Stops when the correction is below `tolerance` relative to |ω̄| + h|ω̇| (and likewise for v̄),
-// or after `max_iterations`: then the last iterate is kept and step() returns false, which simulate()
-// counts (Trajectory::unconverged_steps; the Python binding warns). At h|ω| ≲ 1 this is never
-// reached; near the separatrix it happens from h|ω| ≈ 3.5.
+// Stops when the last change of the motion's coordinates is below `tolerance` relative to their size
+// (midpoint_converged below), or after `max_iterations`: then the last iterate is kept and step() returns false,
+// which simulate() counts (unconverged_steps of the run's records; the Python binding warns). At h|ω| ≲ 1 this is
+// never reached; near the separatrix it happens from h|ω| ≈ 3.5.
 //
 // Order 2 (symmetric); cost per step: one derivative evaluation and one 3×3 solve per Newton
 // iteration, typically 3–5 at h|ω| ~ 0.01–0.5. Conserves on a free body: the energy and |L|
