@@ -188,7 +188,6 @@ def test_a_chaotic_three_body_run_past_its_lyapunov_time():
     assert any(v.startswith("past the Lyapunov time of this scene") for v in verdicts), verdicts
 
 
-
 @pytest.mark.parametrize("method", ["rk4", "rkmk4", "splitting_dlm"])
 @pytest.mark.parametrize("steps", [800, 2712, 4000, 8000])
 def test_a_regular_motion_is_not_named_past_its_lyapunov_time(method, steps):
@@ -199,6 +198,7 @@ def test_a_regular_motion_is_not_named_past_its_lyapunov_time(method, steps):
     r = rd.simulate(scene, initial, dt=20.0 / steps, steps=steps, method=method)
     named = [v for v in r.error.verdict if "Lyapunov" in v]
     assert not named, named[:1]
+
 
 @pytest.mark.parametrize("method", table.FINITE_ORDER)
 def test_subnormal_transverse_rates(method):
