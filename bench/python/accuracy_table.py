@@ -15,7 +15,8 @@ truncation: such a cell counts as "at round-off" (it passes when the estimate is
 error, as every cell must).
 
 The summary: the flag rate (share of cells not reliable), the share of the reliable cells above round-off whose
-effectivity lies in [0.5, 2], and the worst under-estimate among the reliable cells (smallest effectivity).
+effectivity lies in [0.5, 2], and the worst under-estimate among the reliable cells (smallest effectivity); the same
+for the cells judged by their quantity's own verdict (`result.error.reliable_for`).
 tests/python/test_effectivity.py asserts the same on a reduced grid and on adversarial cases.
 
 The document records how it was made (command, date, machine, rigiddyn revision) and a digest of its INPUTS;
@@ -259,6 +260,7 @@ class Cell:
     estimate: float
     verdict: str
     floor: float
+    quantity_reliable: bool  # result.error.reliable_for(quantity) at the last record
 
     @property
     def reliable(self) -> bool:
@@ -277,6 +279,12 @@ class Cell:
         """Reliable and the true error beyond twice the estimate (plus the round-off floor)."""
         return self.reliable and not self.true <= 2.0 * self.estimate + self.floor
 
+    def alone(self) -> "Cell":
+        """The cell judged by its quantity's verdict alone (reliable where reliable_for(quantity) is)."""
+        return Cell(self.problem, self.method, self.dt, self.true, self.estimate,
+                    "reliable" if self.quantity_reliable else "not reliable for its quantity", self.floor,
+                    self.quantity_reliable)
+
 
 def measure(case: Case, method: str, dt: float) -> Cell:
     """The cell of `case` at `method` and `dt` (the horizon a whole number of 16 steps: 4 records, each on a
@@ -291,7 +299,7 @@ def measure(case: Case, method: str, dt: float) -> Cell:
     finite = np.all(np.isfinite(np.asarray(r.q_WB).reshape(len(r.t), -1)), axis=1)
     true = case.true_error(r)[-1] if len(r.t) == steps // (steps // 4) + 1 and finite[-1] else math.inf
     return Cell(case.name, method, dt, float(true), float(np.max(estimate[-1])), r.error.verdict[-1],
-                round_off_floor(case.size, steps))
+                round_off_floor(case.size, steps), bool(r.error.reliable_for(case.quantity)[-1]))
 
 
 def cells(selected: list[Case] | None = None) -> list[Cell]:
@@ -333,21 +341,28 @@ def fmt(x: float) -> str:
 
 
 def table(all_cells: list[Cell]) -> str:
-    lines = ["| problem | method | dt [s] | true error | estimate | effectivity | verdict |", "|---|---|---|---|---|---|---|"]
+    lines = ["| problem | method | dt [s] | true error | estimate | effectivity | verdict | its quantity alone |",
+             "|---|---|---|---|---|---|---|---|"]
     for c in all_cells:
         ratio = "(round-off)" if c.at_round_off else f"{c.effectivity:.2f}"
         verdict = c.verdict.replace("|", "\\|")  # a literal bar inside a table cell
+        alone = "reliable" if c.quantity_reliable else "not reliable"
         lines.append(f"| {c.problem} | {c.method} | {c.dt:.4g} | {fmt(c.true)} | {fmt(c.estimate)} | {ratio} "
-                     f"| {verdict} |")
+                     f"| {verdict} | {alone} |")
     return "\n".join(lines)
 
 
-def summary_text(s: Summary) -> str:
+def summary_text(s: Summary, alone: Summary) -> str:
     return (f"- cells: {s.cells}; reliable: {s.reliable}; **flag rate** (not reliable): {s.flag_rate:.0%}\n"
             f"- reliable cells above round-off: {s.measured}; **effectivity in [0.5, 2]**: {s.in_window} "
             f"({s.in_window_share:.1%})\n"
             f"- **worst reliable under-estimate**: effectivity {s.worst:.2f}; reliable cells whose true error "
-            f"exceeds twice the estimate: {s.under_estimated}\n")
+            f"exceeds twice the estimate: {s.under_estimated}\n"
+            f"- judged by the quantity's own verdict (`result.error.reliable_for(quantity)`): "
+            f"reliable {alone.reliable} "
+            f"(flag rate {alone.flag_rate:.0%});\n  above round-off {alone.measured}, effectivity in [0.5, 2] "
+            f"{alone.in_window} ({alone.in_window_share:.1%});\n  worst under-estimate {alone.worst:.2f}; true error "
+            f"beyond twice the estimate: {alone.under_estimated}\n")
 
 
 HEADER = """# Accuracy of the error estimate
@@ -368,7 +383,9 @@ attitude [rad] (geodesic angle to the exact attitude) of a body that turns, the 
 of several bodies the largest. **Effectivity** = estimate / true error: 1 is a perfect estimate, below 1 an
 under-estimate (the dangerous side). A cell whose true error is below the round-off of its run (64 eps per
 step of the quantity's scale) is marked "(round-off)": there the estimate is a round-off bound. A cell that is
-not reliable names why in its verdict (the estimate is still given, and must not be trusted).
+not reliable names why in its verdict (the estimate is still given, and must not be trusted). A record's verdict
+covers every quantity; the last column judges the cell's quantity by its own check alone
+(`result.error.reliable_for`), which a cell may pass where another quantity fails (a damped system's energy).
 
 ## Summary
 
@@ -393,14 +410,14 @@ def main(argv: list[str] | None = None) -> int:
     start = time.perf_counter()
     all_cells = cells()
     elapsed = time.perf_counter() - start
-    s = summarize(all_cells)
+    s, alone = summarize(all_cells), summarize([c.alone() for c in all_cells])
     text = table(all_cells)
     print(text)
-    print(summary_text(s))
+    print(summary_text(s, alone))
     print(f"{len(all_cells)} cells in {elapsed:.1f} s")
     if not args.print:
         out = Path(args.out) if args.out else ROOT / "docs" / "accuracy.md"
-        out.write_text(HEADER.format(measured=measured_sentence(made), summary=summary_text(s)) + text + "\n\n"
+        out.write_text(HEADER.format(measured=measured_sentence(made), summary=summary_text(s, alone)) + text + "\n\n"
                        + FOOTER.format(elapsed=elapsed) + "\n" + markdown_comment(made))
         print(f"wrote {out}")
     return 0

@@ -17,6 +17,7 @@
 #include "rigiddyn/check.hpp"
 #include "rigiddyn/scene/compile.hpp"  // scene_features
 #include "rigiddyn/simulate/simulate.hpp"
+#include "rigiddyn/simulate/tolerance.hpp"  // error_measure_from_name
 
 #include <chrono>
 #include <cmath>
@@ -193,6 +194,41 @@ py::dict error_max(const GlobalError& e) {
   return out;
 }
 
+// The bits of e.reliable_quantities (measure_bit), C-contiguous.
+py::array_t<std::uint8_t, py::array::c_style> quantity_bits(const GlobalError& e) {
+  return py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>::ensure(e.reliable_quantities.get());
+}
+
+// result.error.reliable_for(quantity): where the estimate of `quantity` (an error_measure_names name) is reliable,
+// bool of the shape of `reliable`.
+py::array_t<bool> reliable_for(const GlobalError& e, const std::string& quantity) {
+  const std::uint8_t bit = measure_bit(error_measure_from_name(quantity, "quantity"));
+  const auto bits = quantity_bits(e);
+  py::array_t<bool> out(std::vector<py::ssize_t>(bits.shape(), bits.shape() + bits.ndim()));
+  bool* into = out.mutable_data();
+  for (py::ssize_t i = 0; i < bits.size(); ++i) into[i] = (bits.data()[i] & bit) != 0;
+  py_io::set_read_only(out);
+  return out;
+}
+
+// ", by quantity: attitude 1001, ..., energy 32" where a quantity is reliable at other records than the whole
+// record's `reliable` count (a record is reliable where every quantity is); "" where each quantity's count is it.
+std::string reliable_by_quantity(const GlobalError& e, std::size_t reliable) {
+  const auto bits = quantity_bits(e);
+  std::size_t counts[std::size(error_quantities)] = {};
+  for (py::ssize_t i = 0; i < bits.size(); ++i) {
+    for (std::size_t k = 0; k < std::size(counts); ++k) counts[k] += (bits.data()[i] >> k) & 1u;
+  }
+  if (std::all_of(std::begin(counts), std::end(counts), [&](std::size_t c) { return c == reliable; })) return "";
+  std::string text = ", by quantity:";
+  const char* separator = " ";
+  for (std::size_t k = 0; k < std::size(counts); ++k) {
+    text += separator + std::string(error_quantities[k].name) + " " + std::to_string(counts[k]);
+    separator = ", ";
+  }
+  return text;
+}
+
 // "order 4: 11 of 11 records reliable; largest estimates: attitude 3.1e-06 rad, ..." (and the first verdict that
 // is not reliable, with its record; "sample i, record k" for a batch's, whose verdict holds a tuple per sample).
 std::string error_summary(const GlobalError& e) {
@@ -220,8 +256,8 @@ std::string error_summary(const GlobalError& e) {
     }
   }
   std::string text = (e.order == 0 ? std::string("exact method (round-off bound)") : "order " + std::to_string(e.order)) +
-                     ": " + std::to_string(reliable) + " of " + std::to_string(records) +
-                     " records reliable; largest estimates:";
+                     ": " + std::to_string(reliable) + " of " + std::to_string(records) + " records reliable" +
+                     reliable_by_quantity(e, reliable) + "; largest estimates:";
   const char* separator = " ";
   for (const ErrorQuantity& q : error_quantities) {
     char value[32];
@@ -233,23 +269,28 @@ std::string error_summary(const GlobalError& e) {
   return text;
 }
 
-// A GlobalError's pickle state: order, the seven arrays of error_arrays, verdict, reliable.
+// A GlobalError's pickle state: order, the seven arrays of error_arrays, verdict, reliable, reliable_quantities.
 constexpr LazyArray GlobalError::*error_arrays[] = {&GlobalError::attitude, &GlobalError::angular_velocity,
                                                     &GlobalError::position, &GlobalError::velocity,
                                                     &GlobalError::energy,   &GlobalError::angular_momentum,
                                                     &GlobalError::observed_order};
 
 py::tuple global_error_state(const GlobalError& e) {
-  py::tuple out(10);
+  py::tuple out(11);
   out[0] = py::int_(e.order);
   for (std::size_t k = 0; k < 7; ++k) out[k + 1] = (e.*error_arrays[k]).get();
   out[8] = e.verdicts.verdict();
   out[9] = e.verdicts.reliable();
+  out[10] = e.reliable_quantities.get();
   return out;
 }
 
+// A state of 10 items (a pickle of a GlobalError without reliable_quantities) takes every quantity as reliable where
+// its record is.
 GlobalError global_error_from_state(const py::tuple& t) {
-  if (t.size() != 10) py_io::throw_value_error("GlobalError pickle", "a tuple of 10 items", std::to_string(t.size()) + " items");
+  if (t.size() != 10 && t.size() != 11) {
+    py_io::throw_value_error("GlobalError pickle", "a tuple of 11 items", std::to_string(t.size()) + " items");
+  }
   const py::object numpy = py::module_::import("numpy");
   GlobalError e;
   e.order = t[0].cast<int>();
@@ -261,6 +302,15 @@ GlobalError global_error_from_state(const py::tuple& t) {
   py::array_t<bool> reliable = py::array_t<bool>::ensure(numpy.attr("array")(t[9], "bool"));
   py_io::set_read_only(reliable);
   e.verdicts = LazyVerdicts(py::tuple(t[8]), reliable);
+  py::object bits = t.size() == 11 ? numpy.attr("array")(t[10], "uint8")
+                                   : numpy.attr("where")(reliable, py::int_(every_measure), 0).attr("astype")("uint8");
+  if (!numpy.attr("array_equal")(numpy.attr("shape")(bits), numpy.attr("shape")(reliable)).cast<bool>()) {
+    py_io::throw_value_error("GlobalError pickle", "reliable_quantities of the shape of reliable",
+                             py::str(numpy.attr("shape")(bits)).cast<std::string>());
+  }
+  auto quantities = py::array_t<std::uint8_t>::ensure(bits);
+  py_io::set_read_only(quantities);
+  e.reliable_quantities = LazyQuantityBits(quantities);
   return e;
 }
 
@@ -268,7 +318,8 @@ GlobalError global_error_from_state(const py::tuple& t) {
 bool same_error(const GlobalError& a, const GlobalError& b) {
   const py::object array_equal = py::module_::import("numpy").attr("array_equal");
   if (a.order != b.order || !a.verdicts.verdict().equal(b.verdicts.verdict()) ||
-      !array_equal(a.verdicts.reliable(), b.verdicts.reliable()).cast<bool>()) {
+      !array_equal(a.verdicts.reliable(), b.verdicts.reliable()).cast<bool>() ||
+      !array_equal(a.reliable_quantities.get(), b.reliable_quantities.get()).cast<bool>()) {
     return false;
   }
   for (const auto member : error_arrays) {
@@ -680,7 +731,9 @@ exponentially, and the differences leave the linear regime). A ratio above the w
 error hidden from all three runs alike looks like. Where d is below the round-off bound of the run (8 eps_machine
 per step, relative to the quantity's size; for |L| the size of its terms) the estimate is that bound, with the
 verdict "reliable"; the method 'exact' reports the round-off bound alone (order 0). Measured against exact
-references (docs/accuracy.md): the reliable estimates lie within a factor 2 of the true error.
+references (docs/accuracy.md): the reliable estimates lie within a factor 2 of the true error. A verdict covers every
+quantity of its record; reliable_for(quantity) gives the records where one quantity's own check passes (a damped
+chain's positions, where its energy's error mixes two orders).
 
 p is the order the run has, not always the method's: a scene whose velocity-dependent element (drag, a damper, a
 PythonForce) meets a kick-based splitting runs at order 1.
@@ -755,6 +808,44 @@ True
                     "such tuples, one per sample).")
       .def_property_readonly("reliable", [](const GlobalError& e) { return e.verdicts.reliable(); },
                              "verdict == 'reliable', shape (n,) (bool; a batch's (N, n)).")
+      .def("reliable_for", &reliable_for, py::arg("quantity"),
+           R"doc(Where the estimate of one quantity is reliable, whatever the others' order checks say.
+
+A record's verdict is 'reliable' only where every quantity passes its order check; one quantity may pass where
+another does not. A damped spring chain's positions err as dt^4 while its total energy, no invariant there, errs
+as a sum of two orders whose ratios r stray from 2^p: the records fail on the energy, and the positions' estimates
+are still within their promise. reliable_for('position') is True at a record checked (a common record, see above)
+where the position's own ratio r lies in its window (or its differences are at round-off) and nothing disqualifies
+the record as a whole: a run at 2 dt or 4 dt beyond the stability limit, an energy balance that contradicts the
+estimate, a PythonForce. Where it is True, the estimate of that quantity keeps the promise of a reliable record
+(within a factor 2 of the true error, docs/accuracy.md). reliable implies reliable_for(q) for every q.
+
+Parameters
+----------
+quantity : str
+    'attitude', 'angular_velocity', 'position', 'velocity', 'energy' or 'angular_momentum'.
+
+Returns
+-------
+numpy.ndarray
+    bool, shape (n,) (a batch's (N, n)), read-only.
+
+Raises
+------
+ValueError
+    quantity is not one of the six names (the message names the nearest).
+
+Examples
+--------
+The shipped spring chain (damped) at 2 ms, every 4th step recorded: most records fail on the energy, none on the
+positions:
+
+>>> scene, initial, _ = rd.load_scene("spring_chain")
+>>> e = rd.simulate(scene, initial, dt=0.002, steps=1000, record_every=4).error
+>>> n = len(e.reliable)
+>>> bool(e.reliable.sum() < 0.1 * n and e.reliable_for("position").sum() > 0.9 * n)
+True
+)doc")
       .def("max", &error_max,
            R"doc(The largest estimate of each quantity over the records (and bodies).
 

@@ -202,12 +202,43 @@ class LazyVerdicts {
   mutable pybind11::object verdict_, reliable_;  // null until made
 };
 
+// The quantities reliable at each record (GlobalErrorEstimate::reliable_quantities, one bit per ErrorMeasure), as a
+// read-only uint8 array of shape (n,) or a batch's (N, n), made on its first read.
+class LazyQuantityBits {
+ public:
+  LazyQuantityBits() = default;
+  LazyQuantityBits(std::vector<std::uint8_t>&& bits, std::vector<pybind11::ssize_t> shape)
+      : bits_(std::move(bits)), shape_(std::move(shape)) {}
+  // an array made already (an unpickled or sliced result)
+  explicit LazyQuantityBits(pybind11::array_t<std::uint8_t> made) : array_(std::move(made)) {}
+
+  pybind11::array_t<std::uint8_t> get() const {
+    if (!array_) {
+      pybind11::array_t<std::uint8_t> made(shape_);
+      if (static_cast<std::size_t>(made.size()) != bits_.size()) {
+        throw std::logic_error("LazyQuantityBits: bits and shape disagree");
+      }
+      std::copy(bits_.begin(), bits_.end(), made.mutable_data());
+      py_io::set_read_only(made);
+      array_ = std::move(made);
+      bits_ = std::vector<std::uint8_t>();
+    }
+    return pybind11::reinterpret_borrow<pybind11::array_t<std::uint8_t>>(array_);
+  }
+
+ private:
+  mutable std::vector<std::uint8_t> bits_;
+  std::vector<pybind11::ssize_t> shape_;
+  mutable pybind11::object array_;  // null until made
+};
+
 // simulate's global error estimate (rigiddyn.GlobalError; its docstring in bind_dynamics.cpp): per record (n), and
 // per body (n, nb) for a scene's state quantities; each array made on its first read.
 struct GlobalError {
   int order;
   LazyArray attitude, angular_velocity, position, velocity, energy, angular_momentum, observed_order;
   LazyVerdicts verdicts;
+  LazyQuantityBits reliable_quantities;
 };
 
 // The GlobalError of `e` for n records: the state quantities (n, nb).
@@ -223,7 +254,8 @@ inline GlobalError to_global_error(GlobalErrorEstimate&& e) {
                      LazyArray(std::move(e.energy), {n}),
                      LazyArray(std::move(e.angular_momentum), {n}),
                      LazyArray(std::move(e.observed_order), {n}),
-                     LazyVerdicts(std::move(e.verdict))};
+                     LazyVerdicts(std::move(e.verdict)),
+                     LazyQuantityBits(std::move(e.reliable_quantities), {n})};
 }
 
 // The GlobalError of a batch's estimates `e`: each array with a leading sample axis, the state quantities
@@ -250,7 +282,8 @@ inline GlobalError to_global_error(BatchErrorEstimate&& e) {
                      LazyArray(std::move(e.energy), {N, n}),
                      LazyArray(std::move(e.angular_momentum), {N, n}),
                      LazyArray(std::move(e.observed_order), {N, n}),
-                     LazyVerdicts(verdict, reliable)};
+                     LazyVerdicts(verdict, reliable),
+                     LazyQuantityBits(std::move(e.reliable_quantities), {N, n})};
 }
 
 // Sample i of a batch's GlobalError (its first `rows` records), as simulate gives it for that sample alone; None
@@ -270,7 +303,8 @@ inline pybind11::object sample_error(pybind11::handle batch_error, pybind11::ssi
   return py::cast(GlobalError{e.order, values(e.attitude), values(e.angular_velocity), values(e.position),
                               values(e.velocity), values(e.energy), values(e.angular_momentum),
                               values(e.observed_order),
-                              LazyVerdicts(verdict, py::array_t<bool>::ensure(rows_of(e.verdicts.reliable())))});
+                              LazyVerdicts(verdict, py::array_t<bool>::ensure(rows_of(e.verdicts.reliable()))),
+                              LazyQuantityBits(py::array_t<std::uint8_t>::ensure(rows_of(e.reliable_quantities.get())))});
 }
 
 // simulate's accuracy_level: None (no AccuracyWarning: nullopt) or a finite relative level > 0 (accuracy_check.hpp).

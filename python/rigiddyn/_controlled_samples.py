@@ -23,11 +23,13 @@ _SEED_BOUND = 2**63  # a sample's controller seed is drawn in [0, 2^63)
 def stacked_error(errors: Sequence[Any]) -> Any:
     """One GlobalError of N runs' estimates of equal length, as simulate_batch's: each array with a leading sample
     axis (N, n_records, ...), the verdict a tuple per sample; sample i's values are errors[i]'s. It is built from
-    their pickle states (order, the seven arrays, verdict, reliable), the one way to make a GlobalError."""
+    their pickle states (order, the seven arrays, verdict, reliable, reliable_quantities), the one way to make a
+    GlobalError."""
     states = [e.__getstate__() for e in errors]
     arrays = [np.stack([s[k] for s in states]) for k in range(1, 8)]
     stacked = _core.GlobalError.__new__(_core.GlobalError)
-    stacked.__setstate__((states[0][0], *arrays, tuple(s[8] for s in states), np.stack([s[9] for s in states])))
+    stacked.__setstate__((states[0][0], *arrays, tuple(s[8] for s in states), np.stack([s[9] for s in states]),
+                          np.stack([s[10] for s in states])))
     return stacked
 
 

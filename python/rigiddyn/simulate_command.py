@@ -302,9 +302,10 @@ _ERROR_UNITS = {"attitude": "rad", "angular_velocity": "rad/s", "position": "m",
 
 
 def error_report(error: Any) -> dict[str, Any] | None:
-    """run.json's "global error": the estimate's order, how many records it calls reliable, its largest value of
-    each quantity ("attitude [rad]": ..., null where none) and the first verdict that is not "reliable" with its
-    time (null when every record is); None for a run without an estimate (--no-error)."""
+    """run.json's "global error": the estimate's order, how many records it calls reliable, and how many each
+    quantity is reliable at on its own (GlobalError.reliable_for), its largest value of each quantity ("attitude
+    [rad]": ..., null where none) and the first verdict that is not "reliable" with its time (null when every record
+    is); None for a run without an estimate (--no-error)."""
     if error is None:
         return None
     verdict = list(error.verdict)
@@ -312,6 +313,7 @@ def error_report(error: Any) -> dict[str, Any] | None:
     largest = {f"{name} [{_ERROR_UNITS[name]}]": (float(value) if math.isfinite(value) else None)
                for name, value in error.max().items()}
     return {"order": int(error.order), "records": len(verdict), "reliable records": int(np.sum(error.reliable)),
+            "reliable records by quantity": {name: int(np.sum(error.reliable_for(name))) for name in _ERROR_UNITS},
             "largest estimates": largest,
             "first verdict not reliable": None if other is None else {"record": other, "verdict": verdict[other]}}
 

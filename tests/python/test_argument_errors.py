@@ -316,6 +316,7 @@ EXAMPLES = {
     "Scene.of_body": lambda: {"body": rd.RigidBody(1.0, I_BOX), "gravity": True, "loads": [rd.AppliedLoad(force=V)]},
     "CompiledScene": lambda: {"scene": _scene()}, "CompiledScene.describe": lambda: {},
     "SceneResult.to_dataframe": lambda: {}, "SceneResult.body": lambda: {"key": 0},
+    "GlobalError.reliable_for": lambda: {"quantity": "attitude"},
     "BatchSceneResult.body": lambda: {"key": 0},
     "UniformGravity": lambda: {}, "PointMassGravity": lambda: {"gm": 1.0}, "MutualGravity": lambda: {},
     "GravityGradient": lambda: {"gm": 1.0}, "ZonalGravity": lambda: {"gm": 1.0, "radius": 0.1},

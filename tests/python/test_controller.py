@@ -754,7 +754,8 @@ def _sample_error(error, i):
     """Sample i of a Monte Carlo's GlobalError (arrays (N, n, ...)): a SimpleNamespace of same_estimate's fields."""
     names = ("attitude", "angular_velocity", "position", "velocity", "energy", "angular_momentum", "observed_order",
              "reliable")
-    return SimpleNamespace(order=error.order, verdict=error.verdict[i], **{n: getattr(error, n)[i] for n in names})
+    return SimpleNamespace(order=error.order, verdict=error.verdict[i], **{n: getattr(error, n)[i] for n in names},
+                           reliable_for=lambda quantity: error.reliable_for(quantity)[i])
 
 
 class IntegralThrust:

@@ -25,6 +25,7 @@ EFFECTIVITY = (0.5, 2.0)
 ROUND_OFF_FLOOR = 1e-11
 
 FINITE_ORDER = [m["name"] for m in rd.methods() if m["order"] > 0]
+QUANTITIES = ("attitude", "angular_velocity", "position", "velocity", "energy", "angular_momentum")
 
 # the estimate's contract is tested on every method, coarse and adversarial runs included: their balances do not
 # close, which the AccuracyWarning reports (tests/python/test_balance.py); here only the estimate is read
@@ -156,6 +157,7 @@ def test_torque_switching_inside_steps_is_not_reported_reliable(method):
         # the nested grids can take the switch in the same step of all three runs (dt = 0.04: the step from
         # 0.32 s in each), where no order check sees it: a PythonForce is never called reliable
         assert not r.error.reliable.any(), r.error.verdict
+        assert not any(r.error.reliable_for(q).any() for q in QUANTITIES), r.error.verdict
         assert any(v.startswith("not verified: elements[0] (PythonForce)") or v.startswith("not asymptotic")
                    for v in r.error.verdict), r.error.verdict
 
@@ -203,11 +205,50 @@ def test_records_between_common_records_and_the_tail():
     assert attitude[5] == pytest.approx((1 - w) * attitude[4] + w * attitude[8], rel=1e-12)
     assert e.verdict[4] == "reliable" and e.verdict[5].startswith("interpolated between the reliable records")
     assert not e.reliable[5] and np.isnan(e.observed_order[5])
+    # a record between common records or after the last is not checked: no quantity is reliable there
+    assert all(e.reliable_for(q)[4] and not e.reliable_for(q)[5] and not e.reliable_for(q)[-1] for q in QUANTITIES)
     # the last record (step 50) grows linearly in t from the common record at step 48 (record 16)
     assert attitude[-1] == pytest.approx(attitude[16] * r.t[-1] / r.t[16], rel=1e-12)
     assert e.verdict[-1].startswith("extrapolated from the reliable record at t = 0.96 s")
     short = rd.simulate(body, rd.RigidBodyState(w_B=[0.1, 1.0, 0.1]), dt=0.02, steps=3)
     assert np.isnan(short.error.attitude[-1, 0]) and short.error.verdict[-1].startswith("no estimate")
+
+
+def test_a_quantity_is_reliable_alone_where_another_fails():
+    """The shipped spring chain (damped) under rk4: its total energy, no invariant there, errs as a sum of two orders
+    and fails its order check at many records, while its positions and velocities err as dt^4. Judged by their own
+    check (reliable_for), they are reliable at more records than the records' verdicts say, and keep the contract
+    there (check_effectivity). The reference, rk4 at dt / 16, errs 16^4 times less than the run: its error is below
+    1e-4 of the true error measured."""
+    scene, initial, _ = rd.load_scene("spring_chain")
+    for dt in (0.008, 0.004, 0.002):
+        steps = 4 * round(2.0 / dt / 4)
+        r = rd.simulate(scene, initial, dt=dt, steps=steps, record_every=4, method="rk4")
+        fine = rd.simulate(scene, initial, dt=dt / 16, steps=16 * steps, record_every=64, method="rk4", error=False)
+        e = r.error
+        for quantity, field in (("position", "p_W"), ("velocity", "v_W")):
+            alone = e.reliable_for(quantity)
+            assert alone.dtype == bool and alone.shape == e.reliable.shape and not alone.flags.writeable
+            assert alone[e.reliable].all()  # a reliable record is reliable for every quantity
+            assert e.reliable.sum() < alone.sum(), (dt, quantity)
+            true = np.linalg.norm(np.asarray(getattr(r, field)) - np.asarray(getattr(fine, field)), axis=-1)
+            measured = check_effectivity(np.max(getattr(e, quantity), axis=-1), np.max(true, axis=-1), alone,
+                                         (dt, quantity))
+            assert measured >= len(alone) // 4, (dt, quantity)  # the check measured something
+    assert ", by quantity: attitude" in e.summary()
+
+
+def test_reliable_for_names_the_quantity():
+    body = rd.RigidBody(1.0, [1.0, 2.0, 3.0])
+    e = rd.simulate(body, rd.RigidBodyState(w_B=[0.1, 1.0, 0.1]), dt=0.01, steps=400, record_every=4).error
+    assert e.reliable.all() and all(e.reliable_for(q).all() for q in QUANTITIES)
+    assert "by quantity" not in e.summary()  # each quantity reliable where its record is
+    with pytest.raises(ValueError, match="did you mean 'position'.*got 'positon'"):
+        e.reliable_for("positon")
+    # a GlobalError pickled before reliable_for existed (10 items): each quantity reliable where its record is
+    old = rd.GlobalError.__new__(rd.GlobalError)
+    old.__setstate__(e.__getstate__()[:10])
+    assert old == e and pickle.loads(pickle.dumps(e)) == e
 
 
 def test_a_verdict_names_the_observed_order_its_record_has():

@@ -29,6 +29,7 @@ def same(a, b):
 def estimate_differences(sample, alone):
     """The fields in which a batch sample's GlobalError differs, bitwise, from the one simulate gives."""
     differ = [name for name in ("order", "verdict") if getattr(sample, name) != getattr(alone, name)]
+    differ += [f"reliable_for({q})" for q in ARRAYS[:6] if not same(sample.reliable_for(q), alone.reliable_for(q))]
     return differ + [name for name in (*ARRAYS, "reliable") if not same(getattr(sample, name), getattr(alone, name))]
 
 
@@ -197,6 +198,8 @@ def test_pickle_and_sample_of_the_estimate():
     back = pickle.loads(pickle.dumps(res))
     assert back.error == res.error and back[2].error == res[2].error
     assert "of 75 records reliable" in res.error.summary()  # 3 samples x 25 records
+    assert res.error.reliable_for("attitude").shape == (3, 25)
+    assert np.array_equal(res[2].error.reliable_for("attitude"), res.error.reliable_for("attitude")[2])
 
 
 def test_chunks_concatenate_to_the_whole_estimate():
@@ -233,5 +236,6 @@ def test_simulate_command_reports_the_estimate(tmp_path, extra, reported):
     if reported:
         assert record["order"] == 4 and record["records"] == 401
         assert record["largest estimates"]["attitude [rad]"] > 0
+        assert record["reliable records by quantity"]["attitude"] >= record["reliable records"]
     else:
         assert record is None

@@ -20,6 +20,7 @@ void put_estimate(BatchErrorEstimate& out, std::size_t i, GlobalErrorEstimate&& 
   std::copy(e.energy.begin(), e.energy.end(), out.energy.begin() + i * n);
   std::copy(e.angular_momentum.begin(), e.angular_momentum.end(), out.angular_momentum.begin() + i * n);
   std::copy(e.observed_order.begin(), e.observed_order.end(), out.observed_order.begin() + i * n);
+  std::copy(e.reliable_quantities.begin(), e.reliable_quantities.end(), out.reliable_quantities.begin() + i * n);
   Verdicts& verdict = out.verdict[i] = std::move(e.verdict);
   while (verdict.size() < n) verdict.push_back("no record: the run at h diverged");
 }
@@ -77,6 +78,7 @@ BatchErrorEstimate batch_error_estimate(const BatchColumns& h, const BatchColumn
   const std::size_t rows = h.samples * h.records, nb = static_cast<std::size_t>(out.bodies);
   for (auto* per_body : {&out.attitude, &out.angular_velocity, &out.position, &out.velocity}) per_body->assign(rows * nb, nan);
   for (auto* per_record : {&out.energy, &out.angular_momentum, &out.observed_order}) per_record->assign(rows, nan);
+  out.reliable_quantities.assign(rows, 0);  // the rows after a sample's diverged run: none reliable
   out.verdict.resize(h.samples);  // each sample's filled by put_estimate
   // each sample writes only its own rows
   parallel_for(h.samples, threads, [&](std::size_t i, int) {

@@ -59,7 +59,9 @@ void keep_stability_verdicts(const GlobalErrorEstimate& all, GlobalErrorEstimate
   std::vector<char> unstable;  // per distinct text of all's verdicts: each read once
   for (const std::string& text : all.verdict.texts()) unstable.push_back(says_runs_unstable(text));
   for (std::size_t i = 0; i < all.verdict.size() && i < measure.verdict.size(); ++i) {
-    if (unstable[all.verdict.text_index(i)]) measure.verdict.set(i, all.verdict[i]);
+    if (!unstable[all.verdict.text_index(i)]) continue;
+    measure.verdict.set(i, all.verdict[i]);
+    if (i < measure.reliable_quantities.size()) measure.reliable_quantities[i] = 0;
   }
 }
 

@@ -29,6 +29,7 @@ struct BatchErrorEstimate {
   std::vector<double> energy;               // (N, n) [J]
   std::vector<double> angular_momentum;     // (N, n) [kg m²/s]
   std::vector<double> observed_order;       // (N, n)
+  std::vector<std::uint8_t> reliable_quantities;  // (N, n) (GlobalErrorEstimate's)
   std::vector<Verdicts> verdict;            // (N,) sample i's n verdicts
 };
 

@@ -111,7 +111,19 @@ struct GlobalErrorEstimate {
   std::vector<double> angular_momentum;     // (n,) |L| [kg m²/s]
   std::vector<double> observed_order;       // (n,) log2 r of the quantity furthest from p (NaN: none measured)
   Verdicts verdict;                         // (n,) "reliable" or the reason the estimate is not
+  // (n,) the quantities whose estimate is reliable at the record, one bit each (measure_bit): checked at a common
+  // record, its own observed order inside its window (or its differences at round-off), and the record not
+  // disqualified as a whole (a run beyond the stability limit, the energy balance, a force the core cannot see into).
+  // A record is reliable where every quantity estimated there is; a quantity may be reliable where another is not
+  // (a damped chain's positions, whose error falls as dt^p, beside its energy, whose error mixes two orders).
+  std::vector<std::uint8_t> reliable_quantities;
 };
+
+// The bit of `measure` in GlobalErrorEstimate::reliable_quantities; every_measure: all six.
+constexpr std::uint8_t measure_bit(ErrorMeasure measure) {
+  return static_cast<std::uint8_t>(1u << static_cast<unsigned>(measure));
+}
+inline constexpr std::uint8_t every_measure = 0x3F;
 
 // The number of steps between two records where the answer, 2h and 4h runs all have a state:
 // m = lcm(record_every, 4).
