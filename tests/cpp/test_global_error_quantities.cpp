@@ -1,14 +1,18 @@
 // The quantities whose estimate is reliable at a record (GlobalErrorEstimate::reliable_quantities,
 // simulate/global_error.hpp): a record's verdict covers every quantity, and one quantity may still be reliable where
 // another fails its order check: its own ratio r then lies in the narrower window [2^p / 1.25, 2^p · 1.25]; every
-// quantity is reliable where the record is; none where a run of the estimate diverged.
+// quantity is reliable where the record is; none where a run of the estimate diverged. A run to a tolerance, whose
+// certificate estimates its measure alone, refuses the records that judgement refuses on its low side
+// (keep_low_orders_refused, simulate/tolerance.hpp).
 #include "one_body_error_records.hpp"
 #include "rigiddyn/simulate/global_error.hpp"
+#include "rigiddyn/simulate/tolerance.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace rigiddyn {
@@ -39,9 +43,10 @@ class RunsWithRatios {
   test::OneBodyErrorRecords run_;
 };
 
-// The estimate of order 4 (2^p = 16) of runs whose records have the given ratios; the first record (t = 0, every run
-// alike) at round-off.
-GlobalErrorEstimate estimate_of(const std::vector<Ratios>& ratios, std::size_t coarse_records = SIZE_MAX) {
+// The estimate of order 4 (2^p = 16) of runs whose records have the given ratios, of every quantity or of `only`;
+// the first record (t = 0, every run alike) at round-off.
+GlobalErrorEstimate estimate_of(const std::vector<Ratios>& ratios, std::size_t coarse_records = SIZE_MAX,
+                                std::optional<ErrorMeasure> only = std::nullopt) {
   std::vector<Ratios> all{{16.0, 16.0}};
   all.insert(all.end(), ratios.begin(), ratios.end());
   const RunsWithRatios h(all, 1), h2(all, 2), h4(all, 4);
@@ -49,7 +54,7 @@ GlobalErrorEstimate estimate_of(const std::vector<Ratios>& ratios, std::size_t c
   r2.n = std::min(r2.n, coarse_records), r4.n = std::min(r4.n, coarse_records);
   SimulationOptions o;
   o.dt = RunsWithRatios::h, o.record_every = 4, o.steps = 4 * static_cast<std::int64_t>(all.size() - 1);
-  return estimate_global_error(h.records(), r2, r4, o, 4);
+  return estimate_global_error(h.records(), r2, r4, o, 4, {}, only);
 }
 
 bool reliable_for(const GlobalErrorEstimate& e, std::size_t i, ErrorMeasure measure) {
@@ -104,6 +109,25 @@ TEST(GlobalErrorQuantities, TheRoundOffBoundIsReliableAndNoEstimateIsNot) {
   o.dt = RunsWithRatios::h, o.record_every = 4, o.steps = 4;
   EXPECT_EQ(round_off_estimate(h.records(), o).reliable_quantities, std::vector<std::uint8_t>(2, every_measure));
   EXPECT_EQ(no_estimate(3, 1, 4, "no estimate: a test").reliable_quantities, std::vector<std::uint8_t>(3, 0));
+}
+
+TEST(GlobalErrorQuantities, ACertificateRefusesALowOrderWhereAnotherQuantityFails) {
+  // the attitude failing (order 5.5) or not (r = 16); the position alone inside the record's window at r = 11 (below
+  // 16 / 1.25: refused where the attitude fails), 22.4 (above 16 · 1.25: an over-estimate, kept) and 16
+  const std::vector<Ratios> ratios = {{std::exp2(5.5), 11.0}, {std::exp2(5.5), 22.4}, {std::exp2(5.5), 16.0},
+                                      {16.0, 11.0}};
+  const GlobalErrorEstimate all = estimate_of(ratios);
+  GlobalErrorEstimate position = estimate_of(ratios, SIZE_MAX, ErrorMeasure::position);
+  for (std::size_t i = 0; i < position.verdict.size(); ++i) ASSERT_EQ(position.verdict[i], "reliable") << i;
+  keep_low_orders_refused(all, ErrorMeasure::position, position);
+  EXPECT_EQ(position.verdict[1], "not asymptotic: observed order 3.5 where 4 is expected (position, below 2^p / 1.25 "
+                                 "where another quantity of its record fails its check)");
+  EXPECT_EQ(position.reliable_quantities[1], 0);
+  for (const std::size_t i : {0, 2, 3, 4}) EXPECT_EQ(position.verdict[i], "reliable") << "record " << i;
+  // refused unless its estimate is negligible (at most the tolerance / 16)
+  const double epsilon = position.position[1];
+  EXPECT_EQ(first_unreliable(position, ErrorMeasure::position, 15.0 * epsilon), 1U);
+  EXPECT_EQ(first_unreliable(position, ErrorMeasure::position, 17.0 * epsilon), position.verdict.size());
 }
 
 }  // namespace

@@ -181,19 +181,6 @@ struct CombinedDifferences {
   void sum(const Differences& d) { d1_squared += d.d1 * d.d1, d2_squared += d.d2 * d.d2, round_off += d.round_off; }
 };
 
-// The window of a record's order check: the ratio r of every quantity in [2^p / 1.5, 2^p · 1.5] (2^(p+1) · 1.5 for
-// an invariant, global_error.hpp).
-constexpr double record_window = 1.5;
-// The window of one quantity's own check at a record that another quantity fails (reliable_quantities): a failure
-// says the record is near the edge of the asymptotic regime, and a ratio inside the record's window may then come
-// from a higher-order term that the estimate misses. Measured on the shipped spring chain (rk4 at 4 ms, every 4th
-// step recorded, against rk4 at 0.25 ms), where the energy (no invariant of a damped chain) fails at most records:
-// the velocity's estimate at 1.504 s was 2.05x below its true error with r = 12.4 (2^4 / 1.29), while every record
-// inside [2^4 / 1.25, 2^4 · 1.25] of the chain's and the box on springs' positions and velocities at 8, 4 and 2 ms
-// lay within 0.80 and 1.22 of it. (For an error A h^p + B h^(p+1), the 1.5 window bounds the effectivity to
-// [0.85, 1.35] at p = 4, the 1.25 window to [0.91, 1.15]: what lies beyond comes from further terms.)
-constexpr double quantity_window = 1.25;
-
 // What one common record's quantities say: the estimate of each, and the record's observed order and verdict
 // (those of the quantity whose ratio r is furthest from 2^p, unless a run diverged).
 class CommonRecord {

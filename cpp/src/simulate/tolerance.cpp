@@ -65,6 +65,22 @@ void keep_stability_verdicts(const GlobalErrorEstimate& all, GlobalErrorEstimate
   }
 }
 
+void keep_low_orders_refused(const GlobalErrorEstimate& all, ErrorMeasure quantity, GlobalErrorEstimate& measure) {
+  const std::uint8_t bit = measure_bit(quantity);
+  const double lowest = measure.order - std::log2(quantity_window);  // 2^p / quantity_window
+  for (std::size_t i = 0; i < measure.verdict.size() && i < all.reliable_quantities.size(); ++i) {
+    const double q = measure.observed_order[i];
+    if ((all.reliable_quantities[i] & bit) != 0 || !(q < lowest) || !is_reliable(measure.verdict[i])) continue;
+    char order[32];
+    std::snprintf(order, sizeof order, "%.2g", q);
+    measure.verdict.set(i, "not asymptotic: observed order " + std::string(order) + " where " +
+                               std::to_string(measure.order) + " is expected (" + error_measure_name(quantity) +
+                               ", below 2^p / " + tolerance_detail::format_number(quantity_window) +
+                               " where another quantity of its record fails its check)");
+    measure.reliable_quantities[i] = 0;
+  }
+}
+
 const std::vector<std::string>& error_measure_names() {
   static const std::vector<std::string> names = {"attitude", "angular_velocity", "position",
                                                  "velocity", "energy",           "angular_momentum"};
