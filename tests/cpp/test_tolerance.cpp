@@ -343,6 +343,34 @@ TEST(ToleranceModel, OrderPruningFigure) {
   EXPECT_NEAR(order_cost_figure(2, 2, 1e-8), 2e4, 1e-7);
 }
 
+// A plan as its pilot gives it: `method` at `steps` over the horizon, in `seconds` (`verdict` "used" unless given).
+PilotRun plan(Method method, std::int64_t steps, double seconds, const std::string& verdict = "used") {
+  PilotRun p;
+  p.method = method, p.order = 4, p.planned_steps = steps, p.planned_seconds = seconds, p.verdict = verdict;
+  return p;
+}
+
+TEST(ToleranceModel, PlansWithinTheTimingsNoiseAreTakenByTheirEvaluations) {
+  using tolerance_detail::cheapest_plan;
+  using tolerance_detail::plan_tie;
+  // rk4 and rkmk4 (4 evaluations a step each) at the same steps, rkmk4 timed 5 % faster: a tie, taken in the
+  // candidates' order (rk4 first), whichever was timed faster
+  std::vector<PilotRun> pilots = {plan(Method::rk4, 100, 1.0e-3), plan(Method::rkmk4, 100, 0.95e-3)};
+  EXPECT_EQ(cheapest_plan(pilots, 1000)->method, Method::rk4);
+  std::swap(pilots[0].planned_seconds, pilots[1].planned_seconds);
+  EXPECT_EQ(cheapest_plan(pilots, 1000)->method, Method::rk4);
+  // fewer steps within the tie win; beyond it the faster plan does
+  pilots[0].planned_seconds = 1.0e-3;
+  pilots[1] = plan(Method::rkmk4, 70, 1.0e-3 * (plan_tie - 0.01));
+  EXPECT_EQ(cheapest_plan(pilots, 1000)->method, Method::rkmk4);
+  pilots[1].planned_seconds = 1.0e-3 * (plan_tie + 0.01);
+  EXPECT_EQ(cheapest_plan(pilots, 1000)->method, Method::rk4);
+  // a plan above max_steps, or without a usable pilot, is none
+  pilots[1] = plan(Method::rkmk4, 70, 0.5e-3, "not asymptotic at dt = 0.1 s: ...");
+  EXPECT_EQ(cheapest_plan(pilots, 1000)->method, Method::rk4);
+  EXPECT_EQ(cheapest_plan(pilots, 99), nullptr);
+}
+
 TEST(ToleranceMeasure, NamesRoundTripAndAMistypeIsNamed) {
   for (const std::string& name : error_measure_names()) {
     EXPECT_EQ(error_measure_name(error_measure_from_name(name)), name);

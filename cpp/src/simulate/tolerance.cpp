@@ -316,6 +316,23 @@ double order_cost_figure(int order, int evaluations, double relative) {
 
 namespace tolerance_detail {
 
+const PilotRun* cheapest_plan(const std::vector<PilotRun>& pilots, std::int64_t max_steps) {
+  const auto planned = [&](const PilotRun& p) { return p.verdict == used && p.planned_steps <= max_steps; };
+  double fastest = std::numeric_limits<double>::infinity();
+  for (const PilotRun& p : pilots) {
+    if (planned(p)) fastest = std::min(fastest, p.planned_seconds);
+  }
+  const auto evaluations = [](const PilotRun& p) {
+    return static_cast<double>(p.planned_steps) * method_info(p.method).evaluations;
+  };
+  const PilotRun* best = nullptr;
+  for (const PilotRun& p : pilots) {
+    if (!planned(p) || !(p.planned_seconds <= plan_tie * fastest)) continue;
+    if (best == nullptr || evaluations(p) < evaluations(*best)) best = &p;
+  }
+  return best;
+}
+
 Replan cheaper_with_growth(const std::vector<PilotRun>& pilots, const PilotRun& chosen, std::int64_t steps, double f,
                            double dt_run, const ToleranceRequest& request, std::int64_t multiple) {
   Replan out;
@@ -361,6 +378,7 @@ std::string describe_choice(const ToleranceChoice& c, const PilotRun& chosen, st
   }
   text += ", the cheapest of " + std::to_string(piloted) + " piloted method" + (piloted == 1 ? "" : "s") +
           " at an estimated " + format_number(chosen.planned_seconds) + " s";
+  if (piloted > 1) text += " (plans within " + format_number(100.0 * (plan_tie - 1.0)) + " % a tie, by evaluations)";
   return text;
 }
 

@@ -7,10 +7,11 @@
 // C fitted on a short pilot run whose own Richardson estimate passed its order check (so that the pilot is in
 // the asymptotic regime and the extrapolation in dt is sound). For a horizon T and a tolerance τ the largest
 // step is then dt = (s τ / (C T))^(1/p), s the safety factor; the run's cost is its steps times the cost per step
-// the pilot measured. The cheapest candidate is run with its estimate; a certificate that fails (not reliable,
-// or above τ) is followed by a refinement dt' = dt (s τ / ε)^(1/p) (at most dt / 2 when the estimate was not
-// reliable), at most max_refinements times: a step that the short pilots called asymptotic may not be over the whole
-// horizon (a cluster's close encounters come later), and a halving is then a guess that the next certificate checks.
+// the pilot measured (plans within plan_tie of the cheapest a tie: cheapest_plan). The cheapest candidate is run
+// with its estimate; a certificate that fails (not reliable, or above τ) is followed by a refinement
+// dt' = dt (s τ / ε)^(1/p) (at most dt / 2 when the estimate was not reliable), at most max_refinements times: a
+// step that the short pilots called asymptotic may not be over the whole horizon (a cluster's close encounters come
+// later), and a halving is then a guess that the next certificate checks.
 // A reliable certificate f times its prediction shows a growth g(t) of the error model C dt^p g(t) that the short
 // pilots did not see, which every method shares. Each used candidate of a higher order is then planned again with its
 // prediction scaled by f, and the refinement takes the cheapest of those plans and its own. Measured on a controller's
@@ -337,6 +338,21 @@ double elapsed_of(const Records& r) {
   return r.elapsed_seconds;
 }
 
+// Plans whose planned seconds lie within this factor of the fastest's are a tie (cheapest_plan): the seconds per
+// step a pilot of 16 steps measures repeat within ~10 % (the median of 12 calls over their fastest: 1.01-1.09 for
+// every pilot of the shipped heavy top, pendulum, gravity gradient and three bodies while another job ran; single
+// calls up to 1.7x), so that the fastest of two such plans is chance: in two sweeps of bench_tolerance.py, 11 of its
+// 54 cases chose rk4 in one and rkmk4 in the other, 9 of them at the same steps; 4 with the tie. A wider tie would
+// hold more (rkmk4's step costs 1.07-1.29x rk4's on the shipped scenes: at the same steps the two straddle 1.15), and
+// would take plans with fewer evaluations that are slower by as much.
+inline constexpr double plan_tie = 1.15;
+
+// The plan a run to a tolerance takes among `pilots` (those used, within max_steps): the fastest by planned_seconds,
+// where the plans within plan_tie of it are a tie, taken by the fewest planned evaluations (planned_steps x the
+// method's evaluations per step; 'exact' none), then in the pilots' order (the candidates': rk4 first). Null when
+// no pilot has a plan.
+const PilotRun* cheapest_plan(const std::vector<PilotRun>& pilots, std::int64_t max_steps);
+
 }  // namespace tolerance_detail
 
 // Runs to τ: pilots each candidate (highest order first, pruned by order_cost_figure), chooses the cheapest
@@ -468,11 +484,7 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
     choice.pilots.push_back(p);
   }
   // the cheapest stepping plan within the cap
-  const PilotRun* best = nullptr;
-  for (const PilotRun& p : choice.pilots) {
-    if (p.verdict != used || p.planned_steps > request.max_steps) continue;
-    if (best == nullptr || p.planned_seconds < best->planned_seconds) best = &p;
-  }
+  const PilotRun* best = cheapest_plan(choice.pilots, request.max_steps);
   // 'exact' at the records of the best stepping plan (or of 16 steps when there is none)
   for (const ToleranceCandidate& c : exact) {
     PilotRun p;
@@ -494,11 +506,7 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
     p.verdict = round_off <= target ? used : "its round-off bound " + format_number(round_off) + " exceeds the tolerance";
     choice.pilots.push_back(p);
   }
-  best = nullptr;
-  for (const PilotRun& p : choice.pilots) {
-    if (p.verdict != used || p.planned_steps > request.max_steps) continue;
-    if (best == nullptr || p.planned_seconds < best->planned_seconds) best = &p;
-  }
+  best = cheapest_plan(choice.pilots, request.max_steps);
   choice.pilot_seconds = seconds_since(start);
   if (best == nullptr) {
     const PilotRun* cheapest = nullptr;  // the cap's figures
