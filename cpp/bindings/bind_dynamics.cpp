@@ -216,8 +216,9 @@ py::array_t<bool> reliable_for(const GlobalError& e, const std::string& quantity
 std::string reliable_by_quantity(const GlobalError& e, std::size_t reliable) {
   const auto bits = quantity_bits(e);
   std::size_t counts[std::size(error_quantities)] = {};
-  for (py::ssize_t i = 0; i < bits.size(); ++i) {
-    for (std::size_t k = 0; k < std::size(counts); ++k) counts[k] += (bits.data()[i] >> k) & 1u;
+  for (std::size_t k = 0; k < std::size(counts); ++k) {
+    const std::uint8_t bit = measure_bit(error_measure_from_name(error_quantities[k].name));
+    for (py::ssize_t i = 0; i < bits.size(); ++i) counts[k] += (bits.data()[i] & bit) != 0;
   }
   if (std::all_of(std::begin(counts), std::end(counts), [&](std::size_t c) { return c == reliable; })) return "";
   std::string text = ", by quantity:";
@@ -289,7 +290,8 @@ py::tuple global_error_state(const GlobalError& e) {
 // its record is.
 GlobalError global_error_from_state(const py::tuple& t) {
   if (t.size() != 10 && t.size() != 11) {
-    py_io::throw_value_error("GlobalError pickle", "a tuple of 11 items", std::to_string(t.size()) + " items");
+    py_io::throw_value_error("GlobalError pickle", "a tuple of 11 items (10 from an older pickle)",
+                             std::to_string(t.size()) + " items");
   }
   const py::object numpy = py::module_::import("numpy");
   GlobalError e;
@@ -302,13 +304,13 @@ GlobalError global_error_from_state(const py::tuple& t) {
   py::array_t<bool> reliable = py::array_t<bool>::ensure(numpy.attr("array")(t[9], "bool"));
   py_io::set_read_only(reliable);
   e.verdicts = LazyVerdicts(py::tuple(t[8]), reliable);
-  py::object bits = t.size() == 11 ? numpy.attr("array")(t[10], "uint8")
-                                   : numpy.attr("where")(reliable, py::int_(every_measure), 0).attr("astype")("uint8");
-  if (!numpy.attr("array_equal")(numpy.attr("shape")(bits), numpy.attr("shape")(reliable)).cast<bool>()) {
+  auto quantities = py::array_t<std::uint8_t>::ensure(
+      t.size() == 11 ? numpy.attr("array")(t[10], "uint8")
+                     : numpy.attr("where")(reliable, py::int_(every_measure), 0).attr("astype")("uint8"));
+  if (!quantities.attr("shape").equal(reliable.attr("shape"))) {
     py_io::throw_value_error("GlobalError pickle", "reliable_quantities of the shape of reliable",
-                             py::str(numpy.attr("shape")(bits)).cast<std::string>());
+                             py::str(quantities.attr("shape")).cast<std::string>());
   }
-  auto quantities = py::array_t<std::uint8_t>::ensure(bits);
   py_io::set_read_only(quantities);
   e.reliable_quantities = LazyQuantityBits(quantities);
   return e;
