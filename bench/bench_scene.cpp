@@ -8,6 +8,9 @@
 //   pair_sum_avx512_over_avx2/N,    the direct sum of MutualGravity alone (scene/elements/pair_forces.hpp) on
 //   pair_sum_avx2_over_portable/N   each path the CPU has, side by side (counter pair_time; a path the CPU
 //                                   lacks is skipped): what each vector width gains.
+//   pair_sum_avx2_division_over_mixed/N  the AVX2 path's two forms (every pair by the division, or four of each
+//                                   eight by the reciprocal square root): which one this CPU's divider favours
+//                                   (pair_forces.hpp, avx2_divides_every_pair).
 //   pair_potential_over_pair_sum/N  the potential V of a record (the same pairs, pair_potential) over the forces'
 //   pair_potential_over_portable/N  sum, both on the path of the process; and over the portable potential.
 //   nbody_spheres_over_particles_rk4/N  the same scene with rigid spheres ("rigiddyn") over the particle
@@ -213,6 +216,13 @@ void pair_sum(benchmark::State& state, PairPath path, bool available) {
 void pair_sum_portable(benchmark::State& state) { pair_sum(state, &detail::add_pair_forces_portable, true); }
 void pair_sum_avx2(benchmark::State& state) { pair_sum(state, &detail::add_pair_forces_avx2_fma, cpu_has_avx2_fma()); }
 void pair_sum_avx512(benchmark::State& state) { pair_sum(state, &detail::add_pair_forces_avx512, cpu_has_avx512()); }
+// the AVX2 path's two forms (pair_forces.hpp: the CPU's divider decides which is faster; avx2_divides_every_pair)
+void pair_sum_avx2_division(benchmark::State& state) {
+  pair_sum(state, &detail::add_pair_forces_avx2_fma_division, cpu_has_avx2_fma());
+}
+void pair_sum_avx2_mixed(benchmark::State& state) {
+  pair_sum(state, &detail::add_pair_forces_avx2_fma_mixed, cpu_has_avx2_fma());
+}
 // the pair sum as a record's potential (the path of the process), over the forces' and over the portable potential
 void pair_sum_dispatched(benchmark::State& state) { pair_sum(state, &detail::add_pair_forces, true); }
 void pair_potential(benchmark::State& state) { pair_sum(state, &detail::pair_potential, true); }
@@ -451,6 +461,8 @@ BENCHMARK(pair_sum_avx512)->Name("pair_sum_avx512_over_avx2:rigiddyn")->Apply(si
 BENCHMARK(pair_sum_avx2)->Name("pair_sum_avx512_over_avx2:baseline")->Apply(size_10_100_1000);
 BENCHMARK(pair_sum_avx2)->Name("pair_sum_avx2_over_portable:rigiddyn")->Apply(size_10_100_1000);
 BENCHMARK(pair_sum_portable)->Name("pair_sum_avx2_over_portable:baseline")->Apply(size_10_100_1000);
+BENCHMARK(pair_sum_avx2_division)->Name("pair_sum_avx2_division_over_mixed:rigiddyn")->Apply(size_10_100_1000);
+BENCHMARK(pair_sum_avx2_mixed)->Name("pair_sum_avx2_division_over_mixed:baseline")->Apply(size_10_100_1000);
 BENCHMARK(pair_potential)->Name("pair_potential_over_pair_sum:rigiddyn")->Apply(size_10_100_1000);
 BENCHMARK(pair_sum_dispatched)->Name("pair_potential_over_pair_sum:baseline")->Apply(size_10_100_1000);
 BENCHMARK(pair_potential)->Name("pair_potential_over_portable:rigiddyn")->Apply(size_10_100_1000);

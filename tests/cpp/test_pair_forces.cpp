@@ -87,10 +87,21 @@ TEST(PairForces, PortablePathWithinItsBound) {
   }
 }
 
+// both forms of the AVX2 path (of each eight pairs four or all eight by the division), and the one this CPU takes
 TEST(PairForces, Avx2FmaPathWithinItsBound) {
   if (!cpu_has_avx2_fma()) GTEST_SKIP() << "this CPU (or build) has no AVX2 + FMA";
-  for (const Eigen::Index n : kCounts) {
-    for (const double softening2 : {0.0, 1e-2}) expect_within_bound(&detail::add_pair_forces_avx2_fma, n, softening2, 11u * n + 1);
+  for (const Path form : {&detail::add_pair_forces_avx2_fma_mixed, &detail::add_pair_forces_avx2_fma_division}) {
+    for (const Eigen::Index n : kCounts) {
+      for (const double softening2 : {0.0, 1e-2}) expect_within_bound(form, n, softening2, 11u * n + 1);
+    }
+  }
+  const Path taken = detail::avx2_divides_every_pair() ? &detail::add_pair_forces_avx2_fma_division
+                                                       : &detail::add_pair_forces_avx2_fma_mixed;
+  for (const Eigen::Index n : {5, 13, 37}) {
+    Eigen::ArrayXXd a = cluster(n, 0, 3), b = a;
+    detail::add_pair_forces_avx2_fma(a, n, 1.0, 0.0);
+    taken(b, n, 1.0, 0.0);
+    EXPECT_EQ(std::memcmp(a.data(), b.data(), sizeof(double) * a.size()), 0) << "n = " << n;
   }
 }
 
@@ -115,7 +126,11 @@ TEST(PairForces, Avx512PathWithinItsBound) {
 // ~10³⁷ m²), on every path
 TEST(PairForces, PathsWithinTheirBoundAtDistancesBeyondTheRangeOfFloats) {
   std::vector<Path> paths{&detail::add_pair_forces_portable};
-  if (cpu_has_avx2_fma()) paths.push_back(&detail::add_pair_forces_avx2_fma);
+  if (cpu_has_avx2_fma()) {
+    for (const Path form : {&detail::add_pair_forces_avx2_fma_mixed, &detail::add_pair_forces_avx2_fma_division}) {
+      paths.push_back(form);
+    }
+  }
   if (cpu_has_avx512()) paths.push_back(&detail::add_pair_forces_avx512);
   for (const Path path : paths) {
     for (const double scale : {1e-20, 1e18, 1e20}) {
@@ -127,7 +142,11 @@ TEST(PairForces, PathsWithinTheirBoundAtDistancesBeyondTheRangeOfFloats) {
 // f_i and f_j of one pair are the same rounded g d, added and subtracted: two bodies' forces are exact negatives
 TEST(PairForces, ThirdLawPairByPairOnEachPath) {
   std::vector<Path> paths{&detail::add_pair_forces_portable};
-  if (cpu_has_avx2_fma()) paths.push_back(&detail::add_pair_forces_avx2_fma);
+  if (cpu_has_avx2_fma()) {
+    for (const Path form : {&detail::add_pair_forces_avx2_fma_mixed, &detail::add_pair_forces_avx2_fma_division}) {
+      paths.push_back(form);
+    }
+  }
   if (cpu_has_avx512()) paths.push_back(&detail::add_pair_forces_avx512);
   for (const Path path : paths) {
     Eigen::ArrayXXd c = cluster(2, 0, 5);

@@ -45,7 +45,9 @@ estimate, effectivity, estimate_verdict: the run's own estimate of its error in 
   (`simulate(..., error=True)`'s `result.error`, global Richardson over runs at h, 2h and 4h; see
   GlobalError), from a separate untimed run of the same method, dt and records (the same states), beside
   the true error the reference gives: effectivity = estimate / measure (1: exact, below 1: an
-  under-estimate) and the estimate's verdict ("reliable" or why not). The estimate covers the attitude,
+  under-estimate) and the estimate's verdict ("reliable" or why not), judged by the measure's quantity
+  alone (`GlobalError.reliable_for`: a record that fails its check on another quantity, such as the
+  energy of a damped scene, may still hold a reliable attitude estimate). The estimate covers the attitude,
   position and velocity errors (final_ at the horizon, max_ the largest over the records, of the bodies);
   for the other measures the columns are nan and the verdict says so. A reliable estimate promises an
   effectivity in [0.5, 2] (measured: docs/accuracy.md).

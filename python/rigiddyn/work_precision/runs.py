@@ -67,8 +67,8 @@ def run(case: Case, method: str, dt: float, steps: int, record_every: int, timed
 
 # the quantity of result.error (GlobalError) that estimates each error measure's quantity
 _ESTIMATED = {"attitude_error": "attitude", "position_error": "position", "velocity_error": "velocity"}
-# the records whose estimate is checked, or lies between two checked ones (GlobalError's verdicts)
-_CHECKED = ("reliable", "interpolated between the reliable records")
+# the verdict of a record whose estimate lies between two reliable records (GlobalError's verdicts)
+_BETWEEN_RELIABLE = "interpolated between the reliable records"
 NO_ESTIMATE = {"estimate": math.nan, "effectivity": math.nan}
 
 
@@ -85,10 +85,15 @@ def estimate_columns(case: Case, method: str, dt: float, steps: int, record_ever
     error = simulate_quietly(case, method, dt, steps, record_every, error=True).error
     verdicts = list(error.verdict)
     values = np.asarray(getattr(error, _ESTIMATED[quantity]), float).reshape(len(verdicts), -1).max(axis=1)
+    # a record's estimate of the quantity is reliable where its own check is (reliable_for: a record whose verdict
+    # fails on another quantity, e.g. an energy that a damper does not conserve, may still hold it), or where the
+    # record lies between two records reliable as a whole
+    held = np.array(error.reliable_for(_ESTIMATED[quantity]), bool).reshape(-1)
+    held |= np.array([v.startswith(_BETWEEN_RELIABLE) for v in verdicts], bool)
     if when == "final":
-        estimate, verdict = float(values[-1]), verdicts[-1]
-    else:  # the largest estimate, reliable when every record is checked or between checked ones
+        estimate, verdict = float(values[-1]), "reliable" if held[-1] else verdicts[-1]
+    else:  # the largest estimate, reliable when every record's is
         estimate = float(np.max(values)) if np.all(np.isfinite(values)) else math.nan
-        verdict = next((v for v in verdicts if not v.startswith(_CHECKED)), "reliable")
+        verdict = next((v for v, ok in zip(verdicts, held) if not ok), "reliable")
     effectivity = estimate / true if true > 0 else (math.inf if estimate > 0 else math.nan)
     return {"estimate": estimate, "effectivity": effectivity, "estimate_verdict": verdict}

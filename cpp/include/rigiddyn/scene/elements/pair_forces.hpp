@@ -4,7 +4,8 @@
 // pair). Three paths (vector_instructions.hpp): the portable one (two pairs per SSE2 instruction, the library's
 // baseline: r² √r² and a division); AVX2 + FMA (four pairs per instruction, |d|² + ε² and the sums by fused
 // multiply–adds, of each eight pairs four by the division and four by a reciprocal square root refined by Newton's
-// steps, so that the divider and the multiply–add units work together); and AVX-512 (eight pairs per instruction,
+// steps, so that the divider and the multiply–add units work together, or on CPUs with a faster divider all eight
+// by the division: avx2_divides_every_pair below); and AVX-512 (eight pairs per instruction,
 // all by the reciprocal square root; a body's last pairs four by the division and one at a time).
 //
 // The paths agree to round-off, each pair's force to a relative 24 u (u = 2⁻⁵³, each operation's rounding): d's
@@ -37,6 +38,19 @@ void add_pair_forces(Eigen::ArrayXXd& columns, Eigen::Index n, double G, double 
 void add_pair_forces_portable(Eigen::ArrayXXd& columns, Eigen::Index n, double G, double softening2);
 void add_pair_forces_avx2_fma(Eigen::ArrayXXd& columns, Eigen::Index n, double G, double softening2);
 void add_pair_forces_avx512(Eigen::ArrayXXd& columns, Eigen::Index n, double G, double softening2);
+
+// The AVX2 path's two forms (add_pair_forces_avx2_fma takes the one avx2_divides_every_pair says): of each eight pairs
+// four by the division and four by the reciprocal square root (mixed), or all eight by the division (division); both
+// within the bound above. Which is faster depends on the CPU's divider. Measured, the AVX2 pair sum at N = 1000 on one
+// core (`bench_scene --benchmark_filter=pair_sum_avx2`): on Xeons with AVX-512, mixed 1.45 ns per pair against 2.0 by
+// the division (docs/perf/scenes.md); on an AMD EPYC (Zen 3, whose divider is the faster), mixed 1.68-1.69 against
+// 1.27-1.34 by the division, every pair by the reciprocal square root 2.40.
+void add_pair_forces_avx2_fma_mixed(Eigen::ArrayXXd& columns, Eigen::Index n, double G, double softening2);
+void add_pair_forces_avx2_fma_division(Eigen::ArrayXXd& columns, Eigen::Index n, double G, double softening2);
+
+// Whether this CPU's AVX2 path divides every pair (the form measured faster on AMD's CPUs; mixed on the others):
+// fixed per process, so that a run's results are the same bits from run to run on a machine.
+bool avx2_divides_every_pair();
 
 // V [J] of the same columns (0–2 the positions, 6 scratch, 7 the masses; n rows used), the path of
 // vector_instructions() from 12 bodies on (AVX-512) or 20 (AVX2), the portable one below; and the three paths,
