@@ -167,32 +167,94 @@ __attribute__((target("avx2,fma"))) inline __m256d strength_by_reciprocal_root(_
   return _mm256_mul_pd(Gm_im_j, _mm256_mul_pd(y, _mm256_mul_pd(y, y)));
 }
 
-// The pairs (i, j … j + 3): g = G m_i m_j / (r² √r²) by `strength` (one of the two above), r² = |d|² + ε² by fused
-// multiply–adds; g d added to the sums and subtracted from f_j.
-template <__m256d (*strength)(__m256d, __m256d)>
-__attribute__((target("avx2,fma"))) inline void four_pairs(const PairColumns& c, Eigen::Index i, Eigen::Index j,
-                                                             __m256d Gm_i, __m256d eps2, Sums4& s) {
-  const auto [dx, dy, dz, r2] = separation(c, i, j, eps2);
-  const __m256d g = strength(_mm256_mul_pd(Gm_i, _mm256_loadu_pd(c.mass + j)), r2);
-  s.x = _mm256_fmadd_pd(g, dx, s.x), s.y = _mm256_fmadd_pd(g, dy, s.y), s.z = _mm256_fmadd_pd(g, dz, s.z);
-  _mm256_storeu_pd(c.f_x + j, _mm256_fnmadd_pd(g, dx, _mm256_loadu_pd(c.f_x + j)));
-  _mm256_storeu_pd(c.f_y + j, _mm256_fnmadd_pd(g, dy, _mm256_loadu_pd(c.f_y + j)));
-  _mm256_storeu_pd(c.f_z + j, _mm256_fnmadd_pd(g, dz, _mm256_loadu_pd(c.f_z + j)));
+// The bodies j … j + 3 of a block of four pairs (their positions and masses), and a body i's position and G m_i in
+// every lane
+struct Block4 {
+  __m256d x, y, z, mass;
+};
+__attribute__((target("avx2,fma"))) inline Block4 block4(const PairColumns& c, Eigen::Index j) {
+  return {_mm256_loadu_pd(c.x + j), _mm256_loadu_pd(c.y + j), _mm256_loadu_pd(c.z + j), _mm256_loadu_pd(c.mass + j)};
+}
+struct Body4 {
+  __m256d x, y, z, Gm;
+};
+__attribute__((target("avx2,fma"))) inline Body4 body4(const PairColumns& c, Eigen::Index i, double G) {
+  return {_mm256_set1_pd(c.x[i]), _mm256_set1_pd(c.y[i]), _mm256_set1_pd(c.z[i]), _mm256_set1_pd(G * c.mass[i])};
 }
 
-// The pairs (i, j) for j from `first` to n − 1 one at a time with the same operations (std::fma: one rounding, as
-// the vector lanes), added to f_i with the lane sums t.
-__attribute__((target("avx2,fma"))) inline void last_pairs(const PairColumns& c, Eigen::Index i, Eigen::Index first,
-                                                             Eigen::Index n, double Gm_i, double softening2, double t_x,
-                                                             double t_y, double t_z) {
-  for (Eigen::Index j = first; j < n; ++j) {
-    const double dx = c.x[j] - c.x[i], dy = c.y[j] - c.y[i], dz = c.z[j] - c.z[i];
-    const double r2 = std::fma(dz, dz, std::fma(dy, dy, std::fma(dx, dx, softening2)));
-    const double g = Gm_i * c.mass[j] / (r2 * std::sqrt(r2));
-    t_x = std::fma(g, dx, t_x), t_y = std::fma(g, dy, t_y), t_z = std::fma(g, dz, t_z);
-    c.f_x[j] = std::fma(-g, dx, c.f_x[j]), c.f_y[j] = std::fma(-g, dy, c.f_y[j]), c.f_z[j] = std::fma(-g, dz, c.f_z[j]);
+// The four pairs (i, j … j + 3): d = p_j − p_i, r² = |d|² + ε² by fused multiply–adds, g = G m_i m_j / (r² √r²) by
+// `strength` (one of the two above), and g d added to body i's sums
+struct Pairs4 {
+  __m256d dx, dy, dz, g;
+};
+template <__m256d (*strength)(__m256d, __m256d)>
+__attribute__((target("avx2,fma"))) inline Pairs4 four_pairs(const Block4& b, const Body4& i, __m256d eps2, Sums4& s) {
+  const __m256d dx = _mm256_sub_pd(b.x, i.x), dy = _mm256_sub_pd(b.y, i.y), dz = _mm256_sub_pd(b.z, i.z);
+  const __m256d r2 = _mm256_fmadd_pd(dz, dz, _mm256_fmadd_pd(dy, dy, _mm256_fmadd_pd(dx, dx, eps2)));
+  const __m256d g = strength(_mm256_mul_pd(i.Gm, b.mass), r2);
+  s.x = _mm256_fmadd_pd(g, dx, s.x), s.y = _mm256_fmadd_pd(g, dy, s.y), s.z = _mm256_fmadd_pd(g, dz, s.z);
+  return {dx, dy, dz, g};
+}
+
+// f_j −= g d of the block's pairs with body i
+__attribute__((target("avx2,fma"))) inline void subtract(const PairColumns& c, Eigen::Index j, const Pairs4& p) {
+  _mm256_storeu_pd(c.f_x + j, _mm256_fnmadd_pd(p.g, p.dx, _mm256_loadu_pd(c.f_x + j)));
+  _mm256_storeu_pd(c.f_y + j, _mm256_fnmadd_pd(p.g, p.dy, _mm256_loadu_pd(c.f_y + j)));
+  _mm256_storeu_pd(c.f_z + j, _mm256_fnmadd_pd(p.g, p.dz, _mm256_loadu_pd(c.f_z + j)));
+}
+
+// The pair (i, j) with the same operations as the lanes, one at a time (std::fma: one rounding each): g d added to
+// body i's sums t and subtracted from f_j.
+__attribute__((target("avx2,fma"))) inline void one_pair(const PairColumns& c, Eigen::Index i, Eigen::Index j,
+                                                           double Gm_i, double softening2, double& t_x, double& t_y,
+                                                           double& t_z) {
+  const double dx = c.x[j] - c.x[i], dy = c.y[j] - c.y[i], dz = c.z[j] - c.z[i];
+  const double r2 = std::fma(dz, dz, std::fma(dy, dy, std::fma(dx, dx, softening2)));
+  const double g = Gm_i * c.mass[j] / (r2 * std::sqrt(r2));
+  t_x = std::fma(g, dx, t_x), t_y = std::fma(g, dy, t_y), t_z = std::fma(g, dz, t_z);
+  c.f_x[j] = std::fma(-g, dx, c.f_x[j]), c.f_y[j] = std::fma(-g, dy, c.f_y[j]), c.f_z[j] = std::fma(-g, dz, c.f_z[j]);
+}
+
+// The lanes of a last block of count < 4 bodies j … j + count − 1: those from count on are off (their positions,
+// masses and forces neither read nor written, their g zero)
+__attribute__((target("avx2,fma"))) inline __m256i lanes4(Eigen::Index count) {
+  return _mm256_cmpgt_epi64(_mm256_set1_epi64x(count), _mm256_setr_epi64x(0, 1, 2, 3));
+}
+__attribute__((target("avx2,fma"))) inline Block4 block4(const PairColumns& c, Eigen::Index j, __m256i lanes) {
+  return {_mm256_maskload_pd(c.x + j, lanes), _mm256_maskload_pd(c.y + j, lanes), _mm256_maskload_pd(c.z + j, lanes),
+          _mm256_maskload_pd(c.mass + j, lanes)};
+}
+
+// The pairs of a last block by the division, as four_pairs with g zero in the lanes that are off (an off lane's
+// r² may be zero, and its quotient NaN)
+__attribute__((target("avx2,fma"))) inline Pairs4 last_four_pairs(const Block4& b, const Body4& i, __m256d eps2,
+                                                                    __m256i lanes, Sums4& s) {
+  const __m256d dx = _mm256_sub_pd(b.x, i.x), dy = _mm256_sub_pd(b.y, i.y), dz = _mm256_sub_pd(b.z, i.z);
+  const __m256d r2 = _mm256_fmadd_pd(dz, dz, _mm256_fmadd_pd(dy, dy, _mm256_fmadd_pd(dx, dx, eps2)));
+  const __m256d g = _mm256_and_pd(strength_by_division(_mm256_mul_pd(i.Gm, b.mass), r2), _mm256_castsi256_pd(lanes));
+  s.x = _mm256_fmadd_pd(g, dx, s.x), s.y = _mm256_fmadd_pd(g, dy, s.y), s.z = _mm256_fmadd_pd(g, dz, s.z);
+  return {dx, dy, dz, g};
+}
+__attribute__((target("avx2,fma"))) inline void subtract(const PairColumns& c, Eigen::Index j, const Pairs4& p,
+                                                           __m256i lanes) {
+  _mm256_maskstore_pd(c.f_x + j, lanes, _mm256_fnmadd_pd(p.g, p.dx, _mm256_maskload_pd(c.f_x + j, lanes)));
+  _mm256_maskstore_pd(c.f_y + j, lanes, _mm256_fnmadd_pd(p.g, p.dy, _mm256_maskload_pd(c.f_y + j, lanes)));
+  _mm256_maskstore_pd(c.f_z + j, lanes, _mm256_fnmadd_pd(p.g, p.dz, _mm256_maskload_pd(c.f_z + j, lanes)));
+}
+
+// Body i's pairs from j on after its blocks of eight, by the division: four (where four are left), then the last
+// 1-3 as a block of four with its lanes beyond n off (faster than one at a time: docs/perf/scenes.md); its lane sums
+// s added to f_i.
+__attribute__((target("avx2,fma"))) inline void finish_body(const PairColumns& c, Eigen::Index i, Eigen::Index j,
+                                                              Eigen::Index n, double G, double softening2, Sums4 s) {
+  const Body4 a = body4(c, i, G);
+  const __m256d eps2 = _mm256_set1_pd(softening2);
+  if (j + 4 <= n) subtract(c, j, four_pairs<strength_by_division>(block4(c, j), a, eps2, s)), j += 4;
+  if (j < n) {
+    const __m256i lanes = lanes4(n - j);
+    subtract(c, j, last_four_pairs(block4(c, j, lanes), a, eps2, lanes, s), lanes);
   }
-  c.f_x[i] += t_x, c.f_y[i] += t_y, c.f_z[i] += t_z;
+  c.f_x[i] += lane_sum(s.x), c.f_y[i] += lane_sum(s.y), c.f_z[i] += lane_sum(s.z);
 }
 
 // y = 1/√r² of eight pairs: the reciprocal square root in double (relative error below 2⁻¹⁴ over the whole range of
@@ -209,21 +271,81 @@ __attribute__((target("avx512f,avx2,fma"))) inline __m512d reciprocal_root(__m51
   return y;
 }
 
-// The eight pairs (i, j … j + 7), as four_pairs with g = G m_i m_j y³, y = reciprocal_root(r²) (within 3 u of 1/√r²,
-// as on the AVX2 path). Twice as fast as the division at N = 1000 (docs/perf/scenes.md): the divider takes as long
-// for eight lanes as for four. An r² of zero or infinity (coincident bodies without softening, a position at
-// infinity) gives a NaN force, as the division's g d does (∞ · 0, 0 · ∞).
-__attribute__((target("avx512f,avx2,fma"))) inline void eight_pairs(const PairColumns& c, Eigen::Index i,
-                                                                      Eigen::Index j, __m512d Gm_i, __m512d eps2,
-                                                                      Sums8& s) {
-  const auto [dx, dy, dz, r2] = separation(c, i, j, eps2);
+// The bodies j … j + 7 of a block of eight pairs: their positions and masses, loaded once for the one or two bodies i
+// whose pairs with them the block holds
+struct Block8 {
+  __m512d x, y, z, mass;
+};
+__attribute__((target("avx512f,avx2,fma"))) inline Block8 block(const PairColumns& c, Eigen::Index j) {
+  return {_mm512_loadu_pd(c.x + j), _mm512_loadu_pd(c.y + j), _mm512_loadu_pd(c.z + j), _mm512_loadu_pd(c.mass + j)};
+}
+
+// Body i's position and G m_i in every lane
+struct Body8 {
+  __m512d x, y, z, Gm;
+};
+__attribute__((target("avx512f,avx2,fma"))) inline Body8 body(const PairColumns& c, Eigen::Index i, double G) {
+  return {_mm512_set1_pd(c.x[i]), _mm512_set1_pd(c.y[i]), _mm512_set1_pd(c.z[i]), _mm512_set1_pd(G * c.mass[i])};
+}
+
+// The eight pairs (i, j … j + 7): d = p_j − p_i, r² = |d|² + ε² by fused multiply–adds, g = G m_i m_j y³ with
+// y = reciprocal_root(r²) (within 3 u of 1/√r², as on the AVX2 path), and g d added to body i's sums. Twice as fast as
+// the division at N = 1000 (docs/perf/scenes.md): the divider takes as long for eight lanes as for four. An r² of zero
+// or infinity (coincident bodies without softening, a position at infinity) gives a NaN force, as the division's g d
+// does (∞ · 0, 0 · ∞).
+struct Pairs8 {
+  __m512d dx, dy, dz, g;
+};
+__attribute__((target("avx512f,avx2,fma"))) inline Pairs8 eight_pairs(const Block8& b, const Body8& i, __m512d eps2,
+                                                                        Sums8& s) {
+  const __m512d dx = _mm512_sub_pd(b.x, i.x), dy = _mm512_sub_pd(b.y, i.y), dz = _mm512_sub_pd(b.z, i.z);
+  const __m512d r2 = _mm512_fmadd_pd(dz, dz, _mm512_fmadd_pd(dy, dy, _mm512_fmadd_pd(dx, dx, eps2)));
   const __m512d y = reciprocal_root(r2);
-  const __m512d Gm_im_j = _mm512_mul_pd(Gm_i, _mm512_loadu_pd(c.mass + j));
-  const __m512d g = _mm512_mul_pd(Gm_im_j, _mm512_mul_pd(y, _mm512_mul_pd(y, y)));
+  const __m512d g = _mm512_mul_pd(_mm512_mul_pd(i.Gm, b.mass), _mm512_mul_pd(y, _mm512_mul_pd(y, y)));
   s.x = _mm512_fmadd_pd(g, dx, s.x), s.y = _mm512_fmadd_pd(g, dy, s.y), s.z = _mm512_fmadd_pd(g, dz, s.z);
-  _mm512_storeu_pd(c.f_x + j, _mm512_fnmadd_pd(g, dx, _mm512_loadu_pd(c.f_x + j)));
-  _mm512_storeu_pd(c.f_y + j, _mm512_fnmadd_pd(g, dy, _mm512_loadu_pd(c.f_y + j)));
-  _mm512_storeu_pd(c.f_z + j, _mm512_fnmadd_pd(g, dz, _mm512_loadu_pd(c.f_z + j)));
+  return {dx, dy, dz, g};
+}
+
+// f_j −= g d of the block's pairs with one body i (p), or with two (p, then q: the order of the one-body sums)
+__attribute__((target("avx512f,avx2,fma"))) inline void subtract(const PairColumns& c, Eigen::Index j,
+                                                                   const Pairs8& p) {
+  _mm512_storeu_pd(c.f_x + j, _mm512_fnmadd_pd(p.g, p.dx, _mm512_loadu_pd(c.f_x + j)));
+  _mm512_storeu_pd(c.f_y + j, _mm512_fnmadd_pd(p.g, p.dy, _mm512_loadu_pd(c.f_y + j)));
+  _mm512_storeu_pd(c.f_z + j, _mm512_fnmadd_pd(p.g, p.dz, _mm512_loadu_pd(c.f_z + j)));
+}
+__attribute__((target("avx512f,avx2,fma"))) inline void subtract(const PairColumns& c, Eigen::Index j, const Pairs8& p,
+                                                                   const Pairs8& q) {
+  _mm512_storeu_pd(c.f_x + j, _mm512_fnmadd_pd(q.g, q.dx, _mm512_fnmadd_pd(p.g, p.dx, _mm512_loadu_pd(c.f_x + j))));
+  _mm512_storeu_pd(c.f_y + j, _mm512_fnmadd_pd(q.g, q.dy, _mm512_fnmadd_pd(p.g, p.dy, _mm512_loadu_pd(c.f_y + j))));
+  _mm512_storeu_pd(c.f_z + j, _mm512_fnmadd_pd(q.g, q.dz, _mm512_fnmadd_pd(p.g, p.dz, _mm512_loadu_pd(c.f_z + j))));
+}
+
+// The lanes of a last block of count < 8 bodies j … j + count − 1 (those from count on off: their positions, masses
+// and forces neither read nor written, their g zero), and the block's pairs as eight_pairs and subtract
+__attribute__((target("avx512f,avx2,fma"))) inline __mmask8 lanes8(Eigen::Index count) {
+  return static_cast<__mmask8>((1u << count) - 1u);
+}
+__attribute__((target("avx512f,avx2,fma"))) inline Block8 block(const PairColumns& c, Eigen::Index j, __mmask8 lanes) {
+  return {_mm512_maskz_loadu_pd(lanes, c.x + j), _mm512_maskz_loadu_pd(lanes, c.y + j),
+          _mm512_maskz_loadu_pd(lanes, c.z + j), _mm512_maskz_loadu_pd(lanes, c.mass + j)};
+}
+__attribute__((target("avx512f,avx2,fma"))) inline Pairs8 last_eight_pairs(const Block8& b, const Body8& i,
+                                                                             __m512d eps2, __mmask8 lanes, Sums8& s) {
+  const __m512d dx = _mm512_sub_pd(b.x, i.x), dy = _mm512_sub_pd(b.y, i.y), dz = _mm512_sub_pd(b.z, i.z);
+  const __m512d r2 = _mm512_fmadd_pd(dz, dz, _mm512_fmadd_pd(dy, dy, _mm512_fmadd_pd(dx, dx, eps2)));
+  const __m512d y = reciprocal_root(r2);  // NaN in an off lane whose r² is zero: its g is zero all the same
+  const __m512d g = _mm512_maskz_mul_pd(lanes, _mm512_mul_pd(i.Gm, b.mass), _mm512_mul_pd(y, _mm512_mul_pd(y, y)));
+  s.x = _mm512_fmadd_pd(g, dx, s.x), s.y = _mm512_fmadd_pd(g, dy, s.y), s.z = _mm512_fmadd_pd(g, dz, s.z);
+  return {dx, dy, dz, g};
+}
+__attribute__((target("avx512f,avx2,fma"))) inline void subtract(const PairColumns& c, Eigen::Index j, const Pairs8& p,
+                                                                   const Pairs8& q, __mmask8 lanes) {
+  const __m512d f_x = _mm512_maskz_loadu_pd(lanes, c.f_x + j);
+  _mm512_mask_storeu_pd(c.f_x + j, lanes, _mm512_fnmadd_pd(q.g, q.dx, _mm512_fnmadd_pd(p.g, p.dx, f_x)));
+  const __m512d f_y = _mm512_maskz_loadu_pd(lanes, c.f_y + j);
+  _mm512_mask_storeu_pd(c.f_y + j, lanes, _mm512_fnmadd_pd(q.g, q.dy, _mm512_fnmadd_pd(p.g, p.dy, f_y)));
+  const __m512d f_z = _mm512_maskz_loadu_pd(lanes, c.f_z + j);
+  _mm512_mask_storeu_pd(c.f_z + j, lanes, _mm512_fnmadd_pd(q.g, q.dz, _mm512_fnmadd_pd(p.g, p.dz, f_z)));
 }
 
 // the upper four lanes added to the lower four (masked extracts, as in reciprocal_root)
@@ -277,26 +399,30 @@ __attribute__((target("avx512f,avx2,fma"))) inline void eight_terms(const PairCo
   }
 }
 
-// The pairs (i, j > i) of each i eight j at a time, four by the division and four by `second` (the division, or the
-// reciprocal square root, which keeps the multiply–add units busy beside the divider), then four by the division
-// (where four are left); the last n − i − 1 mod 4 pairs one at a time.
+// Body i's pairs with each block of eight j > i, four by the division and four by `second` (the division, or the
+// reciprocal square root, which keeps the multiply–add units busy beside the divider), then its last pairs
+// (finish_body)
+template <__m256d (*second)(__m256d, __m256d)>
+__attribute__((target("avx2,fma"))) inline void avx2_one_body(const PairColumns& c, Eigen::Index i, Eigen::Index n,
+                                                                double G, double softening2) {
+  const __m256d eps2 = _mm256_set1_pd(softening2);
+  const Body4 a = body4(c, i, G);
+  Sums4 s{_mm256_setzero_pd(), _mm256_setzero_pd(), _mm256_setzero_pd()};
+  Eigen::Index j = i + 1;
+  for (; j + 8 <= n; j += 8) {
+    subtract(c, j, four_pairs<strength_by_division>(block4(c, j), a, eps2, s));
+    subtract(c, j + 4, four_pairs<second>(block4(c, j + 4), a, eps2, s));
+  }
+  finish_body(c, i, j, n, G, softening2, s);
+}
+
+// The bodies one at a time (avx2_one_body). (Two at a time, as the AVX-512 path, measured at most 5 % faster here:
+// docs/perf/scenes.md.)
 template <__m256d (*second)(__m256d, __m256d)>
 __attribute__((target("avx2,fma"))) void avx2_pair_forces(Eigen::ArrayXXd& columns, Eigen::Index n, double G,
                                                           double softening2) {
   const PairColumns c(columns);
-  const __m256d eps2 = _mm256_set1_pd(softening2);
-  for (Eigen::Index i = 0; i + 1 < n; ++i) {
-    const double Gm_i = G * c.mass[i];
-    const __m256d Gm_i4 = _mm256_set1_pd(Gm_i);
-    Sums4 s{_mm256_setzero_pd(), _mm256_setzero_pd(), _mm256_setzero_pd()};
-    Eigen::Index j = i + 1;
-    for (; j + 8 <= n; j += 8) {
-      four_pairs<strength_by_division>(c, i, j, Gm_i4, eps2, s);
-      four_pairs<second>(c, i, j + 4, Gm_i4, eps2, s);
-    }
-    if (j + 4 <= n) four_pairs<strength_by_division>(c, i, j, Gm_i4, eps2, s), j += 4;
-    last_pairs(c, i, j, n, Gm_i, softening2, lane_sum(s.x), lane_sum(s.y), lane_sum(s.z));
-  }
+  for (Eigen::Index i = 0; i + 1 < n; ++i) avx2_one_body<second>(c, i, n, G, softening2);
 }
 
 }  // namespace
@@ -314,23 +440,75 @@ void add_pair_forces_avx2_fma_division(Eigen::ArrayXXd& columns, Eigen::Index n,
   avx2_pair_forces<strength_by_division>(columns, n, G, softening2);
 }
 
-// The pairs (i, j > i) of each i eight j at a time by the reciprocal square root (eight_pairs), then four by the
-// division (where four are left), then one at a time; the sums of f_i over eight lanes folded onto the four-pair
-// block's.
+// body i's sums over eight lanes folded onto four
+__attribute__((target("avx512f,avx2,fma"))) inline Sums4 halves_sum(const Sums8& s) {
+  return {halves_sum(s.x), halves_sum(s.y), halves_sum(s.z)};
+}
+
+// f_i += its lane sums s and its pair summed apart, t
+__attribute__((target("avx512f,avx2,fma"))) inline void add_sums(const PairColumns& c, Eigen::Index i, const Sums8& s,
+                                                                   double t_x, double t_y, double t_z) {
+  c.f_x[i] += lane_sum(halves_sum(s.x)) + t_x;
+  c.f_y[i] += lane_sum(halves_sum(s.y)) + t_y;
+  c.f_z[i] += lane_sum(halves_sum(s.z)) + t_z;
+}
+
+// The bodies i and k = i + 1 together: their pair one_pair, then their pairs with each block of eight j > k
+// (eight_pairs) and with a last block of fewer (its lanes beyond n off), each block loaded and f_j stored once for
+// both. Measured on a Xeon with AVX-512 (Ice Lake), one core, against a body at a time (its last pairs four by the
+// division and one at a time), both built side by side in one process: 1.00-1.12x the time at n = 24, 0.99-1.01 at
+// 50, 0.85-0.90 at 100, 0.69-0.70 at 1000 (docs/perf/scenes.md).
+__attribute__((target("avx512f,avx2,fma"))) inline void two_bodies(const PairColumns& c, Eigen::Index i, Eigen::Index n,
+                                                                     double G, double softening2) {
+  const Eigen::Index k = i + 1;
+  const __m512d eps2 = _mm512_set1_pd(softening2);
+  double t_x = 0.0, t_y = 0.0, t_z = 0.0;
+  one_pair(c, i, k, G * c.mass[i], softening2, t_x, t_y, t_z);
+  const Body8 a = body(c, i, G), b = body(c, k, G);
+  Sums8 s_a{_mm512_setzero_pd(), _mm512_setzero_pd(), _mm512_setzero_pd()}, s_b = s_a;
+  Eigen::Index j = k + 1;
+  for (; j + 8 <= n; j += 8) {
+    const Block8 bodies_j = block(c, j);
+    const Pairs8 p = eight_pairs(bodies_j, a, eps2, s_a), q = eight_pairs(bodies_j, b, eps2, s_b);
+    subtract(c, j, p, q);
+  }
+  if (j < n) {
+    const __mmask8 lanes = lanes8(n - j);
+    const Block8 bodies_j = block(c, j, lanes);
+    const Pairs8 p = last_eight_pairs(bodies_j, a, eps2, lanes, s_a);
+    const Pairs8 q = last_eight_pairs(bodies_j, b, eps2, lanes, s_b);
+    subtract(c, j, p, q, lanes);
+  }
+  add_sums(c, i, s_a, t_x, t_y, t_z);
+  add_sums(c, k, s_b, 0.0, 0.0, 0.0);
+}
+
+// Body i alone: its pairs with each block of eight j > i, then four by the division (where four are left), then one at
+// a time (one_pair)
+__attribute__((target("avx512f,avx2,fma"))) inline void one_body(const PairColumns& c, Eigen::Index i, Eigen::Index n,
+                                                                   double G, double softening2) {
+  const __m512d eps2 = _mm512_set1_pd(softening2);
+  const Body8 a = body(c, i, G);
+  Sums8 s{_mm512_setzero_pd(), _mm512_setzero_pd(), _mm512_setzero_pd()};
+  Eigen::Index j = i + 1;
+  for (; j + 8 <= n; j += 8) subtract(c, j, eight_pairs(block(c, j), a, eps2, s));
+  Sums4 s4 = halves_sum(s);
+  if (j + 4 <= n) {
+    subtract(c, j, four_pairs<strength_by_division>(block4(c, j), body4(c, i, G), _mm256_set1_pd(softening2), s4));
+    j += 4;
+  }
+  double t_x = lane_sum(s4.x), t_y = lane_sum(s4.y), t_z = lane_sum(s4.z);
+  for (; j < n; ++j) one_pair(c, i, j, G * c.mass[i], softening2, t_x, t_y, t_z);
+  c.f_x[i] += t_x, c.f_y[i] += t_y, c.f_z[i] += t_z;
+}
+
+// The bodies two at a time (two_bodies), the last one alone where their count n − 1 of those with pairs is odd.
 __attribute__((target("avx512f,avx2,fma"))) void add_pair_forces_avx512(Eigen::ArrayXXd& columns, Eigen::Index n,
                                                                         double G, double softening2) {
   const PairColumns c(columns);
-  const __m512d eps2_8 = _mm512_set1_pd(softening2);
-  const __m256d eps2_4 = _mm256_set1_pd(softening2);
-  for (Eigen::Index i = 0; i + 1 < n; ++i) {
-    const double Gm_i = G * c.mass[i];
-    Sums8 s8{_mm512_setzero_pd(), _mm512_setzero_pd(), _mm512_setzero_pd()};
-    Eigen::Index j = i + 1;
-    for (; j + 8 <= n; j += 8) eight_pairs(c, i, j, _mm512_set1_pd(Gm_i), eps2_8, s8);
-    Sums4 s4{halves_sum(s8.x), halves_sum(s8.y), halves_sum(s8.z)};
-    if (j + 4 <= n) four_pairs<strength_by_division>(c, i, j, _mm256_set1_pd(Gm_i), eps2_4, s4), j += 4;
-    last_pairs(c, i, j, n, Gm_i, softening2, lane_sum(s4.x), lane_sum(s4.y), lane_sum(s4.z));
-  }
+  Eigen::Index i = 0;
+  for (; i + 2 < n; i += 2) two_bodies(c, i, n, G, softening2);
+  if (i + 1 < n) one_body(c, i, n, G, softening2);
 }
 
 // The terms of each i eight pairs at a time, four by the division and four by the reciprocal square root (as the

@@ -5,8 +5,11 @@
 // baseline: r² √r² and a division); AVX2 + FMA (four pairs per instruction, |d|² + ε² and the sums by fused
 // multiply–adds, of each eight pairs four by the division and four by a reciprocal square root refined by Newton's
 // steps, so that the divider and the multiply–add units work together, or on CPUs with a faster divider all eight
-// by the division: avx2_divides_every_pair below); and AVX-512 (eight pairs per instruction,
-// all by the reciprocal square root; a body's last pairs four by the division and one at a time).
+// by the division: avx2_divides_every_pair below; a body's last pairs by the division, four, then the last 1-3 as a
+// block of four with its lanes beyond n off); and AVX-512 (eight pairs per instruction, all by the reciprocal square
+// root, the bodies i two at a time: each block of bodies j loaded, and its forces f_j stored, once for both, a last
+// block of fewer than eight with its lanes beyond n off; a last body alone, its last pairs four by the division and
+// one at a time).
 //
 // The paths agree to round-off, each pair's force to a relative 24 u (u = 2⁻⁵³, each operation's rounding): d's
 // components round once (u each, 2 u in |d|²) and |d|² + ε² four times more (three with fused multiply–adds): r² is
