@@ -105,12 +105,9 @@ struct Sums8 {
   __m512d x, y, z;
 };
 
-// d = p_j − p_i of the pairs (i, j …) and r² = |d|² + ε², by fused multiply–adds, four or eight lanes
+// d = p_j − p_i of the pairs (i, j … j + 3) and r² = |d|² + ε², by fused multiply–adds (the AVX2 potential's terms)
 struct Separation4 {
   __m256d dx, dy, dz, r2;
-};
-struct Separation8 {
-  __m512d dx, dy, dz, r2;
 };
 
 __attribute__((target("avx2,fma"))) inline Separation4 separation(const PairColumns& c, Eigen::Index i, Eigen::Index j,
@@ -119,13 +116,6 @@ __attribute__((target("avx2,fma"))) inline Separation4 separation(const PairColu
   const __m256d dy = _mm256_sub_pd(_mm256_loadu_pd(c.y + j), _mm256_set1_pd(c.y[i]));
   const __m256d dz = _mm256_sub_pd(_mm256_loadu_pd(c.z + j), _mm256_set1_pd(c.z[i]));
   return {dx, dy, dz, _mm256_fmadd_pd(dz, dz, _mm256_fmadd_pd(dy, dy, _mm256_fmadd_pd(dx, dx, eps2)))};
-}
-__attribute__((target("avx512f,avx2,fma"))) inline Separation8 separation(const PairColumns& c, Eigen::Index i,
-                                                                          Eigen::Index j, __m512d eps2) {
-  const __m512d dx = _mm512_sub_pd(_mm512_loadu_pd(c.x + j), _mm512_set1_pd(c.x[i]));
-  const __m512d dy = _mm512_sub_pd(_mm512_loadu_pd(c.y + j), _mm512_set1_pd(c.y[i]));
-  const __m512d dz = _mm512_sub_pd(_mm512_loadu_pd(c.z + j), _mm512_set1_pd(c.z[i]));
-  return {dx, dy, dz, _mm512_fmadd_pd(dz, dz, _mm512_fmadd_pd(dy, dy, _mm512_fmadd_pd(dx, dx, eps2)))};
 }
 
 __attribute__((target("avx2,fma"))) inline double lane_sum(__m256d v) {
@@ -383,19 +373,20 @@ __attribute__((target("avx2,fma"))) inline double last_terms(const PairColumns& 
   return t;
 }
 
-// the terms of the eight pairs (i, j … j + 7) as m_j y, y = reciprocal_root(r²), added to the lanes of `sum` by a fused
-// multiply–add; eight pairs with an r² outside [2⁻¹⁰⁰⁰, 2¹⁰⁰⁰] by the division (r² = 0 or ∞ make the Newton steps'
-// 0 · ∞ a NaN, where the division gives the portable path's ∞ or 0)
-__attribute__((target("avx512f,avx2,fma"))) inline void eight_terms(const PairColumns& c, Eigen::Index i,
-                                                                      Eigen::Index j, __m512d eps2, __m512d& sum) {
-  const __m512d r2 = separation(c, i, j, eps2).r2;
-  const __m512d m_j = _mm512_loadu_pd(c.mass + j);
-  const __mmask8 in_range = _mm512_cmp_pd_mask(r2, _mm512_set1_pd(0x1p-1000), _CMP_GE_OQ) &
-                            _mm512_cmp_pd_mask(r2, _mm512_set1_pd(0x1p1000), _CMP_LE_OQ);
-  if (in_range != 0xFF) {
-    sum = _mm512_add_pd(sum, _mm512_div_pd(m_j, _mm512_maskz_sqrt_pd(0xFF, r2)));  // masked: as reciprocal_root
+// the terms of body i's pairs with a block of eight bodies j (their lanes on where `lanes` says; an off lane's term
+// not added) as m_j y, y = reciprocal_root(r²), added to the lanes of `sum` by a fused multiply–add; a block with an r²
+// outside [2⁻¹⁰⁰⁰, 2¹⁰⁰⁰] by the division (r² = 0 or ∞ make the Newton steps' 0 · ∞ a NaN, where the division gives
+// the portable path's ∞ or 0)
+__attribute__((target("avx512f,avx2,fma"))) inline void eight_terms(const Block8& b, const Body8& i, __m512d eps2,
+                                                                      __mmask8 lanes, __m512d& sum) {
+  const __m512d dx = _mm512_sub_pd(b.x, i.x), dy = _mm512_sub_pd(b.y, i.y), dz = _mm512_sub_pd(b.z, i.z);
+  const __m512d r2 = _mm512_fmadd_pd(dz, dz, _mm512_fmadd_pd(dy, dy, _mm512_fmadd_pd(dx, dx, eps2)));
+  const __mmask8 in_range = _mm512_mask_cmp_pd_mask(lanes, r2, _mm512_set1_pd(0x1p-1000), _CMP_GE_OQ) &
+                            _mm512_mask_cmp_pd_mask(lanes, r2, _mm512_set1_pd(0x1p1000), _CMP_LE_OQ);
+  if (in_range != lanes) {
+    sum = _mm512_mask_add_pd(sum, lanes, sum, _mm512_div_pd(b.mass, _mm512_maskz_sqrt_pd(0xFF, r2)));
   } else {
-    sum = _mm512_fmadd_pd(m_j, reciprocal_root(r2), sum);
+    sum = _mm512_mask3_fmadd_pd(b.mass, reciprocal_root(r2), sum, lanes);
   }
 }
 
@@ -532,22 +523,33 @@ __attribute__((target("avx2,fma"))) double pair_potential_avx2_fma(Eigen::ArrayX
   return V;
 }
 
-// The terms of each i eight pairs at a time by the reciprocal square root (eight_terms), then four by the division,
-// then one at a time
+// The bodies i two at a time, as the forces' two_bodies: their pair's term alone, then their terms with each block of
+// eight bodies j > i + 1 (eight_terms), the block loaded once for both, the last block of fewer with its lanes beyond n
+// off; the last body alone where their count n − 1 of those with pairs is odd (its one pair).
 __attribute__((target("avx512f,avx2,fma"))) double pair_potential_avx512(Eigen::ArrayXXd& columns, Eigen::Index n,
                                                                          double G, double softening2) {
   const PairColumns c(columns);
-  const __m512d eps2_8 = _mm512_set1_pd(softening2);
-  const __m256d eps2_4 = _mm256_set1_pd(softening2);
+  const __m512d eps2 = _mm512_set1_pd(softening2);
   double V = 0.0;
-  for (Eigen::Index i = 0; i + 1 < n; ++i) {
-    __m512d sum8 = _mm512_setzero_pd();
-    Eigen::Index j = i + 1;
-    for (; j + 8 <= n; j += 8) eight_terms(c, i, j, eps2_8, sum8);
-    __m256d sum4 = halves_sum(sum8);
-    if (j + 4 <= n) four_terms<mass_over_distance_by_division>(c, i, j, eps2_4, sum4), j += 4;
-    V -= G * c.mass[i] * last_terms(c, i, j, n, softening2, lane_sum(sum4));
+  Eigen::Index i = 0;
+  for (; i + 2 < n; i += 2) {
+    const Eigen::Index k = i + 1;
+    const Body8 a = body(c, i, G), b = body(c, k, G);
+    __m512d sum_a = _mm512_setzero_pd(), sum_b = _mm512_setzero_pd();
+    Eigen::Index j = k + 1;
+    for (; j + 8 <= n; j += 8) {
+      const Block8 bodies_j = block(c, j);
+      eight_terms(bodies_j, a, eps2, 0xFF, sum_a), eight_terms(bodies_j, b, eps2, 0xFF, sum_b);
+    }
+    if (j < n) {
+      const __mmask8 lanes = lanes8(n - j);
+      const Block8 bodies_j = block(c, j, lanes);
+      eight_terms(bodies_j, a, eps2, lanes, sum_a), eight_terms(bodies_j, b, eps2, lanes, sum_b);
+    }
+    V -= G * c.mass[i] * last_terms(c, i, k, k + 1, softening2, lane_sum(halves_sum(sum_a)));
+    V -= G * c.mass[k] * lane_sum(halves_sum(sum_b));
   }
+  if (i + 1 < n) V -= G * c.mass[i] * last_terms(c, i, i + 1, n, softening2, 0.0);
   return V;
 }
 
