@@ -47,7 +47,9 @@ void add_pair_forces_avx512(Eigen::ArrayXXd& columns, Eigen::Index n, double G, 
 // within the bound above. Which is faster depends on the CPU's divider. Measured, the AVX2 pair sum at N = 1000 on one
 // core (`bench_scene --benchmark_filter=pair_sum_avx2`): on Xeons with AVX-512, mixed 1.45 ns per pair against 2.0 by
 // the division (docs/perf/scenes.md); on an AMD EPYC (Zen 3, whose divider is the faster), mixed 1.68-1.69 against
-// 1.27-1.34 by the division, every pair by the reciprocal square root 2.40.
+// 1.27-1.34 by the division, every pair by the reciprocal square root 2.40; on an Ice Lake Xeon, whose divider is
+// faster than the earlier Xeons', mixed 2.0-2.8 against 1.70-1.78 by the division (the rule by vendor below then
+// takes the slower form there; where AVX-512 runs, the AVX2 path runs only below 24 bodies, where they differ little).
 void add_pair_forces_avx2_fma_mixed(Eigen::ArrayXXd& columns, Eigen::Index n, double G, double softening2);
 void add_pair_forces_avx2_fma_division(Eigen::ArrayXXd& columns, Eigen::Index n, double G, double softening2);
 
