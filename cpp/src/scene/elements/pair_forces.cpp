@@ -282,16 +282,16 @@ __attribute__((target("avx512f,avx2,fma"))) inline Body8 body(const PairColumns&
 // y = reciprocal_root(r²) (within 3 u of 1/√r², as on the AVX2 path), and g d added to body i's sums. Twice as fast as
 // the division at N = 1000 (docs/perf/scenes.md): the divider takes as long for eight lanes as for four. An r² of zero
 // or infinity (coincident bodies without softening, a position at infinity) gives a NaN force, as the division's g d
-// does (∞ · 0, 0 · ∞).
+// does (∞ · 0, 0 · ∞). In a last block, lanes off (lanes8) have a g of zero (their r² may be zero: y NaN there).
 struct Pairs8 {
   __m512d dx, dy, dz, g;
 };
 __attribute__((target("avx512f,avx2,fma"))) inline Pairs8 eight_pairs(const Block8& b, const Body8& i, __m512d eps2,
-                                                                        Sums8& s) {
+                                                                        Sums8& s, __mmask8 lanes = 0xFF) {
   const __m512d dx = _mm512_sub_pd(b.x, i.x), dy = _mm512_sub_pd(b.y, i.y), dz = _mm512_sub_pd(b.z, i.z);
   const __m512d r2 = _mm512_fmadd_pd(dz, dz, _mm512_fmadd_pd(dy, dy, _mm512_fmadd_pd(dx, dx, eps2)));
   const __m512d y = reciprocal_root(r2);
-  const __m512d g = _mm512_mul_pd(_mm512_mul_pd(i.Gm, b.mass), _mm512_mul_pd(y, _mm512_mul_pd(y, y)));
+  const __m512d g = _mm512_maskz_mul_pd(lanes, _mm512_mul_pd(i.Gm, b.mass), _mm512_mul_pd(y, _mm512_mul_pd(y, y)));
   s.x = _mm512_fmadd_pd(g, dx, s.x), s.y = _mm512_fmadd_pd(g, dy, s.y), s.z = _mm512_fmadd_pd(g, dz, s.z);
   return {dx, dy, dz, g};
 }
@@ -311,22 +311,13 @@ __attribute__((target("avx512f,avx2,fma"))) inline void subtract(const PairColum
 }
 
 // The lanes of a last block of count < 8 bodies j … j + count − 1 (those from count on off: their positions, masses
-// and forces neither read nor written, their g zero), and the block's pairs as eight_pairs and subtract
+// and forces neither read nor written), its load and its subtract
 __attribute__((target("avx512f,avx2,fma"))) inline __mmask8 lanes8(Eigen::Index count) {
   return static_cast<__mmask8>((1u << count) - 1u);
 }
 __attribute__((target("avx512f,avx2,fma"))) inline Block8 block(const PairColumns& c, Eigen::Index j, __mmask8 lanes) {
   return {_mm512_maskz_loadu_pd(lanes, c.x + j), _mm512_maskz_loadu_pd(lanes, c.y + j),
           _mm512_maskz_loadu_pd(lanes, c.z + j), _mm512_maskz_loadu_pd(lanes, c.mass + j)};
-}
-__attribute__((target("avx512f,avx2,fma"))) inline Pairs8 last_eight_pairs(const Block8& b, const Body8& i,
-                                                                             __m512d eps2, __mmask8 lanes, Sums8& s) {
-  const __m512d dx = _mm512_sub_pd(b.x, i.x), dy = _mm512_sub_pd(b.y, i.y), dz = _mm512_sub_pd(b.z, i.z);
-  const __m512d r2 = _mm512_fmadd_pd(dz, dz, _mm512_fmadd_pd(dy, dy, _mm512_fmadd_pd(dx, dx, eps2)));
-  const __m512d y = reciprocal_root(r2);  // NaN in an off lane whose r² is zero: its g is zero all the same
-  const __m512d g = _mm512_maskz_mul_pd(lanes, _mm512_mul_pd(i.Gm, b.mass), _mm512_mul_pd(y, _mm512_mul_pd(y, y)));
-  s.x = _mm512_fmadd_pd(g, dx, s.x), s.y = _mm512_fmadd_pd(g, dy, s.y), s.z = _mm512_fmadd_pd(g, dz, s.z);
-  return {dx, dy, dz, g};
 }
 __attribute__((target("avx512f,avx2,fma"))) inline void subtract(const PairColumns& c, Eigen::Index j, const Pairs8& p,
                                                                    const Pairs8& q, __mmask8 lanes) {
@@ -431,11 +422,6 @@ void add_pair_forces_avx2_fma_division(Eigen::ArrayXXd& columns, Eigen::Index n,
   avx2_pair_forces<strength_by_division>(columns, n, G, softening2);
 }
 
-// body i's sums over eight lanes folded onto four
-__attribute__((target("avx512f,avx2,fma"))) inline Sums4 halves_sum(const Sums8& s) {
-  return {halves_sum(s.x), halves_sum(s.y), halves_sum(s.z)};
-}
-
 // f_i += its lane sums s and its pair summed apart, t
 __attribute__((target("avx512f,avx2,fma"))) inline void add_sums(const PairColumns& c, Eigen::Index i, const Sums8& s,
                                                                    double t_x, double t_y, double t_z) {
@@ -466,40 +452,26 @@ __attribute__((target("avx512f,avx2,fma"))) inline void two_bodies(const PairCol
   if (j < n) {
     const __mmask8 lanes = lanes8(n - j);
     const Block8 bodies_j = block(c, j, lanes);
-    const Pairs8 p = last_eight_pairs(bodies_j, a, eps2, lanes, s_a);
-    const Pairs8 q = last_eight_pairs(bodies_j, b, eps2, lanes, s_b);
+    const Pairs8 p = eight_pairs(bodies_j, a, eps2, s_a, lanes);
+    const Pairs8 q = eight_pairs(bodies_j, b, eps2, s_b, lanes);
     subtract(c, j, p, q, lanes);
   }
   add_sums(c, i, s_a, t_x, t_y, t_z);
   add_sums(c, k, s_b, 0.0, 0.0, 0.0);
 }
 
-// Body i alone: its pairs with each block of eight j > i, then four by the division (where four are left), then one at
-// a time (one_pair)
-__attribute__((target("avx512f,avx2,fma"))) inline void one_body(const PairColumns& c, Eigen::Index i, Eigen::Index n,
-                                                                   double G, double softening2) {
-  const __m512d eps2 = _mm512_set1_pd(softening2);
-  const Body8 a = body(c, i, G);
-  Sums8 s{_mm512_setzero_pd(), _mm512_setzero_pd(), _mm512_setzero_pd()};
-  Eigen::Index j = i + 1;
-  for (; j + 8 <= n; j += 8) subtract(c, j, eight_pairs(block(c, j), a, eps2, s));
-  Sums4 s4 = halves_sum(s);
-  if (j + 4 <= n) {
-    subtract(c, j, four_pairs<strength_by_division>(block4(c, j), body4(c, i, G), _mm256_set1_pd(softening2), s4));
-    j += 4;
-  }
-  double t_x = lane_sum(s4.x), t_y = lane_sum(s4.y), t_z = lane_sum(s4.z);
-  for (; j < n; ++j) one_pair(c, i, j, G * c.mass[i], softening2, t_x, t_y, t_z);
-  c.f_x[i] += t_x, c.f_y[i] += t_y, c.f_z[i] += t_z;
-}
-
-// The bodies two at a time (two_bodies), the last one alone where their count n − 1 of those with pairs is odd.
+// The bodies two at a time (two_bodies); where their count n − 1 of those with pairs is odd, the last one's single
+// pair alone (one_pair).
 __attribute__((target("avx512f,avx2,fma"))) void add_pair_forces_avx512(Eigen::ArrayXXd& columns, Eigen::Index n,
                                                                         double G, double softening2) {
   const PairColumns c(columns);
   Eigen::Index i = 0;
   for (; i + 2 < n; i += 2) two_bodies(c, i, n, G, softening2);
-  if (i + 1 < n) one_body(c, i, n, G, softening2);
+  if (i + 1 < n) {  // the last pair (n − 2, n − 1) alone
+    double t_x = 0.0, t_y = 0.0, t_z = 0.0;
+    one_pair(c, i, i + 1, G * c.mass[i], softening2, t_x, t_y, t_z);
+    c.f_x[i] += t_x, c.f_y[i] += t_y, c.f_z[i] += t_z;
+  }
 }
 
 // The terms of each i eight pairs at a time, four by the division and four by the reciprocal square root (as the
