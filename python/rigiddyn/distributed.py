@@ -280,7 +280,11 @@ class _Chunks:
                                           pure=False, retries=0): (a, b) for a, b in pending}
             errors, refused = dict[tuple[int, int], BaseException](), dict[tuple[int, int], BaseException]()
             try:
-                for future, value in distributed.as_completed(futures, with_results=True, raise_errors=False):
+                # on this client's own loop: as_completed's default is the default client's, which is another
+                # client's where one was opened later, and its gathers there stalled 5 s a round or hung
+                finished = distributed.as_completed(futures, loop=self.client.loop, with_results=True,
+                                                    raise_errors=False)
+                for future, value in finished:
                     chunk = futures.pop(future)  # released: the worker frees the piece, now held here
                     if future.status == "finished":
                         self.done[chunk] = value

@@ -250,6 +250,29 @@ def test_map_samples_in_sample_order(client: Any) -> None:
 
 
 @needs_dask
+def test_map_samples_on_the_given_client_while_another_is_the_default(client: Any,
+                                                                     monkeypatch: pytest.MonkeyPatch) -> None:
+    # A Client opened after the caller's becomes Dask's default, on its own event loop. The results are gathered on
+    # the given client's loop (as_completed's default, the default client's loop, stalled each round by 5 s here, and
+    # can hang): every as_completed is asked for the given client's loop, and the pieces are complete and in order.
+    loops = []
+    as_completed = distributed.as_completed
+
+    def recording(*args: Any, **kwargs: Any) -> Any:
+        loops.append(kwargs.get("loop"))
+        return as_completed(*args, **kwargs)
+
+    monkeypatch.setattr(distributed, "as_completed", recording)
+    function = functools.partial(_draws, 2027)
+    local = function(0, 7)
+    with distributed.Client(client.scheduler.address) as other:
+        assert distributed.default_client() is other and other.loop is not client.loop
+        values, ints = rd.map_samples(function, 7, client=client, chunk_size=2, progress=False)
+    assert values.tobytes() == local[0].tobytes() and ints == local[1]
+    assert loops and all(loop is client.loop for loop in loops)
+
+
+@needs_dask
 def test_measure_task_overhead(client: Any) -> None:
     overhead = rd.measure_task_overhead(client, tasks=10)
     assert math.isfinite(overhead) and overhead > 0.0
