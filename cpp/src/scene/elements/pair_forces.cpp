@@ -422,42 +422,47 @@ void add_pair_forces_avx2_fma_division(Eigen::ArrayXXd& columns, Eigen::Index n,
   avx2_pair_forces<strength_by_division>(columns, n, G, softening2);
 }
 
-// f_i += its lane sums s and its pair summed apart, t
-__attribute__((target("avx512f,avx2,fma"))) inline void add_sums(const PairColumns& c, Eigen::Index i, const Sums8& s,
-                                                                   double t_x, double t_y, double t_z) {
-  c.f_x[i] += lane_sum(halves_sum(s.x)) + t_x;
-  c.f_y[i] += lane_sum(halves_sum(s.y)) + t_y;
-  c.f_z[i] += lane_sum(halves_sum(s.z)) + t_z;
+// f_i += its lane sums s
+__attribute__((target("avx512f,avx2,fma"))) inline void add_sums(const PairColumns& c, Eigen::Index i, const Sums8& s) {
+  c.f_x[i] += lane_sum(halves_sum(s.x));
+  c.f_y[i] += lane_sum(halves_sum(s.y));
+  c.f_z[i] += lane_sum(halves_sum(s.z));
 }
 
-// The bodies i and k = i + 1 together: their pair one_pair, then their pairs with each block of eight j > k
-// (eight_pairs) and with a last block of fewer (its lanes beyond n off), each block loaded and f_j stored once for
-// both. Measured on a Xeon with AVX-512 (Ice Lake), one core, against a body at a time (its last pairs four by the
-// division and one at a time), both built side by side in one process: 1.00-1.12x the time at n = 24, 0.99-1.01 at
-// 50, 0.85-0.90 at 100, 0.69-0.70 at 1000 (docs/perf/scenes.md).
+// The bodies i and k = i + 1 together: their pairs with each block of eight j ≥ k (eight_pairs) and with a last block
+// of fewer (its lanes beyond n off), each block loaded and f_j stored once for both; the first block holds their pair
+// (i, k) in its lane 0, off for k (its pair with itself: g zero). Measured on a Xeon with AVX-512 (Ice Lake), one
+// core, against a body at a time (its last pairs four by the division and one at a time), both built side by side
+// in one process: 1.00-1.12x the time at n = 24, 0.99-1.01 at 50, 0.85-0.90 at 100, 0.69-0.70 at 1000; their pair
+// in the first block, against it alone in scalar operations (one_pair) before the blocks: 0.88-0.89x at n = 24,
+// 0.93-0.94 at 50, 0.96-0.97 at 100, 1.00-1.01 at 1000 (docs/perf/scenes.md).
 __attribute__((target("avx512f,avx2,fma"))) inline void two_bodies(const PairColumns& c, Eigen::Index i, Eigen::Index n,
                                                                      double G, double softening2) {
   const Eigen::Index k = i + 1;
   const __m512d eps2 = _mm512_set1_pd(softening2);
-  double t_x = 0.0, t_y = 0.0, t_z = 0.0;
-  one_pair(c, i, k, G * c.mass[i], softening2, t_x, t_y, t_z);
   const Body8 a = body(c, i, G), b = body(c, k, G);
   Sums8 s_a{_mm512_setzero_pd(), _mm512_setzero_pd(), _mm512_setzero_pd()}, s_b = s_a;
-  Eigen::Index j = k + 1;
-  for (; j + 8 <= n; j += 8) {
+  const __mmask8 not_k = 0xFE;  // the first block's lanes for k
+  Eigen::Index j = k;
+  if (j + 8 <= n) {
     const Block8 bodies_j = block(c, j);
-    const Pairs8 p = eight_pairs(bodies_j, a, eps2, s_a), q = eight_pairs(bodies_j, b, eps2, s_b);
+    const Pairs8 p = eight_pairs(bodies_j, a, eps2, s_a), q = eight_pairs(bodies_j, b, eps2, s_b, not_k);
     subtract(c, j, p, q);
+    for (j += 8; j + 8 <= n; j += 8) {
+      const Block8 bodies_j = block(c, j);
+      const Pairs8 p = eight_pairs(bodies_j, a, eps2, s_a), q = eight_pairs(bodies_j, b, eps2, s_b);
+      subtract(c, j, p, q);
+    }
   }
   if (j < n) {
     const __mmask8 lanes = lanes8(n - j);
     const Block8 bodies_j = block(c, j, lanes);
     const Pairs8 p = eight_pairs(bodies_j, a, eps2, s_a, lanes);
-    const Pairs8 q = eight_pairs(bodies_j, b, eps2, s_b, lanes);
+    const Pairs8 q = eight_pairs(bodies_j, b, eps2, s_b, j == k ? lanes & not_k : lanes);
     subtract(c, j, p, q, lanes);
   }
-  add_sums(c, i, s_a, t_x, t_y, t_z);
-  add_sums(c, k, s_b, 0.0, 0.0, 0.0);
+  add_sums(c, i, s_a);
+  add_sums(c, k, s_b);
 }
 
 // The bodies two at a time (two_bodies); where their count n − 1 of those with pairs is odd, the last one's single
