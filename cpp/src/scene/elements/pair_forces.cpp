@@ -432,10 +432,11 @@ __attribute__((target("avx512f,avx2,fma"))) inline void add_sums(const PairColum
 // The bodies i and k = i + 1 together: their pairs with each block of eight j ≥ k (eight_pairs) and with a last block
 // of fewer (its lanes beyond n off), each block loaded and f_j stored once for both; the first block holds their pair
 // (i, k) in its lane 0, off for k (its pair with itself: g zero). Measured on a Xeon with AVX-512 (Ice Lake), one
-// core, against a body at a time (its last pairs four by the division and one at a time), both built side by side
-// in one process: 1.00-1.12x the time at n = 24, 0.99-1.01 at 50, 0.85-0.90 at 100, 0.69-0.70 at 1000; their pair
-// in the first block, against it alone in scalar operations (one_pair) before the blocks: 0.88-0.89x at n = 24,
-// 0.93-0.94 at 50, 0.96-0.97 at 100, 1.00-1.01 at 1000 (docs/perf/scenes.md).
+// core, both versions built side by side in one process (bench/python/pair_sum_side_by_side.py, which so compares
+// any two revisions): against a body at a time (its last pairs four by the division and one at a time), 1.00-1.12x
+// the time at n = 24, 0.99-1.01 at 50, 0.85-0.90 at 100, 0.69-0.70 at 1000; their pair in the first block, against
+// it alone in scalar operations (one_pair) before the blocks, 0.88-0.89x at n = 24, 0.93-0.94 at 50, 0.96-0.97 at
+// 100, 1.00-1.01 at 1000 (docs/perf/scenes.md).
 __attribute__((target("avx512f,avx2,fma"))) inline void two_bodies(const PairColumns& c, Eigen::Index i, Eigen::Index n,
                                                                      double G, double softening2) {
   const Eigen::Index k = i + 1;
