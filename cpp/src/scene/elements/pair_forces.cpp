@@ -429,25 +429,26 @@ __attribute__((target("avx512f,avx2,fma"))) inline void add_sums(const PairColum
   c.f_z[i] += lane_sum(halves_sum(s.z));
 }
 
-// The bodies i and k = i + 1 together: their pairs with each block of eight j ≥ k (eight_pairs) and with a last block
-// of fewer (its lanes beyond n off), each block loaded and f_j stored once for both; the first block holds their pair
-// (i, k) in its lane 0, off for k (its pair with itself: g zero). Measured on a Xeon with AVX-512 (Ice Lake), one
-// core, both versions built side by side in one process (bench/python/pair_sum_side_by_side.py, which so compares
-// any two revisions): against a body at a time (its last pairs four by the division and one at a time), 1.00-1.12x
-// the time at n = 24, 0.99-1.01 at 50, 0.85-0.90 at 100, 0.69-0.70 at 1000; their pair in the first block, against
-// it alone in scalar operations (one_pair) before the blocks, 0.88-0.89x at n = 24, 0.93-0.94 at 50, 0.96-0.97 at
-// 100, 1.00-1.01 at 1000 (docs/perf/scenes.md).
+// The bodies i and k = i + 1 together: their pairs with each block of eight bodies from i on (eight_pairs) and with a
+// last block of fewer (its lanes beyond n off), each block loaded and f_j stored once for both. The first block starts
+// at i itself: its lane 0 (i, i) is off for i, and its lanes 0 and 1 for k ((k, i) is i's lane 1, (k, k) nothing).
+// Measured on a Xeon with AVX-512 (Ice Lake), one core, both versions built side by side in one process
+// (bench/python/pair_sum_side_by_side.py, which so compares any two revisions): against a body at a time (its last
+// pairs four by the division and one at a time), 1.00-1.12x the time at n = 24, 0.99-1.01 at 50, 0.85-0.90 at 100,
+// 0.69-0.70 at 1000; the pair (i, k) in the first block, against it alone in scalar operations (one_pair) before the
+// blocks from k + 1, 0.82-0.86x at n = 24, 0.92 at 50, 0.95 at 100, 0.98 at 300, 0.99 at 1000 (docs/perf/scenes.md;
+// the same sums, bit for bit, as blocks from k, which measured 1.10-1.11x this time at n = 300).
 __attribute__((target("avx512f,avx2,fma"))) inline void two_bodies(const PairColumns& c, Eigen::Index i, Eigen::Index n,
                                                                      double G, double softening2) {
   const Eigen::Index k = i + 1;
   const __m512d eps2 = _mm512_set1_pd(softening2);
   const Body8 a = body(c, i, G), b = body(c, k, G);
   Sums8 s_a{_mm512_setzero_pd(), _mm512_setzero_pd(), _mm512_setzero_pd()}, s_b = s_a;
-  const __mmask8 not_k = 0xFE;  // the first block's lanes for k
-  Eigen::Index j = k;
+  const __mmask8 first_a = 0xFE, first_b = 0xFC;  // the first block's lanes: i's (i, i) off; k's (k, i), (k, k) off
+  Eigen::Index j = i;
   if (j + 8 <= n) {
     const Block8 bodies_j = block(c, j);
-    const Pairs8 p = eight_pairs(bodies_j, a, eps2, s_a), q = eight_pairs(bodies_j, b, eps2, s_b, not_k);
+    const Pairs8 p = eight_pairs(bodies_j, a, eps2, s_a, first_a), q = eight_pairs(bodies_j, b, eps2, s_b, first_b);
     subtract(c, j, p, q);
     for (j += 8; j + 8 <= n; j += 8) {
       const Block8 bodies_j = block(c, j);
@@ -458,8 +459,8 @@ __attribute__((target("avx512f,avx2,fma"))) inline void two_bodies(const PairCol
   if (j < n) {
     const __mmask8 lanes = lanes8(n - j);
     const Block8 bodies_j = block(c, j, lanes);
-    const Pairs8 p = eight_pairs(bodies_j, a, eps2, s_a, lanes);
-    const Pairs8 q = eight_pairs(bodies_j, b, eps2, s_b, j == k ? lanes & not_k : lanes);
+    const Pairs8 p = eight_pairs(bodies_j, a, eps2, s_a, j == i ? lanes & first_a : lanes);
+    const Pairs8 q = eight_pairs(bodies_j, b, eps2, s_b, j == i ? lanes & first_b : lanes);
     subtract(c, j, p, q, lanes);
   }
   add_sums(c, i, s_a);
