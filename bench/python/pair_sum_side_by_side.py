@@ -10,8 +10,8 @@ results differ. Run it pinned to one core for steady figures:
 
 NAME: add_pair_forces_avx512 (default), add_pair_forces_avx2_fma_mixed, add_pair_forces_avx2_fma_division,
 add_pair_forces_portable, pair_potential_avx512, pair_potential_avx2_fma, pair_potential_portable; both revisions
-must have it. A kernel whose instructions the CPU lacks (AVX-512F, AVX2 with FMA) is refused. Needs git and g++ (not a
-dependency of the tests: ctest does not run this).
+must have it. A kernel whose instructions the CPU lacks (AVX-512F, AVX2 with FMA) is refused. Needs git and g++;
+tests/python/test_pair_sum_side_by_side.py runs it once, on the portable kernel.
 """
 
 import argparse
