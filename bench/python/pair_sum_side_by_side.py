@@ -43,9 +43,9 @@ def cpu_flags():
         return []
 
 
-def check_runs_here(kernel):
-    """Raises SystemExit where the CPU lacks the kernel's instructions."""
-    flags = cpu_flags()
+def check_runs_here(kernel, flags=None):
+    """Raises SystemExit where the CPU (its feature flags: this one's when None) lacks the kernel's instructions."""
+    flags = cpu_flags() if flags is None else flags
     needs = ["avx512f"] if "avx512" in kernel else ["avx2", "fma"] if "avx2" in kernel else []
     missing = [f for f in needs if f not in flags]
     if missing:
@@ -88,6 +88,8 @@ def main():
     parser.add_argument("--kernel", default=KERNELS[0], choices=KERNELS)
     parser.add_argument("--rounds", type=int, default=25, help="alternated rounds per n (default 25)")
     args = parser.parse_args()
+    if args.rounds < 1:
+        parser.error(f"--rounds: expected an integer >= 1, got {args.rounds}")
     check_runs_here(args.kernel)
     with tempfile.TemporaryDirectory() as tmp:
         folder = Path(tmp)

@@ -36,7 +36,22 @@ def test_the_kernel_of_two_revisions_runs_side_by_side() -> None:
             assert float(difference) == 0.0, f"n = {n}: {difference}"
 
 
-def test_a_kernel_the_cpu_lacks_or_a_bad_name_is_refused() -> None:
-    run = subprocess.run([sys.executable, str(SCRIPT), "HEAD", "--kernel", "no_such_kernel"], capture_output=True,
-                         text=True, timeout=60)
-    assert run.returncode != 0 and "no_such_kernel" in run.stderr
+def test_an_unknown_kernel_or_no_round_is_refused_naming_the_value() -> None:
+    for arguments, named in ((["--kernel", "no_such_kernel"], "no_such_kernel"), (["--rounds", "0"], "got 0")):
+        run = subprocess.run([sys.executable, str(SCRIPT), "HEAD", *arguments], capture_output=True, text=True,
+                             timeout=60)
+        assert run.returncode != 0 and named in run.stderr, run.stderr
+
+
+def test_a_kernel_whose_instructions_the_cpu_lacks_is_refused() -> None:
+    sys.path.insert(0, str(SCRIPT.parent))
+    try:
+        import pair_sum_side_by_side as tool
+    finally:
+        sys.path.remove(str(SCRIPT.parent))
+    with pytest.raises(SystemExit, match="lacks avx512f"):
+        tool.check_runs_here("add_pair_forces_avx512", flags=["avx2", "fma"])
+    with pytest.raises(SystemExit, match="lacks avx2, fma"):
+        tool.check_runs_here("pair_potential_avx2_fma", flags=[])
+    tool.check_runs_here("add_pair_forces_portable", flags=[])  # needs nothing
+    tool.check_runs_here("add_pair_forces_avx512", flags=["avx512f"])
