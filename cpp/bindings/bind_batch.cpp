@@ -634,7 +634,8 @@ CommonArgs as_common(std::int64_t steps, py::handle record_every, py::handle t0,
 
 // The values per record of a batch run with options `o` and its error estimate (`error`), for `doubles_per_record`
 // values of its own: its two coarse batches, at most as many values a record (they hold the kinematics alone) and
-// floor(steps / m) + 1 records each (m = lcm(record_every, 4): coarse_options), and the estimate's own, at most 16
+// at most floor(steps / m0) + 1 records each (m0 = lcm(record_every, 4): coarse_options; counted so, as the scene's
+// values below, though a long run's are fewer: CommonRecords), and the estimate's own, at most 16
 // float64s' worth per record (7 values and a verdict: a 32-byte std::string, then a reference and a bool in Python; a
 // scene's 4 more per extra body are within what its coarse batches are counted for: 20 values per body, in at least a
 // quarter of the records each).

@@ -832,8 +832,9 @@ def _check_memory(n: int, steps: int, record_every: int, model: Any, error: bool
     """ValueError naming n, before any draw, when N samples would not fit in the available memory: each
     sample's records (as simulate_batch counts them: step 0, every record_every-th step and the last;
     _SCENE_RECORD_DOUBLES of a scene per record, a body's as its one-body scene's with gravity and loads; with
-    the error estimate its two coarse runs, at most as many values a record and floor(steps / m) + 1 records each
-    (m = lcm(record_every, 4)), and _ERROR_DOUBLES per record of the estimate) and what drawing it holds
+    the error estimate its two coarse runs, at most as many values a record and at most floor(steps / m) + 1
+    records each (m = lcm(record_every, 4); a long run's are fewer), and _ERROR_DOUBLES per record of the estimate)
+    and what drawing it holds
     (_SAMPLE_BYTES, and a state object per body of a scene, _STATE_BYTES)."""
     records = 1 + steps // record_every + (1 if steps % record_every else 0)
     if isinstance(model, _core.Scene):

@@ -214,6 +214,37 @@ def test_records_between_common_records_and_the_tail():
     assert np.isnan(short.error.attitude[-1, 0]) and short.error.verdict[-1].startswith("no estimate")
 
 
+def test_a_long_run_compares_at_most_max_common_records():
+    """Recording every 4th of 12 299 steps: 3 074 multiples of 4 steps, more than the 1 024 common records an
+    estimate compares after t0, so they are every 16 steps (records 0, 4, 8, ...) and the last multiple of 4 (step
+    12 296, record 3 074, 8 steps after the one before). The runs are deterministic, so at a common record the
+    estimate is, bit for bit, that of a run of 4 096 steps (1 024 multiples of 4: every 4th step common) at the same
+    record; between common records it is interpolated linearly in t."""
+    body = rd.RigidBody(1.0, [1.0, 2.0, 3.0])
+    state = rd.RigidBodyState(w_B=[0.1, 1.0, 0.1])
+    run = rd.simulate(body, state, dt=0.01, steps=4 * 3074 + 3, record_every=4)
+    long, short = run.error, rd.simulate(body, state, dt=0.01, steps=4096, record_every=4).error
+    common = np.zeros(len(long.verdict), dtype=bool)
+    common[0:3074:4] = True
+    common[3074] = True
+    assert not long.reliable[~common].any()  # a record between common records is not checked
+    assert long.reliable[common].sum() > 0.95 * common.sum()
+    assert long.verdict[1].startswith("interpolated between the reliable records")
+    for i in np.flatnonzero(common[:len(short.verdict)]):
+        assert long.verdict[i] == short.verdict[i], i
+    assert long.verdict[-1].startswith("extrapolated from the reliable record at t = 123 s")  # (step 12 296)
+    for field in ("attitude", "angular_velocity", "position", "velocity"):
+        a, b = getattr(long, field)[:, 0], getattr(short, field)[:, 0]
+        shared = np.flatnonzero(common[:len(b)])
+        np.testing.assert_array_equal(a[shared], b[shared])
+    t = run.t
+    for i in (1, 2, 3, 3071, 3073):  # records between common records j and j + 1
+        j = i - i % 4 if i < 3072 else 3072
+        k = j + 4 if j < 3072 else 3074
+        w = (t[i] - t[j]) / (t[k] - t[j])
+        assert long.attitude[i, 0] == pytest.approx((1 - w) * long.attitude[j, 0] + w * long.attitude[k, 0], rel=1e-12)
+
+
 def test_a_quantity_is_reliable_alone_where_another_fails():
     """The shipped spring chain (damped) under rk4: its total energy, no invariant there, errs as a sum of two orders
     and fails its order check at many records, while its positions and velocities err as dt^4. Judged by their own

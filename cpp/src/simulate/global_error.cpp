@@ -557,7 +557,7 @@ std::array<double, 4> state_sizes(const CommonTable& common, std::size_t j) {
 // motion's error crosses zero again and again (a pendulum's angle error at every swing), and a growth from such a
 // record measured 1000 (t_j / t_k)^4 and more on the shipped pendulum. A record's new verdict is made once per text
 // (its records share it).
-void name_exponential_growth(CommonTable& common, const double* t, std::size_t stride) {
+void name_exponential_growth(CommonTable& common, const double* t, const CommonRecords& grid) {
   const auto not_asymptotic = [](const std::string& v) { return v.rfind("not asymptotic", 0) == 0; };
   const std::vector<std::string>& texts = common.verdict.texts();
   if (std::none_of(texts.begin(), texts.end(), not_asymptotic)) return;  // no record a growth would rename
@@ -571,7 +571,7 @@ void name_exponential_growth(CommonTable& common, const double* t, std::size_t s
   std::vector<std::uint32_t> renamed(texts.size(), unmade);  // per text of the common records: its renamed text
   for (std::size_t j = 1; j < common.rows(); ++j) {
     if (past.empty()) {  // once named, the growth is not measured again
-      const double tj = t[j * stride];
+      const double tj = t[grid.answer_record(j)];
       const std::array<double, 4> sizes = state_sizes(common, j);
       for (std::size_t k = 0; k < sizes.size(); ++k) {
         if (sizes[k] > envelope[k]) envelope[k] = sizes[k];  // (NaN: not estimated, not taken)
@@ -640,7 +640,7 @@ SceneColumns scene_columns(const SceneSimulation& r) {
   return c;
 }
 
-ErrorRecords error_records(const SceneColumns& r, bool scaled, std::size_t every) {
+ErrorRecords error_records(const SceneColumns& r, bool scaled, std::size_t every, std::size_t also) {
   ErrorRecords out;
   out.n = r.n;
   out.bodies = r.bodies;
@@ -650,10 +650,15 @@ ErrorRecords error_records(const SceneColumns& r, bool scaled, std::size_t every
   const std::size_t rows = out.n * static_cast<std::size_t>(out.bodies);
   scaled = scaled && r.mass_size == rows && r.angular_momentum_O_W_size == 3 * rows;  // else |L| itself
   every = std::max<std::size_t>(every, 1);
+  // the records every `every`-th, then `also` where it lies between them
+  const auto for_each_made = [&](auto&& f) {
+    for (std::size_t i = 0; i < out.n; i += every) f(i);
+    if (also < out.n && also % every != 0) f(also);
+  };
   out.momentum.assign(out.n, nan), out.momentum_scale.assign(scaled ? out.n : 0, nan);
-  for (std::size_t i = 0; i < out.n; i += every) {
+  for_each_made([&](std::size_t i) {
     out.momentum[i] = Eigen::Map<const Eigen::Vector3d>(r.angular_momentum_W + 3 * i).norm();
-    if (!scaled) continue;
+    if (!scaled) return;
     double scale = 0.0;  // Σ |p_W × m v_W| bounded by |p_W| m |v_W|, + |H| of each body
     for (std::int64_t b = 0; b < out.bodies; ++b) {
       const std::size_t k = i * static_cast<std::size_t>(out.bodies) + static_cast<std::size_t>(b);
@@ -661,7 +666,7 @@ ErrorRecords error_records(const SceneColumns& r, bool scaled, std::size_t every
                vector3(r.angular_momentum_O_W, out, i, b).norm();
     }
     out.momentum_scale[i] = scale;
-  }
+  });
   // T − T(t0) = Σ work + Σ mass-flow energy + Σ motor work (SceneSimulation): each table's row width found once (0: a
   // table without a row per record, not summed)
   const auto width_of = [&](std::size_t size) {
@@ -674,26 +679,34 @@ ErrorRecords error_records(const SceneColumns& r, bool scaled, std::size_t every
   };
   if (r.kinetic_energy_size == out.n) {
     out.balance.assign(out.n, nan);
-    for (std::size_t i = 0; i < out.n; i += every) {
+    for_each_made([&](std::size_t i) {
       out.balance[i] = r.kinetic_energy[i] - row_sum(r.work, works, i) - row_sum(r.mass_flow_energy, flows, i) -
                        row_sum(r.motor_work, motors, i);
-    }
+    });
   }
   return out;
 }
 
 std::int64_t common_record_steps(std::int64_t record_every) { return std::lcm(record_every, std::int64_t{4}); }
 
-std::size_t common_record_stride(const SimulationOptions& answer) {
-  return static_cast<std::size_t>(common_record_steps(answer.record_every) / answer.record_every);
+CommonRecords common_records(const SimulationOptions& answer) {
+  const std::int64_t m0 = common_record_steps(answer.record_every);
+  const std::int64_t multiples = std::max<std::int64_t>(answer.steps, 0) / m0;
+  const std::int64_t k = std::max<std::int64_t>((multiples + max_common_records - 1) / max_common_records, 1);
+  CommonRecords out;
+  out.steps_between = m0 * k;
+  out.stride = static_cast<std::size_t>(out.steps_between / answer.record_every);
+  out.last = static_cast<std::size_t>(multiples * m0 / answer.record_every);
+  out.count = static_cast<std::size_t>((multiples + k - 1) / k) + 1;
+  return out;
 }
 
 SimulationOptions coarse_options(const SimulationOptions& answer, int factor) {
-  const std::int64_t m = common_record_steps(answer.record_every);
+  const std::int64_t m0 = common_record_steps(answer.record_every);
   SimulationOptions o = answer;
   o.dt = answer.dt * factor;
-  o.steps = answer.steps / m * m / factor;
-  o.record_every = m / factor;
+  o.steps = answer.steps / m0 * m0 / factor;
+  o.record_every = common_records(answer).steps_between / factor;
   return o;
 }
 
@@ -703,15 +716,17 @@ GlobalErrorEstimate estimate_global_error(const ErrorRecords& h, const ErrorReco
   if (order < 1) throw_invalid("order", "an integer >= 1", order);
   GlobalErrorEstimate out;
   out.order = order, out.bodies = h.bodies;
-  const std::int64_t m = common_record_steps(answer.record_every);
-  const std::size_t stride = common_record_stride(answer);  // answer records per common record
-  // the common records the answer has: j = 0 .. last (answer record j·stride)
-  const std::size_t last = h.n == 0 ? 0 : std::min((h.n - 1) / stride, static_cast<std::size_t>(answer.steps / m));
+  const CommonRecords grid = common_records(answer);
+  const std::size_t stride = grid.stride;  // answer records per common record
+  // the common records the answer has: j = 0 .. last (answer record grid.answer_record(j))
+  std::size_t last = grid.count - 1;
+  while (last > 0 && grid.answer_record(last) >= h.n) --last;
+  const std::size_t last_i = grid.answer_record(last);  // its answer record
   const auto nb = static_cast<std::size_t>(std::max<std::int64_t>(h.bodies, 0));
   CommonTable common(h.n > 0 ? last + 1 : 0, nb, order);
   const double expected_ratio = std::ldexp(1.0, order);
   for (std::size_t j = 0; j <= last && h.n > 0; ++j) {
-    const std::size_t i = j * stride;
+    const std::size_t i = grid.answer_record(j);
     const char* problem = j >= h2.n   ? "step beyond the stability limit: the run at 2h diverged"
                           : j >= h4.n ? "step beyond the stability limit: the run at 4h diverged"
                                       : nullptr;
@@ -722,33 +737,34 @@ GlobalErrorEstimate estimate_global_error(const ErrorRecords& h, const ErrorReco
     }
     if (!opaque.empty()) common.reliable_quantities[j] = 0;
   }
-  name_exponential_growth(common, h.t, stride);
+  name_exponential_growth(common, h.t, grid);
   const CommonVerdicts verdicts(std::move(common.verdict), out.verdict);
   out.verdict.reserve(h.n);
   const std::uint32_t between = out.verdict.add_text("interpolated between the reliable records before and after it");
   std::uint32_t after = 0, none = 0;  // the verdicts after the last common record and without an estimate
-  if (last > 0 && h.n - 1 > last * stride) {
-    after = out.verdict.add_text("extrapolated from the reliable record at t = " + seconds(h.t[last * stride]));
+  if (last > 0 && h.n - 1 > last_i) {
+    after = out.verdict.add_text("extrapolated from the reliable record at t = " + seconds(h.t[last_i]));
   } else if (h.n > 1 && last == 0) {
-    none = out.verdict.add_text("no estimate: fewer than " + std::to_string(m) +
+    none = out.verdict.add_text("no estimate: fewer than " + std::to_string(common_record_steps(answer.record_every)) +
                                 " steps (the 2h and 4h runs have a state only every lcm(record_every, 4) steps)");
   }
   std::vector<RowSource> sources(h.n);
   out.reliable_quantities.assign(h.n, 0);  // a record between or after the common ones is not checked
   for (std::size_t i = 0; i < h.n; ++i) {
-    const std::size_t j = i / stride;
+    // the common record at i (the last one where i is last_i), else the one before i
+    const std::size_t j = i == last_i ? last : i / stride;
     RowSource& s = sources[i];
-    if (i % stride == 0 && j <= last) {
+    if (i == grid.answer_record(j) && j <= last) {
       s = {RowSource::common, j, j, 1.0, 0.0};
       out.verdict.push_back_text(verdicts.text[j]);
       out.reliable_quantities[i] = common.reliable_quantities[j];
-    } else if (j < last) {  // between common records j and j + 1
-      const double tj = h.t[j * stride], tk = h.t[(j + 1) * stride];
+    } else if (i < last_i) {  // between common records j and j + 1
+      const double tj = h.t[grid.answer_record(j)], tk = h.t[grid.answer_record(j + 1)];
       const double w = (h.t[i] - tj) / (tk - tj);
       s = {RowSource::blend, j, j + 1, 1.0 - w, w};
       out.verdict.push_back_text(verdicts.first_unreliable_or(j, j + 1, between));
     } else if (last > 0) {  // after the last common record: linear growth from t0
-      const double t0 = h.t[0], tc = h.t[last * stride];
+      const double t0 = h.t[0], tc = h.t[last_i];
       const double w = (h.t[i] - t0) / (tc - t0);
       s = {RowSource::scaled, last, last, 1.0 - w, w};
       out.verdict.push_back_text(verdicts.first_unreliable_or(last, last, after));

@@ -19,12 +19,14 @@
 // Distances: the attitude's is the geodesic angle of q_2h⁻¹ q_h (so3/angular_distance.hpp, valid to leading
 // order), the other quantities' the norm of their difference.
 //
-// Which records: the 2h and 4h runs record only at steps that are multiples of m = lcm(record_every, 4) (they
-// have no state at the others). At those "common" records the estimate is computed and checked; at the records
-// between two of them it is interpolated linearly in t, and after the last of them (steps not a multiple of m)
+// Which records: the 2h and 4h runs have a state only at steps that are multiples of m0 = lcm(record_every, 4), and
+// record at most max_common_records of them after t0 (CommonRecords: every m0 steps in all but long runs recorded
+// densely, and the last). At those "common" records the estimate is computed and checked; at the records
+// between two of them it is interpolated linearly in t, and after the last of them (steps not a multiple of m0)
 // extrapolated as ε(t) = ε(t_c) (t − t0) / (t_c − t0) (linear growth). Neither is checked, so neither is called
 // reliable: their verdict says "interpolated ..." or "extrapolated ..." between reliable records, else the
-// reason of the record that is not. With record_every a multiple of 4 every record is common.
+// reason of the record that is not. With record_every a multiple of 4 every record is common, up to
+// max_common_records of them.
 //
 // A force the core cannot see into (a PythonForce, which may switch inside a step) is refused the verdict
 // "reliable": the nested grids h, 2h, 4h can put a switch in the same step of all three runs, whose error then
@@ -56,7 +58,7 @@ struct ErrorRecords {
   const double* v_W = nullptr;           // (n, nb, 3) [m/s]
   const double* energy = nullptr;        // (n,) total energy [J]
   const double* energy_scale = nullptr;  // (n,) the kinetic energy T (the round-off scales with |T| + |V|) [J]
-  // momentum, momentum_scale and balance: NaN between the records error_records made them at (its `every`)
+  // momentum, momentum_scale and balance: NaN between the records error_records made them at (its `every`, `also`)
   std::vector<double> momentum;          // (n,) |L| of the run [kg m²/s]
   // (n,) the size the round-off of |L| scales with [kg m²/s]: Σ over the bodies of |p_W| m |v_W| + |H| (a scene's
   // L may cancel to 0 while its terms do not); empty: |L| itself
@@ -88,11 +90,13 @@ SceneColumns scene_columns(const SceneSimulation& r);
 // The records of a body's run (|L| = angular_momentum_norm) and of a scene's (|L| = |angular_momentum_W|); a scene's
 // with the size of |L|'s round-off (momentum_scale) unless `scaled` is false (the runs at 2h and 4h, whose own
 // round-off the estimate does not read), and its columns made of several (momentum, momentum_scale, balance) at every
-// `every`-th record alone (NaN between; the records an estimate compares: answer_records).
+// `every`-th record and the record `also` alone (NaN between; the records an estimate compares: answer_records).
 ErrorRecords error_records(const Trajectory& r);
-ErrorRecords error_records(const SceneColumns& r, bool scaled = true, std::size_t every = 1);
-inline ErrorRecords error_records(const SceneSimulation& r, bool scaled = true, std::size_t every = 1) {
-  return error_records(scene_columns(r), scaled, every);
+ErrorRecords error_records(const SceneColumns& r, bool scaled = true, std::size_t every = 1,
+                           std::size_t also = static_cast<std::size_t>(-1));
+inline ErrorRecords error_records(const SceneSimulation& r, bool scaled = true, std::size_t every = 1,
+                                  std::size_t also = static_cast<std::size_t>(-1)) {
+  return error_records(scene_columns(r), scaled, every, also);
 }
 
 // The quantities an estimate gives (the fields of GlobalErrorEstimate, in their order); a tolerance bounds one of
@@ -138,12 +142,31 @@ constexpr std::uint8_t measure_bit(ErrorMeasure measure) {
 }
 inline constexpr std::uint8_t every_measure = 0x3F;
 
-// The number of steps between two records where the answer, 2h and 4h runs all have a state:
-// m = lcm(record_every, 4).
+// The steps of the answer between two records that the answer, 2h and 4h runs can all have: lcm(record_every, 4).
 std::int64_t common_record_steps(std::int64_t record_every);
 
-// The answer's records between two common records: m / record_every.
-std::size_t common_record_stride(const SimulationOptions& answer);
+// The most common records an estimate compares after t0: where the run has more multiples of
+// common_record_steps, its common records are spaced further apart (CommonRecords). Each common record costs the
+// coarse runs two records and the estimate a comparison, together ~3.5 rk4 steps of a free body (a coarse record
+// ~390 instructions, a comparison ~940, a step ~490: callgrind, docs/perf/scenes.md §4.16), where the coarse runs take
+// 0.75 m0 steps between two of them (3 for m0 = 4); the records between are interpolated, as are those of a run
+// recording every step, where the error varies smoothly. Beyond 1024, a longer run adds steps to the coarse runs and
+// no comparison.
+inline constexpr std::int64_t max_common_records = 1024;
+
+// The records where the answer run and its runs at 2h and 4h all have a state ("common" records), where the estimate
+// is computed and checked: t0, every `steps_between` steps (m0 k, m0 = common_record_steps(record_every), k the
+// fewest that leave at most max_common_records after t0: 1 in all but long runs recorded densely), and the last
+// multiple of m0 within the run (when k does not divide the run's multiples of m0). The answer's common record j is
+// its record answer_record(j).
+struct CommonRecords {
+  std::int64_t steps_between = 4;
+  std::size_t stride = 1;  // the answer's records between two common records: steps_between / record_every
+  std::size_t last = 0;    // the answer's record at the last common record: its step floor(steps / m0) m0
+  std::size_t count = 1;   // the common records, t0's included
+  std::size_t answer_record(std::size_t j) const { return std::min(j * stride, last); }
+};
+CommonRecords common_records(const SimulationOptions& answer);
 
 // The records of the answer run as an estimate of order `order` reads them: a scene's made of several columns at its
 // common records alone (error_records' `every`), where the estimate compares the runs; every record for the round-off
@@ -151,11 +174,14 @@ std::size_t common_record_stride(const SimulationOptions& answer);
 inline ErrorRecords answer_records(const Trajectory& r, const SimulationOptions&, int) { return error_records(r); }
 template <class Columns>  // SceneSimulation or SceneColumns
 ErrorRecords answer_records(const Columns& r, const SimulationOptions& answer, int order) {
-  return error_records(r, true, order == 0 ? 1 : common_record_stride(answer));
+  if (order == 0) return error_records(r);
+  const CommonRecords common = common_records(answer);
+  return error_records(r, true, common.stride, common.last);
 }
 
-// The options of the run at factor·h (factor 2 or 4) that records at the common records of `answer`:
-// dt·factor, steps floor(steps / m)·m / factor, record_every m / factor (m = common_record_steps).
+// The options of the run at factor·h (factor 2 or 4) that records at the common records of `answer`: dt·factor,
+// steps floor(steps / m0)·m0 / factor (its last step the last common record), record_every m / factor
+// (m0 = common_record_steps, m = common_records' steps_between).
 SimulationOptions coarse_options(const SimulationOptions& answer, int factor);
 
 // The estimate from the three runs (coarse[0] at 2h, coarse[1] at 4h, made with coarse_options) of a method of

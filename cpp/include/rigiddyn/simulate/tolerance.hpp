@@ -557,8 +557,13 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
   std::optional<Records> quarter;  // that run, while it may serve as the final run's 4h run
   SimulationOptions quarter_options = base;
   const std::int64_t every = m / 4;  // the final run's common records, every m of its steps
-  quarter_options.method = chosen.method, quarter_options.record_every = every;
+  quarter_options.method = chosen.method;
   quarter_options.steps = steps_for(T, 4.0 * choice.dt, on_grid(common_record_steps(every), request.grid_steps));
+  {  // at the common records of the final run of 4x its steps (a long run's are further apart than m: CommonRecords)
+    SimulationOptions final_run = base;
+    final_run.steps = 4 * quarter_options.steps;
+    quarter_options.record_every = common_records(final_run).steps_between / 4;
+  }
   // (a grid's steps may round it up to the final run's: then it is no cheaper pilot, and none runs)
   if (chosen.order > 0 && choice.steps / 4 >= 16 && 2 * quarter_options.steps <= choice.steps) {
     SimulationOptions& o = quarter_options;
