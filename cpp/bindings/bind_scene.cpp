@@ -31,6 +31,7 @@
 #include "rigiddyn/scene/compile.hpp"
 #include "rigiddyn/scene/control_laws.hpp"
 #include "rigiddyn/scene/controller.hpp"
+#include "rigiddyn/scene/method_twins.hpp"
 #include "rigiddyn/scene/one_body_scene.hpp"
 #include "rigiddyn/scene/scene_order.hpp"
 #include "rigiddyn/scene/simulate_scene.hpp"
@@ -1137,7 +1138,7 @@ py::object simulate_scene_to_tolerance(py::handle model, py::handle method, cons
       if (fixed) throw;  // the method asked for: its refusal is the answer
       continue;          // a method the scene does not take
     }
-    candidates.push_back({m, scene_order(*compiled.back().compiled)});
+    candidates.push_back({m, scene_order(*compiled.back().compiled), plain_twin(m, given.scene.bodies)});
   }
   PythonMonitor monitor(progress);
   if (monitor.needed()) base.monitor = [&monitor](std::int64_t steps_done) { return monitor(steps_done); };

@@ -5326,7 +5326,8 @@ class ToleranceChoice:
     pilots : tuple of dict
         One per candidate: method, order, dt, horizon, steps, error, constant (C), seconds_per_step, planned_steps,
         planned_seconds and verdict ('used', or why not: pruned by order, not piloted because another method is exact
-        on the scene, not asymptotic, ...); the figures a pilot did not reach are NaN (a candidate pruned or not piloted
+        on the scene or because it takes the same steps as another candidate (rkmk4 as rk4 and exact_flow_kick as
+        splitting_dlm where no body turns in 3D), not asymptotic, ...); the figures a pilot did not reach are NaN (a candidate pruned or not piloted
         has no error, constant or seconds_per_step).
     pilot_seconds, run_seconds : float
         Wall time of the pilots, and of the final run(s) with their estimates [s].
@@ -6221,7 +6222,10 @@ class GlobalError:
     those records; between them it is interpolated linearly in t, and after the last of them (steps not a multiple of
     m) grown linearly in t from t0. Those records are not checked, so their verdict says "interpolated ..." or
     "extrapolated ..." rather than "reliable": pass a record_every and a steps that are multiples of 4 to have every
-    record checked. A run of fewer than m steps has no estimate (NaN, with a verdict saying so).
+    record checked. A run of fewer than m steps has no estimate (NaN, with a verdict saying so). At most 1024 records
+    after t0 are checked: a longer run's checked records are every k m steps (k the fewest that leave 1024) and its last
+    multiple of m, the records between interpolated (each checked record costs the 2dt and 4dt runs a record each and
+    the estimate a comparison, ~4 rk4 steps of a free body; the error between varies smoothly).
     
     A scene with a PythonForce is never called reliable (verdict "not verified: ..."): a force that switches inside a
     step (an `if t > t_s`) costs every method its order there, and the runs at dt, 2dt and 4dt can take the switch in
@@ -12038,7 +12042,7 @@ def simulate(model: Particle | PlanarBody | RigidBody | PivotedBody | PivotedPla
         half the tolerance is run with its global error estimate as the certificate, refined while that fails (at
         most three times; see ToleranceChoice). The horizon is `duration` (steps depend on dt: steps is refused);
         record_every counts steps of the chosen dt; steps is a multiple of lcm(record_every, 4), so every record is
-        checked. Where the loads switch inside the horizon, every run's 4 dt ends at the switch times when a grid of at
+        checked (up to 1024 after t0, see GlobalError). Where the loads switch inside the horizon, every run's 4 dt ends at the switch times when a grid of at
         most 256 steps holds them; elsewhere a switch splits a step of the estimate's coarse runs, and the certificate
         takes no record whose order check failed.
         result.choice says what was chosen and why. A scene with a PythonForce is refused (ToleranceError): its

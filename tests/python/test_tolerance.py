@@ -124,6 +124,30 @@ def test_a_kepler_orbit_meets_a_position_tolerance(tolerance):
     assert true <= tolerance * 1e3 + 7e-3
 
 
+@pytest.mark.parametrize("name", ["kepler", "pendulum"])  # particles; a pivoted planar body
+def test_a_lie_group_method_is_not_piloted_where_it_takes_its_plain_forms_steps(name):
+    """Where no body turns in 3D, rkmk4 takes rk4's steps and exact_flow_kick splitting_dlm's: the same states up to
+    the rounding of operations done in another order (each step adds at most a few roundings of the state's scale,
+    bounded by 8 eps per step as the estimate's round-off bound is: 800 eps over 100 steps), so neither is piloted."""
+    scene, initial, run = rd.load_scene(name)
+    bound = 800 * np.finfo(float).eps
+    for lie_group, plain in (("rkmk4", "rk4"), ("exact_flow_kick", "splitting_dlm")):
+        a = rd.simulate(scene, initial, run.dt, steps=100, method=lie_group, error=False)
+        b = rd.simulate(scene, initial, run.dt, steps=100, method=plain, error=False)
+        for field in ("p_W", "v_W"):
+            x, y = np.asarray(getattr(a, field)), np.asarray(getattr(b, field))
+            assert np.abs(x - y).max() <= bound * np.abs(y).max(), (lie_group, field)
+    r = rd.simulate(scene, initial, duration=run.duration / 8, tolerance=1e-3 if name == "pendulum" else 1e4)
+    verdicts = {p["method"]: p["verdict"] for p in r.choice.pilots}
+    assert verdicts["rkmk4"] == "not piloted: it takes the same steps as rk4 on this scene"
+    assert verdicts["exact_flow_kick"] == "not piloted: it takes the same steps as splitting_dlm on this scene"
+    assert r.choice.met
+    # a rigid body turns in 3D: every method is piloted
+    body = rd.simulate(rd.RigidBody(1.0, [1.0, 2.0, 3.0]), rd.RigidBodyState(w_B=[0.1, 1.0, 0.1]), duration=10.0,
+                       tolerance=1e-5)
+    assert not any(p["verdict"].startswith("not piloted: it takes") for p in body.choice.pilots)
+
+
 def test_a_ballistic_particle_takes_the_fewest_steps():
     # rk4 integrates a quadratic motion exactly: the error is round-off at any step
     r = rd.simulate(rd.Particle(1.0), rd.ParticleState(v_W=[1.0, 0.0, 5.0]), duration=2.0, tolerance=1e-9,
