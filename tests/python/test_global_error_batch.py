@@ -52,6 +52,18 @@ def test_each_sample_is_its_own_simulate(threads):
         assert res.error.verdict[i] == alone.verdict
 
 
+def test_a_long_batch_compares_each_samples_records_as_simulate_does():
+    # 3 074 multiples of 4 steps recorded every 4th: more than the 1 024 records an estimate compares, which are then
+    # every 16 steps and the last multiple of 4 (test_global_error.py); each sample's as simulate's, bit for bit
+    body = rd.RigidBody(1.0, [1.0, 2.0, 3.0])
+    states = spins(2)
+    res = rd.simulate_batch(body, states, dt=0.01, steps=4 * 3074 + 3, record_every=4, threads=1)
+    for i, state in enumerate(states):
+        alone = rd.simulate(body, state, dt=0.01, steps=4 * 3074 + 3, record_every=4).error
+        assert not estimate_differences(res[i].error, alone)
+        assert res[i].error.verdict[1].startswith("interpolated between the reliable records")
+
+
 def test_scene_batch_per_body_shapes_and_samples():
     scene = rd.Scene()
     for name in ("a", "b"):
