@@ -609,11 +609,16 @@ class BasicSceneModel {
     return kicked;
   }
 
-  // wrenches_ = Σ of the elements' wrenches element_wrenches_ (loads_kick)
+  // wrenches_ = Σ of the elements' wrenches element_wrenches_ (loads_kick); a single element's copied (the sum 0 + w
+  // is w, but that a −0 becomes +0, which every later use of the wrench adds to or multiplies alike)
   void sum_element_wrenches() const {
-    for (BodyWrench& b : wrenches_) b.f_W.setZero(), b.tau_B.setZero();
-    for (const auto& w : element_wrenches_) {
-      for (std::size_t b = 0; b < w.size(); ++b) wrenches_[b].f_W += w[b].f_W, wrenches_[b].tau_B += w[b].tau_B;
+    if (element_wrenches_.size() == 1) {
+      std::copy(element_wrenches_.front().begin(), element_wrenches_.front().end(), wrenches_.begin());
+    } else {
+      for (BodyWrench& b : wrenches_) b.f_W.setZero(), b.tau_B.setZero();
+      for (const auto& w : element_wrenches_) {
+        for (std::size_t b = 0; b < w.size(); ++b) wrenches_[b].f_W += w[b].f_W, wrenches_[b].tau_B += w[b].tau_B;
+      }
     }
     note_tree_wrenches();
   }
