@@ -431,9 +431,9 @@ tolerance : float or pint.Quantity, keyword-only, optional
     half the tolerance is run with its global error estimate as the certificate, refined while that fails (at
     most three times; see ToleranceChoice). The horizon is `duration` (steps depend on dt: steps is refused);
     record_every counts steps of the chosen dt; steps is a multiple of lcm(record_every, 4), so every record is
-    checked (up to 1024 after t0, see GlobalError). Where the loads switch inside the horizon, every run's 4 dt ends at the switch times when a grid of at
-    most 256 steps holds them; elsewhere a switch splits a step of the estimate's coarse runs, and the certificate
-    takes no record whose order check failed.
+    checked (up to 1024 after t0, see GlobalError). Where the loads switch inside the horizon, every run's 4 dt
+    ends at the switch times when a grid of at most 256 steps holds them; elsewhere a switch splits a step of the
+    estimate's coarse runs, and the certificate takes no record whose order check failed.
     result.choice says what was chosen and why. A scene with a PythonForce is refused (ToleranceError): its
     estimate is never reliable.
 measure : str, keyword-only, optional

@@ -147,8 +147,8 @@ pilots : tuple of dict
     One per candidate: method, order, dt, horizon, steps, error, constant (C), seconds_per_step, planned_steps,
     planned_seconds and verdict ('used', or why not: pruned by order, not piloted because another method is exact
     on the scene or because it takes the same steps as another candidate (rkmk4 as rk4 and exact_flow_kick as
-    splitting_dlm where no body turns in 3D), not asymptotic, ...); the figures a pilot did not reach are NaN (a candidate pruned or not piloted
-    has no error, constant or seconds_per_step).
+    splitting_dlm where no body turns in 3D), not asymptotic, ...); the figures a pilot did not reach are NaN (a
+    candidate pruned or not piloted has no error, constant or seconds_per_step).
 pilot_seconds, run_seconds : float
     Wall time of the pilots, and of the final run(s) with their estimates [s].
 

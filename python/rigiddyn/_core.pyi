@@ -5327,8 +5327,8 @@ class ToleranceChoice:
         One per candidate: method, order, dt, horizon, steps, error, constant (C), seconds_per_step, planned_steps,
         planned_seconds and verdict ('used', or why not: pruned by order, not piloted because another method is exact
         on the scene or because it takes the same steps as another candidate (rkmk4 as rk4 and exact_flow_kick as
-        splitting_dlm where no body turns in 3D), not asymptotic, ...); the figures a pilot did not reach are NaN (a candidate pruned or not piloted
-        has no error, constant or seconds_per_step).
+        splitting_dlm where no body turns in 3D), not asymptotic, ...); the figures a pilot did not reach are NaN (a
+        candidate pruned or not piloted has no error, constant or seconds_per_step).
     pilot_seconds, run_seconds : float
         Wall time of the pilots, and of the final run(s) with their estimates [s].
     
@@ -12042,9 +12042,9 @@ def simulate(model: Particle | PlanarBody | RigidBody | PivotedBody | PivotedPla
         half the tolerance is run with its global error estimate as the certificate, refined while that fails (at
         most three times; see ToleranceChoice). The horizon is `duration` (steps depend on dt: steps is refused);
         record_every counts steps of the chosen dt; steps is a multiple of lcm(record_every, 4), so every record is
-        checked (up to 1024 after t0, see GlobalError). Where the loads switch inside the horizon, every run's 4 dt ends at the switch times when a grid of at
-        most 256 steps holds them; elsewhere a switch splits a step of the estimate's coarse runs, and the certificate
-        takes no record whose order check failed.
+        checked (up to 1024 after t0, see GlobalError). Where the loads switch inside the horizon, every run's 4 dt
+        ends at the switch times when a grid of at most 256 steps holds them; elsewhere a switch splits a step of the
+        estimate's coarse runs, and the certificate takes no record whose order check failed.
         result.choice says what was chosen and why. A scene with a PythonForce is refused (ToleranceError): its
         estimate is never reliable.
     measure : str, keyword-only, optional
