@@ -747,7 +747,7 @@ m) grown linearly in t from t0. Those records are not checked, so their verdict 
 record checked. A run of fewer than m steps has no estimate (NaN, with a verdict saying so). At most 1024 records
 after t0 are checked: a longer run's checked records are every k m steps (k the fewest that leave 1024) and its last
 multiple of m, the records between interpolated (each checked record costs the 2dt and 4dt runs a record each and
-the estimate a comparison, ~4 rk4 steps of a free body; the error between varies smoothly).
+the estimate a comparison, ~3.5 rk4 steps of a free body; the error between varies smoothly).
 
 A scene with a PythonForce is never called reliable (verdict "not verified: ..."): a force that switches inside a
 step (an `if t > t_s`) costs every method its order there, and the runs at dt, 2dt and 4dt can take the switch in

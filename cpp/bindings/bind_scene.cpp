@@ -1124,22 +1124,38 @@ py::object simulate_scene_to_tolerance(py::handle model, py::handle method, cons
                                                       std::min(a.max_steps, switch_grid_limit));
   if (switch_grid > 1) grid_steps = on_grid(switch_grid, grid_steps);
   const bool fixed = is_instance<CompiledSceneHandle>(model) || !method.is_none();
-  std::vector<CompiledSceneHandle> compiled;
+  // the candidates, each compiled and probed only where the planner runs it (admit); the method asked for at once, its
+  // refusal being the answer
   std::vector<ToleranceCandidate> candidates;
   for (const Method m : fixed ? std::vector<Method>{given.method} : tolerance_methods()) {
     if (controllers && m == Method::exact && !fixed) continue;
-    try {
-      CompiledSceneHandle handle = m == given.method ? given : compile_handle(given.scene, m, false);
-      SimulationOptions probe = base;  // a one-step run: what the run refuses (e.g. 'exact' with a couple in a load)
-      probe.method = m, probe.dt = a.horizon, probe.steps = 1;
-      simulate(*handle.compiled, initial, probe);
-      compiled.push_back(std::move(handle));
-    } catch (const std::invalid_argument&) {
-      if (fixed) throw;  // the method asked for: its refusal is the answer
-      continue;          // a method the scene does not take
-    }
-    candidates.push_back({m, scene_order(*compiled.back().compiled), plain_twin(m, given.scene.bodies)});
+    candidates.push_back({m, scene_order(*given.compiled, m), plain_twin(m, given.scene.bodies)});
   }
+  const auto index_of = [&](Method m) {
+    return static_cast<std::size_t>(std::find_if(candidates.begin(), candidates.end(),
+                                                 [&](const ToleranceCandidate& c) { return c.method == m; }) -
+                                    candidates.begin());
+  };
+  std::vector<std::optional<CompiledSceneHandle>> compiled(candidates.size());  // each candidate's, once admitted
+  // the scene compiled for m and a one-step run over the horizon: what the run refuses (std::invalid_argument: e.g.
+  // 'exact' with a couple in a load)
+  const auto compiled_and_probed = [&](Method m) {
+    CompiledSceneHandle handle = m == given.method ? given : compile_handle(given.scene, m, false);
+    SimulationOptions probe = base;
+    probe.method = m, probe.dt = a.horizon, probe.steps = 1, probe.monitor = nullptr;
+    simulate(*handle.compiled, initial, probe);
+    compiled[index_of(m)] = std::move(handle);
+  };
+  if (fixed) compiled_and_probed(given.method);
+  const auto admit = [&](const ToleranceCandidate& c) {
+    if (compiled[index_of(c.method)]) return true;
+    try {
+      compiled_and_probed(c.method);
+      return true;
+    } catch (const std::invalid_argument&) {
+      return false;  // a method the scene does not take
+    }
+  };
   PythonMonitor monitor(progress);
   if (monitor.needed()) base.monitor = [&monitor](std::int64_t steps_done) { return monitor(steps_done); };
   ToleranceRun<SceneSimulation> run;
@@ -1148,23 +1164,21 @@ py::object simulate_scene_to_tolerance(py::handle model, py::handle method, cons
     run = run_to_tolerance<SceneSimulation>(
         candidates, base, {a.tolerance, a.measure, a.horizon, a.max_steps, 0.5, grid_steps, std::move(switches)},
         [&](const ToleranceCandidate& c, const SimulationOptions& o) {
-          const auto at = std::find_if(compiled.begin(), compiled.end(),
-                                       [&](const CompiledSceneHandle& h) { return h.method == c.method; });
+          const CompiledScene& model_of_c = *compiled[index_of(c.method)]->compiled;
           SimulationOptions x = o;
           x.method = c.method;
-          if (controllers) return simulate(*at->compiled, initial, x, controllers->next());
-          return simulate(*at->compiled, initial, x);
-        });
+          if (controllers) return simulate(model_of_c, initial, x, controllers->next());
+          return simulate(model_of_c, initial, x);
+        },
+        admit);
   }
   if (run.interrupted) monitor.raise();
   if (!run.ran) raise_tolerance_error(run.choice, py::none());
   SimulationOptions final_options = base;
   final_options.method = run.choice.method, final_options.dt = run.choice.dt, final_options.steps = run.choice.steps;
   warn_after_run(run.records, final_options, method_info(run.choice.method).name);
-  const auto at = std::find_if(compiled.begin(), compiled.end(),
-                               [&](const CompiledSceneHandle& h) { return h.method == run.choice.method; });
-  py::object result = scene_result_object(std::move(run.records), *at, run.choice.dt, scalar_first,
-                                          std::optional(std::move(run.estimate)), py::cast(run.choice),
+  py::object result = scene_result_object(std::move(run.records), *compiled[index_of(run.choice.method)], run.choice.dt,
+                                          scalar_first, std::optional(std::move(run.estimate)), py::cast(run.choice),
                                           run.choice.met ? level : std::nullopt);
   if (!run.choice.met) raise_tolerance_error(run.choice, result);
   return result;

@@ -130,7 +130,8 @@ measure : str
     The quantity the tolerance bounds ('attitude', 'angular_velocity', 'position', 'velocity', 'energy' or
     'angular_momentum'); tolerance : float, the bound, in the measure's unit.
 predicted_error : float
-    The error the pilot's fit predicted for the first final run, in the measure's unit.
+    The error the pilot's fit predicted for the first final run, in the measure's unit (where the run at the
+    fewest steps, tried first, met the tolerance: its own estimate).
 certified_error : float
     The largest global error estimate of the measure over the records (and bodies) of the final run (NaN where a
     record has none).
@@ -146,9 +147,11 @@ reason : str
 pilots : tuple of dict
     One per candidate: method, order, dt, horizon, steps, error, constant (C), seconds_per_step, planned_steps,
     planned_seconds and verdict ('used', or why not: pruned by order, not piloted because another method is exact
-    on the scene or because it takes the same steps as another candidate (rkmk4 as rk4 and exact_flow_kick as
-    splitting_dlm where no body turns in 3D), not asymptotic, ...); the figures a pilot did not reach are NaN (a
-    candidate pruned or not piloted has no error, constant or seconds_per_step).
+    on the scene, because it takes the same steps as another candidate (rkmk4 as rk4 and exact_flow_kick as
+    splitting_dlm where no body turns in 3D) or because the first candidate's run over the whole horizon at the
+    fewest steps (16) met the tolerance or set at most 64 steps, not asymptotic, ...); the figures a pilot did not
+    reach are NaN (a candidate pruned or not piloted has no error, constant or seconds_per_step). A method the model
+    does not take is left out, where the planner asked (a candidate not piloted may be one).
 pilot_seconds, run_seconds : float
     Wall time of the pilots, and of the final run(s) with their estimates [s].
 
@@ -293,7 +296,8 @@ void bind_tolerance(py::module_& m) {
       .def_property_readonly("measure", [](const ToleranceChoice& c) { return error_measure_name(c.measure); },
                              "The quantity the tolerance bounds (a str).")
       .def_readonly("predicted_error", &ToleranceChoice::predicted_error,
-                    "The error the pilot's fit predicted for the first final run, in the measure's unit.")
+                    "The error the pilot's fit predicted for the first final run, in the measure's unit (the run at "
+                    "the fewest steps that met the tolerance: its own estimate).")
       .def_readonly("certified_error", &ToleranceChoice::certified_error,
                     "The largest estimate of the measure over the final run's records and bodies (NaN: none).")
       .def_readonly("met", &ToleranceChoice::met, "Every record reliable and certified_error <= tolerance.")

@@ -5310,7 +5310,8 @@ class ToleranceChoice:
         The quantity the tolerance bounds ('attitude', 'angular_velocity', 'position', 'velocity', 'energy' or
         'angular_momentum'); tolerance : float, the bound, in the measure's unit.
     predicted_error : float
-        The error the pilot's fit predicted for the first final run, in the measure's unit.
+        The error the pilot's fit predicted for the first final run, in the measure's unit (where the run at the
+        fewest steps, tried first, met the tolerance: its own estimate).
     certified_error : float
         The largest global error estimate of the measure over the records (and bodies) of the final run (NaN where a
         record has none).
@@ -5326,9 +5327,11 @@ class ToleranceChoice:
     pilots : tuple of dict
         One per candidate: method, order, dt, horizon, steps, error, constant (C), seconds_per_step, planned_steps,
         planned_seconds and verdict ('used', or why not: pruned by order, not piloted because another method is exact
-        on the scene or because it takes the same steps as another candidate (rkmk4 as rk4 and exact_flow_kick as
-        splitting_dlm where no body turns in 3D), not asymptotic, ...); the figures a pilot did not reach are NaN (a
-        candidate pruned or not piloted has no error, constant or seconds_per_step).
+        on the scene, because it takes the same steps as another candidate (rkmk4 as rk4 and exact_flow_kick as
+        splitting_dlm where no body turns in 3D) or because the first candidate's run over the whole horizon at the
+        fewest steps (16) met the tolerance or set at most 64 steps, not asymptotic, ...); the figures a pilot did not
+        reach are NaN (a candidate pruned or not piloted has no error, constant or seconds_per_step). A method the model
+        does not take is left out, where the planner asked (a candidate not piloted may be one).
     pilot_seconds, run_seconds : float
         Wall time of the pilots, and of the final run(s) with their estimates [s].
     
@@ -5400,7 +5403,7 @@ class ToleranceChoice:
     @property
     def predicted_error(self) -> float:
         """
-        The error the pilot's fit predicted for the first final run, in the measure's unit.
+        The error the pilot's fit predicted for the first final run, in the measure's unit (the run at the fewest steps that met the tolerance: its own estimate).
         """
     @property
     def reason(self) -> str:
@@ -6225,7 +6228,7 @@ class GlobalError:
     record checked. A run of fewer than m steps has no estimate (NaN, with a verdict saying so). At most 1024 records
     after t0 are checked: a longer run's checked records are every k m steps (k the fewest that leave 1024) and its last
     multiple of m, the records between interpolated (each checked record costs the 2dt and 4dt runs a record each and
-    the estimate a comparison, ~4 rk4 steps of a free body; the error between varies smoothly).
+    the estimate a comparison, ~3.5 rk4 steps of a free body; the error between varies smoothly).
     
     A scene with a PythonForce is never called reliable (verdict "not verified: ..."): a force that switches inside a
     step (an `if t > t_s`) costs every method its order there, and the runs at dt, 2dt and 4dt can take the switch in

@@ -194,7 +194,7 @@ TEST(EstimateRecords, TheAnswersSumsAtItsCommonRecordsGiveTheSameEstimate) {
   const auto [scene, states] = linked_bodies();
   const CompiledScene compiled = compile_scene(scene, Method::rk4);
   // (the last: 3 074 multiples of 4 steps, their common records every 16 steps and the last, 2 past a multiple of 16)
-  for (const auto [record_every, steps] : {std::pair<std::int64_t, std::int64_t>{1, 101}, {3, 101}, {4, 101},
+  for (const auto& [record_every, steps] : {std::pair<std::int64_t, std::int64_t>{1, 101}, {3, 101}, {4, 101},
                                            {4, 4 * 3074 + 3}}) {
     SCOPED_TRACE("record_every " + std::to_string(record_every) + ", steps " + std::to_string(steps));
     SimulationOptions o;

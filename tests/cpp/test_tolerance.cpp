@@ -485,6 +485,100 @@ TEST(RunToTolerance, ALaterPilotStartsAtTwiceTheStepAnEarlierOneWasUsedAt) {
   EXPECT_EQ(first_splitting->second, 2.0 * used);
 }
 
+// A free body turning slowly (|ω| 0.1 rad/s over 2 s): rk4 at 16 steps is certified far below 1e-3 rad, so the call
+// is that run with its estimate (three runs: h, 2h, 4h), no other candidate piloted and, with a lazy admit, no other
+// candidate's method asked for.
+TEST(RunToTolerance, AProblemMetAtTheFewestStepsIsThatRunAlone) {
+  const RigidBody body(1.0, Eigen::Vector3d(1.0, 2.0, 3.0));
+  RigidBodyState initial;
+  initial.w_B = Eigen::Vector3d(0.01, 0.1, 0.01);
+  std::vector<Method> runs, admitted;
+  const auto run = [&](const ToleranceCandidate& c, const SimulationOptions& o) {
+    runs.push_back(c.method);
+    SimulationOptions x = o;
+    x.method = c.method;
+    return simulate(body, initial, x);
+  };
+  const auto admit = [&](const ToleranceCandidate& c) {
+    admitted.push_back(c.method);
+    return true;
+  };
+  const auto out = run_to_tolerance<Trajectory>({{Method::splitting_dlm, 2}, {Method::rk4, 4}}, SimulationOptions{},
+                                                {1e-3, ErrorMeasure::attitude, 2.0, 10'000'000}, run, admit);
+  ASSERT_TRUE(out.ran);
+  EXPECT_TRUE(out.choice.met) << out.choice.reason;
+  EXPECT_EQ(out.choice.method, Method::rk4);  // the highest order first
+  EXPECT_EQ(out.choice.steps, fewest_run_steps);
+  EXPECT_LE(out.choice.certified_error, 0.5 * 1e-3);  // within s τ
+  EXPECT_EQ(runs, std::vector<Method>(3, Method::rk4));
+  EXPECT_EQ(admitted, std::vector<Method>{Method::rk4});
+  ASSERT_EQ(out.choice.pilots.size(), 2u);
+  EXPECT_EQ(out.choice.pilots[0].verdict, "used");
+  EXPECT_EQ(out.choice.pilots[0].horizon, 2.0);
+  EXPECT_EQ(out.choice.pilots[1].verdict, "not piloted: rk4 met the tolerance at the fewest steps");
+  EXPECT_EQ(out.records.size(), static_cast<std::size_t>(fewest_run_steps) + 1);  // every step recorded
+}
+
+// A free body at s τ 8x below what 16 steps certify: that error, scaled by dt^q (q in [4, 5]), asks for 16 8^(1/q)
+// steps, 24.3 to 26.9, so 28 (a multiple of 4), fewer than direct_plan_steps: the final run takes them without a pilot
+// (its three runs after the first three, where the certificate holds at once).
+TEST(RunToTolerance, AShortProblemIsPlannedFromItsRunAtTheFewestStepsWithoutAPilot) {
+  const RigidBody body(1.0, Eigen::Vector3d(1.0, 2.0, 3.0));
+  RigidBodyState initial;
+  initial.w_B = Eigen::Vector3d(0.1, 1.0, 0.1);
+  std::vector<std::int64_t> steps_run;
+  const auto run = [&](const ToleranceCandidate& c, const SimulationOptions& o) {
+    steps_run.push_back(o.steps);
+    SimulationOptions x = o;
+    x.method = c.method;
+    return simulate(body, initial, x);
+  };
+  const std::vector<ToleranceCandidate> candidates = {{Method::rk4, 4}, {Method::splitting_dlm, 2}};
+  const ToleranceRequest loose{1.0, ErrorMeasure::attitude, 2.0, 10'000'000};
+  const auto first = run_to_tolerance<Trajectory>(candidates, SimulationOptions{}, loose, run);
+  ASSERT_TRUE(first.choice.met && first.choice.steps == fewest_run_steps) << first.choice.reason;
+  const double sixteen = first.choice.certified_error;
+  ASSERT_GT(sixteen, 0.0);
+  steps_run.clear();
+  const double tolerance = sixteen / 4.0;  // s τ = sixteen / 8
+  const auto out = run_to_tolerance<Trajectory>(candidates, SimulationOptions{},
+                                                {tolerance, ErrorMeasure::attitude, 2.0, 10'000'000}, run);
+  ASSERT_TRUE(out.ran);
+  EXPECT_TRUE(out.choice.met) << out.choice.reason;
+  EXPECT_EQ(out.choice.refinements, 0) << out.choice.reason;
+  EXPECT_EQ(out.choice.steps, 28);
+  const std::vector<std::int64_t> expected = {16, 8, 4, out.choice.steps, out.choice.steps / 2, out.choice.steps / 4};
+  EXPECT_EQ(steps_run, expected);
+  ASSERT_EQ(out.choice.pilots.size(), 2u);
+  EXPECT_EQ(out.choice.pilots[0].steps, fewest_run_steps);
+  EXPECT_EQ(out.choice.pilots[0].planned_steps, out.choice.steps);
+  EXPECT_EQ(out.choice.pilots[1].verdict.rfind("not piloted: rk4 over the whole horizon at the fewest steps sets", 0),
+            0u)
+      << out.choice.pilots[1].verdict;
+}
+
+// A candidate the model refuses (admit false) is never run: the fewest steps are tried with the next one.
+TEST(RunToTolerance, ACandidateTheModelRefusesIsNeverRun) {
+  const RigidBody body(1.0, Eigen::Vector3d(1.0, 2.0, 3.0));
+  RigidBodyState initial;
+  initial.w_B = Eigen::Vector3d(0.01, 0.1, 0.01);
+  std::vector<Method> runs;
+  const auto run = [&](const ToleranceCandidate& c, const SimulationOptions& o) {
+    runs.push_back(c.method);
+    SimulationOptions x = o;
+    x.method = c.method;
+    return simulate(body, initial, x);
+  };
+  const ToleranceRequest request{1e-3, ErrorMeasure::attitude, 2.0, 10'000'000};
+  const auto out = run_to_tolerance<Trajectory>({{Method::rk4, 4}, {Method::splitting_dlm, 2}}, SimulationOptions{},
+                                                request, run,
+                                                [](const ToleranceCandidate& c) { return c.method != Method::rk4; });
+  ASSERT_TRUE(out.ran);
+  EXPECT_TRUE(out.choice.met) << out.choice.reason;
+  EXPECT_EQ(out.choice.method, Method::splitting_dlm);
+  EXPECT_TRUE(std::find(runs.begin(), runs.end(), Method::rk4) == runs.end());
+}
+
 TEST(RunToTolerance, TheCostCapIsReportedWithoutARun) {
   const RigidBody body(1.0, Eigen::Vector3d(1.0, 2.0, 3.0));
   RigidBodyState initial;

@@ -332,6 +332,22 @@ def _check_shipped_scene(name, part, relative):
     assert _largest_difference(r, reference, measure) <= tolerance + reference_error
 
 
+def test_a_short_problem_is_its_run_at_the_fewest_steps():
+    # the shipped rocket (a particle losing mass) to 0.4 m: rk4 over its whole minute at 16 steps, the fewest a run
+    # takes, is certified within half the tolerance (1.5e-2 m), so the call is that run with its estimate and no other
+    # method is piloted
+    scene, initial, run = rd.load_scene("rocket")
+    r = rd.simulate(scene, initial, duration=run.duration, tolerance=0.4, measure="position")
+    tried = [p for p in r.choice.pilots if p["steps"] > 0]
+    assert r.choice.met and r.choice.steps == 16 and r.choice.refinements == 0
+    assert len(tried) == 1 and tried[0]["horizon"] == run.duration and tried[0]["verdict"] == "used"
+    assert all(p["verdict"].startswith("not piloted: ") for p in r.choice.pilots if p["steps"] == 0)
+    # against rk4 at a sixteenth of the step, whose error is ~16^-4 the run's (dt^4): 2.3e-7 m
+    reference = rd.simulate(scene, initial, r.choice.dt / 16, steps=16 * 16, record_every=16, method="rk4",
+                            accuracy_level=None)
+    assert _largest_difference(r, reference, "position") <= 0.4
+
+
 def test_every_run_steps_onto_the_loads_switch_times():
     """The shipped solar array's motor torques switch at 10 s and 20 s of its 30 s: every run to a tolerance takes a
     multiple of 12 steps, so that 4 dt divides 10 s and the runs at dt, 2 dt and 4 dt switch on a step's end alike; the

@@ -10,13 +10,15 @@ bool kick_freezes_velocities(Method method, const ElementTraits& traits) {
   return kicks && traits.velocity_dependent;
 }
 
-int scene_order(const CompiledScene& compiled) {
+int scene_order(const CompiledScene& compiled) { return scene_order(compiled, compiled.method()); }
+
+int scene_order(const CompiledScene& compiled, Method method) {
   const auto& traits = compiled.element_traits();
   for (std::size_t i = 0; i < traits.size(); ++i) {
     if (compiled.element_types()[i] == "CoriolisForce") continue;  // its kick is exact
-    if (kick_freezes_velocities(compiled.method(), traits[i])) return 1;
+    if (kick_freezes_velocities(method, traits[i])) return 1;
   }
-  return method_info(compiled.method()).order;
+  return method_info(method).order;
 }
 
 std::string opaque_force(const CompiledScene& compiled) {

@@ -17,6 +17,9 @@ bool kick_freezes_velocities(Method method, const ElementTraits& traits);
 
 // The global order of `compiled` under its method (0 for 'exact').
 int scene_order(const CompiledScene& compiled);
+// The global order of `compiled`'s scene under `method` (its elements' traits do not depend on the method it was
+// compiled for), without compiling it for `method`.
+int scene_order(const CompiledScene& compiled, Method method);
 
 // The name of the first force the core cannot see into ("elements[i] (PythonForce)": a FunctionForce, which may
 // switch inside a step, e.g. with an `if t > t_s`), "" when there is none. A switch inside a step costs every

@@ -23,6 +23,19 @@
 // A certificate that is the round-off bound at every record (at_round_off) is not refined: that bound grows with the
 // steps, so the tolerance is below what the run can certify in double precision.
 //
+// The fewest steps first: before any pilot, the first candidate (one that may be exact on the scene, else the first
+// of the highest order) runs over the whole horizon at the fewest steps a run takes (16, fewest_run_steps) with its
+// estimate. Where that certificate holds within s τ, the call is that run; where it holds above s τ and its error,
+// scaled by dt^q as the whole-horizon pilot's below, asks for at most 64 steps (direct_plan_steps), those steps are
+// the plan and no method is piloted: a pilot's first attempt (1.75 runs of 16 steps) would cost more than a better
+// method could save on so short a run. Otherwise the pilots follow, at the price of that first run (28 steps of
+// 16). The caller compiles a model for a candidate's method only where the planner runs it (`admit`), where each was
+// compiled and probed before planning began. Instructions of a call of `simulate(..., tolerance=)` (callgrind),
+// before → after: the shipped rocket to 0.4 m 850 000 → 205 000 (met at 16 steps) and to 4 mm 812 000 → 381 000
+// (planned at 28), the solar array to 1e-3 rad 9.98M → 3.11M (met at 24: a grid of 12 steps), a torque-free body
+// to 1e-5 rad 466 000 → 297 000 (exact_flow_kick, met at 16 after a pilot before); the three-body scene to 1 mm
+// 5.12M → 5.25M (its first run not certified) and the pendulum to 1e-5 rad 15.60M → 15.65M.
+//
 // Pilots: 16 steps over T/4 first; while the pilot's estimate is not reliable its horizon is halved (down to T/32, the
 // step with it) and then its steps doubled (up to 512). Its cost is that of ~28 steps whatever the horizon, a small
 // part of any run long enough to need a choice. A later candidate's pilot starts one attempt before the coarsest an
@@ -74,6 +87,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rigiddyn {
@@ -344,6 +358,18 @@ double elapsed_of(const Records& r) {
   return r.elapsed_seconds;
 }
 
+// run(c, x) for the runs of one pilot (a run and its estimate's): their wall time added to `seconds`, a monitor's stop
+// to out.interrupted
+template <class Records, class Run>
+auto timed_runs(Run& run, const ToleranceCandidate& c, double& seconds, ToleranceRun<Records>& out) {
+  return [&run, &c, &seconds, &out](const SimulationOptions& x) {
+    Records r = run(c, x);
+    seconds += elapsed_of(r);
+    out.interrupted = out.interrupted || r.interrupted;
+    return r;
+  };
+}
+
 // Plans whose planned seconds lie within this factor of the fastest's are a tie (cheapest_plan): the seconds per
 // step a pilot of 16 steps measures repeat within ~10 % (the median of 12 calls over their fastest: 1.01-1.09 for
 // every pilot of the shipped heavy top, pendulum, gravity gradient and three bodies while another job ran; single
@@ -359,16 +385,116 @@ inline constexpr double plan_tie = 1.15;
 // no pilot has a plan.
 const PilotRun* cheapest_plan(const std::vector<PilotRun>& pilots, std::int64_t max_steps);
 
+// The candidate a run to a tolerance tries first at the fewest steps (fewest_steps_run): the first that may be exact
+// on the scene (exact_torque_free), else the first (of the highest order: the candidates' order); never 'exact' (the
+// closed form, which has no steps to take), and only one that `usable(i)` (asked in that order, until one is: the
+// model takes its method, and it takes no other candidate's steps). candidates.size() when none is.
+template <class Usable>
+std::size_t first_to_run(const std::vector<ToleranceCandidate>& candidates, Usable&& usable) {
+  for (const bool exact_torque_free : {true, false}) {
+    for (std::size_t i = 0; i < candidates.size(); ++i) {
+      const ToleranceCandidate& c = candidates[i];
+      if (c.order == 0 || method_info(c.method).exact_torque_free != exact_torque_free) continue;
+      if (usable(i)) return i;
+    }
+  }
+  return candidates.size();
+}
+
+// The most steps a plan from the run at the fewest steps takes without a pilot (fewest_steps_run): a pilot's first
+// attempt alone costs 1.75 runs of 16 steps, as much as a third of such a run with its estimate.
+inline constexpr std::int64_t direct_plan_steps = 4 * fewest_run_steps;
+
+// What the run at the fewest steps found (fewest_steps_run): its figures as a pilot's, its verdict `used` where its
+// certificate holds (the error then measured over the whole horizon), the order q its error is extrapolated at
+// (extrapolation_order) and the size of the measure in its records (measure_scale).
+struct FewestStepsRun {
+  PilotRun run;
+  double order = 0.0;
+  double scale = std::numeric_limits<double>::quiet_NaN();
+};
+
+// The run no plan can make cheaper, tried before any pilot: candidates[first] over the whole horizon at the fewest
+// steps a run takes (fewest_run_steps, rounded up to a multiple of `multiple`), with its estimate, where those steps
+// are at most direct_plan_steps and within max_steps (none otherwise, or where a run was interrupted). Where its
+// certificate holds within s τ (the error a planned run aims at), it is the final run: `out` holds it and its choice
+// (met), and every other candidate is listed as not piloted (none could take fewer steps, and a pilot would cost as
+// much as this run). (A short problem's pilots cost several times its run: on the shipped rocket to 0.4 m, three
+// pilots and a whole-horizon pilot of 16 steps each came before a final run of 16 steps.)
+template <class Records, class Run>
+std::optional<FewestStepsRun> fewest_steps_run(const std::vector<ToleranceCandidate>& candidates, std::size_t first,
+                                               const SimulationOptions& base, const ToleranceRequest& request,
+                                               std::int64_t multiple, Run& run, ToleranceRun<Records>& out) {
+  const double T = request.horizon;
+  const std::int64_t steps = steps_for(T, T / static_cast<double>(fewest_run_steps), multiple);
+  if (steps > direct_plan_steps || steps > request.max_steps) return std::nullopt;
+  const ToleranceCandidate& c = candidates[first];
+  SimulationOptions o = base;
+  o.method = c.method, o.steps = steps, o.dt = T / static_cast<double>(steps);  // as the final run's step
+  const auto start = std::chrono::steady_clock::now();
+  double seconds = 0.0;
+  const auto timed = timed_runs(run, c, seconds, out);
+  Records h = timed(o);
+  if (out.interrupted) return std::nullopt;
+  MeasuredEstimate estimates = measured_global_error(h, o, c.order, timed, request.measure);
+  if (out.interrupted) return std::nullopt;
+  const GlobalErrorEstimate& e = estimates.measure;
+  const ErrorRecords records = error_records(h);
+  FewestStepsRun found;
+  PilotRun& p = found.run;
+  p.method = c.method, p.order = c.order, p.dt = o.dt, p.horizon = T, p.steps = steps;
+  p.error = largest_error(e, request.measure);
+  p.seconds_per_step = seconds / (1.75 * static_cast<double>(steps));
+  p.planned_steps = steps, p.planned_seconds = static_cast<double>(steps) * p.seconds_per_step;
+  found.scale = std::max(measure_scale(records, request.measure), 1e-300);
+  const std::size_t bad =
+      first_uncertified(e, request.measure, request.tolerance, switch_inside_coarse_step(request.switch_times, o));
+  if (bad != e.verdict.size() || h.diverged || !(p.error <= found.scale)) {
+    p.verdict = "not asymptotic at dt = " + format_number(o.dt) + " s over the whole horizon: " +
+                (bad < e.verdict.size() ? e.verdict[bad] : h.diverged ? "diverged" : "its error exceeds the quantity");
+    return found;
+  }
+  p.verdict = used;
+  p.constant = error_constant(e, records, o.dt, request.measure);
+  p.exact_on_scene = method_info(c.method).exact_torque_free && at_round_off(e);
+  found.order = extrapolation_order(e, request.measure);
+  if (!(p.error <= request.safety * request.tolerance)) return found;
+
+  ToleranceChoice& choice = out.choice;
+  const std::string name = method_info(c.method).name, unit = error_measure_unit(request.measure);
+  const std::string why = p.exact_on_scene ? " is exact on this scene" : " met the tolerance at the fewest steps";
+  const std::string not_piloted = "not piloted: " + name + why;
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    PilotRun skipped;
+    skipped.method = candidates[i].method, skipped.order = candidates[i].order, skipped.verdict = not_piloted;
+    choice.pilots.push_back(i == first ? p : skipped);
+  }
+  choice.method = c.method, choice.order = c.order, choice.dt = o.dt, choice.steps = steps;
+  choice.predicted_error = p.error, choice.certified_error = p.error, choice.met = true;
+  const std::string exact =
+      p.exact_on_scene ? "exact on this scene (its estimate is the round-off bound at every record), " : "";
+  choice.reason = name + " at " + std::to_string(steps) + " steps of dt = " + format_number(o.dt) +
+                  " s, the fewest a run takes, tried first over the whole horizon: " + exact + "certified " +
+                  format_number(p.error) + " " + unit + ", within " + format_number(request.safety) +
+                  "x the tolerance (no other method piloted: none takes fewer steps)";
+  choice.run_seconds = seconds_since(start);
+  out.records = std::move(h), out.estimate = std::move(estimates.all), out.ran = true;
+  return found;
+}
+
 }  // namespace tolerance_detail
 
-// Runs to τ: pilots each candidate (highest order first, pruned by order_cost_figure), chooses the cheapest
-// (method, dt) predicted to meet s τ, runs it with its estimate and refines once when the certificate fails.
-// `base` gives t0, record_every and the monitor (its dt, steps and method are chosen here); run(candidate,
-// options) returns the records of the model from its initial state (a Trajectory or a SceneSimulation).
+// Runs to τ: tries the fewest steps over the whole horizon first (met_at_fewest_steps), else pilots each candidate
+// (highest order first, pruned by order_cost_figure), chooses the cheapest (method, dt) predicted to meet s τ, runs it
+// with its estimate and refines once when the certificate fails. `base` gives t0, record_every and the monitor (its
+// dt, steps and method are chosen here); run(candidate, options) returns the records of the model from its initial
+// state (a Trajectory or a SceneSimulation). admit(candidate) says whether the model takes the candidate's method,
+// asked once per candidate, before its first run and only for those the planner runs (so that a caller compiles a
+// model for a method only where it runs): a candidate it refuses is left out, as if it had not been given.
 // Never throws for an unmet tolerance: choice.met is false and choice.reason says why.
-template <class Records, class Run>
+template <class Records, class Run, class Admit>
 ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidates, const SimulationOptions& base,
-                                       const ToleranceRequest& request, Run&& run) {
+                                       const ToleranceRequest& request, Run&& run, Admit&& admit) {
   using namespace tolerance_detail;
   const auto start = std::chrono::steady_clock::now();
   ToleranceRun<Records> out;
@@ -402,12 +528,7 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
       o.method = c.method, o.dt = step_on_grid(at.span / static_cast<double>(at.steps), T, request.grid_steps);
       o.steps = at.steps, o.record_every = 4;
       double seconds = 0.0;
-      const auto timed = [&](const SimulationOptions& x) {
-        Records r = run(c, x);
-        seconds += elapsed_of(r);
-        out.interrupted = out.interrupted || r.interrupted;
-        return r;
-      };
+      const auto timed = timed_runs(run, c, seconds, out);
       const Records h = timed(o);
       if (out.interrupted) return out_c;
       const GlobalErrorEstimate e = measured_global_error(h, o, c.order, timed, request.measure).measure;
@@ -426,7 +547,8 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
         out_c.attempt = attempt;
         return out_c;
       }
-      p.verdict = "not asymptotic at dt = " + format_number(o.dt) + " s: " + (bad < e.verdict.size() ? e.verdict[bad] : "diverged");
+      p.verdict = "not asymptotic at dt = " + format_number(o.dt) +
+                  " s: " + (bad < e.verdict.size() ? e.verdict[bad] : "diverged");
     }
     return out_c;
   };
@@ -438,95 +560,136 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
     if (piloted.attempt >= 0 && (coarsest_used < 0 || piloted.attempt < coarsest_used)) coarsest_used = piloted.attempt;
   };
 
+  // whether the model takes candidate i's method (admit, asked once: -1 not yet, 0 no, 1 yes)
+  std::vector<int> admitted(candidates.size(), -1);
+  const auto takes = [&](std::size_t i) {
+    if (admitted[i] < 0) admitted[i] = admit(candidates[i]) ? 1 : 0;
+    return admitted[i] == 1;
+  };
   // the pilots: a method that may be exact on the scene first, since where one is no other method can take fewer
   // steps than it (the fewest the planner gives a run), and none is piloted; then the others, highest order first
-  // (a candidate that takes the same steps as another candidate is not piloted: twin_of)
+  // (a candidate that takes the same steps as another candidate, not refused, is not piloted: twin_of)
   const auto twin_of = [&](const ToleranceCandidate& c) -> const ToleranceCandidate* {
     if (!c.same_as) return nullptr;
     const auto twin = std::find_if(candidates.begin(), candidates.end(),
                                    [&](const ToleranceCandidate& d) { return d.method == *c.same_as; });
-    return twin == candidates.end() ? nullptr : &*twin;
+    if (twin == candidates.end() || admitted[static_cast<std::size_t>(twin - candidates.begin())] == 0) return nullptr;
+    return &*twin;
   };
-  std::vector<std::optional<Piloted>> early(candidates.size());
-  std::string exact_on_scene;  // the name of the method exact on the scene, if one is
-  for (std::size_t i = 0; i < candidates.size() && exact_on_scene.empty(); ++i) {
-    if (candidates[i].order == 0 || !method_info(candidates[i].method).exact_torque_free) continue;
-    if (twin_of(candidates[i]) != nullptr) continue;
-    early[i] = pilot_of(candidates[i], first_attempt());
-    if (out.interrupted) return out;
-    learn(*early[i]);
-    if (early[i]->run.exact_on_scene) exact_on_scene = method_info(candidates[i].method).name;
+  // the fewest steps over the whole horizon first (fewest_steps_run): where they meet s τ, the call is that run; where
+  // they are certified above it and the steps that error asks for (scaled by dt^q, as the whole-horizon pilot's below)
+  // are at most direct_plan_steps, those are the plan, which no pilot could make cheaper by what it costs
+  const std::size_t first =
+      first_to_run(candidates, [&](std::size_t i) { return twin_of(candidates[i]) == nullptr && takes(i); });
+  std::optional<FewestStepsRun> fewest;
+  if (first < candidates.size()) fewest = fewest_steps_run(candidates, first, base, request, multiple, run, out);
+  if (out.interrupted || out.choice.met) return out;
+  std::int64_t direct_steps = 0;  // the plan without pilots (0: none)
+  if (fewest && fewest->run.verdict == used) {
+    const double dt = fewest->run.dt * std::pow(target / fewest->run.error, 1.0 / fewest->order);
+    const std::int64_t steps = steps_for(T, std::min(dt, fewest->run.dt), multiple);
+    if (steps <= direct_plan_steps && steps <= request.max_steps) direct_steps = steps;
   }
-  double scale = std::numeric_limits<double>::quiet_NaN(), best_figure = std::numeric_limits<double>::infinity();
-  std::vector<ToleranceCandidate> exact;
-  for (std::size_t i = 0; i < candidates.size(); ++i) {
-    const ToleranceCandidate& c = candidates[i];
-    const int evaluations = method_info(c.method).evaluations;
-    if (c.order == 0) {
-      exact.push_back(c);
-      continue;
+  double scale = std::numeric_limits<double>::quiet_NaN();
+  const PilotRun* best = nullptr;
+
+  if (direct_steps > 0) {
+    PilotRun p = fewest->run;
+    p.planned_steps = direct_steps, p.planned_seconds = static_cast<double>(direct_steps) * p.seconds_per_step;
+    const std::string not_piloted = "not piloted: " + method_info(p.method).name +
+                                    " over the whole horizon at the fewest steps sets " + std::to_string(direct_steps) +
+                                    " steps (a pilot would cost more than it could save)";
+    for (std::size_t i = 0; i < candidates.size(); ++i) {
+      PilotRun skipped;
+      skipped.method = candidates[i].method, skipped.order = candidates[i].order, skipped.verdict = not_piloted;
+      choice.pilots.push_back(i == first ? p : skipped);
     }
-    if (const ToleranceCandidate* twin = twin_of(c)) {
-      choice.pilots.push_back(pilot_entry(c, "not piloted: it takes the same steps as " +
-                                                 method_info(twin->method).name + " on this scene"));
-      continue;
+    best = &choice.pilots[first];
+    choice.pilot_seconds = seconds_since(start);
+  } else {
+    std::vector<std::optional<Piloted>> early(candidates.size());
+    std::string exact_on_scene;  // the name of the method exact on the scene, if one is
+    for (std::size_t i = 0; i < candidates.size() && exact_on_scene.empty(); ++i) {
+      if (candidates[i].order == 0 || !method_info(candidates[i].method).exact_torque_free) continue;
+      if (twin_of(candidates[i]) != nullptr || !takes(i)) continue;
+      early[i] = pilot_of(candidates[i], first_attempt());
+      if (out.interrupted) return out;
+      learn(*early[i]);
+      if (early[i]->run.exact_on_scene) exact_on_scene = method_info(candidates[i].method).name;
     }
-    if (!early[i] && !exact_on_scene.empty()) {
-      choice.pilots.push_back(pilot_entry(c, "not piloted: " + exact_on_scene + " is exact on this scene"));
-      continue;
-    }
-    if (!early[i] && std::isfinite(scale) && candidates.size() > 1 && !method_info(c.method).exact_torque_free) {
-      const double figure = order_cost_figure(c.order, evaluations, request.tolerance / scale);
-      if (figure > 8.0 * best_figure) {
-        choice.pilots.push_back(pilot_entry(
-            c, "pruned: order " + std::to_string(c.order) + " at a relative tolerance of " +
-                   format_number(request.tolerance / scale) + " (needs > 8x the steps x evaluations of order " +
-                   std::to_string(candidates.front().order) + ")"));
+    double best_figure = std::numeric_limits<double>::infinity();
+    std::vector<ToleranceCandidate> exact;
+    for (std::size_t i = 0; i < candidates.size(); ++i) {
+      const ToleranceCandidate& c = candidates[i];
+      const int evaluations = method_info(c.method).evaluations;
+      if (c.order == 0) {
+        if (takes(i)) exact.push_back(c);
         continue;
       }
+      if (const ToleranceCandidate* twin = twin_of(c)) {
+        choice.pilots.push_back(pilot_entry(c, "not piloted: it takes the same steps as " +
+                                                   method_info(twin->method).name + " on this scene"));
+        continue;
+      }
+      if (!early[i] && !exact_on_scene.empty()) {
+        choice.pilots.push_back(pilot_entry(c, "not piloted: " + exact_on_scene + " is exact on this scene"));
+        continue;
+      }
+      if (!early[i] && std::isfinite(scale) && candidates.size() > 1 && !method_info(c.method).exact_torque_free) {
+        const double figure = order_cost_figure(c.order, evaluations, request.tolerance / scale);
+        if (figure > 8.0 * best_figure) {
+          choice.pilots.push_back(pilot_entry(
+              c, "pruned: order " + std::to_string(c.order) + " at a relative tolerance of " +
+                     format_number(request.tolerance / scale) + " (needs > 8x the steps x evaluations of order " +
+                     std::to_string(candidates.front().order) + ")"));
+          continue;
+        }
+      }
+      if (!early[i] && !takes(i)) continue;
+      const Piloted piloted = early[i] ? *early[i] : pilot_of(c, first_attempt());
+      if (out.interrupted) return out;
+      if (!early[i]) learn(piloted);
+      PilotRun p = piloted.run;
+      if (p.verdict == used) {
+        if (!std::isfinite(scale)) scale = piloted.scale;
+        best_figure = std::min(best_figure, order_cost_figure(c.order, evaluations, request.tolerance / scale));
+        // at most the pilot's step: the pilot's own check ran at 2 dt_p and 4 dt_p, which the certificate's coarse
+        // runs then do not exceed (beyond them the pilot says nothing of stability); a method exact on the scene has
+        // no stability limit, and its error is round-off, which fewer steps make smaller: the fewest steps
+        const double dt = p.exact_on_scene ? T / static_cast<double>(fewest_run_steps)
+                                           : std::min(step_for_error(p.constant, p.order, T, target), p.dt);
+        p.planned_steps = steps_for(T, dt, multiple);
+        p.planned_seconds = static_cast<double>(p.planned_steps) * p.seconds_per_step;
+      }
+      choice.pilots.push_back(p);
     }
-    const Piloted piloted = early[i] ? *early[i] : pilot_of(c, first_attempt());
-    if (out.interrupted) return out;
-    if (!early[i]) learn(piloted);
-    PilotRun p = piloted.run;
-    if (p.verdict == used) {
-      if (!std::isfinite(scale)) scale = piloted.scale;
-      best_figure = std::min(best_figure, order_cost_figure(c.order, evaluations, request.tolerance / scale));
-      // at most the pilot's step: the pilot's own check ran at 2 dt_p and 4 dt_p, which the certificate's coarse
-      // runs then do not exceed (beyond them the pilot says nothing of stability); a method exact on the scene has
-      // no stability limit, and its error is round-off, which fewer steps make smaller: the fewest steps
-      const double dt = p.exact_on_scene ? T / static_cast<double>(fewest_run_steps)
-                                         : std::min(step_for_error(p.constant, p.order, T, target), p.dt);
-      p.planned_steps = steps_for(T, dt, multiple);
-      p.planned_seconds = static_cast<double>(p.planned_steps) * p.seconds_per_step;
+    // the cheapest stepping plan within the cap
+    best = cheapest_plan(choice.pilots, request.max_steps);
+    // 'exact' at the records of the best stepping plan (or of 16 steps when there is none)
+    for (const ToleranceCandidate& c : exact) {
+      PilotRun p;
+      p.method = c.method, p.order = 0;
+      const std::int64_t n =
+          best != nullptr ? best->planned_steps : steps_for(T, T / static_cast<double>(fewest_run_steps), multiple);
+      SimulationOptions o = base;
+      o.method = c.method, o.dt = T / 16.0, o.steps = 16, o.record_every = 1;
+      const Records h = run(c, o);
+      out.interrupted = out.interrupted || h.interrupted;
+      if (out.interrupted) return out;
+      p.dt = o.dt, p.horizon = T, p.steps = 16;
+      p.seconds_per_step = elapsed_of(h) / 17.0;  // per record
+      p.error = largest_error(round_off_estimate(error_records(h), o), request.measure);
+      p.constant = 0.0;
+      p.planned_steps = n;
+      p.planned_seconds = static_cast<double>(n / base.record_every + 2) * p.seconds_per_step;
+      const double round_off = p.error * static_cast<double>(n) / 16.0;
+      p.verdict =
+          round_off <= target ? used : "its round-off bound " + format_number(round_off) + " exceeds the tolerance";
+      choice.pilots.push_back(p);
     }
-    choice.pilots.push_back(p);
+    best = cheapest_plan(choice.pilots, request.max_steps);
+    choice.pilot_seconds = seconds_since(start);
   }
-  // the cheapest stepping plan within the cap
-  const PilotRun* best = cheapest_plan(choice.pilots, request.max_steps);
-  // 'exact' at the records of the best stepping plan (or of 16 steps when there is none)
-  for (const ToleranceCandidate& c : exact) {
-    PilotRun p;
-    p.method = c.method, p.order = 0;
-    const std::int64_t n =
-        best != nullptr ? best->planned_steps : steps_for(T, T / static_cast<double>(fewest_run_steps), multiple);
-    SimulationOptions o = base;
-    o.method = c.method, o.dt = T / 16.0, o.steps = 16, o.record_every = 1;
-    const Records h = run(c, o);
-    out.interrupted = out.interrupted || h.interrupted;
-    if (out.interrupted) return out;
-    p.dt = o.dt, p.horizon = T, p.steps = 16;
-    p.seconds_per_step = elapsed_of(h) / 17.0;  // per record
-    p.error = largest_error(round_off_estimate(error_records(h), o), request.measure);
-    p.constant = 0.0;
-    p.planned_steps = n;
-    p.planned_seconds = static_cast<double>(n / base.record_every + 2) * p.seconds_per_step;
-    const double round_off = p.error * static_cast<double>(n) / 16.0;
-    p.verdict = round_off <= target ? used : "its round-off bound " + format_number(round_off) + " exceeds the tolerance";
-    choice.pilots.push_back(p);
-  }
-  best = cheapest_plan(choice.pilots, request.max_steps);
-  choice.pilot_seconds = seconds_since(start);
   if (best == nullptr) {
     const PilotRun* cheapest = nullptr;  // the cap's figures
     for (const PilotRun& p : choice.pilots) {
@@ -535,7 +698,8 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
     if (cheapest != nullptr) {
       choice.method = cheapest->method, choice.order = cheapest->order, choice.steps = cheapest->planned_steps;
       choice.dt = T / static_cast<double>(choice.steps);
-      choice.predicted_error = predicted_error(cheapest->constant, cheapest->order, T / static_cast<double>(request.max_steps), T);
+      choice.predicted_error =
+          predicted_error(cheapest->constant, cheapest->order, T / static_cast<double>(request.max_steps), T);
       choice.reason = "the cost cap: the cheapest run predicted to meet " + format_number(request.tolerance) + " " +
                       error_measure_unit(request.measure) + " is " + method_info(cheapest->method).name + " at " +
                       std::to_string(cheapest->planned_steps) + " steps, above max_steps = " +
@@ -562,6 +726,15 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
                                ? chosen.error * static_cast<double>(choice.steps) / static_cast<double>(chosen.steps)
                                : predicted_error(chosen.constant, chosen.order, choice.dt, T);
   choice.reason = describe_choice(choice, chosen, piloted);
+  if (direct_steps > 0) {  // the run at the fewest steps's error, scaled by dt^q
+    choice.predicted_error = chosen.error * std::pow(choice.dt / chosen.dt, fewest->order);
+    choice.reason = method_info(chosen.method).name + " at " + std::to_string(choice.steps) + " steps of dt = " +
+                    format_number(choice.dt) + " s: predicted " + format_number(choice.predicted_error) + " " +
+                    error_measure_unit(request.measure) + " from its run over the whole horizon at " +
+                    std::to_string(chosen.steps) + " steps (certified " + format_number(chosen.error) +
+                    ", scaled by dt^" + format_number(fewest->order) + "), no method piloted (at most " +
+                    std::to_string(direct_plan_steps) + " steps: a pilot would cost more than it could save)";
+  }
   ToleranceCandidate candidate{chosen.method, chosen.order};
   const auto checked = [&](const SimulationOptions& x) {
     Records r = run(candidate, x);
@@ -584,7 +757,7 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
     quarter_options.record_every = common_records(final_run).steps_between / 4;
   }
   // (a grid's steps may round it up to the final run's: then it is no cheaper pilot, and none runs)
-  if (chosen.order > 0 && choice.steps / 4 >= 16 && 2 * quarter_options.steps <= choice.steps) {
+  if (direct_steps == 0 && chosen.order > 0 && choice.steps / 4 >= 16 && 2 * quarter_options.steps <= choice.steps) {
     SimulationOptions& o = quarter_options;
     o.dt = T / static_cast<double>(4 * o.steps) * 4.0;  // as coarse_options(final, 4) makes it, bit for bit
     PilotRun p;
@@ -625,11 +798,10 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
                        std::to_string(choice.steps) + " steps (predicted " + format_number(choice.predicted_error) +
                        (reuse ? "; that run is its 4h run)" : ")");
     } else {
-      const std::string why = bad < e.verdict.size() ? e.verdict[bad]
-                              : !sized ? "its error " + format_number(p.error) + " " +
-                                             error_measure_unit(request.measure) + " exceeds the size of the quantity " +
-                                             format_number(scale)
-                                       : "diverged";
+      const std::string too_large = "its error " + format_number(p.error) + " " +
+                                    error_measure_unit(request.measure) + " exceeds the size of the quantity " +
+                                    format_number(scale);
+      const std::string why = bad < e.verdict.size() ? e.verdict[bad] : !sized ? too_large : "diverged";
       p.verdict = "not asymptotic at dt = " + format_number(o.dt) + " s over the whole horizon: " + why +
                   " (the short pilot's prediction kept)";
     }
@@ -726,6 +898,14 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
   }
   choice.run_seconds = seconds_since(run_start);
   return out;
+}
+
+// run_to_tolerance where the model takes every candidate's method
+template <class Records, class Run>
+ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidates, const SimulationOptions& base,
+                                       const ToleranceRequest& request, Run&& run) {
+  return run_to_tolerance<Records>(std::move(candidates), base, request, std::forward<Run>(run),
+                                   [](const ToleranceCandidate&) { return true; });
 }
 
 }  // namespace rigiddyn
