@@ -439,7 +439,8 @@ tolerance : float or pint.Quantity, keyword-only, optional
 measure : str, keyword-only, optional
     The quantity the tolerance bounds, its largest estimate over the records (and bodies): 'attitude' [rad],
     'angular_velocity' [rad/s], 'position' [m], 'velocity' [m/s], 'energy' [J] or 'angular_momentum'
-    [kg m^2/s]. None (the default): 'position' for a Particle and a scene of particles, else 'attitude'.
+    [kg m^2/s]. None (the default): 'position' for a Particle and a scene of particles, else 'attitude'
+    (which, like 'angular_velocity', a scene of particles refuses: ValueError).
 max_steps : int, keyword-only, optional
     The cost cap of a run to a tolerance: no run (the final run and its refinement) of more steps, >= 4.
     None (the default): 10_000_000.

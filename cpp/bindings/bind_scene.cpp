@@ -1108,6 +1108,13 @@ py::object simulate_scene_to_tolerance(py::handle model, py::handle method, cons
                                        const CompiledSceneHandle& given, SimulationOptions base, const ToleranceArgs& a,
                                        py::handle progress, bool scalar_first, const std::optional<double>& level,
                                        py::handle controller) {
+  if ((a.measure == ErrorMeasure::attitude || a.measure == ErrorMeasure::angular_velocity) &&
+      default_scene_measure(given.scene) == ErrorMeasure::position) {  // its estimate would be round-off alone
+    py_io::throw_value_error("measure",
+                             "'position', 'velocity', 'energy' or 'angular_momentum' for a scene of particles "
+                             "(none has an attitude)",
+                             "'" + error_measure_name(a.measure) + "'");
+  }
   const std::string opaque = opaque_force(*given.compiled);
   if (!opaque.empty()) {
     refuse_tolerance(opaque, "a force the core cannot see into may switch inside a step, which the global error "

@@ -262,6 +262,18 @@ def test_bad_input_is_named(kwargs, match):
         rd.simulate(BODY, STATE, **kwargs)
 
 
+@pytest.mark.parametrize("measure", ["attitude", "angular_velocity"])
+def test_a_measure_of_attitude_is_refused_for_particles(measure):
+    # a particle has no attitude: its estimate would be the round-off bound alone, and the call a certificate of nothing
+    expected = rf"measure: expected 'position', .* for a scene of particles \(none has an attitude\), got '{measure}'"
+    with pytest.raises(ValueError, match=expected):
+        rd.simulate(rd.Particle(1.0), rd.ParticleState(v_W=[1.0, 0.0, 0.0]), duration=1.0, tolerance=1e-6,
+                    measure=measure)
+    scene, initial, run = rd.load_scene("rocket")
+    with pytest.raises(ValueError, match=expected):
+        rd.simulate(scene, initial, duration=run.duration, tolerance=1e-3, measure=measure)
+
+
 # each shipped scene over its file's duration (under its [controller], where it has one); the cluster (1000 bodies in
 # mutual gravity) over its first 1/32: its reference at a sixteenth of the step costs minutes over the whole
 SHIPPED_SCENES = [("box_on_springs", 1), ("cluster", 32), ("cubesat_detumbling", 1), ("cubesat_pointing", 1),
