@@ -484,7 +484,7 @@ std::optional<FewestStepsRun> fewest_steps_run(const std::vector<ToleranceCandid
 
 }  // namespace tolerance_detail
 
-// Runs to τ: tries the fewest steps over the whole horizon first (met_at_fewest_steps), else pilots each candidate
+// Runs to τ: tries the fewest steps over the whole horizon first (fewest_steps_run), else pilots each candidate
 // (highest order first, pruned by order_cost_figure), chooses the cheapest (method, dt) predicted to meet s τ, runs it
 // with its estimate and refines once when the certificate fails. `base` gives t0, record_every and the monitor (its
 // dt, steps and method are chosen here); run(candidate, options) returns the records of the model from its initial
