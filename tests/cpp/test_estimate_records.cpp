@@ -2,6 +2,7 @@
 // estimate reads are those of the same run recording every column, bit for bit, and so are the records the estimate
 // makes of them (error_records without the answer's round-off size); the columns nothing reads of it stay empty, in a
 // run and in a batch.
+#include "linked_bodies.hpp"
 #include "rigiddyn/batch/batch_global_error.hpp"
 #include "rigiddyn/batch/simulate_batch.hpp"
 #include "rigiddyn/scene/compile.hpp"
@@ -22,32 +23,7 @@
 namespace rigiddyn {
 namespace {
 
-// Three rigid bodies under gravity and drag, linked to each other and to a world anchor by springs attached off their
-// centres of mass (the generic model: works and impulses integrated), and their states.
-std::pair<Scene, std::vector<BodyState>> linked_bodies() {
-  Scene scene;
-  std::vector<BodyState> states;
-  for (int i = 0; i < 3; ++i) {
-    scene.bodies.emplace_back(RigidBody(1.0 + 0.5 * i, Eigen::Vector3d(1.0, 2.0, 3.0)));
-    RigidBodyState s;
-    s.p_W = Eigen::Vector3d(1.0 * i, 0.1 * i, 0.0);
-    s.v_W = Eigen::Vector3d(0.0, 0.2, 0.1 * i);
-    s.w_B = Eigen::Vector3d(0.1, 1.0 - 0.2 * i, 0.1);
-    states.emplace_back(s);
-  }
-  scene.elements.emplace_back(UniformGravity{Eigen::Vector3d(0.0, 0.0, -9.81), {}});
-  Drag drag;
-  drag.linear = 0.1, drag.angular_linear = 0.05;
-  scene.elements.emplace_back(drag);
-  for (int i = 0; i < 3; ++i) {
-    SpringDamper spring;
-    spring.body_a = i, spring.point_a_B = Eigen::Vector3d(0.1, 0.0, 0.05);
-    spring.body_b = i == 0 ? -1 : i - 1, spring.point_b = Eigen::Vector3d(0.0, 0.1, 0.0);
-    spring.stiffness = 20.0, spring.rest_length = 0.8, spring.damping = 0.3;
-    scene.elements.emplace_back(spring);
-  }
-  return {scene, states};
-}
+using test::linked_bodies;
 
 // A pivoted body, a pivoted planar body, a gyrostat with a wheel and a two-link tree on a free base under gravity, the
 // gyrostat on a spring to the tree's second link (the kinds whose records read more than the body's motion: a pivot's

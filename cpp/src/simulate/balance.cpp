@@ -158,12 +158,13 @@ void set_momenta(RunBalance& b, const SceneSimulation& r, const std::vector<doub
     if (i == 0) mv_sum0 = mv_sum, moments0 = moments;
     // the parts' size where they cancel (a gyrostat's body and wheels, H_C ~ 0): 2 T / |w| <= |H| of a turning body
     const double turning = w_max > 0 ? 2.0 * r.kinetic_energy[i] / w_max : 0.0;
-    const double linear_size_i = linear_size(mv_sum + norm3(J));
-    const double angular_size_i = angular_size(moments + norm3(K) + turning);
+    const double J_norm = norm3(J), K_norm = norm3(K);
+    const double linear_size_i = linear_size(mv_sum + J_norm);
+    const double angular_size_i = angular_size(moments + K_norm + turning);
     // the scale: the parts' momenta at t0 and the impulses so far, or the parts' largest momenta so far where those
     // are larger (a scene at rest at t0 set moving by internal forces: its totals stay 0 while its parts move)
-    b.scale(linear)[i] = std::max(mv_sum0 + largest_J(norm3(J)), linear_size_i);
-    b.scale(angular)[i] = std::max(moments0 + largest_K(norm3(K)), angular_size_i);
+    b.scale(linear)[i] = std::max(mv_sum0 + largest_J(J_norm), linear_size_i);
+    b.scale(angular)[i] = std::max(moments0 + largest_K(K_norm), angular_size_i);
     b.round_off(linear)[i] = round_off_of(linear_size_i, steps[i]);
     b.round_off(angular)[i] = round_off_of(angular_size_i, steps[i]);
   }

@@ -321,47 +321,84 @@ Differences differences(const ErrorRecords& h, const ErrorRecords& h2, const Err
 // The energy balance B = T − W, whose exact value is B(t0) at every t: its true error |B_h(t) − B_h(t0)| is known.
 // A Richardson estimate of it below half that (beyond the round-off) is shown wrong, and with it the estimates of
 // the run: its error is not in the leading term that the three runs see alike (e.g. a method that damps a
-// nutation at every step size tried, so that the runs agree with each other and not with the motion).
-void check_balance(CommonRecord& record, const ErrorRecords& h, const ErrorRecords& h2, const ErrorRecords& h4,
-                   std::size_t i, std::size_t j, double size, std::int64_t steps) {
+// nutation at every step size tried, so that the runs agree with each other and not with the motion). Returns the
+// reason a record is then not reliable ("" where the balance holds), for a method whose ratio r is 2^p
+// (expected_ratio).
+std::string balance_problem(double expected_ratio, const ErrorRecords& h, const ErrorRecords& h2,
+                            const ErrorRecords& h4, std::size_t i, std::size_t j, double size, std::int64_t steps) {
   const auto balance = [](const ErrorRecords& x, std::size_t a, const ErrorRecords& y, std::size_t c) {
     return std::abs(x.balance[a] - y.balance[c]);
   };
-  if (h2.balance.empty() || h4.balance.empty()) return;
+  if (h2.balance.empty() || h4.balance.empty()) return {};
   const Differences d = differences(h, h2, h4, i, j, size, steps, balance);
-  const double estimate = d.d1 / (record.expected_ratio() - 1.0);
+  const double estimate = d.d1 / (expected_ratio - 1.0);
   const double error = std::abs(h.balance[i] - h.balance[0]);
   if (std::isfinite(d.d1) && error > 2.0 * estimate + 2.0 * d.round_off) {
     Text text;
     text << "not asymptotic: the energy balance T - W is off by " << Text::general(error, 2)
          << " J where its estimate is " << Text::general(estimate, 2) << " J";
-    record.block(std::string(text.view()));
+    return std::string(text.view());
   }
+  return {};
 }
 
 // Whether an estimate restricted to `only` (none: every quantity) estimates `quantity`.
 bool estimates(std::optional<ErrorMeasure> only, ErrorMeasure quantity) { return !only || *only == quantity; }
 
+// The rows of one measure's estimate alone (its `only`), made beside those of every quantity from the same
+// differences (estimate_global_error_and_alone): its table and its measure.
+struct Alone {
+  CommonTable* table;
+  ErrorMeasure measure;
+};
+
+// The row of quantity `quantity` in `table`: its per-body array, or its column of the run (energy, |L|)
+std::vector<double>& values_of(CommonTable& table, ErrorMeasure quantity) {
+  switch (quantity) {
+    case ErrorMeasure::attitude: return table.attitude;
+    case ErrorMeasure::angular_velocity: return table.angular_velocity;
+    case ErrorMeasure::position: return table.position;
+    case ErrorMeasure::velocity: return table.velocity;
+    case ErrorMeasure::energy: return table.energy;
+    case ErrorMeasure::angular_momentum: return table.angular_momentum;
+  }
+  throw_invalid("quantity", "a rigiddyn::ErrorMeasure", static_cast<int>(quantity));
+}
+
 // Row j of `out`: the estimates of common record j (answer record i), for a method of order p (expected_ratio = 2^p),
-// of the quantities `only` allows (estimate_global_error).
-// (inlined into its one caller: out of line, its arguments passed at every record cost 6 % of a free body's estimate)
+// of the quantities `only` allows (estimate_global_error); with_alone: also row j of alone.table, the estimate of
+// alone.measure alone (`only` none), from the same differences, as estimate_common with `only` = alone.measure makes
+// it (its record's checks those of that measure and the energy balance's).
+// (inlined into its callers: out of line, its arguments passed at every record cost 6 % of a free body's estimate)
+template <bool with_alone>
 RIGIDDYN_ALWAYS_INLINE void estimate_common(const ErrorRecords& h, const ErrorRecords& h2, const ErrorRecords& h4,
                                             std::size_t i, std::size_t j, std::int64_t steps, double expected_ratio,
                                             const char* coarse_problem, std::optional<ErrorMeasure> only,
-                                            CommonTable& out) {
+                                            CommonTable& out, Alone alone) {
   CommonRecord record(expected_ratio, coarse_problem);
+  CommonRecord alone_record(expected_ratio, coarse_problem);  // (with_alone only)
+  const auto is_alone = [&](ErrorMeasure quantity) {
+    if constexpr (with_alone) {
+      return quantity == alone.measure;
+    } else {
+      return false;
+    }
+  };
   const std::int64_t nb = h.bodies;
   // the differences of a kind of quantity, body by body: their estimates, then their order checked together
   const auto kind = [&](std::vector<double>& values, ErrorMeasure quantity, const char* name, auto distance_of_body,
                         auto size_of_body) {
     CombinedDifferences bodies;
     double* row = values.data() + j * out.nb;
+    double* alone_row = is_alone(quantity) ? values_of(*alone.table, quantity).data() + j * out.nb : nullptr;
     for (std::int64_t b = 0; b < nb; ++b) {
       const Differences d = differences(h, h2, h4, i, j, size_of_body(b), steps, distance_of_body(b));
       bodies.add(d);
       row[b] = record.estimate(d);
+      if (alone_row != nullptr) alone_row[b] = alone_record.estimate(d);
     }
     record.check(bodies.total(), quantity, name);
+    if (alone_row != nullptr) alone_record.check(bodies.total(), quantity, name);
   };
   if (estimates(only, ErrorMeasure::attitude)) {
     kind(out.attitude, ErrorMeasure::attitude, "attitude",
@@ -399,28 +436,44 @@ RIGIDDYN_ALWAYS_INLINE void estimate_common(const ErrorRecords& h, const ErrorRe
     // a run whose step is beyond the stability limit gains energy exponentially: the run at 4h (the first to go)
     // then differs from the one at 2h by more than the whole energy |T| + |V| (a chaotic motion keeps its energy)
     if (std::isfinite(energy.d2) && energy.d2 > energy_size && energy_size > 0.0) {
-      record.block("step beyond the stability limit: the energy of the run at 4h departs from the run at 2h's by "
-                   "more than |T| + |V|");
+      const char* why = "step beyond the stability limit: the energy of the run at 4h departs from the run at 2h's by "
+                        "more than |T| + |V|";
+      record.block(why);
+      if (is_alone(ErrorMeasure::energy)) alone_record.block(why);
     }
     out.energy[j] = record.invariant(energy, ErrorMeasure::energy, "energy");
+    if (is_alone(ErrorMeasure::energy)) {
+      alone.table->energy[j] = alone_record.invariant(energy, ErrorMeasure::energy, "energy");
+    }
   }
   // the balance B = T − W rounds off at the size of its terms, not of B (released at rest, B = T(t0) = 0): |T| + |V|
   // and the work |W| = |T − B| done so far
   if (with_balance) {
-    check_balance(record, h, h2, h4, i, j, energy_size + std::abs(h.energy_scale[i] - h.balance[i]), steps);
+    const double balance_size = energy_size + std::abs(h.energy_scale[i] - h.balance[i]);
+    const std::string why = balance_problem(expected_ratio, h, h2, h4, i, j, balance_size, steps);
+    if (!why.empty()) {
+      record.block(why);
+      if constexpr (with_alone) alone_record.block(why);
+    }
   }
   if (estimates(only, ErrorMeasure::angular_momentum)) {
     const auto momentum = [](const ErrorRecords& x, std::size_t a, const ErrorRecords& y, std::size_t c) {
       return std::abs(x.momentum[a] - y.momentum[c]);
     };
     const double momentum_size = h.momentum_scale.empty() ? h.momentum[i] : h.momentum_scale[i];
-    out.angular_momentum[j] =
-        record.invariant(differences(h, h2, h4, i, j, momentum_size, steps, momentum), ErrorMeasure::angular_momentum,
-                         "angular momentum");
+    const Differences d = differences(h, h2, h4, i, j, momentum_size, steps, momentum);
+    out.angular_momentum[j] = record.invariant(d, ErrorMeasure::angular_momentum, "angular momentum");
+    if (is_alone(ErrorMeasure::angular_momentum)) {
+      alone.table->angular_momentum[j] = alone_record.invariant(d, ErrorMeasure::angular_momentum, "angular momentum");
+    }
   }
-  out.observed_order[j] = record.observed_order();
-  out.reliable_quantities[j] = record.reliable_quantities();
-  record.put_verdict(out.verdict, out.not_asymptotic, out.reliable_text, j, out.observed_order[j]);
+  const auto put = [j](const CommonRecord& r, CommonTable& table) {
+    table.observed_order[j] = r.observed_order();
+    table.reliable_quantities[j] = r.reliable_quantities();
+    r.put_verdict(table.verdict, table.not_asymptotic, table.reliable_text, j, table.observed_order[j]);
+  };
+  put(record, out);
+  if constexpr (with_alone) put(alone_record, *alone.table);
 }
 
 // "0.25 s" (3 significant digits).
@@ -710,33 +763,57 @@ SimulationOptions coarse_options(const SimulationOptions& answer, int factor) {
   return o;
 }
 
-GlobalErrorEstimate estimate_global_error(const ErrorRecords& h, const ErrorRecords& h2, const ErrorRecords& h4,
-                                          const SimulationOptions& answer, int order, const std::string& opaque,
-                                          std::optional<ErrorMeasure> only) {
-  if (order < 1) throw_invalid("order", "an integer >= 1", order);
-  GlobalErrorEstimate out;
-  out.order = order, out.bodies = h.bodies;
-  const CommonRecords grid = common_records(answer);
-  const std::size_t stride = grid.stride;  // answer records per common record
-  // the common records the answer has: j = 0 .. last (answer record grid.answer_record(j))
-  std::size_t last = grid.count - 1;
-  while (last > 0 && grid.answer_record(last) >= h.n) --last;
-  const std::size_t last_i = grid.answer_record(last);  // its answer record
-  const auto nb = static_cast<std::size_t>(std::max<std::int64_t>(h.bodies, 0));
-  CommonTable common(h.n > 0 ? last + 1 : 0, nb, order);
+namespace {
+
+// The common records of an estimate from the answer's records h (n of them): their grid, the last the answer has
+// (j = 0 .. last, answer record grid.answer_record(j)) and its answer record.
+struct CommonGrid {
+  CommonRecords grid;
+  std::size_t last = 0, last_i = 0;
+
+  CommonGrid(const ErrorRecords& h, const SimulationOptions& answer) : grid(common_records(answer)) {
+    last = grid.count - 1;
+    while (last > 0 && grid.answer_record(last) >= h.n) --last;
+    last_i = grid.answer_record(last);
+  }
+  std::size_t rows(const ErrorRecords& h) const { return h.n > 0 ? last + 1 : 0; }
+};
+
+// The rows of the common records (estimate_common) into `common` and, with_alone, into alone.table; a force the core
+// cannot see into (`opaque`) leaves no record reliable in either.
+template <bool with_alone>
+void estimate_commons(const ErrorRecords& h, const ErrorRecords& h2, const ErrorRecords& h4,
+                      const SimulationOptions& answer, int order, const std::string& opaque,
+                      std::optional<ErrorMeasure> only, const CommonGrid& at, CommonTable& common, Alone alone) {
   const double expected_ratio = std::ldexp(1.0, order);
-  for (std::size_t j = 0; j <= last && h.n > 0; ++j) {
-    const std::size_t i = grid.answer_record(j);
+  const auto hide = [&](CommonTable& table, std::size_t j) {
+    if (is_reliable(table.verdict[j])) {
+      table.verdict.set(j, "not verified: " + opaque +
+                               " may switch inside a step, which the runs at h, 2h and 4h can all miss alike");
+    }
+    table.reliable_quantities[j] = 0;
+  };
+  for (std::size_t j = 0; j <= at.last && h.n > 0; ++j) {
+    const std::size_t i = at.grid.answer_record(j);
     const char* problem = j >= h2.n   ? "step beyond the stability limit: the run at 2h diverged"
                           : j >= h4.n ? "step beyond the stability limit: the run at 4h diverged"
                                       : nullptr;
-    estimate_common(h, h2, h4, i, j, step_of(i, answer), expected_ratio, problem, only, common);
-    if (!opaque.empty() && is_reliable(common.verdict[j])) {
-      common.verdict.set(j, "not verified: " + opaque +
-                                " may switch inside a step, which the runs at h, 2h and 4h can all miss alike");
-    }
-    if (!opaque.empty()) common.reliable_quantities[j] = 0;
+    estimate_common<with_alone>(h, h2, h4, i, j, step_of(i, answer), expected_ratio, problem, only, common, alone);
+    if (opaque.empty()) continue;
+    hide(common, j);
+    if constexpr (with_alone) hide(*alone.table, j);
   }
+}
+
+// The estimate of every record of the answer h from its common rows `common` (estimate_commons): the growth past the
+// Lyapunov time named, and the records between the common ones interpolated, those after them extrapolated.
+GlobalErrorEstimate estimate_from_commons(const ErrorRecords& h, const SimulationOptions& answer, int order,
+                                          const CommonGrid& at, CommonTable&& common) {
+  GlobalErrorEstimate out;
+  out.order = order, out.bodies = h.bodies;
+  const CommonRecords& grid = at.grid;
+  const std::size_t stride = grid.stride;  // answer records per common record
+  const std::size_t last = at.last, last_i = at.last_i;
   name_exponential_growth(common, h.t, grid);
   const CommonVerdicts verdicts(std::move(common.verdict), out.verdict);
   out.verdict.reserve(h.n);
@@ -779,6 +856,30 @@ GlobalErrorEstimate estimate_global_error(const ErrorRecords& h, const ErrorReco
     put_rows(out, common, sources);
   }
   return out;
+}
+
+}  // namespace
+
+GlobalErrorEstimate estimate_global_error(const ErrorRecords& h, const ErrorRecords& h2, const ErrorRecords& h4,
+                                          const SimulationOptions& answer, int order, const std::string& opaque,
+                                          std::optional<ErrorMeasure> only) {
+  if (order < 1) throw_invalid("order", "an integer >= 1", order);
+  const CommonGrid at(h, answer);
+  CommonTable common(at.rows(h), static_cast<std::size_t>(std::max<std::int64_t>(h.bodies, 0)), order);
+  estimate_commons<false>(h, h2, h4, answer, order, opaque, only, at, common, Alone{nullptr, ErrorMeasure::attitude});
+  return estimate_from_commons(h, answer, order, at, std::move(common));
+}
+
+std::pair<GlobalErrorEstimate, GlobalErrorEstimate> estimate_global_error_and_alone(
+    const ErrorRecords& h, const ErrorRecords& h2, const ErrorRecords& h4, const SimulationOptions& answer, int order,
+    ErrorMeasure measure) {
+  if (order < 1) throw_invalid("order", "an integer >= 1", order);
+  const CommonGrid at(h, answer);
+  const auto nb = static_cast<std::size_t>(std::max<std::int64_t>(h.bodies, 0));
+  CommonTable common(at.rows(h), nb, order), alone(at.rows(h), nb, order);
+  estimate_commons<true>(h, h2, h4, answer, order, {}, std::nullopt, at, common, Alone{&alone, measure});
+  return {estimate_from_commons(h, answer, order, at, std::move(common)),
+          estimate_from_commons(h, answer, order, at, std::move(alone))};
 }
 
 GlobalErrorEstimate no_estimate(std::size_t n, std::int64_t bodies, int order, std::string_view why) {

@@ -42,11 +42,6 @@ bool any_record_says(const Verdicts& verdicts, Predicate says) {
 
 }  // namespace
 
-GlobalErrorEstimate estimate_of_measure(const ErrorRecords& h, const ErrorRecords& h2, const ErrorRecords& h4,
-                                        const SimulationOptions& answer, int order, ErrorMeasure measure) {
-  return estimate_global_error(h, h2, h4, answer, order, {}, measure);
-}
-
 std::string refinements_text(int refinements) {
   return refinements == 1 ? "the refinement" : std::to_string(refinements) + " refinements";
 }

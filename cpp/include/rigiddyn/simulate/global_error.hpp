@@ -193,6 +193,13 @@ GlobalErrorEstimate estimate_global_error(const ErrorRecords& h, const ErrorReco
                                           const SimulationOptions& answer, int order, const std::string& opaque = {},
                                           std::optional<ErrorMeasure> only = std::nullopt);
 
+// The estimate of every quantity and that of `measure` alone: estimate_global_error's (`only` none) and its estimate
+// with `only` = measure, bit for bit, from one pass over the common records, each difference of the runs taken once for
+// both (the estimates a run to a tolerance reads: simulate/tolerance.hpp MeasuredEstimate).
+std::pair<GlobalErrorEstimate, GlobalErrorEstimate> estimate_global_error_and_alone(
+    const ErrorRecords& h, const ErrorRecords& h2, const ErrorRecords& h4, const SimulationOptions& answer, int order,
+    ErrorMeasure measure);
+
 // The estimates of `measure` in e: (n, nb) for the state quantities, (n,) for the energy and |L|.
 const std::vector<double>& values_of(const GlobalErrorEstimate& e, ErrorMeasure measure);
 

@@ -215,14 +215,11 @@ std::string refinements_text(int refinements);
 // relative^(−1/p) steps times `evaluations` per step (the order pruning's figure).
 double order_cost_figure(int order, int evaluations, double relative);
 
-// The estimate of one measure alone (estimate_global_error's `only`: the other quantities neither estimated nor
-// checked), so that its verdicts check the observed order of `measure` only. (A record-wide verdict also checks the
-// other quantities: rk4's energy error on a free body falls faster than dt^4 at a coarse step, which says nothing
-// of the attitude's estimate.)
-GlobalErrorEstimate estimate_of_measure(const ErrorRecords& h, const ErrorRecords& h2, const ErrorRecords& h4,
-                                        const SimulationOptions& answer, int order, ErrorMeasure measure);
-
-// The estimates of a run: every quantity's (result.error) and the measure's alone (its certificate).
+// The estimates of a run: every quantity's (result.error) and the measure's alone (its certificate:
+// estimate_global_error with `only`, the other quantities neither estimated nor checked), so that the certificate's
+// verdicts check the observed order of the measure only. (A record-wide verdict also checks the other quantities:
+// rk4's energy error on a free body falls faster than dt^4 at a coarse step, which says nothing of the attitude's
+// estimate.) Both from one pass over the common records (estimate_global_error_and_alone).
 struct MeasuredEstimate {
   GlobalErrorEstimate all, measure;
 };
@@ -256,8 +253,8 @@ MeasuredEstimate measured_global_error(const Records& answer, const SimulationOp
   const Records four_times = run(coarse_options(options, 4));
   const ErrorRecords h = answer_records(answer, options, order), h2 = coarse_records(twice),
                      h4 = coarse_records(four_times);
-  MeasuredEstimate out{estimate_global_error(h, h2, h4, options, order),
-                       estimate_of_measure(h, h2, h4, options, order, measure)};
+  auto [all, alone] = estimate_global_error_and_alone(h, h2, h4, options, order, measure);
+  MeasuredEstimate out{std::move(all), std::move(alone)};
   keep_stability_verdicts(out.all, out.measure);
   keep_low_orders_refused(out.all, measure, out.measure);
   return out;
