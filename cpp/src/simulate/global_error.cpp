@@ -352,9 +352,11 @@ struct Alone {
   ErrorMeasure measure;
 };
 
-// The row of quantity `quantity` in `table`: its per-body array, or its column of the run (energy, |L|)
-std::vector<double>& values_of(CommonTable& table, ErrorMeasure quantity) {
-  switch (quantity) {
+// The values of `measure` in a table of an estimate's quantities (a GlobalErrorEstimate, or the CommonTable of its
+// common records: the same fields), const or not: (rows, nb) for the state quantities, (rows,) for the energy and |L|
+template <class Table>
+auto& measure_values(Table& table, ErrorMeasure measure) {
+  switch (measure) {
     case ErrorMeasure::attitude: return table.attitude;
     case ErrorMeasure::angular_velocity: return table.angular_velocity;
     case ErrorMeasure::position: return table.position;
@@ -362,7 +364,7 @@ std::vector<double>& values_of(CommonTable& table, ErrorMeasure quantity) {
     case ErrorMeasure::energy: return table.energy;
     case ErrorMeasure::angular_momentum: return table.angular_momentum;
   }
-  throw_invalid("quantity", "a rigiddyn::ErrorMeasure", static_cast<int>(quantity));
+  throw_invalid("measure", "a rigiddyn::ErrorMeasure", static_cast<int>(measure));
 }
 
 // Row j of `out`: the estimates of common record j (answer record i), for a method of order p (expected_ratio = 2^p),
@@ -390,7 +392,7 @@ RIGIDDYN_ALWAYS_INLINE void estimate_common(const ErrorRecords& h, const ErrorRe
                         auto size_of_body) {
     CombinedDifferences bodies;
     double* row = values.data() + j * out.nb;
-    double* alone_row = is_alone(quantity) ? values_of(*alone.table, quantity).data() + j * out.nb : nullptr;
+    double* alone_row = is_alone(quantity) ? measure_values(*alone.table, quantity).data() + j * out.nb : nullptr;
     for (std::int64_t b = 0; b < nb; ++b) {
       const Differences d = differences(h, h2, h4, i, j, size_of_body(b), steps, distance_of_body(b));
       bodies.add(d);
@@ -655,15 +657,7 @@ void name_exponential_growth(CommonTable& common, const double* t, const CommonR
 }  // namespace
 
 const std::vector<double>& values_of(const GlobalErrorEstimate& e, ErrorMeasure measure) {
-  switch (measure) {
-    case ErrorMeasure::attitude: return e.attitude;
-    case ErrorMeasure::angular_velocity: return e.angular_velocity;
-    case ErrorMeasure::position: return e.position;
-    case ErrorMeasure::velocity: return e.velocity;
-    case ErrorMeasure::energy: return e.energy;
-    case ErrorMeasure::angular_momentum: return e.angular_momentum;
-  }
-  throw_invalid("measure", "a rigiddyn::ErrorMeasure", static_cast<int>(measure));
+  return measure_values(e, measure);
 }
 
 ErrorRecords error_records(const Trajectory& r) {
