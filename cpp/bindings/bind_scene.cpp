@@ -1435,14 +1435,16 @@ void bind_scene(py::module_& m) {
               d["reads_attitude"] = t.reads_attitude, d["velocity_dependent"] = t.velocity_dependent;
               d["time_dependent"] = t.time_dependent, d["has_potential"] = t.has_potential, d["has_torque"] = t.has_torque;
               d["has_force"] = t.has_force, d["needs_attitude"] = t.needs_attitude;
+              d["zero_net_wrench"] = t.zero_net_wrench;
               out.append(d);
             }
             return py::tuple(out);
           },
           "tuple of dict, one per compiled term in the order of SceneResult.work's columns (the scene's elements, "
           "then the frame's fictitious terms): reads_attitude, velocity_dependent, time_dependent, has_potential "
-          "(its forces derive from a potential energy), has_torque, has_force and needs_attitude (it skips particles) "
-          "(bool each)")
+          "(its forces derive from a potential energy), has_torque, has_force, needs_attitude (it skips particles) and "
+          "zero_net_wrench (its forces sum to zero and so do their moments: internal forces, which add nothing to the "
+          "impulses) (bool each)")
       .def(
           "describe",
           [](py::object self) { return py::module_::import("rigiddyn.scene_describe").attr("describe")(self); },

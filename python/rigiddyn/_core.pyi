@@ -5691,7 +5691,7 @@ class CompiledScene:
     @property
     def element_traits(self) -> tuple:
         """
-        tuple of dict, one per compiled term in the order of SceneResult.work's columns (the scene's elements, then the frame's fictitious terms): reads_attitude, velocity_dependent, time_dependent, has_potential (its forces derive from a potential energy), has_torque, has_force and needs_attitude (it skips particles) (bool each)
+        tuple of dict, one per compiled term in the order of SceneResult.work's columns (the scene's elements, then the frame's fictitious terms): reads_attitude, velocity_dependent, time_dependent, has_potential (its forces derive from a potential energy), has_torque, has_force, needs_attitude (it skips particles) and zero_net_wrench (its forces sum to zero and so do their moments: internal forces, which add nothing to the impulses) (bool each)
         """
     @property
     def method(self) -> str:

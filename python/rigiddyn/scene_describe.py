@@ -236,7 +236,8 @@ def _properties(traits: dict[str, bool] | None) -> str:
         return "-"
     props = [name for name, on in (("potential", traits["has_potential"]),
                                    ("velocity-dependent", traits["velocity_dependent"]),
-                                   ("time-dependent", traits["time_dependent"])) if on]
+                                   ("time-dependent", traits["time_dependent"]),
+                                   ("internal", traits["zero_net_wrench"])) if on]
     return ", ".join(props) or "-"
 
 

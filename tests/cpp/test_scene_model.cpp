@@ -8,6 +8,7 @@
 #include "rigiddyn/scene/simulate_scene.hpp"
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -132,6 +133,30 @@ TEST(SceneModel, AParticleCostsNoAttitude) {
   }
 }
 
+// A run by `method` of `steps` steps of dt [s], recording every `record_every`-th
+SimulationOptions run_options(Method method, double dt, std::int64_t steps, std::int64_t record_every) {
+  SimulationOptions o;
+  o.method = method, o.dt = dt, o.steps = steps, o.record_every = record_every;
+  return o;
+}
+
+// States at positions[b] [m] and velocities[b] [m/s] (in W): particles for b < particles, then rigid bodies turning at
+// w_B = (0.2, -0.1, 0.5) rad/s.
+std::vector<BodyState> moving_states(const std::vector<Eigen::Vector3d>& positions,
+                                     const std::vector<Eigen::Vector3d>& velocities, std::size_t particles) {
+  std::vector<BodyState> states;
+  for (std::size_t b = 0; b < positions.size(); ++b) {
+    if (b < particles) {
+      states.push_back(ParticleState{positions[b], velocities[b]});
+    } else {
+      RigidBodyState r;
+      r.p_W = positions[b], r.v_W = velocities[b], r.w_B = Eigen::Vector3d(0.2, -0.1, 0.5);
+      states.push_back(r);
+    }
+  }
+  return states;
+}
+
 // MutualGravity between particles and rigid bodies: Σ m v is conserved to round-off by every method
 // (the pair forces cancel in every kick and every stage; the methods are linear in the forces).
 TEST(SceneModel, NBodyMomentumIsConservedToRoundoff) {
@@ -139,26 +164,12 @@ TEST(SceneModel, NBodyMomentumIsConservedToRoundoff) {
   scene.bodies = {Particle(1.0), Particle(2.0), Particle(0.5), RigidBody(1.5, Eigen::Vector3d(1.0, 2.0, 3.0)),
                   RigidBody(0.8, Eigen::Vector3d(0.5, 0.5, 0.5))};
   scene.elements.push_back(MutualGravity{1.0, 0.05, {}});
-  std::vector<BodyState> initial;
-  const Eigen::Vector3d positions[] = {{1.0, 0.0, 0.0}, {-1.0, 0.5, 0.0}, {0.0, -1.0, 0.3}, {0.3, 0.2, 1.0}, {-0.4, -0.3, -1.0}};
-  const Eigen::Vector3d velocities[] = {{0.0, 0.5, 0.1}, {0.1, -0.3, 0.0}, {0.4, 0.0, -0.2}, {0.0, 0.0, 0.3}, {-0.2, 0.1, 0.0}};
-  for (int b = 0; b < 5; ++b) {
-    if (b < 3) {
-      initial.push_back(ParticleState{positions[b], velocities[b]});
-    } else {
-      RigidBodyState r;
-      r.p_W = positions[b], r.v_W = velocities[b], r.w_B = Eigen::Vector3d(0.2, -0.1, 0.5);
-      initial.push_back(r);
-    }
-  }
+  const std::vector<BodyState> initial =
+      moving_states({{1.0, 0.0, 0.0}, {-1.0, 0.5, 0.0}, {0.0, -1.0, 0.3}, {0.3, 0.2, 1.0}, {-0.4, -0.3, -1.0}},
+                    {{0.0, 0.5, 0.1}, {0.1, -0.3, 0.0}, {0.4, 0.0, -0.2}, {0.0, 0.0, 0.3}, {-0.2, 0.1, 0.0}}, 3);
   for (const Method method : stepping_methods()) {
     SCOPED_TRACE(method_info(method).name);
-    SimulationOptions o;
-    o.method = method;
-    o.dt = 1e-3;
-    o.steps = 500;
-    o.record_every = 500;
-    const SceneSimulation run = simulate(scene, initial, o);
+    const SceneSimulation run = simulate(scene, initial, run_options(method, 1e-3, 500, 500));
     ASSERT_EQ(run.size(), 2u);
     // Bound: every step updates each v_b by a Δv_b whose Σ m_b Δv_b is 0 up to the rounding of each term,
     // ≤ 4 ε m_b |v_b| per body and step (|v| ≤ 3 m/s here, Σ m = 5.8 kg); the implicit midpoint's fixed point
@@ -166,6 +177,48 @@ TEST(SceneModel, NBodyMomentumIsConservedToRoundoff) {
     const double per_step = method == Method::implicit_midpoint ? 1e-14 : 4.0 * kEps;
     const double bound = 500.0 * per_step * 5.8 * 3.0;
     for (int i = 0; i < 3; ++i) EXPECT_NEAR(run.linear_momentum_W[3 + i], run.linear_momentum_W[i], bound);
+  }
+}
+
+// Elements that are internal alone (ElementTraits zero_net_wrench: mutual gravity, springs between bodies) leave the
+// impulses at 0, exactly, without summing them; the motion and the works are those of the same scene with a term
+// that has a net wrench (a zero UniformGravity, which makes the model sum the impulses): the same bits, under every
+// method but the implicit midpoint, whose fixed point stops on the norm of every coordinate, the extra work's too.
+// (That each element's forces and moments cancel is test_scene_elements.cpp's, beside its trait.)
+TEST(SceneModel, InternalElementsAloneLeaveTheImpulsesAtZero) {
+  Scene internal;
+  internal.bodies = {Particle(1.0), Particle(2.0), RigidBody(1.5, Eigen::Vector3d(1.0, 2.0, 3.0)),
+                     RigidBody(0.8, Eigen::Vector3d(0.5, 0.6, 0.7))};
+  internal.elements.push_back(MutualGravity{1.0, 0.05, {}});
+  const Eigen::Vector3d offset_2(0.1, 0.2, 0.0), offset_3(0.0, -0.1, 0.3), other_offset_2(0.2, 0.0, 0.1);
+  internal.elements.push_back(SpringDamper{2, offset_2, 3, offset_3, 5.0, 0.5, 0.2});
+  internal.elements.push_back(SpringDamper{0, Eigen::Vector3d::Zero(), 2, other_offset_2, 3.0, 1.0, 0.1});
+  Scene summed = internal;
+  summed.elements.push_back(UniformGravity{Eigen::Vector3d::Zero(), {}});
+  const std::vector<BodyState> initial =
+      moving_states({{1.0, 0.0, 0.0}, {-1.0, 0.5, 0.0}, {0.3, 0.2, 1.0}, {-0.4, -0.3, -1.0}},
+                    {{0.0, 0.5, 0.1}, {0.1, -0.3, 0.0}, {0.0, 0.0, 0.3}, {-0.2, 0.1, 0.0}}, 2);
+  const std::size_t elements = internal.elements.size();
+  for (const Method method : stepping_methods()) {
+    SCOPED_TRACE(method_info(method).name);
+    const SimulationOptions o = run_options(method, 1e-2, 200, 50);
+    const SceneSimulation run = simulate(internal, initial, o), reference = simulate(summed, initial, o);
+    ASSERT_EQ(run.size(), 5u);
+    ASSERT_EQ(run.impulse_W.size(), 3 * run.size());
+    for (std::size_t i = 0; i < run.impulse_W.size(); ++i) {
+      EXPECT_EQ(run.impulse_W[i], 0.0);
+      EXPECT_EQ(run.angular_impulse_W[i], 0.0);
+    }
+    if (method == Method::implicit_midpoint) continue;
+    EXPECT_EQ(run.p_W, reference.p_W);
+    EXPECT_EQ(run.q_WB, reference.q_WB);
+    EXPECT_EQ(run.v_W, reference.v_W);
+    EXPECT_EQ(run.w_B, reference.w_B);
+    for (std::size_t i = 0; i < run.size(); ++i) {
+      for (std::size_t e = 0; e < elements; ++e) {
+        EXPECT_EQ(run.work[i * elements + e], reference.work[i * (elements + 1) + e]);
+      }
+    }
   }
 }
 

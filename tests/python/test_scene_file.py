@@ -364,6 +364,9 @@ def test_describe_tables_bodies_terms_frame_method_units():
     assert "box" in text and "rigid" in text and "diag(0.866667, 1.93333, 2.26667)" in text
     rows = [line for line in text.splitlines() if "SpringDamper" in line]
     assert len(rows) == 4 and all("f+tau" in r and "velocity-dependent" in r for r in rows)  # corner springs
+    assert not any("internal" in r for r in rows)  # each hangs the box from a world anchor, which takes its reaction
+    three_body, _, _ = load_scene("three_body")
+    assert "potential, internal" in three_body.describe()  # mutual gravity: its pair forces cancel
     assert "Method" not in text
     assert "Method: rk4" in scene.describe("rk4") and "accepted" in scene.describe("rk4")
     compiled = scene.compile("rk4")

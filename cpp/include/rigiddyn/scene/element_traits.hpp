@@ -12,6 +12,10 @@ struct ElementTraits {
   bool has_torque;          // it may produce a non-zero tau_B
   bool has_force = true;        // it may produce a non-zero f_W
   bool needs_attitude = false;  // it acts only on bodies with an attitude (it skips particles)
+  // its forces on the bodies sum to zero, and so do their moments about any point: internal forces, equal and opposite
+  // along the line through their points of application (Newton's third law in its strong form), which add nothing to
+  // the scene's impulses
+  bool zero_net_wrench = false;
 };
 
 }  // namespace rigiddyn

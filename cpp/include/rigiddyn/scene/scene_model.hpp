@@ -19,7 +19,8 @@
 // Rigid-body notes §4.11, f = dp/dt (4.36); Craig, impulse–momentum). They are integrated with the motion
 // exactly as the works are (the same stages, kicks and drifts), so that the momentum balances of the records
 // close to the method's error. Internal elements (mutual gravity, a spring between two bodies) add equal and
-// opposite wrenches: their net impulse is zero.
+// opposite wrenches: their net impulse is zero, and a scene of such elements alone (ElementTraits zero_net_wrench)
+// keeps its impulses at 0, exactly, without summing them.
 // Tangent ξ: per body (particle v_W, a_W; planar the 6 rates; rigid v_W, w_B, a_W, alpha_B; pivoted
 // w_B, alpha_B; pivoted planar ω, α; gyrostat v_W, w_B, a_W, alpha_B, the wheels' accelerations, the motors'
 // powers), then dt/dt = 1, then each element's power [W], then each mass-flow power [W], then the resultant force
@@ -193,6 +194,9 @@ class BasicSceneModel {
     });
     turns_vectors_ = std::any_of(terms_.begin(), terms_.end(), [](const Term& term) {
       return std::visit([](const auto& e) { return detail::turns_vectors(e); }, term);
+    });
+    integrates_impulses_ = std::any_of(terms_.begin(), terms_.end(), [](const Term& term) {
+      return std::visit([](const auto& e) { return !e.traits().zero_net_wrench; }, term);
     });
     const bool user_force = std::any_of(terms_.begin(), terms_.end(), [](const Term& term) {
       return std::visit([](const auto& e) { return detail::is_user_force<std::decay_t<decltype(e)>>::value; }, term);
@@ -679,8 +683,10 @@ class BasicSceneModel {
 
   // out[0..2] += h Σ_b f_b [N], out[3..5] += h Σ_b (p_b × f_b + R_WB,b τ_B,b) [N m] (the moment about W's origin)
   // of wrenches_ at kinematics_ (τ_B = 0 when no term turns vectors: none gives a torque) and of the gravity the trees
-  // apply to their links
+  // apply to their links; nothing where every term's wrenches sum to zero (integrates_impulses_), whose impulses then
+  // stay 0, their exact value, at no cost per evaluation (an N-body cluster, bodies linked by springs alone)
   void add_impulses(double* out, double h) const {
+    if (!integrates_impulses_) return;
     std::size_t b = 0;
     for (const detail::TreeSlot& tree : std::get<std::vector<detail::TreeSlot>>(slots_)) {
       if (!tree.unloaded) continue;  // its links' wrenches are zero: skipped
@@ -827,6 +833,7 @@ class BasicSceneModel {
   std::size_t wheel_count_ = 0;
   bool kicks_merge_ = false;       // kicks_merge()
   bool turns_vectors_ = false;     // some term reads an attitude or gives a torque: kinematics_ carry R_WB
+  bool integrates_impulses_ = true;  // some term's wrenches have a net force or moment (ElementTraits zero_net_wrench)
   // scratch, sized here (an evaluation allocates nothing)
   mutable std::vector<BodyKinematics> kinematics_;
   mutable std::vector<BodyWrench> wrenches_;

@@ -75,6 +75,7 @@ class MutualGravityTerm {
     ElementTraits t{};
     t.reads_attitude = false, t.velocity_dependent = false, t.time_dependent = false;
     t.has_potential = true, t.has_torque = false;
+    t.zero_net_wrench = true;  // each pair's forces are opposite, along the line between the two centres of mass
     return t;
   }
 

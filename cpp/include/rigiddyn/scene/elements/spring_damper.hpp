@@ -114,6 +114,7 @@ class SpringDamperTerm {
     ElementTraits t{};
     t.reads_attitude = offset, t.velocity_dependent = c_ > 0.0, t.time_dependent = false;
     t.has_potential = true, t.has_torque = offset;
+    t.zero_net_wrench = b_ >= 0;  // f_a and −f_a along d = x_a − x_b: their moment (x_a − x_b) × f_a = 0
     return t;
   }
 
