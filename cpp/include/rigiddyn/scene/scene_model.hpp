@@ -282,6 +282,11 @@ class BasicSceneModel {
     add_impulses(dy.data() + t_y_ + impulse_offset(), 1.0);
   }
 
+  // Evaluations that sum no impulse (they stay as they are in y), for a run that records none: a coarse run of the
+  // global error estimate (SimulationOptions::estimate_records, simulate/run_loop.hpp). Nothing else reads them, so
+  // the bodies, the works and every other record are the same bits, at the cost of the motion and the works alone.
+  void leave_out_impulses() { integrates_impulses_ = false; }
+
   // every attitude q ← q / |q|
   void project(Coordinates& y) const {
     for_each_slot([&](const auto& s) { s.project(y.data()); });
@@ -684,7 +689,8 @@ class BasicSceneModel {
   // out[0..2] += h Σ_b f_b [N], out[3..5] += h Σ_b (p_b × f_b + R_WB,b τ_B,b) [N m] (the moment about W's origin)
   // of wrenches_ at kinematics_ (τ_B = 0 when no term turns vectors: none gives a torque) and of the gravity the trees
   // apply to their links; nothing where every term's wrenches sum to zero (integrates_impulses_), whose impulses then
-  // stay 0, their exact value, at no cost per evaluation (an N-body cluster, bodies linked by springs alone)
+  // stay 0, their exact value, at no cost per evaluation (an N-body cluster, bodies linked by springs alone), nor in a
+  // run that records none (leave_out_impulses)
   void add_impulses(double* out, double h) const {
     if (!integrates_impulses_) return;
     std::size_t b = 0;
@@ -833,7 +839,8 @@ class BasicSceneModel {
   std::size_t wheel_count_ = 0;
   bool kicks_merge_ = false;       // kicks_merge()
   bool turns_vectors_ = false;     // some term reads an attitude or gives a torque: kinematics_ carry R_WB
-  bool integrates_impulses_ = true;  // some term's wrenches have a net force or moment (ElementTraits zero_net_wrench)
+  // some term's wrenches have a net force or moment (ElementTraits zero_net_wrench), and the run records the impulses
+  bool integrates_impulses_ = true;
   // scratch, sized here (an evaluation allocates nothing)
   mutable std::vector<BodyKinematics> kinematics_;
   mutable std::vector<BodyWrench> wrenches_;

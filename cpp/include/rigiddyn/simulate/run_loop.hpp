@@ -149,6 +149,14 @@ struct has_record_after_kick<Model, Result, std::void_t<decltype(std::declval<co
                                                 std::declval<const typename Model::Coordinates&>(), 0.0,
                                                 std::declval<Result&>()))>> : std::true_type {};
 
+// Whether a model can leave the impulses out of its evaluations (leave_out_impulses: the generic model), which a
+// coarse run of the global error estimate records none of (SimulationOptions::estimate_records)
+template <class Model, class = void>
+struct leaves_out_impulses : std::false_type {};
+template <class Model>
+struct leaves_out_impulses<Model, std::void_t<decltype(std::declval<Model&>().leave_out_impulses())>>
+    : std::true_type {};
+
 // How merged steps start: from a closed state, from one left open (the last step's closing kick still to give:
 // merged with this first step's opening kick), or from one that the merged steps just before closed for a record
 // alone (the opening kick at the closing kick's positions, attitudes, t and loads: where the model keeps that kick's
@@ -248,6 +256,9 @@ SwitchGrid model_switch_grid(const SimulationOptions& o, const std::vector<Appli
 template <class Integrator, class Model, class Pieces, class Result>
 Result run(Model model, typename Model::Coordinates y, const SimulationOptions& o, const Pieces& pieces, Result out) {
   const SwitchGrid switches = model_switch_grid<Model>(o, pieces.schedule);
+  if constexpr (leaves_out_impulses<Model>::value) {
+    if (o.estimate_records) model.leave_out_impulses();  // the run's own copy: the bodies move bitwise as before
+  }
   pieces.set_piece(model, o.t0);
   append_state(out, o.t0, model, y);
   Workspace<Integrator, Model> workspace(model, y);
