@@ -133,8 +133,10 @@ predicted_error : float
     The error the pilot's fit predicted for the first final run, in the measure's unit (where the run at the
     fewest steps, tried first, met the tolerance: its own estimate).
 certified_error : float
-    The largest global error estimate of the measure over the records (and bodies) of the final run (NaN where a
-    record has none).
+    The largest global error estimate of the measure over the records (and bodies) of the final run; where the
+    largest error's own order is not asymptotic, a record accepted only as negligible (an observed order below the
+    window) counts its difference d(y_h, y_2h) unextrapolated, as nothing in the run vouches for the power of h that
+    Richardson's division presumes (NaN where a record has none).
 met : bool
     The certificate holds: certified_error <= tolerance, and the measure's own estimate (its observed order
     checked alone: result.error's record-wide verdict also checks the other quantities) is accepted on every
@@ -299,7 +301,9 @@ void bind_tolerance(py::module_& m) {
                     "The error the pilot's fit predicted for the first final run, in the measure's unit (the run at "
                     "the fewest steps that met the tolerance: its own estimate).")
       .def_readonly("certified_error", &ToleranceChoice::certified_error,
-                    "The largest estimate of the measure over the final run's records and bodies (NaN: none).")
+                    "The largest estimate of the measure over the final run's records and bodies; where the largest "
+                    "error's order is not asymptotic, a record accepted only as negligible counts its difference "
+                    "d(y_h, y_2h) (NaN: none).")
       .def_readonly("met", &ToleranceChoice::met, "Every record reliable and certified_error <= tolerance.")
       .def_readonly("refinements", &ToleranceChoice::refinements, "0 to 3: the runs after the first.")
       .def_readonly("reason", &ToleranceChoice::reason, "The choice and its outcome, in words.")

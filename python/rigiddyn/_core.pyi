@@ -5313,8 +5313,10 @@ class ToleranceChoice:
         The error the pilot's fit predicted for the first final run, in the measure's unit (where the run at the
         fewest steps, tried first, met the tolerance: its own estimate).
     certified_error : float
-        The largest global error estimate of the measure over the records (and bodies) of the final run (NaN where a
-        record has none).
+        The largest global error estimate of the measure over the records (and bodies) of the final run; where the
+        largest error's own order is not asymptotic, a record accepted only as negligible (an observed order below the
+        window) counts its difference d(y_h, y_2h) unextrapolated, as nothing in the run vouches for the power of h that
+        Richardson's division presumes (NaN where a record has none).
     met : bool
         The certificate holds: certified_error <= tolerance, and the measure's own estimate (its observed order
         checked alone: result.error's record-wide verdict also checks the other quantities) is accepted on every
@@ -5363,7 +5365,7 @@ class ToleranceChoice:
     @property
     def certified_error(self) -> float:
         """
-        The largest estimate of the measure over the final run's records and bodies (NaN: none).
+        The largest estimate of the measure over the final run's records and bodies; where the largest error's order is not asymptotic, a record accepted only as negligible counts its difference d(y_h, y_2h) (NaN: none).
         """
     @property
     def dt(self) -> float:

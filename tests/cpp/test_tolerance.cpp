@@ -135,6 +135,19 @@ TEST(ToleranceModel, TheConstantOfAnExactlyLinearErrorIsRecovered) {
   EXPECT_NEAR(error_constant(e, r, dt, ErrorMeasure::attitude), 3.0 * C, 1e-12 * C);
 }
 
+// A fourth-order estimate of the attitude at four records: the first at round-off, the next two reliable (orders 4 and
+// `third_order`), the last not asymptotic at the order `last_order` (a zero crossing's noise)
+GlobalErrorEstimate attitude_with_a_noisy_last_record(std::vector<double> attitude, double third_order,
+                                                      const std::string& last_order) {
+  GlobalErrorEstimate e;
+  e.order = 4;
+  e.attitude = std::move(attitude);
+  e.observed_order = {std::nan(""), 4.0, third_order, std::stod(last_order)};
+  e.verdict = {"reliable", "reliable", "reliable",
+               "not asymptotic: observed order " + last_order + " where 4 is expected (attitude)"};
+  return e;
+}
+
 TEST(ToleranceModel, TheLargestErrorAndTheFirstUnreliableRecord) {
   GlobalErrorEstimate e;
   e.energy = {0.0, 2e-7, 1e-7};
@@ -176,11 +189,8 @@ TEST(ToleranceModel, AnErrorFallingFasterThanItsOrderIsExtrapolatedAtItsObserved
 }
 
 TEST(ToleranceModel, TheLargestErrorsOrderOverridesANoisyRecord) {
-  GlobalErrorEstimate e;
-  e.order = 4;
-  e.attitude = {0.0, 1e-7, 2e-7, 1e-9};
-  e.observed_order = {std::nan(""), 4.0, 4.1, 1.0};  // the last record at a zero crossing: its ratio is noise
-  e.verdict = {"reliable", "reliable", "reliable", "not asymptotic: observed order 1 where 4 is expected (attitude)"};
+  // the last record at a zero crossing: its ratio is noise
+  GlobalErrorEstimate e = attitude_with_a_noisy_last_record({0.0, 1e-7, 2e-7, 1e-9}, 4.1, "1");
   // max d2 / max d1 = 2^4.1 (record 2's): log2 = 4.1
   EXPECT_NEAR(observed_order_of_largest(e, ErrorMeasure::attitude), 4.1, 1e-12);
   // at a tolerance of 1e-8 the noisy record (1e-9 > 1e-8 / 16) is not negligible: the record is not accepted, the
@@ -193,14 +203,31 @@ TEST(ToleranceModel, TheLargestErrorsOrderOverridesANoisyRecord) {
   EXPECT_EQ(first_uncertified(e, ErrorMeasure::attitude, 1e-8), 3u);
 }
 
+// The certified figure: the largest estimate, where the largest error's order is asymptotic; else a record accepted only
+// as negligible (its order below the window) counts its difference d(y_h, y_2h) = (2^p − 1) ε, not Richardson's
+// extrapolation of it
+TEST(ToleranceModel, ARecordAcceptedAsNegligibleCertifiesItsDifferenceWhereTheLargestErrorIsNotAsymptotic) {
+  GlobalErrorEstimate e = attitude_with_a_noisy_last_record({0.0, 1e-8, 2e-8, 2e-9}, 4.1, "1.2");
+  EXPECT_EQ(first_uncertified(e, ErrorMeasure::attitude, 1e-6), 4u);  // 2e-9 <= 1e-6 / 16: accepted as negligible
+  // the largest error's order 4.1: record 3 is noise about it (a zero crossing), the largest estimate the figure
+  EXPECT_TRUE(asymptotic_largest(e, ErrorMeasure::attitude));
+  EXPECT_EQ(certified_error(e, ErrorMeasure::attitude), 2e-8);
+  // record 2 at order 2: the largest error's log2(max d2 / max d1) = log2(2.4e-6 / 3e-7) = 3, below the window (3.42);
+  // nothing vouches for an extrapolation, and record 3's d1 = 3e-8 is the figure
+  e.observed_order[2] = 2.0;
+  EXPECT_FALSE(asymptotic_largest(e, ErrorMeasure::attitude));
+  EXPECT_EQ(certified_error(e, ErrorMeasure::attitude), 15.0 * 2e-9);
+  // an order above the window over-estimates (accepted): its estimate is the figure
+  e.verdict.set(3, "not asymptotic: observed order 4.9 where 4 is expected (attitude)");
+  EXPECT_EQ(certified_error(e, ErrorMeasure::attitude), 2e-8);
+  e.attitude[1] = std::nan("");  // a record without an estimate: no figure
+  EXPECT_TRUE(std::isnan(certified_error(e, ErrorMeasure::attitude)));
+}
+
 // A load that switches inside a step of the coarsest run: the runs at h, 2h and 4h split their steps at different
 // places, and the largest error's order no longer vouches for the records that fail
 TEST(ToleranceModel, ASwitchInsideACoarseStepLeavesNoFailingRecordCertified) {
-  GlobalErrorEstimate e;
-  e.order = 4;
-  e.attitude = {0.0, 1e-7, 2e-7, 1e-9};
-  e.observed_order = {std::nan(""), 4.0, 4.1, 1.0};
-  e.verdict = {"reliable", "reliable", "reliable", "not asymptotic: observed order 1 where 4 is expected (attitude)"};
+  const GlobalErrorEstimate e = attitude_with_a_noisy_last_record({0.0, 1e-7, 2e-7, 1e-9}, 4.1, "1");
   EXPECT_EQ(first_uncertified(e, ErrorMeasure::attitude, 1e-8, false), 4u);
   EXPECT_EQ(first_uncertified(e, ErrorMeasure::attitude, 1e-8, true), 3u);
   // every record accepted on its own: certified either way

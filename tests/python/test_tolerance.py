@@ -306,6 +306,24 @@ def test_a_loose_tolerance_is_met_where_the_coarse_runs_of_a_certificate_would_b
     _check_shipped_scene("foucault", 1, 1e-3)
 
 
+def test_a_certificate_at_the_rounding_of_its_positions_states_the_difference_of_its_runs():
+    # the satellite boom 7 000 km from W's origin: the rounding of its positions turns its attitude by ~1e-9 rad through
+    # the boom's stiff spring at any step, so no record's order is asymptotic and the certificate accepts them as
+    # negligible (below tolerance / 16). Its figure is then the difference of the runs at h and 2h, not Richardson's
+    # extrapolation of it (which said 2.9e-11 rad): runs at 2x, 4x and 8x the steps, each as near the truth as the
+    # rounding allows, lie at least that far from the run; the estimator's goal (effectivity at least 0.5) bounds the
+    # figure from below by half the nearest of them
+    scene, initial, run = rd.load_scene("satellite_boom")
+    r = rd.simulate(scene, initial, duration=run.duration, tolerance=1e-7, measure="attitude")
+    assert r.choice.met and r.choice.certified_error <= 1e-7
+    spreads = []
+    for k in (2, 4, 8):
+        finer = rd.simulate(scene, initial, r.choice.dt / k, steps=k * r.choice.steps, method=r.choice.method,
+                            record_every=k, error=False, accuracy_level=None)
+        spreads.append(_largest_difference(r, finer, "attitude"))
+    assert r.choice.certified_error >= 0.5 * min(spreads)
+
+
 def test_a_certificate_that_fails_twice_is_refined_again():
     # the cluster over a quarter of its run to 2.5 mm (1e-4 of its size) with the fourth-order splitting: its close
     # encounters keep the first certificates out of the asymptotic regime (observed orders 2 and 2.7 where 4 is

@@ -129,6 +129,27 @@ bool above_the_window(const std::string& verdict) {
   return observed > expected + std::log2(1.5);
 }
 
+namespace {
+
+// What the certificate makes of a verdict: accepted, accepted where its estimate is negligible (an order outside the
+// window), or refused
+enum class Acceptance : char { accepted, accepted_if_negligible, refused };
+
+// The acceptance of each distinct verdict text of e (Verdicts::texts' order; each text read once)
+std::vector<Acceptance> acceptance_of_texts(const GlobalErrorEstimate& e) {
+  const std::string_view between = "interpolated between the reliable records";  // both neighbours checked
+  std::vector<Acceptance> kind;
+  for (const std::string& v : e.verdict.texts()) {
+    const bool accepted = is_reliable(v) || v.compare(0, between.size(), between) == 0 || above_the_window(v);
+    kind.push_back(accepted ? Acceptance::accepted
+                   : v.compare(0, 15, "not asymptotic:") == 0 ? Acceptance::accepted_if_negligible
+                                                              : Acceptance::refused);
+  }
+  return kind;
+}
+
+}  // namespace
+
 std::size_t first_unreliable(const GlobalErrorEstimate& e, ErrorMeasure measure, double tolerance) {
   const std::vector<double>& values = values_of(e, measure);
   const std::size_t width = width_of(e, measure);
@@ -138,19 +159,10 @@ std::size_t first_unreliable(const GlobalErrorEstimate& e, ErrorMeasure measure,
     }
     return true;
   };
-  // each distinct text read once: accepted, accepted where negligible (an order outside the window), or not
-  enum class Text : char { accepted, accepted_if_negligible, refused };
-  const std::string_view between = "interpolated between the reliable records";  // both neighbours checked
-  std::vector<Text> kind;
-  for (const std::string& v : e.verdict.texts()) {
-    const bool accepted = is_reliable(v) || v.compare(0, between.size(), between) == 0 || above_the_window(v);
-    kind.push_back(accepted ? Text::accepted
-                   : v.compare(0, 15, "not asymptotic:") == 0 ? Text::accepted_if_negligible
-                                                              : Text::refused);
-  }
+  const std::vector<Acceptance> kind = acceptance_of_texts(e);
   for (std::size_t i = 0; i < e.verdict.size(); ++i) {
-    const Text k = kind[e.verdict.text_index(i)];
-    if (k == Text::refused || (k == Text::accepted_if_negligible && !negligible(i))) return i;
+    const Acceptance k = kind[e.verdict.text_index(i)];
+    if (k == Acceptance::refused || (k == Acceptance::accepted_if_negligible && !negligible(i))) return i;
   }
   return e.verdict.size();
 }
@@ -170,6 +182,25 @@ double observed_order_of_largest(const GlobalErrorEstimate& e, ErrorMeasure meas
   return d1 > 0.0 ? std::log2(d2 / d1) : nan;
 }
 
+bool asymptotic_largest(const GlobalErrorEstimate& e, ErrorMeasure measure) {
+  return observed_order_of_largest(e, measure) >= e.order - std::log2(1.5);
+}
+
+double certified_error(const GlobalErrorEstimate& e, ErrorMeasure measure) {
+  const double largest = largest_error(e, measure);
+  if (std::isnan(largest) || e.order < 1 || asymptotic_largest(e, measure)) return largest;
+  const std::vector<double>& values = values_of(e, measure);
+  const std::size_t width = width_of(e, measure);
+  const std::vector<Acceptance> kind = acceptance_of_texts(e);
+  const double factor = std::exp2(e.order) - 1.0;  // ε = d(y_h, y_2h) / (2^p − 1)
+  double figure = largest;
+  for (std::size_t i = 0; i < e.verdict.size(); ++i) {
+    if (kind[e.verdict.text_index(i)] != Acceptance::accepted_if_negligible) continue;
+    for (std::size_t b = 0; b < width; ++b) figure = std::max(figure, factor * values[i * width + b]);
+  }
+  return figure;
+}
+
 std::size_t first_uncertified(const GlobalErrorEstimate& e, ErrorMeasure measure, double tolerance,
                               bool switch_inside_steps) {
   const std::size_t bad = first_unreliable(e, measure, tolerance);
@@ -181,7 +212,7 @@ std::size_t first_uncertified(const GlobalErrorEstimate& e, ErrorMeasure measure
   });
   if (never) return bad;
   if (std::isnan(largest_error(e, measure))) return bad;
-  return observed_order_of_largest(e, measure) >= e.order - std::log2(1.5) ? e.verdict.size() : bad;
+  return asymptotic_largest(e, measure) ? e.verdict.size() : bad;
 }
 
 bool switch_inside_coarse_step(const std::vector<double>& switch_times, const SimulationOptions& o) {
