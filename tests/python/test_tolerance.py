@@ -324,6 +324,19 @@ def test_a_certificate_at_the_rounding_of_its_positions_states_the_difference_of
     assert r.choice.certified_error >= 0.5 * min(spreads)
 
 
+def test_no_whole_horizon_pilot_runs_at_a_step_a_pilot_found_beyond_the_stability_limit():
+    # the satellite boom's stiff spring: rk4's pilot is used at 256 steps over T/32 after its coarser attempts went
+    # beyond the stability limit in their runs at 2 dt or 4 dt; the plan, capped at the pilot's step, would have its
+    # whole-horizon run at 4 dt, whose runs at 8 dt and 16 dt are coarser still: it is not run (it ran, and failed:
+    # "the short pilot's prediction kept"), and the call is the pilots and the certified run
+    scene, initial, run = rd.load_scene("satellite_boom")
+    r = rd.simulate(scene, initial, duration=run.duration, tolerance=1e-3, measure="attitude")
+    assert r.choice.met and r.choice.method == "rk4"
+    rk4 = [p for p in r.choice.pilots if p["method"] == "rk4"]
+    assert len(rk4) == 1 and rk4[0]["verdict"] == "used" and rk4[0]["dt"] == r.choice.dt
+    assert not any(p["horizon"] == run.duration and p["steps"] > 16 for p in r.choice.pilots)
+
+
 def test_a_certificate_that_fails_twice_is_refined_again():
     # the cluster over a quarter of its run to 2.5 mm (1e-4 of its size) with the fourth-order splitting: its close
     # encounters keep the first certificates out of the asymptotic regime (observed orders 2 and 2.7 where 4 is

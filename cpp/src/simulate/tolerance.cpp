@@ -50,6 +50,8 @@ bool says_runs_unstable(const std::string& verdict) {
   return verdict.find("stability limit") != std::string::npos || verdict.find("diverged") != std::string::npos;
 }
 
+bool runs_unstable(const GlobalErrorEstimate& e) { return any_record_says(e.verdict, says_runs_unstable); }
+
 void keep_stability_verdicts(const GlobalErrorEstimate& all, GlobalErrorEstimate& measure) {
   std::vector<char> unstable;  // per distinct text of all's verdicts: each read once
   for (const std::string& text : all.verdict.texts()) unstable.push_back(says_runs_unstable(text));

@@ -62,7 +62,11 @@
 // final run and its estimate then cost 1.5x the run instead of 1.75x, and the whole-horizon pilot (0.44x the final run
 // with its 8h and 16h runs) costs a net 0.19x, less than the refinement it spares (1.75x the run and more). The final
 // run takes 4x its steps where the steps it needs are between 6/7 of that and that (a cheaper run then with its own
-// estimate would cost more).
+// estimate would cost more). It is not run where its step, 4 dt, is at or above a step at which the chosen method's
+// pilot found its runs beyond the stability limit (PilotRun::unstable_step): its runs at 4 dt, 8 dt and 16 dt, each
+// at least as coarse as that pilot's at dt', 2 dt' and 4 dt', would be too. A plan capped at its pilot's step by
+// stability comes there: the shipped satellite boom (a stiff spring) to 1e-3 rad ran it at 2 048 steps, unstable,
+// before its 8 192-step run (callgrind, a call: 189.3M → 167.1M instructions).
 //
 // On a grid (ToleranceRequest::grid_steps: a run under a controller sampled every P, 4T/P blocks of P/4; a scene whose
 // loads switch at fractions a/b of the horizon, grid_steps_through) every step the planner takes divides a block: a
@@ -242,6 +246,8 @@ struct MeasuredEstimate {
 // Whether a verdict says that a run of the estimate went beyond the stability limit or diverged ("step beyond the
 // stability limit: ...", "... diverged").
 bool says_runs_unstable(const std::string& verdict);
+// Whether some record of e says so.
+bool runs_unstable(const GlobalErrorEstimate& e);
 
 // Copies to `measure` (the same records) every verdict of `all` that says_runs_unstable: those are facts of the
 // runs, which no single measure's order shows (the measure's estimate does not see the energy that a coarse run
@@ -314,6 +320,9 @@ struct PilotRun {
   double planned_seconds = std::numeric_limits<double>::quiet_NaN();
   std::string verdict;                    // "used", or why not (pruned, not asymptotic ...)
   bool exact_on_scene = false;            // its estimate the round-off bound at every record (fewest_run_steps)
+  // the finest step of its attempts whose runs at dt, 2 dt and 4 dt went beyond the stability limit (runs_unstable)
+  // or diverged [s]: the steps at and above which a run's estimate is never certified (+inf: none)
+  double unstable_step = std::numeric_limits<double>::infinity();
 };
 
 // The choice and its outcome.
@@ -562,6 +571,7 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
       }
       p.verdict = "not asymptotic at dt = " + format_number(o.dt) +
                   " s: " + (bad < e.verdict.size() ? e.verdict[bad] : "diverged");
+      if (h.diverged || runs_unstable(e)) p.unstable_step = std::min(p.unstable_step, o.dt);
     }
     return out_c;
   };
@@ -769,8 +779,12 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
     final_run.steps = 4 * quarter_options.steps;
     quarter_options.record_every = common_records(final_run).steps_between / 4;
   }
-  // (a grid's steps may round it up to the final run's: then it is no cheaper pilot, and none runs)
-  if (direct_steps == 0 && chosen.order > 0 && choice.steps / 4 >= 16 && 2 * quarter_options.steps <= choice.steps) {
+  // (a grid's steps may round it up to the final run's: then it is no cheaper pilot, and none runs; nor where its step,
+  // 4 dt, is at or above one whose estimate a pilot found beyond the stability limit: its runs at 4 dt, 8 dt and
+  // 16 dt, each at least as coarse as that pilot's, would be too, and the run could not set the steps)
+  const bool quarter_stable = 4.0 * choice.dt < chosen.unstable_step;
+  if (direct_steps == 0 && chosen.order > 0 && choice.steps / 4 >= 16 && 2 * quarter_options.steps <= choice.steps &&
+      quarter_stable) {
     SimulationOptions& o = quarter_options;
     o.dt = T / static_cast<double>(4 * o.steps) * 4.0;  // as coarse_options(final, 4) makes it, bit for bit
     PilotRun p;
