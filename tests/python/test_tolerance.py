@@ -335,6 +335,7 @@ def test_no_whole_horizon_pilot_runs_at_a_step_a_pilot_found_beyond_the_stabilit
     rk4 = [p for p in r.choice.pilots if p["method"] == "rk4"]
     assert len(rk4) == 1 and rk4[0]["verdict"] == "used" and rk4[0]["dt"] == r.choice.dt
     assert not any(p["horizon"] == run.duration and p["steps"] > 16 for p in r.choice.pilots)
+    assert "no run over the whole horizon at 4x the step: its pilot went beyond the stability limit" in r.choice.reason
 
 
 def test_a_certificate_that_fails_twice_is_refined_again():

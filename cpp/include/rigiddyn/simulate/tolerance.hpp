@@ -838,6 +838,9 @@ ToleranceRun<Records> run_to_tolerance(std::vector<ToleranceCandidate> candidate
       choice.reason += ", above max_steps = " + std::to_string(request.max_steps);
       return out;
     }
+  } else if (!quarter_stable) {
+    choice.reason += "; no run over the whole horizon at 4x the step: its pilot went beyond the stability limit at "
+                     "dt = " + format_number(chosen.unstable_step) + " s";
   }
 
   // the run and its certificate; one refinement
