@@ -13,17 +13,31 @@ on the problem (best of 3 runs of 4096 steps). Printed per row:
 The shipped scenes (python/rigiddyn/scenes/*.toml, read with load_scene) were not used to tune the planner; a scene
 with a [controller] runs under it everywhere (the run to the tolerance, the sweep and the references).
 `--small` runs two problems at one tolerance (ctest). The full table takes a few minutes up to the `cluster`, the
-last problem, whose sweep (1 000 bodies, each candidate against rk4 at 1/16 of its step) takes more than 40 minutes.
+last problem, whose sweep (1 000 bodies, each candidate against rk4 at 1/16 of its step) takes more than 40 minutes;
+`--without-cluster` leaves it out.
+
+`--instructions` adds the stable figure of the same ratio (wall times of calls of a few milliseconds move by up to
+1.6x from run to run on a shared machine): callgrind's instruction count of the whole call over that of the plain run
+at the sweep's cheapest (method, steps), each the second of two calls in one interpreter under valgrind (the first
+compiles and warms), counted between two markers (os.getppid, `--dump-before=getppid`). Printed per row as
+`instr call/min`, and their median at the end. Needs valgrind; the rows run a few seconds each under it (the
+cluster's, hours).
+
+    python bench/python/bench_tolerance.py --without-cluster --instructions
 """
 
+import argparse
 import math
+import os
+import subprocess
 import sys
+import tempfile
 import warnings
 
 import numpy as np
 
 import rigiddyn as rd
-from _bench_common import best_time, parse_small
+from _bench_common import best_time
 
 FREE_METHODS = ("rk4", "rkmk4", "splitting_dlm_yoshida4", "splitting_dlm", "exact_flow_kick",
                 "semi_implicit_euler_implicit_gyroscopic")
@@ -155,7 +169,52 @@ def plain_run_seconds(problem, method, steps):
     return best_time(run)
 
 
-def row(problem, tolerance, costs, methods):
+# The instructions of one problem's call to a tolerance and of its plain run at (method, steps), in a fresh
+# interpreter: each made twice, the second between two os.getppid() markers (callgrind dumps its counts before each).
+INSTRUCTIONS_SCRIPT = """import os, sys, warnings
+sys.path.insert(0, {folder!r})
+import bench_tolerance as bt
+import rigiddyn as rd
+p = next(p for p in bt.problems(cluster={name!r} == "cluster") if p.name == {name!r})
+def call():
+    return rd.simulate(p.model, p.initial, duration=p.duration, tolerance={tolerance!r}, measure=p.measure,
+                       controller=p.controller)
+def plain():
+    return rd.simulate(p.model, p.initial, p.duration / {steps!r}, steps={steps!r}, method={method!r}, error=False,
+                       controller=p.controller)
+with warnings.catch_warnings():
+    warnings.simplefilter("ignore")
+    call(); os.getppid(); call(); os.getppid(); plain(); os.getppid(); plain(); os.getppid()
+"""
+
+
+def dumped_instructions(path):
+    """The instruction total of one callgrind dump file."""
+    with open(path) as f:
+        for line in f:
+            if line.startswith(("summary:", "totals:")):
+                return int(line.split()[1])
+    raise RuntimeError(f"no total in {path}")
+
+
+def call_and_plain_instructions(problem, tolerance, method, steps):
+    """(instructions of the call to `tolerance`, of the plain run of `method` at `steps` steps) on `problem`."""
+    with tempfile.TemporaryDirectory() as folder:
+        script = os.path.join(folder, "counted.py")
+        with open(script, "w") as f:
+            f.write(INSTRUCTIONS_SCRIPT.format(folder=os.path.dirname(os.path.abspath(__file__)), name=problem.name,
+                                               tolerance=tolerance, method=method, steps=steps))
+        out = os.path.join(folder, "callgrind.out")
+        env = dict(os.environ, PYTHONHASHSEED="0", OPENBLAS_NUM_THREADS="1", OMP_NUM_THREADS="1")
+        run = subprocess.run(["valgrind", "--tool=callgrind", "--dump-before=getppid", f"--callgrind-out-file={out}",
+                              sys.executable, script], env=env, capture_output=True, text=True)
+        if run.returncode != 0:
+            raise RuntimeError(f"valgrind on {problem.name} ended with {run.returncode}:\n{run.stderr[-2000:]}")
+        # dumps 1-4 end at the four markers: 2 holds the second call, 4 the second plain run
+        return dumped_instructions(out + ".2"), dumped_instructions(out + ".4")
+
+
+def row(problem, tolerance, costs, methods, instructions=False):
     try:
         r = rd.simulate(problem.model, problem.initial, duration=problem.duration, tolerance=tolerance,
                         measure=problem.measure, controller=problem.controller)
@@ -171,30 +230,45 @@ def row(problem, tolerance, costs, methods):
     final = plain_run_seconds(problem, c.method, c.steps)
     best_cost = plain_run_seconds(problem, best_m, best_n) if best_m is not None else math.nan
     met = true <= tolerance
+    counted = math.nan
+    if instructions and best_m is not None:
+        call_instructions, plain_instructions = call_and_plain_instructions(problem, tolerance, best_m, best_n)
+        counted = call_instructions / plain_instructions
     print(f"{problem.name:28s} {tolerance:8.0e} {c.method:24s} {c.steps:7d} {c.certified_error:9.2e} {true:9.2e} "
           f"{'yes' if met else 'NO ':4s} {str(best_m):24s} {best_n or 0:7d} {final / best_cost:9.2f} "
-          f"{call / best_cost:9.2f}  refinements={c.refinements}")
-    return met, final / best_cost, call / best_cost
+          f"{call / best_cost:9.2f}  refinements={c.refinements}"
+          + (f"  instr call/min {counted:.2f}" if instructions else ""))
+    return met, final / best_cost, call / best_cost, counted
 
 
-def main():
-    args = parse_small(__doc__, "two problems at one tolerance")
-    sys.stdout.reconfigure(line_buffering=True)  # each row as it is measured (the sweeps take minutes)
+def problems(cluster=True):
+    """The table's problems, in its order (the shipped `cluster` last, unless `cluster` is False)."""
     free = [FreeBody("free body near separatrix", [1.0, 2.0, 3.0], [0.1, 1.0, 0.1], 20.0),
             FreeBody("free body fast spin", [1.0, 2.0, 3.0], [3.0, 0.5, 1.0], 10.0),
             FreeBody("free body near-symmetric", [2.0, 2.0, 3.0], [0.5, 0.2, 2.0], 30.0)]
     scenes = [Scene("kepler", exact=kepler_exact)] + [
         Scene(n) for n in ("pendulum", "heavy_top", "spring_chain", "box_on_springs", "gravity_gradient",
                            "satellite_boom", "three_body", "foucault", "rocket", "cubesat_detumbling",
-                           "cubesat_pointing", "double_pendulum", "j2_orbit", "solar_array", "cluster")]
-    problems = free + scenes
+                           "cubesat_pointing", "double_pendulum", "j2_orbit", "solar_array")]
+    return free + scenes + ([Scene("cluster")] if cluster else [])
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--small", action="store_true", help="two problems at one tolerance")
+    parser.add_argument("--without-cluster", action="store_true", help="leave the cluster out")
+    parser.add_argument("--instructions", action="store_true",
+                        help="also the call over the cheapest plain run in callgrind's instructions (needs valgrind)")
+    args = parser.parse_args()
+    sys.stdout.reconfigure(line_buffering=True)  # each row as it is measured (the sweeps take minutes)
+    table = problems(cluster=not args.without_cluster and not args.small)
     tolerances = {"attitude": (1e-3, 1e-5, 1e-7)}
     if args.small:
-        problems, tolerances = [free[0], scenes[0]], {"attitude": (1e-5,)}
+        table, tolerances = [table[0], table[3]], {"attitude": (1e-5,)}
     print(f"{'problem':28s} {'tol':>8s} {'method':24s} {'steps':>7s} {'certified':>9s} {'true':>9s} met  "
           f"{'sweep cheapest':24s} {'steps':>7s} {'final/min':>9s} {'call/min':>9s}")
     outcomes = []
-    for p in problems:
+    for p in table:
         methods = methods_of(p)
         costs = {m: seconds_per_step(p, m) for m in methods}
         if p.measure == "attitude":
@@ -208,7 +282,7 @@ def main():
             tols = tuple(scale * t for t in (1e-3, 1e-5, 1e-7)[:len(tolerances["attitude"])])
         for tol in tols:
             try:
-                outcome = row(p, tol, costs, methods)
+                outcome = row(p, tol, costs, methods, instructions=args.instructions)
             except rd.ToleranceError as e:
                 print(f"{p.name:28s} refused: {e}")
                 outcome = None
@@ -221,6 +295,9 @@ def main():
     if met:
         print(f"final/min median {np.median(finals):.2f} max {max(finals):.2f}; "
               f"call/min median {np.median(calls):.2f} max {max(calls):.2f}")
+    counted = [o[3] for o in met if not math.isnan(o[3])]
+    if counted:
+        print(f"call/min in instructions: median {np.median(counted):.2f} max {max(counted):.2f} ({len(counted)} rows)")
 
 if __name__ == "__main__":
     main()

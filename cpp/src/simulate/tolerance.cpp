@@ -26,7 +26,8 @@ using detail::nan;
 
 // The values per record of `measure` in e: nb for the state quantities, 1 for energy and |L|.
 std::size_t width_of(const GlobalErrorEstimate& e, ErrorMeasure measure) {
-  return measure == ErrorMeasure::energy || measure == ErrorMeasure::angular_momentum ? 1 : static_cast<std::size_t>(e.bodies);
+  const bool one_value = measure == ErrorMeasure::energy || measure == ErrorMeasure::angular_momentum;
+  return one_value ? 1 : static_cast<std::size_t>(e.bodies);
 }
 
 // Whether the verdict of some record of `verdicts` satisfies `says` (each distinct text read once).
@@ -38,6 +39,44 @@ bool any_record_says(const Verdicts& verdicts, Predicate says) {
     if (said[verdicts.text_index(i)]) return true;
   }
   return false;
+}
+
+// What the certificate makes of a verdict: accepted, accepted where its estimate is negligible (an order outside the
+// window), or refused
+enum class Acceptance : char { accepted, accepted_if_negligible, refused };
+
+// The acceptance of each distinct verdict text of e (Verdicts::texts' order; each text read once)
+std::vector<Acceptance> acceptance_of_texts(const GlobalErrorEstimate& e) {
+  const std::string_view between = "interpolated between the reliable records";  // both neighbours checked
+  std::vector<Acceptance> kind;
+  for (const std::string& v : e.verdict.texts()) {
+    const bool accepted = is_reliable(v) || v.compare(0, between.size(), between) == 0 || above_the_window(v);
+    kind.push_back(accepted ? Acceptance::accepted
+                   : v.compare(0, 15, "not asymptotic:") == 0 ? Acceptance::accepted_if_negligible
+                                                              : Acceptance::refused);
+  }
+  return kind;
+}
+
+// x in (0, 1] as a / b in lowest terms with b <= max_denominator and |x − a / b| <= 1e-12 x (the convergents of its
+// continued fraction, the best approximations with bounded denominators: Hardy & Wright, "An Introduction to the
+// Theory of Numbers", ch. 10); none where no convergent is that close. (A looser match would find a fraction for any
+// x: every real is within 1 / b² of a convergent a / b, ibid.)
+std::optional<std::pair<std::int64_t, std::int64_t>> fraction_of(double x, std::int64_t max_denominator) {
+  std::int64_t a0 = 0, b0 = 1, a1 = 1, b1 = 0;  // the convergents before the current one
+  double rest = x;
+  for (int k = 0; k < 64; ++k) {
+    const double whole = std::floor(rest);
+    if (whole > 1e12) break;
+    const auto q = static_cast<std::int64_t>(whole);
+    const std::int64_t a = q * a1 + a0, b = q * b1 + b0;
+    if (b > max_denominator) break;
+    if (std::abs(x - static_cast<double>(a) / static_cast<double>(b)) <= 1e-12 * x) return std::pair(a, b);
+    a0 = a1, b0 = b1, a1 = a, b1 = b;
+    if (rest == whole) break;
+    rest = 1.0 / (rest - whole);
+  }
+  return std::nullopt;
 }
 
 }  // namespace
@@ -84,7 +123,9 @@ const std::vector<std::string>& error_measure_names() {
   return names;
 }
 
-std::string error_measure_name(ErrorMeasure measure) { return error_measure_names().at(static_cast<std::size_t>(measure)); }
+std::string error_measure_name(ErrorMeasure measure) {
+  return error_measure_names().at(static_cast<std::size_t>(measure));
+}
 
 std::string error_measure_unit(ErrorMeasure measure) {
   static const std::vector<std::string> units = {"rad", "rad/s", "m", "m/s", "J", "kg m^2/s"};
@@ -131,26 +172,6 @@ bool above_the_window(const std::string& verdict) {
   return observed > expected + std::log2(1.5);
 }
 
-namespace {
-
-// What the certificate makes of a verdict: accepted, accepted where its estimate is negligible (an order outside the
-// window), or refused
-enum class Acceptance : char { accepted, accepted_if_negligible, refused };
-
-// The acceptance of each distinct verdict text of e (Verdicts::texts' order; each text read once)
-std::vector<Acceptance> acceptance_of_texts(const GlobalErrorEstimate& e) {
-  const std::string_view between = "interpolated between the reliable records";  // both neighbours checked
-  std::vector<Acceptance> kind;
-  for (const std::string& v : e.verdict.texts()) {
-    const bool accepted = is_reliable(v) || v.compare(0, between.size(), between) == 0 || above_the_window(v);
-    kind.push_back(accepted ? Acceptance::accepted
-                   : v.compare(0, 15, "not asymptotic:") == 0 ? Acceptance::accepted_if_negligible
-                                                              : Acceptance::refused);
-  }
-  return kind;
-}
-
-}  // namespace
 
 std::size_t first_unreliable(const GlobalErrorEstimate& e, ErrorMeasure measure, double tolerance) {
   const std::vector<double>& values = values_of(e, measure);
@@ -289,30 +310,6 @@ std::int64_t on_grid(std::int64_t multiple, std::int64_t grid_steps) {
   return grid_steps > 0 ? std::lcm(multiple, grid_steps) : multiple;
 }
 
-namespace {
-
-// x in (0, 1] as a / b in lowest terms with b <= max_denominator and |x − a / b| <= 1e-12 x (the convergents of its
-// continued fraction, the best approximations with bounded denominators: Hardy & Wright, "An Introduction to the
-// Theory of Numbers", ch. 10); none where no convergent is that close. (A looser match would find a fraction for any
-// x: every real is within 1 / b² of a convergent a / b, ibid.)
-std::optional<std::pair<std::int64_t, std::int64_t>> fraction_of(double x, std::int64_t max_denominator) {
-  std::int64_t a0 = 0, b0 = 1, a1 = 1, b1 = 0;  // the convergents before the current one
-  double rest = x;
-  for (int k = 0; k < 64; ++k) {
-    const double whole = std::floor(rest);
-    if (whole > 1e12) break;
-    const auto q = static_cast<std::int64_t>(whole);
-    const std::int64_t a = q * a1 + a0, b = q * b1 + b0;
-    if (b > max_denominator) break;
-    if (std::abs(x - static_cast<double>(a) / static_cast<double>(b)) <= 1e-12 * x) return std::pair(a, b);
-    a0 = a1, b0 = b1, a1 = a, b1 = b;
-    if (rest == whole) break;
-    rest = 1.0 / (rest - whole);
-  }
-  return std::nullopt;
-}
-
-}  // namespace
 
 std::int64_t grid_steps_through(const std::vector<double>& times, double t0, double horizon, std::int64_t limit) {
   std::int64_t steps = 1;
