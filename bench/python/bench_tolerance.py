@@ -20,8 +20,8 @@ last problem, whose sweep (1 000 bodies, each candidate against rk4 at 1/16 of i
 1.6x from run to run on a shared machine): callgrind's instruction count of the whole call over that of the plain run
 at the sweep's cheapest (method, steps), each the second of two calls in one interpreter under valgrind (the first
 compiles and warms), counted between two markers (os.getppid, `--dump-before=getppid`). Printed per row as
-`instr call/min`, and their median at the end. Needs valgrind; the rows run a few seconds each under it (the
-cluster's, hours).
+`instr call/min`, and their median at the end. Needs valgrind; a row takes tens of seconds under it (the table without
+the cluster about 40 minutes on two cores; the cluster's rows, hours).
 
     python bench/python/bench_tolerance.py --without-cluster --instructions
 """
@@ -169,22 +169,16 @@ def plain_run_seconds(problem, method, steps):
     return best_time(run)
 
 
-# The instructions of one problem's call to a tolerance and of its plain run at (method, steps), in a fresh
-# interpreter: each made twice, the second between two os.getppid() markers (callgrind dumps its counts before each).
-INSTRUCTIONS_SCRIPT = """import os, sys, warnings
+# A fresh interpreter that makes the problem named `name` (`p`) and runs each of `statements` twice, the second time
+# between two os.getppid() markers (callgrind dumps its counts before each: dump 2k + 2 holds statement k's second run)
+COUNTED_SCRIPT = """import os, sys, warnings
 sys.path.insert(0, {folder!r})
 import bench_tolerance as bt
 import rigiddyn as rd
 p = bt.problems(only={name!r})[0]
-def call():
-    return rd.simulate(p.model, p.initial, duration=p.duration, tolerance={tolerance!r}, measure=p.measure,
-                       controller=p.controller)
-def plain():
-    return rd.simulate(p.model, p.initial, p.duration / {steps!r}, steps={steps!r}, method={method!r}, error=False,
-                       controller=p.controller)
 with warnings.catch_warnings():
     warnings.simplefilter("ignore")
-    call(); os.getppid(); call(); os.getppid(); plain(); os.getppid(); plain(); os.getppid()
+{runs}
 """
 
 
@@ -197,21 +191,35 @@ def dumped_instructions(path):
     raise RuntimeError(f"no total in {path}")
 
 
-def call_and_plain_instructions(problem, tolerance, method, steps):
-    """(instructions of the call to `tolerance`, of the plain run of `method` at `steps` steps) on `problem`."""
+def counted_instructions(problem, statements):
+    """Callgrind's instructions of each of `statements` (Python source reading the problem as `p`, and `rd`), each the
+    second of two runs in one fresh interpreter (the first compiles the scene), as a list."""
+    runs = "".join(f"    {s}; os.getppid(); {s}; os.getppid()\n" for s in statements)
     with tempfile.TemporaryDirectory() as folder:
         script = os.path.join(folder, "counted.py")
         with open(script, "w") as f:
-            f.write(INSTRUCTIONS_SCRIPT.format(folder=os.path.dirname(os.path.abspath(__file__)), name=problem.name,
-                                               tolerance=tolerance, method=method, steps=steps))
+            f.write(COUNTED_SCRIPT.format(folder=os.path.dirname(os.path.abspath(__file__)), name=problem.name,
+                                          runs=runs))
         out = os.path.join(folder, "callgrind.out")
         env = dict(os.environ, PYTHONHASHSEED="0", OPENBLAS_NUM_THREADS="1", OMP_NUM_THREADS="1")
         run = subprocess.run(["valgrind", "--tool=callgrind", "--dump-before=getppid", f"--callgrind-out-file={out}",
                               sys.executable, script], env=env, capture_output=True, text=True)
         if run.returncode != 0:
             raise RuntimeError(f"valgrind on {problem.name} ended with {run.returncode}:\n{run.stderr[-2000:]}")
-        # dumps 1-4 end at the four markers: 2 holds the second call, 4 the second plain run
-        return dumped_instructions(out + ".2"), dumped_instructions(out + ".4")
+        return [dumped_instructions(f"{out}.{2 * k + 2}") for k in range(len(statements))]
+
+
+def call_statement(tolerance):
+    """The run to `tolerance` of problem `p`, as counted_instructions reads it."""
+    return (f"rd.simulate(p.model, p.initial, duration=p.duration, tolerance={tolerance!r}, measure=p.measure, "
+            f"controller=p.controller)")
+
+
+def plain_statement(method, steps, error=False):
+    """The plain run of problem `p` at (method, steps) recording every step (`error`: with its estimate, read)."""
+    run = (f"rd.simulate(p.model, p.initial, p.duration / {steps!r}, steps={steps!r}, method={method!r}, "
+           f"error={error!r}, controller=p.controller)")
+    return run + (".error" if error else "")
 
 
 def row(problem, tolerance, costs, methods, instructions=False):
@@ -232,7 +240,8 @@ def row(problem, tolerance, costs, methods, instructions=False):
     met = true <= tolerance
     counted = math.nan
     if instructions and best_m is not None:
-        call_instructions, plain_instructions = call_and_plain_instructions(problem, tolerance, best_m, best_n)
+        call_instructions, plain_instructions = counted_instructions(
+            problem, [call_statement(tolerance), plain_statement(best_m, best_n)])
         counted = call_instructions / plain_instructions
     print(f"{problem.name:28s} {tolerance:8.0e} {c.method:24s} {c.steps:7d} {c.certified_error:9.2e} {true:9.2e} "
           f"{'yes' if met else 'NO ':4s} {str(best_m):24s} {best_n or 0:7d} {final / best_cost:9.2f} "
@@ -243,17 +252,15 @@ def row(problem, tolerance, costs, methods, instructions=False):
 
 def problems(cluster=True, only=None):
     """The table's problems, in its order (the shipped `cluster` last, unless `cluster` is False); `only`: the one of
-    that name alone (each scene is read only where it is made)."""
-    free = [lambda: FreeBody("free body near separatrix", [1.0, 2.0, 3.0], [0.1, 1.0, 0.1], 20.0),
-            lambda: FreeBody("free body fast spin", [1.0, 2.0, 3.0], [3.0, 0.5, 1.0], 10.0),
-            lambda: FreeBody("free body near-symmetric", [2.0, 2.0, 3.0], [0.5, 0.2, 2.0], 30.0)]
-    names = ["free body near separatrix", "free body fast spin", "free body near-symmetric", "kepler", "pendulum",
-             "heavy_top", "spring_chain", "box_on_springs", "gravity_gradient", "satellite_boom", "three_body",
-             "foucault", "rocket", "cubesat_detumbling", "cubesat_pointing", "double_pendulum", "j2_orbit",
-             "solar_array"] + (["cluster"] if cluster or only == "cluster" else [])
-    makers = free + [lambda: Scene("kepler", exact=kepler_exact)] + [
-        (lambda n=n: Scene(n)) for n in names[4:]]
-    return [make() for name, make in zip(names, makers) if only is None or name == only]
+    that name alone (a scene is read only where it is asked for)."""
+    free = [FreeBody("free body near separatrix", [1.0, 2.0, 3.0], [0.1, 1.0, 0.1], 20.0),
+            FreeBody("free body fast spin", [1.0, 2.0, 3.0], [3.0, 0.5, 1.0], 10.0),
+            FreeBody("free body near-symmetric", [2.0, 2.0, 3.0], [0.5, 0.2, 2.0], 30.0)]
+    scenes = ("kepler", "pendulum", "heavy_top", "spring_chain", "box_on_springs", "gravity_gradient", "satellite_boom",
+              "three_body", "foucault", "rocket", "cubesat_detumbling", "cubesat_pointing", "double_pendulum",
+              "j2_orbit", "solar_array") + (("cluster",) if cluster or only == "cluster" else ())
+    return [p for p in free if only in (None, p.name)] + [
+        Scene(n, exact=kepler_exact if n == "kepler" else None) for n in scenes if only in (None, n)]
 
 
 def main():
@@ -264,10 +271,11 @@ def main():
                         help="also the call over the cheapest plain run in callgrind's instructions (needs valgrind)")
     args = parser.parse_args()
     sys.stdout.reconfigure(line_buffering=True)  # each row as it is measured (the sweeps take minutes)
-    table = problems(cluster=not args.without_cluster and not args.small)
-    tolerances = {"attitude": (1e-3, 1e-5, 1e-7)}
     if args.small:
-        table, tolerances = [table[0], table[3]], {"attitude": (1e-5,)}
+        table = problems(only="free body near separatrix") + problems(only="kepler")
+        tolerances = {"attitude": (1e-5,)}
+    else:
+        table, tolerances = problems(cluster=not args.without_cluster), {"attitude": (1e-3, 1e-5, 1e-7)}
     print(f"{'problem':28s} {'tol':>8s} {'method':24s} {'steps':>7s} {'certified':>9s} {'true':>9s} met  "
           f"{'sweep cheapest':24s} {'steps':>7s} {'final/min':>9s} {'call/min':>9s}")
     outcomes = []

@@ -172,7 +172,6 @@ bool above_the_window(const std::string& verdict) {
   return observed > expected + std::log2(1.5);
 }
 
-
 std::size_t first_unreliable(const GlobalErrorEstimate& e, ErrorMeasure measure, double tolerance) {
   const std::vector<double>& values = values_of(e, measure);
   const std::size_t width = width_of(e, measure);
@@ -309,7 +308,6 @@ std::int64_t steps_for(double horizon, double dt_max, std::int64_t multiple) {
 std::int64_t on_grid(std::int64_t multiple, std::int64_t grid_steps) {
   return grid_steps > 0 ? std::lcm(multiple, grid_steps) : multiple;
 }
-
 
 std::int64_t grid_steps_through(const std::vector<double>& times, double t0, double horizon, std::int64_t limit) {
   std::int64_t steps = 1;
